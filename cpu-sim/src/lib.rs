@@ -1,0 +1,17 @@
+//! aokit's CPU simulator: runs the very kernel functions of `aokit-shaders` over whole images
+//! with rayon (images as slices, atomics as `AtomicU32`), and casts rays through a CPU BVH
+//! (obvhs' compressed wide BVH) where the GPU would rasterize or trace.
+
+pub mod bvh;
+pub mod gbuffer;
+pub mod screen;
+
+pub use bvh::SceneBvh;
+pub use gbuffer::{GBufferImage, ray_cast_gbuffer};
+pub use screen::{run_blur, run_vao};
+
+/// Called with the number of rows finished since the last call (drives a progress bar).
+pub type Progress<'a> = &'a (dyn Fn(u64) + Sync);
+
+/// A progress callback that ignores progress.
+pub fn no_progress(_: u64) {}

@@ -1,0 +1,279 @@
+//! Instance, device selection (discrete GPU first, lavapipe as the fallback), queue, allocator,
+//! one-shot command submission and validation-layer message capture.
+
+use crate::GpuError;
+use ash::{ext, khr, vk};
+use gpu_allocator::vulkan::{Allocator, AllocatorCreateDesc};
+use std::ffi::{CStr, c_void};
+use std::mem::ManuallyDrop;
+use std::sync::Mutex;
+
+/// How to open the device.
+#[derive(Clone, Debug, Default)]
+pub struct GpuOptions {
+    /// Enable `VK_LAYER_KHRONOS_validation` and record its warnings and errors.
+    pub validation: bool,
+}
+
+/// What `aokit info` prints.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct DeviceInfo {
+    pub name: String,
+    pub device_type: String,
+    pub api_version: String,
+    pub driver_version: u32,
+    /// Ray-tracing related extensions and whether the device has them.
+    pub ray_tracing_extensions: Vec<(String, bool)>,
+}
+
+const RT_EXTENSIONS: [&CStr; 4] = [
+    khr::acceleration_structure::NAME,
+    khr::ray_tracing_pipeline::NAME,
+    khr::ray_query::NAME,
+    khr::deferred_host_operations::NAME,
+];
+
+const VALIDATION_LAYER: &CStr = c"VK_LAYER_KHRONOS_validation";
+
+/// An open Vulkan device with everything the passes need.
+pub struct Gpu {
+    pub(crate) device: ash::Device,
+    pub(crate) queue: vk::Queue,
+    pub(crate) pool: vk::CommandPool,
+    pub(crate) allocator: ManuallyDrop<Mutex<Allocator>>,
+    pub(crate) timestamp_period_ns: f32,
+    info: DeviceInfo,
+    debug: Option<(ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>,
+    /// Validation warnings and errors; boxed so the callback's pointer stays valid.
+    messages: Box<Mutex<Vec<String>>>,
+    instance: ash::Instance,
+    _entry: ash::Entry,
+}
+
+unsafe extern "system" fn debug_callback(
+    severity: vk::DebugUtilsMessageSeverityFlagsEXT,
+    _types: vk::DebugUtilsMessageTypeFlagsEXT,
+    data: *const vk::DebugUtilsMessengerCallbackDataEXT<'_>,
+    user: *mut c_void,
+) -> vk::Bool32 {
+    let relevant = vk::DebugUtilsMessageSeverityFlagsEXT::WARNING | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR;
+    if severity.intersects(relevant) && !data.is_null() && !user.is_null() {
+        // SAFETY: Vulkan passes valid callback data; `user` is the boxed Mutex owned by `Gpu`,
+        // which destroys the messenger before dropping the box.
+        let (data, messages) = unsafe { (&*data, &*(user as *const Mutex<Vec<String>>)) };
+        let text = unsafe { data.message_as_c_str() }.map(|m| m.to_string_lossy().into_owned()).unwrap_or_default();
+        messages.lock().unwrap_or_else(|e| e.into_inner()).push(format!("{severity:?}: {text}"));
+    }
+    vk::FALSE
+}
+
+fn device_rank(t: vk::PhysicalDeviceType) -> u32 {
+    match t {
+        vk::PhysicalDeviceType::DISCRETE_GPU => 0,
+        vk::PhysicalDeviceType::INTEGRATED_GPU => 1,
+        vk::PhysicalDeviceType::VIRTUAL_GPU => 2,
+        vk::PhysicalDeviceType::CPU => 3,
+        _ => 4,
+    }
+}
+
+impl Gpu {
+    /// Open the best device: a discrete GPU if there is one, else integrated, virtual, and
+    /// finally a CPU implementation such as lavapipe. Requires Vulkan 1.3 (dynamic rendering)
+    /// and the Vulkan memory model that rust-gpu emits.
+    pub fn new(options: &GpuOptions) -> Result<Gpu, GpuError> {
+        let entry = unsafe { ash::Entry::load() }.map_err(|e| GpuError::Loader(e.to_string()))?;
+        let mut layers = Vec::new();
+        let mut extensions = Vec::new();
+        if options.validation {
+            let available = unsafe { entry.enumerate_instance_layer_properties()? };
+            if !available.iter().any(|l| l.layer_name_as_c_str() == Ok(VALIDATION_LAYER)) {
+                return Err(GpuError::NoValidationLayer);
+            }
+            layers.push(VALIDATION_LAYER.as_ptr());
+            extensions.push(ext::debug_utils::NAME.as_ptr());
+        }
+        let app = vk::ApplicationInfo::default().application_name(c"aokit").api_version(vk::API_VERSION_1_3);
+        let messages: Box<Mutex<Vec<String>>> = Box::default();
+        let mut messenger_info = vk::DebugUtilsMessengerCreateInfoEXT::default()
+            .message_severity(vk::DebugUtilsMessageSeverityFlagsEXT::WARNING | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR)
+            .message_type(
+                vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
+                    | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
+                    | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE,
+            )
+            .pfn_user_callback(Some(debug_callback))
+            .user_data(&*messages as *const Mutex<Vec<String>> as *mut c_void);
+        let mut create = vk::InstanceCreateInfo::default()
+            .application_info(&app)
+            .enabled_layer_names(&layers)
+            .enabled_extension_names(&extensions);
+        if options.validation {
+            create = create.push_next(&mut messenger_info); // also covers instance creation
+        }
+        let instance = unsafe { entry.create_instance(&create, None)? };
+        let debug = if options.validation {
+            let loader = ext::debug_utils::Instance::new(&entry, &instance);
+            let messenger = unsafe { loader.create_debug_utils_messenger(&messenger_info, None)? };
+            Some((loader, messenger))
+        } else {
+            None
+        };
+        match Self::open_device(&instance) {
+            Ok((physical, device, queue_family, info, timestamp_period_ns)) => {
+                let queue = unsafe { device.get_device_queue(queue_family, 0) };
+                let pool = unsafe {
+                    device.create_command_pool(
+                        &vk::CommandPoolCreateInfo::default()
+                            .queue_family_index(queue_family)
+                            .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER),
+                        None,
+                    )?
+                };
+                let allocator = Allocator::new(&AllocatorCreateDesc {
+                    instance: instance.clone(),
+                    device: device.clone(),
+                    physical_device: physical,
+                    debug_settings: Default::default(),
+                    buffer_device_address: false,
+                    allocation_sizes: Default::default(),
+                })?;
+                Ok(Gpu {
+                    device,
+                    queue,
+                    pool,
+                    allocator: ManuallyDrop::new(Mutex::new(allocator)),
+                    timestamp_period_ns,
+                    info,
+                    debug,
+                    messages,
+                    instance,
+                    _entry: entry,
+                })
+            }
+            Err(e) => {
+                unsafe {
+                    if let Some((loader, messenger)) = &debug {
+                        loader.destroy_debug_utils_messenger(*messenger, None);
+                    }
+                    instance.destroy_instance(None);
+                }
+                Err(e)
+            }
+        }
+    }
+
+    #[allow(clippy::type_complexity)]
+    fn open_device(instance: &ash::Instance) -> Result<(vk::PhysicalDevice, ash::Device, u32, DeviceInfo, f32), GpuError> {
+        let mut candidates = Vec::new();
+        for pd in unsafe { instance.enumerate_physical_devices()? } {
+            let props = unsafe { instance.get_physical_device_properties(pd) };
+            if props.api_version < vk::API_VERSION_1_3 {
+                continue;
+            }
+            let mut f12 = vk::PhysicalDeviceVulkan12Features::default();
+            let mut f13 = vk::PhysicalDeviceVulkan13Features::default();
+            let mut f2 = vk::PhysicalDeviceFeatures2::default().push_next(&mut f12).push_next(&mut f13);
+            unsafe { instance.get_physical_device_features2(pd, &mut f2) };
+            if f12.vulkan_memory_model == 0 || f12.vulkan_memory_model_device_scope == 0 || f13.dynamic_rendering == 0 {
+                continue;
+            }
+            let families = unsafe { instance.get_physical_device_queue_family_properties(pd) };
+            let Some(family) = families.iter().position(|q| {
+                q.queue_flags.contains(vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE) && q.timestamp_valid_bits > 0
+            }) else {
+                continue;
+            };
+            candidates.push((device_rank(props.device_type), pd, props, family as u32));
+        }
+        candidates.sort_by_key(|c| c.0);
+        let Some(&(_, pd, props, family)) = candidates.first() else {
+            return Err(GpuError::NoDevice(
+                "vulkanMemoryModel, vulkanMemoryModelDeviceScope, dynamicRendering and a graphics+compute queue with timestamps".into(),
+            ));
+        };
+        let available = unsafe { instance.enumerate_device_extension_properties(pd)? };
+        let has = |name: &CStr| available.iter().any(|e| e.extension_name_as_c_str() == Ok(name));
+        let info = DeviceInfo {
+            name: props.device_name_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
+            device_type: format!("{:?}", props.device_type),
+            api_version: format!(
+                "{}.{}.{}",
+                vk::api_version_major(props.api_version),
+                vk::api_version_minor(props.api_version),
+                vk::api_version_patch(props.api_version)
+            ),
+            driver_version: props.driver_version,
+            ray_tracing_extensions: RT_EXTENSIONS.iter().map(|e| (e.to_string_lossy().into_owned(), has(e))).collect(),
+        };
+        let priorities = [1.0];
+        let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
+        let mut f12 = vk::PhysicalDeviceVulkan12Features::default()
+            .vulkan_memory_model(true)
+            .vulkan_memory_model_device_scope(true);
+        let mut f13 = vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(true);
+        let create = vk::DeviceCreateInfo::default().queue_create_infos(&queues).push_next(&mut f12).push_next(&mut f13);
+        let device = unsafe { instance.create_device(pd, &create, None)? };
+        Ok((pd, device, family, info, props.limits.timestamp_period))
+    }
+
+    /// The chosen device.
+    pub fn info(&self) -> &DeviceInfo {
+        &self.info
+    }
+
+    /// Validation-layer warnings and errors reported so far (empty without validation).
+    pub fn validation_messages(&self) -> Vec<String> {
+        self.messages.lock().unwrap_or_else(|e| e.into_inner()).clone()
+    }
+
+    /// Record commands into a fresh command buffer, submit, and wait for completion.
+    pub(crate) fn submit<R>(&self, record: impl FnOnce(vk::CommandBuffer) -> R) -> Result<R, GpuError> {
+        let info = vk::CommandBufferAllocateInfo::default()
+            .command_pool(self.pool)
+            .level(vk::CommandBufferLevel::PRIMARY)
+            .command_buffer_count(1);
+        let cb = unsafe { self.device.allocate_command_buffers(&info)? }[0];
+        let result = unsafe {
+            self.device.begin_command_buffer(
+                cb,
+                &vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT),
+            )?;
+            let r = record(cb);
+            self.device.end_command_buffer(cb)?;
+            let fence = self.device.create_fence(&vk::FenceCreateInfo::default(), None)?;
+            let cbs = [cb];
+            let submit = vk::SubmitInfo::default().command_buffers(&cbs);
+            let waited = self
+                .device
+                .queue_submit(self.queue, &[submit], fence)
+                .and_then(|_| self.device.wait_for_fences(&[fence], true, u64::MAX));
+            self.device.destroy_fence(fence, None);
+            self.device.free_command_buffers(self.pool, &cbs);
+            waited?;
+            r
+        };
+        Ok(result)
+    }
+
+    /// Create a shader module from SPIR-V bytes.
+    pub(crate) fn shader_module(&self, spirv: &[u8]) -> Result<vk::ShaderModule, GpuError> {
+        let words = crate::modules::words(spirv);
+        Ok(unsafe { self.device.create_shader_module(&vk::ShaderModuleCreateInfo::default().code(&words), None)? })
+    }
+}
+
+impl Drop for Gpu {
+    fn drop(&mut self) {
+        unsafe {
+            let _ = self.device.device_wait_idle();
+            ManuallyDrop::drop(&mut self.allocator);
+            self.device.destroy_command_pool(self.pool, None);
+            self.device.destroy_device(None);
+            if let Some((loader, messenger)) = &self.debug {
+                loader.destroy_debug_utils_messenger(*messenger, None);
+            }
+            self.instance.destroy_instance(None);
+        }
+    }
+}

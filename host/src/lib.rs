@@ -1,0 +1,34 @@
+//! aokit's Vulkan back-end: ash + gpu-allocator, headless. Runs the SPIR-V that the xtask built
+//! from `aokit-shaders` (committed under `assets/spirv/`), so no Rust nightly is needed here.
+//!
+//! Knows devices, memory, pipelines and dispatch order — never kernel math.
+
+mod buffer;
+mod context;
+mod gbuffer;
+pub mod manifest;
+pub mod modules;
+mod screen;
+pub mod spirv_hash;
+
+pub use buffer::Buffer;
+pub use context::{DeviceInfo, Gpu, GpuOptions};
+pub use gbuffer::{GBufferVertex, RasterGBuffer};
+pub use screen::{ScreenOutput, ScreenPasses};
+
+/// Errors of the Vulkan back-end.
+#[derive(Debug, thiserror::Error)]
+pub enum GpuError {
+    #[error("cannot load the Vulkan loader (libvulkan.so.1): {0}. Install a Vulkan driver, e.g. Mesa's lavapipe (`apt-get install mesa-vulkan-drivers libvulkan1`)")]
+    Loader(String),
+    #[error("no Vulkan device found that supports Vulkan 1.3 with {0}")]
+    NoDevice(String),
+    #[error("the Khronos validation layer was requested but is not installed (`apt-get install vulkan-validationlayers`)")]
+    NoValidationLayer,
+    #[error("Vulkan call failed: {0}")]
+    Vk(#[from] ash::vk::Result),
+    #[error("GPU memory allocation failed: {0}")]
+    Alloc(#[from] gpu_allocator::AllocationError),
+    #[error("invalid input: {0}")]
+    Input(String),
+}

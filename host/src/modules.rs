@@ -1,0 +1,24 @@
+//! The committed SPIR-V modules (one per entry point), embedded at compile time.
+
+/// `assets/spirv/manifest.json`: entry points, bindings, push constants and the source hash.
+pub const MANIFEST: &str = include_str!("../../assets/spirv/manifest.json");
+
+macro_rules! spv {
+    ($name:literal) => {
+        include_bytes!(concat!("../../assets/spirv/", $name, ".spv"))
+    };
+}
+
+pub const VAO_MAIN: &[u8] = spv!("vao_main");
+pub const BLUR_MAIN: &[u8] = spv!("blur_main");
+pub const GBUFFER_VS: &[u8] = spv!("gbuffer_vs");
+pub const GBUFFER_FS: &[u8] = spv!("gbuffer_fs");
+
+/// Every module by entry-point name.
+pub const ALL: [(&str, &[u8]); 4] =
+    [("vao_main", VAO_MAIN), ("blur_main", BLUR_MAIN), ("gbuffer_vs", GBUFFER_VS), ("gbuffer_fs", GBUFFER_FS)];
+
+/// SPIR-V words of a module (validates the magic number and alignment).
+pub fn words(bytes: &[u8]) -> Vec<u32> {
+    ash::util::read_spv(&mut std::io::Cursor::new(bytes)).expect("committed SPIR-V is well-formed")
+}

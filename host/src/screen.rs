@@ -1,0 +1,213 @@
+//! Screen-space compute passes: VAO then the two blur directions, timed with timestamp queries.
+
+use crate::{Buffer, Gpu, GpuError, modules};
+use aokit_shaders::blur::BlurParams;
+use aokit_shaders::glam::uvec2;
+use aokit_shaders::vao::VaoParams;
+use ash::vk;
+
+/// A compute pipeline whose descriptor set 0 holds `bindings` storage buffers and whose push
+/// constants are one `#[repr(C)]` struct.
+pub(crate) struct ComputeKernel {
+    set_layout: vk::DescriptorSetLayout,
+    layout: vk::PipelineLayout,
+    pipeline: vk::Pipeline,
+    bindings: u32,
+}
+
+impl ComputeKernel {
+    pub(crate) fn new(gpu: &Gpu, spirv: &[u8], entry: &std::ffi::CStr, bindings: u32, push_size: u32) -> Result<Self, GpuError> {
+        let d = &gpu.device;
+        let binding_list: Vec<_> = (0..bindings)
+            .map(|b| {
+                vk::DescriptorSetLayoutBinding::default()
+                    .binding(b)
+                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                    .descriptor_count(1)
+                    .stage_flags(vk::ShaderStageFlags::COMPUTE)
+            })
+            .collect();
+        unsafe {
+            let set_layout =
+                d.create_descriptor_set_layout(&vk::DescriptorSetLayoutCreateInfo::default().bindings(&binding_list), None)?;
+            let push = [vk::PushConstantRange::default().stage_flags(vk::ShaderStageFlags::COMPUTE).size(push_size)];
+            let set_layouts = [set_layout];
+            let layout = d.create_pipeline_layout(
+                &vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts).push_constant_ranges(&push),
+                None,
+            )?;
+            let module = gpu.shader_module(spirv)?;
+            let stage = vk::PipelineShaderStageCreateInfo::default().stage(vk::ShaderStageFlags::COMPUTE).module(module).name(entry);
+            let created = d.create_compute_pipelines(
+                vk::PipelineCache::null(),
+                &[vk::ComputePipelineCreateInfo::default().stage(stage).layout(layout)],
+                None,
+            );
+            d.destroy_shader_module(module, None);
+            let pipeline = created.map_err(|(_, e)| e)?[0];
+            Ok(ComputeKernel { set_layout, layout, pipeline, bindings })
+        }
+    }
+
+    /// Record a dispatch of `groups` workgroups over `buffers` (binding order) with `push`.
+    pub(crate) fn record(
+        &self,
+        gpu: &Gpu,
+        cb: vk::CommandBuffer,
+        pool: vk::DescriptorPool,
+        buffers: &[&Buffer],
+        push: &[u8],
+        groups: [u32; 3],
+    ) -> Result<(), GpuError> {
+        assert_eq!(buffers.len() as u32, self.bindings, "binding count");
+        let d = &gpu.device;
+        unsafe {
+            let layouts = [self.set_layout];
+            let set = d.allocate_descriptor_sets(
+                &vk::DescriptorSetAllocateInfo::default().descriptor_pool(pool).set_layouts(&layouts),
+            )?[0];
+            let infos: Vec<[vk::DescriptorBufferInfo; 1]> =
+                buffers.iter().map(|b| [vk::DescriptorBufferInfo::default().buffer(b.raw).range(vk::WHOLE_SIZE)]).collect();
+            let writes: Vec<_> = infos
+                .iter()
+                .enumerate()
+                .map(|(i, info)| {
+                    vk::WriteDescriptorSet::default()
+                        .dst_set(set)
+                        .dst_binding(i as u32)
+                        .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                        .buffer_info(info)
+                })
+                .collect();
+            d.update_descriptor_sets(&writes, &[]);
+            d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::COMPUTE, self.pipeline);
+            d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::COMPUTE, self.layout, 0, &[set], &[]);
+            d.cmd_push_constants(cb, self.layout, vk::ShaderStageFlags::COMPUTE, 0, push);
+            d.cmd_dispatch(cb, groups[0], groups[1], groups[2]);
+        }
+        Ok(())
+    }
+
+    pub(crate) fn destroy(&self, gpu: &Gpu) {
+        unsafe {
+            gpu.device.destroy_pipeline(self.pipeline, None);
+            gpu.device.destroy_pipeline_layout(self.layout, None);
+            gpu.device.destroy_descriptor_set_layout(self.set_layout, None);
+        }
+    }
+}
+
+/// Make compute-shader writes visible to later compute reads and transfers.
+pub(crate) fn compute_barrier(gpu: &Gpu, cb: vk::CommandBuffer) {
+    let barrier = vk::MemoryBarrier::default()
+        .src_access_mask(vk::AccessFlags::SHADER_WRITE)
+        .dst_access_mask(vk::AccessFlags::SHADER_READ | vk::AccessFlags::TRANSFER_READ);
+    unsafe {
+        gpu.device.cmd_pipeline_barrier(
+            cb,
+            vk::PipelineStageFlags::COMPUTE_SHADER,
+            vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER,
+            vk::DependencyFlags::empty(),
+            &[barrier],
+            &[],
+            &[],
+        )
+    };
+}
+
+/// Output of [`ScreenPasses::run`].
+pub struct ScreenOutput {
+    /// VAO result before the blur (full target, guard band = 1).
+    pub ao: Vec<f32>,
+    /// After the cross-bilateral blur.
+    pub ao_blurred: Vec<f32>,
+    /// GPU time per pass in milliseconds: `[("vao", ms), ("blur", ms)]`.
+    pub pass_ms: Vec<(&'static str, f64)>,
+}
+
+/// The VAO and blur pipelines.
+pub struct ScreenPasses {
+    vao: ComputeKernel,
+    blur: ComputeKernel,
+}
+
+const GROUP: u32 = 8; // threads(8, 8) in the shader crate
+
+impl ScreenPasses {
+    pub fn new(gpu: &Gpu) -> Result<Self, GpuError> {
+        Ok(ScreenPasses {
+            vao: ComputeKernel::new(gpu, modules::VAO_MAIN, c"vao_main", 3, size_of::<VaoParams>() as u32)?,
+            blur: ComputeKernel::new(gpu, modules::BLUR_MAIN, c"blur_main", 3, size_of::<BlurParams>() as u32)?,
+        })
+    }
+
+    /// VAO over the inner image then the horizontal and vertical blur, on a G-buffer already on
+    /// the device (`depth`: f32 per pixel, `normals`: encoded u32 per pixel, full target).
+    pub fn run(
+        &self,
+        gpu: &Gpu,
+        vao: &VaoParams,
+        blur: &BlurParams,
+        depth: &Buffer,
+        normals: &Buffer,
+    ) -> Result<ScreenOutput, GpuError> {
+        let size = vao.view.size();
+        let pixels = (size.x * size.y) as usize;
+        if depth.size < 4 * pixels as u64 || normals.size < 4 * pixels as u64 {
+            return Err(GpuError::Input(format!("G-buffer smaller than the {}×{} target", size.x, size.y)));
+        }
+        let usage = vk::BufferUsageFlags::STORAGE_BUFFER;
+        let ones = vec![1.0f32; pixels];
+        let ao = gpu.upload(&ones, usage)?;
+        let tmp = gpu.upload(&ones, usage)?;
+        let out = gpu.upload(&ones, usage)?;
+        let inner = size - 2 * vao.view.guard;
+        let groups = [inner.x.div_ceil(GROUP), inner.y.div_ceil(GROUP), 1];
+        let d = &gpu.device;
+        let result = (|| unsafe {
+            let sizes = [vk::DescriptorPoolSize::default().ty(vk::DescriptorType::STORAGE_BUFFER).descriptor_count(9)];
+            let pool = d.create_descriptor_pool(&vk::DescriptorPoolCreateInfo::default().max_sets(3).pool_sizes(&sizes), None)?;
+            let queries = d.create_query_pool(
+                &vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(3),
+                None,
+            )?;
+            let recorded = gpu.submit(|cb| -> Result<(), GpuError> {
+                d.cmd_reset_query_pool(cb, queries, 0, 3);
+                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TOP_OF_PIPE, queries, 0);
+                self.vao.record(gpu, cb, pool, &[depth, normals, &ao], bytemuck::bytes_of(vao), groups)?;
+                compute_barrier(gpu, cb);
+                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 1);
+                let horizontal = BlurParams { direction: uvec2(1, 0), ..*blur };
+                self.blur.record(gpu, cb, pool, &[&ao, depth, &tmp], bytemuck::bytes_of(&horizontal), groups)?;
+                compute_barrier(gpu, cb);
+                let vertical = BlurParams { direction: uvec2(0, 1), ..*blur };
+                self.blur.record(gpu, cb, pool, &[&tmp, depth, &out], bytemuck::bytes_of(&vertical), groups)?;
+                compute_barrier(gpu, cb);
+                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 2);
+                Ok(())
+            });
+            let mut stamps = [0u64; 3];
+            let got = recorded.and_then(|r| r).and_then(|_| {
+                d.get_query_pool_results(queries, 0, &mut stamps, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
+                    .map_err(GpuError::from)
+            });
+            d.destroy_query_pool(queries, None);
+            d.destroy_descriptor_pool(pool, None);
+            got?;
+            let ms = |a: u64, b: u64| b.saturating_sub(a) as f64 * gpu.timestamp_period_ns as f64 * 1e-6;
+            Ok(vec![("vao", ms(stamps[0], stamps[1])), ("blur", ms(stamps[1], stamps[2]))])
+        })();
+        let output = result.and_then(|pass_ms| {
+            Ok(ScreenOutput { ao: gpu.download(&ao)?, ao_blurred: gpu.download(&out)?, pass_ms })
+        });
+        for b in [ao, tmp, out] {
+            gpu.free_buffer(b);
+        }
+        output
+    }
+
+    pub fn destroy(&self, gpu: &Gpu) {
+        self.vao.destroy(gpu);
+        self.blur.destroy(gpu);
+    }
+}

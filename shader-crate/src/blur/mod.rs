@@ -1,0 +1,91 @@
+//! Separable depth-aware cross-bilateral blur, HBAO+ style (spec svao-raysd §12).
+
+#[allow(unused_imports)]
+use spirv_std::num_traits::Float;
+
+use crate::common::ViewParams;
+use crate::common::math::is_valid_depth;
+use crate::glam::{IVec2, UVec2, UVec3};
+use spirv_std::spirv;
+
+/// Kernel radius `K` (spec §12).
+pub const BLUR_RADIUS: i32 = 4;
+/// Gaussian falloff `φ = 1/(2σ²)` with `σ = (K+1)/2 = 2.5` (spec §12).
+pub const BLUR_FALLOFF: f32 = 0.08;
+
+/// Push constants of one blur pass.
+#[repr(C)]
+#[derive(Copy, Clone, Debug, PartialEq)]
+#[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+pub struct BlurParams {
+    pub view: ViewParams,
+    /// Pass direction: (1, 0) horizontal, (0, 1) vertical.
+    pub direction: UVec2,
+    /// Depth sharpness (spec §12: 16).
+    pub sharpness: f32,
+    pub _pad: u32,
+}
+
+/// Sample coordinate clamped to the inner image, `[g, res − g − 1]` per axis (spec §12 clamps
+/// the uv to the inner pixel-centre rectangle).
+#[inline]
+fn clamp_inner(view: &ViewParams, p: IVec2) -> UVec2 {
+    let g = view.guard as i32;
+    let size = view.size().as_ivec2();
+    UVec2::new(p.x.max(g).min(size.x - g - 1) as u32, p.y.max(g).min(size.y - g - 1) as u32)
+}
+
+/// One output pixel of one blur direction (spec §12): slope-corrected depth differences
+/// `Δ = |z_d − s·d − z0|·sharpness·12/z0`, weights `w = 2^(−d²·φ − Δ²)`, result
+/// `(a0 + Σ w·a_d)/(1 + Σ w)`; the slope is the smaller-magnitude one-sided difference, negated
+/// for the negative side ("better slope").
+#[inline]
+pub fn blur_pixel(params: &BlurParams, ao: &[f32], depth: &[f32], p: UVec2) -> f32 {
+    let view = &params.view;
+    let dir = params.direction.as_ivec2();
+    let at = |offset: i32| view.index(clamp_inner(view, p.as_ivec2() + dir * offset));
+    let a0 = ao[at(0)];
+    let z0 = depth[at(0)];
+    if !is_valid_depth(z0, view.far) {
+        return a0;
+    }
+    let slope_left = z0 - depth[at(-1)];
+    let slope_right = depth[at(1)] - z0;
+    let slope = if slope_left.abs() < slope_right.abs() { slope_left } else { slope_right };
+    let scale = params.sharpness * 12.0 / z0;
+    let mut sum = a0;
+    let mut weights = 1.0;
+    let mut d = 1;
+    while d <= BLUR_RADIUS {
+        let df = d as f32;
+        let mut side = -1;
+        while side <= 1 {
+            let i = at(side * d);
+            let delta = (depth[i] - (side as f32) * slope * df - z0).abs() * scale;
+            let w = (-df * df * BLUR_FALLOFF - delta * delta).exp2();
+            if w > 0.0 {
+                sum += w * ao[i];
+                weights += w;
+            }
+            side += 2;
+        }
+        d += 1;
+    }
+    sum / weights
+}
+
+/// Compute entry point for one blur direction over the inner image (pixel = id + guard).
+#[spirv(compute(threads(8, 8), entry_point_name = "blur_main"))]
+pub fn blur_main(
+    #[spirv(global_invocation_id)] id: UVec3,
+    #[spirv(push_constant)] params: &BlurParams,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] ao_in: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] depth: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] ao_out: &mut [f32],
+) {
+    let p = id.truncate() + params.view.guard;
+    if !params.view.is_inner(p) {
+        return;
+    }
+    ao_out[params.view.index(p)] = blur_pixel(params, ao_in, depth, p);
+}

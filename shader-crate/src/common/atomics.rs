@@ -1,0 +1,43 @@
+//! One wrapper per atomic operation: `spirv_std::arch` on SPIR-V, `AtomicU32` on the CPU
+//! (design: "GPU-only intrinsics behind one-line wrappers").
+
+/// A buffer of `u32` that supports atomic min/max at an index. The SPIR-V entry points implement
+/// it for `&mut [u32]` storage buffers, the CPU simulator for `&[AtomicU32]`.
+pub trait AtomicU32Buffer {
+    /// `slot[i] = min(slot[i], v)`; returns the previous value.
+    fn atomic_min(&mut self, i: usize, v: u32) -> u32;
+    /// `slot[i] = max(slot[i], v)`; returns the previous value.
+    fn atomic_max(&mut self, i: usize, v: u32) -> u32;
+}
+
+#[cfg(target_arch = "spirv")]
+impl AtomicU32Buffer for &mut [u32] {
+    fn atomic_min(&mut self, i: usize, v: u32) -> u32 {
+        use spirv_std::memory::{Scope, Semantics};
+        unsafe {
+            spirv_std::arch::atomic_u_min::<u32, { Scope::Device as u32 }, { Semantics::NONE.bits() }>(
+                &mut self[i],
+                v,
+            )
+        }
+    }
+    fn atomic_max(&mut self, i: usize, v: u32) -> u32 {
+        use spirv_std::memory::{Scope, Semantics};
+        unsafe {
+            spirv_std::arch::atomic_u_max::<u32, { Scope::Device as u32 }, { Semantics::NONE.bits() }>(
+                &mut self[i],
+                v,
+            )
+        }
+    }
+}
+
+#[cfg(not(target_arch = "spirv"))]
+impl AtomicU32Buffer for &[core::sync::atomic::AtomicU32] {
+    fn atomic_min(&mut self, i: usize, v: u32) -> u32 {
+        self[i].fetch_min(v, core::sync::atomic::Ordering::Relaxed)
+    }
+    fn atomic_max(&mut self, i: usize, v: u32) -> u32 {
+        self[i].fetch_max(v, core::sync::atomic::Ordering::Relaxed)
+    }
+}

@@ -1,0 +1,150 @@
+//! Pinhole camera conventions of spec svao-raysd §1: uv origin top-left with v downwards,
+//! right-handed view space looking down −Z, linear depth `d > 0` along −Z.
+
+use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
+
+/// Projection of the full render target (inner image plus guard band), as push-constant data.
+#[repr(C)]
+#[derive(Copy, Clone, Debug, PartialEq)]
+#[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+pub struct ViewParams {
+    /// Full target size `W×H` in pixels (inner size + 2·guard).
+    pub res: Vec2,
+    /// `(tx, ty)`: tangents of the half field of view of the FULL target (spec §1).
+    pub tan_half_fov: Vec2,
+    /// Near plane distance (view depth).
+    pub near: f32,
+    /// Far plane distance: depths at or beyond it are background.
+    pub far: f32,
+    /// G-buffer guard band `g` in pixels (spec §1, default 64).
+    pub guard: u32,
+    pub _pad: u32,
+}
+
+impl ViewParams {
+    /// Full target width and height as integers.
+    #[inline]
+    pub fn size(&self) -> UVec2 {
+        UVec2::new(self.res.x as u32, self.res.y as u32)
+    }
+
+    /// Centre uv of pixel `p`: `(p + 0.5)/res` (spec §1).
+    #[inline]
+    pub fn pixel_uv(&self, p: UVec2) -> Vec2 {
+        (p.as_vec2() + 0.5) / self.res
+    }
+
+    /// uv→view: `ndc = (2u−1, 1−2v)`, `X = (ndc.x·d·tx, ndc.y·d·ty, −d)` (spec §1).
+    #[inline]
+    pub fn uv_to_view(&self, uv: Vec2, d: f32) -> Vec3 {
+        let ndc = vec2(2.0 * uv.x - 1.0, 1.0 - 2.0 * uv.y);
+        vec3(ndc.x * d * self.tan_half_fov.x, ndc.y * d * self.tan_half_fov.y, -d)
+    }
+
+    /// view→uv: `u = 0.5 + 0.5·X.x/(tx·(−X.z))`, `v = 0.5 − 0.5·X.y/(ty·(−X.z))` (spec §1).
+    #[inline]
+    pub fn view_to_uv(&self, x: Vec3) -> Vec2 {
+        vec2(
+            0.5 + 0.5 * x.x / (self.tan_half_fov.x * -x.z),
+            0.5 - 0.5 * x.y / (self.tan_half_fov.y * -x.z),
+        )
+    }
+
+    /// Texel containing `uv` after clamping it into the target: `floor(sat(uv)·res)`, kept
+    /// inside `[0, res−1]`. Its centre is spec §1's `snap(saturate(uv), res)`.
+    #[inline]
+    pub fn texel_of_uv(&self, uv: Vec2) -> UVec2 {
+        let size = self.size();
+        let x = crate::common::math::sat(uv.x) * self.res.x;
+        let y = crate::common::math::sat(uv.y) * self.res.y;
+        UVec2::new((x as u32).min(size.x - 1), (y as u32).min(size.y - 1))
+    }
+
+    /// Is pixel `p` inside the inner image `[g, W−g) × [g, H−g)`?
+    #[inline]
+    pub fn is_inner(&self, p: UVec2) -> bool {
+        let size = self.size();
+        p.x >= self.guard && p.y >= self.guard && p.x + self.guard < size.x && p.y + self.guard < size.y
+    }
+
+    /// Row-major index of pixel `p` in a full-target buffer.
+    #[inline]
+    pub fn index(&self, p: UVec2) -> usize {
+        (p.y * self.size().x + p.x) as usize
+    }
+}
+
+/// A perspective camera placed in the world: the view matrices plus [`ViewParams`].
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct Camera {
+    /// World → view (right-handed, looking down −Z).
+    pub world_to_view: crate::glam::Mat4,
+    /// View → world.
+    pub view_to_world: crate::glam::Mat4,
+    pub view: ViewParams,
+}
+
+impl Camera {
+    /// Look-at camera whose vertical field of view `fov_y` (radians) covers the INNER image of
+    /// `inner` pixels; the guard band `guard` widens the frustum at the same focal length, so the
+    /// full target is `inner + 2·guard` (spec §1: 1920×1080 → 2048×1208).
+    pub fn look_at(
+        eye: Vec3,
+        target: Vec3,
+        up: Vec3,
+        fov_y: f32,
+        inner: UVec2,
+        guard: u32,
+        near: f32,
+        far: f32,
+    ) -> Self {
+        #[allow(unused_imports)]
+        use spirv_std::num_traits::Float;
+        // Right-handed view basis: x = right, y = up, z = backwards (the camera looks down −Z).
+        let forward = (target - eye).normalize();
+        let right = forward.cross(up).normalize();
+        let true_up = right.cross(forward);
+        let view_to_world = crate::glam::Mat4::from_cols(
+            right.extend(0.0),
+            true_up.extend(0.0),
+            (-forward).extend(0.0),
+            eye.extend(1.0),
+        );
+        let full = inner + 2 * guard;
+        let ty_inner = (0.5 * fov_y).tan();
+        // Same focal length: the tangent grows with the pixel count.
+        let ty = ty_inner * full.y as f32 / inner.y as f32;
+        let tx = ty * full.x as f32 / full.y as f32;
+        Camera {
+            world_to_view: view_to_world.inverse(),
+            view_to_world,
+            view: ViewParams {
+                res: full.as_vec2(),
+                tan_half_fov: vec2(tx, ty),
+                near,
+                far,
+                guard,
+                _pad: 0,
+            },
+        }
+    }
+
+    /// Camera position in the world.
+    #[inline]
+    pub fn eye(&self) -> Vec3 {
+        self.view_to_world.w_axis.truncate()
+    }
+
+    /// Unit world-space direction of the primary ray through `uv` of the full target.
+    #[inline]
+    pub fn primary_ray_direction(&self, uv: Vec2) -> Vec3 {
+        self.view_to_world.transform_vector3(self.view.uv_to_view(uv, 1.0)).normalize()
+    }
+
+    /// Linear view depth of a world point at ray distance `t` along `direction` from the eye:
+    /// `t·cos θ`, with θ the angle to the view axis.
+    #[inline]
+    pub fn linear_depth_of_hit(&self, direction: Vec3, t: f32) -> f32 {
+        t * -self.world_to_view.transform_vector3(direction).z
+    }
+}

@@ -1,0 +1,32 @@
+//! Read access to the G-buffer (linear depth + encoded view-space face normal), the resource
+//! trait every screen-space kernel is written against.
+
+use crate::common::normal_codec::decode_normal;
+use crate::glam::{UVec2, Vec3};
+
+/// What a screen-space kernel reads per pixel (spec svao-raysd §1 inputs).
+pub trait GBuffer {
+    /// Linear view depth at pixel `p` (may be NaN/∞/0 for broken input; kernels sanitize).
+    fn linear_depth(&self, p: UVec2) -> f32;
+    /// Unit view-space face normal at pixel `p`.
+    fn view_normal(&self, p: UVec2) -> Vec3;
+}
+
+/// The G-buffer as two row-major storage buffers of the full target: `f32` linear depth and
+/// octahedral-encoded normals ([`crate::common::normal_codec`]).
+pub struct GBufferSlices<'a> {
+    pub depth: &'a [f32],
+    pub normals: &'a [u32],
+    pub width: u32,
+}
+
+impl GBuffer for GBufferSlices<'_> {
+    #[inline]
+    fn linear_depth(&self, p: UVec2) -> f32 {
+        self.depth[(p.y * self.width + p.x) as usize]
+    }
+    #[inline]
+    fn view_normal(&self, p: UVec2) -> Vec3 {
+        decode_normal(self.normals[(p.y * self.width + p.x) as usize])
+    }
+}

@@ -1,0 +1,12 @@
+//! Math shared by every technique (spec svao-raysd §1, §4.1, §7.2, §7.3).
+
+pub mod atomics;
+pub mod camera;
+pub mod float_order;
+pub mod gbuffer_read;
+pub mod hash;
+pub mod math;
+pub mod normal_codec;
+pub mod tables;
+
+pub use camera::ViewParams;

@@ -1,0 +1,18 @@
+//! aokit kernels — every formula written once, compiled to SPIR-V by rust-gpu and natively for
+//! the CPU simulator (`aokit-cpu`).
+//!
+//! Folders mirror techniques: [`common`] (camera, hash, sequences, float-as-uint, normal codec),
+//! [`vao`] (Volumetric AO, spec svao-raysd §4–§5), [`blur`] (cross-bilateral blur, §12) and
+//! [`gbuffer`] (raster G-buffer entry points, §1).
+//!
+//! Entry points are thin: they read storage-buffer slices and push constants and call pure
+//! per-pixel functions, which the CPU simulator calls directly over the same slices.
+#![cfg_attr(target_arch = "spirv", no_std)]
+#![allow(clippy::too_many_arguments)]
+
+pub use spirv_std::glam;
+
+pub mod blur;
+pub mod common;
+pub mod gbuffer;
+pub mod vao;

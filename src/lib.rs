@@ -1,0 +1,7 @@
+//! aokit: the scenes, cameras and image output around the kernels in `aokit-shaders`, run on
+//! the CPU (`aokit-cpu`) or on Vulkan (`aokit-vulkan`).
+
+pub mod frame;
+pub mod output;
+pub mod render;
+pub mod scene;

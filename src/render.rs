@@ -1,0 +1,147 @@
+//! The VAO pipeline on either back-end: G-buffer → VAO → bilateral blur.
+
+use crate::frame::Frame;
+use crate::scene::Scene;
+use aokit_cpu::{GBufferImage, Progress, SceneBvh};
+use aokit_vulkan::{GBufferVertex, Gpu, GpuError, GpuOptions, RasterGBuffer, ScreenPasses};
+use std::time::Instant;
+
+/// Result of one render: the G-buffer it used, AO before and after the blur (full target,
+/// guard band = 1), and time per pass.
+pub struct Render {
+    pub gbuffer: GBufferImage,
+    pub ao: Vec<f32>,
+    pub ao_blurred: Vec<f32>,
+    /// `(pass, milliseconds)`: wall clock on the CPU, timestamp queries on Vulkan.
+    pub passes: Vec<(&'static str, f64)>,
+}
+
+fn ms_since(t: Instant) -> f64 {
+    t.elapsed().as_secs_f64() * 1e3
+}
+
+/// The CPU back-end: ray-cast G-buffer through a BVH, then the kernels over slices.
+pub struct CpuRenderer {
+    bvh: SceneBvh,
+    face_normals: Vec<aokit_shaders::glam::Vec3>,
+    pub bvh_build_ms: f64,
+}
+
+impl CpuRenderer {
+    pub fn new(scene: &Scene) -> Self {
+        let t = Instant::now();
+        let bvh = SceneBvh::build(&scene.triangles);
+        CpuRenderer { bvh, face_normals: scene.face_normals(), bvh_build_ms: ms_since(t) }
+    }
+
+    /// One primary ray per pixel of the full target.
+    pub fn gbuffer(&self, frame: &Frame, progress: Progress) -> (GBufferImage, f64) {
+        let t = Instant::now();
+        let g = aokit_cpu::ray_cast_gbuffer(&self.bvh, &self.face_normals, &frame.camera, progress);
+        (g, ms_since(t))
+    }
+
+    /// VAO and blur on a given G-buffer.
+    pub fn ao(frame: &Frame, gbuffer: GBufferImage, progress: Progress) -> Render {
+        let t = Instant::now();
+        let ao = aokit_cpu::run_vao(&frame.vao_params(), &gbuffer.depth, &gbuffer.normals, progress);
+        let vao_ms = ms_since(t);
+        let t = Instant::now();
+        let ao_blurred = aokit_cpu::run_blur(&frame.blur_params(), &ao, &gbuffer.depth);
+        let passes = vec![("vao", vao_ms), ("blur", ms_since(t))];
+        Render { gbuffer, ao, ao_blurred, passes }
+    }
+
+    /// The whole pipeline.
+    pub fn render(&self, frame: &Frame, progress: Progress) -> Render {
+        let (gbuffer, gbuffer_ms) = self.gbuffer(frame, progress);
+        let mut r = Self::ao(frame, gbuffer, progress);
+        r.passes.insert(0, ("gbuffer", gbuffer_ms));
+        r
+    }
+}
+
+/// De-indexed triangles with their face normals, the raster pass's vertex stream.
+pub fn raster_vertices(scene: &Scene) -> Vec<GBufferVertex> {
+    let normals = scene.face_normals();
+    scene
+        .triangles
+        .iter()
+        .zip(&normals)
+        .flat_map(|(t, n)| {
+            t.map(|v| GBufferVertex { position: [v.x, v.y, v.z, 1.0], face_normal: [n.x, n.y, n.z, 0.0] })
+        })
+        .collect()
+}
+
+/// The Vulkan back-end: raster G-buffer, compute VAO and blur.
+pub struct VulkanRenderer {
+    pub gpu: Gpu,
+    raster: RasterGBuffer,
+    screen: ScreenPasses,
+}
+
+impl VulkanRenderer {
+    pub fn new(options: &GpuOptions) -> Result<Self, GpuError> {
+        let gpu = Gpu::new(options)?;
+        let raster = RasterGBuffer::new(&gpu)?;
+        let screen = ScreenPasses::new(&gpu)?;
+        Ok(VulkanRenderer { gpu, raster, screen })
+    }
+
+    /// Rasterize the G-buffer and read it back.
+    pub fn gbuffer(&self, scene: &Scene, frame: &Frame) -> Result<(GBufferImage, f64), GpuError> {
+        let (depth, normals, ms) = self.raster.render(&self.gpu, &raster_vertices(scene), &frame.raster_params())?;
+        let size = frame.camera.view.size();
+        let image = self.gpu.download(&depth).and_then(|d| {
+            Ok(GBufferImage { width: size.x, height: size.y, depth: d, normals: self.gpu.download(&normals)? })
+        });
+        self.gpu.free_buffer(depth);
+        self.gpu.free_buffer(normals);
+        Ok((image?, ms))
+    }
+
+    /// VAO and blur on a given G-buffer (uploaded).
+    pub fn ao(&self, frame: &Frame, gbuffer: GBufferImage) -> Result<Render, GpuError> {
+        let usage = ash::vk::BufferUsageFlags::STORAGE_BUFFER;
+        let depth = self.gpu.upload(&gbuffer.depth, usage)?;
+        let normals = self.gpu.upload(&gbuffer.normals, usage);
+        let out = normals.and_then(|n| {
+            let r = self.screen.run(&self.gpu, &frame.vao_params(), &frame.blur_params(), &depth, &n);
+            self.gpu.free_buffer(n);
+            r
+        });
+        self.gpu.free_buffer(depth);
+        let out = out?;
+        Ok(Render { gbuffer, ao: out.ao, ao_blurred: out.ao_blurred, passes: out.pass_ms })
+    }
+
+    /// The whole pipeline, G-buffer kept on the device.
+    pub fn render(&self, scene: &Scene, frame: &Frame) -> Result<Render, GpuError> {
+        let (depth, normals, gbuffer_ms) = self.raster.render(&self.gpu, &raster_vertices(scene), &frame.raster_params())?;
+        let size = frame.camera.view.size();
+        let run = || -> Result<Render, GpuError> {
+            let out = self.screen.run(&self.gpu, &frame.vao_params(), &frame.blur_params(), &depth, &normals)?;
+            let gbuffer = GBufferImage {
+                width: size.x,
+                height: size.y,
+                depth: self.gpu.download(&depth)?,
+                normals: self.gpu.download(&normals)?,
+            };
+            let mut passes = vec![("gbuffer", gbuffer_ms)];
+            passes.extend(out.pass_ms);
+            Ok(Render { gbuffer, ao: out.ao, ao_blurred: out.ao_blurred, passes })
+        };
+        let r = run();
+        self.gpu.free_buffer(depth);
+        self.gpu.free_buffer(normals);
+        r
+    }
+}
+
+impl Drop for VulkanRenderer {
+    fn drop(&mut self) {
+        self.raster.destroy(&self.gpu);
+        self.screen.destroy(&self.gpu);
+    }
+}

@@ -1,0 +1,88 @@
+//! `cargo run -p xtask -- build-spirv`: compile `shader-crate/` to SPIR-V with rust-gpu 0.11
+//! (cargo-gpu-install fetches the pinned nightly and builds the codegen backend once, cached
+//! under ~/.cache/rust-gpu), validate every module with `spirv-val` and naga, and write
+//! `assets/spirv/{entry}.spv` plus `manifest.json` with the hash of the sources.
+//!
+//! Runs on stable; nothing else in the workspace needs the nightly.
+
+use aokit_vulkan::manifest::{Manifest, reflect};
+use aokit_vulkan::spirv_hash::shader_source_hash;
+use cargo_gpu_install::install::Install;
+use cargo_gpu_install::spirv_builder::{Capability, ModuleResult, SpirvMetadata};
+use std::path::{Path, PathBuf};
+use std::process::{Command, ExitCode};
+
+const TARGET: &str = "spirv-unknown-vulkan1.2";
+
+fn root() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).parent().expect("workspace root").to_path_buf()
+}
+
+/// Run Khronos `spirv-val` for the Vulkan 1.2 environment.
+pub fn spirv_val(path: &Path) -> Result<(), String> {
+    let out = Command::new("spirv-val")
+        .args(["--target-env", "vulkan1.2"])
+        .arg(path)
+        .output()
+        .map_err(|e| format!("cannot run spirv-val (apt-get install spirv-tools): {e}"))?;
+    if out.status.success() {
+        Ok(())
+    } else {
+        Err(format!("spirv-val {}: {}{}", path.display(), String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr)))
+    }
+}
+
+fn build_spirv() -> Result<(), String> {
+    let root = root();
+    let shader_crate = root.join("shader-crate");
+    let out_dir = root.join("assets/spirv");
+    let backend = Install::from_shader_crate(shader_crate.clone()).run().map_err(|e| format!("installing rust-gpu: {e:?}"))?;
+    let result = backend
+        .to_spirv_builder(&shader_crate, TARGET)
+        .release(true)
+        .multimodule(true)
+        .spirv_metadata(SpirvMetadata::NameVariables)
+        .capability(Capability::VulkanMemoryModelDeviceScope)
+        .build()
+        .map_err(|e| format!("rust-gpu build: {e}"))?;
+    let ModuleResult::MultiModule(modules) = &result.module else {
+        return Err("expected one module per entry point".into());
+    };
+    std::fs::create_dir_all(&out_dir).map_err(|e| e.to_string())?;
+    let mut manifest = Manifest {
+        source_hash: shader_source_hash(&shader_crate).map_err(|e| e.to_string())?,
+        target: TARGET.into(),
+        rust_gpu: "0.11.0".into(),
+        modules: Vec::new(),
+    };
+    for (entry, path) in modules {
+        let file = format!("{entry}.spv");
+        let dest = out_dir.join(&file);
+        std::fs::copy(path, &dest).map_err(|e| format!("{}: {e}", path.display()))?;
+        spirv_val(&dest)?;
+        let bytes = std::fs::read(&dest).map_err(|e| e.to_string())?;
+        let module = reflect::reflect(&file, &bytes).map_err(|e| format!("{file}: {e}"))?;
+        println!("  {file}: {} bytes, {} stage, {} bindings, {} push-constant bytes", bytes.len(), module.stage, module.bindings.len(), module.push_constant_bytes);
+        manifest.modules.push(module);
+    }
+    let json = serde_json::to_string_pretty(&manifest).map_err(|e| e.to_string())? + "\n";
+    std::fs::write(out_dir.join("manifest.json"), json).map_err(|e| e.to_string())?;
+    println!("wrote {} modules and manifest.json (source hash {})", manifest.modules.len(), manifest.source_hash);
+    Ok(())
+}
+
+fn main() -> ExitCode {
+    match std::env::args().nth(1).as_deref() {
+        Some("build-spirv") => match build_spirv() {
+            Ok(()) => ExitCode::SUCCESS,
+            Err(e) => {
+                eprintln!("error: {e}");
+                ExitCode::FAILURE
+            }
+        },
+        _ => {
+            eprintln!("usage: cargo run -p xtask -- build-spirv");
+            ExitCode::FAILURE
+        }
+    }
+}
