@@ -101,6 +101,10 @@ pub fn setup_pixel<G: GBuffer>(
 /// One VAO line sample (spec §4.2).
 #[derive(Copy, Clone, Debug)]
 pub struct LineSample {
+    /// False for an invalid sample (less than 10 % of its chord above the tangent plane): it
+    /// contributes 0 and is never refined. (A flag rather than `Option`: rust-gpu 0.11 cannot
+    /// copy an `Option` whose payload has a `bool` niche.)
+    pub valid: bool,
     /// Sphere half-chord `h`; `pdf = 2h`.
     pub half_chord: f32,
     /// Hemisphere-clipped chord end (in object-space z, towards the camera is positive).
@@ -123,19 +127,16 @@ fn non_zero(x: f32) -> f32 {
     sign_nonzero(x) * x.abs().max(1.0e-4)
 }
 
-/// Build sample `i` (spec §4.2). `None` for an invalid sample (less than 10 % of its chord above
-/// the tangent plane): it contributes 0 and is never refined.
+/// Build sample `i` (spec §4.2).
 #[inline]
-pub fn line_sample(frame: &PixelFrame, view: &ViewParams, i: u32) -> Option<LineSample> {
+pub fn line_sample(frame: &PixelFrame, view: &ViewParams, i: u32) -> LineSample {
     let alpha = (i as f32 / AO_SAMPLES as f32) * 2.0 * 3.141;
     let r = VAO_RADII[i as usize] * frame.radius;
     let offset = r * vec2(alpha.sin(), alpha.cos());
     let half_chord = (frame.radius * frame.radius - r * r).max(0.0).sqrt();
     let zc = -offset.dot(vec2(frame.normal_sphere.x, frame.normal_sphere.y)) / non_zero(frame.normal_sphere.z);
     let sphere_end = clamp(zc, -half_chord, half_chord);
-    if (half_chord - sphere_end) / (2.0 * half_chord) <= 0.1 {
-        return None;
-    }
+    let valid = (half_chord - sphere_end) / (2.0 * half_chord) > 0.1;
     let s = frame.position + frame.tangent * offset.x + frame.bitangent * offset.y;
     let uv = view.view_to_uv(s);
     let in_screen = uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0;
@@ -144,7 +145,7 @@ pub fn line_sample(frame: &PixelFrame, view: &ViewParams, i: u32) -> Option<Line
     let screen_distance = ((frame.uv - uv) * view.res).length();
     let du = (frame.uv - uv_r).abs();
     let same_pixel = du.x < 0.9 / view.res.x && du.y < 0.9 / view.res.y;
-    Some(LineSample { half_chord, sphere_end, uv, texel, in_screen, screen_distance, same_pixel })
+    LineSample { valid, half_chord, sphere_end, uv, texel, in_screen, screen_distance, same_pixel }
 }
 
 /// Object-space z of a view point: `oz(D) = dot(D − P, n̂)` (spec §1; larger = closer to the camera).
@@ -194,7 +195,8 @@ pub fn vao_pixel<G: GBuffer>(gbuffer: &G, params: &VaoParams, p: UVec2) -> f32 {
     let mut sum = 0.0;
     let mut i = 0;
     while i < AO_SAMPLES {
-        if let Some(s) = line_sample(&frame, view, i) {
+        let s = line_sample(&frame, view, i);
+        if s.valid {
             sum += if s.same_pixel {
                 unoccluded_visibility(&s)
             } else {
