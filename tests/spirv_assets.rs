@@ -1,0 +1,53 @@
+//! The committed SPIR-V is fresh against the shader sources, valid (spirv-val, naga) and
+//! described correctly by its manifest. Needs no nightly.
+
+use aokit_vulkan::manifest::{Manifest, reflect};
+use aokit_vulkan::modules;
+use aokit_vulkan::spirv_hash::shader_source_hash;
+use std::path::Path;
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+#[test]
+fn spirv_is_rebuilt_whenever_the_shader_sources_change() {
+    let manifest = Manifest::committed();
+    let now = shader_source_hash(&root().join("shader-crate")).unwrap();
+    assert_eq!(
+        manifest.source_hash, now,
+        "shader-crate/ changed since assets/spirv/ was built: run `cargo run -p xtask -- build-spirv` and commit assets/spirv"
+    );
+}
+
+#[test]
+fn manifest_matches_naga_reflection_of_every_module() {
+    let manifest = Manifest::committed();
+    let names: Vec<_> = manifest.modules.iter().map(|m| m.entry_point.as_str()).collect();
+    let embedded: Vec<_> = modules::ALL.iter().map(|m| m.0).collect();
+    let mut sorted = embedded.clone();
+    sorted.sort();
+    assert_eq!(names, sorted, "manifest and embedded modules list the same entry points");
+    for m in &manifest.modules {
+        let bytes = std::fs::read(root().join("assets/spirv").join(&m.file)).unwrap();
+        let embedded = modules::ALL.iter().find(|e| e.0 == m.entry_point).unwrap().1;
+        assert_eq!(bytes, embedded, "{} embedded == on disk", m.file);
+        let reflected = reflect::reflect(&m.file, &bytes).unwrap_or_else(|e| panic!("{}: {e}", m.file));
+        assert_eq!(&reflected, m);
+    }
+}
+
+#[test]
+fn every_module_passes_spirv_val() {
+    let available = std::process::Command::new("spirv-val").arg("--version").output().is_ok();
+    if !available {
+        assert!(std::env::var_os("CI").is_none(), "CI must install spirv-tools (spirv-val)");
+        eprintln!("spirv-val not installed: skipping (apt-get install spirv-tools)");
+        return;
+    }
+    for m in &Manifest::committed().modules {
+        let path = root().join("assets/spirv").join(&m.file);
+        let out = std::process::Command::new("spirv-val").args(["--target-env", "vulkan1.2"]).arg(&path).output().unwrap();
+        assert!(out.status.success(), "{}: {}{}", m.file, String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    }
+}
