@@ -216,3 +216,47 @@ fn linear_depth_of_a_hit_is_the_view_z() {
         assert!((back - uv).abs().max_element() < 1e-5);
     }
 }
+
+#[test]
+fn precomputed_trigonometry_matches_the_formulas() {
+    use aokit_shaders::common::tables::{ROTATION_SIN_COS, VAO_DIRECTIONS, VAO_HALF_CHORDS};
+    for i in 0..8 {
+        let alpha = (i as f64 / 8.0) * 2.0 * 3.141;
+        assert!((VAO_DIRECTIONS[i][0] as f64 - alpha.sin()).abs() < 1e-7);
+        assert!((VAO_DIRECTIONS[i][1] as f64 - alpha.cos()).abs() < 1e-7);
+        let rho = VAO_RADII[i] as f64;
+        assert!((VAO_HALF_CHORDS[i] as f64 - (1.0 - rho * rho).sqrt()).abs() < 1e-7);
+    }
+    for y in 0..4u32 {
+        for x in 0..4u32 {
+            let xi = rotation_angle(uvec2(x, y)) as f64;
+            let [s, c] = ROTATION_SIN_COS[y as usize][x as usize];
+            assert!((s as f64 - xi.sin()).abs() < 1e-6 && (c as f64 - xi.cos()).abs() < 1e-6, "({x},{y})");
+        }
+    }
+}
+
+#[test]
+fn atomic_min_max_on_ordered_bits_reproduce_f32_min_max_under_contention() {
+    use aokit_shaders::common::atomics::AtomicU32Buffer;
+    use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
+    use std::sync::atomic::{AtomicU32, Ordering};
+    let slots = [AtomicU32::new(RAY_MIN_CLEAR), AtomicU32::new(RAY_MAX_CLEAR)];
+    let values: Vec<f32> = (0..40_000u32).map(|i| ((i.wrapping_mul(2_654_435_761) >> 8) as f32) * 1e-3).collect();
+    std::thread::scope(|s| {
+        for chunk in values.chunks(10_000) {
+            let slots = &slots;
+            s.spawn(move || {
+                let mut buf: &[AtomicU32] = slots;
+                for &v in chunk {
+                    buf.atomic_min(0, ordered_bits(v));
+                    buf.atomic_max(1, ordered_bits(v));
+                }
+            });
+        }
+    });
+    let min = values.iter().copied().fold(f32::INFINITY, f32::min);
+    let max = values.iter().copied().fold(0.0, f32::max);
+    assert_eq!(from_ordered_bits(slots[0].load(Ordering::Relaxed)), min);
+    assert_eq!(from_ordered_bits(slots[1].load(Ordering::Relaxed)), max);
+}

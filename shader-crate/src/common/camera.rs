@@ -44,9 +44,10 @@ impl ViewParams {
     /// view→uv: `u = 0.5 + 0.5·X.x/(tx·(−X.z))`, `v = 0.5 − 0.5·X.y/(ty·(−X.z))` (spec §1).
     #[inline]
     pub fn view_to_uv(&self, x: Vec3) -> Vec2 {
+        let half_inv_depth = 0.5 / -x.z;
         vec2(
-            0.5 + 0.5 * x.x / (self.tan_half_fov.x * -x.z),
-            0.5 - 0.5 * x.y / (self.tan_half_fov.y * -x.z),
+            0.5 + x.x * half_inv_depth / self.tan_half_fov.x,
+            0.5 - x.y * half_inv_depth / self.tan_half_fov.y,
         )
     }
 

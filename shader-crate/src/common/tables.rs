@@ -20,10 +20,49 @@ pub fn rotation_angle(p: UVec2) -> f32 {
     (texel as f32 / 255.0) * 2.0 * 3.141
 }
 
+/// `(sin ξ, cos ξ)` of [`rotation_angle`] for every cell, `[y][x]`, rounded from f64: the
+/// kernels read this instead of evaluating two transcendentals per pixel (tests tie it to the
+/// formula).
+#[allow(clippy::excessive_precision)]
+pub const ROTATION_SIN_COS: [[[f32; 2]; 4]; 4] = [
+    [[0.0, 1.0], [0.01290994230657816, -0.999916672706604], [0.6915943622589111, 0.7222861051559448], [-0.7000154256820679, -0.7141277194023132]],
+    [[-0.9999751448631287, -0.007047745399177074], [0.999823808670044, 0.018771694973111153], [-0.7100116014480591, 0.7041899561882019], [0.7182192802429199, -0.6958168745040894]],
+    [[0.9159459471702576, 0.40130165219306946], [-0.9205881357192993, -0.3905348479747772], [0.36117663979530334, 0.9324974417686462], [-0.3720850944519043, -0.9281986355781555]],
+    [[-0.38513123989105225, 0.9228618144989014], [0.39592504501342773, -0.9182828068733215], [-0.9260013103485107, 0.37752023339271545], [0.9303640127182007, -0.3666371703147888]],
+];
+
+/// `(sin ξ, cos ξ)` of the per-pixel rotation at `(p.x mod 4, p.y mod 4)` (spec §4.1 step 6).
+#[inline]
+pub fn rotation_sin_cos(p: UVec2) -> Vec2 {
+    let e = ROTATION_SIN_COS[(p.y % 4) as usize][(p.x % 4) as usize];
+    vec2(e[0], e[1])
+}
+
 /// Normalized VAO sample radii ρ_i = sqrt(1 − ψ_i^(2/3)), ψ_i = VdC(8 + i), as hard-coded to 6
 /// decimals in the reference (spec §4.2 table; SVAO paper appendix 7.1).
 pub const VAO_RADII: [f32; 8] = [
     0.917883, 0.564429, 0.734504, 0.359545, 0.820004, 0.470149, 0.650919, 0.205215,
+];
+
+/// Normalized half-chords `sqrt(1 − ρ_i²)` of [`VAO_RADII`]: `h_i = R·sqrt(1 − ρ_i²)` (spec §4.2).
+#[allow(clippy::excessive_precision)]
+pub const VAO_HALF_CHORDS: [f32; 8] = [
+    0.39685115218162537, 0.825481653213501, 0.6786043643951416, 0.933127760887146, 0.5723578333854675,
+    0.8825870752334595, 0.7591471672058105, 0.9787169098854065,
+];
+
+/// Disc directions `(sin α_i, cos α_i)` with `α_i = (i/8)·2·3.141` (spec §4.2; 3.141 as in the
+/// reference), rounded from f64.
+#[allow(clippy::excessive_precision)]
+pub const VAO_DIRECTIONS: [[f32; 2]; 8] = [
+    [0.0, 1.0],
+    [0.7070019841194153, 0.7072115540504456],
+    [0.9999999403953552, 0.0002963267907034606],
+    [0.7074210047721863, -0.706792414188385],
+    [0.0005926535814069211, -0.9999998211860657],
+    [-0.7065827250480652, -0.7076303958892822],
+    [-0.9999995827674866, -0.0008889802847988904],
+    [-0.7078397870063782, 0.7063730359077454],
 ];
 
 /// Number of AO samples per pixel (spec §2).

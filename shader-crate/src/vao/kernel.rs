@@ -6,7 +6,7 @@ use spirv_std::num_traits::Float;
 use crate::common::ViewParams;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::math::{clamp, is_valid_depth, sat, sign_nonzero};
-use crate::common::tables::{AO_SAMPLES, VAO_RADII, rotation_angle};
+use crate::common::tables::{AO_SAMPLES, VAO_DIRECTIONS, VAO_HALF_CHORDS, VAO_RADII, rotation_sin_cos};
 use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
 
 /// Push constants of the VAO pass.
@@ -28,6 +28,8 @@ pub struct VaoParams {
 /// Everything §4.1 derives once per shaded pixel.
 #[derive(Copy, Clone, Debug)]
 pub struct PixelFrame {
+    /// The shaded pixel.
+    pub pixel: UVec2,
     /// Pixel centre uv.
     pub uv: Vec2,
     /// Sample radius after the screen clamp (`R_pix`, spec §4.1 step 3).
@@ -79,13 +81,14 @@ pub fn setup_pixel<G: GBuffer>(
     if position.dot(normal) > 0.0 {
         normal = -normal;
     }
-    let xi = rotation_angle(p);
-    let r = vec3(xi.sin(), xi.cos(), 0.0);
+    let rot = rotation_sin_cos(p);
+    let r = vec3(rot.x, rot.y, 0.0);
     let axis = -position / position.length();
     let bitangent = axis.cross(r).normalize();
     let tangent = bitangent.cross(axis);
     let normal_sphere = vec3(normal.dot(tangent), normal.dot(bitangent), normal.dot(axis));
     Some(PixelFrame {
+        pixel: p,
         uv,
         radius,
         screen_radius: rpx,
@@ -130,10 +133,9 @@ fn non_zero(x: f32) -> f32 {
 /// Build sample `i` (spec §4.2).
 #[inline]
 pub fn line_sample(frame: &PixelFrame, view: &ViewParams, i: u32) -> LineSample {
-    let alpha = (i as f32 / AO_SAMPLES as f32) * 2.0 * 3.141;
-    let r = VAO_RADII[i as usize] * frame.radius;
-    let offset = r * vec2(alpha.sin(), alpha.cos());
-    let half_chord = (frame.radius * frame.radius - r * r).max(0.0).sqrt();
+    let dir = VAO_DIRECTIONS[i as usize];
+    let offset = VAO_RADII[i as usize] * frame.radius * vec2(dir[0], dir[1]);
+    let half_chord = VAO_HALF_CHORDS[i as usize] * frame.radius;
     let zc = -offset.dot(vec2(frame.normal_sphere.x, frame.normal_sphere.y)) / non_zero(frame.normal_sphere.z);
     let sphere_end = clamp(zc, -half_chord, half_chord);
     let valid = (half_chord - sphere_end) / (2.0 * half_chord) > 0.1;
@@ -141,10 +143,10 @@ pub fn line_sample(frame: &PixelFrame, view: &ViewParams, i: u32) -> LineSample 
     let uv = view.view_to_uv(s);
     let in_screen = uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0;
     let texel = view.texel_of_uv(uv);
-    let uv_r = (texel.as_vec2() + 0.5) / view.res;
     let screen_distance = ((frame.uv - uv) * view.res).length();
-    let du = (frame.uv - uv_r).abs();
-    let same_pixel = du.x < 0.9 / view.res.x && du.y < 0.9 / view.res.y;
+    // Spec §4.2 tests |uv − uvR| < 0.9/res on both axes; both are texel centres, so this holds
+    // exactly when the raster sample's texel is the shaded pixel.
+    let same_pixel = texel.x == frame.pixel.x && texel.y == frame.pixel.y;
     LineSample { valid, half_chord, sphere_end, uv, texel, in_screen, screen_distance, same_pixel }
 }
 
