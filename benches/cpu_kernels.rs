@@ -27,9 +27,13 @@ fn kernels(c: &mut Criterion) {
     let mut group = c.benchmark_group("sponza_2048x1208");
     group.sample_size(10).measurement_time(Duration::from_secs(8));
     group.bench_function("gbuffer_primary_rays", |bench| bench.iter(|| renderer.gbuffer(&frame, &no_progress)));
-    group.bench_function("vao_pass", |bench| bench.iter(|| aokit_cpu::run_vao(&vao, &g.depth, &g.normals, &no_progress)));
+    group.bench_function("vao_pass", |bench| {
+        bench.iter(|| aokit_cpu::run_vao(&vao, &g.depth, &g.normals, &no_progress))
+    });
     let ao = aokit_cpu::run_vao(&vao, &g.depth, &g.normals, &no_progress);
-    group.bench_function("blur_two_passes", |bench| bench.iter(|| aokit_cpu::run_blur(&frame.blur_params(), &ao, &g.depth)));
+    group.bench_function("blur_two_passes", |bench| {
+        bench.iter(|| aokit_cpu::run_blur(&frame.blur_params(), &ao, &g.depth))
+    });
     group.finish();
 }
 

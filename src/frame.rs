@@ -15,8 +15,15 @@ pub enum CameraChoice {
     /// A built-in scene's named preset (`None`: its default preset; `--camera auto` for files).
     Preset(Option<String>),
     /// Frame the scene's bounding box.
-    Auto { fov_deg: f32 },
-    Explicit { eye: Vec3, target: Vec3, up: Vec3, fov_deg: f32 },
+    Auto {
+        fov_deg: f32,
+    },
+    Explicit {
+        eye: Vec3,
+        target: Vec3,
+        up: Vec3,
+        fov_deg: f32,
+    },
 }
 
 /// Everything a render needs besides the scene.
@@ -118,7 +125,11 @@ impl Frame {
             return Err(FrameError::Fov(fov_deg));
         }
         let forward = target - eye;
-        if !eye.is_finite() || !target.is_finite() || forward.length() == 0.0 || forward.cross(up).length() <= 1e-6 * forward.length() * up.length() {
+        if !eye.is_finite()
+            || !target.is_finite()
+            || forward.length() == 0.0
+            || forward.cross(up).length() <= 1e-6 * forward.length() * up.length()
+        {
             return Err(FrameError::DegenerateCamera);
         }
         let radius = req.radius.or(builtin.map(|b| b.radius)).unwrap_or(DEFAULT_RADIUS_FRACTION * diagonal);

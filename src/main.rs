@@ -46,7 +46,8 @@ enum Technique {
 }
 
 fn parse_vec3(s: &str) -> Result<Vec3, String> {
-    let parts: Vec<f32> = s.split(',').map(|p| p.trim().parse::<f32>().map_err(|e| format!("'{p}': {e}"))).collect::<Result<_, _>>()?;
+    let parts: Vec<f32> =
+        s.split(',').map(|p| p.trim().parse::<f32>().map_err(|e| format!("'{p}': {e}"))).collect::<Result<_, _>>()?;
     match parts[..] {
         [x, y, z] => Ok(Vec3::new(x, y, z)),
         _ => Err(format!("expected x,y,z, got '{s}'")),
@@ -141,10 +142,14 @@ fn render(args: RenderArgs) -> Result<(), String> {
     };
     let mut frame = Frame::resolve(&scene, builtin, &request).map_err(|e| e.to_string())?;
     if let (Some(fov), CameraChoice::Preset(_)) = (args.fov, &request.camera) {
-        frame = Frame::resolve(&scene, builtin, &FrameRequest {
-            camera: CameraChoice::Explicit { eye: frame.eye, target: frame.target, up: frame.up, fov_deg: fov },
-            ..request.clone()
-        })
+        frame = Frame::resolve(
+            &scene,
+            builtin,
+            &FrameRequest {
+                camera: CameraChoice::Explicit { eye: frame.eye, target: frame.target, up: frame.up, fov_deg: fov },
+                ..request.clone()
+            },
+        )
         .map_err(|e| e.to_string())?;
     }
     let (result, device) = match args.backend {
@@ -152,7 +157,8 @@ fn render(args: RenderArgs) -> Result<(), String> {
             let renderer = CpuRenderer::new(&scene);
             let rows = frame.camera.view.size().y as u64 + frame.inner.y as u64;
             let bar = ProgressBar::new(rows).with_style(
-                ProgressStyle::with_template("{spinner} {msg} [{bar:40}] {pos}/{len} rows ({eta})").expect("valid template"),
+                ProgressStyle::with_template("{spinner} {msg} [{bar:40}] {pos}/{len} rows ({eta})")
+                    .expect("valid template"),
             );
             bar.set_message("CPU G-buffer + VAO");
             let r = renderer.render(&frame, &|n| bar.inc(n));
@@ -160,11 +166,16 @@ fn render(args: RenderArgs) -> Result<(), String> {
             (r, "cpu".to_string())
         }
         Backend::Vulkan => {
-            let renderer = VulkanRenderer::new(&GpuOptions { validation: args.validation }).map_err(|e| e.to_string())?;
+            let renderer =
+                VulkanRenderer::new(&GpuOptions { validation: args.validation }).map_err(|e| e.to_string())?;
             let r = renderer.render(&scene, &frame).map_err(|e| e.to_string())?;
             let messages = renderer.gpu.validation_messages();
             if !messages.is_empty() {
-                return Err(format!("validation layer reported {} message(s):\n{}", messages.len(), messages.join("\n")));
+                return Err(format!(
+                    "validation layer reported {} message(s):\n{}",
+                    messages.len(),
+                    messages.join("\n")
+                ));
             }
             (r, renderer.gpu.info().name.clone())
         }
@@ -182,7 +193,8 @@ fn render(args: RenderArgs) -> Result<(), String> {
     line["technique"] = "vao".into();
     line["backend"] = format!("{:?}", args.backend).to_lowercase().into();
     line["device"] = device.into();
-    line["passes_ms"] = result.passes.iter().map(|(n, ms)| serde_json::json!({"name": n, "ms": ms})).collect::<Vec<_>>().into();
+    line["passes_ms"] =
+        result.passes.iter().map(|(n, ms)| serde_json::json!({"name": n, "ms": ms})).collect::<Vec<_>>().into();
     line["mean_ao"] = (ao.iter().map(|&a| a as f64).sum::<f64>() / ao.len() as f64).into();
     line["out"] = args.out.display().to_string().into();
     println!("{line}");
@@ -193,14 +205,16 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Render(args) => render(args),
-        Command::Info { validation } => aokit_vulkan::Gpu::new(&GpuOptions { validation }).map_err(|e| e.to_string()).map(|gpu| {
-            let info = gpu.info();
-            println!("{}", serde_json::to_string(info).expect("serializable"));
-            eprintln!("device: {} ({}, Vulkan {})", info.name, info.device_type, info.api_version);
-            for (ext, has) in &info.ray_tracing_extensions {
-                eprintln!("  {ext}: {}", if *has { "yes" } else { "no" });
-            }
-        }),
+        Command::Info { validation } => {
+            aokit_vulkan::Gpu::new(&GpuOptions { validation }).map_err(|e| e.to_string()).map(|gpu| {
+                let info = gpu.info();
+                println!("{}", serde_json::to_string(info).expect("serializable"));
+                eprintln!("device: {} ({}, Vulkan {})", info.name, info.device_type, info.api_version);
+                for (ext, has) in &info.ray_tracing_extensions {
+                    eprintln!("  {ext}: {}", if *has { "yes" } else { "no" });
+                }
+            })
+        }
         Command::Scenes => {
             for s in builtin::builtin_scenes() {
                 let cams: Vec<_> = s.cameras.iter().map(|c| c.name).collect();

@@ -2,7 +2,8 @@
 
 use crate::frame::Frame;
 use crate::scene::Scene;
-use aokit_cpu::{GBufferImage, Progress, SceneBvh};
+use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
+use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_vulkan::{GBufferVertex, Gpu, GpuError, GpuOptions, RasterGBuffer, ScreenPasses};
 use std::time::Instant;
 
@@ -24,6 +25,9 @@ fn ms_since(t: Instant) -> f64 {
 pub struct CpuRenderer {
     bvh: SceneBvh,
     face_normals: Vec<aokit_shaders::glam::Vec3>,
+    uvs: Vec<[aokit_shaders::glam::Vec2; 3]>,
+    materials: Vec<u32>,
+    masks: (Vec<AlphaMaskHeader>, Vec<f32>),
     pub bvh_build_ms: f64,
 }
 
@@ -31,13 +35,27 @@ impl CpuRenderer {
     pub fn new(scene: &Scene) -> Self {
         let t = Instant::now();
         let bvh = SceneBvh::build(&scene.triangles);
-        CpuRenderer { bvh, face_normals: scene.face_normals(), bvh_build_ms: ms_since(t) }
+        CpuRenderer {
+            bvh,
+            face_normals: scene.face_normals(),
+            uvs: scene.triangle_uvs.clone(),
+            materials: scene.triangle_materials.clone(),
+            masks: scene.alpha_masks(),
+            bvh_build_ms: ms_since(t),
+        }
     }
 
     /// One primary ray per pixel of the full target.
     pub fn gbuffer(&self, frame: &Frame, progress: Progress) -> (GBufferImage, f64) {
         let t = Instant::now();
-        let g = aokit_cpu::ray_cast_gbuffer(&self.bvh, &self.face_normals, &frame.camera, progress);
+        let surfaces = Surfaces {
+            face_normals: &self.face_normals,
+            uvs: &self.uvs,
+            materials: &self.materials,
+            mask_headers: &self.masks.0,
+            mask_texels: &self.masks.1,
+        };
+        let g = aokit_cpu::ray_cast_gbuffer(&self.bvh, &surfaces, &frame.camera, progress);
         (g, ms_since(t))
     }
 
@@ -61,17 +79,23 @@ impl CpuRenderer {
     }
 }
 
-/// De-indexed triangles with their face normals, the raster pass's vertex stream.
+/// De-indexed triangles with their face normals, texture coordinates and materials: the raster
+/// pass's vertex stream.
 pub fn raster_vertices(scene: &Scene) -> Vec<GBufferVertex> {
     let normals = scene.face_normals();
-    scene
-        .triangles
-        .iter()
-        .zip(&normals)
-        .flat_map(|(t, n)| {
-            t.map(|v| GBufferVertex { position: [v.x, v.y, v.z, 1.0], face_normal: [n.x, n.y, n.z, 0.0] })
-        })
-        .collect()
+    let mut out = Vec::with_capacity(3 * scene.triangles.len());
+    for (i, (t, n)) in scene.triangles.iter().zip(&normals).enumerate() {
+        for (v, uv) in t.iter().zip(scene.triangle_uvs[i]) {
+            out.push(GBufferVertex {
+                position: [v.x, v.y, v.z, 1.0],
+                face_normal: [n.x, n.y, n.z, 0.0],
+                uv: uv.to_array(),
+                material: scene.triangle_materials[i],
+                _pad: 0,
+            });
+        }
+    }
+    out
 }
 
 /// The Vulkan back-end: raster G-buffer, compute VAO and blur.
@@ -91,7 +115,8 @@ impl VulkanRenderer {
 
     /// Rasterize the G-buffer and read it back.
     pub fn gbuffer(&self, scene: &Scene, frame: &Frame) -> Result<(GBufferImage, f64), GpuError> {
-        let (depth, normals, ms) = self.raster.render(&self.gpu, &raster_vertices(scene), &frame.raster_params())?;
+        let (depth, normals, ms) =
+            self.raster.render(&self.gpu, &raster_vertices(scene), &scene.alpha_masks(), &frame.raster_params())?;
         let size = frame.camera.view.size();
         let image = self.gpu.download(&depth).and_then(|d| {
             Ok(GBufferImage { width: size.x, height: size.y, depth: d, normals: self.gpu.download(&normals)? })
@@ -118,7 +143,8 @@ impl VulkanRenderer {
 
     /// The whole pipeline, G-buffer kept on the device.
     pub fn render(&self, scene: &Scene, frame: &Frame) -> Result<Render, GpuError> {
-        let (depth, normals, gbuffer_ms) = self.raster.render(&self.gpu, &raster_vertices(scene), &frame.raster_params())?;
+        let (depth, normals, gbuffer_ms) =
+            self.raster.render(&self.gpu, &raster_vertices(scene), &scene.alpha_masks(), &frame.raster_params())?;
         let size = frame.camera.view.size();
         let run = || -> Result<Render, GpuError> {
             let out = self.screen.run(&self.gpu, &frame.vao_params(), &frame.blur_params(), &depth, &normals)?;

@@ -24,7 +24,10 @@ fn error_of(name: &str, bytes: &[u8]) -> String {
 
 #[test]
 fn obj_quads_are_triangulated() {
-    let path = temp("quad.obj", b"mtllib missing.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n");
+    let path = temp(
+        "quad.obj",
+        b"mtllib missing.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nf 1/1 2/2 3/3 4/4\n",
+    );
     let s = Scene::load(&path).unwrap();
     assert_eq!(s.triangles.len(), 2);
     assert_eq!(s.bounds(), (vec3(0.0, 0.0, 0.0), vec3(1.0, 1.0, 0.0)));
@@ -40,7 +43,8 @@ fn malformed_files_name_the_file_and_the_problem() {
     assert!(err.contains("non-finite"), "{err}");
     let err = error_of("empty.obj", b"# nothing\n");
     assert!(err.contains("no triangles"), "{err}");
-    let err = error_of("bad.ply", b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\nnot-a-number\n");
+    let err =
+        error_of("bad.ply", b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\nnot-a-number\n");
     assert!(err.contains("PLY"), "{err}");
     let err = error_of("bad_face.ply", b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n");
     assert!(err.contains("vertex 9"), "{err}");
@@ -103,7 +107,9 @@ fn gltf_parts() -> (String, Vec<u8>) {
     bin.extend([0u16, 1, 2, 0].iter().flat_map(|i| i.to_le_bytes()));
     let mut png = Vec::new();
     let img = image::RgbaImage::from_fn(2, 2, |x, _| image::Rgba([200, 200, 200, if x == 0 { 0 } else { 255 }]));
-    image::DynamicImage::ImageRgba8(img).write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png).unwrap();
+    image::DynamicImage::ImageRgba8(img)
+        .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+        .unwrap();
     let json = format!(
         r#"{{"asset":{{"version":"2.0"}},"scene":0,"scenes":[{{"nodes":[0]}}],
         "nodes":[{{"mesh":0,"translation":[10,0,0]}}],

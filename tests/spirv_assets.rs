@@ -47,7 +47,14 @@ fn every_module_passes_spirv_val() {
     }
     for m in &Manifest::committed().modules {
         let path = root().join("assets/spirv").join(&m.file);
-        let out = std::process::Command::new("spirv-val").args(["--target-env", "vulkan1.2"]).arg(&path).output().unwrap();
-        assert!(out.status.success(), "{}: {}{}", m.file, String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+        let out =
+            std::process::Command::new("spirv-val").args(["--target-env", "vulkan1.2"]).arg(&path).output().unwrap();
+        assert!(
+            out.status.success(),
+            "{}: {}{}",
+            m.file,
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        );
     }
 }

@@ -2,14 +2,15 @@
 //! robustness to broken G-buffers, and analytic scenes.
 
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
+use aokit::render::CpuRenderer;
 use aokit::scene::Scene;
 use aokit::scene::procedural::push_quad;
-use aokit_cpu::{GBufferImage, SceneBvh, no_progress, ray_cast_gbuffer, run_blur, run_vao};
+use aokit_cpu::{GBufferImage, no_progress, run_blur, run_vao};
 use aokit_shaders::common::camera::Camera;
 use aokit_shaders::common::normal_codec::encode_normal;
 use aokit_shaders::glam::{UVec2, Vec2, Vec3, uvec2, vec3};
-use aokit_shaders::vao::kernel::{LineSample, halo_visibility};
 use aokit_shaders::vao::VaoParams;
+use aokit_shaders::vao::kernel::{LineSample, halo_visibility};
 use proptest::prelude::*;
 
 fn sample(h: f32, end: f32) -> LineSample {
@@ -107,14 +108,18 @@ fn ao_darkens_towards_a_crease() {
         width: 96,
         height: 64,
         guard: 16,
-        camera: CameraChoice::Explicit { eye: vec3(6.0, 3.0, 0.0), target: vec3(0.0, 0.0, 0.0), up: Vec3::Y, fov_deg: 50.0 },
+        camera: CameraChoice::Explicit {
+            eye: vec3(6.0, 3.0, 0.0),
+            target: vec3(0.0, 0.0, 0.0),
+            up: Vec3::Y,
+            fov_deg: 50.0,
+        },
         radius: Some(1.0),
         exponent: 1.0,
         thickness: 0.0,
     };
     let frame = Frame::resolve(&scene, None, &req).unwrap();
-    let bvh = SceneBvh::build(&scene.triangles);
-    let g = ray_cast_gbuffer(&bvh, &scene.face_normals(), &frame.camera, &no_progress);
+    let (g, _) = CpuRenderer::new(&scene).gbuffer(&frame, &no_progress);
     let ao = run_vao(&frame.vao_params(), &g.depth, &g.normals, &no_progress);
     // Walk along the floor away from the crease through the image centre column's world
     // points: project floor points at distance s from the wall.

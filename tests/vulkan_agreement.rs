@@ -80,6 +80,14 @@ fn device_reports_ray_tracing_extensions() {
     let info = vk.gpu.info();
     assert!(!info.name.is_empty());
     let names: Vec<_> = info.ray_tracing_extensions.iter().map(|e| e.0.as_str()).collect();
-    assert_eq!(names, ["VK_KHR_acceleration_structure", "VK_KHR_ray_tracing_pipeline", "VK_KHR_ray_query", "VK_KHR_deferred_host_operations"]);
+    assert_eq!(
+        names,
+        [
+            "VK_KHR_acceleration_structure",
+            "VK_KHR_ray_tracing_pipeline",
+            "VK_KHR_ray_query",
+            "VK_KHR_deferred_host_operations"
+        ]
+    );
     common::assert_validation_clean(&vk);
 }

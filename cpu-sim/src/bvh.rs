@@ -1,6 +1,6 @@
 //! CPU ray casting through obvhs' CWBVH (Ylitie et al. 2017), built once per scene.
 
-use aokit_shaders::glam::{Vec3, Vec3A};
+use aokit_shaders::glam::{Vec2, Vec3, Vec3A, vec2};
 use obvhs::BvhBuildParams;
 use obvhs::cwbvh::CwBvh;
 use obvhs::cwbvh::builder::build_cwbvh_from_tris;
@@ -27,10 +27,8 @@ pub struct SceneBvh {
 impl SceneBvh {
     /// Build the BVH over `triangles` (world-space vertices).
     pub fn build(triangles: &[[Vec3; 3]]) -> Self {
-        let tris: Vec<Triangle> = triangles
-            .iter()
-            .map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() })
-            .collect();
+        let tris: Vec<Triangle> =
+            triangles.iter().map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() }).collect();
         let bvh = build_cwbvh_from_tris(&tris, BvhBuildParams::medium_build(), &mut Duration::default());
         let triangles = bvh.primitive_indices.iter().map(|&i| tris[i as usize]).collect();
         SceneBvh { bvh, triangles }
@@ -39,12 +37,39 @@ impl SceneBvh {
     /// Closest hit along `origin + t·direction` for `t ∈ (t_min, t_max)`, both ends exclusive as
     /// on lavapipe's hardware-style traversal.
     pub fn closest_hit(&self, origin: Vec3, direction: Vec3, t_min: f32, t_max: f32) -> Option<Hit> {
+        self.closest_accepted_hit(origin, direction, t_min, t_max, |_, _| true)
+    }
+
+    /// Closest hit that `accept(triangle, barycentrics)` accepts (an alpha test, say); the
+    /// barycentrics are the weights of the triangle's second and third vertex.
+    pub fn closest_accepted_hit(
+        &self,
+        origin: Vec3,
+        direction: Vec3,
+        t_min: f32,
+        t_max: f32,
+        accept: impl Fn(u32, Vec2) -> bool,
+    ) -> Option<Hit> {
         let ray = Ray::new(Vec3A::from(origin), Vec3A::from(direction), t_min, t_max);
         let mut hit = RayHit::none();
         let found = self.bvh.ray_traverse(ray, &mut hit, |ray, id| {
-            let t = self.triangles[id].intersect(ray);
-            if t > ray.tmin && t < ray.tmax { t } else { f32::INFINITY }
+            let tri = &self.triangles[id];
+            let t = tri.intersect(ray);
+            if !(t > ray.tmin && t < ray.tmax) {
+                return f32::INFINITY;
+            }
+            let p = ray.origin + ray.direction * t;
+            if accept(self.bvh.primitive_indices[id], barycentrics(p, tri)) { t } else { f32::INFINITY }
         });
         found.then(|| Hit { t: hit.t, triangle: self.bvh.primitive_indices[hit.primitive_id as usize] })
     }
+}
+
+/// Barycentric weights `(b1, b2)` of `v1` and `v2` for a point `p` in the triangle's plane.
+fn barycentrics(p: Vec3A, tri: &Triangle) -> Vec2 {
+    let (e1, e2, d) = (tri.v1 - tri.v0, tri.v2 - tri.v0, p - tri.v0);
+    let (d00, d01, d11) = (e1.dot(e1), e1.dot(e2), e2.dot(e2));
+    let (d20, d21) = (d.dot(e1), d.dot(e2));
+    let denom = d00 * d11 - d01 * d01;
+    vec2(d11 * d20 - d01 * d21, d00 * d21 - d01 * d20) / denom
 }

@@ -2,9 +2,10 @@
 //! the CPU counterpart of the raster pass in `aokit_shaders::gbuffer`.
 
 use crate::{Progress, SceneBvh};
+use aokit_shaders::common::alpha::{AlphaMaskHeader, alpha_test_passes};
 use aokit_shaders::common::camera::Camera;
 use aokit_shaders::common::normal_codec::encode_normal;
-use aokit_shaders::glam::{UVec2, Vec3};
+use aokit_shaders::glam::{UVec2, Vec2, Vec3};
 use rayon::prelude::*;
 
 /// A G-buffer over the full target: linear view depth (`far` where nothing was hit) and the
@@ -17,31 +18,57 @@ pub struct GBufferImage {
     pub normals: Vec<u32>,
 }
 
-/// Cast one primary ray per pixel centre. `face_normals[i]` is triangle `i`'s world face normal.
-pub fn ray_cast_gbuffer(bvh: &SceneBvh, face_normals: &[Vec3], camera: &Camera, progress: Progress) -> GBufferImage {
+/// Per-triangle surface data the G-buffer needs besides the geometry in the BVH.
+pub struct Surfaces<'a> {
+    /// World face normal of each triangle.
+    pub face_normals: &'a [Vec3],
+    /// Texture coordinates of each triangle's corners.
+    pub uvs: &'a [[Vec2; 3]],
+    /// Material index of each triangle.
+    pub materials: &'a [u32],
+    /// Alpha masks per material ([`alpha_test_passes`]).
+    pub mask_headers: &'a [AlphaMaskHeader],
+    pub mask_texels: &'a [f32],
+}
+
+impl Surfaces<'_> {
+    /// Alpha test of triangle `tri` at barycentrics `b` (weights of its 2nd and 3rd corner).
+    fn passes_alpha(&self, tri: u32, b: Vec2) -> bool {
+        let [a0, a1, a2] = self.uvs[tri as usize];
+        let uv = a0 * (1.0 - b.x - b.y) + a1 * b.x + a2 * b.y;
+        alpha_test_passes(self.mask_headers, self.mask_texels, self.materials[tri as usize], uv)
+    }
+}
+
+/// Cast one primary ray per pixel centre; alpha-masked surfaces are skipped where cut out.
+pub fn ray_cast_gbuffer(bvh: &SceneBvh, surfaces: &Surfaces, camera: &Camera, progress: Progress) -> GBufferImage {
+    let masked = surfaces.mask_headers.iter().any(|h| h.width > 0);
     let size = camera.view.size();
     let eye = camera.eye();
     let far = camera.view.far;
     let mut depth = vec![far; (size.x * size.y) as usize];
     let mut normals = vec![0u32; depth.len()];
-    depth
-        .par_chunks_mut(size.x as usize)
-        .zip(normals.par_chunks_mut(size.x as usize))
-        .enumerate()
-        .for_each(|(y, (depth_row, normal_row))| {
+    depth.par_chunks_mut(size.x as usize).zip(normals.par_chunks_mut(size.x as usize)).enumerate().for_each(
+        |(y, (depth_row, normal_row))| {
             for x in 0..size.x {
                 let uv = camera.view.pixel_uv(UVec2::new(x, y as u32));
                 let dir = camera.primary_ray_direction(uv);
-                if let Some(hit) = bvh.closest_hit(eye, dir, 0.0, f32::INFINITY) {
+                let hit = if masked {
+                    bvh.closest_accepted_hit(eye, dir, 0.0, f32::INFINITY, |tri, b| surfaces.passes_alpha(tri, b))
+                } else {
+                    bvh.closest_hit(eye, dir, 0.0, f32::INFINITY)
+                };
+                if let Some(hit) = hit {
                     let d = camera.linear_depth_of_hit(dir, hit.t);
                     if d < far {
                         depth_row[x as usize] = d;
-                        let n = camera.world_to_view.transform_vector3(face_normals[hit.triangle as usize]);
+                        let n = camera.world_to_view.transform_vector3(surfaces.face_normals[hit.triangle as usize]);
                         normal_row[x as usize] = encode_normal(n);
                     }
                 }
             }
             progress(1);
-        });
+        },
+    );
     GBufferImage { width: size.x, height: size.y, depth, normals }
 }

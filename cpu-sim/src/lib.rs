@@ -7,7 +7,7 @@ pub mod gbuffer;
 pub mod screen;
 
 pub use bvh::SceneBvh;
-pub use gbuffer::{GBufferImage, ray_cast_gbuffer};
+pub use gbuffer::{GBufferImage, Surfaces, ray_cast_gbuffer};
 pub use screen::{run_blur, run_vao};
 
 /// Called with the number of rows finished since the last call (drives a progress bar).

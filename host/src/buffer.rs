@@ -14,7 +14,12 @@ pub struct Buffer {
 
 impl Gpu {
     /// Create a buffer of `size` bytes (at least 4) in `location`.
-    pub fn create_buffer(&self, size: u64, usage: vk::BufferUsageFlags, location: MemoryLocation) -> Result<Buffer, GpuError> {
+    pub fn create_buffer(
+        &self,
+        size: u64,
+        usage: vk::BufferUsageFlags,
+        location: MemoryLocation,
+    ) -> Result<Buffer, GpuError> {
         let size = size.max(4);
         let raw = unsafe {
             self.device.create_buffer(
@@ -52,7 +57,8 @@ impl Gpu {
     /// A device-local storage buffer holding `data` (uploaded through a staging buffer).
     pub fn upload<T: bytemuck::Pod>(&self, data: &[T], usage: vk::BufferUsageFlags) -> Result<Buffer, GpuError> {
         let bytes: &[u8] = bytemuck::cast_slice(data);
-        let staging = self.create_buffer(bytes.len() as u64, vk::BufferUsageFlags::TRANSFER_SRC, MemoryLocation::CpuToGpu)?;
+        let staging =
+            self.create_buffer(bytes.len() as u64, vk::BufferUsageFlags::TRANSFER_SRC, MemoryLocation::CpuToGpu)?;
         let mapped = staging.allocation.as_ref().and_then(|a| a.mapped_ptr()).expect("CpuToGpu memory is mapped");
         unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), mapped.as_ptr() as *mut u8, bytes.len()) };
         let buffer = self.create_buffer(
@@ -80,7 +86,11 @@ impl Gpu {
             let count = buffer.size as usize / std::mem::size_of::<T>();
             let mut out = vec![T::zeroed(); count];
             unsafe {
-                std::ptr::copy_nonoverlapping(mapped.as_ptr() as *const u8, out.as_mut_ptr() as *mut u8, count * std::mem::size_of::<T>())
+                std::ptr::copy_nonoverlapping(
+                    mapped.as_ptr() as *const u8,
+                    out.as_mut_ptr() as *mut u8,
+                    count * std::mem::size_of::<T>(),
+                )
             };
             out
         });

@@ -96,7 +96,9 @@ impl Gpu {
         let app = vk::ApplicationInfo::default().application_name(c"aokit").api_version(vk::API_VERSION_1_3);
         let messages: Box<Mutex<Vec<String>>> = Box::default();
         let mut messenger_info = vk::DebugUtilsMessengerCreateInfoEXT::default()
-            .message_severity(vk::DebugUtilsMessageSeverityFlagsEXT::WARNING | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR)
+            .message_severity(
+                vk::DebugUtilsMessageSeverityFlagsEXT::WARNING | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR,
+            )
             .message_type(
                 vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
                     | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
@@ -164,7 +166,9 @@ impl Gpu {
     }
 
     #[allow(clippy::type_complexity)]
-    fn open_device(instance: &ash::Instance) -> Result<(vk::PhysicalDevice, ash::Device, u32, DeviceInfo, f32), GpuError> {
+    fn open_device(
+        instance: &ash::Instance,
+    ) -> Result<(vk::PhysicalDevice, ash::Device, u32, DeviceInfo, f32), GpuError> {
         let mut candidates = Vec::new();
         for pd in unsafe { instance.enumerate_physical_devices()? } {
             let props = unsafe { instance.get_physical_device_properties(pd) };
@@ -212,7 +216,8 @@ impl Gpu {
             .vulkan_memory_model(true)
             .vulkan_memory_model_device_scope(true);
         let mut f13 = vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(true);
-        let create = vk::DeviceCreateInfo::default().queue_create_infos(&queues).push_next(&mut f12).push_next(&mut f13);
+        let create =
+            vk::DeviceCreateInfo::default().queue_create_infos(&queues).push_next(&mut f12).push_next(&mut f13);
         let device = unsafe { instance.create_device(pd, &create, None)? };
         Ok((pd, device, family, info, props.limits.timestamp_period))
     }

@@ -2,17 +2,22 @@
 //! normal (R32_UINT) over the full target, copied into storage buffers for the compute passes.
 
 use crate::{Buffer, Gpu, GpuError, modules};
+use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_shaders::gbuffer::RasterParams;
 use ash::vk;
 use gpu_allocator::MemoryLocation;
 use gpu_allocator::vulkan::{Allocation, AllocationCreateDesc, AllocationScheme};
 
-/// One de-indexed vertex: world position and its triangle's world face normal (w unused).
+/// One de-indexed vertex: world position, its triangle's world face normal (w unused), texture
+/// coordinate and material index (for the alpha test).
 #[repr(C)]
 #[derive(Copy, Clone, Debug, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct GBufferVertex {
     pub position: [f32; 4],
     pub face_normal: [f32; 4],
+    pub uv: [f32; 2],
+    pub material: u32,
+    pub _pad: u32,
 }
 
 const DEPTH_FORMAT: vk::Format = vk::Format::R32_SFLOAT;
@@ -21,6 +26,7 @@ const Z_FORMAT: vk::Format = vk::Format::D32_SFLOAT;
 
 /// The G-buffer raster pipeline.
 pub struct RasterGBuffer {
+    set_layout: vk::DescriptorSetLayout,
     layout: vk::PipelineLayout,
     pipeline: vk::Pipeline,
 }
@@ -32,7 +38,13 @@ struct Target {
 }
 
 impl Gpu {
-    fn create_target(&self, format: vk::Format, extent: vk::Extent2D, usage: vk::ImageUsageFlags, aspect: vk::ImageAspectFlags) -> Result<Target, GpuError> {
+    fn create_target(
+        &self,
+        format: vk::Format,
+        extent: vk::Extent2D,
+        usage: vk::ImageUsageFlags,
+        aspect: vk::ImageAspectFlags,
+    ) -> Result<Target, GpuError> {
         let d = &self.device;
         unsafe {
             let image = d.create_image(
@@ -48,20 +60,23 @@ impl Gpu {
                     .initial_layout(vk::ImageLayout::UNDEFINED),
                 None,
             )?;
-            let allocation = self.allocator.lock().unwrap_or_else(|e| e.into_inner()).allocate(&AllocationCreateDesc {
-                name: "aokit render target",
-                requirements: d.get_image_memory_requirements(image),
-                location: MemoryLocation::GpuOnly,
-                linear: false,
-                allocation_scheme: AllocationScheme::GpuAllocatorManaged,
-            })?;
+            let allocation =
+                self.allocator.lock().unwrap_or_else(|e| e.into_inner()).allocate(&AllocationCreateDesc {
+                    name: "aokit render target",
+                    requirements: d.get_image_memory_requirements(image),
+                    location: MemoryLocation::GpuOnly,
+                    linear: false,
+                    allocation_scheme: AllocationScheme::GpuAllocatorManaged,
+                })?;
             d.bind_image_memory(image, allocation.memory(), allocation.offset())?;
             let view = d.create_image_view(
                 &vk::ImageViewCreateInfo::default()
                     .image(image)
                     .view_type(vk::ImageViewType::TYPE_2D)
                     .format(format)
-                    .subresource_range(vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1)),
+                    .subresource_range(
+                        vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1),
+                    ),
                 None,
             )?;
             Ok(Target { image, view, allocation })
@@ -95,7 +110,9 @@ fn layout_barrier(
         .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
         .image(image)
         .subresource_range(vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1));
-    unsafe { gpu.device.cmd_pipeline_barrier(cb, src_stage, dst_stage, vk::DependencyFlags::empty(), &[], &[], &[barrier]) };
+    unsafe {
+        gpu.device.cmd_pipeline_barrier(cb, src_stage, dst_stage, vk::DependencyFlags::empty(), &[], &[], &[barrier])
+    };
 }
 
 impl RasterGBuffer {
@@ -105,25 +122,68 @@ impl RasterGBuffer {
             let push = [vk::PushConstantRange::default()
                 .stage_flags(vk::ShaderStageFlags::VERTEX)
                 .size(size_of::<RasterParams>() as u32)];
-            let layout = d.create_pipeline_layout(&vk::PipelineLayoutCreateInfo::default().push_constant_ranges(&push), None)?;
+            // Fragment-stage storage buffers: alpha-mask headers and texels.
+            let bindings: Vec<_> = (0..2)
+                .map(|b| {
+                    vk::DescriptorSetLayoutBinding::default()
+                        .binding(b)
+                        .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                        .descriptor_count(1)
+                        .stage_flags(vk::ShaderStageFlags::FRAGMENT)
+                })
+                .collect();
+            let set_layout = d.create_descriptor_set_layout(
+                &vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings),
+                None,
+            )?;
+            let set_layouts = [set_layout];
+            let layout = d.create_pipeline_layout(
+                &vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts).push_constant_ranges(&push),
+                None,
+            )?;
             let vs = gpu.shader_module(modules::GBUFFER_VS)?;
             let fs = gpu.shader_module(modules::GBUFFER_FS)?;
             let stages = [
-                vk::PipelineShaderStageCreateInfo::default().stage(vk::ShaderStageFlags::VERTEX).module(vs).name(c"gbuffer_vs"),
-                vk::PipelineShaderStageCreateInfo::default().stage(vk::ShaderStageFlags::FRAGMENT).module(fs).name(c"gbuffer_fs"),
+                vk::PipelineShaderStageCreateInfo::default()
+                    .stage(vk::ShaderStageFlags::VERTEX)
+                    .module(vs)
+                    .name(c"gbuffer_vs"),
+                vk::PipelineShaderStageCreateInfo::default()
+                    .stage(vk::ShaderStageFlags::FRAGMENT)
+                    .module(fs)
+                    .name(c"gbuffer_fs"),
             ];
             let bindings = [vk::VertexInputBindingDescription::default()
                 .binding(0)
                 .stride(size_of::<GBufferVertex>() as u32)
                 .input_rate(vk::VertexInputRate::VERTEX)];
             let attributes = [
-                vk::VertexInputAttributeDescription::default().location(0).binding(0).format(vk::Format::R32G32B32A32_SFLOAT).offset(0),
-                vk::VertexInputAttributeDescription::default().location(1).binding(0).format(vk::Format::R32G32B32A32_SFLOAT).offset(16),
+                vk::VertexInputAttributeDescription::default()
+                    .location(0)
+                    .binding(0)
+                    .format(vk::Format::R32G32B32A32_SFLOAT)
+                    .offset(0),
+                vk::VertexInputAttributeDescription::default()
+                    .location(1)
+                    .binding(0)
+                    .format(vk::Format::R32G32B32A32_SFLOAT)
+                    .offset(16),
+                vk::VertexInputAttributeDescription::default()
+                    .location(2)
+                    .binding(0)
+                    .format(vk::Format::R32G32_SFLOAT)
+                    .offset(32),
+                vk::VertexInputAttributeDescription::default()
+                    .location(3)
+                    .binding(0)
+                    .format(vk::Format::R32_UINT)
+                    .offset(40),
             ];
             let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
                 .vertex_binding_descriptions(&bindings)
                 .vertex_attribute_descriptions(&attributes);
-            let assembly = vk::PipelineInputAssemblyStateCreateInfo::default().topology(vk::PrimitiveTopology::TRIANGLE_LIST);
+            let assembly =
+                vk::PipelineInputAssemblyStateCreateInfo::default().topology(vk::PrimitiveTopology::TRIANGLE_LIST);
             let viewport = vk::PipelineViewportStateCreateInfo::default().viewport_count(1).scissor_count(1);
             // No culling: primary rays on the CPU also take the first surface whatever its winding.
             let raster = vk::PipelineRasterizationStateCreateInfo::default()
@@ -131,19 +191,22 @@ impl RasterGBuffer {
                 .cull_mode(vk::CullModeFlags::NONE)
                 .front_face(vk::FrontFace::COUNTER_CLOCKWISE)
                 .line_width(1.0);
-            let multisample = vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(vk::SampleCountFlags::TYPE_1);
+            let multisample =
+                vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(vk::SampleCountFlags::TYPE_1);
             // Reverse-Z: nearer is greater.
             let depth = vk::PipelineDepthStencilStateCreateInfo::default()
                 .depth_test_enable(true)
                 .depth_write_enable(true)
                 .depth_compare_op(vk::CompareOp::GREATER);
-            let blend_attachments = [vk::PipelineColorBlendAttachmentState::default().color_write_mask(vk::ColorComponentFlags::R); 2];
+            let blend_attachments =
+                [vk::PipelineColorBlendAttachmentState::default().color_write_mask(vk::ColorComponentFlags::R); 2];
             let blend = vk::PipelineColorBlendStateCreateInfo::default().attachments(&blend_attachments);
             let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
             let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
             let formats = [DEPTH_FORMAT, NORMAL_FORMAT];
-            let mut rendering =
-                vk::PipelineRenderingCreateInfo::default().color_attachment_formats(&formats).depth_attachment_format(Z_FORMAT);
+            let mut rendering = vk::PipelineRenderingCreateInfo::default()
+                .color_attachment_formats(&formats)
+                .depth_attachment_format(Z_FORMAT);
             let info = vk::GraphicsPipelineCreateInfo::default()
                 .stages(&stages)
                 .vertex_input_state(&vertex_input)
@@ -160,31 +223,80 @@ impl RasterGBuffer {
             d.destroy_shader_module(vs, None);
             d.destroy_shader_module(fs, None);
             let pipeline = created.map_err(|(_, e)| e)?[0];
-            Ok(RasterGBuffer { layout, pipeline })
+            Ok(RasterGBuffer { set_layout, layout, pipeline })
         }
     }
 
     /// Rasterize `vertices` (de-indexed triangles) into `(depth, normals)` storage buffers of the
-    /// full target; empty pixels hold depth = far and normal code 0. Returns the buffers and the
-    /// GPU time of the pass in milliseconds.
-    pub fn render(&self, gpu: &Gpu, vertices: &[GBufferVertex], params: &RasterParams) -> Result<(Buffer, Buffer, f64), GpuError> {
+    /// full target; empty pixels hold depth = far and normal code 0. `masks` are the alpha masks
+    /// per material (non-empty slices). Returns the buffers and the GPU time of the pass in
+    /// milliseconds.
+    pub fn render(
+        &self,
+        gpu: &Gpu,
+        vertices: &[GBufferVertex],
+        masks: &(Vec<AlphaMaskHeader>, Vec<f32>),
+        params: &RasterParams,
+    ) -> Result<(Buffer, Buffer, f64), GpuError> {
         let size = params.view.size();
-        if size.x == 0 || size.y == 0 || vertices.is_empty() {
-            return Err(GpuError::Input(format!("empty raster input ({}×{}, {} vertices)", size.x, size.y, vertices.len())));
+        if size.x == 0 || size.y == 0 || vertices.is_empty() || masks.0.is_empty() || masks.1.is_empty() {
+            return Err(GpuError::Input(format!(
+                "empty raster input ({}×{}, {} vertices)",
+                size.x,
+                size.y,
+                vertices.len()
+            )));
         }
+        let storage_in = vk::BufferUsageFlags::STORAGE_BUFFER;
+        let headers = gpu.upload(&masks.0, storage_in)?;
+        let texels = gpu.upload(&masks.1, storage_in)?;
+        let d = &gpu.device;
+        let sizes = [vk::DescriptorPoolSize::default().ty(vk::DescriptorType::STORAGE_BUFFER).descriptor_count(2)];
+        let pool = unsafe {
+            d.create_descriptor_pool(&vk::DescriptorPoolCreateInfo::default().max_sets(1).pool_sizes(&sizes), None)?
+        };
+        let set_layouts = [self.set_layout];
+        let set = unsafe {
+            d.allocate_descriptor_sets(
+                &vk::DescriptorSetAllocateInfo::default().descriptor_pool(pool).set_layouts(&set_layouts),
+            )?[0]
+        };
+        let infos =
+            [headers.raw, texels.raw].map(|b| [vk::DescriptorBufferInfo::default().buffer(b).range(vk::WHOLE_SIZE)]);
+        let writes: Vec<_> = infos
+            .iter()
+            .enumerate()
+            .map(|(i, info)| {
+                vk::WriteDescriptorSet::default()
+                    .dst_set(set)
+                    .dst_binding(i as u32)
+                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                    .buffer_info(info)
+            })
+            .collect();
+        unsafe { d.update_descriptor_sets(&writes, &[]) };
         let extent = vk::Extent2D { width: size.x, height: size.y };
         let pixels = (size.x * size.y) as u64;
         let vbuf = gpu.upload(vertices, vk::BufferUsageFlags::VERTEX_BUFFER)?;
         let color = vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC;
         let depth_t = gpu.create_target(DEPTH_FORMAT, extent, color, vk::ImageAspectFlags::COLOR)?;
         let normal_t = gpu.create_target(NORMAL_FORMAT, extent, color, vk::ImageAspectFlags::COLOR)?;
-        let z_t = gpu.create_target(Z_FORMAT, extent, vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT, vk::ImageAspectFlags::DEPTH)?;
-        let storage = vk::BufferUsageFlags::STORAGE_BUFFER | vk::BufferUsageFlags::TRANSFER_DST | vk::BufferUsageFlags::TRANSFER_SRC;
+        let z_t = gpu.create_target(
+            Z_FORMAT,
+            extent,
+            vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
+            vk::ImageAspectFlags::DEPTH,
+        )?;
+        let storage = vk::BufferUsageFlags::STORAGE_BUFFER
+            | vk::BufferUsageFlags::TRANSFER_DST
+            | vk::BufferUsageFlags::TRANSFER_SRC;
         let depth_buf = gpu.create_buffer(4 * pixels, storage, MemoryLocation::GpuOnly)?;
         let normal_buf = gpu.create_buffer(4 * pixels, storage, MemoryLocation::GpuOnly)?;
-        let d = &gpu.device;
         let timed = unsafe {
-            d.create_query_pool(&vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(2), None)
+            d.create_query_pool(
+                &vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(2),
+                None,
+            )
         };
         let result = timed.map_err(GpuError::from).and_then(|queries| {
             let submitted = gpu.submit(|cb| unsafe {
@@ -192,7 +304,8 @@ impl RasterGBuffer {
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TOP_OF_PIPE, queries, 0);
                 let to_attachment = (vk::ImageLayout::UNDEFINED, vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL);
                 let none = (vk::PipelineStageFlags::TOP_OF_PIPE, vk::AccessFlags::empty());
-                let color_out = (vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT, vk::AccessFlags::COLOR_ATTACHMENT_WRITE);
+                let color_out =
+                    (vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT, vk::AccessFlags::COLOR_ATTACHMENT_WRITE);
                 for t in [&depth_t, &normal_t] {
                     layout_barrier(gpu, cb, t.image, vk::ImageAspectFlags::COLOR, to_attachment, none, color_out);
                 }
@@ -205,7 +318,8 @@ impl RasterGBuffer {
                     none,
                     (
                         vk::PipelineStageFlags::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags::LATE_FRAGMENT_TESTS,
-                        vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_READ | vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_WRITE,
+                        vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_READ
+                            | vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_WRITE,
                     ),
                 );
                 let colors = [
@@ -214,7 +328,9 @@ impl RasterGBuffer {
                         .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
                         .load_op(vk::AttachmentLoadOp::CLEAR)
                         .store_op(vk::AttachmentStoreOp::STORE)
-                        .clear_value(vk::ClearValue { color: vk::ClearColorValue { float32: [params.view.far, 0.0, 0.0, 0.0] } }),
+                        .clear_value(vk::ClearValue {
+                            color: vk::ClearColorValue { float32: [params.view.far, 0.0, 0.0, 0.0] },
+                        }),
                     vk::RenderingAttachmentInfo::default()
                         .image_view(normal_t.view)
                         .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
@@ -227,14 +343,28 @@ impl RasterGBuffer {
                     .image_layout(vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL)
                     .load_op(vk::AttachmentLoadOp::CLEAR)
                     .store_op(vk::AttachmentStoreOp::DONT_CARE)
-                    .clear_value(vk::ClearValue { depth_stencil: vk::ClearDepthStencilValue { depth: 0.0, stencil: 0 } });
+                    .clear_value(vk::ClearValue {
+                        depth_stencil: vk::ClearDepthStencilValue { depth: 0.0, stencil: 0 },
+                    });
                 let area = vk::Rect2D { offset: vk::Offset2D::default(), extent };
                 d.cmd_begin_rendering(
                     cb,
-                    &vk::RenderingInfo::default().render_area(area).layer_count(1).color_attachments(&colors).depth_attachment(&z),
+                    &vk::RenderingInfo::default()
+                        .render_area(area)
+                        .layer_count(1)
+                        .color_attachments(&colors)
+                        .depth_attachment(&z),
                 );
                 d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, self.pipeline);
-                let viewport = vk::Viewport { x: 0.0, y: 0.0, width: size.x as f32, height: size.y as f32, min_depth: 0.0, max_depth: 1.0 };
+                d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::GRAPHICS, self.layout, 0, &[set], &[]);
+                let viewport = vk::Viewport {
+                    x: 0.0,
+                    y: 0.0,
+                    width: size.x as f32,
+                    height: size.y as f32,
+                    min_depth: 0.0,
+                    max_depth: 1.0,
+                };
                 d.cmd_set_viewport(cb, 0, &[viewport]);
                 d.cmd_set_scissor(cb, 0, &[area]);
                 d.cmd_push_constants(cb, self.layout, vk::ShaderStageFlags::VERTEX, 0, bytemuck::bytes_of(params));
@@ -246,7 +376,11 @@ impl RasterGBuffer {
                 for (t, buf) in [(&depth_t, &depth_buf), (&normal_t, &normal_buf)] {
                     layout_barrier(gpu, cb, t.image, vk::ImageAspectFlags::COLOR, to_src, color_out, transfer);
                     let region = vk::BufferImageCopy::default()
-                        .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(vk::ImageAspectFlags::COLOR).layer_count(1))
+                        .image_subresource(
+                            vk::ImageSubresourceLayers::default()
+                                .aspect_mask(vk::ImageAspectFlags::COLOR)
+                                .layer_count(1),
+                        )
                         .image_extent(extent.into());
                     d.cmd_copy_image_to_buffer(cb, t.image, vk::ImageLayout::TRANSFER_SRC_OPTIMAL, buf.raw, &[region]);
                 }
@@ -266,13 +400,21 @@ impl RasterGBuffer {
             });
             let mut stamps = [0u64; 2];
             let got = submitted.and_then(|_| unsafe {
-                d.get_query_pool_results(queries, 0, &mut stamps, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
-                    .map_err(GpuError::from)
+                d.get_query_pool_results(
+                    queries,
+                    0,
+                    &mut stamps,
+                    vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
+                )
+                .map_err(GpuError::from)
             });
             unsafe { d.destroy_query_pool(queries, None) };
             got.map(|_| stamps[1].saturating_sub(stamps[0]) as f64 * gpu.timestamp_period_ns as f64 * 1e-6)
         });
         gpu.free_buffer(vbuf);
+        gpu.free_buffer(headers);
+        gpu.free_buffer(texels);
+        unsafe { d.destroy_descriptor_pool(pool, None) };
         for t in [depth_t, normal_t, z_t] {
             gpu.destroy_target(t);
         }
@@ -290,6 +432,7 @@ impl RasterGBuffer {
         unsafe {
             gpu.device.destroy_pipeline(self.pipeline, None);
             gpu.device.destroy_pipeline_layout(self.layout, None);
+            gpu.device.destroy_descriptor_set_layout(self.set_layout, None);
         }
     }
 }

@@ -19,11 +19,15 @@ pub use screen::{ScreenOutput, ScreenPasses};
 /// Errors of the Vulkan back-end.
 #[derive(Debug, thiserror::Error)]
 pub enum GpuError {
-    #[error("cannot load the Vulkan loader (libvulkan.so.1): {0}. Install a Vulkan driver, e.g. Mesa's lavapipe (`apt-get install mesa-vulkan-drivers libvulkan1`)")]
+    #[error(
+        "cannot load the Vulkan loader (libvulkan.so.1): {0}. Install a Vulkan driver, e.g. Mesa's lavapipe (`apt-get install mesa-vulkan-drivers libvulkan1`)"
+    )]
     Loader(String),
     #[error("no Vulkan device found that supports Vulkan 1.3 with {0}")]
     NoDevice(String),
-    #[error("the Khronos validation layer was requested but is not installed (`apt-get install vulkan-validationlayers`)")]
+    #[error(
+        "the Khronos validation layer was requested but is not installed (`apt-get install vulkan-validationlayers`)"
+    )]
     NoValidationLayer,
     #[error("Vulkan call failed: {0}")]
     Vk(#[from] ash::vk::Result),

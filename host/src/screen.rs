@@ -16,7 +16,13 @@ pub(crate) struct ComputeKernel {
 }
 
 impl ComputeKernel {
-    pub(crate) fn new(gpu: &Gpu, spirv: &[u8], entry: &std::ffi::CStr, bindings: u32, push_size: u32) -> Result<Self, GpuError> {
+    pub(crate) fn new(
+        gpu: &Gpu,
+        spirv: &[u8],
+        entry: &std::ffi::CStr,
+        bindings: u32,
+        push_size: u32,
+    ) -> Result<Self, GpuError> {
         let d = &gpu.device;
         let binding_list: Vec<_> = (0..bindings)
             .map(|b| {
@@ -28,8 +34,10 @@ impl ComputeKernel {
             })
             .collect();
         unsafe {
-            let set_layout =
-                d.create_descriptor_set_layout(&vk::DescriptorSetLayoutCreateInfo::default().bindings(&binding_list), None)?;
+            let set_layout = d.create_descriptor_set_layout(
+                &vk::DescriptorSetLayoutCreateInfo::default().bindings(&binding_list),
+                None,
+            )?;
             let push = [vk::PushConstantRange::default().stage_flags(vk::ShaderStageFlags::COMPUTE).size(push_size)];
             let set_layouts = [set_layout];
             let layout = d.create_pipeline_layout(
@@ -37,7 +45,10 @@ impl ComputeKernel {
                 None,
             )?;
             let module = gpu.shader_module(spirv)?;
-            let stage = vk::PipelineShaderStageCreateInfo::default().stage(vk::ShaderStageFlags::COMPUTE).module(module).name(entry);
+            let stage = vk::PipelineShaderStageCreateInfo::default()
+                .stage(vk::ShaderStageFlags::COMPUTE)
+                .module(module)
+                .name(entry);
             let created = d.create_compute_pipelines(
                 vk::PipelineCache::null(),
                 &[vk::ComputePipelineCreateInfo::default().stage(stage).layout(layout)],
@@ -66,8 +77,10 @@ impl ComputeKernel {
             let set = d.allocate_descriptor_sets(
                 &vk::DescriptorSetAllocateInfo::default().descriptor_pool(pool).set_layouts(&layouts),
             )?[0];
-            let infos: Vec<[vk::DescriptorBufferInfo; 1]> =
-                buffers.iter().map(|b| [vk::DescriptorBufferInfo::default().buffer(b.raw).range(vk::WHOLE_SIZE)]).collect();
+            let infos: Vec<[vk::DescriptorBufferInfo; 1]> = buffers
+                .iter()
+                .map(|b| [vk::DescriptorBufferInfo::default().buffer(b.raw).range(vk::WHOLE_SIZE)])
+                .collect();
             let writes: Vec<_> = infos
                 .iter()
                 .enumerate()
@@ -166,7 +179,10 @@ impl ScreenPasses {
         let d = &gpu.device;
         let result = (|| unsafe {
             let sizes = [vk::DescriptorPoolSize::default().ty(vk::DescriptorType::STORAGE_BUFFER).descriptor_count(9)];
-            let pool = d.create_descriptor_pool(&vk::DescriptorPoolCreateInfo::default().max_sets(3).pool_sizes(&sizes), None)?;
+            let pool = d.create_descriptor_pool(
+                &vk::DescriptorPoolCreateInfo::default().max_sets(3).pool_sizes(&sizes),
+                None,
+            )?;
             let queries = d.create_query_pool(
                 &vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(3),
                 None,
@@ -188,8 +204,13 @@ impl ScreenPasses {
             });
             let mut stamps = [0u64; 3];
             let got = recorded.and_then(|r| r).and_then(|_| {
-                d.get_query_pool_results(queries, 0, &mut stamps, vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT)
-                    .map_err(GpuError::from)
+                d.get_query_pool_results(
+                    queries,
+                    0,
+                    &mut stamps,
+                    vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
+                )
+                .map_err(GpuError::from)
             });
             d.destroy_query_pool(queries, None);
             d.destroy_descriptor_pool(pool, None);
@@ -197,9 +218,8 @@ impl ScreenPasses {
             let ms = |a: u64, b: u64| b.saturating_sub(a) as f64 * gpu.timestamp_period_ns as f64 * 1e-6;
             Ok(vec![("vao", ms(stamps[0], stamps[1])), ("blur", ms(stamps[1], stamps[2]))])
         })();
-        let output = result.and_then(|pass_ms| {
-            Ok(ScreenOutput { ao: gpu.download(&ao)?, ao_blurred: gpu.download(&out)?, pass_ms })
-        });
+        let output = result
+            .and_then(|pass_ms| Ok(ScreenOutput { ao: gpu.download(&ao)?, ao_blurred: gpu.download(&out)?, pass_ms }));
         for b in [ao, tmp, out] {
             gpu.free_buffer(b);
         }

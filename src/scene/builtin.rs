@@ -19,9 +19,15 @@ struct CrateFile {
 /// Where a built-in scene comes from.
 enum Source {
     /// An OBJ inside a crate (optionally zstd-compressed, with an optional .mtl beside it).
-    Crate { file: CrateFile, mtl: Option<&'static str> },
+    Crate {
+        file: CrateFile,
+        mtl: Option<&'static str>,
+    },
     /// An OBJ committed under `assets/scenes/`.
-    Committed { obj: &'static str, sha256: &'static str },
+    Committed {
+        obj: &'static str,
+        sha256: &'static str,
+    },
     Procedural(fn() -> Scene),
 }
 
@@ -68,8 +74,20 @@ static BUILTIN: [BuiltinScene; 4] = [
             mtl: None,
         },
         cameras: &[
-            CameraPreset { name: "atrium", eye: vec3(-14.0, 2.5, 0.0), target: vec3(10.0, 5.0, 0.0), up: UP, fov_deg: 75.0 },
-            CameraPreset { name: "gallery", eye: vec3(12.0, 7.5, 4.5), target: vec3(-8.0, 6.0, 4.5), up: UP, fov_deg: 70.0 },
+            CameraPreset {
+                name: "atrium",
+                eye: vec3(-14.0, 2.5, 0.0),
+                target: vec3(10.0, 5.0, 0.0),
+                up: UP,
+                fov_deg: 75.0,
+            },
+            CameraPreset {
+                name: "gallery",
+                eye: vec3(12.0, 7.5, 4.5),
+                target: vec3(-8.0, 6.0, 4.5),
+                up: UP,
+                fov_deg: 70.0,
+            },
         ],
         radius: 1.0,
     },
@@ -85,7 +103,13 @@ static BUILTIN: [BuiltinScene; 4] = [
             },
             mtl: Some("assets/kitchen.mtl"),
         },
-        cameras: &[CameraPreset { name: "corner", eye: vec3(3.3, 1.6, 2.3), target: vec3(-1.5, 0.9, -2.0), up: UP, fov_deg: 60.0 }],
+        cameras: &[CameraPreset {
+            name: "corner",
+            eye: vec3(3.3, 1.6, 2.3),
+            target: vec3(-1.5, 0.9, -2.0),
+            up: UP,
+            fov_deg: 60.0,
+        }],
         radius: 0.25,
     },
     BuiltinScene {
@@ -95,14 +119,26 @@ static BUILTIN: [BuiltinScene; 4] = [
             obj: "cornell_box/cornell_box.obj",
             sha256: "1df799353b985e1862a590c6c37814227990e0338220e2e9a575fcd54031a667",
         },
-        cameras: &[CameraPreset { name: "front", eye: vec3(278.0, 273.0, -800.0), target: vec3(278.0, 273.0, 0.0), up: UP, fov_deg: 39.3 }],
+        cameras: &[CameraPreset {
+            name: "front",
+            eye: vec3(278.0, 273.0, -800.0),
+            target: vec3(278.0, 273.0, 0.0),
+            up: UP,
+            fov_deg: 39.3,
+        }],
         radius: 60.0,
     },
     BuiltinScene {
         name: "tower",
         description: "procedural tower with a spiral staircase, open on one side (aokit)",
         source: Source::Procedural(procedural::spiral_tower),
-        cameras: &[CameraPreset { name: "slot", eye: vec3(9.0, 4.0, 0.0), target: vec3(0.0, 3.5, 0.0), up: UP, fov_deg: 60.0 }],
+        cameras: &[CameraPreset {
+            name: "slot",
+            eye: vec3(9.0, 4.0, 0.0),
+            target: vec3(0.0, 3.5, 0.0),
+            up: UP,
+            fov_deg: 60.0,
+        }],
         radius: 0.6,
     },
 ];
@@ -116,7 +152,7 @@ impl BuiltinScene {
     /// Load the scene, fetching and caching it first if needed.
     pub fn load(&self) -> Result<Scene, SceneError> {
         let mut scene = match &self.source {
-            Source::Procedural(make) => make(),
+            Source::Procedural(make) => make().validated(Path::new(self.name))?,
             Source::Committed { obj, sha256 } => {
                 let path = assets_dir().join("scenes").join(obj);
                 check_sha256(self.name, &path, sha256)?;
@@ -195,7 +231,8 @@ fn fetch(scene: &str, file: &CrateFile, mtl: Option<&str>) -> Result<PathBuf, Sc
     if obj != cached {
         let compressed = std::fs::read(&cached).map_err(|e| fail(e.to_string()))?;
         let mut text = Vec::new();
-        let mut decoder = ruzstd::decoding::StreamingDecoder::new(&compressed[..]).map_err(|e| fail(format!("zstd: {e}")))?;
+        let mut decoder =
+            ruzstd::decoding::StreamingDecoder::new(&compressed[..]).map_err(|e| fail(format!("zstd: {e}")))?;
         std::io::Read::read_to_end(&mut decoder, &mut text).map_err(|e| fail(format!("zstd: {e}")))?;
         std::fs::write(&obj, text).map_err(|e| fail(e.to_string()))?;
     }

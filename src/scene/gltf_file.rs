@@ -58,7 +58,11 @@ fn add_primitive(
         for k in 0..3 {
             let i = tri[k] as usize;
             if i >= positions.len() {
-                return Err(SceneError::malformed(path, "glTF", format!("index {i} out of {} vertices", positions.len())));
+                return Err(SceneError::malformed(
+                    path,
+                    "glTF",
+                    format!("index {i} out of {} vertices", positions.len()),
+                ));
             }
             corners[k] = positions[i];
             tex[k] = uvs.get(i).copied().unwrap_or(Vec2::ZERO);

@@ -7,6 +7,7 @@ mod obj_file;
 mod ply_file;
 pub mod procedural;
 
+use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_shaders::glam::{Vec2, Vec3};
 use std::path::{Path, PathBuf};
 
@@ -87,7 +88,11 @@ impl Scene {
         for (i, t) in self.triangles.iter().enumerate() {
             for (k, v) in t.iter().enumerate() {
                 if !v.is_finite() {
-                    return Err(SceneError::NonFinite { path: path.to_path_buf(), index: 3 * i + k, value: v.to_array() });
+                    return Err(SceneError::NonFinite {
+                        path: path.to_path_buf(),
+                        index: 3 * i + k,
+                        value: v.to_array(),
+                    });
                 }
             }
         }
@@ -114,6 +119,36 @@ impl Scene {
             hi = hi.max(*v);
         }
         (lo, hi)
+    }
+
+    /// Alpha masks packed for the kernels: one header per material (width 0 = opaque) and all
+    /// mask texels concatenated. Never empty, so they bind as storage buffers.
+    pub fn alpha_masks(&self) -> (Vec<AlphaMaskHeader>, Vec<f32>) {
+        let mut texels = Vec::new();
+        let mut headers: Vec<AlphaMaskHeader> = self
+            .materials
+            .iter()
+            .map(|m| match &m.alpha_mask {
+                Some(mask) => {
+                    let header = AlphaMaskHeader {
+                        offset: texels.len() as u32,
+                        width: mask.width,
+                        height: mask.height,
+                        cutoff: mask.cutoff,
+                    };
+                    texels.extend_from_slice(&mask.alpha);
+                    header
+                }
+                None => AlphaMaskHeader::default(),
+            })
+            .collect();
+        if headers.is_empty() {
+            headers.push(AlphaMaskHeader::default());
+        }
+        if texels.is_empty() {
+            texels.push(1.0);
+        }
+        (headers, texels)
     }
 
     /// World-space unit face normals `normalize((v1 − v0) × (v2 − v0))`; zero for degenerate

@@ -14,15 +14,11 @@ pub(super) fn load(path: &Path) -> Result<Scene, SceneError> {
 pub(super) fn load_bytes(path: &Path, bytes: &[u8]) -> Result<Scene, SceneError> {
     let options = tobj::LoadOptions { triangulate: true, single_index: false, ..Default::default() };
     let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-    let (models, materials) = tobj::load_obj_buf(&mut std::io::Cursor::new(bytes), &options, |mtl| {
-        tobj::load_mtl(dir.join(mtl))
-    })
-    .map_err(|e| SceneError::malformed(path, "OBJ", e))?;
-    let materials: Vec<Material> = materials
-        .unwrap_or_default()
-        .into_iter()
-        .map(|m| Material { name: m.name, alpha_mask: None })
-        .collect();
+    let (models, materials) =
+        tobj::load_obj_buf(&mut std::io::Cursor::new(bytes), &options, |mtl| tobj::load_mtl(dir.join(mtl)))
+            .map_err(|e| SceneError::malformed(path, "OBJ", e))?;
+    let materials: Vec<Material> =
+        materials.unwrap_or_default().into_iter().map(|m| Material { name: m.name, alpha_mask: None }).collect();
     let mut scene = Scene { name: path.display().to_string(), materials, ..Default::default() };
     for model in &models {
         let mesh = &model.mesh;

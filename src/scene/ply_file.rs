@@ -49,9 +49,8 @@ pub(super) fn load(path: &Path) -> Result<Scene, SceneError> {
     let vertices = ply.payload.get("vertex").ok_or_else(|| bad("no 'vertex' element".into()))?;
     let mut positions = Vec::with_capacity(vertices.len());
     for (i, v) in vertices.iter().enumerate() {
-        let coord = |k: &str| {
-            v.get(k).and_then(scalar).ok_or_else(|| bad(format!("vertex {i} has no scalar property '{k}'")))
-        };
+        let coord =
+            |k: &str| v.get(k).and_then(scalar).ok_or_else(|| bad(format!("vertex {i} has no scalar property '{k}'")));
         positions.push(Vec3::new(coord("x")? as f32, coord("y")? as f32, coord("z")? as f32));
     }
     let faces = ply.payload.get("face").ok_or_else(|| bad("no 'face' element".into()))?;

@@ -12,7 +12,9 @@ pub fn push_quad(scene: &mut Scene, a: Vec3, b: Vec3, c: Vec3, d: Vec3) {
 
 /// Append an axis-aligned box.
 pub fn push_box(scene: &mut Scene, lo: Vec3, hi: Vec3) {
-    let c = |x: bool, y: bool, z: bool| vec3(if x { hi.x } else { lo.x }, if y { hi.y } else { lo.y }, if z { hi.z } else { lo.z });
+    let c = |x: bool, y: bool, z: bool| {
+        vec3(if x { hi.x } else { lo.x }, if y { hi.y } else { lo.y }, if z { hi.z } else { lo.z })
+    };
     let (f, t) = (false, true);
     push_quad(scene, c(f, f, t), c(t, f, t), c(t, t, t), c(f, t, t)); // +z
     push_quad(scene, c(t, f, f), c(f, f, f), c(f, t, f), c(t, t, f)); // −z

@@ -28,7 +28,12 @@ pub fn spirv_val(path: &Path) -> Result<(), String> {
     if out.status.success() {
         Ok(())
     } else {
-        Err(format!("spirv-val {}: {}{}", path.display(), String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr)))
+        Err(format!(
+            "spirv-val {}: {}{}",
+            path.display(),
+            String::from_utf8_lossy(&out.stdout),
+            String::from_utf8_lossy(&out.stderr)
+        ))
     }
 }
 
@@ -36,7 +41,8 @@ fn build_spirv() -> Result<(), String> {
     let root = root();
     let shader_crate = root.join("shader-crate");
     let out_dir = root.join("assets/spirv");
-    let backend = Install::from_shader_crate(shader_crate.clone()).run().map_err(|e| format!("installing rust-gpu: {e:?}"))?;
+    let backend =
+        Install::from_shader_crate(shader_crate.clone()).run().map_err(|e| format!("installing rust-gpu: {e:?}"))?;
     let result = backend
         .to_spirv_builder(&shader_crate, TARGET)
         .release(true)
@@ -62,7 +68,13 @@ fn build_spirv() -> Result<(), String> {
         spirv_val(&dest)?;
         let bytes = std::fs::read(&dest).map_err(|e| e.to_string())?;
         let module = reflect::reflect(&file, &bytes).map_err(|e| format!("{file}: {e}"))?;
-        println!("  {file}: {} bytes, {} stage, {} bindings, {} push-constant bytes", bytes.len(), module.stage, module.bindings.len(), module.push_constant_bytes);
+        println!(
+            "  {file}: {} bytes, {} stage, {} bindings, {} push-constant bytes",
+            bytes.len(),
+            module.stage,
+            module.bindings.len(),
+            module.push_constant_bytes
+        );
         manifest.modules.push(module);
     }
     let json = serde_json::to_string_pretty(&manifest).map_err(|e| e.to_string())? + "\n";

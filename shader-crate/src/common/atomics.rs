@@ -15,19 +15,13 @@ impl AtomicU32Buffer for &mut [u32] {
     fn atomic_min(&mut self, i: usize, v: u32) -> u32 {
         use spirv_std::memory::{Scope, Semantics};
         unsafe {
-            spirv_std::arch::atomic_u_min::<u32, { Scope::Device as u32 }, { Semantics::NONE.bits() }>(
-                &mut self[i],
-                v,
-            )
+            spirv_std::arch::atomic_u_min::<u32, { Scope::Device as u32 }, { Semantics::NONE.bits() }>(&mut self[i], v)
         }
     }
     fn atomic_max(&mut self, i: usize, v: u32) -> u32 {
         use spirv_std::memory::{Scope, Semantics};
         unsafe {
-            spirv_std::arch::atomic_u_max::<u32, { Scope::Device as u32 }, { Semantics::NONE.bits() }>(
-                &mut self[i],
-                v,
-            )
+            spirv_std::arch::atomic_u_max::<u32, { Scope::Device as u32 }, { Semantics::NONE.bits() }>(&mut self[i], v)
         }
     }
 }

@@ -45,10 +45,7 @@ impl ViewParams {
     #[inline]
     pub fn view_to_uv(&self, x: Vec3) -> Vec2 {
         let half_inv_depth = 0.5 / -x.z;
-        vec2(
-            0.5 + x.x * half_inv_depth / self.tan_half_fov.x,
-            0.5 - x.y * half_inv_depth / self.tan_half_fov.y,
-        )
+        vec2(0.5 + x.x * half_inv_depth / self.tan_half_fov.x, 0.5 - x.y * half_inv_depth / self.tan_half_fov.y)
     }
 
     /// Texel containing `uv` after clamping it into the target: `floor(sat(uv)·res)`, kept
@@ -119,14 +116,7 @@ impl Camera {
         Camera {
             world_to_view: view_to_world.inverse(),
             view_to_world,
-            view: ViewParams {
-                res: full.as_vec2(),
-                tan_half_fov: vec2(tx, ty),
-                near,
-                far,
-                guard,
-                _pad: 0,
-            },
+            view: ViewParams { res: full.as_vec2(), tan_half_fov: vec2(tx, ty), near, far, guard, _pad: 0 },
         }
     }
 

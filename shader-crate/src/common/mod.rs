@@ -1,5 +1,6 @@
 //! Math shared by every technique (spec svao-raysd §1, §4.1, §7.2, §7.3).
 
+pub mod alpha;
 pub mod atomics;
 pub mod camera;
 pub mod float_order;

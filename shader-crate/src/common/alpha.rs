@@ -1,0 +1,39 @@
+//! Alpha test of `alphaMode: MASK` materials (glTF 2.0 §3.9.4): nearest texel with repeat
+//! wrapping, cut out below the material's cutoff. The raster G-buffer discards such fragments;
+//! CPU rays skip such hits.
+
+#[allow(unused_imports)]
+use spirv_std::num_traits::Float;
+
+use crate::glam::Vec2;
+
+/// Where a material's alpha texels live in the packed texel buffer. `width == 0`: opaque.
+#[repr(C)]
+#[derive(Copy, Clone, Debug, Default, PartialEq)]
+#[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+pub struct AlphaMaskHeader {
+    /// Index of the first texel in the texel buffer.
+    pub offset: u32,
+    pub width: u32,
+    pub height: u32,
+    /// Texels with alpha below this are cut out.
+    pub cutoff: f32,
+}
+
+/// Does the surface of `material` at texture coordinate `uv` survive the alpha test?
+#[inline]
+pub fn alpha_test_passes(headers: &[AlphaMaskHeader], texels: &[f32], material: u32, uv: Vec2) -> bool {
+    if material as usize >= headers.len() {
+        return true;
+    }
+    let h = headers[material as usize];
+    if h.width == 0 || h.height == 0 {
+        return true;
+    }
+    let u = uv.x - uv.x.floor();
+    let v = uv.y - uv.y.floor();
+    let x = ((u * h.width as f32) as u32).min(h.width - 1);
+    let y = ((v * h.height as f32) as u32).min(h.height - 1);
+    let i = (h.offset + y * h.width + x) as usize;
+    i >= texels.len() || texels[i] >= h.cutoff
+}
