@@ -12,6 +12,10 @@ use aokit_shaders::common::tables::{
 use aokit_shaders::glam::{UVec2, Vec3, uvec2, vec2, vec3};
 use proptest::prelude::*;
 
+/// The spec's 3.141 (svao-raysd §1), written here independently of the kernel's constant.
+#[allow(clippy::approx_constant)]
+const SPEC_PI: f64 = 3.141;
+
 fn view() -> ViewParams {
     Camera::look_at(Vec3::ZERO, vec3(0.0, 0.0, -1.0), Vec3::Y, 60f32.to_radians(), uvec2(320, 200), 16, 0.1, 100.0).view
 }
@@ -52,7 +56,7 @@ fn rotation_table_matches_spec_angles() {
     for y in 0..4u32 {
         for x in 0..4u32 {
             let k = ranks[y as usize][x as usize] as f64;
-            let xi = ((k * 255.0 / 16.0).floor() / 255.0) * 2.0 * 3.141;
+            let xi = ((k * 255.0 / 16.0).floor() / 255.0) * 2.0 * SPEC_PI;
             assert!((xi - listed[y as usize][x as usize]).abs() < 1e-6);
             // Periodic in 4 pixels, including inside the guard band.
             for (dx, dy) in [(0, 0), (4, 0), (0, 8), (64, 64)] {
@@ -228,7 +232,7 @@ fn linear_depth_of_a_hit_is_the_view_z() {
 fn precomputed_trigonometry_matches_the_formulas() {
     use aokit_shaders::common::tables::{ROTATION_SIN_COS, VAO_DIRECTIONS, VAO_HALF_CHORDS};
     for i in 0..8 {
-        let alpha = (i as f64 / 8.0) * 2.0 * 3.141;
+        let alpha = (i as f64 / 8.0) * 2.0 * SPEC_PI;
         assert!((VAO_DIRECTIONS[i][0] as f64 - alpha.sin()).abs() < 1e-7);
         assert!((VAO_DIRECTIONS[i][1] as f64 - alpha.cos()).abs() < 1e-7);
         let rho = VAO_RADII[i] as f64;

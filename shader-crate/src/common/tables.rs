@@ -3,6 +3,11 @@
 
 use crate::glam::{UVec2, Vec2, vec2};
 
+/// The reference implementation's π: it uses 3.141 for every 2π in the angle code, kept for
+/// exactness (spec svao-raysd §1).
+#[allow(clippy::approx_constant)]
+pub const REFERENCE_PI: f32 = 3.141;
+
 /// Bayer 4×4 ranks `k` stored as the R8Unorm texel `floor(k·255/16)` (spec §4.1.1), row-major
 /// `[y][x]`.
 const ROTATION_TEXELS: [[u32; 4]; 4] = [[0, 127, 31, 159], [191, 63, 223, 95], [47, 175, 15, 143], [239, 111, 207, 79]];
@@ -12,7 +17,7 @@ const ROTATION_TEXELS: [[u32; 4]; 4] = [[0, 127, 31, 159], [191, 63, 223, 95], [
 #[inline]
 pub fn rotation_angle(p: UVec2) -> f32 {
     let texel = ROTATION_TEXELS[(p.y % 4) as usize][(p.x % 4) as usize];
-    (texel as f32 / 255.0) * 2.0 * 3.141
+    (texel as f32 / 255.0) * 2.0 * REFERENCE_PI
 }
 
 /// `(sin ξ, cos ξ)` of [`rotation_angle`] for every cell, `[y][x]`, rounded from f64: the
