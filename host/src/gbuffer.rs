@@ -123,19 +123,7 @@ impl RasterGBuffer {
                 .stage_flags(vk::ShaderStageFlags::VERTEX)
                 .size(size_of::<RasterParams>() as u32)];
             // Fragment-stage storage buffers: alpha-mask headers and texels.
-            let bindings: Vec<_> = (0..2)
-                .map(|b| {
-                    vk::DescriptorSetLayoutBinding::default()
-                        .binding(b)
-                        .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                        .descriptor_count(1)
-                        .stage_flags(vk::ShaderStageFlags::FRAGMENT)
-                })
-                .collect();
-            let set_layout = d.create_descriptor_set_layout(
-                &vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings),
-                None,
-            )?;
+            let set_layout = gpu.storage_set_layout(2, vk::ShaderStageFlags::FRAGMENT)?;
             let set_layouts = [set_layout];
             let layout = d.create_pipeline_layout(
                 &vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts).push_constant_ranges(&push),
@@ -157,28 +145,20 @@ impl RasterGBuffer {
                 .binding(0)
                 .stride(size_of::<GBufferVertex>() as u32)
                 .input_rate(vk::VertexInputRate::VERTEX)];
+            // (location, format, offset) of GBufferVertex's fields.
             let attributes = [
+                (0, vk::Format::R32G32B32A32_SFLOAT, 0),
+                (1, vk::Format::R32G32B32A32_SFLOAT, 16),
+                (2, vk::Format::R32G32_SFLOAT, 32),
+                (3, vk::Format::R32_UINT, 40),
+            ]
+            .map(|(location, format, offset)| {
                 vk::VertexInputAttributeDescription::default()
-                    .location(0)
+                    .location(location)
                     .binding(0)
-                    .format(vk::Format::R32G32B32A32_SFLOAT)
-                    .offset(0),
-                vk::VertexInputAttributeDescription::default()
-                    .location(1)
-                    .binding(0)
-                    .format(vk::Format::R32G32B32A32_SFLOAT)
-                    .offset(16),
-                vk::VertexInputAttributeDescription::default()
-                    .location(2)
-                    .binding(0)
-                    .format(vk::Format::R32G32_SFLOAT)
-                    .offset(32),
-                vk::VertexInputAttributeDescription::default()
-                    .location(3)
-                    .binding(0)
-                    .format(vk::Format::R32_UINT)
-                    .offset(40),
-            ];
+                    .format(format)
+                    .offset(offset)
+            });
             let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
                 .vertex_binding_descriptions(&bindings)
                 .vertex_attribute_descriptions(&attributes);
@@ -251,30 +231,8 @@ impl RasterGBuffer {
         let headers = gpu.upload(&masks.0, storage_in)?;
         let texels = gpu.upload(&masks.1, storage_in)?;
         let d = &gpu.device;
-        let sizes = [vk::DescriptorPoolSize::default().ty(vk::DescriptorType::STORAGE_BUFFER).descriptor_count(2)];
-        let pool = unsafe {
-            d.create_descriptor_pool(&vk::DescriptorPoolCreateInfo::default().max_sets(1).pool_sizes(&sizes), None)?
-        };
-        let set_layouts = [self.set_layout];
-        let set = unsafe {
-            d.allocate_descriptor_sets(
-                &vk::DescriptorSetAllocateInfo::default().descriptor_pool(pool).set_layouts(&set_layouts),
-            )?[0]
-        };
-        let infos =
-            [headers.raw, texels.raw].map(|b| [vk::DescriptorBufferInfo::default().buffer(b).range(vk::WHOLE_SIZE)]);
-        let writes: Vec<_> = infos
-            .iter()
-            .enumerate()
-            .map(|(i, info)| {
-                vk::WriteDescriptorSet::default()
-                    .dst_set(set)
-                    .dst_binding(i as u32)
-                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                    .buffer_info(info)
-            })
-            .collect();
-        unsafe { d.update_descriptor_sets(&writes, &[]) };
+        let pool = gpu.storage_pool(1, 2)?;
+        let set = gpu.storage_set(pool, self.set_layout, &[headers.raw, texels.raw])?;
         let extent = vk::Extent2D { width: size.x, height: size.y };
         let pixels = (size.x * size.y) as u64;
         let vbuf = gpu.upload(vertices, vk::BufferUsageFlags::VERTEX_BUFFER)?;

@@ -5,6 +5,7 @@
 
 mod buffer;
 mod context;
+mod descriptors;
 mod gbuffer;
 pub mod manifest;
 pub mod modules;

@@ -24,20 +24,8 @@ impl ComputeKernel {
         push_size: u32,
     ) -> Result<Self, GpuError> {
         let d = &gpu.device;
-        let binding_list: Vec<_> = (0..bindings)
-            .map(|b| {
-                vk::DescriptorSetLayoutBinding::default()
-                    .binding(b)
-                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                    .descriptor_count(1)
-                    .stage_flags(vk::ShaderStageFlags::COMPUTE)
-            })
-            .collect();
+        let set_layout = gpu.storage_set_layout(bindings, vk::ShaderStageFlags::COMPUTE)?;
         unsafe {
-            let set_layout = d.create_descriptor_set_layout(
-                &vk::DescriptorSetLayoutCreateInfo::default().bindings(&binding_list),
-                None,
-            )?;
             let push = [vk::PushConstantRange::default().stage_flags(vk::ShaderStageFlags::COMPUTE).size(push_size)];
             let set_layouts = [set_layout];
             let layout = d.create_pipeline_layout(
@@ -72,27 +60,9 @@ impl ComputeKernel {
     ) -> Result<(), GpuError> {
         assert_eq!(buffers.len() as u32, self.bindings, "binding count");
         let d = &gpu.device;
+        let raw: Vec<vk::Buffer> = buffers.iter().map(|b| b.raw).collect();
+        let set = gpu.storage_set(pool, self.set_layout, &raw)?;
         unsafe {
-            let layouts = [self.set_layout];
-            let set = d.allocate_descriptor_sets(
-                &vk::DescriptorSetAllocateInfo::default().descriptor_pool(pool).set_layouts(&layouts),
-            )?[0];
-            let infos: Vec<[vk::DescriptorBufferInfo; 1]> = buffers
-                .iter()
-                .map(|b| [vk::DescriptorBufferInfo::default().buffer(b.raw).range(vk::WHOLE_SIZE)])
-                .collect();
-            let writes: Vec<_> = infos
-                .iter()
-                .enumerate()
-                .map(|(i, info)| {
-                    vk::WriteDescriptorSet::default()
-                        .dst_set(set)
-                        .dst_binding(i as u32)
-                        .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                        .buffer_info(info)
-                })
-                .collect();
-            d.update_descriptor_sets(&writes, &[]);
             d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::COMPUTE, self.pipeline);
             d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::COMPUTE, self.layout, 0, &[set], &[]);
             d.cmd_push_constants(cb, self.layout, vk::ShaderStageFlags::COMPUTE, 0, push);
