@@ -15,7 +15,7 @@ fn kernels(c: &mut Criterion) {
         width: 1920,
         height: 1080,
         guard: 64,
-        camera: CameraChoice::Preset(None),
+        camera: CameraChoice::Preset { name: None, fov_deg: None },
         radius: None,
         exponent: 2.0,
         thickness: 0.0,

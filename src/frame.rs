@@ -12,8 +12,11 @@ use aokit_shaders::vao::VaoParams;
 /// How the camera is chosen.
 #[derive(Clone, Debug, PartialEq)]
 pub enum CameraChoice {
-    /// A built-in scene's named preset (`None`: its default preset; `--camera auto` for files).
-    Preset(Option<String>),
+    /// A built-in scene's preset (`name: None`: its first), optionally with another field of view.
+    Preset {
+        name: Option<String>,
+        fov_deg: Option<f32>,
+    },
     /// Frame the scene's bounding box.
     Auto {
         fov_deg: f32,
@@ -108,7 +111,7 @@ impl Frame {
                 let (eye, target) = auto_camera(bounds, *fov_deg, aspect);
                 (eye, target, up_y, *fov_deg)
             }
-            CameraChoice::Preset(name) => {
+            CameraChoice::Preset { name, fov_deg } => {
                 let Some(b) = builtin else { return Err(FrameError::NoPresets) };
                 let preset = match name {
                     None => &b.cameras[0],
@@ -118,7 +121,7 @@ impl Frame {
                         presets: b.cameras.iter().map(|c| c.name).collect::<Vec<_>>().join(", "),
                     })?,
                 };
-                (preset.eye, preset.target, preset.up, preset.fov_deg)
+                (preset.eye, preset.target, preset.up, fov_deg.unwrap_or(preset.fov_deg))
             }
         };
         if !(fov_deg > 0.0 && fov_deg < 180.0) {

@@ -55,6 +55,7 @@ fn parse_vec3(s: &str) -> Result<Vec3, String> {
 }
 
 #[derive(clap::Args)]
+#[command(allow_negative_numbers = true)]
 struct RenderArgs {
     /// Built-in scene name (see `aokit scenes`) or a path to .obj/.gltf/.glb/.ply[.gz].
     #[arg(long)]
@@ -127,9 +128,8 @@ fn render(args: RenderArgs) -> Result<(), String> {
             CameraChoice::Explicit { eye: *eye, target: *target, up: args.up, fov_deg: args.fov.unwrap_or(fov_default) }
         }
         (_, _, Some("auto")) => CameraChoice::Auto { fov_deg: args.fov.unwrap_or(60.0) },
-        (_, _, name) if builtin.is_some() => CameraChoice::Preset(name.map(str::to_string)),
-        (_, _, None) => CameraChoice::Auto { fov_deg: args.fov.unwrap_or(60.0) },
-        (_, _, Some(_)) => CameraChoice::Preset(args.camera.clone()),
+        (_, _, None) if builtin.is_none() => CameraChoice::Auto { fov_deg: args.fov.unwrap_or(60.0) },
+        (_, _, name) => CameraChoice::Preset { name: name.map(str::to_string), fov_deg: args.fov },
     };
     let request = FrameRequest {
         width: args.width,
@@ -140,18 +140,7 @@ fn render(args: RenderArgs) -> Result<(), String> {
         exponent: args.exponent,
         thickness: args.thickness,
     };
-    let mut frame = Frame::resolve(&scene, builtin, &request).map_err(|e| e.to_string())?;
-    if let (Some(fov), CameraChoice::Preset(_)) = (args.fov, &request.camera) {
-        frame = Frame::resolve(
-            &scene,
-            builtin,
-            &FrameRequest {
-                camera: CameraChoice::Explicit { eye: frame.eye, target: frame.target, up: frame.up, fov_deg: fov },
-                ..request.clone()
-            },
-        )
-        .map_err(|e| e.to_string())?;
-    }
+    let frame = Frame::resolve(&scene, builtin, &request).map_err(|e| e.to_string())?;
     let (result, device) = match args.backend {
         Backend::Cpu => {
             let renderer = CpuRenderer::new(&scene);

@@ -206,6 +206,9 @@ fn check_sha256(scene: &str, path: &Path, expected: &str) -> Result<(), SceneErr
 /// Fetch `file` (and its .mtl) with `cargo fetch` into the cache and return the OBJ path, with
 /// zstd-compressed files decompressed beside it.
 fn fetch(scene: &str, file: &CrateFile, mtl: Option<&str>) -> Result<PathBuf, SceneError> {
+    // One fetch at a time in this process; files appear atomically (rename) for other processes.
+    static FETCH: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _guard = FETCH.lock().unwrap_or_else(|e| e.into_inner());
     let fail = |problem: String| SceneError::Fetch { scene: scene.into(), problem };
     let dir = cache_dir().join("scenes").join(format!("{}-{}", file.krate, file.version));
     let base = Path::new(file.path).file_name().expect("pinned path has a file name");
@@ -220,8 +223,9 @@ fn fetch(scene: &str, file: &CrateFile, mtl: Option<&str>) -> Result<PathBuf, Sc
     let src = crate_source_dir(file).map_err(fail)?;
     std::fs::create_dir_all(&dir).map_err(|e| fail(format!("{}: {e}", dir.display())))?;
     let copy = |from: &str| {
-        let to = dir.join(Path::new(from).file_name().expect("file name"));
-        std::fs::copy(src.join(from), &to).map_err(|e| fail(format!("copying {from} from {}: {e}", src.display())))
+        let bytes =
+            std::fs::read(src.join(from)).map_err(|e| fail(format!("reading {from} in {}: {e}", src.display())))?;
+        write_atomically(&dir.join(Path::new(from).file_name().expect("file name")), &bytes).map_err(fail)
     };
     copy(file.path)?;
     if let Some(mtl) = mtl {
@@ -234,9 +238,17 @@ fn fetch(scene: &str, file: &CrateFile, mtl: Option<&str>) -> Result<PathBuf, Sc
         let mut decoder =
             ruzstd::decoding::StreamingDecoder::new(&compressed[..]).map_err(|e| fail(format!("zstd: {e}")))?;
         std::io::Read::read_to_end(&mut decoder, &mut text).map_err(|e| fail(format!("zstd: {e}")))?;
-        std::fs::write(&obj, text).map_err(|e| fail(e.to_string()))?;
+        write_atomically(&obj, &text).map_err(fail)?;
     }
     Ok(obj)
+}
+
+/// Write through a uniquely named temporary file and rename, so readers never see a partial file.
+fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), String> {
+    let tmp = path.with_extension(format!("tmp{}", std::process::id()));
+    std::fs::write(&tmp, bytes)
+        .and_then(|_| std::fs::rename(&tmp, path))
+        .map_err(|e| format!("{}: {e}", path.display()))
 }
 
 /// Download the crate with `cargo fetch` through a scratch manifest and return its unpacked
