@@ -91,3 +91,13 @@ fn device_reports_ray_tracing_extensions() {
     );
     common::assert_validation_clean(&vk);
 }
+
+#[test]
+fn validation_messages_are_captured() {
+    // Proves the other tests' "validation clean" is not vacuous.
+    let Some(vk) = common::vulkan() else { return };
+    assert!(vk.gpu.validation_messages().is_empty());
+    vk.gpu.provoke_validation_error().unwrap();
+    let messages = vk.gpu.validation_messages();
+    assert!(messages.iter().any(|m| m.contains("anisotropy")), "{messages:?}");
+}

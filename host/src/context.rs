@@ -232,6 +232,16 @@ impl Gpu {
         self.messages.lock().unwrap_or_else(|e| e.into_inner()).clone()
     }
 
+    /// Deliberately misuse the API once (a sampler with anisotropy although the
+    /// `samplerAnisotropy` feature was not enabled) so tests can prove that validation messages
+    /// reach [`Gpu::validation_messages`]. Harmless to the driver.
+    pub fn provoke_validation_error(&self) -> Result<(), GpuError> {
+        let info = vk::SamplerCreateInfo::default().anisotropy_enable(true).max_anisotropy(4.0);
+        let sampler = unsafe { self.device.create_sampler(&info, None)? };
+        unsafe { self.device.destroy_sampler(sampler, None) };
+        Ok(())
+    }
+
     /// Record commands into a fresh command buffer, submit, and wait for completion.
     pub(crate) fn submit<R>(&self, record: impl FnOnce(vk::CommandBuffer) -> R) -> Result<R, GpuError> {
         let info = vk::CommandBufferAllocateInfo::default()
