@@ -80,16 +80,30 @@ pub enum FrameError {
 /// Fraction of the bounding-box diagonal used as the AO radius of scenes without a default.
 pub const DEFAULT_RADIUS_FRACTION: f32 = 0.02;
 
-/// Camera `auto`: look at the bounding-box centre from the (+x, +y, +z) diagonal, at the
-/// distance where the bounding sphere fits the narrower field of view.
+/// Camera `auto`: look at the bounding-box centre from the (+x, +y, +z) diagonal, from the
+/// smallest distance at which all eight corners of the box project inside the image, so the
+/// geometry fills it.
 pub fn auto_camera(bounds: (Vec3, Vec3), fov_deg: f32, aspect: f32) -> (Vec3, Vec3) {
     let center = 0.5 * (bounds.0 + bounds.1);
-    let radius = 0.5 * (bounds.1 - bounds.0).length();
-    let half_y = 0.5 * fov_deg.to_radians();
-    let half_x = (half_y.tan() * aspect).atan();
-    let distance = radius / half_y.min(half_x).sin();
-    let dir = vec3(1.0, 0.6, 1.0).normalize();
-    (center + dir * distance, center)
+    let back = vec3(1.0, 0.6, 1.0).normalize(); // from the centre towards the eye
+    let right = Vec3::Y.cross(back).normalize();
+    let up = back.cross(right);
+    let ty = (0.5 * fov_deg.to_radians()).tan();
+    let tx = ty * aspect;
+    let mut distance = 0.0f32;
+    for i in 0..8 {
+        let corner = vec3(
+            if i & 1 == 0 { bounds.0.x } else { bounds.1.x },
+            if i & 2 == 0 { bounds.0.y } else { bounds.1.y },
+            if i & 4 == 0 { bounds.0.z } else { bounds.1.z },
+        ) - center;
+        // The corner sits at view depth `distance − corner·back`; it is inside the frustum when
+        // its lateral offsets are within depth·tan of the half angles.
+        let toward = corner.dot(back);
+        distance = distance.max(toward + corner.dot(right).abs() / tx).max(toward + corner.dot(up).abs() / ty);
+    }
+    let distance = distance.max(1e-3 * (bounds.1 - bounds.0).length().max(f32::MIN_POSITIVE));
+    (center + back * distance, center)
 }
 
 impl Frame {

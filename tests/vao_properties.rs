@@ -201,3 +201,25 @@ fn blur_preserves_constants_and_respects_depth_edges() {
     let (left, right) = (out[row + size.x as usize / 2 - 1], out[row + size.x as usize / 2]);
     assert!(left < 1e-3 && right > 1.0 - 1e-3, "edge blurred: {left} {right}");
 }
+
+#[test]
+fn auto_camera_frames_the_bounds_tightly() {
+    use aokit::frame::auto_camera;
+    use aokit_shaders::common::camera::Camera;
+    let bounds = (vec3(-3.0, 0.0, 1.0), vec3(5.0, 2.0, 4.0));
+    let (eye, target) = auto_camera(bounds, 50.0, 16.0 / 9.0);
+    let cam = Camera::look_at(eye, target, Vec3::Y, 50f32.to_radians(), uvec2(160, 90), 0, 0.01, 1000.0);
+    let mut extent = Vec2::ZERO;
+    for i in 0..8 {
+        let c = vec3(
+            if i & 1 == 0 { bounds.0.x } else { bounds.1.x },
+            if i & 2 == 0 { bounds.0.y } else { bounds.1.y },
+            if i & 4 == 0 { bounds.0.z } else { bounds.1.z },
+        );
+        let uv = cam.view.view_to_uv(cam.world_to_view.transform_point3(c));
+        assert!(uv.min_element() >= -1e-4 && uv.max_element() <= 1.0 + 1e-4, "corner {c} at {uv}");
+        extent = extent.max((uv - 0.5).abs());
+    }
+    // Tight: some corner touches the left/right or top/bottom edge.
+    assert!(extent.max_element() > 0.5 - 1e-3, "{extent}");
+}
