@@ -34,6 +34,13 @@ impl ViewParams {
         (p.as_vec2() + 0.5) / self.res
     }
 
+    /// Centre uv of texel `p` as a multiply by the (loop-invariant) reciprocal resolution; for
+    /// the per-sample fetches, where [`Self::pixel_uv`]'s division would cost.
+    #[inline]
+    pub fn texel_uv(&self, p: UVec2) -> Vec2 {
+        (p.as_vec2() + 0.5) * self.res.recip()
+    }
+
     /// uv→view: `ndc = (2u−1, 1−2v)`, `X = (ndc.x·d·tx, ndc.y·d·ty, −d)` (spec §1).
     #[inline]
     pub fn uv_to_view(&self, uv: Vec2, d: f32) -> Vec3 {

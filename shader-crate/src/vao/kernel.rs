@@ -47,6 +47,8 @@ pub struct PixelFrame {
     pub bitangent: Vec3,
     /// Normal in sphere space `(N·t, N·b, N·n̂)`.
     pub normal_sphere: Vec3,
+    /// `1/nz(N_o.z)`, the hemisphere-clipping divisor of spec §4.2, hoisted out of the samples.
+    pub inv_normal_z: f32,
 }
 
 /// Per-pixel setup of spec §4.1. `None` means "unshaded" (AO = 1): the depth is unusable or the
@@ -98,6 +100,7 @@ pub fn setup_pixel<G: GBuffer>(
         tangent,
         bitangent,
         normal_sphere,
+        inv_normal_z: 1.0 / non_zero(normal_sphere.z),
     })
 }
 
@@ -136,9 +139,10 @@ pub fn line_sample(frame: &PixelFrame, view: &ViewParams, i: u32) -> LineSample 
     let dir = VAO_DIRECTIONS[i as usize];
     let offset = VAO_RADII[i as usize] * frame.radius * vec2(dir[0], dir[1]);
     let half_chord = VAO_HALF_CHORDS[i as usize] * frame.radius;
-    let zc = -offset.dot(vec2(frame.normal_sphere.x, frame.normal_sphere.y)) / non_zero(frame.normal_sphere.z);
+    let zc = -offset.dot(vec2(frame.normal_sphere.x, frame.normal_sphere.y)) * frame.inv_normal_z;
     let sphere_end = clamp(zc, -half_chord, half_chord);
-    let valid = (half_chord - sphere_end) / (2.0 * half_chord) > 0.1;
+    // (h − end)/(2h) > 0.1, without the division.
+    let valid = half_chord - sphere_end > 0.2 * half_chord;
     let s = frame.position + frame.tangent * offset.x + frame.bitangent * offset.y;
     let uv = view.view_to_uv(s);
     let in_screen = uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0;
@@ -161,9 +165,10 @@ pub fn object_z(frame: &PixelFrame, d: Vec3) -> f32 {
 #[inline]
 pub fn halo_visibility(z: f32, s: &LineSample, radius: f32, thickness: f32) -> f32 {
     let h = s.half_chord;
+    let inv_h = 1.0 / h;
     let inside = (h - s.sphere_end.max(z)).max(0.0);
-    let halo = sat((z - (1.0 + thickness) * radius) / h) * (h - s.sphere_end);
-    (inside + halo) / (2.0 * h)
+    let halo = sat((z - (1.0 + thickness) * radius) * inv_h) * (h - s.sphere_end);
+    (inside + halo) * (0.5 * inv_h)
 }
 
 /// Visibility of a sample whose raster position falls into the shaded pixel: fully visible,
@@ -181,8 +186,7 @@ pub fn primary_object_z<G: GBuffer>(gbuffer: &G, view: &ViewParams, frame: &Pixe
     if !is_valid_depth(d, view.far) {
         d = view.far;
     }
-    let uv_r = (s.texel.as_vec2() + 0.5) / view.res;
-    object_z(frame, view.uv_to_view(uv_r, d))
+    object_z(frame, view.uv_to_view(view.texel_uv(s.texel), d))
 }
 
 /// Final AO of one pixel with plain VAO on a single depth layer (spec §4, §5 with secondary
