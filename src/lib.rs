@@ -2,6 +2,7 @@
 //! the CPU (`aokit-cpu`) or on Vulkan (`aokit-vulkan`).
 
 pub mod frame;
+pub mod metrics;
 pub mod output;
 pub mod render;
 pub mod scene;

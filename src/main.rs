@@ -2,10 +2,11 @@
 
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::output::{crop_inner, write_exr, write_png};
-use aokit::render::{CpuRenderer, VulkanRenderer};
+use aokit::render::{CpuRenderer, Render, VulkanRenderer};
 use aokit::scene::Scene;
 use aokit::scene::builtin::{self, BuiltinScene};
 use aokit_shaders::glam::Vec3;
+use aokit_shaders::groundtruth::GroundTruthParams;
 use aokit_vulkan::GpuOptions;
 use clap::{Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -43,6 +44,9 @@ enum Backend {
 enum Technique {
     /// Volumetric AO on a single depth layer (spec svao-raysd §4–§5) + bilateral blur.
     Vao,
+    /// World-space ray-traced AO, cosine-weighted, `--spp` rays per pixel (the reference).
+    #[value(name = "groundtruth")]
+    GroundTruth,
 }
 
 fn parse_vec3(s: &str) -> Result<Vec3, String> {
@@ -94,6 +98,12 @@ struct RenderArgs {
     /// Halo thickness τ (spec §4.3).
     #[arg(long, default_value_t = 0.0)]
     thickness: f32,
+    /// Rays per pixel of `--technique groundtruth`.
+    #[arg(long, default_value_t = 512)]
+    spp: u32,
+    /// Ground truth with uniform instead of cosine-weighted hemisphere sampling.
+    #[arg(long)]
+    uniform: bool,
     /// Skip the bilateral blur.
     #[arg(long)]
     no_blur: bool,
@@ -141,6 +151,9 @@ fn render(args: RenderArgs) -> Result<(), String> {
         thickness: args.thickness,
     };
     let frame = Frame::resolve(&scene, builtin, &request).map_err(|e| e.to_string())?;
+    if args.technique == Technique::GroundTruth && args.spp == 0 {
+        return Err("--spp must be at least 1".into());
+    }
     let (result, device) = match args.backend {
         Backend::Cpu => {
             let renderer = CpuRenderer::new(&scene);
@@ -149,10 +162,32 @@ fn render(args: RenderArgs) -> Result<(), String> {
                 ProgressStyle::with_template("{spinner} {msg} [{bar:40}] {pos}/{len} rows ({eta})")
                     .expect("valid template"),
             );
-            bar.set_message("CPU G-buffer + VAO");
-            let r = renderer.render(&frame, &|n| bar.inc(n));
+            let r = match args.technique {
+                Technique::Vao => {
+                    bar.set_message("CPU G-buffer + VAO");
+                    renderer.render(&frame, &|n| bar.inc(n))
+                }
+                Technique::GroundTruth => {
+                    bar.set_message(format!("CPU G-buffer + ground truth, {} spp", args.spp));
+                    let (gbuffer, gbuffer_ms) = renderer.gbuffer(&frame, &|n| bar.inc(n));
+                    let params = GroundTruthParams {
+                        radius: frame.radius,
+                        exponent: frame.exponent,
+                        samples: args.spp,
+                        uniform: args.uniform as u32,
+                    };
+                    let (ao, ms) = renderer.ground_truth(&frame, &gbuffer, &params, &|n| bar.inc(n));
+                    let passes = vec![("gbuffer", gbuffer_ms), ("groundtruth", ms)];
+                    Render { gbuffer, ao: ao.clone(), ao_blurred: ao, passes }
+                }
+            };
             bar.finish_and_clear();
             (r, "cpu".to_string())
+        }
+        Backend::Vulkan if args.technique == Technique::GroundTruth => {
+            return Err("--technique groundtruth runs on --backend cpu only for now: the Vulkan \
+                        ray-tracing back-end does not exist yet"
+                .into());
         }
         Backend::Vulkan => {
             let renderer =
@@ -179,7 +214,10 @@ fn render(args: RenderArgs) -> Result<(), String> {
     let mut line = frame.describe();
     line["scene"] = scene.name.clone().into();
     line["triangles"] = scene.triangles.len().into();
-    line["technique"] = "vao".into();
+    line["technique"] = args.technique.to_possible_value().expect("named").get_name().into();
+    if args.technique == Technique::GroundTruth {
+        line["spp"] = args.spp.into();
+    }
     line["backend"] = format!("{:?}", args.backend).to_lowercase().into();
     line["device"] = device.into();
     line["passes_ms"] =

@@ -4,6 +4,7 @@ use crate::frame::Frame;
 use crate::scene::Scene;
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
+use aokit_shaders::groundtruth::GroundTruthParams;
 use aokit_vulkan::{GBufferVertex, Gpu, GpuError, GpuOptions, RasterGBuffer, ScreenPasses};
 use std::time::Instant;
 
@@ -48,15 +49,31 @@ impl CpuRenderer {
     /// One primary ray per pixel of the full target.
     pub fn gbuffer(&self, frame: &Frame, progress: Progress) -> (GBufferImage, f64) {
         let t = Instant::now();
-        let surfaces = Surfaces {
+        let g = aokit_cpu::ray_cast_gbuffer(&self.bvh, &self.surfaces(), &frame.camera, progress);
+        (g, ms_since(t))
+    }
+
+    /// Ground-truth AO (spec gtao-raymarch-hybrid §5) on a given G-buffer.
+    pub fn ground_truth(
+        &self,
+        frame: &Frame,
+        gbuffer: &GBufferImage,
+        params: &GroundTruthParams,
+        progress: Progress,
+    ) -> (Vec<f32>, f64) {
+        let t = Instant::now();
+        let ao = aokit_cpu::run_ground_truth(&self.bvh, &self.surfaces(), &frame.camera, gbuffer, params, progress);
+        (ao, ms_since(t))
+    }
+
+    fn surfaces(&self) -> Surfaces<'_> {
+        Surfaces {
             face_normals: &self.face_normals,
             uvs: &self.uvs,
             materials: &self.materials,
             mask_headers: &self.masks.0,
             mask_texels: &self.masks.1,
-        };
-        let g = aokit_cpu::ray_cast_gbuffer(&self.bvh, &surfaces, &frame.camera, progress);
-        (g, ms_since(t))
+        }
     }
 
     /// VAO and blur on a given G-buffer.

@@ -65,6 +65,30 @@ impl SceneBvh {
     }
 }
 
+impl SceneBvh {
+    /// Is anything that `accept` accepts hit along the ray for `t ∈ (t_min, t_max)`? Stops at
+    /// the first accepted hit (shadow / AO rays).
+    pub fn occluded(
+        &self,
+        origin: Vec3,
+        direction: Vec3,
+        t_min: f32,
+        t_max: f32,
+        accept: impl Fn(u32, Vec2) -> bool,
+    ) -> bool {
+        let ray = Ray::new(Vec3A::from(origin), Vec3A::from(direction), t_min, t_max);
+        !self.bvh.ray_traverse_miss(ray, |ray, id| {
+            let tri = &self.triangles[id];
+            let t = tri.intersect(ray);
+            if !(t > ray.tmin && t < ray.tmax) {
+                return f32::INFINITY;
+            }
+            let p = ray.origin + ray.direction * t;
+            if accept(self.bvh.primitive_indices[id], barycentrics(p, tri)) { t } else { f32::INFINITY }
+        })
+    }
+}
+
 /// Barycentric weights `(b1, b2)` of `v1` and `v2` for a point `p` in the triangle's plane.
 fn barycentrics(p: Vec3A, tri: &Triangle) -> Vec2 {
     let (e1, e2, d) = (tri.v1 - tri.v0, tri.v2 - tri.v0, p - tri.v0);

@@ -33,7 +33,7 @@ pub struct Surfaces<'a> {
 
 impl Surfaces<'_> {
     /// Alpha test of triangle `tri` at barycentrics `b` (weights of its 2nd and 3rd corner).
-    fn passes_alpha(&self, tri: u32, b: Vec2) -> bool {
+    pub fn passes_alpha(&self, tri: u32, b: Vec2) -> bool {
         let [a0, a1, a2] = self.uvs[tri as usize];
         let uv = a0 * (1.0 - b.x - b.y) + a1 * b.x + a2 * b.y;
         alpha_test_passes(self.mask_headers, self.mask_texels, self.materials[tri as usize], uv)

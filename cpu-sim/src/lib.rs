@@ -4,10 +4,12 @@
 
 pub mod bvh;
 pub mod gbuffer;
+pub mod groundtruth;
 pub mod screen;
 
 pub use bvh::SceneBvh;
 pub use gbuffer::{GBufferImage, Surfaces, ray_cast_gbuffer};
+pub use groundtruth::run_ground_truth;
 pub use screen::{run_blur, run_vao};
 
 /// Called with the number of rows finished since the last call (drives a progress bar).

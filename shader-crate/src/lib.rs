@@ -15,4 +15,5 @@ pub use spirv_std::glam;
 pub mod blur;
 pub mod common;
 pub mod gbuffer;
+pub mod groundtruth;
 pub mod vao;

@@ -1,0 +1,98 @@
+//! Image-quality metrics over the inner image (guard band excluded) and an optional mask:
+//! MSE, PSNR and SSIM (Wang, Bovik, Sheikh & Simoncelli 2004: 11×11 Gaussian window, σ = 1.5,
+//! K1 = 0.01, K2 = 0.03, dynamic range L = 1; the mean of the SSIM map over every window that
+//! lies completely inside the image, i.e. MATLAB `ssim_index`'s 'valid' filtering).
+
+/// A single-channel image, row-major.
+#[derive(Copy, Clone, Debug)]
+pub struct ImageRef<'a> {
+    pub width: usize,
+    pub height: usize,
+    pub pixels: &'a [f32],
+}
+
+impl ImageRef<'_> {
+    fn at(&self, x: usize, y: usize) -> f64 {
+        self.pixels[y * self.width + x] as f64
+    }
+}
+
+fn check_same_size(a: &ImageRef, b: &ImageRef) {
+    assert_eq!((a.width, a.height), (b.width, b.height), "metric inputs differ in size");
+    assert_eq!(a.pixels.len(), a.width * a.height, "pixel count");
+    assert_eq!(b.pixels.len(), b.width * b.height, "pixel count");
+}
+
+/// Mean squared error over the pixels where `mask` (if any) is true; `None` if none counts.
+pub fn mse(a: ImageRef, b: ImageRef, mask: Option<&[bool]>) -> Option<f64> {
+    check_same_size(&a, &b);
+    let (mut sum, mut n) = (0.0f64, 0usize);
+    for i in 0..a.pixels.len() {
+        if mask.is_none_or(|m| m[i]) {
+            let d = a.pixels[i] as f64 - b.pixels[i] as f64;
+            sum += d * d;
+            n += 1;
+        }
+    }
+    (n > 0).then(|| sum / n as f64)
+}
+
+/// Peak signal-to-noise ratio in dB for peak 1: `10·log10(1/MSE)` (∞ for identical images).
+pub fn psnr(mse: f64) -> f64 {
+    10.0 * (1.0 / mse).log10()
+}
+
+const WINDOW: usize = 11;
+const SIGMA: f64 = 1.5;
+const C1: f64 = 0.01 * 0.01;
+const C2: f64 = 0.03 * 0.03;
+
+fn gaussian_window() -> [[f64; WINDOW]; WINDOW] {
+    let mut w = [[0.0; WINDOW]; WINDOW];
+    let c = (WINDOW / 2) as f64;
+    let mut total = 0.0;
+    for (y, row) in w.iter_mut().enumerate() {
+        for (x, v) in row.iter_mut().enumerate() {
+            let (dx, dy) = (x as f64 - c, y as f64 - c);
+            *v = (-(dx * dx + dy * dy) / (2.0 * SIGMA * SIGMA)).exp();
+            total += *v;
+        }
+    }
+    w.iter_mut().flatten().for_each(|v| *v /= total);
+    w
+}
+
+/// Mean SSIM over the windows whose centre pixel is in `mask` (all if `None`); `None` if the
+/// image is smaller than the 11×11 window or no window counts.
+pub fn ssim(a: ImageRef, b: ImageRef, mask: Option<&[bool]>) -> Option<f64> {
+    check_same_size(&a, &b);
+    if a.width < WINDOW || a.height < WINDOW {
+        return None;
+    }
+    let w = gaussian_window();
+    let half = WINDOW / 2;
+    let (mut sum, mut n) = (0.0, 0usize);
+    for cy in half..a.height - half {
+        for cx in half..a.width - half {
+            if mask.is_some_and(|m| !m[cy * a.width + cx]) {
+                continue;
+            }
+            let (mut mx, mut my, mut xx, mut yy, mut xy) = (0.0, 0.0, 0.0, 0.0, 0.0);
+            for (wy, row) in w.iter().enumerate() {
+                for (wx, &k) in row.iter().enumerate() {
+                    let (x, y) = (cx + wx - half, cy + wy - half);
+                    let (p, q) = (a.at(x, y), b.at(x, y));
+                    mx += k * p;
+                    my += k * q;
+                    xx += k * p * p;
+                    yy += k * q * q;
+                    xy += k * p * q;
+                }
+            }
+            let (vx, vy, cxy) = (xx - mx * mx, yy - my * my, xy - mx * my);
+            sum += ((2.0 * mx * my + C1) * (2.0 * cxy + C2)) / ((mx * mx + my * my + C1) * (vx + vy + C2));
+            n += 1;
+        }
+    }
+    (n > 0).then(|| sum / n as f64)
+}
