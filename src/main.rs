@@ -154,6 +154,12 @@ fn render(args: RenderArgs) -> Result<(), String> {
     if args.technique == Technique::GroundTruth && args.spp == 0 {
         return Err("--spp must be at least 1".into());
     }
+    let gt_params = GroundTruthParams {
+        radius: frame.radius,
+        exponent: frame.exponent,
+        samples: args.spp,
+        uniform: args.uniform as u32,
+    };
     let (result, device) = match args.backend {
         Backend::Cpu => {
             let renderer = CpuRenderer::new(&scene);
@@ -170,13 +176,7 @@ fn render(args: RenderArgs) -> Result<(), String> {
                 Technique::GroundTruth => {
                     bar.set_message(format!("CPU G-buffer + ground truth, {} spp", args.spp));
                     let (gbuffer, gbuffer_ms) = renderer.gbuffer(&frame, &|n| bar.inc(n));
-                    let params = GroundTruthParams {
-                        radius: frame.radius,
-                        exponent: frame.exponent,
-                        samples: args.spp,
-                        uniform: args.uniform as u32,
-                    };
-                    let (ao, ms) = renderer.ground_truth(&frame, &gbuffer, &params, &|n| bar.inc(n));
+                    let (ao, ms) = renderer.ground_truth(&frame, &gbuffer, &gt_params, &|n| bar.inc(n));
                     let passes = vec![("gbuffer", gbuffer_ms), ("groundtruth", ms)];
                     Render { gbuffer, ao: ao.clone(), ao_blurred: ao, passes }
                 }
@@ -184,15 +184,19 @@ fn render(args: RenderArgs) -> Result<(), String> {
             bar.finish_and_clear();
             (r, "cpu".to_string())
         }
-        Backend::Vulkan if args.technique == Technique::GroundTruth => {
-            return Err("--technique groundtruth runs on --backend cpu only for now: the Vulkan \
-                        ray-tracing back-end does not exist yet"
-                .into());
-        }
         Backend::Vulkan => {
             let renderer =
                 VulkanRenderer::new(&GpuOptions { validation: args.validation }).map_err(|e| e.to_string())?;
-            let r = renderer.render(&scene, &frame).map_err(|e| e.to_string())?;
+            let r = match args.technique {
+                Technique::Vao => renderer.render(&scene, &frame).map_err(|e| e.to_string())?,
+                Technique::GroundTruth => {
+                    let (gbuffer, gbuffer_ms) = renderer.gbuffer(&scene, &frame).map_err(|e| e.to_string())?;
+                    let (ao, mut passes) =
+                        renderer.ground_truth(&scene, &frame, &gbuffer, &gt_params).map_err(|e| e.to_string())?;
+                    passes.insert(0, ("gbuffer", gbuffer_ms));
+                    Render { gbuffer, ao: ao.clone(), ao_blurred: ao, passes }
+                }
+            };
             let messages = renderer.gpu.validation_messages();
             if !messages.is_empty() {
                 return Err(format!(

@@ -4,9 +4,14 @@ use crate::frame::Frame;
 use crate::scene::Scene;
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
-use aokit_shaders::groundtruth::GroundTruthParams;
-use aokit_vulkan::{GBufferVertex, Gpu, GpuError, GpuOptions, RasterGBuffer, ScreenPasses};
+use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
+use aokit_vulkan::{
+    GBufferVertex, Gpu, GpuError, GpuOptions, GroundTruthPipeline, RasterGBuffer, SceneAccel, ScreenPasses,
+};
 use std::time::Instant;
+
+/// `(pass, milliseconds)` per pass.
+pub type PassTimes = Vec<(&'static str, f64)>;
 
 /// Result of one render: the G-buffer it used, AO before and after the blur (full target,
 /// guard band = 1), and time per pass.
@@ -15,7 +20,7 @@ pub struct Render {
     pub ao: Vec<f32>,
     pub ao_blurred: Vec<f32>,
     /// `(pass, milliseconds)`: wall clock on the CPU, timestamp queries on Vulkan.
-    pub passes: Vec<(&'static str, f64)>,
+    pub passes: PassTimes,
 }
 
 fn ms_since(t: Instant) -> f64 {
@@ -62,7 +67,8 @@ impl CpuRenderer {
         progress: Progress,
     ) -> (Vec<f32>, f64) {
         let t = Instant::now();
-        let ao = aokit_cpu::run_ground_truth(&self.bvh, &self.surfaces(), &frame.camera, gbuffer, params, progress);
+        let gt = GroundTruthFrame { camera: frame.camera, params: *params };
+        let ao = aokit_cpu::run_ground_truth(&self.bvh, &self.surfaces(), &gt, gbuffer, progress);
         (ao, ms_since(t))
     }
 
@@ -156,6 +162,42 @@ impl VulkanRenderer {
         self.gpu.free_buffer(depth);
         let out = out?;
         Ok(Render { gbuffer, ao: out.ao, ao_blurred: out.ao_blurred, passes: out.pass_ms })
+    }
+
+    /// Ground truth by Vulkan ray tracing on a given G-buffer (uploaded). Returns the AO
+    /// (full target) and `(pass, ms)` for the acceleration-structure build and the trace.
+    pub fn ground_truth(
+        &self,
+        scene: &Scene,
+        frame: &Frame,
+        gbuffer: &GBufferImage,
+        params: &GroundTruthParams,
+    ) -> Result<(Vec<f32>, PassTimes), GpuError> {
+        let pipeline = GroundTruthPipeline::new(&self.gpu)?;
+        let positions: Vec<[f32; 3]> = scene.triangles.iter().flatten().map(|v| v.to_array()).collect();
+        let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
+        let accel = SceneAccel::build(&self.gpu, &positions, &uvs, &scene.triangle_materials, &scene.alpha_masks());
+        let result = accel.and_then(|accel| {
+            let usage = ash::vk::BufferUsageFlags::STORAGE_BUFFER;
+            let run = || -> Result<(Vec<f32>, PassTimes), GpuError> {
+                let depth = self.gpu.upload(&gbuffer.depth, usage)?;
+                let normals = self.gpu.upload(&gbuffer.normals, usage);
+                let gt = GroundTruthFrame { camera: frame.camera, params: *params };
+                let out = normals.and_then(|n| {
+                    let r = pipeline.run(&self.gpu, &accel, &gt, &depth, &n);
+                    self.gpu.free_buffer(n);
+                    r
+                });
+                self.gpu.free_buffer(depth);
+                let (ao, ms) = out?;
+                Ok((ao, vec![("accel_build", accel.build_ms), ("groundtruth", ms)]))
+            };
+            let r = run();
+            accel.destroy(&self.gpu);
+            r
+        });
+        pipeline.destroy(&self.gpu);
+        result
     }
 
     /// The whole pipeline, G-buffer kept on the device.

@@ -12,6 +12,15 @@ pub struct Buffer {
     allocation: Option<Allocation>,
 }
 
+impl Buffer {
+    /// Copy `bytes` into a host-visible buffer.
+    pub(crate) fn write(&self, bytes: &[u8]) {
+        let mapped = self.allocation.as_ref().and_then(|a| a.mapped_ptr()).expect("host-visible buffer");
+        assert!(bytes.len() as u64 <= self.size);
+        unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), mapped.as_ptr() as *mut u8, bytes.len()) };
+    }
+}
+
 impl Gpu {
     /// Create a buffer of `size` bytes (at least 4) in `location`.
     pub fn create_buffer(
@@ -59,8 +68,7 @@ impl Gpu {
         let bytes: &[u8] = bytemuck::cast_slice(data);
         let staging =
             self.create_buffer(bytes.len() as u64, vk::BufferUsageFlags::TRANSFER_SRC, MemoryLocation::CpuToGpu)?;
-        let mapped = staging.allocation.as_ref().and_then(|a| a.mapped_ptr()).expect("CpuToGpu memory is mapped");
-        unsafe { std::ptr::copy_nonoverlapping(bytes.as_ptr(), mapped.as_ptr() as *mut u8, bytes.len()) };
+        staging.write(bytes);
         let buffer = self.create_buffer(
             bytes.len() as u64,
             usage | vk::BufferUsageFlags::TRANSFER_DST | vk::BufferUsageFlags::TRANSFER_SRC,

@@ -35,8 +35,25 @@ const RT_EXTENSIONS: [&CStr; 4] = [
 
 const VALIDATION_LAYER: &CStr = c"VK_LAYER_KHRONOS_validation";
 
+/// Shader-binding-table and scratch alignments of a ray-tracing device.
+#[derive(Copy, Clone, Debug)]
+pub(crate) struct RayTracingLimits {
+    pub handle_size: u32,
+    pub handle_alignment: u32,
+    pub base_alignment: u32,
+    pub scratch_alignment: u32,
+}
+
+/// Ray-tracing extension entry points, present when the device supports ray tracing.
+pub(crate) struct RayTracing {
+    pub limits: RayTracingLimits,
+    pub acceleration: khr::acceleration_structure::Device,
+    pub pipelines: khr::ray_tracing_pipeline::Device,
+}
+
 /// An open Vulkan device with everything the passes need.
 pub struct Gpu {
+    pub(crate) ray_tracing: Option<RayTracing>,
     pub(crate) device: ash::Device,
     pub(crate) queue: vk::Queue,
     pub(crate) pool: vk::CommandPool,
@@ -122,7 +139,7 @@ impl Gpu {
             None
         };
         match Self::open_device(&instance) {
-            Ok((physical, device, queue_family, info, timestamp_period_ns)) => {
+            Ok((physical, device, queue_family, info, timestamp_period_ns, limits)) => {
                 let queue = unsafe { device.get_device_queue(queue_family, 0) };
                 let pool = unsafe {
                     device.create_command_pool(
@@ -137,10 +154,16 @@ impl Gpu {
                     device: device.clone(),
                     physical_device: physical,
                     debug_settings: Default::default(),
-                    buffer_device_address: false,
+                    buffer_device_address: limits.is_some(),
                     allocation_sizes: Default::default(),
                 })?;
+                let ray_tracing = limits.map(|limits| RayTracing {
+                    limits,
+                    acceleration: khr::acceleration_structure::Device::new(&instance, &device),
+                    pipelines: khr::ray_tracing_pipeline::Device::new(&instance, &device),
+                });
                 Ok(Gpu {
+                    ray_tracing,
                     device,
                     queue,
                     pool,
@@ -168,7 +191,7 @@ impl Gpu {
     #[allow(clippy::type_complexity)]
     fn open_device(
         instance: &ash::Instance,
-    ) -> Result<(vk::PhysicalDevice, ash::Device, u32, DeviceInfo, f32), GpuError> {
+    ) -> Result<(vk::PhysicalDevice, ash::Device, u32, DeviceInfo, f32, Option<RayTracingLimits>), GpuError> {
         let mut candidates = Vec::new();
         for pd in unsafe { instance.enumerate_physical_devices()? } {
             let props = unsafe { instance.get_physical_device_properties(pd) };
@@ -210,16 +233,68 @@ impl Gpu {
             driver_version: props.driver_version,
             ray_tracing_extensions: RT_EXTENSIONS.iter().map(|e| (e.to_string_lossy().into_owned(), has(e))).collect(),
         };
+        // Ray tracing (pipelines + acceleration structures) when the device has all of it.
+        let mut as_features = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default();
+        let mut rt_features = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default();
+        let mut f12_query = vk::PhysicalDeviceVulkan12Features::default();
+        let mut f2 = vk::PhysicalDeviceFeatures2::default()
+            .push_next(&mut as_features)
+            .push_next(&mut rt_features)
+            .push_next(&mut f12_query);
+        unsafe { instance.get_physical_device_features2(pd, &mut f2) };
+        let ray_tracing = RT_EXTENSIONS[..2].iter().chain(&RT_EXTENSIONS[3..]).all(|e| has(e))
+            && as_features.acceleration_structure != 0
+            && rt_features.ray_tracing_pipeline != 0
+            && f12_query.buffer_device_address != 0;
+        let limits = ray_tracing.then(|| {
+            let mut rt_props = vk::PhysicalDeviceRayTracingPipelinePropertiesKHR::default();
+            let mut as_props = vk::PhysicalDeviceAccelerationStructurePropertiesKHR::default();
+            let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut rt_props).push_next(&mut as_props);
+            unsafe { instance.get_physical_device_properties2(pd, &mut p2) };
+            RayTracingLimits {
+                handle_size: rt_props.shader_group_handle_size,
+                handle_alignment: rt_props.shader_group_handle_alignment,
+                base_alignment: rt_props.shader_group_base_alignment,
+                scratch_alignment: as_props.min_acceleration_structure_scratch_offset_alignment,
+            }
+        });
         let priorities = [1.0];
         let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
         let mut f12 = vk::PhysicalDeviceVulkan12Features::default()
             .vulkan_memory_model(true)
-            .vulkan_memory_model_device_scope(true);
+            .vulkan_memory_model_device_scope(true)
+            .buffer_device_address(ray_tracing);
         let mut f13 = vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(true);
-        let create =
+        let mut as_enable = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default().acceleration_structure(true);
+        let mut rt_enable = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default().ray_tracing_pipeline(true);
+        let rt_names = [
+            khr::acceleration_structure::NAME.as_ptr(),
+            khr::ray_tracing_pipeline::NAME.as_ptr(),
+            khr::deferred_host_operations::NAME.as_ptr(),
+        ];
+        let mut create =
             vk::DeviceCreateInfo::default().queue_create_infos(&queues).push_next(&mut f12).push_next(&mut f13);
+        if ray_tracing {
+            create = create.enabled_extension_names(&rt_names).push_next(&mut as_enable).push_next(&mut rt_enable);
+        }
         let device = unsafe { instance.create_device(pd, &create, None)? };
-        Ok((pd, device, family, info, props.limits.timestamp_period))
+        Ok((pd, device, family, info, props.limits.timestamp_period, limits))
+    }
+
+    /// Does the device run ray-tracing pipelines (`VK_KHR_ray_tracing_pipeline` and
+    /// `VK_KHR_acceleration_structure`, enabled at creation)?
+    pub fn has_ray_tracing(&self) -> bool {
+        self.ray_tracing.is_some()
+    }
+
+    /// The ray-tracing entry points, or a clear error naming what the device lacks.
+    pub(crate) fn ray_tracing(&self) -> Result<&RayTracing, GpuError> {
+        self.ray_tracing.as_ref().ok_or_else(|| {
+            GpuError::NoDevice(format!(
+                "ray tracing: '{}' lacks VK_KHR_ray_tracing_pipeline / VK_KHR_acceleration_structure / bufferDeviceAddress",
+                self.info.name
+            ))
+        })
     }
 
     /// The chosen device.

@@ -9,12 +9,14 @@ mod descriptors;
 mod gbuffer;
 pub mod manifest;
 pub mod modules;
+mod raytracing;
 mod screen;
 pub mod spirv_hash;
 
 pub use buffer::Buffer;
 pub use context::{DeviceInfo, Gpu, GpuOptions};
 pub use gbuffer::{GBufferVertex, RasterGBuffer};
+pub use raytracing::{GroundTruthPipeline, SceneAccel};
 pub use screen::{ScreenOutput, ScreenPasses};
 
 /// Errors of the Vulkan back-end.

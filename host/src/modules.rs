@@ -13,10 +13,20 @@ pub const VAO_MAIN: &[u8] = spv!("vao_main");
 pub const BLUR_MAIN: &[u8] = spv!("blur_main");
 pub const GBUFFER_VS: &[u8] = spv!("gbuffer_vs");
 pub const GBUFFER_FS: &[u8] = spv!("gbuffer_fs");
+pub const GROUNDTRUTH_RGEN: &[u8] = spv!("groundtruth_rgen");
+pub const GROUNDTRUTH_MISS: &[u8] = spv!("groundtruth_miss");
+pub const GROUNDTRUTH_AHIT: &[u8] = spv!("groundtruth_ahit");
 
 /// Every module by entry-point name.
-pub const ALL: [(&str, &[u8]); 4] =
-    [("vao_main", VAO_MAIN), ("blur_main", BLUR_MAIN), ("gbuffer_vs", GBUFFER_VS), ("gbuffer_fs", GBUFFER_FS)];
+pub const ALL: [(&str, &[u8]); 7] = [
+    ("vao_main", VAO_MAIN),
+    ("blur_main", BLUR_MAIN),
+    ("gbuffer_vs", GBUFFER_VS),
+    ("gbuffer_fs", GBUFFER_FS),
+    ("groundtruth_rgen", GROUNDTRUTH_RGEN),
+    ("groundtruth_miss", GROUNDTRUTH_MISS),
+    ("groundtruth_ahit", GROUNDTRUTH_AHIT),
+];
 
 /// SPIR-V words of a module (validates the magic number and alignment).
 pub fn words(bytes: &[u8]) -> Vec<u32> {

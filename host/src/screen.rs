@@ -80,15 +80,15 @@ impl ComputeKernel {
     }
 }
 
-/// Make compute-shader writes visible to later compute reads and transfers.
-pub(crate) fn compute_barrier(gpu: &Gpu, cb: vk::CommandBuffer) {
+/// Make shader writes of stage `src` visible to later compute reads and transfers.
+pub(crate) fn compute_barrier(gpu: &Gpu, cb: vk::CommandBuffer, src: vk::PipelineStageFlags) {
     let barrier = vk::MemoryBarrier::default()
         .src_access_mask(vk::AccessFlags::SHADER_WRITE)
         .dst_access_mask(vk::AccessFlags::SHADER_READ | vk::AccessFlags::TRANSFER_READ);
     unsafe {
         gpu.device.cmd_pipeline_barrier(
             cb,
-            vk::PipelineStageFlags::COMPUTE_SHADER,
+            src,
             vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER,
             vk::DependencyFlags::empty(),
             &[barrier],
@@ -161,14 +161,14 @@ impl ScreenPasses {
                 d.cmd_reset_query_pool(cb, queries, 0, 3);
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TOP_OF_PIPE, queries, 0);
                 self.vao.record(gpu, cb, pool, &[depth, normals, &ao], bytemuck::bytes_of(vao), groups)?;
-                compute_barrier(gpu, cb);
+                compute_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER);
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 1);
                 let horizontal = BlurParams { direction: uvec2(1, 0), ..*blur };
                 self.blur.record(gpu, cb, pool, &[&ao, depth, &tmp], bytemuck::bytes_of(&horizontal), groups)?;
-                compute_barrier(gpu, cb);
+                compute_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER);
                 let vertical = BlurParams { direction: uvec2(0, 1), ..*blur };
                 self.blur.record(gpu, cb, pool, &[&tmp, depth, &out], bytemuck::bytes_of(&vertical), groups)?;
-                compute_barrier(gpu, cb);
+                compute_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER);
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 2);
                 Ok(())
             });

@@ -9,6 +9,7 @@ use aokit_vulkan::manifest::{Manifest, reflect};
 use aokit_vulkan::spirv_hash::shader_source_hash;
 use cargo_gpu_install::install::Install;
 use cargo_gpu_install::spirv_builder::{Capability, ModuleResult, SpirvMetadata};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::process::{Command, ExitCode};
 
@@ -43,17 +44,34 @@ fn build_spirv() -> Result<(), String> {
     let out_dir = root.join("assets/spirv");
     let backend =
         Install::from_shader_crate(shader_crate.clone()).run().map_err(|e| format!("installing rust-gpu: {e:?}"))?;
-    let result = backend
-        .to_spirv_builder(&shader_crate, TARGET)
-        .release(true)
-        .multimodule(true)
-        .spirv_metadata(SpirvMetadata::NameVariables)
-        .capability(Capability::VulkanMemoryModelDeviceScope)
-        .build()
-        .map_err(|e| format!("rust-gpu build: {e}"))?;
-    let ModuleResult::MultiModule(modules) = &result.module else {
-        return Err("expected one module per entry point".into());
+    let build = |ray_tracing: bool| -> Result<BTreeMap<String, PathBuf>, String> {
+        let mut builder = backend
+            .to_spirv_builder(&shader_crate, TARGET)
+            .release(true)
+            .multimodule(true)
+            .spirv_metadata(SpirvMetadata::NameVariables)
+            .capability(Capability::VulkanMemoryModelDeviceScope);
+        if ray_tracing {
+            builder = builder
+                .capability(Capability::RayTracingKHR)
+                .extension("SPV_KHR_ray_tracing")
+                .shader_crate_features(["rt".to_string()]);
+        }
+        let result = builder.build().map_err(|e| format!("rust-gpu build: {e}"))?;
+        match result.module {
+            ModuleResult::MultiModule(modules) => Ok(modules),
+            ModuleResult::SingleModule(_) => Err("expected one module per entry point".into()),
+        }
     };
+    // Two passes: a capability applies to every module of a build, and compute/raster modules
+    // must neither require ray tracing nor lose naga's validation.
+    let mut modules = build(false)?;
+    let plain: Vec<String> = modules.keys().cloned().collect();
+    for (entry, path) in build(true)? {
+        if !plain.contains(&entry) {
+            modules.insert(entry, path);
+        }
+    }
     std::fs::create_dir_all(&out_dir).map_err(|e| e.to_string())?;
     let mut manifest = Manifest {
         source_hash: shader_source_hash(&shader_crate).map_err(|e| e.to_string())?,
@@ -61,13 +79,13 @@ fn build_spirv() -> Result<(), String> {
         rust_gpu: "0.11.0".into(),
         modules: Vec::new(),
     };
-    for (entry, path) in modules {
+    for (entry, path) in &modules {
         let file = format!("{entry}.spv");
         let dest = out_dir.join(&file);
         std::fs::copy(path, &dest).map_err(|e| format!("{}: {e}", path.display()))?;
         spirv_val(&dest)?;
         let bytes = std::fs::read(&dest).map_err(|e| e.to_string())?;
-        let module = reflect::reflect(&file, &bytes).map_err(|e| format!("{file}: {e}"))?;
+        let module = reflect::reflect_any(&file, &bytes).map_err(|e| format!("{file}: {e}"))?;
         println!(
             "  {file}: {} bytes, {} stage, {} bindings, {} push-constant bytes",
             bytes.len(),

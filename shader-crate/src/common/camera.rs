@@ -80,7 +80,9 @@ impl ViewParams {
 }
 
 /// A perspective camera placed in the world: the view matrices plus [`ViewParams`].
+#[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
+#[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
 pub struct Camera {
     /// World → view (right-handed, looking down −Z).
     pub world_to_view: crate::glam::Mat4,

@@ -6,7 +6,12 @@
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
-use crate::common::math::frac;
+#[cfg(any(feature = "rt", not(target_arch = "spirv")))]
+pub mod rt;
+
+use crate::common::camera::Camera;
+use crate::common::gbuffer_read::GBuffer;
+use crate::common::math::{frac, is_valid_depth};
 use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
 
 /// Ground-truth parameters.
@@ -77,4 +82,55 @@ pub fn visibility_weight(n: Vec3, dir: Vec3, uniform: bool) -> f32 {
 #[inline]
 pub fn finalize(visible: f32, params: &GroundTruthParams) -> f32 {
     crate::common::math::sat(visible / params.samples as f32).powf(params.exponent)
+}
+
+/// Answers "is this ray blocked before `t_max`?": `trace_ray` on the GPU, the BVH on the CPU.
+pub trait OcclusionQuery {
+    fn occluded(&mut self, origin: Vec3, direction: Vec3, t_max: f32) -> bool;
+}
+
+/// Everything a ground-truth pixel needs besides the G-buffer (a storage-buffer record: too big
+/// for guaranteed push-constant space).
+#[repr(C)]
+#[derive(Copy, Clone, Debug, PartialEq)]
+#[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+pub struct GroundTruthFrame {
+    pub camera: Camera,
+    pub params: GroundTruthParams,
+}
+
+/// Ground-truth AO of pixel `p`: rays from the G-buffer point, offset along its camera-facing
+/// face normal by `1e-4·(t + R)`, `samples` directions from [`sample_2d`], visible fraction
+/// through [`finalize`]. Background pixels are 1.
+#[inline]
+pub fn ground_truth_pixel<G: GBuffer, Q: OcclusionQuery>(
+    gbuffer: &G,
+    frame: &GroundTruthFrame,
+    p: UVec2,
+    rays: &mut Q,
+) -> f32 {
+    let camera = &frame.camera;
+    let params = &frame.params;
+    let d = gbuffer.linear_depth(p);
+    if !is_valid_depth(d, camera.view.far) {
+        return 1.0;
+    }
+    let dir = camera.primary_ray_direction(camera.view.pixel_uv(p));
+    let t = d / -camera.world_to_view.transform_vector3(dir).z;
+    let mut n = camera.view_to_world.transform_vector3(gbuffer.view_normal(p));
+    if n.dot(dir) > 0.0 {
+        n = -n;
+    }
+    let origin = camera.eye() + dir * t + n * (1e-4 * (t + params.radius));
+    let uniform = params.uniform != 0;
+    let mut visible = 0.0;
+    let mut k = 0;
+    while k < params.samples {
+        let w = hemisphere_direction(n, sample_2d(k, p), uniform);
+        if !rays.occluded(origin, w, params.radius) {
+            visible += visibility_weight(n, w, uniform);
+        }
+        k += 1;
+    }
+    finalize(visible, params)
 }

@@ -1,0 +1,437 @@
+//! Ray tracing on Vulkan: one BLAS over the scene's triangle soup, a one-instance TLAS, and the
+//! ground-truth ray-tracing pipeline (raygen + miss + any-hit for alpha-masked geometry) with
+//! its shader binding table (layout per `shared/notes/lavapipe-rt.md`).
+
+use crate::screen::compute_barrier;
+use crate::{Buffer, Gpu, GpuError, modules};
+use aokit_shaders::common::alpha::AlphaMaskHeader;
+use aokit_shaders::glam::Vec2;
+use aokit_shaders::groundtruth::GroundTruthFrame;
+use ash::vk;
+use gpu_allocator::MemoryLocation;
+
+impl Gpu {
+    fn device_address(&self, buffer: &Buffer) -> u64 {
+        unsafe { self.device.get_buffer_device_address(&vk::BufferDeviceAddressInfo::default().buffer(buffer.raw)) }
+    }
+
+    /// Build an acceleration structure of `ty` from `geometry` with `primitives` primitives.
+    fn build_acceleration_structure(
+        &self,
+        ty: vk::AccelerationStructureTypeKHR,
+        geometry: vk::AccelerationStructureGeometryKHR,
+        primitives: u32,
+    ) -> Result<(vk::AccelerationStructureKHR, Buffer), GpuError> {
+        let rt = self.ray_tracing()?;
+        let geometries = [geometry];
+        let mut info = vk::AccelerationStructureBuildGeometryInfoKHR::default()
+            .ty(ty)
+            .flags(vk::BuildAccelerationStructureFlagsKHR::PREFER_FAST_TRACE)
+            .mode(vk::BuildAccelerationStructureModeKHR::BUILD)
+            .geometries(&geometries);
+        let mut sizes = vk::AccelerationStructureBuildSizesInfoKHR::default();
+        unsafe {
+            rt.acceleration.get_acceleration_structure_build_sizes(
+                vk::AccelerationStructureBuildTypeKHR::DEVICE,
+                &info,
+                &[primitives],
+                &mut sizes,
+            )
+        };
+        let storage = self.create_buffer(
+            sizes.acceleration_structure_size,
+            vk::BufferUsageFlags::ACCELERATION_STRUCTURE_STORAGE_KHR | vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS,
+            MemoryLocation::GpuOnly,
+        )?;
+        let align = rt.limits.scratch_alignment.max(1) as u64;
+        let scratch = self.create_buffer(
+            sizes.build_scratch_size + align,
+            vk::BufferUsageFlags::STORAGE_BUFFER | vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS,
+            MemoryLocation::GpuOnly,
+        )?;
+        let created = unsafe {
+            rt.acceleration.create_acceleration_structure(
+                &vk::AccelerationStructureCreateInfoKHR::default()
+                    .buffer(storage.raw)
+                    .size(sizes.acceleration_structure_size)
+                    .ty(ty),
+                None,
+            )
+        };
+        let result = created.map_err(GpuError::from).and_then(|handle| {
+            info = info.dst_acceleration_structure(handle).scratch_data(vk::DeviceOrHostAddressKHR {
+                device_address: self.device_address(&scratch).next_multiple_of(align),
+            });
+            let range = [vk::AccelerationStructureBuildRangeInfoKHR::default().primitive_count(primitives)];
+            self.submit(|cb| unsafe {
+                rt.acceleration.cmd_build_acceleration_structures(cb, &[info], &[&range]);
+                let barrier = vk::MemoryBarrier::default()
+                    .src_access_mask(vk::AccessFlags::ACCELERATION_STRUCTURE_WRITE_KHR)
+                    .dst_access_mask(vk::AccessFlags::ACCELERATION_STRUCTURE_READ_KHR);
+                self.device.cmd_pipeline_barrier(
+                    cb,
+                    vk::PipelineStageFlags::ACCELERATION_STRUCTURE_BUILD_KHR,
+                    vk::PipelineStageFlags::ACCELERATION_STRUCTURE_BUILD_KHR
+                        | vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR,
+                    vk::DependencyFlags::empty(),
+                    &[barrier],
+                    &[],
+                    &[],
+                );
+            })
+            .map(|_| handle)
+            .inspect_err(|_| unsafe { rt.acceleration.destroy_acceleration_structure(handle, None) })
+        });
+        self.free_buffer(scratch);
+        match result {
+            Ok(handle) => Ok((handle, storage)),
+            Err(e) => {
+                self.free_buffer(storage);
+                Err(e)
+            }
+        }
+    }
+}
+
+/// The scene on the device for ray tracing: BLAS + TLAS and the per-triangle attributes the
+/// any-hit shader reads.
+pub struct SceneAccel {
+    blas: (vk::AccelerationStructureKHR, Buffer),
+    tlas: (vk::AccelerationStructureKHR, Buffer),
+    uvs: Buffer,
+    materials: Buffer,
+    mask_headers: Buffer,
+    mask_texels: Buffer,
+    pub build_ms: f64,
+}
+
+impl SceneAccel {
+    /// `positions`: three corners per triangle. Geometry is marked opaque unless some material
+    /// has an alpha mask (then every triangle runs the any-hit alpha test).
+    pub fn build(
+        gpu: &Gpu,
+        positions: &[[f32; 3]],
+        uvs: &[Vec2],
+        materials: &[u32],
+        masks: &(Vec<AlphaMaskHeader>, Vec<f32>),
+    ) -> Result<SceneAccel, GpuError> {
+        let triangles = (positions.len() / 3) as u32;
+        if triangles == 0 || uvs.len() != positions.len() || materials.len() != triangles as usize {
+            return Err(GpuError::Input(format!(
+                "ray-tracing scene: {} corners, {} uvs, {} materials",
+                positions.len(),
+                uvs.len(),
+                materials.len()
+            )));
+        }
+        let start = std::time::Instant::now();
+        let input = vk::BufferUsageFlags::ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_KHR
+            | vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS;
+        let vertices = gpu.upload(positions, input)?;
+        let masked = masks.0.iter().any(|h| h.width > 0);
+        let flags = if masked { vk::GeometryFlagsKHR::empty() } else { vk::GeometryFlagsKHR::OPAQUE };
+        let triangles_data = vk::AccelerationStructureGeometryTrianglesDataKHR::default()
+            .vertex_format(vk::Format::R32G32B32_SFLOAT)
+            .vertex_data(vk::DeviceOrHostAddressConstKHR { device_address: gpu.device_address(&vertices) })
+            .vertex_stride(12)
+            .max_vertex(positions.len() as u32 - 1)
+            .index_type(vk::IndexType::NONE_KHR);
+        let geometry = vk::AccelerationStructureGeometryKHR::default()
+            .geometry_type(vk::GeometryTypeKHR::TRIANGLES)
+            .geometry(vk::AccelerationStructureGeometryDataKHR { triangles: triangles_data })
+            .flags(flags);
+        let blas =
+            gpu.build_acceleration_structure(vk::AccelerationStructureTypeKHR::BOTTOM_LEVEL, geometry, triangles);
+        gpu.free_buffer(vertices);
+        let blas = blas?;
+        let rt = gpu.ray_tracing()?;
+        let blas_address = unsafe {
+            rt.acceleration.get_acceleration_structure_device_address(
+                &vk::AccelerationStructureDeviceAddressInfoKHR::default().acceleration_structure(blas.0),
+            )
+        };
+        let instance = vk::AccelerationStructureInstanceKHR {
+            transform: vk::TransformMatrixKHR { matrix: [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0] },
+            instance_custom_index_and_mask: vk::Packed24_8::new(0, 0xff),
+            instance_shader_binding_table_record_offset_and_flags: vk::Packed24_8::new(
+                0,
+                vk::GeometryInstanceFlagsKHR::TRIANGLE_FACING_CULL_DISABLE.as_raw() as u8,
+            ),
+            acceleration_structure_reference: vk::AccelerationStructureReferenceKHR { device_handle: blas_address },
+        };
+        let instance_bytes = unsafe {
+            std::slice::from_raw_parts(
+                &instance as *const _ as *const u8,
+                size_of::<vk::AccelerationStructureInstanceKHR>(),
+            )
+        };
+        let instances = gpu.upload(instance_bytes, input)?;
+        let instances_data = vk::AccelerationStructureGeometryInstancesDataKHR::default()
+            .data(vk::DeviceOrHostAddressConstKHR { device_address: gpu.device_address(&instances) });
+        let geometry = vk::AccelerationStructureGeometryKHR::default()
+            .geometry_type(vk::GeometryTypeKHR::INSTANCES)
+            .geometry(vk::AccelerationStructureGeometryDataKHR { instances: instances_data });
+        let tlas = gpu.build_acceleration_structure(vk::AccelerationStructureTypeKHR::TOP_LEVEL, geometry, 1);
+        gpu.free_buffer(instances);
+        let tlas = match tlas {
+            Ok(t) => t,
+            Err(e) => {
+                unsafe { rt.acceleration.destroy_acceleration_structure(blas.0, None) };
+                gpu.free_buffer(blas.1);
+                return Err(e);
+            }
+        };
+        let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
+        Ok(SceneAccel {
+            blas,
+            tlas,
+            uvs: gpu.upload(uvs, storage)?,
+            materials: gpu.upload(materials, storage)?,
+            mask_headers: gpu.upload(&masks.0, storage)?,
+            mask_texels: gpu.upload(&masks.1, storage)?,
+            build_ms: start.elapsed().as_secs_f64() * 1e3,
+        })
+    }
+
+    pub fn destroy(self, gpu: &Gpu) {
+        if let Some(rt) = &gpu.ray_tracing {
+            unsafe {
+                rt.acceleration.destroy_acceleration_structure(self.tlas.0, None);
+                rt.acceleration.destroy_acceleration_structure(self.blas.0, None);
+            }
+        }
+        for b in [self.tlas.1, self.blas.1, self.uvs, self.materials, self.mask_headers, self.mask_texels] {
+            gpu.free_buffer(b);
+        }
+    }
+}
+
+/// Bindings of the ground-truth modules: 0 frame, 1 TLAS, 2 depth, 3 normals, 4 AO,
+/// 5 uvs, 6 materials, 7 mask headers, 8 mask texels.
+const BINDINGS: u32 = 9;
+
+/// The ground-truth ray-tracing pipeline and its shader binding table.
+pub struct GroundTruthPipeline {
+    set_layout: vk::DescriptorSetLayout,
+    layout: vk::PipelineLayout,
+    pipeline: vk::Pipeline,
+    sbt: Buffer,
+    regions: [vk::StridedDeviceAddressRegionKHR; 3],
+}
+
+impl GroundTruthPipeline {
+    pub fn new(gpu: &Gpu) -> Result<Self, GpuError> {
+        let rt = gpu.ray_tracing()?;
+        let d = &gpu.device;
+        let stages_all = vk::ShaderStageFlags::RAYGEN_KHR | vk::ShaderStageFlags::ANY_HIT_KHR;
+        let bindings: Vec<_> = (0..BINDINGS)
+            .map(|b| {
+                let ty = if b == 1 {
+                    vk::DescriptorType::ACCELERATION_STRUCTURE_KHR
+                } else {
+                    vk::DescriptorType::STORAGE_BUFFER
+                };
+                vk::DescriptorSetLayoutBinding::default()
+                    .binding(b)
+                    .descriptor_type(ty)
+                    .descriptor_count(1)
+                    .stage_flags(stages_all)
+            })
+            .collect();
+        unsafe {
+            let set_layout = d.create_descriptor_set_layout(
+                &vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings),
+                None,
+            )?;
+            let set_layouts = [set_layout];
+            let layout =
+                d.create_pipeline_layout(&vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts), None)?;
+            let rgen = gpu.shader_module(modules::GROUNDTRUTH_RGEN)?;
+            let miss = gpu.shader_module(modules::GROUNDTRUTH_MISS)?;
+            let ahit = gpu.shader_module(modules::GROUNDTRUTH_AHIT)?;
+            let stages = [
+                vk::PipelineShaderStageCreateInfo::default()
+                    .stage(vk::ShaderStageFlags::RAYGEN_KHR)
+                    .module(rgen)
+                    .name(c"groundtruth_rgen"),
+                vk::PipelineShaderStageCreateInfo::default()
+                    .stage(vk::ShaderStageFlags::MISS_KHR)
+                    .module(miss)
+                    .name(c"groundtruth_miss"),
+                vk::PipelineShaderStageCreateInfo::default()
+                    .stage(vk::ShaderStageFlags::ANY_HIT_KHR)
+                    .module(ahit)
+                    .name(c"groundtruth_ahit"),
+            ];
+            let general = |stage: u32| {
+                vk::RayTracingShaderGroupCreateInfoKHR::default()
+                    .ty(vk::RayTracingShaderGroupTypeKHR::GENERAL)
+                    .general_shader(stage)
+                    .closest_hit_shader(vk::SHADER_UNUSED_KHR)
+                    .any_hit_shader(vk::SHADER_UNUSED_KHR)
+                    .intersection_shader(vk::SHADER_UNUSED_KHR)
+            };
+            let groups = [
+                general(0),
+                general(1),
+                vk::RayTracingShaderGroupCreateInfoKHR::default()
+                    .ty(vk::RayTracingShaderGroupTypeKHR::TRIANGLES_HIT_GROUP)
+                    .general_shader(vk::SHADER_UNUSED_KHR)
+                    .closest_hit_shader(vk::SHADER_UNUSED_KHR)
+                    .any_hit_shader(2)
+                    .intersection_shader(vk::SHADER_UNUSED_KHR),
+            ];
+            let info = vk::RayTracingPipelineCreateInfoKHR::default()
+                .stages(&stages)
+                .groups(&groups)
+                .max_pipeline_ray_recursion_depth(1)
+                .layout(layout);
+            let created = rt.pipelines.create_ray_tracing_pipelines(
+                vk::DeferredOperationKHR::null(),
+                vk::PipelineCache::null(),
+                &[info],
+                None,
+            );
+            for m in [rgen, miss, ahit] {
+                d.destroy_shader_module(m, None);
+            }
+            let pipeline = created.map_err(|(_, e)| e)?[0];
+            // Shader binding table: one record per group, each region base-aligned.
+            let limits = rt.limits;
+            let (hs, ha, ba) =
+                (limits.handle_size as u64, limits.handle_alignment as u64, limits.base_alignment as u64);
+            let stride = hs.next_multiple_of(ha);
+            let region = stride.next_multiple_of(ba);
+            let handles = rt.pipelines.get_ray_tracing_shader_group_handles(pipeline, 0, 3, 3 * hs as usize)?;
+            let mut table = vec![0u8; (3 * region + ba) as usize];
+            let sbt = gpu.create_buffer(
+                table.len() as u64,
+                vk::BufferUsageFlags::SHADER_BINDING_TABLE_KHR | vk::BufferUsageFlags::SHADER_DEVICE_ADDRESS,
+                MemoryLocation::CpuToGpu,
+            )?;
+            let address = gpu.device_address(&sbt);
+            let base = address.next_multiple_of(ba);
+            for g in 0..3u64 {
+                let at = (base - address + g * region) as usize;
+                table[at..at + hs as usize].copy_from_slice(&handles[(g * hs) as usize..((g + 1) * hs) as usize]);
+            }
+            sbt.write(&table);
+            let r =
+                |g: u64| vk::StridedDeviceAddressRegionKHR { device_address: base + g * region, stride, size: stride };
+            Ok(GroundTruthPipeline { set_layout, layout, pipeline, sbt, regions: [r(0), r(1), r(2)] })
+        }
+    }
+
+    /// Ground truth for every inner pixel of a G-buffer already on the device. Returns the
+    /// full-target AO (guard band = 1) and the GPU time of the trace in milliseconds.
+    pub fn run(
+        &self,
+        gpu: &Gpu,
+        scene: &SceneAccel,
+        frame: &GroundTruthFrame,
+        depth: &Buffer,
+        normals: &Buffer,
+    ) -> Result<(Vec<f32>, f64), GpuError> {
+        let rt = gpu.ray_tracing()?;
+        let size = frame.camera.view.size();
+        let inner = size - 2 * frame.camera.view.guard;
+        let pixels = (size.x * size.y) as usize;
+        let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
+        let frame_buf = gpu.upload(std::slice::from_ref(frame), storage)?;
+        let ao = gpu.upload(&vec![1.0f32; pixels], storage)?;
+        let d = &gpu.device;
+        let result = (|| unsafe {
+            let sizes = [
+                vk::DescriptorPoolSize::default().ty(vk::DescriptorType::STORAGE_BUFFER).descriptor_count(BINDINGS - 1),
+                vk::DescriptorPoolSize::default()
+                    .ty(vk::DescriptorType::ACCELERATION_STRUCTURE_KHR)
+                    .descriptor_count(1),
+            ];
+            let pool = d.create_descriptor_pool(
+                &vk::DescriptorPoolCreateInfo::default().max_sets(1).pool_sizes(&sizes),
+                None,
+            )?;
+            let set_layouts = [self.set_layout];
+            let set = d.allocate_descriptor_sets(
+                &vk::DescriptorSetAllocateInfo::default().descriptor_pool(pool).set_layouts(&set_layouts),
+            )?[0];
+            let buffers = [
+                (0, &frame_buf),
+                (2, depth),
+                (3, normals),
+                (4, &ao),
+                (5, &scene.uvs),
+                (6, &scene.materials),
+                (7, &scene.mask_headers),
+                (8, &scene.mask_texels),
+            ];
+            let infos: Vec<_> = buffers
+                .iter()
+                .map(|(_, b)| [vk::DescriptorBufferInfo::default().buffer(b.raw).range(vk::WHOLE_SIZE)])
+                .collect();
+            let mut writes: Vec<_> = buffers
+                .iter()
+                .zip(&infos)
+                .map(|((binding, _), info)| {
+                    vk::WriteDescriptorSet::default()
+                        .dst_set(set)
+                        .dst_binding(*binding)
+                        .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                        .buffer_info(info)
+                })
+                .collect();
+            let tlas = [scene.tlas.0];
+            let mut as_write = vk::WriteDescriptorSetAccelerationStructureKHR::default().acceleration_structures(&tlas);
+            writes.push(
+                vk::WriteDescriptorSet::default()
+                    .dst_set(set)
+                    .dst_binding(1)
+                    .descriptor_type(vk::DescriptorType::ACCELERATION_STRUCTURE_KHR)
+                    .descriptor_count(1)
+                    .push_next(&mut as_write),
+            );
+            d.update_descriptor_sets(&writes, &[]);
+            let queries = d.create_query_pool(
+                &vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(2),
+                None,
+            )?;
+            let traced = gpu.submit(|cb| {
+                d.cmd_reset_query_pool(cb, queries, 0, 2);
+                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TOP_OF_PIPE, queries, 0);
+                d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::RAY_TRACING_KHR, self.pipeline);
+                d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::RAY_TRACING_KHR, self.layout, 0, &[set], &[]);
+                let [raygen, miss, hit] = &self.regions;
+                rt.pipelines.cmd_trace_rays(cb, raygen, miss, hit, &Default::default(), inner.x, inner.y, 1);
+                compute_barrier(gpu, cb, vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR);
+                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR, queries, 1);
+            });
+            let mut stamps = [0u64; 2];
+            let got = traced.and_then(|_| {
+                d.get_query_pool_results(
+                    queries,
+                    0,
+                    &mut stamps,
+                    vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
+                )
+                .map_err(GpuError::from)
+            });
+            d.destroy_query_pool(queries, None);
+            d.destroy_descriptor_pool(pool, None);
+            got?;
+            Ok(stamps[1].saturating_sub(stamps[0]) as f64 * gpu.timestamp_period_ns as f64 * 1e-6)
+        })();
+        let out = result.and_then(|ms| Ok((gpu.download(&ao)?, ms)));
+        gpu.free_buffer(frame_buf);
+        gpu.free_buffer(ao);
+        out
+    }
+
+    pub fn destroy(self, gpu: &Gpu) {
+        unsafe {
+            gpu.device.destroy_pipeline(self.pipeline, None);
+            gpu.device.destroy_pipeline_layout(self.layout, None);
+            gpu.device.destroy_descriptor_set_layout(self.set_layout, None);
+        }
+        gpu.free_buffer(self.sbt);
+    }
+}

@@ -1,0 +1,82 @@
+//! Ray-tracing entry points of the ground truth: one ray-generation invocation per inner pixel,
+//! a miss shader that clears the "occluded" payload, and an any-hit shader for the alpha test.
+
+use super::{GroundTruthFrame, OcclusionQuery, ground_truth_pixel};
+use crate::common::alpha::{AlphaMaskHeader, alpha_test_passes};
+use crate::common::gbuffer_read::GBufferSlices;
+use crate::glam::{UVec3, Vec2, Vec3};
+use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
+use spirv_std::spirv;
+
+/// `trace_ray` as an [`OcclusionQuery`]: the payload starts at 1 (occluded), the miss shader
+/// sets 0; the first accepted hit ends the ray.
+struct TracedOcclusion<'a> {
+    tlas: &'a AccelerationStructure,
+    payload: &'a mut u32,
+}
+
+impl OcclusionQuery for TracedOcclusion<'_> {
+    fn occluded(&mut self, origin: Vec3, direction: Vec3, t_max: f32) -> bool {
+        *self.payload = 1;
+        unsafe {
+            self.tlas.trace_ray(
+                RayFlags::TERMINATE_ON_FIRST_HIT | RayFlags::SKIP_CLOSEST_HIT_SHADER,
+                0xff,
+                0,
+                0,
+                0,
+                origin,
+                0.0,
+                direction,
+                t_max,
+                self.payload,
+            );
+        }
+        *self.payload != 0
+    }
+}
+
+#[spirv(ray_generation(entry_point_name = "groundtruth_rgen"))]
+pub fn groundtruth_rgen(
+    #[spirv(launch_id)] id: UVec3,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] frame: &[GroundTruthFrame],
+    #[spirv(descriptor_set = 0, binding = 1)] tlas: &AccelerationStructure,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] depth: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] normals: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ao: &mut [f32],
+    #[spirv(ray_payload)] payload: &mut u32,
+) {
+    let frame = &frame[0];
+    let view = &frame.camera.view;
+    let p = id.truncate() + view.guard;
+    if !view.is_inner(p) {
+        return;
+    }
+    let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
+    let mut rays = TracedOcclusion { tlas, payload };
+    ao[view.index(p)] = ground_truth_pixel(&gbuffer, frame, p, &mut rays);
+}
+
+#[spirv(miss(entry_point_name = "groundtruth_miss"))]
+pub fn groundtruth_miss(#[spirv(incoming_ray_payload)] payload: &mut u32) {
+    *payload = 0;
+}
+
+/// Alpha test of masked triangles (only non-opaque geometry runs it). Triangle `prim`'s corner
+/// texture coordinates are `uvs[3·prim ..]`.
+#[spirv(any_hit(entry_point_name = "groundtruth_ahit"))]
+pub fn groundtruth_ahit(
+    #[spirv(incoming_ray_payload)] _payload: &mut u32,
+    #[spirv(hit_attribute)] bary: &Vec2,
+    #[spirv(primitive_id)] prim: u32,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] uvs: &[Vec2],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] materials: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 7)] mask_headers: &[AlphaMaskHeader],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_texels: &[f32],
+) {
+    let i = 3 * prim as usize;
+    let uv = uvs[i] * (1.0 - bary.x - bary.y) + uvs[i + 1] * bary.x + uvs[i + 2] * bary.y;
+    if !alpha_test_passes(mask_headers, mask_texels, materials[prim as usize], uv) {
+        unsafe { spirv_std::arch::ignore_intersection() };
+    }
+}
