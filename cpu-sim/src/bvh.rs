@@ -52,20 +52,24 @@ impl SceneBvh {
     ) -> Option<Hit> {
         let ray = Ray::new(Vec3A::from(origin), Vec3A::from(direction), t_min, t_max);
         let mut hit = RayHit::none();
-        let found = self.bvh.ray_traverse(ray, &mut hit, |ray, id| {
-            let tri = &self.triangles[id];
-            let t = tri.intersect(ray);
-            if !(t > ray.tmin && t < ray.tmax) {
-                return f32::INFINITY;
-            }
-            let p = ray.origin + ray.direction * t;
-            if accept(self.bvh.primitive_indices[id], barycentrics(p, tri)) { t } else { f32::INFINITY }
-        });
+        let found = self.bvh.ray_traverse(ray, &mut hit, |ray, id| self.accepted_t(ray, id, &accept));
         found.then(|| Hit { t: hit.t, triangle: self.bvh.primitive_indices[hit.primitive_id as usize] })
     }
 }
 
 impl SceneBvh {
+    /// Distance to BVH primitive `id` if the ray hits it inside its open interval and `accept`
+    /// takes the hit; ∞ otherwise (obvhs' intersection-callback convention).
+    fn accepted_t(&self, ray: &Ray, id: usize, accept: &impl Fn(u32, Vec2) -> bool) -> f32 {
+        let tri = &self.triangles[id];
+        let t = tri.intersect(ray);
+        if !(t > ray.tmin && t < ray.tmax) {
+            return f32::INFINITY;
+        }
+        let p = ray.origin + ray.direction * t;
+        if accept(self.bvh.primitive_indices[id], barycentrics(p, tri)) { t } else { f32::INFINITY }
+    }
+
     /// Is anything that `accept` accepts hit along the ray for `t ∈ (t_min, t_max)`? Stops at
     /// the first accepted hit (shadow / AO rays).
     pub fn occluded(
@@ -77,15 +81,7 @@ impl SceneBvh {
         accept: impl Fn(u32, Vec2) -> bool,
     ) -> bool {
         let ray = Ray::new(Vec3A::from(origin), Vec3A::from(direction), t_min, t_max);
-        !self.bvh.ray_traverse_miss(ray, |ray, id| {
-            let tri = &self.triangles[id];
-            let t = tri.intersect(ray);
-            if !(t > ray.tmin && t < ray.tmax) {
-                return f32::INFINITY;
-            }
-            let p = ray.origin + ray.direction * t;
-            if accept(self.bvh.primitive_indices[id], barycentrics(p, tri)) { t } else { f32::INFINITY }
-        })
+        !self.bvh.ray_traverse_miss(ray, |ray, id| self.accepted_t(ray, id, &accept))
     }
 }
 

@@ -346,6 +346,16 @@ impl Gpu {
         Ok(result)
     }
 
+    /// Read `count` 64-bit timestamps of `queries` (waiting for them) as milliseconds after the
+    /// first.
+    pub(crate) fn timestamps_ms(&self, queries: vk::QueryPool, count: usize) -> Result<Vec<f64>, GpuError> {
+        let mut stamps = vec![0u64; count];
+        let flags = vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT;
+        unsafe { self.device.get_query_pool_results(queries, 0, &mut stamps, flags)? };
+        let period_ms = self.timestamp_period_ns as f64 * 1e-6;
+        Ok(stamps.iter().map(|&s| s.saturating_sub(stamps[0]) as f64 * period_ms).collect())
+    }
+
     /// Create a shader module from SPIR-V bytes.
     pub(crate) fn shader_module(&self, spirv: &[u8]) -> Result<vk::ShaderModule, GpuError> {
         let words = crate::modules::words(spirv);

@@ -356,18 +356,9 @@ impl RasterGBuffer {
                 );
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TRANSFER, queries, 1);
             });
-            let mut stamps = [0u64; 2];
-            let got = submitted.and_then(|_| unsafe {
-                d.get_query_pool_results(
-                    queries,
-                    0,
-                    &mut stamps,
-                    vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
-                )
-                .map_err(GpuError::from)
-            });
+            let got = submitted.and_then(|_| gpu.timestamps_ms(queries, 2));
             unsafe { d.destroy_query_pool(queries, None) };
-            got.map(|_| stamps[1].saturating_sub(stamps[0]) as f64 * gpu.timestamp_period_ns as f64 * 1e-6)
+            got.map(|t| t[1])
         });
         gpu.free_buffer(vbuf);
         gpu.free_buffer(headers);

@@ -405,20 +405,10 @@ impl GroundTruthPipeline {
                 compute_barrier(gpu, cb, vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR);
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR, queries, 1);
             });
-            let mut stamps = [0u64; 2];
-            let got = traced.and_then(|_| {
-                d.get_query_pool_results(
-                    queries,
-                    0,
-                    &mut stamps,
-                    vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
-                )
-                .map_err(GpuError::from)
-            });
+            let got = traced.and_then(|_| gpu.timestamps_ms(queries, 2));
             d.destroy_query_pool(queries, None);
             d.destroy_descriptor_pool(pool, None);
-            got?;
-            Ok(stamps[1].saturating_sub(stamps[0]) as f64 * gpu.timestamp_period_ns as f64 * 1e-6)
+            Ok(got?[1])
         })();
         let out = result.and_then(|ms| Ok((gpu.download(&ao)?, ms)));
         gpu.free_buffer(frame_buf);

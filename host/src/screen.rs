@@ -172,21 +172,11 @@ impl ScreenPasses {
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 2);
                 Ok(())
             });
-            let mut stamps = [0u64; 3];
-            let got = recorded.and_then(|r| r).and_then(|_| {
-                d.get_query_pool_results(
-                    queries,
-                    0,
-                    &mut stamps,
-                    vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT,
-                )
-                .map_err(GpuError::from)
-            });
+            let got = recorded.and_then(|r| r).and_then(|_| gpu.timestamps_ms(queries, 3));
             d.destroy_query_pool(queries, None);
             d.destroy_descriptor_pool(pool, None);
-            got?;
-            let ms = |a: u64, b: u64| b.saturating_sub(a) as f64 * gpu.timestamp_period_ns as f64 * 1e-6;
-            Ok(vec![("vao", ms(stamps[0], stamps[1])), ("blur", ms(stamps[1], stamps[2]))])
+            let t = got?;
+            Ok(vec![("vao", t[1]), ("blur", t[2] - t[1])])
         })();
         let output = result
             .and_then(|pass_ms| Ok(ScreenOutput { ao: gpu.download(&ao)?, ao_blurred: gpu.download(&out)?, pass_ms }));
