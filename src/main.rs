@@ -178,7 +178,7 @@ fn render(args: RenderArgs) -> Result<(), String> {
                     let (gbuffer, gbuffer_ms) = renderer.gbuffer(&frame, &|n| bar.inc(n));
                     let (ao, ms) = renderer.ground_truth(&frame, &gbuffer, &gt_params, &|n| bar.inc(n));
                     let passes = vec![("gbuffer", gbuffer_ms), ("groundtruth", ms)];
-                    Render { gbuffer, ao: ao.clone(), ao_blurred: ao, passes }
+                    Render::unblurred(gbuffer, ao, passes)
                 }
             };
             bar.finish_and_clear();
@@ -194,7 +194,7 @@ fn render(args: RenderArgs) -> Result<(), String> {
                     let (ao, mut passes) =
                         renderer.ground_truth(&scene, &frame, &gbuffer, &gt_params).map_err(|e| e.to_string())?;
                     passes.insert(0, ("gbuffer", gbuffer_ms));
-                    Render { gbuffer, ao: ao.clone(), ao_blurred: ao, passes }
+                    Render::unblurred(gbuffer, ao, passes)
                 }
             };
             let messages = renderer.gpu.validation_messages();

@@ -6,7 +6,7 @@ use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
 use aokit_vulkan::{
-    GBufferVertex, Gpu, GpuError, GpuOptions, GroundTruthPipeline, RasterGBuffer, SceneAccel, ScreenPasses,
+    Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, GroundTruthPipeline, RasterGBuffer, SceneAccel, ScreenPasses,
 };
 use std::time::Instant;
 
@@ -21,6 +21,13 @@ pub struct Render {
     pub ao_blurred: Vec<f32>,
     /// `(pass, milliseconds)`: wall clock on the CPU, timestamp queries on Vulkan.
     pub passes: PassTimes,
+}
+
+impl Render {
+    /// A render without a blur pass (the ground truth): both AO fields hold `ao`.
+    pub fn unblurred(gbuffer: GBufferImage, ao: Vec<f32>, passes: PassTimes) -> Render {
+        Render { gbuffer, ao_blurred: ao.clone(), ao, passes }
+    }
 }
 
 fn ms_since(t: Instant) -> f64 {
@@ -138,30 +145,61 @@ impl VulkanRenderer {
 
     /// Rasterize the G-buffer and read it back.
     pub fn gbuffer(&self, scene: &Scene, frame: &Frame) -> Result<(GBufferImage, f64), GpuError> {
+        let ((), image, ms) = self.with_raster_gbuffer(scene, frame, |_, _| Ok(()))?;
+        Ok((image, ms))
+    }
+
+    /// Rasterize the G-buffer, run `pass` on its device buffers (depth, normals), then read it
+    /// back and free it. Returns the pass's result, the G-buffer and the raster time in ms.
+    fn with_raster_gbuffer<R>(
+        &self,
+        scene: &Scene,
+        frame: &Frame,
+        pass: impl FnOnce(&Buffer, &Buffer) -> Result<R, GpuError>,
+    ) -> Result<(R, GBufferImage, f64), GpuError> {
         let (depth, normals, ms) =
             self.raster.render(&self.gpu, &raster_vertices(scene), &scene.alpha_masks(), &frame.raster_params())?;
         let size = frame.camera.view.size();
-        let image = self.gpu.download(&depth).and_then(|d| {
-            Ok(GBufferImage { width: size.x, height: size.y, depth: d, normals: self.gpu.download(&normals)? })
-        });
+        let run = || -> Result<(R, GBufferImage), GpuError> {
+            let r = pass(&depth, &normals)?;
+            let image = GBufferImage {
+                width: size.x,
+                height: size.y,
+                depth: self.gpu.download(&depth)?,
+                normals: self.gpu.download(&normals)?,
+            };
+            Ok((r, image))
+        };
+        let out = run();
         self.gpu.free_buffer(depth);
         self.gpu.free_buffer(normals);
-        Ok((image?, ms))
+        let (r, image) = out?;
+        Ok((r, image, ms))
     }
 
     /// VAO and blur on a given G-buffer (uploaded).
     pub fn ao(&self, frame: &Frame, gbuffer: GBufferImage) -> Result<Render, GpuError> {
+        let out = self.with_uploaded_gbuffer(&gbuffer, |depth, normals| {
+            self.screen.run(&self.gpu, &frame.vao_params(), &frame.blur_params(), depth, normals)
+        })?;
+        Ok(Render { gbuffer, ao: out.ao, ao_blurred: out.ao_blurred, passes: out.pass_ms })
+    }
+
+    /// Upload a host G-buffer, run `pass` on its device buffers (depth, normals), free them.
+    fn with_uploaded_gbuffer<R>(
+        &self,
+        gbuffer: &GBufferImage,
+        pass: impl FnOnce(&Buffer, &Buffer) -> Result<R, GpuError>,
+    ) -> Result<R, GpuError> {
         let usage = ash::vk::BufferUsageFlags::STORAGE_BUFFER;
         let depth = self.gpu.upload(&gbuffer.depth, usage)?;
-        let normals = self.gpu.upload(&gbuffer.normals, usage);
-        let out = normals.and_then(|n| {
-            let r = self.screen.run(&self.gpu, &frame.vao_params(), &frame.blur_params(), &depth, &n);
-            self.gpu.free_buffer(n);
+        let out = self.gpu.upload(&gbuffer.normals, usage).and_then(|normals| {
+            let r = pass(&depth, &normals);
+            self.gpu.free_buffer(normals);
             r
         });
         self.gpu.free_buffer(depth);
-        let out = out?;
-        Ok(Render { gbuffer, ao: out.ao, ao_blurred: out.ao_blurred, passes: out.pass_ms })
+        out
     }
 
     /// Ground truth by Vulkan ray tracing on a given G-buffer (uploaded). Returns the AO
@@ -178,23 +216,13 @@ impl VulkanRenderer {
         let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
         let accel = SceneAccel::build(&self.gpu, &positions, &uvs, &scene.triangle_materials, &scene.alpha_masks());
         let result = accel.and_then(|accel| {
-            let usage = ash::vk::BufferUsageFlags::STORAGE_BUFFER;
-            let run = || -> Result<(Vec<f32>, PassTimes), GpuError> {
-                let depth = self.gpu.upload(&gbuffer.depth, usage)?;
-                let normals = self.gpu.upload(&gbuffer.normals, usage);
-                let gt = GroundTruthFrame { camera: frame.camera, params: *params };
-                let out = normals.and_then(|n| {
-                    let r = pipeline.run(&self.gpu, &accel, &gt, &depth, &n);
-                    self.gpu.free_buffer(n);
-                    r
-                });
-                self.gpu.free_buffer(depth);
-                let (ao, ms) = out?;
-                Ok((ao, vec![("accel_build", accel.build_ms), ("groundtruth", ms)]))
-            };
-            let r = run();
+            let gt = GroundTruthFrame { camera: frame.camera, params: *params };
+            let traced = self
+                .with_uploaded_gbuffer(gbuffer, |depth, normals| pipeline.run(&self.gpu, &accel, &gt, depth, normals));
+            let build_ms = accel.build_ms;
             accel.destroy(&self.gpu);
-            r
+            let (ao, ms) = traced?;
+            Ok((ao, vec![("accel_build", build_ms), ("groundtruth", ms)]))
         });
         pipeline.destroy(&self.gpu);
         result
@@ -202,25 +230,12 @@ impl VulkanRenderer {
 
     /// The whole pipeline, G-buffer kept on the device.
     pub fn render(&self, scene: &Scene, frame: &Frame) -> Result<Render, GpuError> {
-        let (depth, normals, gbuffer_ms) =
-            self.raster.render(&self.gpu, &raster_vertices(scene), &scene.alpha_masks(), &frame.raster_params())?;
-        let size = frame.camera.view.size();
-        let run = || -> Result<Render, GpuError> {
-            let out = self.screen.run(&self.gpu, &frame.vao_params(), &frame.blur_params(), &depth, &normals)?;
-            let gbuffer = GBufferImage {
-                width: size.x,
-                height: size.y,
-                depth: self.gpu.download(&depth)?,
-                normals: self.gpu.download(&normals)?,
-            };
-            let mut passes = vec![("gbuffer", gbuffer_ms)];
-            passes.extend(out.pass_ms);
-            Ok(Render { gbuffer, ao: out.ao, ao_blurred: out.ao_blurred, passes })
-        };
-        let r = run();
-        self.gpu.free_buffer(depth);
-        self.gpu.free_buffer(normals);
-        r
+        let (out, gbuffer, gbuffer_ms) = self.with_raster_gbuffer(scene, frame, |depth, normals| {
+            self.screen.run(&self.gpu, &frame.vao_params(), &frame.blur_params(), depth, normals)
+        })?;
+        let mut passes = vec![("gbuffer", gbuffer_ms)];
+        passes.extend(out.pass_ms);
+        Ok(Render { gbuffer, ao: out.ao, ao_blurred: out.ao_blurred, passes })
     }
 }
 

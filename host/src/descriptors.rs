@@ -1,20 +1,43 @@
-//! Descriptor sets of storage buffers, the only kind of descriptor the passes use.
+//! Descriptor sets: storage buffers, plus the TLAS of the ray-tracing passes. Binding `i` of a
+//! set holds the `i`-th descriptor.
 
-use crate::{Gpu, GpuError};
+use crate::{Buffer, Gpu, GpuError};
 use ash::vk;
 
+/// One descriptor to bind.
+pub(crate) enum Descriptor<'a> {
+    Storage(&'a Buffer),
+    Tlas(vk::AccelerationStructureKHR),
+}
+
+impl Descriptor<'_> {
+    fn ty(&self) -> vk::DescriptorType {
+        match self {
+            Descriptor::Storage(_) => vk::DescriptorType::STORAGE_BUFFER,
+            Descriptor::Tlas(_) => vk::DescriptorType::ACCELERATION_STRUCTURE_KHR,
+        }
+    }
+}
+
+/// `count` storage-buffer bindings.
+pub(crate) fn storage_bindings(count: u32) -> Vec<vk::DescriptorType> {
+    vec![vk::DescriptorType::STORAGE_BUFFER; count as usize]
+}
+
 impl Gpu {
-    /// Set layout with `count` storage-buffer bindings `0..count` visible to `stages`.
-    pub(crate) fn storage_set_layout(
+    /// Set layout whose binding `i` is one descriptor of `types[i]`, visible to `stages`.
+    pub(crate) fn set_layout(
         &self,
-        count: u32,
+        types: &[vk::DescriptorType],
         stages: vk::ShaderStageFlags,
     ) -> Result<vk::DescriptorSetLayout, GpuError> {
-        let bindings: Vec<_> = (0..count)
-            .map(|b| {
+        let bindings: Vec<_> = types
+            .iter()
+            .enumerate()
+            .map(|(b, &ty)| {
                 vk::DescriptorSetLayoutBinding::default()
-                    .binding(b)
-                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
+                    .binding(b as u32)
+                    .descriptor_type(ty)
                     .descriptor_count(1)
                     .stage_flags(stages)
             })
@@ -23,36 +46,59 @@ impl Gpu {
         Ok(unsafe { self.device.create_descriptor_set_layout(&info, None)? })
     }
 
-    /// A pool for `sets` sets of up to `buffers_per_set` storage buffers.
-    pub(crate) fn storage_pool(&self, sets: u32, buffers_per_set: u32) -> Result<vk::DescriptorPool, GpuError> {
-        let sizes = [vk::DescriptorPoolSize::default()
-            .ty(vk::DescriptorType::STORAGE_BUFFER)
-            .descriptor_count(sets * buffers_per_set)];
+    /// A pool for `sets` sets of the binding `types`.
+    pub(crate) fn descriptor_pool(
+        &self,
+        sets: u32,
+        types: &[vk::DescriptorType],
+    ) -> Result<vk::DescriptorPool, GpuError> {
+        let sizes: Vec<_> =
+            types.iter().map(|&ty| vk::DescriptorPoolSize::default().ty(ty).descriptor_count(sets)).collect();
         let info = vk::DescriptorPoolCreateInfo::default().max_sets(sets).pool_sizes(&sizes);
         Ok(unsafe { self.device.create_descriptor_pool(&info, None)? })
     }
 
-    /// Allocate a set from `pool` and bind `buffers` (whole range) to bindings `0..n`.
-    pub(crate) fn storage_set(
+    /// Allocate a set from `pool` and write `descriptors[i]` (buffers whole-range) to binding `i`.
+    pub(crate) fn descriptor_set(
         &self,
         pool: vk::DescriptorPool,
         layout: vk::DescriptorSetLayout,
-        buffers: &[vk::Buffer],
+        descriptors: &[Descriptor],
     ) -> Result<vk::DescriptorSet, GpuError> {
         let layouts = [layout];
         let info = vk::DescriptorSetAllocateInfo::default().descriptor_pool(pool).set_layouts(&layouts);
         let set = unsafe { self.device.allocate_descriptor_sets(&info)? }[0];
-        let infos: Vec<_> =
-            buffers.iter().map(|&b| [vk::DescriptorBufferInfo::default().buffer(b).range(vk::WHOLE_SIZE)]).collect();
-        let writes: Vec<_> = infos
+        let buffer_infos: Vec<[vk::DescriptorBufferInfo; 1]> = descriptors
             .iter()
+            .map(|d| match d {
+                Descriptor::Storage(b) => [vk::DescriptorBufferInfo::default().buffer(b.raw).range(vk::WHOLE_SIZE)],
+                Descriptor::Tlas(_) => [vk::DescriptorBufferInfo::default()],
+            })
+            .collect();
+        let tlases: Vec<[vk::AccelerationStructureKHR; 1]> = descriptors
+            .iter()
+            .map(|d| match d {
+                Descriptor::Tlas(t) => [*t],
+                Descriptor::Storage(_) => [vk::AccelerationStructureKHR::null()],
+            })
+            .collect();
+        let mut tlas_writes: Vec<_> = tlases
+            .iter()
+            .map(|t| vk::WriteDescriptorSetAccelerationStructureKHR::default().acceleration_structures(t))
+            .collect();
+        let writes: Vec<_> = descriptors
+            .iter()
+            .zip(&buffer_infos)
+            .zip(&mut tlas_writes)
             .enumerate()
-            .map(|(i, info)| {
-                vk::WriteDescriptorSet::default()
-                    .dst_set(set)
-                    .dst_binding(i as u32)
-                    .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                    .buffer_info(info)
+            .map(|(i, ((d, buffer), tlas))| {
+                let write =
+                    vk::WriteDescriptorSet::default().dst_set(set).dst_binding(i as u32).descriptor_type(d.ty());
+                match d {
+                    Descriptor::Storage(_) => write.buffer_info(buffer),
+                    // `push_next` does not set the count (lavapipe-rt.md).
+                    Descriptor::Tlas(_) => write.descriptor_count(1).push_next(tlas),
+                }
             })
             .collect();
         unsafe { self.device.update_descriptor_sets(&writes, &[]) };

@@ -1,6 +1,7 @@
 //! Raster G-buffer pass with dynamic rendering: linear depth (R32_SFLOAT) and encoded face
 //! normal (R32_UINT) over the full target, copied into storage buffers for the compute passes.
 
+use crate::descriptors::{Descriptor, storage_bindings};
 use crate::{Buffer, Gpu, GpuError, modules};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_shaders::gbuffer::RasterParams;
@@ -123,7 +124,7 @@ impl RasterGBuffer {
                 .stage_flags(vk::ShaderStageFlags::VERTEX)
                 .size(size_of::<RasterParams>() as u32)];
             // Fragment-stage storage buffers: alpha-mask headers and texels.
-            let set_layout = gpu.storage_set_layout(2, vk::ShaderStageFlags::FRAGMENT)?;
+            let set_layout = gpu.set_layout(&storage_bindings(2), vk::ShaderStageFlags::FRAGMENT)?;
             let set_layouts = [set_layout];
             let layout = d.create_pipeline_layout(
                 &vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts).push_constant_ranges(&push),
@@ -231,8 +232,9 @@ impl RasterGBuffer {
         let headers = gpu.upload(&masks.0, storage_in)?;
         let texels = gpu.upload(&masks.1, storage_in)?;
         let d = &gpu.device;
-        let pool = gpu.storage_pool(1, 2)?;
-        let set = gpu.storage_set(pool, self.set_layout, &[headers.raw, texels.raw])?;
+        let pool = gpu.descriptor_pool(1, &storage_bindings(2))?;
+        let set =
+            gpu.descriptor_set(pool, self.set_layout, &[Descriptor::Storage(&headers), Descriptor::Storage(&texels)])?;
         let extent = vk::Extent2D { width: size.x, height: size.y };
         let pixels = (size.x * size.y) as u64;
         let vbuf = gpu.upload(vertices, vk::BufferUsageFlags::VERTEX_BUFFER)?;

@@ -2,6 +2,7 @@
 //! ground-truth ray-tracing pipeline (raygen + miss + any-hit for alpha-masked geometry) with
 //! its shader binding table (layout per `shared/notes/lavapipe-rt.md`).
 
+use crate::descriptors::{Descriptor, storage_bindings};
 use crate::screen::compute_barrier;
 use crate::{Buffer, Gpu, GpuError, modules};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
@@ -208,7 +209,11 @@ impl SceneAccel {
 
 /// Bindings of the ground-truth modules: 0 frame, 1 TLAS, 2 depth, 3 normals, 4 AO,
 /// 5 uvs, 6 materials, 7 mask headers, 8 mask texels.
-const BINDINGS: u32 = 9;
+fn binding_types() -> Vec<vk::DescriptorType> {
+    let mut types = storage_bindings(9);
+    types[1] = vk::DescriptorType::ACCELERATION_STRUCTURE_KHR;
+    types
+}
 
 /// The ground-truth ray-tracing pipeline and its shader binding table.
 pub struct GroundTruthPipeline {
@@ -224,25 +229,8 @@ impl GroundTruthPipeline {
         let rt = gpu.ray_tracing()?;
         let d = &gpu.device;
         let stages_all = vk::ShaderStageFlags::RAYGEN_KHR | vk::ShaderStageFlags::ANY_HIT_KHR;
-        let bindings: Vec<_> = (0..BINDINGS)
-            .map(|b| {
-                let ty = if b == 1 {
-                    vk::DescriptorType::ACCELERATION_STRUCTURE_KHR
-                } else {
-                    vk::DescriptorType::STORAGE_BUFFER
-                };
-                vk::DescriptorSetLayoutBinding::default()
-                    .binding(b)
-                    .descriptor_type(ty)
-                    .descriptor_count(1)
-                    .stage_flags(stages_all)
-            })
-            .collect();
         unsafe {
-            let set_layout = d.create_descriptor_set_layout(
-                &vk::DescriptorSetLayoutCreateInfo::default().bindings(&bindings),
-                None,
-            )?;
+            let set_layout = gpu.set_layout(&binding_types(), stages_all)?;
             let set_layouts = [set_layout];
             let layout =
                 d.create_pipeline_layout(&vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts), None)?;
@@ -341,56 +329,19 @@ impl GroundTruthPipeline {
         let ao = gpu.upload(&vec![1.0f32; pixels], storage)?;
         let d = &gpu.device;
         let result = (|| unsafe {
-            let sizes = [
-                vk::DescriptorPoolSize::default().ty(vk::DescriptorType::STORAGE_BUFFER).descriptor_count(BINDINGS - 1),
-                vk::DescriptorPoolSize::default()
-                    .ty(vk::DescriptorType::ACCELERATION_STRUCTURE_KHR)
-                    .descriptor_count(1),
+            let pool = gpu.descriptor_pool(1, &binding_types())?;
+            let descriptors = [
+                Descriptor::Storage(&frame_buf),
+                Descriptor::Tlas(scene.tlas.0),
+                Descriptor::Storage(depth),
+                Descriptor::Storage(normals),
+                Descriptor::Storage(&ao),
+                Descriptor::Storage(&scene.uvs),
+                Descriptor::Storage(&scene.materials),
+                Descriptor::Storage(&scene.mask_headers),
+                Descriptor::Storage(&scene.mask_texels),
             ];
-            let pool = d.create_descriptor_pool(
-                &vk::DescriptorPoolCreateInfo::default().max_sets(1).pool_sizes(&sizes),
-                None,
-            )?;
-            let set_layouts = [self.set_layout];
-            let set = d.allocate_descriptor_sets(
-                &vk::DescriptorSetAllocateInfo::default().descriptor_pool(pool).set_layouts(&set_layouts),
-            )?[0];
-            let buffers = [
-                (0, &frame_buf),
-                (2, depth),
-                (3, normals),
-                (4, &ao),
-                (5, &scene.uvs),
-                (6, &scene.materials),
-                (7, &scene.mask_headers),
-                (8, &scene.mask_texels),
-            ];
-            let infos: Vec<_> = buffers
-                .iter()
-                .map(|(_, b)| [vk::DescriptorBufferInfo::default().buffer(b.raw).range(vk::WHOLE_SIZE)])
-                .collect();
-            let mut writes: Vec<_> = buffers
-                .iter()
-                .zip(&infos)
-                .map(|((binding, _), info)| {
-                    vk::WriteDescriptorSet::default()
-                        .dst_set(set)
-                        .dst_binding(*binding)
-                        .descriptor_type(vk::DescriptorType::STORAGE_BUFFER)
-                        .buffer_info(info)
-                })
-                .collect();
-            let tlas = [scene.tlas.0];
-            let mut as_write = vk::WriteDescriptorSetAccelerationStructureKHR::default().acceleration_structures(&tlas);
-            writes.push(
-                vk::WriteDescriptorSet::default()
-                    .dst_set(set)
-                    .dst_binding(1)
-                    .descriptor_type(vk::DescriptorType::ACCELERATION_STRUCTURE_KHR)
-                    .descriptor_count(1)
-                    .push_next(&mut as_write),
-            );
-            d.update_descriptor_sets(&writes, &[]);
+            let set = gpu.descriptor_set(pool, self.set_layout, &descriptors)?;
             let queries = d.create_query_pool(
                 &vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(2),
                 None,

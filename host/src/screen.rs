@@ -1,5 +1,6 @@
 //! Screen-space compute passes: VAO then the two blur directions, timed with timestamp queries.
 
+use crate::descriptors::{Descriptor, storage_bindings};
 use crate::{Buffer, Gpu, GpuError, modules};
 use aokit_shaders::blur::BlurParams;
 use aokit_shaders::glam::uvec2;
@@ -24,7 +25,7 @@ impl ComputeKernel {
         push_size: u32,
     ) -> Result<Self, GpuError> {
         let d = &gpu.device;
-        let set_layout = gpu.storage_set_layout(bindings, vk::ShaderStageFlags::COMPUTE)?;
+        let set_layout = gpu.set_layout(&storage_bindings(bindings), vk::ShaderStageFlags::COMPUTE)?;
         unsafe {
             let push = [vk::PushConstantRange::default().stage_flags(vk::ShaderStageFlags::COMPUTE).size(push_size)];
             let set_layouts = [set_layout];
@@ -60,8 +61,8 @@ impl ComputeKernel {
     ) -> Result<(), GpuError> {
         assert_eq!(buffers.len() as u32, self.bindings, "binding count");
         let d = &gpu.device;
-        let raw: Vec<vk::Buffer> = buffers.iter().map(|b| b.raw).collect();
-        let set = gpu.storage_set(pool, self.set_layout, &raw)?;
+        let descriptors: Vec<_> = buffers.iter().map(|b| Descriptor::Storage(b)).collect();
+        let set = gpu.descriptor_set(pool, self.set_layout, &descriptors)?;
         unsafe {
             d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::COMPUTE, self.pipeline);
             d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::COMPUTE, self.layout, 0, &[set], &[]);
@@ -148,11 +149,8 @@ impl ScreenPasses {
         let groups = [inner.x.div_ceil(GROUP), inner.y.div_ceil(GROUP), 1];
         let d = &gpu.device;
         let result = (|| unsafe {
-            let sizes = [vk::DescriptorPoolSize::default().ty(vk::DescriptorType::STORAGE_BUFFER).descriptor_count(9)];
-            let pool = d.create_descriptor_pool(
-                &vk::DescriptorPoolCreateInfo::default().max_sets(3).pool_sizes(&sizes),
-                None,
-            )?;
+            // Three dispatches of three storage buffers each.
+            let pool = gpu.descriptor_pool(3, &storage_bindings(3))?;
             let queries = d.create_query_pool(
                 &vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(3),
                 None,
