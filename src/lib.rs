@@ -5,4 +5,6 @@ pub mod frame;
 pub mod metrics;
 pub mod output;
 pub mod render;
+pub mod report;
 pub mod scene;
+pub mod technique;

@@ -2,11 +2,13 @@
 
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::output::{crop_inner, write_exr, write_png};
-use aokit::render::{CpuRenderer, Render, VulkanRenderer};
+use aokit::render::{CpuRenderer, Renderer, VulkanRenderer};
+use aokit::report::{BenchResult, CompareReport};
+use aokit::technique::{SdOptions, Technique};
+use aokit_shaders::common::tables::JitterTable;
 use aokit::scene::Scene;
 use aokit::scene::builtin::{self, BuiltinScene};
 use aokit_shaders::glam::Vec3;
-use aokit_shaders::groundtruth::GroundTruthParams;
 use aokit_vulkan::GpuOptions;
 use clap::{Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -24,6 +26,11 @@ struct Cli {
 enum Command {
     /// Render an AO image of a scene.
     Render(RenderArgs),
+    /// Render several techniques on one G-buffer and compare them with a reference: MSE, PSNR,
+    /// SSIM, rays, time per pass; optional JSON and HTML report.
+    Compare(CompareArgs),
+    /// Time a technique over K frames after a warm-up: median/min/max per pass, Mpixel/s.
+    Bench(BenchArgs),
     /// Print the Vulkan device aokit would use and its ray-tracing extensions.
     Info {
         /// Enable the Khronos validation layer.
@@ -41,12 +48,18 @@ enum Backend {
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
-enum Technique {
-    /// Volumetric AO on a single depth layer (spec svao-raysd §4–§5) + bilateral blur.
-    Vao,
-    /// World-space ray-traced AO, cosine-weighted, `--spp` rays per pixel (the reference).
-    #[value(name = "groundtruth")]
-    GroundTruth,
+enum SdRes {
+    Full,
+    Half,
+    Quarter,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+enum Jitter {
+    /// The reference's HEAD table (spec §7.2).
+    Scrambled,
+    /// The paper-era stratum-centre table.
+    Paper,
 }
 
 fn parse_vec3(s: &str) -> Result<Vec3, String> {
@@ -58,14 +71,13 @@ fn parse_vec3(s: &str) -> Result<Vec3, String> {
     }
 }
 
+/// Scene, camera and AO parameters shared by every command.
 #[derive(clap::Args)]
 #[command(allow_negative_numbers = true)]
-struct RenderArgs {
+struct FrameArgs {
     /// Built-in scene name (see `aokit scenes`) or a path to .obj/.gltf/.glb/.ply[.gz].
     #[arg(long)]
     scene: String,
-    #[arg(long, value_enum, default_value = "vao")]
-    technique: Technique,
     #[arg(long, value_enum, default_value = "cpu")]
     backend: Backend,
     /// Output width in pixels (the guard band is added around it).
@@ -98,12 +110,86 @@ struct RenderArgs {
     /// Halo thickness τ (spec §4.3).
     #[arg(long, default_value_t = 0.0)]
     thickness: f32,
-    /// Rays per pixel of `--technique groundtruth`.
+    /// Enable the Khronos validation layer (Vulkan back-end); validation messages fail the run.
+    #[arg(long)]
+    validation: bool,
+}
+
+/// Options of the techniques (each applies to the techniques that have it).
+#[derive(clap::Args)]
+struct TechniqueArgs {
+    /// Ray-SD map resolution.
+    #[arg(long, value_enum, default_value = "quarter")]
+    sd_res: SdRes,
+    /// Ray-SD layers N (1, 2, 4, 8).
+    #[arg(long, default_value_t = 4)]
+    sd_layers: u32,
+    /// Reservoir MAX_COUNT (raised to N when smaller).
+    #[arg(long, default_value_t = 8)]
+    max_count: u32,
+    /// Radius cutoff in pixels: closer samples are never refined (raysd, raysvao).
+    #[arg(long, default_value_t = 6.0)]
+    cutoff: f32,
+    /// Trace every SD texel over its full range (no ray-interval optimisation).
+    #[arg(long)]
+    no_interval: bool,
+    /// SD rays through texel centres.
+    #[arg(long)]
+    no_jitter: bool,
+    /// SD jitter table.
+    #[arg(long, value_enum, default_value = "scrambled")]
+    jitter: Jitter,
+    /// SD guard band in full-resolution pixels.
+    #[arg(long, default_value_t = 512)]
+    sd_guard: u32,
+    /// Rays per pixel of the ground truth.
     #[arg(long, default_value_t = 512)]
     spp: u32,
     /// Ground truth with uniform instead of cosine-weighted hemisphere sampling.
     #[arg(long)]
     uniform: bool,
+}
+
+impl TechniqueArgs {
+    fn sd_options(&self) -> Result<SdOptions, String> {
+        let o = SdOptions {
+            divisor: match self.sd_res {
+                SdRes::Full => 1,
+                SdRes::Half => 2,
+                SdRes::Quarter => 4,
+            },
+            layers: self.sd_layers,
+            max_count: self.max_count,
+            cutoff: self.cutoff,
+            interval: !self.no_interval,
+            jitter: match (self.no_jitter, self.jitter) {
+                (true, _) => JitterTable::None,
+                (false, Jitter::Scrambled) => JitterTable::Scrambled,
+                (false, Jitter::Paper) => JitterTable::Paper,
+            },
+            guard: self.sd_guard,
+        };
+        o.validate()?;
+        if self.spp == 0 {
+            return Err("--spp must be at least 1".into());
+        }
+        Ok(o)
+    }
+
+    fn technique(&self, name: &str) -> Result<Technique, String> {
+        Technique::parse(name, self.sd_options()?, self.spp, self.uniform)
+    }
+}
+
+#[derive(clap::Args)]
+struct RenderArgs {
+    #[command(flatten)]
+    frame: FrameArgs,
+    #[command(flatten)]
+    options: TechniqueArgs,
+    /// vao, raysd, raysvao or groundtruth.
+    #[arg(long, default_value = "vao")]
+    technique: String,
     /// Skip the bilateral blur.
     #[arg(long)]
     no_blur: bool,
@@ -113,9 +199,49 @@ struct RenderArgs {
     /// Also write the raw float AO as OpenEXR.
     #[arg(long)]
     exr: Option<PathBuf>,
-    /// Enable the Khronos validation layer (Vulkan back-end); validation messages fail the run.
+}
+
+#[derive(clap::Args)]
+struct CompareArgs {
+    #[command(flatten)]
+    frame: FrameArgs,
+    #[command(flatten)]
+    options: TechniqueArgs,
+    /// Comma-separated techniques to compare.
+    #[arg(long, default_value = "vao,raysd,raysvao")]
+    techniques: String,
+    /// The reference technique (raysvao or groundtruth).
+    #[arg(long, default_value = "raysvao")]
+    reference: String,
+    /// Write the machine-readable report here.
     #[arg(long)]
-    validation: bool,
+    json: Option<PathBuf>,
+    /// Write a self-contained HTML page with the images into this folder.
+    #[arg(long)]
+    html: Option<PathBuf>,
+    /// Folder for the PNGs (AO, signed differences, refinement heatmap, ray intervals, SD
+    /// layers); default: the --html folder, else `compare-out`.
+    #[arg(long)]
+    images: Option<PathBuf>,
+}
+
+#[derive(clap::Args)]
+struct BenchArgs {
+    #[command(flatten)]
+    frame: FrameArgs,
+    #[command(flatten)]
+    options: TechniqueArgs,
+    #[arg(long, default_value = "vao")]
+    technique: String,
+    /// Timed frames after the warm-up.
+    #[arg(long, default_value_t = 10)]
+    frames: u32,
+    /// Untimed warm-up frames.
+    #[arg(long, default_value_t = 2)]
+    warmup: u32,
+    /// Write the results as JSON here.
+    #[arg(long)]
+    json: Option<PathBuf>,
 }
 
 fn load_scene(spec: &str) -> Result<(Scene, Option<&'static BuiltinScene>), String> {
@@ -130,7 +256,8 @@ fn load_scene(spec: &str) -> Result<(Scene, Option<&'static BuiltinScene>), Stri
     Ok((Scene::load(path).map_err(|e| e.to_string())?, None))
 }
 
-fn render(args: RenderArgs) -> Result<(), String> {
+/// Load the scene and resolve the camera and AO parameters.
+fn resolve(args: &FrameArgs) -> Result<(Scene, Frame), String> {
     let (scene, builtin) = load_scene(&args.scene)?;
     let fov_default = builtin.map_or(60.0, |b| b.cameras[0].fov_deg);
     let camera = match (&args.eye, &args.target, args.camera.as_deref()) {
@@ -151,65 +278,54 @@ fn render(args: RenderArgs) -> Result<(), String> {
         thickness: args.thickness,
     };
     let frame = Frame::resolve(&scene, builtin, &request).map_err(|e| e.to_string())?;
-    if args.technique == Technique::GroundTruth && args.spp == 0 {
-        return Err("--spp must be at least 1".into());
+    Ok((scene, frame))
+}
+
+/// The back-end the user picked.
+fn renderer(args: &FrameArgs, scene: &Scene) -> Result<Renderer, String> {
+    match args.backend {
+        Backend::Cpu => Ok(Renderer::Cpu(CpuRenderer::new(scene))),
+        Backend::Vulkan => Ok(Renderer::Vulkan(
+            VulkanRenderer::new(&GpuOptions { validation: args.validation }).map_err(|e| e.to_string())?,
+        )),
     }
-    let gt_params = GroundTruthParams {
-        radius: frame.radius,
-        exponent: frame.exponent,
-        samples: args.spp,
-        uniform: args.uniform as u32,
-    };
-    let (result, device) = match args.backend {
-        Backend::Cpu => {
-            let renderer = CpuRenderer::new(&scene);
-            let rows = frame.camera.view.size().y as u64 + frame.inner.y as u64;
-            let bar = ProgressBar::new(rows).with_style(
-                ProgressStyle::with_template("{spinner} {msg} [{bar:40}] {pos}/{len} rows ({eta})")
-                    .expect("valid template"),
-            );
-            let r = match args.technique {
-                Technique::Vao => {
-                    bar.set_message("CPU G-buffer + VAO");
-                    renderer.render(&frame, &|n| bar.inc(n))
-                }
-                Technique::GroundTruth => {
-                    bar.set_message(format!("CPU G-buffer + ground truth, {} spp", args.spp));
-                    let (gbuffer, gbuffer_ms) = renderer.gbuffer(&frame, &|n| bar.inc(n));
-                    let (ao, ms) = renderer.ground_truth(&frame, &gbuffer, &gt_params, &|n| bar.inc(n));
-                    let passes = vec![("gbuffer", gbuffer_ms), ("groundtruth", ms)];
-                    Render::unblurred(gbuffer, ao, passes)
-                }
-            };
-            bar.finish_and_clear();
-            (r, "cpu".to_string())
-        }
-        Backend::Vulkan => {
-            let renderer =
-                VulkanRenderer::new(&GpuOptions { validation: args.validation }).map_err(|e| e.to_string())?;
-            let r = match args.technique {
-                Technique::Vao => renderer.render(&scene, &frame).map_err(|e| e.to_string())?,
-                Technique::GroundTruth => {
-                    let (gbuffer, gbuffer_ms) = renderer.gbuffer(&scene, &frame).map_err(|e| e.to_string())?;
-                    let (ao, mut passes) =
-                        renderer.ground_truth(&scene, &frame, &gbuffer, &gt_params).map_err(|e| e.to_string())?;
-                    passes.insert(0, ("gbuffer", gbuffer_ms));
-                    Render::unblurred(gbuffer, ao, passes)
-                }
-            };
-            let messages = renderer.gpu.validation_messages();
-            if !messages.is_empty() {
-                return Err(format!(
-                    "validation layer reported {} message(s):\n{}",
-                    messages.len(),
-                    messages.join("\n")
-                ));
-            }
-            (r, renderer.gpu.info().name.clone())
-        }
-    };
+}
+
+/// Fail when the validation layer said anything.
+fn check_validation(renderer: &Renderer) -> Result<(), String> {
+    let messages = renderer.validation_messages();
+    if messages.is_empty() {
+        return Ok(());
+    }
+    Err(format!("validation layer reported {} message(s):\n{}", messages.len(), messages.join("\n")))
+}
+
+/// A progress bar over G-buffer and pass rows (CPU back-end).
+fn progress_bar(message: String, rows: u64) -> ProgressBar {
+    let bar = ProgressBar::new(rows).with_style(
+        ProgressStyle::with_template("{spinner} {msg} [{bar:40}] {pos}/{len} rows ({eta})").expect("valid template"),
+    );
+    bar.set_message(message);
+    bar
+}
+
+fn passes_json(passes: &[(&str, f64)]) -> serde_json::Value {
+    passes.iter().map(|(n, ms)| serde_json::json!({"name": n, "ms": ms})).collect::<Vec<_>>().into()
+}
+
+fn render(args: RenderArgs) -> Result<(), String> {
+    let technique = args.options.technique(&args.technique)?;
+    let (scene, frame) = resolve(&args.frame)?;
+    let renderer = renderer(&args.frame, &scene)?;
+    let rows = 2 * frame.camera.view.size().y as u64;
+    let bar = progress_bar(format!("{} G-buffer + {}", renderer.backend_name(), technique.name()), rows);
+    let progress = |n| bar.inc(n);
+    let (gbuffer, gbuffer_ms) = renderer.gbuffer(&scene, &frame, &progress).map_err(|e| e.to_string())?;
+    let run = renderer.run(&scene, &frame, &gbuffer, &technique, &progress).map_err(|e| e.to_string())?;
+    bar.finish_and_clear();
+    check_validation(&renderer)?;
     let view = frame.camera.view;
-    let full = if args.no_blur { &result.ao } else { &result.ao_blurred };
+    let full = if args.no_blur { &run.ao } else { &run.ao_final };
     let ao = crop_inner(&view, full);
     write_png(&args.out, frame.inner.x, frame.inner.y, &ao).map_err(|e| format!("{}: {e}", args.out.display()))?;
     if let Some(exr) = &args.exr {
@@ -218,17 +334,102 @@ fn render(args: RenderArgs) -> Result<(), String> {
     let mut line = frame.describe();
     line["scene"] = scene.name.clone().into();
     line["triangles"] = scene.triangles.len().into();
-    line["technique"] = args.technique.to_possible_value().expect("named").get_name().into();
-    if args.technique == Technique::GroundTruth {
-        line["spp"] = args.spp.into();
-    }
-    line["backend"] = format!("{:?}", args.backend).to_lowercase().into();
-    line["device"] = device.into();
-    line["passes_ms"] =
-        result.passes.iter().map(|(n, ms)| serde_json::json!({"name": n, "ms": ms})).collect::<Vec<_>>().into();
+    line["technique"] = technique.name().into();
+    line["options"] = technique.describe();
+    line["backend"] = renderer.backend_name().into();
+    line["device"] = renderer.device_name().into();
+    let mut passes = vec![("gbuffer", gbuffer_ms)];
+    passes.extend(run.passes.iter().copied());
+    line["passes_ms"] = passes_json(&passes);
+    line["rays"] = run.rays.into();
+    line["refined_samples"] = run.refined_samples.into();
     line["mean_ao"] = (ao.iter().map(|&a| a as f64).sum::<f64>() / ao.len() as f64).into();
     line["out"] = args.out.display().to_string().into();
     println!("{line}");
+    Ok(())
+}
+
+fn compare(args: CompareArgs) -> Result<(), String> {
+    let names: Vec<&str> = args.techniques.split(',').map(str::trim).filter(|s| !s.is_empty()).collect();
+    if names.is_empty() {
+        return Err("--techniques is empty".into());
+    }
+    let techniques = names.iter().map(|n| args.options.technique(n)).collect::<Result<Vec<_>, _>>()?;
+    let reference = args.options.technique(&args.reference)?;
+    let (scene, frame) = resolve(&args.frame)?;
+    let renderer = renderer(&args.frame, &scene)?;
+    let rows = frame.camera.view.size().y as u64 * (2 + techniques.len() as u64);
+    let bar = progress_bar(format!("{}: compare on {}", renderer.backend_name(), scene.name), rows);
+    let progress = |n| bar.inc(n);
+    let (gbuffer, gbuffer_ms) = renderer.gbuffer(&scene, &frame, &progress).map_err(|e| e.to_string())?;
+    let reference_run = renderer.run(&scene, &frame, &gbuffer, &reference, &progress).map_err(|e| e.to_string())?;
+    let mut runs = Vec::new();
+    for t in &techniques {
+        runs.push((*t, renderer.run(&scene, &frame, &gbuffer, t, &progress).map_err(|e| e.to_string())?));
+    }
+    bar.finish_and_clear();
+    check_validation(&renderer)?;
+    let report = CompareReport::new(
+        &scene.name,
+        renderer.backend_name(),
+        &renderer.device_name(),
+        &frame,
+        gbuffer_ms,
+        (reference, &reference_run),
+        &runs,
+    );
+    println!("{}", report.table());
+    if let Some(path) = &args.json {
+        std::fs::write(path, serde_json::to_string_pretty(&report.json()).expect("serializable"))
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+    }
+    let images = args.images.clone().or(args.html.clone()).unwrap_or_else(|| PathBuf::from("compare-out"));
+    report.write_images(&images, &frame, &gbuffer).map_err(|e| format!("{}: {e}", images.display()))?;
+    if let Some(dir) = &args.html {
+        let page = report.write_html(dir, &images).map_err(|e| format!("{}: {e}", dir.display()))?;
+        eprintln!("wrote {}", page.display());
+    }
+    Ok(())
+}
+
+fn bench(args: BenchArgs) -> Result<(), String> {
+    if args.frames == 0 {
+        return Err("--frames must be at least 1".into());
+    }
+    let technique = args.options.technique(&args.technique)?;
+    let (scene, frame) = resolve(&args.frame)?;
+    let renderer = renderer(&args.frame, &scene)?;
+    let total = args.warmup + args.frames;
+    let bar = ProgressBar::new(total as u64)
+        .with_style(ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} frames").expect("valid template"));
+    bar.set_message(format!("bench {} on {}", technique.name(), renderer.backend_name()));
+    let mut frames = Vec::new();
+    for k in 0..total {
+        let (gbuffer, gbuffer_ms) = renderer.gbuffer(&scene, &frame, &aokit_cpu::no_progress).map_err(|e| e.to_string())?;
+        let run = renderer.run(&scene, &frame, &gbuffer, &technique, &aokit_cpu::no_progress).map_err(|e| e.to_string())?;
+        if k >= args.warmup {
+            let mut passes = vec![("gbuffer", gbuffer_ms)];
+            passes.extend(run.passes.iter().copied());
+            frames.push(passes);
+        }
+        bar.inc(1);
+    }
+    bar.finish_and_clear();
+    check_validation(&renderer)?;
+    let result = BenchResult::new(&frames, frame.inner);
+    let json = serde_json::json!({
+        "scene": scene.name, "backend": renderer.backend_name(), "device": renderer.device_name(),
+        "technique": technique.name(), "options": technique.describe(),
+        "width": frame.inner.x, "height": frame.inner.y, "target": [frame.camera.view.res.x, frame.camera.view.res.y],
+        "warmup": args.warmup, "frames": args.frames, "threads": rayon::current_num_threads(),
+        "passes": result.json(),
+    });
+    println!("{}", result.table());
+    println!("{json}");
+    if let Some(path) = &args.json {
+        std::fs::write(path, serde_json::to_string_pretty(&json).expect("serializable"))
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+    }
     Ok(())
 }
 
@@ -236,6 +437,8 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Render(args) => render(args),
+        Command::Compare(args) => compare(args),
+        Command::Bench(args) => bench(args),
         Command::Info { validation } => {
             aokit_vulkan::Gpu::new(&GpuOptions { validation }).map_err(|e| e.to_string()).map(|gpu| {
                 let info = gpu.info();

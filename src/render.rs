@@ -1,12 +1,15 @@
 //! The VAO pipeline on either back-end: G-buffer → VAO → bilateral blur.
 
 use crate::frame::Frame;
+use crate::technique::{SdOptions, SvaoDebug, Technique, TechniqueRun};
+use aokit_cpu::svao as svao_cpu;
+use aokit_shaders::svao::{Secondary, SvaoFrame};
 use crate::scene::Scene;
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
 use aokit_vulkan::{
-    Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, GroundTruthPipeline, RasterGBuffer, SceneAccel, ScreenPasses,
+    Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, GroundTruthPipeline, RasterGBuffer, SceneAccel, ScreenPasses, SvaoPipelines,
 };
 use std::time::Instant;
 
@@ -128,11 +131,15 @@ pub fn raster_vertices(scene: &Scene) -> Vec<GBufferVertex> {
     out
 }
 
-/// The Vulkan back-end: raster G-buffer, compute VAO and blur.
+/// The Vulkan back-end: raster G-buffer, compute VAO and blur; ray-tracing pipelines and the
+/// scene's acceleration structure are made on first use and kept.
 pub struct VulkanRenderer {
     pub gpu: Gpu,
     raster: RasterGBuffer,
     screen: ScreenPasses,
+    svao: std::cell::OnceCell<SvaoPipelines>,
+    /// `(scene key, acceleration structure)` of the last scene traced.
+    accel: std::cell::RefCell<Option<(usize, SceneAccel)>>,
 }
 
 impl VulkanRenderer {
@@ -140,7 +147,7 @@ impl VulkanRenderer {
         let gpu = Gpu::new(options)?;
         let raster = RasterGBuffer::new(&gpu)?;
         let screen = ScreenPasses::new(&gpu)?;
-        Ok(VulkanRenderer { gpu, raster, screen })
+        Ok(VulkanRenderer { gpu, raster, screen, svao: Default::default(), accel: Default::default() })
     }
 
     /// Rasterize the G-buffer and read it back.
@@ -241,7 +248,246 @@ impl VulkanRenderer {
 
 impl Drop for VulkanRenderer {
     fn drop(&mut self) {
+        if let Some(p) = self.svao.take() {
+            p.destroy(&self.gpu);
+        }
+        if let Some((_, a)) = self.accel.take() {
+            a.destroy(&self.gpu);
+        }
         self.raster.destroy(&self.gpu);
         self.screen.destroy(&self.gpu);
+    }
+}
+
+impl CpuRenderer {
+    /// Run `technique` on a given G-buffer (spec svao-raysd §3 pipeline for the VAO family,
+    /// blur included where the technique blurs).
+    pub fn run(&self, frame: &Frame, gbuffer: &GBufferImage, technique: &Technique, progress: Progress) -> TechniqueRun {
+        let (depth, normals) = (&gbuffer.depth[..], &gbuffer.normals[..]);
+        let mut passes: PassTimes = Vec::new();
+        let mut rays = 0;
+        let mut refined_samples = 0;
+        let mut debug = None;
+        let ao = match technique {
+            Technique::Vao => {
+                let t = Instant::now();
+                let ao = aokit_cpu::run_vao(&frame.vao_params(), depth, normals, progress);
+                passes.push(("vao", ms_since(t)));
+                ao
+            }
+            Technique::GroundTruth { spp, uniform } => {
+                let (ao, ms) = self.ground_truth(frame, gbuffer, &frame.ground_truth_params(*spp, *uniform), progress);
+                passes.push(("groundtruth", ms));
+                rays = frame.inner.x as u64 * frame.inner.y as u64 * *spp as u64;
+                ao
+            }
+            Technique::RaySd(sd) => {
+                let svao = frame.svao_frame(Secondary::StochasticDepth, sd);
+                let t = Instant::now();
+                let pass1 = svao_cpu::run_pass1(&svao.params, depth, normals, progress);
+                passes.push(("ao_pass1", ms_since(t)));
+                let t = Instant::now();
+                let map = svao_cpu::run_sd_map(
+                    &self.bvh,
+                    &self.surfaces(),
+                    &svao,
+                    depth,
+                    normals,
+                    &pass1,
+                    svao_cpu::HitOrder::Traversal,
+                );
+                passes.push(("sd_map", ms_since(t)));
+                let t = Instant::now();
+                let ao = svao_cpu::run_pass2_sd(&svao.params, depth, normals, &pass1, &map);
+                passes.push(("ao_pass2", ms_since(t)));
+                rays = map.rays;
+                refined_samples = pass1.refined_samples();
+                debug = Some(SvaoDebug {
+                    mask: pass1.mask,
+                    ray_min: pass1.ray_min,
+                    ray_max: pass1.ray_max,
+                    sd_size: svao.params.sd_size(),
+                    sd_map: map.layers,
+                    layers: svao.params.sd_layers,
+                });
+                ao
+            }
+            Technique::RaySvao { cutoff } => {
+                let svao = frame.svao_frame(Secondary::Raytraced, &SdOptions { cutoff: *cutoff, ..Default::default() });
+                let t = Instant::now();
+                let pass1 = svao_cpu::run_pass1(&svao.params, depth, normals, progress);
+                passes.push(("ao_pass1", ms_since(t)));
+                let t = Instant::now();
+                let (ao, traced) = svao_cpu::run_raysvao_pass2(
+                    &self.bvh,
+                    &self.surfaces(),
+                    &svao,
+                    depth,
+                    normals,
+                    &pass1,
+                    &aokit_cpu::no_progress,
+                );
+                passes.push(("ao_pass2_rays", ms_since(t)));
+                rays = traced;
+                refined_samples = pass1.refined_samples();
+                debug = Some(SvaoDebug { mask: pass1.mask, ..Default::default() });
+                ao
+            }
+        };
+        let ao_final = if technique.blurred() {
+            let t = Instant::now();
+            let b = aokit_cpu::run_blur(&frame.blur_params(), &ao, depth);
+            passes.push(("blur", ms_since(t)));
+            b
+        } else {
+            ao.clone()
+        };
+        TechniqueRun { ao, ao_final, passes, rays, refined_samples, debug }
+    }
+}
+
+/// Identity of a loaded scene for the acceleration-structure cache.
+fn scene_key(scene: &Scene) -> usize {
+    scene.triangles.as_ptr() as usize ^ scene.triangles.len().rotate_left(32)
+}
+
+impl VulkanRenderer {
+    /// Run `f` with the scene's acceleration structure, built on first use. Returns the build
+    /// time in ms when it was built now.
+    fn with_accel<R>(
+        &self,
+        scene: &Scene,
+        f: impl FnOnce(&SceneAccel) -> Result<R, GpuError>,
+    ) -> Result<(R, Option<f64>), GpuError> {
+        let key = scene_key(scene);
+        let mut cache = self.accel.borrow_mut();
+        let mut built = None;
+        if cache.as_ref().is_none_or(|(k, _)| *k != key) {
+            if let Some((_, old)) = cache.take() {
+                old.destroy(&self.gpu);
+            }
+            let positions: Vec<[f32; 3]> = scene.triangles.iter().flatten().map(|v| v.to_array()).collect();
+            let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
+            let accel = SceneAccel::build(&self.gpu, &positions, &uvs, &scene.triangle_materials, &scene.alpha_masks())?;
+            built = Some(accel.build_ms);
+            *cache = Some((key, accel));
+        }
+        let (_, accel) = cache.as_ref().expect("built above");
+        Ok((f(accel)?, built))
+    }
+
+    /// Run `technique` on a given G-buffer (uploaded).
+    pub fn run(&self, scene: &Scene, frame: &Frame, gbuffer: &GBufferImage, technique: &Technique) -> Result<TechniqueRun, GpuError> {
+        match technique {
+            Technique::Vao => {
+                let r = self.ao(frame, gbuffer.clone())?;
+                let ao_final = r.ao_blurred;
+                Ok(TechniqueRun { ao: r.ao, ao_final, passes: r.passes, rays: 0, refined_samples: 0, debug: None })
+            }
+            Technique::GroundTruth { spp, uniform } => {
+                let (ao, passes) = self.ground_truth(scene, frame, gbuffer, &frame.ground_truth_params(*spp, *uniform))?;
+                let rays = frame.inner.x as u64 * frame.inner.y as u64 * *spp as u64;
+                Ok(TechniqueRun { ao: ao.clone(), ao_final: ao, passes, rays, refined_samples: 0, debug: None })
+            }
+            Technique::RaySd(sd) => self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::StochasticDepth, sd)),
+            Technique::RaySvao { cutoff } => {
+                let options = SdOptions { cutoff: *cutoff, ..Default::default() };
+                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Raytraced, &options))
+            }
+        }
+    }
+
+    fn run_svao(&self, scene: &Scene, frame: &Frame, gbuffer: &GBufferImage, svao: &SvaoFrame) -> Result<TechniqueRun, GpuError> {
+        let pipelines = match self.svao.get() {
+            Some(p) => p,
+            None => {
+                let p = SvaoPipelines::new(&self.gpu)?;
+                self.svao.get_or_init(|| p)
+            }
+        };
+        let ((out, blurred), built) = self.with_accel(scene, |accel| {
+            self.with_uploaded_gbuffer(gbuffer, |depth, normals| {
+                let out = pipelines.run(&self.gpu, accel, svao, depth, normals)?;
+                let blurred = self.screen.blur(&self.gpu, &frame.blur_params(), &out.ao, depth)?;
+                Ok((out, blurred))
+            })
+        })?;
+        let mut passes = Vec::new();
+        if let Some(ms) = built {
+            passes.push(("accel_build", ms));
+        }
+        passes.extend(out.pass_ms.iter().copied());
+        passes.push(("blur", blurred.1));
+        let params = &svao.params;
+        let sd = params.secondary == Secondary::StochasticDepth as u32;
+        let refined_samples = out.mask.iter().map(|m| m.count_ones() as u64).sum();
+        let rays = if sd {
+            aokit_cpu::svao::count_sd_rays(svao, &gbuffer.depth, &gbuffer.normals, &out.ray_min, &out.ray_max)
+        } else {
+            aokit_cpu::svao::count_sample_rays(svao, &gbuffer.depth, &gbuffer.normals, &out.mask)
+        };
+        let debug = SvaoDebug {
+            mask: out.mask,
+            ray_min: if sd { out.ray_min } else { Vec::new() },
+            ray_max: if sd { out.ray_max } else { Vec::new() },
+            sd_size: params.sd_size(),
+            sd_map: out.sd_map,
+            layers: params.sd_layers,
+        };
+        Ok(TechniqueRun { ao: out.ao, ao_final: blurred.0, passes, rays, refined_samples, debug: Some(debug) })
+    }
+}
+
+/// A back-end chosen at run time.
+pub enum Renderer {
+    Cpu(CpuRenderer),
+    Vulkan(VulkanRenderer),
+}
+
+impl Renderer {
+    pub fn backend_name(&self) -> &'static str {
+        match self {
+            Renderer::Cpu(_) => "cpu",
+            Renderer::Vulkan(_) => "vulkan",
+        }
+    }
+
+    /// The Vulkan device's name, or the CPU thread count.
+    pub fn device_name(&self) -> String {
+        match self {
+            Renderer::Cpu(_) => format!("CPU, {} threads", rayon::current_num_threads()),
+            Renderer::Vulkan(v) => v.gpu.info().name.clone(),
+        }
+    }
+
+    /// Messages the validation layer reported so far (none on the CPU).
+    pub fn validation_messages(&self) -> Vec<String> {
+        match self {
+            Renderer::Cpu(_) => Vec::new(),
+            Renderer::Vulkan(v) => v.gpu.validation_messages(),
+        }
+    }
+
+    /// The G-buffer: ray cast on the CPU, rasterized on Vulkan. Returns it and its time in ms.
+    pub fn gbuffer(&self, scene: &Scene, frame: &Frame, progress: Progress) -> Result<(GBufferImage, f64), GpuError> {
+        match self {
+            Renderer::Cpu(c) => Ok(c.gbuffer(frame, progress)),
+            Renderer::Vulkan(v) => v.gbuffer(scene, frame),
+        }
+    }
+
+    /// Run a technique on a G-buffer.
+    pub fn run(
+        &self,
+        scene: &Scene,
+        frame: &Frame,
+        gbuffer: &GBufferImage,
+        technique: &Technique,
+        progress: Progress,
+    ) -> Result<TechniqueRun, GpuError> {
+        match self {
+            Renderer::Cpu(c) => Ok(c.run(frame, gbuffer, technique, progress)),
+            Renderer::Vulkan(v) => v.run(scene, frame, gbuffer, technique),
+        }
     }
 }

@@ -85,6 +85,90 @@ impl SceneBvh {
     }
 }
 
+/// What an any-hit function decides about a candidate hit (DXR / Vulkan semantics).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum AnyHit {
+    /// The hit does not count; traversal continues with the same interval.
+    Ignore,
+    /// Commit the hit: `tMax` shrinks to its distance, only nearer candidates follow.
+    Accept,
+    /// Commit the hit and end the search (`terminateRayEXT`).
+    AcceptAndEnd,
+}
+
+impl SceneBvh {
+    /// Trace with any-hit semantics: `any_hit(t, triangle, barycentrics)` runs for EVERY
+    /// triangle hit inside the current open interval `(t_min, t_max)`, in the BVH's traversal
+    /// order (front-to-back by node, not sorted by distance), exactly once per triangle.
+    pub fn trace_any_hit(
+        &self,
+        origin: Vec3,
+        direction: Vec3,
+        t_min: f32,
+        t_max: f32,
+        mut any_hit: impl FnMut(f32, u32, Vec2) -> AnyHit,
+    ) {
+        let ray = Ray::new(Vec3A::from(origin), Vec3A::from(direction), t_min, t_max);
+        let mut hit = RayHit::none();
+        let mut ended = false;
+        self.bvh.ray_traverse(ray, &mut hit, |ray, id| {
+            if ended {
+                return f32::INFINITY;
+            }
+            let tri = &self.triangles[id];
+            let t = tri.intersect(ray);
+            if !(t > ray.tmin && t < ray.tmax) {
+                return f32::INFINITY;
+            }
+            let b = barycentrics(ray.origin + ray.direction * t, tri);
+            match any_hit(t, self.bvh.primitive_indices[id], b) {
+                AnyHit::Ignore => f32::INFINITY,
+                AnyHit::Accept => t,
+                AnyHit::AcceptAndEnd => {
+                    ended = true;
+                    t
+                }
+            }
+        });
+    }
+
+    /// Every triangle hit `(t, triangle, barycentrics)` inside the open interval, in traversal
+    /// order.
+    pub fn all_hits(&self, origin: Vec3, direction: Vec3, t_min: f32, t_max: f32) -> Vec<(f32, u32, Vec2)> {
+        let ray = Ray::new(Vec3A::from(origin), Vec3A::from(direction), t_min, t_max);
+        let mut hits = Vec::new();
+        self.bvh.ray_traverse_anyhit(ray, |ray, id| {
+            let tri = &self.triangles[id];
+            let t = tri.intersect(ray);
+            if t > ray.tmin && t < ray.tmax {
+                hits.push((t, self.bvh.primitive_indices[id], barycentrics(ray.origin + ray.direction * t, tri)));
+            }
+        });
+        hits
+    }
+}
+
+/// Replay candidate hits in the given order with any-hit semantics: a hit is offered only while
+/// it lies inside the current interval, `Accept` shrinks `t_max`, `AcceptAndEnd` stops. This
+/// emulates a traversal that reports hits in an arbitrary order (hardware gives no guarantee).
+pub fn replay_any_hit(
+    hits: &[(f32, u32, Vec2)],
+    t_min: f32,
+    mut t_max: f32,
+    mut any_hit: impl FnMut(f32, u32, Vec2) -> AnyHit,
+) {
+    for &(t, tri, b) in hits {
+        if !(t > t_min && t < t_max) {
+            continue;
+        }
+        match any_hit(t, tri, b) {
+            AnyHit::Ignore => {}
+            AnyHit::Accept => t_max = t,
+            AnyHit::AcceptAndEnd => return,
+        }
+    }
+}
+
 /// Barycentric weights `(b1, b2)` of `v1` and `v2` for a point `p` in the triangle's plane.
 fn barycentrics(p: Vec3A, tri: &Triangle) -> Vec2 {
     let (e1, e2, d) = (tri.v1 - tri.v0, tri.v2 - tri.v0, p - tri.v0);

@@ -6,8 +6,9 @@ pub mod bvh;
 pub mod gbuffer;
 pub mod groundtruth;
 pub mod screen;
+pub mod svao;
 
-pub use bvh::SceneBvh;
+pub use bvh::{AnyHit, SceneBvh};
 pub use gbuffer::{GBufferImage, Surfaces, ray_cast_gbuffer};
 pub use groundtruth::run_ground_truth;
 pub use screen::{run_blur, run_vao};

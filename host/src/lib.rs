@@ -11,6 +11,7 @@ pub mod manifest;
 pub mod modules;
 mod raytracing;
 mod screen;
+mod svao;
 pub mod spirv_hash;
 
 pub use buffer::Buffer;
@@ -18,6 +19,7 @@ pub use context::{DeviceInfo, Gpu, GpuOptions};
 pub use gbuffer::{GBufferVertex, RasterGBuffer};
 pub use raytracing::{GroundTruthPipeline, SceneAccel};
 pub use screen::{ScreenOutput, ScreenPasses};
+pub use svao::{SvaoOutput, SvaoPipelines};
 
 /// Errors of the Vulkan back-end.
 #[derive(Debug, thiserror::Error)]

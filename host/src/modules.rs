@@ -16,9 +16,17 @@ pub const GBUFFER_FS: &[u8] = spv!("gbuffer_fs");
 pub const GROUNDTRUTH_RGEN: &[u8] = spv!("groundtruth_rgen");
 pub const GROUNDTRUTH_MISS: &[u8] = spv!("groundtruth_miss");
 pub const GROUNDTRUTH_AHIT: &[u8] = spv!("groundtruth_ahit");
+pub const SVAO_PASS1: &[u8] = spv!("svao_pass1");
+pub const RAYSD_PASS2: &[u8] = spv!("raysd_pass2");
+pub const RAYSD_RGEN: &[u8] = spv!("raysd_rgen");
+pub const RAYSD_MISS: &[u8] = spv!("raysd_miss");
+pub const RAYSD_AHIT: &[u8] = spv!("raysd_ahit");
+pub const RAYSVAO_RGEN: &[u8] = spv!("raysvao_rgen");
+pub const RAYSVAO_MISS: &[u8] = spv!("raysvao_miss");
+pub const RAYSVAO_AHIT: &[u8] = spv!("raysvao_ahit");
 
 /// Every module by entry-point name.
-pub const ALL: [(&str, &[u8]); 7] = [
+pub const ALL: [(&str, &[u8]); 15] = [
     ("vao_main", VAO_MAIN),
     ("blur_main", BLUR_MAIN),
     ("gbuffer_vs", GBUFFER_VS),
@@ -26,6 +34,14 @@ pub const ALL: [(&str, &[u8]); 7] = [
     ("groundtruth_rgen", GROUNDTRUTH_RGEN),
     ("groundtruth_miss", GROUNDTRUTH_MISS),
     ("groundtruth_ahit", GROUNDTRUTH_AHIT),
+    ("svao_pass1", SVAO_PASS1),
+    ("raysd_pass2", RAYSD_PASS2),
+    ("raysd_rgen", RAYSD_RGEN),
+    ("raysd_miss", RAYSD_MISS),
+    ("raysd_ahit", RAYSD_AHIT),
+    ("raysvao_rgen", RAYSVAO_RGEN),
+    ("raysvao_miss", RAYSVAO_MISS),
+    ("raysvao_ahit", RAYSVAO_AHIT),
 ];
 
 /// SPIR-V words of a module (validates the magic number and alignment).

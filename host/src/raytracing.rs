@@ -107,6 +107,22 @@ pub struct SceneAccel {
 }
 
 impl SceneAccel {
+    /// The alpha-test buffers in the binding order every any-hit shader declares them: corner
+    /// uvs, per-triangle material, mask headers, mask texels.
+    pub(crate) fn alpha_descriptors(&self) -> [Descriptor<'_>; 4] {
+        [
+            Descriptor::Storage(&self.uvs),
+            Descriptor::Storage(&self.materials),
+            Descriptor::Storage(&self.mask_headers),
+            Descriptor::Storage(&self.mask_texels),
+        ]
+    }
+
+    /// The TLAS as a descriptor.
+    pub(crate) fn tlas_descriptor(&self) -> Descriptor<'static> {
+        Descriptor::Tlas(self.tlas.0)
+    }
+
     /// `positions`: three corners per triangle. Geometry is marked opaque unless some material
     /// has an alpha mask (then every triangle runs the any-hit alpha test).
     pub fn build(
@@ -215,42 +231,43 @@ fn binding_types() -> Vec<vk::DescriptorType> {
     types
 }
 
-/// The ground-truth ray-tracing pipeline and its shader binding table.
-pub struct GroundTruthPipeline {
-    set_layout: vk::DescriptorSetLayout,
+/// A ray-tracing pipeline of one ray-generation, one miss and one any-hit shader (a triangle
+/// hit group), its descriptor set layout and its shader binding table.
+pub(crate) struct RtPipeline {
+    pub(crate) set_layout: vk::DescriptorSetLayout,
     layout: vk::PipelineLayout,
     pipeline: vk::Pipeline,
     sbt: Buffer,
     regions: [vk::StridedDeviceAddressRegionKHR; 3],
+    pub(crate) bindings: Vec<vk::DescriptorType>,
 }
 
-impl GroundTruthPipeline {
-    pub fn new(gpu: &Gpu) -> Result<Self, GpuError> {
+impl RtPipeline {
+    /// `shaders`: (SPIR-V, entry point) of the ray-generation, miss and any-hit stages;
+    /// `bindings`: descriptor types of set 0 in binding order.
+    pub(crate) fn new(
+        gpu: &Gpu,
+        shaders: [(&[u8], &std::ffi::CStr); 3],
+        bindings: Vec<vk::DescriptorType>,
+    ) -> Result<Self, GpuError> {
         let rt = gpu.ray_tracing()?;
         let d = &gpu.device;
         let stages_all = vk::ShaderStageFlags::RAYGEN_KHR | vk::ShaderStageFlags::ANY_HIT_KHR;
         unsafe {
-            let set_layout = gpu.set_layout(&binding_types(), stages_all)?;
+            let set_layout = gpu.set_layout(&bindings, stages_all)?;
             let set_layouts = [set_layout];
             let layout =
                 d.create_pipeline_layout(&vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts), None)?;
-            let rgen = gpu.shader_module(modules::GROUNDTRUTH_RGEN)?;
-            let miss = gpu.shader_module(modules::GROUNDTRUTH_MISS)?;
-            let ahit = gpu.shader_module(modules::GROUNDTRUTH_AHIT)?;
-            let stages = [
-                vk::PipelineShaderStageCreateInfo::default()
-                    .stage(vk::ShaderStageFlags::RAYGEN_KHR)
-                    .module(rgen)
-                    .name(c"groundtruth_rgen"),
-                vk::PipelineShaderStageCreateInfo::default()
-                    .stage(vk::ShaderStageFlags::MISS_KHR)
-                    .module(miss)
-                    .name(c"groundtruth_miss"),
-                vk::PipelineShaderStageCreateInfo::default()
-                    .stage(vk::ShaderStageFlags::ANY_HIT_KHR)
-                    .module(ahit)
-                    .name(c"groundtruth_ahit"),
-            ];
+            let kinds = [vk::ShaderStageFlags::RAYGEN_KHR, vk::ShaderStageFlags::MISS_KHR, vk::ShaderStageFlags::ANY_HIT_KHR];
+            let mut modules = Vec::new();
+            for (spirv, _) in &shaders {
+                modules.push(gpu.shader_module(spirv)?);
+            }
+            let stages: Vec<_> = (0..3)
+                .map(|i| {
+                    vk::PipelineShaderStageCreateInfo::default().stage(kinds[i]).module(modules[i]).name(shaders[i].1)
+                })
+                .collect();
             let general = |stage: u32| {
                 vk::RayTracingShaderGroupCreateInfoKHR::default()
                     .ty(vk::RayTracingShaderGroupTypeKHR::GENERAL)
@@ -280,7 +297,7 @@ impl GroundTruthPipeline {
                 &[info],
                 None,
             );
-            for m in [rgen, miss, ahit] {
+            for m in modules {
                 d.destroy_shader_module(m, None);
             }
             let pipeline = created.map_err(|(_, e)| e)?[0];
@@ -306,8 +323,46 @@ impl GroundTruthPipeline {
             sbt.write(&table);
             let r =
                 |g: u64| vk::StridedDeviceAddressRegionKHR { device_address: base + g * region, stride, size: stride };
-            Ok(GroundTruthPipeline { set_layout, layout, pipeline, sbt, regions: [r(0), r(1), r(2)] })
+            Ok(RtPipeline { set_layout, layout, pipeline, sbt, regions: [r(0), r(1), r(2)], bindings })
         }
+    }
+
+    /// Record `vkCmdTraceRaysKHR` over `width × height` with descriptor set `set`.
+    pub(crate) fn record_trace(&self, gpu: &Gpu, cb: vk::CommandBuffer, set: vk::DescriptorSet, width: u32, height: u32) -> Result<(), GpuError> {
+        let rt = gpu.ray_tracing()?;
+        let d = &gpu.device;
+        unsafe {
+            d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::RAY_TRACING_KHR, self.pipeline);
+            d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::RAY_TRACING_KHR, self.layout, 0, &[set], &[]);
+            let [raygen, miss, hit] = &self.regions;
+            rt.pipelines.cmd_trace_rays(cb, raygen, miss, hit, &Default::default(), width, height, 1);
+        }
+        Ok(())
+    }
+
+    pub(crate) fn destroy(self, gpu: &Gpu) {
+        unsafe {
+            gpu.device.destroy_pipeline(self.pipeline, None);
+            gpu.device.destroy_pipeline_layout(self.layout, None);
+            gpu.device.destroy_descriptor_set_layout(self.set_layout, None);
+        }
+        gpu.free_buffer(self.sbt);
+    }
+}
+
+/// The ground-truth ray-tracing pipeline.
+pub struct GroundTruthPipeline {
+    rt: RtPipeline,
+}
+
+impl GroundTruthPipeline {
+    pub fn new(gpu: &Gpu) -> Result<Self, GpuError> {
+        let shaders = [
+            (modules::GROUNDTRUTH_RGEN, c"groundtruth_rgen"),
+            (modules::GROUNDTRUTH_MISS, c"groundtruth_miss"),
+            (modules::GROUNDTRUTH_AHIT, c"groundtruth_ahit"),
+        ];
+        Ok(GroundTruthPipeline { rt: RtPipeline::new(gpu, shaders, binding_types())? })
     }
 
     /// Ground truth for every inner pixel of a G-buffer already on the device. Returns the
@@ -320,7 +375,6 @@ impl GroundTruthPipeline {
         depth: &Buffer,
         normals: &Buffer,
     ) -> Result<(Vec<f32>, f64), GpuError> {
-        let rt = gpu.ray_tracing()?;
         let size = frame.camera.view.size();
         let inner = size - 2 * frame.camera.view.guard;
         let pixels = (size.x * size.y) as usize;
@@ -329,19 +383,16 @@ impl GroundTruthPipeline {
         let ao = gpu.upload(&vec![1.0f32; pixels], storage)?;
         let d = &gpu.device;
         let result = (|| unsafe {
-            let pool = gpu.descriptor_pool(1, &binding_types())?;
-            let descriptors = [
+            let pool = gpu.descriptor_pool(1, &self.rt.bindings)?;
+            let mut descriptors = vec![
                 Descriptor::Storage(&frame_buf),
                 Descriptor::Tlas(scene.tlas.0),
                 Descriptor::Storage(depth),
                 Descriptor::Storage(normals),
                 Descriptor::Storage(&ao),
-                Descriptor::Storage(&scene.uvs),
-                Descriptor::Storage(&scene.materials),
-                Descriptor::Storage(&scene.mask_headers),
-                Descriptor::Storage(&scene.mask_texels),
             ];
-            let set = gpu.descriptor_set(pool, self.set_layout, &descriptors)?;
+            descriptors.extend(scene.alpha_descriptors());
+            let set = gpu.descriptor_set(pool, self.rt.set_layout, &descriptors)?;
             let queries = d.create_query_pool(
                 &vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(2),
                 None,
@@ -349,14 +400,12 @@ impl GroundTruthPipeline {
             let traced = gpu.submit(|cb| {
                 d.cmd_reset_query_pool(cb, queries, 0, 2);
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TOP_OF_PIPE, queries, 0);
-                d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::RAY_TRACING_KHR, self.pipeline);
-                d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::RAY_TRACING_KHR, self.layout, 0, &[set], &[]);
-                let [raygen, miss, hit] = &self.regions;
-                rt.pipelines.cmd_trace_rays(cb, raygen, miss, hit, &Default::default(), inner.x, inner.y, 1);
+                let r = self.rt.record_trace(gpu, cb, set, inner.x, inner.y);
                 compute_barrier(gpu, cb, vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR);
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR, queries, 1);
+                r
             });
-            let got = traced.and_then(|_| gpu.timestamps_ms(queries, 2));
+            let got = traced.and_then(|r| r).and_then(|_| gpu.timestamps_ms(queries, 2));
             d.destroy_query_pool(queries, None);
             d.destroy_descriptor_pool(pool, None);
             Ok(got?[1])
@@ -368,11 +417,6 @@ impl GroundTruthPipeline {
     }
 
     pub fn destroy(self, gpu: &Gpu) {
-        unsafe {
-            gpu.device.destroy_pipeline(self.pipeline, None);
-            gpu.device.destroy_pipeline_layout(self.layout, None);
-            gpu.device.destroy_descriptor_set_layout(self.set_layout, None);
-        }
-        gpu.free_buffer(self.sbt);
+        self.rt.destroy(gpu);
     }
 }

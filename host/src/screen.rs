@@ -27,10 +27,12 @@ impl ComputeKernel {
         let d = &gpu.device;
         let set_layout = gpu.set_layout(&storage_bindings(bindings), vk::ShaderStageFlags::COMPUTE)?;
         unsafe {
+            // `push_size == 0`: the kernel reads its parameters from a storage buffer.
             let push = [vk::PushConstantRange::default().stage_flags(vk::ShaderStageFlags::COMPUTE).size(push_size)];
+            let ranges = if push_size == 0 { &push[..0] } else { &push[..] };
             let set_layouts = [set_layout];
             let layout = d.create_pipeline_layout(
-                &vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts).push_constant_ranges(&push),
+                &vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts).push_constant_ranges(ranges),
                 None,
             )?;
             let module = gpu.shader_module(spirv)?;
@@ -66,7 +68,9 @@ impl ComputeKernel {
         unsafe {
             d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::COMPUTE, self.pipeline);
             d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::COMPUTE, self.layout, 0, &[set], &[]);
-            d.cmd_push_constants(cb, self.layout, vk::ShaderStageFlags::COMPUTE, 0, push);
+            if !push.is_empty() {
+                d.cmd_push_constants(cb, self.layout, vk::ShaderStageFlags::COMPUTE, 0, push);
+            }
             d.cmd_dispatch(cb, groups[0], groups[1], groups[2]);
         }
         Ok(())
@@ -83,20 +87,35 @@ impl ComputeKernel {
 
 /// Make shader writes of stage `src` visible to later compute reads and transfers.
 pub(crate) fn compute_barrier(gpu: &Gpu, cb: vk::CommandBuffer, src: vk::PipelineStageFlags) {
-    let barrier = vk::MemoryBarrier::default()
-        .src_access_mask(vk::AccessFlags::SHADER_WRITE)
-        .dst_access_mask(vk::AccessFlags::SHADER_READ | vk::AccessFlags::TRANSFER_READ);
-    unsafe {
-        gpu.device.cmd_pipeline_barrier(
-            cb,
-            src,
-            vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER,
-            vk::DependencyFlags::empty(),
-            &[barrier],
-            &[],
-            &[],
-        )
-    };
+    memory_barrier(gpu, cb, src, vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER);
+}
+
+/// Make every write of stage `src` (shader or transfer) visible to reads and writes of `dst`.
+pub(crate) fn memory_barrier(
+    gpu: &Gpu,
+    cb: vk::CommandBuffer,
+    src: vk::PipelineStageFlags,
+    dst: vk::PipelineStageFlags,
+) {
+    type S = vk::PipelineStageFlags;
+    type A = vk::AccessFlags;
+    let shader = S::COMPUTE_SHADER | S::RAY_TRACING_SHADER_KHR;
+    let mut src_access = A::empty();
+    if src.intersects(S::TRANSFER) {
+        src_access |= A::TRANSFER_WRITE;
+    }
+    if src.intersects(shader) {
+        src_access |= A::SHADER_WRITE;
+    }
+    let mut dst_access = A::empty();
+    if dst.intersects(S::TRANSFER) {
+        dst_access |= A::TRANSFER_READ;
+    }
+    if dst.intersects(shader) {
+        dst_access |= A::SHADER_READ | A::SHADER_WRITE;
+    }
+    let barrier = vk::MemoryBarrier::default().src_access_mask(src_access).dst_access_mask(dst_access);
+    unsafe { gpu.device.cmd_pipeline_barrier(cb, src, dst, vk::DependencyFlags::empty(), &[barrier], &[], &[]) };
 }
 
 /// Output of [`ScreenPasses::run`].
@@ -161,12 +180,7 @@ impl ScreenPasses {
                 self.vao.record(gpu, cb, pool, &[depth, normals, &ao], bytemuck::bytes_of(vao), groups)?;
                 compute_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER);
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 1);
-                let horizontal = BlurParams { direction: uvec2(1, 0), ..*blur };
-                self.blur.record(gpu, cb, pool, &[&ao, depth, &tmp], bytemuck::bytes_of(&horizontal), groups)?;
-                compute_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER);
-                let vertical = BlurParams { direction: uvec2(0, 1), ..*blur };
-                self.blur.record(gpu, cb, pool, &[&tmp, depth, &out], bytemuck::bytes_of(&vertical), groups)?;
-                compute_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER);
+                self.record_blur(gpu, cb, pool, blur, [&ao, &tmp, &out], depth, groups)?;
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 2);
                 Ok(())
             });
@@ -179,6 +193,63 @@ impl ScreenPasses {
         let output = result
             .and_then(|pass_ms| Ok(ScreenOutput { ao: gpu.download(&ao)?, ao_blurred: gpu.download(&out)?, pass_ms }));
         for b in [ao, tmp, out] {
+            gpu.free_buffer(b);
+        }
+        output
+    }
+
+    /// Horizontal then vertical blur pass (spec §12) from `bufs[0]` through `bufs[1]` into
+    /// `bufs[2]`.
+    fn record_blur(
+        &self,
+        gpu: &Gpu,
+        cb: vk::CommandBuffer,
+        pool: vk::DescriptorPool,
+        blur: &BlurParams,
+        [input, tmp, out]: [&Buffer; 3],
+        depth: &Buffer,
+        groups: [u32; 3],
+    ) -> Result<(), GpuError> {
+        let horizontal = BlurParams { direction: uvec2(1, 0), ..*blur };
+        self.blur.record(gpu, cb, pool, &[input, depth, tmp], bytemuck::bytes_of(&horizontal), groups)?;
+        compute_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER);
+        let vertical = BlurParams { direction: uvec2(0, 1), ..*blur };
+        self.blur.record(gpu, cb, pool, &[tmp, depth, out], bytemuck::bytes_of(&vertical), groups)?;
+        compute_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER);
+        Ok(())
+    }
+
+    /// The blur alone on a host AO image (full target) and a device depth buffer. Returns the
+    /// blurred AO and the GPU time in ms.
+    pub fn blur(&self, gpu: &Gpu, blur: &BlurParams, ao: &[f32], depth: &Buffer) -> Result<(Vec<f32>, f64), GpuError> {
+        let size = blur.view.size();
+        let usage = vk::BufferUsageFlags::STORAGE_BUFFER;
+        let input = gpu.upload(ao, usage)?;
+        let tmp = gpu.upload(ao, usage)?;
+        let out = gpu.upload(ao, usage)?;
+        let inner = size - 2 * blur.view.guard;
+        let groups = [inner.x.div_ceil(GROUP), inner.y.div_ceil(GROUP), 1];
+        let d = &gpu.device;
+        let result = (|| unsafe {
+            let pool = gpu.descriptor_pool(2, &storage_bindings(3))?;
+            let queries = d.create_query_pool(
+                &vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(2),
+                None,
+            )?;
+            let recorded = gpu.submit(|cb| -> Result<(), GpuError> {
+                d.cmd_reset_query_pool(cb, queries, 0, 2);
+                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TOP_OF_PIPE, queries, 0);
+                self.record_blur(gpu, cb, pool, blur, [&input, &tmp, &out], depth, groups)?;
+                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 1);
+                Ok(())
+            });
+            let got = recorded.and_then(|r| r).and_then(|_| gpu.timestamps_ms(queries, 2));
+            d.destroy_query_pool(queries, None);
+            d.destroy_descriptor_pool(pool, None);
+            Ok(got?[1])
+        })();
+        let output = result.and_then(|ms| Ok((gpu.download(&out)?, ms)));
+        for b in [input, tmp, out] {
             gpu.free_buffer(b);
         }
         output

@@ -10,14 +10,29 @@ pub trait AtomicU32Buffer {
     fn atomic_max(&mut self, i: usize, v: u32) -> u32;
 }
 
-#[cfg(target_arch = "spirv")]
+/// Device-scope atomics on a storage buffer. Natively (where the entry points also compile) the
+/// exclusive borrow makes plain min/max equivalent.
 impl AtomicU32Buffer for &mut [u32] {
+    #[cfg(not(target_arch = "spirv"))]
+    fn atomic_min(&mut self, i: usize, v: u32) -> u32 {
+        let old = self[i];
+        self[i] = old.min(v);
+        old
+    }
+    #[cfg(not(target_arch = "spirv"))]
+    fn atomic_max(&mut self, i: usize, v: u32) -> u32 {
+        let old = self[i];
+        self[i] = old.max(v);
+        old
+    }
+    #[cfg(target_arch = "spirv")]
     fn atomic_min(&mut self, i: usize, v: u32) -> u32 {
         use spirv_std::memory::{Scope, Semantics};
         unsafe {
             spirv_std::arch::atomic_u_min::<u32, { Scope::Device as u32 }, { Semantics::NONE.bits() }>(&mut self[i], v)
         }
     }
+    #[cfg(target_arch = "spirv")]
     fn atomic_max(&mut self, i: usize, v: u32) -> u32 {
         use spirv_std::memory::{Scope, Semantics};
         unsafe {

@@ -115,6 +115,8 @@ pub struct LineSample {
     pub half_chord: f32,
     /// Hemisphere-clipped chord end (in object-space z, towards the camera is positive).
     pub sphere_end: f32,
+    /// View-space sample point `S = P + t·o.x + b·o.y` on the disc.
+    pub point: Vec3,
     /// Unsnapped, unclamped uv of the sample point `S`.
     pub uv: Vec2,
     /// Texel of the raster sample (`snap(saturate(uvS))`).
@@ -151,7 +153,7 @@ pub fn line_sample(frame: &PixelFrame, view: &ViewParams, i: u32) -> LineSample 
     // Spec §4.2 tests |uv − uvR| < 0.9/res on both axes; both are texel centres, so this holds
     // exactly when the raster sample's texel is the shaded pixel.
     let same_pixel = texel.x == frame.pixel.x && texel.y == frame.pixel.y;
-    LineSample { valid, half_chord, sphere_end, uv, texel, in_screen, screen_distance, same_pixel }
+    LineSample { valid, half_chord, sphere_end, point: s, uv, texel, in_screen, screen_distance, same_pixel }
 }
 
 /// Object-space z of a view point: `oz(D) = dot(D − P, n̂)` (spec §1; larger = closer to the camera).

@@ -1,0 +1,311 @@
+//! The two-phase SVAO pipeline on the CPU (spec svao-raysd §3): AO pass 1 with `AtomicU32`
+//! interval buffers, the ray-traced SD map with the shared reservoir any-hit driven by the BVH,
+//! AO pass 2 from the SD map, and Ray-SVAO's per-sample rays. Every per-pixel and per-hit
+//! function is the shader crate's.
+
+use crate::bvh::AnyHit;
+use crate::gbuffer::Surfaces;
+use crate::{Progress, SceneBvh};
+use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
+use aokit_shaders::common::gbuffer_read::GBufferSlices;
+use aokit_shaders::glam::{UVec2, uvec2};
+use aokit_shaders::raysd::{SdMapRefine, SdPayload, reservoir_any_hit, sd_ray, store_layers};
+use aokit_shaders::raysvao::{ACCEPT, ACCEPT_AND_END, SampleRay, SampleTracer, refine_by_ray, sample_any_hit};
+use aokit_shaders::vao::kernel::{LineSample, PixelFrame};
+use aokit_shaders::svao::{Refine, SvaoFrame, SvaoParams, pass1_pixel, pass2_pixel};
+use rayon::prelude::*;
+use std::sync::atomic::{AtomicU32, AtomicU64, Ordering};
+
+/// Outputs of AO pass 1 over the full target (guard band: AO 1, mask 0) and the SD-size
+/// interval buffers.
+#[derive(Clone, Debug)]
+pub struct Pass1 {
+    pub ao: Vec<f32>,
+    pub mask: Vec<u32>,
+    pub ray_min: Vec<u32>,
+    pub ray_max: Vec<u32>,
+}
+
+impl Pass1 {
+    /// Number of flagged samples (set mask bits).
+    pub fn refined_samples(&self) -> u64 {
+        self.mask.iter().map(|m| m.count_ones() as u64).sum()
+    }
+}
+
+/// Rows of the inner image in parallel; `kernel(p)` for each inner pixel of row `y`.
+fn for_inner_rows(params: &SvaoParams, progress: Progress, kernel: impl Fn(UVec2) + Sync) {
+    let view = &params.vao.view;
+    let size = view.size();
+    let g = view.guard;
+    (g..size.y - g).into_par_iter().for_each(|y| {
+        for x in g..size.x - g {
+            kernel(uvec2(x, y));
+        }
+        progress(1);
+    });
+}
+
+/// AO pass 1 (spec §5) over the inner image, interval atomics as `AtomicU32`.
+pub fn run_pass1(params: &SvaoParams, depth: &[f32], normals: &[u32], progress: Progress) -> Pass1 {
+    let view = &params.vao.view;
+    let size = view.size();
+    let pixels = (size.x * size.y) as usize;
+    let sd = params.sd_size();
+    let texels = (sd.x * sd.y) as usize;
+    let ray_min: Vec<AtomicU32> = (0..texels).map(|_| AtomicU32::new(RAY_MIN_CLEAR)).collect();
+    let ray_max: Vec<AtomicU32> = (0..texels).map(|_| AtomicU32::new(RAY_MAX_CLEAR)).collect();
+    let ao: Vec<AtomicU32> = (0..pixels).map(|_| AtomicU32::new(1.0f32.to_bits())).collect();
+    let mask: Vec<AtomicU32> = (0..pixels).map(|_| AtomicU32::new(0)).collect();
+    let gbuffer = GBufferSlices { depth, normals, width: size.x };
+    for_inner_rows(params, progress, |p| {
+        let (mut lo, mut hi) = (ray_min.as_slice(), ray_max.as_slice());
+        let out = pass1_pixel(&gbuffer, params, p, &mut lo, &mut hi);
+        let i = view.index(p);
+        ao[i].store(out.ao.to_bits(), Ordering::Relaxed);
+        mask[i].store(out.mask, Ordering::Relaxed);
+    });
+    let unwrap = |v: Vec<AtomicU32>| v.into_iter().map(AtomicU32::into_inner).collect::<Vec<u32>>();
+    Pass1 {
+        ao: unwrap(ao).into_iter().map(f32::from_bits).collect(),
+        mask: unwrap(mask),
+        ray_min: unwrap(ray_min),
+        ray_max: unwrap(ray_max),
+    }
+}
+
+/// The ray-traced SD map (spec §7) and the number of rays traced.
+#[derive(Clone, Debug)]
+pub struct SdMap {
+    /// `N` normalized depths per SD texel (1 = empty), row-major over the SD size.
+    pub layers: Vec<f32>,
+    pub rays: u64,
+}
+
+/// How the CPU reports candidate hits to the any-hit function.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum HitOrder {
+    /// The BVH's traversal order.
+    Traversal,
+    /// All candidates shuffled with this seed (per texel), then replayed: an adversarial
+    /// stand-in for the unspecified hardware order.
+    Shuffled(u64),
+}
+
+/// Trace one SD ray per SD texel (spec §7.1) with the shared reservoir any-hit (spec §7.3),
+/// alpha test included.
+pub fn run_sd_map(
+    bvh: &SceneBvh,
+    surfaces: &Surfaces,
+    frame: &SvaoFrame,
+    depth: &[f32],
+    normals: &[u32],
+    pass1: &Pass1,
+    order: HitOrder,
+) -> SdMap {
+    let params = &frame.params;
+    let view = &params.vao.view;
+    let sd = params.sd_size();
+    let n = params.sd_layers as usize;
+    let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
+    let rays = AtomicU64::new(0);
+    let mut layers = vec![1.0f32; (sd.x * sd.y) as usize * n];
+    layers.par_chunks_mut(sd.x as usize * n).enumerate().for_each(|(y, row)| {
+        let mut traced = 0;
+        for x in 0..sd.x {
+            let q = uvec2(x, y as u32);
+            let i = params.sd_index(q);
+            let ray = sd_ray(&gbuffer, frame, q, pass1.ray_min[i], pass1.ray_max[i]);
+            let mut payload = SdPayload::new(params, view.near, view.far, ray.cos_theta);
+            if ray.traced() {
+                traced += 1;
+                let mut any_hit = |t: f32, tri: u32, b| {
+                    let accept = reservoir_any_hit(&mut payload, t, b, || surfaces.passes_alpha(tri, b));
+                    if accept { AnyHit::Accept } else { AnyHit::Ignore }
+                };
+                match order {
+                    HitOrder::Traversal => bvh.trace_any_hit(ray.origin, ray.direction, ray.t_min, ray.t_max, any_hit),
+                    HitOrder::Shuffled(seed) => {
+                        let mut hits = bvh.all_hits(ray.origin, ray.direction, ray.t_min, ray.t_max);
+                        shuffle(&mut hits, seed ^ (i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
+                        crate::bvh::replay_any_hit(&hits, ray.t_min, ray.t_max, &mut any_hit);
+                    }
+                }
+            }
+            // `store_layers` indexes the whole map; write this row's slice at offset 0.
+            let row_params = SvaoParams { sd_low_res: uvec2(sd.x, 1), sd_guard: 0, ..*params };
+            store_layers(row, &row_params, uvec2(x, 0), &payload);
+        }
+        rays.fetch_add(traced, Ordering::Relaxed);
+    });
+    SdMap { layers, rays: rays.into_inner() }
+}
+
+/// Fisher–Yates with SplitMix64.
+fn shuffle<T>(v: &mut [T], seed: u64) {
+    let mut state = seed;
+    let mut next = || {
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    };
+    for i in (1..v.len()).rev() {
+        let j = (next() % (i as u64 + 1)) as usize;
+        v.swap(i, j);
+    }
+}
+
+/// AO pass 2 (spec §9) with any [`Refine`] source made per row.
+fn run_pass2<R: Refine>(
+    params: &SvaoParams,
+    depth: &[f32],
+    normals: &[u32],
+    pass1: &Pass1,
+    progress: Progress,
+    source: impl Fn() -> R + Sync,
+) -> Vec<f32> {
+    let view = &params.vao.view;
+    let size = view.size();
+    let gbuffer = GBufferSlices { depth, normals, width: size.x };
+    let mut out = pass1.ao.clone();
+    let g = view.guard;
+    out.par_chunks_mut(size.x as usize).enumerate().for_each(|(y, row)| {
+        let y = y as u32;
+        if y < g || y + g >= size.y {
+            return;
+        }
+        let mut refine = source();
+        for x in g..size.x - g {
+            let p = uvec2(x, y);
+            let i = view.index(p);
+            row[x as usize] = pass2_pixel(&gbuffer, params, p, pass1.ao[i], pass1.mask[i], &mut refine);
+        }
+        progress(1);
+    });
+    out
+}
+
+/// AO pass 2 from the SD map (spec §9).
+pub fn run_pass2_sd(params: &SvaoParams, depth: &[f32], normals: &[u32], pass1: &Pass1, map: &SdMap) -> Vec<f32> {
+    run_pass2(params, depth, normals, pass1, &crate::no_progress, || SdMapRefine { map: &map.layers, params })
+}
+
+/// BVH tracing for Ray-SVAO samples: every hit goes through the alpha test, then the shared
+/// any-hit (every triangle counts as facing: no culling, as on the GPU path). Counts its rays
+/// into `rays` when dropped.
+struct BvhRefine<'a> {
+    bvh: &'a SceneBvh,
+    surfaces: &'a Surfaces<'a>,
+    frame: &'a SvaoFrame,
+    traced: u64,
+    rays: &'a AtomicU64,
+}
+
+impl SampleTracer for BvhRefine<'_> {
+    fn trace(&mut self, ray: &mut SampleRay) {
+        self.traced += 1;
+        let state = &mut ray.state;
+        let surfaces = self.surfaces;
+        self.bvh.trace_any_hit(ray.origin, ray.direction, ray.t_min, ray.t_max, |t, tri, b| {
+            if !surfaces.passes_alpha(tri, b) {
+                return AnyHit::Ignore;
+            }
+            match sample_any_hit(state, t) {
+                ACCEPT => AnyHit::Accept,
+                ACCEPT_AND_END => AnyHit::AcceptAndEnd,
+                _ => AnyHit::Ignore,
+            }
+        });
+    }
+}
+
+impl Refine for BvhRefine<'_> {
+    fn refine(&mut self, pixel: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> f32 {
+        let frame = self.frame;
+        refine_by_ray(&frame.camera, &frame.params, pixel, s, v, z_primary, self)
+    }
+}
+
+impl Drop for BvhRefine<'_> {
+    fn drop(&mut self) {
+        self.rays.fetch_add(self.traced, Ordering::Relaxed);
+    }
+}
+
+/// Ray-SVAO pass 2 (spec §10): one traced ray per flagged sample. Returns the AO and the rays
+/// traced.
+pub fn run_raysvao_pass2(
+    bvh: &SceneBvh,
+    surfaces: &Surfaces,
+    frame: &SvaoFrame,
+    depth: &[f32],
+    normals: &[u32],
+    pass1: &Pass1,
+    progress: Progress,
+) -> (Vec<f32>, u64) {
+    let rays = AtomicU64::new(0);
+    let ao = run_pass2(&frame.params, depth, normals, pass1, progress, || BvhRefine {
+        bvh,
+        surfaces,
+        frame,
+        traced: 0,
+        rays: &rays,
+    });
+    (ao, rays.into_inner())
+}
+
+/// SD rays a map with these interval buffers traces (texels with a non-empty interval), by the
+/// same ray setup as [`run_sd_map`]; for reports of GPU runs.
+pub fn count_sd_rays(frame: &SvaoFrame, depth: &[f32], normals: &[u32], ray_min: &[u32], ray_max: &[u32]) -> u64 {
+    let params = &frame.params;
+    let sd = params.sd_size();
+    let gbuffer = GBufferSlices { depth, normals, width: params.vao.view.size().x };
+    (0..sd.y)
+        .into_par_iter()
+        .map(|y| {
+            (0..sd.x)
+                .filter(|&x| {
+                    let q = uvec2(x, y);
+                    let i = params.sd_index(q);
+                    sd_ray(&gbuffer, frame, q, ray_min[i], ray_max[i]).traced()
+                })
+                .count() as u64
+        })
+        .sum()
+}
+
+/// Rays Ray-SVAO traces for these pass-1 masks (flagged samples with a non-empty interval), by
+/// the same setup as [`run_raysvao_pass2`]; for reports of GPU runs.
+pub fn count_sample_rays(frame: &SvaoFrame, depth: &[f32], normals: &[u32], mask: &[u32]) -> u64 {
+    struct Count(u64);
+    impl SampleTracer for Count {
+        fn trace(&mut self, _: &mut SampleRay) {
+            self.0 += 1;
+        }
+    }
+    struct Counter<'a>(&'a SvaoFrame, Count);
+    impl Refine for Counter<'_> {
+        fn refine(&mut self, pixel: &PixelFrame, s: &LineSample, v: f32, z: f32) -> f32 {
+            let frame = self.0;
+            refine_by_ray(&frame.camera, &frame.params, pixel, s, v, z, &mut self.1)
+        }
+    }
+    let params = &frame.params;
+    let view = &params.vao.view;
+    let size = view.size();
+    let g = view.guard;
+    let gbuffer = GBufferSlices { depth, normals, width: size.x };
+    (g..size.y - g)
+        .into_par_iter()
+        .map(|y| {
+            let mut counter = Counter(frame, Count(0));
+            for x in g..size.x - g {
+                let p = uvec2(x, y);
+                pass2_pixel(&gbuffer, params, p, 0.0, mask[view.index(p)], &mut counter);
+            }
+            counter.1.0
+        })
+        .sum()
+}

@@ -1,0 +1,84 @@
+//! Ray-tracing entry points of the SD map (spec svao-raysd §7): one ray-generation invocation
+//! per SD texel, the reservoir any-hit on every triangle (the trace forces non-opaque), and an
+//! empty miss shader.
+
+use super::{NO_SLOT, SdPayload, reservoir_candidate, reservoir_commit, sd_ray, store_layers};
+use crate::common::alpha::{AlphaMaskHeader, alpha_test_passes};
+use crate::common::gbuffer_read::GBufferSlices;
+use crate::glam::{UVec3, Vec2};
+use crate::svao::SvaoFrame;
+use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
+use spirv_std::spirv;
+
+#[spirv(ray_generation(entry_point_name = "raysd_rgen"))]
+pub fn raysd_rgen(
+    #[spirv(launch_id)] id: UVec3,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] frame: &[SvaoFrame],
+    #[spirv(descriptor_set = 0, binding = 1)] tlas: &AccelerationStructure,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] depth: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] normals: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ray_min: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] ray_max: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] sd_map: &mut [f32],
+    #[spirv(ray_payload)] payload: &mut SdPayload,
+) {
+    let frame = &frame[0];
+    let params = &frame.params;
+    let view = &params.vao.view;
+    let q = id.truncate();
+    let size = params.sd_size();
+    if q.x >= size.x || q.y >= size.y {
+        return;
+    }
+    let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
+    let i = params.sd_index(q);
+    let ray = sd_ray(&gbuffer, frame, q, ray_min[i], ray_max[i]);
+    *payload = SdPayload::new(params, view.near, view.far, ray.cos_theta);
+    if ray.traced() {
+        unsafe {
+            tlas.trace_ray(
+                RayFlags::NO_OPAQUE | RayFlags::SKIP_CLOSEST_HIT_SHADER,
+                0xff,
+                0,
+                0,
+                0,
+                ray.origin,
+                ray.t_min,
+                ray.direction,
+                ray.t_max,
+                payload,
+            );
+        }
+    }
+    store_layers(sd_map, params, q, payload);
+}
+
+#[spirv(miss(entry_point_name = "raysd_miss"))]
+pub fn raysd_miss(#[spirv(incoming_ray_payload)] _payload: &mut SdPayload) {}
+
+/// The reservoir any-hit; triangle `prim`'s corner texture coordinates are `uvs[3·prim ..]`.
+#[spirv(any_hit(entry_point_name = "raysd_ahit"))]
+pub fn raysd_ahit(
+    #[spirv(incoming_ray_payload)] payload: &mut SdPayload,
+    #[spirv(hit_attribute)] bary: &Vec2,
+    #[spirv(primitive_id)] prim: u32,
+    #[spirv(ray_tmax)] t: f32,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 7)] uvs: &[Vec2],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] materials: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mask_headers: &[AlphaMaskHeader],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] mask_texels: &[f32],
+) {
+    // `reservoir_any_hit` split around the alpha test (a closure over the buffers would need
+    // variable pointers).
+    let (slot, z) = reservoir_candidate(payload, t, *bary);
+    let mut alpha = false;
+    if slot != NO_SLOT {
+        let i = 3 * prim as usize;
+        let uv = uvs[i] * (1.0 - bary.x - bary.y) + uvs[i + 1] * bary.x + uvs[i + 2] * bary.y;
+        alpha = alpha_test_passes(mask_headers, mask_texels, materials[prim as usize], uv);
+    }
+    let accept = reservoir_commit(payload, slot, z, alpha);
+    if !accept {
+        unsafe { spirv_std::arch::ignore_intersection() };
+    }
+}

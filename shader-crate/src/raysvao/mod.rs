@@ -1,0 +1,131 @@
+//! Ray-SVAO / RT-VAO (spec svao-raysd §10), the Ray-SD paper's reference: pass 2 traces one
+//! ray per flagged sample from the camera through the sample's snapped texel and finds every
+//! surface that matters for the halo model on that line.
+
+#[allow(unused_imports)]
+use spirv_std::num_traits::Float;
+
+#[cfg(any(feature = "rt", not(target_arch = "spirv")))]
+pub mod rt;
+
+use crate::common::camera::Camera;
+use crate::common::math::sat;
+use crate::glam::Vec3;
+use crate::svao::SvaoParams;
+use crate::vao::kernel::{LineSample, PixelFrame, halo_visibility};
+
+/// Any-hit decision: the hit does not count (traversal continues).
+pub const IGNORE: u32 = 0;
+/// Any-hit decision: commit the hit (`tMax` shrinks to it).
+pub const ACCEPT: u32 = 1;
+/// Any-hit decision: commit and end the search (the sample is fully occluded).
+pub const ACCEPT_AND_END: u32 = 2;
+
+/// The running ray distances of one sample's ray (spec §10), also its ray payload.
+#[repr(C)]
+#[derive(Copy, Clone, Debug, PartialEq)]
+#[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+pub struct SampleRayState {
+    /// Farthest hit so far in front of the sphere (starts at the falloff start `T((1+τ)R + h)`).
+    pub t_halo: f32,
+    /// Nearest hit so far inside the sphere (starts at `T(sphereEnd)`).
+    pub t_inside: f32,
+    /// `T((1+τ)R)`: start of the constant (fully occluding) area.
+    pub t_const: f32,
+    /// `T(h)`: the sphere's front.
+    pub t_sphere: f32,
+}
+
+/// A sample's ray: world-space origin and unit direction, its interval, its state, and the
+/// lateral correction `κ = |S|/|P|` that maps ray distance to object-space z.
+#[derive(Copy, Clone, Debug)]
+pub struct SampleRay {
+    pub origin: Vec3,
+    pub direction: Vec3,
+    pub t_min: f32,
+    pub t_max: f32,
+    pub state: SampleRayState,
+    pub kappa: f32,
+}
+
+/// Set up the ray of flagged sample `s` (spec §10): direction through `snap(uvS)` (not clamped),
+/// `T(z) = (|P| − z)·κ`; `tMin = max(tHalo, 0)`, `tMax = tInside`, and in screen `tMin` starts
+/// `0.01·R` behind the depth-buffer surface.
+#[inline]
+pub fn sample_ray(camera: &Camera, params: &SvaoParams, frame: &PixelFrame, s: &LineSample, z_primary: f32) -> SampleRay {
+    let view = &params.vao.view;
+    let r = frame.radius;
+    let snapped = ((s.uv * view.res).floor() + 0.5) / view.res;
+    let direction = camera.view_to_world.transform_vector3(view.uv_to_view(snapped, 1.0).normalize()).normalize();
+    let distance = frame.position.length();
+    let kappa = s.point.length() / distance;
+    let t = |z: f32| (distance - z) * kappa;
+    let falloff_start = (1.0 + params.vao.thickness) * r;
+    let state = SampleRayState {
+        t_halo: t(falloff_start + s.half_chord),
+        t_inside: t(s.sphere_end),
+        t_const: t(falloff_start),
+        t_sphere: t(s.half_chord),
+    };
+    let mut t_min = state.t_halo.max(0.0);
+    if s.in_screen {
+        t_min = t_min.max(t(z_primary) + 0.01 * r);
+    }
+    SampleRay { origin: camera.eye(), direction, t_min, t_max: state.t_inside, state, kappa }
+}
+
+/// The Ray-SVAO any-hit (spec §10) for a hit at `t` that passed the alpha and facing tests:
+/// hits nearer than the running `tHalo` do not matter; in front of the sphere a hit pushes
+/// `tHalo` back and, inside the constant area, ends the search; inside the sphere the nearest
+/// hit is committed.
+#[inline]
+pub fn sample_any_hit(state: &mut SampleRayState, t: f32) -> u32 {
+    if t < state.t_halo {
+        return IGNORE;
+    }
+    if t <= state.t_sphere {
+        state.t_halo = state.t_halo.max(t);
+        return if t >= state.t_const { ACCEPT_AND_END } else { IGNORE };
+    }
+    state.t_inside = state.t_inside.min(t);
+    ACCEPT
+}
+
+/// Visibility after the trace (spec §10): `min(v, v(Z(tInside)), vHaloOnly(Z(tHalo)))` with
+/// `Z(t) = |P| − t/κ`; `vHaloOnly` is the halo (second) term of spec §4.3.
+#[inline]
+pub fn sample_visibility(frame: &PixelFrame, s: &LineSample, params: &SvaoParams, ray: &SampleRay, v: f32) -> f32 {
+    let distance = frame.position.length();
+    let z = |t: f32| distance - t / ray.kappa;
+    let r = frame.radius;
+    let tau = params.vao.thickness;
+    let inside = halo_visibility(z(ray.state.t_inside), s, r, tau);
+    let halo_only = sat((z(ray.state.t_halo) - (1.0 + tau) * r) / s.half_chord) * (s.half_chord - s.sphere_end)
+        / (2.0 * s.half_chord);
+    v.min(inside).min(halo_only)
+}
+
+/// Traces a sample's ray, calling [`sample_any_hit`] for every candidate: `trace_ray` on the
+/// GPU, the BVH on the CPU.
+pub trait SampleTracer {
+    fn trace(&mut self, ray: &mut SampleRay);
+}
+
+/// Refine flagged sample `s` by tracing its ray (spec §10): set up, trace when the interval is
+/// not empty, evaluate.
+#[inline]
+pub fn refine_by_ray<T: SampleTracer>(
+    camera: &Camera,
+    params: &SvaoParams,
+    frame: &PixelFrame,
+    s: &LineSample,
+    v: f32,
+    z_primary: f32,
+    tracer: &mut T,
+) -> f32 {
+    let mut ray = sample_ray(camera, params, frame, s, z_primary);
+    if ray.t_min < ray.t_max {
+        tracer.trace(&mut ray);
+    }
+    sample_visibility(frame, s, params, &ray, v)
+}

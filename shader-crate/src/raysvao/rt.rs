@@ -1,0 +1,105 @@
+//! Ray-tracing entry points of Ray-SVAO (spec svao-raysd §10): pass 2 as a ray-generation shader
+//! over the inner image, one ray per flagged sample, the halo any-hit on every triangle.
+
+use super::{ACCEPT_AND_END, IGNORE, SampleRay, SampleRayState, SampleTracer, refine_by_ray, sample_any_hit};
+use crate::common::camera::Camera;
+use crate::svao::{Refine, SvaoParams};
+use crate::vao::kernel::{LineSample, PixelFrame};
+use crate::common::alpha::{AlphaMaskHeader, alpha_test_passes};
+use crate::common::gbuffer_read::GBufferSlices;
+use crate::glam::{UVec3, Vec2};
+use crate::svao::{SvaoFrame, pass2_pixel};
+use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
+use spirv_std::spirv;
+
+/// `trace_ray` with the sample state as payload. One flat struct that is both the tracer and
+/// the pass-2 source: rust-gpu cannot legalize the payload pointer inside a nested struct
+/// (`TracedRefine<TlasTracer>` fails spirv-val with "not a logical pointer").
+struct TlasRefine<'a> {
+    tlas: &'a AccelerationStructure,
+    payload: &'a mut SampleRayState,
+    camera: &'a Camera,
+    params: &'a SvaoParams,
+}
+
+impl Refine for TlasRefine<'_> {
+    fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> f32 {
+        let (camera, params) = (self.camera, self.params);
+        refine_by_ray(camera, params, frame, s, v, z_primary, self)
+    }
+}
+
+impl SampleTracer for TlasRefine<'_> {
+    fn trace(&mut self, ray: &mut SampleRay) {
+        *self.payload = ray.state;
+        unsafe {
+            self.tlas.trace_ray(
+                RayFlags::NO_OPAQUE | RayFlags::SKIP_CLOSEST_HIT_SHADER,
+                0xff,
+                0,
+                0,
+                0,
+                ray.origin,
+                ray.t_min,
+                ray.direction,
+                ray.t_max,
+                self.payload,
+            );
+        }
+        ray.state = *self.payload;
+    }
+}
+
+#[spirv(ray_generation(entry_point_name = "raysvao_rgen"))]
+pub fn raysvao_rgen(
+    #[spirv(launch_id)] id: UVec3,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] frame: &[SvaoFrame],
+    #[spirv(descriptor_set = 0, binding = 1)] tlas: &AccelerationStructure,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] depth: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] normals: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ao: &mut [f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] mask: &[u32],
+    #[spirv(ray_payload)] payload: &mut SampleRayState,
+) {
+    let frame = &frame[0];
+    let params = &frame.params;
+    let view = &params.vao.view;
+    let p = id.truncate() + view.guard;
+    if !view.is_inner(p) {
+        return;
+    }
+    let i = view.index(p);
+    let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
+    let mut source = TlasRefine { tlas, payload, camera: &frame.camera, params };
+    ao[i] = pass2_pixel(&gbuffer, params, p, ao[i], mask[i], &mut source);
+}
+
+#[spirv(miss(entry_point_name = "raysvao_miss"))]
+pub fn raysvao_miss(#[spirv(incoming_ray_payload)] _payload: &mut SampleRayState) {}
+
+/// Alpha test, then the halo decision; every triangle counts as facing the ray (the library
+/// traces without culling, spec §10's "double-sided" case).
+#[spirv(any_hit(entry_point_name = "raysvao_ahit"))]
+pub fn raysvao_ahit(
+    #[spirv(incoming_ray_payload)] payload: &mut SampleRayState,
+    #[spirv(hit_attribute)] bary: &Vec2,
+    #[spirv(primitive_id)] prim: u32,
+    #[spirv(ray_tmax)] t: f32,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] uvs: &[Vec2],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 7)] materials: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_headers: &[AlphaMaskHeader],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mask_texels: &[f32],
+) {
+    let i = 3 * prim as usize;
+    let uv = uvs[i] * (1.0 - bary.x - bary.y) + uvs[i + 1] * bary.x + uvs[i + 2] * bary.y;
+    if !alpha_test_passes(mask_headers, mask_texels, materials[prim as usize], uv) {
+        unsafe { spirv_std::arch::ignore_intersection() };
+    }
+    let decision = sample_any_hit(payload, t);
+    if decision == IGNORE {
+        unsafe { spirv_std::arch::ignore_intersection() };
+    }
+    if decision == ACCEPT_AND_END {
+        unsafe { spirv_std::arch::terminate_ray() };
+    }
+}

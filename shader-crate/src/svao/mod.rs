@@ -1,0 +1,116 @@
+//! The two-phase Stenciled VAO pipeline (SVAO paper §3; spec svao-raysd §3, §5, §9): AO pass 1
+//! on the depth buffer flags the samples that need more depth and, for the stochastic depth map,
+//! records the ray interval each SD texel must cover; AO pass 2 refines exactly those samples
+//! from a secondary source ([`Refine`]): the ray-traced SD map (`crate::raysd`) or rays traced
+//! per sample (Ray-SVAO, `crate::raysvao`).
+
+pub mod pass1;
+pub mod pass2;
+
+pub use pass1::{Pass1Pixel, pass1_pixel, sd_pixel};
+pub use pass2::{Refine, pass2_pixel};
+
+use crate::common::camera::Camera;
+use crate::glam::{UVec2, uvec2};
+use crate::vao::VaoParams;
+
+/// Secondary depth source of pass 2 (spec §2 "secondary depth mode").
+#[repr(u32)]
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Secondary {
+    /// Plain VAO: pass 1 finalizes every pixel.
+    Disabled = 0,
+    /// The ray-traced stochastic depth map (Ray-SD, spec §7).
+    StochasticDepth = 1,
+    /// Rays per flagged sample (Ray-SVAO, spec §10), the papers' reference.
+    Raytraced = 2,
+}
+
+/// Parameters of the two AO passes and of the SD map (spec §2 defaults in brackets).
+#[repr(C)]
+#[derive(Copy, Clone, Debug, PartialEq)]
+#[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+pub struct SvaoParams {
+    pub vao: VaoParams,
+    /// [`Secondary`] as `u32`.
+    pub secondary: u32,
+    /// Ray-interval optimisation on (1) or off (0) [on].
+    pub interval: u32,
+    /// Radius cutoff `t` in full-res pixels [6]: closer samples are never refined (spec §4.4).
+    pub cutoff: f32,
+    /// SD guard band `sg` in SD texels [512/div] (spec §3); 0 for Ray-SVAO.
+    pub sd_guard: u32,
+    /// Low-res size `L = ceil(W/div) × ceil(H/div)` of the SD map without its guard band.
+    pub sd_low_res: UVec2,
+    /// Layers `N` of the SD map [4]; 1, 2, 4 or 8.
+    pub sd_layers: u32,
+    /// `MAX_COUNT` of the reservoir any-hit [8], ≥ N (spec §7.3).
+    pub max_count: u32,
+    /// SD jitter table (`crate::common::tables::JitterTable` as `u32`) [scrambled].
+    pub jitter: u32,
+    pub _pad0: u32,
+    pub _pad1: u32,
+    pub _pad2: u32,
+}
+
+impl SvaoParams {
+    /// SD-map size including its guard band: `L + 2·sg` (spec §3).
+    #[inline]
+    pub fn sd_size(&self) -> UVec2 {
+        self.sd_low_res + uvec2(2 * self.sd_guard, 2 * self.sd_guard)
+    }
+
+    /// Row-major index of SD texel `q`.
+    #[inline]
+    pub fn sd_index(&self, q: UVec2) -> usize {
+        (q.y * self.sd_size().x + q.x) as usize
+    }
+}
+
+/// Everything the SVAO passes and their rays read: a storage-buffer record (too big for
+/// guaranteed push-constant space). `camera.view` and `params.vao.view` are the same projection.
+#[repr(C)]
+#[derive(Copy, Clone, Debug, PartialEq)]
+#[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+pub struct SvaoFrame {
+    pub camera: Camera,
+    pub params: SvaoParams,
+}
+
+/// UNORM8 store of the intermediate AO of a flagged pixel (spec §5: `round(sat(A)·255)/255`).
+#[inline]
+pub fn unorm8(a: f32) -> f32 {
+    #[allow(unused_imports)]
+    use spirv_std::num_traits::Float;
+    (crate::common::math::sat(a) * 255.0).round() / 255.0
+}
+
+use crate::common::gbuffer_read::GBufferSlices;
+use crate::glam::UVec3;
+use spirv_std::spirv;
+
+/// Compute entry point of AO pass 1 (one invocation per inner pixel, pixel = id + guard). The
+/// interval buffers must hold their clear values (spec §6).
+#[spirv(compute(threads(8, 8), entry_point_name = "svao_pass1"))]
+pub fn svao_pass1(
+    #[spirv(global_invocation_id)] id: UVec3,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] frame: &[SvaoFrame],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] depth: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] normals: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] ao: &mut [f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] mask: &mut [u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] mut ray_min: &mut [u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] mut ray_max: &mut [u32],
+) {
+    let params = &frame[0].params;
+    let view = &params.vao.view;
+    let p = id.truncate() + view.guard;
+    if !view.is_inner(p) {
+        return;
+    }
+    let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
+    let out = pass1_pixel(&gbuffer, params, p, &mut ray_min, &mut ray_max);
+    let i = view.index(p);
+    ao[i] = out.ao;
+    mask[i] = out.mask;
+}

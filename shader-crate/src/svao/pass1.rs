@@ -1,0 +1,105 @@
+//! AO pass 1 (spec svao-raysd §5): VAO on the depth buffer, the per-sample refinement mask and,
+//! for the SD map, the ray intervals through float-as-uint atomics.
+
+#[allow(unused_imports)]
+use spirv_std::num_traits::Float;
+
+use super::{Secondary, SvaoParams, unorm8};
+use crate::common::atomics::AtomicU32Buffer;
+use crate::common::float_order::ordered_bits;
+use crate::common::gbuffer_read::GBuffer;
+use crate::common::math::{clamp, sat};
+use crate::common::tables::AO_SAMPLES;
+use crate::glam::{UVec2, Vec2};
+use crate::vao::kernel::{
+    LineSample, PixelFrame, halo_visibility, line_sample, primary_object_z, setup_pixel, unoccluded_visibility,
+};
+
+/// Output of pass 1 for one pixel.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct Pass1Pixel {
+    /// Final AO when `mask == 0`; otherwise the un-exponentiated sum `A` as stored by a UNORM8
+    /// target (spec §5), which pass 2 completes.
+    pub ao: f32,
+    /// Bit `i` set: sample `i` needs more depth.
+    pub mask: u32,
+}
+
+/// "Requires more depth" for VAO (spec §4.4): the depth-buffer surface lies in front of the
+/// constant area, and the sample is farther than the radius cutoff on screen.
+#[inline]
+pub fn needs_refinement(z: f32, s: &LineSample, frame: &PixelFrame, params: &SvaoParams) -> bool {
+    z > (1.0 + params.vao.thickness) * frame.radius && s.screen_distance > params.cutoff
+}
+
+/// SD texel of an (unsnapped, unclamped) uv: `clamp(floor(uv·L) + sg, 0, L + 2sg − 1)` per axis
+/// (spec §5 `SDpixel`).
+#[inline]
+pub fn sd_pixel(uv: Vec2, params: &SvaoParams) -> UVec2 {
+    let low = params.sd_low_res.as_vec2();
+    let sg = params.sd_guard as f32;
+    let hi = params.sd_size() - 1;
+    let x = clamp((uv.x * low.x).floor() + sg, 0.0, hi.x as f32);
+    let y = clamp((uv.y * low.y).floor() + sg, 0.0, hi.y as f32);
+    UVec2::new(x as u32, y as u32)
+}
+
+/// AO pass 1 of pixel `p` (spec §5). `ray_min`/`ray_max` are the SD-size interval buffers
+/// (only touched for [`Secondary::StochasticDepth`]); they must be cleared to
+/// `RAY_MIN_CLEAR`/`RAY_MAX_CLEAR` before the pass.
+#[inline]
+pub fn pass1_pixel<G: GBuffer, A: AtomicU32Buffer, B: AtomicU32Buffer>(
+    gbuffer: &G,
+    params: &SvaoParams,
+    p: UVec2,
+    ray_min: &mut A,
+    ray_max: &mut B,
+) -> Pass1Pixel {
+    let vao = &params.vao;
+    let view = &vao.view;
+    let frame = match setup_pixel(gbuffer, view, vao.radius, vao.max_screen_radius, p) {
+        Some(f) => f,
+        None => return Pass1Pixel { ao: 1.0, mask: 0 },
+    };
+    let sd = params.secondary == Secondary::StochasticDepth as u32;
+    let traced = params.secondary == Secondary::Raytraced as u32;
+    let distance = frame.position.length();
+    let mut sum = 0.0;
+    let mut mask = 0u32;
+    let mut i = 0;
+    while i < AO_SAMPLES {
+        let s = line_sample(&frame, view, i);
+        if s.valid {
+            if s.same_pixel {
+                sum += unoccluded_visibility(&s);
+            } else {
+                let mut z = primary_object_z(gbuffer, view, &frame, &s);
+                sum += halo_visibility(z, &s, frame.radius, vao.thickness);
+                // Out-of-screen samples are always refined: Ray-SVAO traces them, the SD map
+                // covers them with its guard band (spec §5 "force").
+                let force = !s.in_screen && (traced || (sd && params.sd_guard > 0));
+                if force && sd {
+                    z = f32::MAX;
+                }
+                if params.secondary != Secondary::Disabled as u32 && (force || needs_refinement(z, &s, &frame, params))
+                {
+                    mask |= 1 << i;
+                    if sd {
+                        let q = params.sd_index(sd_pixel(s.uv, params));
+                        if params.interval != 0 {
+                            // Euclidean camera distances `|P| − z` (spec §5, uncorrected).
+                            let far_end = z.min((1.0 + vao.thickness) * frame.radius + s.half_chord);
+                            ray_min.atomic_min(q, ordered_bits(distance - far_end));
+                            ray_max.atomic_max(q, ordered_bits(distance - s.sphere_end));
+                        } else {
+                            ray_max.atomic_max(q, 1);
+                        }
+                    }
+                }
+            }
+        }
+        i += 1;
+    }
+    let a = (2.0 / AO_SAMPLES as f32) * sum;
+    if mask == 0 { Pass1Pixel { ao: sat(a).powf(vao.exponent), mask } } else { Pass1Pixel { ao: unorm8(a), mask } }
+}

@@ -1,0 +1,60 @@
+//! AO pass 2 (spec svao-raysd §9, §10): refine the samples flagged in pass 1 from a secondary
+//! depth source and finish the pixel.
+
+#[allow(unused_imports)]
+use spirv_std::num_traits::Float;
+
+use super::SvaoParams;
+use crate::common::gbuffer_read::GBuffer;
+use crate::common::math::sat;
+use crate::common::tables::AO_SAMPLES;
+use crate::glam::UVec2;
+use crate::vao::kernel::{LineSample, PixelFrame, halo_visibility, line_sample, primary_object_z, setup_pixel};
+
+/// A secondary depth source: the SD map (spec §9) or traced rays (spec §10).
+pub trait Refine {
+    /// Visibility of flagged sample `s` given its starting value `v` (the primary-depth
+    /// visibility in screen, 1 for a dropped out-of-screen sample) and the primary depth's
+    /// object-space `z_primary`. Sources combine with `min` (spec §4.3 `a_i = min_j a_ij`).
+    fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> f32;
+}
+
+/// AO pass 2 of pixel `p` (spec §9): for every flagged sample, subtract its pass-1 (primary)
+/// visibility and add the refined one; `A = AO_stored + (2/8)·Δ`, clamped to [0, 1] before the
+/// exponent (spec §9: `A` may dip below 0 through the UNORM8 store). Pixels without flags keep
+/// their pass-1 value.
+#[inline]
+pub fn pass2_pixel<G: GBuffer, R: Refine>(
+    gbuffer: &G,
+    params: &SvaoParams,
+    p: UVec2,
+    stored: f32,
+    mask: u32,
+    source: &mut R,
+) -> f32 {
+    if mask == 0 {
+        return stored;
+    }
+    let vao = &params.vao;
+    let view = &vao.view;
+    let frame = match setup_pixel(gbuffer, view, vao.radius, vao.max_screen_radius, p) {
+        Some(f) => f,
+        None => return stored,
+    };
+    let mut delta = 0.0;
+    let mut i = 0;
+    while i < AO_SAMPLES {
+        if mask & (1 << i) != 0 {
+            let s = line_sample(&frame, view, i);
+            let z = primary_object_z(gbuffer, view, &frame, &s);
+            let v = halo_visibility(z, &s, frame.radius, vao.thickness);
+            delta -= v;
+            // Out of screen the clamped border texel is dropped (spec §9, §15.8).
+            let start = if s.in_screen { v } else { 1.0 };
+            delta += source.refine(&frame, &s, start, z);
+        }
+        i += 1;
+    }
+    let a = stored + (2.0 / AO_SAMPLES as f32) * delta;
+    sat(a).powf(vao.exponent)
+}

@@ -1,0 +1,196 @@
+//! The AO techniques a user picks by name, their options, and one run of a technique on a given
+//! G-buffer (the same G-buffer for every technique of a comparison).
+
+use crate::frame::Frame;
+use aokit_shaders::common::tables::JitterTable;
+use aokit_shaders::glam::{UVec2, uvec2};
+use aokit_shaders::groundtruth::GroundTruthParams;
+use aokit_shaders::svao::{Secondary, SvaoFrame, SvaoParams};
+
+/// Options of the ray-traced stochastic depth map (spec svao-raysd §2 defaults).
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct SdOptions {
+    /// SD-map resolution divisor: 1 (full), 2 (½) or 4 (¼, default).
+    pub divisor: u32,
+    /// Layers N: 1, 2, 4 (default) or 8.
+    pub layers: u32,
+    /// MAX_COUNT of the reservoir any-hit (default 8; raised to N when smaller).
+    pub max_count: u32,
+    /// Radius cutoff in full-res pixels (default 6).
+    pub cutoff: f32,
+    /// Ray-interval optimisation (default on).
+    pub interval: bool,
+    /// Jitter table (default: the reference's scrambled table).
+    pub jitter: JitterTable,
+    /// SD guard band in full-res pixels (default 512, i.e. 128 SD texels at ¼).
+    pub guard: u32,
+}
+
+impl Default for SdOptions {
+    fn default() -> Self {
+        SdOptions {
+            divisor: 4,
+            layers: 4,
+            max_count: 8,
+            cutoff: 6.0,
+            interval: true,
+            jitter: JitterTable::Scrambled,
+            guard: 512,
+        }
+    }
+}
+
+impl SdOptions {
+    /// Reject options the kernels do not support, with a message naming the option.
+    pub fn validate(&self) -> Result<(), String> {
+        if ![1, 2, 4].contains(&self.divisor) {
+            return Err(format!("--sd-res: divisor {} is not 1 (full), 2 (half) or 4 (quarter)", self.divisor));
+        }
+        if ![1, 2, 4, 8].contains(&self.layers) {
+            return Err(format!("--sd-layers {} is not 1, 2, 4 or 8", self.layers));
+        }
+        if self.max_count == 0 {
+            return Err("--max-count must be at least 1".into());
+        }
+        if !(self.cutoff.is_finite() && self.cutoff >= 0.0) {
+            return Err(format!("--cutoff {} must be a non-negative number of pixels", self.cutoff));
+        }
+        Ok(())
+    }
+
+    /// The options as JSON for reports.
+    pub fn describe(&self) -> serde_json::Value {
+        serde_json::json!({
+            "sd_res": match self.divisor { 1 => "full", 2 => "half", _ => "quarter" },
+            "sd_layers": self.layers, "max_count": self.max_count.max(self.layers), "cutoff": self.cutoff,
+            "interval": self.interval, "jitter": format!("{:?}", self.jitter).to_lowercase(),
+            "sd_guard": self.guard,
+        })
+    }
+}
+
+/// An AO technique.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub enum Technique {
+    /// Plain VAO on the depth buffer (spec §4–§5).
+    Vao,
+    /// Stenciled VAO refined from the ray-traced stochastic depth map (spec §3, §5, §7, §9).
+    RaySd(SdOptions),
+    /// Stenciled VAO refined by one ray per flagged sample (spec §10), the Ray-SD reference.
+    RaySvao { cutoff: f32 },
+    /// World-space ray-traced AO (spec gtao-raymarch-hybrid §5).
+    GroundTruth { spp: u32, uniform: bool },
+}
+
+impl Technique {
+    /// The name the CLI uses.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Technique::Vao => "vao",
+            Technique::RaySd(_) => "raysd",
+            Technique::RaySvao { .. } => "raysvao",
+            Technique::GroundTruth { .. } => "groundtruth",
+        }
+    }
+
+    /// Techniques from their CLI names, with shared options.
+    pub fn parse(name: &str, sd: SdOptions, spp: u32, uniform: bool) -> Result<Technique, String> {
+        Ok(match name.trim() {
+            "vao" => Technique::Vao,
+            "raysd" => Technique::RaySd(sd),
+            "raysvao" => Technique::RaySvao { cutoff: sd.cutoff },
+            "groundtruth" => Technique::GroundTruth { spp, uniform },
+            other => {
+                return Err(format!("unknown technique '{other}' (known: vao, raysd, raysvao, groundtruth)"));
+            }
+        })
+    }
+
+    /// Whether the technique's output goes through the bilateral blur (spec §3 step 5).
+    pub fn blurred(&self) -> bool {
+        !matches!(self, Technique::GroundTruth { .. })
+    }
+
+    /// Options as JSON for reports.
+    pub fn describe(&self) -> serde_json::Value {
+        match self {
+            Technique::Vao => serde_json::json!({}),
+            Technique::RaySd(o) => o.describe(),
+            Technique::RaySvao { cutoff } => serde_json::json!({ "cutoff": cutoff }),
+            Technique::GroundTruth { spp, uniform } => serde_json::json!({ "spp": spp, "uniform": uniform }),
+        }
+    }
+}
+
+/// Low-res SD size `ceil(W/div) × ceil(H/div)` of a full target (spec §3).
+pub fn sd_low_res(full: UVec2, divisor: u32) -> UVec2 {
+    uvec2(full.x.div_ceil(divisor), full.y.div_ceil(divisor))
+}
+
+impl Frame {
+    /// The SVAO record for a secondary mode: Ray-SD with `sd`, Ray-SVAO (no SD map, no guard),
+    /// or plain VAO.
+    pub fn svao_frame(&self, secondary: Secondary, sd: &SdOptions) -> SvaoFrame {
+        let full = self.camera.view.size();
+        let is_sd = secondary == Secondary::StochasticDepth;
+        let (low, guard) = if is_sd { (sd_low_res(full, sd.divisor), sd.guard / sd.divisor) } else { (uvec2(1, 1), 0) };
+        SvaoFrame {
+            camera: self.camera,
+            params: SvaoParams {
+                vao: self.vao_params(),
+                secondary: secondary as u32,
+                interval: sd.interval as u32,
+                cutoff: sd.cutoff,
+                sd_guard: guard,
+                sd_low_res: low,
+                sd_layers: sd.layers,
+                max_count: sd.max_count.max(sd.layers),
+                jitter: sd.jitter as u32,
+                _pad0: 0,
+                _pad1: 0,
+                _pad2: 0,
+            },
+        }
+    }
+
+    /// Ground-truth parameters with this frame's radius and exponent.
+    pub fn ground_truth_params(&self, spp: u32, uniform: bool) -> GroundTruthParams {
+        GroundTruthParams { radius: self.radius, exponent: self.exponent, samples: spp, uniform: uniform as u32 }
+    }
+}
+
+/// Diagnostic buffers of a stenciled run, for the report's images.
+#[derive(Clone, Debug, Default)]
+pub struct SvaoDebug {
+    /// Refinement mask per full-target pixel.
+    pub mask: Vec<u32>,
+    /// SD-size interval buffers (float bits; 0 = unset) and the SD size.
+    pub ray_min: Vec<u32>,
+    pub ray_max: Vec<u32>,
+    pub sd_size: UVec2,
+    /// SD map: `layers` normalized depths per SD texel.
+    pub sd_map: Vec<f32>,
+    pub layers: u32,
+}
+
+/// One technique's result on a G-buffer.
+#[derive(Clone, Debug)]
+pub struct TechniqueRun {
+    /// AO before the blur (full target, guard band = 1).
+    pub ao: Vec<f32>,
+    /// Final AO: blurred where the technique blurs, else `ao`.
+    pub ao_final: Vec<f32>,
+    /// `(pass, ms)`: wall clock on the CPU, timestamp queries on Vulkan.
+    pub passes: Vec<(&'static str, f64)>,
+    /// Rays traced (SD rays, per-sample rays or ground-truth rays).
+    pub rays: u64,
+    /// Samples flagged for refinement in pass 1.
+    pub refined_samples: u64,
+    pub debug: Option<SvaoDebug>,
+}
+
+impl TechniqueRun {
+    pub fn total_ms(&self) -> f64 {
+        self.passes.iter().map(|(_, ms)| ms).sum()
+    }
+}
