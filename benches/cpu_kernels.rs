@@ -1,11 +1,17 @@
 //! CPU kernel throughput on the Sponza G-buffer at 1920×1080 (+64 px guard band = 2048×1208).
-//! Team target: one VAO pass ≤ 0.1 s on 2 cores. Run: `cargo bench --bench cpu_kernels`.
+//! Team targets: one VAO pass ≤ 0.1 s on 2 cores; ≥ 5 M incoherent AO rays/s. Also the Ray-SD
+//! passes and the reservoir any-hit. Run: `cargo bench --bench cpu_kernels`.
 
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::render::CpuRenderer;
 use aokit::scene::builtin;
+use aokit::technique::SdOptions;
 use aokit_cpu::no_progress;
-use criterion::{Criterion, criterion_group, criterion_main};
+use aokit_cpu::svao as svao_cpu;
+use aokit_shaders::glam::vec2;
+use aokit_shaders::raysd::{MAX_LAYERS, SdPayload, reservoir_any_hit};
+use aokit_shaders::svao::Secondary;
+use criterion::{Criterion, Throughput, criterion_group, criterion_main};
 use std::time::Duration;
 
 fn kernels(c: &mut Criterion) {
@@ -34,7 +40,68 @@ fn kernels(c: &mut Criterion) {
     group.bench_function("blur_two_passes", |bench| {
         bench.iter(|| aokit_cpu::run_blur(&frame.blur_params(), &ao, &g.depth))
     });
+    // Ray-SD (¼ map, N = 4): pass 1, the SD map (reservoir any-hit over the BVH), pass 2.
+    let svao = frame.svao_frame(Secondary::StochasticDepth, &SdOptions::default());
+    group.bench_function("svao_pass1", |bench| {
+        bench.iter(|| svao_cpu::run_pass1(&svao.params, &g.depth, &g.normals, &no_progress))
+    });
+    let pass1 = svao_cpu::run_pass1(&svao.params, &g.depth, &g.normals, &no_progress);
+    let bvh = aokit_cpu::SceneBvh::build(&scene.triangles);
+    let normals = scene.face_normals();
+    let masks = scene.alpha_masks();
+    let surfaces = aokit_cpu::Surfaces {
+        face_normals: &normals,
+        uvs: &scene.triangle_uvs,
+        materials: &scene.triangle_materials,
+        mask_headers: &masks.0,
+        mask_texels: &masks.1,
+    };
+    let map = svao_cpu::run_sd_map(&bvh, &surfaces, &svao, &g.depth, &g.normals, &pass1, svao_cpu::HitOrder::Traversal);
+    group.throughput(Throughput::Elements(map.rays));
+    group.bench_function("raysd_sd_map_rays", |bench| {
+        bench.iter(|| {
+            svao_cpu::run_sd_map(&bvh, &surfaces, &svao, &g.depth, &g.normals, &pass1, svao_cpu::HitOrder::Traversal)
+        })
+    });
+    group.throughput(Throughput::Elements(pass1.refined_samples()));
+    group.bench_function("raysd_pass2_refined_samples", |bench| {
+        bench.iter(|| svao_cpu::run_pass2_sd(&svao.params, &g.depth, &g.normals, &pass1, &map))
+    });
+    // Ground-truth AO rays per second (4 spp over the inner image).
+    let gt = frame.ground_truth_params(4, false);
+    group.throughput(Throughput::Elements(4 * frame.inner.x as u64 * frame.inner.y as u64));
+    group.bench_function("groundtruth_ao_rays", |bench| {
+        bench.iter(|| renderer.ground_truth(&frame, &g, &gt, &no_progress))
+    });
     group.finish();
+
+    // The reservoir any-hit alone: 16-hit streams into an N = 4 payload.
+    let mut micro = c.benchmark_group("reservoir_any_hit");
+    micro.throughput(Throughput::Elements(16 * 1024));
+    micro.bench_function("hits", |bench| {
+        bench.iter(|| {
+            let mut kept = 0u32;
+            for stream in 0..1024u32 {
+                let mut p = SdPayload {
+                    depth: [1.0; MAX_LAYERS],
+                    count: 0,
+                    layers: 4,
+                    max_count: u32::MAX,
+                    cos_theta: 1.0,
+                    near: 0.0,
+                    far: 1.0,
+                };
+                for k in 0..16u32 {
+                    let t = ((stream * 16 + k) as f32 * 0.618_034).fract();
+                    let b = vec2(t, (t * 7.0).fract());
+                    reservoir_any_hit(&mut p, t, b, || true);
+                }
+                kept += p.count;
+            }
+            std::hint::black_box(kept)
+        })
+    });
+    micro.finish();
 }
 
 criterion_group!(benches, kernels);

@@ -4,10 +4,10 @@ use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::output::{crop_inner, write_exr, write_png};
 use aokit::render::{CpuRenderer, Renderer, VulkanRenderer};
 use aokit::report::{BenchResult, CompareReport};
-use aokit::technique::{SdOptions, Technique};
-use aokit_shaders::common::tables::JitterTable;
 use aokit::scene::Scene;
 use aokit::scene::builtin::{self, BuiltinScene};
+use aokit::technique::{SdOptions, Technique};
+use aokit_shaders::common::tables::JitterTable;
 use aokit_shaders::glam::Vec3;
 use aokit_vulkan::GpuOptions;
 use clap::{Parser, Subcommand, ValueEnum};
@@ -377,6 +377,7 @@ fn compare(args: CompareArgs) -> Result<(), String> {
         gbuffer_ms,
         (reference, &reference_run),
         &runs,
+        &args.options.sd_options()?,
     );
     println!("{}", report.table());
     if let Some(path) = &args.json {
@@ -405,8 +406,10 @@ fn bench(args: BenchArgs) -> Result<(), String> {
     bar.set_message(format!("bench {} on {}", technique.name(), renderer.backend_name()));
     let mut frames = Vec::new();
     for k in 0..total {
-        let (gbuffer, gbuffer_ms) = renderer.gbuffer(&scene, &frame, &aokit_cpu::no_progress).map_err(|e| e.to_string())?;
-        let run = renderer.run(&scene, &frame, &gbuffer, &technique, &aokit_cpu::no_progress).map_err(|e| e.to_string())?;
+        let (gbuffer, gbuffer_ms) =
+            renderer.gbuffer(&scene, &frame, &aokit_cpu::no_progress).map_err(|e| e.to_string())?;
+        let run =
+            renderer.run(&scene, &frame, &gbuffer, &technique, &aokit_cpu::no_progress).map_err(|e| e.to_string())?;
         if k >= args.warmup {
             let mut passes = vec![("gbuffer", gbuffer_ms)];
             passes.extend(run.passes.iter().copied());

@@ -1,15 +1,16 @@
 //! The VAO pipeline on either back-end: G-buffer → VAO → bilateral blur.
 
 use crate::frame::Frame;
+use crate::scene::Scene;
 use crate::technique::{SdOptions, SvaoDebug, Technique, TechniqueRun};
 use aokit_cpu::svao as svao_cpu;
-use aokit_shaders::svao::{Secondary, SvaoFrame};
-use crate::scene::Scene;
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
+use aokit_shaders::svao::{Secondary, SvaoFrame};
 use aokit_vulkan::{
-    Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, GroundTruthPipeline, RasterGBuffer, SceneAccel, ScreenPasses, SvaoPipelines,
+    Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, GroundTruthPipeline, RasterGBuffer, SceneAccel, ScreenPasses,
+    SvaoPipelines,
 };
 use std::time::Instant;
 
@@ -262,11 +263,18 @@ impl Drop for VulkanRenderer {
 impl CpuRenderer {
     /// Run `technique` on a given G-buffer (spec svao-raysd §3 pipeline for the VAO family,
     /// blur included where the technique blurs).
-    pub fn run(&self, frame: &Frame, gbuffer: &GBufferImage, technique: &Technique, progress: Progress) -> TechniqueRun {
+    pub fn run(
+        &self,
+        frame: &Frame,
+        gbuffer: &GBufferImage,
+        technique: &Technique,
+        progress: Progress,
+    ) -> TechniqueRun {
         let (depth, normals) = (&gbuffer.depth[..], &gbuffer.normals[..]);
         let mut passes: PassTimes = Vec::new();
         let mut rays = 0;
         let mut refined_samples = 0;
+        let mut interval_sum = None;
         let mut debug = None;
         let ao = match technique {
             Technique::Vao => {
@@ -301,8 +309,10 @@ impl CpuRenderer {
                 let ao = svao_cpu::run_pass2_sd(&svao.params, depth, normals, &pass1, &map);
                 passes.push(("ao_pass2", ms_since(t)));
                 rays = map.rays;
+                interval_sum = Some(svao_cpu::sd_ray_stats(&svao, depth, normals, &pass1.ray_min, &pass1.ray_max).1);
                 refined_samples = pass1.refined_samples();
                 debug = Some(SvaoDebug {
+                    ao_pass1: pass1.ao,
                     mask: pass1.mask,
                     ray_min: pass1.ray_min,
                     ray_max: pass1.ray_max,
@@ -330,7 +340,7 @@ impl CpuRenderer {
                 passes.push(("ao_pass2_rays", ms_since(t)));
                 rays = traced;
                 refined_samples = pass1.refined_samples();
-                debug = Some(SvaoDebug { mask: pass1.mask, ..Default::default() });
+                debug = Some(SvaoDebug { ao_pass1: pass1.ao, mask: pass1.mask, ..Default::default() });
                 ao
             }
         };
@@ -342,7 +352,7 @@ impl CpuRenderer {
         } else {
             ao.clone()
         };
-        TechniqueRun { ao, ao_final, passes, rays, refined_samples, debug }
+        TechniqueRun { ao, ao_final, passes, rays, refined_samples, interval_sum, debug }
     }
 }
 
@@ -368,7 +378,8 @@ impl VulkanRenderer {
             }
             let positions: Vec<[f32; 3]> = scene.triangles.iter().flatten().map(|v| v.to_array()).collect();
             let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
-            let accel = SceneAccel::build(&self.gpu, &positions, &uvs, &scene.triangle_materials, &scene.alpha_masks())?;
+            let accel =
+                SceneAccel::build(&self.gpu, &positions, &uvs, &scene.triangle_materials, &scene.alpha_masks())?;
             built = Some(accel.build_ms);
             *cache = Some((key, accel));
         }
@@ -377,19 +388,44 @@ impl VulkanRenderer {
     }
 
     /// Run `technique` on a given G-buffer (uploaded).
-    pub fn run(&self, scene: &Scene, frame: &Frame, gbuffer: &GBufferImage, technique: &Technique) -> Result<TechniqueRun, GpuError> {
+    pub fn run(
+        &self,
+        scene: &Scene,
+        frame: &Frame,
+        gbuffer: &GBufferImage,
+        technique: &Technique,
+    ) -> Result<TechniqueRun, GpuError> {
         match technique {
             Technique::Vao => {
                 let r = self.ao(frame, gbuffer.clone())?;
                 let ao_final = r.ao_blurred;
-                Ok(TechniqueRun { ao: r.ao, ao_final, passes: r.passes, rays: 0, refined_samples: 0, debug: None })
+                Ok(TechniqueRun {
+                    ao: r.ao,
+                    ao_final,
+                    passes: r.passes,
+                    rays: 0,
+                    refined_samples: 0,
+                    interval_sum: None,
+                    debug: None,
+                })
             }
             Technique::GroundTruth { spp, uniform } => {
-                let (ao, passes) = self.ground_truth(scene, frame, gbuffer, &frame.ground_truth_params(*spp, *uniform))?;
+                let (ao, passes) =
+                    self.ground_truth(scene, frame, gbuffer, &frame.ground_truth_params(*spp, *uniform))?;
                 let rays = frame.inner.x as u64 * frame.inner.y as u64 * *spp as u64;
-                Ok(TechniqueRun { ao: ao.clone(), ao_final: ao, passes, rays, refined_samples: 0, debug: None })
+                Ok(TechniqueRun {
+                    ao: ao.clone(),
+                    ao_final: ao,
+                    passes,
+                    rays,
+                    refined_samples: 0,
+                    interval_sum: None,
+                    debug: None,
+                })
             }
-            Technique::RaySd(sd) => self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::StochasticDepth, sd)),
+            Technique::RaySd(sd) => {
+                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::StochasticDepth, sd))
+            }
             Technique::RaySvao { cutoff } => {
                 let options = SdOptions { cutoff: *cutoff, ..Default::default() };
                 self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Raytraced, &options))
@@ -397,7 +433,13 @@ impl VulkanRenderer {
         }
     }
 
-    fn run_svao(&self, scene: &Scene, frame: &Frame, gbuffer: &GBufferImage, svao: &SvaoFrame) -> Result<TechniqueRun, GpuError> {
+    fn run_svao(
+        &self,
+        scene: &Scene,
+        frame: &Frame,
+        gbuffer: &GBufferImage,
+        svao: &SvaoFrame,
+    ) -> Result<TechniqueRun, GpuError> {
         let pipelines = match self.svao.get() {
             Some(p) => p,
             None => {
@@ -421,12 +463,15 @@ impl VulkanRenderer {
         let params = &svao.params;
         let sd = params.secondary == Secondary::StochasticDepth as u32;
         let refined_samples = out.mask.iter().map(|m| m.count_ones() as u64).sum();
-        let rays = if sd {
-            aokit_cpu::svao::count_sd_rays(svao, &gbuffer.depth, &gbuffer.normals, &out.ray_min, &out.ray_max)
+        let (rays, interval_sum) = if sd {
+            let (rays, sum) =
+                aokit_cpu::svao::sd_ray_stats(svao, &gbuffer.depth, &gbuffer.normals, &out.ray_min, &out.ray_max);
+            (rays, Some(sum))
         } else {
-            aokit_cpu::svao::count_sample_rays(svao, &gbuffer.depth, &gbuffer.normals, &out.mask)
+            (aokit_cpu::svao::count_sample_rays(svao, &gbuffer.depth, &gbuffer.normals, &out.mask), None)
         };
         let debug = SvaoDebug {
+            ao_pass1: out.ao_pass1,
             mask: out.mask,
             ray_min: if sd { out.ray_min } else { Vec::new() },
             ray_max: if sd { out.ray_max } else { Vec::new() },
@@ -434,11 +479,20 @@ impl VulkanRenderer {
             sd_map: out.sd_map,
             layers: params.sd_layers,
         };
-        Ok(TechniqueRun { ao: out.ao, ao_final: blurred.0, passes, rays, refined_samples, debug: Some(debug) })
+        Ok(TechniqueRun {
+            ao: out.ao,
+            ao_final: blurred.0,
+            passes,
+            rays,
+            refined_samples,
+            interval_sum,
+            debug: Some(debug),
+        })
     }
 }
 
-/// A back-end chosen at run time.
+/// A back-end chosen at run time (one per process: the size difference does not matter).
+#[allow(clippy::large_enum_variant)]
 pub enum Renderer {
     Cpu(CpuRenderer),
     Vulkan(VulkanRenderer),

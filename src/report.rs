@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 /// Metrics and costs of one technique against the reference.
 #[derive(Clone, Debug)]
 pub struct CompareRow {
-    /// File-name-safe unique label (the technique name, numbered if repeated).
+    /// File-name-safe unique label (name plus non-default options, numbered if repeated).
     pub label: String,
     pub technique: Technique,
     pub mse: f64,
@@ -53,6 +53,7 @@ impl CompareReport {
         gbuffer_ms: f64,
         (reference, reference_run): (Technique, &TechniqueRun),
         runs: &[(Technique, TechniqueRun)],
+        defaults: &crate::technique::SdOptions,
     ) -> CompareReport {
         let view = frame.camera.view;
         let (w, h) = (frame.inner.x as usize, frame.inner.y as usize);
@@ -63,12 +64,12 @@ impl CompareReport {
             let ao = crop_inner(&view, &run.ao_final);
             let img = ImageRef { width: w, height: h, pixels: &ao };
             let m = mse(img, reference_img, None).unwrap_or(f64::NAN);
-            let count = runs.iter().filter(|(t, _)| t.name() == technique.name()).count();
-            let label = if count > 1 {
-                format!("{}{}", technique.name(), rows.len())
-            } else {
-                technique.name().to_string()
-            };
+            let base = technique.label(defaults);
+            let taken = rows
+                .iter()
+                .filter(|r: &&CompareRow| r.label == base || r.label.starts_with(&format!("{base}-")))
+                .count();
+            let label = if taken == 0 { base } else { format!("{base}-{}", taken + 1) };
             rows.push(CompareRow {
                 label,
                 technique: *technique,
@@ -107,9 +108,11 @@ impl CompareReport {
             .map(|r| {
                 serde_json::json!({
                     "technique": r.technique.name(),
+                    "label": r.label,
                     "options": r.technique.describe(),
                     "mse": r.mse, "psnr": finite_or_null(r.psnr), "ssim": r.ssim,
                     "rays": r.rays, "refined_samples": r.refined_samples,
+                    "ray_interval_sum": r.run.interval_sum,
                     "passes": r.passes.iter().map(|(n, ms)| serde_json::json!({"name": n, "ms": ms})).collect::<Vec<_>>(),
                     "total_ms": r.total_ms,
                 })
@@ -129,7 +132,7 @@ impl CompareReport {
     /// A plain-text table, one row per technique.
     pub fn table(&self) -> String {
         let mut s = format!(
-            "{} on {} ({}), {}×{}, reference {}\n{:<12} {:>11} {:>7} {:>7} {:>11} {:>10} {:>10}  passes (ms)\n",
+            "{} on {} ({}), {}×{}, reference {}\n{:<24} {:>11} {:>7} {:>7} {:>11} {:>10} {:>11} {:>10}  passes (ms)\n",
             self.scene,
             self.backend,
             self.device,
@@ -142,18 +145,20 @@ impl CompareReport {
             "SSIM",
             "rays",
             "refined",
+            "Σ interval",
             "total ms"
         );
         for r in &self.rows {
             let passes: Vec<_> = r.passes.iter().map(|(n, ms)| format!("{n} {ms:.1}")).collect();
             s += &format!(
-                "{:<12} {:>11.3e} {:>7.2} {:>7} {:>11} {:>10} {:>10.1}  {}\n",
+                "{:<24} {:>11.3e} {:>7.2} {:>7} {:>11} {:>10} {:>11} {:>10.1}  {}\n",
                 r.label,
                 r.mse,
                 r.psnr,
                 r.ssim.map_or("-".into(), |v| format!("{v:.4}")),
                 r.rays,
                 r.refined_samples,
+                r.run.interval_sum.map_or("-".into(), |v| format!("{v:.4e}")),
                 r.total_ms,
                 passes.join(", ")
             );
@@ -173,11 +178,15 @@ impl CompareReport {
             save(signed_difference(w, h, &r.ao, &self.reference_ao), &dir.join(format!("{}_diff.png", r.label)))?;
             if let Some(debug) = &r.run.debug {
                 let view = frame.camera.view;
-                let counts: Vec<f32> = crop_inner(&view, &debug.mask.iter().map(|m| m.count_ones() as f32).collect::<Vec<_>>());
+                let counts: Vec<f32> =
+                    crop_inner(&view, &debug.mask.iter().map(|m| m.count_ones() as f32).collect::<Vec<_>>());
                 save(heatmap(w, h, &counts, 8.0), &dir.join(format!("{}_refined.png", r.label)))?;
                 if !debug.ray_max.is_empty() {
                     let s = debug.sd_size;
-                    save(interval_lengths(s.x, s.y, &debug.ray_min, &debug.ray_max), &dir.join(format!("{}_intervals.png", r.label)))?;
+                    save(
+                        interval_lengths(s.x, s.y, &debug.ray_min, &debug.ray_max),
+                        &dir.join(format!("{}_intervals.png", r.label)),
+                    )?;
                 }
                 if !debug.sd_map.is_empty() {
                     save(sd_layers(debug, frame, gbuffer), &dir.join(format!("{}_sd_layers.png", r.label)))?;
@@ -201,13 +210,14 @@ impl CompareReport {
         for r in &self.rows {
             let passes: Vec<_> = r.passes.iter().map(|(n, ms)| format!("{n}&nbsp;{ms:.1}")).collect();
             rows += &format!(
-                "<tr><td>{}</td><td>{:.3e}</td><td>{:.2}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.1}</td><td>{}</td></tr>\n",
+                "<tr><td>{}</td><td>{:.3e}</td><td>{:.2}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.1}</td><td>{}</td></tr>\n",
                 r.label,
                 r.mse,
                 r.psnr,
                 r.ssim.map_or("–".into(), |v| format!("{v:.4}")),
                 r.rays,
                 r.refined_samples,
+                r.run.interval_sum.map_or("–".into(), |v| format!("{v:.4e}")),
                 r.total_ms,
                 passes.join(", ")
             );
@@ -230,7 +240,11 @@ impl CompareReport {
                 rel(&format!("{}_diff.png", r.label)),
                 l = r.label
             );
-            for (suffix, what) in [("refined", "refined samples per pixel (0–8)"), ("intervals", "ray-interval length per SD texel"), ("sd_layers", "SD-map layers, one colour per slot")] {
+            for (suffix, what) in [
+                ("refined", "refined samples per pixel (0–8)"),
+                ("intervals", "ray-interval length per SD texel"),
+                ("sd_layers", "SD-map layers, one colour per slot"),
+            ] {
                 let name = format!("{}_{suffix}.png", r.label);
                 if images.join(&name).exists() {
                     extras += &format!(
@@ -256,7 +270,7 @@ figcaption {{ font-size: 0.9em; text-align: center; }}
 </style></head><body>
 <h1>aokit compare: {scene}</h1>
 <p id="setup">Back-end <b>{backend}</b> ({device}), {w}×{h}, reference <b>{reference}</b>. Metrics on the final AO over the inner image. Difference images: red = brighter than the reference, blue = darker, full colour at |Δ| ≥ 0.25.</p>
-<table id="metrics"><tr><th>technique</th><th>MSE</th><th>PSNR (dB)</th><th>SSIM</th><th>rays</th><th>refined samples</th><th>total ms</th><th>passes (ms)</th></tr>
+<table id="metrics"><tr><th>technique</th><th>MSE</th><th>PSNR (dB)</th><th>SSIM</th><th>rays</th><th>refined samples</th><th>Σ SD-ray interval</th><th>total ms</th><th>passes (ms)</th></tr>
 {rows}</table>
 <h2>AO</h2><div class="row">{figures}</div>
 <h2>Signed difference to the reference</h2><div class="row">{diffs}</div>
@@ -308,7 +322,8 @@ pub fn signed_difference(w: u32, h: u32, a: &[f32], b: &[f32]) -> RgbImage {
 
 /// A perceptually ordered ramp (black → blue → magenta → orange → yellow) of `t` ∈ [0, 1].
 fn ramp(t: f32) -> Rgb<u8> {
-    const STOPS: [[f32; 3]; 5] = [[0.0, 0.0, 0.0], [0.15, 0.1, 0.6], [0.7, 0.15, 0.55], [0.98, 0.5, 0.1], [1.0, 1.0, 0.6]];
+    const STOPS: [[f32; 3]; 5] =
+        [[0.0, 0.0, 0.0], [0.15, 0.1, 0.6], [0.7, 0.15, 0.55], [0.98, 0.5, 0.1], [1.0, 1.0, 0.6]];
     let t = t.clamp(0.0, 1.0) * (STOPS.len() - 1) as f32;
     let i = (t as usize).min(STOPS.len() - 2);
     let f = t - i as f32;

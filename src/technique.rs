@@ -94,8 +94,54 @@ impl Technique {
     }
 
     /// Techniques from their CLI names, with shared options.
-    pub fn parse(name: &str, sd: SdOptions, spp: u32, uniform: bool) -> Result<Technique, String> {
-        Ok(match name.trim() {
+    /// Per-technique overrides follow the name as `:key=value` (keys `sd-res`
+    /// full|half|quarter, `sd-layers`, `max-count`, `cutoff`, `interval` on|off, `jitter`
+    /// none|scrambled|paper, `sd-guard`, `spp`), e.g. `raysd:sd-layers=8:interval=off`.
+    pub fn parse(spec: &str, sd: SdOptions, spp: u32, uniform: bool) -> Result<Technique, String> {
+        let mut parts = spec.trim().split(':');
+        let name = parts.next().unwrap_or_default();
+        let (mut sd, mut spp) = (sd, spp);
+        for part in parts {
+            let (key, value) = part.split_once('=').ok_or_else(|| format!("'{part}' in '{spec}' is not key=value"))?;
+            let bad = |what: &str| format!("{key}={value} in '{spec}': expected {what}");
+            let number = |what: &str| value.parse::<u32>().map_err(|_| bad(what));
+            match key {
+                "sd-res" => {
+                    sd.divisor = match value {
+                        "full" => 1,
+                        "half" => 2,
+                        "quarter" => 4,
+                        _ => return Err(bad("full, half or quarter")),
+                    }
+                }
+                "sd-layers" => sd.layers = number("1, 2, 4 or 8")?,
+                "max-count" => sd.max_count = number("a count")?,
+                "cutoff" => sd.cutoff = value.parse().map_err(|_| bad("pixels"))?,
+                "interval" => {
+                    sd.interval = match value {
+                        "on" => true,
+                        "off" => false,
+                        _ => return Err(bad("on or off")),
+                    }
+                }
+                "jitter" => {
+                    sd.jitter = match value {
+                        "none" => JitterTable::None,
+                        "scrambled" => JitterTable::Scrambled,
+                        "paper" => JitterTable::Paper,
+                        _ => return Err(bad("none, scrambled or paper")),
+                    }
+                }
+                "sd-guard" => sd.guard = number("pixels")?,
+                "spp" => spp = number("rays per pixel")?,
+                _ => return Err(format!("unknown option '{key}' in '{spec}'")),
+            }
+        }
+        sd.validate()?;
+        if spp == 0 {
+            return Err(format!("'{spec}': spp must be at least 1"));
+        }
+        Ok(match name {
             "vao" => Technique::Vao,
             "raysd" => Technique::RaySd(sd),
             "raysvao" => Technique::RaySvao { cutoff: sd.cutoff },
@@ -104,6 +150,29 @@ impl Technique {
                 return Err(format!("unknown technique '{other}' (known: vao, raysd, raysvao, groundtruth)"));
             }
         })
+    }
+
+    /// A label for tables and file names: the name plus the options that differ from
+    /// `defaults`, e.g. `raysd_n8`.
+    pub fn label(&self, defaults: &SdOptions) -> String {
+        let mut label = self.name().to_string();
+        if let Technique::RaySd(o) = self {
+            let d = defaults;
+            for (differs, text) in [
+                (o.divisor != d.divisor, format!("_div{}", o.divisor)),
+                (o.layers != d.layers, format!("_n{}", o.layers)),
+                (o.max_count != d.max_count, format!("_max{}", o.max_count)),
+                (o.cutoff != d.cutoff, format!("_cut{}", o.cutoff)),
+                (o.interval != d.interval, format!("_interval{}", if o.interval { "on" } else { "off" })),
+                (o.jitter != d.jitter, format!("_jitter{:?}", o.jitter).to_lowercase()),
+                (o.guard != d.guard, format!("_guard{}", o.guard)),
+            ] {
+                if differs {
+                    label += &text;
+                }
+            }
+        }
+        label
     }
 
     /// Whether the technique's output goes through the bilateral blur (spec §3 step 5).
@@ -162,6 +231,8 @@ impl Frame {
 /// Diagnostic buffers of a stenciled run, for the report's images.
 #[derive(Clone, Debug, Default)]
 pub struct SvaoDebug {
+    /// AO after pass 1 (final where `mask == 0`, the UNORM8-stored sum elsewhere).
+    pub ao_pass1: Vec<f32>,
     /// Refinement mask per full-target pixel.
     pub mask: Vec<u32>,
     /// SD-size interval buffers (float bits; 0 = unset) and the SD size.
@@ -186,6 +257,8 @@ pub struct TechniqueRun {
     pub rays: u64,
     /// Samples flagged for refinement in pass 1.
     pub refined_samples: u64,
+    /// Ray-SD: summed interval length `Σ (tMax − tMin)` of the SD rays, world units.
+    pub interval_sum: Option<f64>,
     pub debug: Option<SvaoDebug>,
 }
 

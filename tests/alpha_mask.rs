@@ -6,8 +6,11 @@ use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::render::CpuRenderer;
 use aokit::scene::procedural::push_quad;
 use aokit::scene::{AlphaMask, Material, Scene};
+use aokit::technique::{SdOptions, Technique};
 use aokit_cpu::{GBufferImage, no_progress};
+use aokit_shaders::common::tables::JitterTable;
 use aokit_shaders::glam::{Vec2, Vec3, vec2, vec3};
+use aokit_shaders::svao::Secondary;
 
 /// A 2×2 quad at z = 0 whose mask texture is transparent on its left half (u < 0.5), in front
 /// of an opaque wall at z = −3, seen from z = 5.
@@ -77,5 +80,55 @@ fn raster_discards_cut_out_fragments() {
     let (cpu, _) = CpuRenderer::new(&scene).gbuffer(&frame, &no_progress);
     let same = g.depth.iter().zip(&cpu.depth).filter(|(a, b)| (*a - *b).abs() <= 1e-4 * b.abs()).count();
     assert!(same as f64 >= 0.98 * g.depth.len() as f64, "raster vs rays: {same}/{}", g.depth.len());
+    common::assert_validation_clean(&vk);
+}
+
+/// The masked scene behind an opaque front wall at z = 1 (view depth 4): the SD map's layers
+/// behind the first surface then hold the leaf quad (depth 5) only where its texels are kept,
+/// and the back wall (depth 8) everywhere.
+fn layered_scene() -> (Scene, Frame) {
+    let (mut s, frame) = masked_scene();
+    push_quad(&mut s, vec3(-9.0, -9.0, 1.0), vec3(9.0, -9.0, 1.0), vec3(9.0, 9.0, 1.0), vec3(-9.0, 9.0, 1.0));
+    s.triangle_uvs.extend([[Vec2::ZERO; 3]; 2]);
+    s.triangle_materials.extend([0, 0]);
+    (s.validated(std::path::Path::new("layered")).unwrap(), frame)
+}
+
+/// Which depths the SD map holds on the leaf's left (cut-out) and right (kept) half.
+fn check_sd_layers(map: &[f32], frame: &Frame, options: &SdOptions, backend: &str) {
+    let svao = frame.svao_frame(Secondary::StochasticDepth, options);
+    let p = &svao.params;
+    let view = &p.vao.view;
+    let n = p.sd_layers as usize;
+    let at = |x: f32| -> Vec<f32> {
+        let uv = view.view_to_uv(frame.camera.world_to_view.transform_point3(vec3(x, 0.0, 0.0)));
+        let i = p.sd_index(aokit_shaders::svao::sd_pixel(uv, p));
+        map[i * n..(i + 1) * n].iter().filter(|&&z| z < 1.0).map(|z| z * (view.far - view.near) + view.near).collect()
+    };
+    for x in [-0.8, -0.5, -0.2] {
+        let d = at(x);
+        assert!(d.iter().all(|d| (d - 5.0).abs() > 0.05), "{backend}: cut-out leaf stored at x={x}: {d:?}");
+        assert!(d.iter().any(|d| (d - 8.0).abs() < 0.05), "{backend}: back wall missing at x={x}: {d:?}");
+    }
+    for x in [0.2, 0.5, 0.8] {
+        let d = at(x);
+        assert!(d.iter().any(|d| (d - 5.0).abs() < 0.05), "{backend}: kept leaf missing at x={x}: {d:?}");
+    }
+}
+
+/// Spec §7.3: the SD any-hit runs the material's alpha test before storing a depth, on both
+/// back-ends (full-resolution map, no intervals so every texel traces its whole range).
+#[test]
+fn sd_map_any_hit_applies_the_alpha_test() {
+    let (scene, frame) = layered_scene();
+    let options = SdOptions { divisor: 1, interval: false, jitter: JitterTable::None, ..Default::default() };
+    let technique = Technique::RaySd(options);
+    let cpu = CpuRenderer::new(&scene);
+    let (g, _) = cpu.gbuffer(&frame, &no_progress);
+    let c = cpu.run(&frame, &g, &technique, &no_progress);
+    check_sd_layers(&c.debug.as_ref().unwrap().sd_map, &frame, &options, "cpu");
+    let Some(vk) = common::vulkan() else { return };
+    let v = vk.run(&scene, &frame, &g, &technique).unwrap();
+    check_sd_layers(&v.debug.as_ref().unwrap().sd_map, &frame, &options, "vulkan");
     common::assert_validation_clean(&vk);
 }

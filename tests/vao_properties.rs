@@ -18,6 +18,7 @@ fn sample(h: f32, end: f32) -> LineSample {
         valid: true,
         half_chord: h,
         sphere_end: end,
+        point: Vec3::ZERO,
         uv: Vec2::ZERO,
         texel: UVec2::ZERO,
         in_screen: true,

@@ -11,8 +11,8 @@ use aokit_shaders::common::gbuffer_read::GBufferSlices;
 use aokit_shaders::glam::{UVec2, uvec2};
 use aokit_shaders::raysd::{SdMapRefine, SdPayload, reservoir_any_hit, sd_ray, store_layers};
 use aokit_shaders::raysvao::{ACCEPT, ACCEPT_AND_END, SampleRay, SampleTracer, refine_by_ray, sample_any_hit};
-use aokit_shaders::vao::kernel::{LineSample, PixelFrame};
 use aokit_shaders::svao::{Refine, SvaoFrame, SvaoParams, pass1_pixel, pass2_pixel};
+use aokit_shaders::vao::kernel::{LineSample, PixelFrame};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU32, AtomicU64, Ordering};
 
@@ -256,24 +256,29 @@ pub fn run_raysvao_pass2(
     (ao, rays.into_inner())
 }
 
-/// SD rays a map with these interval buffers traces (texels with a non-empty interval), by the
-/// same ray setup as [`run_sd_map`]; for reports of GPU runs.
-pub fn count_sd_rays(frame: &SvaoFrame, depth: &[f32], normals: &[u32], ray_min: &[u32], ray_max: &[u32]) -> u64 {
+/// SD rays a map with these interval buffers traces (texels with a non-empty interval) and
+/// their summed interval length `Σ (tMax − tMin)` in world units, by the same ray setup as
+/// [`run_sd_map`]; for reports on either back-end.
+pub fn sd_ray_stats(frame: &SvaoFrame, depth: &[f32], normals: &[u32], ray_min: &[u32], ray_max: &[u32]) -> (u64, f64) {
     let params = &frame.params;
     let sd = params.sd_size();
     let gbuffer = GBufferSlices { depth, normals, width: params.vao.view.size().x };
     (0..sd.y)
         .into_par_iter()
         .map(|y| {
-            (0..sd.x)
-                .filter(|&x| {
-                    let q = uvec2(x, y);
-                    let i = params.sd_index(q);
-                    sd_ray(&gbuffer, frame, q, ray_min[i], ray_max[i]).traced()
-                })
-                .count() as u64
+            let (mut rays, mut length) = (0u64, 0.0f64);
+            for x in 0..sd.x {
+                let q = uvec2(x, y);
+                let i = params.sd_index(q);
+                let ray = sd_ray(&gbuffer, frame, q, ray_min[i], ray_max[i]);
+                if ray.traced() {
+                    rays += 1;
+                    length += (ray.t_max - ray.t_min) as f64;
+                }
+            }
+            (rays, length)
         })
-        .sum()
+        .reduce(|| (0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
 }
 
 /// Rays Ray-SVAO traces for these pass-1 masks (flagged samples with a non-empty interval), by

@@ -11,8 +11,8 @@ pub mod manifest;
 pub mod modules;
 mod raytracing;
 mod screen;
-mod svao;
 pub mod spirv_hash;
+mod svao;
 
 pub use buffer::Buffer;
 pub use context::{DeviceInfo, Gpu, GpuOptions};

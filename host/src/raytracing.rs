@@ -258,7 +258,8 @@ impl RtPipeline {
             let set_layouts = [set_layout];
             let layout =
                 d.create_pipeline_layout(&vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts), None)?;
-            let kinds = [vk::ShaderStageFlags::RAYGEN_KHR, vk::ShaderStageFlags::MISS_KHR, vk::ShaderStageFlags::ANY_HIT_KHR];
+            let kinds =
+                [vk::ShaderStageFlags::RAYGEN_KHR, vk::ShaderStageFlags::MISS_KHR, vk::ShaderStageFlags::ANY_HIT_KHR];
             let mut modules = Vec::new();
             for (spirv, _) in &shaders {
                 modules.push(gpu.shader_module(spirv)?);
@@ -328,7 +329,14 @@ impl RtPipeline {
     }
 
     /// Record `vkCmdTraceRaysKHR` over `width × height` with descriptor set `set`.
-    pub(crate) fn record_trace(&self, gpu: &Gpu, cb: vk::CommandBuffer, set: vk::DescriptorSet, width: u32, height: u32) -> Result<(), GpuError> {
+    pub(crate) fn record_trace(
+        &self,
+        gpu: &Gpu,
+        cb: vk::CommandBuffer,
+        set: vk::DescriptorSet,
+        width: u32,
+        height: u32,
+    ) -> Result<(), GpuError> {
         let rt = gpu.ray_tracing()?;
         let d = &gpu.device;
         unsafe {

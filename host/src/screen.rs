@@ -180,7 +180,7 @@ impl ScreenPasses {
                 self.vao.record(gpu, cb, pool, &[depth, normals, &ao], bytemuck::bytes_of(vao), groups)?;
                 compute_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER);
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 1);
-                self.record_blur(gpu, cb, pool, blur, [&ao, &tmp, &out], depth, groups)?;
+                self.record_blur(gpu, cb, pool, blur, [&ao, &tmp, &out], depth)?;
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 2);
                 Ok(())
             });
@@ -208,8 +208,9 @@ impl ScreenPasses {
         blur: &BlurParams,
         [input, tmp, out]: [&Buffer; 3],
         depth: &Buffer,
-        groups: [u32; 3],
     ) -> Result<(), GpuError> {
+        let inner = blur.view.size() - 2 * blur.view.guard;
+        let groups = [inner.x.div_ceil(GROUP), inner.y.div_ceil(GROUP), 1];
         let horizontal = BlurParams { direction: uvec2(1, 0), ..*blur };
         self.blur.record(gpu, cb, pool, &[input, depth, tmp], bytemuck::bytes_of(&horizontal), groups)?;
         compute_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER);
@@ -222,13 +223,10 @@ impl ScreenPasses {
     /// The blur alone on a host AO image (full target) and a device depth buffer. Returns the
     /// blurred AO and the GPU time in ms.
     pub fn blur(&self, gpu: &Gpu, blur: &BlurParams, ao: &[f32], depth: &Buffer) -> Result<(Vec<f32>, f64), GpuError> {
-        let size = blur.view.size();
         let usage = vk::BufferUsageFlags::STORAGE_BUFFER;
         let input = gpu.upload(ao, usage)?;
         let tmp = gpu.upload(ao, usage)?;
         let out = gpu.upload(ao, usage)?;
-        let inner = size - 2 * blur.view.guard;
-        let groups = [inner.x.div_ceil(GROUP), inner.y.div_ceil(GROUP), 1];
         let d = &gpu.device;
         let result = (|| unsafe {
             let pool = gpu.descriptor_pool(2, &storage_bindings(3))?;
@@ -239,7 +237,7 @@ impl ScreenPasses {
             let recorded = gpu.submit(|cb| -> Result<(), GpuError> {
                 d.cmd_reset_query_pool(cb, queries, 0, 2);
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TOP_OF_PIPE, queries, 0);
-                self.record_blur(gpu, cb, pool, blur, [&input, &tmp, &out], depth, groups)?;
+                self.record_blur(gpu, cb, pool, blur, [&input, &tmp, &out], depth)?;
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 1);
                 Ok(())
             });

@@ -17,6 +17,8 @@ const GROUP: u32 = 8; // threads(8, 8) in the shader crate
 pub struct SvaoOutput {
     /// Final AO before the blur (full target, guard band = 1).
     pub ao: Vec<f32>,
+    /// AO after pass 1 (final where `mask == 0`, the UNORM8-stored sum elsewhere).
+    pub ao_pass1: Vec<f32>,
     /// Per-pixel refinement mask of pass 1.
     pub mask: Vec<u32>,
     /// Interval buffers after pass 1 (SD size; Ray-SVAO: one unused texel).
@@ -88,7 +90,9 @@ impl SvaoPipelines {
         }
         let sd_size = params.sd_size();
         let texels = (sd_size.x * sd_size.y) as usize;
-        let storage = vk::BufferUsageFlags::STORAGE_BUFFER | vk::BufferUsageFlags::TRANSFER_DST;
+        let storage = vk::BufferUsageFlags::STORAGE_BUFFER
+            | vk::BufferUsageFlags::TRANSFER_DST
+            | vk::BufferUsageFlags::TRANSFER_SRC;
         let mut owned = Vec::new();
         let result = (|| -> Result<SvaoOutput, GpuError> {
             let mut make = |buffer: Result<Buffer, GpuError>| -> Result<usize, GpuError> {
@@ -102,6 +106,7 @@ impl SvaoPipelines {
             let ray_max = make(gpu.upload(&vec![0u32; texels], storage))?;
             let layers = if sd { texels * params.sd_layers as usize } else { 1 };
             let sd_map = make(gpu.upload(&vec![1.0f32; layers], storage))?;
+            let ao_pass1 = make(gpu.upload(&vec![1.0f32; pixels], storage))?;
             let b = |i: usize| &owned[i];
             let inner = size - 2 * view.guard;
             let groups = [inner.x.div_ceil(GROUP), inner.y.div_ceil(GROUP), 1];
@@ -127,8 +132,22 @@ impl SvaoPipelines {
                 let pass1_buffers = [b(frame_buf), depth, normals, b(ao), b(mask), b(ray_min), b(ray_max)];
                 self.pass1.record(gpu, cb, pool, &pass1_buffers, &[], groups)?;
                 let rt_stage = vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR;
-                memory_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER, rt_stage);
+                memory_barrier(
+                    gpu,
+                    cb,
+                    vk::PipelineStageFlags::COMPUTE_SHADER,
+                    rt_stage | vk::PipelineStageFlags::TRANSFER,
+                );
                 unsafe { d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 1) };
+                // Keep pass 1's AO for diagnostics (not timed as a pass: it overlaps the trace).
+                let whole = [vk::BufferCopy::default().size(4 * pixels as u64)];
+                unsafe { d.cmd_copy_buffer(cb, b(ao).raw, b(ao_pass1).raw, &whole) };
+                memory_barrier(
+                    gpu,
+                    cb,
+                    vk::PipelineStageFlags::TRANSFER,
+                    rt_stage | vk::PipelineStageFlags::COMPUTE_SHADER,
+                );
                 let mut descriptors = vec![
                     Descriptor::Storage(b(frame_buf)),
                     scene.tlas_descriptor(),
@@ -177,6 +196,7 @@ impl SvaoPipelines {
             };
             Ok(SvaoOutput {
                 ao: gpu.download(b(ao))?,
+                ao_pass1: gpu.download(b(ao_pass1))?,
                 mask: gpu.download(b(mask))?,
                 ray_min: gpu.download(b(ray_min))?,
                 ray_max: gpu.download(b(ray_max))?,

@@ -52,7 +52,13 @@ pub struct SampleRay {
 /// `T(z) = (|P| − z)·κ`; `tMin = max(tHalo, 0)`, `tMax = tInside`, and in screen `tMin` starts
 /// `0.01·R` behind the depth-buffer surface.
 #[inline]
-pub fn sample_ray(camera: &Camera, params: &SvaoParams, frame: &PixelFrame, s: &LineSample, z_primary: f32) -> SampleRay {
+pub fn sample_ray(
+    camera: &Camera,
+    params: &SvaoParams,
+    frame: &PixelFrame,
+    s: &LineSample,
+    z_primary: f32,
+) -> SampleRay {
     let view = &params.vao.view;
     let r = frame.radius;
     let snapped = ((s.uv * view.res).floor() + 0.5) / view.res;

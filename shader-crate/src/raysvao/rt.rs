@@ -2,13 +2,13 @@
 //! over the inner image, one ray per flagged sample, the halo any-hit on every triangle.
 
 use super::{ACCEPT_AND_END, IGNORE, SampleRay, SampleRayState, SampleTracer, refine_by_ray, sample_any_hit};
-use crate::common::camera::Camera;
-use crate::svao::{Refine, SvaoParams};
-use crate::vao::kernel::{LineSample, PixelFrame};
 use crate::common::alpha::{AlphaMaskHeader, alpha_test_passes};
+use crate::common::camera::Camera;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2};
+use crate::svao::{Refine, SvaoParams};
 use crate::svao::{SvaoFrame, pass2_pixel};
+use crate::vao::kernel::{LineSample, PixelFrame};
 use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
 use spirv_std::spirv;
 

@@ -1,0 +1,147 @@
+//! `aokit compare`'s report: the JSON contract, metrics that agree with `aokit::metrics`, the PNGs,
+//! and the HTML page rendered by headless Chromium (Debian `chromium`; the test fails without it
+//! unless AOKIT_SKIP_CHROMIUM=1).
+
+mod common;
+
+use aokit::metrics::{ImageRef, mse, ssim};
+use aokit::output::crop_inner;
+use aokit::render::CpuRenderer;
+use aokit::report::CompareReport;
+use aokit::technique::{SdOptions, Technique};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn report(dir: &Path) -> (CompareReport, aokit::frame::Frame) {
+    let (scene, frame) = common::builtin_frame("sponza", 240, 136, 16);
+    let cpu = CpuRenderer::new(&scene);
+    let (g, gbuffer_ms) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
+    let none = &aokit_cpu::no_progress;
+    let reference = Technique::RaySvao { cutoff: 6.0 };
+    let reference_run = cpu.run(&frame, &g, &reference, none);
+    let runs: Vec<_> = [Technique::Vao, Technique::RaySd(SdOptions::default())]
+        .into_iter()
+        .map(|t| (t, cpu.run(&frame, &g, &t, none)))
+        .collect();
+    let r = CompareReport::new(
+        "sponza",
+        "cpu",
+        "test",
+        &frame,
+        gbuffer_ms,
+        (reference, &reference_run),
+        &runs,
+        &SdOptions::default(),
+    );
+    r.write_images(dir, &frame, &g).unwrap();
+    (r, frame)
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("aokit-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// The JSON carries the contract's fields, and its numbers are the metric functions' values on
+/// the cropped final images.
+#[test]
+fn compare_json_follows_the_contract_and_matches_the_metrics() {
+    let dir = scratch("json");
+    let (r, frame) = report(&dir);
+    let json = r.json();
+    assert_eq!(json["scene"], "sponza");
+    assert_eq!(json["backend"], "cpu");
+    assert_eq!(json["width"], 240);
+    assert_eq!(json["height"], 136);
+    assert_eq!(json["reference"], "raysvao");
+    let results = json["results"].as_array().unwrap();
+    assert_eq!(results.len(), 2);
+    for (row, result) in r.rows.iter().zip(results) {
+        for key in ["technique", "options", "mse", "psnr", "ssim", "rays", "refined_samples", "passes", "total_ms"] {
+            assert!(result.get(key).is_some(), "missing {key}");
+        }
+        let view = frame.camera.view;
+        let a = crop_inner(&view, &row.run.ao_final);
+        let (w, h) = (frame.inner.x as usize, frame.inner.y as usize);
+        fn img(w: usize, h: usize, p: &[f32]) -> ImageRef<'_> {
+            ImageRef { width: w, height: h, pixels: p }
+        }
+        let expected_mse = mse(img(w, h, &a), img(w, h, &r.reference_ao), None).unwrap();
+        assert_eq!(result["mse"].as_f64().unwrap(), expected_mse);
+        assert_eq!(result["ssim"].as_f64().unwrap(), ssim(img(w, h, &a), img(w, h, &r.reference_ao), None).unwrap());
+        let passes = result["passes"].as_array().unwrap();
+        let total: f64 = passes.iter().map(|p| p["ms"].as_f64().unwrap()).sum();
+        assert!((total - result["total_ms"].as_f64().unwrap()).abs() < 1e-9);
+        assert!(passes.iter().all(|p| p["name"].is_string()));
+    }
+    assert_eq!(results[1]["technique"], "raysd");
+    assert!(results[1]["rays"].as_u64().unwrap() > 0);
+    assert!(results[1]["refined_samples"].as_u64().unwrap() > 0);
+    assert!(results[1]["mse"].as_f64().unwrap() < results[0]["mse"].as_f64().unwrap());
+    for name in
+        ["reference", "vao", "vao_diff", "raysd", "raysd_diff", "raysd_refined", "raysd_intervals", "raysd_sd_layers"]
+    {
+        assert!(dir.join(format!("{name}.png")).is_file(), "{name}.png missing");
+    }
+}
+
+fn chromium() -> Option<&'static str> {
+    ["chromium", "chromium-browser", "google-chrome"]
+        .into_iter()
+        .find(|c| Command::new(c).arg("--version").output().is_ok_and(|o| o.status.success()))
+}
+
+/// The HTML page, rendered by headless Chromium: its DOM holds the metrics table with the
+/// report's numbers, and the screenshot shows the AO images (grey) and the signed differences
+/// (red and blue), i.e. the PNGs loaded.
+#[test]
+fn html_report_renders_in_headless_chromium() {
+    if std::env::var_os("AOKIT_SKIP_CHROMIUM").is_some_and(|v| v == "1") {
+        eprintln!("AOKIT_SKIP_CHROMIUM=1: skipping the screenshot test");
+        return;
+    }
+    let browser =
+        chromium().expect("headless Chromium is required (apt-get install chromium); AOKIT_SKIP_CHROMIUM=1 skips");
+    let dir = scratch("html");
+    let (r, _) = report(&dir);
+    let page = r.write_html(&dir, &dir).unwrap();
+    let url = format!("file://{}", page.canonicalize().unwrap().display());
+    let common_args =
+        ["--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars", "--allow-file-access-from-files"];
+    let dom = Command::new(browser).args(common_args).arg("--dump-dom").arg(&url).output().unwrap();
+    let dom = String::from_utf8_lossy(&dom.stdout);
+    assert!(dom.contains("id=\"metrics\""), "metrics table missing from the DOM");
+    for row in &r.rows {
+        assert!(dom.contains(&format!("<td>{}</td>", row.label)), "row {} missing", row.label);
+        assert!(dom.contains(&format!("{:.3e}", row.mse)), "MSE of {} missing", row.label);
+    }
+    let shot = dir.join("screenshot.png");
+    let status = Command::new(browser)
+        .args(common_args)
+        .arg(format!("--screenshot={}", shot.display()))
+        .arg("--window-size=1400,2400")
+        .arg(&url)
+        .output()
+        .unwrap();
+    assert!(shot.is_file(), "no screenshot: {}", String::from_utf8_lossy(&status.stderr));
+    let img = image::open(&shot).unwrap().to_rgb8();
+    let (mut grey, mut red, mut blue) = (0usize, 0usize, 0usize);
+    for p in img.pixels() {
+        let [r, g, b] = p.0.map(|c| c as i32);
+        if (r - g).abs() < 6 && (g - b).abs() < 6 && (60..230).contains(&r) {
+            grey += 1;
+        }
+        if r > 200 && g < 150 && b < 150 {
+            red += 1;
+        }
+        if b > 200 && r < 150 && g < 150 {
+            blue += 1;
+        }
+    }
+    let total = (img.width() * img.height()) as usize;
+    eprintln!("screenshot {}×{}: grey {grey}, red {red}, blue {blue}", img.width(), img.height());
+    assert!(grey > total / 50, "AO images not visible in the screenshot");
+    assert!(red + blue > 500, "difference images not visible in the screenshot");
+}

@@ -1,0 +1,332 @@
+//! Ray-SD on the CPU: reservoir statistics (spec svao-raysd §7.3), MAX_COUNT acceptance under
+//! any-hit semantics, interval coverage (§5, §7.1, §9), hit-order independence of the result,
+//! and the quality ordering vao < raysd ≤ raysvao on a real scene.
+
+mod common;
+
+use aokit::render::CpuRenderer;
+use aokit::technique::{SdOptions, Technique};
+use aokit_cpu::AnyHit;
+use aokit_cpu::bvh::replay_any_hit;
+use aokit_cpu::svao::{HitOrder, run_pass1, run_pass2_sd, run_sd_map};
+use aokit_shaders::common::float_order::from_ordered_bits;
+use aokit_shaders::common::gbuffer_read::GBufferSlices;
+use aokit_shaders::common::tables::AO_SAMPLES;
+use aokit_shaders::glam::{Vec2, uvec2, vec2};
+use aokit_shaders::raysd::{MAX_LAYERS, NO_SLOT, SdPayload, reservoir_any_hit, reservoir_slot};
+use aokit_shaders::svao::{Secondary, SvaoParams, sd_pixel};
+use aokit_shaders::vao::kernel::{line_sample, primary_object_z, setup_pixel};
+use std::collections::HashMap;
+
+/// Deterministic SplitMix64 stream for the tests.
+struct Rng(u64);
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    fn unit(&mut self) -> f32 {
+        (self.next() >> 40) as f32 / (1u64 << 24) as f32
+    }
+}
+
+/// Upper χ² quantile at p = 0.001 (Wilson–Hilferty, z = 3.0902), accurate to ~1 % for df ≥ 3.
+fn chi2_critical_p001(df: usize) -> f64 {
+    let k = df as f64;
+    let z = 3.0902;
+    k * (1.0 - 2.0 / (9.0 * k) + z * (2.0 / (9.0 * k)).sqrt()).powi(3)
+}
+
+fn payload(layers: u32, max_count: u32) -> SdPayload {
+    SdPayload { depth: [1.0; MAX_LAYERS], count: 0, layers, max_count, cos_theta: 1.0, near: 0.0, far: 1.0 }
+}
+
+/// Spec §7.3 / issue: with z-cull out of play (every new hit nearer than all before), hit `k`
+/// of a sequence of `count` hits ends in the payload with probability min(1, N/count). The
+/// random numbers are the Wyman hash of random barycentrics, as the any-hit computes them.
+#[test]
+fn reservoir_keeps_every_hit_with_probability_n_over_count() {
+    const STREAMS: usize = 100_000;
+    let mut rng = Rng(7);
+    for layers in [1u32, 2, 4, 8] {
+        for count in 2..=16usize {
+            let mut survived = vec![0u64; count];
+            for _ in 0..STREAMS {
+                let mut p = payload(layers, u32::MAX);
+                for k in 0..count {
+                    // t decreasing: hit k is nearer than every earlier hit, so z-cull never rejects.
+                    let t = 1.0 - (k as f32 + 1.0) / (count as f32 + 2.0);
+                    let b = vec2(rng.unit(), rng.unit());
+                    reservoir_any_hit(&mut p, t, b, || true);
+                }
+                for slot in 0..layers as usize {
+                    let z = p.depth[slot];
+                    if z < 1.0 {
+                        let k = ((1.0 - z) * (count as f32 + 2.0)).round() as usize - 1;
+                        survived[k] += 1;
+                    }
+                }
+            }
+            let p_keep = (layers as f64 / count as f64).min(1.0);
+            if p_keep >= 1.0 {
+                assert!(survived.iter().all(|&s| s == STREAMS as u64), "N={layers} count={count}: all must survive");
+                continue;
+            }
+            let expected = STREAMS as f64 * p_keep;
+            let chi2: f64 = survived.iter().map(|&o| (o as f64 - expected).powi(2) / expected).sum();
+            let critical = chi2_critical_p001(count - 1);
+            assert!(
+                chi2 < critical,
+                "N={layers} count={count}: χ² = {chi2:.1} ≥ {critical:.1} (p < 0.001); survivors {survived:?}, expected {expected:.0}"
+            );
+        }
+    }
+}
+
+/// Brute-force oracle of the final payload (spec §7.3 written independently): every reservoir
+/// choice `floor(u·count) = j` for `j ∈ [0, count)` is equally likely; enumerate all of them.
+fn oracle(zs: &[f32], layers: usize) -> HashMap<Vec<u32>, f64> {
+    fn walk(zs: &[f32], layers: usize, k: usize, slots: Vec<f32>, prob: f64, out: &mut HashMap<Vec<u32>, f64>) {
+        if k == zs.len() {
+            *out.entry(slots.iter().map(|z| z.to_bits()).collect()).or_default() += prob;
+            return;
+        }
+        let n = k + 1; // count after the increment
+        let choices: Vec<usize> = if n <= layers { vec![k] } else { (0..n).collect() };
+        let p = prob / choices.len() as f64;
+        for j in choices {
+            let mut next = slots.clone();
+            if j < layers && zs[k] < next[j] {
+                next[j] = zs[k];
+            }
+            walk(zs, layers, k + 1, next, p, out);
+        }
+    }
+    let mut out = HashMap::new();
+    walk(zs, layers, 0, vec![1.0; layers], 1.0, &mut out);
+    out
+}
+
+/// With z-cull on, the distribution of final payloads over random streams matches the
+/// brute-force oracle (χ² over payload states with expected count ≥ 5, p > 0.001).
+#[test]
+fn reservoir_with_z_cull_matches_a_brute_force_oracle() {
+    const STREAMS: usize = 200_000;
+    let mut rng = Rng(11);
+    for (layers, count) in [(2usize, 5usize), (4, 7), (4, 8), (1, 6)] {
+        let zs: Vec<f32> = (0..count).map(|_| 0.05 + 0.9 * rng.unit()).collect();
+        let exact = oracle(&zs, layers);
+        let mut seen: HashMap<Vec<u32>, u64> = HashMap::new();
+        for _ in 0..STREAMS {
+            let mut p = payload(layers as u32, u32::MAX);
+            for &z in &zs {
+                let slot = reservoir_slot(&mut p, rng.unit(), z);
+                if slot != NO_SLOT {
+                    p.depth[slot as usize] = z;
+                }
+            }
+            *seen.entry(p.depth[..layers].iter().map(|z| z.to_bits()).collect()).or_default() += 1;
+        }
+        for state in seen.keys() {
+            assert!(exact.contains_key(state), "payload {state:?} is impossible under the oracle");
+        }
+        let (mut chi2, mut df, mut rest_o, mut rest_e) = (0.0, 0usize, 0.0, 0.0);
+        for (state, p) in &exact {
+            let e = p * STREAMS as f64;
+            let o = *seen.get(state).unwrap_or(&0) as f64;
+            if e >= 5.0 {
+                chi2 += (o - e).powi(2) / e;
+                df += 1;
+            } else {
+                rest_o += o;
+                rest_e += e;
+            }
+        }
+        if rest_e > 0.0 {
+            chi2 += (rest_o - rest_e).powi(2) / rest_e;
+            df += 1;
+        }
+        let critical = chi2_critical_p001(df.max(4) - 1);
+        assert!(chi2 < critical, "N={layers} count={count}: χ² = {chi2:.1} ≥ {critical:.1} over {df} states");
+    }
+}
+
+/// MAX_COUNT (spec §7.3, §15.6): from the hit that brings `count` to MAX_COUNT on, every hit is
+/// accepted (tMax shrinks), so later reported hits are only nearer ones; the payload only holds
+/// depths of hits that were reported. Checked over shuffled hit orders.
+#[test]
+fn max_count_accepts_hits_and_later_hits_are_nearer() {
+    let mut rng = Rng(3);
+    for trial in 0..2000 {
+        let n_hits = 4 + (rng.next() % 20) as usize;
+        let hits: Vec<(f32, u32, Vec2)> =
+            (0..n_hits).map(|i| (0.1 + 0.8 * rng.unit(), i as u32, vec2(rng.unit(), rng.unit()))).collect();
+        let (layers, max_count) = (4, 8);
+        let mut p = payload(layers, max_count);
+        let mut offered = Vec::new();
+        let mut accepted_at: Option<f32> = None;
+        replay_any_hit(&hits, 0.0, 1.0, |t, _, b| {
+            if let Some(a) = accepted_at {
+                assert!(t < a, "trial {trial}: hit at {t} offered after accepting {a}");
+            }
+            offered.push(t);
+            let accept = reservoir_any_hit(&mut p, t, b, || true);
+            assert_eq!(accept, p.count >= max_count, "trial {trial}: accept exactly when count ≥ MAX_COUNT");
+            if accept {
+                accepted_at = Some(t);
+                AnyHit::Accept
+            } else {
+                AnyHit::Ignore
+            }
+        });
+        assert_eq!(p.count as usize, offered.len());
+        if n_hits < max_count as usize {
+            assert!(accepted_at.is_none());
+        }
+        for &z in p.depth[..layers as usize].iter().filter(|&&z| z < 1.0) {
+            assert!(offered.contains(&z), "trial {trial}: payload depth {z} was never reported");
+        }
+    }
+}
+
+/// The CPU BVH reports every triangle inside the interval to the any-hit exactly once: compare
+/// `trace_any_hit` (all ignored) with the set from `all_hits` on Sponza's SD rays.
+#[test]
+fn bvh_any_hit_reports_every_triangle_once() {
+    let (scene, frame) = common::builtin_frame("tower", 96, 64, 16);
+    let renderer = CpuRenderer::new(&scene);
+    let bvh = aokit_cpu::SceneBvh::build(&scene.triangles);
+    let camera = frame.camera;
+    let mut rng = Rng(5);
+    let mut total = 0;
+    for _ in 0..300 {
+        let uv = vec2(rng.unit(), rng.unit());
+        let dir = camera.primary_ray_direction(uv);
+        let mut seen = Vec::new();
+        bvh.trace_any_hit(camera.eye(), dir, 0.0, 1e30, |t, tri, _| {
+            seen.push((tri, t.to_bits()));
+            AnyHit::Ignore
+        });
+        let mut all: Vec<_> = bvh.all_hits(camera.eye(), dir, 0.0, 1e30).iter().map(|h| (h.1, h.0.to_bits())).collect();
+        seen.sort();
+        all.sort();
+        assert_eq!(seen, all);
+        let mut unique = seen.clone();
+        unique.dedup_by_key(|h| h.0);
+        assert_eq!(unique.len(), seen.len(), "a triangle was reported twice");
+        total += seen.len();
+    }
+    assert!(total > 300, "rays should cross several surfaces of the tower ({total} hits)");
+    drop(renderer);
+}
+
+fn sd_frame(frame: &aokit::frame::Frame, divisor: u32) -> aokit_shaders::svao::SvaoFrame {
+    frame.svao_frame(Secondary::StochasticDepth, &SdOptions { divisor, ..Default::default() })
+}
+
+/// Spec §5/§7.1/§9: for every flagged sample of pass 1, the SD texel pass 2 reads is the one
+/// whose interval pass 1 widened, and the interval covers every distance the halo model needs
+/// there: `[|P| − min(z, (1+τ)R + h), |P| − sphereEnd]`.
+#[test]
+fn every_depth_pass_2_needs_lies_inside_the_texel_interval() {
+    let (scene, frame) = common::builtin_frame("sponza", 192, 108, 32);
+    let renderer = CpuRenderer::new(&scene);
+    let (g, _) = renderer.gbuffer(&frame, &aokit_cpu::no_progress);
+    let svao = sd_frame(&frame, 4);
+    let params: &SvaoParams = &svao.params;
+    let pass1 = run_pass1(params, &g.depth, &g.normals, &aokit_cpu::no_progress);
+    let view = &params.vao.view;
+    let gb = GBufferSlices { depth: &g.depth, normals: &g.normals, width: g.width };
+    let mut checked = 0;
+    let mut rng = Rng(9);
+    for _ in 0..20_000 {
+        let p = uvec2(
+            view.guard + (rng.next() % frame.inner.x as u64) as u32,
+            view.guard + (rng.next() % frame.inner.y as u64) as u32,
+        );
+        let mask = pass1.mask[view.index(p)];
+        if mask == 0 {
+            continue;
+        }
+        let f = setup_pixel(&gb, view, params.vao.radius, params.vao.max_screen_radius, p).unwrap();
+        for i in 0..AO_SAMPLES {
+            if mask & (1 << i) == 0 {
+                continue;
+            }
+            let s = line_sample(&f, view, i);
+            let mut z = primary_object_z(&gb, view, &f, &s);
+            if !s.in_screen {
+                z = f32::MAX;
+            }
+            let q = params.sd_index(sd_pixel(s.uv, params));
+            let dist = f.position.length();
+            let near_end = (dist - z.min(params.vao.radius + s.half_chord)).max(0.0);
+            let far_end = (dist - s.sphere_end).max(0.0);
+            let (lo, hi) = (pass1.ray_min[q], pass1.ray_max[q]);
+            assert_ne!(hi, 0, "flagged sample's texel {q} was not requested");
+            assert!(lo == 0 || from_ordered_bits(lo) <= near_end, "rayMin {} > {near_end}", from_ordered_bits(lo));
+            assert!(from_ordered_bits(hi) >= far_end, "rayMax {} < {far_end}", from_ordered_bits(hi));
+            checked += 1;
+        }
+    }
+    assert!(checked > 1000, "too few flagged samples checked ({checked})");
+}
+
+fn mse(a: &[f32], b: &[f32]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| (*x as f64 - *y as f64).powi(2)).sum::<f64>() / a.len() as f64
+}
+
+/// Hardware reports hits in no particular order: the SD map from shuffled hit orders differs
+/// texel by texel, but the AO it yields agrees statistically with the traversal-order one.
+#[test]
+fn sd_map_result_does_not_depend_on_hit_order() {
+    let (scene, frame) = common::builtin_frame("sponza", 256, 144, 32);
+    let renderer = CpuRenderer::new(&scene);
+    let (g, _) = renderer.gbuffer(&frame, &aokit_cpu::no_progress);
+    let bvh = aokit_cpu::SceneBvh::build(&scene.triangles);
+    let normals = scene.face_normals();
+    let masks = scene.alpha_masks();
+    let surfaces = aokit_cpu::Surfaces {
+        face_normals: &normals,
+        uvs: &scene.triangle_uvs,
+        materials: &scene.triangle_materials,
+        mask_headers: &masks.0,
+        mask_texels: &masks.1,
+    };
+    let svao = sd_frame(&frame, 2);
+    let pass1 = run_pass1(&svao.params, &g.depth, &g.normals, &aokit_cpu::no_progress);
+    let run = |order| {
+        let map = run_sd_map(&bvh, &surfaces, &svao, &g.depth, &g.normals, &pass1, order);
+        (run_pass2_sd(&svao.params, &g.depth, &g.normals, &pass1, &map), map)
+    };
+    let (ao_a, map_a) = run(HitOrder::Traversal);
+    let (ao_b, map_b) = run(HitOrder::Shuffled(1));
+    assert_eq!(map_a.rays, map_b.rays);
+    let differing = map_a.layers.iter().zip(&map_b.layers).filter(|(a, b)| a != b).count();
+    assert!(differing > 0, "shuffling the hit order should change some stored layers");
+    let m = mse(&ao_a, &ao_b);
+    assert!(m < 1e-4, "AO from shuffled hit orders differs: MSE {m:.2e}");
+}
+
+/// Issue 3's quality claim at test size: against Ray-SVAO, Ray-SD (¼, N = 4) has at most ⅛ of
+/// VAO's MSE, and MSE does not grow from N = 2 to 4 to 8.
+#[test]
+fn raysd_error_is_a_fraction_of_vao_error_and_falls_with_layers() {
+    let (scene, frame) = common::builtin_frame("sponza", 384, 216, 64);
+    let renderer = CpuRenderer::new(&scene);
+    let (g, _) = renderer.gbuffer(&frame, &aokit_cpu::no_progress);
+    let none = &aokit_cpu::no_progress;
+    let reference = renderer.run(&frame, &g, &Technique::RaySvao { cutoff: 6.0 }, none).ao_final;
+    let vao = renderer.run(&frame, &g, &Technique::Vao, none).ao_final;
+    let mse_vao = mse(&vao, &reference);
+    let mut by_layers = Vec::new();
+    for layers in [2, 4, 8] {
+        let t = Technique::RaySd(SdOptions { layers, ..Default::default() });
+        by_layers.push(mse(&renderer.run(&frame, &g, &t, none).ao_final, &reference));
+    }
+    assert!(by_layers[1] <= mse_vao / 8.0, "MSE raysd {:.2e} vs vao {mse_vao:.2e}", by_layers[1]);
+    assert!(by_layers[0] >= by_layers[1] && by_layers[1] >= by_layers[2], "MSE by N = 2, 4, 8: {by_layers:?}");
+}
