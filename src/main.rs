@@ -3,7 +3,7 @@
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::output::{crop_inner, write_exr, write_png};
 use aokit::render::{CpuRenderer, Renderer, VulkanRenderer};
-use aokit::report::{BenchResult, CompareReport};
+use aokit::report::{BenchResult, CompareReport, CompareSetup};
 use aokit::scene::Scene;
 use aokit::scene::builtin::{self, BuiltinScene};
 use aokit::technique::{SdOptions, Technique};
@@ -369,16 +369,9 @@ fn compare(args: CompareArgs) -> Result<(), String> {
     }
     bar.finish_and_clear();
     check_validation(&renderer)?;
-    let report = CompareReport::new(
-        &scene.name,
-        renderer.backend_name(),
-        &renderer.device_name(),
-        &frame,
-        gbuffer_ms,
-        (reference, &reference_run),
-        &runs,
-        &args.options.sd_options()?,
-    );
+    let device = renderer.device_name();
+    let setup = CompareSetup { scene: &scene.name, backend: renderer.backend_name(), device: &device, gbuffer_ms };
+    let report = CompareReport::new(setup, &frame, (reference, &reference_run), &runs, &args.options.sd_options()?);
     println!("{}", report.table());
     if let Some(path) = &args.json {
         std::fs::write(path, serde_json::to_string_pretty(&report.json()).expect("serializable"))

@@ -28,6 +28,16 @@ pub struct CompareRow {
     pub run: TechniqueRun,
 }
 
+/// Where a comparison ran.
+#[derive(Copy, Clone, Debug)]
+pub struct CompareSetup<'a> {
+    pub scene: &'a str,
+    pub backend: &'a str,
+    pub device: &'a str,
+    /// Time of the shared G-buffer pass.
+    pub gbuffer_ms: f64,
+}
+
 /// One `aokit compare` run.
 pub struct CompareReport {
     pub scene: String,
@@ -46,11 +56,8 @@ impl CompareReport {
     /// Metrics over the inner image (guard band excluded) of the final (post-blur where the
     /// technique blurs) AO of every technique against the reference's final AO.
     pub fn new(
-        scene: &str,
-        backend: &str,
-        device: &str,
+        setup: CompareSetup,
         frame: &Frame,
-        gbuffer_ms: f64,
         (reference, reference_run): (Technique, &TechniqueRun),
         runs: &[(Technique, TechniqueRun)],
         defaults: &crate::technique::SdOptions,
@@ -85,12 +92,12 @@ impl CompareReport {
             });
         }
         CompareReport {
-            scene: scene.to_string(),
-            backend: backend.to_string(),
-            device: device.to_string(),
+            scene: setup.scene.to_string(),
+            backend: setup.backend.to_string(),
+            device: setup.device.to_string(),
             width: frame.inner.x,
             height: frame.inner.y,
-            gbuffer_ms,
+            gbuffer_ms: setup.gbuffer_ms,
             reference,
             reference_ao,
             reference_run: reference_run.clone(),
@@ -123,6 +130,8 @@ impl CompareReport {
             "width": self.width, "height": self.height,
             "reference": self.reference.name(), "reference_options": self.reference.describe(),
             "reference_total_ms": self.reference_run.total_ms(),
+            "reference_rays": self.reference_run.rays,
+            "reference_passes": self.reference_run.passes.iter().map(|(n, ms)| serde_json::json!({"name": n, "ms": ms})).collect::<Vec<_>>(),
             "gbuffer_ms": self.gbuffer_ms,
             "metrics_on": "final AO (after the bilateral blur for vao/raysd/raysvao), inner image",
             "results": results,
@@ -147,6 +156,19 @@ impl CompareReport {
             "refined",
             "Σ interval",
             "total ms"
+        );
+        let reference: Vec<_> = self.reference_run.passes.iter().map(|(n, ms)| format!("{n} {ms:.1}")).collect();
+        s += &format!(
+            "{:<24} {:>11} {:>7} {:>7} {:>11} {:>10} {:>11} {:>10.1}  {}\n",
+            format!("({})", self.reference.name()),
+            "reference",
+            "",
+            "",
+            self.reference_run.rays,
+            self.reference_run.refined_samples,
+            "",
+            self.reference_run.total_ms(),
+            reference.join(", ")
         );
         for r in &self.rows {
             let passes: Vec<_> = r.passes.iter().map(|(n, ms)| format!("{n} {ms:.1}")).collect();

@@ -7,7 +7,7 @@ mod common;
 use aokit::metrics::{ImageRef, mse, ssim};
 use aokit::output::crop_inner;
 use aokit::render::CpuRenderer;
-use aokit::report::CompareReport;
+use aokit::report::{CompareReport, CompareSetup};
 use aokit::technique::{SdOptions, Technique};
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -23,16 +23,8 @@ fn report(dir: &Path) -> (CompareReport, aokit::frame::Frame) {
         .into_iter()
         .map(|t| (t, cpu.run(&frame, &g, &t, none)))
         .collect();
-    let r = CompareReport::new(
-        "sponza",
-        "cpu",
-        "test",
-        &frame,
-        gbuffer_ms,
-        (reference, &reference_run),
-        &runs,
-        &SdOptions::default(),
-    );
+    let setup = CompareSetup { scene: "sponza", backend: "cpu", device: "test", gbuffer_ms };
+    let r = CompareReport::new(setup, &frame, (reference, &reference_run), &runs, &SdOptions::default());
     r.write_images(dir, &frame, &g).unwrap();
     (r, frame)
 }
@@ -144,4 +136,27 @@ fn html_report_renders_in_headless_chromium() {
     eprintln!("screenshot {}×{}: grey {grey}, red {red}, blue {blue}", img.width(), img.height());
     assert!(grey > total / 50, "AO images not visible in the screenshot");
     assert!(red + blue > 500, "difference images not visible in the screenshot");
+}
+
+/// `aokit bench`'s statistics: median (even and odd counts), min, max per pass and of the
+/// per-frame total; Mpixel/s from the median total.
+#[test]
+fn bench_statistics_are_median_min_max_per_pass() {
+    use aokit::report::BenchResult;
+    use aokit_shaders::glam::uvec2;
+    let frames = vec![
+        vec![("a", 1.0), ("b", 10.0)],
+        vec![("a", 3.0), ("b", 30.0)],
+        vec![("a", 2.0), ("b", 20.0)],
+        vec![("a", 7.0), ("b", 5.0)],
+    ];
+    let r = BenchResult::new(&frames, uvec2(1000, 1000));
+    let get = |n: &str| r.passes.iter().find(|p| p.0 == n).map(|p| (p.1, p.2, p.3)).unwrap();
+    assert_eq!(get("a"), (2.5, 1.0, 7.0));
+    assert_eq!(get("b"), (15.0, 5.0, 30.0));
+    // Totals 11, 33, 22, 12 → median 17, min 11, max 33.
+    assert_eq!(get("total"), (17.0, 11.0, 33.0));
+    assert!((r.mpixels_per_s - 1.0 / 0.017).abs() < 1e-9);
+    let odd = BenchResult::new(&frames[..3], uvec2(10, 10));
+    assert_eq!(odd.passes[0].1, 2.0);
 }

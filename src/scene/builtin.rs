@@ -28,6 +28,15 @@ enum Source {
         obj: &'static str,
         sha256: &'static str,
     },
+    /// Files inside a Debian package, pinned by version (and the main file by hash), fetched
+    /// with `apt-get download` and unpacked with `dpkg --fsys-tarfile | tar`.
+    Debian {
+        package: &'static str,
+        version: &'static str,
+        dir: &'static str,
+        files: &'static [&'static str],
+        sha256: &'static str,
+    },
     Procedural(fn() -> Scene),
 }
 
@@ -60,7 +69,7 @@ pub fn builtin_scenes() -> &'static [BuiltinScene] {
     &BUILTIN
 }
 
-static BUILTIN: [BuiltinScene; 4] = [
+static BUILTIN: [BuiltinScene; 5] = [
     BuiltinScene {
         name: "sponza",
         description: "Dabrovic Sponza atrium, 66,450 triangles (crate bvh 0.13.0, media/sponza.obj)",
@@ -129,6 +138,25 @@ static BUILTIN: [BuiltinScene; 4] = [
         radius: 60.0,
     },
     BuiltinScene {
+        name: "oak",
+        description: "oak tree with alpha-masked leaves, glTF, 555 triangles (opengameart.org \"old oak tree\" by Julius, GPL/CC-BY-SA-3.0; Debian castle-game-engine-doc, fetched with apt-get)",
+        source: Source::Debian {
+            package: "castle-game-engine-doc",
+            version: "7.0~alpha.2+dfsg1-5",
+            dir: "./usr/share/doc/castle-game-engine-doc/examples/terrain/data/oak_tree",
+            files: &["oaktree.gltf", "oaktree.bin", "oakleaf_light.png", "oakbark.jpg"],
+            sha256: "8e39bb0cd2ca9209798cd51176450ef3a853d48d8318a3cb9c21ecbeac1fdc0c",
+        },
+        cameras: &[CameraPreset {
+            name: "crown",
+            eye: vec3(0.0, 2.6, 5.5),
+            target: vec3(0.0, 2.4, 0.0),
+            up: UP,
+            fov_deg: 50.0,
+        }],
+        radius: 0.15,
+    },
+    BuiltinScene {
         name: "tower",
         description: "procedural tower with a spiral staircase, open on one side (aokit)",
         source: Source::Procedural(procedural::spiral_tower),
@@ -159,6 +187,9 @@ impl BuiltinScene {
                 Scene::load(&path)?
             }
             Source::Crate { file, mtl } => Scene::load(&fetch(self.name, file, *mtl)?)?,
+            Source::Debian { package, version, dir, files, sha256 } => {
+                Scene::load(&fetch_debian(self.name, package, version, dir, files, sha256)?)?
+            }
         };
         scene.name = self.name.to_string();
         Ok(scene)
@@ -241,6 +272,67 @@ fn fetch(scene: &str, file: &CrateFile, mtl: Option<&str>) -> Result<PathBuf, Sc
         write_atomically(&obj, &text).map_err(fail)?;
     }
     Ok(obj)
+}
+
+/// Fetch `files` from `dir` inside Debian package `package=version` into the cache (apt-get
+/// download, dpkg --fsys-tarfile | tar) and return the first file's path.
+fn fetch_debian(
+    scene: &str,
+    package: &str,
+    version: &str,
+    dir: &str,
+    files: &[&str],
+    sha256: &str,
+) -> Result<PathBuf, SceneError> {
+    static FETCH: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _guard = FETCH.lock().unwrap_or_else(|e| e.into_inner());
+    let fail = |problem: String| SceneError::Fetch { scene: scene.into(), problem };
+    let cache = cache_dir().join("scenes").join(format!("{package}-{version}"));
+    let main = cache.join(files[0]);
+    if files.iter().all(|f| cache.join(f).exists()) && check_sha256(scene, &main, sha256).is_ok() {
+        return Ok(main);
+    }
+    let work = cache_dir().join("fetch").join(format!("{package}-{}", std::process::id()));
+    std::fs::create_dir_all(&work).map_err(|e| fail(format!("{}: {e}", work.display())))?;
+    let result = (|| -> Result<(), String> {
+        let out = Command::new("apt-get")
+            .args(["download", &format!("{package}={version}")])
+            .current_dir(&work)
+            .output()
+            .map_err(|e| format!("running apt-get (a Debian system is needed for this scene): {e}"))?;
+        if !out.status.success() {
+            return Err(format!(
+                "apt-get download {package}={version}: {}",
+                String::from_utf8_lossy(&out.stderr).trim()
+            ));
+        }
+        let deb = std::fs::read_dir(&work)
+            .map_err(|e| e.to_string())?
+            .filter_map(|e| e.ok().map(|e| e.path()))
+            .find(|p| p.extension().is_some_and(|x| x == "deb"))
+            .ok_or("apt-get download left no .deb")?;
+        let members: Vec<String> = files.iter().map(|f| format!("{dir}/{f}")).collect();
+        let script = format!(
+            "dpkg --fsys-tarfile '{}' | tar -x -C '{}' {}",
+            deb.display(),
+            work.display(),
+            members.iter().map(|m| format!("'{m}'")).collect::<Vec<_>>().join(" ")
+        );
+        let out = Command::new("sh").args(["-c", &script]).output().map_err(|e| e.to_string())?;
+        if !out.status.success() {
+            return Err(format!("unpacking {}: {}", deb.display(), String::from_utf8_lossy(&out.stderr).trim()));
+        }
+        std::fs::create_dir_all(&cache).map_err(|e| e.to_string())?;
+        for (f, m) in files.iter().zip(&members) {
+            let bytes = std::fs::read(work.join(m)).map_err(|e| format!("{m}: {e}"))?;
+            write_atomically(&cache.join(f), &bytes)?;
+        }
+        Ok(())
+    })();
+    let _ = std::fs::remove_dir_all(&work);
+    result.map_err(fail)?;
+    check_sha256(scene, &main, sha256)?;
+    Ok(main)
 }
 
 /// Write through a uniquely named temporary file and rename, so readers never see a partial file.
