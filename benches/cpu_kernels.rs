@@ -46,21 +46,13 @@ fn kernels(c: &mut Criterion) {
         bench.iter(|| svao_cpu::run_pass1(&svao.params, &g.depth, &g.normals, &no_progress))
     });
     let pass1 = svao_cpu::run_pass1(&svao.params, &g.depth, &g.normals, &no_progress);
-    let bvh = aokit_cpu::SceneBvh::build(&scene.triangles);
-    let normals = scene.face_normals();
-    let masks = scene.alpha_masks();
-    let surfaces = aokit_cpu::Surfaces {
-        face_normals: &normals,
-        uvs: &scene.triangle_uvs,
-        materials: &scene.triangle_materials,
-        mask_headers: &masks.0,
-        mask_texels: &masks.1,
-    };
-    let map = svao_cpu::run_sd_map(&bvh, &surfaces, &svao, &g.depth, &g.normals, &pass1, svao_cpu::HitOrder::Traversal);
+    let bvh = renderer.bvh();
+    let surfaces = renderer.surfaces();
+    let map = svao_cpu::run_sd_map(bvh, &surfaces, &svao, &g.depth, &g.normals, &pass1, svao_cpu::HitOrder::Traversal);
     group.throughput(Throughput::Elements(map.rays));
     group.bench_function("raysd_sd_map_rays", |bench| {
         bench.iter(|| {
-            svao_cpu::run_sd_map(&bvh, &surfaces, &svao, &g.depth, &g.normals, &pass1, svao_cpu::HitOrder::Traversal)
+            svao_cpu::run_sd_map(bvh, &surfaces, &svao, &g.depth, &g.normals, &pass1, svao_cpu::HitOrder::Traversal)
         })
     });
     group.throughput(Throughput::Elements(pass1.refined_samples()));

@@ -83,7 +83,13 @@ impl CpuRenderer {
         (ao, ms_since(t))
     }
 
-    fn surfaces(&self) -> Surfaces<'_> {
+    /// The scene's BVH (for tests and benches that drive the CPU kernels directly).
+    pub fn bvh(&self) -> &SceneBvh {
+        &self.bvh
+    }
+
+    /// Per-triangle surface data (normals, uvs, materials, alpha masks) beside the BVH.
+    pub fn surfaces(&self) -> Surfaces<'_> {
         Surfaces {
             face_normals: &self.face_normals,
             uvs: &self.uvs,
@@ -276,38 +282,34 @@ impl CpuRenderer {
         let mut refined_samples = 0;
         let mut interval_sum = None;
         let mut debug = None;
-        let ao = match technique {
+        // Run `f` and record its wall time as pass `name`.
+        let mut timed = |name: &'static str, f: &mut dyn FnMut()| {
+            let t = Instant::now();
+            f();
+            passes.push((name, ms_since(t)));
+        };
+        let mut ao = Vec::new();
+        match technique {
             Technique::Vao => {
-                let t = Instant::now();
-                let ao = aokit_cpu::run_vao(&frame.vao_params(), depth, normals, progress);
-                passes.push(("vao", ms_since(t)));
-                ao
+                timed("vao", &mut || ao = aokit_cpu::run_vao(&frame.vao_params(), depth, normals, progress))
             }
             Technique::GroundTruth { spp, uniform } => {
-                let (ao, ms) = self.ground_truth(frame, gbuffer, &frame.ground_truth_params(*spp, *uniform), progress);
-                passes.push(("groundtruth", ms));
+                let params = frame.ground_truth_params(*spp, *uniform);
+                timed("groundtruth", &mut || ao = self.ground_truth(frame, gbuffer, &params, progress).0);
                 rays = frame.inner.x as u64 * frame.inner.y as u64 * *spp as u64;
-                ao
             }
             Technique::RaySd(sd) => {
                 let svao = frame.svao_frame(Secondary::StochasticDepth, sd);
-                let t = Instant::now();
-                let pass1 = svao_cpu::run_pass1(&svao.params, depth, normals, progress);
-                passes.push(("ao_pass1", ms_since(t)));
-                let t = Instant::now();
-                let map = svao_cpu::run_sd_map(
-                    &self.bvh,
-                    &self.surfaces(),
-                    &svao,
-                    depth,
-                    normals,
-                    &pass1,
-                    svao_cpu::HitOrder::Traversal,
-                );
-                passes.push(("sd_map", ms_since(t)));
-                let t = Instant::now();
-                let ao = svao_cpu::run_pass2_sd(&svao.params, depth, normals, &pass1, &map);
-                passes.push(("ao_pass2", ms_since(t)));
+                let mut pass1 = None;
+                timed("ao_pass1", &mut || pass1 = Some(svao_cpu::run_pass1(&svao.params, depth, normals, progress)));
+                let pass1 = pass1.expect("pass 1 ran");
+                let mut map = None;
+                timed("sd_map", &mut || {
+                    let order = svao_cpu::HitOrder::Traversal;
+                    map = Some(svao_cpu::run_sd_map(&self.bvh, &self.surfaces(), &svao, depth, normals, &pass1, order))
+                });
+                let map = map.expect("SD map traced");
+                timed("ao_pass2", &mut || ao = svao_cpu::run_pass2_sd(&svao.params, depth, normals, &pass1, &map));
                 rays = map.rays;
                 interval_sum = Some(svao_cpu::sd_ray_stats(&svao, depth, normals, &pass1.ray_min, &pass1.ray_max).1);
                 refined_samples = pass1.refined_samples();
@@ -320,38 +322,25 @@ impl CpuRenderer {
                     sd_map: map.layers,
                     layers: svao.params.sd_layers,
                 });
-                ao
             }
             Technique::RaySvao { cutoff } => {
                 let svao = frame.svao_frame(Secondary::Raytraced, &SdOptions { cutoff: *cutoff, ..Default::default() });
-                let t = Instant::now();
-                let pass1 = svao_cpu::run_pass1(&svao.params, depth, normals, progress);
-                passes.push(("ao_pass1", ms_since(t)));
-                let t = Instant::now();
-                let (ao, traced) = svao_cpu::run_raysvao_pass2(
-                    &self.bvh,
-                    &self.surfaces(),
-                    &svao,
-                    depth,
-                    normals,
-                    &pass1,
-                    &aokit_cpu::no_progress,
-                );
-                passes.push(("ao_pass2_rays", ms_since(t)));
-                rays = traced;
+                let mut pass1 = None;
+                timed("ao_pass1", &mut || pass1 = Some(svao_cpu::run_pass1(&svao.params, depth, normals, progress)));
+                let pass1 = pass1.expect("pass 1 ran");
+                timed("ao_pass2_rays", &mut || {
+                    let none = &aokit_cpu::no_progress;
+                    (ao, rays) =
+                        svao_cpu::run_raysvao_pass2(&self.bvh, &self.surfaces(), &svao, depth, normals, &pass1, none)
+                });
                 refined_samples = pass1.refined_samples();
                 debug = Some(SvaoDebug { ao_pass1: pass1.ao, mask: pass1.mask, ..Default::default() });
-                ao
             }
-        };
-        let ao_final = if technique.blurred() {
-            let t = Instant::now();
-            let b = aokit_cpu::run_blur(&frame.blur_params(), &ao, depth);
-            passes.push(("blur", ms_since(t)));
-            b
-        } else {
-            ao.clone()
-        };
+        }
+        let mut ao_final = ao.clone();
+        if technique.blurred() {
+            timed("blur", &mut || ao_final = aokit_cpu::run_blur(&frame.blur_params(), &ao, depth));
+        }
         TechniqueRun { ao, ao_final, passes, rays, refined_samples, interval_sum, debug }
     }
 }

@@ -28,6 +28,25 @@ pub struct CompareRow {
     pub run: TechniqueRun,
 }
 
+impl CompareRow {
+    /// The table cells shared by the text and HTML tables: label, MSE, PSNR, SSIM, rays,
+    /// refined samples, summed SD-ray interval, total ms, passes.
+    pub fn cells(&self) -> [String; 9] {
+        let passes: Vec<_> = self.passes.iter().map(|(n, ms)| format!("{n} {ms:.1}")).collect();
+        [
+            self.label.clone(),
+            format!("{:.3e}", self.mse),
+            format!("{:.2}", self.psnr),
+            self.ssim.map_or("-".into(), |v| format!("{v:.4}")),
+            self.rays.to_string(),
+            self.refined_samples.to_string(),
+            self.run.interval_sum.map_or("-".into(), |v| format!("{v:.4e}")),
+            format!("{:.1}", self.total_ms),
+            passes.join(", "),
+        ]
+    }
+}
+
 /// Where a comparison ran.
 #[derive(Copy, Clone, Debug)]
 pub struct CompareSetup<'a> {
@@ -171,18 +190,9 @@ impl CompareReport {
             reference.join(", ")
         );
         for r in &self.rows {
-            let passes: Vec<_> = r.passes.iter().map(|(n, ms)| format!("{n} {ms:.1}")).collect();
+            let [label, mse, psnr, ssim, rays, refined, interval, total, passes] = r.cells();
             s += &format!(
-                "{:<24} {:>11.3e} {:>7.2} {:>7} {:>11} {:>10} {:>11} {:>10.1}  {}\n",
-                r.label,
-                r.mse,
-                r.psnr,
-                r.ssim.map_or("-".into(), |v| format!("{v:.4}")),
-                r.rays,
-                r.refined_samples,
-                r.run.interval_sum.map_or("-".into(), |v| format!("{v:.4e}")),
-                r.total_ms,
-                passes.join(", ")
+                "{label:<24} {mse:>11} {psnr:>7} {ssim:>7} {rays:>11} {refined:>10} {interval:>11} {total:>10}  {passes}\n"
             );
         }
         s
@@ -230,19 +240,8 @@ impl CompareReport {
         };
         let mut rows = String::new();
         for r in &self.rows {
-            let passes: Vec<_> = r.passes.iter().map(|(n, ms)| format!("{n}&nbsp;{ms:.1}")).collect();
-            rows += &format!(
-                "<tr><td>{}</td><td>{:.3e}</td><td>{:.2}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{:.1}</td><td>{}</td></tr>\n",
-                r.label,
-                r.mse,
-                r.psnr,
-                r.ssim.map_or("–".into(), |v| format!("{v:.4}")),
-                r.rays,
-                r.refined_samples,
-                r.run.interval_sum.map_or("–".into(), |v| format!("{v:.4e}")),
-                r.total_ms,
-                passes.join(", ")
-            );
+            let cells: Vec<String> = r.cells().iter().map(|c| format!("<td>{}</td>", html_escape(c))).collect();
+            rows += &format!("<tr>{}</tr>\n", cells.concat());
         }
         let mut figures = format!(
             "<figure><img src=\"{}\" alt=\"reference\"><figcaption>reference: {}</figcaption></figure>\n",

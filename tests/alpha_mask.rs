@@ -136,23 +136,15 @@ fn sd_map_any_hit_applies_the_alpha_test() {
 /// Every depth the SD map stored on `backend` comes from a candidate hit that survives the
 /// alpha test; returns (stored depths, cut-out candidates seen).
 fn check_oak_layers(
-    scene: &Scene,
+    renderer: &CpuRenderer,
     frame: &Frame,
     g: &GBufferImage,
     options: &SdOptions,
     map: &[f32],
     backend: &str,
 ) -> (usize, usize) {
-    let bvh = aokit_cpu::SceneBvh::build(&scene.triangles);
-    let normals = scene.face_normals();
-    let masks = scene.alpha_masks();
-    let surfaces = aokit_cpu::Surfaces {
-        face_normals: &normals,
-        uvs: &scene.triangle_uvs,
-        materials: &scene.triangle_materials,
-        mask_headers: &masks.0,
-        mask_texels: &masks.1,
-    };
+    let bvh = renderer.bvh();
+    let surfaces = renderer.surfaces();
     let svao = frame.svao_frame(Secondary::StochasticDepth, options);
     let p = &svao.params;
     let view = &p.vao.view;
@@ -201,10 +193,10 @@ fn sd_map_on_the_oak_tree_never_stores_cut_out_leaf_texels() {
     let cpu = CpuRenderer::new(&scene);
     let (g, _) = cpu.gbuffer(&frame, &no_progress);
     let c = cpu.run(&frame, &g, &technique, &no_progress);
-    let (stored, cut) = check_oak_layers(&scene, &frame, &g, &options, &c.debug.as_ref().unwrap().sd_map, "cpu");
+    let (stored, cut) = check_oak_layers(&cpu, &frame, &g, &options, &c.debug.as_ref().unwrap().sd_map, "cpu");
     assert!(stored > 1000 && cut > 1000, "the view must cross leaves: {stored} stored, {cut} cut out");
     let Some(vk) = common::vulkan() else { return };
     let v = vk.run(&scene, &frame, &g, &technique).unwrap();
-    check_oak_layers(&scene, &frame, &g, &options, &v.debug.as_ref().unwrap().sd_map, "vulkan");
+    check_oak_layers(&cpu, &frame, &g, &options, &v.debug.as_ref().unwrap().sd_map, "vulkan");
     common::assert_validation_clean(&vk);
 }

@@ -198,7 +198,7 @@ fn max_count_accepts_hits_and_later_hits_are_nearer() {
 fn bvh_any_hit_reports_every_triangle_once() {
     let (scene, frame) = common::builtin_frame("tower", 96, 64, 16);
     let renderer = CpuRenderer::new(&scene);
-    let bvh = aokit_cpu::SceneBvh::build(&scene.triangles);
+    let bvh = renderer.bvh();
     let camera = frame.camera;
     let mut rng = Rng(5);
     let mut total = 0;
@@ -220,7 +220,6 @@ fn bvh_any_hit_reports_every_triangle_once() {
         total += seen.len();
     }
     assert!(total > 300, "rays should cross several surfaces of the tower ({total} hits)");
-    drop(renderer);
 }
 
 fn sd_frame(frame: &aokit::frame::Frame, divisor: u32) -> aokit_shaders::svao::SvaoFrame {
@@ -286,20 +285,12 @@ fn sd_map_result_does_not_depend_on_hit_order() {
     let (scene, frame) = common::builtin_frame("sponza", 256, 144, 32);
     let renderer = CpuRenderer::new(&scene);
     let (g, _) = renderer.gbuffer(&frame, &aokit_cpu::no_progress);
-    let bvh = aokit_cpu::SceneBvh::build(&scene.triangles);
-    let normals = scene.face_normals();
-    let masks = scene.alpha_masks();
-    let surfaces = aokit_cpu::Surfaces {
-        face_normals: &normals,
-        uvs: &scene.triangle_uvs,
-        materials: &scene.triangle_materials,
-        mask_headers: &masks.0,
-        mask_texels: &masks.1,
-    };
+    let bvh = renderer.bvh();
+    let surfaces = renderer.surfaces();
     let svao = sd_frame(&frame, 2);
     let pass1 = run_pass1(&svao.params, &g.depth, &g.normals, &aokit_cpu::no_progress);
     let run = |order| {
-        let map = run_sd_map(&bvh, &surfaces, &svao, &g.depth, &g.normals, &pass1, order);
+        let map = run_sd_map(bvh, &surfaces, &svao, &g.depth, &g.normals, &pass1, order);
         (run_pass2_sd(&svao.params, &g.depth, &g.normals, &pass1, &map), map)
     };
     let (ao_a, map_a) = run(HitOrder::Traversal);

@@ -2,7 +2,7 @@
 //! the CPU counterpart of the raster pass in `aokit_shaders::gbuffer`.
 
 use crate::{Progress, SceneBvh};
-use aokit_shaders::common::alpha::{AlphaMaskHeader, alpha_test_passes};
+use aokit_shaders::common::alpha::{AlphaMaskHeader, triangle_alpha_passes};
 use aokit_shaders::common::camera::Camera;
 use aokit_shaders::common::normal_codec::encode_normal;
 use aokit_shaders::glam::{UVec2, Vec2, Vec3};
@@ -34,9 +34,7 @@ pub struct Surfaces<'a> {
 impl Surfaces<'_> {
     /// Alpha test of triangle `tri` at barycentrics `b` (weights of its 2nd and 3rd corner).
     pub fn passes_alpha(&self, tri: u32, b: Vec2) -> bool {
-        let [a0, a1, a2] = self.uvs[tri as usize];
-        let uv = a0 * (1.0 - b.x - b.y) + a1 * b.x + a2 * b.y;
-        alpha_test_passes(self.mask_headers, self.mask_texels, self.materials[tri as usize], uv)
+        triangle_alpha_passes(self.uvs.as_flattened(), self.materials, self.mask_headers, self.mask_texels, tri, b)
     }
 }
 

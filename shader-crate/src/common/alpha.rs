@@ -37,3 +37,21 @@ pub fn alpha_test_passes(headers: &[AlphaMaskHeader], texels: &[f32], material: 
     let i = (h.offset + y * h.width + x) as usize;
     i >= texels.len() || texels[i] >= h.cutoff
 }
+
+/// Alpha test of triangle `prim` at hit barycentrics `bary` (weights of its second and third
+/// corner): the corner texture coordinates `uvs[3·prim ..]` interpolated, then
+/// [`alpha_test_passes`] with the triangle's material. What every any-hit shader and the CPU's
+/// BVH callbacks run.
+#[inline]
+pub fn triangle_alpha_passes(
+    uvs: &[Vec2],
+    materials: &[u32],
+    headers: &[AlphaMaskHeader],
+    texels: &[f32],
+    prim: u32,
+    bary: Vec2,
+) -> bool {
+    let i = 3 * prim as usize;
+    let uv = uvs[i] * (1.0 - bary.x - bary.y) + uvs[i + 1] * bary.x + uvs[i + 2] * bary.y;
+    alpha_test_passes(headers, texels, materials[prim as usize], uv)
+}

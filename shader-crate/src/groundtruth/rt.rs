@@ -2,7 +2,7 @@
 //! a miss shader that clears the "occluded" payload, and an any-hit shader for the alpha test.
 
 use super::{GroundTruthFrame, OcclusionQuery, ground_truth_pixel};
-use crate::common::alpha::{AlphaMaskHeader, alpha_test_passes};
+use crate::common::alpha::{AlphaMaskHeader, triangle_alpha_passes};
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2, Vec3};
 use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
@@ -74,9 +74,7 @@ pub fn groundtruth_ahit(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 7)] mask_headers: &[AlphaMaskHeader],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_texels: &[f32],
 ) {
-    let i = 3 * prim as usize;
-    let uv = uvs[i] * (1.0 - bary.x - bary.y) + uvs[i + 1] * bary.x + uvs[i + 2] * bary.y;
-    if !alpha_test_passes(mask_headers, mask_texels, materials[prim as usize], uv) {
+    if !triangle_alpha_passes(uvs, materials, mask_headers, mask_texels, prim, *bary) {
         unsafe { spirv_std::arch::ignore_intersection() };
     }
 }

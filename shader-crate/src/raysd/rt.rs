@@ -3,7 +3,7 @@
 //! empty miss shader.
 
 use super::{NO_SLOT, SdPayload, reservoir_candidate, reservoir_commit, sd_ray, store_layers};
-use crate::common::alpha::{AlphaMaskHeader, alpha_test_passes};
+use crate::common::alpha::{AlphaMaskHeader, triangle_alpha_passes};
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2};
 use crate::svao::SvaoFrame;
@@ -73,9 +73,7 @@ pub fn raysd_ahit(
     let (slot, z) = reservoir_candidate(payload, t, *bary);
     let mut alpha = false;
     if slot != NO_SLOT {
-        let i = 3 * prim as usize;
-        let uv = uvs[i] * (1.0 - bary.x - bary.y) + uvs[i + 1] * bary.x + uvs[i + 2] * bary.y;
-        alpha = alpha_test_passes(mask_headers, mask_texels, materials[prim as usize], uv);
+        alpha = triangle_alpha_passes(uvs, materials, mask_headers, mask_texels, prim, *bary);
     }
     let accept = reservoir_commit(payload, slot, z, alpha);
     if !accept {

@@ -2,7 +2,7 @@
 //! over the inner image, one ray per flagged sample, the halo any-hit on every triangle.
 
 use super::{ACCEPT_AND_END, IGNORE, SampleRay, SampleRayState, SampleTracer, refine_by_ray, sample_any_hit};
-use crate::common::alpha::{AlphaMaskHeader, alpha_test_passes};
+use crate::common::alpha::{AlphaMaskHeader, triangle_alpha_passes};
 use crate::common::camera::Camera;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2};
@@ -90,9 +90,7 @@ pub fn raysvao_ahit(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_headers: &[AlphaMaskHeader],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mask_texels: &[f32],
 ) {
-    let i = 3 * prim as usize;
-    let uv = uvs[i] * (1.0 - bary.x - bary.y) + uvs[i + 1] * bary.x + uvs[i + 2] * bary.y;
-    if !alpha_test_passes(mask_headers, mask_texels, materials[prim as usize], uv) {
+    if !triangle_alpha_passes(uvs, materials, mask_headers, mask_texels, prim, *bary) {
         unsafe { spirv_std::arch::ignore_intersection() };
     }
     let decision = sample_any_hit(payload, t);
