@@ -6,7 +6,7 @@ use aokit::render::{CpuRenderer, Renderer, VulkanRenderer};
 use aokit::report::{BenchResult, CompareReport, CompareSetup};
 use aokit::scene::Scene;
 use aokit::scene::builtin::{self, BuiltinScene};
-use aokit::technique::{SdOptions, Technique};
+use aokit::technique::{GtaoOptions, GtaoPreset, SdOptions, Technique};
 use aokit_shaders::common::tables::JitterTable;
 use aokit_shaders::glam::Vec3;
 use aokit_vulkan::GpuOptions;
@@ -148,9 +148,69 @@ struct TechniqueArgs {
     /// Ground truth with uniform instead of cosine-weighted hemisphere sampling.
     #[arg(long)]
     uniform: bool,
+    /// XeGTAO quality preset: slices × steps per side 1×2, 2×2, 3×3, 9×3.
+    #[arg(long, value_enum, default_value = "high")]
+    preset: Preset,
+    /// XeGTAO denoise passes (0 off, 1 sharp, 2 medium, 3 soft).
+    #[arg(long, default_value_t = 1)]
+    gtao_denoise: u32,
+    /// XeGTAO RadiusMultiplier (effective radius = --radius × this).
+    #[arg(long, default_value_t = 1.457)]
+    gtao_radius_multiplier: f32,
+    /// XeGTAO FalloffRange (fraction of the radius over which samples fade).
+    #[arg(long, default_value_t = 0.615)]
+    gtao_falloff_range: f32,
+    /// XeGTAO SampleDistributionPower.
+    #[arg(long, default_value_t = 2.0)]
+    gtao_sample_power: f32,
+    /// XeGTAO ThinOccluderCompensation.
+    #[arg(long, default_value_t = 0.0)]
+    gtao_thin_occluder: f32,
+    /// XeGTAO FinalValuePower.
+    #[arg(long, default_value_t = 2.2)]
+    gtao_final_power: f32,
+    /// XeGTAO DepthMIPSamplingOffset.
+    #[arg(long, default_value_t = 3.30)]
+    gtao_mip_offset: f32,
+    /// XeGTAO normals: the G-buffer's, or derived from depth (pass 0).
+    #[arg(long, value_enum, default_value = "gbuffer")]
+    gtao_normals: GtaoNormals,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+enum Preset {
+    Low,
+    Medium,
+    High,
+    Ultra,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+enum GtaoNormals {
+    Gbuffer,
+    Depth,
 }
 
 impl TechniqueArgs {
+    fn gtao_options(&self) -> GtaoOptions {
+        GtaoOptions {
+            preset: match self.preset {
+                Preset::Low => GtaoPreset::Low,
+                Preset::Medium => GtaoPreset::Medium,
+                Preset::High => GtaoPreset::High,
+                Preset::Ultra => GtaoPreset::Ultra,
+            },
+            denoise_passes: self.gtao_denoise,
+            radius_multiplier: self.gtao_radius_multiplier,
+            falloff_range: self.gtao_falloff_range,
+            sample_distribution_power: self.gtao_sample_power,
+            thin_occluder_compensation: self.gtao_thin_occluder,
+            final_value_power: self.gtao_final_power,
+            depth_mip_sampling_offset: self.gtao_mip_offset,
+            normals_from_depth: self.gtao_normals == GtaoNormals::Depth,
+        }
+    }
+
     fn sd_options(&self) -> Result<SdOptions, String> {
         let o = SdOptions {
             divisor: match self.sd_res {
@@ -177,7 +237,7 @@ impl TechniqueArgs {
     }
 
     fn technique(&self, name: &str) -> Result<Technique, String> {
-        Technique::parse(name, self.sd_options()?, self.spp, self.uniform)
+        Technique::parse(name, self.sd_options()?, self.gtao_options(), self.spp, self.uniform)
     }
 }
 
@@ -187,7 +247,7 @@ struct RenderArgs {
     frame: FrameArgs,
     #[command(flatten)]
     options: TechniqueArgs,
-    /// vao, raysd, raysvao or groundtruth.
+    /// vao, raysd, raysvao, gtao or groundtruth.
     #[arg(long, default_value = "vao")]
     technique: String,
     /// Skip the bilateral blur.

@@ -2,15 +2,15 @@
 
 use crate::frame::Frame;
 use crate::scene::Scene;
-use crate::technique::{SdOptions, SvaoDebug, Technique, TechniqueRun};
+use crate::technique::{GtaoOptions, SdOptions, SvaoDebug, Technique, TechniqueRun};
 use aokit_cpu::svao as svao_cpu;
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
 use aokit_shaders::svao::{Secondary, SvaoFrame};
 use aokit_vulkan::{
-    Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, GroundTruthPipeline, RasterGBuffer, SceneAccel, ScreenPasses,
-    SvaoPipelines,
+    Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, GroundTruthPipeline, GtaoOutput, GtaoPasses, RasterGBuffer,
+    SceneAccel, ScreenPasses, SvaoPipelines,
 };
 use std::time::Instant;
 
@@ -145,6 +145,7 @@ pub struct VulkanRenderer {
     raster: RasterGBuffer,
     screen: ScreenPasses,
     svao: std::cell::OnceCell<SvaoPipelines>,
+    gtao_passes: std::cell::OnceCell<GtaoPasses>,
     /// `(scene key, acceleration structure)` of the last scene traced.
     accel: std::cell::RefCell<Option<(usize, SceneAccel)>>,
 }
@@ -154,7 +155,14 @@ impl VulkanRenderer {
         let gpu = Gpu::new(options)?;
         let raster = RasterGBuffer::new(&gpu)?;
         let screen = ScreenPasses::new(&gpu)?;
-        Ok(VulkanRenderer { gpu, raster, screen, svao: Default::default(), accel: Default::default() })
+        Ok(VulkanRenderer {
+            gpu,
+            raster,
+            screen,
+            svao: Default::default(),
+            gtao_passes: Default::default(),
+            accel: Default::default(),
+        })
     }
 
     /// Rasterize the G-buffer and read it back.
@@ -258,6 +266,9 @@ impl Drop for VulkanRenderer {
         if let Some(p) = self.svao.take() {
             p.destroy(&self.gpu);
         }
+        if let Some(p) = self.gtao_passes.take() {
+            p.destroy(&self.gpu);
+        }
         if let Some((_, a)) = self.accel.take() {
             a.destroy(&self.gpu);
         }
@@ -323,6 +334,19 @@ impl CpuRenderer {
                     layers: svao.params.sd_layers,
                 });
             }
+            Technique::Gtao(o) => {
+                let params = frame.gtao_params(o);
+                let mut mips = Vec::new();
+                timed("gtao_prefilter", &mut || mips = aokit_cpu::gtao::run_prefilter(&params, depth));
+                let mut generated = Vec::new();
+                if o.normals_from_depth {
+                    timed("gtao_normals", &mut || generated = aokit_cpu::gtao::run_normals(&params, depth));
+                }
+                let normals = if o.normals_from_depth { &generated[..] } else { normals };
+                let (mut terms, mut edges) = (Vec::new(), Vec::new());
+                timed("gtao_main", &mut || (terms, edges) = aokit_cpu::gtao::run_main(&params, &mips, normals));
+                timed("gtao_denoise", &mut || ao = aokit_cpu::gtao::run_denoise(&params, &terms, &edges));
+            }
             Technique::RaySvao { cutoff } => {
                 let svao = frame.svao_frame(Secondary::Raytraced, &SdOptions { cutoff: *cutoff, ..Default::default() });
                 let mut pass1 = None;
@@ -387,16 +411,11 @@ impl VulkanRenderer {
         match technique {
             Technique::Vao => {
                 let r = self.ao(frame, gbuffer.clone())?;
-                let ao_final = r.ao_blurred;
-                Ok(TechniqueRun {
-                    ao: r.ao,
-                    ao_final,
-                    passes: r.passes,
-                    rays: 0,
-                    refined_samples: 0,
-                    interval_sum: None,
-                    debug: None,
-                })
+                Ok(TechniqueRun::plain(r.ao, r.ao_blurred, r.passes))
+            }
+            Technique::Gtao(o) => {
+                let out = self.gtao(frame, gbuffer, o)?;
+                Ok(TechniqueRun::plain(out.ao.clone(), out.ao, out.pass_ms))
             }
             Technique::GroundTruth { spp, uniform } => {
                 let (ao, passes) =
@@ -420,6 +439,21 @@ impl VulkanRenderer {
                 self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Raytraced, &options))
             }
         }
+    }
+
+    /// XeGTAO's passes on a given G-buffer (uploaded), with every intermediate buffer.
+    pub fn gtao(&self, frame: &Frame, gbuffer: &GBufferImage, options: &GtaoOptions) -> Result<GtaoOutput, GpuError> {
+        let passes = match self.gtao_passes.get() {
+            Some(p) => p,
+            None => {
+                let p = GtaoPasses::new(&self.gpu)?;
+                self.gtao_passes.get_or_init(|| p)
+            }
+        };
+        let params = frame.gtao_params(options);
+        self.with_uploaded_gbuffer(gbuffer, |depth, normals| {
+            passes.run(&self.gpu, &params, depth, (!options.normals_from_depth).then_some(normals))
+        })
     }
 
     fn run_svao(

@@ -5,6 +5,7 @@ use crate::frame::Frame;
 use aokit_shaders::common::tables::JitterTable;
 use aokit_shaders::glam::{UVec2, uvec2};
 use aokit_shaders::groundtruth::GroundTruthParams;
+use aokit_shaders::gtao::GtaoParams;
 use aokit_shaders::svao::{Secondary, SvaoFrame, SvaoParams};
 
 /// Options of the ray-traced stochastic depth map (spec svao-raysd §2 defaults).
@@ -69,6 +70,104 @@ impl SdOptions {
     }
 }
 
+/// XeGTAO quality presets (spec gtao-raymarch-hybrid §2.2): slices × steps per side.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum GtaoPreset {
+    Low,
+    Medium,
+    High,
+    Ultra,
+}
+
+impl GtaoPreset {
+    /// `(slices, steps per side)`.
+    pub fn slices_steps(self) -> (u32, u32) {
+        match self {
+            GtaoPreset::Low => (1, 2),
+            GtaoPreset::Medium => (2, 2),
+            GtaoPreset::High => (3, 3),
+            GtaoPreset::Ultra => (9, 3),
+        }
+    }
+
+    pub fn parse(s: &str) -> Result<GtaoPreset, String> {
+        Ok(match s {
+            "low" => GtaoPreset::Low,
+            "medium" => GtaoPreset::Medium,
+            "high" => GtaoPreset::High,
+            "ultra" => GtaoPreset::Ultra,
+            _ => return Err(format!("preset '{s}' is not low, medium, high or ultra")),
+        })
+    }
+}
+
+/// XeGTAO settings (spec §2.1 defaults; the effect radius is the frame's AO radius).
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct GtaoOptions {
+    pub preset: GtaoPreset,
+    /// 0 (off) … 3 (soft) [1].
+    pub denoise_passes: u32,
+    pub radius_multiplier: f32,
+    pub falloff_range: f32,
+    pub sample_distribution_power: f32,
+    pub thin_occluder_compensation: f32,
+    pub final_value_power: f32,
+    pub depth_mip_sampling_offset: f32,
+    /// Derive normals from depth (pass 0) instead of using the G-buffer's.
+    pub normals_from_depth: bool,
+}
+
+impl Default for GtaoOptions {
+    fn default() -> Self {
+        GtaoOptions {
+            preset: GtaoPreset::High,
+            denoise_passes: 1,
+            radius_multiplier: 1.457,
+            falloff_range: 0.615,
+            sample_distribution_power: 2.0,
+            thin_occluder_compensation: 0.0,
+            final_value_power: 2.2,
+            depth_mip_sampling_offset: 3.30,
+            normals_from_depth: false,
+        }
+    }
+}
+
+impl GtaoOptions {
+    /// Reject settings outside XeGTAO's UI ranges (spec §2.1), naming the setting.
+    pub fn validate(&self) -> Result<(), String> {
+        let check = |name: &str, v: f32, lo: f32, hi: f32| {
+            if v.is_finite() && (lo..=hi).contains(&v) {
+                Ok(())
+            } else {
+                Err(format!("{name} {v} is outside [{lo}, {hi}]"))
+            }
+        };
+        check("--gtao-radius-multiplier", self.radius_multiplier, 0.3, 3.0)?;
+        check("--gtao-falloff-range", self.falloff_range, 0.0, 1.0)?;
+        check("--gtao-sample-power", self.sample_distribution_power, 1.0, 3.0)?;
+        check("--gtao-thin-occluder", self.thin_occluder_compensation, 0.0, 0.7)?;
+        check("--gtao-final-power", self.final_value_power, 0.5, 5.0)?;
+        check("--gtao-mip-offset", self.depth_mip_sampling_offset, 0.0, 30.0)?;
+        if self.denoise_passes > 3 {
+            return Err(format!("--gtao-denoise {} is not 0–3", self.denoise_passes));
+        }
+        Ok(())
+    }
+
+    pub fn describe(&self) -> serde_json::Value {
+        let (slices, steps) = self.preset.slices_steps();
+        serde_json::json!({
+            "preset": format!("{:?}", self.preset).to_lowercase(), "slices": slices, "steps": steps,
+            "denoise_passes": self.denoise_passes, "radius_multiplier": self.radius_multiplier,
+            "falloff_range": self.falloff_range, "sample_distribution_power": self.sample_distribution_power,
+            "thin_occluder_compensation": self.thin_occluder_compensation,
+            "final_value_power": self.final_value_power, "depth_mip_sampling_offset": self.depth_mip_sampling_offset,
+            "normals": if self.normals_from_depth { "depth" } else { "gbuffer" },
+        })
+    }
+}
+
 /// An AO technique.
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub enum Technique {
@@ -80,6 +179,8 @@ pub enum Technique {
     RaySvao { cutoff: f32 },
     /// World-space ray-traced AO (spec gtao-raymarch-hybrid §5).
     GroundTruth { spp: u32, uniform: bool },
+    /// XeGTAO (spec gtao-raymarch-hybrid §2).
+    Gtao(GtaoOptions),
 }
 
 impl Technique {
@@ -90,6 +191,7 @@ impl Technique {
             Technique::RaySd(_) => "raysd",
             Technique::RaySvao { .. } => "raysvao",
             Technique::GroundTruth { .. } => "groundtruth",
+            Technique::Gtao(_) => "gtao",
         }
     }
 
@@ -97,10 +199,10 @@ impl Technique {
     /// Per-technique overrides follow the name as `:key=value` (keys `sd-res`
     /// full|half|quarter, `sd-layers`, `max-count`, `cutoff`, `interval` on|off, `jitter`
     /// none|scrambled|paper, `sd-guard`, `spp`), e.g. `raysd:sd-layers=8:interval=off`.
-    pub fn parse(spec: &str, sd: SdOptions, spp: u32, uniform: bool) -> Result<Technique, String> {
+    pub fn parse(spec: &str, sd: SdOptions, gtao: GtaoOptions, spp: u32, uniform: bool) -> Result<Technique, String> {
         let mut parts = spec.trim().split(':');
         let name = parts.next().unwrap_or_default();
-        let (mut sd, mut spp) = (sd, spp);
+        let (mut sd, mut gtao, mut spp) = (sd, gtao, spp);
         for part in parts {
             let (key, value) = part.split_once('=').ok_or_else(|| format!("'{part}' in '{spec}' is not key=value"))?;
             let bad = |what: &str| format!("{key}={value} in '{spec}': expected {what}");
@@ -134,10 +236,21 @@ impl Technique {
                 }
                 "sd-guard" => sd.guard = number("pixels")?,
                 "spp" => spp = number("rays per pixel")?,
+                "preset" => gtao.preset = GtaoPreset::parse(value)?,
+                "denoise" => gtao.denoise_passes = number("0–3")?,
+                "normals" => {
+                    gtao.normals_from_depth = match value {
+                        "depth" => true,
+                        "gbuffer" => false,
+                        _ => return Err(bad("depth or gbuffer")),
+                    }
+                }
+                "final-power" => gtao.final_value_power = value.parse().map_err(|_| bad("a power"))?,
                 _ => return Err(format!("unknown option '{key}' in '{spec}'")),
             }
         }
         sd.validate()?;
+        gtao.validate()?;
         if spp == 0 {
             return Err(format!("'{spec}': spp must be at least 1"));
         }
@@ -146,8 +259,9 @@ impl Technique {
             "raysd" => Technique::RaySd(sd),
             "raysvao" => Technique::RaySvao { cutoff: sd.cutoff },
             "groundtruth" => Technique::GroundTruth { spp, uniform },
+            "gtao" => Technique::Gtao(gtao),
             other => {
-                return Err(format!("unknown technique '{other}' (known: vao, raysd, raysvao, groundtruth)"));
+                return Err(format!("unknown technique '{other}' (known: vao, raysd, raysvao, gtao, groundtruth)"));
             }
         })
     }
@@ -156,6 +270,18 @@ impl Technique {
     /// `defaults`, e.g. `raysd_n8`.
     pub fn label(&self, defaults: &SdOptions) -> String {
         let mut label = self.name().to_string();
+        if let Technique::Gtao(o) = self {
+            let d = GtaoOptions::default();
+            if o.preset != d.preset {
+                label += &format!("_{:?}", o.preset).to_lowercase();
+            }
+            if o.denoise_passes != d.denoise_passes {
+                label += &format!("_denoise{}", o.denoise_passes);
+            }
+            if o.normals_from_depth {
+                label += "_depthnormals";
+            }
+        }
         if let Technique::RaySd(o) = self {
             let d = defaults;
             for (differs, text) in [
@@ -177,7 +303,7 @@ impl Technique {
 
     /// Whether the technique's output goes through the bilateral blur (spec §3 step 5).
     pub fn blurred(&self) -> bool {
-        !matches!(self, Technique::GroundTruth { .. })
+        !matches!(self, Technique::GroundTruth { .. } | Technique::Gtao(_))
     }
 
     /// Options as JSON for reports.
@@ -187,6 +313,7 @@ impl Technique {
             Technique::RaySd(o) => o.describe(),
             Technique::RaySvao { cutoff } => serde_json::json!({ "cutoff": cutoff }),
             Technique::GroundTruth { spp, uniform } => serde_json::json!({ "spp": spp, "uniform": uniform }),
+            Technique::Gtao(o) => o.describe(),
         }
     }
 }
@@ -219,6 +346,26 @@ impl Frame {
                 _pad1: 0,
                 _pad2: 0,
             },
+        }
+    }
+
+    /// XeGTAO parameters with this frame's radius as the effect radius.
+    pub fn gtao_params(&self, o: &GtaoOptions) -> GtaoParams {
+        let (slices, steps) = o.preset.slices_steps();
+        GtaoParams {
+            view: self.camera.view,
+            radius: self.radius,
+            radius_multiplier: o.radius_multiplier,
+            falloff_range: o.falloff_range,
+            sample_distribution_power: o.sample_distribution_power,
+            thin_occluder_compensation: o.thin_occluder_compensation,
+            final_value_power: o.final_value_power,
+            depth_mip_sampling_offset: o.depth_mip_sampling_offset,
+            slices,
+            steps,
+            denoise_passes: o.denoise_passes,
+            noise_frame: 0,
+            pass: 0,
         }
     }
 
@@ -263,6 +410,11 @@ pub struct TechniqueRun {
 }
 
 impl TechniqueRun {
+    /// A run without rays, refinement or diagnostics.
+    pub fn plain(ao: Vec<f32>, ao_final: Vec<f32>, passes: Vec<(&'static str, f64)>) -> TechniqueRun {
+        TechniqueRun { ao, ao_final, passes, rays: 0, refined_samples: 0, interval_sum: None, debug: None }
+    }
+
     pub fn total_ms(&self) -> f64 {
         self.passes.iter().map(|(_, ms)| ms).sum()
     }

@@ -5,6 +5,7 @@
 pub mod bvh;
 pub mod gbuffer;
 pub mod groundtruth;
+pub mod gtao;
 pub mod screen;
 pub mod svao;
 

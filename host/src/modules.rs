@@ -24,9 +24,13 @@ pub const RAYSD_AHIT: &[u8] = spv!("raysd_ahit");
 pub const RAYSVAO_RGEN: &[u8] = spv!("raysvao_rgen");
 pub const RAYSVAO_MISS: &[u8] = spv!("raysvao_miss");
 pub const RAYSVAO_AHIT: &[u8] = spv!("raysvao_ahit");
+pub const GTAO_PREFILTER: &[u8] = spv!("gtao_prefilter");
+pub const GTAO_NORMALS: &[u8] = spv!("gtao_normals");
+pub const GTAO_MAIN: &[u8] = spv!("gtao_main");
+pub const GTAO_DENOISE: &[u8] = spv!("gtao_denoise");
 
 /// Every module by entry-point name.
-pub const ALL: [(&str, &[u8]); 15] = [
+pub const ALL: [(&str, &[u8]); 19] = [
     ("vao_main", VAO_MAIN),
     ("blur_main", BLUR_MAIN),
     ("gbuffer_vs", GBUFFER_VS),
@@ -42,6 +46,10 @@ pub const ALL: [(&str, &[u8]); 15] = [
     ("raysvao_rgen", RAYSVAO_RGEN),
     ("raysvao_miss", RAYSVAO_MISS),
     ("raysvao_ahit", RAYSVAO_AHIT),
+    ("gtao_prefilter", GTAO_PREFILTER),
+    ("gtao_normals", GTAO_NORMALS),
+    ("gtao_main", GTAO_MAIN),
+    ("gtao_denoise", GTAO_DENOISE),
 ];
 
 /// SPIR-V words of a module (validates the magic number and alignment).

@@ -18,6 +18,7 @@ pub mod blur;
 pub mod common;
 pub mod gbuffer;
 pub mod groundtruth;
+pub mod gtao;
 pub mod raysd;
 pub mod raysvao;
 pub mod svao;

@@ -32,3 +32,48 @@ pub fn sign_nonzero(x: f32) -> f32 {
 pub fn is_valid_depth(d: f32, far: f32) -> bool {
     d > 0.0 && d < far
 }
+
+/// XeGTAO's `fastSqrt` (spec gtao-raymarch-hybrid §1.7): the float with bits
+/// `0x1fbd1df5 + (bits(x) >> 1)`, for x ≥ 0.
+#[inline]
+pub fn fast_sqrt(x: f32) -> f32 {
+    f32::from_bits(0x1fbd_1df5u32.wrapping_add(((x.to_bits() as i32) >> 1) as u32))
+}
+
+/// XeGTAO's `fastAcos` (spec §1.7) with its literal 7-digit constants:
+/// `r = (−0.156583·|x| + 1.570796)·fastSqrt(1 − |x|)`, `π − r` for negative x.
+#[inline]
+#[allow(clippy::approx_constant)] // XeGTAO's literal constants, kept for parity (spec §1.7)
+pub fn fast_acos(x: f32) -> f32 {
+    let a = x.abs();
+    let r = (-0.156_583 * a + 1.570_796) * fast_sqrt(1.0 - a);
+    if x >= 0.0 { r } else { 3.141_593 - r }
+}
+
+/// `a + (b − a)·t` (HLSL `lerp`).
+#[inline]
+pub fn lerp(a: f32, b: f32, t: f32) -> f32 {
+    a + (b - a) * t
+}
+
+/// Möller–Hughes minimal rotation taking unit `from` to unit `to`, applied to `v` (spec
+/// gtao-raymarch-hybrid §2.6.5): identity when `from·to > 0.9997`; for near-opposite vectors
+/// the rotation by π about `from`'s orthogonal x axis, `diag(1, −1, −1)` for `from = (0,0,−1)`
+/// (spec §3.4 step 5).
+#[inline]
+pub fn rotate_minimal(from: crate::glam::Vec3, to: crate::glam::Vec3, v: crate::glam::Vec3) -> crate::glam::Vec3 {
+    let e = from.dot(to);
+    if e > 0.9997 {
+        return v;
+    }
+    if e < -0.9997 {
+        return crate::glam::vec3(v.x, -v.y, -v.z);
+    }
+    let w = from.cross(to);
+    let h = 1.0 / (1.0 + e);
+    crate::glam::vec3(
+        (e + h * w.x * w.x) * v.x + (h * w.x * w.y - w.z) * v.y + (h * w.x * w.z + w.y) * v.z,
+        (h * w.x * w.y + w.z) * v.x + (e + h * w.y * w.y) * v.y + (h * w.y * w.z - w.x) * v.z,
+        (h * w.x * w.z - w.y) * v.x + (h * w.y * w.z + w.x) * v.y + (e + h * w.z * w.z) * v.z,
+    )
+}

@@ -7,6 +7,7 @@ pub mod float_order;
 pub mod gbuffer_read;
 pub mod hash;
 pub mod math;
+pub mod noise;
 pub mod normal_codec;
 pub mod tables;
 

@@ -1,0 +1,41 @@
+//! XeGTAO's spatio-temporal noise (spec gtao-raymarch-hybrid §1.6): a Hilbert-curve index over
+//! a 64×64 tile drives the R2 low-discrepancy sequence, so neighbouring pixels get well spread
+//! samples. Used by XeGTAO, the Poisson-disk ray-marched SSAO and the hybrid AO.
+
+use crate::common::math::frac;
+use crate::glam::{UVec2, Vec2, vec2};
+
+/// Hilbert index of `p` in a 64×64 tile (6 levels; only the low 6 bits of x and y count),
+/// spec §1.6: for b = 32…1, `idx += b²·((3·rx) ^ ry)`, then rotate the quadrant.
+#[inline]
+pub fn hilbert_index(p: UVec2) -> u32 {
+    let mut x = p.x & 63;
+    let mut y = p.y & 63;
+    let mut index = 0;
+    let mut b = 32;
+    while b > 0 {
+        let rx = ((x & b) != 0) as u32;
+        let ry = ((y & b) != 0) as u32;
+        index += b * b * ((3 * rx) ^ ry);
+        if ry == 0 {
+            if rx == 1 {
+                x = 63 - x;
+                y = 63 - y;
+            }
+            core::mem::swap(&mut x, &mut y);
+        }
+        b /= 2;
+    }
+    index
+}
+
+/// R2 constants `1/ρ`, `1/ρ²` of the plastic number ρ = 1.32471795… (spec §1.6).
+pub const R2: [f32; 2] = [0.754_877_7, 0.569_840_3];
+
+/// The noise `ξ = frac(0.5 + i·(1/ρ, 1/ρ²))` of pixel `p` with `i = hilbert(p) + 288·(frame mod
+/// 64)`, in f32 in XeGTAO's order (spec §1.6). `ξ.x` drives slice/rotation angles, `ξ.y` steps.
+#[inline]
+pub fn spatio_temporal_noise(p: UVec2, frame: u32) -> Vec2 {
+    let i = (hilbert_index(p) + 288 * (frame % 64)) as f32;
+    vec2(frac(0.5 + i * R2[0]), frac(0.5 + i * R2[1]))
+}

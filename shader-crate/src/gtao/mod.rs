@@ -1,0 +1,193 @@
+//! XeGTAO (Intel's ground-truth-based AO, spec gtao-raymarch-hybrid §2): a weighted depth MIP
+//! chain (PrefilterDepths), horizon search over slices with the cosine-weighted arc integral
+//! (MainPass), and an edge-aware 3×3 denoiser run 1–3 times. Optional pass 0 derives normals
+//! from depth. View space here is XeGTAO's (+z forward); the G-buffer's right-handed normals are
+//! converted by negating z (spec §1.2).
+
+pub mod denoise;
+pub mod main_pass;
+pub mod prefilter;
+
+pub use denoise::denoise_pixel;
+pub use main_pass::{GtaoPixel, gtao_pixel, normal_from_depth};
+pub use prefilter::prefilter_texel;
+
+#[allow(unused_imports)]
+use spirv_std::num_traits::Float;
+
+use crate::common::ViewParams;
+use crate::glam::{UVec2, Vec2, Vec3, uvec2, vec3};
+
+/// Levels of the working-depth MIP chain (spec §2.1).
+pub const MIP_LEVELS: u32 = 5;
+
+/// XeGTAO settings (spec §2.1 defaults in brackets) plus the per-dispatch `pass` index.
+#[repr(C)]
+#[derive(Copy, Clone, Debug, PartialEq)]
+#[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+pub struct GtaoParams {
+    pub view: ViewParams,
+    /// Effect radius in world units [0.5; aokit: the scene's AO radius].
+    pub radius: f32,
+    /// [1.457]
+    pub radius_multiplier: f32,
+    /// [0.615]
+    pub falloff_range: f32,
+    /// [2.0]
+    pub sample_distribution_power: f32,
+    /// [0.0]
+    pub thin_occluder_compensation: f32,
+    /// [2.2]
+    pub final_value_power: f32,
+    /// [3.30]
+    pub depth_mip_sampling_offset: f32,
+    /// Slices per pixel (preset: Low 1, Medium 2, High 3, Ultra 9).
+    pub slices: u32,
+    /// Steps per side (Low/Medium 2, High/Ultra 3).
+    pub steps: u32,
+    /// Denoise passes 0–3 [1].
+    pub denoise_passes: u32,
+    /// Temporal noise frame (0 unless TAA + denoise, spec §1.6).
+    pub noise_frame: u32,
+    /// Prefilter: the MIP level this dispatch writes; denoise: the pass index.
+    pub pass: u32,
+}
+
+impl GtaoParams {
+    /// `R = Radius·RadiusMultiplier` (spec §2.6.2).
+    #[inline]
+    pub fn effective_radius(&self) -> f32 {
+        self.radius * self.radius_multiplier
+    }
+}
+
+/// Size of MIP `k` of the full target: `max(1, ⌊W/2^k⌋) × max(1, ⌊H/2^k⌋)` (spec §1.5).
+#[inline]
+pub fn mip_size(full: UVec2, k: u32) -> UVec2 {
+    uvec2((full.x >> k).max(1), (full.y >> k).max(1))
+}
+
+/// Offset of MIP `k` in the packed chain (levels one after another, row-major).
+#[inline]
+pub fn mip_offset(full: UVec2, k: u32) -> usize {
+    let mut offset = 0;
+    let mut j = 0;
+    while j < k {
+        let s = mip_size(full, j);
+        offset += (s.x * s.y) as usize;
+        j += 1;
+    }
+    offset
+}
+
+/// Texel of MIP `k` holding uv, point sampling with clamp-to-edge (spec §1.5).
+#[inline]
+pub fn mip_texel(full: UVec2, k: u32, uv: Vec2) -> usize {
+    let s = mip_size(full, k);
+    let x = clamp_index((uv.x * s.x as f32).floor(), s.x);
+    let y = clamp_index((uv.y * s.y as f32).floor(), s.y);
+    mip_offset(full, k) + (y * s.x + x) as usize
+}
+
+/// `clamp(v, 0, n − 1)` of a float coordinate as an index (NaN → 0).
+#[inline]
+pub fn clamp_index(v: f32, n: u32) -> u32 {
+    if v > 0.0 { (v as u32).min(n - 1) } else { 0 }
+}
+
+/// `viewPos(uv, z) = ((2u−1)·tanX·z, (1−2v)·tanY·z, z)` in XeGTAO's +z-forward view space
+/// (spec §1.4).
+#[inline]
+pub fn view_pos(view: &ViewParams, uv: Vec2, z: f32) -> Vec3 {
+    vec3((2.0 * uv.x - 1.0) * view.tan_half_fov.x * z, (1.0 - 2.0 * uv.y) * view.tan_half_fov.y * z, z)
+}
+
+/// Pixel `p` clamped into the full target after adding `(dx, dy)` (clamp-to-edge reads).
+#[inline]
+pub fn neighbour(p: UVec2, dx: i32, dy: i32, size: UVec2) -> UVec2 {
+    let x = (p.x as i32 + dx).clamp(0, size.x as i32 - 1) as u32;
+    let y = (p.y as i32 + dy).clamp(0, size.y as i32 - 1) as u32;
+    uvec2(x, y)
+}
+
+use crate::glam::UVec3;
+use spirv_std::spirv;
+
+/// PrefilterDepths: one invocation per texel of MIP `params.pass` (dispatch per level, MIP 0
+/// first).
+#[spirv(compute(threads(8, 8), entry_point_name = "gtao_prefilter"))]
+pub fn gtao_prefilter(
+    #[spirv(global_invocation_id)] id: UVec3,
+    #[spirv(push_constant)] params: &GtaoParams,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] depth: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] mips: &mut [f32],
+) {
+    let full = params.view.size();
+    let size = mip_size(full, params.pass);
+    let t = id.truncate();
+    if t.x >= size.x || t.y >= size.y {
+        return;
+    }
+    let value = prefilter_texel(params, depth, mips, t);
+    mips[mip_offset(full, params.pass) + (t.y * size.x + t.x) as usize] = value;
+}
+
+/// Pass 0: normals from depth, one invocation per pixel of the full target.
+#[spirv(compute(threads(8, 8), entry_point_name = "gtao_normals"))]
+pub fn gtao_normals(
+    #[spirv(global_invocation_id)] id: UVec3,
+    #[spirv(push_constant)] params: &GtaoParams,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] depth: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] normals: &mut [u32],
+) {
+    let size = params.view.size();
+    let p = id.truncate();
+    if p.x >= size.x || p.y >= size.y {
+        return;
+    }
+    normals[(p.y * size.x + p.x) as usize] = normal_from_depth(params, depth, p);
+}
+
+/// MainPass, one invocation per pixel of the full target.
+#[spirv(compute(threads(8, 8), entry_point_name = "gtao_main"))]
+pub fn gtao_main(
+    #[spirv(global_invocation_id)] id: UVec3,
+    #[spirv(push_constant)] params: &GtaoParams,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] mips: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] normals: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] terms: &mut [u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] edges: &mut [u32],
+) {
+    let size = params.view.size();
+    let p = id.truncate();
+    if p.x >= size.x || p.y >= size.y {
+        return;
+    }
+    let out = gtao_pixel(params, mips, normals, p);
+    let i = (p.y * size.x + p.x) as usize;
+    terms[i] = out.term;
+    edges[i] = out.edges;
+}
+
+/// Denoise pass `params.pass`: terms in → terms out; the last pass also writes the visibility.
+#[spirv(compute(threads(8, 8), entry_point_name = "gtao_denoise"))]
+pub fn gtao_denoise(
+    #[spirv(global_invocation_id)] id: UVec3,
+    #[spirv(push_constant)] params: &GtaoParams,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] terms_in: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] edges: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] terms_out: &mut [u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] ao: &mut [f32],
+) {
+    let size = params.view.size();
+    let p = id.truncate();
+    if p.x >= size.x || p.y >= size.y {
+        return;
+    }
+    let out = denoise_pixel(params, terms_in, edges, p);
+    let i = (p.y * size.x + p.x) as usize;
+    terms_out[i] = out.term;
+    if out.last {
+        ao[i] = out.term as f32 / 255.0;
+    }
+}

@@ -1,0 +1,66 @@
+//! PrefilterDepths (spec gtao-raymarch-hybrid §2.5): MIP 0 is the working depth, clamped to the
+//! fp16 range as the reference does in every build; each further level filters 2×2 texels of
+//! the level above with a weighted average that prefers the farthest sample.
+
+use super::{GtaoParams, mip_offset, mip_size};
+use crate::common::math::is_valid_depth;
+use crate::glam::{UVec2, uvec2};
+
+/// Largest working depth (the fp16 maximum, spec §2.5 step 1, §7.6).
+pub const MAX_WORKING_DEPTH: f32 = 65504.0;
+
+/// Depth MIP filter (spec §2.5): `R' = 0.75·R·mult`, `w_i = sat((R' − (dmax − d_i)) /
+/// (FalloffRange·R'))`, result `Σ w_i·d_i / Σ w_i`; a step function when FalloffRange = 0.
+#[inline]
+pub fn mip_filter(d: [f32; 4], params: &GtaoParams) -> f32 {
+    let r = 0.75 * params.effective_radius();
+    let dmax = d[0].max(d[1]).max(d[2]).max(d[3]);
+    let (mut sum, mut weights) = (0.0, 0.0);
+    let mut i = 0;
+    while i < 4 {
+        let gap = r - (dmax - d[i]);
+        let w = if params.falloff_range > 0.0 {
+            crate::common::math::sat(gap / (params.falloff_range * r))
+        } else if gap >= 0.0 {
+            1.0
+        } else {
+            0.0
+        };
+        sum += w * d[i];
+        weights += w;
+        i += 1;
+    }
+    sum / weights
+}
+
+/// Texel `t` of MIP `params.pass`. Level 0 reads the linear G-buffer `depth` (unusable depths
+/// read as the far plane) and clamps to [0, 65504]; level k ≥ 1 filters MIP k−1 in `mips`.
+#[inline]
+pub fn prefilter_texel(params: &GtaoParams, depth: &[f32], mips: &[f32], t: UVec2) -> f32 {
+    let view = &params.view;
+    let full = view.size();
+    let k = params.pass;
+    if k == 0 {
+        let mut d = depth[(t.y * full.x + t.x) as usize];
+        if !is_valid_depth(d, view.far) {
+            d = view.far;
+        }
+        return crate::common::math::clamp(d, 0.0, MAX_WORKING_DEPTH);
+    }
+    let above = mip_size(full, k - 1);
+    let base = mip_offset(full, k - 1);
+    let s = uvec2(2 * t.x, 2 * t.y);
+    let d = [
+        texel(mips, base, above, s.x, s.y),
+        texel(mips, base, above, s.x + 1, s.y),
+        texel(mips, base, above, s.x, s.y + 1),
+        texel(mips, base, above, s.x + 1, s.y + 1),
+    ];
+    mip_filter(d, params)
+}
+
+/// Texel (x, y), clamped to the level's size, of the level at `base` in the chain.
+#[inline]
+fn texel(mips: &[f32], base: usize, size: UVec2, x: u32, y: u32) -> f32 {
+    mips[base + (y.min(size.y - 1) * size.x + x.min(size.x - 1)) as usize]
+}
