@@ -6,7 +6,9 @@ use aokit::render::{CpuRenderer, Renderer, VulkanRenderer};
 use aokit::report::{BenchResult, CompareReport, CompareSetup};
 use aokit::scene::Scene;
 use aokit::scene::builtin::{self, BuiltinScene};
-use aokit::technique::{GtaoOptions, GtaoPreset, SdOptions, Technique};
+use aokit::technique::{
+    GtaoOptions, GtaoPreset, HybridOptions, RaymarchOptions, SdOptions, Technique, TechniqueDefaults,
+};
 use aokit_shaders::common::tables::JitterTable;
 use aokit_shaders::glam::Vec3;
 use aokit_vulkan::GpuOptions;
@@ -175,6 +177,46 @@ struct TechniqueArgs {
     /// XeGTAO normals: the G-buffer's, or derived from depth (pass 0).
     #[arg(long, value_enum, default_value = "gbuffer")]
     gtao_normals: GtaoNormals,
+    /// Ray-marched SSAO: directions N (the paper uses 8, 16, 24).
+    #[arg(long, default_value_t = 16)]
+    rm_directions: u32,
+    /// Ray-marched SSAO: steps per direction.
+    #[arg(long, default_value_t = 8)]
+    rm_steps: u32,
+    /// Ray-marched SSAO: contrast exponent α of Eq. 2.
+    #[arg(long, default_value_t = 1.0)]
+    rm_alpha: f32,
+    /// Ray-marched SSAO: reading of Eq. 2 (linear: visible distance / R; binary: 0 on a hit).
+    #[arg(long, value_enum, default_value = "linear")]
+    rm_contribution: RmContribution,
+    /// Ray-marched SSAO: Vogel spiral instead of the best-candidate Poisson disk.
+    #[arg(long)]
+    rm_vogel: bool,
+    /// Ray-marched SSAO: XeGTAO denoise passes afterwards.
+    #[arg(long, default_value_t = 0)]
+    rm_denoise: u32,
+    /// Hybrid AO: mixed (1 screen + 1 world ray), world (2 world rays), screen (2 screen rays).
+    #[arg(long, value_enum, default_value = "mixed")]
+    hybrid_variant: HybridVariant,
+    /// Hybrid AO: weight of the world rays (default 2/3 for mixed).
+    #[arg(long)]
+    world_weight: Option<f32>,
+    /// Hybrid AO: XeGTAO denoise passes afterwards.
+    #[arg(long, default_value_t = 3)]
+    hybrid_denoise: u32,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+enum RmContribution {
+    Linear,
+    Binary,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+enum HybridVariant {
+    Mixed,
+    World,
+    Screen,
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -237,7 +279,31 @@ impl TechniqueArgs {
     }
 
     fn technique(&self, name: &str) -> Result<Technique, String> {
-        Technique::parse(name, self.sd_options()?, self.gtao_options(), self.spp, self.uniform)
+        let variant = match self.hybrid_variant {
+            HybridVariant::Mixed => "mixed",
+            HybridVariant::World => "world",
+            HybridVariant::Screen => "screen",
+        };
+        let mut hybrid = HybridOptions { denoise_passes: self.hybrid_denoise, ..HybridOptions::variant(variant)? };
+        if let Some(w) = self.world_weight {
+            hybrid.world_weight = w;
+        }
+        let defaults = TechniqueDefaults {
+            sd: self.sd_options()?,
+            gtao: self.gtao_options(),
+            raymarch: RaymarchOptions {
+                directions: self.rm_directions,
+                steps: self.rm_steps,
+                alpha: self.rm_alpha,
+                binary: self.rm_contribution == RmContribution::Binary,
+                vogel: self.rm_vogel,
+                denoise_passes: self.rm_denoise,
+            },
+            hybrid,
+            spp: self.spp,
+            uniform: self.uniform,
+        };
+        Technique::parse(name, &defaults)
     }
 }
 
@@ -247,7 +313,7 @@ struct RenderArgs {
     frame: FrameArgs,
     #[command(flatten)]
     options: TechniqueArgs,
-    /// vao, raysd, raysvao, gtao or groundtruth.
+    /// vao, raysd, raysvao, gtao, raymarch, hybrid or groundtruth.
     #[arg(long, default_value = "vao")]
     technique: String,
     /// Skip the bilateral blur.

@@ -2,7 +2,7 @@
 
 use crate::frame::Frame;
 use crate::scene::Scene;
-use crate::technique::{GtaoOptions, SdOptions, SvaoDebug, Technique, TechniqueRun};
+use crate::technique::{GtaoOptions, RaymarchOptions, SdOptions, SvaoDebug, Technique, TechniqueRun};
 use aokit_cpu::svao as svao_cpu;
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
@@ -10,7 +10,7 @@ use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
 use aokit_shaders::svao::{Secondary, SvaoFrame};
 use aokit_vulkan::{
     Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, GroundTruthPipeline, GtaoOutput, GtaoPasses, RasterGBuffer,
-    SceneAccel, ScreenPasses, SvaoPipelines,
+    SceneAccel, ScreenPasses, ScreenRayOutput, SsaoPipelines, SvaoPipelines,
 };
 use std::time::Instant;
 
@@ -146,6 +146,7 @@ pub struct VulkanRenderer {
     screen: ScreenPasses,
     svao: std::cell::OnceCell<SvaoPipelines>,
     gtao_passes: std::cell::OnceCell<GtaoPasses>,
+    ssao_pipelines: std::cell::OnceCell<SsaoPipelines>,
     /// `(scene key, acceleration structure)` of the last scene traced.
     accel: std::cell::RefCell<Option<(usize, SceneAccel)>>,
 }
@@ -161,6 +162,7 @@ impl VulkanRenderer {
             screen,
             svao: Default::default(),
             gtao_passes: Default::default(),
+            ssao_pipelines: Default::default(),
             accel: Default::default(),
         })
     }
@@ -269,6 +271,9 @@ impl Drop for VulkanRenderer {
         if let Some(p) = self.gtao_passes.take() {
             p.destroy(&self.gpu);
         }
+        if let Some(p) = self.ssao_pipelines.take() {
+            p.destroy(&self.gpu);
+        }
         if let Some((_, a)) = self.accel.take() {
             a.destroy(&self.gpu);
         }
@@ -300,6 +305,8 @@ impl CpuRenderer {
             passes.push((name, ms_since(t)));
         };
         let mut ao = Vec::new();
+        // Techniques that end in XeGTAO's denoiser put its output here; `ao` stays the raw AO.
+        let mut denoised = None;
         match technique {
             Technique::Vao => {
                 timed("vao", &mut || ao = aokit_cpu::run_vao(&frame.vao_params(), depth, normals, progress))
@@ -347,6 +354,30 @@ impl CpuRenderer {
                 timed("gtao_main", &mut || (terms, edges) = aokit_cpu::gtao::run_main(&params, &mips, normals));
                 timed("gtao_denoise", &mut || ao = aokit_cpu::gtao::run_denoise(&params, &terms, &edges));
             }
+            Technique::Raymarch(o) => {
+                let params = frame.raymarch_params(o);
+                let kernel = raymarch_kernel(o);
+                let (mut terms, mut edges) = (Vec::new(), Vec::new());
+                timed("raymarch", &mut || {
+                    (ao, terms, edges) = aokit_cpu::raymarch::run_raymarch(&params, depth, normals, &kernel)
+                });
+                if o.denoise_passes > 0 {
+                    let dp = frame.denoise_params(o.denoise_passes);
+                    timed("denoise", &mut || denoised = Some(aokit_cpu::gtao::run_denoise(&dp, &terms, &edges)));
+                }
+            }
+            Technique::Hybrid(o) => {
+                let hf = frame.hybrid_frame(o);
+                let (mut terms, mut edges) = (Vec::new(), Vec::new());
+                timed("hybrid_rays", &mut || {
+                    (ao, terms, edges) = aokit_cpu::hybrid::run_hybrid(&self.bvh, &self.surfaces(), &hf, depth, normals)
+                });
+                rays = (o.screen_rays + o.world_rays) as u64 * frame.inner.x as u64 * frame.inner.y as u64;
+                if o.denoise_passes > 0 {
+                    let dp = frame.denoise_params(o.denoise_passes);
+                    timed("denoise", &mut || denoised = Some(aokit_cpu::gtao::run_denoise(&dp, &terms, &edges)));
+                }
+            }
             Technique::RaySvao { cutoff } => {
                 let svao = frame.svao_frame(Secondary::Raytraced, &SdOptions { cutoff: *cutoff, ..Default::default() });
                 let mut pass1 = None;
@@ -361,12 +392,18 @@ impl CpuRenderer {
                 debug = Some(SvaoDebug { ao_pass1: pass1.ao, mask: pass1.mask, ..Default::default() });
             }
         }
-        let mut ao_final = ao.clone();
+        let mut ao_final = denoised.unwrap_or_else(|| ao.clone());
         if technique.blurred() {
             timed("blur", &mut || ao_final = aokit_cpu::run_blur(&frame.blur_params(), &ao, depth));
         }
         TechniqueRun { ao, ao_final, passes, rays, refined_samples, interval_sum, debug }
     }
+}
+
+/// The Poisson-disk kernel of a ray-marched SSAO run (spec gtao-raymarch-hybrid §3.3).
+fn raymarch_kernel(o: &RaymarchOptions) -> Vec<aokit_shaders::glam::Vec2> {
+    let n = o.directions as usize;
+    if o.vogel { aokit_shaders::raymarch::kernel::vogel(n) } else { aokit_shaders::raymarch::kernel::best_candidate(n) }
 }
 
 /// Identity of a loaded scene for the acceleration-structure cache.
@@ -417,6 +454,29 @@ impl VulkanRenderer {
                 let out = self.gtao(frame, gbuffer, o)?;
                 Ok(TechniqueRun::plain(out.ao.clone(), out.ao, out.pass_ms))
             }
+            Technique::Raymarch(o) => {
+                let ssao = self.ssao()?;
+                let params = frame.raymarch_params(o);
+                let out = self.with_uploaded_gbuffer(gbuffer, |depth, normals| {
+                    ssao.raymarch(&self.gpu, &params, depth, normals, &raymarch_kernel(o))
+                })?;
+                self.finish_screen_rays(frame, out, "raymarch", o.denoise_passes, 0)
+            }
+            Technique::Hybrid(o) => {
+                let ssao = self.ssao()?;
+                let hf = frame.hybrid_frame(o);
+                let (out, built) = self.with_accel(scene, |accel| {
+                    self.with_uploaded_gbuffer(gbuffer, |depth, normals| {
+                        ssao.hybrid(&self.gpu, accel, &hf, depth, normals)
+                    })
+                })?;
+                let rays = (o.screen_rays + o.world_rays) as u64 * frame.inner.x as u64 * frame.inner.y as u64;
+                let mut run = self.finish_screen_rays(frame, out, "hybrid_rays", o.denoise_passes, rays)?;
+                if let Some(ms) = built {
+                    run.passes.insert(0, ("accel_build", ms));
+                }
+                Ok(run)
+            }
             Technique::GroundTruth { spp, uniform } => {
                 let (ao, passes) =
                     self.ground_truth(scene, frame, gbuffer, &frame.ground_truth_params(*spp, *uniform))?;
@@ -441,15 +501,53 @@ impl VulkanRenderer {
         }
     }
 
-    /// XeGTAO's passes on a given G-buffer (uploaded), with every intermediate buffer.
-    pub fn gtao(&self, frame: &Frame, gbuffer: &GBufferImage, options: &GtaoOptions) -> Result<GtaoOutput, GpuError> {
-        let passes = match self.gtao_passes.get() {
+    /// The ray-marched SSAO and hybrid pipelines, made on first use.
+    fn ssao(&self) -> Result<&SsaoPipelines, GpuError> {
+        Ok(match self.ssao_pipelines.get() {
+            Some(p) => p,
+            None => {
+                let p = SsaoPipelines::new(&self.gpu)?;
+                self.ssao_pipelines.get_or_init(|| p)
+            }
+        })
+    }
+
+    /// The XeGTAO passes, made on first use.
+    fn gtao_passes(&self) -> Result<&GtaoPasses, GpuError> {
+        Ok(match self.gtao_passes.get() {
             Some(p) => p,
             None => {
                 let p = GtaoPasses::new(&self.gpu)?;
                 self.gtao_passes.get_or_init(|| p)
             }
-        };
+        })
+    }
+
+    /// A screen-ray technique's output, through XeGTAO's denoiser when `passes > 0`.
+    fn finish_screen_rays(
+        &self,
+        frame: &Frame,
+        out: ScreenRayOutput,
+        pass: &'static str,
+        passes: u32,
+        rays: u64,
+    ) -> Result<TechniqueRun, GpuError> {
+        let mut times = vec![(pass, out.ms)];
+        let mut ao_final = out.ao.clone();
+        if passes > 0 {
+            let (denoised, ms) =
+                self.gtao_passes()?.denoise(&self.gpu, &frame.denoise_params(passes), &out.terms, &out.edges)?;
+            times.push(("denoise", ms));
+            ao_final = denoised;
+        }
+        let mut run = TechniqueRun::plain(out.ao, ao_final, times);
+        run.rays = rays;
+        Ok(run)
+    }
+
+    /// XeGTAO's passes on a given G-buffer (uploaded), with every intermediate buffer.
+    pub fn gtao(&self, frame: &Frame, gbuffer: &GBufferImage, options: &GtaoOptions) -> Result<GtaoOutput, GpuError> {
+        let passes = self.gtao_passes()?;
         let params = frame.gtao_params(options);
         self.with_uploaded_gbuffer(gbuffer, |depth, normals| {
             passes.run(&self.gpu, &params, depth, (!options.normals_from_depth).then_some(normals))

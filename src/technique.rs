@@ -6,6 +6,8 @@ use aokit_shaders::common::tables::JitterTable;
 use aokit_shaders::glam::{UVec2, uvec2};
 use aokit_shaders::groundtruth::GroundTruthParams;
 use aokit_shaders::gtao::GtaoParams;
+use aokit_shaders::hybrid::{HybridFrame, HybridParams};
+use aokit_shaders::raymarch::{Contribution, RaymarchParams};
 use aokit_shaders::svao::{Secondary, SvaoFrame, SvaoParams};
 
 /// Options of the ray-traced stochastic depth map (spec svao-raysd §2 defaults).
@@ -168,6 +170,62 @@ impl GtaoOptions {
     }
 }
 
+/// Options of the Poisson-disk ray-marched SSAO (spec gtao-raymarch-hybrid §3.2).
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct RaymarchOptions {
+    /// Directions N (8, 16 or 24 in the paper) [16].
+    pub directions: u32,
+    /// Steps per direction [8].
+    pub steps: u32,
+    /// Contrast exponent α [1].
+    pub alpha: f32,
+    /// Eq. 2 reading: `Binary` (c = 0 on a hit) or `Linear` (c = Δ̃/R) [linear].
+    pub binary: bool,
+    /// Vogel spiral instead of the best-candidate Poisson disk.
+    pub vogel: bool,
+    /// XeGTAO denoise passes afterwards [0].
+    pub denoise_passes: u32,
+}
+
+impl Default for RaymarchOptions {
+    fn default() -> Self {
+        RaymarchOptions { directions: 16, steps: 8, alpha: 1.0, binary: false, vogel: false, denoise_passes: 0 }
+    }
+}
+
+/// Options of the hybrid AO (spec §4.1): rays per pixel and the world-ray weight.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct HybridOptions {
+    pub screen_rays: u32,
+    pub world_rays: u32,
+    /// Weight of the world rays [2/3].
+    pub world_weight: f32,
+    /// Steps of a screen ray [16].
+    pub screen_steps: u32,
+    /// XeGTAO denoise passes [3].
+    pub denoise_passes: u32,
+}
+
+impl Default for HybridOptions {
+    fn default() -> Self {
+        HybridOptions { screen_rays: 1, world_rays: 1, world_weight: 2.0 / 3.0, screen_steps: 16, denoise_passes: 3 }
+    }
+}
+
+impl HybridOptions {
+    /// The paper's variants: `mixed` (1 screen + 1 world, w = 2/3), `world` (2 world rays),
+    /// `screen` (2 screen rays).
+    pub fn variant(name: &str) -> Result<HybridOptions, String> {
+        let d = HybridOptions::default();
+        Ok(match name {
+            "mixed" => d,
+            "world" => HybridOptions { screen_rays: 0, world_rays: 2, world_weight: 1.0, ..d },
+            "screen" => HybridOptions { screen_rays: 2, world_rays: 0, world_weight: 0.0, ..d },
+            _ => return Err(format!("hybrid variant '{name}' is not mixed, world or screen")),
+        })
+    }
+}
+
 /// An AO technique.
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub enum Technique {
@@ -181,6 +239,10 @@ pub enum Technique {
     GroundTruth { spp: u32, uniform: bool },
     /// XeGTAO (spec gtao-raymarch-hybrid §2).
     Gtao(GtaoOptions),
+    /// Poisson-disk ray-marched SSAO (spec §3).
+    Raymarch(RaymarchOptions),
+    /// Hybrid screen + world-ray AO (spec §4).
+    Hybrid(HybridOptions),
 }
 
 impl Technique {
@@ -192,6 +254,8 @@ impl Technique {
             Technique::RaySvao { .. } => "raysvao",
             Technique::GroundTruth { .. } => "groundtruth",
             Technique::Gtao(_) => "gtao",
+            Technique::Raymarch(_) => "raymarch",
+            Technique::Hybrid(_) => "hybrid",
         }
     }
 
@@ -199,10 +263,10 @@ impl Technique {
     /// Per-technique overrides follow the name as `:key=value` (keys `sd-res`
     /// full|half|quarter, `sd-layers`, `max-count`, `cutoff`, `interval` on|off, `jitter`
     /// none|scrambled|paper, `sd-guard`, `spp`), e.g. `raysd:sd-layers=8:interval=off`.
-    pub fn parse(spec: &str, sd: SdOptions, gtao: GtaoOptions, spp: u32, uniform: bool) -> Result<Technique, String> {
+    pub fn parse(spec: &str, defaults: &TechniqueDefaults) -> Result<Technique, String> {
         let mut parts = spec.trim().split(':');
         let name = parts.next().unwrap_or_default();
-        let (mut sd, mut gtao, mut spp) = (sd, gtao, spp);
+        let TechniqueDefaults { mut sd, mut gtao, mut raymarch, mut hybrid, mut spp, uniform } = *defaults;
         for part in parts {
             let (key, value) = part.split_once('=').ok_or_else(|| format!("'{part}' in '{spec}' is not key=value"))?;
             let bad = |what: &str| format!("{key}={value} in '{spec}': expected {what}");
@@ -246,11 +310,31 @@ impl Technique {
                     }
                 }
                 "final-power" => gtao.final_value_power = value.parse().map_err(|_| bad("a power"))?,
+                "directions" => raymarch.directions = number("a count")?,
+                "steps" => raymarch.steps = number("a count")?,
+                "alpha" => raymarch.alpha = value.parse().map_err(|_| bad("an exponent"))?,
+                "contribution" => {
+                    raymarch.binary = match value {
+                        "binary" => true,
+                        "linear" => false,
+                        _ => return Err(bad("binary or linear")),
+                    }
+                }
+                "variant" => {
+                    hybrid = HybridOptions { denoise_passes: hybrid.denoise_passes, ..HybridOptions::variant(value)? }
+                }
+                "world-weight" => hybrid.world_weight = value.parse().map_err(|_| bad("a weight in [0, 1]"))?,
                 _ => return Err(format!("unknown option '{key}' in '{spec}'")),
             }
         }
         sd.validate()?;
         gtao.validate()?;
+        if !(1..=aokit_shaders::raymarch::MAX_DIRECTIONS).contains(&raymarch.directions) || raymarch.steps == 0 {
+            return Err(format!("'{spec}': raymarch needs 1–64 directions and at least 1 step"));
+        }
+        if !(0.0..=1.0).contains(&hybrid.world_weight) || hybrid.screen_rays + hybrid.world_rays == 0 {
+            return Err(format!("'{spec}': hybrid needs a world weight in [0, 1] and at least one ray"));
+        }
         if spp == 0 {
             return Err(format!("'{spec}': spp must be at least 1"));
         }
@@ -260,8 +344,12 @@ impl Technique {
             "raysvao" => Technique::RaySvao { cutoff: sd.cutoff },
             "groundtruth" => Technique::GroundTruth { spp, uniform },
             "gtao" => Technique::Gtao(gtao),
+            "raymarch" => Technique::Raymarch(raymarch),
+            "hybrid" => Technique::Hybrid(hybrid),
             other => {
-                return Err(format!("unknown technique '{other}' (known: vao, raysd, raysvao, gtao, groundtruth)"));
+                return Err(format!(
+                    "unknown technique '{other}' (known: vao, raysd, raysvao, gtao, raymarch, hybrid, groundtruth)"
+                ));
             }
         })
     }
@@ -280,6 +368,22 @@ impl Technique {
             }
             if o.normals_from_depth {
                 label += "_depthnormals";
+            }
+        }
+        if let Technique::Raymarch(o) = self {
+            let d = RaymarchOptions::default();
+            if o.directions != d.directions {
+                label += &format!("_n{}", o.directions);
+            }
+            if o.binary {
+                label += "_binary";
+            }
+        }
+        if let Technique::Hybrid(o) = self {
+            match (o.screen_rays, o.world_rays) {
+                (0, _) => label += "_world",
+                (_, 0) => label += "_screen",
+                _ => {}
             }
         }
         if let Technique::RaySd(o) = self {
@@ -303,7 +407,7 @@ impl Technique {
 
     /// Whether the technique's output goes through the bilateral blur (spec §3 step 5).
     pub fn blurred(&self) -> bool {
-        !matches!(self, Technique::GroundTruth { .. } | Technique::Gtao(_))
+        matches!(self, Technique::Vao | Technique::RaySd(_) | Technique::RaySvao { .. })
     }
 
     /// Options as JSON for reports.
@@ -314,8 +418,29 @@ impl Technique {
             Technique::RaySvao { cutoff } => serde_json::json!({ "cutoff": cutoff }),
             Technique::GroundTruth { spp, uniform } => serde_json::json!({ "spp": spp, "uniform": uniform }),
             Technique::Gtao(o) => o.describe(),
+            Technique::Raymarch(o) => serde_json::json!({
+                "directions": o.directions, "steps": o.steps, "alpha": o.alpha,
+                "contribution": if o.binary { "binary" } else { "linear" },
+                "kernel": if o.vogel { "vogel" } else { "best-candidate" }, "denoise_passes": o.denoise_passes,
+            }),
+            Technique::Hybrid(o) => serde_json::json!({
+                "screen_rays": o.screen_rays, "world_rays": o.world_rays, "world_weight": o.world_weight,
+                "screen_steps": o.screen_steps, "denoise_passes": o.denoise_passes,
+            }),
         }
     }
+}
+
+/// Every technique's options as set on the command line; per-technique `:key=value`
+/// overrides start from these.
+#[derive(Copy, Clone, Debug, Default)]
+pub struct TechniqueDefaults {
+    pub sd: SdOptions,
+    pub gtao: GtaoOptions,
+    pub raymarch: RaymarchOptions,
+    pub hybrid: HybridOptions,
+    pub spp: u32,
+    pub uniform: bool,
 }
 
 /// Low-res SD size `ceil(W/div) × ceil(H/div)` of a full target (spec §3).
@@ -367,6 +492,43 @@ impl Frame {
             noise_frame: 0,
             pass: 0,
         }
+    }
+
+    /// Ray-marched SSAO parameters with this frame's radius.
+    pub fn raymarch_params(&self, o: &RaymarchOptions) -> RaymarchParams {
+        RaymarchParams {
+            view: self.camera.view,
+            radius: self.radius,
+            alpha: o.alpha,
+            depth_bias: 0.0008,
+            thickness: f32::MAX,
+            directions: o.directions,
+            steps: o.steps,
+            contribution: if o.binary { Contribution::Binary } else { Contribution::Linear } as u32,
+            noise_frame: 0,
+        }
+    }
+
+    /// Hybrid AO record with this frame's camera and radius.
+    pub fn hybrid_frame(&self, o: &HybridOptions) -> HybridFrame {
+        HybridFrame {
+            camera: self.camera,
+            params: HybridParams {
+                radius: self.radius,
+                world_weight: o.world_weight,
+                depth_bias: 0.0008,
+                screen_rays: o.screen_rays,
+                world_rays: o.world_rays,
+                screen_steps: o.screen_steps,
+                noise_frame: 0,
+                _pad: 0,
+            },
+        }
+    }
+
+    /// XeGTAO parameters for running only its denoiser (`passes` passes) after another technique.
+    pub fn denoise_params(&self, passes: u32) -> GtaoParams {
+        self.gtao_params(&GtaoOptions { denoise_passes: passes, ..Default::default() })
     }
 
     /// Ground-truth parameters with this frame's radius and exponent.

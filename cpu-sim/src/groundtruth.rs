@@ -9,9 +9,9 @@ use aokit_shaders::groundtruth::{GroundTruthFrame, OcclusionQuery, ground_truth_
 use rayon::prelude::*;
 
 /// BVH occlusion rays for the shared ground-truth kernel.
-struct BvhOcclusion<'a> {
-    bvh: &'a SceneBvh,
-    surfaces: &'a Surfaces<'a>,
+pub(crate) struct BvhOcclusion<'a> {
+    pub(crate) bvh: &'a SceneBvh,
+    pub(crate) surfaces: &'a Surfaces<'a>,
 }
 
 impl OcclusionQuery for BvhOcclusion<'_> {

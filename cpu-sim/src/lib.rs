@@ -6,6 +6,8 @@ pub mod bvh;
 pub mod gbuffer;
 pub mod groundtruth;
 pub mod gtao;
+pub mod hybrid;
+pub mod raymarch;
 pub mod screen;
 pub mod svao;
 

@@ -151,6 +151,67 @@ impl GtaoPasses {
         result
     }
 
+    /// The denoise passes alone on host terms and edges (for techniques that reuse XeGTAO's
+    /// denoiser). Returns the visibility (full target) and the GPU time in ms.
+    pub fn denoise(
+        &self,
+        gpu: &Gpu,
+        params: &GtaoParams,
+        terms: &[u32],
+        edges: &[u32],
+    ) -> Result<(Vec<f32>, f64), GpuError> {
+        let full = params.view.size();
+        let pixels = (full.x * full.y) as usize;
+        if terms.len() != pixels || edges.len() != pixels {
+            return Err(GpuError::Input("denoise input does not match the target size".into()));
+        }
+        let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
+        let mut owned = Vec::new();
+        let result = (|| -> Result<(Vec<f32>, f64), GpuError> {
+            for data in [terms, edges, &vec![0u32; pixels], &vec![0u32; pixels]] {
+                owned.push(gpu.upload(data, storage)?);
+            }
+            owned.push(gpu.upload(&vec![1.0f32; pixels], storage)?);
+            let passes = params.denoise_passes.max(1);
+            let d = &gpu.device;
+            let pool = gpu.descriptor_pool(passes, &storage_bindings(4))?;
+            let queries = unsafe {
+                d.create_query_pool(
+                    &vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(2),
+                    None,
+                )?
+            };
+            let compute = vk::PipelineStageFlags::COMPUTE_SHADER;
+            let recorded = gpu.submit(|cb| -> Result<(), GpuError> {
+                unsafe {
+                    d.cmd_reset_query_pool(cb, queries, 0, 2);
+                    d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TOP_OF_PIPE, queries, 0);
+                }
+                let (mut from, mut to) = (0, 2);
+                for pass in 0..passes {
+                    let p = GtaoParams { pass, ..*params };
+                    let bufs = [&owned[from], &owned[1], &owned[to], &owned[4]];
+                    self.denoise.record(gpu, cb, pool, &bufs, bytemuck::bytes_of(&p), groups(full))?;
+                    memory_barrier(gpu, cb, compute, compute | vk::PipelineStageFlags::TRANSFER);
+                    (from, to) = (to, if to == 2 { 3 } else { 2 });
+                }
+                unsafe { d.cmd_write_timestamp(cb, compute, queries, 1) };
+                Ok(())
+            });
+            let got = recorded.and_then(|r| r).and_then(|_| gpu.timestamps_ms(queries, 2));
+            unsafe {
+                d.destroy_query_pool(queries, None);
+                d.destroy_descriptor_pool(pool, None);
+            }
+            let ms = got?[1];
+            Ok((gpu.download(&owned[4])?, ms))
+        })();
+        for buffer in owned {
+            gpu.free_buffer(buffer);
+        }
+        result
+    }
+
     pub fn destroy(&self, gpu: &Gpu) {
         for k in [&self.prefilter, &self.normals, &self.main, &self.denoise] {
             k.destroy(gpu);

@@ -13,6 +13,7 @@ pub mod modules;
 mod raytracing;
 mod screen;
 pub mod spirv_hash;
+mod ssao;
 mod svao;
 
 pub use buffer::Buffer;
@@ -21,6 +22,7 @@ pub use gbuffer::{GBufferVertex, RasterGBuffer};
 pub use gtao::{GtaoOutput, GtaoPasses};
 pub use raytracing::{GroundTruthPipeline, SceneAccel};
 pub use screen::{ScreenOutput, ScreenPasses};
+pub use ssao::{ScreenRayOutput, SsaoPipelines};
 pub use svao::{SvaoOutput, SvaoPipelines};
 
 /// Errors of the Vulkan back-end.

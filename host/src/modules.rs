@@ -28,9 +28,11 @@ pub const GTAO_PREFILTER: &[u8] = spv!("gtao_prefilter");
 pub const GTAO_NORMALS: &[u8] = spv!("gtao_normals");
 pub const GTAO_MAIN: &[u8] = spv!("gtao_main");
 pub const GTAO_DENOISE: &[u8] = spv!("gtao_denoise");
+pub const RAYMARCH_MAIN: &[u8] = spv!("raymarch_main");
+pub const HYBRID_RGEN: &[u8] = spv!("hybrid_rgen");
 
 /// Every module by entry-point name.
-pub const ALL: [(&str, &[u8]); 19] = [
+pub const ALL: [(&str, &[u8]); 21] = [
     ("vao_main", VAO_MAIN),
     ("blur_main", BLUR_MAIN),
     ("gbuffer_vs", GBUFFER_VS),
@@ -50,6 +52,8 @@ pub const ALL: [(&str, &[u8]); 19] = [
     ("gtao_normals", GTAO_NORMALS),
     ("gtao_main", GTAO_MAIN),
     ("gtao_denoise", GTAO_DENOISE),
+    ("raymarch_main", RAYMARCH_MAIN),
+    ("hybrid_rgen", HYBRID_RGEN),
 ];
 
 /// SPIR-V words of a module (validates the magic number and alignment).

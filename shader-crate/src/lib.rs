@@ -19,6 +19,8 @@ pub mod common;
 pub mod gbuffer;
 pub mod groundtruth;
 pub mod gtao;
+pub mod hybrid;
+pub mod raymarch;
 pub mod raysd;
 pub mod raysvao;
 pub mod svao;

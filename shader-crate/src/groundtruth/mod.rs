@@ -99,6 +99,34 @@ pub struct GroundTruthFrame {
     pub params: GroundTruthParams,
 }
 
+/// Where world-space AO rays of a pixel start.
+#[derive(Copy, Clone, Debug)]
+pub struct SurfacePoint {
+    /// No usable depth (the pixel is sky).
+    pub background: bool,
+    /// The G-buffer point, offset along the normal by `1e-4·(t + R)`.
+    pub origin: Vec3,
+    /// World face normal turned toward the camera ray.
+    pub normal: Vec3,
+}
+
+/// The G-buffer point of pixel `p` in the world, pushed off the surface along its camera-facing
+/// face normal by `1e-4·(t + R)` (t: camera distance) so AO rays of length R do not hit it.
+#[inline]
+pub fn surface_point<G: GBuffer>(gbuffer: &G, camera: &Camera, p: UVec2, radius: f32) -> SurfacePoint {
+    let d = gbuffer.linear_depth(p);
+    if !is_valid_depth(d, camera.view.far) {
+        return SurfacePoint { background: true, origin: Vec3::ZERO, normal: Vec3::Z };
+    }
+    let dir = camera.primary_ray_direction(camera.view.pixel_uv(p));
+    let t = d / -camera.world_to_view.transform_vector3(dir).z;
+    let mut n = camera.view_to_world.transform_vector3(gbuffer.view_normal(p));
+    if n.dot(dir) > 0.0 {
+        n = -n;
+    }
+    SurfacePoint { background: false, origin: camera.eye() + dir * t + n * (1e-4 * (t + radius)), normal: n }
+}
+
 /// Ground-truth AO of pixel `p`: rays from the G-buffer point, offset along its camera-facing
 /// face normal by `1e-4·(t + R)`, `samples` directions from [`sample_2d`], visible fraction
 /// through [`finalize`]. Background pixels are 1.
@@ -109,19 +137,12 @@ pub fn ground_truth_pixel<G: GBuffer, Q: OcclusionQuery>(
     p: UVec2,
     rays: &mut Q,
 ) -> f32 {
-    let camera = &frame.camera;
     let params = &frame.params;
-    let d = gbuffer.linear_depth(p);
-    if !is_valid_depth(d, camera.view.far) {
+    let surface = surface_point(gbuffer, &frame.camera, p, params.radius);
+    if surface.background {
         return 1.0;
     }
-    let dir = camera.primary_ray_direction(camera.view.pixel_uv(p));
-    let t = d / -camera.world_to_view.transform_vector3(dir).z;
-    let mut n = camera.view_to_world.transform_vector3(gbuffer.view_normal(p));
-    if n.dot(dir) > 0.0 {
-        n = -n;
-    }
-    let origin = camera.eye() + dir * t + n * (1e-4 * (t + params.radius));
+    let (origin, n) = (surface.origin, surface.normal);
     let uniform = params.uniform != 0;
     let mut visible = 0.0;
     let mut k = 0;

@@ -10,9 +10,9 @@ use spirv_std::spirv;
 
 /// `trace_ray` as an [`OcclusionQuery`]: the payload starts at 1 (occluded), the miss shader
 /// sets 0; the first accepted hit ends the ray.
-struct TracedOcclusion<'a> {
-    tlas: &'a AccelerationStructure,
-    payload: &'a mut u32,
+pub struct TracedOcclusion<'a> {
+    pub tlas: &'a AccelerationStructure,
+    pub payload: &'a mut u32,
 }
 
 impl OcclusionQuery for TracedOcclusion<'_> {
