@@ -43,9 +43,9 @@ fn kernels(c: &mut Criterion) {
     // Ray-SD (¼ map, N = 4): pass 1, the SD map (reservoir any-hit over the BVH), pass 2.
     let svao = frame.svao_frame(Secondary::StochasticDepth, &SdOptions::default());
     group.bench_function("svao_pass1", |bench| {
-        bench.iter(|| svao_cpu::run_pass1(&svao.params, &g.depth, &g.normals, &no_progress))
+        bench.iter(|| svao_cpu::run_pass1(&svao.params, &g.depth, &g.normals, &[], &no_progress))
     });
-    let pass1 = svao_cpu::run_pass1(&svao.params, &g.depth, &g.normals, &no_progress);
+    let pass1 = svao_cpu::run_pass1(&svao.params, &g.depth, &g.normals, &[], &no_progress);
     let bvh = renderer.bvh();
     let surfaces = renderer.surfaces();
     let map = svao_cpu::run_sd_map(bvh, &surfaces, &svao, &g.depth, &g.normals, &pass1, svao_cpu::HitOrder::Traversal);
@@ -57,7 +57,7 @@ fn kernels(c: &mut Criterion) {
     });
     group.throughput(Throughput::Elements(pass1.refined_samples()));
     group.bench_function("raysd_pass2_refined_samples", |bench| {
-        bench.iter(|| svao_cpu::run_pass2_sd(&svao.params, &g.depth, &g.normals, &pass1, &map))
+        bench.iter(|| svao_cpu::run_pass2_sd(&svao.params, &g.depth, &g.normals, &[], &pass1, &map))
     });
     // Ground-truth AO rays per second (4 spp over the inner image).
     let gt = frame.ground_truth_params(4, false);

@@ -185,7 +185,14 @@ impl Frame {
 
     /// Push constants of the raster G-buffer pass.
     pub fn raster_params(&self) -> RasterParams {
-        RasterParams { world_to_view: self.camera.world_to_view, view: self.camera.view }
+        RasterParams {
+            world_to_view: self.camera.world_to_view,
+            view: self.camera.view,
+            peel_separation: 0.01,
+            _pad0: 0,
+            _pad1: 0,
+            _pad2: 0,
+        }
     }
 
     /// One-line JSON description printed by `aokit render`.

@@ -144,6 +144,13 @@ struct TechniqueArgs {
     /// SD guard band in full-resolution pixels.
     #[arg(long, default_value_t = 512)]
     sd_guard: u32,
+    /// Primary depth of vao/raysd/raysvao: the depth buffer, or dual depth (plus a depth-peeled
+    /// second layer, spec §11).
+    #[arg(long, value_enum, default_value = "single")]
+    primary: Primary,
+    /// Minimum separation of the peeled second layer (world units).
+    #[arg(long, default_value_t = 0.01)]
+    peel_separation: f32,
     /// Rays per pixel of the ground truth.
     #[arg(long, default_value_t = 512)]
     spp: u32,
@@ -204,6 +211,12 @@ struct TechniqueArgs {
     /// Hybrid AO: XeGTAO denoise passes afterwards.
     #[arg(long, default_value_t = 3)]
     hybrid_denoise: u32,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+enum Primary {
+    Single,
+    Dual,
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -270,6 +283,8 @@ impl TechniqueArgs {
                 (false, Jitter::Paper) => JitterTable::Paper,
             },
             guard: self.sd_guard,
+            dual: self.primary == Primary::Dual,
+            peel_separation: self.peel_separation,
         };
         o.validate()?;
         if self.spp == 0 {

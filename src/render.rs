@@ -6,6 +6,7 @@ use crate::technique::{GtaoOptions, RaymarchOptions, SdOptions, SvaoDebug, Techn
 use aokit_cpu::svao as svao_cpu;
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
+use aokit_shaders::gbuffer::RasterParams;
 use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
 use aokit_shaders::svao::{Secondary, SvaoFrame};
 use aokit_vulkan::{
@@ -181,8 +182,13 @@ impl VulkanRenderer {
         frame: &Frame,
         pass: impl FnOnce(&Buffer, &Buffer) -> Result<R, GpuError>,
     ) -> Result<(R, GBufferImage, f64), GpuError> {
-        let (depth, normals, ms) =
-            self.raster.render(&self.gpu, &raster_vertices(scene), &scene.alpha_masks(), &frame.raster_params())?;
+        let (depth, normals, ms) = self.raster.render(
+            &self.gpu,
+            &raster_vertices(scene),
+            &scene.alpha_masks(),
+            &frame.raster_params(),
+            None,
+        )?;
         let size = frame.camera.view.size();
         let run = || -> Result<(R, GBufferImage), GpuError> {
             let r = pass(&depth, &normals)?;
@@ -307,9 +313,31 @@ impl CpuRenderer {
         let mut ao = Vec::new();
         // Techniques that end in XeGTAO's denoiser put its output here; `ao` stays the raw AO.
         let mut denoised = None;
+        // The depth-peeled second layer (spec §11) for dual-depth techniques; empty otherwise
+        // (never read then).
+        let mut depth2 = Vec::new();
+        let (dual, separation) = match technique {
+            Technique::VaoDual { peel_separation } => (true, *peel_separation),
+            Technique::RaySd(o) => (o.dual, o.peel_separation),
+            Technique::RaySvao { dual, .. } => (*dual, SdOptions::default().peel_separation),
+            _ => (false, 0.0),
+        };
+        if dual {
+            timed("depth_peel", &mut || {
+                depth2 =
+                    aokit_cpu::ray_cast_second_layer(&self.bvh, &self.surfaces(), &frame.camera, gbuffer, separation)
+            });
+        }
+        let depth2 = &depth2[..];
         match technique {
             Technique::Vao => {
                 timed("vao", &mut || ao = aokit_cpu::run_vao(&frame.vao_params(), depth, normals, progress))
+            }
+            Technique::VaoDual { .. } => {
+                // Pass 1 without a secondary source finalizes every pixel.
+                let sd = SdOptions { dual: true, ..Default::default() };
+                let svao = frame.svao_frame(Secondary::Disabled, &sd);
+                timed("vao", &mut || ao = svao_cpu::run_pass1(&svao.params, depth, normals, depth2, progress).ao);
             }
             Technique::GroundTruth { spp, uniform } => {
                 let params = frame.ground_truth_params(*spp, *uniform);
@@ -319,7 +347,9 @@ impl CpuRenderer {
             Technique::RaySd(sd) => {
                 let svao = frame.svao_frame(Secondary::StochasticDepth, sd);
                 let mut pass1 = None;
-                timed("ao_pass1", &mut || pass1 = Some(svao_cpu::run_pass1(&svao.params, depth, normals, progress)));
+                timed("ao_pass1", &mut || {
+                    pass1 = Some(svao_cpu::run_pass1(&svao.params, depth, normals, depth2, progress))
+                });
                 let pass1 = pass1.expect("pass 1 ran");
                 let mut map = None;
                 timed("sd_map", &mut || {
@@ -327,7 +357,9 @@ impl CpuRenderer {
                     map = Some(svao_cpu::run_sd_map(&self.bvh, &self.surfaces(), &svao, depth, normals, &pass1, order))
                 });
                 let map = map.expect("SD map traced");
-                timed("ao_pass2", &mut || ao = svao_cpu::run_pass2_sd(&svao.params, depth, normals, &pass1, &map));
+                timed("ao_pass2", &mut || {
+                    ao = svao_cpu::run_pass2_sd(&svao.params, depth, normals, depth2, &pass1, &map)
+                });
                 rays = map.rays;
                 interval_sum = Some(svao_cpu::sd_ray_stats(&svao, depth, normals, &pass1.ray_min, &pass1.ray_max).1);
                 refined_samples = pass1.refined_samples();
@@ -378,15 +410,17 @@ impl CpuRenderer {
                     timed("denoise", &mut || denoised = Some(aokit_cpu::gtao::run_denoise(&dp, &terms, &edges)));
                 }
             }
-            Technique::RaySvao { cutoff } => {
-                let svao = frame.svao_frame(Secondary::Raytraced, &SdOptions { cutoff: *cutoff, ..Default::default() });
+            Technique::RaySvao { cutoff, dual } => {
+                let options = SdOptions { cutoff: *cutoff, dual: *dual, ..Default::default() };
+                let svao = frame.svao_frame(Secondary::Raytraced, &options);
                 let mut pass1 = None;
-                timed("ao_pass1", &mut || pass1 = Some(svao_cpu::run_pass1(&svao.params, depth, normals, progress)));
+                timed("ao_pass1", &mut || {
+                    pass1 = Some(svao_cpu::run_pass1(&svao.params, depth, normals, depth2, progress))
+                });
                 let pass1 = pass1.expect("pass 1 ran");
                 timed("ao_pass2_rays", &mut || {
-                    let none = &aokit_cpu::no_progress;
                     (ao, rays) =
-                        svao_cpu::run_raysvao_pass2(&self.bvh, &self.surfaces(), &svao, depth, normals, &pass1, none)
+                        svao_cpu::run_raysvao_pass2(&self.bvh, &self.surfaces(), &svao, depth, normals, depth2, &pass1)
                 });
                 refined_samples = pass1.refined_samples();
                 debug = Some(SvaoDebug { ao_pass1: pass1.ao, mask: pass1.mask, ..Default::default() });
@@ -494,9 +528,13 @@ impl VulkanRenderer {
             Technique::RaySd(sd) => {
                 self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::StochasticDepth, sd))
             }
-            Technique::RaySvao { cutoff } => {
-                let options = SdOptions { cutoff: *cutoff, ..Default::default() };
+            Technique::RaySvao { cutoff, dual } => {
+                let options = SdOptions { cutoff: *cutoff, dual: *dual, ..Default::default() };
                 self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Raytraced, &options))
+            }
+            Technique::VaoDual { .. } => {
+                let options = SdOptions { dual: true, ..Default::default() };
+                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Disabled, &options))
             }
         }
     }
@@ -568,20 +606,55 @@ impl VulkanRenderer {
                 self.svao.get_or_init(|| p)
             }
         };
-        let ((out, blurred), built) = self.with_accel(scene, |accel| {
+        let params = &svao.params;
+        let traced = params.secondary != Secondary::Disabled as u32;
+        let separation = SdOptions::default().peel_separation;
+        // Pass 1 (and pass 2) on the uploaded G-buffer, with the depth-peeled second layer
+        // rasterized against it when dual depth is on. Returns the second layer too.
+        let passes_on = |accel: Option<&SceneAccel>| {
             self.with_uploaded_gbuffer(gbuffer, |depth, normals| {
-                let out = pipelines.run(&self.gpu, accel, svao, depth, normals)?;
-                let blurred = self.screen.blur(&self.gpu, &frame.blur_params(), &out.ao, depth)?;
-                Ok((out, blurred))
+                let peeled = if params.dual != 0 {
+                    let raster = RasterParams { peel_separation: separation, ..frame.raster_params() };
+                    let (d2, n2, ms) = self.raster.render(
+                        &self.gpu,
+                        &raster_vertices(scene),
+                        &scene.alpha_masks(),
+                        &raster,
+                        Some(depth),
+                    )?;
+                    self.gpu.free_buffer(n2);
+                    Some((d2, ms))
+                } else {
+                    None
+                };
+                let depth2 = peeled.as_ref().map_or(depth, |(d2, _)| d2);
+                let run = pipelines.run(&self.gpu, accel, svao, depth, normals, depth2).and_then(|out| {
+                    let blurred = self.screen.blur(&self.gpu, &frame.blur_params(), &out.ao, depth)?;
+                    Ok((out, blurred))
+                });
+                let second = match peeled {
+                    Some((d2, ms)) => {
+                        let host = self.gpu.download::<f32>(&d2);
+                        self.gpu.free_buffer(d2);
+                        Some((host?, ms))
+                    }
+                    None => None,
+                };
+                run.map(|(out, blurred)| (out, blurred, second))
             })
-        })?;
+        };
+        let ((out, blurred, second), built) =
+            if traced { self.with_accel(scene, |accel| passes_on(Some(accel)))? } else { (passes_on(None)?, None) };
         let mut passes = Vec::new();
         if let Some(ms) = built {
             passes.push(("accel_build", ms));
         }
+        if let Some((_, ms)) = &second {
+            passes.push(("depth_peel", *ms));
+        }
         passes.extend(out.pass_ms.iter().copied());
         passes.push(("blur", blurred.1));
-        let params = &svao.params;
+        let depth2 = second.map(|(d2, _)| d2).unwrap_or_default();
         let sd = params.secondary == Secondary::StochasticDepth as u32;
         let refined_samples = out.mask.iter().map(|m| m.count_ones() as u64).sum();
         let (rays, interval_sum) = if sd {
@@ -589,7 +662,12 @@ impl VulkanRenderer {
                 aokit_cpu::svao::sd_ray_stats(svao, &gbuffer.depth, &gbuffer.normals, &out.ray_min, &out.ray_max);
             (rays, Some(sum))
         } else {
-            (aokit_cpu::svao::count_sample_rays(svao, &gbuffer.depth, &gbuffer.normals, &out.mask), None)
+            let rays = if traced {
+                aokit_cpu::svao::count_sample_rays(svao, &gbuffer.depth, &gbuffer.normals, &depth2, &out.mask)
+            } else {
+                0
+            };
+            (rays, None)
         };
         let debug = SvaoDebug {
             ao_pass1: out.ao_pass1,

@@ -27,6 +27,11 @@ pub struct SdOptions {
     pub jitter: JitterTable,
     /// SD guard band in full-res pixels (default 512, i.e. 128 SD texels at ¼).
     pub guard: u32,
+    /// Primary depth mode of the VAO family: dual depth adds a depth-peeled second layer
+    /// (spec svao-raysd §11) [single].
+    pub dual: bool,
+    /// Minimum separation of the peeled layer [0.01, as SVAO.py].
+    pub peel_separation: f32,
 }
 
 impl Default for SdOptions {
@@ -39,6 +44,8 @@ impl Default for SdOptions {
             interval: true,
             jitter: JitterTable::Scrambled,
             guard: 512,
+            dual: false,
+            peel_separation: 0.01,
         }
     }
 }
@@ -55,6 +62,9 @@ impl SdOptions {
         if self.max_count == 0 {
             return Err("--max-count must be at least 1".into());
         }
+        if !(self.peel_separation.is_finite() && self.peel_separation >= 0.0) {
+            return Err(format!("--peel-separation {} must be a non-negative distance", self.peel_separation));
+        }
         if !(self.cutoff.is_finite() && self.cutoff >= 0.0) {
             return Err(format!("--cutoff {} must be a non-negative number of pixels", self.cutoff));
         }
@@ -67,7 +77,7 @@ impl SdOptions {
             "sd_res": match self.divisor { 1 => "full", 2 => "half", _ => "quarter" },
             "sd_layers": self.layers, "max_count": self.max_count.max(self.layers), "cutoff": self.cutoff,
             "interval": self.interval, "jitter": format!("{:?}", self.jitter).to_lowercase(),
-            "sd_guard": self.guard,
+            "sd_guard": self.guard, "primary": if self.dual { "dual" } else { "single" },
         })
     }
 }
@@ -231,10 +241,12 @@ impl HybridOptions {
 pub enum Technique {
     /// Plain VAO on the depth buffer (spec §4–§5).
     Vao,
+    /// Plain VAO on dual depth: the depth buffer plus a depth-peeled second layer (spec §11).
+    VaoDual { peel_separation: f32 },
     /// Stenciled VAO refined from the ray-traced stochastic depth map (spec §3, §5, §7, §9).
     RaySd(SdOptions),
     /// Stenciled VAO refined by one ray per flagged sample (spec §10), the Ray-SD reference.
-    RaySvao { cutoff: f32 },
+    RaySvao { cutoff: f32, dual: bool },
     /// World-space ray-traced AO (spec gtao-raymarch-hybrid §5).
     GroundTruth { spp: u32, uniform: bool },
     /// XeGTAO (spec gtao-raymarch-hybrid §2).
@@ -249,7 +261,7 @@ impl Technique {
     /// The name the CLI uses.
     pub fn name(&self) -> &'static str {
         match self {
-            Technique::Vao => "vao",
+            Technique::Vao | Technique::VaoDual { .. } => "vao",
             Technique::RaySd(_) => "raysd",
             Technique::RaySvao { .. } => "raysvao",
             Technique::GroundTruth { .. } => "groundtruth",
@@ -299,6 +311,13 @@ impl Technique {
                     }
                 }
                 "sd-guard" => sd.guard = number("pixels")?,
+                "primary" => {
+                    sd.dual = match value {
+                        "dual" => true,
+                        "single" => false,
+                        _ => return Err(bad("single or dual")),
+                    }
+                }
                 "spp" => spp = number("rays per pixel")?,
                 "preset" => gtao.preset = GtaoPreset::parse(value)?,
                 "denoise" => gtao.denoise_passes = number("0–3")?,
@@ -339,9 +358,10 @@ impl Technique {
             return Err(format!("'{spec}': spp must be at least 1"));
         }
         Ok(match name {
+            "vao" if sd.dual => Technique::VaoDual { peel_separation: sd.peel_separation },
             "vao" => Technique::Vao,
             "raysd" => Technique::RaySd(sd),
-            "raysvao" => Technique::RaySvao { cutoff: sd.cutoff },
+            "raysvao" => Technique::RaySvao { cutoff: sd.cutoff, dual: sd.dual },
             "groundtruth" => Technique::GroundTruth { spp, uniform },
             "gtao" => Technique::Gtao(gtao),
             "raymarch" => Technique::Raymarch(raymarch),
@@ -358,6 +378,9 @@ impl Technique {
     /// `defaults`, e.g. `raysd_n8`.
     pub fn label(&self, defaults: &SdOptions) -> String {
         let mut label = self.name().to_string();
+        if matches!(self, Technique::VaoDual { .. } | Technique::RaySvao { dual: true, .. }) {
+            label += "_dual";
+        }
         if let Technique::Gtao(o) = self {
             let d = GtaoOptions::default();
             if o.preset != d.preset {
@@ -396,6 +419,7 @@ impl Technique {
                 (o.interval != d.interval, format!("_interval{}", if o.interval { "on" } else { "off" })),
                 (o.jitter != d.jitter, format!("_jitter{:?}", o.jitter).to_lowercase()),
                 (o.guard != d.guard, format!("_guard{}", o.guard)),
+                (o.dual != d.dual, if o.dual { "_dual".into() } else { "_single".into() }),
             ] {
                 if differs {
                     label += &text;
@@ -407,15 +431,20 @@ impl Technique {
 
     /// Whether the technique's output goes through the bilateral blur (spec §3 step 5).
     pub fn blurred(&self) -> bool {
-        matches!(self, Technique::Vao | Technique::RaySd(_) | Technique::RaySvao { .. })
+        matches!(self, Technique::Vao | Technique::VaoDual { .. } | Technique::RaySd(_) | Technique::RaySvao { .. })
     }
 
     /// Options as JSON for reports.
     pub fn describe(&self) -> serde_json::Value {
         match self {
-            Technique::Vao => serde_json::json!({}),
+            Technique::Vao => serde_json::json!({ "primary": "single" }),
+            Technique::VaoDual { peel_separation } => {
+                serde_json::json!({ "primary": "dual", "peel_separation": peel_separation })
+            }
             Technique::RaySd(o) => o.describe(),
-            Technique::RaySvao { cutoff } => serde_json::json!({ "cutoff": cutoff }),
+            Technique::RaySvao { cutoff, dual } => {
+                serde_json::json!({ "cutoff": cutoff, "primary": if *dual { "dual" } else { "single" } })
+            }
             Technique::GroundTruth { spp, uniform } => serde_json::json!({ "spp": spp, "uniform": uniform }),
             Technique::Gtao(o) => o.describe(),
             Technique::Raymarch(o) => serde_json::json!({
@@ -467,7 +496,7 @@ impl Frame {
                 sd_layers: sd.layers,
                 max_count: sd.max_count.max(sd.layers),
                 jitter: sd.jitter as u32,
-                _pad0: 0,
+                dual: sd.dual as u32,
                 _pad1: 0,
                 _pad2: 0,
             },

@@ -236,7 +236,7 @@ fn every_depth_pass_2_needs_lies_inside_the_texel_interval() {
     let (g, _) = renderer.gbuffer(&frame, &aokit_cpu::no_progress);
     let svao = sd_frame(&frame, 4);
     let params: &SvaoParams = &svao.params;
-    let pass1 = run_pass1(params, &g.depth, &g.normals, &aokit_cpu::no_progress);
+    let pass1 = run_pass1(params, &g.depth, &g.normals, &[], &aokit_cpu::no_progress);
     let view = &params.vao.view;
     let gb = GBufferSlices { depth: &g.depth, normals: &g.normals, width: g.width };
     let mut checked = 0;
@@ -288,10 +288,10 @@ fn sd_map_result_does_not_depend_on_hit_order() {
     let bvh = renderer.bvh();
     let surfaces = renderer.surfaces();
     let svao = sd_frame(&frame, 2);
-    let pass1 = run_pass1(&svao.params, &g.depth, &g.normals, &aokit_cpu::no_progress);
+    let pass1 = run_pass1(&svao.params, &g.depth, &g.normals, &[], &aokit_cpu::no_progress);
     let run = |order| {
         let map = run_sd_map(bvh, &surfaces, &svao, &g.depth, &g.normals, &pass1, order);
-        (run_pass2_sd(&svao.params, &g.depth, &g.normals, &pass1, &map), map)
+        (run_pass2_sd(&svao.params, &g.depth, &g.normals, &[], &pass1, &map), map)
     };
     let (ao_a, map_a) = run(HitOrder::Traversal);
     let (ao_b, map_b) = run(HitOrder::Shuffled(1));
@@ -310,7 +310,7 @@ fn raysd_error_is_a_fraction_of_vao_error_and_falls_with_layers() {
     let renderer = CpuRenderer::new(&scene);
     let (g, _) = renderer.gbuffer(&frame, &aokit_cpu::no_progress);
     let none = &aokit_cpu::no_progress;
-    let reference = renderer.run(&frame, &g, &Technique::RaySvao { cutoff: 6.0 }, none).ao_final;
+    let reference = renderer.run(&frame, &g, &Technique::RaySvao { cutoff: 6.0, dual: false }, none).ao_final;
     let vao = renderer.run(&frame, &g, &Technique::Vao, none).ao_final;
     let mse_vao = mse(&vao, &reference);
     let mut by_layers = Vec::new();

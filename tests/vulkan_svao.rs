@@ -119,7 +119,7 @@ fn raysvao_vulkan_agrees_with_cpu_sim() {
     let (scene, frame) = common::builtin_frame("sponza", 320, 180, 32);
     let cpu = CpuRenderer::new(&scene);
     let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
-    let technique = Technique::RaySvao { cutoff: 6.0 };
+    let technique = Technique::RaySvao { cutoff: 6.0, dual: false };
     let c = cpu.run(&frame, &g, &technique, &aokit_cpu::no_progress);
     let v = vk.run(&scene, &frame, &g, &technique).expect("Vulkan Ray-SVAO");
     common::assert_validation_clean(&vk);

@@ -70,3 +70,39 @@ pub fn ray_cast_gbuffer(bvh: &SceneBvh, surfaces: &Surfaces, camera: &Camera, pr
     );
     GBufferImage { width: size.x, height: size.y, depth, normals }
 }
+
+/// The depth-peeled second layer (spec §11): per pixel, the nearest surface (alpha test
+/// included) whose linear depth exceeds the first layer's by more than `separation`; the far
+/// plane where there is none or the first layer is background.
+pub fn ray_cast_second_layer(
+    bvh: &SceneBvh,
+    surfaces: &Surfaces,
+    camera: &Camera,
+    first: &GBufferImage,
+    separation: f32,
+) -> Vec<f32> {
+    let size = camera.view.size();
+    let far = camera.view.far;
+    let eye = camera.eye();
+    let mut depth2 = vec![far; (size.x * size.y) as usize];
+    depth2.par_chunks_mut(size.x as usize).enumerate().for_each(|(y, row)| {
+        for (x, out) in row.iter_mut().enumerate() {
+            let p = UVec2::new(x as u32, y as u32);
+            let d1 = first.depth[(p.y * size.x + p.x) as usize];
+            if !aokit_shaders::common::math::is_valid_depth(d1, far) {
+                continue;
+            }
+            let dir = camera.primary_ray_direction(camera.view.pixel_uv(p));
+            let cos = camera.linear_depth_of_hit(dir, 1.0);
+            let t_min = (d1 + separation) / cos;
+            let hit = bvh.closest_accepted_hit(eye, dir, t_min, f32::INFINITY, |tri, b| surfaces.passes_alpha(tri, b));
+            if let Some(h) = hit {
+                let d = camera.linear_depth_of_hit(dir, h.t);
+                if d < far {
+                    *out = d;
+                }
+            }
+        }
+    });
+    depth2
+}

@@ -12,7 +12,7 @@ pub mod screen;
 pub mod svao;
 
 pub use bvh::{AnyHit, SceneBvh};
-pub use gbuffer::{GBufferImage, Surfaces, ray_cast_gbuffer};
+pub use gbuffer::{GBufferImage, Surfaces, ray_cast_gbuffer, ray_cast_second_layer};
 pub use groundtruth::run_ground_truth;
 pub use screen::{run_blur, run_vao};
 

@@ -47,7 +47,8 @@ fn for_inner_rows(params: &SvaoParams, progress: Progress, kernel: impl Fn(UVec2
 }
 
 /// AO pass 1 (spec §5) over the inner image, interval atomics as `AtomicU32`.
-pub fn run_pass1(params: &SvaoParams, depth: &[f32], normals: &[u32], progress: Progress) -> Pass1 {
+/// `depth2`: the depth-peeled second layer, read only when `params.dual` is set.
+pub fn run_pass1(params: &SvaoParams, depth: &[f32], normals: &[u32], depth2: &[f32], progress: Progress) -> Pass1 {
     let view = &params.vao.view;
     let size = view.size();
     let pixels = (size.x * size.y) as usize;
@@ -60,7 +61,7 @@ pub fn run_pass1(params: &SvaoParams, depth: &[f32], normals: &[u32], progress: 
     let gbuffer = GBufferSlices { depth, normals, width: size.x };
     for_inner_rows(params, progress, |p| {
         let (mut lo, mut hi) = (ray_min.as_slice(), ray_max.as_slice());
-        let out = pass1_pixel(&gbuffer, params, p, &mut lo, &mut hi);
+        let out = pass1_pixel(&gbuffer, depth2, params, p, &mut lo, &mut hi);
         let i = view.index(p);
         ao[i].store(out.ao.to_bits(), Ordering::Relaxed);
         mask[i].store(out.mask, Ordering::Relaxed);
@@ -162,6 +163,7 @@ fn run_pass2<R: Refine>(
     params: &SvaoParams,
     depth: &[f32],
     normals: &[u32],
+    depth2: &[f32],
     pass1: &Pass1,
     progress: Progress,
     source: impl Fn() -> R + Sync,
@@ -180,7 +182,7 @@ fn run_pass2<R: Refine>(
         for x in g..size.x - g {
             let p = uvec2(x, y);
             let i = view.index(p);
-            row[x as usize] = pass2_pixel(&gbuffer, params, p, pass1.ao[i], pass1.mask[i], &mut refine);
+            row[x as usize] = pass2_pixel(&gbuffer, depth2, params, p, pass1.ao[i], pass1.mask[i], &mut refine);
         }
         progress(1);
     });
@@ -188,8 +190,15 @@ fn run_pass2<R: Refine>(
 }
 
 /// AO pass 2 from the SD map (spec §9).
-pub fn run_pass2_sd(params: &SvaoParams, depth: &[f32], normals: &[u32], pass1: &Pass1, map: &SdMap) -> Vec<f32> {
-    run_pass2(params, depth, normals, pass1, &crate::no_progress, || SdMapRefine { map: &map.layers, params })
+pub fn run_pass2_sd(
+    params: &SvaoParams,
+    depth: &[f32],
+    normals: &[u32],
+    depth2: &[f32],
+    pass1: &Pass1,
+    map: &SdMap,
+) -> Vec<f32> {
+    run_pass2(params, depth, normals, depth2, pass1, &crate::no_progress, || SdMapRefine { map: &map.layers, params })
 }
 
 /// BVH tracing for Ray-SVAO samples: every hit goes through the alpha test, then the shared
@@ -242,11 +251,11 @@ pub fn run_raysvao_pass2(
     frame: &SvaoFrame,
     depth: &[f32],
     normals: &[u32],
+    depth2: &[f32],
     pass1: &Pass1,
-    progress: Progress,
 ) -> (Vec<f32>, u64) {
     let rays = AtomicU64::new(0);
-    let ao = run_pass2(&frame.params, depth, normals, pass1, progress, || BvhRefine {
+    let ao = run_pass2(&frame.params, depth, normals, depth2, pass1, &crate::no_progress, || BvhRefine {
         bvh,
         surfaces,
         frame,
@@ -283,7 +292,7 @@ pub fn sd_ray_stats(frame: &SvaoFrame, depth: &[f32], normals: &[u32], ray_min: 
 
 /// Rays Ray-SVAO traces for these pass-1 masks (flagged samples with a non-empty interval), by
 /// the same setup as [`run_raysvao_pass2`]; for reports of GPU runs.
-pub fn count_sample_rays(frame: &SvaoFrame, depth: &[f32], normals: &[u32], mask: &[u32]) -> u64 {
+pub fn count_sample_rays(frame: &SvaoFrame, depth: &[f32], normals: &[u32], depth2: &[f32], mask: &[u32]) -> u64 {
     struct Count(u64);
     impl SampleTracer for Count {
         fn trace(&mut self, _: &mut SampleRay) {
@@ -308,7 +317,7 @@ pub fn count_sample_rays(frame: &SvaoFrame, depth: &[f32], normals: &[u32], mask
             let mut counter = Counter(frame, Count(0));
             for x in g..size.x - g {
                 let p = uvec2(x, y);
-                pass2_pixel(&gbuffer, params, p, 0.0, mask[view.index(p)], &mut counter);
+                pass2_pixel(&gbuffer, depth2, params, p, 0.0, mask[view.index(p)], &mut counter);
             }
             counter.1.0
         })

@@ -30,6 +30,8 @@ pub struct RasterGBuffer {
     set_layout: vk::DescriptorSetLayout,
     layout: vk::PipelineLayout,
     pipeline: vk::Pipeline,
+    /// Same pipeline with the depth-peeling fragment shader (spec §11).
+    peel_pipeline: vk::Pipeline,
 }
 
 struct Target {
@@ -116,15 +118,19 @@ fn layout_barrier(
     };
 }
 
+/// The raster pass's push constants are read by the vertex and (peeling) fragment shaders.
+const PUSH_STAGES: vk::ShaderStageFlags =
+    vk::ShaderStageFlags::from_raw(vk::ShaderStageFlags::VERTEX.as_raw() | vk::ShaderStageFlags::FRAGMENT.as_raw());
+
 impl RasterGBuffer {
     pub fn new(gpu: &Gpu) -> Result<Self, GpuError> {
         let d = &gpu.device;
         unsafe {
-            let push = [vk::PushConstantRange::default()
-                .stage_flags(vk::ShaderStageFlags::VERTEX)
-                .size(size_of::<RasterParams>() as u32)];
-            // Fragment-stage storage buffers: alpha-mask headers and texels.
-            let set_layout = gpu.set_layout(&storage_bindings(2), vk::ShaderStageFlags::FRAGMENT)?;
+            let push =
+                [vk::PushConstantRange::default().stage_flags(PUSH_STAGES).size(size_of::<RasterParams>() as u32)];
+            // Fragment-stage storage buffers: alpha-mask headers and texels, and (peeling only)
+            // the first layer's depth.
+            let set_layout = gpu.set_layout(&storage_bindings(3), vk::ShaderStageFlags::FRAGMENT)?;
             let set_layouts = [set_layout];
             let layout = d.create_pipeline_layout(
                 &vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts).push_constant_ranges(&push),
@@ -132,16 +138,20 @@ impl RasterGBuffer {
             )?;
             let vs = gpu.shader_module(modules::GBUFFER_VS)?;
             let fs = gpu.shader_module(modules::GBUFFER_FS)?;
-            let stages = [
-                vk::PipelineShaderStageCreateInfo::default()
-                    .stage(vk::ShaderStageFlags::VERTEX)
-                    .module(vs)
-                    .name(c"gbuffer_vs"),
-                vk::PipelineShaderStageCreateInfo::default()
-                    .stage(vk::ShaderStageFlags::FRAGMENT)
-                    .module(fs)
-                    .name(c"gbuffer_fs"),
-            ];
+            let peel_fs = gpu.shader_module(modules::GBUFFER_PEEL_FS)?;
+            let stages = |fs: vk::ShaderModule, name: &'static std::ffi::CStr| {
+                [
+                    vk::PipelineShaderStageCreateInfo::default()
+                        .stage(vk::ShaderStageFlags::VERTEX)
+                        .module(vs)
+                        .name(c"gbuffer_vs"),
+                    vk::PipelineShaderStageCreateInfo::default()
+                        .stage(vk::ShaderStageFlags::FRAGMENT)
+                        .module(fs)
+                        .name(name),
+                ]
+            };
+            let (first_stages, peel_stages) = (stages(fs, c"gbuffer_fs"), stages(peel_fs, c"gbuffer_peel_fs"));
             let bindings = [vk::VertexInputBindingDescription::default()
                 .binding(0)
                 .stride(size_of::<GBufferVertex>() as u32)
@@ -189,7 +199,7 @@ impl RasterGBuffer {
                 .color_attachment_formats(&formats)
                 .depth_attachment_format(Z_FORMAT);
             let info = vk::GraphicsPipelineCreateInfo::default()
-                .stages(&stages)
+                .stages(&first_stages)
                 .vertex_input_state(&vertex_input)
                 .input_assembly_state(&assembly)
                 .viewport_state(&viewport)
@@ -200,11 +210,27 @@ impl RasterGBuffer {
                 .dynamic_state(&dynamic)
                 .layout(layout)
                 .push_next(&mut rendering);
-            let created = d.create_graphics_pipelines(vk::PipelineCache::null(), &[info], None);
-            d.destroy_shader_module(vs, None);
-            d.destroy_shader_module(fs, None);
-            let pipeline = created.map_err(|(_, e)| e)?[0];
-            Ok(RasterGBuffer { set_layout, layout, pipeline })
+            let mut rendering_peel = vk::PipelineRenderingCreateInfo::default()
+                .color_attachment_formats(&formats)
+                .depth_attachment_format(Z_FORMAT);
+            let peel_info = vk::GraphicsPipelineCreateInfo::default()
+                .stages(&peel_stages)
+                .vertex_input_state(&vertex_input)
+                .input_assembly_state(&assembly)
+                .viewport_state(&viewport)
+                .rasterization_state(&raster)
+                .multisample_state(&multisample)
+                .depth_stencil_state(&depth)
+                .color_blend_state(&blend)
+                .dynamic_state(&dynamic)
+                .layout(layout)
+                .push_next(&mut rendering_peel);
+            let created = d.create_graphics_pipelines(vk::PipelineCache::null(), &[info, peel_info], None);
+            for m in [vs, fs, peel_fs] {
+                d.destroy_shader_module(m, None);
+            }
+            let pipelines = created.map_err(|(_, e)| e)?;
+            Ok(RasterGBuffer { set_layout, layout, pipeline: pipelines[0], peel_pipeline: pipelines[1] })
         }
     }
 
@@ -212,12 +238,16 @@ impl RasterGBuffer {
     /// full target; empty pixels hold depth = far and normal code 0. `masks` are the alpha masks
     /// per material (non-empty slices). Returns the buffers and the GPU time of the pass in
     /// milliseconds.
+    ///
+    /// With `first_layer` (a linear-depth buffer of the full target) this is the depth-peeling
+    /// pass of spec §11: only fragments beyond that depth + `params.peel_separation` survive.
     pub fn render(
         &self,
         gpu: &Gpu,
         vertices: &[GBufferVertex],
         masks: &(Vec<AlphaMaskHeader>, Vec<f32>),
         params: &RasterParams,
+        first_layer: Option<&Buffer>,
     ) -> Result<(Buffer, Buffer, f64), GpuError> {
         let size = params.view.size();
         if size.x == 0 || size.y == 0 || vertices.is_empty() || masks.0.is_empty() || masks.1.is_empty() {
@@ -232,9 +262,15 @@ impl RasterGBuffer {
         let headers = gpu.upload(&masks.0, storage_in)?;
         let texels = gpu.upload(&masks.1, storage_in)?;
         let d = &gpu.device;
-        let pool = gpu.descriptor_pool(1, &storage_bindings(2))?;
-        let set =
-            gpu.descriptor_set(pool, self.set_layout, &[Descriptor::Storage(&headers), Descriptor::Storage(&texels)])?;
+        let pool = gpu.descriptor_pool(1, &storage_bindings(3))?;
+        // The first pass does not read binding 2; it gets the headers as a placeholder.
+        let third = first_layer.unwrap_or(&headers);
+        let set = gpu.descriptor_set(
+            pool,
+            self.set_layout,
+            &[Descriptor::Storage(&headers), Descriptor::Storage(&texels), Descriptor::Storage(third)],
+        )?;
+        let pipeline = if first_layer.is_some() { self.peel_pipeline } else { self.pipeline };
         let extent = vk::Extent2D { width: size.x, height: size.y };
         let pixels = (size.x * size.y) as u64;
         let vbuf = gpu.upload(vertices, vk::BufferUsageFlags::VERTEX_BUFFER)?;
@@ -315,7 +351,7 @@ impl RasterGBuffer {
                         .color_attachments(&colors)
                         .depth_attachment(&z),
                 );
-                d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, self.pipeline);
+                d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, pipeline);
                 d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::GRAPHICS, self.layout, 0, &[set], &[]);
                 let viewport = vk::Viewport {
                     x: 0.0,
@@ -327,7 +363,7 @@ impl RasterGBuffer {
                 };
                 d.cmd_set_viewport(cb, 0, &[viewport]);
                 d.cmd_set_scissor(cb, 0, &[area]);
-                d.cmd_push_constants(cb, self.layout, vk::ShaderStageFlags::VERTEX, 0, bytemuck::bytes_of(params));
+                d.cmd_push_constants(cb, self.layout, PUSH_STAGES, 0, bytemuck::bytes_of(params));
                 d.cmd_bind_vertex_buffers(cb, 0, &[vbuf.raw], &[0]);
                 d.cmd_draw(cb, vertices.len() as u32, 1, 0, 0);
                 d.cmd_end_rendering(cb);
@@ -382,6 +418,7 @@ impl RasterGBuffer {
     pub fn destroy(&self, gpu: &Gpu) {
         unsafe {
             gpu.device.destroy_pipeline(self.pipeline, None);
+            gpu.device.destroy_pipeline(self.peel_pipeline, None);
             gpu.device.destroy_pipeline_layout(self.layout, None);
             gpu.device.destroy_descriptor_set_layout(self.set_layout, None);
         }

@@ -13,6 +13,7 @@ pub const VAO_MAIN: &[u8] = spv!("vao_main");
 pub const BLUR_MAIN: &[u8] = spv!("blur_main");
 pub const GBUFFER_VS: &[u8] = spv!("gbuffer_vs");
 pub const GBUFFER_FS: &[u8] = spv!("gbuffer_fs");
+pub const GBUFFER_PEEL_FS: &[u8] = spv!("gbuffer_peel_fs");
 pub const GROUNDTRUTH_RGEN: &[u8] = spv!("groundtruth_rgen");
 pub const GROUNDTRUTH_MISS: &[u8] = spv!("groundtruth_miss");
 pub const GROUNDTRUTH_AHIT: &[u8] = spv!("groundtruth_ahit");
@@ -32,11 +33,12 @@ pub const RAYMARCH_MAIN: &[u8] = spv!("raymarch_main");
 pub const HYBRID_RGEN: &[u8] = spv!("hybrid_rgen");
 
 /// Every module by entry-point name.
-pub const ALL: [(&str, &[u8]); 21] = [
+pub const ALL: [(&str, &[u8]); 22] = [
     ("vao_main", VAO_MAIN),
     ("blur_main", BLUR_MAIN),
     ("gbuffer_vs", GBUFFER_VS),
     ("gbuffer_fs", GBUFFER_FS),
+    ("gbuffer_peel_fs", GBUFFER_PEEL_FS),
     ("groundtruth_rgen", GROUNDTRUTH_RGEN),
     ("groundtruth_miss", GROUNDTRUTH_MISS),
     ("groundtruth_ahit", GROUNDTRUTH_AHIT),

@@ -34,8 +34,9 @@ pub struct SvaoOutput {
 pub struct SvaoPipelines {
     pass1: ComputeKernel,
     pass2_sd: ComputeKernel,
-    sd_map: RtPipeline,
-    sample_rays: RtPipeline,
+    /// Ray-tracing pipelines, present where the device traces rays.
+    sd_map: Option<RtPipeline>,
+    sample_rays: Option<RtPipeline>,
 }
 
 fn rt_bindings(storage: usize) -> Vec<vk::DescriptorType> {
@@ -46,7 +47,7 @@ fn rt_bindings(storage: usize) -> Vec<vk::DescriptorType> {
 
 impl SvaoPipelines {
     pub fn new(gpu: &Gpu) -> Result<Self, GpuError> {
-        gpu.ray_tracing()?;
+        let rt = gpu.has_ray_tracing();
         let sd_shaders = [
             (modules::RAYSD_RGEN, c"raysd_rgen"),
             (modules::RAYSD_MISS, c"raysd_miss"),
@@ -58,24 +59,27 @@ impl SvaoPipelines {
             (modules::RAYSVAO_AHIT, c"raysvao_ahit"),
         ];
         Ok(SvaoPipelines {
-            pass1: ComputeKernel::new(gpu, modules::SVAO_PASS1, c"svao_pass1", 7, 0)?,
-            pass2_sd: ComputeKernel::new(gpu, modules::RAYSD_PASS2, c"raysd_pass2", 6, 0)?,
+            pass1: ComputeKernel::new(gpu, modules::SVAO_PASS1, c"svao_pass1", 8, 0)?,
+            pass2_sd: ComputeKernel::new(gpu, modules::RAYSD_PASS2, c"raysd_pass2", 7, 0)?,
             // frame, TLAS, depth, normals, ray_min, ray_max, SD map + 4 alpha buffers.
-            sd_map: RtPipeline::new(gpu, sd_shaders, rt_bindings(11))?,
-            // frame, TLAS, depth, normals, ao, mask + 4 alpha buffers.
-            sample_rays: RtPipeline::new(gpu, sample_shaders, rt_bindings(10))?,
+            sd_map: if rt { Some(RtPipeline::new(gpu, sd_shaders, rt_bindings(11))?) } else { None },
+            // frame, TLAS, depth, normals, ao, mask + 4 alpha buffers + the second depth layer.
+            sample_rays: if rt { Some(RtPipeline::new(gpu, sample_shaders, rt_bindings(11))?) } else { None },
         })
     }
 
-    /// Run Ray-SD (`frame.params.secondary` = StochasticDepth) or Ray-SVAO (Raytraced) on a
-    /// G-buffer already on the device.
+    /// Run Ray-SD (`frame.params.secondary` = StochasticDepth), Ray-SVAO (Raytraced) or pass 1
+    /// alone (Disabled: plain VAO, e.g. with dual depth; `scene` unused) on a
+    /// G-buffer already on the device; `depth2` is the depth-peeled second layer (read only when
+    /// `frame.params.dual` is set; pass the depth buffer otherwise).
     pub fn run(
         &self,
         gpu: &Gpu,
-        scene: &SceneAccel,
+        scene: Option<&SceneAccel>,
         frame: &SvaoFrame,
         depth: &Buffer,
         normals: &Buffer,
+        depth2: &Buffer,
     ) -> Result<SvaoOutput, GpuError> {
         let params = &frame.params;
         let view = &params.vao.view;
@@ -85,9 +89,15 @@ impl SvaoPipelines {
             return Err(GpuError::Input(format!("G-buffer smaller than the {}×{} target", size.x, size.y)));
         }
         let sd = params.secondary == Secondary::StochasticDepth as u32;
-        if !sd && params.secondary != Secondary::Raytraced as u32 {
-            return Err(GpuError::Input("SVAO pipeline needs a secondary depth source".into()));
-        }
+        let traced = params.secondary == Secondary::Raytraced as u32;
+        let rt = if sd || traced {
+            let scene = scene.ok_or_else(|| GpuError::Input("Ray-SD/Ray-SVAO need the scene's TLAS".into()))?;
+            let pipeline = if sd { &self.sd_map } else { &self.sample_rays };
+            let pipeline = pipeline.as_ref().ok_or_else(|| GpuError::NoDevice("ray tracing pipelines".into()))?;
+            Some((scene, pipeline))
+        } else {
+            None
+        };
         let sd_size = params.sd_size();
         let texels = (sd_size.x * sd_size.y) as usize;
         let storage = vk::BufferUsageFlags::STORAGE_BUFFER
@@ -111,7 +121,7 @@ impl SvaoPipelines {
             let inner = size - 2 * view.guard;
             let groups = [inner.x.div_ceil(GROUP), inner.y.div_ceil(GROUP), 1];
             let d = &gpu.device;
-            let mut types = storage_bindings(7);
+            let mut types = storage_bindings(8);
             types.extend(rt_bindings(11));
             let pool = gpu.descriptor_pool(3, &types)?;
             let queries = unsafe {
@@ -129,7 +139,7 @@ impl SvaoPipelines {
                     d.cmd_fill_buffer(cb, b(ray_max).raw, 0, vk::WHOLE_SIZE, RAY_MAX_CLEAR);
                 }
                 memory_barrier(gpu, cb, vk::PipelineStageFlags::TRANSFER, vk::PipelineStageFlags::COMPUTE_SHADER);
-                let pass1_buffers = [b(frame_buf), depth, normals, b(ao), b(mask), b(ray_min), b(ray_max)];
+                let pass1_buffers = [b(frame_buf), depth, normals, b(ao), b(mask), b(ray_min), b(ray_max), depth2];
                 self.pass1.record(gpu, cb, pool, &pass1_buffers, &[], groups)?;
                 let rt_stage = vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR;
                 memory_barrier(
@@ -148,6 +158,13 @@ impl SvaoPipelines {
                     vk::PipelineStageFlags::TRANSFER,
                     rt_stage | vk::PipelineStageFlags::COMPUTE_SHADER,
                 );
+                let Some((scene, pipeline)) = rt else {
+                    memory_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER, vk::PipelineStageFlags::TRANSFER);
+                    for q in [2, 3] {
+                        unsafe { d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, q) };
+                    }
+                    return Ok(());
+                };
                 let mut descriptors = vec![
                     Descriptor::Storage(b(frame_buf)),
                     scene.tlas_descriptor(),
@@ -157,11 +174,11 @@ impl SvaoPipelines {
                 if sd {
                     descriptors.extend([b(ray_min), b(ray_max), b(sd_map)].map(Descriptor::Storage));
                     descriptors.extend(scene.alpha_descriptors());
-                    let set = gpu.descriptor_set(pool, self.sd_map.set_layout, &descriptors)?;
-                    self.sd_map.record_trace(gpu, cb, set, sd_size.x, sd_size.y)?;
+                    let set = gpu.descriptor_set(pool, pipeline.set_layout, &descriptors)?;
+                    pipeline.record_trace(gpu, cb, set, sd_size.x, sd_size.y)?;
                     memory_barrier(gpu, cb, rt_stage, vk::PipelineStageFlags::COMPUTE_SHADER);
                     unsafe { d.cmd_write_timestamp(cb, rt_stage, queries, 2) };
-                    let pass2_buffers = [b(frame_buf), depth, normals, b(ao), b(mask), b(sd_map)];
+                    let pass2_buffers = [b(frame_buf), depth, normals, b(ao), b(mask), b(sd_map), depth2];
                     self.pass2_sd.record(gpu, cb, pool, &pass2_buffers, &[], groups)?;
                     memory_barrier(
                         gpu,
@@ -173,8 +190,9 @@ impl SvaoPipelines {
                 } else {
                     descriptors.extend([b(ao), b(mask)].map(Descriptor::Storage));
                     descriptors.extend(scene.alpha_descriptors());
-                    let set = gpu.descriptor_set(pool, self.sample_rays.set_layout, &descriptors)?;
-                    self.sample_rays.record_trace(gpu, cb, set, inner.x, inner.y)?;
+                    descriptors.push(Descriptor::Storage(depth2));
+                    let set = gpu.descriptor_set(pool, pipeline.set_layout, &descriptors)?;
+                    pipeline.record_trace(gpu, cb, set, inner.x, inner.y)?;
                     memory_barrier(gpu, cb, rt_stage, vk::PipelineStageFlags::TRANSFER);
                     unsafe {
                         d.cmd_write_timestamp(cb, rt_stage, queries, 2);
@@ -191,8 +209,10 @@ impl SvaoPipelines {
             let t = got?;
             let pass_ms = if sd {
                 vec![("ao_pass1", t[1]), ("sd_map", t[2] - t[1]), ("ao_pass2", t[3] - t[2])]
-            } else {
+            } else if traced {
                 vec![("ao_pass1", t[1]), ("ao_pass2_rays", t[2] - t[1])]
+            } else {
+                vec![("ao_pass1", t[1])]
             };
             Ok(SvaoOutput {
                 ao: gpu.download(b(ao))?,
@@ -213,7 +233,8 @@ impl SvaoPipelines {
     pub fn destroy(self, gpu: &Gpu) {
         self.pass1.destroy(gpu);
         self.pass2_sd.destroy(gpu);
-        self.sd_map.destroy(gpu);
-        self.sample_rays.destroy(gpu);
+        for p in [self.sd_map, self.sample_rays].into_iter().flatten() {
+            p.destroy(gpu);
+        }
     }
 }

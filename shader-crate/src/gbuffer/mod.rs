@@ -20,6 +20,12 @@ pub struct RasterParams {
     /// World → view (rigid transform).
     pub world_to_view: Mat4,
     pub view: ViewParams,
+    /// Depth peeling (spec §11): the second layer keeps only fragments farther than the first
+    /// layer's depth plus this separation [0.01]. Unused by the first pass.
+    pub peel_separation: f32,
+    pub _pad0: u32,
+    pub _pad1: u32,
+    pub _pad2: u32,
 }
 
 /// Vulkan clip position of a view-space point: `x/tx`, `−y/ty` (Vulkan's y points down, as the
@@ -68,5 +74,43 @@ pub fn gbuffer_fs(
         spirv_std::arch::kill();
     }
     *linear_depth = -view_position.z;
+    *normal_code = encode_normal(view_normal);
+}
+
+/// Does a fragment at linear depth `d` belong to the peeled second layer: farther than the first
+/// layer's depth `first` plus `separation` (spec §11; the first layer's background = nothing
+/// left to peel).
+#[inline]
+pub fn beyond_first_layer(d: f32, first: f32, separation: f32) -> bool {
+    d > first + separation
+}
+
+/// Fragment shader of the depth-peeling pass (spec §11): the G-buffer fragment shader plus a
+/// discard of everything up to the first layer's depth + separation at this pixel.
+#[spirv(fragment(entry_point_name = "gbuffer_peel_fs"))]
+pub fn gbuffer_peel_fs(
+    #[spirv(frag_coord)] frag_coord: Vec4,
+    view_position: Vec3,
+    #[spirv(flat)] view_normal: Vec3,
+    uv: Vec2,
+    #[spirv(flat)] material: u32,
+    #[spirv(push_constant)] params: &RasterParams,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] mask_headers: &[AlphaMaskHeader],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] mask_texels: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] first_depth: &[f32],
+    linear_depth: &mut f32,
+    normal_code: &mut u32,
+) {
+    let size = params.view.size();
+    let x = (frag_coord.x as u32).min(size.x - 1);
+    let y = (frag_coord.y as u32).min(size.y - 1);
+    let d = -view_position.z;
+    if !beyond_first_layer(d, first_depth[(y * size.x + x) as usize], params.peel_separation) {
+        spirv_std::arch::kill();
+    }
+    if !alpha_test_passes(mask_headers, mask_texels, material, uv) {
+        spirv_std::arch::kill();
+    }
+    *linear_depth = d;
     *normal_code = encode_normal(view_normal);
 }

@@ -239,6 +239,7 @@ pub fn raysd_pass2(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] ao: &mut [f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] mask: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] sd_map: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] depth2: &[f32],
 ) {
     let params = &frame[0].params;
     let view = &params.vao.view;
@@ -249,5 +250,5 @@ pub fn raysd_pass2(
     let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
     let i = view.index(p);
     let mut source = SdMapRefine { map: sd_map, params };
-    ao[i] = pass2_pixel(&gbuffer, params, p, ao[i], mask[i], &mut source);
+    ao[i] = pass2_pixel(&gbuffer, depth2, params, p, ao[i], mask[i], &mut source);
 }

@@ -59,6 +59,7 @@ pub fn raysvao_rgen(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] normals: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ao: &mut [f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] mask: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] depth2: &[f32],
     #[spirv(ray_payload)] payload: &mut SampleRayState,
 ) {
     let frame = &frame[0];
@@ -71,7 +72,7 @@ pub fn raysvao_rgen(
     let i = view.index(p);
     let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
     let mut source = TlasRefine { tlas, payload, camera: &frame.camera, params };
-    ao[i] = pass2_pixel(&gbuffer, params, p, ao[i], mask[i], &mut source);
+    ao[i] = pass2_pixel(&gbuffer, depth2, params, p, ao[i], mask[i], &mut source);
 }
 
 #[spirv(miss(entry_point_name = "raysvao_miss"))]

@@ -7,7 +7,7 @@
 pub mod pass1;
 pub mod pass2;
 
-pub use pass1::{Pass1Pixel, pass1_pixel, sd_pixel};
+pub use pass1::{Pass1Pixel, pass1_pixel, primary_sample, sd_pixel};
 pub use pass2::{Refine, pass2_pixel};
 
 use crate::common::camera::Camera;
@@ -48,7 +48,8 @@ pub struct SvaoParams {
     pub max_count: u32,
     /// SD jitter table (`crate::common::tables::JitterTable` as `u32`) [scrambled].
     pub jitter: u32,
-    pub _pad0: u32,
+    /// Primary depth mode: 0 single depth, 1 dual depth (a depth-peeled second layer, spec §11).
+    pub dual: u32,
     pub _pad1: u32,
     pub _pad2: u32,
 }
@@ -101,6 +102,7 @@ pub fn svao_pass1(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] mask: &mut [u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] mut ray_min: &mut [u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] mut ray_max: &mut [u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 7)] depth2: &[f32],
 ) {
     let params = &frame[0].params;
     let view = &params.vao.view;
@@ -109,7 +111,7 @@ pub fn svao_pass1(
         return;
     }
     let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
-    let out = pass1_pixel(&gbuffer, params, p, &mut ray_min, &mut ray_max);
+    let out = pass1_pixel(&gbuffer, depth2, params, p, &mut ray_min, &mut ray_max);
     let i = view.index(p);
     ao[i] = out.ao;
     mask[i] = out.mask;

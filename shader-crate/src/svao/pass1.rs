@@ -32,6 +32,35 @@ pub fn needs_refinement(z: f32, s: &LineSample, frame: &PixelFrame, params: &Sva
     z > (1.0 + params.vao.thickness) * frame.radius && s.screen_distance > params.cutoff
 }
 
+/// Object-space z and visibility of sample `s` from the primary depth (spec §4.2–§4.3); with
+/// dual depth (spec §11) a sample the first layer does not settle (it would need refinement)
+/// also reads the depth-peeled second layer `depth2`, combined by min. Both AO passes call this,
+/// so pass 2 subtracts exactly what pass 1 added — the reference's pass 2 skips the second layer
+/// there, which breaks dual depth with a secondary source (spec §11 "Bug"); this is its fix.
+#[inline]
+pub fn primary_sample<G: GBuffer>(
+    gbuffer: &G,
+    depth2: &[f32],
+    params: &SvaoParams,
+    frame: &PixelFrame,
+    s: &LineSample,
+) -> (f32, f32) {
+    let vao = &params.vao;
+    let view = &vao.view;
+    let mut z = primary_object_z(gbuffer, view, frame, s);
+    let mut v = halo_visibility(z, s, frame.radius, vao.thickness);
+    if params.dual != 0 && needs_refinement(z, s, frame, params) {
+        let mut d2 = depth2[view.index(s.texel)];
+        if !crate::common::math::is_valid_depth(d2, view.far) {
+            d2 = view.far;
+        }
+        let z2 = crate::vao::kernel::object_z(frame, view.uv_to_view(view.texel_uv(s.texel), d2));
+        v = v.min(halo_visibility(z2, s, frame.radius, vao.thickness));
+        z = z.min(z2);
+    }
+    (z, v)
+}
+
 /// SD texel of an (unsnapped, unclamped) uv: `clamp(floor(uv·L) + sg, 0, L + 2sg − 1)` per axis
 /// (spec §5 `SDpixel`).
 #[inline]
@@ -44,12 +73,14 @@ pub fn sd_pixel(uv: Vec2, params: &SvaoParams) -> UVec2 {
     UVec2::new(x as u32, y as u32)
 }
 
-/// AO pass 1 of pixel `p` (spec §5). `ray_min`/`ray_max` are the SD-size interval buffers
+/// AO pass 1 of pixel `p` (spec §5; `depth2`: the second layer, read only with dual depth).
+/// `ray_min`/`ray_max` are the SD-size interval buffers
 /// (only touched for [`Secondary::StochasticDepth`]); they must be cleared to
 /// `RAY_MIN_CLEAR`/`RAY_MAX_CLEAR` before the pass.
 #[inline]
 pub fn pass1_pixel<G: GBuffer, A: AtomicU32Buffer, B: AtomicU32Buffer>(
     gbuffer: &G,
+    depth2: &[f32],
     params: &SvaoParams,
     p: UVec2,
     ray_min: &mut A,
@@ -73,8 +104,8 @@ pub fn pass1_pixel<G: GBuffer, A: AtomicU32Buffer, B: AtomicU32Buffer>(
             if s.same_pixel {
                 sum += unoccluded_visibility(&s);
             } else {
-                let mut z = primary_object_z(gbuffer, view, &frame, &s);
-                sum += halo_visibility(z, &s, frame.radius, vao.thickness);
+                let (mut z, v) = primary_sample(gbuffer, depth2, params, &frame, &s);
+                sum += v;
                 // Out-of-screen samples are always refined: Ray-SVAO traces them, the SD map
                 // covers them with its guard band (spec §5 "force").
                 let force = !s.in_screen && (traced || (sd && params.sd_guard > 0));

@@ -9,7 +9,7 @@ use crate::common::gbuffer_read::GBuffer;
 use crate::common::math::sat;
 use crate::common::tables::AO_SAMPLES;
 use crate::glam::UVec2;
-use crate::vao::kernel::{LineSample, PixelFrame, halo_visibility, line_sample, primary_object_z, setup_pixel};
+use crate::vao::kernel::{LineSample, PixelFrame, line_sample, setup_pixel};
 
 /// A secondary depth source: the SD map (spec §9) or traced rays (spec §10).
 pub trait Refine {
@@ -26,6 +26,7 @@ pub trait Refine {
 #[inline]
 pub fn pass2_pixel<G: GBuffer, R: Refine>(
     gbuffer: &G,
+    depth2: &[f32],
     params: &SvaoParams,
     p: UVec2,
     stored: f32,
@@ -46,8 +47,7 @@ pub fn pass2_pixel<G: GBuffer, R: Refine>(
     while i < AO_SAMPLES {
         if mask & (1 << i) != 0 {
             let s = line_sample(&frame, view, i);
-            let z = primary_object_z(gbuffer, view, &frame, &s);
-            let v = halo_visibility(z, &s, frame.radius, vao.thickness);
+            let (z, v) = super::primary_sample(gbuffer, depth2, params, &frame, &s);
             delta -= v;
             // Out of screen the clamped border texel is dropped (spec §9, §15.8).
             let start = if s.in_screen { v } else { 1.0 };
