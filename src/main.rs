@@ -151,6 +151,9 @@ struct TechniqueArgs {
     /// Minimum separation of the peeled second layer (world units).
     #[arg(long, default_value_t = 0.01)]
     peel_separation: f32,
+    /// AO kernel of vao/raysd: VAO's halo model or HBAO+ (radius × 1.5, spec §4.5).
+    #[arg(long, value_enum, default_value = "vao")]
+    kernel: Kernel,
     /// Rays per pixel of the ground truth.
     #[arg(long, default_value_t = 512)]
     spp: u32,
@@ -211,6 +214,12 @@ struct TechniqueArgs {
     /// Hybrid AO: XeGTAO denoise passes afterwards.
     #[arg(long, default_value_t = 3)]
     hybrid_denoise: u32,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+enum Kernel {
+    Vao,
+    Hbao,
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -285,6 +294,7 @@ impl TechniqueArgs {
             guard: self.sd_guard,
             dual: self.primary == Primary::Dual,
             peel_separation: self.peel_separation,
+            hbao: self.kernel == Kernel::Hbao,
         };
         o.validate()?;
         if self.spp == 0 {
@@ -328,7 +338,7 @@ struct RenderArgs {
     frame: FrameArgs,
     #[command(flatten)]
     options: TechniqueArgs,
-    /// vao, raysd, raysvao, gtao, raymarch, hybrid or groundtruth.
+    /// vao, hbao, raysd, hbao-sd, raysvao, gtao, raymarch, hybrid or groundtruth.
     #[arg(long, default_value = "vao")]
     technique: String,
     /// Skip the bilateral blur.

@@ -318,6 +318,7 @@ impl CpuRenderer {
         let mut depth2 = Vec::new();
         let (dual, separation) = match technique {
             Technique::VaoDual { peel_separation } => (true, *peel_separation),
+            Technique::Hbao { dual, peel_separation } => (*dual, *peel_separation),
             Technique::RaySd(o) => (o.dual, o.peel_separation),
             Technique::RaySvao { dual, .. } => (*dual, SdOptions::default().peel_separation),
             _ => (false, 0.0),
@@ -333,11 +334,13 @@ impl CpuRenderer {
             Technique::Vao => {
                 timed("vao", &mut || ao = aokit_cpu::run_vao(&frame.vao_params(), depth, normals, progress))
             }
-            Technique::VaoDual { .. } => {
+            Technique::VaoDual { .. } | Technique::Hbao { .. } => {
                 // Pass 1 without a secondary source finalizes every pixel.
-                let sd = SdOptions { dual: true, ..Default::default() };
+                let hbao = matches!(technique, Technique::Hbao { .. });
+                let sd = SdOptions { dual, hbao, ..Default::default() };
                 let svao = frame.svao_frame(Secondary::Disabled, &sd);
-                timed("vao", &mut || ao = svao_cpu::run_pass1(&svao.params, depth, normals, depth2, progress).ao);
+                let name = if hbao { "hbao" } else { "vao" };
+                timed(name, &mut || ao = svao_cpu::run_pass1(&svao.params, depth, normals, depth2, progress).ao);
             }
             Technique::GroundTruth { spp, uniform } => {
                 let params = frame.ground_truth_params(*spp, *uniform);
@@ -534,6 +537,10 @@ impl VulkanRenderer {
             }
             Technique::VaoDual { .. } => {
                 let options = SdOptions { dual: true, ..Default::default() };
+                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Disabled, &options))
+            }
+            Technique::Hbao { dual, .. } => {
+                let options = SdOptions { dual: *dual, hbao: true, ..Default::default() };
                 self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Disabled, &options))
             }
         }

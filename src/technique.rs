@@ -9,6 +9,8 @@ use aokit_shaders::gtao::GtaoParams;
 use aokit_shaders::hybrid::{HybridFrame, HybridParams};
 use aokit_shaders::raymarch::{Contribution, RaymarchParams};
 use aokit_shaders::svao::{Secondary, SvaoFrame, SvaoParams};
+use aokit_shaders::vao::VaoParams;
+use aokit_shaders::vao::kernel::{KERNEL_HBAO, KERNEL_VAO};
 
 /// Options of the ray-traced stochastic depth map (spec svao-raysd §2 defaults).
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -32,6 +34,9 @@ pub struct SdOptions {
     pub dual: bool,
     /// Minimum separation of the peeled layer [0.01, as SVAO.py].
     pub peel_separation: f32,
+    /// The HBAO+ kernel instead of VAO's (spec §4.5; the radius is scaled by 1.5 as the
+    /// reference's UI does: 0.2 → 0.3) [VAO].
+    pub hbao: bool,
 }
 
 impl Default for SdOptions {
@@ -46,6 +51,7 @@ impl Default for SdOptions {
             guard: 512,
             dual: false,
             peel_separation: 0.01,
+            hbao: false,
         }
     }
 }
@@ -78,6 +84,7 @@ impl SdOptions {
             "sd_layers": self.layers, "max_count": self.max_count.max(self.layers), "cutoff": self.cutoff,
             "interval": self.interval, "jitter": format!("{:?}", self.jitter).to_lowercase(),
             "sd_guard": self.guard, "primary": if self.dual { "dual" } else { "single" },
+            "kernel": if self.hbao { "hbao" } else { "vao" },
         })
     }
 }
@@ -243,6 +250,8 @@ pub enum Technique {
     Vao,
     /// Plain VAO on dual depth: the depth buffer plus a depth-peeled second layer (spec §11).
     VaoDual { peel_separation: f32 },
+    /// The HBAO+ kernel on single or dual depth (spec §4.5, §11), no refinement.
+    Hbao { dual: bool, peel_separation: f32 },
     /// Stenciled VAO refined from the ray-traced stochastic depth map (spec §3, §5, §7, §9).
     RaySd(SdOptions),
     /// Stenciled VAO refined by one ray per flagged sample (spec §10), the Ray-SD reference.
@@ -262,6 +271,8 @@ impl Technique {
     pub fn name(&self) -> &'static str {
         match self {
             Technique::Vao | Technique::VaoDual { .. } => "vao",
+            Technique::Hbao { .. } => "hbao",
+            Technique::RaySd(o) if o.hbao => "hbao-sd",
             Technique::RaySd(_) => "raysd",
             Technique::RaySvao { .. } => "raysvao",
             Technique::GroundTruth { .. } => "groundtruth",
@@ -311,6 +322,13 @@ impl Technique {
                     }
                 }
                 "sd-guard" => sd.guard = number("pixels")?,
+                "kernel" => {
+                    sd.hbao = match value {
+                        "hbao" => true,
+                        "vao" => false,
+                        _ => return Err(bad("vao or hbao")),
+                    }
+                }
                 "primary" => {
                     sd.dual = match value {
                         "dual" => true,
@@ -358,9 +376,15 @@ impl Technique {
             return Err(format!("'{spec}': spp must be at least 1"));
         }
         Ok(match name {
+            "vao" | "hbao" if sd.hbao || name == "hbao" => {
+                Technique::Hbao { dual: sd.dual, peel_separation: sd.peel_separation }
+            }
             "vao" if sd.dual => Technique::VaoDual { peel_separation: sd.peel_separation },
             "vao" => Technique::Vao,
-            "raysd" => Technique::RaySd(sd),
+            "raysd" | "hbao-sd" => Technique::RaySd(SdOptions { hbao: sd.hbao || name == "hbao-sd", ..sd }),
+            "raysvao" if sd.hbao => {
+                return Err("raysvao traces the VAO halo model only; the HBAO+ kernel runs as hbao or hbao-sd".into());
+            }
             "raysvao" => Technique::RaySvao { cutoff: sd.cutoff, dual: sd.dual },
             "groundtruth" => Technique::GroundTruth { spp, uniform },
             "gtao" => Technique::Gtao(gtao),
@@ -368,7 +392,7 @@ impl Technique {
             "hybrid" => Technique::Hybrid(hybrid),
             other => {
                 return Err(format!(
-                    "unknown technique '{other}' (known: vao, raysd, raysvao, gtao, raymarch, hybrid, groundtruth)"
+                    "unknown technique '{other}' (known: vao, hbao, raysd, hbao-sd, raysvao, gtao, raymarch, hybrid, groundtruth)"
                 ));
             }
         })
@@ -378,7 +402,10 @@ impl Technique {
     /// `defaults`, e.g. `raysd_n8`.
     pub fn label(&self, defaults: &SdOptions) -> String {
         let mut label = self.name().to_string();
-        if matches!(self, Technique::VaoDual { .. } | Technique::RaySvao { dual: true, .. }) {
+        if matches!(
+            self,
+            Technique::VaoDual { .. } | Technique::Hbao { dual: true, .. } | Technique::RaySvao { dual: true, .. }
+        ) {
             label += "_dual";
         }
         if let Technique::Gtao(o) = self {
@@ -431,7 +458,14 @@ impl Technique {
 
     /// Whether the technique's output goes through the bilateral blur (spec §3 step 5).
     pub fn blurred(&self) -> bool {
-        matches!(self, Technique::Vao | Technique::VaoDual { .. } | Technique::RaySd(_) | Technique::RaySvao { .. })
+        matches!(
+            self,
+            Technique::Vao
+                | Technique::VaoDual { .. }
+                | Technique::Hbao { .. }
+                | Technique::RaySd(_)
+                | Technique::RaySvao { .. }
+        )
     }
 
     /// Options as JSON for reports.
@@ -441,6 +475,9 @@ impl Technique {
             Technique::VaoDual { peel_separation } => {
                 serde_json::json!({ "primary": "dual", "peel_separation": peel_separation })
             }
+            Technique::Hbao { dual, peel_separation } => serde_json::json!({
+                "kernel": "hbao", "primary": if *dual { "dual" } else { "single" }, "peel_separation": peel_separation,
+            }),
             Technique::RaySd(o) => o.describe(),
             Technique::RaySvao { cutoff, dual } => {
                 serde_json::json!({ "cutoff": cutoff, "primary": if *dual { "dual" } else { "single" } })
@@ -487,7 +524,8 @@ impl Frame {
         SvaoFrame {
             camera: self.camera,
             params: SvaoParams {
-                vao: self.vao_params(),
+                // The reference's UI scales R by 1.5 for the HBAO+ kernel (spec §2, §4.5).
+                vao: VaoParams { radius: self.radius * if sd.hbao { 1.5 } else { 1.0 }, ..self.vao_params() },
                 secondary: secondary as u32,
                 interval: sd.interval as u32,
                 cutoff: sd.cutoff,
@@ -497,7 +535,7 @@ impl Frame {
                 max_count: sd.max_count.max(sd.layers),
                 jitter: sd.jitter as u32,
                 dual: sd.dual as u32,
-                _pad1: 0,
+                kernel: if sd.hbao { KERNEL_HBAO } else { KERNEL_VAO },
                 _pad2: 0,
             },
         }

@@ -17,6 +17,7 @@ fn sample(h: f32, end: f32) -> LineSample {
     LineSample {
         valid: true,
         half_chord: h,
+        pdf: 2.0 * h,
         sphere_end: end,
         point: Vec3::ZERO,
         uv: Vec2::ZERO,

@@ -75,6 +75,46 @@ pub const VAO_HALF_CHORDS: [f32; 8] = [
     0.9787169098854065,
 ];
 
+/// HBAO+ kernel radii ρ_i = 2·asin(ψ_i^1.25)/π, ψ_i = VdC(8 + i) (spec svao-raysd §4.5 table,
+/// the code's literals).
+#[allow(clippy::excessive_precision)]
+pub const HBAO_RADII: [f32; 8] = [
+    0.019897607325877215,
+    0.3239192018939078,
+    0.15013283288204182,
+    0.5608856339193332,
+    0.07874804859295396,
+    0.4306374970658152,
+    0.23159241868180838,
+    0.74770696488701,
+];
+
+/// Normalized half-chords `sqrt(1 − ρ_i²)` of [`HBAO_RADII`] (hemisphere clipping, spec §4.5).
+#[allow(clippy::excessive_precision)]
+pub const HBAO_HALF_CHORDS: [f32; 8] = [
+    0.9998020230139091,
+    0.9460847481301101,
+    0.988665834592666,
+    0.827893293645327,
+    0.9968945505131431,
+    0.9025249836546853,
+    0.9728129067858372,
+    0.6640288357138232,
+];
+
+/// HBAO+ sample weights `pdf_i = 0.9·(1 − ρ_i)^1.5` (spec §4.5, the kernel maximum's envelope).
+#[allow(clippy::excessive_precision)]
+pub const HBAO_PDFS: [f32; 8] = [
+    0.8732722978109168,
+    0.5003114146979276,
+    0.7051298285229405,
+    0.26188400744516105,
+    0.7958113716137286,
+    0.3866569336017646,
+    0.6062195963682379,
+    0.11405134245105371,
+];
+
 /// Disc directions `(sin α_i, cos α_i)` with `α_i = (i/8)·2·3.141` (spec §4.2; 3.141 as in the
 /// reference), rounded from f64.
 #[allow(clippy::excessive_precision)]

@@ -14,8 +14,9 @@ use crate::common::hash::wyman_hash;
 use crate::common::math::{is_valid_depth, sat};
 use crate::common::tables::sd_jitter;
 use crate::glam::{IVec2, UVec2, Vec2, Vec3};
+use crate::svao::pass1::{combine, depth_point_value};
 use crate::svao::{Refine, SvaoFrame, SvaoParams, sd_pixel};
-use crate::vao::kernel::{LineSample, PixelFrame, halo_visibility, object_z};
+use crate::vao::kernel::{LineSample, PixelFrame};
 
 /// Most layers an SD map holds (spec §2: N ∈ {1, 2, 4, 8}).
 pub const MAX_LAYERS: usize = 8;
@@ -205,8 +206,8 @@ impl Refine for SdMapRefine<'_> {
         let mut k = 0;
         while k < params.sd_layers as usize {
             let d = self.map[base + k] * (view.far - view.near) + view.near;
-            let z = object_z(frame, view.uv_to_view(uv, d));
-            v = v.min(halo_visibility(z, s, frame.radius, params.vao.thickness));
+            let (_, value) = depth_point_value(params, frame, s, view.uv_to_view(uv, d));
+            v = combine(params, v, value);
             k += 1;
         }
         v

@@ -50,7 +50,8 @@ pub struct SvaoParams {
     pub jitter: u32,
     /// Primary depth mode: 0 single depth, 1 dual depth (a depth-peeled second layer, spec §11).
     pub dual: u32,
-    pub _pad1: u32,
+    /// AO kernel: `KERNEL_VAO` (0) or `KERNEL_HBAO` (1) of `crate::vao::kernel` (spec §4.5).
+    pub kernel: u32,
     pub _pad2: u32,
 }
 

@@ -10,9 +10,11 @@ use crate::common::float_order::ordered_bits;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::math::{clamp, sat};
 use crate::common::tables::AO_SAMPLES;
+use crate::glam::Vec3;
 use crate::glam::{UVec2, Vec2};
 use crate::vao::kernel::{
-    LineSample, PixelFrame, halo_visibility, line_sample, primary_object_z, setup_pixel, unoccluded_visibility,
+    KERNEL_HBAO, LineSample, PixelFrame, halo_visibility, hbao_occlusion, line_sample_of, object_z, setup_pixel,
+    unoccluded_visibility,
 };
 
 /// Output of pass 1 for one pixel.
@@ -25,11 +27,17 @@ pub struct Pass1Pixel {
     pub mask: u32,
 }
 
-/// "Requires more depth" for VAO (spec §4.4): the depth-buffer surface lies in front of the
-/// constant area, and the sample is farther than the radius cutoff on screen.
+/// "Requires more depth" (spec §4.4): the depth-buffer surface lies in front of the constant
+/// area (VAO) or beyond `max(h, 0.1·R)` (HBAO+), and the sample is farther than the radius
+/// cutoff on screen.
 #[inline]
 pub fn needs_refinement(z: f32, s: &LineSample, frame: &PixelFrame, params: &SvaoParams) -> bool {
-    z > (1.0 + params.vao.thickness) * frame.radius && s.screen_distance > params.cutoff
+    let threshold = if params.kernel == KERNEL_HBAO {
+        s.half_chord.max(0.1 * frame.radius)
+    } else {
+        (1.0 + params.vao.thickness) * frame.radius
+    };
+    z > threshold && s.screen_distance > params.cutoff
 }
 
 /// Object-space z and visibility of sample `s` from the primary depth (spec §4.2–§4.3); with
@@ -45,20 +53,71 @@ pub fn primary_sample<G: GBuffer>(
     frame: &PixelFrame,
     s: &LineSample,
 ) -> (f32, f32) {
-    let vao = &params.vao;
-    let view = &vao.view;
-    let mut z = primary_object_z(gbuffer, view, frame, s);
-    let mut v = halo_visibility(z, s, frame.radius, vao.thickness);
+    let view = &params.vao.view;
+    let (mut z, mut v) = depth_point_value(params, frame, s, texel_point(view, gbuffer.linear_depth(s.texel), s));
     if params.dual != 0 && needs_refinement(z, s, frame, params) {
-        let mut d2 = depth2[view.index(s.texel)];
-        if !crate::common::math::is_valid_depth(d2, view.far) {
-            d2 = view.far;
-        }
-        let z2 = crate::vao::kernel::object_z(frame, view.uv_to_view(view.texel_uv(s.texel), d2));
-        v = v.min(halo_visibility(z2, s, frame.radius, vao.thickness));
+        let (z2, v2) = depth_point_value(params, frame, s, texel_point(view, depth2[view.index(s.texel)], s));
+        v = combine(params, v, v2);
         z = z.min(z2);
     }
     (z, v)
+}
+
+/// View point of the depth value `d` at the sample's raster texel (unusable depths read as far).
+#[inline]
+fn texel_point(view: &crate::common::ViewParams, d: f32, s: &LineSample) -> Vec3 {
+    let d = if crate::common::math::is_valid_depth(d, view.far) { d } else { view.far };
+    view.uv_to_view(view.texel_uv(s.texel), d)
+}
+
+/// Object-space z of a view point `d` and its per-sample value under the kernel: VAO
+/// visibility (spec §4.3) or HBAO+ occlusion (spec §4.5, unclamped radius in the falloff).
+#[inline]
+pub fn depth_point_value(params: &SvaoParams, frame: &PixelFrame, s: &LineSample, d: Vec3) -> (f32, f32) {
+    let z = object_z(frame, d);
+    let value = if params.kernel == KERNEL_HBAO {
+        hbao_occlusion(frame, s, d, params.vao.radius)
+    } else {
+        halo_visibility(z, s, frame.radius, params.vao.thickness)
+    };
+    (z, value)
+}
+
+/// Combine two depth points' values of one sample: min of visibility (VAO, spec §4.3) or max of
+/// occlusion (HBAO+, spec §4.5).
+#[inline]
+pub fn combine(params: &SvaoParams, a: f32, b: f32) -> f32 {
+    if params.kernel == KERNEL_HBAO { a.max(b) } else { a.min(b) }
+}
+
+/// A sample's value when nothing occludes it: the visible chord (VAO) or 0 (HBAO+); used for
+/// same-pixel samples and for dropped out-of-screen ones (spec §4.2, §9).
+#[inline]
+pub fn unoccluded_value(params: &SvaoParams, s: &LineSample) -> f32 {
+    if params.kernel == KERNEL_HBAO { 0.0 } else { unoccluded_visibility(s) }
+}
+
+/// Starting value of a dropped out-of-screen sample in pass 2 (spec §9): 1 (VAO, then min with
+/// the SD values) or 0 (HBAO+, then max).
+#[inline]
+pub fn dropped_value(params: &SvaoParams) -> f32 {
+    if params.kernel == KERNEL_HBAO { 0.0 } else { 1.0 }
+}
+
+/// The pixel accumulator from the samples' values: `A = (2/8)·Σv` (VAO) or `mean = (1/8)·Σo`
+/// (HBAO+); what pass 1 stores for flagged pixels.
+#[inline]
+pub fn accumulate(params: &SvaoParams, sum: f32) -> f32 {
+    let scale = if params.kernel == KERNEL_HBAO { 1.0 } else { 2.0 };
+    scale / AO_SAMPLES as f32 * sum
+}
+
+/// Final AO from the accumulator: `sat(A)^exponent` (VAO) or `sat(1 − 2·mean)^exponent`
+/// (HBAO+, spec §4.5).
+#[inline]
+pub fn finish(params: &SvaoParams, a: f32) -> f32 {
+    let base = if params.kernel == KERNEL_HBAO { 1.0 - 2.0 * a } else { a };
+    sat(base).powf(params.vao.exponent)
 }
 
 /// SD texel of an (unsnapped, unclamped) uv: `clamp(floor(uv·L) + sg, 0, L + 2sg − 1)` per axis
@@ -99,10 +158,10 @@ pub fn pass1_pixel<G: GBuffer, A: AtomicU32Buffer, B: AtomicU32Buffer>(
     let mut mask = 0u32;
     let mut i = 0;
     while i < AO_SAMPLES {
-        let s = line_sample(&frame, view, i);
+        let s = line_sample_of(&frame, view, i, params.kernel);
         if s.valid {
             if s.same_pixel {
-                sum += unoccluded_visibility(&s);
+                sum += unoccluded_value(params, &s);
             } else {
                 let (mut z, v) = primary_sample(gbuffer, depth2, params, &frame, &s);
                 sum += v;
@@ -119,7 +178,11 @@ pub fn pass1_pixel<G: GBuffer, A: AtomicU32Buffer, B: AtomicU32Buffer>(
                         let q = params.sd_index(sd_pixel(s.uv, params));
                         if params.interval != 0 {
                             // Euclidean camera distances `|P| − z` (spec §5, uncorrected).
-                            let far_end = z.min((1.0 + vao.thickness) * frame.radius + s.half_chord);
+                            let far_end = if params.kernel == KERNEL_HBAO {
+                                z.min(s.half_chord)
+                            } else {
+                                z.min((1.0 + vao.thickness) * frame.radius + s.half_chord)
+                            };
                             ray_min.atomic_min(q, ordered_bits(distance - far_end));
                             ray_max.atomic_max(q, ordered_bits(distance - s.sphere_end));
                         } else {
@@ -131,6 +194,6 @@ pub fn pass1_pixel<G: GBuffer, A: AtomicU32Buffer, B: AtomicU32Buffer>(
         }
         i += 1;
     }
-    let a = (2.0 / AO_SAMPLES as f32) * sum;
-    if mask == 0 { Pass1Pixel { ao: sat(a).powf(vao.exponent), mask } } else { Pass1Pixel { ao: unorm8(a), mask } }
+    let a = accumulate(params, sum);
+    if mask == 0 { Pass1Pixel { ao: finish(params, a), mask } } else { Pass1Pixel { ao: unorm8(a), mask } }
 }

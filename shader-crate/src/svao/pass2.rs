@@ -6,10 +6,9 @@ use spirv_std::num_traits::Float;
 
 use super::SvaoParams;
 use crate::common::gbuffer_read::GBuffer;
-use crate::common::math::sat;
 use crate::common::tables::AO_SAMPLES;
 use crate::glam::UVec2;
-use crate::vao::kernel::{LineSample, PixelFrame, line_sample, setup_pixel};
+use crate::vao::kernel::{LineSample, PixelFrame, line_sample_of, setup_pixel};
 
 /// A secondary depth source: the SD map (spec §9) or traced rays (spec §10).
 pub trait Refine {
@@ -46,15 +45,14 @@ pub fn pass2_pixel<G: GBuffer, R: Refine>(
     let mut i = 0;
     while i < AO_SAMPLES {
         if mask & (1 << i) != 0 {
-            let s = line_sample(&frame, view, i);
+            let s = line_sample_of(&frame, view, i, params.kernel);
             let (z, v) = super::primary_sample(gbuffer, depth2, params, &frame, &s);
             delta -= v;
             // Out of screen the clamped border texel is dropped (spec §9, §15.8).
-            let start = if s.in_screen { v } else { 1.0 };
+            let start = if s.in_screen { v } else { super::pass1::dropped_value(params) };
             delta += source.refine(&frame, &s, start, z);
         }
         i += 1;
     }
-    let a = stored + (2.0 / AO_SAMPLES as f32) * delta;
-    sat(a).powf(vao.exponent)
+    super::pass1::finish(params, stored + super::pass1::accumulate(params, delta))
 }

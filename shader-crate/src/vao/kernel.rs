@@ -6,7 +6,9 @@ use spirv_std::num_traits::Float;
 use crate::common::ViewParams;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::math::{clamp, is_valid_depth, sat, sign_nonzero};
-use crate::common::tables::{AO_SAMPLES, VAO_DIRECTIONS, VAO_HALF_CHORDS, VAO_RADII, rotation_sin_cos};
+use crate::common::tables::{
+    AO_SAMPLES, HBAO_HALF_CHORDS, HBAO_PDFS, HBAO_RADII, VAO_DIRECTIONS, VAO_HALF_CHORDS, VAO_RADII, rotation_sin_cos,
+};
 use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
 
 /// Push constants of the VAO pass.
@@ -111,8 +113,10 @@ pub struct LineSample {
     /// contributes 0 and is never refined. (A flag rather than `Option`: rust-gpu 0.11 cannot
     /// copy an `Option` whose payload has a `bool` niche.)
     pub valid: bool,
-    /// Sphere half-chord `h`; `pdf = 2h`.
+    /// Sphere half-chord `h`.
     pub half_chord: f32,
+    /// The sample's weight: `2h` for VAO, `0.9·(1 − ρ)^1.5` for HBAO+ (spec §4.2, §4.5).
+    pub pdf: f32,
     /// Hemisphere-clipped chord end (in object-space z, towards the camera is positive).
     pub sphere_end: f32,
     /// View-space sample point `S = P + t·o.x + b·o.y` on the disc.
@@ -135,12 +139,28 @@ fn non_zero(x: f32) -> f32 {
     sign_nonzero(x) * x.abs().max(1.0e-4)
 }
 
-/// Build sample `i` (spec §4.2).
+/// The VAO kernel (spec §4.2–§4.3).
+pub const KERNEL_VAO: u32 = 0;
+/// The HBAO+ kernel (spec §4.5).
+pub const KERNEL_HBAO: u32 = 1;
+
+/// Build VAO sample `i` (spec §4.2).
 #[inline]
 pub fn line_sample(frame: &PixelFrame, view: &ViewParams, i: u32) -> LineSample {
+    line_sample_of(frame, view, i, KERNEL_VAO)
+}
+
+/// Build sample `i` of `kernel` ([`KERNEL_VAO`] or [`KERNEL_HBAO`]): the kernels share the
+/// frame, disc directions, hemisphere clipping, validity and projection, and differ in the
+/// radii and weights (spec §4.5).
+#[inline]
+pub fn line_sample_of(frame: &PixelFrame, view: &ViewParams, i: u32, kernel: u32) -> LineSample {
     let dir = VAO_DIRECTIONS[i as usize];
-    let offset = VAO_RADII[i as usize] * frame.radius * vec2(dir[0], dir[1]);
-    let half_chord = VAO_HALF_CHORDS[i as usize] * frame.radius;
+    let hbao = kernel == KERNEL_HBAO;
+    let rho = if hbao { HBAO_RADII[i as usize] } else { VAO_RADII[i as usize] };
+    let offset = rho * frame.radius * vec2(dir[0], dir[1]);
+    let half_chord = if hbao { HBAO_HALF_CHORDS[i as usize] } else { VAO_HALF_CHORDS[i as usize] } * frame.radius;
+    let pdf = if hbao { HBAO_PDFS[i as usize] } else { 2.0 * half_chord };
     let zc = -offset.dot(vec2(frame.normal_sphere.x, frame.normal_sphere.y)) * frame.inv_normal_z;
     let sphere_end = clamp(zc, -half_chord, half_chord);
     // (h − end)/(2h) > 0.1, without the division.
@@ -153,7 +173,7 @@ pub fn line_sample(frame: &PixelFrame, view: &ViewParams, i: u32) -> LineSample 
     // Spec §4.2 tests |uv − uvR| < 0.9/res on both axes; both are texel centres, so this holds
     // exactly when the raster sample's texel is the shaded pixel.
     let same_pixel = texel.x == frame.pixel.x && texel.y == frame.pixel.y;
-    LineSample { valid, half_chord, sphere_end, point: s, uv, texel, in_screen, screen_distance, same_pixel }
+    LineSample { valid, half_chord, pdf, sphere_end, point: s, uv, texel, in_screen, screen_distance, same_pixel }
 }
 
 /// Object-space z of a view point: `oz(D) = dot(D − P, n̂)` (spec §1; larger = closer to the camera).
@@ -171,6 +191,20 @@ pub fn halo_visibility(z: f32, s: &LineSample, radius: f32, thickness: f32) -> f
     let inside = (h - s.sphere_end.max(z)).max(0.0);
     let halo = sat((z - (1.0 + thickness) * radius) * inv_h) * (h - s.sphere_end);
     (inside + halo) * (0.5 * inv_h)
+}
+
+/// HBAO+ occlusion of one depth point `d` (view space) for sample `s` (spec §4.5):
+/// `V = D − P`, `k = sat(N·V/|V| − 0.1)·sat(1 − |V|²/R_g²)` with the UNCLAMPED radius `R_g`,
+/// `o = sat(k/pdf)`. Points combine by max; 0 = unoccluded.
+#[inline]
+pub fn hbao_occlusion(frame: &PixelFrame, s: &LineSample, d: Vec3, unclamped_radius: f32) -> f32 {
+    let v = d - frame.position;
+    let len2 = v.dot(v);
+    if len2 <= 0.0 {
+        return 0.0;
+    }
+    let k = sat(frame.normal.dot(v) / len2.sqrt() - 0.1) * sat(1.0 - len2 / (unclamped_radius * unclamped_radius));
+    sat(k / s.pdf)
 }
 
 /// Visibility of a sample whose raster position falls into the shaded pixel: fully visible,
