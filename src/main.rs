@@ -33,6 +33,9 @@ enum Command {
     Compare(CompareArgs),
     /// Time a technique over K frames after a warm-up: median/min/max per pass, Mpixel/s.
     Bench(BenchArgs),
+    /// The scaling study: the scene instanced 1, 4, 16, 64 times on a grid (same camera), per-pass
+    /// times of VAO, Ray-SD and the raster SD map.
+    Scaling(ScalingArgs),
     /// Print the Vulkan device aokit would use and its ray-tracing extensions.
     Info {
         /// Enable the Khronos validation layer.
@@ -151,6 +154,9 @@ struct TechniqueArgs {
     /// Minimum separation of the peeled second layer (world units).
     #[arg(long, default_value_t = 0.01)]
     peel_separation: f32,
+    /// SD map of raysd: ray-traced, or the raster coverage-mask baseline (= --technique sdsvao).
+    #[arg(long, value_enum, default_value = "ray")]
+    sd_source: SdSource,
     /// AO kernel of vao/raysd: VAO's halo model or HBAO+ (radius × 1.5, spec §4.5).
     #[arg(long, value_enum, default_value = "vao")]
     kernel: Kernel,
@@ -214,6 +220,12 @@ struct TechniqueArgs {
     /// Hybrid AO: XeGTAO denoise passes afterwards.
     #[arg(long, default_value_t = 3)]
     hybrid_denoise: u32,
+}
+
+#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
+enum SdSource {
+    Ray,
+    Raster,
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -295,6 +307,7 @@ impl TechniqueArgs {
             dual: self.primary == Primary::Dual,
             peel_separation: self.peel_separation,
             hbao: self.kernel == Kernel::Hbao,
+            raster: self.sd_source == SdSource::Raster,
         };
         o.validate()?;
         if self.spp == 0 {
@@ -338,7 +351,7 @@ struct RenderArgs {
     frame: FrameArgs,
     #[command(flatten)]
     options: TechniqueArgs,
-    /// vao, hbao, raysd, hbao-sd, raysvao, gtao, raymarch, hybrid or groundtruth.
+    /// vao, hbao, raysd, hbao-sd, sdsvao, raysvao, gtao, raymarch, hybrid or groundtruth.
     #[arg(long, default_value = "vao")]
     technique: String,
     /// Skip the bilateral blur.
@@ -390,6 +403,26 @@ struct BenchArgs {
     /// Untimed warm-up frames.
     #[arg(long, default_value_t = 2)]
     warmup: u32,
+    /// Write the results as JSON here.
+    #[arg(long)]
+    json: Option<PathBuf>,
+}
+
+#[derive(clap::Args)]
+struct ScalingArgs {
+    #[command(flatten)]
+    frame: FrameArgs,
+    #[command(flatten)]
+    options: TechniqueArgs,
+    /// Instance counts (squares).
+    #[arg(long, default_value = "1,4,16,64")]
+    copies: String,
+    /// Techniques to time.
+    #[arg(long, default_value = "vao,raysd,sdsvao")]
+    techniques: String,
+    /// Timed frames per point after one warm-up frame.
+    #[arg(long, default_value_t = 3)]
+    frames: u32,
     /// Write the results as JSON here.
     #[arg(long)]
     json: Option<PathBuf>,
@@ -580,12 +613,67 @@ fn bench(args: BenchArgs) -> Result<(), String> {
     Ok(())
 }
 
+fn scaling(args: ScalingArgs) -> Result<(), String> {
+    let copies: Vec<u32> = args
+        .copies
+        .split(',')
+        .map(|c| c.trim().parse::<u32>().map_err(|e| format!("--copies '{c}': {e}")))
+        .collect::<Result<_, _>>()?;
+    let techniques = args.techniques.split(',').map(|n| args.options.technique(n)).collect::<Result<Vec<_>, _>>()?;
+    if args.frames == 0 {
+        return Err("--frames must be at least 1".into());
+    }
+    let (scene, frame) = resolve(&args.frame)?;
+    let mut rows = Vec::new();
+    println!("{:>6} {:>10} {:<10} {:>10}  passes (median ms)", "copies", "triangles", "technique", "total ms");
+    for &k in &copies {
+        let big = scene.instanced_grid(k)?;
+        let renderer = renderer(&args.frame, &big)?;
+        let (gbuffer, _) = renderer.gbuffer(&big, &frame, &aokit_cpu::no_progress).map_err(|e| e.to_string())?;
+        for t in &techniques {
+            let mut frames = Vec::new();
+            for i in 0..=args.frames {
+                let run =
+                    renderer.run(&big, &frame, &gbuffer, t, &aokit_cpu::no_progress).map_err(|e| e.to_string())?;
+                if i > 0 {
+                    frames.push(run.passes.into_iter().filter(|p| p.0 != "accel_build").collect::<Vec<_>>());
+                }
+            }
+            let stats = BenchResult::new(&frames, frame.inner);
+            let total = stats.passes.iter().find(|p| p.0 == "total").map_or(0.0, |p| p.1);
+            let passes: Vec<_> =
+                stats.passes.iter().filter(|p| p.0 != "total").map(|p| format!("{} {:.1}", p.0, p.1)).collect();
+            println!(
+                "{k:>6} {:>10} {:<10} {total:>10.1}  {}",
+                big.triangles.len(),
+                t.label(&SdOptions::default()),
+                passes.join(", ")
+            );
+            rows.push(serde_json::json!({
+                "copies": k, "triangles": big.triangles.len(), "technique": t.name(), "options": t.describe(),
+                "passes": stats.json(), "total_ms": total,
+            }));
+        }
+        check_validation(&renderer)?;
+    }
+    let json = serde_json::json!({
+        "scene": scene.name, "backend": format!("{:?}", args.frame.backend).to_lowercase(),
+        "width": frame.inner.x, "height": frame.inner.y, "frames": args.frames, "results": rows,
+    });
+    if let Some(path) = &args.json {
+        std::fs::write(path, serde_json::to_string_pretty(&json).expect("serializable"))
+            .map_err(|e| format!("{}: {e}", path.display()))?;
+    }
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Render(args) => render(args),
         Command::Compare(args) => compare(args),
         Command::Bench(args) => bench(args),
+        Command::Scaling(args) => scaling(args),
         Command::Info { validation } => {
             aokit_vulkan::Gpu::new(&GpuOptions { validation }).map_err(|e| e.to_string()).map(|gpu| {
                 let info = gpu.info();

@@ -11,7 +11,7 @@ use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
 use aokit_shaders::svao::{Secondary, SvaoFrame};
 use aokit_vulkan::{
     Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, GroundTruthPipeline, GtaoOutput, GtaoPasses, RasterGBuffer,
-    SceneAccel, ScreenPasses, ScreenRayOutput, SsaoPipelines, SvaoPipelines,
+    RasterSdInput, RasterSdPass, SceneAccel, ScreenPasses, ScreenRayOutput, SsaoPipelines, SvaoPipelines,
 };
 use std::time::Instant;
 
@@ -148,6 +148,7 @@ pub struct VulkanRenderer {
     svao: std::cell::OnceCell<SvaoPipelines>,
     gtao_passes: std::cell::OnceCell<GtaoPasses>,
     ssao_pipelines: std::cell::OnceCell<SsaoPipelines>,
+    raster_sd: std::cell::OnceCell<RasterSdPass>,
     /// `(scene key, acceleration structure)` of the last scene traced.
     accel: std::cell::RefCell<Option<(usize, SceneAccel)>>,
 }
@@ -164,6 +165,7 @@ impl VulkanRenderer {
             svao: Default::default(),
             gtao_passes: Default::default(),
             ssao_pipelines: Default::default(),
+            raster_sd: Default::default(),
             accel: Default::default(),
         })
     }
@@ -280,6 +282,9 @@ impl Drop for VulkanRenderer {
         if let Some(p) = self.ssao_pipelines.take() {
             p.destroy(&self.gpu);
         }
+        if let Some(p) = self.raster_sd.take() {
+            p.destroy(&self.gpu);
+        }
         if let Some((_, a)) = self.accel.take() {
             a.destroy(&self.gpu);
         }
@@ -355,16 +360,33 @@ impl CpuRenderer {
                 });
                 let pass1 = pass1.expect("pass 1 ran");
                 let mut map = None;
-                timed("sd_map", &mut || {
-                    let order = svao_cpu::HitOrder::Traversal;
-                    map = Some(svao_cpu::run_sd_map(&self.bvh, &self.surfaces(), &svao, depth, normals, &pass1, order))
-                });
-                let map = map.expect("SD map traced");
+                if sd.raster {
+                    timed("sd_map_raster", &mut || {
+                        map = Some(svao_cpu::run_raster_sd_map(&self.bvh, &self.surfaces(), &svao, depth, &pass1))
+                    });
+                } else {
+                    timed("sd_map", &mut || {
+                        let order = svao_cpu::HitOrder::Traversal;
+                        map = Some(svao_cpu::run_sd_map(
+                            &self.bvh,
+                            &self.surfaces(),
+                            &svao,
+                            depth,
+                            normals,
+                            &pass1,
+                            order,
+                        ))
+                    });
+                }
+                let map = map.expect("SD map made");
                 timed("ao_pass2", &mut || {
                     ao = svao_cpu::run_pass2_sd(&svao.params, depth, normals, depth2, &pass1, &map)
                 });
                 rays = map.rays;
-                interval_sum = Some(svao_cpu::sd_ray_stats(&svao, depth, normals, &pass1.ray_min, &pass1.ray_max).1);
+                if !sd.raster {
+                    interval_sum =
+                        Some(svao_cpu::sd_ray_stats(&svao, depth, normals, &pass1.ray_min, &pass1.ray_max).1);
+                }
                 refined_samples = pass1.refined_samples();
                 debug = Some(SvaoDebug {
                     ao_pass1: pass1.ao,
@@ -529,19 +551,20 @@ impl VulkanRenderer {
                 })
             }
             Technique::RaySd(sd) => {
-                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::StochasticDepth, sd))
+                let svao = frame.svao_frame(Secondary::StochasticDepth, sd);
+                self.run_svao(scene, frame, gbuffer, &svao, sd.raster)
             }
             Technique::RaySvao { cutoff, dual } => {
                 let options = SdOptions { cutoff: *cutoff, dual: *dual, ..Default::default() };
-                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Raytraced, &options))
+                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Raytraced, &options), false)
             }
             Technique::VaoDual { .. } => {
                 let options = SdOptions { dual: true, ..Default::default() };
-                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Disabled, &options))
+                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Disabled, &options), false)
             }
             Technique::Hbao { dual, .. } => {
                 let options = SdOptions { dual: *dual, hbao: true, ..Default::default() };
-                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Disabled, &options))
+                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Disabled, &options), false)
             }
         }
     }
@@ -590,6 +613,39 @@ impl VulkanRenderer {
         Ok(run)
     }
 
+    /// Run `f` with the raster SD pass's inputs uploaded (scene vertices, alpha masks), or with
+    /// `None` when `pass` is `None`.
+    fn with_raster_input<R>(
+        &self,
+        scene: &Scene,
+        frame: &Frame,
+        pass: Option<&RasterSdPass>,
+        f: impl FnOnce(Option<RasterSdInput>) -> Result<R, GpuError>,
+    ) -> Result<R, GpuError> {
+        let Some(pass) = pass else { return f(None) };
+        let vertices = raster_vertices(scene);
+        let masks = scene.alpha_masks();
+        let storage = ash::vk::BufferUsageFlags::STORAGE_BUFFER;
+        let mut owned = Vec::new();
+        let result = (|| {
+            owned.push(self.gpu.upload(&vertices, ash::vk::BufferUsageFlags::VERTEX_BUFFER)?);
+            owned.push(self.gpu.upload(&masks.0, storage)?);
+            owned.push(self.gpu.upload(&masks.1, storage)?);
+            f(Some(RasterSdInput {
+                pass,
+                vertices: &owned[0],
+                count: vertices.len() as u32,
+                params: frame.raster_params(),
+                headers: &owned[1],
+                texels: &owned[2],
+            }))
+        })();
+        for b in owned {
+            self.gpu.free_buffer(b);
+        }
+        result
+    }
+
     /// XeGTAO's passes on a given G-buffer (uploaded), with every intermediate buffer.
     pub fn gtao(&self, frame: &Frame, gbuffer: &GBufferImage, options: &GtaoOptions) -> Result<GtaoOutput, GpuError> {
         let passes = self.gtao_passes()?;
@@ -599,12 +655,15 @@ impl VulkanRenderer {
         })
     }
 
+    /// The stenciled pipeline on Vulkan; `raster_sd`: the SD map from the raster coverage-mask
+    /// pass instead of ray tracing.
     fn run_svao(
         &self,
         scene: &Scene,
         frame: &Frame,
         gbuffer: &GBufferImage,
         svao: &SvaoFrame,
+        raster_sd: bool,
     ) -> Result<TechniqueRun, GpuError> {
         let pipelines = match self.svao.get() {
             Some(p) => p,
@@ -614,7 +673,18 @@ impl VulkanRenderer {
             }
         };
         let params = &svao.params;
-        let traced = params.secondary != Secondary::Disabled as u32;
+        let traced = params.secondary != Secondary::Disabled as u32 && !raster_sd;
+        let raster_pass = if raster_sd {
+            Some(match self.raster_sd.get() {
+                Some(p) => p,
+                None => {
+                    let p = RasterSdPass::new(&self.gpu)?;
+                    self.raster_sd.get_or_init(|| p)
+                }
+            })
+        } else {
+            None
+        };
         let separation = SdOptions::default().peel_separation;
         // Pass 1 (and pass 2) on the uploaded G-buffer, with the depth-peeled second layer
         // rasterized against it when dual depth is on. Returns the second layer too.
@@ -635,7 +705,8 @@ impl VulkanRenderer {
                     None
                 };
                 let depth2 = peeled.as_ref().map_or(depth, |(d2, _)| d2);
-                let run = pipelines.run(&self.gpu, accel, svao, depth, normals, depth2).and_then(|out| {
+                let run = self.with_raster_input(scene, frame, raster_pass, |raster| {
+                    let out = pipelines.run(&self.gpu, accel, svao, [depth, normals, depth2], raster)?;
                     let blurred = self.screen.blur(&self.gpu, &frame.blur_params(), &out.ao, depth)?;
                     Ok((out, blurred))
                 });
@@ -664,7 +735,9 @@ impl VulkanRenderer {
         let depth2 = second.map(|(d2, _)| d2).unwrap_or_default();
         let sd = params.secondary == Secondary::StochasticDepth as u32;
         let refined_samples = out.mask.iter().map(|m| m.count_ones() as u64).sum();
-        let (rays, interval_sum) = if sd {
+        let (rays, interval_sum) = if sd && raster_sd {
+            (out.ray_max.iter().filter(|&&m| m != 0).count() as u64, None)
+        } else if sd {
             let (rays, sum) =
                 aokit_cpu::svao::sd_ray_stats(svao, &gbuffer.depth, &gbuffer.normals, &out.ray_min, &out.ray_max);
             (rays, Some(sum))

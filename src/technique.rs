@@ -37,6 +37,9 @@ pub struct SdOptions {
     /// The HBAO+ kernel instead of VAO's (spec §4.5; the radius is scaled by 1.5 as the
     /// reference's UI does: 0.2 → 0.3) [VAO].
     pub hbao: bool,
+    /// Where the SD map comes from: ray tracing (Ray-SD) or the raster coverage-mask baseline
+    /// (spec §8: no SD guard band, no jitter) [ray].
+    pub raster: bool,
 }
 
 impl Default for SdOptions {
@@ -52,6 +55,7 @@ impl Default for SdOptions {
             dual: false,
             peel_separation: 0.01,
             hbao: false,
+            raster: false,
         }
     }
 }
@@ -84,7 +88,7 @@ impl SdOptions {
             "sd_layers": self.layers, "max_count": self.max_count.max(self.layers), "cutoff": self.cutoff,
             "interval": self.interval, "jitter": format!("{:?}", self.jitter).to_lowercase(),
             "sd_guard": self.guard, "primary": if self.dual { "dual" } else { "single" },
-            "kernel": if self.hbao { "hbao" } else { "vao" },
+            "kernel": if self.hbao { "hbao" } else { "vao" }, "sd_source": if self.raster { "raster" } else { "ray" },
         })
     }
 }
@@ -272,6 +276,7 @@ impl Technique {
         match self {
             Technique::Vao | Technique::VaoDual { .. } => "vao",
             Technique::Hbao { .. } => "hbao",
+            Technique::RaySd(o) if o.raster => "sdsvao",
             Technique::RaySd(o) if o.hbao => "hbao-sd",
             Technique::RaySd(_) => "raysd",
             Technique::RaySvao { .. } => "raysvao",
@@ -322,6 +327,13 @@ impl Technique {
                     }
                 }
                 "sd-guard" => sd.guard = number("pixels")?,
+                "sd-source" => {
+                    sd.raster = match value {
+                        "raster" => true,
+                        "ray" => false,
+                        _ => return Err(bad("raster or ray")),
+                    }
+                }
                 "kernel" => {
                     sd.hbao = match value {
                         "hbao" => true,
@@ -382,6 +394,7 @@ impl Technique {
             "vao" if sd.dual => Technique::VaoDual { peel_separation: sd.peel_separation },
             "vao" => Technique::Vao,
             "raysd" | "hbao-sd" => Technique::RaySd(SdOptions { hbao: sd.hbao || name == "hbao-sd", ..sd }),
+            "sdsvao" => Technique::RaySd(SdOptions { raster: true, ..sd }),
             "raysvao" if sd.hbao => {
                 return Err("raysvao traces the VAO halo model only; the HBAO+ kernel runs as hbao or hbao-sd".into());
             }
@@ -392,7 +405,7 @@ impl Technique {
             "hybrid" => Technique::Hybrid(hybrid),
             other => {
                 return Err(format!(
-                    "unknown technique '{other}' (known: vao, hbao, raysd, hbao-sd, raysvao, gtao, raymarch, hybrid, groundtruth)"
+                    "unknown technique '{other}' (known: vao, hbao, raysd, hbao-sd, sdsvao, raysvao, gtao, raymarch, hybrid, groundtruth)"
                 ));
             }
         })
@@ -520,7 +533,9 @@ impl Frame {
     pub fn svao_frame(&self, secondary: Secondary, sd: &SdOptions) -> SvaoFrame {
         let full = self.camera.view.size();
         let is_sd = secondary == Secondary::StochasticDepth;
-        let (low, guard) = if is_sd { (sd_low_res(full, sd.divisor), sd.guard / sd.divisor) } else { (uvec2(1, 1), 0) };
+        // The raster SD map has no guard band and no jitter (spec §3, §8).
+        let guard = if sd.raster { 0 } else { sd.guard / sd.divisor };
+        let (low, guard) = if is_sd { (sd_low_res(full, sd.divisor), guard) } else { (uvec2(1, 1), 0) };
         SvaoFrame {
             camera: self.camera,
             params: SvaoParams {
@@ -533,7 +548,7 @@ impl Frame {
                 sd_low_res: low,
                 sd_layers: sd.layers,
                 max_count: sd.max_count.max(sd.layers),
-                jitter: sd.jitter as u32,
+                jitter: if sd.raster { JitterTable::None as u32 } else { sd.jitter as u32 },
                 dual: sd.dual as u32,
                 kernel: if sd.hbao { KERNEL_HBAO } else { KERNEL_VAO },
                 _pad2: 0,

@@ -177,3 +177,28 @@ fn builtin_scenes_that_need_no_download() {
     assert!(tower.triangles.len() > 500);
     assert!(builtin::find("nope").is_none());
 }
+
+/// The scaling study's instancing: `k` copies on a square grid, the original unmoved, every copy
+/// a translate of it; non-square counts are refused.
+#[test]
+fn instanced_grid_copies_the_scene() {
+    let s = aokit::scene::builtin::find("tower").unwrap().load().unwrap();
+    let n = s.triangles.len();
+    for k in [1u32, 4, 16] {
+        let g = s.instanced_grid(k).unwrap();
+        assert_eq!(g.triangles.len(), n * k as usize);
+        assert_eq!(g.triangle_materials.len(), g.triangles.len());
+        assert_eq!(g.triangle_uvs.len(), g.triangles.len());
+        // The original is one of the copies, unmoved.
+        let copy = (0..k as usize).find(|c| g.triangles[c * n] == s.triangles[0]).expect("original present");
+        assert_eq!(&g.triangles[copy * n..(copy + 1) * n], &s.triangles[..]);
+        // Copies do not overlap the original's bounds.
+        let (lo, hi) = s.bounds();
+        for c in (0..k as usize).filter(|&c| c != copy) {
+            let t = g.triangles[c * n][0];
+            let inside = t.x >= lo.x && t.x <= hi.x && t.z >= lo.z && t.z <= hi.z;
+            assert!(!inside, "copy {c} overlaps the original");
+        }
+    }
+    assert!(s.instanced_grid(3).is_err());
+}

@@ -7,8 +7,9 @@ use crate::bvh::AnyHit;
 use crate::gbuffer::Surfaces;
 use crate::{Progress, SceneBvh};
 use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
-use aokit_shaders::common::gbuffer_read::GBufferSlices;
+use aokit_shaders::common::gbuffer_read::{DepthSlice, GBufferSlices};
 use aokit_shaders::glam::{UVec2, uvec2};
+use aokit_shaders::rastersd::raster_fragment;
 use aokit_shaders::raysd::{SdMapRefine, SdPayload, reservoir_any_hit, sd_ray, store_layers};
 use aokit_shaders::raysvao::{ACCEPT, ACCEPT_AND_END, SampleRay, SampleTracer, refine_by_ray, sample_any_hit};
 use aokit_shaders::svao::{Refine, SvaoFrame, SvaoParams, pass1_pixel, pass2_pixel};
@@ -322,4 +323,55 @@ pub fn count_sample_rays(frame: &SvaoFrame, depth: &[f32], normals: &[u32], dept
             counter.1.0
         })
         .sum()
+}
+
+/// The raster SD map on the CPU (spec §8): for every requested SD texel, every surface along the
+/// ray through the texel centre (what rasterization at SD resolution produces there) becomes a
+/// fragment for the shader crate's [`raster_fragment`] — alpha test, first-layer and interval
+/// discards, coverage mask — and each covered sample keeps the nearest depth (depth test LESS).
+/// `rays` counts the texels rasterized.
+pub fn run_raster_sd_map(
+    bvh: &SceneBvh,
+    surfaces: &Surfaces,
+    frame: &SvaoFrame,
+    depth: &[f32],
+    pass1: &Pass1,
+) -> SdMap {
+    let params = &frame.params;
+    let camera = &frame.camera;
+    let sd = params.sd_size();
+    let n = params.sd_layers as usize;
+    let gbuffer = DepthSlice { depth, width: params.vao.view.size().x };
+    let texels = AtomicU64::new(0);
+    let mut layers = vec![1.0f32; (sd.x * sd.y) as usize * n];
+    layers.par_chunks_mut(sd.x as usize * n).enumerate().for_each(|(y, row)| {
+        let mut rasterized = 0;
+        for x in 0..sd.x {
+            let q = uvec2(x, y as u32);
+            let i = params.sd_index(q);
+            if pass1.ray_max[i] == 0 {
+                continue;
+            }
+            rasterized += 1;
+            let uv = (q.as_vec2() + 0.5) / params.sd_low_res.as_vec2();
+            let dir = camera.primary_ray_direction(uv);
+            let eye = camera.eye();
+            for (t, tri, b) in bvh.all_hits(eye, dir, 0.0, f32::INFINITY) {
+                if !surfaces.passes_alpha(tri, b) {
+                    continue;
+                }
+                let d = camera.linear_depth_of_hit(dir, t);
+                let pos_w = eye + dir * t;
+                let (mask, z) = raster_fragment(&gbuffer, frame, q, d, pos_w, t, pass1.ray_min[i], pass1.ray_max[i]);
+                for k in 0..n {
+                    if mask & (1 << k) != 0 {
+                        let slot = &mut row[x as usize * n + k];
+                        *slot = slot.min(z);
+                    }
+                }
+            }
+        }
+        texels.fetch_add(rasterized, Ordering::Relaxed);
+    });
+    SdMap { layers, rays: texels.into_inner() }
 }

@@ -264,7 +264,13 @@ impl Gpu {
             .vulkan_memory_model(true)
             .vulkan_memory_model_device_scope(true)
             .buffer_device_address(ray_tracing);
-        let mut f13 = vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(true);
+        // maintenance4: relaxed vertex→fragment interface matching (the raster SD fragment shader
+        // does not read the G-buffer vertex shader's normal output).
+        let mut f13_query = vk::PhysicalDeviceVulkan13Features::default();
+        let mut f2_query = vk::PhysicalDeviceFeatures2::default().push_next(&mut f13_query);
+        unsafe { instance.get_physical_device_features2(pd, &mut f2_query) };
+        let maintenance4 = f13_query.maintenance4 != 0;
+        let mut f13 = vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(true).maintenance4(maintenance4);
         let mut as_enable = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default().acceleration_structure(true);
         let mut rt_enable = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default().ray_tracing_pipeline(true);
         let rt_names = [
@@ -272,8 +278,15 @@ impl Gpu {
             khr::ray_tracing_pipeline::NAME.as_ptr(),
             khr::deferred_host_operations::NAME.as_ptr(),
         ];
-        let mut create =
-            vk::DeviceCreateInfo::default().queue_create_infos(&queues).push_next(&mut f12).push_next(&mut f13);
+        // Fragment-shader atomics: the raster SD map writes its samples with atomic min.
+        let supported = unsafe { instance.get_physical_device_features(pd) };
+        let core = vk::PhysicalDeviceFeatures::default()
+            .fragment_stores_and_atomics(supported.fragment_stores_and_atomics != 0);
+        let mut create = vk::DeviceCreateInfo::default()
+            .queue_create_infos(&queues)
+            .enabled_features(&core)
+            .push_next(&mut f12)
+            .push_next(&mut f13);
         if ray_tracing {
             create = create.enabled_extension_names(&rt_names).push_next(&mut as_enable).push_next(&mut rt_enable);
         }

@@ -424,3 +424,139 @@ impl RasterGBuffer {
         }
     }
 }
+
+/// The raster stochastic-depth pass (spec svao-raysd §8): the G-buffer's vertex shader and the
+/// coverage-mask fragment shader at SD resolution, no attachments (samples are written with
+/// atomics to a storage buffer).
+pub struct RasterSdPass {
+    pub(crate) set_layout: vk::DescriptorSetLayout,
+    layout: vk::PipelineLayout,
+    pipeline: vk::Pipeline,
+}
+
+/// Storage buffers of the raster SD fragment shader, in binding order.
+pub const RASTER_SD_BINDINGS: u32 = 7;
+
+impl RasterSdPass {
+    pub fn new(gpu: &Gpu) -> Result<Self, GpuError> {
+        let d = &gpu.device;
+        unsafe {
+            let push = [vk::PushConstantRange::default()
+                .stage_flags(vk::ShaderStageFlags::VERTEX)
+                .size(size_of::<RasterParams>() as u32)];
+            let set_layout = gpu.set_layout(&storage_bindings(RASTER_SD_BINDINGS), vk::ShaderStageFlags::FRAGMENT)?;
+            let set_layouts = [set_layout];
+            let layout = d.create_pipeline_layout(
+                &vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts).push_constant_ranges(&push),
+                None,
+            )?;
+            let vs = gpu.shader_module(modules::GBUFFER_VS)?;
+            let fs = gpu.shader_module(modules::RASTERSD_FS)?;
+            let stages = [
+                vk::PipelineShaderStageCreateInfo::default()
+                    .stage(vk::ShaderStageFlags::VERTEX)
+                    .module(vs)
+                    .name(c"gbuffer_vs"),
+                vk::PipelineShaderStageCreateInfo::default()
+                    .stage(vk::ShaderStageFlags::FRAGMENT)
+                    .module(fs)
+                    .name(c"rastersd_fs"),
+            ];
+            let bindings = [vk::VertexInputBindingDescription::default()
+                .binding(0)
+                .stride(size_of::<GBufferVertex>() as u32)
+                .input_rate(vk::VertexInputRate::VERTEX)];
+            let attributes = [
+                (0, vk::Format::R32G32B32A32_SFLOAT, 0),
+                (1, vk::Format::R32G32B32A32_SFLOAT, 16),
+                (2, vk::Format::R32G32_SFLOAT, 32),
+                (3, vk::Format::R32_UINT, 40),
+            ]
+            .map(|(location, format, offset)| {
+                vk::VertexInputAttributeDescription::default()
+                    .location(location)
+                    .binding(0)
+                    .format(format)
+                    .offset(offset)
+            });
+            let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
+                .vertex_binding_descriptions(&bindings)
+                .vertex_attribute_descriptions(&attributes);
+            let assembly =
+                vk::PipelineInputAssemblyStateCreateInfo::default().topology(vk::PrimitiveTopology::TRIANGLE_LIST);
+            let viewport = vk::PipelineViewportStateCreateInfo::default().viewport_count(1).scissor_count(1);
+            let raster = vk::PipelineRasterizationStateCreateInfo::default()
+                .polygon_mode(vk::PolygonMode::FILL)
+                .cull_mode(vk::CullModeFlags::NONE)
+                .front_face(vk::FrontFace::COUNTER_CLOCKWISE)
+                .line_width(1.0);
+            let multisample =
+                vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(vk::SampleCountFlags::TYPE_1);
+            let depth = vk::PipelineDepthStencilStateCreateInfo::default();
+            let blend = vk::PipelineColorBlendStateCreateInfo::default();
+            let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+            let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
+            let mut rendering = vk::PipelineRenderingCreateInfo::default();
+            let info = vk::GraphicsPipelineCreateInfo::default()
+                .stages(&stages)
+                .vertex_input_state(&vertex_input)
+                .input_assembly_state(&assembly)
+                .viewport_state(&viewport)
+                .rasterization_state(&raster)
+                .multisample_state(&multisample)
+                .depth_stencil_state(&depth)
+                .color_blend_state(&blend)
+                .dynamic_state(&dynamic)
+                .layout(layout)
+                .push_next(&mut rendering);
+            let created = d.create_graphics_pipelines(vk::PipelineCache::null(), &[info], None);
+            d.destroy_shader_module(vs, None);
+            d.destroy_shader_module(fs, None);
+            let pipeline = created.map_err(|(_, e)| e)?[0];
+            Ok(RasterSdPass { set_layout, layout, pipeline })
+        }
+    }
+
+    /// Record the pass over `size` SD texels: draw `count` vertices from `vertices` with
+    /// descriptor set `set` (headers, texels, frame, depth, rayMin, rayMax, SD sample bits).
+    pub(crate) fn record(
+        &self,
+        gpu: &Gpu,
+        cb: vk::CommandBuffer,
+        set: vk::DescriptorSet,
+        (vertices, count): (&Buffer, u32),
+        params: &RasterParams,
+        size: aokit_shaders::glam::UVec2,
+    ) {
+        let d = &gpu.device;
+        let extent = vk::Extent2D { width: size.x, height: size.y };
+        let area = vk::Rect2D { offset: vk::Offset2D::default(), extent };
+        unsafe {
+            d.cmd_begin_rendering(cb, &vk::RenderingInfo::default().render_area(area).layer_count(1));
+            d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, self.pipeline);
+            d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::GRAPHICS, self.layout, 0, &[set], &[]);
+            let viewport = vk::Viewport {
+                x: 0.0,
+                y: 0.0,
+                width: size.x as f32,
+                height: size.y as f32,
+                min_depth: 0.0,
+                max_depth: 1.0,
+            };
+            d.cmd_set_viewport(cb, 0, &[viewport]);
+            d.cmd_set_scissor(cb, 0, &[area]);
+            d.cmd_push_constants(cb, self.layout, vk::ShaderStageFlags::VERTEX, 0, bytemuck::bytes_of(params));
+            d.cmd_bind_vertex_buffers(cb, 0, &[vertices.raw], &[0]);
+            d.cmd_draw(cb, count, 1, 0, 0);
+            d.cmd_end_rendering(cb);
+        }
+    }
+
+    pub fn destroy(&self, gpu: &Gpu) {
+        unsafe {
+            gpu.device.destroy_pipeline(self.pipeline, None);
+            gpu.device.destroy_pipeline_layout(self.layout, None);
+            gpu.device.destroy_descriptor_set_layout(self.set_layout, None);
+        }
+    }
+}

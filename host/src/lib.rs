@@ -18,12 +18,12 @@ mod svao;
 
 pub use buffer::Buffer;
 pub use context::{DeviceInfo, Gpu, GpuOptions};
-pub use gbuffer::{GBufferVertex, RasterGBuffer};
+pub use gbuffer::{GBufferVertex, RasterGBuffer, RasterSdPass};
 pub use gtao::{GtaoOutput, GtaoPasses};
 pub use raytracing::{GroundTruthPipeline, SceneAccel};
 pub use screen::{ScreenOutput, ScreenPasses};
 pub use ssao::{ScreenRayOutput, SsaoPipelines};
-pub use svao::{SvaoOutput, SvaoPipelines};
+pub use svao::{RasterSdInput, SvaoOutput, SvaoPipelines};
 
 /// Errors of the Vulkan back-end.
 #[derive(Debug, thiserror::Error)]

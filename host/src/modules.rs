@@ -31,9 +31,10 @@ pub const GTAO_MAIN: &[u8] = spv!("gtao_main");
 pub const GTAO_DENOISE: &[u8] = spv!("gtao_denoise");
 pub const RAYMARCH_MAIN: &[u8] = spv!("raymarch_main");
 pub const HYBRID_RGEN: &[u8] = spv!("hybrid_rgen");
+pub const RASTERSD_FS: &[u8] = spv!("rastersd_fs");
 
 /// Every module by entry-point name.
-pub const ALL: [(&str, &[u8]); 22] = [
+pub const ALL: [(&str, &[u8]); 23] = [
     ("vao_main", VAO_MAIN),
     ("blur_main", BLUR_MAIN),
     ("gbuffer_vs", GBUFFER_VS),
@@ -56,6 +57,7 @@ pub const ALL: [(&str, &[u8]); 22] = [
     ("gtao_denoise", GTAO_DENOISE),
     ("raymarch_main", RAYMARCH_MAIN),
     ("hybrid_rgen", HYBRID_RGEN),
+    ("rastersd_fs", RASTERSD_FS),
 ];
 
 /// SPIR-V words of a module (validates the magic number and alignment).

@@ -99,7 +99,7 @@ pub(crate) fn memory_barrier(
 ) {
     type S = vk::PipelineStageFlags;
     type A = vk::AccessFlags;
-    let shader = S::COMPUTE_SHADER | S::RAY_TRACING_SHADER_KHR;
+    let shader = S::COMPUTE_SHADER | S::RAY_TRACING_SHADER_KHR | S::FRAGMENT_SHADER;
     let mut src_access = A::empty();
     if src.intersects(S::TRANSFER) {
         src_access |= A::TRANSFER_WRITE;

@@ -6,8 +6,9 @@
 use crate::descriptors::{Descriptor, storage_bindings};
 use crate::raytracing::{RtPipeline, SceneAccel};
 use crate::screen::{ComputeKernel, memory_barrier};
-use crate::{Buffer, Gpu, GpuError, modules};
+use crate::{Buffer, Gpu, GpuError, RasterSdPass, modules};
 use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
+use aokit_shaders::gbuffer::RasterParams;
 use aokit_shaders::svao::{Secondary, SvaoFrame};
 use ash::vk;
 
@@ -28,6 +29,18 @@ pub struct SvaoOutput {
     pub sd_map: Vec<f32>,
     /// GPU time per pass in ms.
     pub pass_ms: Vec<(&'static str, f64)>,
+}
+
+/// What the raster SD map (spec §8) draws instead of tracing SD rays.
+pub struct RasterSdInput<'a> {
+    pub pass: &'a RasterSdPass,
+    /// De-indexed scene vertices and their count.
+    pub vertices: &'a Buffer,
+    pub count: u32,
+    pub params: RasterParams,
+    /// Alpha-mask headers and texels.
+    pub headers: &'a Buffer,
+    pub texels: &'a Buffer,
 }
 
 /// Pipelines of Ray-SD and Ray-SVAO.
@@ -70,16 +83,15 @@ impl SvaoPipelines {
 
     /// Run Ray-SD (`frame.params.secondary` = StochasticDepth), Ray-SVAO (Raytraced) or pass 1
     /// alone (Disabled: plain VAO, e.g. with dual depth; `scene` unused) on a
-    /// G-buffer already on the device; `depth2` is the depth-peeled second layer (read only when
-    /// `frame.params.dual` is set; pass the depth buffer otherwise).
+    /// G-buffer already on the device: depth, normals and `depth2`, the depth-peeled second layer
+    /// (read only when `frame.params.dual` is set; pass the depth buffer otherwise).
     pub fn run(
         &self,
         gpu: &Gpu,
         scene: Option<&SceneAccel>,
         frame: &SvaoFrame,
-        depth: &Buffer,
-        normals: &Buffer,
-        depth2: &Buffer,
+        [depth, normals, depth2]: [&Buffer; 3],
+        raster: Option<RasterSdInput>,
     ) -> Result<SvaoOutput, GpuError> {
         let params = &frame.params;
         let view = &params.vao.view;
@@ -90,7 +102,7 @@ impl SvaoPipelines {
         }
         let sd = params.secondary == Secondary::StochasticDepth as u32;
         let traced = params.secondary == Secondary::Raytraced as u32;
-        let rt = if sd || traced {
+        let rt = if (sd && raster.is_none()) || traced {
             let scene = scene.ok_or_else(|| GpuError::Input("Ray-SD/Ray-SVAO need the scene's TLAS".into()))?;
             let pipeline = if sd { &self.sd_map } else { &self.sample_rays };
             let pipeline = pipeline.as_ref().ok_or_else(|| GpuError::NoDevice("ray tracing pipelines".into()))?;
@@ -122,6 +134,7 @@ impl SvaoPipelines {
             let groups = [inner.x.div_ceil(GROUP), inner.y.div_ceil(GROUP), 1];
             let d = &gpu.device;
             let mut types = storage_bindings(8);
+            types.extend(storage_bindings(crate::gbuffer::RASTER_SD_BINDINGS));
             types.extend(rt_bindings(11));
             let pool = gpu.descriptor_pool(3, &types)?;
             let queries = unsafe {
@@ -158,6 +171,26 @@ impl SvaoPipelines {
                     vk::PipelineStageFlags::TRANSFER,
                     rt_stage | vk::PipelineStageFlags::COMPUTE_SHADER,
                 );
+                if let (true, Some(r)) = (sd, &raster) {
+                    // Raster SD map (spec §8), then pass 2 as for the ray-traced one.
+                    let fragment = vk::PipelineStageFlags::FRAGMENT_SHADER;
+                    memory_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER, fragment);
+                    let buffers = [r.headers, r.texels, b(frame_buf), depth, b(ray_min), b(ray_max), b(sd_map)];
+                    let set = gpu.descriptor_set(pool, r.pass.set_layout, &buffers.map(Descriptor::Storage))?;
+                    r.pass.record(gpu, cb, set, (r.vertices, r.count), &r.params, sd_size);
+                    memory_barrier(gpu, cb, fragment, vk::PipelineStageFlags::COMPUTE_SHADER);
+                    unsafe { d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, queries, 2) };
+                    let pass2_buffers = [b(frame_buf), depth, normals, b(ao), b(mask), b(sd_map), depth2];
+                    self.pass2_sd.record(gpu, cb, pool, &pass2_buffers, &[], groups)?;
+                    memory_barrier(
+                        gpu,
+                        cb,
+                        vk::PipelineStageFlags::COMPUTE_SHADER,
+                        vk::PipelineStageFlags::TRANSFER | vk::PipelineStageFlags::COMPUTE_SHADER,
+                    );
+                    unsafe { d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 3) };
+                    return Ok(());
+                }
                 let Some((scene, pipeline)) = rt else {
                     memory_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER, vk::PipelineStageFlags::TRANSFER);
                     for q in [2, 3] {
@@ -208,7 +241,8 @@ impl SvaoPipelines {
             }
             let t = got?;
             let pass_ms = if sd {
-                vec![("ao_pass1", t[1]), ("sd_map", t[2] - t[1]), ("ao_pass2", t[3] - t[2])]
+                let map = if raster.is_some() { "sd_map_raster" } else { "sd_map" };
+                vec![("ao_pass1", t[1]), (map, t[2] - t[1]), ("ao_pass2", t[3] - t[2])]
             } else if traced {
                 vec![("ao_pass1", t[1]), ("ao_pass2_rays", t[2] - t[1])]
             } else {

@@ -20,6 +20,7 @@ pub mod gbuffer;
 pub mod groundtruth;
 pub mod gtao;
 pub mod hybrid;
+pub mod rastersd;
 pub mod raymarch;
 pub mod raysd;
 pub mod raysvao;

@@ -111,6 +111,31 @@ impl Scene {
     }
 
     /// Axis-aligned bounds `(min, max)`.
+    /// `copies` instances of the scene on a square grid in the x–z plane (the scaling study of
+    /// spec svao-raysd / issue 6): the original stays where it is, the others are shifted by
+    /// whole multiples of 1.25 × its extent, so a camera framing the original sees the same
+    /// image as long as the copies stay out of view. `copies` must be a square (1, 4, 16, 64…).
+    pub fn instanced_grid(&self, copies: u32) -> Result<Scene, String> {
+        let side = (copies as f64).sqrt().round() as i32;
+        if side < 1 || (side * side) as u32 != copies {
+            return Err(format!("{copies} copies do not form a square grid (use 1, 4, 16, 64, …)"));
+        }
+        let (lo, hi) = self.bounds();
+        let step = (hi - lo) * 1.25;
+        let mut out =
+            Scene { name: format!("{}×{copies}", self.name), materials: self.materials.clone(), ..Default::default() };
+        let start = -(side / 2);
+        for i in start..start + side {
+            for j in start..start + side {
+                let offset = Vec3::new(i as f32 * step.x, 0.0, j as f32 * step.z);
+                out.triangles.extend(self.triangles.iter().map(|t| t.map(|v| v + offset)));
+                out.triangle_materials.extend_from_slice(&self.triangle_materials);
+                out.triangle_uvs.extend_from_slice(&self.triangle_uvs);
+            }
+        }
+        Ok(out)
+    }
+
     pub fn bounds(&self) -> (Vec3, Vec3) {
         let mut lo = Vec3::splat(f32::INFINITY);
         let mut hi = Vec3::splat(f32::NEG_INFINITY);

@@ -30,3 +30,20 @@ impl GBuffer for GBufferSlices<'_> {
         decode_normal(self.normals[(p.y * self.width + p.x) as usize])
     }
 }
+
+/// Depth alone, for passes that never read normals (the raster SD map's first-layer test).
+pub struct DepthSlice<'a> {
+    pub depth: &'a [f32],
+    pub width: u32,
+}
+
+impl GBuffer for DepthSlice<'_> {
+    #[inline]
+    fn linear_depth(&self, p: UVec2) -> f32 {
+        self.depth[(p.y * self.width + p.x) as usize]
+    }
+    #[inline]
+    fn view_normal(&self, _p: UVec2) -> Vec3 {
+        Vec3::Z
+    }
+}

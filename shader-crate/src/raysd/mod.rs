@@ -122,7 +122,7 @@ impl SdRay {
 /// Bilinear linear depth at uv (clamp to edge; unusable depths read as the far plane), as the
 /// reference samples the primary depth at the SD texel centre (spec §7.1).
 #[inline]
-fn bilinear_depth<G: GBuffer>(gbuffer: &G, frame: &SvaoFrame, uv: Vec2) -> f32 {
+pub fn bilinear_depth<G: GBuffer>(gbuffer: &G, frame: &SvaoFrame, uv: Vec2) -> f32 {
     let view = &frame.params.vao.view;
     let size = view.size();
     let x = uv.x * view.res.x - 0.5;
