@@ -118,6 +118,78 @@ fn layout_barrier(
     };
 }
 
+/// A graphics pipeline drawing de-indexed [`GBufferVertex`] triangles without culling, viewport
+/// and scissor dynamic. `targets`: the G-buffer's colour formats and depth format (reverse-Z
+/// depth test, writes), or `None` for a pass without attachments (the raster SD map).
+unsafe fn graphics_pipeline(
+    d: &ash::Device,
+    layout: vk::PipelineLayout,
+    stages: &[vk::PipelineShaderStageCreateInfo],
+    targets: Option<(&[vk::Format], vk::Format)>,
+) -> Result<vk::Pipeline, GpuError> {
+    let bindings = [vk::VertexInputBindingDescription::default()
+        .binding(0)
+        .stride(size_of::<GBufferVertex>() as u32)
+        .input_rate(vk::VertexInputRate::VERTEX)];
+    // (location, format, offset) of GBufferVertex's fields.
+    let attributes = [
+        (0, vk::Format::R32G32B32A32_SFLOAT, 0),
+        (1, vk::Format::R32G32B32A32_SFLOAT, 16),
+        (2, vk::Format::R32G32_SFLOAT, 32),
+        (3, vk::Format::R32_UINT, 40),
+    ]
+    .map(|(location, format, offset)| {
+        vk::VertexInputAttributeDescription::default().location(location).binding(0).format(format).offset(offset)
+    });
+    let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
+        .vertex_binding_descriptions(&bindings)
+        .vertex_attribute_descriptions(&attributes);
+    let assembly = vk::PipelineInputAssemblyStateCreateInfo::default().topology(vk::PrimitiveTopology::TRIANGLE_LIST);
+    let viewport = vk::PipelineViewportStateCreateInfo::default().viewport_count(1).scissor_count(1);
+    // No culling: primary rays on the CPU also take the first surface whatever its winding.
+    let raster = vk::PipelineRasterizationStateCreateInfo::default()
+        .polygon_mode(vk::PolygonMode::FILL)
+        .cull_mode(vk::CullModeFlags::NONE)
+        .front_face(vk::FrontFace::COUNTER_CLOCKWISE)
+        .line_width(1.0);
+    let multisample =
+        vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(vk::SampleCountFlags::TYPE_1);
+    // Reverse-Z: nearer is greater.
+    let depth = match targets {
+        Some(_) => vk::PipelineDepthStencilStateCreateInfo::default()
+            .depth_test_enable(true)
+            .depth_write_enable(true)
+            .depth_compare_op(vk::CompareOp::GREATER),
+        None => vk::PipelineDepthStencilStateCreateInfo::default(),
+    };
+    let blend_attachments =
+        [vk::PipelineColorBlendAttachmentState::default().color_write_mask(vk::ColorComponentFlags::R); 2];
+    let colours = targets.map_or(0, |(f, _)| f.len());
+    let blend = vk::PipelineColorBlendStateCreateInfo::default().attachments(&blend_attachments[..colours]);
+    let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
+    let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
+    let mut rendering = match targets {
+        Some((formats, z)) => {
+            vk::PipelineRenderingCreateInfo::default().color_attachment_formats(formats).depth_attachment_format(z)
+        }
+        None => vk::PipelineRenderingCreateInfo::default(),
+    };
+    let info = vk::GraphicsPipelineCreateInfo::default()
+        .stages(stages)
+        .vertex_input_state(&vertex_input)
+        .input_assembly_state(&assembly)
+        .viewport_state(&viewport)
+        .rasterization_state(&raster)
+        .multisample_state(&multisample)
+        .depth_stencil_state(&depth)
+        .color_blend_state(&blend)
+        .dynamic_state(&dynamic)
+        .layout(layout)
+        .push_next(&mut rendering);
+    let created = unsafe { d.create_graphics_pipelines(vk::PipelineCache::null(), &[info], None) };
+    Ok(created.map_err(|(_, e)| e)?[0])
+}
+
 /// The raster pass's push constants are read by the vertex and (peeling) fragment shaders.
 const PUSH_STAGES: vk::ShaderStageFlags =
     vk::ShaderStageFlags::from_raw(vk::ShaderStageFlags::VERTEX.as_raw() | vk::ShaderStageFlags::FRAGMENT.as_raw());
@@ -152,84 +224,14 @@ impl RasterGBuffer {
                 ]
             };
             let (first_stages, peel_stages) = (stages(fs, c"gbuffer_fs"), stages(peel_fs, c"gbuffer_peel_fs"));
-            let bindings = [vk::VertexInputBindingDescription::default()
-                .binding(0)
-                .stride(size_of::<GBufferVertex>() as u32)
-                .input_rate(vk::VertexInputRate::VERTEX)];
-            // (location, format, offset) of GBufferVertex's fields.
-            let attributes = [
-                (0, vk::Format::R32G32B32A32_SFLOAT, 0),
-                (1, vk::Format::R32G32B32A32_SFLOAT, 16),
-                (2, vk::Format::R32G32_SFLOAT, 32),
-                (3, vk::Format::R32_UINT, 40),
-            ]
-            .map(|(location, format, offset)| {
-                vk::VertexInputAttributeDescription::default()
-                    .location(location)
-                    .binding(0)
-                    .format(format)
-                    .offset(offset)
-            });
-            let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
-                .vertex_binding_descriptions(&bindings)
-                .vertex_attribute_descriptions(&attributes);
-            let assembly =
-                vk::PipelineInputAssemblyStateCreateInfo::default().topology(vk::PrimitiveTopology::TRIANGLE_LIST);
-            let viewport = vk::PipelineViewportStateCreateInfo::default().viewport_count(1).scissor_count(1);
-            // No culling: primary rays on the CPU also take the first surface whatever its winding.
-            let raster = vk::PipelineRasterizationStateCreateInfo::default()
-                .polygon_mode(vk::PolygonMode::FILL)
-                .cull_mode(vk::CullModeFlags::NONE)
-                .front_face(vk::FrontFace::COUNTER_CLOCKWISE)
-                .line_width(1.0);
-            let multisample =
-                vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(vk::SampleCountFlags::TYPE_1);
-            // Reverse-Z: nearer is greater.
-            let depth = vk::PipelineDepthStencilStateCreateInfo::default()
-                .depth_test_enable(true)
-                .depth_write_enable(true)
-                .depth_compare_op(vk::CompareOp::GREATER);
-            let blend_attachments =
-                [vk::PipelineColorBlendAttachmentState::default().color_write_mask(vk::ColorComponentFlags::R); 2];
-            let blend = vk::PipelineColorBlendStateCreateInfo::default().attachments(&blend_attachments);
-            let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
-            let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
             let formats = [DEPTH_FORMAT, NORMAL_FORMAT];
-            let mut rendering = vk::PipelineRenderingCreateInfo::default()
-                .color_attachment_formats(&formats)
-                .depth_attachment_format(Z_FORMAT);
-            let info = vk::GraphicsPipelineCreateInfo::default()
-                .stages(&first_stages)
-                .vertex_input_state(&vertex_input)
-                .input_assembly_state(&assembly)
-                .viewport_state(&viewport)
-                .rasterization_state(&raster)
-                .multisample_state(&multisample)
-                .depth_stencil_state(&depth)
-                .color_blend_state(&blend)
-                .dynamic_state(&dynamic)
-                .layout(layout)
-                .push_next(&mut rendering);
-            let mut rendering_peel = vk::PipelineRenderingCreateInfo::default()
-                .color_attachment_formats(&formats)
-                .depth_attachment_format(Z_FORMAT);
-            let peel_info = vk::GraphicsPipelineCreateInfo::default()
-                .stages(&peel_stages)
-                .vertex_input_state(&vertex_input)
-                .input_assembly_state(&assembly)
-                .viewport_state(&viewport)
-                .rasterization_state(&raster)
-                .multisample_state(&multisample)
-                .depth_stencil_state(&depth)
-                .color_blend_state(&blend)
-                .dynamic_state(&dynamic)
-                .layout(layout)
-                .push_next(&mut rendering_peel);
-            let created = d.create_graphics_pipelines(vk::PipelineCache::null(), &[info, peel_info], None);
+            let targets = Some((&formats[..], Z_FORMAT));
+            let first = graphics_pipeline(d, layout, &first_stages, targets);
+            let peel = graphics_pipeline(d, layout, &peel_stages, targets);
             for m in [vs, fs, peel_fs] {
                 d.destroy_shader_module(m, None);
             }
-            let pipelines = created.map_err(|(_, e)| e)?;
+            let pipelines = [first?, peel?];
             Ok(RasterGBuffer { set_layout, layout, pipeline: pipelines[0], peel_pipeline: pipelines[1] })
         }
     }
@@ -462,57 +464,10 @@ impl RasterSdPass {
                     .module(fs)
                     .name(c"rastersd_fs"),
             ];
-            let bindings = [vk::VertexInputBindingDescription::default()
-                .binding(0)
-                .stride(size_of::<GBufferVertex>() as u32)
-                .input_rate(vk::VertexInputRate::VERTEX)];
-            let attributes = [
-                (0, vk::Format::R32G32B32A32_SFLOAT, 0),
-                (1, vk::Format::R32G32B32A32_SFLOAT, 16),
-                (2, vk::Format::R32G32_SFLOAT, 32),
-                (3, vk::Format::R32_UINT, 40),
-            ]
-            .map(|(location, format, offset)| {
-                vk::VertexInputAttributeDescription::default()
-                    .location(location)
-                    .binding(0)
-                    .format(format)
-                    .offset(offset)
-            });
-            let vertex_input = vk::PipelineVertexInputStateCreateInfo::default()
-                .vertex_binding_descriptions(&bindings)
-                .vertex_attribute_descriptions(&attributes);
-            let assembly =
-                vk::PipelineInputAssemblyStateCreateInfo::default().topology(vk::PrimitiveTopology::TRIANGLE_LIST);
-            let viewport = vk::PipelineViewportStateCreateInfo::default().viewport_count(1).scissor_count(1);
-            let raster = vk::PipelineRasterizationStateCreateInfo::default()
-                .polygon_mode(vk::PolygonMode::FILL)
-                .cull_mode(vk::CullModeFlags::NONE)
-                .front_face(vk::FrontFace::COUNTER_CLOCKWISE)
-                .line_width(1.0);
-            let multisample =
-                vk::PipelineMultisampleStateCreateInfo::default().rasterization_samples(vk::SampleCountFlags::TYPE_1);
-            let depth = vk::PipelineDepthStencilStateCreateInfo::default();
-            let blend = vk::PipelineColorBlendStateCreateInfo::default();
-            let dynamic_states = [vk::DynamicState::VIEWPORT, vk::DynamicState::SCISSOR];
-            let dynamic = vk::PipelineDynamicStateCreateInfo::default().dynamic_states(&dynamic_states);
-            let mut rendering = vk::PipelineRenderingCreateInfo::default();
-            let info = vk::GraphicsPipelineCreateInfo::default()
-                .stages(&stages)
-                .vertex_input_state(&vertex_input)
-                .input_assembly_state(&assembly)
-                .viewport_state(&viewport)
-                .rasterization_state(&raster)
-                .multisample_state(&multisample)
-                .depth_stencil_state(&depth)
-                .color_blend_state(&blend)
-                .dynamic_state(&dynamic)
-                .layout(layout)
-                .push_next(&mut rendering);
-            let created = d.create_graphics_pipelines(vk::PipelineCache::null(), &[info], None);
+            let created = graphics_pipeline(d, layout, &stages, None);
             d.destroy_shader_module(vs, None);
             d.destroy_shader_module(fs, None);
-            let pipeline = created.map_err(|(_, e)| e)?[0];
+            let pipeline = created?;
             Ok(RasterSdPass { set_layout, layout, pipeline })
         }
     }
