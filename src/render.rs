@@ -465,6 +465,15 @@ fn raymarch_kernel(o: &RaymarchOptions) -> Vec<aokit_shaders::glam::Vec2> {
     if o.vogel { aokit_shaders::raymarch::kernel::vogel(n) } else { aokit_shaders::raymarch::kernel::best_candidate(n) }
 }
 
+/// The pipelines in `cell`, made with `make` on first use.
+fn pipeline<T>(cell: &std::cell::OnceCell<T>, make: impl FnOnce() -> Result<T, GpuError>) -> Result<&T, GpuError> {
+    if let Some(p) = cell.get() {
+        return Ok(p);
+    }
+    let p = make()?;
+    Ok(cell.get_or_init(|| p))
+}
+
 /// Identity of a loaded scene for the acceleration-structure cache.
 fn scene_key(scene: &Scene) -> usize {
     scene.triangles.as_ptr() as usize ^ scene.triangles.len().rotate_left(32)
@@ -571,24 +580,12 @@ impl VulkanRenderer {
 
     /// The ray-marched SSAO and hybrid pipelines, made on first use.
     fn ssao(&self) -> Result<&SsaoPipelines, GpuError> {
-        Ok(match self.ssao_pipelines.get() {
-            Some(p) => p,
-            None => {
-                let p = SsaoPipelines::new(&self.gpu)?;
-                self.ssao_pipelines.get_or_init(|| p)
-            }
-        })
+        pipeline(&self.ssao_pipelines, || SsaoPipelines::new(&self.gpu))
     }
 
     /// The XeGTAO passes, made on first use.
     fn gtao_passes(&self) -> Result<&GtaoPasses, GpuError> {
-        Ok(match self.gtao_passes.get() {
-            Some(p) => p,
-            None => {
-                let p = GtaoPasses::new(&self.gpu)?;
-                self.gtao_passes.get_or_init(|| p)
-            }
-        })
+        pipeline(&self.gtao_passes, || GtaoPasses::new(&self.gpu))
     }
 
     /// A screen-ray technique's output, through XeGTAO's denoiser when `passes > 0`.
@@ -665,26 +662,11 @@ impl VulkanRenderer {
         svao: &SvaoFrame,
         raster_sd: bool,
     ) -> Result<TechniqueRun, GpuError> {
-        let pipelines = match self.svao.get() {
-            Some(p) => p,
-            None => {
-                let p = SvaoPipelines::new(&self.gpu)?;
-                self.svao.get_or_init(|| p)
-            }
-        };
+        let pipelines = pipeline(&self.svao, || SvaoPipelines::new(&self.gpu))?;
         let params = &svao.params;
         let traced = params.secondary != Secondary::Disabled as u32 && !raster_sd;
-        let raster_pass = if raster_sd {
-            Some(match self.raster_sd.get() {
-                Some(p) => p,
-                None => {
-                    let p = RasterSdPass::new(&self.gpu)?;
-                    self.raster_sd.get_or_init(|| p)
-                }
-            })
-        } else {
-            None
-        };
+        let raster_pass =
+            if raster_sd { Some(pipeline(&self.raster_sd, || RasterSdPass::new(&self.gpu))?) } else { None };
         let separation = SdOptions::default().peel_separation;
         // Pass 1 (and pass 2) on the uploaded G-buffer, with the depth-peeled second layer
         // rasterized against it when dual depth is on. Returns the second layer too.

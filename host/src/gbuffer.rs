@@ -118,6 +118,22 @@ fn layout_barrier(
     };
 }
 
+/// Viewport and scissor covering `area` (both are dynamic state of every raster pipeline here).
+unsafe fn set_viewport(d: &ash::Device, cb: vk::CommandBuffer, area: vk::Rect2D) {
+    let viewport = vk::Viewport {
+        x: 0.0,
+        y: 0.0,
+        width: area.extent.width as f32,
+        height: area.extent.height as f32,
+        min_depth: 0.0,
+        max_depth: 1.0,
+    };
+    unsafe {
+        d.cmd_set_viewport(cb, 0, &[viewport]);
+        d.cmd_set_scissor(cb, 0, &[area]);
+    }
+}
+
 /// A graphics pipeline drawing de-indexed [`GBufferVertex`] triangles without culling, viewport
 /// and scissor dynamic. `targets`: the G-buffer's colour formats and depth format (reverse-Z
 /// depth test, writes), or `None` for a pass without attachments (the raster SD map).
@@ -355,16 +371,7 @@ impl RasterGBuffer {
                 );
                 d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, pipeline);
                 d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::GRAPHICS, self.layout, 0, &[set], &[]);
-                let viewport = vk::Viewport {
-                    x: 0.0,
-                    y: 0.0,
-                    width: size.x as f32,
-                    height: size.y as f32,
-                    min_depth: 0.0,
-                    max_depth: 1.0,
-                };
-                d.cmd_set_viewport(cb, 0, &[viewport]);
-                d.cmd_set_scissor(cb, 0, &[area]);
+                set_viewport(d, cb, area);
                 d.cmd_push_constants(cb, self.layout, PUSH_STAGES, 0, bytemuck::bytes_of(params));
                 d.cmd_bind_vertex_buffers(cb, 0, &[vbuf.raw], &[0]);
                 d.cmd_draw(cb, vertices.len() as u32, 1, 0, 0);
@@ -490,16 +497,7 @@ impl RasterSdPass {
             d.cmd_begin_rendering(cb, &vk::RenderingInfo::default().render_area(area).layer_count(1));
             d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, self.pipeline);
             d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::GRAPHICS, self.layout, 0, &[set], &[]);
-            let viewport = vk::Viewport {
-                x: 0.0,
-                y: 0.0,
-                width: size.x as f32,
-                height: size.y as f32,
-                min_depth: 0.0,
-                max_depth: 1.0,
-            };
-            d.cmd_set_viewport(cb, 0, &[viewport]);
-            d.cmd_set_scissor(cb, 0, &[area]);
+            set_viewport(d, cb, area);
             d.cmd_push_constants(cb, self.layout, vk::ShaderStageFlags::VERTEX, 0, bytemuck::bytes_of(params));
             d.cmd_bind_vertex_buffers(cb, 0, &[vertices.raw], &[0]);
             d.cmd_draw(cb, count, 1, 0, 0);

@@ -171,15 +171,8 @@ impl SvaoPipelines {
                     vk::PipelineStageFlags::TRANSFER,
                     rt_stage | vk::PipelineStageFlags::COMPUTE_SHADER,
                 );
-                if let (true, Some(r)) = (sd, &raster) {
-                    // Raster SD map (spec §8), then pass 2 as for the ray-traced one.
-                    let fragment = vk::PipelineStageFlags::FRAGMENT_SHADER;
-                    memory_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER, fragment);
-                    let buffers = [r.headers, r.texels, b(frame_buf), depth, b(ray_min), b(ray_max), b(sd_map)];
-                    let set = gpu.descriptor_set(pool, r.pass.set_layout, &buffers.map(Descriptor::Storage))?;
-                    r.pass.record(gpu, cb, set, (r.vertices, r.count), &r.params, sd_size);
-                    memory_barrier(gpu, cb, fragment, vk::PipelineStageFlags::COMPUTE_SHADER);
-                    unsafe { d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, queries, 2) };
+                // AO pass 2 from the SD map (either source), then the last timestamp.
+                let record_pass2 = |cb| -> Result<(), GpuError> {
                     let pass2_buffers = [b(frame_buf), depth, normals, b(ao), b(mask), b(sd_map), depth2];
                     self.pass2_sd.record(gpu, cb, pool, &pass2_buffers, &[], groups)?;
                     memory_barrier(
@@ -189,6 +182,18 @@ impl SvaoPipelines {
                         vk::PipelineStageFlags::TRANSFER | vk::PipelineStageFlags::COMPUTE_SHADER,
                     );
                     unsafe { d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 3) };
+                    Ok(())
+                };
+                if let (true, Some(r)) = (sd, &raster) {
+                    // Raster SD map (spec §8), then pass 2 as for the ray-traced one.
+                    let fragment = vk::PipelineStageFlags::FRAGMENT_SHADER;
+                    memory_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER, fragment);
+                    let buffers = [r.headers, r.texels, b(frame_buf), depth, b(ray_min), b(ray_max), b(sd_map)];
+                    let set = gpu.descriptor_set(pool, r.pass.set_layout, &buffers.map(Descriptor::Storage))?;
+                    r.pass.record(gpu, cb, set, (r.vertices, r.count), &r.params, sd_size);
+                    memory_barrier(gpu, cb, fragment, vk::PipelineStageFlags::COMPUTE_SHADER);
+                    unsafe { d.cmd_write_timestamp(cb, vk::PipelineStageFlags::BOTTOM_OF_PIPE, queries, 2) };
+                    record_pass2(cb)?;
                     return Ok(());
                 }
                 let Some((scene, pipeline)) = rt else {
@@ -211,15 +216,7 @@ impl SvaoPipelines {
                     pipeline.record_trace(gpu, cb, set, sd_size.x, sd_size.y)?;
                     memory_barrier(gpu, cb, rt_stage, vk::PipelineStageFlags::COMPUTE_SHADER);
                     unsafe { d.cmd_write_timestamp(cb, rt_stage, queries, 2) };
-                    let pass2_buffers = [b(frame_buf), depth, normals, b(ao), b(mask), b(sd_map), depth2];
-                    self.pass2_sd.record(gpu, cb, pool, &pass2_buffers, &[], groups)?;
-                    memory_barrier(
-                        gpu,
-                        cb,
-                        vk::PipelineStageFlags::COMPUTE_SHADER,
-                        vk::PipelineStageFlags::TRANSFER | vk::PipelineStageFlags::COMPUTE_SHADER,
-                    );
-                    unsafe { d.cmd_write_timestamp(cb, vk::PipelineStageFlags::COMPUTE_SHADER, queries, 3) };
+                    record_pass2(cb)?;
                 } else {
                     descriptors.extend([b(ao), b(mask)].map(Descriptor::Storage));
                     descriptors.extend(scene.alpha_descriptors());
