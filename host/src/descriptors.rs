@@ -1,5 +1,6 @@
-//! Descriptor sets: storage buffers, plus the TLAS of the ray-tracing passes. Binding `i` of a
-//! set holds the `i`-th descriptor.
+//! Descriptor sets: storage buffers, the TLAS of the ray-tracing passes, and the engine images of
+//! the adapters (sampled images read with `OpImageFetch`, storage images). Binding `i` of a set
+//! holds the `i`-th descriptor.
 
 use crate::{Buffer, Gpu, GpuError};
 use ash::vk;
@@ -8,13 +9,32 @@ use ash::vk;
 pub(crate) enum Descriptor<'a> {
     Storage(&'a Buffer),
     Tlas(vk::AccelerationStructureKHR),
+    /// A sampled image (no sampler) in the given layout.
+    SampledImage(vk::ImageView, vk::ImageLayout),
+    /// A storage image, in `GENERAL` layout.
+    StorageImage(vk::ImageView),
 }
 
 impl Descriptor<'_> {
-    fn ty(&self) -> vk::DescriptorType {
+    pub(crate) fn ty(&self) -> vk::DescriptorType {
         match self {
             Descriptor::Storage(_) => vk::DescriptorType::STORAGE_BUFFER,
             Descriptor::Tlas(_) => vk::DescriptorType::ACCELERATION_STRUCTURE_KHR,
+            Descriptor::SampledImage(..) => vk::DescriptorType::SAMPLED_IMAGE,
+            Descriptor::StorageImage(_) => vk::DescriptorType::STORAGE_IMAGE,
+        }
+    }
+
+    /// The image info of an image descriptor (a default one otherwise).
+    fn image_info(&self) -> vk::DescriptorImageInfo {
+        match *self {
+            Descriptor::SampledImage(view, layout) => {
+                vk::DescriptorImageInfo::default().image_view(view).image_layout(layout)
+            }
+            Descriptor::StorageImage(view) => {
+                vk::DescriptorImageInfo::default().image_view(view).image_layout(vk::ImageLayout::GENERAL)
+            }
+            _ => vk::DescriptorImageInfo::default(),
         }
     }
 }
@@ -72,14 +92,15 @@ impl Gpu {
             .iter()
             .map(|d| match d {
                 Descriptor::Storage(b) => [vk::DescriptorBufferInfo::default().buffer(b.raw).range(vk::WHOLE_SIZE)],
-                Descriptor::Tlas(_) => [vk::DescriptorBufferInfo::default()],
+                _ => [vk::DescriptorBufferInfo::default()],
             })
             .collect();
+        let image_infos: Vec<[vk::DescriptorImageInfo; 1]> = descriptors.iter().map(|d| [d.image_info()]).collect();
         let tlases: Vec<[vk::AccelerationStructureKHR; 1]> = descriptors
             .iter()
             .map(|d| match d {
                 Descriptor::Tlas(t) => [*t],
-                Descriptor::Storage(_) => [vk::AccelerationStructureKHR::null()],
+                _ => [vk::AccelerationStructureKHR::null()],
             })
             .collect();
         let mut tlas_writes: Vec<_> = tlases
@@ -90,14 +111,16 @@ impl Gpu {
             .iter()
             .zip(&buffer_infos)
             .zip(&mut tlas_writes)
+            .zip(&image_infos)
             .enumerate()
-            .map(|(i, ((d, buffer), tlas))| {
+            .map(|(i, (((d, buffer), tlas), image))| {
                 let write =
                     vk::WriteDescriptorSet::default().dst_set(set).dst_binding(i as u32).descriptor_type(d.ty());
                 match d {
                     Descriptor::Storage(_) => write.buffer_info(buffer),
                     // `push_next` does not set the count (lavapipe-rt.md).
                     Descriptor::Tlas(_) => write.descriptor_count(1).push_next(tlas),
+                    Descriptor::SampledImage(..) | Descriptor::StorageImage(_) => write.image_info(image),
                 }
             })
             .collect();

@@ -50,7 +50,11 @@ fn build_spirv() -> Result<(), String> {
             .release(true)
             .multimodule(true)
             .spirv_metadata(SpirvMetadata::NameVariables)
-            .capability(Capability::VulkanMemoryModelDeviceScope);
+            .capability(Capability::VulkanMemoryModelDeviceScope)
+            // The AO export's `r16f`/`r8` storage images (shader-crate `adapters`). Vulkan allows
+            // this capability unconditionally (spec appendix "Vulkan Environment for SPIR-V",
+            // capability table: VK_VERSION_1_0), so declaring it in every module costs nothing.
+            .capability(Capability::StorageImageExtendedFormats);
         if ray_tracing {
             builder = builder
                 .capability(Capability::RayTracingKHR)
