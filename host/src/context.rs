@@ -1,5 +1,6 @@
 //! Instance, device selection (discrete GPU first, lavapipe as the fallback), queue, allocator,
-//! one-shot command submission and validation-layer message capture.
+//! one-shot command submission and validation-layer message capture; or, for an engine, the
+//! same on a device the application created ([`ExternalDevice`]).
 
 use crate::GpuError;
 use ash::{ext, khr, vk};
@@ -51,20 +52,169 @@ pub(crate) struct RayTracing {
     pub pipelines: khr::ray_tracing_pipeline::Device,
 }
 
-/// An open Vulkan device with everything the passes need.
+/// A Vulkan device that the application created itself (a game engine, say), for
+/// [`Gpu::from_external`], which lists what the device must have been created with.
+///
+/// These are plain handles: dropping them destroys nothing. aokit never destroys any of them,
+/// so keep a clone (`ExternalDevice` is `Clone`, as are the ash loaders) to destroy the device
+/// and the instance yourself after dropping the [`Gpu`].
+#[derive(Clone)]
+pub struct ExternalDevice {
+    /// The loader `instance` was created from; the `Gpu` keeps it so the Vulkan library stays
+    /// loaded while it lives.
+    pub entry: ash::Entry,
+    /// The instance, created with `apiVersion` 1.3 or later (aokit cannot check this one).
+    pub instance: ash::Instance,
+    /// The physical device `device` was created on.
+    pub physical_device: vk::PhysicalDevice,
+    /// The logical device, created with the features and extensions that
+    /// [`Gpu::from_external`] lists.
+    pub device: ash::Device,
+    /// The family of `queue`: it must support compute and timestamps (`timestampValidBits > 0`),
+    /// and graphics as well for the raster passes.
+    pub queue_family_index: u32,
+    /// The queue aokit submits to. Vulkan requires host access to a queue to be externally
+    /// synchronised: while an aokit call runs, no other thread may submit to (or wait idle on)
+    /// this queue. Give aokit a queue of its own to avoid the question.
+    pub queue: vk::Queue,
+    /// Whether the device was created with the ray-tracing extensions
+    /// (`VK_KHR_acceleration_structure`, `VK_KHR_ray_tracing_pipeline`,
+    /// `VK_KHR_deferred_host_operations`) and the `accelerationStructure`,
+    /// `rayTracingPipeline` and `bufferDeviceAddress` features enabled. aokit cannot query what
+    /// was enabled, so it trusts this flag; `false` makes the `Gpu` behave as on a device without
+    /// ray tracing ([`Gpu::has_ray_tracing`] is `false`).
+    pub ray_tracing: bool,
+}
+
+/// What `Gpu::new` created besides the pool and the allocator, and so destroys on drop.
+struct OwnedDevice {
+    debug: Option<(ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>,
+}
+
+impl OwnedDevice {
+    /// Destroy `device` (once created), the messenger and `instance`.
+    unsafe fn destroy(&self, device: Option<&ash::Device>, instance: &ash::Instance) {
+        unsafe {
+            if let Some(device) = device {
+                device.destroy_device(None);
+            }
+            if let Some((loader, messenger)) = &self.debug {
+                loader.destroy_debug_utils_messenger(*messenger, None);
+            }
+            instance.destroy_instance(None);
+        }
+    }
+}
+
+/// An open Vulkan device with everything the passes need: aokit's own instance and device
+/// ([`Gpu::new`]) or the application's ([`Gpu::from_external`]).
 pub struct Gpu {
     pub(crate) ray_tracing: Option<RayTracing>,
     pub(crate) device: ash::Device,
     pub(crate) queue: vk::Queue,
+    queue_family_index: u32,
     pub(crate) pool: vk::CommandPool,
     pub(crate) allocator: ManuallyDrop<Mutex<Allocator>>,
     pub(crate) timestamp_period_ns: f32,
     info: DeviceInfo,
-    debug: Option<(ext::debug_utils::Instance, vk::DebugUtilsMessengerEXT)>,
+    /// `Some` when `Gpu::new` created the instance and device (and destroys them), `None` for an
+    /// [`ExternalDevice`].
+    owned: Option<OwnedDevice>,
     /// Validation warnings and errors; boxed so the callback's pointer stays valid.
     messages: Box<Mutex<Vec<String>>>,
     instance: ash::Instance,
     _entry: ash::Entry,
+}
+
+/// What aokit reads from a physical device: the same for a device it opens and an external one.
+struct DeviceProbe {
+    info: DeviceInfo,
+    timestamp_period_ns: f32,
+    /// The ray-tracing limits, when the physical device has everything the ray-traced passes
+    /// need: the extensions and the `accelerationStructure`, `rayTracingPipeline` and
+    /// `bufferDeviceAddress` features.
+    ray_tracing: Option<RayTracingLimits>,
+}
+
+impl DeviceProbe {
+    fn new(instance: &ash::Instance, pd: vk::PhysicalDevice) -> Result<DeviceProbe, GpuError> {
+        let props = unsafe { instance.get_physical_device_properties(pd) };
+        let available = unsafe { instance.enumerate_device_extension_properties(pd)? };
+        let has = |name: &CStr| available.iter().any(|e| e.extension_name_as_c_str() == Ok(name));
+        let info = DeviceInfo {
+            name: props.device_name_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
+            device_type: format!("{:?}", props.device_type),
+            api_version: format!(
+                "{}.{}.{}",
+                vk::api_version_major(props.api_version),
+                vk::api_version_minor(props.api_version),
+                vk::api_version_patch(props.api_version)
+            ),
+            driver_version: props.driver_version,
+            ray_tracing_extensions: RT_EXTENSIONS.iter().map(|e| (e.to_string_lossy().into_owned(), has(e))).collect(),
+        };
+        // Ray tracing (pipelines + acceleration structures) when the device has all of it.
+        let mut as_features = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default();
+        let mut rt_features = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default();
+        let mut f12_query = vk::PhysicalDeviceVulkan12Features::default();
+        let mut f2 = vk::PhysicalDeviceFeatures2::default()
+            .push_next(&mut as_features)
+            .push_next(&mut rt_features)
+            .push_next(&mut f12_query);
+        unsafe { instance.get_physical_device_features2(pd, &mut f2) };
+        let ray_tracing = RT_EXTENSIONS[..2].iter().chain(&RT_EXTENSIONS[3..]).all(|e| has(e))
+            && as_features.acceleration_structure != 0
+            && rt_features.ray_tracing_pipeline != 0
+            && f12_query.buffer_device_address != 0;
+        let limits = ray_tracing.then(|| {
+            let mut rt_props = vk::PhysicalDeviceRayTracingPipelinePropertiesKHR::default();
+            let mut as_props = vk::PhysicalDeviceAccelerationStructurePropertiesKHR::default();
+            let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut rt_props).push_next(&mut as_props);
+            unsafe { instance.get_physical_device_properties2(pd, &mut p2) };
+            RayTracingLimits {
+                handle_size: rt_props.shader_group_handle_size,
+                handle_alignment: rt_props.shader_group_handle_alignment,
+                base_alignment: rt_props.shader_group_base_alignment,
+                scratch_alignment: as_props.min_acceleration_structure_scratch_offset_alignment,
+            }
+        });
+        Ok(DeviceProbe { info, timestamp_period_ns: props.limits.timestamp_period, ray_tracing: limits })
+    }
+}
+
+/// The Vulkan 1.3 core support aokit looks at on a physical device.
+struct CoreSupport {
+    /// `apiVersion` ≥ 1.3.
+    vulkan_1_3: bool,
+    /// `vulkanMemoryModel` and `vulkanMemoryModelDeviceScope`: every kernel's SPIR-V uses the
+    /// Vulkan memory model (rust-gpu emits it).
+    memory_model: bool,
+    /// `dynamicRendering`: the raster passes render without render-pass objects.
+    dynamic_rendering: bool,
+    /// `maintenance4`: relaxed vertex→fragment interface matching (the raster SD fragment shader
+    /// does not read the G-buffer vertex shader's normal output).
+    maintenance4: bool,
+}
+
+impl CoreSupport {
+    fn new(instance: &ash::Instance, pd: vk::PhysicalDevice) -> CoreSupport {
+        let props = unsafe { instance.get_physical_device_properties(pd) };
+        let mut f12 = vk::PhysicalDeviceVulkan12Features::default();
+        let mut f13 = vk::PhysicalDeviceVulkan13Features::default();
+        let mut f2 = vk::PhysicalDeviceFeatures2::default().push_next(&mut f12).push_next(&mut f13);
+        unsafe { instance.get_physical_device_features2(pd, &mut f2) };
+        CoreSupport {
+            vulkan_1_3: props.api_version >= vk::API_VERSION_1_3,
+            memory_model: f12.vulkan_memory_model != 0 && f12.vulkan_memory_model_device_scope != 0,
+            dynamic_rendering: f13.dynamic_rendering != 0,
+            maintenance4: f13.maintenance4 != 0,
+        }
+    }
+}
+
+/// Does queue family `q` run the compute passes and their timestamp queries?
+fn timed_compute(q: &vk::QueueFamilyProperties) -> bool {
+    q.queue_flags.contains(vk::QueueFlags::COMPUTE) && q.timestamp_valid_bits > 0
 }
 
 unsafe extern "system" fn debug_callback(
@@ -133,144 +283,197 @@ impl Gpu {
         let instance = unsafe { entry.create_instance(&create, None)? };
         let debug = if options.validation {
             let loader = ext::debug_utils::Instance::new(&entry, &instance);
-            let messenger = unsafe { loader.create_debug_utils_messenger(&messenger_info, None)? };
-            Some((loader, messenger))
+            match unsafe { loader.create_debug_utils_messenger(&messenger_info, None) } {
+                Ok(messenger) => Some((loader, messenger)),
+                Err(e) => {
+                    unsafe { instance.destroy_instance(None) };
+                    return Err(e.into());
+                }
+            }
         } else {
             None
         };
-        match Self::open_device(&instance) {
-            Ok((physical, device, queue_family, info, timestamp_period_ns, limits)) => {
-                let queue = unsafe { device.get_device_queue(queue_family, 0) };
-                let pool = unsafe {
-                    device.create_command_pool(
-                        &vk::CommandPoolCreateInfo::default()
-                            .queue_family_index(queue_family)
-                            .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER),
-                        None,
-                    )?
-                };
-                let allocator = Allocator::new(&AllocatorCreateDesc {
-                    instance: instance.clone(),
-                    device: device.clone(),
-                    physical_device: physical,
-                    debug_settings: Default::default(),
-                    buffer_device_address: limits.is_some(),
-                    allocation_sizes: Default::default(),
-                })?;
-                let ray_tracing = limits.map(|limits| RayTracing {
-                    limits,
-                    acceleration: khr::acceleration_structure::Device::new(&instance, &device),
-                    pipelines: khr::ray_tracing_pipeline::Device::new(&instance, &device),
-                });
-                Ok(Gpu {
-                    ray_tracing,
-                    device,
-                    queue,
-                    pool,
-                    allocator: ManuallyDrop::new(Mutex::new(allocator)),
-                    timestamp_period_ns,
-                    info,
-                    debug,
-                    messages,
-                    instance,
-                    _entry: entry,
-                })
-            }
+        let owned = OwnedDevice { debug };
+        let (physical_device, device, queue_family_index, probe) = match Self::open_device(&instance) {
+            Ok(opened) => opened,
             Err(e) => {
-                unsafe {
-                    if let Some((loader, messenger)) = &debug {
-                        loader.destroy_debug_utils_messenger(*messenger, None);
-                    }
-                    instance.destroy_instance(None);
-                }
-                Err(e)
+                unsafe { owned.destroy(None, &instance) };
+                return Err(e);
             }
-        }
+        };
+        let queue = unsafe { device.get_device_queue(queue_family_index, 0) };
+        let ray_tracing = probe.ray_tracing.is_some();
+        let handles =
+            ExternalDevice { entry, instance, physical_device, device, queue_family_index, queue, ray_tracing };
+        Self::assemble(handles, probe, Some(owned), messages)
     }
 
-    #[allow(clippy::type_complexity)]
-    fn open_device(
-        instance: &ash::Instance,
-    ) -> Result<(vk::PhysicalDevice, ash::Device, u32, DeviceInfo, f32, Option<RayTracingLimits>), GpuError> {
+    /// Run aokit on a device the application created itself (an engine integration). The
+    /// `Gpu` creates its own command pool and gpu-allocator `Allocator` on `external.device`
+    /// and destroys only those; the device and the instance stay the caller's.
+    ///
+    /// # What the device must have been created with
+    ///
+    /// * Vulkan 1.3: the instance's `apiVersion` and the physical device's.
+    /// * Always: the Vulkan 1.2 features `vulkanMemoryModel` and `vulkanMemoryModelDeviceScope`
+    ///   (every kernel's SPIR-V uses the Vulkan memory model that rust-gpu emits), and a queue
+    ///   family with compute and timestamps (every pass is timed with timestamp queries). This
+    ///   is all that graphs of compute passes on [`AoContext`](crate::AoContext) need.
+    /// * For the raster passes ([`RasterGBuffer`](crate::RasterGBuffer), the raster SD map of
+    ///   sdsvao) also: a graphics queue, the Vulkan 1.3 feature
+    ///   `dynamicRendering`, the core feature `fragmentStoresAndAtomics` (the raster SD map's
+    ///   atomic min) and, where the device has it, `maintenance4` (the raster SD fragment shader
+    ///   does not read every vertex output).
+    /// * For ray tracing (`external.ray_tracing == true`): the extensions
+    ///   `VK_KHR_acceleration_structure`, `VK_KHR_ray_tracing_pipeline` and
+    ///   `VK_KHR_deferred_host_operations`, and the features `accelerationStructure`,
+    ///   `rayTracingPipeline` and `bufferDeviceAddress` (Vulkan 1.2). The allocator then
+    ///   allocates all memory with `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`.
+    ///
+    /// aokit cannot read back which features were enabled: it checks what the *physical* device
+    /// supports (a clear error when it lacks the memory model, when the queue family lacks
+    /// compute or timestamps, or when `ray_tracing` is set but the device cannot ray trace) and
+    /// trusts the caller for the rest; the validation layer reports a missing feature.
+    ///
+    /// # Rules for the caller
+    ///
+    /// * Every aokit call waits for its own submissions before returning, so nothing of aokit's
+    ///   is in flight between calls and dropping the `Gpu` does not wait for the device (that
+    ///   would stall the engine's own work). Before dropping it, free every [`Buffer`](crate::Buffer)
+    ///   and destroy every pass object made through it, and make sure none of your own pending
+    ///   command buffers still uses them.
+    /// * Drop the `Gpu` before destroying the device and the instance.
+    /// * Don't use `external.queue` from another thread while an aokit call runs (Vulkan's
+    ///   external synchronisation of queues).
+    /// * There is no debug messenger of aokit's on an external instance:
+    ///   [`Gpu::validation_messages`] is always empty; install your own messenger.
+    pub fn from_external(external: ExternalDevice) -> Result<Gpu, GpuError> {
+        let ExternalDevice { ref instance, physical_device, queue_family_index, ray_tracing, .. } = external;
+        let probe = DeviceProbe::new(instance, physical_device)?;
+        let core = CoreSupport::new(instance, physical_device);
+        let name = &probe.info.name;
+        if !core.vulkan_1_3 || !core.memory_model {
+            return Err(GpuError::NoDevice(format!(
+                "vulkanMemoryModel and vulkanMemoryModelDeviceScope: the external device '{name}' (Vulkan {}) lacks them",
+                probe.info.api_version
+            )));
+        }
+        let families = unsafe { instance.get_physical_device_queue_family_properties(physical_device) };
+        let Some(family) = families.get(queue_family_index as usize) else {
+            return Err(GpuError::Input(format!(
+                "external queue family {queue_family_index} does not exist ('{name}' has {})",
+                families.len()
+            )));
+        };
+        if !timed_compute(family) {
+            return Err(GpuError::NoDevice(format!(
+                "compute and timestamps: queue family {queue_family_index} of the external device '{name}' lacks them"
+            )));
+        }
+        if ray_tracing && probe.ray_tracing.is_none() {
+            return Err(GpuError::NoDevice(format!(
+                "ray tracing: ExternalDevice::ray_tracing is set but '{name}' lacks VK_KHR_ray_tracing_pipeline / VK_KHR_acceleration_structure / VK_KHR_deferred_host_operations / bufferDeviceAddress"
+            )));
+        }
+        Self::assemble(external, probe, None, Box::default())
+    }
+
+    /// What a `Gpu` adds to any device, its own or an external one: the command pool, the
+    /// allocator and the ray-tracing entry points (when `handles.ray_tracing`, which requires
+    /// `probe.ray_tracing`). On failure it destroys what it made and, when `owned`, the device
+    /// and the instance as well.
+    fn assemble(
+        handles: ExternalDevice,
+        probe: DeviceProbe,
+        owned: Option<OwnedDevice>,
+        messages: Box<Mutex<Vec<String>>>,
+    ) -> Result<Gpu, GpuError> {
+        let ExternalDevice { entry, instance, physical_device, device, queue_family_index, queue, ray_tracing } =
+            handles;
+        let limits = probe.ray_tracing.filter(|_| ray_tracing);
+        let fail = |e: GpuError| {
+            if let Some(owned) = &owned {
+                unsafe { owned.destroy(Some(&device), &instance) };
+            }
+            e
+        };
+        let pool = unsafe {
+            device.create_command_pool(
+                &vk::CommandPoolCreateInfo::default()
+                    .queue_family_index(queue_family_index)
+                    .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER),
+                None,
+            )
+        }
+        .map_err(|e| fail(e.into()))?;
+        let allocator = Allocator::new(&AllocatorCreateDesc {
+            instance: instance.clone(),
+            device: device.clone(),
+            physical_device,
+            debug_settings: Default::default(),
+            buffer_device_address: limits.is_some(),
+            allocation_sizes: Default::default(),
+        });
+        let allocator = match allocator {
+            Ok(a) => a,
+            Err(e) => {
+                unsafe { device.destroy_command_pool(pool, None) };
+                return Err(fail(e.into()));
+            }
+        };
+        let ray_tracing = limits.map(|limits| RayTracing {
+            limits,
+            acceleration: khr::acceleration_structure::Device::new(&instance, &device),
+            pipelines: khr::ray_tracing_pipeline::Device::new(&instance, &device),
+        });
+        Ok(Gpu {
+            ray_tracing,
+            device,
+            queue,
+            queue_family_index,
+            pool,
+            allocator: ManuallyDrop::new(Mutex::new(allocator)),
+            timestamp_period_ns: probe.timestamp_period_ns,
+            info: probe.info,
+            owned,
+            messages,
+            instance,
+            _entry: entry,
+        })
+    }
+
+    fn open_device(instance: &ash::Instance) -> Result<(vk::PhysicalDevice, ash::Device, u32, DeviceProbe), GpuError> {
         let mut candidates = Vec::new();
         for pd in unsafe { instance.enumerate_physical_devices()? } {
+            let core = CoreSupport::new(instance, pd);
+            if !core.vulkan_1_3 || !core.memory_model || !core.dynamic_rendering {
+                continue;
+            }
             let props = unsafe { instance.get_physical_device_properties(pd) };
-            if props.api_version < vk::API_VERSION_1_3 {
-                continue;
-            }
-            let mut f12 = vk::PhysicalDeviceVulkan12Features::default();
-            let mut f13 = vk::PhysicalDeviceVulkan13Features::default();
-            let mut f2 = vk::PhysicalDeviceFeatures2::default().push_next(&mut f12).push_next(&mut f13);
-            unsafe { instance.get_physical_device_features2(pd, &mut f2) };
-            if f12.vulkan_memory_model == 0 || f12.vulkan_memory_model_device_scope == 0 || f13.dynamic_rendering == 0 {
-                continue;
-            }
             let families = unsafe { instance.get_physical_device_queue_family_properties(pd) };
-            let Some(family) = families.iter().position(|q| {
-                q.queue_flags.contains(vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE) && q.timestamp_valid_bits > 0
-            }) else {
+            let Some(family) =
+                families.iter().position(|q| q.queue_flags.contains(vk::QueueFlags::GRAPHICS) && timed_compute(q))
+            else {
                 continue;
             };
-            candidates.push((device_rank(props.device_type), pd, props, family as u32));
+            candidates.push((device_rank(props.device_type), pd, core, family as u32));
         }
         candidates.sort_by_key(|c| c.0);
-        let Some(&(_, pd, props, family)) = candidates.first() else {
+        let Some((_, pd, core, family)) = candidates.into_iter().next() else {
             return Err(GpuError::NoDevice(
                 "vulkanMemoryModel, vulkanMemoryModelDeviceScope, dynamicRendering and a graphics+compute queue with timestamps".into(),
             ));
         };
-        let available = unsafe { instance.enumerate_device_extension_properties(pd)? };
-        let has = |name: &CStr| available.iter().any(|e| e.extension_name_as_c_str() == Ok(name));
-        let info = DeviceInfo {
-            name: props.device_name_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
-            device_type: format!("{:?}", props.device_type),
-            api_version: format!(
-                "{}.{}.{}",
-                vk::api_version_major(props.api_version),
-                vk::api_version_minor(props.api_version),
-                vk::api_version_patch(props.api_version)
-            ),
-            driver_version: props.driver_version,
-            ray_tracing_extensions: RT_EXTENSIONS.iter().map(|e| (e.to_string_lossy().into_owned(), has(e))).collect(),
-        };
-        // Ray tracing (pipelines + acceleration structures) when the device has all of it.
-        let mut as_features = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default();
-        let mut rt_features = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default();
-        let mut f12_query = vk::PhysicalDeviceVulkan12Features::default();
-        let mut f2 = vk::PhysicalDeviceFeatures2::default()
-            .push_next(&mut as_features)
-            .push_next(&mut rt_features)
-            .push_next(&mut f12_query);
-        unsafe { instance.get_physical_device_features2(pd, &mut f2) };
-        let ray_tracing = RT_EXTENSIONS[..2].iter().chain(&RT_EXTENSIONS[3..]).all(|e| has(e))
-            && as_features.acceleration_structure != 0
-            && rt_features.ray_tracing_pipeline != 0
-            && f12_query.buffer_device_address != 0;
-        let limits = ray_tracing.then(|| {
-            let mut rt_props = vk::PhysicalDeviceRayTracingPipelinePropertiesKHR::default();
-            let mut as_props = vk::PhysicalDeviceAccelerationStructurePropertiesKHR::default();
-            let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut rt_props).push_next(&mut as_props);
-            unsafe { instance.get_physical_device_properties2(pd, &mut p2) };
-            RayTracingLimits {
-                handle_size: rt_props.shader_group_handle_size,
-                handle_alignment: rt_props.shader_group_handle_alignment,
-                base_alignment: rt_props.shader_group_base_alignment,
-                scratch_alignment: as_props.min_acceleration_structure_scratch_offset_alignment,
-            }
-        });
+        let probe = DeviceProbe::new(instance, pd)?;
+        let ray_tracing = probe.ray_tracing.is_some();
         let priorities = [1.0];
         let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
         let mut f12 = vk::PhysicalDeviceVulkan12Features::default()
             .vulkan_memory_model(true)
             .vulkan_memory_model_device_scope(true)
             .buffer_device_address(ray_tracing);
-        // maintenance4: relaxed vertex→fragment interface matching (the raster SD fragment shader
-        // does not read the G-buffer vertex shader's normal output).
-        let mut f13_query = vk::PhysicalDeviceVulkan13Features::default();
-        let mut f2_query = vk::PhysicalDeviceFeatures2::default().push_next(&mut f13_query);
-        unsafe { instance.get_physical_device_features2(pd, &mut f2_query) };
-        let maintenance4 = f13_query.maintenance4 != 0;
-        let mut f13 = vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(true).maintenance4(maintenance4);
+        let mut f13 =
+            vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(true).maintenance4(core.maintenance4);
         let mut as_enable = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default().acceleration_structure(true);
         let mut rt_enable = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default().ray_tracing_pipeline(true);
         let rt_names = [
@@ -280,18 +483,18 @@ impl Gpu {
         ];
         // Fragment-shader atomics: the raster SD map writes its samples with atomic min.
         let supported = unsafe { instance.get_physical_device_features(pd) };
-        let core = vk::PhysicalDeviceFeatures::default()
+        let core_features = vk::PhysicalDeviceFeatures::default()
             .fragment_stores_and_atomics(supported.fragment_stores_and_atomics != 0);
         let mut create = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
-            .enabled_features(&core)
+            .enabled_features(&core_features)
             .push_next(&mut f12)
             .push_next(&mut f13);
         if ray_tracing {
             create = create.enabled_extension_names(&rt_names).push_next(&mut as_enable).push_next(&mut rt_enable);
         }
         let device = unsafe { instance.create_device(pd, &create, None)? };
-        Ok((pd, device, family, info, props.limits.timestamp_period, limits))
+        Ok((pd, device, family, probe))
     }
 
     /// Does the device run ray-tracing pipelines (`VK_KHR_ray_tracing_pipeline` and
@@ -315,7 +518,26 @@ impl Gpu {
         &self.info
     }
 
-    /// Validation-layer warnings and errors reported so far (empty without validation).
+    /// The logical device aokit runs on (its own, or the caller's for [`Gpu::from_external`]).
+    pub fn device(&self) -> &ash::Device {
+        &self.device
+    }
+
+    /// The queue family of the queue aokit submits to.
+    pub fn queue_family_index(&self) -> u32 {
+        self.queue_family_index
+    }
+
+    /// Bytes currently allocated by this `Gpu`'s gpu-allocator: the sum of its live allocations
+    /// (buffers, images, acceleration structures), not the capacity of the memory blocks they
+    /// are carved from. Flat across frames when nothing leaks.
+    pub fn allocated_bytes(&self) -> u64 {
+        self.allocator.lock().unwrap_or_else(|e| e.into_inner()).generate_report().total_allocated_bytes
+    }
+
+    /// Validation-layer warnings and errors reported so far: empty without validation, and
+    /// always empty for a [`Gpu::from_external`] device (aokit installs no messenger on the
+    /// caller's instance; install your own).
     pub fn validation_messages(&self) -> Vec<String> {
         self.messages.lock().unwrap_or_else(|e| e.into_inner()).clone()
     }
@@ -377,16 +599,19 @@ impl Gpu {
 }
 
 impl Drop for Gpu {
+    /// Destroys the allocator and the command pool, and for [`Gpu::new`] also waits for the
+    /// device and destroys the device, the messenger and the instance. An external device is
+    /// neither waited for nor destroyed (see [`Gpu::from_external`]).
     fn drop(&mut self) {
         unsafe {
-            let _ = self.device.device_wait_idle();
+            if self.owned.is_some() {
+                let _ = self.device.device_wait_idle();
+            }
             ManuallyDrop::drop(&mut self.allocator);
             self.device.destroy_command_pool(self.pool, None);
-            self.device.destroy_device(None);
-            if let Some((loader, messenger)) = &self.debug {
-                loader.destroy_debug_utils_messenger(*messenger, None);
+            if let Some(owned) = &self.owned {
+                owned.destroy(Some(&self.device), &self.instance);
             }
-            self.instance.destroy_instance(None);
         }
     }
 }
