@@ -41,7 +41,7 @@ fn kernels(c: &mut Criterion) {
         bench.iter(|| aokit_cpu::run_blur(&frame.blur_params(), &ao, &g.depth))
     });
     // Ray-SD (¼ map, N = 4): pass 1, the SD map (reservoir any-hit over the BVH), pass 2.
-    let svao = frame.svao_frame(Secondary::StochasticDepth, &SdOptions::default());
+    let svao = SdOptions::default().frame(&frame.desc(), Secondary::StochasticDepth);
     group.bench_function("svao_pass1", |bench| {
         bench.iter(|| svao_cpu::run_pass1(&svao.params, &g.depth, &g.normals, &[], &no_progress))
     });

@@ -7,6 +7,7 @@ use aokit_shaders::blur::BlurParams;
 use aokit_shaders::common::camera::Camera;
 use aokit_shaders::gbuffer::RasterParams;
 use aokit_shaders::glam::{UVec2, Vec3, uvec2, vec3};
+use aokit_shaders::graph::FrameDesc;
 use aokit_shaders::vao::VaoParams;
 
 /// How the camera is chosen.
@@ -167,28 +168,28 @@ impl Frame {
         Ok(Frame { camera, eye, target, up, fov_deg, radius, exponent: req.exponent, thickness: req.thickness, inner })
     }
 
+    /// What the techniques' graphs are built from.
+    pub fn desc(&self) -> FrameDesc {
+        FrameDesc { camera: self.camera, radius: self.radius, exponent: self.exponent, thickness: self.thickness }
+    }
+
     /// Push constants of the VAO pass (spec svao-raysd §2 defaults: 512 px screen clamp).
     pub fn vao_params(&self) -> VaoParams {
-        VaoParams {
-            view: self.camera.view,
-            radius: self.radius,
-            exponent: self.exponent,
-            thickness: self.thickness,
-            max_screen_radius: 512.0,
-        }
+        aokit_shaders::vao::settings::vao_params(&self.desc())
     }
 
-    /// Push constants of the blur (spec §12: sharpness 16).
+    /// Push constants of the horizontal blur (spec §12: sharpness 16).
     pub fn blur_params(&self) -> BlurParams {
-        BlurParams { view: self.camera.view, direction: uvec2(1, 0), sharpness: 16.0, _pad: 0 }
+        aokit_shaders::blur::graph::blur_params(&self.desc(), uvec2(1, 0))
     }
 
-    /// Push constants of the raster G-buffer pass.
-    pub fn raster_params(&self) -> RasterParams {
+    /// Push constants of the raster G-buffer pass; `peel_separation`: the minimum distance of
+    /// the depth-peeled second layer beyond the first (peeling passes only).
+    pub fn raster_params(&self, peel_separation: f32) -> RasterParams {
         RasterParams {
             world_to_view: self.camera.world_to_view,
             view: self.camera.view,
-            peel_separation: 0.01,
+            peel_separation,
             _pad0: 0,
             _pad1: 0,
             _pad2: 0,

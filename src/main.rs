@@ -7,7 +7,8 @@ use aokit::report::{BenchResult, CompareReport, CompareSetup};
 use aokit::scene::Scene;
 use aokit::scene::builtin::{self, BuiltinScene};
 use aokit::technique::{
-    GtaoOptions, GtaoPreset, HybridOptions, RaymarchOptions, SdOptions, Technique, TechniqueDefaults,
+    GroundTruthSettings, GtaoOptions, GtaoPreset, HybridOptions, RaymarchOptions, SdOptions, Technique,
+    TechniqueDefaults,
 };
 use aokit_shaders::common::tables::JitterTable;
 use aokit_shaders::glam::Vec3;
@@ -120,20 +121,21 @@ struct FrameArgs {
     validation: bool,
 }
 
-/// Options of the techniques (each applies to the techniques that have it).
+/// Options of the techniques (each applies to the techniques that have it); the numeric defaults
+/// are the settings types' own (`Default` beside the kernels).
 #[derive(clap::Args)]
 struct TechniqueArgs {
     /// Ray-SD map resolution.
     #[arg(long, value_enum, default_value = "quarter")]
     sd_res: SdRes,
     /// Ray-SD layers N (1, 2, 4, 8).
-    #[arg(long, default_value_t = 4)]
+    #[arg(long, default_value_t = SdOptions::default().layers)]
     sd_layers: u32,
     /// Reservoir MAX_COUNT (raised to N when smaller).
-    #[arg(long, default_value_t = 8)]
+    #[arg(long, default_value_t = SdOptions::default().max_count)]
     max_count: u32,
     /// Radius cutoff in pixels: closer samples are never refined (raysd, raysvao).
-    #[arg(long, default_value_t = 6.0)]
+    #[arg(long, default_value_t = SdOptions::default().cutoff)]
     cutoff: f32,
     /// Trace every SD texel over its full range (no ray-interval optimisation).
     #[arg(long)]
@@ -145,14 +147,14 @@ struct TechniqueArgs {
     #[arg(long, value_enum, default_value = "scrambled")]
     jitter: Jitter,
     /// SD guard band in full-resolution pixels.
-    #[arg(long, default_value_t = 512)]
+    #[arg(long, default_value_t = SdOptions::default().guard)]
     sd_guard: u32,
     /// Primary depth of vao/raysd/raysvao: the depth buffer, or dual depth (plus a depth-peeled
     /// second layer, spec §11).
     #[arg(long, value_enum, default_value = "single")]
     primary: Primary,
     /// Minimum separation of the peeled second layer (world units).
-    #[arg(long, default_value_t = 0.01)]
+    #[arg(long, default_value_t = SdOptions::default().peel_separation)]
     peel_separation: f32,
     /// SD map of raysd: ray-traced, or the raster coverage-mask baseline (= --technique sdsvao).
     #[arg(long, value_enum, default_value = "ray")]
@@ -161,7 +163,7 @@ struct TechniqueArgs {
     #[arg(long, value_enum, default_value = "vao")]
     kernel: Kernel,
     /// Rays per pixel of the ground truth.
-    #[arg(long, default_value_t = 512)]
+    #[arg(long, default_value_t = GroundTruthSettings::default().spp)]
     spp: u32,
     /// Ground truth with uniform instead of cosine-weighted hemisphere sampling.
     #[arg(long)]
@@ -170,37 +172,37 @@ struct TechniqueArgs {
     #[arg(long, value_enum, default_value = "high")]
     preset: Preset,
     /// XeGTAO denoise passes (0 off, 1 sharp, 2 medium, 3 soft).
-    #[arg(long, default_value_t = 1)]
+    #[arg(long, default_value_t = GtaoOptions::default().denoise_passes)]
     gtao_denoise: u32,
     /// XeGTAO RadiusMultiplier (effective radius = --radius × this).
-    #[arg(long, default_value_t = 1.457)]
+    #[arg(long, default_value_t = GtaoOptions::default().radius_multiplier)]
     gtao_radius_multiplier: f32,
     /// XeGTAO FalloffRange (fraction of the radius over which samples fade).
-    #[arg(long, default_value_t = 0.615)]
+    #[arg(long, default_value_t = GtaoOptions::default().falloff_range)]
     gtao_falloff_range: f32,
     /// XeGTAO SampleDistributionPower.
-    #[arg(long, default_value_t = 2.0)]
+    #[arg(long, default_value_t = GtaoOptions::default().sample_distribution_power)]
     gtao_sample_power: f32,
     /// XeGTAO ThinOccluderCompensation.
-    #[arg(long, default_value_t = 0.0)]
+    #[arg(long, default_value_t = GtaoOptions::default().thin_occluder_compensation)]
     gtao_thin_occluder: f32,
     /// XeGTAO FinalValuePower.
-    #[arg(long, default_value_t = 2.2)]
+    #[arg(long, default_value_t = GtaoOptions::default().final_value_power)]
     gtao_final_power: f32,
     /// XeGTAO DepthMIPSamplingOffset.
-    #[arg(long, default_value_t = 3.30)]
+    #[arg(long, default_value_t = GtaoOptions::default().depth_mip_sampling_offset)]
     gtao_mip_offset: f32,
     /// XeGTAO normals: the G-buffer's, or derived from depth (pass 0).
     #[arg(long, value_enum, default_value = "gbuffer")]
     gtao_normals: GtaoNormals,
     /// Ray-marched SSAO: directions N (the paper uses 8, 16, 24).
-    #[arg(long, default_value_t = 16)]
+    #[arg(long, default_value_t = RaymarchOptions::default().directions)]
     rm_directions: u32,
     /// Ray-marched SSAO: steps per direction.
-    #[arg(long, default_value_t = 8)]
+    #[arg(long, default_value_t = RaymarchOptions::default().steps)]
     rm_steps: u32,
     /// Ray-marched SSAO: contrast exponent α of Eq. 2.
-    #[arg(long, default_value_t = 1.0)]
+    #[arg(long, default_value_t = RaymarchOptions::default().alpha)]
     rm_alpha: f32,
     /// Ray-marched SSAO: reading of Eq. 2 (linear: visible distance / R; binary: 0 on a hit).
     #[arg(long, value_enum, default_value = "linear")]
@@ -209,7 +211,7 @@ struct TechniqueArgs {
     #[arg(long)]
     rm_vogel: bool,
     /// Ray-marched SSAO: XeGTAO denoise passes afterwards.
-    #[arg(long, default_value_t = 0)]
+    #[arg(long, default_value_t = RaymarchOptions::default().denoise_passes)]
     rm_denoise: u32,
     /// Hybrid AO: mixed (1 screen + 1 world ray), world (2 world rays), screen (2 screen rays).
     #[arg(long, value_enum, default_value = "mixed")]
@@ -218,7 +220,7 @@ struct TechniqueArgs {
     #[arg(long)]
     world_weight: Option<f32>,
     /// Hybrid AO: XeGTAO denoise passes afterwards.
-    #[arg(long, default_value_t = 3)]
+    #[arg(long, default_value_t = HybridOptions::default().denoise_passes)]
     hybrid_denoise: u32,
 }
 
@@ -270,7 +272,7 @@ enum GtaoNormals {
 impl TechniqueArgs {
     fn gtao_options(&self) -> GtaoOptions {
         GtaoOptions {
-            preset: match self.preset {
+            quality: match self.preset {
                 Preset::Low => GtaoPreset::Low,
                 Preset::Medium => GtaoPreset::Medium,
                 Preset::High => GtaoPreset::High,
@@ -504,8 +506,7 @@ fn render(args: RenderArgs) -> Result<(), String> {
     let rows = 2 * frame.camera.view.size().y as u64;
     let bar = progress_bar(format!("{} G-buffer + {}", renderer.backend_name(), technique.name()), rows);
     let progress = |n| bar.inc(n);
-    let (gbuffer, gbuffer_ms) = renderer.gbuffer(&scene, &frame, &progress).map_err(|e| e.to_string())?;
-    let run = renderer.run(&scene, &frame, &gbuffer, &technique, &progress).map_err(|e| e.to_string())?;
+    let (run, _) = renderer.frame(&scene, &frame, &technique, &progress, true).map_err(|e| e.to_string())?;
     bar.finish_and_clear();
     check_validation(&renderer)?;
     let view = frame.camera.view;
@@ -522,9 +523,10 @@ fn render(args: RenderArgs) -> Result<(), String> {
     line["options"] = technique.describe();
     line["backend"] = renderer.backend_name().into();
     line["device"] = renderer.device_name().into();
-    let mut passes = vec![("gbuffer", gbuffer_ms)];
-    passes.extend(run.passes.iter().copied());
-    line["passes_ms"] = passes_json(&passes);
+    line["passes_ms"] = passes_json(&run.passes);
+    if let Some(ms) = run.frame_ms {
+        line["frame_ms"] = ms.into();
+    }
     line["rays"] = run.rays.into();
     line["refined_samples"] = run.refined_samples.into();
     line["mean_ao"] = (ao.iter().map(|&a| a as f64).sum::<f64>() / ao.len() as f64).into();
@@ -582,14 +584,18 @@ fn bench(args: BenchArgs) -> Result<(), String> {
         .with_style(ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} frames").expect("valid template"));
     bar.set_message(format!("bench {} on {}", technique.name(), renderer.backend_name()));
     let mut frames = Vec::new();
+    // Per frame: the technique's command buffer from submit to fence, and its pass timestamps.
+    let (mut frame_ms, mut gpu_ms) = (Vec::new(), Vec::new());
     for k in 0..total {
-        let (gbuffer, gbuffer_ms) =
-            renderer.gbuffer(&scene, &frame, &aokit_cpu::no_progress).map_err(|e| e.to_string())?;
-        let run =
-            renderer.run(&scene, &frame, &gbuffer, &technique, &aokit_cpu::no_progress).map_err(|e| e.to_string())?;
+        let (run, _) =
+            renderer.frame(&scene, &frame, &technique, &aokit_cpu::no_progress, false).map_err(|e| e.to_string())?;
         if k >= args.warmup {
-            let mut passes = vec![("gbuffer", gbuffer_ms)];
-            passes.extend(run.passes.iter().copied());
+            // The acceleration structure is built once per scene, outside the frames.
+            let passes: Vec<_> = run.passes.iter().copied().filter(|p| p.0 != "accel_build").collect();
+            if let Some(ms) = run.frame_ms {
+                frame_ms.push(ms);
+                gpu_ms.push(passes.iter().map(|p| p.1).sum());
+            }
             frames.push(passes);
         }
         bar.inc(1);
@@ -603,8 +609,16 @@ fn bench(args: BenchArgs) -> Result<(), String> {
         "width": frame.inner.x, "height": frame.inner.y, "target": [frame.camera.view.res.x, frame.camera.view.res.y],
         "warmup": args.warmup, "frames": args.frames, "threads": rayon::current_num_threads(),
         "passes": result.json(),
+        "frame_ms": (!frame_ms.is_empty()).then(|| aokit::report::median(&mut frame_ms.clone())),
+        "gpu_ms": (!gpu_ms.is_empty()).then(|| aokit::report::median(&mut gpu_ms.clone())),
     });
     println!("{}", result.table());
+    if !frame_ms.is_empty() {
+        println!("{:<8} {:>10} {:>10}", "frame", "frame_ms", "gpu_ms");
+        for (i, (f, g)) in frame_ms.iter().zip(&gpu_ms).enumerate() {
+            println!("{i:<8} {f:>10.2} {g:>10.2}");
+        }
+    }
     println!("{json}");
     if let Some(path) = &args.json {
         std::fs::write(path, serde_json::to_string_pretty(&json).expect("serializable"))

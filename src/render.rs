@@ -2,17 +2,20 @@
 
 use crate::frame::Frame;
 use crate::scene::Scene;
-use crate::technique::{GtaoOptions, RaymarchOptions, SdOptions, SvaoDebug, Technique, TechniqueRun};
+use crate::technique::{GroundTruthSettings, GtaoOptions, SvaoDebug, Technique, TechniqueRun};
+use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
 use aokit_cpu::svao as svao_cpu;
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
-use aokit_shaders::gbuffer::RasterParams;
+use aokit_shaders::graph::{FrameDesc, Graph, PassKind};
 use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
 use aokit_shaders::svao::{Secondary, SvaoFrame};
+use aokit_vulkan::{AoContext, GpuInputs};
 use aokit_vulkan::{
-    Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, GroundTruthPipeline, GtaoOutput, GtaoPasses, RasterGBuffer,
-    RasterSdInput, RasterSdPass, SceneAccel, ScreenPasses, ScreenRayOutput, SsaoPipelines, SvaoPipelines,
+    Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, RasterFrame, RasterGBuffer, RasterScene, SceneAccel,
 };
+use std::cell::RefCell;
+use std::rc::Rc;
 use std::time::Instant;
 
 /// `(pass, milliseconds)` per pass.
@@ -139,33 +142,39 @@ pub fn raster_vertices(scene: &Scene) -> Vec<GBufferVertex> {
     out
 }
 
-/// The Vulkan back-end: raster G-buffer, compute VAO and blur; ray-tracing pipelines and the
-/// scene's acceleration structure are made on first use and kept.
+/// The Vulkan back-end: the raster G-buffer, and every technique's pass graph through one
+/// `AoContext` (pipelines and resources made on first use and kept); the scene's acceleration
+/// structure is built on first use and kept.
 pub struct VulkanRenderer {
-    pub gpu: Gpu,
+    pub gpu: Rc<Gpu>,
+    /// Runs the techniques' pass graphs.
+    ctx: RefCell<AoContext<Rc<Gpu>>>,
+    /// Acceleration-structure build time of the last graph frame, when it built one.
+    last_accel_build: std::cell::Cell<Option<f64>>,
+    /// Submit-to-fence wall time of the last graph frame.
+    last_frame_ms: std::cell::Cell<Option<f64>>,
+    /// `(scene key, raster resources)` of the GPU-resident frames.
+    raster_frame: RefCell<Option<(usize, RasterFrame)>>,
     raster: RasterGBuffer,
-    screen: ScreenPasses,
-    svao: std::cell::OnceCell<SvaoPipelines>,
-    gtao_passes: std::cell::OnceCell<GtaoPasses>,
-    ssao_pipelines: std::cell::OnceCell<SsaoPipelines>,
-    raster_sd: std::cell::OnceCell<RasterSdPass>,
     /// `(scene key, acceleration structure)` of the last scene traced.
     accel: std::cell::RefCell<Option<(usize, SceneAccel)>>,
 }
 
 impl VulkanRenderer {
+    pub fn gpu(&self) -> &Gpu {
+        &self.gpu
+    }
+
     pub fn new(options: &GpuOptions) -> Result<Self, GpuError> {
-        let gpu = Gpu::new(options)?;
+        let gpu = Rc::new(Gpu::new(options)?);
         let raster = RasterGBuffer::new(&gpu)?;
-        let screen = ScreenPasses::new(&gpu)?;
         Ok(VulkanRenderer {
+            ctx: RefCell::new(AoContext::new(gpu.clone())),
+            last_accel_build: Default::default(),
+            last_frame_ms: Default::default(),
+            raster_frame: Default::default(),
             gpu,
             raster,
-            screen,
-            svao: Default::default(),
-            gtao_passes: Default::default(),
-            ssao_pipelines: Default::default(),
-            raster_sd: Default::default(),
             accel: Default::default(),
         })
     }
@@ -188,7 +197,7 @@ impl VulkanRenderer {
             &self.gpu,
             &raster_vertices(scene),
             &scene.alpha_masks(),
-            &frame.raster_params(),
+            &frame.raster_params(0.0),
             None,
         )?;
         let size = frame.camera.view.size();
@@ -211,10 +220,22 @@ impl VulkanRenderer {
 
     /// VAO and blur on a given G-buffer (uploaded).
     pub fn ao(&self, frame: &Frame, gbuffer: GBufferImage) -> Result<Render, GpuError> {
-        let out = self.with_uploaded_gbuffer(&gbuffer, |depth, normals| {
-            self.screen.run(&self.gpu, &frame.vao_params(), &frame.blur_params(), depth, normals)
-        })?;
-        Ok(Render { gbuffer, ao: out.ao, ao_blurred: out.ao_blurred, passes: out.pass_ms })
+        let run = self.run_graph_without_scene(frame, &gbuffer, &Technique::Vao)?;
+        Ok(Render { gbuffer, ao: run.ao, ao_blurred: run.ao_final, passes: run.passes })
+    }
+
+    /// A technique that neither traces rays nor peels a second layer.
+    fn run_graph_without_scene(
+        &self,
+        frame: &Frame,
+        gbuffer: &GBufferImage,
+        technique: &Technique,
+    ) -> Result<TechniqueRun, GpuError> {
+        let graph = technique.graph(&frame.desc()).expect("a technique with a graph");
+        self.graph_frame(None, frame, gbuffer, technique, &graph, |ctx, passes, depth2| {
+            let read = |name: &str| ctx.download::<u32>(name).ok();
+            graph_run(&graph, passes, None, &read, gbuffer, depth2)
+        })
     }
 
     /// Upload a host G-buffer, run `pass` on its device buffers (depth, normals), free them.
@@ -235,7 +256,7 @@ impl VulkanRenderer {
     }
 
     /// Ground truth by Vulkan ray tracing on a given G-buffer (uploaded). Returns the AO
-    /// (full target) and `(pass, ms)` for the acceleration-structure build and the trace.
+    /// (full target) and `(pass, ms)` (the acceleration-structure build when it was built now).
     pub fn ground_truth(
         &self,
         scene: &Scene,
@@ -243,59 +264,42 @@ impl VulkanRenderer {
         gbuffer: &GBufferImage,
         params: &GroundTruthParams,
     ) -> Result<(Vec<f32>, PassTimes), GpuError> {
-        let pipeline = GroundTruthPipeline::new(&self.gpu)?;
-        let positions: Vec<[f32; 3]> = scene.triangles.iter().flatten().map(|v| v.to_array()).collect();
-        let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
-        let accel = SceneAccel::build(&self.gpu, &positions, &uvs, &scene.triangle_materials, &scene.alpha_masks());
-        let result = accel.and_then(|accel| {
-            let gt = GroundTruthFrame { camera: frame.camera, params: *params };
-            let traced = self
-                .with_uploaded_gbuffer(gbuffer, |depth, normals| pipeline.run(&self.gpu, &accel, &gt, depth, normals));
-            let build_ms = accel.build_ms;
-            accel.destroy(&self.gpu);
-            let (ao, ms) = traced?;
-            Ok((ao, vec![("accel_build", build_ms), ("groundtruth", ms)]))
-        });
-        pipeline.destroy(&self.gpu);
-        result
+        let settings = GroundTruthSettings { spp: params.samples, uniform: params.uniform != 0 };
+        // The given radius and exponent, not the frame's.
+        let desc = FrameDesc { radius: params.radius, exponent: params.exponent, ..frame.desc() };
+        let technique = Technique::GroundTruth { spp: settings.spp, uniform: settings.uniform };
+        let mut run = self.run_graph(scene, frame, gbuffer, &technique, &settings.graph(&desc))?;
+        if let Some(ms) = self.last_accel_build.take() {
+            run.passes.insert(0, ("accel_build", ms));
+        }
+        Ok((run.ao_final, run.passes))
     }
 
-    /// The whole pipeline, G-buffer kept on the device.
+    /// The whole pipeline (raster G-buffer, VAO, blur).
     pub fn render(&self, scene: &Scene, frame: &Frame) -> Result<Render, GpuError> {
-        let (out, gbuffer, gbuffer_ms) = self.with_raster_gbuffer(scene, frame, |depth, normals| {
-            self.screen.run(&self.gpu, &frame.vao_params(), &frame.blur_params(), depth, normals)
-        })?;
-        let mut passes = vec![("gbuffer", gbuffer_ms)];
-        passes.extend(out.pass_ms);
-        Ok(Render { gbuffer, ao: out.ao, ao_blurred: out.ao_blurred, passes })
+        let (gbuffer, gbuffer_ms) = self.gbuffer(scene, frame)?;
+        let mut r = self.ao(frame, gbuffer)?;
+        r.passes.insert(0, ("gbuffer", gbuffer_ms));
+        Ok(r)
     }
 }
 
 impl Drop for VulkanRenderer {
     fn drop(&mut self) {
-        if let Some(p) = self.svao.take() {
-            p.destroy(&self.gpu);
-        }
-        if let Some(p) = self.gtao_passes.take() {
-            p.destroy(&self.gpu);
-        }
-        if let Some(p) = self.ssao_pipelines.take() {
-            p.destroy(&self.gpu);
-        }
-        if let Some(p) = self.raster_sd.take() {
-            p.destroy(&self.gpu);
-        }
         if let Some((_, a)) = self.accel.take() {
             a.destroy(&self.gpu);
         }
+        if let Some((_, f)) = self.raster_frame.take() {
+            f.destroy(&self.gpu);
+        }
         self.raster.destroy(&self.gpu);
-        self.screen.destroy(&self.gpu);
     }
 }
 
 impl CpuRenderer {
-    /// Run `technique` on a given G-buffer (spec svao-raysd §3 pipeline for the VAO family,
-    /// blur included where the technique blurs).
+    /// Run `technique` on a given G-buffer: its pass graph through the CPU executor (the
+    /// depth-peeled second layer first where the technique reads one), or the techniques not yet
+    /// expressed as graphs directly.
     pub fn run(
         &self,
         frame: &Frame,
@@ -303,175 +307,95 @@ impl CpuRenderer {
         technique: &Technique,
         progress: Progress,
     ) -> TechniqueRun {
-        let (depth, normals) = (&gbuffer.depth[..], &gbuffer.normals[..]);
+        let graph = technique.graph(&frame.desc()).expect("every technique has a pass graph");
         let mut passes: PassTimes = Vec::new();
-        let mut rays = 0;
-        let mut refined_samples = 0;
-        let mut interval_sum = None;
-        let mut debug = None;
-        // Run `f` and record its wall time as pass `name`.
-        let mut timed = |name: &'static str, f: &mut dyn FnMut()| {
-            let t = Instant::now();
-            f();
-            passes.push((name, ms_since(t)));
-        };
-        let mut ao = Vec::new();
-        // Techniques that end in XeGTAO's denoiser put its output here; `ao` stays the raw AO.
-        let mut denoised = None;
-        // The depth-peeled second layer (spec §11) for dual-depth techniques; empty otherwise
-        // (never read then).
         let mut depth2 = Vec::new();
-        let (dual, separation) = match technique {
-            Technique::VaoDual { peel_separation } => (true, *peel_separation),
-            Technique::Hbao { dual, peel_separation } => (*dual, *peel_separation),
-            Technique::RaySd(o) => (o.dual, o.peel_separation),
-            Technique::RaySvao { dual, .. } => (*dual, SdOptions::default().peel_separation),
-            _ => (false, 0.0),
+        if let Some(separation) = technique.second_layer() {
+            let t = Instant::now();
+            depth2 = aokit_cpu::ray_cast_second_layer(&self.bvh, &self.surfaces(), &frame.camera, gbuffer, separation);
+            passes.push(("depth_peel", ms_since(t)));
+        }
+        let surfaces = self.surfaces();
+        let inputs = CpuInputs {
+            depth: &gbuffer.depth,
+            normals: &gbuffer.normals,
+            second_depth: technique.second_layer().map(|_| &depth2[..]),
+            scene: Some(CpuScene { bvh: &self.bvh, surfaces: &surfaces }),
+            progress,
         };
-        if dual {
-            timed("depth_peel", &mut || {
-                depth2 =
-                    aokit_cpu::ray_cast_second_layer(&self.bvh, &self.surfaces(), &frame.camera, gbuffer, separation)
-            });
+        let mut executor = CpuExecutor::new();
+        let stats = executor.run(&graph, &inputs).expect("the CPU executor runs every graph kernel");
+        passes.extend(stats.pass_ms);
+        let read = |name: &str| executor.words(name).map(|w| w.to_vec());
+        let mut run = graph_run(&graph, passes, Some(stats.rays), &read, gbuffer, &depth2);
+        if let Some(rays) = technique.rays(&frame.desc()) {
+            run.rays = rays;
         }
-        let depth2 = &depth2[..];
-        match technique {
-            Technique::Vao => {
-                timed("vao", &mut || ao = aokit_cpu::run_vao(&frame.vao_params(), depth, normals, progress))
-            }
-            Technique::VaoDual { .. } | Technique::Hbao { .. } => {
-                // Pass 1 without a secondary source finalizes every pixel.
-                let hbao = matches!(technique, Technique::Hbao { .. });
-                let sd = SdOptions { dual, hbao, ..Default::default() };
-                let svao = frame.svao_frame(Secondary::Disabled, &sd);
-                let name = if hbao { "hbao" } else { "vao" };
-                timed(name, &mut || ao = svao_cpu::run_pass1(&svao.params, depth, normals, depth2, progress).ao);
-            }
-            Technique::GroundTruth { spp, uniform } => {
-                let params = frame.ground_truth_params(*spp, *uniform);
-                timed("groundtruth", &mut || ao = self.ground_truth(frame, gbuffer, &params, progress).0);
-                rays = frame.inner.x as u64 * frame.inner.y as u64 * *spp as u64;
-            }
-            Technique::RaySd(sd) => {
-                let svao = frame.svao_frame(Secondary::StochasticDepth, sd);
-                let mut pass1 = None;
-                timed("ao_pass1", &mut || {
-                    pass1 = Some(svao_cpu::run_pass1(&svao.params, depth, normals, depth2, progress))
-                });
-                let pass1 = pass1.expect("pass 1 ran");
-                let mut map = None;
-                if sd.raster {
-                    timed("sd_map_raster", &mut || {
-                        map = Some(svao_cpu::run_raster_sd_map(&self.bvh, &self.surfaces(), &svao, depth, &pass1))
-                    });
-                } else {
-                    timed("sd_map", &mut || {
-                        let order = svao_cpu::HitOrder::Traversal;
-                        map = Some(svao_cpu::run_sd_map(
-                            &self.bvh,
-                            &self.surfaces(),
-                            &svao,
-                            depth,
-                            normals,
-                            &pass1,
-                            order,
-                        ))
-                    });
-                }
-                let map = map.expect("SD map made");
-                timed("ao_pass2", &mut || {
-                    ao = svao_cpu::run_pass2_sd(&svao.params, depth, normals, depth2, &pass1, &map)
-                });
-                rays = map.rays;
-                if !sd.raster {
-                    interval_sum =
-                        Some(svao_cpu::sd_ray_stats(&svao, depth, normals, &pass1.ray_min, &pass1.ray_max).1);
-                }
-                refined_samples = pass1.refined_samples();
-                debug = Some(SvaoDebug {
-                    ao_pass1: pass1.ao,
-                    mask: pass1.mask,
-                    ray_min: pass1.ray_min,
-                    ray_max: pass1.ray_max,
-                    sd_size: svao.params.sd_size(),
-                    sd_map: map.layers,
-                    layers: svao.params.sd_layers,
-                });
-            }
-            Technique::Gtao(o) => {
-                let params = frame.gtao_params(o);
-                let mut mips = Vec::new();
-                timed("gtao_prefilter", &mut || mips = aokit_cpu::gtao::run_prefilter(&params, depth));
-                let mut generated = Vec::new();
-                if o.normals_from_depth {
-                    timed("gtao_normals", &mut || generated = aokit_cpu::gtao::run_normals(&params, depth));
-                }
-                let normals = if o.normals_from_depth { &generated[..] } else { normals };
-                let (mut terms, mut edges) = (Vec::new(), Vec::new());
-                timed("gtao_main", &mut || (terms, edges) = aokit_cpu::gtao::run_main(&params, &mips, normals));
-                timed("gtao_denoise", &mut || ao = aokit_cpu::gtao::run_denoise(&params, &terms, &edges));
-            }
-            Technique::Raymarch(o) => {
-                let params = frame.raymarch_params(o);
-                let kernel = raymarch_kernel(o);
-                let (mut terms, mut edges) = (Vec::new(), Vec::new());
-                timed("raymarch", &mut || {
-                    (ao, terms, edges) = aokit_cpu::raymarch::run_raymarch(&params, depth, normals, &kernel)
-                });
-                if o.denoise_passes > 0 {
-                    let dp = frame.denoise_params(o.denoise_passes);
-                    timed("denoise", &mut || denoised = Some(aokit_cpu::gtao::run_denoise(&dp, &terms, &edges)));
-                }
-            }
-            Technique::Hybrid(o) => {
-                let hf = frame.hybrid_frame(o);
-                let (mut terms, mut edges) = (Vec::new(), Vec::new());
-                timed("hybrid_rays", &mut || {
-                    (ao, terms, edges) = aokit_cpu::hybrid::run_hybrid(&self.bvh, &self.surfaces(), &hf, depth, normals)
-                });
-                rays = (o.screen_rays + o.world_rays) as u64 * frame.inner.x as u64 * frame.inner.y as u64;
-                if o.denoise_passes > 0 {
-                    let dp = frame.denoise_params(o.denoise_passes);
-                    timed("denoise", &mut || denoised = Some(aokit_cpu::gtao::run_denoise(&dp, &terms, &edges)));
-                }
-            }
-            Technique::RaySvao { cutoff, dual } => {
-                let options = SdOptions { cutoff: *cutoff, dual: *dual, ..Default::default() };
-                let svao = frame.svao_frame(Secondary::Raytraced, &options);
-                let mut pass1 = None;
-                timed("ao_pass1", &mut || {
-                    pass1 = Some(svao_cpu::run_pass1(&svao.params, depth, normals, depth2, progress))
-                });
-                let pass1 = pass1.expect("pass 1 ran");
-                timed("ao_pass2_rays", &mut || {
-                    (ao, rays) =
-                        svao_cpu::run_raysvao_pass2(&self.bvh, &self.surfaces(), &svao, depth, normals, depth2, &pass1)
-                });
-                refined_samples = pass1.refined_samples();
-                debug = Some(SvaoDebug { ao_pass1: pass1.ao, mask: pass1.mask, ..Default::default() });
-            }
-        }
-        let mut ao_final = denoised.unwrap_or_else(|| ao.clone());
-        if technique.blurred() {
-            timed("blur", &mut || ao_final = aokit_cpu::run_blur(&frame.blur_params(), &ao, depth));
-        }
-        TechniqueRun { ao, ao_final, passes, rays, refined_samples, interval_sum, debug }
+        run
     }
 }
 
-/// The Poisson-disk kernel of a ray-marched SSAO run (spec gtao-raymarch-hybrid §3.3).
-fn raymarch_kernel(o: &RaymarchOptions) -> Vec<aokit_shaders::glam::Vec2> {
-    let n = o.directions as usize;
-    if o.vogel { aokit_shaders::raymarch::kernel::vogel(n) } else { aokit_shaders::raymarch::kernel::best_candidate(n) }
+/// A technique's result from the resources of an executed graph (`read` returns a resource's
+/// words): raw and final AO, and for the stenciled family the refinement statistics and the
+/// diagnostic buffers. `traced_rays`: the rays the executor counted, if it counts them.
+fn graph_run(
+    graph: &Graph,
+    passes: PassTimes,
+    traced_rays: Option<u64>,
+    read: &dyn Fn(&str) -> Option<Vec<u32>>,
+    gbuffer: &GBufferImage,
+    depth2: &[f32],
+) -> TechniqueRun {
+    let f32s = |name: &str| -> Vec<f32> {
+        read(name).map(|w| w.into_iter().map(f32::from_bits).collect()).unwrap_or_default()
+    };
+    let mut run = TechniqueRun::plain(f32s(graph.raw_output), f32s(graph.output), passes);
+    let Some(record) = read("svao_frame") else { return run };
+    let svao: SvaoFrame =
+        bytemuck::pod_read_unaligned(&bytemuck::cast_slice::<u32, u8>(&record)[..size_of::<SvaoFrame>()]);
+    let params = &svao.params;
+    let mask = read("refine_mask").unwrap_or_default();
+    run.refined_samples = mask.iter().map(|m| m.count_ones() as u64).sum();
+    let sd = params.secondary == Secondary::StochasticDepth as u32;
+    let (ray_min, ray_max) = (read("ray_min").unwrap_or_default(), read("ray_max").unwrap_or_default());
+    let (depth, normals) = (&gbuffer.depth[..], &gbuffer.normals[..]);
+    let raster_map = graph.passes.iter().any(|p| matches!(p.kind, PassKind::Raster { .. }));
+    if sd && raster_map {
+        // The raster map "traces" no rays: count the SD texels it was asked for.
+        run.rays = ray_max.iter().filter(|&&m| m != 0).count() as u64;
+    } else if sd {
+        let (rays, sum) = svao_cpu::sd_ray_stats(&svao, depth, normals, &ray_min, &ray_max);
+        run.rays = rays;
+        run.interval_sum = Some(sum);
+    } else if params.secondary == Secondary::Raytraced as u32 {
+        run.rays = traced_rays.filter(|&r| r > 0).unwrap_or_else(|| {
+            let depth2 = if params.dual != 0 { depth2 } else { depth };
+            svao_cpu::count_sample_rays(&svao, depth, normals, depth2, &mask)
+        });
+    }
+    run.debug = Some(SvaoDebug {
+        ao_pass1: f32s("ao_pass1"),
+        mask,
+        ray_min: if sd { ray_min } else { Vec::new() },
+        ray_max: if sd { ray_max } else { Vec::new() },
+        sd_size: params.sd_size(),
+        sd_map: f32s("sd_map"),
+        layers: params.sd_layers,
+    });
+    run
 }
 
-/// The pipelines in `cell`, made with `make` on first use.
-fn pipeline<T>(cell: &std::cell::OnceCell<T>, make: impl FnOnce() -> Result<T, GpuError>) -> Result<&T, GpuError> {
-    if let Some(p) = cell.get() {
-        return Ok(p);
-    }
-    let p = make()?;
-    Ok(cell.get_or_init(|| p))
+/// XeGTAO's buffers after one frame (host copies), for per-pass comparisons.
+pub struct GtaoOutput {
+    /// Visibility per pixel of the full target after the last denoise pass.
+    pub ao: Vec<f32>,
+    /// The packed MIP chain, the main pass's terms and edges, and (pass 0) the normals.
+    pub mips: Vec<f32>,
+    pub terms: Vec<u32>,
+    pub edges: Vec<u32>,
+    pub normals: Option<Vec<u32>>,
+    /// GPU time per pass in ms.
+    pub pass_ms: Vec<(&'static str, f64)>,
 }
 
 /// Identity of a loaded scene for the acceleration-structure cache.
@@ -505,7 +429,8 @@ impl VulkanRenderer {
         Ok((f(accel)?, built))
     }
 
-    /// Run `technique` on a given G-buffer (uploaded).
+    /// Run `technique` on a given G-buffer (uploaded): its pass graph through the context, or
+    /// the techniques without a graph directly.
     pub fn run(
         &self,
         scene: &Scene,
@@ -513,113 +438,192 @@ impl VulkanRenderer {
         gbuffer: &GBufferImage,
         technique: &Technique,
     ) -> Result<TechniqueRun, GpuError> {
-        match technique {
-            Technique::Vao => {
-                let r = self.ao(frame, gbuffer.clone())?;
-                Ok(TechniqueRun::plain(r.ao, r.ao_blurred, r.passes))
-            }
-            Technique::Gtao(o) => {
-                let out = self.gtao(frame, gbuffer, o)?;
-                Ok(TechniqueRun::plain(out.ao.clone(), out.ao, out.pass_ms))
-            }
-            Technique::Raymarch(o) => {
-                let ssao = self.ssao()?;
-                let params = frame.raymarch_params(o);
-                let out = self.with_uploaded_gbuffer(gbuffer, |depth, normals| {
-                    ssao.raymarch(&self.gpu, &params, depth, normals, &raymarch_kernel(o))
-                })?;
-                self.finish_screen_rays(frame, out, "raymarch", o.denoise_passes, 0)
-            }
-            Technique::Hybrid(o) => {
-                let ssao = self.ssao()?;
-                let hf = frame.hybrid_frame(o);
-                let (out, built) = self.with_accel(scene, |accel| {
-                    self.with_uploaded_gbuffer(gbuffer, |depth, normals| {
-                        ssao.hybrid(&self.gpu, accel, &hf, depth, normals)
-                    })
-                })?;
-                let rays = (o.screen_rays + o.world_rays) as u64 * frame.inner.x as u64 * frame.inner.y as u64;
-                let mut run = self.finish_screen_rays(frame, out, "hybrid_rays", o.denoise_passes, rays)?;
-                if let Some(ms) = built {
-                    run.passes.insert(0, ("accel_build", ms));
-                }
-                Ok(run)
-            }
-            Technique::GroundTruth { spp, uniform } => {
-                let (ao, passes) =
-                    self.ground_truth(scene, frame, gbuffer, &frame.ground_truth_params(*spp, *uniform))?;
-                let rays = frame.inner.x as u64 * frame.inner.y as u64 * *spp as u64;
-                Ok(TechniqueRun {
-                    ao: ao.clone(),
-                    ao_final: ao,
-                    passes,
-                    rays,
-                    refined_samples: 0,
-                    interval_sum: None,
-                    debug: None,
-                })
-            }
-            Technique::RaySd(sd) => {
-                let svao = frame.svao_frame(Secondary::StochasticDepth, sd);
-                self.run_svao(scene, frame, gbuffer, &svao, sd.raster)
-            }
-            Technique::RaySvao { cutoff, dual } => {
-                let options = SdOptions { cutoff: *cutoff, dual: *dual, ..Default::default() };
-                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Raytraced, &options), false)
-            }
-            Technique::VaoDual { .. } => {
-                let options = SdOptions { dual: true, ..Default::default() };
-                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Disabled, &options), false)
-            }
-            Technique::Hbao { dual, .. } => {
-                let options = SdOptions { dual: *dual, hbao: true, ..Default::default() };
-                self.run_svao(scene, frame, gbuffer, &frame.svao_frame(Secondary::Disabled, &options), false)
-            }
+        let graph = technique.graph(&frame.desc()).expect("every technique has a pass graph");
+        let mut run = self.run_graph(scene, frame, gbuffer, technique, &graph)?;
+        if let Some(ms) = self.last_accel_build.take() {
+            run.passes.insert(0, ("accel_build", ms));
         }
-    }
-
-    /// The ray-marched SSAO and hybrid pipelines, made on first use.
-    fn ssao(&self) -> Result<&SsaoPipelines, GpuError> {
-        pipeline(&self.ssao_pipelines, || SsaoPipelines::new(&self.gpu))
-    }
-
-    /// The XeGTAO passes, made on first use.
-    fn gtao_passes(&self) -> Result<&GtaoPasses, GpuError> {
-        pipeline(&self.gtao_passes, || GtaoPasses::new(&self.gpu))
-    }
-
-    /// A screen-ray technique's output, through XeGTAO's denoiser when `passes > 0`.
-    fn finish_screen_rays(
-        &self,
-        frame: &Frame,
-        out: ScreenRayOutput,
-        pass: &'static str,
-        passes: u32,
-        rays: u64,
-    ) -> Result<TechniqueRun, GpuError> {
-        let mut times = vec![(pass, out.ms)];
-        let mut ao_final = out.ao.clone();
-        if passes > 0 {
-            let (denoised, ms) =
-                self.gtao_passes()?.denoise(&self.gpu, &frame.denoise_params(passes), &out.terms, &out.edges)?;
-            times.push(("denoise", ms));
-            ao_final = denoised;
-        }
-        let mut run = TechniqueRun::plain(out.ao, ao_final, times);
-        run.rays = rays;
         Ok(run)
     }
 
-    /// Run `f` with the raster SD pass's inputs uploaded (scene vertices, alpha masks), or with
-    /// `None` when `pass` is `None`.
-    fn with_raster_input<R>(
+    /// One GPU-resident frame: the raster G-buffer (and the peeled second layer where the
+    /// technique reads one) and the technique's pass graph recorded into ONE command buffer,
+    /// submitted once; the only download is the final AO. With `details`, afterwards (outside
+    /// the frame) also the G-buffer and the graph's buffers for statistics and reports.
+    /// `TechniqueRun::frame_ms` is the wall time from submit to fence; its passes are the
+    /// timestamps of the raster passes and of the graph's passes.
+    pub fn frame(
         &self,
         scene: &Scene,
         frame: &Frame,
-        pass: Option<&RasterSdPass>,
-        f: impl FnOnce(Option<RasterSdInput>) -> Result<R, GpuError>,
+        technique: &Technique,
+        details: bool,
+    ) -> Result<(TechniqueRun, Option<GBufferImage>), GpuError> {
+        let graph = technique.graph(&frame.desc()).expect("every technique has a pass graph");
+        let key = scene_key(scene);
+        let size = frame.camera.view.size();
+        let mut cache = self.raster_frame.borrow_mut();
+        if cache.as_ref().is_none_or(|(k, f)| *k != key || f.size() != size) {
+            if let Some((_, old)) = cache.take() {
+                unsafe { self.gpu.device().device_wait_idle()? };
+                old.destroy(&self.gpu);
+            }
+            let rf = self.raster.frame_resources(&self.gpu, &raster_vertices(scene), &scene.alpha_masks(), size)?;
+            *cache = Some((key, rf));
+            self.ctx.borrow_mut().invalidate_bindings();
+        }
+        let (_, rf) = cache.as_ref().expect("made above");
+        let separation = technique.second_layer();
+        let record = |accel: Option<&SceneAccel>| -> Result<f64, GpuError> {
+            let cmd = self.gpu.begin_one_shot()?;
+            let params = frame.raster_params(separation.unwrap_or(0.0));
+            self.raster.record(&self.gpu, cmd, rf, &params, separation.is_some());
+            let (depth, normals) = rf.gbuffer();
+            let inputs = GpuInputs {
+                depth,
+                normals,
+                second_depth: separation.map(|_| rf.second_depth()),
+                scene: accel,
+                raster: Some(rf.scene()),
+            };
+            let recorded = self.ctx.borrow_mut().record(cmd, &graph, &inputs);
+            let waited = self.gpu.finish_one_shot(cmd, recorded.is_ok());
+            recorded?;
+            waited
+        };
+        let frame_ms = if graph.traces_rays() {
+            let (ms, built) = self.with_accel(scene, |accel| record(Some(accel)))?;
+            self.last_accel_build.set(built);
+            ms
+        } else {
+            record(None)?
+        };
+        let ctx = self.ctx.borrow();
+        let mut passes = rf.pass_times(&self.gpu)?;
+        passes.extend(ctx.pass_times()?);
+        let (mut run, gbuffer) = if details {
+            let (depth, normals) = rf.gbuffer();
+            let (depth, normals) = (self.gpu.download(depth)?, self.gpu.download(normals)?);
+            let gbuffer = GBufferImage { width: size.x, height: size.y, depth, normals };
+            let depth2 = match separation {
+                Some(_) => self.gpu.download(rf.second_depth())?,
+                None => Vec::new(),
+            };
+            let read = |name: &str| ctx.download::<u32>(name).ok();
+            let mut run = graph_run(&graph, passes, None, &read, &gbuffer, &depth2);
+            if let Some(rays) = technique.rays(&frame.desc()) {
+                run.rays = rays;
+            }
+            (run, Some(gbuffer))
+        } else {
+            (TechniqueRun::plain(Vec::new(), ctx.download::<f32>(graph.output)?, passes), None)
+        };
+        run.frame_ms = Some(frame_ms);
+        Ok((run, gbuffer))
+    }
+
+    /// One frame of `graph` as a technique's run.
+    fn run_graph(
+        &self,
+        scene: &Scene,
+        frame: &Frame,
+        gbuffer: &GBufferImage,
+        technique: &Technique,
+        graph: &Graph,
+    ) -> Result<TechniqueRun, GpuError> {
+        self.graph_frame(Some(scene), frame, gbuffer, technique, graph, |ctx, passes, depth2| {
+            let read = |name: &str| ctx.download::<u32>(name).ok();
+            let mut run = graph_run(graph, passes, None, &read, gbuffer, depth2);
+            run.frame_ms = self.last_frame_ms.get();
+            if let Some(rays) = technique.rays(&frame.desc()) {
+                run.rays = rays;
+            }
+            run
+        })
+    }
+
+    /// One frame of `graph` on the uploaded G-buffer (and the peeled second layer, rasterized
+    /// against it, where the technique reads one); `finish` reads what it needs from the context
+    /// with the pass times and the second layer.
+    fn graph_frame<R>(
+        &self,
+        scene: Option<&Scene>,
+        frame: &Frame,
+        gbuffer: &GBufferImage,
+        technique: &Technique,
+        graph: &Graph,
+        finish: impl FnOnce(&AoContext<Rc<Gpu>>, PassTimes, &[f32]) -> R,
     ) -> Result<R, GpuError> {
-        let Some(pass) = pass else { return f(None) };
+        let needs_vertices = graph.inputs().contains(&aokit_shaders::graph::inputs::SCENE_VERTICES);
+        let needs_scene = graph.traces_rays() || needs_vertices || technique.second_layer().is_some();
+        let empty = Scene::default();
+        let scene = match scene {
+            Some(s) => s,
+            None if needs_scene => return Err(GpuError::Input(format!("{} needs the scene", technique.name()))),
+            None => &empty,
+        };
+        let mut finish = Some(finish);
+        let mut frame_on = |accel: Option<&SceneAccel>| {
+            self.with_uploaded_gbuffer(gbuffer, |depth, normals| {
+                let mut passes = Vec::new();
+                let peeled = match technique.second_layer() {
+                    Some(separation) => {
+                        let params = frame.raster_params(separation);
+                        let (d2, n2, ms) = self.raster.render(
+                            self.gpu(),
+                            &raster_vertices(scene),
+                            &scene.alpha_masks(),
+                            &params,
+                            Some(depth),
+                        )?;
+                        self.gpu().free_buffer(n2);
+                        passes.push(("depth_peel", ms));
+                        Some(d2)
+                    }
+                    None => None,
+                };
+                let mut ctx = self.ctx.borrow_mut();
+                let ran = self.with_raster_scene(scene, needs_vertices, |raster| {
+                    let inputs = GpuInputs { depth, normals, second_depth: peeled.as_ref(), scene: accel, raster };
+                    let ms = ctx.run(graph, &inputs)?;
+                    self.last_frame_ms.set(Some(ms));
+                    ctx.pass_times()
+                });
+                // The inputs are freed below; a later buffer may take their handles.
+                ctx.invalidate_bindings();
+                let depth2 = match peeled {
+                    Some(d2) => {
+                        let host = self.gpu().download::<f32>(&d2);
+                        self.gpu().free_buffer(d2);
+                        host?
+                    }
+                    None => Vec::new(),
+                };
+                let mut times = ran?;
+                times.splice(0..0, passes);
+                Ok((finish.take().expect("one frame"))(&ctx, times, &depth2))
+            })
+        };
+        if !graph.traces_rays() {
+            return frame_on(None);
+        }
+        // The build time is reported by `accel_build_ms` where a report wants it.
+        let (out, built) = self.with_accel(scene, |accel| frame_on(Some(accel)))?;
+        self.last_accel_build.set(built);
+        Ok(out)
+    }
+
+    /// Run `f` with the scene uploaded for raster passes (vertices, alpha masks) when `needed`,
+    /// else with `None`.
+    fn with_raster_scene<R>(
+        &self,
+        scene: &Scene,
+        needed: bool,
+        f: impl FnOnce(Option<RasterScene>) -> Result<R, GpuError>,
+    ) -> Result<R, GpuError> {
+        if !needed {
+            return f(None);
+        }
         let vertices = raster_vertices(scene);
         let masks = scene.alpha_masks();
         let storage = ash::vk::BufferUsageFlags::STORAGE_BUFFER;
@@ -628,13 +632,11 @@ impl VulkanRenderer {
             owned.push(self.gpu.upload(&vertices, ash::vk::BufferUsageFlags::VERTEX_BUFFER)?);
             owned.push(self.gpu.upload(&masks.0, storage)?);
             owned.push(self.gpu.upload(&masks.1, storage)?);
-            f(Some(RasterSdInput {
-                pass,
+            f(Some(RasterScene {
                 vertices: &owned[0],
-                count: vertices.len() as u32,
-                params: frame.raster_params(),
-                headers: &owned[1],
-                texels: &owned[2],
+                vertex_count: vertices.len() as u32,
+                mask_headers: &owned[1],
+                mask_texels: &owned[2],
             }))
         })();
         for b in owned {
@@ -645,110 +647,18 @@ impl VulkanRenderer {
 
     /// XeGTAO's passes on a given G-buffer (uploaded), with every intermediate buffer.
     pub fn gtao(&self, frame: &Frame, gbuffer: &GBufferImage, options: &GtaoOptions) -> Result<GtaoOutput, GpuError> {
-        let passes = self.gtao_passes()?;
-        let params = frame.gtao_params(options);
-        self.with_uploaded_gbuffer(gbuffer, |depth, normals| {
-            passes.run(&self.gpu, &params, depth, (!options.normals_from_depth).then_some(normals))
-        })
-    }
-
-    /// The stenciled pipeline on Vulkan; `raster_sd`: the SD map from the raster coverage-mask
-    /// pass instead of ray tracing.
-    fn run_svao(
-        &self,
-        scene: &Scene,
-        frame: &Frame,
-        gbuffer: &GBufferImage,
-        svao: &SvaoFrame,
-        raster_sd: bool,
-    ) -> Result<TechniqueRun, GpuError> {
-        let pipelines = pipeline(&self.svao, || SvaoPipelines::new(&self.gpu))?;
-        let params = &svao.params;
-        let traced = params.secondary != Secondary::Disabled as u32 && !raster_sd;
-        let raster_pass =
-            if raster_sd { Some(pipeline(&self.raster_sd, || RasterSdPass::new(&self.gpu))?) } else { None };
-        let separation = SdOptions::default().peel_separation;
-        // Pass 1 (and pass 2) on the uploaded G-buffer, with the depth-peeled second layer
-        // rasterized against it when dual depth is on. Returns the second layer too.
-        let passes_on = |accel: Option<&SceneAccel>| {
-            self.with_uploaded_gbuffer(gbuffer, |depth, normals| {
-                let peeled = if params.dual != 0 {
-                    let raster = RasterParams { peel_separation: separation, ..frame.raster_params() };
-                    let (d2, n2, ms) = self.raster.render(
-                        &self.gpu,
-                        &raster_vertices(scene),
-                        &scene.alpha_masks(),
-                        &raster,
-                        Some(depth),
-                    )?;
-                    self.gpu.free_buffer(n2);
-                    Some((d2, ms))
-                } else {
-                    None
-                };
-                let depth2 = peeled.as_ref().map_or(depth, |(d2, _)| d2);
-                let run = self.with_raster_input(scene, frame, raster_pass, |raster| {
-                    let out = pipelines.run(&self.gpu, accel, svao, [depth, normals, depth2], raster)?;
-                    let blurred = self.screen.blur(&self.gpu, &frame.blur_params(), &out.ao, depth)?;
-                    Ok((out, blurred))
-                });
-                let second = match peeled {
-                    Some((d2, ms)) => {
-                        let host = self.gpu.download::<f32>(&d2);
-                        self.gpu.free_buffer(d2);
-                        Some((host?, ms))
-                    }
-                    None => None,
-                };
-                run.map(|(out, blurred)| (out, blurred, second))
+        let technique = Technique::Gtao(*options);
+        let graph = technique.graph(&frame.desc()).expect("XeGTAO has a graph");
+        self.graph_frame(None, frame, gbuffer, &technique, &graph, |ctx, pass_ms, _| {
+            Ok(GtaoOutput {
+                ao: ctx.download(graph.output)?,
+                mips: ctx.download("gtao_mips")?,
+                terms: ctx.download("gtao_terms")?,
+                edges: ctx.download("gtao_edges")?,
+                normals: if options.normals_from_depth { Some(ctx.download("gtao_normals")?) } else { None },
+                pass_ms,
             })
-        };
-        let ((out, blurred, second), built) =
-            if traced { self.with_accel(scene, |accel| passes_on(Some(accel)))? } else { (passes_on(None)?, None) };
-        let mut passes = Vec::new();
-        if let Some(ms) = built {
-            passes.push(("accel_build", ms));
-        }
-        if let Some((_, ms)) = &second {
-            passes.push(("depth_peel", *ms));
-        }
-        passes.extend(out.pass_ms.iter().copied());
-        passes.push(("blur", blurred.1));
-        let depth2 = second.map(|(d2, _)| d2).unwrap_or_default();
-        let sd = params.secondary == Secondary::StochasticDepth as u32;
-        let refined_samples = out.mask.iter().map(|m| m.count_ones() as u64).sum();
-        let (rays, interval_sum) = if sd && raster_sd {
-            (out.ray_max.iter().filter(|&&m| m != 0).count() as u64, None)
-        } else if sd {
-            let (rays, sum) =
-                aokit_cpu::svao::sd_ray_stats(svao, &gbuffer.depth, &gbuffer.normals, &out.ray_min, &out.ray_max);
-            (rays, Some(sum))
-        } else {
-            let rays = if traced {
-                aokit_cpu::svao::count_sample_rays(svao, &gbuffer.depth, &gbuffer.normals, &depth2, &out.mask)
-            } else {
-                0
-            };
-            (rays, None)
-        };
-        let debug = SvaoDebug {
-            ao_pass1: out.ao_pass1,
-            mask: out.mask,
-            ray_min: if sd { out.ray_min } else { Vec::new() },
-            ray_max: if sd { out.ray_max } else { Vec::new() },
-            sd_size: params.sd_size(),
-            sd_map: out.sd_map,
-            layers: params.sd_layers,
-        };
-        Ok(TechniqueRun {
-            ao: out.ao,
-            ao_final: blurred.0,
-            passes,
-            rays,
-            refined_samples,
-            interval_sum,
-            debug: Some(debug),
-        })
+        })?
     }
 }
 
@@ -788,6 +698,29 @@ impl Renderer {
         match self {
             Renderer::Cpu(c) => Ok(c.gbuffer(frame, progress)),
             Renderer::Vulkan(v) => v.gbuffer(scene, frame),
+        }
+    }
+
+    /// One frame from the scene: the G-buffer and the technique, its passes led by `gbuffer`
+    /// (and `depth_peel`). Vulkan: GPU-resident, one command buffer ([`VulkanRenderer::frame`];
+    /// without `details` only the final AO comes back). CPU: the ray-cast G-buffer, then the
+    /// graph. Returns the G-buffer with `details`.
+    pub fn frame(
+        &self,
+        scene: &Scene,
+        frame: &Frame,
+        technique: &Technique,
+        progress: Progress,
+        details: bool,
+    ) -> Result<(TechniqueRun, Option<GBufferImage>), GpuError> {
+        match self {
+            Renderer::Cpu(c) => {
+                let (gbuffer, ms) = c.gbuffer(frame, progress);
+                let mut run = c.run(frame, &gbuffer, technique, progress);
+                run.passes.insert(0, ("gbuffer", ms));
+                Ok((run, details.then_some(gbuffer)))
+            }
+            Renderer::Vulkan(v) => v.frame(scene, frame, technique, details),
         }
     }
 

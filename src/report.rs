@@ -418,7 +418,8 @@ pub struct BenchResult {
     pub mpixels_per_s: f64,
 }
 
-fn median(v: &mut [f64]) -> f64 {
+/// Median of `v` (sorts it).
+pub fn median(v: &mut [f64]) -> f64 {
     v.sort_by(f64::total_cmp);
     let n = v.len();
     if n % 2 == 1 { v[n / 2] } else { 0.5 * (v[n / 2 - 1] + v[n / 2]) }

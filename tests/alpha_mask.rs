@@ -96,7 +96,7 @@ fn layered_scene() -> (Scene, Frame) {
 
 /// Which depths the SD map holds on the leaf's left (cut-out) and right (kept) half.
 fn check_sd_layers(map: &[f32], frame: &Frame, options: &SdOptions, backend: &str) {
-    let svao = frame.svao_frame(Secondary::StochasticDepth, options);
+    let svao = options.frame(&frame.desc(), Secondary::StochasticDepth);
     let p = &svao.params;
     let view = &p.vao.view;
     let n = p.sd_layers as usize;
@@ -145,7 +145,7 @@ fn check_oak_layers(
 ) -> (usize, usize) {
     let bvh = renderer.bvh();
     let surfaces = renderer.surfaces();
-    let svao = frame.svao_frame(Secondary::StochasticDepth, options);
+    let svao = options.frame(&frame.desc(), Secondary::StochasticDepth);
     let p = &svao.params;
     let view = &p.vao.view;
     let gb =

@@ -17,7 +17,7 @@ fn report(dir: &Path) -> (CompareReport, aokit::frame::Frame) {
     let cpu = CpuRenderer::new(&scene);
     let (g, gbuffer_ms) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
     let none = &aokit_cpu::no_progress;
-    let reference = Technique::RaySvao { cutoff: 6.0, dual: false };
+    let reference = Technique::RaySvao { cutoff: 6.0, dual: false, peel_separation: 0.01 };
     let reference_run = cpu.run(&frame, &g, &reference, none);
     let runs: Vec<_> = [Technique::Vao, Technique::RaySd(SdOptions::default())]
         .into_iter()

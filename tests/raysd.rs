@@ -223,7 +223,7 @@ fn bvh_any_hit_reports_every_triangle_once() {
 }
 
 fn sd_frame(frame: &aokit::frame::Frame, divisor: u32) -> aokit_shaders::svao::SvaoFrame {
-    frame.svao_frame(Secondary::StochasticDepth, &SdOptions { divisor, ..Default::default() })
+    SdOptions { divisor, ..Default::default() }.frame(&frame.desc(), Secondary::StochasticDepth)
 }
 
 /// Spec §5/§7.1/§9: for every flagged sample of pass 1, the SD texel pass 2 reads is the one
@@ -310,7 +310,9 @@ fn raysd_error_is_a_fraction_of_vao_error_and_falls_with_layers() {
     let renderer = CpuRenderer::new(&scene);
     let (g, _) = renderer.gbuffer(&frame, &aokit_cpu::no_progress);
     let none = &aokit_cpu::no_progress;
-    let reference = renderer.run(&frame, &g, &Technique::RaySvao { cutoff: 6.0, dual: false }, none).ao_final;
+    let reference = renderer
+        .run(&frame, &g, &Technique::RaySvao { cutoff: 6.0, dual: false, peel_separation: 0.01 }, none)
+        .ao_final;
     let vao = renderer.run(&frame, &g, &Technique::Vao, none).ao_final;
     let mse_vao = mse(&vao, &reference);
     let mut by_layers = Vec::new();

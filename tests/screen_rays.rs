@@ -10,8 +10,8 @@ use aokit::scene::Scene;
 use aokit::scene::procedural::push_quad;
 use aokit::technique::{HybridOptions, RaymarchOptions, Technique};
 use aokit_shaders::common::normal_codec::encode_normal;
+use aokit_shaders::common::screen_space::view_pos;
 use aokit_shaders::glam::{UVec2, Vec3, uvec2, vec3};
-use aokit_shaders::gtao::view_pos;
 use aokit_shaders::raymarch::kernel::{best_candidate, vogel};
 use aokit_shaders::raymarch::march;
 

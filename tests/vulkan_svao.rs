@@ -72,7 +72,7 @@ fn raysd_vulkan_agrees_with_cpu_sim() {
     // SD map: every depth the GPU stored is one of the candidate hits the CPU finds along the
     // same texel ray (on the GPU's own interval buffers), up to intersection rounding.
     let bvh = aokit_cpu::SceneBvh::build(&scene.triangles);
-    let svao = frame.svao_frame(Secondary::StochasticDepth, &options);
+    let svao = options.frame(&frame.desc(), Secondary::StochasticDepth);
     let params = &svao.params;
     let view = &params.vao.view;
     let gb = GBufferSlices { depth: &g.depth, normals: &g.normals, width: g.width };
@@ -119,7 +119,7 @@ fn raysvao_vulkan_agrees_with_cpu_sim() {
     let (scene, frame) = common::builtin_frame("sponza", 320, 180, 32);
     let cpu = CpuRenderer::new(&scene);
     let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
-    let technique = Technique::RaySvao { cutoff: 6.0, dual: false };
+    let technique = Technique::RaySvao { cutoff: 6.0, dual: false, peel_separation: 0.01 };
     let c = cpu.run(&frame, &g, &technique, &aokit_cpu::no_progress);
     let v = vk.run(&scene, &frame, &g, &technique).expect("Vulkan Ray-SVAO");
     common::assert_validation_clean(&vk);

@@ -8,7 +8,7 @@ use aokit_shaders::gtao::{
 use rayon::prelude::*;
 
 /// Evaluate `f` for every pixel of a `size` image in parallel rows.
-fn per_pixel<T: Send + Copy + Default>(size: UVec2, f: impl Fn(UVec2) -> T + Sync) -> Vec<T> {
+pub fn per_pixel<T: Send + Copy + Default>(size: UVec2, f: impl Fn(UVec2) -> T + Sync) -> Vec<T> {
     let mut out = vec![T::default(); (size.x * size.y) as usize];
     out.par_chunks_mut(size.x as usize).enumerate().for_each(|(y, row)| {
         for (x, v) in row.iter_mut().enumerate() {

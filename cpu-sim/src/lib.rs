@@ -2,8 +2,10 @@
 //! with rayon (images as slices, atomics as `AtomicU32`), and casts rays through a CPU BVH
 //! (obvhs' compressed wide BVH) where the GPU would rasterize or trace.
 
+pub mod adapters;
 pub mod bvh;
 pub mod gbuffer;
+pub mod graph;
 pub mod groundtruth;
 pub mod gtao;
 pub mod hybrid;

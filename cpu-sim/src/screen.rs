@@ -39,13 +39,16 @@ pub fn run_vao(params: &VaoParams, depth: &[f32], normals: &[u32], progress: Pro
     for_inner_pixels(size, params.view.guard, 1.0, progress, |p| vao_pixel(&gbuffer, params, p))
 }
 
+/// One direction (`params.direction`) of the cross-bilateral blur (spec §12).
+pub fn run_blur_direction(params: &BlurParams, ao: &[f32], depth: &[f32]) -> Vec<f32> {
+    for_inner_pixels(params.view.size(), params.view.guard, 1.0, &crate::no_progress, |px| {
+        blur_pixel(params, ao, depth, px)
+    })
+}
+
 /// The two-pass cross-bilateral blur (spec §12): horizontal then vertical.
 pub fn run_blur(params: &BlurParams, ao: &[f32], depth: &[f32]) -> Vec<f32> {
-    let size = params.view.size();
-    let pass = |direction: UVec2, input: &[f32]| {
-        let p = BlurParams { direction, ..*params };
-        for_inner_pixels(size, p.view.guard, 1.0, &crate::no_progress, |px| blur_pixel(&p, input, depth, px))
-    };
+    let pass = |direction: UVec2, input: &[f32]| run_blur_direction(&BlurParams { direction, ..*params }, input, depth);
     let horizontal = pass(uvec2(1, 0), ao);
     pass(uvec2(0, 1), &horizontal)
 }

@@ -1,13 +1,15 @@
 //! Raster G-buffer pass with dynamic rendering: linear depth (R32_SFLOAT) and encoded face
 //! normal (R32_UINT) over the full target, copied into storage buffers for the compute passes.
 
+use crate::compute::memory_barrier;
 use crate::descriptors::{Descriptor, storage_bindings};
+use crate::image::Image2d;
 use crate::{Buffer, Gpu, GpuError, modules};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_shaders::gbuffer::RasterParams;
+use aokit_shaders::glam::UVec2;
 use ash::vk;
 use gpu_allocator::MemoryLocation;
-use gpu_allocator::vulkan::{Allocation, AllocationCreateDesc, AllocationScheme};
 
 /// One de-indexed vertex: world position, its triangle's world face normal (w unused), texture
 /// coordinate and material index (for the alpha test).
@@ -34,72 +36,10 @@ pub struct RasterGBuffer {
     peel_pipeline: vk::Pipeline,
 }
 
-struct Target {
-    image: vk::Image,
-    view: vk::ImageView,
-    allocation: Allocation,
-}
-
-impl Gpu {
-    fn create_target(
-        &self,
-        format: vk::Format,
-        extent: vk::Extent2D,
-        usage: vk::ImageUsageFlags,
-        aspect: vk::ImageAspectFlags,
-    ) -> Result<Target, GpuError> {
-        let d = &self.device;
-        unsafe {
-            let image = d.create_image(
-                &vk::ImageCreateInfo::default()
-                    .image_type(vk::ImageType::TYPE_2D)
-                    .format(format)
-                    .extent(extent.into())
-                    .mip_levels(1)
-                    .array_layers(1)
-                    .samples(vk::SampleCountFlags::TYPE_1)
-                    .tiling(vk::ImageTiling::OPTIMAL)
-                    .usage(usage)
-                    .initial_layout(vk::ImageLayout::UNDEFINED),
-                None,
-            )?;
-            let allocation =
-                self.allocator.lock().unwrap_or_else(|e| e.into_inner()).allocate(&AllocationCreateDesc {
-                    name: "aokit render target",
-                    requirements: d.get_image_memory_requirements(image),
-                    location: MemoryLocation::GpuOnly,
-                    linear: false,
-                    allocation_scheme: AllocationScheme::GpuAllocatorManaged,
-                })?;
-            d.bind_image_memory(image, allocation.memory(), allocation.offset())?;
-            let view = d.create_image_view(
-                &vk::ImageViewCreateInfo::default()
-                    .image(image)
-                    .view_type(vk::ImageViewType::TYPE_2D)
-                    .format(format)
-                    .subresource_range(
-                        vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1),
-                    ),
-                None,
-            )?;
-            Ok(Target { image, view, allocation })
-        }
-    }
-
-    fn destroy_target(&self, t: Target) {
-        unsafe {
-            self.device.destroy_image_view(t.view, None);
-            self.device.destroy_image(t.image, None);
-        }
-        let _ = self.allocator.lock().unwrap_or_else(|e| e.into_inner()).free(t.allocation);
-    }
-}
-
 fn layout_barrier(
     gpu: &Gpu,
     cb: vk::CommandBuffer,
-    image: vk::Image,
-    aspect: vk::ImageAspectFlags,
+    image: &Image2d,
     (old, new): (vk::ImageLayout, vk::ImageLayout),
     (src_stage, src_access): (vk::PipelineStageFlags, vk::AccessFlags),
     (dst_stage, dst_access): (vk::PipelineStageFlags, vk::AccessFlags),
@@ -111,8 +51,8 @@ fn layout_barrier(
         .dst_access_mask(dst_access)
         .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
         .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
-        .image(image)
-        .subresource_range(vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1));
+        .image(image.raw)
+        .subresource_range(image.range());
     unsafe {
         gpu.device.cmd_pipeline_barrier(cb, src_stage, dst_stage, vk::DependencyFlags::empty(), &[], &[], &[barrier])
     };
@@ -252,22 +192,15 @@ impl RasterGBuffer {
         }
     }
 
-    /// Rasterize `vertices` (de-indexed triangles) into `(depth, normals)` storage buffers of the
-    /// full target; empty pixels hold depth = far and normal code 0. `masks` are the alpha masks
-    /// per material (non-empty slices). Returns the buffers and the GPU time of the pass in
-    /// milliseconds.
-    ///
-    /// With `first_layer` (a linear-depth buffer of the full target) this is the depth-peeling
-    /// pass of spec §11: only fragments beyond that depth + `params.peel_separation` survive.
-    pub fn render(
+    /// The per-scene, per-size state of the raster passes: the scene's vertices and alpha masks
+    /// on the device, render targets, the G-buffer and peeled-layer buffers, descriptor sets.
+    pub fn frame_resources(
         &self,
         gpu: &Gpu,
         vertices: &[GBufferVertex],
         masks: &(Vec<AlphaMaskHeader>, Vec<f32>),
-        params: &RasterParams,
-        first_layer: Option<&Buffer>,
-    ) -> Result<(Buffer, Buffer, f64), GpuError> {
-        let size = params.view.size();
+        size: UVec2,
+    ) -> Result<RasterFrame, GpuError> {
         if size.x == 0 || size.y == 0 || vertices.is_empty() || masks.0.is_empty() || masks.1.is_empty() {
             return Err(GpuError::Input(format!(
                 "empty raster input ({}×{}, {} vertices)",
@@ -276,152 +209,192 @@ impl RasterGBuffer {
                 vertices.len()
             )));
         }
-        let storage_in = vk::BufferUsageFlags::STORAGE_BUFFER;
-        let headers = gpu.upload(&masks.0, storage_in)?;
-        let texels = gpu.upload(&masks.1, storage_in)?;
+        let mut frame = RasterFrame { size, vertex_count: vertices.len() as u32, ..Default::default() };
+        let made = (|| -> Result<(), GpuError> {
+            let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
+            frame.buffers.push(gpu.upload(vertices, vk::BufferUsageFlags::VERTEX_BUFFER)?);
+            frame.buffers.push(gpu.upload(&masks.0, storage)?);
+            frame.buffers.push(gpu.upload(&masks.1, storage)?);
+            let output = storage | vk::BufferUsageFlags::TRANSFER_DST | vk::BufferUsageFlags::TRANSFER_SRC;
+            for _ in 0..4 {
+                let bytes = 4 * size.x as u64 * size.y as u64;
+                frame.buffers.push(gpu.create_buffer(bytes, output, MemoryLocation::GpuOnly)?);
+            }
+            let color = vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC;
+            frame.targets.push(gpu.create_image_2d(DEPTH_FORMAT, size.x, size.y, color)?);
+            frame.targets.push(gpu.create_image_2d(NORMAL_FORMAT, size.x, size.y, color)?);
+            let z = vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT;
+            frame.targets.push(gpu.create_image_2d(Z_FORMAT, size.x, size.y, z)?);
+            frame.pool = gpu.descriptor_pool(2, &storage_bindings(3))?;
+            let info = vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(3);
+            frame.queries = unsafe { gpu.device.create_query_pool(&info, None)? };
+            let [_, headers, texels, depth, ..] = &frame.buffers[..] else { unreachable!("pushed above") };
+            // The first pass does not read binding 2; it gets the headers as a placeholder.
+            for third in [headers, depth] {
+                let descriptors = [headers, texels, third].map(Descriptor::Storage);
+                frame.sets.push(gpu.descriptor_set(frame.pool, self.set_layout, &descriptors)?);
+            }
+            Ok(())
+        })();
+        match made {
+            Ok(()) => Ok(frame),
+            Err(e) => {
+                frame.destroy(gpu);
+                Err(e)
+            }
+        }
+    }
+
+    /// Record the G-buffer pass into `cb`: `frame`'s depth and normal buffers hold the full
+    /// target afterwards (depth = far and normal code 0 where nothing was hit), visible to later
+    /// compute, fragment and transfer reads. With `peel`, then also the depth-peeling pass of
+    /// spec svao-raysd §11 into the second-layer buffers: only fragments beyond the first
+    /// layer's depth + `params.peel_separation` survive. Earlier readers of these buffers on the
+    /// queue finish first.
+    /// Timestamps go to the frame ([`RasterFrame::pass_times`]).
+    pub fn record(&self, gpu: &Gpu, cb: vk::CommandBuffer, frame: &RasterFrame, params: &RasterParams, peel: bool) {
         let d = &gpu.device;
-        let pool = gpu.descriptor_pool(1, &storage_bindings(3))?;
-        // The first pass does not read binding 2; it gets the headers as a placeholder.
-        let third = first_layer.unwrap_or(&headers);
-        let set = gpu.descriptor_set(
-            pool,
-            self.set_layout,
-            &[Descriptor::Storage(&headers), Descriptor::Storage(&texels), Descriptor::Storage(third)],
-        )?;
-        let pipeline = if first_layer.is_some() { self.peel_pipeline } else { self.pipeline };
-        let extent = vk::Extent2D { width: size.x, height: size.y };
-        let pixels = (size.x * size.y) as u64;
-        let vbuf = gpu.upload(vertices, vk::BufferUsageFlags::VERTEX_BUFFER)?;
-        let color = vk::ImageUsageFlags::COLOR_ATTACHMENT | vk::ImageUsageFlags::TRANSFER_SRC;
-        let depth_t = gpu.create_target(DEPTH_FORMAT, extent, color, vk::ImageAspectFlags::COLOR)?;
-        let normal_t = gpu.create_target(NORMAL_FORMAT, extent, color, vk::ImageAspectFlags::COLOR)?;
-        let z_t = gpu.create_target(
-            Z_FORMAT,
-            extent,
-            vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT,
-            vk::ImageAspectFlags::DEPTH,
-        )?;
-        let storage = vk::BufferUsageFlags::STORAGE_BUFFER
-            | vk::BufferUsageFlags::TRANSFER_DST
-            | vk::BufferUsageFlags::TRANSFER_SRC;
-        let depth_buf = gpu.create_buffer(4 * pixels, storage, MemoryLocation::GpuOnly)?;
-        let normal_buf = gpu.create_buffer(4 * pixels, storage, MemoryLocation::GpuOnly)?;
-        let timed = unsafe {
-            d.create_query_pool(
-                &vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(2),
-                None,
-            )
-        };
-        let result = timed.map_err(GpuError::from).and_then(|queries| {
+        unsafe {
+            d.cmd_reset_query_pool(cb, frame.queries, 0, 3);
+            d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TOP_OF_PIPE, frame.queries, 0);
+        }
+        let out = [(self.pipeline, frame.sets[0], 3, 4), (self.peel_pipeline, frame.sets[1], 5, 6)];
+        for (i, (pipeline, set, depth, normals)) in out[..1 + peel as usize].iter().enumerate() {
+            let buffers = (&frame.buffers[*depth], &frame.buffers[*normals]);
+            self.record_pass(gpu, cb, frame, params, (*pipeline, *set), buffers);
+            unsafe { d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TRANSFER, frame.queries, 1 + i as u32) };
+        }
+        frame.peeled.set(peel);
+    }
+
+    fn record_pass(
+        &self,
+        gpu: &Gpu,
+        cb: vk::CommandBuffer,
+        frame: &RasterFrame,
+        params: &RasterParams,
+        (pipeline, set): (vk::Pipeline, vk::DescriptorSet),
+        (depth_buf, normal_buf): (&Buffer, &Buffer),
+    ) {
+        let d = &gpu.device;
+        let extent = vk::Extent2D { width: frame.size.x, height: frame.size.y };
+        let [depth_t, normal_t, z_t] = &frame.targets[..] else { unreachable!("three targets") };
+        type S = vk::PipelineStageFlags;
+        type A = vk::AccessFlags;
+        unsafe {
+            // Earlier transfers out of the targets (a previous pass) and reads of the buffers
+            // finish first; the targets are cleared, so their old contents are discarded.
+            let earlier = (S::TRANSFER | S::COMPUTE_SHADER | S::FRAGMENT_SHADER, A::empty());
+            let to_attachment = (vk::ImageLayout::UNDEFINED, vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL);
+            let color_out = (S::COLOR_ATTACHMENT_OUTPUT, A::COLOR_ATTACHMENT_WRITE);
+            for t in [depth_t, normal_t] {
+                layout_barrier(gpu, cb, t, to_attachment, earlier, color_out);
+            }
+            let z_stages = S::EARLY_FRAGMENT_TESTS | S::LATE_FRAGMENT_TESTS;
+            let z_access = A::DEPTH_STENCIL_ATTACHMENT_READ | A::DEPTH_STENCIL_ATTACHMENT_WRITE;
+            let to_z = (vk::ImageLayout::UNDEFINED, vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL);
+            layout_barrier(gpu, cb, z_t, to_z, (z_stages, A::empty()), (z_stages, z_access));
+            let colors = [
+                vk::RenderingAttachmentInfo::default()
+                    .image_view(depth_t.view)
+                    .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+                    .load_op(vk::AttachmentLoadOp::CLEAR)
+                    .store_op(vk::AttachmentStoreOp::STORE)
+                    .clear_value(vk::ClearValue {
+                        color: vk::ClearColorValue { float32: [params.view.far, 0.0, 0.0, 0.0] },
+                    }),
+                vk::RenderingAttachmentInfo::default()
+                    .image_view(normal_t.view)
+                    .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
+                    .load_op(vk::AttachmentLoadOp::CLEAR)
+                    .store_op(vk::AttachmentStoreOp::STORE)
+                    .clear_value(vk::ClearValue { color: vk::ClearColorValue { uint32: [0; 4] } }),
+            ];
+            let z = vk::RenderingAttachmentInfo::default()
+                .image_view(z_t.view)
+                .image_layout(vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL)
+                .load_op(vk::AttachmentLoadOp::CLEAR)
+                .store_op(vk::AttachmentStoreOp::DONT_CARE)
+                .clear_value(vk::ClearValue { depth_stencil: vk::ClearDepthStencilValue { depth: 0.0, stencil: 0 } });
+            let area = vk::Rect2D { offset: vk::Offset2D::default(), extent };
+            d.cmd_begin_rendering(
+                cb,
+                &vk::RenderingInfo::default()
+                    .render_area(area)
+                    .layer_count(1)
+                    .color_attachments(&colors)
+                    .depth_attachment(&z),
+            );
+            d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, pipeline);
+            d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::GRAPHICS, self.layout, 0, &[set], &[]);
+            set_viewport(d, cb, area);
+            d.cmd_push_constants(cb, self.layout, PUSH_STAGES, 0, bytemuck::bytes_of(params));
+            d.cmd_bind_vertex_buffers(cb, 0, &[frame.buffers[0].raw], &[0]);
+            d.cmd_draw(cb, frame.vertex_count, 1, 0, 0);
+            d.cmd_end_rendering(cb);
+            let to_src = (vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL, vk::ImageLayout::TRANSFER_SRC_OPTIMAL);
+            let transfer = (S::TRANSFER, A::TRANSFER_READ);
+            for (t, buf) in [(depth_t, depth_buf), (normal_t, normal_buf)] {
+                layout_barrier(gpu, cb, t, to_src, color_out, transfer);
+                d.cmd_copy_image_to_buffer(
+                    cb,
+                    t.raw,
+                    vk::ImageLayout::TRANSFER_SRC_OPTIMAL,
+                    buf.raw,
+                    &[t.copy_region()],
+                );
+            }
+            memory_barrier(gpu, cb, S::TRANSFER, S::COMPUTE_SHADER | S::FRAGMENT_SHADER | S::TRANSFER);
+        }
+    }
+
+    /// Rasterize `vertices` (de-indexed triangles) into `(depth, normals)` storage buffers of the
+    /// full target in a command buffer of its own (submits and waits); empty pixels hold depth =
+    /// far and normal code 0. `masks` are the alpha masks per material (non-empty slices). With
+    /// `first_layer`, the depth-peeling pass of spec §11 against that linear depth. Returns the
+    /// buffers and the GPU time of the pass in milliseconds.
+    pub fn render(
+        &self,
+        gpu: &Gpu,
+        vertices: &[GBufferVertex],
+        masks: &(Vec<AlphaMaskHeader>, Vec<f32>),
+        params: &RasterParams,
+        first_layer: Option<&Buffer>,
+    ) -> Result<(Buffer, Buffer, f64), GpuError> {
+        let mut frame = self.frame_resources(gpu, vertices, masks, params.view.size())?;
+        let d = &gpu.device;
+        let info = vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(2);
+        let timed = unsafe { d.create_query_pool(&info, None) }.map_err(GpuError::from).and_then(|queries| {
             let submitted = gpu.submit(|cb| unsafe {
                 d.cmd_reset_query_pool(cb, queries, 0, 2);
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TOP_OF_PIPE, queries, 0);
-                let to_attachment = (vk::ImageLayout::UNDEFINED, vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL);
-                let none = (vk::PipelineStageFlags::TOP_OF_PIPE, vk::AccessFlags::empty());
-                let color_out =
-                    (vk::PipelineStageFlags::COLOR_ATTACHMENT_OUTPUT, vk::AccessFlags::COLOR_ATTACHMENT_WRITE);
-                for t in [&depth_t, &normal_t] {
-                    layout_barrier(gpu, cb, t.image, vk::ImageAspectFlags::COLOR, to_attachment, none, color_out);
+                if let Some(first) = first_layer {
+                    // Peel against the given layer: copy it into the frame's first-layer buffer.
+                    let region = [vk::BufferCopy::default().size(frame.buffers[3].size.min(first.size))];
+                    d.cmd_copy_buffer(cb, first.raw, frame.buffers[3].raw, &region);
+                    memory_barrier(gpu, cb, vk::PipelineStageFlags::TRANSFER, vk::PipelineStageFlags::FRAGMENT_SHADER);
+                    let set = frame.sets[1];
+                    let out = (&frame.buffers[5], &frame.buffers[6]);
+                    self.record_pass(gpu, cb, &frame, params, (self.peel_pipeline, set), out);
+                } else {
+                    self.record(gpu, cb, &frame, params, false);
                 }
-                layout_barrier(
-                    gpu,
-                    cb,
-                    z_t.image,
-                    vk::ImageAspectFlags::DEPTH,
-                    (vk::ImageLayout::UNDEFINED, vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL),
-                    none,
-                    (
-                        vk::PipelineStageFlags::EARLY_FRAGMENT_TESTS | vk::PipelineStageFlags::LATE_FRAGMENT_TESTS,
-                        vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_READ
-                            | vk::AccessFlags::DEPTH_STENCIL_ATTACHMENT_WRITE,
-                    ),
-                );
-                let colors = [
-                    vk::RenderingAttachmentInfo::default()
-                        .image_view(depth_t.view)
-                        .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
-                        .load_op(vk::AttachmentLoadOp::CLEAR)
-                        .store_op(vk::AttachmentStoreOp::STORE)
-                        .clear_value(vk::ClearValue {
-                            color: vk::ClearColorValue { float32: [params.view.far, 0.0, 0.0, 0.0] },
-                        }),
-                    vk::RenderingAttachmentInfo::default()
-                        .image_view(normal_t.view)
-                        .image_layout(vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL)
-                        .load_op(vk::AttachmentLoadOp::CLEAR)
-                        .store_op(vk::AttachmentStoreOp::STORE)
-                        .clear_value(vk::ClearValue { color: vk::ClearColorValue { uint32: [0; 4] } }),
-                ];
-                let z = vk::RenderingAttachmentInfo::default()
-                    .image_view(z_t.view)
-                    .image_layout(vk::ImageLayout::DEPTH_ATTACHMENT_OPTIMAL)
-                    .load_op(vk::AttachmentLoadOp::CLEAR)
-                    .store_op(vk::AttachmentStoreOp::DONT_CARE)
-                    .clear_value(vk::ClearValue {
-                        depth_stencil: vk::ClearDepthStencilValue { depth: 0.0, stencil: 0 },
-                    });
-                let area = vk::Rect2D { offset: vk::Offset2D::default(), extent };
-                d.cmd_begin_rendering(
-                    cb,
-                    &vk::RenderingInfo::default()
-                        .render_area(area)
-                        .layer_count(1)
-                        .color_attachments(&colors)
-                        .depth_attachment(&z),
-                );
-                d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, pipeline);
-                d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::GRAPHICS, self.layout, 0, &[set], &[]);
-                set_viewport(d, cb, area);
-                d.cmd_push_constants(cb, self.layout, PUSH_STAGES, 0, bytemuck::bytes_of(params));
-                d.cmd_bind_vertex_buffers(cb, 0, &[vbuf.raw], &[0]);
-                d.cmd_draw(cb, vertices.len() as u32, 1, 0, 0);
-                d.cmd_end_rendering(cb);
-                let to_src = (vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL, vk::ImageLayout::TRANSFER_SRC_OPTIMAL);
-                let transfer = (vk::PipelineStageFlags::TRANSFER, vk::AccessFlags::TRANSFER_READ);
-                for (t, buf) in [(&depth_t, &depth_buf), (&normal_t, &normal_buf)] {
-                    layout_barrier(gpu, cb, t.image, vk::ImageAspectFlags::COLOR, to_src, color_out, transfer);
-                    let region = vk::BufferImageCopy::default()
-                        .image_subresource(
-                            vk::ImageSubresourceLayers::default()
-                                .aspect_mask(vk::ImageAspectFlags::COLOR)
-                                .layer_count(1),
-                        )
-                        .image_extent(extent.into());
-                    d.cmd_copy_image_to_buffer(cb, t.image, vk::ImageLayout::TRANSFER_SRC_OPTIMAL, buf.raw, &[region]);
-                }
-                let barrier = vk::MemoryBarrier::default()
-                    .src_access_mask(vk::AccessFlags::TRANSFER_WRITE)
-                    .dst_access_mask(vk::AccessFlags::SHADER_READ | vk::AccessFlags::TRANSFER_READ);
-                d.cmd_pipeline_barrier(
-                    cb,
-                    vk::PipelineStageFlags::TRANSFER,
-                    vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::TRANSFER,
-                    vk::DependencyFlags::empty(),
-                    &[barrier],
-                    &[],
-                    &[],
-                );
                 d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TRANSFER, queries, 1);
             });
             let got = submitted.and_then(|_| gpu.timestamps_ms(queries, 2));
             unsafe { d.destroy_query_pool(queries, None) };
             got.map(|t| t[1])
         });
-        gpu.free_buffer(vbuf);
-        gpu.free_buffer(headers);
-        gpu.free_buffer(texels);
-        unsafe { d.destroy_descriptor_pool(pool, None) };
-        for t in [depth_t, normal_t, z_t] {
-            gpu.destroy_target(t);
-        }
-        match result {
-            Ok(ms) => Ok((depth_buf, normal_buf, ms)),
-            Err(e) => {
-                gpu.free_buffer(depth_buf);
-                gpu.free_buffer(normal_buf);
-                Err(e)
-            }
-        }
+        let result = timed.map(|ms| {
+            // Hand the output buffers to the caller (the higher index first); the frame frees the
+            // rest.
+            let (depth, normals) = if first_layer.is_some() { (5, 6) } else { (3, 4) };
+            let normals_buf = frame.buffers.remove(normals);
+            let depth_buf = frame.buffers.remove(depth);
+            (depth_buf, normals_buf, ms)
+        });
+        frame.destroy(gpu);
+        result
     }
 
     pub fn destroy(&self, gpu: &Gpu) {
@@ -430,6 +403,80 @@ impl RasterGBuffer {
             gpu.device.destroy_pipeline(self.peel_pipeline, None);
             gpu.device.destroy_pipeline_layout(self.layout, None);
             gpu.device.destroy_descriptor_set_layout(self.set_layout, None);
+        }
+    }
+}
+
+/// What the raster passes keep per scene and target size (see
+/// [`RasterGBuffer::frame_resources`]). Free it with [`RasterFrame::destroy`] once the device
+/// finished with it.
+#[derive(Default)]
+pub struct RasterFrame {
+    size: UVec2,
+    vertex_count: u32,
+    /// Vertices, mask headers, mask texels, then the outputs: depth, normals, second-layer
+    /// depth, second-layer normals.
+    buffers: Vec<Buffer>,
+    /// Linear-depth, normal-code and Z render targets.
+    targets: Vec<Image2d>,
+    pool: vk::DescriptorPool,
+    /// The first pass's and the peeling pass's descriptor sets.
+    sets: Vec<vk::DescriptorSet>,
+    /// Timestamps: before, after the G-buffer, after the peeled layer.
+    queries: vk::QueryPool,
+    peeled: std::cell::Cell<bool>,
+}
+
+impl RasterFrame {
+    /// The G-buffer after [`RasterGBuffer::record`]: linear depth and normal codes.
+    pub fn gbuffer(&self) -> (&Buffer, &Buffer) {
+        (&self.buffers[3], &self.buffers[4])
+    }
+
+    /// The peeled second layer's linear depth after a `record` with `peel`.
+    pub fn second_depth(&self) -> &Buffer {
+        &self.buffers[5]
+    }
+
+    /// The scene as the graphs' raster passes draw it (the raster SD map).
+    pub fn scene(&self) -> crate::RasterScene<'_> {
+        crate::RasterScene {
+            vertices: &self.buffers[0],
+            vertex_count: self.vertex_count,
+            mask_headers: &self.buffers[1],
+            mask_texels: &self.buffers[2],
+        }
+    }
+
+    /// The target size it was made for.
+    pub fn size(&self) -> UVec2 {
+        self.size
+    }
+
+    /// `("gbuffer", ms)` and, when the last record peeled, `("depth_peel", ms)` of the last
+    /// recorded frame, once the device finished it.
+    pub fn pass_times(&self, gpu: &Gpu) -> Result<Vec<(&'static str, f64)>, GpuError> {
+        let peeled = self.peeled.get();
+        let t = gpu.timestamps_ms(self.queries, 2 + peeled as usize)?;
+        let mut out = vec![("gbuffer", t[1])];
+        if peeled {
+            out.push(("depth_peel", t[2] - t[1]));
+        }
+        Ok(out)
+    }
+
+    pub fn destroy(self, gpu: &Gpu) {
+        if self.queries != vk::QueryPool::null() {
+            unsafe { gpu.device.destroy_query_pool(self.queries, None) };
+        }
+        for b in self.buffers {
+            gpu.free_buffer(b);
+        }
+        for t in self.targets {
+            gpu.free_image(t);
+        }
+        if self.pool != vk::DescriptorPool::null() {
+            unsafe { gpu.device.destroy_descriptor_pool(self.pool, None) };
         }
     }
 }

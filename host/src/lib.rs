@@ -1,29 +1,32 @@
-//! aokit's Vulkan back-end: ash + gpu-allocator, headless. Runs the SPIR-V that the xtask built
-//! from `aokit-shaders` (committed under `assets/spirv/`), so no Rust nightly is needed here.
+//! aokit's Vulkan back-end: ash + gpu-allocator, on its own device or the caller's. Runs the
+//! SPIR-V that the xtask built from `aokit-shaders` (committed under `assets/spirv/`), so no
+//! Rust nightly is needed here.
 //!
-//! Knows devices, memory, pipelines and dispatch order — never kernel math.
+//! [`AoContext`] executes a technique's pass graph into a command buffer; the raster G-buffer
+//! ([`RasterGBuffer`]), the acceleration structure ([`SceneAccel`]) and the engine adapters
+//! ([`Adapters`]) feed it. Knows devices, memory, pipelines and barriers — never kernel math or
+//! a technique's order of passes.
 
+mod adapters;
 mod buffer;
+mod compute;
 mod context;
 mod descriptors;
 mod gbuffer;
-mod gtao;
+mod graph;
+mod image;
 pub mod manifest;
 pub mod modules;
 mod raytracing;
-mod screen;
 pub mod spirv_hash;
-mod ssao;
-mod svao;
 
+pub use adapters::{Adapters, AoImage, EngineImage};
 pub use buffer::Buffer;
-pub use context::{DeviceInfo, Gpu, GpuOptions};
-pub use gbuffer::{GBufferVertex, RasterGBuffer, RasterSdPass};
-pub use gtao::{GtaoOutput, GtaoPasses};
-pub use raytracing::{GroundTruthPipeline, SceneAccel};
-pub use screen::{ScreenOutput, ScreenPasses};
-pub use ssao::{ScreenRayOutput, SsaoPipelines};
-pub use svao::{RasterSdInput, SvaoOutput, SvaoPipelines};
+pub use context::{DeviceInfo, ExternalDevice, Gpu, GpuOptions};
+pub use gbuffer::{GBufferVertex, RasterFrame, RasterGBuffer, RasterSdPass};
+pub use graph::{AoContext, EngineFrame, FRAMES_IN_FLIGHT, GpuInputs, RasterScene};
+pub use image::Image2d;
+pub use raytracing::SceneAccel;
 
 /// Errors of the Vulkan back-end.
 #[derive(Debug, thiserror::Error)]

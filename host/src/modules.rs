@@ -32,9 +32,14 @@ pub const GTAO_DENOISE: &[u8] = spv!("gtao_denoise");
 pub const RAYMARCH_MAIN: &[u8] = spv!("raymarch_main");
 pub const HYBRID_RGEN: &[u8] = spv!("hybrid_rgen");
 pub const RASTERSD_FS: &[u8] = spv!("rastersd_fs");
+pub const IMPORT_DEPTH: &[u8] = spv!("import_depth");
+pub const IMPORT_NORMALS: &[u8] = spv!("import_normals");
+pub const EXPORT_AO_R32F: &[u8] = spv!("export_ao_r32f");
+pub const EXPORT_AO_R16F: &[u8] = spv!("export_ao_r16f");
+pub const EXPORT_AO_R8: &[u8] = spv!("export_ao_r8");
 
 /// Every module by entry-point name.
-pub const ALL: [(&str, &[u8]); 23] = [
+pub const ALL: [(&str, &[u8]); 28] = [
     ("vao_main", VAO_MAIN),
     ("blur_main", BLUR_MAIN),
     ("gbuffer_vs", GBUFFER_VS),
@@ -58,6 +63,11 @@ pub const ALL: [(&str, &[u8]); 23] = [
     ("raymarch_main", RAYMARCH_MAIN),
     ("hybrid_rgen", HYBRID_RGEN),
     ("rastersd_fs", RASTERSD_FS),
+    ("import_depth", IMPORT_DEPTH),
+    ("import_normals", IMPORT_NORMALS),
+    ("export_ao_r32f", EXPORT_AO_R32F),
+    ("export_ao_r16f", EXPORT_AO_R16F),
+    ("export_ao_r8", EXPORT_AO_R8),
 ];
 
 /// SPIR-V words of a module (validates the magic number and alignment).

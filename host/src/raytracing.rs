@@ -2,12 +2,10 @@
 //! ground-truth ray-tracing pipeline (raygen + miss + any-hit for alpha-masked geometry) with
 //! its shader binding table (layout per `shared/notes/lavapipe-rt.md`).
 
-use crate::descriptors::{Descriptor, storage_bindings};
-use crate::screen::compute_barrier;
-use crate::{Buffer, Gpu, GpuError, modules};
+use crate::descriptors::Descriptor;
+use crate::{Buffer, Gpu, GpuError};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_shaders::glam::Vec2;
-use aokit_shaders::groundtruth::GroundTruthFrame;
 use ash::vk;
 use gpu_allocator::MemoryLocation;
 
@@ -107,15 +105,21 @@ pub struct SceneAccel {
 }
 
 impl SceneAccel {
-    /// The alpha-test buffers in the binding order every any-hit shader declares them: corner
-    /// uvs, per-triangle material, mask headers, mask texels.
-    pub(crate) fn alpha_descriptors(&self) -> [Descriptor<'_>; 4] {
-        [
-            Descriptor::Storage(&self.uvs),
-            Descriptor::Storage(&self.materials),
-            Descriptor::Storage(&self.mask_headers),
-            Descriptor::Storage(&self.mask_texels),
-        ]
+    /// The alpha-test buffer bound as graph input `name` (`aokit_shaders::graph::inputs`).
+    pub(crate) fn alpha_buffer(&self, name: &str) -> Option<&Buffer> {
+        use aokit_shaders::graph::inputs;
+        Some(match name {
+            inputs::SCENE_UVS => &self.uvs,
+            inputs::SCENE_MATERIALS => &self.materials,
+            inputs::SCENE_MASK_HEADERS => &self.mask_headers,
+            inputs::SCENE_MASK_TEXELS => &self.mask_texels,
+            _ => return None,
+        })
+    }
+
+    /// A number that differs between live scenes (the TLAS handle).
+    pub(crate) fn identity(&self) -> u64 {
+        ash::vk::Handle::as_raw(self.tlas.0)
     }
 
     /// The TLAS as a descriptor.
@@ -221,14 +225,6 @@ impl SceneAccel {
             gpu.free_buffer(b);
         }
     }
-}
-
-/// Bindings of the ground-truth modules: 0 frame, 1 TLAS, 2 depth, 3 normals, 4 AO,
-/// 5 uvs, 6 materials, 7 mask headers, 8 mask texels.
-fn binding_types() -> Vec<vk::DescriptorType> {
-    let mut types = storage_bindings(9);
-    types[1] = vk::DescriptorType::ACCELERATION_STRUCTURE_KHR;
-    types
 }
 
 /// A ray-tracing pipeline of one ray-generation, one miss and one any-hit shader (a triangle
@@ -355,76 +351,5 @@ impl RtPipeline {
             gpu.device.destroy_descriptor_set_layout(self.set_layout, None);
         }
         gpu.free_buffer(self.sbt);
-    }
-}
-
-/// The ground-truth ray-tracing pipeline.
-pub struct GroundTruthPipeline {
-    rt: RtPipeline,
-}
-
-impl GroundTruthPipeline {
-    pub fn new(gpu: &Gpu) -> Result<Self, GpuError> {
-        let shaders = [
-            (modules::GROUNDTRUTH_RGEN, c"groundtruth_rgen"),
-            (modules::GROUNDTRUTH_MISS, c"groundtruth_miss"),
-            (modules::GROUNDTRUTH_AHIT, c"groundtruth_ahit"),
-        ];
-        Ok(GroundTruthPipeline { rt: RtPipeline::new(gpu, shaders, binding_types())? })
-    }
-
-    /// Ground truth for every inner pixel of a G-buffer already on the device. Returns the
-    /// full-target AO (guard band = 1) and the GPU time of the trace in milliseconds.
-    pub fn run(
-        &self,
-        gpu: &Gpu,
-        scene: &SceneAccel,
-        frame: &GroundTruthFrame,
-        depth: &Buffer,
-        normals: &Buffer,
-    ) -> Result<(Vec<f32>, f64), GpuError> {
-        let size = frame.camera.view.size();
-        let inner = size - 2 * frame.camera.view.guard;
-        let pixels = (size.x * size.y) as usize;
-        let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
-        let frame_buf = gpu.upload(std::slice::from_ref(frame), storage)?;
-        let ao = gpu.upload(&vec![1.0f32; pixels], storage)?;
-        let d = &gpu.device;
-        let result = (|| unsafe {
-            let pool = gpu.descriptor_pool(1, &self.rt.bindings)?;
-            let mut descriptors = vec![
-                Descriptor::Storage(&frame_buf),
-                Descriptor::Tlas(scene.tlas.0),
-                Descriptor::Storage(depth),
-                Descriptor::Storage(normals),
-                Descriptor::Storage(&ao),
-            ];
-            descriptors.extend(scene.alpha_descriptors());
-            let set = gpu.descriptor_set(pool, self.rt.set_layout, &descriptors)?;
-            let queries = d.create_query_pool(
-                &vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(2),
-                None,
-            )?;
-            let traced = gpu.submit(|cb| {
-                d.cmd_reset_query_pool(cb, queries, 0, 2);
-                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::TOP_OF_PIPE, queries, 0);
-                let r = self.rt.record_trace(gpu, cb, set, inner.x, inner.y);
-                compute_barrier(gpu, cb, vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR);
-                d.cmd_write_timestamp(cb, vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR, queries, 1);
-                r
-            });
-            let got = traced.and_then(|r| r).and_then(|_| gpu.timestamps_ms(queries, 2));
-            d.destroy_query_pool(queries, None);
-            d.destroy_descriptor_pool(pool, None);
-            Ok(got?[1])
-        })();
-        let out = result.and_then(|ms| Ok((gpu.download(&ao)?, ms)));
-        gpu.free_buffer(frame_buf);
-        gpu.free_buffer(ao);
-        out
-    }
-
-    pub fn destroy(self, gpu: &Gpu) {
-        self.rt.destroy(gpu);
     }
 }

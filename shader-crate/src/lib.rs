@@ -14,9 +14,12 @@
 
 pub use spirv_std::glam;
 
+pub mod adapters;
 pub mod blur;
 pub mod common;
 pub mod gbuffer;
+#[cfg(not(target_arch = "spirv"))]
+pub mod graph;
 pub mod groundtruth;
 pub mod gtao;
 pub mod hybrid;

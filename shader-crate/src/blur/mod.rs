@@ -1,5 +1,8 @@
 //! Separable depth-aware cross-bilateral blur, HBAO+ style (spec svao-raysd §12).
 
+#[cfg(not(target_arch = "spirv"))]
+pub mod graph;
+
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 

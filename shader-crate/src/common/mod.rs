@@ -3,12 +3,14 @@
 pub mod alpha;
 pub mod atomics;
 pub mod camera;
+pub mod denoise_terms;
 pub mod float_order;
 pub mod gbuffer_read;
 pub mod hash;
 pub mod math;
 pub mod noise;
 pub mod normal_codec;
+pub mod screen_space;
 pub mod tables;
 
 pub use camera::ViewParams;

@@ -8,6 +8,8 @@ use spirv_std::num_traits::Float;
 
 #[cfg(any(feature = "rt", not(target_arch = "spirv")))]
 pub mod rt;
+#[cfg(not(target_arch = "spirv"))]
+pub mod settings;
 
 use crate::common::camera::Camera;
 use crate::common::gbuffer_read::GBuffer;

@@ -1,9 +1,10 @@
 //! XeGTAO Denoise (spec gtao-raymarch-hybrid §2.7): an edge-aware 3×3 filter, repeated
 //! `max(1, DenoisePasses)` times; the last pass rescales by the 1.5 headroom.
 
-use super::main_pass::unpack_edges;
-use super::{GtaoParams, neighbour};
+use super::GtaoParams;
+use crate::common::denoise_terms::unpack_edges;
 use crate::common::math::sat;
+use crate::common::screen_space::neighbour;
 use crate::glam::{UVec2, vec4};
 
 /// Result of one denoise pass at a pixel.

@@ -7,6 +7,8 @@
 pub mod denoise;
 pub mod main_pass;
 pub mod prefilter;
+#[cfg(not(target_arch = "spirv"))]
+pub mod settings;
 
 pub use denoise::denoise_pixel;
 pub use main_pass::{GtaoPixel, gtao_pixel, normal_from_depth};
@@ -16,7 +18,8 @@ pub use prefilter::prefilter_texel;
 use spirv_std::num_traits::Float;
 
 use crate::common::ViewParams;
-use crate::glam::{UVec2, Vec2, Vec3, uvec2, vec3};
+use crate::common::screen_space::clamp_index;
+use crate::glam::{UVec2, Vec2, uvec2};
 
 /// Levels of the working-depth MIP chain (spec §2.1).
 pub const MIP_LEVELS: u32 = 5;
@@ -87,27 +90,6 @@ pub fn mip_texel(full: UVec2, k: u32, uv: Vec2) -> usize {
     let x = clamp_index((uv.x * s.x as f32).floor(), s.x);
     let y = clamp_index((uv.y * s.y as f32).floor(), s.y);
     mip_offset(full, k) + (y * s.x + x) as usize
-}
-
-/// `clamp(v, 0, n − 1)` of a float coordinate as an index (NaN → 0).
-#[inline]
-pub fn clamp_index(v: f32, n: u32) -> u32 {
-    if v > 0.0 { (v as u32).min(n - 1) } else { 0 }
-}
-
-/// `viewPos(uv, z) = ((2u−1)·tanX·z, (1−2v)·tanY·z, z)` in XeGTAO's +z-forward view space
-/// (spec §1.4).
-#[inline]
-pub fn view_pos(view: &ViewParams, uv: Vec2, z: f32) -> Vec3 {
-    vec3((2.0 * uv.x - 1.0) * view.tan_half_fov.x * z, (1.0 - 2.0 * uv.y) * view.tan_half_fov.y * z, z)
-}
-
-/// Pixel `p` clamped into the full target after adding `(dx, dy)` (clamp-to-edge reads).
-#[inline]
-pub fn neighbour(p: UVec2, dx: i32, dy: i32, size: UVec2) -> UVec2 {
-    let x = (p.x as i32 + dx).clamp(0, size.x as i32 - 1) as u32;
-    let y = (p.y as i32 + dy).clamp(0, size.y as i32 - 1) as u32;
-    uvec2(x, y)
 }
 
 use crate::glam::UVec3;

@@ -8,15 +8,17 @@ use spirv_std::num_traits::Float;
 
 #[cfg(any(feature = "rt", not(target_arch = "spirv")))]
 pub mod rt;
+#[cfg(not(target_arch = "spirv"))]
+pub mod settings;
 
 use crate::common::camera::Camera;
+use crate::common::denoise_terms::store_term;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::common::math::{frac, is_valid_depth};
 use crate::common::noise::{hilbert_index, spatio_temporal_noise};
+use crate::common::screen_space::view_pos;
 use crate::glam::{UVec2, Vec2, vec2, vec3};
 use crate::groundtruth::{OcclusionQuery, surface_point};
-use crate::gtao::main_pass::store_term;
-use crate::gtao::view_pos;
 use crate::raymarch::{depth_edges, facing_normal, hemisphere_dir, march};
 
 /// Hybrid parameters (spec §4.1 defaults in brackets).

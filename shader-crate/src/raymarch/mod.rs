@@ -9,14 +9,16 @@ use spirv_std::num_traits::Float;
 
 #[cfg(not(target_arch = "spirv"))]
 pub mod kernel;
+#[cfg(not(target_arch = "spirv"))]
+pub mod settings;
 
 use crate::common::ViewParams;
+use crate::common::denoise_terms::{edges, pack_edges, store_term};
 use crate::common::math::{is_valid_depth, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::decode_normal;
+use crate::common::screen_space::{clamp_index, neighbour, view_pos};
 use crate::glam::{UVec2, UVec3, Vec2, Vec3, vec2, vec3};
-use crate::gtao::main_pass::{edges, pack_edges, store_term};
-use crate::gtao::{neighbour, view_pos};
 use spirv_std::spirv;
 
 /// Most Poisson-disk directions a kernel may hold.
@@ -66,8 +68,8 @@ fn project(view: &ViewParams, s: Vec3) -> Vec2 {
 #[inline]
 pub fn depth_at(view: &ViewParams, depth: &[f32], uv: Vec2) -> f32 {
     let size = view.size();
-    let x = crate::gtao::clamp_index((uv.x * view.res.x).floor(), size.x);
-    let y = crate::gtao::clamp_index((uv.y * view.res.y).floor(), size.y);
+    let x = clamp_index((uv.x * view.res.x).floor(), size.x);
+    let y = clamp_index((uv.y * view.res.y).floor(), size.y);
     let d = depth[(y * size.x + x) as usize];
     if is_valid_depth(d, view.far) { d } else { view.far }
 }

@@ -6,6 +6,8 @@
 
 pub mod pass1;
 pub mod pass2;
+#[cfg(not(target_arch = "spirv"))]
+pub mod settings;
 
 pub use pass1::{Pass1Pixel, pass1_pixel, primary_sample, sd_pixel};
 pub use pass2::{Refine, pass2_pixel};

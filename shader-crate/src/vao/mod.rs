@@ -2,6 +2,8 @@
 //! depth: spec svao-raysd §4.1–§4.4 and the plain-VAO case of §5.
 
 pub mod kernel;
+#[cfg(not(target_arch = "spirv"))]
+pub mod settings;
 
 pub use kernel::{VaoParams, vao_pixel};
 

@@ -1,0 +1,657 @@
+//! The GPU-resident executor of a technique's pass graph (`aokit_shaders::graph`).
+//!
+//! An [`AoContext`] owns the pipelines (made on first use from the committed SPIR-V, one per
+//! entry point) and the graph's resources (device-local storage buffers, re-made only when their
+//! size changes). [`AoContext::record`] records one frame — resource initialisation, every pass
+//! with the barriers its reads and writes need, timestamps — into the CALLER's command buffer:
+//! no host transfer, no submit, no wait. It knows kernels and bindings, never techniques.
+//!
+//! Synchronisation contract:
+//! - `record` starts with a barrier that orders it after all earlier work on the queue (so a
+//!   frame may be recorded while the previous one is in flight on the same queue) and ends with a
+//!   barrier that makes the outputs visible to later compute, fragment and transfer reads.
+//! - Buffers and descriptor pools replaced because of a size or binding change are released
+//!   [`FRAMES_IN_FLIGHT`] frames later; everything else lives until the context is dropped, and
+//!   the caller must make sure the device finished the context's work before dropping it.
+
+use crate::adapters::{Adapters, AoImage, EngineImage};
+use crate::compute::{ComputeKernel, memory_barrier};
+use crate::descriptors::Descriptor;
+use crate::descriptors::storage_bindings;
+use crate::gbuffer::RasterSdPass;
+use crate::manifest::{Manifest, ModuleManifest};
+use crate::raytracing::{RtPipeline, SceneAccel};
+use crate::{Buffer, Gpu, GpuError, modules};
+use aokit_shaders::adapters::ImportParams;
+use aokit_shaders::graph::{Access, Graph, Init, Lifetime, Pass, PassKind, inputs};
+use ash::vk;
+use ash::vk::Handle;
+use gpu_allocator::MemoryLocation;
+use std::borrow::Borrow;
+use std::collections::HashMap;
+use std::ffi::CString;
+
+/// Frames a replaced buffer or descriptor pool is kept before it is freed.
+pub const FRAMES_IN_FLIGHT: u64 = 3;
+
+/// An engine's frame (see `crate::adapters` for formats, usages and layouts): its depth image
+/// (hardware depth in `import.depth_convention` with `import.near`/`import.far`, or linear), an
+/// optional view-space normal image (`n·0.5 + 0.5` in RGB; without it, normals are derived from
+/// depth by XeGTAO's pass 0), the AO output image, and `import`, whose `view` must be the graph's
+/// camera view (`FrameDesc::camera.view`) and `engine_size` the images' size.
+#[derive(Copy, Clone)]
+pub struct EngineFrame<'a> {
+    pub depth: EngineImage,
+    pub normals: Option<EngineImage>,
+    pub output: AoImage,
+    pub import: ImportParams,
+    /// The scene's acceleration structure, for graphs that trace rays.
+    pub scene: Option<&'a SceneAccel>,
+}
+
+/// Internal G-buffer buffers an engine frame is imported into.
+const ENGINE_DEPTH: &str = "engine_linear_depth";
+const ENGINE_NORMALS: &str = "engine_view_normals";
+
+/// What a frame reads besides the graph's own resources: the G-buffer in aokit's internal layout
+/// (full target, linear `f32` depth, encoded `u32` normals) and, for some graphs, the peeled
+/// second layer and the scene.
+#[derive(Copy, Clone)]
+pub struct GpuInputs<'a> {
+    pub depth: &'a Buffer,
+    pub normals: &'a Buffer,
+    pub second_depth: Option<&'a Buffer>,
+    pub scene: Option<&'a SceneAccel>,
+    /// The scene for raster passes (the raster SD map).
+    pub raster: Option<RasterScene<'a>>,
+}
+
+/// The scene as raster passes draw it: the de-indexed vertex stream (`GBufferVertex`) and the
+/// alpha masks (headers, texels) their fragment shaders test.
+#[derive(Copy, Clone)]
+pub struct RasterScene<'a> {
+    pub vertices: &'a Buffer,
+    pub vertex_count: u32,
+    pub mask_headers: &'a Buffer,
+    pub mask_texels: &'a Buffer,
+}
+
+enum Pipeline {
+    Compute { kernel: ComputeKernel, workgroup: [u32; 3] },
+    RayTracing(RtPipeline),
+    Raster(RasterSdPass),
+}
+
+/// A resource on the device.
+struct DeviceResource {
+    buffer: Buffer,
+    len: usize,
+}
+
+/// Descriptor sets of one graph with one set of bound buffers.
+struct BoundSets {
+    key: Vec<vk::Buffer>,
+    pool: vk::DescriptorPool,
+    sets: Vec<vk::DescriptorSet>,
+}
+
+/// Pass timings of the last recorded frame.
+struct Timing {
+    pool: vk::QueryPool,
+    capacity: u32,
+    labels: Vec<&'static str>,
+}
+
+/// Runs pass graphs on one Vulkan device (see the module documentation).
+pub struct AoContext<G: Borrow<Gpu> = Gpu> {
+    owner: G,
+    manifest: Manifest,
+    pipelines: HashMap<&'static str, Pipeline>,
+    /// Boxed: a frame's inputs may point into an entry while others are inserted.
+    resources: HashMap<&'static str, Box<DeviceResource>>,
+    bound: Option<BoundSets>,
+    timing: Option<Timing>,
+    /// The adapter pipelines and this frame's descriptor pool for them, made on the first engine
+    /// frame.
+    adapters: Option<Adapters>,
+    /// `(frame recorded, buffer or pool)` waiting to be freed.
+    retired: Vec<(u64, Retired)>,
+    frame: u64,
+}
+
+enum Retired {
+    Buffer(Buffer),
+    Pool(vk::DescriptorPool),
+    Queries(vk::QueryPool),
+}
+
+impl<G: Borrow<Gpu>> AoContext<G> {
+    /// A context on `gpu` (made headless with [`Gpu::new`] or from the caller's device; an
+    /// `Rc<Gpu>` or `&Gpu` shares it with other users).
+    pub fn new(gpu: G) -> AoContext<G> {
+        AoContext {
+            owner: gpu,
+            manifest: Manifest::committed(),
+            pipelines: HashMap::new(),
+            resources: HashMap::new(),
+            bound: None,
+            timing: None,
+            adapters: None,
+            retired: Vec::new(),
+            frame: 0,
+        }
+    }
+
+    pub fn gpu(&self) -> &Gpu {
+        self.owner.borrow()
+    }
+
+    /// The stages passes run in: compute, and ray tracing where the device has it.
+    fn shader_stages(&self) -> vk::PipelineStageFlags {
+        let mut stages = vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::FRAGMENT_SHADER;
+        if self.gpu().has_ray_tracing() {
+            stages |= vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR;
+        }
+        stages
+    }
+
+    fn module(&self, entry: &str) -> Result<&ModuleManifest, GpuError> {
+        self.manifest
+            .modules
+            .iter()
+            .find(|m| m.entry_point == entry)
+            .ok_or_else(|| GpuError::Input(format!("no SPIR-V module for entry point '{entry}'")))
+    }
+
+    fn spirv(entry: &str) -> Result<&'static [u8], GpuError> {
+        modules::ALL
+            .iter()
+            .find(|(name, _)| *name == entry)
+            .map(|(_, bytes)| *bytes)
+            .ok_or_else(|| GpuError::Input(format!("no SPIR-V module for entry point '{entry}'")))
+    }
+
+    /// The pipeline of `pass`, made on first use.
+    fn ensure_pipeline(&mut self, pass: &Pass) -> Result<(), GpuError> {
+        if self.pipelines.contains_key(pass.entry) {
+            return Ok(());
+        }
+        let module = self.module(pass.entry)?.clone();
+        let slots = module.bindings.iter().map(|b| b.binding + 1).max().unwrap_or(0);
+        let pipeline = match pass.kind {
+            PassKind::Compute => {
+                let entry = CString::new(pass.entry).expect("entry names have no NUL");
+                let types = storage_bindings(slots);
+                let spirv = Self::spirv(pass.entry)?;
+                let kernel = ComputeKernel::new(self.gpu(), spirv, &entry, &types, module.push_constant_bytes)?;
+                Pipeline::Compute { kernel, workgroup: module.workgroup_size.unwrap_or([1, 1, 1]) }
+            }
+            PassKind::RayTracing { miss, any_hit } => {
+                let names = [pass.entry, miss, any_hit].map(|n| CString::new(n).expect("entry names have no NUL"));
+                let shaders = [
+                    (Self::spirv(pass.entry)?, names[0].as_c_str()),
+                    (Self::spirv(miss)?, names[1].as_c_str()),
+                    (Self::spirv(any_hit)?, names[2].as_c_str()),
+                ];
+                let mut count = slots;
+                for b in &pass.bindings {
+                    count = count.max(b.slot + 1);
+                }
+                let types = (0..count)
+                    .map(|slot| match pass.resource(slot) {
+                        Some(inputs::SCENE_TLAS) => vk::DescriptorType::ACCELERATION_STRUCTURE_KHR,
+                        _ => vk::DescriptorType::STORAGE_BUFFER,
+                    })
+                    .collect();
+                Pipeline::RayTracing(RtPipeline::new(self.gpu(), shaders, types)?)
+            }
+            // The one raster pipeline state aokit has: no attachments, dynamic viewport.
+            PassKind::Raster { vertex: "gbuffer_vs" } if pass.entry == "rastersd_fs" => {
+                Pipeline::Raster(RasterSdPass::new(self.gpu())?)
+            }
+            PassKind::Raster { vertex } => {
+                return Err(GpuError::Input(format!("no raster pipeline for {vertex} + {}", pass.entry)));
+            }
+        };
+        self.pipelines.insert(pass.entry, pipeline);
+        Ok(())
+    }
+
+    /// Make or re-make the graph's buffers (sizes as declared); returns the names made now.
+    fn ensure_resources(&mut self, graph: &Graph) -> Result<Vec<&'static str>, GpuError> {
+        self.ensure_named(&graph.resources)
+    }
+
+    /// Make or re-make these buffers; returns the names made now.
+    fn ensure_named(&mut self, resources: &[aokit_shaders::graph::Resource]) -> Result<Vec<&'static str>, GpuError> {
+        let mut made = Vec::new();
+        for r in resources {
+            if self.resources.get(r.name).is_some_and(|d| d.len == r.len) {
+                continue;
+            }
+            let usage = vk::BufferUsageFlags::STORAGE_BUFFER
+                | vk::BufferUsageFlags::TRANSFER_DST
+                | vk::BufferUsageFlags::TRANSFER_SRC;
+            let buffer = self.gpu().create_buffer(4 * r.len as u64, usage, MemoryLocation::GpuOnly)?;
+            if let Some(old) = self.resources.insert(r.name, Box::new(DeviceResource { buffer, len: r.len })) {
+                self.retired.push((self.frame, Retired::Buffer(old.buffer)));
+            }
+            made.push(r.name);
+        }
+        Ok(made)
+    }
+
+    /// The device buffer of resource `name` after the frames recorded so far.
+    pub fn buffer(&self, name: &str) -> Option<&Buffer> {
+        self.resources.get(name).map(|r| &r.buffer)
+    }
+
+    /// Read resource `name` back (submits a copy and waits: for tools and tests, not frames).
+    pub fn download<T: bytemuck::Pod>(&self, name: &str) -> Result<Vec<T>, GpuError> {
+        let r = self.resources.get(name).ok_or_else(|| GpuError::Input(format!("no resource '{name}'")))?;
+        let mut out = self.gpu().download::<T>(&r.buffer)?;
+        out.truncate(4 * r.len / size_of::<T>());
+        Ok(out)
+    }
+
+    /// Record one frame of `graph` into `cmd` (a primary command buffer in the recording state,
+    /// from a pool of the context's queue family). See the module documentation for the
+    /// synchronisation contract.
+    pub fn record(&mut self, cmd: vk::CommandBuffer, graph: &Graph, inputs: &GpuInputs) -> Result<(), GpuError> {
+        graph.validate().map_err(GpuError::Input)?;
+        self.frame += 1;
+        self.release_retired();
+        for pass in &graph.passes {
+            self.ensure_pipeline(pass)?;
+        }
+        let made = self.ensure_resources(graph)?;
+        let buffers = self.bound_buffers(graph, inputs)?;
+        self.ensure_sets(graph, &buffers, inputs)?;
+        self.ensure_timing(graph)?;
+        let stages = self.shader_stages();
+        let d = &self.gpu().device;
+        let timing = self.timing.as_ref().expect("made above");
+        unsafe {
+            d.cmd_reset_query_pool(cmd, timing.pool, 0, timing.capacity);
+        }
+        // Order after earlier work on the queue (the previous frame may still read these).
+        let transfer = vk::PipelineStageFlags::TRANSFER;
+        memory_barrier(self.gpu(), cmd, transfer | stages, transfer | stages);
+        unsafe { d.cmd_write_timestamp(cmd, vk::PipelineStageFlags::TOP_OF_PIPE, timing.pool, 0) };
+        for r in &graph.resources {
+            if r.lifetime == Lifetime::Persistent && !made.contains(&r.name) {
+                continue;
+            }
+            let raw = self.resources[r.name].buffer.raw;
+            match &r.init {
+                Init::Fill(bits) => unsafe { d.cmd_fill_buffer(cmd, raw, 0, vk::WHOLE_SIZE, *bits) },
+                Init::Data(words) => {
+                    // vkCmdUpdateBuffer takes at most 65536 bytes at a time.
+                    for (i, chunk) in words.chunks(16384).enumerate() {
+                        unsafe { d.cmd_update_buffer(cmd, raw, (i * 65536) as u64, bytemuck::cast_slice(chunk)) };
+                    }
+                }
+                Init::Undefined => {}
+            }
+        }
+        // The fills and updates are visible to the passes and to the snapshots' copies.
+        memory_barrier(self.gpu(), cmd, transfer, transfer | stages);
+        // Barriers from the accesses: a pass waits for earlier writes it reads or overwrites
+        // and for earlier reads of what it writes.
+        let mut written: Vec<&str> = Vec::new();
+        let mut read: Vec<&str> = Vec::new();
+        let mut stamp = 0;
+        let sets = &self.bound.as_ref().expect("made above").sets;
+        for (i, pass) in graph.passes.iter().enumerate() {
+            let hazard = pass
+                .bindings
+                .iter()
+                .any(|b| written.contains(&b.resource) || (b.access.writes() && read.contains(&b.resource)));
+            if hazard {
+                memory_barrier(self.gpu(), cmd, stages, stages);
+                written.clear();
+                read.clear();
+            }
+            for b in &pass.bindings {
+                if b.access.writes() {
+                    written.push(b.resource);
+                }
+                if b.access.reads() {
+                    read.push(b.resource);
+                }
+            }
+            match &self.pipelines[pass.entry] {
+                Pipeline::Compute { kernel, workgroup } => {
+                    let groups =
+                        [pass.invocations.x.div_ceil(workgroup[0]), pass.invocations.y.div_ceil(workgroup[1]), 1];
+                    kernel.record_set(self.gpu(), cmd, sets[i], &pass.push_constants, groups);
+                }
+                Pipeline::RayTracing(p) => {
+                    p.record_trace(self.gpu(), cmd, sets[i], pass.invocations.x, pass.invocations.y)?
+                }
+                Pipeline::Raster(p) => {
+                    let scene = inputs
+                        .raster
+                        .ok_or_else(|| GpuError::Input("a raster pass needs the scene's vertices".into()))?;
+                    let params = bytemuck::pod_read_unaligned(&pass.push_constants);
+                    p.record(self.gpu(), cmd, sets[i], (scene.vertices, scene.vertex_count), &params, pass.invocations);
+                }
+            }
+            for snap in graph.snapshots.iter().filter(|s| s.after == i) {
+                memory_barrier(self.gpu(), cmd, stages, transfer);
+                let (from, to) = (&self.resources[snap.from].buffer, &self.resources[snap.to].buffer);
+                let region = [vk::BufferCopy::default().size(from.size.min(to.size))];
+                unsafe { d.cmd_copy_buffer(cmd, from.raw, to.raw, &region) };
+                memory_barrier(self.gpu(), cmd, transfer, stages);
+            }
+            let last_of_label = graph.passes.get(i + 1).is_none_or(|next| next.label != pass.label);
+            if last_of_label {
+                stamp += 1;
+                let stage = match pass.kind {
+                    PassKind::Compute => vk::PipelineStageFlags::COMPUTE_SHADER,
+                    PassKind::RayTracing { .. } => vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR,
+                    PassKind::Raster { .. } => vk::PipelineStageFlags::BOTTOM_OF_PIPE,
+                };
+                unsafe { d.cmd_write_timestamp(cmd, stage, timing.pool, stamp) };
+            }
+        }
+        memory_barrier(self.gpu(), cmd, transfer | stages, transfer | vk::PipelineStageFlags::FRAGMENT_SHADER | stages);
+        Ok(())
+    }
+
+    /// Record one frame of `graph` on the engine's images into `cmd`: import the depth (and
+    /// normals, or derive them from depth) into aokit's internal layout, run the graph, export
+    /// `graph.output` into `frame.output`. Same contract as [`AoContext::record`]; the images'
+    /// layouts and barriers are the caller's (see `crate::adapters`).
+    pub fn record_engine(
+        &mut self,
+        cmd: vk::CommandBuffer,
+        graph: &Graph,
+        frame: &EngineFrame,
+    ) -> Result<(), GpuError> {
+        if frame.import.view != graph.view {
+            return Err(GpuError::Input("EngineFrame::import.view differs from the graph's camera view".into()));
+        }
+        if self.adapters.is_none() {
+            self.adapters = Some(Adapters::new(self.gpu())?);
+        }
+        let size = frame.import.view.size();
+        let pixels = (size.x * size.y) as usize;
+        let internal = [ENGINE_DEPTH, ENGINE_NORMALS].map(|name| aokit_shaders::graph::Resource {
+            name,
+            elem: aokit_shaders::graph::Elem::U32,
+            len: pixels,
+            init: Init::Undefined,
+            lifetime: Lifetime::PerFrame,
+            doc: "",
+        });
+        let made = self.ensure_named(&internal)?;
+        if !made.is_empty() {
+            // New input buffers: the graph's descriptor sets must be written anew.
+            self.invalidate_bindings();
+        }
+        let adapters = self.adapters.as_ref().expect("made above");
+        let pool = adapters.create_descriptor_pool(self.gpu(), 2)?;
+        self.retired.push((self.frame + 1, Retired::Pool(pool)));
+        let (depth, normals) = (&self.resources[ENGINE_DEPTH].buffer, &self.resources[ENGINE_NORMALS].buffer);
+        let normal_input = frame.normals.map(|image| (image, normals));
+        adapters.record_import(self.gpu(), cmd, pool, &frame.import, (frame.depth, depth), normal_input)?;
+        let mut full = graph.clone();
+        if frame.normals.is_none() {
+            // XeGTAO's pass 0 reads only the view (spec gtao-raymarch-hybrid §2.4).
+            let params = aokit_shaders::gtao::GtaoParams { view: frame.import.view, ..bytemuck::Zeroable::zeroed() };
+            let bindings = [(inputs::LINEAR_DEPTH, Access::Read), (ENGINE_NORMALS, Access::Write)];
+            let normals_pass =
+                Pass::compute("normals_from_depth", "gtao_normals", &bindings, size, bytemuck::bytes_of(&params));
+            // The graph's passes read the derived normals under their own name, so `record`
+            // sees the read after pass 0's write and puts a barrier between them (bound to the
+            // same buffer as `inputs.normals` below).
+            for b in full.passes.iter_mut().flat_map(|p| &mut p.bindings) {
+                if b.resource == inputs::VIEW_NORMALS {
+                    b.resource = ENGINE_NORMALS;
+                }
+            }
+            full.passes.insert(0, normals_pass);
+            full.resources.push(internal[1].clone());
+        }
+        // Diagnostic copies are for reports, not engine frames.
+        full.snapshots.clear();
+        let (depth, normals) = (&self.resources[ENGINE_DEPTH].buffer, &self.resources[ENGINE_NORMALS].buffer);
+        // SAFETY of the aliasing below: the resources are boxed (inserting others does not move
+        // them) and `record` does not replace these two: the depth is not in `full.resources`,
+        // the normals are, at the size made above, so `ensure_resources` keeps them.
+        let (depth, normals): (*const Buffer, *const Buffer) = (depth, normals);
+        let inputs = GpuInputs {
+            depth: unsafe { &*depth },
+            normals: unsafe { &*normals },
+            second_depth: None,
+            scene: frame.scene,
+            raster: None,
+        };
+        self.record(cmd, &full, &inputs)?;
+        let adapters = self.adapters.as_ref().expect("made above");
+        let ao = &self.resources[graph.output].buffer;
+        adapters.record_export(self.gpu(), cmd, pool, &frame.import, ao, frame.output)
+    }
+
+    /// Forget the descriptor sets, so the next frame writes new ones: call it after destroying an
+    /// input buffer that an earlier frame bound (a new buffer may reuse its handle).
+    pub fn invalidate_bindings(&mut self) {
+        if let Some(old) = self.bound.take() {
+            self.retired.push((self.frame, Retired::Pool(old.pool)));
+        }
+    }
+
+    /// `(label, ms)` of the last recorded frame, once the device finished it (waits for the
+    /// timestamps).
+    pub fn pass_times(&self) -> Result<Vec<(&'static str, f64)>, GpuError> {
+        let Some(t) = &self.timing else { return Ok(Vec::new()) };
+        let stamps = self.gpu().timestamps_ms(t.pool, t.labels.len() + 1)?;
+        Ok(t.labels.iter().enumerate().map(|(i, &label)| (label, stamps[i + 1] - stamps[i])).collect())
+    }
+
+    /// Record `graph` into a command buffer of the context's own, submit it and wait (the CLI's
+    /// and tests' one-shot frame). Returns the wall time from submit to fence in ms.
+    pub fn run(&mut self, graph: &Graph, inputs: &GpuInputs) -> Result<f64, GpuError> {
+        let cmd = self.gpu().begin_one_shot()?;
+        let recorded = self.record(cmd, graph, inputs);
+        let waited = self.gpu().finish_one_shot(cmd, recorded.is_ok());
+        recorded?;
+        waited
+    }
+
+    /// Each binding's buffer, pass after pass (the key of the descriptor sets).
+    fn bound_buffers(&self, graph: &Graph, inputs: &GpuInputs) -> Result<Vec<vk::Buffer>, GpuError> {
+        let mut out = Vec::new();
+        for pass in &graph.passes {
+            for b in &pass.bindings {
+                out.push(self.input_or_resource(b.resource, inputs)?.map_or(vk::Buffer::null(), |b| b.raw));
+            }
+        }
+        if let Some(scene) = inputs.scene {
+            out.push(vk::Buffer::from_raw(scene.identity()));
+        }
+        if let Some(raster) = inputs.raster {
+            out.push(raster.vertices.raw);
+        }
+        Ok(out)
+    }
+
+    /// The buffer bound for `name`; `None` for the TLAS.
+    fn input_or_resource<'a>(&'a self, name: &str, inputs: &GpuInputs<'a>) -> Result<Option<&'a Buffer>, GpuError> {
+        let missing = |what: &str| GpuError::Input(format!("the graph reads {what}, which was not given"));
+        Ok(Some(match name {
+            inputs::LINEAR_DEPTH => inputs.depth,
+            inputs::VIEW_NORMALS => inputs.normals,
+            inputs::SECOND_DEPTH => inputs.second_depth.ok_or_else(|| missing("a second depth layer"))?,
+            inputs::SCENE_TLAS => {
+                inputs.scene.ok_or_else(|| missing("the scene"))?;
+                return Ok(None);
+            }
+            inputs::SCENE_MASK_HEADERS if inputs.raster.is_some() => inputs.raster.expect("checked").mask_headers,
+            inputs::SCENE_MASK_TEXELS if inputs.raster.is_some() => inputs.raster.expect("checked").mask_texels,
+            inputs::SCENE_VERTICES => inputs.raster.ok_or_else(|| missing("the scene's vertices"))?.vertices,
+            name if inputs::ALL.contains(&name) => {
+                let scene = inputs.scene.ok_or_else(|| missing("the scene"))?;
+                scene.alpha_buffer(name).expect("every scene input other than the TLAS is an alpha buffer")
+            }
+            name => &self.resources.get(name).ok_or_else(|| GpuError::Input(format!("no resource '{name}'")))?.buffer,
+        }))
+    }
+
+    /// Descriptor sets for the graph, re-made when a bound buffer changed.
+    fn ensure_sets(&mut self, graph: &Graph, key: &[vk::Buffer], inputs: &GpuInputs) -> Result<(), GpuError> {
+        if self.bound.as_ref().is_some_and(|b| b.key == key) {
+            return Ok(());
+        }
+        let mut counts: HashMap<vk::DescriptorType, u32> = HashMap::new();
+        for pass in &graph.passes {
+            for b in &pass.bindings {
+                let ty = if b.resource == inputs::SCENE_TLAS {
+                    vk::DescriptorType::ACCELERATION_STRUCTURE_KHR
+                } else {
+                    vk::DescriptorType::STORAGE_BUFFER
+                };
+                *counts.entry(ty).or_default() += 1;
+            }
+        }
+        let sizes: Vec<_> =
+            counts.iter().map(|(&ty, &n)| vk::DescriptorPoolSize::default().ty(ty).descriptor_count(n)).collect();
+        let info = vk::DescriptorPoolCreateInfo::default().max_sets(graph.passes.len() as u32).pool_sizes(&sizes);
+        let pool = unsafe { self.gpu().device.create_descriptor_pool(&info, None)? };
+        let mut sets = Vec::new();
+        for pass in &graph.passes {
+            let (layout, count) = match &self.pipelines[pass.entry] {
+                Pipeline::Compute { kernel, .. } => (kernel.set_layout(), kernel.bindings()),
+                Pipeline::RayTracing(p) => (p.set_layout, p.bindings.len() as u32),
+                Pipeline::Raster(p) => (p.set_layout, crate::gbuffer::RASTER_SD_BINDINGS),
+            };
+            let mut descriptors = Vec::new();
+            for slot in 0..count {
+                let name = pass.resource(slot).ok_or_else(|| {
+                    GpuError::Input(format!("pass '{}' leaves binding {slot} of its module unbound", pass.entry))
+                })?;
+                descriptors.push(match self.input_or_resource(name, inputs)? {
+                    Some(buffer) => Descriptor::Storage(buffer),
+                    None => inputs.scene.expect("checked").tlas_descriptor(),
+                });
+            }
+            sets.push(self.gpu().descriptor_set(pool, layout, &descriptors)?);
+        }
+        if let Some(old) = self.bound.replace(BoundSets { key: key.to_vec(), pool, sets }) {
+            self.retired.push((self.frame, Retired::Pool(old.pool)));
+        }
+        Ok(())
+    }
+
+    /// A timestamp query pool with room for the graph's labels.
+    fn ensure_timing(&mut self, graph: &Graph) -> Result<(), GpuError> {
+        let mut labels: Vec<&'static str> = Vec::new();
+        for pass in &graph.passes {
+            if labels.last() != Some(&pass.label) {
+                labels.push(pass.label);
+            }
+        }
+        let needed = labels.len() as u32 + 1;
+        if let Some(t) = &mut self.timing
+            && t.capacity >= needed
+        {
+            t.labels = labels;
+            return Ok(());
+        }
+        let info = vk::QueryPoolCreateInfo::default().query_type(vk::QueryType::TIMESTAMP).query_count(needed);
+        let pool = unsafe { self.gpu().device.create_query_pool(&info, None)? };
+        if let Some(old) = self.timing.replace(Timing { pool, capacity: needed, labels }) {
+            // Frames in flight may still write the old pool: retire it like buffers.
+            self.retired.push((self.frame, Retired::Queries(old.pool)));
+        }
+        Ok(())
+    }
+
+    fn release_retired(&mut self) {
+        let frame = self.frame;
+        let (done, keep): (Vec<_>, Vec<_>) =
+            std::mem::take(&mut self.retired).into_iter().partition(|(f, _)| f + FRAMES_IN_FLIGHT <= frame);
+        self.retired = keep;
+        for (_, r) in done {
+            self.free(r);
+        }
+    }
+
+    fn free(&self, r: Retired) {
+        match r {
+            Retired::Buffer(b) => self.gpu().free_buffer(b),
+            Retired::Pool(p) => unsafe { self.gpu().device.destroy_descriptor_pool(p, None) },
+            Retired::Queries(q) => unsafe { self.gpu().device.destroy_query_pool(q, None) },
+        }
+    }
+}
+
+impl<G: Borrow<Gpu>> Drop for AoContext<G> {
+    fn drop(&mut self) {
+        if let Some(a) = self.adapters.take() {
+            a.destroy(self.gpu());
+        }
+        for (_, r) in std::mem::take(&mut self.retired) {
+            self.free(r);
+        }
+        if let Some(b) = self.bound.take() {
+            self.free(Retired::Pool(b.pool));
+        }
+        if let Some(t) = self.timing.take() {
+            self.free(Retired::Queries(t.pool));
+        }
+        for (_, r) in std::mem::take(&mut self.resources) {
+            self.gpu().free_buffer(r.buffer);
+        }
+        for (_, p) in std::mem::take(&mut self.pipelines) {
+            match p {
+                Pipeline::Compute { kernel, .. } => kernel.destroy(self.gpu()),
+                Pipeline::RayTracing(p) => p.destroy(self.gpu()),
+                Pipeline::Raster(p) => p.destroy(self.gpu()),
+            }
+        }
+    }
+}
+
+impl Gpu {
+    /// A primary command buffer from the Gpu's own pool, recording (for tools and tests that
+    /// record frames themselves; finish it with [`Gpu::finish_one_shot`]).
+    pub fn begin_one_shot(&self) -> Result<vk::CommandBuffer, GpuError> {
+        let info = vk::CommandBufferAllocateInfo::default()
+            .command_pool(self.pool)
+            .level(vk::CommandBufferLevel::PRIMARY)
+            .command_buffer_count(1);
+        let cmd = unsafe { self.device.allocate_command_buffers(&info)? }[0];
+        let begin = vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
+        if let Err(e) = unsafe { self.device.begin_command_buffer(cmd, &begin) } {
+            unsafe { self.device.free_command_buffers(self.pool, &[cmd]) };
+            return Err(e.into());
+        }
+        Ok(cmd)
+    }
+
+    /// End `cmd`, submit it when `submit` (else just free it), wait, free it. Returns the wall
+    /// time from submit to the fence in ms.
+    pub fn finish_one_shot(&self, cmd: vk::CommandBuffer, submit: bool) -> Result<f64, GpuError> {
+        let d = &self.device;
+        let cmds = [cmd];
+        let result = (|| unsafe {
+            d.end_command_buffer(cmd)?;
+            if !submit {
+                return Ok(0.0);
+            }
+            let fence = d.create_fence(&vk::FenceCreateInfo::default(), None)?;
+            let start = std::time::Instant::now();
+            let waited = d
+                .queue_submit(self.queue, &[vk::SubmitInfo::default().command_buffers(&cmds)], fence)
+                .and_then(|_| d.wait_for_fences(&[fence], true, u64::MAX));
+            let ms = start.elapsed().as_secs_f64() * 1e3;
+            d.destroy_fence(fence, None);
+            waited?;
+            Ok(ms)
+        })();
+        unsafe { d.free_command_buffers(self.pool, &cmds) };
+        result
+    }
+}

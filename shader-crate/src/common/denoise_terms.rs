@@ -1,0 +1,46 @@
+//! The input of XeGTAO's denoiser (spec gtao-raymarch-hybrid §2.6–§2.7), written by XeGTAO's
+//! main pass, the ray march and the hybrid: AO terms stored as 0–255 and packed depth edges.
+
+#[allow(unused_imports)]
+use spirv_std::num_traits::Float;
+
+use crate::common::math::sat;
+use crate::glam::{Vec4, vec4};
+
+/// Round half to even (HLSL `round`, spec §1.5).
+#[inline]
+pub fn round_even(x: f32) -> f32 {
+    let r = (x + 0.5).floor();
+    if r - x == 0.5 && (r * 0.5).floor() * 2.0 != r { r - 1.0 } else { r }
+}
+
+/// Edge weights (L, R, T, B) of a pixel at depth `zc` from its 4-neighbours (spec §2.6.1):
+/// slope-corrected depth differences, `sat(1.25 − min(|Δ|, |Δ'|)/(0.011·zc))`, 1 = connected.
+#[inline]
+pub fn edges(zc: f32, zl: f32, zr: f32, zt: f32, zb: f32) -> Vec4 {
+    let d = vec4(zl, zr, zt, zb) - zc;
+    let slope_lr = (d.y - d.x) * 0.5;
+    let slope_tb = (d.w - d.z) * 0.5;
+    let adjusted = d + vec4(slope_lr, -slope_lr, slope_tb, -slope_tb);
+    let m = d.abs().min(adjusted.abs()) / (zc * 0.011);
+    vec4(sat(1.25 - m.x), sat(1.25 - m.y), sat(1.25 - m.z), sat(1.25 - m.w))
+}
+
+/// Pack edges as XeGTAO's R8 value: `q = round(sat(e)·2.9)`, `64·qL + 16·qR + 4·qT + qB`.
+#[inline]
+pub fn pack_edges(e: Vec4) -> u32 {
+    let q = |v: f32| round_even(sat(v) * 2.9) as u32;
+    64 * q(e.x) + 16 * q(e.y) + 4 * q(e.z) + q(e.w)
+}
+
+/// Unpack [`pack_edges`]: each 2-bit field / 3.
+#[inline]
+pub fn unpack_edges(p: u32) -> Vec4 {
+    vec4(((p >> 6) & 3) as f32, ((p >> 4) & 3) as f32, ((p >> 2) & 3) as f32, (p & 3) as f32) / 3.0
+}
+
+/// `uint(sat(vis/1.5)·255 + 0.5)` (spec §2.6.4).
+#[inline]
+pub fn store_term(vis: f32) -> u32 {
+    (sat(vis / 1.5) * 255.0 + 0.5) as u32
+}

@@ -1,0 +1,27 @@
+//! Screen-space helpers shared by the techniques that read depth buffers (XeGTAO, the ray
+//! march, the hybrid): clamp-to-edge indexing and XeGTAO's +z-forward view position (spec
+//! gtao-raymarch-hybrid §1.4–§1.5).
+
+use crate::common::ViewParams;
+use crate::glam::{UVec2, Vec2, Vec3, uvec2, vec3};
+
+/// `clamp(v, 0, n − 1)` of a float coordinate as an index (NaN → 0).
+#[inline]
+pub fn clamp_index(v: f32, n: u32) -> u32 {
+    if v > 0.0 { (v as u32).min(n - 1) } else { 0 }
+}
+
+/// `viewPos(uv, z) = ((2u−1)·tanX·z, (1−2v)·tanY·z, z)` in XeGTAO's +z-forward view space
+/// (spec §1.4).
+#[inline]
+pub fn view_pos(view: &ViewParams, uv: Vec2, z: f32) -> Vec3 {
+    vec3((2.0 * uv.x - 1.0) * view.tan_half_fov.x * z, (1.0 - 2.0 * uv.y) * view.tan_half_fov.y * z, z)
+}
+
+/// Pixel `p` clamped into the full target after adding `(dx, dy)` (clamp-to-edge reads).
+#[inline]
+pub fn neighbour(p: UVec2, dx: i32, dy: i32, size: UVec2) -> UVec2 {
+    let x = (p.x as i32 + dx).clamp(0, size.x as i32 - 1) as u32;
+    let y = (p.y as i32 + dy).clamp(0, size.y as i32 - 1) as u32;
+    uvec2(x, y)
+}

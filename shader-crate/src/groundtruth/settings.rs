@@ -1,0 +1,80 @@
+//! Settings and pass graph of the ground truth (host side; spec gtao-raymarch-hybrid §5): one
+//! ray-generation pass over the inner image.
+
+use super::{GroundTruthFrame, GroundTruthParams};
+use crate::graph::{Access, Binding, FrameDesc, Graph, Pass, PassKind, inputs, record, slots, target_f32};
+
+/// Ground-truth settings [defaults].
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct GroundTruthSettings {
+    /// Rays per pixel [512].
+    pub spp: u32,
+    /// Uniform hemisphere sampling weighted by cos θ instead of cosine-weighted sampling [off].
+    pub uniform: bool,
+}
+
+impl Default for GroundTruthSettings {
+    fn default() -> Self {
+        GroundTruthSettings { spp: 512, uniform: false }
+    }
+}
+
+/// The alpha-test buffers every any-hit reads (`crate::common::alpha`), from binding `first` on.
+pub fn alpha_bindings(first: u32) -> impl Iterator<Item = Binding> {
+    [inputs::SCENE_UVS, inputs::SCENE_MATERIALS, inputs::SCENE_MASK_HEADERS, inputs::SCENE_MASK_TEXELS]
+        .into_iter()
+        .enumerate()
+        .map(move |(i, resource)| Binding { slot: first + i as u32, resource, access: Access::Read })
+}
+
+impl GroundTruthSettings {
+    pub fn validate(&self) -> Result<(), String> {
+        if self.spp == 0 {
+            return Err("--spp must be at least 1".into());
+        }
+        Ok(())
+    }
+
+    /// The kernel's record: the frame's radius and exponent.
+    pub fn frame(&self, frame: &FrameDesc) -> GroundTruthFrame {
+        GroundTruthFrame {
+            camera: frame.camera,
+            params: GroundTruthParams {
+                radius: frame.radius,
+                exponent: frame.exponent,
+                samples: self.spp,
+                uniform: self.uniform as u32,
+            },
+        }
+    }
+
+    /// Rays per frame over the inner image.
+    pub fn rays(&self, frame: &FrameDesc) -> u64 {
+        let inner = frame.inner();
+        inner.x as u64 * inner.y as u64 * self.spp as u64
+    }
+
+    pub fn graph(&self, frame: &FrameDesc) -> Graph {
+        let resources = vec![
+            record("groundtruth_frame", std::slice::from_ref(&self.frame(frame)), "camera + GroundTruthParams"),
+            target_f32(frame, "ao", 1.0, "ray-traced AO (spec §5), 1 = unoccluded"),
+        ];
+        let mut bindings = slots(&[
+            ("groundtruth_frame", Access::Read),
+            (inputs::SCENE_TLAS, Access::Read),
+            (inputs::LINEAR_DEPTH, Access::Read),
+            (inputs::VIEW_NORMALS, Access::Read),
+            ("ao", Access::Write),
+        ]);
+        bindings.extend(alpha_bindings(5));
+        let passes = vec![Pass {
+            label: "groundtruth",
+            entry: "groundtruth_rgen",
+            kind: PassKind::RayTracing { miss: "groundtruth_miss", any_hit: "groundtruth_ahit" },
+            bindings,
+            invocations: frame.inner(),
+            push_constants: Vec::new(),
+        }];
+        Graph { resources, passes, output: "ao", raw_output: "ao", snapshots: Vec::new(), view: frame.camera.view }
+    }
+}

@@ -1,0 +1,202 @@
+//! XeGTAO's settings, quality presets and pass graph (host side; spec gtao-raymarch-hybrid §2):
+//! PrefilterDepths level by level, optional normals from depth, MainPass, the denoise passes.
+//! The denoiser's passes are shared with the techniques that reuse it (ray march, hybrid).
+
+use super::{GtaoParams, MIP_LEVELS, mip_offset, mip_size};
+use crate::graph::{Access, Elem, FrameDesc, Graph, Init, Lifetime, Pass, Resource, inputs, target_f32, target_u32};
+
+/// XeGTAO quality presets (spec gtao-raymarch-hybrid §2.2): slices × steps per side.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Quality {
+    Low,
+    Medium,
+    High,
+    Ultra,
+}
+
+impl Quality {
+    /// `(slices, steps per side)`.
+    pub fn slices_steps(self) -> (u32, u32) {
+        match self {
+            Quality::Low => (1, 2),
+            Quality::Medium => (2, 2),
+            Quality::High => (3, 3),
+            Quality::Ultra => (9, 3),
+        }
+    }
+
+    pub fn parse(s: &str) -> Result<Quality, String> {
+        Ok(match s {
+            "low" => Quality::Low,
+            "medium" => Quality::Medium,
+            "high" => Quality::High,
+            "ultra" => Quality::Ultra,
+            _ => return Err(format!("preset '{s}' is not low, medium, high or ultra")),
+        })
+    }
+}
+
+/// XeGTAO settings (spec §2.1 defaults and UI ranges; the effect radius is the frame's AO
+/// radius).
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct GtaoSettings {
+    /// Slices × steps [High].
+    pub quality: Quality,
+    /// Denoise passes 0 (off) … 3 (soft) [1].
+    pub denoise_passes: u32,
+    /// [1.457], range 0.3–3.
+    pub radius_multiplier: f32,
+    /// [0.615], range 0–1.
+    pub falloff_range: f32,
+    /// [2], range 1–3.
+    pub sample_distribution_power: f32,
+    /// [0], range 0–0.7.
+    pub thin_occluder_compensation: f32,
+    /// [2.2], range 0.5–5.
+    pub final_value_power: f32,
+    /// [3.3], range 0–30.
+    pub depth_mip_sampling_offset: f32,
+    /// Derive normals from depth (pass 0) instead of reading the G-buffer's [off].
+    pub normals_from_depth: bool,
+}
+
+impl Default for GtaoSettings {
+    fn default() -> Self {
+        GtaoSettings {
+            quality: Quality::High,
+            denoise_passes: 1,
+            radius_multiplier: 1.457,
+            falloff_range: 0.615,
+            sample_distribution_power: 2.0,
+            thin_occluder_compensation: 0.0,
+            final_value_power: 2.2,
+            depth_mip_sampling_offset: 3.30,
+            normals_from_depth: false,
+        }
+    }
+}
+
+impl GtaoSettings {
+    /// Reject settings outside XeGTAO's UI ranges (spec §2.1), naming the setting.
+    pub fn validate(&self) -> Result<(), String> {
+        let check = |name: &str, v: f32, lo: f32, hi: f32| {
+            if v.is_finite() && (lo..=hi).contains(&v) {
+                Ok(())
+            } else {
+                Err(format!("{name} {v} is outside [{lo}, {hi}]"))
+            }
+        };
+        check("--gtao-radius-multiplier", self.radius_multiplier, 0.3, 3.0)?;
+        check("--gtao-falloff-range", self.falloff_range, 0.0, 1.0)?;
+        check("--gtao-sample-power", self.sample_distribution_power, 1.0, 3.0)?;
+        check("--gtao-thin-occluder", self.thin_occluder_compensation, 0.0, 0.7)?;
+        check("--gtao-final-power", self.final_value_power, 0.5, 5.0)?;
+        check("--gtao-mip-offset", self.depth_mip_sampling_offset, 0.0, 30.0)?;
+        if self.denoise_passes > 3 {
+            return Err(format!("--gtao-denoise {} is not 0–3", self.denoise_passes));
+        }
+        Ok(())
+    }
+
+    /// The kernels' constants (XeGTAO's `GTAOUpdateConstants`) for a frame.
+    pub fn params(&self, frame: &FrameDesc) -> GtaoParams {
+        let (slices, steps) = self.quality.slices_steps();
+        GtaoParams {
+            view: frame.camera.view,
+            radius: frame.radius,
+            radius_multiplier: self.radius_multiplier,
+            falloff_range: self.falloff_range,
+            sample_distribution_power: self.sample_distribution_power,
+            thin_occluder_compensation: self.thin_occluder_compensation,
+            final_value_power: self.final_value_power,
+            depth_mip_sampling_offset: self.depth_mip_sampling_offset,
+            slices,
+            steps,
+            denoise_passes: self.denoise_passes,
+            noise_frame: 0,
+            pass: 0,
+        }
+    }
+
+    /// Prefilter (5 MIP levels) → [normals from depth] → main pass → denoise.
+    pub fn graph(&self, frame: &FrameDesc) -> Graph {
+        let params = self.params(frame);
+        let full = frame.size();
+        let mips = Resource {
+            name: "gtao_mips",
+            elem: Elem::F32,
+            len: mip_offset(full, MIP_LEVELS),
+            init: Init::Undefined,
+            lifetime: Lifetime::PerFrame,
+            doc: "packed 5-level working-depth MIP chain (spec gtao-raymarch-hybrid §2.3)",
+        };
+        let mut resources = vec![
+            mips,
+            target_u32(frame, "gtao_terms", 0, "MainPass AO terms, 0–255 (spec §2.6)"),
+            target_u32(frame, "gtao_edges", 0, "packed depth edges of the denoiser (spec §2.7)"),
+        ];
+        let mut passes = Vec::new();
+        for level in 0..MIP_LEVELS {
+            let p = GtaoParams { pass: level, ..params };
+            let bindings = [(inputs::LINEAR_DEPTH, Access::Read), ("gtao_mips", Access::ReadWrite)];
+            let size = mip_size(full, level);
+            passes.push(Pass::compute("gtao_prefilter", "gtao_prefilter", &bindings, size, bytemuck::bytes_of(&p)));
+        }
+        let bytes = bytemuck::bytes_of(&params);
+        let normals = if self.normals_from_depth {
+            resources.push(target_u32(frame, "gtao_normals", 0, "view normals derived from depth (spec §2.4)"));
+            let bindings = [(inputs::LINEAR_DEPTH, Access::Read), ("gtao_normals", Access::Write)];
+            passes.push(Pass::compute("gtao_normals", "gtao_normals", &bindings, full, bytes));
+            "gtao_normals"
+        } else {
+            inputs::VIEW_NORMALS
+        };
+        let main = [
+            ("gtao_mips", Access::Read),
+            (normals, Access::Read),
+            ("gtao_terms", Access::Write),
+            ("gtao_edges", Access::Write),
+        ];
+        passes.push(Pass::compute("gtao_main", "gtao_main", &main, full, bytes));
+        let (r, p) = denoise_passes(frame, &params, "gtao_terms", "gtao_edges", "ao_final", "gtao_denoise");
+        resources.extend(r);
+        passes.extend(p);
+        Graph {
+            resources,
+            passes,
+            output: "ao_final",
+            raw_output: "ao_final",
+            snapshots: Vec::new(),
+            view: frame.camera.view,
+        }
+    }
+}
+
+/// XeGTAO's denoiser (spec gtao-raymarch-hybrid §2.7) over `terms` with `edges`: max(1,
+/// `params.denoise_passes`) passes ping-ponging between two scratch images (`terms` stays
+/// intact); the last pass writes the visibility into `output`.
+pub fn denoise_passes(
+    frame: &FrameDesc,
+    params: &GtaoParams,
+    terms: &'static str,
+    edges: &'static str,
+    output: &'static str,
+    label: &'static str,
+) -> (Vec<Resource>, Vec<Pass>) {
+    const PING: &str = "denoise_ping";
+    const PONG: &str = "denoise_pong";
+    let resources = vec![
+        target_u32(frame, PING, 0, "denoised AO terms (ping)"),
+        target_u32(frame, PONG, 0, "denoised AO terms (pong)"),
+        target_f32(frame, output, 1.0, "visibility after the last denoise pass (1 = unoccluded)"),
+    ];
+    let mut passes = Vec::new();
+    let (mut from, mut to) = (terms, PING);
+    for pass in 0..params.denoise_passes.max(1) {
+        let p = GtaoParams { pass, ..*params };
+        let bindings = [(from, Access::Read), (edges, Access::Read), (to, Access::Write), (output, Access::Write)];
+        passes.push(Pass::compute(label, "gtao_denoise", &bindings, frame.size(), bytemuck::bytes_of(&p)));
+        (from, to) = (to, if to == PING { PONG } else { PING });
+    }
+    (resources, passes)
+}

@@ -1,0 +1,108 @@
+//! Settings and pass graph of the Poisson-disk ray-marched SSAO (host side; spec
+//! gtao-raymarch-hybrid §3): the march, then optionally XeGTAO's denoiser.
+
+use super::{Contribution, MAX_DIRECTIONS, RaymarchParams};
+use crate::graph::{Access, FrameDesc, Graph, Pass, inputs, record, target_f32, target_u32};
+use crate::gtao::settings::{GtaoSettings, denoise_passes};
+
+/// Relative depth bias κ (spec §3.2).
+pub const DEPTH_BIAS: f32 = 0.0008;
+
+/// Options of the ray-marched SSAO (spec gtao-raymarch-hybrid §3.2 defaults in brackets).
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct RaymarchSettings {
+    /// Directions N (8, 16 or 24 in the paper; 1–64) [16].
+    pub directions: u32,
+    /// Steps per direction [8].
+    pub steps: u32,
+    /// Contrast exponent α [1].
+    pub alpha: f32,
+    /// Eq. 2 reading: binary (c = 0 on a hit) instead of linear (c = Δ̃/R) [linear].
+    pub binary: bool,
+    /// Vogel spiral instead of the best-candidate Poisson disk [off].
+    pub vogel: bool,
+    /// XeGTAO denoise passes afterwards, 0–3 [0].
+    pub denoise_passes: u32,
+}
+
+impl Default for RaymarchSettings {
+    fn default() -> Self {
+        RaymarchSettings { directions: 16, steps: 8, alpha: 1.0, binary: false, vogel: false, denoise_passes: 0 }
+    }
+}
+
+impl RaymarchSettings {
+    pub fn validate(&self) -> Result<(), String> {
+        if !(1..=MAX_DIRECTIONS).contains(&self.directions) || self.steps == 0 {
+            return Err(format!("raymarch needs 1–{MAX_DIRECTIONS} directions and at least 1 step"));
+        }
+        if self.denoise_passes > 3 {
+            return Err(format!("--rm-denoise {} is not 0–3", self.denoise_passes));
+        }
+        Ok(())
+    }
+
+    /// Push constants with the frame's radius.
+    pub fn params(&self, frame: &FrameDesc) -> RaymarchParams {
+        RaymarchParams {
+            view: frame.camera.view,
+            radius: frame.radius,
+            alpha: self.alpha,
+            depth_bias: DEPTH_BIAS,
+            thickness: f32::MAX,
+            directions: self.directions,
+            steps: self.steps,
+            contribution: if self.binary { Contribution::Binary } else { Contribution::Linear } as u32,
+            noise_frame: 0,
+        }
+    }
+
+    /// The Poisson-disk kernel (spec §3.3).
+    pub fn kernel(&self) -> Vec<crate::glam::Vec2> {
+        let n = self.directions as usize;
+        if self.vogel { super::kernel::vogel(n) } else { super::kernel::best_candidate(n) }
+    }
+
+    /// March → [denoise].
+    pub fn graph(&self, frame: &FrameDesc) -> Graph {
+        let mut resources = vec![
+            record("raymarch_kernel", &self.kernel(), "Poisson-disk directions (spec §3.3)"),
+            target_f32(frame, "ao", 1.0, "ray-marched accessibility (Eq. 2), 1 = unoccluded"),
+            target_u32(frame, "ao_terms", 0, "the AO as the denoiser's 0–255 terms"),
+            target_u32(frame, "ao_edges", 0, "packed depth edges for the denoiser"),
+        ];
+        let bindings = [
+            (inputs::LINEAR_DEPTH, Access::Read),
+            (inputs::VIEW_NORMALS, Access::Read),
+            ("raymarch_kernel", Access::Read),
+            ("ao", Access::Write),
+            ("ao_terms", Access::Write),
+            ("ao_edges", Access::Write),
+        ];
+        let params = self.params(frame);
+        let mut passes =
+            vec![Pass::compute("raymarch", "raymarch_main", &bindings, frame.size(), bytemuck::bytes_of(&params))];
+        if self.denoise_passes == 0 {
+            return Graph {
+                resources,
+                passes,
+                output: "ao",
+                raw_output: "ao",
+                snapshots: Vec::new(),
+                view: frame.camera.view,
+            };
+        }
+        let dp = GtaoSettings { denoise_passes: self.denoise_passes, ..Default::default() }.params(frame);
+        let (r, p) = denoise_passes(frame, &dp, "ao_terms", "ao_edges", "ao_final", "denoise");
+        resources.extend(r);
+        passes.extend(p);
+        Graph {
+            resources,
+            passes,
+            output: "ao_final",
+            raw_output: "ao",
+            snapshots: Vec::new(),
+            view: frame.camera.view,
+        }
+    }
+}

@@ -1,0 +1,268 @@
+//! Settings and pass graph of the stenciled VAO family (host side): dual-depth VAO and HBAO+
+//! (pass 1 alone), Ray-SD / HBAO-SD (pass 1 → ray-traced SD map → pass 2), Ray-SVAO (pass 1 →
+//! rays per flagged sample) — spec svao-raysd §3, §5, §7, §9, §10, §11 — each followed by the
+//! blur (§12).
+
+use super::{Secondary, SvaoFrame, SvaoParams};
+use crate::blur::graph::blur_passes;
+use crate::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
+use crate::common::tables::JitterTable;
+use crate::glam::{UVec2, uvec2};
+use crate::graph::{
+    Access, Binding, Elem, FrameDesc, Graph, Init, Lifetime, Pass, PassKind, Resource, Snapshot, inputs, record, slots,
+    target_f32, target_u32,
+};
+use crate::vao::kernel::{KERNEL_HBAO, KERNEL_VAO};
+use crate::vao::settings::vao_params;
+
+/// Options of the stenciled pipeline and its stochastic depth map (spec svao-raysd §2 defaults
+/// in brackets).
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct SvaoSettings {
+    /// SD-map resolution divisor: 1 (full), 2 (½) or 4 (¼) [4].
+    pub divisor: u32,
+    /// Layers N: 1, 2, 4 or 8 [4].
+    pub layers: u32,
+    /// MAX_COUNT of the reservoir any-hit; raised to N when smaller [8].
+    pub max_count: u32,
+    /// Radius cutoff in full-res pixels: closer samples are never refined (§4.4) [6].
+    pub cutoff: f32,
+    /// Ray-interval optimisation (§6) [on].
+    pub interval: bool,
+    /// SD jitter table (§7.2) [the reference's scrambled table].
+    pub jitter: JitterTable,
+    /// SD guard band in full-res pixels (§3) [512, i.e. 128 SD texels at ¼].
+    pub guard: u32,
+    /// Dual depth: a depth-peeled second layer (§11) [single].
+    pub dual: bool,
+    /// Minimum separation of the peeled layer beyond the first, view depth [0.01, as SVAO.py].
+    pub peel_separation: f32,
+    /// The HBAO+ kernel instead of VAO's (§4.5); the radius is scaled by 1.5 as the reference's
+    /// UI does (0.2 → 0.3) [VAO].
+    pub hbao: bool,
+    /// The SD map from the raster coverage-mask baseline (§8: no SD guard band, no jitter)
+    /// instead of ray tracing [ray].
+    pub raster: bool,
+}
+
+impl Default for SvaoSettings {
+    fn default() -> Self {
+        SvaoSettings {
+            divisor: 4,
+            layers: 4,
+            max_count: 8,
+            cutoff: 6.0,
+            interval: true,
+            jitter: JitterTable::Scrambled,
+            guard: 512,
+            dual: false,
+            peel_separation: 0.01,
+            hbao: false,
+            raster: false,
+        }
+    }
+}
+
+/// Low-res SD size `ceil(W/div) × ceil(H/div)` of a full target (spec svao-raysd §3).
+pub fn sd_low_res(full: UVec2, divisor: u32) -> UVec2 {
+    uvec2(full.x.div_ceil(divisor), full.y.div_ceil(divisor))
+}
+
+impl SvaoSettings {
+    /// Reject options the kernels do not support, with a message naming the option.
+    pub fn validate(&self) -> Result<(), String> {
+        if ![1, 2, 4].contains(&self.divisor) {
+            return Err(format!("--sd-res: divisor {} is not 1 (full), 2 (half) or 4 (quarter)", self.divisor));
+        }
+        if ![1, 2, 4, 8].contains(&self.layers) {
+            return Err(format!("--sd-layers {} is not 1, 2, 4 or 8", self.layers));
+        }
+        if self.max_count == 0 {
+            return Err("--max-count must be at least 1".into());
+        }
+        if !(self.peel_separation.is_finite() && self.peel_separation >= 0.0) {
+            return Err(format!("--peel-separation {} must be a non-negative distance", self.peel_separation));
+        }
+        if !(self.cutoff.is_finite() && self.cutoff >= 0.0) {
+            return Err(format!("--cutoff {} must be a non-negative number of pixels", self.cutoff));
+        }
+        Ok(())
+    }
+
+    /// The SVAO record (the kernels' constants) for a secondary source: Ray-SD, Ray-SVAO (no
+    /// SD map, no guard) or none (pass 1 finalizes every pixel).
+    pub fn frame(&self, frame: &FrameDesc, secondary: Secondary) -> SvaoFrame {
+        let full = frame.size();
+        let is_sd = secondary == Secondary::StochasticDepth;
+        // The raster SD map has no guard band and no jitter (spec §3, §8).
+        let guard = if self.raster { 0 } else { self.guard / self.divisor };
+        let (low, guard) = if is_sd { (sd_low_res(full, self.divisor), guard) } else { (uvec2(1, 1), 0) };
+        SvaoFrame {
+            camera: frame.camera,
+            params: SvaoParams {
+                // The reference's UI scales R by 1.5 for the HBAO+ kernel (spec §2, §4.5).
+                vao: crate::vao::VaoParams {
+                    radius: frame.radius * if self.hbao { 1.5 } else { 1.0 },
+                    ..vao_params(frame)
+                },
+                secondary: secondary as u32,
+                interval: self.interval as u32,
+                cutoff: self.cutoff,
+                sd_guard: guard,
+                sd_low_res: low,
+                sd_layers: self.layers,
+                max_count: self.max_count.max(self.layers),
+                jitter: if self.raster { JitterTable::None as u32 } else { self.jitter as u32 },
+                dual: self.dual as u32,
+                kernel: if self.hbao { KERNEL_HBAO } else { KERNEL_VAO },
+                _pad2: 0,
+            },
+        }
+    }
+
+    /// The pass graph for `secondary` (spec svao-raysd §3): pass 1, then the SD map and pass 2
+    /// (Ray-SD, or the raster coverage-mask map of §8 when `raster`) or the per-sample rays
+    /// (Ray-SVAO), then the blur.
+    pub fn graph(&self, frame: &FrameDesc, secondary: Secondary) -> Result<Graph, String> {
+        let svao = self.frame(frame, secondary);
+        let params = &svao.params;
+        let sd_size = params.sd_size();
+        let texels = (sd_size.x * sd_size.y) as usize;
+        // Dual depth reads the peeled layer; single depth binds the depth buffer there (unread).
+        let depth2 = if self.dual { inputs::SECOND_DEPTH } else { inputs::LINEAR_DEPTH };
+        let per_frame =
+            |name, elem, len, init, doc| Resource { name, elem, len, init, lifetime: Lifetime::PerFrame, doc };
+        let mut resources = vec![
+            record("svao_frame", std::slice::from_ref(&svao), "camera + SvaoParams of both AO passes and the rays"),
+            target_f32(frame, "ao", 1.0, "AO: final after pass 1 where unflagged, refined by pass 2 (spec §5, §9)"),
+            target_u32(frame, "refine_mask", 0, "per-pixel bit mask of the samples pass 1 flagged (spec §5)"),
+            per_frame(
+                "ray_min",
+                Elem::U32,
+                texels,
+                Init::Fill(RAY_MIN_CLEAR),
+                "per-SD-texel ray tMin, float bits (§6)",
+            ),
+            per_frame(
+                "ray_max",
+                Elem::U32,
+                texels,
+                Init::Fill(RAY_MAX_CLEAR),
+                "per-SD-texel ray tMax, float bits (§6)",
+            ),
+        ];
+        use Access::{Read, ReadWrite, Write};
+        let (g, n) = (inputs::LINEAR_DEPTH, inputs::VIEW_NORMALS);
+        let inner = frame.inner();
+        let pass1 = [
+            ("svao_frame", Read),
+            (g, Read),
+            (n, Read),
+            ("ao", Write),
+            ("refine_mask", Write),
+            ("ray_min", ReadWrite),
+            ("ray_max", ReadWrite),
+            (depth2, Read),
+        ];
+        let mut passes = vec![Pass::compute("ao_pass1", "svao_pass1", &pass1, inner, &[])];
+        let scene = crate::groundtruth::settings::alpha_bindings;
+        match secondary {
+            Secondary::Disabled => {}
+            Secondary::StochasticDepth => {
+                let layers = texels * params.sd_layers as usize;
+                resources.push(per_frame(
+                    "sd_map",
+                    Elem::F32,
+                    layers,
+                    Init::Fill(1f32.to_bits()),
+                    "N normalized depths per SD texel (spec §7)",
+                ));
+                if self.raster {
+                    // The raster coverage-mask SD map (spec §8): the scene drawn at SD resolution.
+                    let bindings = slots(&[
+                        (inputs::SCENE_MASK_HEADERS, Read),
+                        (inputs::SCENE_MASK_TEXELS, Read),
+                        ("svao_frame", Read),
+                        (g, Read),
+                        ("ray_min", Read),
+                        ("ray_max", Read),
+                        ("sd_map", ReadWrite),
+                    ]);
+                    let raster = crate::gbuffer::RasterParams {
+                        world_to_view: frame.camera.world_to_view,
+                        view: frame.camera.view,
+                        peel_separation: 0.0,
+                        _pad0: 0,
+                        _pad1: 0,
+                        _pad2: 0,
+                    };
+                    passes.push(Pass {
+                        label: "sd_map_raster",
+                        entry: "rastersd_fs",
+                        kind: PassKind::Raster { vertex: "gbuffer_vs" },
+                        bindings,
+                        invocations: sd_size,
+                        push_constants: bytemuck::bytes_of(&raster).to_vec(),
+                    });
+                }
+                let mut bindings = slots(&[
+                    ("svao_frame", Read),
+                    (inputs::SCENE_TLAS, Read),
+                    (g, Read),
+                    (n, Read),
+                    ("ray_min", Read),
+                    ("ray_max", Read),
+                    ("sd_map", Write),
+                ]);
+                bindings.extend(scene(7));
+                let traced = Pass {
+                    label: "sd_map",
+                    entry: "raysd_rgen",
+                    kind: PassKind::RayTracing { miss: "raysd_miss", any_hit: "raysd_ahit" },
+                    bindings,
+                    invocations: sd_size,
+                    push_constants: Vec::new(),
+                };
+                if !self.raster {
+                    passes.push(traced);
+                }
+                let pass2 = [
+                    ("svao_frame", Read),
+                    (g, Read),
+                    (n, Read),
+                    ("ao", ReadWrite),
+                    ("refine_mask", Read),
+                    ("sd_map", Read),
+                    (depth2, Read),
+                ];
+                passes.push(Pass::compute("ao_pass2", "raysd_pass2", &pass2, inner, &[]));
+            }
+            Secondary::Raytraced => {
+                let mut bindings = slots(&[
+                    ("svao_frame", Read),
+                    (inputs::SCENE_TLAS, Read),
+                    (g, Read),
+                    (n, Read),
+                    ("ao", ReadWrite),
+                    ("refine_mask", Read),
+                ]);
+                bindings.extend(scene(6));
+                bindings.push(Binding { slot: 10, resource: depth2, access: Read });
+                passes.push(Pass {
+                    label: "ao_pass2_rays",
+                    entry: "raysvao_rgen",
+                    kind: PassKind::RayTracing { miss: "raysvao_miss", any_hit: "raysvao_ahit" },
+                    bindings,
+                    invocations: inner,
+                    push_constants: Vec::new(),
+                });
+            }
+        }
+        let (r, p) = blur_passes(frame, "ao", "ao_final");
+        resources.extend(r);
+        passes.extend(p);
+        resources.push(target_f32(frame, "ao_pass1", 1.0, "copy of the AO after pass 1, for reports"));
+        let snapshots = vec![Snapshot { after: 0, from: "ao", to: "ao_pass1" }];
+        Ok(Graph { resources, passes, output: "ao_final", raw_output: "ao", snapshots, view: frame.camera.view })
+    }
+}

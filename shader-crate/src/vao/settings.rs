@@ -1,0 +1,32 @@
+//! Plain VAO's settings and pass graph (host side): VAO over the inner image (spec svao-raysd
+//! §4–§5), then the cross-bilateral blur (§12).
+
+use super::VaoParams;
+use crate::blur::graph::blur_passes;
+use crate::graph::{Access, FrameDesc, Graph, Pass, inputs, target_f32};
+
+/// Screen-space clamp of the sampling disk in pixels (spec svao-raysd §2 default).
+pub const MAX_SCREEN_RADIUS: f32 = 512.0;
+
+/// Push constants of the VAO pass: the frame's radius, exponent and thickness.
+pub fn vao_params(frame: &FrameDesc) -> VaoParams {
+    VaoParams {
+        view: frame.camera.view,
+        radius: frame.radius,
+        exponent: frame.exponent,
+        thickness: frame.thickness,
+        max_screen_radius: MAX_SCREEN_RADIUS,
+    }
+}
+
+/// VAO → blur.
+pub fn graph(frame: &FrameDesc) -> Graph {
+    let mut resources = vec![target_f32(frame, "ao", 1.0, "VAO before the blur (1 = unoccluded)")];
+    let bindings = [(inputs::LINEAR_DEPTH, Access::Read), (inputs::VIEW_NORMALS, Access::Read), ("ao", Access::Write)];
+    let mut passes =
+        vec![Pass::compute("vao", "vao_main", &bindings, frame.inner(), bytemuck::bytes_of(&vao_params(frame)))];
+    let (r, p) = blur_passes(frame, "ao", "ao_final");
+    resources.extend(r);
+    passes.extend(p);
+    Graph { resources, passes, output: "ao_final", raw_output: "ao", snapshots: Vec::new(), view: frame.camera.view }
+}
