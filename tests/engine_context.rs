@@ -1,0 +1,798 @@
+//! `AoContext::record_engine` driven exactly as a game engine would drive it: the engine owns the
+//! ash instance (Khronos validation layer, its own debug messenger), the device, the command
+//! pool, the command buffers, the fences, the staging/readback memory and the images (hardware
+//! D32 depth, RGBA8 view normals, an R32F AO image); aokit only records into the engine's
+//! command buffer.
+//!
+//! 1. `engine_frames_agree_with_cpu_sim`: the engine's images are made from the CPU ray-cast
+//!    G-buffer (reversed and standard Z, with and without a normal image); vao, gtao and raysd
+//!    through `record_engine` must agree with cpu-sim run on the SAME engine arrays through
+//!    `aokit_cpu::adapters` (import → `CpuExecutor` → export).
+//! 2. `soak_300_frames_two_resolutions`: 300 engine frames, raysd and gtao alternating, through
+//!    two resolution changes: no validation message, `allocated_bytes` back to where it was at
+//!    the same resolution and frame parity, and the same AO images before and after the round
+//!    trip through the other resolution.
+
+mod common;
+
+use aokit::frame::Frame;
+use aokit::output::crop_inner;
+use aokit::render::CpuRenderer;
+use aokit::scene::Scene;
+use aokit::technique::{GtaoOptions, SdOptions, Technique};
+use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
+use aokit_cpu::{GBufferImage, no_progress};
+use aokit_shaders::adapters::{DEPTH_REVERSED, DEPTH_STANDARD, ImportParams};
+use aokit_shaders::common::ViewParams;
+use aokit_shaders::common::normal_codec::decode_normal;
+use aokit_shaders::glam::{UVec2, Vec3};
+use aokit_shaders::graph::Graph;
+use aokit_shaders::gtao::GtaoParams;
+use aokit_vulkan::{
+    AoContext, AoImage, EngineFrame, EngineImage, ExternalDevice, FRAMES_IN_FLIGHT, Gpu, GpuError, Image2d, SceneAccel,
+};
+use ash::{ext, khr, vk};
+use std::ffi::{CStr, c_void};
+use std::sync::Mutex;
+use std::time::Instant;
+
+const VALIDATION_LAYER: &CStr = c"VK_LAYER_KHRONOS_validation";
+
+/// Unit roundoff of f32.
+const U: f64 = 1.0 / (1u64 << 24) as f64;
+
+// ---------------------------------------------------------------------------------------------
+// The engine: instance + messenger + device + queue + command pool + fence, all plain ash.
+
+/// The engine's debug-messenger callback: warnings and errors into its `Mutex<Vec>`.
+unsafe extern "system" fn collect(
+    severity: vk::DebugUtilsMessageSeverityFlagsEXT,
+    _types: vk::DebugUtilsMessageTypeFlagsEXT,
+    data: *const vk::DebugUtilsMessengerCallbackDataEXT<'_>,
+    user: *mut c_void,
+) -> vk::Bool32 {
+    if !data.is_null() && !user.is_null() {
+        // SAFETY: `user` is the engine's boxed Mutex, alive until after the instance is destroyed.
+        let (data, messages) = unsafe { (&*data, &*(user as *const Mutex<Vec<String>>)) };
+        let text = unsafe { data.message_as_c_str() }.map(|m| m.to_string_lossy().into_owned()).unwrap_or_default();
+        messages.lock().unwrap().push(format!("{severity:?}: {text}"));
+    }
+    vk::FALSE
+}
+
+struct Engine {
+    entry: ash::Entry,
+    instance: ash::Instance,
+    debug: ext::debug_utils::Instance,
+    messenger: vk::DebugUtilsMessengerEXT,
+    /// Boxed: the messenger holds a pointer to it.
+    messages: Box<Mutex<Vec<String>>>,
+    physical_device: vk::PhysicalDevice,
+    device: ash::Device,
+    family: u32,
+    queue: vk::Queue,
+    pool: vk::CommandPool,
+    fence: vk::Fence,
+}
+
+impl Engine {
+    /// Instance with the validation layer and a messenger (warnings and errors), device on
+    /// lavapipe (or the first Vulkan 1.3 device) with what aokit's compute and ray-tracing graphs
+    /// need. `None` when AOKIT_SKIP_VULKAN=1.
+    fn new() -> Option<Engine> {
+        if std::env::var_os("AOKIT_SKIP_VULKAN").is_some_and(|v| v == "1") {
+            eprintln!("AOKIT_SKIP_VULKAN=1: skipping a Vulkan test");
+            return None;
+        }
+        let skip_hint = "set AOKIT_SKIP_VULKAN=1 to skip";
+        let entry = unsafe { ash::Entry::load() }.unwrap_or_else(|e| panic!("no Vulkan loader ({e}); {skip_hint}"));
+        let layers = unsafe { entry.enumerate_instance_layer_properties() }.unwrap();
+        assert!(
+            layers.iter().any(|l| l.layer_name_as_c_str() == Ok(VALIDATION_LAYER)),
+            "this test needs {VALIDATION_LAYER:?}; {skip_hint}"
+        );
+        let messages: Box<Mutex<Vec<String>>> = Box::default();
+        let mut messenger_info = vk::DebugUtilsMessengerCreateInfoEXT::default()
+            .message_severity(
+                vk::DebugUtilsMessageSeverityFlagsEXT::WARNING | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR,
+            )
+            .message_type(
+                vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
+                    | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
+                    | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE,
+            )
+            .pfn_user_callback(Some(collect))
+            .user_data(&*messages as *const Mutex<Vec<String>> as *mut c_void);
+        let app = vk::ApplicationInfo::default().application_name(c"an engine").api_version(vk::API_VERSION_1_3);
+        let layer_names = [VALIDATION_LAYER.as_ptr()];
+        let extension_names = [ext::debug_utils::NAME.as_ptr()];
+        // Synchronization validation as well: on lavapipe a missing barrier rarely changes a
+        // result, so the layer's hazard tracking is what checks aokit's barriers.
+        let enables = [vk::ValidationFeatureEnableEXT::SYNCHRONIZATION_VALIDATION];
+        let mut features = vk::ValidationFeaturesEXT::default().enabled_validation_features(&enables);
+        let create = vk::InstanceCreateInfo::default()
+            .application_info(&app)
+            .enabled_layer_names(&layer_names)
+            .enabled_extension_names(&extension_names)
+            .push_next(&mut messenger_info) // covers vkCreateInstance and vkDestroyInstance
+            .push_next(&mut features);
+        let instance = unsafe { entry.create_instance(&create, None) }.unwrap();
+        let debug = ext::debug_utils::Instance::new(&entry, &instance);
+        let messenger = unsafe { debug.create_debug_utils_messenger(&messenger_info, None) }.unwrap();
+
+        let devices = unsafe { instance.enumerate_physical_devices() }.unwrap();
+        let props = |pd| unsafe { instance.get_physical_device_properties(pd) };
+        let name = |pd| props(pd).device_name_as_c_str().unwrap().to_string_lossy().into_owned();
+        let physical_device = devices
+            .iter()
+            .copied()
+            .find(|&pd| name(pd).contains("llvmpipe"))
+            .or_else(|| devices.iter().copied().find(|&pd| props(pd).api_version >= vk::API_VERSION_1_3))
+            .unwrap_or_else(|| panic!("no Vulkan 1.3 device; {skip_hint}"));
+        let families = unsafe { instance.get_physical_device_queue_family_properties(physical_device) };
+        let family = families
+            .iter()
+            .position(|q| q.queue_flags.contains(vk::QueueFlags::COMPUTE) && q.timestamp_valid_bits > 0)
+            .expect("a compute queue family with timestamps") as u32;
+
+        // raysd traces rays: the device must have the ray-tracing pipeline.
+        let available = unsafe { instance.enumerate_device_extension_properties(physical_device) }.unwrap();
+        let rt_names = [
+            khr::acceleration_structure::NAME.as_ptr(),
+            khr::ray_tracing_pipeline::NAME.as_ptr(),
+            khr::deferred_host_operations::NAME.as_ptr(),
+        ];
+        let missing: Vec<_> = rt_names
+            .iter()
+            .map(|&n| unsafe { CStr::from_ptr(n) })
+            .filter(|n| !available.iter().any(|e| e.extension_name_as_c_str() == Ok(*n)))
+            .collect();
+        assert!(missing.is_empty(), "device '{}' lacks {missing:?}; {skip_hint}", name(physical_device));
+        eprintln!("engine device: {}", name(physical_device));
+
+        let priorities = [1.0];
+        let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
+        let mut f12 = vk::PhysicalDeviceVulkan12Features::default()
+            .vulkan_memory_model(true)
+            .vulkan_memory_model_device_scope(true)
+            .buffer_device_address(true);
+        let mut as_enable = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default().acceleration_structure(true);
+        let mut rt_enable = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default().ray_tracing_pipeline(true);
+        let create = vk::DeviceCreateInfo::default()
+            .queue_create_infos(&queues)
+            .enabled_extension_names(&rt_names)
+            .push_next(&mut f12)
+            .push_next(&mut as_enable)
+            .push_next(&mut rt_enable);
+        let device = unsafe { instance.create_device(physical_device, &create, None) }.unwrap();
+        let queue = unsafe { device.get_device_queue(family, 0) };
+        let pool_info = vk::CommandPoolCreateInfo::default()
+            .queue_family_index(family)
+            .flags(vk::CommandPoolCreateFlags::TRANSIENT);
+        let pool = unsafe { device.create_command_pool(&pool_info, None) }.unwrap();
+        let fence = unsafe { device.create_fence(&vk::FenceCreateInfo::default(), None) }.unwrap();
+        Some(Engine {
+            entry,
+            instance,
+            debug,
+            messenger,
+            messages,
+            physical_device,
+            device,
+            family,
+            queue,
+            pool,
+            fence,
+        })
+    }
+
+    fn external(&self) -> ExternalDevice {
+        ExternalDevice {
+            entry: self.entry.clone(),
+            instance: self.instance.clone(),
+            physical_device: self.physical_device,
+            device: self.device.clone(),
+            queue_family_index: self.family,
+            queue: self.queue,
+            ray_tracing: true,
+        }
+    }
+
+    /// A primary command buffer of the engine's pool, recording.
+    fn begin(&self) -> vk::CommandBuffer {
+        let info = vk::CommandBufferAllocateInfo::default()
+            .command_pool(self.pool)
+            .level(vk::CommandBufferLevel::PRIMARY)
+            .command_buffer_count(1);
+        let cmd = unsafe { self.device.allocate_command_buffers(&info) }.unwrap()[0];
+        let begin = vk::CommandBufferBeginInfo::default().flags(vk::CommandBufferUsageFlags::ONE_TIME_SUBMIT);
+        unsafe { self.device.begin_command_buffer(cmd, &begin) }.unwrap();
+        cmd
+    }
+
+    /// End `cmd`, submit it with the engine's fence, wait, free it.
+    fn submit_and_wait(&self, cmd: vk::CommandBuffer) {
+        let d = &self.device;
+        let cmds = [cmd];
+        unsafe {
+            d.end_command_buffer(cmd).unwrap();
+            d.queue_submit(self.queue, &[vk::SubmitInfo::default().command_buffers(&cmds)], self.fence).unwrap();
+            d.wait_for_fences(&[self.fence], true, u64::MAX).unwrap();
+            d.reset_fences(&[self.fence]).unwrap();
+            d.free_command_buffers(self.pool, &cmds);
+        }
+    }
+
+    /// Wait for the device, destroy everything of the engine's and return what the validation
+    /// layer said (device and instance destruction included).
+    fn destroy(self) -> Vec<String> {
+        unsafe {
+            self.device.device_wait_idle().expect("the engine's device survives aokit");
+            self.device.destroy_fence(self.fence, None);
+            self.device.destroy_command_pool(self.pool, None);
+            self.device.destroy_device(None);
+            self.debug.destroy_debug_utils_messenger(self.messenger, None);
+            self.instance.destroy_instance(None);
+        }
+        self.messages.into_inner().unwrap()
+    }
+}
+
+/// A host-visible, coherent buffer of the engine's own (staging and readback), plain Vulkan
+/// memory outside aokit's allocator.
+struct HostBuffer {
+    buffer: vk::Buffer,
+    memory: vk::DeviceMemory,
+    size: u64,
+}
+
+impl HostBuffer {
+    fn new(engine: &Engine, size: u64, usage: vk::BufferUsageFlags) -> HostBuffer {
+        let d = &engine.device;
+        let info = vk::BufferCreateInfo::default().size(size).usage(usage).sharing_mode(vk::SharingMode::EXCLUSIVE);
+        let buffer = unsafe { d.create_buffer(&info, None) }.unwrap();
+        let req = unsafe { d.get_buffer_memory_requirements(buffer) };
+        let props = unsafe { engine.instance.get_physical_device_memory_properties(engine.physical_device) };
+        let want = vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT;
+        let type_index = (0..props.memory_type_count)
+            .find(|&i| {
+                req.memory_type_bits & (1 << i) != 0 && props.memory_types[i as usize].property_flags.contains(want)
+            })
+            .expect("host-visible coherent memory");
+        let alloc = vk::MemoryAllocateInfo::default().allocation_size(req.size).memory_type_index(type_index);
+        let memory = unsafe { d.allocate_memory(&alloc, None) }.unwrap();
+        unsafe { d.bind_buffer_memory(buffer, memory, 0) }.unwrap();
+        HostBuffer { buffer, memory, size }
+    }
+
+    fn write(&self, engine: &Engine, offset: u64, bytes: &[u8]) {
+        assert!(offset + bytes.len() as u64 <= self.size);
+        let d = &engine.device;
+        unsafe {
+            let ptr = d.map_memory(self.memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty()).unwrap() as *mut u8;
+            std::ptr::copy_nonoverlapping(bytes.as_ptr(), ptr.add(offset as usize), bytes.len());
+            d.unmap_memory(self.memory);
+        }
+    }
+
+    fn read_f32(&self, engine: &Engine, count: usize) -> Vec<f32> {
+        assert!(4 * count as u64 <= self.size);
+        let d = &engine.device;
+        let mut out = vec![0f32; count];
+        unsafe {
+            let ptr = d.map_memory(self.memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty()).unwrap() as *const f32;
+            std::ptr::copy_nonoverlapping(ptr, out.as_mut_ptr(), count);
+            d.unmap_memory(self.memory);
+        }
+        out
+    }
+
+    fn destroy(self, engine: &Engine) {
+        unsafe {
+            engine.device.destroy_buffer(self.buffer, None);
+            engine.device.free_memory(self.memory, None);
+        }
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn image_barrier(
+    engine: &Engine,
+    cmd: vk::CommandBuffer,
+    image: &Image2d,
+    (old, new): (vk::ImageLayout, vk::ImageLayout),
+    (src_stage, src_access): (vk::PipelineStageFlags, vk::AccessFlags),
+    (dst_stage, dst_access): (vk::PipelineStageFlags, vk::AccessFlags),
+) {
+    let aspect =
+        if image.format == vk::Format::D32_SFLOAT { vk::ImageAspectFlags::DEPTH } else { vk::ImageAspectFlags::COLOR };
+    let barrier = vk::ImageMemoryBarrier::default()
+        .src_access_mask(src_access)
+        .dst_access_mask(dst_access)
+        .old_layout(old)
+        .new_layout(new)
+        .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
+        .image(image.raw)
+        .subresource_range(vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1));
+    unsafe {
+        engine.device.cmd_pipeline_barrier(
+            cmd,
+            src_stage,
+            dst_stage,
+            vk::DependencyFlags::empty(),
+            &[],
+            &[],
+            &[barrier],
+        )
+    };
+}
+
+fn copy_region(image: &Image2d, buffer_offset: u64) -> vk::BufferImageCopy {
+    let aspect =
+        if image.format == vk::Format::D32_SFLOAT { vk::ImageAspectFlags::DEPTH } else { vk::ImageAspectFlags::COLOR };
+    vk::BufferImageCopy::default()
+        .buffer_offset(buffer_offset)
+        .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(aspect).layer_count(1))
+        .image_extent(vk::Extent3D { width: image.width, height: image.height, depth: 1 })
+}
+
+type S = vk::PipelineStageFlags;
+type A = vk::AccessFlags;
+const DEPTH_LAYOUT: vk::ImageLayout = vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+const NORMAL_LAYOUT: vk::ImageLayout = vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL;
+
+// ---------------------------------------------------------------------------------------------
+// The engine's G-buffer images.
+
+/// What the engine renders: the inner image's hardware depth and RGBA8 view normals.
+struct EngineGBuffer {
+    size: UVec2,
+    /// Stored D32 values.
+    depth: Vec<f32>,
+    rgba8: Vec<u8>,
+    /// The RGBA8 normals as the sampler returns them (`c / 255`), for the CPU import.
+    rgb: Vec<[f32; 3]>,
+    params: ImportParams,
+}
+
+/// The engine's depth buffer of the CPU ray-cast G-buffer (inner image), `convention`
+/// (DEPTH_STANDARD or DEPTH_REVERSED) with the camera projection's near/far planes, computed in
+/// f64 and stored as f32 like a D32_SFLOAT depth buffer; background (`>= view.far`) is the
+/// cleared value. Normals: `n·0.5 + 0.5` of the decoded G-buffer normals in RGBA8.
+fn engine_gbuffer(view: &ViewParams, gbuffer: &GBufferImage, convention: u32) -> EngineGBuffer {
+    let size = view.size() - 2 * view.guard;
+    let linear = crop_inner(view, &gbuffer.depth);
+    let (n, f) = (view.near as f64, view.far as f64);
+    let depth: Vec<f32> = linear
+        .iter()
+        .map(|&z| {
+            let z = z as f64;
+            match convention {
+                DEPTH_STANDARD if z >= f => 1.0,
+                DEPTH_STANDARD => (f * (z - n) / (z * (f - n))) as f32,
+                DEPTH_REVERSED if z >= f => 0.0,
+                DEPTH_REVERSED => (n * (f - z) / (z * (f - n))) as f32,
+                _ => unreachable!("convention {convention}"),
+            }
+        })
+        .collect();
+    let (full, g) = (view.size(), view.guard);
+    let mut rgba8 = Vec::with_capacity(4 * depth.len());
+    for y in g..full.y - g {
+        for x in g..full.x - g {
+            let c = (decode_normal(gbuffer.normals[(y * full.x + x) as usize]) * 0.5 + Vec3::splat(0.5)) * 255.0;
+            rgba8.extend([c.x.round() as u8, c.y.round() as u8, c.z.round() as u8, 255]);
+        }
+    }
+    let rgb = rgba8.chunks(4).map(|c| [c[0] as f32 / 255.0, c[1] as f32 / 255.0, c[2] as f32 / 255.0]).collect();
+    let params = ImportParams {
+        view: *view,
+        engine_size: size,
+        depth_convention: convention,
+        near: view.near,
+        far: view.far,
+        _pad: 0,
+    };
+    EngineGBuffer { size, depth, rgba8, rgb, params }
+}
+
+/// The engine's images: depth (D32, sampled, a depth attachment), normals (RGBA8, sampled) and
+/// the AO output (R32F storage).
+struct Targets {
+    depth: Image2d,
+    normals: Image2d,
+    output: Image2d,
+    size: UVec2,
+}
+
+impl Targets {
+    /// Create the images and upload `g` through the engine's staging buffer in the engine's
+    /// command buffer: depth left in DEPTH_STENCIL_READ_ONLY_OPTIMAL, normals in
+    /// SHADER_READ_ONLY_OPTIMAL, both visible to compute-shader reads.
+    fn new(engine: &Engine, gpu: &Gpu, g: &EngineGBuffer) -> Targets {
+        let (w, h) = (g.size.x, g.size.y);
+        let sampled = vk::ImageUsageFlags::SAMPLED | vk::ImageUsageFlags::TRANSFER_DST;
+        let depth_usage = sampled | vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT;
+        let out_usage = vk::ImageUsageFlags::STORAGE | vk::ImageUsageFlags::TRANSFER_SRC;
+        let targets = Targets {
+            depth: gpu.create_image_2d(vk::Format::D32_SFLOAT, w, h, depth_usage).unwrap(),
+            normals: gpu.create_image_2d(vk::Format::R8G8B8A8_UNORM, w, h, sampled).unwrap(),
+            output: gpu.create_image_2d(vk::Format::R32_SFLOAT, w, h, out_usage).unwrap(),
+            size: g.size,
+        };
+        let depth_bytes: &[u8] = bytemuck::cast_slice(&g.depth);
+        let staging_size = (depth_bytes.len() + g.rgba8.len()) as u64;
+        let staging = HostBuffer::new(engine, staging_size, vk::BufferUsageFlags::TRANSFER_SRC);
+        staging.write(engine, 0, depth_bytes);
+        staging.write(engine, depth_bytes.len() as u64, &g.rgba8);
+        let cmd = engine.begin();
+        let dst = vk::ImageLayout::TRANSFER_DST_OPTIMAL;
+        let regions = [(&targets.depth, 0, DEPTH_LAYOUT), (&targets.normals, depth_bytes.len() as u64, NORMAL_LAYOUT)];
+        for (image, offset, layout) in regions {
+            let none = (S::TOP_OF_PIPE, A::empty());
+            image_barrier(
+                engine,
+                cmd,
+                image,
+                (vk::ImageLayout::UNDEFINED, dst),
+                none,
+                (S::TRANSFER, A::TRANSFER_WRITE),
+            );
+            let region = [copy_region(image, offset)];
+            unsafe { engine.device.cmd_copy_buffer_to_image(cmd, staging.buffer, image.raw, dst, &region) };
+            let read = (S::COMPUTE_SHADER, A::SHADER_READ);
+            image_barrier(engine, cmd, image, (dst, layout), (S::TRANSFER, A::TRANSFER_WRITE), read);
+        }
+        engine.submit_and_wait(cmd);
+        staging.destroy(engine);
+        targets
+    }
+
+    fn destroy(self, gpu: &Gpu) {
+        for image in [self.depth, self.normals, self.output] {
+            gpu.free_image(image);
+        }
+    }
+}
+
+/// Record one engine frame into `cmd`: the AO image to GENERAL (its old contents discarded; the
+/// previous frame's export and copy finish first), `record_engine`, then, with `readback`, the
+/// AO image copied into the engine's host buffer and made visible to the host.
+#[allow(clippy::too_many_arguments)]
+fn record_frame(
+    engine: &Engine,
+    ctx: &mut AoContext<&Gpu>,
+    cmd: vk::CommandBuffer,
+    graph: &Graph,
+    targets: &Targets,
+    import: ImportParams,
+    with_normals: bool,
+    scene: &SceneAccel,
+    readback: Option<&HostBuffer>,
+) -> Result<(), GpuError> {
+    let general = vk::ImageLayout::GENERAL;
+    let previous = (S::COMPUTE_SHADER | S::TRANSFER, A::empty());
+    let write = (S::COMPUTE_SHADER, A::SHADER_WRITE);
+    image_barrier(engine, cmd, &targets.output, (vk::ImageLayout::UNDEFINED, general), previous, write);
+    let frame = EngineFrame {
+        depth: EngineImage { view: targets.depth.view, layout: DEPTH_LAYOUT },
+        normals: with_normals.then_some(EngineImage { view: targets.normals.view, layout: NORMAL_LAYOUT }),
+        output: AoImage { view: targets.output.view, format: vk::Format::R32_SFLOAT },
+        import,
+        scene: Some(scene),
+    };
+    ctx.record_engine(cmd, graph, &frame)?;
+    if let Some(buffer) = readback {
+        let src = vk::ImageLayout::TRANSFER_SRC_OPTIMAL;
+        image_barrier(engine, cmd, &targets.output, (general, src), write, (S::TRANSFER, A::TRANSFER_READ));
+        let region = [copy_region(&targets.output, 0)];
+        unsafe { engine.device.cmd_copy_image_to_buffer(cmd, targets.output.raw, src, buffer.buffer, &region) };
+        let host = vk::MemoryBarrier::default().src_access_mask(A::TRANSFER_WRITE).dst_access_mask(A::HOST_READ);
+        unsafe {
+            engine.device.cmd_pipeline_barrier(
+                cmd,
+                S::TRANSFER,
+                S::HOST,
+                vk::DependencyFlags::empty(),
+                &[host],
+                &[],
+                &[],
+            )
+        };
+    }
+    Ok(())
+}
+
+/// The scene's acceleration structure on the engine's device (through aokit's `Gpu`).
+fn scene_accel(gpu: &Gpu, scene: &Scene) -> SceneAccel {
+    let positions: Vec<[f32; 3]> = scene.triangles.iter().flatten().map(|v| v.to_array()).collect();
+    let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
+    SceneAccel::build(gpu, &positions, &uvs, &scene.triangle_materials, &scene.alpha_masks()).unwrap()
+}
+
+/// No validation message (core and synchronization validation).
+fn assert_validation_clean(test: &str, messages: Vec<String>) {
+    eprintln!("{test}: {} validation messages", messages.len());
+    assert!(messages.is_empty(), "validation layer reported:\n{}", messages.join("\n"));
+}
+
+fn mse(a: &[f32], b: &[f32]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| (*x as f64 - *y as f64).powi(2)).sum::<f64>() / a.len() as f64
+}
+
+// ---------------------------------------------------------------------------------------------
+// 1. Engine frames against cpu-sim on the same engine arrays.
+
+/// What the CPU computes from the engine arrays: the imported linear depth and normals (the
+/// normals derived from depth by XeGTAO's pass 0 when the engine gives no normal image, as
+/// `record_engine` documents), then the graph, then the export into the engine's image.
+fn cpu_reference(
+    renderer: &CpuRenderer,
+    graph: &Graph,
+    g: &EngineGBuffer,
+    with_normals: bool,
+) -> (Vec<f32>, Vec<f32>, Vec<u32>) {
+    let depth = aokit_cpu::adapters::import_depth(&g.params, &g.depth);
+    let normals = if with_normals {
+        aokit_cpu::adapters::import_normals(&g.params, &g.rgb)
+    } else {
+        let params = GtaoParams { view: g.params.view, ..bytemuck::Zeroable::zeroed() };
+        aokit_cpu::gtao::run_normals(&params, &depth)
+    };
+    let surfaces = renderer.surfaces();
+    let inputs = CpuInputs {
+        depth: &depth,
+        normals: &normals,
+        second_depth: None,
+        scene: Some(CpuScene { bvh: renderer.bvh(), surfaces: &surfaces }),
+        progress: &no_progress,
+    };
+    let mut executor = CpuExecutor::new();
+    executor.run(graph, &inputs).unwrap();
+    let ao = executor.f32(graph.output).expect("the graph's output");
+    (aokit_cpu::adapters::export_ao(&g.params, ao), depth, normals)
+}
+
+/// The agreement each technique must reach (from the existing CPU ≡ Vulkan tests).
+fn check_agreement(name: &str, cpu: &[f32], gpu: &[f32]) -> String {
+    assert_eq!(cpu.len(), gpu.len(), "{name}: CPU and engine images differ in size");
+    let within = cpu.iter().zip(gpu).filter(|(a, b)| (*a - *b).abs() <= 1.0 / 255.0).count() as f64 / cpu.len() as f64;
+    let max = cpu.iter().zip(gpu).map(|(a, b)| (a - b).abs()).fold(0.0, f32::max);
+    let m = mse(cpu, gpu);
+    let occluded = cpu.iter().filter(|&&a| a < 0.9).count() as f64 / cpu.len() as f64;
+    let line = format!(
+        "{name}: {:.3} % within 1/255, max |Δ| {max:.2e} ({:.2}/255), MSE {m:.2e}, occluded (< 0.9) {:.1} %",
+        100.0 * within,
+        max * 255.0,
+        100.0 * occluded
+    );
+    eprintln!("{line}");
+    // Real occlusion, or the comparison means little.
+    assert!(occluded >= 0.02, "{name}: only {:.2} % of pixels occluded", 100.0 * occluded);
+    assert!(gpu.iter().all(|a| (0.0..=1.0).contains(a)), "{name}: exported AO outside [0, 1]");
+    if name.starts_with("vao") {
+        // tests/vulkan_agreement.rs: deterministic per-pixel kernel, so ≥ 99.9 % within one
+        // 8-bit step and nothing beyond four.
+        assert!(within >= 0.999, "{line}");
+        assert!(max <= 4.0 / 255.0, "{line}");
+    } else if name.starts_with("gtao") {
+        // tests/gtao.rs: the 0–255 AO terms may differ by one step where the f32 math rounds
+        // differently, and the denoiser spreads that: final MSE ≤ 1e-5.
+        assert!(m <= 1e-5, "{line}");
+    } else {
+        // tests/vulkan_svao.rs: the SD map depends on the GPU's any-hit order, so raysd agrees
+        // statistically: final MSE ≤ 1e-4.
+        assert!(m <= 1e-4, "{line}");
+    }
+    line
+}
+
+#[test]
+fn engine_frames_agree_with_cpu_sim() {
+    let Some(engine) = Engine::new() else { return };
+    let start = Instant::now();
+    let (scene, frame): (Scene, Frame) = common::builtin_frame("sponza", 160, 96, 16);
+    let desc = frame.desc();
+    let view = frame.camera.view;
+    let renderer = CpuRenderer::new(&scene);
+    let (gbuffer, _) = renderer.gbuffer(&frame, &no_progress);
+    let techniques = [
+        ("vao", Technique::Vao),
+        ("gtao", Technique::Gtao(GtaoOptions::default())),
+        ("raysd", Technique::RaySd(SdOptions::default())),
+    ];
+    let graphs: Vec<(&str, Graph)> =
+        techniques.iter().map(|(name, t)| (*name, t.graph(&desc).expect("a graph technique"))).collect();
+
+    let gpu = Gpu::from_external(engine.external()).unwrap();
+    assert!(gpu.has_ray_tracing());
+    let accel = scene_accel(&gpu, &scene);
+    let mut ctx = AoContext::new(&gpu);
+    let mut report = Vec::new();
+    let runs = [
+        ("reversed-Z", DEPTH_REVERSED, true),
+        ("standard-Z", DEPTH_STANDARD, true),
+        ("reversed-Z", DEPTH_REVERSED, false),
+    ];
+    for (convention_name, convention, with_normals) in runs {
+        let g = engine_gbuffer(&view, &gbuffer, convention);
+        let texels = (g.size.x * g.size.y) as usize;
+        // The stored depths hold the G-buffer's: the CPU import recovers the linear depth within
+        // the bound of tests/adapters.rs (8U·(1 + κ), κ = z·(f − n)/(n·f) for standard Z).
+        let imported = crop_inner(&view, &aokit_cpu::adapters::import_depth(&g.params, &g.depth));
+        let original = crop_inner(&view, &gbuffer.depth);
+        let (n, f) = (view.near as f64, view.far as f64);
+        let mut worst = 0.0f64;
+        for (&got, &want) in imported.iter().zip(&original) {
+            let (got, want) = (got as f64, want as f64);
+            let kappa = if convention == DEPTH_STANDARD { want * (f - n) / (n * f) } else { 0.0 };
+            let rel = (got - want).abs() / want;
+            assert!(rel <= 8.0 * U * (1.0 + kappa), "{convention_name}: depth {want} imported as {got}");
+            worst = worst.max(rel);
+        }
+        let background = original.iter().filter(|&&z| z >= view.far).count();
+        let normals_name = if with_normals { "RGBA8 normals" } else { "normals from depth" };
+        eprintln!(
+            "{convention_name}, {normals_name}: {}×{} engine image, {background} background texels, worst relative depth error after import {worst:.2e}",
+            g.size.x, g.size.y
+        );
+        let targets = Targets::new(&engine, &gpu, &g);
+        let readback = HostBuffer::new(&engine, 4 * texels as u64, vk::BufferUsageFlags::TRANSFER_DST);
+        for (name, graph) in &graphs {
+            let cmd = engine.begin();
+            record_frame(&engine, &mut ctx, cmd, graph, &targets, g.params, with_normals, &accel, Some(&readback))
+                .unwrap();
+            engine.submit_and_wait(cmd);
+            let on_gpu = readback.read_f32(&engine, texels);
+            let (on_cpu, cpu_depth, cpu_normals) = cpu_reference(&renderer, graph, &g, with_normals);
+            // Diagnostics: the context's imported G-buffer against the CPU import.
+            let gpu_depth: Vec<f32> = ctx.download("engine_linear_depth").unwrap_or_default();
+            let gpu_normals: Vec<u32> = ctx.download("engine_view_normals").unwrap_or_default();
+            let same_depth = gpu_depth.iter().zip(&cpu_depth).filter(|(a, b)| a == b).count();
+            let same_normals = gpu_normals.iter().zip(&cpu_normals).filter(|(a, b)| a == b).count();
+            eprintln!(
+                "  imported on Vulkan vs CPU: depth bit-identical {same_depth}/{}, normal codes identical {same_normals}/{}",
+                cpu_depth.len(),
+                cpu_normals.len()
+            );
+            let label = format!("{name} ({convention_name}, {normals_name})");
+            report.push(check_agreement(&label, &on_cpu, &on_gpu));
+        }
+        readback.destroy(&engine);
+        targets.destroy(&gpu);
+    }
+    drop(ctx); // the engine waited for every frame
+    accel.destroy(&gpu);
+    drop(gpu);
+    eprintln!("engine_frames_agree_with_cpu_sim: {:.1} s", start.elapsed().as_secs_f64());
+    let messages = engine.destroy();
+    assert_validation_clean("engine_frames_agree_with_cpu_sim", messages);
+    assert_eq!(report.len(), 9);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2. The soak.
+
+const SOAK_SCENE: &str = "sponza";
+
+/// Inner size and frame count of each phase. Each phase alternates raysd (even frames) and gtao
+/// (odd frames) from raysd on; the first two phases have an odd count, so the frame before each
+/// resize is raysd as well: the same graph on both sides of the resize, which must not run on
+/// descriptor sets of the previous resolution's buffers.
+const PHASES: [(u32, u32, usize); 3] = [(96, 64, 99), (128, 80, 101), (96, 64, 100)];
+
+#[test]
+fn soak_300_frames_two_resolutions() {
+    let Some(engine) = Engine::new() else { return };
+    let start = Instant::now();
+    let gpu = Gpu::from_external(engine.external()).unwrap();
+    let techniques = [Technique::RaySd(SdOptions::default()), Technique::Gtao(GtaoOptions::default())];
+    let (scene, _) = common::builtin_frame(SOAK_SCENE, 96, 64, 8);
+    let renderer = CpuRenderer::new(&scene);
+    let accel = scene_accel(&gpu, &scene);
+    let mut ctx = AoContext::new(&gpu);
+    // `gpu.allocated_bytes()` after each frame, per phase.
+    let mut allocated: Vec<Vec<u64>> = Vec::new();
+    // Per phase: the AO image of its first frame (raysd, right after the resize) and of its last
+    // raysd and last gtao frame.
+    let mut first_images = Vec::new();
+    let mut last_images: Vec<[Vec<f32>; 2]> = Vec::new();
+    let mut frame_ms = Vec::new();
+    for &(w, h, frames) in &PHASES {
+        let (_, frame) = common::builtin_frame(SOAK_SCENE, w, h, 8);
+        let (gbuffer, _) = renderer.gbuffer(&frame, &no_progress);
+        let g = engine_gbuffer(&frame.camera.view, &gbuffer, DEPTH_REVERSED);
+        let graphs: Vec<Graph> = techniques.iter().map(|t| t.graph(&frame.desc()).unwrap()).collect();
+        // An engine re-creates its render targets on a resize (after waiting for its frames).
+        let targets = Targets::new(&engine, &gpu, &g);
+        let texels = (targets.size.x * targets.size.y) as usize;
+        let host = || HostBuffer::new(&engine, 4 * texels as u64, vk::BufferUsageFlags::TRANSFER_DST);
+        let (first, last) = (host(), [host(), host()]);
+        let mut bytes = Vec::with_capacity(frames);
+        for i in 0..frames {
+            let k = i % 2; // 0: raysd, 1: gtao
+            let read = match i {
+                0 => Some(&first),
+                i if i + 2 >= frames => Some(&last[k]),
+                _ => None,
+            };
+            let t = Instant::now();
+            let cmd = engine.begin();
+            record_frame(&engine, &mut ctx, cmd, &graphs[k], &targets, g.params, true, &accel, read).unwrap();
+            engine.submit_and_wait(cmd);
+            frame_ms.push(t.elapsed().as_secs_f64() * 1e3);
+            bytes.push(gpu.allocated_bytes());
+        }
+        allocated.push(bytes);
+        first_images.push(first.read_f32(&engine, texels));
+        last_images.push(last.each_ref().map(|b| b.read_f32(&engine, texels)));
+        for b in last.into_iter().chain([first]) {
+            b.destroy(&engine);
+        }
+        targets.destroy(&gpu);
+    }
+    let seconds = start.elapsed().as_secs_f64();
+    frame_ms.sort_by(f64::total_cmp);
+    eprintln!(
+        "soak ({SOAK_SCENE}): {} frames in {seconds:.1} s (median frame {:.1} ms, max {:.1} ms)",
+        frame_ms.len(),
+        frame_ms[frame_ms.len() / 2],
+        frame_ms[frame_ms.len() - 1]
+    );
+    for (bytes, (w, h, _)) in allocated.iter().zip(PHASES) {
+        let mut runs = bytes.clone();
+        runs.dedup();
+        eprintln!("{w}×{h}: allocated bytes after each frame, runs of equal values: {runs:?}");
+    }
+
+    // Allocated bytes. A resource replaced on a size change (or re-made because the alternating
+    // graphs declared it with other lengths) is retired, not freed, and freed FRAMES_IN_FLIGHT
+    // frames later; the first two frames at a resolution also make the graphs' resources (raysd's
+    // in frame 0, gtao's in frame 1). So compare from frame 2·FRAMES_IN_FLIGHT of a phase on, when
+    // every buffer of the previous resolution has been freed: after each such frame of the third
+    // phase (the first phase's resolution) the value equals the one after the same frame of the
+    // first phase — same graph, same size, nothing leaked over 200 frames and two resizes — and
+    // within each phase it repeats with the alternation (flat).
+    let warm = 2 * FRAMES_IN_FLIGHT as usize;
+    let (first_phase, last_phase) = (&allocated[0], &allocated[2]);
+    for i in warm..first_phase.len().min(last_phase.len()) {
+        assert_eq!(last_phase[i], first_phase[i], "allocated bytes after frame {i} of the third phase vs the first");
+    }
+    for (p, bytes) in allocated.iter().enumerate() {
+        for i in warm..bytes.len() - 2 {
+            assert_eq!(bytes[i], bytes[i + 2], "phase {p}: allocated bytes change after frame {i}");
+        }
+    }
+    // "After the last frame as after the first one at that resolution", in the terms above: the
+    // last frame (gtao, 96×64) against the first gtao frame of the first phase after the warm-up.
+    assert_eq!(last_phase[last_phase.len() - 1], first_phase[warm + 1], "allocated bytes after the last frame");
+    assert!(allocated[1][warm] > first_phase[warm], "the larger resolution must allocate more");
+
+    // The AO images. Right after each resize raysd must produce what it produces at the end of
+    // that phase (same inputs), and the last images of the third phase those of the first.
+    // gtao is deterministic; raysd may store other SD layers where the any-hit order differs, so
+    // it agrees within MSE 1e-4 (tests/vulkan_svao.rs).
+    let same = |what: &str, a: &[f32], b: &[f32], exact: bool| {
+        assert_eq!(a.len(), b.len(), "{what}");
+        let m = mse(a, b);
+        let occluded = a.iter().filter(|&&v| v < 0.9).count() as f64 / a.len() as f64;
+        eprintln!("{what}: MSE {m:.2e}, occluded (< 0.9) {:.1} %", 100.0 * occluded);
+        assert!(occluded >= 0.02, "{what}: the soak's images must contain occlusion");
+        if exact {
+            assert_eq!(a, b, "{what}");
+        } else {
+            assert!(m <= 1e-4, "{what}: MSE {m}");
+        }
+    };
+    for (p, (w, h, _)) in PHASES.into_iter().enumerate() {
+        same(&format!("{w}×{h} raysd: first frame vs last"), &first_images[p], &last_images[p][0], false);
+    }
+    same("raysd: last frame of phase 1 vs phase 3", &last_images[0][0], &last_images[2][0], false);
+    same("gtao: last frame of phase 1 vs phase 3", &last_images[0][1], &last_images[2][1], true);
+
+    drop(ctx);
+    accel.destroy(&gpu);
+    drop(gpu);
+    assert_validation_clean("soak_300_frames_two_resolutions", engine.destroy());
+}
