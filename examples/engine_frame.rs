@@ -10,20 +10,19 @@
 //! Camera and AO flags are `aokit render`'s, with the same defaults; there is no guard band (an
 //! engine renders none): compare with `aokit render … --guard 0`, e.g. with `--compare cpu.png`.
 
-use aokit::frame::{CameraChoice, Frame, FrameRequest};
+use aokit::cli::SceneArgs;
+use aokit::frame::Frame;
 use aokit::output::write_png;
-use aokit::scene::Scene;
-use aokit::scene::builtin::{self, BuiltinScene};
 use aokit::technique::{Technique, TechniqueDefaults};
 use aokit_shaders::adapters::{DEPTH_REVERSED, ImportParams};
-use aokit_shaders::glam::{Mat4, Vec3, Vec4};
+use aokit_shaders::glam::{Mat4, Vec4};
 use aokit_shaders::graph::PassKind;
 use aokit_vulkan::{AoContext, AoImage, EngineFrame, EngineImage, ExternalDevice, Gpu, SceneAccel};
 use ash::{ext, khr, vk};
 use clap::{Parser, ValueEnum};
 use std::error::Error;
 use std::ffi::{CStr, c_void};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::sync::Mutex;
 use std::time::Instant;
 
@@ -38,41 +37,14 @@ const NORMAL_FORMAT: vk::Format = vk::Format::R8G8B8A8_UNORM;
 #[command(about = "Render a scene's depth and normals with a minimal engine raster pass, then AO with aokit")]
 #[command(allow_negative_numbers = true)]
 struct Args {
-    /// Built-in scene name (see `aokit scenes`) or a path to .obj/.gltf/.glb/.ply[.gz].
-    #[arg(long)]
-    scene: String,
+    #[command(flatten)]
+    view: SceneArgs,
     /// vao, hbao, raysd, hbao-sd, raysvao, gtao, raymarch, hybrid or groundtruth.
     #[arg(long, default_value = "vao")]
     technique: String,
-    #[arg(long, default_value_t = 1920)]
-    width: u32,
-    #[arg(long, default_value_t = 1080)]
-    height: u32,
     /// Output PNG (8-bit grey, 1 = unoccluded = white).
     #[arg(long, default_value = "ao.png")]
     out: PathBuf,
-    /// Camera preset of a built-in scene, or `auto` to frame the scene's bounds.
-    #[arg(long)]
-    camera: Option<String>,
-    /// Explicit camera position (x,y,z); needs --target.
-    #[arg(long, value_parser = parse_vec3, allow_hyphen_values = true, requires = "target")]
-    eye: Option<Vec3>,
-    #[arg(long, value_parser = parse_vec3, allow_hyphen_values = true, requires = "eye")]
-    target: Option<Vec3>,
-    #[arg(long, value_parser = parse_vec3, allow_hyphen_values = true, default_value = "0,1,0")]
-    up: Vec3,
-    /// Vertical field of view in degrees.
-    #[arg(long)]
-    fov: Option<f32>,
-    /// World-space AO radius (default: per built-in scene, else 2 % of the bounding-box diagonal).
-    #[arg(long)]
-    radius: Option<f32>,
-    /// AO exponent.
-    #[arg(long, default_value_t = 2.0)]
-    exponent: f32,
-    /// Halo thickness τ.
-    #[arg(long, default_value_t = 0.0)]
-    thickness: f32,
     /// The engine's AO image format.
     #[arg(long, value_enum, default_value = "r32f")]
     ao_format: AoFormat,
@@ -110,44 +82,6 @@ impl AoFormat {
             AoFormat::R8 => 1,
         }
     }
-}
-
-fn parse_vec3(s: &str) -> Result<Vec3, String> {
-    let parts: Vec<f32> =
-        s.split(',').map(|p| p.trim().parse::<f32>().map_err(|e| format!("'{p}': {e}"))).collect::<Result<_, _>>()?;
-    match parts[..] {
-        [x, y, z] => Ok(Vec3::new(x, y, z)),
-        _ => Err(format!("expected x,y,z, got '{s}'")),
-    }
-}
-
-/// The scene and aokit's resolved frame, exactly as `aokit render` resolves them (guard 0).
-fn resolve(args: &Args) -> Result<(Scene, Frame)> {
-    let builtin: Option<&BuiltinScene> = builtin::find(&args.scene);
-    let scene = match builtin {
-        Some(b) => b.load()?,
-        None => Scene::load(Path::new(&args.scene))?,
-    };
-    let fov_default = builtin.map_or(60.0, |b| b.cameras[0].fov_deg);
-    let camera = match (&args.eye, &args.target, args.camera.as_deref()) {
-        (Some(eye), Some(target), _) => {
-            CameraChoice::Explicit { eye: *eye, target: *target, up: args.up, fov_deg: args.fov.unwrap_or(fov_default) }
-        }
-        (_, _, Some("auto")) => CameraChoice::Auto { fov_deg: args.fov.unwrap_or(60.0) },
-        (_, _, None) if builtin.is_none() => CameraChoice::Auto { fov_deg: args.fov.unwrap_or(60.0) },
-        (_, _, name) => CameraChoice::Preset { name: name.map(str::to_string), fov_deg: args.fov },
-    };
-    let request = FrameRequest {
-        width: args.width,
-        height: args.height,
-        guard: 0, // an engine renders no guard band
-        camera,
-        radius: args.radius,
-        exponent: args.exponent,
-        thickness: args.thickness,
-    };
-    let frame = Frame::resolve(&scene, builtin, &request)?;
-    Ok((scene, frame))
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -825,7 +759,7 @@ fn main() -> Result<()> {
     let args = Args::parse();
     let defaults = TechniqueDefaults::default(); // every technique's own defaults, as `aokit render`
     let technique = Technique::parse(&args.technique, &defaults)?;
-    let (scene, frame) = resolve(&args)?;
+    let (scene, frame) = args.view.resolve(0)?; // an engine renders no guard band
     let (width, height) = (frame.inner.x, frame.inner.y);
     let view = frame.camera.view;
 

@@ -1,6 +1,8 @@
 //! aokit: the scenes, cameras and image output around the kernels in `aokit-shaders`, run on
 //! the CPU (`aokit-cpu`) or on Vulkan (`aokit-vulkan`).
 
+#[cfg(feature = "cli")]
+pub mod cli;
 pub mod frame;
 pub mod metrics;
 pub mod output;

@@ -1,21 +1,21 @@
 //! `aokit`: render ambient occlusion for a scene on the CPU or on Vulkan.
 
-use aokit::frame::{CameraChoice, Frame, FrameRequest};
+use aokit::cli::SceneArgs;
+use aokit::frame::Frame;
 use aokit::output::{crop_inner, write_exr, write_png};
 use aokit::render::{CpuRenderer, Renderer, VulkanRenderer};
 use aokit::report::{BenchResult, CompareReport, CompareSetup};
 use aokit::scene::Scene;
-use aokit::scene::builtin::{self, BuiltinScene};
+use aokit::scene::builtin;
 use aokit::technique::{
     GroundTruthSettings, GtaoOptions, GtaoPreset, HybridOptions, RaymarchOptions, SdOptions, Technique,
     TechniqueDefaults,
 };
 use aokit_shaders::common::tables::JitterTable;
-use aokit_shaders::glam::Vec3;
 use aokit_vulkan::GpuOptions;
 use clap::{Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -68,54 +68,17 @@ enum Jitter {
     Paper,
 }
 
-fn parse_vec3(s: &str) -> Result<Vec3, String> {
-    let parts: Vec<f32> =
-        s.split(',').map(|p| p.trim().parse::<f32>().map_err(|e| format!("'{p}': {e}"))).collect::<Result<_, _>>()?;
-    match parts[..] {
-        [x, y, z] => Ok(Vec3::new(x, y, z)),
-        _ => Err(format!("expected x,y,z, got '{s}'")),
-    }
-}
-
 /// Scene, camera and AO parameters shared by every command.
 #[derive(clap::Args)]
 #[command(allow_negative_numbers = true)]
 struct FrameArgs {
-    /// Built-in scene name (see `aokit scenes`) or a path to .obj/.gltf/.glb/.ply[.gz].
-    #[arg(long)]
-    scene: String,
+    #[command(flatten)]
+    view: SceneArgs,
     #[arg(long, value_enum, default_value = "cpu")]
     backend: Backend,
-    /// Output width in pixels (the guard band is added around it).
-    #[arg(long, default_value_t = 1920)]
-    width: u32,
-    #[arg(long, default_value_t = 1080)]
-    height: u32,
     /// G-buffer guard band in pixels on every side.
     #[arg(long, default_value_t = 64)]
     guard: u32,
-    /// Camera preset of a built-in scene, or `auto` to frame the scene's bounds.
-    #[arg(long)]
-    camera: Option<String>,
-    /// Explicit camera position (x,y,z); needs --target.
-    #[arg(long, value_parser = parse_vec3, allow_hyphen_values = true, requires = "target")]
-    eye: Option<Vec3>,
-    #[arg(long, value_parser = parse_vec3, allow_hyphen_values = true, requires = "eye")]
-    target: Option<Vec3>,
-    #[arg(long, value_parser = parse_vec3, allow_hyphen_values = true, default_value = "0,1,0")]
-    up: Vec3,
-    /// Vertical field of view of the output image in degrees.
-    #[arg(long)]
-    fov: Option<f32>,
-    /// World-space AO radius (default: per built-in scene, else 2 % of the bounding-box diagonal).
-    #[arg(long)]
-    radius: Option<f32>,
-    /// AO exponent (spec default 2; the papers' figures use 4).
-    #[arg(long, default_value_t = 2.0)]
-    exponent: f32,
-    /// Halo thickness τ (spec §4.3).
-    #[arg(long, default_value_t = 0.0)]
-    thickness: f32,
     /// Enable the Khronos validation layer (Vulkan back-end); validation messages fail the run.
     #[arg(long)]
     validation: bool,
@@ -430,41 +393,9 @@ struct ScalingArgs {
     json: Option<PathBuf>,
 }
 
-fn load_scene(spec: &str) -> Result<(Scene, Option<&'static BuiltinScene>), String> {
-    if let Some(b) = builtin::find(spec) {
-        return Ok((b.load().map_err(|e| e.to_string())?, Some(b)));
-    }
-    let path = Path::new(spec);
-    if !path.exists() {
-        let names: Vec<_> = builtin::builtin_scenes().iter().map(|s| s.name).collect();
-        return Err(format!("'{spec}' is neither a built-in scene ({}) nor an existing file", names.join(", ")));
-    }
-    Ok((Scene::load(path).map_err(|e| e.to_string())?, None))
-}
-
 /// Load the scene and resolve the camera and AO parameters.
 fn resolve(args: &FrameArgs) -> Result<(Scene, Frame), String> {
-    let (scene, builtin) = load_scene(&args.scene)?;
-    let fov_default = builtin.map_or(60.0, |b| b.cameras[0].fov_deg);
-    let camera = match (&args.eye, &args.target, args.camera.as_deref()) {
-        (Some(eye), Some(target), _) => {
-            CameraChoice::Explicit { eye: *eye, target: *target, up: args.up, fov_deg: args.fov.unwrap_or(fov_default) }
-        }
-        (_, _, Some("auto")) => CameraChoice::Auto { fov_deg: args.fov.unwrap_or(60.0) },
-        (_, _, None) if builtin.is_none() => CameraChoice::Auto { fov_deg: args.fov.unwrap_or(60.0) },
-        (_, _, name) => CameraChoice::Preset { name: name.map(str::to_string), fov_deg: args.fov },
-    };
-    let request = FrameRequest {
-        width: args.width,
-        height: args.height,
-        guard: args.guard,
-        camera,
-        radius: args.radius,
-        exponent: args.exponent,
-        thickness: args.thickness,
-    };
-    let frame = Frame::resolve(&scene, builtin, &request).map_err(|e| e.to_string())?;
-    Ok((scene, frame))
+    args.view.resolve(args.guard)
 }
 
 /// The back-end the user picked.

@@ -49,15 +49,15 @@ pub use aokit_shaders::hybrid::settings::HybridSettings as HybridOptions;
 /// An AO technique.
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub enum Technique {
-    /// Plain VAO on the depth buffer (spec §4–§5).
+    /// Plain VAO on the depth buffer (spec svao-raysd §4–§5).
     Vao,
-    /// Plain VAO on dual depth: the depth buffer plus a depth-peeled second layer (spec §11).
+    /// Plain VAO on dual depth: the depth buffer plus a depth-peeled second layer (spec svao-raysd §11).
     VaoDual { peel_separation: f32 },
-    /// The HBAO+ kernel on single or dual depth (spec §4.5, §11), no refinement.
+    /// The HBAO+ kernel on single or dual depth (spec svao-raysd §4.5, §11), no refinement.
     Hbao { dual: bool, peel_separation: f32 },
-    /// Stenciled VAO refined from the ray-traced stochastic depth map (spec §3, §5, §7, §9).
+    /// Stenciled VAO refined from the ray-traced stochastic depth map (spec svao-raysd §3, §5, §7, §9).
     RaySd(SdOptions),
-    /// Stenciled VAO refined by one ray per flagged sample (spec §10), the Ray-SD reference.
+    /// Stenciled VAO refined by one ray per flagged sample (spec svao-raysd §10), the Ray-SD reference.
     RaySvao { cutoff: f32, dual: bool, peel_separation: f32 },
     /// World-space ray-traced AO (spec gtao-raymarch-hybrid §5).
     GroundTruth { spp: u32, uniform: bool },
@@ -263,7 +263,7 @@ impl Technique {
         label
     }
 
-    /// Whether the technique's output goes through the bilateral blur (spec §3 step 5).
+    /// Whether the technique's output goes through the bilateral blur (spec svao-raysd §3 pass 5, §12).
     pub fn blurred(&self) -> bool {
         matches!(
             self,

@@ -14,6 +14,8 @@
 //!    trip through the other resolution.
 
 mod common;
+#[path = "common/engine_device.rs"]
+mod engine_device;
 
 use aokit::frame::Frame;
 use aokit::output::crop_inner;
@@ -29,14 +31,12 @@ use aokit_shaders::glam::{UVec2, Vec3};
 use aokit_shaders::graph::Graph;
 use aokit_shaders::gtao::GtaoParams;
 use aokit_vulkan::{
-    AoContext, AoImage, EngineFrame, EngineImage, ExternalDevice, FRAMES_IN_FLIGHT, Gpu, GpuError, Image2d, SceneAccel,
+    AoContext, AoImage, EngineFrame, EngineImage, FRAMES_IN_FLIGHT, Gpu, GpuError, Image2d, SceneAccel,
 };
-use ash::{ext, khr, vk};
-use std::ffi::{CStr, c_void};
-use std::sync::Mutex;
+use ash::vk;
+use engine_device::{EngineDevice, EngineNeeds, RayTracing};
+use std::ops::Deref;
 use std::time::Instant;
-
-const VALIDATION_LAYER: &CStr = c"VK_LAYER_KHRONOS_validation";
 
 /// Unit roundoff of f32.
 const U: f64 = 1.0 / (1u64 << 24) as f64;
@@ -44,35 +44,19 @@ const U: f64 = 1.0 / (1u64 << 24) as f64;
 // ---------------------------------------------------------------------------------------------
 // The engine: instance + messenger + device + queue + command pool + fence, all plain ash.
 
-/// The engine's debug-messenger callback: warnings and errors into its `Mutex<Vec>`.
-unsafe extern "system" fn collect(
-    severity: vk::DebugUtilsMessageSeverityFlagsEXT,
-    _types: vk::DebugUtilsMessageTypeFlagsEXT,
-    data: *const vk::DebugUtilsMessengerCallbackDataEXT<'_>,
-    user: *mut c_void,
-) -> vk::Bool32 {
-    if !data.is_null() && !user.is_null() {
-        // SAFETY: `user` is the engine's boxed Mutex, alive until after the instance is destroyed.
-        let (data, messages) = unsafe { (&*data, &*(user as *const Mutex<Vec<String>>)) };
-        let text = unsafe { data.message_as_c_str() }.map(|m| m.to_string_lossy().into_owned()).unwrap_or_default();
-        messages.lock().unwrap().push(format!("{severity:?}: {text}"));
-    }
-    vk::FALSE
-}
-
+/// The engine's device (tests/common/engine_device.rs) with its command pool and fence.
 struct Engine {
-    entry: ash::Entry,
-    instance: ash::Instance,
-    debug: ext::debug_utils::Instance,
-    messenger: vk::DebugUtilsMessengerEXT,
-    /// Boxed: the messenger holds a pointer to it.
-    messages: Box<Mutex<Vec<String>>>,
-    physical_device: vk::PhysicalDevice,
-    device: ash::Device,
-    family: u32,
-    queue: vk::Queue,
+    base: EngineDevice,
     pool: vk::CommandPool,
     fence: vk::Fence,
+}
+
+impl Deref for Engine {
+    type Target = EngineDevice;
+
+    fn deref(&self) -> &EngineDevice {
+        &self.base
+    }
 }
 
 impl Engine {
@@ -80,122 +64,22 @@ impl Engine {
     /// lavapipe (or the first Vulkan 1.3 device) with what aokit's compute and ray-tracing graphs
     /// need. `None` when AOKIT_SKIP_VULKAN=1.
     fn new() -> Option<Engine> {
-        if std::env::var_os("AOKIT_SKIP_VULKAN").is_some_and(|v| v == "1") {
-            eprintln!("AOKIT_SKIP_VULKAN=1: skipping a Vulkan test");
-            return None;
-        }
-        let skip_hint = "set AOKIT_SKIP_VULKAN=1 to skip";
-        let entry = unsafe { ash::Entry::load() }.unwrap_or_else(|e| panic!("no Vulkan loader ({e}); {skip_hint}"));
-        let layers = unsafe { entry.enumerate_instance_layer_properties() }.unwrap();
-        assert!(
-            layers.iter().any(|l| l.layer_name_as_c_str() == Ok(VALIDATION_LAYER)),
-            "this test needs {VALIDATION_LAYER:?}; {skip_hint}"
-        );
-        let messages: Box<Mutex<Vec<String>>> = Box::default();
-        let mut messenger_info = vk::DebugUtilsMessengerCreateInfoEXT::default()
-            .message_severity(
-                vk::DebugUtilsMessageSeverityFlagsEXT::WARNING | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR,
-            )
-            .message_type(
-                vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
-                    | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
-                    | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE,
-            )
-            .pfn_user_callback(Some(collect))
-            .user_data(&*messages as *const Mutex<Vec<String>> as *mut c_void);
-        let app = vk::ApplicationInfo::default().application_name(c"an engine").api_version(vk::API_VERSION_1_3);
-        let layer_names = [VALIDATION_LAYER.as_ptr()];
-        let extension_names = [ext::debug_utils::NAME.as_ptr()];
-        // Synchronization validation as well: on lavapipe a missing barrier rarely changes a
-        // result, so the layer's hazard tracking is what checks aokit's barriers.
-        let enables = [vk::ValidationFeatureEnableEXT::SYNCHRONIZATION_VALIDATION];
-        let mut features = vk::ValidationFeaturesEXT::default().enabled_validation_features(&enables);
-        let create = vk::InstanceCreateInfo::default()
-            .application_info(&app)
-            .enabled_layer_names(&layer_names)
-            .enabled_extension_names(&extension_names)
-            .push_next(&mut messenger_info) // covers vkCreateInstance and vkDestroyInstance
-            .push_next(&mut features);
-        let instance = unsafe { entry.create_instance(&create, None) }.unwrap();
-        let debug = ext::debug_utils::Instance::new(&entry, &instance);
-        let messenger = unsafe { debug.create_debug_utils_messenger(&messenger_info, None) }.unwrap();
-
-        let devices = unsafe { instance.enumerate_physical_devices() }.unwrap();
-        let props = |pd| unsafe { instance.get_physical_device_properties(pd) };
-        let name = |pd| props(pd).device_name_as_c_str().unwrap().to_string_lossy().into_owned();
-        let physical_device = devices
-            .iter()
-            .copied()
-            .find(|&pd| name(pd).contains("llvmpipe"))
-            .or_else(|| devices.iter().copied().find(|&pd| props(pd).api_version >= vk::API_VERSION_1_3))
-            .unwrap_or_else(|| panic!("no Vulkan 1.3 device; {skip_hint}"));
-        let families = unsafe { instance.get_physical_device_queue_family_properties(physical_device) };
-        let family = families
-            .iter()
-            .position(|q| q.queue_flags.contains(vk::QueueFlags::COMPUTE) && q.timestamp_valid_bits > 0)
-            .expect("a compute queue family with timestamps") as u32;
-
-        // raysd traces rays: the device must have the ray-tracing pipeline.
-        let available = unsafe { instance.enumerate_device_extension_properties(physical_device) }.unwrap();
-        let rt_names = [
-            khr::acceleration_structure::NAME.as_ptr(),
-            khr::ray_tracing_pipeline::NAME.as_ptr(),
-            khr::deferred_host_operations::NAME.as_ptr(),
-        ];
-        let missing: Vec<_> = rt_names
-            .iter()
-            .map(|&n| unsafe { CStr::from_ptr(n) })
-            .filter(|n| !available.iter().any(|e| e.extension_name_as_c_str() == Ok(*n)))
-            .collect();
-        assert!(missing.is_empty(), "device '{}' lacks {missing:?}; {skip_hint}", name(physical_device));
-        eprintln!("engine device: {}", name(physical_device));
-
-        let priorities = [1.0];
-        let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
-        let mut f12 = vk::PhysicalDeviceVulkan12Features::default()
-            .vulkan_memory_model(true)
-            .vulkan_memory_model_device_scope(true)
-            .buffer_device_address(true);
-        let mut as_enable = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default().acceleration_structure(true);
-        let mut rt_enable = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default().ray_tracing_pipeline(true);
-        let create = vk::DeviceCreateInfo::default()
-            .queue_create_infos(&queues)
-            .enabled_extension_names(&rt_names)
-            .push_next(&mut f12)
-            .push_next(&mut as_enable)
-            .push_next(&mut rt_enable);
-        let device = unsafe { instance.create_device(physical_device, &create, None) }.unwrap();
-        let queue = unsafe { device.get_device_queue(family, 0) };
+        let base = EngineDevice::new(&EngineNeeds {
+            app_name: c"an engine",
+            // Synchronization validation as well: on lavapipe a missing barrier rarely changes a
+            // result, so the layer's hazard tracking is what checks aokit's barriers.
+            sync_validation: true,
+            queue_flags: vk::QueueFlags::COMPUTE,
+            raster: false,
+            // raysd traces rays: the device must have the ray-tracing pipeline.
+            ray_tracing: RayTracing::Required,
+        })?;
         let pool_info = vk::CommandPoolCreateInfo::default()
-            .queue_family_index(family)
+            .queue_family_index(base.family)
             .flags(vk::CommandPoolCreateFlags::TRANSIENT);
-        let pool = unsafe { device.create_command_pool(&pool_info, None) }.unwrap();
-        let fence = unsafe { device.create_fence(&vk::FenceCreateInfo::default(), None) }.unwrap();
-        Some(Engine {
-            entry,
-            instance,
-            debug,
-            messenger,
-            messages,
-            physical_device,
-            device,
-            family,
-            queue,
-            pool,
-            fence,
-        })
-    }
-
-    fn external(&self) -> ExternalDevice {
-        ExternalDevice {
-            entry: self.entry.clone(),
-            instance: self.instance.clone(),
-            physical_device: self.physical_device,
-            device: self.device.clone(),
-            queue_family_index: self.family,
-            queue: self.queue,
-            ray_tracing: true,
-        }
+        let pool = unsafe { base.device.create_command_pool(&pool_info, None) }.unwrap();
+        let fence = unsafe { base.device.create_fence(&vk::FenceCreateInfo::default(), None) }.unwrap();
+        Some(Engine { base, pool, fence })
     }
 
     /// A primary command buffer of the engine's pool, recording.
@@ -226,15 +110,11 @@ impl Engine {
     /// Wait for the device, destroy everything of the engine's and return what the validation
     /// layer said (device and instance destruction included).
     fn destroy(self) -> Vec<String> {
-        unsafe {
-            self.device.device_wait_idle().expect("the engine's device survives aokit");
-            self.device.destroy_fence(self.fence, None);
-            self.device.destroy_command_pool(self.pool, None);
-            self.device.destroy_device(None);
-            self.debug.destroy_debug_utils_messenger(self.messenger, None);
-            self.instance.destroy_instance(None);
-        }
-        self.messages.into_inner().unwrap()
+        let (pool, fence) = (self.pool, self.fence);
+        self.base.destroy_with(|device| unsafe {
+            device.destroy_fence(fence, None);
+            device.destroy_command_pool(pool, None);
+        })
     }
 }
 

@@ -12,193 +12,34 @@ use aokit_shaders::glam::{Vec3, uvec2};
 use aokit_shaders::graph::FrameDesc;
 use aokit_shaders::vao::VaoParams;
 use aokit_vulkan::{AoContext, ExternalDevice, Gpu, GpuError, GpuInputs};
-use ash::{ext, khr, vk};
-use std::ffi::{CStr, c_void};
-use std::sync::Mutex;
+use ash::vk;
 
-const VALIDATION_LAYER: &CStr = c"VK_LAYER_KHRONOS_validation";
+#[path = "common/engine_device.rs"]
+mod engine_device;
 
-/// The application's debug-messenger callback: warnings and errors into its `Mutex<Vec>`.
-unsafe extern "system" fn collect(
-    severity: vk::DebugUtilsMessageSeverityFlagsEXT,
-    _types: vk::DebugUtilsMessageTypeFlagsEXT,
-    data: *const vk::DebugUtilsMessengerCallbackDataEXT<'_>,
-    user: *mut c_void,
-) -> vk::Bool32 {
-    if !data.is_null() && !user.is_null() {
-        // SAFETY: `user` is the engine's boxed Mutex, alive until after the instance is destroyed.
-        let (data, messages) = unsafe { (&*data, &*(user as *const Mutex<Vec<String>>)) };
-        let text = unsafe { data.message_as_c_str() }.map(|m| m.to_string_lossy().into_owned()).unwrap_or_default();
-        messages.lock().unwrap().push(format!("{severity:?}: {text}"));
-    }
-    vk::FALSE
+use engine_device::{EngineDevice as Engine, EngineNeeds, RayTracing};
+
+/// An engine's instance (validation layer + messenger) and device on lavapipe (or the first
+/// Vulkan 1.3 device when there is no lavapipe), with a graphics+compute queue. `full`:
+/// everything aokit can use (raster features, ray tracing where supported); otherwise only what
+/// the compute passes need. `None` when AOKIT_SKIP_VULKAN=1.
+fn new_engine(full: bool) -> Option<Engine> {
+    Engine::new(&EngineNeeds {
+        app_name: c"some engine",
+        sync_validation: false,
+        queue_flags: vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
+        raster: full,
+        ray_tracing: if full { RayTracing::WhereSupported } else { RayTracing::Off },
+    })
 }
 
-/// What the application ("engine") owns: instance, messenger, device.
-struct Engine {
-    entry: ash::Entry,
-    instance: ash::Instance,
-    debug: ext::debug_utils::Instance,
-    messenger: vk::DebugUtilsMessengerEXT,
-    /// Boxed: the messenger holds a pointer to it.
-    messages: Box<Mutex<Vec<String>>>,
-    physical_device: vk::PhysicalDevice,
-    device: ash::Device,
-    family: u32,
-    queue: vk::Queue,
-    /// The device was created with the ray-tracing extensions and features.
-    ray_tracing: bool,
-}
-
-impl Engine {
-    /// An engine's instance (validation layer + messenger) and device on lavapipe (or the first
-    /// Vulkan 1.3 device when there is no lavapipe). `full`: everything aokit can use (raster
-    /// features, ray tracing where supported); otherwise only what the compute passes need.
-    /// `None` when AOKIT_SKIP_VULKAN=1.
-    fn new(full: bool) -> Option<Engine> {
-        if std::env::var_os("AOKIT_SKIP_VULKAN").is_some_and(|v| v == "1") {
-            eprintln!("AOKIT_SKIP_VULKAN=1: skipping a Vulkan test");
-            return None;
-        }
-        let skip_hint = "set AOKIT_SKIP_VULKAN=1 to skip";
-        let entry = unsafe { ash::Entry::load() }.unwrap_or_else(|e| panic!("no Vulkan loader ({e}); {skip_hint}"));
-        let layers = unsafe { entry.enumerate_instance_layer_properties() }.unwrap();
-        assert!(
-            layers.iter().any(|l| l.layer_name_as_c_str() == Ok(VALIDATION_LAYER)),
-            "this test needs {VALIDATION_LAYER:?}; {skip_hint}"
-        );
-        let messages: Box<Mutex<Vec<String>>> = Box::default();
-        let mut messenger_info = vk::DebugUtilsMessengerCreateInfoEXT::default()
-            .message_severity(
-                vk::DebugUtilsMessageSeverityFlagsEXT::WARNING | vk::DebugUtilsMessageSeverityFlagsEXT::ERROR,
-            )
-            .message_type(
-                vk::DebugUtilsMessageTypeFlagsEXT::GENERAL
-                    | vk::DebugUtilsMessageTypeFlagsEXT::VALIDATION
-                    | vk::DebugUtilsMessageTypeFlagsEXT::PERFORMANCE,
-            )
-            .pfn_user_callback(Some(collect))
-            .user_data(&*messages as *const Mutex<Vec<String>> as *mut c_void);
-        let app = vk::ApplicationInfo::default().application_name(c"some engine").api_version(vk::API_VERSION_1_3);
-        let layer_names = [VALIDATION_LAYER.as_ptr()];
-        let extension_names = [ext::debug_utils::NAME.as_ptr()];
-        let create = vk::InstanceCreateInfo::default()
-            .application_info(&app)
-            .enabled_layer_names(&layer_names)
-            .enabled_extension_names(&extension_names)
-            .push_next(&mut messenger_info); // covers vkCreateInstance and vkDestroyInstance
-        let instance = unsafe { entry.create_instance(&create, None) }.unwrap();
-        let debug = ext::debug_utils::Instance::new(&entry, &instance);
-        let messenger = unsafe { debug.create_debug_utils_messenger(&messenger_info, None) }.unwrap();
-
-        let devices = unsafe { instance.enumerate_physical_devices() }.unwrap();
-        let props = |pd| unsafe { instance.get_physical_device_properties(pd) };
-        let name = |pd| props(pd).device_name_as_c_str().unwrap().to_string_lossy().into_owned();
-        let physical_device = devices
-            .iter()
-            .copied()
-            .find(|&pd| name(pd).contains("llvmpipe"))
-            .or_else(|| devices.iter().copied().find(|&pd| props(pd).api_version >= vk::API_VERSION_1_3))
-            .unwrap_or_else(|| panic!("no Vulkan 1.3 device; {skip_hint}"));
-        let families = unsafe { instance.get_physical_device_queue_family_properties(physical_device) };
-        let family = families
-            .iter()
-            .position(|q| {
-                q.queue_flags.contains(vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE) && q.timestamp_valid_bits > 0
-            })
-            .expect("a graphics+compute queue family with timestamps") as u32;
-
-        // What the physical device supports, to enable what aokit can use.
-        let available = unsafe { instance.enumerate_device_extension_properties(physical_device) }.unwrap();
-        let rt_names = [
-            khr::acceleration_structure::NAME.as_ptr(),
-            khr::ray_tracing_pipeline::NAME.as_ptr(),
-            khr::deferred_host_operations::NAME.as_ptr(),
-        ];
-        let has_extensions = rt_names.iter().all(|&n| {
-            let n = unsafe { CStr::from_ptr(n) };
-            available.iter().any(|e| e.extension_name_as_c_str() == Ok(n))
-        });
-        let mut as_query = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default();
-        let mut rt_query = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default();
-        let mut f12_query = vk::PhysicalDeviceVulkan12Features::default();
-        let mut f13_query = vk::PhysicalDeviceVulkan13Features::default();
-        let mut query = vk::PhysicalDeviceFeatures2::default()
-            .push_next(&mut as_query)
-            .push_next(&mut rt_query)
-            .push_next(&mut f12_query)
-            .push_next(&mut f13_query);
-        unsafe { instance.get_physical_device_features2(physical_device, &mut query) };
-        let core_supported = query.features;
-        let ray_tracing = full
-            && has_extensions
-            && as_query.acceleration_structure != 0
-            && rt_query.ray_tracing_pipeline != 0
-            && f12_query.buffer_device_address != 0;
-        let maintenance4 = full && f13_query.maintenance4 != 0;
-        eprintln!("engine device: {} (ray tracing enabled: {ray_tracing})", name(physical_device));
-
-        let priorities = [1.0];
-        let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
-        let mut f12 = vk::PhysicalDeviceVulkan12Features::default()
-            .vulkan_memory_model(true)
-            .vulkan_memory_model_device_scope(true)
-            .buffer_device_address(ray_tracing);
-        let mut f13 = vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(full).maintenance4(maintenance4);
-        let core = vk::PhysicalDeviceFeatures::default()
-            .fragment_stores_and_atomics(full && core_supported.fragment_stores_and_atomics != 0);
-        let mut as_enable = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default().acceleration_structure(true);
-        let mut rt_enable = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default().ray_tracing_pipeline(true);
-        let mut create = vk::DeviceCreateInfo::default()
-            .queue_create_infos(&queues)
-            .enabled_features(&core)
-            .push_next(&mut f12)
-            .push_next(&mut f13);
-        if ray_tracing {
-            create = create.enabled_extension_names(&rt_names).push_next(&mut as_enable).push_next(&mut rt_enable);
-        }
-        let device = unsafe { instance.create_device(physical_device, &create, None) }.unwrap();
-        let queue = unsafe { device.get_device_queue(family, 0) };
-        Some(Engine {
-            entry,
-            instance,
-            debug,
-            messenger,
-            messages,
-            physical_device,
-            device,
-            family,
-            queue,
-            ray_tracing,
-        })
-    }
-
-    /// The handles aokit gets.
-    fn external(&self) -> ExternalDevice {
-        ExternalDevice {
-            entry: self.entry.clone(),
-            instance: self.instance.clone(),
-            physical_device: self.physical_device,
-            device: self.device.clone(),
-            queue_family_index: self.family,
-            queue: self.queue,
-            ray_tracing: self.ray_tracing,
-        }
-    }
-
-    /// Prove the device is still alive and ours, destroy it, the messenger and the instance,
-    /// and return everything the validation layer said.
-    fn destroy(self) -> Vec<String> {
-        unsafe {
-            self.device.device_wait_idle().expect("the engine's device survives aokit");
-            let fence = self.device.create_fence(&vk::FenceCreateInfo::default(), None).unwrap();
-            self.device.destroy_fence(fence, None);
-            self.device.destroy_device(None);
-            self.debug.destroy_debug_utils_messenger(self.messenger, None);
-            self.instance.destroy_instance(None);
-        }
-        self.messages.into_inner().unwrap()
-    }
+/// Prove the device is still alive and ours, destroy it, the messenger and the instance,
+/// and return everything the validation layer said.
+fn destroy(engine: Engine) -> Vec<String> {
+    engine.destroy_with(|device| unsafe {
+        let fence = device.create_fence(&vk::FenceCreateInfo::default(), None).unwrap();
+        device.destroy_fence(fence, None);
+    })
 }
 
 /// A synthetic G-buffer: a fronto-parallel wall at depth 10 with a raised block at depth 9,
@@ -284,22 +125,22 @@ fn run_on(engine: &Engine) {
 
 #[test]
 fn engine_device_with_everything_runs_aokit_and_outlives_it() {
-    let Some(engine) = Engine::new(true) else { return };
+    let Some(engine) = new_engine(true) else { return };
     run_on(&engine);
     // A second Gpu on the same device after the first was dropped.
     run_on(&engine);
-    let messages = engine.destroy();
+    let messages = destroy(engine);
     assert!(messages.is_empty(), "validation layer reported:\n{}", messages.join("\n"));
 }
 
 #[test]
 fn compute_only_engine_device_runs_a_compute_graph() {
-    let Some(engine) = Engine::new(false) else { return };
+    let Some(engine) = new_engine(false) else { return };
     assert!(!engine.ray_tracing);
     run_on(&engine);
     // A queue family that does not exist is the caller's mistake, reported as such.
     let wrong = ExternalDevice { queue_family_index: 99, ..engine.external() };
     assert!(matches!(Gpu::from_external(wrong), Err(GpuError::Input(_))));
-    let messages = engine.destroy();
+    let messages = destroy(engine);
     assert!(messages.is_empty(), "validation layer reported:\n{}", messages.join("\n"));
 }

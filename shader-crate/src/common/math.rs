@@ -21,7 +21,7 @@ pub fn frac(x: f32) -> f32 {
     x - x.floor()
 }
 
-/// Sign with `sign(0) = +1` (spec §1 octahedral codec, §4.2 `nz`).
+/// Sign with `sign(0) = +1` (spec svao-raysd §1 octahedral codec, §4.2 `nz`).
 #[inline]
 pub fn sign_nonzero(x: f32) -> f32 {
     if x < 0.0 { -1.0 } else { 1.0 }

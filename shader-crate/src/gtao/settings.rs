@@ -133,7 +133,7 @@ impl GtaoSettings {
         let mut resources = vec![
             mips,
             target_u32(frame, "gtao_terms", 0, "MainPass AO terms, 0–255 (spec §2.6)"),
-            target_u32(frame, "gtao_edges", 0, "packed depth edges of the denoiser (spec §2.7)"),
+            target_u32(frame, "gtao_edges", 0, "packed depth edges of the denoiser (spec §2.6.1, read by §2.7)"),
         ];
         let mut passes = Vec::new();
         for level in 0..MIP_LEVELS {

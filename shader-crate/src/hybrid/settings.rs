@@ -29,7 +29,7 @@ impl Default for HybridSettings {
 }
 
 impl HybridSettings {
-    /// The paper's variants (spec §4.4): `mixed` (1 screen + 1 world, w = 2/3), `world` (2 world
+    /// The paper's variants (spec §4.2, last paragraph): `mixed` (1 screen + 1 world, w = 2/3), `world` (2 world
     /// rays), `screen` (2 screen rays).
     pub fn variant(name: &str) -> Result<HybridSettings, String> {
         let d = HybridSettings::default();
@@ -78,7 +78,7 @@ impl HybridSettings {
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let mut resources = vec![
             record("hybrid_frame", std::slice::from_ref(&self.frame(frame)), "camera + HybridParams"),
-            target_f32(frame, "ao", 1.0, "blended screen/world visibility (spec §4.3), 1 = unoccluded"),
+            target_f32(frame, "ao", 1.0, "blended screen/world visibility (spec §4.2 step 5), 1 = unoccluded"),
             target_u32(frame, "ao_terms", 0, "the AO as the denoiser's 0–255 terms"),
             target_u32(frame, "ao_edges", 0, "packed depth edges for the denoiser"),
         ];
