@@ -346,6 +346,8 @@ fn graph_run(
     gbuffer: &GBufferImage,
     depth2: &[f32],
 ) -> TechniqueRun {
+    // Only the graph's own resources: an executor may still hold another technique's.
+    let read = |name: &str| graph.resource(name).and_then(|_| read(name));
     let f32s = |name: &str| -> Vec<f32> {
         read(name).map(|w| w.into_iter().map(f32::from_bits).collect()).unwrap_or_default()
     };

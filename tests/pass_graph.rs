@@ -122,7 +122,12 @@ fn a_graph_that_disagrees_with_its_module_is_refused() {
     let mut push = graph.clone();
     push.passes[0].push_constants.pop();
     assert!(check(&manifest, &name, &push).is_err());
-    let mut undeclared = graph;
+    let mut undeclared = graph.clone();
     undeclared.passes[1].bindings[0].resource = "no_such_resource";
     assert!(undeclared.validate().is_err());
+    // vao_main reads linear_depth (slot 0) and writes ao (slot 2): binding ao at slot 0 too is
+    // a written resource bound twice.
+    let mut written_twice = graph;
+    written_twice.passes[0].bindings[0].resource = "ao";
+    assert!(written_twice.validate().is_err());
 }

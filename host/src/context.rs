@@ -113,6 +113,8 @@ pub struct Gpu {
     pub(crate) device: ash::Device,
     pub(crate) queue: vk::Queue,
     queue_family_index: u32,
+    /// Whether the queue family has graphics (fragment-stage barriers are valid on it).
+    graphics: bool,
     pub(crate) pool: vk::CommandPool,
     pub(crate) allocator: ManuallyDrop<Mutex<Allocator>>,
     pub(crate) timestamp_period_ns: f32,
@@ -426,11 +428,15 @@ impl Gpu {
             acceleration: khr::acceleration_structure::Device::new(&instance, &device),
             pipelines: khr::ray_tracing_pipeline::Device::new(&instance, &device),
         });
+        let families = unsafe { instance.get_physical_device_queue_family_properties(physical_device) };
+        let graphics =
+            families.get(queue_family_index as usize).is_some_and(|q| q.queue_flags.contains(vk::QueueFlags::GRAPHICS));
         Ok(Gpu {
             ray_tracing,
             device,
             queue,
             queue_family_index,
+            graphics,
             pool,
             allocator: ManuallyDrop::new(Mutex::new(allocator)),
             timestamp_period_ns: probe.timestamp_period_ns,
@@ -524,6 +530,11 @@ impl Gpu {
     }
 
     /// The queue family of the queue aokit submits to.
+    /// Whether the queue family has graphics (raster passes, fragment-stage barriers).
+    pub fn has_graphics_queue(&self) -> bool {
+        self.graphics
+    }
+
     pub fn queue_family_index(&self) -> u32 {
         self.queue_family_index
     }

@@ -284,7 +284,11 @@ impl RasterGBuffer {
         unsafe {
             // Earlier transfers out of the targets (a previous pass) and reads of the buffers
             // finish first; the targets are cleared, so their old contents are discarded.
-            let earlier = (S::TRANSFER | S::COMPUTE_SHADER | S::FRAGMENT_SHADER, A::empty());
+            let mut readers = S::TRANSFER | S::COMPUTE_SHADER | S::FRAGMENT_SHADER;
+            if gpu.has_ray_tracing() {
+                readers |= S::RAY_TRACING_SHADER_KHR;
+            }
+            let earlier = (readers, A::empty());
             let to_attachment = (vk::ImageLayout::UNDEFINED, vk::ImageLayout::COLOR_ATTACHMENT_OPTIMAL);
             let color_out = (S::COLOR_ATTACHMENT_OUTPUT, A::COLOR_ATTACHMENT_WRITE);
             for t in [depth_t, normal_t] {

@@ -10,9 +10,11 @@
 //! - `record` starts with a barrier that orders it after all earlier work on the queue (so a
 //!   frame may be recorded while the previous one is in flight on the same queue) and ends with a
 //!   barrier that makes the outputs visible to later compute, fragment and transfer reads.
-//! - Buffers and descriptor pools replaced because of a size or binding change are released
-//!   [`FRAMES_IN_FLIGHT`] frames later; everything else lives until the context is dropped, and
-//!   the caller must make sure the device finished the context's work before dropping it.
+//! - Buffers, descriptor pools and query pools replaced because of a size or binding change are
+//!   released [`FRAMES_IN_FLIGHT`] `record` calls later: before recording frame F + 3 the caller
+//!   must have waited for frame F (the usual ring of at most three frames in flight, one `record`
+//!   per frame). Everything else lives until the context is dropped, and the caller must make sure
+//!   the device finished the context's work before dropping it.
 
 use crate::adapters::{Adapters, AoImage, EngineImage};
 use crate::compute::{ComputeKernel, memory_barrier};
@@ -146,9 +148,13 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         self.owner.borrow()
     }
 
-    /// The stages passes run in: compute, and ray tracing where the device has it.
+    /// The stages passes run in: compute, fragment where the queue has graphics, ray tracing
+    /// where the device has it.
     fn shader_stages(&self) -> vk::PipelineStageFlags {
-        let mut stages = vk::PipelineStageFlags::COMPUTE_SHADER | vk::PipelineStageFlags::FRAGMENT_SHADER;
+        let mut stages = vk::PipelineStageFlags::COMPUTE_SHADER;
+        if self.gpu().has_graphics_queue() {
+            stages |= vk::PipelineStageFlags::FRAGMENT_SHADER;
+        }
         if self.gpu().has_ray_tracing() {
             stages |= vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR;
         }
@@ -277,7 +283,9 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         // Order after earlier work on the queue (the previous frame may still read these).
         let transfer = vk::PipelineStageFlags::TRANSFER;
         memory_barrier(self.gpu(), cmd, transfer | stages, transfer | stages);
-        unsafe { d.cmd_write_timestamp(cmd, vk::PipelineStageFlags::TOP_OF_PIPE, timing.pool, 0) };
+        // BOTTOM_OF_PIPE: the stamp waits for all earlier commands (e.g. a raster G-buffer
+        // recorded before this frame), so no label absorbs their tail.
+        unsafe { d.cmd_write_timestamp(cmd, vk::PipelineStageFlags::BOTTOM_OF_PIPE, timing.pool, 0) };
         for r in &graph.resources {
             if r.lifetime == Lifetime::Persistent && !made.contains(&r.name) {
                 continue;
@@ -330,9 +338,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
                     p.record_trace(self.gpu(), cmd, sets[i], pass.invocations.x, pass.invocations.y)?
                 }
                 Pipeline::Raster(p) => {
-                    let scene = inputs
-                        .raster
-                        .ok_or_else(|| GpuError::Input("a raster pass needs the scene's vertices".into()))?;
+                    let scene = inputs.raster.expect("checked by bound_buffers");
                     let params = bytemuck::pod_read_unaligned(&pass.push_constants);
                     p.record(self.gpu(), cmd, sets[i], (scene.vertices, scene.vertex_count), &params, pass.invocations);
                 }
@@ -347,15 +353,11 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             let last_of_label = graph.passes.get(i + 1).is_none_or(|next| next.label != pass.label);
             if last_of_label {
                 stamp += 1;
-                let stage = match pass.kind {
-                    PassKind::Compute => vk::PipelineStageFlags::COMPUTE_SHADER,
-                    PassKind::RayTracing { .. } => vk::PipelineStageFlags::RAY_TRACING_SHADER_KHR,
-                    PassKind::Raster { .. } => vk::PipelineStageFlags::BOTTOM_OF_PIPE,
-                };
-                unsafe { d.cmd_write_timestamp(cmd, stage, timing.pool, stamp) };
+                // After every earlier command of any stage (a label may span pass kinds).
+                unsafe { d.cmd_write_timestamp(cmd, vk::PipelineStageFlags::BOTTOM_OF_PIPE, timing.pool, stamp) };
             }
         }
-        memory_barrier(self.gpu(), cmd, transfer | stages, transfer | vk::PipelineStageFlags::FRAGMENT_SHADER | stages);
+        memory_barrier(self.gpu(), cmd, transfer | stages, transfer | stages);
         Ok(())
     }
 
@@ -369,6 +371,11 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         graph: &Graph,
         frame: &EngineFrame,
     ) -> Result<(), GpuError> {
+        if graph.resources.iter().any(|r| [ENGINE_DEPTH, ENGINE_NORMALS].contains(&r.name)) {
+            return Err(GpuError::Input(format!(
+                "the graph declares a resource named {ENGINE_DEPTH} or {ENGINE_NORMALS}"
+            )));
+        }
         if frame.import.view != graph.view {
             return Err(GpuError::Input("EngineFrame::import.view differs from the graph's camera view".into()));
         }
@@ -442,8 +449,8 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         }
     }
 
-    /// `(label, ms)` of the last recorded frame, once the device finished it (waits for the
-    /// timestamps).
+    /// `(label, ms)` of the last recorded frame, once the device finished it (waits for its
+    /// timestamps; the pool is shared by the frames, so call it before recording the next one).
     pub fn pass_times(&self) -> Result<Vec<(&'static str, f64)>, GpuError> {
         let Some(t) = &self.timing else { return Ok(Vec::new()) };
         let stamps = self.gpu().timestamps_ms(t.pool, t.labels.len() + 1)?;
@@ -473,6 +480,9 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         }
         if let Some(raster) = inputs.raster {
             out.push(raster.vertices.raw);
+        } else if graph.inputs().contains(&inputs::SCENE_VERTICES) {
+            // Checked before anything is recorded into the caller's command buffer.
+            return Err(GpuError::Input("a raster pass needs the scene's vertices (GpuInputs::raster)".into()));
         }
         Ok(out)
     }

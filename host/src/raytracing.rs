@@ -102,6 +102,7 @@ pub struct SceneAccel {
     mask_headers: Buffer,
     mask_texels: Buffer,
     pub build_ms: f64,
+    generation: u64,
 }
 
 impl SceneAccel {
@@ -117,9 +118,10 @@ impl SceneAccel {
         })
     }
 
-    /// A number that differs between live scenes (the TLAS handle).
+    /// A number no other acceleration structure built in this process has (a destroyed TLAS's
+    /// handle may be reused by the next one; descriptor sets must not be).
     pub(crate) fn identity(&self) -> u64 {
-        ash::vk::Handle::as_raw(self.tlas.0)
+        self.generation
     }
 
     /// The TLAS as a descriptor.
@@ -211,6 +213,10 @@ impl SceneAccel {
             mask_headers: gpu.upload(&masks.0, storage)?,
             mask_texels: gpu.upload(&masks.1, storage)?,
             build_ms: start.elapsed().as_secs_f64() * 1e3,
+            generation: {
+                static BUILT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
+                BUILT.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
+            },
         })
     }
 

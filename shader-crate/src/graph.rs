@@ -253,6 +253,14 @@ impl Graph {
                 if p.bindings[..j].iter().any(|c| c.slot == b.slot) {
                     return Err(format!("pass '{}' binds slot {} twice", p.entry, b.slot));
                 }
+                // A written resource is bound once per pass: the CPU executor hands it to the
+                // kernel once, and a second view of it would alias on the GPU.
+                let twice = p.bindings[..j]
+                    .iter()
+                    .any(|c| c.resource == b.resource && (c.access.writes() || b.access.writes()));
+                if twice {
+                    return Err(format!("pass '{}' binds '{}' twice, writing it", p.entry, b.resource));
+                }
             }
         }
         for s in &self.snapshots {
