@@ -200,3 +200,19 @@ pub fn denoise_passes(
     }
     (resources, passes)
 }
+
+/// The graph of a technique that writes visibility `"ao"` plus denoiser terms `"ao_terms"` and
+/// edges `"ao_edges"` (the ray march, the hybrid): its `resources` and `passes`, then XeGTAO's
+/// denoiser with `denoise` passes into `"ao_final"` when `denoise > 0` (spec
+/// gtao-raymarch-hybrid §3.4, §4.2: both reuse §2.7).
+pub fn with_denoiser(frame: &FrameDesc, mut resources: Vec<Resource>, mut passes: Vec<Pass>, denoise: u32) -> Graph {
+    let view = frame.camera.view;
+    if denoise == 0 {
+        return Graph { resources, passes, output: "ao", raw_output: "ao", snapshots: Vec::new(), view };
+    }
+    let params = GtaoSettings { denoise_passes: denoise, ..Default::default() }.params(frame);
+    let (r, p) = denoise_passes(frame, &params, "ao_terms", "ao_edges", "ao_final", "denoise");
+    resources.extend(r);
+    passes.extend(p);
+    Graph { resources, passes, output: "ao_final", raw_output: "ao", snapshots: Vec::new(), view }
+}

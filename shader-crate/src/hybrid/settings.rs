@@ -4,7 +4,7 @@
 
 use super::{HybridFrame, HybridParams};
 use crate::graph::{Access, Binding, FrameDesc, Graph, Pass, PassKind, inputs, record, slots, target_f32, target_u32};
-use crate::gtao::settings::{GtaoSettings, denoise_passes};
+use crate::gtao::settings::with_denoiser;
 use crate::raymarch::settings::DEPTH_BIAS;
 
 /// Rays per pixel and the world-ray weight (spec §4.1 defaults in brackets).
@@ -76,7 +76,7 @@ impl HybridSettings {
 
     /// Rays → [denoise].
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
-        let mut resources = vec![
+        let resources = vec![
             record("hybrid_frame", std::slice::from_ref(&self.frame(frame)), "camera + HybridParams"),
             target_f32(frame, "ao", 1.0, "blended screen/world visibility (spec §4.2 step 5), 1 = unoccluded"),
             target_u32(frame, "ao_terms", 0, "the AO as the denoiser's 0–255 terms"),
@@ -92,7 +92,7 @@ impl HybridSettings {
         bindings.extend(crate::groundtruth::settings::alpha_bindings(5));
         bindings.push(Binding { slot: 9, resource: "ao_terms", access: Access::Write });
         bindings.push(Binding { slot: 10, resource: "ao_edges", access: Access::Write });
-        let mut passes = vec![Pass {
+        let passes = vec![Pass {
             label: "hybrid_rays",
             entry: "hybrid_rgen",
             kind: PassKind::RayTracing { miss: "groundtruth_miss", any_hit: "groundtruth_ahit" },
@@ -100,14 +100,6 @@ impl HybridSettings {
             invocations: frame.size(),
             push_constants: Vec::new(),
         }];
-        let view = frame.camera.view;
-        if self.denoise_passes == 0 {
-            return Graph { resources, passes, output: "ao", raw_output: "ao", snapshots: Vec::new(), view };
-        }
-        let dp = GtaoSettings { denoise_passes: self.denoise_passes, ..Default::default() }.params(frame);
-        let (r, p) = denoise_passes(frame, &dp, "ao_terms", "ao_edges", "ao_final", "denoise");
-        resources.extend(r);
-        passes.extend(p);
-        Graph { resources, passes, output: "ao_final", raw_output: "ao", snapshots: Vec::new(), view }
+        with_denoiser(frame, resources, passes, self.denoise_passes)
     }
 }

@@ -3,7 +3,7 @@
 
 use super::{Contribution, MAX_DIRECTIONS, RaymarchParams};
 use crate::graph::{Access, FrameDesc, Graph, Pass, inputs, record, target_f32, target_u32};
-use crate::gtao::settings::{GtaoSettings, denoise_passes};
+use crate::gtao::settings::with_denoiser;
 
 /// Relative depth bias κ (spec §3.2).
 pub const DEPTH_BIAS: f32 = 0.0008;
@@ -65,7 +65,7 @@ impl RaymarchSettings {
 
     /// March → [denoise].
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
-        let mut resources = vec![
+        let resources = vec![
             record("raymarch_kernel", &self.kernel(), "Poisson-disk directions (spec §3.3)"),
             target_f32(frame, "ao", 1.0, "ray-marched accessibility (Eq. 2), 1 = unoccluded"),
             target_u32(frame, "ao_terms", 0, "the AO as the denoiser's 0–255 terms"),
@@ -80,29 +80,8 @@ impl RaymarchSettings {
             ("ao_edges", Access::Write),
         ];
         let params = self.params(frame);
-        let mut passes =
+        let passes =
             vec![Pass::compute("raymarch", "raymarch_main", &bindings, frame.size(), bytemuck::bytes_of(&params))];
-        if self.denoise_passes == 0 {
-            return Graph {
-                resources,
-                passes,
-                output: "ao",
-                raw_output: "ao",
-                snapshots: Vec::new(),
-                view: frame.camera.view,
-            };
-        }
-        let dp = GtaoSettings { denoise_passes: self.denoise_passes, ..Default::default() }.params(frame);
-        let (r, p) = denoise_passes(frame, &dp, "ao_terms", "ao_edges", "ao_final", "denoise");
-        resources.extend(r);
-        passes.extend(p);
-        Graph {
-            resources,
-            passes,
-            output: "ao_final",
-            raw_output: "ao",
-            snapshots: Vec::new(),
-            view: frame.camera.view,
-        }
+        with_denoiser(frame, resources, passes, self.denoise_passes)
     }
 }
