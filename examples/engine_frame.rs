@@ -10,10 +10,10 @@
 //! Camera and AO flags are `aokit render`'s, with the same defaults; there is no guard band (an
 //! engine renders none): compare with `aokit render … --guard 0`, e.g. with `--compare cpu.png`.
 
-use aokit::cli::SceneArgs;
+use aokit::cli::{SceneArgs, TechniqueArgs};
 use aokit::frame::Frame;
 use aokit::output::write_png;
-use aokit::technique::{Technique, TechniqueDefaults};
+use aokit::technique::Technique;
 use aokit_shaders::adapters::{DEPTH_REVERSED, ImportParams};
 use aokit_shaders::glam::{Mat4, Vec4};
 use aokit_shaders::graph::PassKind;
@@ -39,7 +39,10 @@ const NORMAL_FORMAT: vk::Format = vk::Format::R8G8B8A8_UNORM;
 struct Args {
     #[command(flatten)]
     view: SceneArgs,
-    /// vao, hbao, raysd, hbao-sd, raysvao, gtao, raymarch, hybrid or groundtruth.
+    #[command(flatten)]
+    settings: TechniqueArgs,
+    /// A technique of `aokit techniques` (single depth, no raster pass), optionally with
+    /// `:key=value` settings.
     #[arg(long, default_value = "vao")]
     technique: String,
     /// Output PNG (8-bit grey, 1 = unoccluded = white).
@@ -737,7 +740,7 @@ fn record_frame(
 
 /// What the technique's graph needs besides depth and normals.
 fn check_graph(technique: &Technique, frame: &Frame, gpu: &Gpu) -> Result<bool> {
-    let graph = technique.graph(&frame.desc()).ok_or("the technique has no pass graph")?;
+    let graph = technique.graph(&frame.desc())?;
     if technique.second_layer().is_some() {
         return Err("dual-depth techniques need a second depth layer, which record_engine does not import".into());
     }
@@ -757,8 +760,7 @@ fn check_graph(technique: &Technique, frame: &Frame, gpu: &Gpu) -> Result<bool> 
 
 fn main() -> Result<()> {
     let args = Args::parse();
-    let defaults = TechniqueDefaults::default(); // every technique's own defaults, as `aokit render`
-    let technique = Technique::parse(&args.technique, &defaults)?;
+    let technique = args.settings.technique(&args.technique)?; // the settings flags of `aokit render`
     let (scene, frame) = args.view.resolve(0)?; // an engine renders no guard band
     let (width, height) = (frame.inner.x, frame.inner.y);
     let view = frame.camera.view;
@@ -859,7 +861,7 @@ fn main() -> Result<()> {
     // moves (here it stands still, so the rebuilt graph binds the same resources every frame).
     let vertex_count = vertices.len() as u32;
     for index in 0..args.frames {
-        let graph = technique.graph(&frame.desc()).ok_or("the technique has no pass graph")?;
+        let graph = technique.graph(&frame.desc())?;
         let record_start = Instant::now();
         unsafe {
             device.reset_command_pool(pool, vk::CommandPoolResetFlags::empty())?;

@@ -1,10 +1,13 @@
 //! Command-line pieces shared by the `aokit` tool and the examples (feature `cli`): the scene,
-//! camera and AO-parameter flags and their resolution into a [`Frame`].
+//! camera and AO-parameter flags and their resolution into a [`Frame`], and the techniques'
+//! settings flags generated from the registry.
 
 use crate::frame::{CameraChoice, Frame, FrameRequest};
 use crate::scene::Scene;
 use crate::scene::builtin::{self, BuiltinScene};
+use crate::technique::{CliSettings, Row, TECHNIQUES, Technique};
 use aokit_shaders::glam::Vec3;
+use aokit_shaders::technique::Kind;
 use std::path::Path;
 
 /// The scene, the output size, the camera and the AO parameters (`aokit render`'s flags).
@@ -95,4 +98,139 @@ impl SceneArgs {
         let frame = Frame::resolve(&scene, builtin, &request).map_err(|e| e.to_string())?;
         Ok((scene, frame))
     }
+}
+
+/// Every registered technique's settings as command-line flags. The flags, their help, ranges,
+/// choices and defaults are read from the settings rows beside the kernels
+/// (`aokit_shaders::technique::Setting`), so none is written here. A flag applies to every
+/// technique of the command that reads it; a flag no technique of the command reads is an error.
+#[derive(Clone, Debug, Default)]
+pub struct TechniqueArgs {
+    /// The flags given on the command line.
+    pub given: CliSettings,
+}
+
+/// A command-line flag and the rows (one per technique) it sets.
+struct FlagDecl {
+    name: &'static str,
+    /// `None`: a value flag; `Some(value)`: a switch setting `value`.
+    switch: Option<&'static str>,
+    row: Row,
+    techniques: Vec<&'static str>,
+}
+
+/// The flags of every technique in the registry, in registry order; techniques sharing a flag
+/// share its settings row.
+fn flags() -> Vec<FlagDecl> {
+    let mut flags: Vec<FlagDecl> = Vec::new();
+    for t in TECHNIQUES {
+        for row in t.rows() {
+            let spellings = row.flag.map(|f| (f, None)).into_iter().chain(row.switch.map(|(f, v)| (f, Some(v))));
+            for (name, switch) in spellings {
+                match flags.iter_mut().find(|f| f.name == name) {
+                    Some(f) => {
+                        assert!(
+                            f.row.settings_type == row.settings_type && f.row.key == row.key,
+                            "--{name} is declared by two different settings ({} and {})",
+                            f.row.settings_type,
+                            row.settings_type
+                        );
+                        f.techniques.push(t.name());
+                    }
+                    None => flags.push(FlagDecl { name, switch, row: row.clone(), techniques: vec![t.name()] }),
+                }
+            }
+        }
+    }
+    flags
+}
+
+impl clap::Args for TechniqueArgs {
+    fn augment_args(mut cmd: clap::Command) -> clap::Command {
+        for f in flags() {
+            let applies = format!("[{}]", f.techniques.join(", "));
+            let arg = clap::Arg::new(f.name).long(f.name).help_heading("Technique settings");
+            let arg = match (f.switch, f.row.kind) {
+                (Some(_), _) => arg.action(clap::ArgAction::SetTrue).help(format!("{} {applies}", f.row.help)),
+                (None, Kind::Choice(names)) => arg
+                    .value_parser(clap::builder::PossibleValuesParser::new(names))
+                    .default_value(f.row.default.clone())
+                    .help(format!("{} {applies}", f.row.help)),
+                (None, kind) => arg
+                    .value_name(if matches!(kind, Kind::Count { .. }) { "N" } else { "X" })
+                    .allow_negative_numbers(true)
+                    .default_value(f.row.default.clone())
+                    .help(format!("{} ({}) {applies}", f.row.help, kind.accepted())),
+            };
+            cmd = cmd.arg(arg);
+        }
+        cmd
+    }
+
+    fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
+        Self::augment_args(cmd)
+    }
+}
+
+impl clap::FromArgMatches for TechniqueArgs {
+    fn from_arg_matches(matches: &clap::ArgMatches) -> Result<Self, clap::Error> {
+        let mut args = TechniqueArgs::default();
+        args.update_from_arg_matches(matches)?;
+        Ok(args)
+    }
+
+    /// Only flags the user typed: the defaults are the techniques' own.
+    fn update_from_arg_matches(&mut self, matches: &clap::ArgMatches) -> Result<(), clap::Error> {
+        for f in flags() {
+            if matches.value_source(f.name) != Some(clap::parser::ValueSource::CommandLine) {
+                continue;
+            }
+            let value = match f.switch {
+                Some(_) => None,
+                None => matches.get_one::<String>(f.name).cloned(),
+            };
+            self.given.0.push((f.name.to_string(), value));
+        }
+        Ok(())
+    }
+}
+
+impl TechniqueArgs {
+    /// The techniques of `specs` (`name[:key=value…]`) with the given flags applied; refuses
+    /// a flag none of them reads.
+    pub fn techniques(&self, specs: &[&str]) -> Result<Vec<Technique>, String> {
+        let techniques = specs.iter().map(|s| Technique::parse(s, &self.given)).collect::<Result<Vec<_>, _>>()?;
+        let unused = self.given.unused(&techniques.iter().collect::<Vec<_>>());
+        if !unused.is_empty() {
+            let names: Vec<_> = techniques.iter().map(|t| t.name()).collect();
+            return Err(format!("{} not read by {} (see `aokit techniques`)", unused.join(", "), names.join(", ")));
+        }
+        Ok(techniques)
+    }
+
+    /// One technique.
+    pub fn technique(&self, spec: &str) -> Result<Technique, String> {
+        Ok(self.techniques(&[spec])?.remove(0))
+    }
+}
+
+/// The registry as text: every technique, its summary and its settings (key, accepted values,
+/// default, flag).
+pub fn list_techniques() -> String {
+    let mut out = String::new();
+    for t in TECHNIQUES {
+        out += &format!("{:12} {}\n", t.name(), t.summary());
+        let defaults = t.configure().values();
+        for row in t.rows() {
+            let default = defaults.iter().find(|(k, _)| *k == row.key).map_or(String::new(), |(_, v)| v.clone());
+            let flag = match (row.flag, row.switch) {
+                (Some(f), Some((s, v))) => format!("--{f}, --{s} (= {v})"),
+                (Some(f), None) => format!("--{f}"),
+                (None, Some((s, v))) => format!("--{s} (= {v})"),
+                (None, None) => String::new(),
+            };
+            out += &format!("    {:18} {:28} [{default}]  {flag}\n", row.key, row.kind.accepted());
+        }
+    }
+    out
 }

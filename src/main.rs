@@ -1,17 +1,13 @@
 //! `aokit`: render ambient occlusion for a scene on the CPU or on Vulkan.
 
 use aokit::cli::SceneArgs;
+use aokit::cli::TechniqueArgs;
 use aokit::frame::Frame;
 use aokit::output::{crop_inner, write_exr, write_png};
 use aokit::render::{CpuRenderer, Renderer, VulkanRenderer};
 use aokit::report::{BenchResult, CompareReport, CompareSetup};
 use aokit::scene::Scene;
 use aokit::scene::builtin;
-use aokit::technique::{
-    GroundTruthSettings, GtaoOptions, GtaoPreset, HybridOptions, RaymarchOptions, SdOptions, Technique,
-    TechniqueDefaults,
-};
-use aokit_shaders::common::tables::JitterTable;
 use aokit_vulkan::GpuOptions;
 use clap::{Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -45,27 +41,14 @@ enum Command {
     },
     /// List the built-in scenes and their camera presets.
     Scenes,
+    /// List the techniques and their settings (key, accepted values, default, flag).
+    Techniques,
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
 enum Backend {
     Cpu,
     Vulkan,
-}
-
-#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
-enum SdRes {
-    Full,
-    Half,
-    Quarter,
-}
-
-#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
-enum Jitter {
-    /// The reference's HEAD table (spec §7.2).
-    Scrambled,
-    /// The paper-era stratum-centre table.
-    Paper,
 }
 
 /// Scene, camera and AO parameters shared by every command.
@@ -84,239 +67,13 @@ struct FrameArgs {
     validation: bool,
 }
 
-/// Options of the techniques (each applies to the techniques that have it); the numeric defaults
-/// are the settings types' own (`Default` beside the kernels).
-#[derive(clap::Args)]
-struct TechniqueArgs {
-    /// Ray-SD map resolution.
-    #[arg(long, value_enum, default_value = "quarter")]
-    sd_res: SdRes,
-    /// Ray-SD layers N (1, 2, 4, 8).
-    #[arg(long, default_value_t = SdOptions::default().layers)]
-    sd_layers: u32,
-    /// Reservoir MAX_COUNT (raised to N when smaller).
-    #[arg(long, default_value_t = SdOptions::default().max_count)]
-    max_count: u32,
-    /// Radius cutoff in pixels: closer samples are never refined (raysd, raysvao).
-    #[arg(long, default_value_t = SdOptions::default().cutoff)]
-    cutoff: f32,
-    /// Trace every SD texel over its full range (no ray-interval optimisation).
-    #[arg(long)]
-    no_interval: bool,
-    /// SD rays through texel centres.
-    #[arg(long)]
-    no_jitter: bool,
-    /// SD jitter table.
-    #[arg(long, value_enum, default_value = "scrambled")]
-    jitter: Jitter,
-    /// SD guard band in full-resolution pixels.
-    #[arg(long, default_value_t = SdOptions::default().guard)]
-    sd_guard: u32,
-    /// Primary depth of vao/raysd/raysvao: the depth buffer, or dual depth (plus a depth-peeled
-    /// second layer, spec §11).
-    #[arg(long, value_enum, default_value = "single")]
-    primary: Primary,
-    /// Minimum separation of the peeled second layer (world units).
-    #[arg(long, default_value_t = SdOptions::default().peel_separation)]
-    peel_separation: f32,
-    /// SD map of raysd: ray-traced, or the raster coverage-mask baseline (= --technique sdsvao).
-    #[arg(long, value_enum, default_value = "ray")]
-    sd_source: SdSource,
-    /// AO kernel of vao/raysd: VAO's halo model or HBAO+ (radius × 1.5, spec §4.5).
-    #[arg(long, value_enum, default_value = "vao")]
-    kernel: Kernel,
-    /// Rays per pixel of the ground truth.
-    #[arg(long, default_value_t = GroundTruthSettings::default().spp)]
-    spp: u32,
-    /// Ground truth with uniform instead of cosine-weighted hemisphere sampling.
-    #[arg(long)]
-    uniform: bool,
-    /// XeGTAO quality preset: slices × steps per side 1×2, 2×2, 3×3, 9×3.
-    #[arg(long, value_enum, default_value = "high")]
-    preset: Preset,
-    /// XeGTAO denoise passes (0 off, 1 sharp, 2 medium, 3 soft).
-    #[arg(long, default_value_t = GtaoOptions::default().denoise_passes)]
-    gtao_denoise: u32,
-    /// XeGTAO RadiusMultiplier (effective radius = --radius × this).
-    #[arg(long, default_value_t = GtaoOptions::default().radius_multiplier)]
-    gtao_radius_multiplier: f32,
-    /// XeGTAO FalloffRange (fraction of the radius over which samples fade).
-    #[arg(long, default_value_t = GtaoOptions::default().falloff_range)]
-    gtao_falloff_range: f32,
-    /// XeGTAO SampleDistributionPower.
-    #[arg(long, default_value_t = GtaoOptions::default().sample_distribution_power)]
-    gtao_sample_power: f32,
-    /// XeGTAO ThinOccluderCompensation.
-    #[arg(long, default_value_t = GtaoOptions::default().thin_occluder_compensation)]
-    gtao_thin_occluder: f32,
-    /// XeGTAO FinalValuePower.
-    #[arg(long, default_value_t = GtaoOptions::default().final_value_power)]
-    gtao_final_power: f32,
-    /// XeGTAO DepthMIPSamplingOffset.
-    #[arg(long, default_value_t = GtaoOptions::default().depth_mip_sampling_offset)]
-    gtao_mip_offset: f32,
-    /// XeGTAO normals: the G-buffer's, or derived from depth (pass 0).
-    #[arg(long, value_enum, default_value = "gbuffer")]
-    gtao_normals: GtaoNormals,
-    /// Ray-marched SSAO: directions N (the paper uses 8, 16, 24).
-    #[arg(long, default_value_t = RaymarchOptions::default().directions)]
-    rm_directions: u32,
-    /// Ray-marched SSAO: steps per direction.
-    #[arg(long, default_value_t = RaymarchOptions::default().steps)]
-    rm_steps: u32,
-    /// Ray-marched SSAO: contrast exponent α of Eq. 2.
-    #[arg(long, default_value_t = RaymarchOptions::default().alpha)]
-    rm_alpha: f32,
-    /// Ray-marched SSAO: reading of Eq. 2 (linear: visible distance / R; binary: 0 on a hit).
-    #[arg(long, value_enum, default_value = "linear")]
-    rm_contribution: RmContribution,
-    /// Ray-marched SSAO: Vogel spiral instead of the best-candidate Poisson disk.
-    #[arg(long)]
-    rm_vogel: bool,
-    /// Ray-marched SSAO: XeGTAO denoise passes afterwards.
-    #[arg(long, default_value_t = RaymarchOptions::default().denoise_passes)]
-    rm_denoise: u32,
-    /// Hybrid AO: mixed (1 screen + 1 world ray), world (2 world rays), screen (2 screen rays).
-    #[arg(long, value_enum, default_value = "mixed")]
-    hybrid_variant: HybridVariant,
-    /// Hybrid AO: weight of the world rays (default 2/3 for mixed).
-    #[arg(long)]
-    world_weight: Option<f32>,
-    /// Hybrid AO: XeGTAO denoise passes afterwards.
-    #[arg(long, default_value_t = HybridOptions::default().denoise_passes)]
-    hybrid_denoise: u32,
-}
-
-#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
-enum SdSource {
-    Ray,
-    Raster,
-}
-
-#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
-enum Kernel {
-    Vao,
-    Hbao,
-}
-
-#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
-enum Primary {
-    Single,
-    Dual,
-}
-
-#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
-enum RmContribution {
-    Linear,
-    Binary,
-}
-
-#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
-enum HybridVariant {
-    Mixed,
-    World,
-    Screen,
-}
-
-#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
-enum Preset {
-    Low,
-    Medium,
-    High,
-    Ultra,
-}
-
-#[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
-enum GtaoNormals {
-    Gbuffer,
-    Depth,
-}
-
-impl TechniqueArgs {
-    fn gtao_options(&self) -> GtaoOptions {
-        GtaoOptions {
-            quality: match self.preset {
-                Preset::Low => GtaoPreset::Low,
-                Preset::Medium => GtaoPreset::Medium,
-                Preset::High => GtaoPreset::High,
-                Preset::Ultra => GtaoPreset::Ultra,
-            },
-            denoise_passes: self.gtao_denoise,
-            radius_multiplier: self.gtao_radius_multiplier,
-            falloff_range: self.gtao_falloff_range,
-            sample_distribution_power: self.gtao_sample_power,
-            thin_occluder_compensation: self.gtao_thin_occluder,
-            final_value_power: self.gtao_final_power,
-            depth_mip_sampling_offset: self.gtao_mip_offset,
-            normals_from_depth: self.gtao_normals == GtaoNormals::Depth,
-        }
-    }
-
-    fn sd_options(&self) -> Result<SdOptions, String> {
-        let o = SdOptions {
-            divisor: match self.sd_res {
-                SdRes::Full => 1,
-                SdRes::Half => 2,
-                SdRes::Quarter => 4,
-            },
-            layers: self.sd_layers,
-            max_count: self.max_count,
-            cutoff: self.cutoff,
-            interval: !self.no_interval,
-            jitter: match (self.no_jitter, self.jitter) {
-                (true, _) => JitterTable::None,
-                (false, Jitter::Scrambled) => JitterTable::Scrambled,
-                (false, Jitter::Paper) => JitterTable::Paper,
-            },
-            guard: self.sd_guard,
-            dual: self.primary == Primary::Dual,
-            peel_separation: self.peel_separation,
-            hbao: self.kernel == Kernel::Hbao,
-            raster: self.sd_source == SdSource::Raster,
-        };
-        o.validate()?;
-        if self.spp == 0 {
-            return Err("--spp must be at least 1".into());
-        }
-        Ok(o)
-    }
-
-    fn technique(&self, name: &str) -> Result<Technique, String> {
-        let variant = match self.hybrid_variant {
-            HybridVariant::Mixed => "mixed",
-            HybridVariant::World => "world",
-            HybridVariant::Screen => "screen",
-        };
-        let mut hybrid = HybridOptions { denoise_passes: self.hybrid_denoise, ..HybridOptions::variant(variant)? };
-        if let Some(w) = self.world_weight {
-            hybrid.world_weight = w;
-        }
-        let defaults = TechniqueDefaults {
-            sd: self.sd_options()?,
-            gtao: self.gtao_options(),
-            raymarch: RaymarchOptions {
-                directions: self.rm_directions,
-                steps: self.rm_steps,
-                alpha: self.rm_alpha,
-                binary: self.rm_contribution == RmContribution::Binary,
-                vogel: self.rm_vogel,
-                denoise_passes: self.rm_denoise,
-            },
-            hybrid,
-            spp: self.spp,
-            uniform: self.uniform,
-        };
-        Technique::parse(name, &defaults)
-    }
-}
-
 #[derive(clap::Args)]
 struct RenderArgs {
     #[command(flatten)]
     frame: FrameArgs,
     #[command(flatten)]
     options: TechniqueArgs,
-    /// vao, hbao, raysd, hbao-sd, sdsvao, raysvao, gtao, raymarch, hybrid or groundtruth.
+    /// A technique of `aokit techniques`, optionally with `:key=value` settings.
     #[arg(long, default_value = "vao")]
     technique: String,
     /// Skip the bilateral blur.
@@ -336,7 +93,8 @@ struct CompareArgs {
     frame: FrameArgs,
     #[command(flatten)]
     options: TechniqueArgs,
-    /// Comma-separated techniques to compare.
+    /// Comma-separated techniques to compare, each optionally with `:key=value` settings (e.g.
+    /// `raysd:sd-layers=8`).
     #[arg(long, default_value = "vao,raysd,raysvao")]
     techniques: String,
     /// The reference technique (raysvao or groundtruth).
@@ -471,8 +229,8 @@ fn compare(args: CompareArgs) -> Result<(), String> {
     if names.is_empty() {
         return Err("--techniques is empty".into());
     }
-    let techniques = names.iter().map(|n| args.options.technique(n)).collect::<Result<Vec<_>, _>>()?;
-    let reference = args.options.technique(&args.reference)?;
+    let mut techniques = args.options.techniques(&[&names[..], &[args.reference.as_str()]].concat())?;
+    let reference = techniques.pop().expect("the reference is the last");
     let (scene, frame) = resolve(&args.frame)?;
     let renderer = renderer(&args.frame, &scene)?;
     let rows = frame.camera.view.size().y as u64 * (2 + techniques.len() as u64);
@@ -482,13 +240,13 @@ fn compare(args: CompareArgs) -> Result<(), String> {
     let reference_run = renderer.run(&scene, &frame, &gbuffer, &reference, &progress).map_err(|e| e.to_string())?;
     let mut runs = Vec::new();
     for t in &techniques {
-        runs.push((*t, renderer.run(&scene, &frame, &gbuffer, t, &progress).map_err(|e| e.to_string())?));
+        runs.push((t.clone(), renderer.run(&scene, &frame, &gbuffer, t, &progress).map_err(|e| e.to_string())?));
     }
     bar.finish_and_clear();
     check_validation(&renderer)?;
     let device = renderer.device_name();
     let setup = CompareSetup { scene: &scene.name, backend: renderer.backend_name(), device: &device, gbuffer_ms };
-    let report = CompareReport::new(setup, &frame, (reference, &reference_run), &runs, &args.options.sd_options()?);
+    let report = CompareReport::new(setup, &frame, (reference, &reference_run), &runs);
     println!("{}", report.table());
     if let Some(path) = &args.json {
         std::fs::write(path, serde_json::to_string_pretty(&report.json()).expect("serializable"))
@@ -564,7 +322,8 @@ fn scaling(args: ScalingArgs) -> Result<(), String> {
         .split(',')
         .map(|c| c.trim().parse::<u32>().map_err(|e| format!("--copies '{c}': {e}")))
         .collect::<Result<_, _>>()?;
-    let techniques = args.techniques.split(',').map(|n| args.options.technique(n)).collect::<Result<Vec<_>, _>>()?;
+    let names: Vec<&str> = args.techniques.split(',').map(str::trim).collect();
+    let techniques = args.options.techniques(&names)?;
     if args.frames == 0 {
         return Err("--frames must be at least 1".into());
     }
@@ -588,12 +347,7 @@ fn scaling(args: ScalingArgs) -> Result<(), String> {
             let total = stats.passes.iter().find(|p| p.0 == "total").map_or(0.0, |p| p.1);
             let passes: Vec<_> =
                 stats.passes.iter().filter(|p| p.0 != "total").map(|p| format!("{} {:.1}", p.0, p.1)).collect();
-            println!(
-                "{k:>6} {:>10} {:<10} {total:>10.1}  {}",
-                big.triangles.len(),
-                t.label(&SdOptions::default()),
-                passes.join(", ")
-            );
+            println!("{k:>6} {:>10} {:<10} {total:>10.1}  {}", big.triangles.len(), t.label(), passes.join(", "));
             rows.push(serde_json::json!({
                 "copies": k, "triangles": big.triangles.len(), "technique": t.name(), "options": t.describe(),
                 "passes": stats.json(), "total_ms": total,
@@ -628,6 +382,10 @@ fn main() -> ExitCode {
                     eprintln!("  {ext}: {}", if *has { "yes" } else { "no" });
                 }
             })
+        }
+        Command::Techniques => {
+            print!("{}", aokit::cli::list_techniques());
+            Ok(())
         }
         Command::Scenes => {
             for s in builtin::builtin_scenes() {

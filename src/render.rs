@@ -220,7 +220,11 @@ impl VulkanRenderer {
 
     /// VAO and blur on a given G-buffer (uploaded).
     pub fn ao(&self, frame: &Frame, gbuffer: GBufferImage) -> Result<Render, GpuError> {
-        let run = self.run_graph_without_scene(frame, &gbuffer, &Technique::Vao)?;
+        let run = self.run_graph_without_scene(
+            frame,
+            &gbuffer,
+            &Technique::new(&aokit_shaders::vao::settings::VAO, Default::default()),
+        )?;
         Ok(Render { gbuffer, ao: run.ao, ao_blurred: run.ao_final, passes: run.passes })
     }
 
@@ -267,7 +271,7 @@ impl VulkanRenderer {
         let settings = GroundTruthSettings { spp: params.samples, uniform: params.uniform != 0 };
         // The given radius and exponent, not the frame's.
         let desc = FrameDesc { radius: params.radius, exponent: params.exponent, ..frame.desc() };
-        let technique = Technique::GroundTruth { spp: settings.spp, uniform: settings.uniform };
+        let technique = Technique::new(&aokit_shaders::groundtruth::settings::GROUNDTRUTH, settings);
         let mut run = self.run_graph(scene, frame, gbuffer, &technique, &settings.graph(&desc))?;
         if let Some(ms) = self.last_accel_build.take() {
             run.passes.insert(0, ("accel_build", ms));
@@ -649,7 +653,7 @@ impl VulkanRenderer {
 
     /// XeGTAO's passes on a given G-buffer (uploaded), with every intermediate buffer.
     pub fn gtao(&self, frame: &Frame, gbuffer: &GBufferImage, options: &GtaoOptions) -> Result<GtaoOutput, GpuError> {
-        let technique = Technique::Gtao(*options);
+        let technique = Technique::new(&aokit_shaders::gtao::settings::GTAO, *options);
         let graph = technique.graph(&frame.desc()).expect("XeGTAO has a graph");
         self.graph_frame(None, frame, gbuffer, &technique, &graph, |ctx, pass_ms, _| {
             Ok(GtaoOutput {

@@ -79,7 +79,6 @@ impl CompareReport {
         frame: &Frame,
         (reference, reference_run): (Technique, &TechniqueRun),
         runs: &[(Technique, TechniqueRun)],
-        defaults: &crate::technique::SdOptions,
     ) -> CompareReport {
         let view = frame.camera.view;
         let (w, h) = (frame.inner.x as usize, frame.inner.y as usize);
@@ -90,7 +89,7 @@ impl CompareReport {
             let ao = crop_inner(&view, &run.ao_final);
             let img = ImageRef { width: w, height: h, pixels: &ao };
             let m = mse(img, reference_img, None).unwrap_or(f64::NAN);
-            let base = technique.label(defaults);
+            let base = technique.label();
             let taken = rows
                 .iter()
                 .filter(|r: &&CompareRow| r.label == base || r.label.starts_with(&format!("{base}-")))
@@ -98,7 +97,7 @@ impl CompareReport {
             let label = if taken == 0 { base } else { format!("{base}-{}", taken + 1) };
             rows.push(CompareRow {
                 label,
-                technique: *technique,
+                technique: technique.clone(),
                 mse: m,
                 psnr: psnr(m),
                 ssim: ssim(img, reference_img, None),

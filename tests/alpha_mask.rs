@@ -11,6 +11,7 @@ use aokit_cpu::{GBufferImage, no_progress};
 use aokit_shaders::common::tables::JitterTable;
 use aokit_shaders::glam::{Vec2, Vec3, vec2, vec3};
 use aokit_shaders::svao::Secondary;
+use aokit_shaders::svao::settings::RAYSD;
 
 /// A 2×2 quad at z = 0 whose mask texture is transparent on its left half (u < 0.5), in front
 /// of an opaque wall at z = −3, seen from z = 5.
@@ -122,7 +123,7 @@ fn check_sd_layers(map: &[f32], frame: &Frame, options: &SdOptions, backend: &st
 fn sd_map_any_hit_applies_the_alpha_test() {
     let (scene, frame) = layered_scene();
     let options = SdOptions { divisor: 1, interval: false, jitter: JitterTable::None, ..Default::default() };
-    let technique = Technique::RaySd(options);
+    let technique = Technique::new(&RAYSD, options);
     let cpu = CpuRenderer::new(&scene);
     let (g, _) = cpu.gbuffer(&frame, &no_progress);
     let c = cpu.run(&frame, &g, &technique, &no_progress);
@@ -189,7 +190,7 @@ fn check_oak_layers(
 fn sd_map_on_the_oak_tree_never_stores_cut_out_leaf_texels() {
     let (scene, frame) = common::builtin_frame("oak", 240, 180, 16);
     let options = SdOptions { divisor: 1, layers: 8, interval: false, ..Default::default() };
-    let technique = Technique::RaySd(options);
+    let technique = Technique::new(&RAYSD, options);
     let cpu = CpuRenderer::new(&scene);
     let (g, _) = cpu.gbuffer(&frame, &no_progress);
     let c = cpu.run(&frame, &g, &technique, &no_progress);

@@ -9,6 +9,8 @@ use aokit::output::crop_inner;
 use aokit::render::CpuRenderer;
 use aokit::report::{CompareReport, CompareSetup};
 use aokit::technique::{SdOptions, Technique};
+use aokit_shaders::svao::settings::{RAYSD, RAYSVAO};
+use aokit_shaders::vao::settings::VAO;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -17,14 +19,18 @@ fn report(dir: &Path) -> (CompareReport, aokit::frame::Frame) {
     let cpu = CpuRenderer::new(&scene);
     let (g, gbuffer_ms) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
     let none = &aokit_cpu::no_progress;
-    let reference = Technique::RaySvao { cutoff: 6.0, dual: false, peel_separation: 0.01 };
+    let reference =
+        Technique::new(&RAYSVAO, SdOptions { cutoff: 6.0, dual: false, peel_separation: 0.01, ..Default::default() });
     let reference_run = cpu.run(&frame, &g, &reference, none);
-    let runs: Vec<_> = [Technique::Vao, Technique::RaySd(SdOptions::default())]
+    let runs: Vec<_> = [Technique::new(&VAO, SdOptions::default()), Technique::new(&RAYSD, SdOptions::default())]
         .into_iter()
-        .map(|t| (t, cpu.run(&frame, &g, &t, none)))
+        .map(|t| {
+            let run = cpu.run(&frame, &g, &t, none);
+            (t, run)
+        })
         .collect();
     let setup = CompareSetup { scene: "sponza", backend: "cpu", device: "test", gbuffer_ms };
-    let r = CompareReport::new(setup, &frame, (reference, &reference_run), &runs, &SdOptions::default());
+    let r = CompareReport::new(setup, &frame, (reference, &reference_run), &runs);
     r.write_images(dir, &frame, &g).unwrap();
     (r, frame)
 }

@@ -8,8 +8,10 @@ use aokit::technique::{SdOptions, Technique};
 use aokit_cpu::svao::run_pass1;
 use aokit_shaders::common::gbuffer_read::GBufferSlices;
 use aokit_shaders::glam::uvec2;
+use aokit_shaders::svao::settings::{HBAO, HBAO_SD};
 use aokit_shaders::svao::{Refine, Secondary, pass2_pixel, primary_sample};
 use aokit_shaders::vao::kernel::{LineSample, PixelFrame, line_sample, setup_pixel, unoccluded_visibility};
+use aokit_shaders::vao::settings::VAO;
 
 /// On the CPU BVH the second layer is exactly the nearest alpha-passing surface beyond the
 /// first layer + separation along the primary ray (checked against every hit of the ray), or the
@@ -127,7 +129,7 @@ fn dual_depth_vulkan_agrees_with_cpu() {
     let (scene, frame) = common::builtin_frame("sponza", 320, 180, 32);
     let cpu = CpuRenderer::new(&scene);
     let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
-    let dual = Technique::VaoDual { peel_separation: 0.01 };
+    let dual = Technique::new(&VAO, SdOptions { dual: true, peel_separation: 0.01, ..Default::default() });
     let c = cpu.run(&frame, &g, &dual, &aokit_cpu::no_progress);
     let v = vk.run(&scene, &frame, &g, &dual).expect("Vulkan dual depth");
     common::assert_validation_clean(&vk);
@@ -136,7 +138,7 @@ fn dual_depth_vulkan_agrees_with_cpu() {
     let close = ci.iter().zip(&vi).filter(|(a, b)| (*a - *b).abs() <= 1.0 / 255.0).count();
     eprintln!("dual VAO CPU vs Vulkan: {close}/{} within 1/255", ci.len());
     assert!(close as f64 >= 0.995 * ci.len() as f64);
-    let single = cpu.run(&frame, &g, &Technique::Vao, &aokit_cpu::no_progress);
+    let single = cpu.run(&frame, &g, &Technique::new(&VAO, SdOptions::default()), &aokit_cpu::no_progress);
     let changed = inner(&single.ao).iter().zip(&ci).filter(|(a, b)| (*a - *b).abs() > 1.0 / 255.0).count();
     assert!(changed > 100, "dual depth should change some pixels ({changed})");
     assert!(v.passes.iter().any(|p| p.0 == "depth_peel"));
@@ -194,14 +196,14 @@ fn hbao_vulkan_agrees_with_cpu() {
     let cpu = CpuRenderer::new(&scene);
     let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
     let none = &aokit_cpu::no_progress;
-    let t = Technique::RaySd(SdOptions { hbao: true, ..Default::default() });
+    let t = Technique::new(&HBAO_SD, SdOptions { hbao: true, ..Default::default() });
     let (c, v) = (cpu.run(&frame, &g, &t, none), vk.run(&scene, &frame, &g, &t).unwrap());
     assert_eq!(c.debug.as_ref().unwrap().mask, v.debug.as_ref().unwrap().mask);
     let mse = c.ao_final.iter().zip(&v.ao_final).map(|(a, b)| (*a as f64 - *b as f64).powi(2)).sum::<f64>()
         / c.ao_final.len() as f64;
     eprintln!("hbao-sd CPU vs Vulkan MSE {mse:.2e}");
     assert!(mse <= 1e-4);
-    let t = Technique::Hbao { dual: false, peel_separation: 0.01 };
+    let t = Technique::new(&HBAO, SdOptions { hbao: true, dual: false, peel_separation: 0.01, ..Default::default() });
     let (c, v) = (cpu.run(&frame, &g, &t, none), vk.run(&scene, &frame, &g, &t).unwrap());
     let close = c.ao.iter().zip(&v.ao).filter(|(a, b)| (*a - *b).abs() <= 1.0 / 255.0).count();
     assert!(close as f64 >= 0.999 * c.ao.len() as f64, "hbao: {close}/{}", c.ao.len());
@@ -220,7 +222,7 @@ fn peel_separation_is_honoured_on_both_backends() {
     let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
     let none = &aokit_cpu::no_progress;
     let run = |sep: f32| {
-        let t = Technique::VaoDual { peel_separation: sep };
+        let t = Technique::new(&VAO, SdOptions { dual: true, peel_separation: sep, ..Default::default() });
         (cpu.run(&frame, &g, &t, none).ao, vk.run(&scene, &frame, &g, &t).unwrap().ao)
     };
     let (c_near, v_near) = run(0.01);

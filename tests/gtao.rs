@@ -12,6 +12,7 @@ use aokit_shaders::common::noise::{hilbert_index, spatio_temporal_noise};
 use aokit_shaders::glam::{Vec3, uvec2, vec3};
 use aokit_shaders::gtao::GtaoParams;
 use aokit_shaders::gtao::main_pass::arc_integral;
+use aokit_shaders::gtao::settings::GTAO;
 
 /// Spec §1.6 / issue: the Hilbert index visits every cell of the 64×64 tile exactly once, and
 /// consecutive indices are unit steps apart.
@@ -121,7 +122,7 @@ fn an_infinite_plane_is_unoccluded() {
     for (eye, name) in [(vec3(0.0, 5.0, 0.001), "head-on"), (vec3(0.0, 4.0, 4.0), "45°")] {
         let frame = frame_for(&scene, eye, Vec3::ZERO, 0.5);
         let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
-        let run = cpu.run(&frame, &g, &Technique::Gtao(GtaoOptions::default()), &aokit_cpu::no_progress);
+        let run = cpu.run(&frame, &g, &Technique::new(&GTAO, GtaoOptions::default()), &aokit_cpu::no_progress);
         let (mean, min) = stats(&frame, &run.ao_final);
         eprintln!("plane {name}: mean {mean:.4}, min {min:.4}");
         assert!(mean >= 0.985 && min >= 0.95, "plane {name}: mean {mean}, min {min}");

@@ -5,35 +5,51 @@
 
 mod common;
 
-use aokit::technique::{GtaoOptions, HybridOptions, RaymarchOptions, SdOptions, Technique};
+use aokit::technique::{GroundTruthSettings, GtaoOptions, HybridOptions, RaymarchOptions, SdOptions, Technique};
 use aokit_shaders::graph::{Access, Graph, PassKind, inputs};
+use aokit_shaders::groundtruth::settings::GROUNDTRUTH;
+use aokit_shaders::gtao::settings::GTAO;
+use aokit_shaders::hybrid::settings::HYBRID;
+use aokit_shaders::raymarch::settings::RAYMARCH;
+use aokit_shaders::svao::settings::{HBAO, HBAO_SD, RAYSD, RAYSVAO, SDSVAO};
+use aokit_shaders::vao::settings::VAO;
 use aokit_vulkan::manifest::Manifest;
 
+/// Every registered technique at its defaults, plus the variants that change the graph.
 fn techniques() -> Vec<Technique> {
-    vec![
-        Technique::Vao,
-        Technique::VaoDual { peel_separation: 0.5 },
-        Technique::Hbao { dual: false, peel_separation: 0.01 },
-        Technique::Hbao { dual: true, peel_separation: 0.01 },
-        Technique::RaySd(SdOptions::default()),
-        Technique::RaySd(SdOptions { dual: true, hbao: true, divisor: 2, layers: 8, ..Default::default() }),
-        Technique::RaySd(SdOptions { raster: true, ..Default::default() }),
-        Technique::RaySvao { cutoff: 6.0, dual: true, peel_separation: 0.01 },
-        Technique::GroundTruth { spp: 4, uniform: false },
-        Technique::Hybrid(HybridOptions::default()),
-        Technique::Hybrid(HybridOptions { denoise_passes: 0, ..HybridOptions::variant("world").unwrap() }),
-        Technique::Gtao(GtaoOptions::default()),
-        Technique::Gtao(GtaoOptions { normals_from_depth: true, denoise_passes: 3, ..Default::default() }),
-        Technique::Raymarch(RaymarchOptions::default()),
-        Technique::Raymarch(RaymarchOptions { denoise_passes: 2, ..Default::default() }),
-    ]
+    let registered = aokit::technique::TECHNIQUES.iter().map(|t| Technique::named(t.name()).unwrap());
+    registered
+        .chain([
+            Technique::new(&VAO, SdOptions::default()),
+            Technique::new(&VAO, SdOptions { dual: true, peel_separation: 0.5, ..Default::default() }),
+            Technique::new(&HBAO, SdOptions { hbao: true, dual: false, peel_separation: 0.01, ..Default::default() }),
+            Technique::new(&HBAO, SdOptions { hbao: true, dual: true, peel_separation: 0.01, ..Default::default() }),
+            Technique::new(&RAYSD, SdOptions::default()),
+            Technique::new(&HBAO_SD, SdOptions { dual: true, hbao: true, divisor: 2, layers: 8, ..Default::default() }),
+            Technique::new(&SDSVAO, SdOptions { raster: true, ..Default::default() }),
+            Technique::new(
+                &RAYSVAO,
+                SdOptions { cutoff: 6.0, dual: true, peel_separation: 0.01, ..Default::default() },
+            ),
+            Technique::new(&GROUNDTRUTH, GroundTruthSettings { spp: 4, uniform: false }),
+            Technique::new(&HYBRID, HybridOptions::default()),
+            Technique::new(&HYBRID, HybridOptions { denoise_passes: 0, ..HybridOptions::variant("world").unwrap() }),
+            Technique::new(&GTAO, GtaoOptions::default()),
+            Technique::new(&GTAO, GtaoOptions { normals_from_depth: true, denoise_passes: 3, ..Default::default() }),
+            Technique::new(&RAYMARCH, RaymarchOptions::default()),
+            Technique::new(&RAYMARCH, RaymarchOptions { denoise_passes: 2, ..Default::default() }),
+        ])
+        .collect()
 }
 
 fn graphs() -> Vec<(Technique, String, Graph)> {
     let (_, frame) = common::builtin_frame("cornell", 96, 64, 8);
     techniques()
         .into_iter()
-        .map(|t| (t, format!("{t:?}"), t.graph(&frame.desc()).unwrap_or_else(|| panic!("{t:?} has no graph"))))
+        .map(|t| {
+            let graph = t.graph(&frame.desc()).unwrap_or_else(|e| panic!("{t:?}: {e}"));
+            (t.clone(), format!("{t:?}"), graph)
+        })
         .collect()
 }
 

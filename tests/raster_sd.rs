@@ -7,6 +7,7 @@ use aokit::render::CpuRenderer;
 use aokit::technique::{SdOptions, Technique};
 use aokit_shaders::glam::vec3;
 use aokit_shaders::rastersd::{coverage_mask, mask_lut, stratum_start};
+use aokit_shaders::svao::settings::{RAYSD, RAYSVAO, SDSVAO};
 
 /// Upper χ² quantile at p = 0.001 (Wilson–Hilferty).
 fn chi2_critical_p001(df: usize) -> f64 {
@@ -80,7 +81,7 @@ fn raster_sd_vulkan_agrees_with_cpu() {
     let cpu = CpuRenderer::new(&scene);
     let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
     let none = &aokit_cpu::no_progress;
-    let t = Technique::RaySd(SdOptions { raster: true, ..Default::default() });
+    let t = Technique::new(&SDSVAO, SdOptions { raster: true, ..Default::default() });
     let (c, v) = (cpu.run(&frame, &g, &t, none), vk.run(&scene, &frame, &g, &t).unwrap());
     common::assert_validation_clean(&vk);
     assert_eq!(c.debug.as_ref().unwrap().mask, v.debug.as_ref().unwrap().mask);
@@ -91,8 +92,17 @@ fn raster_sd_vulkan_agrees_with_cpu() {
     eprintln!("sdsvao CPU vs Vulkan MSE {m:.2e}, SD texels {} vs {}", c.rays, v.rays);
     assert!(m <= 1e-4);
     assert_eq!(c.rays, v.rays);
-    let reference =
-        cpu.run(&frame, &g, &Technique::RaySvao { cutoff: 6.0, dual: false, peel_separation: 0.01 }, none).ao_final;
-    let ray = cpu.run(&frame, &g, &Technique::RaySd(SdOptions::default()), none).ao_final;
+    let reference = cpu
+        .run(
+            &frame,
+            &g,
+            &Technique::new(
+                &RAYSVAO,
+                SdOptions { cutoff: 6.0, dual: false, peel_separation: 0.01, ..Default::default() },
+            ),
+            none,
+        )
+        .ao_final;
+    let ray = cpu.run(&frame, &g, &Technique::new(&RAYSD, SdOptions::default()), none).ao_final;
     assert!(mse(&ray, &reference) < mse(&c.ao_final, &reference), "Ray-SD should beat the raster SD map");
 }

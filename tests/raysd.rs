@@ -14,8 +14,10 @@ use aokit_shaders::common::gbuffer_read::GBufferSlices;
 use aokit_shaders::common::tables::AO_SAMPLES;
 use aokit_shaders::glam::{Vec2, uvec2, vec2};
 use aokit_shaders::raysd::{MAX_LAYERS, NO_SLOT, SdPayload, reservoir_any_hit, reservoir_slot};
+use aokit_shaders::svao::settings::{RAYSD, RAYSVAO};
 use aokit_shaders::svao::{Secondary, SvaoParams, sd_pixel};
 use aokit_shaders::vao::kernel::{line_sample, primary_object_z, setup_pixel};
+use aokit_shaders::vao::settings::VAO;
 use std::collections::HashMap;
 
 /// Deterministic SplitMix64 stream for the tests.
@@ -311,13 +313,21 @@ fn raysd_error_is_a_fraction_of_vao_error_and_falls_with_layers() {
     let (g, _) = renderer.gbuffer(&frame, &aokit_cpu::no_progress);
     let none = &aokit_cpu::no_progress;
     let reference = renderer
-        .run(&frame, &g, &Technique::RaySvao { cutoff: 6.0, dual: false, peel_separation: 0.01 }, none)
+        .run(
+            &frame,
+            &g,
+            &Technique::new(
+                &RAYSVAO,
+                SdOptions { cutoff: 6.0, dual: false, peel_separation: 0.01, ..Default::default() },
+            ),
+            none,
+        )
         .ao_final;
-    let vao = renderer.run(&frame, &g, &Technique::Vao, none).ao_final;
+    let vao = renderer.run(&frame, &g, &Technique::new(&VAO, SdOptions::default()), none).ao_final;
     let mse_vao = mse(&vao, &reference);
     let mut by_layers = Vec::new();
     for layers in [2, 4, 8] {
-        let t = Technique::RaySd(SdOptions { layers, ..Default::default() });
+        let t = Technique::new(&RAYSD, SdOptions { layers, ..Default::default() });
         by_layers.push(mse(&renderer.run(&frame, &g, &t, none).ao_final, &reference));
     }
     assert!(by_layers[1] <= mse_vao / 8.0, "MSE raysd {:.2e} vs vao {mse_vao:.2e}", by_layers[1]);

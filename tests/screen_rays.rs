@@ -8,12 +8,15 @@ use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::render::CpuRenderer;
 use aokit::scene::Scene;
 use aokit::scene::procedural::push_quad;
-use aokit::technique::{HybridOptions, RaymarchOptions, Technique};
+use aokit::technique::{GroundTruthSettings, HybridOptions, RaymarchOptions, Technique};
 use aokit_shaders::common::normal_codec::encode_normal;
 use aokit_shaders::common::screen_space::view_pos;
 use aokit_shaders::glam::{UVec2, Vec3, uvec2, vec3};
+use aokit_shaders::groundtruth::settings::GROUNDTRUTH;
+use aokit_shaders::hybrid::settings::HYBRID;
 use aokit_shaders::raymarch::kernel::{best_candidate, vogel};
 use aokit_shaders::raymarch::march;
+use aokit_shaders::raymarch::settings::RAYMARCH;
 
 /// Spec §3.3: best-candidate and Vogel points lie in the unit disk; best-candidate is
 /// deterministic and well spread (its closest pair is more than twice as far apart as the
@@ -99,9 +102,9 @@ fn an_unoccluded_plane_stays_visible() {
         let frame = plane_frame(&scene, eye);
         let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
         for t in [
-            Technique::Raymarch(RaymarchOptions { binary: true, ..Default::default() }),
-            Technique::Raymarch(RaymarchOptions::default()),
-            Technique::Hybrid(HybridOptions::default()),
+            Technique::new(&RAYMARCH, RaymarchOptions { binary: true, ..Default::default() }),
+            Technique::new(&RAYMARCH, RaymarchOptions::default()),
+            Technique::new(&HYBRID, HybridOptions::default()),
         ] {
             let run = cpu.run(&frame, &g, &t, &aokit_cpu::no_progress);
             let inner = aokit::output::crop_inner(&frame.camera.view, &run.ao_final);
@@ -131,10 +134,12 @@ fn hybrid_world_variant_estimates_the_ground_truth() {
         let inner = aokit::output::crop_inner(&view, ao);
         inner.iter().map(|&a| a as f64).sum::<f64>() / inner.len() as f64
     };
-    let gt = cpu.run(&frame, &g, &Technique::GroundTruth { spp: 256, uniform: false }, none).ao_final;
+    let gt = cpu
+        .run(&frame, &g, &Technique::new(&GROUNDTRUTH, GroundTruthSettings { spp: 256, uniform: false }), none)
+        .ao_final;
     let run = |variant: &str| {
         let o = HybridOptions { denoise_passes: 0, ..HybridOptions::variant(variant).unwrap() };
-        cpu.run(&frame, &g, &Technique::Hybrid(o), none).ao
+        cpu.run(&frame, &g, &Technique::new(&HYBRID, o), none).ao
     };
     let (world, mixed, screen) = (run("world"), run("mixed"), run("screen"));
     let (m_gt, m_world, m_mixed, m_screen) = (mean(&gt), mean(&world), mean(&mixed), mean(&screen));
@@ -161,13 +166,13 @@ fn screen_ray_techniques_agree_across_back_ends() {
     let cpu = CpuRenderer::new(&scene);
     let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
     let none = &aokit_cpu::no_progress;
-    let t = Technique::Raymarch(RaymarchOptions { denoise_passes: 1, ..Default::default() });
+    let t = Technique::new(&RAYMARCH, RaymarchOptions { denoise_passes: 1, ..Default::default() });
     let (c, v) = (cpu.run(&frame, &g, &t, none), vk.run(&scene, &frame, &g, &t).unwrap());
     let close = c.ao.iter().zip(&v.ao).filter(|(a, b)| (*a - *b).abs() <= 1e-4).count();
     eprintln!("raymarch: {close}/{} within 1e-4, MSE {:.2e}", c.ao.len(), mse(&c.ao, &v.ao));
     assert!(close as f64 >= 0.999 * c.ao.len() as f64);
     assert!(mse(&c.ao_final, &v.ao_final) <= 1e-5);
-    let t = Technique::Hybrid(HybridOptions::default());
+    let t = Technique::new(&HYBRID, HybridOptions::default());
     let (c, v) = (cpu.run(&frame, &g, &t, none), vk.run(&scene, &frame, &g, &t).unwrap());
     let (raw, final_) = (mse(&c.ao, &v.ao), mse(&c.ao_final, &v.ao_final));
     eprintln!("hybrid: MSE raw {raw:.2e}, denoised {final_:.2e}");

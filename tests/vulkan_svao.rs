@@ -10,6 +10,7 @@ use aokit_shaders::common::gbuffer_read::GBufferSlices;
 use aokit_shaders::glam::uvec2;
 use aokit_shaders::raysd::sd_ray;
 use aokit_shaders::svao::Secondary;
+use aokit_shaders::svao::settings::{RAYSD, RAYSVAO};
 
 fn ulps(a: u32, b: u32) -> u32 {
     (a as i64 - b as i64).unsigned_abs() as u32
@@ -32,7 +33,7 @@ fn raysd_vulkan_agrees_with_cpu_sim() {
     let cpu = CpuRenderer::new(&scene);
     let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
     let options = SdOptions { divisor: 2, ..Default::default() };
-    let technique = Technique::RaySd(options);
+    let technique = Technique::new(&RAYSD, options);
     let c = cpu.run(&frame, &g, &technique, &aokit_cpu::no_progress);
     let v = vk.run(&scene, &frame, &g, &technique).expect("Vulkan Ray-SD");
     common::assert_validation_clean(&vk);
@@ -119,7 +120,8 @@ fn raysvao_vulkan_agrees_with_cpu_sim() {
     let (scene, frame) = common::builtin_frame("sponza", 320, 180, 32);
     let cpu = CpuRenderer::new(&scene);
     let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
-    let technique = Technique::RaySvao { cutoff: 6.0, dual: false, peel_separation: 0.01 };
+    let technique =
+        Technique::new(&RAYSVAO, SdOptions { cutoff: 6.0, dual: false, peel_separation: 0.01, ..Default::default() });
     let c = cpu.run(&frame, &g, &technique, &aokit_cpu::no_progress);
     let v = vk.run(&scene, &frame, &g, &technique).expect("Vulkan Ray-SVAO");
     common::assert_validation_clean(&vk);

@@ -92,11 +92,12 @@ impl Gpu {
     }
 }
 
-/// The scene on the device for ray tracing: BLAS + TLAS and the per-triangle attributes the
-/// any-hit shader reads.
+/// The scene on the device for ray tracing: the TLAS (aokit's own BLAS + TLAS, or the caller's
+/// TLAS) and the per-triangle attributes the any-hit shaders read.
 pub struct SceneAccel {
-    blas: (vk::AccelerationStructureKHR, Buffer),
-    tlas: (vk::AccelerationStructureKHR, Buffer),
+    /// aokit's BLAS and TLAS with their storage; `None` when the TLAS is the caller's.
+    owned: Option<[(vk::AccelerationStructureKHR, Buffer); 2]>,
+    tlas: vk::AccelerationStructureKHR,
     uvs: Buffer,
     materials: Buffer,
     mask_headers: Buffer,
@@ -126,7 +127,7 @@ impl SceneAccel {
 
     /// The TLAS as a descriptor.
     pub(crate) fn tlas_descriptor(&self) -> Descriptor<'static> {
-        Descriptor::Tlas(self.tlas.0)
+        Descriptor::Tlas(self.tlas)
     }
 
     /// `positions`: three corners per triangle. Geometry is marked opaque unless some material
@@ -204,30 +205,104 @@ impl SceneAccel {
                 return Err(e);
             }
         };
+        let mut accel = match SceneAccel::with_tables(gpu, tlas.0, uvs, materials, masks) {
+            Ok(a) => a,
+            Err(e) => {
+                for (handle, storage) in [blas, tlas] {
+                    unsafe { rt.acceleration.destroy_acceleration_structure(handle, None) };
+                    gpu.free_buffer(storage);
+                }
+                return Err(e);
+            }
+        };
+        accel.owned = Some([blas, tlas]);
+        accel.build_ms = start.elapsed().as_secs_f64() * 1e3;
+        Ok(accel)
+    }
+
+    /// The caller's own TLAS (an engine's), with the per-triangle tables its any-hit alpha test
+    /// reads. aokit never builds, updates or destroys `tlas`; it must stay valid while graphs
+    /// that trace rays are recorded with this scene and until those command buffers complete.
+    ///
+    /// Conventions the TLAS must follow (what aokit's own TLAS does):
+    /// - triangle geometry, one geometry per BLAS; `uvs` has 3 corners per triangle and
+    ///   `materials` one material per triangle, over every BLAS's triangles concatenated;
+    /// - every instance's custom index is the index of its BLAS's first triangle in those
+    ///   tables (the any-hit reads triangle `InstanceCustomIndex + PrimitiveId`);
+    /// - instance mask with every bit aokit traces with (0xff) and SBT record offset 0 (aokit's
+    ///   pipelines have one hit group); facing does not matter (rays do not cull);
+    /// - geometry with alpha-masked materials must not be `OPAQUE` (the any-hit alpha-tests
+    ///   it); opaque geometry may be, except that Ray-SD's stochastic depth map and Ray-SVAO
+    ///   trace with `NO_OPAQUE` so their any-hit sees every triangle anyway.
+    pub fn from_engine_tlas(
+        gpu: &Gpu,
+        tlas: vk::AccelerationStructureKHR,
+        uvs: &[Vec2],
+        materials: &[u32],
+        masks: &(Vec<AlphaMaskHeader>, Vec<f32>),
+    ) -> Result<SceneAccel, GpuError> {
+        gpu.ray_tracing()?;
+        if tlas == vk::AccelerationStructureKHR::null() || materials.is_empty() || uvs.len() != 3 * materials.len() {
+            return Err(GpuError::Input(format!(
+                "engine TLAS: {} uvs for {} materials (3 corners per triangle), TLAS {}",
+                uvs.len(),
+                materials.len(),
+                if tlas == vk::AccelerationStructureKHR::null() { "null" } else { "given" }
+            )));
+        }
+        SceneAccel::with_tables(gpu, tlas, uvs, materials, masks)
+    }
+
+    /// `tlas` (not owned) and the tables uploaded.
+    fn with_tables(
+        gpu: &Gpu,
+        tlas: vk::AccelerationStructureKHR,
+        uvs: &[Vec2],
+        materials: &[u32],
+        masks: &(Vec<AlphaMaskHeader>, Vec<f32>),
+    ) -> Result<SceneAccel, GpuError> {
         let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
+        let mut uploaded = Vec::new();
+        let tables: [&[u8]; 4] = [
+            bytemuck::cast_slice(uvs),
+            bytemuck::cast_slice(materials),
+            bytemuck::cast_slice(&masks.0),
+            bytemuck::cast_slice(&masks.1),
+        ];
+        for bytes in tables {
+            // Empty tables (no masks) still bind a buffer.
+            let padded: &[u8] = if bytes.is_empty() { &[0; 4] } else { bytes };
+            match gpu.upload(padded, storage) {
+                Ok(b) => uploaded.push(b),
+                Err(e) => {
+                    uploaded.into_iter().for_each(|b| gpu.free_buffer(b));
+                    return Err(e);
+                }
+            }
+        }
+        let [uvs, materials, mask_headers, mask_texels] = <[Buffer; 4]>::try_from(uploaded).ok().expect("four tables");
+        static BUILT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
         Ok(SceneAccel {
-            blas,
+            owned: None,
             tlas,
-            uvs: gpu.upload(uvs, storage)?,
-            materials: gpu.upload(materials, storage)?,
-            mask_headers: gpu.upload(&masks.0, storage)?,
-            mask_texels: gpu.upload(&masks.1, storage)?,
-            build_ms: start.elapsed().as_secs_f64() * 1e3,
-            generation: {
-                static BUILT: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
-                BUILT.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
-            },
+            uvs,
+            materials,
+            mask_headers,
+            mask_texels,
+            build_ms: 0.0,
+            generation: BUILT.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
         })
     }
 
+    /// Frees aokit's buffers and its own BLAS/TLAS (never the caller's TLAS).
     pub fn destroy(self, gpu: &Gpu) {
-        if let Some(rt) = &gpu.ray_tracing {
-            unsafe {
-                rt.acceleration.destroy_acceleration_structure(self.tlas.0, None);
-                rt.acceleration.destroy_acceleration_structure(self.blas.0, None);
+        for (handle, storage) in self.owned.into_iter().flatten() {
+            if let Some(rt) = &gpu.ray_tracing {
+                unsafe { rt.acceleration.destroy_acceleration_structure(handle, None) };
             }
+            gpu.free_buffer(storage);
         }
-        for b in [self.tlas.1, self.blas.1, self.uvs, self.materials, self.mask_headers, self.mask_texels] {
+        for b in [self.uvs, self.materials, self.mask_headers, self.mask_texels] {
             gpu.free_buffer(b);
         }
     }

@@ -28,4 +28,8 @@ pub mod raymarch;
 pub mod raysd;
 pub mod raysvao;
 pub mod svao;
+#[cfg(not(target_arch = "spirv"))]
+pub mod technique;
+#[cfg(not(target_arch = "spirv"))]
+pub mod techniques;
 pub mod vao;

@@ -1,6 +1,11 @@
 //! Alpha test of `alphaMode: MASK` materials (glTF 2.0 §3.9.4): nearest texel with repeat
 //! wrapping, cut out below the material's cutoff. The raster G-buffer discards such fragments;
 //! CPU rays skip such hits.
+//!
+//! The tables are per triangle: `uvs[3·i ..]` (corners), `materials[i]`. A GPU any-hit looks up
+//! triangle `i = InstanceCustomIndex + PrimitiveId`: aokit's own TLAS has one instance with
+//! custom index 0; an engine's own TLAS gives every instance the index of its geometry's first
+//! triangle in the tables (one geometry per BLAS, instances of one BLAS share the index).
 
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;

@@ -62,19 +62,21 @@ pub fn groundtruth_miss(#[spirv(incoming_ray_payload)] payload: &mut u32) {
     *payload = 0;
 }
 
-/// Alpha test of masked triangles (only non-opaque geometry runs it). Triangle `prim`'s corner
-/// texture coordinates are `uvs[3·prim ..]`.
+/// Alpha test of masked triangles (only non-opaque geometry runs it). Triangle `first + prim`'s
+/// corner texture coordinates are `uvs[3·(first + prim) ..]`, `first` = the instance's custom
+/// index (see `crate::common::alpha`).
 #[spirv(any_hit(entry_point_name = "groundtruth_ahit"))]
 pub fn groundtruth_ahit(
     #[spirv(incoming_ray_payload)] _payload: &mut u32,
     #[spirv(hit_attribute)] bary: &Vec2,
     #[spirv(primitive_id)] prim: u32,
+    #[spirv(instance_custom_index)] first_triangle: u32,
     #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] uvs: &[Vec2],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] materials: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 7)] mask_headers: &[AlphaMaskHeader],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_texels: &[f32],
 ) {
-    if !triangle_alpha_passes(uvs, materials, mask_headers, mask_texels, prim, *bary) {
+    if !triangle_alpha_passes(uvs, materials, mask_headers, mask_texels, first_triangle + prim, *bary) {
         unsafe { spirv_std::arch::ignore_intersection() };
     }
 }

@@ -3,6 +3,7 @@
 
 use super::{GroundTruthFrame, GroundTruthParams};
 use crate::graph::{Access, Binding, FrameDesc, Graph, Pass, PassKind, inputs, record, slots, target_f32};
+use crate::technique::{Declaration, Setting, Settings, single_layer};
 
 /// Ground-truth settings [defaults].
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -27,14 +28,27 @@ pub fn alpha_bindings(first: u32) -> impl Iterator<Item = Binding> {
         .map(move |(i, resource)| Binding { slot: first + i as u32, resource, access: Access::Read })
 }
 
-impl GroundTruthSettings {
-    pub fn validate(&self) -> Result<(), String> {
-        if self.spp == 0 {
-            return Err("--spp must be at least 1".into());
-        }
-        Ok(())
-    }
+impl Settings for GroundTruthSettings {
+    const ROWS: &'static [Setting<Self>] = &[
+        Setting::<Self>::count("spp", 1, u32::MAX, |s| &mut s.spp).help("Ground truth: rays per pixel"),
+        Setting::<Self>::switch("sampling", &["cosine", "uniform"], |s| &mut s.uniform)
+            .only_switch("uniform", "uniform")
+            .help("Ground truth: cosine-weighted hemisphere sampling; --uniform samples uniformly, weighted by cos θ"),
+    ];
+}
 
+/// World-space ray-traced AO (spec gtao-raymarch-hybrid §5).
+pub static GROUNDTRUTH: Declaration<GroundTruthSettings> = Declaration {
+    name: "groundtruth",
+    summary: "world-space ray-traced AO, the reference (spec gtao-raymarch-hybrid §5)",
+    keys: &["spp", "sampling"],
+    defaults: GroundTruthSettings::default,
+    graph: |s, frame| Ok(s.graph(frame)),
+    second_layer: single_layer,
+    rays: |s, frame| Some(s.rays(frame)),
+};
+
+impl GroundTruthSettings {
     /// The kernel's record: the frame's radius and exponent.
     pub fn frame(&self, frame: &FrameDesc) -> GroundTruthFrame {
         GroundTruthFrame {

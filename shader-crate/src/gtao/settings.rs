@@ -4,6 +4,7 @@
 
 use super::{GtaoParams, MIP_LEVELS, mip_offset, mip_size};
 use crate::graph::{Access, Elem, FrameDesc, Graph, Init, Lifetime, Pass, Resource, inputs, target_f32, target_u32};
+use crate::technique::{Declaration, Setting, Settings, rays_counted, single_layer};
 
 /// XeGTAO quality presets (spec gtao-raymarch-hybrid §2.2): slices × steps per side.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
@@ -23,16 +24,6 @@ impl Quality {
             Quality::High => (3, 3),
             Quality::Ultra => (9, 3),
         }
-    }
-
-    pub fn parse(s: &str) -> Result<Quality, String> {
-        Ok(match s {
-            "low" => Quality::Low,
-            "medium" => Quality::Medium,
-            "high" => Quality::High,
-            "ultra" => Quality::Ultra,
-            _ => return Err(format!("preset '{s}' is not low, medium, high or ultra")),
-        })
     }
 }
 
@@ -76,28 +67,65 @@ impl Default for GtaoSettings {
     }
 }
 
-impl GtaoSettings {
-    /// Reject settings outside XeGTAO's UI ranges (spec §2.1), naming the setting.
-    pub fn validate(&self) -> Result<(), String> {
-        let check = |name: &str, v: f32, lo: f32, hi: f32| {
-            if v.is_finite() && (lo..=hi).contains(&v) {
-                Ok(())
-            } else {
-                Err(format!("{name} {v} is outside [{lo}, {hi}]"))
-            }
-        };
-        check("--gtao-radius-multiplier", self.radius_multiplier, 0.3, 3.0)?;
-        check("--gtao-falloff-range", self.falloff_range, 0.0, 1.0)?;
-        check("--gtao-sample-power", self.sample_distribution_power, 1.0, 3.0)?;
-        check("--gtao-thin-occluder", self.thin_occluder_compensation, 0.0, 0.7)?;
-        check("--gtao-final-power", self.final_value_power, 0.5, 5.0)?;
-        check("--gtao-mip-offset", self.depth_mip_sampling_offset, 0.0, 30.0)?;
-        if self.denoise_passes > 3 {
-            return Err(format!("--gtao-denoise {} is not 0–3", self.denoise_passes));
-        }
-        Ok(())
-    }
+impl Settings for GtaoSettings {
+    /// XeGTAO's UI ranges (spec gtao-raymarch-hybrid §2.1).
+    const ROWS: &'static [Setting<Self>] = &[
+        Setting::<Self>::choice(
+            "preset",
+            &["low", "medium", "high", "ultra"],
+            |s| s.quality as usize,
+            |s, i| s.quality = [Quality::Low, Quality::Medium, Quality::High, Quality::Ultra][i],
+        )
+        .help("XeGTAO quality preset: slices × steps per side 1×2, 2×2, 3×3, 9×3 (spec §2.2)"),
+        Setting::<Self>::count("denoise", 0, 3, |s| &mut s.denoise_passes)
+            .flag("gtao-denoise")
+            .help("XeGTAO denoise passes (0 off, 1 sharp, 2 medium, 3 soft; spec §2.7)"),
+        Setting::<Self>::number("radius-multiplier", 0.3, 3.0, |s| &mut s.radius_multiplier)
+            .flag("gtao-radius-multiplier")
+            .help("XeGTAO RadiusMultiplier (effective radius = --radius × this)"),
+        Setting::<Self>::number("falloff-range", 0.0, 1.0, |s| &mut s.falloff_range)
+            .flag("gtao-falloff-range")
+            .help("XeGTAO FalloffRange (fraction of the radius over which samples fade)"),
+        Setting::<Self>::number("sample-power", 1.0, 3.0, |s| &mut s.sample_distribution_power)
+            .flag("gtao-sample-power")
+            .help("XeGTAO SampleDistributionPower"),
+        Setting::<Self>::number("thin-occluder", 0.0, 0.7, |s| &mut s.thin_occluder_compensation)
+            .flag("gtao-thin-occluder")
+            .help("XeGTAO ThinOccluderCompensation"),
+        Setting::<Self>::number("final-power", 0.5, 5.0, |s| &mut s.final_value_power)
+            .flag("gtao-final-power")
+            .help("XeGTAO FinalValuePower"),
+        Setting::<Self>::number("mip-offset", 0.0, 30.0, |s| &mut s.depth_mip_sampling_offset)
+            .flag("gtao-mip-offset")
+            .help("XeGTAO DepthMIPSamplingOffset"),
+        Setting::<Self>::switch("normals", &["gbuffer", "depth"], |s| &mut s.normals_from_depth)
+            .flag("gtao-normals")
+            .help("XeGTAO normals: the G-buffer's, or derived from depth (pass 0, spec §2.4)"),
+    ];
+}
 
+/// XeGTAO (spec gtao-raymarch-hybrid §2).
+pub static GTAO: Declaration<GtaoSettings> = Declaration {
+    name: "gtao",
+    summary: "XeGTAO: depth MIPs, horizon search over slices, denoiser (spec gtao-raymarch-hybrid §2)",
+    keys: &[
+        "preset",
+        "denoise",
+        "radius-multiplier",
+        "falloff-range",
+        "sample-power",
+        "thin-occluder",
+        "final-power",
+        "mip-offset",
+        "normals",
+    ],
+    defaults: GtaoSettings::default,
+    graph: |s, frame| Ok(s.graph(frame)),
+    second_layer: single_layer,
+    rays: rays_counted,
+};
+
+impl GtaoSettings {
     /// The kernels' constants (XeGTAO's `GTAOUpdateConstants`) for a frame.
     pub fn params(&self, frame: &FrameDesc) -> GtaoParams {
         let (slices, steps) = self.quality.slices_steps();

@@ -6,6 +6,7 @@ use super::{HybridFrame, HybridParams};
 use crate::graph::{Access, Binding, FrameDesc, Graph, Pass, PassKind, inputs, record, slots, target_f32, target_u32};
 use crate::gtao::settings::with_denoiser;
 use crate::raymarch::settings::DEPTH_BIAS;
+use crate::technique::{Declaration, Setting, Settings, single_layer};
 
 /// Rays per pixel and the world-ray weight (spec §4.1 defaults in brackets).
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -28,27 +29,76 @@ impl Default for HybridSettings {
     }
 }
 
+impl Settings for HybridSettings {
+    const ROWS: &'static [Setting<Self>] = &[
+        Setting::<Self>::choice("variant", &VARIANTS, variant_index, |s, i| {
+            *s = HybridSettings { denoise_passes: s.denoise_passes, screen_steps: s.screen_steps, ..variant_at(i) }
+        })
+        .flag("hybrid-variant")
+        .help(
+            "Hybrid AO: mixed (1 screen + 1 world ray, world weight 2/3), world (2 world rays), screen (2 screen rays)",
+        ),
+        Setting::<Self>::number("world-weight", 0.0, 1.0, |s| &mut s.world_weight)
+            .flag("world-weight")
+            .help("Hybrid AO: weight of the world rays (set after the variant)"),
+        Setting::<Self>::count("screen-steps", 1, u32::MAX, |s| &mut s.screen_steps)
+            .flag("hybrid-screen-steps")
+            .help("Hybrid AO: steps of a screen ray"),
+        Setting::<Self>::count("denoise", 0, 3, |s| &mut s.denoise_passes)
+            .flag("hybrid-denoise")
+            .help("Hybrid AO: XeGTAO denoise passes afterwards"),
+    ];
+
+    fn check(&self) -> Result<(), String> {
+        if self.screen_rays + self.world_rays == 0 {
+            return Err("hybrid needs at least one ray per pixel".into());
+        }
+        Ok(())
+    }
+}
+
+/// The paper's variants (spec §4.2, last paragraph).
+const VARIANTS: [&str; 3] = ["mixed", "world", "screen"];
+
+/// Variant `i` of [`VARIANTS`]: `mixed` (1 screen + 1 world, w = 2/3), `world` (2 world rays),
+/// `screen` (2 screen rays).
+fn variant_at(i: usize) -> HybridSettings {
+    let d = HybridSettings::default();
+    match i {
+        0 => d,
+        1 => HybridSettings { screen_rays: 0, world_rays: 2, world_weight: 1.0, ..d },
+        _ => HybridSettings { screen_rays: 2, world_rays: 0, world_weight: 0.0, ..d },
+    }
+}
+
+/// Which variant the ray counts are (screen rays only → screen, world only → world).
+fn variant_index(s: &HybridSettings) -> usize {
+    match (s.screen_rays, s.world_rays) {
+        (0, _) => 1,
+        (_, 0) => 2,
+        _ => 0,
+    }
+}
+
+/// The hybrid screen + world-ray AO (spec gtao-raymarch-hybrid §4).
+pub static HYBRID: Declaration<HybridSettings> = Declaration {
+    name: "hybrid",
+    summary: "hybrid AO: screen rays marched, world rays traced, denoised (spec gtao-raymarch-hybrid §4)",
+    keys: &["variant", "world-weight", "screen-steps", "denoise"],
+    defaults: HybridSettings::default,
+    graph: |s, frame| Ok(s.graph(frame)),
+    second_layer: single_layer,
+    rays: |s, frame| Some(s.rays(frame)),
+};
+
 impl HybridSettings {
     /// The paper's variants (spec §4.2, last paragraph): `mixed` (1 screen + 1 world, w = 2/3), `world` (2 world
     /// rays), `screen` (2 screen rays).
     pub fn variant(name: &str) -> Result<HybridSettings, String> {
-        let d = HybridSettings::default();
-        Ok(match name {
-            "mixed" => d,
-            "world" => HybridSettings { screen_rays: 0, world_rays: 2, world_weight: 1.0, ..d },
-            "screen" => HybridSettings { screen_rays: 2, world_rays: 0, world_weight: 0.0, ..d },
-            _ => return Err(format!("hybrid variant '{name}' is not mixed, world or screen")),
-        })
-    }
-
-    pub fn validate(&self) -> Result<(), String> {
-        if !(0.0..=1.0).contains(&self.world_weight) || self.screen_rays + self.world_rays == 0 {
-            return Err("hybrid needs a world weight in [0, 1] and at least one ray".into());
+        match VARIANTS.iter().position(|v| *v == name) {
+            Some(i) => Ok(variant_at(i)),
+            None => Err(format!("hybrid variant '{name}' is not {}", VARIANTS.join(", "))),
         }
-        if self.denoise_passes > 3 {
-            return Err(format!("--hybrid-denoise {} is not 0–3", self.denoise_passes));
-        }
-        Ok(())
     }
 
     /// The kernel's record for a frame.

@@ -4,6 +4,7 @@
 use super::{Contribution, MAX_DIRECTIONS, RaymarchParams};
 use crate::graph::{Access, FrameDesc, Graph, Pass, inputs, record, target_f32, target_u32};
 use crate::gtao::settings::with_denoiser;
+use crate::technique::{Declaration, Setting, Settings, rays_counted, single_layer};
 
 /// Relative depth bias κ (spec §3.2).
 pub const DEPTH_BIAS: f32 = 0.0008;
@@ -31,17 +32,41 @@ impl Default for RaymarchSettings {
     }
 }
 
-impl RaymarchSettings {
-    pub fn validate(&self) -> Result<(), String> {
-        if !(1..=MAX_DIRECTIONS).contains(&self.directions) || self.steps == 0 {
-            return Err(format!("raymarch needs 1–{MAX_DIRECTIONS} directions and at least 1 step"));
-        }
-        if self.denoise_passes > 3 {
-            return Err(format!("--rm-denoise {} is not 0–3", self.denoise_passes));
-        }
-        Ok(())
-    }
+impl Settings for RaymarchSettings {
+    const ROWS: &'static [Setting<Self>] = &[
+        Setting::<Self>::count("directions", 1, MAX_DIRECTIONS, |s| &mut s.directions)
+            .flag("rm-directions")
+            .help("Ray-marched SSAO: directions N (the paper uses 8, 16, 24; spec §3.2)"),
+        Setting::<Self>::count("steps", 1, u32::MAX, |s| &mut s.steps)
+            .flag("rm-steps")
+            .help("Ray-marched SSAO: steps per direction"),
+        Setting::<Self>::number("alpha", 0.0, f32::MAX, |s| &mut s.alpha)
+            .flag("rm-alpha")
+            .help("Ray-marched SSAO: contrast exponent α of Eq. 2"),
+        Setting::<Self>::switch("contribution", &["linear", "binary"], |s| &mut s.binary)
+            .flag("rm-contribution")
+            .help("Ray-marched SSAO: reading of Eq. 2 (linear: visible distance / R; binary: 0 on a hit)"),
+        Setting::<Self>::switch("kernel", &["best-candidate", "vogel"], |s| &mut s.vogel)
+            .only_switch("rm-vogel", "vogel")
+            .help("Ray-marched SSAO: Poisson disk (spec §3.3); --rm-vogel uses a Vogel spiral"),
+        Setting::<Self>::count("denoise", 0, 3, |s| &mut s.denoise_passes)
+            .flag("rm-denoise")
+            .help("Ray-marched SSAO: XeGTAO denoise passes afterwards"),
+    ];
+}
 
+/// The Poisson-disk ray-marched SSAO (spec gtao-raymarch-hybrid §3).
+pub static RAYMARCH: Declaration<RaymarchSettings> = Declaration {
+    name: "raymarch",
+    summary: "Poisson-disk ray-marched SSAO, optionally denoised (spec gtao-raymarch-hybrid §3)",
+    keys: &["directions", "steps", "alpha", "contribution", "kernel", "denoise"],
+    defaults: RaymarchSettings::default,
+    graph: |s, frame| Ok(s.graph(frame)),
+    second_layer: single_layer,
+    rays: rays_counted,
+};
+
+impl RaymarchSettings {
     /// Push constants with the frame's radius.
     pub fn params(&self, frame: &FrameDesc) -> RaymarchParams {
         RaymarchParams {

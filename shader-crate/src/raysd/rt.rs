@@ -56,12 +56,14 @@ pub fn raysd_rgen(
 #[spirv(miss(entry_point_name = "raysd_miss"))]
 pub fn raysd_miss(#[spirv(incoming_ray_payload)] _payload: &mut SdPayload) {}
 
-/// The reservoir any-hit; triangle `prim`'s corner texture coordinates are `uvs[3·prim ..]`.
+/// The reservoir any-hit; triangle `first + prim`'s corner texture coordinates are
+/// `uvs[3·(first + prim) ..]`, `first` = the instance's custom index (see `crate::common::alpha`).
 #[spirv(any_hit(entry_point_name = "raysd_ahit"))]
 pub fn raysd_ahit(
     #[spirv(incoming_ray_payload)] payload: &mut SdPayload,
     #[spirv(hit_attribute)] bary: &Vec2,
     #[spirv(primitive_id)] prim: u32,
+    #[spirv(instance_custom_index)] first_triangle: u32,
     #[spirv(ray_tmax)] t: f32,
     #[spirv(storage_buffer, descriptor_set = 0, binding = 7)] uvs: &[Vec2],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] materials: &[u32],
@@ -73,7 +75,7 @@ pub fn raysd_ahit(
     let (slot, z) = reservoir_candidate(payload, t, *bary);
     let mut alpha = false;
     if slot != NO_SLOT {
-        alpha = triangle_alpha_passes(uvs, materials, mask_headers, mask_texels, prim, *bary);
+        alpha = triangle_alpha_passes(uvs, materials, mask_headers, mask_texels, first_triangle + prim, *bary);
     }
     let accept = reservoir_commit(payload, slot, z, alpha);
     if !accept {

@@ -85,13 +85,14 @@ pub fn raysvao_ahit(
     #[spirv(incoming_ray_payload)] payload: &mut SampleRayState,
     #[spirv(hit_attribute)] bary: &Vec2,
     #[spirv(primitive_id)] prim: u32,
+    #[spirv(instance_custom_index)] first_triangle: u32,
     #[spirv(ray_tmax)] t: f32,
     #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] uvs: &[Vec2],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 7)] materials: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_headers: &[AlphaMaskHeader],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mask_texels: &[f32],
 ) {
-    if !triangle_alpha_passes(uvs, materials, mask_headers, mask_texels, prim, *bary) {
+    if !triangle_alpha_passes(uvs, materials, mask_headers, mask_texels, first_triangle + prim, *bary) {
         unsafe { spirv_std::arch::ignore_intersection() };
     }
     let decision = sample_any_hit(payload, t);

@@ -12,6 +12,7 @@ use crate::graph::{
     Access, Binding, Elem, FrameDesc, Graph, Init, Lifetime, Pass, PassKind, Resource, Snapshot, inputs, record, slots,
     target_f32, target_u32,
 };
+use crate::technique::{Declaration, Setting, Settings, rays_counted};
 use crate::vao::kernel::{KERNEL_HBAO, KERNEL_VAO};
 use crate::vao::settings::vao_params;
 
@@ -68,27 +69,144 @@ pub fn sd_low_res(full: UVec2, divisor: u32) -> UVec2 {
     uvec2(full.x.div_ceil(divisor), full.y.div_ceil(divisor))
 }
 
-impl SvaoSettings {
-    /// Reject options the kernels do not support, with a message naming the option.
-    pub fn validate(&self) -> Result<(), String> {
+impl Settings for SvaoSettings {
+    const ROWS: &'static [Setting<Self>] = &[
+        Setting::<Self>::choice("sd-res", &["full", "half", "quarter"], |s| sd_res_index(s.divisor), |s, i| {
+            s.divisor = 1 << i
+        })
+        .help("Ray-SD map resolution (divisor 1, 2, 4; spec svao-raysd §3)"),
+        Setting::<Self>::count("sd-layers", 1, 8, |s| &mut s.layers).help("SD layers N: 1, 2, 4 or 8 (spec svao-raysd §7)"),
+        Setting::<Self>::count("max-count", 1, u32::MAX, |s| &mut s.max_count)
+            .help("Reservoir MAX_COUNT of the SD any-hit (raised to N when smaller; spec svao-raysd §7)"),
+        Setting::<Self>::number("cutoff", 0.0, f32::MAX, |s| &mut s.cutoff)
+            .help("Radius cutoff in pixels: closer samples are never refined (spec svao-raysd §4.4)"),
+        Setting::<Self>::switch("interval", &["off", "on"], |s| &mut s.interval)
+            .only_switch("no-interval", "off")
+            .help("Ray-interval optimisation (spec svao-raysd §6); --no-interval traces every SD texel over its full range"),
+        Setting::<Self>::choice("jitter", &["none", "scrambled", "paper"], |s| s.jitter as usize, |s, i| {
+            s.jitter = [JitterTable::None, JitterTable::Scrambled, JitterTable::Paper][i]
+        })
+        .and_switch("no-jitter", "none")
+        .help("SD jitter table (spec svao-raysd §7.2); --no-jitter traces through texel centres"),
+        Setting::<Self>::count("sd-guard", 0, u32::MAX, |s| &mut s.guard).help("SD guard band in full-resolution pixels"),
+        Setting::<Self>::switch("primary", &["single", "dual"], |s| &mut s.dual)
+            .help("Primary depth: the depth buffer, or dual depth with a depth-peeled second layer (spec svao-raysd §11)"),
+        Setting::<Self>::number("peel-separation", 0.0, f32::MAX, |s| &mut s.peel_separation)
+            .help("Minimum view-depth separation of the peeled second layer (world units)"),
+        Setting::<Self>::switch("kernel", &["vao", "hbao"], |s| &mut s.hbao)
+            .help("AO kernel: VAO's halo model, or HBAO+ with the radius × 1.5 (spec svao-raysd §4.5)"),
+        Setting::<Self>::switch("sd-source", &["ray", "raster"], |s| &mut s.raster)
+            .help("SD map: ray-traced, or the raster coverage-mask baseline (spec svao-raysd §8)"),
+    ];
+
+    fn check(&self) -> Result<(), String> {
         if ![1, 2, 4].contains(&self.divisor) {
             return Err(format!("--sd-res: divisor {} is not 1 (full), 2 (half) or 4 (quarter)", self.divisor));
         }
-        if ![1, 2, 4, 8].contains(&self.layers) {
+        if !self.layers.is_power_of_two() {
             return Err(format!("--sd-layers {} is not 1, 2, 4 or 8", self.layers));
-        }
-        if self.max_count == 0 {
-            return Err("--max-count must be at least 1".into());
-        }
-        if !(self.peel_separation.is_finite() && self.peel_separation >= 0.0) {
-            return Err(format!("--peel-separation {} must be a non-negative distance", self.peel_separation));
-        }
-        if !(self.cutoff.is_finite() && self.cutoff >= 0.0) {
-            return Err(format!("--cutoff {} must be a non-negative number of pixels", self.cutoff));
         }
         Ok(())
     }
+}
 
+/// The index of an SD divisor in `full|half|quarter` (3 = none of them).
+fn sd_res_index(divisor: u32) -> usize {
+    match divisor {
+        1 => 0,
+        2 => 1,
+        4 => 2,
+        _ => 3,
+    }
+}
+
+/// The second layer a dual-depth run reads.
+pub fn dual_layer(s: &SvaoSettings) -> Option<f32> {
+    s.dual.then_some(s.peel_separation)
+}
+
+/// The settings every SD-map technique reads.
+const SD_KEYS: &[&str] = &[
+    "sd-res",
+    "sd-layers",
+    "max-count",
+    "cutoff",
+    "interval",
+    "jitter",
+    "sd-guard",
+    "primary",
+    "peel-separation",
+    "kernel",
+    "sd-source",
+];
+
+/// VAO's pass 1 alone with the HBAO+ kernel, on single or dual depth (spec svao-raysd §4.5, §11).
+pub static HBAO: Declaration<SvaoSettings> = Declaration {
+    name: "hbao",
+    summary: "HBAO+ kernel on single or dual depth, no refinement (spec svao-raysd §4.5, §11)",
+    keys: &["primary", "peel-separation"],
+    defaults: || SvaoSettings { hbao: true, ..Default::default() },
+    graph: |s, frame| s.graph(frame, Secondary::Disabled),
+    second_layer: dual_layer,
+    rays: rays_counted,
+};
+
+/// Stenciled VAO refined from the ray-traced stochastic depth map (spec svao-raysd §3, §5, §7, §9).
+pub static RAYSD: Declaration<SvaoSettings> = Declaration {
+    name: "raysd",
+    summary: "stenciled VAO refined from a ray-traced stochastic depth map (spec svao-raysd §3, §5, §7, §9)",
+    keys: SD_KEYS,
+    defaults: SvaoSettings::default,
+    graph: |s, frame| s.graph(frame, Secondary::StochasticDepth),
+    second_layer: dual_layer,
+    rays: rays_counted,
+};
+
+/// Ray-SD with the HBAO+ kernel in both AO passes (spec svao-raysd §4.5).
+pub static HBAO_SD: Declaration<SvaoSettings> = Declaration {
+    name: "hbao-sd",
+    summary: "Ray-SD with the HBAO+ kernel (spec svao-raysd §4.5, §9)",
+    keys: &[
+        "sd-res",
+        "sd-layers",
+        "max-count",
+        "cutoff",
+        "interval",
+        "jitter",
+        "sd-guard",
+        "primary",
+        "peel-separation",
+    ],
+    defaults: || SvaoSettings { hbao: true, ..Default::default() },
+    graph: |s, frame| s.graph(frame, Secondary::StochasticDepth),
+    second_layer: dual_layer,
+    rays: rays_counted,
+};
+
+/// Stenciled VAO refined from the raster coverage-mask SD map (spec svao-raysd §8; no SD guard
+/// band, no jitter).
+pub static SDSVAO: Declaration<SvaoSettings> = Declaration {
+    name: "sdsvao",
+    summary: "stenciled VAO refined from the raster coverage-mask SD map (spec svao-raysd §8)",
+    keys: &["sd-res", "sd-layers", "max-count", "cutoff", "interval", "primary", "peel-separation", "kernel"],
+    defaults: || SvaoSettings { raster: true, ..Default::default() },
+    graph: |s, frame| s.graph(frame, Secondary::StochasticDepth),
+    second_layer: dual_layer,
+    rays: rays_counted,
+};
+
+/// Stenciled VAO refined by one ray per flagged sample (spec svao-raysd §10), the Ray-SD reference.
+pub static RAYSVAO: Declaration<SvaoSettings> = Declaration {
+    name: "raysvao",
+    summary: "stenciled VAO refined by one ray per flagged sample, the Ray-SD reference (spec svao-raysd §10)",
+    keys: &["cutoff", "primary", "peel-separation"],
+    defaults: SvaoSettings::default,
+    graph: |s, frame| s.graph(frame, Secondary::Raytraced),
+    second_layer: dual_layer,
+    rays: rays_counted,
+};
+
+impl SvaoSettings {
     /// The SVAO record (the kernels' constants) for a secondary source: Ray-SD, Ray-SVAO (no
     /// SD map, no guard) or none (pass 1 finalizes every pixel).
     pub fn frame(&self, frame: &FrameDesc, secondary: Secondary) -> SvaoFrame {

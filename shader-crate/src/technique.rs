@@ -1,0 +1,426 @@
+//! A technique as data (host side): its settings described row by row — key, command-line flag,
+//! range or choices, help, and where the value lives in the settings struct — and its
+//! declaration (name, default settings, pass graph). The registry ([`crate::techniques`]) lists
+//! the declarations; the CLI's flags and help, the `technique:key=value` overrides, validation,
+//! report labels and the options in the JSON reports are all read from these rows, so nothing
+//! about a setting is written twice.
+
+use crate::graph::{FrameDesc, Graph};
+use core::any::Any;
+use core::fmt::Debug;
+
+/// What values a setting takes.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub enum Kind {
+    /// A whole number in `min..=max`.
+    Count { min: u32, max: u32 },
+    /// A real number in `min..=max`.
+    Number { min: f32, max: f32 },
+    /// One of these names.
+    Choice(&'static [&'static str]),
+}
+
+impl Kind {
+    /// The accepted values in words, e.g. `1–8`, `≥ 0`, `full|half|quarter`.
+    pub fn accepted(&self) -> String {
+        fn range<T: PartialEq + core::fmt::Display>(min: T, max: T, unbounded: T) -> String {
+            if max == unbounded { format!("≥ {min}") } else { format!("{min}–{max}") }
+        }
+        match *self {
+            Kind::Count { min, max } => range(min, max, u32::MAX),
+            Kind::Number { min, max } => range(min, max, f32::MAX),
+            Kind::Choice(names) => names.join("|"),
+        }
+    }
+}
+
+/// Where a setting's value lives in the settings struct `S`.
+pub enum Field<S> {
+    Count(fn(&mut S) -> &mut u32),
+    Number(fn(&mut S) -> &mut f32),
+    /// A two-way choice stored as a bool (`names[1]` = true).
+    Switch(fn(&mut S) -> &mut bool),
+    /// A choice stored any other way: the index of the current name, and how to store one.
+    Choice {
+        get: fn(&S) -> usize,
+        set: fn(&mut S, usize),
+    },
+}
+
+/// One setting of a settings struct `S`.
+pub struct Setting<S> {
+    /// The key in `technique:key=value` overrides and in the reports' options.
+    pub key: &'static str,
+    /// The command-line flag taking a value (`--flag <value>`), if any.
+    pub flag: Option<&'static str>,
+    /// A value-less command-line flag and the value it sets (e.g. `--no-interval` → `off`).
+    pub switch: Option<(&'static str, &'static str)>,
+    pub help: &'static str,
+    pub kind: Kind,
+    pub field: Field<S>,
+}
+
+impl<S> Setting<S> {
+    /// A whole number in `min..=max` (use `u32::MAX` for no upper bound); flag `--key`.
+    pub const fn count(key: &'static str, min: u32, max: u32, field: fn(&mut S) -> &mut u32) -> Self {
+        Self::new(key, Kind::Count { min, max }, Field::Count(field))
+    }
+
+    /// A real number in `min..=max` (use `f32::MAX` for no upper bound); flag `--key`.
+    pub const fn number(key: &'static str, min: f32, max: f32, field: fn(&mut S) -> &mut f32) -> Self {
+        Self::new(key, Kind::Number { min, max }, Field::Number(field))
+    }
+
+    /// A bool written as one of two names (`names[1]` = true); flag `--key`.
+    pub const fn switch(key: &'static str, names: &'static [&'static str; 2], field: fn(&mut S) -> &mut bool) -> Self {
+        Self::new(key, Kind::Choice(names), Field::Switch(field))
+    }
+
+    /// One of `names`, stored through `get`/`set` (index into `names`); flag `--key`.
+    pub const fn choice(
+        key: &'static str,
+        names: &'static [&'static str],
+        get: fn(&S) -> usize,
+        set: fn(&mut S, usize),
+    ) -> Self {
+        Self::new(key, Kind::Choice(names), Field::Choice { get, set })
+    }
+
+    const fn new(key: &'static str, kind: Kind, field: Field<S>) -> Self {
+        Setting { key, flag: Some(key), switch: None, help: "", kind, field }
+    }
+
+    /// The command-line flag taking a value, when it is not the key.
+    pub const fn flag(self, flag: &'static str) -> Self {
+        Setting { flag: Some(flag), ..self }
+    }
+
+    /// Only a value-less flag on the command line: `--flag` sets `value`.
+    pub const fn only_switch(self, flag: &'static str, value: &'static str) -> Self {
+        Setting { flag: None, switch: Some((flag, value)), ..self }
+    }
+
+    /// A value-less flag besides the value flag: `--flag` sets `value`.
+    pub const fn and_switch(self, flag: &'static str, value: &'static str) -> Self {
+        Setting { switch: Some((flag, value)), ..self }
+    }
+
+    pub const fn help(self, help: &'static str) -> Self {
+        Setting { help, ..self }
+    }
+
+    /// The name the user knows the setting by: its flag, else its key.
+    pub fn user_name(&self) -> String {
+        match (self.flag, self.switch) {
+            (Some(f), _) | (None, Some((f, _))) => format!("--{f}"),
+            (None, None) => self.key.to_string(),
+        }
+    }
+
+    /// The value as text (a name for choices).
+    pub fn get(&self, settings: &S) -> String
+    where
+        S: Copy,
+    {
+        let mut s = *settings;
+        match (&self.field, self.kind) {
+            (Field::Count(f), _) => f(&mut s).to_string(),
+            (Field::Number(f), _) => f(&mut s).to_string(),
+            (Field::Switch(f), Kind::Choice(names)) => names[*f(&mut s) as usize].to_string(),
+            (Field::Choice { get, .. }, Kind::Choice(names)) => names.get(get(&s)).copied().unwrap_or("?").to_string(),
+            _ => unreachable!("a switch or choice is declared with Kind::Choice"),
+        }
+    }
+
+    /// Parse and store `value`; out-of-range values and unknown names are refused.
+    pub fn set(&self, settings: &mut S, value: &str) -> Result<(), String> {
+        let bad = || format!("{} {value}: expected {}", self.user_name(), self.kind.accepted());
+        match (&self.field, self.kind) {
+            (Field::Count(f), Kind::Count { min, max }) => {
+                let v: u32 = value.trim().parse().map_err(|_| bad())?;
+                *f(settings) = if (min..=max).contains(&v) { v } else { return Err(bad()) };
+            }
+            (Field::Number(f), Kind::Number { min, max }) => {
+                let v: f32 = value.trim().parse().map_err(|_| bad())?;
+                *f(settings) = if v.is_finite() && (min..=max).contains(&v) { v } else { return Err(bad()) };
+            }
+            (field, Kind::Choice(names)) => {
+                let i = names.iter().position(|n| *n == value.trim()).ok_or_else(bad)?;
+                match field {
+                    Field::Switch(f) => *f(settings) = i == 1,
+                    Field::Choice { set, .. } => set(settings, i),
+                    _ => unreachable!("numbers are declared with Count or Number"),
+                }
+            }
+            _ => unreachable!("a count is declared with Kind::Count, a number with Kind::Number"),
+        }
+        Ok(())
+    }
+
+    /// Whether the stored value is inside the declared range (choices always are, by type,
+    /// unless `get` cannot name the stored value).
+    pub fn in_range(&self, settings: &S) -> Result<(), String>
+    where
+        S: Copy,
+    {
+        let mut s = *settings;
+        let ok = match (&self.field, self.kind) {
+            (Field::Count(f), Kind::Count { min, max }) => (min..=max).contains(f(&mut s)),
+            (Field::Number(f), Kind::Number { min, max }) => {
+                let v = *f(&mut s);
+                v.is_finite() && (min..=max).contains(&v)
+            }
+            (Field::Choice { get, .. }, Kind::Choice(names)) => get(&s) < names.len(),
+            _ => true,
+        };
+        if ok {
+            Ok(())
+        } else {
+            Err(format!("{} {}: expected {}", self.user_name(), self.get(&s), self.kind.accepted()))
+        }
+    }
+
+    /// The value as JSON-ready text: numbers bare, names quoted.
+    pub fn json(&self, settings: &S) -> String
+    where
+        S: Copy,
+    {
+        match self.kind {
+            Kind::Choice(_) => format!("\"{}\"", self.get(settings)),
+            _ => self.get(settings),
+        }
+    }
+}
+
+/// A settings struct described row by row.
+pub trait Settings: Copy + Default + PartialEq + Debug + Send + Sync + 'static {
+    /// Every setting, in the order they are applied.
+    const ROWS: &'static [Setting<Self>];
+
+    /// Constraints beyond each row's range (e.g. a power of two).
+    fn check(&self) -> Result<(), String> {
+        Ok(())
+    }
+
+    /// Every row's range, then [`Settings::check`]; the message names the setting.
+    fn validate(&self) -> Result<(), String> {
+        for row in Self::ROWS {
+            row.in_range(self)?;
+        }
+        self.check()
+    }
+}
+
+/// One technique: its name, which settings it reads, its defaults and its pass graph.
+pub struct Declaration<S: 'static> {
+    /// The name users pick it by (`--technique`, `--techniques`).
+    pub name: &'static str,
+    /// One line for listings and help.
+    pub summary: &'static str,
+    /// The rows of `S::ROWS` this technique reads; the others stay at `defaults` (a variant's
+    /// fixed settings, e.g. the HBAO+ kernel of hbao-sd).
+    pub keys: &'static [&'static str],
+    pub defaults: fn() -> S,
+    /// The pass graph for a frame.
+    pub graph: fn(&S, &FrameDesc) -> Result<Graph, String>,
+    /// The separation of the depth-peeled second layer the graph reads, if it reads one.
+    pub second_layer: fn(&S) -> Option<f32>,
+    /// World-space rays a frame traces where the settings fix the count (the stenciled family
+    /// counts its rays from its buffers).
+    pub rays: fn(&S, &FrameDesc) -> Option<u64>,
+}
+
+/// A technique with its settings, behind one type for every settings struct.
+pub trait Configured: Send + Sync + Debug {
+    fn name(&self) -> &'static str;
+    fn summary(&self) -> &'static str;
+    /// `(key, value as text)` of every setting the technique reads, in declaration order.
+    fn values(&self) -> Vec<(&'static str, String)>;
+    /// The options as a JSON object text (`snake_case` keys; numbers bare, names quoted).
+    fn json(&self) -> String;
+    /// `(key, value)` of the settings that differ from the technique's defaults.
+    fn changed(&self) -> Vec<(&'static str, String)>;
+    /// Set a setting by key; a key the technique does not read is refused.
+    fn set(&mut self, key: &str, value: &str) -> Result<(), String>;
+    /// Set a setting by its command-line flag (`value: None` for a value-less switch); `Ok(false)`
+    /// when the technique has no such flag.
+    fn set_flag(&mut self, flag: &str, value: Option<&str>) -> Result<bool, String>;
+    fn validate(&self) -> Result<(), String>;
+    fn graph(&self, frame: &FrameDesc) -> Result<Graph, String>;
+    fn second_layer(&self) -> Option<f32>;
+    fn rays(&self, frame: &FrameDesc) -> Option<u64>;
+    /// The settings struct, for callers that know its type.
+    fn settings(&self) -> &dyn Any;
+    fn clone_box(&self) -> Box<dyn Configured>;
+}
+
+/// An entry of the registry: a declaration for any settings struct.
+pub trait Technique: Sync {
+    fn name(&self) -> &'static str;
+    fn summary(&self) -> &'static str;
+    /// The keys of the settings it reads.
+    fn keys(&self) -> &'static [&'static str];
+    /// The technique at its defaults.
+    fn configure(&'static self) -> Box<dyn Configured>;
+    /// The settings the technique reads, without their types.
+    fn rows(&self) -> Vec<Row>;
+}
+
+/// A setting without its settings type: what the CLI needs to declare a flag.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    pub key: &'static str,
+    pub flag: Option<&'static str>,
+    pub switch: Option<(&'static str, &'static str)>,
+    pub help: &'static str,
+    pub kind: Kind,
+    /// The settings type's own default (`S::default()`), as text.
+    pub default: String,
+    /// The settings type, so that techniques sharing a flag can be checked to share the row.
+    pub settings_type: &'static str,
+}
+
+impl<S: Settings> Declaration<S> {
+    fn rows_read(&self) -> impl Iterator<Item = &'static Setting<S>> + '_ {
+        S::ROWS.iter().filter(|r| self.keys.contains(&r.key))
+    }
+}
+
+/// A declaration with its settings.
+struct Instance<S: 'static> {
+    declaration: &'static Declaration<S>,
+    settings: S,
+}
+
+impl<S: Settings> Debug for Instance<S> {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "{} {:?}", self.declaration.name, self.settings)
+    }
+}
+
+/// `technique` with `settings`.
+pub fn configure<S: Settings>(technique: &'static Declaration<S>, settings: S) -> Box<dyn Configured> {
+    Box::new(Instance { declaration: technique, settings })
+}
+
+impl<S: Settings> Technique for Declaration<S> {
+    fn name(&self) -> &'static str {
+        self.name
+    }
+
+    fn summary(&self) -> &'static str {
+        self.summary
+    }
+
+    fn keys(&self) -> &'static [&'static str] {
+        self.keys
+    }
+
+    fn configure(&'static self) -> Box<dyn Configured> {
+        configure(self, (self.defaults)())
+    }
+
+    fn rows(&self) -> Vec<Row> {
+        let defaults = S::default();
+        self.rows_read()
+            .map(|r| Row {
+                key: r.key,
+                flag: r.flag,
+                switch: r.switch,
+                help: r.help,
+                kind: r.kind,
+                default: r.get(&defaults),
+                settings_type: core::any::type_name::<S>(),
+            })
+            .collect()
+    }
+}
+
+impl<S: Settings> Configured for Instance<S> {
+    fn name(&self) -> &'static str {
+        self.declaration.name
+    }
+
+    fn summary(&self) -> &'static str {
+        self.declaration.summary
+    }
+
+    fn values(&self) -> Vec<(&'static str, String)> {
+        self.declaration.rows_read().map(|r| (r.key, r.get(&self.settings))).collect()
+    }
+
+    fn json(&self) -> String {
+        let fields: Vec<_> = self
+            .declaration
+            .rows_read()
+            .map(|r| format!("\"{}\":{}", r.key.replace('-', "_"), r.json(&self.settings)))
+            .collect();
+        format!("{{{}}}", fields.join(","))
+    }
+
+    fn changed(&self) -> Vec<(&'static str, String)> {
+        let defaults = (self.declaration.defaults)();
+        self.declaration
+            .rows_read()
+            .filter(|r| r.get(&defaults) != r.get(&self.settings))
+            .map(|r| (r.key, r.get(&self.settings)))
+            .collect()
+    }
+
+    fn set(&mut self, key: &str, value: &str) -> Result<(), String> {
+        let row = self.declaration.rows_read().find(|r| r.key == key).ok_or_else(|| {
+            let keys: Vec<_> = self.declaration.keys.to_vec();
+            match keys.is_empty() {
+                true => format!("{} has no options", self.declaration.name),
+                false => format!("{} has no option '{key}' (it has {})", self.declaration.name, keys.join(", ")),
+            }
+        })?;
+        row.set(&mut self.settings, value)
+    }
+
+    fn set_flag(&mut self, flag: &str, value: Option<&str>) -> Result<bool, String> {
+        for row in self.declaration.rows_read() {
+            match (value, row.flag, row.switch) {
+                (Some(v), Some(f), _) if f == flag => return row.set(&mut self.settings, v).map(|_| true),
+                (None, _, Some((f, v))) if f == flag => return row.set(&mut self.settings, v).map(|_| true),
+                _ => {}
+            }
+        }
+        Ok(false)
+    }
+
+    fn validate(&self) -> Result<(), String> {
+        self.settings.validate()
+    }
+
+    fn graph(&self, frame: &FrameDesc) -> Result<Graph, String> {
+        self.settings.validate()?;
+        (self.declaration.graph)(&self.settings, frame)
+    }
+
+    fn second_layer(&self) -> Option<f32> {
+        (self.declaration.second_layer)(&self.settings)
+    }
+
+    fn rays(&self, frame: &FrameDesc) -> Option<u64> {
+        (self.declaration.rays)(&self.settings, frame)
+    }
+
+    fn settings(&self) -> &dyn Any {
+        &self.settings
+    }
+
+    fn clone_box(&self) -> Box<dyn Configured> {
+        Box::new(Instance { declaration: self.declaration, settings: self.settings })
+    }
+}
+
+/// For declarations without a second layer.
+pub fn single_layer<S>(_: &S) -> Option<f32> {
+    None
+}
+
+/// For declarations whose ray count is not fixed by their settings.
+pub fn rays_counted<S>(_: &S, _: &FrameDesc) -> Option<u64> {
+    None
+}

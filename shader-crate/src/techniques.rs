@@ -1,0 +1,29 @@
+//! The registry: every technique aokit offers, one line each. A technique is its folder
+//! (kernels, settings rows, pass graph, its [`Declaration`](crate::technique::Declaration)) plus
+//! its line here; the CLI, the reports and both executors find it through this list.
+
+use crate::technique::Technique;
+
+/// Every technique, in the order listings show them.
+pub static TECHNIQUES: &[&dyn Technique] = &[
+    &crate::vao::settings::VAO,
+    &crate::svao::settings::HBAO,
+    &crate::svao::settings::RAYSD,
+    &crate::svao::settings::HBAO_SD,
+    &crate::svao::settings::SDSVAO,
+    &crate::svao::settings::RAYSVAO,
+    &crate::gtao::settings::GTAO,
+    &crate::raymarch::settings::RAYMARCH,
+    &crate::hybrid::settings::HYBRID,
+    &crate::groundtruth::settings::GROUNDTRUTH,
+];
+
+/// The technique called `name`.
+pub fn find(name: &str) -> Option<&'static dyn Technique> {
+    TECHNIQUES.iter().copied().find(|t| t.name() == name)
+}
+
+/// The registered names, comma-separated (for messages and help).
+pub fn names() -> String {
+    TECHNIQUES.iter().map(|t| t.name()).collect::<Vec<_>>().join(", ")
+}
