@@ -742,7 +742,7 @@ fn record_frame(
 fn check_graph(technique: &Technique, frame: &Frame, gpu: &Gpu) -> Result<bool> {
     let graph = technique.graph(&frame.desc())?;
     if technique.second_layer().is_some() {
-        return Err("dual-depth techniques need a second depth layer, which record_engine does not import".into());
+        return Err("dual-depth techniques need a depth-peeled second layer, which this example does not render".into());
     }
     if graph.passes.iter().any(|p| matches!(p.kind, PassKind::Raster { .. })) {
         return Err(format!(
@@ -852,6 +852,7 @@ fn main() -> Result<()> {
         depth: EngineImage { view: images.depth.view, layout: vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL },
         normals: (!args.no_normals)
             .then_some(EngineImage { view: images.normals.view, layout: vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL }),
+        second_depth: None, // check_graph refused dual-depth techniques
         output: AoImage { view: images.ao.view, format: args.ao_format.vk() },
         import: ImportParams { view, engine_size: frame.inner, depth_convention: DEPTH_REVERSED, near, far, _pad: 0 },
         scene: accel.as_ref(),

@@ -5,8 +5,8 @@
 //! command buffer.
 //!
 //! 1. `engine_frames_agree_with_cpu_sim`: the engine's images are made from the CPU ray-cast
-//!    G-buffer (reversed and standard Z, with and without a normal image); vao, gtao and raysd
-//!    through `record_engine` must agree with cpu-sim run on the SAME engine arrays through
+//!    G-buffer (reversed and standard Z, with and without a normal image, and a depth-peeled
+//!    second layer); vao, gtao, raysd and dual-depth vao through `record_engine` must agree with cpu-sim run on the SAME engine arrays through
 //!    `aokit_cpu::adapters` (import → `CpuExecutor` → export).
 //! 2. `soak_300_frames_two_resolutions`: 300 engine frames, raysd and gtao alternating, through
 //!    two resolution changes: no validation message, `allocated_bytes` back to where it was at
@@ -237,6 +237,8 @@ struct EngineGBuffer {
     size: UVec2,
     /// Stored D32 values.
     depth: Vec<f32>,
+    /// Stored D32 values of the depth-peeled second layer, for dual-depth graphs.
+    second: Option<Vec<f32>>,
     rgba8: Vec<u8>,
     /// The RGBA8 normals as the sampler returns them (`c / 255`), for the CPU import.
     rgb: Vec<[f32; 3]>,
@@ -249,21 +251,7 @@ struct EngineGBuffer {
 /// cleared value. Normals: `n·0.5 + 0.5` of the decoded G-buffer normals in RGBA8.
 fn engine_gbuffer(view: &ViewParams, gbuffer: &GBufferImage, convention: u32) -> EngineGBuffer {
     let size = view.size() - 2 * view.guard;
-    let linear = crop_inner(view, &gbuffer.depth);
-    let (n, f) = (view.near as f64, view.far as f64);
-    let depth: Vec<f32> = linear
-        .iter()
-        .map(|&z| {
-            let z = z as f64;
-            match convention {
-                DEPTH_STANDARD if z >= f => 1.0,
-                DEPTH_STANDARD => (f * (z - n) / (z * (f - n))) as f32,
-                DEPTH_REVERSED if z >= f => 0.0,
-                DEPTH_REVERSED => (n * (f - z) / (z * (f - n))) as f32,
-                _ => unreachable!("convention {convention}"),
-            }
-        })
-        .collect();
+    let depth = engine_depth(view, &gbuffer.depth, convention);
     let (full, g) = (view.size(), view.guard);
     let mut rgba8 = Vec::with_capacity(4 * depth.len());
     for y in g..full.y - g {
@@ -281,7 +269,27 @@ fn engine_gbuffer(view: &ViewParams, gbuffer: &GBufferImage, convention: u32) ->
         far: view.far,
         _pad: 0,
     };
-    EngineGBuffer { size, depth, rgba8, rgb, params }
+    EngineGBuffer { size, depth, second: None, rgba8, rgb, params }
+}
+
+/// The inner image of a full-target linear depth as the engine's D32 depth buffer in
+/// `convention` (see [`engine_gbuffer`]).
+fn engine_depth(view: &ViewParams, linear: &[f32], convention: u32) -> Vec<f32> {
+    let linear = crop_inner(view, linear);
+    let (n, f) = (view.near as f64, view.far as f64);
+    linear
+        .iter()
+        .map(|&z| {
+            let z = z as f64;
+            match convention {
+                DEPTH_STANDARD if z >= f => 1.0,
+                DEPTH_STANDARD => (f * (z - n) / (z * (f - n))) as f32,
+                DEPTH_REVERSED if z >= f => 0.0,
+                DEPTH_REVERSED => (n * (f - z) / (z * (f - n))) as f32,
+                _ => unreachable!("convention {convention}"),
+            }
+        })
+        .collect()
 }
 
 /// The engine's images: depth (D32, sampled, a depth attachment), normals (RGBA8, sampled) and
@@ -289,6 +297,8 @@ fn engine_gbuffer(view: &ViewParams, gbuffer: &GBufferImage, convention: u32) ->
 struct Targets {
     depth: Image2d,
     normals: Image2d,
+    /// The second depth layer, where the engine G-buffer has one.
+    second: Option<Image2d>,
     output: Image2d,
     size: UVec2,
 }
@@ -305,17 +315,24 @@ impl Targets {
         let targets = Targets {
             depth: gpu.create_image_2d(vk::Format::D32_SFLOAT, w, h, depth_usage).unwrap(),
             normals: gpu.create_image_2d(vk::Format::R8G8B8A8_UNORM, w, h, sampled).unwrap(),
+            second: g.second.as_ref().map(|_| gpu.create_image_2d(vk::Format::D32_SFLOAT, w, h, depth_usage).unwrap()),
             output: gpu.create_image_2d(vk::Format::R32_SFLOAT, w, h, out_usage).unwrap(),
             size: g.size,
         };
         let depth_bytes: &[u8] = bytemuck::cast_slice(&g.depth);
-        let staging_size = (depth_bytes.len() + g.rgba8.len()) as u64;
+        let second_bytes: &[u8] = g.second.as_deref().map_or(&[], bytemuck::cast_slice);
+        let staging_size = (2 * depth_bytes.len() + g.rgba8.len()) as u64;
         let staging = HostBuffer::new(engine, staging_size, vk::BufferUsageFlags::TRANSFER_SRC);
         staging.write(engine, 0, depth_bytes);
         staging.write(engine, depth_bytes.len() as u64, &g.rgba8);
+        staging.write(engine, (depth_bytes.len() + g.rgba8.len()) as u64, second_bytes);
         let cmd = engine.begin();
         let dst = vk::ImageLayout::TRANSFER_DST_OPTIMAL;
-        let regions = [(&targets.depth, 0, DEPTH_LAYOUT), (&targets.normals, depth_bytes.len() as u64, NORMAL_LAYOUT)];
+        let mut regions =
+            vec![(&targets.depth, 0, DEPTH_LAYOUT), (&targets.normals, depth_bytes.len() as u64, NORMAL_LAYOUT)];
+        if let Some(second) = &targets.second {
+            regions.push((second, (depth_bytes.len() + g.rgba8.len()) as u64, DEPTH_LAYOUT));
+        }
         for (image, offset, layout) in regions {
             let none = (S::TOP_OF_PIPE, A::empty());
             image_barrier(
@@ -337,7 +354,7 @@ impl Targets {
     }
 
     fn destroy(self, gpu: &Gpu) {
-        for image in [self.depth, self.normals, self.output] {
+        for image in [self.depth, self.normals, self.output].into_iter().chain(self.second) {
             gpu.free_image(image);
         }
     }
@@ -365,6 +382,7 @@ fn record_frame(
     let frame = EngineFrame {
         depth: EngineImage { view: targets.depth.view, layout: DEPTH_LAYOUT },
         normals: with_normals.then_some(EngineImage { view: targets.normals.view, layout: NORMAL_LAYOUT }),
+        second_depth: targets.second.as_ref().map(|image| EngineImage { view: image.view, layout: DEPTH_LAYOUT }),
         output: AoImage { view: targets.output.view, format: vk::Format::R32_SFLOAT },
         import,
         scene: Some(scene),
@@ -427,11 +445,12 @@ fn cpu_reference(
         let params = GtaoParams { view: g.params.view, ..bytemuck::Zeroable::zeroed() };
         aokit_cpu::gtao::run_normals(&params, &depth)
     };
+    let second = g.second.as_ref().map(|d| aokit_cpu::adapters::import_depth(&g.params, d));
     let surfaces = renderer.surfaces();
     let inputs = CpuInputs {
         depth: &depth,
         normals: &normals,
-        second_depth: None,
+        second_depth: second.as_deref(),
         scene: Some(CpuScene { bvh: renderer.bvh(), surfaces: &surfaces }),
         progress: &no_progress,
     };
@@ -488,7 +507,12 @@ fn engine_frames_agree_with_cpu_sim() {
         ("vao", Technique::new(&VAO, SdOptions::default())),
         ("gtao", Technique::new(&GTAO, GtaoOptions::default())),
         ("raysd", Technique::new(&RAYSD, SdOptions::default())),
+        // Dual depth: the engine gives the depth-peeled second layer as a second depth image.
+        ("vao-dual", Technique::new(&VAO, SdOptions { dual: true, peel_separation: 0.5, ..Default::default() })),
     ];
+    let separation = techniques[3].1.second_layer().expect("dual depth");
+    let surfaces = renderer.surfaces();
+    let depth2 = aokit_cpu::ray_cast_second_layer(renderer.bvh(), &surfaces, &frame.camera, &gbuffer, separation);
     let graphs: Vec<(&str, Graph)> =
         techniques.iter().map(|(name, t)| (*name, t.graph(&desc).expect("a graph technique"))).collect();
 
@@ -503,7 +527,10 @@ fn engine_frames_agree_with_cpu_sim() {
         ("reversed-Z", DEPTH_REVERSED, false),
     ];
     for (convention_name, convention, with_normals) in runs {
-        let g = engine_gbuffer(&view, &gbuffer, convention);
+        let g = EngineGBuffer {
+            second: Some(engine_depth(&view, &depth2, convention)),
+            ..engine_gbuffer(&view, &gbuffer, convention)
+        };
         let texels = (g.size.x * g.size.y) as usize;
         // The stored depths hold the G-buffer's: the CPU import recovers the linear depth within
         // the bound of tests/adapters.rs (8U·(1 + κ), κ = z·(f − n)/(n·f) for standard Z).
@@ -555,7 +582,7 @@ fn engine_frames_agree_with_cpu_sim() {
     eprintln!("engine_frames_agree_with_cpu_sim: {:.1} s", start.elapsed().as_secs_f64());
     let messages = engine.destroy();
     assert_validation_clean("engine_frames_agree_with_cpu_sim", messages);
-    assert_eq!(report.len(), 9);
+    assert_eq!(report.len(), 12);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -579,8 +606,10 @@ fn soak_300_frames_two_resolutions() {
     let renderer = CpuRenderer::new(&scene);
     let accel = scene_accel(&gpu, &scene);
     let mut ctx = AoContext::new(&gpu);
-    // `gpu.allocated_bytes()` after each frame, per phase.
+    // `gpu.allocated_bytes()` and the context's descriptor pools made so far, after each frame,
+    // per phase.
     let mut allocated: Vec<Vec<u64>> = Vec::new();
+    let mut pools: Vec<Vec<u64>> = Vec::new();
     // Per phase: the AO image of its first frame (raysd, right after the resize) and of its last
     // raysd and last gtao frame.
     let mut first_images = Vec::new();
@@ -597,6 +626,7 @@ fn soak_300_frames_two_resolutions() {
         let host = || HostBuffer::new(&engine, 4 * texels as u64, vk::BufferUsageFlags::TRANSFER_DST);
         let (first, last) = (host(), [host(), host()]);
         let mut bytes = Vec::with_capacity(frames);
+        let mut made = Vec::with_capacity(frames);
         for i in 0..frames {
             let k = i % 2; // 0: raysd, 1: gtao
             let read = match i {
@@ -610,8 +640,10 @@ fn soak_300_frames_two_resolutions() {
             engine.submit_and_wait(cmd);
             frame_ms.push(t.elapsed().as_secs_f64() * 1e3);
             bytes.push(gpu.allocated_bytes());
+            made.push(ctx.descriptor_pools_made());
         }
         allocated.push(bytes);
+        pools.push(made);
         first_images.push(first.read_f32(&engine, texels));
         last_images.push(last.each_ref().map(|b| b.read_f32(&engine, texels)));
         for b in last.into_iter().chain([first]) {
@@ -655,6 +687,16 @@ fn soak_300_frames_two_resolutions() {
     // last frame (gtao, 96×64) against the first gtao frame of the first phase after the warm-up.
     assert_eq!(last_phase[last_phase.len() - 1], first_phase[warm + 1], "allocated bytes after the last frame");
     assert!(allocated[1][warm] > first_phase[warm], "the larger resolution must allocate more");
+    // Descriptor sets are kept per graph and per engine images: after the first frame of each
+    // graph at a resolution, alternating the two graphs makes no descriptor pool.
+    for (p, made) in pools.iter().enumerate() {
+        eprintln!(
+            "phase {p}: descriptor pools made by the context so far, first and last frame: {} → {}",
+            made[0],
+            made[made.len() - 1]
+        );
+        assert_eq!(made[1], made[made.len() - 1], "phase {p}: descriptor pools made after the first frames");
+    }
 
     // The AO images. Right after each resize raysd must produce what it produces at the end of
     // that phase (same inputs), and the last images of the third phase those of the first.

@@ -32,7 +32,7 @@
 //! `GENERAL`).
 
 use crate::compute::{ComputeKernel, compute_barrier, memory_barrier};
-use crate::descriptors::Descriptor;
+use crate::descriptors::{Descriptor, SetSource};
 use crate::image::Image2d;
 use crate::{Buffer, Gpu, GpuError, modules};
 use aokit_shaders::adapters::{DEPTH_LINEAR, DEPTH_REVERSED_INFINITE, ImportParams};
@@ -112,7 +112,20 @@ impl Adapters {
         &self,
         gpu: &Gpu,
         cb: vk::CommandBuffer,
-        pool: vk::DescriptorPool,
+        mut pool: vk::DescriptorPool,
+        params: &ImportParams,
+        depth: (EngineImage, &Buffer),
+        normals: Option<(EngineImage, &Buffer)>,
+    ) -> Result<(), GpuError> {
+        self.record_import_from(gpu, cb, &mut pool, params, depth, normals)
+    }
+
+    /// [`Adapters::record_import`] with the descriptor sets from `sets`.
+    pub(crate) fn record_import_from(
+        &self,
+        gpu: &Gpu,
+        cb: vk::CommandBuffer,
+        sets: &mut dyn SetSource,
         params: &ImportParams,
         depth: (EngineImage, &Buffer),
         normals: Option<(EngineImage, &Buffer)>,
@@ -138,9 +151,9 @@ impl Adapters {
         memory_barrier(gpu, cb, S::COMPUTE_SHADER | S::TRANSFER, S::COMPUTE_SHADER);
         let input =
             |image: EngineImage, out| [Descriptor::SampledImage(image.view, image.layout), Descriptor::Storage(out)];
-        self.import_depth.record(gpu, cb, pool, &input(depth.0, depth.1), push, groups)?;
+        self.import_depth.record(gpu, cb, sets, &input(depth.0, depth.1), push, groups)?;
         if let Some((image, out)) = normals {
-            self.import_normals.record(gpu, cb, pool, &input(image, out), push, groups)?;
+            self.import_normals.record(gpu, cb, sets, &input(image, out), push, groups)?;
         }
         compute_barrier(gpu, cb, vk::PipelineStageFlags::COMPUTE_SHADER);
         Ok(())
@@ -153,7 +166,20 @@ impl Adapters {
         &self,
         gpu: &Gpu,
         cb: vk::CommandBuffer,
-        pool: vk::DescriptorPool,
+        mut pool: vk::DescriptorPool,
+        params: &ImportParams,
+        ao: &Buffer,
+        out: AoImage,
+    ) -> Result<(), GpuError> {
+        self.record_export_from(gpu, cb, &mut pool, params, ao, out)
+    }
+
+    /// [`Adapters::record_export`] with the descriptor set from `sets`.
+    pub(crate) fn record_export_from(
+        &self,
+        gpu: &Gpu,
+        cb: vk::CommandBuffer,
+        sets: &mut dyn SetSource,
         params: &ImportParams,
         ao: &Buffer,
         out: AoImage,
@@ -172,7 +198,7 @@ impl Adapters {
         type S = vk::PipelineStageFlags;
         memory_barrier(gpu, cb, S::COMPUTE_SHADER | S::TRANSFER, S::COMPUTE_SHADER);
         let descriptors = [Descriptor::Storage(ao), Descriptor::StorageImage(out.view)];
-        self.exports[k].record(gpu, cb, pool, &descriptors, bytemuck::bytes_of(params), groups)
+        self.exports[k].record(gpu, cb, sets, &descriptors, bytemuck::bytes_of(params), groups)
     }
 
     pub fn destroy(&self, gpu: &Gpu) {

@@ -1,6 +1,6 @@
 //! Compute pipelines and the memory barriers between passes.
 
-use crate::descriptors::Descriptor;
+use crate::descriptors::{Descriptor, SetSource};
 use crate::{Gpu, GpuError};
 use ash::vk;
 
@@ -51,25 +51,24 @@ impl ComputeKernel {
         }
     }
 
-    /// Record a dispatch of `groups` workgroups over `descriptors` (binding order, one set
-    /// allocated from `pool`) with the push constants `push`.
+    /// Record a dispatch of `groups` workgroups over `descriptors` (binding order, the set from
+    /// `sets`) with the push constants `push`.
     pub(crate) fn record(
         &self,
         gpu: &Gpu,
         cb: vk::CommandBuffer,
-        pool: vk::DescriptorPool,
+        sets: &mut dyn SetSource,
         descriptors: &[Descriptor],
         push: &[u8],
         groups: [u32; 3],
     ) -> Result<(), GpuError> {
         let types: Vec<_> = descriptors.iter().map(Descriptor::ty).collect();
         assert_eq!(types, self.types, "descriptor types");
-        let set = gpu.descriptor_set(pool, self.set_layout, descriptors)?;
+        let set = sets.set(gpu, self.set_layout, descriptors)?;
         self.record_set(gpu, cb, set, push, groups);
         Ok(())
     }
 
-    /// Record a dispatch of `groups` workgroups with an already written descriptor set.
     pub(crate) fn record_set(
         &self,
         gpu: &Gpu,

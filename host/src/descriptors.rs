@@ -128,3 +128,113 @@ impl Gpu {
         Ok(set)
     }
 }
+
+/// Where a `record_*` call takes its descriptor sets from.
+pub(crate) trait SetSource {
+    fn set(
+        &mut self,
+        gpu: &Gpu,
+        layout: vk::DescriptorSetLayout,
+        descriptors: &[Descriptor],
+    ) -> Result<vk::DescriptorSet, GpuError>;
+}
+
+/// A fresh set from the caller's pool on every call.
+impl SetSource for vk::DescriptorPool {
+    fn set(
+        &mut self,
+        gpu: &Gpu,
+        layout: vk::DescriptorSetLayout,
+        descriptors: &[Descriptor],
+    ) -> Result<vk::DescriptorSet, GpuError> {
+        gpu.descriptor_set(*self, layout, descriptors)
+    }
+}
+
+/// Descriptor sets kept across frames, one per layout and bound descriptors, each in a pool of
+/// its own; the least recently used beyond `capacity` are evicted (their pools wait in
+/// [`KeptSets::evicted`] for the caller to retire once no frame in flight uses them).
+pub(crate) struct KeptSets {
+    entries: Vec<KeptSet>,
+    capacity: usize,
+    /// The frame being recorded (for least-recently-used eviction).
+    pub(crate) frame: u64,
+    pub(crate) evicted: Vec<vk::DescriptorPool>,
+    /// Sets made so far.
+    pub(crate) made: u64,
+}
+
+struct KeptSet {
+    layout: vk::DescriptorSetLayout,
+    key: Vec<u64>,
+    pool: vk::DescriptorPool,
+    set: vk::DescriptorSet,
+    used: u64,
+}
+
+/// A descriptor as comparable numbers: kind, handle, and the layout of a sampled image.
+fn descriptor_key(d: &Descriptor) -> [u64; 3] {
+    use ash::vk::Handle;
+    match *d {
+        Descriptor::Storage(b) => [0, b.raw.as_raw(), 0],
+        Descriptor::Tlas(t) => [1, t.as_raw(), 0],
+        Descriptor::SampledImage(view, layout) => [2, view.as_raw(), layout.as_raw() as u64],
+        Descriptor::StorageImage(view) => [3, view.as_raw(), 0],
+    }
+}
+
+impl KeptSets {
+    pub(crate) fn new(capacity: usize) -> KeptSets {
+        KeptSets { entries: Vec::new(), capacity, frame: 0, evicted: Vec::new(), made: 0 }
+    }
+
+    /// Evict the sets that bind the object with this raw handle (destroyed: a new object may
+    /// reuse the handle).
+    pub(crate) fn forget(&mut self, raw: u64) {
+        let (stale, kept) = std::mem::take(&mut self.entries).into_iter().partition(|e: &KeptSet| e.key.contains(&raw));
+        self.entries = kept;
+        self.evicted.extend(stale.into_iter().map(|e| e.pool));
+    }
+
+    /// Evict every set.
+    pub(crate) fn clear(&mut self) {
+        self.evicted.extend(std::mem::take(&mut self.entries).into_iter().map(|e| e.pool));
+    }
+
+    /// The pools of every set, kept and evicted (to destroy when the device is idle).
+    pub(crate) fn drain(&mut self) -> Vec<vk::DescriptorPool> {
+        self.clear();
+        std::mem::take(&mut self.evicted)
+    }
+}
+
+impl SetSource for KeptSets {
+    fn set(
+        &mut self,
+        gpu: &Gpu,
+        layout: vk::DescriptorSetLayout,
+        descriptors: &[Descriptor],
+    ) -> Result<vk::DescriptorSet, GpuError> {
+        let key: Vec<u64> = descriptors.iter().flat_map(descriptor_key).collect();
+        if let Some(e) = self.entries.iter_mut().find(|e| e.layout == layout && e.key == key) {
+            e.used = self.frame;
+            return Ok(e.set);
+        }
+        let types: Vec<_> = descriptors.iter().map(Descriptor::ty).collect();
+        let pool = gpu.descriptor_pool(1, &types)?;
+        let set = match gpu.descriptor_set(pool, layout, descriptors) {
+            Ok(set) => set,
+            Err(e) => {
+                unsafe { gpu.device.destroy_descriptor_pool(pool, None) };
+                return Err(e);
+            }
+        };
+        if self.entries.len() >= self.capacity {
+            let oldest = (0..self.entries.len()).min_by_key(|&i| self.entries[i].used).expect("not empty");
+            self.evicted.push(self.entries.remove(oldest).pool);
+        }
+        self.entries.push(KeptSet { layout, key, pool, set, used: self.frame });
+        self.made += 1;
+        Ok(set)
+    }
+}

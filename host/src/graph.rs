@@ -18,8 +18,8 @@
 
 use crate::adapters::{Adapters, AoImage, EngineImage};
 use crate::compute::{ComputeKernel, memory_barrier};
-use crate::descriptors::Descriptor;
 use crate::descriptors::storage_bindings;
+use crate::descriptors::{Descriptor, KeptSets};
 use crate::gbuffer::RasterSdPass;
 use crate::manifest::{Manifest, ModuleManifest};
 use crate::raytracing::{RtPipeline, SceneAccel};
@@ -45,6 +45,10 @@ pub const FRAMES_IN_FLIGHT: u64 = 3;
 pub struct EngineFrame<'a> {
     pub depth: EngineImage,
     pub normals: Option<EngineImage>,
+    /// The depth-peeled second layer (spec svao-raysd §11), for the dual-depth techniques: the
+    /// nearest surface at least the technique's peel separation (view depth) behind `depth`,
+    /// in the same format and convention, cleared (background) where there is none.
+    pub second_depth: Option<EngineImage>,
     pub output: AoImage,
     pub import: ImportParams,
     /// The scene's acceleration structure, for graphs that trace rays.
@@ -54,6 +58,7 @@ pub struct EngineFrame<'a> {
 /// Internal G-buffer buffers an engine frame is imported into.
 const ENGINE_DEPTH: &str = "engine_linear_depth";
 const ENGINE_NORMALS: &str = "engine_view_normals";
+const ENGINE_SECOND_DEPTH: &str = "engine_second_depth";
 
 /// What a frame reads besides the graph's own resources: the G-buffer in aokit's internal layout
 /// (full target, linear `f32` depth, encoded `u32` normals) and, for some graphs, the peeled
@@ -90,12 +95,29 @@ struct DeviceResource {
     len: usize,
 }
 
+/// What a graph's descriptor sets bind: each pass's entry point and `(slot, buffer)` pairs, then
+/// the scene's identity and the raster vertex buffer where given.
+#[derive(Clone, PartialEq)]
+struct SetKey {
+    entries: Vec<&'static str>,
+    buffers: Vec<(u32, vk::Buffer)>,
+}
+
 /// Descriptor sets of one graph with one set of bound buffers.
 struct BoundSets {
-    key: Vec<vk::Buffer>,
+    key: SetKey,
     pool: vk::DescriptorPool,
     sets: Vec<vk::DescriptorSet>,
+    /// The frame that last recorded with them (the least recently used are dropped first).
+    used: u64,
 }
+
+/// Descriptor sets kept for this many graphs/bindings (e.g. techniques alternating through one
+/// context, or an engine's double-buffered images) before the least recently used are retired.
+const KEPT_SETS: usize = 8;
+/// Adapter descriptor sets kept (import depth, import normals and export per set of engine
+/// images: room for a few double- or triple-buffered images).
+const KEPT_ADAPTER_SETS: usize = 16;
 
 /// Pass timings of the last recorded frame.
 struct Timing {
@@ -111,11 +133,15 @@ pub struct AoContext<G: Borrow<Gpu> = Gpu> {
     pipelines: HashMap<&'static str, Pipeline>,
     /// Boxed: a frame's inputs may point into an entry while others are inserted.
     resources: HashMap<&'static str, Box<DeviceResource>>,
-    bound: Option<BoundSets>,
+    /// Descriptor sets per graph and bindings, most recently used last.
+    bound: Vec<BoundSets>,
+    /// Descriptor pools made for graphs so far.
+    bound_made: u64,
     timing: Option<Timing>,
-    /// The adapter pipelines and this frame's descriptor pool for them, made on the first engine
-    /// frame.
+    /// The adapter pipelines, made on the first engine frame, and their descriptor sets, kept
+    /// per bound images and buffers.
     adapters: Option<Adapters>,
+    adapter_sets: KeptSets,
     /// `(frame recorded, buffer or pool)` waiting to be freed.
     retired: Vec<(u64, Retired)>,
     frame: u64,
@@ -136,9 +162,11 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             manifest: Manifest::committed(),
             pipelines: HashMap::new(),
             resources: HashMap::new(),
-            bound: None,
+            bound: Vec::new(),
+            bound_made: 0,
             timing: None,
             adapters: None,
+            adapter_sets: KeptSets::new(KEPT_ADAPTER_SETS),
             retired: Vec::new(),
             frame: 0,
         }
@@ -240,6 +268,17 @@ impl<G: Borrow<Gpu>> AoContext<G> {
                 | vk::BufferUsageFlags::TRANSFER_SRC;
             let buffer = self.gpu().create_buffer(4 * r.len as u64, usage, MemoryLocation::GpuOnly)?;
             if let Some(old) = self.resources.insert(r.name, Box::new(DeviceResource { buffer, len: r.len })) {
+                // Sets that bind the old buffer go with it (its handle may be reused).
+                let (stale, kept) = std::mem::take(&mut self.bound)
+                    .into_iter()
+                    .partition(|b| b.key.buffers.iter().any(|(_, raw)| *raw == old.buffer.raw));
+                self.bound = kept;
+                for b in stale {
+                    self.retired.push((self.frame, Retired::Pool(b.pool)));
+                }
+                self.adapter_sets.forget(old.buffer.raw.as_raw());
+                let evicted = std::mem::take(&mut self.adapter_sets.evicted);
+                self.retired.extend(evicted.into_iter().map(|pool| (self.frame, Retired::Pool(pool))));
                 self.retired.push((self.frame, Retired::Buffer(old.buffer)));
             }
             made.push(r.name);
@@ -271,8 +310,8 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             self.ensure_pipeline(pass)?;
         }
         let made = self.ensure_resources(graph)?;
-        let buffers = self.bound_buffers(graph, inputs)?;
-        self.ensure_sets(graph, &buffers, inputs)?;
+        let key = self.set_key(graph, inputs)?;
+        let bound = self.ensure_sets(graph, key, inputs)?;
         self.ensure_timing(graph)?;
         let stages = self.shader_stages();
         let d = &self.gpu().device;
@@ -309,7 +348,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         let mut written: Vec<&str> = Vec::new();
         let mut read: Vec<&str> = Vec::new();
         let mut stamp = 0;
-        let sets = &self.bound.as_ref().expect("made above").sets;
+        let sets = &self.bound[bound].sets;
         for (i, pass) in graph.passes.iter().enumerate() {
             let hazard = pass
                 .bindings
@@ -371,11 +410,19 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         graph: &Graph,
         frame: &EngineFrame,
     ) -> Result<(), GpuError> {
-        if graph.resources.iter().any(|r| [ENGINE_DEPTH, ENGINE_NORMALS].contains(&r.name)) {
-            return Err(GpuError::Input(format!(
-                "the graph declares a resource named {ENGINE_DEPTH} or {ENGINE_NORMALS}"
-            )));
+        let reserved = [ENGINE_DEPTH, ENGINE_NORMALS, ENGINE_SECOND_DEPTH];
+        if graph.resources.iter().any(|r| reserved.contains(&r.name)) {
+            return Err(GpuError::Input(format!("the graph declares a resource named one of {reserved:?}")));
         }
+        let second = match (graph.inputs().contains(&inputs::SECOND_DEPTH), frame.second_depth) {
+            (true, None) => {
+                return Err(GpuError::Input(
+                    "the graph reads a depth-peeled second layer (a dual-depth technique): give EngineFrame::second_depth"
+                        .into(),
+                ));
+            }
+            (reads, image) => image.filter(|_| reads),
+        };
         if frame.import.view != graph.view {
             return Err(GpuError::Input("EngineFrame::import.view differs from the graph's camera view".into()));
         }
@@ -384,7 +431,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         }
         let size = frame.import.view.size();
         let pixels = (size.x * size.y) as usize;
-        let internal = [ENGINE_DEPTH, ENGINE_NORMALS].map(|name| aokit_shaders::graph::Resource {
+        let internal = [ENGINE_DEPTH, ENGINE_NORMALS, ENGINE_SECOND_DEPTH].map(|name| aokit_shaders::graph::Resource {
             name,
             elem: aokit_shaders::graph::Elem::U32,
             len: pixels,
@@ -392,17 +439,26 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             lifetime: Lifetime::PerFrame,
             doc: "",
         });
-        let made = self.ensure_named(&internal)?;
-        if !made.is_empty() {
-            // New input buffers: the graph's descriptor sets must be written anew.
-            self.invalidate_bindings();
-        }
+        self.ensure_named(&internal[..if second.is_some() { 3 } else { 2 }])?;
+        // The frame `record` is about to count (for the kept sets' least-recently-used order).
+        self.adapter_sets.frame = self.frame + 1;
         let adapters = self.adapters.as_ref().expect("made above");
-        let pool = adapters.create_descriptor_pool(self.gpu(), 2)?;
-        self.retired.push((self.frame + 1, Retired::Pool(pool)));
         let (depth, normals) = (&self.resources[ENGINE_DEPTH].buffer, &self.resources[ENGINE_NORMALS].buffer);
         let normal_input = frame.normals.map(|image| (image, normals));
-        adapters.record_import(self.gpu(), cmd, pool, &frame.import, (frame.depth, depth), normal_input)?;
+        let gpu = self.owner.borrow();
+        adapters.record_import_from(
+            gpu,
+            cmd,
+            &mut self.adapter_sets,
+            &frame.import,
+            (frame.depth, depth),
+            normal_input,
+        )?;
+        if let Some(image) = second {
+            let buffer = &self.resources[ENGINE_SECOND_DEPTH].buffer;
+            let sets = &mut self.adapter_sets;
+            adapters.record_import_from(gpu, cmd, sets, &frame.import, (image, buffer), None)?;
+        }
         let mut full = graph.clone();
         if frame.normals.is_none() {
             // XeGTAO's pass 0 reads only the view (spec gtao-raymarch-hybrid §2.4).
@@ -424,29 +480,44 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         // Diagnostic copies are for reports, not engine frames.
         full.snapshots.clear();
         let (depth, normals) = (&self.resources[ENGINE_DEPTH].buffer, &self.resources[ENGINE_NORMALS].buffer);
+        let second_depth = second.map(|_| &self.resources[ENGINE_SECOND_DEPTH].buffer as *const Buffer);
         // SAFETY of the aliasing below: the resources are boxed (inserting others does not move
-        // them) and `record` does not replace these two: the depth is not in `full.resources`,
+        // them) and `record` does not replace these: the depths are not in `full.resources`,
         // the normals are, at the size made above, so `ensure_resources` keeps them.
         let (depth, normals): (*const Buffer, *const Buffer) = (depth, normals);
         let inputs = GpuInputs {
             depth: unsafe { &*depth },
             normals: unsafe { &*normals },
-            second_depth: None,
+            second_depth: second_depth.map(|b| unsafe { &*b }),
             scene: frame.scene,
             raster: None,
         };
         self.record(cmd, &full, &inputs)?;
         let adapters = self.adapters.as_ref().expect("made above");
         let ao = &self.resources[graph.output].buffer;
-        adapters.record_export(self.gpu(), cmd, pool, &frame.import, ao, frame.output)
+        let gpu = self.owner.borrow();
+        adapters.record_export_from(gpu, cmd, &mut self.adapter_sets, &frame.import, ao, frame.output)?;
+        let evicted = std::mem::take(&mut self.adapter_sets.evicted);
+        self.retired.extend(evicted.into_iter().map(|pool| (self.frame, Retired::Pool(pool))));
+        Ok(())
     }
 
     /// Forget the descriptor sets, so the next frame writes new ones: call it after destroying an
-    /// input buffer that an earlier frame bound (a new buffer may reuse its handle).
+    /// input buffer, engine image view or TLAS that an earlier frame bound (a new object may
+    /// reuse its handle).
     pub fn invalidate_bindings(&mut self) {
-        if let Some(old) = self.bound.take() {
+        for old in std::mem::take(&mut self.bound) {
             self.retired.push((self.frame, Retired::Pool(old.pool)));
         }
+        self.adapter_sets.clear();
+        let evicted = std::mem::take(&mut self.adapter_sets.evicted);
+        self.retired.extend(evicted.into_iter().map(|pool| (self.frame, Retired::Pool(pool))));
+    }
+
+    /// Descriptor pools this context has made so far (graphs' and adapters'): constant over frames
+    /// that re-record graphs and images it has seen recently.
+    pub fn descriptor_pools_made(&self) -> u64 {
+        self.bound_made + self.adapter_sets.made
     }
 
     /// `(label, ms)` of the last recorded frame, once the device finished it (waits for its
@@ -467,24 +538,25 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         waited
     }
 
-    /// Each binding's buffer, pass after pass (the key of the descriptor sets).
-    fn bound_buffers(&self, graph: &Graph, inputs: &GpuInputs) -> Result<Vec<vk::Buffer>, GpuError> {
-        let mut out = Vec::new();
+    /// What the graph's descriptor sets bind for these inputs.
+    fn set_key(&self, graph: &Graph, inputs: &GpuInputs) -> Result<SetKey, GpuError> {
+        let mut buffers = Vec::new();
         for pass in &graph.passes {
             for b in &pass.bindings {
-                out.push(self.input_or_resource(b.resource, inputs)?.map_or(vk::Buffer::null(), |b| b.raw));
+                let buffer = self.input_or_resource(b.resource, inputs)?.map_or(vk::Buffer::null(), |b| b.raw);
+                buffers.push((b.slot, buffer));
             }
         }
         if let Some(scene) = inputs.scene {
-            out.push(vk::Buffer::from_raw(scene.identity()));
+            buffers.push((u32::MAX, vk::Buffer::from_raw(scene.identity())));
         }
         if let Some(raster) = inputs.raster {
-            out.push(raster.vertices.raw);
+            buffers.push((u32::MAX, raster.vertices.raw));
         } else if graph.inputs().contains(&inputs::SCENE_VERTICES) {
             // Checked before anything is recorded into the caller's command buffer.
             return Err(GpuError::Input("a raster pass needs the scene's vertices (GpuInputs::raster)".into()));
         }
-        Ok(out)
+        Ok(SetKey { entries: graph.passes.iter().map(|p| p.entry).collect(), buffers })
     }
 
     /// The buffer bound for `name`; `None` for the TLAS.
@@ -509,10 +581,12 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         }))
     }
 
-    /// Descriptor sets for the graph, re-made when a bound buffer changed.
-    fn ensure_sets(&mut self, graph: &Graph, key: &[vk::Buffer], inputs: &GpuInputs) -> Result<(), GpuError> {
-        if self.bound.as_ref().is_some_and(|b| b.key == key) {
-            return Ok(());
+    /// The index in `bound` of descriptor sets for the graph with these bindings: kept ones, or
+    /// new ones (retiring the least recently used beyond [`KEPT_SETS`]).
+    fn ensure_sets(&mut self, graph: &Graph, key: SetKey, inputs: &GpuInputs) -> Result<usize, GpuError> {
+        if let Some(i) = self.bound.iter().position(|b| b.key == key) {
+            self.bound[i].used = self.frame;
+            return Ok(i);
         }
         let mut counts: HashMap<vk::DescriptorType, u32> = HashMap::new();
         for pass in &graph.passes {
@@ -548,10 +622,14 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             }
             sets.push(self.gpu().descriptor_set(pool, layout, &descriptors)?);
         }
-        if let Some(old) = self.bound.replace(BoundSets { key: key.to_vec(), pool, sets }) {
+        if self.bound.len() >= KEPT_SETS {
+            let oldest = (0..self.bound.len()).min_by_key(|&i| self.bound[i].used).expect("not empty");
+            let old = self.bound.remove(oldest);
             self.retired.push((self.frame, Retired::Pool(old.pool)));
         }
-        Ok(())
+        self.bound.push(BoundSets { key, pool, sets, used: self.frame });
+        self.bound_made += 1;
+        Ok(self.bound.len() - 1)
     }
 
     /// A timestamp query pool with room for the graph's labels.
@@ -602,10 +680,13 @@ impl<G: Borrow<Gpu>> Drop for AoContext<G> {
         if let Some(a) = self.adapters.take() {
             a.destroy(self.gpu());
         }
+        for pool in self.adapter_sets.drain() {
+            self.free(Retired::Pool(pool));
+        }
         for (_, r) in std::mem::take(&mut self.retired) {
             self.free(r);
         }
-        if let Some(b) = self.bound.take() {
+        for b in std::mem::take(&mut self.bound) {
             self.free(Retired::Pool(b.pool));
         }
         if let Some(t) = self.timing.take() {
