@@ -188,6 +188,12 @@ fn flags_come_from_the_rows_and_apply_where_they_are_read() {
     assert_eq!(t.describe()["jitter"], "none");
     let t = parse_cli(&["--uniform", "--spp", "16"]).unwrap().technique("groundtruth").unwrap();
     assert_eq!((t.describe()["sampling"].as_str(), t.describe()["spp"].as_u64()), (Some("uniform"), Some(16)));
+    // XeGTAO: a preset, then slices/steps on top of it make a custom quality.
+    let t = parse_cli(&["--gtao-slices", "4", "--preset", "low"]).unwrap().technique("gtao").unwrap();
+    let d = t.describe();
+    assert_eq!((d["preset"].as_str(), d["slices"].as_u64(), d["steps"].as_u64()), (Some("custom"), Some(4), Some(2)));
+    let t = parse_cli(&["--gtao-slices", "9", "--gtao-steps", "3"]).unwrap().technique("gtao").unwrap();
+    assert_eq!(t.describe()["preset"], "ultra");
     // The hybrid's variant is applied before its world weight, whatever the order typed.
     let t = parse_cli(&["--world-weight", "0.25", "--hybrid-variant", "world"]).unwrap().technique("hybrid").unwrap();
     assert_eq!((t.describe()["variant"].as_str(), t.describe()["world_weight"].as_f64()), (Some("world"), Some(0.25)));

@@ -6,7 +6,8 @@ use super::{GtaoParams, MIP_LEVELS, mip_offset, mip_size};
 use crate::graph::{Access, Elem, FrameDesc, Graph, Init, Lifetime, Pass, Resource, inputs, target_f32, target_u32};
 use crate::technique::{Declaration, Setting, Settings, rays_counted, single_layer};
 
-/// XeGTAO quality presets (spec gtao-raymarch-hybrid §2.2): slices × steps per side.
+/// XeGTAO quality presets (spec gtao-raymarch-hybrid §2.2): slices × steps per side; any other
+/// pair is a custom quality.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum Quality {
     Low,
@@ -16,6 +17,8 @@ pub enum Quality {
 }
 
 impl Quality {
+    pub const ALL: [Quality; 4] = [Quality::Low, Quality::Medium, Quality::High, Quality::Ultra];
+
     /// `(slices, steps per side)`.
     pub fn slices_steps(self) -> (u32, u32) {
         match self {
@@ -25,14 +28,25 @@ impl Quality {
             Quality::Ultra => (9, 3),
         }
     }
+
+    /// The preset with these slices and steps, if one has them.
+    pub fn of(slices: u32, steps: u32) -> Option<Quality> {
+        Quality::ALL.into_iter().find(|q| q.slices_steps() == (slices, steps))
+    }
 }
+
+/// Upper bounds of a custom quality (the spec's reference settings use 32 × 24, spec §2.2).
+pub const MAX_SLICES: u32 = 64;
+pub const MAX_STEPS: u32 = 32;
 
 /// XeGTAO settings (spec §2.1 defaults and UI ranges; the effect radius is the frame's AO
 /// radius).
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct GtaoSettings {
-    /// Slices × steps [High].
-    pub quality: Quality,
+    /// Slices per pixel [3, High]; see [`Quality`] for the presets.
+    pub slices: u32,
+    /// Steps per slice side [3, High].
+    pub steps: u32,
     /// Denoise passes 0 (off) … 3 (soft) [1].
     pub denoise_passes: u32,
     /// [1.457], range 0.3–3.
@@ -54,7 +68,8 @@ pub struct GtaoSettings {
 impl Default for GtaoSettings {
     fn default() -> Self {
         GtaoSettings {
-            quality: Quality::High,
+            slices: 3,
+            steps: 3,
             denoise_passes: 1,
             radius_multiplier: 1.457,
             falloff_range: 0.615,
@@ -72,11 +87,22 @@ impl Settings for GtaoSettings {
     const ROWS: &'static [Setting<Self>] = &[
         Setting::<Self>::choice(
             "preset",
-            &["low", "medium", "high", "ultra"],
-            |s| s.quality as usize,
-            |s, i| s.quality = [Quality::Low, Quality::Medium, Quality::High, Quality::Ultra][i],
+            &["low", "medium", "high", "ultra", "custom"],
+            |s| Quality::of(s.slices, s.steps).map_or(4, |q| q as usize),
+            |s, i| {
+                // `custom` keeps the slices and steps set (by --gtao-slices/--gtao-steps).
+                if let Some(q) = Quality::ALL.get(i) {
+                    (s.slices, s.steps) = q.slices_steps();
+                }
+            },
         )
-        .help("XeGTAO quality preset: slices × steps per side 1×2, 2×2, 3×3, 9×3 (spec §2.2)"),
+        .help("XeGTAO quality preset: slices × steps per side 1×2, 2×2, 3×3, 9×3, or custom (spec §2.2)"),
+        Setting::<Self>::count("slices", 1, MAX_SLICES, |s| &mut s.slices)
+            .flag("gtao-slices")
+            .help("XeGTAO slices per pixel (set after the preset: a pair no preset has is custom)"),
+        Setting::<Self>::count("steps", 1, MAX_STEPS, |s| &mut s.steps)
+            .flag("gtao-steps")
+            .help("XeGTAO steps per slice side (set after the preset)"),
         Setting::<Self>::count("denoise", 0, 3, |s| &mut s.denoise_passes)
             .flag("gtao-denoise")
             .help("XeGTAO denoise passes (0 off, 1 sharp, 2 medium, 3 soft; spec §2.7)"),
@@ -110,6 +136,8 @@ pub static GTAO: Declaration<GtaoSettings> = Declaration {
     summary: "XeGTAO: depth MIPs, horizon search over slices, denoiser (spec gtao-raymarch-hybrid §2)",
     keys: &[
         "preset",
+        "slices",
+        "steps",
         "denoise",
         "radius-multiplier",
         "falloff-range",
@@ -128,7 +156,7 @@ pub static GTAO: Declaration<GtaoSettings> = Declaration {
 impl GtaoSettings {
     /// The kernels' constants (XeGTAO's `GTAOUpdateConstants`) for a frame.
     pub fn params(&self, frame: &FrameDesc) -> GtaoParams {
-        let (slices, steps) = self.quality.slices_steps();
+        let (slices, steps) = (self.slices, self.steps);
         GtaoParams {
             view: frame.camera.view,
             radius: frame.radius,
