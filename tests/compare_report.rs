@@ -19,8 +19,7 @@ fn report(dir: &Path) -> (CompareReport, aokit::frame::Frame) {
     let cpu = CpuRenderer::new(&scene);
     let (g, gbuffer_ms) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
     let none = &aokit_cpu::no_progress;
-    let reference =
-        Technique::new(&RAYSVAO, SdOptions { cutoff: 6.0, dual: false, peel_separation: 0.01, ..Default::default() });
+    let reference = Technique::new(&RAYSVAO, SdOptions::default());
     let reference_run = cpu.run(&frame, &g, &reference, none);
     let runs: Vec<_> = [Technique::new(&VAO, SdOptions::default()), Technique::new(&RAYSD, SdOptions::default())]
         .into_iter()

@@ -125,6 +125,15 @@ impl Engine {
     }
 }
 
+/// A host-visible, coherent memory type `req` allows.
+fn host_memory_type(engine: &Engine, req: &vk::MemoryRequirements) -> u32 {
+    let props = unsafe { engine.instance.get_physical_device_memory_properties(engine.physical_device) };
+    let want = vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT;
+    (0..props.memory_type_count)
+        .find(|&i| req.memory_type_bits & (1 << i) != 0 && props.memory_types[i as usize].property_flags.contains(want))
+        .expect("host-visible coherent memory")
+}
+
 /// A host-visible, coherent buffer of the engine's own (staging and readback), plain Vulkan
 /// memory outside aokit's allocator.
 struct HostBuffer {
@@ -139,13 +148,7 @@ impl HostBuffer {
         let info = vk::BufferCreateInfo::default().size(size).usage(usage).sharing_mode(vk::SharingMode::EXCLUSIVE);
         let buffer = unsafe { d.create_buffer(&info, None) }.unwrap();
         let req = unsafe { d.get_buffer_memory_requirements(buffer) };
-        let props = unsafe { engine.instance.get_physical_device_memory_properties(engine.physical_device) };
-        let want = vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT;
-        let type_index = (0..props.memory_type_count)
-            .find(|&i| {
-                req.memory_type_bits & (1 << i) != 0 && props.memory_types[i as usize].property_flags.contains(want)
-            })
-            .expect("host-visible coherent memory");
+        let type_index = host_memory_type(engine, &req);
         let alloc = vk::MemoryAllocateInfo::default().allocation_size(req.size).memory_type_index(type_index);
         let memory = unsafe { d.allocate_memory(&alloc, None) }.unwrap();
         unsafe { d.bind_buffer_memory(buffer, memory, 0) }.unwrap();
@@ -744,13 +747,7 @@ impl AddressBuffer {
         let info = vk::BufferCreateInfo::default().size(size).usage(usage).sharing_mode(vk::SharingMode::EXCLUSIVE);
         let buffer = unsafe { d.create_buffer(&info, None) }.unwrap();
         let req = unsafe { d.get_buffer_memory_requirements(buffer) };
-        let props = unsafe { engine.instance.get_physical_device_memory_properties(engine.physical_device) };
-        let want = vk::MemoryPropertyFlags::HOST_VISIBLE | vk::MemoryPropertyFlags::HOST_COHERENT;
-        let type_index = (0..props.memory_type_count)
-            .find(|&i| {
-                req.memory_type_bits & (1 << i) != 0 && props.memory_types[i as usize].property_flags.contains(want)
-            })
-            .expect("host-visible coherent memory");
+        let type_index = host_memory_type(engine, &req);
         let mut flags = vk::MemoryAllocateFlagsInfo::default().flags(vk::MemoryAllocateFlags::DEVICE_ADDRESS);
         let alloc = vk::MemoryAllocateInfo::default()
             .allocation_size(req.size)

@@ -312,17 +312,7 @@ fn raysd_error_is_a_fraction_of_vao_error_and_falls_with_layers() {
     let renderer = CpuRenderer::new(&scene);
     let (g, _) = renderer.gbuffer(&frame, &aokit_cpu::no_progress);
     let none = &aokit_cpu::no_progress;
-    let reference = renderer
-        .run(
-            &frame,
-            &g,
-            &Technique::new(
-                &RAYSVAO,
-                SdOptions { cutoff: 6.0, dual: false, peel_separation: 0.01, ..Default::default() },
-            ),
-            none,
-        )
-        .ao_final;
+    let reference = renderer.run(&frame, &g, &Technique::new(&RAYSVAO, SdOptions::default()), none).ao_final;
     let vao = renderer.run(&frame, &g, &Technique::new(&VAO, SdOptions::default()), none).ao_final;
     let mse_vao = mse(&vao, &reference);
     let mut by_layers = Vec::new();

@@ -120,8 +120,7 @@ fn raysvao_vulkan_agrees_with_cpu_sim() {
     let (scene, frame) = common::builtin_frame("sponza", 320, 180, 32);
     let cpu = CpuRenderer::new(&scene);
     let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
-    let technique =
-        Technique::new(&RAYSVAO, SdOptions { cutoff: 6.0, dual: false, peel_separation: 0.01, ..Default::default() });
+    let technique = Technique::new(&RAYSVAO, SdOptions::default());
     let c = cpu.run(&frame, &g, &technique, &aokit_cpu::no_progress);
     let v = vk.run(&scene, &frame, &g, &technique).expect("Vulkan Ray-SVAO");
     common::assert_validation_clean(&vk);

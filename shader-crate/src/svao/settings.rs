@@ -121,52 +121,51 @@ fn sd_res_index(divisor: u32) -> usize {
 }
 
 /// The second layer a dual-depth run reads.
-pub fn dual_layer(s: &SvaoSettings) -> Option<f32> {
+fn dual_layer(s: &SvaoSettings) -> Option<f32> {
     s.dual.then_some(s.peel_separation)
 }
 
-/// The settings every SD-map technique reads.
-const SD_KEYS: &[&str] = &[
-    "sd-res",
-    "sd-layers",
-    "max-count",
-    "cutoff",
-    "interval",
-    "jitter",
-    "sd-guard",
-    "primary",
-    "peel-separation",
-    "kernel",
-    "sd-source",
-];
+/// A declaration of the stenciled family: every variant reads the dual-depth layer when its
+/// settings say so and counts its rays from its buffers.
+pub const fn stenciled(
+    name: &'static str,
+    summary: &'static str,
+    keys: &'static [&'static str],
+    defaults: fn() -> SvaoSettings,
+    graph: fn(&SvaoSettings, &FrameDesc) -> Result<Graph, String>,
+) -> Declaration<SvaoSettings> {
+    Declaration { name, summary, keys, defaults, graph, second_layer: dual_layer, rays: rays_counted }
+}
+
+/// Pass 1 alone: every pixel final (spec svao-raysd §5).
+pub fn unrefined(s: &SvaoSettings, frame: &FrameDesc) -> Result<Graph, String> {
+    s.graph(frame, Secondary::Disabled)
+}
+
+/// Refined from a stochastic depth map, ray-traced or raster (spec svao-raysd §7–§9).
+fn refined_by_sd_map(s: &SvaoSettings, frame: &FrameDesc) -> Result<Graph, String> {
+    s.graph(frame, Secondary::StochasticDepth)
+}
+
+/// Refined by one ray per flagged sample (spec svao-raysd §10).
+fn refined_by_rays(s: &SvaoSettings, frame: &FrameDesc) -> Result<Graph, String> {
+    s.graph(frame, Secondary::Raytraced)
+}
 
 /// VAO's pass 1 alone with the HBAO+ kernel, on single or dual depth (spec svao-raysd §4.5, §11).
-pub static HBAO: Declaration<SvaoSettings> = Declaration {
-    name: "hbao",
-    summary: "HBAO+ kernel on single or dual depth, no refinement (spec svao-raysd §4.5, §11)",
-    keys: &["primary", "peel-separation"],
-    defaults: || SvaoSettings { hbao: true, ..Default::default() },
-    graph: |s, frame| s.graph(frame, Secondary::Disabled),
-    second_layer: dual_layer,
-    rays: rays_counted,
-};
+pub static HBAO: Declaration<SvaoSettings> = stenciled(
+    "hbao",
+    "HBAO+ kernel on single or dual depth, no refinement (spec svao-raysd §4.5, §11)",
+    &["primary", "peel-separation"],
+    || SvaoSettings { hbao: true, ..Default::default() },
+    unrefined,
+);
 
 /// Stenciled VAO refined from the ray-traced stochastic depth map (spec svao-raysd §3, §5, §7, §9).
-pub static RAYSD: Declaration<SvaoSettings> = Declaration {
-    name: "raysd",
-    summary: "stenciled VAO refined from a ray-traced stochastic depth map (spec svao-raysd §3, §5, §7, §9)",
-    keys: SD_KEYS,
-    defaults: SvaoSettings::default,
-    graph: |s, frame| s.graph(frame, Secondary::StochasticDepth),
-    second_layer: dual_layer,
-    rays: rays_counted,
-};
-
-/// Ray-SD with the HBAO+ kernel in both AO passes (spec svao-raysd §4.5).
-pub static HBAO_SD: Declaration<SvaoSettings> = Declaration {
-    name: "hbao-sd",
-    summary: "Ray-SD with the HBAO+ kernel (spec svao-raysd §4.5, §9)",
-    keys: &[
+pub static RAYSD: Declaration<SvaoSettings> = stenciled(
+    "raysd",
+    "stenciled VAO refined from a ray-traced stochastic depth map (spec svao-raysd §3, §5, §7, §9)",
+    &[
         "sd-res",
         "sd-layers",
         "max-count",
@@ -176,35 +175,40 @@ pub static HBAO_SD: Declaration<SvaoSettings> = Declaration {
         "sd-guard",
         "primary",
         "peel-separation",
+        "kernel",
+        "sd-source",
     ],
-    defaults: || SvaoSettings { hbao: true, ..Default::default() },
-    graph: |s, frame| s.graph(frame, Secondary::StochasticDepth),
-    second_layer: dual_layer,
-    rays: rays_counted,
-};
+    SvaoSettings::default,
+    refined_by_sd_map,
+);
+
+/// Ray-SD with the HBAO+ kernel in both AO passes (spec svao-raysd §4.5).
+pub static HBAO_SD: Declaration<SvaoSettings> = stenciled(
+    "hbao-sd",
+    "Ray-SD with the HBAO+ kernel (spec svao-raysd §4.5, §9)",
+    &["sd-res", "sd-layers", "max-count", "cutoff", "interval", "jitter", "sd-guard", "primary", "peel-separation"],
+    || SvaoSettings { hbao: true, ..Default::default() },
+    refined_by_sd_map,
+);
 
 /// Stenciled VAO refined from the raster coverage-mask SD map (spec svao-raysd §8; no SD guard
 /// band, no jitter).
-pub static SDSVAO: Declaration<SvaoSettings> = Declaration {
-    name: "sdsvao",
-    summary: "stenciled VAO refined from the raster coverage-mask SD map (spec svao-raysd §8)",
-    keys: &["sd-res", "sd-layers", "max-count", "cutoff", "interval", "primary", "peel-separation", "kernel"],
-    defaults: || SvaoSettings { raster: true, ..Default::default() },
-    graph: |s, frame| s.graph(frame, Secondary::StochasticDepth),
-    second_layer: dual_layer,
-    rays: rays_counted,
-};
+pub static SDSVAO: Declaration<SvaoSettings> = stenciled(
+    "sdsvao",
+    "stenciled VAO refined from the raster coverage-mask SD map (spec svao-raysd §8)",
+    &["sd-res", "sd-layers", "max-count", "cutoff", "interval", "primary", "peel-separation", "kernel"],
+    || SvaoSettings { raster: true, ..Default::default() },
+    refined_by_sd_map,
+);
 
 /// Stenciled VAO refined by one ray per flagged sample (spec svao-raysd §10), the Ray-SD reference.
-pub static RAYSVAO: Declaration<SvaoSettings> = Declaration {
-    name: "raysvao",
-    summary: "stenciled VAO refined by one ray per flagged sample, the Ray-SD reference (spec svao-raysd §10)",
-    keys: &["cutoff", "primary", "peel-separation"],
-    defaults: SvaoSettings::default,
-    graph: |s, frame| s.graph(frame, Secondary::Raytraced),
-    second_layer: dual_layer,
-    rays: rays_counted,
-};
+pub static RAYSVAO: Declaration<SvaoSettings> = stenciled(
+    "raysvao",
+    "stenciled VAO refined by one ray per flagged sample, the Ray-SD reference (spec svao-raysd §10)",
+    &["cutoff", "primary", "peel-separation"],
+    SvaoSettings::default,
+    refined_by_rays,
+);
 
 impl SvaoSettings {
     /// The SVAO record (the kernels' constants) for a secondary source: Ray-SD, Ray-SVAO (no

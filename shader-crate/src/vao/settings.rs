@@ -4,24 +4,18 @@
 use super::VaoParams;
 use crate::blur::graph::blur_passes;
 use crate::graph::{Access, FrameDesc, Graph, Pass, inputs, target_f32};
-use crate::svao::Secondary;
-use crate::svao::settings::{SvaoSettings, dual_layer};
-use crate::technique::{Declaration, rays_counted};
+use crate::svao::settings::{SvaoSettings, stenciled, unrefined};
+use crate::technique::Declaration;
 
 /// Plain VAO → blur; on dual depth or with the HBAO+ kernel, the stenciled pipeline's pass 1
 /// alone (spec svao-raysd §4.5, §11).
-pub static VAO: Declaration<SvaoSettings> = Declaration {
-    name: "vao",
-    summary: "Volumetric AO on the depth buffer, or on dual depth (spec svao-raysd §4–§5, §11)",
-    keys: &["primary", "peel-separation", "kernel"],
-    defaults: SvaoSettings::default,
-    graph: |s, frame| match s.dual || s.hbao {
-        false => Ok(graph(frame)),
-        true => s.graph(frame, Secondary::Disabled),
-    },
-    second_layer: dual_layer,
-    rays: rays_counted,
-};
+pub static VAO: Declaration<SvaoSettings> = stenciled(
+    "vao",
+    "Volumetric AO on the depth buffer, or on dual depth (spec svao-raysd §4–§5, §11)",
+    &["primary", "peel-separation", "kernel"],
+    SvaoSettings::default,
+    |s, frame| if s.dual || s.hbao { unrefined(s, frame) } else { Ok(graph(frame)) },
+);
 
 /// Screen-space clamp of the sampling disk in pixels (spec svao-raysd §2 default).
 pub const MAX_SCREEN_RADIUS: f32 = 512.0;
