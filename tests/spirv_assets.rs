@@ -33,7 +33,12 @@ fn manifest_matches_naga_reflection_of_every_module() {
         let embedded = modules::ALL.iter().find(|e| e.0 == m.entry_point).unwrap().1;
         assert_eq!(bytes, embedded, "{} embedded == on disk", m.file);
         let reflected = reflect::reflect_any(&m.file, &bytes).unwrap_or_else(|e| panic!("{}: {e}", m.file));
-        assert_eq!(&reflected, m);
+        // What the SPIR-V says; the Rust types and push-constant struct come from the sources
+        // (tests/contract.rs regenerates those).
+        let mut from_spirv = m.clone();
+        from_spirv.push_constants = None;
+        from_spirv.bindings.iter_mut().for_each(|b| b.rust_type.clear());
+        assert_eq!(reflected, from_spirv);
         // naga reads (and validates) everything but ray-tracing stages.
         if ["compute", "vertex", "fragment"].contains(&m.stage.as_str()) {
             reflect::validate(&bytes).unwrap_or_else(|e| panic!("{}: {e}", m.file));

@@ -6,6 +6,9 @@ use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Manifest {
+    /// The schema of this file (`assets/README.md`): `aokit-manifest/2`.
+    #[serde(default)]
+    pub schema: String,
     /// [`crate::spirv_hash::shader_source_hash`] of the sources the modules were built from.
     pub source_hash: String,
     /// rust-gpu target triple.
@@ -13,6 +16,32 @@ pub struct Manifest {
     /// rust-gpu (spirv-std) version.
     pub rust_gpu: String,
     pub modules: Vec<ModuleManifest>,
+    /// Every struct the kernels share with the host (push constants, buffer records), from
+    /// `aokit_shaders::contract`.
+    #[serde(default)]
+    pub structs: Vec<StructManifest>,
+}
+
+/// A `#[repr(C)]` struct: size, alignment, fields with byte offsets.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct StructManifest {
+    pub name: String,
+    pub doc: String,
+    pub size: u32,
+    pub align: u32,
+    pub fields: Vec<FieldManifest>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct FieldManifest {
+    pub name: String,
+    /// The Rust type: a scalar (`f32`, `u32`, `i32`), a glam vector or matrix (`Vec2`, `UVec2`,
+    /// `Mat4`, …: f32/u32 components, column-major matrices), an array, or another struct here.
+    pub ty: String,
+    pub offset: u32,
+    pub size: u32,
+    /// Meaning and unit.
+    pub doc: String,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -26,15 +55,26 @@ pub struct ModuleManifest {
     pub workgroup_size: Option<[u32; 3]>,
     pub bindings: Vec<BindingManifest>,
     pub push_constant_bytes: u32,
+    /// The struct of the push-constant block (in [`Manifest::structs`]), if the entry point has
+    /// one.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub push_constants: Option<String>,
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct BindingManifest {
     pub set: u32,
     pub binding: u32,
-    /// "storage_buffer", "uniform_buffer", "texture", "sampler", …
+    /// "storage_buffer", "uniform_buffer", "image", "acceleration_structure", …
     pub kind: String,
     pub writable: bool,
+    /// The kernel's parameter name (SPIR-V `OpName`).
+    #[serde(default)]
+    pub name: String,
+    /// The kernel's Rust type of the binding: `[f32]`, `[u32]`, `[Vec2]` (runtime arrays),
+    /// a record struct of [`Manifest::structs`] (`SvaoFrame`), an image or the TLAS.
+    #[serde(default)]
+    pub rust_type: String,
 }
 
 impl Manifest {
@@ -100,7 +140,9 @@ pub mod reflect {
                             _ => ("other", false),
                         },
                     };
-                    bindings.push(BindingManifest { set: b.group, binding: b.binding, kind: kind.into(), writable });
+                    let name = var.name.clone().unwrap_or_default();
+                    let (set, binding, kind) = (b.group, b.binding, kind.into());
+                    bindings.push(BindingManifest { set, binding, kind, writable, name, rust_type: String::new() });
                 }
             }
         }
@@ -112,6 +154,7 @@ pub mod reflect {
             workgroup_size: (entry.stage == ShaderStage::Compute).then_some(entry.workgroup_size),
             bindings,
             push_constant_bytes,
+            push_constants: None,
         })
     }
 }
@@ -123,6 +166,7 @@ pub mod words {
     use super::{BindingManifest, ModuleManifest};
     use std::collections::HashMap;
 
+    const OP_NAME: u32 = 5;
     const OP_ENTRY_POINT: u32 = 15;
     const OP_CAPABILITY: u32 = 17;
     const OP_VARIABLE: u32 = 59;
@@ -182,7 +226,12 @@ pub mod words {
         let name: Vec<u8> = entry[2..].iter().flat_map(|w| w.to_le_bytes()).take_while(|&b| b != 0).collect();
         let entry_point = String::from_utf8(name).map_err(|e| e.to_string())?;
         let (mut set, mut binding, mut read_only) = (HashMap::new(), HashMap::new(), HashMap::new());
+        let mut names = HashMap::new();
         for (op, a) in &ins {
+            if *op == OP_NAME && a.len() >= 2 {
+                let bytes: Vec<u8> = a[1..].iter().flat_map(|w| w.to_le_bytes()).take_while(|&b| b != 0).collect();
+                names.insert(a[0], String::from_utf8_lossy(&bytes).into_owned());
+            }
             if *op == OP_DECORATE && a.len() >= 2 {
                 match (a[1], a.get(2)) {
                     (DECORATION_DESCRIPTOR_SET, Some(&v)) => _ = set.insert(a[0], v),
@@ -207,7 +256,9 @@ pub mod words {
                 STORAGE_UNIFORM_CONSTANT => ("acceleration_structure", false),
                 _ => ("other", false),
             };
-            bindings.push(BindingManifest { set: s, binding: b, kind: kind.into(), writable });
+            let name = names.get(&id).cloned().unwrap_or_default();
+            let kind = kind.into();
+            bindings.push(BindingManifest { set: s, binding: b, kind, writable, name, rust_type: String::new() });
         }
         bindings.sort_by_key(|b| (b.set, b.binding));
         Ok(ModuleManifest {
@@ -217,6 +268,342 @@ pub mod words {
             workgroup_size: None,
             bindings,
             push_constant_bytes: 0,
+            push_constants: None,
         })
+    }
+}
+
+/// The kernels' entry-point signatures read from the shader crate's Rust source (feature
+/// `reflect`): which struct is a module's push-constant block and each binding's parameter name
+/// and Rust type — what the SPIR-V does not name.
+#[cfg(feature = "reflect")]
+pub mod source {
+    use quote::ToTokens;
+    use std::path::Path;
+
+    /// One entry point's interface as written in Rust.
+    #[derive(Clone, Debug, PartialEq)]
+    pub struct EntrySignature {
+        pub entry: String,
+        /// The push-constant parameter's type name.
+        pub push_constants: Option<String>,
+        /// `(set, binding, parameter name, Rust type without the reference)`.
+        pub bindings: Vec<(u32, u32, String, String)>,
+    }
+
+    const STAGES: [&str; 8] =
+        ["compute", "fragment", "vertex", "ray_generation", "any_hit", "miss", "closest_hit", "intersection"];
+
+    /// `spirv(...)` attribute tokens as text, if `attr` is one.
+    fn spirv_attr(attr: &syn::Attribute) -> Option<String> {
+        match &attr.meta {
+            syn::Meta::List(l) if l.path.is_ident("spirv") => Some(l.tokens.to_string()),
+            _ => None,
+        }
+    }
+
+    /// The integer after `key =` in attribute text.
+    fn number_after(text: &str, key: &str) -> Option<u32> {
+        let rest = text.split(key).nth(1)?.trim_start().strip_prefix('=')?.trim_start();
+        rest.split(|c: char| !c.is_ascii_digit()).next()?.parse().ok()
+    }
+
+    fn entry_of(f: &syn::ItemFn) -> Option<EntrySignature> {
+        let attr = f.attrs.iter().filter_map(spirv_attr).find(|a| {
+            let first = a.split(|c: char| !(c.is_alphanumeric() || c == '_')).next().unwrap_or("");
+            STAGES.contains(&first)
+        })?;
+        let entry = attr
+            .split("entry_point_name")
+            .nth(1)
+            .and_then(|r| r.split('"').nth(1))
+            .map_or_else(|| f.sig.ident.to_string(), str::to_string);
+        let mut sig = EntrySignature { entry, push_constants: None, bindings: Vec::new() };
+        for input in &f.sig.inputs {
+            let syn::FnArg::Typed(p) = input else { continue };
+            let Some(text) = p.attrs.iter().filter_map(spirv_attr).next() else { continue };
+            let name = p.pat.to_token_stream().to_string();
+            let ty = p.ty.to_token_stream().to_string().replace(' ', "");
+            let ty = ty.trim_start_matches('&').trim_start_matches("mut").to_string();
+            if text.contains("push_constant") {
+                sig.push_constants = Some(ty);
+            } else if let (Some(set), Some(binding)) =
+                (number_after(&text, "descriptor_set"), number_after(&text, "binding"))
+            {
+                sig.bindings.push((set, binding, name, ty));
+            }
+        }
+        Some(sig)
+    }
+
+    /// A one-arm `macro_rules!` whose arm is an entry point: its metavariables and body.
+    struct EntryMacro {
+        name: String,
+        params: Vec<String>,
+        body: String,
+    }
+
+    /// `macro_rules! m { ($a:ident, $b:tt, …) => { …fn… }; }` as an [`EntryMacro`].
+    fn entry_macro(m: &syn::ItemMacro) -> Option<EntryMacro> {
+        let name = m.ident.as_ref()?.to_string();
+        if !m.mac.path.is_ident("macro_rules") {
+            return None;
+        }
+        let mut tokens = m.mac.tokens.clone().into_iter();
+        let pattern = match tokens.next()? {
+            proc_macro2::TokenTree::Group(g) => g.stream().to_string(),
+            _ => return None,
+        };
+        let body = tokens.find_map(|t| match t {
+            proc_macro2::TokenTree::Group(g) => Some(g.stream().to_string()),
+            _ => None,
+        })?;
+        let params = pattern.split(',').filter_map(|p| Some(p.split(':').next()?.trim().replace(' ', ""))).collect();
+        body.contains("spirv").then_some(EntryMacro { name, params, body })
+    }
+
+    fn items(items: &[syn::Item], out: &mut Vec<EntrySignature>) {
+        let macros: Vec<EntryMacro> = items
+            .iter()
+            .filter_map(|i| match i {
+                syn::Item::Macro(m) => entry_macro(m),
+                _ => None,
+            })
+            .collect();
+        for item in items {
+            match item {
+                syn::Item::Fn(f) => out.extend(entry_of(f)),
+                syn::Item::Mod(m) => {
+                    if let Some((_, inner)) = &m.content {
+                        self::items(inner, out);
+                    }
+                }
+                // An invocation of an entry-point macro: its body with the arguments substituted.
+                syn::Item::Macro(m) => {
+                    let Some(mac) = macros.iter().find(|d| m.mac.path.is_ident(&d.name)) else { continue };
+                    let args: Vec<String> = m.mac.tokens.to_string().split(',').map(|a| a.trim().to_string()).collect();
+                    let mut body = mac.body.clone();
+                    for (param, arg) in mac.params.iter().zip(&args) {
+                        body = body.replace(&param.replacen('$', "$ ", 1), arg).replace(param.as_str(), arg);
+                    }
+                    if let Ok(f) = syn::parse_str::<syn::ItemFn>(&body) {
+                        out.extend(entry_of(&f));
+                    }
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// Every entry point under `src` (the shader crate's `src/`).
+    pub fn entry_points(src: &Path) -> Result<Vec<EntrySignature>, String> {
+        let mut files = Vec::new();
+        let mut dirs = vec![src.to_path_buf()];
+        while let Some(dir) = dirs.pop() {
+            for e in std::fs::read_dir(&dir).map_err(|e| format!("{}: {e}", dir.display()))? {
+                let path = e.map_err(|e| e.to_string())?.path();
+                if path.is_dir() {
+                    dirs.push(path);
+                } else if path.extension().is_some_and(|x| x == "rs") {
+                    files.push(path);
+                }
+            }
+        }
+        files.sort();
+        let mut out = Vec::new();
+        for path in files {
+            let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
+            let file = syn::parse_file(&text).map_err(|e| format!("{}: {e}", path.display()))?;
+            items(&file.items, &mut out);
+        }
+        Ok(out)
+    }
+}
+
+#[cfg(feature = "reflect")]
+impl Manifest {
+    /// Version 2 of the manifest from the reflected modules: binding names and Rust types and
+    /// push-constant structs from the entry points' source (`shader_src`), the shared structs
+    /// from `aokit_shaders::contract`. Fails where a module's push constants or record have no
+    /// struct, or a struct's size differs from the module's block.
+    pub fn complete(mut self, shader_src: &std::path::Path) -> Result<Manifest, String> {
+        self.schema = "aokit-manifest/2".into();
+        self.structs = aokit_shaders::contract::shared_structs()
+            .into_iter()
+            .map(|s| StructManifest {
+                name: s.name.into(),
+                doc: s.doc.into(),
+                size: s.size as u32,
+                align: s.align as u32,
+                fields: s
+                    .fields
+                    .iter()
+                    .map(|f| FieldManifest {
+                        name: f.name.into(),
+                        ty: f.ty.into(),
+                        offset: f.offset as u32,
+                        size: f.size as u32,
+                        doc: f.doc.into(),
+                    })
+                    .collect(),
+            })
+            .collect();
+        let signatures = source::entry_points(shader_src)?;
+        for m in &mut self.modules {
+            let sig = signatures
+                .iter()
+                .find(|s| s.entry == m.entry_point)
+                .ok_or_else(|| format!("{}: no entry point of that name in the shader sources", m.entry_point))?;
+            m.push_constants = sig.push_constants.clone();
+            if let Some(name) = &m.push_constants {
+                let s = self.structs.iter().find(|s| &s.name == name).ok_or_else(|| {
+                    format!(
+                        "{}: push constants {name} are not in aokit_shaders::contract::shared_structs",
+                        m.entry_point
+                    )
+                })?;
+                if m.push_constant_bytes != 0 && s.size != m.push_constant_bytes {
+                    return Err(format!(
+                        "{}: {name} is {} bytes, the module's block {}",
+                        m.entry_point, s.size, m.push_constant_bytes
+                    ));
+                }
+            }
+            for b in &mut m.bindings {
+                let (_, _, name, ty) = sig
+                    .bindings
+                    .iter()
+                    .find(|(set, binding, ..)| (*set, *binding) == (b.set, b.binding))
+                    .ok_or_else(|| format!("{}: binding {} not found in the source", m.entry_point, b.binding))?;
+                if b.name.is_empty() {
+                    b.name = name.clone();
+                }
+                b.rust_type = ty.clone();
+                let record = !ty.starts_with('[') && b.kind == "storage_buffer";
+                if record && !self.structs.iter().any(|s| &s.name == ty) {
+                    return Err(format!(
+                        "{}: record {ty} is not in aokit_shaders::contract::shared_structs",
+                        m.entry_point
+                    ));
+                }
+            }
+        }
+        Ok(self)
+    }
+}
+
+/// The C name of a manifest type: scalars, glam vectors and matrices, shared structs.
+fn c_type(ty: &str) -> String {
+    match ty {
+        "f32" => "float".into(),
+        "u32" => "uint32_t".into(),
+        "i32" => "int32_t".into(),
+        t if GLAM_TYPES.iter().any(|g| g.0 == t) => format!("aokit_{}", t.to_lowercase()),
+        t => format!("aokit_{t}"),
+    }
+}
+
+/// glam types in shared structs: name, component C type, component count, and their size and
+/// alignment in Rust (the C typedefs must match them; `_Static_assert`ed).
+const GLAM_TYPES: [(&str, &str, usize, usize, usize); 8] = {
+    use aokit_shaders::glam::{IVec2, Mat4, UVec2, UVec3, UVec4, Vec2, Vec3, Vec4};
+    [
+        ("Vec2", "float", 2, size_of::<Vec2>(), align_of::<Vec2>()),
+        ("Vec3", "float", 3, size_of::<Vec3>(), align_of::<Vec3>()),
+        ("Vec4", "float", 4, size_of::<Vec4>(), align_of::<Vec4>()),
+        ("UVec2", "uint32_t", 2, size_of::<UVec2>(), align_of::<UVec2>()),
+        ("UVec3", "uint32_t", 3, size_of::<UVec3>(), align_of::<UVec3>()),
+        ("UVec4", "uint32_t", 4, size_of::<UVec4>(), align_of::<UVec4>()),
+        ("IVec2", "int32_t", 2, size_of::<IVec2>(), align_of::<IVec2>()),
+        ("Mat4", "float", 16, size_of::<Mat4>(), align_of::<Mat4>()),
+    ]
+};
+
+/// A C identifier in upper case (`vao_main` → `VAO_MAIN`).
+fn upper(name: &str) -> String {
+    name.chars().map(|c| if c.is_ascii_alphanumeric() { c.to_ascii_uppercase() } else { '_' }).collect()
+}
+
+impl Manifest {
+    /// `assets/include/aokit.h`: every shared struct with `_Static_assert`s on its size and
+    /// field offsets (the Rust compiler's), and per module its SPIR-V file, workgroup size,
+    /// push-constant struct and binding indices as named constants.
+    pub fn c_header(&self) -> String {
+        let mut h = String::new();
+        let line = |h: &mut String, s: &str| {
+            h.push_str(s);
+            h.push('\n');
+        };
+        line(&mut h, "/* aokit.h: the kernels' constants blocks, records and bindings for C and C++ engines.");
+        line(&mut h, " * GENERATED by `cargo run -p xtask -- build-spirv` from the shader crate; do not edit.");
+        line(&mut h, &format!(" * Schema {}, shader sources {}.", self.schema, self.source_hash));
+        line(&mut h, " * Layouts are the Rust compiler's (#[repr(C)]); the _Static_asserts check that this C");
+        line(&mut h, " * compiler lays them out the same. Matrices are column-major. See assets/README.md. */");
+        line(&mut h, "#ifndef AOKIT_H\n#define AOKIT_H\n\n#include <stddef.h>\n#include <stdint.h>\n");
+        line(&mut h, "/* Vectors and matrices (glam). */");
+        for (name, component, n, size, align) in GLAM_TYPES {
+            let c = c_type(name);
+            line(&mut h, &format!("typedef struct {c} {{ _Alignas({align}) {component} v[{n}]; }} {c};"));
+            line(&mut h, &format!("_Static_assert(sizeof({c}) == {size} && _Alignof({c}) == {align}, \"{name}\");"));
+        }
+        line(&mut h, "");
+        for s in &self.structs {
+            let c = c_type(&s.name);
+            line(&mut h, &format!("/* {} */", s.doc.replace("*/", "* /")));
+            line(&mut h, &format!("typedef struct {c} {{"));
+            for f in &s.fields {
+                let (ty, array) = match f.ty.strip_prefix('[').and_then(|t| t.strip_suffix(']')) {
+                    Some(inner) => {
+                        let (t, n) = inner.split_once(';').unwrap_or((inner, "1"));
+                        (c_type(t), format!("[{n}]"))
+                    }
+                    None => (c_type(&f.ty), String::new()),
+                };
+                let doc =
+                    if f.doc.is_empty() { String::new() } else { format!(" /* {} */", f.doc.replace("*/", "* /")) };
+                line(&mut h, &format!("    {ty} {}{array};{doc}", f.name));
+            }
+            line(&mut h, &format!("}} {c};"));
+            line(&mut h, &format!("_Static_assert(sizeof({c}) == {}, \"{} size\");", s.size, s.name));
+            for f in &s.fields {
+                line(
+                    &mut h,
+                    &format!(
+                        "_Static_assert(offsetof({c}, {}) == {}, \"{}.{} offset\");",
+                        f.name, f.offset, s.name, f.name
+                    ),
+                );
+            }
+            line(&mut h, "");
+        }
+        line(&mut h, "/* Modules: SPIR-V file, stage, workgroup size, push constants, bindings (set 0). */");
+        for m in &self.modules {
+            let p = format!("AOKIT_{}", upper(&m.entry_point));
+            let push = m.push_constants.as_deref().map_or("none".to_string(), c_type);
+            let group = m.workgroup_size.map_or(String::new(), |w| format!(", workgroup {}x{}x{}", w[0], w[1], w[2]));
+            line(&mut h, &format!("/* {}: {} stage{group}, push constants {push} */", m.entry_point, m.stage));
+            line(&mut h, &format!("#define {p}_SPV \"{}\"", m.file));
+            if let Some(w) = m.workgroup_size {
+                for (axis, v) in ["X", "Y", "Z"].iter().zip(w) {
+                    line(&mut h, &format!("#define {p}_WORKGROUP_{axis} {v}u"));
+                }
+            }
+            for b in &m.bindings {
+                let access = if b.writable { "read-write" } else { "read-only" };
+                line(
+                    &mut h,
+                    &format!(
+                        "#define {p}_BINDING_{} {}u /* {} {}, {access} */",
+                        upper(&b.name),
+                        b.binding,
+                        b.kind,
+                        b.rust_type
+                    ),
+                );
+            }
+            line(&mut h, "");
+        }
+        line(&mut h, "#endif /* AOKIT_H */");
+        h
     }
 }

@@ -17,6 +17,8 @@ pub use spirv_std::glam;
 pub mod adapters;
 pub mod blur;
 pub mod common;
+#[cfg(not(target_arch = "spirv"))]
+pub mod contract;
 pub mod gbuffer;
 #[cfg(not(target_arch = "spirv"))]
 pub mod graph;

@@ -1,7 +1,9 @@
 //! `cargo run -p xtask -- build-spirv`: compile `shader-crate/` to SPIR-V with rust-gpu 0.11
 //! (cargo-gpu-install fetches the pinned nightly and builds the codegen backend once, cached
 //! under ~/.cache/rust-gpu), validate every module with `spirv-val` and naga, and write
-//! `assets/spirv/{entry}.spv` plus `manifest.json` with the hash of the sources.
+//! `assets/spirv/{entry}.spv` plus `manifest.json` (schema aokit-manifest/2: modules with named
+//! bindings, push-constant structs, the shared structs' layouts, the hash of the sources) and
+//! the C header `assets/include/aokit.h` generated from it.
 //!
 //! Runs on stable; nothing else in the workspace needs the nightly.
 
@@ -78,10 +80,12 @@ fn build_spirv() -> Result<(), String> {
     }
     std::fs::create_dir_all(&out_dir).map_err(|e| e.to_string())?;
     let mut manifest = Manifest {
+        schema: String::new(),
         source_hash: shader_source_hash(&shader_crate).map_err(|e| e.to_string())?,
         target: TARGET.into(),
         rust_gpu: "0.11.0".into(),
         modules: Vec::new(),
+        structs: Vec::new(),
     };
     for (entry, path) in &modules {
         let file = format!("{entry}.spv");
@@ -99,8 +103,12 @@ fn build_spirv() -> Result<(), String> {
         );
         manifest.modules.push(module);
     }
+    let manifest = manifest.complete(&shader_crate.join("src"))?;
     let json = serde_json::to_string_pretty(&manifest).map_err(|e| e.to_string())? + "\n";
     std::fs::write(out_dir.join("manifest.json"), json).map_err(|e| e.to_string())?;
+    let include = root.join("assets/include");
+    std::fs::create_dir_all(&include).map_err(|e| e.to_string())?;
+    std::fs::write(include.join("aokit.h"), manifest.c_header()).map_err(|e| e.to_string())?;
     println!("wrote {} modules and manifest.json (source hash {})", manifest.modules.len(), manifest.source_hash);
     Ok(())
 }

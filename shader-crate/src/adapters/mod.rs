@@ -70,6 +70,7 @@ pub const BACKGROUND_DEPTH: f32 = f32::MAX;
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct ImportParams {
     /// aokit's full target (inner image + guard band) that the internal buffers cover.
     pub view: ViewParams,

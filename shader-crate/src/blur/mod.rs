@@ -20,7 +20,9 @@ pub const BLUR_FALLOFF: f32 = 0.08;
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct BlurParams {
+    /// Projection of the full target.
     pub view: ViewParams,
     /// Pass direction: (1, 0) horizontal, (0, 1) vertical.
     pub direction: UVec2,

@@ -16,10 +16,13 @@ use crate::glam::Vec2;
 #[repr(C)]
 #[derive(Copy, Clone, Debug, Default, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct AlphaMaskHeader {
     /// Index of the first texel in the texel buffer.
     pub offset: u32,
+    /// Mask width in texels (0: opaque material).
     pub width: u32,
+    /// Mask height in texels.
     pub height: u32,
     /// Texels with alpha below this are cut out.
     pub cutoff: f32,

@@ -7,6 +7,7 @@ use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct ViewParams {
     /// Full target size `W×H` in pixels (inner size + 2·guard).
     pub res: Vec2,
@@ -83,11 +84,13 @@ impl ViewParams {
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct Camera {
     /// World → view (right-handed, looking down −Z).
     pub world_to_view: crate::glam::Mat4,
     /// View → world.
     pub view_to_world: crate::glam::Mat4,
+    /// Projection of the full target.
     pub view: ViewParams,
 }
 

@@ -16,9 +16,11 @@ use spirv_std::spirv;
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct RasterParams {
     /// World → view (rigid transform).
     pub world_to_view: Mat4,
+    /// Projection of the full target.
     pub view: ViewParams,
     /// Depth peeling (spec §11): the second layer keeps only fragments farther than the first
     /// layer's depth plus this separation [0.01]. Unused by the first pass.

@@ -20,6 +20,7 @@ use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct GroundTruthParams {
     /// World-space ray length (the AO radius).
     pub radius: f32,
@@ -96,8 +97,11 @@ pub trait OcclusionQuery {
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct GroundTruthFrame {
+    /// The camera (view transform and projection) of the frame.
     pub camera: Camera,
+    /// The ground truth's constants.
     pub params: GroundTruthParams,
 }
 

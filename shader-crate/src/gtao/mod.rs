@@ -28,7 +28,9 @@ pub const MIP_LEVELS: u32 = 5;
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct GtaoParams {
+    /// Projection of the full target.
     pub view: ViewParams,
     /// Effect radius in world units [0.5; aokit: the scene's AO radius].
     pub radius: f32,

@@ -25,6 +25,7 @@ use crate::raymarch::{depth_edges, facing_normal, hemisphere_dir, march};
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct HybridParams {
     /// Ray length R [the ground truth's radius].
     pub radius: f32,
@@ -47,8 +48,11 @@ pub struct HybridParams {
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct HybridFrame {
+    /// The camera (view transform and projection) of the frame.
     pub camera: Camera,
+    /// The hybrid AO's constants.
     pub params: HybridParams,
 }
 

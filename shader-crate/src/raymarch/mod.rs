@@ -38,7 +38,9 @@ pub enum Contribution {
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct RaymarchParams {
+    /// Projection of the full target.
     pub view: ViewParams,
     /// March distance R in world units [the ground truth's radius].
     pub radius: f32,

@@ -32,7 +32,9 @@ pub enum Secondary {
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct SvaoParams {
+    /// The VAO/HBAO+ kernel constants of both AO passes.
     pub vao: VaoParams,
     /// [`Secondary`] as `u32`.
     pub secondary: u32,
@@ -76,8 +78,11 @@ impl SvaoParams {
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct SvaoFrame {
+    /// The camera (view transform and projection) of the frame.
     pub camera: Camera,
+    /// The stenciled pipeline's constants.
     pub params: SvaoParams,
 }
 

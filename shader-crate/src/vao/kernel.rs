@@ -15,7 +15,9 @@ use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
 pub struct VaoParams {
+    /// Projection of the full target.
     pub view: ViewParams,
     /// World-space AO radius `R` (spec §2 default 0.2).
     pub radius: f32,

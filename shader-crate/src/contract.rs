@@ -1,0 +1,87 @@
+//! The structs the kernels share with the host as data (host side): name, doc comment, size,
+//! alignment and per field its name, Rust type, byte offset and doc comment, from
+//! `#[derive(Layout)]` (`aokit-contract-derive`: the compiler's offsets, the source's doc
+//! comments). The xtask turns them into `assets/include/aokit.h` and the manifest's constant
+//! blocks, so an engine reads each push-constant block and buffer record from one source.
+
+use crate::glam::{IVec2, Mat3, Mat4, UVec2, UVec3, UVec4, Vec2, Vec3, Vec4};
+
+/// One field of a shared struct.
+#[derive(Clone, Debug)]
+pub struct Field {
+    pub name: &'static str,
+    /// The Rust type as written (`f32`, `UVec2`, `ViewParams`, …).
+    pub ty: &'static str,
+    /// Byte offset in the struct (`core::mem::offset_of!`).
+    pub offset: usize,
+    pub size: usize,
+    /// The field's doc comment: meaning and unit.
+    pub doc: &'static str,
+    /// The field's own layout where its type is a shared struct.
+    pub nested: fn() -> Option<StructLayout>,
+}
+
+/// A `#[repr(C)]` struct shared by kernels and host.
+#[derive(Clone, Debug)]
+pub struct StructLayout {
+    pub name: &'static str,
+    pub doc: &'static str,
+    pub size: usize,
+    pub align: usize,
+    pub fields: Vec<Field>,
+}
+
+/// A type's layout as a shared struct; `None` for scalars, vectors and matrices.
+pub trait Layout {
+    fn layout() -> Option<StructLayout>;
+}
+
+macro_rules! plain {
+    ($($t:ty),*) => {$(impl Layout for $t { fn layout() -> Option<StructLayout> { None } })*};
+}
+plain!(f32, u32, i32, Vec2, Vec3, Vec4, UVec2, UVec3, UVec4, IVec2, Mat3, Mat4);
+
+impl<T: Layout, const N: usize> Layout for [T; N] {
+    fn layout() -> Option<StructLayout> {
+        None
+    }
+}
+
+/// Every struct an engine passes to the kernels (push constants, records in storage buffers),
+/// with the structs they contain before them. A test checks that every push-constant block and
+/// record an entry point declares is here.
+pub fn shared_structs() -> Vec<StructLayout> {
+    let roots = [
+        crate::common::camera::ViewParams::layout,
+        crate::common::camera::Camera::layout,
+        crate::common::alpha::AlphaMaskHeader::layout,
+        crate::vao::VaoParams::layout,
+        crate::blur::BlurParams::layout,
+        crate::svao::SvaoParams::layout,
+        crate::svao::SvaoFrame::layout,
+        crate::gtao::GtaoParams::layout,
+        crate::raymarch::RaymarchParams::layout,
+        crate::hybrid::HybridParams::layout,
+        crate::hybrid::HybridFrame::layout,
+        crate::groundtruth::GroundTruthParams::layout,
+        crate::groundtruth::GroundTruthFrame::layout,
+        crate::gbuffer::RasterParams::layout,
+        crate::adapters::ImportParams::layout,
+    ];
+    let mut out: Vec<StructLayout> = Vec::new();
+    fn add(layout: StructLayout, out: &mut Vec<StructLayout>) {
+        if out.iter().any(|s| s.name == layout.name) {
+            return;
+        }
+        for f in &layout.fields {
+            if let Some(inner) = (f.nested)() {
+                add(inner, out);
+            }
+        }
+        out.push(layout);
+    }
+    for root in roots {
+        add(root().expect("a shared struct"), &mut out);
+    }
+    out
+}

@@ -1,0 +1,102 @@
+//! The engine contract in `assets/`: the manifest (schema aokit-manifest/2) and the C header are
+//! what the xtask generates from the committed modules and the current shader sources (a stale
+//! one fails here), and a C11 compiler lays out every shared struct exactly as Rust does (the
+//! header's `_Static_assert`s, compiled with `cc`).
+
+use aokit_vulkan::manifest::{Manifest, reflect};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The manifest as the xtask writes it, from the committed `.spv` files.
+fn regenerated() -> Manifest {
+    let committed = Manifest::committed();
+    let mut manifest =
+        Manifest { modules: Vec::new(), structs: Vec::new(), schema: String::new(), ..committed.clone() };
+    for m in &committed.modules {
+        let bytes = std::fs::read(root().join("assets/spirv").join(&m.file)).unwrap();
+        manifest.modules.push(reflect::reflect_any(&m.file, &bytes).unwrap());
+    }
+    manifest.complete(&root().join("shader-crate/src")).unwrap()
+}
+
+#[test]
+fn manifest_and_header_are_what_the_sources_generate() {
+    let manifest = regenerated();
+    let committed = Manifest::committed();
+    assert_eq!(manifest, committed, "assets/spirv/manifest.json is stale: run `cargo run -p xtask -- build-spirv`");
+    let header = std::fs::read_to_string(root().join("assets/include/aokit.h")).unwrap();
+    assert!(header == manifest.c_header(), "assets/include/aokit.h is stale: run `cargo run -p xtask -- build-spirv`");
+
+    // What an engine needs is named: every binding, every push-constant block of a module that
+    // has one, and every struct's fields.
+    assert_eq!(manifest.schema, "aokit-manifest/2");
+    for m in &manifest.modules {
+        for b in &m.bindings {
+            assert!(!b.name.is_empty() && !b.rust_type.is_empty(), "{}: binding {} unnamed", m.entry_point, b.binding);
+        }
+        if m.push_constant_bytes > 0 {
+            let name =
+                m.push_constants.as_ref().unwrap_or_else(|| panic!("{}: no push-constant struct", m.entry_point));
+            let s = manifest.structs.iter().find(|s| &s.name == name).unwrap();
+            assert_eq!(s.size, m.push_constant_bytes, "{}", m.entry_point);
+        }
+    }
+    let vao = manifest.modules.iter().find(|m| m.entry_point == "vao_main").unwrap();
+    let names: Vec<_> = vao.bindings.iter().map(|b| (b.name.as_str(), b.rust_type.as_str(), b.writable)).collect();
+    assert_eq!(names, [("depth", "[f32]", false), ("normals", "[u32]", false), ("ao", "[f32]", true)]);
+    assert_eq!(vao.push_constants.as_deref(), Some("VaoParams"));
+    let sd = manifest.modules.iter().find(|m| m.entry_point == "raysd_rgen").unwrap();
+    assert!(sd.bindings.iter().any(|b| b.name == "frame" && b.rust_type == "[SvaoFrame]"), "{:?}", sd.bindings);
+    for s in &manifest.structs {
+        assert!(!s.doc.is_empty(), "{} has no doc comment", s.name);
+        for f in s.fields.iter().filter(|f| !f.name.starts_with('_')) {
+            assert!(!f.doc.is_empty(), "{}.{} has no doc comment", s.name, f.name);
+        }
+    }
+}
+
+/// Compile `source` (C11, including the committed header) with `cc`; the compiler's messages on
+/// failure. `None` when there is no C compiler outside CI.
+fn compile(source: &str, dir: &Path) -> Option<Result<(), String>> {
+    let available = Command::new("cc").arg("--version").output().is_ok_and(|o| o.status.success());
+    if !available {
+        assert!(std::env::var_os("CI").is_none(), "CI must have a C compiler (apt-get install gcc)");
+        eprintln!("no `cc`: skipping the C compile check");
+        return None;
+    }
+    let file = dir.join("check.c");
+    std::fs::write(&file, source).unwrap();
+    let out = Command::new("cc")
+        .args(["-std=c11", "-Wall", "-Wextra", "-Werror", "-pedantic", "-fsyntax-only", "-I"])
+        .arg(dir)
+        .arg(&file)
+        .output()
+        .unwrap();
+    Some(if out.status.success() { Ok(()) } else { Err(String::from_utf8_lossy(&out.stderr).into_owned()) })
+}
+
+#[test]
+fn the_header_compiles_and_c_lays_out_every_struct_as_rust_does() {
+    let dir = std::env::temp_dir().join(format!("aokit-header-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let header = std::fs::read_to_string(root().join("assets/include/aokit.h")).unwrap();
+    std::fs::write(dir.join("aokit.h"), &header).unwrap();
+    let use_it = "#include \"aokit.h\"\nint main(void) { aokit_VaoParams p = {0}; (void)p; return (int)AOKIT_VAO_MAIN_BINDING_AO; }\n";
+    let Some(result) = compile(use_it, &dir) else { return };
+    result.unwrap_or_else(|e| panic!("aokit.h does not compile:\n{e}"));
+    let asserts = header.matches("_Static_assert(offsetof").count();
+    assert!(asserts >= 80, "{asserts} offset assertions");
+
+    // The assertions bite: a header claiming another offset for one field is refused.
+    let wrong =
+        header.replacen("offsetof(aokit_VaoParams, radius) == ", "offsetof(aokit_VaoParams, radius) == 4 + ", 1);
+    assert_ne!(wrong, header);
+    std::fs::write(dir.join("aokit.h"), &wrong).unwrap();
+    let e = compile(use_it, &dir).unwrap().expect_err("a wrong offset must not compile");
+    assert!(e.contains("VaoParams.radius offset"), "{e}");
+    let _ = std::fs::remove_dir_all(&dir);
+}
