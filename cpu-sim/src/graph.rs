@@ -146,17 +146,18 @@ impl CpuExecutor {
     pub fn run(&mut self, graph: &Graph, inputs: &CpuInputs) -> Result<FrameStats, String> {
         graph.validate()?;
         for r in &graph.resources {
-            let fresh = self.resources.get(r.name).is_none_or(|v| v.len() != r.len);
+            let len = r.len(&graph.view);
+            let fresh = self.resources.get(r.name).is_none_or(|v| v.len() != len);
             if fresh || r.lifetime == Lifetime::PerFrame {
                 let v = self.resources.entry(r.name).or_default();
                 v.clear();
                 match &r.init {
-                    Init::Fill(bits) => v.resize(r.len, *bits),
+                    Init::Fill(bits) => v.resize(len, *bits),
                     Init::Data(words) => {
                         v.extend_from_slice(words);
-                        v.resize(r.len, 0);
+                        v.resize(len, 0);
                     }
-                    Init::Undefined => v.resize(r.len, 0),
+                    Init::Undefined => v.resize(len, 0),
                 }
             }
         }

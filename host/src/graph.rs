@@ -25,7 +25,8 @@ use crate::manifest::{Manifest, ModuleManifest};
 use crate::raytracing::{RtPipeline, SceneAccel};
 use crate::{Buffer, Gpu, GpuError, modules};
 use aokit_shaders::adapters::ImportParams;
-use aokit_shaders::graph::{Access, Graph, Init, Lifetime, Pass, PassKind, inputs};
+use aokit_shaders::common::ViewParams;
+use aokit_shaders::graph::{Access, Extent, Graph, Init, Lifetime, Pass, PassKind, Size, inputs};
 use ash::vk;
 use ash::vk::Handle;
 use gpu_allocator::MemoryLocation;
@@ -253,21 +254,26 @@ impl<G: Borrow<Gpu>> AoContext<G> {
 
     /// Make or re-make the graph's buffers (sizes as declared); returns the names made now.
     fn ensure_resources(&mut self, graph: &Graph) -> Result<Vec<&'static str>, GpuError> {
-        self.ensure_named(&graph.resources)
+        self.ensure_named(&graph.resources, &graph.view)
     }
 
     /// Make or re-make these buffers; returns the names made now.
-    fn ensure_named(&mut self, resources: &[aokit_shaders::graph::Resource]) -> Result<Vec<&'static str>, GpuError> {
+    fn ensure_named(
+        &mut self,
+        resources: &[aokit_shaders::graph::Resource],
+        view: &ViewParams,
+    ) -> Result<Vec<&'static str>, GpuError> {
         let mut made = Vec::new();
         for r in resources {
-            if self.resources.get(r.name).is_some_and(|d| d.len == r.len) {
+            let len = r.len(view);
+            if self.resources.get(r.name).is_some_and(|d| d.len == len) {
                 continue;
             }
             let usage = vk::BufferUsageFlags::STORAGE_BUFFER
                 | vk::BufferUsageFlags::TRANSFER_DST
                 | vk::BufferUsageFlags::TRANSFER_SRC;
-            let buffer = self.gpu().create_buffer(4 * r.len as u64, usage, MemoryLocation::GpuOnly)?;
-            if let Some(old) = self.resources.insert(r.name, Box::new(DeviceResource { buffer, len: r.len })) {
+            let buffer = self.gpu().create_buffer(4 * len as u64, usage, MemoryLocation::GpuOnly)?;
+            if let Some(old) = self.resources.insert(r.name, Box::new(DeviceResource { buffer, len })) {
                 // Sets that bind the old buffer go with it (its handle may be reused).
                 let (stale, kept) = std::mem::take(&mut self.bound)
                     .into_iter()
@@ -345,41 +351,24 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         memory_barrier(self.gpu(), cmd, transfer, transfer | stages);
         // Barriers from the accesses: a pass waits for earlier writes it reads or overwrites
         // and for earlier reads of what it writes.
-        let mut written: Vec<&str> = Vec::new();
-        let mut read: Vec<&str> = Vec::new();
+        let barriers = graph.barriers();
         let mut stamp = 0;
         let sets = &self.bound[bound].sets;
         for (i, pass) in graph.passes.iter().enumerate() {
-            let hazard = pass
-                .bindings
-                .iter()
-                .any(|b| written.contains(&b.resource) || (b.access.writes() && read.contains(&b.resource)));
-            if hazard {
+            if barriers[i] {
                 memory_barrier(self.gpu(), cmd, stages, stages);
-                written.clear();
-                read.clear();
             }
-            for b in &pass.bindings {
-                if b.access.writes() {
-                    written.push(b.resource);
-                }
-                if b.access.reads() {
-                    read.push(b.resource);
-                }
-            }
+            let invocations = pass.invocations(&graph.view);
             match &self.pipelines[pass.entry] {
                 Pipeline::Compute { kernel, workgroup } => {
-                    let groups =
-                        [pass.invocations.x.div_ceil(workgroup[0]), pass.invocations.y.div_ceil(workgroup[1]), 1];
+                    let groups = [invocations.x.div_ceil(workgroup[0]), invocations.y.div_ceil(workgroup[1]), 1];
                     kernel.record_set(self.gpu(), cmd, sets[i], &pass.push_constants, groups);
                 }
-                Pipeline::RayTracing(p) => {
-                    p.record_trace(self.gpu(), cmd, sets[i], pass.invocations.x, pass.invocations.y)?
-                }
+                Pipeline::RayTracing(p) => p.record_trace(self.gpu(), cmd, sets[i], invocations.x, invocations.y)?,
                 Pipeline::Raster(p) => {
                     let scene = inputs.raster.expect("checked by bound_buffers");
                     let params = bytemuck::pod_read_unaligned(&pass.push_constants);
-                    p.record(self.gpu(), cmd, sets[i], (scene.vertices, scene.vertex_count), &params, pass.invocations);
+                    p.record(self.gpu(), cmd, sets[i], (scene.vertices, scene.vertex_count), &params, invocations);
                 }
             }
             for snap in graph.snapshots.iter().filter(|s| s.after == i) {
@@ -429,17 +418,15 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         if self.adapters.is_none() {
             self.adapters = Some(Adapters::new(self.gpu())?);
         }
-        let size = frame.import.view.size();
-        let pixels = (size.x * size.y) as usize;
         let internal = [ENGINE_DEPTH, ENGINE_NORMALS, ENGINE_SECOND_DEPTH].map(|name| aokit_shaders::graph::Resource {
             name,
             elem: aokit_shaders::graph::Elem::U32,
-            len: pixels,
+            size: Size::TARGET,
             init: Init::Undefined,
             lifetime: Lifetime::PerFrame,
             doc: "",
         });
-        self.ensure_named(&internal[..if second.is_some() { 3 } else { 2 }])?;
+        self.ensure_named(&internal[..if second.is_some() { 3 } else { 2 }], &frame.import.view)?;
         // The frame `record` is about to count (for the kept sets' least-recently-used order).
         self.adapter_sets.frame = self.frame + 1;
         let adapters = self.adapters.as_ref().expect("made above");
@@ -464,8 +451,13 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             // XeGTAO's pass 0 reads only the view (spec gtao-raymarch-hybrid §2.4).
             let params = aokit_shaders::gtao::GtaoParams { view: frame.import.view, ..bytemuck::Zeroable::zeroed() };
             let bindings = [(inputs::LINEAR_DEPTH, Access::Read), (ENGINE_NORMALS, Access::Write)];
-            let normals_pass =
-                Pass::compute("normals_from_depth", "gtao_normals", &bindings, size, bytemuck::bytes_of(&params));
+            let normals_pass = Pass::compute(
+                "normals_from_depth",
+                "gtao_normals",
+                &bindings,
+                Extent::Full,
+                bytemuck::bytes_of(&params),
+            );
             // The graph's passes read the derived normals under their own name, so `record`
             // sees the read after pass 0's write and puts a barrier between them (bound to the
             // same buffer as `inputs.normals` below).

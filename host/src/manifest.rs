@@ -20,6 +20,78 @@ pub struct Manifest {
     /// `aokit_shaders::contract`.
     #[serde(default)]
     pub structs: Vec<StructManifest>,
+    /// Every technique of the registry: its settings and, at its default settings, its pass
+    /// graph.
+    #[serde(default)]
+    pub techniques: Vec<TechniqueManifest>,
+}
+
+/// One technique (`aokit_shaders::techniques`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct TechniqueManifest {
+    pub name: String,
+    pub summary: String,
+    pub settings: Vec<SettingManifest>,
+    /// What the graph reads besides its own resources (`aokit_shaders::graph::inputs`).
+    pub inputs: Vec<String>,
+    pub resources: Vec<ResourceManifest>,
+    pub passes: Vec<PassManifest>,
+    /// The resource holding the final AO (`f32` per full-target texel, 1 = unoccluded).
+    pub output: String,
+}
+
+/// One setting (`aokit_shaders::technique::Setting`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SettingManifest {
+    /// Key of `technique:key=value` and of the reports' options.
+    pub key: String,
+    /// `aokit`'s flag taking a value, and a value-less flag with the value it sets.
+    pub flag: Option<String>,
+    pub switch: Option<(String, String)>,
+    /// "count" (whole number), "number" or "choice".
+    pub kind: String,
+    /// Range of counts and numbers (`max` absent: unbounded).
+    pub min: Option<f64>,
+    pub max: Option<f64>,
+    pub choices: Vec<String>,
+    pub default: String,
+    pub help: String,
+}
+
+/// One storage buffer of a graph.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ResourceManifest {
+    pub name: String,
+    /// "f32" or "u32" (records are `u32` words holding the struct the binding names).
+    pub elem: String,
+    /// Element count as a formula of the full target `W×H` and inner image `w×h`: `·`
+    /// multiplies, `ceil`, `floor`, `max`; records and tables a number.
+    pub size: String,
+    /// "per_frame" (initialised every frame) or "persistent".
+    pub lifetime: String,
+    /// "fill 0x3f800000" (every element these bits, here 1.0f), "data" (a record or table the
+    /// host writes each frame: the module binding's struct), "undefined" (written before read).
+    pub init: String,
+    pub doc: String,
+}
+
+/// One dispatch, in graph order.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct PassManifest {
+    /// Timing label.
+    pub label: String,
+    /// The module ("raster": the fragment module; "ray_tracing": the ray-generation module).
+    pub entry: String,
+    /// "compute", "ray_tracing" (with `miss`, `any_hit`) or "raster" (with `vertex`).
+    pub kind: String,
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub stages: Vec<String>,
+    /// `(slot, resource or input, "read" | "write" | "read_write")`.
+    pub bindings: Vec<(u32, String, String)>,
+    /// Invocations `[x, y]` as formulas (compute: divide by the workgroup size, rounding up).
+    pub dispatch: [String; 2],
+    /// A memory barrier (shader writes → shader reads and writes) comes before this pass.
+    pub barrier_before: bool,
 }
 
 /// A `#[repr(C)]` struct: size, alignment, fields with byte offsets.
@@ -448,6 +520,7 @@ impl Manifest {
                     .collect(),
             })
             .collect();
+        self.techniques = techniques()?;
         let signatures = source::entry_points(shader_src)?;
         for m in &mut self.modules {
             let sig = signatures
@@ -606,4 +679,123 @@ impl Manifest {
         line(&mut h, "#endif /* AOKIT_H */");
         h
     }
+}
+
+/// The frame the technique section's graphs are built for: only their structure is written
+/// (sizes and dispatches as formulas), so any valid frame gives the same section.
+#[cfg(feature = "reflect")]
+pub fn reference_frame(inner: aokit_shaders::glam::UVec2, guard: u32) -> aokit_shaders::graph::FrameDesc {
+    use aokit_shaders::glam::Vec3;
+    let camera = aokit_shaders::common::camera::Camera::look_at(
+        Vec3::new(0.0, 1.0, 5.0),
+        Vec3::ZERO,
+        Vec3::Y,
+        1.0,
+        inner,
+        guard,
+        0.1,
+        100.0,
+    );
+    aokit_shaders::graph::FrameDesc { camera, radius: 0.5, exponent: 2.0, thickness: 0.0 }
+}
+
+/// The registry's techniques at their defaults.
+#[cfg(feature = "reflect")]
+fn techniques() -> Result<Vec<TechniqueManifest>, String> {
+    use aokit_shaders::graph::{Access, Elem, Init, Lifetime, PassKind};
+    use aokit_shaders::technique::Kind;
+    let frame = reference_frame(aokit_shaders::glam::UVec2::new(1920, 1080), 64);
+    let mut out = Vec::new();
+    for t in aokit_shaders::techniques::TECHNIQUES {
+        let configured = t.configure();
+        let defaults = configured.values();
+        let settings = t
+            .rows()
+            .into_iter()
+            .map(|r| {
+                let (kind, min, max, choices) = match r.kind {
+                    Kind::Count { min, max } => {
+                        ("count", Some(min as f64), (max < u32::MAX).then_some(max as f64), vec![])
+                    }
+                    Kind::Number { min, max } => {
+                        ("number", Some(min as f64), (max < f32::MAX).then_some(max as f64), vec![])
+                    }
+                    Kind::Choice(names) => ("choice", None, None, names.iter().map(|n| n.to_string()).collect()),
+                };
+                SettingManifest {
+                    key: r.key.into(),
+                    flag: r.flag.map(Into::into),
+                    switch: r.switch.map(|(f, v)| (f.into(), v.into())),
+                    kind: kind.into(),
+                    min,
+                    max,
+                    choices,
+                    default: defaults.iter().find(|(k, _)| *k == r.key).map(|(_, v)| v.clone()).unwrap_or_default(),
+                    help: r.help.into(),
+                }
+            })
+            .collect();
+        let graph = configured.graph(&frame)?;
+        let resources = graph
+            .resources
+            .iter()
+            .map(|r| ResourceManifest {
+                name: r.name.into(),
+                elem: match r.elem {
+                    Elem::F32 => "f32",
+                    Elem::U32 => "u32",
+                }
+                .into(),
+                size: r.size.formula(),
+                lifetime: match r.lifetime {
+                    Lifetime::PerFrame => "per_frame",
+                    Lifetime::Persistent => "persistent",
+                }
+                .into(),
+                init: match &r.init {
+                    Init::Fill(bits) => format!("fill {bits:#010x}"),
+                    Init::Data(_) => "data".into(),
+                    Init::Undefined => "undefined".into(),
+                },
+                doc: r.doc.into(),
+            })
+            .collect();
+        let barriers = graph.barriers();
+        let passes = graph
+            .passes
+            .iter()
+            .zip(barriers)
+            .map(|(p, barrier_before)| {
+                let (kind, stages) = match p.kind {
+                    PassKind::Compute => ("compute", vec![]),
+                    PassKind::RayTracing { miss, any_hit } => ("ray_tracing", vec![miss.into(), any_hit.into()]),
+                    PassKind::Raster { vertex } => ("raster", vec![vertex.into()]),
+                };
+                let access = |a: Access| match a {
+                    Access::Read => "read",
+                    Access::Write => "write",
+                    Access::ReadWrite => "read_write",
+                };
+                PassManifest {
+                    label: p.label.into(),
+                    entry: p.entry.into(),
+                    kind: kind.into(),
+                    stages,
+                    bindings: p.bindings.iter().map(|b| (b.slot, b.resource.into(), access(b.access).into())).collect(),
+                    dispatch: p.dispatch.formula(),
+                    barrier_before,
+                }
+            })
+            .collect();
+        out.push(TechniqueManifest {
+            name: t.name().into(),
+            summary: t.summary().into(),
+            settings,
+            inputs: graph.inputs().into_iter().map(Into::into).collect(),
+            resources,
+            passes,
+            output: graph.output.into(),
+        });
+    }
+    Ok(out)
 }

@@ -12,7 +12,7 @@
 //! executors keep resources and pipelines across frames and re-create a resource only when its
 //! size changes.
 
-use crate::common::camera::Camera;
+use crate::common::camera::{Camera, ViewParams};
 use crate::glam::UVec2;
 
 /// Input resources every technique may bind; the executor provides them.
@@ -76,17 +76,113 @@ pub enum Lifetime {
     Persistent,
 }
 
+/// A 2D extent as a function of the target: what a pass dispatches over and what a resource's
+/// texels cover. Evaluates for a view ([`Extent::size`]) and prints as a formula of `W×H` (the
+/// full target, inner image plus guard band) and `w×h` (the inner image) ([`Extent::formula`]).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Extent {
+    /// The full target `W×H`.
+    Full,
+    /// The inner image `w×h = (W − 2g)×(H − 2g)`.
+    Inner,
+    /// `(ceil(W/d) + 2b)×(ceil(H/d) + 2b)`: a reduced-resolution map with its own border of `b`
+    /// texels (the SD map and its guard band, spec svao-raysd §3).
+    Reduced { divisor: u32, border: u32 },
+    /// `max(1, floor(W/2^k))×max(1, floor(H/2^k))`: MIP level `k` of the full target (spec
+    /// gtao-raymarch-hybrid §2.3).
+    Mip(u32),
+}
+
+impl Extent {
+    pub fn size(self, view: &ViewParams) -> UVec2 {
+        let full = view.size();
+        match self {
+            Extent::Full => full,
+            Extent::Inner => full - 2 * view.guard,
+            Extent::Reduced { divisor, border } => {
+                UVec2::new(full.x.div_ceil(divisor), full.y.div_ceil(divisor)) + 2 * border
+            }
+            Extent::Mip(k) => UVec2::new((full.x >> k).max(1), (full.y >> k).max(1)),
+        }
+    }
+
+    /// `[x, y]` as formulas of `W`, `H`, `w`, `h`.
+    pub fn formula(self) -> [String; 2] {
+        let of = |v: &str| match self {
+            Extent::Full => v.to_string(),
+            Extent::Inner => v.to_lowercase(),
+            Extent::Reduced { divisor: 1, border: 0 } => v.to_string(),
+            Extent::Reduced { divisor: 1, border } => format!("{v} + {}", 2 * border),
+            Extent::Reduced { divisor, border: 0 } => format!("ceil({v}/{divisor})"),
+            Extent::Reduced { divisor, border } => format!("ceil({v}/{divisor}) + {}", 2 * border),
+            Extent::Mip(0) => v.to_string(),
+            Extent::Mip(k) => format!("max(1, floor({v}/{}))", 1u32 << k),
+        };
+        [of("W"), of("H")]
+    }
+}
+
+/// How many 32-bit elements a resource holds, as a function of the target.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Size {
+    /// `per_texel` elements for every texel of `extent`.
+    Texels { extent: Extent, per_texel: u32 },
+    /// MIP levels `0..levels` of the full target packed one after another.
+    MipChain { levels: u32 },
+    /// A fixed number (records, tables).
+    Words(usize),
+}
+
+impl Size {
+    /// One element per texel of the full target.
+    pub const TARGET: Size = Size::Texels { extent: Extent::Full, per_texel: 1 };
+
+    pub fn len(&self, view: &ViewParams) -> usize {
+        let area = |e: Extent| {
+            let s = e.size(view);
+            s.x as usize * s.y as usize
+        };
+        match *self {
+            Size::Texels { extent, per_texel } => area(extent) * per_texel as usize,
+            Size::MipChain { levels } => (0..levels).map(|k| area(Extent::Mip(k))).sum(),
+            Size::Words(n) => n,
+        }
+    }
+
+    /// The element count as a formula of `W`, `H`, `w`, `h` (`·` multiplies).
+    pub fn formula(&self) -> String {
+        let area = |e: Extent| {
+            let [x, y] = e.formula();
+            let term = |t: String| if t.contains(' ') { format!("({t})") } else { t };
+            format!("{}·{}", term(x), term(y))
+        };
+        match *self {
+            Size::Texels { extent, per_texel: 1 } => area(extent),
+            Size::Texels { extent, per_texel } => format!("({})·{per_texel}", area(extent)),
+            Size::MipChain { levels } => (0..levels).map(|k| area(Extent::Mip(k))).collect::<Vec<_>>().join(" + "),
+            Size::Words(n) => n.to_string(),
+        }
+    }
+}
+
 /// One storage buffer of the graph.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Resource {
     pub name: &'static str,
     pub elem: Elem,
-    /// Number of 32-bit elements.
-    pub len: usize,
+    /// Number of 32-bit elements ([`Resource::len`] for a view).
+    pub size: Size,
     pub init: Init,
     pub lifetime: Lifetime,
     /// What it holds, for people and the exported contract.
     pub doc: &'static str,
+}
+
+impl Resource {
+    /// Number of 32-bit elements for `view`.
+    pub fn len(&self, view: &ViewParams) -> usize {
+        self.size.len(view)
+    }
 }
 
 /// How a pass uses a binding.
@@ -139,9 +235,9 @@ pub struct Pass {
     pub entry: &'static str,
     pub kind: PassKind,
     pub bindings: Vec<Binding>,
-    /// Invocations in x and y (compute: rounded up to whole workgroups; ray tracing: the launch
-    /// size).
-    pub invocations: UVec2,
+    /// Invocations in x and y ([`Pass::invocations`] for a view; compute: rounded up to whole
+    /// workgroups; ray tracing: the launch size; raster: the viewport).
+    pub dispatch: Extent,
     /// Push-constant bytes (the kernel's `#[repr(C)]` parameter struct); empty when the kernel
     /// reads its parameters from a resource.
     pub push_constants: Vec<u8>,
@@ -153,7 +249,7 @@ impl Pass {
         label: &'static str,
         entry: &'static str,
         bindings: &[(&'static str, Access)],
-        invocations: UVec2,
+        dispatch: Extent,
         push_constants: &[u8],
     ) -> Pass {
         Pass {
@@ -161,9 +257,14 @@ impl Pass {
             entry,
             kind: PassKind::Compute,
             bindings: slots(bindings),
-            invocations,
+            dispatch,
             push_constants: push_constants.to_vec(),
         }
+    }
+
+    /// Invocations in x and y for `view`.
+    pub fn invocations(&self, view: &ViewParams) -> UVec2 {
+        self.dispatch.size(view)
     }
 
     /// The resource bound at `slot`.
@@ -231,14 +332,52 @@ impl Graph {
     /// written, binding slots are unique per pass, and the outputs exist. Executors call this
     /// once per new graph.
     pub fn validate(&self) -> Result<(), String> {
+        self.validate_bindings()
+    }
+
+    /// Per pass: whether a memory barrier (shader writes → shader reads and writes) must come
+    /// before it — when it reads or overwrites what a pass since the last barrier wrote, or
+    /// writes what one read. The GPU executor records exactly these; an engine replaying the
+    /// passes needs them too.
+    pub fn barriers(&self) -> Vec<bool> {
+        let (mut written, mut read): (Vec<&str>, Vec<&str>) = (Vec::new(), Vec::new());
+        let mut out = Vec::new();
+        for pass in &self.passes {
+            let hazard = pass
+                .bindings
+                .iter()
+                .any(|b| written.contains(&b.resource) || (b.access.writes() && read.contains(&b.resource)));
+            if hazard {
+                written.clear();
+                read.clear();
+            }
+            out.push(hazard);
+            for b in &pass.bindings {
+                if b.access.writes() {
+                    written.push(b.resource);
+                }
+                if b.access.reads() {
+                    read.push(b.resource);
+                }
+            }
+        }
+        out
+    }
+
+    fn validate_bindings(&self) -> Result<(), String> {
         for (i, r) in self.resources.iter().enumerate() {
             if inputs::ALL.contains(&r.name) || self.resources[..i].iter().any(|s| s.name == r.name) {
                 return Err(format!("resource '{}' is declared twice or shadows an input", r.name));
             }
             if let Init::Data(d) = &r.init
-                && d.len() > r.len
+                && d.len() > r.len(&self.view)
             {
-                return Err(format!("resource '{}': {} words of data for {} elements", r.name, d.len(), r.len));
+                return Err(format!(
+                    "resource '{}': {} words of data for {} elements",
+                    r.name,
+                    d.len(),
+                    r.len(&self.view)
+                ));
             }
         }
         for p in &self.passes {
@@ -265,7 +404,10 @@ impl Graph {
         }
         for s in &self.snapshots {
             let (from, to) = (self.resource(s.from), self.resource(s.to));
-            if s.after >= self.passes.len() || from.is_none() || from.map(|r| r.len) != to.map(|r| r.len) {
+            if s.after >= self.passes.len()
+                || from.is_none()
+                || from.map(|r| r.len(&self.view)) != to.map(|r| r.len(&self.view))
+            {
                 return Err(format!("snapshot of '{}' into '{}' is not between declared resources", s.from, s.to));
             }
         }
@@ -310,11 +452,11 @@ impl FrameDesc {
 }
 
 /// A per-frame `f32` image of the full target filled with `value`.
-pub fn target_f32(frame: &FrameDesc, name: &'static str, value: f32, doc: &'static str) -> Resource {
+pub fn target_f32(name: &'static str, value: f32, doc: &'static str) -> Resource {
     Resource {
         name,
         elem: Elem::F32,
-        len: frame.pixels(),
+        size: Size::TARGET,
         init: Init::Fill(value.to_bits()),
         lifetime: Lifetime::PerFrame,
         doc,
@@ -322,8 +464,8 @@ pub fn target_f32(frame: &FrameDesc, name: &'static str, value: f32, doc: &'stat
 }
 
 /// A per-frame `u32` image of the full target filled with `value`.
-pub fn target_u32(frame: &FrameDesc, name: &'static str, value: u32, doc: &'static str) -> Resource {
-    Resource { name, elem: Elem::U32, len: frame.pixels(), init: Init::Fill(value), lifetime: Lifetime::PerFrame, doc }
+pub fn target_u32(name: &'static str, value: u32, doc: &'static str) -> Resource {
+    Resource { name, elem: Elem::U32, size: Size::TARGET, init: Init::Fill(value), lifetime: Lifetime::PerFrame, doc }
 }
 
 /// A per-frame parameter record (or table) `value` as a one-element storage buffer.
@@ -336,5 +478,6 @@ pub fn record<T: bytemuck::Pod>(name: &'static str, values: &[T], doc: &'static 
             u32::from_le_bytes(w)
         })
         .collect();
-    Resource { name, elem: Elem::U32, len: words.len(), init: Init::Data(words), lifetime: Lifetime::PerFrame, doc }
+    let size = Size::Words(words.len());
+    Resource { name, elem: Elem::U32, size, init: Init::Data(words), lifetime: Lifetime::PerFrame, doc }
 }

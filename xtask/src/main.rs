@@ -86,6 +86,7 @@ fn build_spirv() -> Result<(), String> {
         rust_gpu: "0.11.0".into(),
         modules: Vec::new(),
         structs: Vec::new(),
+        techniques: Vec::new(),
     };
     for (entry, path) in &modules {
         let file = format!("{entry}.spv");

@@ -2,7 +2,7 @@
 
 use super::BlurParams;
 use crate::glam::uvec2;
-use crate::graph::{Access, FrameDesc, Pass, Resource, inputs, target_f32};
+use crate::graph::{Access, Extent, FrameDesc, Pass, Resource, inputs, target_f32};
 
 /// Depth-aware blur sharpness (spec svao-raysd §12).
 pub const SHARPNESS: f32 = 16.0;
@@ -18,13 +18,12 @@ pub fn blur_params(frame: &FrameDesc, direction: crate::glam::UVec2) -> BlurPara
 pub fn blur_passes(frame: &FrameDesc, input: &'static str, output: &'static str) -> (Vec<Resource>, Vec<Pass>) {
     const SCRATCH: &str = "blur_horizontal";
     let resources = vec![
-        target_f32(frame, SCRATCH, 1.0, "AO after the horizontal blur"),
-        target_f32(frame, output, 1.0, "AO after the cross-bilateral blur (spec svao-raysd §12)"),
+        target_f32(SCRATCH, 1.0, "AO after the horizontal blur"),
+        target_f32(output, 1.0, "AO after the cross-bilateral blur (spec svao-raysd §12)"),
     ];
-    let inner = frame.inner();
     let pass = |from, to, direction| {
         let bindings = [(from, Access::Read), (inputs::LINEAR_DEPTH, Access::Read), (to, Access::Write)];
-        Pass::compute("blur", "blur_main", &bindings, inner, bytemuck::bytes_of(&blur_params(frame, direction)))
+        Pass::compute("blur", "blur_main", &bindings, Extent::Inner, bytemuck::bytes_of(&blur_params(frame, direction)))
     };
     (resources, vec![pass(input, SCRATCH, uvec2(1, 0)), pass(SCRATCH, output, uvec2(0, 1))])
 }

@@ -2,7 +2,7 @@
 //! ray-generation pass over the inner image.
 
 use super::{GroundTruthFrame, GroundTruthParams};
-use crate::graph::{Access, Binding, FrameDesc, Graph, Pass, PassKind, inputs, record, slots, target_f32};
+use crate::graph::{Access, Binding, Extent, FrameDesc, Graph, Pass, PassKind, inputs, record, slots, target_f32};
 use crate::technique::{Declaration, Setting, Settings, single_layer};
 
 /// Ground-truth settings [defaults].
@@ -71,7 +71,7 @@ impl GroundTruthSettings {
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let resources = vec![
             record("groundtruth_frame", std::slice::from_ref(&self.frame(frame)), "camera + GroundTruthParams"),
-            target_f32(frame, "ao", 1.0, "ray-traced AO (spec §5), 1 = unoccluded"),
+            target_f32("ao", 1.0, "ray-traced AO (spec §5), 1 = unoccluded"),
         ];
         let mut bindings = slots(&[
             ("groundtruth_frame", Access::Read),
@@ -86,7 +86,7 @@ impl GroundTruthSettings {
             entry: "groundtruth_rgen",
             kind: PassKind::RayTracing { miss: "groundtruth_miss", any_hit: "groundtruth_ahit" },
             bindings,
-            invocations: frame.inner(),
+            dispatch: Extent::Inner,
             push_constants: Vec::new(),
         }];
         Graph { resources, passes, output: "ao", raw_output: "ao", snapshots: Vec::new(), view: frame.camera.view }

@@ -2,8 +2,10 @@
 //! PrefilterDepths level by level, optional normals from depth, MainPass, the denoise passes.
 //! The denoiser's passes are shared with the techniques that reuse it (ray march, hybrid).
 
-use super::{GtaoParams, MIP_LEVELS, mip_offset, mip_size};
-use crate::graph::{Access, Elem, FrameDesc, Graph, Init, Lifetime, Pass, Resource, inputs, target_f32, target_u32};
+use super::{GtaoParams, MIP_LEVELS};
+use crate::graph::{
+    Access, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, inputs, target_f32, target_u32,
+};
 use crate::technique::{Declaration, Setting, Settings, rays_counted, single_layer};
 
 /// XeGTAO quality presets (spec gtao-raymarch-hybrid §2.2): slices × steps per side; any other
@@ -177,32 +179,36 @@ impl GtaoSettings {
     /// Prefilter (5 MIP levels) → [normals from depth] → main pass → denoise.
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let params = self.params(frame);
-        let full = frame.size();
         let mips = Resource {
             name: "gtao_mips",
             elem: Elem::F32,
-            len: mip_offset(full, MIP_LEVELS),
+            size: Size::MipChain { levels: MIP_LEVELS },
             init: Init::Undefined,
             lifetime: Lifetime::PerFrame,
             doc: "packed 5-level working-depth MIP chain (spec gtao-raymarch-hybrid §2.3)",
         };
         let mut resources = vec![
             mips,
-            target_u32(frame, "gtao_terms", 0, "MainPass AO terms, 0–255 (spec §2.6)"),
-            target_u32(frame, "gtao_edges", 0, "packed depth edges of the denoiser (spec §2.6.1, read by §2.7)"),
+            target_u32("gtao_terms", 0, "MainPass AO terms, 0–255 (spec §2.6)"),
+            target_u32("gtao_edges", 0, "packed depth edges of the denoiser (spec §2.6.1, read by §2.7)"),
         ];
         let mut passes = Vec::new();
         for level in 0..MIP_LEVELS {
             let p = GtaoParams { pass: level, ..params };
             let bindings = [(inputs::LINEAR_DEPTH, Access::Read), ("gtao_mips", Access::ReadWrite)];
-            let size = mip_size(full, level);
-            passes.push(Pass::compute("gtao_prefilter", "gtao_prefilter", &bindings, size, bytemuck::bytes_of(&p)));
+            passes.push(Pass::compute(
+                "gtao_prefilter",
+                "gtao_prefilter",
+                &bindings,
+                Extent::Mip(level),
+                bytemuck::bytes_of(&p),
+            ));
         }
         let bytes = bytemuck::bytes_of(&params);
         let normals = if self.normals_from_depth {
-            resources.push(target_u32(frame, "gtao_normals", 0, "view normals derived from depth (spec §2.4)"));
+            resources.push(target_u32("gtao_normals", 0, "view normals derived from depth (spec §2.4)"));
             let bindings = [(inputs::LINEAR_DEPTH, Access::Read), ("gtao_normals", Access::Write)];
-            passes.push(Pass::compute("gtao_normals", "gtao_normals", &bindings, full, bytes));
+            passes.push(Pass::compute("gtao_normals", "gtao_normals", &bindings, Extent::Full, bytes));
             "gtao_normals"
         } else {
             inputs::VIEW_NORMALS
@@ -213,8 +219,8 @@ impl GtaoSettings {
             ("gtao_terms", Access::Write),
             ("gtao_edges", Access::Write),
         ];
-        passes.push(Pass::compute("gtao_main", "gtao_main", &main, full, bytes));
-        let (r, p) = denoise_passes(frame, &params, "gtao_terms", "gtao_edges", "ao_final", "gtao_denoise");
+        passes.push(Pass::compute("gtao_main", "gtao_main", &main, Extent::Full, bytes));
+        let (r, p) = denoise_passes(&params, "gtao_terms", "gtao_edges", "ao_final", "gtao_denoise");
         resources.extend(r);
         passes.extend(p);
         Graph {
@@ -232,7 +238,6 @@ impl GtaoSettings {
 /// `params.denoise_passes`) passes ping-ponging between two scratch images (`terms` stays
 /// intact); the last pass writes the visibility into `output`.
 pub fn denoise_passes(
-    frame: &FrameDesc,
     params: &GtaoParams,
     terms: &'static str,
     edges: &'static str,
@@ -242,16 +247,16 @@ pub fn denoise_passes(
     const PING: &str = "denoise_ping";
     const PONG: &str = "denoise_pong";
     let resources = vec![
-        target_u32(frame, PING, 0, "denoised AO terms (ping)"),
-        target_u32(frame, PONG, 0, "denoised AO terms (pong)"),
-        target_f32(frame, output, 1.0, "visibility after the last denoise pass (1 = unoccluded)"),
+        target_u32(PING, 0, "denoised AO terms (ping)"),
+        target_u32(PONG, 0, "denoised AO terms (pong)"),
+        target_f32(output, 1.0, "visibility after the last denoise pass (1 = unoccluded)"),
     ];
     let mut passes = Vec::new();
     let (mut from, mut to) = (terms, PING);
     for pass in 0..params.denoise_passes.max(1) {
         let p = GtaoParams { pass, ..*params };
         let bindings = [(from, Access::Read), (edges, Access::Read), (to, Access::Write), (output, Access::Write)];
-        passes.push(Pass::compute(label, "gtao_denoise", &bindings, frame.size(), bytemuck::bytes_of(&p)));
+        passes.push(Pass::compute(label, "gtao_denoise", &bindings, Extent::Full, bytemuck::bytes_of(&p)));
         (from, to) = (to, if to == PING { PONG } else { PING });
     }
     (resources, passes)
@@ -267,7 +272,7 @@ pub fn with_denoiser(frame: &FrameDesc, mut resources: Vec<Resource>, mut passes
         return Graph { resources, passes, output: "ao", raw_output: "ao", snapshots: Vec::new(), view };
     }
     let params = GtaoSettings { denoise_passes: denoise, ..Default::default() }.params(frame);
-    let (r, p) = denoise_passes(frame, &params, "ao_terms", "ao_edges", "ao_final", "denoise");
+    let (r, p) = denoise_passes(&params, "ao_terms", "ao_edges", "ao_final", "denoise");
     resources.extend(r);
     passes.extend(p);
     Graph { resources, passes, output: "ao_final", raw_output: "ao", snapshots: Vec::new(), view }

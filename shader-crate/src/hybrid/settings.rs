@@ -3,7 +3,9 @@
 //! then XeGTAO's denoiser.
 
 use super::{HybridFrame, HybridParams};
-use crate::graph::{Access, Binding, FrameDesc, Graph, Pass, PassKind, inputs, record, slots, target_f32, target_u32};
+use crate::graph::{
+    Access, Binding, Extent, FrameDesc, Graph, Pass, PassKind, inputs, record, slots, target_f32, target_u32,
+};
 use crate::gtao::settings::with_denoiser;
 use crate::raymarch::settings::DEPTH_BIAS;
 use crate::technique::{Declaration, Setting, Settings, single_layer};
@@ -128,9 +130,9 @@ impl HybridSettings {
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let resources = vec![
             record("hybrid_frame", std::slice::from_ref(&self.frame(frame)), "camera + HybridParams"),
-            target_f32(frame, "ao", 1.0, "blended screen/world visibility (spec §4.2 step 5), 1 = unoccluded"),
-            target_u32(frame, "ao_terms", 0, "the AO as the denoiser's 0–255 terms"),
-            target_u32(frame, "ao_edges", 0, "packed depth edges for the denoiser"),
+            target_f32("ao", 1.0, "blended screen/world visibility (spec §4.2 step 5), 1 = unoccluded"),
+            target_u32("ao_terms", 0, "the AO as the denoiser's 0–255 terms"),
+            target_u32("ao_edges", 0, "packed depth edges for the denoiser"),
         ];
         let mut bindings = slots(&[
             ("hybrid_frame", Access::Read),
@@ -147,7 +149,7 @@ impl HybridSettings {
             entry: "hybrid_rgen",
             kind: PassKind::RayTracing { miss: "groundtruth_miss", any_hit: "groundtruth_ahit" },
             bindings,
-            invocations: frame.size(),
+            dispatch: Extent::Full,
             push_constants: Vec::new(),
         }];
         with_denoiser(frame, resources, passes, self.denoise_passes)

@@ -2,7 +2,7 @@
 //! gtao-raymarch-hybrid §3): the march, then optionally XeGTAO's denoiser.
 
 use super::{Contribution, MAX_DIRECTIONS, RaymarchParams};
-use crate::graph::{Access, FrameDesc, Graph, Pass, inputs, record, target_f32, target_u32};
+use crate::graph::{Access, Extent, FrameDesc, Graph, Pass, inputs, record, target_f32, target_u32};
 use crate::gtao::settings::with_denoiser;
 use crate::technique::{Declaration, Setting, Settings, rays_counted, single_layer};
 
@@ -92,9 +92,9 @@ impl RaymarchSettings {
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let resources = vec![
             record("raymarch_kernel", &self.kernel(), "Poisson-disk directions (spec §3.3)"),
-            target_f32(frame, "ao", 1.0, "ray-marched accessibility (Eq. 2), 1 = unoccluded"),
-            target_u32(frame, "ao_terms", 0, "the AO as the denoiser's 0–255 terms"),
-            target_u32(frame, "ao_edges", 0, "packed depth edges for the denoiser"),
+            target_f32("ao", 1.0, "ray-marched accessibility (Eq. 2), 1 = unoccluded"),
+            target_u32("ao_terms", 0, "the AO as the denoiser's 0–255 terms"),
+            target_u32("ao_edges", 0, "packed depth edges for the denoiser"),
         ];
         let bindings = [
             (inputs::LINEAR_DEPTH, Access::Read),
@@ -106,7 +106,7 @@ impl RaymarchSettings {
         ];
         let params = self.params(frame);
         let passes =
-            vec![Pass::compute("raymarch", "raymarch_main", &bindings, frame.size(), bytemuck::bytes_of(&params))];
+            vec![Pass::compute("raymarch", "raymarch_main", &bindings, Extent::Full, bytemuck::bytes_of(&params))];
         with_denoiser(frame, resources, passes, self.denoise_passes)
     }
 }

@@ -9,8 +9,8 @@ use crate::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
 use crate::common::tables::JitterTable;
 use crate::glam::{UVec2, uvec2};
 use crate::graph::{
-    Access, Binding, Elem, FrameDesc, Graph, Init, Lifetime, Pass, PassKind, Resource, Snapshot, inputs, record, slots,
-    target_f32, target_u32,
+    Access, Binding, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, PassKind, Resource, Size, Snapshot, inputs,
+    record, slots, target_f32, target_u32,
 };
 use crate::technique::{Declaration, Setting, Settings, rays_counted};
 use crate::vao::kernel::{KERNEL_HBAO, KERNEL_VAO};
@@ -248,34 +248,38 @@ impl SvaoSettings {
     pub fn graph(&self, frame: &FrameDesc, secondary: Secondary) -> Result<Graph, String> {
         let svao = self.frame(frame, secondary);
         let params = &svao.params;
-        let sd_size = params.sd_size();
-        let texels = (sd_size.x * sd_size.y) as usize;
+        // The SD map's texels: its reduced resolution plus its guard band (one texel when there
+        // is no SD map).
+        let sd_extent = Extent::Reduced { divisor: self.divisor, border: params.sd_guard };
+        let sd_texels = |per_texel| match secondary {
+            Secondary::StochasticDepth => Size::Texels { extent: sd_extent, per_texel },
+            _ => Size::Words(per_texel as usize),
+        };
         // Dual depth reads the peeled layer; single depth binds the depth buffer there (unread).
         let depth2 = if self.dual { inputs::SECOND_DEPTH } else { inputs::LINEAR_DEPTH };
         let per_frame =
-            |name, elem, len, init, doc| Resource { name, elem, len, init, lifetime: Lifetime::PerFrame, doc };
+            |name, elem, size, init, doc| Resource { name, elem, size, init, lifetime: Lifetime::PerFrame, doc };
         let mut resources = vec![
             record("svao_frame", std::slice::from_ref(&svao), "camera + SvaoParams of both AO passes and the rays"),
-            target_f32(frame, "ao", 1.0, "AO: final after pass 1 where unflagged, refined by pass 2 (spec §5, §9)"),
-            target_u32(frame, "refine_mask", 0, "per-pixel bit mask of the samples pass 1 flagged (spec §5)"),
+            target_f32("ao", 1.0, "AO: final after pass 1 where unflagged, refined by pass 2 (spec §5, §9)"),
+            target_u32("refine_mask", 0, "per-pixel bit mask of the samples pass 1 flagged (spec §5)"),
             per_frame(
                 "ray_min",
                 Elem::U32,
-                texels,
+                sd_texels(1),
                 Init::Fill(RAY_MIN_CLEAR),
                 "per-SD-texel ray tMin, float bits (§6)",
             ),
             per_frame(
                 "ray_max",
                 Elem::U32,
-                texels,
+                sd_texels(1),
                 Init::Fill(RAY_MAX_CLEAR),
                 "per-SD-texel ray tMax, float bits (§6)",
             ),
         ];
         use Access::{Read, ReadWrite, Write};
         let (g, n) = (inputs::LINEAR_DEPTH, inputs::VIEW_NORMALS);
-        let inner = frame.inner();
         let pass1 = [
             ("svao_frame", Read),
             (g, Read),
@@ -286,16 +290,15 @@ impl SvaoSettings {
             ("ray_max", ReadWrite),
             (depth2, Read),
         ];
-        let mut passes = vec![Pass::compute("ao_pass1", "svao_pass1", &pass1, inner, &[])];
+        let mut passes = vec![Pass::compute("ao_pass1", "svao_pass1", &pass1, Extent::Inner, &[])];
         let scene = crate::groundtruth::settings::alpha_bindings;
         match secondary {
             Secondary::Disabled => {}
             Secondary::StochasticDepth => {
-                let layers = texels * params.sd_layers as usize;
                 resources.push(per_frame(
                     "sd_map",
                     Elem::F32,
-                    layers,
+                    sd_texels(params.sd_layers),
                     Init::Fill(1f32.to_bits()),
                     "N normalized depths per SD texel (spec §7)",
                 ));
@@ -323,7 +326,7 @@ impl SvaoSettings {
                         entry: "rastersd_fs",
                         kind: PassKind::Raster { vertex: "gbuffer_vs" },
                         bindings,
-                        invocations: sd_size,
+                        dispatch: sd_extent,
                         push_constants: bytemuck::bytes_of(&raster).to_vec(),
                     });
                 }
@@ -342,7 +345,7 @@ impl SvaoSettings {
                     entry: "raysd_rgen",
                     kind: PassKind::RayTracing { miss: "raysd_miss", any_hit: "raysd_ahit" },
                     bindings,
-                    invocations: sd_size,
+                    dispatch: sd_extent,
                     push_constants: Vec::new(),
                 };
                 if !self.raster {
@@ -357,7 +360,7 @@ impl SvaoSettings {
                     ("sd_map", Read),
                     (depth2, Read),
                 ];
-                passes.push(Pass::compute("ao_pass2", "raysd_pass2", &pass2, inner, &[]));
+                passes.push(Pass::compute("ao_pass2", "raysd_pass2", &pass2, Extent::Inner, &[]));
             }
             Secondary::Raytraced => {
                 let mut bindings = slots(&[
@@ -375,7 +378,7 @@ impl SvaoSettings {
                     entry: "raysvao_rgen",
                     kind: PassKind::RayTracing { miss: "raysvao_miss", any_hit: "raysvao_ahit" },
                     bindings,
-                    invocations: inner,
+                    dispatch: Extent::Inner,
                     push_constants: Vec::new(),
                 });
             }
@@ -383,7 +386,7 @@ impl SvaoSettings {
         let (r, p) = blur_passes(frame, "ao", "ao_final");
         resources.extend(r);
         passes.extend(p);
-        resources.push(target_f32(frame, "ao_pass1", 1.0, "copy of the AO after pass 1, for reports"));
+        resources.push(target_f32("ao_pass1", 1.0, "copy of the AO after pass 1, for reports"));
         let snapshots = vec![Snapshot { after: 0, from: "ao", to: "ao_pass1" }];
         Ok(Graph { resources, passes, output: "ao_final", raw_output: "ao", snapshots, view: frame.camera.view })
     }

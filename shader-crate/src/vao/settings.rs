@@ -3,7 +3,7 @@
 
 use super::VaoParams;
 use crate::blur::graph::blur_passes;
-use crate::graph::{Access, FrameDesc, Graph, Pass, inputs, target_f32};
+use crate::graph::{Access, Extent, FrameDesc, Graph, Pass, inputs, target_f32};
 use crate::svao::settings::{SvaoSettings, stenciled, unrefined};
 use crate::technique::Declaration;
 
@@ -33,10 +33,10 @@ pub fn vao_params(frame: &FrameDesc) -> VaoParams {
 
 /// VAO → blur.
 pub fn graph(frame: &FrameDesc) -> Graph {
-    let mut resources = vec![target_f32(frame, "ao", 1.0, "VAO before the blur (1 = unoccluded)")];
+    let mut resources = vec![target_f32("ao", 1.0, "VAO before the blur (1 = unoccluded)")];
     let bindings = [(inputs::LINEAR_DEPTH, Access::Read), (inputs::VIEW_NORMALS, Access::Read), ("ao", Access::Write)];
     let mut passes =
-        vec![Pass::compute("vao", "vao_main", &bindings, frame.inner(), bytemuck::bytes_of(&vao_params(frame)))];
+        vec![Pass::compute("vao", "vao_main", &bindings, Extent::Inner, bytemuck::bytes_of(&vao_params(frame)))];
     let (r, p) = blur_passes(frame, "ao", "ao_final");
     resources.extend(r);
     passes.extend(p);
