@@ -151,7 +151,14 @@ impl clap::Args for TechniqueArgs {
             let applies = format!("[{}]", f.techniques.join(", "));
             let arg = clap::Arg::new(f.name).long(f.name).help_heading("Technique settings");
             let arg = match (f.switch, f.row.kind) {
-                (Some(_), _) => arg.action(clap::ArgAction::SetTrue).help(format!("{} {applies}", f.row.help)),
+                (Some(_), _) => {
+                    let arg = arg.action(clap::ArgAction::SetTrue).help(format!("{} {applies}", f.row.help));
+                    // A switch and the value flag of the same setting contradict each other.
+                    match f.row.flag {
+                        Some(value_flag) => arg.conflicts_with(value_flag),
+                        None => arg,
+                    }
+                }
                 (None, Kind::Choice(names)) => arg
                     .value_parser(clap::builder::PossibleValuesParser::new(names))
                     .default_value(f.row.default.clone())

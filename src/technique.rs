@@ -33,8 +33,8 @@ impl Clone for Technique {
     }
 }
 
-/// Settings given on the command line, in the order given: `(flag, value)`, no value for a
-/// value-less switch. They apply to every technique that has the flag.
+/// Settings given on the command line: `(flag, value)`, no value for a value-less switch. They
+/// apply to every technique that has the flag, in the order of the technique's settings rows.
 #[derive(Clone, Debug, Default)]
 pub struct CliSettings(pub Vec<(String, Option<String>)>);
 
@@ -69,8 +69,22 @@ impl Technique {
     pub fn parse(spec: &str, cli: &CliSettings) -> Result<Technique, String> {
         let mut parts = spec.trim().split(':');
         let mut t = Technique::named(parts.next().unwrap_or_default())?;
-        let rows = t.rows();
-        for row in &rows {
+        let mut overrides = Vec::new();
+        for part in parts {
+            let (key, value) = part.split_once('=').ok_or_else(|| format!("'{part}' in '{spec}' is not key=value"))?;
+            if !t.rows().iter().any(|r| r.key == key) {
+                // The technique's own message, naming the keys it has.
+                t.0.set(key, value).map_err(|e| format!("'{spec}': {e}"))?;
+            }
+            overrides.push((key, value));
+        }
+        // Row order (a preset before its slices and steps, a variant before its weight), the
+        // override after the name winning over the flag of the same setting.
+        for row in t.rows() {
+            if let Some((_, value)) = overrides.iter().rev().find(|(k, _)| *k == row.key) {
+                t.0.set(row.key, value).map_err(|e| format!("'{spec}': {e}"))?;
+                continue;
+            }
             for (flag, value) in &cli.0 {
                 let matches = match value {
                     Some(_) => row.flag == Some(flag.as_str()),
@@ -80,10 +94,6 @@ impl Technique {
                     t.0.set_flag(flag, value.as_deref())?;
                 }
             }
-        }
-        for part in parts {
-            let (key, value) = part.split_once('=').ok_or_else(|| format!("'{part}' in '{spec}' is not key=value"))?;
-            t.0.set(key, value).map_err(|e| format!("'{spec}': {e}"))?;
         }
         t.0.validate().map_err(|e| format!("'{spec}': {e}"))?;
         Ok(t)

@@ -91,6 +91,17 @@ fn the_header_compiles_and_c_lays_out_every_struct_as_rust_does() {
     let asserts = header.matches("_Static_assert(offsetof").count();
     assert!(asserts >= 80, "{asserts} offset assertions");
 
+    // C++ engines include it too.
+    let cpp = Command::new("c++")
+        .args(["-std=c++11", "-Wall", "-Werror", "-fsyntax-only", "-x", "c++", "-I"])
+        .arg(&dir)
+        .arg(dir.join("check.c"))
+        .output();
+    match cpp {
+        Ok(out) => assert!(out.status.success(), "aokit.h in C++:\n{}", String::from_utf8_lossy(&out.stderr)),
+        Err(e) => assert!(std::env::var_os("CI").is_none(), "no c++ in CI: {e}"),
+    }
+
     // The assertions bite: a header claiming another offset for one field is refused.
     let wrong =
         header.replacen("offsetof(aokit_VaoParams, radius) == ", "offsetof(aokit_VaoParams, radius) == 4 + ", 1);

@@ -116,8 +116,8 @@ fn every_setting_round_trips_refuses_bad_values_and_changes_the_graph() {
             };
             for b in bad {
                 let e = base.clone().set(row.key, &b).expect_err(&format!("{} {}={b} accepted", t.name(), row.key));
-                let named = row.flag.or(row.switch.map(|s| s.0)).unwrap();
-                assert!(e.contains(&format!("--{named}")) && !e.contains('\n'), "{e}");
+                let named = row.flag.map_or(row.key.to_string(), |f| format!("--{f}"));
+                assert!(e.contains(&named) && !e.contains('\n'), "{e}");
             }
             settings += 1;
         }
@@ -133,6 +133,12 @@ fn a_setting_that_does_not_reach_the_graph_is_caught() {
     let mut changed = base.clone();
     changed.set("sd-layers", "8").unwrap();
     assert_ne!(effect(&changed, &frame), effect(&base, &frame));
+    // And a value that does not reach it shows as no change: the peel separation of single
+    // depth (it only matters with primary=dual, which the test above switches on).
+    let single = Technique::named("vao").unwrap();
+    let mut separated = single.clone();
+    separated.set("peel-separation", "0.5").unwrap();
+    assert_eq!(effect(&separated, &frame), effect(&single, &frame));
     // `kernel` is fixed for hbao-sd: the technique refuses it instead of ignoring it.
     let e = Technique::named("hbao-sd").unwrap().set("kernel", "vao").unwrap_err();
     assert!(e.contains("hbao-sd has no option 'kernel'"), "{e}");
@@ -194,7 +200,19 @@ fn flags_come_from_the_rows_and_apply_where_they_are_read() {
     assert_eq!((d["preset"].as_str(), d["slices"].as_u64(), d["steps"].as_u64()), (Some("custom"), Some(4), Some(2)));
     let t = parse_cli(&["--gtao-slices", "9", "--gtao-steps", "3"]).unwrap().technique("gtao").unwrap();
     assert_eq!(t.describe()["preset"], "ultra");
-    // The hybrid's variant is applied before its world weight, whatever the order typed.
-    let t = parse_cli(&["--world-weight", "0.25", "--hybrid-variant", "world"]).unwrap().technique("hybrid").unwrap();
-    assert_eq!((t.describe()["variant"].as_str(), t.describe()["world_weight"].as_f64()), (Some("world"), Some(0.25)));
+    // The hybrid's variant is applied before its world weight, whatever the order typed; a
+    // weight the variant cannot blend (world rays only, weight 0.25) is refused.
+    let t = parse_cli(&["--world-weight", "0.25", "--hybrid-variant", "mixed"]).unwrap().technique("hybrid").unwrap();
+    assert_eq!((t.describe()["variant"].as_str(), t.describe()["world_weight"].as_f64()), (Some("mixed"), Some(0.25)));
+    let e = parse_cli(&["--world-weight", "0.25", "--hybrid-variant", "world"]).unwrap().technique("hybrid");
+    assert!(e.unwrap_err().contains("the world variant blends nothing else"));
+    // Flags and overrides together in row order, an override winning over the flag of its
+    // setting: the preset first, then slices on top of it.
+    let args = parse_cli(&["--gtao-slices", "8"]).unwrap();
+    let d = args.technique("gtao:preset=low").unwrap().describe();
+    assert_eq!((d["preset"].as_str(), d["slices"].as_u64(), d["steps"].as_u64()), (Some("custom"), Some(8), Some(2)));
+    let d = parse_cli(&[]).unwrap().technique("gtao:slices=4:preset=low").unwrap().describe();
+    assert_eq!((d["slices"].as_u64(), d["steps"].as_u64()), (Some(4), Some(2)));
+    // A switch and the value flag of one setting conflict.
+    assert!(parse_cli(&["--no-jitter", "--jitter", "paper"]).is_err());
 }

@@ -191,7 +191,9 @@ impl KeptSets {
     /// Evict the sets that bind the object with this raw handle (destroyed: a new object may
     /// reuse the handle).
     pub(crate) fn forget(&mut self, raw: u64) {
-        let (stale, kept) = std::mem::take(&mut self.entries).into_iter().partition(|e: &KeptSet| e.key.contains(&raw));
+        // Keys are [kind, handle, layout] per descriptor: compare the handles.
+        let binds = |e: &KeptSet| e.key.chunks(3).any(|d| d[1] == raw);
+        let (stale, kept) = std::mem::take(&mut self.entries).into_iter().partition(binds);
         self.entries = kept;
         self.evicted.extend(stale.into_iter().map(|e| e.pool));
     }

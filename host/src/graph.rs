@@ -392,7 +392,10 @@ impl<G: Borrow<Gpu>> AoContext<G> {
     /// Record one frame of `graph` on the engine's images into `cmd`: import the depth (and
     /// normals, or derive them from depth) into aokit's internal layout, run the graph, export
     /// `graph.output` into `frame.output`. Same contract as [`AoContext::record`]; the images'
-    /// layouts and barriers are the caller's (see `crate::adapters`).
+    /// layouts and barriers are the caller's (see `crate::adapters`). The adapters' descriptor
+    /// sets are kept per image views: after destroying a view an earlier frame used (e.g. on a
+    /// resize), call [`AoContext::invalidate_bindings`] before the next frame, since a new view
+    /// may get the old handle.
     pub fn record_engine(
         &mut self,
         cmd: vk::CommandBuffer,
@@ -595,6 +598,31 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             counts.iter().map(|(&ty, &n)| vk::DescriptorPoolSize::default().ty(ty).descriptor_count(n)).collect();
         let info = vk::DescriptorPoolCreateInfo::default().max_sets(graph.passes.len() as u32).pool_sizes(&sizes);
         let pool = unsafe { self.gpu().device.create_descriptor_pool(&info, None)? };
+        let sets = self.write_sets(graph, pool, inputs);
+        let sets = match sets {
+            Ok(sets) => sets,
+            Err(e) => {
+                unsafe { self.gpu().device.destroy_descriptor_pool(pool, None) };
+                return Err(e);
+            }
+        };
+        if self.bound.len() >= KEPT_SETS {
+            let oldest = (0..self.bound.len()).min_by_key(|&i| self.bound[i].used).expect("not empty");
+            let old = self.bound.remove(oldest);
+            self.retired.push((self.frame, Retired::Pool(old.pool)));
+        }
+        self.bound.push(BoundSets { key, pool, sets, used: self.frame });
+        self.bound_made += 1;
+        Ok(self.bound.len() - 1)
+    }
+
+    /// One descriptor set per pass from `pool`, binding each slot's buffer (or the TLAS).
+    fn write_sets(
+        &self,
+        graph: &Graph,
+        pool: vk::DescriptorPool,
+        inputs: &GpuInputs,
+    ) -> Result<Vec<vk::DescriptorSet>, GpuError> {
         let mut sets = Vec::new();
         for pass in &graph.passes {
             let (layout, count) = match &self.pipelines[pass.entry] {
@@ -614,14 +642,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             }
             sets.push(self.gpu().descriptor_set(pool, layout, &descriptors)?);
         }
-        if self.bound.len() >= KEPT_SETS {
-            let oldest = (0..self.bound.len()).min_by_key(|&i| self.bound[i].used).expect("not empty");
-            let old = self.bound.remove(oldest);
-            self.retired.push((self.frame, Retired::Pool(old.pool)));
-        }
-        self.bound.push(BoundSets { key, pool, sets, used: self.frame });
-        self.bound_made += 1;
-        Ok(self.bound.len() - 1)
+        Ok(sets)
     }
 
     /// A timestamp query pool with room for the graph's labels.

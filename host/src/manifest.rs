@@ -396,7 +396,13 @@ pub mod source {
             let Some(text) = p.attrs.iter().filter_map(spirv_attr).next() else { continue };
             let name = p.pat.to_token_stream().to_string();
             let ty = p.ty.to_token_stream().to_string().replace(' ', "");
-            let ty = ty.trim_start_matches('&').trim_start_matches("mut").to_string();
+            // `&'a mut [f32]` → `[f32]`.
+            let ty = ty.trim_start_matches('&');
+            let ty = match ty.strip_prefix('\'') {
+                Some(rest) => rest.trim_start_matches(|c: char| c.is_alphanumeric() || c == '_'),
+                None => ty,
+            };
+            let ty = ty.trim_start_matches("mut").to_string();
             if text.contains("push_constant") {
                 sig.push_constants = Some(ty);
             } else if let (Some(set), Some(binding)) =
@@ -613,6 +619,17 @@ impl Manifest {
         line(&mut h, " * Layouts are the Rust compiler's (#[repr(C)]); the _Static_asserts check that this C");
         line(&mut h, " * compiler lays them out the same. Matrices are column-major. See assets/README.md. */");
         line(&mut h, "#ifndef AOKIT_H\n#define AOKIT_H\n\n#include <stddef.h>\n#include <stdint.h>\n");
+        line(&mut h, "#ifdef __cplusplus /* the C11 keywords in C++11 */");
+        line(
+            &mut h,
+            "#define _Alignas(n) alignas(n)\n#define _Alignof(t) alignof(t)\n#define _Static_assert(c, m) static_assert(c, m)",
+        );
+        line(&mut h, "#endif");
+        line(
+            &mut h,
+            "#ifdef near /* <windows.h> defines near and far as empty macros; ViewParams has fields so named */",
+        );
+        line(&mut h, "#undef near\n#undef far\n#endif\n");
         line(&mut h, "/* Vectors and matrices (glam). */");
         for (name, component, n, size, align) in GLAM_TYPES {
             let c = c_type(name);
@@ -638,6 +655,7 @@ impl Manifest {
             }
             line(&mut h, &format!("}} {c};"));
             line(&mut h, &format!("_Static_assert(sizeof({c}) == {}, \"{} size\");", s.size, s.name));
+            line(&mut h, &format!("_Static_assert(_Alignof({c}) == {}, \"{} alignment\");", s.align, s.name));
             for f in &s.fields {
                 line(
                     &mut h,
@@ -718,7 +736,9 @@ fn techniques() -> Result<Vec<TechniqueManifest>, String> {
                         ("count", Some(min as f64), (max < u32::MAX).then_some(max as f64), vec![])
                     }
                     Kind::Number { min, max } => {
-                        ("number", Some(min as f64), (max < f32::MAX).then_some(max as f64), vec![])
+                        // Through the f32's shortest decimal form: 0.3, not 0.30000001192092896.
+                        let exact = |v: f32| v.to_string().parse::<f64>().expect("a number");
+                        ("number", Some(exact(min)), (max < f32::MAX).then_some(exact(max)), vec![])
                     }
                     Kind::Choice(names) => ("choice", None, None, names.iter().map(|n| n.to_string()).collect()),
                 };

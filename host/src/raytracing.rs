@@ -228,12 +228,14 @@ impl SceneAccel {
     /// - triangle geometry, one geometry per BLAS; `uvs` has 3 corners per triangle and
     ///   `materials` one material per triangle, over every BLAS's triangles concatenated;
     /// - every instance's custom index is the index of its BLAS's first triangle in those
-    ///   tables (the any-hit reads triangle `InstanceCustomIndex + PrimitiveId`);
-    /// - instance mask with every bit aokit traces with (0xff) and SBT record offset 0 (aokit's
-    ///   pipelines have one hit group); facing does not matter (rays do not cull);
-    /// - geometry with alpha-masked materials must not be `OPAQUE` (the any-hit alpha-tests
-    ///   it); opaque geometry may be, except that Ray-SD's stochastic depth map and Ray-SVAO
-    ///   trace with `NO_OPAQUE` so their any-hit sees every triangle anyway.
+    ///   tables (the any-hit reads triangle `InstanceCustomIndex + PrimitiveId`; 24 bits, so
+    ///   at most 2^24 triangles; a triangle beyond the tables is treated as opaque);
+    /// - a non-zero instance mask (aokit traces with cull mask 0xff) and SBT record offset 0
+    ///   (aokit's pipelines have one hit group); facing does not matter (rays do not cull);
+    /// - geometry with alpha-masked materials neither `OPAQUE` nor in an instance flagged
+    ///   `FORCE_OPAQUE` (the ground truth and hybrid skip the any-hit, and so the alpha test,
+    ///   on opaque triangles); Ray-SD's stochastic depth map and Ray-SVAO trace with
+    ///   `NO_OPAQUE`, so their any-hit sees every triangle anyway.
     pub fn from_engine_tlas(
         gpu: &Gpu,
         tlas: vk::AccelerationStructureKHR,

@@ -4,7 +4,7 @@
 //! comments). The xtask turns them into `assets/include/aokit.h` and the manifest's constant
 //! blocks, so an engine reads each push-constant block and buffer record from one source.
 
-use crate::glam::{IVec2, Mat3, Mat4, UVec2, UVec3, UVec4, Vec2, Vec3, Vec4};
+use crate::glam::{IVec2, Mat4, UVec2, UVec3, UVec4, Vec2, Vec3, Vec4};
 
 /// One field of a shared struct.
 #[derive(Clone, Debug)]
@@ -39,7 +39,7 @@ pub trait Layout {
 macro_rules! plain {
     ($($t:ty),*) => {$(impl Layout for $t { fn layout() -> Option<StructLayout> { None } })*};
 }
-plain!(f32, u32, i32, Vec2, Vec3, Vec4, UVec2, UVec3, UVec4, IVec2, Mat3, Mat4);
+plain!(f32, u32, i32, Vec2, Vec3, Vec4, UVec2, UVec3, UVec4, IVec2, Mat4);
 
 impl<T: Layout, const N: usize> Layout for [T; N] {
     fn layout() -> Option<StructLayout> {

@@ -109,11 +109,12 @@ impl<S> Setting<S> {
         Setting { help, ..self }
     }
 
-    /// The name the user knows the setting by: its flag, else its key.
+    /// The name a value of the setting is given by: its value flag, else its key (a value-less
+    /// switch never carries a wrong value).
     pub fn user_name(&self) -> String {
-        match (self.flag, self.switch) {
-            (Some(f), _) | (None, Some((f, _))) => format!("--{f}"),
-            (None, None) => self.key.to_string(),
+        match self.flag {
+            Some(f) => format!("--{f}"),
+            None => self.key.to_string(),
         }
     }
 

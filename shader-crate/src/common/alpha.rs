@@ -5,7 +5,8 @@
 //! The tables are per triangle: `uvs[3·i ..]` (corners), `materials[i]`. A GPU any-hit looks up
 //! triangle `i = InstanceCustomIndex + PrimitiveId`: aokit's own TLAS has one instance with
 //! custom index 0; an engine's own TLAS gives every instance the index of its geometry's first
-//! triangle in the tables (one geometry per BLAS, instances of one BLAS share the index).
+//! triangle in the tables (one geometry per BLAS, instances of one BLAS share the index; the
+//! custom index has 24 bits). A triangle beyond the tables is opaque.
 
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
@@ -59,7 +60,11 @@ pub fn triangle_alpha_passes(
     prim: u32,
     bary: Vec2,
 ) -> bool {
+    // A triangle outside the tables (an engine instance without alpha data) is opaque.
     let i = 3 * prim as usize;
+    if prim as usize >= materials.len() || i + 2 >= uvs.len() {
+        return true;
+    }
     let uv = uvs[i] * (1.0 - bary.x - bary.y) + uvs[i + 1] * bary.x + uvs[i + 2] * bary.y;
     alpha_test_passes(headers, texels, materials[prim as usize], uv)
 }

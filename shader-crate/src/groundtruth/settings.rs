@@ -30,7 +30,7 @@ pub fn alpha_bindings(first: u32) -> impl Iterator<Item = Binding> {
 
 impl Settings for GroundTruthSettings {
     const ROWS: &'static [Setting<Self>] = &[
-        Setting::<Self>::count("spp", 1, u32::MAX, |s| &mut s.spp).help("Ground truth: rays per pixel"),
+        Setting::<Self>::count("spp", 1, 65536, |s| &mut s.spp).help("Ground truth: rays per pixel"),
         Setting::<Self>::switch("sampling", &["cosine", "uniform"], |s| &mut s.uniform)
             .only_switch("uniform", "uniform")
             .help("Ground truth: cosine-weighted hemisphere sampling; --uniform samples uniformly, weighted by cos θ"),

@@ -43,7 +43,7 @@ impl Settings for HybridSettings {
         Setting::<Self>::number("world-weight", 0.0, 1.0, |s| &mut s.world_weight)
             .flag("world-weight")
             .help("Hybrid AO: weight of the world rays (set after the variant)"),
-        Setting::<Self>::count("screen-steps", 1, u32::MAX, |s| &mut s.screen_steps)
+        Setting::<Self>::count("screen-steps", 1, 256, |s| &mut s.screen_steps)
             .flag("hybrid-screen-steps")
             .help("Hybrid AO: steps of a screen ray"),
         Setting::<Self>::count("denoise", 0, 3, |s| &mut s.denoise_passes)
@@ -54,6 +54,15 @@ impl Settings for HybridSettings {
     fn check(&self) -> Result<(), String> {
         if self.screen_rays + self.world_rays == 0 {
             return Err("hybrid needs at least one ray per pixel".into());
+        }
+        // The blend (1 − w)·mean(screen) + w·mean(world) (spec §4.2 step 5) needs both means
+        // where both weights are non-zero.
+        if (self.screen_rays == 0 && self.world_weight != 1.0) || (self.world_rays == 0 && self.world_weight != 0.0) {
+            return Err(format!(
+                "--world-weight {}: the {} variant blends nothing else (use the mixed variant to weight)",
+                self.world_weight,
+                if self.screen_rays == 0 { "world" } else { "screen" }
+            ));
         }
         Ok(())
     }

@@ -37,7 +37,7 @@ impl Settings for RaymarchSettings {
         Setting::<Self>::count("directions", 1, MAX_DIRECTIONS, |s| &mut s.directions)
             .flag("rm-directions")
             .help("Ray-marched SSAO: directions N (the paper uses 8, 16, 24; spec §3.2)"),
-        Setting::<Self>::count("steps", 1, u32::MAX, |s| &mut s.steps)
+        Setting::<Self>::count("steps", 1, 256, |s| &mut s.steps)
             .flag("rm-steps")
             .help("Ray-marched SSAO: steps per direction"),
         Setting::<Self>::number("alpha", 0.0, f32::MAX, |s| &mut s.alpha)

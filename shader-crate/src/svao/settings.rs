@@ -76,7 +76,7 @@ impl Settings for SvaoSettings {
         })
         .help("Ray-SD map resolution (divisor 1, 2, 4; spec svao-raysd §3)"),
         Setting::<Self>::count("sd-layers", 1, 8, |s| &mut s.layers).help("SD layers N: 1, 2, 4 or 8 (spec svao-raysd §7)"),
-        Setting::<Self>::count("max-count", 1, u32::MAX, |s| &mut s.max_count)
+        Setting::<Self>::count("max-count", 1, 1024, |s| &mut s.max_count)
             .help("Reservoir MAX_COUNT of the SD any-hit (raised to N when smaller; spec svao-raysd §7)"),
         Setting::<Self>::number("cutoff", 0.0, f32::MAX, |s| &mut s.cutoff)
             .help("Radius cutoff in pixels: closer samples are never refined (spec svao-raysd §4.4)"),
@@ -88,7 +88,7 @@ impl Settings for SvaoSettings {
         })
         .and_switch("no-jitter", "none")
         .help("SD jitter table (spec svao-raysd §7.2); --no-jitter traces through texel centres"),
-        Setting::<Self>::count("sd-guard", 0, u32::MAX, |s| &mut s.guard).help("SD guard band in full-resolution pixels"),
+        Setting::<Self>::count("sd-guard", 0, 4096, |s| &mut s.guard).help("SD guard band in full-resolution pixels"),
         Setting::<Self>::switch("primary", &["single", "dual"], |s| &mut s.dual)
             .help("Primary depth: the depth buffer, or dual depth with a depth-peeled second layer (spec svao-raysd §11)"),
         Setting::<Self>::number("peel-separation", 0.0, f32::MAX, |s| &mut s.peel_separation)
