@@ -3,6 +3,7 @@
 
 #[cfg(feature = "cli")]
 pub mod cli;
+pub mod export;
 pub mod frame;
 pub mod metrics;
 pub mod output;

@@ -33,6 +33,9 @@ enum Command {
     /// The scaling study: the scene instanced 1, 4, 16, 64 times on a grid (same camera), per-pass
     /// times of VAO, Ray-SD and the raster SD map.
     Scaling(ScalingArgs),
+    /// Write a frame's G-buffer (as engine images and in aokit's layout), camera and scene as plain
+    /// files for consumers without Rust (formats: docs/export.md).
+    Export(ExportArgs),
     /// Print the Vulkan device aokit would use and its ray-tracing extensions.
     Info {
         /// Enable the Khronos validation layer.
@@ -149,6 +152,15 @@ struct ScalingArgs {
     /// Write the results as JSON here.
     #[arg(long)]
     json: Option<PathBuf>,
+}
+
+#[derive(clap::Args)]
+struct ExportArgs {
+    #[command(flatten)]
+    frame: FrameArgs,
+    /// Folder to write into (created if missing).
+    #[arg(long)]
+    out: PathBuf,
 }
 
 /// Load the scene and resolve the camera and AO parameters.
@@ -366,6 +378,21 @@ fn scaling(args: ScalingArgs) -> Result<(), String> {
     Ok(())
 }
 
+fn export(args: ExportArgs) -> Result<(), String> {
+    let (scene, frame) = resolve(&args.frame)?;
+    let renderer = renderer(&args.frame, &scene)?;
+    let rows = frame.camera.view.size().y as u64;
+    let bar = progress_bar(format!("{} G-buffer", renderer.backend_name()), rows);
+    let progress = |n| bar.inc(n);
+    let (gbuffer, _) = renderer.gbuffer(&scene, &frame, &progress).map_err(|e| e.to_string())?;
+    bar.finish_and_clear();
+    check_validation(&renderer)?;
+    let json = aokit::export::write(&args.out, &scene, &frame, &gbuffer, renderer.backend_name())
+        .map_err(|e| format!("{}: {e}", args.out.display()))?;
+    println!("{json}");
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
@@ -373,6 +400,7 @@ fn main() -> ExitCode {
         Command::Compare(args) => compare(args),
         Command::Bench(args) => bench(args),
         Command::Scaling(args) => scaling(args),
+        Command::Export(args) => export(args),
         Command::Info { validation } => {
             aokit_vulkan::Gpu::new(&GpuOptions { validation }).map_err(|e| e.to_string()).map(|gpu| {
                 let info = gpu.info();
