@@ -1,7 +1,7 @@
-//! The engine contract in `assets/`: the manifest (schema aokit-manifest/2) and the C header are
-//! what the xtask generates from the committed modules and the current shader sources (a stale
-//! one fails here), and a C11 compiler lays out every shared struct exactly as Rust does (the
-//! header's `_Static_assert`s, compiled with `cc`).
+//! The engine contract in `assets/`: the manifest (schema aokit-manifest/2), the C header and the
+//! WGSL are what the xtask generates from the committed modules and the current shader sources
+//! (a stale one fails here), a C11 compiler lays out every shared struct exactly as Rust does
+//! (the header's `_Static_assert`s, compiled with `cc`), and the WGSL validates for WebGPU core.
 
 use aokit_vulkan::manifest::{Manifest, reflect};
 use std::path::{Path, PathBuf};
@@ -20,7 +20,41 @@ fn regenerated() -> Manifest {
         let bytes = std::fs::read(root().join("assets/spirv").join(&m.file)).unwrap();
         manifest.modules.push(reflect::reflect_any(&m.file, &bytes).unwrap());
     }
-    manifest.complete(&root().join("shader-crate/src")).unwrap()
+    let mut manifest = manifest.complete(&root().join("shader-crate/src")).unwrap();
+    manifest.add_wgsl(&root().join("assets/spirv")).unwrap();
+    manifest
+}
+
+#[test]
+fn wgsl_is_what_the_modules_translate_to_and_validates_without_capabilities() {
+    let mut manifest = regenerated();
+    let sources = manifest.add_wgsl(&root().join("assets/spirv")).unwrap();
+    assert_eq!(manifest, Manifest::committed(), "manifest.json's wgsl entries are stale");
+    let mut files: Vec<_> =
+        std::fs::read_dir(root().join("assets/wgsl")).unwrap().map(|e| e.unwrap().file_name()).collect();
+    files.sort();
+    assert_eq!(files.len(), sources.len(), "assets/wgsl holds exactly the generated files");
+    for (file, source) in &sources {
+        let committed = std::fs::read_to_string(root().join("assets/wgsl").join(file)).unwrap();
+        assert!(&committed == source, "assets/wgsl/{file} is stale: run `cargo run -p xtask -- build-spirv`");
+        // WebGPU core: no push constants, no optional capability, default limits (re-checked
+        // on the committed text by naga's WGSL front end).
+        assert!(!committed.contains("var<immediate>") && !committed.contains("push_constant"), "{file}");
+        let module = naga::front::wgsl::parse_str(&committed).unwrap_or_else(|e| panic!("{file}: {e}"));
+        naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::empty())
+            .validate(&module)
+            .unwrap_or_else(|e| panic!("{file}: {:?}", e.into_inner()));
+        let storage = module
+            .global_variables
+            .iter()
+            .filter(|(_, v)| matches!(v.space, naga::AddressSpace::Storage { .. }))
+            .count();
+        assert!(storage <= aokit_vulkan::wgsl::MAX_STORAGE_BUFFERS, "{file}: {storage} storage buffers");
+    }
+    // Every compute module but the two WebGPU core cannot express has one.
+    let compute = manifest.modules.iter().filter(|m| m.stage == "compute").count();
+    assert_eq!(sources.len(), compute - aokit_vulkan::manifest::NOT_WGSL.len());
+    assert!(sources.iter().any(|(f, _)| f == "vao_main.wgsl") && sources.iter().any(|(f, _)| f == "gtao_main.wgsl"));
 }
 
 #[test]

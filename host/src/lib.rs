@@ -19,6 +19,8 @@ pub mod manifest;
 pub mod modules;
 mod raytracing;
 pub mod spirv_hash;
+#[cfg(feature = "reflect")]
+pub mod wgsl;
 
 pub use adapters::{Adapters, AoImage, EngineImage};
 pub use buffer::Buffer;

@@ -131,7 +131,27 @@ pub struct ModuleManifest {
     /// one.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub push_constants: Option<String>,
+    /// The module as WGSL (`assets/wgsl/`), for compute modules WebGPU core can run.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub wgsl: Option<WgslManifest>,
 }
+
+/// A module's WGSL translation.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct WgslManifest {
+    /// `<entry>.wgsl` in `assets/wgsl/`.
+    pub file: String,
+    /// The binding (group 0) of the uniform buffer holding the push-constant struct.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub constants_binding: Option<u32>,
+}
+
+/// Compute modules without a WGSL translation, and why.
+#[cfg(feature = "reflect")]
+pub const NOT_WGSL: [(&str, &str); 2] = [
+    ("export_ao_r16f", "WebGPU core has no r16float storage textures: use export_ao_r32f"),
+    ("export_ao_r8", "WebGPU core has no r8unorm storage textures: use export_ao_r32f"),
+];
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct BindingManifest {
@@ -227,6 +247,7 @@ pub mod reflect {
             bindings,
             push_constant_bytes,
             push_constants: None,
+            wgsl: None,
         })
     }
 }
@@ -341,6 +362,7 @@ pub mod words {
             bindings,
             push_constant_bytes: 0,
             push_constants: None,
+            wgsl: None,
         })
     }
 }
@@ -500,6 +522,24 @@ pub mod source {
 
 #[cfg(feature = "reflect")]
 impl Manifest {
+    /// Translate every compute module (but [`NOT_WGSL`]) of `spirv_dir` to WGSL
+    /// (`crate::wgsl`), note it in the module entries, and return `(file, source)` to write into
+    /// `assets/wgsl/`.
+    pub fn add_wgsl(&mut self, spirv_dir: &std::path::Path) -> Result<Vec<(String, String)>, String> {
+        let mut out = Vec::new();
+        for m in &mut self.modules {
+            if m.stage != "compute" || NOT_WGSL.iter().any(|(e, _)| *e == m.entry_point) {
+                continue;
+            }
+            let bytes = std::fs::read(spirv_dir.join(&m.file)).map_err(|e| format!("{}: {e}", m.file))?;
+            let w = crate::wgsl::from_spirv(&bytes).map_err(|e| format!("{}: {e}", m.entry_point))?;
+            let file = format!("{}.wgsl", m.entry_point);
+            m.wgsl = Some(WgslManifest { file: file.clone(), constants_binding: w.constants_binding });
+            out.push((file, w.source));
+        }
+        Ok(out)
+    }
+
     /// Version 2 of the manifest from the reflected modules: binding names and Rust types and
     /// push-constant structs from the entry points' source (`shader_src`), the shared structs
     /// from `aokit_shaders::contract`. Fails where a module's push constants or record have no

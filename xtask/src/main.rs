@@ -104,7 +104,13 @@ fn build_spirv() -> Result<(), String> {
         );
         manifest.modules.push(module);
     }
-    let manifest = manifest.complete(&shader_crate.join("src"))?;
+    let mut manifest = manifest.complete(&shader_crate.join("src"))?;
+    let wgsl_dir = root.join("assets/wgsl");
+    let _ = std::fs::remove_dir_all(&wgsl_dir);
+    std::fs::create_dir_all(&wgsl_dir).map_err(|e| e.to_string())?;
+    for (file, source) in manifest.add_wgsl(&out_dir)? {
+        std::fs::write(wgsl_dir.join(file), source).map_err(|e| e.to_string())?;
+    }
     let json = serde_json::to_string_pretty(&manifest).map_err(|e| e.to_string())? + "\n";
     std::fs::write(out_dir.join("manifest.json"), json).map_err(|e| e.to_string())?;
     let include = root.join("assets/include");
