@@ -69,10 +69,11 @@ impl Technique {
     pub fn parse(spec: &str, cli: &CliSettings) -> Result<Technique, String> {
         let mut parts = spec.trim().split(':');
         let mut t = Technique::named(parts.next().unwrap_or_default())?;
+        let rows = t.rows();
         let mut overrides = Vec::new();
         for part in parts {
             let (key, value) = part.split_once('=').ok_or_else(|| format!("'{part}' in '{spec}' is not key=value"))?;
-            if !t.rows().iter().any(|r| r.key == key) {
+            if !rows.iter().any(|r| r.key == key) {
                 // The technique's own message, naming the keys it has.
                 t.0.set(key, value).map_err(|e| format!("'{spec}': {e}"))?;
             }
@@ -80,19 +81,22 @@ impl Technique {
         }
         // Row order (a preset before its slices and steps, a variant before its weight), the
         // override after the name winning over the flag of the same setting.
-        for row in t.rows() {
+        for row in &rows {
             if let Some((_, value)) = overrides.iter().rev().find(|(k, _)| *k == row.key) {
                 t.0.set(row.key, value).map_err(|e| format!("'{spec}': {e}"))?;
                 continue;
             }
             for (flag, value) in &cli.0 {
-                let matches = match value {
-                    Some(_) => row.flag == Some(flag.as_str()),
-                    None => row.switch.is_some_and(|s| s.0 == flag),
+                // A value flag carries its value; a switch sets the value it stands for.
+                let value = match value {
+                    Some(v) if row.flag == Some(flag.as_str()) => v.as_str(),
+                    None => match row.switch {
+                        Some((f, v)) if f == flag => v,
+                        _ => continue,
+                    },
+                    Some(_) => continue,
                 };
-                if matches {
-                    t.0.set_flag(flag, value.as_deref())?;
-                }
+                t.0.set(row.key, value)?;
             }
         }
         t.0.validate().map_err(|e| format!("'{spec}': {e}"))?;
@@ -106,7 +110,7 @@ impl Technique {
 
     /// The settings the technique reads (flags, help, ranges, defaults).
     pub fn rows(&self) -> Vec<Row> {
-        aokit_shaders::techniques::find(self.name()).map(|t| t.rows()).unwrap_or_default()
+        self.0.rows()
     }
 
     /// Set one setting by its key.

@@ -2,6 +2,7 @@
 //! points, stages, descriptor bindings, push-constant sizes — plus the hash of the shader
 //! sources the modules were built from.
 
+use aokit_shaders::contract::PLAIN_TYPES;
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -598,10 +599,12 @@ impl Manifest {
                     b.name = name.clone();
                 }
                 b.rust_type = ty.clone();
-                let record = !ty.starts_with('[') && b.kind == "storage_buffer";
-                if record && !self.structs.iter().any(|s| &s.name == ty) {
+                // A storage buffer holds plain elements or records of a shared struct.
+                let element = ty.trim_start_matches('[').trim_end_matches(']');
+                let plain = PLAIN_TYPES.iter().any(|p| p.name == element);
+                if b.kind == "storage_buffer" && !plain && !self.structs.iter().any(|s| s.name == element) {
                     return Err(format!(
-                        "{}: record {ty} is not in aokit_shaders::contract::shared_structs",
+                        "{}: {element} is not in aokit_shaders::contract::shared_structs",
                         m.entry_point
                     ));
                 }
@@ -611,32 +614,15 @@ impl Manifest {
     }
 }
 
-/// The C name of a manifest type: scalars, glam vectors and matrices, shared structs.
+/// The C name of a manifest type: scalars, glam vectors and matrices
+/// (`aokit_shaders::contract::PLAIN_TYPES`), shared structs.
 fn c_type(ty: &str) -> String {
-    match ty {
-        "f32" => "float".into(),
-        "u32" => "uint32_t".into(),
-        "i32" => "int32_t".into(),
-        t if GLAM_TYPES.iter().any(|g| g.0 == t) => format!("aokit_{}", t.to_lowercase()),
-        t => format!("aokit_{t}"),
+    match PLAIN_TYPES.iter().find(|p| p.name == ty) {
+        Some(p) if p.components == 1 => p.c_component.into(),
+        Some(p) => format!("aokit_{}", p.name.to_lowercase()),
+        None => format!("aokit_{ty}"),
     }
 }
-
-/// glam types in shared structs: name, component C type, component count, and their size and
-/// alignment in Rust (the C typedefs must match them; `_Static_assert`ed).
-const GLAM_TYPES: [(&str, &str, usize, usize, usize); 8] = {
-    use aokit_shaders::glam::{IVec2, Mat4, UVec2, UVec3, UVec4, Vec2, Vec3, Vec4};
-    [
-        ("Vec2", "float", 2, size_of::<Vec2>(), align_of::<Vec2>()),
-        ("Vec3", "float", 3, size_of::<Vec3>(), align_of::<Vec3>()),
-        ("Vec4", "float", 4, size_of::<Vec4>(), align_of::<Vec4>()),
-        ("UVec2", "uint32_t", 2, size_of::<UVec2>(), align_of::<UVec2>()),
-        ("UVec3", "uint32_t", 3, size_of::<UVec3>(), align_of::<UVec3>()),
-        ("UVec4", "uint32_t", 4, size_of::<UVec4>(), align_of::<UVec4>()),
-        ("IVec2", "int32_t", 2, size_of::<IVec2>(), align_of::<IVec2>()),
-        ("Mat4", "float", 16, size_of::<Mat4>(), align_of::<Mat4>()),
-    ]
-};
 
 /// A C identifier in upper case (`vao_main` → `VAO_MAIN`).
 fn upper(name: &str) -> String {
@@ -671,7 +657,8 @@ impl Manifest {
         );
         line(&mut h, "#undef near\n#undef far\n#endif\n");
         line(&mut h, "/* Vectors and matrices (glam). */");
-        for (name, component, n, size, align) in GLAM_TYPES {
+        for p in PLAIN_TYPES.iter().filter(|p| p.components > 1) {
+            let (name, component, n, size, align) = (p.name, p.c_component, p.components, p.size, p.align);
             let c = c_type(name);
             line(&mut h, &format!("typedef struct {c} {{ _Alignas({align}) {component} v[{n}]; }} {c};"));
             line(&mut h, &format!("_Static_assert(sizeof({c}) == {size} && _Alignof({c}) == {align}, \"{name}\");"));

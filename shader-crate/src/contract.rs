@@ -36,10 +36,47 @@ pub trait Layout {
     fn layout() -> Option<StructLayout>;
 }
 
-macro_rules! plain {
-    ($($t:ty),*) => {$(impl Layout for $t { fn layout() -> Option<StructLayout> { None } })*};
+/// A scalar, vector or matrix type of shared structs.
+#[derive(Copy, Clone, Debug)]
+pub struct PlainType {
+    /// The Rust name (`f32`, `Vec2`, `Mat4`, …).
+    pub name: &'static str,
+    /// The C type of one component.
+    pub c_component: &'static str,
+    /// Components (matrices: column-major, 16 for `Mat4`).
+    pub components: usize,
+    /// Rust's size and alignment, which a C declaration must match.
+    pub size: usize,
+    pub align: usize,
 }
-plain!(f32, u32, i32, Vec2, Vec3, Vec4, UVec2, UVec3, UVec4, IVec2, Mat4);
+
+/// The plain types, each with its [`Layout`] (none) and its [`PlainType`] entry from one list.
+macro_rules! plain {
+    ($(($t:ident, $c:literal, $n:literal)),* $(,)?) => {
+        $(impl Layout for $t { fn layout() -> Option<StructLayout> { None } })*
+        /// Every plain type a shared struct may hold.
+        pub const PLAIN_TYPES: &[PlainType] = &[$(PlainType {
+            name: stringify!($t),
+            c_component: $c,
+            components: $n,
+            size: size_of::<$t>(),
+            align: align_of::<$t>(),
+        }),*];
+    };
+}
+plain!(
+    (f32, "float", 1),
+    (u32, "uint32_t", 1),
+    (i32, "int32_t", 1),
+    (Vec2, "float", 2),
+    (Vec3, "float", 3),
+    (Vec4, "float", 4),
+    (UVec2, "uint32_t", 2),
+    (UVec3, "uint32_t", 3),
+    (UVec4, "uint32_t", 4),
+    (IVec2, "int32_t", 2),
+    (Mat4, "float", 16),
+);
 
 impl<T: Layout, const N: usize> Layout for [T; N] {
     fn layout() -> Option<StructLayout> {

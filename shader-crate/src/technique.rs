@@ -234,7 +234,8 @@ pub struct Declaration<S: 'static> {
 /// A technique with its settings, behind one type for every settings struct.
 pub trait Configured: Send + Sync + Debug {
     fn name(&self) -> &'static str;
-    fn summary(&self) -> &'static str;
+    /// The settings the technique reads, without their types (its declaration's rows).
+    fn rows(&self) -> Vec<Row>;
     /// `(key, value as text)` of every setting the technique reads, in declaration order.
     fn values(&self) -> Vec<(&'static str, String)>;
     /// The options as a JSON object text (`snake_case` keys; numbers bare, names quoted).
@@ -243,9 +244,6 @@ pub trait Configured: Send + Sync + Debug {
     fn changed(&self) -> Vec<(&'static str, String)>;
     /// Set a setting by key; a key the technique does not read is refused.
     fn set(&mut self, key: &str, value: &str) -> Result<(), String>;
-    /// Set a setting by its command-line flag (`value: None` for a value-less switch); `Ok(false)`
-    /// when the technique has no such flag.
-    fn set_flag(&mut self, flag: &str, value: Option<&str>) -> Result<bool, String>;
     fn validate(&self) -> Result<(), String>;
     fn graph(&self, frame: &FrameDesc) -> Result<Graph, String>;
     fn second_layer(&self) -> Option<f32>;
@@ -342,8 +340,8 @@ impl<S: Settings> Configured for Instance<S> {
         self.declaration.name
     }
 
-    fn summary(&self) -> &'static str {
-        self.declaration.summary
+    fn rows(&self) -> Vec<Row> {
+        self.declaration.rows()
     }
 
     fn values(&self) -> Vec<(&'static str, String)> {
@@ -377,17 +375,6 @@ impl<S: Settings> Configured for Instance<S> {
             }
         })?;
         row.set(&mut self.settings, value)
-    }
-
-    fn set_flag(&mut self, flag: &str, value: Option<&str>) -> Result<bool, String> {
-        for row in self.declaration.rows_read() {
-            match (value, row.flag, row.switch) {
-                (Some(v), Some(f), _) if f == flag => return row.set(&mut self.settings, v).map(|_| true),
-                (None, _, Some((f, v))) if f == flag => return row.set(&mut self.settings, v).map(|_| true),
-                _ => {}
-            }
-        }
-        Ok(false)
     }
 
     fn validate(&self) -> Result<(), String> {
