@@ -257,6 +257,8 @@ impl Engine {
             queue_family_index: self.family,
             queue: self.queue,
             ray_tracing: self.ray_tracing,
+            // Not enabled here: the ray-query variants are exercised through aokit's own device.
+            ray_query: false,
         }
     }
 

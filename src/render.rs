@@ -7,7 +7,7 @@ use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
 use aokit_cpu::svao as svao_cpu;
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
-use aokit_shaders::graph::{FrameDesc, Graph, PassKind};
+use aokit_shaders::graph::{FrameDesc, Graph, PassKind, RtMode};
 use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
 use aokit_shaders::svao::{Secondary, SvaoFrame};
 use aokit_vulkan::{AoContext, GpuInputs};
@@ -158,6 +158,8 @@ pub struct VulkanRenderer {
     raster: RasterGBuffer,
     /// `(scene key, acceleration structure)` of the last scene traced.
     accel: std::cell::RefCell<Option<(usize, SceneAccel)>>,
+    /// How ray-traced passes run: ray-tracing pipelines or ray queries.
+    rt_mode: std::cell::Cell<RtMode>,
 }
 
 impl VulkanRenderer {
@@ -176,7 +178,13 @@ impl VulkanRenderer {
             gpu,
             raster,
             accel: Default::default(),
+            rt_mode: Default::default(),
         })
+    }
+
+    /// Run ray-traced passes as ray-tracing pipelines (the default) or ray-query kernels.
+    pub fn set_rt_mode(&self, mode: RtMode) {
+        self.rt_mode.set(mode);
     }
 
     /// Rasterize the G-buffer and read it back.
@@ -466,6 +474,7 @@ impl VulkanRenderer {
         details: bool,
     ) -> Result<(TechniqueRun, Option<GBufferImage>), GpuError> {
         let graph = technique.graph(&frame.desc()).expect("every technique has a pass graph");
+        let graph = graph.with_rt_mode(self.rt_mode.get());
         let key = scene_key(scene);
         let size = frame.camera.view.size();
         let mut cache = self.raster_frame.borrow_mut();
@@ -537,6 +546,7 @@ impl VulkanRenderer {
         technique: &Technique,
         graph: &Graph,
     ) -> Result<TechniqueRun, GpuError> {
+        let graph = &graph.clone().with_rt_mode(self.rt_mode.get());
         self.graph_frame(Some(scene), frame, gbuffer, technique, graph, |ctx, passes, depth2| {
             let read = |name: &str| ctx.download::<u32>(name).ok();
             let mut run = graph_run(graph, passes, None, &read, gbuffer, depth2);

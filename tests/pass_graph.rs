@@ -6,7 +6,7 @@
 mod common;
 
 use aokit::technique::{GroundTruthSettings, GtaoOptions, HybridOptions, RaymarchOptions, SdOptions, Technique};
-use aokit_shaders::graph::{Access, Graph, PassKind, inputs};
+use aokit_shaders::graph::{Access, Graph, PassKind, RtMode, inputs};
 use aokit_shaders::groundtruth::settings::GROUNDTRUTH;
 use aokit_shaders::gtao::settings::GTAO;
 use aokit_shaders::hybrid::settings::HYBRID;
@@ -74,7 +74,7 @@ fn check(manifest: &Manifest, name: &str, graph: &Graph) -> Result<(), String> {
     for pass in &graph.passes {
         let entries = match pass.kind {
             PassKind::Compute => vec![pass.entry],
-            PassKind::RayTracing { miss, any_hit } => vec![pass.entry, miss, any_hit],
+            PassKind::RayTracing { miss, any_hit, .. } => vec![pass.entry, miss, any_hit],
             PassKind::Raster { vertex } => vec![vertex, pass.entry],
         };
         // Every slot the module declares is bound with its access; a slot the module does not
@@ -112,9 +112,18 @@ fn check(manifest: &Manifest, name: &str, graph: &Graph) -> Result<(), String> {
 fn every_graph_matches_its_modules_and_has_cpu_kernels() {
     let manifest = Manifest::committed();
     let graphs = graphs();
+    let mut queried = 0;
     for (_, name, graph) in &graphs {
         check(&manifest, name, graph).unwrap_or_else(|e| panic!("{e}"));
+        // The ray-query variant: each ray-tracing pass as one compute kernel binding what the
+        // ray-generation and any-hit shaders bound.
+        let query = graph.clone().with_rt_mode(RtMode::Query);
+        check(&manifest, &format!("{name} (ray queries)"), &query).unwrap_or_else(|e| panic!("{e}"));
+        assert!(query.passes.iter().all(|p| !matches!(p.kind, PassKind::RayTracing { .. })));
+        assert_eq!(query.traces_rays(), graph.traces_rays(), "{name}");
+        queried += usize::from(query != *graph);
     }
+    assert!(queried >= 5, "ray-query variants of raysd, raysvao, groundtruth, hybrid…: {queried}");
     // Dual depth binds the peeled layer; single depth never does.
     for (technique, name, graph) in &graphs {
         let reads_second = graph.inputs().contains(&inputs::SECOND_DEPTH);

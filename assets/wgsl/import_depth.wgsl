@@ -110,12 +110,12 @@ fn function_() {
                 }
                 let _e118 = phi_178_;
                 if (_e118 > 0f) {
-                    phi_188_ = select(true, false, (_e118 < 340282350000000000000000000000000000000f));
+                    phi_188_ = select(true, false, (_e118 < 0x1.fffffep+127f));
                 } else {
                     phi_188_ = true;
                 }
                 let _e123 = phi_188_;
-                let _e124 = select(_e118, 340282350000000000000000000000000000000f, _e123);
+                let _e124 = select(_e118, 0x1.fffffep+127f, _e123);
                 let _e128 = params.member.member.member_3;
                 let _e132 = ((_e18.y * _e32) + _e18.x);
                 if (_e132 < arrayLength((&depth.member))) {

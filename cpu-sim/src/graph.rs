@@ -96,17 +96,19 @@ pub fn kernel(entry: &str) -> Option<CpuKernel> {
         "vao_main" => kernels::vao,
         "blur_main" => kernels::blur,
         "svao_pass1" => kernels::svao_pass1,
-        "raysd_rgen" => kernels::sd_map,
+        // A ray-tracing pass and its ray-query variant are one kernel on the CPU: the BVH reports
+        // every candidate to the same any-hit decision.
+        "raysd_rgen" | "raysd_rq" => kernels::sd_map,
         "rastersd_fs" => kernels::raster_sd_map,
         "raysd_pass2" => kernels::raysd_pass2,
-        "raysvao_rgen" => kernels::raysvao,
+        "raysvao_rgen" | "raysvao_rq" => kernels::raysvao,
         "gtao_prefilter" => kernels::gtao_prefilter,
         "gtao_normals" => kernels::gtao_normals,
         "gtao_main" => kernels::gtao_main,
         "gtao_denoise" => kernels::gtao_denoise,
         "raymarch_main" => kernels::raymarch,
-        "groundtruth_rgen" => kernels::ground_truth,
-        "hybrid_rgen" => kernels::hybrid,
+        "groundtruth_rgen" | "groundtruth_rq" => kernels::ground_truth,
+        "hybrid_rgen" | "hybrid_rq" => kernels::hybrid,
         _ => return None,
     })
 }

@@ -84,6 +84,12 @@ pub struct ExternalDevice {
     /// was enabled, so it trusts this flag; `false` makes the `Gpu` behave as on a device without
     /// ray tracing ([`Gpu::has_ray_tracing`] is `false`).
     pub ray_tracing: bool,
+    /// Whether the device was also created with `VK_KHR_ray_query` and the `rayQuery` feature
+    /// (the ray-query variants of the ray-traced passes, [`RtMode::Query`]; needs
+    /// `ray_tracing` too, whose acceleration-structure entry points build the scene's TLAS).
+    ///
+    /// [`RtMode::Query`]: aokit_shaders::graph::RtMode::Query
+    pub ray_query: bool,
 }
 
 /// What `Gpu::new` created besides the pool and the allocator, and so destroys on drop.
@@ -110,6 +116,8 @@ impl OwnedDevice {
 /// ([`Gpu::new`]) or the application's ([`Gpu::from_external`]).
 pub struct Gpu {
     pub(crate) ray_tracing: Option<RayTracing>,
+    /// Ray queries enabled (only with `ray_tracing`).
+    ray_query: bool,
     pub(crate) device: ash::Device,
     pub(crate) queue: vk::Queue,
     queue_family_index: u32,
@@ -136,6 +144,8 @@ struct DeviceProbe {
     /// need: the extensions and the `accelerationStructure`, `rayTracingPipeline` and
     /// `bufferDeviceAddress` features.
     ray_tracing: Option<RayTracingLimits>,
+    /// `VK_KHR_ray_query` and the `rayQuery` feature, besides everything of `ray_tracing`.
+    ray_query: bool,
 }
 
 impl DeviceProbe {
@@ -158,10 +168,12 @@ impl DeviceProbe {
         // Ray tracing (pipelines + acceleration structures) when the device has all of it.
         let mut as_features = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default();
         let mut rt_features = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default();
+        let mut rq_features = vk::PhysicalDeviceRayQueryFeaturesKHR::default();
         let mut f12_query = vk::PhysicalDeviceVulkan12Features::default();
         let mut f2 = vk::PhysicalDeviceFeatures2::default()
             .push_next(&mut as_features)
             .push_next(&mut rt_features)
+            .push_next(&mut rq_features)
             .push_next(&mut f12_query);
         unsafe { instance.get_physical_device_features2(pd, &mut f2) };
         let ray_tracing = RT_EXTENSIONS[..2].iter().chain(&RT_EXTENSIONS[3..]).all(|e| has(e))
@@ -180,7 +192,8 @@ impl DeviceProbe {
                 scratch_alignment: as_props.min_acceleration_structure_scratch_offset_alignment,
             }
         });
-        Ok(DeviceProbe { info, timestamp_period_ns: props.limits.timestamp_period, ray_tracing: limits })
+        let ray_query = limits.is_some() && has(khr::ray_query::NAME) && rq_features.ray_query != 0;
+        Ok(DeviceProbe { info, timestamp_period_ns: props.limits.timestamp_period, ray_tracing: limits, ray_query })
     }
 }
 
@@ -304,9 +317,17 @@ impl Gpu {
             }
         };
         let queue = unsafe { device.get_device_queue(queue_family_index, 0) };
-        let ray_tracing = probe.ray_tracing.is_some();
-        let handles =
-            ExternalDevice { entry, instance, physical_device, device, queue_family_index, queue, ray_tracing };
+        let (ray_tracing, ray_query) = (probe.ray_tracing.is_some(), probe.ray_query);
+        let handles = ExternalDevice {
+            entry,
+            instance,
+            physical_device,
+            device,
+            queue_family_index,
+            queue,
+            ray_tracing,
+            ray_query,
+        };
         Self::assemble(handles, probe, Some(owned), messages)
     }
 
@@ -350,7 +371,7 @@ impl Gpu {
     /// * There is no debug messenger of aokit's on an external instance:
     ///   [`Gpu::validation_messages`] is always empty; install your own messenger.
     pub fn from_external(external: ExternalDevice) -> Result<Gpu, GpuError> {
-        let ExternalDevice { ref instance, physical_device, queue_family_index, ray_tracing, .. } = external;
+        let ExternalDevice { ref instance, physical_device, queue_family_index, ray_tracing, ray_query, .. } = external;
         let probe = DeviceProbe::new(instance, physical_device)?;
         let core = CoreSupport::new(instance, physical_device);
         let name = &probe.info.name;
@@ -377,6 +398,11 @@ impl Gpu {
                 "ray tracing: ExternalDevice::ray_tracing is set but '{name}' lacks VK_KHR_ray_tracing_pipeline / VK_KHR_acceleration_structure / VK_KHR_deferred_host_operations / bufferDeviceAddress"
             )));
         }
+        if ray_query && !(ray_tracing && probe.ray_query) {
+            return Err(GpuError::NoDevice(format!(
+                "ray queries: ExternalDevice::ray_query is set but '{name}' lacks VK_KHR_ray_query / rayQuery, or ExternalDevice::ray_tracing is not set"
+            )));
+        }
         Self::assemble(external, probe, None, Box::default())
     }
 
@@ -390,9 +416,18 @@ impl Gpu {
         owned: Option<OwnedDevice>,
         messages: Box<Mutex<Vec<String>>>,
     ) -> Result<Gpu, GpuError> {
-        let ExternalDevice { entry, instance, physical_device, device, queue_family_index, queue, ray_tracing } =
-            handles;
+        let ExternalDevice {
+            entry,
+            instance,
+            physical_device,
+            device,
+            queue_family_index,
+            queue,
+            ray_tracing,
+            ray_query,
+        } = handles;
         let limits = probe.ray_tracing.filter(|_| ray_tracing);
+        let ray_query = ray_query && limits.is_some() && probe.ray_query;
         let fail = |e: GpuError| {
             if let Some(owned) = &owned {
                 unsafe { owned.destroy(Some(&device), &instance) };
@@ -433,6 +468,7 @@ impl Gpu {
             families.get(queue_family_index as usize).is_some_and(|q| q.queue_flags.contains(vk::QueueFlags::GRAPHICS));
         Ok(Gpu {
             ray_tracing,
+            ray_query,
             device,
             queue,
             queue_family_index,
@@ -482,10 +518,12 @@ impl Gpu {
             vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(true).maintenance4(core.maintenance4);
         let mut as_enable = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default().acceleration_structure(true);
         let mut rt_enable = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default().ray_tracing_pipeline(true);
+        let mut rq_enable = vk::PhysicalDeviceRayQueryFeaturesKHR::default().ray_query(true);
         let rt_names = [
             khr::acceleration_structure::NAME.as_ptr(),
             khr::ray_tracing_pipeline::NAME.as_ptr(),
             khr::deferred_host_operations::NAME.as_ptr(),
+            khr::ray_query::NAME.as_ptr(),
         ];
         // Fragment-shader atomics: the raster SD map writes its samples with atomic min.
         let supported = unsafe { instance.get_physical_device_features(pd) };
@@ -497,7 +535,11 @@ impl Gpu {
             .push_next(&mut f12)
             .push_next(&mut f13);
         if ray_tracing {
-            create = create.enabled_extension_names(&rt_names).push_next(&mut as_enable).push_next(&mut rt_enable);
+            let names = &rt_names[..if probe.ray_query { 4 } else { 3 }];
+            create = create.enabled_extension_names(names).push_next(&mut as_enable).push_next(&mut rt_enable);
+            if probe.ray_query {
+                create = create.push_next(&mut rq_enable);
+            }
         }
         let device = unsafe { instance.create_device(pd, &create, None)? };
         Ok((pd, device, family, probe))
@@ -507,6 +549,12 @@ impl Gpu {
     /// `VK_KHR_acceleration_structure`, enabled at creation)?
     pub fn has_ray_tracing(&self) -> bool {
         self.ray_tracing.is_some()
+    }
+
+    /// Does the device run ray-query kernels (`VK_KHR_ray_query` and `rayQuery`, enabled at
+    /// creation, besides ray tracing)?
+    pub fn has_ray_query(&self) -> bool {
+        self.ray_query
     }
 
     /// The ray-tracing entry points, or a clear error naming what the device lacks.

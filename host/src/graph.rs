@@ -18,7 +18,6 @@
 
 use crate::adapters::{Adapters, AoImage, EngineImage};
 use crate::compute::{ComputeKernel, memory_barrier};
-use crate::descriptors::storage_bindings;
 use crate::descriptors::{Descriptor, KeptSets};
 use crate::gbuffer::RasterSdPass;
 use crate::manifest::{Manifest, ModuleManifest};
@@ -82,6 +81,18 @@ pub struct RasterScene<'a> {
     pub vertex_count: u32,
     pub mask_headers: &'a Buffer,
     pub mask_texels: &'a Buffer,
+}
+
+/// Set 0 of `pass`'s pipeline: at least `slots` bindings (the module's), the scene's TLAS an
+/// acceleration structure, every other binding a storage buffer.
+fn descriptor_types(pass: &Pass, slots: u32) -> Vec<vk::DescriptorType> {
+    let count = pass.bindings.iter().map(|b| b.slot + 1).fold(slots, u32::max);
+    (0..count)
+        .map(|slot| match pass.resource(slot) {
+            Some(inputs::SCENE_TLAS) => vk::DescriptorType::ACCELERATION_STRUCTURE_KHR,
+            _ => vk::DescriptorType::STORAGE_BUFFER,
+        })
+        .collect()
 }
 
 enum Pipeline {
@@ -216,29 +227,26 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         let pipeline = match pass.kind {
             PassKind::Compute => {
                 let entry = CString::new(pass.entry).expect("entry names have no NUL");
-                let types = storage_bindings(slots);
+                let types = descriptor_types(pass, slots);
                 let spirv = Self::spirv(pass.entry)?;
+                if types.contains(&vk::DescriptorType::ACCELERATION_STRUCTURE_KHR) && !self.gpu().has_ray_query() {
+                    return Err(GpuError::NoDevice(format!(
+                        "ray queries: '{}' lacks VK_KHR_ray_query / VK_KHR_acceleration_structure / bufferDeviceAddress (pass '{}'; --rt-mode pipeline uses ray-tracing pipelines instead)",
+                        self.gpu().info().name,
+                        pass.entry
+                    )));
+                }
                 let kernel = ComputeKernel::new(self.gpu(), spirv, &entry, &types, module.push_constant_bytes)?;
                 Pipeline::Compute { kernel, workgroup: module.workgroup_size.unwrap_or([1, 1, 1]) }
             }
-            PassKind::RayTracing { miss, any_hit } => {
+            PassKind::RayTracing { miss, any_hit, .. } => {
                 let names = [pass.entry, miss, any_hit].map(|n| CString::new(n).expect("entry names have no NUL"));
                 let shaders = [
                     (Self::spirv(pass.entry)?, names[0].as_c_str()),
                     (Self::spirv(miss)?, names[1].as_c_str()),
                     (Self::spirv(any_hit)?, names[2].as_c_str()),
                 ];
-                let mut count = slots;
-                for b in &pass.bindings {
-                    count = count.max(b.slot + 1);
-                }
-                let types = (0..count)
-                    .map(|slot| match pass.resource(slot) {
-                        Some(inputs::SCENE_TLAS) => vk::DescriptorType::ACCELERATION_STRUCTURE_KHR,
-                        _ => vk::DescriptorType::STORAGE_BUFFER,
-                    })
-                    .collect();
-                Pipeline::RayTracing(RtPipeline::new(self.gpu(), shaders, types)?)
+                Pipeline::RayTracing(RtPipeline::new(self.gpu(), shaders, descriptor_types(pass, slots))?)
             }
             // The one raster pipeline state aokit has: no attachments, dynamic viewport.
             PassKind::Raster { vertex: "gbuffer_vs" } if pass.entry == "rastersd_fs" => {

@@ -39,6 +39,28 @@ pub struct TechniqueManifest {
     pub passes: Vec<PassManifest>,
     /// The resource holding the final AO (`f32` per full-target texel, 1 = unoccluded).
     pub output: String,
+    /// How each field of the constants structs the passes use (push-constant blocks, records
+    /// bound as storage buffers, the structs they hold) is computed from the settings and the
+    /// camera: every field of every such struct, structs in [`Manifest::structs`] order.
+    #[serde(default)]
+    pub constants: Vec<ConstantManifest>,
+}
+
+/// One field of a constants struct and its formula (`aokit_shaders::technique::Constant`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ConstantManifest {
+    /// The struct, in [`Manifest::structs`].
+    #[serde(rename = "struct")]
+    pub struct_name: String,
+    pub field: String,
+    /// Byte offset of the field in its struct, and its type (as in [`Manifest::structs`]).
+    pub offset: u32,
+    #[serde(rename = "type")]
+    pub ty: String,
+    /// In words and symbols: setting keys in backticks, `[x]` the value where the technique does
+    /// not read the key, the frame's quantities (W×H full target, w×h inner image, g guard band,
+    /// R radius, e exponent, τ thickness; the camera's rows name theirs).
+    pub formula: String,
 }
 
 /// One setting (`aokit_shaders::technique::Setting`).
@@ -87,6 +109,10 @@ pub struct PassManifest {
     pub kind: String,
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub stages: Vec<String>,
+    /// "ray_tracing" passes: the compute module of the same pass with ray queries
+    /// (`VK_KHR_ray_query`; the same bindings, workgroups over the same launch size).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub ray_query: Option<String>,
     /// `(slot, resource or input, "read" | "write" | "read_write")`.
     pub bindings: Vec<(u32, String, String)>,
     /// Invocations `[x, y]` as formulas (compute: divide by the workgroup size, rounding up).
@@ -145,6 +171,10 @@ pub struct WgslManifest {
     /// The binding (group 0) of the uniform buffer holding the push-constant struct.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub constants_binding: Option<u32>,
+    /// The entry point's name in the WGSL, where it differs from the module's (naga renames
+    /// names that end in a digit, e.g. `svao_pass1_`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub entry_point: Option<String>,
 }
 
 /// Compute modules without a WGSL translation, and why.
@@ -262,7 +292,10 @@ pub mod words {
 
     const OP_NAME: u32 = 5;
     const OP_ENTRY_POINT: u32 = 15;
+    const OP_EXECUTION_MODE: u32 = 16;
     const OP_CAPABILITY: u32 = 17;
+    const EXECUTION_MODE_LOCAL_SIZE: u32 = 17;
+    const CAPABILITY_RAY_QUERY: u32 = 4472;
     const OP_VARIABLE: u32 = 59;
     const OP_DECORATE: u32 = 71;
     const CAPABILITY_RAY_TRACING: u32 = 4479;
@@ -294,14 +327,16 @@ pub mod words {
         Ok(out)
     }
 
-    /// Does the module declare the RayTracingKHR capability?
+    /// Does the module declare the RayTracingKHR or RayQueryKHR capability (which naga's SPIR-V
+    /// front end cannot read)?
     pub fn is_ray_tracing(bytes: &[u8]) -> Result<bool, String> {
-        Ok(instructions(bytes)?
-            .iter()
-            .any(|(op, a)| *op == OP_CAPABILITY && a.first() == Some(&CAPABILITY_RAY_TRACING)))
+        Ok(instructions(bytes)?.iter().any(|(op, a)| {
+            *op == OP_CAPABILITY && matches!(a.first(), Some(&(CAPABILITY_RAY_TRACING | CAPABILITY_RAY_QUERY)))
+        }))
     }
 
-    /// Entry point, stage and descriptor bindings of a ray-tracing module.
+    /// Entry point, stage, workgroup size and descriptor bindings of a ray-tracing or ray-query
+    /// module.
     pub fn reflect(file: &str, bytes: &[u8]) -> Result<ModuleManifest, String> {
         let ins = instructions(bytes)?;
         let entries: Vec<_> = ins.iter().filter(|(op, _)| *op == OP_ENTRY_POINT).collect();
@@ -309,6 +344,7 @@ pub mod words {
             return Err(format!("{file}: expected exactly one entry point, found {}", entries.len()));
         };
         let stage = match entry[0] {
+            5 => "compute",
             5313 => "ray_generation",
             5314 => "intersection",
             5315 => "any_hit",
@@ -321,7 +357,11 @@ pub mod words {
         let entry_point = String::from_utf8(name).map_err(|e| e.to_string())?;
         let (mut set, mut binding, mut read_only) = (HashMap::new(), HashMap::new(), HashMap::new());
         let mut names = HashMap::new();
+        let mut workgroup_size = None;
         for (op, a) in &ins {
+            if *op == OP_EXECUTION_MODE && a.len() >= 5 && a[1] == EXECUTION_MODE_LOCAL_SIZE {
+                workgroup_size = Some([a[2], a[3], a[4]]);
+            }
             if *op == OP_NAME && a.len() >= 2 {
                 let bytes: Vec<u8> = a[1..].iter().flat_map(|w| w.to_le_bytes()).take_while(|&b| b != 0).collect();
                 names.insert(a[0], String::from_utf8_lossy(&bytes).into_owned());
@@ -359,7 +399,7 @@ pub mod words {
             entry_point,
             file: file.into(),
             stage: stage.into(),
-            workgroup_size: None,
+            workgroup_size,
             bindings,
             push_constant_bytes: 0,
             push_constants: None,
@@ -523,7 +563,8 @@ pub mod source {
 
 #[cfg(feature = "reflect")]
 impl Manifest {
-    /// Translate every compute module (but [`NOT_WGSL`]) of `spirv_dir` to WGSL
+    /// Translate every compute module (but [`NOT_WGSL`] and the ray-query variants, which
+    /// naga's SPIR-V front end cannot read and WebGPU cannot run) of `spirv_dir` to WGSL
     /// (`crate::wgsl`), note it in the module entries, and return `(file, source)` to write into
     /// `assets/wgsl/`.
     pub fn add_wgsl(&mut self, spirv_dir: &std::path::Path) -> Result<Vec<(String, String)>, String> {
@@ -533,9 +574,13 @@ impl Manifest {
                 continue;
             }
             let bytes = std::fs::read(spirv_dir.join(&m.file)).map_err(|e| format!("{}: {e}", m.file))?;
+            if words::is_ray_tracing(&bytes)? {
+                continue;
+            }
             let w = crate::wgsl::from_spirv(&bytes).map_err(|e| format!("{}: {e}", m.entry_point))?;
             let file = format!("{}.wgsl", m.entry_point);
-            m.wgsl = Some(WgslManifest { file: file.clone(), constants_binding: w.constants_binding });
+            let entry_point = (w.entry_point != m.entry_point).then_some(w.entry_point);
+            m.wgsl = Some(WgslManifest { file: file.clone(), constants_binding: w.constants_binding, entry_point });
             out.push((file, w.source));
         }
         Ok(out)
@@ -609,6 +654,9 @@ impl Manifest {
                     ));
                 }
             }
+        }
+        for (tm, &t) in self.techniques.iter_mut().zip(aokit_shaders::techniques::TECHNIQUES) {
+            tm.constants = constants::of(t, &self.modules, &self.structs)?;
         }
         Ok(self)
     }
@@ -813,10 +861,12 @@ fn techniques() -> Result<Vec<TechniqueManifest>, String> {
             .iter()
             .zip(barriers)
             .map(|(p, barrier_before)| {
-                let (kind, stages) = match p.kind {
-                    PassKind::Compute => ("compute", vec![]),
-                    PassKind::RayTracing { miss, any_hit } => ("ray_tracing", vec![miss.into(), any_hit.into()]),
-                    PassKind::Raster { vertex } => ("raster", vec![vertex.into()]),
+                let (kind, stages, ray_query) = match p.kind {
+                    PassKind::Compute => ("compute", vec![], None),
+                    PassKind::RayTracing { miss, any_hit, query } => {
+                        ("ray_tracing", vec![miss.into(), any_hit.into()], Some(query.into()))
+                    }
+                    PassKind::Raster { vertex } => ("raster", vec![vertex.into()], None),
                 };
                 let access = |a: Access| match a {
                     Access::Read => "read",
@@ -828,6 +878,7 @@ fn techniques() -> Result<Vec<TechniqueManifest>, String> {
                     entry: p.entry.into(),
                     kind: kind.into(),
                     stages,
+                    ray_query,
                     bindings: p.bindings.iter().map(|b| (b.slot, b.resource.into(), access(b.access).into())).collect(),
                     dispatch: p.dispatch.formula(),
                     barrier_before,
@@ -842,7 +893,191 @@ fn techniques() -> Result<Vec<TechniqueManifest>, String> {
             resources,
             passes,
             output: graph.output.into(),
+            constants: Vec::new(),
         });
     }
     Ok(out)
+}
+
+/// The techniques' `constants` (feature `reflect`): which constants structs a technique's passes
+/// use, and every field of them with its formula from the technique's declaration.
+#[cfg(feature = "reflect")]
+pub mod constants {
+    use super::{ConstantManifest, ModuleManifest, StructManifest};
+    use aokit_shaders::graph::{Graph, Init, PassKind};
+    use aokit_shaders::technique::{Kind, Technique};
+
+    /// The modules a pass runs: its entry, the ray-tracing pipeline's miss and any-hit and its
+    /// ray-query variant, the raster pass's vertex module.
+    pub fn pass_modules(kind: PassKind, entry: &'static str) -> Vec<&'static str> {
+        match kind {
+            PassKind::Compute => vec![entry],
+            PassKind::RayTracing { miss, any_hit, query } => vec![entry, miss, any_hit, query],
+            PassKind::Raster { vertex } => vec![vertex, entry],
+        }
+    }
+
+    /// The shared struct a binding's Rust type holds records of (`[SvaoFrame]` → `SvaoFrame`).
+    fn record_struct<'a>(rust_type: &str, structs: &'a [StructManifest]) -> Option<&'a StructManifest> {
+        let element = rust_type.strip_prefix('[')?.strip_suffix(']')?;
+        structs.iter().find(|s| s.name == element)
+    }
+
+    /// The constants structs of `graph`'s passes: each module's push-constant block, and the
+    /// struct of every record (a `data` resource) bound where a module's binding holds a shared
+    /// struct; then, recursively, the shared structs their fields are. Added to `used`.
+    pub fn used_structs(
+        graph: &Graph,
+        modules: &[ModuleManifest],
+        structs: &[StructManifest],
+        used: &mut Vec<String>,
+    ) -> Result<(), String> {
+        let mut roots = Vec::new();
+        for pass in &graph.passes {
+            for name in pass_modules(pass.kind, pass.entry) {
+                let m = modules
+                    .iter()
+                    .find(|m| m.entry_point == name)
+                    .ok_or_else(|| format!("pass {}: no module {name}", pass.label))?;
+                roots.extend(m.push_constants.clone());
+                for b in &pass.bindings {
+                    let record = graph.resource(b.resource).is_some_and(|r| matches!(r.init, Init::Data(_)));
+                    let binding = m.bindings.iter().find(|mb| mb.set == 0 && mb.binding == b.slot);
+                    if let (true, Some(s)) = (record, binding.and_then(|mb| record_struct(&mb.rust_type, structs))) {
+                        roots.push(s.name.clone());
+                    }
+                }
+            }
+        }
+        while let Some(name) = roots.pop() {
+            if used.contains(&name) {
+                continue;
+            }
+            let s = structs.iter().find(|s| s.name == name).ok_or_else(|| format!("{name} is not a shared struct"))?;
+            for f in &s.fields {
+                let ty = f.ty.trim_start_matches('[').split(';').next().unwrap_or("").trim_end_matches(']');
+                if structs.iter().any(|s| s.name == ty) {
+                    roots.push(ty.to_string());
+                }
+            }
+            used.push(name);
+        }
+        Ok(())
+    }
+
+    /// The values tried per setting to find every constants struct a technique can use: every
+    /// choice; a count's minimum, minimum + 1, default + 1 and (bounded) maximum; a number's
+    /// minimum and (bounded) maximum.
+    pub fn values_tried(kind: Kind, default: &str) -> Vec<String> {
+        let mut out: Vec<String> = match kind {
+            Kind::Choice(names) => names.iter().map(|n| n.to_string()).collect(),
+            Kind::Count { min, max } => {
+                let d: u32 = default.parse().unwrap_or(min);
+                let mut v = vec![min, min.saturating_add(1), d.saturating_add(1)];
+                if max < u32::MAX {
+                    v.push(max);
+                }
+                v.into_iter().filter(|&x| x <= max).map(|x| x.to_string()).collect()
+            }
+            Kind::Number { min, max } => {
+                let mut v = vec![min.to_string()];
+                if max < f32::MAX {
+                    v.push(max.to_string());
+                }
+                v
+            }
+        };
+        out.dedup();
+        out
+    }
+
+    /// The constants structs `t` uses at its defaults and with each setting at each of
+    /// [`values_tried`] (one at a time; values its checks refuse are skipped), for the frame
+    /// `super::reference_frame`.
+    pub fn structs_of(
+        t: &'static dyn Technique,
+        modules: &[ModuleManifest],
+        structs: &[StructManifest],
+    ) -> Result<Vec<String>, String> {
+        let frame = super::reference_frame(aokit_shaders::glam::UVec2::new(1920, 1080), 64);
+        let mut used = Vec::new();
+        let defaults = t.configure();
+        used_structs(&defaults.graph(&frame)?, modules, structs, &mut used)?;
+        for (key, default) in defaults.values() {
+            let row = t.rows().into_iter().find(|r| r.key == key).expect("a row per value");
+            for value in values_tried(row.kind, &default) {
+                let mut c = t.configure();
+                if let Ok(graph) = c.set(key, &value).and_then(|_| c.graph(&frame)) {
+                    used_structs(&graph, modules, structs, &mut used)?;
+                }
+            }
+        }
+        Ok(used)
+    }
+
+    /// Every field of every constants struct `t` uses with its formula, structs in `structs`
+    /// order. Fails where a field has no formula, a row names a field that does not exist (or
+    /// twice), or a formula refers to a `Struct.field` or a setting key that does not exist.
+    pub fn of(
+        t: &'static dyn Technique,
+        modules: &[ModuleManifest],
+        structs: &[StructManifest],
+    ) -> Result<Vec<ConstantManifest>, String> {
+        let name = t.name();
+        let rows = t.constants();
+        let keys: Vec<&str> =
+            aokit_shaders::techniques::TECHNIQUES.iter().flat_map(|t| t.rows()).map(|r| r.key).collect();
+        for (i, row) in rows.iter().enumerate() {
+            let (s, f) = row.path();
+            let exists = structs.iter().any(|st| st.name == s && st.fields.iter().any(|x| x.name == f));
+            if !exists {
+                return Err(format!("{name}: constant {}: no field {f} in a shared struct {s}", row.field));
+            }
+            if rows[..i].iter().any(|r| r.field == row.field) {
+                return Err(format!("{name}: constant {} declared twice", row.field));
+            }
+            if row.formula.trim().is_empty() {
+                return Err(format!("{name}: constant {} has an empty formula", row.field));
+            }
+            // Setting keys are in backticks.
+            for (j, key) in row.formula.split('`').enumerate() {
+                if j % 2 == 1 && !keys.contains(&key) {
+                    return Err(format!("{name}: constant {}: `{key}` is no technique's setting", row.field));
+                }
+            }
+            // `Struct.field` references.
+            let words = row.formula.split(|c: char| !(c.is_alphanumeric() || c == '_' || c == '.'));
+            for word in words {
+                let Some((s, f)) = word.trim_end_matches('.').split_once('.') else { continue };
+                let Some(st) = structs.iter().find(|st| st.name == s) else { continue };
+                if !st.fields.iter().any(|x| x.name == f) {
+                    return Err(format!(
+                        "{name}: constant {}: its formula names {s}.{f}, which does not exist",
+                        row.field
+                    ));
+                }
+            }
+        }
+        let used = structs_of(t, modules, structs)?;
+        let mut out = Vec::new();
+        for s in structs.iter().filter(|s| used.contains(&s.name)) {
+            for f in &s.fields {
+                let row = rows.iter().find(|r| r.path() == (s.name.as_str(), f.name.as_str())).ok_or_else(|| {
+                    format!(
+                        "{name}: {}.{} ({}, offset {}) has no formula: its passes use {}; add a row to the \
+                         technique's constants (aokit_shaders::technique::Constant)",
+                        s.name, f.name, f.ty, f.offset, s.name
+                    )
+                })?;
+                out.push(ConstantManifest {
+                    struct_name: s.name.clone(),
+                    field: f.name.clone(),
+                    offset: f.offset,
+                    ty: f.ty.clone(),
+                    formula: row.formula.into(),
+                });
+            }
+        }
+        Ok(out)
+    }
 }

@@ -31,6 +31,10 @@ pub const GTAO_MAIN: &[u8] = spv!("gtao_main");
 pub const GTAO_DENOISE: &[u8] = spv!("gtao_denoise");
 pub const RAYMARCH_MAIN: &[u8] = spv!("raymarch_main");
 pub const HYBRID_RGEN: &[u8] = spv!("hybrid_rgen");
+pub const RAYSD_RQ: &[u8] = spv!("raysd_rq");
+pub const RAYSVAO_RQ: &[u8] = spv!("raysvao_rq");
+pub const GROUNDTRUTH_RQ: &[u8] = spv!("groundtruth_rq");
+pub const HYBRID_RQ: &[u8] = spv!("hybrid_rq");
 pub const RASTERSD_FS: &[u8] = spv!("rastersd_fs");
 pub const IMPORT_DEPTH: &[u8] = spv!("import_depth");
 pub const IMPORT_NORMALS: &[u8] = spv!("import_normals");
@@ -39,7 +43,7 @@ pub const EXPORT_AO_R16F: &[u8] = spv!("export_ao_r16f");
 pub const EXPORT_AO_R8: &[u8] = spv!("export_ao_r8");
 
 /// Every module by entry-point name.
-pub const ALL: [(&str, &[u8]); 28] = [
+pub const ALL: [(&str, &[u8]); 32] = [
     ("vao_main", VAO_MAIN),
     ("blur_main", BLUR_MAIN),
     ("gbuffer_vs", GBUFFER_VS),
@@ -62,6 +66,10 @@ pub const ALL: [(&str, &[u8]); 28] = [
     ("gtao_denoise", GTAO_DENOISE),
     ("raymarch_main", RAYMARCH_MAIN),
     ("hybrid_rgen", HYBRID_RGEN),
+    ("raysd_rq", RAYSD_RQ),
+    ("raysvao_rq", RAYSVAO_RQ),
+    ("groundtruth_rq", GROUNDTRUTH_RQ),
+    ("hybrid_rq", HYBRID_RQ),
     ("rastersd_fs", RASTERSD_FS),
     ("import_depth", IMPORT_DEPTH),
     ("import_normals", IMPORT_NORMALS),

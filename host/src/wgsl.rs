@@ -20,6 +20,36 @@ pub const MAX_STORAGE_TEXTURES: usize = 4;
 pub struct Wgsl {
     pub source: String,
     pub constants_binding: Option<u32>,
+    /// The entry point's name in the WGSL (naga renames some, e.g. `svao_pass1` → `svao_pass1_`).
+    pub entry_point: String,
+}
+
+/// naga writes `f32` literals in shortest round-trip decimal, which for values near `f32::MAX`
+/// (e.g. `340282350000000000000000000000000000000f`) exceeds `f32::MAX` as a real number: WGSL
+/// requires a literal to be representable (WGSL §6.2 "f32" conversion rank), and Chromium's
+/// Tint rejects it. Write every such literal as the exact hexadecimal float of its `f32` value.
+fn exact_large_literals(source: &str) -> String {
+    let mut out = String::with_capacity(source.len());
+    let mut rest = source;
+    while let Some(start) = rest.find(|c: char| c.is_ascii_digit()) {
+        let (before, tail) = rest.split_at(start);
+        out.push_str(before);
+        let len = tail.find(|c: char| !(c.is_ascii_alphanumeric() || c == '.' || c == '_')).unwrap_or(tail.len());
+        let token = &tail[..len];
+        let word_start = before.chars().last().is_some_and(|c| c.is_ascii_alphanumeric() || c == '_');
+        let replaced = match token.strip_suffix('f').map(str::parse::<f64>) {
+            Some(Ok(v)) if !word_start && v > f32::MAX as f64 => {
+                let bits = (v as f32).to_bits();
+                let mantissa = (bits & 0x7f_ffff) << 1;
+                Some(format!("0x1.{mantissa:06x}p+{}f", ((bits >> 23) & 0xff) as i32 - 127))
+            }
+            _ => None,
+        };
+        out.push_str(replaced.as_deref().unwrap_or(token));
+        rest = &tail[len..];
+    }
+    out.push_str(rest);
+    out
 }
 
 fn validate(module: &naga::Module, what: &str) -> Result<naga::valid::ModuleInfo, String> {
@@ -69,8 +99,28 @@ pub fn from_spirv(bytes: &[u8]) -> Result<Wgsl, String> {
     }
     let source = naga::back::wgsl::write_string(&module, &info, naga::back::wgsl::WriterFlags::empty())
         .map_err(|e| format!("naga wgsl-out: {e}"))?;
+    let source = exact_large_literals(&source);
     let reread = naga::front::wgsl::parse_str(&source)
         .map_err(|e| format!("the WGSL does not parse: {}", e.emit_to_string(&source)))?;
     validate(&reread, "the written WGSL")?;
-    Ok(Wgsl { source, constants_binding })
+    let [entry] = &reread.entry_points[..] else {
+        return Err(format!("the WGSL has {} entry points", reread.entry_points.len()));
+    };
+    Ok(Wgsl { source, constants_binding, entry_point: entry.name.clone() })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::exact_large_literals;
+
+    #[test]
+    fn literals_beyond_f32_max_become_exact_hex_floats() {
+        let max =
+            "let a = 340282350000000000000000000000000000000f; let b = -340282350000000000000000000000000000000f;";
+        assert_eq!(exact_large_literals(max), "let a = 0x1.fffffep+127f; let b = -0x1.fffffep+127f;");
+        // The hex float is exactly f32::MAX; ordinary literals and names stay as they are.
+        assert_eq!(f32::from_bits(0x7f7f_ffff), f32::MAX);
+        let plain = "let x1 = 0.5f + 1e3f + 16777216f; var<storage> type_2: u32 = 4294967295u;";
+        assert_eq!(exact_large_literals(plain), plain);
+    }
 }

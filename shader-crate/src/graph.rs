@@ -217,12 +217,42 @@ pub enum PassKind {
     /// A compute shader: `entry` is the compute entry point.
     Compute,
     /// A ray-tracing pipeline: `entry` is the ray-generation shader, with this miss and any-hit
-    /// shader (every candidate triangle runs the any-hit; no closest-hit).
-    RayTracing { miss: &'static str, any_hit: &'static str },
+    /// shader (every candidate triangle runs the any-hit; no closest-hit). `query` is the same
+    /// pass as a compute kernel with `VK_KHR_ray_query` (the bindings of the three shaders
+    /// together, workgroups over the launch size), which [`Graph::with_rt_mode`] swaps in.
+    RayTracing { miss: &'static str, any_hit: &'static str, query: &'static str },
     /// A raster pass without attachments: `vertex` draws the scene's triangles
     /// ([`inputs::SCENE_VERTICES`]) over a viewport of `invocations` pixels, `entry` is the
     /// fragment shader; the push constants go to the vertex stage.
     Raster { vertex: &'static str },
+}
+
+/// How ray-traced passes run on Vulkan.
+#[derive(Copy, Clone, Debug, Default, PartialEq, Eq)]
+pub enum RtMode {
+    /// Ray-tracing pipelines (`VK_KHR_ray_tracing_pipeline`): ray generation, miss and any-hit
+    /// shaders with a shader binding table.
+    #[default]
+    Pipeline,
+    /// Compute kernels with ray queries (`VK_KHR_ray_query`): the any-hit decision runs in the
+    /// candidate loop (`aokit_shaders::common::any_hit::query_candidates`).
+    Query,
+}
+
+impl RtMode {
+    pub const NAMES: [&'static str; 2] = ["pipeline", "query"];
+
+    pub fn name(self) -> &'static str {
+        Self::NAMES[self as usize]
+    }
+
+    pub fn parse(s: &str) -> Result<RtMode, String> {
+        match s {
+            "pipeline" => Ok(RtMode::Pipeline),
+            "query" => Ok(RtMode::Query),
+            _ => Err(format!("--rt-mode {s}: expected pipeline or query")),
+        }
+    }
 }
 
 /// One dispatch (or trace) of a kernel.
@@ -323,9 +353,25 @@ impl Graph {
         out
     }
 
-    /// Does any pass trace rays?
+    /// Does any pass trace rays (a ray-tracing pipeline, or a kernel with ray queries: one that
+    /// binds the scene's TLAS)?
     pub fn traces_rays(&self) -> bool {
-        self.passes.iter().any(|p| matches!(p.kind, PassKind::RayTracing { .. }))
+        self.passes.iter().any(|p| p.bindings.iter().any(|b| b.resource == inputs::SCENE_TLAS))
+    }
+
+    /// The graph with its ray-traced passes run as `mode` says: unchanged for
+    /// [`RtMode::Pipeline`]; for [`RtMode::Query`] every ray-tracing pass becomes the compute
+    /// pass of its ray-query variant (same label, bindings and invocations).
+    pub fn with_rt_mode(mut self, mode: RtMode) -> Graph {
+        if mode == RtMode::Query {
+            for pass in &mut self.passes {
+                if let PassKind::RayTracing { query, .. } = pass.kind {
+                    pass.entry = query;
+                    pass.kind = PassKind::Compute;
+                }
+            }
+        }
+        self
     }
 
     /// Check the graph's consistency: every bound resource is declared or an input, no input is

@@ -10,6 +10,8 @@
 //! Entry points are thin: they read storage-buffer slices and push constants and call pure
 //! per-pixel functions, which the CPU simulator calls directly over the same slices.
 #![cfg_attr(target_arch = "spirv", no_std)]
+// `spirv_std::ray_query!` expands an `asm!` in this crate (the ray-query variants).
+#![cfg_attr(all(target_arch = "spirv", feature = "rq"), feature(asm_experimental_arch))]
 #![allow(clippy::too_many_arguments)]
 
 pub use spirv_std::glam;

@@ -229,6 +229,67 @@ pub struct Declaration<S: 'static> {
     /// World-space rays a frame traces where the settings fix the count (the stenciled family
     /// counts its rays from its buffers).
     pub rays: fn(&S, &FrameDesc) -> Option<u64>,
+    /// How every field of the constants structs its passes use (push constants, records bound as
+    /// storage buffers, and the structs they contain) is computed from the settings and the
+    /// camera: the manifest's `constants`. Declared beside the code that fills the structs,
+    /// joined with [`join_constants!`](crate::join_constants) (the camera's rows are
+    /// [`crate::common::camera::CONSTANTS`]).
+    pub constants: &'static [Constant],
+}
+
+/// How an engine computes one field of a constants struct (a push-constant block or a record
+/// in a storage buffer, `crate::contract::shared_structs`) from the settings and the camera.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct Constant {
+    /// `Struct.field`, e.g. `SvaoParams.sd_low_res`; a field whose type is another shared
+    /// struct has a row too (that struct's rows say the rest).
+    pub field: &'static str,
+    /// What the code writes there, in words and symbols: the setting keys in backticks
+    /// (`` `sd-res` ``), choices with their numeric values, the frame's quantities (`W×H` full
+    /// target, `w×h` inner image, `g` guard band, R radius, e exponent, τ thickness) and units;
+    /// `[x]` is the value where the technique does not read the key (its default).
+    pub formula: &'static str,
+}
+
+impl Constant {
+    pub const fn new(field: &'static str, formula: &'static str) -> Self {
+        Constant { field, formula }
+    }
+
+    /// `(struct, field)` of [`Constant::field`].
+    pub fn path(&self) -> (&'static str, &'static str) {
+        self.field.split_once('.').unwrap_or((self.field, ""))
+    }
+
+    /// Does the formula name setting `key` (in backticks)?
+    pub fn mentions(&self, key: &str) -> bool {
+        self.formula.contains(&format!("`{key}`"))
+    }
+}
+
+/// The rows of `tables` one after another, `N` of them in all (see [`join_constants!`](crate::join_constants)).
+pub const fn join<const N: usize>(tables: &[&[Constant]]) -> [Constant; N] {
+    let mut out = [Constant::new("", ""); N];
+    let (mut n, mut t) = (0, 0);
+    while t < tables.len() {
+        let mut i = 0;
+        while i < tables[t].len() {
+            out[n] = tables[t][i];
+            (n, i) = (n + 1, i + 1);
+        }
+        t += 1;
+    }
+    assert!(n == N, "join: N is not the number of rows");
+    out
+}
+
+/// Constant tables joined into one `&'static [Constant]`, e.g.
+/// `join_constants![SVAO, crate::vao::settings::CONSTANTS, crate::common::camera::CONSTANTS]`.
+#[macro_export]
+macro_rules! join_constants {
+    ($($table:expr),+ $(,)?) => {
+        &$crate::technique::join::<{ 0 $(+ $table.len())+ }>(&[$($table),+])
+    };
 }
 
 /// A technique with its settings, behind one type for every settings struct.
@@ -263,6 +324,8 @@ pub trait Technique: Sync {
     fn configure(&'static self) -> Box<dyn Configured>;
     /// The settings the technique reads, without their types.
     fn rows(&self) -> Vec<Row>;
+    /// How each field of its constants structs is computed ([`Declaration::constants`]).
+    fn constants(&self) -> &'static [Constant];
 }
 
 /// A setting without its settings type: what the CLI needs to declare a flag.
@@ -332,6 +395,10 @@ impl<S: Settings> Technique for Declaration<S> {
                 settings_type: core::any::type_name::<S>(),
             })
             .collect()
+    }
+
+    fn constants(&self) -> &'static [Constant] {
+        self.constants
     }
 }
 

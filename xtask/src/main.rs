@@ -46,7 +46,7 @@ fn build_spirv() -> Result<(), String> {
     let out_dir = root.join("assets/spirv");
     let backend =
         Install::from_shader_crate(shader_crate.clone()).run().map_err(|e| format!("installing rust-gpu: {e:?}"))?;
-    let build = |ray_tracing: bool| -> Result<BTreeMap<String, PathBuf>, String> {
+    let build = |feature: Option<&str>| -> Result<BTreeMap<String, PathBuf>, String> {
         let mut builder = backend
             .to_spirv_builder(&shader_crate, TARGET)
             .release(true)
@@ -57,11 +57,20 @@ fn build_spirv() -> Result<(), String> {
             // this capability unconditionally (spec appendix "Vulkan Environment for SPIR-V",
             // capability table: VK_VERSION_1_0), so declaring it in every module costs nothing.
             .capability(Capability::StorageImageExtendedFormats);
-        if ray_tracing {
-            builder = builder
-                .capability(Capability::RayTracingKHR)
-                .extension("SPV_KHR_ray_tracing")
-                .shader_crate_features(["rt".to_string()]);
+        match feature {
+            Some("rt") => {
+                builder = builder
+                    .capability(Capability::RayTracingKHR)
+                    .extension("SPV_KHR_ray_tracing")
+                    .shader_crate_features(["rt".to_string()]);
+            }
+            Some("rq") => {
+                builder = builder
+                    .capability(Capability::RayQueryKHR)
+                    .extension("SPV_KHR_ray_query")
+                    .shader_crate_features(["rq".to_string()]);
+            }
+            _ => {}
         }
         let result = builder.build().map_err(|e| format!("rust-gpu build: {e}"))?;
         match result.module {
@@ -69,13 +78,16 @@ fn build_spirv() -> Result<(), String> {
             ModuleResult::SingleModule(_) => Err("expected one module per entry point".into()),
         }
     };
-    // Two passes: a capability applies to every module of a build, and compute/raster modules
-    // must neither require ray tracing nor lose naga's validation.
-    let mut modules = build(false)?;
+    // Three passes: a capability applies to every module of a build, and compute/raster modules
+    // must neither require ray tracing or ray queries nor lose naga's validation; the
+    // ray-tracing pipelines' modules must not require ray queries (nor the other way round).
+    let mut modules = build(None)?;
     let plain: Vec<String> = modules.keys().cloned().collect();
-    for (entry, path) in build(true)? {
-        if !plain.contains(&entry) {
-            modules.insert(entry, path);
+    for feature in ["rt", "rq"] {
+        for (entry, path) in build(Some(feature))? {
+            if !plain.contains(&entry) {
+                modules.insert(entry, path);
+            }
         }
     }
     std::fs::create_dir_all(&out_dir).map_err(|e| e.to_string())?;

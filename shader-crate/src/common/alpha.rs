@@ -68,3 +68,30 @@ pub fn triangle_alpha_passes(
     let uv = uvs[i] * (1.0 - bary.x - bary.y) + uvs[i + 1] * bary.x + uvs[i + 2] * bary.y;
     alpha_test_passes(headers, texels, materials[prim as usize], uv)
 }
+
+/// The per-triangle alpha tables a ray's candidates are tested against (the scene's `uvs`,
+/// `materials`, `mask_headers` and `mask_texels` bindings).
+#[derive(Copy, Clone)]
+pub struct AlphaTables<'a> {
+    pub uvs: &'a [Vec2],
+    pub materials: &'a [u32],
+    pub headers: &'a [AlphaMaskHeader],
+    pub texels: &'a [f32],
+}
+
+impl AlphaTables<'_> {
+    /// [`triangle_alpha_passes`] over these tables.
+    #[inline]
+    pub fn passes(&self, triangle: u32, bary: Vec2) -> bool {
+        triangle_alpha_passes(self.uvs, self.materials, self.headers, self.texels, triangle, bary)
+    }
+}
+
+/// An occlusion ray's decision: the first candidate that survives the alpha test ends the ray.
+impl crate::common::any_hit::CandidateHit for AlphaTables<'_> {
+    #[inline]
+    fn decide(&mut self, _t: f32, bary: Vec2, triangle: u32) -> u32 {
+        use crate::common::any_hit::{ACCEPT_AND_END, IGNORE};
+        if self.passes(triangle, bary) { ACCEPT_AND_END } else { IGNORE }
+    }
+}

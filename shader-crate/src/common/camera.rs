@@ -151,3 +151,38 @@ impl Camera {
         t * -self.world_to_view.transform_vector3(direction).z
     }
 }
+
+/// How [`Camera`] and [`ViewParams`] are computed from an engine's camera ([`Camera::look_at`]):
+/// the rows every technique's constants table ends with. Symbols: eye E, target T, up U (world
+/// space), vertical field of view `fov_y` of the INNER image (radians), inner image `w×h`, guard
+/// band `g` pixels per side, full target `W×H = (w + 2g)×(h + 2g)`, near n, far f.
+#[cfg(not(target_arch = "spirv"))]
+pub const CONSTANTS: &[crate::technique::Constant] = {
+    use crate::technique::Constant as C;
+    &[
+        C::new(
+            "Camera.world_to_view",
+            "the inverse of Camera.view_to_world (rigid: rotation Rᵀ, translation −Rᵀ·E with R = [r u −d]): \
+             world → right-handed view space looking down −Z",
+        ),
+        C::new(
+            "Camera.view_to_world",
+            "look-at, column-major: columns (r, 0), (u, 0), (−d, 0), (E, 1) with d = normalize(T − E), \
+             r = normalize(d × U), u = r × d",
+        ),
+        C::new("Camera.view", "the frame's ViewParams (ViewParams rows)"),
+        C::new(
+            "ViewParams.res",
+            "(W, H) = (w + 2g, h + 2g) as f32: the full target, inner image plus guard band (pixels)",
+        ),
+        C::new(
+            "ViewParams.tan_half_fov",
+            "(tx, ty) of the FULL target: ty = tan(fov_y/2)·H/h (the same focal length over the guard band), \
+             tx = ty·W/H",
+        ),
+        C::new("ViewParams.near", "n: near plane distance (view depth, world units)"),
+        C::new("ViewParams.far", "f: far plane distance (view depth, world units); depths ≥ f are background"),
+        C::new("ViewParams.guard", "g: the G-buffer's guard band, pixels per side (the inputs are W×H)"),
+        C::new("ViewParams._pad", "0"),
+    ]
+};

@@ -1,6 +1,7 @@
 //! Math shared by every technique (spec svao-raysd §1, §4.1, §7.2, §7.3).
 
 pub mod alpha;
+pub mod any_hit;
 pub mod atomics;
 pub mod camera;
 pub mod denoise_terms;

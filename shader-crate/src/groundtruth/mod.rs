@@ -6,6 +6,8 @@
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
+#[cfg(all(target_arch = "spirv", feature = "rq"))]
+pub mod rq;
 #[cfg(any(feature = "rt", not(target_arch = "spirv")))]
 pub mod rt;
 #[cfg(not(target_arch = "spirv"))]

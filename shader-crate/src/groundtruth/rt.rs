@@ -2,7 +2,8 @@
 //! a miss shader that clears the "occluded" payload, and an any-hit shader for the alpha test.
 
 use super::{GroundTruthFrame, OcclusionQuery, ground_truth_pixel};
-use crate::common::alpha::{AlphaMaskHeader, triangle_alpha_passes};
+use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
+use crate::common::any_hit::{CandidateHit, IGNORE};
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2, Vec3};
 use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
@@ -76,7 +77,8 @@ pub fn groundtruth_ahit(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 7)] mask_headers: &[AlphaMaskHeader],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_texels: &[f32],
 ) {
-    if !triangle_alpha_passes(uvs, materials, mask_headers, mask_texels, first_triangle + prim, *bary) {
+    let mut alpha = AlphaTables { uvs, materials, headers: mask_headers, texels: mask_texels };
+    if alpha.decide(0.0, *bary, first_triangle + prim) == IGNORE {
         unsafe { spirv_std::arch::ignore_intersection() };
     }
 }

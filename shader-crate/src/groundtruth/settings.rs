@@ -3,7 +3,7 @@
 
 use super::{GroundTruthFrame, GroundTruthParams};
 use crate::graph::{Access, Binding, Extent, FrameDesc, Graph, Pass, PassKind, inputs, record, slots, target_f32};
-use crate::technique::{Declaration, Setting, Settings, single_layer};
+use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
 /// Ground-truth settings [defaults].
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -46,7 +46,25 @@ pub static GROUNDTRUTH: Declaration<GroundTruthSettings> = Declaration {
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
     rays: |s, frame| Some(s.rays(frame)),
+    constants: CONSTANTS,
 };
+
+/// How [`GroundTruthSettings::frame`] fills `GroundTruthFrame` and `GroundTruthParams`, then the
+/// camera's rows.
+pub const CONSTANTS: &[Constant] = crate::join_constants![
+    &[
+        Constant::new("GroundTruthFrame.camera", "the frame's Camera (Camera and ViewParams rows)"),
+        Constant::new("GroundTruthFrame.params", "the technique's GroundTruthParams (GroundTruthParams rows)"),
+        Constant::new(
+            "GroundTruthParams.radius",
+            "R: the frame's world-space AO radius, the rays' length (world units)"
+        ),
+        Constant::new("GroundTruthParams.exponent", "e: the frame's AO exponent (the AO is V^e)"),
+        Constant::new("GroundTruthParams.samples", "`spp`: rays per pixel [512]"),
+        Constant::new("GroundTruthParams.uniform", "`sampling`: cosine 0, uniform 1 [cosine 0]"),
+    ],
+    crate::common::camera::CONSTANTS,
+];
 
 impl GroundTruthSettings {
     /// The kernel's record: the frame's radius and exponent.
@@ -84,7 +102,11 @@ impl GroundTruthSettings {
         let passes = vec![Pass {
             label: "groundtruth",
             entry: "groundtruth_rgen",
-            kind: PassKind::RayTracing { miss: "groundtruth_miss", any_hit: "groundtruth_ahit" },
+            kind: PassKind::RayTracing {
+                miss: "groundtruth_miss",
+                any_hit: "groundtruth_ahit",
+                query: "groundtruth_rq",
+            },
             bindings,
             dispatch: Extent::Inner,
             push_constants: Vec::new(),

@@ -6,7 +6,7 @@ use super::{GtaoParams, MIP_LEVELS};
 use crate::graph::{
     Access, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, inputs, target_f32, target_u32,
 };
-use crate::technique::{Declaration, Setting, Settings, rays_counted, single_layer};
+use crate::technique::{Constant, Declaration, Setting, Settings, rays_counted, single_layer};
 
 /// XeGTAO quality presets (spec gtao-raymarch-hybrid §2.2): slices × steps per side; any other
 /// pair is a custom quality.
@@ -153,7 +153,60 @@ pub static GTAO: Declaration<GtaoSettings> = Declaration {
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
     rays: rays_counted,
+    constants: CONSTANTS,
 };
+
+/// How [`GtaoSettings::params`] and [`GtaoSettings::graph`] fill `GtaoParams` (XeGTAO's
+/// `GTAOUpdateConstants`), then the camera's rows.
+pub const CONSTANTS: &[Constant] = crate::join_constants![
+    &[
+        Constant::new("GtaoParams.view", "the frame's ViewParams (ViewParams rows)"),
+        Constant::new("GtaoParams.radius", "R: the frame's world-space AO radius (world units), XeGTAO's EffectRadius"),
+        Constant::new("GtaoParams.radius_multiplier", "`radius-multiplier` [1.457]"),
+        Constant::new("GtaoParams.falloff_range", "`falloff-range` [0.615]"),
+        Constant::new("GtaoParams.sample_distribution_power", "`sample-power` [2]"),
+        Constant::new("GtaoParams.thin_occluder_compensation", "`thin-occluder` [0]"),
+        Constant::new("GtaoParams.final_value_power", "`final-power` [2.2]"),
+        Constant::new("GtaoParams.depth_mip_sampling_offset", "`mip-offset` [3.3]"),
+        Constant::new(
+            "GtaoParams.slices",
+            "`slices`, which `preset` sets first: low 1, medium 2, high 3, ultra 9 (custom keeps it) [3]",
+        ),
+        Constant::new(
+            "GtaoParams.steps",
+            "`steps`, which `preset` sets first: low 2, medium 2, high 3, ultra 3 (custom keeps it) [3]",
+        ),
+        Constant::new("GtaoParams.denoise_passes", "`denoise` (0 still runs one denoise pass) [1]"),
+        Constant::new("GtaoParams.noise_frame", "0"),
+        Constant::new(
+            "GtaoParams.pass",
+            "per pass: gtao_prefilter: the MIP level k = 0…4 its dispatch writes (one pass per level, in \
+             order); gtao_normals and gtao_main: 0; gtao_denoise: the pass index i = 0 … max(1, `denoise`) − 1",
+        ),
+    ],
+    crate::common::camera::CONSTANTS,
+];
+
+/// How [`with_denoiser`] fills `GtaoParams` for the techniques that reuse XeGTAO's denoiser
+/// (the ray march, the hybrid: their `denoise` key): XeGTAO's defaults but the pass count.
+pub const DENOISER: &[Constant] = &[
+    Constant::new("GtaoParams.view", "the frame's ViewParams (ViewParams rows)"),
+    Constant::new("GtaoParams.radius", "R: the frame's world-space AO radius (world units; unread by the denoiser)"),
+    Constant::new("GtaoParams.radius_multiplier", "1.457 (XeGTAO's default; unread by the denoiser)"),
+    Constant::new("GtaoParams.falloff_range", "0.615 (XeGTAO's default; unread by the denoiser)"),
+    Constant::new("GtaoParams.sample_distribution_power", "2 (XeGTAO's default; unread by the denoiser)"),
+    Constant::new("GtaoParams.thin_occluder_compensation", "0 (XeGTAO's default; unread by the denoiser)"),
+    Constant::new("GtaoParams.final_value_power", "2.2 (XeGTAO's default; unread by the denoiser)"),
+    Constant::new("GtaoParams.depth_mip_sampling_offset", "3.3 (XeGTAO's default; unread by the denoiser)"),
+    Constant::new("GtaoParams.slices", "3 (XeGTAO's default; unread by the denoiser)"),
+    Constant::new("GtaoParams.steps", "3 (XeGTAO's default; unread by the denoiser)"),
+    Constant::new(
+        "GtaoParams.denoise_passes",
+        "`denoise`: the denoise passes, 1–3 (0: no denoiser, the technique's AO is final)",
+    ),
+    Constant::new("GtaoParams.noise_frame", "0"),
+    Constant::new("GtaoParams.pass", "per pass: the denoise pass index i = 0 … `denoise` − 1"),
+];
 
 impl GtaoSettings {
     /// The kernels' constants (XeGTAO's `GTAOUpdateConstants`) for a frame.

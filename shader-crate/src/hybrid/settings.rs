@@ -8,7 +8,7 @@ use crate::graph::{
 };
 use crate::gtao::settings::with_denoiser;
 use crate::raymarch::settings::DEPTH_BIAS;
-use crate::technique::{Declaration, Setting, Settings, single_layer};
+use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
 /// Rays per pixel and the world-ray weight (spec §4.1 defaults in brackets).
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -100,7 +100,30 @@ pub static HYBRID: Declaration<HybridSettings> = Declaration {
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
     rays: |s, frame| Some(s.rays(frame)),
+    constants: CONSTANTS,
 };
+
+/// How [`HybridSettings::frame`] fills `HybridFrame` and `HybridParams`, then the denoiser's
+/// `GtaoParams` (`denoise` > 0) and the camera's rows.
+pub const CONSTANTS: &[Constant] = crate::join_constants![
+    &[
+        Constant::new("HybridFrame.camera", "the frame's Camera (Camera and ViewParams rows)"),
+        Constant::new("HybridFrame.params", "the technique's HybridParams (HybridParams rows)"),
+        Constant::new("HybridParams.radius", "R: the frame's world-space AO radius, the rays' length (world units)"),
+        Constant::new(
+            "HybridParams.world_weight",
+            "`world-weight`, which `variant` sets first: mixed 2/3, world 1, screen 0 [2/3]",
+        ),
+        Constant::new("HybridParams.depth_bias", "0.0008: relative depth bias κ of the screen march"),
+        Constant::new("HybridParams.screen_rays", "`variant`: mixed 1, world 0, screen 2 screen rays per pixel [1]"),
+        Constant::new("HybridParams.world_rays", "`variant`: mixed 1, world 2, screen 0 world rays per pixel [1]"),
+        Constant::new("HybridParams.screen_steps", "`screen-steps`: steps of a screen ray [16]"),
+        Constant::new("HybridParams.noise_frame", "0"),
+        Constant::new("HybridParams._pad", "0"),
+    ],
+    crate::gtao::settings::DENOISER,
+    crate::common::camera::CONSTANTS,
+];
 
 impl HybridSettings {
     /// The paper's variants (spec §4.2, last paragraph): `mixed` (1 screen + 1 world, w = 2/3), `world` (2 world
@@ -156,7 +179,7 @@ impl HybridSettings {
         let passes = vec![Pass {
             label: "hybrid_rays",
             entry: "hybrid_rgen",
-            kind: PassKind::RayTracing { miss: "groundtruth_miss", any_hit: "groundtruth_ahit" },
+            kind: PassKind::RayTracing { miss: "groundtruth_miss", any_hit: "groundtruth_ahit", query: "hybrid_rq" },
             bindings,
             dispatch: Extent::Full,
             push_constants: Vec::new(),

@@ -4,7 +4,7 @@
 use super::{Contribution, MAX_DIRECTIONS, RaymarchParams};
 use crate::graph::{Access, Extent, FrameDesc, Graph, Pass, inputs, record, target_f32, target_u32};
 use crate::gtao::settings::with_denoiser;
-use crate::technique::{Declaration, Setting, Settings, rays_counted, single_layer};
+use crate::technique::{Constant, Declaration, Setting, Settings, rays_counted, single_layer};
 
 /// Relative depth bias κ (spec §3.2).
 pub const DEPTH_BIAS: f32 = 0.0008;
@@ -64,7 +64,33 @@ pub static RAYMARCH: Declaration<RaymarchSettings> = Declaration {
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
     rays: rays_counted,
+    constants: CONSTANTS,
 };
+
+/// How [`RaymarchSettings::params`] fills `RaymarchParams`, then the denoiser's `GtaoParams`
+/// (`denoise` > 0) and the camera's rows. (`kernel` picks the Poisson-disk table
+/// `raymarch_kernel`, a resource, not a constant.)
+pub const CONSTANTS: &[Constant] = crate::join_constants![
+    &[
+        Constant::new("RaymarchParams.view", "the frame's ViewParams (ViewParams rows)"),
+        Constant::new(
+            "RaymarchParams.radius",
+            "R: the frame's world-space AO radius, the march distance (world units)"
+        ),
+        Constant::new("RaymarchParams.alpha", "`alpha`: contrast exponent α of Eq. 2 [1]"),
+        Constant::new("RaymarchParams.depth_bias", "0.0008: relative depth bias κ"),
+        Constant::new(
+            "RaymarchParams.thickness",
+            "f32::MAX = 3.4028235e38: depth-buffer surfaces are a pure height field"
+        ),
+        Constant::new("RaymarchParams.directions", "`directions`: N [16]"),
+        Constant::new("RaymarchParams.steps", "`steps`: S per direction [8]"),
+        Constant::new("RaymarchParams.contribution", "Contribution of `contribution`: linear 0, binary 1 [linear 0]"),
+        Constant::new("RaymarchParams.noise_frame", "0"),
+    ],
+    crate::gtao::settings::DENOISER,
+    crate::common::camera::CONSTANTS,
+];
 
 impl RaymarchSettings {
     /// Push constants with the frame's radius.

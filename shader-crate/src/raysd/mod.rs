@@ -5,9 +5,13 @@
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
+#[cfg(all(target_arch = "spirv", feature = "rq"))]
+pub mod rq;
 #[cfg(any(feature = "rt", not(target_arch = "spirv")))]
 pub mod rt;
 
+use crate::common::alpha::AlphaTables;
+use crate::common::any_hit::{ACCEPT, CandidateHit, IGNORE};
 use crate::common::float_order::from_ordered_bits;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::hash::wyman_hash;
@@ -99,6 +103,26 @@ pub fn reservoir_any_hit(payload: &mut SdPayload, t: f32, bary: Vec2, alpha_pass
     let (slot, z) = reservoir_candidate(payload, t, bary);
     let alpha = slot != NO_SLOT && alpha_passes();
     reservoir_commit(payload, slot, z, alpha)
+}
+
+/// The SD any-hit (spec §7.3) over one ray's candidates: [`reservoir_candidate`], the alpha
+/// test only for hits that would be stored, [`reservoir_commit`] — ACCEPT once the count reaches
+/// `MAX_COUNT`, IGNORE before. The any-hit shader and the ray-query loop both run it.
+pub struct SdHits<'a> {
+    pub payload: SdPayload,
+    pub alpha: AlphaTables<'a>,
+}
+
+impl CandidateHit for SdHits<'_> {
+    #[inline]
+    fn decide(&mut self, t: f32, bary: Vec2, triangle: u32) -> u32 {
+        let (slot, z) = reservoir_candidate(&mut self.payload, t, bary);
+        let mut alpha = false;
+        if slot != NO_SLOT {
+            alpha = self.alpha.passes(triangle, bary);
+        }
+        if reservoir_commit(&mut self.payload, slot, z, alpha) { ACCEPT } else { IGNORE }
+    }
 }
 
 /// One SD ray in world space; `t_min ≥ t_max` means "nothing requested": no trace.

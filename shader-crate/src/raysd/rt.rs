@@ -1,9 +1,10 @@
 //! Ray-tracing entry points of the SD map (spec svao-raysd §7): one ray-generation invocation
-//! per SD texel, the reservoir any-hit on every triangle (the trace forces non-opaque), and an
-//! empty miss shader.
+//! per SD texel, the reservoir any-hit ([`SdHits`]) on every triangle (the trace forces
+//! non-opaque), and an empty miss shader.
 
-use super::{NO_SLOT, SdPayload, reservoir_candidate, reservoir_commit, sd_ray, store_layers};
-use crate::common::alpha::{AlphaMaskHeader, triangle_alpha_passes};
+use super::{SdHits, SdPayload, sd_ray, store_layers};
+use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
+use crate::common::any_hit::{CandidateHit, IGNORE};
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2};
 use crate::svao::SvaoFrame;
@@ -70,15 +71,11 @@ pub fn raysd_ahit(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mask_headers: &[AlphaMaskHeader],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] mask_texels: &[f32],
 ) {
-    // `reservoir_any_hit` split around the alpha test (a closure over the buffers would need
-    // variable pointers).
-    let (slot, z) = reservoir_candidate(payload, t, *bary);
-    let mut alpha = false;
-    if slot != NO_SLOT {
-        alpha = triangle_alpha_passes(uvs, materials, mask_headers, mask_texels, first_triangle + prim, *bary);
-    }
-    let accept = reservoir_commit(payload, slot, z, alpha);
-    if !accept {
+    let alpha = AlphaTables { uvs, materials, headers: mask_headers, texels: mask_texels };
+    let mut hits = SdHits { payload: *payload, alpha };
+    let decision = hits.decide(t, *bary, first_triangle + prim);
+    *payload = hits.payload;
+    if decision == IGNORE {
         unsafe { spirv_std::arch::ignore_intersection() };
     }
 }

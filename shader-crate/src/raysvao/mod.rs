@@ -5,21 +5,20 @@
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
+#[cfg(all(target_arch = "spirv", feature = "rq"))]
+pub mod rq;
 #[cfg(any(feature = "rt", not(target_arch = "spirv")))]
 pub mod rt;
 
+use crate::common::alpha::AlphaTables;
+use crate::common::any_hit::CandidateHit;
 use crate::common::camera::Camera;
 use crate::common::math::sat;
 use crate::glam::Vec3;
 use crate::svao::SvaoParams;
 use crate::vao::kernel::{LineSample, PixelFrame, halo_visibility};
 
-/// Any-hit decision: the hit does not count (traversal continues).
-pub const IGNORE: u32 = 0;
-/// Any-hit decision: commit the hit (`tMax` shrinks to it).
-pub const ACCEPT: u32 = 1;
-/// Any-hit decision: commit and end the search (the sample is fully occluded).
-pub const ACCEPT_AND_END: u32 = 2;
+pub use crate::common::any_hit::{ACCEPT, ACCEPT_AND_END, IGNORE};
 
 /// The running ray distances of one sample's ray (spec §10), also its ray payload.
 #[repr(C)]
@@ -95,6 +94,24 @@ pub fn sample_any_hit(state: &mut SampleRayState, t: f32) -> u32 {
     }
     state.t_inside = state.t_inside.min(t);
     ACCEPT
+}
+
+/// The Ray-SVAO any-hit over one ray's candidates (spec §10): the alpha test, then
+/// [`sample_any_hit`] (every triangle counts as facing the ray: the library traces without
+/// culling, §10's "double-sided" case). The any-hit shader and the ray-query loop both run it.
+pub struct SampleHits<'a> {
+    pub state: SampleRayState,
+    pub alpha: AlphaTables<'a>,
+}
+
+impl CandidateHit for SampleHits<'_> {
+    #[inline]
+    fn decide(&mut self, t: f32, bary: crate::glam::Vec2, triangle: u32) -> u32 {
+        if !self.alpha.passes(triangle, bary) {
+            return IGNORE;
+        }
+        sample_any_hit(&mut self.state, t)
+    }
 }
 
 /// Visibility after the trace (spec §10): `min(v, v(Z(tInside)), vHaloOnly(Z(tHalo)))` with

@@ -1,8 +1,9 @@
 //! Ray-tracing entry points of Ray-SVAO (spec svao-raysd §10): pass 2 as a ray-generation shader
 //! over the inner image, one ray per flagged sample, the halo any-hit on every triangle.
 
-use super::{ACCEPT_AND_END, IGNORE, SampleRay, SampleRayState, SampleTracer, refine_by_ray, sample_any_hit};
-use crate::common::alpha::{AlphaMaskHeader, triangle_alpha_passes};
+use super::{ACCEPT_AND_END, IGNORE, SampleHits, SampleRay, SampleRayState, SampleTracer, refine_by_ray};
+use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
+use crate::common::any_hit::CandidateHit;
 use crate::common::camera::Camera;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2};
@@ -78,8 +79,7 @@ pub fn raysvao_rgen(
 #[spirv(miss(entry_point_name = "raysvao_miss"))]
 pub fn raysvao_miss(#[spirv(incoming_ray_payload)] _payload: &mut SampleRayState) {}
 
-/// Alpha test, then the halo decision; every triangle counts as facing the ray (the library
-/// traces without culling, spec §10's "double-sided" case).
+/// [`SampleHits`]: the alpha test, then the halo decision.
 #[spirv(any_hit(entry_point_name = "raysvao_ahit"))]
 pub fn raysvao_ahit(
     #[spirv(incoming_ray_payload)] payload: &mut SampleRayState,
@@ -92,10 +92,10 @@ pub fn raysvao_ahit(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_headers: &[AlphaMaskHeader],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mask_texels: &[f32],
 ) {
-    if !triangle_alpha_passes(uvs, materials, mask_headers, mask_texels, first_triangle + prim, *bary) {
-        unsafe { spirv_std::arch::ignore_intersection() };
-    }
-    let decision = sample_any_hit(payload, t);
+    let alpha = AlphaTables { uvs, materials, headers: mask_headers, texels: mask_texels };
+    let mut hits = SampleHits { state: *payload, alpha };
+    let decision = hits.decide(t, *bary, first_triangle + prim);
+    *payload = hits.state;
     if decision == IGNORE {
         unsafe { spirv_std::arch::ignore_intersection() };
     }

@@ -12,7 +12,7 @@ use crate::graph::{
     Access, Binding, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, PassKind, Resource, Size, Snapshot, inputs,
     record, slots, target_f32, target_u32,
 };
-use crate::technique::{Declaration, Setting, Settings, rays_counted};
+use crate::technique::{Constant, Declaration, Setting, Settings, rays_counted};
 use crate::vao::kernel::{KERNEL_HBAO, KERNEL_VAO};
 use crate::vao::settings::vao_params;
 
@@ -134,8 +134,69 @@ pub const fn stenciled(
     defaults: fn() -> SvaoSettings,
     graph: fn(&SvaoSettings, &FrameDesc) -> Result<Graph, String>,
 ) -> Declaration<SvaoSettings> {
-    Declaration { name, summary, keys, defaults, graph, second_layer: dual_layer, rays: rays_counted }
+    Declaration {
+        name,
+        summary,
+        keys,
+        defaults,
+        graph,
+        second_layer: dual_layer,
+        rays: rays_counted,
+        constants: CONSTANTS,
+    }
 }
+
+/// How [`SvaoSettings::frame`] and [`SvaoSettings::graph`] fill `SvaoFrame`, `SvaoParams` and
+/// the raster SD pass's `RasterParams`; with VAO's and the blur's rows
+/// ([`crate::vao::settings::CONSTANTS`]) and the camera's, the table of the whole stenciled
+/// family: vao, hbao, raysd, hbao-sd, sdsvao, raysvao.
+pub const SVAO: &[Constant] = &[
+    Constant::new("SvaoFrame.camera", "the frame's Camera (Camera and ViewParams rows)"),
+    Constant::new("SvaoFrame.params", "the technique's SvaoParams (SvaoParams rows)"),
+    Constant::new("SvaoParams.vao", "VaoParams as for vao_main (VaoParams rows: radius R·1.5 when `kernel` = hbao)"),
+    Constant::new(
+        "SvaoParams.secondary",
+        "Secondary, fixed by the technique: 0 Disabled (hbao, and vao with dual depth or the HBAO+ kernel: \
+         pass 1 alone finalizes every pixel), 1 StochasticDepth (raysd, hbao-sd, sdsvao: pass 2 reads the SD \
+         map), 2 Raytraced (raysvao: one ray per flagged sample)",
+    ),
+    Constant::new("SvaoParams.interval", "`interval`: off 0, on 1 [on]"),
+    Constant::new("SvaoParams.cutoff", "`cutoff`: radius cutoff in full-resolution pixels [6]"),
+    Constant::new(
+        "SvaoParams.sd_guard",
+        "SD guard band in SD texels: floor(`sd-guard`/div), div = 1, 2, 4 for `sd-res` full, half, quarter \
+         [floor(512/4) = 128]; 0 when `sd-source` = raster (always in sdsvao) and without an SD map \
+         (Secondary ≠ 1)",
+    ),
+    Constant::new(
+        "SvaoParams.sd_low_res",
+        "(ceil(W/div), ceil(H/div)) SD texels, div = 1, 2, 4 for `sd-res` full, half, quarter [4], W×H the \
+         full target incl. its guard band; (1, 1) without an SD map (Secondary ≠ 1)",
+    ),
+    Constant::new("SvaoParams.sd_layers", "N = `sd-layers` [4]"),
+    Constant::new("SvaoParams.max_count", "max(`max-count`, `sd-layers`) [max(8, 4) = 8]"),
+    Constant::new(
+        "SvaoParams.jitter",
+        "JitterTable of `jitter`: none 0, scrambled 1, paper 2 [scrambled 1]; 0 when `sd-source` = raster \
+         (always in sdsvao)",
+    ),
+    Constant::new("SvaoParams.dual", "`primary`: single 0, dual 1 [single 0]"),
+    Constant::new("SvaoParams.kernel", "`kernel`: vao 0 (KERNEL_VAO), hbao 1 (KERNEL_HBAO); hbao and hbao-sd: 1"),
+    Constant::new("SvaoParams._pad2", "0"),
+    Constant::new(
+        "RasterParams.world_to_view",
+        "Camera.world_to_view of the frame (pushed to gbuffer_vs by the raster SD pass, sd_map_raster)",
+    ),
+    Constant::new("RasterParams.view", "the frame's ViewParams (ViewParams rows); the pass's viewport is the SD map"),
+    Constant::new("RasterParams.peel_separation", "0 (the SD map's pass peels nothing)"),
+    Constant::new("RasterParams._pad0", "0"),
+    Constant::new("RasterParams._pad1", "0"),
+    Constant::new("RasterParams._pad2", "0"),
+];
+
+/// The stenciled family's constants: [`SVAO`], VAO's and the blur's, the camera's.
+pub const CONSTANTS: &[Constant] =
+    crate::join_constants![SVAO, crate::vao::settings::CONSTANTS, crate::common::camera::CONSTANTS];
 
 /// Pass 1 alone: every pixel final (spec svao-raysd §5).
 pub fn unrefined(s: &SvaoSettings, frame: &FrameDesc) -> Result<Graph, String> {
@@ -343,7 +404,7 @@ impl SvaoSettings {
                 let traced = Pass {
                     label: "sd_map",
                     entry: "raysd_rgen",
-                    kind: PassKind::RayTracing { miss: "raysd_miss", any_hit: "raysd_ahit" },
+                    kind: PassKind::RayTracing { miss: "raysd_miss", any_hit: "raysd_ahit", query: "raysd_rq" },
                     bindings,
                     dispatch: sd_extent,
                     push_constants: Vec::new(),
@@ -376,7 +437,7 @@ impl SvaoSettings {
                 passes.push(Pass {
                     label: "ao_pass2_rays",
                     entry: "raysvao_rgen",
-                    kind: PassKind::RayTracing { miss: "raysvao_miss", any_hit: "raysvao_ahit" },
+                    kind: PassKind::RayTracing { miss: "raysvao_miss", any_hit: "raysvao_ahit", query: "raysvao_rq" },
                     bindings,
                     dispatch: Extent::Inner,
                     push_constants: Vec::new(),

@@ -5,7 +5,7 @@ use super::VaoParams;
 use crate::blur::graph::blur_passes;
 use crate::graph::{Access, Extent, FrameDesc, Graph, Pass, inputs, target_f32};
 use crate::svao::settings::{SvaoSettings, stenciled, unrefined};
-use crate::technique::Declaration;
+use crate::technique::{Constant, Declaration};
 
 /// Plain VAO → blur; on dual depth or with the HBAO+ kernel, the stenciled pipeline's pass 1
 /// alone (spec svao-raysd §4.5, §11).
@@ -30,6 +30,30 @@ pub fn vao_params(frame: &FrameDesc) -> VaoParams {
         max_screen_radius: MAX_SCREEN_RADIUS,
     }
 }
+
+/// How [`vao_params`] and the blur (`crate::blur::graph::blur_params`) fill [`VaoParams`] and
+/// `BlurParams`. VAO belongs to the stenciled family (dual depth and the HBAO+ kernel run its
+/// pass 1), so its declaration uses the family's table, [`crate::svao::settings::CONSTANTS`],
+/// which holds these rows.
+pub const CONSTANTS: &[Constant] = &[
+    Constant::new("VaoParams.view", "the frame's ViewParams (ViewParams rows)"),
+    Constant::new(
+        "VaoParams.radius",
+        "R·k, R the frame's world-space AO radius (world units), k = 1 for `kernel` = vao, k = 1.5 for \
+         `kernel` = hbao (the reference UI's scaling for the HBAO+ kernel; hbao and hbao-sd: always 1.5)",
+    ),
+    Constant::new("VaoParams.exponent", "e: the frame's AO exponent (the AO is A^e)"),
+    Constant::new("VaoParams.thickness", "τ: the frame's VAO thickness (world units)"),
+    Constant::new("VaoParams.max_screen_radius", "512 (pixels): screen-space clamp of the sampling disk"),
+    Constant::new("BlurParams.view", "the frame's ViewParams (ViewParams rows)"),
+    Constant::new(
+        "BlurParams.direction",
+        "per pass: (1, 0) in the first blur pass (horizontal, into blur_horizontal), (0, 1) in the second \
+         (vertical, into ao_final)",
+    ),
+    Constant::new("BlurParams.sharpness", "16 (depth sharpness of the cross-bilateral weights)"),
+    Constant::new("BlurParams._pad", "0"),
+];
 
 /// VAO → blur.
 pub fn graph(frame: &FrameDesc) -> Graph {

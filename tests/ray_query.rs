@@ -1,0 +1,79 @@
+//! The ray-query variants (`--rt-mode query`: compute kernels with `VK_KHR_ray_query` whose
+//! candidate loop runs the same any-hit decisions) against the ray-tracing pipelines and cpu-sim
+//! on the same G-buffer, validation layer on: Sponza (66k triangles, much occlusion) and the oak,
+//! whose alpha-masked leaves send masked candidates through the alpha test of every decision.
+
+mod common;
+
+use aokit::render::CpuRenderer;
+use aokit::technique::Technique;
+use aokit_cpu::no_progress;
+use aokit_shaders::graph::RtMode;
+
+fn within(a: &[f32], b: &[f32], tolerance: f32) -> f64 {
+    a.iter().zip(b).filter(|(x, y)| (*x - *y).abs() <= tolerance).count() as f64 / a.len() as f64
+}
+
+fn mse(a: &[f32], b: &[f32]) -> f64 {
+    a.iter().zip(b).map(|(x, y)| (*x as f64 - *y as f64).powi(2)).sum::<f64>() / a.len() as f64
+}
+
+#[test]
+fn ray_query_variants_agree_with_the_pipelines_and_cpu_sim() {
+    let Some(vk) = common::vulkan() else { return };
+    assert!(
+        vk.gpu.has_ray_query(),
+        "'{}' has no ray queries (lavapipe from bookworm-backports has)",
+        vk.gpu.info().name
+    );
+    for (name, min_occluded) in [("sponza", 0.3), ("oak", 0.02)] {
+        check_scene(&vk, name, min_occluded);
+    }
+    common::assert_validation_clean(&vk);
+}
+
+fn check_scene(vk: &aokit::render::VulkanRenderer, name: &str, min_occluded: f64) {
+    let (scene, frame) = common::builtin_frame(name, 160, 120, 16);
+    let cpu = CpuRenderer::new(&scene);
+    let (gbuffer, _) = cpu.gbuffer(&frame, &no_progress);
+    let view = frame.camera.view;
+    let inner = |ao: &[f32]| aokit::output::crop_inner(&view, ao);
+    for spec in ["raysd", "raysvao", "groundtruth:spp=32", "hybrid"] {
+        let technique = Technique::parse(spec, &Default::default()).unwrap();
+        vk.set_rt_mode(RtMode::Pipeline);
+        let pipeline = vk.run(&scene, &frame, &gbuffer, &technique).unwrap();
+        vk.set_rt_mode(RtMode::Query);
+        let query = vk.run(&scene, &frame, &gbuffer, &technique).unwrap();
+        let on_cpu = cpu.run(&frame, &gbuffer, &technique, &no_progress);
+        let (p, q, c) = (inner(&pipeline.ao_final), inner(&query.ao_final), inner(&on_cpu.ao_final));
+        let occluded = c.iter().filter(|&&a| a < 0.9).count() as f64 / c.len() as f64;
+        let identical = within(&p, &q, 0.0);
+        let (q_vs_p, q_vs_c, p_vs_c) =
+            (within(&q, &p, 1.0 / 255.0), within(&q, &c, 1.0 / 255.0), within(&p, &c, 1.0 / 255.0));
+        let time = |run: &aokit::technique::TechniqueRun| {
+            run.passes.iter().filter(|(n, _)| *n != "accel_build").map(|(_, ms)| ms).sum::<f64>()
+        };
+        eprintln!(
+            "{name} {spec}: query vs pipeline {:.3} % identical, {:.3} % within 1/255; vs cpu-sim: query {:.3} %, pipeline {:.3} % (MSE {:.2e}); occluded {:.1} %; passes {:.1} ms (pipeline) vs {:.1} ms (query)",
+            100.0 * identical,
+            100.0 * q_vs_p,
+            100.0 * q_vs_c,
+            100.0 * p_vs_c,
+            mse(&q, &c),
+            100.0 * occluded,
+            time(&pipeline),
+            time(&query),
+        );
+        assert!(occluded > min_occluded, "{name} {spec}: the view must be occluded ({occluded})");
+        // The same decisions over the same traversal: the variants agree like two runs of one.
+        assert!(q_vs_p >= 0.999, "{spec}: query vs pipeline only {:.3} % within 1/255", 100.0 * q_vs_p);
+        // And like the pipeline does with cpu-sim (its own tests state why not bit-exact).
+        assert!(q_vs_c >= p_vs_c - 0.002, "{spec}: query {q_vs_c} vs pipeline {p_vs_c} agreement with cpu-sim");
+        assert!(mse(&q, &c) <= 1e-4, "{spec}: MSE vs cpu-sim {}", mse(&q, &c));
+        // Same passes, timed under the same labels.
+        let labels = |run: &aokit::technique::TechniqueRun| {
+            run.passes.iter().map(|p| p.0).filter(|n| *n != "accel_build").collect::<Vec<_>>()
+        };
+        assert_eq!(labels(&query), labels(&pipeline));
+    }
+}
