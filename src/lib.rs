@@ -11,3 +11,4 @@ pub mod render;
 pub mod report;
 pub mod scene;
 pub mod technique;
+pub mod web;

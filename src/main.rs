@@ -8,6 +8,7 @@ use aokit::render::{CpuRenderer, Renderer, VulkanRenderer};
 use aokit::report::{BenchResult, CompareReport, CompareSetup};
 use aokit::scene::Scene;
 use aokit::scene::builtin;
+use aokit_shaders::graph::RtMode;
 use aokit_vulkan::GpuOptions;
 use clap::{Parser, Subcommand, ValueEnum};
 use indicatif::{ProgressBar, ProgressStyle};
@@ -36,6 +37,9 @@ enum Command {
     /// Write a frame's G-buffer (as engine images and in aokit's layout), camera and scene as plain
     /// files for consumers without Rust (formats: docs/export.md).
     Export(ExportArgs),
+    /// Write a static WebGPU page (plain JS modules) that runs the screen-space techniques in a
+    /// browser on the exported G-buffer, with cpu-sim's AO as its reference (docs/web.md).
+    Web(WebArgs),
     /// Print the Vulkan device aokit would use and its ray-tracing extensions.
     Info {
         /// Enable the Khronos validation layer.
@@ -68,6 +72,10 @@ struct FrameArgs {
     /// Enable the Khronos validation layer (Vulkan back-end); validation messages fail the run.
     #[arg(long)]
     validation: bool,
+    /// How the Vulkan back-end runs ray-traced passes: ray-tracing pipelines (raygen, miss,
+    /// any-hit; default) or compute kernels with ray queries (VK_KHR_ray_query).
+    #[arg(long, value_parser = RtMode::NAMES)]
+    rt_mode: Option<String>,
 }
 
 #[derive(clap::Args)]
@@ -163,6 +171,15 @@ struct ExportArgs {
     out: PathBuf,
 }
 
+#[derive(clap::Args)]
+struct WebArgs {
+    #[command(flatten)]
+    frame: FrameArgs,
+    /// Folder to write the page into (created if missing); serve it over HTTP.
+    #[arg(long)]
+    out: PathBuf,
+}
+
 /// Load the scene and resolve the camera and AO parameters.
 fn resolve(args: &FrameArgs) -> Result<(Scene, Frame), String> {
     args.view.resolve(args.guard)
@@ -170,10 +187,26 @@ fn resolve(args: &FrameArgs) -> Result<(Scene, Frame), String> {
 
 /// The back-end the user picked.
 fn renderer(args: &FrameArgs, scene: &Scene) -> Result<Renderer, String> {
+    let mode = rt_mode(args)?;
     match args.backend {
         Backend::Cpu => Ok(Renderer::Cpu(CpuRenderer::new(scene))),
-        Backend::Vulkan => Ok(Renderer::Vulkan(
-            VulkanRenderer::new(&GpuOptions { validation: args.validation }).map_err(|e| e.to_string())?,
+        Backend::Vulkan => {
+            let renderer =
+                VulkanRenderer::new(&GpuOptions { validation: args.validation }).map_err(|e| e.to_string())?;
+            renderer.set_rt_mode(mode);
+            Ok(Renderer::Vulkan(renderer))
+        }
+    }
+}
+
+/// `--rt-mode`: only the Vulkan back-end has two ways to trace (cpu-sim hands every candidate
+/// of its BVH to the same any-hit decision either way).
+fn rt_mode(args: &FrameArgs) -> Result<RtMode, String> {
+    match (&args.rt_mode, args.backend) {
+        (None, _) => Ok(RtMode::Pipeline),
+        (Some(mode), Backend::Vulkan) => RtMode::parse(mode),
+        (Some(mode), Backend::Cpu) => Err(format!(
+            "--rt-mode {mode} selects how the Vulkan back-end traces (--backend vulkan); cpu-sim traces through its BVH"
         )),
     }
 }
@@ -379,6 +412,9 @@ fn scaling(args: ScalingArgs) -> Result<(), String> {
 }
 
 fn export(args: ExportArgs) -> Result<(), String> {
+    if args.frame.rt_mode.is_some() {
+        return Err("--rt-mode is not read by export (it traces no AO rays)".into());
+    }
     let (scene, frame) = resolve(&args.frame)?;
     let renderer = renderer(&args.frame, &scene)?;
     let rows = frame.camera.view.size().y as u64;
@@ -393,6 +429,29 @@ fn export(args: ExportArgs) -> Result<(), String> {
     Ok(())
 }
 
+fn web(args: WebArgs) -> Result<(), String> {
+    if args.frame.rt_mode.is_some() {
+        return Err("--rt-mode is not read by web (its techniques trace no rays)".into());
+    }
+    let (scene, frame) = resolve(&args.frame)?;
+    let renderer = renderer(&args.frame, &scene)?;
+    let rows = frame.camera.view.size().y as u64;
+    let bar = progress_bar(format!("{} G-buffer", renderer.backend_name()), rows);
+    let progress = |n| bar.inc(n);
+    let (gbuffer, _) = renderer.gbuffer(&scene, &frame, &progress).map_err(|e| e.to_string())?;
+    bar.finish_and_clear();
+    check_validation(&renderer)?;
+    // The page's references: cpu-sim on this G-buffer, whatever the back-end.
+    let json = aokit::web::write(&args.out, &scene, &frame, &gbuffer, renderer.backend_name(), &aokit_cpu::no_progress)
+        .map_err(|e| format!("{}: {e}", args.out.display()))?;
+    let names: Vec<_> = json["techniques"].as_array().into_iter().flatten().map(|t| t["name"].clone()).collect();
+    let line = serde_json::json!({
+        "format": json["format"], "out": args.out.display().to_string(), "techniques": names, "skipped": json["skipped"],
+    });
+    println!("{line}");
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
@@ -401,6 +460,7 @@ fn main() -> ExitCode {
         Command::Bench(args) => bench(args),
         Command::Scaling(args) => scaling(args),
         Command::Export(args) => export(args),
+        Command::Web(args) => web(args),
         Command::Info { validation } => {
             aokit_vulkan::Gpu::new(&GpuOptions { validation }).map_err(|e| e.to_string()).map(|gpu| {
                 let info = gpu.info();
