@@ -77,3 +77,26 @@ fn check_scene(vk: &aokit::render::VulkanRenderer, name: &str, min_occluded: f64
         assert_eq!(labels(&query), labels(&pipeline));
     }
 }
+
+/// `--rt-mode` means something only on Vulkan: elsewhere it is refused on one line, never ignored.
+#[test]
+fn rt_mode_is_refused_where_it_would_not_take_effect() {
+    let run = |args: &[&str]| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_aokit")).args(args).output().unwrap();
+        // 1: aokit's own errors; 2: clap's usage errors.
+        assert!(matches!(out.status.code(), Some(1 | 2)), "{args:?} should fail");
+        String::from_utf8(out.stderr).unwrap()
+    };
+    let frame = ["--scene", "cornell", "--width", "32", "--height", "24", "--guard", "4"];
+    let out = std::env::temp_dir().join(format!("aokit-rt-mode-{}", std::process::id()));
+    let out = out.to_str().unwrap();
+    let e = run(&[&["render"][..], &frame, &["--technique", "raysd", "--rt-mode", "query", "--out", out]].concat());
+    assert!(
+        e.contains("--rt-mode query selects how the Vulkan back-end traces") && e.trim().lines().count() == 1,
+        "{e}"
+    );
+    let e = run(&[&["export"][..], &frame, &["--rt-mode", "query", "--out", out]].concat());
+    assert!(e.contains("--rt-mode is not read by export"), "{e}");
+    let e = run(&[&["render"][..], &frame, &["--backend", "vulkan", "--rt-mode", "queries", "--out", out]].concat());
+    assert!(e.contains("queries") && e.contains("pipeline") && e.contains("query"), "{e}");
+}

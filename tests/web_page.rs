@@ -28,7 +28,6 @@ const ALSO: [&str; 4] = [
     "vao:kernel=hbao",
 ];
 
-
 fn chromium() -> Option<&'static str> {
     ["chromium", "chromium-browser", "google-chrome"]
         .into_iter()
