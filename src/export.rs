@@ -47,7 +47,7 @@ pub fn write(
 ) -> std::io::Result<serde_json::Value> {
     std::fs::create_dir_all(dir)?;
     let view = frame.camera.view;
-    let put = |name: &str, bytes: &[u8]| std::fs::write(dir.join(name), bytes);
+    let put = |name: &str, bytes: &[u8]| crate::output::write_atomic_bytes(&dir.join(name), bytes);
     put("camera.bin", bytemuck::bytes_of(&frame.camera))?;
     let import = import_params(frame);
     put("import.bin", bytemuck::bytes_of(&import))?;
@@ -95,6 +95,7 @@ pub fn write(
         "mask_headers.bin": "aokit_AlphaMaskHeader per material (width 0: opaque)",
         "mask_texels.f32": "alpha texels of every mask, row-major, one after another",
     });
-    std::fs::write(dir.join("export.json"), serde_json::to_string_pretty(&json).expect("serializable") + "\n")?;
+    let text = serde_json::to_string_pretty(&json).expect("serializable") + "\n";
+    crate::output::write_atomic_bytes(&dir.join("export.json"), text.as_bytes())?;
     Ok(json)
 }

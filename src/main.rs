@@ -192,7 +192,7 @@ fn renderer(args: &FrameArgs, scene: &Scene) -> Result<Renderer, String> {
         Backend::Cpu => Ok(Renderer::Cpu(CpuRenderer::new(scene))),
         Backend::Vulkan => {
             let renderer =
-                VulkanRenderer::new(&GpuOptions { validation: args.validation }).map_err(|e| e.to_string())?;
+                VulkanRenderer::new(&GpuOptions { validation: args.validation, ..Default::default() }).map_err(|e| e.to_string())?;
             renderer.set_rt_mode(mode);
             Ok(Renderer::Vulkan(renderer))
         }
@@ -246,9 +246,10 @@ fn render(args: RenderArgs) -> Result<(), String> {
     let view = frame.camera.view;
     let full = if args.no_blur { &run.ao } else { &run.ao_final };
     let ao = crop_inner(&view, full);
-    write_png(&args.out, frame.inner.x, frame.inner.y, &ao).map_err(|e| format!("{}: {e}", args.out.display()))?;
+    // Written atomically; the errors name the path.
+    write_png(&args.out, frame.inner.x, frame.inner.y, &ao).map_err(|e| e.to_string())?;
     if let Some(exr) = &args.exr {
-        write_exr(exr, frame.inner.x, frame.inner.y, &ao).map_err(|e| format!("{}: {e}", exr.display()))?;
+        write_exr(exr, frame.inner.x, frame.inner.y, &ao).map_err(|e| e.to_string())?;
     }
     let mut line = frame.describe();
     line["scene"] = scene.name.clone().into();
@@ -294,8 +295,8 @@ fn compare(args: CompareArgs) -> Result<(), String> {
     let report = CompareReport::new(setup, &frame, (reference, &reference_run), &runs);
     println!("{}", report.table());
     if let Some(path) = &args.json {
-        std::fs::write(path, serde_json::to_string_pretty(&report.json()).expect("serializable"))
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+        let text = serde_json::to_string_pretty(&report.json()).expect("serializable");
+        aokit::output::write_atomic_bytes(path, text.as_bytes()).map_err(|e| e.to_string())?;
     }
     let images = args.images.clone().or(args.html.clone()).unwrap_or_else(|| PathBuf::from("compare-out"));
     report.write_images(&images, &frame, &gbuffer).map_err(|e| format!("{}: {e}", images.display()))?;
@@ -355,8 +356,8 @@ fn bench(args: BenchArgs) -> Result<(), String> {
     }
     println!("{json}");
     if let Some(path) = &args.json {
-        std::fs::write(path, serde_json::to_string_pretty(&json).expect("serializable"))
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+        let text = serde_json::to_string_pretty(&json).expect("serializable");
+        aokit::output::write_atomic_bytes(path, text.as_bytes()).map_err(|e| e.to_string())?;
     }
     Ok(())
 }
@@ -405,8 +406,8 @@ fn scaling(args: ScalingArgs) -> Result<(), String> {
         "width": frame.inner.x, "height": frame.inner.y, "frames": args.frames, "results": rows,
     });
     if let Some(path) = &args.json {
-        std::fs::write(path, serde_json::to_string_pretty(&json).expect("serializable"))
-            .map_err(|e| format!("{}: {e}", path.display()))?;
+        let text = serde_json::to_string_pretty(&json).expect("serializable");
+        aokit::output::write_atomic_bytes(path, text.as_bytes()).map_err(|e| e.to_string())?;
     }
     Ok(())
 }
@@ -462,7 +463,7 @@ fn main() -> ExitCode {
         Command::Export(args) => export(args),
         Command::Web(args) => web(args),
         Command::Info { validation } => {
-            aokit_vulkan::Gpu::new(&GpuOptions { validation }).map_err(|e| e.to_string()).map(|gpu| {
+            aokit_vulkan::Gpu::new(&GpuOptions { validation, ..Default::default() }).map_err(|e| e.to_string()).map(|gpu| {
                 let info = gpu.info();
                 println!("{}", serde_json::to_string(info).expect("serializable"));
                 eprintln!("device: {} ({}, Vulkan {})", info.name, info.device_type, info.api_version);

@@ -475,6 +475,8 @@ impl VulkanRenderer {
     ) -> Result<(TechniqueRun, Option<GBufferImage>), GpuError> {
         let graph = technique.graph(&frame.desc()).expect("every technique has a pass graph");
         let graph = graph.with_rt_mode(self.rt_mode.get());
+        // Before any GPU work: the raster G-buffer and the acceleration structure come first.
+        aokit_vulkan::check_device(&self.gpu, &graph)?;
         let key = scene_key(scene);
         let size = frame.camera.view.size();
         let mut cache = self.raster_frame.borrow_mut();
@@ -547,6 +549,7 @@ impl VulkanRenderer {
         graph: &Graph,
     ) -> Result<TechniqueRun, GpuError> {
         let graph = &graph.clone().with_rt_mode(self.rt_mode.get());
+        aokit_vulkan::check_device(&self.gpu, graph)?;
         self.graph_frame(Some(scene), frame, gbuffer, technique, graph, |ctx, passes, depth2| {
             let read = |name: &str| ctx.download::<u32>(name).ok();
             let mut run = graph_run(graph, passes, None, &read, gbuffer, depth2);

@@ -305,7 +305,7 @@ figcaption {{ font-size: 0.9em; text-align: center; }}
             reference = self.reference.name(),
         );
         let path = dir.join("index.html");
-        std::fs::write(&path, page)?;
+        crate::output::write_atomic_bytes(&path, page.as_bytes())?;
         Ok(path)
     }
 }
@@ -319,7 +319,7 @@ fn html_escape(s: &str) -> String {
 }
 
 fn save(img: RgbImage, path: &Path) -> io::Result<()> {
-    img.save(path).map_err(|e| io::Error::other(format!("{}: {e}", path.display())))
+    crate::output::save_image(&img, path)
 }
 
 fn grey(w: u32, h: u32, v: &[f32]) -> RgbImage {

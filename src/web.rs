@@ -362,7 +362,7 @@ fn technique_entry(
             let rel = format!("data/{name}/{resource}/{stem}.u32");
             let path = dir.join(&rel);
             std::fs::create_dir_all(path.parent().expect("a parent"))?;
-            std::fs::write(&path, bytemuck::cast_slice::<u32, u8>(words))?;
+            crate::output::write_atomic_bytes(&path, bytemuck::cast_slice::<u32, u8>(words))?;
             files.insert(resource.to_string(), rel.into());
         }
         data_entries.push(json!({ "settings": settings_json(&combo), "files": files }));
@@ -377,7 +377,7 @@ fn technique_entry(
     let ao = crop_inner(&graph.view, cpu.f32(graph.output).expect("the output resource"));
     let reference = format!("reference/{name}.f32");
     std::fs::create_dir_all(dir.join("reference"))?;
-    std::fs::write(dir.join(&reference), bytemuck::cast_slice::<f32, u8>(&ao))?;
+    crate::output::write_atomic_bytes(&dir.join(&reference), bytemuck::cast_slice::<f32, u8>(&ao))?;
     let mean = ao.iter().map(|&a| a as f64).sum::<f64>() / ao.len().max(1) as f64;
     Ok(json!({
         "name": name,
@@ -475,7 +475,7 @@ pub fn write(
     let manifest = Manifest::committed();
     let manifest_text = aokit_vulkan::modules::MANIFEST;
     let manifest_json: Value = serde_json::from_str(manifest_text).map_err(|e| io_err(e.to_string()))?;
-    std::fs::write(dir.join("manifest.json"), manifest_text)?;
+    crate::output::write_atomic_bytes(&dir.join("manifest.json"), manifest_text.as_bytes())?;
     std::fs::create_dir_all(dir.join("wgsl"))?;
     for m in &manifest.modules {
         let Some(w) = &m.wgsl else { continue };
@@ -483,10 +483,10 @@ pub fn write(
             .iter()
             .find(|(f, _)| *f == w.file)
             .ok_or_else(|| io_err(format!("the manifest names {}, which aokit does not embed", w.file)))?;
-        std::fs::write(dir.join("wgsl").join(&w.file), text)?;
+        crate::output::write_atomic_bytes(&dir.join("wgsl").join(&w.file), text.as_bytes())?;
     }
     for (name, text) in PAGE {
-        std::fs::write(dir.join(name), text)?;
+        crate::output::write_atomic_bytes(&dir.join(name), text.as_bytes())?;
     }
     let desc = frame.desc();
     let (mut techniques, mut skipped) = (Vec::new(), Vec::new());
@@ -516,6 +516,7 @@ pub fn write(
         "techniques": techniques,
         "skipped": skipped,
     });
-    std::fs::write(dir.join("web.json"), serde_json::to_string_pretty(&json).expect("serializable") + "\n")?;
+    let text = serde_json::to_string_pretty(&json).expect("serializable") + "\n";
+    crate::output::write_atomic_bytes(&dir.join("web.json"), text.as_bytes())?;
     Ok(json)
 }

@@ -1049,20 +1049,38 @@ static void pipeline_free(Gpu *g, Pipeline *p) {
 /* ---------------------------------------------------------------------------------------------
  * Output. */
 
+/* Written to a temporary file next to PATH, flushed to disk and renamed over PATH: a run killed or
+ * failing half-way leaves the old file or none, never a truncated one (as aokit's own outputs). */
 static void write_pgm(const char *path, const float *ao_full, const Frame *f) {
-    FILE *out = fopen(path, "wb");
+    char tmp[PATH_MAX];
+    int n = snprintf(tmp, sizeof tmp, "%s.%ld.aokit-tmp", path, (long)getpid());
+    if (n < 0 || (size_t)n >= sizeof tmp) die("cannot write %s: path too long", path);
+    FILE *out = fopen(tmp, "wb");
     if (!out) die("cannot write %s: %s", path, strerror(errno));
-    fprintf(out, "P5\n%u %u\n65535\n", f->w, f->h);
-    for (uint32_t y = f->guard; y < f->H - f->guard; y++) {
-        for (uint32_t x = f->guard; x < f->W - f->guard; x++) {
+    bool ok = fprintf(out, "P5\n%u %u\n65535\n", f->w, f->h) > 0;
+    for (uint32_t y = f->guard; ok && y < f->H - f->guard; y++) {
+        for (uint32_t x = f->guard; ok && x < f->W - f->guard; x++) {
             float v = ao_full[(size_t)y * f->W + x];
             v = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; /* NaN → 0 */
             uint16_t s = (uint16_t)lrintf(v * 65535.0f);
             unsigned char be[2] = {(unsigned char)(s >> 8), (unsigned char)(s & 0xff)};
-            fwrite(be, 1, 2, out);
+            ok = fwrite(be, 1, 2, out) == 2;
         }
     }
-    if (fclose(out) != 0) die("cannot write %s", path);
+    ok = ok && fflush(out) == 0 && fsync(fileno(out)) == 0;
+    int err = ok ? 0 : errno;
+    if (fclose(out) != 0 && ok) {
+        ok = false;
+        err = errno;
+    }
+    if (ok && rename(tmp, path) != 0) {
+        ok = false;
+        err = errno;
+    }
+    if (!ok) {
+        remove(tmp);
+        die("cannot write %s: %s", path, strerror(err));
+    }
 }
 
 /* ---------------------------------------------------------------------------------------------

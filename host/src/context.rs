@@ -14,6 +14,22 @@ use std::sync::Mutex;
 pub struct GpuOptions {
     /// Enable `VK_LAYER_KHRONOS_validation` and record its warnings and errors.
     pub validation: bool,
+    /// Device extensions to treat as absent, e.g. `VK_KHR_ray_tracing_pipeline`: how aokit
+    /// behaves on a device without them, on one that has them. The environment variable
+    /// [`HIDE_EXTENSIONS_VAR`] (comma-separated names) adds to this list.
+    pub hidden_extensions: Vec<String>,
+}
+
+/// `AOKIT_HIDE_EXTENSIONS=VK_KHR_ray_tracing_pipeline,…`: see [`GpuOptions::hidden_extensions`].
+pub const HIDE_EXTENSIONS_VAR: &str = "AOKIT_HIDE_EXTENSIONS";
+
+impl GpuOptions {
+    /// The extensions to hide: the option's and the environment variable's.
+    fn hidden(&self) -> Vec<String> {
+        let from_env = std::env::var(HIDE_EXTENSIONS_VAR).unwrap_or_default();
+        let names = from_env.split(',').map(str::trim).filter(|n| !n.is_empty()).map(str::to_string);
+        self.hidden_extensions.iter().cloned().chain(names).collect()
+    }
 }
 
 /// What `aokit info` prints.
@@ -23,8 +39,11 @@ pub struct DeviceInfo {
     pub device_type: String,
     pub api_version: String,
     pub driver_version: u32,
-    /// Ray-tracing related extensions and whether the device has them.
+    /// Ray-tracing related extensions and whether the device has them (a hidden one counts as
+    /// absent).
     pub ray_tracing_extensions: Vec<(String, bool)>,
+    /// Extensions hidden by [`GpuOptions::hidden_extensions`].
+    pub hidden_extensions: Vec<String>,
 }
 
 const RT_EXTENSIONS: [&CStr; 4] = [
@@ -126,6 +145,8 @@ pub struct Gpu {
     pub(crate) pool: vk::CommandPool,
     pub(crate) allocator: ManuallyDrop<Mutex<Allocator>>,
     pub(crate) timestamp_period_ns: f32,
+    /// `maxStorageBufferRange`: the largest storage buffer a descriptor may bind, in bytes.
+    pub(crate) max_storage_buffer_range: u64,
     info: DeviceInfo,
     /// `Some` when `Gpu::new` created the instance and device (and destroys them), `None` for an
     /// [`ExternalDevice`].
@@ -140,6 +161,7 @@ pub struct Gpu {
 struct DeviceProbe {
     info: DeviceInfo,
     timestamp_period_ns: f32,
+    max_storage_buffer_range: u64,
     /// The ray-tracing limits, when the physical device has everything the ray-traced passes
     /// need: the extensions and the `accelerationStructure`, `rayTracingPipeline` and
     /// `bufferDeviceAddress` features.
@@ -149,10 +171,12 @@ struct DeviceProbe {
 }
 
 impl DeviceProbe {
-    fn new(instance: &ash::Instance, pd: vk::PhysicalDevice) -> Result<DeviceProbe, GpuError> {
+    /// What `pd` offers, with the extensions named in `hidden` treated as absent.
+    fn new(instance: &ash::Instance, pd: vk::PhysicalDevice, hidden: &[String]) -> Result<DeviceProbe, GpuError> {
         let props = unsafe { instance.get_physical_device_properties(pd) };
         let available = unsafe { instance.enumerate_device_extension_properties(pd)? };
-        let has = |name: &CStr| available.iter().any(|e| e.extension_name_as_c_str() == Ok(name));
+        let visible = |name: &CStr| !hidden.iter().any(|h| name.to_bytes() == h.as_bytes());
+        let has = |name: &CStr| visible(name) && available.iter().any(|e| e.extension_name_as_c_str() == Ok(name));
         let info = DeviceInfo {
             name: props.device_name_as_c_str().map(|s| s.to_string_lossy().into_owned()).unwrap_or_default(),
             device_type: format!("{:?}", props.device_type),
@@ -164,6 +188,7 @@ impl DeviceProbe {
             ),
             driver_version: props.driver_version,
             ray_tracing_extensions: RT_EXTENSIONS.iter().map(|e| (e.to_string_lossy().into_owned(), has(e))).collect(),
+            hidden_extensions: hidden.to_vec(),
         };
         // Ray tracing (pipelines + acceleration structures) when the device has all of it.
         let mut as_features = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default();
@@ -193,7 +218,13 @@ impl DeviceProbe {
             }
         });
         let ray_query = limits.is_some() && has(khr::ray_query::NAME) && rq_features.ray_query != 0;
-        Ok(DeviceProbe { info, timestamp_period_ns: props.limits.timestamp_period, ray_tracing: limits, ray_query })
+        Ok(DeviceProbe {
+            info,
+            timestamp_period_ns: props.limits.timestamp_period,
+            max_storage_buffer_range: props.limits.max_storage_buffer_range as u64,
+            ray_tracing: limits,
+            ray_query,
+        })
     }
 }
 
@@ -295,7 +326,10 @@ impl Gpu {
         if options.validation {
             create = create.push_next(&mut messenger_info); // also covers instance creation
         }
-        let instance = unsafe { entry.create_instance(&create, None)? };
+        let instance = unsafe { entry.create_instance(&create, None) }.map_err(|e| match e {
+            vk::Result::ERROR_INCOMPATIBLE_DRIVER => GpuError::NoDriver,
+            e => e.into(),
+        })?;
         let debug = if options.validation {
             let loader = ext::debug_utils::Instance::new(&entry, &instance);
             match unsafe { loader.create_debug_utils_messenger(&messenger_info, None) } {
@@ -309,7 +343,7 @@ impl Gpu {
             None
         };
         let owned = OwnedDevice { debug };
-        let (physical_device, device, queue_family_index, probe) = match Self::open_device(&instance) {
+        let (physical_device, device, queue_family_index, probe) = match Self::open_device(&instance, &options.hidden()) {
             Ok(opened) => opened,
             Err(e) => {
                 unsafe { owned.destroy(None, &instance) };
@@ -372,7 +406,7 @@ impl Gpu {
     ///   [`Gpu::validation_messages`] is always empty; install your own messenger.
     pub fn from_external(external: ExternalDevice) -> Result<Gpu, GpuError> {
         let ExternalDevice { ref instance, physical_device, queue_family_index, ray_tracing, ray_query, .. } = external;
-        let probe = DeviceProbe::new(instance, physical_device)?;
+        let probe = DeviceProbe::new(instance, physical_device, &[])?;
         let core = CoreSupport::new(instance, physical_device);
         let name = &probe.info.name;
         if !core.vulkan_1_3 || !core.memory_model {
@@ -476,6 +510,7 @@ impl Gpu {
             pool,
             allocator: ManuallyDrop::new(Mutex::new(allocator)),
             timestamp_period_ns: probe.timestamp_period_ns,
+            max_storage_buffer_range: probe.max_storage_buffer_range,
             info: probe.info,
             owned,
             messages,
@@ -484,7 +519,10 @@ impl Gpu {
         })
     }
 
-    fn open_device(instance: &ash::Instance) -> Result<(vk::PhysicalDevice, ash::Device, u32, DeviceProbe), GpuError> {
+    fn open_device(
+        instance: &ash::Instance,
+        hidden: &[String],
+    ) -> Result<(vk::PhysicalDevice, ash::Device, u32, DeviceProbe), GpuError> {
         let mut candidates = Vec::new();
         for pd in unsafe { instance.enumerate_physical_devices()? } {
             let core = CoreSupport::new(instance, pd);
@@ -506,7 +544,7 @@ impl Gpu {
                 "vulkanMemoryModel, vulkanMemoryModelDeviceScope, dynamicRendering and a graphics+compute queue with timestamps".into(),
             ));
         };
-        let probe = DeviceProbe::new(instance, pd)?;
+        let probe = DeviceProbe::new(instance, pd, hidden)?;
         let ray_tracing = probe.ray_tracing.is_some();
         let priorities = [1.0];
         let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
@@ -555,6 +593,54 @@ impl Gpu {
     /// creation, besides ray tracing)?
     pub fn has_ray_query(&self) -> bool {
         self.ray_query
+    }
+
+    /// `maxStorageBufferRange` in bytes: the largest buffer a pass can bind.
+    pub fn max_storage_buffer_range(&self) -> u64 {
+        self.max_storage_buffer_range
+    }
+
+    /// Can the device trace rays the way `mode` says? Otherwise an error naming the extensions
+    /// (or features) it lacks — for callers to check before they record any GPU work.
+    pub fn require_rays(&self, mode: aokit_shaders::graph::RtMode) -> Result<(), GpuError> {
+        use aokit_shaders::graph::RtMode;
+        // aokit's host enables ray queries only beside ray-tracing pipelines (`has_ray_query`):
+        // the query mode needs every extension of `RT_EXTENSIONS`.
+        let (ok, needed) = match mode {
+            RtMode::Pipeline => (self.has_ray_tracing(), &[0, 1, 3][..]),
+            RtMode::Query => (self.has_ray_query(), &[0, 1, 2, 3][..]),
+        };
+        if ok {
+            return Ok(());
+        }
+        let info = &self.info;
+        let missing: Vec<&str> = needed
+            .iter()
+            .map(|&i| &info.ray_tracing_extensions[i])
+            .filter(|(_, has)| !has)
+            .map(|(name, _)| name.as_str())
+            .collect();
+        let lacks = if missing.is_empty() {
+            "the features accelerationStructure, rayTracingPipeline/rayQuery or bufferDeviceAddress (or the caller did not enable them)".to_string()
+        } else {
+            missing.join(", ")
+        };
+        let hidden = if info.hidden_extensions.is_empty() {
+            String::new()
+        } else {
+            format!(" (hidden: {})", info.hidden_extensions.join(", "))
+        };
+        let other = match mode {
+            RtMode::Pipeline if self.has_ray_query() => "; --rt-mode query uses ray queries instead",
+            RtMode::Query if self.has_ray_tracing() => "; --rt-mode pipeline uses ray-tracing pipelines instead",
+            _ => "",
+        };
+        let what = match mode {
+            RtMode::Pipeline => "ray-tracing pipelines",
+            RtMode::Query => "ray queries",
+        };
+        let needs = needed.iter().map(|&i| info.ray_tracing_extensions[i].0.as_str()).collect::<Vec<_>>().join(" + ");
+        Err(GpuError::Missing(format!("tracing rays with {what} needs {needs}; '{}' lacks {lacks}{hidden}{other}", info.name)))
     }
 
     /// The ray-tracing entry points, or a clear error naming what the device lacks.

@@ -25,7 +25,7 @@ use crate::raytracing::{RtPipeline, SceneAccel};
 use crate::{Buffer, Gpu, GpuError, modules};
 use aokit_shaders::adapters::ImportParams;
 use aokit_shaders::common::ViewParams;
-use aokit_shaders::graph::{Access, Extent, Graph, Init, Lifetime, Pass, PassKind, Size, inputs};
+use aokit_shaders::graph::{Access, Extent, Graph, Init, Lifetime, Pass, PassKind, RtMode, Size, inputs};
 use ash::vk;
 use ash::vk::Handle;
 use gpu_allocator::MemoryLocation;
@@ -81,6 +81,34 @@ pub struct RasterScene<'a> {
     pub vertex_count: u32,
     pub mask_headers: &'a Buffer,
     pub mask_texels: &'a Buffer,
+}
+
+/// Can `gpu` run `graph`? Its ray-traced passes (pipelines or ray queries, as the graph has
+/// them) need the extensions, and every buffer a pass binds — its resources, and the G-buffer
+/// inputs over the full target — must fit the device's `maxStorageBufferRange`. Checked before
+/// anything is recorded (callers check it before their own GPU work, e.g. a raster G-buffer);
+/// the error names what is missing or too big.
+pub fn check_device(gpu: &Gpu, graph: &Graph) -> Result<(), GpuError> {
+    let view = &graph.view;
+    let full = view.size();
+    let inputs = (4 * full.x as u64 * full.y as u64, "the G-buffer inputs (4 bytes per full-target pixel)");
+    let resources = graph.resources.iter().map(|r| (4 * r.len(view) as u64, r.name));
+    let max = gpu.max_storage_buffer_range;
+    if let Some((bytes, name)) = resources.chain([inputs]).find(|(bytes, _)| *bytes > max) {
+        return Err(GpuError::Missing(format!(
+            "a {}×{} target needs {} MiB for {name}, more than '{}' binds in one storage buffer (maxStorageBufferRange {} MiB): render a smaller image",
+            full.x,
+            full.y,
+            bytes >> 20,
+            gpu.info().name,
+            max >> 20
+        )));
+    }
+    if !graph.traces_rays() {
+        return Ok(());
+    }
+    let pipelines = graph.passes.iter().any(|p| matches!(p.kind, PassKind::RayTracing { .. }));
+    gpu.require_rays(if pipelines { RtMode::Pipeline } else { RtMode::Query })
 }
 
 /// Set 0 of `pass`'s pipeline: at least `slots` bindings (the module's), the scene's TLAS an
@@ -318,6 +346,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
     /// synchronisation contract.
     pub fn record(&mut self, cmd: vk::CommandBuffer, graph: &Graph, inputs: &GpuInputs) -> Result<(), GpuError> {
         graph.validate().map_err(GpuError::Input)?;
+        check_device(self.gpu(), graph)?;
         self.frame += 1;
         self.release_retired();
         for pass in &graph.passes {

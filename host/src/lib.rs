@@ -8,6 +8,7 @@
 //! a technique's order of passes.
 
 mod adapters;
+pub mod atomic_file;
 mod buffer;
 mod compute;
 mod context;
@@ -24,9 +25,9 @@ pub mod wgsl;
 
 pub use adapters::{Adapters, AoImage, EngineImage};
 pub use buffer::Buffer;
-pub use context::{DeviceInfo, ExternalDevice, Gpu, GpuOptions};
+pub use context::{DeviceInfo, ExternalDevice, Gpu, GpuOptions, HIDE_EXTENSIONS_VAR};
 pub use gbuffer::{GBufferVertex, RasterFrame, RasterGBuffer, RasterSdPass};
-pub use graph::{AoContext, EngineFrame, FRAMES_IN_FLIGHT, GpuInputs, RasterScene};
+pub use graph::{AoContext, EngineFrame, FRAMES_IN_FLIGHT, GpuInputs, RasterScene, check_device};
 pub use image::Image2d;
 pub use raytracing::SceneAccel;
 
@@ -39,6 +40,13 @@ pub enum GpuError {
     Loader(String),
     #[error("no Vulkan device found that supports Vulkan 1.3 with {0}")]
     NoDevice(String),
+    #[error(
+        "no Vulkan driver: the Vulkan loader found no installable client driver (ICD). Install one, e.g. Mesa's lavapipe (`apt-get install mesa-vulkan-drivers`), or check VK_ICD_FILENAMES / VK_DRIVER_FILES"
+    )]
+    NoDriver,
+    /// The device lacks what a technique needs (named in the message).
+    #[error("{0}")]
+    Missing(String),
     #[error(
         "the Khronos validation layer was requested but is not installed (`apt-get install vulkan-validationlayers`)"
     )]

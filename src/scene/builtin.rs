@@ -337,10 +337,7 @@ fn fetch_debian(
 
 /// Write through a uniquely named temporary file and rename, so readers never see a partial file.
 fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), String> {
-    let tmp = path.with_extension(format!("tmp{}", std::process::id()));
-    std::fs::write(&tmp, bytes)
-        .and_then(|_| std::fs::rename(&tmp, path))
-        .map_err(|e| format!("{}: {e}", path.display()))
+    crate::output::write_atomic_bytes(path, bytes).map_err(|e| e.to_string())
 }
 
 /// Download the crate with `cargo fetch` through a scratch manifest and return its unpacked
@@ -352,8 +349,8 @@ fn crate_source_dir(file: &CrateFile) -> Result<PathBuf, String> {
         "[package]\nname = \"aokit-scene-fetch\"\nversion = \"0.0.0\"\nedition = \"2021\"\n\n[workspace]\n\n[dependencies]\n{} = \"={}\"\n",
         file.krate, file.version
     );
-    std::fs::write(project.join("Cargo.toml"), manifest).map_err(|e| e.to_string())?;
-    std::fs::write(project.join("src/lib.rs"), "").map_err(|e| e.to_string())?;
+    write_atomically(&project.join("Cargo.toml"), manifest.as_bytes())?;
+    write_atomically(&project.join("src/lib.rs"), b"")?;
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let manifest_path = project.join("Cargo.toml");
     let run = |args: &[&str]| -> Result<Vec<u8>, String> {

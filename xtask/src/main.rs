@@ -7,6 +7,7 @@
 //!
 //! Runs on stable; nothing else in the workspace needs the nightly.
 
+use aokit_vulkan::atomic_file::write_atomic_bytes;
 use aokit_vulkan::manifest::{Manifest, reflect};
 use aokit_vulkan::spirv_hash::shader_source_hash;
 use cargo_gpu_install::install::Install;
@@ -103,9 +104,11 @@ fn build_spirv() -> Result<(), String> {
     for (entry, path) in &modules {
         let file = format!("{entry}.spv");
         let dest = out_dir.join(&file);
-        std::fs::copy(path, &dest).map_err(|e| format!("{}: {e}", path.display()))?;
+        // Every output through a temporary file and a rename: a build killed half-way leaves
+        // the old file or the new one, never a truncated one.
+        let bytes = std::fs::read(path).map_err(|e| format!("{}: {e}", path.display()))?;
+        write_atomic_bytes(&dest, &bytes).map_err(|e| e.to_string())?;
         spirv_val(&dest)?;
-        let bytes = std::fs::read(&dest).map_err(|e| e.to_string())?;
         let module = reflect::reflect_any(&file, &bytes).map_err(|e| format!("{file}: {e}"))?;
         println!(
             "  {file}: {} bytes, {} stage, {} bindings, {} push-constant bytes",
@@ -118,16 +121,25 @@ fn build_spirv() -> Result<(), String> {
     }
     let mut manifest = manifest.complete(&shader_crate.join("src"))?;
     let wgsl_dir = root.join("assets/wgsl");
-    let _ = std::fs::remove_dir_all(&wgsl_dir);
     std::fs::create_dir_all(&wgsl_dir).map_err(|e| e.to_string())?;
+    let mut written = Vec::new();
     for (file, source) in manifest.add_wgsl(&out_dir)? {
-        std::fs::write(wgsl_dir.join(file), source).map_err(|e| e.to_string())?;
+        write_atomic_bytes(&wgsl_dir.join(&file), source.as_bytes()).map_err(|e| e.to_string())?;
+        written.push(std::ffi::OsString::from(file));
+    }
+    // WGSL of modules that are gone, removed once the new files are in place.
+    for entry in std::fs::read_dir(&wgsl_dir).map_err(|e| format!("{}: {e}", wgsl_dir.display()))? {
+        let entry = entry.map_err(|e| e.to_string())?;
+        if !written.contains(&entry.file_name()) {
+            let stale = entry.path();
+            std::fs::remove_file(&stale).map_err(|e| format!("{}: {e}", stale.display()))?;
+        }
     }
     let json = serde_json::to_string_pretty(&manifest).map_err(|e| e.to_string())? + "\n";
-    std::fs::write(out_dir.join("manifest.json"), json).map_err(|e| e.to_string())?;
+    write_atomic_bytes(&out_dir.join("manifest.json"), json.as_bytes()).map_err(|e| e.to_string())?;
     let include = root.join("assets/include");
     std::fs::create_dir_all(&include).map_err(|e| e.to_string())?;
-    std::fs::write(include.join("aokit.h"), manifest.c_header()).map_err(|e| e.to_string())?;
+    write_atomic_bytes(&include.join("aokit.h"), manifest.c_header().as_bytes()).map_err(|e| e.to_string())?;
     println!("wrote {} modules and manifest.json (source hash {})", manifest.modules.len(), manifest.source_hash);
     Ok(())
 }
