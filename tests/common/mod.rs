@@ -14,7 +14,7 @@ pub fn vulkan() -> Option<VulkanRenderer> {
         eprintln!("AOKIT_SKIP_VULKAN=1: skipping a Vulkan test");
         return None;
     }
-    match VulkanRenderer::new(&GpuOptions { validation: true }) {
+    match VulkanRenderer::new(&GpuOptions { validation: true, ..Default::default() }) {
         Ok(r) => Some(r),
         Err(e) => panic!("Vulkan with validation is required for this test ({e}); set AOKIT_SKIP_VULKAN=1 to skip"),
     }
@@ -41,4 +41,141 @@ pub fn builtin_frame(name: &str, width: u32, height: u32, guard: u32) -> (Scene,
     };
     let frame = Frame::resolve(&scene, Some(b), &req).unwrap();
     (scene, frame)
+}
+
+/// The inner image `[g, W−g) × [g, H−g)` of two full-target buffers, for agreement statistics.
+/// Both must hold exactly one value per pixel of the full target, so a short or empty read-back
+/// fails here instead of zipping to nothing, and the guard band (1 on both sides for AO) is cut
+/// away so it cannot dilute an MSE or a fraction of agreeing pixels.
+pub fn inner_pair<T: Copy>(view: &aokit_shaders::common::ViewParams, a: &[T], b: &[T]) -> (Vec<T>, Vec<T>) {
+    let size = view.size();
+    let full = (size.x * size.y) as usize;
+    assert!(full > 0, "empty target");
+    assert_eq!(a.len(), full, "first buffer holds {} values for a {}×{} target", a.len(), size.x, size.y);
+    assert_eq!(b.len(), full, "second buffer holds {} values for a {}×{} target", b.len(), size.x, size.y);
+    let g = view.guard;
+    assert!(2 * g < size.x && 2 * g < size.y, "guard band {g} leaves no inner image");
+    let crop = |v: &[T]| -> Vec<T> {
+        let mut out = Vec::with_capacity(((size.x - 2 * g) * (size.y - 2 * g)) as usize);
+        for y in g..size.y - g {
+            let row = (y * size.x) as usize;
+            out.extend_from_slice(&v[row + g as usize..row + (size.x - g) as usize]);
+        }
+        out
+    };
+    (crop(a), crop(b))
+}
+
+/// Two buffers that are compared element by element without an image layout (MIP chains, SD
+/// texels, interval buffers): equal, non-zero lengths.
+pub fn assert_same_len<T, U>(a: &[T], b: &[U], what: &str) {
+    assert!(!a.is_empty(), "{what}: first buffer is empty");
+    assert_eq!(a.len(), b.len(), "{what}: buffer lengths differ");
+}
+
+/// MSE over equal-length, non-empty slices (f64).
+pub fn mse_of(a: &[f32], b: &[f32]) -> f64 {
+    assert_same_len(a, b, "mse");
+    a.iter().zip(b).map(|(x, y)| (*x as f64 - *y as f64).powi(2)).sum::<f64>() / a.len() as f64
+}
+
+/// MSE over the inner image of two full-target buffers.
+pub fn inner_mse(view: &aokit_shaders::common::ViewParams, a: &[f32], b: &[f32]) -> f64 {
+    let (a, b) = inner_pair(view, a, b);
+    mse_of(&a, &b)
+}
+
+/// Fraction of equal-length, non-empty slices' elements with `|a − b| ≤ tolerance`.
+pub fn fraction_within(a: &[f32], b: &[f32], tolerance: f32) -> f64 {
+    assert_same_len(a, b, "fraction within");
+    a.iter().zip(b).filter(|(x, y)| (*x - *y).abs() <= tolerance).count() as f64 / a.len() as f64
+}
+
+/// Fraction of inner pixels of two full-target buffers with `|a − b| ≤ tolerance`.
+pub fn inner_within(view: &aokit_shaders::common::ViewParams, a: &[f32], b: &[f32], tolerance: f32) -> f64 {
+    let (a, b) = inner_pair(view, a, b);
+    fraction_within(&a, &b, tolerance)
+}
+
+/// Largest `|a − b|` over the inner image of two full-target buffers.
+pub fn inner_max_abs(view: &aokit_shaders::common::ViewParams, a: &[f32], b: &[f32]) -> f32 {
+    let (a, b) = inner_pair(view, a, b);
+    a.iter().zip(&b).map(|(x, y)| (x - y).abs()).fold(0.0, f32::max)
+}
+
+/// Upper tail `P(X ≥ x)` of the χ² distribution with `df` degrees of freedom: the regularized
+/// upper incomplete gamma function `Q(df/2, x/2)` (series below `a + 1`, Lentz continued fraction
+/// above; Numerical Recipes §6.2), accurate to ~1e-12 relative for the sizes the tests use.
+pub fn chi2_p_value(x: f64, df: usize) -> f64 {
+    assert!(df > 0 && x >= 0.0);
+    let a = df as f64 / 2.0;
+    let x = x / 2.0;
+    if x == 0.0 {
+        return 1.0;
+    }
+    let ln_prefix = a * x.ln() - x - ln_gamma(a);
+    if x < a + 1.0 {
+        // P(a, x) = e^{−x} x^a / Γ(a + 1) · Σ x^n / ((a+1)…(a+n)).
+        let (mut term, mut sum, mut ap) = (1.0 / a, 1.0 / a, a);
+        for _ in 0..10_000 {
+            ap += 1.0;
+            term *= x / ap;
+            sum += term;
+            if term.abs() < sum.abs() * 1e-16 {
+                break;
+            }
+        }
+        1.0 - sum * ln_prefix.exp()
+    } else {
+        let tiny = 1e-300;
+        let mut b = x + 1.0 - a;
+        let mut c = 1.0 / tiny;
+        let mut d = 1.0 / b;
+        let mut h = d;
+        for i in 1..10_000 {
+            let an = -(i as f64) * (i as f64 - a);
+            b += 2.0;
+            d = an * d + b;
+            if d.abs() < tiny {
+                d = tiny;
+            }
+            c = b + an / c;
+            if c.abs() < tiny {
+                c = tiny;
+            }
+            d = 1.0 / d;
+            let delta = d * c;
+            h *= delta;
+            if (delta - 1.0).abs() < 1e-16 {
+                break;
+            }
+        }
+        ln_prefix.exp() * h
+    }
+}
+
+/// `ln Γ(x)` for x > 0 (Lanczos, g = 7, 9 coefficients; ~1e-15 relative).
+fn ln_gamma(x: f64) -> f64 {
+    const G: [f64; 9] = [
+        0.999_999_999_999_809_9,
+        676.520_368_121_885_1,
+        -1_259.139_216_722_402_8,
+        771.323_428_777_653_1,
+        -176.615_029_162_140_6,
+        12.507_343_278_686_905,
+        -0.138_571_095_265_720_12,
+        9.984_369_578_019_572e-6,
+        1.505_632_735_149_311_6e-7,
+    ];
+    if x < 0.5 {
+        // Reflection: Γ(x)Γ(1 − x) = π / sin(πx).
+        return (std::f64::consts::PI / (std::f64::consts::PI * x).sin()).ln() - ln_gamma(1.0 - x);
+    }
+    let x = x - 1.0;
+    let mut s = G[0];
+    for (i, &g) in G.iter().enumerate().skip(1) {
+        s += g / (x + i as f64);
+    }
+    let t = x + 7.5;
+    0.5 * (2.0 * std::f64::consts::PI).ln() + (x + 0.5) * t.ln() - t + s.ln()
 }
