@@ -191,8 +191,8 @@ fn renderer(args: &FrameArgs, scene: &Scene) -> Result<Renderer, String> {
     match args.backend {
         Backend::Cpu => Ok(Renderer::Cpu(CpuRenderer::new(scene))),
         Backend::Vulkan => {
-            let renderer =
-                VulkanRenderer::new(&GpuOptions { validation: args.validation, ..Default::default() }).map_err(|e| e.to_string())?;
+            let renderer = VulkanRenderer::new(&GpuOptions { validation: args.validation, ..Default::default() })
+                .map_err(|e| e.to_string())?;
             renderer.set_rt_mode(mode);
             Ok(Renderer::Vulkan(renderer))
         }
@@ -462,16 +462,16 @@ fn main() -> ExitCode {
         Command::Scaling(args) => scaling(args),
         Command::Export(args) => export(args),
         Command::Web(args) => web(args),
-        Command::Info { validation } => {
-            aokit_vulkan::Gpu::new(&GpuOptions { validation, ..Default::default() }).map_err(|e| e.to_string()).map(|gpu| {
+        Command::Info { validation } => aokit_vulkan::Gpu::new(&GpuOptions { validation, ..Default::default() })
+            .map_err(|e| e.to_string())
+            .map(|gpu| {
                 let info = gpu.info();
                 println!("{}", serde_json::to_string(info).expect("serializable"));
                 eprintln!("device: {} ({}, Vulkan {})", info.name, info.device_type, info.api_version);
                 for (ext, has) in &info.ray_tracing_extensions {
                     eprintln!("  {ext}: {}", if *has { "yes" } else { "no" });
                 }
-            })
-        }
+            }),
         Command::Techniques => {
             print!("{}", aokit::cli::list_techniques());
             Ok(())

@@ -343,7 +343,8 @@ impl Gpu {
             None
         };
         let owned = OwnedDevice { debug };
-        let (physical_device, device, queue_family_index, probe) = match Self::open_device(&instance, &options.hidden()) {
+        let (physical_device, device, queue_family_index, probe) = match Self::open_device(&instance, &options.hidden())
+        {
             Ok(opened) => opened,
             Err(e) => {
                 unsafe { owned.destroy(None, &instance) };
@@ -640,7 +641,10 @@ impl Gpu {
             RtMode::Query => "ray queries",
         };
         let needs = needed.iter().map(|&i| info.ray_tracing_extensions[i].0.as_str()).collect::<Vec<_>>().join(" + ");
-        Err(GpuError::Missing(format!("tracing rays with {what} needs {needs}; '{}' lacks {lacks}{hidden}{other}", info.name)))
+        Err(GpuError::Missing(format!(
+            "tracing rays with {what} needs {needs}; '{}' lacks {lacks}{hidden}{other}",
+            info.name
+        )))
     }
 
     /// The ray-tracing entry points, or a clear error naming what the device lacks.
