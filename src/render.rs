@@ -7,7 +7,7 @@ use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
 use aokit_cpu::svao as svao_cpu;
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
-use aokit_shaders::graph::{FrameDesc, Graph, PassKind, RtMode};
+use aokit_shaders::graph::{FrameDesc, Graph, PassKind, RAY_COUNT, RtMode, ray_count_of};
 use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
 use aokit_shaders::svao::{Secondary, SvaoFrame};
 use aokit_vulkan::{AoContext, GpuInputs};
@@ -83,7 +83,7 @@ impl CpuRenderer {
     ) -> (Vec<f32>, f64) {
         let t = Instant::now();
         let gt = GroundTruthFrame { camera: frame.camera, params: *params };
-        let ao = aokit_cpu::run_ground_truth(&self.bvh, &self.surfaces(), &gt, gbuffer, progress);
+        let (ao, _) = aokit_cpu::run_ground_truth(&self.bvh, &self.surfaces(), &gt, gbuffer, progress);
         (ao, ms_since(t))
     }
 
@@ -244,9 +244,9 @@ impl VulkanRenderer {
         technique: &Technique,
     ) -> Result<TechniqueRun, GpuError> {
         let graph = technique.graph(&frame.desc()).expect("a technique with a graph");
-        self.graph_frame(None, frame, gbuffer, technique, &graph, |ctx, passes, depth2| {
+        self.graph_frame(None, frame, gbuffer, technique, &graph, |ctx, passes| {
             let read = |name: &str| ctx.download::<u32>(name).ok();
-            graph_run(&graph, passes, None, &read, gbuffer, depth2)
+            graph_run(&graph, passes, &read, gbuffer)
         })
     }
 
@@ -339,24 +339,20 @@ impl CpuRenderer {
         let stats = executor.run(&graph, &inputs).expect("the CPU executor runs every graph kernel");
         passes.extend(stats.pass_ms);
         let read = |name: &str| executor.words(name).map(|w| w.to_vec());
-        let mut run = graph_run(&graph, passes, Some(stats.rays), &read, gbuffer, &depth2);
-        if let Some(rays) = technique.rays(&frame.desc()) {
-            run.rays = rays;
-        }
+        let run = graph_run(&graph, passes, &read, gbuffer);
+        debug_assert!(!graph.traces_rays() || run.rays == stats.rays, "the ray counter is the executor's count");
         run
     }
 }
 
 /// A technique's result from the resources of an executed graph (`read` returns a resource's
 /// words): raw and final AO, and for the stenciled family the refinement statistics and the
-/// diagnostic buffers. `traced_rays`: the rays the executor counted, if it counts them.
+/// diagnostic buffers; the rays the kernels counted as they traced them ([`RAY_COUNT`]).
 fn graph_run(
     graph: &Graph,
     passes: PassTimes,
-    traced_rays: Option<u64>,
     read: &dyn Fn(&str) -> Option<Vec<u32>>,
     gbuffer: &GBufferImage,
-    depth2: &[f32],
 ) -> TechniqueRun {
     // Only the graph's own resources: an executor may still hold another technique's.
     let read = |name: &str| graph.resource(name).and_then(|_| read(name));
@@ -364,6 +360,9 @@ fn graph_run(
         read(name).map(|w| w.into_iter().map(f32::from_bits).collect()).unwrap_or_default()
     };
     let mut run = TechniqueRun::plain(f32s(graph.raw_output), f32s(graph.output), passes);
+    if let Some(words) = read(RAY_COUNT) {
+        run.rays = ray_count_of(&words);
+    }
     let Some(record) = read("svao_frame") else { return run };
     let svao: SvaoFrame =
         bytemuck::pod_read_unaligned(&bytemuck::cast_slice::<u32, u8>(&record)[..size_of::<SvaoFrame>()]);
@@ -378,14 +377,8 @@ fn graph_run(
         // The raster map "traces" no rays: count the SD texels it was asked for.
         run.rays = ray_max.iter().filter(|&&m| m != 0).count() as u64;
     } else if sd {
-        let (rays, sum) = svao_cpu::sd_ray_stats(&svao, depth, normals, &ray_min, &ray_max);
-        run.rays = rays;
+        let (_, sum) = svao_cpu::sd_ray_stats(&svao, depth, normals, &ray_min, &ray_max);
         run.interval_sum = Some(sum);
-    } else if params.secondary == Secondary::Raytraced as u32 {
-        run.rays = traced_rays.filter(|&r| r > 0).unwrap_or_else(|| {
-            let depth2 = if params.dual != 0 { depth2 } else { depth };
-            svao_cpu::count_sample_rays(&svao, depth, normals, depth2, &mask)
-        });
     }
     run.debug = Some(SvaoDebug {
         ao_pass1: f32s("ao_pass1"),
@@ -522,16 +515,8 @@ impl VulkanRenderer {
             let (depth, normals) = rf.gbuffer();
             let (depth, normals) = (self.gpu.download(depth)?, self.gpu.download(normals)?);
             let gbuffer = GBufferImage { width: size.x, height: size.y, depth, normals };
-            let depth2 = match separation {
-                Some(_) => self.gpu.download(rf.second_depth())?,
-                None => Vec::new(),
-            };
             let read = |name: &str| ctx.download::<u32>(name).ok();
-            let mut run = graph_run(&graph, passes, None, &read, &gbuffer, &depth2);
-            if let Some(rays) = technique.rays(&frame.desc()) {
-                run.rays = rays;
-            }
-            (run, Some(gbuffer))
+            (graph_run(&graph, passes, &read, &gbuffer), Some(gbuffer))
         } else {
             (TechniqueRun::plain(Vec::new(), ctx.download::<f32>(graph.output)?, passes), None)
         };
@@ -550,13 +535,10 @@ impl VulkanRenderer {
     ) -> Result<TechniqueRun, GpuError> {
         let graph = &graph.clone().with_rt_mode(self.rt_mode.get());
         aokit_vulkan::check_device(&self.gpu, graph)?;
-        self.graph_frame(Some(scene), frame, gbuffer, technique, graph, |ctx, passes, depth2| {
+        self.graph_frame(Some(scene), frame, gbuffer, technique, graph, |ctx, passes| {
             let read = |name: &str| ctx.download::<u32>(name).ok();
-            let mut run = graph_run(graph, passes, None, &read, gbuffer, depth2);
+            let mut run = graph_run(graph, passes, &read, gbuffer);
             run.frame_ms = self.last_frame_ms.get();
-            if let Some(rays) = technique.rays(&frame.desc()) {
-                run.rays = rays;
-            }
             run
         })
     }
@@ -571,7 +553,7 @@ impl VulkanRenderer {
         gbuffer: &GBufferImage,
         technique: &Technique,
         graph: &Graph,
-        finish: impl FnOnce(&AoContext<Rc<Gpu>>, PassTimes, &[f32]) -> R,
+        finish: impl FnOnce(&AoContext<Rc<Gpu>>, PassTimes) -> R,
     ) -> Result<R, GpuError> {
         let needs_vertices = graph.inputs().contains(&aokit_shaders::graph::inputs::SCENE_VERTICES);
         let needs_scene = graph.traces_rays() || needs_vertices || technique.second_layer().is_some();
@@ -610,17 +592,12 @@ impl VulkanRenderer {
                 });
                 // The inputs are freed below; a later buffer may take their handles.
                 ctx.invalidate_bindings();
-                let depth2 = match peeled {
-                    Some(d2) => {
-                        let host = self.gpu().download::<f32>(&d2);
-                        self.gpu().free_buffer(d2);
-                        host?
-                    }
-                    None => Vec::new(),
-                };
+                if let Some(d2) = peeled {
+                    self.gpu().free_buffer(d2);
+                }
                 let mut times = ran?;
                 times.splice(0..0, passes);
-                Ok((finish.take().expect("one frame"))(&ctx, times, &depth2))
+                Ok((finish.take().expect("one frame"))(&ctx, times))
             })
         };
         if !graph.traces_rays() {
@@ -668,7 +645,7 @@ impl VulkanRenderer {
     pub fn gtao(&self, frame: &Frame, gbuffer: &GBufferImage, options: &GtaoOptions) -> Result<GtaoOutput, GpuError> {
         let technique = Technique::new(&aokit_shaders::gtao::settings::GTAO, *options);
         let graph = technique.graph(&frame.desc()).expect("XeGTAO has a graph");
-        self.graph_frame(None, frame, gbuffer, &technique, &graph, |ctx, pass_ms, _| {
+        self.graph_frame(None, frame, gbuffer, &technique, &graph, |ctx, pass_ms| {
             Ok(GtaoOutput {
                 ao: ctx.download(graph.output)?,
                 mips: ctx.download("gtao_mips")?,

@@ -139,12 +139,6 @@ impl Technique {
         self.0.graph(frame)
     }
 
-    /// World-space rays a frame traces, where the count follows from the settings (ground
-    /// truth, hybrid); the stenciled family counts its rays from its buffers.
-    pub fn rays(&self, frame: &FrameDesc) -> Option<u64> {
-        self.0.rays(frame)
-    }
-
     /// The separation of the depth-peeled second layer, for techniques that read one (spec
     /// svao-raysd §11).
     pub fn second_layer(&self) -> Option<f32> {

@@ -65,6 +65,12 @@ fn check_scene(vk: &aokit::render::VulkanRenderer, name: &str, min_occluded: f64
             time(&query),
         );
         assert!(occluded > min_occluded, "{name} {spec}: the view must be occluded ({occluded})");
+        // The rays each kernel counted as it traced them (`ray_count`): the same on every path.
+        eprintln!("{name} {spec}: rays traced: pipeline {}, query {}, cpu-sim {}", pipeline.rays, query.rays, on_cpu.rays);
+        assert!(pipeline.rays > 0, "{name} {spec}: no rays counted");
+        assert_eq!(query.rays, pipeline.rays, "{name} {spec}: ray counts of the two modes");
+        let off = (pipeline.rays as f64 - on_cpu.rays as f64).abs() / on_cpu.rays as f64;
+        assert!(off <= 1e-3, "{name} {spec}: {} rays on Vulkan, {} on the CPU", pipeline.rays, on_cpu.rays);
         // The same decisions over the same traversal: the variants agree like two runs of one.
         assert!(q_vs_p >= 0.999, "{spec}: query vs pipeline only {:.3} % within 1/255", 100.0 * q_vs_p);
         // And like the pipeline does with cpu-sim (its own tests state why not bit-exact).

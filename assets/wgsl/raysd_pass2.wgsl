@@ -79,6 +79,11 @@ struct type_39 {
     member: array<type_37>,
 }
 
+struct type_41 {
+    member: f32,
+    member_1: u32,
+}
+
 var<private> id_1: vec3<u32>;
 @group(0) @binding(1) 
 var<storage> depth: type_8;
@@ -107,879 +112,898 @@ fn function_() {
     var local_8: array<f32, 8>;
     var local_9: array<f32, 8>;
     var local_10: array<array<array<f32, 2>, 4>, 4>;
-    var phi_396_: bool;
     var phi_398_: bool;
-    var phi_399_: bool;
     var phi_400_: bool;
     var phi_401_: bool;
-    var phi_494_: bool;
-    var phi_524_: f32;
-    var phi_1849_: bool;
+    var phi_402_: bool;
+    var phi_403_: bool;
+    var phi_497_: bool;
+    var phi_527_: f32;
     var phi_1864_: bool;
-    var phi_599_: vec2<f32>;
-    var phi_626_: vec3<f32>;
     var phi_1879_: bool;
-    var phi_738_: type_28;
-    var phi_739_: type_28;
+    var phi_602_: vec2<f32>;
+    var phi_629_: vec3<f32>;
+    var phi_1894_: bool;
     var phi_741_: type_28;
     var phi_742_: type_28;
-    var phi_743_: bool;
-    var phi_747_: type_28;
-    var phi_2099_: bool;
-    var phi_756_: u32;
-    var phi_759_: f32;
-    var phi_805_: f32;
-    var phi_829_: f32;
-    var phi_843_: f32;
-    var phi_862_: f32;
-    var phi_918_: bool;
-    var phi_920_: bool;
-    var phi_921_: bool;
-    var phi_922_: bool;
+    var phi_744_: type_28;
+    var phi_745_: type_28;
+    var phi_746_: bool;
+    var phi_750_: type_28;
+    var phi_2114_: bool;
+    var phi_759_: u32;
+    var phi_762_: u32;
+    var phi_764_: f32;
+    var phi_810_: f32;
+    var phi_834_: f32;
+    var phi_848_: f32;
+    var phi_867_: f32;
     var phi_923_: bool;
-    var phi_955_: f32;
-    var phi_968_: f32;
-    var phi_1053_: bool;
-    var phi_1150_: f32;
-    var phi_1163_: f32;
-    var phi_1176_: f32;
-    var phi_1177_: f32;
-    var phi_1894_: bool;
+    var phi_925_: bool;
+    var phi_926_: bool;
+    var phi_927_: bool;
+    var phi_928_: bool;
+    var phi_960_: f32;
+    var phi_973_: f32;
+    var phi_1058_: bool;
+    var phi_1155_: f32;
+    var phi_1168_: f32;
+    var phi_1181_: f32;
+    var phi_1182_: f32;
     var phi_1909_: bool;
-    var phi_1200_: f32;
-    var phi_1207_: f32;
     var phi_1924_: bool;
-    var phi_1229_: f32;
-    var phi_1237_: bool;
-    var phi_1272_: bool;
-    var phi_1369_: f32;
-    var phi_1382_: f32;
-    var phi_1395_: f32;
-    var phi_1396_: f32;
+    var phi_1205_: f32;
+    var phi_1212_: f32;
     var phi_1939_: bool;
+    var phi_1234_: f32;
+    var phi_1242_: bool;
+    var phi_1277_: bool;
+    var phi_1374_: f32;
+    var phi_1387_: f32;
+    var phi_1400_: f32;
+    var phi_1401_: f32;
     var phi_1954_: bool;
-    var phi_1419_: f32;
-    var phi_1426_: f32;
     var phi_1969_: bool;
+    var phi_1424_: f32;
+    var phi_1431_: f32;
     var phi_1984_: bool;
-    var phi_1435_: f32;
-    var phi_1437_: f32;
-    var phi_1438_: f32;
-    var phi_1450_: f32;
-    var phi_1491_: f32;
-    var phi_1505_: f32;
-    var phi_1578_: vec2<f32>;
-    var phi_1579_: vec2<f32>;
-    var phi_1610_: u32;
-    var phi_1613_: f32;
-    var phi_1719_: f32;
-    var phi_1732_: f32;
-    var phi_1745_: f32;
-    var phi_1746_: f32;
-    var phi_2014_: bool;
+    var phi_1999_: bool;
+    var phi_1440_: f32;
+    var phi_1442_: f32;
+    var phi_1443_: f32;
+    var phi_1455_: f32;
+    var phi_1496_: f32;
+    var phi_1510_: f32;
+    var phi_1583_: vec2<f32>;
+    var phi_1584_: vec2<f32>;
+    var phi_1615_: u32;
+    var phi_1618_: f32;
+    var phi_1724_: f32;
+    var phi_1737_: f32;
+    var phi_1750_: f32;
+    var phi_1751_: f32;
     var phi_2029_: bool;
-    var phi_1769_: f32;
-    var phi_1776_: f32;
     var phi_2044_: bool;
+    var phi_1774_: f32;
+    var phi_1781_: f32;
     var phi_2059_: bool;
-    var phi_1785_: f32;
-    var phi_1611_: u32;
-    var phi_1614_: f32;
-    var phi_2064_: bool;
+    var phi_2074_: bool;
+    var phi_1790_: f32;
+    var phi_1616_: u32;
+    var phi_1619_: f32;
+    var phi_2079_: bool;
     var local_11: f32;
-    var phi_2176_: bool;
-    var phi_1788_: f32;
-    var phi_2175_: bool;
-    var phi_757_: u32;
-    var phi_760_: f32;
-    var phi_2174_: bool;
+    var phi_2191_: bool;
+    var phi_1795_: f32;
+    var phi_2190_: bool;
+    var phi_760_: u32;
+    var phi_765_: f32;
+    var phi_2189_: bool;
     var local_12: f32;
-    var phi_1809_: f32;
-    var phi_1819_: f32;
-    var phi_1823_: f32;
-    var phi_1824_: f32;
+    var phi_1816_: f32;
+    var phi_1826_: f32;
+    var local_13: u32;
+    var phi_1831_: type_41;
+    var phi_1833_: type_41;
+    var phi_1834_: bool;
+    var phi_1838_: type_41;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e230 = id_1;
-            let _e235 = arrayLength((&depth.member));
+            let _e231 = id_1;
+            let _e236 = arrayLength((&depth.member));
             if (0u < arrayLength((&frame.member))) {
             } else {
                 break;
             }
-            let _e257 = frame.member[0u].member_1.member.member.member_4;
-            let _e258 = (_e230.x + _e257);
-            let _e259 = (_e230.y + _e257);
-            let _e267 = frame.member[0u].member_1.member.member.member[0u];
-            let _e272 = select(select(u32(_e267), 0u, (_e267 < 0f)), 4294967295u, (_e267 > 4294967000f));
-            let _e280 = frame.member[0u].member_1.member.member.member[1u];
-            let _e285 = select(select(u32(_e280), 0u, (_e280 < 0f)), 4294967295u, (_e280 > 4294967000f));
-            if (_e258 >= _e257) {
-                if (_e259 >= _e257) {
-                    let _e289 = ((_e258 + _e257) < _e272);
-                    if _e289 {
-                        phi_396_ = ((_e259 + _e257) < _e285);
+            let _e258 = frame.member[0u].member_1.member.member.member_4;
+            let _e259 = (_e231.x + _e258);
+            let _e260 = (_e231.y + _e258);
+            let _e268 = frame.member[0u].member_1.member.member.member[0u];
+            let _e273 = select(select(u32(_e268), 0u, (_e268 < 0f)), 4294967295u, (_e268 > 4294967000f));
+            let _e281 = frame.member[0u].member_1.member.member.member[1u];
+            let _e286 = select(select(u32(_e281), 0u, (_e281 < 0f)), 4294967295u, (_e281 > 4294967000f));
+            if (_e259 >= _e258) {
+                if (_e260 >= _e258) {
+                    let _e290 = ((_e259 + _e258) < _e273);
+                    if _e290 {
+                        phi_398_ = ((_e260 + _e258) < _e286);
                     } else {
-                        phi_396_ = bool();
+                        phi_398_ = bool();
                     }
-                    let _e293 = phi_396_;
-                    phi_398_ = _e293;
-                    phi_399_ = select(true, false, _e289);
+                    let _e294 = phi_398_;
+                    phi_400_ = _e294;
+                    phi_401_ = select(true, false, _e290);
                 } else {
-                    phi_398_ = bool();
-                    phi_399_ = true;
+                    phi_400_ = bool();
+                    phi_401_ = true;
                 }
-                let _e296 = phi_398_;
-                let _e298 = phi_399_;
-                phi_400_ = _e296;
-                phi_401_ = _e298;
+                let _e297 = phi_400_;
+                let _e299 = phi_401_;
+                phi_402_ = _e297;
+                phi_403_ = _e299;
             } else {
-                phi_400_ = bool();
-                phi_401_ = true;
+                phi_402_ = bool();
+                phi_403_ = true;
             }
-            let _e300 = phi_400_;
-            let _e302 = phi_401_;
-            if select(_e300, false, _e302) {
-                let _e305 = ((_e259 * _e272) + _e258);
-                let _e306 = (_e305 < arrayLength((&ao.member)));
-                if _e306 {
+            let _e301 = phi_402_;
+            let _e303 = phi_403_;
+            if select(_e301, false, _e303) {
+                let _e306 = ((_e260 * _e273) + _e259);
+                let _e307 = (_e306 < arrayLength((&ao.member)));
+                if _e307 {
                 } else {
                     break;
                 }
-                let _e309 = ao.member[_e305];
-                if (_e305 < arrayLength((&mask.member))) {
+                let _e310 = ao.member[_e306];
+                if (_e306 < arrayLength((&mask.member))) {
                 } else {
                     break;
                 }
-                let _e313 = mask.member[_e305];
-                if (_e313 == 0u) {
-                    phi_1824_ = _e309;
+                let _e314 = mask.member[_e306];
+                if (_e314 == 0u) {
+                    phi_1833_ = type_41();
+                    phi_1834_ = true;
                 } else {
-                    let _e320 = frame.member[0u].member_1.member.member_1;
-                    let _e326 = frame.member[0u].member_1.member.member_4;
-                    let _e331 = ((f32(_e258) + 0.5f) / _e267);
-                    let _e332 = ((f32(_e259) + 0.5f) / _e280);
-                    if (_e305 < _e235) {
+                    let _e322 = frame.member[0u].member_1.member.member_1;
+                    let _e328 = frame.member[0u].member_1.member.member_4;
+                    let _e333 = ((f32(_e259) + 0.5f) / _e268);
+                    let _e334 = ((f32(_e260) + 0.5f) / _e281);
+                    if (_e306 < _e236) {
                     } else {
                         break;
                     }
-                    let _e335 = depth.member[_e305];
-                    let _e342 = frame.member[0u].member_1.member.member.member_3;
-                    if (_e335 > 0f) {
-                        phi_494_ = (_e335 < _e342);
+                    let _e337 = depth.member[_e306];
+                    let _e344 = frame.member[0u].member_1.member.member.member_3;
+                    if (_e337 > 0f) {
+                        phi_497_ = (_e337 < _e344);
                     } else {
-                        phi_494_ = false;
+                        phi_497_ = false;
                     }
-                    let _e346 = phi_494_;
-                    if _e346 {
-                        let _e354 = frame.member[0u].member_1.member.member.member_1[0u];
-                        let _e362 = frame.member[0u].member_1.member.member.member_1[1u];
-                        let _e372 = (0.5f * (((_e320 * _e267) / ((2f * _e354) * _e335)) + ((_e320 * _e280) / ((2f * _e362) * _e335))));
-                        let _e373 = (_e372 > _e326);
-                        if _e373 {
-                            phi_524_ = ((_e320 * _e326) / _e372);
+                    let _e348 = phi_497_;
+                    if _e348 {
+                        let _e356 = frame.member[0u].member_1.member.member.member_1[0u];
+                        let _e364 = frame.member[0u].member_1.member.member.member_1[1u];
+                        let _e374 = (0.5f * (((_e322 * _e268) / ((2f * _e356) * _e337)) + ((_e322 * _e281) / ((2f * _e364) * _e337))));
+                        let _e375 = (_e374 > _e328);
+                        if _e375 {
+                            phi_527_ = ((_e322 * _e328) / _e374);
                         } else {
-                            phi_524_ = _e320;
+                            phi_527_ = _e322;
                         }
-                        let _e377 = phi_524_;
-                        let _e378 = select(_e372, _e326, _e373);
-                        let _e379 = (_e378 < 0.5f);
-                        if _e379 {
-                            phi_738_ = type_28(0u, type_28().member_1);
-                            phi_739_ = type_28();
+                        let _e379 = phi_527_;
+                        let _e380 = select(_e374, _e328, _e375);
+                        let _e381 = (_e380 < 0.5f);
+                        if _e381 {
+                            phi_741_ = type_28(0u, type_28().member_1);
+                            phi_742_ = type_28();
                         } else {
-                            let _e388 = ((((2f * _e331) - 1f) * _e335) * _e354);
-                            let _e390 = (((1f - (2f * _e332)) * _e335) * _e362);
-                            let _e391 = -(_e335);
-                            if (_e305 < arrayLength((&normals.member))) {
+                            let _e390 = ((((2f * _e333) - 1f) * _e337) * _e356);
+                            let _e392 = (((1f - (2f * _e334)) * _e337) * _e364);
+                            let _e393 = -(_e337);
+                            if (_e306 < arrayLength((&normals.member))) {
                             } else {
                                 break;
                             }
-                            let _e395 = normals.member[_e305];
-                            let _e403 = (f32((bitcast<i32>(((_e395 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                            if (_e403 != _e403) {
-                                phi_1849_ = true;
-                            } else {
-                                phi_1849_ = (-1f >= _e403);
-                            }
-                            let _e407 = phi_1849_;
-                            let _e408 = select(_e403, -1f, _e407);
-                            let _e418 = (f32((bitcast<i32>((((_e395 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                            if (_e418 != _e418) {
+                            let _e397 = normals.member[_e306];
+                            let _e405 = (f32((bitcast<i32>(((_e397 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                            if (_e405 != _e405) {
                                 phi_1864_ = true;
                             } else {
-                                phi_1864_ = (-1f >= _e418);
+                                phi_1864_ = (-1f >= _e405);
                             }
-                            let _e422 = phi_1864_;
-                            let _e423 = select(_e418, -1f, _e422);
-                            let _e426 = (1f - abs(_e408));
-                            let _e427 = abs(_e423);
-                            let _e428 = (_e426 - _e427);
-                            if (_e428 < 0f) {
-                                phi_599_ = vec2<f32>(((1f - _e427) * select(1f, -1f, (_e408 < 0f))), (_e426 * select(1f, -1f, (_e423 < 0f))));
+                            let _e409 = phi_1864_;
+                            let _e410 = select(_e405, -1f, _e409);
+                            let _e420 = (f32((bitcast<i32>((((_e397 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                            if (_e420 != _e420) {
+                                phi_1879_ = true;
                             } else {
-                                phi_599_ = vec2<f32>(_e408, _e423);
+                                phi_1879_ = (-1f >= _e420);
                             }
-                            let _e439 = phi_599_;
-                            let _e448 = (1f / sqrt((((_e439.x * _e439.x) + (_e439.y * _e439.y)) + (_e428 * _e428))));
-                            let _e449 = (_e439.x * _e448);
-                            let _e450 = (_e439.y * _e448);
-                            let _e451 = (_e428 * _e448);
-                            if ((((_e388 * _e449) + (_e390 * _e450)) + (_e391 * _e451)) > 0f) {
-                                phi_626_ = vec3<f32>(-(_e449), -(_e450), -(_e451));
+                            let _e424 = phi_1879_;
+                            let _e425 = select(_e420, -1f, _e424);
+                            let _e428 = (1f - abs(_e410));
+                            let _e429 = abs(_e425);
+                            let _e430 = (_e428 - _e429);
+                            if (_e430 < 0f) {
+                                phi_602_ = vec2<f32>(((1f - _e429) * select(1f, -1f, (_e410 < 0f))), (_e428 * select(1f, -1f, (_e425 < 0f))));
                             } else {
-                                phi_626_ = vec3<f32>(_e449, _e450, _e451);
+                                phi_602_ = vec2<f32>(_e410, _e425);
                             }
-                            let _e464 = phi_626_;
+                            let _e441 = phi_602_;
+                            let _e450 = (1f / sqrt((((_e441.x * _e441.x) + (_e441.y * _e441.y)) + (_e430 * _e430))));
+                            let _e451 = (_e441.x * _e450);
+                            let _e452 = (_e441.y * _e450);
+                            let _e453 = (_e430 * _e450);
+                            if ((((_e390 * _e451) + (_e392 * _e452)) + (_e393 * _e453)) > 0f) {
+                                phi_629_ = vec3<f32>(-(_e451), -(_e452), -(_e453));
+                            } else {
+                                phi_629_ = vec3<f32>(_e451, _e452, _e453);
+                            }
+                            let _e466 = phi_629_;
                             local_10 = array<array<array<f32, 2>, 4>, 4>(array<array<f32, 2>, 4>(array<f32, 2>(0f, 1f), array<f32, 2>(0.012909942f, -0.9999167f), array<f32, 2>(0.69159436f, 0.7222861f), array<f32, 2>(-0.7000154f, -0.7141277f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.99997514f, -0.0070477454f), array<f32, 2>(0.9998238f, 0.018771695f), array<f32, 2>(-0.7100116f, 0.70418996f), array<f32, 2>(0.7182193f, -0.6958169f)), array<array<f32, 2>, 4>(array<f32, 2>(0.91594595f, 0.40130165f), array<f32, 2>(-0.92058814f, -0.39053485f), array<f32, 2>(0.36117664f, 0.93249744f), array<f32, 2>(-0.3720851f, -0.92819864f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.38513124f, 0.9228618f), array<f32, 2>(0.39592505f, -0.9182828f), array<f32, 2>(-0.9260013f, 0.37752023f), array<f32, 2>(0.930364f, -0.36663717f)));
-                            let _e465 = (_e259 % 4u);
-                            if (_e465 < 4u) {
-                            } else {
-                                break;
-                            }
-                            let _e467 = (_e258 % 4u);
+                            let _e467 = (_e260 % 4u);
                             if (_e467 < 4u) {
                             } else {
                                 break;
                             }
-                            let _e471 = local_10[_e465][_e467];
-                            let _e481 = sqrt((((_e388 * _e388) + (_e390 * _e390)) + (_e391 * _e391)));
-                            let _e482 = (-(_e388) / _e481);
-                            let _e483 = (-(_e390) / _e481);
-                            let _e484 = (_e335 / _e481);
-                            let _e487 = -((_e471[1] * _e484));
-                            let _e488 = (_e484 * _e471[0]);
-                            let _e491 = ((_e482 * _e471[1]) - (_e471[0] * _e483));
-                            let _e498 = (1f / sqrt((((_e487 * _e487) + (_e488 * _e488)) + (_e491 * _e491))));
-                            let _e499 = (_e487 * _e498);
-                            let _e500 = (_e488 * _e498);
-                            let _e501 = (_e491 * _e498);
-                            let _e505 = ((_e500 * _e484) - (_e483 * _e501));
-                            let _e508 = ((_e501 * _e482) - (_e484 * _e499));
-                            let _e511 = ((_e499 * _e483) - (_e482 * _e500));
-                            let _e530 = (((_e464.x * _e482) + (_e464.y * _e483)) + (_e464.z * _e484));
-                            let _e534 = abs(_e530);
-                            if (_e534 != _e534) {
-                                phi_1879_ = true;
+                            let _e469 = (_e259 % 4u);
+                            if (_e469 < 4u) {
                             } else {
-                                phi_1879_ = (0.0001f >= _e534);
+                                break;
                             }
-                            let _e538 = phi_1879_;
-                            phi_738_ = type_28();
-                            phi_739_ = type_28(1u, type_27(vec2<u32>(_e258, _e259), vec2<f32>(_e331, _e332), _e377, _e378, vec3<f32>(_e388, _e390, _e391), _e464, vec3<f32>(_e482, _e483, _e484), vec3<f32>(_e505, _e508, _e511), vec3<f32>(_e499, _e500, _e501), vec3<f32>((((_e464.x * _e505) + (_e464.y * _e508)) + (_e464.z * _e511)), (((_e464.x * _e499) + (_e464.y * _e500)) + (_e464.z * _e501)), _e530), (1f / (select(1f, -1f, (_e530 < 0f)) * select(_e534, 0.0001f, _e538)))));
+                            let _e473 = local_10[_e467][_e469];
+                            let _e483 = sqrt((((_e390 * _e390) + (_e392 * _e392)) + (_e393 * _e393)));
+                            let _e484 = (-(_e390) / _e483);
+                            let _e485 = (-(_e392) / _e483);
+                            let _e486 = (_e337 / _e483);
+                            let _e489 = -((_e473[1] * _e486));
+                            let _e490 = (_e486 * _e473[0]);
+                            let _e493 = ((_e484 * _e473[1]) - (_e473[0] * _e485));
+                            let _e500 = (1f / sqrt((((_e489 * _e489) + (_e490 * _e490)) + (_e493 * _e493))));
+                            let _e501 = (_e489 * _e500);
+                            let _e502 = (_e490 * _e500);
+                            let _e503 = (_e493 * _e500);
+                            let _e507 = ((_e502 * _e486) - (_e485 * _e503));
+                            let _e510 = ((_e503 * _e484) - (_e486 * _e501));
+                            let _e513 = ((_e501 * _e485) - (_e484 * _e502));
+                            let _e532 = (((_e466.x * _e484) + (_e466.y * _e485)) + (_e466.z * _e486));
+                            let _e536 = abs(_e532);
+                            if (_e536 != _e536) {
+                                phi_1894_ = true;
+                            } else {
+                                phi_1894_ = (0.0001f >= _e536);
+                            }
+                            let _e540 = phi_1894_;
+                            phi_741_ = type_28();
+                            phi_742_ = type_28(1u, type_27(vec2<u32>(_e259, _e260), vec2<f32>(_e333, _e334), _e379, _e380, vec3<f32>(_e390, _e392, _e393), _e466, vec3<f32>(_e484, _e485, _e486), vec3<f32>(_e507, _e510, _e513), vec3<f32>(_e501, _e502, _e503), vec3<f32>((((_e466.x * _e507) + (_e466.y * _e510)) + (_e466.z * _e513)), (((_e466.x * _e501) + (_e466.y * _e502)) + (_e466.z * _e503)), _e532), (1f / (select(1f, -1f, (_e532 < 0f)) * select(_e536, 0.0001f, _e540)))));
                         }
-                        let _e547 = phi_738_;
-                        let _e549 = phi_739_;
-                        phi_741_ = _e547;
-                        phi_742_ = _e549;
-                        phi_743_ = _e379;
+                        let _e549 = phi_741_;
+                        let _e551 = phi_742_;
+                        phi_744_ = _e549;
+                        phi_745_ = _e551;
+                        phi_746_ = _e381;
                     } else {
-                        phi_741_ = type_28(0u, type_28().member_1);
-                        phi_742_ = type_28();
-                        phi_743_ = true;
+                        phi_744_ = type_28(0u, type_28().member_1);
+                        phi_745_ = type_28();
+                        phi_746_ = true;
                     }
-                    let _e554 = phi_741_;
-                    let _e556 = phi_742_;
-                    let _e558 = phi_743_;
-                    if _e558 {
-                        phi_747_ = _e554;
+                    let _e556 = phi_744_;
+                    let _e558 = phi_745_;
+                    let _e560 = phi_746_;
+                    if _e560 {
+                        phi_750_ = _e556;
                     } else {
-                        phi_747_ = _e556;
+                        phi_750_ = _e558;
                     }
-                    let _e560 = phi_747_;
-                    if (bitcast<i32>(_e560.member) != 0i) {
-                        phi_2099_ = false;
-                        phi_756_ = 0u;
-                        phi_759_ = 0f;
+                    let _e562 = phi_750_;
+                    let _e565 = (bitcast<i32>(_e562.member) != 0i);
+                    if _e565 {
+                        phi_2114_ = false;
+                        phi_759_ = 0u;
+                        phi_762_ = 0u;
+                        phi_764_ = 0f;
                         loop {
-                            let _e566 = phi_2099_;
-                            let _e568 = phi_756_;
+                            let _e568 = phi_2114_;
                             let _e570 = phi_759_;
-                            local_12 = _e570;
-                            let _e571 = (_e568 < 8u);
-                            if _e571 {
-                                if ((_e313 & (1u << bitcast<u32>((_e568 & 31u)))) == 0u) {
-                                    phi_2176_ = _e566;
-                                    phi_1788_ = _e570;
+                            let _e572 = phi_762_;
+                            let _e574 = phi_764_;
+                            local_12 = _e574;
+                            local_13 = _e572;
+                            let _e575 = (_e570 < 8u);
+                            if _e575 {
+                                if ((_e314 & (1u << bitcast<u32>((_e570 & 31u)))) == 0u) {
+                                    phi_2191_ = _e568;
+                                    phi_1795_ = _e574;
                                 } else {
-                                    let _e581 = frame.member[0u].member_1.member_10;
+                                    let _e585 = frame.member[0u].member_1.member_10;
                                     local_4 = array<array<f32, 2>, 8>(array<f32, 2>(0f, 1f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.7078398f, 0.70637304f));
-                                    if _e571 {
+                                    if _e575 {
                                     } else {
-                                        phi_2174_ = true;
+                                        phi_2189_ = true;
                                         break;
                                     }
-                                    let _e583 = local_4[_e568];
-                                    let _e586 = (_e581 == 1u);
-                                    if _e586 {
+                                    let _e587 = local_4[_e570];
+                                    let _e590 = (_e585 == 1u);
+                                    if _e590 {
                                         local_5 = array<f32, 8>(0.019897608f, 0.3239192f, 0.15013283f, 0.5608856f, 0.07874805f, 0.4306375f, 0.23159242f, 0.74770695f);
-                                        if _e571 {
+                                        if _e575 {
                                         } else {
-                                            phi_2174_ = true;
+                                            phi_2189_ = true;
                                             break;
                                         }
-                                        let _e588 = local_5[_e568];
-                                        phi_805_ = _e588;
+                                        let _e592 = local_5[_e570];
+                                        phi_810_ = _e592;
                                     } else {
                                         local_6 = array<f32, 8>(0.917883f, 0.564429f, 0.734504f, 0.359545f, 0.820004f, 0.470149f, 0.650919f, 0.205215f);
-                                        if _e571 {
+                                        if _e575 {
                                         } else {
-                                            phi_2174_ = true;
+                                            phi_2189_ = true;
                                             break;
                                         }
-                                        let _e590 = local_6[_e568];
-                                        phi_805_ = _e590;
+                                        let _e594 = local_6[_e570];
+                                        phi_810_ = _e594;
                                     }
-                                    let _e592 = phi_805_;
-                                    let _e594 = (_e592 * _e560.member_1.member_2);
-                                    let _e595 = (_e594 * _e583[0]);
-                                    let _e596 = (_e594 * _e583[1]);
-                                    if _e586 {
+                                    let _e596 = phi_810_;
+                                    let _e598 = (_e596 * _e562.member_1.member_2);
+                                    let _e599 = (_e598 * _e587[0]);
+                                    let _e600 = (_e598 * _e587[1]);
+                                    if _e590 {
                                         local_7 = array<f32, 8>(0.999802f, 0.94608474f, 0.9886658f, 0.8278933f, 0.99689454f, 0.902525f, 0.9728129f, 0.6640288f);
-                                        if _e571 {
+                                        if _e575 {
                                         } else {
-                                            phi_2174_ = true;
+                                            phi_2189_ = true;
                                             break;
                                         }
-                                        let _e598 = local_7[_e568];
-                                        phi_829_ = _e598;
+                                        let _e602 = local_7[_e570];
+                                        phi_834_ = _e602;
                                     } else {
                                         local_8 = array<f32, 8>(0.39685115f, 0.82548165f, 0.67860436f, 0.93312776f, 0.57235783f, 0.8825871f, 0.75914717f, 0.9787169f);
-                                        if _e571 {
+                                        if _e575 {
                                         } else {
-                                            phi_2174_ = true;
+                                            phi_2189_ = true;
                                             break;
                                         }
-                                        let _e600 = local_8[_e568];
-                                        phi_829_ = _e600;
+                                        let _e604 = local_8[_e570];
+                                        phi_834_ = _e604;
                                     }
-                                    let _e602 = phi_829_;
-                                    let _e603 = (_e602 * _e560.member_1.member_2);
-                                    if _e586 {
+                                    let _e606 = phi_834_;
+                                    let _e607 = (_e606 * _e562.member_1.member_2);
+                                    if _e590 {
                                         local_9 = array<f32, 8>(0.8732723f, 0.50031143f, 0.7051298f, 0.261884f, 0.79581136f, 0.38665694f, 0.6062196f, 0.11405134f);
-                                        if _e571 {
+                                        if _e575 {
                                         } else {
-                                            phi_2174_ = true;
+                                            phi_2189_ = true;
                                             break;
                                         }
-                                        let _e605 = local_9[_e568];
-                                        phi_843_ = _e605;
+                                        let _e609 = local_9[_e570];
+                                        phi_848_ = _e609;
                                     } else {
-                                        phi_843_ = (2f * _e603);
+                                        phi_848_ = (2f * _e607);
                                     }
-                                    let _e608 = phi_843_;
-                                    let _e618 = (-(((_e595 * _e560.member_1.member_9.x) + (_e596 * _e560.member_1.member_9.y))) * _e560.member_1.member_10);
-                                    let _e619 = -(_e603);
-                                    if (_e618 > _e619) {
-                                        phi_862_ = select(_e603, _e618, (_e618 < _e603));
+                                    let _e612 = phi_848_;
+                                    let _e622 = (-(((_e599 * _e562.member_1.member_9.x) + (_e600 * _e562.member_1.member_9.y))) * _e562.member_1.member_10);
+                                    let _e623 = -(_e607);
+                                    if (_e622 > _e623) {
+                                        phi_867_ = select(_e607, _e622, (_e622 < _e607));
                                     } else {
-                                        phi_862_ = _e619;
+                                        phi_867_ = _e623;
                                     }
-                                    let _e624 = phi_862_;
-                                    let _e649 = (-0.5f / ((_e560.member_1.member_4.z + (_e560.member_1.member_7.z * _e595)) + (_e560.member_1.member_8.z * _e596)));
-                                    let _e658 = frame.member[0u].member_1.member.member.member_1[0u];
-                                    let _e660 = (0.5f + ((((_e560.member_1.member_4.x + (_e560.member_1.member_7.x * _e595)) + (_e560.member_1.member_8.x * _e596)) * _e649) / _e658));
-                                    let _e669 = frame.member[0u].member_1.member.member.member_1[1u];
-                                    let _e671 = (0.5f - ((((_e560.member_1.member_4.y + (_e560.member_1.member_7.y * _e595)) + (_e560.member_1.member_8.y * _e596)) * _e649) / _e669));
-                                    if (_e660 >= 0f) {
-                                        if (_e660 <= 1f) {
-                                            let _e674 = (_e671 >= 0f);
-                                            if _e674 {
-                                                phi_918_ = (_e671 <= 1f);
+                                    let _e628 = phi_867_;
+                                    let _e653 = (-0.5f / ((_e562.member_1.member_4.z + (_e562.member_1.member_7.z * _e599)) + (_e562.member_1.member_8.z * _e600)));
+                                    let _e662 = frame.member[0u].member_1.member.member.member_1[0u];
+                                    let _e664 = (0.5f + ((((_e562.member_1.member_4.x + (_e562.member_1.member_7.x * _e599)) + (_e562.member_1.member_8.x * _e600)) * _e653) / _e662));
+                                    let _e673 = frame.member[0u].member_1.member.member.member_1[1u];
+                                    let _e675 = (0.5f - ((((_e562.member_1.member_4.y + (_e562.member_1.member_7.y * _e599)) + (_e562.member_1.member_8.y * _e600)) * _e653) / _e673));
+                                    if (_e664 >= 0f) {
+                                        if (_e664 <= 1f) {
+                                            let _e678 = (_e675 >= 0f);
+                                            if _e678 {
+                                                phi_923_ = (_e675 <= 1f);
                                             } else {
-                                                phi_918_ = bool();
+                                                phi_923_ = bool();
                                             }
-                                            let _e677 = phi_918_;
-                                            phi_920_ = _e677;
-                                            phi_921_ = select(true, false, _e674);
+                                            let _e681 = phi_923_;
+                                            phi_925_ = _e681;
+                                            phi_926_ = select(true, false, _e678);
                                         } else {
-                                            phi_920_ = bool();
-                                            phi_921_ = true;
+                                            phi_925_ = bool();
+                                            phi_926_ = true;
                                         }
-                                        let _e680 = phi_920_;
-                                        let _e682 = phi_921_;
-                                        phi_922_ = _e680;
-                                        phi_923_ = _e682;
+                                        let _e684 = phi_925_;
+                                        let _e686 = phi_926_;
+                                        phi_927_ = _e684;
+                                        phi_928_ = _e686;
                                     } else {
-                                        phi_922_ = bool();
-                                        phi_923_ = true;
+                                        phi_927_ = bool();
+                                        phi_928_ = true;
                                     }
-                                    let _e684 = phi_922_;
-                                    let _e686 = phi_923_;
-                                    if (_e660 > 0f) {
-                                        phi_955_ = select(1f, _e660, (_e660 < 1f));
+                                    let _e688 = phi_927_;
+                                    let _e690 = phi_928_;
+                                    if (_e664 > 0f) {
+                                        phi_960_ = select(1f, _e664, (_e664 < 1f));
                                     } else {
-                                        phi_955_ = 0f;
+                                        phi_960_ = 0f;
                                     }
-                                    let _e692 = phi_955_;
-                                    let _e693 = (_e692 * _e267);
-                                    if (_e671 > 0f) {
-                                        phi_968_ = select(1f, _e671, (_e671 < 1f));
+                                    let _e696 = phi_960_;
+                                    let _e697 = (_e696 * _e268);
+                                    if (_e675 > 0f) {
+                                        phi_973_ = select(1f, _e675, (_e675 < 1f));
                                     } else {
-                                        phi_968_ = 0f;
+                                        phi_973_ = 0f;
                                     }
-                                    let _e698 = phi_968_;
-                                    let _e699 = (_e698 * _e280);
-                                    let _e704 = select(select(u32(_e693), 0u, (_e693 < 0f)), 4294967295u, (_e693 > 4294967000f));
-                                    let _e705 = (_e272 - 1u);
-                                    let _e707 = select(_e704, _e705, (_e705 < _e704));
-                                    let _e712 = select(select(u32(_e699), 0u, (_e699 < 0f)), 4294967295u, (_e699 > 4294967000f));
-                                    let _e713 = (_e285 - 1u);
-                                    let _e715 = select(_e712, _e713, (_e713 < _e712));
-                                    let _e722 = ((_e560.member_1.member_1.x - _e660) * _e267);
-                                    let _e723 = ((_e560.member_1.member_1.y - _e671) * _e280);
-                                    let _e729 = ((_e715 * _e272) + _e707);
-                                    if (_e729 < _e235) {
+                                    let _e702 = phi_973_;
+                                    let _e703 = (_e702 * _e281);
+                                    let _e708 = select(select(u32(_e697), 0u, (_e697 < 0f)), 4294967295u, (_e697 > 4294967000f));
+                                    let _e709 = (_e273 - 1u);
+                                    let _e711 = select(_e708, _e709, (_e709 < _e708));
+                                    let _e716 = select(select(u32(_e703), 0u, (_e703 < 0f)), 4294967295u, (_e703 > 4294967000f));
+                                    let _e717 = (_e286 - 1u);
+                                    let _e719 = select(_e716, _e717, (_e717 < _e716));
+                                    let _e726 = ((_e562.member_1.member_1.x - _e664) * _e268);
+                                    let _e727 = ((_e562.member_1.member_1.y - _e675) * _e281);
+                                    let _e733 = ((_e719 * _e273) + _e711);
+                                    if (_e733 < _e236) {
                                     } else {
-                                        phi_2174_ = true;
+                                        phi_2189_ = true;
                                         break;
                                     }
-                                    let _e732 = depth.member[_e729];
-                                    if (_e732 > 0f) {
-                                        phi_1053_ = (_e732 < _e342);
+                                    let _e736 = depth.member[_e733];
+                                    if (_e736 > 0f) {
+                                        phi_1058_ = (_e736 < _e344);
                                     } else {
-                                        phi_1053_ = false;
+                                        phi_1058_ = false;
                                     }
-                                    let _e736 = phi_1053_;
-                                    let _e737 = select(_e342, _e732, _e736);
-                                    let _e747 = ((2f * ((f32(_e707) + 0.5f) * (1f / _e267))) - 1f);
-                                    let _e749 = (1f - (2f * ((f32(_e715) + 0.5f) * (1f / _e280))));
-                                    let _e755 = (((_e747 * _e737) * _e658) - _e560.member_1.member_4.x);
-                                    let _e756 = (((_e749 * _e737) * _e669) - _e560.member_1.member_4.y);
-                                    let _e757 = (-(_e737) - _e560.member_1.member_4.z);
-                                    let _e766 = (((_e755 * _e560.member_1.member_6.x) + (_e756 * _e560.member_1.member_6.y)) + (_e757 * _e560.member_1.member_6.z));
-                                    if _e586 {
-                                        let _e771 = (((_e755 * _e755) + (_e756 * _e756)) + (_e757 * _e757));
-                                        if (_e771 <= 0f) {
-                                            phi_1177_ = 0f;
+                                    let _e740 = phi_1058_;
+                                    let _e741 = select(_e344, _e736, _e740);
+                                    let _e751 = ((2f * ((f32(_e711) + 0.5f) * (1f / _e268))) - 1f);
+                                    let _e753 = (1f - (2f * ((f32(_e719) + 0.5f) * (1f / _e281))));
+                                    let _e759 = (((_e751 * _e741) * _e662) - _e562.member_1.member_4.x);
+                                    let _e760 = (((_e753 * _e741) * _e673) - _e562.member_1.member_4.y);
+                                    let _e761 = (-(_e741) - _e562.member_1.member_4.z);
+                                    let _e770 = (((_e759 * _e562.member_1.member_6.x) + (_e760 * _e562.member_1.member_6.y)) + (_e761 * _e562.member_1.member_6.z));
+                                    if _e590 {
+                                        let _e775 = (((_e759 * _e759) + (_e760 * _e760)) + (_e761 * _e761));
+                                        if (_e775 <= 0f) {
+                                            phi_1182_ = 0f;
                                         } else {
-                                            let _e784 = (((((_e560.member_1.member_5.x * _e755) + (_e560.member_1.member_5.y * _e756)) + (_e560.member_1.member_5.z * _e757)) / sqrt(_e771)) - 0.1f);
-                                            if (_e784 > 0f) {
-                                                phi_1150_ = select(1f, _e784, (_e784 < 1f));
+                                            let _e788 = (((((_e562.member_1.member_5.x * _e759) + (_e562.member_1.member_5.y * _e760)) + (_e562.member_1.member_5.z * _e761)) / sqrt(_e775)) - 0.1f);
+                                            if (_e788 > 0f) {
+                                                phi_1155_ = select(1f, _e788, (_e788 < 1f));
                                             } else {
-                                                phi_1150_ = 0f;
+                                                phi_1155_ = 0f;
                                             }
-                                            let _e789 = phi_1150_;
-                                            let _e792 = (1f - (_e771 / (_e320 * _e320)));
-                                            if (_e792 > 0f) {
-                                                phi_1163_ = select(1f, _e792, (_e792 < 1f));
+                                            let _e793 = phi_1155_;
+                                            let _e796 = (1f - (_e775 / (_e322 * _e322)));
+                                            if (_e796 > 0f) {
+                                                phi_1168_ = select(1f, _e796, (_e796 < 1f));
                                             } else {
-                                                phi_1163_ = 0f;
+                                                phi_1168_ = 0f;
                                             }
-                                            let _e797 = phi_1163_;
-                                            let _e799 = ((_e789 * _e797) / _e608);
-                                            if (_e799 > 0f) {
-                                                phi_1176_ = select(1f, _e799, (_e799 < 1f));
+                                            let _e801 = phi_1168_;
+                                            let _e803 = ((_e793 * _e801) / _e612);
+                                            if (_e803 > 0f) {
+                                                phi_1181_ = select(1f, _e803, (_e803 < 1f));
                                             } else {
-                                                phi_1176_ = 0f;
+                                                phi_1181_ = 0f;
                                             }
-                                            let _e804 = phi_1176_;
-                                            phi_1177_ = _e804;
+                                            let _e808 = phi_1181_;
+                                            phi_1182_ = _e808;
                                         }
-                                        let _e806 = phi_1177_;
-                                        phi_1207_ = _e806;
+                                        let _e810 = phi_1182_;
+                                        phi_1212_ = _e810;
                                     } else {
-                                        let _e812 = frame.member[0u].member_1.member.member_3;
-                                        if (_e624 != _e624) {
-                                            phi_1894_ = true;
-                                        } else {
-                                            phi_1894_ = (_e766 >= _e624);
-                                        }
-                                        let _e817 = phi_1894_;
-                                        let _e819 = (_e603 - select(_e624, _e766, _e817));
-                                        if (_e819 != _e819) {
+                                        let _e816 = frame.member[0u].member_1.member.member_3;
+                                        if (_e628 != _e628) {
                                             phi_1909_ = true;
                                         } else {
-                                            phi_1909_ = (0f >= _e819);
+                                            phi_1909_ = (_e770 >= _e628);
                                         }
-                                        let _e823 = phi_1909_;
-                                        let _e828 = ((_e766 - ((1f + _e812) * _e560.member_1.member_2)) * (1f / _e603));
-                                        if (_e828 > 0f) {
-                                            phi_1200_ = select(1f, _e828, (_e828 < 1f));
+                                        let _e821 = phi_1909_;
+                                        let _e823 = (_e607 - select(_e628, _e770, _e821));
+                                        if (_e823 != _e823) {
+                                            phi_1924_ = true;
                                         } else {
-                                            phi_1200_ = 0f;
+                                            phi_1924_ = (0f >= _e823);
                                         }
-                                        let _e833 = phi_1200_;
-                                        phi_1207_ = ((select(_e819, 0f, _e823) + (_e833 * (_e603 - _e624))) * (0.5f / _e603));
+                                        let _e827 = phi_1924_;
+                                        let _e832 = ((_e770 - ((1f + _e816) * _e562.member_1.member_2)) * (1f / _e607));
+                                        if (_e832 > 0f) {
+                                            phi_1205_ = select(1f, _e832, (_e832 < 1f));
+                                        } else {
+                                            phi_1205_ = 0f;
+                                        }
+                                        let _e837 = phi_1205_;
+                                        phi_1212_ = ((select(_e823, 0f, _e827) + (_e837 * (_e607 - _e628))) * (0.5f / _e607));
                                     }
-                                    let _e840 = phi_1207_;
-                                    let _e845 = frame.member[0u].member_1.member_9;
-                                    if (_e845 == 0u) {
-                                        phi_1438_ = _e840;
+                                    let _e844 = phi_1212_;
+                                    let _e849 = frame.member[0u].member_1.member_9;
+                                    if (_e849 == 0u) {
+                                        phi_1443_ = _e844;
                                     } else {
-                                        if _e586 {
-                                            let _e847 = (0.1f * _e560.member_1.member_2);
-                                            if (_e603 != _e603) {
-                                                phi_1924_ = true;
+                                        if _e590 {
+                                            let _e851 = (0.1f * _e562.member_1.member_2);
+                                            if (_e607 != _e607) {
+                                                phi_1939_ = true;
                                             } else {
-                                                phi_1924_ = (_e847 >= _e603);
+                                                phi_1939_ = (_e851 >= _e607);
                                             }
-                                            let _e851 = phi_1924_;
-                                            phi_1229_ = select(_e603, _e847, _e851);
+                                            let _e855 = phi_1939_;
+                                            phi_1234_ = select(_e607, _e851, _e855);
                                         } else {
-                                            let _e858 = frame.member[0u].member_1.member.member_3;
-                                            phi_1229_ = ((1f + _e858) * _e560.member_1.member_2);
+                                            let _e862 = frame.member[0u].member_1.member.member_3;
+                                            phi_1234_ = ((1f + _e862) * _e562.member_1.member_2);
                                         }
-                                        let _e862 = phi_1229_;
-                                        if (_e766 > _e862) {
-                                            let _e868 = frame.member[0u].member_1.member_3;
-                                            phi_1237_ = (sqrt(((_e722 * _e722) + (_e723 * _e723))) > _e868);
+                                        let _e866 = phi_1234_;
+                                        if (_e770 > _e866) {
+                                            let _e872 = frame.member[0u].member_1.member_3;
+                                            phi_1242_ = (sqrt(((_e726 * _e726) + (_e727 * _e727))) > _e872);
                                         } else {
-                                            phi_1237_ = false;
+                                            phi_1242_ = false;
                                         }
-                                        let _e871 = phi_1237_;
-                                        if _e871 {
-                                            if (_e729 < arrayLength((&depth2_.member))) {
+                                        let _e875 = phi_1242_;
+                                        if _e875 {
+                                            if (_e733 < arrayLength((&depth2_.member))) {
                                             } else {
-                                                phi_2174_ = true;
+                                                phi_2189_ = true;
                                                 break;
                                             }
-                                            let _e875 = depth2_.member[_e729];
-                                            if (_e875 > 0f) {
-                                                phi_1272_ = (_e875 < _e342);
+                                            let _e879 = depth2_.member[_e733];
+                                            if (_e879 > 0f) {
+                                                phi_1277_ = (_e879 < _e344);
                                             } else {
-                                                phi_1272_ = false;
+                                                phi_1277_ = false;
                                             }
-                                            let _e879 = phi_1272_;
-                                            let _e880 = select(_e342, _e875, _e879);
-                                            let _e886 = (((_e747 * _e880) * _e658) - _e560.member_1.member_4.x);
-                                            let _e887 = (((_e749 * _e880) * _e669) - _e560.member_1.member_4.y);
-                                            let _e888 = (-(_e880) - _e560.member_1.member_4.z);
-                                            let _e893 = (((_e886 * _e560.member_1.member_6.x) + (_e887 * _e560.member_1.member_6.y)) + (_e888 * _e560.member_1.member_6.z));
-                                            if _e586 {
-                                                let _e898 = (((_e886 * _e886) + (_e887 * _e887)) + (_e888 * _e888));
-                                                if (_e898 <= 0f) {
-                                                    phi_1396_ = 0f;
+                                            let _e883 = phi_1277_;
+                                            let _e884 = select(_e344, _e879, _e883);
+                                            let _e890 = (((_e751 * _e884) * _e662) - _e562.member_1.member_4.x);
+                                            let _e891 = (((_e753 * _e884) * _e673) - _e562.member_1.member_4.y);
+                                            let _e892 = (-(_e884) - _e562.member_1.member_4.z);
+                                            let _e897 = (((_e890 * _e562.member_1.member_6.x) + (_e891 * _e562.member_1.member_6.y)) + (_e892 * _e562.member_1.member_6.z));
+                                            if _e590 {
+                                                let _e902 = (((_e890 * _e890) + (_e891 * _e891)) + (_e892 * _e892));
+                                                if (_e902 <= 0f) {
+                                                    phi_1401_ = 0f;
                                                 } else {
-                                                    let _e911 = (((((_e560.member_1.member_5.x * _e886) + (_e560.member_1.member_5.y * _e887)) + (_e560.member_1.member_5.z * _e888)) / sqrt(_e898)) - 0.1f);
-                                                    if (_e911 > 0f) {
-                                                        phi_1369_ = select(1f, _e911, (_e911 < 1f));
+                                                    let _e915 = (((((_e562.member_1.member_5.x * _e890) + (_e562.member_1.member_5.y * _e891)) + (_e562.member_1.member_5.z * _e892)) / sqrt(_e902)) - 0.1f);
+                                                    if (_e915 > 0f) {
+                                                        phi_1374_ = select(1f, _e915, (_e915 < 1f));
                                                     } else {
-                                                        phi_1369_ = 0f;
+                                                        phi_1374_ = 0f;
                                                     }
-                                                    let _e916 = phi_1369_;
-                                                    let _e919 = (1f - (_e898 / (_e320 * _e320)));
-                                                    if (_e919 > 0f) {
-                                                        phi_1382_ = select(1f, _e919, (_e919 < 1f));
+                                                    let _e920 = phi_1374_;
+                                                    let _e923 = (1f - (_e902 / (_e322 * _e322)));
+                                                    if (_e923 > 0f) {
+                                                        phi_1387_ = select(1f, _e923, (_e923 < 1f));
                                                     } else {
-                                                        phi_1382_ = 0f;
+                                                        phi_1387_ = 0f;
                                                     }
-                                                    let _e924 = phi_1382_;
-                                                    let _e926 = ((_e916 * _e924) / _e608);
-                                                    if (_e926 > 0f) {
-                                                        phi_1395_ = select(1f, _e926, (_e926 < 1f));
+                                                    let _e928 = phi_1387_;
+                                                    let _e930 = ((_e920 * _e928) / _e612);
+                                                    if (_e930 > 0f) {
+                                                        phi_1400_ = select(1f, _e930, (_e930 < 1f));
                                                     } else {
-                                                        phi_1395_ = 0f;
+                                                        phi_1400_ = 0f;
                                                     }
-                                                    let _e931 = phi_1395_;
-                                                    phi_1396_ = _e931;
+                                                    let _e935 = phi_1400_;
+                                                    phi_1401_ = _e935;
                                                 }
-                                                let _e933 = phi_1396_;
-                                                phi_1426_ = _e933;
+                                                let _e937 = phi_1401_;
+                                                phi_1431_ = _e937;
                                             } else {
-                                                let _e939 = frame.member[0u].member_1.member.member_3;
-                                                if (_e624 != _e624) {
-                                                    phi_1939_ = true;
-                                                } else {
-                                                    phi_1939_ = (_e893 >= _e624);
-                                                }
-                                                let _e944 = phi_1939_;
-                                                let _e946 = (_e603 - select(_e624, _e893, _e944));
-                                                if (_e946 != _e946) {
+                                                let _e943 = frame.member[0u].member_1.member.member_3;
+                                                if (_e628 != _e628) {
                                                     phi_1954_ = true;
                                                 } else {
-                                                    phi_1954_ = (0f >= _e946);
+                                                    phi_1954_ = (_e897 >= _e628);
                                                 }
-                                                let _e950 = phi_1954_;
-                                                let _e955 = ((_e893 - ((1f + _e939) * _e560.member_1.member_2)) * (1f / _e603));
-                                                if (_e955 > 0f) {
-                                                    phi_1419_ = select(1f, _e955, (_e955 < 1f));
-                                                } else {
-                                                    phi_1419_ = 0f;
-                                                }
-                                                let _e960 = phi_1419_;
-                                                phi_1426_ = ((select(_e946, 0f, _e950) + (_e960 * (_e603 - _e624))) * (0.5f / _e603));
-                                            }
-                                            let _e967 = phi_1426_;
-                                            if _e586 {
-                                                if (_e840 != _e840) {
+                                                let _e948 = phi_1954_;
+                                                let _e950 = (_e607 - select(_e628, _e897, _e948));
+                                                if (_e950 != _e950) {
                                                     phi_1969_ = true;
                                                 } else {
-                                                    phi_1969_ = (_e967 >= _e840);
+                                                    phi_1969_ = (0f >= _e950);
                                                 }
-                                                let _e971 = phi_1969_;
-                                                phi_1435_ = select(_e840, _e967, _e971);
-                                            } else {
-                                                if (_e840 != _e840) {
+                                                let _e954 = phi_1969_;
+                                                let _e959 = ((_e897 - ((1f + _e943) * _e562.member_1.member_2)) * (1f / _e607));
+                                                if (_e959 > 0f) {
+                                                    phi_1424_ = select(1f, _e959, (_e959 < 1f));
+                                                } else {
+                                                    phi_1424_ = 0f;
+                                                }
+                                                let _e964 = phi_1424_;
+                                                phi_1431_ = ((select(_e950, 0f, _e954) + (_e964 * (_e607 - _e628))) * (0.5f / _e607));
+                                            }
+                                            let _e971 = phi_1431_;
+                                            if _e590 {
+                                                if (_e844 != _e844) {
                                                     phi_1984_ = true;
                                                 } else {
-                                                    phi_1984_ = (_e967 <= _e840);
+                                                    phi_1984_ = (_e971 >= _e844);
                                                 }
-                                                let _e976 = phi_1984_;
-                                                phi_1435_ = select(_e840, _e967, _e976);
+                                                let _e975 = phi_1984_;
+                                                phi_1440_ = select(_e844, _e971, _e975);
+                                            } else {
+                                                if (_e844 != _e844) {
+                                                    phi_1999_ = true;
+                                                } else {
+                                                    phi_1999_ = (_e971 <= _e844);
+                                                }
+                                                let _e980 = phi_1999_;
+                                                phi_1440_ = select(_e844, _e971, _e980);
                                             }
-                                            let _e979 = phi_1435_;
-                                            phi_1437_ = _e979;
+                                            let _e983 = phi_1440_;
+                                            phi_1442_ = _e983;
                                         } else {
-                                            phi_1437_ = _e840;
+                                            phi_1442_ = _e844;
                                         }
-                                        let _e981 = phi_1437_;
-                                        phi_1438_ = _e981;
+                                        let _e985 = phi_1442_;
+                                        phi_1443_ = _e985;
                                     }
-                                    let _e983 = phi_1438_;
-                                    if select(_e684, false, _e686) {
-                                        phi_1450_ = _e983;
+                                    let _e987 = phi_1443_;
+                                    if select(_e688, false, _e690) {
+                                        phi_1455_ = _e987;
                                     } else {
-                                        phi_1450_ = select(1f, 0f, _e586);
+                                        phi_1455_ = select(1f, 0f, _e590);
                                     }
-                                    let _e987 = phi_1450_;
-                                    let _e993 = frame.member[0u].member_1.member_5[0u];
-                                    let _e999 = frame.member[0u].member_1.member_5[1u];
-                                    let _e1000 = f32(_e993);
-                                    let _e1001 = f32(_e999);
-                                    let _e1006 = frame.member[0u].member_1.member_4;
-                                    let _e1007 = f32(_e1006);
-                                    let _e1008 = (2u * _e1006);
-                                    let _e1009 = (_e993 + _e1008);
-                                    let _e1015 = (floor((_e660 * _e1000)) + _e1007);
-                                    let _e1016 = f32((_e1009 - 1u));
-                                    if (_e1015 > 0f) {
-                                        phi_1491_ = select(_e1016, _e1015, (_e1015 < _e1016));
+                                    let _e991 = phi_1455_;
+                                    let _e997 = frame.member[0u].member_1.member_5[0u];
+                                    let _e1003 = frame.member[0u].member_1.member_5[1u];
+                                    let _e1004 = f32(_e997);
+                                    let _e1005 = f32(_e1003);
+                                    let _e1010 = frame.member[0u].member_1.member_4;
+                                    let _e1011 = f32(_e1010);
+                                    let _e1012 = (2u * _e1010);
+                                    let _e1013 = (_e997 + _e1012);
+                                    let _e1019 = (floor((_e664 * _e1004)) + _e1011);
+                                    let _e1020 = f32((_e1013 - 1u));
+                                    if (_e1019 > 0f) {
+                                        phi_1496_ = select(_e1020, _e1019, (_e1019 < _e1020));
                                     } else {
-                                        phi_1491_ = 0f;
+                                        phi_1496_ = 0f;
                                     }
-                                    let _e1021 = phi_1491_;
-                                    let _e1024 = (floor((_e671 * _e1001)) + _e1007);
-                                    let _e1025 = f32(((_e999 + _e1008) - 1u));
-                                    if (_e1024 > 0f) {
-                                        phi_1505_ = select(_e1025, _e1024, (_e1024 < _e1025));
+                                    let _e1025 = phi_1496_;
+                                    let _e1028 = (floor((_e675 * _e1005)) + _e1011);
+                                    let _e1029 = f32(((_e1003 + _e1012) - 1u));
+                                    if (_e1028 > 0f) {
+                                        phi_1510_ = select(_e1029, _e1028, (_e1028 < _e1029));
                                     } else {
-                                        phi_1505_ = 0f;
+                                        phi_1510_ = 0f;
                                     }
-                                    let _e1030 = phi_1505_;
-                                    let _e1035 = select(select(u32(_e1021), 0u, (_e1021 < 0f)), 4294967295u, (_e1021 > 4294967000f));
-                                    let _e1040 = select(select(u32(_e1030), 0u, (_e1030 < 0f)), 4294967295u, (_e1030 > 4294967000f));
-                                    let _e1043 = bitcast<i32>(_e1006);
-                                    let _e1052 = frame.member[0u].member_1.member_8;
-                                    let _e1056 = (((_e1040 % 4u) * 4u) + (_e1035 % 4u));
-                                    if (_e1052 == 1u) {
+                                    let _e1034 = phi_1510_;
+                                    let _e1039 = select(select(u32(_e1025), 0u, (_e1025 < 0f)), 4294967295u, (_e1025 > 4294967000f));
+                                    let _e1044 = select(select(u32(_e1034), 0u, (_e1034 < 0f)), 4294967295u, (_e1034 > 4294967000f));
+                                    let _e1047 = bitcast<i32>(_e1010);
+                                    let _e1056 = frame.member[0u].member_1.member_8;
+                                    let _e1060 = (((_e1044 % 4u) * 4u) + (_e1039 % 4u));
+                                    if (_e1056 == 1u) {
                                         local = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
-                                        let _e1058 = (_e1056 < 16u);
-                                        if _e1058 {
+                                        let _e1062 = (_e1060 < 16u);
+                                        if _e1062 {
                                         } else {
-                                            phi_2174_ = true;
+                                            phi_2189_ = true;
                                             break;
                                         }
-                                        let _e1061 = local[_e1056][0u];
+                                        let _e1065 = local[_e1060][0u];
                                         local_1 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
-                                        if _e1058 {
+                                        if _e1062 {
                                         } else {
-                                            phi_2174_ = true;
+                                            phi_2189_ = true;
                                             break;
                                         }
-                                        let _e1064 = local_1[_e1056][1u];
-                                        phi_1579_ = vec2<f32>(_e1061, _e1064);
+                                        let _e1068 = local_1[_e1060][1u];
+                                        phi_1584_ = vec2<f32>(_e1065, _e1068);
                                     } else {
-                                        if (_e1052 == 2u) {
+                                        if (_e1056 == 2u) {
                                             local_2 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
-                                            let _e1067 = (_e1056 < 16u);
-                                            if _e1067 {
+                                            let _e1071 = (_e1060 < 16u);
+                                            if _e1071 {
                                             } else {
-                                                phi_2174_ = true;
+                                                phi_2189_ = true;
                                                 break;
                                             }
-                                            let _e1070 = local_2[_e1056][0u];
+                                            let _e1074 = local_2[_e1060][0u];
                                             local_3 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
-                                            if _e1067 {
+                                            if _e1071 {
                                             } else {
-                                                phi_2174_ = true;
+                                                phi_2189_ = true;
                                                 break;
                                             }
-                                            let _e1073 = local_3[_e1056][1u];
-                                            phi_1578_ = vec2<f32>(_e1070, _e1073);
+                                            let _e1077 = local_3[_e1060][1u];
+                                            phi_1583_ = vec2<f32>(_e1074, _e1077);
                                         } else {
-                                            phi_1578_ = vec2<f32>(0.5f, 0.5f);
+                                            phi_1583_ = vec2<f32>(0.5f, 0.5f);
                                         }
-                                        let _e1076 = phi_1578_;
-                                        phi_1579_ = _e1076;
+                                        let _e1080 = phi_1583_;
+                                        phi_1584_ = _e1080;
                                     }
-                                    let _e1078 = phi_1579_;
-                                    let _e1091 = frame.member[0u].member_1.member_6;
-                                    phi_1610_ = 0u;
-                                    phi_1613_ = _e987;
+                                    let _e1082 = phi_1584_;
+                                    let _e1095 = frame.member[0u].member_1.member_6;
+                                    phi_1615_ = 0u;
+                                    phi_1618_ = _e991;
                                     loop {
-                                        let _e1094 = phi_1610_;
-                                        let _e1096 = phi_1613_;
-                                        local_11 = _e1096;
-                                        let _e1097 = (_e1094 < _e1091);
-                                        if _e1097 {
-                                            let _e1098 = ((((_e1040 * _e1009) + _e1035) * _e1091) + _e1094);
-                                            if (_e1098 < arrayLength((&sd_map.member))) {
+                                        let _e1098 = phi_1615_;
+                                        let _e1100 = phi_1618_;
+                                        local_11 = _e1100;
+                                        let _e1101 = (_e1098 < _e1095);
+                                        if _e1101 {
+                                            let _e1102 = ((((_e1044 * _e1013) + _e1039) * _e1095) + _e1098);
+                                            if (_e1102 < arrayLength((&sd_map.member))) {
                                             } else {
-                                                phi_2064_ = true;
+                                                phi_2079_ = true;
                                                 break;
                                             }
-                                            let _e1101 = sd_map.member[_e1098];
-                                            let _e1108 = frame.member[0u].member_1.member.member.member_2;
-                                            let _e1111 = ((_e1101 * (_e342 - _e1108)) + _e1108);
-                                            let _e1121 = (((((2f * ((f32((bitcast<i32>(_e1035) - _e1043)) + _e1078.x) / _e1000)) - 1f) * _e1111) * _e658) - _e560.member_1.member_4.x);
-                                            let _e1122 = ((((1f - (2f * ((f32((bitcast<i32>(_e1040) - _e1043)) + _e1078.y) / _e1001))) * _e1111) * _e669) - _e560.member_1.member_4.y);
-                                            let _e1123 = (-(_e1111) - _e560.member_1.member_4.z);
-                                            let _e1128 = (((_e1121 * _e560.member_1.member_6.x) + (_e1122 * _e560.member_1.member_6.y)) + (_e1123 * _e560.member_1.member_6.z));
-                                            if _e586 {
-                                                let _e1133 = (((_e1121 * _e1121) + (_e1122 * _e1122)) + (_e1123 * _e1123));
-                                                if (_e1133 <= 0f) {
-                                                    phi_1746_ = 0f;
+                                            let _e1105 = sd_map.member[_e1102];
+                                            let _e1112 = frame.member[0u].member_1.member.member.member_2;
+                                            let _e1115 = ((_e1105 * (_e344 - _e1112)) + _e1112);
+                                            let _e1125 = (((((2f * ((f32((bitcast<i32>(_e1039) - _e1047)) + _e1082.x) / _e1004)) - 1f) * _e1115) * _e662) - _e562.member_1.member_4.x);
+                                            let _e1126 = ((((1f - (2f * ((f32((bitcast<i32>(_e1044) - _e1047)) + _e1082.y) / _e1005))) * _e1115) * _e673) - _e562.member_1.member_4.y);
+                                            let _e1127 = (-(_e1115) - _e562.member_1.member_4.z);
+                                            let _e1132 = (((_e1125 * _e562.member_1.member_6.x) + (_e1126 * _e562.member_1.member_6.y)) + (_e1127 * _e562.member_1.member_6.z));
+                                            if _e590 {
+                                                let _e1137 = (((_e1125 * _e1125) + (_e1126 * _e1126)) + (_e1127 * _e1127));
+                                                if (_e1137 <= 0f) {
+                                                    phi_1751_ = 0f;
                                                 } else {
-                                                    let _e1146 = (((((_e560.member_1.member_5.x * _e1121) + (_e560.member_1.member_5.y * _e1122)) + (_e560.member_1.member_5.z * _e1123)) / sqrt(_e1133)) - 0.1f);
-                                                    if (_e1146 > 0f) {
-                                                        phi_1719_ = select(1f, _e1146, (_e1146 < 1f));
+                                                    let _e1150 = (((((_e562.member_1.member_5.x * _e1125) + (_e562.member_1.member_5.y * _e1126)) + (_e562.member_1.member_5.z * _e1127)) / sqrt(_e1137)) - 0.1f);
+                                                    if (_e1150 > 0f) {
+                                                        phi_1724_ = select(1f, _e1150, (_e1150 < 1f));
                                                     } else {
-                                                        phi_1719_ = 0f;
+                                                        phi_1724_ = 0f;
                                                     }
-                                                    let _e1151 = phi_1719_;
-                                                    let _e1154 = (1f - (_e1133 / (_e320 * _e320)));
-                                                    if (_e1154 > 0f) {
-                                                        phi_1732_ = select(1f, _e1154, (_e1154 < 1f));
+                                                    let _e1155 = phi_1724_;
+                                                    let _e1158 = (1f - (_e1137 / (_e322 * _e322)));
+                                                    if (_e1158 > 0f) {
+                                                        phi_1737_ = select(1f, _e1158, (_e1158 < 1f));
                                                     } else {
-                                                        phi_1732_ = 0f;
+                                                        phi_1737_ = 0f;
                                                     }
-                                                    let _e1159 = phi_1732_;
-                                                    let _e1161 = ((_e1151 * _e1159) / _e608);
-                                                    if (_e1161 > 0f) {
-                                                        phi_1745_ = select(1f, _e1161, (_e1161 < 1f));
+                                                    let _e1163 = phi_1737_;
+                                                    let _e1165 = ((_e1155 * _e1163) / _e612);
+                                                    if (_e1165 > 0f) {
+                                                        phi_1750_ = select(1f, _e1165, (_e1165 < 1f));
                                                     } else {
-                                                        phi_1745_ = 0f;
+                                                        phi_1750_ = 0f;
                                                     }
-                                                    let _e1166 = phi_1745_;
-                                                    phi_1746_ = _e1166;
+                                                    let _e1170 = phi_1750_;
+                                                    phi_1751_ = _e1170;
                                                 }
-                                                let _e1168 = phi_1746_;
-                                                phi_1776_ = _e1168;
+                                                let _e1172 = phi_1751_;
+                                                phi_1781_ = _e1172;
                                             } else {
-                                                let _e1174 = frame.member[0u].member_1.member.member_3;
-                                                if (_e624 != _e624) {
-                                                    phi_2014_ = true;
-                                                } else {
-                                                    phi_2014_ = (_e1128 >= _e624);
-                                                }
-                                                let _e1179 = phi_2014_;
-                                                let _e1181 = (_e603 - select(_e624, _e1128, _e1179));
-                                                if (_e1181 != _e1181) {
+                                                let _e1178 = frame.member[0u].member_1.member.member_3;
+                                                if (_e628 != _e628) {
                                                     phi_2029_ = true;
                                                 } else {
-                                                    phi_2029_ = (0f >= _e1181);
+                                                    phi_2029_ = (_e1132 >= _e628);
                                                 }
-                                                let _e1185 = phi_2029_;
-                                                let _e1190 = ((_e1128 - ((1f + _e1174) * _e560.member_1.member_2)) * (1f / _e603));
-                                                if (_e1190 > 0f) {
-                                                    phi_1769_ = select(1f, _e1190, (_e1190 < 1f));
-                                                } else {
-                                                    phi_1769_ = 0f;
-                                                }
-                                                let _e1195 = phi_1769_;
-                                                phi_1776_ = ((select(_e1181, 0f, _e1185) + (_e1195 * (_e603 - _e624))) * (0.5f / _e603));
-                                            }
-                                            let _e1202 = phi_1776_;
-                                            if _e586 {
-                                                if (_e1096 != _e1096) {
+                                                let _e1183 = phi_2029_;
+                                                let _e1185 = (_e607 - select(_e628, _e1132, _e1183));
+                                                if (_e1185 != _e1185) {
                                                     phi_2044_ = true;
                                                 } else {
-                                                    phi_2044_ = (_e1202 >= _e1096);
+                                                    phi_2044_ = (0f >= _e1185);
                                                 }
-                                                let _e1206 = phi_2044_;
-                                                phi_1785_ = select(_e1096, _e1202, _e1206);
-                                            } else {
-                                                if (_e1096 != _e1096) {
+                                                let _e1189 = phi_2044_;
+                                                let _e1194 = ((_e1132 - ((1f + _e1178) * _e562.member_1.member_2)) * (1f / _e607));
+                                                if (_e1194 > 0f) {
+                                                    phi_1774_ = select(1f, _e1194, (_e1194 < 1f));
+                                                } else {
+                                                    phi_1774_ = 0f;
+                                                }
+                                                let _e1199 = phi_1774_;
+                                                phi_1781_ = ((select(_e1185, 0f, _e1189) + (_e1199 * (_e607 - _e628))) * (0.5f / _e607));
+                                            }
+                                            let _e1206 = phi_1781_;
+                                            if _e590 {
+                                                if (_e1100 != _e1100) {
                                                     phi_2059_ = true;
                                                 } else {
-                                                    phi_2059_ = (_e1202 <= _e1096);
+                                                    phi_2059_ = (_e1206 >= _e1100);
                                                 }
-                                                let _e1211 = phi_2059_;
-                                                phi_1785_ = select(_e1096, _e1202, _e1211);
+                                                let _e1210 = phi_2059_;
+                                                phi_1790_ = select(_e1100, _e1206, _e1210);
+                                            } else {
+                                                if (_e1100 != _e1100) {
+                                                    phi_2074_ = true;
+                                                } else {
+                                                    phi_2074_ = (_e1206 <= _e1100);
+                                                }
+                                                let _e1215 = phi_2074_;
+                                                phi_1790_ = select(_e1100, _e1206, _e1215);
                                             }
-                                            let _e1214 = phi_1785_;
-                                            phi_1611_ = (_e1094 + 1u);
-                                            phi_1614_ = _e1214;
+                                            let _e1218 = phi_1790_;
+                                            phi_1616_ = (_e1098 + 1u);
+                                            phi_1619_ = _e1218;
                                         } else {
-                                            phi_1611_ = u32();
-                                            phi_1614_ = f32();
+                                            phi_1616_ = u32();
+                                            phi_1619_ = f32();
                                         }
-                                        let _e1217 = phi_1611_;
-                                        let _e1219 = phi_1614_;
+                                        let _e1221 = phi_1616_;
+                                        let _e1223 = phi_1619_;
                                         continue;
                                         continuing {
-                                            phi_1610_ = _e1217;
-                                            phi_1613_ = _e1219;
-                                            phi_2064_ = _e566;
-                                            break if !(_e1097);
+                                            phi_1615_ = _e1221;
+                                            phi_1618_ = _e1223;
+                                            phi_2079_ = _e568;
+                                            break if !(_e1101);
                                         }
                                     }
-                                    let _e1222 = phi_2064_;
-                                    phi_2174_ = _e1222;
-                                    if _e1222 {
+                                    let _e1226 = phi_2079_;
+                                    phi_2189_ = _e1226;
+                                    if _e1226 {
                                         break;
                                     }
-                                    let _e1224 = local_11;
-                                    phi_2176_ = _e1222;
-                                    phi_1788_ = ((_e570 - _e983) + _e1224);
+                                    let _e1228 = local_11;
+                                    phi_2191_ = _e1226;
+                                    phi_1795_ = ((_e574 - _e987) + _e1228);
                                 }
-                                let _e1227 = phi_2176_;
-                                let _e1229 = phi_1788_;
-                                phi_2175_ = _e1227;
-                                phi_757_ = (_e568 + 1u);
-                                phi_760_ = _e1229;
+                                let _e1231 = phi_2191_;
+                                let _e1233 = phi_1795_;
+                                phi_2190_ = _e1231;
+                                phi_760_ = (_e570 + 1u);
+                                phi_765_ = _e1233;
                             } else {
-                                phi_2175_ = _e566;
-                                phi_757_ = u32();
-                                phi_760_ = f32();
+                                phi_2190_ = _e568;
+                                phi_760_ = u32();
+                                phi_765_ = f32();
                             }
-                            let _e1232 = phi_2175_;
-                            let _e1234 = phi_757_;
-                            let _e1236 = phi_760_;
+                            let _e1236 = phi_2190_;
+                            let _e1238 = phi_760_;
+                            let _e1240 = phi_765_;
                             continue;
                             continuing {
-                                phi_2099_ = _e1232;
-                                phi_756_ = _e1234;
-                                phi_759_ = _e1236;
-                                phi_2174_ = _e1232;
-                                break if !(_e571);
+                                phi_2114_ = _e1236;
+                                phi_759_ = _e1238;
+                                phi_762_ = select(u32(), _e572, _e575);
+                                phi_764_ = _e1240;
+                                phi_2189_ = _e1236;
+                                break if !(_e575);
                             }
                         }
-                        let _e1239 = phi_2174_;
-                        if _e1239 {
+                        let _e1244 = phi_2189_;
+                        if _e1244 {
                             break;
                         }
-                        let _e1244 = frame.member[0u].member_1.member_10;
-                        let _e1245 = (_e1244 == 1u);
-                        let _e1249 = local_12;
-                        let _e1251 = (_e309 + ((select(2f, 1f, _e1245) * 0.125f) * _e1249));
-                        if _e1245 {
-                            phi_1809_ = (1f - (2f * _e1251));
+                        let _e1249 = frame.member[0u].member_1.member_10;
+                        let _e1250 = (_e1249 == 1u);
+                        let _e1254 = local_12;
+                        let _e1256 = (_e310 + ((select(2f, 1f, _e1250) * 0.125f) * _e1254));
+                        if _e1250 {
+                            phi_1816_ = (1f - (2f * _e1256));
                         } else {
-                            phi_1809_ = _e1251;
+                            phi_1816_ = _e1256;
                         }
-                        let _e1255 = phi_1809_;
-                        if (_e1255 > 0f) {
-                            phi_1819_ = select(1f, _e1255, (_e1255 < 1f));
+                        let _e1260 = phi_1816_;
+                        if (_e1260 > 0f) {
+                            phi_1826_ = select(1f, _e1260, (_e1260 < 1f));
                         } else {
-                            phi_1819_ = 0f;
+                            phi_1826_ = 0f;
                         }
-                        let _e1260 = phi_1819_;
-                        let _e1266 = frame.member[0u].member_1.member.member_2;
-                        phi_1823_ = pow(_e1260, _e1266);
+                        let _e1265 = phi_1826_;
+                        let _e1271 = frame.member[0u].member_1.member.member_2;
+                        let _e1274 = local_13;
+                        phi_1831_ = type_41(pow(_e1265, _e1271), _e1274);
                     } else {
-                        phi_1823_ = _e309;
+                        phi_1831_ = type_41();
                     }
-                    let _e1269 = phi_1823_;
-                    phi_1824_ = _e1269;
+                    let _e1277 = phi_1831_;
+                    phi_1833_ = _e1277;
+                    phi_1834_ = select(true, false, _e565);
                 }
-                let _e1271 = phi_1824_;
-                if _e306 {
+                let _e1280 = phi_1833_;
+                let _e1282 = phi_1834_;
+                if _e1282 {
+                    phi_1838_ = type_41(_e310, 0u);
+                } else {
+                    phi_1838_ = _e1280;
+                }
+                let _e1284 = phi_1838_;
+                if _e307 {
                 } else {
                     break;
                 }
-                ao.member[_e305] = _e1271;
+                ao.member[_e306] = _e1284.member;
             }
             break;
         }

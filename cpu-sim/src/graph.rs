@@ -9,7 +9,7 @@ use crate::gbuffer::Surfaces;
 use crate::svao::{HitOrder, Pass1, SdMap};
 use crate::{Progress, SceneBvh};
 use aokit_shaders::glam::Vec2;
-use aokit_shaders::graph::{Access, Graph, Init, Lifetime, Pass, inputs};
+use aokit_shaders::graph::{Access, Graph, Init, Lifetime, Pass, RAY_COUNT, inputs, ray_count_of};
 use std::collections::HashMap;
 use std::time::Instant;
 
@@ -222,6 +222,12 @@ impl CpuExecutor {
                 .collect();
             let mut io = PassIo { pass, reads, writes, inputs, rays: 0 };
             run(&mut io);
+            // The ray counter, as the GPU kernels keep it (`common::atomics::count_rays`).
+            if let Some(b) = pass.bindings.iter().find(|b| b.resource == RAY_COUNT) {
+                let words = io.take(b.slot);
+                let total = ray_count_of(words) + io.rays;
+                words[..2].copy_from_slice(&[total as u32, (total >> 32) as u32]);
+            }
             Ok(io.rays)
         })();
         for (name, v) in taken {
@@ -377,16 +383,17 @@ mod kernels {
             depth: io.f32(2).to_vec(),
             normals: io.words(3).to_vec(),
         };
-        let ao = crate::run_ground_truth(scene.bvh, scene.surfaces, &frame, &gbuffer, io.inputs.progress);
+        let (ao, rays) = crate::run_ground_truth(scene.bvh, scene.surfaces, &frame, &gbuffer, io.inputs.progress);
         io.take_f32(4).copy_from_slice(&ao);
-        let inner = size - 2 * frame.camera.view.guard;
-        io.rays += inner.x as u64 * inner.y as u64 * frame.params.samples as u64;
+        io.rays += rays;
     }
 
     pub fn hybrid(io: &mut PassIo) {
         let frame: HybridFrame = io.record(0);
         let scene = io.scene();
-        let (ao, terms, edges) = crate::hybrid::run_hybrid(scene.bvh, scene.surfaces, &frame, io.f32(2), io.words(3));
+        let (ao, terms, edges, rays) =
+            crate::hybrid::run_hybrid(scene.bvh, scene.surfaces, &frame, io.f32(2), io.words(3));
+        io.rays += rays;
         io.take_f32(4).copy_from_slice(&ao);
         io.take(9).copy_from_slice(&terms);
         io.take(10).copy_from_slice(&edges);

@@ -7,6 +7,7 @@ use aokit_shaders::common::gbuffer_read::GBufferSlices;
 use aokit_shaders::glam::{Vec3, uvec2};
 use aokit_shaders::groundtruth::{GroundTruthFrame, OcclusionQuery, ground_truth_pixel};
 use rayon::prelude::*;
+use std::sync::atomic::{AtomicU64, Ordering};
 
 /// BVH occlusion rays for the shared ground-truth kernel.
 pub(crate) struct BvhOcclusion<'a> {
@@ -20,29 +21,35 @@ impl OcclusionQuery for BvhOcclusion<'_> {
     }
 }
 
-/// Ground-truth AO for every inner pixel of the G-buffer (full-target buffer, guard band = 1).
+/// Ground-truth AO for every inner pixel of the G-buffer (full-target buffer, guard band = 1)
+/// and the rays traced (background pixels trace none).
 pub fn run_ground_truth(
     bvh: &SceneBvh,
     surfaces: &Surfaces,
     frame: &GroundTruthFrame,
     gbuffer: &GBufferImage,
     progress: Progress,
-) -> Vec<f32> {
+) -> (Vec<f32>, u64) {
     let view = &frame.camera.view;
     let size = view.size();
     let guard = view.guard;
     let slices = GBufferSlices { depth: &gbuffer.depth, normals: &gbuffer.normals, width: size.x };
     let mut out = vec![1.0f32; (size.x * size.y) as usize];
+    let total = AtomicU64::new(0);
     out.par_chunks_mut(size.x as usize).enumerate().for_each(|(y, row)| {
         let y = y as u32;
         if y < guard || y + guard >= size.y {
             return;
         }
         let mut rays = BvhOcclusion { bvh, surfaces };
+        let mut traced = 0;
         for x in guard..size.x - guard {
-            row[x as usize] = ground_truth_pixel(&slices, frame, uvec2(x, y), &mut rays);
+            let out = ground_truth_pixel(&slices, frame, uvec2(x, y), &mut rays);
+            row[x as usize] = out.ao;
+            traced += out.rays as u64;
         }
+        total.fetch_add(traced, Ordering::Relaxed);
         progress(1);
     });
-    out
+    (out, total.into_inner())
 }

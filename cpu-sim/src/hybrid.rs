@@ -8,14 +8,15 @@ use aokit_shaders::glam::uvec2;
 use aokit_shaders::hybrid::{HybridFrame, hybrid_pixel};
 use rayon::prelude::*;
 
-/// Blended visibility, denoiser terms and packed edges per pixel of the full target.
+/// Blended visibility, denoiser terms and packed edges per pixel of the full target, and the
+/// world rays traced.
 pub fn run_hybrid(
     bvh: &SceneBvh,
     surfaces: &Surfaces,
     frame: &HybridFrame,
     depth: &[f32],
     normals: &[u32],
-) -> (Vec<f32>, Vec<u32>, Vec<u32>) {
+) -> (Vec<f32>, Vec<u32>, Vec<u32>, u64) {
     let size = frame.camera.view.size();
     let gbuffer = GBufferSlices { depth, normals, width: size.x };
     let pixels: Vec<_> = (0..size.y)
@@ -26,5 +27,6 @@ pub fn run_hybrid(
     let ao = pixels.iter().map(|o| o.ao).collect();
     let terms = pixels.iter().map(|o| o.term).collect();
     let edges = pixels.iter().map(|o| o.edges).collect();
-    (ao, terms, edges)
+    let rays = pixels.iter().map(|o| o.rays as u64).sum();
+    (ao, terms, edges, rays)
 }

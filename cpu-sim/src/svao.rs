@@ -12,7 +12,7 @@ use aokit_shaders::glam::{UVec2, uvec2};
 use aokit_shaders::rastersd::raster_fragment;
 use aokit_shaders::raysd::{SdMapRefine, SdPayload, reservoir_any_hit, sd_ray, store_layers};
 use aokit_shaders::raysvao::{ACCEPT, ACCEPT_AND_END, SampleRay, SampleTracer, refine_by_ray, sample_any_hit};
-use aokit_shaders::svao::{Refine, SvaoFrame, SvaoParams, pass1_pixel, pass2_pixel};
+use aokit_shaders::svao::{Refine, Refined, SvaoFrame, SvaoParams, pass1_pixel, pass2_pixel};
 use aokit_shaders::vao::kernel::{LineSample, PixelFrame};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU32, AtomicU64, Ordering};
@@ -183,7 +183,7 @@ fn run_pass2<R: Refine>(
         for x in g..size.x - g {
             let p = uvec2(x, y);
             let i = view.index(p);
-            row[x as usize] = pass2_pixel(&gbuffer, depth2, params, p, pass1.ao[i], pass1.mask[i], &mut refine);
+            row[x as usize] = pass2_pixel(&gbuffer, depth2, params, p, pass1.ao[i], pass1.mask[i], &mut refine).ao;
         }
         progress(1);
     });
@@ -232,7 +232,7 @@ impl SampleTracer for BvhRefine<'_> {
 }
 
 impl Refine for BvhRefine<'_> {
-    fn refine(&mut self, pixel: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> f32 {
+    fn refine(&mut self, pixel: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> Refined {
         let frame = self.frame;
         refine_by_ray(&frame.camera, &frame.params, pixel, s, v, z_primary, self)
     }
@@ -289,40 +289,6 @@ pub fn sd_ray_stats(frame: &SvaoFrame, depth: &[f32], normals: &[u32], ray_min: 
             (rays, length)
         })
         .reduce(|| (0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
-}
-
-/// Rays Ray-SVAO traces for these pass-1 masks (flagged samples with a non-empty interval), by
-/// the same setup as [`run_raysvao_pass2`]; for reports of GPU runs.
-pub fn count_sample_rays(frame: &SvaoFrame, depth: &[f32], normals: &[u32], depth2: &[f32], mask: &[u32]) -> u64 {
-    struct Count(u64);
-    impl SampleTracer for Count {
-        fn trace(&mut self, _: &mut SampleRay) {
-            self.0 += 1;
-        }
-    }
-    struct Counter<'a>(&'a SvaoFrame, Count);
-    impl Refine for Counter<'_> {
-        fn refine(&mut self, pixel: &PixelFrame, s: &LineSample, v: f32, z: f32) -> f32 {
-            let frame = self.0;
-            refine_by_ray(&frame.camera, &frame.params, pixel, s, v, z, &mut self.1)
-        }
-    }
-    let params = &frame.params;
-    let view = &params.vao.view;
-    let size = view.size();
-    let g = view.guard;
-    let gbuffer = GBufferSlices { depth, normals, width: size.x };
-    (g..size.y - g)
-        .into_par_iter()
-        .map(|y| {
-            let mut counter = Counter(frame, Count(0));
-            for x in g..size.x - g {
-                let p = uvec2(x, y);
-                pass2_pixel(&gbuffer, depth2, params, p, 0.0, mask[view.index(p)], &mut counter);
-            }
-            counter.1.0
-        })
-        .sum()
 }
 
 /// The raster SD map on the CPU (spec §8): for every requested SD texel, every surface along the

@@ -476,6 +476,7 @@ static void graph_raysd(Graph *g, const Frame *f, const Scene *s, aokit_SvaoFram
     int ray_min = add_resource(g, "ray_min", sd_texels, 0x7f7fffffu);
     int ray_max = add_resource(g, "ray_max", sd_texels, 0);
     int sd_map = add_resource(g, "sd_map", sd_texels * SD_LAYERS, ONE_F32);
+    int ray_count = add_resource(g, "ray_count", 2, 0); /* rays traced: u64 as (low, high) */
 
     Pass *p = add_pass(g, MODULE(SVAO_PASS1), f->w, f->h, NULL, 0);
     bind(p, AOKIT_SVAO_PASS1_BINDING_FRAME, frame);
@@ -501,6 +502,7 @@ static void graph_raysd(Graph *g, const Frame *f, const Scene *s, aokit_SvaoFram
     bind(p, AOKIT_RAYSD_RQ_BINDING_MATERIALS, materials);
     bind(p, AOKIT_RAYSD_RQ_BINDING_MASK_HEADERS, headers);
     bind(p, AOKIT_RAYSD_RQ_BINDING_MASK_TEXELS, texels_);
+    bind(p, AOKIT_RAYSD_RQ_BINDING_RAY_COUNT, ray_count);
 
     p = add_pass(g, MODULE(RAYSD_PASS2), f->w, f->h, NULL, 0);
     bind(p, AOKIT_RAYSD_PASS2_BINDING_FRAME, frame);

@@ -514,6 +514,27 @@ pub fn target_u32(name: &'static str, value: u32, doc: &'static str) -> Resource
     Resource { name, elem: Elem::U32, size: Size::TARGET, init: Init::Fill(value), lifetime: Lifetime::PerFrame, doc }
 }
 
+/// The resource every ray-traced pass adds the rays it traced to.
+pub const RAY_COUNT: &str = "ray_count";
+
+/// [`RAY_COUNT`]: a 64-bit count as two `u32` words (low, high), zero at the start of each
+/// frame; the kernels add with `crate::common::atomics::count_rays`, the executors report it.
+pub fn ray_counter() -> Resource {
+    Resource {
+        name: RAY_COUNT,
+        elem: Elem::U32,
+        size: Size::Words(2),
+        init: Init::Fill(0),
+        lifetime: Lifetime::PerFrame,
+        doc: "rays traced this frame, counted by the kernels that trace them: u64 as (low, high) u32 words",
+    }
+}
+
+/// The rays a frame's [`RAY_COUNT`] words hold.
+pub fn ray_count_of(words: &[u32]) -> u64 {
+    words.first().copied().unwrap_or(0) as u64 | (words.get(1).copied().unwrap_or(0) as u64) << 32
+}
+
 /// A per-frame parameter record (or table) `value` as a one-element storage buffer.
 pub fn record<T: bytemuck::Pod>(name: &'static str, values: &[T], doc: &'static str) -> Resource {
     let words: Vec<u32> = bytemuck::cast_slice::<T, u8>(values)

@@ -226,9 +226,6 @@ pub struct Declaration<S: 'static> {
     pub graph: fn(&S, &FrameDesc) -> Result<Graph, String>,
     /// The separation of the depth-peeled second layer the graph reads, if it reads one.
     pub second_layer: fn(&S) -> Option<f32>,
-    /// World-space rays a frame traces where the settings fix the count (the stenciled family
-    /// counts its rays from its buffers).
-    pub rays: fn(&S, &FrameDesc) -> Option<u64>,
     /// How every field of the constants structs its passes use (push constants, records bound as
     /// storage buffers, and the structs they contain) is computed from the settings and the
     /// camera: the manifest's `constants`. Declared beside the code that fills the structs,
@@ -308,7 +305,6 @@ pub trait Configured: Send + Sync + Debug {
     fn validate(&self) -> Result<(), String>;
     fn graph(&self, frame: &FrameDesc) -> Result<Graph, String>;
     fn second_layer(&self) -> Option<f32>;
-    fn rays(&self, frame: &FrameDesc) -> Option<u64>;
     /// The settings struct, for callers that know its type.
     fn settings(&self) -> &dyn Any;
     fn clone_box(&self) -> Box<dyn Configured>;
@@ -457,10 +453,6 @@ impl<S: Settings> Configured for Instance<S> {
         (self.declaration.second_layer)(&self.settings)
     }
 
-    fn rays(&self, frame: &FrameDesc) -> Option<u64> {
-        (self.declaration.rays)(&self.settings, frame)
-    }
-
     fn settings(&self) -> &dyn Any {
         &self.settings
     }
@@ -472,10 +464,5 @@ impl<S: Settings> Configured for Instance<S> {
 
 /// For declarations without a second layer.
 pub fn single_layer<S>(_: &S) -> Option<f32> {
-    None
-}
-
-/// For declarations whose ray count is not fixed by their settings.
-pub fn rays_counted<S>(_: &S, _: &FrameDesc) -> Option<u64> {
     None
 }

@@ -135,6 +135,14 @@ pub fn surface_point<G: GBuffer>(gbuffer: &G, camera: &Camera, p: UVec2, radius:
     SurfacePoint { background: false, origin: camera.eye() + dir * t + n * (1e-4 * (t + radius)), normal: n }
 }
 
+/// One pixel's ground truth and the rays it traced.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct GroundTruthPixel {
+    pub ao: f32,
+    /// Rays traced: `samples`, 0 on the background.
+    pub rays: u32,
+}
+
 /// Ground-truth AO of pixel `p`: rays from the G-buffer point, offset along its camera-facing
 /// face normal by `1e-4·(t + R)`, `samples` directions from [`sample_2d`], visible fraction
 /// through [`finalize`]. Background pixels are 1.
@@ -144,11 +152,11 @@ pub fn ground_truth_pixel<G: GBuffer, Q: OcclusionQuery>(
     frame: &GroundTruthFrame,
     p: UVec2,
     rays: &mut Q,
-) -> f32 {
+) -> GroundTruthPixel {
     let params = &frame.params;
     let surface = surface_point(gbuffer, &frame.camera, p, params.radius);
     if surface.background {
-        return 1.0;
+        return GroundTruthPixel { ao: 1.0, rays: 0 };
     }
     let (origin, n) = (surface.origin, surface.normal);
     let uniform = params.uniform != 0;
@@ -161,5 +169,5 @@ pub fn ground_truth_pixel<G: GBuffer, Q: OcclusionQuery>(
         }
         k += 1;
     }
-    finalize(visible, params)
+    GroundTruthPixel { ao: finalize(visible, params), rays: k }
 }

@@ -5,6 +5,7 @@
 use super::{GroundTruthFrame, OcclusionQuery, ground_truth_pixel};
 use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
 use crate::common::any_hit::query_candidates;
+use crate::common::atomics::count_rays;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2, Vec3};
 use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
@@ -35,6 +36,7 @@ pub fn groundtruth_rq(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] materials: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 7)] mask_headers: &[AlphaMaskHeader],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_texels: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mut ray_count: &mut [u32],
 ) {
     let frame = &frame[0];
     let view = &frame.camera.view;
@@ -45,5 +47,7 @@ pub fn groundtruth_rq(
     let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
     let alpha = AlphaTables { uvs, materials, headers: mask_headers, texels: mask_texels };
     let mut rays = QueriedOcclusion { tlas, alpha };
-    ao[view.index(p)] = ground_truth_pixel(&gbuffer, frame, p, &mut rays);
+    let out = ground_truth_pixel(&gbuffer, frame, p, &mut rays);
+    ao[view.index(p)] = out.ao;
+    count_rays(&mut ray_count, out.rays);
 }

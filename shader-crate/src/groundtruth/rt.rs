@@ -4,6 +4,7 @@
 use super::{GroundTruthFrame, OcclusionQuery, ground_truth_pixel};
 use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
 use crate::common::any_hit::{CandidateHit, IGNORE};
+use crate::common::atomics::count_rays;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2, Vec3};
 use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
@@ -45,6 +46,7 @@ pub fn groundtruth_rgen(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] depth: &[f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] normals: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ao: &mut [f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mut ray_count: &mut [u32],
     #[spirv(ray_payload)] payload: &mut u32,
 ) {
     let frame = &frame[0];
@@ -55,7 +57,9 @@ pub fn groundtruth_rgen(
     }
     let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
     let mut rays = TracedOcclusion { tlas, payload };
-    ao[view.index(p)] = ground_truth_pixel(&gbuffer, frame, p, &mut rays);
+    let out = ground_truth_pixel(&gbuffer, frame, p, &mut rays);
+    ao[view.index(p)] = out.ao;
+    count_rays(&mut ray_count, out.rays);
 }
 
 #[spirv(miss(entry_point_name = "groundtruth_miss"))]

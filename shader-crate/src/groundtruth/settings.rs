@@ -2,7 +2,10 @@
 //! ray-generation pass over the inner image.
 
 use super::{GroundTruthFrame, GroundTruthParams};
-use crate::graph::{Access, Binding, Extent, FrameDesc, Graph, Pass, PassKind, inputs, record, slots, target_f32};
+use crate::graph::{
+    Access, Binding, Extent, FrameDesc, Graph, Pass, PassKind, RAY_COUNT, inputs, ray_counter, record, slots,
+    target_f32,
+};
 use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
 /// Ground-truth settings [defaults].
@@ -45,7 +48,6 @@ pub static GROUNDTRUTH: Declaration<GroundTruthSettings> = Declaration {
     defaults: GroundTruthSettings::default,
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
-    rays: |s, frame| Some(s.rays(frame)),
     constants: CONSTANTS,
 };
 
@@ -81,15 +83,11 @@ impl GroundTruthSettings {
     }
 
     /// Rays per frame over the inner image.
-    pub fn rays(&self, frame: &FrameDesc) -> u64 {
-        let inner = frame.inner();
-        inner.x as u64 * inner.y as u64 * self.spp as u64
-    }
-
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let resources = vec![
             record("groundtruth_frame", std::slice::from_ref(&self.frame(frame)), "camera + GroundTruthParams"),
             target_f32("ao", 1.0, "ray-traced AO (spec §5), 1 = unoccluded"),
+            ray_counter(),
         ];
         let mut bindings = slots(&[
             ("groundtruth_frame", Access::Read),
@@ -99,6 +97,7 @@ impl GroundTruthSettings {
             ("ao", Access::Write),
         ]);
         bindings.extend(alpha_bindings(5));
+        bindings.push(Binding { slot: 9, resource: RAY_COUNT, access: Access::ReadWrite });
         let passes = vec![Pass {
             label: "groundtruth",
             entry: "groundtruth_rgen",

@@ -6,7 +6,7 @@ use super::{GtaoParams, MIP_LEVELS};
 use crate::graph::{
     Access, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, inputs, target_f32, target_u32,
 };
-use crate::technique::{Constant, Declaration, Setting, Settings, rays_counted, single_layer};
+use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
 /// XeGTAO quality presets (spec gtao-raymarch-hybrid §2.2): slices × steps per side; any other
 /// pair is a custom quality.
@@ -152,7 +152,6 @@ pub static GTAO: Declaration<GtaoSettings> = Declaration {
     defaults: GtaoSettings::default,
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
-    rays: rays_counted,
     constants: CONSTANTS,
 };
 

@@ -73,6 +73,8 @@ pub struct HybridPixel {
     pub ao: f32,
     pub term: u32,
     pub edges: u32,
+    /// World rays traced (0 on the background).
+    pub rays: u32,
 }
 
 /// Hybrid AO of pixel `p` (spec §4.2). Ray slot k uses `u_k = frac(ξ + k·(½, ½))`; world rays
@@ -94,14 +96,14 @@ pub fn hybrid_pixel<Q: OcclusionQuery>(
     let z = gbuffer.depth[(p.y * gbuffer.width + p.x) as usize];
     let surface = surface_point(gbuffer, camera, p, params.radius);
     if surface.background || !is_valid_depth(z, view.far) {
-        return HybridPixel { ao: 1.0, term: store_term(1.0), edges };
+        return HybridPixel { ao: 1.0, term: store_term(1.0), edges, rays: 0 };
     }
     let pos = view_pos(view, view.pixel_uv(p), z);
     let n = facing_normal(gbuffer.normals, gbuffer.width, p, pos);
     let xi = spatio_temporal_noise(p, params.noise_frame);
     let index = (hilbert_index(p) + 288 * (params.noise_frame % 64)) as f32;
     let jitter = frac(0.5 + index * 0.618_034);
-    let (mut world, mut screen) = (0.0, 0.0);
+    let (mut world, mut screen, mut traced) = (0.0, 0.0, 0);
     let total = params.world_rays + params.screen_rays;
     let mut k = 0;
     while k < total {
@@ -110,6 +112,7 @@ pub fn hybrid_pixel<Q: OcclusionQuery>(
         if k < params.world_rays {
             // XeGTAO space (+z forward) → right-handed view → world.
             let w = camera.view_to_world.transform_vector3(vec3(dir.x, dir.y, -dir.z)).normalize();
+            traced += 1;
             if !rays.occluded(surface.origin, w, params.radius) {
                 world += 1.0;
             }
@@ -125,5 +128,5 @@ pub fn hybrid_pixel<Q: OcclusionQuery>(
     let mean = |sum: f32, count: u32| if count > 0 { sum / count as f32 } else { 0.0 };
     let ao = (1.0 - params.world_weight) * mean(screen, params.screen_rays)
         + params.world_weight * mean(world, params.world_rays);
-    HybridPixel { ao, term: store_term(ao), edges }
+    HybridPixel { ao, term: store_term(ao), edges, rays: traced }
 }

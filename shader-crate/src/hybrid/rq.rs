@@ -4,6 +4,7 @@
 
 use super::{HybridFrame, hybrid_pixel};
 use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
+use crate::common::atomics::count_rays;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2};
 use crate::groundtruth::rq::QueriedOcclusion;
@@ -24,6 +25,7 @@ pub fn hybrid_rq(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_texels: &[f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] terms: &mut [u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] edges: &mut [u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)] mut ray_count: &mut [u32],
 ) {
     let frame = &frame[0];
     let view = &frame.camera.view;
@@ -36,6 +38,7 @@ pub fn hybrid_rq(
     let alpha = AlphaTables { uvs, materials, headers: mask_headers, texels: mask_texels };
     let mut rays = QueriedOcclusion { tlas, alpha };
     let out = hybrid_pixel(&gbuffer, frame, p, &mut rays);
+    count_rays(&mut ray_count, out.rays);
     let i = (p.y * size.x + p.x) as usize;
     ao[i] = out.ao;
     terms[i] = out.term;

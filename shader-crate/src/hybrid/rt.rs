@@ -3,6 +3,7 @@
 //! truth's miss and any-hit (alpha test) shaders, so the alpha buffers sit at their bindings 5–8.
 
 use super::{HybridFrame, hybrid_pixel};
+use crate::common::atomics::count_rays;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::UVec3;
 use crate::groundtruth::rt::TracedOcclusion;
@@ -19,6 +20,7 @@ pub fn hybrid_rgen(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ao: &mut [f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] terms: &mut [u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] edges: &mut [u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)] mut ray_count: &mut [u32],
     #[spirv(ray_payload)] payload: &mut u32,
 ) {
     let frame = &frame[0];
@@ -31,6 +33,7 @@ pub fn hybrid_rgen(
     let gbuffer = GBufferSlices { depth, normals, width: size.x };
     let mut rays = TracedOcclusion { tlas, payload };
     let out = hybrid_pixel(&gbuffer, frame, p, &mut rays);
+    count_rays(&mut ray_count, out.rays);
     let i = (p.y * size.x + p.x) as usize;
     ao[i] = out.ao;
     terms[i] = out.term;

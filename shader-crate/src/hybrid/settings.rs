@@ -4,7 +4,8 @@
 
 use super::{HybridFrame, HybridParams};
 use crate::graph::{
-    Access, Binding, Extent, FrameDesc, Graph, Pass, PassKind, inputs, record, slots, target_f32, target_u32,
+    Access, Binding, Extent, FrameDesc, Graph, Pass, PassKind, RAY_COUNT, inputs, ray_counter, record, slots,
+    target_f32, target_u32,
 };
 use crate::gtao::settings::with_denoiser;
 use crate::raymarch::settings::DEPTH_BIAS;
@@ -99,7 +100,6 @@ pub static HYBRID: Declaration<HybridSettings> = Declaration {
     defaults: HybridSettings::default,
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
-    rays: |s, frame| Some(s.rays(frame)),
     constants: CONSTANTS,
 };
 
@@ -152,12 +152,6 @@ impl HybridSettings {
         }
     }
 
-    /// Rays per frame over the inner image.
-    pub fn rays(&self, frame: &FrameDesc) -> u64 {
-        let inner = frame.inner();
-        (self.screen_rays + self.world_rays) as u64 * inner.x as u64 * inner.y as u64
-    }
-
     /// Rays → [denoise].
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let resources = vec![
@@ -165,6 +159,7 @@ impl HybridSettings {
             target_f32("ao", 1.0, "blended screen/world visibility (spec §4.2 step 5), 1 = unoccluded"),
             target_u32("ao_terms", 0, "the AO as the denoiser's 0–255 terms"),
             target_u32("ao_edges", 0, "packed depth edges for the denoiser"),
+            ray_counter(),
         ];
         let mut bindings = slots(&[
             ("hybrid_frame", Access::Read),
@@ -176,6 +171,7 @@ impl HybridSettings {
         bindings.extend(crate::groundtruth::settings::alpha_bindings(5));
         bindings.push(Binding { slot: 9, resource: "ao_terms", access: Access::Write });
         bindings.push(Binding { slot: 10, resource: "ao_edges", access: Access::Write });
+        bindings.push(Binding { slot: 11, resource: RAY_COUNT, access: Access::ReadWrite });
         let passes = vec![Pass {
             label: "hybrid_rays",
             entry: "hybrid_rgen",

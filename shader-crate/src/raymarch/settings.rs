@@ -4,7 +4,7 @@
 use super::{Contribution, MAX_DIRECTIONS, RaymarchParams};
 use crate::graph::{Access, Extent, FrameDesc, Graph, Pass, inputs, record, target_f32, target_u32};
 use crate::gtao::settings::with_denoiser;
-use crate::technique::{Constant, Declaration, Setting, Settings, rays_counted, single_layer};
+use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
 /// Relative depth bias κ (spec §3.2).
 pub const DEPTH_BIAS: f32 = 0.0008;
@@ -63,7 +63,6 @@ pub static RAYMARCH: Declaration<RaymarchSettings> = Declaration {
     defaults: RaymarchSettings::default,
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
-    rays: rays_counted,
     constants: CONSTANTS,
 };
 

@@ -19,7 +19,7 @@ use crate::common::math::{is_valid_depth, sat};
 use crate::common::tables::sd_jitter;
 use crate::glam::{IVec2, UVec2, Vec2, Vec3};
 use crate::svao::pass1::{combine, depth_point_value};
-use crate::svao::{Refine, SvaoFrame, SvaoParams, sd_pixel};
+use crate::svao::{Refine, Refined, SvaoFrame, SvaoParams, sd_pixel};
 use crate::vao::kernel::{LineSample, PixelFrame};
 
 /// Most layers an SD map holds (spec §2: N ∈ {1, 2, 4, 8}).
@@ -220,7 +220,7 @@ pub struct SdMapRefine<'a> {
 
 impl Refine for SdMapRefine<'_> {
     #[inline]
-    fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, _z_primary: f32) -> f32 {
+    fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, _z_primary: f32) -> Refined {
         let params = self.params;
         let view = &params.vao.view;
         let q = sd_pixel(s.uv, params);
@@ -234,7 +234,7 @@ impl Refine for SdMapRefine<'_> {
             v = combine(params, v, value);
             k += 1;
         }
-        v
+        Refined { v, rays: 0 }
     }
 }
 
@@ -275,5 +275,5 @@ pub fn raysd_pass2(
     let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
     let i = view.index(p);
     let mut source = SdMapRefine { map: sd_map, params };
-    ao[i] = pass2_pixel(&gbuffer, depth2, params, p, ao[i], mask[i], &mut source);
+    ao[i] = pass2_pixel(&gbuffer, depth2, params, p, ao[i], mask[i], &mut source).ao;
 }

@@ -6,6 +6,7 @@
 use super::{SdHits, SdPayload, sd_ray, store_layers};
 use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
 use crate::common::any_hit::query_candidates;
+use crate::common::atomics::count_rays;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2};
 use crate::svao::SvaoFrame;
@@ -26,6 +27,7 @@ pub fn raysd_rq(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] materials: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mask_headers: &[AlphaMaskHeader],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] mask_texels: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)] mut ray_count: &mut [u32],
 ) {
     let frame = &frame[0];
     let params = &frame.params;
@@ -41,6 +43,7 @@ pub fn raysd_rq(
     let alpha = AlphaTables { uvs, materials, headers: mask_headers, texels: mask_texels };
     let mut hits = SdHits { payload: SdPayload::new(params, view.near, view.far, ray.cos_theta), alpha };
     if ray.traced() {
+        count_rays(&mut ray_count, 1);
         query_candidates(tlas, RayFlags::NO_OPAQUE, ray.origin, ray.t_min, ray.direction, ray.t_max, &mut hits);
     }
     store_layers(sd_map, params, q, &hits.payload);

@@ -5,6 +5,7 @@
 use super::{SdHits, SdPayload, sd_ray, store_layers};
 use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
 use crate::common::any_hit::{CandidateHit, IGNORE};
+use crate::common::atomics::count_rays;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2};
 use crate::svao::SvaoFrame;
@@ -21,6 +22,7 @@ pub fn raysd_rgen(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ray_min: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] ray_max: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] sd_map: &mut [f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)] mut ray_count: &mut [u32],
     #[spirv(ray_payload)] payload: &mut SdPayload,
 ) {
     let frame = &frame[0];
@@ -36,6 +38,7 @@ pub fn raysd_rgen(
     let ray = sd_ray(&gbuffer, frame, q, ray_min[i], ray_max[i]);
     *payload = SdPayload::new(params, view.near, view.far, ray.cos_theta);
     if ray.traced() {
+        count_rays(&mut ray_count, 1);
         unsafe {
             tlas.trace_ray(
                 RayFlags::NO_OPAQUE | RayFlags::SKIP_CLOSEST_HIT_SHADER,

@@ -15,7 +15,7 @@ use crate::common::any_hit::CandidateHit;
 use crate::common::camera::Camera;
 use crate::common::math::sat;
 use crate::glam::Vec3;
-use crate::svao::SvaoParams;
+use crate::svao::{Refined, SvaoParams};
 use crate::vao::kernel::{LineSample, PixelFrame, halo_visibility};
 
 pub use crate::common::any_hit::{ACCEPT, ACCEPT_AND_END, IGNORE};
@@ -145,10 +145,12 @@ pub fn refine_by_ray<T: SampleTracer>(
     v: f32,
     z_primary: f32,
     tracer: &mut T,
-) -> f32 {
+) -> Refined {
     let mut ray = sample_ray(camera, params, frame, s, z_primary);
+    let mut rays = 0;
     if ray.t_min < ray.t_max {
         tracer.trace(&mut ray);
+        rays = 1;
     }
-    sample_visibility(frame, s, params, &ray, v)
+    Refined { v: sample_visibility(frame, s, params, &ray, v), rays }
 }

@@ -6,10 +6,11 @@
 use super::{SampleHits, SampleRay, SampleTracer, refine_by_ray};
 use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
 use crate::common::any_hit::query_candidates;
+use crate::common::atomics::count_rays;
 use crate::common::camera::Camera;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2};
-use crate::svao::{Refine, SvaoFrame, SvaoParams, pass2_pixel};
+use crate::svao::{Refine, Refined, SvaoFrame, SvaoParams, pass2_pixel};
 use crate::vao::kernel::{LineSample, PixelFrame};
 use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
 use spirv_std::spirv;
@@ -23,7 +24,7 @@ struct QueryRefine<'a> {
 }
 
 impl Refine for QueryRefine<'_> {
-    fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> f32 {
+    fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> Refined {
         let (camera, params) = (self.camera, self.params);
         refine_by_ray(camera, params, frame, s, v, z_primary, self)
     }
@@ -51,6 +52,7 @@ pub fn raysvao_rq(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_headers: &[AlphaMaskHeader],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mask_texels: &[f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] depth2: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)] mut ray_count: &mut [u32],
 ) {
     let frame = &frame[0];
     let params = &frame.params;
@@ -63,5 +65,7 @@ pub fn raysvao_rq(
     let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
     let alpha = AlphaTables { uvs, materials, headers: mask_headers, texels: mask_texels };
     let mut source = QueryRefine { tlas, alpha, camera: &frame.camera, params };
-    ao[i] = pass2_pixel(&gbuffer, depth2, params, p, ao[i], mask[i], &mut source);
+    let out = pass2_pixel(&gbuffer, depth2, params, p, ao[i], mask[i], &mut source);
+    ao[i] = out.ao;
+    count_rays(&mut ray_count, out.rays);
 }

@@ -4,10 +4,11 @@
 use super::{ACCEPT_AND_END, IGNORE, SampleHits, SampleRay, SampleRayState, SampleTracer, refine_by_ray};
 use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
 use crate::common::any_hit::CandidateHit;
+use crate::common::atomics::count_rays;
 use crate::common::camera::Camera;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2};
-use crate::svao::{Refine, SvaoParams};
+use crate::svao::{Refine, Refined, SvaoParams};
 use crate::svao::{SvaoFrame, pass2_pixel};
 use crate::vao::kernel::{LineSample, PixelFrame};
 use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
@@ -24,7 +25,7 @@ struct TlasRefine<'a> {
 }
 
 impl Refine for TlasRefine<'_> {
-    fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> f32 {
+    fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> Refined {
         let (camera, params) = (self.camera, self.params);
         refine_by_ray(camera, params, frame, s, v, z_primary, self)
     }
@@ -61,6 +62,7 @@ pub fn raysvao_rgen(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ao: &mut [f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] mask: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] depth2: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)] mut ray_count: &mut [u32],
     #[spirv(ray_payload)] payload: &mut SampleRayState,
 ) {
     let frame = &frame[0];
@@ -73,7 +75,9 @@ pub fn raysvao_rgen(
     let i = view.index(p);
     let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
     let mut source = TlasRefine { tlas, payload, camera: &frame.camera, params };
-    ao[i] = pass2_pixel(&gbuffer, depth2, params, p, ao[i], mask[i], &mut source);
+    let out = pass2_pixel(&gbuffer, depth2, params, p, ao[i], mask[i], &mut source);
+    ao[i] = out.ao;
+    count_rays(&mut ray_count, out.rays);
 }
 
 #[spirv(miss(entry_point_name = "raysvao_miss"))]

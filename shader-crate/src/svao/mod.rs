@@ -10,7 +10,7 @@ pub mod pass2;
 pub mod settings;
 
 pub use pass1::{Pass1Pixel, pass1_pixel, primary_sample, sd_pixel};
-pub use pass2::{Refine, pass2_pixel};
+pub use pass2::{Pass2Pixel, Refine, Refined, pass2_pixel};
 
 use crate::common::camera::Camera;
 use crate::glam::{UVec2, uvec2};

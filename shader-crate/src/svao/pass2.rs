@@ -10,12 +10,26 @@ use crate::common::tables::AO_SAMPLES;
 use crate::glam::UVec2;
 use crate::vao::kernel::{LineSample, PixelFrame, line_sample_of, setup_pixel};
 
+/// A flagged sample's refined visibility and the rays traced for it.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct Refined {
+    pub v: f32,
+    pub rays: u32,
+}
+
 /// A secondary depth source: the SD map (spec §9) or traced rays (spec §10).
 pub trait Refine {
     /// Visibility of flagged sample `s` given its starting value `v` (the primary-depth
     /// visibility in screen, 1 for a dropped out-of-screen sample) and the primary depth's
     /// object-space `z_primary`. Sources combine with `min` (spec §4.3 `a_i = min_j a_ij`).
-    fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> f32;
+    fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> Refined;
+}
+
+/// A pixel after pass 2, and the rays its refinements traced.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct Pass2Pixel {
+    pub ao: f32,
+    pub rays: u32,
 }
 
 /// AO pass 2 of pixel `p` (spec §9): for every flagged sample, subtract its pass-1 (primary)
@@ -31,17 +45,18 @@ pub fn pass2_pixel<G: GBuffer, R: Refine>(
     stored: f32,
     mask: u32,
     source: &mut R,
-) -> f32 {
+) -> Pass2Pixel {
+    let unchanged = Pass2Pixel { ao: stored, rays: 0 };
     if mask == 0 {
-        return stored;
+        return unchanged;
     }
     let vao = &params.vao;
     let view = &vao.view;
     let frame = match setup_pixel(gbuffer, view, vao.radius, vao.max_screen_radius, p) {
         Some(f) => f,
-        None => return stored,
+        None => return unchanged,
     };
-    let mut delta = 0.0;
+    let (mut delta, mut rays) = (0.0, 0);
     let mut i = 0;
     while i < AO_SAMPLES {
         if mask & (1 << i) != 0 {
@@ -50,9 +65,11 @@ pub fn pass2_pixel<G: GBuffer, R: Refine>(
             delta -= v;
             // Out of screen the clamped border texel is dropped (spec §9, §15.8).
             let start = if s.in_screen { v } else { super::pass1::dropped_value(params) };
-            delta += source.refine(&frame, &s, start, z);
+            let refined = source.refine(&frame, &s, start, z);
+            delta += refined.v;
+            rays += refined.rays;
         }
         i += 1;
     }
-    super::pass1::finish(params, stored + super::pass1::accumulate(params, delta))
+    Pass2Pixel { ao: super::pass1::finish(params, stored + super::pass1::accumulate(params, delta)), rays }
 }

@@ -9,10 +9,10 @@ use crate::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
 use crate::common::tables::JitterTable;
 use crate::glam::{UVec2, uvec2};
 use crate::graph::{
-    Access, Binding, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, PassKind, Resource, Size, Snapshot, inputs,
-    record, slots, target_f32, target_u32,
+    Access, Binding, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, PassKind, RAY_COUNT, Resource, Size,
+    Snapshot, inputs, ray_counter, record, slots, target_f32, target_u32,
 };
-use crate::technique::{Constant, Declaration, Setting, Settings, rays_counted};
+use crate::technique::{Constant, Declaration, Setting, Settings};
 use crate::vao::kernel::{KERNEL_HBAO, KERNEL_VAO};
 use crate::vao::settings::vao_params;
 
@@ -134,16 +134,7 @@ pub const fn stenciled(
     defaults: fn() -> SvaoSettings,
     graph: fn(&SvaoSettings, &FrameDesc) -> Result<Graph, String>,
 ) -> Declaration<SvaoSettings> {
-    Declaration {
-        name,
-        summary,
-        keys,
-        defaults,
-        graph,
-        second_layer: dual_layer,
-        rays: rays_counted,
-        constants: CONSTANTS,
-    }
+    Declaration { name, summary, keys, defaults, graph, second_layer: dual_layer, constants: CONSTANTS }
 }
 
 /// How [`SvaoSettings::frame`] and [`SvaoSettings::graph`] fill `SvaoFrame`, `SvaoParams` and
@@ -401,6 +392,7 @@ impl SvaoSettings {
                     ("sd_map", Write),
                 ]);
                 bindings.extend(scene(7));
+                bindings.push(Binding { slot: 11, resource: RAY_COUNT, access: ReadWrite });
                 let traced = Pass {
                     label: "sd_map",
                     entry: "raysd_rgen",
@@ -411,6 +403,7 @@ impl SvaoSettings {
                 };
                 if !self.raster {
                     passes.push(traced);
+                    resources.push(ray_counter());
                 }
                 let pass2 = [
                     ("svao_frame", Read),
@@ -434,6 +427,8 @@ impl SvaoSettings {
                 ]);
                 bindings.extend(scene(6));
                 bindings.push(Binding { slot: 10, resource: depth2, access: Read });
+                bindings.push(Binding { slot: 11, resource: RAY_COUNT, access: ReadWrite });
+                resources.push(ray_counter());
                 passes.push(Pass {
                     label: "ao_pass2_rays",
                     entry: "raysvao_rgen",
