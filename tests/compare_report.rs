@@ -4,8 +4,7 @@
 
 mod common;
 
-use aokit::metrics::{ImageRef, mse, ssim};
-use aokit::output::crop_inner;
+use aokit::metrics::{ImageRef, ssim};
 use aokit::render::CpuRenderer;
 use aokit::report::{CompareReport, CompareSetup};
 use aokit::technique::{SdOptions, Technique};
@@ -14,7 +13,9 @@ use aokit_shaders::vao::settings::VAO;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-fn report(dir: &Path) -> (CompareReport, aokit::frame::Frame) {
+/// The report, its frame, and the full-target final AO of the reference and of each technique
+/// as the test computed them (not as the report stores them).
+fn report(dir: &Path) -> (CompareReport, aokit::frame::Frame, Vec<f32>, Vec<Vec<f32>>) {
     let (scene, frame) = common::builtin_frame("sponza", 240, 136, 16);
     let cpu = CpuRenderer::new(&scene);
     let (g, gbuffer_ms) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
@@ -28,10 +29,11 @@ fn report(dir: &Path) -> (CompareReport, aokit::frame::Frame) {
             (t, run)
         })
         .collect();
+    let finals = runs.iter().map(|(_, run)| run.ao_final.clone()).collect();
     let setup = CompareSetup { scene: "sponza", backend: "cpu", device: "test", gbuffer_ms };
     let r = CompareReport::new(setup, &frame, (reference, &reference_run), &runs);
     r.write_images(dir, &frame, &g).unwrap();
-    (r, frame)
+    (r, frame, reference_run.ao_final.clone(), finals)
 }
 
 fn scratch(name: &str) -> PathBuf {
@@ -41,12 +43,14 @@ fn scratch(name: &str) -> PathBuf {
     dir
 }
 
-/// The JSON carries the contract's fields, and its numbers are the metric functions' values on
-/// the cropped final images.
+/// The JSON carries the contract's fields, and its numbers are the metrics of the cropped final
+/// images: MSE and PSNR recomputed here from the technique's and the reference's full-target
+/// AO (own crop to the inner 240×136, plain f64 sum, PSNR = 10·log10(1/MSE)); SSIM from
+/// `aokit::metrics::ssim` (pinned against scikit-image in tests/metrics.rs) on the same crops.
 #[test]
 fn compare_json_follows_the_contract_and_matches_the_metrics() {
     let dir = scratch("json");
-    let (r, frame) = report(&dir);
+    let (r, frame, reference_full, finals) = report(&dir);
     let json = r.json();
     assert_eq!(json["scene"], "sponza");
     assert_eq!(json["backend"], "cpu");
@@ -55,19 +59,30 @@ fn compare_json_follows_the_contract_and_matches_the_metrics() {
     assert_eq!(json["reference"], "raysvao");
     let results = json["results"].as_array().unwrap();
     assert_eq!(results.len(), 2);
-    for (row, result) in r.rows.iter().zip(results) {
+    assert_eq!(finals.len(), 2);
+    let view = frame.camera.view;
+    let (w, h) = (240usize, 136usize);
+    for (full, result) in finals.iter().zip(results) {
         for key in ["technique", "options", "mse", "psnr", "ssim", "rays", "refined_samples", "passes", "total_ms"] {
             assert!(result.get(key).is_some(), "missing {key}");
         }
-        let view = frame.camera.view;
-        let a = crop_inner(&view, &row.run.ao_final);
-        let (w, h) = (frame.inner.x as usize, frame.inner.y as usize);
+        let (a, reference) = common::inner_pair(&view, full, &reference_full);
+        assert_eq!(a.len(), w * h);
+        let mut sum = 0.0f64;
+        for (x, y) in a.iter().zip(&reference) {
+            sum += (*x as f64 - *y as f64).powi(2);
+        }
+        let expected_mse = sum / (w * h) as f64;
+        let expected_psnr = 10.0 * (1.0 / expected_mse).log10();
+        let (got_mse, got_psnr) = (result["mse"].as_f64().unwrap(), result["psnr"].as_f64().unwrap());
+        assert!(expected_mse > 0.0);
+        assert!((got_mse - expected_mse).abs() <= 1e-12 * expected_mse, "MSE {got_mse} vs {expected_mse}");
+        assert!((got_psnr - expected_psnr).abs() <= 1e-9, "PSNR {got_psnr} vs {expected_psnr}");
         fn img(w: usize, h: usize, p: &[f32]) -> ImageRef<'_> {
             ImageRef { width: w, height: h, pixels: p }
         }
-        let expected_mse = mse(img(w, h, &a), img(w, h, &r.reference_ao), None).unwrap();
-        assert_eq!(result["mse"].as_f64().unwrap(), expected_mse);
-        assert_eq!(result["ssim"].as_f64().unwrap(), ssim(img(w, h, &a), img(w, h, &r.reference_ao), None).unwrap());
+        let expected_ssim = ssim(img(w, h, &a), img(w, h, &reference), None).unwrap();
+        assert!((result["ssim"].as_f64().unwrap() - expected_ssim).abs() <= 1e-12, "SSIM");
         let passes = result["passes"].as_array().unwrap();
         let total: f64 = passes.iter().map(|p| p["ms"].as_f64().unwrap()).sum();
         assert!((total - result["total_ms"].as_f64().unwrap()).abs() < 1e-9);
@@ -102,7 +117,7 @@ fn html_report_renders_in_headless_chromium() {
     let browser =
         chromium().expect("headless Chromium is required (apt-get install chromium); AOKIT_SKIP_CHROMIUM=1 skips");
     let dir = scratch("html");
-    let (r, _) = report(&dir);
+    let (r, _, _, _) = report(&dir);
     let page = r.write_html(&dir, &dir).unwrap();
     let url = format!("file://{}", page.canonicalize().unwrap().display());
     let common_args =

@@ -1,5 +1,7 @@
 //! Ground-truth AO: sampling math against closed forms, an analytic scene, and convergence.
 
+mod common;
+
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::output::crop_inner;
 use aokit::render::CpuRenderer;
@@ -128,8 +130,10 @@ fn cornell_box_converges_by_512_samples() {
         cpu.ground_truth(&frame, &g, &params, &no_progress).0
     };
     let (a, b) = (run(512), run(4096));
-    let n = a.len();
-    let mse = a.iter().zip(&b).map(|(x, y)| ((x - y) as f64).powi(2)).sum::<f64>() / n as f64;
+    let view = frame.camera.view;
+    let mse = common::inner_mse(&view, &a, &b);
+    let (_, b) = common::inner_pair(&view, &a, &b);
+    let n = b.len();
     let occluded = b.iter().filter(|&&v| v < 0.95).count();
     eprintln!("Cornell 48×48: MSE(512, 4096 spp) = {mse:.2e}; {occluded} of {n} pixels below 0.95");
     assert!(occluded > n / 20, "the view must contain occlusion");

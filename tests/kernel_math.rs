@@ -43,6 +43,39 @@ fn vao_radii_follow_inversion_sampling_of_the_chord_pdf() {
     }
 }
 
+/// HBAO+ kernel tables (spec svao-raysd §4.5): radii ρ_i = 2·asin(ψ_i^1.25)/π with
+/// ψ_i = VdC(8 + i), half-chords sqrt(1 − ρ_i²) (hemisphere clipping as for VAO) and weights
+/// pdf_i = 0.9·(1 − ρ_i)^1.5, each recomputed in f64 here; the tables are f32, so within 1e-7.
+/// The spec's listed radii (§4.2 table, 17 digits) are checked too.
+#[test]
+fn hbao_tables_follow_their_formulas() {
+    use aokit_shaders::common::tables::{HBAO_HALF_CHORDS, HBAO_PDFS, HBAO_RADII};
+    let listed = [
+        0.019897607325877215,
+        0.3239192018939078,
+        0.15013283288204182,
+        0.5608856339193332,
+        0.07874804859295396,
+        0.4306374970658152,
+        0.23159241868180838,
+        0.74770696488701,
+    ];
+    for i in 0..8 {
+        let psi = van_der_corput(8 + i as u32);
+        let rho = 2.0 * psi.powf(1.25).asin() / std::f64::consts::PI;
+        assert!((rho - listed[i]).abs() < 1e-15, "spec table, radius {i}: {rho} vs {}", listed[i]);
+        let half_chord = (1.0 - rho * rho).sqrt();
+        let pdf = 0.9 * (1.0 - rho).powf(1.5);
+        for (name, table, want) in [
+            ("radius", HBAO_RADII[i], rho),
+            ("half-chord", HBAO_HALF_CHORDS[i], half_chord),
+            ("pdf", HBAO_PDFS[i], pdf),
+        ] {
+            assert!((table as f64 - want).abs() < 1e-7, "HBAO {name} {i}: table {table} vs formula {want}");
+        }
+    }
+}
+
 #[test]
 fn rotation_table_matches_spec_angles() {
     // Spec §4.1.1: Bayer ranks k, texel floor(k·255/16), ξ = texel/255·2·3.141.

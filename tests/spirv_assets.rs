@@ -1,5 +1,6 @@
 //! The committed SPIR-V is fresh against the shader sources, valid (spirv-val, naga) and
-//! described correctly by its manifest. Needs no nightly.
+//! described correctly by its manifest. Needs no nightly; needs spirv-val (package spirv-tools)
+//! unless AOKIT_SKIP_SPIRV_VAL=1.
 
 use aokit_vulkan::manifest::{Manifest, reflect};
 use aokit_vulkan::modules;
@@ -50,14 +51,20 @@ fn manifest_matches_naga_reflection_of_every_module() {
     }
 }
 
+/// Needs `spirv-val` from the spirv-tools package (Debian/Ubuntu: `apt-get install spirv-tools`):
+/// without it the test fails, unless AOKIT_SKIP_SPIRV_VAL=1 says to skip.
 #[test]
 fn every_module_passes_spirv_val() {
-    let available = std::process::Command::new("spirv-val").arg("--version").output().is_ok();
-    if !available {
-        assert!(std::env::var_os("CI").is_none(), "CI must install spirv-tools (spirv-val)");
-        eprintln!("spirv-val not installed: skipping (apt-get install spirv-tools)");
+    if std::env::var_os("AOKIT_SKIP_SPIRV_VAL").is_some_and(|v| v == "1") {
+        eprintln!("AOKIT_SKIP_SPIRV_VAL=1: skipping spirv-val");
         return;
     }
+    let available = std::process::Command::new("spirv-val").arg("--version").output().is_ok_and(|o| o.status.success());
+    assert!(
+        available,
+        "spirv-val not found: install the spirv-tools package (apt-get install spirv-tools), \
+         or set AOKIT_SKIP_SPIRV_VAL=1 to skip this test"
+    );
     for m in &Manifest::committed().modules {
         let path = root().join("assets/spirv").join(&m.file);
         let out =

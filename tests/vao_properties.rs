@@ -78,21 +78,65 @@ fn fronto_parallel_plane_is_nearly_unoccluded() {
     assert!(mean > 0.97 && min > 0.9, "mean {mean}, min {min}");
 }
 
+/// Background pixels (depth at or beyond the far plane, or NaN) are unshaded (AO = 1) even where
+/// the screen radius is large, so the `rpx < 0.5` exit (spec §4.1 step 4) cannot be what keeps
+/// them at 1: at depth 100 with R = 50 the screen radius is ≈ 22 px (computed here from §4.1
+/// step 2). Half the pixels are foreground 40 units in front of the sky, well inside R, so a
+/// sky pixel that were shaded would be darkened, which the same geometry with the sky at 99.9
+/// (a valid depth, just inside the far plane) confirms.
 #[test]
-fn sky_pixels_and_sub_pixel_radii_are_unshaded() {
+fn sky_pixels_are_unshaded_even_with_a_large_screen_radius() {
     let cam = Camera::look_at(Vec3::ZERO, -Vec3::Z, Vec3::Y, 40f32.to_radians(), uvec2(32, 32), 4, 0.01, 100.0);
-    // Depth = far is background; a tiny radius gives rpx < 0.5 (spec §4.1 step 4).
-    for (depth, radius) in [(100.0, 0.5), (10.0, 1e-4)] {
-        let mut g = plane_gbuffer(&cam.view, depth);
-        // An occluder right next to every pixel that would darken a shaded pixel.
+    let view = cam.view;
+    let radius = 50.0f32;
+    // §4.1 step 2 by hand: rpx = R·H/(2·ty·d), ty = tan(20°)·40/32, the same on both axes.
+    let ty = (20f64.to_radians()).tan() * 40.0 / 32.0;
+    let rpx = radius as f64 * 40.0 / (2.0 * ty * 100.0);
+    assert!(rpx > 20.0, "the test needs a screen radius well above half a pixel: {rpx}");
+    let shade = |sky: f32| {
+        let mut g = plane_gbuffer(&view, 60.0);
         for (i, d) in g.depth.iter_mut().enumerate() {
-            if i % 2 == 0 && depth < 100.0 {
-                *d = depth - 0.5 * radius;
+            let (x, y) = (i as u32 % view.size().x, i as u32 / view.size().x);
+            if (x + y) % 2 == 0 {
+                *d = sky;
             }
         }
-        let ao = run_vao(&params(cam.view, radius), &g.depth, &g.normals, &no_progress);
-        assert!(ao.iter().all(|&a| a == 1.0));
+        let ao = run_vao(&params(view, radius), &g.depth, &g.normals, &no_progress);
+        let sky_pixels: Vec<f32> = (0..ao.len())
+            .filter(|&i| {
+                let p = uvec2(i as u32 % view.size().x, i as u32 / view.size().x);
+                view.is_inner(p) && (p.x + p.y).is_multiple_of(2)
+            })
+            .map(|i| ao[i])
+            .collect();
+        assert_eq!(sky_pixels.len(), 32 * 32 / 2);
+        sky_pixels
+    };
+    // Control: just inside the far plane the same pixels are shaded and clearly occluded.
+    let shaded = shade(99.9);
+    let mean = shaded.iter().sum::<f32>() / shaded.len() as f32;
+    assert!(mean < 0.5, "control: sky pixels at a valid depth should be occluded, mean AO {mean}");
+    for sky in [100.0, 150.0, f32::NAN] {
+        let ao = shade(sky);
+        let bad = ao.iter().filter(|&&a| a != 1.0).count();
+        assert_eq!(bad, 0, "depth {sky}: {bad} background pixels shaded, e.g. {:?}", &ao[..4]);
     }
+}
+
+/// A screen radius below half a pixel leaves the pixel unshaded (spec §4.1 step 4).
+#[test]
+fn sub_pixel_radii_are_unshaded() {
+    let cam = Camera::look_at(Vec3::ZERO, -Vec3::Z, Vec3::Y, 40f32.to_radians(), uvec2(32, 32), 4, 0.01, 100.0);
+    let (depth, radius) = (10.0, 1e-4);
+    let mut g = plane_gbuffer(&cam.view, depth);
+    // An occluder right next to every pixel that would darken a shaded pixel.
+    for (i, d) in g.depth.iter_mut().enumerate() {
+        if i % 2 == 0 {
+            *d = depth - 0.5 * radius;
+        }
+    }
+    let ao = run_vao(&params(cam.view, radius), &g.depth, &g.normals, &no_progress);
+    assert!(ao.iter().all(|&a| a == 1.0));
 }
 
 fn crease_scene() -> Scene {
@@ -184,24 +228,131 @@ proptest! {
     }
 }
 
-#[test]
-fn blur_preserves_constants_and_respects_depth_edges() {
-    let cam = Camera::look_at(Vec3::ZERO, -Vec3::Z, Vec3::Y, 40f32.to_radians(), uvec2(32, 16), 4, 0.01, 100.0);
-    let size = cam.view.size();
+fn blur_setup(inner: UVec2) -> (aokit_shaders::common::ViewParams, aokit_shaders::blur::BlurParams) {
+    let cam = Camera::look_at(Vec3::ZERO, -Vec3::Z, Vec3::Y, 40f32.to_radians(), inner, 4, 0.01, 100.0);
     let blur = aokit_shaders::blur::BlurParams { view: cam.view, direction: uvec2(1, 0), sharpness: 16.0, _pad: 0 };
+    (cam.view, blur)
+}
+
+/// Uniform noise in [0, 1) (xorshift32).
+fn noise(n: usize, mut s: u32) -> Vec<f32> {
+    (0..n)
+        .map(|_| {
+            s ^= s << 13;
+            s ^= s >> 17;
+            s ^= s << 5;
+            (s >> 8) as f32 / (1u32 << 24) as f32
+        })
+        .collect()
+}
+
+fn variance(v: &[f32]) -> f64 {
+    let m = v.iter().map(|&x| x as f64).sum::<f64>() / v.len() as f64;
+    v.iter().map(|&x| (x as f64 - m).powi(2)).sum::<f64>() / v.len() as f64
+}
+
+/// Inner pixels at least `margin` pixels from the inner image's border.
+fn interior(view: &aokit_shaders::common::ViewParams, v: &[f32], margin: u32) -> Vec<f32> {
+    let size = view.size();
+    let g = view.guard + margin;
+    (g..size.y - g)
+        .flat_map(|y| (g..size.x - g).map(move |x| (x, y)))
+        .map(|(x, y)| v[(y * size.x + x) as usize])
+        .collect()
+}
+
+/// Spec §12 on a flat depth: a constant stays constant, and white noise is smoothed by the
+/// separable Gaussian `w_d = 2^(−0.08·d²)`, d = −4..4. Per pass the variance of i.i.d. noise
+/// shrinks by Σw²/(Σw)²: Σw = 1 + 2·(0.94606 + 0.80107 + 0.60709 + 0.41180) = 6.53203,
+/// Σw² = 1 + 2·(0.89503 + 0.64171 + 0.36856 + 0.16958) = 5.14976, ratio 0.120694; two passes
+/// give 0.120694² = 0.014567. Measured on the pixels ≥ 4 px from the border (no clamping), the
+/// sample ratio must lie within ±25 % of that (an identity blur gives 1).
+#[test]
+fn blur_smooths_noise_on_a_flat_depth() {
+    // Large enough that the variance estimate of the correlated output (≈ 1/0.0146 pixels per
+    // independent value) is good to a few percent.
+    let (view, blur) = blur_setup(uvec2(256, 192));
+    let size = view.size();
     let n = (size.x * size.y) as usize;
     let flat = vec![5.0f32; n];
-    let constant = vec![0.4f32; n];
-    for a in run_blur(&blur, &constant, &flat) {
-        assert!((a - 0.4).abs() < 1e-6 || a == 1.0);
+    for a in interior(&view, &run_blur(&blur, &vec![0.4f32; n], &flat), 0) {
+        assert!((a - 0.4).abs() < 1e-6, "a constant must stay constant: {a}");
     }
-    // Left half at depth 5 with AO 0, right half at depth 50 with AO 1: the edge survives.
-    let depth: Vec<f32> = (0..n).map(|i| if (i as u32 % size.x) < size.x / 2 { 5.0 } else { 50.0 }).collect();
-    let ao: Vec<f32> = depth.iter().map(|&d| if d < 10.0 { 0.0 } else { 1.0 }).collect();
-    let out = run_blur(&blur, &ao, &depth);
-    let row = 8 * size.x as usize;
-    let (left, right) = (out[row + size.x as usize / 2 - 1], out[row + size.x as usize / 2]);
-    assert!(left < 1e-3 && right > 1.0 - 1e-3, "edge blurred: {left} {right}");
+    let input = noise(n, 1234);
+    let out = run_blur(&blur, &input, &flat);
+    let ratio = variance(&interior(&view, &out, 4)) / variance(&interior(&view, &input, 4));
+    eprintln!("variance ratio after the blur: {ratio:.5} (i.i.d. prediction 0.01457)");
+    assert!((ratio - 0.014567).abs() < 0.25 * 0.014567, "variance ratio {ratio}, expected ≈ 0.0146");
+    // The mean is preserved (weights normalized).
+    let (mi, mo) = (interior(&view, &input, 4), interior(&view, &out, 4));
+    let mean = |v: &[f32]| v.iter().map(|&x| x as f64).sum::<f64>() / v.len() as f64;
+    assert!((mean(&mi) - mean(&mo)).abs() < 0.01, "mean {} → {}", mean(&mi), mean(&mo));
+}
+
+/// Across a depth discontinuity (depth 5 | depth 50) the weights of the far side vanish
+/// (Δ = 45·16·12/5 = 1728, w = 2^(−Δ²) = 0): each side is smoothed with its own noise only, so
+/// the output on one side does not change when the other side's AO does, while both sides are
+/// still smoothed.
+#[test]
+fn blur_preserves_depth_edges() {
+    let (view, blur) = blur_setup(uvec2(48, 40));
+    let size = view.size();
+    let n = (size.x * size.y) as usize;
+    let mid = size.x / 2;
+    let left = |i: usize| (i as u32 % size.x) < mid;
+    let depth: Vec<f32> = (0..n).map(|i| if left(i) { 5.0 } else { 50.0 }).collect();
+    let noisy = noise(n, 99);
+    let ao = |other: f32| -> Vec<f32> {
+        (0..n).map(|i| if left(i) { 0.3 + 0.2 * noisy[i] } else { other + 0.2 * noisy[i] }).collect()
+    };
+    let (dark, bright) = (run_blur(&blur, &ao(0.0), &depth), run_blur(&blur, &ao(0.8), &depth));
+    let inner_rows = view.guard..size.y - view.guard;
+    for y in inner_rows.clone() {
+        for x in view.guard..mid {
+            let i = (y * size.x + x) as usize;
+            assert!((dark[i] - bright[i]).abs() < 1e-6, "pixel ({x},{y}) left of the edge sees the right side");
+        }
+    }
+    // The left column next to the edge is still smoothed along y: its variance drops.
+    let column = |v: &[f32], x: u32| inner_rows.clone().map(|y| v[(y * size.x + x) as usize]).collect::<Vec<_>>();
+    let (before, after) = (variance(&column(&ao(0.8), mid - 1)), variance(&column(&bright, mid - 1)));
+    assert!(after < 0.3 * before, "edge column not smoothed: variance {before} → {after}");
+    // And the right side keeps its own level: next to the edge ≈ 0.8 + 0.1, not pulled to 0.4.
+    let right_edge = column(&bright, mid);
+    let mean = right_edge.iter().sum::<f32>() / right_edge.len() as f32;
+    assert!((mean - 0.9).abs() < 0.03, "right side of the edge: mean {mean}");
+}
+
+/// One output pixel of one direction against the weighted sum of spec §12 computed by hand.
+/// Depths along the direction at offsets −4..4: 9.96 9.95 9.98 9.99 |10.00| 10.03 10.02 10.06
+/// 10.20, AO 0.1 0.2 … 0.9. Slopes sL = 0.01, sR = 0.03: s = 0.01 (smaller magnitude); the
+/// positive side predicts z0 + 0.01·d, the negative side z0 − 0.01·d. Deviations: −3: −0.02,
+/// +1: +0.02, +3: +0.03, +4: +0.16, others 0; Δ = |dev|·16·12/10 = 0.384, 0.384, 0.576, 3.072.
+/// Weights 2^(−0.08d² − Δ²): −1: 0.946058, +1: 0.854140, ±2: 0.801070, −3: 0.548113,
+/// +3: 0.482374, −4: 0.411796, +4: 0.000594. Result (0.5 + Σ w·a)/(1 + Σ w) = 0.466914
+/// (f64 from the decimal inputs; the f32 inputs move it by 1e-7). Checked along x and along y.
+#[test]
+fn blur_pixel_is_the_cross_bilateral_weighted_sum() {
+    let (view, blur) = blur_setup(uvec2(48, 40));
+    let size = view.size();
+    let n = (size.x * size.y) as usize;
+    let z = [9.96f32, 9.95, 9.98, 9.99, 10.0, 10.03, 10.02, 10.06, 10.2];
+    let expected = 0.466914f32;
+    let c = uvec2(20, 18);
+    for dir in [uvec2(1, 0), uvec2(0, 1)] {
+        let mut depth = vec![10.0f32; n];
+        let mut ao = vec![0.5f32; n];
+        for (k, &zk) in z.iter().enumerate() {
+            let p = c.as_ivec2() + dir.as_ivec2() * (k as i32 - 4);
+            let i = view.index(p.as_uvec2());
+            depth[i] = zk;
+            ao[i] = (k + 1) as f32 / 10.0;
+        }
+        let params = aokit_shaders::blur::BlurParams { direction: dir, ..blur };
+        let out = aokit_cpu::screen::run_blur_direction(&params, &ao, &depth);
+        let got = out[view.index(c)];
+        assert!((got - expected).abs() < 2e-6, "direction {dir}: {got} vs hand-computed {expected}");
+    }
 }
 
 #[test]

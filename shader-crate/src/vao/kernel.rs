@@ -79,7 +79,7 @@ pub fn setup_pixel<G: GBuffer>(
         radius = world_radius * max_screen_radius / rpx;
         rpx = max_screen_radius;
     }
-    if rpx < 0.0 {
+    if rpx < 0.5 {
         return None;
     }
     let position = view.uv_to_view(uv, d);
