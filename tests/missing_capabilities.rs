@@ -77,11 +77,15 @@ fn ray_queries_and_pipelines_each_need_their_own_extension() {
 
     let Some(vk) = hiding(&["VK_KHR_ray_tracing_pipeline"]) else { return };
     let e = vk.frame(&scene, &frame, &raysd, false).unwrap_err().to_string();
-    assert!(e.contains("lacks VK_KHR_ray_tracing_pipeline") && e.contains("hidden: VK_KHR_ray_tracing_pipeline"), "{e}");
+    assert!(
+        e.contains("lacks VK_KHR_ray_tracing_pipeline") && e.contains("hidden: VK_KHR_ray_tracing_pipeline"),
+        "{e}"
+    );
 }
 
 fn aokit(args: &[&str], env: &[(&str, &str)]) -> (Option<i32>, String) {
-    let out = std::process::Command::new(env!("CARGO_BIN_EXE_aokit")).args(args).envs(env.iter().copied()).output().unwrap();
+    let out =
+        std::process::Command::new(env!("CARGO_BIN_EXE_aokit")).args(args).envs(env.iter().copied()).output().unwrap();
     (out.status.code(), String::from_utf8(out.stderr).unwrap())
 }
 
@@ -91,7 +95,10 @@ fn the_cli_names_what_the_device_lacks() {
     let no_icd = [("VK_ICD_FILENAMES", "/nonexistent/icd.json"), ("VK_DRIVER_FILES", "/nonexistent/icd.json")];
     let (code, e) = aokit(&["info"], &no_icd);
     assert_eq!(code, Some(1), "{e}");
-    assert!(e.contains("no Vulkan driver") && e.contains("mesa-vulkan-drivers") && e.trim().lines().count() == 1, "{e}");
+    assert!(
+        e.contains("no Vulkan driver") && e.contains("mesa-vulkan-drivers") && e.trim().lines().count() == 1,
+        "{e}"
+    );
     if common::vulkan().is_none() {
         return;
     }

@@ -66,7 +66,10 @@ fn check_scene(vk: &aokit::render::VulkanRenderer, name: &str, min_occluded: f64
         );
         assert!(occluded > min_occluded, "{name} {spec}: the view must be occluded ({occluded})");
         // The rays each kernel counted as it traced them (`ray_count`): the same on every path.
-        eprintln!("{name} {spec}: rays traced: pipeline {}, query {}, cpu-sim {}", pipeline.rays, query.rays, on_cpu.rays);
+        eprintln!(
+            "{name} {spec}: rays traced: pipeline {}, query {}, cpu-sim {}",
+            pipeline.rays, query.rays, on_cpu.rays
+        );
         assert!(pipeline.rays > 0, "{name} {spec}: no rays counted");
         assert_eq!(query.rays, pipeline.rays, "{name} {spec}: ray counts of the two modes");
         let off = (pipeline.rays as f64 - on_cpu.rays as f64).abs() / on_cpu.rays as f64;
