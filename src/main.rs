@@ -8,6 +8,7 @@ use aokit::render::{CpuRenderer, Renderer, VulkanRenderer};
 use aokit::report::{BenchResult, CompareReport, CompareSetup};
 use aokit::scene::Scene;
 use aokit::scene::builtin;
+use aokit_cpu::GBufferImage;
 use aokit_shaders::graph::RtMode;
 use aokit_vulkan::GpuOptions;
 use clap::{Parser, Subcommand, ValueEnum};
@@ -412,38 +413,35 @@ fn scaling(args: ScalingArgs) -> Result<(), String> {
     Ok(())
 }
 
-fn export(args: ExportArgs) -> Result<(), String> {
-    if args.frame.rt_mode.is_some() {
-        return Err("--rt-mode is not read by export (it traces no AO rays)".into());
+/// The frame and its G-buffer on the chosen back-end, for commands that write them out (export,
+/// web); `command` names the command in the `--rt-mode` refusal.
+fn frame_gbuffer(args: &FrameArgs, command: &str) -> Result<(Scene, Frame, GBufferImage, &'static str), String> {
+    if args.rt_mode.is_some() {
+        return Err(format!("--rt-mode is not read by {command} (it traces no AO rays)"));
     }
-    let (scene, frame) = resolve(&args.frame)?;
-    let renderer = renderer(&args.frame, &scene)?;
+    let (scene, frame) = resolve(args)?;
+    let renderer = renderer(args, &scene)?;
     let rows = frame.camera.view.size().y as u64;
     let bar = progress_bar(format!("{} G-buffer", renderer.backend_name()), rows);
     let progress = |n| bar.inc(n);
     let (gbuffer, _) = renderer.gbuffer(&scene, &frame, &progress).map_err(|e| e.to_string())?;
     bar.finish_and_clear();
     check_validation(&renderer)?;
-    let json = aokit::export::write(&args.out, &scene, &frame, &gbuffer, renderer.backend_name())
+    Ok((scene, frame, gbuffer, renderer.backend_name()))
+}
+
+fn export(args: ExportArgs) -> Result<(), String> {
+    let (scene, frame, gbuffer, backend) = frame_gbuffer(&args.frame, "export")?;
+    let json = aokit::export::write(&args.out, &scene, &frame, &gbuffer, backend)
         .map_err(|e| format!("{}: {e}", args.out.display()))?;
     println!("{json}");
     Ok(())
 }
 
 fn web(args: WebArgs) -> Result<(), String> {
-    if args.frame.rt_mode.is_some() {
-        return Err("--rt-mode is not read by web (its techniques trace no rays)".into());
-    }
-    let (scene, frame) = resolve(&args.frame)?;
-    let renderer = renderer(&args.frame, &scene)?;
-    let rows = frame.camera.view.size().y as u64;
-    let bar = progress_bar(format!("{} G-buffer", renderer.backend_name()), rows);
-    let progress = |n| bar.inc(n);
-    let (gbuffer, _) = renderer.gbuffer(&scene, &frame, &progress).map_err(|e| e.to_string())?;
-    bar.finish_and_clear();
-    check_validation(&renderer)?;
+    let (scene, frame, gbuffer, backend) = frame_gbuffer(&args.frame, "web")?;
     // The page's references: cpu-sim on this G-buffer, whatever the back-end.
-    let json = aokit::web::write(&args.out, &scene, &frame, &gbuffer, renderer.backend_name(), &aokit_cpu::no_progress)
+    let json = aokit::web::write(&args.out, &scene, &frame, &gbuffer, backend, &aokit_cpu::no_progress)
         .map_err(|e| format!("{}: {e}", args.out.display()))?;
     let names: Vec<_> = json["techniques"].as_array().into_iter().flatten().map(|t| t["name"].clone()).collect();
     let line = serde_json::json!({

@@ -1,6 +1,8 @@
 //! Ring 1–2: properties of the VAO kernel and the blur on the CPU: the halo model's closed form,
 //! robustness to broken G-buffers, and analytic scenes.
 
+mod common;
+
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::render::CpuRenderer;
 use aokit::scene::Scene;
@@ -234,18 +236,6 @@ fn blur_setup(inner: UVec2) -> (aokit_shaders::common::ViewParams, aokit_shaders
     (cam.view, blur)
 }
 
-/// Uniform noise in [0, 1) (xorshift32).
-fn noise(n: usize, mut s: u32) -> Vec<f32> {
-    (0..n)
-        .map(|_| {
-            s ^= s << 13;
-            s ^= s >> 17;
-            s ^= s << 5;
-            (s >> 8) as f32 / (1u32 << 24) as f32
-        })
-        .collect()
-}
-
 fn variance(v: &[f32]) -> f64 {
     let m = v.iter().map(|&x| x as f64).sum::<f64>() / v.len() as f64;
     v.iter().map(|&x| (x as f64 - m).powi(2)).sum::<f64>() / v.len() as f64
@@ -278,7 +268,7 @@ fn blur_smooths_noise_on_a_flat_depth() {
     for a in interior(&view, &run_blur(&blur, &vec![0.4f32; n], &flat), 0) {
         assert!((a - 0.4).abs() < 1e-6, "a constant must stay constant: {a}");
     }
-    let input = noise(n, 1234);
+    let input = common::noise(n, 1234);
     let out = run_blur(&blur, &input, &flat);
     let ratio = variance(&interior(&view, &out, 4)) / variance(&interior(&view, &input, 4));
     eprintln!("variance ratio after the blur: {ratio:.5} (i.i.d. prediction 0.01457)");
@@ -301,7 +291,7 @@ fn blur_preserves_depth_edges() {
     let mid = size.x / 2;
     let left = |i: usize| (i as u32 % size.x) < mid;
     let depth: Vec<f32> = (0..n).map(|i| if left(i) { 5.0 } else { 50.0 }).collect();
-    let noisy = noise(n, 99);
+    let noisy = common::noise(n, 99);
     let ao = |other: f32| -> Vec<f32> {
         (0..n).map(|i| if left(i) { 0.3 + 0.2 * noisy[i] } else { other + 0.2 * noisy[i] }).collect()
     };
