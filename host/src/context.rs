@@ -64,11 +64,13 @@ pub(crate) struct RayTracingLimits {
     pub scratch_alignment: u32,
 }
 
-/// Ray-tracing extension entry points, present when the device supports ray tracing.
+/// Acceleration-structure entry points (present when the device builds acceleration
+/// structures for ray-tracing pipelines or ray queries) and the ray-tracing-pipeline ones (when it
+/// runs ray-tracing pipelines).
 pub(crate) struct RayTracing {
     pub limits: RayTracingLimits,
     pub acceleration: khr::acceleration_structure::Device,
-    pub pipelines: khr::ray_tracing_pipeline::Device,
+    pub pipelines: Option<khr::ray_tracing_pipeline::Device>,
 }
 
 /// A Vulkan device that the application created itself (a game engine, say), for
@@ -103,9 +105,10 @@ pub struct ExternalDevice {
     /// was enabled, so it trusts this flag; `false` makes the `Gpu` behave as on a device without
     /// ray tracing ([`Gpu::has_ray_tracing`] is `false`).
     pub ray_tracing: bool,
-    /// Whether the device was also created with `VK_KHR_ray_query` and the `rayQuery` feature
-    /// (the ray-query variants of the ray-traced passes, [`RtMode::Query`]; needs
-    /// `ray_tracing` too, whose acceleration-structure entry points build the scene's TLAS).
+    /// Whether the device was created with `VK_KHR_ray_query` and the `rayQuery` feature, and
+    /// with `VK_KHR_acceleration_structure`, `VK_KHR_deferred_host_operations`,
+    /// `accelerationStructure` and `bufferDeviceAddress` (the ray-query variants of the
+    /// ray-traced passes, [`RtMode::Query`]; no ray-tracing pipeline needed).
     ///
     /// [`RtMode::Query`]: aokit_shaders::graph::RtMode::Query
     pub ray_query: bool,
@@ -162,11 +165,14 @@ struct DeviceProbe {
     info: DeviceInfo,
     timestamp_period_ns: f32,
     max_storage_buffer_range: u64,
-    /// The ray-tracing limits, when the physical device has everything the ray-traced passes
-    /// need: the extensions and the `accelerationStructure`, `rayTracingPipeline` and
-    /// `bufferDeviceAddress` features.
+    /// The limits, when the physical device builds acceleration structures
+    /// (`VK_KHR_acceleration_structure`, `VK_KHR_deferred_host_operations`,
+    /// `accelerationStructure`, `bufferDeviceAddress`) and can use them (`pipelines` or
+    /// `ray_query`).
     ray_tracing: Option<RayTracingLimits>,
-    /// `VK_KHR_ray_query` and the `rayQuery` feature, besides everything of `ray_tracing`.
+    /// `VK_KHR_ray_tracing_pipeline` and `rayTracingPipeline`, besides `ray_tracing`.
+    pipelines: bool,
+    /// `VK_KHR_ray_query` and `rayQuery`, besides `ray_tracing`.
     ray_query: bool,
 }
 
@@ -201,11 +207,13 @@ impl DeviceProbe {
             .push_next(&mut rq_features)
             .push_next(&mut f12_query);
         unsafe { instance.get_physical_device_features2(pd, &mut f2) };
-        let ray_tracing = RT_EXTENSIONS[..2].iter().chain(&RT_EXTENSIONS[3..]).all(|e| has(e))
+        let accel = has(khr::acceleration_structure::NAME)
+            && has(khr::deferred_host_operations::NAME)
             && as_features.acceleration_structure != 0
-            && rt_features.ray_tracing_pipeline != 0
             && f12_query.buffer_device_address != 0;
-        let limits = ray_tracing.then(|| {
+        let pipelines = accel && has(khr::ray_tracing_pipeline::NAME) && rt_features.ray_tracing_pipeline != 0;
+        let ray_query = accel && has(khr::ray_query::NAME) && rq_features.ray_query != 0;
+        let limits = (pipelines || ray_query).then(|| {
             let mut rt_props = vk::PhysicalDeviceRayTracingPipelinePropertiesKHR::default();
             let mut as_props = vk::PhysicalDeviceAccelerationStructurePropertiesKHR::default();
             let mut p2 = vk::PhysicalDeviceProperties2::default().push_next(&mut rt_props).push_next(&mut as_props);
@@ -217,12 +225,12 @@ impl DeviceProbe {
                 scratch_alignment: as_props.min_acceleration_structure_scratch_offset_alignment,
             }
         });
-        let ray_query = limits.is_some() && has(khr::ray_query::NAME) && rq_features.ray_query != 0;
         Ok(DeviceProbe {
             info,
             timestamp_period_ns: props.limits.timestamp_period,
             max_storage_buffer_range: props.limits.max_storage_buffer_range as u64,
             ray_tracing: limits,
+            pipelines,
             ray_query,
         })
     }
@@ -352,7 +360,7 @@ impl Gpu {
             }
         };
         let queue = unsafe { device.get_device_queue(queue_family_index, 0) };
-        let (ray_tracing, ray_query) = (probe.ray_tracing.is_some(), probe.ray_query);
+        let (ray_tracing, ray_query) = (probe.pipelines, probe.ray_query);
         let handles = ExternalDevice {
             entry,
             instance,
@@ -387,6 +395,10 @@ impl Gpu {
     ///   `VK_KHR_deferred_host_operations`, and the features `accelerationStructure`,
     ///   `rayTracingPipeline` and `bufferDeviceAddress` (Vulkan 1.2). The allocator then
     ///   allocates all memory with `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`.
+    /// * For ray queries (`external.ray_query == true`, with or without `ray_tracing`):
+    ///   `VK_KHR_ray_query`, `VK_KHR_acceleration_structure` and
+    ///   `VK_KHR_deferred_host_operations`, and the features `rayQuery`,
+    ///   `accelerationStructure` and `bufferDeviceAddress`.
     ///
     /// aokit cannot read back which features were enabled: it checks what the *physical* device
     /// supports (a clear error when it lacks the memory model, when the queue family lacks
@@ -428,14 +440,14 @@ impl Gpu {
                 "compute and timestamps: queue family {queue_family_index} of the external device '{name}' lacks them"
             )));
         }
-        if ray_tracing && probe.ray_tracing.is_none() {
+        if ray_tracing && !probe.pipelines {
             return Err(GpuError::NoDevice(format!(
                 "ray tracing: ExternalDevice::ray_tracing is set but '{name}' lacks VK_KHR_ray_tracing_pipeline / VK_KHR_acceleration_structure / VK_KHR_deferred_host_operations / bufferDeviceAddress"
             )));
         }
-        if ray_query && !(ray_tracing && probe.ray_query) {
+        if ray_query && !probe.ray_query {
             return Err(GpuError::NoDevice(format!(
-                "ray queries: ExternalDevice::ray_query is set but '{name}' lacks VK_KHR_ray_query / rayQuery, or ExternalDevice::ray_tracing is not set"
+                "ray queries: ExternalDevice::ray_query is set but '{name}' lacks VK_KHR_ray_query / VK_KHR_acceleration_structure / VK_KHR_deferred_host_operations / rayQuery / bufferDeviceAddress"
             )));
         }
         Self::assemble(external, probe, None, Box::default())
@@ -461,8 +473,8 @@ impl Gpu {
             ray_tracing,
             ray_query,
         } = handles;
-        let limits = probe.ray_tracing.filter(|_| ray_tracing);
-        let ray_query = ray_query && limits.is_some() && probe.ray_query;
+        let (pipelines, ray_query) = (ray_tracing && probe.pipelines, ray_query && probe.ray_query);
+        let limits = probe.ray_tracing.filter(|_| pipelines || ray_query);
         let fail = |e: GpuError| {
             if let Some(owned) = &owned {
                 unsafe { owned.destroy(Some(&device), &instance) };
@@ -496,7 +508,7 @@ impl Gpu {
         let ray_tracing = limits.map(|limits| RayTracing {
             limits,
             acceleration: khr::acceleration_structure::Device::new(&instance, &device),
-            pipelines: khr::ray_tracing_pipeline::Device::new(&instance, &device),
+            pipelines: pipelines.then(|| khr::ray_tracing_pipeline::Device::new(&instance, &device)),
         });
         let families = unsafe { instance.get_physical_device_queue_family_properties(physical_device) };
         let graphics =
@@ -546,24 +558,28 @@ impl Gpu {
             ));
         };
         let probe = DeviceProbe::new(instance, pd, hidden)?;
-        let ray_tracing = probe.ray_tracing.is_some();
+        let accel = probe.ray_tracing.is_some();
         let priorities = [1.0];
         let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
         let mut f12 = vk::PhysicalDeviceVulkan12Features::default()
             .vulkan_memory_model(true)
             .vulkan_memory_model_device_scope(true)
-            .buffer_device_address(ray_tracing);
+            .buffer_device_address(accel);
         let mut f13 =
             vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(true).maintenance4(core.maintenance4);
         let mut as_enable = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default().acceleration_structure(true);
         let mut rt_enable = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default().ray_tracing_pipeline(true);
         let mut rq_enable = vk::PhysicalDeviceRayQueryFeaturesKHR::default().ray_query(true);
-        let rt_names = [
-            khr::acceleration_structure::NAME.as_ptr(),
-            khr::ray_tracing_pipeline::NAME.as_ptr(),
-            khr::deferred_host_operations::NAME.as_ptr(),
-            khr::ray_query::NAME.as_ptr(),
-        ];
+        let mut names = Vec::new();
+        if accel {
+            names.extend([khr::acceleration_structure::NAME.as_ptr(), khr::deferred_host_operations::NAME.as_ptr()]);
+        }
+        if probe.pipelines {
+            names.push(khr::ray_tracing_pipeline::NAME.as_ptr());
+        }
+        if probe.ray_query {
+            names.push(khr::ray_query::NAME.as_ptr());
+        }
         // Fragment-shader atomics: the raster SD map writes its samples with atomic min.
         let supported = unsafe { instance.get_physical_device_features(pd) };
         let core_features = vk::PhysicalDeviceFeatures::default()
@@ -573,12 +589,15 @@ impl Gpu {
             .enabled_features(&core_features)
             .push_next(&mut f12)
             .push_next(&mut f13);
-        if ray_tracing {
-            let names = &rt_names[..if probe.ray_query { 4 } else { 3 }];
-            create = create.enabled_extension_names(names).push_next(&mut as_enable).push_next(&mut rt_enable);
-            if probe.ray_query {
-                create = create.push_next(&mut rq_enable);
-            }
+        create = create.enabled_extension_names(&names);
+        if accel {
+            create = create.push_next(&mut as_enable);
+        }
+        if probe.pipelines {
+            create = create.push_next(&mut rt_enable);
+        }
+        if probe.ray_query {
+            create = create.push_next(&mut rq_enable);
         }
         let device = unsafe { instance.create_device(pd, &create, None)? };
         Ok((pd, device, family, probe))
@@ -587,11 +606,11 @@ impl Gpu {
     /// Does the device run ray-tracing pipelines (`VK_KHR_ray_tracing_pipeline` and
     /// `VK_KHR_acceleration_structure`, enabled at creation)?
     pub fn has_ray_tracing(&self) -> bool {
-        self.ray_tracing.is_some()
+        self.ray_tracing.as_ref().is_some_and(|rt| rt.pipelines.is_some())
     }
 
-    /// Does the device run ray-query kernels (`VK_KHR_ray_query` and `rayQuery`, enabled at
-    /// creation, besides ray tracing)?
+    /// Does the device run ray-query kernels (`VK_KHR_ray_query`, `rayQuery` and the
+    /// acceleration structures, enabled at creation; no ray-tracing pipeline needed)?
     pub fn has_ray_query(&self) -> bool {
         self.ray_query
     }
@@ -605,11 +624,9 @@ impl Gpu {
     /// (or features) it lacks — for callers to check before they record any GPU work.
     pub fn require_rays(&self, mode: aokit_shaders::graph::RtMode) -> Result<(), GpuError> {
         use aokit_shaders::graph::RtMode;
-        // aokit's host enables ray queries only beside ray-tracing pipelines (`has_ray_query`):
-        // the query mode needs every extension of `RT_EXTENSIONS`.
         let (ok, needed) = match mode {
-            RtMode::Pipeline => (self.has_ray_tracing(), &[0, 1, 3][..]),
-            RtMode::Query => (self.has_ray_query(), &[0, 1, 2, 3][..]),
+            RtMode::Pipeline => (self.has_ray_tracing(), [0, 1, 3]),
+            RtMode::Query => (self.has_ray_query(), [0, 2, 3]),
         };
         if ok {
             return Ok(());
@@ -647,14 +664,23 @@ impl Gpu {
         )))
     }
 
-    /// The ray-tracing entry points, or a clear error naming what the device lacks.
+    /// The acceleration-structure entry points, or a clear error naming what the device lacks.
     pub(crate) fn ray_tracing(&self) -> Result<&RayTracing, GpuError> {
         self.ray_tracing.as_ref().ok_or_else(|| {
             GpuError::NoDevice(format!(
-                "ray tracing: '{}' lacks VK_KHR_ray_tracing_pipeline / VK_KHR_acceleration_structure / bufferDeviceAddress",
+                "acceleration structures: '{}' lacks VK_KHR_acceleration_structure / VK_KHR_deferred_host_operations / bufferDeviceAddress, or both VK_KHR_ray_tracing_pipeline and VK_KHR_ray_query",
                 self.info.name
             ))
         })
+    }
+
+    /// The ray-tracing-pipeline entry points, or a clear error naming what the device lacks.
+    pub(crate) fn ray_pipelines(&self) -> Result<(&RayTracing, &khr::ray_tracing_pipeline::Device), GpuError> {
+        let rt = self.ray_tracing()?;
+        let pipelines = rt.pipelines.as_ref().ok_or_else(|| {
+            GpuError::NoDevice(format!("ray-tracing pipelines: '{}' lacks VK_KHR_ray_tracing_pipeline", self.info.name))
+        })?;
+        Ok((rt, pipelines))
     }
 
     /// The chosen device.

@@ -329,7 +329,7 @@ impl RtPipeline {
         shaders: [(&[u8], &std::ffi::CStr); 3],
         bindings: Vec<vk::DescriptorType>,
     ) -> Result<Self, GpuError> {
-        let rt = gpu.ray_tracing()?;
+        let (rt, pipelines) = gpu.ray_pipelines()?;
         let d = &gpu.device;
         let stages_all = vk::ShaderStageFlags::RAYGEN_KHR | vk::ShaderStageFlags::ANY_HIT_KHR;
         unsafe {
@@ -371,7 +371,7 @@ impl RtPipeline {
                 .groups(&groups)
                 .max_pipeline_ray_recursion_depth(1)
                 .layout(layout);
-            let created = rt.pipelines.create_ray_tracing_pipelines(
+            let created = pipelines.create_ray_tracing_pipelines(
                 vk::DeferredOperationKHR::null(),
                 vk::PipelineCache::null(),
                 &[info],
@@ -387,7 +387,7 @@ impl RtPipeline {
                 (limits.handle_size as u64, limits.handle_alignment as u64, limits.base_alignment as u64);
             let stride = hs.next_multiple_of(ha);
             let region = stride.next_multiple_of(ba);
-            let handles = rt.pipelines.get_ray_tracing_shader_group_handles(pipeline, 0, 3, 3 * hs as usize)?;
+            let handles = pipelines.get_ray_tracing_shader_group_handles(pipeline, 0, 3, 3 * hs as usize)?;
             let mut table = vec![0u8; (3 * region + ba) as usize];
             let sbt = gpu.create_buffer(
                 table.len() as u64,
@@ -416,13 +416,13 @@ impl RtPipeline {
         width: u32,
         height: u32,
     ) -> Result<(), GpuError> {
-        let rt = gpu.ray_tracing()?;
+        let (_, pipelines) = gpu.ray_pipelines()?;
         let d = &gpu.device;
         unsafe {
             d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::RAY_TRACING_KHR, self.pipeline);
             d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::RAY_TRACING_KHR, self.layout, 0, &[set], &[]);
             let [raygen, miss, hit] = &self.regions;
-            rt.pipelines.cmd_trace_rays(cb, raygen, miss, hit, &Default::default(), width, height, 1);
+            pipelines.cmd_trace_rays(cb, raygen, miss, hit, &Default::default(), width, height, 1);
         }
         Ok(())
     }
