@@ -9,29 +9,139 @@ pub mod procedural;
 
 use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_shaders::glam::{Vec2, Vec3};
+use std::fmt;
+use std::io::{self, Read};
 use std::path::{Path, PathBuf};
 
-/// Why a scene could not be loaded. Every variant names the file.
-#[derive(Debug, thiserror::Error)]
+/// Why a scene could not be loaded. Every variant names the file, and the message
+/// ([`Display`](fmt::Display)) is always one line: line breaks and control characters in the
+/// parsers' messages are folded, and overlong messages are shortened.
+#[derive(Debug)]
 pub enum SceneError {
-    #[error("{path}: {source}")]
     Io { path: PathBuf, source: std::io::Error },
-    #[error("{path}: malformed {format} file: {problem}")]
     Malformed { path: PathBuf, format: &'static str, problem: String },
-    #[error("{path}: unsupported scene format (expected .obj, .gltf, .glb, .ply or .ply.gz)")]
     UnknownFormat { path: PathBuf },
-    #[error("{path}: the scene has no triangles")]
     Empty { path: PathBuf },
-    #[error("{path}: vertex {index} has a non-finite coordinate {value:?}")]
     NonFinite { path: PathBuf, index: usize, value: [f32; 3] },
-    #[error("cannot fetch built-in scene '{scene}': {problem}")]
     Fetch { scene: String, problem: String },
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let text = match self {
+            SceneError::Io { path, source } => format!("{}: {source}", path.display()),
+            SceneError::Malformed { path, format, problem } => {
+                format!("{}: malformed {format} file: {problem}", path.display())
+            }
+            SceneError::UnknownFormat { path } => {
+                format!("{}: unsupported scene format (expected .obj, .gltf, .glb, .ply or .ply.gz)", path.display())
+            }
+            SceneError::Empty { path } => format!("{}: the scene has no triangles", path.display()),
+            SceneError::NonFinite { path, index, value } => {
+                format!("{}: vertex {index} has a non-finite coordinate {value:?}", path.display())
+            }
+            SceneError::Fetch { scene, problem } => format!("cannot fetch built-in scene '{scene}': {problem}"),
+        };
+        f.write_str(&one_line(&text))
+    }
+}
+
+impl std::error::Error for SceneError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            SceneError::Io { source, .. } => Some(source),
+            _ => None,
+        }
+    }
 }
 
 impl SceneError {
     fn malformed(path: &Path, format: &'static str, problem: impl ToString) -> Self {
         SceneError::Malformed { path: path.to_path_buf(), format, problem: problem.to_string() }
     }
+}
+
+/// The longest message [`SceneError`] prints, in characters.
+const MAX_MESSAGE_CHARS: usize = 400;
+
+/// `text` on one line: runs of whitespace that contain a line break become "; ", other control
+/// characters are escaped, and the result is cut at [`MAX_MESSAGE_CHARS`].
+fn one_line(text: &str) -> String {
+    let mut out = String::with_capacity(text.len().min(MAX_MESSAGE_CHARS + 8));
+    let mut chars = text.trim().chars().peekable();
+    let mut count = 0;
+    while let Some(c) = chars.next() {
+        if count >= MAX_MESSAGE_CHARS {
+            out.push('…');
+            break;
+        }
+        if c.is_whitespace() {
+            let mut line_break = c == '\n' || c == '\r';
+            while let Some(&n) = chars.peek().filter(|n| n.is_whitespace()) {
+                line_break |= n == '\n' || n == '\r';
+                chars.next();
+            }
+            if line_break {
+                // "problem.\n\tdetail" reads as "problem; detail".
+                while out.ends_with(['.', ':', ';', ' ']) {
+                    out.pop();
+                }
+                out.push_str("; ");
+            } else {
+                out.push(' ');
+            }
+        } else if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+        count += 1;
+    }
+    let kept = out.trim_end_matches([';', ' ']).len();
+    out.truncate(kept);
+    out
+}
+
+/// The scene file formats [`Scene::from_bytes`] parses.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum SceneFormat {
+    /// Wavefront OBJ; `mtllib` files are read through the side-file reader.
+    Obj,
+    /// glTF 2.0: JSON (`.gltf`) or binary (`.glb`), told apart by the `glTF` magic.
+    Gltf,
+    /// PLY, ascii or binary.
+    Ply,
+    /// Gzip-compressed PLY.
+    PlyGz,
+}
+
+impl SceneFormat {
+    /// The format a file name's extension names (case-insensitive): `.obj`, `.gltf`, `.glb`,
+    /// `.ply` or `.ply.gz`.
+    pub fn from_path(path: &Path) -> Option<SceneFormat> {
+        let name = path.file_name()?.to_string_lossy().to_ascii_lowercase();
+        if name.ends_with(".obj") {
+            Some(SceneFormat::Obj)
+        } else if name.ends_with(".gltf") || name.ends_with(".glb") {
+            Some(SceneFormat::Gltf)
+        } else if name.ends_with(".ply") {
+            Some(SceneFormat::Ply)
+        } else if name.ends_with(".ply.gz") {
+            Some(SceneFormat::PlyGz)
+        } else {
+            None
+        }
+    }
+}
+
+/// Reads a file a scene refers to (an OBJ's `mtllib`, a glTF's external buffers and images) by
+/// the name written in the scene: [`Scene::load`] resolves it against the scene's folder.
+pub type SideFiles<'a> = &'a dyn Fn(&Path) -> io::Result<Vec<u8>>;
+
+/// A [`SideFiles`] reader for scenes held in memory that have no files beside them: every
+/// referenced file is "not found" (a missing .mtl is not fatal; a missing glTF buffer is).
+pub fn no_side_files(name: &Path) -> io::Result<Vec<u8>> {
+    Err(io::Error::new(io::ErrorKind::NotFound, format!("{} is not available", name.display())))
 }
 
 /// An alpha mask (glTF `alphaMode: MASK`): texels with alpha below `cutoff` are cut out.
@@ -64,18 +174,31 @@ pub struct Scene {
 }
 
 impl Scene {
-    /// Load a scene file, choosing the parser by extension.
+    /// Load a scene file, choosing the parser by extension ([`SceneFormat::from_path`]).
+    /// Files the scene refers to are read from its folder.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
-        let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-        let lower = name.to_ascii_lowercase();
-        let scene = if lower.ends_with(".obj") {
-            obj_file::load(path)?
-        } else if lower.ends_with(".gltf") || lower.ends_with(".glb") {
-            gltf_file::load(path)?
-        } else if lower.ends_with(".ply") || lower.ends_with(".ply.gz") {
-            ply_file::load(path)?
-        } else {
-            return Err(SceneError::UnknownFormat { path: path.to_path_buf() });
+        let format = SceneFormat::from_path(path).ok_or_else(|| SceneError::UnknownFormat { path: path.into() })?;
+        let bytes = read_file(path)?;
+        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        Scene::from_bytes(format, path, &bytes, &|name: &Path| read_regular_file(&dir.join(name)))
+    }
+
+    /// Parse a scene held in memory: what [`Scene::load`] does after reading the file. `path`
+    /// only names the scene in errors (and in [`Scene::name`]); the files the scene refers to are
+    /// asked of `side_files` ([`no_side_files`] when there are none). Any byte sequence gives
+    /// either a validated scene or an error: counts in headers are checked against the bytes
+    /// present before anything is allocated for them.
+    pub fn from_bytes(
+        format: SceneFormat,
+        path: &Path,
+        bytes: &[u8],
+        side_files: SideFiles,
+    ) -> Result<Scene, SceneError> {
+        let scene = match format {
+            SceneFormat::Obj => obj_file::load_bytes(path, bytes, side_files)?,
+            SceneFormat::Gltf => gltf_file::load_bytes(path, bytes, side_files)?,
+            SceneFormat::Ply => ply_file::load_bytes(path, bytes)?,
+            SceneFormat::PlyGz => ply_file::load_gz_bytes(path, bytes)?,
         };
         scene.validated(path)
     }
@@ -183,6 +306,22 @@ impl Scene {
     }
 }
 
+/// Read a scene file; directories, devices and pipes are refused (a `/dev/zero` would never end).
 fn read_file(path: &Path) -> Result<Vec<u8>, SceneError> {
-    std::fs::read(path).map_err(|source| SceneError::Io { path: path.to_path_buf(), source })
+    read_regular_file(path).map_err(|source| SceneError::Io { path: path.to_path_buf(), source })
+}
+
+fn read_regular_file(path: &Path) -> io::Result<Vec<u8>> {
+    // stat before opening: opening a named pipe would block.
+    let meta = std::fs::metadata(path)?;
+    if meta.is_dir() {
+        return Err(io::Error::new(io::ErrorKind::IsADirectory, "is a directory, not a scene file"));
+    }
+    if !meta.is_file() {
+        return Err(io::Error::new(io::ErrorKind::InvalidInput, "not a regular file"));
+    }
+    let mut file = std::fs::File::open(path)?;
+    let mut bytes = Vec::with_capacity(meta.len().try_into().unwrap_or(0));
+    file.read_to_end(&mut bytes)?;
+    Ok(bytes)
 }
