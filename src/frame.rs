@@ -113,7 +113,8 @@ impl Frame {
         if req.width == 0 || req.height == 0 {
             return Err(FrameError::ZeroSize(req.width, req.height));
         }
-        if req.width.max(req.height) + 2 * req.guard > 16384 {
+        // In u64: a guard band near u32::MAX must not wrap past the check.
+        if req.width.max(req.height) as u64 + 2 * req.guard as u64 > 16384 {
             return Err(FrameError::TooLarge(req.width, req.height, req.guard));
         }
         let bounds = scene.bounds();
