@@ -202,3 +202,17 @@ fn instanced_grid_copies_the_scene() {
     }
     assert!(s.instanced_grid(3).is_err());
 }
+
+/// The scaling study's instancing refuses, on one line and before allocating, a grid the machine
+/// cannot hold (63245² copies of the Cornell box: ~1.4·10¹¹ triangles), instead of aborting.
+#[test]
+fn instancing_beyond_memory_is_refused_before_allocating() {
+    let scene = builtin::find("cornell").unwrap().load().unwrap();
+    let copies = 63245 * 63245;
+    let start = std::time::Instant::now();
+    let Err(e) = scene.instanced_grid(copies) else { panic!("no machine holds this grid") };
+    assert!(e.contains("copies of cornell") && e.contains("MiB of memory available") && !e.contains('\n'), "{e}");
+    assert!(start.elapsed().as_secs_f64() < 1.0, "refused only after {:?}", start.elapsed());
+    // A grid that fits is still built.
+    assert_eq!(scene.instanced_grid(4).unwrap().triangles.len(), 4 * scene.triangles.len());
+}

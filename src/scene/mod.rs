@@ -243,6 +243,21 @@ impl Scene {
         if side < 1 || (side * side) as u32 != copies {
             return Err(format!("{copies} copies do not form a square grid (use 1, 4, 16, 64, …)"));
         }
+        // Refuse before allocating what the machine cannot hold (an abort otherwise): the
+        // triangles, their tables, the CPU BVH and a Vulkan BLAS take about this much each.
+        const BYTES_PER_TRIANGLE: u64 = 400;
+        let triangles = self.triangles.len() as u64 * copies as u64;
+        let needed = triangles * BYTES_PER_TRIANGLE;
+        if let Some(available) = available_memory()
+            && needed > available
+        {
+            return Err(format!(
+                "{copies} copies of {} ({triangles} triangles) need about {} MiB, more than the {} MiB of memory available",
+                self.name,
+                needed >> 20,
+                available >> 20
+            ));
+        }
         let (lo, hi) = self.bounds();
         let step = (hi - lo) * 1.25;
         let mut out =
@@ -324,4 +339,12 @@ fn read_regular_file(path: &Path) -> io::Result<Vec<u8>> {
     let mut bytes = Vec::with_capacity(meta.len().try_into().unwrap_or(0));
     file.read_to_end(&mut bytes)?;
     Ok(bytes)
+}
+
+/// `MemAvailable` of `/proc/meminfo` in bytes (Linux); `None` where it cannot be read.
+fn available_memory() -> Option<u64> {
+    let info = std::fs::read_to_string("/proc/meminfo").ok()?;
+    let line = info.lines().find(|l| l.starts_with("MemAvailable:"))?;
+    let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
+    Some(kib * 1024)
 }
