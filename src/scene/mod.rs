@@ -240,7 +240,7 @@ impl Scene {
     /// image as long as the copies stay out of view. `copies` must be a square (1, 4, 16, 64…).
     pub fn instanced_grid(&self, copies: u32) -> Result<Scene, String> {
         let side = (copies as f64).sqrt().round() as i32;
-        if side < 1 || (side * side) as u32 != copies {
+        if side < 1 || side as u64 * side as u64 != copies as u64 {
             return Err(format!("{copies} copies do not form a square grid (use 1, 4, 16, 64, …)"));
         }
         // Refuse before allocating what the machine cannot hold (an abort otherwise): the
