@@ -59,7 +59,16 @@ fn chi2_p_value_matches_tabulated_quantiles() {
 }
 
 fn payload(layers: u32, max_count: u32) -> SdPayload {
-    SdPayload { depth: [1.0; MAX_LAYERS], count: 0, layers, max_count, cos_theta: 1.0, near: 0.0, far: 1.0 }
+    SdPayload {
+        depth: [1.0; MAX_LAYERS],
+        count: 0,
+        layers,
+        max_count,
+        cos_theta: 1.0,
+        near: 0.0,
+        far: 1.0,
+        rotation: 0.0,
+    }
 }
 
 /// Spec §7.3 / issue: with z-cull out of play (every new hit nearer than all before), hit `k`
@@ -300,13 +309,21 @@ fn sd_frame(frame: &aokit::frame::Frame, divisor: u32) -> aokit_shaders::svao::S
 /// texel's interval is exactly the hull of its samples' needed ranges (within 1e-5 relative),
 /// and no texel without a flagged sample is requested — so an interval of [0, ∞) anywhere, or
 /// requests for texels nobody reads, fail.
+/// At the default ¼ resolution and at the ⅛ and 1/16 rows (their 64/32-texel SD guard bands).
 #[test]
 fn every_depth_pass_2_needs_lies_inside_the_texel_interval() {
+    for divisor in [4, 8, 16] {
+        pass_2_needs_lie_inside_the_texel_interval(divisor);
+    }
+}
+
+fn pass_2_needs_lie_inside_the_texel_interval(divisor: u32) {
     use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
     let (scene, frame) = common::builtin_frame("sponza", 192, 108, 32);
     let renderer = CpuRenderer::new(&scene);
     let (g, _) = renderer.gbuffer(&frame, &aokit_cpu::no_progress);
-    let svao = sd_frame(&frame, 4);
+    let svao = sd_frame(&frame, divisor);
+    assert_eq!(svao.params.sd_guard, 512 / divisor, "SD guard band floor(512/div) (spec §3)");
     let params: &SvaoParams = &svao.params;
     let pass1 = run_pass1(params, &g.depth, &g.normals, &[], &aokit_cpu::no_progress);
     let view = &params.vao.view;

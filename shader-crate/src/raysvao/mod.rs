@@ -1,6 +1,7 @@
 //! Ray-SVAO / RT-VAO (spec svao-raysd §10), the Ray-SD paper's reference: pass 2 traces one
 //! ray per flagged sample from the camera through the sample's snapped texel and finds every
-//! surface that matters for the halo model on that line.
+//! surface that matters for the halo model on that line — or, with the HBAO+ kernel (§4.5,
+//! §10 "HBAO kernel"), the first surface inside the sphere.
 
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
@@ -15,12 +16,16 @@ use crate::common::any_hit::CandidateHit;
 use crate::common::camera::Camera;
 use crate::common::math::sat;
 use crate::glam::Vec3;
+use crate::svao::pass1::combine;
 use crate::svao::{Refined, SvaoParams};
-use crate::vao::kernel::{LineSample, PixelFrame, halo_visibility};
+use crate::vao::kernel::{KERNEL_HBAO, LineSample, PixelFrame, halo_visibility, hbao_occlusion};
 
 pub use crate::common::any_hit::{ACCEPT, ACCEPT_AND_END, IGNORE};
 
-/// The running ray distances of one sample's ray (spec §10), also its ray payload.
+/// The running ray distances of one sample's ray (spec §10), also its ray payload. With the
+/// HBAO+ kernel the halo branch is switched off (`t_halo` = 0, `t_sphere` = `t_const` = −1: no
+/// hit is ignored or treated as lying in front of the sphere), so [`sample_any_hit`] keeps the
+/// nearest hit in `t_inside`: §10's first hit on `[T(h), T(sphereEnd)]`.
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
@@ -35,12 +40,14 @@ pub struct SampleRayState {
     pub t_sphere: f32,
 }
 
-/// A sample's ray: world-space origin and unit direction, its interval, its state, and the
-/// lateral correction `κ = |S|/|P|` that maps ray distance to object-space z.
+/// A sample's ray: world-space origin and unit direction (and the direction in view space), its
+/// interval, its state, and the lateral correction `κ = |S|/|P|` that maps ray distance to
+/// object-space z.
 #[derive(Copy, Clone, Debug)]
 pub struct SampleRay {
     pub origin: Vec3,
     pub direction: Vec3,
+    pub view_direction: Vec3,
     pub t_min: f32,
     pub t_max: f32,
     pub state: SampleRayState,
@@ -49,7 +56,9 @@ pub struct SampleRay {
 
 /// Set up the ray of flagged sample `s` (spec §10): direction through `snap(uvS)` (not clamped),
 /// `T(z) = (|P| − z)·κ`; `tMin = max(tHalo, 0)`, `tMax = tInside`, and in screen `tMin` starts
-/// `0.01·R` behind the depth-buffer surface.
+/// `0.01·R` behind the depth-buffer surface. With the HBAO+ kernel the interval is
+/// `[max(T(h), 0), T(sphereEnd)]` (same in-screen raise) and the halo branch is off
+/// ([`SampleRayState`]).
 #[inline]
 pub fn sample_ray(
     camera: &Camera,
@@ -61,22 +70,29 @@ pub fn sample_ray(
     let view = &params.vao.view;
     let r = frame.radius;
     let snapped = ((s.uv * view.res).floor() + 0.5) / view.res;
-    let direction = camera.view_to_world.transform_vector3(view.uv_to_view(snapped, 1.0).normalize()).normalize();
+    let view_direction = view.uv_to_view(snapped, 1.0).normalize();
+    let direction = camera.view_to_world.transform_vector3(view_direction).normalize();
     let distance = frame.position.length();
     let kappa = s.point.length() / distance;
     let t = |z: f32| (distance - z) * kappa;
     let falloff_start = (1.0 + params.vao.thickness) * r;
-    let state = SampleRayState {
-        t_halo: t(falloff_start + s.half_chord),
-        t_inside: t(s.sphere_end),
-        t_const: t(falloff_start),
-        t_sphere: t(s.half_chord),
+    let (state, t_start) = if params.kernel == KERNEL_HBAO {
+        let off = SampleRayState { t_halo: 0.0, t_inside: t(s.sphere_end), t_const: -1.0, t_sphere: -1.0 };
+        (off, t(s.half_chord))
+    } else {
+        let state = SampleRayState {
+            t_halo: t(falloff_start + s.half_chord),
+            t_inside: t(s.sphere_end),
+            t_const: t(falloff_start),
+            t_sphere: t(s.half_chord),
+        };
+        (state, state.t_halo)
     };
-    let mut t_min = state.t_halo.max(0.0);
+    let mut t_min = t_start.max(0.0);
     if s.in_screen {
         t_min = t_min.max(t(z_primary) + 0.01 * r);
     }
-    SampleRay { origin: camera.eye(), direction, t_min, t_max: state.t_inside, state, kappa }
+    SampleRay { origin: camera.eye(), direction, view_direction, t_min, t_max: state.t_inside, state, kappa }
 }
 
 /// The Ray-SVAO any-hit (spec §10) for a hit at `t` that passed the alpha and facing tests:
@@ -114,10 +130,21 @@ impl CandidateHit for SampleHits<'_> {
     }
 }
 
-/// Visibility after the trace (spec §10): `min(v, v(Z(tInside)), vHaloOnly(Z(tHalo)))` with
-/// `Z(t) = |P| − t/κ`; `vHaloOnly` is the halo (second) term of spec §4.3.
+/// Value after the trace (spec §10): VAO `min(v, v(Z(tInside)), vHaloOnly(Z(tHalo)))` with
+/// `Z(t) = |P| − t/κ`, `vHaloOnly` the halo (second) term of spec §4.3; HBAO+ `max(v, o)` with
+/// `o` the occlusion (§4.5) of the first hit `dir·tFirst` (view space), `v` unchanged on a miss.
+/// (The reference evaluates a miss at `tFirst = 0`, the camera itself, which adds occlusion when
+/// the camera is within `R` of the pixel (§10); aokit counts a miss as nothing found.)
 #[inline]
 pub fn sample_visibility(frame: &PixelFrame, s: &LineSample, params: &SvaoParams, ray: &SampleRay, v: f32) -> f32 {
+    if params.kernel == KERNEL_HBAO {
+        // `t_inside` stays at tMax without a hit.
+        if ray.state.t_inside < ray.t_max {
+            let hit = ray.view_direction * ray.state.t_inside;
+            return combine(params, v, hbao_occlusion(frame, s, hit, params.vao.radius));
+        }
+        return v;
+    }
     let distance = frame.position.length();
     let z = |t: f32| distance - t / ray.kappa;
     let r = frame.radius;

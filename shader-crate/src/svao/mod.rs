@@ -56,10 +56,26 @@ pub struct SvaoParams {
     pub dual: u32,
     /// AO kernel: `KERNEL_VAO` (0) or `KERNEL_HBAO` (1) of `crate::vao::kernel` (spec §4.5).
     pub kernel: u32,
+    /// AO samples per pixel `N = 8·2^sample_set`: 0 → 8 [default], 1 → 16, 2 → 32 (spec §2;
+    /// larger values read as 2). Zero is the reference's 8, so a zero-filled record is valid.
+    pub sample_set: u32,
+    /// The frame's index in a sequence (0 for a single frame: the reference's noise): the SD
+    /// maps' randomness follows it — the reservoir hash and the raster coverage-mask hashes are
+    /// rotated by `crate::common::noise::frame_rotation`, the jitter index is offset (§7.2, §7.3,
+    /// §8). The VAO/HBAO+ kernels' 4×4 rotation (§4.1.1) is deterministic and does not.
+    pub noise_frame: u32,
+    pub _pad0: u32,
+    pub _pad1: u32,
     pub _pad2: u32,
 }
 
 impl SvaoParams {
+    /// AO samples per pixel `N` of both passes: 8, 16 or 32 (spec §2, §4.2; [`SvaoParams::sample_set`]).
+    #[inline]
+    pub fn samples(&self) -> u32 {
+        crate::common::tables::AO_SAMPLES << self.sample_set.min(2)
+    }
+
     /// SD-map size including its guard band: `L + 2·sg` (spec §3).
     #[inline]
     pub fn sd_size(&self) -> UVec2 {

@@ -9,7 +9,6 @@ use crate::common::atomics::AtomicU32Buffer;
 use crate::common::float_order::ordered_bits;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::math::{clamp, sat};
-use crate::common::tables::AO_SAMPLES;
 use crate::glam::Vec3;
 use crate::glam::{UVec2, Vec2};
 use crate::vao::kernel::{
@@ -104,12 +103,13 @@ pub fn dropped_value(params: &SvaoParams) -> f32 {
     if params.kernel == KERNEL_HBAO { 0.0 } else { 1.0 }
 }
 
-/// The pixel accumulator from the samples' values: `A = (2/8)·Σv` (VAO) or `mean = (1/8)·Σo`
-/// (HBAO+); what pass 1 stores for flagged pixels.
+/// The pixel accumulator from the samples' values: `A = (2/N)·Σv` (VAO, spec §4.3) or
+/// `mean = (1/N)·Σo` (HBAO+, spec §4.5), `N` = 8, 16 or 32 samples; what pass 1 stores for
+/// flagged pixels.
 #[inline]
 pub fn accumulate(params: &SvaoParams, sum: f32) -> f32 {
     let scale = if params.kernel == KERNEL_HBAO { 1.0 } else { 2.0 };
-    scale / AO_SAMPLES as f32 * sum
+    scale / params.samples() as f32 * sum
 }
 
 /// Final AO from the accumulator: `sat(A)^exponent` (VAO) or `sat(1 − 2·mean)^exponent`
@@ -154,11 +154,12 @@ pub fn pass1_pixel<G: GBuffer, A: AtomicU32Buffer, B: AtomicU32Buffer>(
     let sd = params.secondary == Secondary::StochasticDepth as u32;
     let traced = params.secondary == Secondary::Raytraced as u32;
     let distance = frame.position.length();
+    let samples = params.samples();
     let mut sum = 0.0;
     let mut mask = 0u32;
     let mut i = 0;
-    while i < AO_SAMPLES {
-        let s = line_sample_of(&frame, view, i, params.kernel);
+    while i < samples {
+        let s = line_sample_of(&frame, view, i, samples, params.kernel);
         if s.valid {
             if s.same_pixel {
                 sum += unoccluded_value(params, &s);

@@ -6,7 +6,6 @@ use spirv_std::num_traits::Float;
 
 use super::SvaoParams;
 use crate::common::gbuffer_read::GBuffer;
-use crate::common::tables::AO_SAMPLES;
 use crate::glam::UVec2;
 use crate::vao::kernel::{LineSample, PixelFrame, line_sample_of, setup_pixel};
 
@@ -19,9 +18,10 @@ pub struct Refined {
 
 /// A secondary depth source: the SD map (spec §9) or traced rays (spec §10).
 pub trait Refine {
-    /// Visibility of flagged sample `s` given its starting value `v` (the primary-depth
-    /// visibility in screen, 1 for a dropped out-of-screen sample) and the primary depth's
-    /// object-space `z_primary`. Sources combine with `min` (spec §4.3 `a_i = min_j a_ij`).
+    /// Value of flagged sample `s` given its starting value `v` (the primary-depth value in
+    /// screen; for a dropped out-of-screen sample 1 with VAO, 0 with HBAO+) and the primary
+    /// depth's object-space `z_primary`. Sources combine with the kernel's `combine`: `min` of
+    /// visibility for VAO (spec §4.3 `a_i = min_j a_ij`), `max` of occlusion for HBAO+ (§4.5).
     fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> Refined;
 }
 
@@ -33,7 +33,7 @@ pub struct Pass2Pixel {
 }
 
 /// AO pass 2 of pixel `p` (spec §9): for every flagged sample, subtract its pass-1 (primary)
-/// visibility and add the refined one; `A = AO_stored + (2/8)·Δ`, clamped to [0, 1] before the
+/// visibility and add the refined one; `A = AO_stored + (2/N)·Δ`, clamped to [0, 1] before the
 /// exponent (spec §9: `A` may dip below 0 through the UNORM8 store). Pixels without flags keep
 /// their pass-1 value.
 #[inline]
@@ -56,11 +56,12 @@ pub fn pass2_pixel<G: GBuffer, R: Refine>(
         Some(f) => f,
         None => return unchanged,
     };
+    let samples = params.samples();
     let (mut delta, mut rays) = (0.0, 0);
     let mut i = 0;
-    while i < AO_SAMPLES {
+    while i < samples {
         if mask & (1 << i) != 0 {
-            let s = line_sample_of(&frame, view, i, params.kernel);
+            let s = line_sample_of(&frame, view, i, samples, params.kernel);
             let (z, v) = super::primary_sample(gbuffer, depth2, params, &frame, &s);
             delta -= v;
             // Out of screen the clamped border texel is dropped (spec §9, §15.8).

@@ -6,7 +6,7 @@
 use super::{Secondary, SvaoFrame, SvaoParams};
 use crate::blur::graph::blur_passes;
 use crate::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
-use crate::common::tables::JitterTable;
+use crate::common::tables::{AO_SAMPLES, JitterTable, KERNEL_SAMPLE_COUNTS};
 use crate::glam::{UVec2, uvec2};
 use crate::graph::{
     Access, Binding, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, PassKind, RAY_COUNT, Resource, Size,
@@ -20,8 +20,10 @@ use crate::vao::settings::vao_params;
 /// in brackets).
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct SvaoSettings {
-    /// SD-map resolution divisor: 1 (full), 2 (½) or 4 (¼) [4].
+    /// SD-map resolution divisor: 1 (full), 2 (½), 4 (¼), 8 (⅛) or 16 (1/16) [4] (spec §2).
     pub divisor: u32,
+    /// AO samples per pixel N of both AO passes: 8, 16 or 32 [8] (spec §2, §4.2).
+    pub samples: u32,
     /// Layers N: 1, 2, 4 or 8 [4].
     pub layers: u32,
     /// MAX_COUNT of the reservoir any-hit; raised to N when smaller [8].
@@ -50,6 +52,7 @@ impl Default for SvaoSettings {
     fn default() -> Self {
         SvaoSettings {
             divisor: 4,
+            samples: AO_SAMPLES,
             layers: 4,
             max_count: 8,
             cutoff: 6.0,
@@ -71,10 +74,8 @@ pub fn sd_low_res(full: UVec2, divisor: u32) -> UVec2 {
 
 impl Settings for SvaoSettings {
     const ROWS: &'static [Setting<Self>] = &[
-        Setting::<Self>::choice("sd-res", &["full", "half", "quarter"], |s| sd_res_index(s.divisor), |s, i| {
-            s.divisor = 1 << i
-        })
-        .help("Ray-SD map resolution (divisor 1, 2, 4; spec svao-raysd §3)"),
+        Setting::<Self>::choice("sd-res", &SD_RES_NAMES, |s| sd_res_index(s.divisor), |s, i| s.divisor = 1 << i)
+            .help("SD map resolution (divisor 1, 2, 4, 8, 16; spec svao-raysd §2, §3)"),
         Setting::<Self>::count("sd-layers", 1, 8, |s| &mut s.layers).help("SD layers N: 1, 2, 4 or 8 (spec svao-raysd §7)"),
         Setting::<Self>::count("max-count", 1, 1024, |s| &mut s.max_count)
             .help("Reservoir MAX_COUNT of the SD any-hit (raised to N when smaller; spec svao-raysd §7)"),
@@ -97,11 +98,21 @@ impl Settings for SvaoSettings {
             .help("AO kernel: VAO's halo model, or HBAO+ with the radius × 1.5 (spec svao-raysd §4.5)"),
         Setting::<Self>::switch("sd-source", &["ray", "raster"], |s| &mut s.raster)
             .help("SD map: ray-traced, or the raster coverage-mask baseline (spec svao-raysd §8)"),
+        Setting::<Self>::choice("ao-samples", &["8", "16", "32"], |s| sample_set(s.samples) as usize, |s, i| {
+            s.samples = AO_SAMPLES << i
+        })
+        .help("AO samples per pixel N of the VAO/HBAO+ kernel: ψ = VdC(N + i) (spec svao-raysd §2, §4.2, §4.5)"),
     ];
 
     fn check(&self) -> Result<(), String> {
-        if ![1, 2, 4].contains(&self.divisor) {
-            return Err(format!("--sd-res: divisor {} is not 1 (full), 2 (half) or 4 (quarter)", self.divisor));
+        if !(self.divisor.is_power_of_two() && self.divisor <= 16) {
+            return Err(format!(
+                "--sd-res: divisor {} is not 1 (full), 2 (half), 4 (quarter), 8 (eighth) or 16 (sixteenth)",
+                self.divisor
+            ));
+        }
+        if !KERNEL_SAMPLE_COUNTS.contains(&self.samples) {
+            return Err(format!("--ao-samples {} is not 8, 16 or 32", self.samples));
         }
         if !self.layers.is_power_of_two() {
             return Err(format!("--sd-layers {} is not 1, 2, 4 or 8", self.layers));
@@ -110,12 +121,21 @@ impl Settings for SvaoSettings {
     }
 }
 
-/// The index of an SD divisor in `full|half|quarter` (3 = none of them).
+/// The `sd-res` names of the SD divisors 1, 2, 4, 8, 16 (spec §2), in that order.
+const SD_RES_NAMES: [&str; 5] = ["full", "half", "quarter", "eighth", "sixteenth"];
+
+/// The index of an SD divisor in [`SD_RES_NAMES`] (5 = none of them).
 fn sd_res_index(divisor: u32) -> usize {
     match divisor {
-        1 => 0,
-        2 => 1,
-        4 => 2,
+        1 | 2 | 4 | 8 | 16 => divisor.trailing_zeros() as usize,
+        _ => SD_RES_NAMES.len(),
+    }
+}
+
+/// `SvaoParams::sample_set` of a sample count: 8 → 0, 16 → 1, 32 → 2 (3 = none of them).
+fn sample_set(samples: u32) -> u32 {
+    match samples {
+        8 | 16 | 32 => (samples / AO_SAMPLES).trailing_zeros(),
         _ => 3,
     }
 }
@@ -147,22 +167,22 @@ pub const SVAO: &[Constant] = &[
     Constant::new("SvaoParams.vao", "VaoParams as for vao_main (VaoParams rows: radius R·1.5 when `kernel` = hbao)"),
     Constant::new(
         "SvaoParams.secondary",
-        "Secondary, fixed by the technique: 0 Disabled (hbao, and vao with dual depth or the HBAO+ kernel: \
-         pass 1 alone finalizes every pixel), 1 StochasticDepth (raysd, hbao-sd, sdsvao: pass 2 reads the SD \
+        "Secondary, fixed by the technique: 0 Disabled (hbao, and vao with dual depth, the HBAO+ kernel or \
+         16/32 `ao-samples`: pass 1 alone finalizes every pixel), 1 StochasticDepth (raysd, hbao-sd, sdsvao: pass 2 reads the SD \
          map), 2 Raytraced (raysvao: one ray per flagged sample)",
     ),
     Constant::new("SvaoParams.interval", "`interval`: off 0, on 1 [on]"),
     Constant::new("SvaoParams.cutoff", "`cutoff`: radius cutoff in full-resolution pixels [6]"),
     Constant::new(
         "SvaoParams.sd_guard",
-        "SD guard band in SD texels: floor(`sd-guard`/div), div = 1, 2, 4 for `sd-res` full, half, quarter \
-         [floor(512/4) = 128]; 0 when `sd-source` = raster (always in sdsvao) and without an SD map \
+        "SD guard band in SD texels: floor(`sd-guard`/div), div = 1, 2, 4, 8, 16 for `sd-res` full, half, \
+         quarter, eighth, sixteenth [floor(512/4) = 128]; 0 when `sd-source` = raster (always in sdsvao) and without an SD map \
          (Secondary ≠ 1)",
     ),
     Constant::new(
         "SvaoParams.sd_low_res",
-        "(ceil(W/div), ceil(H/div)) SD texels, div = 1, 2, 4 for `sd-res` full, half, quarter [4], W×H the \
-         full target incl. its guard band; (1, 1) without an SD map (Secondary ≠ 1)",
+        "(ceil(W/div), ceil(H/div)) SD texels, div = 1, 2, 4, 8, 16 for `sd-res` full, half, quarter, \
+         eighth, sixteenth [4], W×H the full target incl. its guard band; (1, 1) without an SD map (Secondary ≠ 1)",
     ),
     Constant::new("SvaoParams.sd_layers", "N = `sd-layers` [4]"),
     Constant::new("SvaoParams.max_count", "max(`max-count`, `sd-layers`) [max(8, 4) = 8]"),
@@ -173,6 +193,17 @@ pub const SVAO: &[Constant] = &[
     ),
     Constant::new("SvaoParams.dual", "`primary`: single 0, dual 1 [single 0]"),
     Constant::new("SvaoParams.kernel", "`kernel`: vao 0 (KERNEL_VAO), hbao 1 (KERNEL_HBAO); hbao and hbao-sd: 1"),
+    Constant::new(
+        "SvaoParams.sample_set",
+        "`ao-samples`: 8 → 0, 16 → 1, 32 → 2 (N = 8·2^sample_set samples per pixel) [8 → 0]",
+    ),
+    Constant::new(
+        "SvaoParams.noise_frame",
+        "the frame index (FrameDesc::frame_index; 0 for a single frame): rotates the SD maps' hashes by \
+         frame_rotation(f mod 64) and offsets the jitter index by f mod 16",
+    ),
+    Constant::new("SvaoParams._pad0", "0"),
+    Constant::new("SvaoParams._pad1", "0"),
     Constant::new("SvaoParams._pad2", "0"),
     Constant::new(
         "RasterParams.world_to_view",
@@ -208,7 +239,7 @@ fn refined_by_rays(s: &SvaoSettings, frame: &FrameDesc) -> Result<Graph, String>
 pub static HBAO: Declaration<SvaoSettings> = stenciled(
     "hbao",
     "HBAO+ kernel on single or dual depth, no refinement (spec svao-raysd §4.5, §11)",
-    &["primary", "peel-separation"],
+    &["primary", "peel-separation", "ao-samples"],
     || SvaoSettings { hbao: true, ..Default::default() },
     unrefined,
 );
@@ -229,6 +260,7 @@ pub static RAYSD: Declaration<SvaoSettings> = stenciled(
         "peel-separation",
         "kernel",
         "sd-source",
+        "ao-samples",
     ],
     SvaoSettings::default,
     refined_by_sd_map,
@@ -238,7 +270,18 @@ pub static RAYSD: Declaration<SvaoSettings> = stenciled(
 pub static HBAO_SD: Declaration<SvaoSettings> = stenciled(
     "hbao-sd",
     "Ray-SD with the HBAO+ kernel (spec svao-raysd §4.5, §9)",
-    &["sd-res", "sd-layers", "max-count", "cutoff", "interval", "jitter", "sd-guard", "primary", "peel-separation"],
+    &[
+        "sd-res",
+        "sd-layers",
+        "max-count",
+        "cutoff",
+        "interval",
+        "jitter",
+        "sd-guard",
+        "primary",
+        "peel-separation",
+        "ao-samples",
+    ],
     || SvaoSettings { hbao: true, ..Default::default() },
     refined_by_sd_map,
 );
@@ -248,16 +291,17 @@ pub static HBAO_SD: Declaration<SvaoSettings> = stenciled(
 pub static SDSVAO: Declaration<SvaoSettings> = stenciled(
     "sdsvao",
     "stenciled VAO refined from the raster coverage-mask SD map (spec svao-raysd §8)",
-    &["sd-res", "sd-layers", "max-count", "cutoff", "interval", "primary", "peel-separation", "kernel"],
+    &["sd-res", "sd-layers", "max-count", "cutoff", "interval", "primary", "peel-separation", "kernel", "ao-samples"],
     || SvaoSettings { raster: true, ..Default::default() },
     refined_by_sd_map,
 );
 
-/// Stenciled VAO refined by one ray per flagged sample (spec svao-raysd §10), the Ray-SD reference.
+/// Stenciled VAO refined by one ray per flagged sample (spec svao-raysd §10), the Ray-SD reference;
+/// with `kernel` = hbao the HBAO+ variant (first hit per ray, max combination, §4.5, §10).
 pub static RAYSVAO: Declaration<SvaoSettings> = stenciled(
     "raysvao",
-    "stenciled VAO refined by one ray per flagged sample, the Ray-SD reference (spec svao-raysd §10)",
-    &["cutoff", "primary", "peel-separation"],
+    "stenciled VAO or HBAO+ refined by one ray per flagged sample, the Ray-SD reference (spec svao-raysd §10)",
+    &["cutoff", "primary", "peel-separation", "kernel", "ao-samples"],
     SvaoSettings::default,
     refined_by_rays,
 );
@@ -289,6 +333,10 @@ impl SvaoSettings {
                 jitter: if self.raster { JitterTable::None as u32 } else { self.jitter as u32 },
                 dual: self.dual as u32,
                 kernel: if self.hbao { KERNEL_HBAO } else { KERNEL_VAO },
+                sample_set: sample_set(self.samples),
+                noise_frame: frame.frame_index,
+                _pad0: 0,
+                _pad1: 0,
                 _pad2: 0,
             },
         }

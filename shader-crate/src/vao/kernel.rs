@@ -7,7 +7,8 @@ use crate::common::ViewParams;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::math::{clamp, is_valid_depth, sat, sign_nonzero};
 use crate::common::tables::{
-    AO_SAMPLES, HBAO_HALF_CHORDS, HBAO_PDFS, HBAO_RADII, VAO_DIRECTIONS, VAO_HALF_CHORDS, VAO_RADII, rotation_sin_cos,
+    AO_SAMPLES, HBAO_HALF_CHORDS, HBAO_PDFS, HBAO_RADII, VAO_DIRECTIONS, VAO_HALF_CHORDS, VAO_RADII, kernel_entry,
+    rotation_sin_cos,
 };
 use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
 
@@ -146,23 +147,26 @@ pub const KERNEL_VAO: u32 = 0;
 /// The HBAO+ kernel (spec §4.5).
 pub const KERNEL_HBAO: u32 = 1;
 
-/// Build VAO sample `i` (spec §4.2).
+/// Build sample `i` of the 8-sample VAO kernel (spec §4.2).
 #[inline]
 pub fn line_sample(frame: &PixelFrame, view: &ViewParams, i: u32) -> LineSample {
-    line_sample_of(frame, view, i, KERNEL_VAO)
+    line_sample_of(frame, view, i, AO_SAMPLES, KERNEL_VAO)
 }
 
-/// Build sample `i` of `kernel` ([`KERNEL_VAO`] or [`KERNEL_HBAO`]): the kernels share the
-/// frame, disc directions, hemisphere clipping, validity and projection, and differ in the
-/// radii and weights (spec §4.5).
+/// Build sample `i` of the `samples`-sample (8, 16 or 32) `kernel` ([`KERNEL_VAO`] or
+/// [`KERNEL_HBAO`]): the kernels share the frame, disc directions `α = (i/N)·2·3.141`,
+/// hemisphere clipping, validity and projection, and differ in the radii and weights (spec
+/// §4.2, §4.5); every per-sample constant comes from the tables at
+/// [`kernel_entry`]`(samples, i)`.
 #[inline]
-pub fn line_sample_of(frame: &PixelFrame, view: &ViewParams, i: u32, kernel: u32) -> LineSample {
-    let dir = VAO_DIRECTIONS[i as usize];
+pub fn line_sample_of(frame: &PixelFrame, view: &ViewParams, i: u32, samples: u32, kernel: u32) -> LineSample {
+    let m = kernel_entry(samples, i);
+    let dir = VAO_DIRECTIONS[m];
     let hbao = kernel == KERNEL_HBAO;
-    let rho = if hbao { HBAO_RADII[i as usize] } else { VAO_RADII[i as usize] };
+    let rho = if hbao { HBAO_RADII[m] } else { VAO_RADII[m] };
     let offset = rho * frame.radius * vec2(dir[0], dir[1]);
-    let half_chord = if hbao { HBAO_HALF_CHORDS[i as usize] } else { VAO_HALF_CHORDS[i as usize] } * frame.radius;
-    let pdf = if hbao { HBAO_PDFS[i as usize] } else { 2.0 * half_chord };
+    let half_chord = if hbao { HBAO_HALF_CHORDS[m] } else { VAO_HALF_CHORDS[m] } * frame.radius;
+    let pdf = if hbao { HBAO_PDFS[m] } else { 2.0 * half_chord };
     let zc = -offset.dot(vec2(frame.normal_sphere.x, frame.normal_sphere.y)) * frame.inv_normal_z;
     let sphere_end = clamp(zc, -half_chord, half_chord);
     // (h − end)/(2h) > 0.1, without the division.

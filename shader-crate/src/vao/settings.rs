@@ -3,18 +3,19 @@
 
 use super::VaoParams;
 use crate::blur::graph::blur_passes;
+use crate::common::tables::AO_SAMPLES;
 use crate::graph::{Access, Extent, FrameDesc, Graph, Pass, inputs, target_f32};
 use crate::svao::settings::{SvaoSettings, stenciled, unrefined};
 use crate::technique::{Constant, Declaration};
 
-/// Plain VAO → blur; on dual depth or with the HBAO+ kernel, the stenciled pipeline's pass 1
-/// alone (spec svao-raysd §4.5, §11).
+/// Plain VAO → blur; on dual depth, with the HBAO+ kernel or with 16/32 samples, the stenciled
+/// pipeline's pass 1 alone (spec svao-raysd §4.2, §4.5, §11).
 pub static VAO: Declaration<SvaoSettings> = stenciled(
     "vao",
     "Volumetric AO on the depth buffer, or on dual depth (spec svao-raysd §4–§5, §11)",
-    &["primary", "peel-separation", "kernel"],
+    &["primary", "peel-separation", "kernel", "ao-samples"],
     SvaoSettings::default,
-    |s, frame| if s.dual || s.hbao { unrefined(s, frame) } else { Ok(graph(frame)) },
+    |s, frame| if s.dual || s.hbao || s.samples != AO_SAMPLES { unrefined(s, frame) } else { Ok(graph(frame)) },
 );
 
 /// Screen-space clamp of the sampling disk in pixels (spec svao-raysd §2 default).
