@@ -9,7 +9,7 @@ use std::path::Path;
 pub use aokit_vulkan::atomic_file::{is_temp_name, write_atomic, write_atomic_bytes};
 
 /// The inner image of a full-target buffer, row-major.
-pub fn crop_inner(view: &ViewParams, full: &[f32]) -> Vec<f32> {
+pub fn crop_inner<T: Copy>(view: &ViewParams, full: &[T]) -> Vec<T> {
     let size = view.size();
     let g = view.guard;
     let mut out = Vec::with_capacity(((size.x - 2 * g) * (size.y - 2 * g)) as usize);
@@ -24,6 +24,13 @@ pub fn crop_inner(view: &ViewParams, full: &[f32]) -> Vec<f32> {
 pub fn write_png(path: &Path, width: u32, height: u32, ao: &[f32]) -> Result<(), image::ImageError> {
     let bytes: Vec<u8> = ao.iter().map(|&a| (a.clamp(0.0, 1.0) * 255.0).round() as u8).collect();
     save_image(&image::GrayImage::from_raw(width, height, bytes).expect("buffer matches size"), path)
+        .map_err(image::ImageError::IoError)
+}
+
+/// Bent normals as an RGB PNG: the packed RGBA8 words' rgb bytes (the normal ·0.5 + 0.5).
+pub fn write_bent_png(path: &Path, width: u32, height: u32, bent: &[u32]) -> Result<(), image::ImageError> {
+    let bytes: Vec<u8> = bent.iter().flat_map(|&w| [w as u8, (w >> 8) as u8, (w >> 16) as u8]).collect();
+    save_image(&image::RgbImage::from_raw(width, height, bytes).expect("buffer matches size"), path)
         .map_err(image::ImageError::IoError)
 }
 

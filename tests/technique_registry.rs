@@ -46,7 +46,7 @@ fn effect(t: &Technique, frame: &FrameDesc) -> String {
 #[test]
 fn every_declared_key_has_a_row_and_names_are_unique() {
     let mut names: Vec<_> = TECHNIQUES.iter().map(|t| t.name()).collect();
-    assert_eq!(names.len(), 10);
+    assert_eq!(names.len(), 11);
     names.sort();
     names.dedup();
     assert_eq!(names.len(), TECHNIQUES.len(), "a name is registered twice");

@@ -196,6 +196,16 @@ export const CONSTANTS = {
     denoise_passes: num(c.gtao.denoise),
     noise_frame: 0,
     pass: c.entry === 'gtao_prefilter' || c.entry === 'gtao_denoise' ? c.occurrence : 0,
+    bent_normals: c.gtao['bent-normals'] === 'on' ? 1 : 0,
+  }),
+  // VbaoSettings::params: T = thickness·R; R_g by gate (off 0, effective R·multiplier, radius
+  // R); weighting uniform 0, cosine-blender 1, cosine-exact 2; sectors paper 0, touch 1.
+  VbaoParams: (c) => ({
+    thickness: num(c.settings.thickness) * c.frame.radius,
+    gate_radius: { off: 0, effective: c.frame.radius * num(c.settings['radius-multiplier']), radius: c.frame.radius }[c.settings.gate],
+    weighting: ['uniform', 'cosine-blender', 'cosine-exact'].indexOf(c.settings.weighting),
+    sector_rule: c.settings.sectors === 'touch' ? 1 : 0,
+    gtao: CONSTANTS.GtaoParams(c),
   }),
   // RaymarchSettings::params; DEPTH_BIAS = 0.0008, thickness f32::MAX (a pure height field),
   // contribution Linear = 0, Binary = 1.
@@ -219,6 +229,8 @@ export function gtaoSettings(manifest, technique, settings) {
   if (technique === 'gtao') return settings;
   const gtao = manifest.techniques.find((t) => t.name === 'gtao');
   const defaults = Object.fromEntries(gtao.settings.map((s) => [s.key, s.default]));
+  // VBAO's XeGTAO settings are its own, the rest (falloff, thin occluder) stay at gtao's defaults.
+  if (technique === 'vbao') return { ...defaults, ...settings };
   return { ...defaults, denoise: settings.denoise ?? defaults.denoise };
 }
 

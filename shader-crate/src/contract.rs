@@ -97,6 +97,7 @@ pub fn shared_structs() -> Vec<StructLayout> {
         crate::svao::SvaoParams::layout,
         crate::svao::SvaoFrame::layout,
         crate::gtao::GtaoParams::layout,
+        crate::vbao::VbaoParams::layout,
         crate::raymarch::RaymarchParams::layout,
         crate::hybrid::HybridParams::layout,
         crate::hybrid::HybridFrame::layout,
@@ -104,6 +105,7 @@ pub fn shared_structs() -> Vec<StructLayout> {
         crate::groundtruth::GroundTruthFrame::layout,
         crate::gbuffer::RasterParams::layout,
         crate::adapters::ImportParams::layout,
+        crate::temporal::TemporalFrame::layout,
     ];
     let mut out: Vec<StructLayout> = Vec::new();
     fn add(layout: StructLayout, out: &mut Vec<StructLayout>) {

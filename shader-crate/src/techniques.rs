@@ -13,6 +13,7 @@ pub static TECHNIQUES: &[&dyn Technique] = &[
     &crate::svao::settings::SDSVAO,
     &crate::svao::settings::RAYSVAO,
     &crate::gtao::settings::GTAO,
+    &crate::vbao::settings::VBAO,
     &crate::raymarch::settings::RAYMARCH,
     &crate::hybrid::settings::HYBRID,
     &crate::groundtruth::settings::GROUNDTRUTH,

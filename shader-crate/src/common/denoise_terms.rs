@@ -4,14 +4,14 @@
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
-use crate::common::math::sat;
+use crate::common::math::{floor, sat};
 use crate::glam::{Vec4, vec4};
 
 /// Round half to even (HLSL `round`, spec §1.5).
 #[inline]
 pub fn round_even(x: f32) -> f32 {
-    let r = (x + 0.5).floor();
-    if r - x == 0.5 && (r * 0.5).floor() * 2.0 != r { r - 1.0 } else { r }
+    let r = floor(x + 0.5);
+    if r - x == 0.5 && floor(r * 0.5) * 2.0 != r { r - 1.0 } else { r }
 }
 
 /// Edge weights (L, R, T, B) of a pixel at depth `zc` from its 4-neighbours (spec §2.6.1):
@@ -43,4 +43,18 @@ pub fn unpack_edges(p: u32) -> Vec4 {
 #[inline]
 pub fn store_term(vis: f32) -> u32 {
     (sat(vis / 1.5) * 255.0 + 0.5) as u32
+}
+
+/// RGBA8 UNORM packing of a term with a bent normal, `uint(sat(c)·255 + 0.5)` per channel, r
+/// in the low byte (spec gtao-raymarch-hybrid §2.6.5: rgb = b·0.5 + 0.5, a = vis/1.5).
+#[inline]
+pub fn pack_bent_term(c: Vec4) -> u32 {
+    let q = |x: f32| (sat(x) * 255.0 + 0.5) as u32;
+    q(c.x) | (q(c.y) << 8) | (q(c.z) << 16) | (q(c.w) << 24)
+}
+
+/// [`pack_bent_term`] back to four channels in [0, 1].
+#[inline]
+pub fn unpack_bent_term(p: u32) -> Vec4 {
+    vec4((p & 0xFF) as f32, ((p >> 8) & 0xFF) as f32, ((p >> 16) & 0xFF) as f32, (p >> 24) as f32) / 255.0
 }

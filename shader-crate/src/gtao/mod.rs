@@ -56,6 +56,11 @@ pub struct GtaoParams {
     pub noise_frame: u32,
     /// Prefilter: the MIP level this dispatch writes; denoise: the pass index.
     pub pass: u32,
+    /// 1: the main pass also computes the bent normal and the terms are RGBA8 (spec §2.6.5).
+    pub bent_normals: u32,
+    /// Pads the struct to a multiple of 8 bytes (ViewParams' vec2 alignment), so VbaoParams,
+    /// which holds it, has the same layout in Rust and in SPIR-V.
+    pub _pad: u32,
 }
 
 impl GtaoParams {
@@ -85,12 +90,14 @@ pub fn mip_offset(full: UVec2, k: u32) -> usize {
     offset
 }
 
-/// Texel of MIP `k` holding uv, point sampling with clamp-to-edge (spec §1.5).
+/// Texel of MIP `k` holding uv, point sampling with clamp-to-edge (spec §1.5):
+/// `clamp(floor(uv·size), 0, size − 1)`, where [`clamp_index`]'s truncation of a positive
+/// coordinate is the floor (one operation fewer per sample).
 #[inline]
 pub fn mip_texel(full: UVec2, k: u32, uv: Vec2) -> usize {
     let s = mip_size(full, k);
-    let x = clamp_index((uv.x * s.x as f32).floor(), s.x);
-    let y = clamp_index((uv.y * s.y as f32).floor(), s.y);
+    let x = clamp_index(uv.x * s.x as f32, s.x);
+    let y = clamp_index(uv.y * s.y as f32, s.y);
     mip_offset(full, k) + (y * s.x + x) as usize
 }
 
@@ -172,6 +179,6 @@ pub fn gtao_denoise(
     let i = (p.y * size.x + p.x) as usize;
     terms_out[i] = out.term;
     if out.last {
-        ao[i] = out.term as f32 / 255.0;
+        ao[i] = out.visibility;
     }
 }

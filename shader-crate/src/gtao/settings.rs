@@ -4,7 +4,8 @@
 
 use super::{GtaoParams, MIP_LEVELS};
 use crate::graph::{
-    Access, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, inputs, target_f32, target_u32,
+    Access, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, Snapshot, inputs, target_f32,
+    target_u32,
 };
 use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
@@ -37,9 +38,10 @@ impl Quality {
     }
 }
 
-/// Upper bounds of a custom quality (the spec's reference settings use 32 × 24, spec §2.2).
+/// Upper bounds of a custom quality (the spec's reference settings use 32 × 24, spec §2.2; VBAO's
+/// "dense" sampling is K ≥ 64 steps, spec vbao §6).
 pub const MAX_SLICES: u32 = 64;
-pub const MAX_STEPS: u32 = 32;
+pub const MAX_STEPS: u32 = 64;
 
 /// XeGTAO settings (spec §2.1 defaults and UI ranges; the effect radius is the frame's AO
 /// radius).
@@ -65,6 +67,8 @@ pub struct GtaoSettings {
     pub depth_mip_sampling_offset: f32,
     /// Derive normals from depth (pass 0) instead of reading the G-buffer's [off].
     pub normals_from_depth: bool,
+    /// Also output the bent normal, resource `bent_normals` (spec §2.6.5, ≈ 25 % cost) [off].
+    pub bent_normals: bool,
 }
 
 impl Default for GtaoSettings {
@@ -80,55 +84,143 @@ impl Default for GtaoSettings {
             final_value_power: 2.2,
             depth_mip_sampling_offset: 3.30,
             normals_from_depth: false,
+            bent_normals: false,
         }
+    }
+}
+
+/// A settings struct built on XeGTAO's slice/step structure and passes (XeGTAO itself, VBAO):
+/// the rows they share are written once, in [`rows`], generic over it.
+pub trait XeGtaoBased: Sized + 'static {
+    fn xegtao(&mut self) -> &mut GtaoSettings;
+    fn xegtao_ref(&self) -> &GtaoSettings;
+}
+
+impl XeGtaoBased for GtaoSettings {
+    fn xegtao(&mut self) -> &mut GtaoSettings {
+        self
+    }
+    fn xegtao_ref(&self) -> &GtaoSettings {
+        self
+    }
+}
+
+/// The rows of XeGTAO's settings (spec gtao-raymarch-hybrid §2.1, its UI ranges) for any
+/// [`XeGtaoBased`] settings struct; `flag` is the command-line flag, which differs per technique.
+pub mod rows {
+    use super::{MAX_SLICES, MAX_STEPS, Quality, XeGtaoBased};
+    use crate::technique::Setting;
+
+    fn preset_index<S: XeGtaoBased>(s: &S) -> usize {
+        let x = s.xegtao_ref();
+        Quality::of(x.slices, x.steps).map_or(4, |q| q as usize)
+    }
+
+    fn set_preset<S: XeGtaoBased>(s: &mut S, i: usize) {
+        // `custom` keeps the slices and steps set (by the slices/steps flags).
+        if let Some(q) = Quality::ALL.get(i) {
+            let x = s.xegtao();
+            (x.slices, x.steps) = q.slices_steps();
+        }
+    }
+
+    macro_rules! field {
+        ($name:ident, $ty:ty, $field:ident) => {
+            fn $name<S: XeGtaoBased>(s: &mut S) -> &mut $ty {
+                &mut s.xegtao().$field
+            }
+        };
+    }
+    field!(slices_of, u32, slices);
+    field!(steps_of, u32, steps);
+    field!(denoise_of, u32, denoise_passes);
+    field!(radius_multiplier_of, f32, radius_multiplier);
+    field!(falloff_of, f32, falloff_range);
+    field!(sample_power_of, f32, sample_distribution_power);
+    field!(thin_of, f32, thin_occluder_compensation);
+    field!(final_power_of, f32, final_value_power);
+    field!(mip_offset_of, f32, depth_mip_sampling_offset);
+    field!(normals_of, bool, normals_from_depth);
+    field!(bent_normals_of, bool, bent_normals);
+
+    pub const fn preset<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::choice(
+            "preset",
+            &["low", "medium", "high", "ultra", "custom"],
+            preset_index::<S>,
+            set_preset::<S>,
+        )
+        .flag(flag)
+        .help("XeGTAO quality preset: slices × steps per side 1×2, 2×2, 3×3, 9×3, or custom (spec §2.2)")
+    }
+    pub const fn slices<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::count("slices", 1, MAX_SLICES, slices_of::<S>)
+            .flag(flag)
+            .help("XeGTAO slices per pixel (set after the preset: a pair no preset has is custom)")
+    }
+    pub const fn steps<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::count("steps", 1, MAX_STEPS, steps_of::<S>)
+            .flag(flag)
+            .help("XeGTAO steps per slice side (set after the preset)")
+    }
+    pub const fn denoise<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::count("denoise", 0, 3, denoise_of::<S>)
+            .flag(flag)
+            .help("XeGTAO denoise passes (0 off, 1 sharp, 2 medium, 3 soft; spec §2.7)")
+    }
+    pub const fn radius_multiplier<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::number("radius-multiplier", 0.3, 3.0, radius_multiplier_of::<S>)
+            .flag(flag)
+            .help("XeGTAO RadiusMultiplier (effective radius = --radius × this)")
+    }
+    pub const fn falloff_range<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::number("falloff-range", 0.0, 1.0, falloff_of::<S>)
+            .flag(flag)
+            .help("XeGTAO FalloffRange (fraction of the radius over which samples fade)")
+    }
+    pub const fn sample_power<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::number("sample-power", 1.0, 3.0, sample_power_of::<S>)
+            .flag(flag)
+            .help("XeGTAO SampleDistributionPower")
+    }
+    pub const fn thin_occluder<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::number("thin-occluder", 0.0, 0.7, thin_of::<S>).flag(flag).help("XeGTAO ThinOccluderCompensation")
+    }
+    pub const fn final_power<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::number("final-power", 0.5, 5.0, final_power_of::<S>).flag(flag).help("XeGTAO FinalValuePower")
+    }
+    pub const fn mip_offset<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::number("mip-offset", 0.0, 30.0, mip_offset_of::<S>)
+            .flag(flag)
+            .help("XeGTAO DepthMIPSamplingOffset")
+    }
+    pub const fn bent_normals<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::switch("bent-normals", &["off", "on"], bent_normals_of::<S>)
+            .flag(flag)
+            .help("XeGTAO: also output the bent normal, RGBA8 beside the AO (spec §2.6.5, ≈25 % cost)")
+    }
+    pub const fn normals<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::switch("normals", &["gbuffer", "depth"], normals_of::<S>)
+            .flag(flag)
+            .help("XeGTAO normals: the G-buffer's, or derived from depth (pass 0, spec §2.4)")
     }
 }
 
 impl Settings for GtaoSettings {
     /// XeGTAO's UI ranges (spec gtao-raymarch-hybrid §2.1).
     const ROWS: &'static [Setting<Self>] = &[
-        Setting::<Self>::choice(
-            "preset",
-            &["low", "medium", "high", "ultra", "custom"],
-            |s| Quality::of(s.slices, s.steps).map_or(4, |q| q as usize),
-            |s, i| {
-                // `custom` keeps the slices and steps set (by --gtao-slices/--gtao-steps).
-                if let Some(q) = Quality::ALL.get(i) {
-                    (s.slices, s.steps) = q.slices_steps();
-                }
-            },
-        )
-        .help("XeGTAO quality preset: slices × steps per side 1×2, 2×2, 3×3, 9×3, or custom (spec §2.2)"),
-        Setting::<Self>::count("slices", 1, MAX_SLICES, |s| &mut s.slices)
-            .flag("gtao-slices")
-            .help("XeGTAO slices per pixel (set after the preset: a pair no preset has is custom)"),
-        Setting::<Self>::count("steps", 1, MAX_STEPS, |s| &mut s.steps)
-            .flag("gtao-steps")
-            .help("XeGTAO steps per slice side (set after the preset)"),
-        Setting::<Self>::count("denoise", 0, 3, |s| &mut s.denoise_passes)
-            .flag("gtao-denoise")
-            .help("XeGTAO denoise passes (0 off, 1 sharp, 2 medium, 3 soft; spec §2.7)"),
-        Setting::<Self>::number("radius-multiplier", 0.3, 3.0, |s| &mut s.radius_multiplier)
-            .flag("gtao-radius-multiplier")
-            .help("XeGTAO RadiusMultiplier (effective radius = --radius × this)"),
-        Setting::<Self>::number("falloff-range", 0.0, 1.0, |s| &mut s.falloff_range)
-            .flag("gtao-falloff-range")
-            .help("XeGTAO FalloffRange (fraction of the radius over which samples fade)"),
-        Setting::<Self>::number("sample-power", 1.0, 3.0, |s| &mut s.sample_distribution_power)
-            .flag("gtao-sample-power")
-            .help("XeGTAO SampleDistributionPower"),
-        Setting::<Self>::number("thin-occluder", 0.0, 0.7, |s| &mut s.thin_occluder_compensation)
-            .flag("gtao-thin-occluder")
-            .help("XeGTAO ThinOccluderCompensation"),
-        Setting::<Self>::number("final-power", 0.5, 5.0, |s| &mut s.final_value_power)
-            .flag("gtao-final-power")
-            .help("XeGTAO FinalValuePower"),
-        Setting::<Self>::number("mip-offset", 0.0, 30.0, |s| &mut s.depth_mip_sampling_offset)
-            .flag("gtao-mip-offset")
-            .help("XeGTAO DepthMIPSamplingOffset"),
-        Setting::<Self>::switch("normals", &["gbuffer", "depth"], |s| &mut s.normals_from_depth)
-            .flag("gtao-normals")
-            .help("XeGTAO normals: the G-buffer's, or derived from depth (pass 0, spec §2.4)"),
+        rows::preset::<Self>("preset"),
+        rows::slices::<Self>("gtao-slices"),
+        rows::steps::<Self>("gtao-steps"),
+        rows::denoise::<Self>("gtao-denoise"),
+        rows::radius_multiplier::<Self>("gtao-radius-multiplier"),
+        rows::falloff_range::<Self>("gtao-falloff-range"),
+        rows::sample_power::<Self>("gtao-sample-power"),
+        rows::thin_occluder::<Self>("gtao-thin-occluder"),
+        rows::final_power::<Self>("gtao-final-power"),
+        rows::mip_offset::<Self>("gtao-mip-offset"),
+        rows::normals::<Self>("gtao-normals"),
+        rows::bent_normals::<Self>("gtao-bent-normals"),
     ];
 }
 
@@ -148,6 +240,7 @@ pub static GTAO: Declaration<GtaoSettings> = Declaration {
         "final-power",
         "mip-offset",
         "normals",
+        "bent-normals",
     ],
     defaults: GtaoSettings::default,
     graph: |s, frame| Ok(s.graph(frame)),
@@ -159,31 +252,43 @@ pub static GTAO: Declaration<GtaoSettings> = Declaration {
 /// `GTAOUpdateConstants`), then the camera's rows.
 pub const CONSTANTS: &[Constant] = crate::join_constants![
     &[
-        Constant::new("GtaoParams.view", "the frame's ViewParams (ViewParams rows)"),
-        Constant::new("GtaoParams.radius", "R: the frame's world-space AO radius (world units), XeGTAO's EffectRadius"),
-        Constant::new("GtaoParams.radius_multiplier", "`radius-multiplier` [1.457]"),
         Constant::new("GtaoParams.falloff_range", "`falloff-range` [0.615]"),
-        Constant::new("GtaoParams.sample_distribution_power", "`sample-power` [2]"),
         Constant::new("GtaoParams.thin_occluder_compensation", "`thin-occluder` [0]"),
         Constant::new("GtaoParams.final_value_power", "`final-power` [2.2]"),
-        Constant::new("GtaoParams.depth_mip_sampling_offset", "`mip-offset` [3.3]"),
-        Constant::new(
-            "GtaoParams.slices",
-            "`slices`, which `preset` sets first: low 1, medium 2, high 3, ultra 9 (custom keeps it) [3]",
-        ),
-        Constant::new(
-            "GtaoParams.steps",
-            "`steps`, which `preset` sets first: low 2, medium 2, high 3, ultra 3 (custom keeps it) [3]",
-        ),
-        Constant::new("GtaoParams.denoise_passes", "`denoise` (0 still runs one denoise pass) [1]"),
-        Constant::new("GtaoParams.noise_frame", "0"),
         Constant::new(
             "GtaoParams.pass",
             "per pass: gtao_prefilter: the MIP level k = 0…4 its dispatch writes (one pass per level, in \
              order); gtao_normals and gtao_main: 0; gtao_denoise: the pass index i = 0 … max(1, `denoise`) − 1",
         ),
+        Constant::new("GtaoParams.bent_normals", "`bent-normals`: off 0, on 1 [0]"),
     ],
+    XEGTAO_STRUCTURE,
     crate::common::camera::CONSTANTS,
+];
+
+/// The `GtaoParams` rows every technique built on XeGTAO's passes shares (XeGTAO, VBAO): the
+/// view, the radius, the slice/step structure, the sampling and the noise.
+pub const XEGTAO_STRUCTURE: &[Constant] = &[
+    Constant::new("GtaoParams.view", "the frame's ViewParams (ViewParams rows)"),
+    Constant::new("GtaoParams.radius", "R: the frame's world-space AO radius (world units), XeGTAO's EffectRadius"),
+    Constant::new("GtaoParams.radius_multiplier", "`radius-multiplier` [1.457]"),
+    Constant::new("GtaoParams.sample_distribution_power", "`sample-power` [2]"),
+    Constant::new("GtaoParams.depth_mip_sampling_offset", "`mip-offset` [3.3]"),
+    Constant::new(
+        "GtaoParams.slices",
+        "`slices`, which `preset` sets first: low 1, medium 2, high 3, ultra 9 (custom keeps it) [3]",
+    ),
+    Constant::new(
+        "GtaoParams.steps",
+        "`steps`, which `preset` sets first: low 2, medium 2, high 3, ultra 3 (custom keeps it) [3]",
+    ),
+    Constant::new("GtaoParams.denoise_passes", "`denoise` (0 still runs one denoise pass) [1]"),
+    Constant::new(
+        "GtaoParams.noise_frame",
+        "the frame index (FrameDesc::frame_index; 0 for a single frame): XeGTAO's NoiseIndex, taken mod 64 by \
+         the noise (spec §1.6)",
+    ),
+    Constant::new("GtaoParams._pad", "0"),
 ];
 
 /// How [`with_denoiser`] fills `GtaoParams` for the techniques that reuse XeGTAO's denoiser
@@ -203,8 +308,10 @@ pub const DENOISER: &[Constant] = &[
         "GtaoParams.denoise_passes",
         "`denoise`: the denoise passes, 1–3 (0: no denoiser, the technique's AO is final)",
     ),
-    Constant::new("GtaoParams.noise_frame", "0"),
+    Constant::new("GtaoParams.noise_frame", "the frame index (FrameDesc::frame_index; unread by the denoiser)"),
     Constant::new("GtaoParams.pass", "per pass: the denoise pass index i = 0 … `denoise` − 1"),
+    Constant::new("GtaoParams.bent_normals", "0 (no bent normals)"),
+    Constant::new("GtaoParams._pad", "0"),
 ];
 
 impl GtaoSettings {
@@ -223,68 +330,91 @@ impl GtaoSettings {
             slices,
             steps,
             denoise_passes: self.denoise_passes,
-            noise_frame: 0,
+            // XeGTAO's NoiseIndex (spec §1.6): the frame's index in its sequence.
+            noise_frame: frame.frame_index,
             pass: 0,
+            bent_normals: self.bent_normals as u32,
+            _pad: 0,
         }
     }
 
     /// Prefilter (5 MIP levels) → [normals from depth] → main pass → denoise.
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let params = self.params(frame);
-        let mips = Resource {
-            name: "gtao_mips",
-            elem: Elem::F32,
-            size: Size::MipChain { levels: MIP_LEVELS },
-            init: Init::Undefined,
-            lifetime: Lifetime::PerFrame,
-            doc: "packed 5-level working-depth MIP chain (spec gtao-raymarch-hybrid §2.3)",
-        };
-        let mut resources = vec![
-            mips,
-            target_u32("gtao_terms", 0, "MainPass AO terms, 0–255 (spec §2.6)"),
-            target_u32("gtao_edges", 0, "packed depth edges of the denoiser (spec §2.6.1, read by §2.7)"),
-        ];
-        let mut passes = Vec::new();
-        for level in 0..MIP_LEVELS {
-            let p = GtaoParams { pass: level, ..params };
-            let bindings = [(inputs::LINEAR_DEPTH, Access::Read), ("gtao_mips", Access::ReadWrite)];
-            passes.push(Pass::compute(
-                "gtao_prefilter",
-                "gtao_prefilter",
-                &bindings,
-                Extent::Mip(level),
-                bytemuck::bytes_of(&p),
-            ));
-        }
-        let bytes = bytemuck::bytes_of(&params);
-        let normals = if self.normals_from_depth {
-            resources.push(target_u32("gtao_normals", 0, "view normals derived from depth (spec §2.4)"));
-            let bindings = [(inputs::LINEAR_DEPTH, Access::Read), ("gtao_normals", Access::Write)];
-            passes.push(Pass::compute("gtao_normals", "gtao_normals", &bindings, Extent::Full, bytes));
-            "gtao_normals"
-        } else {
-            inputs::VIEW_NORMALS
-        };
-        let main = [
-            ("gtao_mips", Access::Read),
-            (normals, Access::Read),
-            ("gtao_terms", Access::Write),
-            ("gtao_edges", Access::Write),
-        ];
-        passes.push(Pass::compute("gtao_main", "gtao_main", &main, Extent::Full, bytes));
-        let (r, p) = denoise_passes(&params, "gtao_terms", "gtao_edges", "ao_final", "gtao_denoise");
-        resources.extend(r);
-        passes.extend(p);
-        Graph {
-            resources,
-            passes,
-            output: "ao_final",
-            raw_output: "ao_final",
-            snapshots: Vec::new(),
-            view: frame.camera.view,
-        }
+        xegtao_graph(frame, &params, self.normals_from_depth, "gtao_main", bytemuck::bytes_of(&params))
     }
 }
+
+/// XeGTAO's passes around a main pass (spec gtao-raymarch-hybrid §2.3–§2.7): PrefilterDepths
+/// level by level → [normals from depth] → `main` (its entry point and push constants; it
+/// reads the MIP chain and the normals, writes the AO terms and the edges) → the denoiser.
+/// XeGTAO's own main pass and VBAO's bitmask main pass (spec vbao §1) plug in here.
+pub fn xegtao_graph(
+    frame: &FrameDesc,
+    params: &GtaoParams,
+    normals_from_depth: bool,
+    main: &'static str,
+    main_push: &[u8],
+) -> Graph {
+    let params = *params;
+    let mips = Resource {
+        name: "gtao_mips",
+        elem: Elem::F32,
+        size: Size::MipChain { levels: MIP_LEVELS },
+        init: Init::Undefined,
+        lifetime: Lifetime::PerFrame,
+        doc: "packed 5-level working-depth MIP chain (spec gtao-raymarch-hybrid §2.3)",
+    };
+    let mut resources = vec![
+        mips,
+        target_u32("gtao_terms", 0, "MainPass AO terms, 0–255 (spec §2.6)"),
+        target_u32("gtao_edges", 0, "packed depth edges of the denoiser (spec §2.6.1, read by §2.7)"),
+    ];
+    let mut passes = Vec::new();
+    for level in 0..MIP_LEVELS {
+        let p = GtaoParams { pass: level, ..params };
+        let bindings = [(inputs::LINEAR_DEPTH, Access::Read), ("gtao_mips", Access::ReadWrite)];
+        passes.push(Pass::compute(
+            "gtao_prefilter",
+            "gtao_prefilter",
+            &bindings,
+            Extent::Mip(level),
+            bytemuck::bytes_of(&p),
+        ));
+    }
+    let bytes = bytemuck::bytes_of(&params);
+    let normals = if normals_from_depth {
+        resources.push(target_u32("gtao_normals", 0, "view normals derived from depth (spec §2.4)"));
+        let bindings = [(inputs::LINEAR_DEPTH, Access::Read), ("gtao_normals", Access::Write)];
+        passes.push(Pass::compute("gtao_normals", "gtao_normals", &bindings, Extent::Full, bytes));
+        "gtao_normals"
+    } else {
+        inputs::VIEW_NORMALS
+    };
+    let main_bindings = [
+        ("gtao_mips", Access::Read),
+        (normals, Access::Read),
+        ("gtao_terms", Access::Write),
+        ("gtao_edges", Access::Write),
+    ];
+    passes.push(Pass::compute(main, main, &main_bindings, Extent::Full, main_push));
+    let (r, p) = denoise_passes(&params, "gtao_terms", "gtao_edges", "ao_final", "gtao_denoise");
+    resources.extend(r);
+    passes.extend(p);
+    let mut snapshots = Vec::new();
+    if params.bent_normals != 0 {
+        // The last denoise pass leaves the packed bent normals in its output terms.
+        let last = passes.len() - 1;
+        resources.push(target_u32(BENT_NORMALS, 0, BENT_NORMALS_DOC));
+        snapshots.push(Snapshot { after: last, from: passes[last].bindings[2].resource, to: BENT_NORMALS });
+    }
+    Graph { resources, passes, output: "ao_final", raw_output: "ao_final", snapshots, view: frame.camera.view }
+}
+
+/// The optional bent-normal output of XeGTAO (`bent-normals on`).
+pub const BENT_NORMALS: &str = "bent_normals";
+const BENT_NORMALS_DOC: &str = "bent normals, RGBA8 in a u32: rgb = the unit bent normal in the G-buffer's \
+     right-handed view space ·0.5 + 0.5, a = the visibility ·255 (spec gtao-raymarch-hybrid §2.6.5)";
 
 /// XeGTAO's denoiser (spec gtao-raymarch-hybrid §2.7) over `terms` with `edges`: max(1,
 /// `params.denoise_passes`) passes ping-ponging between two scratch images (`terms` stays

@@ -1,0 +1,223 @@
+//! VBAO's main pass per pixel (spec vbao §1–§4): XeGTAO's pixel set-up, slice frames and sample
+//! positions (`crate::gtao::main_pass`), then per slice one mask of [`SECTORS`] angular
+//! sectors over the half-circle around the projected normal, filled by every sample's
+//! front–back interval, and the visible fraction of the mask.
+
+#[allow(unused_imports)]
+use spirv_std::num_traits::Float;
+
+use super::{RULE_TOUCH, VbaoParams, WEIGHT_COSINE_BLENDER, WEIGHT_COSINE_EXACT};
+use crate::common::denoise_terms::store_term;
+use crate::common::math::{clamp, sat};
+use crate::glam::{UVec2, Vec3};
+use crate::gtao::GtaoPixel;
+use crate::gtao::main_pass::{
+    PixelSetup, SliceFrame, arc_integral, final_visibility, pixel_setup, projected_length_fudge, sample_pair,
+    slice_frame,
+};
+
+/// Sectors per slice mask, N (spec vbao §3: the paper and every public implementation but
+/// Bevy's).
+pub const SECTORS: u32 = 32;
+
+/// The sectors of the interval `[lo, hi]` of the half-circle (both in [0, 1]) as mask bits
+/// (spec vbao §3). `RULE_PAPER`: start = ⌊N·lo⌋, count = ⌈N·(hi − lo)⌉, bits =
+/// `((1 ≪ count) − 1) ≪ start` with shifts of 32 or more giving 0 (count ≥ 32: every bit from
+/// start). `RULE_TOUCH`: bits `[⌊N·lo⌋, min(⌈N·hi⌉, N))` when hi > lo.
+#[inline]
+pub fn sector_bits(lo: f32, hi: f32, rule: u32) -> u32 {
+    let n = SECTORS as f32;
+    let start = (n * lo).floor() as u32;
+    let count = if rule == RULE_TOUCH {
+        if hi <= lo {
+            return 0;
+        }
+        let end = ((n * hi).ceil() as u32).min(SECTORS);
+        // Spelled out: `saturating_sub` lowers to an intrinsic rust-gpu does not take.
+        #[allow(clippy::implicit_saturating_sub)]
+        if end > start { end - start } else { 0 }
+    } else {
+        (n * (hi - lo)).ceil() as u32
+    };
+    bit_run(start, count)
+}
+
+/// `count` ones starting at bit `start`, without any shift of 32 or more (undefined in SPIR-V,
+/// a panic in debug Rust; spec vbao §3).
+#[inline]
+fn bit_run(start: u32, count: u32) -> u32 {
+    if start >= SECTORS || count == 0 {
+        return 0;
+    }
+    let ones = if count >= SECTORS { 0xFFFF_FFFF } else { (1u32 << count) - 1 };
+    ones << start
+}
+
+/// [aokit] Samples within this angle (radians) of the hemisphere's edge count as on it: every
+/// angle is shifted by it toward the edge before the sectors are taken. The G-buffer's snorm8
+/// octahedral normal is off by up to 0.0166 rad (measured over 400 000 random normals), so
+/// flat ground rises up to that far into the half-circle and, with ⌈·⌉, sets a sector in about
+/// every other slice side (spec vbao §5, artefact 1; Blender's angle bias does the same job by
+/// scaling). 0.02 rad is 0.2 of a sector; in a slice whose projected normal has length L the
+/// error, and the tolerance, is up to 1/L times larger.
+pub const EDGE_TOLERANCE: f32 = 0.02;
+
+/// The tolerance's cap for slices nearly perpendicular to the normal (small L): 2 sectors.
+pub const MAX_EDGE_TOLERANCE: f32 = 2.0 * core::f32::consts::PI / SECTORS as f32;
+
+/// Position of a slice angle θ on the half-circle around the projected normal at γ,
+/// `x = clamp((θ − γ + π/2)/π, 0, 1)`: 0 is the edge on side 1, 1 the edge on side 0 (spec
+/// vbao §2.4).
+#[inline]
+pub fn sector_coordinate(theta: f32, gamma: f32) -> f32 {
+    sat((theta - gamma + core::f32::consts::FRAC_PI_2) / core::f32::consts::PI)
+}
+
+/// The mask bits of one depth sample `delta_f = Q − P` on the slice side with sign `side` (+1
+/// for side 0, −1 for side 1), spec vbao §2: the front angle, and the back angle of the sample
+/// pushed `thickness` away from the camera along the centre pixel's view vector `v`, mapped to
+/// the half-circle around the normal `n` and ordered into `[lo, hi]` (exact acos, spec vbao
+/// §2.3 [OWN]).
+///
+/// [aokit] Each sample is measured in its own slice, the plane through v and the sample, with
+/// that plane's projected normal (γ'), then placed on the nominal slice's half-circle: XeGTAO
+/// rounds sample offsets to whole pixels, which turns the first steps' directions by up to 45°
+/// off the nominal slice, and measured against the nominal slice's γ a sample on flat ground
+/// then lies up to a quarter of the half-circle inside it (measured: 0.24 rad), setting
+/// sectors on every plane (the spec's plane test, §6.2). The sources use the nominal slice.
+/// For a sample on the nominal slice both are the same.
+#[inline]
+pub fn sample_bits(delta_f: Vec3, v: Vec3, n: Vec3, side: f32, thickness: f32, rule: u32) -> u32 {
+    // The sample's own slice: toward the sample across v, and that slice's projected normal.
+    let toward = delta_f - v * delta_f.dot(v);
+    let t_len = toward.length();
+    if t_len <= 0.0 {
+        return 0;
+    }
+    let axis = toward.cross(v).normalize();
+    let projected = n - axis * n.dot(axis);
+    let len = projected.length();
+    let cos_n = sat(projected.dot(v) / len);
+    let gamma = if toward.dot(projected) < 0.0 { -cos_n.acos() } else { cos_n.acos() };
+    // A normal off by ε turns the slice's projected normal by up to ε/L.
+    let tolerance = (EDGE_TOLERANCE / len).min(MAX_EDGE_TOLERANCE);
+    let delta_b = delta_f - v * thickness;
+    let x_f = sector_coordinate(angle_to(delta_f, v) + tolerance, gamma);
+    let x_b = sector_coordinate(angle_to(delta_b, v) + tolerance, gamma);
+    // In the own slice the sample's side is side 0; on the nominal side 1 that is mirrored.
+    let (x_f, x_b) = if side > 0.0 { (x_f, x_b) } else { (1.0 - x_f, 1.0 - x_b) };
+    sector_bits(x_f.min(x_b), x_f.max(x_b), rule)
+}
+
+/// The angle between `delta` and the unit vector `v`, exact acos.
+#[inline]
+fn angle_to(delta: Vec3, v: Vec3) -> f32 {
+    clamp(delta.normalize().dot(v), -1.0, 1.0).acos()
+}
+
+/// The signed cosine-weighted arc from 0 to θ, `A(θ) = sgn(θ)·a(θ)` with XeGTAO's `a`: an
+/// antiderivative of `cos(θ − γ)·|sin θ|` (spec vbao §4, `CosineExact`).
+#[inline]
+fn signed_arc(theta: f32, gamma: f32, cos_n: f32) -> f32 {
+    let a = arc_integral(theta, gamma, cos_n);
+    if theta < 0.0 { -a } else { a }
+}
+
+/// `Σ_{i∉M} w_i` with `w_i = A(upper_i) − A(lower_i)` over sector i's angles
+/// `[γ − π/2 + iπ/N, γ − π/2 + (i+1)π/N]` (spec vbao §4, `CosineExact`).
+#[inline]
+fn free_cosine_weight(mask: u32, gamma: f32, cos_n: f32) -> f32 {
+    let width = core::f32::consts::PI / SECTORS as f32;
+    let edge = gamma - core::f32::consts::FRAC_PI_2;
+    let mut lower = signed_arc(edge, gamma, cos_n);
+    let mut sum = 0.0;
+    let mut i = 0;
+    while i < SECTORS {
+        let upper = signed_arc(edge + (i + 1) as f32 * width, gamma, cos_n);
+        if (mask >> i) & 1 == 0 {
+            sum += upper - lower;
+        }
+        lower = upper;
+        i += 1;
+    }
+    sum
+}
+
+/// Blender's cosine sector weights (spec vbao §4, `CosineBlender`): four mirror-symmetric
+/// groups of bits with per-bit weights `cos α_i·π/(2N)`, α_i the sector centre's angle from n.
+const BLENDER_GROUPS: [(u32, f32); 4] =
+    [(0xF000_000F, 0.009_506_1), (0x0F00_00F0, 0.027_095_1), (0x00F0_0F00, 0.040_557_1), (0x000F_F000, 0.047_842_1)];
+
+/// `clamp(1 − Σ_k popcount(M & mask_k)·w_k, 0, 1)` (spec vbao §4, `CosineBlender`).
+#[inline]
+fn blender_visibility(mask: u32) -> f32 {
+    let mut occluded = 0.0;
+    let mut k = 0;
+    while k < 4 {
+        let (group, w) = BLENDER_GROUPS[k];
+        occluded += (mask & group).count_ones() as f32 * w;
+        k += 1;
+    }
+    sat(1.0 - occluded)
+}
+
+/// One slice's mask: both sides' samples OR-ed into it (spec vbao §2–§3).
+#[inline]
+fn slice_mask(params: &VbaoParams, mips: &[f32], px: &PixelSetup, sl: &SliceFrame, s: u32) -> u32 {
+    let g = &params.gtao;
+    let steps = g.steps.max(1);
+    let mut mask = 0u32;
+    let mut k = 0;
+    while k < steps {
+        let (q0, q1) = sample_pair(g, mips, px, sl, s, k);
+        mask |= gated_bits(params, q0 - px.pos, px, 1.0);
+        mask |= gated_bits(params, q1 - px.pos, px, -1.0);
+        k += 1;
+    }
+    mask
+}
+
+/// [`sample_bits`] unless the sample lies beyond the gate radius R_g (spec vbao §2.1; no
+/// falloff).
+#[inline]
+fn gated_bits(params: &VbaoParams, delta: Vec3, px: &PixelSetup, side: f32) -> u32 {
+    if params.gate_radius > 0.0 && delta.length() > params.gate_radius {
+        return 0;
+    }
+    sample_bits(delta, px.v, px.n, side, params.thickness, params.sector_rule)
+}
+
+/// VBAO's main pass for pixel `p` (spec vbao §1–§4): the visibility of every slice's mask
+/// under the chosen weighting, averaged, raised to FinalValuePower, clamped at 0.03 and
+/// stored as XeGTAO's term with its edges. Background pixels get visibility 1 (as XeGTAO).
+#[inline]
+pub fn vbao_pixel(params: &VbaoParams, mips: &[f32], normals: &[u32], p: UVec2) -> GtaoPixel {
+    let g = &params.gtao;
+    let (packed, valid, px) = pixel_setup(g, mips, normals, p);
+    if !valid {
+        return GtaoPixel { term: store_term(1.0), edges: packed };
+    }
+    let slices = g.slices.max(1);
+    let (mut sum, mut weights) = (0.0, 0.0);
+    let mut s = 0;
+    while s < slices {
+        let mut sl = slice_frame(g, &px, s);
+        // γ with the exact acos: the fast one errs up to 0.055 rad (0.56 sector), which sets
+        // sectors on a plane (spec vbao §2.3, artefact 1 of §5).
+        sl.gamma = sl.sign * sl.cos_n.acos();
+        let mask = slice_mask(params, mips, &px, &sl, s);
+        if params.weighting == WEIGHT_COSINE_EXACT {
+            sum += projected_length_fudge(sl.len) * free_cosine_weight(mask, sl.gamma, sl.cos_n);
+            weights += 1.0;
+        } else if params.weighting == WEIGHT_COSINE_BLENDER {
+            sum += sl.len * blender_visibility(mask);
+            weights += sl.len;
+        } else {
+            sum += 1.0 - mask.count_ones() as f32 / SECTORS as f32;
+            weights += 1.0;
+        }
+        s += 1;
+    }
+    let vis = if weights > 0.0 { sum / weights } else { 1.0 };
+    GtaoPixel { term: store_term(final_visibility(vis, g.final_value_power)), edges: packed }
+}
