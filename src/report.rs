@@ -292,6 +292,7 @@ figcaption {{ font-size: 0.9em; text-align: center; }}
 <p id="setup">Back-end <b>{backend}</b> ({device}), {w}×{h}, reference <b>{reference}</b>. Metrics on the final AO over the inner image. Difference images: red = brighter than the reference, blue = darker, full colour at |Δ| ≥ 0.25.</p>
 <table id="metrics"><tr><th>technique</th><th>MSE</th><th>PSNR (dB)</th><th>SSIM</th><th>rays</th><th>refined samples</th><th>Σ SD-ray interval</th><th>total ms</th><th>passes (ms)</th></tr>
 {rows}</table>
+<h2>Quality vs cost</h2>{plot}
 <h2>AO</h2><div class="row">{figures}</div>
 <h2>Signed difference to the reference</h2><div class="row">{diffs}</div>
 <h2>Refinement, intervals, SD map</h2><div class="row">{extras}</div>
@@ -303,10 +304,109 @@ figcaption {{ font-size: 0.9em; text-align: center; }}
             w = self.width,
             h = self.height,
             reference = self.reference.name(),
+            plot = self.quality_cost_figure(),
         );
         let path = dir.join("index.html");
         crate::output::write_atomic_bytes(&path, page.as_bytes())?;
         Ok(path)
+    }
+}
+
+/// One technique on the quality–cost plot: its report label, total ms and MSE (the JSON's
+/// `label`, `total_ms`, `mse`).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PlotPoint {
+    pub label: String,
+    pub total_ms: f64,
+    pub mse: f64,
+}
+
+/// The quality–cost plot's size in pixels.
+pub const PLOT_SIZE: (u32, u32) = (760, 480);
+
+impl CompareReport {
+    /// The techniques a log–log plot can show (finite, positive MSE and time), in row order,
+    /// and the labels of those it cannot (e.g. MSE 0: identical to the reference).
+    pub fn plot_points(&self) -> (Vec<PlotPoint>, Vec<String>) {
+        let (mut shown, mut left_out) = (Vec::new(), Vec::new());
+        for r in &self.rows {
+            if r.mse.is_finite() && r.mse > 0.0 && r.total_ms.is_finite() && r.total_ms > 0.0 {
+                shown.push(PlotPoint { label: r.label.clone(), total_ms: r.total_ms, mse: r.mse });
+            } else {
+                left_out.push(r.label.clone());
+            }
+        }
+        (shown, left_out)
+    }
+
+    /// The quality–cost plot as SVG (plotters): per technique its MSE against the reference vs
+    /// its total ms, both axes logarithmic, one labelled point per technique (drawn in row
+    /// order, a `<circle>` each); lower left is better. `None` when no technique has a
+    /// positive MSE and time.
+    pub fn quality_cost_svg(&self) -> Option<String> {
+        use plotters::prelude::*;
+        let (points, _) = self.plot_points();
+        if points.is_empty() {
+            return None;
+        }
+        // Log ranges padded by a quarter decade (×/÷ 2 around a single value).
+        let range = |v: &mut dyn Iterator<Item = f64>| {
+            let (lo, hi) = v.fold((f64::INFINITY, 0.0f64), |(lo, hi), x| (lo.min(x), hi.max(x)));
+            let pad = if hi / lo < 1.5 { 2.0 } else { 10f64.powf(0.25) };
+            (lo / pad, hi * pad)
+        };
+        let (x0, x1) = range(&mut points.iter().map(|p| p.total_ms));
+        let (y0, y1) = range(&mut points.iter().map(|p| p.mse));
+        let mut svg = String::new();
+        let drawn = (|| -> Result<(), Box<dyn std::error::Error + '_>> {
+            let root = SVGBackend::with_string(&mut svg, PLOT_SIZE).into_drawing_area();
+            root.fill(&WHITE)?;
+            let caption = format!("{}: MSE vs {} vs total time ({})", self.scene, self.reference.name(), self.backend);
+            let mut chart = ChartBuilder::on(&root)
+                .caption(caption, ("sans-serif", 18))
+                .margin(16)
+                .x_label_area_size(44)
+                .y_label_area_size(76)
+                .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())?;
+            chart
+                .configure_mesh()
+                .x_desc("total ms (log)")
+                .y_desc("MSE (log)")
+                .axis_desc_style(("sans-serif", 15))
+                .x_labels(6)
+                .y_labels(6)
+                .light_line_style(RGBColor(236, 236, 236))
+                .x_label_formatter(&|v| if *v >= 10.0 { format!("{v:.0}") } else { format!("{v:.2}") })
+                .y_label_formatter(&|v| format!("{v:.0e}"))
+                .draw()?;
+            chart.draw_series(points.iter().enumerate().map(|(i, p)| {
+                let colour = Palette99::pick(i).to_rgba();
+                EmptyElement::at((p.total_ms, p.mse))
+                    + Circle::new((0, 0), 5, colour.filled())
+                    + Text::new(p.label.clone(), (8, -16), ("sans-serif", 14).into_font())
+            }))?;
+            root.present()?;
+            Ok(())
+        })();
+        drawn.ok().map(|()| svg)
+    }
+
+    /// The plot inside a `<figure id="quality-cost">` with a caption naming the techniques it
+    /// cannot show.
+    fn quality_cost_figure(&self) -> String {
+        let (_, left_out) = self.plot_points();
+        let note = if left_out.is_empty() {
+            String::new()
+        } else {
+            format!(" Not drawn (MSE or time not positive): {}.", html_escape(&left_out.join(", ")))
+        };
+        match self.quality_cost_svg() {
+            Some(svg) => format!(
+                "<figure id=\"quality-cost\" class=\"plot\">{svg}<figcaption>MSE against the reference vs total time per \
+                 technique, log–log; lower left is better.{note}</figcaption></figure>"
+            ),
+            None => format!("<p id=\"quality-cost\">No technique to plot.{note}</p>"),
+        }
     }
 }
 

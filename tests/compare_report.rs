@@ -16,13 +16,18 @@ use std::process::Command;
 /// The report, its frame, and the full-target final AO of the reference and of each technique
 /// as the test computed them (not as the report stores them).
 fn report(dir: &Path) -> (CompareReport, aokit::frame::Frame, Vec<f32>, Vec<Vec<f32>>) {
+    report_of(dir, vec![Technique::new(&VAO, SdOptions::default()), Technique::new(&RAYSD, SdOptions::default())])
+}
+
+/// [`report`] of the given techniques.
+fn report_of(dir: &Path, techniques: Vec<Technique>) -> (CompareReport, aokit::frame::Frame, Vec<f32>, Vec<Vec<f32>>) {
     let (scene, frame) = common::builtin_frame("sponza", 240, 136, 16);
     let cpu = CpuRenderer::new(&scene);
     let (g, gbuffer_ms) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
     let none = &aokit_cpu::no_progress;
     let reference = Technique::new(&RAYSVAO, SdOptions::default());
     let reference_run = cpu.run(&frame, &g, &reference, none);
-    let runs: Vec<_> = [Technique::new(&VAO, SdOptions::default()), Technique::new(&RAYSD, SdOptions::default())]
+    let runs: Vec<_> = techniques
         .into_iter()
         .map(|t| {
             let run = cpu.run(&frame, &g, &t, none);
@@ -99,6 +104,91 @@ fn compare_json_follows_the_contract_and_matches_the_metrics() {
     }
 }
 
+/// `name="value"` of an SVG element's attribute, as a number.
+fn attr(element: &str, name: &str) -> f64 {
+    let start =
+        element.find(&format!(" {name}=\"")).unwrap_or_else(|| panic!("no {name} in {element}")) + name.len() + 3;
+    let len = element[start..].find('"').unwrap();
+    element[start..start + len].parse().unwrap()
+}
+
+/// Every `<tag …>` element of an SVG (the opening tag), and for `text` also its content.
+fn elements<'a>(svg: &'a str, tag: &str) -> Vec<(&'a str, String)> {
+    let open = format!("<{tag} ");
+    let mut out = Vec::new();
+    let mut rest = svg;
+    while let Some(i) = rest.find(&open) {
+        let end = i + rest[i..].find('>').unwrap() + 1;
+        let content = match rest[end..].find(&format!("</{tag}>")) {
+            Some(close) if tag == "text" => rest[end..end + close].trim().to_string(),
+            _ => String::new(),
+        };
+        out.push((&rest[i..end], content));
+        rest = &rest[end..];
+    }
+    out
+}
+
+/// Least-squares line `y = a + b·x`; returns `(a, b, largest |residual|)`.
+fn fit(points: &[(f64, f64)]) -> (f64, f64, f64) {
+    let n = points.len() as f64;
+    let (mx, my) = (points.iter().map(|p| p.0).sum::<f64>() / n, points.iter().map(|p| p.1).sum::<f64>() / n);
+    let sxx: f64 = points.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let sxy: f64 = points.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    let b = sxy / sxx;
+    let a = my - b * mx;
+    let worst = points.iter().map(|p| (p.1 - a - b * p.0).abs()).fold(0.0, f64::max);
+    (a, b, worst)
+}
+
+/// The HTML report's quality–cost plot (plotters SVG, inline in the page): one `<circle>` per
+/// technique, in the table's order, labelled with its name; the pixel positions are affine in
+/// ln(total ms) and ln(MSE) of the report's JSON (log–log axes: a least-squares line through
+/// all four points leaves at most 1 px, the rounding of plotters' integer coordinates), x grows
+/// with time and y falls (up the page) as the MSE grows.
+#[test]
+fn quality_cost_plot_holds_one_point_per_technique_at_the_json_numbers() {
+    let dir = scratch("plot");
+    let techniques = vec![
+        Technique::new(&VAO, SdOptions::default()),
+        Technique::new(&RAYSD, SdOptions::default()),
+        Technique::new(&aokit_shaders::svao::settings::HBAO, SdOptions::default()),
+        Technique::named("gtao").unwrap(),
+    ];
+    let (r, _, _, _) = report_of(&dir, techniques);
+    let json = r.json();
+    let results = json["results"].as_array().unwrap();
+    let svg = r.quality_cost_svg().expect("every technique has a positive MSE and time");
+    let page = std::fs::read_to_string(r.write_html(&dir, &dir).unwrap()).unwrap();
+    assert!(page.contains(&format!("<figure id=\"quality-cost\" class=\"plot\">{svg}")), "the page embeds the plot");
+    let circles: Vec<(f64, f64)> =
+        elements(&svg, "circle").iter().map(|(e, _)| (attr(e, "cx"), attr(e, "cy"))).collect();
+    let texts: Vec<(f64, f64, String)> =
+        elements(&svg, "text").into_iter().map(|(e, t)| (attr(e, "x"), attr(e, "y"), t)).collect();
+    assert_eq!(circles.len(), results.len(), "one point per technique");
+    let (mut xs, mut ys) = (Vec::new(), Vec::new());
+    for (&(cx, cy), result) in circles.iter().zip(results) {
+        let label = result["label"].as_str().unwrap();
+        // Its label sits just right of and above the point.
+        let near: Vec<_> =
+            texts.iter().filter(|(x, y, _)| (0.0..30.0).contains(&(x - cx)) && (y - cy).abs() < 30.0).collect();
+        assert!(near.iter().any(|t| t.2 == label), "no label {label} next to the point at ({cx}, {cy}): {near:?}");
+        assert!((0.0..760.0).contains(&cx) && (0.0..480.0).contains(&cy));
+        xs.push((result["total_ms"].as_f64().unwrap().ln(), cx));
+        ys.push((result["mse"].as_f64().unwrap().ln(), cy));
+    }
+    let (_, bx, worst_x) = fit(&xs);
+    let (_, by, worst_y) = fit(&ys);
+    eprintln!("x = a + {bx:.2}·ln ms (worst {worst_x:.2} px), y = c + {by:.2}·ln MSE (worst {worst_y:.2} px)");
+    assert!(bx > 0.0 && by < 0.0, "x grows with the time, y up the page with the MSE");
+    assert!(worst_x <= 1.0 && worst_y <= 1.0, "not log–log at the JSON's numbers: {worst_x} px, {worst_y} px");
+    // The spread of the data covers a real part of the plot (no degenerate axis).
+    let spread = |v: &[(f64, f64)]| {
+        v.iter().map(|p| p.1).fold(f64::NEG_INFINITY, f64::max) - v.iter().map(|p| p.1).fold(f64::INFINITY, f64::min)
+    };
+    assert!(spread(&xs) > 100.0 && spread(&ys) > 100.0, "{} {}", spread(&xs), spread(&ys));
+}
+
 fn chromium() -> Option<&'static str> {
     ["chromium", "chromium-browser", "google-chrome"]
         .into_iter()
@@ -125,6 +215,8 @@ fn html_report_renders_in_headless_chromium() {
     let dom = Command::new(browser).args(common_args).arg("--dump-dom").arg(&url).output().unwrap();
     let dom = String::from_utf8_lossy(&dom.stdout);
     assert!(dom.contains("id=\"metrics\""), "metrics table missing from the DOM");
+    assert!(dom.contains("id=\"quality-cost\""), "quality–cost plot missing from the DOM");
+    assert_eq!(dom.matches("<circle ").count(), r.rows.len(), "one plotted point per technique in the DOM");
     for row in &r.rows {
         assert!(dom.contains(&format!("<td>{}</td>", row.label)), "row {} missing", row.label);
         assert!(dom.contains(&format!("{:.3e}", row.mse)), "MSE of {} missing", row.label);
