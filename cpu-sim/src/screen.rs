@@ -8,8 +8,49 @@ use aokit_shaders::glam::{UVec2, uvec2};
 use aokit_shaders::vao::{VaoParams, vao_pixel};
 use rayon::prelude::*;
 
-/// Run `kernel` for every inner pixel of a full-target image, in parallel over rows. Guard-band
-/// pixels keep `fill`.
+/// Rows per band of [`tiled`]: the unit of parallel work.
+pub const TILE_ROWS: u32 = 16;
+/// Columns per tile of [`tiled`]: a band is walked one tile of `TILE_COLS × TILE_ROWS` at a time.
+pub const TILE_COLS: u32 = 64;
+
+/// Call `f(pixel, &mut out[pixel])` for every pixel of `xs × ys` of a row-major image `width`
+/// wide: bands of [`TILE_ROWS`] rows in parallel, each band walked [`TILE_COLS`] columns at a
+/// time, so that what a tile's kernels read around it (`(64 + 2r) × (16 + 2r)` texels for a
+/// screen radius `r`) stays in cache instead of `2r` whole rows. Pixels are independent, so the
+/// order changes no result. `band_done(rows)` after each band with its rows in `ys`.
+pub fn tiled<T: Send>(
+    out: &mut [T],
+    width: u32,
+    xs: core::ops::Range<u32>,
+    ys: core::ops::Range<u32>,
+    band_done: Progress,
+    f: impl Fn(UVec2, &mut T) + Sync,
+) {
+    let w = width as usize;
+    out.par_chunks_mut(w * TILE_ROWS as usize).enumerate().for_each(|(band, rows)| {
+        let y0 = band as u32 * TILE_ROWS;
+        let band_rows = (rows.len() / w) as u32;
+        let (lo, hi) = (y0.max(ys.start), (y0 + band_rows).min(ys.end));
+        if lo >= hi {
+            return;
+        }
+        let mut x0 = xs.start;
+        while x0 < xs.end {
+            let x1 = (x0 + TILE_COLS).min(xs.end);
+            for y in lo..hi {
+                let row = &mut rows[((y - y0) as usize) * w..][..w];
+                for x in x0..x1 {
+                    f(uvec2(x, y), &mut row[x as usize]);
+                }
+            }
+            x0 = x1;
+        }
+        band_done((hi - lo) as u64);
+    });
+}
+
+/// Run `kernel` for every inner pixel of a full-target image, in parallel [`tiled`] bands.
+/// Guard-band pixels keep `fill`.
 fn for_inner_pixels(
     size: UVec2,
     guard: u32,
@@ -18,16 +59,8 @@ fn for_inner_pixels(
     kernel: impl Fn(UVec2) -> f32 + Sync,
 ) -> Vec<f32> {
     let mut out = vec![fill; (size.x * size.y) as usize];
-    out.par_chunks_mut(size.x as usize).enumerate().for_each(|(y, row)| {
-        let y = y as u32;
-        if y < guard || y + guard >= size.y {
-            return;
-        }
-        for x in guard..size.x - guard {
-            row[x as usize] = kernel(uvec2(x, y));
-        }
-        progress(1);
-    });
+    let (xs, ys) = (guard..size.x.saturating_sub(guard), guard..size.y.saturating_sub(guard));
+    tiled(&mut out, size.x, xs, ys, progress, |p, v| *v = kernel(p));
     out
 }
 

@@ -18,7 +18,42 @@ pub fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
 /// Fractional part `x − floor(x)` ∈ [0, 1) (HLSL `frac`).
 #[inline]
 pub fn frac(x: f32) -> f32 {
-    x - x.floor()
+    x - floor(x)
+}
+
+/// `floor(x)`, bit for bit (−0 stays −0, NaN and ±∞ pass through). SPIR-V: `OpExtInst Floor`.
+/// CPU without SSE4.1's `roundss` (the x86-64 baseline): `f32::floor` is an out-of-line libm
+/// call, so truncate through `i32` instead, inline (every |x| ≥ 2²³ is already integral).
+#[inline]
+pub fn floor(x: f32) -> f32 {
+    #[cfg(any(target_arch = "spirv", target_feature = "sse4.1", not(target_arch = "x86_64")))]
+    {
+        x.floor()
+    }
+    #[cfg(not(any(target_arch = "spirv", target_feature = "sse4.1", not(target_arch = "x86_64"))))]
+    {
+        if x.is_nan() || x.abs() >= 8_388_608.0 {
+            return x;
+        }
+        let t = x as i32 as f32;
+        let r = if t > x { t - 1.0 } else { t };
+        r.copysign(x)
+    }
+}
+
+/// `x^p`, with the default `p = 2` (XeGTAO's SampleDistributionPower, spec
+/// gtao-raymarch-hybrid §2.6.3 step 7) as the correctly rounded product `x·x` rather than a
+/// `powf` call per sample (`exp2(p·log2 x)` on the GPU; glibc's `powf` is within 0.82 ulp, so
+/// it may differ from `x·x` in the last bit).
+#[inline]
+pub fn pow(x: f32, p: f32) -> f32 {
+    if p == 2.0 { x * x } else { x.powf(p) }
+}
+
+/// `ceil(x) = −floor(−x)`, bit for bit (see [`floor`]).
+#[inline]
+pub fn ceil(x: f32) -> f32 {
+    -floor(-x)
 }
 
 /// Sign with `sign(0) = +1` (spec svao-raysd §1 octahedral codec, §4.2 `nz`).
