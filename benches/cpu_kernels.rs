@@ -82,6 +82,7 @@ fn kernels(c: &mut Criterion) {
                     cos_theta: 1.0,
                     near: 0.0,
                     far: 1.0,
+                    rotation: 0.0,
                 };
                 for k in 0..16u32 {
                     let t = ((stream * 16 + k) as f32 * 0.618_034).fract();

@@ -57,6 +57,12 @@ pub struct Frame {
     pub exponent: f32,
     pub thickness: f32,
     pub inner: UVec2,
+    /// The frame's place in a sequence (`aokit::path`): its index (the techniques' noise), the
+    /// previous frame's camera and the temporal accumulation ([`FrameDesc`]'s fields of the
+    /// same names). A single frame: 0, `None`, `None`.
+    pub frame_index: u32,
+    pub previous_camera: Option<Camera>,
+    pub temporal: Option<aokit_shaders::temporal::settings::TemporalSettings>,
 }
 
 /// Why a frame request is unusable.
@@ -166,12 +172,30 @@ impl Frame {
         let near = 1e-4 * far;
         let inner = uvec2(req.width, req.height);
         let camera = Camera::look_at(eye, target, up, fov_deg.to_radians(), inner, req.guard, near, far);
-        Ok(Frame { camera, eye, target, up, fov_deg, radius, exponent: req.exponent, thickness: req.thickness, inner })
+        Ok(Frame {
+            camera,
+            eye,
+            target,
+            up,
+            fov_deg,
+            radius,
+            exponent: req.exponent,
+            thickness: req.thickness,
+            inner,
+            frame_index: 0,
+            previous_camera: None,
+            temporal: None,
+        })
     }
 
     /// What the techniques' graphs are built from.
     pub fn desc(&self) -> FrameDesc {
-        FrameDesc { camera: self.camera, radius: self.radius, exponent: self.exponent, thickness: self.thickness }
+        FrameDesc {
+            frame_index: self.frame_index,
+            previous_camera: self.previous_camera,
+            temporal: self.temporal,
+            ..FrameDesc::new(self.camera, self.radius, self.exponent, self.thickness)
+        }
     }
 
     /// Push constants of the VAO pass (spec svao-raysd §2 defaults: 512 px screen clamp).

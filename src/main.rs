@@ -3,7 +3,7 @@
 use aokit::cli::SceneArgs;
 use aokit::cli::TechniqueArgs;
 use aokit::frame::Frame;
-use aokit::output::{crop_inner, write_exr, write_png};
+use aokit::output::{crop_inner, write_bent_png, write_exr, write_png};
 use aokit::render::{CpuRenderer, Renderer, VulkanRenderer};
 use aokit::report::{BenchResult, CompareReport, CompareSetup};
 use aokit::scene::Scene;
@@ -41,6 +41,10 @@ enum Command {
     /// Write a static WebGPU page (plain JS modules) that runs the screen-space techniques in a
     /// browser on the exported G-buffer, with cpu-sim's AO as its reference (docs/web.md).
     Web(WebArgs),
+    /// Render a camera path (orbit or dolly) frame after frame, with and without temporal
+    /// accumulation: temporal instability and MSE against the ground truth per technique, an
+    /// animated PNG to look at (docs/temporal.md).
+    Path(PathArgs),
     /// Print the Vulkan device aokit would use and its ray-tracing extensions.
     Info {
         /// Enable the Khronos validation layer.
@@ -51,6 +55,9 @@ enum Command {
     Scenes,
     /// List the techniques and their settings (key, accepted values, default, flag).
     Techniques,
+    /// Search a technique's number settings against the 512-spp ground truth (Nelder–Mead),
+    /// cross-validated over scenes: prints the tuned settings and the gain on held-back scenes.
+    Tune(aokit::tune::TuneArgs),
 }
 
 #[derive(Copy, Clone, Debug, PartialEq, Eq, ValueEnum)]
@@ -97,6 +104,10 @@ struct RenderArgs {
     /// Also write the raw float AO as OpenEXR.
     #[arg(long)]
     exr: Option<PathBuf>,
+    /// Also write the bent normals (RGB PNG: rgb = view-space normal ·0.5 + 0.5; needs a
+    /// technique that outputs them: gtao with --gtao-bent-normals on).
+    #[arg(long, value_name = "PNG")]
+    bent_out: Option<PathBuf>,
 }
 
 #[derive(clap::Args)]
@@ -159,6 +170,55 @@ struct ScalingArgs {
     #[arg(long, default_value_t = 3)]
     frames: u32,
     /// Write the results as JSON here.
+    #[arg(long)]
+    json: Option<PathBuf>,
+}
+
+#[derive(clap::Args)]
+struct PathArgs {
+    #[command(flatten)]
+    frame: FrameArgs,
+    #[command(flatten)]
+    options: TechniqueArgs,
+    /// Comma-separated techniques, each optionally with `:key=value` settings, or `all` (every
+    /// registered technique but the reference).
+    #[arg(long, visible_alias = "techniques", default_value = "gtao")]
+    technique: String,
+    /// The camera path: `orbit` (around the camera's target, about its up axis) or `dolly`
+    /// (toward the target).
+    #[arg(long, default_value = "orbit")]
+    path: String,
+    /// Frames of the path (at least 2).
+    #[arg(long, default_value_t = 60)]
+    frames: u32,
+    /// Step per frame: degrees of orbit [0.25], or the fraction of the eye–target distance a
+    /// dolly moves [0.005].
+    #[arg(long)]
+    step: Option<f32>,
+    /// Temporal accumulation: `off`, `on` or `both` (each technique twice).
+    #[arg(long, default_value = "both")]
+    temporal: String,
+    /// The current frame's weight α of the accumulation's exponential blend, in (0, 1].
+    #[arg(long, default_value_t = 0.1)]
+    temporal_alpha: f32,
+    /// Relative depth tolerance ε of the accumulation's history test and of the instability's
+    /// "valid in both frames", in (0, 1].
+    #[arg(long, default_value_t = aokit_shaders::temporal::settings::DEPTH_TOLERANCE)]
+    temporal_depth_tolerance: f32,
+    /// The techniques' noise over the frames: `animated` (frame index t) or `static` (0).
+    #[arg(long, default_value = "animated")]
+    noise: String,
+    /// The reference (MSE, and its own instability as the floor), optionally with settings.
+    #[arg(long, default_value = "groundtruth")]
+    reference: String,
+    /// Animated PNG of the final AO; with several runs one file per run, the run's label
+    /// appended to the name (`anim-gtao.png`, `anim-gtao-temporal.png`, `anim-groundtruth.png`).
+    #[arg(long)]
+    out: Option<PathBuf>,
+    /// Frames per second of the animated PNG.
+    #[arg(long, default_value_t = 30)]
+    fps: u16,
+    /// Write the machine-readable report here.
     #[arg(long)]
     json: Option<PathBuf>,
 }
@@ -245,6 +305,16 @@ fn render(args: RenderArgs) -> Result<(), String> {
     bar.finish_and_clear();
     check_validation(&renderer)?;
     let view = frame.camera.view;
+    if let Some(path) = &args.bent_out {
+        if run.bent_normals.is_empty() {
+            return Err(format!(
+                "--bent-out: {} wrote no bent normals (gtao writes them with --gtao-bent-normals on)",
+                technique.name()
+            ));
+        }
+        let inner = crop_inner(&view, &run.bent_normals);
+        write_bent_png(path, frame.inner.x, frame.inner.y, &inner).map_err(|e| e.to_string())?;
+    }
     let full = if args.no_blur { &run.ao } else { &run.ao_final };
     let ao = crop_inner(&view, full);
     // Written atomically; the errors name the path.
@@ -267,6 +337,9 @@ fn render(args: RenderArgs) -> Result<(), String> {
     line["refined_samples"] = run.refined_samples.into();
     line["mean_ao"] = (ao.iter().map(|&a| a as f64).sum::<f64>() / ao.len() as f64).into();
     line["out"] = args.out.display().to_string().into();
+    if let Some(path) = &args.bent_out {
+        line["bent_out"] = path.display().to_string().into();
+    }
     println!("{line}");
     Ok(())
 }
@@ -413,6 +486,109 @@ fn scaling(args: ScalingArgs) -> Result<(), String> {
     Ok(())
 }
 
+fn path(args: PathArgs) -> Result<(), String> {
+    use aokit::path::{
+        Measure, Noise, PathInputs, PathKind, PathReport, PathResult, PathSpec, path_frames, run_path, suffixed,
+        write_apng,
+    };
+    use aokit_shaders::temporal::settings::TemporalSettings;
+    let kind = PathKind::parse(&args.path)?;
+    let spec = PathSpec { kind, frames: args.frames, step: args.step.unwrap_or(kind.default_step()) };
+    spec.validate()?;
+    let noise = Noise::parse(&args.noise)?;
+    let modes: &[bool] = match args.temporal.as_str() {
+        "off" => &[false],
+        "on" => &[true],
+        "both" => &[false, true],
+        other => return Err(format!("--temporal {other}: expected off, on or both")),
+    };
+    let temporal = TemporalSettings { alpha: args.temporal_alpha, depth_tolerance: args.temporal_depth_tolerance };
+    temporal.validate()?;
+    if let Some(out) = &args.out
+        && !out.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"))
+    {
+        return Err(format!("--out {}: aokit writes an animated PNG (APNG): give a .png path", out.display()));
+    }
+    let reference_name = args.reference.split(':').next().unwrap_or_default();
+    let names: Vec<&str> = match args.technique.trim() {
+        "all" => aokit::technique::TECHNIQUES.iter().map(|t| t.name()).filter(|n| *n != reference_name).collect(),
+        list => list.split(',').map(str::trim).filter(|s| !s.is_empty()).collect(),
+    };
+    if names.is_empty() {
+        return Err("--technique is empty".into());
+    }
+    let mut techniques = args.options.techniques(&[&names[..], &[args.reference.as_str()]].concat())?;
+    let reference = techniques.pop().expect("the reference is the last");
+    let (scene, base) = resolve(&args.frame)?;
+    let renderer = renderer(&args.frame, &scene)?;
+    let frames_off = path_frames(&base, &spec, noise, None);
+    let frames_on = path_frames(&base, &spec, noise, Some(temporal));
+    let runs = 2 + (techniques.len() * modes.len()) as u64;
+    let bar = ProgressBar::new(runs * spec.frames as u64).with_style(
+        ProgressStyle::with_template("{msg} [{bar:40}] {pos}/{len} frames ({eta})").expect("valid template"),
+    );
+    bar.set_message(format!("{} G-buffers", renderer.backend_name()));
+    let mut gbuffers = Vec::new();
+    for f in &frames_off {
+        gbuffers.push(renderer.gbuffer(&scene, f, &aokit_cpu::no_progress).map_err(|e| e.to_string())?.0);
+        bar.inc(1);
+    }
+    let inputs = |frames| PathInputs { renderer: &renderer, scene: &scene, frames, gbuffers: &gbuffers };
+    let tolerance = temporal.depth_tolerance;
+    let measure = Measure { reference: None, tolerance, images: args.out.is_some(), keep_ao: true };
+    let tick = || bar.inc(1);
+    bar.set_message(format!("{} (reference)", reference.label()));
+    let (reference_run, reference_ao) =
+        run_path(inputs(&frames_off), &reference, measure, &aokit_cpu::no_progress, &tick)?;
+    let reference = PathResult { technique: reference, temporal: false, run: reference_run };
+    let mut results = Vec::new();
+    for t in &techniques {
+        for &on in modes {
+            bar.set_message(format!("{}{}", t.label(), if on { " +temporal" } else { "" }));
+            let frames = if on { &frames_on } else { &frames_off };
+            let measure = Measure { reference: Some(&reference_ao), keep_ao: false, ..measure };
+            let (run, _) = run_path(inputs(frames), t, measure, &aokit_cpu::no_progress, &tick)?;
+            results.push(PathResult { technique: t.clone(), temporal: on, run });
+        }
+    }
+    bar.finish_and_clear();
+    check_validation(&renderer)?;
+    let device = renderer.device_name();
+    let report = PathReport {
+        scene: &scene.name,
+        backend: renderer.backend_name(),
+        device: &device,
+        frame: &base,
+        spec,
+        noise,
+        temporal,
+        tolerance,
+        reference: &reference,
+        results: &results,
+    };
+    print!("{}", report.table());
+    if let Some(path) = &args.json {
+        let text = serde_json::to_string_pretty(&report.json()).expect("serializable");
+        aokit::output::write_atomic_bytes(path, text.as_bytes()).map_err(|e| e.to_string())?;
+    }
+    if let Some(out) = &args.out {
+        let single = results.len() == 1;
+        for res in std::iter::once(&reference).chain(&results) {
+            let is_reference = std::ptr::eq(res, &reference);
+            if single && is_reference {
+                continue;
+            }
+            let name = format!("{}{}", res.technique.label(), if res.temporal { "-temporal" } else { "" });
+            let name: String =
+                name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '-' { c } else { '_' }).collect();
+            let file = if single { out.clone() } else { suffixed(out, &name) };
+            write_apng(&file, base.inner.x, base.inner.y, &res.run.images, args.fps).map_err(|e| e.to_string())?;
+            eprintln!("wrote {}", file.display());
+        }
+    }
+    Ok(())
+}
+
 /// The frame and its G-buffer on the chosen back-end, for commands that write them out (export,
 /// web); `command` names the command in the `--rt-mode` refusal.
 fn frame_gbuffer(args: &FrameArgs, command: &str) -> Result<(Scene, Frame, GBufferImage, &'static str), String> {
@@ -460,6 +636,8 @@ fn main() -> ExitCode {
         Command::Scaling(args) => scaling(args),
         Command::Export(args) => export(args),
         Command::Web(args) => web(args),
+        Command::Path(args) => path(args),
+        Command::Tune(args) => aokit::tune::tune_command(args),
         Command::Info { validation } => aokit_vulkan::Gpu::new(&GpuOptions { validation, ..Default::default() })
             .map_err(|e| e.to_string())
             .map(|gpu| {

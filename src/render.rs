@@ -82,7 +82,7 @@ impl CpuRenderer {
         progress: Progress,
     ) -> (Vec<f32>, f64) {
         let t = Instant::now();
-        let gt = GroundTruthFrame { camera: frame.camera, params: *params };
+        let gt = GroundTruthFrame { camera: frame.camera, params: *params, ..bytemuck::Zeroable::zeroed() };
         let (ao, _) = aokit_cpu::run_ground_truth(&self.bvh, &self.surfaces(), &gt, gbuffer, progress);
         (ao, ms_since(t))
     }
@@ -319,6 +319,19 @@ impl CpuRenderer {
         technique: &Technique,
         progress: Progress,
     ) -> TechniqueRun {
+        self.run_with(&mut CpuExecutor::new(), frame, gbuffer, technique, progress)
+    }
+
+    /// [`CpuRenderer::run`] through `executor`, whose persistent resources (the temporal
+    /// accumulation's history) carry over from the frames it ran before.
+    pub fn run_with(
+        &self,
+        executor: &mut CpuExecutor,
+        frame: &Frame,
+        gbuffer: &GBufferImage,
+        technique: &Technique,
+        progress: Progress,
+    ) -> TechniqueRun {
         let graph = technique.graph(&frame.desc()).expect("every technique has a pass graph");
         let mut passes: PassTimes = Vec::new();
         let mut depth2 = Vec::new();
@@ -335,7 +348,6 @@ impl CpuRenderer {
             scene: Some(CpuScene { bvh: &self.bvh, surfaces: &surfaces }),
             progress,
         };
-        let mut executor = CpuExecutor::new();
         let stats = executor.run(&graph, &inputs).expect("the CPU executor runs every graph kernel");
         passes.extend(stats.pass_ms);
         let read = |name: &str| executor.words(name).map(|w| w.to_vec());
@@ -363,6 +375,7 @@ fn graph_run(
     if let Some(words) = read(RAY_COUNT) {
         run.rays = ray_count_of(&words);
     }
+    run.bent_normals = read(aokit_shaders::gtao::settings::BENT_NORMALS).unwrap_or_default();
     let Some(record) = read("svao_frame") else { return run };
     let svao: SvaoFrame =
         bytemuck::pod_read_unaligned(&bytemuck::cast_slice::<u32, u8>(&record)[..size_of::<SvaoFrame>()]);

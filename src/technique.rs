@@ -203,6 +203,10 @@ pub struct TechniqueRun {
     /// Vulkan graph techniques: wall time of the technique's one command buffer from submit to
     /// fence, ms (compare with the sum of its pass timestamps: host round trips show as the gap).
     pub frame_ms: Option<f64>,
+    /// XeGTAO with `bent-normals on`: per full-target pixel, RGBA8 in a u32 — rgb the unit bent
+    /// normal in the G-buffer's right-handed view space ·0.5 + 0.5, a the visibility ·255
+    /// (spec gtao-raymarch-hybrid §2.6.5). Empty otherwise.
+    pub bent_normals: Vec<u32>,
 }
 
 impl TechniqueRun {
@@ -217,6 +221,7 @@ impl TechniqueRun {
             interval_sum: None,
             debug: None,
             frame_ms: None,
+            bent_normals: Vec::new(),
         }
     }
 

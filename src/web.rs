@@ -36,7 +36,7 @@ macro_rules! wgsl_files {
 }
 
 /// Every committed WGSL module (`assets/wgsl/`); [`write`] refuses a manifest naming another.
-const WGSL: [(&str, &str); 12] = wgsl_files!(
+const WGSL: &[(&str, &str)] = &wgsl_files!(
     "blur_main.wgsl",
     "export_ao_r32f.wgsl",
     "gtao_denoise.wgsl",
@@ -48,7 +48,10 @@ const WGSL: [(&str, &str); 12] = wgsl_files!(
     "raymarch_main.wgsl",
     "raysd_pass2.wgsl",
     "svao_pass1.wgsl",
+    "temporal_blend.wgsl",
+    "temporal_store.wgsl",
     "vao_main.wgsl",
+    "vbao_main.wgsl",
 );
 
 /// The inputs a browser page has: the exported G-buffer.

@@ -445,14 +445,15 @@ fn constants_formulas_cover_every_field_and_name_the_settings_that_change_it() {
     }
 
     // The frame: its radius, exponent and thickness change the fields whose formulas name them
-    // ("the frame's … AO radius"), the eye only the view transforms, the field of view only the
-    // tangents.
+    // ("the frame's … AO radius"), its index only the noise fields ("the frame index"), the eye
+    // only the view transforms, the field of view only the tangents.
     let look = |eye: Vec3, fov_y: f32| {
         Camera::look_at(eye, Vec3::ZERO, Vec3::Y, fov_y, UVec2::new(1920, 1080), 64, 0.1, 100.0)
     };
     assert_eq!(look(Vec3::new(0.0, 1.0, 5.0), 1.0), frame.camera);
-    let frames: [(&str, FrameDesc, &[&str]); 5] = [
+    let frames: [(&str, FrameDesc, &[&str]); 6] = [
         ("radius", FrameDesc { radius: 0.7, ..frame }, &["AO radius"]),
+        ("frame index", FrameDesc { frame_index: 5, ..frame }, &["frame index"]),
         ("exponent", FrameDesc { exponent: 3.0, ..frame }, &["AO exponent"]),
         ("thickness", FrameDesc { thickness: 0.1, ..frame }, &["VAO thickness"]),
         (

@@ -56,7 +56,7 @@ fn step_gbuffer() -> (FrameDesc, VaoParams, BlurParams, Vec<f32>, Vec<u32>) {
         }
     }
     let normals = vec![encode_normal(Vec3::Z); depth.len()];
-    let frame = FrameDesc { camera, radius: 2.0, exponent: 2.0, thickness: 0.0 };
+    let frame = FrameDesc::new(camera, 2.0, 2.0, 0.0);
     let vao = VaoParams { view, radius: 2.0, exponent: 2.0, thickness: 0.0, max_screen_radius: 512.0 };
     let blur = BlurParams { view, direction: uvec2(1, 0), sharpness: 16.0, _pad: 0 };
     (frame, vao, blur, depth, normals)

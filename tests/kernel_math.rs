@@ -122,10 +122,10 @@ fn sd_jitter_tables_are_latin_hypercubes() {
     assert_latin_hypercube(&SD_JITTER_PAPER);
     // Lookup uses (q.y mod 4)·4 + (q.x mod 4).
     assert_eq!(
-        sd_jitter(uvec2(5, 6), JitterTable::Scrambled as u32),
+        sd_jitter(uvec2(5, 6), JitterTable::Scrambled as u32, 0),
         vec2(SD_JITTER_SCRAMBLED[9][0], SD_JITTER_SCRAMBLED[9][1])
     );
-    assert_eq!(sd_jitter(uvec2(5, 6), JitterTable::None as u32), vec2(0.5, 0.5));
+    assert_eq!(sd_jitter(uvec2(5, 6), JitterTable::None as u32, 0), vec2(0.5, 0.5));
     // Spec §7.2 lists idx 13 = (0.44085410237312317, 0.011881716549396515).
     assert_eq!(SD_JITTER_SCRAMBLED[13], [0.440_854_1_f64 as f32, 0.011_881_717_f64 as f32]);
 }

@@ -55,7 +55,7 @@ fn coverage_keeps_the_expected_fraction_of_samples() {
         let mut by_mask = vec![0u64; 1 << n];
         for _ in 0..FRAGMENTS {
             let p = vec3(unit() * 40.0 - 20.0, unit() * 20.0, unit() * 40.0 - 20.0);
-            let m = coverage_mask(p, n);
+            let m = coverage_mask(p, n, 0);
             by_count[m.count_ones() as usize] += 1;
             by_mask[m as usize] += 1;
             for (k, c) in per_sample.iter_mut().enumerate() {

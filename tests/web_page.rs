@@ -200,8 +200,7 @@ fn web_page_runs_the_screen_space_techniques_in_chromium_and_agrees_with_cpu_sim
     let export: serde_json::Value = serde_json::from_slice(&std::fs::read(site.join("export.json")).unwrap()).unwrap();
     let camera: Camera = bytemuck::pod_read_unaligned(&std::fs::read(site.join("camera.bin")).unwrap());
     let number = |k: &str| export[k].as_f64().unwrap() as f32;
-    let desc =
-        FrameDesc { camera, radius: number("radius"), exponent: number("exponent"), thickness: number("thickness") };
+    let desc = FrameDesc::new(camera, number("radius"), number("exponent"), number("thickness"));
     let depth: Vec<f32> = words(&site.join("gbuffer_depth.f32"));
     let normals: Vec<u32> = words(&site.join("gbuffer_normals.u32"));
     let web: serde_json::Value = serde_json::from_slice(&std::fs::read(site.join("web.json")).unwrap()).unwrap();

@@ -29,6 +29,8 @@ struct type_19 {
     member_10: u32,
     member_11: u32,
     member_12: u32,
+    member_13: u32,
+    member_14: u32,
 }
 
 struct type_20 {
@@ -53,927 +55,1080 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_215_: i32;
-    var phi_234_: i32;
-    var phi_274_: i32;
-    var phi_293_: i32;
-    var phi_333_: i32;
-    var phi_352_: i32;
-    var phi_392_: i32;
-    var phi_411_: i32;
-    var phi_491_: f32;
-    var phi_502_: f32;
-    var phi_513_: f32;
-    var phi_524_: f32;
-    var phi_1570_: f32;
-    var phi_1585_: f32;
-    var phi_1589_: f32;
-    var phi_1590_: bool;
-    var phi_1613_: f32;
-    var phi_1628_: f32;
-    var phi_1632_: f32;
-    var phi_1633_: bool;
-    var phi_1656_: f32;
-    var phi_1671_: f32;
-    var phi_1675_: f32;
-    var phi_1676_: bool;
-    var phi_1699_: f32;
-    var phi_1714_: f32;
-    var phi_1718_: f32;
-    var phi_1719_: bool;
-    var phi_542_: bool;
-    var phi_1742_: bool;
-    var phi_1757_: bool;
-    var phi_636_: vec2<f32>;
-    var phi_664_: vec3<f32>;
-    var phi_693_: f32;
-    var phi_701_: u32;
-    var phi_704_: u32;
-    var phi_706_: u32;
-    var phi_708_: u32;
-    var phi_737_: u32;
-    var phi_738_: u32;
-    var phi_739_: u32;
-    var phi_740_: u32;
-    var phi_702_: u32;
-    var phi_705_: u32;
-    var phi_707_: u32;
-    var phi_709_: u32;
+    var phi_253_: i32;
+    var phi_272_: i32;
+    var phi_312_: i32;
+    var phi_331_: i32;
+    var phi_371_: i32;
+    var phi_390_: i32;
+    var phi_430_: i32;
+    var phi_449_: i32;
+    var phi_529_: f32;
+    var phi_540_: f32;
+    var phi_551_: f32;
+    var phi_562_: f32;
+    var phi_1926_: f32;
+    var phi_1941_: f32;
+    var phi_1945_: f32;
+    var phi_1946_: bool;
+    var phi_1969_: f32;
+    var phi_1984_: f32;
+    var phi_1988_: f32;
+    var phi_1989_: bool;
+    var phi_2012_: f32;
+    var phi_2027_: f32;
+    var phi_2031_: f32;
+    var phi_2032_: bool;
+    var phi_2055_: f32;
+    var phi_2070_: f32;
+    var phi_2074_: f32;
+    var phi_2075_: bool;
+    var phi_2098_: bool;
+    var phi_2113_: bool;
+    var phi_665_: vec2<f32>;
+    var phi_693_: vec3<f32>;
+    var phi_714_: u32;
+    var phi_717_: u32;
+    var phi_719_: u32;
+    var phi_721_: u32;
+    var phi_750_: u32;
+    var phi_751_: u32;
+    var phi_752_: u32;
+    var phi_753_: u32;
+    var phi_715_: u32;
+    var phi_718_: u32;
+    var phi_720_: u32;
+    var phi_722_: u32;
     var local: u32;
-    var phi_1856_: bool;
-    var phi_764_: u32;
-    var phi_767_: f32;
-    var phi_890_: f32;
-    var phi_906_: f32;
-    var phi_923_: f32;
-    var phi_930_: u32;
-    var phi_933_: f32;
-    var phi_935_: f32;
-    var phi_977_: f32;
-    var phi_998_: u32;
-    var phi_1014_: f32;
-    var phi_1016_: f32;
-    var phi_1017_: bool;
-    var phi_1037_: f32;
-    var phi_1039_: f32;
-    var phi_1040_: bool;
-    var phi_1089_: u32;
-    var phi_1110_: u32;
-    var phi_1112_: u32;
-    var phi_1115_: u32;
-    var phi_1113_: u32;
-    var phi_1116_: u32;
-    var local_1: u32;
-    var phi_1199_: u32;
-    var phi_1220_: u32;
-    var phi_1222_: u32;
-    var phi_1225_: u32;
+    var phi_776_: bool;
+    var phi_806_: f32;
+    var phi_2382_: bool;
+    var phi_816_: vec3<f32>;
+    var phi_819_: u32;
+    var phi_821_: f32;
+    var phi_941_: f32;
+    var phi_961_: f32;
+    var phi_978_: f32;
+    var phi_1003_: u32;
+    var phi_1006_: f32;
+    var phi_1008_: f32;
+    var phi_1062_: f32;
+    var phi_1086_: f32;
+    var phi_1109_: u32;
+    var phi_1125_: f32;
+    var phi_1127_: f32;
+    var phi_1128_: bool;
+    var phi_1148_: f32;
+    var phi_1150_: f32;
+    var phi_1151_: bool;
+    var phi_1203_: u32;
     var phi_1223_: u32;
+    var phi_1225_: u32;
+    var phi_1228_: u32;
     var phi_1226_: u32;
+    var phi_1229_: u32;
+    var local_1: u32;
+    var phi_1311_: u32;
+    var phi_1331_: u32;
+    var phi_1333_: u32;
+    var phi_1336_: u32;
+    var phi_1334_: u32;
+    var phi_1337_: u32;
     var local_2: u32;
-    var phi_1317_: f32;
-    var phi_1323_: f32;
-    var phi_1369_: f32;
-    var phi_1375_: f32;
-    var phi_1772_: bool;
-    var phi_1787_: bool;
-    var phi_931_: u32;
-    var phi_934_: f32;
-    var phi_936_: f32;
-    var phi_1807_: bool;
+    var phi_1435_: f32;
+    var phi_1441_: f32;
+    var phi_1494_: f32;
+    var phi_1500_: f32;
+    var phi_2128_: bool;
+    var phi_2143_: bool;
+    var phi_1004_: u32;
+    var phi_1007_: f32;
+    var phi_1009_: f32;
+    var phi_2331_: bool;
     var local_3: f32;
     var local_4: f32;
-    var phi_1401_: f32;
+    var phi_1526_: f32;
     var local_5: f32;
     var local_6: f32;
-    var phi_1419_: f32;
-    var phi_1925_: bool;
-    var phi_765_: u32;
-    var phi_768_: f32;
-    var phi_1924_: bool;
+    var phi_1544_: f32;
+    var phi_1700_: vec3<f32>;
+    var phi_1701_: vec3<f32>;
+    var phi_1702_: vec3<f32>;
+    var phi_1703_: vec3<f32>;
+    var phi_1704_: bool;
+    var phi_1710_: vec3<f32>;
+    var phi_2451_: bool;
+    var phi_817_: vec3<f32>;
+    var phi_820_: u32;
+    var phi_822_: f32;
+    var phi_2450_: bool;
     var local_7: f32;
-    var phi_1802_: bool;
-    var phi_1458_: f32;
-    var phi_1490_: type_22;
+    var phi_2158_: bool;
+    var phi_1746_: f32;
+    var local_8: vec3<f32>;
+    var local_9: vec3<f32>;
+    var local_10: vec3<f32>;
+    var local_11: vec3<f32>;
+    var phi_1776_: vec3<f32>;
+    var phi_2174_: f32;
+    var phi_2195_: f32;
+    var phi_2216_: f32;
+    var phi_2237_: f32;
+    var phi_1798_: type_22;
+    var phi_1799_: type_22;
+    var phi_1840_: type_22;
+    var phi_1841_: type_22;
+    var phi_1842_: bool;
+    var phi_1846_: type_22;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e69 = id_1;
-            let _e71 = arrayLength((&mips.member));
-            let _e82 = params.member.member.member[0u];
-            let _e87 = select(select(u32(_e82), 0u, (_e82 < 0f)), 4294967295u, (_e82 > 4294967000f));
-            let _e92 = params.member.member.member[1u];
-            let _e97 = select(select(u32(_e92), 0u, (_e92 < 0f)), 4294967295u, (_e92 > 4294967000f));
-            if (_e69.x >= _e87) {
+            let _e84 = id_1;
+            let _e86 = arrayLength((&mips.member));
+            let _e97 = params.member.member.member[0u];
+            let _e102 = select(select(u32(_e97), 0u, (_e97 < 0f)), 4294967295u, (_e97 > 4294967000f));
+            let _e107 = params.member.member.member[1u];
+            let _e112 = select(select(u32(_e107), 0u, (_e107 < 0f)), 4294967295u, (_e107 > 4294967000f));
+            if (_e84.x >= _e102) {
             } else {
-                if (_e69.y >= _e97) {
+                if (_e84.y >= _e112) {
                 } else {
-                    let _e103 = ((_e69.y * _e87) + _e69.x);
-                    if (_e103 < _e71) {
+                    let _e118 = ((_e84.y * _e102) + _e84.x);
+                    if (_e118 < _e86) {
                     } else {
                         break;
                     }
-                    let _e107 = mips.member[_e103];
-                    let _e108 = bitcast<i32>(_e69.x);
-                    let _e109 = (_e108 + -1i);
-                    let _e111 = (bitcast<i32>(_e87) - 1i);
-                    let _e112 = (0i <= _e111);
-                    if _e112 {
+                    let _e122 = mips.member[_e118];
+                    let _e123 = bitcast<i32>(_e84.x);
+                    let _e124 = (_e123 + -1i);
+                    let _e126 = (bitcast<i32>(_e102) - 1i);
+                    let _e127 = (0i <= _e126);
+                    if _e127 {
                     } else {
                         break;
                     }
-                    if (_e109 < 0i) {
-                        phi_215_ = 0i;
+                    if (_e124 < 0i) {
+                        phi_253_ = 0i;
                     } else {
-                        phi_215_ = select(_e109, _e111, (_e109 > _e111));
+                        phi_253_ = select(_e124, _e126, (_e124 > _e126));
                     }
-                    let _e117 = phi_215_;
-                    let _e119 = bitcast<i32>(_e69.y);
-                    let _e121 = (bitcast<i32>(_e97) - 1i);
-                    let _e122 = (0i <= _e121);
-                    if _e122 {
-                    } else {
-                        break;
-                    }
-                    let _e123 = (_e119 < 0i);
-                    if _e123 {
-                        phi_234_ = 0i;
-                    } else {
-                        phi_234_ = select(_e119, _e121, (_e119 > _e121));
-                    }
-                    let _e127 = phi_234_;
-                    let _e130 = ((bitcast<u32>(_e127) * _e87) + bitcast<u32>(_e117));
-                    if (_e130 < _e71) {
+                    let _e132 = phi_253_;
+                    let _e134 = bitcast<i32>(_e84.y);
+                    let _e136 = (bitcast<i32>(_e112) - 1i);
+                    let _e137 = (0i <= _e136);
+                    if _e137 {
                     } else {
                         break;
                     }
-                    let _e134 = mips.member[_e130];
-                    let _e135 = (_e108 + 1i);
-                    if _e112 {
+                    let _e138 = (_e134 < 0i);
+                    if _e138 {
+                        phi_272_ = 0i;
+                    } else {
+                        phi_272_ = select(_e134, _e136, (_e134 > _e136));
+                    }
+                    let _e142 = phi_272_;
+                    let _e145 = ((bitcast<u32>(_e142) * _e102) + bitcast<u32>(_e132));
+                    if (_e145 < _e86) {
                     } else {
                         break;
                     }
-                    if (_e135 < 0i) {
-                        phi_274_ = 0i;
-                    } else {
-                        phi_274_ = select(_e135, _e111, (_e135 > _e111));
-                    }
-                    let _e140 = phi_274_;
-                    if _e122 {
+                    let _e149 = mips.member[_e145];
+                    let _e150 = (_e123 + 1i);
+                    if _e127 {
                     } else {
                         break;
                     }
-                    if _e123 {
-                        phi_293_ = 0i;
+                    if (_e150 < 0i) {
+                        phi_312_ = 0i;
                     } else {
-                        phi_293_ = select(_e119, _e121, (_e119 > _e121));
+                        phi_312_ = select(_e150, _e126, (_e150 > _e126));
                     }
-                    let _e145 = phi_293_;
-                    let _e148 = ((bitcast<u32>(_e145) * _e87) + bitcast<u32>(_e140));
-                    if (_e148 < _e71) {
-                    } else {
-                        break;
-                    }
-                    let _e152 = mips.member[_e148];
-                    if _e112 {
+                    let _e155 = phi_312_;
+                    if _e137 {
                     } else {
                         break;
                     }
-                    let _e153 = (_e108 < 0i);
-                    if _e153 {
-                        phi_333_ = 0i;
+                    if _e138 {
+                        phi_331_ = 0i;
                     } else {
-                        phi_333_ = select(_e108, _e111, (_e108 > _e111));
+                        phi_331_ = select(_e134, _e136, (_e134 > _e136));
                     }
-                    let _e157 = phi_333_;
-                    let _e159 = (_e119 + -1i);
-                    if _e122 {
-                    } else {
-                        break;
-                    }
-                    if (_e159 < 0i) {
-                        phi_352_ = 0i;
-                    } else {
-                        phi_352_ = select(_e159, _e121, (_e159 > _e121));
-                    }
-                    let _e164 = phi_352_;
-                    let _e167 = ((bitcast<u32>(_e164) * _e87) + bitcast<u32>(_e157));
-                    if (_e167 < _e71) {
+                    let _e160 = phi_331_;
+                    let _e163 = ((bitcast<u32>(_e160) * _e102) + bitcast<u32>(_e155));
+                    if (_e163 < _e86) {
                     } else {
                         break;
                     }
-                    let _e171 = mips.member[_e167];
-                    if _e112 {
+                    let _e167 = mips.member[_e163];
+                    if _e127 {
                     } else {
                         break;
                     }
-                    if _e153 {
-                        phi_392_ = 0i;
+                    let _e168 = (_e123 < 0i);
+                    if _e168 {
+                        phi_371_ = 0i;
                     } else {
-                        phi_392_ = select(_e108, _e111, (_e108 > _e111));
+                        phi_371_ = select(_e123, _e126, (_e123 > _e126));
                     }
-                    let _e175 = phi_392_;
-                    let _e177 = (_e119 + 1i);
-                    if _e122 {
-                    } else {
-                        break;
-                    }
-                    if (_e177 < 0i) {
-                        phi_411_ = 0i;
-                    } else {
-                        phi_411_ = select(_e177, _e121, (_e177 > _e121));
-                    }
-                    let _e182 = phi_411_;
-                    let _e185 = ((bitcast<u32>(_e182) * _e87) + bitcast<u32>(_e175));
-                    if (_e185 < _e71) {
+                    let _e172 = phi_371_;
+                    let _e174 = (_e134 + -1i);
+                    if _e137 {
                     } else {
                         break;
                     }
-                    let _e189 = mips.member[_e185];
-                    let _e190 = (_e134 - _e107);
-                    let _e191 = (_e152 - _e107);
-                    let _e192 = (_e171 - _e107);
-                    let _e193 = (_e189 - _e107);
-                    let _e194 = (_e191 - _e190);
-                    let _e196 = (_e193 - _e192);
-                    let _e204 = abs(_e190);
-                    let _e205 = abs(_e191);
-                    let _e206 = abs(_e192);
-                    let _e207 = abs(_e193);
-                    let _e208 = abs((_e190 + (_e194 * 0.5f)));
-                    let _e209 = abs((_e191 + (_e194 * -0.5f)));
-                    let _e210 = abs((_e192 + (_e196 * 0.5f)));
-                    let _e211 = abs((_e193 + (_e196 * -0.5f)));
-                    let _e220 = (_e107 * 0.011f);
-                    let _e225 = (1.25f - (select(_e208, _e204, (_e204 < _e208)) / _e220));
-                    if (_e225 > 0f) {
-                        phi_491_ = select(1f, _e225, (_e225 < 1f));
+                    if (_e174 < 0i) {
+                        phi_390_ = 0i;
                     } else {
-                        phi_491_ = 0f;
+                        phi_390_ = select(_e174, _e136, (_e174 > _e136));
                     }
-                    let _e230 = phi_491_;
-                    let _e231 = (1.25f - (select(_e209, _e205, (_e205 < _e209)) / _e220));
-                    if (_e231 > 0f) {
-                        phi_502_ = select(1f, _e231, (_e231 < 1f));
+                    let _e179 = phi_390_;
+                    let _e182 = ((bitcast<u32>(_e179) * _e102) + bitcast<u32>(_e172));
+                    if (_e182 < _e86) {
                     } else {
-                        phi_502_ = 0f;
+                        break;
                     }
-                    let _e236 = phi_502_;
-                    let _e237 = (1.25f - (select(_e210, _e206, (_e206 < _e210)) / _e220));
-                    if (_e237 > 0f) {
-                        phi_513_ = select(1f, _e237, (_e237 < 1f));
+                    let _e186 = mips.member[_e182];
+                    if _e127 {
                     } else {
-                        phi_513_ = 0f;
+                        break;
                     }
-                    let _e242 = phi_513_;
-                    let _e243 = (1.25f - (select(_e211, _e207, (_e207 < _e211)) / _e220));
-                    if (_e243 > 0f) {
-                        phi_524_ = select(1f, _e243, (_e243 < 1f));
+                    if _e168 {
+                        phi_430_ = 0i;
                     } else {
-                        phi_524_ = 0f;
+                        phi_430_ = select(_e123, _e126, (_e123 > _e126));
                     }
-                    let _e248 = phi_524_;
-                    if (_e230 > 0f) {
-                        phi_1570_ = select(1f, _e230, (_e230 < 1f));
+                    let _e190 = phi_430_;
+                    let _e192 = (_e134 + 1i);
+                    if _e137 {
                     } else {
-                        phi_1570_ = 0f;
+                        break;
                     }
-                    let _e253 = phi_1570_;
-                    let _e254 = (_e253 * 2.9f);
-                    let _e256 = floor((_e254 + 0.5f));
-                    if ((_e256 - _e254) == 0.5f) {
-                        let _e262 = ((floor((_e256 * 0.5f)) * 2f) != _e256);
-                        if _e262 {
-                            phi_1585_ = (_e256 - 1f);
+                    if (_e192 < 0i) {
+                        phi_449_ = 0i;
+                    } else {
+                        phi_449_ = select(_e192, _e136, (_e192 > _e136));
+                    }
+                    let _e197 = phi_449_;
+                    let _e200 = ((bitcast<u32>(_e197) * _e102) + bitcast<u32>(_e190));
+                    if (_e200 < _e86) {
+                    } else {
+                        break;
+                    }
+                    let _e204 = mips.member[_e200];
+                    let _e205 = (_e149 - _e122);
+                    let _e206 = (_e167 - _e122);
+                    let _e207 = (_e186 - _e122);
+                    let _e208 = (_e204 - _e122);
+                    let _e209 = (_e206 - _e205);
+                    let _e211 = (_e208 - _e207);
+                    let _e219 = abs(_e205);
+                    let _e220 = abs(_e206);
+                    let _e221 = abs(_e207);
+                    let _e222 = abs(_e208);
+                    let _e223 = abs((_e205 + (_e209 * 0.5f)));
+                    let _e224 = abs((_e206 + (_e209 * -0.5f)));
+                    let _e225 = abs((_e207 + (_e211 * 0.5f)));
+                    let _e226 = abs((_e208 + (_e211 * -0.5f)));
+                    let _e235 = (_e122 * 0.011f);
+                    let _e240 = (1.25f - (select(_e223, _e219, (_e219 < _e223)) / _e235));
+                    if (_e240 > 0f) {
+                        phi_529_ = select(1f, _e240, (_e240 < 1f));
+                    } else {
+                        phi_529_ = 0f;
+                    }
+                    let _e245 = phi_529_;
+                    let _e246 = (1.25f - (select(_e224, _e220, (_e220 < _e224)) / _e235));
+                    if (_e246 > 0f) {
+                        phi_540_ = select(1f, _e246, (_e246 < 1f));
+                    } else {
+                        phi_540_ = 0f;
+                    }
+                    let _e251 = phi_540_;
+                    let _e252 = (1.25f - (select(_e225, _e221, (_e221 < _e225)) / _e235));
+                    if (_e252 > 0f) {
+                        phi_551_ = select(1f, _e252, (_e252 < 1f));
+                    } else {
+                        phi_551_ = 0f;
+                    }
+                    let _e257 = phi_551_;
+                    let _e258 = (1.25f - (select(_e226, _e222, (_e222 < _e226)) / _e235));
+                    if (_e258 > 0f) {
+                        phi_562_ = select(1f, _e258, (_e258 < 1f));
+                    } else {
+                        phi_562_ = 0f;
+                    }
+                    let _e263 = phi_562_;
+                    if (_e245 > 0f) {
+                        phi_1926_ = select(1f, _e245, (_e245 < 1f));
+                    } else {
+                        phi_1926_ = 0f;
+                    }
+                    let _e268 = phi_1926_;
+                    let _e269 = (_e268 * 2.9f);
+                    let _e271 = floor((_e269 + 0.5f));
+                    if ((_e271 - _e269) == 0.5f) {
+                        let _e277 = ((floor((_e271 * 0.5f)) * 2f) != _e271);
+                        if _e277 {
+                            phi_1941_ = (_e271 - 1f);
                         } else {
-                            phi_1585_ = f32();
+                            phi_1941_ = f32();
                         }
-                        let _e265 = phi_1585_;
-                        phi_1589_ = _e265;
-                        phi_1590_ = select(true, false, _e262);
+                        let _e280 = phi_1941_;
+                        phi_1945_ = _e280;
+                        phi_1946_ = select(true, false, _e277);
                     } else {
-                        phi_1589_ = f32();
-                        phi_1590_ = true;
+                        phi_1945_ = f32();
+                        phi_1946_ = true;
                     }
-                    let _e268 = phi_1589_;
-                    let _e270 = phi_1590_;
-                    let _e271 = select(_e268, _e256, _e270);
-                    if (_e236 > 0f) {
-                        phi_1613_ = select(1f, _e236, (_e236 < 1f));
+                    let _e283 = phi_1945_;
+                    let _e285 = phi_1946_;
+                    let _e286 = select(_e283, _e271, _e285);
+                    if (_e251 > 0f) {
+                        phi_1969_ = select(1f, _e251, (_e251 < 1f));
                     } else {
-                        phi_1613_ = 0f;
+                        phi_1969_ = 0f;
                     }
-                    let _e282 = phi_1613_;
-                    let _e283 = (_e282 * 2.9f);
-                    let _e285 = floor((_e283 + 0.5f));
-                    if ((_e285 - _e283) == 0.5f) {
-                        let _e291 = ((floor((_e285 * 0.5f)) * 2f) != _e285);
-                        if _e291 {
-                            phi_1628_ = (_e285 - 1f);
+                    let _e297 = phi_1969_;
+                    let _e298 = (_e297 * 2.9f);
+                    let _e300 = floor((_e298 + 0.5f));
+                    if ((_e300 - _e298) == 0.5f) {
+                        let _e306 = ((floor((_e300 * 0.5f)) * 2f) != _e300);
+                        if _e306 {
+                            phi_1984_ = (_e300 - 1f);
                         } else {
-                            phi_1628_ = f32();
+                            phi_1984_ = f32();
                         }
-                        let _e294 = phi_1628_;
-                        phi_1632_ = _e294;
-                        phi_1633_ = select(true, false, _e291);
+                        let _e309 = phi_1984_;
+                        phi_1988_ = _e309;
+                        phi_1989_ = select(true, false, _e306);
                     } else {
-                        phi_1632_ = f32();
-                        phi_1633_ = true;
+                        phi_1988_ = f32();
+                        phi_1989_ = true;
                     }
-                    let _e297 = phi_1632_;
-                    let _e299 = phi_1633_;
-                    let _e300 = select(_e297, _e285, _e299);
-                    if (_e242 > 0f) {
-                        phi_1656_ = select(1f, _e242, (_e242 < 1f));
+                    let _e312 = phi_1988_;
+                    let _e314 = phi_1989_;
+                    let _e315 = select(_e312, _e300, _e314);
+                    if (_e257 > 0f) {
+                        phi_2012_ = select(1f, _e257, (_e257 < 1f));
                     } else {
-                        phi_1656_ = 0f;
+                        phi_2012_ = 0f;
                     }
-                    let _e312 = phi_1656_;
-                    let _e313 = (_e312 * 2.9f);
-                    let _e315 = floor((_e313 + 0.5f));
-                    if ((_e315 - _e313) == 0.5f) {
-                        let _e321 = ((floor((_e315 * 0.5f)) * 2f) != _e315);
-                        if _e321 {
-                            phi_1671_ = (_e315 - 1f);
+                    let _e327 = phi_2012_;
+                    let _e328 = (_e327 * 2.9f);
+                    let _e330 = floor((_e328 + 0.5f));
+                    if ((_e330 - _e328) == 0.5f) {
+                        let _e336 = ((floor((_e330 * 0.5f)) * 2f) != _e330);
+                        if _e336 {
+                            phi_2027_ = (_e330 - 1f);
                         } else {
-                            phi_1671_ = f32();
+                            phi_2027_ = f32();
                         }
-                        let _e324 = phi_1671_;
-                        phi_1675_ = _e324;
-                        phi_1676_ = select(true, false, _e321);
+                        let _e339 = phi_2027_;
+                        phi_2031_ = _e339;
+                        phi_2032_ = select(true, false, _e336);
                     } else {
-                        phi_1675_ = f32();
-                        phi_1676_ = true;
+                        phi_2031_ = f32();
+                        phi_2032_ = true;
                     }
-                    let _e327 = phi_1675_;
-                    let _e329 = phi_1676_;
-                    let _e330 = select(_e327, _e315, _e329);
-                    if (_e248 > 0f) {
-                        phi_1699_ = select(1f, _e248, (_e248 < 1f));
+                    let _e342 = phi_2031_;
+                    let _e344 = phi_2032_;
+                    let _e345 = select(_e342, _e330, _e344);
+                    if (_e263 > 0f) {
+                        phi_2055_ = select(1f, _e263, (_e263 < 1f));
                     } else {
-                        phi_1699_ = 0f;
+                        phi_2055_ = 0f;
                     }
-                    let _e342 = phi_1699_;
-                    let _e343 = (_e342 * 2.9f);
-                    let _e345 = floor((_e343 + 0.5f));
-                    if ((_e345 - _e343) == 0.5f) {
-                        let _e351 = ((floor((_e345 * 0.5f)) * 2f) != _e345);
-                        if _e351 {
-                            phi_1714_ = (_e345 - 1f);
+                    let _e357 = phi_2055_;
+                    let _e358 = (_e357 * 2.9f);
+                    let _e360 = floor((_e358 + 0.5f));
+                    if ((_e360 - _e358) == 0.5f) {
+                        let _e366 = ((floor((_e360 * 0.5f)) * 2f) != _e360);
+                        if _e366 {
+                            phi_2070_ = (_e360 - 1f);
                         } else {
-                            phi_1714_ = f32();
+                            phi_2070_ = f32();
                         }
-                        let _e354 = phi_1714_;
-                        phi_1718_ = _e354;
-                        phi_1719_ = select(true, false, _e351);
+                        let _e369 = phi_2070_;
+                        phi_2074_ = _e369;
+                        phi_2075_ = select(true, false, _e366);
                     } else {
-                        phi_1718_ = f32();
-                        phi_1719_ = true;
+                        phi_2074_ = f32();
+                        phi_2075_ = true;
                     }
-                    let _e357 = phi_1718_;
-                    let _e359 = phi_1719_;
-                    let _e360 = select(_e357, _e345, _e359);
-                    let _e366 = ((((64u * select(select(u32(_e271), 0u, (_e271 < 0f)), 4294967295u, (_e271 > 4294967000f))) + (16u * select(select(u32(_e300), 0u, (_e300 < 0f)), 4294967295u, (_e300 > 4294967000f)))) + (4u * select(select(u32(_e330), 0u, (_e330 < 0f)), 4294967295u, (_e330 > 4294967000f)))) + select(select(u32(_e360), 0u, (_e360 < 0f)), 4294967295u, (_e360 > 4294967000f)));
-                    let _e370 = params.member.member.member_3;
-                    if (_e107 > 0f) {
-                        phi_542_ = (_e107 < _e370);
+                    let _e372 = phi_2074_;
+                    let _e374 = phi_2075_;
+                    let _e375 = select(_e372, _e360, _e374);
+                    let _e381 = ((((64u * select(select(u32(_e286), 0u, (_e286 < 0f)), 4294967295u, (_e286 > 4294967000f))) + (16u * select(select(u32(_e315), 0u, (_e315 < 0f)), 4294967295u, (_e315 > 4294967000f)))) + (4u * select(select(u32(_e345), 0u, (_e345 < 0f)), 4294967295u, (_e345 > 4294967000f)))) + select(select(u32(_e375), 0u, (_e375 < 0f)), 4294967295u, (_e375 > 4294967000f)));
+                    let _e386 = ((f32(_e84.x) + 0.5f) / _e97);
+                    let _e387 = ((f32(_e84.y) + 0.5f) / _e107);
+                    let _e388 = (_e122 * 0.99999f);
+                    let _e395 = params.member.member.member_1[0u];
+                    let _e397 = ((((2f * _e386) - 1f) * _e395) * _e388);
+                    let _e404 = params.member.member.member_1[1u];
+                    let _e406 = (((1f - (2f * _e387)) * _e404) * _e388);
+                    let _e407 = -(_e397);
+                    let _e408 = -(_e406);
+                    let _e409 = (_e122 * -0.99999f);
+                    let _e416 = (1f / sqrt((((_e407 * _e407) + (_e408 * _e408)) + (_e409 * _e409))));
+                    let _e417 = (_e407 * _e416);
+                    let _e418 = (_e408 * _e416);
+                    let _e419 = (_e409 * _e416);
+                    if (_e118 < arrayLength((&normals.member))) {
                     } else {
-                        phi_542_ = false;
+                        break;
                     }
-                    let _e374 = phi_542_;
-                    if _e374 {
-                        let _e379 = ((f32(_e69.x) + 0.5f) / _e82);
-                        let _e380 = ((f32(_e69.y) + 0.5f) / _e92);
-                        let _e381 = (_e107 * 0.99999f);
-                        let _e388 = params.member.member.member_1[0u];
-                        let _e390 = ((((2f * _e379) - 1f) * _e388) * _e381);
-                        let _e397 = params.member.member.member_1[1u];
-                        let _e399 = (((1f - (2f * _e380)) * _e397) * _e381);
-                        let _e400 = -(_e390);
-                        let _e401 = -(_e399);
-                        let _e402 = (_e107 * -0.99999f);
-                        let _e409 = (1f / sqrt((((_e400 * _e400) + (_e401 * _e401)) + (_e402 * _e402))));
-                        let _e410 = (_e400 * _e409);
-                        let _e411 = (_e401 * _e409);
-                        let _e412 = (_e402 * _e409);
-                        if (_e103 < arrayLength((&normals.member))) {
-                        } else {
-                            break;
-                        }
-                        let _e416 = normals.member[_e103];
-                        let _e424 = (f32((bitcast<i32>(((_e416 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e424 != _e424) {
-                            phi_1742_ = true;
-                        } else {
-                            phi_1742_ = (-1f >= _e424);
-                        }
-                        let _e428 = phi_1742_;
-                        let _e429 = select(_e424, -1f, _e428);
-                        let _e439 = (f32((bitcast<i32>((((_e416 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e439 != _e439) {
-                            phi_1757_ = true;
-                        } else {
-                            phi_1757_ = (-1f >= _e439);
-                        }
-                        let _e443 = phi_1757_;
-                        let _e444 = select(_e439, -1f, _e443);
-                        let _e447 = (1f - abs(_e429));
-                        let _e448 = abs(_e444);
-                        let _e449 = (_e447 - _e448);
-                        if (_e449 < 0f) {
-                            phi_636_ = vec2<f32>(((1f - _e448) * select(1f, -1f, (_e429 < 0f))), (_e447 * select(1f, -1f, (_e444 < 0f))));
-                        } else {
-                            phi_636_ = vec2<f32>(_e429, _e444);
-                        }
-                        let _e460 = phi_636_;
-                        let _e469 = (1f / sqrt((((_e460.x * _e460.x) + (_e460.y * _e460.y)) + (_e449 * _e449))));
-                        let _e470 = (_e460.x * _e469);
-                        let _e471 = (_e460.y * _e469);
-                        let _e472 = (_e449 * _e469);
-                        let _e473 = -(_e472);
-                        if ((((_e470 * _e410) + (_e471 * _e411)) + (_e473 * _e412)) < 0f) {
-                            phi_664_ = vec3<f32>(-(_e470), -(_e471), _e472);
-                        } else {
-                            phi_664_ = vec3<f32>(_e470, _e471, _e473);
-                        }
-                        let _e485 = phi_664_;
-                        let _e488 = params.member.member_1;
-                        let _e491 = params.member.member_2;
-                        let _e492 = (_e488 * _e491);
-                        let _e495 = params.member.member_3;
-                        let _e496 = (_e495 * _e492);
-                        let _e500 = (_e492 / (((_e107 * 1.99998f) * _e388) / _e82));
-                        let _e502 = ((10f - _e500) * 0.01f);
-                        if (_e502 > 0f) {
-                            phi_693_ = select(1f, _e502, (_e502 < 1f));
-                        } else {
-                            phi_693_ = 0f;
-                        }
-                        let _e507 = phi_693_;
-                        let _e512 = params.member.member_11;
-                        phi_701_ = (_e69.y & 63u);
-                        phi_704_ = (_e69.x & 63u);
-                        phi_706_ = 32u;
-                        phi_708_ = 0u;
-                        loop {
-                            let _e516 = phi_701_;
-                            let _e518 = phi_704_;
-                            let _e520 = phi_706_;
-                            let _e522 = phi_708_;
-                            local = _e522;
-                            let _e523 = (_e520 > 0u);
-                            if _e523 {
-                                let _e526 = select(0u, 1u, ((_e518 & _e520) != 0u));
-                                let _e529 = select(0u, 1u, ((_e516 & _e520) != 0u));
-                                if (_e529 == 0u) {
-                                    if (_e526 == 1u) {
-                                        phi_737_ = (63u - _e516);
-                                        phi_738_ = (63u - _e518);
-                                    } else {
-                                        phi_737_ = _e516;
-                                        phi_738_ = _e518;
-                                    }
-                                    let _e540 = phi_737_;
-                                    let _e542 = phi_738_;
-                                    phi_739_ = _e542;
-                                    phi_740_ = _e540;
+                    let _e423 = normals.member[_e118];
+                    let _e431 = (f32((bitcast<i32>(((_e423 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e431 != _e431) {
+                        phi_2098_ = true;
+                    } else {
+                        phi_2098_ = (-1f >= _e431);
+                    }
+                    let _e435 = phi_2098_;
+                    let _e436 = select(_e431, -1f, _e435);
+                    let _e446 = (f32((bitcast<i32>((((_e423 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e446 != _e446) {
+                        phi_2113_ = true;
+                    } else {
+                        phi_2113_ = (-1f >= _e446);
+                    }
+                    let _e450 = phi_2113_;
+                    let _e451 = select(_e446, -1f, _e450);
+                    let _e454 = (1f - abs(_e436));
+                    let _e455 = abs(_e451);
+                    let _e456 = (_e454 - _e455);
+                    if (_e456 < 0f) {
+                        phi_665_ = vec2<f32>(((1f - _e455) * select(1f, -1f, (_e436 < 0f))), (_e454 * select(1f, -1f, (_e451 < 0f))));
+                    } else {
+                        phi_665_ = vec2<f32>(_e436, _e451);
+                    }
+                    let _e467 = phi_665_;
+                    let _e476 = (1f / sqrt((((_e467.x * _e467.x) + (_e467.y * _e467.y)) + (_e456 * _e456))));
+                    let _e477 = (_e467.x * _e476);
+                    let _e478 = (_e467.y * _e476);
+                    let _e479 = (_e456 * _e476);
+                    let _e480 = -(_e479);
+                    if ((((_e477 * _e417) + (_e478 * _e418)) + (_e480 * _e419)) < 0f) {
+                        phi_693_ = vec3<f32>(-(_e477), -(_e478), _e479);
+                    } else {
+                        phi_693_ = vec3<f32>(_e477, _e478, _e480);
+                    }
+                    let _e492 = phi_693_;
+                    let _e495 = params.member.member_1;
+                    let _e498 = params.member.member_2;
+                    let _e499 = (_e495 * _e498);
+                    let _e503 = (_e499 / (((_e122 * 1.99998f) * _e395) / _e97));
+                    let _e507 = params.member.member_11;
+                    phi_714_ = (_e84.y & 63u);
+                    phi_717_ = (_e84.x & 63u);
+                    phi_719_ = 32u;
+                    phi_721_ = 0u;
+                    loop {
+                        let _e511 = phi_714_;
+                        let _e513 = phi_717_;
+                        let _e515 = phi_719_;
+                        let _e517 = phi_721_;
+                        local = _e517;
+                        let _e518 = (_e515 > 0u);
+                        if _e518 {
+                            let _e521 = select(0u, 1u, ((_e513 & _e515) != 0u));
+                            let _e524 = select(0u, 1u, ((_e511 & _e515) != 0u));
+                            if (_e524 == 0u) {
+                                if (_e521 == 1u) {
+                                    phi_750_ = (63u - _e511);
+                                    phi_751_ = (63u - _e513);
                                 } else {
-                                    phi_739_ = _e516;
-                                    phi_740_ = _e518;
+                                    phi_750_ = _e511;
+                                    phi_751_ = _e513;
                                 }
-                                let _e544 = phi_739_;
-                                let _e546 = phi_740_;
-                                phi_702_ = _e544;
-                                phi_705_ = _e546;
-                                phi_707_ = (_e520 / 2u);
-                                phi_709_ = (_e522 + ((_e520 * _e520) * ((3u * _e526) ^ _e529)));
+                                let _e535 = phi_750_;
+                                let _e537 = phi_751_;
+                                phi_752_ = _e537;
+                                phi_753_ = _e535;
                             } else {
-                                phi_702_ = u32();
-                                phi_705_ = u32();
-                                phi_707_ = u32();
-                                phi_709_ = u32();
+                                phi_752_ = _e511;
+                                phi_753_ = _e513;
                             }
-                            let _e549 = phi_702_;
-                            let _e551 = phi_705_;
-                            let _e553 = phi_707_;
-                            let _e555 = phi_709_;
-                            continue;
-                            continuing {
-                                phi_701_ = _e549;
-                                phi_704_ = _e551;
-                                phi_706_ = _e553;
-                                phi_708_ = _e555;
-                                break if !(_e523);
-                            }
+                            let _e539 = phi_752_;
+                            let _e541 = phi_753_;
+                            phi_715_ = _e539;
+                            phi_718_ = _e541;
+                            phi_720_ = (_e515 / 2u);
+                            phi_722_ = (_e517 + ((_e515 * _e515) * ((3u * _e521) ^ _e524)));
+                        } else {
+                            phi_715_ = u32();
+                            phi_718_ = u32();
+                            phi_720_ = u32();
+                            phi_722_ = u32();
                         }
-                        let _e560 = local;
-                        let _e562 = f32((_e560 + (288u * (_e512 % 64u))));
-                        let _e564 = (0.5f + (_e562 * 0.7548777f));
-                        let _e568 = (0.5f + (_e562 * 0.5698403f));
-                        let _e573 = params.member.member_8;
-                        let _e575 = select(1u, _e573, (1u < _e573));
-                        phi_1856_ = false;
-                        phi_764_ = 0u;
-                        phi_767_ = (0.5f * _e507);
+                        let _e544 = phi_715_;
+                        let _e546 = phi_718_;
+                        let _e548 = phi_720_;
+                        let _e550 = phi_722_;
+                        continue;
+                        continuing {
+                            phi_714_ = _e544;
+                            phi_717_ = _e546;
+                            phi_719_ = _e548;
+                            phi_721_ = _e550;
+                            break if !(_e518);
+                        }
+                    }
+                    let _e555 = local;
+                    let _e557 = f32((_e555 + (288u * (_e507 % 64u))));
+                    let _e559 = (0.5f + (_e557 * 0.7548777f));
+                    let _e563 = (0.5f + (_e557 * 0.5698403f));
+                    let _e569 = params.member.member.member_3;
+                    if (_e122 > 0f) {
+                        phi_776_ = (_e122 < _e569);
+                    } else {
+                        phi_776_ = false;
+                    }
+                    let _e573 = phi_776_;
+                    if _e573 {
+                        let _e576 = params.member.member_3;
+                        let _e577 = (_e576 * _e499);
+                        let _e579 = ((10f - _e503) * 0.01f);
+                        if (_e579 > 0f) {
+                            phi_806_ = select(1f, _e579, (_e579 < 1f));
+                        } else {
+                            phi_806_ = 0f;
+                        }
+                        let _e584 = phi_806_;
+                        let _e588 = params.member.member_8;
+                        let _e590 = select(1u, _e588, (1u < _e588));
+                        phi_2382_ = false;
+                        phi_816_ = vec3<f32>(0f, 0f, 0f);
+                        phi_819_ = 0u;
+                        phi_821_ = (0.5f * _e584);
                         loop {
-                            let _e577 = phi_1856_;
-                            let _e579 = phi_764_;
-                            let _e581 = phi_767_;
-                            local_7 = _e581;
-                            let _e582 = (_e579 < _e575);
-                            if _e582 {
-                                let _e585 = params.member.member_9;
-                                let _e587 = select(1u, _e585, (1u < _e585));
-                                let _e592 = ((3.1415927f * (f32(_e579) + (_e564 - floor(_e564)))) / f32(_e575));
-                                let _e593 = sin(_e592);
-                                let _e594 = cos(_e592);
-                                let _e600 = ((_e594 * _e410) + (_e593 * _e411));
-                                let _e604 = (_e594 - (_e410 * _e600));
-                                let _e605 = (_e593 - (_e411 * _e600));
-                                let _e606 = -((_e412 * _e600));
-                                let _e609 = ((_e605 * _e412) - (_e411 * _e606));
-                                let _e612 = ((_e606 * _e410) - (_e412 * _e604));
-                                let _e615 = ((_e604 * _e411) - (_e410 * _e605));
-                                let _e622 = (1f / sqrt((((_e609 * _e609) + (_e612 * _e612)) + (_e615 * _e615))));
-                                let _e623 = (_e609 * _e622);
-                                let _e624 = (_e612 * _e622);
-                                let _e625 = (_e615 * _e622);
-                                let _e633 = (((_e485.x * _e623) + (_e485.y * _e624)) + (_e485.z * _e625));
-                                let _e637 = (_e485.x - (_e623 * _e633));
-                                let _e638 = (_e485.y - (_e624 * _e633));
-                                let _e639 = (_e485.z - (_e625 * _e633));
-                                let _e645 = sqrt((((_e637 * _e637) + (_e638 * _e638)) + (_e639 * _e639)));
-                                let _e650 = (((_e604 * _e637) + (_e605 * _e638)) + (_e606 * _e639));
-                                if (_e650 > 0f) {
-                                    phi_890_ = 1f;
+                            let _e592 = phi_2382_;
+                            let _e594 = phi_816_;
+                            let _e596 = phi_819_;
+                            let _e598 = phi_821_;
+                            local_7 = _e598;
+                            local_8 = _e594;
+                            local_9 = _e594;
+                            local_10 = _e594;
+                            local_11 = _e594;
+                            let _e599 = (_e596 < _e590);
+                            if _e599 {
+                                let _e604 = ((3.1415927f * (f32(_e596) + (_e559 - floor(_e559)))) / f32(_e590));
+                                let _e605 = sin(_e604);
+                                let _e606 = cos(_e604);
+                                let _e612 = ((_e606 * _e417) + (_e605 * _e418));
+                                let _e616 = (_e606 - (_e417 * _e612));
+                                let _e617 = (_e605 - (_e418 * _e612));
+                                let _e618 = -((_e419 * _e612));
+                                let _e621 = ((_e617 * _e419) - (_e418 * _e618));
+                                let _e624 = ((_e618 * _e417) - (_e419 * _e616));
+                                let _e627 = ((_e616 * _e418) - (_e417 * _e617));
+                                let _e634 = (1f / sqrt((((_e621 * _e621) + (_e624 * _e624)) + (_e627 * _e627))));
+                                let _e635 = (_e621 * _e634);
+                                let _e636 = (_e624 * _e634);
+                                let _e637 = (_e627 * _e634);
+                                let _e645 = (((_e492.x * _e635) + (_e492.y * _e636)) + (_e492.z * _e637));
+                                let _e649 = (_e492.x - (_e635 * _e645));
+                                let _e650 = (_e492.y - (_e636 * _e645));
+                                let _e651 = (_e492.z - (_e637 * _e645));
+                                let _e657 = sqrt((((_e649 * _e649) + (_e650 * _e650)) + (_e651 * _e651)));
+                                let _e662 = (((_e616 * _e649) + (_e617 * _e650)) + (_e618 * _e651));
+                                if (_e662 > 0f) {
+                                    phi_941_ = 1f;
                                 } else {
-                                    phi_890_ = select(0f, -1f, (_e650 < 0f));
+                                    phi_941_ = select(0f, -1f, (_e662 < 0f));
                                 }
-                                let _e655 = phi_890_;
-                                let _e661 = ((((_e637 * _e410) + (_e638 * _e411)) + (_e639 * _e412)) / _e645);
-                                if (_e661 > 0f) {
-                                    phi_906_ = select(1f, _e661, (_e661 < 1f));
+                                let _e667 = phi_941_;
+                                let _e673 = ((((_e649 * _e417) + (_e650 * _e418)) + (_e651 * _e419)) / _e657);
+                                if (_e673 > 0f) {
+                                    phi_961_ = select(1f, _e673, (_e673 < 1f));
                                 } else {
-                                    phi_906_ = 0f;
+                                    phi_961_ = 0f;
                                 }
-                                let _e666 = phi_906_;
-                                let _e667 = abs(_e666);
-                                let _e678 = (((-0.156583f * _e667) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e667))) >> bitcast<u32>(1i))))));
-                                if (_e666 >= 0f) {
-                                    phi_923_ = _e678;
+                                let _e678 = phi_961_;
+                                let _e679 = abs(_e678);
+                                let _e690 = (((-0.156583f * _e679) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e679))) >> bitcast<u32>(1i))))));
+                                if (_e678 >= 0f) {
+                                    phi_978_ = _e690;
                                 } else {
-                                    phi_923_ = (3.141593f - _e678);
+                                    phi_978_ = (3.141593f - _e690);
                                 }
-                                let _e682 = phi_923_;
-                                let _e683 = (_e655 * _e682);
-                                let _e685 = cos((_e683 + 1.5707964f));
-                                let _e687 = cos((_e683 - 1.5707964f));
-                                phi_930_ = 0u;
-                                phi_933_ = _e687;
-                                phi_935_ = _e685;
+                                let _e694 = phi_978_;
+                                let _e695 = (_e667 * _e694);
+                                let _e698 = params.member.member_9;
+                                let _e700 = select(1u, _e698, (1u < _e698));
+                                let _e702 = cos((_e695 + 1.5707964f));
+                                let _e704 = cos((_e695 - 1.5707964f));
+                                let _e707 = params.member.member_5;
+                                phi_1003_ = 0u;
+                                phi_1006_ = _e704;
+                                phi_1008_ = _e702;
                                 loop {
-                                    let _e689 = phi_930_;
-                                    let _e691 = phi_933_;
-                                    let _e693 = phi_935_;
-                                    local_3 = _e691;
-                                    local_4 = _e691;
-                                    local_5 = _e693;
-                                    local_6 = _e693;
-                                    let _e694 = (_e689 < _e587);
-                                    if _e694 {
-                                        let _e699 = ((_e568 - floor(_e568)) + (f32((_e579 + (_e689 * _e587))) * 0.618034f));
-                                        let _e708 = params.member.member_4;
-                                        let _e710 = (pow(((f32(_e689) + (_e699 - floor(_e699))) / f32(_e587)), _e708) + (1.3f / _e500));
-                                        let _e711 = ((_e594 * _e500) * _e710);
-                                        let _e712 = ((-(_e593) * _e500) * _e710);
-                                        let _e720 = params.member.member_7;
-                                        let _e721 = (log2(sqrt(((_e711 * _e711) + (_e712 * _e712)))) - _e720);
-                                        if (_e721 > 0f) {
-                                            phi_977_ = select(5f, _e721, (_e721 < 5f));
+                                    let _e709 = phi_1003_;
+                                    let _e711 = phi_1006_;
+                                    let _e713 = phi_1008_;
+                                    local_3 = _e711;
+                                    local_4 = _e711;
+                                    local_5 = _e713;
+                                    local_6 = _e713;
+                                    let _e714 = (_e709 < _e700);
+                                    if _e714 {
+                                        let _e719 = ((_e563 - floor(_e563)) + (f32((_e596 + (_e709 * _e700))) * 0.618034f));
+                                        let _e725 = ((f32(_e709) + (_e719 - floor(_e719))) / f32(_e700));
+                                        let _e728 = params.member.member_4;
+                                        if (_e728 == 2f) {
+                                            phi_1062_ = (_e725 * _e725);
                                         } else {
-                                            phi_977_ = 0f;
+                                            phi_1062_ = pow(_e725, _e728);
                                         }
-                                        let _e726 = phi_977_;
-                                        let _e729 = (ceil((_e726 + 0.5f)) - 1f);
-                                        if (_e729 > 0f) {
-                                            let _e735 = select(select(u32(_e729), 0u, (_e729 < 0f)), 4294967295u, (_e729 > 4294967000f));
-                                            phi_998_ = select(_e735, 4u, (4u < _e735));
+                                        let _e733 = phi_1062_;
+                                        let _e734 = (_e733 + (1.3f / _e503));
+                                        let _e735 = ((_e606 * _e503) * _e734);
+                                        let _e736 = ((-(_e605) * _e503) * _e734);
+                                        let _e744 = params.member.member_7;
+                                        let _e745 = (log2(sqrt(((_e735 * _e735) + (_e736 * _e736)))) - _e744);
+                                        if (_e745 > 0f) {
+                                            phi_1086_ = select(5f, _e745, (_e745 < 5f));
                                         } else {
-                                            phi_998_ = 0u;
+                                            phi_1086_ = 0f;
                                         }
-                                        let _e739 = phi_998_;
-                                        let _e741 = floor((_e711 + 0.5f));
-                                        if ((_e741 - _e711) == 0.5f) {
-                                            let _e747 = ((floor((_e741 * 0.5f)) * 2f) != _e741);
-                                            if _e747 {
-                                                phi_1014_ = (_e741 - 1f);
+                                        let _e750 = phi_1086_;
+                                        let _e753 = (-1f - floor((-0.5f - _e750)));
+                                        if (_e753 > 0f) {
+                                            let _e759 = select(select(u32(_e753), 0u, (_e753 < 0f)), 4294967295u, (_e753 > 4294967000f));
+                                            phi_1109_ = select(_e759, 4u, (4u < _e759));
+                                        } else {
+                                            phi_1109_ = 0u;
+                                        }
+                                        let _e763 = phi_1109_;
+                                        let _e765 = floor((_e735 + 0.5f));
+                                        if ((_e765 - _e735) == 0.5f) {
+                                            let _e771 = ((floor((_e765 * 0.5f)) * 2f) != _e765);
+                                            if _e771 {
+                                                phi_1125_ = (_e765 - 1f);
                                             } else {
-                                                phi_1014_ = f32();
+                                                phi_1125_ = f32();
                                             }
-                                            let _e750 = phi_1014_;
-                                            phi_1016_ = _e750;
-                                            phi_1017_ = select(true, false, _e747);
+                                            let _e774 = phi_1125_;
+                                            phi_1127_ = _e774;
+                                            phi_1128_ = select(true, false, _e771);
                                         } else {
-                                            phi_1016_ = f32();
-                                            phi_1017_ = true;
+                                            phi_1127_ = f32();
+                                            phi_1128_ = true;
                                         }
-                                        let _e753 = phi_1016_;
-                                        let _e755 = phi_1017_;
-                                        let _e758 = floor((_e712 + 0.5f));
-                                        if ((_e758 - _e712) == 0.5f) {
-                                            let _e764 = ((floor((_e758 * 0.5f)) * 2f) != _e758);
-                                            if _e764 {
-                                                phi_1037_ = (_e758 - 1f);
+                                        let _e777 = phi_1127_;
+                                        let _e779 = phi_1128_;
+                                        let _e782 = floor((_e736 + 0.5f));
+                                        if ((_e782 - _e736) == 0.5f) {
+                                            let _e788 = ((floor((_e782 * 0.5f)) * 2f) != _e782);
+                                            if _e788 {
+                                                phi_1148_ = (_e782 - 1f);
                                             } else {
-                                                phi_1037_ = f32();
+                                                phi_1148_ = f32();
                                             }
-                                            let _e767 = phi_1037_;
-                                            phi_1039_ = _e767;
-                                            phi_1040_ = select(true, false, _e764);
+                                            let _e791 = phi_1148_;
+                                            phi_1150_ = _e791;
+                                            phi_1151_ = select(true, false, _e788);
                                         } else {
-                                            phi_1039_ = f32();
-                                            phi_1040_ = true;
+                                            phi_1150_ = f32();
+                                            phi_1151_ = true;
                                         }
-                                        let _e770 = phi_1039_;
-                                        let _e772 = phi_1040_;
-                                        let _e774 = (select(_e753, _e741, _e755) / _e82);
-                                        let _e775 = (select(_e770, _e758, _e772) / _e92);
-                                        let _e776 = (_e379 + _e774);
-                                        let _e777 = (_e380 + _e775);
-                                        let _e778 = (_e379 - _e774);
-                                        let _e779 = (_e380 - _e775);
-                                        let _e780 = (_e739 & 31u);
-                                        let _e782 = (_e87 >> bitcast<u32>(_e780));
-                                        let _e784 = select(1u, _e782, (1u < _e782));
-                                        let _e786 = (_e97 >> bitcast<u32>(_e780));
-                                        let _e788 = select(1u, _e786, (1u < _e786));
-                                        let _e789 = f32(_e784);
-                                        let _e791 = floor((_e776 * _e789));
-                                        if (_e791 > 0f) {
-                                            let _e797 = select(select(u32(_e791), 0u, (_e791 < 0f)), 4294967295u, (_e791 > 4294967000f));
-                                            let _e798 = (_e784 - 1u);
-                                            phi_1089_ = select(_e797, _e798, (_e798 < _e797));
+                                        let _e794 = phi_1150_;
+                                        let _e796 = phi_1151_;
+                                        let _e798 = (select(_e777, _e765, _e779) / _e97);
+                                        let _e799 = (select(_e794, _e782, _e796) / _e107);
+                                        let _e800 = (_e386 + _e798);
+                                        let _e801 = (_e387 + _e799);
+                                        let _e802 = (_e386 - _e798);
+                                        let _e803 = (_e387 - _e799);
+                                        let _e804 = (_e763 & 31u);
+                                        let _e806 = (_e102 >> bitcast<u32>(_e804));
+                                        let _e808 = select(1u, _e806, (1u < _e806));
+                                        let _e810 = (_e112 >> bitcast<u32>(_e804));
+                                        let _e812 = select(1u, _e810, (1u < _e810));
+                                        let _e813 = f32(_e808);
+                                        let _e814 = (_e800 * _e813);
+                                        if (_e814 > 0f) {
+                                            let _e820 = select(select(u32(_e814), 0u, (_e814 < 0f)), 4294967295u, (_e814 > 4294967000f));
+                                            let _e821 = (_e808 - 1u);
+                                            phi_1203_ = select(_e820, _e821, (_e821 < _e820));
                                         } else {
-                                            phi_1089_ = 0u;
+                                            phi_1203_ = 0u;
                                         }
-                                        let _e802 = phi_1089_;
-                                        let _e803 = f32(_e788);
-                                        let _e805 = floor((_e777 * _e803));
-                                        if (_e805 > 0f) {
-                                            let _e811 = select(select(u32(_e805), 0u, (_e805 < 0f)), 4294967295u, (_e805 > 4294967000f));
-                                            let _e812 = (_e788 - 1u);
-                                            phi_1110_ = select(_e811, _e812, (_e812 < _e811));
+                                        let _e825 = phi_1203_;
+                                        let _e826 = f32(_e812);
+                                        let _e827 = (_e801 * _e826);
+                                        if (_e827 > 0f) {
+                                            let _e833 = select(select(u32(_e827), 0u, (_e827 < 0f)), 4294967295u, (_e827 > 4294967000f));
+                                            let _e834 = (_e812 - 1u);
+                                            phi_1223_ = select(_e833, _e834, (_e834 < _e833));
                                         } else {
-                                            phi_1110_ = 0u;
+                                            phi_1223_ = 0u;
                                         }
-                                        let _e816 = phi_1110_;
-                                        phi_1112_ = 0u;
-                                        phi_1115_ = 0u;
-                                        loop {
-                                            let _e818 = phi_1112_;
-                                            let _e820 = phi_1115_;
-                                            local_1 = _e820;
-                                            let _e821 = (_e818 < _e739);
-                                            if _e821 {
-                                                let _e822 = (_e818 & 31u);
-                                                let _e824 = (_e87 >> bitcast<u32>(_e822));
-                                                let _e828 = (_e97 >> bitcast<u32>(_e822));
-                                                phi_1113_ = (_e818 + 1u);
-                                                phi_1116_ = (_e820 + (select(1u, _e824, (1u < _e824)) * select(1u, _e828, (1u < _e828))));
-                                            } else {
-                                                phi_1113_ = u32();
-                                                phi_1116_ = u32();
-                                            }
-                                            let _e835 = phi_1113_;
-                                            let _e837 = phi_1116_;
-                                            continue;
-                                            continuing {
-                                                phi_1112_ = _e835;
-                                                phi_1115_ = _e837;
-                                                break if !(_e821);
-                                            }
-                                        }
-                                        let _e842 = local_1;
-                                        let _e843 = (_e842 + ((_e816 * _e784) + _e802));
-                                        if (_e843 < _e71) {
-                                        } else {
-                                            phi_1807_ = true;
-                                            break;
-                                        }
-                                        let _e847 = mips.member[_e843];
-                                        let _e857 = floor((_e778 * _e789));
-                                        if (_e857 > 0f) {
-                                            let _e863 = select(select(u32(_e857), 0u, (_e857 < 0f)), 4294967295u, (_e857 > 4294967000f));
-                                            let _e864 = (_e784 - 1u);
-                                            phi_1199_ = select(_e863, _e864, (_e864 < _e863));
-                                        } else {
-                                            phi_1199_ = 0u;
-                                        }
-                                        let _e868 = phi_1199_;
-                                        let _e870 = floor((_e779 * _e803));
-                                        if (_e870 > 0f) {
-                                            let _e876 = select(select(u32(_e870), 0u, (_e870 < 0f)), 4294967295u, (_e870 > 4294967000f));
-                                            let _e877 = (_e788 - 1u);
-                                            phi_1220_ = select(_e876, _e877, (_e877 < _e876));
-                                        } else {
-                                            phi_1220_ = 0u;
-                                        }
-                                        let _e881 = phi_1220_;
-                                        phi_1222_ = 0u;
+                                        let _e838 = phi_1223_;
                                         phi_1225_ = 0u;
+                                        phi_1228_ = 0u;
                                         loop {
-                                            let _e883 = phi_1222_;
-                                            let _e885 = phi_1225_;
-                                            local_2 = _e885;
-                                            let _e886 = (_e883 < _e739);
-                                            if _e886 {
-                                                let _e887 = (_e883 & 31u);
-                                                let _e889 = (_e87 >> bitcast<u32>(_e887));
-                                                let _e893 = (_e97 >> bitcast<u32>(_e887));
-                                                phi_1223_ = (_e883 + 1u);
-                                                phi_1226_ = (_e885 + (select(1u, _e889, (1u < _e889)) * select(1u, _e893, (1u < _e893))));
+                                            let _e840 = phi_1225_;
+                                            let _e842 = phi_1228_;
+                                            local_1 = _e842;
+                                            let _e843 = (_e840 < _e763);
+                                            if _e843 {
+                                                let _e844 = (_e840 & 31u);
+                                                let _e846 = (_e102 >> bitcast<u32>(_e844));
+                                                let _e850 = (_e112 >> bitcast<u32>(_e844));
+                                                phi_1226_ = (_e840 + 1u);
+                                                phi_1229_ = (_e842 + (select(1u, _e846, (1u < _e846)) * select(1u, _e850, (1u < _e850))));
                                             } else {
-                                                phi_1223_ = u32();
                                                 phi_1226_ = u32();
+                                                phi_1229_ = u32();
                                             }
-                                            let _e900 = phi_1223_;
-                                            let _e902 = phi_1226_;
+                                            let _e857 = phi_1226_;
+                                            let _e859 = phi_1229_;
                                             continue;
                                             continuing {
-                                                phi_1222_ = _e900;
-                                                phi_1225_ = _e902;
-                                                break if !(_e886);
+                                                phi_1225_ = _e857;
+                                                phi_1228_ = _e859;
+                                                break if !(_e843);
                                             }
                                         }
-                                        let _e907 = local_2;
-                                        let _e908 = (_e907 + ((_e881 * _e784) + _e868));
-                                        if (_e908 < _e71) {
+                                        let _e864 = local_1;
+                                        let _e865 = (_e864 + ((_e838 * _e808) + _e825));
+                                        if (_e865 < _e86) {
                                         } else {
-                                            phi_1807_ = true;
+                                            phi_2331_ = true;
                                             break;
                                         }
-                                        let _e912 = mips.member[_e908];
-                                        let _e921 = (((((2f * _e776) - 1f) * _e388) * _e847) - _e390);
-                                        let _e922 = ((((1f - (2f * _e777)) * _e397) * _e847) - _e399);
-                                        let _e923 = (_e847 - _e381);
-                                        let _e926 = params.member.member_5;
-                                        let _e929 = ((_e921 * _e921) + (_e922 * _e922));
-                                        let _e932 = sqrt((_e929 + (_e923 * _e923)));
-                                        let _e941 = (1f + _e926);
-                                        let _e942 = (_e923 * _e941);
-                                        let _e945 = sqrt((_e929 + (_e942 * _e942)));
-                                        let _e946 = (_e496 > 0f);
-                                        if _e946 {
-                                            let _e948 = ((_e492 - _e945) / _e496);
-                                            if (_e948 > 0f) {
-                                                phi_1317_ = select(1f, _e948, (_e948 < 1f));
+                                        let _e869 = mips.member[_e865];
+                                        let _e878 = (_e802 * _e813);
+                                        if (_e878 > 0f) {
+                                            let _e884 = select(select(u32(_e878), 0u, (_e878 < 0f)), 4294967295u, (_e878 > 4294967000f));
+                                            let _e885 = (_e808 - 1u);
+                                            phi_1311_ = select(_e884, _e885, (_e885 < _e884));
+                                        } else {
+                                            phi_1311_ = 0u;
+                                        }
+                                        let _e889 = phi_1311_;
+                                        let _e890 = (_e803 * _e826);
+                                        if (_e890 > 0f) {
+                                            let _e896 = select(select(u32(_e890), 0u, (_e890 < 0f)), 4294967295u, (_e890 > 4294967000f));
+                                            let _e897 = (_e812 - 1u);
+                                            phi_1331_ = select(_e896, _e897, (_e897 < _e896));
+                                        } else {
+                                            phi_1331_ = 0u;
+                                        }
+                                        let _e901 = phi_1331_;
+                                        phi_1333_ = 0u;
+                                        phi_1336_ = 0u;
+                                        loop {
+                                            let _e903 = phi_1333_;
+                                            let _e905 = phi_1336_;
+                                            local_2 = _e905;
+                                            let _e906 = (_e903 < _e763);
+                                            if _e906 {
+                                                let _e907 = (_e903 & 31u);
+                                                let _e909 = (_e102 >> bitcast<u32>(_e907));
+                                                let _e913 = (_e112 >> bitcast<u32>(_e907));
+                                                phi_1334_ = (_e903 + 1u);
+                                                phi_1337_ = (_e905 + (select(1u, _e909, (1u < _e909)) * select(1u, _e913, (1u < _e913))));
                                             } else {
-                                                phi_1317_ = 0f;
+                                                phi_1334_ = u32();
+                                                phi_1337_ = u32();
                                             }
-                                            let _e953 = phi_1317_;
-                                            phi_1323_ = _e953;
-                                        } else {
-                                            phi_1323_ = select(0f, 1f, (_e945 <= _e492));
+                                            let _e920 = phi_1334_;
+                                            let _e922 = phi_1337_;
+                                            continue;
+                                            continuing {
+                                                phi_1333_ = _e920;
+                                                phi_1336_ = _e922;
+                                                break if !(_e906);
+                                            }
                                         }
-                                        let _e957 = phi_1323_;
-                                        let _e960 = (_e685 + ((((((_e921 / _e932) * _e410) + ((_e922 / _e932) * _e411)) + ((_e923 / _e932) * _e412)) - _e685) * _e957));
-                                        let _e961 = (((((2f * _e778) - 1f) * _e388) * _e912) - _e390);
-                                        let _e962 = ((((1f - (2f * _e779)) * _e397) * _e912) - _e399);
-                                        let _e963 = (_e912 - _e381);
-                                        let _e966 = ((_e961 * _e961) + (_e962 * _e962));
-                                        let _e969 = sqrt((_e966 + (_e963 * _e963)));
-                                        let _e978 = (_e963 * _e941);
-                                        let _e981 = sqrt((_e966 + (_e978 * _e978)));
-                                        if _e946 {
-                                            let _e983 = ((_e492 - _e981) / _e496);
-                                            if (_e983 > 0f) {
-                                                phi_1369_ = select(1f, _e983, (_e983 < 1f));
+                                        let _e927 = local_2;
+                                        let _e928 = (_e927 + ((_e901 * _e808) + _e889));
+                                        if (_e928 < _e86) {
+                                        } else {
+                                            phi_2331_ = true;
+                                            break;
+                                        }
+                                        let _e932 = mips.member[_e928];
+                                        let _e941 = (((((2f * _e800) - 1f) * _e395) * _e869) - _e397);
+                                        let _e942 = ((((1f - (2f * _e801)) * _e404) * _e869) - _e406);
+                                        let _e943 = (_e869 - _e388);
+                                        let _e946 = ((_e941 * _e941) + (_e942 * _e942));
+                                        let _e949 = sqrt((_e946 + (_e943 * _e943)));
+                                        let _e958 = (1f + _e707);
+                                        let _e959 = (_e943 * _e958);
+                                        let _e962 = sqrt((_e946 + (_e959 * _e959)));
+                                        let _e963 = (_e577 > 0f);
+                                        if _e963 {
+                                            let _e965 = ((_e499 - _e962) / _e577);
+                                            if (_e965 > 0f) {
+                                                phi_1435_ = select(1f, _e965, (_e965 < 1f));
                                             } else {
-                                                phi_1369_ = 0f;
+                                                phi_1435_ = 0f;
                                             }
-                                            let _e988 = phi_1369_;
-                                            phi_1375_ = _e988;
+                                            let _e970 = phi_1435_;
+                                            phi_1441_ = _e970;
                                         } else {
-                                            phi_1375_ = select(0f, 1f, (_e981 <= _e492));
+                                            phi_1441_ = select(0f, 1f, (_e962 <= _e499));
                                         }
-                                        let _e992 = phi_1375_;
-                                        let _e995 = (_e687 + ((((((_e961 / _e969) * _e410) + ((_e962 / _e969) * _e411)) + ((_e963 / _e969) * _e412)) - _e687) * _e992));
-                                        if (_e693 != _e693) {
-                                            phi_1772_ = true;
+                                        let _e974 = phi_1441_;
+                                        let _e977 = (_e702 + ((((((_e941 / _e949) * _e417) + ((_e942 / _e949) * _e418)) + ((_e943 / _e949) * _e419)) - _e702) * _e974));
+                                        let _e978 = (((((2f * _e802) - 1f) * _e395) * _e932) - _e397);
+                                        let _e979 = ((((1f - (2f * _e803)) * _e404) * _e932) - _e406);
+                                        let _e980 = (_e932 - _e388);
+                                        let _e983 = ((_e978 * _e978) + (_e979 * _e979));
+                                        let _e986 = sqrt((_e983 + (_e980 * _e980)));
+                                        let _e995 = (_e980 * _e958);
+                                        let _e998 = sqrt((_e983 + (_e995 * _e995)));
+                                        if _e963 {
+                                            let _e1000 = ((_e499 - _e998) / _e577);
+                                            if (_e1000 > 0f) {
+                                                phi_1494_ = select(1f, _e1000, (_e1000 < 1f));
+                                            } else {
+                                                phi_1494_ = 0f;
+                                            }
+                                            let _e1005 = phi_1494_;
+                                            phi_1500_ = _e1005;
                                         } else {
-                                            phi_1772_ = (_e960 >= _e693);
+                                            phi_1500_ = select(0f, 1f, (_e998 <= _e499));
                                         }
-                                        let _e999 = phi_1772_;
-                                        if (_e691 != _e691) {
-                                            phi_1787_ = true;
+                                        let _e1009 = phi_1500_;
+                                        let _e1012 = (_e704 + ((((((_e978 / _e986) * _e417) + ((_e979 / _e986) * _e418)) + ((_e980 / _e986) * _e419)) - _e704) * _e1009));
+                                        if (_e713 != _e713) {
+                                            phi_2128_ = true;
                                         } else {
-                                            phi_1787_ = (_e995 >= _e691);
+                                            phi_2128_ = (_e977 >= _e713);
                                         }
-                                        let _e1004 = phi_1787_;
-                                        phi_931_ = (_e689 + 1u);
-                                        phi_934_ = select(_e691, _e995, _e1004);
-                                        phi_936_ = select(_e693, _e960, _e999);
+                                        let _e1016 = phi_2128_;
+                                        if (_e711 != _e711) {
+                                            phi_2143_ = true;
+                                        } else {
+                                            phi_2143_ = (_e1012 >= _e711);
+                                        }
+                                        let _e1021 = phi_2143_;
+                                        phi_1004_ = (_e709 + 1u);
+                                        phi_1007_ = select(_e711, _e1012, _e1021);
+                                        phi_1009_ = select(_e713, _e977, _e1016);
                                     } else {
-                                        phi_931_ = u32();
-                                        phi_934_ = f32();
-                                        phi_936_ = f32();
+                                        phi_1004_ = u32();
+                                        phi_1007_ = f32();
+                                        phi_1009_ = f32();
                                     }
-                                    let _e1008 = phi_931_;
-                                    let _e1010 = phi_934_;
-                                    let _e1012 = phi_936_;
+                                    let _e1025 = phi_1004_;
+                                    let _e1027 = phi_1007_;
+                                    let _e1029 = phi_1009_;
                                     continue;
                                     continuing {
-                                        phi_930_ = _e1008;
-                                        phi_933_ = _e1010;
-                                        phi_935_ = _e1012;
-                                        phi_1807_ = _e577;
-                                        break if !(_e694);
+                                        phi_1003_ = _e1025;
+                                        phi_1006_ = _e1027;
+                                        phi_1008_ = _e1029;
+                                        phi_2331_ = _e592;
+                                        break if !(_e714);
                                     }
                                 }
-                                let _e1015 = phi_1807_;
-                                phi_1924_ = _e1015;
-                                if _e1015 {
+                                let _e1032 = phi_2331_;
+                                phi_2450_ = _e1032;
+                                if _e1032 {
                                     break;
                                 }
-                                let _e1020 = local_3;
-                                let _e1021 = abs(_e1020);
-                                let _e1032 = (((-0.156583f * _e1021) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1021))) >> bitcast<u32>(1i))))));
-                                let _e1034 = local_4;
-                                if (_e1034 >= 0f) {
-                                    phi_1401_ = _e1032;
+                                let _e1035 = (_e657 + ((1f - _e657) * 0.05f));
+                                let _e1037 = local_3;
+                                let _e1038 = abs(_e1037);
+                                let _e1049 = (((-0.156583f * _e1038) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1038))) >> bitcast<u32>(1i))))));
+                                let _e1051 = local_4;
+                                if (_e1051 >= 0f) {
+                                    phi_1526_ = _e1049;
                                 } else {
-                                    phi_1401_ = (3.141593f - _e1032);
+                                    phi_1526_ = (3.141593f - _e1049);
                                 }
-                                let _e1038 = phi_1401_;
-                                let _e1040 = local_5;
-                                let _e1041 = abs(_e1040);
-                                let _e1052 = (((-0.156583f * _e1041) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1041))) >> bitcast<u32>(1i))))));
-                                let _e1054 = local_6;
-                                if (_e1054 >= 0f) {
-                                    phi_1419_ = _e1052;
+                                let _e1055 = phi_1526_;
+                                let _e1056 = -(_e1055);
+                                let _e1058 = local_5;
+                                let _e1059 = abs(_e1058);
+                                let _e1070 = (((-0.156583f * _e1059) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1059))) >> bitcast<u32>(1i))))));
+                                let _e1072 = local_6;
+                                if (_e1072 >= 0f) {
+                                    phi_1544_ = _e1070;
                                 } else {
-                                    phi_1419_ = (3.141593f - _e1052);
+                                    phi_1544_ = (3.141593f - _e1070);
                                 }
-                                let _e1058 = phi_1419_;
-                                let _e1059 = (_e1038 * -2f);
-                                let _e1060 = sin(_e683);
-                                let _e1066 = (2f * _e1058);
-                                phi_1925_ = _e1015;
-                                phi_765_ = (_e579 + 1u);
-                                phi_768_ = (_e581 + ((_e645 + ((1f - _e645) * 0.05f)) * (0.25f * (((_e666 + (_e1059 * _e1060)) - cos((_e1059 - _e683))) + ((_e666 + (_e1066 * _e1060)) - cos((_e1066 - _e683)))))));
+                                let _e1076 = phi_1544_;
+                                let _e1077 = (_e1055 * -2f);
+                                let _e1078 = sin(_e695);
+                                let _e1084 = (2f * _e1076);
+                                let _e1095 = params.member.member_13;
+                                if (_e1095 == 0u) {
+                                    phi_1710_ = vec3<f32>(0f, 0f, 0f);
+                                } else {
+                                    let _e1101 = ((_e1055 * -3f) - _e695);
+                                    let _e1109 = ((3f * _e1076) - _e695);
+                                    let _e1114 = (_e1056 + _e695);
+                                    let _e1116 = (_e1076 + _e695);
+                                    let _e1121 = (((((((6f * sin((_e1056 - _e695))) - sin(_e1101)) + (6f * sin((_e1076 - _e695)))) - sin(_e1109)) + (16f * _e1078)) - (3f * (sin(_e1114) + sin(_e1116)))) * 0.083333336f);
+                                    let _e1133 = (((-(cos(_e1101)) - cos(_e1109)) + (8f * cos(_e695))) - (3f * (cos(_e1114) + cos(_e1116))));
+                                    let _e1134 = (_e606 * _e1121);
+                                    let _e1135 = (_e605 * _e1121);
+                                    let _e1136 = (_e1133 * -0.083333336f);
+                                    let _e1138 = (-1f * _e419);
+                                    if (_e1138 > 0.9997f) {
+                                        phi_1702_ = vec3<f32>(_e1134, _e1135, _e1136);
+                                        phi_1703_ = vec3<f32>();
+                                        phi_1704_ = true;
+                                    } else {
+                                        let _e1140 = (_e1138 < -0.9997f);
+                                        if _e1140 {
+                                            phi_1700_ = vec3<f32>(_e1134, -(_e1135), (_e1133 * 0.083333336f));
+                                            phi_1701_ = vec3<f32>();
+                                        } else {
+                                            let _e1144 = (-1f * _e417);
+                                            let _e1146 = (1f / (1f + _e1138));
+                                            let _e1147 = (_e1146 * _e418);
+                                            let _e1151 = (_e1147 * _e1144);
+                                            phi_1700_ = vec3<f32>();
+                                            phi_1701_ = vec3<f32>(((((_e1138 + (_e1147 * _e418)) * _e1134) + (_e1151 * _e1135)) + (_e1144 * _e1136)), (((_e1151 * _e1134) + ((_e1138 + ((_e1146 * _e1144) * _e1144)) * _e1135)) + (-(_e418) * _e1136)), (((_e417 * _e1134) + (_e418 * _e1135)) + (_e1138 * _e1136)));
+                                        }
+                                        let _e1172 = phi_1700_;
+                                        let _e1174 = phi_1701_;
+                                        phi_1702_ = _e1172;
+                                        phi_1703_ = _e1174;
+                                        phi_1704_ = _e1140;
+                                    }
+                                    let _e1176 = phi_1702_;
+                                    let _e1178 = phi_1703_;
+                                    let _e1180 = phi_1704_;
+                                    phi_1710_ = (select(_e1178, _e1176, vec3(_e1180)) * _e1035);
+                                }
+                                let _e1185 = phi_1710_;
+                                phi_2451_ = _e1032;
+                                phi_817_ = (_e594 + _e1185);
+                                phi_820_ = (_e596 + 1u);
+                                phi_822_ = (_e598 + (_e1035 * (0.25f * (((_e678 + (_e1077 * _e1078)) - cos((_e1077 - _e695))) + ((_e678 + (_e1084 * _e1078)) - cos((_e1084 - _e695)))))));
                             } else {
-                                phi_1925_ = _e577;
-                                phi_765_ = u32();
-                                phi_768_ = f32();
+                                phi_2451_ = _e592;
+                                phi_817_ = vec3<f32>();
+                                phi_820_ = u32();
+                                phi_822_ = f32();
                             }
-                            let _e1078 = phi_1925_;
-                            let _e1080 = phi_765_;
-                            let _e1082 = phi_768_;
+                            let _e1190 = phi_2451_;
+                            let _e1192 = phi_817_;
+                            let _e1194 = phi_820_;
+                            let _e1196 = phi_822_;
                             continue;
                             continuing {
-                                phi_1856_ = _e1078;
-                                phi_764_ = _e1080;
-                                phi_767_ = _e1082;
-                                phi_1924_ = _e1078;
-                                break if !(_e582);
+                                phi_2382_ = _e1190;
+                                phi_816_ = _e1192;
+                                phi_819_ = _e1194;
+                                phi_821_ = _e1196;
+                                phi_2450_ = _e1190;
+                                break if !(_e599);
                             }
                         }
-                        let _e1085 = phi_1924_;
-                        if _e1085 {
+                        let _e1199 = phi_2450_;
+                        if _e1199 {
                             break;
                         }
-                        let _e1088 = local_7;
-                        let _e1092 = params.member.member_6;
-                        let _e1093 = pow((_e1088 / f32(_e575)), _e1092);
-                        if (_e1093 != _e1093) {
-                            phi_1802_ = true;
+                        let _e1202 = local_7;
+                        let _e1206 = params.member.member_6;
+                        let _e1207 = pow((_e1202 / f32(_e590)), _e1206);
+                        if (_e1207 != _e1207) {
+                            phi_2158_ = true;
                         } else {
-                            phi_1802_ = (0.03f >= _e1093);
+                            phi_2158_ = (0.03f >= _e1207);
                         }
-                        let _e1097 = phi_1802_;
-                        let _e1099 = (select(_e1093, 0.03f, _e1097) * 0.6666667f);
-                        if (_e1099 > 0f) {
-                            phi_1458_ = select(1f, _e1099, (_e1099 < 1f));
+                        let _e1211 = phi_2158_;
+                        let _e1212 = select(_e1207, 0.03f, _e1211);
+                        let _e1215 = params.member.member_13;
+                        let _e1216 = (_e1215 == 0u);
+                        if _e1216 {
+                            let _e1217 = (_e1212 * 0.6666667f);
+                            if (_e1217 > 0f) {
+                                phi_1746_ = select(1f, _e1217, (_e1217 < 1f));
+                            } else {
+                                phi_1746_ = 0f;
+                            }
+                            let _e1222 = phi_1746_;
+                            let _e1224 = ((_e1222 * 255f) + 0.5f);
+                            phi_1798_ = type_22(select(select(u32(_e1224), 0u, (_e1224 < 0f)), 4294967295u, (_e1224 > 4294967000f)), _e381);
+                            phi_1799_ = type_22();
                         } else {
-                            phi_1458_ = 0f;
+                            let _e1232 = local_8;
+                            let _e1236 = local_9;
+                            let _e1241 = local_10;
+                            let _e1245 = sqrt((((_e1232.x * _e1232.x) + (_e1236.y * _e1236.y)) + (_e1241.z * _e1241.z)));
+                            if (_e1245 > 0f) {
+                                let _e1249 = local_11;
+                                phi_1776_ = (_e1249 / vec3(_e1245));
+                            } else {
+                                phi_1776_ = _e492;
+                            }
+                            let _e1252 = phi_1776_;
+                            let _e1259 = ((_e1252.x * 0.5f) + 0.5f);
+                            let _e1260 = ((_e1252.y * 0.5f) + 0.5f);
+                            let _e1261 = ((_e1252.z * 0.5f) + 0.5f);
+                            let _e1262 = (_e1212 * 0.6666667f);
+                            if (_e1259 > 0f) {
+                                phi_2174_ = select(1f, _e1259, (_e1259 < 1f));
+                            } else {
+                                phi_2174_ = 0f;
+                            }
+                            let _e1267 = phi_2174_;
+                            let _e1269 = ((_e1267 * 255f) + 0.5f);
+                            if (_e1260 > 0f) {
+                                phi_2195_ = select(1f, _e1260, (_e1260 < 1f));
+                            } else {
+                                phi_2195_ = 0f;
+                            }
+                            let _e1279 = phi_2195_;
+                            let _e1281 = ((_e1279 * 255f) + 0.5f);
+                            if (_e1261 > 0f) {
+                                phi_2216_ = select(1f, _e1261, (_e1261 < 1f));
+                            } else {
+                                phi_2216_ = 0f;
+                            }
+                            let _e1294 = phi_2216_;
+                            let _e1296 = ((_e1294 * 255f) + 0.5f);
+                            if (_e1262 > 0f) {
+                                phi_2237_ = select(1f, _e1262, (_e1262 < 1f));
+                            } else {
+                                phi_2237_ = 0f;
+                            }
+                            let _e1309 = phi_2237_;
+                            let _e1311 = ((_e1309 * 255f) + 0.5f);
+                            phi_1798_ = type_22();
+                            phi_1799_ = type_22((((select(select(u32(_e1269), 0u, (_e1269 < 0f)), 4294967295u, (_e1269 > 4294967000f)) | (select(select(u32(_e1281), 0u, (_e1281 < 0f)), 4294967295u, (_e1281 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1296), 0u, (_e1296 < 0f)), 4294967295u, (_e1296 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1311), 0u, (_e1311 < 0f)), 4294967295u, (_e1311 > 4294967000f)) << bitcast<u32>(24i))), _e381);
                         }
-                        let _e1104 = phi_1458_;
-                        let _e1106 = ((_e1104 * 255f) + 0.5f);
-                        phi_1490_ = type_22(select(select(u32(_e1106), 0u, (_e1106 < 0f)), 4294967295u, (_e1106 > 4294967000f)), _e366);
+                        let _e1322 = phi_1798_;
+                        let _e1324 = phi_1799_;
+                        phi_1840_ = _e1322;
+                        phi_1841_ = _e1324;
+                        phi_1842_ = select(true, false, _e1216);
                     } else {
-                        phi_1490_ = type_22(170u, _e366);
+                        let _e1328 = params.member.member_13;
+                        phi_1840_ = type_22();
+                        phi_1841_ = type_22(select(2852159616u, 170u, (_e1328 == 0u)), _e381);
+                        phi_1842_ = true;
                     }
-                    let _e1115 = phi_1490_;
-                    if (_e103 < arrayLength((&terms.member))) {
+                    let _e1333 = phi_1840_;
+                    let _e1335 = phi_1841_;
+                    let _e1337 = phi_1842_;
+                    if _e1337 {
+                        phi_1846_ = _e1335;
+                    } else {
+                        phi_1846_ = _e1333;
+                    }
+                    let _e1339 = phi_1846_;
+                    if (_e118 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e103] = _e1115.member;
-                    if (_e103 < arrayLength((&edges.member))) {
+                    terms.member[_e118] = _e1339.member;
+                    if (_e118 < arrayLength((&edges.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e103] = _e1115.member_1;
+                    edges.member[_e118] = _e1339.member_1;
                 }
             }
             break;

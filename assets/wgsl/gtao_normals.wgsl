@@ -29,6 +29,8 @@ struct type_18 {
     member_10: u32,
     member_11: u32,
     member_12: u32,
+    member_13: u32,
+    member_14: u32,
 }
 
 struct type_19 {

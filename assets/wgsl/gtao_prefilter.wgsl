@@ -25,6 +25,8 @@ struct type_14 {
     member_10: u32,
     member_11: u32,
     member_12: u32,
+    member_13: u32,
+    member_14: u32,
 }
 
 struct type_15 {

@@ -68,6 +68,10 @@ struct type_36 {
     member_9: u32,
     member_10: u32,
     member_11: u32,
+    member_12: u32,
+    member_13: u32,
+    member_14: u32,
+    member_15: u32,
 }
 
 struct type_37 {
@@ -107,888 +111,892 @@ var<storage, read_write> ray_max: type_44;
 var<storage> depth2_: type_8;
 
 fn function_() {
-    var local: array<array<f32, 2>, 8>;
-    var local_1: array<f32, 8>;
-    var local_2: array<f32, 8>;
-    var local_3: array<f32, 8>;
-    var local_4: array<f32, 8>;
-    var local_5: array<f32, 8>;
+    var local: array<array<f32, 2>, 56>;
+    var local_1: array<f32, 56>;
+    var local_2: array<f32, 56>;
+    var local_3: array<f32, 56>;
+    var local_4: array<f32, 56>;
+    var local_5: array<f32, 56>;
     var local_6: array<array<array<f32, 2>, 4>, 4>;
-    var phi_318_: bool;
-    var phi_320_: bool;
-    var phi_321_: bool;
-    var phi_322_: bool;
-    var phi_323_: bool;
-    var phi_381_: bool;
-    var phi_411_: f32;
-    var phi_1695_: bool;
-    var phi_1710_: bool;
-    var phi_486_: vec2<f32>;
-    var phi_513_: vec3<f32>;
-    var phi_1725_: bool;
-    var phi_625_: type_28;
-    var phi_626_: type_28;
-    var phi_628_: type_28;
-    var phi_629_: type_28;
-    var phi_630_: bool;
-    var phi_634_: type_28;
-    var phi_662_: u32;
-    var phi_665_: u32;
-    var phi_667_: f32;
-    var phi_706_: f32;
-    var phi_730_: f32;
-    var phi_744_: f32;
-    var phi_763_: f32;
-    var phi_819_: bool;
-    var phi_821_: bool;
-    var phi_822_: bool;
-    var phi_823_: bool;
-    var phi_824_: bool;
-    var phi_856_: f32;
-    var phi_869_: f32;
-    var phi_920_: bool;
-    var phi_952_: f32;
-    var phi_975_: bool;
-    var phi_1072_: f32;
-    var phi_1085_: f32;
-    var phi_1098_: f32;
-    var phi_1099_: f32;
-    var phi_1740_: bool;
-    var phi_1755_: bool;
-    var phi_1122_: f32;
-    var phi_1129_: f32;
-    var phi_1770_: bool;
-    var phi_1151_: f32;
-    var phi_1159_: bool;
-    var phi_1194_: bool;
-    var phi_1291_: f32;
-    var phi_1304_: f32;
-    var phi_1317_: f32;
-    var phi_1318_: f32;
-    var phi_1785_: bool;
-    var phi_1800_: bool;
-    var phi_1341_: f32;
-    var phi_1348_: f32;
-    var phi_1815_: bool;
-    var phi_1830_: bool;
-    var phi_1357_: f32;
-    var phi_1845_: bool;
-    var phi_1359_: f32;
-    var phi_1360_: f32;
-    var phi_1361_: f32;
-    var phi_1362_: f32;
-    var phi_1376_: bool;
-    var phi_1377_: bool;
-    var phi_1378_: bool;
-    var phi_1386_: f32;
-    var phi_1860_: bool;
-    var phi_1411_: f32;
-    var phi_1419_: bool;
-    var phi_1423_: bool;
-    var phi_1473_: f32;
-    var phi_1487_: f32;
-    var phi_1875_: bool;
-    var phi_1890_: bool;
-    var phi_1544_: f32;
-    var phi_1551_: u32;
-    var phi_1566_: u32;
-    var phi_1574_: u32;
-    var phi_1575_: u32;
-    var phi_1576_: u32;
-    var phi_1577_: f32;
-    var phi_1578_: u32;
-    var phi_1579_: f32;
-    var phi_663_: u32;
-    var phi_666_: u32;
-    var phi_668_: f32;
-    var phi_1895_: bool;
+    var phi_632_: bool;
+    var phi_634_: bool;
+    var phi_635_: bool;
+    var phi_636_: bool;
+    var phi_637_: bool;
+    var phi_695_: bool;
+    var phi_725_: f32;
+    var phi_2029_: bool;
+    var phi_2044_: bool;
+    var phi_800_: vec2<f32>;
+    var phi_827_: vec3<f32>;
+    var phi_2059_: bool;
+    var phi_939_: type_28;
+    var phi_940_: type_28;
+    var phi_942_: type_28;
+    var phi_943_: type_28;
+    var phi_944_: bool;
+    var phi_948_: type_28;
+    var phi_985_: u32;
+    var phi_988_: u32;
+    var phi_990_: f32;
+    var phi_1031_: f32;
+    var phi_1055_: f32;
+    var phi_1069_: f32;
+    var phi_1088_: f32;
+    var phi_1144_: bool;
+    var phi_1146_: bool;
+    var phi_1147_: bool;
+    var phi_1148_: bool;
+    var phi_1149_: bool;
+    var phi_1181_: f32;
+    var phi_1194_: f32;
+    var phi_1245_: bool;
+    var phi_1277_: f32;
+    var phi_1300_: bool;
+    var phi_1397_: f32;
+    var phi_1410_: f32;
+    var phi_1423_: f32;
+    var phi_1424_: f32;
+    var phi_2074_: bool;
+    var phi_2089_: bool;
+    var phi_1447_: f32;
+    var phi_1454_: f32;
+    var phi_2104_: bool;
+    var phi_1476_: f32;
+    var phi_1484_: bool;
+    var phi_1519_: bool;
+    var phi_1616_: f32;
+    var phi_1629_: f32;
+    var phi_1642_: f32;
+    var phi_1643_: f32;
+    var phi_2119_: bool;
+    var phi_2134_: bool;
+    var phi_1666_: f32;
+    var phi_1673_: f32;
+    var phi_2149_: bool;
+    var phi_2164_: bool;
+    var phi_1682_: f32;
+    var phi_2179_: bool;
+    var phi_1684_: f32;
+    var phi_1685_: f32;
+    var phi_1686_: f32;
+    var phi_1687_: f32;
+    var phi_1701_: bool;
+    var phi_1702_: bool;
+    var phi_1703_: bool;
+    var phi_1711_: f32;
+    var phi_2194_: bool;
+    var phi_1736_: f32;
+    var phi_1744_: bool;
+    var phi_1748_: bool;
+    var phi_1798_: f32;
+    var phi_1812_: f32;
+    var phi_2209_: bool;
+    var phi_2224_: bool;
+    var phi_1869_: f32;
+    var phi_1876_: u32;
+    var phi_1891_: u32;
+    var phi_1899_: u32;
+    var phi_1900_: u32;
+    var phi_1901_: u32;
+    var phi_1902_: f32;
+    var phi_1903_: u32;
+    var phi_1904_: f32;
+    var phi_986_: u32;
+    var phi_989_: u32;
+    var phi_991_: f32;
+    var phi_2229_: bool;
     var local_7: f32;
     var local_8: u32;
-    var phi_1603_: f32;
-    var phi_1613_: f32;
+    var phi_1937_: f32;
+    var phi_1947_: f32;
     var local_9: u32;
-    var phi_1627_: f32;
+    var phi_1961_: f32;
     var local_10: u32;
-    var phi_1632_: type_41;
-    var phi_1634_: type_41;
+    var phi_1966_: type_41;
+    var phi_1968_: type_41;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e172 = id_1;
-            let _e177 = arrayLength((&depth.member));
-            let _e188 = arrayLength((&ray_max.member));
+            let _e485 = id_1;
+            let _e490 = arrayLength((&depth.member));
+            let _e501 = arrayLength((&ray_max.member));
             if (0u < arrayLength((&frame.member))) {
             } else {
                 break;
             }
-            let _e200 = frame.member[0u].member_1.member.member.member_4;
-            let _e201 = (_e172.x + _e200);
-            let _e202 = (_e172.y + _e200);
-            let _e210 = frame.member[0u].member_1.member.member.member[0u];
-            let _e215 = select(select(u32(_e210), 0u, (_e210 < 0f)), 4294967295u, (_e210 > 4294967000f));
-            let _e223 = frame.member[0u].member_1.member.member.member[1u];
-            let _e228 = select(select(u32(_e223), 0u, (_e223 < 0f)), 4294967295u, (_e223 > 4294967000f));
-            if (_e201 >= _e200) {
-                if (_e202 >= _e200) {
-                    let _e232 = ((_e201 + _e200) < _e215);
-                    if _e232 {
-                        phi_318_ = ((_e202 + _e200) < _e228);
+            let _e513 = frame.member[0u].member_1.member.member.member_4;
+            let _e514 = (_e485.x + _e513);
+            let _e515 = (_e485.y + _e513);
+            let _e523 = frame.member[0u].member_1.member.member.member[0u];
+            let _e528 = select(select(u32(_e523), 0u, (_e523 < 0f)), 4294967295u, (_e523 > 4294967000f));
+            let _e536 = frame.member[0u].member_1.member.member.member[1u];
+            let _e541 = select(select(u32(_e536), 0u, (_e536 < 0f)), 4294967295u, (_e536 > 4294967000f));
+            if (_e514 >= _e513) {
+                if (_e515 >= _e513) {
+                    let _e545 = ((_e514 + _e513) < _e528);
+                    if _e545 {
+                        phi_632_ = ((_e515 + _e513) < _e541);
                     } else {
-                        phi_318_ = bool();
+                        phi_632_ = bool();
                     }
-                    let _e236 = phi_318_;
-                    phi_320_ = _e236;
-                    phi_321_ = select(true, false, _e232);
+                    let _e549 = phi_632_;
+                    phi_634_ = _e549;
+                    phi_635_ = select(true, false, _e545);
                 } else {
-                    phi_320_ = bool();
-                    phi_321_ = true;
+                    phi_634_ = bool();
+                    phi_635_ = true;
                 }
-                let _e239 = phi_320_;
-                let _e241 = phi_321_;
-                phi_322_ = _e239;
-                phi_323_ = _e241;
+                let _e552 = phi_634_;
+                let _e554 = phi_635_;
+                phi_636_ = _e552;
+                phi_637_ = _e554;
             } else {
-                phi_322_ = bool();
-                phi_323_ = true;
+                phi_636_ = bool();
+                phi_637_ = true;
             }
-            let _e243 = phi_322_;
-            let _e245 = phi_323_;
-            if select(_e243, false, _e245) {
-                let _e252 = frame.member[0u].member_1.member.member_1;
-                let _e258 = frame.member[0u].member_1.member.member_4;
-                let _e263 = ((f32(_e201) + 0.5f) / _e210);
-                let _e264 = ((f32(_e202) + 0.5f) / _e223);
-                let _e266 = ((_e202 * _e215) + _e201);
-                if (_e266 < _e177) {
+            let _e556 = phi_636_;
+            let _e558 = phi_637_;
+            if select(_e556, false, _e558) {
+                let _e565 = frame.member[0u].member_1.member.member_1;
+                let _e571 = frame.member[0u].member_1.member.member_4;
+                let _e576 = ((f32(_e514) + 0.5f) / _e523);
+                let _e577 = ((f32(_e515) + 0.5f) / _e536);
+                let _e579 = ((_e515 * _e528) + _e514);
+                if (_e579 < _e490) {
                 } else {
                     break;
                 }
-                let _e269 = depth.member[_e266];
-                let _e276 = frame.member[0u].member_1.member.member.member_3;
-                if (_e269 > 0f) {
-                    phi_381_ = (_e269 < _e276);
+                let _e582 = depth.member[_e579];
+                let _e589 = frame.member[0u].member_1.member.member.member_3;
+                if (_e582 > 0f) {
+                    phi_695_ = (_e582 < _e589);
                 } else {
-                    phi_381_ = false;
+                    phi_695_ = false;
                 }
-                let _e280 = phi_381_;
-                if _e280 {
-                    let _e288 = frame.member[0u].member_1.member.member.member_1[0u];
-                    let _e296 = frame.member[0u].member_1.member.member.member_1[1u];
-                    let _e306 = (0.5f * (((_e252 * _e210) / ((2f * _e288) * _e269)) + ((_e252 * _e223) / ((2f * _e296) * _e269))));
-                    let _e307 = (_e306 > _e258);
-                    if _e307 {
-                        phi_411_ = ((_e252 * _e258) / _e306);
+                let _e593 = phi_695_;
+                if _e593 {
+                    let _e601 = frame.member[0u].member_1.member.member.member_1[0u];
+                    let _e609 = frame.member[0u].member_1.member.member.member_1[1u];
+                    let _e619 = (0.5f * (((_e565 * _e523) / ((2f * _e601) * _e582)) + ((_e565 * _e536) / ((2f * _e609) * _e582))));
+                    let _e620 = (_e619 > _e571);
+                    if _e620 {
+                        phi_725_ = ((_e565 * _e571) / _e619);
                     } else {
-                        phi_411_ = _e252;
+                        phi_725_ = _e565;
                     }
-                    let _e311 = phi_411_;
-                    let _e312 = select(_e306, _e258, _e307);
-                    let _e313 = (_e312 < 0.5f);
-                    if _e313 {
-                        phi_625_ = type_28(0u, type_28().member_1);
-                        phi_626_ = type_28();
+                    let _e624 = phi_725_;
+                    let _e625 = select(_e619, _e571, _e620);
+                    let _e626 = (_e625 < 0.5f);
+                    if _e626 {
+                        phi_939_ = type_28(0u, type_28().member_1);
+                        phi_940_ = type_28();
                     } else {
-                        let _e322 = ((((2f * _e263) - 1f) * _e269) * _e288);
-                        let _e324 = (((1f - (2f * _e264)) * _e269) * _e296);
-                        let _e325 = -(_e269);
-                        if (_e266 < arrayLength((&normals.member))) {
+                        let _e635 = ((((2f * _e576) - 1f) * _e582) * _e601);
+                        let _e637 = (((1f - (2f * _e577)) * _e582) * _e609);
+                        let _e638 = -(_e582);
+                        if (_e579 < arrayLength((&normals.member))) {
                         } else {
                             break;
                         }
-                        let _e329 = normals.member[_e266];
-                        let _e337 = (f32((bitcast<i32>(((_e329 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e337 != _e337) {
-                            phi_1695_ = true;
+                        let _e642 = normals.member[_e579];
+                        let _e650 = (f32((bitcast<i32>(((_e642 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e650 != _e650) {
+                            phi_2029_ = true;
                         } else {
-                            phi_1695_ = (-1f >= _e337);
+                            phi_2029_ = (-1f >= _e650);
                         }
-                        let _e341 = phi_1695_;
-                        let _e342 = select(_e337, -1f, _e341);
-                        let _e352 = (f32((bitcast<i32>((((_e329 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e352 != _e352) {
-                            phi_1710_ = true;
+                        let _e654 = phi_2029_;
+                        let _e655 = select(_e650, -1f, _e654);
+                        let _e665 = (f32((bitcast<i32>((((_e642 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e665 != _e665) {
+                            phi_2044_ = true;
                         } else {
-                            phi_1710_ = (-1f >= _e352);
+                            phi_2044_ = (-1f >= _e665);
                         }
-                        let _e356 = phi_1710_;
-                        let _e357 = select(_e352, -1f, _e356);
-                        let _e360 = (1f - abs(_e342));
-                        let _e361 = abs(_e357);
-                        let _e362 = (_e360 - _e361);
-                        if (_e362 < 0f) {
-                            phi_486_ = vec2<f32>(((1f - _e361) * select(1f, -1f, (_e342 < 0f))), (_e360 * select(1f, -1f, (_e357 < 0f))));
+                        let _e669 = phi_2044_;
+                        let _e670 = select(_e665, -1f, _e669);
+                        let _e673 = (1f - abs(_e655));
+                        let _e674 = abs(_e670);
+                        let _e675 = (_e673 - _e674);
+                        if (_e675 < 0f) {
+                            phi_800_ = vec2<f32>(((1f - _e674) * select(1f, -1f, (_e655 < 0f))), (_e673 * select(1f, -1f, (_e670 < 0f))));
                         } else {
-                            phi_486_ = vec2<f32>(_e342, _e357);
+                            phi_800_ = vec2<f32>(_e655, _e670);
                         }
-                        let _e373 = phi_486_;
-                        let _e382 = (1f / sqrt((((_e373.x * _e373.x) + (_e373.y * _e373.y)) + (_e362 * _e362))));
-                        let _e383 = (_e373.x * _e382);
-                        let _e384 = (_e373.y * _e382);
-                        let _e385 = (_e362 * _e382);
-                        if ((((_e322 * _e383) + (_e324 * _e384)) + (_e325 * _e385)) > 0f) {
-                            phi_513_ = vec3<f32>(-(_e383), -(_e384), -(_e385));
+                        let _e686 = phi_800_;
+                        let _e695 = (1f / sqrt((((_e686.x * _e686.x) + (_e686.y * _e686.y)) + (_e675 * _e675))));
+                        let _e696 = (_e686.x * _e695);
+                        let _e697 = (_e686.y * _e695);
+                        let _e698 = (_e675 * _e695);
+                        if ((((_e635 * _e696) + (_e637 * _e697)) + (_e638 * _e698)) > 0f) {
+                            phi_827_ = vec3<f32>(-(_e696), -(_e697), -(_e698));
                         } else {
-                            phi_513_ = vec3<f32>(_e383, _e384, _e385);
+                            phi_827_ = vec3<f32>(_e696, _e697, _e698);
                         }
-                        let _e398 = phi_513_;
+                        let _e711 = phi_827_;
                         local_6 = array<array<array<f32, 2>, 4>, 4>(array<array<f32, 2>, 4>(array<f32, 2>(0f, 1f), array<f32, 2>(0.012909942f, -0.9999167f), array<f32, 2>(0.69159436f, 0.7222861f), array<f32, 2>(-0.7000154f, -0.7141277f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.99997514f, -0.0070477454f), array<f32, 2>(0.9998238f, 0.018771695f), array<f32, 2>(-0.7100116f, 0.70418996f), array<f32, 2>(0.7182193f, -0.6958169f)), array<array<f32, 2>, 4>(array<f32, 2>(0.91594595f, 0.40130165f), array<f32, 2>(-0.92058814f, -0.39053485f), array<f32, 2>(0.36117664f, 0.93249744f), array<f32, 2>(-0.3720851f, -0.92819864f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.38513124f, 0.9228618f), array<f32, 2>(0.39592505f, -0.9182828f), array<f32, 2>(-0.9260013f, 0.37752023f), array<f32, 2>(0.930364f, -0.36663717f)));
-                        let _e399 = (_e202 % 4u);
-                        if (_e399 < 4u) {
+                        let _e712 = (_e515 % 4u);
+                        if (_e712 < 4u) {
                         } else {
                             break;
                         }
-                        let _e401 = (_e201 % 4u);
-                        if (_e401 < 4u) {
+                        let _e714 = (_e514 % 4u);
+                        if (_e714 < 4u) {
                         } else {
                             break;
                         }
-                        let _e405 = local_6[_e399][_e401];
-                        let _e415 = sqrt((((_e322 * _e322) + (_e324 * _e324)) + (_e325 * _e325)));
-                        let _e416 = (-(_e322) / _e415);
-                        let _e417 = (-(_e324) / _e415);
-                        let _e418 = (_e269 / _e415);
-                        let _e421 = -((_e405[1] * _e418));
-                        let _e422 = (_e418 * _e405[0]);
-                        let _e425 = ((_e416 * _e405[1]) - (_e405[0] * _e417));
-                        let _e432 = (1f / sqrt((((_e421 * _e421) + (_e422 * _e422)) + (_e425 * _e425))));
-                        let _e433 = (_e421 * _e432);
-                        let _e434 = (_e422 * _e432);
-                        let _e435 = (_e425 * _e432);
-                        let _e439 = ((_e434 * _e418) - (_e417 * _e435));
-                        let _e442 = ((_e435 * _e416) - (_e418 * _e433));
-                        let _e445 = ((_e433 * _e417) - (_e416 * _e434));
-                        let _e464 = (((_e398.x * _e416) + (_e398.y * _e417)) + (_e398.z * _e418));
-                        let _e468 = abs(_e464);
-                        if (_e468 != _e468) {
-                            phi_1725_ = true;
+                        let _e718 = local_6[_e712][_e714];
+                        let _e728 = sqrt((((_e635 * _e635) + (_e637 * _e637)) + (_e638 * _e638)));
+                        let _e729 = (-(_e635) / _e728);
+                        let _e730 = (-(_e637) / _e728);
+                        let _e731 = (_e582 / _e728);
+                        let _e734 = -((_e718[1] * _e731));
+                        let _e735 = (_e731 * _e718[0]);
+                        let _e738 = ((_e729 * _e718[1]) - (_e718[0] * _e730));
+                        let _e745 = (1f / sqrt((((_e734 * _e734) + (_e735 * _e735)) + (_e738 * _e738))));
+                        let _e746 = (_e734 * _e745);
+                        let _e747 = (_e735 * _e745);
+                        let _e748 = (_e738 * _e745);
+                        let _e752 = ((_e747 * _e731) - (_e730 * _e748));
+                        let _e755 = ((_e748 * _e729) - (_e731 * _e746));
+                        let _e758 = ((_e746 * _e730) - (_e729 * _e747));
+                        let _e777 = (((_e711.x * _e729) + (_e711.y * _e730)) + (_e711.z * _e731));
+                        let _e781 = abs(_e777);
+                        if (_e781 != _e781) {
+                            phi_2059_ = true;
                         } else {
-                            phi_1725_ = (0.0001f >= _e468);
+                            phi_2059_ = (0.0001f >= _e781);
                         }
-                        let _e472 = phi_1725_;
-                        phi_625_ = type_28();
-                        phi_626_ = type_28(1u, type_27(vec2<u32>(_e201, _e202), vec2<f32>(_e263, _e264), _e311, _e312, vec3<f32>(_e322, _e324, _e325), _e398, vec3<f32>(_e416, _e417, _e418), vec3<f32>(_e439, _e442, _e445), vec3<f32>(_e433, _e434, _e435), vec3<f32>((((_e398.x * _e439) + (_e398.y * _e442)) + (_e398.z * _e445)), (((_e398.x * _e433) + (_e398.y * _e434)) + (_e398.z * _e435)), _e464), (1f / (select(1f, -1f, (_e464 < 0f)) * select(_e468, 0.0001f, _e472)))));
+                        let _e785 = phi_2059_;
+                        phi_939_ = type_28();
+                        phi_940_ = type_28(1u, type_27(vec2<u32>(_e514, _e515), vec2<f32>(_e576, _e577), _e624, _e625, vec3<f32>(_e635, _e637, _e638), _e711, vec3<f32>(_e729, _e730, _e731), vec3<f32>(_e752, _e755, _e758), vec3<f32>(_e746, _e747, _e748), vec3<f32>((((_e711.x * _e752) + (_e711.y * _e755)) + (_e711.z * _e758)), (((_e711.x * _e746) + (_e711.y * _e747)) + (_e711.z * _e748)), _e777), (1f / (select(1f, -1f, (_e777 < 0f)) * select(_e781, 0.0001f, _e785)))));
                     }
-                    let _e481 = phi_625_;
-                    let _e483 = phi_626_;
-                    phi_628_ = _e481;
-                    phi_629_ = _e483;
-                    phi_630_ = _e313;
+                    let _e794 = phi_939_;
+                    let _e796 = phi_940_;
+                    phi_942_ = _e794;
+                    phi_943_ = _e796;
+                    phi_944_ = _e626;
                 } else {
-                    phi_628_ = type_28(0u, type_28().member_1);
-                    phi_629_ = type_28();
-                    phi_630_ = true;
+                    phi_942_ = type_28(0u, type_28().member_1);
+                    phi_943_ = type_28();
+                    phi_944_ = true;
                 }
-                let _e488 = phi_628_;
-                let _e490 = phi_629_;
-                let _e492 = phi_630_;
-                if _e492 {
-                    phi_634_ = _e488;
+                let _e801 = phi_942_;
+                let _e803 = phi_943_;
+                let _e805 = phi_944_;
+                if _e805 {
+                    phi_948_ = _e801;
                 } else {
-                    phi_634_ = _e490;
+                    phi_948_ = _e803;
                 }
-                let _e494 = phi_634_;
-                if (bitcast<i32>(_e494.member) != 0i) {
-                    let _e503 = frame.member[0u].member_1.member_1;
-                    let _e504 = (_e503 == 1u);
-                    let _e515 = sqrt((((_e494.member_1.member_4.x * _e494.member_1.member_4.x) + (_e494.member_1.member_4.y * _e494.member_1.member_4.y)) + (_e494.member_1.member_4.z * _e494.member_1.member_4.z)));
-                    phi_662_ = 0u;
-                    phi_665_ = 0u;
-                    phi_667_ = 0f;
+                let _e807 = phi_948_;
+                if (bitcast<i32>(_e807.member) != 0i) {
+                    let _e816 = frame.member[0u].member_1.member_1;
+                    let _e817 = (_e816 == 1u);
+                    let _e828 = sqrt((((_e807.member_1.member_4.x * _e807.member_1.member_4.x) + (_e807.member_1.member_4.y * _e807.member_1.member_4.y)) + (_e807.member_1.member_4.z * _e807.member_1.member_4.z)));
+                    let _e833 = frame.member[0u].member_1.member_11;
+                    let _e838 = (8u << bitcast<u32>((select(_e833, 2u, (2u < _e833)) & 31u)));
+                    phi_985_ = 0u;
+                    phi_988_ = 0u;
+                    phi_990_ = 0f;
                     loop {
-                        let _e517 = phi_662_;
-                        let _e519 = phi_665_;
-                        let _e521 = phi_667_;
-                        local_7 = _e521;
-                        local_8 = _e519;
-                        local_9 = _e519;
-                        local_10 = _e519;
-                        let _e522 = (_e517 < 8u);
-                        if _e522 {
-                            let _e527 = frame.member[0u].member_1.member_10;
-                            local = array<array<f32, 2>, 8>(array<f32, 2>(0f, 1f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.7078398f, 0.70637304f));
-                            if _e522 {
+                        let _e840 = phi_985_;
+                        let _e842 = phi_988_;
+                        let _e844 = phi_990_;
+                        local_7 = _e844;
+                        local_8 = _e842;
+                        local_9 = _e842;
+                        local_10 = _e842;
+                        let _e845 = (_e840 < _e838);
+                        if _e845 {
+                            let _e850 = frame.member[0u].member_1.member_10;
+                            let _e852 = ((_e838 + _e840) - 8u);
+                            local = array<array<f32, 2>, 56>(array<f32, 2>(0f, 1f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(0f, 1f), array<f32, 2>(0.382615f, 0.9239079f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.92379445f, 0.38288876f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.92402124f, -0.3823412f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.38316247f, -0.92368096f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.38206735f, -0.9241345f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.92356735f, -0.38343617f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.9242476f, 0.3817935f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(-0.38370985f, 0.9234537f), array<f32, 2>(0f, 1f), array<f32, 2>(0.195054f, 0.9807925f), array<f32, 2>(0.382615f, 0.9239079f), array<f32, 2>(0.55547786f, 0.83153135f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.8313667f, 0.5557242f), array<f32, 2>(0.92379445f, 0.38288876f), array<f32, 2>(0.98073465f, 0.19534461f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.9808503f, -0.19476335f), array<f32, 2>(0.92402124f, -0.3823412f), array<f32, 2>(0.8316959f, -0.5552314f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.55597055f, -0.831202f), array<f32, 2>(0.38316247f, -0.92368096f), array<f32, 2>(0.19563523f, -0.9806767f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.19447269f, -0.9809079f), array<f32, 2>(-0.38206735f, -0.9241345f), array<f32, 2>(-0.5549849f, -0.8318604f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.8310372f, -0.55621684f), array<f32, 2>(-0.92356735f, -0.38343617f), array<f32, 2>(-0.9806187f, -0.19592582f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.9809655f, 0.19418201f), array<f32, 2>(-0.9242476f, 0.3817935f), array<f32, 2>(-0.8320248f, 0.5547384f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(-0.55646306f, 0.83087236f), array<f32, 2>(-0.38370985f, 0.9234537f), array<f32, 2>(-0.19621639f, 0.9805606f));
+                            let _e853 = (_e852 < 56u);
+                            if _e853 {
                             } else {
-                                phi_1895_ = true;
+                                phi_2229_ = true;
                                 break;
                             }
-                            let _e529 = local[_e517];
-                            let _e532 = (_e527 == 1u);
-                            if _e532 {
-                                local_1 = array<f32, 8>(0.019897608f, 0.3239192f, 0.15013283f, 0.5608856f, 0.07874805f, 0.4306375f, 0.23159242f, 0.74770695f);
-                                if _e522 {
+                            let _e855 = local[_e852];
+                            let _e858 = (_e850 == 1u);
+                            if _e858 {
+                                local_1 = array<f32, 56>(0.019897608f, 0.3239192f, 0.15013283f, 0.5608856f, 0.07874805f, 0.4306375f, 0.23159242f, 0.74770695f, 0.008364792f, 0.2996842f, 0.13131975f, 0.5251597f, 0.06264064f, 0.40226412f, 0.21027996f, 0.69061786f, 0.033039935f, 0.349031f, 0.16956282f, 0.59961605f, 0.09559796f, 0.46040866f, 0.2535722f, 0.8218291f, 0.0035168785f, 0.2878725f, 0.1221474f, 0.508219f, 0.054890417f, 0.38854375f, 0.19986558f, 0.66562253f, 0.026302148f, 0.3363604f, 0.15977097f, 0.5798254f, 0.08708425f, 0.44533524f, 0.24249692f, 0.78164643f, 0.013886448f, 0.31169695f, 0.14064877f, 0.542692f, 0.07059704f, 0.41628838f, 0.2208546f, 0.7177502f, 0.040069554f, 0.36194277f, 0.1795086f, 0.62038976f, 0.10428292f, 0.47588885f, 0.26482287f, 0.8740953f);
+                                if _e853 {
                                 } else {
-                                    phi_1895_ = true;
+                                    phi_2229_ = true;
                                     break;
                                 }
-                                let _e534 = local_1[_e517];
-                                phi_706_ = _e534;
+                                let _e860 = local_1[_e852];
+                                phi_1031_ = _e860;
                             } else {
-                                local_2 = array<f32, 8>(0.917883f, 0.564429f, 0.734504f, 0.359545f, 0.820004f, 0.470149f, 0.650919f, 0.205215f);
-                                if _e522 {
+                                local_2 = array<f32, 56>(0.917883f, 0.564429f, 0.734504f, 0.359545f, 0.820004f, 0.470149f, 0.650919f, 0.205215f, 0.9490982f, 0.5865639f, 0.7554682f, 0.38954395f, 0.84255606f, 0.4948004f, 0.6719197f, 0.252031f, 0.8908589f, 0.54182106f, 0.7136428f, 0.32724136f, 0.798092f, 0.44453403f, 0.6297374f, 0.14471826f, 0.96824586f, 0.5974803f, 0.7660169f, 0.40384725f, 0.8541535f, 0.5068159f, 0.6823727f, 0.27260765f, 0.90401816f, 0.55318946f, 0.72406566f, 0.34372202f, 0.80898184f, 0.45747337f, 0.6403549f, 0.17748062f, 0.9327351f, 0.57555f, 0.7449678f, 0.37479568f, 0.83118564f, 0.48258433f, 0.6614378f, 0.22975244f, 0.87823313f, 0.5303115f, 0.7032256f, 0.30999523f, 0.7873134f, 0.4313043f, 0.61905813f, 0.10219581f);
+                                if _e853 {
                                 } else {
-                                    phi_1895_ = true;
+                                    phi_2229_ = true;
                                     break;
                                 }
-                                let _e536 = local_2[_e517];
-                                phi_706_ = _e536;
+                                let _e862 = local_2[_e852];
+                                phi_1031_ = _e862;
                             }
-                            let _e538 = phi_706_;
-                            let _e540 = (_e538 * _e494.member_1.member_2);
-                            let _e541 = (_e540 * _e529[0]);
-                            let _e542 = (_e540 * _e529[1]);
-                            if _e532 {
-                                local_3 = array<f32, 8>(0.999802f, 0.94608474f, 0.9886658f, 0.8278933f, 0.99689454f, 0.902525f, 0.9728129f, 0.6640288f);
-                                if _e522 {
+                            let _e864 = phi_1031_;
+                            let _e866 = (_e864 * _e807.member_1.member_2);
+                            let _e867 = (_e866 * _e855[0]);
+                            let _e868 = (_e866 * _e855[1]);
+                            if _e858 {
+                                local_3 = array<f32, 56>(0.999802f, 0.94608474f, 0.9886658f, 0.8278933f, 0.99689454f, 0.902525f, 0.9728129f, 0.6640288f, 0.999965f, 0.95403844f, 0.99134004f, 0.8510037f, 0.99803615f, 0.91552365f, 0.9776412f, 0.7232199f, 0.999454f, 0.9371112f, 0.9855194f, 0.8002878f, 0.99542004f, 0.8877071f, 0.96731645f, 0.5697341f, 0.9999938f, 0.9576687f, 0.992512f, 0.86122787f, 0.99849236f, 0.9214303f, 0.97982335f, 0.7462886f, 0.99965405f, 0.94173336f, 0.9871541f, 0.8147408f, 0.996201f, 0.8953639f, 0.9701522f, 0.6237217f, 0.99990356f, 0.95018154f, 0.99005955f, 0.8399318f, 0.9975049f, 0.9092326f, 0.97530675f, 0.6963007f, 0.9991969f, 0.9322003f, 0.9837564f, 0.78429365f, 0.99454767f, 0.87950546f, 0.96429706f, 0.48575446f);
+                                if _e853 {
                                 } else {
-                                    phi_1895_ = true;
+                                    phi_2229_ = true;
                                     break;
                                 }
-                                let _e544 = local_3[_e517];
-                                phi_730_ = _e544;
+                                let _e870 = local_3[_e852];
+                                phi_1055_ = _e870;
                             } else {
-                                local_4 = array<f32, 8>(0.39685115f, 0.82548165f, 0.67860436f, 0.93312776f, 0.57235783f, 0.8825871f, 0.75914717f, 0.9787169f);
-                                if _e522 {
+                                local_4 = array<f32, 56>(0.39685115f, 0.82548165f, 0.67860436f, 0.93312776f, 0.57235783f, 0.8825871f, 0.75914717f, 0.9787169f, 0.31498024f, 0.80990297f, 0.65518534f, 0.9210079f, 0.5386087f, 0.86900663f, 0.740624f, 0.96771914f, 0.45428014f, 0.84049386f, 0.7005098f, 0.9449408f, 0.6025356f, 0.89576197f, 0.7768081f, 0.9894729f, 0.2499999f, 0.8018836f, 0.6428204f, 0.91482645f, 0.52002096f, 0.8620543f, 0.7310045f, 0.9621253f, 0.42749405f, 0.8330555f, 0.68973106f, 0.9390714f, 0.58783364f, 0.88922334f, 0.76807916f, 0.9841243f, 0.3605624f, 0.8177666f, 0.6671004f, 0.92710745f, 0.555995f, 0.8758495f, 0.75f, 0.9732491f, 0.47823274f, 0.8478029f, 0.71096677f, 0.95073813f, 0.616553f, 0.90220654f, 0.78534514f, 0.9947643f);
+                                if _e853 {
                                 } else {
-                                    phi_1895_ = true;
+                                    phi_2229_ = true;
                                     break;
                                 }
-                                let _e546 = local_4[_e517];
-                                phi_730_ = _e546;
+                                let _e872 = local_4[_e852];
+                                phi_1055_ = _e872;
                             }
-                            let _e548 = phi_730_;
-                            let _e549 = (_e548 * _e494.member_1.member_2);
-                            if _e532 {
-                                local_5 = array<f32, 8>(0.8732723f, 0.50031143f, 0.7051298f, 0.261884f, 0.79581136f, 0.38665694f, 0.6062196f, 0.11405134f);
-                                if _e522 {
+                            let _e874 = phi_1055_;
+                            let _e875 = (_e874 * _e807.member_1.member_2);
+                            if _e858 {
+                                local_5 = array<f32, 56>(0.8732723f, 0.50031143f, 0.7051298f, 0.261884f, 0.79581136f, 0.38665694f, 0.6062196f, 0.11405134f, 0.8887312f, 0.5274526f, 0.72867256f, 0.29448545f, 0.8167736f, 0.41591686f, 0.63161474f, 0.15487643f, 0.8557666f, 0.47269714f, 0.68108714f, 0.22801188f, 0.77407813f, 0.35673028f, 0.58039576f, 0.06768583f, 0.8952564f, 0.5408529f, 0.74024403f, 0.31038457f, 0.8269243f, 0.43031907f, 0.6441499f, 0.17401955f, 0.8647266f, 0.4865651f, 0.6931688f, 0.24512479f, 0.7850342f, 0.37178203f, 0.59336114f, 0.09182964f, 0.8813185f, 0.51393956f, 0.71696603f, 0.27832723f, 0.8063964f, 0.4013655f, 0.618971f, 0.13495624f, 0.84645164f, 0.4587034f, 0.6688883f, 0.21049869f, 0.7629548f, 0.3414897f, 0.56732315f, 0.04020735f);
+                                if _e853 {
                                 } else {
-                                    phi_1895_ = true;
+                                    phi_2229_ = true;
                                     break;
                                 }
-                                let _e551 = local_5[_e517];
-                                phi_744_ = _e551;
+                                let _e877 = local_5[_e852];
+                                phi_1069_ = _e877;
                             } else {
-                                phi_744_ = (2f * _e549);
+                                phi_1069_ = (2f * _e875);
                             }
-                            let _e554 = phi_744_;
-                            let _e564 = (-(((_e541 * _e494.member_1.member_9.x) + (_e542 * _e494.member_1.member_9.y))) * _e494.member_1.member_10);
-                            let _e565 = -(_e549);
-                            if (_e564 > _e565) {
-                                phi_763_ = select(_e549, _e564, (_e564 < _e549));
+                            let _e880 = phi_1069_;
+                            let _e890 = (-(((_e867 * _e807.member_1.member_9.x) + (_e868 * _e807.member_1.member_9.y))) * _e807.member_1.member_10);
+                            let _e891 = -(_e875);
+                            if (_e890 > _e891) {
+                                phi_1088_ = select(_e875, _e890, (_e890 < _e875));
                             } else {
-                                phi_763_ = _e565;
+                                phi_1088_ = _e891;
                             }
-                            let _e570 = phi_763_;
-                            let _e571 = (_e549 - _e570);
-                            let _e594 = (-0.5f / ((_e494.member_1.member_4.z + (_e494.member_1.member_7.z * _e541)) + (_e494.member_1.member_8.z * _e542)));
-                            let _e603 = frame.member[0u].member_1.member.member.member_1[0u];
-                            let _e605 = (0.5f + ((((_e494.member_1.member_4.x + (_e494.member_1.member_7.x * _e541)) + (_e494.member_1.member_8.x * _e542)) * _e594) / _e603));
-                            let _e614 = frame.member[0u].member_1.member.member.member_1[1u];
-                            let _e616 = (0.5f - ((((_e494.member_1.member_4.y + (_e494.member_1.member_7.y * _e541)) + (_e494.member_1.member_8.y * _e542)) * _e594) / _e614));
-                            if (_e605 >= 0f) {
-                                if (_e605 <= 1f) {
-                                    let _e619 = (_e616 >= 0f);
-                                    if _e619 {
-                                        phi_819_ = (_e616 <= 1f);
+                            let _e896 = phi_1088_;
+                            let _e897 = (_e875 - _e896);
+                            let _e920 = (-0.5f / ((_e807.member_1.member_4.z + (_e807.member_1.member_7.z * _e867)) + (_e807.member_1.member_8.z * _e868)));
+                            let _e929 = frame.member[0u].member_1.member.member.member_1[0u];
+                            let _e931 = (0.5f + ((((_e807.member_1.member_4.x + (_e807.member_1.member_7.x * _e867)) + (_e807.member_1.member_8.x * _e868)) * _e920) / _e929));
+                            let _e940 = frame.member[0u].member_1.member.member.member_1[1u];
+                            let _e942 = (0.5f - ((((_e807.member_1.member_4.y + (_e807.member_1.member_7.y * _e867)) + (_e807.member_1.member_8.y * _e868)) * _e920) / _e940));
+                            if (_e931 >= 0f) {
+                                if (_e931 <= 1f) {
+                                    let _e945 = (_e942 >= 0f);
+                                    if _e945 {
+                                        phi_1144_ = (_e942 <= 1f);
                                     } else {
-                                        phi_819_ = bool();
+                                        phi_1144_ = bool();
                                     }
-                                    let _e622 = phi_819_;
-                                    phi_821_ = _e622;
-                                    phi_822_ = select(true, false, _e619);
+                                    let _e948 = phi_1144_;
+                                    phi_1146_ = _e948;
+                                    phi_1147_ = select(true, false, _e945);
                                 } else {
-                                    phi_821_ = bool();
-                                    phi_822_ = true;
+                                    phi_1146_ = bool();
+                                    phi_1147_ = true;
                                 }
-                                let _e625 = phi_821_;
-                                let _e627 = phi_822_;
-                                phi_823_ = _e625;
-                                phi_824_ = _e627;
+                                let _e951 = phi_1146_;
+                                let _e953 = phi_1147_;
+                                phi_1148_ = _e951;
+                                phi_1149_ = _e953;
                             } else {
-                                phi_823_ = bool();
-                                phi_824_ = true;
+                                phi_1148_ = bool();
+                                phi_1149_ = true;
                             }
-                            let _e629 = phi_823_;
-                            let _e631 = phi_824_;
-                            if (_e605 > 0f) {
-                                phi_856_ = select(1f, _e605, (_e605 < 1f));
+                            let _e955 = phi_1148_;
+                            let _e957 = phi_1149_;
+                            if (_e931 > 0f) {
+                                phi_1181_ = select(1f, _e931, (_e931 < 1f));
                             } else {
-                                phi_856_ = 0f;
+                                phi_1181_ = 0f;
                             }
-                            let _e637 = phi_856_;
-                            let _e638 = (_e637 * _e210);
-                            if (_e616 > 0f) {
-                                phi_869_ = select(1f, _e616, (_e616 < 1f));
+                            let _e963 = phi_1181_;
+                            let _e964 = (_e963 * _e523);
+                            if (_e942 > 0f) {
+                                phi_1194_ = select(1f, _e942, (_e942 < 1f));
                             } else {
-                                phi_869_ = 0f;
+                                phi_1194_ = 0f;
                             }
-                            let _e643 = phi_869_;
-                            let _e644 = (_e643 * _e223);
-                            let _e649 = select(select(u32(_e638), 0u, (_e638 < 0f)), 4294967295u, (_e638 > 4294967000f));
-                            let _e650 = (_e215 - 1u);
-                            let _e652 = select(_e649, _e650, (_e650 < _e649));
-                            let _e657 = select(select(u32(_e644), 0u, (_e644 < 0f)), 4294967295u, (_e644 > 4294967000f));
-                            let _e658 = (_e228 - 1u);
-                            let _e660 = select(_e657, _e658, (_e658 < _e657));
-                            let _e667 = ((_e494.member_1.member_1.x - _e605) * _e210);
-                            let _e668 = ((_e494.member_1.member_1.y - _e616) * _e223);
-                            let _e672 = sqrt(((_e667 * _e667) + (_e668 * _e668)));
-                            if (_e652 == _e494.member_1.member.x) {
-                                phi_920_ = (_e660 == _e494.member_1.member.y);
+                            let _e969 = phi_1194_;
+                            let _e970 = (_e969 * _e536);
+                            let _e975 = select(select(u32(_e964), 0u, (_e964 < 0f)), 4294967295u, (_e964 > 4294967000f));
+                            let _e976 = (_e528 - 1u);
+                            let _e978 = select(_e975, _e976, (_e976 < _e975));
+                            let _e983 = select(select(u32(_e970), 0u, (_e970 < 0f)), 4294967295u, (_e970 > 4294967000f));
+                            let _e984 = (_e541 - 1u);
+                            let _e986 = select(_e983, _e984, (_e984 < _e983));
+                            let _e993 = ((_e807.member_1.member_1.x - _e931) * _e523);
+                            let _e994 = ((_e807.member_1.member_1.y - _e942) * _e536);
+                            let _e998 = sqrt(((_e993 * _e993) + (_e994 * _e994)));
+                            if (_e978 == _e807.member_1.member.x) {
+                                phi_1245_ = (_e986 == _e807.member_1.member.y);
                             } else {
-                                phi_920_ = false;
+                                phi_1245_ = false;
                             }
-                            let _e680 = phi_920_;
-                            if (_e571 > (0.2f * _e549)) {
-                                if _e680 {
-                                    if _e532 {
-                                        phi_952_ = 0f;
+                            let _e1006 = phi_1245_;
+                            if (_e897 > (0.2f * _e875)) {
+                                if _e1006 {
+                                    if _e858 {
+                                        phi_1277_ = 0f;
                                     } else {
-                                        phi_952_ = (_e571 / (2f * _e549));
+                                        phi_1277_ = (_e897 / (2f * _e875));
                                     }
-                                    let _e684 = phi_952_;
-                                    phi_1576_ = _e519;
-                                    phi_1577_ = (_e521 + _e684);
+                                    let _e1010 = phi_1277_;
+                                    phi_1901_ = _e842;
+                                    phi_1902_ = (_e844 + _e1010);
                                 } else {
-                                    let _e687 = ((_e660 * _e215) + _e652);
-                                    if (_e687 < _e177) {
+                                    let _e1013 = ((_e986 * _e528) + _e978);
+                                    if (_e1013 < _e490) {
                                     } else {
-                                        phi_1895_ = true;
+                                        phi_2229_ = true;
                                         break;
                                     }
-                                    let _e690 = depth.member[_e687];
-                                    if (_e690 > 0f) {
-                                        phi_975_ = (_e690 < _e276);
+                                    let _e1016 = depth.member[_e1013];
+                                    if (_e1016 > 0f) {
+                                        phi_1300_ = (_e1016 < _e589);
                                     } else {
-                                        phi_975_ = false;
+                                        phi_1300_ = false;
                                     }
-                                    let _e694 = phi_975_;
-                                    let _e695 = select(_e276, _e690, _e694);
-                                    let _e705 = ((2f * ((f32(_e652) + 0.5f) * (1f / _e210))) - 1f);
-                                    let _e707 = (1f - (2f * ((f32(_e660) + 0.5f) * (1f / _e223))));
-                                    let _e713 = (((_e705 * _e695) * _e603) - _e494.member_1.member_4.x);
-                                    let _e714 = (((_e707 * _e695) * _e614) - _e494.member_1.member_4.y);
-                                    let _e715 = (-(_e695) - _e494.member_1.member_4.z);
-                                    let _e724 = (((_e713 * _e494.member_1.member_6.x) + (_e714 * _e494.member_1.member_6.y)) + (_e715 * _e494.member_1.member_6.z));
-                                    if _e532 {
-                                        let _e729 = (((_e713 * _e713) + (_e714 * _e714)) + (_e715 * _e715));
-                                        if (_e729 <= 0f) {
-                                            phi_1099_ = 0f;
+                                    let _e1020 = phi_1300_;
+                                    let _e1021 = select(_e589, _e1016, _e1020);
+                                    let _e1031 = ((2f * ((f32(_e978) + 0.5f) * (1f / _e523))) - 1f);
+                                    let _e1033 = (1f - (2f * ((f32(_e986) + 0.5f) * (1f / _e536))));
+                                    let _e1039 = (((_e1031 * _e1021) * _e929) - _e807.member_1.member_4.x);
+                                    let _e1040 = (((_e1033 * _e1021) * _e940) - _e807.member_1.member_4.y);
+                                    let _e1041 = (-(_e1021) - _e807.member_1.member_4.z);
+                                    let _e1050 = (((_e1039 * _e807.member_1.member_6.x) + (_e1040 * _e807.member_1.member_6.y)) + (_e1041 * _e807.member_1.member_6.z));
+                                    if _e858 {
+                                        let _e1055 = (((_e1039 * _e1039) + (_e1040 * _e1040)) + (_e1041 * _e1041));
+                                        if (_e1055 <= 0f) {
+                                            phi_1424_ = 0f;
                                         } else {
-                                            let _e742 = (((((_e494.member_1.member_5.x * _e713) + (_e494.member_1.member_5.y * _e714)) + (_e494.member_1.member_5.z * _e715)) / sqrt(_e729)) - 0.1f);
-                                            if (_e742 > 0f) {
-                                                phi_1072_ = select(1f, _e742, (_e742 < 1f));
+                                            let _e1068 = (((((_e807.member_1.member_5.x * _e1039) + (_e807.member_1.member_5.y * _e1040)) + (_e807.member_1.member_5.z * _e1041)) / sqrt(_e1055)) - 0.1f);
+                                            if (_e1068 > 0f) {
+                                                phi_1397_ = select(1f, _e1068, (_e1068 < 1f));
                                             } else {
-                                                phi_1072_ = 0f;
+                                                phi_1397_ = 0f;
                                             }
-                                            let _e747 = phi_1072_;
-                                            let _e750 = (1f - (_e729 / (_e252 * _e252)));
-                                            if (_e750 > 0f) {
-                                                phi_1085_ = select(1f, _e750, (_e750 < 1f));
+                                            let _e1073 = phi_1397_;
+                                            let _e1076 = (1f - (_e1055 / (_e565 * _e565)));
+                                            if (_e1076 > 0f) {
+                                                phi_1410_ = select(1f, _e1076, (_e1076 < 1f));
                                             } else {
-                                                phi_1085_ = 0f;
+                                                phi_1410_ = 0f;
                                             }
-                                            let _e755 = phi_1085_;
-                                            let _e757 = ((_e747 * _e755) / _e554);
-                                            if (_e757 > 0f) {
-                                                phi_1098_ = select(1f, _e757, (_e757 < 1f));
+                                            let _e1081 = phi_1410_;
+                                            let _e1083 = ((_e1073 * _e1081) / _e880);
+                                            if (_e1083 > 0f) {
+                                                phi_1423_ = select(1f, _e1083, (_e1083 < 1f));
                                             } else {
-                                                phi_1098_ = 0f;
+                                                phi_1423_ = 0f;
                                             }
-                                            let _e762 = phi_1098_;
-                                            phi_1099_ = _e762;
+                                            let _e1088 = phi_1423_;
+                                            phi_1424_ = _e1088;
                                         }
-                                        let _e764 = phi_1099_;
-                                        phi_1129_ = _e764;
+                                        let _e1090 = phi_1424_;
+                                        phi_1454_ = _e1090;
                                     } else {
-                                        let _e770 = frame.member[0u].member_1.member.member_3;
-                                        if (_e570 != _e570) {
-                                            phi_1740_ = true;
+                                        let _e1096 = frame.member[0u].member_1.member.member_3;
+                                        if (_e896 != _e896) {
+                                            phi_2074_ = true;
                                         } else {
-                                            phi_1740_ = (_e724 >= _e570);
+                                            phi_2074_ = (_e1050 >= _e896);
                                         }
-                                        let _e775 = phi_1740_;
-                                        let _e777 = (_e549 - select(_e570, _e724, _e775));
-                                        if (_e777 != _e777) {
-                                            phi_1755_ = true;
+                                        let _e1101 = phi_2074_;
+                                        let _e1103 = (_e875 - select(_e896, _e1050, _e1101));
+                                        if (_e1103 != _e1103) {
+                                            phi_2089_ = true;
                                         } else {
-                                            phi_1755_ = (0f >= _e777);
+                                            phi_2089_ = (0f >= _e1103);
                                         }
-                                        let _e781 = phi_1755_;
-                                        let _e786 = ((_e724 - ((1f + _e770) * _e494.member_1.member_2)) * (1f / _e549));
-                                        if (_e786 > 0f) {
-                                            phi_1122_ = select(1f, _e786, (_e786 < 1f));
+                                        let _e1107 = phi_2089_;
+                                        let _e1112 = ((_e1050 - ((1f + _e1096) * _e807.member_1.member_2)) * (1f / _e875));
+                                        if (_e1112 > 0f) {
+                                            phi_1447_ = select(1f, _e1112, (_e1112 < 1f));
                                         } else {
-                                            phi_1122_ = 0f;
+                                            phi_1447_ = 0f;
                                         }
-                                        let _e791 = phi_1122_;
-                                        phi_1129_ = ((select(_e777, 0f, _e781) + (_e791 * _e571)) * (0.5f / _e549));
+                                        let _e1117 = phi_1447_;
+                                        phi_1454_ = ((select(_e1103, 0f, _e1107) + (_e1117 * _e897)) * (0.5f / _e875));
                                     }
-                                    let _e797 = phi_1129_;
-                                    let _e802 = frame.member[0u].member_1.member_9;
-                                    if (_e802 == 0u) {
-                                        phi_1361_ = _e797;
-                                        phi_1362_ = _e724;
+                                    let _e1123 = phi_1454_;
+                                    let _e1128 = frame.member[0u].member_1.member_9;
+                                    if (_e1128 == 0u) {
+                                        phi_1686_ = _e1123;
+                                        phi_1687_ = _e1050;
                                     } else {
-                                        if _e532 {
-                                            let _e804 = (0.1f * _e494.member_1.member_2);
-                                            if (_e549 != _e549) {
-                                                phi_1770_ = true;
+                                        if _e858 {
+                                            let _e1130 = (0.1f * _e807.member_1.member_2);
+                                            if (_e875 != _e875) {
+                                                phi_2104_ = true;
                                             } else {
-                                                phi_1770_ = (_e804 >= _e549);
+                                                phi_2104_ = (_e1130 >= _e875);
                                             }
-                                            let _e808 = phi_1770_;
-                                            phi_1151_ = select(_e549, _e804, _e808);
+                                            let _e1134 = phi_2104_;
+                                            phi_1476_ = select(_e875, _e1130, _e1134);
                                         } else {
-                                            let _e815 = frame.member[0u].member_1.member.member_3;
-                                            phi_1151_ = ((1f + _e815) * _e494.member_1.member_2);
+                                            let _e1141 = frame.member[0u].member_1.member.member_3;
+                                            phi_1476_ = ((1f + _e1141) * _e807.member_1.member_2);
                                         }
-                                        let _e819 = phi_1151_;
-                                        if (_e724 > _e819) {
-                                            let _e825 = frame.member[0u].member_1.member_3;
-                                            phi_1159_ = (_e672 > _e825);
+                                        let _e1145 = phi_1476_;
+                                        if (_e1050 > _e1145) {
+                                            let _e1151 = frame.member[0u].member_1.member_3;
+                                            phi_1484_ = (_e998 > _e1151);
                                         } else {
-                                            phi_1159_ = false;
+                                            phi_1484_ = false;
                                         }
-                                        let _e828 = phi_1159_;
-                                        if _e828 {
-                                            if (_e687 < arrayLength((&depth2_.member))) {
+                                        let _e1154 = phi_1484_;
+                                        if _e1154 {
+                                            if (_e1013 < arrayLength((&depth2_.member))) {
                                             } else {
-                                                phi_1895_ = true;
+                                                phi_2229_ = true;
                                                 break;
                                             }
-                                            let _e832 = depth2_.member[_e687];
-                                            if (_e832 > 0f) {
-                                                phi_1194_ = (_e832 < _e276);
+                                            let _e1158 = depth2_.member[_e1013];
+                                            if (_e1158 > 0f) {
+                                                phi_1519_ = (_e1158 < _e589);
                                             } else {
-                                                phi_1194_ = false;
+                                                phi_1519_ = false;
                                             }
-                                            let _e836 = phi_1194_;
-                                            let _e837 = select(_e276, _e832, _e836);
-                                            let _e843 = (((_e705 * _e837) * _e603) - _e494.member_1.member_4.x);
-                                            let _e844 = (((_e707 * _e837) * _e614) - _e494.member_1.member_4.y);
-                                            let _e845 = (-(_e837) - _e494.member_1.member_4.z);
-                                            let _e850 = (((_e843 * _e494.member_1.member_6.x) + (_e844 * _e494.member_1.member_6.y)) + (_e845 * _e494.member_1.member_6.z));
-                                            if _e532 {
-                                                let _e855 = (((_e843 * _e843) + (_e844 * _e844)) + (_e845 * _e845));
-                                                if (_e855 <= 0f) {
-                                                    phi_1318_ = 0f;
+                                            let _e1162 = phi_1519_;
+                                            let _e1163 = select(_e589, _e1158, _e1162);
+                                            let _e1169 = (((_e1031 * _e1163) * _e929) - _e807.member_1.member_4.x);
+                                            let _e1170 = (((_e1033 * _e1163) * _e940) - _e807.member_1.member_4.y);
+                                            let _e1171 = (-(_e1163) - _e807.member_1.member_4.z);
+                                            let _e1176 = (((_e1169 * _e807.member_1.member_6.x) + (_e1170 * _e807.member_1.member_6.y)) + (_e1171 * _e807.member_1.member_6.z));
+                                            if _e858 {
+                                                let _e1181 = (((_e1169 * _e1169) + (_e1170 * _e1170)) + (_e1171 * _e1171));
+                                                if (_e1181 <= 0f) {
+                                                    phi_1643_ = 0f;
                                                 } else {
-                                                    let _e868 = (((((_e494.member_1.member_5.x * _e843) + (_e494.member_1.member_5.y * _e844)) + (_e494.member_1.member_5.z * _e845)) / sqrt(_e855)) - 0.1f);
-                                                    if (_e868 > 0f) {
-                                                        phi_1291_ = select(1f, _e868, (_e868 < 1f));
+                                                    let _e1194 = (((((_e807.member_1.member_5.x * _e1169) + (_e807.member_1.member_5.y * _e1170)) + (_e807.member_1.member_5.z * _e1171)) / sqrt(_e1181)) - 0.1f);
+                                                    if (_e1194 > 0f) {
+                                                        phi_1616_ = select(1f, _e1194, (_e1194 < 1f));
                                                     } else {
-                                                        phi_1291_ = 0f;
+                                                        phi_1616_ = 0f;
                                                     }
-                                                    let _e873 = phi_1291_;
-                                                    let _e876 = (1f - (_e855 / (_e252 * _e252)));
-                                                    if (_e876 > 0f) {
-                                                        phi_1304_ = select(1f, _e876, (_e876 < 1f));
+                                                    let _e1199 = phi_1616_;
+                                                    let _e1202 = (1f - (_e1181 / (_e565 * _e565)));
+                                                    if (_e1202 > 0f) {
+                                                        phi_1629_ = select(1f, _e1202, (_e1202 < 1f));
                                                     } else {
-                                                        phi_1304_ = 0f;
+                                                        phi_1629_ = 0f;
                                                     }
-                                                    let _e881 = phi_1304_;
-                                                    let _e883 = ((_e873 * _e881) / _e554);
-                                                    if (_e883 > 0f) {
-                                                        phi_1317_ = select(1f, _e883, (_e883 < 1f));
+                                                    let _e1207 = phi_1629_;
+                                                    let _e1209 = ((_e1199 * _e1207) / _e880);
+                                                    if (_e1209 > 0f) {
+                                                        phi_1642_ = select(1f, _e1209, (_e1209 < 1f));
                                                     } else {
-                                                        phi_1317_ = 0f;
+                                                        phi_1642_ = 0f;
                                                     }
-                                                    let _e888 = phi_1317_;
-                                                    phi_1318_ = _e888;
+                                                    let _e1214 = phi_1642_;
+                                                    phi_1643_ = _e1214;
                                                 }
-                                                let _e890 = phi_1318_;
-                                                phi_1348_ = _e890;
+                                                let _e1216 = phi_1643_;
+                                                phi_1673_ = _e1216;
                                             } else {
-                                                let _e896 = frame.member[0u].member_1.member.member_3;
-                                                if (_e570 != _e570) {
-                                                    phi_1785_ = true;
+                                                let _e1222 = frame.member[0u].member_1.member.member_3;
+                                                if (_e896 != _e896) {
+                                                    phi_2119_ = true;
                                                 } else {
-                                                    phi_1785_ = (_e850 >= _e570);
+                                                    phi_2119_ = (_e1176 >= _e896);
                                                 }
-                                                let _e901 = phi_1785_;
-                                                let _e903 = (_e549 - select(_e570, _e850, _e901));
-                                                if (_e903 != _e903) {
-                                                    phi_1800_ = true;
+                                                let _e1227 = phi_2119_;
+                                                let _e1229 = (_e875 - select(_e896, _e1176, _e1227));
+                                                if (_e1229 != _e1229) {
+                                                    phi_2134_ = true;
                                                 } else {
-                                                    phi_1800_ = (0f >= _e903);
+                                                    phi_2134_ = (0f >= _e1229);
                                                 }
-                                                let _e907 = phi_1800_;
-                                                let _e912 = ((_e850 - ((1f + _e896) * _e494.member_1.member_2)) * (1f / _e549));
-                                                if (_e912 > 0f) {
-                                                    phi_1341_ = select(1f, _e912, (_e912 < 1f));
+                                                let _e1233 = phi_2134_;
+                                                let _e1238 = ((_e1176 - ((1f + _e1222) * _e807.member_1.member_2)) * (1f / _e875));
+                                                if (_e1238 > 0f) {
+                                                    phi_1666_ = select(1f, _e1238, (_e1238 < 1f));
                                                 } else {
-                                                    phi_1341_ = 0f;
+                                                    phi_1666_ = 0f;
                                                 }
-                                                let _e917 = phi_1341_;
-                                                phi_1348_ = ((select(_e903, 0f, _e907) + (_e917 * _e571)) * (0.5f / _e549));
+                                                let _e1243 = phi_1666_;
+                                                phi_1673_ = ((select(_e1229, 0f, _e1233) + (_e1243 * _e897)) * (0.5f / _e875));
                                             }
-                                            let _e923 = phi_1348_;
-                                            if _e532 {
-                                                if (_e797 != _e797) {
-                                                    phi_1815_ = true;
+                                            let _e1249 = phi_1673_;
+                                            if _e858 {
+                                                if (_e1123 != _e1123) {
+                                                    phi_2149_ = true;
                                                 } else {
-                                                    phi_1815_ = (_e923 >= _e797);
+                                                    phi_2149_ = (_e1249 >= _e1123);
                                                 }
-                                                let _e927 = phi_1815_;
-                                                phi_1357_ = select(_e797, _e923, _e927);
+                                                let _e1253 = phi_2149_;
+                                                phi_1682_ = select(_e1123, _e1249, _e1253);
                                             } else {
-                                                if (_e797 != _e797) {
-                                                    phi_1830_ = true;
+                                                if (_e1123 != _e1123) {
+                                                    phi_2164_ = true;
                                                 } else {
-                                                    phi_1830_ = (_e923 <= _e797);
+                                                    phi_2164_ = (_e1249 <= _e1123);
                                                 }
-                                                let _e932 = phi_1830_;
-                                                phi_1357_ = select(_e797, _e923, _e932);
+                                                let _e1258 = phi_2164_;
+                                                phi_1682_ = select(_e1123, _e1249, _e1258);
                                             }
-                                            let _e935 = phi_1357_;
-                                            if (_e724 != _e724) {
-                                                phi_1845_ = true;
+                                            let _e1261 = phi_1682_;
+                                            if (_e1050 != _e1050) {
+                                                phi_2179_ = true;
                                             } else {
-                                                phi_1845_ = (_e850 <= _e724);
+                                                phi_2179_ = (_e1176 <= _e1050);
                                             }
-                                            let _e939 = phi_1845_;
-                                            phi_1359_ = _e935;
-                                            phi_1360_ = select(_e724, _e850, _e939);
+                                            let _e1265 = phi_2179_;
+                                            phi_1684_ = _e1261;
+                                            phi_1685_ = select(_e1050, _e1176, _e1265);
                                         } else {
-                                            phi_1359_ = _e797;
-                                            phi_1360_ = _e724;
+                                            phi_1684_ = _e1123;
+                                            phi_1685_ = _e1050;
                                         }
-                                        let _e942 = phi_1359_;
-                                        let _e944 = phi_1360_;
-                                        phi_1361_ = _e942;
-                                        phi_1362_ = _e944;
+                                        let _e1268 = phi_1684_;
+                                        let _e1270 = phi_1685_;
+                                        phi_1686_ = _e1268;
+                                        phi_1687_ = _e1270;
                                     }
-                                    let _e946 = phi_1361_;
-                                    let _e948 = phi_1362_;
-                                    if select(_e629, false, _e631) {
-                                        phi_1378_ = false;
+                                    let _e1272 = phi_1686_;
+                                    let _e1274 = phi_1687_;
+                                    if select(_e955, false, _e957) {
+                                        phi_1703_ = false;
                                     } else {
-                                        if (_e503 == 2u) {
-                                            phi_1377_ = true;
+                                        if (_e816 == 2u) {
+                                            phi_1702_ = true;
                                         } else {
-                                            if _e504 {
-                                                let _e954 = frame.member[0u].member_1.member_4;
-                                                phi_1376_ = (_e954 > 0u);
+                                            if _e817 {
+                                                let _e1280 = frame.member[0u].member_1.member_4;
+                                                phi_1701_ = (_e1280 > 0u);
                                             } else {
-                                                phi_1376_ = false;
+                                                phi_1701_ = false;
                                             }
-                                            let _e957 = phi_1376_;
-                                            phi_1377_ = _e957;
+                                            let _e1283 = phi_1701_;
+                                            phi_1702_ = _e1283;
                                         }
-                                        let _e959 = phi_1377_;
-                                        phi_1378_ = _e959;
+                                        let _e1285 = phi_1702_;
+                                        phi_1703_ = _e1285;
                                     }
-                                    let _e961 = phi_1378_;
-                                    if _e961 {
-                                        phi_1386_ = select(_e948, 0x1.fffffep+127f, _e504);
+                                    let _e1287 = phi_1703_;
+                                    if _e1287 {
+                                        phi_1711_ = select(_e1274, 0x1.fffffep+127f, _e817);
                                     } else {
-                                        phi_1386_ = _e948;
+                                        phi_1711_ = _e1274;
                                     }
-                                    let _e964 = phi_1386_;
-                                    if (_e503 != 0u) {
-                                        if _e961 {
-                                            phi_1423_ = true;
+                                    let _e1290 = phi_1711_;
+                                    if (_e816 != 0u) {
+                                        if _e1287 {
+                                            phi_1748_ = true;
                                         } else {
-                                            if _e532 {
-                                                let _e966 = (0.1f * _e494.member_1.member_2);
-                                                if (_e549 != _e549) {
-                                                    phi_1860_ = true;
+                                            if _e858 {
+                                                let _e1292 = (0.1f * _e807.member_1.member_2);
+                                                if (_e875 != _e875) {
+                                                    phi_2194_ = true;
                                                 } else {
-                                                    phi_1860_ = (_e966 >= _e549);
+                                                    phi_2194_ = (_e1292 >= _e875);
                                                 }
-                                                let _e970 = phi_1860_;
-                                                phi_1411_ = select(_e549, _e966, _e970);
+                                                let _e1296 = phi_2194_;
+                                                phi_1736_ = select(_e875, _e1292, _e1296);
                                             } else {
-                                                let _e977 = frame.member[0u].member_1.member.member_3;
-                                                phi_1411_ = ((1f + _e977) * _e494.member_1.member_2);
+                                                let _e1303 = frame.member[0u].member_1.member.member_3;
+                                                phi_1736_ = ((1f + _e1303) * _e807.member_1.member_2);
                                             }
-                                            let _e981 = phi_1411_;
-                                            if (_e964 > _e981) {
-                                                let _e987 = frame.member[0u].member_1.member_3;
-                                                phi_1419_ = (_e672 > _e987);
+                                            let _e1307 = phi_1736_;
+                                            if (_e1290 > _e1307) {
+                                                let _e1313 = frame.member[0u].member_1.member_3;
+                                                phi_1744_ = (_e998 > _e1313);
                                             } else {
-                                                phi_1419_ = false;
+                                                phi_1744_ = false;
                                             }
-                                            let _e990 = phi_1419_;
-                                            phi_1423_ = _e990;
+                                            let _e1316 = phi_1744_;
+                                            phi_1748_ = _e1316;
                                         }
-                                        let _e992 = phi_1423_;
-                                        if _e992 {
-                                            if _e504 {
-                                                let _e1002 = frame.member[0u].member_1.member_5[0u];
-                                                let _e1008 = frame.member[0u].member_1.member_5[1u];
-                                                let _e1015 = frame.member[0u].member_1.member_4;
-                                                let _e1016 = f32(_e1015);
-                                                let _e1017 = (2u * _e1015);
-                                                let _e1018 = (_e1002 + _e1017);
-                                                let _e1024 = (floor((_e605 * f32(_e1002))) + _e1016);
-                                                let _e1025 = f32((_e1018 - 1u));
-                                                if (_e1024 > 0f) {
-                                                    phi_1473_ = select(_e1025, _e1024, (_e1024 < _e1025));
+                                        let _e1318 = phi_1748_;
+                                        if _e1318 {
+                                            if _e817 {
+                                                let _e1328 = frame.member[0u].member_1.member_5[0u];
+                                                let _e1334 = frame.member[0u].member_1.member_5[1u];
+                                                let _e1341 = frame.member[0u].member_1.member_4;
+                                                let _e1342 = f32(_e1341);
+                                                let _e1343 = (2u * _e1341);
+                                                let _e1344 = (_e1328 + _e1343);
+                                                let _e1350 = (floor((_e931 * f32(_e1328))) + _e1342);
+                                                let _e1351 = f32((_e1344 - 1u));
+                                                if (_e1350 > 0f) {
+                                                    phi_1798_ = select(_e1351, _e1350, (_e1350 < _e1351));
                                                 } else {
-                                                    phi_1473_ = 0f;
+                                                    phi_1798_ = 0f;
                                                 }
-                                                let _e1030 = phi_1473_;
-                                                let _e1033 = (floor((_e616 * f32(_e1008))) + _e1016);
-                                                let _e1034 = f32(((_e1008 + _e1017) - 1u));
-                                                if (_e1033 > 0f) {
-                                                    phi_1487_ = select(_e1034, _e1033, (_e1033 < _e1034));
+                                                let _e1356 = phi_1798_;
+                                                let _e1359 = (floor((_e942 * f32(_e1334))) + _e1342);
+                                                let _e1360 = f32(((_e1334 + _e1343) - 1u));
+                                                if (_e1359 > 0f) {
+                                                    phi_1812_ = select(_e1360, _e1359, (_e1359 < _e1360));
                                                 } else {
-                                                    phi_1487_ = 0f;
+                                                    phi_1812_ = 0f;
                                                 }
-                                                let _e1039 = phi_1487_;
-                                                let _e1051 = ((select(select(u32(_e1039), 0u, (_e1039 < 0f)), 4294967295u, (_e1039 > 4294967000f)) * _e1018) + select(select(u32(_e1030), 0u, (_e1030 < 0f)), 4294967295u, (_e1030 > 4294967000f)));
-                                                let _e1056 = frame.member[0u].member_1.member_2;
-                                                if (_e1056 == 0u) {
-                                                    if (_e1051 < _e188) {
+                                                let _e1365 = phi_1812_;
+                                                let _e1377 = ((select(select(u32(_e1365), 0u, (_e1365 < 0f)), 4294967295u, (_e1365 > 4294967000f)) * _e1344) + select(select(u32(_e1356), 0u, (_e1356 < 0f)), 4294967295u, (_e1356 > 4294967000f)));
+                                                let _e1382 = frame.member[0u].member_1.member_2;
+                                                if (_e1382 == 0u) {
+                                                    if (_e1377 < _e501) {
                                                     } else {
-                                                        phi_1895_ = true;
+                                                        phi_2229_ = true;
                                                         break;
                                                     }
-                                                    let _e1061 = atomicMax((&ray_max.member[_e1051]), 1u);
+                                                    let _e1387 = atomicMax((&ray_max.member[_e1377]), 1u);
                                                 } else {
-                                                    if _e532 {
-                                                        if (_e964 != _e964) {
-                                                            phi_1875_ = true;
+                                                    if _e858 {
+                                                        if (_e1290 != _e1290) {
+                                                            phi_2209_ = true;
                                                         } else {
-                                                            phi_1875_ = (_e549 <= _e964);
+                                                            phi_2209_ = (_e875 <= _e1290);
                                                         }
-                                                        let _e1065 = phi_1875_;
-                                                        phi_1544_ = select(_e964, _e549, _e1065);
+                                                        let _e1391 = phi_2209_;
+                                                        phi_1869_ = select(_e1290, _e875, _e1391);
                                                     } else {
-                                                        let _e1072 = frame.member[0u].member_1.member.member_3;
-                                                        let _e1075 = (((1f + _e1072) * _e494.member_1.member_2) + _e549);
-                                                        if (_e964 != _e964) {
-                                                            phi_1890_ = true;
+                                                        let _e1398 = frame.member[0u].member_1.member.member_3;
+                                                        let _e1401 = (((1f + _e1398) * _e807.member_1.member_2) + _e875);
+                                                        if (_e1290 != _e1290) {
+                                                            phi_2224_ = true;
                                                         } else {
-                                                            phi_1890_ = (_e1075 <= _e964);
+                                                            phi_2224_ = (_e1401 <= _e1290);
                                                         }
-                                                        let _e1079 = phi_1890_;
-                                                        phi_1544_ = select(_e964, _e1075, _e1079);
+                                                        let _e1405 = phi_2224_;
+                                                        phi_1869_ = select(_e1290, _e1401, _e1405);
                                                     }
-                                                    let _e1082 = phi_1544_;
-                                                    let _e1083 = (_e515 - _e1082);
-                                                    if (_e1083 > 0f) {
-                                                        phi_1551_ = bitcast<u32>(_e1083);
+                                                    let _e1408 = phi_1869_;
+                                                    let _e1409 = (_e828 - _e1408);
+                                                    if (_e1409 > 0f) {
+                                                        phi_1876_ = bitcast<u32>(_e1409);
                                                     } else {
-                                                        phi_1551_ = 0u;
+                                                        phi_1876_ = 0u;
                                                     }
-                                                    let _e1087 = phi_1551_;
-                                                    if (_e1051 < arrayLength((&ray_min.member))) {
+                                                    let _e1413 = phi_1876_;
+                                                    if (_e1377 < arrayLength((&ray_min.member))) {
                                                     } else {
-                                                        phi_1895_ = true;
+                                                        phi_2229_ = true;
                                                         break;
                                                     }
-                                                    let _e1091 = atomicMin((&ray_min.member[_e1051]), _e1087);
-                                                    let _e1092 = (_e515 - _e570);
-                                                    if (_e1092 > 0f) {
-                                                        phi_1566_ = bitcast<u32>(_e1092);
+                                                    let _e1417 = atomicMin((&ray_min.member[_e1377]), _e1413);
+                                                    let _e1418 = (_e828 - _e896);
+                                                    if (_e1418 > 0f) {
+                                                        phi_1891_ = bitcast<u32>(_e1418);
                                                     } else {
-                                                        phi_1566_ = 0u;
+                                                        phi_1891_ = 0u;
                                                     }
-                                                    let _e1096 = phi_1566_;
-                                                    if (_e1051 < _e188) {
+                                                    let _e1422 = phi_1891_;
+                                                    if (_e1377 < _e501) {
                                                     } else {
-                                                        phi_1895_ = true;
+                                                        phi_2229_ = true;
                                                         break;
                                                     }
-                                                    let _e1100 = atomicMax((&ray_max.member[_e1051]), _e1096);
+                                                    let _e1426 = atomicMax((&ray_max.member[_e1377]), _e1422);
                                                 }
                                             }
-                                            phi_1574_ = (_e519 | (1u << bitcast<u32>((_e517 & 31u))));
+                                            phi_1899_ = (_e842 | (1u << bitcast<u32>((_e840 & 31u))));
                                         } else {
-                                            phi_1574_ = _e519;
+                                            phi_1899_ = _e842;
                                         }
-                                        let _e1102 = phi_1574_;
-                                        phi_1575_ = _e1102;
+                                        let _e1428 = phi_1899_;
+                                        phi_1900_ = _e1428;
                                     } else {
-                                        phi_1575_ = _e519;
+                                        phi_1900_ = _e842;
                                     }
-                                    let _e1104 = phi_1575_;
-                                    phi_1576_ = _e1104;
-                                    phi_1577_ = (_e521 + _e946);
+                                    let _e1430 = phi_1900_;
+                                    phi_1901_ = _e1430;
+                                    phi_1902_ = (_e844 + _e1272);
                                 }
-                                let _e1106 = phi_1576_;
-                                let _e1108 = phi_1577_;
-                                phi_1578_ = _e1106;
-                                phi_1579_ = _e1108;
+                                let _e1432 = phi_1901_;
+                                let _e1434 = phi_1902_;
+                                phi_1903_ = _e1432;
+                                phi_1904_ = _e1434;
                             } else {
-                                phi_1578_ = _e519;
-                                phi_1579_ = _e521;
+                                phi_1903_ = _e842;
+                                phi_1904_ = _e844;
                             }
-                            let _e1110 = phi_1578_;
-                            let _e1112 = phi_1579_;
-                            phi_663_ = (_e517 + 1u);
-                            phi_666_ = _e1110;
-                            phi_668_ = _e1112;
+                            let _e1436 = phi_1903_;
+                            let _e1438 = phi_1904_;
+                            phi_986_ = (_e840 + 1u);
+                            phi_989_ = _e1436;
+                            phi_991_ = _e1438;
                         } else {
-                            phi_663_ = u32();
-                            phi_666_ = u32();
-                            phi_668_ = f32();
+                            phi_986_ = u32();
+                            phi_989_ = u32();
+                            phi_991_ = f32();
                         }
-                        let _e1115 = phi_663_;
-                        let _e1117 = phi_666_;
-                        let _e1119 = phi_668_;
+                        let _e1441 = phi_986_;
+                        let _e1443 = phi_989_;
+                        let _e1445 = phi_991_;
                         continue;
                         continuing {
-                            phi_662_ = _e1115;
-                            phi_665_ = _e1117;
-                            phi_667_ = _e1119;
-                            phi_1895_ = false;
-                            break if !(_e522);
+                            phi_985_ = _e1441;
+                            phi_988_ = _e1443;
+                            phi_990_ = _e1445;
+                            phi_2229_ = false;
+                            break if !(_e845);
                         }
                     }
-                    let _e1122 = phi_1895_;
-                    if _e1122 {
+                    let _e1448 = phi_2229_;
+                    if _e1448 {
                         break;
                     }
-                    let _e1127 = frame.member[0u].member_1.member_10;
-                    let _e1128 = (_e1127 == 1u);
-                    let _e1132 = local_7;
-                    let _e1133 = ((select(2f, 1f, _e1128) * 0.125f) * _e1132);
-                    let _e1135 = local_8;
-                    if (_e1135 == 0u) {
-                        if _e1128 {
-                            phi_1603_ = (1f - (2f * _e1133));
+                    let _e1453 = frame.member[0u].member_1.member_10;
+                    let _e1454 = (_e1453 == 1u);
+                    let _e1459 = local_7;
+                    let _e1460 = ((select(2f, 1f, _e1454) / f32(_e838)) * _e1459);
+                    let _e1462 = local_8;
+                    if (_e1462 == 0u) {
+                        if _e1454 {
+                            phi_1937_ = (1f - (2f * _e1460));
                         } else {
-                            phi_1603_ = _e1133;
+                            phi_1937_ = _e1460;
                         }
-                        let _e1140 = phi_1603_;
-                        if (_e1140 > 0f) {
-                            phi_1613_ = select(1f, _e1140, (_e1140 < 1f));
+                        let _e1467 = phi_1937_;
+                        if (_e1467 > 0f) {
+                            phi_1947_ = select(1f, _e1467, (_e1467 < 1f));
                         } else {
-                            phi_1613_ = 0f;
+                            phi_1947_ = 0f;
                         }
-                        let _e1145 = phi_1613_;
-                        let _e1151 = frame.member[0u].member_1.member.member_2;
-                        let _e1154 = local_9;
-                        phi_1632_ = type_41(pow(_e1145, _e1151), _e1154);
+                        let _e1472 = phi_1947_;
+                        let _e1478 = frame.member[0u].member_1.member.member_2;
+                        let _e1481 = local_9;
+                        phi_1966_ = type_41(pow(_e1472, _e1478), _e1481);
                     } else {
-                        if (_e1133 > 0f) {
-                            phi_1627_ = select(1f, _e1133, (_e1133 < 1f));
+                        if (_e1460 > 0f) {
+                            phi_1961_ = select(1f, _e1460, (_e1460 < 1f));
                         } else {
-                            phi_1627_ = 0f;
+                            phi_1961_ = 0f;
                         }
-                        let _e1160 = phi_1627_;
-                        let _e1165 = local_10;
-                        phi_1632_ = type_41((round((_e1160 * 255f)) * 0.003921569f), _e1165);
+                        let _e1487 = phi_1961_;
+                        let _e1492 = local_10;
+                        phi_1966_ = type_41((round((_e1487 * 255f)) * 0.003921569f), _e1492);
                     }
-                    let _e1168 = phi_1632_;
-                    phi_1634_ = _e1168;
+                    let _e1495 = phi_1966_;
+                    phi_1968_ = _e1495;
                 } else {
-                    phi_1634_ = type_41(1f, 0u);
+                    phi_1968_ = type_41(1f, 0u);
                 }
-                let _e1170 = phi_1634_;
-                if (_e266 < arrayLength((&ao.member))) {
-                } else {
-                    break;
-                }
-                ao.member[_e266] = _e1170.member;
-                if (_e266 < arrayLength((&mask.member))) {
+                let _e1497 = phi_1968_;
+                if (_e579 < arrayLength((&ao.member))) {
                 } else {
                     break;
                 }
-                mask.member[_e266] = _e1170.member_1;
+                ao.member[_e579] = _e1497.member;
+                if (_e579 < arrayLength((&mask.member))) {
+                } else {
+                    break;
+                }
+                mask.member[_e579] = _e1497.member_1;
             }
             break;
         }

@@ -57,378 +57,379 @@ var<storage> normals: type_13;
 var<storage, read_write> ao: type_10;
 
 fn function_() {
-    var local: array<array<f32, 2>, 8>;
-    var local_1: array<f32, 8>;
-    var local_2: array<f32, 8>;
+    var local: array<array<f32, 2>, 56>;
+    var local_1: array<f32, 56>;
+    var local_2: array<f32, 56>;
     var local_3: array<array<array<f32, 2>, 4>, 4>;
-    var phi_269_: bool;
-    var phi_271_: bool;
-    var phi_272_: bool;
-    var phi_273_: bool;
-    var phi_274_: bool;
-    var phi_332_: bool;
-    var phi_362_: f32;
-    var phi_1049_: bool;
-    var phi_1064_: bool;
-    var phi_437_: vec2<f32>;
-    var phi_464_: vec3<f32>;
-    var phi_1079_: bool;
-    var phi_576_: type_32;
-    var phi_577_: type_32;
-    var phi_579_: type_32;
-    var phi_580_: type_32;
-    var phi_581_: bool;
-    var phi_585_: type_32;
-    var phi_594_: u32;
-    var phi_597_: f32;
-    var phi_691_: f32;
-    var phi_784_: f32;
-    var phi_797_: f32;
-    var phi_848_: bool;
-    var phi_895_: bool;
-    var phi_1094_: bool;
-    var phi_1109_: bool;
-    var phi_969_: f32;
-    var phi_976_: f32;
-    var phi_978_: f32;
-    var phi_595_: u32;
-    var phi_598_: f32;
-    var phi_1114_: bool;
+    var phi_582_: bool;
+    var phi_584_: bool;
+    var phi_585_: bool;
+    var phi_586_: bool;
+    var phi_587_: bool;
+    var phi_645_: bool;
+    var phi_675_: f32;
+    var phi_1364_: bool;
+    var phi_1379_: bool;
+    var phi_750_: vec2<f32>;
+    var phi_777_: vec3<f32>;
+    var phi_1394_: bool;
+    var phi_889_: type_32;
+    var phi_890_: type_32;
+    var phi_892_: type_32;
+    var phi_893_: type_32;
+    var phi_894_: bool;
+    var phi_898_: type_32;
+    var phi_907_: u32;
+    var phi_910_: f32;
+    var phi_1006_: f32;
+    var phi_1099_: f32;
+    var phi_1112_: f32;
+    var phi_1163_: bool;
+    var phi_1210_: bool;
+    var phi_1409_: bool;
+    var phi_1424_: bool;
+    var phi_1284_: f32;
+    var phi_1291_: f32;
+    var phi_1293_: f32;
+    var phi_908_: u32;
+    var phi_911_: f32;
+    var phi_1429_: bool;
     var local_4: f32;
-    var phi_992_: f32;
-    var phi_996_: f32;
+    var phi_1307_: f32;
+    var phi_1311_: f32;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e129 = id_1;
-            let _e132 = arrayLength((&depth.member));
-            let _e143 = params.member.member.member_4;
-            let _e144 = (_e129.x + _e143);
-            let _e145 = (_e129.y + _e143);
-            let _e150 = params.member.member.member[0u];
-            let _e155 = select(select(u32(_e150), 0u, (_e150 < 0f)), 4294967295u, (_e150 > 4294967000f));
-            let _e160 = params.member.member.member[1u];
-            let _e165 = select(select(u32(_e160), 0u, (_e160 < 0f)), 4294967295u, (_e160 > 4294967000f));
-            if (_e144 >= _e143) {
-                if (_e145 >= _e143) {
-                    let _e169 = ((_e144 + _e143) < _e155);
-                    if _e169 {
-                        phi_269_ = ((_e145 + _e143) < _e165);
+            let _e298 = id_1;
+            let _e301 = arrayLength((&depth.member));
+            let _e312 = params.member.member.member_4;
+            let _e313 = (_e298.x + _e312);
+            let _e314 = (_e298.y + _e312);
+            let _e319 = params.member.member.member[0u];
+            let _e324 = select(select(u32(_e319), 0u, (_e319 < 0f)), 4294967295u, (_e319 > 4294967000f));
+            let _e329 = params.member.member.member[1u];
+            let _e334 = select(select(u32(_e329), 0u, (_e329 < 0f)), 4294967295u, (_e329 > 4294967000f));
+            if (_e313 >= _e312) {
+                if (_e314 >= _e312) {
+                    let _e338 = ((_e313 + _e312) < _e324);
+                    if _e338 {
+                        phi_582_ = ((_e314 + _e312) < _e334);
                     } else {
-                        phi_269_ = bool();
+                        phi_582_ = bool();
                     }
-                    let _e173 = phi_269_;
-                    phi_271_ = _e173;
-                    phi_272_ = select(true, false, _e169);
+                    let _e342 = phi_582_;
+                    phi_584_ = _e342;
+                    phi_585_ = select(true, false, _e338);
                 } else {
-                    phi_271_ = bool();
-                    phi_272_ = true;
+                    phi_584_ = bool();
+                    phi_585_ = true;
                 }
-                let _e176 = phi_271_;
-                let _e178 = phi_272_;
-                phi_273_ = _e176;
-                phi_274_ = _e178;
+                let _e345 = phi_584_;
+                let _e347 = phi_585_;
+                phi_586_ = _e345;
+                phi_587_ = _e347;
             } else {
-                phi_273_ = bool();
-                phi_274_ = true;
+                phi_586_ = bool();
+                phi_587_ = true;
             }
-            let _e180 = phi_273_;
-            let _e182 = phi_274_;
-            if select(_e180, false, _e182) {
-                let _e186 = params.member.member_1;
-                let _e189 = params.member.member_4;
-                let _e194 = ((f32(_e144) + 0.5f) / _e150);
-                let _e195 = ((f32(_e145) + 0.5f) / _e160);
-                let _e197 = ((_e145 * _e155) + _e144);
-                if (_e197 < _e132) {
+            let _e349 = phi_586_;
+            let _e351 = phi_587_;
+            if select(_e349, false, _e351) {
+                let _e355 = params.member.member_1;
+                let _e358 = params.member.member_4;
+                let _e363 = ((f32(_e313) + 0.5f) / _e319);
+                let _e364 = ((f32(_e314) + 0.5f) / _e329);
+                let _e366 = ((_e314 * _e324) + _e313);
+                if (_e366 < _e301) {
                 } else {
                     break;
                 }
-                let _e200 = depth.member[_e197];
-                let _e204 = params.member.member.member_3;
-                if (_e200 > 0f) {
-                    phi_332_ = (_e200 < _e204);
+                let _e369 = depth.member[_e366];
+                let _e373 = params.member.member.member_3;
+                if (_e369 > 0f) {
+                    phi_645_ = (_e369 < _e373);
                 } else {
-                    phi_332_ = false;
+                    phi_645_ = false;
                 }
-                let _e208 = phi_332_;
-                if _e208 {
-                    let _e216 = params.member.member.member_1[0u];
-                    let _e221 = params.member.member.member_1[1u];
-                    let _e231 = (0.5f * (((_e186 * _e150) / ((2f * _e216) * _e200)) + ((_e186 * _e160) / ((2f * _e221) * _e200))));
-                    let _e232 = (_e231 > _e189);
-                    if _e232 {
-                        phi_362_ = ((_e186 * _e189) / _e231);
+                let _e377 = phi_645_;
+                if _e377 {
+                    let _e385 = params.member.member.member_1[0u];
+                    let _e390 = params.member.member.member_1[1u];
+                    let _e400 = (0.5f * (((_e355 * _e319) / ((2f * _e385) * _e369)) + ((_e355 * _e329) / ((2f * _e390) * _e369))));
+                    let _e401 = (_e400 > _e358);
+                    if _e401 {
+                        phi_675_ = ((_e355 * _e358) / _e400);
                     } else {
-                        phi_362_ = _e186;
+                        phi_675_ = _e355;
                     }
-                    let _e236 = phi_362_;
-                    let _e237 = select(_e231, _e189, _e232);
-                    let _e238 = (_e237 < 0.5f);
-                    if _e238 {
-                        phi_576_ = type_32(0u, type_32().member_1);
-                        phi_577_ = type_32();
+                    let _e405 = phi_675_;
+                    let _e406 = select(_e400, _e358, _e401);
+                    let _e407 = (_e406 < 0.5f);
+                    if _e407 {
+                        phi_889_ = type_32(0u, type_32().member_1);
+                        phi_890_ = type_32();
                     } else {
-                        let _e244 = ((((2f * _e194) - 1f) * _e200) * _e216);
-                        let _e246 = (((1f - (2f * _e195)) * _e200) * _e221);
-                        let _e247 = -(_e200);
-                        if (_e197 < arrayLength((&normals.member))) {
+                        let _e413 = ((((2f * _e363) - 1f) * _e369) * _e385);
+                        let _e415 = (((1f - (2f * _e364)) * _e369) * _e390);
+                        let _e416 = -(_e369);
+                        if (_e366 < arrayLength((&normals.member))) {
                         } else {
                             break;
                         }
-                        let _e251 = normals.member[_e197];
-                        let _e259 = (f32((bitcast<i32>(((_e251 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e259 != _e259) {
-                            phi_1049_ = true;
+                        let _e420 = normals.member[_e366];
+                        let _e428 = (f32((bitcast<i32>(((_e420 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e428 != _e428) {
+                            phi_1364_ = true;
                         } else {
-                            phi_1049_ = (-1f >= _e259);
+                            phi_1364_ = (-1f >= _e428);
                         }
-                        let _e263 = phi_1049_;
-                        let _e264 = select(_e259, -1f, _e263);
-                        let _e274 = (f32((bitcast<i32>((((_e251 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e274 != _e274) {
-                            phi_1064_ = true;
+                        let _e432 = phi_1364_;
+                        let _e433 = select(_e428, -1f, _e432);
+                        let _e443 = (f32((bitcast<i32>((((_e420 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e443 != _e443) {
+                            phi_1379_ = true;
                         } else {
-                            phi_1064_ = (-1f >= _e274);
+                            phi_1379_ = (-1f >= _e443);
                         }
-                        let _e278 = phi_1064_;
-                        let _e279 = select(_e274, -1f, _e278);
-                        let _e282 = (1f - abs(_e264));
-                        let _e283 = abs(_e279);
-                        let _e284 = (_e282 - _e283);
-                        if (_e284 < 0f) {
-                            phi_437_ = vec2<f32>(((1f - _e283) * select(1f, -1f, (_e264 < 0f))), (_e282 * select(1f, -1f, (_e279 < 0f))));
+                        let _e447 = phi_1379_;
+                        let _e448 = select(_e443, -1f, _e447);
+                        let _e451 = (1f - abs(_e433));
+                        let _e452 = abs(_e448);
+                        let _e453 = (_e451 - _e452);
+                        if (_e453 < 0f) {
+                            phi_750_ = vec2<f32>(((1f - _e452) * select(1f, -1f, (_e433 < 0f))), (_e451 * select(1f, -1f, (_e448 < 0f))));
                         } else {
-                            phi_437_ = vec2<f32>(_e264, _e279);
+                            phi_750_ = vec2<f32>(_e433, _e448);
                         }
-                        let _e295 = phi_437_;
-                        let _e304 = (1f / sqrt((((_e295.x * _e295.x) + (_e295.y * _e295.y)) + (_e284 * _e284))));
-                        let _e305 = (_e295.x * _e304);
-                        let _e306 = (_e295.y * _e304);
-                        let _e307 = (_e284 * _e304);
-                        if ((((_e244 * _e305) + (_e246 * _e306)) + (_e247 * _e307)) > 0f) {
-                            phi_464_ = vec3<f32>(-(_e305), -(_e306), -(_e307));
+                        let _e464 = phi_750_;
+                        let _e473 = (1f / sqrt((((_e464.x * _e464.x) + (_e464.y * _e464.y)) + (_e453 * _e453))));
+                        let _e474 = (_e464.x * _e473);
+                        let _e475 = (_e464.y * _e473);
+                        let _e476 = (_e453 * _e473);
+                        if ((((_e413 * _e474) + (_e415 * _e475)) + (_e416 * _e476)) > 0f) {
+                            phi_777_ = vec3<f32>(-(_e474), -(_e475), -(_e476));
                         } else {
-                            phi_464_ = vec3<f32>(_e305, _e306, _e307);
+                            phi_777_ = vec3<f32>(_e474, _e475, _e476);
                         }
-                        let _e320 = phi_464_;
+                        let _e489 = phi_777_;
                         local_3 = array<array<array<f32, 2>, 4>, 4>(array<array<f32, 2>, 4>(array<f32, 2>(0f, 1f), array<f32, 2>(0.012909942f, -0.9999167f), array<f32, 2>(0.69159436f, 0.7222861f), array<f32, 2>(-0.7000154f, -0.7141277f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.99997514f, -0.0070477454f), array<f32, 2>(0.9998238f, 0.018771695f), array<f32, 2>(-0.7100116f, 0.70418996f), array<f32, 2>(0.7182193f, -0.6958169f)), array<array<f32, 2>, 4>(array<f32, 2>(0.91594595f, 0.40130165f), array<f32, 2>(-0.92058814f, -0.39053485f), array<f32, 2>(0.36117664f, 0.93249744f), array<f32, 2>(-0.3720851f, -0.92819864f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.38513124f, 0.9228618f), array<f32, 2>(0.39592505f, -0.9182828f), array<f32, 2>(-0.9260013f, 0.37752023f), array<f32, 2>(0.930364f, -0.36663717f)));
-                        let _e321 = (_e145 % 4u);
-                        if (_e321 < 4u) {
+                        let _e490 = (_e314 % 4u);
+                        if (_e490 < 4u) {
                         } else {
                             break;
                         }
-                        let _e323 = (_e144 % 4u);
-                        if (_e323 < 4u) {
+                        let _e492 = (_e313 % 4u);
+                        if (_e492 < 4u) {
                         } else {
                             break;
                         }
-                        let _e327 = local_3[_e321][_e323];
-                        let _e337 = sqrt((((_e244 * _e244) + (_e246 * _e246)) + (_e247 * _e247)));
-                        let _e338 = (-(_e244) / _e337);
-                        let _e339 = (-(_e246) / _e337);
-                        let _e340 = (_e200 / _e337);
-                        let _e343 = -((_e327[1] * _e340));
-                        let _e344 = (_e340 * _e327[0]);
-                        let _e347 = ((_e338 * _e327[1]) - (_e327[0] * _e339));
-                        let _e354 = (1f / sqrt((((_e343 * _e343) + (_e344 * _e344)) + (_e347 * _e347))));
-                        let _e355 = (_e343 * _e354);
-                        let _e356 = (_e344 * _e354);
-                        let _e357 = (_e347 * _e354);
-                        let _e361 = ((_e356 * _e340) - (_e339 * _e357));
-                        let _e364 = ((_e357 * _e338) - (_e340 * _e355));
-                        let _e367 = ((_e355 * _e339) - (_e338 * _e356));
-                        let _e386 = (((_e320.x * _e338) + (_e320.y * _e339)) + (_e320.z * _e340));
-                        let _e390 = abs(_e386);
-                        if (_e390 != _e390) {
-                            phi_1079_ = true;
+                        let _e496 = local_3[_e490][_e492];
+                        let _e506 = sqrt((((_e413 * _e413) + (_e415 * _e415)) + (_e416 * _e416)));
+                        let _e507 = (-(_e413) / _e506);
+                        let _e508 = (-(_e415) / _e506);
+                        let _e509 = (_e369 / _e506);
+                        let _e512 = -((_e496[1] * _e509));
+                        let _e513 = (_e509 * _e496[0]);
+                        let _e516 = ((_e507 * _e496[1]) - (_e496[0] * _e508));
+                        let _e523 = (1f / sqrt((((_e512 * _e512) + (_e513 * _e513)) + (_e516 * _e516))));
+                        let _e524 = (_e512 * _e523);
+                        let _e525 = (_e513 * _e523);
+                        let _e526 = (_e516 * _e523);
+                        let _e530 = ((_e525 * _e509) - (_e508 * _e526));
+                        let _e533 = ((_e526 * _e507) - (_e509 * _e524));
+                        let _e536 = ((_e524 * _e508) - (_e507 * _e525));
+                        let _e555 = (((_e489.x * _e507) + (_e489.y * _e508)) + (_e489.z * _e509));
+                        let _e559 = abs(_e555);
+                        if (_e559 != _e559) {
+                            phi_1394_ = true;
                         } else {
-                            phi_1079_ = (0.0001f >= _e390);
+                            phi_1394_ = (0.0001f >= _e559);
                         }
-                        let _e394 = phi_1079_;
-                        phi_576_ = type_32();
-                        phi_577_ = type_32(1u, type_31(vec2<u32>(_e144, _e145), vec2<f32>(_e194, _e195), _e236, _e237, vec3<f32>(_e244, _e246, _e247), _e320, vec3<f32>(_e338, _e339, _e340), vec3<f32>(_e361, _e364, _e367), vec3<f32>(_e355, _e356, _e357), vec3<f32>((((_e320.x * _e361) + (_e320.y * _e364)) + (_e320.z * _e367)), (((_e320.x * _e355) + (_e320.y * _e356)) + (_e320.z * _e357)), _e386), (1f / (select(1f, -1f, (_e386 < 0f)) * select(_e390, 0.0001f, _e394)))));
+                        let _e563 = phi_1394_;
+                        phi_889_ = type_32();
+                        phi_890_ = type_32(1u, type_31(vec2<u32>(_e313, _e314), vec2<f32>(_e363, _e364), _e405, _e406, vec3<f32>(_e413, _e415, _e416), _e489, vec3<f32>(_e507, _e508, _e509), vec3<f32>(_e530, _e533, _e536), vec3<f32>(_e524, _e525, _e526), vec3<f32>((((_e489.x * _e530) + (_e489.y * _e533)) + (_e489.z * _e536)), (((_e489.x * _e524) + (_e489.y * _e525)) + (_e489.z * _e526)), _e555), (1f / (select(1f, -1f, (_e555 < 0f)) * select(_e559, 0.0001f, _e563)))));
                     }
-                    let _e406 = phi_576_;
-                    let _e408 = phi_577_;
-                    phi_579_ = _e406;
-                    phi_580_ = _e408;
-                    phi_581_ = _e238;
+                    let _e575 = phi_889_;
+                    let _e577 = phi_890_;
+                    phi_892_ = _e575;
+                    phi_893_ = _e577;
+                    phi_894_ = _e407;
                 } else {
-                    phi_579_ = type_32(0u, type_32().member_1);
-                    phi_580_ = type_32();
-                    phi_581_ = true;
+                    phi_892_ = type_32(0u, type_32().member_1);
+                    phi_893_ = type_32();
+                    phi_894_ = true;
                 }
-                let _e410 = phi_579_;
-                let _e412 = phi_580_;
-                let _e414 = phi_581_;
-                if _e414 {
-                    phi_585_ = _e410;
+                let _e579 = phi_892_;
+                let _e581 = phi_893_;
+                let _e583 = phi_894_;
+                if _e583 {
+                    phi_898_ = _e579;
                 } else {
-                    phi_585_ = _e412;
+                    phi_898_ = _e581;
                 }
-                let _e416 = phi_585_;
-                if (bitcast<i32>(_e416.member) != 0i) {
-                    phi_594_ = 0u;
-                    phi_597_ = 0f;
+                let _e585 = phi_898_;
+                if (bitcast<i32>(_e585.member) != 0i) {
+                    phi_907_ = 0u;
+                    phi_910_ = 0f;
                     loop {
-                        let _e422 = phi_594_;
-                        let _e424 = phi_597_;
-                        local_4 = _e424;
-                        let _e425 = (_e422 < 8u);
-                        if _e425 {
-                            local = array<array<f32, 2>, 8>(array<f32, 2>(0f, 1f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.7078398f, 0.70637304f));
-                            if _e425 {
+                        let _e591 = phi_907_;
+                        let _e593 = phi_910_;
+                        local_4 = _e593;
+                        let _e594 = (_e591 < 8u);
+                        if _e594 {
+                            local = array<array<f32, 2>, 56>(array<f32, 2>(0f, 1f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(0f, 1f), array<f32, 2>(0.382615f, 0.9239079f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.92379445f, 0.38288876f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.92402124f, -0.3823412f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.38316247f, -0.92368096f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.38206735f, -0.9241345f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.92356735f, -0.38343617f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.9242476f, 0.3817935f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(-0.38370985f, 0.9234537f), array<f32, 2>(0f, 1f), array<f32, 2>(0.195054f, 0.9807925f), array<f32, 2>(0.382615f, 0.9239079f), array<f32, 2>(0.55547786f, 0.83153135f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.8313667f, 0.5557242f), array<f32, 2>(0.92379445f, 0.38288876f), array<f32, 2>(0.98073465f, 0.19534461f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.9808503f, -0.19476335f), array<f32, 2>(0.92402124f, -0.3823412f), array<f32, 2>(0.8316959f, -0.5552314f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.55597055f, -0.831202f), array<f32, 2>(0.38316247f, -0.92368096f), array<f32, 2>(0.19563523f, -0.9806767f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.19447269f, -0.9809079f), array<f32, 2>(-0.38206735f, -0.9241345f), array<f32, 2>(-0.5549849f, -0.8318604f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.8310372f, -0.55621684f), array<f32, 2>(-0.92356735f, -0.38343617f), array<f32, 2>(-0.9806187f, -0.19592582f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.9809655f, 0.19418201f), array<f32, 2>(-0.9242476f, 0.3817935f), array<f32, 2>(-0.8320248f, 0.5547384f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(-0.55646306f, 0.83087236f), array<f32, 2>(-0.38370985f, 0.9234537f), array<f32, 2>(-0.19621639f, 0.9805606f));
+                            let _e595 = (_e591 < 56u);
+                            if _e595 {
                             } else {
-                                phi_1114_ = true;
+                                phi_1429_ = true;
                                 break;
                             }
-                            let _e427 = local[_e422];
-                            local_1 = array<f32, 8>(0.917883f, 0.564429f, 0.734504f, 0.359545f, 0.820004f, 0.470149f, 0.650919f, 0.205215f);
-                            if _e425 {
+                            let _e597 = local[_e591];
+                            local_1 = array<f32, 56>(0.917883f, 0.564429f, 0.734504f, 0.359545f, 0.820004f, 0.470149f, 0.650919f, 0.205215f, 0.9490982f, 0.5865639f, 0.7554682f, 0.38954395f, 0.84255606f, 0.4948004f, 0.6719197f, 0.252031f, 0.8908589f, 0.54182106f, 0.7136428f, 0.32724136f, 0.798092f, 0.44453403f, 0.6297374f, 0.14471826f, 0.96824586f, 0.5974803f, 0.7660169f, 0.40384725f, 0.8541535f, 0.5068159f, 0.6823727f, 0.27260765f, 0.90401816f, 0.55318946f, 0.72406566f, 0.34372202f, 0.80898184f, 0.45747337f, 0.6403549f, 0.17748062f, 0.9327351f, 0.57555f, 0.7449678f, 0.37479568f, 0.83118564f, 0.48258433f, 0.6614378f, 0.22975244f, 0.87823313f, 0.5303115f, 0.7032256f, 0.30999523f, 0.7873134f, 0.4313043f, 0.61905813f, 0.10219581f);
+                            if _e595 {
                             } else {
-                                phi_1114_ = true;
+                                phi_1429_ = true;
                                 break;
                             }
-                            let _e431 = local_1[_e422];
-                            let _e433 = (_e431 * _e416.member_1.member_2);
-                            let _e434 = (_e433 * _e427[0]);
-                            let _e435 = (_e433 * _e427[1]);
-                            local_2 = array<f32, 8>(0.39685115f, 0.82548165f, 0.67860436f, 0.93312776f, 0.57235783f, 0.8825871f, 0.75914717f, 0.9787169f);
-                            if _e425 {
+                            let _e601 = local_1[_e591];
+                            let _e603 = (_e601 * _e585.member_1.member_2);
+                            let _e604 = (_e603 * _e597[0]);
+                            let _e605 = (_e603 * _e597[1]);
+                            local_2 = array<f32, 56>(0.39685115f, 0.82548165f, 0.67860436f, 0.93312776f, 0.57235783f, 0.8825871f, 0.75914717f, 0.9787169f, 0.31498024f, 0.80990297f, 0.65518534f, 0.9210079f, 0.5386087f, 0.86900663f, 0.740624f, 0.96771914f, 0.45428014f, 0.84049386f, 0.7005098f, 0.9449408f, 0.6025356f, 0.89576197f, 0.7768081f, 0.9894729f, 0.2499999f, 0.8018836f, 0.6428204f, 0.91482645f, 0.52002096f, 0.8620543f, 0.7310045f, 0.9621253f, 0.42749405f, 0.8330555f, 0.68973106f, 0.9390714f, 0.58783364f, 0.88922334f, 0.76807916f, 0.9841243f, 0.3605624f, 0.8177666f, 0.6671004f, 0.92710745f, 0.555995f, 0.8758495f, 0.75f, 0.9732491f, 0.47823274f, 0.8478029f, 0.71096677f, 0.95073813f, 0.616553f, 0.90220654f, 0.78534514f, 0.9947643f);
+                            if _e595 {
                             } else {
-                                phi_1114_ = true;
+                                phi_1429_ = true;
                                 break;
                             }
-                            let _e437 = local_2[_e422];
-                            let _e438 = (_e437 * _e416.member_1.member_2);
-                            let _e448 = (-(((_e434 * _e416.member_1.member_9.x) + (_e435 * _e416.member_1.member_9.y))) * _e416.member_1.member_10);
-                            let _e449 = -(_e438);
-                            if (_e448 > _e449) {
-                                phi_691_ = select(_e438, _e448, (_e448 < _e438));
+                            let _e607 = local_2[_e591];
+                            let _e608 = (_e607 * _e585.member_1.member_2);
+                            let _e618 = (-(((_e604 * _e585.member_1.member_9.x) + (_e605 * _e585.member_1.member_9.y))) * _e585.member_1.member_10);
+                            let _e619 = -(_e608);
+                            if (_e618 > _e619) {
+                                phi_1006_ = select(_e608, _e618, (_e618 < _e608));
                             } else {
-                                phi_691_ = _e449;
+                                phi_1006_ = _e619;
                             }
-                            let _e454 = phi_691_;
-                            let _e455 = (_e438 - _e454);
-                            let _e482 = (-0.5f / ((_e416.member_1.member_4.z + (_e416.member_1.member_7.z * _e434)) + (_e416.member_1.member_8.z * _e435)));
-                            let _e488 = params.member.member.member_1[0u];
-                            let _e490 = (0.5f + ((((_e416.member_1.member_4.x + (_e416.member_1.member_7.x * _e434)) + (_e416.member_1.member_8.x * _e435)) * _e482) / _e488));
-                            let _e496 = params.member.member.member_1[1u];
-                            let _e498 = (0.5f - ((((_e416.member_1.member_4.y + (_e416.member_1.member_7.y * _e434)) + (_e416.member_1.member_8.y * _e435)) * _e482) / _e496));
-                            if (_e490 > 0f) {
-                                phi_784_ = select(1f, _e490, (_e490 < 1f));
+                            let _e624 = phi_1006_;
+                            let _e625 = (_e608 - _e624);
+                            let _e652 = (-0.5f / ((_e585.member_1.member_4.z + (_e585.member_1.member_7.z * _e604)) + (_e585.member_1.member_8.z * _e605)));
+                            let _e658 = params.member.member.member_1[0u];
+                            let _e660 = (0.5f + ((((_e585.member_1.member_4.x + (_e585.member_1.member_7.x * _e604)) + (_e585.member_1.member_8.x * _e605)) * _e652) / _e658));
+                            let _e666 = params.member.member.member_1[1u];
+                            let _e668 = (0.5f - ((((_e585.member_1.member_4.y + (_e585.member_1.member_7.y * _e604)) + (_e585.member_1.member_8.y * _e605)) * _e652) / _e666));
+                            if (_e660 > 0f) {
+                                phi_1099_ = select(1f, _e660, (_e660 < 1f));
                             } else {
-                                phi_784_ = 0f;
+                                phi_1099_ = 0f;
                             }
-                            let _e503 = phi_784_;
-                            let _e504 = (_e503 * _e150);
-                            if (_e498 > 0f) {
-                                phi_797_ = select(1f, _e498, (_e498 < 1f));
+                            let _e673 = phi_1099_;
+                            let _e674 = (_e673 * _e319);
+                            if (_e668 > 0f) {
+                                phi_1112_ = select(1f, _e668, (_e668 < 1f));
                             } else {
-                                phi_797_ = 0f;
+                                phi_1112_ = 0f;
                             }
-                            let _e509 = phi_797_;
-                            let _e510 = (_e509 * _e160);
-                            let _e515 = select(select(u32(_e504), 0u, (_e504 < 0f)), 4294967295u, (_e504 > 4294967000f));
-                            let _e516 = (_e155 - 1u);
-                            let _e518 = select(_e515, _e516, (_e516 < _e515));
-                            let _e523 = select(select(u32(_e510), 0u, (_e510 < 0f)), 4294967295u, (_e510 > 4294967000f));
-                            let _e524 = (_e165 - 1u);
-                            let _e526 = select(_e523, _e524, (_e524 < _e523));
-                            if (_e518 == _e416.member_1.member.x) {
-                                phi_848_ = (_e526 == _e416.member_1.member.y);
+                            let _e679 = phi_1112_;
+                            let _e680 = (_e679 * _e329);
+                            let _e685 = select(select(u32(_e674), 0u, (_e674 < 0f)), 4294967295u, (_e674 > 4294967000f));
+                            let _e686 = (_e324 - 1u);
+                            let _e688 = select(_e685, _e686, (_e686 < _e685));
+                            let _e693 = select(select(u32(_e680), 0u, (_e680 < 0f)), 4294967295u, (_e680 > 4294967000f));
+                            let _e694 = (_e334 - 1u);
+                            let _e696 = select(_e693, _e694, (_e694 < _e693));
+                            if (_e688 == _e585.member_1.member.x) {
+                                phi_1163_ = (_e696 == _e585.member_1.member.y);
                             } else {
-                                phi_848_ = false;
+                                phi_1163_ = false;
                             }
-                            let _e534 = phi_848_;
-                            if (_e455 > (0.2f * _e438)) {
-                                if _e534 {
-                                    phi_976_ = (_e455 / (2f * _e438));
+                            let _e704 = phi_1163_;
+                            if (_e625 > (0.2f * _e608)) {
+                                if _e704 {
+                                    phi_1291_ = (_e625 / (2f * _e608));
                                 } else {
-                                    let _e536 = ((_e526 * _e155) + _e518);
-                                    if (_e536 < _e132) {
+                                    let _e706 = ((_e696 * _e324) + _e688);
+                                    if (_e706 < _e301) {
                                     } else {
-                                        phi_1114_ = true;
+                                        phi_1429_ = true;
                                         break;
                                     }
-                                    let _e539 = depth.member[_e536];
-                                    if (_e539 > 0f) {
-                                        phi_895_ = (_e539 < _e204);
+                                    let _e709 = depth.member[_e706];
+                                    if (_e709 > 0f) {
+                                        phi_1210_ = (_e709 < _e373);
                                     } else {
-                                        phi_895_ = false;
+                                        phi_1210_ = false;
                                     }
-                                    let _e543 = phi_895_;
-                                    let _e544 = select(_e204, _e539, _e543);
-                                    let _e573 = ((((((((2f * ((f32(_e518) + 0.5f) * (1f / _e150))) - 1f) * _e544) * _e488) - _e416.member_1.member_4.x) * _e416.member_1.member_6.x) + (((((1f - (2f * ((f32(_e526) + 0.5f) * (1f / _e160)))) * _e544) * _e496) - _e416.member_1.member_4.y) * _e416.member_1.member_6.y)) + ((-(_e544) - _e416.member_1.member_4.z) * _e416.member_1.member_6.z));
-                                    let _e576 = params.member.member_3;
-                                    if (_e454 != _e454) {
-                                        phi_1094_ = true;
+                                    let _e713 = phi_1210_;
+                                    let _e714 = select(_e373, _e709, _e713);
+                                    let _e743 = ((((((((2f * ((f32(_e688) + 0.5f) * (1f / _e319))) - 1f) * _e714) * _e658) - _e585.member_1.member_4.x) * _e585.member_1.member_6.x) + (((((1f - (2f * ((f32(_e696) + 0.5f) * (1f / _e329)))) * _e714) * _e666) - _e585.member_1.member_4.y) * _e585.member_1.member_6.y)) + ((-(_e714) - _e585.member_1.member_4.z) * _e585.member_1.member_6.z));
+                                    let _e746 = params.member.member_3;
+                                    if (_e624 != _e624) {
+                                        phi_1409_ = true;
                                     } else {
-                                        phi_1094_ = (_e573 >= _e454);
+                                        phi_1409_ = (_e743 >= _e624);
                                     }
-                                    let _e581 = phi_1094_;
-                                    let _e583 = (_e438 - select(_e454, _e573, _e581));
-                                    if (_e583 != _e583) {
-                                        phi_1109_ = true;
+                                    let _e751 = phi_1409_;
+                                    let _e753 = (_e608 - select(_e624, _e743, _e751));
+                                    if (_e753 != _e753) {
+                                        phi_1424_ = true;
                                     } else {
-                                        phi_1109_ = (0f >= _e583);
+                                        phi_1424_ = (0f >= _e753);
                                     }
-                                    let _e587 = phi_1109_;
-                                    let _e592 = ((_e573 - ((1f + _e576) * _e416.member_1.member_2)) * (1f / _e438));
-                                    if (_e592 > 0f) {
-                                        phi_969_ = select(1f, _e592, (_e592 < 1f));
+                                    let _e757 = phi_1424_;
+                                    let _e762 = ((_e743 - ((1f + _e746) * _e585.member_1.member_2)) * (1f / _e608));
+                                    if (_e762 > 0f) {
+                                        phi_1284_ = select(1f, _e762, (_e762 < 1f));
                                     } else {
-                                        phi_969_ = 0f;
+                                        phi_1284_ = 0f;
                                     }
-                                    let _e597 = phi_969_;
-                                    phi_976_ = ((select(_e583, 0f, _e587) + (_e597 * _e455)) * (0.5f / _e438));
+                                    let _e767 = phi_1284_;
+                                    phi_1291_ = ((select(_e753, 0f, _e757) + (_e767 * _e625)) * (0.5f / _e608));
                                 }
-                                let _e605 = phi_976_;
-                                phi_978_ = (_e424 + _e605);
+                                let _e775 = phi_1291_;
+                                phi_1293_ = (_e593 + _e775);
                             } else {
-                                phi_978_ = _e424;
+                                phi_1293_ = _e593;
                             }
-                            let _e608 = phi_978_;
-                            phi_595_ = (_e422 + 1u);
-                            phi_598_ = _e608;
+                            let _e778 = phi_1293_;
+                            phi_908_ = (_e591 + 1u);
+                            phi_911_ = _e778;
                         } else {
-                            phi_595_ = u32();
-                            phi_598_ = f32();
+                            phi_908_ = u32();
+                            phi_911_ = f32();
                         }
-                        let _e611 = phi_595_;
-                        let _e613 = phi_598_;
+                        let _e781 = phi_908_;
+                        let _e783 = phi_911_;
                         continue;
                         continuing {
-                            phi_594_ = _e611;
-                            phi_597_ = _e613;
-                            phi_1114_ = false;
-                            break if !(_e425);
+                            phi_907_ = _e781;
+                            phi_910_ = _e783;
+                            phi_1429_ = false;
+                            break if !(_e594);
                         }
                     }
-                    let _e616 = phi_1114_;
-                    if _e616 {
+                    let _e786 = phi_1429_;
+                    if _e786 {
                         break;
                     }
-                    let _e618 = local_4;
-                    let _e619 = (0.25f * _e618);
-                    if (_e619 > 0f) {
-                        phi_992_ = select(1f, _e619, (_e619 < 1f));
+                    let _e788 = local_4;
+                    let _e789 = (0.25f * _e788);
+                    if (_e789 > 0f) {
+                        phi_1307_ = select(1f, _e789, (_e789 < 1f));
                     } else {
-                        phi_992_ = 0f;
+                        phi_1307_ = 0f;
                     }
-                    let _e624 = phi_992_;
-                    let _e627 = params.member.member_2;
-                    phi_996_ = pow(_e624, _e627);
+                    let _e794 = phi_1307_;
+                    let _e797 = params.member.member_2;
+                    phi_1311_ = pow(_e794, _e797);
                 } else {
-                    phi_996_ = 1f;
+                    phi_1311_ = 1f;
                 }
-                let _e630 = phi_996_;
-                if (_e197 < arrayLength((&ao.member))) {
+                let _e800 = phi_1311_;
+                if (_e366 < arrayLength((&ao.member))) {
                 } else {
                     break;
                 }
-                ao.member[_e197] = _e630;
+                ao.member[_e366] = _e800;
             }
             break;
         }

@@ -106,9 +106,12 @@ pub fn kernel(entry: &str) -> Option<CpuKernel> {
         "gtao_normals" => kernels::gtao_normals,
         "gtao_main" => kernels::gtao_main,
         "gtao_denoise" => kernels::gtao_denoise,
+        "vbao_main" => kernels::vbao_main,
         "raymarch_main" => kernels::raymarch,
         "groundtruth_rgen" | "groundtruth_rq" => kernels::ground_truth,
         "hybrid_rgen" | "hybrid_rq" => kernels::hybrid,
+        "temporal_blend" => kernels::temporal_blend,
+        "temporal_store" => kernels::temporal_store,
         _ => return None,
     })
 }
@@ -244,12 +247,13 @@ mod kernels {
     use aokit_shaders::blur::BlurParams;
     use aokit_shaders::groundtruth::GroundTruthFrame;
     use aokit_shaders::gtao::{
-        GtaoParams, denoise_pixel, gtao_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
+        GtaoParams, GtaoPixel, denoise_pixel, gtao_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
     };
     use aokit_shaders::hybrid::HybridFrame;
     use aokit_shaders::raymarch::RaymarchParams;
     use aokit_shaders::svao::SvaoFrame;
     use aokit_shaders::vao::VaoParams;
+    use aokit_shaders::vbao::{VbaoParams, vbao_pixel};
 
     pub fn vao(io: &mut PassIo) {
         let params: VaoParams = io.push();
@@ -348,27 +352,35 @@ mod kernels {
 
     pub fn gtao_main(io: &mut PassIo) {
         let params: GtaoParams = io.push();
-        let out = crate::gtao::per_pixel(params.view.size(), |p| {
-            let o = gtao_pixel(&params, io.f32(0), io.words(1), p);
-            (o.term, o.edges)
-        });
+        let out = crate::gtao::per_pixel(params.view.size(), |p| gtao_pixel(&params, io.f32(0), io.words(1), p));
+        store_terms_edges(io, out);
+    }
+
+    /// A main pass's outputs: the AO terms at slot 2, the edges at slot 3.
+    fn store_terms_edges(io: &mut PassIo, out: Vec<GtaoPixel>) {
         let (terms, edges) = (io.take(2), io.take(3));
-        for (i, (t, e)) in out.into_iter().enumerate() {
-            (terms[i], edges[i]) = (t, e);
+        for (i, o) in out.into_iter().enumerate() {
+            (terms[i], edges[i]) = (o.term, o.edges);
         }
+    }
+
+    pub fn vbao_main(io: &mut PassIo) {
+        let params: VbaoParams = io.push();
+        let out = crate::gtao::per_pixel(params.gtao.view.size(), |p| vbao_pixel(&params, io.f32(0), io.words(1), p));
+        store_terms_edges(io, out);
     }
 
     pub fn gtao_denoise(io: &mut PassIo) {
         let params: GtaoParams = io.push();
         let out = crate::gtao::per_pixel(params.view.size(), |q| {
             let o = denoise_pixel(&params, io.words(0), io.words(1), q);
-            (o.term, o.last)
+            (o.term, o.last, o.visibility)
         });
         let (terms, ao) = (io.take(2), io.take_f32(3));
-        for (i, (term, last)) in out.into_iter().enumerate() {
+        for (i, (term, last, visibility)) in out.into_iter().enumerate() {
             terms[i] = term;
             if last {
-                ao[i] = term as f32 / 255.0;
+                ao[i] = visibility;
             }
         }
     }
@@ -406,5 +418,22 @@ mod kernels {
         io.take_f32(3).copy_from_slice(&ao);
         io.take(4).copy_from_slice(&terms);
         io.take(5).copy_from_slice(&edges);
+    }
+
+    /// The temporal accumulation (`aokit_shaders::temporal`) over the full target.
+    pub fn temporal_blend(io: &mut PassIo) {
+        let frame: aokit_shaders::temporal::TemporalFrame = io.record(0);
+        let out = crate::gtao::per_pixel(frame.camera.view.size(), |p| {
+            aokit_shaders::temporal::temporal_pixel(&frame, io.f32(1), io.f32(2), io.f32(3), io.f32(4), p)
+        });
+        io.take_f32(5).copy_from_slice(&out);
+    }
+
+    /// The history for the next frame: the accumulated AO and this frame's depth.
+    pub fn temporal_store(io: &mut PassIo) {
+        let accumulated = io.f32(2).to_vec();
+        let depth = io.f32(1).to_vec();
+        io.take_f32(3).copy_from_slice(&accumulated);
+        io.take_f32(4).copy_from_slice(&depth);
     }
 }

@@ -1,20 +1,15 @@
 //! XeGTAO's passes on the CPU (spec gtao-raymarch-hybrid §2.3–§2.7): the shader crate's
 //! per-texel and per-pixel functions over whole buffers, in the GPU's dispatch order.
 
-use aokit_shaders::glam::{UVec2, uvec2};
+use aokit_shaders::glam::UVec2;
 use aokit_shaders::gtao::{
     GtaoParams, MIP_LEVELS, denoise_pixel, gtao_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
 };
-use rayon::prelude::*;
 
-/// Evaluate `f` for every pixel of a `size` image in parallel rows.
+/// Evaluate `f` for every pixel of a `size` image in parallel [`crate::screen::tiled`] bands.
 pub fn per_pixel<T: Send + Copy + Default>(size: UVec2, f: impl Fn(UVec2) -> T + Sync) -> Vec<T> {
     let mut out = vec![T::default(); (size.x * size.y) as usize];
-    out.par_chunks_mut(size.x as usize).enumerate().for_each(|(y, row)| {
-        for (x, v) in row.iter_mut().enumerate() {
-            *v = f(uvec2(x as u32, y as u32));
-        }
-    });
+    crate::screen::tiled(&mut out, size.x, 0..size.x, 0..size.y, &crate::no_progress, |p, v| *v = f(p));
     out
 }
 
@@ -48,9 +43,14 @@ pub fn run_main(params: &GtaoParams, mips: &[f32], normals: &[u32]) -> (Vec<u32>
 /// The denoise passes; returns the visibility per pixel (full target).
 pub fn run_denoise(params: &GtaoParams, terms: &[u32], edges: &[u32]) -> Vec<f32> {
     let mut current = terms.to_vec();
+    let mut ao = Vec::new();
     for pass in 0..params.denoise_passes.max(1) {
         let p = GtaoParams { pass, ..*params };
-        current = per_pixel(params.view.size(), |q| denoise_pixel(&p, &current, edges, q).term);
+        let out = per_pixel(params.view.size(), |q| {
+            let o = denoise_pixel(&p, &current, edges, q);
+            (o.term, o.visibility)
+        });
+        (current, ao) = out.into_iter().unzip();
     }
-    current.iter().map(|&t| t as f32 / 255.0).collect()
+    ao
 }

@@ -789,7 +789,7 @@ pub fn reference_frame(inner: aokit_shaders::glam::UVec2, guard: u32) -> aokit_s
         0.1,
         100.0,
     );
-    aokit_shaders::graph::FrameDesc { camera, radius: 0.5, exponent: 2.0, thickness: 0.0 }
+    aokit_shaders::graph::FrameDesc::new(camera, 0.5, 2.0, 0.0)
 }
 
 /// The registry's techniques at their defaults.

@@ -29,6 +29,7 @@ pub const GTAO_PREFILTER: &[u8] = spv!("gtao_prefilter");
 pub const GTAO_NORMALS: &[u8] = spv!("gtao_normals");
 pub const GTAO_MAIN: &[u8] = spv!("gtao_main");
 pub const GTAO_DENOISE: &[u8] = spv!("gtao_denoise");
+pub const VBAO_MAIN: &[u8] = spv!("vbao_main");
 pub const RAYMARCH_MAIN: &[u8] = spv!("raymarch_main");
 pub const HYBRID_RGEN: &[u8] = spv!("hybrid_rgen");
 pub const RAYSD_RQ: &[u8] = spv!("raysd_rq");
@@ -41,9 +42,11 @@ pub const IMPORT_NORMALS: &[u8] = spv!("import_normals");
 pub const EXPORT_AO_R32F: &[u8] = spv!("export_ao_r32f");
 pub const EXPORT_AO_R16F: &[u8] = spv!("export_ao_r16f");
 pub const EXPORT_AO_R8: &[u8] = spv!("export_ao_r8");
+pub const TEMPORAL_BLEND: &[u8] = spv!("temporal_blend");
+pub const TEMPORAL_STORE: &[u8] = spv!("temporal_store");
 
 /// Every module by entry-point name.
-pub const ALL: [(&str, &[u8]); 32] = [
+pub const ALL: &[(&str, &[u8])] = &[
     ("vao_main", VAO_MAIN),
     ("blur_main", BLUR_MAIN),
     ("gbuffer_vs", GBUFFER_VS),
@@ -64,6 +67,7 @@ pub const ALL: [(&str, &[u8]); 32] = [
     ("gtao_normals", GTAO_NORMALS),
     ("gtao_main", GTAO_MAIN),
     ("gtao_denoise", GTAO_DENOISE),
+    ("vbao_main", VBAO_MAIN),
     ("raymarch_main", RAYMARCH_MAIN),
     ("hybrid_rgen", HYBRID_RGEN),
     ("raysd_rq", RAYSD_RQ),
@@ -76,6 +80,8 @@ pub const ALL: [(&str, &[u8]); 32] = [
     ("export_ao_r32f", EXPORT_AO_R32F),
     ("export_ao_r16f", EXPORT_AO_R16F),
     ("export_ao_r8", EXPORT_AO_R8),
+    ("temporal_blend", TEMPORAL_BLEND),
+    ("temporal_store", TEMPORAL_STORE),
 ];
 
 /// SPIR-V words of a module (validates the magic number and alignment).

@@ -477,9 +477,25 @@ pub struct FrameDesc {
     pub exponent: f32,
     /// VAO thickness τ (spec svao-raysd §2, used in §4.3–§4.4).
     pub thickness: f32,
+    /// The frame's index in a sequence: every stochastic technique's noise takes it (XeGTAO's
+    /// `NoiseIndex`, spec gtao-raymarch-hybrid §1.6; the ray-traced techniques' hashes and
+    /// sequences through `crate::common::noise::frame_rotation`). 0 for single frames: frame 0
+    /// is the techniques' original noise, bit for bit.
+    pub frame_index: u32,
+    /// The previous frame's camera, for the temporal accumulation's reprojection; `None` on a
+    /// first frame or after a cut (the history restarts).
+    pub previous_camera: Option<Camera>,
+    /// Temporal accumulation of the final AO (`crate::temporal`), appended to any technique's
+    /// graph; `None`: off.
+    pub temporal: Option<crate::temporal::settings::TemporalSettings>,
 }
 
 impl FrameDesc {
+    /// A single frame: index 0, no previous camera, no temporal accumulation.
+    pub fn new(camera: Camera, radius: f32, exponent: f32, thickness: f32) -> FrameDesc {
+        FrameDesc { camera, radius, exponent, thickness, frame_index: 0, previous_camera: None, temporal: None }
+    }
+
     /// Full target size.
     pub fn size(&self) -> UVec2 {
         self.camera.view.size()

@@ -36,4 +36,6 @@ pub mod svao;
 pub mod technique;
 #[cfg(not(target_arch = "spirv"))]
 pub mod techniques;
+pub mod temporal;
 pub mod vao;
+pub mod vbao;

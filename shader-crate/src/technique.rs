@@ -303,6 +303,8 @@ pub trait Configured: Send + Sync + Debug {
     /// Set a setting by key; a key the technique does not read is refused.
     fn set(&mut self, key: &str, value: &str) -> Result<(), String>;
     fn validate(&self) -> Result<(), String>;
+    /// The declaration's graph for `frame`, with the temporal accumulation appended when
+    /// `frame.temporal` asks for it (`crate::temporal::settings::accumulate`).
     fn graph(&self, frame: &FrameDesc) -> Result<Graph, String>;
     fn second_layer(&self) -> Option<f32>;
     /// The settings struct, for callers that know its type.
@@ -446,7 +448,8 @@ impl<S: Settings> Configured for Instance<S> {
 
     fn graph(&self, frame: &FrameDesc) -> Result<Graph, String> {
         self.settings.validate()?;
-        (self.declaration.graph)(&self.settings, frame)
+        // The temporal accumulation, when the frame asks for it, follows every technique.
+        crate::temporal::settings::accumulate((self.declaration.graph)(&self.settings, frame)?, frame)
     }
 
     fn second_layer(&self) -> Option<f32> {

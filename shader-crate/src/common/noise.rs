@@ -39,3 +39,21 @@ pub fn spatio_temporal_noise(p: UVec2, frame: u32) -> Vec2 {
     let i = (hilbert_index(p) + 288 * (frame % 64)) as f32;
     vec2(frac(0.5 + i * R2[0]), frac(0.5 + i * R2[1]))
 }
+
+/// The frame's Cranley–Patterson offset for the random numbers that have no temporal index of
+/// their own (the ray-traced techniques' hashes and per-pixel sequences): the R2 point of the
+/// frame, `r(f) = frac((f mod 64)·(1/ρ, 1/ρ²))` — spec §1.6's sequence and 64-frame period,
+/// without its 0.5 start so that `r(0) = (0, 0)`.
+#[inline]
+pub fn frame_rotation(frame: u32) -> Vec2 {
+    let f = (frame % 64) as f32;
+    vec2(frac(f * R2[0]), frac(f * R2[1]))
+}
+
+/// Cranley–Patterson rotation of a uniform number `u` ∈ [0, 1) by `r`: `frac(u + r)`, uniform
+/// again. With `r = 0` (frame 0, [`frame_rotation`]) it returns `u` bit for bit, so a single
+/// frame keeps the techniques' original noise.
+#[inline]
+pub fn rotate(u: f32, r: f32) -> f32 {
+    frac(u + r)
+}

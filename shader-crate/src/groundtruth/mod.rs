@@ -16,6 +16,7 @@ pub mod settings;
 use crate::common::camera::Camera;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::math::{frac, is_valid_depth};
+use crate::common::noise::{frame_rotation, rotate};
 use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
 
 /// Ground-truth parameters.
@@ -105,6 +106,12 @@ pub struct GroundTruthFrame {
     pub camera: Camera,
     /// The ground truth's constants.
     pub params: GroundTruthParams,
+    /// The frame's index in a sequence: every sample is Cranley–Patterson-rotated by its
+    /// `crate::common::noise::frame_rotation` (0 for a single frame: no rotation).
+    pub noise_frame: u32,
+    pub _pad0: u32,
+    pub _pad1: u32,
+    pub _pad2: u32,
 }
 
 /// Where world-space AO rays of a pixel start.
@@ -144,8 +151,8 @@ pub struct GroundTruthPixel {
 }
 
 /// Ground-truth AO of pixel `p`: rays from the G-buffer point, offset along its camera-facing
-/// face normal by `1e-4·(t + R)`, `samples` directions from [`sample_2d`], visible fraction
-/// through [`finalize`]. Background pixels are 1.
+/// face normal by `1e-4·(t + R)`, `samples` directions from [`sample_2d`] rotated by the
+/// frame's [`frame_rotation`], visible fraction through [`finalize`]. Background pixels are 1.
 #[inline]
 pub fn ground_truth_pixel<G: GBuffer, Q: OcclusionQuery>(
     gbuffer: &G,
@@ -160,10 +167,12 @@ pub fn ground_truth_pixel<G: GBuffer, Q: OcclusionQuery>(
     }
     let (origin, n) = (surface.origin, surface.normal);
     let uniform = params.uniform != 0;
+    let rotation = frame_rotation(frame.noise_frame);
     let mut visible = 0.0;
     let mut k = 0;
     while k < params.samples {
-        let w = hemisphere_direction(n, sample_2d(k, p), uniform);
+        let u = sample_2d(k, p);
+        let w = hemisphere_direction(n, vec2(rotate(u.x, rotation.x), rotate(u.y, rotation.y)), uniform);
         if !rays.occluded(origin, w, params.radius) {
             visible += visibility_weight(n, w, uniform);
         }

@@ -58,6 +58,13 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
         Constant::new("GroundTruthFrame.camera", "the frame's Camera (Camera and ViewParams rows)"),
         Constant::new("GroundTruthFrame.params", "the technique's GroundTruthParams (GroundTruthParams rows)"),
         Constant::new(
+            "GroundTruthFrame.noise_frame",
+            "the frame index (FrameDesc::frame_index; 0 for a single frame): the samples' rotation frame_rotation(f mod 64)",
+        ),
+        Constant::new("GroundTruthFrame._pad0", "0"),
+        Constant::new("GroundTruthFrame._pad1", "0"),
+        Constant::new("GroundTruthFrame._pad2", "0"),
+        Constant::new(
             "GroundTruthParams.radius",
             "R: the frame's world-space AO radius, the rays' length (world units)"
         ),
@@ -79,6 +86,10 @@ impl GroundTruthSettings {
                 samples: self.spp,
                 uniform: self.uniform as u32,
             },
+            noise_frame: frame.frame_index,
+            _pad0: 0,
+            _pad1: 0,
+            _pad2: 0,
         }
     }
 

@@ -118,7 +118,10 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
         Constant::new("HybridParams.screen_rays", "`variant`: mixed 1, world 0, screen 2 screen rays per pixel [1]"),
         Constant::new("HybridParams.world_rays", "`variant`: mixed 1, world 2, screen 0 world rays per pixel [1]"),
         Constant::new("HybridParams.screen_steps", "`screen-steps`: steps of a screen ray [16]"),
-        Constant::new("HybridParams.noise_frame", "0"),
+        Constant::new(
+            "HybridParams.noise_frame",
+            "the frame index (FrameDesc::frame_index; 0 for a single frame), taken mod 64 by the noise (spec §1.6, §4.1)",
+        ),
         Constant::new("HybridParams._pad", "0"),
     ],
     crate::gtao::settings::DENOISER,
@@ -146,7 +149,8 @@ impl HybridSettings {
                 screen_rays: self.screen_rays,
                 world_rays: self.world_rays,
                 screen_steps: self.screen_steps,
-                noise_frame: 0,
+                // The frame's index in its sequence: the Hilbert-R2 noise's temporal offset (spec §1.6, §4.1).
+                noise_frame: frame.frame_index,
                 _pad: 0,
             },
         }

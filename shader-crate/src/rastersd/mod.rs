@@ -12,6 +12,7 @@ use spirv_std::num_traits::Float;
 use crate::common::float_order::from_ordered_bits;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::hash::wyman_hash;
+use crate::common::noise::{frame_rotation, rotate};
 use crate::glam::{UVec2, Vec3};
 use crate::raysd::bilinear_depth;
 use crate::svao::SvaoFrame;
@@ -76,10 +77,12 @@ pub fn mask_lut(n: u32, idx: u32) -> u32 {
 
 /// The fragment's coverage mask (spec §8 step 5): `Rn = floor(α·N + u)` kept samples with
 /// `u = hash4(posW, 1.438943289)`, α = 1.5/N; all N when Rn ≥ N, none when Rn = 0, else one of the
-/// C(N, Rn) masks with Rn bits, picked by `hash3(posW.zyx)` from its stratum of the LUT.
+/// C(N, Rn) masks with Rn bits, picked by `u2 = hash3(posW.zyx)` from its stratum of the LUT. In
+/// frame `frame` of a sequence both hashes are rotated by its `frame_rotation` (frame 0: none).
 #[inline]
-pub fn coverage_mask(pos_w: Vec3, n: u32) -> u32 {
-    let u = hash4(pos_w.x, pos_w.y, pos_w.z, 1.438_943_3);
+pub fn coverage_mask(pos_w: Vec3, n: u32, frame: u32) -> u32 {
+    let rotation = frame_rotation(frame);
+    let u = rotate(hash4(pos_w.x, pos_w.y, pos_w.z, 1.438_943_3), rotation.x);
     let alpha = 1.5 / n as f32;
     let rn = (alpha * n as f32 + u).floor() as u32;
     if rn >= n {
@@ -88,7 +91,7 @@ pub fn coverage_mask(pos_w: Vec3, n: u32) -> u32 {
     if rn == 0 {
         return 0;
     }
-    let u2 = hash3(pos_w.z, pos_w.y, pos_w.x);
+    let u2 = rotate(hash3(pos_w.z, pos_w.y, pos_w.x), rotation.y);
     let (lo, hi) = (stratum_start(n, rn) as f32, stratum_start(n, rn + 1) as f32);
     mask_lut(n, (lo + (hi - lo) * u2) as u32)
 }
@@ -122,7 +125,7 @@ pub fn raster_fragment<G: GBuffer>(
         return (0, 1.0);
     }
     let z = (d - view.near) / (view.far - view.near);
-    (coverage_mask(pos_w, params.sd_layers), z)
+    (coverage_mask(pos_w, params.sd_layers, params.noise_frame), z)
 }
 
 use crate::common::alpha::{AlphaMaskHeader, alpha_test_passes};

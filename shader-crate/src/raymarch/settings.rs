@@ -85,7 +85,10 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
         Constant::new("RaymarchParams.directions", "`directions`: N [16]"),
         Constant::new("RaymarchParams.steps", "`steps`: S per direction [8]"),
         Constant::new("RaymarchParams.contribution", "Contribution of `contribution`: linear 0, binary 1 [linear 0]"),
-        Constant::new("RaymarchParams.noise_frame", "0"),
+        Constant::new(
+            "RaymarchParams.noise_frame",
+            "the frame index (FrameDesc::frame_index; 0 for a single frame), taken mod 64 by the noise (spec §1.6)"
+        ),
     ],
     crate::gtao::settings::DENOISER,
     crate::common::camera::CONSTANTS,
@@ -103,7 +106,8 @@ impl RaymarchSettings {
             directions: self.directions,
             steps: self.steps,
             contribution: if self.binary { Contribution::Binary } else { Contribution::Linear } as u32,
-            noise_frame: 0,
+            // The frame's index in its sequence: the Hilbert-R2 noise's temporal offset (spec §1.6).
+            noise_frame: frame.frame_index,
         }
     }
 

@@ -16,6 +16,7 @@ use crate::common::float_order::from_ordered_bits;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::hash::wyman_hash;
 use crate::common::math::{is_valid_depth, sat};
+use crate::common::noise::{frame_rotation, rotate};
 use crate::common::tables::sd_jitter;
 use crate::glam::{IVec2, UVec2, Vec2, Vec3};
 use crate::svao::pass1::{combine, depth_point_value};
@@ -40,6 +41,9 @@ pub struct SdPayload {
     pub cos_theta: f32,
     pub near: f32,
     pub far: f32,
+    /// The frame's rotation of the reservoir's random number (`frame_rotation(noise_frame).x`;
+    /// 0 for a single frame).
+    pub rotation: f32,
 }
 
 impl SdPayload {
@@ -54,6 +58,7 @@ impl SdPayload {
             cos_theta,
             near,
             far,
+            rotation: frame_rotation(params.noise_frame).x,
         }
     }
 }
@@ -76,11 +81,12 @@ pub fn reservoir_slot(payload: &mut SdPayload, u: f32, z: f32) -> u32 {
 }
 
 /// First half of the SD any-hit (spec §7.3) for a hit at ray distance `t` with DXR barycentrics
-/// `bary`: hash the barycentrics, normalize the hit's linear depth and pick the reservoir slot.
+/// `bary`: hash the barycentrics (rotated by the frame's [`SdPayload::rotation`]), normalize the
+/// hit's linear depth and pick the reservoir slot.
 /// Returns `(slot, z)`; only a hit with `slot != NO_SLOT` needs the alpha test.
 #[inline]
 pub fn reservoir_candidate(payload: &mut SdPayload, t: f32, bary: Vec2) -> (u32, f32) {
-    let u = wyman_hash(bary.x, bary.y);
+    let u = rotate(wyman_hash(bary.x, bary.y), payload.rotation);
     let z = sat((t * payload.cos_theta - payload.near) / (payload.far - payload.near));
     (reservoir_slot(payload, u, z), z)
 }
@@ -190,7 +196,7 @@ pub fn sd_ray<G: GBuffer>(gbuffer: &G, frame: &SvaoFrame, q: UVec2, ray_min: u32
     let view = &params.vao.view;
     let low = params.sd_low_res.as_vec2();
     let qp = low_res_texel(q, params);
-    let p = (qp.as_vec2() + sd_jitter(q, params.jitter)) / low;
+    let p = (qp.as_vec2() + sd_jitter(q, params.jitter, params.noise_frame)) / low;
     let direction = camera.primary_ray_direction(p);
     let cos_theta = -camera.world_to_view.transform_vector3(direction).z;
     let centre = (qp.as_vec2() + 0.5) / low;
@@ -224,7 +230,8 @@ impl Refine for SdMapRefine<'_> {
         let params = self.params;
         let view = &params.vao.view;
         let q = sd_pixel(s.uv, params);
-        let uv = (low_res_texel(q, params).as_vec2() + sd_jitter(q, params.jitter)) / params.sd_low_res.as_vec2();
+        let uv = (low_res_texel(q, params).as_vec2() + sd_jitter(q, params.jitter, params.noise_frame))
+            / params.sd_low_res.as_vec2();
         let base = params.sd_index(q) * params.sd_layers as usize;
         let mut v = v;
         let mut k = 0;

@@ -1,0 +1,115 @@
+//! The temporal accumulation as passes appended to any technique's graph (host side): the
+//! frame asks for it ([`FrameDesc::temporal`]) and carries the previous camera
+//! ([`FrameDesc::previous_camera`]); the history lives in persistent resources.
+
+use super::TemporalFrame;
+use crate::graph::{Access, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, inputs, record};
+
+/// The accumulation's settings [defaults].
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct TemporalSettings {
+    /// Weight α of the current frame in the exponential blend [0.1]: the history's weight
+    /// decays by 1 − α per frame, ≈ 1/α frames of memory.
+    pub alpha: f32,
+    /// Relative depth tolerance ε of the history test [`DEPTH_TOLERANCE`].
+    pub depth_tolerance: f32,
+}
+
+/// Default relative depth tolerance ε (docs/temporal.md): a texel the reprojected point falls in
+/// (the instability's read) or next to (the bilinear taps) holds the depth up to ½–1 px away,
+/// which on a surface seen 80° from its normal is ~1–2 % of the depth at 360 rows and 60° field
+/// of view; 5 % keeps such surfaces (on Sponza's orbit 95.5 % of the inner pixels are valid in
+/// both frames at ε = 0.005, 96.9 % at 0.05, 97.1 % at 0.3) and still rejects an occluder and
+/// the surface behind it when they are more than 5 % apart in depth.
+pub const DEPTH_TOLERANCE: f32 = 0.05;
+
+impl Default for TemporalSettings {
+    fn default() -> Self {
+        TemporalSettings { alpha: 0.1, depth_tolerance: DEPTH_TOLERANCE }
+    }
+}
+
+impl TemporalSettings {
+    /// α ∈ (0, 1], ε ∈ (0, 1].
+    pub fn validate(&self) -> Result<(), String> {
+        if !(self.alpha > 0.0 && self.alpha <= 1.0) {
+            return Err(format!("--temporal-alpha {}: expected a number in (0, 1]", self.alpha));
+        }
+        if !(self.depth_tolerance > 0.0 && self.depth_tolerance <= 1.0) {
+            return Err(format!("--temporal-depth-tolerance {}: expected a number in (0, 1]", self.depth_tolerance));
+        }
+        Ok(())
+    }
+
+    /// The kernels' record: history only with a previous camera of the same target size (the
+    /// history buffers are this target's).
+    pub fn frame(&self, frame: &FrameDesc) -> TemporalFrame {
+        let previous = frame.previous_camera.filter(|c| c.view.size() == frame.camera.view.size());
+        TemporalFrame {
+            camera: frame.camera,
+            previous: previous.unwrap_or(frame.camera),
+            alpha: self.alpha,
+            depth_tolerance: self.depth_tolerance,
+            history: previous.is_some() as u32,
+            _pad: 0,
+        }
+    }
+}
+
+/// The accumulated AO, the graph's output when the accumulation is on.
+pub const OUTPUT: &str = "temporal_ao";
+/// The history: the previous frame's accumulated AO and its depth (persistent).
+pub const HISTORY_AO: &str = "temporal_history_ao";
+pub const HISTORY_DEPTH: &str = "temporal_history_depth";
+/// The record of the two passes.
+pub const RECORD: &str = "temporal_frame";
+
+/// `graph` with the accumulation appended when `frame.temporal` asks for it (unchanged
+/// otherwise): `temporal_blend` reads the technique's output, the depth and the history and
+/// writes [`OUTPUT`], the new output; `temporal_store` then copies it and the depth into the
+/// history. Works for every technique: it reads only the output and the depth.
+pub fn accumulate(mut graph: Graph, frame: &FrameDesc) -> Result<Graph, String> {
+    let Some(settings) = frame.temporal else { return Ok(graph) };
+    settings.validate()?;
+    let persistent = |name, doc| Resource {
+        name,
+        elem: Elem::F32,
+        size: Size::TARGET,
+        // Depth 0 is no surface: a fresh history fails every depth test.
+        init: Init::Fill(0.0f32.to_bits()),
+        lifetime: Lifetime::Persistent,
+        doc,
+    };
+    graph.resources.extend([
+        record(RECORD, std::slice::from_ref(&settings.frame(frame)), "TemporalFrame: both cameras, α, ε"),
+        Resource {
+            name: OUTPUT,
+            elem: Elem::F32,
+            size: Size::TARGET,
+            init: Init::Fill(1.0f32.to_bits()),
+            lifetime: Lifetime::PerFrame,
+            doc: "the technique's AO accumulated over frames (exponential blend with the reprojected history)",
+        },
+        persistent(HISTORY_AO, "the previous frame's accumulated AO (persistent)"),
+        persistent(HISTORY_DEPTH, "the previous frame's linear depth (persistent)"),
+    ]);
+    let blend = [
+        (RECORD, Access::Read),
+        (inputs::LINEAR_DEPTH, Access::Read),
+        (graph.output, Access::Read),
+        (HISTORY_AO, Access::Read),
+        (HISTORY_DEPTH, Access::Read),
+        (OUTPUT, Access::Write),
+    ];
+    let store = [
+        (RECORD, Access::Read),
+        (inputs::LINEAR_DEPTH, Access::Read),
+        (OUTPUT, Access::Read),
+        (HISTORY_AO, Access::Write),
+        (HISTORY_DEPTH, Access::Write),
+    ];
+    graph.passes.push(Pass::compute("temporal", "temporal_blend", &blend, Extent::Full, &[]));
+    graph.passes.push(Pass::compute("temporal", "temporal_store", &store, Extent::Full, &[]));
+    graph.output = OUTPUT;
+    Ok(graph)
+}
