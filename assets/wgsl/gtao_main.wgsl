@@ -67,24 +67,24 @@ fn function_() {
     var phi_540_: f32;
     var phi_551_: f32;
     var phi_562_: f32;
-    var phi_1926_: f32;
-    var phi_1941_: f32;
-    var phi_1945_: f32;
-    var phi_1946_: bool;
-    var phi_1969_: f32;
-    var phi_1984_: f32;
-    var phi_1988_: f32;
-    var phi_1989_: bool;
-    var phi_2012_: f32;
-    var phi_2027_: f32;
-    var phi_2031_: f32;
-    var phi_2032_: bool;
-    var phi_2055_: f32;
-    var phi_2070_: f32;
-    var phi_2074_: f32;
-    var phi_2075_: bool;
-    var phi_2098_: bool;
-    var phi_2113_: bool;
+    var phi_1927_: f32;
+    var phi_1942_: f32;
+    var phi_1946_: f32;
+    var phi_1947_: bool;
+    var phi_1970_: f32;
+    var phi_1985_: f32;
+    var phi_1989_: f32;
+    var phi_1990_: bool;
+    var phi_2013_: f32;
+    var phi_2028_: f32;
+    var phi_2032_: f32;
+    var phi_2033_: bool;
+    var phi_2056_: f32;
+    var phi_2071_: f32;
+    var phi_2075_: f32;
+    var phi_2076_: bool;
+    var phi_2099_: bool;
+    var phi_2114_: bool;
     var phi_665_: vec2<f32>;
     var phi_693_: vec3<f32>;
     var phi_714_: u32;
@@ -102,84 +102,84 @@ fn function_() {
     var local: u32;
     var phi_776_: bool;
     var phi_806_: f32;
-    var phi_2382_: bool;
+    var phi_2383_: bool;
     var phi_816_: vec3<f32>;
     var phi_819_: u32;
     var phi_821_: f32;
-    var phi_941_: f32;
-    var phi_961_: f32;
-    var phi_978_: f32;
-    var phi_1003_: u32;
-    var phi_1006_: f32;
-    var phi_1008_: f32;
-    var phi_1062_: f32;
-    var phi_1086_: f32;
-    var phi_1109_: u32;
-    var phi_1125_: f32;
-    var phi_1127_: f32;
-    var phi_1128_: bool;
-    var phi_1148_: f32;
-    var phi_1150_: f32;
-    var phi_1151_: bool;
-    var phi_1203_: u32;
+    var phi_938_: f32;
+    var phi_958_: f32;
+    var phi_975_: f32;
+    var phi_998_: u32;
+    var phi_1001_: f32;
+    var phi_1003_: f32;
+    var phi_1057_: f32;
+    var phi_1081_: f32;
+    var phi_1104_: u32;
+    var phi_1120_: f32;
+    var phi_1122_: f32;
+    var phi_1123_: bool;
+    var phi_1143_: f32;
+    var phi_1145_: f32;
+    var phi_1146_: bool;
+    var phi_1198_: u32;
+    var phi_1218_: u32;
+    var phi_1220_: u32;
     var phi_1223_: u32;
-    var phi_1225_: u32;
-    var phi_1228_: u32;
-    var phi_1226_: u32;
-    var phi_1229_: u32;
+    var phi_1221_: u32;
+    var phi_1224_: u32;
     var local_1: u32;
-    var phi_1311_: u32;
+    var phi_1306_: u32;
+    var phi_1326_: u32;
+    var phi_1328_: u32;
     var phi_1331_: u32;
-    var phi_1333_: u32;
-    var phi_1336_: u32;
-    var phi_1334_: u32;
-    var phi_1337_: u32;
+    var phi_1329_: u32;
+    var phi_1332_: u32;
     var local_2: u32;
-    var phi_1435_: f32;
-    var phi_1441_: f32;
-    var phi_1494_: f32;
-    var phi_1500_: f32;
-    var phi_2128_: bool;
-    var phi_2143_: bool;
-    var phi_1004_: u32;
-    var phi_1007_: f32;
-    var phi_1009_: f32;
-    var phi_2331_: bool;
+    var phi_1430_: f32;
+    var phi_1436_: f32;
+    var phi_1489_: f32;
+    var phi_1495_: f32;
+    var phi_2129_: bool;
+    var phi_2144_: bool;
+    var phi_999_: u32;
+    var phi_1002_: f32;
+    var phi_1004_: f32;
+    var phi_2332_: bool;
     var local_3: f32;
     var local_4: f32;
-    var phi_1526_: f32;
+    var phi_1521_: f32;
     var local_5: f32;
     var local_6: f32;
-    var phi_1544_: f32;
-    var phi_1700_: vec3<f32>;
-    var phi_1701_: vec3<f32>;
-    var phi_1702_: vec3<f32>;
-    var phi_1703_: vec3<f32>;
-    var phi_1704_: bool;
-    var phi_1710_: vec3<f32>;
-    var phi_2451_: bool;
+    var phi_1539_: f32;
+    var phi_1695_: vec3<f32>;
+    var phi_1696_: vec3<f32>;
+    var phi_1697_: vec3<f32>;
+    var phi_1698_: vec3<f32>;
+    var phi_1699_: bool;
+    var phi_1705_: vec3<f32>;
+    var phi_2452_: bool;
     var phi_817_: vec3<f32>;
     var phi_820_: u32;
     var phi_822_: f32;
-    var phi_2450_: bool;
+    var phi_2451_: bool;
     var local_7: f32;
-    var phi_2158_: bool;
-    var phi_1746_: f32;
+    var phi_2159_: bool;
+    var phi_1741_: f32;
     var local_8: vec3<f32>;
     var local_9: vec3<f32>;
     var local_10: vec3<f32>;
     var local_11: vec3<f32>;
-    var phi_1776_: vec3<f32>;
-    var phi_2174_: f32;
-    var phi_2195_: f32;
-    var phi_2216_: f32;
-    var phi_2237_: f32;
-    var phi_1798_: type_22;
-    var phi_1799_: type_22;
-    var phi_1840_: type_22;
+    var phi_1771_: vec3<f32>;
+    var phi_2175_: f32;
+    var phi_2196_: f32;
+    var phi_2217_: f32;
+    var phi_2238_: f32;
+    var phi_1793_: type_22;
+    var phi_1794_: type_22;
     var phi_1841_: type_22;
-    var phi_1842_: bool;
-    var phi_1846_: type_22;
+    var phi_1842_: type_22;
+    var phi_1843_: bool;
+    var phi_1847_: type_22;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -359,104 +359,104 @@ fn function_() {
                     }
                     let _e263 = phi_562_;
                     if (_e245 > 0f) {
-                        phi_1926_ = select(1f, _e245, (_e245 < 1f));
+                        phi_1927_ = select(1f, _e245, (_e245 < 1f));
                     } else {
-                        phi_1926_ = 0f;
+                        phi_1927_ = 0f;
                     }
-                    let _e268 = phi_1926_;
+                    let _e268 = phi_1927_;
                     let _e269 = (_e268 * 2.9f);
                     let _e271 = floor((_e269 + 0.5f));
                     if ((_e271 - _e269) == 0.5f) {
                         let _e277 = ((floor((_e271 * 0.5f)) * 2f) != _e271);
                         if _e277 {
-                            phi_1941_ = (_e271 - 1f);
+                            phi_1942_ = (_e271 - 1f);
                         } else {
-                            phi_1941_ = f32();
+                            phi_1942_ = f32();
                         }
-                        let _e280 = phi_1941_;
-                        phi_1945_ = _e280;
-                        phi_1946_ = select(true, false, _e277);
+                        let _e280 = phi_1942_;
+                        phi_1946_ = _e280;
+                        phi_1947_ = select(true, false, _e277);
                     } else {
-                        phi_1945_ = f32();
-                        phi_1946_ = true;
+                        phi_1946_ = f32();
+                        phi_1947_ = true;
                     }
-                    let _e283 = phi_1945_;
-                    let _e285 = phi_1946_;
+                    let _e283 = phi_1946_;
+                    let _e285 = phi_1947_;
                     let _e286 = select(_e283, _e271, _e285);
                     if (_e251 > 0f) {
-                        phi_1969_ = select(1f, _e251, (_e251 < 1f));
+                        phi_1970_ = select(1f, _e251, (_e251 < 1f));
                     } else {
-                        phi_1969_ = 0f;
+                        phi_1970_ = 0f;
                     }
-                    let _e297 = phi_1969_;
+                    let _e297 = phi_1970_;
                     let _e298 = (_e297 * 2.9f);
                     let _e300 = floor((_e298 + 0.5f));
                     if ((_e300 - _e298) == 0.5f) {
                         let _e306 = ((floor((_e300 * 0.5f)) * 2f) != _e300);
                         if _e306 {
-                            phi_1984_ = (_e300 - 1f);
+                            phi_1985_ = (_e300 - 1f);
                         } else {
-                            phi_1984_ = f32();
+                            phi_1985_ = f32();
                         }
-                        let _e309 = phi_1984_;
-                        phi_1988_ = _e309;
-                        phi_1989_ = select(true, false, _e306);
+                        let _e309 = phi_1985_;
+                        phi_1989_ = _e309;
+                        phi_1990_ = select(true, false, _e306);
                     } else {
-                        phi_1988_ = f32();
-                        phi_1989_ = true;
+                        phi_1989_ = f32();
+                        phi_1990_ = true;
                     }
-                    let _e312 = phi_1988_;
-                    let _e314 = phi_1989_;
+                    let _e312 = phi_1989_;
+                    let _e314 = phi_1990_;
                     let _e315 = select(_e312, _e300, _e314);
                     if (_e257 > 0f) {
-                        phi_2012_ = select(1f, _e257, (_e257 < 1f));
+                        phi_2013_ = select(1f, _e257, (_e257 < 1f));
                     } else {
-                        phi_2012_ = 0f;
+                        phi_2013_ = 0f;
                     }
-                    let _e327 = phi_2012_;
+                    let _e327 = phi_2013_;
                     let _e328 = (_e327 * 2.9f);
                     let _e330 = floor((_e328 + 0.5f));
                     if ((_e330 - _e328) == 0.5f) {
                         let _e336 = ((floor((_e330 * 0.5f)) * 2f) != _e330);
                         if _e336 {
-                            phi_2027_ = (_e330 - 1f);
+                            phi_2028_ = (_e330 - 1f);
                         } else {
-                            phi_2027_ = f32();
+                            phi_2028_ = f32();
                         }
-                        let _e339 = phi_2027_;
-                        phi_2031_ = _e339;
-                        phi_2032_ = select(true, false, _e336);
+                        let _e339 = phi_2028_;
+                        phi_2032_ = _e339;
+                        phi_2033_ = select(true, false, _e336);
                     } else {
-                        phi_2031_ = f32();
-                        phi_2032_ = true;
+                        phi_2032_ = f32();
+                        phi_2033_ = true;
                     }
-                    let _e342 = phi_2031_;
-                    let _e344 = phi_2032_;
+                    let _e342 = phi_2032_;
+                    let _e344 = phi_2033_;
                     let _e345 = select(_e342, _e330, _e344);
                     if (_e263 > 0f) {
-                        phi_2055_ = select(1f, _e263, (_e263 < 1f));
+                        phi_2056_ = select(1f, _e263, (_e263 < 1f));
                     } else {
-                        phi_2055_ = 0f;
+                        phi_2056_ = 0f;
                     }
-                    let _e357 = phi_2055_;
+                    let _e357 = phi_2056_;
                     let _e358 = (_e357 * 2.9f);
                     let _e360 = floor((_e358 + 0.5f));
                     if ((_e360 - _e358) == 0.5f) {
                         let _e366 = ((floor((_e360 * 0.5f)) * 2f) != _e360);
                         if _e366 {
-                            phi_2070_ = (_e360 - 1f);
+                            phi_2071_ = (_e360 - 1f);
                         } else {
-                            phi_2070_ = f32();
+                            phi_2071_ = f32();
                         }
-                        let _e369 = phi_2070_;
-                        phi_2074_ = _e369;
-                        phi_2075_ = select(true, false, _e366);
+                        let _e369 = phi_2071_;
+                        phi_2075_ = _e369;
+                        phi_2076_ = select(true, false, _e366);
                     } else {
-                        phi_2074_ = f32();
-                        phi_2075_ = true;
+                        phi_2075_ = f32();
+                        phi_2076_ = true;
                     }
-                    let _e372 = phi_2074_;
-                    let _e374 = phi_2075_;
+                    let _e372 = phi_2075_;
+                    let _e374 = phi_2076_;
                     let _e375 = select(_e372, _e360, _e374);
                     let _e381 = ((((64u * select(select(u32(_e286), 0u, (_e286 < 0f)), 4294967295u, (_e286 > 4294967000f))) + (16u * select(select(u32(_e315), 0u, (_e315 < 0f)), 4294967295u, (_e315 > 4294967000f)))) + (4u * select(select(u32(_e345), 0u, (_e345 < 0f)), 4294967295u, (_e345 > 4294967000f)))) + select(select(u32(_e375), 0u, (_e375 < 0f)), 4294967295u, (_e375 > 4294967000f)));
                     let _e386 = ((f32(_e84.x) + 0.5f) / _e97);
@@ -480,19 +480,19 @@ fn function_() {
                     let _e423 = normals.member[_e118];
                     let _e431 = (f32((bitcast<i32>(((_e423 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
                     if (_e431 != _e431) {
-                        phi_2098_ = true;
+                        phi_2099_ = true;
                     } else {
-                        phi_2098_ = (-1f >= _e431);
+                        phi_2099_ = (-1f >= _e431);
                     }
-                    let _e435 = phi_2098_;
+                    let _e435 = phi_2099_;
                     let _e436 = select(_e431, -1f, _e435);
                     let _e446 = (f32((bitcast<i32>((((_e423 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
                     if (_e446 != _e446) {
-                        phi_2113_ = true;
+                        phi_2114_ = true;
                     } else {
-                        phi_2113_ = (-1f >= _e446);
+                        phi_2114_ = (-1f >= _e446);
                     }
-                    let _e450 = phi_2113_;
+                    let _e450 = phi_2114_;
                     let _e451 = select(_e446, -1f, _e450);
                     let _e454 = (1f - abs(_e436));
                     let _e455 = abs(_e451);
@@ -597,12 +597,12 @@ fn function_() {
                         let _e584 = phi_806_;
                         let _e588 = params.member.member_8;
                         let _e590 = select(1u, _e588, (1u < _e588));
-                        phi_2382_ = false;
+                        phi_2383_ = false;
                         phi_816_ = vec3<f32>(0f, 0f, 0f);
                         phi_819_ = 0u;
                         phi_821_ = (0.5f * _e584);
                         loop {
-                            let _e592 = phi_2382_;
+                            let _e592 = phi_2383_;
                             let _e594 = phi_816_;
                             let _e596 = phi_819_;
                             let _e598 = phi_821_;
@@ -634,39 +634,39 @@ fn function_() {
                                 let _e657 = sqrt((((_e649 * _e649) + (_e650 * _e650)) + (_e651 * _e651)));
                                 let _e662 = (((_e616 * _e649) + (_e617 * _e650)) + (_e618 * _e651));
                                 if (_e662 > 0f) {
-                                    phi_941_ = 1f;
+                                    phi_938_ = 1f;
                                 } else {
-                                    phi_941_ = select(0f, -1f, (_e662 < 0f));
+                                    phi_938_ = select(0f, -1f, (_e662 < 0f));
                                 }
-                                let _e667 = phi_941_;
+                                let _e667 = phi_938_;
                                 let _e673 = ((((_e649 * _e417) + (_e650 * _e418)) + (_e651 * _e419)) / _e657);
                                 if (_e673 > 0f) {
-                                    phi_961_ = select(1f, _e673, (_e673 < 1f));
+                                    phi_958_ = select(1f, _e673, (_e673 < 1f));
                                 } else {
-                                    phi_961_ = 0f;
+                                    phi_958_ = 0f;
                                 }
-                                let _e678 = phi_961_;
+                                let _e678 = phi_958_;
                                 let _e679 = abs(_e678);
                                 let _e690 = (((-0.156583f * _e679) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e679))) >> bitcast<u32>(1i))))));
                                 if (_e678 >= 0f) {
-                                    phi_978_ = _e690;
+                                    phi_975_ = _e690;
                                 } else {
-                                    phi_978_ = (3.141593f - _e690);
+                                    phi_975_ = (3.141593f - _e690);
                                 }
-                                let _e694 = phi_978_;
+                                let _e694 = phi_975_;
                                 let _e695 = (_e667 * _e694);
                                 let _e698 = params.member.member_9;
                                 let _e700 = select(1u, _e698, (1u < _e698));
                                 let _e702 = cos((_e695 + 1.5707964f));
                                 let _e704 = cos((_e695 - 1.5707964f));
                                 let _e707 = params.member.member_5;
-                                phi_1003_ = 0u;
-                                phi_1006_ = _e704;
-                                phi_1008_ = _e702;
+                                phi_998_ = 0u;
+                                phi_1001_ = _e704;
+                                phi_1003_ = _e702;
                                 loop {
-                                    let _e709 = phi_1003_;
-                                    let _e711 = phi_1006_;
-                                    let _e713 = phi_1008_;
+                                    let _e709 = phi_998_;
+                                    let _e711 = phi_1001_;
+                                    let _e713 = phi_1003_;
                                     local_3 = _e711;
                                     local_4 = _e711;
                                     local_5 = _e713;
@@ -677,64 +677,64 @@ fn function_() {
                                         let _e725 = ((f32(_e709) + (_e719 - floor(_e719))) / f32(_e700));
                                         let _e728 = params.member.member_4;
                                         if (_e728 == 2f) {
-                                            phi_1062_ = (_e725 * _e725);
+                                            phi_1057_ = (_e725 * _e725);
                                         } else {
-                                            phi_1062_ = pow(_e725, _e728);
+                                            phi_1057_ = pow(_e725, _e728);
                                         }
-                                        let _e733 = phi_1062_;
+                                        let _e733 = phi_1057_;
                                         let _e734 = (_e733 + (1.3f / _e503));
                                         let _e735 = ((_e606 * _e503) * _e734);
                                         let _e736 = ((-(_e605) * _e503) * _e734);
                                         let _e744 = params.member.member_7;
                                         let _e745 = (log2(sqrt(((_e735 * _e735) + (_e736 * _e736)))) - _e744);
                                         if (_e745 > 0f) {
-                                            phi_1086_ = select(5f, _e745, (_e745 < 5f));
+                                            phi_1081_ = select(5f, _e745, (_e745 < 5f));
                                         } else {
-                                            phi_1086_ = 0f;
+                                            phi_1081_ = 0f;
                                         }
-                                        let _e750 = phi_1086_;
+                                        let _e750 = phi_1081_;
                                         let _e753 = (-1f - floor((-0.5f - _e750)));
                                         if (_e753 > 0f) {
                                             let _e759 = select(select(u32(_e753), 0u, (_e753 < 0f)), 4294967295u, (_e753 > 4294967000f));
-                                            phi_1109_ = select(_e759, 4u, (4u < _e759));
+                                            phi_1104_ = select(_e759, 4u, (4u < _e759));
                                         } else {
-                                            phi_1109_ = 0u;
+                                            phi_1104_ = 0u;
                                         }
-                                        let _e763 = phi_1109_;
+                                        let _e763 = phi_1104_;
                                         let _e765 = floor((_e735 + 0.5f));
                                         if ((_e765 - _e735) == 0.5f) {
                                             let _e771 = ((floor((_e765 * 0.5f)) * 2f) != _e765);
                                             if _e771 {
-                                                phi_1125_ = (_e765 - 1f);
+                                                phi_1120_ = (_e765 - 1f);
                                             } else {
-                                                phi_1125_ = f32();
+                                                phi_1120_ = f32();
                                             }
-                                            let _e774 = phi_1125_;
-                                            phi_1127_ = _e774;
-                                            phi_1128_ = select(true, false, _e771);
+                                            let _e774 = phi_1120_;
+                                            phi_1122_ = _e774;
+                                            phi_1123_ = select(true, false, _e771);
                                         } else {
-                                            phi_1127_ = f32();
-                                            phi_1128_ = true;
+                                            phi_1122_ = f32();
+                                            phi_1123_ = true;
                                         }
-                                        let _e777 = phi_1127_;
-                                        let _e779 = phi_1128_;
+                                        let _e777 = phi_1122_;
+                                        let _e779 = phi_1123_;
                                         let _e782 = floor((_e736 + 0.5f));
                                         if ((_e782 - _e736) == 0.5f) {
                                             let _e788 = ((floor((_e782 * 0.5f)) * 2f) != _e782);
                                             if _e788 {
-                                                phi_1148_ = (_e782 - 1f);
+                                                phi_1143_ = (_e782 - 1f);
                                             } else {
-                                                phi_1148_ = f32();
+                                                phi_1143_ = f32();
                                             }
-                                            let _e791 = phi_1148_;
-                                            phi_1150_ = _e791;
-                                            phi_1151_ = select(true, false, _e788);
+                                            let _e791 = phi_1143_;
+                                            phi_1145_ = _e791;
+                                            phi_1146_ = select(true, false, _e788);
                                         } else {
-                                            phi_1150_ = f32();
-                                            phi_1151_ = true;
+                                            phi_1145_ = f32();
+                                            phi_1146_ = true;
                                         }
-                                        let _e794 = phi_1150_;
-                                        let _e796 = phi_1151_;
+                                        let _e794 = phi_1145_;
+                                        let _e796 = phi_1146_;
                                         let _e798 = (select(_e777, _e765, _e779) / _e97);
                                         let _e799 = (select(_e794, _e782, _e796) / _e107);
                                         let _e800 = (_e386 + _e798);
@@ -751,44 +751,44 @@ fn function_() {
                                         if (_e814 > 0f) {
                                             let _e820 = select(select(u32(_e814), 0u, (_e814 < 0f)), 4294967295u, (_e814 > 4294967000f));
                                             let _e821 = (_e808 - 1u);
-                                            phi_1203_ = select(_e820, _e821, (_e821 < _e820));
+                                            phi_1198_ = select(_e820, _e821, (_e821 < _e820));
                                         } else {
-                                            phi_1203_ = 0u;
+                                            phi_1198_ = 0u;
                                         }
-                                        let _e825 = phi_1203_;
+                                        let _e825 = phi_1198_;
                                         let _e826 = f32(_e812);
                                         let _e827 = (_e801 * _e826);
                                         if (_e827 > 0f) {
                                             let _e833 = select(select(u32(_e827), 0u, (_e827 < 0f)), 4294967295u, (_e827 > 4294967000f));
                                             let _e834 = (_e812 - 1u);
-                                            phi_1223_ = select(_e833, _e834, (_e834 < _e833));
+                                            phi_1218_ = select(_e833, _e834, (_e834 < _e833));
                                         } else {
-                                            phi_1223_ = 0u;
+                                            phi_1218_ = 0u;
                                         }
-                                        let _e838 = phi_1223_;
-                                        phi_1225_ = 0u;
-                                        phi_1228_ = 0u;
+                                        let _e838 = phi_1218_;
+                                        phi_1220_ = 0u;
+                                        phi_1223_ = 0u;
                                         loop {
-                                            let _e840 = phi_1225_;
-                                            let _e842 = phi_1228_;
+                                            let _e840 = phi_1220_;
+                                            let _e842 = phi_1223_;
                                             local_1 = _e842;
                                             let _e843 = (_e840 < _e763);
                                             if _e843 {
                                                 let _e844 = (_e840 & 31u);
                                                 let _e846 = (_e102 >> bitcast<u32>(_e844));
                                                 let _e850 = (_e112 >> bitcast<u32>(_e844));
-                                                phi_1226_ = (_e840 + 1u);
-                                                phi_1229_ = (_e842 + (select(1u, _e846, (1u < _e846)) * select(1u, _e850, (1u < _e850))));
+                                                phi_1221_ = (_e840 + 1u);
+                                                phi_1224_ = (_e842 + (select(1u, _e846, (1u < _e846)) * select(1u, _e850, (1u < _e850))));
                                             } else {
-                                                phi_1226_ = u32();
-                                                phi_1229_ = u32();
+                                                phi_1221_ = u32();
+                                                phi_1224_ = u32();
                                             }
-                                            let _e857 = phi_1226_;
-                                            let _e859 = phi_1229_;
+                                            let _e857 = phi_1221_;
+                                            let _e859 = phi_1224_;
                                             continue;
                                             continuing {
-                                                phi_1225_ = _e857;
-                                                phi_1228_ = _e859;
+                                                phi_1220_ = _e857;
+                                                phi_1223_ = _e859;
                                                 break if !(_e843);
                                             }
                                         }
@@ -796,7 +796,7 @@ fn function_() {
                                         let _e865 = (_e864 + ((_e838 * _e808) + _e825));
                                         if (_e865 < _e86) {
                                         } else {
-                                            phi_2331_ = true;
+                                            phi_2332_ = true;
                                             break;
                                         }
                                         let _e869 = mips.member[_e865];
@@ -804,43 +804,43 @@ fn function_() {
                                         if (_e878 > 0f) {
                                             let _e884 = select(select(u32(_e878), 0u, (_e878 < 0f)), 4294967295u, (_e878 > 4294967000f));
                                             let _e885 = (_e808 - 1u);
-                                            phi_1311_ = select(_e884, _e885, (_e885 < _e884));
+                                            phi_1306_ = select(_e884, _e885, (_e885 < _e884));
                                         } else {
-                                            phi_1311_ = 0u;
+                                            phi_1306_ = 0u;
                                         }
-                                        let _e889 = phi_1311_;
+                                        let _e889 = phi_1306_;
                                         let _e890 = (_e803 * _e826);
                                         if (_e890 > 0f) {
                                             let _e896 = select(select(u32(_e890), 0u, (_e890 < 0f)), 4294967295u, (_e890 > 4294967000f));
                                             let _e897 = (_e812 - 1u);
-                                            phi_1331_ = select(_e896, _e897, (_e897 < _e896));
+                                            phi_1326_ = select(_e896, _e897, (_e897 < _e896));
                                         } else {
-                                            phi_1331_ = 0u;
+                                            phi_1326_ = 0u;
                                         }
-                                        let _e901 = phi_1331_;
-                                        phi_1333_ = 0u;
-                                        phi_1336_ = 0u;
+                                        let _e901 = phi_1326_;
+                                        phi_1328_ = 0u;
+                                        phi_1331_ = 0u;
                                         loop {
-                                            let _e903 = phi_1333_;
-                                            let _e905 = phi_1336_;
+                                            let _e903 = phi_1328_;
+                                            let _e905 = phi_1331_;
                                             local_2 = _e905;
                                             let _e906 = (_e903 < _e763);
                                             if _e906 {
                                                 let _e907 = (_e903 & 31u);
                                                 let _e909 = (_e102 >> bitcast<u32>(_e907));
                                                 let _e913 = (_e112 >> bitcast<u32>(_e907));
-                                                phi_1334_ = (_e903 + 1u);
-                                                phi_1337_ = (_e905 + (select(1u, _e909, (1u < _e909)) * select(1u, _e913, (1u < _e913))));
+                                                phi_1329_ = (_e903 + 1u);
+                                                phi_1332_ = (_e905 + (select(1u, _e909, (1u < _e909)) * select(1u, _e913, (1u < _e913))));
                                             } else {
-                                                phi_1334_ = u32();
-                                                phi_1337_ = u32();
+                                                phi_1329_ = u32();
+                                                phi_1332_ = u32();
                                             }
-                                            let _e920 = phi_1334_;
-                                            let _e922 = phi_1337_;
+                                            let _e920 = phi_1329_;
+                                            let _e922 = phi_1332_;
                                             continue;
                                             continuing {
-                                                phi_1333_ = _e920;
-                                                phi_1336_ = _e922;
+                                                phi_1328_ = _e920;
+                                                phi_1331_ = _e922;
                                                 break if !(_e906);
                                             }
                                         }
@@ -848,7 +848,7 @@ fn function_() {
                                         let _e928 = (_e927 + ((_e901 * _e808) + _e889));
                                         if (_e928 < _e86) {
                                         } else {
-                                            phi_2331_ = true;
+                                            phi_2332_ = true;
                                             break;
                                         }
                                         let _e932 = mips.member[_e928];
@@ -864,16 +864,16 @@ fn function_() {
                                         if _e963 {
                                             let _e965 = ((_e499 - _e962) / _e577);
                                             if (_e965 > 0f) {
-                                                phi_1435_ = select(1f, _e965, (_e965 < 1f));
+                                                phi_1430_ = select(1f, _e965, (_e965 < 1f));
                                             } else {
-                                                phi_1435_ = 0f;
+                                                phi_1430_ = 0f;
                                             }
-                                            let _e970 = phi_1435_;
-                                            phi_1441_ = _e970;
+                                            let _e970 = phi_1430_;
+                                            phi_1436_ = _e970;
                                         } else {
-                                            phi_1441_ = select(0f, 1f, (_e962 <= _e499));
+                                            phi_1436_ = select(0f, 1f, (_e962 <= _e499));
                                         }
-                                        let _e974 = phi_1441_;
+                                        let _e974 = phi_1436_;
                                         let _e977 = (_e702 + ((((((_e941 / _e949) * _e417) + ((_e942 / _e949) * _e418)) + ((_e943 / _e949) * _e419)) - _e702) * _e974));
                                         let _e978 = (((((2f * _e802) - 1f) * _e395) * _e932) - _e397);
                                         let _e979 = ((((1f - (2f * _e803)) * _e404) * _e932) - _e406);
@@ -885,51 +885,51 @@ fn function_() {
                                         if _e963 {
                                             let _e1000 = ((_e499 - _e998) / _e577);
                                             if (_e1000 > 0f) {
-                                                phi_1494_ = select(1f, _e1000, (_e1000 < 1f));
+                                                phi_1489_ = select(1f, _e1000, (_e1000 < 1f));
                                             } else {
-                                                phi_1494_ = 0f;
+                                                phi_1489_ = 0f;
                                             }
-                                            let _e1005 = phi_1494_;
-                                            phi_1500_ = _e1005;
+                                            let _e1005 = phi_1489_;
+                                            phi_1495_ = _e1005;
                                         } else {
-                                            phi_1500_ = select(0f, 1f, (_e998 <= _e499));
+                                            phi_1495_ = select(0f, 1f, (_e998 <= _e499));
                                         }
-                                        let _e1009 = phi_1500_;
+                                        let _e1009 = phi_1495_;
                                         let _e1012 = (_e704 + ((((((_e978 / _e986) * _e417) + ((_e979 / _e986) * _e418)) + ((_e980 / _e986) * _e419)) - _e704) * _e1009));
                                         if (_e713 != _e713) {
-                                            phi_2128_ = true;
+                                            phi_2129_ = true;
                                         } else {
-                                            phi_2128_ = (_e977 >= _e713);
+                                            phi_2129_ = (_e977 >= _e713);
                                         }
-                                        let _e1016 = phi_2128_;
+                                        let _e1016 = phi_2129_;
                                         if (_e711 != _e711) {
-                                            phi_2143_ = true;
+                                            phi_2144_ = true;
                                         } else {
-                                            phi_2143_ = (_e1012 >= _e711);
+                                            phi_2144_ = (_e1012 >= _e711);
                                         }
-                                        let _e1021 = phi_2143_;
-                                        phi_1004_ = (_e709 + 1u);
-                                        phi_1007_ = select(_e711, _e1012, _e1021);
-                                        phi_1009_ = select(_e713, _e977, _e1016);
+                                        let _e1021 = phi_2144_;
+                                        phi_999_ = (_e709 + 1u);
+                                        phi_1002_ = select(_e711, _e1012, _e1021);
+                                        phi_1004_ = select(_e713, _e977, _e1016);
                                     } else {
-                                        phi_1004_ = u32();
-                                        phi_1007_ = f32();
-                                        phi_1009_ = f32();
+                                        phi_999_ = u32();
+                                        phi_1002_ = f32();
+                                        phi_1004_ = f32();
                                     }
-                                    let _e1025 = phi_1004_;
-                                    let _e1027 = phi_1007_;
-                                    let _e1029 = phi_1009_;
+                                    let _e1025 = phi_999_;
+                                    let _e1027 = phi_1002_;
+                                    let _e1029 = phi_1004_;
                                     continue;
                                     continuing {
-                                        phi_1003_ = _e1025;
-                                        phi_1006_ = _e1027;
-                                        phi_1008_ = _e1029;
-                                        phi_2331_ = _e592;
+                                        phi_998_ = _e1025;
+                                        phi_1001_ = _e1027;
+                                        phi_1003_ = _e1029;
+                                        phi_2332_ = _e592;
                                         break if !(_e714);
                                     }
                                 }
-                                let _e1032 = phi_2331_;
-                                phi_2450_ = _e1032;
+                                let _e1032 = phi_2332_;
+                                phi_2451_ = _e1032;
                                 if _e1032 {
                                     break;
                                 }
@@ -939,28 +939,28 @@ fn function_() {
                                 let _e1049 = (((-0.156583f * _e1038) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1038))) >> bitcast<u32>(1i))))));
                                 let _e1051 = local_4;
                                 if (_e1051 >= 0f) {
-                                    phi_1526_ = _e1049;
+                                    phi_1521_ = _e1049;
                                 } else {
-                                    phi_1526_ = (3.141593f - _e1049);
+                                    phi_1521_ = (3.141593f - _e1049);
                                 }
-                                let _e1055 = phi_1526_;
+                                let _e1055 = phi_1521_;
                                 let _e1056 = -(_e1055);
                                 let _e1058 = local_5;
                                 let _e1059 = abs(_e1058);
                                 let _e1070 = (((-0.156583f * _e1059) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1059))) >> bitcast<u32>(1i))))));
                                 let _e1072 = local_6;
                                 if (_e1072 >= 0f) {
-                                    phi_1544_ = _e1070;
+                                    phi_1539_ = _e1070;
                                 } else {
-                                    phi_1544_ = (3.141593f - _e1070);
+                                    phi_1539_ = (3.141593f - _e1070);
                                 }
-                                let _e1076 = phi_1544_;
+                                let _e1076 = phi_1539_;
                                 let _e1077 = (_e1055 * -2f);
                                 let _e1078 = sin(_e695);
                                 let _e1084 = (2f * _e1076);
                                 let _e1095 = params.member.member_13;
                                 if (_e1095 == 0u) {
-                                    phi_1710_ = vec3<f32>(0f, 0f, 0f);
+                                    phi_1705_ = vec3<f32>(0f, 0f, 0f);
                                 } else {
                                     let _e1101 = ((_e1055 * -3f) - _e695);
                                     let _e1109 = ((3f * _e1076) - _e695);
@@ -973,59 +973,59 @@ fn function_() {
                                     let _e1136 = (_e1133 * -0.083333336f);
                                     let _e1138 = (-1f * _e419);
                                     if (_e1138 > 0.9997f) {
-                                        phi_1702_ = vec3<f32>(_e1134, _e1135, _e1136);
-                                        phi_1703_ = vec3<f32>();
-                                        phi_1704_ = true;
+                                        phi_1697_ = vec3<f32>(_e1134, _e1135, _e1136);
+                                        phi_1698_ = vec3<f32>();
+                                        phi_1699_ = true;
                                     } else {
                                         let _e1140 = (_e1138 < -0.9997f);
                                         if _e1140 {
-                                            phi_1700_ = vec3<f32>(_e1134, -(_e1135), (_e1133 * 0.083333336f));
-                                            phi_1701_ = vec3<f32>();
+                                            phi_1695_ = vec3<f32>(_e1134, -(_e1135), (_e1133 * 0.083333336f));
+                                            phi_1696_ = vec3<f32>();
                                         } else {
                                             let _e1144 = (-1f * _e417);
                                             let _e1146 = (1f / (1f + _e1138));
                                             let _e1147 = (_e1146 * _e418);
                                             let _e1151 = (_e1147 * _e1144);
-                                            phi_1700_ = vec3<f32>();
-                                            phi_1701_ = vec3<f32>(((((_e1138 + (_e1147 * _e418)) * _e1134) + (_e1151 * _e1135)) + (_e1144 * _e1136)), (((_e1151 * _e1134) + ((_e1138 + ((_e1146 * _e1144) * _e1144)) * _e1135)) + (-(_e418) * _e1136)), (((_e417 * _e1134) + (_e418 * _e1135)) + (_e1138 * _e1136)));
+                                            phi_1695_ = vec3<f32>();
+                                            phi_1696_ = vec3<f32>(((((_e1138 + (_e1147 * _e418)) * _e1134) + (_e1151 * _e1135)) + (_e1144 * _e1136)), (((_e1151 * _e1134) + ((_e1138 + ((_e1146 * _e1144) * _e1144)) * _e1135)) + (-(_e418) * _e1136)), (((_e417 * _e1134) + (_e418 * _e1135)) + (_e1138 * _e1136)));
                                         }
-                                        let _e1172 = phi_1700_;
-                                        let _e1174 = phi_1701_;
-                                        phi_1702_ = _e1172;
-                                        phi_1703_ = _e1174;
-                                        phi_1704_ = _e1140;
+                                        let _e1172 = phi_1695_;
+                                        let _e1174 = phi_1696_;
+                                        phi_1697_ = _e1172;
+                                        phi_1698_ = _e1174;
+                                        phi_1699_ = _e1140;
                                     }
-                                    let _e1176 = phi_1702_;
-                                    let _e1178 = phi_1703_;
-                                    let _e1180 = phi_1704_;
-                                    phi_1710_ = (select(_e1178, _e1176, vec3(_e1180)) * _e1035);
+                                    let _e1176 = phi_1697_;
+                                    let _e1178 = phi_1698_;
+                                    let _e1180 = phi_1699_;
+                                    phi_1705_ = (select(_e1178, _e1176, vec3(_e1180)) * _e1035);
                                 }
-                                let _e1185 = phi_1710_;
-                                phi_2451_ = _e1032;
+                                let _e1185 = phi_1705_;
+                                phi_2452_ = _e1032;
                                 phi_817_ = (_e594 + _e1185);
                                 phi_820_ = (_e596 + 1u);
                                 phi_822_ = (_e598 + (_e1035 * (0.25f * (((_e678 + (_e1077 * _e1078)) - cos((_e1077 - _e695))) + ((_e678 + (_e1084 * _e1078)) - cos((_e1084 - _e695)))))));
                             } else {
-                                phi_2451_ = _e592;
+                                phi_2452_ = _e592;
                                 phi_817_ = vec3<f32>();
                                 phi_820_ = u32();
                                 phi_822_ = f32();
                             }
-                            let _e1190 = phi_2451_;
+                            let _e1190 = phi_2452_;
                             let _e1192 = phi_817_;
                             let _e1194 = phi_820_;
                             let _e1196 = phi_822_;
                             continue;
                             continuing {
-                                phi_2382_ = _e1190;
+                                phi_2383_ = _e1190;
                                 phi_816_ = _e1192;
                                 phi_819_ = _e1194;
                                 phi_821_ = _e1196;
-                                phi_2450_ = _e1190;
+                                phi_2451_ = _e1190;
                                 break if !(_e599);
                             }
                         }
-                        let _e1199 = phi_2450_;
+                        let _e1199 = phi_2451_;
                         if _e1199 {
                             break;
                         }
@@ -1033,25 +1033,25 @@ fn function_() {
                         let _e1206 = params.member.member_6;
                         let _e1207 = pow((_e1202 / f32(_e590)), _e1206);
                         if (_e1207 != _e1207) {
-                            phi_2158_ = true;
+                            phi_2159_ = true;
                         } else {
-                            phi_2158_ = (0.03f >= _e1207);
+                            phi_2159_ = (0.03f >= _e1207);
                         }
-                        let _e1211 = phi_2158_;
+                        let _e1211 = phi_2159_;
                         let _e1212 = select(_e1207, 0.03f, _e1211);
                         let _e1215 = params.member.member_13;
                         let _e1216 = (_e1215 == 0u);
                         if _e1216 {
                             let _e1217 = (_e1212 * 0.6666667f);
                             if (_e1217 > 0f) {
-                                phi_1746_ = select(1f, _e1217, (_e1217 < 1f));
+                                phi_1741_ = select(1f, _e1217, (_e1217 < 1f));
                             } else {
-                                phi_1746_ = 0f;
+                                phi_1741_ = 0f;
                             }
-                            let _e1222 = phi_1746_;
+                            let _e1222 = phi_1741_;
                             let _e1224 = ((_e1222 * 255f) + 0.5f);
-                            phi_1798_ = type_22(select(select(u32(_e1224), 0u, (_e1224 < 0f)), 4294967295u, (_e1224 > 4294967000f)), _e381);
-                            phi_1799_ = type_22();
+                            phi_1793_ = type_22(select(select(u32(_e1224), 0u, (_e1224 < 0f)), 4294967295u, (_e1224 > 4294967000f)), _e381);
+                            phi_1794_ = type_22();
                         } else {
                             let _e1232 = local_8;
                             let _e1236 = local_9;
@@ -1059,66 +1059,66 @@ fn function_() {
                             let _e1245 = sqrt((((_e1232.x * _e1232.x) + (_e1236.y * _e1236.y)) + (_e1241.z * _e1241.z)));
                             if (_e1245 > 0f) {
                                 let _e1249 = local_11;
-                                phi_1776_ = (_e1249 / vec3(_e1245));
+                                phi_1771_ = (_e1249 / vec3(_e1245));
                             } else {
-                                phi_1776_ = _e492;
+                                phi_1771_ = _e492;
                             }
-                            let _e1252 = phi_1776_;
-                            let _e1259 = ((_e1252.x * 0.5f) + 0.5f);
-                            let _e1260 = ((_e1252.y * 0.5f) + 0.5f);
-                            let _e1261 = ((_e1252.z * 0.5f) + 0.5f);
-                            let _e1262 = (_e1212 * 0.6666667f);
-                            if (_e1259 > 0f) {
-                                phi_2174_ = select(1f, _e1259, (_e1259 < 1f));
-                            } else {
-                                phi_2174_ = 0f;
-                            }
-                            let _e1267 = phi_2174_;
-                            let _e1269 = ((_e1267 * 255f) + 0.5f);
+                            let _e1252 = phi_1771_;
+                            let _e1253 = (_e1212 * 0.6666667f);
+                            let _e1260 = ((_e1252.x * 0.5f) + 0.5f);
+                            let _e1261 = ((_e1252.y * 0.5f) + 0.5f);
+                            let _e1262 = ((_e1252.z * 0.5f) + 0.5f);
                             if (_e1260 > 0f) {
-                                phi_2195_ = select(1f, _e1260, (_e1260 < 1f));
+                                phi_2175_ = select(1f, _e1260, (_e1260 < 1f));
                             } else {
-                                phi_2195_ = 0f;
+                                phi_2175_ = 0f;
                             }
-                            let _e1279 = phi_2195_;
-                            let _e1281 = ((_e1279 * 255f) + 0.5f);
+                            let _e1267 = phi_2175_;
+                            let _e1269 = ((_e1267 * 255f) + 0.5f);
                             if (_e1261 > 0f) {
-                                phi_2216_ = select(1f, _e1261, (_e1261 < 1f));
+                                phi_2196_ = select(1f, _e1261, (_e1261 < 1f));
                             } else {
-                                phi_2216_ = 0f;
+                                phi_2196_ = 0f;
                             }
-                            let _e1294 = phi_2216_;
-                            let _e1296 = ((_e1294 * 255f) + 0.5f);
+                            let _e1279 = phi_2196_;
+                            let _e1281 = ((_e1279 * 255f) + 0.5f);
                             if (_e1262 > 0f) {
-                                phi_2237_ = select(1f, _e1262, (_e1262 < 1f));
+                                phi_2217_ = select(1f, _e1262, (_e1262 < 1f));
                             } else {
-                                phi_2237_ = 0f;
+                                phi_2217_ = 0f;
                             }
-                            let _e1309 = phi_2237_;
+                            let _e1294 = phi_2217_;
+                            let _e1296 = ((_e1294 * 255f) + 0.5f);
+                            if (_e1253 > 0f) {
+                                phi_2238_ = select(1f, _e1253, (_e1253 < 1f));
+                            } else {
+                                phi_2238_ = 0f;
+                            }
+                            let _e1309 = phi_2238_;
                             let _e1311 = ((_e1309 * 255f) + 0.5f);
-                            phi_1798_ = type_22();
-                            phi_1799_ = type_22((((select(select(u32(_e1269), 0u, (_e1269 < 0f)), 4294967295u, (_e1269 > 4294967000f)) | (select(select(u32(_e1281), 0u, (_e1281 < 0f)), 4294967295u, (_e1281 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1296), 0u, (_e1296 < 0f)), 4294967295u, (_e1296 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1311), 0u, (_e1311 < 0f)), 4294967295u, (_e1311 > 4294967000f)) << bitcast<u32>(24i))), _e381);
+                            phi_1793_ = type_22();
+                            phi_1794_ = type_22((((select(select(u32(_e1269), 0u, (_e1269 < 0f)), 4294967295u, (_e1269 > 4294967000f)) | (select(select(u32(_e1281), 0u, (_e1281 < 0f)), 4294967295u, (_e1281 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1296), 0u, (_e1296 < 0f)), 4294967295u, (_e1296 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1311), 0u, (_e1311 < 0f)), 4294967295u, (_e1311 > 4294967000f)) << bitcast<u32>(24i))), _e381);
                         }
-                        let _e1322 = phi_1798_;
-                        let _e1324 = phi_1799_;
-                        phi_1840_ = _e1322;
-                        phi_1841_ = _e1324;
-                        phi_1842_ = select(true, false, _e1216);
+                        let _e1322 = phi_1793_;
+                        let _e1324 = phi_1794_;
+                        phi_1841_ = _e1322;
+                        phi_1842_ = _e1324;
+                        phi_1843_ = select(true, false, _e1216);
                     } else {
                         let _e1328 = params.member.member_13;
-                        phi_1840_ = type_22();
-                        phi_1841_ = type_22(select(2852159616u, 170u, (_e1328 == 0u)), _e381);
-                        phi_1842_ = true;
+                        phi_1841_ = type_22();
+                        phi_1842_ = type_22(select(2852159616u, 170u, (_e1328 == 0u)), _e381);
+                        phi_1843_ = true;
                     }
-                    let _e1333 = phi_1840_;
-                    let _e1335 = phi_1841_;
-                    let _e1337 = phi_1842_;
+                    let _e1333 = phi_1841_;
+                    let _e1335 = phi_1842_;
+                    let _e1337 = phi_1843_;
                     if _e1337 {
-                        phi_1846_ = _e1335;
+                        phi_1847_ = _e1335;
                     } else {
-                        phi_1846_ = _e1333;
+                        phi_1847_ = _e1333;
                     }
-                    let _e1339 = phi_1846_;
+                    let _e1339 = phi_1847_;
                     if (_e118 < arrayLength((&terms.member))) {
                     } else {
                         break;

@@ -81,24 +81,24 @@ fn function_() {
     var phi_590_: f32;
     var phi_601_: f32;
     var phi_612_: f32;
-    var phi_2312_: f32;
-    var phi_2327_: f32;
-    var phi_2331_: f32;
-    var phi_2332_: bool;
-    var phi_2355_: f32;
-    var phi_2370_: f32;
-    var phi_2374_: f32;
-    var phi_2375_: bool;
-    var phi_2398_: f32;
-    var phi_2413_: f32;
-    var phi_2417_: f32;
-    var phi_2418_: bool;
-    var phi_2441_: f32;
-    var phi_2456_: f32;
-    var phi_2460_: f32;
-    var phi_2461_: bool;
-    var phi_2483_: bool;
-    var phi_2498_: bool;
+    var phi_2307_: f32;
+    var phi_2322_: f32;
+    var phi_2326_: f32;
+    var phi_2327_: bool;
+    var phi_2350_: f32;
+    var phi_2365_: f32;
+    var phi_2369_: f32;
+    var phi_2370_: bool;
+    var phi_2393_: f32;
+    var phi_2408_: f32;
+    var phi_2412_: f32;
+    var phi_2413_: bool;
+    var phi_2436_: f32;
+    var phi_2451_: f32;
+    var phi_2455_: f32;
+    var phi_2456_: bool;
+    var phi_2478_: bool;
+    var phi_2493_: bool;
     var phi_715_: vec2<f32>;
     var phi_743_: vec3<f32>;
     var phi_764_: u32;
@@ -115,120 +115,120 @@ fn function_() {
     var phi_772_: u32;
     var local_1: u32;
     var phi_826_: bool;
-    var phi_2657_: bool;
+    var phi_2652_: bool;
     var phi_849_: u32;
     var phi_852_: f32;
     var phi_854_: f32;
-    var phi_974_: f32;
-    var phi_994_: f32;
-    var phi_1035_: u32;
-    var phi_1038_: u32;
-    var phi_1092_: f32;
-    var phi_1116_: f32;
-    var phi_1139_: u32;
-    var phi_1155_: f32;
-    var phi_1157_: f32;
-    var phi_1158_: bool;
-    var phi_1178_: f32;
-    var phi_1180_: f32;
-    var phi_1181_: bool;
-    var phi_1233_: u32;
+    var phi_971_: f32;
+    var phi_991_: f32;
+    var phi_1030_: u32;
+    var phi_1033_: u32;
+    var phi_1087_: f32;
+    var phi_1111_: f32;
+    var phi_1134_: u32;
+    var phi_1150_: f32;
+    var phi_1152_: f32;
+    var phi_1153_: bool;
+    var phi_1173_: f32;
+    var phi_1175_: f32;
+    var phi_1176_: bool;
+    var phi_1228_: u32;
+    var phi_1248_: u32;
+    var phi_1250_: u32;
     var phi_1253_: u32;
-    var phi_1255_: u32;
-    var phi_1258_: u32;
-    var phi_1256_: u32;
-    var phi_1259_: u32;
+    var phi_1251_: u32;
+    var phi_1254_: u32;
     var local_2: u32;
-    var phi_1341_: u32;
+    var phi_1336_: u32;
+    var phi_1356_: u32;
+    var phi_1358_: u32;
     var phi_1361_: u32;
-    var phi_1363_: u32;
-    var phi_1366_: u32;
-    var phi_1364_: u32;
-    var phi_1367_: u32;
+    var phi_1359_: u32;
+    var phi_1362_: u32;
     var local_3: u32;
-    var phi_1442_: bool;
-    var phi_1545_: f32;
-    var phi_1558_: f32;
-    var phi_2513_: bool;
-    var phi_1597_: f32;
-    var phi_1612_: f32;
-    var phi_1640_: f32;
-    var phi_1655_: f32;
-    var phi_2528_: bool;
-    var phi_2543_: bool;
-    var phi_1703_: u32;
-    var phi_1704_: u32;
-    var phi_1716_: u32;
-    var phi_1717_: bool;
-    var phi_1736_: u32;
-    var phi_1739_: u32;
-    var phi_1740_: u32;
-    var phi_1741_: bool;
-    var phi_1746_: u32;
-    var phi_1747_: u32;
-    var phi_1748_: u32;
-    var phi_1776_: bool;
-    var phi_1879_: f32;
-    var phi_1892_: f32;
-    var phi_2558_: bool;
-    var phi_1931_: f32;
-    var phi_1946_: f32;
-    var phi_1974_: f32;
-    var phi_1989_: f32;
-    var phi_2573_: bool;
-    var phi_2588_: bool;
-    var phi_2037_: u32;
-    var phi_2038_: u32;
-    var phi_2050_: u32;
-    var phi_2051_: bool;
-    var phi_2070_: u32;
-    var phi_2073_: u32;
-    var phi_2074_: u32;
-    var phi_2075_: bool;
-    var phi_2080_: u32;
-    var phi_2081_: u32;
-    var phi_2082_: u32;
-    var phi_1036_: u32;
-    var phi_1039_: u32;
-    var phi_2608_: bool;
+    var phi_1437_: bool;
+    var phi_1540_: f32;
+    var phi_1553_: f32;
+    var phi_2508_: bool;
+    var phi_1592_: f32;
+    var phi_1607_: f32;
+    var phi_1635_: f32;
+    var phi_1650_: f32;
+    var phi_2523_: bool;
+    var phi_2538_: bool;
+    var phi_1698_: u32;
+    var phi_1699_: u32;
+    var phi_1711_: u32;
+    var phi_1712_: bool;
+    var phi_1731_: u32;
+    var phi_1734_: u32;
+    var phi_1735_: u32;
+    var phi_1736_: bool;
+    var phi_1741_: u32;
+    var phi_1742_: u32;
+    var phi_1743_: u32;
+    var phi_1771_: bool;
+    var phi_1874_: f32;
+    var phi_1887_: f32;
+    var phi_2553_: bool;
+    var phi_1926_: f32;
+    var phi_1941_: f32;
+    var phi_1969_: f32;
+    var phi_1984_: f32;
+    var phi_2568_: bool;
+    var phi_2583_: bool;
+    var phi_2032_: u32;
+    var phi_2033_: u32;
+    var phi_2045_: u32;
+    var phi_2046_: bool;
+    var phi_2065_: u32;
+    var phi_2068_: u32;
+    var phi_2069_: u32;
+    var phi_2070_: bool;
+    var phi_2075_: u32;
+    var phi_2076_: u32;
+    var phi_2077_: u32;
+    var phi_1031_: u32;
+    var phi_1034_: u32;
+    var phi_2603_: bool;
     var local_4: u32;
-    var phi_2166_: u32;
-    var phi_2169_: f32;
+    var phi_2161_: u32;
+    var phi_2164_: f32;
     var local_5: u32;
-    var phi_2167_: u32;
-    var phi_2170_: f32;
-    var phi_2775_: bool;
+    var phi_2162_: u32;
+    var phi_2165_: f32;
+    var phi_2770_: bool;
     var local_6: f32;
-    var phi_2205_: f32;
-    var phi_2786_: bool;
-    var phi_2216_: f32;
-    var phi_2217_: f32;
+    var phi_2200_: f32;
+    var phi_2781_: bool;
+    var phi_2211_: f32;
+    var phi_2212_: f32;
+    var phi_2106_: f32;
+    var phi_2108_: u32;
     var phi_2111_: f32;
-    var phi_2113_: u32;
-    var phi_2116_: f32;
-    var phi_2118_: f32;
-    var phi_2144_: f32;
+    var phi_2113_: f32;
+    var phi_2139_: f32;
     var local_7: u32;
-    var phi_2154_: f32;
-    var phi_2114_: u32;
-    var phi_2117_: f32;
-    var phi_2119_: f32;
+    var phi_2149_: f32;
+    var phi_2109_: u32;
+    var phi_2112_: f32;
+    var phi_2114_: f32;
     var local_8: f32;
-    var phi_2780_: bool;
-    var phi_2218_: f32;
-    var phi_2219_: f32;
-    var phi_2779_: bool;
+    var phi_2775_: bool;
+    var phi_2213_: f32;
+    var phi_2214_: f32;
+    var phi_2774_: bool;
     var phi_850_: u32;
     var phi_853_: f32;
     var phi_855_: f32;
-    var phi_2778_: bool;
+    var phi_2773_: bool;
     var local_9: f32;
     var local_10: f32;
     var local_11: f32;
-    var phi_2226_: f32;
-    var phi_2603_: bool;
-    var phi_2242_: f32;
-    var phi_2274_: type_21;
+    var phi_2221_: f32;
+    var phi_2598_: bool;
+    var phi_2237_: f32;
+    var phi_2269_: type_21;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -408,104 +408,104 @@ fn function_() {
                     }
                     let _e263 = phi_612_;
                     if (_e245 > 0f) {
-                        phi_2312_ = select(1f, _e245, (_e245 < 1f));
+                        phi_2307_ = select(1f, _e245, (_e245 < 1f));
                     } else {
-                        phi_2312_ = 0f;
+                        phi_2307_ = 0f;
                     }
-                    let _e268 = phi_2312_;
+                    let _e268 = phi_2307_;
                     let _e269 = (_e268 * 2.9f);
                     let _e271 = floor((_e269 + 0.5f));
                     if ((_e271 - _e269) == 0.5f) {
                         let _e277 = ((floor((_e271 * 0.5f)) * 2f) != _e271);
                         if _e277 {
-                            phi_2327_ = (_e271 - 1f);
+                            phi_2322_ = (_e271 - 1f);
                         } else {
-                            phi_2327_ = f32();
+                            phi_2322_ = f32();
                         }
-                        let _e280 = phi_2327_;
-                        phi_2331_ = _e280;
-                        phi_2332_ = select(true, false, _e277);
+                        let _e280 = phi_2322_;
+                        phi_2326_ = _e280;
+                        phi_2327_ = select(true, false, _e277);
                     } else {
-                        phi_2331_ = f32();
-                        phi_2332_ = true;
+                        phi_2326_ = f32();
+                        phi_2327_ = true;
                     }
-                    let _e283 = phi_2331_;
-                    let _e285 = phi_2332_;
+                    let _e283 = phi_2326_;
+                    let _e285 = phi_2327_;
                     let _e286 = select(_e283, _e271, _e285);
                     if (_e251 > 0f) {
-                        phi_2355_ = select(1f, _e251, (_e251 < 1f));
+                        phi_2350_ = select(1f, _e251, (_e251 < 1f));
                     } else {
-                        phi_2355_ = 0f;
+                        phi_2350_ = 0f;
                     }
-                    let _e297 = phi_2355_;
+                    let _e297 = phi_2350_;
                     let _e298 = (_e297 * 2.9f);
                     let _e300 = floor((_e298 + 0.5f));
                     if ((_e300 - _e298) == 0.5f) {
                         let _e306 = ((floor((_e300 * 0.5f)) * 2f) != _e300);
                         if _e306 {
-                            phi_2370_ = (_e300 - 1f);
+                            phi_2365_ = (_e300 - 1f);
                         } else {
-                            phi_2370_ = f32();
+                            phi_2365_ = f32();
                         }
-                        let _e309 = phi_2370_;
-                        phi_2374_ = _e309;
-                        phi_2375_ = select(true, false, _e306);
+                        let _e309 = phi_2365_;
+                        phi_2369_ = _e309;
+                        phi_2370_ = select(true, false, _e306);
                     } else {
-                        phi_2374_ = f32();
-                        phi_2375_ = true;
+                        phi_2369_ = f32();
+                        phi_2370_ = true;
                     }
-                    let _e312 = phi_2374_;
-                    let _e314 = phi_2375_;
+                    let _e312 = phi_2369_;
+                    let _e314 = phi_2370_;
                     let _e315 = select(_e312, _e300, _e314);
                     if (_e257 > 0f) {
-                        phi_2398_ = select(1f, _e257, (_e257 < 1f));
+                        phi_2393_ = select(1f, _e257, (_e257 < 1f));
                     } else {
-                        phi_2398_ = 0f;
+                        phi_2393_ = 0f;
                     }
-                    let _e327 = phi_2398_;
+                    let _e327 = phi_2393_;
                     let _e328 = (_e327 * 2.9f);
                     let _e330 = floor((_e328 + 0.5f));
                     if ((_e330 - _e328) == 0.5f) {
                         let _e336 = ((floor((_e330 * 0.5f)) * 2f) != _e330);
                         if _e336 {
-                            phi_2413_ = (_e330 - 1f);
+                            phi_2408_ = (_e330 - 1f);
                         } else {
-                            phi_2413_ = f32();
+                            phi_2408_ = f32();
                         }
-                        let _e339 = phi_2413_;
-                        phi_2417_ = _e339;
-                        phi_2418_ = select(true, false, _e336);
+                        let _e339 = phi_2408_;
+                        phi_2412_ = _e339;
+                        phi_2413_ = select(true, false, _e336);
                     } else {
-                        phi_2417_ = f32();
-                        phi_2418_ = true;
+                        phi_2412_ = f32();
+                        phi_2413_ = true;
                     }
-                    let _e342 = phi_2417_;
-                    let _e344 = phi_2418_;
+                    let _e342 = phi_2412_;
+                    let _e344 = phi_2413_;
                     let _e345 = select(_e342, _e330, _e344);
                     if (_e263 > 0f) {
-                        phi_2441_ = select(1f, _e263, (_e263 < 1f));
+                        phi_2436_ = select(1f, _e263, (_e263 < 1f));
                     } else {
-                        phi_2441_ = 0f;
+                        phi_2436_ = 0f;
                     }
-                    let _e357 = phi_2441_;
+                    let _e357 = phi_2436_;
                     let _e358 = (_e357 * 2.9f);
                     let _e360 = floor((_e358 + 0.5f));
                     if ((_e360 - _e358) == 0.5f) {
                         let _e366 = ((floor((_e360 * 0.5f)) * 2f) != _e360);
                         if _e366 {
-                            phi_2456_ = (_e360 - 1f);
+                            phi_2451_ = (_e360 - 1f);
                         } else {
-                            phi_2456_ = f32();
+                            phi_2451_ = f32();
                         }
-                        let _e369 = phi_2456_;
-                        phi_2460_ = _e369;
-                        phi_2461_ = select(true, false, _e366);
+                        let _e369 = phi_2451_;
+                        phi_2455_ = _e369;
+                        phi_2456_ = select(true, false, _e366);
                     } else {
-                        phi_2460_ = f32();
-                        phi_2461_ = true;
+                        phi_2455_ = f32();
+                        phi_2456_ = true;
                     }
-                    let _e372 = phi_2460_;
-                    let _e374 = phi_2461_;
+                    let _e372 = phi_2455_;
+                    let _e374 = phi_2456_;
                     let _e375 = select(_e372, _e360, _e374);
                     let _e381 = ((((64u * select(select(u32(_e286), 0u, (_e286 < 0f)), 4294967295u, (_e286 > 4294967000f))) + (16u * select(select(u32(_e315), 0u, (_e315 < 0f)), 4294967295u, (_e315 > 4294967000f)))) + (4u * select(select(u32(_e345), 0u, (_e345 < 0f)), 4294967295u, (_e345 > 4294967000f)))) + select(select(u32(_e375), 0u, (_e375 < 0f)), 4294967295u, (_e375 > 4294967000f)));
                     let _e386 = ((f32(_e82.x) + 0.5f) / _e96);
@@ -529,19 +529,19 @@ fn function_() {
                     let _e425 = normals.member[_e118];
                     let _e433 = (f32((bitcast<i32>(((_e425 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
                     if (_e433 != _e433) {
-                        phi_2483_ = true;
+                        phi_2478_ = true;
                     } else {
-                        phi_2483_ = (-1f >= _e433);
+                        phi_2478_ = (-1f >= _e433);
                     }
-                    let _e437 = phi_2483_;
+                    let _e437 = phi_2478_;
                     let _e438 = select(_e433, -1f, _e437);
                     let _e448 = (f32((bitcast<i32>((((_e425 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
                     if (_e448 != _e448) {
-                        phi_2498_ = true;
+                        phi_2493_ = true;
                     } else {
-                        phi_2498_ = (-1f >= _e448);
+                        phi_2493_ = (-1f >= _e448);
                     }
-                    let _e452 = phi_2498_;
+                    let _e452 = phi_2493_;
                     let _e453 = select(_e448, -1f, _e452);
                     let _e456 = (1f - abs(_e438));
                     let _e457 = abs(_e453);
@@ -636,12 +636,12 @@ fn function_() {
                     if _e579 {
                         let _e584 = params.member.member_4.member_8;
                         let _e586 = select(1u, _e584, (1u < _e584));
-                        phi_2657_ = false;
+                        phi_2652_ = false;
                         phi_849_ = 0u;
                         phi_852_ = 0f;
                         phi_854_ = 0f;
                         loop {
-                            let _e588 = phi_2657_;
+                            let _e588 = phi_2652_;
                             let _e590 = phi_849_;
                             let _e592 = phi_852_;
                             let _e594 = phi_854_;
@@ -671,26 +671,26 @@ fn function_() {
                                 let _e653 = sqrt((((_e645 * _e645) + (_e646 * _e646)) + (_e647 * _e647)));
                                 let _e658 = (((_e612 * _e645) + (_e613 * _e646)) + (_e614 * _e647));
                                 if (_e658 > 0f) {
-                                    phi_974_ = 1f;
+                                    phi_971_ = 1f;
                                 } else {
-                                    phi_974_ = select(0f, -1f, (_e658 < 0f));
+                                    phi_971_ = select(0f, -1f, (_e658 < 0f));
                                 }
-                                let _e663 = phi_974_;
+                                let _e663 = phi_971_;
                                 let _e669 = ((((_e645 * _e419) + (_e646 * _e420)) + (_e647 * _e421)) / _e653);
                                 if (_e669 > 0f) {
-                                    phi_994_ = select(1f, _e669, (_e669 < 1f));
+                                    phi_991_ = select(1f, _e669, (_e669 < 1f));
                                 } else {
-                                    phi_994_ = 0f;
+                                    phi_991_ = 0f;
                                 }
-                                let _e674 = phi_994_;
+                                let _e674 = phi_991_;
                                 let _e676 = (_e663 * acos(_e674));
                                 let _e680 = params.member.member_4.member_9;
                                 let _e682 = select(1u, _e680, (1u < _e680));
-                                phi_1035_ = 0u;
-                                phi_1038_ = 0u;
+                                phi_1030_ = 0u;
+                                phi_1033_ = 0u;
                                 loop {
-                                    let _e684 = phi_1035_;
-                                    let _e686 = phi_1038_;
+                                    let _e684 = phi_1030_;
+                                    let _e686 = phi_1033_;
                                     local_4 = _e686;
                                     local_5 = _e686;
                                     local_7 = _e686;
@@ -700,64 +700,64 @@ fn function_() {
                                         let _e698 = ((f32(_e684) + (_e692 - floor(_e692))) / f32(_e682));
                                         let _e702 = params.member.member_4.member_4;
                                         if (_e702 == 2f) {
-                                            phi_1092_ = (_e698 * _e698);
+                                            phi_1087_ = (_e698 * _e698);
                                         } else {
-                                            phi_1092_ = pow(_e698, _e702);
+                                            phi_1087_ = pow(_e698, _e702);
                                         }
-                                        let _e707 = phi_1092_;
+                                        let _e707 = phi_1087_;
                                         let _e708 = (_e707 + (1.3f / _e507));
                                         let _e709 = ((_e602 * _e507) * _e708);
                                         let _e710 = ((-(_e601) * _e507) * _e708);
                                         let _e719 = params.member.member_4.member_7;
                                         let _e720 = (log2(sqrt(((_e709 * _e709) + (_e710 * _e710)))) - _e719);
                                         if (_e720 > 0f) {
-                                            phi_1116_ = select(5f, _e720, (_e720 < 5f));
+                                            phi_1111_ = select(5f, _e720, (_e720 < 5f));
                                         } else {
-                                            phi_1116_ = 0f;
+                                            phi_1111_ = 0f;
                                         }
-                                        let _e725 = phi_1116_;
+                                        let _e725 = phi_1111_;
                                         let _e728 = (-1f - floor((-0.5f - _e725)));
                                         if (_e728 > 0f) {
                                             let _e734 = select(select(u32(_e728), 0u, (_e728 < 0f)), 4294967295u, (_e728 > 4294967000f));
-                                            phi_1139_ = select(_e734, 4u, (4u < _e734));
+                                            phi_1134_ = select(_e734, 4u, (4u < _e734));
                                         } else {
-                                            phi_1139_ = 0u;
+                                            phi_1134_ = 0u;
                                         }
-                                        let _e738 = phi_1139_;
+                                        let _e738 = phi_1134_;
                                         let _e740 = floor((_e709 + 0.5f));
                                         if ((_e740 - _e709) == 0.5f) {
                                             let _e746 = ((floor((_e740 * 0.5f)) * 2f) != _e740);
                                             if _e746 {
-                                                phi_1155_ = (_e740 - 1f);
+                                                phi_1150_ = (_e740 - 1f);
                                             } else {
-                                                phi_1155_ = f32();
+                                                phi_1150_ = f32();
                                             }
-                                            let _e749 = phi_1155_;
-                                            phi_1157_ = _e749;
-                                            phi_1158_ = select(true, false, _e746);
+                                            let _e749 = phi_1150_;
+                                            phi_1152_ = _e749;
+                                            phi_1153_ = select(true, false, _e746);
                                         } else {
-                                            phi_1157_ = f32();
-                                            phi_1158_ = true;
+                                            phi_1152_ = f32();
+                                            phi_1153_ = true;
                                         }
-                                        let _e752 = phi_1157_;
-                                        let _e754 = phi_1158_;
+                                        let _e752 = phi_1152_;
+                                        let _e754 = phi_1153_;
                                         let _e757 = floor((_e710 + 0.5f));
                                         if ((_e757 - _e710) == 0.5f) {
                                             let _e763 = ((floor((_e757 * 0.5f)) * 2f) != _e757);
                                             if _e763 {
-                                                phi_1178_ = (_e757 - 1f);
+                                                phi_1173_ = (_e757 - 1f);
                                             } else {
-                                                phi_1178_ = f32();
+                                                phi_1173_ = f32();
                                             }
-                                            let _e766 = phi_1178_;
-                                            phi_1180_ = _e766;
-                                            phi_1181_ = select(true, false, _e763);
+                                            let _e766 = phi_1173_;
+                                            phi_1175_ = _e766;
+                                            phi_1176_ = select(true, false, _e763);
                                         } else {
-                                            phi_1180_ = f32();
-                                            phi_1181_ = true;
+                                            phi_1175_ = f32();
+                                            phi_1176_ = true;
                                         }
-                                        let _e769 = phi_1180_;
-                                        let _e771 = phi_1181_;
+                                        let _e769 = phi_1175_;
+                                        let _e771 = phi_1176_;
                                         let _e773 = (select(_e752, _e740, _e754) / _e96);
                                         let _e774 = (select(_e769, _e757, _e771) / _e107);
                                         let _e775 = (_e386 + _e773);
@@ -774,44 +774,44 @@ fn function_() {
                                         if (_e789 > 0f) {
                                             let _e795 = select(select(u32(_e789), 0u, (_e789 < 0f)), 4294967295u, (_e789 > 4294967000f));
                                             let _e796 = (_e783 - 1u);
-                                            phi_1233_ = select(_e795, _e796, (_e796 < _e795));
+                                            phi_1228_ = select(_e795, _e796, (_e796 < _e795));
                                         } else {
-                                            phi_1233_ = 0u;
+                                            phi_1228_ = 0u;
                                         }
-                                        let _e800 = phi_1233_;
+                                        let _e800 = phi_1228_;
                                         let _e801 = f32(_e787);
                                         let _e802 = (_e776 * _e801);
                                         if (_e802 > 0f) {
                                             let _e808 = select(select(u32(_e802), 0u, (_e802 < 0f)), 4294967295u, (_e802 > 4294967000f));
                                             let _e809 = (_e787 - 1u);
-                                            phi_1253_ = select(_e808, _e809, (_e809 < _e808));
+                                            phi_1248_ = select(_e808, _e809, (_e809 < _e808));
                                         } else {
-                                            phi_1253_ = 0u;
+                                            phi_1248_ = 0u;
                                         }
-                                        let _e813 = phi_1253_;
-                                        phi_1255_ = 0u;
-                                        phi_1258_ = 0u;
+                                        let _e813 = phi_1248_;
+                                        phi_1250_ = 0u;
+                                        phi_1253_ = 0u;
                                         loop {
-                                            let _e815 = phi_1255_;
-                                            let _e817 = phi_1258_;
+                                            let _e815 = phi_1250_;
+                                            let _e817 = phi_1253_;
                                             local_2 = _e817;
                                             let _e818 = (_e815 < _e738);
                                             if _e818 {
                                                 let _e819 = (_e815 & 31u);
                                                 let _e821 = (_e101 >> bitcast<u32>(_e819));
                                                 let _e825 = (_e112 >> bitcast<u32>(_e819));
-                                                phi_1256_ = (_e815 + 1u);
-                                                phi_1259_ = (_e817 + (select(1u, _e821, (1u < _e821)) * select(1u, _e825, (1u < _e825))));
+                                                phi_1251_ = (_e815 + 1u);
+                                                phi_1254_ = (_e817 + (select(1u, _e821, (1u < _e821)) * select(1u, _e825, (1u < _e825))));
                                             } else {
-                                                phi_1256_ = u32();
-                                                phi_1259_ = u32();
+                                                phi_1251_ = u32();
+                                                phi_1254_ = u32();
                                             }
-                                            let _e832 = phi_1256_;
-                                            let _e834 = phi_1259_;
+                                            let _e832 = phi_1251_;
+                                            let _e834 = phi_1254_;
                                             continue;
                                             continuing {
-                                                phi_1255_ = _e832;
-                                                phi_1258_ = _e834;
+                                                phi_1250_ = _e832;
+                                                phi_1253_ = _e834;
                                                 break if !(_e818);
                                             }
                                         }
@@ -819,7 +819,7 @@ fn function_() {
                                         let _e840 = (_e839 + ((_e813 * _e783) + _e800));
                                         if (_e840 < _e84) {
                                         } else {
-                                            phi_2608_ = true;
+                                            phi_2603_ = true;
                                             break;
                                         }
                                         let _e844 = mips.member[_e840];
@@ -827,43 +827,43 @@ fn function_() {
                                         if (_e853 > 0f) {
                                             let _e859 = select(select(u32(_e853), 0u, (_e853 < 0f)), 4294967295u, (_e853 > 4294967000f));
                                             let _e860 = (_e783 - 1u);
-                                            phi_1341_ = select(_e859, _e860, (_e860 < _e859));
+                                            phi_1336_ = select(_e859, _e860, (_e860 < _e859));
                                         } else {
-                                            phi_1341_ = 0u;
+                                            phi_1336_ = 0u;
                                         }
-                                        let _e864 = phi_1341_;
+                                        let _e864 = phi_1336_;
                                         let _e865 = (_e778 * _e801);
                                         if (_e865 > 0f) {
                                             let _e871 = select(select(u32(_e865), 0u, (_e865 < 0f)), 4294967295u, (_e865 > 4294967000f));
                                             let _e872 = (_e787 - 1u);
-                                            phi_1361_ = select(_e871, _e872, (_e872 < _e871));
+                                            phi_1356_ = select(_e871, _e872, (_e872 < _e871));
                                         } else {
-                                            phi_1361_ = 0u;
+                                            phi_1356_ = 0u;
                                         }
-                                        let _e876 = phi_1361_;
-                                        phi_1363_ = 0u;
-                                        phi_1366_ = 0u;
+                                        let _e876 = phi_1356_;
+                                        phi_1358_ = 0u;
+                                        phi_1361_ = 0u;
                                         loop {
-                                            let _e878 = phi_1363_;
-                                            let _e880 = phi_1366_;
+                                            let _e878 = phi_1358_;
+                                            let _e880 = phi_1361_;
                                             local_3 = _e880;
                                             let _e881 = (_e878 < _e738);
                                             if _e881 {
                                                 let _e882 = (_e878 & 31u);
                                                 let _e884 = (_e101 >> bitcast<u32>(_e882));
                                                 let _e888 = (_e112 >> bitcast<u32>(_e882));
-                                                phi_1364_ = (_e878 + 1u);
-                                                phi_1367_ = (_e880 + (select(1u, _e884, (1u < _e884)) * select(1u, _e888, (1u < _e888))));
+                                                phi_1359_ = (_e878 + 1u);
+                                                phi_1362_ = (_e880 + (select(1u, _e884, (1u < _e884)) * select(1u, _e888, (1u < _e888))));
                                             } else {
-                                                phi_1364_ = u32();
-                                                phi_1367_ = u32();
+                                                phi_1359_ = u32();
+                                                phi_1362_ = u32();
                                             }
-                                            let _e895 = phi_1364_;
-                                            let _e897 = phi_1367_;
+                                            let _e895 = phi_1359_;
+                                            let _e897 = phi_1362_;
                                             continue;
                                             continuing {
-                                                phi_1363_ = _e895;
-                                                phi_1366_ = _e897;
+                                                phi_1358_ = _e895;
+                                                phi_1361_ = _e897;
                                                 break if !(_e881);
                                             }
                                         }
@@ -871,7 +871,7 @@ fn function_() {
                                         let _e903 = (_e902 + ((_e876 * _e783) + _e864));
                                         if (_e903 < _e84) {
                                         } else {
-                                            phi_2608_ = true;
+                                            phi_2603_ = true;
                                             break;
                                         }
                                         let _e907 = mips.member[_e903];
@@ -881,11 +881,11 @@ fn function_() {
                                         let _e921 = params.member.member_1;
                                         let _e922 = (_e921 > 0f);
                                         if _e922 {
-                                            phi_1442_ = select(true, false, (sqrt((((_e916 * _e916) + (_e917 * _e917)) + (_e918 * _e918))) > _e921));
+                                            phi_1437_ = select(true, false, (sqrt((((_e916 * _e916) + (_e917 * _e917)) + (_e918 * _e918))) > _e921));
                                         } else {
-                                            phi_1442_ = true;
+                                            phi_1437_ = true;
                                         }
-                                        let _e932 = phi_1442_;
+                                        let _e932 = phi_1437_;
                                         if _e932 {
                                             let _e935 = params.member.member;
                                             let _e938 = params.member.member_3;
@@ -894,7 +894,7 @@ fn function_() {
                                             let _e948 = (_e917 - (_e420 * _e943));
                                             let _e949 = (_e918 - (_e421 * _e943));
                                             if (sqrt((((_e947 * _e947) + (_e948 * _e948)) + (_e949 * _e949))) <= 0f) {
-                                                phi_1747_ = 0u;
+                                                phi_1742_ = 0u;
                                             } else {
                                                 let _e959 = ((_e948 * _e421) - (_e420 * _e949));
                                                 let _e962 = ((_e949 * _e419) - (_e421 * _e947));
@@ -910,24 +910,24 @@ fn function_() {
                                                 let _e992 = sqrt((((_e984 * _e984) + (_e985 * _e985)) + (_e986 * _e986)));
                                                 let _e998 = ((((_e984 * _e419) + (_e985 * _e420)) + (_e986 * _e421)) / _e992);
                                                 if (_e998 > 0f) {
-                                                    phi_1545_ = select(1f, _e998, (_e998 < 1f));
+                                                    phi_1540_ = select(1f, _e998, (_e998 < 1f));
                                                 } else {
-                                                    phi_1545_ = 0f;
+                                                    phi_1540_ = 0f;
                                                 }
-                                                let _e1003 = phi_1545_;
+                                                let _e1003 = phi_1540_;
                                                 if ((((_e947 * _e984) + (_e948 * _e985)) + (_e949 * _e986)) < 0f) {
-                                                    phi_1558_ = -(acos(_e1003));
+                                                    phi_1553_ = -(acos(_e1003));
                                                 } else {
-                                                    phi_1558_ = acos(_e1003);
+                                                    phi_1553_ = acos(_e1003);
                                                 }
-                                                let _e1014 = phi_1558_;
+                                                let _e1014 = phi_1553_;
                                                 let _e1015 = (0.02f / _e992);
                                                 if (_e1015 != _e1015) {
-                                                    phi_2513_ = true;
+                                                    phi_2508_ = true;
                                                 } else {
-                                                    phi_2513_ = (0.19634955f <= _e1015);
+                                                    phi_2508_ = (0.19634955f <= _e1015);
                                                 }
-                                                let _e1019 = phi_2513_;
+                                                let _e1019 = phi_2508_;
                                                 let _e1020 = select(_e1015, 0.19634955f, _e1019);
                                                 let _e1024 = (_e916 - (_e419 * _e935));
                                                 let _e1025 = (_e917 - (_e420 * _e935));
@@ -935,121 +935,121 @@ fn function_() {
                                                 let _e1033 = (1f / sqrt((((_e916 * _e916) + (_e917 * _e917)) + (_e918 * _e918))));
                                                 let _e1041 = ((((_e916 * _e1033) * _e419) + ((_e917 * _e1033) * _e420)) + ((_e918 * _e1033) * _e421));
                                                 if (_e1041 > -1f) {
-                                                    phi_1597_ = select(1f, _e1041, (_e1041 < 1f));
+                                                    phi_1592_ = select(1f, _e1041, (_e1041 < 1f));
                                                 } else {
-                                                    phi_1597_ = -1f;
+                                                    phi_1592_ = -1f;
                                                 }
-                                                let _e1046 = phi_1597_;
+                                                let _e1046 = phi_1592_;
                                                 let _e1051 = ((((acos(_e1046) + _e1020) - _e1014) + 1.5707964f) * 0.31830987f);
                                                 if (_e1051 > 0f) {
-                                                    phi_1612_ = select(1f, _e1051, (_e1051 < 1f));
+                                                    phi_1607_ = select(1f, _e1051, (_e1051 < 1f));
                                                 } else {
-                                                    phi_1612_ = 0f;
+                                                    phi_1607_ = 0f;
                                                 }
-                                                let _e1056 = phi_1612_;
+                                                let _e1056 = phi_1607_;
                                                 let _e1063 = (1f / sqrt((((_e1024 * _e1024) + (_e1025 * _e1025)) + (_e1026 * _e1026))));
                                                 let _e1071 = ((((_e1024 * _e1063) * _e419) + ((_e1025 * _e1063) * _e420)) + ((_e1026 * _e1063) * _e421));
                                                 if (_e1071 > -1f) {
-                                                    phi_1640_ = select(1f, _e1071, (_e1071 < 1f));
+                                                    phi_1635_ = select(1f, _e1071, (_e1071 < 1f));
                                                 } else {
-                                                    phi_1640_ = -1f;
+                                                    phi_1635_ = -1f;
                                                 }
-                                                let _e1076 = phi_1640_;
+                                                let _e1076 = phi_1635_;
                                                 let _e1081 = ((((acos(_e1076) + _e1020) - _e1014) + 1.5707964f) * 0.31830987f);
                                                 if (_e1081 > 0f) {
-                                                    phi_1655_ = select(1f, _e1081, (_e1081 < 1f));
+                                                    phi_1650_ = select(1f, _e1081, (_e1081 < 1f));
                                                 } else {
-                                                    phi_1655_ = 0f;
+                                                    phi_1650_ = 0f;
                                                 }
-                                                let _e1086 = phi_1655_;
+                                                let _e1086 = phi_1650_;
                                                 let _e1087 = (_e1056 != _e1056);
                                                 if _e1087 {
-                                                    phi_2528_ = true;
+                                                    phi_2523_ = true;
                                                 } else {
-                                                    phi_2528_ = (_e1086 <= _e1056);
+                                                    phi_2523_ = (_e1086 <= _e1056);
                                                 }
-                                                let _e1090 = phi_2528_;
+                                                let _e1090 = phi_2523_;
                                                 let _e1091 = select(_e1056, _e1086, _e1090);
                                                 if _e1087 {
-                                                    phi_2543_ = true;
+                                                    phi_2538_ = true;
                                                 } else {
-                                                    phi_2543_ = (_e1086 >= _e1056);
+                                                    phi_2538_ = (_e1086 >= _e1056);
                                                 }
-                                                let _e1094 = phi_2543_;
+                                                let _e1094 = phi_2538_;
                                                 let _e1095 = select(_e1056, _e1086, _e1094);
                                                 let _e1097 = floor((32f * _e1091));
                                                 let _e1102 = select(select(u32(_e1097), 0u, (_e1097 < 0f)), 4294967295u, (_e1097 > 4294967000f));
                                                 if (_e938 == 1u) {
                                                     let _e1112 = (_e1095 <= _e1091);
                                                     if _e1112 {
-                                                        phi_1704_ = u32();
+                                                        phi_1699_ = u32();
                                                     } else {
                                                         let _e1114 = ceil((32f * _e1095));
                                                         let _e1119 = select(select(u32(_e1114), 0u, (_e1114 < 0f)), 4294967295u, (_e1114 > 4294967000f));
                                                         let _e1121 = select(_e1119, 32u, (32u < _e1119));
                                                         if (_e1121 > _e1102) {
-                                                            phi_1703_ = (_e1121 - _e1102);
+                                                            phi_1698_ = (_e1121 - _e1102);
                                                         } else {
-                                                            phi_1703_ = 0u;
+                                                            phi_1698_ = 0u;
                                                         }
-                                                        let _e1125 = phi_1703_;
-                                                        phi_1704_ = _e1125;
+                                                        let _e1125 = phi_1698_;
+                                                        phi_1699_ = _e1125;
                                                     }
-                                                    let _e1127 = phi_1704_;
-                                                    phi_1716_ = _e1127;
-                                                    phi_1717_ = select(true, false, _e1112);
+                                                    let _e1127 = phi_1699_;
+                                                    phi_1711_ = _e1127;
+                                                    phi_1712_ = select(true, false, _e1112);
                                                 } else {
                                                     let _e1106 = ceil((32f * (_e1095 - _e1091)));
-                                                    phi_1716_ = select(select(u32(_e1106), 0u, (_e1106 < 0f)), 4294967295u, (_e1106 > 4294967000f));
-                                                    phi_1717_ = true;
+                                                    phi_1711_ = select(select(u32(_e1106), 0u, (_e1106 < 0f)), 4294967295u, (_e1106 > 4294967000f));
+                                                    phi_1712_ = true;
                                                 }
-                                                let _e1130 = phi_1716_;
-                                                let _e1132 = phi_1717_;
+                                                let _e1130 = phi_1711_;
+                                                let _e1132 = phi_1712_;
                                                 if _e1132 {
                                                     if (_e1102 >= 32u) {
-                                                        phi_1740_ = u32();
-                                                        phi_1741_ = true;
+                                                        phi_1735_ = u32();
+                                                        phi_1736_ = true;
                                                     } else {
                                                         let _e1134 = (_e1130 == 0u);
                                                         if _e1134 {
-                                                            phi_1739_ = u32();
+                                                            phi_1734_ = u32();
                                                         } else {
                                                             if (_e1130 >= 32u) {
-                                                                phi_1736_ = 4294967295u;
+                                                                phi_1731_ = 4294967295u;
                                                             } else {
-                                                                phi_1736_ = ((1u << bitcast<u32>((_e1130 & 31u))) - 1u);
+                                                                phi_1731_ = ((1u << bitcast<u32>((_e1130 & 31u))) - 1u);
                                                             }
-                                                            let _e1141 = phi_1736_;
-                                                            phi_1739_ = (_e1141 << bitcast<u32>((_e1102 & 31u)));
+                                                            let _e1141 = phi_1731_;
+                                                            phi_1734_ = (_e1141 << bitcast<u32>((_e1102 & 31u)));
                                                         }
-                                                        let _e1146 = phi_1739_;
-                                                        phi_1740_ = _e1146;
-                                                        phi_1741_ = _e1134;
+                                                        let _e1146 = phi_1734_;
+                                                        phi_1735_ = _e1146;
+                                                        phi_1736_ = _e1134;
                                                     }
-                                                    let _e1148 = phi_1740_;
-                                                    let _e1150 = phi_1741_;
-                                                    phi_1746_ = select(_e1148, 0u, _e1150);
+                                                    let _e1148 = phi_1735_;
+                                                    let _e1150 = phi_1736_;
+                                                    phi_1741_ = select(_e1148, 0u, _e1150);
                                                 } else {
-                                                    phi_1746_ = 0u;
+                                                    phi_1741_ = 0u;
                                                 }
-                                                let _e1153 = phi_1746_;
-                                                phi_1747_ = _e1153;
+                                                let _e1153 = phi_1741_;
+                                                phi_1742_ = _e1153;
                                             }
-                                            let _e1155 = phi_1747_;
-                                            phi_1748_ = _e1155;
+                                            let _e1155 = phi_1742_;
+                                            phi_1743_ = _e1155;
                                         } else {
-                                            phi_1748_ = 0u;
+                                            phi_1743_ = 0u;
                                         }
-                                        let _e1157 = phi_1748_;
+                                        let _e1157 = phi_1743_;
                                         let _e1159 = (((((2f * _e777) - 1f) * _e396) * _e907) - _e398);
                                         let _e1160 = ((((1f - (2f * _e778)) * _e406) * _e907) - _e408);
                                         let _e1161 = (_e907 - _e388);
                                         if _e922 {
-                                            phi_1776_ = select(true, false, (sqrt((((_e1159 * _e1159) + (_e1160 * _e1160)) + (_e1161 * _e1161))) > _e921));
+                                            phi_1771_ = select(true, false, (sqrt((((_e1159 * _e1159) + (_e1160 * _e1160)) + (_e1161 * _e1161))) > _e921));
                                         } else {
-                                            phi_1776_ = true;
+                                            phi_1771_ = true;
                                         }
-                                        let _e1171 = phi_1776_;
+                                        let _e1171 = phi_1771_;
                                         if _e1171 {
                                             let _e1174 = params.member.member;
                                             let _e1177 = params.member.member_3;
@@ -1058,7 +1058,7 @@ fn function_() {
                                             let _e1187 = (_e1160 - (_e420 * _e1182));
                                             let _e1188 = (_e1161 - (_e421 * _e1182));
                                             if (sqrt((((_e1186 * _e1186) + (_e1187 * _e1187)) + (_e1188 * _e1188))) <= 0f) {
-                                                phi_2081_ = 0u;
+                                                phi_2076_ = 0u;
                                             } else {
                                                 let _e1198 = ((_e1187 * _e421) - (_e420 * _e1188));
                                                 let _e1201 = ((_e1188 * _e419) - (_e421 * _e1186));
@@ -1074,24 +1074,24 @@ fn function_() {
                                                 let _e1231 = sqrt((((_e1223 * _e1223) + (_e1224 * _e1224)) + (_e1225 * _e1225)));
                                                 let _e1237 = ((((_e1223 * _e419) + (_e1224 * _e420)) + (_e1225 * _e421)) / _e1231);
                                                 if (_e1237 > 0f) {
-                                                    phi_1879_ = select(1f, _e1237, (_e1237 < 1f));
+                                                    phi_1874_ = select(1f, _e1237, (_e1237 < 1f));
                                                 } else {
-                                                    phi_1879_ = 0f;
+                                                    phi_1874_ = 0f;
                                                 }
-                                                let _e1242 = phi_1879_;
+                                                let _e1242 = phi_1874_;
                                                 if ((((_e1186 * _e1223) + (_e1187 * _e1224)) + (_e1188 * _e1225)) < 0f) {
-                                                    phi_1892_ = -(acos(_e1242));
+                                                    phi_1887_ = -(acos(_e1242));
                                                 } else {
-                                                    phi_1892_ = acos(_e1242);
+                                                    phi_1887_ = acos(_e1242);
                                                 }
-                                                let _e1253 = phi_1892_;
+                                                let _e1253 = phi_1887_;
                                                 let _e1254 = (0.02f / _e1231);
                                                 if (_e1254 != _e1254) {
-                                                    phi_2558_ = true;
+                                                    phi_2553_ = true;
                                                 } else {
-                                                    phi_2558_ = (0.19634955f <= _e1254);
+                                                    phi_2553_ = (0.19634955f <= _e1254);
                                                 }
-                                                let _e1258 = phi_2558_;
+                                                let _e1258 = phi_2553_;
                                                 let _e1259 = select(_e1254, 0.19634955f, _e1258);
                                                 let _e1263 = (_e1159 - (_e419 * _e1174));
                                                 let _e1264 = (_e1160 - (_e420 * _e1174));
@@ -1099,132 +1099,132 @@ fn function_() {
                                                 let _e1272 = (1f / sqrt((((_e1159 * _e1159) + (_e1160 * _e1160)) + (_e1161 * _e1161))));
                                                 let _e1280 = ((((_e1159 * _e1272) * _e419) + ((_e1160 * _e1272) * _e420)) + ((_e1161 * _e1272) * _e421));
                                                 if (_e1280 > -1f) {
-                                                    phi_1931_ = select(1f, _e1280, (_e1280 < 1f));
+                                                    phi_1926_ = select(1f, _e1280, (_e1280 < 1f));
                                                 } else {
-                                                    phi_1931_ = -1f;
+                                                    phi_1926_ = -1f;
                                                 }
-                                                let _e1285 = phi_1931_;
+                                                let _e1285 = phi_1926_;
                                                 let _e1290 = ((((acos(_e1285) + _e1259) - _e1253) + 1.5707964f) * 0.31830987f);
                                                 if (_e1290 > 0f) {
-                                                    phi_1946_ = select(1f, _e1290, (_e1290 < 1f));
+                                                    phi_1941_ = select(1f, _e1290, (_e1290 < 1f));
                                                 } else {
-                                                    phi_1946_ = 0f;
+                                                    phi_1941_ = 0f;
                                                 }
-                                                let _e1295 = phi_1946_;
+                                                let _e1295 = phi_1941_;
                                                 let _e1302 = (1f / sqrt((((_e1263 * _e1263) + (_e1264 * _e1264)) + (_e1265 * _e1265))));
                                                 let _e1310 = ((((_e1263 * _e1302) * _e419) + ((_e1264 * _e1302) * _e420)) + ((_e1265 * _e1302) * _e421));
                                                 if (_e1310 > -1f) {
-                                                    phi_1974_ = select(1f, _e1310, (_e1310 < 1f));
+                                                    phi_1969_ = select(1f, _e1310, (_e1310 < 1f));
                                                 } else {
-                                                    phi_1974_ = -1f;
+                                                    phi_1969_ = -1f;
                                                 }
-                                                let _e1315 = phi_1974_;
+                                                let _e1315 = phi_1969_;
                                                 let _e1320 = ((((acos(_e1315) + _e1259) - _e1253) + 1.5707964f) * 0.31830987f);
                                                 if (_e1320 > 0f) {
-                                                    phi_1989_ = select(1f, _e1320, (_e1320 < 1f));
+                                                    phi_1984_ = select(1f, _e1320, (_e1320 < 1f));
                                                 } else {
-                                                    phi_1989_ = 0f;
+                                                    phi_1984_ = 0f;
                                                 }
-                                                let _e1325 = phi_1989_;
+                                                let _e1325 = phi_1984_;
                                                 let _e1326 = (1f - _e1295);
                                                 let _e1327 = (1f - _e1325);
                                                 let _e1328 = (_e1326 != _e1326);
                                                 if _e1328 {
-                                                    phi_2573_ = true;
+                                                    phi_2568_ = true;
                                                 } else {
-                                                    phi_2573_ = (_e1327 <= _e1326);
+                                                    phi_2568_ = (_e1327 <= _e1326);
                                                 }
-                                                let _e1331 = phi_2573_;
+                                                let _e1331 = phi_2568_;
                                                 let _e1332 = select(_e1326, _e1327, _e1331);
                                                 if _e1328 {
-                                                    phi_2588_ = true;
+                                                    phi_2583_ = true;
                                                 } else {
-                                                    phi_2588_ = (_e1327 >= _e1326);
+                                                    phi_2583_ = (_e1327 >= _e1326);
                                                 }
-                                                let _e1335 = phi_2588_;
+                                                let _e1335 = phi_2583_;
                                                 let _e1336 = select(_e1326, _e1327, _e1335);
                                                 let _e1338 = floor((32f * _e1332));
                                                 let _e1343 = select(select(u32(_e1338), 0u, (_e1338 < 0f)), 4294967295u, (_e1338 > 4294967000f));
                                                 if (_e1177 == 1u) {
                                                     let _e1353 = (_e1336 <= _e1332);
                                                     if _e1353 {
-                                                        phi_2038_ = u32();
+                                                        phi_2033_ = u32();
                                                     } else {
                                                         let _e1355 = ceil((32f * _e1336));
                                                         let _e1360 = select(select(u32(_e1355), 0u, (_e1355 < 0f)), 4294967295u, (_e1355 > 4294967000f));
                                                         let _e1362 = select(_e1360, 32u, (32u < _e1360));
                                                         if (_e1362 > _e1343) {
-                                                            phi_2037_ = (_e1362 - _e1343);
+                                                            phi_2032_ = (_e1362 - _e1343);
                                                         } else {
-                                                            phi_2037_ = 0u;
+                                                            phi_2032_ = 0u;
                                                         }
-                                                        let _e1366 = phi_2037_;
-                                                        phi_2038_ = _e1366;
+                                                        let _e1366 = phi_2032_;
+                                                        phi_2033_ = _e1366;
                                                     }
-                                                    let _e1368 = phi_2038_;
-                                                    phi_2050_ = _e1368;
-                                                    phi_2051_ = select(true, false, _e1353);
+                                                    let _e1368 = phi_2033_;
+                                                    phi_2045_ = _e1368;
+                                                    phi_2046_ = select(true, false, _e1353);
                                                 } else {
                                                     let _e1347 = ceil((32f * (_e1336 - _e1332)));
-                                                    phi_2050_ = select(select(u32(_e1347), 0u, (_e1347 < 0f)), 4294967295u, (_e1347 > 4294967000f));
-                                                    phi_2051_ = true;
+                                                    phi_2045_ = select(select(u32(_e1347), 0u, (_e1347 < 0f)), 4294967295u, (_e1347 > 4294967000f));
+                                                    phi_2046_ = true;
                                                 }
-                                                let _e1371 = phi_2050_;
-                                                let _e1373 = phi_2051_;
+                                                let _e1371 = phi_2045_;
+                                                let _e1373 = phi_2046_;
                                                 if _e1373 {
                                                     if (_e1343 >= 32u) {
-                                                        phi_2074_ = u32();
-                                                        phi_2075_ = true;
+                                                        phi_2069_ = u32();
+                                                        phi_2070_ = true;
                                                     } else {
                                                         let _e1375 = (_e1371 == 0u);
                                                         if _e1375 {
-                                                            phi_2073_ = u32();
+                                                            phi_2068_ = u32();
                                                         } else {
                                                             if (_e1371 >= 32u) {
-                                                                phi_2070_ = 4294967295u;
+                                                                phi_2065_ = 4294967295u;
                                                             } else {
-                                                                phi_2070_ = ((1u << bitcast<u32>((_e1371 & 31u))) - 1u);
+                                                                phi_2065_ = ((1u << bitcast<u32>((_e1371 & 31u))) - 1u);
                                                             }
-                                                            let _e1382 = phi_2070_;
-                                                            phi_2073_ = (_e1382 << bitcast<u32>((_e1343 & 31u)));
+                                                            let _e1382 = phi_2065_;
+                                                            phi_2068_ = (_e1382 << bitcast<u32>((_e1343 & 31u)));
                                                         }
-                                                        let _e1387 = phi_2073_;
-                                                        phi_2074_ = _e1387;
-                                                        phi_2075_ = _e1375;
+                                                        let _e1387 = phi_2068_;
+                                                        phi_2069_ = _e1387;
+                                                        phi_2070_ = _e1375;
                                                     }
-                                                    let _e1389 = phi_2074_;
-                                                    let _e1391 = phi_2075_;
-                                                    phi_2080_ = select(_e1389, 0u, _e1391);
+                                                    let _e1389 = phi_2069_;
+                                                    let _e1391 = phi_2070_;
+                                                    phi_2075_ = select(_e1389, 0u, _e1391);
                                                 } else {
-                                                    phi_2080_ = 0u;
+                                                    phi_2075_ = 0u;
                                                 }
-                                                let _e1394 = phi_2080_;
-                                                phi_2081_ = _e1394;
+                                                let _e1394 = phi_2075_;
+                                                phi_2076_ = _e1394;
                                             }
-                                            let _e1396 = phi_2081_;
-                                            phi_2082_ = _e1396;
+                                            let _e1396 = phi_2076_;
+                                            phi_2077_ = _e1396;
                                         } else {
-                                            phi_2082_ = 0u;
+                                            phi_2077_ = 0u;
                                         }
-                                        let _e1398 = phi_2082_;
-                                        phi_1036_ = (_e684 + 1u);
-                                        phi_1039_ = ((_e686 | _e1157) | _e1398);
+                                        let _e1398 = phi_2077_;
+                                        phi_1031_ = (_e684 + 1u);
+                                        phi_1034_ = ((_e686 | _e1157) | _e1398);
                                     } else {
-                                        phi_1036_ = u32();
-                                        phi_1039_ = u32();
+                                        phi_1031_ = u32();
+                                        phi_1034_ = u32();
                                     }
-                                    let _e1402 = phi_1036_;
-                                    let _e1404 = phi_1039_;
+                                    let _e1402 = phi_1031_;
+                                    let _e1404 = phi_1034_;
                                     continue;
                                     continuing {
-                                        phi_1035_ = _e1402;
-                                        phi_1038_ = _e1404;
-                                        phi_2608_ = _e588;
+                                        phi_1030_ = _e1402;
+                                        phi_1033_ = _e1404;
+                                        phi_2603_ = _e588;
                                         break if !(_e687);
                                     }
                                 }
-                                let _e1407 = phi_2608_;
-                                phi_2778_ = _e1407;
+                                let _e1407 = phi_2603_;
+                                phi_2773_ = _e1407;
                                 if _e1407 {
                                     break;
                                 }
@@ -1235,18 +1235,18 @@ fn function_() {
                                     let _e1469 = sin(_e676);
                                     let _e1474 = ((_e674 + (_e1468 * _e1469)) - cos((_e1468 - _e676)));
                                     if (_e1467 < 0f) {
-                                        phi_2111_ = (_e1474 * -0.25f);
+                                        phi_2106_ = (_e1474 * -0.25f);
                                     } else {
-                                        phi_2111_ = (_e1474 * 0.25f);
+                                        phi_2106_ = (_e1474 * 0.25f);
                                     }
-                                    let _e1479 = phi_2111_;
-                                    phi_2113_ = 0u;
-                                    phi_2116_ = _e1479;
-                                    phi_2118_ = 0f;
+                                    let _e1479 = phi_2106_;
+                                    phi_2108_ = 0u;
+                                    phi_2111_ = _e1479;
+                                    phi_2113_ = 0f;
                                     loop {
-                                        let _e1481 = phi_2113_;
-                                        let _e1483 = phi_2116_;
-                                        let _e1485 = phi_2118_;
+                                        let _e1481 = phi_2108_;
+                                        let _e1483 = phi_2111_;
+                                        let _e1485 = phi_2113_;
                                         local_8 = _e1485;
                                         let _e1486 = (_e1481 < 32u);
                                         if _e1486 {
@@ -1255,133 +1255,133 @@ fn function_() {
                                             let _e1491 = (2f * _e1490);
                                             let _e1496 = ((_e674 + (_e1491 * _e1469)) - cos((_e1491 - _e676)));
                                             if (_e1490 < 0f) {
-                                                phi_2144_ = (_e1496 * -0.25f);
+                                                phi_2139_ = (_e1496 * -0.25f);
                                             } else {
-                                                phi_2144_ = (_e1496 * 0.25f);
+                                                phi_2139_ = (_e1496 * 0.25f);
                                             }
-                                            let _e1501 = phi_2144_;
+                                            let _e1501 = phi_2139_;
                                             let _e1504 = local_7;
                                             if (((_e1504 >> bitcast<u32>((_e1481 & 31u))) & 1u) == 0u) {
-                                                phi_2154_ = (_e1485 + (_e1501 - _e1483));
+                                                phi_2149_ = (_e1485 + (_e1501 - _e1483));
                                             } else {
-                                                phi_2154_ = _e1485;
+                                                phi_2149_ = _e1485;
                                             }
-                                            let _e1512 = phi_2154_;
-                                            phi_2114_ = _e1487;
-                                            phi_2117_ = _e1501;
-                                            phi_2119_ = _e1512;
+                                            let _e1512 = phi_2149_;
+                                            phi_2109_ = _e1487;
+                                            phi_2112_ = _e1501;
+                                            phi_2114_ = _e1512;
                                         } else {
-                                            phi_2114_ = u32();
-                                            phi_2117_ = f32();
-                                            phi_2119_ = f32();
+                                            phi_2109_ = u32();
+                                            phi_2112_ = f32();
+                                            phi_2114_ = f32();
                                         }
-                                        let _e1514 = phi_2114_;
-                                        let _e1516 = phi_2117_;
-                                        let _e1518 = phi_2119_;
+                                        let _e1514 = phi_2109_;
+                                        let _e1516 = phi_2112_;
+                                        let _e1518 = phi_2114_;
                                         continue;
                                         continuing {
-                                            phi_2113_ = _e1514;
-                                            phi_2116_ = _e1516;
-                                            phi_2118_ = _e1518;
+                                            phi_2108_ = _e1514;
+                                            phi_2111_ = _e1516;
+                                            phi_2113_ = _e1518;
                                             break if !(_e1486);
                                         }
                                     }
                                     let _e1521 = local_8;
-                                    phi_2780_ = _e1407;
-                                    phi_2218_ = (_e592 + 1f);
-                                    phi_2219_ = (_e594 + ((_e653 + ((1f - _e653) * 0.05f)) * _e1521));
+                                    phi_2775_ = _e1407;
+                                    phi_2213_ = (_e592 + 1f);
+                                    phi_2214_ = (_e594 + ((_e653 + ((1f - _e653) * 0.05f)) * _e1521));
                                 } else {
                                     if (_e1410 == 1u) {
-                                        phi_2166_ = 0u;
-                                        phi_2169_ = 0f;
+                                        phi_2161_ = 0u;
+                                        phi_2164_ = 0f;
                                         loop {
-                                            let _e1422 = phi_2166_;
-                                            let _e1424 = phi_2169_;
+                                            let _e1422 = phi_2161_;
+                                            let _e1424 = phi_2164_;
                                             local_6 = _e1424;
                                             let _e1425 = (_e1422 < 4u);
                                             if _e1425 {
                                                 local = array<type_25, 4>(type_25(4026531855u, 0.0095061f), type_25(251658480u, 0.0270951f), type_25(15732480u, 0.0405571f), type_25(1044480u, 0.0478421f));
                                                 if _e1425 {
                                                 } else {
-                                                    phi_2775_ = true;
+                                                    phi_2770_ = true;
                                                     break;
                                                 }
                                                 let _e1428 = local[_e1422].member;
                                                 let _e1431 = local[_e1422].member_1;
                                                 let _e1433 = local_5;
-                                                phi_2167_ = (_e1422 + 1u);
-                                                phi_2170_ = (_e1424 + (f32(countOneBits((_e1433 & _e1428))) * _e1431));
+                                                phi_2162_ = (_e1422 + 1u);
+                                                phi_2165_ = (_e1424 + (f32(countOneBits((_e1433 & _e1428))) * _e1431));
                                             } else {
-                                                phi_2167_ = u32();
-                                                phi_2170_ = f32();
+                                                phi_2162_ = u32();
+                                                phi_2165_ = f32();
                                             }
-                                            let _e1441 = phi_2167_;
-                                            let _e1443 = phi_2170_;
+                                            let _e1441 = phi_2162_;
+                                            let _e1443 = phi_2165_;
                                             continue;
                                             continuing {
-                                                phi_2166_ = _e1441;
-                                                phi_2169_ = _e1443;
-                                                phi_2775_ = _e1407;
+                                                phi_2161_ = _e1441;
+                                                phi_2164_ = _e1443;
+                                                phi_2770_ = _e1407;
                                                 break if !(_e1425);
                                             }
                                         }
-                                        let _e1446 = phi_2775_;
-                                        phi_2778_ = _e1446;
+                                        let _e1446 = phi_2770_;
+                                        phi_2773_ = _e1446;
                                         if _e1446 {
                                             break;
                                         }
                                         let _e1448 = local_6;
                                         let _e1449 = (1f - _e1448);
                                         if (_e1449 > 0f) {
-                                            phi_2205_ = select(1f, _e1449, (_e1449 < 1f));
+                                            phi_2200_ = select(1f, _e1449, (_e1449 < 1f));
                                         } else {
-                                            phi_2205_ = 0f;
+                                            phi_2200_ = 0f;
                                         }
-                                        let _e1454 = phi_2205_;
-                                        phi_2786_ = _e1446;
-                                        phi_2216_ = (_e592 + _e653);
-                                        phi_2217_ = (_e594 + (_e653 * _e1454));
+                                        let _e1454 = phi_2200_;
+                                        phi_2781_ = _e1446;
+                                        phi_2211_ = (_e592 + _e653);
+                                        phi_2212_ = (_e594 + (_e653 * _e1454));
                                     } else {
                                         let _e1414 = local_4;
-                                        phi_2786_ = _e1407;
-                                        phi_2216_ = (_e592 + 1f);
-                                        phi_2217_ = (_e594 + (1f - (f32(countOneBits(_e1414)) * 0.03125f)));
+                                        phi_2781_ = _e1407;
+                                        phi_2211_ = (_e592 + 1f);
+                                        phi_2212_ = (_e594 + (1f - (f32(countOneBits(_e1414)) * 0.03125f)));
                                     }
-                                    let _e1459 = phi_2786_;
-                                    let _e1461 = phi_2216_;
-                                    let _e1463 = phi_2217_;
-                                    phi_2780_ = _e1459;
-                                    phi_2218_ = _e1461;
-                                    phi_2219_ = _e1463;
+                                    let _e1459 = phi_2781_;
+                                    let _e1461 = phi_2211_;
+                                    let _e1463 = phi_2212_;
+                                    phi_2775_ = _e1459;
+                                    phi_2213_ = _e1461;
+                                    phi_2214_ = _e1463;
                                 }
-                                let _e1526 = phi_2780_;
-                                let _e1528 = phi_2218_;
-                                let _e1530 = phi_2219_;
-                                phi_2779_ = _e1526;
+                                let _e1526 = phi_2775_;
+                                let _e1528 = phi_2213_;
+                                let _e1530 = phi_2214_;
+                                phi_2774_ = _e1526;
                                 phi_850_ = (_e590 + 1u);
                                 phi_853_ = _e1528;
                                 phi_855_ = _e1530;
                             } else {
-                                phi_2779_ = _e588;
+                                phi_2774_ = _e588;
                                 phi_850_ = u32();
                                 phi_853_ = f32();
                                 phi_855_ = f32();
                             }
-                            let _e1533 = phi_2779_;
+                            let _e1533 = phi_2774_;
                             let _e1535 = phi_850_;
                             let _e1537 = phi_853_;
                             let _e1539 = phi_855_;
                             continue;
                             continuing {
-                                phi_2657_ = _e1533;
+                                phi_2652_ = _e1533;
                                 phi_849_ = _e1535;
                                 phi_852_ = _e1537;
                                 phi_854_ = _e1539;
-                                phi_2778_ = _e1533;
+                                phi_2773_ = _e1533;
                                 break if !(_e595);
                             }
                         }
-                        let _e1542 = phi_2778_;
+                        let _e1542 = phi_2773_;
                         if _e1542 {
                             break;
                         }
@@ -1389,32 +1389,32 @@ fn function_() {
                         if (_e1544 > 0f) {
                             let _e1547 = local_10;
                             let _e1549 = local_11;
-                            phi_2226_ = (_e1547 / _e1549);
+                            phi_2221_ = (_e1547 / _e1549);
                         } else {
-                            phi_2226_ = 1f;
+                            phi_2221_ = 1f;
                         }
-                        let _e1552 = phi_2226_;
+                        let _e1552 = phi_2221_;
                         let _e1556 = params.member.member_4.member_6;
                         let _e1557 = pow(_e1552, _e1556);
                         if (_e1557 != _e1557) {
-                            phi_2603_ = true;
+                            phi_2598_ = true;
                         } else {
-                            phi_2603_ = (0.03f >= _e1557);
+                            phi_2598_ = (0.03f >= _e1557);
                         }
-                        let _e1561 = phi_2603_;
+                        let _e1561 = phi_2598_;
                         let _e1563 = (select(_e1557, 0.03f, _e1561) * 0.6666667f);
                         if (_e1563 > 0f) {
-                            phi_2242_ = select(1f, _e1563, (_e1563 < 1f));
+                            phi_2237_ = select(1f, _e1563, (_e1563 < 1f));
                         } else {
-                            phi_2242_ = 0f;
+                            phi_2237_ = 0f;
                         }
-                        let _e1568 = phi_2242_;
+                        let _e1568 = phi_2237_;
                         let _e1570 = ((_e1568 * 255f) + 0.5f);
-                        phi_2274_ = type_21(select(select(u32(_e1570), 0u, (_e1570 < 0f)), 4294967295u, (_e1570 > 4294967000f)), _e381);
+                        phi_2269_ = type_21(select(select(u32(_e1570), 0u, (_e1570 < 0f)), 4294967295u, (_e1570 > 4294967000f)), _e381);
                     } else {
-                        phi_2274_ = type_21(170u, _e381);
+                        phi_2269_ = type_21(170u, _e381);
                     }
-                    let _e1578 = phi_2274_;
+                    let _e1578 = phi_2269_;
                     if (_e118 < arrayLength((&terms.member))) {
                     } else {
                         break;

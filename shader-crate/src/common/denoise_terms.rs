@@ -5,7 +5,7 @@
 use spirv_std::num_traits::Float;
 
 use crate::common::math::{floor, sat};
-use crate::glam::{Vec4, vec4};
+use crate::glam::{Vec3, Vec4, vec4};
 
 /// Round half to even (HLSL `round`, spec §1.5).
 #[inline]
@@ -51,6 +51,13 @@ pub fn store_term(vis: f32) -> u32 {
 pub fn pack_bent_term(c: Vec4) -> u32 {
     let q = |x: f32| (sat(x) * 255.0 + 0.5) as u32;
     q(c.x) | (q(c.y) << 8) | (q(c.z) << 16) | (q(c.w) << 24)
+}
+
+/// A unit bent normal `n` and the channel `a` packed as [`pack_bent_term`] (rgb = n·0.5 + 0.5).
+#[inline]
+pub fn pack_bent_normal(n: Vec3, a: f32) -> u32 {
+    let c = n * 0.5 + 0.5;
+    pack_bent_term(vec4(c.x, c.y, c.z, a))
 }
 
 /// [`pack_bent_term`] back to four channels in [0, 1].

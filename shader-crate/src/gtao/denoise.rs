@@ -2,7 +2,7 @@
 //! `max(1, DenoisePasses)` times; the last pass rescales by the 1.5 headroom.
 
 use super::GtaoParams;
-use crate::common::denoise_terms::{pack_bent_term, unpack_bent_term, unpack_edges};
+use crate::common::denoise_terms::{pack_bent_normal, pack_bent_term, unpack_bent_term, unpack_edges};
 use crate::common::math::sat;
 use crate::common::screen_space::neighbour;
 use crate::glam::{UVec2, Vec4, vec3, vec4};
@@ -87,8 +87,7 @@ pub fn denoise_pixel(params: &GtaoParams, terms: &[u32], edges: &[u32], p: UVec2
         let l = n.length();
         let n = if l > 0.0 { n / l } else { vec3(0.0, 0.0, -1.0) };
         let a = ((value.w * 1.5 * 255.0 + 0.5) as u32).min(255) as f32 / 255.0;
-        let out = vec4(n.x * 0.5 + 0.5, n.y * 0.5 + 0.5, -n.z * 0.5 + 0.5, a);
-        return Denoised { term: pack_bent_term(out), last, visibility: a };
+        return Denoised { term: pack_bent_normal(vec3(n.x, n.y, -n.z), a), last, visibility: a };
     }
     let value = weighted::<f32>(terms, w, &stencil) / total;
     let term = if last { ((value * 1.5 * 255.0 + 0.5) as u32).min(255) } else { (value * 255.0 + 0.5) as u32 };

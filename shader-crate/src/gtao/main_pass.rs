@@ -6,12 +6,12 @@
 use spirv_std::num_traits::Float;
 
 use super::{GtaoParams, mip_texel};
-use crate::common::denoise_terms::{edges, pack_bent_term, pack_edges, round_even, store_term};
+use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, round_even, store_term};
 use crate::common::math::{ceil, clamp, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::{decode_normal, encode_normal};
 use crate::common::screen_space::{clamp_index, neighbour, view_pos};
-use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3, vec4};
+use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
 
 /// Output of the main pass for one pixel: the working AO term `uint(sat(vis/1.5)·255 + 0.5)`
 /// and the packed LRTB edges.
@@ -95,7 +95,7 @@ pub fn gtao_pixel(params: &GtaoParams, mips: &[f32], normals: &[u32], p: UVec2) 
     if !valid {
         // Background: visible, its bent normal toward the camera.
         let term =
-            if params.bent_normals != 0 { pack_bent_term(vec4(0.5, 0.5, 0.0, 1.0 / 1.5)) } else { store_term(1.0) };
+            if params.bent_normals != 0 { pack_bent_normal(vec3(0.0, 0.0, -1.0), 1.0 / 1.5) } else { store_term(1.0) };
         return GtaoPixel { term, edges: packed };
     }
     let falloff_range = params.falloff_range * px.r;
@@ -114,8 +114,7 @@ pub fn gtao_pixel(params: &GtaoParams, mips: &[f32], normals: &[u32], p: UVec2) 
     if params.bent_normals != 0 {
         let l = bent.length();
         let b = if l > 0.0 { bent / l } else { px.n };
-        let c = b * 0.5 + 0.5;
-        return GtaoPixel { term: pack_bent_term(vec4(c.x, c.y, c.z, vis / 1.5)), edges: packed };
+        return GtaoPixel { term: pack_bent_normal(b, vis / 1.5), edges: packed };
     }
     GtaoPixel { term: store_term(vis), edges: packed }
 }
@@ -169,10 +168,6 @@ pub struct SliceFrame {
     pub omega: Vec2,
     /// Slice direction in view space, `(cos φ, sin φ, 0)`.
     pub dir: Vec3,
-    /// `dir` made orthogonal to v: points toward side 0 of the slice.
-    pub ortho: Vec3,
-    /// The normal projected into the slice plane.
-    pub projected: Vec3,
     /// `L = |projected|` (before the step-8 fudge).
     pub len: f32,
     pub cos_n: f32,
@@ -203,7 +198,7 @@ pub fn slice_frame(params: &GtaoParams, px: &PixelSetup, s: u32) -> SliceFrame {
     };
     let cos_n = sat(projected.dot(px.v) / len);
     let gamma = sign * fast_acos(cos_n);
-    SliceFrame { omega, dir, ortho, projected, len, cos_n, sign, gamma }
+    SliceFrame { omega, dir, len, cos_n, sign, gamma }
 }
 
 /// Step `k` of slice `s`: the view positions of the two samples, `Q0` at uv + offset (side 0)
