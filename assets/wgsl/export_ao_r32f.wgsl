@@ -34,7 +34,6 @@ var out: texture_storage_2d<r32float,read_write>;
 
 fn function_() {
     var phi_56_: bool;
-    var phi_125_: f32;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -62,13 +61,7 @@ fn function_() {
                     break;
                 }
                 let _e67 = ao.member[_e63];
-                if (_e67 > 0f) {
-                    phi_125_ = select(1f, _e67, (_e67 < 1f));
-                } else {
-                    phi_125_ = 0f;
-                }
-                let _e72 = phi_125_;
-                textureStore(out, vec2<u32>(_e13.x, _e13.y), vec4(_e72));
+                textureStore(out, vec2<u32>(_e13.x, _e13.y), vec4(select(0f, select(1f, _e67, (_e67 < 1f)), (_e67 > 0f))));
             }
             break;
         }

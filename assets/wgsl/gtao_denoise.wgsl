@@ -65,11 +65,6 @@ fn function_() {
     var phi_268_: i32;
     var phi_287_: i32;
     var phi_306_: i32;
-    var phi_430_: f32;
-    var phi_443_: f32;
-    var phi_454_: f32;
-    var phi_465_: f32;
-    var phi_476_: f32;
     var phi_511_: i32;
     var phi_530_: i32;
     var phi_549_: i32;
@@ -80,14 +75,6 @@ fn function_() {
     var phi_644_: i32;
     var phi_846_: u32;
     var phi_1171_: vec3<f32>;
-    var phi_1282_: f32;
-    var phi_1303_: f32;
-    var phi_1324_: f32;
-    var phi_1345_: f32;
-    var phi_1366_: f32;
-    var phi_1387_: f32;
-    var phi_1408_: f32;
-    var phi_1429_: f32;
     var phi_1221_: type_22;
     var phi_1222_: type_22;
 
@@ -244,45 +231,19 @@ fn function_() {
                     let _e250 = ((f32(((_e229 >> bitcast<u32>(2i)) & 3u)) * 0.33333334f) * (f32((_e189 & 3u)) * 0.33333334f));
                     let _e251 = ((f32((_e229 & 3u)) * 0.33333334f) * (f32(((_e208 >> bitcast<u32>(2i)) & 3u)) * 0.33333334f));
                     let _e255 = (1.5f - (((_e248 + _e249) + _e250) + _e251));
-                    if (_e255 > 0f) {
-                        phi_430_ = select(1f, _e255, (_e255 < 1f));
-                    } else {
-                        phi_430_ = 0f;
-                    }
-                    let _e260 = phi_430_;
-                    let _e261 = (_e260 * 0.33333334f);
-                    let _e262 = (_e248 + _e261);
-                    if (_e262 > 0f) {
-                        phi_443_ = select(1f, _e262, (_e262 < 1f));
-                    } else {
-                        phi_443_ = 0f;
-                    }
-                    let _e267 = phi_443_;
-                    let _e268 = (_e249 + _e261);
-                    if (_e268 > 0f) {
-                        phi_454_ = select(1f, _e268, (_e268 < 1f));
-                    } else {
-                        phi_454_ = 0f;
-                    }
-                    let _e273 = phi_454_;
-                    let _e274 = (_e250 + _e261);
-                    if (_e274 > 0f) {
-                        phi_465_ = select(1f, _e274, (_e274 < 1f));
-                    } else {
-                        phi_465_ = 0f;
-                    }
-                    let _e279 = phi_465_;
-                    let _e280 = (_e251 + _e261);
-                    if (_e280 > 0f) {
-                        phi_476_ = select(1f, _e280, (_e280 < 1f));
-                    } else {
-                        phi_476_ = 0f;
-                    }
-                    let _e285 = phi_476_;
-                    let _e289 = (0.425f * ((_e267 * (f32(((_e151 >> bitcast<u32>(2i)) & 3u)) * 0.33333334f)) + (_e279 * (f32(((_e189 >> bitcast<u32>(6i)) & 3u)) * 0.33333334f))));
-                    let _e293 = (0.425f * ((_e279 * (f32(((_e189 >> bitcast<u32>(4i)) & 3u)) * 0.33333334f)) + (_e273 * (f32(((_e170 >> bitcast<u32>(2i)) & 3u)) * 0.33333334f))));
-                    let _e297 = (0.425f * ((_e285 * (f32(((_e208 >> bitcast<u32>(6i)) & 3u)) * 0.33333334f)) + (_e267 * (f32((_e151 & 3u)) * 0.33333334f))));
-                    let _e301 = (0.425f * ((_e273 * (f32((_e170 & 3u)) * 0.33333334f)) + (_e285 * (f32(((_e208 >> bitcast<u32>(4i)) & 3u)) * 0.33333334f))));
+                    let _e260 = (select(0f, select(1f, _e255, (_e255 < 1f)), (_e255 > 0f)) * 0.33333334f);
+                    let _e261 = (_e248 + _e260);
+                    let _e265 = select(0f, select(1f, _e261, (_e261 < 1f)), (_e261 > 0f));
+                    let _e266 = (_e249 + _e260);
+                    let _e270 = select(0f, select(1f, _e266, (_e266 < 1f)), (_e266 > 0f));
+                    let _e271 = (_e250 + _e260);
+                    let _e275 = select(0f, select(1f, _e271, (_e271 < 1f)), (_e271 > 0f));
+                    let _e276 = (_e251 + _e260);
+                    let _e280 = select(0f, select(1f, _e276, (_e276 < 1f)), (_e276 > 0f));
+                    let _e284 = (0.425f * ((_e265 * (f32(((_e151 >> bitcast<u32>(2i)) & 3u)) * 0.33333334f)) + (_e275 * (f32(((_e189 >> bitcast<u32>(6i)) & 3u)) * 0.33333334f))));
+                    let _e288 = (0.425f * ((_e275 * (f32(((_e189 >> bitcast<u32>(4i)) & 3u)) * 0.33333334f)) + (_e270 * (f32(((_e170 >> bitcast<u32>(2i)) & 3u)) * 0.33333334f))));
+                    let _e292 = (0.425f * ((_e280 * (f32(((_e208 >> bitcast<u32>(6i)) & 3u)) * 0.33333334f)) + (_e265 * (f32((_e151 & 3u)) * 0.33333334f))));
+                    let _e296 = (0.425f * ((_e270 * (f32((_e170 & 3u)) * 0.33333334f)) + (_e280 * (f32(((_e208 >> bitcast<u32>(4i)) & 3u)) * 0.33333334f))));
                     if _e92 {
                     } else {
                         break;
@@ -292,8 +253,8 @@ fn function_() {
                     } else {
                         phi_511_ = select(_e89, _e91, (_e89 > _e91));
                     }
-                    let _e305 = phi_511_;
-                    let _e306 = bitcast<u32>(_e305);
+                    let _e300 = phi_511_;
+                    let _e301 = bitcast<u32>(_e300);
                     if _e102 {
                     } else {
                         break;
@@ -303,8 +264,8 @@ fn function_() {
                     } else {
                         phi_530_ = select(_e127, _e101, (_e127 > _e101));
                     }
-                    let _e310 = phi_530_;
-                    let _e311 = bitcast<u32>(_e310);
+                    let _e305 = phi_530_;
+                    let _e306 = bitcast<u32>(_e305);
                     if _e92 {
                     } else {
                         break;
@@ -314,8 +275,8 @@ fn function_() {
                     } else {
                         phi_549_ = select(_e109, _e91, (_e109 > _e91));
                     }
-                    let _e315 = phi_549_;
-                    let _e316 = bitcast<u32>(_e315);
+                    let _e310 = phi_549_;
+                    let _e311 = bitcast<u32>(_e310);
                     if _e102 {
                     } else {
                         break;
@@ -325,8 +286,8 @@ fn function_() {
                     } else {
                         phi_568_ = select(_e127, _e101, (_e127 > _e101));
                     }
-                    let _e320 = phi_568_;
-                    let _e321 = bitcast<u32>(_e320);
+                    let _e315 = phi_568_;
+                    let _e316 = bitcast<u32>(_e315);
                     if _e92 {
                     } else {
                         break;
@@ -336,8 +297,8 @@ fn function_() {
                     } else {
                         phi_587_ = select(_e89, _e91, (_e89 > _e91));
                     }
-                    let _e325 = phi_587_;
-                    let _e326 = bitcast<u32>(_e325);
+                    let _e320 = phi_587_;
+                    let _e321 = bitcast<u32>(_e320);
                     if _e102 {
                     } else {
                         break;
@@ -347,8 +308,8 @@ fn function_() {
                     } else {
                         phi_606_ = select(_e139, _e101, (_e139 > _e101));
                     }
-                    let _e330 = phi_606_;
-                    let _e331 = bitcast<u32>(_e330);
+                    let _e325 = phi_606_;
+                    let _e326 = bitcast<u32>(_e325);
                     if _e92 {
                     } else {
                         break;
@@ -358,8 +319,8 @@ fn function_() {
                     } else {
                         phi_625_ = select(_e109, _e91, (_e109 > _e91));
                     }
-                    let _e335 = phi_625_;
-                    let _e336 = bitcast<u32>(_e335);
+                    let _e330 = phi_625_;
+                    let _e331 = bitcast<u32>(_e330);
                     if _e102 {
                     } else {
                         break;
@@ -369,217 +330,169 @@ fn function_() {
                     } else {
                         phi_644_ = select(_e139, _e101, (_e139 > _e101));
                     }
-                    let _e340 = phi_644_;
-                    let _e341 = bitcast<u32>(_e340);
-                    let _e349 = ((((((((_e87 + _e267) + _e273) + _e279) + _e285) + _e289) + _e293) + _e297) + _e301);
-                    let _e352 = params.member.member_13;
-                    if (_e352 == 0u) {
+                    let _e335 = phi_644_;
+                    let _e336 = bitcast<u32>(_e335);
+                    let _e344 = ((((((((_e87 + _e265) + _e270) + _e275) + _e280) + _e284) + _e288) + _e292) + _e296);
+                    let _e347 = params.member.member_13;
+                    if (_e347 == 0u) {
                         if (_e225 < _e43) {
                         } else {
                             break;
                         }
-                        let _e357 = terms_in.member[_e225];
+                        let _e352 = terms_in.member[_e225];
                         if (_e147 < _e43) {
                         } else {
                             break;
                         }
-                        let _e364 = terms_in.member[_e147];
+                        let _e359 = terms_in.member[_e147];
                         if (_e166 < _e43) {
                         } else {
                             break;
                         }
-                        let _e372 = terms_in.member[_e166];
+                        let _e367 = terms_in.member[_e166];
                         if (_e185 < _e43) {
                         } else {
                             break;
                         }
-                        let _e380 = terms_in.member[_e185];
+                        let _e375 = terms_in.member[_e185];
                         if (_e204 < _e43) {
                         } else {
                             break;
                         }
-                        let _e388 = terms_in.member[_e204];
-                        let _e394 = ((_e311 * _e59) + _e306);
-                        if (_e394 < _e43) {
+                        let _e383 = terms_in.member[_e204];
+                        let _e389 = ((_e306 * _e59) + _e301);
+                        if (_e389 < _e43) {
                         } else {
                             break;
                         }
-                        let _e398 = terms_in.member[_e394];
-                        let _e404 = ((_e321 * _e59) + _e316);
-                        if (_e404 < _e43) {
+                        let _e393 = terms_in.member[_e389];
+                        let _e399 = ((_e316 * _e59) + _e311);
+                        if (_e399 < _e43) {
                         } else {
                             break;
                         }
-                        let _e408 = terms_in.member[_e404];
-                        let _e414 = ((_e331 * _e59) + _e326);
-                        if (_e414 < _e43) {
+                        let _e403 = terms_in.member[_e399];
+                        let _e409 = ((_e326 * _e59) + _e321);
+                        if (_e409 < _e43) {
                         } else {
                             break;
                         }
-                        let _e418 = terms_in.member[_e414];
-                        let _e424 = ((_e341 * _e59) + _e336);
-                        if (_e424 < _e43) {
+                        let _e413 = terms_in.member[_e409];
+                        let _e419 = ((_e336 * _e59) + _e331);
+                        if (_e419 < _e43) {
                         } else {
                             break;
                         }
-                        let _e428 = terms_in.member[_e424];
-                        let _e433 = (((((((((((f32(_e357) * 0.003921569f) * _e87) + ((f32(_e364) * 0.003921569f) * _e267)) + ((f32(_e372) * 0.003921569f) * _e273)) + ((f32(_e380) * 0.003921569f) * _e279)) + ((f32(_e388) * 0.003921569f) * _e285)) + ((f32(_e398) * 0.003921569f) * _e289)) + ((f32(_e408) * 0.003921569f) * _e293)) + ((f32(_e418) * 0.003921569f) * _e297)) + ((f32(_e428) * 0.003921569f) * _e301)) / _e349);
+                        let _e423 = terms_in.member[_e419];
+                        let _e428 = (((((((((((f32(_e352) * 0.003921569f) * _e87) + ((f32(_e359) * 0.003921569f) * _e265)) + ((f32(_e367) * 0.003921569f) * _e270)) + ((f32(_e375) * 0.003921569f) * _e275)) + ((f32(_e383) * 0.003921569f) * _e280)) + ((f32(_e393) * 0.003921569f) * _e284)) + ((f32(_e403) * 0.003921569f) * _e288)) + ((f32(_e413) * 0.003921569f) * _e292)) + ((f32(_e423) * 0.003921569f) * _e296)) / _e344);
                         if _e83 {
-                            let _e435 = ((_e433 * 382.5f) + 0.5f);
-                            let _e440 = select(select(u32(_e435), 0u, (_e435 < 0f)), 4294967295u, (_e435 > 4294967000f));
-                            phi_846_ = select(_e440, 255u, (255u < _e440));
+                            let _e430 = ((_e428 * 382.5f) + 0.5f);
+                            let _e435 = select(select(u32(_e430), 0u, (_e430 < 0f)), 4294967295u, (_e430 > 4294967000f));
+                            phi_846_ = select(_e435, 255u, (255u < _e435));
                         } else {
-                            let _e444 = ((_e433 * 255f) + 0.5f);
-                            phi_846_ = select(select(u32(_e444), 0u, (_e444 < 0f)), 4294967295u, (_e444 > 4294967000f));
+                            let _e439 = ((_e428 * 255f) + 0.5f);
+                            phi_846_ = select(select(u32(_e439), 0u, (_e439 < 0f)), 4294967295u, (_e439 > 4294967000f));
                         }
-                        let _e451 = phi_846_;
-                        phi_1222_ = type_22(_e451, (f32(_e451) * 0.003921569f), _e83);
+                        let _e446 = phi_846_;
+                        phi_1222_ = type_22(_e446, (f32(_e446) * 0.003921569f), _e83);
                     } else {
                         if (_e225 < _e43) {
                         } else {
                             break;
                         }
-                        let _e458 = terms_in.member[_e225];
+                        let _e453 = terms_in.member[_e225];
                         if (_e147 < _e43) {
                         } else {
                             break;
                         }
-                        let _e483 = terms_in.member[_e147];
+                        let _e478 = terms_in.member[_e147];
                         if (_e166 < _e43) {
                         } else {
                             break;
                         }
-                        let _e512 = terms_in.member[_e166];
+                        let _e507 = terms_in.member[_e166];
                         if (_e185 < _e43) {
                         } else {
                             break;
                         }
-                        let _e541 = terms_in.member[_e185];
+                        let _e536 = terms_in.member[_e185];
                         if (_e204 < _e43) {
                         } else {
                             break;
                         }
-                        let _e570 = terms_in.member[_e204];
-                        let _e597 = ((_e311 * _e59) + _e306);
-                        if (_e597 < _e43) {
+                        let _e565 = terms_in.member[_e204];
+                        let _e592 = ((_e306 * _e59) + _e301);
+                        if (_e592 < _e43) {
                         } else {
                             break;
                         }
-                        let _e601 = terms_in.member[_e597];
-                        let _e628 = ((_e321 * _e59) + _e316);
-                        if (_e628 < _e43) {
+                        let _e596 = terms_in.member[_e592];
+                        let _e623 = ((_e316 * _e59) + _e311);
+                        if (_e623 < _e43) {
                         } else {
                             break;
                         }
-                        let _e632 = terms_in.member[_e628];
-                        let _e659 = ((_e331 * _e59) + _e326);
-                        if (_e659 < _e43) {
+                        let _e627 = terms_in.member[_e623];
+                        let _e654 = ((_e326 * _e59) + _e321);
+                        if (_e654 < _e43) {
                         } else {
                             break;
                         }
-                        let _e663 = terms_in.member[_e659];
-                        let _e690 = ((_e341 * _e59) + _e336);
-                        if (_e690 < _e43) {
+                        let _e658 = terms_in.member[_e654];
+                        let _e685 = ((_e336 * _e59) + _e331);
+                        if (_e685 < _e43) {
                         } else {
                             break;
                         }
-                        let _e694 = terms_in.member[_e690];
-                        let _e720 = (((((((((((f32((_e458 & 255u)) * 0.003921569f) * _e87) + ((f32((_e483 & 255u)) * 0.003921569f) * _e267)) + ((f32((_e512 & 255u)) * 0.003921569f) * _e273)) + ((f32((_e541 & 255u)) * 0.003921569f) * _e279)) + ((f32((_e570 & 255u)) * 0.003921569f) * _e285)) + ((f32((_e601 & 255u)) * 0.003921569f) * _e289)) + ((f32((_e632 & 255u)) * 0.003921569f) * _e293)) + ((f32((_e663 & 255u)) * 0.003921569f) * _e297)) + ((f32((_e694 & 255u)) * 0.003921569f) * _e301)) / _e349);
-                        let _e721 = (((((((((((f32(((_e458 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e87) + ((f32(((_e483 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e267)) + ((f32(((_e512 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e273)) + ((f32(((_e541 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e279)) + ((f32(((_e570 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e285)) + ((f32(((_e601 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e289)) + ((f32(((_e632 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e293)) + ((f32(((_e663 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e297)) + ((f32(((_e694 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e301)) / _e349);
-                        let _e722 = (((((((((((f32(((_e458 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e87) + ((f32(((_e483 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e267)) + ((f32(((_e512 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e273)) + ((f32(((_e541 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e279)) + ((f32(((_e570 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e285)) + ((f32(((_e601 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e289)) + ((f32(((_e632 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e293)) + ((f32(((_e663 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e297)) + ((f32(((_e694 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e301)) / _e349);
-                        let _e723 = (((((((((((f32((_e458 >> bitcast<u32>(24i))) * 0.003921569f) * _e87) + ((f32((_e483 >> bitcast<u32>(24i))) * 0.003921569f) * _e267)) + ((f32((_e512 >> bitcast<u32>(24i))) * 0.003921569f) * _e273)) + ((f32((_e541 >> bitcast<u32>(24i))) * 0.003921569f) * _e279)) + ((f32((_e570 >> bitcast<u32>(24i))) * 0.003921569f) * _e285)) + ((f32((_e601 >> bitcast<u32>(24i))) * 0.003921569f) * _e289)) + ((f32((_e632 >> bitcast<u32>(24i))) * 0.003921569f) * _e293)) + ((f32((_e663 >> bitcast<u32>(24i))) * 0.003921569f) * _e297)) + ((f32((_e694 >> bitcast<u32>(24i))) * 0.003921569f) * _e301)) / _e349);
+                        let _e689 = terms_in.member[_e685];
+                        let _e715 = (((((((((((f32((_e453 & 255u)) * 0.003921569f) * _e87) + ((f32((_e478 & 255u)) * 0.003921569f) * _e265)) + ((f32((_e507 & 255u)) * 0.003921569f) * _e270)) + ((f32((_e536 & 255u)) * 0.003921569f) * _e275)) + ((f32((_e565 & 255u)) * 0.003921569f) * _e280)) + ((f32((_e596 & 255u)) * 0.003921569f) * _e284)) + ((f32((_e627 & 255u)) * 0.003921569f) * _e288)) + ((f32((_e658 & 255u)) * 0.003921569f) * _e292)) + ((f32((_e689 & 255u)) * 0.003921569f) * _e296)) / _e344);
+                        let _e716 = (((((((((((f32(((_e453 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e87) + ((f32(((_e478 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e265)) + ((f32(((_e507 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e270)) + ((f32(((_e536 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e275)) + ((f32(((_e565 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e280)) + ((f32(((_e596 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e284)) + ((f32(((_e627 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e288)) + ((f32(((_e658 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e292)) + ((f32(((_e689 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e296)) / _e344);
+                        let _e717 = (((((((((((f32(((_e453 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e87) + ((f32(((_e478 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e265)) + ((f32(((_e507 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e270)) + ((f32(((_e536 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e275)) + ((f32(((_e565 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e280)) + ((f32(((_e596 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e284)) + ((f32(((_e627 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e288)) + ((f32(((_e658 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e292)) + ((f32(((_e689 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e296)) / _e344);
+                        let _e718 = (((((((((((f32((_e453 >> bitcast<u32>(24i))) * 0.003921569f) * _e87) + ((f32((_e478 >> bitcast<u32>(24i))) * 0.003921569f) * _e265)) + ((f32((_e507 >> bitcast<u32>(24i))) * 0.003921569f) * _e270)) + ((f32((_e536 >> bitcast<u32>(24i))) * 0.003921569f) * _e275)) + ((f32((_e565 >> bitcast<u32>(24i))) * 0.003921569f) * _e280)) + ((f32((_e596 >> bitcast<u32>(24i))) * 0.003921569f) * _e284)) + ((f32((_e627 >> bitcast<u32>(24i))) * 0.003921569f) * _e288)) + ((f32((_e658 >> bitcast<u32>(24i))) * 0.003921569f) * _e292)) + ((f32((_e689 >> bitcast<u32>(24i))) * 0.003921569f) * _e296)) / _e344);
                         if _e83 {
-                            let _e727 = ((_e720 * 2f) - 1f);
-                            let _e728 = ((_e721 * 2f) - 1f);
-                            let _e729 = ((_e722 * 2f) - 1f);
-                            let _e735 = sqrt((((_e727 * _e727) + (_e728 * _e728)) + (_e729 * _e729)));
-                            if (_e735 > 0f) {
-                                phi_1171_ = vec3<f32>((_e727 / _e735), (_e728 / _e735), (_e729 / _e735));
+                            let _e722 = ((_e715 * 2f) - 1f);
+                            let _e723 = ((_e716 * 2f) - 1f);
+                            let _e724 = ((_e717 * 2f) - 1f);
+                            let _e730 = sqrt((((_e722 * _e722) + (_e723 * _e723)) + (_e724 * _e724)));
+                            if (_e730 > 0f) {
+                                phi_1171_ = vec3<f32>((_e722 / _e730), (_e723 / _e730), (_e724 / _e730));
                             } else {
                                 phi_1171_ = vec3<f32>(0f, 0f, -1f);
                             }
-                            let _e742 = phi_1171_;
-                            let _e744 = ((_e723 * 382.5f) + 0.5f);
-                            let _e749 = select(select(u32(_e744), 0u, (_e744 < 0f)), 4294967295u, (_e744 > 4294967000f));
-                            let _e753 = (f32(select(_e749, 255u, (255u < _e749))) * 0.003921569f);
-                            let _e760 = ((_e742.x * 0.5f) + 0.5f);
-                            let _e761 = ((_e742.y * 0.5f) + 0.5f);
-                            let _e762 = ((_e742.z * -0.5f) + 0.5f);
-                            if (_e760 > 0f) {
-                                phi_1282_ = select(1f, _e760, (_e760 < 1f));
-                            } else {
-                                phi_1282_ = 0f;
-                            }
-                            let _e767 = phi_1282_;
-                            let _e769 = ((_e767 * 255f) + 0.5f);
-                            if (_e761 > 0f) {
-                                phi_1303_ = select(1f, _e761, (_e761 < 1f));
-                            } else {
-                                phi_1303_ = 0f;
-                            }
-                            let _e779 = phi_1303_;
-                            let _e781 = ((_e779 * 255f) + 0.5f);
-                            if (_e762 > 0f) {
-                                phi_1324_ = select(1f, _e762, (_e762 < 1f));
-                            } else {
-                                phi_1324_ = 0f;
-                            }
-                            let _e794 = phi_1324_;
-                            let _e796 = ((_e794 * 255f) + 0.5f);
-                            if (_e753 > 0f) {
-                                phi_1345_ = select(1f, _e753, (_e753 < 1f));
-                            } else {
-                                phi_1345_ = 0f;
-                            }
-                            let _e809 = phi_1345_;
-                            let _e811 = ((_e809 * 255f) + 0.5f);
-                            phi_1221_ = type_22((((select(select(u32(_e769), 0u, (_e769 < 0f)), 4294967295u, (_e769 > 4294967000f)) | (select(select(u32(_e781), 0u, (_e781 < 0f)), 4294967295u, (_e781 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e796), 0u, (_e796 < 0f)), 4294967295u, (_e796 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e811), 0u, (_e811 < 0f)), 4294967295u, (_e811 > 4294967000f)) << bitcast<u32>(24i))), _e753, _e83);
+                            let _e737 = phi_1171_;
+                            let _e739 = ((_e718 * 382.5f) + 0.5f);
+                            let _e744 = select(select(u32(_e739), 0u, (_e739 < 0f)), 4294967295u, (_e739 > 4294967000f));
+                            let _e748 = (f32(select(_e744, 255u, (255u < _e744))) * 0.003921569f);
+                            let _e755 = ((_e737.x * 0.5f) + 0.5f);
+                            let _e756 = ((_e737.y * 0.5f) + 0.5f);
+                            let _e757 = ((_e737.z * -0.5f) + 0.5f);
+                            let _e763 = ((select(0f, select(1f, _e755, (_e755 < 1f)), (_e755 > 0f)) * 255f) + 0.5f);
+                            let _e774 = ((select(0f, select(1f, _e756, (_e756 < 1f)), (_e756 > 0f)) * 255f) + 0.5f);
+                            let _e788 = ((select(0f, select(1f, _e757, (_e757 < 1f)), (_e757 > 0f)) * 255f) + 0.5f);
+                            let _e802 = ((select(0f, select(1f, _e748, (_e748 < 1f)), (_e748 > 0f)) * 255f) + 0.5f);
+                            phi_1221_ = type_22((((select(select(u32(_e763), 0u, (_e763 < 0f)), 4294967295u, (_e763 > 4294967000f)) | (select(select(u32(_e774), 0u, (_e774 < 0f)), 4294967295u, (_e774 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e788), 0u, (_e788 < 0f)), 4294967295u, (_e788 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e802), 0u, (_e802 < 0f)), 4294967295u, (_e802 > 4294967000f)) << bitcast<u32>(24i))), _e748, _e83);
                         } else {
-                            if (_e720 > 0f) {
-                                phi_1366_ = select(1f, _e720, (_e720 < 1f));
-                            } else {
-                                phi_1366_ = 0f;
-                            }
-                            let _e825 = phi_1366_;
-                            let _e827 = ((_e825 * 255f) + 0.5f);
-                            if (_e721 > 0f) {
-                                phi_1387_ = select(1f, _e721, (_e721 < 1f));
-                            } else {
-                                phi_1387_ = 0f;
-                            }
-                            let _e837 = phi_1387_;
-                            let _e839 = ((_e837 * 255f) + 0.5f);
-                            if (_e722 > 0f) {
-                                phi_1408_ = select(1f, _e722, (_e722 < 1f));
-                            } else {
-                                phi_1408_ = 0f;
-                            }
-                            let _e852 = phi_1408_;
-                            let _e854 = ((_e852 * 255f) + 0.5f);
-                            if (_e723 > 0f) {
-                                phi_1429_ = select(1f, _e723, (_e723 < 1f));
-                            } else {
-                                phi_1429_ = 0f;
-                            }
-                            let _e867 = phi_1429_;
-                            let _e869 = ((_e867 * 255f) + 0.5f);
-                            phi_1221_ = type_22((((select(select(u32(_e827), 0u, (_e827 < 0f)), 4294967295u, (_e827 > 4294967000f)) | (select(select(u32(_e839), 0u, (_e839 < 0f)), 4294967295u, (_e839 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e854), 0u, (_e854 < 0f)), 4294967295u, (_e854 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e869), 0u, (_e869 < 0f)), 4294967295u, (_e869 > 4294967000f)) << bitcast<u32>(24i))), 0f, _e83);
+                            let _e817 = ((select(0f, select(1f, _e715, (_e715 < 1f)), (_e715 > 0f)) * 255f) + 0.5f);
+                            let _e828 = ((select(0f, select(1f, _e716, (_e716 < 1f)), (_e716 > 0f)) * 255f) + 0.5f);
+                            let _e842 = ((select(0f, select(1f, _e717, (_e717 < 1f)), (_e717 > 0f)) * 255f) + 0.5f);
+                            let _e856 = ((select(0f, select(1f, _e718, (_e718 < 1f)), (_e718 > 0f)) * 255f) + 0.5f);
+                            phi_1221_ = type_22((((select(select(u32(_e817), 0u, (_e817 < 0f)), 4294967295u, (_e817 > 4294967000f)) | (select(select(u32(_e828), 0u, (_e828 < 0f)), 4294967295u, (_e828 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e842), 0u, (_e842 < 0f)), 4294967295u, (_e842 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e856), 0u, (_e856 < 0f)), 4294967295u, (_e856 > 4294967000f)) << bitcast<u32>(24i))), 0f, _e83);
                         }
-                        let _e880 = phi_1221_;
-                        phi_1222_ = _e880;
+                        let _e867 = phi_1221_;
+                        phi_1222_ = _e867;
                     }
-                    let _e882 = phi_1222_;
+                    let _e869 = phi_1222_;
                     if (_e225 < arrayLength((&terms_out.member))) {
                     } else {
                         break;
                     }
-                    terms_out.member[_e225] = _e882.member;
-                    if _e882.member_2 {
+                    terms_out.member[_e225] = _e869.member;
+                    if _e869.member_2 {
                         if (_e225 < arrayLength((&ao.member))) {
                         } else {
                             break;
                         }
-                        ao.member[_e225] = _e882.member_1;
+                        ao.member[_e225] = _e869.member_1;
                     }
                 }
             }

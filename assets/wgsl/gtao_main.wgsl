@@ -38,8 +38,8 @@ struct type_20 {
 }
 
 struct type_22 {
-    member: u32,
-    member_1: u32,
+    member: f32,
+    member_1: vec3<f32>,
 }
 
 var<private> id_1: vec3<u32>;
@@ -55,131 +55,99 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_253_: i32;
-    var phi_272_: i32;
-    var phi_312_: i32;
-    var phi_331_: i32;
-    var phi_371_: i32;
-    var phi_390_: i32;
-    var phi_430_: i32;
-    var phi_449_: i32;
-    var phi_529_: f32;
-    var phi_540_: f32;
-    var phi_551_: f32;
-    var phi_562_: f32;
-    var phi_1927_: f32;
-    var phi_1942_: f32;
-    var phi_1946_: f32;
-    var phi_1947_: bool;
-    var phi_1970_: f32;
-    var phi_1985_: f32;
-    var phi_1989_: f32;
-    var phi_1990_: bool;
-    var phi_2013_: f32;
-    var phi_2028_: f32;
-    var phi_2032_: f32;
-    var phi_2033_: bool;
-    var phi_2056_: f32;
-    var phi_2071_: f32;
-    var phi_2075_: f32;
+    var phi_266_: i32;
+    var phi_285_: i32;
+    var phi_325_: i32;
+    var phi_344_: i32;
+    var phi_384_: i32;
+    var phi_403_: i32;
+    var phi_443_: i32;
+    var phi_462_: i32;
+    var phi_1905_: f32;
+    var phi_1909_: f32;
+    var phi_1910_: bool;
+    var phi_1948_: f32;
+    var phi_1952_: f32;
+    var phi_1953_: bool;
+    var phi_1991_: f32;
+    var phi_1995_: f32;
+    var phi_1996_: bool;
+    var phi_2034_: f32;
+    var phi_2038_: f32;
+    var phi_2039_: bool;
+    var phi_2061_: bool;
     var phi_2076_: bool;
-    var phi_2099_: bool;
-    var phi_2114_: bool;
-    var phi_665_: vec2<f32>;
-    var phi_693_: vec3<f32>;
-    var phi_714_: u32;
-    var phi_717_: u32;
-    var phi_719_: u32;
-    var phi_721_: u32;
-    var phi_750_: u32;
-    var phi_751_: u32;
-    var phi_752_: u32;
-    var phi_753_: u32;
-    var phi_715_: u32;
-    var phi_718_: u32;
-    var phi_720_: u32;
-    var phi_722_: u32;
+    var phi_679_: vec2<f32>;
+    var phi_707_: vec3<f32>;
+    var phi_728_: u32;
+    var phi_731_: u32;
+    var phi_733_: u32;
+    var phi_735_: u32;
+    var phi_764_: u32;
+    var phi_765_: u32;
+    var phi_766_: u32;
+    var phi_767_: u32;
+    var phi_729_: u32;
+    var phi_732_: u32;
+    var phi_734_: u32;
+    var phi_736_: u32;
     var local: u32;
-    var phi_776_: bool;
-    var phi_806_: f32;
-    var phi_2383_: bool;
-    var phi_816_: vec3<f32>;
-    var phi_819_: u32;
-    var phi_821_: f32;
-    var phi_938_: f32;
-    var phi_958_: f32;
-    var phi_975_: f32;
-    var phi_998_: u32;
-    var phi_1001_: f32;
-    var phi_1003_: f32;
-    var phi_1057_: f32;
-    var phi_1081_: f32;
-    var phi_1104_: u32;
-    var phi_1120_: f32;
-    var phi_1122_: f32;
-    var phi_1123_: bool;
-    var phi_1143_: f32;
-    var phi_1145_: f32;
-    var phi_1146_: bool;
-    var phi_1198_: u32;
-    var phi_1218_: u32;
-    var phi_1220_: u32;
-    var phi_1223_: u32;
-    var phi_1221_: u32;
-    var phi_1224_: u32;
+    var phi_790_: bool;
+    var phi_2635_: bool;
+    var phi_832_: u32;
+    var phi_835_: vec3<f32>;
+    var phi_837_: f32;
+    var phi_1008_: u32;
+    var phi_1011_: f32;
+    var phi_1013_: f32;
+    var phi_1067_: f32;
+    var phi_1112_: f32;
+    var phi_1114_: f32;
+    var phi_1115_: bool;
+    var phi_1138_: f32;
+    var phi_1140_: f32;
+    var phi_1141_: bool;
+    var phi_2108_: u32;
+    var phi_2156_: u32;
+    var phi_2176_: u32;
+    var phi_2178_: u32;
+    var phi_2179_: u32;
+    var phi_2202_: u32;
+    var phi_2203_: u32;
     var local_1: u32;
-    var phi_1306_: u32;
-    var phi_1326_: u32;
-    var phi_1328_: u32;
-    var phi_1331_: u32;
-    var phi_1329_: u32;
-    var phi_1332_: u32;
+    var phi_2230_: u32;
+    var phi_2278_: u32;
+    var phi_2298_: u32;
+    var phi_2300_: u32;
+    var phi_2301_: u32;
+    var phi_2324_: u32;
+    var phi_2325_: u32;
     var local_2: u32;
-    var phi_1430_: f32;
-    var phi_1436_: f32;
-    var phi_1489_: f32;
-    var phi_1495_: f32;
-    var phi_2129_: bool;
-    var phi_2144_: bool;
-    var phi_999_: u32;
-    var phi_1002_: f32;
-    var phi_1004_: f32;
-    var phi_2332_: bool;
+    var phi_1279_: f32;
+    var phi_1339_: f32;
+    var phi_2341_: bool;
+    var phi_2356_: bool;
+    var phi_1009_: u32;
+    var phi_1012_: f32;
+    var phi_1014_: f32;
+    var phi_2581_: bool;
     var local_3: f32;
     var local_4: f32;
-    var phi_1521_: f32;
     var local_5: f32;
     var local_6: f32;
-    var phi_1539_: f32;
-    var phi_1695_: vec3<f32>;
-    var phi_1696_: vec3<f32>;
-    var phi_1697_: vec3<f32>;
-    var phi_1698_: vec3<f32>;
-    var phi_1699_: bool;
-    var phi_1705_: vec3<f32>;
-    var phi_2452_: bool;
-    var phi_817_: vec3<f32>;
-    var phi_820_: u32;
-    var phi_822_: f32;
-    var phi_2451_: bool;
+    var phi_1558_: vec3<f32>;
+    var phi_2703_: bool;
+    var phi_833_: u32;
+    var phi_836_: vec3<f32>;
+    var phi_838_: f32;
+    var phi_2702_: bool;
     var local_7: f32;
-    var phi_2159_: bool;
-    var phi_1741_: f32;
     var local_8: vec3<f32>;
-    var local_9: vec3<f32>;
-    var local_10: vec3<f32>;
-    var local_11: vec3<f32>;
-    var phi_1771_: vec3<f32>;
-    var phi_2175_: f32;
-    var phi_2196_: f32;
-    var phi_2217_: f32;
-    var phi_2238_: f32;
-    var phi_1793_: type_22;
-    var phi_1794_: type_22;
-    var phi_1841_: type_22;
-    var phi_1842_: type_22;
-    var phi_1843_: bool;
-    var phi_1847_: type_22;
+    var phi_1564_: type_22;
+    var phi_2383_: bool;
+    var phi_1619_: vec3<f32>;
+    var phi_1640_: u32;
+    var phi_1685_: u32;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -208,11 +176,11 @@ fn function_() {
                         break;
                     }
                     if (_e124 < 0i) {
-                        phi_253_ = 0i;
+                        phi_266_ = 0i;
                     } else {
-                        phi_253_ = select(_e124, _e126, (_e124 > _e126));
+                        phi_266_ = select(_e124, _e126, (_e124 > _e126));
                     }
-                    let _e132 = phi_253_;
+                    let _e132 = phi_266_;
                     let _e134 = bitcast<i32>(_e84.y);
                     let _e136 = (bitcast<i32>(_e112) - 1i);
                     let _e137 = (0i <= _e136);
@@ -222,11 +190,11 @@ fn function_() {
                     }
                     let _e138 = (_e134 < 0i);
                     if _e138 {
-                        phi_272_ = 0i;
+                        phi_285_ = 0i;
                     } else {
-                        phi_272_ = select(_e134, _e136, (_e134 > _e136));
+                        phi_285_ = select(_e134, _e136, (_e134 > _e136));
                     }
-                    let _e142 = phi_272_;
+                    let _e142 = phi_285_;
                     let _e145 = ((bitcast<u32>(_e142) * _e102) + bitcast<u32>(_e132));
                     if (_e145 < _e86) {
                     } else {
@@ -239,21 +207,21 @@ fn function_() {
                         break;
                     }
                     if (_e150 < 0i) {
-                        phi_312_ = 0i;
+                        phi_325_ = 0i;
                     } else {
-                        phi_312_ = select(_e150, _e126, (_e150 > _e126));
+                        phi_325_ = select(_e150, _e126, (_e150 > _e126));
                     }
-                    let _e155 = phi_312_;
+                    let _e155 = phi_325_;
                     if _e137 {
                     } else {
                         break;
                     }
                     if _e138 {
-                        phi_331_ = 0i;
+                        phi_344_ = 0i;
                     } else {
-                        phi_331_ = select(_e134, _e136, (_e134 > _e136));
+                        phi_344_ = select(_e134, _e136, (_e134 > _e136));
                     }
-                    let _e160 = phi_331_;
+                    let _e160 = phi_344_;
                     let _e163 = ((bitcast<u32>(_e160) * _e102) + bitcast<u32>(_e155));
                     if (_e163 < _e86) {
                     } else {
@@ -266,22 +234,22 @@ fn function_() {
                     }
                     let _e168 = (_e123 < 0i);
                     if _e168 {
-                        phi_371_ = 0i;
+                        phi_384_ = 0i;
                     } else {
-                        phi_371_ = select(_e123, _e126, (_e123 > _e126));
+                        phi_384_ = select(_e123, _e126, (_e123 > _e126));
                     }
-                    let _e172 = phi_371_;
+                    let _e172 = phi_384_;
                     let _e174 = (_e134 + -1i);
                     if _e137 {
                     } else {
                         break;
                     }
                     if (_e174 < 0i) {
-                        phi_390_ = 0i;
+                        phi_403_ = 0i;
                     } else {
-                        phi_390_ = select(_e174, _e136, (_e174 > _e136));
+                        phi_403_ = select(_e174, _e136, (_e174 > _e136));
                     }
-                    let _e179 = phi_390_;
+                    let _e179 = phi_403_;
                     let _e182 = ((bitcast<u32>(_e179) * _e102) + bitcast<u32>(_e172));
                     if (_e182 < _e86) {
                     } else {
@@ -293,22 +261,22 @@ fn function_() {
                         break;
                     }
                     if _e168 {
-                        phi_430_ = 0i;
+                        phi_443_ = 0i;
                     } else {
-                        phi_430_ = select(_e123, _e126, (_e123 > _e126));
+                        phi_443_ = select(_e123, _e126, (_e123 > _e126));
                     }
-                    let _e190 = phi_430_;
+                    let _e190 = phi_443_;
                     let _e192 = (_e134 + 1i);
                     if _e137 {
                     } else {
                         break;
                     }
                     if (_e192 < 0i) {
-                        phi_449_ = 0i;
+                        phi_462_ = 0i;
                     } else {
-                        phi_449_ = select(_e192, _e136, (_e192 > _e136));
+                        phi_462_ = select(_e192, _e136, (_e192 > _e136));
                     }
-                    let _e197 = phi_449_;
+                    let _e197 = phi_462_;
                     let _e200 = ((bitcast<u32>(_e197) * _e102) + bitcast<u32>(_e190));
                     if (_e200 < _e86) {
                     } else {
@@ -331,804 +299,653 @@ fn function_() {
                     let _e226 = abs((_e208 + (_e211 * -0.5f)));
                     let _e235 = (_e122 * 0.011f);
                     let _e240 = (1.25f - (select(_e223, _e219, (_e219 < _e223)) / _e235));
-                    if (_e240 > 0f) {
-                        phi_529_ = select(1f, _e240, (_e240 < 1f));
-                    } else {
-                        phi_529_ = 0f;
-                    }
-                    let _e245 = phi_529_;
-                    let _e246 = (1.25f - (select(_e224, _e220, (_e220 < _e224)) / _e235));
-                    if (_e246 > 0f) {
-                        phi_540_ = select(1f, _e246, (_e246 < 1f));
-                    } else {
-                        phi_540_ = 0f;
-                    }
-                    let _e251 = phi_540_;
-                    let _e252 = (1.25f - (select(_e225, _e221, (_e221 < _e225)) / _e235));
-                    if (_e252 > 0f) {
-                        phi_551_ = select(1f, _e252, (_e252 < 1f));
-                    } else {
-                        phi_551_ = 0f;
-                    }
-                    let _e257 = phi_551_;
-                    let _e258 = (1.25f - (select(_e226, _e222, (_e222 < _e226)) / _e235));
-                    if (_e258 > 0f) {
-                        phi_562_ = select(1f, _e258, (_e258 < 1f));
-                    } else {
-                        phi_562_ = 0f;
-                    }
-                    let _e263 = phi_562_;
-                    if (_e245 > 0f) {
-                        phi_1927_ = select(1f, _e245, (_e245 < 1f));
-                    } else {
-                        phi_1927_ = 0f;
-                    }
-                    let _e268 = phi_1927_;
-                    let _e269 = (_e268 * 2.9f);
-                    let _e271 = floor((_e269 + 0.5f));
-                    if ((_e271 - _e269) == 0.5f) {
-                        let _e277 = ((floor((_e271 * 0.5f)) * 2f) != _e271);
-                        if _e277 {
-                            phi_1942_ = (_e271 - 1f);
+                    let _e244 = select(0f, select(1f, _e240, (_e240 < 1f)), (_e240 > 0f));
+                    let _e245 = (1.25f - (select(_e224, _e220, (_e220 < _e224)) / _e235));
+                    let _e249 = select(0f, select(1f, _e245, (_e245 < 1f)), (_e245 > 0f));
+                    let _e250 = (1.25f - (select(_e225, _e221, (_e221 < _e225)) / _e235));
+                    let _e254 = select(0f, select(1f, _e250, (_e250 < 1f)), (_e250 > 0f));
+                    let _e255 = (1.25f - (select(_e226, _e222, (_e222 < _e226)) / _e235));
+                    let _e259 = select(0f, select(1f, _e255, (_e255 < 1f)), (_e255 > 0f));
+                    let _e264 = (select(0f, select(1f, _e244, (_e244 < 1f)), (_e244 > 0f)) * 2.9f);
+                    let _e266 = floor((_e264 + 0.5f));
+                    if ((_e266 - _e264) == 0.5f) {
+                        let _e272 = ((floor((_e266 * 0.5f)) * 2f) != _e266);
+                        if _e272 {
+                            phi_1905_ = (_e266 - 1f);
                         } else {
-                            phi_1942_ = f32();
+                            phi_1905_ = f32();
                         }
-                        let _e280 = phi_1942_;
-                        phi_1946_ = _e280;
-                        phi_1947_ = select(true, false, _e277);
+                        let _e275 = phi_1905_;
+                        phi_1909_ = _e275;
+                        phi_1910_ = select(true, false, _e272);
                     } else {
-                        phi_1946_ = f32();
-                        phi_1947_ = true;
+                        phi_1909_ = f32();
+                        phi_1910_ = true;
                     }
-                    let _e283 = phi_1946_;
-                    let _e285 = phi_1947_;
-                    let _e286 = select(_e283, _e271, _e285);
-                    if (_e251 > 0f) {
-                        phi_1970_ = select(1f, _e251, (_e251 < 1f));
-                    } else {
-                        phi_1970_ = 0f;
-                    }
-                    let _e297 = phi_1970_;
-                    let _e298 = (_e297 * 2.9f);
-                    let _e300 = floor((_e298 + 0.5f));
-                    if ((_e300 - _e298) == 0.5f) {
-                        let _e306 = ((floor((_e300 * 0.5f)) * 2f) != _e300);
-                        if _e306 {
-                            phi_1985_ = (_e300 - 1f);
+                    let _e278 = phi_1909_;
+                    let _e280 = phi_1910_;
+                    let _e281 = select(_e278, _e266, _e280);
+                    let _e292 = (select(0f, select(1f, _e249, (_e249 < 1f)), (_e249 > 0f)) * 2.9f);
+                    let _e294 = floor((_e292 + 0.5f));
+                    if ((_e294 - _e292) == 0.5f) {
+                        let _e300 = ((floor((_e294 * 0.5f)) * 2f) != _e294);
+                        if _e300 {
+                            phi_1948_ = (_e294 - 1f);
                         } else {
-                            phi_1985_ = f32();
+                            phi_1948_ = f32();
                         }
-                        let _e309 = phi_1985_;
-                        phi_1989_ = _e309;
-                        phi_1990_ = select(true, false, _e306);
+                        let _e303 = phi_1948_;
+                        phi_1952_ = _e303;
+                        phi_1953_ = select(true, false, _e300);
                     } else {
-                        phi_1989_ = f32();
-                        phi_1990_ = true;
+                        phi_1952_ = f32();
+                        phi_1953_ = true;
                     }
-                    let _e312 = phi_1989_;
-                    let _e314 = phi_1990_;
-                    let _e315 = select(_e312, _e300, _e314);
-                    if (_e257 > 0f) {
-                        phi_2013_ = select(1f, _e257, (_e257 < 1f));
-                    } else {
-                        phi_2013_ = 0f;
-                    }
-                    let _e327 = phi_2013_;
-                    let _e328 = (_e327 * 2.9f);
-                    let _e330 = floor((_e328 + 0.5f));
-                    if ((_e330 - _e328) == 0.5f) {
-                        let _e336 = ((floor((_e330 * 0.5f)) * 2f) != _e330);
-                        if _e336 {
-                            phi_2028_ = (_e330 - 1f);
+                    let _e306 = phi_1952_;
+                    let _e308 = phi_1953_;
+                    let _e309 = select(_e306, _e294, _e308);
+                    let _e321 = (select(0f, select(1f, _e254, (_e254 < 1f)), (_e254 > 0f)) * 2.9f);
+                    let _e323 = floor((_e321 + 0.5f));
+                    if ((_e323 - _e321) == 0.5f) {
+                        let _e329 = ((floor((_e323 * 0.5f)) * 2f) != _e323);
+                        if _e329 {
+                            phi_1991_ = (_e323 - 1f);
                         } else {
-                            phi_2028_ = f32();
+                            phi_1991_ = f32();
                         }
-                        let _e339 = phi_2028_;
-                        phi_2032_ = _e339;
-                        phi_2033_ = select(true, false, _e336);
+                        let _e332 = phi_1991_;
+                        phi_1995_ = _e332;
+                        phi_1996_ = select(true, false, _e329);
                     } else {
-                        phi_2032_ = f32();
-                        phi_2033_ = true;
+                        phi_1995_ = f32();
+                        phi_1996_ = true;
                     }
-                    let _e342 = phi_2032_;
-                    let _e344 = phi_2033_;
-                    let _e345 = select(_e342, _e330, _e344);
-                    if (_e263 > 0f) {
-                        phi_2056_ = select(1f, _e263, (_e263 < 1f));
-                    } else {
-                        phi_2056_ = 0f;
-                    }
-                    let _e357 = phi_2056_;
-                    let _e358 = (_e357 * 2.9f);
-                    let _e360 = floor((_e358 + 0.5f));
-                    if ((_e360 - _e358) == 0.5f) {
-                        let _e366 = ((floor((_e360 * 0.5f)) * 2f) != _e360);
-                        if _e366 {
-                            phi_2071_ = (_e360 - 1f);
+                    let _e335 = phi_1995_;
+                    let _e337 = phi_1996_;
+                    let _e338 = select(_e335, _e323, _e337);
+                    let _e350 = (select(0f, select(1f, _e259, (_e259 < 1f)), (_e259 > 0f)) * 2.9f);
+                    let _e352 = floor((_e350 + 0.5f));
+                    if ((_e352 - _e350) == 0.5f) {
+                        let _e358 = ((floor((_e352 * 0.5f)) * 2f) != _e352);
+                        if _e358 {
+                            phi_2034_ = (_e352 - 1f);
                         } else {
-                            phi_2071_ = f32();
+                            phi_2034_ = f32();
                         }
-                        let _e369 = phi_2071_;
-                        phi_2075_ = _e369;
-                        phi_2076_ = select(true, false, _e366);
+                        let _e361 = phi_2034_;
+                        phi_2038_ = _e361;
+                        phi_2039_ = select(true, false, _e358);
                     } else {
-                        phi_2075_ = f32();
-                        phi_2076_ = true;
+                        phi_2038_ = f32();
+                        phi_2039_ = true;
                     }
-                    let _e372 = phi_2075_;
-                    let _e374 = phi_2076_;
-                    let _e375 = select(_e372, _e360, _e374);
-                    let _e381 = ((((64u * select(select(u32(_e286), 0u, (_e286 < 0f)), 4294967295u, (_e286 > 4294967000f))) + (16u * select(select(u32(_e315), 0u, (_e315 < 0f)), 4294967295u, (_e315 > 4294967000f)))) + (4u * select(select(u32(_e345), 0u, (_e345 < 0f)), 4294967295u, (_e345 > 4294967000f)))) + select(select(u32(_e375), 0u, (_e375 < 0f)), 4294967295u, (_e375 > 4294967000f)));
-                    let _e386 = ((f32(_e84.x) + 0.5f) / _e97);
-                    let _e387 = ((f32(_e84.y) + 0.5f) / _e107);
-                    let _e388 = (_e122 * 0.99999f);
-                    let _e395 = params.member.member.member_1[0u];
-                    let _e397 = ((((2f * _e386) - 1f) * _e395) * _e388);
-                    let _e404 = params.member.member.member_1[1u];
-                    let _e406 = (((1f - (2f * _e387)) * _e404) * _e388);
-                    let _e407 = -(_e397);
-                    let _e408 = -(_e406);
-                    let _e409 = (_e122 * -0.99999f);
-                    let _e416 = (1f / sqrt((((_e407 * _e407) + (_e408 * _e408)) + (_e409 * _e409))));
-                    let _e417 = (_e407 * _e416);
-                    let _e418 = (_e408 * _e416);
-                    let _e419 = (_e409 * _e416);
+                    let _e364 = phi_2038_;
+                    let _e366 = phi_2039_;
+                    let _e367 = select(_e364, _e352, _e366);
+                    let _e378 = ((f32(_e84.x) + 0.5f) / _e97);
+                    let _e379 = ((f32(_e84.y) + 0.5f) / _e107);
+                    let _e380 = (_e122 * 0.99999f);
+                    let _e387 = params.member.member.member_1[0u];
+                    let _e389 = ((((_e378 * 2f) - 1f) * _e387) * _e380);
+                    let _e396 = params.member.member.member_1[1u];
+                    let _e398 = ((((_e379 * -2f) + 1f) * _e396) * _e380);
+                    let _e399 = -(_e389);
+                    let _e400 = -(_e398);
+                    let _e401 = (_e122 * -0.99999f);
+                    let _e408 = (1f / sqrt((((_e399 * _e399) + (_e400 * _e400)) + (_e401 * _e401))));
+                    let _e409 = (_e399 * _e408);
+                    let _e410 = (_e400 * _e408);
+                    let _e411 = (_e401 * _e408);
                     if (_e118 < arrayLength((&normals.member))) {
                     } else {
                         break;
                     }
-                    let _e423 = normals.member[_e118];
-                    let _e431 = (f32((bitcast<i32>(((_e423 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e431 != _e431) {
-                        phi_2099_ = true;
+                    let _e415 = normals.member[_e118];
+                    let _e423 = (f32((bitcast<i32>(((_e415 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e423 != _e423) {
+                        phi_2061_ = true;
                     } else {
-                        phi_2099_ = (-1f >= _e431);
+                        phi_2061_ = (-1f >= _e423);
                     }
-                    let _e435 = phi_2099_;
-                    let _e436 = select(_e431, -1f, _e435);
-                    let _e446 = (f32((bitcast<i32>((((_e423 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e446 != _e446) {
-                        phi_2114_ = true;
+                    let _e427 = phi_2061_;
+                    let _e428 = select(_e423, -1f, _e427);
+                    let _e438 = (f32((bitcast<i32>((((_e415 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e438 != _e438) {
+                        phi_2076_ = true;
                     } else {
-                        phi_2114_ = (-1f >= _e446);
+                        phi_2076_ = (-1f >= _e438);
                     }
-                    let _e450 = phi_2114_;
-                    let _e451 = select(_e446, -1f, _e450);
-                    let _e454 = (1f - abs(_e436));
-                    let _e455 = abs(_e451);
-                    let _e456 = (_e454 - _e455);
-                    if (_e456 < 0f) {
-                        phi_665_ = vec2<f32>(((1f - _e455) * select(1f, -1f, (_e436 < 0f))), (_e454 * select(1f, -1f, (_e451 < 0f))));
+                    let _e442 = phi_2076_;
+                    let _e443 = select(_e438, -1f, _e442);
+                    let _e446 = (1f - abs(_e428));
+                    let _e447 = abs(_e443);
+                    let _e448 = (_e446 - _e447);
+                    if (_e448 < 0f) {
+                        phi_679_ = vec2<f32>(((1f - _e447) * select(1f, -1f, (_e428 < 0f))), (_e446 * select(1f, -1f, (_e443 < 0f))));
                     } else {
-                        phi_665_ = vec2<f32>(_e436, _e451);
+                        phi_679_ = vec2<f32>(_e428, _e443);
                     }
-                    let _e467 = phi_665_;
-                    let _e476 = (1f / sqrt((((_e467.x * _e467.x) + (_e467.y * _e467.y)) + (_e456 * _e456))));
-                    let _e477 = (_e467.x * _e476);
-                    let _e478 = (_e467.y * _e476);
-                    let _e479 = (_e456 * _e476);
-                    let _e480 = -(_e479);
-                    if ((((_e477 * _e417) + (_e478 * _e418)) + (_e480 * _e419)) < 0f) {
-                        phi_693_ = vec3<f32>(-(_e477), -(_e478), _e479);
+                    let _e459 = phi_679_;
+                    let _e468 = (1f / sqrt((((_e459.x * _e459.x) + (_e459.y * _e459.y)) + (_e448 * _e448))));
+                    let _e469 = (_e459.x * _e468);
+                    let _e470 = (_e459.y * _e468);
+                    let _e471 = (_e448 * _e468);
+                    let _e472 = -(_e471);
+                    if ((((_e469 * _e409) + (_e470 * _e410)) + (_e472 * _e411)) < 0f) {
+                        phi_707_ = vec3<f32>(-(_e469), -(_e470), _e471);
                     } else {
-                        phi_693_ = vec3<f32>(_e477, _e478, _e480);
+                        phi_707_ = vec3<f32>(_e469, _e470, _e472);
                     }
-                    let _e492 = phi_693_;
-                    let _e495 = params.member.member_1;
-                    let _e498 = params.member.member_2;
-                    let _e499 = (_e495 * _e498);
-                    let _e503 = (_e499 / (((_e122 * 1.99998f) * _e395) / _e97));
-                    let _e507 = params.member.member_11;
-                    phi_714_ = (_e84.y & 63u);
-                    phi_717_ = (_e84.x & 63u);
-                    phi_719_ = 32u;
-                    phi_721_ = 0u;
+                    let _e484 = phi_707_;
+                    let _e487 = params.member.member_1;
+                    let _e490 = params.member.member_2;
+                    let _e491 = (_e487 * _e490);
+                    let _e495 = (_e491 / (((_e122 * 1.99998f) * _e387) / _e97));
+                    let _e499 = params.member.member_11;
+                    phi_728_ = (_e84.y & 63u);
+                    phi_731_ = (_e84.x & 63u);
+                    phi_733_ = 32u;
+                    phi_735_ = 0u;
                     loop {
-                        let _e511 = phi_714_;
-                        let _e513 = phi_717_;
-                        let _e515 = phi_719_;
-                        let _e517 = phi_721_;
-                        local = _e517;
-                        let _e518 = (_e515 > 0u);
-                        if _e518 {
-                            let _e521 = select(0u, 1u, ((_e513 & _e515) != 0u));
-                            let _e524 = select(0u, 1u, ((_e511 & _e515) != 0u));
-                            if (_e524 == 0u) {
-                                if (_e521 == 1u) {
-                                    phi_750_ = (63u - _e511);
-                                    phi_751_ = (63u - _e513);
+                        let _e503 = phi_728_;
+                        let _e505 = phi_731_;
+                        let _e507 = phi_733_;
+                        let _e509 = phi_735_;
+                        local = _e509;
+                        let _e510 = (_e507 > 0u);
+                        if _e510 {
+                            let _e513 = select(0u, 1u, ((_e505 & _e507) != 0u));
+                            let _e516 = select(0u, 1u, ((_e503 & _e507) != 0u));
+                            if (_e516 == 0u) {
+                                if (_e513 == 1u) {
+                                    phi_764_ = (63u - _e503);
+                                    phi_765_ = (63u - _e505);
                                 } else {
-                                    phi_750_ = _e511;
-                                    phi_751_ = _e513;
+                                    phi_764_ = _e503;
+                                    phi_765_ = _e505;
                                 }
-                                let _e535 = phi_750_;
-                                let _e537 = phi_751_;
-                                phi_752_ = _e537;
-                                phi_753_ = _e535;
+                                let _e527 = phi_764_;
+                                let _e529 = phi_765_;
+                                phi_766_ = _e529;
+                                phi_767_ = _e527;
                             } else {
-                                phi_752_ = _e511;
-                                phi_753_ = _e513;
+                                phi_766_ = _e503;
+                                phi_767_ = _e505;
                             }
-                            let _e539 = phi_752_;
-                            let _e541 = phi_753_;
-                            phi_715_ = _e539;
-                            phi_718_ = _e541;
-                            phi_720_ = (_e515 / 2u);
-                            phi_722_ = (_e517 + ((_e515 * _e515) * ((3u * _e521) ^ _e524)));
+                            let _e531 = phi_766_;
+                            let _e533 = phi_767_;
+                            phi_729_ = _e531;
+                            phi_732_ = _e533;
+                            phi_734_ = (_e507 / 2u);
+                            phi_736_ = (_e509 + ((_e507 * _e507) * ((3u * _e513) ^ _e516)));
                         } else {
-                            phi_715_ = u32();
-                            phi_718_ = u32();
-                            phi_720_ = u32();
-                            phi_722_ = u32();
+                            phi_729_ = u32();
+                            phi_732_ = u32();
+                            phi_734_ = u32();
+                            phi_736_ = u32();
                         }
-                        let _e544 = phi_715_;
-                        let _e546 = phi_718_;
-                        let _e548 = phi_720_;
-                        let _e550 = phi_722_;
+                        let _e536 = phi_729_;
+                        let _e538 = phi_732_;
+                        let _e540 = phi_734_;
+                        let _e542 = phi_736_;
                         continue;
                         continuing {
-                            phi_714_ = _e544;
-                            phi_717_ = _e546;
-                            phi_719_ = _e548;
-                            phi_721_ = _e550;
-                            break if !(_e518);
+                            phi_728_ = _e536;
+                            phi_731_ = _e538;
+                            phi_733_ = _e540;
+                            phi_735_ = _e542;
+                            break if !(_e510);
                         }
                     }
-                    let _e555 = local;
-                    let _e557 = f32((_e555 + (288u * (_e507 % 64u))));
-                    let _e559 = (0.5f + (_e557 * 0.7548777f));
-                    let _e563 = (0.5f + (_e557 * 0.5698403f));
-                    let _e569 = params.member.member.member_3;
+                    let _e547 = local;
+                    let _e549 = f32((_e547 + (288u * (_e499 % 64u))));
+                    let _e551 = (0.5f + (_e549 * 0.7548777f));
+                    let _e555 = (0.5f + (_e549 * 0.5698403f));
+                    let _e561 = params.member.member.member_3;
                     if (_e122 > 0f) {
-                        phi_776_ = (_e122 < _e569);
+                        phi_790_ = (_e122 < _e561);
                     } else {
-                        phi_776_ = false;
+                        phi_790_ = false;
                     }
-                    let _e573 = phi_776_;
-                    if _e573 {
-                        let _e576 = params.member.member_3;
-                        let _e577 = (_e576 * _e499);
-                        let _e579 = ((10f - _e503) * 0.01f);
-                        if (_e579 > 0f) {
-                            phi_806_ = select(1f, _e579, (_e579 < 1f));
-                        } else {
-                            phi_806_ = 0f;
-                        }
-                        let _e584 = phi_806_;
-                        let _e588 = params.member.member_8;
-                        let _e590 = select(1u, _e588, (1u < _e588));
-                        phi_2383_ = false;
-                        phi_816_ = vec3<f32>(0f, 0f, 0f);
-                        phi_819_ = 0u;
-                        phi_821_ = (0.5f * _e584);
+                    let _e565 = phi_790_;
+                    if _e565 {
+                        let _e568 = params.member.member_3;
+                        let _e569 = (_e568 * _e491);
+                        let _e571 = ((10f - _e495) * 0.01f);
+                        let _e579 = params.member.member_8;
+                        let _e581 = select(1u, _e579, (1u < _e579));
+                        phi_2635_ = false;
+                        phi_832_ = 0u;
+                        phi_835_ = vec3<f32>(0f, 0f, 0f);
+                        phi_837_ = (select(0f, select(1f, _e571, (_e571 < 1f)), (_e571 > 0f)) * 0.5f);
                         loop {
-                            let _e592 = phi_2383_;
-                            let _e594 = phi_816_;
-                            let _e596 = phi_819_;
-                            let _e598 = phi_821_;
-                            local_7 = _e598;
-                            local_8 = _e594;
-                            local_9 = _e594;
-                            local_10 = _e594;
-                            local_11 = _e594;
-                            let _e599 = (_e596 < _e590);
-                            if _e599 {
-                                let _e604 = ((3.1415927f * (f32(_e596) + (_e559 - floor(_e559)))) / f32(_e590));
-                                let _e605 = sin(_e604);
-                                let _e606 = cos(_e604);
-                                let _e612 = ((_e606 * _e417) + (_e605 * _e418));
-                                let _e616 = (_e606 - (_e417 * _e612));
-                                let _e617 = (_e605 - (_e418 * _e612));
-                                let _e618 = -((_e419 * _e612));
-                                let _e621 = ((_e617 * _e419) - (_e418 * _e618));
-                                let _e624 = ((_e618 * _e417) - (_e419 * _e616));
-                                let _e627 = ((_e616 * _e418) - (_e417 * _e617));
-                                let _e634 = (1f / sqrt((((_e621 * _e621) + (_e624 * _e624)) + (_e627 * _e627))));
-                                let _e635 = (_e621 * _e634);
-                                let _e636 = (_e624 * _e634);
-                                let _e637 = (_e627 * _e634);
-                                let _e645 = (((_e492.x * _e635) + (_e492.y * _e636)) + (_e492.z * _e637));
-                                let _e649 = (_e492.x - (_e635 * _e645));
-                                let _e650 = (_e492.y - (_e636 * _e645));
-                                let _e651 = (_e492.z - (_e637 * _e645));
-                                let _e657 = sqrt((((_e649 * _e649) + (_e650 * _e650)) + (_e651 * _e651)));
-                                let _e662 = (((_e616 * _e649) + (_e617 * _e650)) + (_e618 * _e651));
-                                if (_e662 > 0f) {
-                                    phi_938_ = 1f;
-                                } else {
-                                    phi_938_ = select(0f, -1f, (_e662 < 0f));
-                                }
-                                let _e667 = phi_938_;
-                                let _e673 = ((((_e649 * _e417) + (_e650 * _e418)) + (_e651 * _e419)) / _e657);
-                                if (_e673 > 0f) {
-                                    phi_958_ = select(1f, _e673, (_e673 < 1f));
-                                } else {
-                                    phi_958_ = 0f;
-                                }
-                                let _e678 = phi_958_;
-                                let _e679 = abs(_e678);
-                                let _e690 = (((-0.156583f * _e679) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e679))) >> bitcast<u32>(1i))))));
-                                if (_e678 >= 0f) {
-                                    phi_975_ = _e690;
-                                } else {
-                                    phi_975_ = (3.141593f - _e690);
-                                }
-                                let _e694 = phi_975_;
-                                let _e695 = (_e667 * _e694);
-                                let _e698 = params.member.member_9;
-                                let _e700 = select(1u, _e698, (1u < _e698));
-                                let _e702 = cos((_e695 + 1.5707964f));
-                                let _e704 = cos((_e695 - 1.5707964f));
-                                let _e707 = params.member.member_5;
-                                phi_998_ = 0u;
-                                phi_1001_ = _e704;
-                                phi_1003_ = _e702;
+                            let _e583 = phi_2635_;
+                            let _e585 = phi_832_;
+                            let _e587 = phi_835_;
+                            let _e589 = phi_837_;
+                            local_7 = _e589;
+                            local_8 = _e587;
+                            let _e590 = (_e585 < _e581);
+                            if _e590 {
+                                let _e595 = ((((_e551 - floor(_e551)) + f32(_e585)) * 3.1415927f) / f32(_e581));
+                                let _e596 = sin(_e595);
+                                let _e597 = cos(_e595);
+                                let _e603 = ((_e597 * _e409) + (_e596 * _e410));
+                                let _e607 = (_e597 - (_e409 * _e603));
+                                let _e608 = (_e596 - (_e410 * _e603));
+                                let _e609 = -((_e411 * _e603));
+                                let _e612 = ((_e608 * _e411) - (_e410 * _e609));
+                                let _e615 = ((_e609 * _e409) - (_e411 * _e607));
+                                let _e618 = ((_e607 * _e410) - (_e409 * _e608));
+                                let _e625 = (1f / sqrt((((_e612 * _e612) + (_e615 * _e615)) + (_e618 * _e618))));
+                                let _e626 = (_e612 * _e625);
+                                let _e627 = (_e615 * _e625);
+                                let _e628 = (_e618 * _e625);
+                                let _e636 = (((_e484.x * _e626) + (_e484.y * _e627)) + (_e484.z * _e628));
+                                let _e640 = (_e484.x - (_e626 * _e636));
+                                let _e641 = (_e484.y - (_e627 * _e636));
+                                let _e642 = (_e484.z - (_e628 * _e636));
+                                let _e648 = sqrt((((_e640 * _e640) + (_e641 * _e641)) + (_e642 * _e642)));
+                                let _e653 = (((_e607 * _e640) + (_e608 * _e641)) + (_e609 * _e642));
+                                let _e663 = ((((_e640 * _e409) + (_e641 * _e410)) + (_e642 * _e411)) / _e648);
+                                let _e667 = select(0f, select(1f, _e663, (_e663 < 1f)), (_e663 > 0f));
+                                let _e668 = abs(_e667);
+                                let _e679 = (((_e668 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e668))) >> bitcast<u32>(1i))))));
+                                let _e683 = (select(select(0f, -1f, (_e653 < 0f)), 1f, (_e653 > 0f)) * select((3.141593f - _e679), _e679, (_e667 >= 0f)));
+                                let _e686 = params.member.member_9;
+                                let _e688 = select(1u, _e686, (1u < _e686));
+                                let _e690 = cos((_e683 + 1.5707964f));
+                                let _e692 = cos((_e683 - 1.5707964f));
+                                let _e695 = params.member.member_5;
+                                phi_1008_ = 0u;
+                                phi_1011_ = _e692;
+                                phi_1013_ = _e690;
                                 loop {
-                                    let _e709 = phi_998_;
-                                    let _e711 = phi_1001_;
-                                    let _e713 = phi_1003_;
-                                    local_3 = _e711;
-                                    local_4 = _e711;
-                                    local_5 = _e713;
-                                    local_6 = _e713;
-                                    let _e714 = (_e709 < _e700);
-                                    if _e714 {
-                                        let _e719 = ((_e563 - floor(_e563)) + (f32((_e596 + (_e709 * _e700))) * 0.618034f));
-                                        let _e725 = ((f32(_e709) + (_e719 - floor(_e719))) / f32(_e700));
-                                        let _e728 = params.member.member_4;
-                                        if (_e728 == 2f) {
-                                            phi_1057_ = (_e725 * _e725);
+                                    let _e697 = phi_1008_;
+                                    let _e699 = phi_1011_;
+                                    let _e701 = phi_1013_;
+                                    local_3 = _e699;
+                                    local_4 = _e699;
+                                    local_5 = _e701;
+                                    local_6 = _e701;
+                                    let _e702 = (_e697 < _e688);
+                                    if _e702 {
+                                        let _e707 = ((_e555 - floor(_e555)) + (f32((_e585 + (_e697 * _e688))) * 0.618034f));
+                                        let _e713 = (((_e707 - floor(_e707)) + f32(_e697)) / f32(_e688));
+                                        let _e716 = params.member.member_4;
+                                        if (_e716 == 2f) {
+                                            phi_1067_ = (_e713 * _e713);
                                         } else {
-                                            phi_1057_ = pow(_e725, _e728);
+                                            phi_1067_ = pow(_e713, _e716);
                                         }
-                                        let _e733 = phi_1057_;
-                                        let _e734 = (_e733 + (1.3f / _e503));
-                                        let _e735 = ((_e606 * _e503) * _e734);
-                                        let _e736 = ((-(_e605) * _e503) * _e734);
-                                        let _e744 = params.member.member_7;
-                                        let _e745 = (log2(sqrt(((_e735 * _e735) + (_e736 * _e736)))) - _e744);
-                                        if (_e745 > 0f) {
-                                            phi_1081_ = select(5f, _e745, (_e745 < 5f));
-                                        } else {
-                                            phi_1081_ = 0f;
-                                        }
-                                        let _e750 = phi_1081_;
-                                        let _e753 = (-1f - floor((-0.5f - _e750)));
-                                        if (_e753 > 0f) {
-                                            let _e759 = select(select(u32(_e753), 0u, (_e753 < 0f)), 4294967295u, (_e753 > 4294967000f));
-                                            phi_1104_ = select(_e759, 4u, (4u < _e759));
-                                        } else {
-                                            phi_1104_ = 0u;
-                                        }
-                                        let _e763 = phi_1104_;
-                                        let _e765 = floor((_e735 + 0.5f));
-                                        if ((_e765 - _e735) == 0.5f) {
-                                            let _e771 = ((floor((_e765 * 0.5f)) * 2f) != _e765);
-                                            if _e771 {
-                                                phi_1120_ = (_e765 - 1f);
+                                        let _e721 = phi_1067_;
+                                        let _e722 = (_e721 + (1.3f / _e495));
+                                        let _e723 = ((_e597 * _e495) * _e722);
+                                        let _e724 = ((-(_e596) * _e495) * _e722);
+                                        let _e732 = params.member.member_7;
+                                        let _e733 = (log2(sqrt(((_e723 * _e723) + (_e724 * _e724)))) - _e732);
+                                        let _e740 = (-1f - floor((-0.5f - select(0f, select(5f, _e733, (_e733 < 5f)), (_e733 > 0f)))));
+                                        let _e742 = floor((_e723 + 0.5f));
+                                        if ((_e742 - _e723) == 0.5f) {
+                                            let _e748 = ((floor((_e742 * 0.5f)) * 2f) != _e742);
+                                            if _e748 {
+                                                phi_1112_ = (_e742 - 1f);
                                             } else {
-                                                phi_1120_ = f32();
+                                                phi_1112_ = f32();
                                             }
-                                            let _e774 = phi_1120_;
-                                            phi_1122_ = _e774;
-                                            phi_1123_ = select(true, false, _e771);
+                                            let _e751 = phi_1112_;
+                                            phi_1114_ = _e751;
+                                            phi_1115_ = select(true, false, _e748);
                                         } else {
-                                            phi_1122_ = f32();
-                                            phi_1123_ = true;
+                                            phi_1114_ = f32();
+                                            phi_1115_ = true;
                                         }
-                                        let _e777 = phi_1122_;
-                                        let _e779 = phi_1123_;
-                                        let _e782 = floor((_e736 + 0.5f));
-                                        if ((_e782 - _e736) == 0.5f) {
-                                            let _e788 = ((floor((_e782 * 0.5f)) * 2f) != _e782);
-                                            if _e788 {
-                                                phi_1143_ = (_e782 - 1f);
+                                        let _e754 = phi_1114_;
+                                        let _e756 = phi_1115_;
+                                        let _e758 = (select(_e754, _e742, _e756) / _e97);
+                                        let _e760 = floor((_e724 + 0.5f));
+                                        if ((_e760 - _e724) == 0.5f) {
+                                            let _e766 = ((floor((_e760 * 0.5f)) * 2f) != _e760);
+                                            if _e766 {
+                                                phi_1138_ = (_e760 - 1f);
                                             } else {
-                                                phi_1143_ = f32();
+                                                phi_1138_ = f32();
                                             }
-                                            let _e791 = phi_1143_;
-                                            phi_1145_ = _e791;
-                                            phi_1146_ = select(true, false, _e788);
+                                            let _e769 = phi_1138_;
+                                            phi_1140_ = _e769;
+                                            phi_1141_ = select(true, false, _e766);
                                         } else {
-                                            phi_1145_ = f32();
-                                            phi_1146_ = true;
+                                            phi_1140_ = f32();
+                                            phi_1141_ = true;
                                         }
-                                        let _e794 = phi_1145_;
-                                        let _e796 = phi_1146_;
-                                        let _e798 = (select(_e777, _e765, _e779) / _e97);
-                                        let _e799 = (select(_e794, _e782, _e796) / _e107);
-                                        let _e800 = (_e386 + _e798);
-                                        let _e801 = (_e387 + _e799);
-                                        let _e802 = (_e386 - _e798);
-                                        let _e803 = (_e387 - _e799);
-                                        let _e804 = (_e763 & 31u);
-                                        let _e806 = (_e102 >> bitcast<u32>(_e804));
-                                        let _e808 = select(1u, _e806, (1u < _e806));
-                                        let _e810 = (_e112 >> bitcast<u32>(_e804));
-                                        let _e812 = select(1u, _e810, (1u < _e810));
-                                        let _e813 = f32(_e808);
-                                        let _e814 = (_e800 * _e813);
+                                        let _e772 = phi_1140_;
+                                        let _e774 = phi_1141_;
+                                        let _e776 = (select(_e772, _e760, _e774) / _e107);
+                                        let _e777 = (_e378 + _e758);
+                                        let _e778 = (_e379 + _e776);
+                                        let _e779 = (_e378 - _e758);
+                                        let _e780 = (_e379 - _e776);
+                                        let _e781 = (_e740 > 0f);
+                                        if _e781 {
+                                            let _e786 = select(select(u32(_e740), 0u, (_e740 < 0f)), 4294967295u, (_e740 > 4294967000f));
+                                            phi_2108_ = select(_e786, 4u, (4u < _e786));
+                                        } else {
+                                            phi_2108_ = 0u;
+                                        }
+                                        let _e790 = phi_2108_;
+                                        let _e791 = (_e790 & 31u);
+                                        let _e793 = (_e102 >> bitcast<u32>(_e791));
+                                        let _e795 = select(1u, _e793, (1u < _e793));
+                                        let _e797 = (_e112 >> bitcast<u32>(_e791));
+                                        let _e799 = select(1u, _e797, (1u < _e797));
+                                        let _e801 = (_e777 * f32(_e795));
+                                        if (_e801 > 0f) {
+                                            let _e807 = select(select(u32(_e801), 0u, (_e801 < 0f)), 4294967295u, (_e801 > 4294967000f));
+                                            let _e808 = (_e795 - 1u);
+                                            phi_2156_ = select(_e807, _e808, (_e808 < _e807));
+                                        } else {
+                                            phi_2156_ = 0u;
+                                        }
+                                        let _e812 = phi_2156_;
+                                        let _e814 = (_e778 * f32(_e799));
                                         if (_e814 > 0f) {
                                             let _e820 = select(select(u32(_e814), 0u, (_e814 < 0f)), 4294967295u, (_e814 > 4294967000f));
-                                            let _e821 = (_e808 - 1u);
-                                            phi_1198_ = select(_e820, _e821, (_e821 < _e820));
+                                            let _e821 = (_e799 - 1u);
+                                            phi_2176_ = select(_e820, _e821, (_e821 < _e820));
                                         } else {
-                                            phi_1198_ = 0u;
+                                            phi_2176_ = 0u;
                                         }
-                                        let _e825 = phi_1198_;
-                                        let _e826 = f32(_e812);
-                                        let _e827 = (_e801 * _e826);
-                                        if (_e827 > 0f) {
-                                            let _e833 = select(select(u32(_e827), 0u, (_e827 < 0f)), 4294967295u, (_e827 > 4294967000f));
-                                            let _e834 = (_e812 - 1u);
-                                            phi_1218_ = select(_e833, _e834, (_e834 < _e833));
-                                        } else {
-                                            phi_1218_ = 0u;
-                                        }
-                                        let _e838 = phi_1218_;
-                                        phi_1220_ = 0u;
-                                        phi_1223_ = 0u;
+                                        let _e825 = phi_2176_;
+                                        phi_2178_ = 0u;
+                                        phi_2179_ = 0u;
                                         loop {
-                                            let _e840 = phi_1220_;
-                                            let _e842 = phi_1223_;
-                                            local_1 = _e842;
-                                            let _e843 = (_e840 < _e763);
-                                            if _e843 {
-                                                let _e844 = (_e840 & 31u);
-                                                let _e846 = (_e102 >> bitcast<u32>(_e844));
-                                                let _e850 = (_e112 >> bitcast<u32>(_e844));
-                                                phi_1221_ = (_e840 + 1u);
-                                                phi_1224_ = (_e842 + (select(1u, _e846, (1u < _e846)) * select(1u, _e850, (1u < _e850))));
+                                            let _e827 = phi_2178_;
+                                            let _e829 = phi_2179_;
+                                            local_1 = _e829;
+                                            let _e830 = (_e827 < _e790);
+                                            if _e830 {
+                                                let _e831 = (_e827 & 31u);
+                                                let _e833 = (_e102 >> bitcast<u32>(_e831));
+                                                let _e837 = (_e112 >> bitcast<u32>(_e831));
+                                                phi_2202_ = (_e827 + 1u);
+                                                phi_2203_ = (_e829 + (select(1u, _e833, (1u < _e833)) * select(1u, _e837, (1u < _e837))));
                                             } else {
-                                                phi_1221_ = u32();
-                                                phi_1224_ = u32();
+                                                phi_2202_ = u32();
+                                                phi_2203_ = u32();
                                             }
-                                            let _e857 = phi_1221_;
-                                            let _e859 = phi_1224_;
+                                            let _e844 = phi_2202_;
+                                            let _e846 = phi_2203_;
                                             continue;
                                             continuing {
-                                                phi_1220_ = _e857;
-                                                phi_1223_ = _e859;
-                                                break if !(_e843);
+                                                phi_2178_ = _e844;
+                                                phi_2179_ = _e846;
+                                                break if !(_e830);
                                             }
                                         }
-                                        let _e864 = local_1;
-                                        let _e865 = (_e864 + ((_e838 * _e808) + _e825));
-                                        if (_e865 < _e86) {
+                                        let _e851 = local_1;
+                                        let _e852 = (_e851 + ((_e825 * _e795) + _e812));
+                                        if (_e852 < _e86) {
                                         } else {
-                                            phi_2332_ = true;
+                                            phi_2581_ = true;
                                             break;
                                         }
-                                        let _e869 = mips.member[_e865];
-                                        let _e878 = (_e802 * _e813);
-                                        if (_e878 > 0f) {
-                                            let _e884 = select(select(u32(_e878), 0u, (_e878 < 0f)), 4294967295u, (_e878 > 4294967000f));
-                                            let _e885 = (_e808 - 1u);
-                                            phi_1306_ = select(_e884, _e885, (_e885 < _e884));
+                                        let _e856 = mips.member[_e852];
+                                        if _e781 {
+                                            let _e869 = select(select(u32(_e740), 0u, (_e740 < 0f)), 4294967295u, (_e740 > 4294967000f));
+                                            phi_2230_ = select(_e869, 4u, (4u < _e869));
                                         } else {
-                                            phi_1306_ = 0u;
+                                            phi_2230_ = 0u;
                                         }
-                                        let _e889 = phi_1306_;
-                                        let _e890 = (_e803 * _e826);
-                                        if (_e890 > 0f) {
-                                            let _e896 = select(select(u32(_e890), 0u, (_e890 < 0f)), 4294967295u, (_e890 > 4294967000f));
-                                            let _e897 = (_e812 - 1u);
-                                            phi_1326_ = select(_e896, _e897, (_e897 < _e896));
+                                        let _e873 = phi_2230_;
+                                        let _e874 = (_e873 & 31u);
+                                        let _e876 = (_e102 >> bitcast<u32>(_e874));
+                                        let _e878 = select(1u, _e876, (1u < _e876));
+                                        let _e880 = (_e112 >> bitcast<u32>(_e874));
+                                        let _e882 = select(1u, _e880, (1u < _e880));
+                                        let _e884 = (_e779 * f32(_e878));
+                                        if (_e884 > 0f) {
+                                            let _e890 = select(select(u32(_e884), 0u, (_e884 < 0f)), 4294967295u, (_e884 > 4294967000f));
+                                            let _e891 = (_e878 - 1u);
+                                            phi_2278_ = select(_e890, _e891, (_e891 < _e890));
                                         } else {
-                                            phi_1326_ = 0u;
+                                            phi_2278_ = 0u;
                                         }
-                                        let _e901 = phi_1326_;
-                                        phi_1328_ = 0u;
-                                        phi_1331_ = 0u;
+                                        let _e895 = phi_2278_;
+                                        let _e897 = (_e780 * f32(_e882));
+                                        if (_e897 > 0f) {
+                                            let _e903 = select(select(u32(_e897), 0u, (_e897 < 0f)), 4294967295u, (_e897 > 4294967000f));
+                                            let _e904 = (_e882 - 1u);
+                                            phi_2298_ = select(_e903, _e904, (_e904 < _e903));
+                                        } else {
+                                            phi_2298_ = 0u;
+                                        }
+                                        let _e908 = phi_2298_;
+                                        phi_2300_ = 0u;
+                                        phi_2301_ = 0u;
                                         loop {
-                                            let _e903 = phi_1328_;
-                                            let _e905 = phi_1331_;
-                                            local_2 = _e905;
-                                            let _e906 = (_e903 < _e763);
-                                            if _e906 {
-                                                let _e907 = (_e903 & 31u);
-                                                let _e909 = (_e102 >> bitcast<u32>(_e907));
-                                                let _e913 = (_e112 >> bitcast<u32>(_e907));
-                                                phi_1329_ = (_e903 + 1u);
-                                                phi_1332_ = (_e905 + (select(1u, _e909, (1u < _e909)) * select(1u, _e913, (1u < _e913))));
+                                            let _e910 = phi_2300_;
+                                            let _e912 = phi_2301_;
+                                            local_2 = _e912;
+                                            let _e913 = (_e910 < _e873);
+                                            if _e913 {
+                                                let _e914 = (_e910 & 31u);
+                                                let _e916 = (_e102 >> bitcast<u32>(_e914));
+                                                let _e920 = (_e112 >> bitcast<u32>(_e914));
+                                                phi_2324_ = (_e910 + 1u);
+                                                phi_2325_ = (_e912 + (select(1u, _e916, (1u < _e916)) * select(1u, _e920, (1u < _e920))));
                                             } else {
-                                                phi_1329_ = u32();
-                                                phi_1332_ = u32();
+                                                phi_2324_ = u32();
+                                                phi_2325_ = u32();
                                             }
-                                            let _e920 = phi_1329_;
-                                            let _e922 = phi_1332_;
+                                            let _e927 = phi_2324_;
+                                            let _e929 = phi_2325_;
                                             continue;
                                             continuing {
-                                                phi_1328_ = _e920;
-                                                phi_1331_ = _e922;
-                                                break if !(_e906);
+                                                phi_2300_ = _e927;
+                                                phi_2301_ = _e929;
+                                                break if !(_e913);
                                             }
                                         }
-                                        let _e927 = local_2;
-                                        let _e928 = (_e927 + ((_e901 * _e808) + _e889));
-                                        if (_e928 < _e86) {
+                                        let _e934 = local_2;
+                                        let _e935 = (_e934 + ((_e908 * _e878) + _e895));
+                                        if (_e935 < _e86) {
                                         } else {
-                                            phi_2332_ = true;
+                                            phi_2581_ = true;
                                             break;
                                         }
-                                        let _e932 = mips.member[_e928];
-                                        let _e941 = (((((2f * _e800) - 1f) * _e395) * _e869) - _e397);
-                                        let _e942 = ((((1f - (2f * _e801)) * _e404) * _e869) - _e406);
-                                        let _e943 = (_e869 - _e388);
-                                        let _e946 = ((_e941 * _e941) + (_e942 * _e942));
-                                        let _e949 = sqrt((_e946 + (_e943 * _e943)));
-                                        let _e958 = (1f + _e707);
-                                        let _e959 = (_e943 * _e958);
-                                        let _e962 = sqrt((_e946 + (_e959 * _e959)));
-                                        let _e963 = (_e577 > 0f);
-                                        if _e963 {
-                                            let _e965 = ((_e499 - _e962) / _e577);
-                                            if (_e965 > 0f) {
-                                                phi_1430_ = select(1f, _e965, (_e965 < 1f));
-                                            } else {
-                                                phi_1430_ = 0f;
-                                            }
-                                            let _e970 = phi_1430_;
-                                            phi_1436_ = _e970;
+                                        let _e939 = mips.member[_e935];
+                                        let _e948 = (((((_e777 * 2f) - 1f) * _e387) * _e856) - _e389);
+                                        let _e949 = (((((_e778 * -2f) + 1f) * _e396) * _e856) - _e398);
+                                        let _e950 = (_e856 - _e380);
+                                        let _e953 = ((_e948 * _e948) + (_e949 * _e949));
+                                        let _e956 = sqrt((_e953 + (_e950 * _e950)));
+                                        let _e965 = (1f + _e695);
+                                        let _e966 = (_e950 * _e965);
+                                        let _e969 = sqrt((_e953 + (_e966 * _e966)));
+                                        let _e970 = (_e569 > 0f);
+                                        if _e970 {
+                                            let _e973 = ((-(_e969) + _e491) / _e569);
+                                            phi_1279_ = select(0f, select(1f, _e973, (_e973 < 1f)), (_e973 > 0f));
                                         } else {
-                                            phi_1436_ = select(0f, 1f, (_e962 <= _e499));
+                                            phi_1279_ = select(0f, 1f, (_e969 <= _e491));
                                         }
-                                        let _e974 = phi_1436_;
-                                        let _e977 = (_e702 + ((((((_e941 / _e949) * _e417) + ((_e942 / _e949) * _e418)) + ((_e943 / _e949) * _e419)) - _e702) * _e974));
-                                        let _e978 = (((((2f * _e802) - 1f) * _e395) * _e932) - _e397);
-                                        let _e979 = ((((1f - (2f * _e803)) * _e404) * _e932) - _e406);
-                                        let _e980 = (_e932 - _e388);
-                                        let _e983 = ((_e978 * _e978) + (_e979 * _e979));
-                                        let _e986 = sqrt((_e983 + (_e980 * _e980)));
-                                        let _e995 = (_e980 * _e958);
-                                        let _e998 = sqrt((_e983 + (_e995 * _e995)));
-                                        if _e963 {
-                                            let _e1000 = ((_e499 - _e998) / _e577);
-                                            if (_e1000 > 0f) {
-                                                phi_1489_ = select(1f, _e1000, (_e1000 < 1f));
-                                            } else {
-                                                phi_1489_ = 0f;
-                                            }
-                                            let _e1005 = phi_1489_;
-                                            phi_1495_ = _e1005;
+                                        let _e981 = phi_1279_;
+                                        let _e984 = (_e690 + ((((((_e948 / _e956) * _e409) + ((_e949 / _e956) * _e410)) + ((_e950 / _e956) * _e411)) - _e690) * _e981));
+                                        let _e985 = (((((_e779 * 2f) - 1f) * _e387) * _e939) - _e389);
+                                        let _e986 = (((((_e780 * -2f) + 1f) * _e396) * _e939) - _e398);
+                                        let _e987 = (_e939 - _e380);
+                                        let _e990 = ((_e985 * _e985) + (_e986 * _e986));
+                                        let _e993 = sqrt((_e990 + (_e987 * _e987)));
+                                        let _e1002 = (_e987 * _e965);
+                                        let _e1005 = sqrt((_e990 + (_e1002 * _e1002)));
+                                        if _e970 {
+                                            let _e1008 = ((-(_e1005) + _e491) / _e569);
+                                            phi_1339_ = select(0f, select(1f, _e1008, (_e1008 < 1f)), (_e1008 > 0f));
                                         } else {
-                                            phi_1495_ = select(0f, 1f, (_e998 <= _e499));
+                                            phi_1339_ = select(0f, 1f, (_e1005 <= _e491));
                                         }
-                                        let _e1009 = phi_1495_;
-                                        let _e1012 = (_e704 + ((((((_e978 / _e986) * _e417) + ((_e979 / _e986) * _e418)) + ((_e980 / _e986) * _e419)) - _e704) * _e1009));
-                                        if (_e713 != _e713) {
-                                            phi_2129_ = true;
+                                        let _e1016 = phi_1339_;
+                                        let _e1019 = (_e692 + ((((((_e985 / _e993) * _e409) + ((_e986 / _e993) * _e410)) + ((_e987 / _e993) * _e411)) - _e692) * _e1016));
+                                        if (_e701 != _e701) {
+                                            phi_2341_ = true;
                                         } else {
-                                            phi_2129_ = (_e977 >= _e713);
+                                            phi_2341_ = (_e984 >= _e701);
                                         }
-                                        let _e1016 = phi_2129_;
-                                        if (_e711 != _e711) {
-                                            phi_2144_ = true;
+                                        let _e1023 = phi_2341_;
+                                        if (_e699 != _e699) {
+                                            phi_2356_ = true;
                                         } else {
-                                            phi_2144_ = (_e1012 >= _e711);
+                                            phi_2356_ = (_e1019 >= _e699);
                                         }
-                                        let _e1021 = phi_2144_;
-                                        phi_999_ = (_e709 + 1u);
-                                        phi_1002_ = select(_e711, _e1012, _e1021);
-                                        phi_1004_ = select(_e713, _e977, _e1016);
+                                        let _e1028 = phi_2356_;
+                                        phi_1009_ = (_e697 + 1u);
+                                        phi_1012_ = select(_e699, _e1019, _e1028);
+                                        phi_1014_ = select(_e701, _e984, _e1023);
                                     } else {
-                                        phi_999_ = u32();
-                                        phi_1002_ = f32();
-                                        phi_1004_ = f32();
+                                        phi_1009_ = u32();
+                                        phi_1012_ = f32();
+                                        phi_1014_ = f32();
                                     }
-                                    let _e1025 = phi_999_;
-                                    let _e1027 = phi_1002_;
-                                    let _e1029 = phi_1004_;
+                                    let _e1032 = phi_1009_;
+                                    let _e1034 = phi_1012_;
+                                    let _e1036 = phi_1014_;
                                     continue;
                                     continuing {
-                                        phi_998_ = _e1025;
-                                        phi_1001_ = _e1027;
-                                        phi_1003_ = _e1029;
-                                        phi_2332_ = _e592;
-                                        break if !(_e714);
+                                        phi_1008_ = _e1032;
+                                        phi_1011_ = _e1034;
+                                        phi_1013_ = _e1036;
+                                        phi_2581_ = _e583;
+                                        break if !(_e702);
                                     }
                                 }
-                                let _e1032 = phi_2332_;
-                                phi_2451_ = _e1032;
-                                if _e1032 {
+                                let _e1039 = phi_2581_;
+                                phi_2702_ = _e1039;
+                                if _e1039 {
                                     break;
                                 }
-                                let _e1035 = (_e657 + ((1f - _e657) * 0.05f));
-                                let _e1037 = local_3;
-                                let _e1038 = abs(_e1037);
-                                let _e1049 = (((-0.156583f * _e1038) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1038))) >> bitcast<u32>(1i))))));
-                                let _e1051 = local_4;
-                                if (_e1051 >= 0f) {
-                                    phi_1521_ = _e1049;
+                                let _e1041 = local_3;
+                                let _e1042 = abs(_e1041);
+                                let _e1053 = (((_e1042 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1042))) >> bitcast<u32>(1i))))));
+                                let _e1055 = local_4;
+                                let _e1058 = select((3.141593f - _e1053), _e1053, (_e1055 >= 0f));
+                                let _e1059 = -(_e1058);
+                                let _e1061 = local_5;
+                                let _e1062 = abs(_e1061);
+                                let _e1073 = (((_e1062 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1062))) >> bitcast<u32>(1i))))));
+                                let _e1075 = local_6;
+                                let _e1078 = select((3.141593f - _e1073), _e1073, (_e1075 >= 0f));
+                                let _e1081 = (_e648 + ((1f - _e648) * 0.05f));
+                                let _e1082 = (_e1058 * -2f);
+                                let _e1083 = sin(_e683);
+                                let _e1089 = (_e1078 * 2f);
+                                let _e1101 = params.member.member_13;
+                                if (_e1101 == 0u) {
+                                    phi_1558_ = _e587;
                                 } else {
-                                    phi_1521_ = (3.141593f - _e1049);
+                                    let _e1107 = ((_e1058 * -3f) - _e683);
+                                    let _e1115 = ((_e1078 * 3f) - _e683);
+                                    let _e1120 = (_e1059 + _e683);
+                                    let _e1122 = (_e1078 + _e683);
+                                    let _e1127 = (((((((sin((_e1059 - _e683)) * 6f) - sin(_e1107)) + (sin((_e1078 - _e683)) * 6f)) - sin(_e1115)) + (_e1083 * 16f)) - ((sin(_e1120) + sin(_e1122)) * 3f)) * 0.083333336f);
+                                    let _e1139 = (((-(cos(_e1107)) - cos(_e1115)) + (cos(_e683) * 8f)) - ((cos(_e1120) + cos(_e1122)) * 3f));
+                                    let _e1140 = (_e597 * _e1127);
+                                    let _e1141 = (_e596 * _e1127);
+                                    let _e1142 = (_e1139 * -0.083333336f);
+                                    let _e1143 = (-1f * _e411);
+                                    let _e1144 = (-1f * _e409);
+                                    let _e1146 = (1f / (_e1143 + 1f));
+                                    let _e1147 = (_e1146 * _e410);
+                                    let _e1151 = (_e1147 * _e1144);
+                                    let _e1172 = (_e1143 > 0.9997f);
+                                    let _e1173 = (_e1143 < -0.9997f);
+                                    phi_1558_ = (_e587 + vec3<f32>((select(select(((((_e1143 + (_e1147 * _e410)) * _e1140) + (_e1151 * _e1141)) + (_e1144 * _e1142)), _e1140, _e1173), _e1140, _e1172) * _e1081), (select(select((((_e1151 * _e1140) + ((_e1143 + ((_e1146 * _e1144) * _e1144)) * _e1141)) + (-(_e410) * _e1142)), -(_e1141), _e1173), _e1141, _e1172) * _e1081), (select(select((((_e409 * _e1140) + (_e410 * _e1141)) + (_e1143 * _e1142)), (_e1139 * 0.083333336f), _e1173), _e1142, _e1172) * _e1081)));
                                 }
-                                let _e1055 = phi_1521_;
-                                let _e1056 = -(_e1055);
-                                let _e1058 = local_5;
-                                let _e1059 = abs(_e1058);
-                                let _e1070 = (((-0.156583f * _e1059) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1059))) >> bitcast<u32>(1i))))));
-                                let _e1072 = local_6;
-                                if (_e1072 >= 0f) {
-                                    phi_1539_ = _e1070;
-                                } else {
-                                    phi_1539_ = (3.141593f - _e1070);
-                                }
-                                let _e1076 = phi_1539_;
-                                let _e1077 = (_e1055 * -2f);
-                                let _e1078 = sin(_e695);
-                                let _e1084 = (2f * _e1076);
-                                let _e1095 = params.member.member_13;
-                                if (_e1095 == 0u) {
-                                    phi_1705_ = vec3<f32>(0f, 0f, 0f);
-                                } else {
-                                    let _e1101 = ((_e1055 * -3f) - _e695);
-                                    let _e1109 = ((3f * _e1076) - _e695);
-                                    let _e1114 = (_e1056 + _e695);
-                                    let _e1116 = (_e1076 + _e695);
-                                    let _e1121 = (((((((6f * sin((_e1056 - _e695))) - sin(_e1101)) + (6f * sin((_e1076 - _e695)))) - sin(_e1109)) + (16f * _e1078)) - (3f * (sin(_e1114) + sin(_e1116)))) * 0.083333336f);
-                                    let _e1133 = (((-(cos(_e1101)) - cos(_e1109)) + (8f * cos(_e695))) - (3f * (cos(_e1114) + cos(_e1116))));
-                                    let _e1134 = (_e606 * _e1121);
-                                    let _e1135 = (_e605 * _e1121);
-                                    let _e1136 = (_e1133 * -0.083333336f);
-                                    let _e1138 = (-1f * _e419);
-                                    if (_e1138 > 0.9997f) {
-                                        phi_1697_ = vec3<f32>(_e1134, _e1135, _e1136);
-                                        phi_1698_ = vec3<f32>();
-                                        phi_1699_ = true;
-                                    } else {
-                                        let _e1140 = (_e1138 < -0.9997f);
-                                        if _e1140 {
-                                            phi_1695_ = vec3<f32>(_e1134, -(_e1135), (_e1133 * 0.083333336f));
-                                            phi_1696_ = vec3<f32>();
-                                        } else {
-                                            let _e1144 = (-1f * _e417);
-                                            let _e1146 = (1f / (1f + _e1138));
-                                            let _e1147 = (_e1146 * _e418);
-                                            let _e1151 = (_e1147 * _e1144);
-                                            phi_1695_ = vec3<f32>();
-                                            phi_1696_ = vec3<f32>(((((_e1138 + (_e1147 * _e418)) * _e1134) + (_e1151 * _e1135)) + (_e1144 * _e1136)), (((_e1151 * _e1134) + ((_e1138 + ((_e1146 * _e1144) * _e1144)) * _e1135)) + (-(_e418) * _e1136)), (((_e417 * _e1134) + (_e418 * _e1135)) + (_e1138 * _e1136)));
-                                        }
-                                        let _e1172 = phi_1695_;
-                                        let _e1174 = phi_1696_;
-                                        phi_1697_ = _e1172;
-                                        phi_1698_ = _e1174;
-                                        phi_1699_ = _e1140;
-                                    }
-                                    let _e1176 = phi_1697_;
-                                    let _e1178 = phi_1698_;
-                                    let _e1180 = phi_1699_;
-                                    phi_1705_ = (select(_e1178, _e1176, vec3(_e1180)) * _e1035);
-                                }
-                                let _e1185 = phi_1705_;
-                                phi_2452_ = _e1032;
-                                phi_817_ = (_e594 + _e1185);
-                                phi_820_ = (_e596 + 1u);
-                                phi_822_ = (_e598 + (_e1035 * (0.25f * (((_e678 + (_e1077 * _e1078)) - cos((_e1077 - _e695))) + ((_e678 + (_e1084 * _e1078)) - cos((_e1084 - _e695)))))));
+                                let _e1186 = phi_1558_;
+                                phi_2703_ = _e1039;
+                                phi_833_ = (_e585 + 1u);
+                                phi_836_ = _e1186;
+                                phi_838_ = (_e589 + ((0.25f * (((_e667 + (_e1082 * _e1083)) - cos((_e1082 - _e683))) + ((_e667 + (_e1089 * _e1083)) - cos((_e1089 - _e683))))) * _e1081));
                             } else {
-                                phi_2452_ = _e592;
-                                phi_817_ = vec3<f32>();
-                                phi_820_ = u32();
-                                phi_822_ = f32();
+                                phi_2703_ = _e583;
+                                phi_833_ = u32();
+                                phi_836_ = vec3<f32>();
+                                phi_838_ = f32();
                             }
-                            let _e1190 = phi_2452_;
-                            let _e1192 = phi_817_;
-                            let _e1194 = phi_820_;
-                            let _e1196 = phi_822_;
+                            let _e1189 = phi_2703_;
+                            let _e1191 = phi_833_;
+                            let _e1193 = phi_836_;
+                            let _e1195 = phi_838_;
                             continue;
                             continuing {
-                                phi_2383_ = _e1190;
-                                phi_816_ = _e1192;
-                                phi_819_ = _e1194;
-                                phi_821_ = _e1196;
-                                phi_2451_ = _e1190;
-                                break if !(_e599);
+                                phi_2635_ = _e1189;
+                                phi_832_ = _e1191;
+                                phi_835_ = _e1193;
+                                phi_837_ = _e1195;
+                                phi_2702_ = _e1189;
+                                break if !(_e590);
                             }
                         }
-                        let _e1199 = phi_2451_;
-                        if _e1199 {
+                        let _e1198 = phi_2702_;
+                        if _e1198 {
                             break;
                         }
-                        let _e1202 = local_7;
-                        let _e1206 = params.member.member_6;
-                        let _e1207 = pow((_e1202 / f32(_e590)), _e1206);
-                        if (_e1207 != _e1207) {
-                            phi_2159_ = true;
-                        } else {
-                            phi_2159_ = (0.03f >= _e1207);
-                        }
-                        let _e1211 = phi_2159_;
-                        let _e1212 = select(_e1207, 0.03f, _e1211);
-                        let _e1215 = params.member.member_13;
-                        let _e1216 = (_e1215 == 0u);
-                        if _e1216 {
-                            let _e1217 = (_e1212 * 0.6666667f);
-                            if (_e1217 > 0f) {
-                                phi_1741_ = select(1f, _e1217, (_e1217 < 1f));
-                            } else {
-                                phi_1741_ = 0f;
-                            }
-                            let _e1222 = phi_1741_;
-                            let _e1224 = ((_e1222 * 255f) + 0.5f);
-                            phi_1793_ = type_22(select(select(u32(_e1224), 0u, (_e1224 < 0f)), 4294967295u, (_e1224 > 4294967000f)), _e381);
-                            phi_1794_ = type_22();
-                        } else {
-                            let _e1232 = local_8;
-                            let _e1236 = local_9;
-                            let _e1241 = local_10;
-                            let _e1245 = sqrt((((_e1232.x * _e1232.x) + (_e1236.y * _e1236.y)) + (_e1241.z * _e1241.z)));
-                            if (_e1245 > 0f) {
-                                let _e1249 = local_11;
-                                phi_1771_ = (_e1249 / vec3(_e1245));
-                            } else {
-                                phi_1771_ = _e492;
-                            }
-                            let _e1252 = phi_1771_;
-                            let _e1253 = (_e1212 * 0.6666667f);
-                            let _e1260 = ((_e1252.x * 0.5f) + 0.5f);
-                            let _e1261 = ((_e1252.y * 0.5f) + 0.5f);
-                            let _e1262 = ((_e1252.z * 0.5f) + 0.5f);
-                            if (_e1260 > 0f) {
-                                phi_2175_ = select(1f, _e1260, (_e1260 < 1f));
-                            } else {
-                                phi_2175_ = 0f;
-                            }
-                            let _e1267 = phi_2175_;
-                            let _e1269 = ((_e1267 * 255f) + 0.5f);
-                            if (_e1261 > 0f) {
-                                phi_2196_ = select(1f, _e1261, (_e1261 < 1f));
-                            } else {
-                                phi_2196_ = 0f;
-                            }
-                            let _e1279 = phi_2196_;
-                            let _e1281 = ((_e1279 * 255f) + 0.5f);
-                            if (_e1262 > 0f) {
-                                phi_2217_ = select(1f, _e1262, (_e1262 < 1f));
-                            } else {
-                                phi_2217_ = 0f;
-                            }
-                            let _e1294 = phi_2217_;
-                            let _e1296 = ((_e1294 * 255f) + 0.5f);
-                            if (_e1253 > 0f) {
-                                phi_2238_ = select(1f, _e1253, (_e1253 < 1f));
-                            } else {
-                                phi_2238_ = 0f;
-                            }
-                            let _e1309 = phi_2238_;
-                            let _e1311 = ((_e1309 * 255f) + 0.5f);
-                            phi_1793_ = type_22();
-                            phi_1794_ = type_22((((select(select(u32(_e1269), 0u, (_e1269 < 0f)), 4294967295u, (_e1269 > 4294967000f)) | (select(select(u32(_e1281), 0u, (_e1281 < 0f)), 4294967295u, (_e1281 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1296), 0u, (_e1296 < 0f)), 4294967295u, (_e1296 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1311), 0u, (_e1311 < 0f)), 4294967295u, (_e1311 > 4294967000f)) << bitcast<u32>(24i))), _e381);
-                        }
-                        let _e1322 = phi_1793_;
-                        let _e1324 = phi_1794_;
-                        phi_1841_ = _e1322;
-                        phi_1842_ = _e1324;
-                        phi_1843_ = select(true, false, _e1216);
+                        let _e1201 = local_7;
+                        let _e1204 = local_8;
+                        phi_1564_ = type_22((_e1201 / f32(_e581)), _e1204);
                     } else {
-                        let _e1328 = params.member.member_13;
-                        phi_1841_ = type_22();
-                        phi_1842_ = type_22(select(2852159616u, 170u, (_e1328 == 0u)), _e381);
-                        phi_1843_ = true;
+                        phi_1564_ = type_22(1f, vec3<f32>(0f, 0f, 0f));
                     }
-                    let _e1333 = phi_1841_;
-                    let _e1335 = phi_1842_;
-                    let _e1337 = phi_1843_;
-                    if _e1337 {
-                        phi_1847_ = _e1335;
+                    let _e1207 = phi_1564_;
+                    if _e565 {
+                        let _e1212 = params.member.member_6;
+                        let _e1213 = pow(_e1207.member, _e1212);
+                        if (_e1213 != _e1213) {
+                            phi_2383_ = true;
+                        } else {
+                            phi_2383_ = (0.03f >= _e1213);
+                        }
+                        let _e1217 = phi_2383_;
+                        let _e1218 = select(_e1213, 0.03f, _e1217);
+                        let _e1221 = params.member.member_13;
+                        if (_e1221 == 0u) {
+                            let _e1223 = (_e1218 * 0.6666667f);
+                            let _e1229 = ((select(0f, select(1f, _e1223, (_e1223 < 1f)), (_e1223 > 0f)) * 255f) + 0.5f);
+                            phi_1640_ = select(select(u32(_e1229), 0u, (_e1229 < 0f)), 4294967295u, (_e1229 > 4294967000f));
+                        } else {
+                            let _e1243 = sqrt((((_e1207.member_1.x * _e1207.member_1.x) + (_e1207.member_1.y * _e1207.member_1.y)) + (_e1207.member_1.z * _e1207.member_1.z)));
+                            if (_e1243 > 0f) {
+                                phi_1619_ = (_e1207.member_1 / vec3(_e1243));
+                            } else {
+                                phi_1619_ = _e484;
+                            }
+                            let _e1248 = phi_1619_;
+                            let _e1249 = (_e1218 * 0.6666667f);
+                            let _e1256 = ((_e1248.x * 0.5f) + 0.5f);
+                            let _e1257 = ((_e1248.y * 0.5f) + 0.5f);
+                            let _e1258 = ((_e1248.z * 0.5f) + 0.5f);
+                            let _e1264 = ((select(0f, select(1f, _e1256, (_e1256 < 1f)), (_e1256 > 0f)) * 255f) + 0.5f);
+                            let _e1275 = ((select(0f, select(1f, _e1257, (_e1257 < 1f)), (_e1257 > 0f)) * 255f) + 0.5f);
+                            let _e1289 = ((select(0f, select(1f, _e1258, (_e1258 < 1f)), (_e1258 > 0f)) * 255f) + 0.5f);
+                            let _e1303 = ((select(0f, select(1f, _e1249, (_e1249 < 1f)), (_e1249 > 0f)) * 255f) + 0.5f);
+                            phi_1640_ = (((select(select(u32(_e1264), 0u, (_e1264 < 0f)), 4294967295u, (_e1264 > 4294967000f)) | (select(select(u32(_e1275), 0u, (_e1275 < 0f)), 4294967295u, (_e1275 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1289), 0u, (_e1289 < 0f)), 4294967295u, (_e1289 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1303), 0u, (_e1303 < 0f)), 4294967295u, (_e1303 > 4294967000f)) << bitcast<u32>(24i)));
+                        }
+                        let _e1313 = phi_1640_;
+                        phi_1685_ = _e1313;
                     } else {
-                        phi_1847_ = _e1333;
+                        let _e1316 = params.member.member_13;
+                        phi_1685_ = select(2852159616u, 170u, (_e1316 == 0u));
                     }
-                    let _e1339 = phi_1847_;
+                    let _e1320 = phi_1685_;
                     if (_e118 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e118] = _e1339.member;
+                    terms.member[_e118] = _e1320;
                     if (_e118 < arrayLength((&edges.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e118] = _e1339.member_1;
+                    edges.member[_e118] = ((((64u * select(select(u32(_e281), 0u, (_e281 < 0f)), 4294967295u, (_e281 > 4294967000f))) + (16u * select(select(u32(_e309), 0u, (_e309 < 0f)), 4294967295u, (_e309 > 4294967000f)))) + (4u * select(select(u32(_e338), 0u, (_e338 < 0f)), 4294967295u, (_e338 > 4294967000f)))) + select(select(u32(_e367), 0u, (_e367 < 0f)), 4294967295u, (_e367 > 4294967000f)));
                 }
             }
             break;

@@ -44,7 +44,6 @@ var<storage, read_write> mips: type_7;
 fn function_() {
     var local: array<f32, 4>;
     var phi_160_: bool;
-    var phi_176_: f32;
     var phi_194_: u32;
     var phi_197_: u32;
     var phi_195_: u32;
@@ -59,7 +58,6 @@ fn function_() {
     var phi_340_: u32;
     var phi_343_: f32;
     var phi_345_: f32;
-    var phi_381_: f32;
     var phi_387_: f32;
     var phi_341_: u32;
     var phi_344_: f32;
@@ -106,214 +104,202 @@ fn function_() {
                         }
                         let _e78 = phi_160_;
                         let _e79 = select(_e74, _e70, _e78);
-                        if (_e79 > 0f) {
-                            phi_176_ = select(65504f, _e79, (_e79 < 65504f));
-                        } else {
-                            phi_176_ = 0f;
-                        }
-                        let _e84 = phi_176_;
-                        phi_400_ = _e84;
+                        phi_400_ = select(0f, select(65504f, _e79, (_e79 < 65504f)), (_e79 > 0f));
                     } else {
-                        let _e85 = (_e50 - 1u);
-                        let _e86 = (_e85 & 31u);
-                        let _e88 = (_e37 >> bitcast<u32>(_e86));
-                        let _e90 = select(1u, _e88, (1u < _e88));
-                        let _e92 = (_e47 >> bitcast<u32>(_e86));
+                        let _e84 = (_e50 - 1u);
+                        let _e85 = (_e84 & 31u);
+                        let _e87 = (_e37 >> bitcast<u32>(_e85));
+                        let _e89 = select(1u, _e87, (1u < _e87));
+                        let _e91 = (_e47 >> bitcast<u32>(_e85));
                         phi_194_ = 0u;
                         phi_197_ = 0u;
                         loop {
-                            let _e96 = phi_194_;
-                            let _e98 = phi_197_;
-                            local_1 = _e98;
-                            local_2 = _e98;
-                            local_3 = _e98;
-                            local_4 = _e98;
-                            let _e99 = (_e96 < _e85);
-                            if _e99 {
-                                let _e100 = (_e96 & 31u);
-                                let _e102 = (_e37 >> bitcast<u32>(_e100));
-                                let _e106 = (_e47 >> bitcast<u32>(_e100));
-                                phi_195_ = (_e96 + 1u);
-                                phi_198_ = (_e98 + (select(1u, _e102, (1u < _e102)) * select(1u, _e106, (1u < _e106))));
+                            let _e95 = phi_194_;
+                            let _e97 = phi_197_;
+                            local_1 = _e97;
+                            local_2 = _e97;
+                            local_3 = _e97;
+                            local_4 = _e97;
+                            let _e98 = (_e95 < _e84);
+                            if _e98 {
+                                let _e99 = (_e95 & 31u);
+                                let _e101 = (_e37 >> bitcast<u32>(_e99));
+                                let _e105 = (_e47 >> bitcast<u32>(_e99));
+                                phi_195_ = (_e95 + 1u);
+                                phi_198_ = (_e97 + (select(1u, _e101, (1u < _e101)) * select(1u, _e105, (1u < _e105))));
                             } else {
                                 phi_195_ = u32();
                                 phi_198_ = u32();
                             }
-                            let _e113 = phi_195_;
-                            let _e115 = phi_198_;
+                            let _e112 = phi_195_;
+                            let _e114 = phi_198_;
                             continue;
                             continuing {
-                                phi_194_ = _e113;
-                                phi_197_ = _e115;
-                                break if !(_e99);
+                                phi_194_ = _e112;
+                                phi_197_ = _e114;
+                                break if !(_e98);
                             }
                         }
-                        let _e117 = (2u * _e23.x);
-                        let _e118 = (2u * _e23.y);
-                        let _e119 = (select(1u, _e92, (1u < _e92)) - 1u);
-                        let _e122 = (select(_e118, _e119, (_e119 < _e118)) * _e90);
-                        let _e123 = (_e90 - 1u);
-                        let _e125 = select(_e117, _e123, (_e123 < _e117));
-                        let _e128 = local_1;
-                        let _e129 = (_e128 + (_e122 + _e125));
-                        if (_e129 < _e27) {
+                        let _e116 = (2u * _e23.x);
+                        let _e117 = (2u * _e23.y);
+                        let _e118 = (select(1u, _e91, (1u < _e91)) - 1u);
+                        let _e121 = (select(_e117, _e118, (_e118 < _e117)) * _e89);
+                        let _e122 = (_e89 - 1u);
+                        let _e124 = select(_e116, _e122, (_e122 < _e116));
+                        let _e127 = local_1;
+                        let _e128 = (_e127 + (_e121 + _e124));
+                        if (_e128 < _e27) {
                         } else {
                             break;
                         }
-                        let _e133 = mips.member[_e129];
-                        let _e134 = (_e117 + 1u);
-                        let _e136 = select(_e134, _e123, (_e123 < _e134));
-                        let _e139 = local_2;
-                        let _e140 = (_e139 + (_e122 + _e136));
-                        if (_e140 < _e27) {
+                        let _e132 = mips.member[_e128];
+                        let _e133 = (_e116 + 1u);
+                        let _e135 = select(_e133, _e122, (_e122 < _e133));
+                        let _e138 = local_2;
+                        let _e139 = (_e138 + (_e121 + _e135));
+                        if (_e139 < _e27) {
                         } else {
                             break;
                         }
-                        let _e144 = mips.member[_e140];
-                        let _e145 = (_e118 + 1u);
-                        let _e148 = (select(_e145, _e119, (_e119 < _e145)) * _e90);
-                        let _e151 = local_3;
-                        let _e152 = (_e151 + (_e148 + _e125));
-                        if (_e152 < _e27) {
+                        let _e143 = mips.member[_e139];
+                        let _e144 = (_e117 + 1u);
+                        let _e147 = (select(_e144, _e118, (_e118 < _e144)) * _e89);
+                        let _e150 = local_3;
+                        let _e151 = (_e150 + (_e147 + _e124));
+                        if (_e151 < _e27) {
                         } else {
                             break;
                         }
-                        let _e156 = mips.member[_e152];
-                        let _e159 = local_4;
-                        let _e160 = (_e159 + (_e148 + _e136));
-                        if (_e160 < _e27) {
+                        let _e155 = mips.member[_e151];
+                        let _e158 = local_4;
+                        let _e159 = (_e158 + (_e147 + _e135));
+                        if (_e159 < _e27) {
                         } else {
                             break;
                         }
-                        let _e164 = mips.member[_e160];
-                        local = array<f32, 4>(_e133, _e144, _e156, _e164);
-                        let _e168 = params.member.member_1;
-                        let _e171 = params.member.member_2;
-                        let _e173 = (0.75f * (_e168 * _e171));
-                        let _e175 = local[0u];
-                        let _e177 = local[1u];
-                        if (_e175 != _e175) {
+                        let _e163 = mips.member[_e159];
+                        local = array<f32, 4>(_e132, _e143, _e155, _e163);
+                        let _e167 = params.member.member_1;
+                        let _e170 = params.member.member_2;
+                        let _e172 = (0.75f * (_e167 * _e170));
+                        let _e174 = local[0u];
+                        let _e176 = local[1u];
+                        if (_e174 != _e174) {
                             phi_457_ = true;
                         } else {
-                            phi_457_ = (_e177 >= _e175);
+                            phi_457_ = (_e176 >= _e174);
                         }
-                        let _e181 = phi_457_;
-                        let _e182 = select(_e175, _e177, _e181);
-                        let _e184 = local[2u];
-                        if (_e182 != _e182) {
+                        let _e180 = phi_457_;
+                        let _e181 = select(_e174, _e176, _e180);
+                        let _e183 = local[2u];
+                        if (_e181 != _e181) {
                             phi_472_ = true;
                         } else {
-                            phi_472_ = (_e184 >= _e182);
+                            phi_472_ = (_e183 >= _e181);
                         }
-                        let _e188 = phi_472_;
-                        let _e189 = select(_e182, _e184, _e188);
-                        let _e191 = local[3u];
-                        if (_e189 != _e189) {
+                        let _e187 = phi_472_;
+                        let _e188 = select(_e181, _e183, _e187);
+                        let _e190 = local[3u];
+                        if (_e188 != _e188) {
                             phi_487_ = true;
                         } else {
-                            phi_487_ = (_e191 >= _e189);
+                            phi_487_ = (_e190 >= _e188);
                         }
-                        let _e195 = phi_487_;
+                        let _e194 = phi_487_;
                         phi_340_ = 0u;
                         phi_343_ = 0f;
                         phi_345_ = 0f;
                         loop {
-                            let _e198 = phi_340_;
-                            let _e200 = phi_343_;
-                            let _e202 = phi_345_;
-                            local_5 = _e202;
-                            local_6 = _e200;
-                            let _e203 = (_e198 < 4u);
-                            if _e203 {
-                                if _e203 {
+                            let _e197 = phi_340_;
+                            let _e199 = phi_343_;
+                            let _e201 = phi_345_;
+                            local_5 = _e201;
+                            local_6 = _e199;
+                            let _e202 = (_e197 < 4u);
+                            if _e202 {
+                                if _e202 {
                                 } else {
                                     phi_492_ = true;
                                     break;
                                 }
-                                let _e205 = local[_e198];
-                                let _e207 = (_e173 - (select(_e189, _e191, _e195) - _e205));
-                                let _e210 = params.member.member_3;
-                                if (_e210 > 0f) {
-                                    let _e213 = (_e207 / (_e210 * _e173));
-                                    if (_e213 > 0f) {
-                                        phi_381_ = select(1f, _e213, (_e213 < 1f));
-                                    } else {
-                                        phi_381_ = 0f;
-                                    }
-                                    let _e218 = phi_381_;
-                                    phi_387_ = _e218;
+                                let _e204 = local[_e197];
+                                let _e206 = (_e172 - (select(_e188, _e190, _e194) - _e204));
+                                let _e209 = params.member.member_3;
+                                if (_e209 > 0f) {
+                                    let _e212 = (_e206 / (_e209 * _e172));
+                                    phi_387_ = select(0f, select(1f, _e212, (_e212 < 1f)), (_e212 > 0f));
                                 } else {
-                                    phi_387_ = select(0f, 1f, (_e207 >= 0f));
+                                    phi_387_ = select(0f, 1f, (_e206 >= 0f));
                                 }
-                                let _e222 = phi_387_;
-                                if _e203 {
+                                let _e220 = phi_387_;
+                                if _e202 {
                                 } else {
                                     phi_492_ = true;
                                     break;
                                 }
-                                let _e223 = local[_e198];
-                                phi_341_ = (_e198 + 1u);
-                                phi_344_ = (_e200 + _e222);
-                                phi_346_ = (_e202 + (_e222 * _e223));
+                                let _e221 = local[_e197];
+                                phi_341_ = (_e197 + 1u);
+                                phi_344_ = (_e199 + _e220);
+                                phi_346_ = (_e201 + (_e220 * _e221));
                             } else {
                                 phi_341_ = u32();
                                 phi_344_ = f32();
                                 phi_346_ = f32();
                             }
-                            let _e229 = phi_341_;
-                            let _e231 = phi_344_;
-                            let _e233 = phi_346_;
+                            let _e227 = phi_341_;
+                            let _e229 = phi_344_;
+                            let _e231 = phi_346_;
                             continue;
                             continuing {
-                                phi_340_ = _e229;
-                                phi_343_ = _e231;
-                                phi_345_ = _e233;
+                                phi_340_ = _e227;
+                                phi_343_ = _e229;
+                                phi_345_ = _e231;
                                 phi_492_ = false;
-                                break if !(_e203);
+                                break if !(_e202);
                             }
                         }
-                        let _e236 = phi_492_;
-                        if _e236 {
+                        let _e234 = phi_492_;
+                        if _e234 {
                             break;
                         }
-                        let _e238 = local_5;
-                        let _e240 = local_6;
-                        phi_400_ = (_e238 / _e240);
+                        let _e236 = local_5;
+                        let _e238 = local_6;
+                        phi_400_ = (_e236 / _e238);
                     }
-                    let _e243 = phi_400_;
+                    let _e241 = phi_400_;
                     phi_404_ = 0u;
                     phi_407_ = 0u;
                     loop {
-                        let _e245 = phi_404_;
-                        let _e247 = phi_407_;
-                        local_7 = _e247;
-                        let _e248 = (_e245 < _e50);
-                        if _e248 {
-                            let _e249 = (_e245 & 31u);
-                            let _e251 = (_e37 >> bitcast<u32>(_e249));
-                            let _e255 = (_e47 >> bitcast<u32>(_e249));
-                            phi_405_ = (_e245 + 1u);
-                            phi_408_ = (_e247 + (select(1u, _e251, (1u < _e251)) * select(1u, _e255, (1u < _e255))));
+                        let _e243 = phi_404_;
+                        let _e245 = phi_407_;
+                        local_7 = _e245;
+                        let _e246 = (_e243 < _e50);
+                        if _e246 {
+                            let _e247 = (_e243 & 31u);
+                            let _e249 = (_e37 >> bitcast<u32>(_e247));
+                            let _e253 = (_e47 >> bitcast<u32>(_e247));
+                            phi_405_ = (_e243 + 1u);
+                            phi_408_ = (_e245 + (select(1u, _e249, (1u < _e249)) * select(1u, _e253, (1u < _e253))));
                         } else {
                             phi_405_ = u32();
                             phi_408_ = u32();
                         }
-                        let _e262 = phi_405_;
-                        let _e264 = phi_408_;
+                        let _e260 = phi_405_;
+                        let _e262 = phi_408_;
                         continue;
                         continuing {
-                            phi_404_ = _e262;
-                            phi_407_ = _e264;
-                            break if !(_e248);
+                            phi_404_ = _e260;
+                            phi_407_ = _e262;
+                            break if !(_e246);
                         }
                     }
-                    let _e269 = local_7;
-                    let _e270 = (_e269 + ((_e23.y * _e55) + _e23.x));
-                    if (_e270 < _e27) {
+                    let _e267 = local_7;
+                    let _e268 = (_e267 + ((_e23.y * _e55) + _e23.x));
+                    if (_e268 < _e27) {
                     } else {
                         break;
                     }
-                    mips.member[_e270] = _e243;
+                    mips.member[_e268] = _e241;
                 }
             }
             break;

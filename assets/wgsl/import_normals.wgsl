@@ -35,9 +35,7 @@ var engine_normals: texture_2d<f32>;
 fn function_() {
     var phi_91_: bool;
     var phi_173_: vec2<f32>;
-    var phi_188_: f32;
     var phi_189_: f32;
-    var phi_223_: f32;
     var phi_224_: f32;
 
     switch bitcast<i32>(0u) {
@@ -76,35 +74,23 @@ fn function_() {
                 if (_e111.x != _e111.x) {
                     phi_189_ = 0f;
                 } else {
-                    if (_e111.x > -1f) {
-                        phi_188_ = select(1f, _e111.x, (_e111.x < 1f));
-                    } else {
-                        phi_188_ = -1f;
-                    }
-                    let _e118 = phi_188_;
-                    phi_189_ = _e118;
+                    phi_189_ = select(-1f, select(1f, _e111.x, (_e111.x < 1f)), (_e111.x > -1f));
                 }
-                let _e120 = phi_189_;
-                let _e125 = ((_e120 * 127f) + (0.5f * select(1f, -1f, (_e120 < 0f))));
+                let _e119 = phi_189_;
+                let _e124 = ((_e119 * 127f) + (0.5f * select(1f, -1f, (_e119 < 0f))));
                 if (_e111.y != _e111.y) {
                     phi_224_ = 0f;
                 } else {
-                    if (_e111.y > -1f) {
-                        phi_223_ = select(1f, _e111.y, (_e111.y < 1f));
-                    } else {
-                        phi_223_ = -1f;
-                    }
-                    let _e141 = phi_223_;
-                    phi_224_ = _e141;
+                    phi_224_ = select(-1f, select(1f, _e111.y, (_e111.y < 1f)), (_e111.y > -1f));
                 }
-                let _e143 = phi_224_;
-                let _e148 = ((_e143 * 127f) + (0.5f * select(1f, -1f, (_e143 < 0f))));
-                let _e162 = ((_e24.y * _e38) + _e24.x);
-                if (_e162 < arrayLength((&normals.member))) {
+                let _e141 = phi_224_;
+                let _e146 = ((_e141 * 127f) + (0.5f * select(1f, -1f, (_e141 < 0f))));
+                let _e160 = ((_e24.y * _e38) + _e24.x);
+                if (_e160 < arrayLength((&normals.member))) {
                 } else {
                     break;
                 }
-                normals.member[_e162] = ((bitcast<u32>(select(0i, select(select(i32(_e125), i32(-2147483648), (_e125 < -2147483600f)), 2147483647i, (_e125 > 2147483500f)), (_e125 == _e125))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e148), i32(-2147483648), (_e148 < -2147483600f)), 2147483647i, (_e148 > 2147483500f)), (_e148 == _e148))) & 255u) << bitcast<u32>(8i)));
+                normals.member[_e160] = ((bitcast<u32>(select(0i, select(select(i32(_e124), i32(-2147483648), (_e124 < -2147483600f)), 2147483647i, (_e124 > 2147483500f)), (_e124 == _e124))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e146), i32(-2147483648), (_e146 < -2147483600f)), 2147483647i, (_e146 > 2147483500f)), (_e146 == _e146))) & 255u) << bitcast<u32>(8i)));
             }
             break;
         }

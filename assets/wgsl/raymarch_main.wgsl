@@ -63,42 +63,34 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_248_: bool;
-    var phi_272_: i32;
-    var phi_291_: i32;
-    var phi_320_: bool;
-    var phi_344_: i32;
-    var phi_363_: i32;
-    var phi_392_: bool;
-    var phi_416_: i32;
-    var phi_435_: i32;
-    var phi_464_: bool;
-    var phi_488_: i32;
-    var phi_507_: i32;
-    var phi_536_: bool;
-    var phi_600_: f32;
-    var phi_611_: f32;
-    var phi_622_: f32;
-    var phi_633_: f32;
-    var phi_1683_: f32;
-    var phi_1698_: f32;
-    var phi_1702_: f32;
-    var phi_1703_: bool;
-    var phi_1726_: f32;
-    var phi_1741_: f32;
-    var phi_1745_: f32;
-    var phi_1746_: bool;
-    var phi_1769_: f32;
-    var phi_1784_: f32;
-    var phi_1788_: f32;
-    var phi_1789_: bool;
-    var phi_1812_: f32;
-    var phi_1827_: f32;
-    var phi_1831_: f32;
-    var phi_1832_: bool;
-    var phi_672_: bool;
-    var phi_1855_: bool;
-    var phi_1870_: bool;
+    var phi_247_: bool;
+    var phi_271_: i32;
+    var phi_290_: i32;
+    var phi_319_: bool;
+    var phi_343_: i32;
+    var phi_362_: i32;
+    var phi_391_: bool;
+    var phi_415_: i32;
+    var phi_434_: i32;
+    var phi_463_: bool;
+    var phi_487_: i32;
+    var phi_506_: i32;
+    var phi_535_: bool;
+    var phi_1704_: f32;
+    var phi_1708_: f32;
+    var phi_1709_: bool;
+    var phi_1747_: f32;
+    var phi_1751_: f32;
+    var phi_1752_: bool;
+    var phi_1790_: f32;
+    var phi_1794_: f32;
+    var phi_1795_: bool;
+    var phi_1833_: f32;
+    var phi_1837_: f32;
+    var phi_1838_: bool;
+    var phi_671_: bool;
+    var phi_1861_: bool;
+    var phi_1876_: bool;
     var phi_764_: vec2<f32>;
     var phi_795_: vec3<f32>;
     var phi_801_: u32;
@@ -114,99 +106,90 @@ fn function_() {
     var phi_807_: u32;
     var phi_809_: u32;
     var local: u32;
-    var phi_1929_: bool;
+    var phi_1939_: bool;
     var phi_878_: u32;
     var phi_881_: f32;
-    var phi_1885_: bool;
-    var phi_994_: vec3<f32>;
-    var phi_995_: vec3<f32>;
-    var phi_996_: vec3<f32>;
-    var phi_997_: vec3<f32>;
-    var phi_998_: bool;
-    var phi_1018_: u32;
-    var phi_1021_: f32;
-    var phi_1023_: f32;
-    var phi_1118_: u32;
-    var phi_1140_: u32;
-    var phi_1157_: bool;
-    var phi_1214_: f32;
-    var phi_1227_: f32;
-    var phi_1900_: bool;
-    var phi_1915_: bool;
-    var phi_1344_: vec2<f32>;
-    var phi_1388_: f32;
-    var phi_1394_: bool;
-    var phi_1409_: bool;
-    var phi_1410_: bool;
-    var phi_1411_: bool;
-    var phi_1420_: u32;
-    var phi_1422_: u32;
-    var phi_1423_: f32;
-    var phi_1425_: bool;
-    var phi_1426_: bool;
+    var phi_1891_: bool;
+    var phi_1024_: u32;
+    var phi_1027_: f32;
+    var phi_1029_: f32;
+    var phi_1121_: u32;
+    var phi_1143_: u32;
+    var phi_1160_: bool;
+    var phi_1906_: bool;
+    var phi_1921_: bool;
+    var phi_1349_: vec2<f32>;
+    var phi_1394_: f32;
+    var phi_1400_: bool;
+    var phi_1415_: bool;
+    var phi_1416_: bool;
+    var phi_1417_: bool;
+    var phi_1426_: u32;
     var phi_1428_: u32;
     var phi_1429_: f32;
     var phi_1431_: bool;
     var phi_1432_: bool;
-    var phi_1433_: bool;
-    var phi_1435_: u32;
-    var phi_1436_: f32;
+    var phi_1434_: u32;
+    var phi_1435_: f32;
+    var phi_1437_: bool;
     var phi_1438_: bool;
     var phi_1439_: bool;
-    var phi_1440_: bool;
-    var phi_1441_: bool;
-    var phi_1443_: u32;
-    var phi_1444_: f32;
+    var phi_1441_: u32;
+    var phi_1442_: f32;
+    var phi_1444_: bool;
+    var phi_1445_: bool;
     var phi_1446_: bool;
     var phi_1447_: bool;
-    var phi_1448_: bool;
-    var phi_1449_: bool;
-    var phi_1450_: bool;
-    var phi_1452_: u32;
-    var phi_1453_: f32;
+    var phi_1449_: u32;
+    var phi_1450_: f32;
+    var phi_1452_: bool;
+    var phi_1453_: bool;
+    var phi_1454_: bool;
     var phi_1455_: bool;
     var phi_1456_: bool;
-    var phi_1457_: bool;
-    var phi_1458_: bool;
-    var phi_1459_: bool;
-    var phi_1460_: bool;
-    var phi_1019_: u32;
-    var phi_1022_: f32;
-    var phi_1024_: f32;
+    var phi_1458_: u32;
+    var phi_1459_: f32;
+    var phi_1461_: bool;
+    var phi_1462_: bool;
     var phi_1463_: bool;
     var phi_1464_: bool;
+    var phi_1465_: bool;
     var phi_1466_: bool;
-    var phi_1467_: bool;
-    var phi_1468_: bool;
+    var phi_1025_: u32;
+    var phi_1028_: f32;
+    var phi_1030_: f32;
     var phi_1469_: bool;
     var phi_1470_: bool;
-    var phi_1920_: bool;
+    var phi_1472_: bool;
+    var phi_1473_: bool;
+    var phi_1474_: bool;
+    var phi_1475_: bool;
+    var phi_1476_: bool;
+    var phi_1926_: bool;
+    var phi_1676_: bool;
+    var phi_1675_: bool;
+    var phi_1674_: bool;
+    var phi_1673_: bool;
+    var phi_1672_: bool;
+    var phi_1671_: bool;
     var phi_1670_: bool;
-    var phi_1669_: bool;
-    var phi_1668_: bool;
-    var phi_1667_: bool;
-    var phi_1666_: bool;
-    var phi_1665_: bool;
-    var phi_1664_: bool;
-    var phi_1662_: f32;
-    var phi_1661_: f32;
+    var phi_1668_: f32;
+    var phi_1667_: f32;
     var local_1: f32;
     var local_2: f32;
     var local_3: f32;
     var local_4: f32;
-    var phi_1501_: f32;
-    var phi_1503_: type_25;
-    var phi_1552_: type_25;
-    var phi_1576_: f32;
-    var phi_1577_: f32;
-    var phi_1578_: f32;
-    var phi_2035_: bool;
+    var phi_1507_: f32;
+    var phi_1509_: type_25;
+    var phi_1558_: type_25;
+    var phi_1583_: f32;
+    var phi_1584_: f32;
+    var phi_2044_: bool;
     var phi_879_: u32;
     var phi_882_: f32;
-    var phi_2034_: bool;
+    var phi_2043_: bool;
     var local_5: f32;
-    var phi_1596_: f32;
-    var phi_1628_: type_26;
+    var phi_1634_: type_26;
     var local_6: f32;
 
     switch bitcast<i32>(0u) {
@@ -233,11 +216,11 @@ fn function_() {
                     let _e105 = params.member.member.member_3;
                     let _e106 = (_e101 > 0f);
                     if _e106 {
-                        phi_248_ = (_e101 < _e105);
+                        phi_247_ = (_e101 < _e105);
                     } else {
-                        phi_248_ = false;
+                        phi_247_ = false;
                     }
-                    let _e109 = phi_248_;
+                    let _e109 = phi_247_;
                     let _e110 = select(_e105, _e101, _e109);
                     let _e111 = bitcast<i32>(_e59.x);
                     let _e112 = (_e111 + -1i);
@@ -248,11 +231,11 @@ fn function_() {
                         break;
                     }
                     if (_e112 < 0i) {
-                        phi_272_ = 0i;
+                        phi_271_ = 0i;
                     } else {
-                        phi_272_ = select(_e112, _e114, (_e112 > _e114));
+                        phi_271_ = select(_e112, _e114, (_e112 > _e114));
                     }
-                    let _e120 = phi_272_;
+                    let _e120 = phi_271_;
                     let _e122 = bitcast<i32>(_e59.y);
                     let _e124 = (bitcast<i32>(_e91) - 1i);
                     let _e125 = (0i <= _e124);
@@ -262,11 +245,11 @@ fn function_() {
                     }
                     let _e126 = (_e122 < 0i);
                     if _e126 {
-                        phi_291_ = 0i;
+                        phi_290_ = 0i;
                     } else {
-                        phi_291_ = select(_e122, _e124, (_e122 > _e124));
+                        phi_290_ = select(_e122, _e124, (_e122 > _e124));
                     }
-                    let _e130 = phi_291_;
+                    let _e130 = phi_290_;
                     let _e133 = ((bitcast<u32>(_e130) * _e81) + bitcast<u32>(_e120));
                     if (_e133 < _e61) {
                     } else {
@@ -274,32 +257,32 @@ fn function_() {
                     }
                     let _e137 = depth.member[_e133];
                     if (_e137 > 0f) {
-                        phi_320_ = (_e137 < _e105);
+                        phi_319_ = (_e137 < _e105);
                     } else {
-                        phi_320_ = false;
+                        phi_319_ = false;
                     }
-                    let _e141 = phi_320_;
+                    let _e141 = phi_319_;
                     let _e143 = (_e111 + 1i);
                     if _e115 {
                     } else {
                         break;
                     }
                     if (_e143 < 0i) {
-                        phi_344_ = 0i;
+                        phi_343_ = 0i;
                     } else {
-                        phi_344_ = select(_e143, _e114, (_e143 > _e114));
+                        phi_343_ = select(_e143, _e114, (_e143 > _e114));
                     }
-                    let _e148 = phi_344_;
+                    let _e148 = phi_343_;
                     if _e125 {
                     } else {
                         break;
                     }
                     if _e126 {
-                        phi_363_ = 0i;
+                        phi_362_ = 0i;
                     } else {
-                        phi_363_ = select(_e122, _e124, (_e122 > _e124));
+                        phi_362_ = select(_e122, _e124, (_e122 > _e124));
                     }
-                    let _e153 = phi_363_;
+                    let _e153 = phi_362_;
                     let _e156 = ((bitcast<u32>(_e153) * _e81) + bitcast<u32>(_e148));
                     if (_e156 < _e61) {
                     } else {
@@ -307,33 +290,33 @@ fn function_() {
                     }
                     let _e160 = depth.member[_e156];
                     if (_e160 > 0f) {
-                        phi_392_ = (_e160 < _e105);
+                        phi_391_ = (_e160 < _e105);
                     } else {
-                        phi_392_ = false;
+                        phi_391_ = false;
                     }
-                    let _e164 = phi_392_;
+                    let _e164 = phi_391_;
                     if _e115 {
                     } else {
                         break;
                     }
                     let _e166 = (_e111 < 0i);
                     if _e166 {
-                        phi_416_ = 0i;
+                        phi_415_ = 0i;
                     } else {
-                        phi_416_ = select(_e111, _e114, (_e111 > _e114));
+                        phi_415_ = select(_e111, _e114, (_e111 > _e114));
                     }
-                    let _e170 = phi_416_;
+                    let _e170 = phi_415_;
                     let _e172 = (_e122 + -1i);
                     if _e125 {
                     } else {
                         break;
                     }
                     if (_e172 < 0i) {
-                        phi_435_ = 0i;
+                        phi_434_ = 0i;
                     } else {
-                        phi_435_ = select(_e172, _e124, (_e172 > _e124));
+                        phi_434_ = select(_e172, _e124, (_e172 > _e124));
                     }
-                    let _e177 = phi_435_;
+                    let _e177 = phi_434_;
                     let _e180 = ((bitcast<u32>(_e177) * _e81) + bitcast<u32>(_e170));
                     if (_e180 < _e61) {
                     } else {
@@ -341,32 +324,32 @@ fn function_() {
                     }
                     let _e184 = depth.member[_e180];
                     if (_e184 > 0f) {
-                        phi_464_ = (_e184 < _e105);
+                        phi_463_ = (_e184 < _e105);
                     } else {
-                        phi_464_ = false;
+                        phi_463_ = false;
                     }
-                    let _e188 = phi_464_;
+                    let _e188 = phi_463_;
                     if _e115 {
                     } else {
                         break;
                     }
                     if _e166 {
-                        phi_488_ = 0i;
+                        phi_487_ = 0i;
                     } else {
-                        phi_488_ = select(_e111, _e114, (_e111 > _e114));
+                        phi_487_ = select(_e111, _e114, (_e111 > _e114));
                     }
-                    let _e193 = phi_488_;
+                    let _e193 = phi_487_;
                     let _e195 = (_e122 + 1i);
                     if _e125 {
                     } else {
                         break;
                     }
                     if (_e195 < 0i) {
-                        phi_507_ = 0i;
+                        phi_506_ = 0i;
                     } else {
-                        phi_507_ = select(_e195, _e124, (_e195 > _e124));
+                        phi_506_ = select(_e195, _e124, (_e195 > _e124));
                     }
-                    let _e200 = phi_507_;
+                    let _e200 = phi_506_;
                     let _e203 = ((bitcast<u32>(_e200) * _e81) + bitcast<u32>(_e193));
                     if (_e203 < _e61) {
                     } else {
@@ -374,11 +357,11 @@ fn function_() {
                     }
                     let _e207 = depth.member[_e203];
                     if (_e207 > 0f) {
-                        phi_536_ = (_e207 < _e105);
+                        phi_535_ = (_e207 < _e105);
                     } else {
-                        phi_536_ = false;
+                        phi_535_ = false;
                     }
-                    let _e211 = phi_536_;
+                    let _e211 = phi_535_;
                     let _e213 = (select(_e105, _e137, _e141) - _e110);
                     let _e214 = (select(_e105, _e160, _e164) - _e110);
                     let _e215 = (select(_e105, _e184, _e188) - _e110);
@@ -395,765 +378,676 @@ fn function_() {
                     let _e234 = abs((_e216 + (_e219 * -0.5f)));
                     let _e243 = (_e110 * 0.011f);
                     let _e248 = (1.25f - (select(_e231, _e227, (_e227 < _e231)) / _e243));
-                    if (_e248 > 0f) {
-                        phi_600_ = select(1f, _e248, (_e248 < 1f));
-                    } else {
-                        phi_600_ = 0f;
-                    }
-                    let _e253 = phi_600_;
-                    let _e254 = (1.25f - (select(_e232, _e228, (_e228 < _e232)) / _e243));
-                    if (_e254 > 0f) {
-                        phi_611_ = select(1f, _e254, (_e254 < 1f));
-                    } else {
-                        phi_611_ = 0f;
-                    }
-                    let _e259 = phi_611_;
-                    let _e260 = (1.25f - (select(_e233, _e229, (_e229 < _e233)) / _e243));
-                    if (_e260 > 0f) {
-                        phi_622_ = select(1f, _e260, (_e260 < 1f));
-                    } else {
-                        phi_622_ = 0f;
-                    }
-                    let _e265 = phi_622_;
-                    let _e266 = (1.25f - (select(_e234, _e230, (_e230 < _e234)) / _e243));
-                    if (_e266 > 0f) {
-                        phi_633_ = select(1f, _e266, (_e266 < 1f));
-                    } else {
-                        phi_633_ = 0f;
-                    }
-                    let _e271 = phi_633_;
-                    if (_e253 > 0f) {
-                        phi_1683_ = select(1f, _e253, (_e253 < 1f));
-                    } else {
-                        phi_1683_ = 0f;
-                    }
-                    let _e276 = phi_1683_;
-                    let _e277 = (_e276 * 2.9f);
-                    let _e279 = floor((_e277 + 0.5f));
-                    if ((_e279 - _e277) == 0.5f) {
-                        let _e285 = ((floor((_e279 * 0.5f)) * 2f) != _e279);
-                        if _e285 {
-                            phi_1698_ = (_e279 - 1f);
+                    let _e252 = select(0f, select(1f, _e248, (_e248 < 1f)), (_e248 > 0f));
+                    let _e253 = (1.25f - (select(_e232, _e228, (_e228 < _e232)) / _e243));
+                    let _e257 = select(0f, select(1f, _e253, (_e253 < 1f)), (_e253 > 0f));
+                    let _e258 = (1.25f - (select(_e233, _e229, (_e229 < _e233)) / _e243));
+                    let _e262 = select(0f, select(1f, _e258, (_e258 < 1f)), (_e258 > 0f));
+                    let _e263 = (1.25f - (select(_e234, _e230, (_e230 < _e234)) / _e243));
+                    let _e267 = select(0f, select(1f, _e263, (_e263 < 1f)), (_e263 > 0f));
+                    let _e272 = (select(0f, select(1f, _e252, (_e252 < 1f)), (_e252 > 0f)) * 2.9f);
+                    let _e274 = floor((_e272 + 0.5f));
+                    if ((_e274 - _e272) == 0.5f) {
+                        let _e280 = ((floor((_e274 * 0.5f)) * 2f) != _e274);
+                        if _e280 {
+                            phi_1704_ = (_e274 - 1f);
                         } else {
-                            phi_1698_ = f32();
+                            phi_1704_ = f32();
                         }
-                        let _e288 = phi_1698_;
-                        phi_1702_ = _e288;
-                        phi_1703_ = select(true, false, _e285);
+                        let _e283 = phi_1704_;
+                        phi_1708_ = _e283;
+                        phi_1709_ = select(true, false, _e280);
                     } else {
-                        phi_1702_ = f32();
-                        phi_1703_ = true;
+                        phi_1708_ = f32();
+                        phi_1709_ = true;
                     }
-                    let _e291 = phi_1702_;
-                    let _e293 = phi_1703_;
-                    let _e294 = select(_e291, _e279, _e293);
-                    if (_e259 > 0f) {
-                        phi_1726_ = select(1f, _e259, (_e259 < 1f));
-                    } else {
-                        phi_1726_ = 0f;
-                    }
-                    let _e305 = phi_1726_;
-                    let _e306 = (_e305 * 2.9f);
-                    let _e308 = floor((_e306 + 0.5f));
-                    if ((_e308 - _e306) == 0.5f) {
-                        let _e314 = ((floor((_e308 * 0.5f)) * 2f) != _e308);
-                        if _e314 {
-                            phi_1741_ = (_e308 - 1f);
+                    let _e286 = phi_1708_;
+                    let _e288 = phi_1709_;
+                    let _e289 = select(_e286, _e274, _e288);
+                    let _e300 = (select(0f, select(1f, _e257, (_e257 < 1f)), (_e257 > 0f)) * 2.9f);
+                    let _e302 = floor((_e300 + 0.5f));
+                    if ((_e302 - _e300) == 0.5f) {
+                        let _e308 = ((floor((_e302 * 0.5f)) * 2f) != _e302);
+                        if _e308 {
+                            phi_1747_ = (_e302 - 1f);
                         } else {
-                            phi_1741_ = f32();
+                            phi_1747_ = f32();
                         }
-                        let _e317 = phi_1741_;
-                        phi_1745_ = _e317;
-                        phi_1746_ = select(true, false, _e314);
+                        let _e311 = phi_1747_;
+                        phi_1751_ = _e311;
+                        phi_1752_ = select(true, false, _e308);
                     } else {
-                        phi_1745_ = f32();
-                        phi_1746_ = true;
+                        phi_1751_ = f32();
+                        phi_1752_ = true;
                     }
-                    let _e320 = phi_1745_;
-                    let _e322 = phi_1746_;
-                    let _e323 = select(_e320, _e308, _e322);
-                    if (_e265 > 0f) {
-                        phi_1769_ = select(1f, _e265, (_e265 < 1f));
-                    } else {
-                        phi_1769_ = 0f;
-                    }
-                    let _e335 = phi_1769_;
-                    let _e336 = (_e335 * 2.9f);
-                    let _e338 = floor((_e336 + 0.5f));
-                    if ((_e338 - _e336) == 0.5f) {
-                        let _e344 = ((floor((_e338 * 0.5f)) * 2f) != _e338);
-                        if _e344 {
-                            phi_1784_ = (_e338 - 1f);
+                    let _e314 = phi_1751_;
+                    let _e316 = phi_1752_;
+                    let _e317 = select(_e314, _e302, _e316);
+                    let _e329 = (select(0f, select(1f, _e262, (_e262 < 1f)), (_e262 > 0f)) * 2.9f);
+                    let _e331 = floor((_e329 + 0.5f));
+                    if ((_e331 - _e329) == 0.5f) {
+                        let _e337 = ((floor((_e331 * 0.5f)) * 2f) != _e331);
+                        if _e337 {
+                            phi_1790_ = (_e331 - 1f);
                         } else {
-                            phi_1784_ = f32();
+                            phi_1790_ = f32();
                         }
-                        let _e347 = phi_1784_;
-                        phi_1788_ = _e347;
-                        phi_1789_ = select(true, false, _e344);
+                        let _e340 = phi_1790_;
+                        phi_1794_ = _e340;
+                        phi_1795_ = select(true, false, _e337);
                     } else {
-                        phi_1788_ = f32();
-                        phi_1789_ = true;
+                        phi_1794_ = f32();
+                        phi_1795_ = true;
                     }
-                    let _e350 = phi_1788_;
-                    let _e352 = phi_1789_;
-                    let _e353 = select(_e350, _e338, _e352);
-                    if (_e271 > 0f) {
-                        phi_1812_ = select(1f, _e271, (_e271 < 1f));
-                    } else {
-                        phi_1812_ = 0f;
-                    }
-                    let _e365 = phi_1812_;
-                    let _e366 = (_e365 * 2.9f);
-                    let _e368 = floor((_e366 + 0.5f));
-                    if ((_e368 - _e366) == 0.5f) {
-                        let _e374 = ((floor((_e368 * 0.5f)) * 2f) != _e368);
-                        if _e374 {
-                            phi_1827_ = (_e368 - 1f);
+                    let _e343 = phi_1794_;
+                    let _e345 = phi_1795_;
+                    let _e346 = select(_e343, _e331, _e345);
+                    let _e358 = (select(0f, select(1f, _e267, (_e267 < 1f)), (_e267 > 0f)) * 2.9f);
+                    let _e360 = floor((_e358 + 0.5f));
+                    if ((_e360 - _e358) == 0.5f) {
+                        let _e366 = ((floor((_e360 * 0.5f)) * 2f) != _e360);
+                        if _e366 {
+                            phi_1833_ = (_e360 - 1f);
                         } else {
-                            phi_1827_ = f32();
+                            phi_1833_ = f32();
                         }
-                        let _e377 = phi_1827_;
-                        phi_1831_ = _e377;
-                        phi_1832_ = select(true, false, _e374);
+                        let _e369 = phi_1833_;
+                        phi_1837_ = _e369;
+                        phi_1838_ = select(true, false, _e366);
                     } else {
-                        phi_1831_ = f32();
-                        phi_1832_ = true;
+                        phi_1837_ = f32();
+                        phi_1838_ = true;
                     }
-                    let _e380 = phi_1831_;
-                    let _e382 = phi_1832_;
-                    let _e383 = select(_e380, _e368, _e382);
-                    let _e389 = ((((64u * select(select(u32(_e294), 0u, (_e294 < 0f)), 4294967295u, (_e294 > 4294967000f))) + (16u * select(select(u32(_e323), 0u, (_e323 < 0f)), 4294967295u, (_e323 > 4294967000f)))) + (4u * select(select(u32(_e353), 0u, (_e353 < 0f)), 4294967295u, (_e353 > 4294967000f)))) + select(select(u32(_e383), 0u, (_e383 < 0f)), 4294967295u, (_e383 > 4294967000f)));
+                    let _e372 = phi_1837_;
+                    let _e374 = phi_1838_;
+                    let _e375 = select(_e372, _e360, _e374);
+                    let _e381 = ((((64u * select(select(u32(_e289), 0u, (_e289 < 0f)), 4294967295u, (_e289 > 4294967000f))) + (16u * select(select(u32(_e317), 0u, (_e317 < 0f)), 4294967295u, (_e317 > 4294967000f)))) + (4u * select(select(u32(_e346), 0u, (_e346 < 0f)), 4294967295u, (_e346 > 4294967000f)))) + select(select(u32(_e375), 0u, (_e375 < 0f)), 4294967295u, (_e375 > 4294967000f)));
                     if _e98 {
                     } else {
                         break;
                     }
                     if _e106 {
-                        phi_672_ = (_e101 < _e105);
+                        phi_671_ = (_e101 < _e105);
                     } else {
-                        phi_672_ = false;
+                        phi_671_ = false;
                     }
-                    let _e392 = phi_672_;
-                    if _e392 {
-                        let _e405 = params.member.member.member_1[0u];
-                        let _e407 = ((((2f * ((f32(_e59.x) + 0.5f) / _e76)) - 1f) * _e405) * _e101);
-                        let _e414 = params.member.member.member_1[1u];
-                        let _e416 = (((1f - (2f * ((f32(_e59.y) + 0.5f) / _e86))) * _e414) * _e101);
+                    let _e384 = phi_671_;
+                    if _e384 {
+                        let _e397 = params.member.member.member_1[0u];
+                        let _e399 = ((((((f32(_e59.x) + 0.5f) / _e76) * 2f) - 1f) * _e397) * _e101);
+                        let _e406 = params.member.member.member_1[1u];
+                        let _e408 = ((((((f32(_e59.y) + 0.5f) / _e86) * -2f) + 1f) * _e406) * _e101);
                         if (_e97 < _e63) {
                         } else {
                             break;
                         }
-                        let _e420 = normals.member[_e97];
-                        let _e428 = (f32((bitcast<i32>(((_e420 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e428 != _e428) {
-                            phi_1855_ = true;
+                        let _e412 = normals.member[_e97];
+                        let _e420 = (f32((bitcast<i32>(((_e412 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e420 != _e420) {
+                            phi_1861_ = true;
                         } else {
-                            phi_1855_ = (-1f >= _e428);
+                            phi_1861_ = (-1f >= _e420);
                         }
-                        let _e432 = phi_1855_;
-                        let _e433 = select(_e428, -1f, _e432);
-                        let _e443 = (f32((bitcast<i32>((((_e420 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e443 != _e443) {
-                            phi_1870_ = true;
+                        let _e424 = phi_1861_;
+                        let _e425 = select(_e420, -1f, _e424);
+                        let _e435 = (f32((bitcast<i32>((((_e412 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e435 != _e435) {
+                            phi_1876_ = true;
                         } else {
-                            phi_1870_ = (-1f >= _e443);
+                            phi_1876_ = (-1f >= _e435);
                         }
-                        let _e447 = phi_1870_;
-                        let _e448 = select(_e443, -1f, _e447);
-                        let _e451 = (1f - abs(_e433));
-                        let _e452 = abs(_e448);
-                        let _e453 = (_e451 - _e452);
-                        if (_e453 < 0f) {
-                            phi_764_ = vec2<f32>(((1f - _e452) * select(1f, -1f, (_e433 < 0f))), (_e451 * select(1f, -1f, (_e448 < 0f))));
+                        let _e439 = phi_1876_;
+                        let _e440 = select(_e435, -1f, _e439);
+                        let _e443 = (1f - abs(_e425));
+                        let _e444 = abs(_e440);
+                        let _e445 = (_e443 - _e444);
+                        if (_e445 < 0f) {
+                            phi_764_ = vec2<f32>(((1f - _e444) * select(1f, -1f, (_e425 < 0f))), (_e443 * select(1f, -1f, (_e440 < 0f))));
                         } else {
-                            phi_764_ = vec2<f32>(_e433, _e448);
+                            phi_764_ = vec2<f32>(_e425, _e440);
                         }
-                        let _e464 = phi_764_;
-                        let _e473 = (1f / sqrt((((_e464.x * _e464.x) + (_e464.y * _e464.y)) + (_e453 * _e453))));
-                        let _e474 = (_e464.x * _e473);
-                        let _e475 = (_e464.y * _e473);
-                        let _e476 = (_e453 * _e473);
-                        let _e477 = -(_e476);
-                        if ((((_e474 * -(_e407)) + (_e475 * -(_e416))) + (_e477 * -(_e101))) < 0f) {
-                            phi_795_ = vec3<f32>(-(_e474), -(_e475), _e476);
+                        let _e456 = phi_764_;
+                        let _e465 = (1f / sqrt((((_e456.x * _e456.x) + (_e456.y * _e456.y)) + (_e445 * _e445))));
+                        let _e466 = (_e456.x * _e465);
+                        let _e467 = (_e456.y * _e465);
+                        let _e468 = (_e445 * _e465);
+                        let _e469 = -(_e468);
+                        if ((((_e466 * -(_e399)) + (_e467 * -(_e408))) + (_e469 * -(_e101))) < 0f) {
+                            phi_795_ = vec3<f32>(-(_e466), -(_e467), _e468);
                         } else {
-                            phi_795_ = vec3<f32>(_e474, _e475, _e477);
+                            phi_795_ = vec3<f32>(_e466, _e467, _e469);
                         }
-                        let _e492 = phi_795_;
-                        let _e495 = params.member.member_8;
+                        let _e484 = phi_795_;
+                        let _e487 = params.member.member_8;
                         phi_801_ = (_e59.y & 63u);
                         phi_804_ = (_e59.x & 63u);
                         phi_806_ = 32u;
                         phi_808_ = 0u;
                         loop {
-                            let _e499 = phi_801_;
-                            let _e501 = phi_804_;
-                            let _e503 = phi_806_;
-                            let _e505 = phi_808_;
-                            local = _e505;
-                            let _e506 = (_e503 > 0u);
-                            if _e506 {
-                                let _e509 = select(0u, 1u, ((_e501 & _e503) != 0u));
-                                let _e512 = select(0u, 1u, ((_e499 & _e503) != 0u));
-                                if (_e512 == 0u) {
-                                    if (_e509 == 1u) {
-                                        phi_837_ = (63u - _e499);
-                                        phi_838_ = (63u - _e501);
+                            let _e491 = phi_801_;
+                            let _e493 = phi_804_;
+                            let _e495 = phi_806_;
+                            let _e497 = phi_808_;
+                            local = _e497;
+                            let _e498 = (_e495 > 0u);
+                            if _e498 {
+                                let _e501 = select(0u, 1u, ((_e493 & _e495) != 0u));
+                                let _e504 = select(0u, 1u, ((_e491 & _e495) != 0u));
+                                if (_e504 == 0u) {
+                                    if (_e501 == 1u) {
+                                        phi_837_ = (63u - _e491);
+                                        phi_838_ = (63u - _e493);
                                     } else {
-                                        phi_837_ = _e499;
-                                        phi_838_ = _e501;
+                                        phi_837_ = _e491;
+                                        phi_838_ = _e493;
                                     }
-                                    let _e523 = phi_837_;
-                                    let _e525 = phi_838_;
-                                    phi_839_ = _e525;
-                                    phi_840_ = _e523;
+                                    let _e515 = phi_837_;
+                                    let _e517 = phi_838_;
+                                    phi_839_ = _e517;
+                                    phi_840_ = _e515;
                                 } else {
-                                    phi_839_ = _e499;
-                                    phi_840_ = _e501;
+                                    phi_839_ = _e491;
+                                    phi_840_ = _e493;
                                 }
-                                let _e527 = phi_839_;
-                                let _e529 = phi_840_;
-                                phi_802_ = _e527;
-                                phi_805_ = _e529;
-                                phi_807_ = (_e503 / 2u);
-                                phi_809_ = (_e505 + ((_e503 * _e503) * ((3u * _e509) ^ _e512)));
+                                let _e519 = phi_839_;
+                                let _e521 = phi_840_;
+                                phi_802_ = _e519;
+                                phi_805_ = _e521;
+                                phi_807_ = (_e495 / 2u);
+                                phi_809_ = (_e497 + ((_e495 * _e495) * ((3u * _e501) ^ _e504)));
                             } else {
                                 phi_802_ = u32();
                                 phi_805_ = u32();
                                 phi_807_ = u32();
                                 phi_809_ = u32();
                             }
-                            let _e532 = phi_802_;
-                            let _e534 = phi_805_;
-                            let _e536 = phi_807_;
-                            let _e538 = phi_809_;
+                            let _e524 = phi_802_;
+                            let _e526 = phi_805_;
+                            let _e528 = phi_807_;
+                            let _e530 = phi_809_;
                             continue;
                             continuing {
-                                phi_801_ = _e532;
-                                phi_804_ = _e534;
-                                phi_806_ = _e536;
-                                phi_808_ = _e538;
-                                break if !(_e506);
+                                phi_801_ = _e524;
+                                phi_804_ = _e526;
+                                phi_806_ = _e528;
+                                phi_808_ = _e530;
+                                break if !(_e498);
                             }
                         }
-                        let _e543 = local;
-                        let _e545 = f32((_e543 + (288u * (_e495 % 64u))));
-                        let _e547 = (0.5f + (_e545 * 0.7548777f));
-                        let _e551 = (0.5f + (_e545 * 0.5698403f));
-                        let _e554 = (6.2831855f * (_e547 - floor(_e547)));
-                        let _e555 = sin(_e554);
-                        let _e556 = cos(_e554);
-                        let _e559 = params.member.member_5;
-                        let _e561 = select(_e559, 64u, (64u < _e559));
-                        let _e563 = select(_e561, _e65, (_e65 < _e561));
-                        let _e565 = select(1u, _e563, (1u < _e563));
-                        phi_1929_ = false;
+                        let _e535 = local;
+                        let _e537 = f32((_e535 + (288u * (_e487 % 64u))));
+                        let _e539 = (0.5f + (_e537 * 0.7548777f));
+                        let _e543 = (0.5f + (_e537 * 0.5698403f));
+                        let _e546 = (6.2831855f * (_e539 - floor(_e539)));
+                        let _e547 = sin(_e546);
+                        let _e548 = cos(_e546);
+                        let _e551 = params.member.member_5;
+                        let _e553 = select(_e551, 64u, (64u < _e551));
+                        let _e555 = select(_e553, _e65, (_e65 < _e553));
+                        let _e557 = select(1u, _e555, (1u < _e555));
+                        phi_1939_ = false;
                         phi_878_ = 0u;
                         phi_881_ = 0f;
                         loop {
-                            let _e567 = phi_1929_;
-                            let _e569 = phi_878_;
-                            let _e571 = phi_881_;
-                            local_5 = _e571;
-                            let _e572 = (_e569 < _e565);
-                            if _e572 {
-                                if (_e569 < _e65) {
+                            let _e559 = phi_1939_;
+                            let _e561 = phi_878_;
+                            let _e563 = phi_881_;
+                            local_5 = _e563;
+                            let _e564 = (_e561 < _e557);
+                            if _e564 {
+                                if (_e561 < _e65) {
                                 } else {
-                                    phi_2034_ = true;
+                                    phi_2043_ = true;
                                     break;
                                 }
-                                let _e577 = kernel.member[_e569][0u];
-                                let _e581 = kernel.member[_e569][1u];
-                                let _e584 = ((_e556 * _e577) - (_e555 * _e581));
-                                let _e587 = ((_e555 * _e577) + (_e556 * _e581));
-                                let _e591 = ((1f - (_e584 * _e584)) - (_e587 * _e587));
-                                if (_e591 != _e591) {
-                                    phi_1885_ = true;
+                                let _e569 = kernel.member[_e561][0u];
+                                let _e573 = kernel.member[_e561][1u];
+                                let _e576 = ((_e548 * _e569) - (_e547 * _e573));
+                                let _e579 = ((_e547 * _e569) + (_e548 * _e573));
+                                let _e583 = ((1f - (_e576 * _e576)) - (_e579 * _e579));
+                                if (_e583 != _e583) {
+                                    phi_1891_ = true;
                                 } else {
-                                    phi_1885_ = (0f >= _e591);
+                                    phi_1891_ = (0f >= _e583);
                                 }
-                                let _e595 = phi_1885_;
-                                let _e597 = sqrt(select(_e591, 0f, _e595));
-                                let _e598 = -(_e597);
-                                let _e603 = (-1f * _e492.z);
-                                if (_e603 > 0.9997f) {
-                                    phi_996_ = vec3<f32>(_e584, _e587, _e598);
-                                    phi_997_ = vec3<f32>();
-                                    phi_998_ = true;
-                                } else {
-                                    let _e605 = (_e603 < -0.9997f);
-                                    if _e605 {
-                                        phi_994_ = vec3<f32>(_e584, -(_e587), _e597);
-                                        phi_995_ = vec3<f32>();
-                                    } else {
-                                        let _e608 = (-1f * _e492.x);
-                                        let _e610 = (1f / (1f + _e603));
-                                        let _e611 = (_e610 * _e492.y);
-                                        let _e615 = (_e611 * _e608);
-                                        phi_994_ = vec3<f32>();
-                                        phi_995_ = vec3<f32>(((((_e603 + (_e611 * _e492.y)) * _e584) + (_e615 * _e587)) + (_e608 * _e598)), (((_e615 * _e584) + ((_e603 + ((_e610 * _e608) * _e608)) * _e587)) + (-(_e492.y) * _e598)), (((_e492.x * _e584) + (_e492.y * _e587)) + (_e603 * _e598)));
-                                    }
-                                    let _e636 = phi_994_;
-                                    let _e638 = phi_995_;
-                                    phi_996_ = _e636;
-                                    phi_997_ = _e638;
-                                    phi_998_ = _e605;
-                                }
-                                let _e640 = phi_996_;
-                                let _e642 = phi_997_;
-                                let _e644 = phi_998_;
-                                let _e646 = select(_e642, _e640, vec3(_e644));
-                                let _e649 = params.member.member_6;
-                                let _e651 = select(1u, _e649, (1u < _e649));
-                                let _e654 = params.member.member_1;
-                                let _e657 = params.member.member_3;
-                                let _e660 = params.member.member_4;
-                                phi_1018_ = 1u;
-                                phi_1021_ = 0f;
-                                phi_1023_ = 0f;
+                                let _e587 = phi_1891_;
+                                let _e589 = sqrt(select(_e583, 0f, _e587));
+                                let _e590 = -(_e589);
+                                let _e594 = (-1f * _e484.z);
+                                let _e595 = (-1f * _e484.x);
+                                let _e597 = (1f / (_e594 + 1f));
+                                let _e598 = (_e597 * _e484.y);
+                                let _e602 = (_e598 * _e595);
+                                let _e622 = (_e594 > 0.9997f);
+                                let _e623 = (_e594 < -0.9997f);
+                                let _e632 = params.member.member_6;
+                                let _e634 = select(1u, _e632, (1u < _e632));
+                                let _e637 = params.member.member_1;
+                                let _e640 = params.member.member_3;
+                                let _e643 = params.member.member_4;
+                                phi_1024_ = 1u;
+                                phi_1027_ = 0f;
+                                phi_1029_ = 0f;
                                 loop {
-                                    let _e662 = phi_1018_;
-                                    let _e664 = phi_1021_;
-                                    let _e666 = phi_1023_;
-                                    local_1 = _e664;
-                                    local_2 = _e666;
-                                    local_3 = _e664;
-                                    local_4 = _e666;
-                                    local_6 = _e666;
-                                    let _e667 = (_e662 <= _e651);
-                                    if _e667 {
-                                        let _e672 = ((_e654 * (f32(_e662) - (_e551 - floor(_e551)))) / f32(_e651));
-                                        let _e679 = (_e407 + (_e646.x * _e672));
-                                        let _e680 = (_e416 + (_e646.y * _e672));
-                                        let _e681 = (_e101 + (_e646.z * _e672));
-                                        let _e682 = (_e681 <= 0f);
-                                        if _e682 {
-                                            phi_1452_ = u32();
-                                            phi_1453_ = f32();
-                                            phi_1455_ = false;
-                                            phi_1456_ = false;
-                                            phi_1457_ = false;
-                                            phi_1458_ = false;
-                                            phi_1459_ = false;
-                                            phi_1460_ = false;
+                                    let _e645 = phi_1024_;
+                                    let _e647 = phi_1027_;
+                                    let _e649 = phi_1029_;
+                                    local_1 = _e647;
+                                    local_2 = _e649;
+                                    local_3 = _e647;
+                                    local_4 = _e649;
+                                    local_6 = _e649;
+                                    let _e650 = (_e645 <= _e634);
+                                    if _e650 {
+                                        let _e655 = ((_e637 * (f32(_e645) - (_e543 - floor(_e543)))) / f32(_e634));
+                                        let _e659 = (_e399 + (select(select(((((_e594 + (_e598 * _e484.y)) * _e576) + (_e602 * _e579)) + (_e595 * _e590)), _e576, _e623), _e576, _e622) * _e655));
+                                        let _e660 = (_e408 + (select(select((((_e602 * _e576) + ((_e594 + ((_e597 * _e595) * _e595)) * _e579)) + (-(_e484.y) * _e590)), -(_e579), _e623), _e579, _e622) * _e655));
+                                        let _e661 = (_e101 + (select(select((((_e484.x * _e576) + (_e484.y * _e579)) + (_e594 * _e590)), _e589, _e623), _e590, _e622) * _e655));
+                                        let _e662 = (_e661 <= 0f);
+                                        if _e662 {
+                                            phi_1458_ = u32();
+                                            phi_1459_ = f32();
+                                            phi_1461_ = false;
+                                            phi_1462_ = false;
+                                            phi_1463_ = false;
+                                            phi_1464_ = false;
+                                            phi_1465_ = false;
+                                            phi_1466_ = false;
                                         } else {
-                                            let _e686 = (0.5f + ((0.5f * _e679) / (_e405 * _e681)));
-                                            let _e690 = (0.5f - ((0.5f * _e680) / (_e414 * _e681)));
-                                            let _e691 = (_e686 >= 0f);
-                                            if _e691 {
-                                                let _e692 = (_e686 <= 1f);
-                                                if _e692 {
-                                                    let _e693 = (_e690 >= 0f);
-                                                    if _e693 {
-                                                        let _e694 = (_e690 <= 1f);
-                                                        if _e694 {
-                                                            let _e696 = floor((_e686 * _e76));
-                                                            if (_e696 > 0f) {
-                                                                let _e702 = select(select(u32(_e696), 0u, (_e696 < 0f)), 4294967295u, (_e696 > 4294967000f));
-                                                                let _e703 = (_e81 - 1u);
-                                                                phi_1118_ = select(_e702, _e703, (_e703 < _e702));
+                                            let _e666 = (0.5f + ((0.5f * _e659) / (_e397 * _e661)));
+                                            let _e670 = (0.5f - ((0.5f * _e660) / (_e406 * _e661)));
+                                            let _e671 = (_e666 >= 0f);
+                                            if _e671 {
+                                                let _e672 = (_e666 <= 1f);
+                                                if _e672 {
+                                                    let _e673 = (_e670 >= 0f);
+                                                    if _e673 {
+                                                        let _e674 = (_e670 <= 1f);
+                                                        if _e674 {
+                                                            let _e676 = floor((_e666 * _e76));
+                                                            if (_e676 > 0f) {
+                                                                let _e682 = select(select(u32(_e676), 0u, (_e676 < 0f)), 4294967295u, (_e676 > 4294967000f));
+                                                                let _e683 = (_e81 - 1u);
+                                                                phi_1121_ = select(_e682, _e683, (_e683 < _e682));
                                                             } else {
-                                                                phi_1118_ = 0u;
+                                                                phi_1121_ = 0u;
                                                             }
-                                                            let _e707 = phi_1118_;
-                                                            let _e709 = floor((_e690 * _e86));
-                                                            if (_e709 > 0f) {
-                                                                let _e715 = select(select(u32(_e709), 0u, (_e709 < 0f)), 4294967295u, (_e709 > 4294967000f));
-                                                                let _e716 = (_e91 - 1u);
-                                                                phi_1140_ = select(_e715, _e716, (_e716 < _e715));
+                                                            let _e687 = phi_1121_;
+                                                            let _e689 = floor((_e670 * _e86));
+                                                            if (_e689 > 0f) {
+                                                                let _e695 = select(select(u32(_e689), 0u, (_e689 < 0f)), 4294967295u, (_e689 > 4294967000f));
+                                                                let _e696 = (_e91 - 1u);
+                                                                phi_1143_ = select(_e695, _e696, (_e696 < _e695));
                                                             } else {
-                                                                phi_1140_ = 0u;
+                                                                phi_1143_ = 0u;
                                                             }
-                                                            let _e720 = phi_1140_;
-                                                            let _e722 = ((_e720 * _e81) + _e707);
-                                                            if (_e722 < _e61) {
+                                                            let _e700 = phi_1143_;
+                                                            let _e702 = ((_e700 * _e81) + _e687);
+                                                            if (_e702 < _e61) {
                                                             } else {
-                                                                phi_1920_ = true;
+                                                                phi_1926_ = true;
+                                                                phi_1676_ = bool();
+                                                                phi_1675_ = bool();
+                                                                phi_1674_ = bool();
+                                                                phi_1673_ = bool();
+                                                                phi_1672_ = bool();
+                                                                phi_1671_ = bool();
                                                                 phi_1670_ = bool();
-                                                                phi_1669_ = bool();
-                                                                phi_1668_ = bool();
-                                                                phi_1667_ = bool();
-                                                                phi_1666_ = bool();
-                                                                phi_1665_ = bool();
-                                                                phi_1664_ = bool();
-                                                                phi_1662_ = f32();
-                                                                phi_1661_ = f32();
+                                                                phi_1668_ = f32();
+                                                                phi_1667_ = f32();
                                                                 break;
                                                             }
-                                                            let _e726 = depth.member[_e722];
-                                                            if (_e726 > 0f) {
-                                                                phi_1157_ = (_e726 < _e105);
+                                                            let _e706 = depth.member[_e702];
+                                                            if (_e706 > 0f) {
+                                                                phi_1160_ = (_e706 < _e105);
                                                             } else {
-                                                                phi_1157_ = false;
+                                                                phi_1160_ = false;
                                                             }
-                                                            let _e730 = phi_1157_;
-                                                            let _e731 = select(_e105, _e726, _e730);
-                                                            let _e734 = (((2f * _e686) - 1f) * _e405);
-                                                            let _e738 = ((1f - (2f * _e690)) * _e414);
-                                                            let _e740 = (_e679 - (_e734 * _e731));
-                                                            let _e741 = (_e680 - (_e738 * _e731));
-                                                            let _e742 = (_e681 - _e731);
-                                                            if (_e686 > 0f) {
-                                                                phi_1214_ = select(1f, _e686, (_e686 < 1f));
+                                                            let _e710 = phi_1160_;
+                                                            let _e711 = select(_e105, _e706, _e710);
+                                                            let _e714 = (((_e666 * 2f) - 1f) * _e397);
+                                                            let _e718 = (((_e670 * -2f) + 1f) * _e406);
+                                                            let _e720 = (_e659 - (_e714 * _e711));
+                                                            let _e721 = (_e660 - (_e718 * _e711));
+                                                            let _e722 = (_e661 - _e711);
+                                                            let _e733 = (select(0f, select(1f, _e666, (_e666 < 1f)), (_e666 > 0f)) * _e76);
+                                                            let _e738 = (select(0f, select(1f, _e670, (_e670 < 1f)), (_e670 > 0f)) * _e86);
+                                                            let _e743 = select(select(u32(_e733), 0u, (_e733 < 0f)), 4294967295u, (_e733 > 4294967000f));
+                                                            let _e744 = (_e81 - 1u);
+                                                            let _e746 = select(_e743, _e744, (_e744 < _e743));
+                                                            let _e751 = select(select(u32(_e738), 0u, (_e738 < 0f)), 4294967295u, (_e738 > 4294967000f));
+                                                            let _e752 = (_e91 - 1u);
+                                                            let _e754 = select(_e751, _e752, (_e752 < _e751));
+                                                            let _e772 = ((_e754 * _e81) + _e746);
+                                                            if (_e772 < _e63) {
                                                             } else {
-                                                                phi_1214_ = 0f;
-                                                            }
-                                                            let _e753 = phi_1214_;
-                                                            let _e754 = (_e753 * _e76);
-                                                            if (_e690 > 0f) {
-                                                                phi_1227_ = select(1f, _e690, (_e690 < 1f));
-                                                            } else {
-                                                                phi_1227_ = 0f;
-                                                            }
-                                                            let _e759 = phi_1227_;
-                                                            let _e760 = (_e759 * _e86);
-                                                            let _e765 = select(select(u32(_e754), 0u, (_e754 < 0f)), 4294967295u, (_e754 > 4294967000f));
-                                                            let _e766 = (_e81 - 1u);
-                                                            let _e768 = select(_e765, _e766, (_e766 < _e765));
-                                                            let _e773 = select(select(u32(_e760), 0u, (_e760 < 0f)), 4294967295u, (_e760 > 4294967000f));
-                                                            let _e774 = (_e91 - 1u);
-                                                            let _e776 = select(_e773, _e774, (_e774 < _e773));
-                                                            let _e794 = ((_e776 * _e81) + _e768);
-                                                            if (_e794 < _e63) {
-                                                            } else {
-                                                                phi_1920_ = true;
+                                                                phi_1926_ = true;
+                                                                phi_1676_ = bool();
+                                                                phi_1675_ = bool();
+                                                                phi_1674_ = bool();
+                                                                phi_1673_ = bool();
+                                                                phi_1672_ = bool();
+                                                                phi_1671_ = bool();
                                                                 phi_1670_ = bool();
-                                                                phi_1669_ = bool();
-                                                                phi_1668_ = bool();
-                                                                phi_1667_ = bool();
-                                                                phi_1666_ = bool();
-                                                                phi_1665_ = bool();
-                                                                phi_1664_ = bool();
-                                                                phi_1662_ = f32();
-                                                                phi_1661_ = f32();
+                                                                phi_1668_ = f32();
+                                                                phi_1667_ = f32();
                                                                 break;
                                                             }
-                                                            let _e798 = normals.member[_e794];
-                                                            let _e806 = (f32((bitcast<i32>(((_e798 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                                            if (_e806 != _e806) {
-                                                                phi_1900_ = true;
+                                                            let _e776 = normals.member[_e772];
+                                                            let _e784 = (f32((bitcast<i32>(((_e776 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                                            if (_e784 != _e784) {
+                                                                phi_1906_ = true;
                                                             } else {
-                                                                phi_1900_ = (-1f >= _e806);
+                                                                phi_1906_ = (-1f >= _e784);
                                                             }
-                                                            let _e810 = phi_1900_;
-                                                            let _e811 = select(_e806, -1f, _e810);
-                                                            let _e821 = (f32((bitcast<i32>((((_e798 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                                            if (_e821 != _e821) {
-                                                                phi_1915_ = true;
+                                                            let _e788 = phi_1906_;
+                                                            let _e789 = select(_e784, -1f, _e788);
+                                                            let _e799 = (f32((bitcast<i32>((((_e776 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                                            if (_e799 != _e799) {
+                                                                phi_1921_ = true;
                                                             } else {
-                                                                phi_1915_ = (-1f >= _e821);
+                                                                phi_1921_ = (-1f >= _e799);
                                                             }
-                                                            let _e825 = phi_1915_;
-                                                            let _e826 = select(_e821, -1f, _e825);
-                                                            let _e829 = (1f - abs(_e811));
-                                                            let _e830 = abs(_e826);
-                                                            let _e831 = (_e829 - _e830);
-                                                            if (_e831 < 0f) {
-                                                                phi_1344_ = vec2<f32>(((1f - _e830) * select(1f, -1f, (_e811 < 0f))), (_e829 * select(1f, -1f, (_e826 < 0f))));
+                                                            let _e803 = phi_1921_;
+                                                            let _e804 = select(_e799, -1f, _e803);
+                                                            let _e807 = (1f - abs(_e789));
+                                                            let _e808 = abs(_e804);
+                                                            let _e809 = (_e807 - _e808);
+                                                            if (_e809 < 0f) {
+                                                                phi_1349_ = vec2<f32>(((1f - _e808) * select(1f, -1f, (_e789 < 0f))), (_e807 * select(1f, -1f, (_e804 < 0f))));
                                                             } else {
-                                                                phi_1344_ = vec2<f32>(_e811, _e826);
+                                                                phi_1349_ = vec2<f32>(_e789, _e804);
                                                             }
-                                                            let _e842 = phi_1344_;
-                                                            let _e851 = (1f / sqrt((((_e842.x * _e842.x) + (_e842.y * _e842.y)) + (_e831 * _e831))));
-                                                            let _e852 = (_e842.x * _e851);
-                                                            let _e853 = (_e842.y * _e851);
-                                                            let _e855 = -((_e831 * _e851));
-                                                            let _e859 = (((_e852 * _e734) + (_e853 * _e738)) + _e855);
-                                                            if (abs(_e859) < 0.001f) {
-                                                                phi_1388_ = _e731;
+                                                            let _e820 = phi_1349_;
+                                                            let _e829 = (1f / sqrt((((_e820.x * _e820.x) + (_e820.y * _e820.y)) + (_e809 * _e809))));
+                                                            let _e830 = (_e820.x * _e829);
+                                                            let _e831 = (_e820.y * _e829);
+                                                            let _e833 = -((_e809 * _e829));
+                                                            let _e837 = (((_e830 * _e714) + (_e831 * _e718)) + _e833);
+                                                            if (abs(_e837) < 0.001f) {
+                                                                phi_1394_ = _e711;
                                                             } else {
-                                                                phi_1388_ = ((((_e852 * ((((2f * ((f32(_e768) + 0.5f) * (1f / _e76))) - 1f) * _e405) * _e731)) + (_e853 * (((1f - (2f * ((f32(_e776) + 0.5f) * (1f / _e86)))) * _e414) * _e731))) + (_e855 * _e731)) / _e859);
+                                                                phi_1394_ = ((((_e830 * ((((((f32(_e746) + 0.5f) * (1f / _e76)) * 2f) - 1f) * _e397) * _e711)) + (_e831 * ((((((f32(_e754) + 0.5f) * (1f / _e86)) * -2f) + 1f) * _e406) * _e711))) + (_e833 * _e711)) / _e837);
                                                             }
-                                                            let _e869 = phi_1388_;
-                                                            if (_e768 == _e59.x) {
-                                                                phi_1394_ = (_e776 == _e59.y);
+                                                            let _e847 = phi_1394_;
+                                                            if (_e746 == _e59.x) {
+                                                                phi_1400_ = (_e754 == _e59.y);
                                                             } else {
-                                                                phi_1394_ = false;
+                                                                phi_1400_ = false;
                                                             }
-                                                            let _e873 = phi_1394_;
-                                                            if _e873 {
-                                                                phi_1410_ = true;
-                                                                phi_1411_ = false;
+                                                            let _e851 = phi_1400_;
+                                                            if _e851 {
+                                                                phi_1416_ = true;
+                                                                phi_1417_ = false;
                                                             } else {
-                                                                let _e876 = (_e681 < (_e869 * (1f + _e657)));
-                                                                if _e876 {
-                                                                    phi_1409_ = false;
+                                                                let _e854 = (_e661 < (_e847 * (1f + _e640)));
+                                                                if _e854 {
+                                                                    phi_1415_ = false;
                                                                 } else {
-                                                                    phi_1409_ = ((_e681 - _e869) > _e660);
+                                                                    phi_1415_ = ((_e661 - _e847) > _e643);
                                                                 }
-                                                                let _e880 = phi_1409_;
-                                                                phi_1410_ = _e876;
-                                                                phi_1411_ = _e880;
+                                                                let _e858 = phi_1415_;
+                                                                phi_1416_ = _e854;
+                                                                phi_1417_ = _e858;
                                                             }
-                                                            let _e882 = phi_1410_;
-                                                            let _e884 = phi_1411_;
-                                                            let _e885 = select(_e884, true, _e882);
-                                                            if _e885 {
-                                                                phi_1420_ = (_e662 + 1u);
+                                                            let _e860 = phi_1416_;
+                                                            let _e862 = phi_1417_;
+                                                            let _e863 = select(_e862, true, _e860);
+                                                            if _e863 {
+                                                                phi_1426_ = (_e645 + 1u);
                                                             } else {
-                                                                phi_1420_ = u32();
+                                                                phi_1426_ = u32();
                                                             }
-                                                            let _e888 = phi_1420_;
-                                                            phi_1422_ = _e888;
-                                                            phi_1423_ = sqrt((((_e740 * _e740) + (_e741 * _e741)) + (_e742 * _e742)));
-                                                            phi_1425_ = _e885;
-                                                            phi_1426_ = select(true, false, _e885);
+                                                            let _e866 = phi_1426_;
+                                                            phi_1428_ = _e866;
+                                                            phi_1429_ = sqrt((((_e720 * _e720) + (_e721 * _e721)) + (_e722 * _e722)));
+                                                            phi_1431_ = _e863;
+                                                            phi_1432_ = select(true, false, _e863);
                                                         } else {
-                                                            phi_1422_ = u32();
-                                                            phi_1423_ = f32();
-                                                            phi_1425_ = false;
-                                                            phi_1426_ = false;
+                                                            phi_1428_ = u32();
+                                                            phi_1429_ = f32();
+                                                            phi_1431_ = false;
+                                                            phi_1432_ = false;
                                                         }
-                                                        let _e891 = phi_1422_;
-                                                        let _e893 = phi_1423_;
-                                                        let _e895 = phi_1425_;
-                                                        let _e897 = phi_1426_;
-                                                        phi_1428_ = _e891;
-                                                        phi_1429_ = _e893;
-                                                        phi_1431_ = _e895;
-                                                        phi_1432_ = _e897;
-                                                        phi_1433_ = select(true, false, _e694);
+                                                        let _e869 = phi_1428_;
+                                                        let _e871 = phi_1429_;
+                                                        let _e873 = phi_1431_;
+                                                        let _e875 = phi_1432_;
+                                                        phi_1434_ = _e869;
+                                                        phi_1435_ = _e871;
+                                                        phi_1437_ = _e873;
+                                                        phi_1438_ = _e875;
+                                                        phi_1439_ = select(true, false, _e674);
                                                     } else {
-                                                        phi_1428_ = u32();
-                                                        phi_1429_ = f32();
-                                                        phi_1431_ = false;
-                                                        phi_1432_ = false;
-                                                        phi_1433_ = false;
+                                                        phi_1434_ = u32();
+                                                        phi_1435_ = f32();
+                                                        phi_1437_ = false;
+                                                        phi_1438_ = false;
+                                                        phi_1439_ = false;
                                                     }
-                                                    let _e900 = phi_1428_;
-                                                    let _e902 = phi_1429_;
-                                                    let _e904 = phi_1431_;
-                                                    let _e906 = phi_1432_;
-                                                    let _e908 = phi_1433_;
-                                                    phi_1435_ = _e900;
-                                                    phi_1436_ = _e902;
-                                                    phi_1438_ = _e904;
-                                                    phi_1439_ = _e906;
-                                                    phi_1440_ = _e908;
-                                                    phi_1441_ = select(true, false, _e693);
+                                                    let _e878 = phi_1434_;
+                                                    let _e880 = phi_1435_;
+                                                    let _e882 = phi_1437_;
+                                                    let _e884 = phi_1438_;
+                                                    let _e886 = phi_1439_;
+                                                    phi_1441_ = _e878;
+                                                    phi_1442_ = _e880;
+                                                    phi_1444_ = _e882;
+                                                    phi_1445_ = _e884;
+                                                    phi_1446_ = _e886;
+                                                    phi_1447_ = select(true, false, _e673);
                                                 } else {
-                                                    phi_1435_ = u32();
-                                                    phi_1436_ = f32();
-                                                    phi_1438_ = false;
-                                                    phi_1439_ = false;
-                                                    phi_1440_ = false;
-                                                    phi_1441_ = false;
+                                                    phi_1441_ = u32();
+                                                    phi_1442_ = f32();
+                                                    phi_1444_ = false;
+                                                    phi_1445_ = false;
+                                                    phi_1446_ = false;
+                                                    phi_1447_ = false;
                                                 }
-                                                let _e911 = phi_1435_;
-                                                let _e913 = phi_1436_;
-                                                let _e915 = phi_1438_;
-                                                let _e917 = phi_1439_;
-                                                let _e919 = phi_1440_;
-                                                let _e921 = phi_1441_;
-                                                phi_1443_ = _e911;
-                                                phi_1444_ = _e913;
-                                                phi_1446_ = _e915;
-                                                phi_1447_ = _e917;
-                                                phi_1448_ = _e919;
-                                                phi_1449_ = _e921;
-                                                phi_1450_ = select(true, false, _e692);
+                                                let _e889 = phi_1441_;
+                                                let _e891 = phi_1442_;
+                                                let _e893 = phi_1444_;
+                                                let _e895 = phi_1445_;
+                                                let _e897 = phi_1446_;
+                                                let _e899 = phi_1447_;
+                                                phi_1449_ = _e889;
+                                                phi_1450_ = _e891;
+                                                phi_1452_ = _e893;
+                                                phi_1453_ = _e895;
+                                                phi_1454_ = _e897;
+                                                phi_1455_ = _e899;
+                                                phi_1456_ = select(true, false, _e672);
                                             } else {
-                                                phi_1443_ = u32();
-                                                phi_1444_ = f32();
-                                                phi_1446_ = false;
-                                                phi_1447_ = false;
-                                                phi_1448_ = false;
-                                                phi_1449_ = false;
-                                                phi_1450_ = false;
+                                                phi_1449_ = u32();
+                                                phi_1450_ = f32();
+                                                phi_1452_ = false;
+                                                phi_1453_ = false;
+                                                phi_1454_ = false;
+                                                phi_1455_ = false;
+                                                phi_1456_ = false;
                                             }
-                                            let _e924 = phi_1443_;
-                                            let _e926 = phi_1444_;
-                                            let _e928 = phi_1446_;
-                                            let _e930 = phi_1447_;
-                                            let _e932 = phi_1448_;
-                                            let _e934 = phi_1449_;
-                                            let _e936 = phi_1450_;
-                                            phi_1452_ = _e924;
-                                            phi_1453_ = _e926;
-                                            phi_1455_ = _e928;
-                                            phi_1456_ = _e930;
-                                            phi_1457_ = _e932;
-                                            phi_1458_ = _e934;
-                                            phi_1459_ = _e936;
-                                            phi_1460_ = select(true, false, _e691);
+                                            let _e902 = phi_1449_;
+                                            let _e904 = phi_1450_;
+                                            let _e906 = phi_1452_;
+                                            let _e908 = phi_1453_;
+                                            let _e910 = phi_1454_;
+                                            let _e912 = phi_1455_;
+                                            let _e914 = phi_1456_;
+                                            phi_1458_ = _e902;
+                                            phi_1459_ = _e904;
+                                            phi_1461_ = _e906;
+                                            phi_1462_ = _e908;
+                                            phi_1463_ = _e910;
+                                            phi_1464_ = _e912;
+                                            phi_1465_ = _e914;
+                                            phi_1466_ = select(true, false, _e671);
                                         }
-                                        let _e939 = phi_1452_;
-                                        let _e941 = phi_1453_;
-                                        let _e943 = phi_1455_;
-                                        let _e945 = phi_1456_;
-                                        let _e947 = phi_1457_;
-                                        let _e949 = phi_1458_;
-                                        let _e951 = phi_1459_;
-                                        let _e953 = phi_1460_;
-                                        phi_1019_ = _e939;
-                                        phi_1022_ = _e941;
-                                        phi_1024_ = _e672;
-                                        phi_1463_ = _e943;
-                                        phi_1464_ = _e682;
-                                        phi_1466_ = _e945;
-                                        phi_1467_ = _e947;
-                                        phi_1468_ = _e949;
-                                        phi_1469_ = _e951;
-                                        phi_1470_ = _e953;
+                                        let _e917 = phi_1458_;
+                                        let _e919 = phi_1459_;
+                                        let _e921 = phi_1461_;
+                                        let _e923 = phi_1462_;
+                                        let _e925 = phi_1463_;
+                                        let _e927 = phi_1464_;
+                                        let _e929 = phi_1465_;
+                                        let _e931 = phi_1466_;
+                                        phi_1025_ = _e917;
+                                        phi_1028_ = _e919;
+                                        phi_1030_ = _e655;
+                                        phi_1469_ = _e921;
+                                        phi_1470_ = _e662;
+                                        phi_1472_ = _e923;
+                                        phi_1473_ = _e925;
+                                        phi_1474_ = _e927;
+                                        phi_1475_ = _e929;
+                                        phi_1476_ = _e931;
                                     } else {
-                                        phi_1019_ = u32();
-                                        phi_1022_ = f32();
-                                        phi_1024_ = f32();
-                                        phi_1463_ = false;
-                                        phi_1464_ = false;
-                                        phi_1466_ = false;
-                                        phi_1467_ = false;
-                                        phi_1468_ = false;
+                                        phi_1025_ = u32();
+                                        phi_1028_ = f32();
+                                        phi_1030_ = f32();
                                         phi_1469_ = false;
                                         phi_1470_ = false;
+                                        phi_1472_ = false;
+                                        phi_1473_ = false;
+                                        phi_1474_ = false;
+                                        phi_1475_ = false;
+                                        phi_1476_ = false;
                                     }
-                                    let _e955 = phi_1019_;
-                                    let _e957 = phi_1022_;
-                                    let _e959 = phi_1024_;
-                                    let _e961 = phi_1463_;
-                                    let _e963 = phi_1464_;
-                                    let _e965 = phi_1466_;
-                                    let _e967 = phi_1467_;
-                                    let _e969 = phi_1468_;
-                                    let _e971 = phi_1469_;
-                                    let _e973 = phi_1470_;
+                                    let _e933 = phi_1025_;
+                                    let _e935 = phi_1028_;
+                                    let _e937 = phi_1030_;
+                                    let _e939 = phi_1469_;
+                                    let _e941 = phi_1470_;
+                                    let _e943 = phi_1472_;
+                                    let _e945 = phi_1473_;
+                                    let _e947 = phi_1474_;
+                                    let _e949 = phi_1475_;
+                                    let _e951 = phi_1476_;
                                     continue;
                                     continuing {
-                                        phi_1018_ = _e955;
-                                        phi_1021_ = _e957;
-                                        phi_1023_ = _e959;
-                                        phi_1920_ = _e567;
-                                        phi_1670_ = _e973;
-                                        phi_1669_ = _e971;
-                                        phi_1668_ = _e969;
-                                        phi_1667_ = _e967;
-                                        phi_1666_ = _e965;
-                                        phi_1665_ = select(true, false, _e667);
-                                        phi_1664_ = _e963;
-                                        phi_1662_ = _e957;
-                                        phi_1661_ = _e959;
-                                        break if !(_e961);
+                                        phi_1024_ = _e933;
+                                        phi_1027_ = _e935;
+                                        phi_1029_ = _e937;
+                                        phi_1926_ = _e559;
+                                        phi_1676_ = _e951;
+                                        phi_1675_ = _e949;
+                                        phi_1674_ = _e947;
+                                        phi_1673_ = _e945;
+                                        phi_1672_ = _e943;
+                                        phi_1671_ = select(true, false, _e650);
+                                        phi_1670_ = _e941;
+                                        phi_1668_ = _e935;
+                                        phi_1667_ = _e937;
+                                        break if !(_e939);
                                     }
                                 }
-                                let _e977 = phi_1920_;
-                                let _e979 = phi_1670_;
-                                let _e981 = phi_1669_;
-                                let _e983 = phi_1668_;
-                                let _e985 = phi_1667_;
-                                let _e987 = phi_1666_;
-                                let _e989 = phi_1665_;
-                                let _e991 = phi_1664_;
-                                let _e993 = phi_1662_;
-                                let _e995 = phi_1661_;
-                                phi_2034_ = _e977;
-                                if _e977 {
+                                let _e955 = phi_1926_;
+                                let _e957 = phi_1676_;
+                                let _e959 = phi_1675_;
+                                let _e961 = phi_1674_;
+                                let _e963 = phi_1673_;
+                                let _e965 = phi_1672_;
+                                let _e967 = phi_1671_;
+                                let _e969 = phi_1670_;
+                                let _e971 = phi_1668_;
+                                let _e973 = phi_1667_;
+                                phi_2043_ = _e955;
+                                if _e955 {
                                     break;
                                 }
-                                let _e996 = select(_e989, false, _e991);
-                                let _e1002 = select(select(_e987, false, _e991), false, _e996);
-                                if _e1002 {
-                                    let _e1009 = local_1;
-                                    let _e1010 = (_e1009 + _e993);
-                                    if (_e1010 < 0.000001f) {
-                                        let _e1253 = local_6;
-                                        phi_1501_ = _e1253;
+                                let _e974 = select(_e967, false, _e969);
+                                let _e980 = select(select(_e965, false, _e969), false, _e974);
+                                if _e980 {
+                                    let _e987 = local_1;
+                                    let _e988 = (_e987 + _e971);
+                                    if (_e988 < 0.000001f) {
+                                        let _e1214 = local_6;
+                                        phi_1507_ = _e1214;
                                     } else {
-                                        let _e1013 = local_2;
-                                        let _e1016 = local_3;
-                                        let _e1020 = local_4;
-                                        phi_1501_ = (_e1020 + ((_e1016 * (_e995 - _e1013)) / _e1010));
+                                        let _e991 = local_2;
+                                        let _e994 = local_3;
+                                        let _e998 = local_4;
+                                        phi_1507_ = (_e998 + ((_e994 * (_e973 - _e991)) / _e988));
                                     }
-                                    let _e1023 = phi_1501_;
-                                    phi_1503_ = type_25(_e1023, true);
+                                    let _e1001 = phi_1507_;
+                                    phi_1509_ = type_25(_e1001, true);
                                 } else {
-                                    phi_1503_ = type_25();
+                                    phi_1509_ = type_25();
                                 }
-                                let _e1026 = phi_1503_;
-                                let _e1027 = select(select(select(_e985, false, _e991), false, _e996), false, _e1002);
-                                let _e1033 = select(select(select(select(_e983, false, _e991), false, _e996), false, _e1002), false, _e1027);
-                                let _e1038 = select(select(select(select(select(_e981, false, _e991), false, _e996), false, _e1002), false, _e1027), false, _e1033);
-                                let _e1043 = select(select(select(select(select(select(_e979, false, _e991), false, _e996), false, _e1002), false, _e1027), false, _e1033), false, _e1038);
-                                let _e1047 = select(select(select(_e1027, true, _e1033), true, _e1038), true, _e1043);
-                                if select(select(select(select(select(select(select(_e996, false, _e1002), false, _e1027), false, _e1033), false, _e1038), false, _e1043), false, _e1047), true, select(select(select(select(select(select(select(_e991, false, _e996), false, _e1002), false, _e1027), false, _e1033), false, _e1038), false, _e1043), true, _e1047)) {
-                                    phi_1552_ = type_25(_e654, false);
+                                let _e1004 = phi_1509_;
+                                let _e1005 = select(select(select(_e963, false, _e969), false, _e974), false, _e980);
+                                let _e1011 = select(select(select(select(_e961, false, _e969), false, _e974), false, _e980), false, _e1005);
+                                let _e1016 = select(select(select(select(select(_e959, false, _e969), false, _e974), false, _e980), false, _e1005), false, _e1011);
+                                let _e1021 = select(select(select(select(select(select(_e957, false, _e969), false, _e974), false, _e980), false, _e1005), false, _e1011), false, _e1016);
+                                let _e1025 = select(select(select(_e1005, true, _e1011), true, _e1016), true, _e1021);
+                                if select(select(select(select(select(select(select(_e974, false, _e980), false, _e1005), false, _e1011), false, _e1016), false, _e1021), false, _e1025), true, select(select(select(select(select(select(select(_e969, false, _e974), false, _e980), false, _e1005), false, _e1011), false, _e1016), false, _e1021), true, _e1025)) {
+                                    phi_1558_ = type_25(_e637, false);
                                 } else {
-                                    phi_1552_ = _e1026;
+                                    phi_1558_ = _e1004;
                                 }
-                                let _e1055 = phi_1552_;
-                                if _e1055.member_1 {
-                                    let _e1060 = params.member.member_7;
-                                    if (_e1060 == 1u) {
-                                        phi_1577_ = 0f;
+                                let _e1033 = phi_1558_;
+                                if _e1033.member_1 {
+                                    let _e1038 = params.member.member_7;
+                                    if (_e1038 == 1u) {
+                                        phi_1583_ = 0f;
                                     } else {
-                                        let _e1062 = (_e1055.member / _e654);
-                                        if (_e1062 > 0f) {
-                                            phi_1576_ = select(1f, _e1062, (_e1062 < 1f));
-                                        } else {
-                                            phi_1576_ = 0f;
-                                        }
-                                        let _e1067 = phi_1576_;
-                                        phi_1577_ = _e1067;
+                                        let _e1040 = (_e1033.member / _e637);
+                                        phi_1583_ = select(0f, select(1f, _e1040, (_e1040 < 1f)), (_e1040 > 0f));
                                     }
-                                    let _e1069 = phi_1577_;
-                                    phi_1578_ = _e1069;
+                                    let _e1046 = phi_1583_;
+                                    phi_1584_ = _e1046;
                                 } else {
-                                    phi_1578_ = 1f;
+                                    phi_1584_ = 1f;
                                 }
-                                let _e1071 = phi_1578_;
-                                phi_2035_ = _e977;
-                                phi_879_ = (_e569 + 1u);
-                                phi_882_ = (_e571 + _e1071);
+                                let _e1048 = phi_1584_;
+                                phi_2044_ = _e955;
+                                phi_879_ = (_e561 + 1u);
+                                phi_882_ = (_e563 + _e1048);
                             } else {
-                                phi_2035_ = _e567;
+                                phi_2044_ = _e559;
                                 phi_879_ = u32();
                                 phi_882_ = f32();
                             }
-                            let _e1075 = phi_2035_;
-                            let _e1077 = phi_879_;
-                            let _e1079 = phi_882_;
+                            let _e1052 = phi_2044_;
+                            let _e1054 = phi_879_;
+                            let _e1056 = phi_882_;
                             continue;
                             continuing {
-                                phi_1929_ = _e1075;
-                                phi_878_ = _e1077;
-                                phi_881_ = _e1079;
-                                phi_2034_ = _e1075;
-                                break if !(_e572);
+                                phi_1939_ = _e1052;
+                                phi_878_ = _e1054;
+                                phi_881_ = _e1056;
+                                phi_2043_ = _e1052;
+                                break if !(_e564);
                             }
                         }
-                        let _e1082 = phi_2034_;
-                        if _e1082 {
+                        let _e1059 = phi_2043_;
+                        if _e1059 {
                             break;
                         }
-                        let _e1085 = local_5;
-                        let _e1089 = params.member.member_2;
-                        let _e1090 = pow((_e1085 / f32(_e565)), _e1089);
-                        let _e1091 = (_e1090 * 0.6666667f);
-                        if (_e1091 > 0f) {
-                            phi_1596_ = select(1f, _e1091, (_e1091 < 1f));
-                        } else {
-                            phi_1596_ = 0f;
-                        }
-                        let _e1096 = phi_1596_;
-                        let _e1098 = ((_e1096 * 255f) + 0.5f);
-                        phi_1628_ = type_26(_e1090, select(select(u32(_e1098), 0u, (_e1098 < 0f)), 4294967295u, (_e1098 > 4294967000f)), _e389);
+                        let _e1062 = local_5;
+                        let _e1066 = params.member.member_2;
+                        let _e1067 = pow((_e1062 / f32(_e557)), _e1066);
+                        let _e1068 = (_e1067 * 0.6666667f);
+                        let _e1074 = ((select(0f, select(1f, _e1068, (_e1068 < 1f)), (_e1068 > 0f)) * 255f) + 0.5f);
+                        phi_1634_ = type_26(_e1067, select(select(u32(_e1074), 0u, (_e1074 < 0f)), 4294967295u, (_e1074 > 4294967000f)), _e381);
                     } else {
-                        phi_1628_ = type_26(1f, 170u, _e389);
+                        phi_1634_ = type_26(1f, 170u, _e381);
                     }
-                    let _e1107 = phi_1628_;
+                    let _e1083 = phi_1634_;
                     if (_e97 < arrayLength((&ao.member))) {
                     } else {
                         break;
                     }
-                    ao.member[_e97] = _e1107.member;
+                    ao.member[_e97] = _e1083.member;
                     if (_e97 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e97] = _e1107.member_1;
+                    terms.member[_e97] = _e1083.member_1;
                     if (_e97 < arrayLength((&edges.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e97] = _e1107.member_2;
+                    edges.member[_e97] = _e1083.member_2;
                 }
             }
             break;

@@ -33,11 +33,6 @@ struct type_20 {
     member_14: u32,
 }
 
-struct type_21 {
-    member: u32,
-    member_1: u32,
-}
-
 struct type_22 {
     member: f32,
     member_1: f32,
@@ -55,6 +50,11 @@ struct type_25 {
     member_1: f32,
 }
 
+struct type_28 {
+    member: u32,
+    member_1: u32,
+}
+
 var<private> id_1: vec3<u32>;
 @group(0) @binding(1) 
 var<storage> normals: type_10;
@@ -69,1362 +69,1222 @@ var<uniform> params: type_23;
 
 fn function_() {
     var local: array<type_25, 4>;
-    var phi_303_: i32;
-    var phi_322_: i32;
-    var phi_362_: i32;
-    var phi_381_: i32;
-    var phi_421_: i32;
-    var phi_440_: i32;
-    var phi_480_: i32;
-    var phi_499_: i32;
-    var phi_579_: f32;
-    var phi_590_: f32;
-    var phi_601_: f32;
-    var phi_612_: f32;
-    var phi_2307_: f32;
-    var phi_2322_: f32;
-    var phi_2326_: f32;
-    var phi_2327_: bool;
-    var phi_2350_: f32;
-    var phi_2365_: f32;
-    var phi_2369_: f32;
-    var phi_2370_: bool;
-    var phi_2393_: f32;
-    var phi_2408_: f32;
-    var phi_2412_: f32;
-    var phi_2413_: bool;
-    var phi_2436_: f32;
-    var phi_2451_: f32;
-    var phi_2455_: f32;
-    var phi_2456_: bool;
-    var phi_2478_: bool;
-    var phi_2493_: bool;
-    var phi_715_: vec2<f32>;
-    var phi_743_: vec3<f32>;
-    var phi_764_: u32;
-    var phi_767_: u32;
-    var phi_769_: u32;
-    var phi_771_: u32;
-    var phi_800_: u32;
-    var phi_801_: u32;
-    var phi_802_: u32;
-    var phi_803_: u32;
-    var phi_765_: u32;
-    var phi_768_: u32;
-    var phi_770_: u32;
-    var phi_772_: u32;
+    var phi_443_: i32;
+    var phi_462_: i32;
+    var phi_502_: i32;
+    var phi_521_: i32;
+    var phi_561_: i32;
+    var phi_580_: i32;
+    var phi_620_: i32;
+    var phi_639_: i32;
+    var phi_2289_: f32;
+    var phi_2293_: f32;
+    var phi_2294_: bool;
+    var phi_2332_: f32;
+    var phi_2336_: f32;
+    var phi_2337_: bool;
+    var phi_2375_: f32;
+    var phi_2379_: f32;
+    var phi_2380_: bool;
+    var phi_2418_: f32;
+    var phi_2422_: f32;
+    var phi_2423_: bool;
+    var phi_2445_: bool;
+    var phi_2460_: bool;
+    var phi_856_: vec2<f32>;
+    var phi_884_: vec3<f32>;
+    var phi_905_: u32;
+    var phi_908_: u32;
+    var phi_910_: u32;
+    var phi_912_: u32;
+    var phi_941_: u32;
+    var phi_942_: u32;
+    var phi_943_: u32;
+    var phi_944_: u32;
+    var phi_906_: u32;
+    var phi_909_: u32;
+    var phi_911_: u32;
+    var phi_913_: u32;
     var local_1: u32;
-    var phi_826_: bool;
-    var phi_2652_: bool;
-    var phi_849_: u32;
-    var phi_852_: f32;
-    var phi_854_: f32;
-    var phi_971_: f32;
-    var phi_991_: f32;
-    var phi_1030_: u32;
-    var phi_1033_: u32;
-    var phi_1087_: f32;
-    var phi_1111_: f32;
-    var phi_1134_: u32;
-    var phi_1150_: f32;
-    var phi_1152_: f32;
-    var phi_1153_: bool;
-    var phi_1173_: f32;
-    var phi_1175_: f32;
-    var phi_1176_: bool;
-    var phi_1228_: u32;
-    var phi_1248_: u32;
-    var phi_1250_: u32;
-    var phi_1253_: u32;
-    var phi_1251_: u32;
-    var phi_1254_: u32;
+    var phi_967_: bool;
+    var phi_2897_: bool;
+    var phi_990_: u32;
+    var phi_993_: f32;
+    var phi_995_: f32;
+    var phi_1165_: u32;
+    var phi_1168_: u32;
+    var phi_1222_: f32;
+    var phi_1267_: f32;
+    var phi_1269_: f32;
+    var phi_1270_: bool;
+    var phi_1293_: f32;
+    var phi_1295_: f32;
+    var phi_1296_: bool;
+    var phi_2492_: u32;
+    var phi_2540_: u32;
+    var phi_2560_: u32;
+    var phi_2562_: u32;
+    var phi_2563_: u32;
+    var phi_2586_: u32;
+    var phi_2587_: u32;
     var local_2: u32;
-    var phi_1336_: u32;
-    var phi_1356_: u32;
-    var phi_1358_: u32;
-    var phi_1361_: u32;
-    var phi_1359_: u32;
-    var phi_1362_: u32;
+    var phi_2614_: u32;
+    var phi_2662_: u32;
+    var phi_2682_: u32;
+    var phi_2684_: u32;
+    var phi_2685_: u32;
+    var phi_2708_: u32;
+    var phi_2709_: u32;
     var local_3: u32;
-    var phi_1437_: bool;
-    var phi_1540_: f32;
-    var phi_1553_: f32;
-    var phi_2508_: bool;
-    var phi_1592_: f32;
-    var phi_1607_: f32;
-    var phi_1635_: f32;
-    var phi_1650_: f32;
-    var phi_2523_: bool;
-    var phi_2538_: bool;
+    var phi_1404_: bool;
+    var phi_1520_: f32;
+    var phi_2725_: bool;
+    var phi_2740_: bool;
+    var phi_2755_: bool;
+    var phi_1665_: u32;
+    var phi_1666_: u32;
+    var phi_1678_: u32;
+    var phi_1679_: bool;
     var phi_1698_: u32;
-    var phi_1699_: u32;
-    var phi_1711_: u32;
-    var phi_1712_: bool;
-    var phi_1731_: u32;
-    var phi_1734_: u32;
-    var phi_1735_: u32;
-    var phi_1736_: bool;
-    var phi_1741_: u32;
-    var phi_1742_: u32;
-    var phi_1743_: u32;
-    var phi_1771_: bool;
-    var phi_1874_: f32;
-    var phi_1887_: f32;
-    var phi_2553_: bool;
-    var phi_1926_: f32;
-    var phi_1941_: f32;
-    var phi_1969_: f32;
-    var phi_1984_: f32;
-    var phi_2568_: bool;
-    var phi_2583_: bool;
-    var phi_2032_: u32;
-    var phi_2033_: u32;
-    var phi_2045_: u32;
-    var phi_2046_: bool;
-    var phi_2065_: u32;
-    var phi_2068_: u32;
-    var phi_2069_: u32;
-    var phi_2070_: bool;
-    var phi_2075_: u32;
-    var phi_2076_: u32;
-    var phi_2077_: u32;
-    var phi_1031_: u32;
-    var phi_1034_: u32;
-    var phi_2603_: bool;
-    var local_4: u32;
-    var phi_2161_: u32;
-    var phi_2164_: f32;
-    var local_5: u32;
-    var phi_2162_: u32;
-    var phi_2165_: f32;
+    var phi_1701_: u32;
+    var phi_1702_: u32;
+    var phi_1703_: bool;
+    var phi_1708_: u32;
+    var phi_1709_: u32;
+    var phi_1710_: u32;
+    var phi_1738_: bool;
+    var phi_1854_: f32;
     var phi_2770_: bool;
+    var phi_2785_: bool;
+    var phi_2800_: bool;
+    var phi_1999_: u32;
+    var phi_2000_: u32;
+    var phi_2012_: u32;
+    var phi_2013_: bool;
+    var phi_2032_: u32;
+    var phi_2035_: u32;
+    var phi_2036_: u32;
+    var phi_2037_: bool;
+    var phi_2042_: u32;
+    var phi_2043_: u32;
+    var phi_2044_: u32;
+    var phi_1166_: u32;
+    var phi_1169_: u32;
+    var phi_2845_: bool;
+    var local_4: u32;
+    var phi_2128_: u32;
+    var phi_2131_: f32;
+    var local_5: u32;
+    var phi_2129_: u32;
+    var phi_2132_: f32;
+    var phi_3014_: bool;
     var local_6: f32;
-    var phi_2200_: f32;
-    var phi_2781_: bool;
-    var phi_2211_: f32;
-    var phi_2212_: f32;
+    var phi_3025_: bool;
+    var phi_2178_: f32;
+    var phi_2179_: f32;
+    var phi_2073_: f32;
+    var phi_2075_: u32;
+    var phi_2078_: f32;
+    var phi_2080_: f32;
     var phi_2106_: f32;
-    var phi_2108_: u32;
-    var phi_2111_: f32;
-    var phi_2113_: f32;
-    var phi_2139_: f32;
     var local_7: u32;
-    var phi_2149_: f32;
-    var phi_2109_: u32;
-    var phi_2112_: f32;
-    var phi_2114_: f32;
+    var phi_2116_: f32;
+    var phi_2076_: u32;
+    var phi_2079_: f32;
+    var phi_2081_: f32;
     var local_8: f32;
-    var phi_2775_: bool;
-    var phi_2213_: f32;
-    var phi_2214_: f32;
-    var phi_2774_: bool;
-    var phi_850_: u32;
-    var phi_853_: f32;
-    var phi_855_: f32;
-    var phi_2773_: bool;
+    var phi_3019_: bool;
+    var phi_2180_: f32;
+    var phi_2181_: f32;
+    var phi_3018_: bool;
+    var phi_991_: u32;
+    var phi_994_: f32;
+    var phi_996_: f32;
+    var phi_3017_: bool;
     var local_9: f32;
     var local_10: f32;
     var local_11: f32;
-    var phi_2221_: f32;
-    var phi_2598_: bool;
-    var phi_2237_: f32;
-    var phi_2269_: type_21;
+    var phi_2188_: f32;
+    var phi_2815_: bool;
+    var phi_2236_: type_28;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e82 = id_1;
-            let _e84 = arrayLength((&mips.member));
-            let _e96 = params.member.member_4.member.member[0u];
-            let _e101 = select(select(u32(_e96), 0u, (_e96 < 0f)), 4294967295u, (_e96 > 4294967000f));
-            let _e107 = params.member.member_4.member.member[1u];
-            let _e112 = select(select(u32(_e107), 0u, (_e107 < 0f)), 4294967295u, (_e107 > 4294967000f));
-            if (_e82.x >= _e101) {
+            let _e83 = id_1;
+            let _e85 = arrayLength((&mips.member));
+            let _e97 = params.member.member_4.member.member[0u];
+            let _e102 = select(select(u32(_e97), 0u, (_e97 < 0f)), 4294967295u, (_e97 > 4294967000f));
+            let _e108 = params.member.member_4.member.member[1u];
+            let _e113 = select(select(u32(_e108), 0u, (_e108 < 0f)), 4294967295u, (_e108 > 4294967000f));
+            if (_e83.x >= _e102) {
             } else {
-                if (_e82.y >= _e112) {
+                if (_e83.y >= _e113) {
                 } else {
-                    let _e118 = ((_e82.y * _e101) + _e82.x);
-                    if (_e118 < _e84) {
+                    let _e119 = ((_e83.y * _e102) + _e83.x);
+                    if (_e119 < _e85) {
                     } else {
                         break;
                     }
-                    let _e122 = mips.member[_e118];
-                    let _e123 = bitcast<i32>(_e82.x);
-                    let _e124 = (_e123 + -1i);
-                    let _e126 = (bitcast<i32>(_e101) - 1i);
-                    let _e127 = (0i <= _e126);
-                    if _e127 {
+                    let _e123 = mips.member[_e119];
+                    let _e124 = bitcast<i32>(_e83.x);
+                    let _e125 = (_e124 + -1i);
+                    let _e127 = (bitcast<i32>(_e102) - 1i);
+                    let _e128 = (0i <= _e127);
+                    if _e128 {
                     } else {
                         break;
                     }
-                    if (_e124 < 0i) {
-                        phi_303_ = 0i;
+                    if (_e125 < 0i) {
+                        phi_443_ = 0i;
                     } else {
-                        phi_303_ = select(_e124, _e126, (_e124 > _e126));
+                        phi_443_ = select(_e125, _e127, (_e125 > _e127));
                     }
-                    let _e132 = phi_303_;
-                    let _e134 = bitcast<i32>(_e82.y);
-                    let _e136 = (bitcast<i32>(_e112) - 1i);
-                    let _e137 = (0i <= _e136);
-                    if _e137 {
-                    } else {
-                        break;
-                    }
-                    let _e138 = (_e134 < 0i);
+                    let _e133 = phi_443_;
+                    let _e135 = bitcast<i32>(_e83.y);
+                    let _e137 = (bitcast<i32>(_e113) - 1i);
+                    let _e138 = (0i <= _e137);
                     if _e138 {
-                        phi_322_ = 0i;
-                    } else {
-                        phi_322_ = select(_e134, _e136, (_e134 > _e136));
-                    }
-                    let _e142 = phi_322_;
-                    let _e145 = ((bitcast<u32>(_e142) * _e101) + bitcast<u32>(_e132));
-                    if (_e145 < _e84) {
                     } else {
                         break;
                     }
-                    let _e149 = mips.member[_e145];
-                    let _e150 = (_e123 + 1i);
-                    if _e127 {
+                    let _e139 = (_e135 < 0i);
+                    if _e139 {
+                        phi_462_ = 0i;
+                    } else {
+                        phi_462_ = select(_e135, _e137, (_e135 > _e137));
+                    }
+                    let _e143 = phi_462_;
+                    let _e146 = ((bitcast<u32>(_e143) * _e102) + bitcast<u32>(_e133));
+                    if (_e146 < _e85) {
                     } else {
                         break;
                     }
-                    if (_e150 < 0i) {
-                        phi_362_ = 0i;
-                    } else {
-                        phi_362_ = select(_e150, _e126, (_e150 > _e126));
-                    }
-                    let _e155 = phi_362_;
-                    if _e137 {
+                    let _e150 = mips.member[_e146];
+                    let _e151 = (_e124 + 1i);
+                    if _e128 {
                     } else {
                         break;
                     }
+                    if (_e151 < 0i) {
+                        phi_502_ = 0i;
+                    } else {
+                        phi_502_ = select(_e151, _e127, (_e151 > _e127));
+                    }
+                    let _e156 = phi_502_;
                     if _e138 {
-                        phi_381_ = 0i;
-                    } else {
-                        phi_381_ = select(_e134, _e136, (_e134 > _e136));
-                    }
-                    let _e160 = phi_381_;
-                    let _e163 = ((bitcast<u32>(_e160) * _e101) + bitcast<u32>(_e155));
-                    if (_e163 < _e84) {
                     } else {
                         break;
                     }
-                    let _e167 = mips.member[_e163];
-                    if _e127 {
+                    if _e139 {
+                        phi_521_ = 0i;
+                    } else {
+                        phi_521_ = select(_e135, _e137, (_e135 > _e137));
+                    }
+                    let _e161 = phi_521_;
+                    let _e164 = ((bitcast<u32>(_e161) * _e102) + bitcast<u32>(_e156));
+                    if (_e164 < _e85) {
                     } else {
                         break;
                     }
-                    let _e168 = (_e123 < 0i);
-                    if _e168 {
-                        phi_421_ = 0i;
-                    } else {
-                        phi_421_ = select(_e123, _e126, (_e123 > _e126));
-                    }
-                    let _e172 = phi_421_;
-                    let _e174 = (_e134 + -1i);
-                    if _e137 {
+                    let _e168 = mips.member[_e164];
+                    if _e128 {
                     } else {
                         break;
                     }
-                    if (_e174 < 0i) {
-                        phi_440_ = 0i;
+                    let _e169 = (_e124 < 0i);
+                    if _e169 {
+                        phi_561_ = 0i;
                     } else {
-                        phi_440_ = select(_e174, _e136, (_e174 > _e136));
+                        phi_561_ = select(_e124, _e127, (_e124 > _e127));
                     }
-                    let _e179 = phi_440_;
-                    let _e182 = ((bitcast<u32>(_e179) * _e101) + bitcast<u32>(_e172));
-                    if (_e182 < _e84) {
-                    } else {
-                        break;
-                    }
-                    let _e186 = mips.member[_e182];
-                    if _e127 {
+                    let _e173 = phi_561_;
+                    let _e175 = (_e135 + -1i);
+                    if _e138 {
                     } else {
                         break;
                     }
-                    if _e168 {
-                        phi_480_ = 0i;
+                    if (_e175 < 0i) {
+                        phi_580_ = 0i;
                     } else {
-                        phi_480_ = select(_e123, _e126, (_e123 > _e126));
+                        phi_580_ = select(_e175, _e137, (_e175 > _e137));
                     }
-                    let _e190 = phi_480_;
-                    let _e192 = (_e134 + 1i);
-                    if _e137 {
-                    } else {
-                        break;
-                    }
-                    if (_e192 < 0i) {
-                        phi_499_ = 0i;
-                    } else {
-                        phi_499_ = select(_e192, _e136, (_e192 > _e136));
-                    }
-                    let _e197 = phi_499_;
-                    let _e200 = ((bitcast<u32>(_e197) * _e101) + bitcast<u32>(_e190));
-                    if (_e200 < _e84) {
+                    let _e180 = phi_580_;
+                    let _e183 = ((bitcast<u32>(_e180) * _e102) + bitcast<u32>(_e173));
+                    if (_e183 < _e85) {
                     } else {
                         break;
                     }
-                    let _e204 = mips.member[_e200];
-                    let _e205 = (_e149 - _e122);
-                    let _e206 = (_e167 - _e122);
-                    let _e207 = (_e186 - _e122);
-                    let _e208 = (_e204 - _e122);
-                    let _e209 = (_e206 - _e205);
-                    let _e211 = (_e208 - _e207);
-                    let _e219 = abs(_e205);
+                    let _e187 = mips.member[_e183];
+                    if _e128 {
+                    } else {
+                        break;
+                    }
+                    if _e169 {
+                        phi_620_ = 0i;
+                    } else {
+                        phi_620_ = select(_e124, _e127, (_e124 > _e127));
+                    }
+                    let _e191 = phi_620_;
+                    let _e193 = (_e135 + 1i);
+                    if _e138 {
+                    } else {
+                        break;
+                    }
+                    if (_e193 < 0i) {
+                        phi_639_ = 0i;
+                    } else {
+                        phi_639_ = select(_e193, _e137, (_e193 > _e137));
+                    }
+                    let _e198 = phi_639_;
+                    let _e201 = ((bitcast<u32>(_e198) * _e102) + bitcast<u32>(_e191));
+                    if (_e201 < _e85) {
+                    } else {
+                        break;
+                    }
+                    let _e205 = mips.member[_e201];
+                    let _e206 = (_e150 - _e123);
+                    let _e207 = (_e168 - _e123);
+                    let _e208 = (_e187 - _e123);
+                    let _e209 = (_e205 - _e123);
+                    let _e210 = (_e207 - _e206);
+                    let _e212 = (_e209 - _e208);
                     let _e220 = abs(_e206);
                     let _e221 = abs(_e207);
                     let _e222 = abs(_e208);
-                    let _e223 = abs((_e205 + (_e209 * 0.5f)));
-                    let _e224 = abs((_e206 + (_e209 * -0.5f)));
-                    let _e225 = abs((_e207 + (_e211 * 0.5f)));
-                    let _e226 = abs((_e208 + (_e211 * -0.5f)));
-                    let _e235 = (_e122 * 0.011f);
-                    let _e240 = (1.25f - (select(_e223, _e219, (_e219 < _e223)) / _e235));
-                    if (_e240 > 0f) {
-                        phi_579_ = select(1f, _e240, (_e240 < 1f));
-                    } else {
-                        phi_579_ = 0f;
-                    }
-                    let _e245 = phi_579_;
-                    let _e246 = (1.25f - (select(_e224, _e220, (_e220 < _e224)) / _e235));
-                    if (_e246 > 0f) {
-                        phi_590_ = select(1f, _e246, (_e246 < 1f));
-                    } else {
-                        phi_590_ = 0f;
-                    }
-                    let _e251 = phi_590_;
-                    let _e252 = (1.25f - (select(_e225, _e221, (_e221 < _e225)) / _e235));
-                    if (_e252 > 0f) {
-                        phi_601_ = select(1f, _e252, (_e252 < 1f));
-                    } else {
-                        phi_601_ = 0f;
-                    }
-                    let _e257 = phi_601_;
-                    let _e258 = (1.25f - (select(_e226, _e222, (_e222 < _e226)) / _e235));
-                    if (_e258 > 0f) {
-                        phi_612_ = select(1f, _e258, (_e258 < 1f));
-                    } else {
-                        phi_612_ = 0f;
-                    }
-                    let _e263 = phi_612_;
-                    if (_e245 > 0f) {
-                        phi_2307_ = select(1f, _e245, (_e245 < 1f));
-                    } else {
-                        phi_2307_ = 0f;
-                    }
-                    let _e268 = phi_2307_;
-                    let _e269 = (_e268 * 2.9f);
-                    let _e271 = floor((_e269 + 0.5f));
-                    if ((_e271 - _e269) == 0.5f) {
-                        let _e277 = ((floor((_e271 * 0.5f)) * 2f) != _e271);
-                        if _e277 {
-                            phi_2322_ = (_e271 - 1f);
+                    let _e223 = abs(_e209);
+                    let _e224 = abs((_e206 + (_e210 * 0.5f)));
+                    let _e225 = abs((_e207 + (_e210 * -0.5f)));
+                    let _e226 = abs((_e208 + (_e212 * 0.5f)));
+                    let _e227 = abs((_e209 + (_e212 * -0.5f)));
+                    let _e236 = (_e123 * 0.011f);
+                    let _e241 = (1.25f - (select(_e224, _e220, (_e220 < _e224)) / _e236));
+                    let _e245 = select(0f, select(1f, _e241, (_e241 < 1f)), (_e241 > 0f));
+                    let _e246 = (1.25f - (select(_e225, _e221, (_e221 < _e225)) / _e236));
+                    let _e250 = select(0f, select(1f, _e246, (_e246 < 1f)), (_e246 > 0f));
+                    let _e251 = (1.25f - (select(_e226, _e222, (_e222 < _e226)) / _e236));
+                    let _e255 = select(0f, select(1f, _e251, (_e251 < 1f)), (_e251 > 0f));
+                    let _e256 = (1.25f - (select(_e227, _e223, (_e223 < _e227)) / _e236));
+                    let _e260 = select(0f, select(1f, _e256, (_e256 < 1f)), (_e256 > 0f));
+                    let _e265 = (select(0f, select(1f, _e245, (_e245 < 1f)), (_e245 > 0f)) * 2.9f);
+                    let _e267 = floor((_e265 + 0.5f));
+                    if ((_e267 - _e265) == 0.5f) {
+                        let _e273 = ((floor((_e267 * 0.5f)) * 2f) != _e267);
+                        if _e273 {
+                            phi_2289_ = (_e267 - 1f);
                         } else {
-                            phi_2322_ = f32();
+                            phi_2289_ = f32();
                         }
-                        let _e280 = phi_2322_;
-                        phi_2326_ = _e280;
-                        phi_2327_ = select(true, false, _e277);
+                        let _e276 = phi_2289_;
+                        phi_2293_ = _e276;
+                        phi_2294_ = select(true, false, _e273);
                     } else {
-                        phi_2326_ = f32();
-                        phi_2327_ = true;
+                        phi_2293_ = f32();
+                        phi_2294_ = true;
                     }
-                    let _e283 = phi_2326_;
-                    let _e285 = phi_2327_;
-                    let _e286 = select(_e283, _e271, _e285);
-                    if (_e251 > 0f) {
-                        phi_2350_ = select(1f, _e251, (_e251 < 1f));
-                    } else {
-                        phi_2350_ = 0f;
-                    }
-                    let _e297 = phi_2350_;
-                    let _e298 = (_e297 * 2.9f);
-                    let _e300 = floor((_e298 + 0.5f));
-                    if ((_e300 - _e298) == 0.5f) {
-                        let _e306 = ((floor((_e300 * 0.5f)) * 2f) != _e300);
-                        if _e306 {
-                            phi_2365_ = (_e300 - 1f);
+                    let _e279 = phi_2293_;
+                    let _e281 = phi_2294_;
+                    let _e282 = select(_e279, _e267, _e281);
+                    let _e293 = (select(0f, select(1f, _e250, (_e250 < 1f)), (_e250 > 0f)) * 2.9f);
+                    let _e295 = floor((_e293 + 0.5f));
+                    if ((_e295 - _e293) == 0.5f) {
+                        let _e301 = ((floor((_e295 * 0.5f)) * 2f) != _e295);
+                        if _e301 {
+                            phi_2332_ = (_e295 - 1f);
                         } else {
-                            phi_2365_ = f32();
+                            phi_2332_ = f32();
                         }
-                        let _e309 = phi_2365_;
-                        phi_2369_ = _e309;
-                        phi_2370_ = select(true, false, _e306);
+                        let _e304 = phi_2332_;
+                        phi_2336_ = _e304;
+                        phi_2337_ = select(true, false, _e301);
                     } else {
-                        phi_2369_ = f32();
-                        phi_2370_ = true;
+                        phi_2336_ = f32();
+                        phi_2337_ = true;
                     }
-                    let _e312 = phi_2369_;
-                    let _e314 = phi_2370_;
-                    let _e315 = select(_e312, _e300, _e314);
-                    if (_e257 > 0f) {
-                        phi_2393_ = select(1f, _e257, (_e257 < 1f));
-                    } else {
-                        phi_2393_ = 0f;
-                    }
-                    let _e327 = phi_2393_;
-                    let _e328 = (_e327 * 2.9f);
-                    let _e330 = floor((_e328 + 0.5f));
-                    if ((_e330 - _e328) == 0.5f) {
-                        let _e336 = ((floor((_e330 * 0.5f)) * 2f) != _e330);
-                        if _e336 {
-                            phi_2408_ = (_e330 - 1f);
+                    let _e307 = phi_2336_;
+                    let _e309 = phi_2337_;
+                    let _e310 = select(_e307, _e295, _e309);
+                    let _e322 = (select(0f, select(1f, _e255, (_e255 < 1f)), (_e255 > 0f)) * 2.9f);
+                    let _e324 = floor((_e322 + 0.5f));
+                    if ((_e324 - _e322) == 0.5f) {
+                        let _e330 = ((floor((_e324 * 0.5f)) * 2f) != _e324);
+                        if _e330 {
+                            phi_2375_ = (_e324 - 1f);
                         } else {
-                            phi_2408_ = f32();
+                            phi_2375_ = f32();
                         }
-                        let _e339 = phi_2408_;
-                        phi_2412_ = _e339;
-                        phi_2413_ = select(true, false, _e336);
+                        let _e333 = phi_2375_;
+                        phi_2379_ = _e333;
+                        phi_2380_ = select(true, false, _e330);
                     } else {
-                        phi_2412_ = f32();
-                        phi_2413_ = true;
+                        phi_2379_ = f32();
+                        phi_2380_ = true;
                     }
-                    let _e342 = phi_2412_;
-                    let _e344 = phi_2413_;
-                    let _e345 = select(_e342, _e330, _e344);
-                    if (_e263 > 0f) {
-                        phi_2436_ = select(1f, _e263, (_e263 < 1f));
-                    } else {
-                        phi_2436_ = 0f;
-                    }
-                    let _e357 = phi_2436_;
-                    let _e358 = (_e357 * 2.9f);
-                    let _e360 = floor((_e358 + 0.5f));
-                    if ((_e360 - _e358) == 0.5f) {
-                        let _e366 = ((floor((_e360 * 0.5f)) * 2f) != _e360);
-                        if _e366 {
-                            phi_2451_ = (_e360 - 1f);
+                    let _e336 = phi_2379_;
+                    let _e338 = phi_2380_;
+                    let _e339 = select(_e336, _e324, _e338);
+                    let _e351 = (select(0f, select(1f, _e260, (_e260 < 1f)), (_e260 > 0f)) * 2.9f);
+                    let _e353 = floor((_e351 + 0.5f));
+                    if ((_e353 - _e351) == 0.5f) {
+                        let _e359 = ((floor((_e353 * 0.5f)) * 2f) != _e353);
+                        if _e359 {
+                            phi_2418_ = (_e353 - 1f);
                         } else {
-                            phi_2451_ = f32();
+                            phi_2418_ = f32();
                         }
-                        let _e369 = phi_2451_;
-                        phi_2455_ = _e369;
-                        phi_2456_ = select(true, false, _e366);
+                        let _e362 = phi_2418_;
+                        phi_2422_ = _e362;
+                        phi_2423_ = select(true, false, _e359);
                     } else {
-                        phi_2455_ = f32();
-                        phi_2456_ = true;
+                        phi_2422_ = f32();
+                        phi_2423_ = true;
                     }
-                    let _e372 = phi_2455_;
-                    let _e374 = phi_2456_;
-                    let _e375 = select(_e372, _e360, _e374);
-                    let _e381 = ((((64u * select(select(u32(_e286), 0u, (_e286 < 0f)), 4294967295u, (_e286 > 4294967000f))) + (16u * select(select(u32(_e315), 0u, (_e315 < 0f)), 4294967295u, (_e315 > 4294967000f)))) + (4u * select(select(u32(_e345), 0u, (_e345 < 0f)), 4294967295u, (_e345 > 4294967000f)))) + select(select(u32(_e375), 0u, (_e375 < 0f)), 4294967295u, (_e375 > 4294967000f)));
-                    let _e386 = ((f32(_e82.x) + 0.5f) / _e96);
-                    let _e387 = ((f32(_e82.y) + 0.5f) / _e107);
-                    let _e388 = (_e122 * 0.99999f);
-                    let _e396 = params.member.member_4.member.member_1[0u];
-                    let _e398 = ((((2f * _e386) - 1f) * _e396) * _e388);
-                    let _e406 = params.member.member_4.member.member_1[1u];
-                    let _e408 = (((1f - (2f * _e387)) * _e406) * _e388);
-                    let _e409 = -(_e398);
-                    let _e410 = -(_e408);
-                    let _e411 = (_e122 * -0.99999f);
-                    let _e418 = (1f / sqrt((((_e409 * _e409) + (_e410 * _e410)) + (_e411 * _e411))));
-                    let _e419 = (_e409 * _e418);
-                    let _e420 = (_e410 * _e418);
-                    let _e421 = (_e411 * _e418);
-                    if (_e118 < arrayLength((&normals.member))) {
+                    let _e365 = phi_2422_;
+                    let _e367 = phi_2423_;
+                    let _e368 = select(_e365, _e353, _e367);
+                    let _e374 = ((((64u * select(select(u32(_e282), 0u, (_e282 < 0f)), 4294967295u, (_e282 > 4294967000f))) + (16u * select(select(u32(_e310), 0u, (_e310 < 0f)), 4294967295u, (_e310 > 4294967000f)))) + (4u * select(select(u32(_e339), 0u, (_e339 < 0f)), 4294967295u, (_e339 > 4294967000f)))) + select(select(u32(_e368), 0u, (_e368 < 0f)), 4294967295u, (_e368 > 4294967000f)));
+                    let _e379 = ((f32(_e83.x) + 0.5f) / _e97);
+                    let _e380 = ((f32(_e83.y) + 0.5f) / _e108);
+                    let _e381 = (_e123 * 0.99999f);
+                    let _e389 = params.member.member_4.member.member_1[0u];
+                    let _e391 = ((((_e379 * 2f) - 1f) * _e389) * _e381);
+                    let _e399 = params.member.member_4.member.member_1[1u];
+                    let _e401 = ((((_e380 * -2f) + 1f) * _e399) * _e381);
+                    let _e402 = -(_e391);
+                    let _e403 = -(_e401);
+                    let _e404 = (_e123 * -0.99999f);
+                    let _e411 = (1f / sqrt((((_e402 * _e402) + (_e403 * _e403)) + (_e404 * _e404))));
+                    let _e412 = (_e402 * _e411);
+                    let _e413 = (_e403 * _e411);
+                    let _e414 = (_e404 * _e411);
+                    if (_e119 < arrayLength((&normals.member))) {
                     } else {
                         break;
                     }
-                    let _e425 = normals.member[_e118];
-                    let _e433 = (f32((bitcast<i32>(((_e425 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e433 != _e433) {
-                        phi_2478_ = true;
+                    let _e418 = normals.member[_e119];
+                    let _e426 = (f32((bitcast<i32>(((_e418 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e426 != _e426) {
+                        phi_2445_ = true;
                     } else {
-                        phi_2478_ = (-1f >= _e433);
+                        phi_2445_ = (-1f >= _e426);
                     }
-                    let _e437 = phi_2478_;
-                    let _e438 = select(_e433, -1f, _e437);
-                    let _e448 = (f32((bitcast<i32>((((_e425 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e448 != _e448) {
-                        phi_2493_ = true;
+                    let _e430 = phi_2445_;
+                    let _e431 = select(_e426, -1f, _e430);
+                    let _e441 = (f32((bitcast<i32>((((_e418 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e441 != _e441) {
+                        phi_2460_ = true;
                     } else {
-                        phi_2493_ = (-1f >= _e448);
+                        phi_2460_ = (-1f >= _e441);
                     }
-                    let _e452 = phi_2493_;
-                    let _e453 = select(_e448, -1f, _e452);
-                    let _e456 = (1f - abs(_e438));
-                    let _e457 = abs(_e453);
-                    let _e458 = (_e456 - _e457);
-                    if (_e458 < 0f) {
-                        phi_715_ = vec2<f32>(((1f - _e457) * select(1f, -1f, (_e438 < 0f))), (_e456 * select(1f, -1f, (_e453 < 0f))));
+                    let _e445 = phi_2460_;
+                    let _e446 = select(_e441, -1f, _e445);
+                    let _e449 = (1f - abs(_e431));
+                    let _e450 = abs(_e446);
+                    let _e451 = (_e449 - _e450);
+                    if (_e451 < 0f) {
+                        phi_856_ = vec2<f32>(((1f - _e450) * select(1f, -1f, (_e431 < 0f))), (_e449 * select(1f, -1f, (_e446 < 0f))));
                     } else {
-                        phi_715_ = vec2<f32>(_e438, _e453);
+                        phi_856_ = vec2<f32>(_e431, _e446);
                     }
-                    let _e469 = phi_715_;
-                    let _e478 = (1f / sqrt((((_e469.x * _e469.x) + (_e469.y * _e469.y)) + (_e458 * _e458))));
-                    let _e479 = (_e469.x * _e478);
-                    let _e480 = (_e469.y * _e478);
-                    let _e481 = (_e458 * _e478);
-                    let _e482 = -(_e481);
-                    if ((((_e479 * _e419) + (_e480 * _e420)) + (_e482 * _e421)) < 0f) {
-                        phi_743_ = vec3<f32>(-(_e479), -(_e480), _e481);
+                    let _e462 = phi_856_;
+                    let _e471 = (1f / sqrt((((_e462.x * _e462.x) + (_e462.y * _e462.y)) + (_e451 * _e451))));
+                    let _e472 = (_e462.x * _e471);
+                    let _e473 = (_e462.y * _e471);
+                    let _e474 = (_e451 * _e471);
+                    let _e475 = -(_e474);
+                    if ((((_e472 * _e412) + (_e473 * _e413)) + (_e475 * _e414)) < 0f) {
+                        phi_884_ = vec3<f32>(-(_e472), -(_e473), _e474);
                     } else {
-                        phi_743_ = vec3<f32>(_e479, _e480, _e482);
+                        phi_884_ = vec3<f32>(_e472, _e473, _e475);
                     }
-                    let _e494 = phi_743_;
-                    let _e498 = params.member.member_4.member_1;
-                    let _e502 = params.member.member_4.member_2;
-                    let _e507 = ((_e498 * _e502) / (((_e122 * 1.99998f) * _e396) / _e96));
-                    let _e512 = params.member.member_4.member_11;
-                    phi_764_ = (_e82.y & 63u);
-                    phi_767_ = (_e82.x & 63u);
-                    phi_769_ = 32u;
-                    phi_771_ = 0u;
+                    let _e487 = phi_884_;
+                    let _e491 = params.member.member_4.member_1;
+                    let _e495 = params.member.member_4.member_2;
+                    let _e500 = ((_e491 * _e495) / (((_e123 * 1.99998f) * _e389) / _e97));
+                    let _e505 = params.member.member_4.member_11;
+                    phi_905_ = (_e83.y & 63u);
+                    phi_908_ = (_e83.x & 63u);
+                    phi_910_ = 32u;
+                    phi_912_ = 0u;
                     loop {
-                        let _e516 = phi_764_;
-                        let _e518 = phi_767_;
-                        let _e520 = phi_769_;
-                        let _e522 = phi_771_;
-                        local_1 = _e522;
-                        let _e523 = (_e520 > 0u);
-                        if _e523 {
-                            let _e526 = select(0u, 1u, ((_e518 & _e520) != 0u));
-                            let _e529 = select(0u, 1u, ((_e516 & _e520) != 0u));
-                            if (_e529 == 0u) {
-                                if (_e526 == 1u) {
-                                    phi_800_ = (63u - _e516);
-                                    phi_801_ = (63u - _e518);
+                        let _e509 = phi_905_;
+                        let _e511 = phi_908_;
+                        let _e513 = phi_910_;
+                        let _e515 = phi_912_;
+                        local_1 = _e515;
+                        let _e516 = (_e513 > 0u);
+                        if _e516 {
+                            let _e519 = select(0u, 1u, ((_e511 & _e513) != 0u));
+                            let _e522 = select(0u, 1u, ((_e509 & _e513) != 0u));
+                            if (_e522 == 0u) {
+                                if (_e519 == 1u) {
+                                    phi_941_ = (63u - _e509);
+                                    phi_942_ = (63u - _e511);
                                 } else {
-                                    phi_800_ = _e516;
-                                    phi_801_ = _e518;
+                                    phi_941_ = _e509;
+                                    phi_942_ = _e511;
                                 }
-                                let _e540 = phi_800_;
-                                let _e542 = phi_801_;
-                                phi_802_ = _e542;
-                                phi_803_ = _e540;
+                                let _e533 = phi_941_;
+                                let _e535 = phi_942_;
+                                phi_943_ = _e535;
+                                phi_944_ = _e533;
                             } else {
-                                phi_802_ = _e516;
-                                phi_803_ = _e518;
+                                phi_943_ = _e509;
+                                phi_944_ = _e511;
                             }
-                            let _e544 = phi_802_;
-                            let _e546 = phi_803_;
-                            phi_765_ = _e544;
-                            phi_768_ = _e546;
-                            phi_770_ = (_e520 / 2u);
-                            phi_772_ = (_e522 + ((_e520 * _e520) * ((3u * _e526) ^ _e529)));
+                            let _e537 = phi_943_;
+                            let _e539 = phi_944_;
+                            phi_906_ = _e537;
+                            phi_909_ = _e539;
+                            phi_911_ = (_e513 / 2u);
+                            phi_913_ = (_e515 + ((_e513 * _e513) * ((3u * _e519) ^ _e522)));
                         } else {
-                            phi_765_ = u32();
-                            phi_768_ = u32();
-                            phi_770_ = u32();
-                            phi_772_ = u32();
+                            phi_906_ = u32();
+                            phi_909_ = u32();
+                            phi_911_ = u32();
+                            phi_913_ = u32();
                         }
-                        let _e549 = phi_765_;
-                        let _e551 = phi_768_;
-                        let _e553 = phi_770_;
-                        let _e555 = phi_772_;
+                        let _e542 = phi_906_;
+                        let _e544 = phi_909_;
+                        let _e546 = phi_911_;
+                        let _e548 = phi_913_;
                         continue;
                         continuing {
-                            phi_764_ = _e549;
-                            phi_767_ = _e551;
-                            phi_769_ = _e553;
-                            phi_771_ = _e555;
-                            break if !(_e523);
+                            phi_905_ = _e542;
+                            phi_908_ = _e544;
+                            phi_910_ = _e546;
+                            phi_912_ = _e548;
+                            break if !(_e516);
                         }
                     }
-                    let _e560 = local_1;
-                    let _e562 = f32((_e560 + (288u * (_e512 % 64u))));
-                    let _e564 = (0.5f + (_e562 * 0.7548777f));
-                    let _e568 = (0.5f + (_e562 * 0.5698403f));
-                    let _e575 = params.member.member_4.member.member_3;
-                    if (_e122 > 0f) {
-                        phi_826_ = (_e122 < _e575);
+                    let _e553 = local_1;
+                    let _e555 = f32((_e553 + (288u * (_e505 % 64u))));
+                    let _e557 = (0.5f + (_e555 * 0.7548777f));
+                    let _e561 = (0.5f + (_e555 * 0.5698403f));
+                    let _e568 = params.member.member_4.member.member_3;
+                    if (_e123 > 0f) {
+                        phi_967_ = (_e123 < _e568);
                     } else {
-                        phi_826_ = false;
+                        phi_967_ = false;
                     }
-                    let _e579 = phi_826_;
-                    if _e579 {
-                        let _e584 = params.member.member_4.member_8;
-                        let _e586 = select(1u, _e584, (1u < _e584));
-                        phi_2652_ = false;
-                        phi_849_ = 0u;
-                        phi_852_ = 0f;
-                        phi_854_ = 0f;
+                    let _e572 = phi_967_;
+                    if _e572 {
+                        let _e577 = params.member.member_4.member_8;
+                        let _e579 = select(1u, _e577, (1u < _e577));
+                        phi_2897_ = false;
+                        phi_990_ = 0u;
+                        phi_993_ = 0f;
+                        phi_995_ = 0f;
                         loop {
-                            let _e588 = phi_2652_;
-                            let _e590 = phi_849_;
-                            let _e592 = phi_852_;
-                            let _e594 = phi_854_;
-                            local_9 = _e592;
-                            local_10 = _e594;
-                            local_11 = _e592;
-                            let _e595 = (_e590 < _e586);
-                            if _e595 {
-                                let _e600 = ((3.1415927f * (f32(_e590) + (_e564 - floor(_e564)))) / f32(_e586));
-                                let _e601 = sin(_e600);
-                                let _e602 = cos(_e600);
-                                let _e608 = ((_e602 * _e419) + (_e601 * _e420));
-                                let _e612 = (_e602 - (_e419 * _e608));
-                                let _e613 = (_e601 - (_e420 * _e608));
-                                let _e614 = -((_e421 * _e608));
-                                let _e617 = ((_e613 * _e421) - (_e420 * _e614));
-                                let _e620 = ((_e614 * _e419) - (_e421 * _e612));
-                                let _e623 = ((_e612 * _e420) - (_e419 * _e613));
-                                let _e630 = (1f / sqrt((((_e617 * _e617) + (_e620 * _e620)) + (_e623 * _e623))));
-                                let _e631 = (_e617 * _e630);
-                                let _e632 = (_e620 * _e630);
-                                let _e633 = (_e623 * _e630);
-                                let _e641 = (((_e494.x * _e631) + (_e494.y * _e632)) + (_e494.z * _e633));
-                                let _e645 = (_e494.x - (_e631 * _e641));
-                                let _e646 = (_e494.y - (_e632 * _e641));
-                                let _e647 = (_e494.z - (_e633 * _e641));
-                                let _e653 = sqrt((((_e645 * _e645) + (_e646 * _e646)) + (_e647 * _e647)));
-                                let _e658 = (((_e612 * _e645) + (_e613 * _e646)) + (_e614 * _e647));
-                                if (_e658 > 0f) {
-                                    phi_971_ = 1f;
-                                } else {
-                                    phi_971_ = select(0f, -1f, (_e658 < 0f));
-                                }
-                                let _e663 = phi_971_;
-                                let _e669 = ((((_e645 * _e419) + (_e646 * _e420)) + (_e647 * _e421)) / _e653);
-                                if (_e669 > 0f) {
-                                    phi_991_ = select(1f, _e669, (_e669 < 1f));
-                                } else {
-                                    phi_991_ = 0f;
-                                }
-                                let _e674 = phi_991_;
-                                let _e676 = (_e663 * acos(_e674));
-                                let _e680 = params.member.member_4.member_9;
-                                let _e682 = select(1u, _e680, (1u < _e680));
-                                phi_1030_ = 0u;
-                                phi_1033_ = 0u;
+                            let _e581 = phi_2897_;
+                            let _e583 = phi_990_;
+                            let _e585 = phi_993_;
+                            let _e587 = phi_995_;
+                            local_9 = _e585;
+                            local_10 = _e587;
+                            local_11 = _e585;
+                            let _e588 = (_e583 < _e579);
+                            if _e588 {
+                                let _e593 = ((((_e557 - floor(_e557)) + f32(_e583)) * 3.1415927f) / f32(_e579));
+                                let _e594 = sin(_e593);
+                                let _e595 = cos(_e593);
+                                let _e601 = ((_e595 * _e412) + (_e594 * _e413));
+                                let _e605 = (_e595 - (_e412 * _e601));
+                                let _e606 = (_e594 - (_e413 * _e601));
+                                let _e607 = -((_e414 * _e601));
+                                let _e610 = ((_e606 * _e414) - (_e413 * _e607));
+                                let _e613 = ((_e607 * _e412) - (_e414 * _e605));
+                                let _e616 = ((_e605 * _e413) - (_e412 * _e606));
+                                let _e623 = (1f / sqrt((((_e610 * _e610) + (_e613 * _e613)) + (_e616 * _e616))));
+                                let _e624 = (_e610 * _e623);
+                                let _e625 = (_e613 * _e623);
+                                let _e626 = (_e616 * _e623);
+                                let _e634 = (((_e487.x * _e624) + (_e487.y * _e625)) + (_e487.z * _e626));
+                                let _e638 = (_e487.x - (_e624 * _e634));
+                                let _e639 = (_e487.y - (_e625 * _e634));
+                                let _e640 = (_e487.z - (_e626 * _e634));
+                                let _e646 = sqrt((((_e638 * _e638) + (_e639 * _e639)) + (_e640 * _e640)));
+                                let _e651 = (((_e605 * _e638) + (_e606 * _e639)) + (_e607 * _e640));
+                                let _e661 = ((((_e638 * _e412) + (_e639 * _e413)) + (_e640 * _e414)) / _e646);
+                                let _e665 = select(0f, select(1f, _e661, (_e661 < 1f)), (_e661 > 0f));
+                                let _e667 = (select(select(0f, -1f, (_e651 < 0f)), 1f, (_e651 > 0f)) * acos(_e665));
+                                let _e671 = params.member.member_4.member_9;
+                                let _e673 = select(1u, _e671, (1u < _e671));
+                                phi_1165_ = 0u;
+                                phi_1168_ = 0u;
                                 loop {
-                                    let _e684 = phi_1030_;
-                                    let _e686 = phi_1033_;
-                                    local_4 = _e686;
-                                    local_5 = _e686;
-                                    local_7 = _e686;
-                                    let _e687 = (_e684 < _e682);
-                                    if _e687 {
-                                        let _e692 = ((_e568 - floor(_e568)) + (f32((_e590 + (_e684 * _e682))) * 0.618034f));
-                                        let _e698 = ((f32(_e684) + (_e692 - floor(_e692))) / f32(_e682));
-                                        let _e702 = params.member.member_4.member_4;
-                                        if (_e702 == 2f) {
-                                            phi_1087_ = (_e698 * _e698);
+                                    let _e675 = phi_1165_;
+                                    let _e677 = phi_1168_;
+                                    local_4 = _e677;
+                                    local_5 = _e677;
+                                    local_7 = _e677;
+                                    let _e678 = (_e675 < _e673);
+                                    if _e678 {
+                                        let _e683 = ((_e561 - floor(_e561)) + (f32((_e583 + (_e675 * _e673))) * 0.618034f));
+                                        let _e689 = (((_e683 - floor(_e683)) + f32(_e675)) / f32(_e673));
+                                        let _e693 = params.member.member_4.member_4;
+                                        if (_e693 == 2f) {
+                                            phi_1222_ = (_e689 * _e689);
                                         } else {
-                                            phi_1087_ = pow(_e698, _e702);
+                                            phi_1222_ = pow(_e689, _e693);
                                         }
-                                        let _e707 = phi_1087_;
-                                        let _e708 = (_e707 + (1.3f / _e507));
-                                        let _e709 = ((_e602 * _e507) * _e708);
-                                        let _e710 = ((-(_e601) * _e507) * _e708);
-                                        let _e719 = params.member.member_4.member_7;
-                                        let _e720 = (log2(sqrt(((_e709 * _e709) + (_e710 * _e710)))) - _e719);
-                                        if (_e720 > 0f) {
-                                            phi_1111_ = select(5f, _e720, (_e720 < 5f));
-                                        } else {
-                                            phi_1111_ = 0f;
-                                        }
-                                        let _e725 = phi_1111_;
-                                        let _e728 = (-1f - floor((-0.5f - _e725)));
-                                        if (_e728 > 0f) {
-                                            let _e734 = select(select(u32(_e728), 0u, (_e728 < 0f)), 4294967295u, (_e728 > 4294967000f));
-                                            phi_1134_ = select(_e734, 4u, (4u < _e734));
-                                        } else {
-                                            phi_1134_ = 0u;
-                                        }
-                                        let _e738 = phi_1134_;
-                                        let _e740 = floor((_e709 + 0.5f));
-                                        if ((_e740 - _e709) == 0.5f) {
-                                            let _e746 = ((floor((_e740 * 0.5f)) * 2f) != _e740);
-                                            if _e746 {
-                                                phi_1150_ = (_e740 - 1f);
+                                        let _e698 = phi_1222_;
+                                        let _e699 = (_e698 + (1.3f / _e500));
+                                        let _e700 = ((_e595 * _e500) * _e699);
+                                        let _e701 = ((-(_e594) * _e500) * _e699);
+                                        let _e710 = params.member.member_4.member_7;
+                                        let _e711 = (log2(sqrt(((_e700 * _e700) + (_e701 * _e701)))) - _e710);
+                                        let _e718 = (-1f - floor((-0.5f - select(0f, select(5f, _e711, (_e711 < 5f)), (_e711 > 0f)))));
+                                        let _e720 = floor((_e700 + 0.5f));
+                                        if ((_e720 - _e700) == 0.5f) {
+                                            let _e726 = ((floor((_e720 * 0.5f)) * 2f) != _e720);
+                                            if _e726 {
+                                                phi_1267_ = (_e720 - 1f);
                                             } else {
-                                                phi_1150_ = f32();
+                                                phi_1267_ = f32();
                                             }
-                                            let _e749 = phi_1150_;
-                                            phi_1152_ = _e749;
-                                            phi_1153_ = select(true, false, _e746);
+                                            let _e729 = phi_1267_;
+                                            phi_1269_ = _e729;
+                                            phi_1270_ = select(true, false, _e726);
                                         } else {
-                                            phi_1152_ = f32();
-                                            phi_1153_ = true;
+                                            phi_1269_ = f32();
+                                            phi_1270_ = true;
                                         }
-                                        let _e752 = phi_1152_;
-                                        let _e754 = phi_1153_;
-                                        let _e757 = floor((_e710 + 0.5f));
-                                        if ((_e757 - _e710) == 0.5f) {
-                                            let _e763 = ((floor((_e757 * 0.5f)) * 2f) != _e757);
-                                            if _e763 {
-                                                phi_1173_ = (_e757 - 1f);
+                                        let _e732 = phi_1269_;
+                                        let _e734 = phi_1270_;
+                                        let _e736 = (select(_e732, _e720, _e734) / _e97);
+                                        let _e738 = floor((_e701 + 0.5f));
+                                        if ((_e738 - _e701) == 0.5f) {
+                                            let _e744 = ((floor((_e738 * 0.5f)) * 2f) != _e738);
+                                            if _e744 {
+                                                phi_1293_ = (_e738 - 1f);
                                             } else {
-                                                phi_1173_ = f32();
+                                                phi_1293_ = f32();
                                             }
-                                            let _e766 = phi_1173_;
-                                            phi_1175_ = _e766;
-                                            phi_1176_ = select(true, false, _e763);
+                                            let _e747 = phi_1293_;
+                                            phi_1295_ = _e747;
+                                            phi_1296_ = select(true, false, _e744);
                                         } else {
-                                            phi_1175_ = f32();
-                                            phi_1176_ = true;
+                                            phi_1295_ = f32();
+                                            phi_1296_ = true;
                                         }
-                                        let _e769 = phi_1175_;
-                                        let _e771 = phi_1176_;
-                                        let _e773 = (select(_e752, _e740, _e754) / _e96);
-                                        let _e774 = (select(_e769, _e757, _e771) / _e107);
-                                        let _e775 = (_e386 + _e773);
-                                        let _e776 = (_e387 + _e774);
-                                        let _e777 = (_e386 - _e773);
-                                        let _e778 = (_e387 - _e774);
-                                        let _e779 = (_e738 & 31u);
-                                        let _e781 = (_e101 >> bitcast<u32>(_e779));
-                                        let _e783 = select(1u, _e781, (1u < _e781));
-                                        let _e785 = (_e112 >> bitcast<u32>(_e779));
-                                        let _e787 = select(1u, _e785, (1u < _e785));
-                                        let _e788 = f32(_e783);
-                                        let _e789 = (_e775 * _e788);
-                                        if (_e789 > 0f) {
-                                            let _e795 = select(select(u32(_e789), 0u, (_e789 < 0f)), 4294967295u, (_e789 > 4294967000f));
-                                            let _e796 = (_e783 - 1u);
-                                            phi_1228_ = select(_e795, _e796, (_e796 < _e795));
+                                        let _e750 = phi_1295_;
+                                        let _e752 = phi_1296_;
+                                        let _e754 = (select(_e750, _e738, _e752) / _e108);
+                                        let _e755 = (_e379 + _e736);
+                                        let _e756 = (_e380 + _e754);
+                                        let _e757 = (_e379 - _e736);
+                                        let _e758 = (_e380 - _e754);
+                                        let _e759 = (_e718 > 0f);
+                                        if _e759 {
+                                            let _e764 = select(select(u32(_e718), 0u, (_e718 < 0f)), 4294967295u, (_e718 > 4294967000f));
+                                            phi_2492_ = select(_e764, 4u, (4u < _e764));
                                         } else {
-                                            phi_1228_ = 0u;
+                                            phi_2492_ = 0u;
                                         }
-                                        let _e800 = phi_1228_;
-                                        let _e801 = f32(_e787);
-                                        let _e802 = (_e776 * _e801);
-                                        if (_e802 > 0f) {
-                                            let _e808 = select(select(u32(_e802), 0u, (_e802 < 0f)), 4294967295u, (_e802 > 4294967000f));
-                                            let _e809 = (_e787 - 1u);
-                                            phi_1248_ = select(_e808, _e809, (_e809 < _e808));
+                                        let _e768 = phi_2492_;
+                                        let _e769 = (_e768 & 31u);
+                                        let _e771 = (_e102 >> bitcast<u32>(_e769));
+                                        let _e773 = select(1u, _e771, (1u < _e771));
+                                        let _e775 = (_e113 >> bitcast<u32>(_e769));
+                                        let _e777 = select(1u, _e775, (1u < _e775));
+                                        let _e779 = (_e755 * f32(_e773));
+                                        if (_e779 > 0f) {
+                                            let _e785 = select(select(u32(_e779), 0u, (_e779 < 0f)), 4294967295u, (_e779 > 4294967000f));
+                                            let _e786 = (_e773 - 1u);
+                                            phi_2540_ = select(_e785, _e786, (_e786 < _e785));
                                         } else {
-                                            phi_1248_ = 0u;
+                                            phi_2540_ = 0u;
                                         }
-                                        let _e813 = phi_1248_;
-                                        phi_1250_ = 0u;
-                                        phi_1253_ = 0u;
+                                        let _e790 = phi_2540_;
+                                        let _e792 = (_e756 * f32(_e777));
+                                        if (_e792 > 0f) {
+                                            let _e798 = select(select(u32(_e792), 0u, (_e792 < 0f)), 4294967295u, (_e792 > 4294967000f));
+                                            let _e799 = (_e777 - 1u);
+                                            phi_2560_ = select(_e798, _e799, (_e799 < _e798));
+                                        } else {
+                                            phi_2560_ = 0u;
+                                        }
+                                        let _e803 = phi_2560_;
+                                        phi_2562_ = 0u;
+                                        phi_2563_ = 0u;
                                         loop {
-                                            let _e815 = phi_1250_;
-                                            let _e817 = phi_1253_;
-                                            local_2 = _e817;
-                                            let _e818 = (_e815 < _e738);
-                                            if _e818 {
-                                                let _e819 = (_e815 & 31u);
-                                                let _e821 = (_e101 >> bitcast<u32>(_e819));
-                                                let _e825 = (_e112 >> bitcast<u32>(_e819));
-                                                phi_1251_ = (_e815 + 1u);
-                                                phi_1254_ = (_e817 + (select(1u, _e821, (1u < _e821)) * select(1u, _e825, (1u < _e825))));
+                                            let _e805 = phi_2562_;
+                                            let _e807 = phi_2563_;
+                                            local_2 = _e807;
+                                            let _e808 = (_e805 < _e768);
+                                            if _e808 {
+                                                let _e809 = (_e805 & 31u);
+                                                let _e811 = (_e102 >> bitcast<u32>(_e809));
+                                                let _e815 = (_e113 >> bitcast<u32>(_e809));
+                                                phi_2586_ = (_e805 + 1u);
+                                                phi_2587_ = (_e807 + (select(1u, _e811, (1u < _e811)) * select(1u, _e815, (1u < _e815))));
                                             } else {
-                                                phi_1251_ = u32();
-                                                phi_1254_ = u32();
+                                                phi_2586_ = u32();
+                                                phi_2587_ = u32();
                                             }
-                                            let _e832 = phi_1251_;
-                                            let _e834 = phi_1254_;
+                                            let _e822 = phi_2586_;
+                                            let _e824 = phi_2587_;
                                             continue;
                                             continuing {
-                                                phi_1250_ = _e832;
-                                                phi_1253_ = _e834;
-                                                break if !(_e818);
+                                                phi_2562_ = _e822;
+                                                phi_2563_ = _e824;
+                                                break if !(_e808);
                                             }
                                         }
-                                        let _e839 = local_2;
-                                        let _e840 = (_e839 + ((_e813 * _e783) + _e800));
-                                        if (_e840 < _e84) {
+                                        let _e829 = local_2;
+                                        let _e830 = (_e829 + ((_e803 * _e773) + _e790));
+                                        if (_e830 < _e85) {
                                         } else {
-                                            phi_2603_ = true;
+                                            phi_2845_ = true;
                                             break;
                                         }
-                                        let _e844 = mips.member[_e840];
-                                        let _e853 = (_e777 * _e788);
-                                        if (_e853 > 0f) {
-                                            let _e859 = select(select(u32(_e853), 0u, (_e853 < 0f)), 4294967295u, (_e853 > 4294967000f));
-                                            let _e860 = (_e783 - 1u);
-                                            phi_1336_ = select(_e859, _e860, (_e860 < _e859));
+                                        let _e834 = mips.member[_e830];
+                                        if _e759 {
+                                            let _e847 = select(select(u32(_e718), 0u, (_e718 < 0f)), 4294967295u, (_e718 > 4294967000f));
+                                            phi_2614_ = select(_e847, 4u, (4u < _e847));
                                         } else {
-                                            phi_1336_ = 0u;
+                                            phi_2614_ = 0u;
                                         }
-                                        let _e864 = phi_1336_;
-                                        let _e865 = (_e778 * _e801);
-                                        if (_e865 > 0f) {
-                                            let _e871 = select(select(u32(_e865), 0u, (_e865 < 0f)), 4294967295u, (_e865 > 4294967000f));
-                                            let _e872 = (_e787 - 1u);
-                                            phi_1356_ = select(_e871, _e872, (_e872 < _e871));
+                                        let _e851 = phi_2614_;
+                                        let _e852 = (_e851 & 31u);
+                                        let _e854 = (_e102 >> bitcast<u32>(_e852));
+                                        let _e856 = select(1u, _e854, (1u < _e854));
+                                        let _e858 = (_e113 >> bitcast<u32>(_e852));
+                                        let _e860 = select(1u, _e858, (1u < _e858));
+                                        let _e862 = (_e757 * f32(_e856));
+                                        if (_e862 > 0f) {
+                                            let _e868 = select(select(u32(_e862), 0u, (_e862 < 0f)), 4294967295u, (_e862 > 4294967000f));
+                                            let _e869 = (_e856 - 1u);
+                                            phi_2662_ = select(_e868, _e869, (_e869 < _e868));
                                         } else {
-                                            phi_1356_ = 0u;
+                                            phi_2662_ = 0u;
                                         }
-                                        let _e876 = phi_1356_;
-                                        phi_1358_ = 0u;
-                                        phi_1361_ = 0u;
+                                        let _e873 = phi_2662_;
+                                        let _e875 = (_e758 * f32(_e860));
+                                        if (_e875 > 0f) {
+                                            let _e881 = select(select(u32(_e875), 0u, (_e875 < 0f)), 4294967295u, (_e875 > 4294967000f));
+                                            let _e882 = (_e860 - 1u);
+                                            phi_2682_ = select(_e881, _e882, (_e882 < _e881));
+                                        } else {
+                                            phi_2682_ = 0u;
+                                        }
+                                        let _e886 = phi_2682_;
+                                        phi_2684_ = 0u;
+                                        phi_2685_ = 0u;
                                         loop {
-                                            let _e878 = phi_1358_;
-                                            let _e880 = phi_1361_;
-                                            local_3 = _e880;
-                                            let _e881 = (_e878 < _e738);
-                                            if _e881 {
-                                                let _e882 = (_e878 & 31u);
-                                                let _e884 = (_e101 >> bitcast<u32>(_e882));
-                                                let _e888 = (_e112 >> bitcast<u32>(_e882));
-                                                phi_1359_ = (_e878 + 1u);
-                                                phi_1362_ = (_e880 + (select(1u, _e884, (1u < _e884)) * select(1u, _e888, (1u < _e888))));
+                                            let _e888 = phi_2684_;
+                                            let _e890 = phi_2685_;
+                                            local_3 = _e890;
+                                            let _e891 = (_e888 < _e851);
+                                            if _e891 {
+                                                let _e892 = (_e888 & 31u);
+                                                let _e894 = (_e102 >> bitcast<u32>(_e892));
+                                                let _e898 = (_e113 >> bitcast<u32>(_e892));
+                                                phi_2708_ = (_e888 + 1u);
+                                                phi_2709_ = (_e890 + (select(1u, _e894, (1u < _e894)) * select(1u, _e898, (1u < _e898))));
                                             } else {
-                                                phi_1359_ = u32();
-                                                phi_1362_ = u32();
+                                                phi_2708_ = u32();
+                                                phi_2709_ = u32();
                                             }
-                                            let _e895 = phi_1359_;
-                                            let _e897 = phi_1362_;
+                                            let _e905 = phi_2708_;
+                                            let _e907 = phi_2709_;
                                             continue;
                                             continuing {
-                                                phi_1358_ = _e895;
-                                                phi_1361_ = _e897;
-                                                break if !(_e881);
+                                                phi_2684_ = _e905;
+                                                phi_2685_ = _e907;
+                                                break if !(_e891);
                                             }
                                         }
-                                        let _e902 = local_3;
-                                        let _e903 = (_e902 + ((_e876 * _e783) + _e864));
-                                        if (_e903 < _e84) {
+                                        let _e912 = local_3;
+                                        let _e913 = (_e912 + ((_e886 * _e856) + _e873));
+                                        if (_e913 < _e85) {
                                         } else {
-                                            phi_2603_ = true;
+                                            phi_2845_ = true;
                                             break;
                                         }
-                                        let _e907 = mips.member[_e903];
-                                        let _e916 = (((((2f * _e775) - 1f) * _e396) * _e844) - _e398);
-                                        let _e917 = ((((1f - (2f * _e776)) * _e406) * _e844) - _e408);
-                                        let _e918 = (_e844 - _e388);
-                                        let _e921 = params.member.member_1;
-                                        let _e922 = (_e921 > 0f);
-                                        if _e922 {
-                                            phi_1437_ = select(true, false, (sqrt((((_e916 * _e916) + (_e917 * _e917)) + (_e918 * _e918))) > _e921));
-                                        } else {
-                                            phi_1437_ = true;
-                                        }
-                                        let _e932 = phi_1437_;
+                                        let _e917 = mips.member[_e913];
+                                        let _e926 = (((((_e755 * 2f) - 1f) * _e389) * _e834) - _e391);
+                                        let _e927 = (((((_e756 * -2f) + 1f) * _e399) * _e834) - _e401);
+                                        let _e928 = (_e834 - _e381);
+                                        let _e931 = params.member.member_1;
+                                        let _e932 = (_e931 > 0f);
                                         if _e932 {
-                                            let _e935 = params.member.member;
-                                            let _e938 = params.member.member_3;
-                                            let _e943 = (((_e916 * _e419) + (_e917 * _e420)) + (_e918 * _e421));
-                                            let _e947 = (_e916 - (_e419 * _e943));
-                                            let _e948 = (_e917 - (_e420 * _e943));
-                                            let _e949 = (_e918 - (_e421 * _e943));
-                                            if (sqrt((((_e947 * _e947) + (_e948 * _e948)) + (_e949 * _e949))) <= 0f) {
-                                                phi_1742_ = 0u;
+                                            phi_1404_ = select(true, false, (sqrt((((_e926 * _e926) + (_e927 * _e927)) + (_e928 * _e928))) > _e931));
+                                        } else {
+                                            phi_1404_ = true;
+                                        }
+                                        let _e942 = phi_1404_;
+                                        if _e942 {
+                                            let _e945 = params.member.member;
+                                            let _e948 = params.member.member_3;
+                                            let _e953 = (((_e926 * _e412) + (_e927 * _e413)) + (_e928 * _e414));
+                                            let _e957 = (_e926 - (_e412 * _e953));
+                                            let _e958 = (_e927 - (_e413 * _e953));
+                                            let _e959 = (_e928 - (_e414 * _e953));
+                                            if (sqrt((((_e957 * _e957) + (_e958 * _e958)) + (_e959 * _e959))) <= 0f) {
+                                                phi_1709_ = 0u;
                                             } else {
-                                                let _e959 = ((_e948 * _e421) - (_e420 * _e949));
-                                                let _e962 = ((_e949 * _e419) - (_e421 * _e947));
-                                                let _e965 = ((_e947 * _e420) - (_e419 * _e948));
-                                                let _e972 = (1f / sqrt((((_e959 * _e959) + (_e962 * _e962)) + (_e965 * _e965))));
-                                                let _e973 = (_e959 * _e972);
-                                                let _e974 = (_e962 * _e972);
-                                                let _e975 = (_e965 * _e972);
-                                                let _e980 = (((_e494.x * _e973) + (_e494.y * _e974)) + (_e494.z * _e975));
-                                                let _e984 = (_e494.x - (_e973 * _e980));
-                                                let _e985 = (_e494.y - (_e974 * _e980));
-                                                let _e986 = (_e494.z - (_e975 * _e980));
-                                                let _e992 = sqrt((((_e984 * _e984) + (_e985 * _e985)) + (_e986 * _e986)));
-                                                let _e998 = ((((_e984 * _e419) + (_e985 * _e420)) + (_e986 * _e421)) / _e992);
-                                                if (_e998 > 0f) {
-                                                    phi_1540_ = select(1f, _e998, (_e998 < 1f));
+                                                let _e969 = ((_e958 * _e414) - (_e413 * _e959));
+                                                let _e972 = ((_e959 * _e412) - (_e414 * _e957));
+                                                let _e975 = ((_e957 * _e413) - (_e412 * _e958));
+                                                let _e982 = (1f / sqrt((((_e969 * _e969) + (_e972 * _e972)) + (_e975 * _e975))));
+                                                let _e983 = (_e969 * _e982);
+                                                let _e984 = (_e972 * _e982);
+                                                let _e985 = (_e975 * _e982);
+                                                let _e990 = (((_e487.x * _e983) + (_e487.y * _e984)) + (_e487.z * _e985));
+                                                let _e994 = (_e487.x - (_e983 * _e990));
+                                                let _e995 = (_e487.y - (_e984 * _e990));
+                                                let _e996 = (_e487.z - (_e985 * _e990));
+                                                let _e1002 = sqrt((((_e994 * _e994) + (_e995 * _e995)) + (_e996 * _e996)));
+                                                let _e1008 = ((((_e994 * _e412) + (_e995 * _e413)) + (_e996 * _e414)) / _e1002);
+                                                let _e1012 = select(0f, select(1f, _e1008, (_e1008 < 1f)), (_e1008 > 0f));
+                                                if ((((_e957 * _e994) + (_e958 * _e995)) + (_e959 * _e996)) < 0f) {
+                                                    phi_1520_ = -(acos(_e1012));
                                                 } else {
-                                                    phi_1540_ = 0f;
+                                                    phi_1520_ = acos(_e1012);
                                                 }
-                                                let _e1003 = phi_1540_;
-                                                if ((((_e947 * _e984) + (_e948 * _e985)) + (_e949 * _e986)) < 0f) {
-                                                    phi_1553_ = -(acos(_e1003));
+                                                let _e1023 = phi_1520_;
+                                                let _e1024 = (0.02f / _e1002);
+                                                if (_e1024 != _e1024) {
+                                                    phi_2725_ = true;
                                                 } else {
-                                                    phi_1553_ = acos(_e1003);
+                                                    phi_2725_ = (0.19634955f <= _e1024);
                                                 }
-                                                let _e1014 = phi_1553_;
-                                                let _e1015 = (0.02f / _e992);
-                                                if (_e1015 != _e1015) {
-                                                    phi_2508_ = true;
+                                                let _e1028 = phi_2725_;
+                                                let _e1029 = select(_e1024, 0.19634955f, _e1028);
+                                                let _e1033 = (_e926 - (_e412 * _e945));
+                                                let _e1034 = (_e927 - (_e413 * _e945));
+                                                let _e1035 = (_e928 - (_e414 * _e945));
+                                                let _e1042 = (1f / sqrt((((_e926 * _e926) + (_e927 * _e927)) + (_e928 * _e928))));
+                                                let _e1050 = ((((_e926 * _e1042) * _e412) + ((_e927 * _e1042) * _e413)) + ((_e928 * _e1042) * _e414));
+                                                let _e1059 = ((((acos(select(-1f, select(1f, _e1050, (_e1050 < 1f)), (_e1050 > -1f))) + _e1029) - _e1023) + 1.5707964f) * 0.31830987f);
+                                                let _e1063 = select(0f, select(1f, _e1059, (_e1059 < 1f)), (_e1059 > 0f));
+                                                let _e1070 = (1f / sqrt((((_e1033 * _e1033) + (_e1034 * _e1034)) + (_e1035 * _e1035))));
+                                                let _e1078 = ((((_e1033 * _e1070) * _e412) + ((_e1034 * _e1070) * _e413)) + ((_e1035 * _e1070) * _e414));
+                                                let _e1087 = ((((acos(select(-1f, select(1f, _e1078, (_e1078 < 1f)), (_e1078 > -1f))) + _e1029) - _e1023) + 1.5707964f) * 0.31830987f);
+                                                let _e1091 = select(0f, select(1f, _e1087, (_e1087 < 1f)), (_e1087 > 0f));
+                                                let _e1092 = (_e1063 != _e1063);
+                                                if _e1092 {
+                                                    phi_2740_ = true;
                                                 } else {
-                                                    phi_2508_ = (0.19634955f <= _e1015);
+                                                    phi_2740_ = (_e1091 <= _e1063);
                                                 }
-                                                let _e1019 = phi_2508_;
-                                                let _e1020 = select(_e1015, 0.19634955f, _e1019);
-                                                let _e1024 = (_e916 - (_e419 * _e935));
-                                                let _e1025 = (_e917 - (_e420 * _e935));
-                                                let _e1026 = (_e918 - (_e421 * _e935));
-                                                let _e1033 = (1f / sqrt((((_e916 * _e916) + (_e917 * _e917)) + (_e918 * _e918))));
-                                                let _e1041 = ((((_e916 * _e1033) * _e419) + ((_e917 * _e1033) * _e420)) + ((_e918 * _e1033) * _e421));
-                                                if (_e1041 > -1f) {
-                                                    phi_1592_ = select(1f, _e1041, (_e1041 < 1f));
+                                                let _e1095 = phi_2740_;
+                                                let _e1096 = select(_e1063, _e1091, _e1095);
+                                                if _e1092 {
+                                                    phi_2755_ = true;
                                                 } else {
-                                                    phi_1592_ = -1f;
+                                                    phi_2755_ = (_e1091 >= _e1063);
                                                 }
-                                                let _e1046 = phi_1592_;
-                                                let _e1051 = ((((acos(_e1046) + _e1020) - _e1014) + 1.5707964f) * 0.31830987f);
-                                                if (_e1051 > 0f) {
-                                                    phi_1607_ = select(1f, _e1051, (_e1051 < 1f));
-                                                } else {
-                                                    phi_1607_ = 0f;
-                                                }
-                                                let _e1056 = phi_1607_;
-                                                let _e1063 = (1f / sqrt((((_e1024 * _e1024) + (_e1025 * _e1025)) + (_e1026 * _e1026))));
-                                                let _e1071 = ((((_e1024 * _e1063) * _e419) + ((_e1025 * _e1063) * _e420)) + ((_e1026 * _e1063) * _e421));
-                                                if (_e1071 > -1f) {
-                                                    phi_1635_ = select(1f, _e1071, (_e1071 < 1f));
-                                                } else {
-                                                    phi_1635_ = -1f;
-                                                }
-                                                let _e1076 = phi_1635_;
-                                                let _e1081 = ((((acos(_e1076) + _e1020) - _e1014) + 1.5707964f) * 0.31830987f);
-                                                if (_e1081 > 0f) {
-                                                    phi_1650_ = select(1f, _e1081, (_e1081 < 1f));
-                                                } else {
-                                                    phi_1650_ = 0f;
-                                                }
-                                                let _e1086 = phi_1650_;
-                                                let _e1087 = (_e1056 != _e1056);
-                                                if _e1087 {
-                                                    phi_2523_ = true;
-                                                } else {
-                                                    phi_2523_ = (_e1086 <= _e1056);
-                                                }
-                                                let _e1090 = phi_2523_;
-                                                let _e1091 = select(_e1056, _e1086, _e1090);
-                                                if _e1087 {
-                                                    phi_2538_ = true;
-                                                } else {
-                                                    phi_2538_ = (_e1086 >= _e1056);
-                                                }
-                                                let _e1094 = phi_2538_;
-                                                let _e1095 = select(_e1056, _e1086, _e1094);
-                                                let _e1097 = floor((32f * _e1091));
-                                                let _e1102 = select(select(u32(_e1097), 0u, (_e1097 < 0f)), 4294967295u, (_e1097 > 4294967000f));
-                                                if (_e938 == 1u) {
-                                                    let _e1112 = (_e1095 <= _e1091);
-                                                    if _e1112 {
-                                                        phi_1699_ = u32();
+                                                let _e1099 = phi_2755_;
+                                                let _e1100 = select(_e1063, _e1091, _e1099);
+                                                let _e1102 = floor((32f * _e1096));
+                                                let _e1107 = select(select(u32(_e1102), 0u, (_e1102 < 0f)), 4294967295u, (_e1102 > 4294967000f));
+                                                if (_e948 == 1u) {
+                                                    let _e1117 = (_e1100 <= _e1096);
+                                                    if _e1117 {
+                                                        phi_1666_ = u32();
                                                     } else {
-                                                        let _e1114 = ceil((32f * _e1095));
-                                                        let _e1119 = select(select(u32(_e1114), 0u, (_e1114 < 0f)), 4294967295u, (_e1114 > 4294967000f));
-                                                        let _e1121 = select(_e1119, 32u, (32u < _e1119));
-                                                        if (_e1121 > _e1102) {
-                                                            phi_1698_ = (_e1121 - _e1102);
+                                                        let _e1119 = ceil((32f * _e1100));
+                                                        let _e1124 = select(select(u32(_e1119), 0u, (_e1119 < 0f)), 4294967295u, (_e1119 > 4294967000f));
+                                                        let _e1126 = select(_e1124, 32u, (32u < _e1124));
+                                                        if (_e1126 > _e1107) {
+                                                            phi_1665_ = (_e1126 - _e1107);
                                                         } else {
-                                                            phi_1698_ = 0u;
+                                                            phi_1665_ = 0u;
                                                         }
-                                                        let _e1125 = phi_1698_;
-                                                        phi_1699_ = _e1125;
+                                                        let _e1130 = phi_1665_;
+                                                        phi_1666_ = _e1130;
                                                     }
-                                                    let _e1127 = phi_1699_;
-                                                    phi_1711_ = _e1127;
-                                                    phi_1712_ = select(true, false, _e1112);
+                                                    let _e1132 = phi_1666_;
+                                                    phi_1678_ = _e1132;
+                                                    phi_1679_ = select(true, false, _e1117);
                                                 } else {
-                                                    let _e1106 = ceil((32f * (_e1095 - _e1091)));
-                                                    phi_1711_ = select(select(u32(_e1106), 0u, (_e1106 < 0f)), 4294967295u, (_e1106 > 4294967000f));
-                                                    phi_1712_ = true;
+                                                    let _e1111 = ceil((32f * (_e1100 - _e1096)));
+                                                    phi_1678_ = select(select(u32(_e1111), 0u, (_e1111 < 0f)), 4294967295u, (_e1111 > 4294967000f));
+                                                    phi_1679_ = true;
                                                 }
-                                                let _e1130 = phi_1711_;
-                                                let _e1132 = phi_1712_;
-                                                if _e1132 {
-                                                    if (_e1102 >= 32u) {
-                                                        phi_1735_ = u32();
-                                                        phi_1736_ = true;
+                                                let _e1135 = phi_1678_;
+                                                let _e1137 = phi_1679_;
+                                                if _e1137 {
+                                                    if (_e1107 >= 32u) {
+                                                        phi_1702_ = u32();
+                                                        phi_1703_ = true;
                                                     } else {
-                                                        let _e1134 = (_e1130 == 0u);
-                                                        if _e1134 {
-                                                            phi_1734_ = u32();
+                                                        let _e1139 = (_e1135 == 0u);
+                                                        if _e1139 {
+                                                            phi_1701_ = u32();
                                                         } else {
-                                                            if (_e1130 >= 32u) {
-                                                                phi_1731_ = 4294967295u;
+                                                            if (_e1135 >= 32u) {
+                                                                phi_1698_ = 4294967295u;
                                                             } else {
-                                                                phi_1731_ = ((1u << bitcast<u32>((_e1130 & 31u))) - 1u);
+                                                                phi_1698_ = ((1u << bitcast<u32>((_e1135 & 31u))) - 1u);
                                                             }
-                                                            let _e1141 = phi_1731_;
-                                                            phi_1734_ = (_e1141 << bitcast<u32>((_e1102 & 31u)));
+                                                            let _e1146 = phi_1698_;
+                                                            phi_1701_ = (_e1146 << bitcast<u32>((_e1107 & 31u)));
                                                         }
-                                                        let _e1146 = phi_1734_;
-                                                        phi_1735_ = _e1146;
-                                                        phi_1736_ = _e1134;
+                                                        let _e1151 = phi_1701_;
+                                                        phi_1702_ = _e1151;
+                                                        phi_1703_ = _e1139;
                                                     }
-                                                    let _e1148 = phi_1735_;
-                                                    let _e1150 = phi_1736_;
-                                                    phi_1741_ = select(_e1148, 0u, _e1150);
+                                                    let _e1153 = phi_1702_;
+                                                    let _e1155 = phi_1703_;
+                                                    phi_1708_ = select(_e1153, 0u, _e1155);
                                                 } else {
-                                                    phi_1741_ = 0u;
+                                                    phi_1708_ = 0u;
                                                 }
-                                                let _e1153 = phi_1741_;
-                                                phi_1742_ = _e1153;
+                                                let _e1158 = phi_1708_;
+                                                phi_1709_ = _e1158;
                                             }
-                                            let _e1155 = phi_1742_;
-                                            phi_1743_ = _e1155;
+                                            let _e1160 = phi_1709_;
+                                            phi_1710_ = _e1160;
                                         } else {
-                                            phi_1743_ = 0u;
+                                            phi_1710_ = 0u;
                                         }
-                                        let _e1157 = phi_1743_;
-                                        let _e1159 = (((((2f * _e777) - 1f) * _e396) * _e907) - _e398);
-                                        let _e1160 = ((((1f - (2f * _e778)) * _e406) * _e907) - _e408);
-                                        let _e1161 = (_e907 - _e388);
-                                        if _e922 {
-                                            phi_1771_ = select(true, false, (sqrt((((_e1159 * _e1159) + (_e1160 * _e1160)) + (_e1161 * _e1161))) > _e921));
+                                        let _e1162 = phi_1710_;
+                                        let _e1164 = (((((_e757 * 2f) - 1f) * _e389) * _e917) - _e391);
+                                        let _e1165 = (((((_e758 * -2f) + 1f) * _e399) * _e917) - _e401);
+                                        let _e1166 = (_e917 - _e381);
+                                        if _e932 {
+                                            phi_1738_ = select(true, false, (sqrt((((_e1164 * _e1164) + (_e1165 * _e1165)) + (_e1166 * _e1166))) > _e931));
                                         } else {
-                                            phi_1771_ = true;
+                                            phi_1738_ = true;
                                         }
-                                        let _e1171 = phi_1771_;
-                                        if _e1171 {
-                                            let _e1174 = params.member.member;
-                                            let _e1177 = params.member.member_3;
-                                            let _e1182 = (((_e1159 * _e419) + (_e1160 * _e420)) + (_e1161 * _e421));
-                                            let _e1186 = (_e1159 - (_e419 * _e1182));
-                                            let _e1187 = (_e1160 - (_e420 * _e1182));
-                                            let _e1188 = (_e1161 - (_e421 * _e1182));
-                                            if (sqrt((((_e1186 * _e1186) + (_e1187 * _e1187)) + (_e1188 * _e1188))) <= 0f) {
-                                                phi_2076_ = 0u;
+                                        let _e1176 = phi_1738_;
+                                        if _e1176 {
+                                            let _e1179 = params.member.member;
+                                            let _e1182 = params.member.member_3;
+                                            let _e1187 = (((_e1164 * _e412) + (_e1165 * _e413)) + (_e1166 * _e414));
+                                            let _e1191 = (_e1164 - (_e412 * _e1187));
+                                            let _e1192 = (_e1165 - (_e413 * _e1187));
+                                            let _e1193 = (_e1166 - (_e414 * _e1187));
+                                            if (sqrt((((_e1191 * _e1191) + (_e1192 * _e1192)) + (_e1193 * _e1193))) <= 0f) {
+                                                phi_2043_ = 0u;
                                             } else {
-                                                let _e1198 = ((_e1187 * _e421) - (_e420 * _e1188));
-                                                let _e1201 = ((_e1188 * _e419) - (_e421 * _e1186));
-                                                let _e1204 = ((_e1186 * _e420) - (_e419 * _e1187));
-                                                let _e1211 = (1f / sqrt((((_e1198 * _e1198) + (_e1201 * _e1201)) + (_e1204 * _e1204))));
-                                                let _e1212 = (_e1198 * _e1211);
-                                                let _e1213 = (_e1201 * _e1211);
-                                                let _e1214 = (_e1204 * _e1211);
-                                                let _e1219 = (((_e494.x * _e1212) + (_e494.y * _e1213)) + (_e494.z * _e1214));
-                                                let _e1223 = (_e494.x - (_e1212 * _e1219));
-                                                let _e1224 = (_e494.y - (_e1213 * _e1219));
-                                                let _e1225 = (_e494.z - (_e1214 * _e1219));
-                                                let _e1231 = sqrt((((_e1223 * _e1223) + (_e1224 * _e1224)) + (_e1225 * _e1225)));
-                                                let _e1237 = ((((_e1223 * _e419) + (_e1224 * _e420)) + (_e1225 * _e421)) / _e1231);
-                                                if (_e1237 > 0f) {
-                                                    phi_1874_ = select(1f, _e1237, (_e1237 < 1f));
+                                                let _e1203 = ((_e1192 * _e414) - (_e413 * _e1193));
+                                                let _e1206 = ((_e1193 * _e412) - (_e414 * _e1191));
+                                                let _e1209 = ((_e1191 * _e413) - (_e412 * _e1192));
+                                                let _e1216 = (1f / sqrt((((_e1203 * _e1203) + (_e1206 * _e1206)) + (_e1209 * _e1209))));
+                                                let _e1217 = (_e1203 * _e1216);
+                                                let _e1218 = (_e1206 * _e1216);
+                                                let _e1219 = (_e1209 * _e1216);
+                                                let _e1224 = (((_e487.x * _e1217) + (_e487.y * _e1218)) + (_e487.z * _e1219));
+                                                let _e1228 = (_e487.x - (_e1217 * _e1224));
+                                                let _e1229 = (_e487.y - (_e1218 * _e1224));
+                                                let _e1230 = (_e487.z - (_e1219 * _e1224));
+                                                let _e1236 = sqrt((((_e1228 * _e1228) + (_e1229 * _e1229)) + (_e1230 * _e1230)));
+                                                let _e1242 = ((((_e1228 * _e412) + (_e1229 * _e413)) + (_e1230 * _e414)) / _e1236);
+                                                let _e1246 = select(0f, select(1f, _e1242, (_e1242 < 1f)), (_e1242 > 0f));
+                                                if ((((_e1191 * _e1228) + (_e1192 * _e1229)) + (_e1193 * _e1230)) < 0f) {
+                                                    phi_1854_ = -(acos(_e1246));
                                                 } else {
-                                                    phi_1874_ = 0f;
+                                                    phi_1854_ = acos(_e1246);
                                                 }
-                                                let _e1242 = phi_1874_;
-                                                if ((((_e1186 * _e1223) + (_e1187 * _e1224)) + (_e1188 * _e1225)) < 0f) {
-                                                    phi_1887_ = -(acos(_e1242));
+                                                let _e1257 = phi_1854_;
+                                                let _e1258 = (0.02f / _e1236);
+                                                if (_e1258 != _e1258) {
+                                                    phi_2770_ = true;
                                                 } else {
-                                                    phi_1887_ = acos(_e1242);
+                                                    phi_2770_ = (0.19634955f <= _e1258);
                                                 }
-                                                let _e1253 = phi_1887_;
-                                                let _e1254 = (0.02f / _e1231);
-                                                if (_e1254 != _e1254) {
-                                                    phi_2553_ = true;
-                                                } else {
-                                                    phi_2553_ = (0.19634955f <= _e1254);
-                                                }
-                                                let _e1258 = phi_2553_;
-                                                let _e1259 = select(_e1254, 0.19634955f, _e1258);
-                                                let _e1263 = (_e1159 - (_e419 * _e1174));
-                                                let _e1264 = (_e1160 - (_e420 * _e1174));
-                                                let _e1265 = (_e1161 - (_e421 * _e1174));
-                                                let _e1272 = (1f / sqrt((((_e1159 * _e1159) + (_e1160 * _e1160)) + (_e1161 * _e1161))));
-                                                let _e1280 = ((((_e1159 * _e1272) * _e419) + ((_e1160 * _e1272) * _e420)) + ((_e1161 * _e1272) * _e421));
-                                                if (_e1280 > -1f) {
-                                                    phi_1926_ = select(1f, _e1280, (_e1280 < 1f));
-                                                } else {
-                                                    phi_1926_ = -1f;
-                                                }
-                                                let _e1285 = phi_1926_;
-                                                let _e1290 = ((((acos(_e1285) + _e1259) - _e1253) + 1.5707964f) * 0.31830987f);
-                                                if (_e1290 > 0f) {
-                                                    phi_1941_ = select(1f, _e1290, (_e1290 < 1f));
-                                                } else {
-                                                    phi_1941_ = 0f;
-                                                }
-                                                let _e1295 = phi_1941_;
-                                                let _e1302 = (1f / sqrt((((_e1263 * _e1263) + (_e1264 * _e1264)) + (_e1265 * _e1265))));
-                                                let _e1310 = ((((_e1263 * _e1302) * _e419) + ((_e1264 * _e1302) * _e420)) + ((_e1265 * _e1302) * _e421));
-                                                if (_e1310 > -1f) {
-                                                    phi_1969_ = select(1f, _e1310, (_e1310 < 1f));
-                                                } else {
-                                                    phi_1969_ = -1f;
-                                                }
-                                                let _e1315 = phi_1969_;
-                                                let _e1320 = ((((acos(_e1315) + _e1259) - _e1253) + 1.5707964f) * 0.31830987f);
-                                                if (_e1320 > 0f) {
-                                                    phi_1984_ = select(1f, _e1320, (_e1320 < 1f));
-                                                } else {
-                                                    phi_1984_ = 0f;
-                                                }
-                                                let _e1325 = phi_1984_;
-                                                let _e1326 = (1f - _e1295);
-                                                let _e1327 = (1f - _e1325);
+                                                let _e1262 = phi_2770_;
+                                                let _e1263 = select(_e1258, 0.19634955f, _e1262);
+                                                let _e1267 = (_e1164 - (_e412 * _e1179));
+                                                let _e1268 = (_e1165 - (_e413 * _e1179));
+                                                let _e1269 = (_e1166 - (_e414 * _e1179));
+                                                let _e1276 = (1f / sqrt((((_e1164 * _e1164) + (_e1165 * _e1165)) + (_e1166 * _e1166))));
+                                                let _e1284 = ((((_e1164 * _e1276) * _e412) + ((_e1165 * _e1276) * _e413)) + ((_e1166 * _e1276) * _e414));
+                                                let _e1293 = ((((acos(select(-1f, select(1f, _e1284, (_e1284 < 1f)), (_e1284 > -1f))) + _e1263) - _e1257) + 1.5707964f) * 0.31830987f);
+                                                let _e1304 = (1f / sqrt((((_e1267 * _e1267) + (_e1268 * _e1268)) + (_e1269 * _e1269))));
+                                                let _e1312 = ((((_e1267 * _e1304) * _e412) + ((_e1268 * _e1304) * _e413)) + ((_e1269 * _e1304) * _e414));
+                                                let _e1321 = ((((acos(select(-1f, select(1f, _e1312, (_e1312 < 1f)), (_e1312 > -1f))) + _e1263) - _e1257) + 1.5707964f) * 0.31830987f);
+                                                let _e1326 = (1f - select(0f, select(1f, _e1293, (_e1293 < 1f)), (_e1293 > 0f)));
+                                                let _e1327 = (1f - select(0f, select(1f, _e1321, (_e1321 < 1f)), (_e1321 > 0f)));
                                                 let _e1328 = (_e1326 != _e1326);
                                                 if _e1328 {
-                                                    phi_2568_ = true;
+                                                    phi_2785_ = true;
                                                 } else {
-                                                    phi_2568_ = (_e1327 <= _e1326);
+                                                    phi_2785_ = (_e1327 <= _e1326);
                                                 }
-                                                let _e1331 = phi_2568_;
+                                                let _e1331 = phi_2785_;
                                                 let _e1332 = select(_e1326, _e1327, _e1331);
                                                 if _e1328 {
-                                                    phi_2583_ = true;
+                                                    phi_2800_ = true;
                                                 } else {
-                                                    phi_2583_ = (_e1327 >= _e1326);
+                                                    phi_2800_ = (_e1327 >= _e1326);
                                                 }
-                                                let _e1335 = phi_2583_;
+                                                let _e1335 = phi_2800_;
                                                 let _e1336 = select(_e1326, _e1327, _e1335);
                                                 let _e1338 = floor((32f * _e1332));
                                                 let _e1343 = select(select(u32(_e1338), 0u, (_e1338 < 0f)), 4294967295u, (_e1338 > 4294967000f));
-                                                if (_e1177 == 1u) {
+                                                if (_e1182 == 1u) {
                                                     let _e1353 = (_e1336 <= _e1332);
                                                     if _e1353 {
-                                                        phi_2033_ = u32();
+                                                        phi_2000_ = u32();
                                                     } else {
                                                         let _e1355 = ceil((32f * _e1336));
                                                         let _e1360 = select(select(u32(_e1355), 0u, (_e1355 < 0f)), 4294967295u, (_e1355 > 4294967000f));
                                                         let _e1362 = select(_e1360, 32u, (32u < _e1360));
                                                         if (_e1362 > _e1343) {
-                                                            phi_2032_ = (_e1362 - _e1343);
+                                                            phi_1999_ = (_e1362 - _e1343);
                                                         } else {
-                                                            phi_2032_ = 0u;
+                                                            phi_1999_ = 0u;
                                                         }
-                                                        let _e1366 = phi_2032_;
-                                                        phi_2033_ = _e1366;
+                                                        let _e1366 = phi_1999_;
+                                                        phi_2000_ = _e1366;
                                                     }
-                                                    let _e1368 = phi_2033_;
-                                                    phi_2045_ = _e1368;
-                                                    phi_2046_ = select(true, false, _e1353);
+                                                    let _e1368 = phi_2000_;
+                                                    phi_2012_ = _e1368;
+                                                    phi_2013_ = select(true, false, _e1353);
                                                 } else {
                                                     let _e1347 = ceil((32f * (_e1336 - _e1332)));
-                                                    phi_2045_ = select(select(u32(_e1347), 0u, (_e1347 < 0f)), 4294967295u, (_e1347 > 4294967000f));
-                                                    phi_2046_ = true;
+                                                    phi_2012_ = select(select(u32(_e1347), 0u, (_e1347 < 0f)), 4294967295u, (_e1347 > 4294967000f));
+                                                    phi_2013_ = true;
                                                 }
-                                                let _e1371 = phi_2045_;
-                                                let _e1373 = phi_2046_;
+                                                let _e1371 = phi_2012_;
+                                                let _e1373 = phi_2013_;
                                                 if _e1373 {
                                                     if (_e1343 >= 32u) {
-                                                        phi_2069_ = u32();
-                                                        phi_2070_ = true;
+                                                        phi_2036_ = u32();
+                                                        phi_2037_ = true;
                                                     } else {
                                                         let _e1375 = (_e1371 == 0u);
                                                         if _e1375 {
-                                                            phi_2068_ = u32();
+                                                            phi_2035_ = u32();
                                                         } else {
                                                             if (_e1371 >= 32u) {
-                                                                phi_2065_ = 4294967295u;
+                                                                phi_2032_ = 4294967295u;
                                                             } else {
-                                                                phi_2065_ = ((1u << bitcast<u32>((_e1371 & 31u))) - 1u);
+                                                                phi_2032_ = ((1u << bitcast<u32>((_e1371 & 31u))) - 1u);
                                                             }
-                                                            let _e1382 = phi_2065_;
-                                                            phi_2068_ = (_e1382 << bitcast<u32>((_e1343 & 31u)));
+                                                            let _e1382 = phi_2032_;
+                                                            phi_2035_ = (_e1382 << bitcast<u32>((_e1343 & 31u)));
                                                         }
-                                                        let _e1387 = phi_2068_;
-                                                        phi_2069_ = _e1387;
-                                                        phi_2070_ = _e1375;
+                                                        let _e1387 = phi_2035_;
+                                                        phi_2036_ = _e1387;
+                                                        phi_2037_ = _e1375;
                                                     }
-                                                    let _e1389 = phi_2069_;
-                                                    let _e1391 = phi_2070_;
-                                                    phi_2075_ = select(_e1389, 0u, _e1391);
+                                                    let _e1389 = phi_2036_;
+                                                    let _e1391 = phi_2037_;
+                                                    phi_2042_ = select(_e1389, 0u, _e1391);
                                                 } else {
-                                                    phi_2075_ = 0u;
+                                                    phi_2042_ = 0u;
                                                 }
-                                                let _e1394 = phi_2075_;
-                                                phi_2076_ = _e1394;
+                                                let _e1394 = phi_2042_;
+                                                phi_2043_ = _e1394;
                                             }
-                                            let _e1396 = phi_2076_;
-                                            phi_2077_ = _e1396;
+                                            let _e1396 = phi_2043_;
+                                            phi_2044_ = _e1396;
                                         } else {
-                                            phi_2077_ = 0u;
+                                            phi_2044_ = 0u;
                                         }
-                                        let _e1398 = phi_2077_;
-                                        phi_1031_ = (_e684 + 1u);
-                                        phi_1034_ = ((_e686 | _e1157) | _e1398);
+                                        let _e1398 = phi_2044_;
+                                        phi_1166_ = (_e675 + 1u);
+                                        phi_1169_ = ((_e677 | _e1162) | _e1398);
                                     } else {
-                                        phi_1031_ = u32();
-                                        phi_1034_ = u32();
+                                        phi_1166_ = u32();
+                                        phi_1169_ = u32();
                                     }
-                                    let _e1402 = phi_1031_;
-                                    let _e1404 = phi_1034_;
+                                    let _e1402 = phi_1166_;
+                                    let _e1404 = phi_1169_;
                                     continue;
                                     continuing {
-                                        phi_1030_ = _e1402;
-                                        phi_1033_ = _e1404;
-                                        phi_2603_ = _e588;
-                                        break if !(_e687);
+                                        phi_1165_ = _e1402;
+                                        phi_1168_ = _e1404;
+                                        phi_2845_ = _e581;
+                                        break if !(_e678);
                                     }
                                 }
-                                let _e1407 = phi_2603_;
-                                phi_2773_ = _e1407;
+                                let _e1407 = phi_2845_;
+                                phi_3017_ = _e1407;
                                 if _e1407 {
                                     break;
                                 }
                                 let _e1410 = params.member.member_2;
                                 if (_e1410 == 2u) {
-                                    let _e1467 = (_e676 - 1.5707964f);
-                                    let _e1468 = (2f * _e1467);
-                                    let _e1469 = sin(_e676);
-                                    let _e1474 = ((_e674 + (_e1468 * _e1469)) - cos((_e1468 - _e676)));
-                                    if (_e1467 < 0f) {
-                                        phi_2106_ = (_e1474 * -0.25f);
+                                    let _e1466 = (_e667 - 1.5707964f);
+                                    let _e1467 = (_e1466 * 2f);
+                                    let _e1468 = sin(_e667);
+                                    let _e1473 = ((_e665 + (_e1467 * _e1468)) - cos((_e1467 - _e667)));
+                                    if (_e1466 < 0f) {
+                                        phi_2073_ = (_e1473 * -0.25f);
                                     } else {
-                                        phi_2106_ = (_e1474 * 0.25f);
+                                        phi_2073_ = (_e1473 * 0.25f);
                                     }
-                                    let _e1479 = phi_2106_;
-                                    phi_2108_ = 0u;
-                                    phi_2111_ = _e1479;
-                                    phi_2113_ = 0f;
+                                    let _e1478 = phi_2073_;
+                                    phi_2075_ = 0u;
+                                    phi_2078_ = _e1478;
+                                    phi_2080_ = 0f;
                                     loop {
-                                        let _e1481 = phi_2108_;
-                                        let _e1483 = phi_2111_;
-                                        let _e1485 = phi_2113_;
-                                        local_8 = _e1485;
-                                        let _e1486 = (_e1481 < 32u);
-                                        if _e1486 {
-                                            let _e1487 = (_e1481 + 1u);
-                                            let _e1490 = (_e1467 + (f32(_e1487) * 0.09817477f));
-                                            let _e1491 = (2f * _e1490);
-                                            let _e1496 = ((_e674 + (_e1491 * _e1469)) - cos((_e1491 - _e676)));
-                                            if (_e1490 < 0f) {
-                                                phi_2139_ = (_e1496 * -0.25f);
+                                        let _e1480 = phi_2075_;
+                                        let _e1482 = phi_2078_;
+                                        let _e1484 = phi_2080_;
+                                        local_8 = _e1484;
+                                        let _e1485 = (_e1480 < 32u);
+                                        if _e1485 {
+                                            let _e1486 = (_e1480 + 1u);
+                                            let _e1489 = (_e1466 + (f32(_e1486) * 0.09817477f));
+                                            let _e1490 = (_e1489 * 2f);
+                                            let _e1495 = ((_e665 + (_e1490 * _e1468)) - cos((_e1490 - _e667)));
+                                            if (_e1489 < 0f) {
+                                                phi_2106_ = (_e1495 * -0.25f);
                                             } else {
-                                                phi_2139_ = (_e1496 * 0.25f);
+                                                phi_2106_ = (_e1495 * 0.25f);
                                             }
-                                            let _e1501 = phi_2139_;
-                                            let _e1504 = local_7;
-                                            if (((_e1504 >> bitcast<u32>((_e1481 & 31u))) & 1u) == 0u) {
-                                                phi_2149_ = (_e1485 + (_e1501 - _e1483));
+                                            let _e1500 = phi_2106_;
+                                            let _e1503 = local_7;
+                                            if (((_e1503 >> bitcast<u32>((_e1480 & 31u))) & 1u) == 0u) {
+                                                phi_2116_ = (_e1484 + (_e1500 - _e1482));
                                             } else {
-                                                phi_2149_ = _e1485;
+                                                phi_2116_ = _e1484;
                                             }
-                                            let _e1512 = phi_2149_;
-                                            phi_2109_ = _e1487;
-                                            phi_2112_ = _e1501;
-                                            phi_2114_ = _e1512;
+                                            let _e1511 = phi_2116_;
+                                            phi_2076_ = _e1486;
+                                            phi_2079_ = _e1500;
+                                            phi_2081_ = _e1511;
                                         } else {
-                                            phi_2109_ = u32();
-                                            phi_2112_ = f32();
-                                            phi_2114_ = f32();
+                                            phi_2076_ = u32();
+                                            phi_2079_ = f32();
+                                            phi_2081_ = f32();
                                         }
-                                        let _e1514 = phi_2109_;
-                                        let _e1516 = phi_2112_;
-                                        let _e1518 = phi_2114_;
+                                        let _e1513 = phi_2076_;
+                                        let _e1515 = phi_2079_;
+                                        let _e1517 = phi_2081_;
                                         continue;
                                         continuing {
-                                            phi_2108_ = _e1514;
-                                            phi_2111_ = _e1516;
-                                            phi_2113_ = _e1518;
-                                            break if !(_e1486);
+                                            phi_2075_ = _e1513;
+                                            phi_2078_ = _e1515;
+                                            phi_2080_ = _e1517;
+                                            break if !(_e1485);
                                         }
                                     }
-                                    let _e1521 = local_8;
-                                    phi_2775_ = _e1407;
-                                    phi_2213_ = (_e592 + 1f);
-                                    phi_2214_ = (_e594 + ((_e653 + ((1f - _e653) * 0.05f)) * _e1521));
+                                    let _e1520 = local_8;
+                                    phi_3019_ = _e1407;
+                                    phi_2180_ = (_e585 + 1f);
+                                    phi_2181_ = (_e587 + ((_e646 + ((1f - _e646) * 0.05f)) * _e1520));
                                 } else {
                                     if (_e1410 == 1u) {
-                                        phi_2161_ = 0u;
-                                        phi_2164_ = 0f;
+                                        phi_2128_ = 0u;
+                                        phi_2131_ = 0f;
                                         loop {
-                                            let _e1422 = phi_2161_;
-                                            let _e1424 = phi_2164_;
+                                            let _e1422 = phi_2128_;
+                                            let _e1424 = phi_2131_;
                                             local_6 = _e1424;
                                             let _e1425 = (_e1422 < 4u);
                                             if _e1425 {
                                                 local = array<type_25, 4>(type_25(4026531855u, 0.0095061f), type_25(251658480u, 0.0270951f), type_25(15732480u, 0.0405571f), type_25(1044480u, 0.0478421f));
                                                 if _e1425 {
                                                 } else {
-                                                    phi_2770_ = true;
+                                                    phi_3014_ = true;
                                                     break;
                                                 }
                                                 let _e1428 = local[_e1422].member;
                                                 let _e1431 = local[_e1422].member_1;
                                                 let _e1433 = local_5;
-                                                phi_2162_ = (_e1422 + 1u);
-                                                phi_2165_ = (_e1424 + (f32(countOneBits((_e1433 & _e1428))) * _e1431));
+                                                phi_2129_ = (_e1422 + 1u);
+                                                phi_2132_ = (_e1424 + (f32(countOneBits((_e1433 & _e1428))) * _e1431));
                                             } else {
-                                                phi_2162_ = u32();
-                                                phi_2165_ = f32();
+                                                phi_2129_ = u32();
+                                                phi_2132_ = f32();
                                             }
-                                            let _e1441 = phi_2162_;
-                                            let _e1443 = phi_2165_;
+                                            let _e1441 = phi_2129_;
+                                            let _e1443 = phi_2132_;
                                             continue;
                                             continuing {
-                                                phi_2161_ = _e1441;
-                                                phi_2164_ = _e1443;
-                                                phi_2770_ = _e1407;
+                                                phi_2128_ = _e1441;
+                                                phi_2131_ = _e1443;
+                                                phi_3014_ = _e1407;
                                                 break if !(_e1425);
                                             }
                                         }
-                                        let _e1446 = phi_2770_;
-                                        phi_2773_ = _e1446;
+                                        let _e1446 = phi_3014_;
+                                        phi_3017_ = _e1446;
                                         if _e1446 {
                                             break;
                                         }
                                         let _e1448 = local_6;
                                         let _e1449 = (1f - _e1448);
-                                        if (_e1449 > 0f) {
-                                            phi_2200_ = select(1f, _e1449, (_e1449 < 1f));
-                                        } else {
-                                            phi_2200_ = 0f;
-                                        }
-                                        let _e1454 = phi_2200_;
-                                        phi_2781_ = _e1446;
-                                        phi_2211_ = (_e592 + _e653);
-                                        phi_2212_ = (_e594 + (_e653 * _e1454));
+                                        phi_3025_ = _e1446;
+                                        phi_2178_ = (_e585 + _e646);
+                                        phi_2179_ = (_e587 + (_e646 * select(0f, select(1f, _e1449, (_e1449 < 1f)), (_e1449 > 0f))));
                                     } else {
                                         let _e1414 = local_4;
-                                        phi_2781_ = _e1407;
-                                        phi_2211_ = (_e592 + 1f);
-                                        phi_2212_ = (_e594 + (1f - (f32(countOneBits(_e1414)) * 0.03125f)));
+                                        phi_3025_ = _e1407;
+                                        phi_2178_ = (_e585 + 1f);
+                                        phi_2179_ = (_e587 + (1f - (f32(countOneBits(_e1414)) * 0.03125f)));
                                     }
-                                    let _e1459 = phi_2781_;
-                                    let _e1461 = phi_2211_;
-                                    let _e1463 = phi_2212_;
-                                    phi_2775_ = _e1459;
-                                    phi_2213_ = _e1461;
-                                    phi_2214_ = _e1463;
+                                    let _e1458 = phi_3025_;
+                                    let _e1460 = phi_2178_;
+                                    let _e1462 = phi_2179_;
+                                    phi_3019_ = _e1458;
+                                    phi_2180_ = _e1460;
+                                    phi_2181_ = _e1462;
                                 }
-                                let _e1526 = phi_2775_;
-                                let _e1528 = phi_2213_;
-                                let _e1530 = phi_2214_;
-                                phi_2774_ = _e1526;
-                                phi_850_ = (_e590 + 1u);
-                                phi_853_ = _e1528;
-                                phi_855_ = _e1530;
+                                let _e1525 = phi_3019_;
+                                let _e1527 = phi_2180_;
+                                let _e1529 = phi_2181_;
+                                phi_3018_ = _e1525;
+                                phi_991_ = (_e583 + 1u);
+                                phi_994_ = _e1527;
+                                phi_996_ = _e1529;
                             } else {
-                                phi_2774_ = _e588;
-                                phi_850_ = u32();
-                                phi_853_ = f32();
-                                phi_855_ = f32();
+                                phi_3018_ = _e581;
+                                phi_991_ = u32();
+                                phi_994_ = f32();
+                                phi_996_ = f32();
                             }
-                            let _e1533 = phi_2774_;
-                            let _e1535 = phi_850_;
-                            let _e1537 = phi_853_;
-                            let _e1539 = phi_855_;
+                            let _e1532 = phi_3018_;
+                            let _e1534 = phi_991_;
+                            let _e1536 = phi_994_;
+                            let _e1538 = phi_996_;
                             continue;
                             continuing {
-                                phi_2652_ = _e1533;
-                                phi_849_ = _e1535;
-                                phi_852_ = _e1537;
-                                phi_854_ = _e1539;
-                                phi_2773_ = _e1533;
-                                break if !(_e595);
+                                phi_2897_ = _e1532;
+                                phi_990_ = _e1534;
+                                phi_993_ = _e1536;
+                                phi_995_ = _e1538;
+                                phi_3017_ = _e1532;
+                                break if !(_e588);
                             }
                         }
-                        let _e1542 = phi_2773_;
-                        if _e1542 {
+                        let _e1541 = phi_3017_;
+                        if _e1541 {
                             break;
                         }
-                        let _e1544 = local_9;
-                        if (_e1544 > 0f) {
-                            let _e1547 = local_10;
-                            let _e1549 = local_11;
-                            phi_2221_ = (_e1547 / _e1549);
+                        let _e1543 = local_9;
+                        if (_e1543 > 0f) {
+                            let _e1546 = local_10;
+                            let _e1548 = local_11;
+                            phi_2188_ = (_e1546 / _e1548);
                         } else {
-                            phi_2221_ = 1f;
+                            phi_2188_ = 1f;
                         }
-                        let _e1552 = phi_2221_;
-                        let _e1556 = params.member.member_4.member_6;
-                        let _e1557 = pow(_e1552, _e1556);
-                        if (_e1557 != _e1557) {
-                            phi_2598_ = true;
+                        let _e1551 = phi_2188_;
+                        let _e1555 = params.member.member_4.member_6;
+                        let _e1556 = pow(_e1551, _e1555);
+                        if (_e1556 != _e1556) {
+                            phi_2815_ = true;
                         } else {
-                            phi_2598_ = (0.03f >= _e1557);
+                            phi_2815_ = (0.03f >= _e1556);
                         }
-                        let _e1561 = phi_2598_;
-                        let _e1563 = (select(_e1557, 0.03f, _e1561) * 0.6666667f);
-                        if (_e1563 > 0f) {
-                            phi_2237_ = select(1f, _e1563, (_e1563 < 1f));
-                        } else {
-                            phi_2237_ = 0f;
-                        }
-                        let _e1568 = phi_2237_;
-                        let _e1570 = ((_e1568 * 255f) + 0.5f);
-                        phi_2269_ = type_21(select(select(u32(_e1570), 0u, (_e1570 < 0f)), 4294967295u, (_e1570 > 4294967000f)), _e381);
+                        let _e1560 = phi_2815_;
+                        let _e1562 = (select(_e1556, 0.03f, _e1560) * 0.6666667f);
+                        let _e1568 = ((select(0f, select(1f, _e1562, (_e1562 < 1f)), (_e1562 > 0f)) * 255f) + 0.5f);
+                        phi_2236_ = type_28(select(select(u32(_e1568), 0u, (_e1568 < 0f)), 4294967295u, (_e1568 > 4294967000f)), _e374);
                     } else {
-                        phi_2269_ = type_21(170u, _e381);
+                        phi_2236_ = type_28(170u, _e374);
                     }
-                    let _e1578 = phi_2269_;
-                    if (_e118 < arrayLength((&terms.member))) {
+                    let _e1576 = phi_2236_;
+                    if (_e119 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e118] = _e1578.member;
-                    if (_e118 < arrayLength((&edges.member))) {
+                    terms.member[_e119] = _e1576.member;
+                    if (_e119 < arrayLength((&edges.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e118] = _e1578.member_1;
+                    edges.member[_e119] = _e1576.member_1;
                 }
             }
             break;

@@ -247,7 +247,7 @@ mod kernels {
     use aokit_shaders::blur::BlurParams;
     use aokit_shaders::groundtruth::GroundTruthFrame;
     use aokit_shaders::gtao::{
-        GtaoParams, GtaoPixel, denoise_pixel, gtao_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
+        GtaoParams, GtaoPixel, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
     };
     use aokit_shaders::hybrid::HybridFrame;
     use aokit_shaders::raymarch::RaymarchParams;
@@ -352,7 +352,7 @@ mod kernels {
 
     pub fn gtao_main(io: &mut PassIo) {
         let params: GtaoParams = io.push();
-        let out = crate::gtao::per_pixel(params.view.size(), |p| gtao_pixel(&params, io.f32(0), io.words(1), p));
+        let out = crate::gtao::run_main_pixels(&params, io.f32(0), io.words(1));
         store_terms_edges(io, out);
     }
 

@@ -1,9 +1,11 @@
 //! XeGTAO's passes on the CPU (spec gtao-raymarch-hybrid §2.3–§2.7): the shader crate's
 //! per-texel and per-pixel functions over whole buffers, in the GPU's dispatch order.
 
-use aokit_shaders::glam::UVec2;
+use aokit_shaders::common::lanes::{F32x8, Lanes};
+use aokit_shaders::glam::{UVec2, uvec2, vec3};
+use aokit_shaders::gtao::main_pass::{GtaoPixel, PixelSetup, finish_pixel, pixel_setup, slices_visibility};
 use aokit_shaders::gtao::{
-    GtaoParams, MIP_LEVELS, denoise_pixel, gtao_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
+    GtaoParams, MIP_LEVELS, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
 };
 
 /// Evaluate `f` for every pixel of a `size` image in parallel [`crate::screen::tiled`] bands.
@@ -31,13 +33,37 @@ pub fn run_normals(params: &GtaoParams, depth: &[f32]) -> Vec<u32> {
     per_pixel(params.view.size(), |p| normal_from_depth(params, depth, p))
 }
 
-/// MainPass: AO terms (0–255) and packed edges per pixel of the full target.
+/// MainPass: AO terms (0–255) and packed edges per pixel of the full target, eight pixels of a
+/// row per call of the shader crate's lane-generic slices ([`main_pass_x8`]).
 pub fn run_main(params: &GtaoParams, mips: &[f32], normals: &[u32]) -> (Vec<u32>, Vec<u32>) {
-    let both = per_pixel(params.view.size(), |p| {
-        let o = gtao_pixel(params, mips, normals, p);
-        (o.term, o.edges)
+    run_main_pixels(params, mips, normals).into_iter().map(|o| (o.term, o.edges)).unzip()
+}
+
+/// [`run_main`] as one [`GtaoPixel`] per pixel.
+pub fn run_main_pixels(params: &GtaoParams, mips: &[f32], normals: &[u32]) -> Vec<GtaoPixel> {
+    let size = params.view.size();
+    let mut out = vec![GtaoPixel::default(); (size.x * size.y) as usize];
+    crate::screen::tiled_lanes(&mut out, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |p, o| {
+        main_pass_x8(params, mips, normals, p, o)
     });
-    both.into_iter().unzip()
+    out
+}
+
+/// XeGTAO's MainPass for `out.len()` ≤ 8 consecutive pixels of a row from `first`: the
+/// per-pixel setup and finish of [`aokit_shaders::gtao::gtao_pixel`] per lane, the slices (all the arithmetic) on
+/// eight lanes at once. Missing lanes repeat the last pixel; lanes without a usable depth are
+/// computed and discarded, as on a GPU.
+pub fn main_pass_x8(params: &GtaoParams, mips: &[f32], normals: &[u32], first: UVec2, out: &mut [GtaoPixel]) {
+    let last = out.len() - 1;
+    let setups: [_; 8] =
+        core::array::from_fn(|i| pixel_setup(params, mips, normals, uvec2(first.x + i.min(last) as u32, first.y)));
+    let px = PixelSetup::<F32x8>::from_lanes(&setups.map(|s| s.2));
+    let (vis, bent) = slices_visibility(params, mips, &px);
+    for (i, o) in out.iter_mut().enumerate() {
+        let (packed, valid, setup) = setups[i];
+        let b = vec3(bent.x.lane(i), bent.y.lane(i), bent.z.lane(i));
+        *o = GtaoPixel { term: finish_pixel(params, valid, vis.lane(i), b, setup.n), edges: packed };
+    }
 }
 
 /// The denoise passes; returns the visibility per pixel (full target).

@@ -4,8 +4,10 @@
 use crate::Progress;
 use aokit_shaders::blur::{BlurParams, blur_pixel};
 use aokit_shaders::common::gbuffer_read::GBufferSlices;
+use aokit_shaders::common::lanes::{F32x8, Lanes};
 use aokit_shaders::glam::{UVec2, uvec2};
-use aokit_shaders::vao::{VaoParams, vao_pixel};
+use aokit_shaders::vao::VaoParams;
+use aokit_shaders::vao::kernel::{PixelFrame, setup_pixel, vao_finish, vao_visibility_sum};
 use rayon::prelude::*;
 
 /// Rows per band of [`tiled`]: the unit of parallel work.
@@ -49,6 +51,44 @@ pub fn tiled<T: Send>(
     });
 }
 
+/// [`tiled`] for kernels that shade several consecutive pixels of a row per call (SIMD across
+/// pixels, [`aokit_shaders::common::lanes`]): `f(first, outputs)` with `outputs` the up to
+/// `lanes` pixels of the row from `first` on (fewer at the end of a tile row).
+pub fn tiled_lanes<T: Send>(
+    out: &mut [T],
+    width: u32,
+    xs: core::ops::Range<u32>,
+    ys: core::ops::Range<u32>,
+    lanes: u32,
+    band_done: Progress,
+    f: impl Fn(UVec2, &mut [T]) + Sync,
+) {
+    let w = width as usize;
+    out.par_chunks_mut(w * TILE_ROWS as usize).enumerate().for_each(|(band, rows)| {
+        let y0 = band as u32 * TILE_ROWS;
+        let band_rows = (rows.len() / w) as u32;
+        let (lo, hi) = (y0.max(ys.start), (y0 + band_rows).min(ys.end));
+        if lo >= hi {
+            return;
+        }
+        let mut x0 = xs.start;
+        while x0 < xs.end {
+            let x1 = (x0 + TILE_COLS).min(xs.end);
+            for y in lo..hi {
+                let row = &mut rows[((y - y0) as usize) * w..][..w];
+                let mut x = x0;
+                while x < x1 {
+                    let n = lanes.min(x1 - x);
+                    f(uvec2(x, y), &mut row[x as usize..(x + n) as usize]);
+                    x += n;
+                }
+            }
+            x0 = x1;
+        }
+        band_done((hi - lo) as u64);
+    });
+}
+
 /// Run `kernel` for every inner pixel of a full-target image, in parallel [`tiled`] bands.
 /// Guard-band pixels keep `fill`.
 fn for_inner_pixels(
@@ -69,7 +109,37 @@ fn for_inner_pixels(
 pub fn run_vao(params: &VaoParams, depth: &[f32], normals: &[u32], progress: Progress) -> Vec<f32> {
     let size = params.view.size();
     let gbuffer = GBufferSlices { depth, normals, width: size.x };
-    for_inner_pixels(size, params.view.guard, 1.0, progress, |p| vao_pixel(&gbuffer, params, p))
+    let mut out = vec![1.0; (size.x * size.y) as usize];
+    let g = params.view.guard;
+    let (xs, ys) = (g..size.x.saturating_sub(g), g..size.y.saturating_sub(g));
+    tiled_lanes(&mut out, size.x, xs, ys, 8, progress, |p, ao| vao_x8(&gbuffer, params, p, ao));
+    out
+}
+
+/// [`aokit_shaders::vao::vao_pixel`] for `ao.len()` ≤ 8 consecutive pixels of a row from `first`: the per-pixel
+/// setup and final power per lane, the samples on eight lanes at once. Missing lanes repeat the
+/// last pixel; unshaded pixels (no usable depth) borrow a shaded lane's frame and are
+/// discarded.
+pub fn vao_x8(gbuffer: &GBufferSlices, params: &VaoParams, first: UVec2, ao: &mut [f32]) {
+    let last = ao.len() - 1;
+    let frames: [Option<PixelFrame>; 8] = core::array::from_fn(|i| {
+        setup_pixel(
+            gbuffer,
+            &params.view,
+            params.radius,
+            params.max_screen_radius,
+            uvec2(first.x + i.min(last) as u32, first.y),
+        )
+    });
+    let Some(any) = frames.iter().flatten().next().copied() else {
+        ao.fill(1.0);
+        return;
+    };
+    let lanes = PixelFrame::<F32x8>::from_lanes(&frames.map(|f| f.unwrap_or(any)));
+    let sum = vao_visibility_sum(gbuffer, params, &lanes);
+    for (i, v) in ao.iter_mut().enumerate() {
+        *v = if frames[i].is_some() { vao_finish(params, sum.lane(i)) } else { 1.0 };
+    }
 }
 
 /// One direction (`params.direction`) of the cross-bilateral blur (spec §12).

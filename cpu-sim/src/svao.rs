@@ -8,12 +8,14 @@ use crate::gbuffer::Surfaces;
 use crate::{Progress, SceneBvh};
 use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
 use aokit_shaders::common::gbuffer_read::{DepthSlice, GBufferSlices};
-use aokit_shaders::glam::{UVec2, uvec2};
+use aokit_shaders::common::lanes::{F32x8, Lanes};
+use aokit_shaders::glam::{UVec2, uvec2, vec2};
 use aokit_shaders::rastersd::raster_fragment;
 use aokit_shaders::raysd::{SdMapRefine, SdPayload, reservoir_any_hit, sd_ray, store_layers};
 use aokit_shaders::raysvao::{ACCEPT, ACCEPT_AND_END, SampleRay, SampleTracer, refine_by_ray, sample_any_hit};
-use aokit_shaders::svao::{Refine, Refined, SvaoFrame, SvaoParams, pass1_pixel, pass2_pixel};
-use aokit_shaders::vao::kernel::{LineSample, PixelFrame};
+use aokit_shaders::svao::pass1::{Pass1Pixel, pass1_finish, pass1_sample, record_interval};
+use aokit_shaders::svao::{Refine, Refined, SvaoFrame, SvaoParams, pass2_pixel};
+use aokit_shaders::vao::kernel::{LineSample, PixelFrame, setup_pixel};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU32, AtomicU64, Ordering};
 
@@ -34,19 +36,6 @@ impl Pass1 {
     }
 }
 
-/// Rows of the inner image in parallel; `kernel(p)` for each inner pixel of row `y`.
-fn for_inner_rows(params: &SvaoParams, progress: Progress, kernel: impl Fn(UVec2) + Sync) {
-    let view = &params.vao.view;
-    let size = view.size();
-    let g = view.guard;
-    (g..size.y - g).into_par_iter().for_each(|y| {
-        for x in g..size.x - g {
-            kernel(uvec2(x, y));
-        }
-        progress(1);
-    });
-}
-
 /// AO pass 1 (spec §5) over the inner image, interval atomics as `AtomicU32`.
 /// `depth2`: the depth-peeled second layer, read only when `params.dual` is set.
 pub fn run_pass1(params: &SvaoParams, depth: &[f32], normals: &[u32], depth2: &[f32], progress: Progress) -> Pass1 {
@@ -60,12 +49,21 @@ pub fn run_pass1(params: &SvaoParams, depth: &[f32], normals: &[u32], depth2: &[
     let ao: Vec<AtomicU32> = (0..pixels).map(|_| AtomicU32::new(1.0f32.to_bits())).collect();
     let mask: Vec<AtomicU32> = (0..pixels).map(|_| AtomicU32::new(0)).collect();
     let gbuffer = GBufferSlices { depth, normals, width: size.x };
-    for_inner_rows(params, progress, |p| {
-        let (mut lo, mut hi) = (ray_min.as_slice(), ray_max.as_slice());
-        let out = pass1_pixel(&gbuffer, depth2, params, p, &mut lo, &mut hi);
-        let i = view.index(p);
-        ao[i].store(out.ao.to_bits(), Ordering::Relaxed);
-        mask[i].store(out.mask, Ordering::Relaxed);
+    let g = view.guard;
+    (g..size.y - g).into_par_iter().for_each(|y| {
+        let mut x = g;
+        while x < size.x - g {
+            let n = 8.min(size.x - g - x);
+            let (mut lo, mut hi) = (ray_min.as_slice(), ray_max.as_slice());
+            let out = pass1_x8(&gbuffer, depth2, params, uvec2(x, y), n as usize, &mut lo, &mut hi);
+            for (k, o) in out.iter().take(n as usize).enumerate() {
+                let i = view.index(uvec2(x + k as u32, y));
+                ao[i].store(o.ao.to_bits(), Ordering::Relaxed);
+                mask[i].store(o.mask, Ordering::Relaxed);
+            }
+            x += n;
+        }
+        progress(1);
     });
     let unwrap = |v: Vec<AtomicU32>| v.into_iter().map(AtomicU32::into_inner).collect::<Vec<u32>>();
     Pass1 {
@@ -74,6 +72,48 @@ pub fn run_pass1(params: &SvaoParams, depth: &[f32], normals: &[u32], depth2: &[
         ray_min: unwrap(ray_min),
         ray_max: unwrap(ray_max),
     }
+}
+
+/// [`aokit_shaders::svao::pass1_pixel`] for `n` ≤ 8 consecutive pixels of a row from `first`: the per-pixel setup,
+/// the mask bits, the interval atomics and the final store per lane, the samples' arithmetic on
+/// eight lanes at once. Missing lanes repeat the last pixel; unshaded pixels borrow a shaded
+/// lane's frame and are discarded.
+fn pass1_x8(
+    gbuffer: &GBufferSlices,
+    depth2: &[f32],
+    params: &SvaoParams,
+    first: UVec2,
+    n: usize,
+    ray_min: &mut &[AtomicU32],
+    ray_max: &mut &[AtomicU32],
+) -> [Pass1Pixel; 8] {
+    let vao = &params.vao;
+    let frames: [Option<PixelFrame>; 8] = core::array::from_fn(|i| {
+        let p = uvec2(first.x + i.min(n - 1) as u32, first.y);
+        setup_pixel(gbuffer, &vao.view, vao.radius, vao.max_screen_radius, p)
+    });
+    let unshaded = Pass1Pixel { ao: 1.0, mask: 0 };
+    let Some(any) = frames.iter().flatten().next().copied() else {
+        return [unshaded; 8];
+    };
+    let lanes = PixelFrame::<F32x8>::from_lanes(&frames.map(|f| f.unwrap_or(any)));
+    let distance = frames.map(|f| f.map_or(0.0, |f| f.position.length()));
+    let (mut sum, mut mask) = (F32x8::splat(0.0), [0u32; 8]);
+    for i in 0..params.samples() {
+        let r = pass1_sample(gbuffer, depth2, params, &lanes, i);
+        sum = sum + r.value;
+        for (k, m) in mask.iter_mut().enumerate().take(n) {
+            if frames[k].is_some() && F32x8::mask_lane(r.flagged, k) {
+                *m |= 1 << i;
+                let s = &r.sample;
+                let uv = vec2(s.uv.x.lane(k), s.uv.y.lane(k));
+                let (z, h, end, radius) =
+                    (r.z.lane(k), s.half_chord.lane(k), s.sphere_end.lane(k), lanes.radius.lane(k));
+                record_interval(params, uv, z, h, end, radius, distance[k], ray_min, ray_max);
+            }
+        }
+    }
+    core::array::from_fn(|k| if frames[k].is_some() { pass1_finish(params, sum.lane(k), mask[k]) } else { unshaded })
 }
 
 /// The ray-traced SD map (spec §7) and the number of rays traced.

@@ -1,7 +1,8 @@
 //! Pinhole camera conventions of spec svao-raysd §1: uv origin top-left with v downwards,
 //! right-handed view space looking down −Z, linear depth `d > 0` along −Z.
 
-use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
+use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
+use crate::glam::{UVec2, Vec2, Vec3, vec2};
 
 /// Projection of the full render target (inner image plus guard band), as push-constant data.
 #[repr(C)]
@@ -45,15 +46,30 @@ impl ViewParams {
     /// uv→view: `ndc = (2u−1, 1−2v)`, `X = (ndc.x·d·tx, ndc.y·d·ty, −d)` (spec §1).
     #[inline]
     pub fn uv_to_view(&self, uv: Vec2, d: f32) -> Vec3 {
-        let ndc = vec2(2.0 * uv.x - 1.0, 1.0 - 2.0 * uv.y);
-        vec3(ndc.x * d * self.tan_half_fov.x, ndc.y * d * self.tan_half_fov.y, -d)
+        self.uv_to_view_lanes::<f32>(uv, d)
+    }
+
+    /// [`Self::uv_to_view`] per lane.
+    #[inline]
+    pub fn uv_to_view_lanes<L: Lanes>(&self, uv: L::V2, d: L) -> L::V3 {
+        let (nx, ny) = (uv.x() * 2.0 - 1.0, -(uv.y() * 2.0) + 1.0);
+        L::V3::new(nx * d * self.tan_half_fov.x, ny * d * self.tan_half_fov.y, -d)
     }
 
     /// view→uv: `u = 0.5 + 0.5·X.x/(tx·(−X.z))`, `v = 0.5 − 0.5·X.y/(ty·(−X.z))` (spec §1).
     #[inline]
     pub fn view_to_uv(&self, x: Vec3) -> Vec2 {
-        let half_inv_depth = 0.5 / -x.z;
-        vec2(0.5 + x.x * half_inv_depth / self.tan_half_fov.x, 0.5 - x.y * half_inv_depth / self.tan_half_fov.y)
+        self.view_to_uv_lanes::<f32>(x)
+    }
+
+    /// [`Self::view_to_uv`] per lane.
+    #[inline]
+    pub fn view_to_uv_lanes<L: Lanes>(&self, x: L::V3) -> L::V2 {
+        let half_inv_depth = L::splat(0.5) / -x.z();
+        L::V2::new(
+            x.x() * half_inv_depth / self.tan_half_fov.x + 0.5,
+            -(x.y() * half_inv_depth / self.tan_half_fov.y) + 0.5,
+        )
     }
 
     /// Texel containing `uv` after clamping it into the target: `floor(sat(uv)·res)`, kept

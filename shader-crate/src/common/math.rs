@@ -1,24 +1,33 @@
-//! Small scalar helpers that compile identically for SPIR-V and the CPU.
+//! Small helpers that compile identically for SPIR-V and the CPU. Those generic over
+//! [`Lanes`] take `f32` (one pixel) or the CPU's 8-lane vectors alike.
 
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
+use crate::common::lanes::{LaneVec3, Lanes};
+
 /// `saturate(x)`: clamp to [0, 1]. NaN maps to 0.
 #[inline]
-pub fn sat(x: f32) -> f32 {
+pub fn sat<L: Lanes>(x: L) -> L {
     clamp(x, 0.0, 1.0)
 }
 
 /// Clamp without `f32::clamp`'s panic path (rust-gpu friendly). NaN maps to `lo`.
 #[inline]
-pub fn clamp(x: f32, lo: f32, hi: f32) -> f32 {
-    if x > lo { if x < hi { x } else { hi } } else { lo }
+pub fn clamp<L: Lanes>(x: L, lo: f32, hi: f32) -> L {
+    clamp_lanes(x, L::splat(lo), L::splat(hi))
+}
+
+/// [`clamp`] with bounds that differ per lane.
+#[inline]
+pub fn clamp_lanes<L: Lanes>(x: L, lo: L, hi: L) -> L {
+    L::select(x.gt(lo), L::select(x.lt(hi), x, hi), lo)
 }
 
 /// Fractional part `x − floor(x)` ∈ [0, 1) (HLSL `frac`).
 #[inline]
-pub fn frac(x: f32) -> f32 {
-    x - floor(x)
+pub fn frac<L: Lanes>(x: L) -> L {
+    x - x.floor()
 }
 
 /// `floor(x)`, bit for bit (−0 stays −0, NaN and ±∞ pass through). SPIR-V: `OpExtInst Floor`.
@@ -28,7 +37,7 @@ pub fn frac(x: f32) -> f32 {
 pub fn floor(x: f32) -> f32 {
     #[cfg(any(target_arch = "spirv", target_feature = "sse4.1", not(target_arch = "x86_64")))]
     {
-        x.floor()
+        Float::floor(x)
     }
     #[cfg(not(any(target_arch = "spirv", target_feature = "sse4.1", not(target_arch = "x86_64"))))]
     {
@@ -46,14 +55,14 @@ pub fn floor(x: f32) -> f32 {
 /// `powf` call per sample (`exp2(p·log2 x)` on the GPU; glibc's `powf` is within 0.82 ulp, so
 /// it may differ from `x·x` in the last bit).
 #[inline]
-pub fn pow(x: f32, p: f32) -> f32 {
+pub fn pow<L: Lanes>(x: L, p: f32) -> L {
     if p == 2.0 { x * x } else { x.powf(p) }
 }
 
 /// `ceil(x) = −floor(−x)`, bit for bit (see [`floor`]).
 #[inline]
-pub fn ceil(x: f32) -> f32 {
-    -floor(-x)
+pub fn ceil<L: Lanes>(x: L) -> L {
+    -(-x).floor()
 }
 
 /// Sign with `sign(0) = +1` (spec svao-raysd §1 octahedral codec, §4.2 `nz`).
@@ -68,26 +77,32 @@ pub fn is_valid_depth(d: f32, far: f32) -> bool {
     d > 0.0 && d < far
 }
 
+/// [`is_valid_depth`] per lane.
+#[inline]
+pub fn is_valid_depth_lanes<L: Lanes>(d: L, far: f32) -> L::Mask {
+    L::and(d.gt(L::splat(0.0)), d.lt(L::splat(far)))
+}
+
 /// XeGTAO's `fastSqrt` (spec gtao-raymarch-hybrid §1.7): the float with bits
 /// `0x1fbd1df5 + (bits(x) >> 1)`, for x ≥ 0.
 #[inline]
-pub fn fast_sqrt(x: f32) -> f32 {
-    f32::from_bits(0x1fbd_1df5u32.wrapping_add(((x.to_bits() as i32) >> 1) as u32))
+pub fn fast_sqrt<L: Lanes>(x: L) -> L {
+    x.map_bits(|b| 0x1fbd_1df5u32.wrapping_add(((b as i32) >> 1) as u32))
 }
 
 /// XeGTAO's `fastAcos` (spec §1.7) with its literal 7-digit constants:
 /// `r = (−0.156583·|x| + 1.570796)·fastSqrt(1 − |x|)`, `π − r` for negative x.
 #[inline]
 #[allow(clippy::approx_constant)] // XeGTAO's literal constants, kept for parity (spec §1.7)
-pub fn fast_acos(x: f32) -> f32 {
+pub fn fast_acos<L: Lanes>(x: L) -> L {
     let a = x.abs();
-    let r = (-0.156_583 * a + 1.570_796) * fast_sqrt(1.0 - a);
-    if x >= 0.0 { r } else { 3.141_593 - r }
+    let r = (a * -0.156_583 + 1.570_796) * fast_sqrt(-a + 1.0);
+    L::select(x.ge(L::splat(0.0)), r, -r + 3.141_593)
 }
 
 /// `a + (b − a)·t` (HLSL `lerp`).
 #[inline]
-pub fn lerp(a: f32, b: f32, t: f32) -> f32 {
+pub fn lerp<L: Lanes>(a: L, b: L, t: L) -> L {
     a + (b - a) * t
 }
 
@@ -96,19 +111,23 @@ pub fn lerp(a: f32, b: f32, t: f32) -> f32 {
 /// the rotation by π about `from`'s orthogonal x axis, `diag(1, −1, −1)` for `from = (0,0,−1)`
 /// (spec §3.4 step 5).
 #[inline]
-pub fn rotate_minimal(from: crate::glam::Vec3, to: crate::glam::Vec3, v: crate::glam::Vec3) -> crate::glam::Vec3 {
+pub fn rotate_minimal<L: Lanes>(from: L::V3, to: L::V3, v: L::V3) -> L::V3 {
     let e = from.dot(to);
-    if e > 0.9997 {
-        return v;
-    }
-    if e < -0.9997 {
-        return crate::glam::vec3(v.x, -v.y, -v.z);
-    }
     let w = from.cross(to);
-    let h = 1.0 / (1.0 + e);
-    crate::glam::vec3(
-        (e + h * w.x * w.x) * v.x + (h * w.x * w.y - w.z) * v.y + (h * w.x * w.z + w.y) * v.z,
-        (h * w.x * w.y + w.z) * v.x + (e + h * w.y * w.y) * v.y + (h * w.y * w.z - w.x) * v.z,
-        (h * w.x * w.z - w.y) * v.x + (h * w.y * w.z + w.x) * v.y + (e + h * w.z * w.z) * v.z,
-    )
+    let h = L::splat(1.0) / (e + 1.0);
+    let (wx, wy, wz) = (w.x(), w.y(), w.z());
+    let (vx, vy, vz) = (v.x(), v.y(), v.z());
+    let general = L::V3::new(
+        (e + h * wx * wx) * vx + (h * wx * wy - wz) * vy + (h * wx * wz + wy) * vz,
+        (h * wx * wy + wz) * vx + (e + h * wy * wy) * vy + (h * wy * wz - wx) * vz,
+        (h * wx * wz - wy) * vx + (h * wy * wz + wx) * vy + (e + h * wz * wz) * vz,
+    );
+    let opposite = L::V3::new(vx, -vy, -vz);
+    select3::<L>(e.gt(L::splat(0.9997)), v, select3::<L>(e.lt(L::splat(-0.9997)), opposite, general))
+}
+
+/// `if m { a } else { b }` per lane, for three-component vectors.
+#[inline]
+pub fn select3<L: Lanes>(m: L::Mask, a: L::V3, b: L::V3) -> L::V3 {
+    L::V3::new(L::select(m, a.x(), b.x()), L::select(m, a.y(), b.y()), L::select(m, a.z(), b.z()))
 }

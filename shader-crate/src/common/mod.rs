@@ -8,6 +8,7 @@ pub mod denoise_terms;
 pub mod float_order;
 pub mod gbuffer_read;
 pub mod hash;
+pub mod lanes;
 pub mod math;
 pub mod noise;
 pub mod normal_codec;

@@ -3,7 +3,8 @@
 //! gtao-raymarch-hybrid §1.4–§1.5).
 
 use crate::common::ViewParams;
-use crate::glam::{UVec2, Vec2, Vec3, uvec2, vec3};
+use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
+use crate::glam::{UVec2, uvec2};
 
 /// `clamp(v, 0, n − 1)` of a float coordinate as an index (NaN → 0).
 #[inline]
@@ -14,8 +15,8 @@ pub fn clamp_index(v: f32, n: u32) -> u32 {
 /// `viewPos(uv, z) = ((2u−1)·tanX·z, (1−2v)·tanY·z, z)` in XeGTAO's +z-forward view space
 /// (spec §1.4).
 #[inline]
-pub fn view_pos(view: &ViewParams, uv: Vec2, z: f32) -> Vec3 {
-    vec3((2.0 * uv.x - 1.0) * view.tan_half_fov.x * z, (1.0 - 2.0 * uv.y) * view.tan_half_fov.y * z, z)
+pub fn view_pos<L: Lanes>(view: &ViewParams, uv: L::V2, z: L) -> L::V3 {
+    L::V3::new((uv.x() * 2.0 - 1.0) * view.tan_half_fov.x * z, (-(uv.y() * 2.0) + 1.0) * view.tan_half_fov.y * z, z)
 }
 
 /// Pixel `p` clamped into the full target after adding `(dx, dy)` (clamp-to-edge reads).

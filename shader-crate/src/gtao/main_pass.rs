@@ -6,12 +6,15 @@
 use spirv_std::num_traits::Float;
 
 use super::{GtaoParams, mip_texel};
-use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, round_even, store_term};
+use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, store_term};
+use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
 use crate::common::math::{ceil, clamp, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::{decode_normal, encode_normal};
 use crate::common::screen_space::{clamp_index, neighbour, view_pos};
-use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
+#[cfg(not(target_arch = "spirv"))]
+use crate::glam::Vec2;
+use crate::glam::{UVec2, Vec3, vec2, vec3};
 
 /// Output of the main pass for one pixel: the working AO term `uint(sat(vis/1.5)·255 + 0.5)`
 /// and the packed LRTB edges.
@@ -35,23 +38,52 @@ fn to_gtao_space(n: Vec3) -> Vec3 {
 
 /// What the main pass knows about pixel `p` before its slices (spec §2.6.2): uv, the pulled
 /// view position, the unit vector toward the camera, the normal facing it, the screen radius
-/// in pixels, the minimum step and the noise. Shared by XeGTAO and VBAO (spec vbao §1).
+/// in pixels, the minimum step and the noise. Shared by XeGTAO and VBAO (spec vbao §1). `L`:
+/// one pixel (`f32`) or several ([`Lanes`]).
 #[derive(Copy, Clone, Debug)]
-pub struct PixelSetup {
-    pub uv: Vec2,
-    pub pos: Vec3,
+pub struct PixelSetup<L: Lanes = f32> {
+    pub uv: L::V2,
+    pub pos: L::V3,
     /// Unit vector from the pixel toward the camera.
-    pub v: Vec3,
+    pub v: L::V3,
     /// View normal in XeGTAO space, flipped to face the camera.
-    pub n: Vec3,
-    /// Effective radius `R = Radius·RadiusMultiplier` (world units).
+    pub n: L::V3,
+    /// Effective radius `R = Radius·RadiusMultiplier` (world units; the same for every pixel).
     pub r: f32,
     /// Screen radius in pixels, `R / (z·2·tanX/W)`.
-    pub r_px: f32,
+    pub r_px: L,
     /// Minimum sample offset `1.3/r_px` (in units of the screen radius).
-    pub min_s: f32,
+    pub min_s: L,
     /// Spatio-temporal noise (slice, step).
-    pub xi: Vec2,
+    pub xi: L::V2,
+}
+
+#[cfg(not(target_arch = "spirv"))]
+impl<L: Lanes> PixelSetup<L> {
+    /// The setups of `L::LANES` pixels side by side (lane `i` from `each[i]`).
+    #[inline]
+    pub fn from_lanes(each: &[PixelSetup<f32>]) -> Self {
+        let v2 = |f: &dyn Fn(&PixelSetup) -> Vec2| {
+            L::V2::new(L::from_lanes(|i| f(&each[i]).x), L::from_lanes(|i| f(&each[i]).y))
+        };
+        let v3 = |f: &dyn Fn(&PixelSetup) -> Vec3| {
+            L::V3::new(
+                L::from_lanes(|i| f(&each[i]).x),
+                L::from_lanes(|i| f(&each[i]).y),
+                L::from_lanes(|i| f(&each[i]).z),
+            )
+        };
+        PixelSetup {
+            uv: v2(&|p| p.uv),
+            pos: v3(&|p| p.pos),
+            v: v3(&|p| p.v),
+            n: v3(&|p| p.n),
+            r: each[0].r,
+            r_px: L::from_lanes(|i| each[i].r_px),
+            min_s: L::from_lanes(|i| each[i].min_s),
+            xi: v2(&|p| p.xi),
+        }
+    }
 }
 
 /// The packed denoiser edges of pixel `p`, whether it has a usable depth (background has
@@ -92,110 +124,124 @@ pub fn pixel_setup(params: &GtaoParams, mips: &[f32], normals: &[u32], p: UVec2)
 #[inline]
 pub fn gtao_pixel(params: &GtaoParams, mips: &[f32], normals: &[u32], p: UVec2) -> GtaoPixel {
     let (packed, valid, px) = pixel_setup(params, mips, normals, p);
+    let (vis, bent) = if valid { slices_visibility(params, mips, &px) } else { (1.0, Vec3::ZERO) };
+    GtaoPixel { term: finish_pixel(params, valid, vis, bent, px.n), edges: packed }
+}
+
+/// The stored term of a pixel from the slices' average visibility `vis` and bent-normal sum
+/// (spec §2.6.4–§2.6.5): the final power, and with bent normals the normalised direction.
+/// Background (`valid` false): visible, its bent normal toward the camera.
+#[inline]
+pub fn finish_pixel(params: &GtaoParams, valid: bool, vis: f32, bent: Vec3, n: Vec3) -> u32 {
     if !valid {
-        // Background: visible, its bent normal toward the camera.
-        let term =
-            if params.bent_normals != 0 { pack_bent_normal(vec3(0.0, 0.0, -1.0), 1.0 / 1.5) } else { store_term(1.0) };
-        return GtaoPixel { term, edges: packed };
+        return if params.bent_normals != 0 {
+            pack_bent_normal(vec3(0.0, 0.0, -1.0), 1.0 / 1.5)
+        } else {
+            store_term(1.0)
+        };
     }
-    let falloff_range = params.falloff_range * px.r;
-    let mut vis = 0.5 * sat((10.0 - px.r_px) / 100.0);
-    let mut bent = Vec3::ZERO;
-    let slices = params.slices.max(1);
-    let mut s = 0;
-    while s < slices {
-        let (slice_vis, slice_bent) = slice_visibility(params, mips, &px, s, falloff_range);
-        vis += slice_vis;
-        bent += slice_bent;
-        s += 1;
-    }
-    vis /= slices as f32;
     let vis = final_visibility(vis, params.final_value_power);
     if params.bent_normals != 0 {
         let l = bent.length();
-        let b = if l > 0.0 { bent / l } else { px.n };
-        return GtaoPixel { term: pack_bent_normal(b, vis / 1.5), edges: packed };
+        let b = if l > 0.0 { bent / l } else { n };
+        return pack_bent_normal(b, vis / 1.5);
     }
-    GtaoPixel { term: store_term(vis), edges: packed }
+    store_term(vis)
+}
+
+/// The slices of a pixel (or of `L::LANES` pixels): the average visibility before the final
+/// power, `(0.5·sat((10 − r_px)/100) + Σ L·(a(h0) + a(h1)))/slices` (spec §2.6.2–§2.6.4), and
+/// the sum of the slices' bent-normal contributions when `params.bent_normals` is set (else
+/// zero).
+#[inline]
+pub fn slices_visibility<L: Lanes>(params: &GtaoParams, mips: &[f32], px: &PixelSetup<L>) -> (L, L::V3) {
+    let falloff_range = params.falloff_range * px.r;
+    let zero = L::splat(0.0);
+    let mut vis = sat((-px.r_px + 10.0) / 100.0) * 0.5;
+    let mut bent = L::V3::new(zero, zero, zero);
+    let slices = params.slices.max(1);
+    let mut s = 0;
+    while s < slices {
+        let sl = slice_frame(params, px, s);
+        let (h0, h1) = slice_horizons(params, mips, px, &sl, s, falloff_range);
+        let len = projected_length_fudge(sl.len);
+        vis = vis + (arc_integral(h0, sl.gamma, sl.cos_n) + arc_integral(h1, sl.gamma, sl.cos_n)) * len;
+        if params.bent_normals != 0 {
+            bent = bent + slice_bent_normal(&sl, h0, h1, px.v, len);
+        }
+        s += 1;
+    }
+    (vis / slices as f32, bent)
 }
 
 /// One slice's bent-normal contribution, `L·M·(dir.x·t0, dir.y·t0, −t1)` (spec §2.6.5: the
 /// cosine-weighted mean direction of the visible arc between the horizons h0, h1 in the slice
 /// frame, rotated by the minimal rotation M taking (0, 0, −1) to v, weighted by the fudged L).
 #[inline]
-fn slice_bent_normal(sl: &SliceFrame, h0: f32, h1: f32, v: Vec3, len: f32) -> Vec3 {
+fn slice_bent_normal<L: Lanes>(sl: &SliceFrame<L>, h0: L, h1: L, v: L::V3, len: L) -> L::V3 {
     let g = sl.gamma;
-    let t0 = (6.0 * (h0 - g).sin() - (3.0 * h0 - g).sin() + 6.0 * (h1 - g).sin() - (3.0 * h1 - g).sin()
-        + 16.0 * g.sin()
-        - 3.0 * ((h0 + g).sin() + (h1 + g).sin()))
+    let t0 = ((h0 - g).sin() * 6.0 - (h0 * 3.0 - g).sin() + (h1 - g).sin() * 6.0 - (h1 * 3.0 - g).sin()
+        + g.sin() * 16.0
+        - ((h0 + g).sin() + (h1 + g).sin()) * 3.0)
         / 12.0;
     let t1 =
-        (-(3.0 * h0 - g).cos() - (3.0 * h1 - g).cos() + 8.0 * g.cos() - 3.0 * ((h0 + g).cos() + (h1 + g).cos())) / 12.0;
-    let local = vec3(sl.dir.x * t0, sl.dir.y * t0, -t1);
-    rotate_minimal(vec3(0.0, 0.0, -1.0), v, local) * len
+        (-(h0 * 3.0 - g).cos() - (h1 * 3.0 - g).cos() + g.cos() * 8.0 - ((h0 + g).cos() + (h1 + g).cos()) * 3.0) / 12.0;
+    let local = L::V3::new(sl.dir.x() * t0, sl.dir.y() * t0, -t1);
+    let zero = L::splat(0.0);
+    rotate_minimal::<L>(L::V3::new(zero, zero, L::splat(-1.0)), v, local) * len
 }
 
 /// `max(V^p, 0.03)` (spec §2.6.4; VBAO finalises the same way, spec vbao §4).
 #[inline]
 pub fn final_visibility(vis: f32, power: f32) -> f32 {
-    vis.powf(power).max(0.03)
+    Float::max(Float::powf(vis, power), 0.03)
 }
 
 /// Falloff weight `W(D) = sat((R − D)/falloffRange)` (spec §2.6.2; a step when the range is 0).
 #[inline]
-fn falloff(d: f32, r: f32, range: f32) -> f32 {
-    if range > 0.0 {
-        sat((r - d) / range)
-    } else if d <= r {
-        1.0
-    } else {
-        0.0
-    }
+fn falloff<L: Lanes>(d: L, r: f32, range: f32) -> L {
+    if range > 0.0 { sat((-d + r) / range) } else { L::select(d.le(L::splat(r)), L::splat(1.0), L::splat(0.0)) }
 }
 
 /// The cosine-weighted visible arc of one side, `a(h) = (cos n + 2h·sin γ − cos(2h − γ))/4`
 /// (spec §2.6.3 step 10; GTAO paper eq. 10).
 #[inline]
-pub fn arc_integral(h: f32, gamma: f32, cos_n: f32) -> f32 {
-    (cos_n + 2.0 * h * gamma.sin() - (2.0 * h - gamma).cos()) * 0.25
+pub fn arc_integral<L: Lanes>(h: L, gamma: L, cos_n: L) -> L {
+    (cos_n + h * 2.0 * gamma.sin() - (h * 2.0 - gamma).cos()) * 0.25
 }
 
 /// One slice's frame (spec §2.6.3 steps 1–5): the screen step vector, the slice direction,
 /// the projected normal, its length L, cos n and the signed normal angle γ.
 #[derive(Copy, Clone, Debug)]
-pub struct SliceFrame {
+pub struct SliceFrame<L: Lanes = f32> {
     /// Screen-space offset of a unit step (pixels), `(cos φ, −sin φ)·r_px`.
-    pub omega: Vec2,
+    pub omega: L::V2,
     /// Slice direction in view space, `(cos φ, sin φ, 0)`.
-    pub dir: Vec3,
+    pub dir: L::V3,
     /// `L = |projected|` (before the step-8 fudge).
-    pub len: f32,
-    pub cos_n: f32,
+    pub len: L,
+    pub cos_n: L,
     /// The side of the projected normal: +1 toward side 0, −1 toward side 1 (0 if neither).
-    pub sign: f32,
+    pub sign: L,
     /// γ = sgn·acos(cos n) with XeGTAO's fast acos, positive toward side 0.
-    pub gamma: f32,
+    pub gamma: L,
 }
 
 /// The frame of slice `s` of a pixel (spec §2.6.3 steps 1–5).
 #[inline]
-pub fn slice_frame(params: &GtaoParams, px: &PixelSetup, s: u32) -> SliceFrame {
+pub fn slice_frame<L: Lanes>(params: &GtaoParams, px: &PixelSetup<L>, s: u32) -> SliceFrame<L> {
     let slices = params.slices.max(1);
-    let phi = core::f32::consts::PI * (s as f32 + px.xi.x) / slices as f32;
+    let phi = (px.xi.x() + s as f32) * core::f32::consts::PI / slices as f32;
     let (sin_phi, cos_phi) = (phi.sin(), phi.cos());
-    let omega = vec2(cos_phi, -sin_phi) * px.r_px;
-    let dir = vec3(cos_phi, sin_phi, 0.0);
+    let omega = L::V2::new(cos_phi, -sin_phi) * px.r_px;
+    let dir = L::V3::new(cos_phi, sin_phi, L::splat(0.0));
     let ortho = dir - px.v * dir.dot(px.v);
     let axis = ortho.cross(px.v).normalize();
     let projected = px.n - axis * px.n.dot(axis);
     let len = projected.length();
-    let sign = if ortho.dot(projected) > 0.0 {
-        1.0
-    } else if ortho.dot(projected) < 0.0 {
-        -1.0
-    } else {
-        0.0
-    };
+    let side = ortho.dot(projected);
+    let zero = L::splat(0.0);
+    let sign = L::select(side.gt(zero), L::splat(1.0), L::select(side.lt(zero), L::splat(-1.0), zero));
     let cos_n = sat(projected.dot(px.v) / len);
     let gamma = sign * fast_acos(cos_n);
     SliceFrame { omega, dir, len, cos_n, sign, gamma }
@@ -205,36 +251,51 @@ pub fn slice_frame(params: &GtaoParams, px: &PixelSetup, s: u32) -> SliceFrame {
 /// and `Q1` at uv − offset (side 1), with the MIP level chosen from the offset length and the
 /// offset rounded to whole pixels (spec §2.6.3 step 7).
 #[inline]
-pub fn sample_pair(
+pub fn sample_pair<L: Lanes>(
     params: &GtaoParams,
     mips: &[f32],
-    px: &PixelSetup,
-    slice: &SliceFrame,
+    px: &PixelSetup<L>,
+    slice: &SliceFrame<L>,
     s: u32,
     k: u32,
-) -> (Vec3, Vec3) {
+) -> (L::V3, L::V3) {
     let view = &params.view;
     let full = view.size();
     let steps = params.steps.max(1);
-    let t = crate::common::math::frac(px.xi.y + (s + k * steps) as f32 * 0.618_034);
-    let u = pow((k as f32 + t) / steps as f32, params.sample_distribution_power) + px.min_s;
-    let mut off = slice.omega * u;
+    let t = crate::common::math::frac(px.xi.y() + (s + k * steps) as f32 * 0.618_034);
+    let u = pow((t + k as f32) / steps as f32, params.sample_distribution_power) + px.min_s;
+    let off = slice.omega * u;
     let lambda = clamp(off.length().log2() - params.depth_mip_sampling_offset, 0.0, 5.0);
-    let level = clamp_index(ceil(lambda + 0.5) - 1.0, super::MIP_LEVELS);
-    off = vec2(round_even(off.x), round_even(off.y));
-    let off_uv = off / view.res;
+    let level = ceil(lambda + 0.5) - 1.0;
+    let off_uv = L::V2::new(off.x().round_even() / view.res.x, off.y().round_even() / view.res.y);
     let uv0 = px.uv + off_uv;
     let uv1 = px.uv - off_uv;
-    let q0 = view_pos(view, uv0, mips[mip_texel(full, level, uv0)]);
-    let q1 = view_pos(view, uv1, mips[mip_texel(full, level, uv1)]);
+    let q0 = view_pos(view, uv0, mip_sample(mips, full, level, uv0));
+    let q1 = view_pos(view, uv1, mip_sample(mips, full, level, uv1));
     (q0, q1)
 }
 
-/// One slice's visibility `L·(a(h0) + a(h1))` (spec §2.6.3), and its bent-normal
-/// contribution when `params.bent_normals` is set (else zero).
+/// Point sample of the MIP chain per lane at level `level` (an integral float; clamped to the
+/// chain) and `uv`.
 #[inline]
-fn slice_visibility(params: &GtaoParams, mips: &[f32], px: &PixelSetup, s: u32, falloff_range: f32) -> (f32, Vec3) {
-    let sl = slice_frame(params, px, s);
+fn mip_sample<L: Lanes>(mips: &[f32], full: UVec2, level: L, uv: L::V2) -> L {
+    L::gather(mips, move |i| {
+        let k = clamp_index(level.lane(i), super::MIP_LEVELS);
+        mip_texel(full, k, vec2(uv.x().lane(i), uv.y().lane(i)))
+    })
+}
+
+/// One slice's horizon angles `(h0, h1)` (spec §2.6.3 steps 6–9): the largest horizon cosine
+/// per side over the steps, starting at the hemisphere's edge, as angles.
+#[inline]
+fn slice_horizons<L: Lanes>(
+    params: &GtaoParams,
+    mips: &[f32],
+    px: &PixelSetup<L>,
+    sl: &SliceFrame<L>,
+    s: u32,
+    falloff_range: f32,
+) -> (L, L) {
     let steps = params.steps.max(1);
     let half_pi = core::f32::consts::FRAC_PI_2;
     let low0 = (sl.gamma + half_pi).cos();
@@ -243,34 +304,29 @@ fn slice_visibility(params: &GtaoParams, mips: &[f32], px: &PixelSetup, s: u32, 
     let thin = params.thin_occluder_compensation;
     let mut k = 0;
     while k < steps {
-        let (q0, q1) = sample_pair(params, mips, px, &sl, s, k);
+        let (q0, q1) = sample_pair(params, mips, px, sl, s, k);
         let shc0 = horizon_cosine(q0 - px.pos, px.v, thin, px.r, falloff_range, low0);
         let shc1 = horizon_cosine(q1 - px.pos, px.v, thin, px.r, falloff_range, low1);
         c0 = c0.max(shc0);
         c1 = c1.max(shc1);
         k += 1;
     }
-    let len = projected_length_fudge(sl.len);
-    let h0 = -fast_acos(c1);
-    let h1 = fast_acos(c0);
-    let vis = len * (arc_integral(h0, sl.gamma, sl.cos_n) + arc_integral(h1, sl.gamma, sl.cos_n));
-    let bent = if params.bent_normals != 0 { slice_bent_normal(&sl, h0, h1, px.v, len) } else { Vec3::ZERO };
-    (vis, bent)
+    (-fast_acos(c1), fast_acos(c0))
 }
 
 /// XeGTAO's fudge of the projected normal's length, `lerp(L, 1, 0.05)` (spec §2.6.3 step 8).
 #[inline]
-pub fn projected_length_fudge(len: f32) -> f32 {
-    lerp(len, 1.0, 0.05)
+pub fn projected_length_fudge<L: Lanes>(len: L) -> L {
+    lerp(len, L::splat(1.0), L::splat(0.05))
 }
 
 /// Horizon cosine of one sample, faded toward the hemisphere fallback `low` with distance
 /// (spec §2.6.3 step 7; thin-occluder compensation stretches z of the falloff distance).
 #[inline]
-fn horizon_cosine(delta: Vec3, v: Vec3, thin: f32, r: f32, range: f32, low: f32) -> f32 {
+fn horizon_cosine<L: Lanes>(delta: L::V3, v: L::V3, thin: f32, r: f32, range: f32, low: L) -> L {
     let d = delta.length();
     let shc = (delta / d).dot(v);
-    let stretched = vec3(delta.x, delta.y, delta.z * (1.0 + thin)).length();
+    let stretched = L::V3::new(delta.x(), delta.y(), delta.z() * (1.0 + thin)).length();
     lerp(low, shc, falloff(stretched, r, range))
 }
 

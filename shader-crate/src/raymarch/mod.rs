@@ -147,7 +147,7 @@ pub fn facing_normal(normals: &[u32], width: u32, p: UVec2, pos: Vec3) -> Vec3 {
 #[inline]
 pub fn hemisphere_dir(d: Vec2, n: Vec3) -> Vec3 {
     let lifted = vec3(d.x, d.y, -(1.0 - d.x * d.x - d.y * d.y).max(0.0).sqrt());
-    rotate_minimal(vec3(0.0, 0.0, -1.0), n, lifted)
+    rotate_minimal::<f32>(vec3(0.0, 0.0, -1.0), n, lifted)
 }
 
 /// Depth where the view ray through `uv` meets the tangent plane of texel `q` (centre depth `z`,

@@ -1,15 +1,13 @@
 //! AO pass 1 (spec svao-raysd §5): VAO on the depth buffer, the per-sample refinement mask and,
 //! for the SD map, the ray intervals through float-as-uint atomics.
 
-#[allow(unused_imports)]
-use spirv_std::num_traits::Float;
-
+// f32 methods on SPIR-V (`floor`, `powf`, `min`, `max`, `sqrt`) come from `Lanes`.
 use super::{Secondary, SvaoParams, unorm8};
 use crate::common::atomics::AtomicU32Buffer;
 use crate::common::float_order::ordered_bits;
 use crate::common::gbuffer_read::GBuffer;
-use crate::common::math::{clamp, sat};
-use crate::glam::Vec3;
+use crate::common::lanes::Lanes;
+use crate::common::math::{clamp, is_valid_depth_lanes, sat};
 use crate::glam::{UVec2, Vec2};
 use crate::vao::kernel::{
     KERNEL_HBAO, LineSample, PixelFrame, halo_visibility, hbao_occlusion, line_sample_of, object_z, setup_pixel,
@@ -30,13 +28,13 @@ pub struct Pass1Pixel {
 /// area (VAO) or beyond `max(h, 0.1·R)` (HBAO+), and the sample is farther than the radius
 /// cutoff on screen.
 #[inline]
-pub fn needs_refinement(z: f32, s: &LineSample, frame: &PixelFrame, params: &SvaoParams) -> bool {
+pub fn needs_refinement<L: Lanes>(z: L, s: &LineSample<L>, frame: &PixelFrame<L>, params: &SvaoParams) -> L::Mask {
     let threshold = if params.kernel == KERNEL_HBAO {
-        s.half_chord.max(0.1 * frame.radius)
+        s.half_chord.max(frame.radius * 0.1)
     } else {
-        (1.0 + params.vao.thickness) * frame.radius
+        frame.radius * (1.0 + params.vao.thickness)
     };
-    z > threshold && s.screen_distance > params.cutoff
+    L::and(z.gt(threshold), s.screen_distance.gt(L::splat(params.cutoff)))
 }
 
 /// Object-space z and visibility of sample `s` from the primary depth (spec §4.2–§4.3); with
@@ -45,34 +43,37 @@ pub fn needs_refinement(z: f32, s: &LineSample, frame: &PixelFrame, params: &Sva
 /// so pass 2 subtracts exactly what pass 1 added — the reference's pass 2 skips the second layer
 /// there, which breaks dual depth with a secondary source (spec §11 "Bug"); this is its fix.
 #[inline]
-pub fn primary_sample<G: GBuffer>(
+pub fn primary_sample<G: GBuffer, L: Lanes>(
     gbuffer: &G,
     depth2: &[f32],
     params: &SvaoParams,
-    frame: &PixelFrame,
-    s: &LineSample,
-) -> (f32, f32) {
+    frame: &PixelFrame<L>,
+    s: &LineSample<L>,
+) -> (L, L) {
     let view = &params.vao.view;
-    let (mut z, mut v) = depth_point_value(params, frame, s, texel_point(view, gbuffer.linear_depth(s.texel), s));
-    if params.dual != 0 && needs_refinement(z, s, frame, params) {
-        let (z2, v2) = depth_point_value(params, frame, s, texel_point(view, depth2[view.index(s.texel)], s));
-        v = combine(params, v, v2);
-        z = z.min(z2);
+    let (z, v) = depth_point_value(params, frame, s, texel_point(view, L::gather_depth(gbuffer, s.texel), s));
+    if params.dual == 0 {
+        return (z, v);
     }
-    (z, v)
+    let second = needs_refinement(z, s, frame, params);
+    let (vp, texel) = (*view, s.texel);
+    let d2 = L::gather(depth2, move |i| vp.index(L::texel_lane(texel, i)));
+    let (z2, v2) = depth_point_value(params, frame, s, texel_point(view, d2, s));
+    (L::select(second, z.min(z2), z), L::select(second, combine(params, v, v2), v))
 }
 
 /// View point of the depth value `d` at the sample's raster texel (unusable depths read as far).
 #[inline]
-fn texel_point(view: &crate::common::ViewParams, d: f32, s: &LineSample) -> Vec3 {
-    let d = if crate::common::math::is_valid_depth(d, view.far) { d } else { view.far };
-    view.uv_to_view(view.texel_uv(s.texel), d)
+fn texel_point<L: Lanes>(view: &crate::common::ViewParams, d: L, s: &LineSample<L>) -> L::V3 {
+    let d = L::select(is_valid_depth_lanes(d, view.far), d, L::splat(view.far));
+    let v = *view;
+    view.uv_to_view_lanes::<L>(L::texel_map(s.texel, move |t| v.texel_uv(t)), d)
 }
 
 /// Object-space z of a view point `d` and its per-sample value under the kernel: VAO
 /// visibility (spec §4.3) or HBAO+ occlusion (spec §4.5, unclamped radius in the falloff).
 #[inline]
-pub fn depth_point_value(params: &SvaoParams, frame: &PixelFrame, s: &LineSample, d: Vec3) -> (f32, f32) {
+pub fn depth_point_value<L: Lanes>(params: &SvaoParams, frame: &PixelFrame<L>, s: &LineSample<L>, d: L::V3) -> (L, L) {
     let z = object_z(frame, d);
     let value = if params.kernel == KERNEL_HBAO {
         hbao_occlusion(frame, s, d, params.vao.radius)
@@ -85,15 +86,15 @@ pub fn depth_point_value(params: &SvaoParams, frame: &PixelFrame, s: &LineSample
 /// Combine two depth points' values of one sample: min of visibility (VAO, spec §4.3) or max of
 /// occlusion (HBAO+, spec §4.5).
 #[inline]
-pub fn combine(params: &SvaoParams, a: f32, b: f32) -> f32 {
+pub fn combine<L: Lanes>(params: &SvaoParams, a: L, b: L) -> L {
     if params.kernel == KERNEL_HBAO { a.max(b) } else { a.min(b) }
 }
 
 /// A sample's value when nothing occludes it: the visible chord (VAO) or 0 (HBAO+); used for
 /// same-pixel samples and for dropped out-of-screen ones (spec §4.2, §9).
 #[inline]
-pub fn unoccluded_value(params: &SvaoParams, s: &LineSample) -> f32 {
-    if params.kernel == KERNEL_HBAO { 0.0 } else { unoccluded_visibility(s) }
+pub fn unoccluded_value<L: Lanes>(params: &SvaoParams, s: &LineSample<L>) -> L {
+    if params.kernel == KERNEL_HBAO { L::splat(0.0) } else { unoccluded_visibility(s) }
 }
 
 /// Starting value of a dropped out-of-screen sample in pass 2 (spec §9): 1 (VAO, then min with
@@ -146,55 +147,106 @@ pub fn pass1_pixel<G: GBuffer, A: AtomicU32Buffer, B: AtomicU32Buffer>(
     ray_max: &mut B,
 ) -> Pass1Pixel {
     let vao = &params.vao;
-    let view = &vao.view;
-    let frame = match setup_pixel(gbuffer, view, vao.radius, vao.max_screen_radius, p) {
+    let frame = match setup_pixel(gbuffer, &vao.view, vao.radius, vao.max_screen_radius, p) {
         Some(f) => f,
         None => return Pass1Pixel { ao: 1.0, mask: 0 },
     };
-    let sd = params.secondary == Secondary::StochasticDepth as u32;
-    let traced = params.secondary == Secondary::Raytraced as u32;
     let distance = frame.position.length();
-    let samples = params.samples();
     let mut sum = 0.0;
     let mut mask = 0u32;
     let mut i = 0;
-    while i < samples {
-        let s = line_sample_of(&frame, view, i, samples, params.kernel);
-        if s.valid {
-            if s.same_pixel {
-                sum += unoccluded_value(params, &s);
-            } else {
-                let (mut z, v) = primary_sample(gbuffer, depth2, params, &frame, &s);
-                sum += v;
-                // Out-of-screen samples are always refined: Ray-SVAO traces them, the SD map
-                // covers them with its guard band (spec §5 "force").
-                let force = !s.in_screen && (traced || (sd && params.sd_guard > 0));
-                if force && sd {
-                    z = f32::MAX;
-                }
-                if params.secondary != Secondary::Disabled as u32 && (force || needs_refinement(z, &s, &frame, params))
-                {
-                    mask |= 1 << i;
-                    if sd {
-                        let q = params.sd_index(sd_pixel(s.uv, params));
-                        if params.interval != 0 {
-                            // Euclidean camera distances `|P| − z` (spec §5, uncorrected).
-                            let far_end = if params.kernel == KERNEL_HBAO {
-                                z.min(s.half_chord)
-                            } else {
-                                z.min((1.0 + vao.thickness) * frame.radius + s.half_chord)
-                            };
-                            ray_min.atomic_min(q, ordered_bits(distance - far_end));
-                            ray_max.atomic_max(q, ordered_bits(distance - s.sphere_end));
-                        } else {
-                            ray_max.atomic_max(q, 1);
-                        }
-                    }
-                }
-            }
+    while i < params.samples() {
+        let r = pass1_sample(gbuffer, depth2, params, &frame, i);
+        sum += r.value;
+        if r.flagged {
+            mask |= 1 << i;
+            let s = &r.sample;
+            record_interval(params, s.uv, r.z, s.half_chord, s.sphere_end, frame.radius, distance, ray_min, ray_max);
         }
         i += 1;
     }
+    pass1_finish(params, sum, mask)
+}
+
+/// What pass 1 learns from sample `i` of one pixel or of `L::LANES` pixels (spec §5).
+#[derive(Copy, Clone)]
+pub struct Pass1Sample<L: Lanes = f32> {
+    pub sample: LineSample<L>,
+    /// Its term of the sum: the primary-depth value, the unoccluded value in the pixel itself,
+    /// 0 when invalid.
+    pub value: L,
+    /// Object-space z of the primary depth (`f32::MAX` for a forced out-of-screen sample with
+    /// the SD map).
+    pub z: L,
+    /// The sample needs more depth (a refinement-mask bit).
+    pub flagged: L::Mask,
+}
+
+/// Sample `i` of pass 1 (spec §5): its value, and whether it is flagged. Out-of-screen samples
+/// are always refined: Ray-SVAO traces them, the SD map covers them with its guard band (spec
+/// §5 "force").
+#[inline]
+pub fn pass1_sample<G: GBuffer, L: Lanes>(
+    gbuffer: &G,
+    depth2: &[f32],
+    params: &SvaoParams,
+    frame: &PixelFrame<L>,
+    i: u32,
+) -> Pass1Sample<L> {
+    let sd = params.secondary == Secondary::StochasticDepth as u32;
+    let traced = params.secondary == Secondary::Raytraced as u32;
+    let zero = L::splat(0.0);
+    let s = line_sample_of(frame, &params.vao.view, i, params.samples(), params.kernel);
+    let (z, v) = primary_sample(gbuffer, depth2, params, frame, &s);
+    let value = L::select(s.valid, L::select(s.same_pixel, unoccluded_value(params, &s), v), zero);
+    let force = L::and(L::not(s.in_screen), L::mask_splat(traced || (sd && params.sd_guard > 0)));
+    let z = if sd { L::select(force, L::splat(f32::MAX), z) } else { z };
+    let refine = L::and(
+        L::mask_splat(params.secondary != Secondary::Disabled as u32),
+        L::or(force, needs_refinement(z, &s, frame, params)),
+    );
+    let flagged = L::and(L::and(s.valid, L::not(s.same_pixel)), refine);
+    Pass1Sample { sample: s, value, z, flagged }
+}
+
+/// A flagged sample's share of the SD map's ray interval at its SD texel (spec §5): with
+/// intervals, the Euclidean camera distances `|P| − z` of the sample's far end and `|P| − end`
+/// of its near end by atomic min / max (uncorrected); without, the texel is just marked.
+/// Nothing for other secondary sources.
+#[inline]
+#[allow(clippy::too_many_arguments)]
+pub fn record_interval<A: AtomicU32Buffer, B: AtomicU32Buffer>(
+    params: &SvaoParams,
+    uv: Vec2,
+    z: f32,
+    half_chord: f32,
+    sphere_end: f32,
+    radius: f32,
+    distance: f32,
+    ray_min: &mut A,
+    ray_max: &mut B,
+) {
+    if params.secondary != Secondary::StochasticDepth as u32 {
+        return;
+    }
+    let q = params.sd_index(sd_pixel(uv, params));
+    if params.interval != 0 {
+        let far_end = if params.kernel == KERNEL_HBAO {
+            z.min(half_chord)
+        } else {
+            z.min((1.0 + params.vao.thickness) * radius + half_chord)
+        };
+        ray_min.atomic_min(q, ordered_bits(distance - far_end));
+        ray_max.atomic_max(q, ordered_bits(distance - sphere_end));
+    } else {
+        ray_max.atomic_max(q, 1);
+    }
+}
+
+/// A pixel's pass-1 output from its sum and mask: final AO when nothing is flagged, else the
+/// accumulator as stored by a UNORM8 target (spec §5).
+#[inline]
+pub fn pass1_finish(params: &SvaoParams, sum: f32, mask: u32) -> Pass1Pixel {
     let a = accumulate(params, sum);
     if mask == 0 { Pass1Pixel { ao: finish(params, a), mask } } else { Pass1Pixel { ao: unorm8(a), mask } }
 }

@@ -1,16 +1,16 @@
 //! The VAO kernel math (spec svao-raysd §4). Shared by AO pass 1/2 of later techniques.
 
-#[allow(unused_imports)]
-use spirv_std::num_traits::Float;
-
+// f32 methods (`sqrt`, `abs`, `max`, `powf`) on SPIR-V come from `Lanes`, which implements them
+// with `num_traits::Float`.
 use crate::common::ViewParams;
 use crate::common::gbuffer_read::GBuffer;
-use crate::common::math::{clamp, is_valid_depth, sat, sign_nonzero};
+use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
+use crate::common::math::{clamp_lanes, is_valid_depth, is_valid_depth_lanes, sat, sign_nonzero};
 use crate::common::tables::{
     AO_SAMPLES, HBAO_HALF_CHORDS, HBAO_PDFS, HBAO_RADII, VAO_DIRECTIONS, VAO_HALF_CHORDS, VAO_RADII, kernel_entry,
     rotation_sin_cos,
 };
-use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
+use crate::glam::{UVec2, Vec3, vec3};
 
 /// Push constants of the VAO pass.
 #[repr(C)]
@@ -30,30 +30,53 @@ pub struct VaoParams {
     pub max_screen_radius: f32,
 }
 
-/// Everything §4.1 derives once per shaded pixel.
+/// Everything §4.1 derives once per shaded pixel (`L = f32`) or per `L::LANES` pixels.
 #[derive(Copy, Clone, Debug)]
-pub struct PixelFrame {
+pub struct PixelFrame<L: Lanes = f32> {
     /// The shaded pixel.
-    pub pixel: UVec2,
+    pub pixel: L::U2,
     /// Pixel centre uv.
-    pub uv: Vec2,
+    pub uv: L::V2,
     /// Sample radius after the screen clamp (`R_pix`, spec §4.1 step 3).
-    pub radius: f32,
+    pub radius: L,
     /// Screen radius in pixels after the clamp.
-    pub screen_radius: f32,
+    pub screen_radius: L,
     /// View-space position `P`.
-    pub position: Vec3,
+    pub position: L::V3,
     /// View normal facing the camera.
-    pub normal: Vec3,
+    pub normal: L::V3,
     /// `n̂ = −P/|P|`, axis of the sampling sphere.
-    pub axis: Vec3,
+    pub axis: L::V3,
     /// Tangent frame `t`, `b` of the sampling disc.
-    pub tangent: Vec3,
-    pub bitangent: Vec3,
+    pub tangent: L::V3,
+    pub bitangent: L::V3,
     /// Normal in sphere space `(N·t, N·b, N·n̂)`.
-    pub normal_sphere: Vec3,
+    pub normal_sphere: L::V3,
     /// `1/nz(N_o.z)`, the hemisphere-clipping divisor of spec §4.2, hoisted out of the samples.
-    pub inv_normal_z: f32,
+    pub inv_normal_z: L,
+}
+
+#[cfg(not(target_arch = "spirv"))]
+impl PixelFrame<crate::common::lanes::F32x8> {
+    /// The frames of eight pixels side by side (lane `i` from `each[i]`).
+    pub fn from_lanes(each: &[PixelFrame; 8]) -> Self {
+        use crate::common::lanes::{F32x8, V2x8, V3x8};
+        let f = |g: &dyn Fn(&PixelFrame) -> f32| F32x8::from_lanes(|i| g(&each[i]));
+        let v3 = |g: &dyn Fn(&PixelFrame) -> Vec3| V3x8 { x: f(&|p| g(p).x), y: f(&|p| g(p).y), z: f(&|p| g(p).z) };
+        PixelFrame {
+            pixel: each.map(|p| p.pixel),
+            uv: V2x8 { x: f(&|p| p.uv.x), y: f(&|p| p.uv.y) },
+            radius: f(&|p| p.radius),
+            screen_radius: f(&|p| p.screen_radius),
+            position: v3(&|p| p.position),
+            normal: v3(&|p| p.normal),
+            axis: v3(&|p| p.axis),
+            tangent: v3(&|p| p.tangent),
+            bitangent: v3(&|p| p.bitangent),
+            normal_sphere: v3(&|p| p.normal_sphere),
+            inv_normal_z: f(&|p| p.inv_normal_z),
+        }
+    }
 }
 
 /// Per-pixel setup of spec §4.1. `None` means "unshaded" (AO = 1): the depth is unusable or the
@@ -109,31 +132,31 @@ pub fn setup_pixel<G: GBuffer>(
     })
 }
 
-/// One VAO line sample (spec §4.2).
+/// One VAO line sample (spec §4.2), of one pixel (`L = f32`) or of `L::LANES` pixels.
 #[derive(Copy, Clone, Debug)]
-pub struct LineSample {
+pub struct LineSample<L: Lanes = f32> {
     /// False for an invalid sample (less than 10 % of its chord above the tangent plane): it
     /// contributes 0 and is never refined. (A flag rather than `Option`: rust-gpu 0.11 cannot
     /// copy an `Option` whose payload has a `bool` niche.)
-    pub valid: bool,
+    pub valid: L::Mask,
     /// Sphere half-chord `h`.
-    pub half_chord: f32,
+    pub half_chord: L,
     /// The sample's weight: `2h` for VAO, `0.9·(1 − ρ)^1.5` for HBAO+ (spec §4.2, §4.5).
-    pub pdf: f32,
+    pub pdf: L,
     /// Hemisphere-clipped chord end (in object-space z, towards the camera is positive).
-    pub sphere_end: f32,
+    pub sphere_end: L,
     /// View-space sample point `S = P + t·o.x + b·o.y` on the disc.
-    pub point: Vec3,
+    pub point: L::V3,
     /// Unsnapped, unclamped uv of the sample point `S`.
-    pub uv: Vec2,
+    pub uv: L::V2,
     /// Texel of the raster sample (`snap(saturate(uvS))`).
-    pub texel: UVec2,
+    pub texel: L::U2,
     /// `uvS ∈ [0,1]²`.
-    pub in_screen: bool,
+    pub in_screen: L::Mask,
     /// Unsnapped screen distance to the pixel in full-res pixels (`ssr`).
-    pub screen_distance: f32,
+    pub screen_distance: L,
     /// The raster sample falls into the shaded pixel itself.
-    pub same_pixel: bool,
+    pub same_pixel: L::Mask,
 }
 
 /// `nz(x) = sign(x)·max(|x|, 1e−4)` (spec §4.2).
@@ -149,7 +172,7 @@ pub const KERNEL_HBAO: u32 = 1;
 
 /// Build sample `i` of the 8-sample VAO kernel (spec §4.2).
 #[inline]
-pub fn line_sample(frame: &PixelFrame, view: &ViewParams, i: u32) -> LineSample {
+pub fn line_sample<L: Lanes>(frame: &PixelFrame<L>, view: &ViewParams, i: u32) -> LineSample<L> {
     line_sample_of(frame, view, i, AO_SAMPLES, KERNEL_VAO)
 }
 
@@ -159,101 +182,123 @@ pub fn line_sample(frame: &PixelFrame, view: &ViewParams, i: u32) -> LineSample 
 /// §4.2, §4.5); every per-sample constant comes from the tables at
 /// [`kernel_entry`]`(samples, i)`.
 #[inline]
-pub fn line_sample_of(frame: &PixelFrame, view: &ViewParams, i: u32, samples: u32, kernel: u32) -> LineSample {
+pub fn line_sample_of<L: Lanes>(
+    frame: &PixelFrame<L>,
+    view: &ViewParams,
+    i: u32,
+    samples: u32,
+    kernel: u32,
+) -> LineSample<L> {
     let m = kernel_entry(samples, i);
     let dir = VAO_DIRECTIONS[m];
     let hbao = kernel == KERNEL_HBAO;
     let rho = if hbao { HBAO_RADII[m] } else { VAO_RADII[m] };
-    let offset = rho * frame.radius * vec2(dir[0], dir[1]);
-    let half_chord = if hbao { HBAO_HALF_CHORDS[m] } else { VAO_HALF_CHORDS[m] } * frame.radius;
-    let pdf = if hbao { HBAO_PDFS[m] } else { 2.0 * half_chord };
-    let zc = -offset.dot(vec2(frame.normal_sphere.x, frame.normal_sphere.y)) * frame.inv_normal_z;
-    let sphere_end = clamp(zc, -half_chord, half_chord);
+    let scale = frame.radius * rho;
+    let (ox, oy) = (scale * dir[0], scale * dir[1]);
+    let half_chord = frame.radius * if hbao { HBAO_HALF_CHORDS[m] } else { VAO_HALF_CHORDS[m] };
+    let pdf = if hbao { L::splat(HBAO_PDFS[m]) } else { half_chord * 2.0 };
+    let ns = frame.normal_sphere;
+    let zc = -(ox * ns.x() + oy * ns.y()) * frame.inv_normal_z;
+    let sphere_end = clamp_lanes(zc, -half_chord, half_chord);
     // (h − end)/(2h) > 0.1, without the division.
-    let valid = half_chord - sphere_end > 0.2 * half_chord;
-    let s = frame.position + frame.tangent * offset.x + frame.bitangent * offset.y;
-    let uv = view.view_to_uv(s);
-    let in_screen = uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0;
-    let texel = view.texel_of_uv(uv);
-    let screen_distance = ((frame.uv - uv) * view.res).length();
+    let valid = (half_chord - sphere_end).gt(half_chord * 0.2);
+    let s = frame.position + frame.tangent * ox + frame.bitangent * oy;
+    let uv = view.view_to_uv_lanes::<L>(s);
+    let (zero, one) = (L::splat(0.0), L::splat(1.0));
+    let in_screen = L::and(L::and(uv.x().ge(zero), uv.x().le(one)), L::and(uv.y().ge(zero), uv.y().le(one)));
+    let v = *view;
+    let texel = L::texel_of(uv, move |uv| v.texel_of_uv(uv));
+    let d = frame.uv - uv;
+    let screen_distance = L::V2::new(d.x() * view.res.x, d.y() * view.res.y).length();
     // Spec §4.2 tests |uv − uvR| < 0.9/res on both axes; both are texel centres, so this holds
     // exactly when the raster sample's texel is the shaded pixel.
-    let same_pixel = texel.x == frame.pixel.x && texel.y == frame.pixel.y;
+    let same_pixel = L::texel_eq(texel, frame.pixel);
     LineSample { valid, half_chord, pdf, sphere_end, point: s, uv, texel, in_screen, screen_distance, same_pixel }
 }
 
 /// Object-space z of a view point: `oz(D) = dot(D − P, n̂)` (spec §1; larger = closer to the camera).
 #[inline]
-pub fn object_z(frame: &PixelFrame, d: Vec3) -> f32 {
+pub fn object_z<L: Lanes>(frame: &PixelFrame<L>, d: L::V3) -> L {
     (d - frame.position).dot(frame.axis)
 }
 
 /// Halo visibility of one depth point at object-space `z` (spec §4.3, SVAO paper §3.3):
 /// `v(z) = [max(h − max(end, z), 0) + sat((z − (1+τ)R)/h)·(h − end)] / (2h)`.
 #[inline]
-pub fn halo_visibility(z: f32, s: &LineSample, radius: f32, thickness: f32) -> f32 {
+pub fn halo_visibility<L: Lanes>(z: L, s: &LineSample<L>, radius: L, thickness: f32) -> L {
     let h = s.half_chord;
-    let inv_h = 1.0 / h;
-    let inside = (h - s.sphere_end.max(z)).max(0.0);
-    let halo = sat((z - (1.0 + thickness) * radius) * inv_h) * (h - s.sphere_end);
-    (inside + halo) * (0.5 * inv_h)
+    let inv_h = L::splat(1.0) / h;
+    let inside = (h - s.sphere_end.max(z)).max(L::splat(0.0));
+    let halo = sat((z - radius * (1.0 + thickness)) * inv_h) * (h - s.sphere_end);
+    (inside + halo) * (inv_h * 0.5)
 }
 
 /// HBAO+ occlusion of one depth point `d` (view space) for sample `s` (spec §4.5):
 /// `V = D − P`, `k = sat(N·V/|V| − 0.1)·sat(1 − |V|²/R_g²)` with the UNCLAMPED radius `R_g`,
 /// `o = sat(k/pdf)`. Points combine by max; 0 = unoccluded.
 #[inline]
-pub fn hbao_occlusion(frame: &PixelFrame, s: &LineSample, d: Vec3, unclamped_radius: f32) -> f32 {
+pub fn hbao_occlusion<L: Lanes>(frame: &PixelFrame<L>, s: &LineSample<L>, d: L::V3, unclamped_radius: f32) -> L {
     let v = d - frame.position;
     let len2 = v.dot(v);
-    if len2 <= 0.0 {
-        return 0.0;
-    }
-    let k = sat(frame.normal.dot(v) / len2.sqrt() - 0.1) * sat(1.0 - len2 / (unclamped_radius * unclamped_radius));
-    sat(k / s.pdf)
+    let k = sat(frame.normal.dot(v) / len2.sqrt() - 0.1) * sat(-(len2 / (unclamped_radius * unclamped_radius)) + 1.0);
+    L::select(len2.gt(L::splat(0.0)), sat(k / s.pdf), L::splat(0.0))
 }
 
 /// Visibility of a sample whose raster position falls into the shaded pixel: fully visible,
 /// `(h − end)/pdf` (spec §4.2 "same pixel").
 #[inline]
-pub fn unoccluded_visibility(s: &LineSample) -> f32 {
-    (s.half_chord - s.sphere_end) / (2.0 * s.half_chord)
+pub fn unoccluded_visibility<L: Lanes>(s: &LineSample<L>) -> L {
+    (s.half_chord - s.sphere_end) / (s.half_chord * 2.0)
 }
 
 /// Object-space z of the depth-buffer surface at the sample's raster texel. Unusable depths read
 /// as the far plane (nothing there occludes).
 #[inline]
-pub fn primary_object_z<G: GBuffer>(gbuffer: &G, view: &ViewParams, frame: &PixelFrame, s: &LineSample) -> f32 {
-    let mut d = gbuffer.linear_depth(s.texel);
-    if !is_valid_depth(d, view.far) {
-        d = view.far;
-    }
-    object_z(frame, view.uv_to_view(view.texel_uv(s.texel), d))
+pub fn primary_object_z<G: GBuffer, L: Lanes>(
+    gbuffer: &G,
+    view: &ViewParams,
+    frame: &PixelFrame<L>,
+    s: &LineSample<L>,
+) -> L {
+    let d = L::gather_depth(gbuffer, s.texel);
+    let d = L::select(is_valid_depth_lanes(d, view.far), d, L::splat(view.far));
+    let v = *view;
+    let uv = L::texel_map(s.texel, move |t| v.texel_uv(t));
+    object_z(frame, view.uv_to_view_lanes::<L>(uv, d))
 }
 
 /// Final AO of one pixel with plain VAO on a single depth layer (spec §4, §5 with secondary
 /// mode Disabled): `A = (2/8)·Σ v_i`, `AO = sat(A)^exponent`, 1 = unoccluded.
 #[inline]
 pub fn vao_pixel<G: GBuffer>(gbuffer: &G, params: &VaoParams, p: UVec2) -> f32 {
+    match setup_pixel(gbuffer, &params.view, params.radius, params.max_screen_radius, p) {
+        Some(frame) => vao_finish(params, vao_visibility_sum(gbuffer, params, &frame)),
+        None => 1.0,
+    }
+}
+
+/// `Σ v_i` over the 8 samples of spec §4.2–§4.3 for one pixel or `L::LANES` pixels: invalid
+/// samples add 0, a sample in the shaded pixel itself is unoccluded.
+#[inline]
+pub fn vao_visibility_sum<G: GBuffer, L: Lanes>(gbuffer: &G, params: &VaoParams, frame: &PixelFrame<L>) -> L {
     let view = &params.view;
-    let frame = match setup_pixel(gbuffer, view, params.radius, params.max_screen_radius, p) {
-        Some(f) => f,
-        None => return 1.0,
-    };
-    let mut sum = 0.0;
+    let zero = L::splat(0.0);
+    let mut sum = zero;
     let mut i = 0;
     while i < AO_SAMPLES {
-        let s = line_sample(&frame, view, i);
-        if s.valid {
-            sum += if s.same_pixel {
-                unoccluded_visibility(&s)
-            } else {
-                let z = primary_object_z(gbuffer, view, &frame, &s);
-                halo_visibility(z, &s, frame.radius, params.thickness)
-            };
-        }
+        let s = line_sample(frame, view, i);
+        let z = primary_object_z(gbuffer, view, frame, &s);
+        let v =
+            L::select(s.same_pixel, unoccluded_visibility(&s), halo_visibility(z, &s, frame.radius, params.thickness));
+        sum = sum + L::select(s.valid, v, zero);
         i += 1;
     }
+    sum
+}
+
+/// `AO = sat((2/8)·Σ v_i)^exponent` (spec §5).
+#[inline]
+pub fn vao_finish(params: &VaoParams, sum: f32) -> f32 {
     let a = (2.0 / AO_SAMPLES as f32) * sum;
-    sat(a).powf(params.exponent)
+    Lanes::powf(sat(a), params.exponent)
 }

@@ -1,0 +1,597 @@
+//! Lane-generic arithmetic, so that one kernel source runs one pixel per invocation on the GPU
+//! and several pixels per call on the CPU (issue 14: SIMD across pixels without a second copy
+//! of any kernel).
+//!
+//! A kernel function written over `L: Lanes` uses `L` where it used `f32`, `L::V2`/`L::V3`
+//! where it used `Vec2`/`Vec3`, and [`Lanes::select`] where it branched on a per-pixel value.
+//! With `L = f32` (SPIR-V and scalar CPU code) the types are `f32`, glam's `Vec2` and `Vec3`,
+//! and every operation is the one the scalar code used, so nothing changes bit for bit. On the
+//! CPU, [`F32x8`] holds eight pixels' values in one 256-bit vector (`wide::f32x8`); its
+//! transcendentals are `wide`'s polynomials, within a few ulp of libm's.
+
+#[allow(unused_imports)]
+use spirv_std::num_traits::Float;
+
+use crate::common::gbuffer_read::GBuffer;
+use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
+use core::ops::{Add, Div, Mul, Neg, Sub};
+
+/// A number per lane: `f32` (one pixel) or a vector of pixels' values.
+pub trait Lanes:
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + Add<f32, Output = Self>
+    + Sub<f32, Output = Self>
+    + Mul<f32, Output = Self>
+    + Div<f32, Output = Self>
+{
+    /// Pixels per value.
+    const LANES: usize;
+    /// A per-lane condition.
+    type Mask: Copy;
+    /// A texel (or pixel) per lane: `UVec2` for `f32`.
+    type U2: Copy;
+    /// Two-component vector of lanes (`Vec2` for `f32`).
+    type V2: LaneVec2<Self>;
+    /// Three-component vector of lanes (`Vec3` for `f32`).
+    type V3: LaneVec3<Self>;
+
+    fn splat(v: f32) -> Self;
+    /// The value whose lane `i` is `f(i)`.
+    fn from_lanes(f: impl Fn(usize) -> f32) -> Self;
+    /// Lane `i`.
+    fn lane(self, i: usize) -> f32;
+    /// `data[index(i)]` in lane `i` (a gather; `index` must capture values only, no slices:
+    /// SPIR-V has no pointers to pointers).
+    fn gather(data: &[f32], index: impl Fn(usize) -> usize) -> Self;
+    fn sqrt(self) -> Self;
+    fn abs(self) -> Self;
+    /// `max` and `min` return `other` where `self` is NaN (as `f32::max`/`min` do for one NaN).
+    fn max(self, other: Self) -> Self;
+    fn min(self, other: Self) -> Self;
+    fn sin(self) -> Self;
+    fn cos(self) -> Self;
+    fn log2(self) -> Self;
+    fn powf(self, p: f32) -> Self;
+    fn floor(self) -> Self;
+    /// Round half to even.
+    fn round_even(self) -> Self;
+    /// The float whose bits are `f(bits(x))`, per lane.
+    fn map_bits(self, f: impl Fn(u32) -> u32) -> Self;
+    fn gt(self, other: Self) -> Self::Mask;
+    fn lt(self, other: Self) -> Self::Mask;
+    fn ge(self, other: Self) -> Self::Mask;
+    fn le(self, other: Self) -> Self::Mask;
+    /// `if m { a } else { b }` per lane.
+    fn select(m: Self::Mask, a: Self, b: Self) -> Self;
+    fn and(a: Self::Mask, b: Self::Mask) -> Self::Mask;
+    fn or(a: Self::Mask, b: Self::Mask) -> Self::Mask;
+    fn not(a: Self::Mask) -> Self::Mask;
+    /// The same condition in every lane.
+    fn mask_splat(b: bool) -> Self::Mask;
+    /// Lane `i` of a condition.
+    fn mask_lane(m: Self::Mask, i: usize) -> bool;
+    /// Lane `i`'s texel.
+    fn texel_lane(t: Self::U2, i: usize) -> UVec2;
+    /// The texel `f(uv)` per lane (`f` captures values only, see [`Lanes::gather`]).
+    fn texel_of(uv: Self::V2, f: impl Fn(Vec2) -> UVec2) -> Self::U2;
+    /// `f(texel)` per lane.
+    fn texel_map(t: Self::U2, f: impl Fn(UVec2) -> Vec2) -> Self::V2;
+    fn texel_eq(a: Self::U2, b: Self::U2) -> Self::Mask;
+    /// Linear depth of the G-buffer at each lane's texel.
+    fn gather_depth<G: GBuffer>(g: &G, t: Self::U2) -> Self;
+}
+
+/// Two lanes-valued components.
+pub trait LaneVec2<L>: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<L, Output = Self> {
+    fn new(x: L, y: L) -> Self;
+    fn x(self) -> L;
+    fn y(self) -> L;
+    fn length(self) -> L;
+}
+
+/// Three lanes-valued components.
+pub trait LaneVec3<L>:
+    Copy + Add<Output = Self> + Sub<Output = Self> + Neg<Output = Self> + Mul<L, Output = Self> + Div<L, Output = Self>
+{
+    fn new(x: L, y: L, z: L) -> Self;
+    fn x(self) -> L;
+    fn y(self) -> L;
+    fn z(self) -> L;
+    fn dot(self, o: Self) -> L;
+    fn cross(self, o: Self) -> Self;
+    fn length(self) -> L;
+    /// `v·(1/|v|)`.
+    fn normalize(self) -> Self;
+}
+
+impl Lanes for f32 {
+    const LANES: usize = 1;
+    type Mask = bool;
+    type U2 = UVec2;
+    type V2 = Vec2;
+    type V3 = Vec3;
+
+    #[inline]
+    fn splat(v: f32) -> Self {
+        v
+    }
+    #[inline]
+    fn from_lanes(f: impl Fn(usize) -> f32) -> Self {
+        f(0)
+    }
+    #[inline]
+    fn lane(self, _i: usize) -> f32 {
+        self
+    }
+    #[inline]
+    fn gather(data: &[f32], index: impl Fn(usize) -> usize) -> Self {
+        data[index(0)]
+    }
+    #[inline]
+    fn sqrt(self) -> Self {
+        Float::sqrt(self)
+    }
+    #[inline]
+    fn abs(self) -> Self {
+        Float::abs(self)
+    }
+    #[inline]
+    fn max(self, other: Self) -> Self {
+        Float::max(self, other)
+    }
+    #[inline]
+    fn min(self, other: Self) -> Self {
+        Float::min(self, other)
+    }
+    #[inline]
+    fn sin(self) -> Self {
+        Float::sin(self)
+    }
+    #[inline]
+    fn cos(self) -> Self {
+        Float::cos(self)
+    }
+    #[inline]
+    fn log2(self) -> Self {
+        Float::log2(self)
+    }
+    #[inline]
+    fn powf(self, p: f32) -> Self {
+        Float::powf(self, p)
+    }
+    #[inline]
+    fn floor(self) -> Self {
+        crate::common::math::floor(self)
+    }
+    #[inline]
+    fn round_even(self) -> Self {
+        crate::common::denoise_terms::round_even(self)
+    }
+    #[inline]
+    fn map_bits(self, f: impl Fn(u32) -> u32) -> Self {
+        f32::from_bits(f(self.to_bits()))
+    }
+    #[inline]
+    fn gt(self, other: Self) -> bool {
+        self > other
+    }
+    #[inline]
+    fn lt(self, other: Self) -> bool {
+        self < other
+    }
+    #[inline]
+    fn ge(self, other: Self) -> bool {
+        self >= other
+    }
+    #[inline]
+    fn le(self, other: Self) -> bool {
+        self <= other
+    }
+    #[inline]
+    fn select(m: bool, a: Self, b: Self) -> Self {
+        if m { a } else { b }
+    }
+    #[inline]
+    fn and(a: bool, b: bool) -> bool {
+        a && b
+    }
+    #[inline]
+    fn or(a: bool, b: bool) -> bool {
+        a || b
+    }
+    #[inline]
+    fn not(a: bool) -> bool {
+        !a
+    }
+    #[inline]
+    fn mask_splat(b: bool) -> bool {
+        b
+    }
+    #[inline]
+    fn mask_lane(m: bool, _i: usize) -> bool {
+        m
+    }
+    #[inline]
+    fn texel_lane(t: UVec2, _i: usize) -> UVec2 {
+        t
+    }
+    #[inline]
+    fn texel_of(uv: Vec2, f: impl Fn(Vec2) -> UVec2) -> UVec2 {
+        f(uv)
+    }
+    #[inline]
+    fn texel_map(t: UVec2, f: impl Fn(UVec2) -> Vec2) -> Vec2 {
+        f(t)
+    }
+    #[inline]
+    fn texel_eq(a: UVec2, b: UVec2) -> bool {
+        a.x == b.x && a.y == b.y
+    }
+    #[inline]
+    fn gather_depth<G: GBuffer>(g: &G, t: UVec2) -> Self {
+        g.linear_depth(t)
+    }
+}
+
+impl LaneVec2<f32> for Vec2 {
+    #[inline]
+    fn new(x: f32, y: f32) -> Self {
+        vec2(x, y)
+    }
+    #[inline]
+    fn x(self) -> f32 {
+        self.x
+    }
+    #[inline]
+    fn y(self) -> f32 {
+        self.y
+    }
+    #[inline]
+    fn length(self) -> f32 {
+        Vec2::length(self)
+    }
+}
+
+impl LaneVec3<f32> for Vec3 {
+    #[inline]
+    fn new(x: f32, y: f32, z: f32) -> Self {
+        vec3(x, y, z)
+    }
+    #[inline]
+    fn x(self) -> f32 {
+        self.x
+    }
+    #[inline]
+    fn y(self) -> f32 {
+        self.y
+    }
+    #[inline]
+    fn z(self) -> f32 {
+        self.z
+    }
+    #[inline]
+    fn dot(self, o: Self) -> f32 {
+        Vec3::dot(self, o)
+    }
+    #[inline]
+    fn cross(self, o: Self) -> Self {
+        Vec3::cross(self, o)
+    }
+    #[inline]
+    fn length(self) -> f32 {
+        Vec3::length(self)
+    }
+    #[inline]
+    fn normalize(self) -> Self {
+        Vec3::normalize(self)
+    }
+}
+
+#[cfg(not(target_arch = "spirv"))]
+pub use x8::{F32x8, V2x8, V3x8};
+
+/// Eight lanes on the CPU.
+#[cfg(not(target_arch = "spirv"))]
+mod x8 {
+    use super::{LaneVec2, LaneVec3, Lanes};
+    use crate::common::gbuffer_read::GBuffer;
+    use crate::glam::{UVec2, Vec2};
+    use core::ops::{Add, Div, Mul, Neg, Sub};
+    use wide::f32x8;
+
+    /// Eight pixels' values of one `f32` variable.
+    #[derive(Copy, Clone, Debug, PartialEq)]
+    pub struct F32x8(pub f32x8);
+
+    macro_rules! binary {
+        ($tr:ident, $f:ident, $op:tt) => {
+            impl $tr for F32x8 {
+                type Output = F32x8;
+                #[inline(always)]
+                fn $f(self, o: F32x8) -> F32x8 {
+                    F32x8(self.0 $op o.0)
+                }
+            }
+            impl $tr<f32> for F32x8 {
+                type Output = F32x8;
+                #[inline(always)]
+                fn $f(self, o: f32) -> F32x8 {
+                    F32x8(self.0 $op f32x8::splat(o))
+                }
+            }
+        };
+    }
+    binary!(Add, add, +);
+    binary!(Sub, sub, -);
+    binary!(Mul, mul, *);
+    binary!(Div, div, /);
+
+    impl Neg for F32x8 {
+        type Output = F32x8;
+        #[inline(always)]
+        fn neg(self) -> F32x8 {
+            F32x8(-self.0)
+        }
+    }
+
+    impl Lanes for F32x8 {
+        const LANES: usize = 8;
+        type Mask = f32x8;
+        type U2 = [UVec2; 8];
+        type V2 = V2x8;
+        type V3 = V3x8;
+
+        #[inline(always)]
+        fn splat(v: f32) -> Self {
+            F32x8(f32x8::splat(v))
+        }
+        #[inline(always)]
+        fn from_lanes(f: impl Fn(usize) -> f32) -> Self {
+            F32x8(f32x8::new(core::array::from_fn(f)))
+        }
+        #[inline(always)]
+        fn lane(self, i: usize) -> f32 {
+            self.0.as_array()[i]
+        }
+        #[inline(always)]
+        fn gather(data: &[f32], index: impl Fn(usize) -> usize) -> Self {
+            F32x8(f32x8::new(core::array::from_fn(|i| data[index(i)])))
+        }
+        #[inline(always)]
+        fn sqrt(self) -> Self {
+            F32x8(self.0.sqrt())
+        }
+        #[inline(always)]
+        fn abs(self) -> Self {
+            F32x8(self.0.abs())
+        }
+        #[inline(always)]
+        fn max(self, o: Self) -> Self {
+            F32x8(self.0.max(o.0))
+        }
+        #[inline(always)]
+        fn min(self, o: Self) -> Self {
+            F32x8(self.0.min(o.0))
+        }
+        #[inline(always)]
+        fn sin(self) -> Self {
+            F32x8(self.0.sin_cos().0)
+        }
+        #[inline(always)]
+        fn cos(self) -> Self {
+            F32x8(self.0.sin_cos().1)
+        }
+        #[inline(always)]
+        fn log2(self) -> Self {
+            F32x8(self.0.ln() * f32x8::splat(core::f32::consts::LOG2_E))
+        }
+        #[inline(always)]
+        fn powf(self, p: f32) -> Self {
+            F32x8(self.0.powf_simd(f32x8::splat(p)))
+        }
+        #[inline(always)]
+        fn floor(self) -> Self {
+            F32x8(self.0.floor())
+        }
+        #[inline(always)]
+        fn round_even(self) -> Self {
+            F32x8(self.0.round_ties_even())
+        }
+        #[inline(always)]
+        fn map_bits(self, f: impl Fn(u32) -> u32) -> Self {
+            let a = self.0.to_array();
+            F32x8(f32x8::new(core::array::from_fn(|i| f32::from_bits(f(a[i].to_bits())))))
+        }
+        #[inline(always)]
+        fn gt(self, o: Self) -> f32x8 {
+            self.0.simd_gt(o.0)
+        }
+        #[inline(always)]
+        fn lt(self, o: Self) -> f32x8 {
+            self.0.simd_lt(o.0)
+        }
+        #[inline(always)]
+        fn ge(self, o: Self) -> f32x8 {
+            self.0.simd_ge(o.0)
+        }
+        #[inline(always)]
+        fn le(self, o: Self) -> f32x8 {
+            self.0.simd_le(o.0)
+        }
+        #[inline(always)]
+        fn select(m: f32x8, a: Self, b: Self) -> Self {
+            F32x8(m.bitselect(a.0, b.0))
+        }
+        #[inline(always)]
+        fn and(a: f32x8, b: f32x8) -> f32x8 {
+            a & b
+        }
+        #[inline(always)]
+        fn or(a: f32x8, b: f32x8) -> f32x8 {
+            a | b
+        }
+        #[inline(always)]
+        fn not(a: f32x8) -> f32x8 {
+            !a
+        }
+        #[inline(always)]
+        fn mask_splat(b: bool) -> f32x8 {
+            f32x8::splat(if b { f32::from_bits(u32::MAX) } else { 0.0 })
+        }
+        #[inline(always)]
+        fn mask_lane(m: f32x8, i: usize) -> bool {
+            m.as_array()[i].to_bits() != 0
+        }
+        #[inline(always)]
+        fn texel_lane(t: [UVec2; 8], i: usize) -> UVec2 {
+            t[i]
+        }
+        #[inline(always)]
+        fn texel_of(uv: V2x8, f: impl Fn(Vec2) -> UVec2) -> [UVec2; 8] {
+            core::array::from_fn(|i| f(Vec2::new(uv.x.lane(i), uv.y.lane(i))))
+        }
+        #[inline(always)]
+        fn texel_map(t: [UVec2; 8], f: impl Fn(UVec2) -> Vec2) -> V2x8 {
+            let v: [Vec2; 8] = t.map(f);
+            V2x8 { x: F32x8::from_lanes(|i| v[i].x), y: F32x8::from_lanes(|i| v[i].y) }
+        }
+        #[inline(always)]
+        fn texel_eq(a: [UVec2; 8], b: [UVec2; 8]) -> f32x8 {
+            f32x8::new(core::array::from_fn(|i| if a[i] == b[i] { f32::from_bits(u32::MAX) } else { 0.0 }))
+        }
+        #[inline(always)]
+        fn gather_depth<G: GBuffer>(g: &G, t: [UVec2; 8]) -> Self {
+            F32x8::from_lanes(|i| g.linear_depth(t[i]))
+        }
+    }
+
+    /// Eight `Vec2`s.
+    #[derive(Copy, Clone, Debug)]
+    pub struct V2x8 {
+        pub x: F32x8,
+        pub y: F32x8,
+    }
+
+    impl Add for V2x8 {
+        type Output = Self;
+        #[inline(always)]
+        fn add(self, o: Self) -> Self {
+            V2x8 { x: self.x + o.x, y: self.y + o.y }
+        }
+    }
+    impl Sub for V2x8 {
+        type Output = Self;
+        #[inline(always)]
+        fn sub(self, o: Self) -> Self {
+            V2x8 { x: self.x - o.x, y: self.y - o.y }
+        }
+    }
+    impl Mul<F32x8> for V2x8 {
+        type Output = Self;
+        #[inline(always)]
+        fn mul(self, s: F32x8) -> Self {
+            V2x8 { x: self.x * s, y: self.y * s }
+        }
+    }
+    impl LaneVec2<F32x8> for V2x8 {
+        #[inline(always)]
+        fn new(x: F32x8, y: F32x8) -> Self {
+            V2x8 { x, y }
+        }
+        #[inline(always)]
+        fn x(self) -> F32x8 {
+            self.x
+        }
+        #[inline(always)]
+        fn y(self) -> F32x8 {
+            self.y
+        }
+        #[inline(always)]
+        fn length(self) -> F32x8 {
+            (self.x * self.x + self.y * self.y).sqrt()
+        }
+    }
+
+    /// Eight `Vec3`s.
+    #[derive(Copy, Clone, Debug)]
+    pub struct V3x8 {
+        pub x: F32x8,
+        pub y: F32x8,
+        pub z: F32x8,
+    }
+
+    impl Add for V3x8 {
+        type Output = Self;
+        #[inline(always)]
+        fn add(self, o: Self) -> Self {
+            V3x8 { x: self.x + o.x, y: self.y + o.y, z: self.z + o.z }
+        }
+    }
+    impl Sub for V3x8 {
+        type Output = Self;
+        #[inline(always)]
+        fn sub(self, o: Self) -> Self {
+            V3x8 { x: self.x - o.x, y: self.y - o.y, z: self.z - o.z }
+        }
+    }
+    impl Neg for V3x8 {
+        type Output = Self;
+        #[inline(always)]
+        fn neg(self) -> Self {
+            V3x8 { x: -self.x, y: -self.y, z: -self.z }
+        }
+    }
+    impl Mul<F32x8> for V3x8 {
+        type Output = Self;
+        #[inline(always)]
+        fn mul(self, s: F32x8) -> Self {
+            V3x8 { x: self.x * s, y: self.y * s, z: self.z * s }
+        }
+    }
+    impl Div<F32x8> for V3x8 {
+        type Output = Self;
+        #[inline(always)]
+        fn div(self, s: F32x8) -> Self {
+            V3x8 { x: self.x / s, y: self.y / s, z: self.z / s }
+        }
+    }
+    impl LaneVec3<F32x8> for V3x8 {
+        #[inline(always)]
+        fn new(x: F32x8, y: F32x8, z: F32x8) -> Self {
+            V3x8 { x, y, z }
+        }
+        #[inline(always)]
+        fn x(self) -> F32x8 {
+            self.x
+        }
+        #[inline(always)]
+        fn y(self) -> F32x8 {
+            self.y
+        }
+        #[inline(always)]
+        fn z(self) -> F32x8 {
+            self.z
+        }
+        #[inline(always)]
+        fn dot(self, o: Self) -> F32x8 {
+            self.x * o.x + self.y * o.y + self.z * o.z
+        }
+        #[inline(always)]
+        fn cross(self, o: Self) -> Self {
+            V3x8 { x: self.y * o.z - o.y * self.z, y: self.z * o.x - o.z * self.x, z: self.x * o.y - o.x * self.y }
+        }
+        #[inline(always)]
+        fn length(self) -> F32x8 {
+            self.dot(self).sqrt()
+        }
+        #[inline(always)]
+        fn normalize(self) -> Self {
+            self * (F32x8::splat(1.0) / self.length())
+        }
+    }
+}
