@@ -1,9 +1,11 @@
 //! Poisson-disk ray-marched SSAO on the CPU (spec gtao-raymarch-hybrid §3): the shader crate's
-//! per-pixel function over the full target.
+//! per-pixel setup and finish per pixel, its directions' marches on eight pixels at once.
 
-use aokit_shaders::glam::{Vec2, uvec2};
-use aokit_shaders::raymarch::{RaymarchParams, raymarch_pixel};
-use rayon::prelude::*;
+use aokit_shaders::common::lanes::{F32x8, Lanes};
+use aokit_shaders::glam::{UVec2, Vec2, uvec2};
+use aokit_shaders::raymarch::{
+    MarchOrigin, RaymarchParams, RaymarchPixel, raymarch_finish, raymarch_setup, raymarch_sum, unshaded,
+};
 
 /// Visibility, denoiser terms and packed edges per pixel of the full target.
 pub fn run_raymarch(
@@ -13,13 +15,49 @@ pub fn run_raymarch(
     kernel: &[Vec2],
 ) -> (Vec<f32>, Vec<u32>, Vec<u32>) {
     let size = params.view.size();
-    let pixels: Vec<_> = (0..size.y)
-        .into_par_iter()
-        .flat_map_iter(|y| (0..size.x).map(move |x| uvec2(x, y)))
-        .map(|p| raymarch_pixel(params, depth, normals, kernel, p))
-        .collect();
+    let empty = RaymarchPixel { ao: 1.0, term: 0, edges: 0 };
+    let mut pixels = vec![empty; (size.x * size.y) as usize];
+    crate::screen::tiled_lanes(&mut pixels, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |p, out| {
+        raymarch_x8(params, depth, normals, kernel, p, out)
+    });
     let ao = pixels.iter().map(|o| o.ao).collect();
     let terms = pixels.iter().map(|o| o.term).collect();
     let edges = pixels.iter().map(|o| o.edges).collect();
     (ao, terms, edges)
+}
+
+/// [`aokit_shaders::raymarch::raymarch_pixel`] for `out.len()` ≤ 8 consecutive pixels of a row
+/// from `first`. Missing lanes repeat the last pixel; pixels without a usable depth borrow a
+/// marching lane's origin and are discarded.
+pub fn raymarch_x8(
+    params: &RaymarchParams,
+    depth: &[f32],
+    normals: &[u32],
+    kernel: &[Vec2],
+    first: UVec2,
+    out: &mut [RaymarchPixel],
+) {
+    let last = out.len() - 1;
+    let setups: [(u32, Option<MarchOrigin>); 8] =
+        core::array::from_fn(|i| raymarch_setup(params, depth, normals, uvec2(first.x + i.min(last) as u32, first.y)));
+    let any = setups.iter().find_map(|s| s.1);
+    let sum = any.map(|any| {
+        let o = setups.map(|s| s.1.unwrap_or(any));
+        let f = |g: &dyn Fn(&MarchOrigin) -> f32| F32x8::from_lanes(|i| g(&o[i]));
+        let lanes = MarchOrigin::<F32x8> {
+            pixel: o.map(|o| o.pixel),
+            pos: aokit_shaders::common::lanes::V3x8 { x: f(&|o| o.pos.x), y: f(&|o| o.pos.y), z: f(&|o| o.pos.z) },
+            n: aokit_shaders::common::lanes::V3x8 { x: f(&|o| o.n.x), y: f(&|o| o.n.y), z: f(&|o| o.n.z) },
+            sin_t: f(&|o| o.sin_t),
+            cos_t: f(&|o| o.cos_t),
+            jitter: f(&|o| o.jitter),
+        };
+        raymarch_sum(params, depth, normals, kernel, &lanes)
+    });
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = match (setups[i], sum) {
+            ((edges, Some(_)), Some(sum)) => raymarch_finish(params, kernel, edges, sum.lane(i)),
+            ((edges, _), _) => unshaded(edges),
+        };
+    }
 }

@@ -77,6 +77,10 @@ pub trait Lanes:
     fn mask_lane(m: Self::Mask, i: usize) -> bool;
     /// Lane `i`'s texel.
     fn texel_lane(t: Self::U2, i: usize) -> UVec2;
+    /// Is the condition true in any lane?
+    fn any(m: Self::Mask) -> bool;
+    /// `map(data[index(i)])` in lane `i`, for words that hold a vector (an encoded normal).
+    fn gather_v3(data: &[u32], index: impl Fn(usize) -> usize, map: impl Fn(u32) -> Vec3) -> Self::V3;
     /// The texel `f(uv)` per lane (`f` captures values only, see [`Lanes::gather`]).
     fn texel_of(uv: Self::V2, f: impl Fn(Vec2) -> UVec2) -> Self::U2;
     /// `f(texel)` per lane.
@@ -221,6 +225,14 @@ impl Lanes for f32 {
         t
     }
     #[inline]
+    fn any(m: bool) -> bool {
+        m
+    }
+    #[inline]
+    fn gather_v3(data: &[u32], index: impl Fn(usize) -> usize, map: impl Fn(u32) -> Vec3) -> Vec3 {
+        map(data[index(0)])
+    }
+    #[inline]
     fn texel_of(uv: Vec2, f: impl Fn(Vec2) -> UVec2) -> UVec2 {
         f(uv)
     }
@@ -300,7 +312,7 @@ pub use x8::{F32x8, V2x8, V3x8};
 mod x8 {
     use super::{LaneVec2, LaneVec3, Lanes};
     use crate::common::gbuffer_read::GBuffer;
-    use crate::glam::{UVec2, Vec2};
+    use crate::glam::{UVec2, Vec2, Vec3};
     use core::ops::{Add, Div, Mul, Neg, Sub};
     use wide::f32x8;
 
@@ -450,6 +462,19 @@ mod x8 {
         #[inline(always)]
         fn texel_lane(t: [UVec2; 8], i: usize) -> UVec2 {
             t[i]
+        }
+        #[inline(always)]
+        fn any(m: f32x8) -> bool {
+            m.any()
+        }
+        #[inline(always)]
+        fn gather_v3(data: &[u32], index: impl Fn(usize) -> usize, map: impl Fn(u32) -> Vec3) -> V3x8 {
+            let v: [Vec3; 8] = core::array::from_fn(|i| map(data[index(i)]));
+            V3x8 {
+                x: F32x8::from_lanes(|i| v[i].x),
+                y: F32x8::from_lanes(|i| v[i].y),
+                z: F32x8::from_lanes(|i| v[i].z),
+            }
         }
         #[inline(always)]
         fn texel_of(uv: V2x8, f: impl Fn(Vec2) -> UVec2) -> [UVec2; 8] {

@@ -108,7 +108,7 @@ pub fn hybrid_pixel<Q: OcclusionQuery>(
     let mut k = 0;
     while k < total {
         let u = vec2(frac(xi.x + 0.5 * k as f32), frac(xi.y + 0.5 * k as f32));
-        let dir = hemisphere_dir(disk(u), n);
+        let dir = hemisphere_dir::<f32>(disk(u), n);
         if k < params.world_rays {
             // XeGTAO space (+z forward) → right-handed view → world.
             let w = camera.view_to_world.transform_vector3(vec3(dir.x, dir.y, -dir.z)).normalize();

@@ -4,9 +4,7 @@
 //! each marched in S uniform steps against the depth buffer; the occluder distance from the
 //! linear crossing of Eq. 1, the accessibility of Eq. 2 with contrast exponent α.
 
-#[allow(unused_imports)]
-use spirv_std::num_traits::Float;
-
+// f32 methods on SPIR-V (`sin`, `cos`, `powf`, `sqrt`, `max`) come from `Lanes`.
 #[cfg(not(target_arch = "spirv"))]
 pub mod kernel;
 #[cfg(not(target_arch = "spirv"))]
@@ -14,11 +12,12 @@ pub mod settings;
 
 use crate::common::ViewParams;
 use crate::common::denoise_terms::{edges, pack_edges, store_term};
-use crate::common::math::{is_valid_depth, rotate_minimal, sat};
+use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
+use crate::common::math::{floor, is_valid_depth, is_valid_depth_lanes, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::decode_normal;
 use crate::common::screen_space::{clamp_index, neighbour, view_pos};
-use crate::glam::{UVec2, UVec3, Vec2, Vec3, vec2, vec3};
+use crate::glam::{UVec2, UVec3, Vec2, Vec3, vec3};
 use spirv_std::spirv;
 
 /// Most Poisson-disk directions a kernel may hold.
@@ -62,25 +61,29 @@ pub struct RaymarchParams {
 
 /// XeGTAO-space (+z forward) uv of a view point: the inverse of [`view_pos`].
 #[inline]
-fn project(view: &ViewParams, s: Vec3) -> Vec2 {
-    vec2(0.5 + 0.5 * s.x / (view.tan_half_fov.x * s.z), 0.5 - 0.5 * s.y / (view.tan_half_fov.y * s.z))
+fn project<L: Lanes>(view: &ViewParams, s: L::V3) -> L::V2 {
+    L::V2::new(s.x() * 0.5 / (s.z() * view.tan_half_fov.x) + 0.5, -(s.y() * 0.5 / (s.z() * view.tan_half_fov.y)) + 0.5)
 }
 
 /// Linear depth at a uv (point sampling, clamp-to-edge; unusable depths read as far).
 #[inline]
-pub fn depth_at(view: &ViewParams, depth: &[f32], uv: Vec2) -> f32 {
-    let size = view.size();
-    let x = clamp_index((uv.x * view.res.x).floor(), size.x);
-    let y = clamp_index((uv.y * view.res.y).floor(), size.y);
-    let d = depth[(y * size.x + x) as usize];
-    if is_valid_depth(d, view.far) { d } else { view.far }
+pub fn depth_at<L: Lanes>(view: &ViewParams, depth: &[f32], uv: L::V2) -> L {
+    let v = *view;
+    let d = L::gather(depth, move |i| {
+        let size = v.size();
+        let x = clamp_index(floor(uv.x().lane(i) * v.res.x), size.x);
+        let y = clamp_index(floor(uv.y().lane(i) * v.res.y), size.y);
+        (y * size.x + x) as usize
+    });
+    L::select(is_valid_depth_lanes(d, view.far), d, L::splat(view.far))
 }
 
-/// Result of marching one direction: the occluder distance Δ̃ (Eq. 1) or none.
+/// Result of marching one direction: the occluder distance Δ̃ (Eq. 1) or none (then the
+/// distance is R).
 #[derive(Copy, Clone, Debug, PartialEq)]
-pub struct March {
-    pub hit: bool,
-    pub distance: f32,
+pub struct March<L: Lanes = f32> {
+    pub hit: L::Mask,
+    pub distance: L,
 }
 
 /// March `steps` uniform steps from `pos` along unit `dir` (XeGTAO view space) with step jitter
@@ -90,48 +93,62 @@ pub struct March {
 /// (`t_0 = δ_0 = 0`). Leaving the screen ends the march without a hit (spec §3.4 steps 6–7).
 /// A step that projects into the shaded pixel `home` is free [aokit: its only depth is the
 /// pixel's own centre, so on a tilted surface every step moving away from the camera would
-/// otherwise hit the surface it starts on].
+/// otherwise hit the surface it starts on]. Per lane: a lane stops at its hit or when it leaves
+/// the screen; the loop ends when no lane marches.
 #[inline]
-pub fn march(
+#[allow(clippy::too_many_arguments)]
+pub fn march<L: Lanes>(
     view: &ViewParams,
     depth: &[f32],
-    pos: Vec3,
-    dir: Vec3,
+    pos: L::V3,
+    dir: L::V3,
     radius: f32,
     steps: u32,
-    jitter: f32,
+    jitter: L,
     depth_bias: f32,
     thickness: f32,
-    home: UVec2,
+    home: L::U2,
     normals: &[u32],
-) -> March {
-    let (mut t_prev, mut gap_prev) = (0.0f32, 0.0f32);
+) -> March<L> {
+    let zero = L::splat(0.0);
+    let (mut t_prev, mut gap_prev) = (zero, zero);
+    let mut marching = L::mask_splat(true);
+    let mut hit = L::mask_splat(false);
+    let mut distance = L::splat(radius);
     let mut j = 1;
     while j <= steps {
-        let t = radius * (j as f32 - jitter) / steps as f32;
+        let t = (-jitter + j as f32) * radius / steps as f32;
         let s = pos + dir * t;
-        if s.z <= 0.0 {
+        let uv = project::<L>(view, s);
+        let (x, y) = (uv.x(), uv.y());
+        let on_screen = L::and(L::and(x.ge(zero), x.le(L::splat(1.0))), L::and(y.ge(zero), y.le(L::splat(1.0))));
+        marching = L::and(marching, L::and(s.z().gt(zero), on_screen));
+        if !L::any(marching) {
             break;
         }
-        let uv = project(view, s);
-        if !(uv.x >= 0.0 && uv.x <= 1.0 && uv.y >= 0.0 && uv.y <= 1.0) {
-            break;
-        }
-        let z = depth_at(view, depth, uv);
+        let z = depth_at::<L>(view, depth, uv);
         let gap = (s - view_pos(view, uv, z)).length();
-        let q = view.texel_of_uv(uv);
+        let v = *view;
+        let q = L::texel_of(uv, move |uv| v.texel_of_uv(uv));
         let zp = plane_depth(view, normals, q, z, uv);
-        let free = q == home || s.z < zp * (1.0 + depth_bias) || s.z - zp > thickness;
-        if !free {
-            let sum = gap_prev + gap;
-            let distance = if sum < 1e-6 { t_prev } else { t_prev + gap_prev * (t - t_prev) / sum };
-            return March { hit: true, distance };
+        let free = L::or(
+            L::texel_eq(q, home),
+            L::or(s.z().lt(zp * (1.0 + depth_bias)), L::gt(s.z() - zp, L::splat(thickness))),
+        );
+        let hit_now = L::and(marching, L::not(free));
+        let sum = gap_prev + gap;
+        let crossing = L::select(sum.lt(L::splat(1e-6)), t_prev, t_prev + gap_prev * (t - t_prev) / sum);
+        distance = L::select(hit_now, crossing, distance);
+        hit = L::or(hit, hit_now);
+        marching = L::and(marching, free);
+        if !L::any(marching) {
+            break;
         }
         t_prev = t;
         gap_prev = gap;
         j += 1;
     }
-    March { hit: false, distance: radius }
+    March { hit, distance }
 }
 
 /// The G-buffer's right-handed normal at `p` in XeGTAO space, turned toward the camera at `pos`.
@@ -145,21 +162,32 @@ pub fn facing_normal(normals: &[u32], width: u32, p: UVec2, pos: Vec3) -> Vec3 {
 /// Direction for disk point `d` (unit disk) lifted toward the camera and rotated to the normal
 /// (spec §3.4 steps 4–5; §4.2 step 2): Malley's method, cosine-distributed around `n`.
 #[inline]
-pub fn hemisphere_dir(d: Vec2, n: Vec3) -> Vec3 {
-    let lifted = vec3(d.x, d.y, -(1.0 - d.x * d.x - d.y * d.y).max(0.0).sqrt());
-    rotate_minimal::<f32>(vec3(0.0, 0.0, -1.0), n, lifted)
+pub fn hemisphere_dir<L: Lanes>(d: L::V2, n: L::V3) -> L::V3 {
+    let (x, y) = (d.x(), d.y());
+    let lifted = L::V3::new(x, y, -(-(x * x) + 1.0 - y * y).max(L::splat(0.0)).sqrt());
+    let zero = L::splat(0.0);
+    rotate_minimal::<L>(L::V3::new(zero, zero, L::splat(-1.0)), n, lifted)
 }
 
 /// Depth where the view ray through `uv` meets the tangent plane of texel `q` (centre depth `z`,
 /// G-buffer normal), the texel's centre depth where that plane is seen edge-on.
 #[inline]
-fn plane_depth(view: &ViewParams, normals: &[u32], q: UVec2, z: f32, uv: Vec2) -> f32 {
-    let c = view_pos(view, view.texel_uv(q), z);
-    let n = decode_normal(normals[(q.y * view.size().x + q.x) as usize]);
-    let n = vec3(n.x, n.y, -n.z);
-    let r = view_pos(view, uv, 1.0);
+fn plane_depth<L: Lanes>(view: &ViewParams, normals: &[u32], q: L::U2, z: L, uv: L::V2) -> L {
+    let v = *view;
+    let c = view_pos(view, L::texel_map(q, move |t| v.texel_uv(t)), z);
+    let width = view.size().x;
+    let n = L::gather_v3(
+        normals,
+        move |i| {
+            let t = L::texel_lane(q, i);
+            (t.y * width + t.x) as usize
+        },
+        decode_normal,
+    );
+    let n = L::V3::new(n.x(), n.y(), -n.z());
+    let r = view_pos(view, uv, L::splat(1.0));
     let denom = n.dot(r);
-    if denom.abs() < 1e-3 { z } else { n.dot(c) / denom }
+    L::select(denom.abs().lt(L::splat(1e-3)), z, n.dot(c) / denom)
 }
 
 /// Output of one pixel: visibility `A = (mean c)^α`, its denoiser term and packed edges.
@@ -199,37 +227,103 @@ pub fn raymarch_pixel(
     kernel: &[Vec2],
     p: UVec2,
 ) -> RaymarchPixel {
+    let (edges, setup) = raymarch_setup(params, depth, normals, p);
+    match setup {
+        Some(setup) => raymarch_finish(params, kernel, edges, raymarch_sum(params, depth, normals, kernel, &setup)),
+        None => unshaded(edges),
+    }
+}
+
+/// A pixel without a usable depth: visible.
+#[inline]
+pub fn unshaded(edges: u32) -> RaymarchPixel {
+    RaymarchPixel { ao: 1.0, term: store_term(1.0), edges }
+}
+
+/// What pixel `p` marches from (spec §3.4 steps 1–3), per lane in [`raymarch_sum`].
+#[derive(Copy, Clone, Debug)]
+pub struct MarchOrigin<L: Lanes = f32> {
+    pub pixel: L::U2,
+    /// View position (XeGTAO space) and the normal facing the camera.
+    pub pos: L::V3,
+    pub n: L::V3,
+    /// The noise's rotation of the disk, `θ = 2π·ξ.x`, as sine and cosine.
+    pub sin_t: L,
+    pub cos_t: L,
+    /// Step jitter `ξ.y`.
+    pub jitter: L,
+}
+
+/// The packed edges of pixel `p` and where it marches from; `None` without a usable depth.
+#[inline]
+pub fn raymarch_setup(params: &RaymarchParams, depth: &[f32], normals: &[u32], p: UVec2) -> (u32, Option<MarchOrigin>) {
     let view = &params.view;
     let edges = depth_edges(view, depth, p);
     let zc = depth[(p.y * view.size().x + p.x) as usize];
     if !is_valid_depth(zc, view.far) {
-        return RaymarchPixel { ao: 1.0, term: store_term(1.0), edges };
+        return (edges, None);
     }
     let pos = view_pos(view, view.pixel_uv(p), zc);
     let n = facing_normal(normals, view.size().x, p, pos);
     let xi = spatio_temporal_noise(p, params.noise_frame);
     let theta = 2.0 * core::f32::consts::PI * xi.x;
-    let (sin_t, cos_t) = (theta.sin(), theta.cos());
-    let count = params.directions.min(MAX_DIRECTIONS).min(kernel.len() as u32).max(1);
-    let mut sum = 0.0;
+    let origin = MarchOrigin { pixel: p, pos, n, sin_t: theta.sin(), cos_t: theta.cos(), jitter: xi.y };
+    (edges, Some(origin))
+}
+
+/// `Σ c` over the directions (spec §3.4 steps 4–8): each disk point rotated by the noise,
+/// lifted to the hemisphere, marched; `c` = 1 without a hit, else 0 (binary) or `sat(Δ̃/R)`.
+#[inline]
+pub fn raymarch_sum<L: Lanes>(
+    params: &RaymarchParams,
+    depth: &[f32],
+    normals: &[u32],
+    kernel: &[Vec2],
+    o: &MarchOrigin<L>,
+) -> L {
+    let count = direction_count(params, kernel);
+    let steps = params.steps.max(1);
+    let mut sum = L::splat(0.0);
     let mut i = 0;
     while i < count {
         let k = kernel[i as usize];
-        let d = vec2(cos_t * k.x - sin_t * k.y, sin_t * k.x + cos_t * k.y);
-        let dir = hemisphere_dir(d, n);
-        let steps = params.steps.max(1);
-        let m =
-            march(view, depth, pos, dir, params.radius, steps, xi.y, params.depth_bias, params.thickness, p, normals);
-        sum += if !m.hit {
-            1.0
-        } else if params.contribution == Contribution::Binary as u32 {
-            0.0
+        let d = L::V2::new(o.cos_t * k.x - o.sin_t * k.y, o.sin_t * k.x + o.cos_t * k.y);
+        let dir = hemisphere_dir::<L>(d, o.n);
+        let m = march(
+            &params.view,
+            depth,
+            o.pos,
+            dir,
+            params.radius,
+            steps,
+            o.jitter,
+            params.depth_bias,
+            params.thickness,
+            o.pixel,
+            normals,
+        );
+        let c = if params.contribution == Contribution::Binary as u32 {
+            L::splat(0.0)
         } else {
             sat(m.distance / params.radius)
         };
+        sum = sum + L::select(m.hit, c, L::splat(1.0));
         i += 1;
     }
-    let ao = (sum / count as f32).powf(params.alpha);
+    sum
+}
+
+/// Directions marched: `N`, at most [`MAX_DIRECTIONS`] and the kernel's length, at least 1.
+#[inline]
+pub fn direction_count(params: &RaymarchParams, kernel: &[Vec2]) -> u32 {
+    params.directions.min(MAX_DIRECTIONS).min(kernel.len() as u32).max(1)
+}
+
+/// The pixel's output from `Σ c`: visibility `A = (Σc/N)^α` (Eq. 2) and its denoiser term.
+#[inline]
+pub fn raymarch_finish(params: &RaymarchParams, kernel: &[Vec2], edges: u32, sum: f32) -> RaymarchPixel {
+    let count = direction_count(params, kernel);
+    let ao = Lanes::powf(sum / count as f32, params.alpha);
     RaymarchPixel { ao, term: store_term(ao), edges }
 }
 
