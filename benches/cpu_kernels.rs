@@ -1,6 +1,8 @@
 //! CPU kernel throughput on the Sponza G-buffer at 1920×1080 (+64 px guard band = 2048×1208).
 //! Team targets: one VAO pass ≤ 0.1 s on 2 cores; ≥ 5 M incoherent AO rays/s. Also the Ray-SD
-//! passes and the reservoir any-hit. Run: `cargo bench --bench cpu_kernels`.
+//! passes and the reservoir any-hit. Then every pass of every technique's graph at 960×540 (+64)
+//! in Mpixel/s of the inner image, timed by the CPU executor itself (issue 14). Run: `cargo
+//! bench --bench cpu_kernels` (filter: `-- passes/gtao`).
 
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::render::CpuRenderer;
@@ -11,7 +13,8 @@ use aokit_cpu::svao as svao_cpu;
 use aokit_shaders::glam::vec2;
 use aokit_shaders::raysd::{MAX_LAYERS, SdPayload, reservoir_any_hit};
 use aokit_shaders::svao::Secondary;
-use criterion::{Criterion, Throughput, criterion_group, criterion_main};
+use aokit::cli::TechniqueArgs;
+use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use std::time::Duration;
 
 fn kernels(c: &mut Criterion) {
@@ -97,5 +100,45 @@ fn kernels(c: &mut Criterion) {
     micro.finish();
 }
 
-criterion_group!(benches, kernels);
+/// Every pass of each technique's graph, one benchmark per pass: each iteration runs the
+/// technique's frame on the CPU and counts the pass's own wall time as the executor measured it.
+fn passes(c: &mut Criterion) {
+    let b = builtin::find("sponza").unwrap();
+    let scene = b.load().unwrap();
+    let req = FrameRequest {
+        width: 960,
+        height: 540,
+        guard: 64,
+        camera: CameraChoice::Preset { name: None, fov_deg: None },
+        radius: None,
+        exponent: 2.0,
+        thickness: 0.0,
+    };
+    let frame = Frame::resolve(&scene, Some(b), &req).unwrap();
+    let renderer = CpuRenderer::new(&scene);
+    let (g, _) = renderer.gbuffer(&frame, &no_progress);
+    let mut group = c.benchmark_group("passes");
+    group.sample_size(10).sampling_mode(SamplingMode::Flat).measurement_time(Duration::from_secs(4));
+    group.throughput(Throughput::Elements(frame.inner.x as u64 * frame.inner.y as u64));
+    for name in ["vao", "sdsvao", "raysd", "gtao", "vbao", "raymarch", "hybrid"] {
+        let technique = TechniqueArgs::default().technique(name).unwrap();
+        let run = renderer.run(&frame, &g, &technique, &no_progress);
+        for &(pass, _) in run.passes.iter().filter(|p| p.0 != "accel_build") {
+            group.bench_function(format!("{name}/{pass}"), |bench| {
+                bench.iter_custom(|iters| {
+                    (0..iters)
+                        .map(|_| {
+                            let run = renderer.run(&frame, &g, &technique, &no_progress);
+                            let ms: f64 = run.passes.iter().filter(|p| p.0 == pass).map(|p| p.1).sum();
+                            Duration::from_secs_f64(ms / 1e3)
+                        })
+                        .sum()
+                })
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, kernels, passes);
 criterion_main!(benches);

@@ -11,20 +11,20 @@ struct type_7 {
     member: array<f32>,
 }
 
-struct type_15 {
+struct type_16 {
     member: type_5,
     member_1: vec2<u32>,
     member_2: f32,
     member_3: u32,
 }
 
-struct type_16 {
-    member: type_15,
+struct type_17 {
+    member: type_16,
 }
 
 var<private> id_1: vec3<u32>;
 @group(0) @binding(3) 
-var<uniform> params: type_16;
+var<uniform> params: type_17;
 @group(0) @binding(0) 
 var<storage> ao_in: type_7;
 @group(0) @binding(1) 
@@ -33,249 +33,225 @@ var<storage> depth: type_7;
 var<storage, read_write> ao_out: type_7;
 
 fn function_() {
-    var phi_110_: bool;
-    var phi_112_: bool;
-    var phi_113_: bool;
-    var phi_114_: bool;
-    var phi_115_: bool;
-    var phi_288_: bool;
-    var phi_629_: bool;
-    var phi_456_: i32;
-    var phi_459_: f32;
-    var phi_461_: f32;
-    var phi_471_: i32;
-    var phi_474_: f32;
-    var phi_476_: f32;
-    var phi_587_: f32;
-    var phi_588_: f32;
-    var phi_472_: i32;
-    var phi_475_: f32;
-    var phi_477_: f32;
-    var phi_621_: bool;
-    var phi_653_: bool;
-    var phi_457_: i32;
-    var phi_460_: f32;
-    var phi_462_: f32;
-    var phi_652_: bool;
+    var phi_135_: bool;
+    var phi_137_: bool;
+    var phi_138_: bool;
+    var phi_139_: bool;
+    var phi_140_: bool;
+    var phi_1456_: bool;
+    var phi_269_: i32;
+    var phi_272_: f32;
+    var phi_274_: f32;
+    var phi_284_: i32;
+    var phi_287_: f32;
+    var phi_289_: f32;
+    var phi_285_: i32;
+    var phi_288_: f32;
+    var phi_290_: f32;
+    var phi_1443_: bool;
+    var phi_1479_: bool;
+    var phi_270_: i32;
+    var phi_273_: f32;
+    var phi_275_: f32;
+    var phi_1478_: bool;
     var local: f32;
     var local_1: f32;
-    var phi_592_: f32;
     var local_2: f32;
     var local_3: f32;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e26 = id_1;
-            let _e28 = arrayLength((&ao_in.member));
-            let _e30 = arrayLength((&depth.member));
-            let _e38 = params.member.member.member_4;
-            let _e39 = (_e26.x + _e38);
-            let _e40 = (_e26.y + _e38);
-            let _e45 = params.member.member.member[0u];
-            let _e50 = select(select(u32(_e45), 0u, (_e45 < 0f)), 4294967295u, (_e45 > 4294967000f));
-            let _e55 = params.member.member.member[1u];
-            let _e60 = select(select(u32(_e55), 0u, (_e55 < 0f)), 4294967295u, (_e55 > 4294967000f));
-            if (_e39 >= _e38) {
-                if (_e40 >= _e38) {
-                    let _e64 = ((_e39 + _e38) < _e50);
-                    if _e64 {
-                        phi_110_ = ((_e40 + _e38) < _e60);
+            let _e25 = id_1;
+            let _e27 = arrayLength((&ao_in.member));
+            let _e29 = arrayLength((&depth.member));
+            let _e37 = params.member.member.member_4;
+            let _e38 = (_e25.x + _e37);
+            let _e39 = (_e25.y + _e37);
+            let _e46 = params.member.member.member[0u];
+            let _e51 = select(select(u32(_e46), 0u, (_e46 < 0f)), 4294967295u, (_e46 > 4294967000f));
+            let _e56 = params.member.member.member[1u];
+            if (_e38 >= _e37) {
+                if (_e39 >= _e37) {
+                    let _e65 = ((_e38 + _e37) < _e51);
+                    if _e65 {
+                        phi_135_ = ((_e39 + _e37) < select(select(u32(_e56), 0u, (_e56 < 0f)), 4294967295u, (_e56 > 4294967000f)));
                     } else {
-                        phi_110_ = bool();
+                        phi_135_ = bool();
                     }
-                    let _e68 = phi_110_;
-                    phi_112_ = _e68;
-                    phi_113_ = select(true, false, _e64);
+                    let _e69 = phi_135_;
+                    phi_137_ = _e69;
+                    phi_138_ = select(true, false, _e65);
                 } else {
-                    phi_112_ = bool();
-                    phi_113_ = true;
+                    phi_137_ = bool();
+                    phi_138_ = true;
                 }
-                let _e71 = phi_112_;
-                let _e73 = phi_113_;
-                phi_114_ = _e71;
-                phi_115_ = _e73;
+                let _e72 = phi_137_;
+                let _e74 = phi_138_;
+                phi_139_ = _e72;
+                phi_140_ = _e74;
             } else {
-                phi_114_ = bool();
-                phi_115_ = true;
+                phi_139_ = bool();
+                phi_140_ = true;
             }
-            let _e75 = phi_114_;
-            let _e77 = phi_115_;
-            if select(_e75, false, _e77) {
-                let _e82 = params.member.member_1[0u];
-                let _e86 = params.member.member_1[1u];
-                let _e87 = bitcast<i32>(_e82);
-                let _e88 = bitcast<i32>(_e86);
-                let _e89 = bitcast<i32>(_e39);
-                let _e90 = bitcast<i32>(_e40);
-                let _e91 = bitcast<i32>(_e38);
-                let _e95 = select(_e91, _e89, (_e91 < _e89));
-                let _e97 = ((bitcast<i32>(_e50) - _e91) - 1i);
-                let _e102 = select(_e91, _e90, (_e91 < _e90));
-                let _e104 = ((bitcast<i32>(_e60) - _e91) - 1i);
-                let _e109 = ((bitcast<u32>(select(_e102, _e104, (_e104 < _e102))) * _e50) + bitcast<u32>(select(_e95, _e97, (_e97 < _e95))));
-                if (_e109 < _e28) {
+            let _e76 = phi_139_;
+            let _e78 = phi_140_;
+            if select(_e76, false, _e78) {
+                let _e80 = params.member.member;
+                let _e84 = params.member.member_1[0u];
+                let _e88 = params.member.member_1[1u];
+                let _e89 = bitcast<i32>(_e84);
+                let _e90 = bitcast<i32>(_e88);
+                let _e94 = bitcast<i32>(_e38);
+                let _e95 = bitcast<i32>(_e39);
+                let _e96 = bitcast<i32>(_e80.member_4);
+                let _e102 = select(select(u32(_e80.member.x), 0u, (_e80.member.x < 0f)), 4294967295u, (_e80.member.x > 4294967000f));
+                let _e112 = select(_e96, _e94, (_e96 < _e94));
+                let _e114 = ((bitcast<i32>(_e102) - _e96) - 1i);
+                let _e119 = select(_e96, _e95, (_e96 < _e95));
+                let _e121 = ((bitcast<i32>(select(select(u32(_e80.member.y), 0u, (_e80.member.y < 0f)), 4294967295u, (_e80.member.y > 4294967000f))) - _e96) - 1i);
+                let _e126 = ((bitcast<u32>(select(_e119, _e121, (_e121 < _e119))) * _e102) + bitcast<u32>(select(_e112, _e114, (_e114 < _e112))));
+                if (_e126 < _e27) {
                 } else {
                     break;
                 }
-                let _e113 = ao_in.member[_e109];
-                if (_e109 < _e30) {
+                let _e130 = ao_in.member[_e126];
+                if (_e126 < _e29) {
                 } else {
                     break;
                 }
-                let _e117 = depth.member[_e109];
-                let _e121 = params.member.member.member_3;
-                if (_e117 > 0f) {
-                    phi_288_ = (_e117 < _e121);
+                let _e134 = depth.member[_e126];
+                let _e137 = (_e94 + (_e89 * -1i));
+                let _e138 = (_e95 + (_e90 * -1i));
+                let _e140 = select(_e96, _e137, (_e96 < _e137));
+                let _e145 = select(_e96, _e138, (_e96 < _e138));
+                let _e150 = ((bitcast<u32>(select(_e145, _e121, (_e121 < _e145))) * _e102) + bitcast<u32>(select(_e140, _e114, (_e114 < _e140))));
+                if (_e150 < _e29) {
                 } else {
-                    phi_288_ = false;
+                    break;
                 }
-                let _e125 = phi_288_;
-                if _e125 {
-                    let _e128 = (_e89 + (_e87 * -1i));
-                    let _e129 = (_e90 + (_e88 * -1i));
-                    let _e131 = select(_e91, _e128, (_e91 < _e128));
-                    let _e136 = select(_e91, _e129, (_e91 < _e129));
-                    let _e141 = ((bitcast<u32>(select(_e136, _e104, (_e104 < _e136))) * _e50) + bitcast<u32>(select(_e131, _e97, (_e97 < _e131))));
-                    if (_e141 < _e30) {
-                    } else {
-                        break;
-                    }
-                    let _e145 = depth.member[_e141];
-                    let _e146 = (_e117 - _e145);
-                    let _e147 = (_e89 + _e87);
-                    let _e148 = (_e90 + _e88);
-                    let _e150 = select(_e91, _e147, (_e91 < _e147));
-                    let _e155 = select(_e91, _e148, (_e91 < _e148));
-                    let _e160 = ((bitcast<u32>(select(_e155, _e104, (_e104 < _e155))) * _e50) + bitcast<u32>(select(_e150, _e97, (_e97 < _e150))));
-                    if (_e160 < _e30) {
-                    } else {
-                        break;
-                    }
-                    let _e164 = depth.member[_e160];
-                    let _e165 = (_e164 - _e117);
-                    let _e172 = params.member.member_2;
-                    phi_629_ = false;
-                    phi_456_ = 1i;
-                    phi_459_ = 1f;
-                    phi_461_ = _e113;
-                    loop {
-                        let _e176 = phi_629_;
-                        let _e178 = phi_456_;
-                        let _e180 = phi_459_;
-                        let _e182 = phi_461_;
-                        local = _e182;
-                        local_1 = _e180;
-                        let _e183 = (_e178 <= 4i);
-                        if _e183 {
-                            let _e184 = f32(_e178);
-                            phi_471_ = -1i;
-                            phi_474_ = _e180;
-                            phi_476_ = _e182;
-                            loop {
-                                let _e186 = phi_471_;
-                                let _e188 = phi_474_;
-                                let _e190 = phi_476_;
-                                local_2 = _e188;
-                                local_3 = _e190;
-                                let _e191 = (_e186 <= 1i);
-                                if _e191 {
-                                    let _e192 = (_e186 * _e178);
-                                    let _e195 = (_e89 + (_e87 * _e192));
-                                    let _e196 = (_e90 + (_e88 * _e192));
-                                    let _e198 = select(_e91, _e195, (_e91 < _e195));
-                                    let _e203 = select(_e91, _e196, (_e91 < _e196));
-                                    let _e208 = ((bitcast<u32>(select(_e203, _e104, (_e104 < _e203))) * _e50) + bitcast<u32>(select(_e198, _e97, (_e97 < _e198))));
-                                    if (_e208 < _e30) {
-                                    } else {
-                                        phi_621_ = true;
-                                        break;
-                                    }
-                                    let _e212 = depth.member[_e208];
-                                    let _e219 = (abs(((_e212 - ((f32(_e186) * select(_e165, _e146, (abs(_e146) < abs(_e165)))) * _e184)) - _e117)) * ((_e172 * 12f) / _e117));
-                                    let _e225 = exp2((((-(_e184) * _e184) * 0.08f) - (_e219 * _e219)));
-                                    if (_e225 > 0f) {
-                                        if (_e208 < _e28) {
-                                        } else {
-                                            phi_621_ = true;
-                                            break;
-                                        }
-                                        let _e230 = ao_in.member[_e208];
-                                        phi_587_ = (_e188 + _e225);
-                                        phi_588_ = (_e190 + (_e225 * _e230));
-                                    } else {
-                                        phi_587_ = _e188;
-                                        phi_588_ = _e190;
-                                    }
-                                    let _e235 = phi_587_;
-                                    let _e237 = phi_588_;
-                                    phi_472_ = (_e186 + 2i);
-                                    phi_475_ = _e235;
-                                    phi_477_ = _e237;
+                let _e154 = depth.member[_e150];
+                let _e155 = (_e134 - _e154);
+                let _e156 = (_e94 + _e89);
+                let _e157 = (_e95 + _e90);
+                let _e159 = select(_e96, _e156, (_e96 < _e156));
+                let _e164 = select(_e96, _e157, (_e96 < _e157));
+                let _e169 = ((bitcast<u32>(select(_e164, _e121, (_e121 < _e164))) * _e102) + bitcast<u32>(select(_e159, _e114, (_e114 < _e159))));
+                if (_e169 < _e29) {
+                } else {
+                    break;
+                }
+                let _e173 = depth.member[_e169];
+                let _e174 = (_e173 - _e134);
+                let _e181 = params.member.member_2;
+                phi_1456_ = false;
+                phi_269_ = 1i;
+                phi_272_ = 1f;
+                phi_274_ = _e130;
+                loop {
+                    let _e185 = phi_1456_;
+                    let _e187 = phi_269_;
+                    let _e189 = phi_272_;
+                    let _e191 = phi_274_;
+                    local = _e191;
+                    local_1 = _e189;
+                    let _e192 = (_e187 <= 4i);
+                    if _e192 {
+                        let _e193 = f32(_e187);
+                        phi_284_ = -1i;
+                        phi_287_ = _e189;
+                        phi_289_ = _e191;
+                        loop {
+                            let _e195 = phi_284_;
+                            let _e197 = phi_287_;
+                            let _e199 = phi_289_;
+                            local_2 = _e197;
+                            local_3 = _e199;
+                            let _e200 = (_e195 <= 1i);
+                            if _e200 {
+                                let _e201 = (_e195 * _e187);
+                                let _e204 = (_e94 + (_e89 * _e201));
+                                let _e205 = (_e95 + (_e90 * _e201));
+                                let _e207 = select(_e96, _e204, (_e96 < _e204));
+                                let _e212 = select(_e96, _e205, (_e96 < _e205));
+                                let _e217 = ((bitcast<u32>(select(_e212, _e121, (_e121 < _e212))) * _e102) + bitcast<u32>(select(_e207, _e114, (_e114 < _e207))));
+                                if (_e217 < _e29) {
                                 } else {
-                                    phi_472_ = i32();
-                                    phi_475_ = f32();
-                                    phi_477_ = f32();
+                                    phi_1443_ = true;
+                                    break;
                                 }
-                                let _e240 = phi_472_;
-                                let _e242 = phi_475_;
-                                let _e244 = phi_477_;
-                                continue;
-                                continuing {
-                                    phi_471_ = _e240;
-                                    phi_474_ = _e242;
-                                    phi_476_ = _e244;
-                                    phi_621_ = _e176;
-                                    break if !(_e191);
+                                let _e221 = depth.member[_e217];
+                                let _e228 = (abs(((_e221 - ((select(_e174, _e155, (abs(_e155) < abs(_e174))) * f32(_e195)) * _e193)) - _e134)) * ((_e181 * 12f) / _e134));
+                                let _e234 = exp2((((-(_e193) * _e193) * 0.08f) - (_e228 * _e228)));
+                                let _e235 = (_e234 > 0f);
+                                if (_e217 < _e27) {
+                                } else {
+                                    phi_1443_ = true;
+                                    break;
                                 }
+                                let _e239 = ao_in.member[_e217];
+                                phi_285_ = (_e195 + 2i);
+                                phi_288_ = select(_e197, (_e197 + _e234), _e235);
+                                phi_290_ = select(_e199, (_e199 + (_e234 * _e239)), _e235);
+                            } else {
+                                phi_285_ = i32();
+                                phi_288_ = f32();
+                                phi_290_ = f32();
                             }
-                            let _e247 = phi_621_;
-                            phi_652_ = _e247;
-                            if _e247 {
-                                break;
+                            let _e247 = phi_285_;
+                            let _e249 = phi_288_;
+                            let _e251 = phi_290_;
+                            continue;
+                            continuing {
+                                phi_284_ = _e247;
+                                phi_287_ = _e249;
+                                phi_289_ = _e251;
+                                phi_1443_ = _e185;
+                                break if !(_e200);
                             }
-                            phi_653_ = _e247;
-                            phi_457_ = (_e178 + 1i);
-                            let _e295 = local_2;
-                            phi_460_ = _e295;
-                            let _e298 = local_3;
-                            phi_462_ = _e298;
-                        } else {
-                            phi_653_ = _e176;
-                            phi_457_ = i32();
-                            phi_460_ = f32();
-                            phi_462_ = f32();
                         }
-                        let _e250 = phi_653_;
-                        let _e252 = phi_457_;
-                        let _e254 = phi_460_;
-                        let _e256 = phi_462_;
-                        continue;
-                        continuing {
-                            phi_629_ = _e250;
-                            phi_456_ = _e252;
-                            phi_459_ = _e254;
-                            phi_461_ = _e256;
-                            phi_652_ = _e250;
-                            break if !(_e183);
+                        let _e254 = phi_1443_;
+                        phi_1478_ = _e254;
+                        if _e254 {
+                            break;
                         }
+                        phi_1479_ = _e254;
+                        phi_270_ = (_e187 + 1i);
+                        let _e301 = local_2;
+                        phi_273_ = _e301;
+                        let _e304 = local_3;
+                        phi_275_ = _e304;
+                    } else {
+                        phi_1479_ = _e185;
+                        phi_270_ = i32();
+                        phi_273_ = f32();
+                        phi_275_ = f32();
                     }
-                    let _e259 = phi_652_;
-                    if _e259 {
-                        break;
+                    let _e257 = phi_1479_;
+                    let _e259 = phi_270_;
+                    let _e261 = phi_273_;
+                    let _e263 = phi_275_;
+                    continue;
+                    continuing {
+                        phi_1456_ = _e257;
+                        phi_269_ = _e259;
+                        phi_272_ = _e261;
+                        phi_274_ = _e263;
+                        phi_1478_ = _e257;
+                        break if !(_e192);
                     }
-                    let _e261 = local;
-                    let _e263 = local_1;
-                    phi_592_ = (_e261 / _e263);
-                } else {
-                    phi_592_ = _e113;
                 }
-                let _e266 = phi_592_;
-                let _e268 = ((_e40 * _e50) + _e39);
-                if (_e268 < arrayLength((&ao_out.member))) {
+                let _e266 = phi_1478_;
+                if _e266 {
+                    break;
+                }
+                let _e271 = local;
+                let _e273 = local_1;
+                let _e277 = ((_e39 * _e51) + _e38);
+                if (_e277 < arrayLength((&ao_out.member))) {
                 } else {
                     break;
                 }
-                ao_out.member[_e268] = _e266;
+                ao_out.member[_e277] = select(_e130, (_e271 / _e273), select(false, (_e134 < _e80.member_3), (_e134 > 0f)));
             }
             break;
         }

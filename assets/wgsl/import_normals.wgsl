@@ -11,7 +11,7 @@ struct type_7 {
     member: array<u32>,
 }
 
-struct type_16 {
+struct type_17 {
     member: type_5,
     member_1: vec2<u32>,
     member_2: u32,
@@ -20,15 +20,15 @@ struct type_16 {
     member_5: u32,
 }
 
-struct type_17 {
-    member: type_16,
+struct type_18 {
+    member: type_17,
 }
 
 var<private> id_1: vec3<u32>;
 @group(0) @binding(1) 
 var<storage, read_write> normals: type_7;
 @group(0) @binding(2) 
-var<uniform> params: type_17;
+var<uniform> params: type_18;
 @group(0) @binding(0) 
 var engine_normals: texture_2d<f32>;
 

@@ -15,7 +15,7 @@ struct type_10 {
     member: array<u32>,
 }
 
-struct type_20 {
+struct type_21 {
     member: type_5,
     member_1: f32,
     member_2: f32,
@@ -38,7 +38,7 @@ struct type_22 {
     member_1: f32,
     member_2: u32,
     member_3: u32,
-    member_4: type_20,
+    member_4: type_21,
 }
 
 struct type_23 {

@@ -2,7 +2,7 @@
 //! function that the SPIR-V entry point calls.
 
 use crate::Progress;
-use aokit_shaders::blur::{BlurParams, blur_pixel};
+use aokit_shaders::blur::{BlurParams, blur_lanes};
 use aokit_shaders::common::gbuffer_read::GBufferSlices;
 use aokit_shaders::common::lanes::{F32x8, Lanes};
 use aokit_shaders::glam::{UVec2, uvec2};
@@ -89,18 +89,12 @@ pub fn tiled_lanes<T: Send>(
     });
 }
 
-/// Run `kernel` for every inner pixel of a full-target image, in parallel [`tiled`] bands.
-/// Guard-band pixels keep `fill`.
-fn for_inner_pixels(
-    size: UVec2,
-    guard: u32,
-    fill: f32,
-    progress: Progress,
-    kernel: impl Fn(UVec2) -> f32 + Sync,
-) -> Vec<f32> {
-    let mut out = vec![fill; (size.x * size.y) as usize];
+/// Call `kernel(first, out)` for runs of up to 8 consecutive inner pixels of a full-target
+/// image, in parallel [`tiled_lanes`] bands. Guard-band pixels keep 1.
+fn for_inner_lanes(size: UVec2, guard: u32, progress: Progress, kernel: impl Fn(UVec2, &mut [f32]) + Sync) -> Vec<f32> {
+    let mut out = vec![1.0; (size.x * size.y) as usize];
     let (xs, ys) = (guard..size.x.saturating_sub(guard), guard..size.y.saturating_sub(guard));
-    tiled(&mut out, size.x, xs, ys, progress, |p, v| *v = kernel(p));
+    tiled_lanes(&mut out, size.x, xs, ys, 8, progress, kernel);
     out
 }
 
@@ -109,11 +103,7 @@ fn for_inner_pixels(
 pub fn run_vao(params: &VaoParams, depth: &[f32], normals: &[u32], progress: Progress) -> Vec<f32> {
     let size = params.view.size();
     let gbuffer = GBufferSlices { depth, normals, width: size.x };
-    let mut out = vec![1.0; (size.x * size.y) as usize];
-    let g = params.view.guard;
-    let (xs, ys) = (g..size.x.saturating_sub(g), g..size.y.saturating_sub(g));
-    tiled_lanes(&mut out, size.x, xs, ys, 8, progress, |p, ao| vao_x8(&gbuffer, params, p, ao));
-    out
+    for_inner_lanes(size, params.view.guard, progress, |p, ao| vao_x8(&gbuffer, params, p, ao))
 }
 
 /// [`aokit_shaders::vao::vao_pixel`] for `ao.len()` ≤ 8 consecutive pixels of a row from `first`: the per-pixel
@@ -143,9 +133,13 @@ pub fn vao_x8(gbuffer: &GBufferSlices, params: &VaoParams, first: UVec2, ao: &mu
 }
 
 /// One direction (`params.direction`) of the cross-bilateral blur (spec §12).
+/// Eight pixels of a row per call of the shader crate's lane-generic blur.
 pub fn run_blur_direction(params: &BlurParams, ao: &[f32], depth: &[f32]) -> Vec<f32> {
-    for_inner_pixels(params.view.size(), params.view.guard, 1.0, &crate::no_progress, |px| {
-        blur_pixel(params, ao, depth, px)
+    for_inner_lanes(params.view.size(), params.view.guard, &crate::no_progress, |p, out| {
+        let v: F32x8 = blur_lanes(params, ao, depth, p);
+        for (i, x) in out.iter_mut().enumerate() {
+            *x = v.lane(i);
+        }
     })
 }
 

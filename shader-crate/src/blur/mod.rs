@@ -3,11 +3,11 @@
 #[cfg(not(target_arch = "spirv"))]
 pub mod graph;
 
-#[allow(unused_imports)]
-use spirv_std::num_traits::Float;
+// f32 methods on SPIR-V (`abs`, `exp2`) come from `Lanes`.
 
 use crate::common::ViewParams;
-use crate::common::math::is_valid_depth;
+use crate::common::lanes::Lanes;
+use crate::common::math::is_valid_depth_lanes;
 use crate::glam::{IVec2, UVec2, UVec3};
 use spirv_std::spirv;
 
@@ -46,40 +46,44 @@ fn clamp_inner(view: &ViewParams, p: IVec2) -> UVec2 {
 /// for the negative side ("better slope").
 #[inline]
 pub fn blur_pixel(params: &BlurParams, ao: &[f32], depth: &[f32], p: UVec2) -> f32 {
-    let view = &params.view;
+    blur_lanes::<f32>(params, ao, depth, p)
+}
+
+/// [`blur_pixel`] for one pixel (`L = f32`) or `L::LANES` pixels (lane `i` at `p + i·(1, 0)`,
+/// clamped to the inner image).
+#[inline]
+pub fn blur_lanes<L: Lanes>(params: &BlurParams, ao: &[f32], depth: &[f32], p: UVec2) -> L {
+    let view = params.view;
     let dir = params.direction.as_ivec2();
-    let at = |offset: i32| view.index(clamp_inner(view, p.as_ivec2() + dir * offset));
-    let a0 = ao[at(0)];
-    let z0 = depth[at(0)];
-    if !is_valid_depth(z0, view.far) {
-        return a0;
-    }
-    let slope_left = z0 - depth[at(-1)];
-    let slope_right = depth[at(1)] - z0;
-    let slope = if slope_left.abs() < slope_right.abs() { slope_left } else { slope_right };
-    let scale = params.sharpness * 12.0 / z0;
+    let at = move |offset: i32| {
+        move |lane: usize| view.index(clamp_inner(&view, p.as_ivec2() + IVec2::new(lane as i32, 0) + dir * offset))
+    };
+    let a0 = L::gather(ao, at(0));
+    let z0 = L::gather(depth, at(0));
+    let slope_left = z0 - L::gather(depth, at(-1));
+    let slope_right = L::gather(depth, at(1)) - z0;
+    let slope = L::select(slope_left.abs().lt(slope_right.abs()), slope_left, slope_right);
+    let scale = L::splat(params.sharpness * 12.0) / z0;
     let mut sum = a0;
-    let mut weights = 1.0;
+    let mut weights = L::splat(1.0);
     let mut d = 1;
     while d <= BLUR_RADIUS {
         let df = d as f32;
         let mut side = -1;
         while side <= 1 {
-            let i = at(side * d);
-            let delta = (depth[i] - (side as f32) * slope * df - z0).abs() * scale;
-            let w = (-df * df * BLUR_FALLOFF - delta * delta).exp2();
-            if w > 0.0 {
-                sum += w * ao[i];
-                weights += w;
-            }
+            let offset = side * d;
+            let delta = (L::gather(depth, at(offset)) - slope * (side as f32) * df - z0).abs() * scale;
+            let w = (L::splat(-df * df * BLUR_FALLOFF) - delta * delta).exp2();
+            let take = w.gt(L::splat(0.0));
+            sum = L::select(take, sum + w * L::gather(ao, at(offset)), sum);
+            weights = L::select(take, weights + w, weights);
             side += 2;
         }
         d += 1;
     }
-    sum / weights
+    L::select(is_valid_depth_lanes(z0, view.far), sum / weights, a0)
 }
 
-/// Compute entry point for one blur direction over the inner image (pixel = id + guard).
 #[spirv(compute(threads(8, 8), entry_point_name = "blur_main"))]
 pub fn blur_main(
     #[spirv(global_invocation_id)] id: UVec3,

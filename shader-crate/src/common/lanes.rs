@@ -56,6 +56,7 @@ pub trait Lanes:
     fn sin(self) -> Self;
     fn cos(self) -> Self;
     fn log2(self) -> Self;
+    fn exp2(self) -> Self;
     fn powf(self, p: f32) -> Self;
     fn floor(self) -> Self;
     /// Round half to even.
@@ -163,6 +164,10 @@ impl Lanes for f32 {
     #[inline]
     fn log2(self) -> Self {
         Float::log2(self)
+    }
+    #[inline]
+    fn exp2(self) -> Self {
+        Float::exp2(self)
     }
     #[inline]
     fn powf(self, p: f32) -> Self {
@@ -397,6 +402,10 @@ mod x8 {
         #[inline(always)]
         fn cos(self) -> Self {
             F32x8(self.0.sin_cos().1)
+        }
+        #[inline(always)]
+        fn exp2(self) -> Self {
+            F32x8(self.0.exp2())
         }
         #[inline(always)]
         fn log2(self) -> Self {
