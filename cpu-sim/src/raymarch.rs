@@ -1,7 +1,7 @@
 //! Poisson-disk ray-marched SSAO on the CPU (spec gtao-raymarch-hybrid §3): the shader crate's
 //! per-pixel setup and finish per pixel, its directions' marches on eight pixels at once.
 
-use aokit_shaders::common::lanes::{F32x8, Lanes};
+use aokit_shaders::common::lanes::{F32x8, Lanes, v3_from_lanes};
 use aokit_shaders::glam::{UVec2, Vec2, uvec2};
 use aokit_shaders::raymarch::{
     MarchOrigin, RaymarchParams, RaymarchPixel, raymarch_finish, raymarch_setup, raymarch_sum, unshaded,
@@ -43,14 +43,13 @@ pub fn raymarch_x8(
     let any = setups.iter().find_map(|s| s.1);
     let sum = any.map(|any| {
         let o = setups.map(|s| s.1.unwrap_or(any));
-        let f = |g: &dyn Fn(&MarchOrigin) -> f32| F32x8::from_lanes(|i| g(&o[i]));
         let lanes = MarchOrigin::<F32x8> {
             pixel: o.map(|o| o.pixel),
-            pos: aokit_shaders::common::lanes::V3x8 { x: f(&|o| o.pos.x), y: f(&|o| o.pos.y), z: f(&|o| o.pos.z) },
-            n: aokit_shaders::common::lanes::V3x8 { x: f(&|o| o.n.x), y: f(&|o| o.n.y), z: f(&|o| o.n.z) },
-            sin_t: f(&|o| o.sin_t),
-            cos_t: f(&|o| o.cos_t),
-            jitter: f(&|o| o.jitter),
+            pos: v3_from_lanes::<F32x8>(|i| o[i].pos),
+            n: v3_from_lanes::<F32x8>(|i| o[i].n),
+            sin_t: F32x8::from_lanes(|i| o[i].sin_t),
+            cos_t: F32x8::from_lanes(|i| o[i].cos_t),
+            jitter: F32x8::from_lanes(|i| o[i].jitter),
         };
         raymarch_sum(params, depth, normals, kernel, &lanes)
     });

@@ -55,6 +55,8 @@ pub trait Lanes:
     fn min(self, other: Self) -> Self;
     fn sin(self) -> Self;
     fn cos(self) -> Self;
+    /// `(sin, cos)`, one evaluation on the CPU's lanes.
+    fn sin_cos(self) -> (Self, Self);
     fn log2(self) -> Self;
     fn exp2(self) -> Self;
     fn powf(self, p: f32) -> Self;
@@ -160,6 +162,10 @@ impl Lanes for f32 {
     #[inline]
     fn cos(self) -> Self {
         Float::cos(self)
+    }
+    #[inline]
+    fn sin_cos(self) -> (Self, Self) {
+        (Float::sin(self), Float::cos(self))
     }
     #[inline]
     fn log2(self) -> Self {
@@ -309,6 +315,18 @@ impl LaneVec3<f32> for Vec3 {
     }
 }
 
+/// The vector whose lane `i` is `f(i)` (gathering per-pixel setups into lanes).
+#[inline(always)]
+pub fn v2_from_lanes<L: Lanes>(f: impl Fn(usize) -> Vec2) -> L::V2 {
+    L::V2::new(L::from_lanes(|i| f(i).x), L::from_lanes(|i| f(i).y))
+}
+
+/// The vector whose lane `i` is `f(i)`.
+#[inline(always)]
+pub fn v3_from_lanes<L: Lanes>(f: impl Fn(usize) -> Vec3) -> L::V3 {
+    L::V3::new(L::from_lanes(|i| f(i).x), L::from_lanes(|i| f(i).y), L::from_lanes(|i| f(i).z))
+}
+
 #[cfg(not(target_arch = "spirv"))]
 pub use x8::{F32x8, V2x8, V3x8};
 
@@ -402,6 +420,11 @@ mod x8 {
         #[inline(always)]
         fn cos(self) -> Self {
             F32x8(self.0.sin_cos().1)
+        }
+        #[inline(always)]
+        fn sin_cos(self) -> (Self, Self) {
+            let (s, c) = self.0.sin_cos();
+            (F32x8(s), F32x8(c))
         }
         #[inline(always)]
         fn exp2(self) -> Self {

@@ -8,12 +8,12 @@ use spirv_std::num_traits::Float;
 use super::{GtaoParams, mip_texel};
 use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, store_term};
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
+#[cfg(not(target_arch = "spirv"))]
+use crate::common::lanes::{v2_from_lanes, v3_from_lanes};
 use crate::common::math::{ceil, clamp, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::{decode_normal, encode_normal};
 use crate::common::screen_space::{clamp_index, neighbour, view_pos};
-#[cfg(not(target_arch = "spirv"))]
-use crate::glam::Vec2;
 use crate::glam::{UVec2, Vec3, vec2, vec3};
 
 /// Output of the main pass for one pixel: the working AO term `uint(sat(vis/1.5)·255 + 0.5)`
@@ -63,25 +63,15 @@ impl<L: Lanes> PixelSetup<L> {
     /// The setups of `L::LANES` pixels side by side (lane `i` from `each[i]`).
     #[inline]
     pub fn from_lanes(each: &[PixelSetup<f32>]) -> Self {
-        let v2 = |f: &dyn Fn(&PixelSetup) -> Vec2| {
-            L::V2::new(L::from_lanes(|i| f(&each[i]).x), L::from_lanes(|i| f(&each[i]).y))
-        };
-        let v3 = |f: &dyn Fn(&PixelSetup) -> Vec3| {
-            L::V3::new(
-                L::from_lanes(|i| f(&each[i]).x),
-                L::from_lanes(|i| f(&each[i]).y),
-                L::from_lanes(|i| f(&each[i]).z),
-            )
-        };
         PixelSetup {
-            uv: v2(&|p| p.uv),
-            pos: v3(&|p| p.pos),
-            v: v3(&|p| p.v),
-            n: v3(&|p| p.n),
+            uv: v2_from_lanes::<L>(|i| each[i].uv),
+            pos: v3_from_lanes::<L>(|i| each[i].pos),
+            v: v3_from_lanes::<L>(|i| each[i].v),
+            n: v3_from_lanes::<L>(|i| each[i].n),
             r: each[0].r,
             r_px: L::from_lanes(|i| each[i].r_px),
             min_s: L::from_lanes(|i| each[i].min_s),
-            xi: v2(&|p| p.xi),
+            xi: v2_from_lanes::<L>(|i| each[i].xi),
         }
     }
 }
@@ -232,7 +222,7 @@ pub struct SliceFrame<L: Lanes = f32> {
 pub fn slice_frame<L: Lanes>(params: &GtaoParams, px: &PixelSetup<L>, s: u32) -> SliceFrame<L> {
     let slices = params.slices.max(1);
     let phi = (px.xi.x() + s as f32) * core::f32::consts::PI / slices as f32;
-    let (sin_phi, cos_phi) = (phi.sin(), phi.cos());
+    let (sin_phi, cos_phi) = phi.sin_cos();
     let omega = L::V2::new(cos_phi, -sin_phi) * px.r_px;
     let dir = L::V3::new(cos_phi, sin_phi, L::splat(0.0));
     let ortho = dir - px.v * dir.dot(px.v);

@@ -10,7 +10,7 @@ use crate::common::tables::{
     AO_SAMPLES, HBAO_HALF_CHORDS, HBAO_PDFS, HBAO_RADII, VAO_DIRECTIONS, VAO_HALF_CHORDS, VAO_RADII, kernel_entry,
     rotation_sin_cos,
 };
-use crate::glam::{UVec2, Vec3, vec3};
+use crate::glam::{UVec2, vec3};
 
 /// Push constants of the VAO pass.
 #[repr(C)]
@@ -60,21 +60,20 @@ pub struct PixelFrame<L: Lanes = f32> {
 impl PixelFrame<crate::common::lanes::F32x8> {
     /// The frames of eight pixels side by side (lane `i` from `each[i]`).
     pub fn from_lanes(each: &[PixelFrame; 8]) -> Self {
-        use crate::common::lanes::{F32x8, V2x8, V3x8};
-        let f = |g: &dyn Fn(&PixelFrame) -> f32| F32x8::from_lanes(|i| g(&each[i]));
-        let v3 = |g: &dyn Fn(&PixelFrame) -> Vec3| V3x8 { x: f(&|p| g(p).x), y: f(&|p| g(p).y), z: f(&|p| g(p).z) };
+        use crate::common::lanes::{F32x8, v2_from_lanes, v3_from_lanes};
+        type L = F32x8;
         PixelFrame {
             pixel: each.map(|p| p.pixel),
-            uv: V2x8 { x: f(&|p| p.uv.x), y: f(&|p| p.uv.y) },
-            radius: f(&|p| p.radius),
-            screen_radius: f(&|p| p.screen_radius),
-            position: v3(&|p| p.position),
-            normal: v3(&|p| p.normal),
-            axis: v3(&|p| p.axis),
-            tangent: v3(&|p| p.tangent),
-            bitangent: v3(&|p| p.bitangent),
-            normal_sphere: v3(&|p| p.normal_sphere),
-            inv_normal_z: f(&|p| p.inv_normal_z),
+            uv: v2_from_lanes::<L>(|i| each[i].uv),
+            radius: L::from_lanes(|i| each[i].radius),
+            screen_radius: L::from_lanes(|i| each[i].screen_radius),
+            position: v3_from_lanes::<L>(|i| each[i].position),
+            normal: v3_from_lanes::<L>(|i| each[i].normal),
+            axis: v3_from_lanes::<L>(|i| each[i].axis),
+            tangent: v3_from_lanes::<L>(|i| each[i].tangent),
+            bitangent: v3_from_lanes::<L>(|i| each[i].bitangent),
+            normal_sphere: v3_from_lanes::<L>(|i| each[i].normal_sphere),
+            inv_normal_z: L::from_lanes(|i| each[i].inv_normal_z),
         }
     }
 }
