@@ -4,6 +4,7 @@
 //! in Mpixel/s of the inner image, timed by the CPU executor itself (issue 14). Run: `cargo
 //! bench --bench cpu_kernels` (filter: `-- passes/gtao`).
 
+use aokit::cli::TechniqueArgs;
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::render::CpuRenderer;
 use aokit::scene::builtin;
@@ -13,23 +14,27 @@ use aokit_cpu::svao as svao_cpu;
 use aokit_shaders::glam::vec2;
 use aokit_shaders::raysd::{MAX_LAYERS, SdPayload, reservoir_any_hit};
 use aokit_shaders::svao::Secondary;
-use aokit::cli::TechniqueArgs;
 use criterion::{Criterion, SamplingMode, Throughput, criterion_group, criterion_main};
 use std::time::Duration;
 
-fn kernels(c: &mut Criterion) {
-    let b = builtin::find("sponza").unwrap();
-    let scene = b.load().unwrap();
+/// Sponza's preset camera over `width × height` plus the 64 px guard band.
+fn sponza_frame(scene: &aokit::scene::Scene, width: u32, height: u32) -> Frame {
     let req = FrameRequest {
-        width: 1920,
-        height: 1080,
+        width,
+        height,
         guard: 64,
         camera: CameraChoice::Preset { name: None, fov_deg: None },
         radius: None,
         exponent: 2.0,
         thickness: 0.0,
     };
-    let frame = Frame::resolve(&scene, Some(b), &req).unwrap();
+    Frame::resolve(scene, builtin::find("sponza"), &req).unwrap()
+}
+
+fn kernels(c: &mut Criterion) {
+    let b = builtin::find("sponza").unwrap();
+    let scene = b.load().unwrap();
+    let frame = sponza_frame(&scene, 1920, 1080);
     let renderer = CpuRenderer::new(&scene);
     let (g, _) = renderer.gbuffer(&frame, &no_progress);
     let vao = frame.vao_params();
@@ -105,16 +110,7 @@ fn kernels(c: &mut Criterion) {
 fn passes(c: &mut Criterion) {
     let b = builtin::find("sponza").unwrap();
     let scene = b.load().unwrap();
-    let req = FrameRequest {
-        width: 960,
-        height: 540,
-        guard: 64,
-        camera: CameraChoice::Preset { name: None, fov_deg: None },
-        radius: None,
-        exponent: 2.0,
-        thickness: 0.0,
-    };
-    let frame = Frame::resolve(&scene, Some(b), &req).unwrap();
+    let frame = sponza_frame(&scene, 960, 540);
     let renderer = CpuRenderer::new(&scene);
     let (g, _) = renderer.gbuffer(&frame, &no_progress);
     let mut group = c.benchmark_group("passes");

@@ -28,27 +28,7 @@ pub fn tiled<T: Send>(
     band_done: Progress,
     f: impl Fn(UVec2, &mut T) + Sync,
 ) {
-    let w = width as usize;
-    out.par_chunks_mut(w * TILE_ROWS as usize).enumerate().for_each(|(band, rows)| {
-        let y0 = band as u32 * TILE_ROWS;
-        let band_rows = (rows.len() / w) as u32;
-        let (lo, hi) = (y0.max(ys.start), (y0 + band_rows).min(ys.end));
-        if lo >= hi {
-            return;
-        }
-        let mut x0 = xs.start;
-        while x0 < xs.end {
-            let x1 = (x0 + TILE_COLS).min(xs.end);
-            for y in lo..hi {
-                let row = &mut rows[((y - y0) as usize) * w..][..w];
-                for x in x0..x1 {
-                    f(uvec2(x, y), &mut row[x as usize]);
-                }
-            }
-            x0 = x1;
-        }
-        band_done((hi - lo) as u64);
-    });
+    tiled_lanes(out, width, xs, ys, 1, band_done, |p, one| f(p, &mut one[0]));
 }
 
 /// [`tiled`] for kernels that shade several consecutive pixels of a row per call (SIMD across
