@@ -1,0 +1,109 @@
+//! The CPU's eight-lane drivers (issue 14: SIMD across pixels, `aokit_shaders::common::lanes`)
+//! against the same kernels run one pixel at a time, as the GPU runs them. Where the lanes use
+//! only IEEE-exact operations (add, mul, div, sqrt, compares) the two must agree bit for bit:
+//! VAO, SVAO pass 1 and the ray march. The blur's weights and XeGTAO's slices use `wide`'s
+//! exp2/sin/cos/ln polynomials, a few ulp from libm's: the blur agrees within 1e-6, XeGTAO's
+//! 8-bit terms may differ by one step in a few pixels.
+
+mod common;
+
+use aokit::render::CpuRenderer;
+use aokit_cpu::no_progress;
+use aokit_shaders::blur::{BlurParams, blur_pixel};
+use aokit_shaders::common::atomics::AtomicU32Buffer;
+use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
+use aokit_shaders::common::gbuffer_read::GBufferSlices;
+use aokit_shaders::glam::{UVec2, uvec2};
+use aokit_shaders::gtao::{GtaoParams, gtao_pixel};
+use aokit_shaders::raymarch::raymarch_pixel;
+use aokit_shaders::raymarch::settings::RaymarchSettings;
+use aokit_shaders::svao::{Secondary, pass1_pixel};
+use aokit_shaders::vao::vao_pixel;
+use std::sync::atomic::AtomicU32;
+
+/// Every inner pixel of the frame's full target, row-major.
+fn inner_pixels(view: &aokit_shaders::common::ViewParams) -> Vec<UVec2> {
+    let size = view.size();
+    let g = view.guard;
+    (g..size.y - g).flat_map(|y| (g..size.x - g).map(move |x| uvec2(x, y))).collect()
+}
+
+#[test]
+fn exact_kernels_agree_bit_for_bit_with_one_pixel_at_a_time() {
+    // 157 wide: rows end with a partial run of lanes.
+    let (scene, frame) = common::builtin_frame("sponza", 157, 90, 16);
+    let cpu = CpuRenderer::new(&scene);
+    let (g, _) = cpu.gbuffer(&frame, &no_progress);
+    let view = frame.camera.view;
+    let gbuffer = GBufferSlices { depth: &g.depth, normals: &g.normals, width: view.size().x };
+    let pixels = inner_pixels(&view);
+    let bits = |v: f32| v.to_bits();
+
+    let vao = frame.vao_params();
+    let lanes = aokit_cpu::run_vao(&vao, &g.depth, &g.normals, &no_progress);
+    let occluded = pixels.iter().filter(|&&p| lanes[view.index(p)] < 0.99).count();
+    assert!(occluded > pixels.len() / 4, "the test image must be mostly occluded, {occluded} pixels are");
+    for &p in &pixels {
+        assert_eq!(bits(lanes[view.index(p)]), bits(vao_pixel(&gbuffer, &vao, p)), "VAO at {p}");
+    }
+
+    let blur = BlurParams { direction: uvec2(1, 0), ..frame.blur_params() };
+    let lanes_blur = aokit_cpu::screen::run_blur_direction(&blur, &lanes, &g.depth);
+    for &p in &pixels {
+        let (a, b) = (lanes_blur[view.index(p)], blur_pixel(&blur, &lanes, &g.depth, p));
+        assert!((a - b).abs() <= 1e-6, "blur at {p}: lanes {a} vs one pixel {b}");
+    }
+
+    let svao = aokit::technique::SdOptions::default().frame(&frame.desc(), Secondary::StochasticDepth).params;
+    let pass1 = aokit_cpu::svao::run_pass1(&svao, &g.depth, &g.normals, &[], &no_progress);
+    let texels = (svao.sd_size().x * svao.sd_size().y) as usize;
+    let ray_min: Vec<AtomicU32> = (0..texels).map(|_| AtomicU32::new(RAY_MIN_CLEAR)).collect();
+    let ray_max: Vec<AtomicU32> = (0..texels).map(|_| AtomicU32::new(RAY_MAX_CLEAR)).collect();
+    let mut flagged = 0;
+    for &p in &pixels {
+        let (mut lo, mut hi) = (ray_min.as_slice(), ray_max.as_slice());
+        let one = pass1_pixel(&gbuffer, &[], &svao, p, &mut lo, &mut hi);
+        assert_eq!(bits(pass1.ao[view.index(p)]), bits(one.ao), "SVAO pass 1 AO at {p}");
+        assert_eq!(pass1.mask[view.index(p)], one.mask, "SVAO pass 1 mask at {p}");
+        flagged += one.mask.count_ones();
+    }
+    assert!(flagged > 100, "pass 1 must flag samples to compare the intervals, flagged {flagged}");
+    let (mut lo, mut hi) = (ray_min.as_slice(), ray_max.as_slice());
+    for q in 0..texels {
+        assert_eq!(pass1.ray_min[q], lo.atomic_min(q, u32::MAX), "ray_min at SD texel {q}");
+        assert_eq!(pass1.ray_max[q], hi.atomic_max(q, 0), "ray_max at SD texel {q}");
+    }
+
+    let settings = RaymarchSettings::default();
+    let (params, kernel) = (settings.params(&frame.desc()), settings.kernel());
+    let (ao, terms, edges) = aokit_cpu::raymarch::run_raymarch(&params, &g.depth, &g.normals, &kernel);
+    for &p in &pixels {
+        let one = raymarch_pixel(&params, &g.depth, &g.normals, &kernel, p);
+        let i = view.index(p);
+        assert_eq!((bits(ao[i]), terms[i], edges[i]), (bits(one.ao), one.term, one.edges), "ray march at {p}");
+    }
+}
+
+#[test]
+fn xegtao_lanes_match_one_pixel_at_a_time_within_one_step() {
+    let (scene, frame) = common::builtin_frame("sponza", 157, 90, 16);
+    let cpu = CpuRenderer::new(&scene);
+    let (g, _) = cpu.gbuffer(&frame, &no_progress);
+    let view = frame.camera.view;
+    let params: GtaoParams = frame.gtao_params(&Default::default());
+    let mips = aokit_cpu::gtao::run_prefilter(&params, &g.depth);
+    let (terms, edges) = aokit_cpu::gtao::run_main(&params, &mips, &g.normals);
+    let size = view.size();
+    let (mut differ, mut total) = (0, 0);
+    for p in (0..size.y).flat_map(|y| (0..size.x).map(move |x| uvec2(x, y))) {
+        let one = gtao_pixel(&params, &mips, &g.normals, p);
+        let i = view.index(p);
+        assert_eq!(edges[i], one.edges, "edges at {p}");
+        assert!(terms[i].abs_diff(one.term) <= 1, "term at {p}: lanes {} vs one pixel {}", terms[i], one.term);
+        differ += (terms[i] != one.term) as u32;
+        total += 1;
+    }
+    // wide's polynomials are within a few ulp: a one-step difference needs a value within a few
+    // ulp of a rounding boundary of the 8-bit term.
+    assert!(differ * 100 <= total, "{differ} of {total} terms differ");
+}
