@@ -65,18 +65,18 @@ fn function_() {
     var phi_268_: i32;
     var phi_287_: i32;
     var phi_306_: i32;
-    var phi_511_: i32;
-    var phi_530_: i32;
-    var phi_549_: i32;
-    var phi_568_: i32;
-    var phi_587_: i32;
-    var phi_606_: i32;
-    var phi_625_: i32;
-    var phi_644_: i32;
-    var phi_846_: u32;
-    var phi_1171_: vec3<f32>;
-    var phi_1221_: type_22;
-    var phi_1222_: type_22;
+    var phi_516_: i32;
+    var phi_535_: i32;
+    var phi_554_: i32;
+    var phi_573_: i32;
+    var phi_592_: i32;
+    var phi_611_: i32;
+    var phi_630_: i32;
+    var phi_649_: i32;
+    var phi_851_: u32;
+    var phi_1176_: vec3<f32>;
+    var phi_1226_: type_22;
+    var phi_1227_: type_22;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -249,88 +249,88 @@ fn function_() {
                         break;
                     }
                     if _e93 {
-                        phi_511_ = 0i;
+                        phi_516_ = 0i;
                     } else {
-                        phi_511_ = select(_e89, _e91, (_e89 > _e91));
+                        phi_516_ = select(_e89, _e91, (_e89 > _e91));
                     }
-                    let _e300 = phi_511_;
+                    let _e300 = phi_516_;
                     let _e301 = bitcast<u32>(_e300);
                     if _e102 {
                     } else {
                         break;
                     }
                     if _e128 {
-                        phi_530_ = 0i;
+                        phi_535_ = 0i;
                     } else {
-                        phi_530_ = select(_e127, _e101, (_e127 > _e101));
+                        phi_535_ = select(_e127, _e101, (_e127 > _e101));
                     }
-                    let _e305 = phi_530_;
+                    let _e305 = phi_535_;
                     let _e306 = bitcast<u32>(_e305);
                     if _e92 {
                     } else {
                         break;
                     }
                     if _e110 {
-                        phi_549_ = 0i;
+                        phi_554_ = 0i;
                     } else {
-                        phi_549_ = select(_e109, _e91, (_e109 > _e91));
+                        phi_554_ = select(_e109, _e91, (_e109 > _e91));
                     }
-                    let _e310 = phi_549_;
+                    let _e310 = phi_554_;
                     let _e311 = bitcast<u32>(_e310);
                     if _e102 {
                     } else {
                         break;
                     }
                     if _e128 {
-                        phi_568_ = 0i;
+                        phi_573_ = 0i;
                     } else {
-                        phi_568_ = select(_e127, _e101, (_e127 > _e101));
+                        phi_573_ = select(_e127, _e101, (_e127 > _e101));
                     }
-                    let _e315 = phi_568_;
+                    let _e315 = phi_573_;
                     let _e316 = bitcast<u32>(_e315);
                     if _e92 {
                     } else {
                         break;
                     }
                     if _e93 {
-                        phi_587_ = 0i;
+                        phi_592_ = 0i;
                     } else {
-                        phi_587_ = select(_e89, _e91, (_e89 > _e91));
+                        phi_592_ = select(_e89, _e91, (_e89 > _e91));
                     }
-                    let _e320 = phi_587_;
+                    let _e320 = phi_592_;
                     let _e321 = bitcast<u32>(_e320);
                     if _e102 {
                     } else {
                         break;
                     }
                     if _e140 {
-                        phi_606_ = 0i;
+                        phi_611_ = 0i;
                     } else {
-                        phi_606_ = select(_e139, _e101, (_e139 > _e101));
+                        phi_611_ = select(_e139, _e101, (_e139 > _e101));
                     }
-                    let _e325 = phi_606_;
+                    let _e325 = phi_611_;
                     let _e326 = bitcast<u32>(_e325);
                     if _e92 {
                     } else {
                         break;
                     }
                     if _e110 {
-                        phi_625_ = 0i;
+                        phi_630_ = 0i;
                     } else {
-                        phi_625_ = select(_e109, _e91, (_e109 > _e91));
+                        phi_630_ = select(_e109, _e91, (_e109 > _e91));
                     }
-                    let _e330 = phi_625_;
+                    let _e330 = phi_630_;
                     let _e331 = bitcast<u32>(_e330);
                     if _e102 {
                     } else {
                         break;
                     }
                     if _e140 {
-                        phi_644_ = 0i;
+                        phi_649_ = 0i;
                     } else {
-                        phi_644_ = select(_e139, _e101, (_e139 > _e101));
+                        phi_649_ = select(_e139, _e101, (_e139 > _e101));
                     }
-                    let _e335 = phi_644_;
+                    let _e335 = phi_649_;
                     let _e336 = bitcast<u32>(_e335);
                     let _e344 = ((((((((_e87 + _e265) + _e270) + _e275) + _e280) + _e284) + _e288) + _e292) + _e296);
                     let _e347 = params.member.member_13;
@@ -388,13 +388,13 @@ fn function_() {
                         if _e83 {
                             let _e430 = ((_e428 * 382.5f) + 0.5f);
                             let _e435 = select(select(u32(_e430), 0u, (_e430 < 0f)), 4294967295u, (_e430 > 4294967000f));
-                            phi_846_ = select(_e435, 255u, (255u < _e435));
+                            phi_851_ = select(_e435, 255u, (255u < _e435));
                         } else {
                             let _e439 = ((_e428 * 255f) + 0.5f);
-                            phi_846_ = select(select(u32(_e439), 0u, (_e439 < 0f)), 4294967295u, (_e439 > 4294967000f));
+                            phi_851_ = select(select(u32(_e439), 0u, (_e439 < 0f)), 4294967295u, (_e439 > 4294967000f));
                         }
-                        let _e446 = phi_846_;
-                        phi_1222_ = type_22(_e446, (f32(_e446) * 0.003921569f), _e83);
+                        let _e446 = phi_851_;
+                        phi_1227_ = type_22(_e446, (f32(_e446) * 0.003921569f), _e83);
                     } else {
                         if (_e225 < _e43) {
                         } else {
@@ -455,11 +455,11 @@ fn function_() {
                             let _e724 = ((_e717 * 2f) - 1f);
                             let _e730 = sqrt((((_e722 * _e722) + (_e723 * _e723)) + (_e724 * _e724)));
                             if (_e730 > 0f) {
-                                phi_1171_ = vec3<f32>((_e722 / _e730), (_e723 / _e730), (_e724 / _e730));
+                                phi_1176_ = vec3<f32>((_e722 / _e730), (_e723 / _e730), (_e724 / _e730));
                             } else {
-                                phi_1171_ = vec3<f32>(0f, 0f, -1f);
+                                phi_1176_ = vec3<f32>(0f, 0f, -1f);
                             }
-                            let _e737 = phi_1171_;
+                            let _e737 = phi_1176_;
                             let _e739 = ((_e718 * 382.5f) + 0.5f);
                             let _e744 = select(select(u32(_e739), 0u, (_e739 < 0f)), 4294967295u, (_e739 > 4294967000f));
                             let _e748 = (f32(select(_e744, 255u, (255u < _e744))) * 0.003921569f);
@@ -470,18 +470,18 @@ fn function_() {
                             let _e774 = ((select(0f, select(1f, _e756, (_e756 < 1f)), (_e756 > 0f)) * 255f) + 0.5f);
                             let _e788 = ((select(0f, select(1f, _e757, (_e757 < 1f)), (_e757 > 0f)) * 255f) + 0.5f);
                             let _e802 = ((select(0f, select(1f, _e748, (_e748 < 1f)), (_e748 > 0f)) * 255f) + 0.5f);
-                            phi_1221_ = type_22((((select(select(u32(_e763), 0u, (_e763 < 0f)), 4294967295u, (_e763 > 4294967000f)) | (select(select(u32(_e774), 0u, (_e774 < 0f)), 4294967295u, (_e774 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e788), 0u, (_e788 < 0f)), 4294967295u, (_e788 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e802), 0u, (_e802 < 0f)), 4294967295u, (_e802 > 4294967000f)) << bitcast<u32>(24i))), _e748, _e83);
+                            phi_1226_ = type_22((((select(select(u32(_e763), 0u, (_e763 < 0f)), 4294967295u, (_e763 > 4294967000f)) | (select(select(u32(_e774), 0u, (_e774 < 0f)), 4294967295u, (_e774 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e788), 0u, (_e788 < 0f)), 4294967295u, (_e788 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e802), 0u, (_e802 < 0f)), 4294967295u, (_e802 > 4294967000f)) << bitcast<u32>(24i))), _e748, _e83);
                         } else {
                             let _e817 = ((select(0f, select(1f, _e715, (_e715 < 1f)), (_e715 > 0f)) * 255f) + 0.5f);
                             let _e828 = ((select(0f, select(1f, _e716, (_e716 < 1f)), (_e716 > 0f)) * 255f) + 0.5f);
                             let _e842 = ((select(0f, select(1f, _e717, (_e717 < 1f)), (_e717 > 0f)) * 255f) + 0.5f);
                             let _e856 = ((select(0f, select(1f, _e718, (_e718 < 1f)), (_e718 > 0f)) * 255f) + 0.5f);
-                            phi_1221_ = type_22((((select(select(u32(_e817), 0u, (_e817 < 0f)), 4294967295u, (_e817 > 4294967000f)) | (select(select(u32(_e828), 0u, (_e828 < 0f)), 4294967295u, (_e828 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e842), 0u, (_e842 < 0f)), 4294967295u, (_e842 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e856), 0u, (_e856 < 0f)), 4294967295u, (_e856 > 4294967000f)) << bitcast<u32>(24i))), 0f, _e83);
+                            phi_1226_ = type_22((((select(select(u32(_e817), 0u, (_e817 < 0f)), 4294967295u, (_e817 > 4294967000f)) | (select(select(u32(_e828), 0u, (_e828 < 0f)), 4294967295u, (_e828 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e842), 0u, (_e842 < 0f)), 4294967295u, (_e842 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e856), 0u, (_e856 < 0f)), 4294967295u, (_e856 > 4294967000f)) << bitcast<u32>(24i))), 0f, _e83);
                         }
-                        let _e867 = phi_1221_;
-                        phi_1222_ = _e867;
+                        let _e867 = phi_1226_;
+                        phi_1227_ = _e867;
                     }
-                    let _e869 = phi_1222_;
+                    let _e869 = phi_1227_;
                     if (_e225 < arrayLength((&terms_out.member))) {
                     } else {
                         break;

@@ -246,9 +246,7 @@ mod kernels {
     use super::*;
     use aokit_shaders::blur::BlurParams;
     use aokit_shaders::groundtruth::GroundTruthFrame;
-    use aokit_shaders::gtao::{
-        GtaoParams, GtaoPixel, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
-    };
+    use aokit_shaders::gtao::{GtaoParams, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel};
     use aokit_shaders::hybrid::HybridFrame;
     use aokit_shaders::raymarch::RaymarchParams;
     use aokit_shaders::svao::SvaoFrame;
@@ -337,11 +335,14 @@ mod kernels {
     pub fn gtao_prefilter(io: &mut PassIo) {
         let params: GtaoParams = io.push();
         let full = params.view.size();
-        let mips = io.take_f32(1);
-        let level =
-            crate::gtao::per_pixel(mip_size(full, params.pass), |t| prefilter_texel(&params, io.f32(0), mips, t));
-        let at = mip_offset(full, params.pass);
-        mips[at..at + level.len()].copy_from_slice(&level);
+        let size = mip_size(full, params.pass);
+        // This level is written in place; it reads only the levels before it.
+        let (before, level) = io.take_f32(1).split_at_mut(mip_offset(full, params.pass));
+        let level = &mut level[..(size.x * size.y) as usize];
+        let depth = io.f32(0);
+        crate::screen::tiled(level, size.x, 0..size.x, 0..size.y, &crate::no_progress, |t, v| {
+            *v = prefilter_texel(&params, depth, before, t)
+        });
     }
 
     pub fn gtao_normals(io: &mut PassIo) {
@@ -352,37 +353,33 @@ mod kernels {
 
     pub fn gtao_main(io: &mut PassIo) {
         let params: GtaoParams = io.push();
-        let out = crate::gtao::run_main_pixels(&params, io.f32(0), io.words(1));
-        store_terms_edges(io, out);
-    }
-
-    /// A main pass's outputs: the AO terms at slot 2, the edges at slot 3.
-    fn store_terms_edges(io: &mut PassIo, out: Vec<GtaoPixel>) {
         let (terms, edges) = (io.take(2), io.take(3));
-        for (i, o) in out.into_iter().enumerate() {
-            (terms[i], edges[i]) = (o.term, o.edges);
-        }
+        crate::gtao::run_main_into(&params, io.f32(0), io.words(1), terms, edges);
     }
 
     pub fn vbao_main(io: &mut PassIo) {
         let params: VbaoParams = io.push();
-        let out = crate::gtao::per_pixel(params.gtao.view.size(), |p| vbao_pixel(&params, io.f32(0), io.words(1), p));
-        store_terms_edges(io, out);
+        let size = params.gtao.view.size();
+        let (terms, edges) = (io.take(2), io.take(3));
+        let (mips, normals) = (io.f32(0), io.words(1));
+        crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 1, &crate::no_progress, |p, t, e| {
+            let o = vbao_pixel(&params, mips, normals, p);
+            (t[0], e[0]) = (o.term, o.edges);
+        });
     }
 
     pub fn gtao_denoise(io: &mut PassIo) {
         let params: GtaoParams = io.push();
-        let out = crate::gtao::per_pixel(params.view.size(), |q| {
-            let o = denoise_pixel(&params, io.words(0), io.words(1), q);
-            (o.term, o.last, o.visibility)
-        });
+        let size = params.view.size();
         let (terms, ao) = (io.take(2), io.take_f32(3));
-        for (i, (term, last, visibility)) in out.into_iter().enumerate() {
-            terms[i] = term;
-            if last {
-                ao[i] = visibility;
+        let (terms_in, edges) = (io.words(0), io.words(1));
+        crate::screen::tiled_lanes2(terms, ao, size.x, 0..size.x, 0..size.y, 1, &crate::no_progress, |q, t, a| {
+            let o = denoise_pixel(&params, terms_in, edges, q);
+            t[0] = o.term;
+            if o.last {
+                a[0] = o.visibility;
             }
-        }
+        });
     }
 
     pub fn ground_truth(io: &mut PassIo) {

@@ -3,7 +3,7 @@
 
 use aokit_shaders::common::lanes::{F32x8, Lanes};
 use aokit_shaders::glam::{UVec2, uvec2, vec3};
-use aokit_shaders::gtao::main_pass::{GtaoPixel, PixelSetup, finish_pixel, pixel_setup, slices_visibility};
+use aokit_shaders::gtao::main_pass::{PixelSetup, finish_pixel, pixel_setup, slices_visibility};
 use aokit_shaders::gtao::{
     GtaoParams, MIP_LEVELS, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
 };
@@ -36,33 +36,41 @@ pub fn run_normals(params: &GtaoParams, depth: &[f32]) -> Vec<u32> {
 /// MainPass: AO terms (0–255) and packed edges per pixel of the full target, eight pixels of a
 /// row per call of the shader crate's lane-generic slices ([`main_pass_x8`]).
 pub fn run_main(params: &GtaoParams, mips: &[f32], normals: &[u32]) -> (Vec<u32>, Vec<u32>) {
-    run_main_pixels(params, mips, normals).into_iter().map(|o| (o.term, o.edges)).unzip()
-}
-
-/// [`run_main`] as one [`GtaoPixel`] per pixel.
-pub fn run_main_pixels(params: &GtaoParams, mips: &[f32], normals: &[u32]) -> Vec<GtaoPixel> {
     let size = params.view.size();
-    let mut out = vec![GtaoPixel::default(); (size.x * size.y) as usize];
-    crate::screen::tiled_lanes(&mut out, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |p, o| {
-        main_pass_x8(params, mips, normals, p, o)
-    });
-    out
+    let (mut terms, mut edges) = (vec![0; (size.x * size.y) as usize], vec![0; (size.x * size.y) as usize]);
+    run_main_into(params, mips, normals, &mut terms, &mut edges);
+    (terms, edges)
 }
 
-/// XeGTAO's MainPass for `out.len()` ≤ 8 consecutive pixels of a row from `first`: the
+/// [`run_main`] into the caller's term and edge buffers.
+pub fn run_main_into(params: &GtaoParams, mips: &[f32], normals: &[u32], terms: &mut [u32], edges: &mut [u32]) {
+    let size = params.view.size();
+    crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |p, t, e| {
+        main_pass_x8(params, mips, normals, p, t, e)
+    });
+}
+
+/// XeGTAO's MainPass for `terms.len()` ≤ 8 consecutive pixels of a row from `first`: the
 /// per-pixel setup and finish of [`aokit_shaders::gtao::gtao_pixel`] per lane, the slices (all the arithmetic) on
 /// eight lanes at once. Missing lanes repeat the last pixel; lanes without a usable depth are
 /// computed and discarded, as on a GPU.
-pub fn main_pass_x8(params: &GtaoParams, mips: &[f32], normals: &[u32], first: UVec2, out: &mut [GtaoPixel]) {
-    let last = out.len() - 1;
+pub fn main_pass_x8(
+    params: &GtaoParams,
+    mips: &[f32],
+    normals: &[u32],
+    first: UVec2,
+    terms: &mut [u32],
+    edges: &mut [u32],
+) {
+    let last = terms.len() - 1;
     let setups: [_; 8] =
         core::array::from_fn(|i| pixel_setup(params, mips, normals, uvec2(first.x + i.min(last) as u32, first.y)));
     let px = PixelSetup::<F32x8>::from_lanes(&setups.map(|s| s.2));
     let (vis, bent) = slices_visibility(params, mips, &px);
-    for (i, o) in out.iter_mut().enumerate() {
+    for (i, (t, e)) in terms.iter_mut().zip(edges.iter_mut()).enumerate() {
         let (packed, valid, setup) = setups[i];
         let b = vec3(bent.x.lane(i), bent.y.lane(i), bent.z.lane(i));
-        *o = GtaoPixel { term: finish_pixel(params, valid, vis.lane(i), b, setup.n), edges: packed };
+        (*t, *e) = (finish_pixel(params, valid, vis.lane(i), b, setup.n), packed);
     }
 }
 

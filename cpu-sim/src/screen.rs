@@ -43,10 +43,29 @@ pub fn tiled_lanes<T: Send>(
     band_done: Progress,
     f: impl Fn(UVec2, &mut [T]) + Sync,
 ) {
+    let mut none = vec![(); out.len()];
+    tiled_lanes2(out, &mut none, width, xs, ys, lanes, band_done, |p, o, _| f(p, o));
+}
+
+/// [`tiled_lanes`] writing two images of the same size at once (a pass with two outputs, such
+/// as AO terms and edges), straight into the caller's buffers.
+#[allow(clippy::too_many_arguments)]
+pub fn tiled_lanes2<A: Send, B: Send>(
+    a: &mut [A],
+    b: &mut [B],
+    width: u32,
+    xs: core::ops::Range<u32>,
+    ys: core::ops::Range<u32>,
+    lanes: u32,
+    band_done: Progress,
+    f: impl Fn(UVec2, &mut [A], &mut [B]) + Sync,
+) {
+    assert_eq!(a.len(), b.len(), "both images cover the same pixels");
     let w = width as usize;
-    out.par_chunks_mut(w * TILE_ROWS as usize).enumerate().for_each(|(band, rows)| {
-        let y0 = band as u32 * TILE_ROWS;
-        let band_rows = (rows.len() / w) as u32;
+    let band = w * TILE_ROWS as usize;
+    a.par_chunks_mut(band).zip(b.par_chunks_mut(band)).enumerate().for_each(|(k, (rows_a, rows_b))| {
+        let y0 = k as u32 * TILE_ROWS;
+        let band_rows = (rows_a.len() / w) as u32;
         let (lo, hi) = (y0.max(ys.start), (y0 + band_rows).min(ys.end));
         if lo >= hi {
             return;
@@ -55,11 +74,13 @@ pub fn tiled_lanes<T: Send>(
         while x0 < xs.end {
             let x1 = (x0 + TILE_COLS).min(xs.end);
             for y in lo..hi {
-                let row = &mut rows[((y - y0) as usize) * w..][..w];
+                let at = ((y - y0) as usize) * w;
+                let (row_a, row_b) = (&mut rows_a[at..][..w], &mut rows_b[at..][..w]);
                 let mut x = x0;
                 while x < x1 {
                     let n = lanes.min(x1 - x);
-                    f(uvec2(x, y), &mut row[x as usize..(x + n) as usize]);
+                    let run = x as usize..(x + n) as usize;
+                    f(uvec2(x, y), &mut row_a[run.clone()], &mut row_b[run]);
                     x += n;
                 }
             }
