@@ -8,6 +8,7 @@ pub mod frame;
 pub mod metrics;
 pub mod output;
 pub mod path;
+pub mod rays;
 pub mod render;
 pub mod report;
 pub mod scene;

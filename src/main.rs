@@ -45,6 +45,10 @@ enum Command {
     /// accumulation: temporal instability and MSE against the ground truth per technique, an
     /// animated PNG to look at (docs/temporal.md).
     Path(PathArgs),
+    /// Trace the ground truth's AO rays and the G-buffer's primary rays of a frame through
+    /// cpu-sim's BVH on N threads: M rays/s, occluded fraction; `--dump DIR` writes the triangles
+    /// and rays as .npy for another tracer (bench/embree_rays.py: Embree).
+    Rays(aokit::rays::RaysArgs),
     /// Print the Vulkan device aokit would use and its ray-tracing extensions.
     Info {
         /// Enable the Khronos validation layer.
@@ -638,6 +642,7 @@ fn main() -> ExitCode {
         Command::Web(args) => web(args),
         Command::Path(args) => path(args),
         Command::Tune(args) => aokit::tune::tune_command(args),
+        Command::Rays(args) => aokit::rays::rays_command(args),
         Command::Info { validation } => aokit_vulkan::Gpu::new(&GpuOptions { validation, ..Default::default() })
             .map_err(|e| e.to_string())
             .map(|gpu| {

@@ -1,4 +1,10 @@
-//! CPU ray casting through obvhs' CWBVH (Ylitie et al. 2017), built once per scene.
+//! CPU ray casting, built once per scene over obvhs' CWBVH (Ylitie et al. 2017): closest-hit
+//! and occlusion queries through its wide re-layout ([`wide`]), any-hit queries through obvhs'
+//! own traversal (their hit order is what the stochastic depth map's reservoir sees).
+
+mod wide;
+
+pub use wide::OriginCut;
 
 use aokit_shaders::glam::{Vec2, Vec3, Vec3A, vec2};
 use obvhs::BvhBuildParams;
@@ -6,7 +12,9 @@ use obvhs::cwbvh::CwBvh;
 use obvhs::cwbvh::builder::build_cwbvh_from_tris;
 use obvhs::ray::{Ray, RayHit};
 use obvhs::triangle::Triangle;
+use std::cell::RefCell;
 use std::time::Duration;
+use wide::WideBvh;
 
 /// Closest-hit record of a ray.
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -22,6 +30,13 @@ pub struct SceneBvh {
     bvh: CwBvh,
     /// Triangles in BVH primitive order.
     triangles: Vec<Triangle>,
+    /// The same tree laid out for closest-hit and occlusion rays.
+    wide: WideBvh,
+}
+
+thread_local! {
+    /// The cut of the last run of occlusion rays on this thread ([`SceneBvh::occluded`]).
+    static CUT: RefCell<OriginCut> = RefCell::new(OriginCut::default());
 }
 
 impl SceneBvh {
@@ -30,18 +45,22 @@ impl SceneBvh {
         let tris: Vec<Triangle> =
             triangles.iter().map(|t| Triangle { v0: t[0].into(), v1: t[1].into(), v2: t[2].into() }).collect();
         let bvh = build_cwbvh_from_tris(&tris, BvhBuildParams::medium_build(), &mut Duration::default());
-        let triangles = bvh.primitive_indices.iter().map(|&i| tris[i as usize]).collect();
-        SceneBvh { bvh, triangles }
+        let triangles: Vec<Triangle> = bvh.primitive_indices.iter().map(|&i| tris[i as usize]).collect();
+        let wide = WideBvh::build(&bvh, &triangles);
+        SceneBvh { bvh, triangles, wide }
     }
 
     /// Closest hit along `origin + t·direction` for `t ∈ (t_min, t_max)`, both ends exclusive as
     /// on lavapipe's hardware-style traversal.
     pub fn closest_hit(&self, origin: Vec3, direction: Vec3, t_min: f32, t_max: f32) -> Option<Hit> {
-        self.closest_accepted_hit(origin, direction, t_min, t_max, |_, _| true)
+        let found = self.wide.closest(Vec3A::from(origin), Vec3A::from(direction), t_min, t_max, |_, _| true);
+        found.map(|(t, id)| Hit { t, triangle: self.bvh.primitive_indices[id] })
     }
 
     /// Closest hit that `accept(triangle, barycentrics)` accepts (an alpha test, say); the
-    /// barycentrics are the weights of the triangle's second and third vertex.
+    /// barycentrics are the weights of the triangle's second and third vertex. `accept` is
+    /// asked about candidates in no particular order, only about those nearer than the closest
+    /// accepted so far.
     pub fn closest_accepted_hit(
         &self,
         origin: Vec3,
@@ -50,28 +69,23 @@ impl SceneBvh {
         t_max: f32,
         accept: impl Fn(u32, Vec2) -> bool,
     ) -> Option<Hit> {
-        let ray = Ray::new(Vec3A::from(origin), Vec3A::from(direction), t_min, t_max);
-        let mut hit = RayHit::none();
-        let found = self.bvh.ray_traverse(ray, &mut hit, |ray, id| self.accepted_t(ray, id, &accept));
-        found.then(|| Hit { t: hit.t, triangle: self.bvh.primitive_indices[hit.primitive_id as usize] })
+        let (o, d) = (Vec3A::from(origin), Vec3A::from(direction));
+        let found = self.wide.closest(o, d, t_min, t_max, |id, t| self.accepts(o, d, id, t, &accept));
+        found.map(|(t, id)| Hit { t, triangle: self.bvh.primitive_indices[id] })
     }
-}
 
-impl SceneBvh {
-    /// Distance to BVH primitive `id` if the ray hits it inside its open interval and `accept`
-    /// takes the hit; ∞ otherwise (obvhs' intersection-callback convention).
-    fn accepted_t(&self, ray: &Ray, id: usize, accept: &impl Fn(u32, Vec2) -> bool) -> f32 {
-        let tri = &self.triangles[id];
-        let t = tri.intersect(ray);
-        if !(t > ray.tmin && t < ray.tmax) {
-            return f32::INFINITY;
-        }
-        let p = ray.origin + ray.direction * t;
-        if accept(self.bvh.primitive_indices[id], barycentrics(p, tri)) { t } else { f32::INFINITY }
+    /// Whether `accept` takes BVH primitive `id` hit at distance `t` (its barycentrics from the
+    /// hit point).
+    #[inline]
+    fn accepts(&self, origin: Vec3A, direction: Vec3A, id: usize, t: f32, accept: &impl Fn(u32, Vec2) -> bool) -> bool {
+        accept(self.bvh.primitive_indices[id], barycentrics(origin + direction * t, &self.triangles[id]))
     }
 
     /// Is anything that `accept` accepts hit along the ray for `t ∈ (t_min, t_max)`? Stops at
-    /// the first accepted hit (shadow / AO rays).
+    /// the first accepted hit (shadow / AO rays); `accept` sees candidates in no particular
+    /// order. Consecutive calls on a thread with the same origin and `t_max` (a pixel's AO
+    /// rays) share an [`OriginCut`]: the second builds it, and from then on traversal starts
+    /// below the tree's top levels (same answers).
     pub fn occluded(
         &self,
         origin: Vec3,
@@ -80,8 +94,58 @@ impl SceneBvh {
         t_max: f32,
         accept: impl Fn(u32, Vec2) -> bool,
     ) -> bool {
+        let (o, d) = (Vec3A::from(origin), Vec3A::from(direction));
+        let test = |id, t| self.accepts(o, d, id, t, &accept);
+        CUT.with(|cut| match cut.try_borrow_mut() {
+            Ok(mut cut) => self.wide.occluded_cut(&mut cut, o, d, t_min, t_max, test),
+            // Re-entered from `accept` (tracing inside an alpha test): no shared cut.
+            Err(_) => self.wide.occluded(o, d, t_min, t_max, test),
+        })
+    }
+
+    /// [`SceneBvh::occluded`] from the root, without the thread's shared cut.
+    pub fn occluded_uncached(
+        &self,
+        origin: Vec3,
+        direction: Vec3,
+        t_min: f32,
+        t_max: f32,
+        accept: impl Fn(u32, Vec2) -> bool,
+    ) -> bool {
+        let (o, d) = (Vec3A::from(origin), Vec3A::from(direction));
+        self.wide.occluded(o, d, t_min, t_max, |id, t| self.accepts(o, d, id, t, &accept))
+    }
+
+    /// obvhs' own occlusion traversal of the CWBVH (the implementation before the wide
+    /// layout), for comparisons.
+    pub fn occluded_cwbvh(
+        &self,
+        origin: Vec3,
+        direction: Vec3,
+        t_min: f32,
+        t_max: f32,
+        accept: impl Fn(u32, Vec2) -> bool,
+    ) -> bool {
         let ray = Ray::new(Vec3A::from(origin), Vec3A::from(direction), t_min, t_max);
-        !self.bvh.ray_traverse_miss(ray, |ray, id| self.accepted_t(ray, id, &accept))
+        !self.bvh.ray_traverse_miss(ray, |ray, id| {
+            let tri = &self.triangles[id];
+            let t = tri.intersect(ray);
+            if !(t > ray.tmin && t < ray.tmax) {
+                return f32::INFINITY;
+            }
+            if self.accepts(ray.origin, ray.direction, id, t, &accept) { t } else { f32::INFINITY }
+        })
+    }
+
+    /// obvhs' own closest-hit traversal of the CWBVH, for comparisons.
+    pub fn closest_hit_cwbvh(&self, origin: Vec3, direction: Vec3, t_min: f32, t_max: f32) -> Option<Hit> {
+        let ray = Ray::new(Vec3A::from(origin), Vec3A::from(direction), t_min, t_max);
+        let mut hit = RayHit::none();
+        let found = self.bvh.ray_traverse(ray, &mut hit, |ray, id| {
+            let t = self.triangles[id].intersect(ray);
+            if t > ray.tmin && t < ray.tmax { t } else { f32::INFINITY }
+        });
+        found.then(|| Hit { t: hit.t, triangle: self.bvh.primitive_indices[hit.primitive_id as usize] })
     }
 }
 
@@ -170,6 +234,7 @@ pub fn replay_any_hit(
 }
 
 /// Barycentric weights `(b1, b2)` of `v1` and `v2` for a point `p` in the triangle's plane.
+#[inline]
 fn barycentrics(p: Vec3A, tri: &Triangle) -> Vec2 {
     let (e1, e2, d) = (tri.v1 - tri.v0, tri.v2 - tri.v0, p - tri.v0);
     let (d00, d01, d11) = (e1.dot(e1), e1.dot(e2), e2.dot(e2));

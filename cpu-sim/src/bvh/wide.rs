@@ -1,0 +1,999 @@
+//! The traversal structure behind [`SceneBvh`](super::SceneBvh)'s closest-hit and occlusion
+//! queries (issue 14: CPU rays at Embree's pace). The topology is obvhs' CWBVH (Ylitie et al.
+//! 2017: its PLOC BVH2 collapsed into an 8-wide tree by their SAH dynamic programme, at most
+//! three triangles per leaf); only the layout differs:
+//!
+//! - a node holds its eight children's exact float boxes in SoA lanes (no 8-bit quantisation to
+//!   undo per test), tested 8 at a time with AVX where the CPU has it, two 4-lane halves
+//!   otherwise — the same IEEE operations, so the same answers;
+//! - a leaf is one SoA block of up to four triangles holding what obvhs' Möller–Trumbore test
+//!   computes per triangle (`e1 = v0 − v1`, `e2 = v2 − v0`, `n = e1 × e2`), tested 4 at a time
+//!   by the very same arithmetic (Möller & Trumbore 1997, in the form of
+//!   `obvhs::triangle::Triangle::intersect`): a hit is where that test hits;
+//! - closest-hit traversal visits children nearest first and drops stack entries beyond the
+//!   best hit; occlusion traversal stops at the first accepted hit;
+//! - [`OriginCut`]: rays that share an origin and a length (a pixel's AO rays) start below the
+//!   BVH's top levels.
+
+use aokit_shaders::glam::Vec3A;
+use obvhs::cwbvh::CwBvh;
+use obvhs::triangle::Triangle;
+use std::mem::MaybeUninit;
+
+/// Four-lane f32 vector: SSE on x86-64, an array elsewhere, with the same IEEE operations (no
+/// fused multiply-add), so both give the same answers.
+mod lanes {
+    #[cfg(target_arch = "x86_64")]
+    use std::arch::x86_64::*;
+
+    #[cfg(target_arch = "x86_64")]
+    #[derive(Copy, Clone)]
+    pub struct F4(__m128);
+
+    // SAFETY (every `unsafe` below): SSE and SSE2 are part of the x86-64 baseline.
+    #[cfg(target_arch = "x86_64")]
+    impl F4 {
+        #[inline(always)]
+        pub fn splat(x: f32) -> F4 {
+            F4(unsafe { _mm_set1_ps(x) })
+        }
+        #[inline(always)]
+        pub fn load(a: &[f32; 4]) -> F4 {
+            F4(unsafe { _mm_loadu_ps(a.as_ptr()) })
+        }
+        #[inline(always)]
+        pub fn add(self, b: F4) -> F4 {
+            F4(unsafe { _mm_add_ps(self.0, b.0) })
+        }
+        #[inline(always)]
+        pub fn sub(self, b: F4) -> F4 {
+            F4(unsafe { _mm_sub_ps(self.0, b.0) })
+        }
+        #[inline(always)]
+        pub fn mul(self, b: F4) -> F4 {
+            F4(unsafe { _mm_mul_ps(self.0, b.0) })
+        }
+        #[inline(always)]
+        pub fn div(self, b: F4) -> F4 {
+            F4(unsafe { _mm_div_ps(self.0, b.0) })
+        }
+        /// `if a < b { a } else { b }` per lane.
+        #[inline(always)]
+        pub fn min(self, b: F4) -> F4 {
+            F4(unsafe { _mm_min_ps(self.0, b.0) })
+        }
+        /// `if a > b { a } else { b }` per lane.
+        #[inline(always)]
+        pub fn max(self, b: F4) -> F4 {
+            F4(unsafe { _mm_max_ps(self.0, b.0) })
+        }
+        /// Bit `i` set where lane `i` has `a <= b`.
+        #[inline(always)]
+        pub fn le(self, b: F4) -> u32 {
+            unsafe { _mm_movemask_ps(_mm_cmple_ps(self.0, b.0)) as u32 }
+        }
+        /// Bit `i` set where lane `i` has `a < b`.
+        #[inline(always)]
+        pub fn lt(self, b: F4) -> u32 {
+            unsafe { _mm_movemask_ps(_mm_cmplt_ps(self.0, b.0)) as u32 }
+        }
+        /// Bit `i` set where lane `i` has `a != b` (true for NaN, as Rust's `!=`).
+        #[inline(always)]
+        pub fn ne(self, b: F4) -> u32 {
+            unsafe { _mm_movemask_ps(_mm_cmpneq_ps(self.0, b.0)) as u32 }
+        }
+        /// Bit `i` set where any of `a`, `b`, `c` has its sign bit set in lane `i`.
+        #[inline(always)]
+        pub fn any_sign(a: F4, b: F4, c: F4) -> u32 {
+            unsafe { _mm_movemask_ps(_mm_or_ps(a.0, _mm_or_ps(b.0, c.0))) as u32 }
+        }
+        #[inline(always)]
+        pub fn to_array(self) -> [f32; 4] {
+            let mut out = [0.0; 4];
+            unsafe { _mm_storeu_ps(out.as_mut_ptr(), self.0) };
+            out
+        }
+    }
+
+    #[cfg(not(target_arch = "x86_64"))]
+    #[derive(Copy, Clone)]
+    pub struct F4([f32; 4]);
+
+    #[cfg(not(target_arch = "x86_64"))]
+    impl F4 {
+        #[inline(always)]
+        fn zip(self, b: F4, f: impl Fn(f32, f32) -> f32) -> F4 {
+            F4(std::array::from_fn(|i| f(self.0[i], b.0[i])))
+        }
+        #[inline(always)]
+        fn bits(self, b: F4, f: impl Fn(f32, f32) -> bool) -> u32 {
+            (0..4).fold(0, |m, i| m | ((f(self.0[i], b.0[i]) as u32) << i))
+        }
+        #[inline(always)]
+        pub fn splat(x: f32) -> F4 {
+            F4([x; 4])
+        }
+        #[inline(always)]
+        pub fn load(a: &[f32; 4]) -> F4 {
+            F4(*a)
+        }
+        #[inline(always)]
+        pub fn add(self, b: F4) -> F4 {
+            self.zip(b, |x, y| x + y)
+        }
+        #[inline(always)]
+        pub fn sub(self, b: F4) -> F4 {
+            self.zip(b, |x, y| x - y)
+        }
+        #[inline(always)]
+        pub fn mul(self, b: F4) -> F4 {
+            self.zip(b, |x, y| x * y)
+        }
+        #[inline(always)]
+        pub fn div(self, b: F4) -> F4 {
+            self.zip(b, |x, y| x / y)
+        }
+        #[inline(always)]
+        pub fn min(self, b: F4) -> F4 {
+            self.zip(b, |x, y| if x < y { x } else { y })
+        }
+        #[inline(always)]
+        pub fn max(self, b: F4) -> F4 {
+            self.zip(b, |x, y| if x > y { x } else { y })
+        }
+        #[inline(always)]
+        pub fn le(self, b: F4) -> u32 {
+            self.bits(b, |x, y| x <= y)
+        }
+        #[inline(always)]
+        pub fn lt(self, b: F4) -> u32 {
+            self.bits(b, |x, y| x < y)
+        }
+        #[inline(always)]
+        pub fn ne(self, b: F4) -> u32 {
+            self.bits(b, |x, y| x != y)
+        }
+        #[inline(always)]
+        pub fn any_sign(a: F4, b: F4, c: F4) -> u32 {
+            (0..4).fold(0, |m, i| m | (((a.0[i].to_bits() | b.0[i].to_bits() | c.0[i].to_bits()) >> 31) << i))
+        }
+        #[inline(always)]
+        pub fn to_array(self) -> [f32; 4] {
+            self.0
+        }
+    }
+}
+
+use lanes::F4;
+
+/// Marks a child reference as a leaf (a block index) rather than a node index.
+const LEAF: u32 = 1 << 31;
+
+/// Eight children: boxes as SoA lanes (`bounds[axis][0]` the minima, `[1]` the maxima; an empty
+/// slot holds the empty box (+∞, −∞), which no ray enters) and references (a node index, or
+/// `LEAF | block`). 224 bytes.
+#[repr(C, align(32))]
+#[derive(Clone, Copy)]
+struct Node {
+    bounds: [[[f32; 8]; 2]; 3],
+    child: [u32; 8],
+}
+
+const EMPTY_NODE: Node = Node { bounds: [[[f32::INFINITY; 8], [f32::NEG_INFINITY; 8]]; 3], child: [0; 8] };
+
+/// Up to four triangles as SoA lanes: a corner and the values obvhs' test derives from the
+/// corners; `prim` the triangles' BVH-order indices; `valid` the lanes in use.
+#[repr(C, align(16))]
+#[derive(Clone, Copy)]
+struct Block {
+    v0: [[f32; 4]; 3],
+    e1: [[f32; 4]; 3],
+    e2: [[f32; 4]; 3],
+    n: [[f32; 4]; 3],
+    prim: [u32; 4],
+    valid: u32,
+}
+
+/// A ray prepared for slab and triangle tests.
+struct RayPre {
+    origin: [f32; 3],
+    /// obvhs' safe reciprocal of the direction.
+    inv: [f32; 3],
+    /// 1 where the ray runs toward −axis (its near plane is the box's maximum), by the
+    /// reciprocal's sign (a direction component of −0 has a reciprocal of −1/ε).
+    neg: [usize; 3],
+    o4: [F4; 3],
+    d4: [F4; 3],
+    inv4: [F4; 3],
+}
+
+/// obvhs' `safe_inverse`: `1/x`, or `±1/ε` where `|x| ≤ ε`, so slab tests meet no infinity.
+#[inline(always)]
+fn safe_inverse(x: f32) -> f32 {
+    if x.abs() <= f32::EPSILON { x.signum() / f32::EPSILON } else { 1.0 / x }
+}
+
+impl RayPre {
+    #[inline(always)]
+    fn new(origin: Vec3A, direction: Vec3A) -> RayPre {
+        let inv = [safe_inverse(direction.x), safe_inverse(direction.y), safe_inverse(direction.z)];
+        let origin = origin.to_array();
+        let direction = direction.to_array();
+        RayPre {
+            origin,
+            inv,
+            neg: inv.map(|i| (i < 0.0) as usize),
+            o4: origin.map(F4::splat),
+            d4: direction.map(F4::splat),
+            inv4: inv.map(F4::splat),
+        }
+    }
+}
+
+/// The slab test of a node's eight boxes against `[t_min, t_max]`: the children entered (a bit
+/// per slot) and their entry distances. Per lane and axis `(plane − origin)·(1/direction)`,
+/// entry = max of the near planes' and `t_min`, exit = min of the far planes' and `t_max`,
+/// entered where entry ≤ exit.
+trait NodeTest {
+    fn intersect(node: &Node, ray: &RayPre, t_min: f32, t_max: f32) -> (u32, [f32; 8]);
+}
+
+/// Two 4-lane halves: the x86-64 baseline (SSE), or the portable lanes.
+struct Halves;
+
+impl NodeTest for Halves {
+    #[inline(always)]
+    fn intersect(node: &Node, ray: &RayPre, t_min: f32, t_max: f32) -> (u32, [f32; 8]) {
+        let mut mask = 0;
+        let mut near = [0.0f32; 8];
+        let (t_min, t_max) = (F4::splat(t_min), F4::splat(t_max));
+        for half in 0..2 {
+            let slab = |axis: usize, side: usize| {
+                let planes: &[f32; 4] = node.bounds[axis][side][4 * half..4 * half + 4].try_into().expect("4 lanes");
+                F4::load(planes).sub(ray.o4[axis]).mul(ray.inv4[axis])
+            };
+            let entry = slab(0, ray.neg[0]).max(slab(1, ray.neg[1])).max(slab(2, ray.neg[2]).max(t_min));
+            let exit = slab(0, 1 - ray.neg[0]).min(slab(1, 1 - ray.neg[1])).min(slab(2, 1 - ray.neg[2]).min(t_max));
+            mask |= entry.le(exit) << (4 * half);
+            near[4 * half..4 * half + 4].copy_from_slice(&entry.to_array());
+        }
+        (mask, near)
+    }
+}
+
+/// All eight lanes at once with AVX (the same operations as [`Halves`]).
+#[cfg(target_arch = "x86_64")]
+struct Avx;
+
+#[cfg(target_arch = "x86_64")]
+impl NodeTest for Avx {
+    #[inline(always)]
+    fn intersect(node: &Node, ray: &RayPre, t_min: f32, t_max: f32) -> (u32, [f32; 8]) {
+        // SAFETY: `Avx` is only used by the `#[target_feature(enable = "avx")]` entry points,
+        // which run only where the CPU has AVX (`WideBvh::avx`).
+        unsafe { avx_node(node, ray, t_min, t_max) }
+    }
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx")]
+#[inline]
+fn avx_node(node: &Node, ray: &RayPre, t_min: f32, t_max: f32) -> (u32, [f32; 8]) {
+    use std::arch::x86_64::*;
+    let slab = |axis: usize, side: usize| {
+        // SAFETY: `Node` is 32-byte aligned and every `[f32; 8]` of `bounds` sits at a multiple
+        // of 32 bytes in it.
+        let planes = unsafe { _mm256_load_ps(node.bounds[axis][side].as_ptr()) };
+        _mm256_mul_ps(_mm256_sub_ps(planes, _mm256_set1_ps(ray.origin[axis])), _mm256_set1_ps(ray.inv[axis]))
+    };
+    let entry = _mm256_max_ps(
+        _mm256_max_ps(slab(0, ray.neg[0]), slab(1, ray.neg[1])),
+        _mm256_max_ps(slab(2, ray.neg[2]), _mm256_set1_ps(t_min)),
+    );
+    let exit = _mm256_min_ps(
+        _mm256_min_ps(slab(0, 1 - ray.neg[0]), slab(1, 1 - ray.neg[1])),
+        _mm256_min_ps(slab(2, 1 - ray.neg[2]), _mm256_set1_ps(t_max)),
+    );
+    let mask = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(entry, exit)) as u32;
+    let mut near = [0.0f32; 8];
+    // SAFETY: `near` holds eight f32.
+    unsafe { _mm256_storeu_ps(near.as_mut_ptr(), entry) };
+    (mask, near)
+}
+
+impl Block {
+    /// obvhs' `Triangle::intersect` on the four lanes, kept to the open interval
+    /// `(t_min, t_max)`: the lanes hit and their distances. Per lane: `c = v0 − o`,
+    /// `r = d × c`, `1/det = 1/(n·d)`, `u = (r·e2)/det`, `v = (r·e1)/det`, `w = 1 − u − v`,
+    /// `t = (n·c)/det`; a hit where `1/det ≠ 0`, none of `u`, `v`, `w` has its sign bit set and
+    /// `t_min < t < t_max`.
+    #[inline(always)]
+    fn intersect(&self, ray: &RayPre, t_min: F4, t_max: F4) -> (u32, [f32; 4]) {
+        let load = |a: &[[f32; 4]; 3]| [F4::load(&a[0]), F4::load(&a[1]), F4::load(&a[2])];
+        let (v0, e1, e2, n) = (load(&self.v0), load(&self.e1), load(&self.e2), load(&self.n));
+        let dot = |a: [F4; 3], b: [F4; 3]| a[0].mul(b[0]).add(a[1].mul(b[1])).add(a[2].mul(b[2]));
+        let (o, d) = (ray.o4, ray.d4);
+        let c = [v0[0].sub(o[0]), v0[1].sub(o[1]), v0[2].sub(o[2])];
+        let r = [
+            d[1].mul(c[2]).sub(d[2].mul(c[1])),
+            d[2].mul(c[0]).sub(d[0].mul(c[2])),
+            d[0].mul(c[1]).sub(d[1].mul(c[0])),
+        ];
+        let inv_det = F4::splat(1.0).div(dot(n, d));
+        let u = dot(r, e2).mul(inv_det);
+        let v = dot(r, e1).mul(inv_det);
+        let w = F4::splat(1.0).sub(u).sub(v);
+        let t = dot(n, c).mul(inv_det);
+        let hit = inv_det.ne(F4::splat(0.0)) & !F4::any_sign(u, v, w) & t_min.lt(t) & t.lt(t_max) & self.valid;
+        (hit, t.to_array())
+    }
+}
+
+/// Entries of an [`OriginCut`].
+const CUT: usize = 16;
+
+/// The cut of the tree that every ray from one origin with one length passes through: the
+/// children whose boxes meet the cube of half-size `t_max` around the origin, expanded from the
+/// root while at most [`CUT`] of them remain, packed as two virtual nodes. Every node such a
+/// ray enters lies below one of them (its box and all its ancestors' meet the segment, which
+/// lies in the cube), so starting there finds the same hits while skipping the top levels.
+#[derive(Clone)]
+pub struct OriginCut {
+    /// The BVH it was built for ([`WideBvh::id`]).
+    bvh: u64,
+    origin: Vec3A,
+    t_max: f32,
+    /// The key was seen once (that ray traced from the root) or the cut is built.
+    built: bool,
+    nodes: [Node; CUT / 8],
+    count: usize,
+}
+
+impl Default for OriginCut {
+    fn default() -> Self {
+        OriginCut { bvh: 0, origin: Vec3A::NAN, t_max: f32::NAN, built: false, nodes: [EMPTY_NODE; CUT / 8], count: 0 }
+    }
+}
+
+/// Direction lengths up to which a cut applies (the cube is widened by this factor).
+const UNIT: f32 = 1.0 + 1e-4;
+
+/// Traversal stack depth: the CWBVH is at most 32 levels deep (obvhs validates it) and a node
+/// leaves at most 7 entries on the stack.
+const STACK: usize = 32 * 7 + 1;
+
+/// See the module documentation.
+pub struct WideBvh {
+    nodes: Vec<Node>,
+    blocks: Vec<Block>,
+    /// The root reference (a node, or a leaf for a one-leaf tree); `None` for no triangles.
+    root: Option<u32>,
+    /// 8-lane node tests (the CPU has AVX).
+    avx: bool,
+    /// Unique per build, so that an [`OriginCut`] is never applied to another tree.
+    id: u64,
+}
+
+impl WideBvh {
+    /// The wide layout of `bvh` over `triangles` in BVH primitive order (`primitive_indices`
+    /// applied): block lanes report indices into `triangles`.
+    pub fn build(bvh: &CwBvh, triangles: &[Triangle]) -> WideBvh {
+        static NEXT_ID: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(1);
+        let mut wide = WideBvh {
+            nodes: Vec::new(),
+            blocks: Vec::new(),
+            root: None,
+            avx: has_avx(),
+            id: NEXT_ID.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
+        };
+        if !bvh.nodes.is_empty() && !triangles.is_empty() {
+            wide.nodes = vec![EMPTY_NODE; bvh.nodes.len()];
+            wide.convert(bvh, triangles, 0);
+            wide.root = Some(0);
+        }
+        wide
+    }
+
+    /// Fill node `index` and its subtree from the CWBVH; returns the subtree's box.
+    fn convert(&mut self, bvh: &CwBvh, triangles: &[Triangle], index: usize) -> (Vec3A, Vec3A) {
+        let src = bvh.nodes[index];
+        let mut node = EMPTY_NODE;
+        let (mut lo, mut hi) = (Vec3A::INFINITY, Vec3A::NEG_INFINITY);
+        for slot in 0..8 {
+            if src.is_child_empty(slot) {
+                continue;
+            }
+            let (child_lo, child_hi, child) = if src.is_leaf(slot) {
+                let (start, count) = src.child_primitives(slot);
+                let (block, block_lo, block_hi) = Block::new(triangles, start, count);
+                self.blocks.push(block);
+                (block_lo, block_hi, LEAF | (self.blocks.len() - 1) as u32)
+            } else {
+                let child = src.child_node_index(slot) as usize;
+                let (child_lo, child_hi) = self.convert(bvh, triangles, child);
+                (child_lo, child_hi, child as u32)
+            };
+            for axis in 0..3 {
+                node.bounds[axis][0][slot] = child_lo[axis];
+                node.bounds[axis][1][slot] = child_hi[axis];
+            }
+            node.child[slot] = child;
+            lo = lo.min(child_lo);
+            hi = hi.max(child_hi);
+        }
+        self.nodes[index] = node;
+        (lo, hi)
+    }
+
+    /// Is any triangle that `accept(primitive, t)` takes hit inside `(t_min, t_max)`? Stops at
+    /// the first; `accept` sees the candidates in no particular order.
+    #[inline]
+    pub fn occluded(
+        &self,
+        origin: Vec3A,
+        direction: Vec3A,
+        t_min: f32,
+        t_max: f32,
+        accept: impl FnMut(usize, f32) -> bool,
+    ) -> bool {
+        self.occluded_from(None, origin, direction, t_min, t_max, accept)
+    }
+
+    /// [`WideBvh::occluded`] for runs of rays from one origin with one `t_max` and directions of
+    /// length ≤ 1: the first ray of a run traces from the root, the second builds the run's
+    /// cut into `cut`, and it and the later ones start from the cut.
+    #[inline]
+    pub fn occluded_cut(
+        &self,
+        cut: &mut OriginCut,
+        origin: Vec3A,
+        direction: Vec3A,
+        t_min: f32,
+        t_max: f32,
+        accept: impl FnMut(usize, f32) -> bool,
+    ) -> bool {
+        if cut.bvh != self.id || cut.origin != origin || cut.t_max != t_max {
+            (cut.bvh, cut.origin, cut.t_max, cut.built) = (self.id, origin, t_max, false);
+            return self.occluded(origin, direction, t_min, t_max, accept);
+        }
+        let root_is_node = self.root.is_some_and(|r| r & LEAF == 0);
+        if !root_is_node || !t_max.is_finite() || direction.length_squared() > UNIT {
+            return self.occluded(origin, direction, t_min, t_max, accept);
+        }
+        if !cut.built {
+            self.build_cut(cut);
+        }
+        self.occluded_from(Some(cut), origin, direction, t_min, t_max, accept)
+    }
+
+    #[inline(always)]
+    fn occluded_from(
+        &self,
+        cut: Option<&OriginCut>,
+        origin: Vec3A,
+        direction: Vec3A,
+        t_min: f32,
+        t_max: f32,
+        accept: impl FnMut(usize, f32) -> bool,
+    ) -> bool {
+        #[cfg(target_arch = "x86_64")]
+        if self.avx {
+            // SAFETY: `avx` is set only where the CPU has AVX.
+            return unsafe { self.occluded_avx(cut, origin, direction, t_min, t_max, accept) };
+        }
+        self.occluded_halves(cut, origin, direction, t_min, t_max, accept)
+    }
+
+    #[inline(never)]
+    fn occluded_halves(
+        &self,
+        cut: Option<&OriginCut>,
+        origin: Vec3A,
+        direction: Vec3A,
+        t_min: f32,
+        t_max: f32,
+        accept: impl FnMut(usize, f32) -> bool,
+    ) -> bool {
+        self.occluded_with::<Halves>(cut, origin, direction, t_min, t_max, accept)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn occluded_avx(
+        &self,
+        cut: Option<&OriginCut>,
+        origin: Vec3A,
+        direction: Vec3A,
+        t_min: f32,
+        t_max: f32,
+        accept: impl FnMut(usize, f32) -> bool,
+    ) -> bool {
+        self.occluded_with::<Avx>(cut, origin, direction, t_min, t_max, accept)
+    }
+
+    /// Depth-first, any order; leaves are tested as soon as their node is.
+    #[inline(always)]
+    fn occluded_with<N: NodeTest>(
+        &self,
+        cut: Option<&OriginCut>,
+        origin: Vec3A,
+        direction: Vec3A,
+        t_min: f32,
+        t_max: f32,
+        mut accept: impl FnMut(usize, f32) -> bool,
+    ) -> bool {
+        let Some(root) = self.root else { return false };
+        let ray = RayPre::new(origin, direction);
+        let (t_min4, t_max4) = (F4::splat(t_min), F4::splat(t_max));
+        let mut stack = [MaybeUninit::<u32>::uninit(); STACK];
+        let mut sp = 0;
+        match cut {
+            Some(cut) => {
+                for node in &cut.nodes[..cut.count] {
+                    if self.visit::<N>(node, &ray, (t_min, t_max), (t_min4, t_max4), &mut stack, &mut sp, &mut accept) {
+                        return true;
+                    }
+                }
+            }
+            None if root & LEAF != 0 => return self.leaf_any(root, &ray, t_min4, t_max4, &mut accept),
+            None => {
+                stack[0].write(root);
+                sp = 1;
+            }
+        }
+        while sp > 0 {
+            sp -= 1;
+            // SAFETY: the entries below `sp` were written; only node references are stacked.
+            let node = &self.nodes[unsafe { stack[sp].assume_init() } as usize];
+            if self.visit::<N>(node, &ray, (t_min, t_max), (t_min4, t_max4), &mut stack, &mut sp, &mut accept) {
+                return true;
+            }
+        }
+        false
+    }
+
+    /// A node's children for [`WideBvh::occluded_with`]: leaves tested at once (true: an
+    /// accepted hit), nodes stacked.
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn visit<N: NodeTest>(
+        &self,
+        node: &Node,
+        ray: &RayPre,
+        (t_min, t_max): (f32, f32),
+        (t_min4, t_max4): (F4, F4),
+        stack: &mut [MaybeUninit<u32>; STACK],
+        sp: &mut usize,
+        accept: &mut impl FnMut(usize, f32) -> bool,
+    ) -> bool {
+        let (mut mask, _) = N::intersect(node, ray, t_min, t_max);
+        while mask != 0 {
+            let slot = mask.trailing_zeros() as usize;
+            mask &= mask - 1;
+            let child = node.child[slot];
+            if child & LEAF != 0 {
+                if self.leaf_any(child, ray, t_min4, t_max4, accept) {
+                    return true;
+                }
+            } else {
+                stack[*sp].write(child);
+                *sp += 1;
+            }
+        }
+        false
+    }
+
+    /// Does leaf `leaf` hold a triangle hit inside `(t_min, t_max)` that `accept` takes?
+    #[inline(always)]
+    fn leaf_any(
+        &self,
+        leaf: u32,
+        ray: &RayPre,
+        t_min: F4,
+        t_max: F4,
+        accept: &mut impl FnMut(usize, f32) -> bool,
+    ) -> bool {
+        let block = &self.blocks[(leaf & !LEAF) as usize];
+        let (mut hit, t) = block.intersect(ray, t_min, t_max);
+        while hit != 0 {
+            let lane = hit.trailing_zeros() as usize;
+            hit &= hit - 1;
+            if accept(block.prim[lane] as usize, t[lane]) {
+                return true;
+            }
+        }
+        false
+    }
+
+    /// Fill `cut` (whose origin and `t_max` are set) with the children meeting the cube of
+    /// half-size `t_max·UNIT` around the origin, expanded first come first served while at
+    /// most [`CUT`] remain.
+    fn build_cut(&self, cut: &mut OriginCut) {
+        let reach = Vec3A::splat(cut.t_max * UNIT);
+        let (lo, hi) = ((cut.origin - reach).to_array(), (cut.origin + reach).to_array());
+        // (node, slot) of the children meeting the cube: the cut so far, then a node's expansion.
+        let mut entries = [(0u32, 0u32); CUT + 8];
+        let mut len = 0;
+        let meeting = |node: u32, out: &mut [(u32, u32); CUT + 8], len: &mut usize| {
+            let b = &self.nodes[node as usize].bounds;
+            let meets = |slot: usize| (0..3).all(|a| b[a][0][slot] <= hi[a] && b[a][1][slot] >= lo[a]);
+            for slot in (0..8).filter(|&slot| meets(slot)) {
+                out[*len] = (node, slot as u32);
+                *len += 1;
+            }
+        };
+        let child = |(node, slot): (u32, u32)| self.nodes[node as usize].child[slot as usize];
+        meeting(self.root.expect("built only for a tree with a root node"), &mut entries, &mut len);
+        let mut i = 0;
+        while i < len {
+            let node = child(entries[i]);
+            if node & LEAF == 0 {
+                // Expand behind the cut; keep the expansion if the cut still fits.
+                let mut grown = len;
+                meeting(node, &mut entries, &mut grown);
+                if grown - 1 <= CUT {
+                    entries[i] = entries[grown - 1];
+                    len = grown - 1;
+                    continue;
+                }
+            }
+            i += 1;
+        }
+        cut.nodes = [EMPTY_NODE; CUT / 8];
+        for (k, &(node, slot)) in entries[..len].iter().enumerate() {
+            let (src, dst, lane) = (&self.nodes[node as usize], &mut cut.nodes[k / 8], k % 8);
+            for a in 0..3 {
+                dst.bounds[a][0][lane] = src.bounds[a][0][slot as usize];
+                dst.bounds[a][1][lane] = src.bounds[a][1][slot as usize];
+            }
+            dst.child[lane] = src.child[slot as usize];
+        }
+        cut.count = len.div_ceil(8);
+        cut.built = true;
+    }
+
+    /// The nearest triangle hit inside `(t_min, t_max)` that `accept(primitive, t)` takes:
+    /// `(t, primitive)`. `accept` sees candidates nearer than the best so far, in no particular
+    /// order; of two accepted hits at the same distance the first seen stays.
+    #[inline]
+    pub fn closest(
+        &self,
+        origin: Vec3A,
+        direction: Vec3A,
+        t_min: f32,
+        t_max: f32,
+        accept: impl FnMut(usize, f32) -> bool,
+    ) -> Option<(f32, usize)> {
+        #[cfg(target_arch = "x86_64")]
+        if self.avx {
+            // SAFETY: `avx` is set only where the CPU has AVX.
+            return unsafe { self.closest_avx(origin, direction, t_min, t_max, accept) };
+        }
+        self.closest_halves(origin, direction, t_min, t_max, accept)
+    }
+
+    #[inline(never)]
+    fn closest_halves(
+        &self,
+        origin: Vec3A,
+        direction: Vec3A,
+        t_min: f32,
+        t_max: f32,
+        accept: impl FnMut(usize, f32) -> bool,
+    ) -> Option<(f32, usize)> {
+        self.closest_with::<Halves>(origin, direction, t_min, t_max, accept)
+    }
+
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn closest_avx(
+        &self,
+        origin: Vec3A,
+        direction: Vec3A,
+        t_min: f32,
+        t_max: f32,
+        accept: impl FnMut(usize, f32) -> bool,
+    ) -> Option<(f32, usize)> {
+        self.closest_with::<Avx>(origin, direction, t_min, t_max, accept)
+    }
+
+    /// Nearest child first: a node's entered children go onto the stack sorted by entry
+    /// distance, farthest at the bottom; a popped entry beyond the best hit is dropped.
+    #[inline(always)]
+    fn closest_with<N: NodeTest>(
+        &self,
+        origin: Vec3A,
+        direction: Vec3A,
+        t_min: f32,
+        t_max: f32,
+        mut accept: impl FnMut(usize, f32) -> bool,
+    ) -> Option<(f32, usize)> {
+        let mut current = self.root?;
+        let ray = RayPre::new(origin, direction);
+        let t_min4 = F4::splat(t_min);
+        let mut best_t = t_max;
+        let mut best = None;
+        let mut stack = [MaybeUninit::<(u32, f32)>::uninit(); STACK];
+        let mut sp = 0;
+        loop {
+            if current & LEAF == 0 {
+                let node = &self.nodes[current as usize];
+                let (mut mask, near) = N::intersect(node, &ray, t_min, best_t);
+                if mask != 0 {
+                    if mask & (mask - 1) == 0 {
+                        // One child: straight into it.
+                        current = node.child[mask.trailing_zeros() as usize];
+                        continue;
+                    }
+                    let base = sp;
+                    while mask != 0 {
+                        let slot = mask.trailing_zeros() as usize;
+                        mask &= mask - 1;
+                        let entry = (node.child[slot], near[slot]);
+                        let mut k = sp;
+                        // SAFETY (both): the entries below `sp` were written.
+                        while k > base && unsafe { stack[k - 1].assume_init() }.1 < entry.1 {
+                            stack[k] = stack[k - 1];
+                            k -= 1;
+                        }
+                        stack[k].write(entry);
+                        sp += 1;
+                    }
+                }
+            } else {
+                let block = &self.blocks[(current & !LEAF) as usize];
+                let (mut hit, t) = block.intersect(&ray, t_min4, F4::splat(best_t));
+                while hit != 0 {
+                    let lane = hit.trailing_zeros() as usize;
+                    hit &= hit - 1;
+                    if t[lane] < best_t && accept(block.prim[lane] as usize, t[lane]) {
+                        best_t = t[lane];
+                        best = Some(block.prim[lane] as usize);
+                    }
+                }
+            }
+            // The nearest stacked entry still in front of the best hit.
+            loop {
+                if sp == 0 {
+                    return best.map(|p| (best_t, p));
+                }
+                sp -= 1;
+                // SAFETY: the entries below `sp` were written.
+                let (child, near) = unsafe { stack[sp].assume_init() };
+                if near <= best_t {
+                    current = child;
+                    break;
+                }
+            }
+        }
+    }
+}
+
+impl Block {
+    /// The block of `count` (≤ 4) triangles from `start`, and their box.
+    fn new(triangles: &[Triangle], start: u32, count: u32) -> (Block, Vec3A, Vec3A) {
+        assert!(count <= 4, "a CWBVH leaf holds at most 3 triangles");
+        let mut block =
+            Block { v0: [[0.0; 4]; 3], e1: [[0.0; 4]; 3], e2: [[0.0; 4]; 3], n: [[0.0; 4]; 3], prim: [0; 4], valid: 0 };
+        let (mut lo, mut hi) = (Vec3A::INFINITY, Vec3A::NEG_INFINITY);
+        for lane in 0..count as usize {
+            let prim = start + lane as u32;
+            let t = &triangles[prim as usize];
+            // As `Triangle::intersect` derives them.
+            let (e1, e2) = (t.v0 - t.v1, t.v2 - t.v0);
+            let n = e1.cross(e2);
+            for axis in 0..3 {
+                block.v0[axis][lane] = t.v0[axis];
+                block.e1[axis][lane] = e1[axis];
+                block.e2[axis][lane] = e2[axis];
+                block.n[axis][lane] = n[axis];
+            }
+            block.prim[lane] = prim;
+            block.valid |= 1 << lane;
+            lo = lo.min(t.v0).min(t.v1).min(t.v2);
+            hi = hi.max(t.v0).max(t.v1).max(t.v2);
+        }
+        (block, lo, hi)
+    }
+}
+
+/// Whether the CPU runs AVX (8-lane node tests).
+fn has_avx() -> bool {
+    #[cfg(target_arch = "x86_64")]
+    {
+        is_x86_feature_detected!("avx")
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        false
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use obvhs::BvhBuildParams;
+    use obvhs::cwbvh::builder::build_cwbvh_from_tris;
+    use std::time::Duration;
+
+    /// xorshift32 in [0, 1).
+    struct Rng(u32);
+
+    impl Rng {
+        fn next(&mut self) -> f32 {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 17;
+            self.0 ^= self.0 << 5;
+            (self.0 >> 8) as f32 / (1 << 24) as f32
+        }
+        fn vec(&mut self, lo: f32, hi: f32) -> Vec3A {
+            Vec3A::new(self.next(), self.next(), self.next()) * (hi - lo) + Vec3A::splat(lo)
+        }
+        fn unit(&mut self) -> Vec3A {
+            loop {
+                let v = self.vec(-1.0, 1.0);
+                if v.length_squared() > 1e-4 && v.length_squared() <= 1.0 {
+                    return v.normalize();
+                }
+            }
+        }
+    }
+
+    /// The per-triangle predicate of [`Block::intersect`] in scalar arithmetic (the same IEEE
+    /// operations in the same order): the distance of a hit inside `(t_min, t_max)`.
+    fn reference_hit(tri: &Triangle, o: Vec3A, d: Vec3A, t_min: f32, t_max: f32) -> Option<f32> {
+        let (e1, e2) = (tri.v0 - tri.v1, tri.v2 - tri.v0);
+        let n = e1.cross(e2);
+        let dot = |a: Vec3A, b: Vec3A| a.x * b.x + a.y * b.y + a.z * b.z;
+        let c = tri.v0 - o;
+        let r = Vec3A::new(d.y * c.z - d.z * c.y, d.z * c.x - d.x * c.z, d.x * c.y - d.y * c.x);
+        let inv_det = 1.0 / dot(n, d);
+        let u = dot(r, e2) * inv_det;
+        let v = dot(r, e1) * inv_det;
+        let w = 1.0 - u - v;
+        let t = dot(n, c) * inv_det;
+        let signs = (u.to_bits() | v.to_bits() | w.to_bits()) >> 31;
+        (inv_det != 0.0 && signs == 0 && t_min < t && t < t_max).then_some(t)
+    }
+
+    /// A soup of `count` random triangles of random sizes in the unit cube (in BVH order) and
+    /// its two layouts.
+    fn scene(count: usize, seed: u32) -> (Vec<Triangle>, WideBvh) {
+        let mut rng = Rng(seed);
+        let tris: Vec<Triangle> = (0..count)
+            .map(|_| {
+                let c = rng.vec(0.0, 1.0);
+                let size = 0.01 + 0.2 * rng.next() * rng.next();
+                Triangle { v0: c + rng.vec(-size, size), v1: c + rng.vec(-size, size), v2: c + rng.vec(-size, size) }
+            })
+            .collect();
+        let bvh = build_cwbvh_from_tris(&tris, BvhBuildParams::medium_build(), &mut Duration::default());
+        let ordered: Vec<Triangle> = bvh.primitive_indices.iter().map(|&i| tris[i as usize]).collect();
+        let wide = WideBvh::build(&bvh, &ordered);
+        (ordered, wide)
+    }
+
+    /// Random rays through the cube (some from inside, some axis-aligned with ±0 components),
+    /// with finite and infinite lengths.
+    fn rays(count: usize, seed: u32) -> Vec<(Vec3A, Vec3A, f32, f32)> {
+        let mut rng = Rng(seed);
+        (0..count)
+            .map(|i| {
+                let o = rng.vec(-0.5, 1.5);
+                let mut d = rng.unit();
+                if i % 7 == 0 {
+                    d = [Vec3A::X, Vec3A::NEG_Y, Vec3A::new(0.0, -0.0, 1.0)][i % 3];
+                }
+                let t_max = if i % 3 == 0 { f32::INFINITY } else { 0.05 + 0.5 * rng.next() };
+                let t_min = if i % 5 == 0 { 0.02 } else { 0.0 };
+                (o, d, t_min, t_max)
+            })
+            .collect()
+    }
+
+    /// Both node tests (AVX where the CPU has it, and the 4-lane halves).
+    fn layouts(wide: &WideBvh) -> Vec<WideBvh> {
+        let copy =
+            |avx| WideBvh { nodes: wide.nodes.clone(), blocks: wide.blocks.clone(), root: wide.root, avx, id: wide.id };
+        [false, has_avx()].into_iter().map(copy).collect()
+    }
+
+    #[test]
+    fn closest_and_occluded_match_brute_force() {
+        for (count, seed) in [(1, 3), (3, 5), (40, 7), (3000, 11)] {
+            let (tris, wide) = scene(count, seed);
+            // Accept every triangle, or only even-numbered ones (an alpha test's shape).
+            let filters: [fn(usize) -> bool; 2] = [|_| true, |p| p % 2 == 0];
+            for w in layouts(&wide) {
+                let (mut hits, mut occluded) = (0, 0);
+                for (o, d, t_min, t_max) in rays(4000, seed * 31) {
+                    for accept in filters {
+                        let expect = tris
+                            .iter()
+                            .enumerate()
+                            .filter(|&(p, _)| accept(p))
+                            .filter_map(|(p, tri)| reference_hit(tri, o, d, t_min, t_max).map(|t| (t, p)))
+                            .min_by(|a, b| a.0.total_cmp(&b.0));
+                        let got = w.closest(o, d, t_min, t_max, |p, _| accept(p));
+                        // The distance is exact; the triangle too unless two share it.
+                        assert_eq!(got.map(|g| g.0), expect.map(|e| e.0), "{count} triangles, ray {o} {d}");
+                        if let (Some(g), Some(e)) = (got, expect)
+                            && g.1 != e.1
+                        {
+                            assert_eq!(reference_hit(&tris[g.1], o, d, t_min, t_max), Some(e.0));
+                        }
+                        let any = w.occluded(o, d, t_min, t_max, |p, t| {
+                            assert_eq!(reference_hit(&tris[p], o, d, t_min, t_max), Some(t), "reported hit is real");
+                            accept(p)
+                        });
+                        assert_eq!(any, expect.is_some(), "{count} triangles, ray {o} {d} [{t_min}, {t_max}]");
+                        hits += expect.is_some() as u32;
+                        occluded += any as u32;
+                    }
+                }
+                assert!(count < 3000 || hits > 1000, "the rays must hit often enough to test something: {hits}");
+                assert_eq!(hits, occluded);
+            }
+        }
+    }
+
+    #[test]
+    fn a_cut_answers_as_the_root_does() {
+        let (_, wide) = scene(3000, 13);
+        let mut rng = Rng(99);
+        for w in layouts(&wide) {
+            let mut cut = OriginCut::default();
+            let mut built = 0;
+            for pixel in 0..300 {
+                // A run of rays from one origin with one length, as a pixel's AO rays.
+                let o = rng.vec(0.0, 1.0);
+                let t_max = 0.02 + 0.2 * rng.next();
+                for _ in 0..24 {
+                    let d = rng.unit();
+                    let filter = |p: usize, _| p % 3 != pixel % 3;
+                    assert_eq!(
+                        w.occluded_cut(&mut cut, o, d, 0.0, t_max, filter),
+                        w.occluded(o, d, 0.0, t_max, filter),
+                        "ray {o} {d} {t_max}"
+                    );
+                }
+                built += cut.built as u32;
+                assert!(cut.count <= CUT / 8);
+            }
+            assert_eq!(built, 300, "every run builds its cut");
+            // A cut of another tree is never used.
+            let (_, other) = scene(50, 17);
+            let o = rng.vec(0.0, 1.0);
+            let d = rng.unit();
+            for _ in 0..3 {
+                assert_eq!(
+                    other.occluded_cut(&mut cut, o, d, 0.0, 0.3, |_, _| true),
+                    other.occluded(o, d, 0.0, 0.3, |_, _| true)
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn empty_and_degenerate_inputs() {
+        let bvh = build_cwbvh_from_tris(&[], BvhBuildParams::medium_build(), &mut Duration::default());
+        let empty = WideBvh::build(&bvh, &[]);
+        assert_eq!(empty.closest(Vec3A::ZERO, Vec3A::X, 0.0, f32::INFINITY, |_, _| true), None);
+        assert!(!empty.occluded_cut(&mut OriginCut::default(), Vec3A::ZERO, Vec3A::X, 0.0, 1.0, |_, _| true));
+        // One triangle, a ray through its middle; an empty interval finds nothing.
+        let tri =
+            Triangle { v0: Vec3A::new(0.0, 0.0, 1.0), v1: Vec3A::new(1.0, 0.0, 1.0), v2: Vec3A::new(0.0, 1.0, 1.0) };
+        let bvh = build_cwbvh_from_tris(&[tri], BvhBuildParams::medium_build(), &mut Duration::default());
+        let one = WideBvh::build(&bvh, &[tri]);
+        let o = Vec3A::new(0.25, 0.25, 0.0);
+        assert_eq!(one.closest(o, Vec3A::Z, 0.0, f32::INFINITY, |_, _| true), Some((1.0, 0)));
+        assert_eq!(one.closest(o, Vec3A::Z, 0.0, 1.0, |_, _| true), None, "t_max is exclusive");
+        assert_eq!(one.closest(o, Vec3A::Z, 1.0, 2.0, |_, _| true), None, "t_min is exclusive");
+        assert!(one.occluded(o, Vec3A::Z, 0.5, 1.5, |_, _| true));
+        assert!(!one.occluded(o, -Vec3A::Z, 0.0, 5.0, |_, _| true));
+        let mut cut = OriginCut::default();
+        for _ in 0..3 {
+            assert!(one.occluded_cut(&mut cut, o, Vec3A::Z, 0.0, 2.0, |_, _| true));
+        }
+    }
+}

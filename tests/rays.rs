@@ -1,0 +1,202 @@
+//! `aokit rays` (issue 14, bench/rays_vs_embree.sh): the dumped files have the documented types
+//! and sizes, the dumped AO rays are exactly the ground truth's (per pixel, its AO from the dumped
+//! answers equals the ground-truth kernel's), the answers and the reported fractions match an
+//! independent brute-force recount over every triangle, and bad input gets a one-line error.
+
+mod common;
+
+use aokit::rays::read_npy;
+use aokit::render::CpuRenderer;
+use aokit_cpu::no_progress;
+use aokit_shaders::glam::{DVec3, Vec3};
+use std::path::Path;
+use std::process::Command;
+
+const SPP: usize = 16;
+
+fn aokit(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_aokit")).args(args).output().unwrap()
+}
+
+/// An `.npy` array of `descr` with `shape`, as its raw little-endian elements.
+fn array<T: bytemuck::Pod>(dir: &Path, name: &str, descr: &str, shape: &[usize]) -> Vec<T> {
+    let (d, s, data) = read_npy(&dir.join(name)).unwrap_or_else(|e| panic!("{name}: {e}"));
+    assert_eq!((d.as_str(), s.as_slice()), (descr, shape), "{name}: type and shape");
+    assert_eq!(data.len(), shape.iter().product::<usize>() * size_of::<T>(), "{name}: payload size");
+    bytemuck::pod_collect_to_vec(&data)
+}
+
+fn vec3s(flat: &[f32]) -> Vec<Vec3> {
+    flat.chunks_exact(3).map(|c| Vec3::new(c[0], c[1], c[2])).collect()
+}
+
+/// Nearest hit in `(0, t_max)` of the ray with any triangle, in f64, by the plane of each
+/// triangle and three edge tests (not the Möller–Trumbore form the BVH uses); `None` for none.
+/// `margin` widens (> 0) or narrows (< 0) the triangles by that fraction of their edge tests, to
+/// tell robust answers from grazing ones.
+fn brute_force(tris: &[[Vec3; 3]], o: Vec3, d: Vec3, t_max: f32, margin: f64) -> Option<f64> {
+    let (o, d) = (o.as_dvec3(), d.as_dvec3());
+    let mut best: Option<f64> = None;
+    for t in tris {
+        let [a, b, c] = t.map(|v| v.as_dvec3());
+        let n = (b - a).cross(c - a);
+        let denom = n.dot(d);
+        if denom == 0.0 {
+            continue;
+        }
+        let s = n.dot(a - o) / denom;
+        if !(s > 0.0 && s < t_max as f64) {
+            continue;
+        }
+        let p = o + d * s;
+        let edge = |u: DVec3, v: DVec3| (v - u).cross(p - u).dot(n);
+        let scale = n.length_squared();
+        if [edge(a, b), edge(b, c), edge(c, a)].iter().all(|&e| e >= -margin * scale) {
+            best = Some(best.map_or(s, |b: f64| b.min(s)));
+        }
+    }
+    best
+}
+
+#[test]
+fn dumped_rays_are_the_ground_truths_and_the_answers_recount() {
+    let dir = std::env::temp_dir().join(format!("aokit-rays-{}", std::process::id()));
+    let spp = SPP.to_string();
+    let out = aokit(&[
+        "rays",
+        "--scene",
+        "cornell",
+        "--width",
+        "64",
+        "--height",
+        "48",
+        "--guard",
+        "8",
+        "--spp",
+        &spp,
+        "--repeat",
+        "1",
+        "--dump",
+        dir.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "aokit rays: {}", String::from_utf8_lossy(&out.stderr));
+    let json: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON line");
+    let file: serde_json::Value = serde_json::from_slice(&std::fs::read(dir.join("rays.json")).unwrap()).unwrap();
+    assert_eq!(json, file, "rays.json holds the printed line");
+    assert_eq!(
+        (json["format"].as_str(), json["spp"].as_u64(), json["threads"].as_u64()),
+        (Some("aokit-rays/1"), Some(16), Some(2))
+    );
+
+    // Files: types and sizes from the documented layout.
+    let (scene, frame) = common::builtin_frame("cornell", 64, 48, 8);
+    let t = scene.triangles.len();
+    let tris = vec3s(&array::<f32>(&dir, "triangles.npy", "<f4", &[t, 3, 3]));
+    let tris: Vec<[Vec3; 3]> = tris.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect();
+    assert_eq!(tris, scene.triangles);
+    let n = json["ao"]["rays"].as_u64().unwrap() as usize;
+    let k = json["ao"]["pixels"].as_u64().unwrap() as usize;
+    assert_eq!(n, k * SPP, "every pixel that casts rays casts spp of them");
+    let origins = vec3s(&array::<f32>(&dir, "ao_origins.npy", "<f4", &[n, 3]));
+    let directions = vec3s(&array::<f32>(&dir, "ao_directions.npy", "<f4", &[n, 3]));
+    let t_max: Vec<f32> = array(&dir, "ao_tmax.npy", "<f4", &[n]);
+    let pixels: Vec<u32> = array(&dir, "ao_pixels.npy", "<u4", &[k, 2]);
+    let occluded: Vec<u8> = array(&dir, "ao_occluded.npy", "|u1", &[n]);
+    let size = frame.camera.view.size();
+    let p = (size.x * size.y) as usize;
+    let primary = vec3s(&array::<f32>(&dir, "primary_directions.npy", "<f4", &[p, 3]));
+    let hits: Vec<i32> = array(&dir, "primary_hits.npy", "<i4", &[p]);
+    let hit_t: Vec<f32> = array(&dir, "primary_t.npy", "<f4", &[p]);
+    assert!(t_max.iter().all(|&r| r == frame.radius), "AO rays are as long as the AO radius");
+    assert!(directions.iter().all(|d| (d.length() - 1.0).abs() < 1e-5));
+
+    // The rays are the ground truth's: per pixel, the AO from the dumped answers is the
+    // ground-truth kernel's, bit for bit, and background pixels cast none.
+    let renderer = CpuRenderer::new(&scene);
+    let (gbuffer, _) = renderer.gbuffer(&frame, &no_progress);
+    let params = frame.ground_truth_params(SPP as u32, false);
+    let (ao, _) = renderer.ground_truth(&frame, &gbuffer, &params, &no_progress);
+    let view = frame.camera.view;
+    for (i, xy) in pixels.chunks_exact(2).enumerate() {
+        let index = (xy[1] * size.x + xy[0]) as usize;
+        let visible = occluded[i * SPP..(i + 1) * SPP].iter().filter(|&&o| o == 0).count();
+        let expect = aokit_shaders::groundtruth::finalize(visible as f32, &params);
+        assert_eq!(ao[index], expect, "pixel {xy:?}: the dumped rays' AO is the ground truth's");
+        assert!(origins[i * SPP..(i + 1) * SPP].iter().all(|&o| o == origins[i * SPP]), "one origin per pixel");
+    }
+    let foreground = (view.guard..size.y - view.guard)
+        .flat_map(|y| (view.guard..size.x - view.guard).map(move |x| (x, y)))
+        .filter(|&(x, y)| gbuffer.depth[(y * size.x + x) as usize] < view.far)
+        .count();
+    assert_eq!(k, foreground, "every inner pixel with a surface casts rays, no other");
+
+    // Independent recount: brute force over every triangle in f64. Rays whose answer a 1e-6
+    // widening or narrowing of the triangles flips graze an edge and may go either way.
+    let (mut recount, mut grazing, mut differ) = (0, 0, 0);
+    for i in 0..n {
+        let wide = brute_force(&tris, origins[i], directions[i], t_max[i], 1e-6).is_some();
+        let narrow = brute_force(&tris, origins[i], directions[i], t_max[i], -1e-6).is_some();
+        recount += narrow as usize;
+        if wide != narrow {
+            grazing += 1;
+        } else if (occluded[i] != 0) != wide {
+            differ += 1;
+        }
+    }
+    assert_eq!(differ, 0, "rays answered otherwise than the brute force ({grazing} grazing of {n})");
+    assert!(grazing * 1000 < n, "{grazing} grazing rays of {n}");
+    let reported = json["ao"]["occluded_fraction"].as_f64().unwrap();
+    let counted = occluded.iter().filter(|&&o| o != 0).count();
+    assert_eq!(reported, counted as f64 / n as f64, "the reported fraction is the dumped answers'");
+    assert!((reported - recount as f64 / n as f64).abs() <= grazing as f64 / n as f64, "{reported} vs {recount}/{n}");
+    assert!(counted > n / 50 && counted < n / 2, "a box occludes some rays, not most: {counted} of {n}");
+
+    // Primary rays: the closest triangle's distance within f32 rounding, misses where the
+    // brute force finds nothing.
+    let eye: Vec<f32> = json["primary"]["eye"].as_array().unwrap().iter().map(|v| v.as_f64().unwrap() as f32).collect();
+    let eye = Vec3::new(eye[0], eye[1], eye[2]);
+    let mut hit_count = 0;
+    for (j, &d) in primary.iter().enumerate() {
+        let expect = brute_force(&tris, eye, d, f32::INFINITY, 0.0);
+        match (hits[j], expect) {
+            (-1, None) => assert_eq!(hit_t[j], f32::INFINITY),
+            (-1, Some(_)) | (_, None) => {
+                let (wide, narrow) =
+                    (brute_force(&tris, eye, d, f32::INFINITY, 1e-6), brute_force(&tris, eye, d, f32::INFINITY, -1e-6));
+                assert_ne!(
+                    wide.is_some(),
+                    narrow.is_some(),
+                    "primary ray {j}: hit {} vs brute force {expect:?}",
+                    hits[j]
+                );
+            }
+            (tri, Some(s)) => {
+                hit_count += 1;
+                assert!(((hit_t[j] as f64) - s).abs() <= 1e-5 * s, "primary ray {j}: t {} vs {s}", hit_t[j]);
+                let own = brute_force(&tris[tri as usize..tri as usize + 1], eye, d, f32::INFINITY, 1e-6);
+                assert!(
+                    own.is_some_and(|t| (t - s).abs() <= 1e-5 * s),
+                    "primary ray {j}: triangle {tri} is not hit there"
+                );
+            }
+        }
+    }
+    assert_eq!(json["primary"]["hits"].as_u64(), Some(hits.iter().filter(|&&h| h >= 0).count() as u64));
+    assert!(hit_count > p / 4, "the camera sees the box");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+#[test]
+fn bad_input_is_one_line() {
+    for (args, expect) in [
+        (&["--stride", "0"][..], "--stride must be at least 1"),
+        (&["--threads", "0"][..], "--threads must be at least 1"),
+        (&["--sd-layers", "8"][..], "--sd-layers not read by groundtruth"),
+        (&["--copies", "3"][..], "3 copies do not form a square grid"),
+    ] {
+        let out = aokit(&[&["rays", "--scene", "cornell", "--width", "8", "--height", "8"][..], args].concat());
+        assert!(!out.status.success(), "{args:?} must fail");
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert!(err.contains(expect) && err.trim().lines().count() == 1, "{args:?}: {err}");
+    }
+}
