@@ -92,7 +92,6 @@ fn function_() {
     var phi_734_: u32;
     var phi_736_: u32;
     var local: u32;
-    var phi_790_: bool;
     var phi_2635_: bool;
     var phi_832_: u32;
     var phi_835_: vec3<f32>;
@@ -502,445 +501,440 @@ fn function_() {
                     let _e551 = (0.5f + (_e549 * 0.7548777f));
                     let _e555 = (0.5f + (_e549 * 0.5698403f));
                     let _e561 = params.member.member.member_3;
-                    if (_e122 > 0f) {
-                        phi_790_ = (_e122 < _e561);
-                    } else {
-                        phi_790_ = false;
-                    }
-                    let _e565 = phi_790_;
-                    if _e565 {
-                        let _e568 = params.member.member_3;
-                        let _e569 = (_e568 * _e491);
-                        let _e571 = ((10f - _e495) * 0.01f);
-                        let _e579 = params.member.member_8;
-                        let _e581 = select(1u, _e579, (1u < _e579));
+                    let _e564 = select(false, (_e122 < _e561), (_e122 > 0f));
+                    if _e564 {
+                        let _e567 = params.member.member_3;
+                        let _e568 = (_e567 * _e491);
+                        let _e570 = ((10f - _e495) * 0.01f);
+                        let _e578 = params.member.member_8;
+                        let _e580 = select(1u, _e578, (1u < _e578));
                         phi_2635_ = false;
                         phi_832_ = 0u;
                         phi_835_ = vec3<f32>(0f, 0f, 0f);
-                        phi_837_ = (select(0f, select(1f, _e571, (_e571 < 1f)), (_e571 > 0f)) * 0.5f);
+                        phi_837_ = (select(0f, select(1f, _e570, (_e570 < 1f)), (_e570 > 0f)) * 0.5f);
                         loop {
-                            let _e583 = phi_2635_;
-                            let _e585 = phi_832_;
-                            let _e587 = phi_835_;
-                            let _e589 = phi_837_;
-                            local_7 = _e589;
-                            local_8 = _e587;
-                            let _e590 = (_e585 < _e581);
-                            if _e590 {
-                                let _e595 = ((((_e551 - floor(_e551)) + f32(_e585)) * 3.1415927f) / f32(_e581));
-                                let _e596 = sin(_e595);
-                                let _e597 = cos(_e595);
-                                let _e603 = ((_e597 * _e409) + (_e596 * _e410));
-                                let _e607 = (_e597 - (_e409 * _e603));
-                                let _e608 = (_e596 - (_e410 * _e603));
-                                let _e609 = -((_e411 * _e603));
-                                let _e612 = ((_e608 * _e411) - (_e410 * _e609));
-                                let _e615 = ((_e609 * _e409) - (_e411 * _e607));
-                                let _e618 = ((_e607 * _e410) - (_e409 * _e608));
-                                let _e625 = (1f / sqrt((((_e612 * _e612) + (_e615 * _e615)) + (_e618 * _e618))));
-                                let _e626 = (_e612 * _e625);
-                                let _e627 = (_e615 * _e625);
-                                let _e628 = (_e618 * _e625);
-                                let _e636 = (((_e484.x * _e626) + (_e484.y * _e627)) + (_e484.z * _e628));
-                                let _e640 = (_e484.x - (_e626 * _e636));
-                                let _e641 = (_e484.y - (_e627 * _e636));
-                                let _e642 = (_e484.z - (_e628 * _e636));
-                                let _e648 = sqrt((((_e640 * _e640) + (_e641 * _e641)) + (_e642 * _e642)));
-                                let _e653 = (((_e607 * _e640) + (_e608 * _e641)) + (_e609 * _e642));
-                                let _e663 = ((((_e640 * _e409) + (_e641 * _e410)) + (_e642 * _e411)) / _e648);
-                                let _e667 = select(0f, select(1f, _e663, (_e663 < 1f)), (_e663 > 0f));
-                                let _e668 = abs(_e667);
-                                let _e679 = (((_e668 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e668))) >> bitcast<u32>(1i))))));
-                                let _e683 = (select(select(0f, -1f, (_e653 < 0f)), 1f, (_e653 > 0f)) * select((3.141593f - _e679), _e679, (_e667 >= 0f)));
-                                let _e686 = params.member.member_9;
-                                let _e688 = select(1u, _e686, (1u < _e686));
-                                let _e690 = cos((_e683 + 1.5707964f));
-                                let _e692 = cos((_e683 - 1.5707964f));
-                                let _e695 = params.member.member_5;
+                            let _e582 = phi_2635_;
+                            let _e584 = phi_832_;
+                            let _e586 = phi_835_;
+                            let _e588 = phi_837_;
+                            local_7 = _e588;
+                            local_8 = _e586;
+                            let _e589 = (_e584 < _e580);
+                            if _e589 {
+                                let _e594 = ((((_e551 - floor(_e551)) + f32(_e584)) * 3.1415927f) / f32(_e580));
+                                let _e595 = sin(_e594);
+                                let _e596 = cos(_e594);
+                                let _e602 = ((_e596 * _e409) + (_e595 * _e410));
+                                let _e606 = (_e596 - (_e409 * _e602));
+                                let _e607 = (_e595 - (_e410 * _e602));
+                                let _e608 = -((_e411 * _e602));
+                                let _e611 = ((_e607 * _e411) - (_e410 * _e608));
+                                let _e614 = ((_e608 * _e409) - (_e411 * _e606));
+                                let _e617 = ((_e606 * _e410) - (_e409 * _e607));
+                                let _e624 = (1f / sqrt((((_e611 * _e611) + (_e614 * _e614)) + (_e617 * _e617))));
+                                let _e625 = (_e611 * _e624);
+                                let _e626 = (_e614 * _e624);
+                                let _e627 = (_e617 * _e624);
+                                let _e635 = (((_e484.x * _e625) + (_e484.y * _e626)) + (_e484.z * _e627));
+                                let _e639 = (_e484.x - (_e625 * _e635));
+                                let _e640 = (_e484.y - (_e626 * _e635));
+                                let _e641 = (_e484.z - (_e627 * _e635));
+                                let _e647 = sqrt((((_e639 * _e639) + (_e640 * _e640)) + (_e641 * _e641)));
+                                let _e652 = (((_e606 * _e639) + (_e607 * _e640)) + (_e608 * _e641));
+                                let _e662 = ((((_e639 * _e409) + (_e640 * _e410)) + (_e641 * _e411)) / _e647);
+                                let _e666 = select(0f, select(1f, _e662, (_e662 < 1f)), (_e662 > 0f));
+                                let _e667 = abs(_e666);
+                                let _e678 = (((_e667 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e667))) >> bitcast<u32>(1i))))));
+                                let _e682 = (select(select(0f, -1f, (_e652 < 0f)), 1f, (_e652 > 0f)) * select((3.141593f - _e678), _e678, (_e666 >= 0f)));
+                                let _e685 = params.member.member_9;
+                                let _e687 = select(1u, _e685, (1u < _e685));
+                                let _e689 = cos((_e682 + 1.5707964f));
+                                let _e691 = cos((_e682 - 1.5707964f));
+                                let _e694 = params.member.member_5;
                                 phi_1008_ = 0u;
-                                phi_1011_ = _e692;
-                                phi_1013_ = _e690;
+                                phi_1011_ = _e691;
+                                phi_1013_ = _e689;
                                 loop {
-                                    let _e697 = phi_1008_;
-                                    let _e699 = phi_1011_;
-                                    let _e701 = phi_1013_;
-                                    local_3 = _e699;
-                                    local_4 = _e699;
-                                    local_5 = _e701;
-                                    local_6 = _e701;
-                                    let _e702 = (_e697 < _e688);
-                                    if _e702 {
-                                        let _e707 = ((_e555 - floor(_e555)) + (f32((_e585 + (_e697 * _e688))) * 0.618034f));
-                                        let _e713 = (((_e707 - floor(_e707)) + f32(_e697)) / f32(_e688));
-                                        let _e716 = params.member.member_4;
-                                        if (_e716 == 2f) {
-                                            phi_1067_ = (_e713 * _e713);
+                                    let _e696 = phi_1008_;
+                                    let _e698 = phi_1011_;
+                                    let _e700 = phi_1013_;
+                                    local_3 = _e698;
+                                    local_4 = _e698;
+                                    local_5 = _e700;
+                                    local_6 = _e700;
+                                    let _e701 = (_e696 < _e687);
+                                    if _e701 {
+                                        let _e706 = ((_e555 - floor(_e555)) + (f32((_e584 + (_e696 * _e687))) * 0.618034f));
+                                        let _e712 = (((_e706 - floor(_e706)) + f32(_e696)) / f32(_e687));
+                                        let _e715 = params.member.member_4;
+                                        if (_e715 == 2f) {
+                                            phi_1067_ = (_e712 * _e712);
                                         } else {
-                                            phi_1067_ = pow(_e713, _e716);
+                                            phi_1067_ = pow(_e712, _e715);
                                         }
-                                        let _e721 = phi_1067_;
-                                        let _e722 = (_e721 + (1.3f / _e495));
-                                        let _e723 = ((_e597 * _e495) * _e722);
-                                        let _e724 = ((-(_e596) * _e495) * _e722);
-                                        let _e732 = params.member.member_7;
-                                        let _e733 = (log2(sqrt(((_e723 * _e723) + (_e724 * _e724)))) - _e732);
-                                        let _e740 = (-1f - floor((-0.5f - select(0f, select(5f, _e733, (_e733 < 5f)), (_e733 > 0f)))));
-                                        let _e742 = floor((_e723 + 0.5f));
-                                        if ((_e742 - _e723) == 0.5f) {
-                                            let _e748 = ((floor((_e742 * 0.5f)) * 2f) != _e742);
-                                            if _e748 {
-                                                phi_1112_ = (_e742 - 1f);
+                                        let _e720 = phi_1067_;
+                                        let _e721 = (_e720 + (1.3f / _e495));
+                                        let _e722 = ((_e596 * _e495) * _e721);
+                                        let _e723 = ((-(_e595) * _e495) * _e721);
+                                        let _e731 = params.member.member_7;
+                                        let _e732 = (log2(sqrt(((_e722 * _e722) + (_e723 * _e723)))) - _e731);
+                                        let _e739 = (-1f - floor((-0.5f - select(0f, select(5f, _e732, (_e732 < 5f)), (_e732 > 0f)))));
+                                        let _e741 = floor((_e722 + 0.5f));
+                                        if ((_e741 - _e722) == 0.5f) {
+                                            let _e747 = ((floor((_e741 * 0.5f)) * 2f) != _e741);
+                                            if _e747 {
+                                                phi_1112_ = (_e741 - 1f);
                                             } else {
                                                 phi_1112_ = f32();
                                             }
-                                            let _e751 = phi_1112_;
-                                            phi_1114_ = _e751;
-                                            phi_1115_ = select(true, false, _e748);
+                                            let _e750 = phi_1112_;
+                                            phi_1114_ = _e750;
+                                            phi_1115_ = select(true, false, _e747);
                                         } else {
                                             phi_1114_ = f32();
                                             phi_1115_ = true;
                                         }
-                                        let _e754 = phi_1114_;
-                                        let _e756 = phi_1115_;
-                                        let _e758 = (select(_e754, _e742, _e756) / _e97);
-                                        let _e760 = floor((_e724 + 0.5f));
-                                        if ((_e760 - _e724) == 0.5f) {
-                                            let _e766 = ((floor((_e760 * 0.5f)) * 2f) != _e760);
-                                            if _e766 {
-                                                phi_1138_ = (_e760 - 1f);
+                                        let _e753 = phi_1114_;
+                                        let _e755 = phi_1115_;
+                                        let _e757 = (select(_e753, _e741, _e755) / _e97);
+                                        let _e759 = floor((_e723 + 0.5f));
+                                        if ((_e759 - _e723) == 0.5f) {
+                                            let _e765 = ((floor((_e759 * 0.5f)) * 2f) != _e759);
+                                            if _e765 {
+                                                phi_1138_ = (_e759 - 1f);
                                             } else {
                                                 phi_1138_ = f32();
                                             }
-                                            let _e769 = phi_1138_;
-                                            phi_1140_ = _e769;
-                                            phi_1141_ = select(true, false, _e766);
+                                            let _e768 = phi_1138_;
+                                            phi_1140_ = _e768;
+                                            phi_1141_ = select(true, false, _e765);
                                         } else {
                                             phi_1140_ = f32();
                                             phi_1141_ = true;
                                         }
-                                        let _e772 = phi_1140_;
-                                        let _e774 = phi_1141_;
-                                        let _e776 = (select(_e772, _e760, _e774) / _e107);
-                                        let _e777 = (_e378 + _e758);
-                                        let _e778 = (_e379 + _e776);
-                                        let _e779 = (_e378 - _e758);
-                                        let _e780 = (_e379 - _e776);
-                                        let _e781 = (_e740 > 0f);
-                                        if _e781 {
-                                            let _e786 = select(select(u32(_e740), 0u, (_e740 < 0f)), 4294967295u, (_e740 > 4294967000f));
-                                            phi_2108_ = select(_e786, 4u, (4u < _e786));
+                                        let _e771 = phi_1140_;
+                                        let _e773 = phi_1141_;
+                                        let _e775 = (select(_e771, _e759, _e773) / _e107);
+                                        let _e776 = (_e378 + _e757);
+                                        let _e777 = (_e379 + _e775);
+                                        let _e778 = (_e378 - _e757);
+                                        let _e779 = (_e379 - _e775);
+                                        let _e780 = (_e739 > 0f);
+                                        if _e780 {
+                                            let _e785 = select(select(u32(_e739), 0u, (_e739 < 0f)), 4294967295u, (_e739 > 4294967000f));
+                                            phi_2108_ = select(_e785, 4u, (4u < _e785));
                                         } else {
                                             phi_2108_ = 0u;
                                         }
-                                        let _e790 = phi_2108_;
-                                        let _e791 = (_e790 & 31u);
-                                        let _e793 = (_e102 >> bitcast<u32>(_e791));
-                                        let _e795 = select(1u, _e793, (1u < _e793));
-                                        let _e797 = (_e112 >> bitcast<u32>(_e791));
-                                        let _e799 = select(1u, _e797, (1u < _e797));
-                                        let _e801 = (_e777 * f32(_e795));
-                                        if (_e801 > 0f) {
-                                            let _e807 = select(select(u32(_e801), 0u, (_e801 < 0f)), 4294967295u, (_e801 > 4294967000f));
-                                            let _e808 = (_e795 - 1u);
-                                            phi_2156_ = select(_e807, _e808, (_e808 < _e807));
+                                        let _e789 = phi_2108_;
+                                        let _e790 = (_e789 & 31u);
+                                        let _e792 = (_e102 >> bitcast<u32>(_e790));
+                                        let _e794 = select(1u, _e792, (1u < _e792));
+                                        let _e796 = (_e112 >> bitcast<u32>(_e790));
+                                        let _e798 = select(1u, _e796, (1u < _e796));
+                                        let _e800 = (_e776 * f32(_e794));
+                                        if (_e800 > 0f) {
+                                            let _e806 = select(select(u32(_e800), 0u, (_e800 < 0f)), 4294967295u, (_e800 > 4294967000f));
+                                            let _e807 = (_e794 - 1u);
+                                            phi_2156_ = select(_e806, _e807, (_e807 < _e806));
                                         } else {
                                             phi_2156_ = 0u;
                                         }
-                                        let _e812 = phi_2156_;
-                                        let _e814 = (_e778 * f32(_e799));
-                                        if (_e814 > 0f) {
-                                            let _e820 = select(select(u32(_e814), 0u, (_e814 < 0f)), 4294967295u, (_e814 > 4294967000f));
-                                            let _e821 = (_e799 - 1u);
-                                            phi_2176_ = select(_e820, _e821, (_e821 < _e820));
+                                        let _e811 = phi_2156_;
+                                        let _e813 = (_e777 * f32(_e798));
+                                        if (_e813 > 0f) {
+                                            let _e819 = select(select(u32(_e813), 0u, (_e813 < 0f)), 4294967295u, (_e813 > 4294967000f));
+                                            let _e820 = (_e798 - 1u);
+                                            phi_2176_ = select(_e819, _e820, (_e820 < _e819));
                                         } else {
                                             phi_2176_ = 0u;
                                         }
-                                        let _e825 = phi_2176_;
+                                        let _e824 = phi_2176_;
                                         phi_2178_ = 0u;
                                         phi_2179_ = 0u;
                                         loop {
-                                            let _e827 = phi_2178_;
-                                            let _e829 = phi_2179_;
-                                            local_1 = _e829;
-                                            let _e830 = (_e827 < _e790);
-                                            if _e830 {
-                                                let _e831 = (_e827 & 31u);
-                                                let _e833 = (_e102 >> bitcast<u32>(_e831));
-                                                let _e837 = (_e112 >> bitcast<u32>(_e831));
-                                                phi_2202_ = (_e827 + 1u);
-                                                phi_2203_ = (_e829 + (select(1u, _e833, (1u < _e833)) * select(1u, _e837, (1u < _e837))));
+                                            let _e826 = phi_2178_;
+                                            let _e828 = phi_2179_;
+                                            local_1 = _e828;
+                                            let _e829 = (_e826 < _e789);
+                                            if _e829 {
+                                                let _e830 = (_e826 & 31u);
+                                                let _e832 = (_e102 >> bitcast<u32>(_e830));
+                                                let _e836 = (_e112 >> bitcast<u32>(_e830));
+                                                phi_2202_ = (_e826 + 1u);
+                                                phi_2203_ = (_e828 + (select(1u, _e832, (1u < _e832)) * select(1u, _e836, (1u < _e836))));
                                             } else {
                                                 phi_2202_ = u32();
                                                 phi_2203_ = u32();
                                             }
-                                            let _e844 = phi_2202_;
-                                            let _e846 = phi_2203_;
+                                            let _e843 = phi_2202_;
+                                            let _e845 = phi_2203_;
                                             continue;
                                             continuing {
-                                                phi_2178_ = _e844;
-                                                phi_2179_ = _e846;
-                                                break if !(_e830);
+                                                phi_2178_ = _e843;
+                                                phi_2179_ = _e845;
+                                                break if !(_e829);
                                             }
                                         }
-                                        let _e851 = local_1;
-                                        let _e852 = (_e851 + ((_e825 * _e795) + _e812));
-                                        if (_e852 < _e86) {
+                                        let _e850 = local_1;
+                                        let _e851 = (_e850 + ((_e824 * _e794) + _e811));
+                                        if (_e851 < _e86) {
                                         } else {
                                             phi_2581_ = true;
                                             break;
                                         }
-                                        let _e856 = mips.member[_e852];
-                                        if _e781 {
-                                            let _e869 = select(select(u32(_e740), 0u, (_e740 < 0f)), 4294967295u, (_e740 > 4294967000f));
-                                            phi_2230_ = select(_e869, 4u, (4u < _e869));
+                                        let _e855 = mips.member[_e851];
+                                        if _e780 {
+                                            let _e868 = select(select(u32(_e739), 0u, (_e739 < 0f)), 4294967295u, (_e739 > 4294967000f));
+                                            phi_2230_ = select(_e868, 4u, (4u < _e868));
                                         } else {
                                             phi_2230_ = 0u;
                                         }
-                                        let _e873 = phi_2230_;
-                                        let _e874 = (_e873 & 31u);
-                                        let _e876 = (_e102 >> bitcast<u32>(_e874));
-                                        let _e878 = select(1u, _e876, (1u < _e876));
-                                        let _e880 = (_e112 >> bitcast<u32>(_e874));
-                                        let _e882 = select(1u, _e880, (1u < _e880));
-                                        let _e884 = (_e779 * f32(_e878));
-                                        if (_e884 > 0f) {
-                                            let _e890 = select(select(u32(_e884), 0u, (_e884 < 0f)), 4294967295u, (_e884 > 4294967000f));
-                                            let _e891 = (_e878 - 1u);
-                                            phi_2278_ = select(_e890, _e891, (_e891 < _e890));
+                                        let _e872 = phi_2230_;
+                                        let _e873 = (_e872 & 31u);
+                                        let _e875 = (_e102 >> bitcast<u32>(_e873));
+                                        let _e877 = select(1u, _e875, (1u < _e875));
+                                        let _e879 = (_e112 >> bitcast<u32>(_e873));
+                                        let _e881 = select(1u, _e879, (1u < _e879));
+                                        let _e883 = (_e778 * f32(_e877));
+                                        if (_e883 > 0f) {
+                                            let _e889 = select(select(u32(_e883), 0u, (_e883 < 0f)), 4294967295u, (_e883 > 4294967000f));
+                                            let _e890 = (_e877 - 1u);
+                                            phi_2278_ = select(_e889, _e890, (_e890 < _e889));
                                         } else {
                                             phi_2278_ = 0u;
                                         }
-                                        let _e895 = phi_2278_;
-                                        let _e897 = (_e780 * f32(_e882));
-                                        if (_e897 > 0f) {
-                                            let _e903 = select(select(u32(_e897), 0u, (_e897 < 0f)), 4294967295u, (_e897 > 4294967000f));
-                                            let _e904 = (_e882 - 1u);
-                                            phi_2298_ = select(_e903, _e904, (_e904 < _e903));
+                                        let _e894 = phi_2278_;
+                                        let _e896 = (_e779 * f32(_e881));
+                                        if (_e896 > 0f) {
+                                            let _e902 = select(select(u32(_e896), 0u, (_e896 < 0f)), 4294967295u, (_e896 > 4294967000f));
+                                            let _e903 = (_e881 - 1u);
+                                            phi_2298_ = select(_e902, _e903, (_e903 < _e902));
                                         } else {
                                             phi_2298_ = 0u;
                                         }
-                                        let _e908 = phi_2298_;
+                                        let _e907 = phi_2298_;
                                         phi_2300_ = 0u;
                                         phi_2301_ = 0u;
                                         loop {
-                                            let _e910 = phi_2300_;
-                                            let _e912 = phi_2301_;
-                                            local_2 = _e912;
-                                            let _e913 = (_e910 < _e873);
-                                            if _e913 {
-                                                let _e914 = (_e910 & 31u);
-                                                let _e916 = (_e102 >> bitcast<u32>(_e914));
-                                                let _e920 = (_e112 >> bitcast<u32>(_e914));
-                                                phi_2324_ = (_e910 + 1u);
-                                                phi_2325_ = (_e912 + (select(1u, _e916, (1u < _e916)) * select(1u, _e920, (1u < _e920))));
+                                            let _e909 = phi_2300_;
+                                            let _e911 = phi_2301_;
+                                            local_2 = _e911;
+                                            let _e912 = (_e909 < _e872);
+                                            if _e912 {
+                                                let _e913 = (_e909 & 31u);
+                                                let _e915 = (_e102 >> bitcast<u32>(_e913));
+                                                let _e919 = (_e112 >> bitcast<u32>(_e913));
+                                                phi_2324_ = (_e909 + 1u);
+                                                phi_2325_ = (_e911 + (select(1u, _e915, (1u < _e915)) * select(1u, _e919, (1u < _e919))));
                                             } else {
                                                 phi_2324_ = u32();
                                                 phi_2325_ = u32();
                                             }
-                                            let _e927 = phi_2324_;
-                                            let _e929 = phi_2325_;
+                                            let _e926 = phi_2324_;
+                                            let _e928 = phi_2325_;
                                             continue;
                                             continuing {
-                                                phi_2300_ = _e927;
-                                                phi_2301_ = _e929;
-                                                break if !(_e913);
+                                                phi_2300_ = _e926;
+                                                phi_2301_ = _e928;
+                                                break if !(_e912);
                                             }
                                         }
-                                        let _e934 = local_2;
-                                        let _e935 = (_e934 + ((_e908 * _e878) + _e895));
-                                        if (_e935 < _e86) {
+                                        let _e933 = local_2;
+                                        let _e934 = (_e933 + ((_e907 * _e877) + _e894));
+                                        if (_e934 < _e86) {
                                         } else {
                                             phi_2581_ = true;
                                             break;
                                         }
-                                        let _e939 = mips.member[_e935];
-                                        let _e948 = (((((_e777 * 2f) - 1f) * _e387) * _e856) - _e389);
-                                        let _e949 = (((((_e778 * -2f) + 1f) * _e396) * _e856) - _e398);
-                                        let _e950 = (_e856 - _e380);
-                                        let _e953 = ((_e948 * _e948) + (_e949 * _e949));
-                                        let _e956 = sqrt((_e953 + (_e950 * _e950)));
-                                        let _e965 = (1f + _e695);
-                                        let _e966 = (_e950 * _e965);
-                                        let _e969 = sqrt((_e953 + (_e966 * _e966)));
-                                        let _e970 = (_e569 > 0f);
-                                        if _e970 {
-                                            let _e973 = ((-(_e969) + _e491) / _e569);
-                                            phi_1279_ = select(0f, select(1f, _e973, (_e973 < 1f)), (_e973 > 0f));
+                                        let _e938 = mips.member[_e934];
+                                        let _e947 = (((((_e776 * 2f) - 1f) * _e387) * _e855) - _e389);
+                                        let _e948 = (((((_e777 * -2f) + 1f) * _e396) * _e855) - _e398);
+                                        let _e949 = (_e855 - _e380);
+                                        let _e952 = ((_e947 * _e947) + (_e948 * _e948));
+                                        let _e955 = sqrt((_e952 + (_e949 * _e949)));
+                                        let _e964 = (1f + _e694);
+                                        let _e965 = (_e949 * _e964);
+                                        let _e968 = sqrt((_e952 + (_e965 * _e965)));
+                                        let _e969 = (_e568 > 0f);
+                                        if _e969 {
+                                            let _e972 = ((-(_e968) + _e491) / _e568);
+                                            phi_1279_ = select(0f, select(1f, _e972, (_e972 < 1f)), (_e972 > 0f));
                                         } else {
-                                            phi_1279_ = select(0f, 1f, (_e969 <= _e491));
+                                            phi_1279_ = select(0f, 1f, (_e968 <= _e491));
                                         }
-                                        let _e981 = phi_1279_;
-                                        let _e984 = (_e690 + ((((((_e948 / _e956) * _e409) + ((_e949 / _e956) * _e410)) + ((_e950 / _e956) * _e411)) - _e690) * _e981));
-                                        let _e985 = (((((_e779 * 2f) - 1f) * _e387) * _e939) - _e389);
-                                        let _e986 = (((((_e780 * -2f) + 1f) * _e396) * _e939) - _e398);
-                                        let _e987 = (_e939 - _e380);
-                                        let _e990 = ((_e985 * _e985) + (_e986 * _e986));
-                                        let _e993 = sqrt((_e990 + (_e987 * _e987)));
-                                        let _e1002 = (_e987 * _e965);
-                                        let _e1005 = sqrt((_e990 + (_e1002 * _e1002)));
-                                        if _e970 {
-                                            let _e1008 = ((-(_e1005) + _e491) / _e569);
-                                            phi_1339_ = select(0f, select(1f, _e1008, (_e1008 < 1f)), (_e1008 > 0f));
+                                        let _e980 = phi_1279_;
+                                        let _e983 = (_e689 + ((((((_e947 / _e955) * _e409) + ((_e948 / _e955) * _e410)) + ((_e949 / _e955) * _e411)) - _e689) * _e980));
+                                        let _e984 = (((((_e778 * 2f) - 1f) * _e387) * _e938) - _e389);
+                                        let _e985 = (((((_e779 * -2f) + 1f) * _e396) * _e938) - _e398);
+                                        let _e986 = (_e938 - _e380);
+                                        let _e989 = ((_e984 * _e984) + (_e985 * _e985));
+                                        let _e992 = sqrt((_e989 + (_e986 * _e986)));
+                                        let _e1001 = (_e986 * _e964);
+                                        let _e1004 = sqrt((_e989 + (_e1001 * _e1001)));
+                                        if _e969 {
+                                            let _e1007 = ((-(_e1004) + _e491) / _e568);
+                                            phi_1339_ = select(0f, select(1f, _e1007, (_e1007 < 1f)), (_e1007 > 0f));
                                         } else {
-                                            phi_1339_ = select(0f, 1f, (_e1005 <= _e491));
+                                            phi_1339_ = select(0f, 1f, (_e1004 <= _e491));
                                         }
-                                        let _e1016 = phi_1339_;
-                                        let _e1019 = (_e692 + ((((((_e985 / _e993) * _e409) + ((_e986 / _e993) * _e410)) + ((_e987 / _e993) * _e411)) - _e692) * _e1016));
-                                        if (_e701 != _e701) {
+                                        let _e1015 = phi_1339_;
+                                        let _e1018 = (_e691 + ((((((_e984 / _e992) * _e409) + ((_e985 / _e992) * _e410)) + ((_e986 / _e992) * _e411)) - _e691) * _e1015));
+                                        if (_e700 != _e700) {
                                             phi_2341_ = true;
                                         } else {
-                                            phi_2341_ = (_e984 >= _e701);
+                                            phi_2341_ = (_e983 >= _e700);
                                         }
-                                        let _e1023 = phi_2341_;
-                                        if (_e699 != _e699) {
+                                        let _e1022 = phi_2341_;
+                                        if (_e698 != _e698) {
                                             phi_2356_ = true;
                                         } else {
-                                            phi_2356_ = (_e1019 >= _e699);
+                                            phi_2356_ = (_e1018 >= _e698);
                                         }
-                                        let _e1028 = phi_2356_;
-                                        phi_1009_ = (_e697 + 1u);
-                                        phi_1012_ = select(_e699, _e1019, _e1028);
-                                        phi_1014_ = select(_e701, _e984, _e1023);
+                                        let _e1027 = phi_2356_;
+                                        phi_1009_ = (_e696 + 1u);
+                                        phi_1012_ = select(_e698, _e1018, _e1027);
+                                        phi_1014_ = select(_e700, _e983, _e1022);
                                     } else {
                                         phi_1009_ = u32();
                                         phi_1012_ = f32();
                                         phi_1014_ = f32();
                                     }
-                                    let _e1032 = phi_1009_;
-                                    let _e1034 = phi_1012_;
-                                    let _e1036 = phi_1014_;
+                                    let _e1031 = phi_1009_;
+                                    let _e1033 = phi_1012_;
+                                    let _e1035 = phi_1014_;
                                     continue;
                                     continuing {
-                                        phi_1008_ = _e1032;
-                                        phi_1011_ = _e1034;
-                                        phi_1013_ = _e1036;
-                                        phi_2581_ = _e583;
-                                        break if !(_e702);
+                                        phi_1008_ = _e1031;
+                                        phi_1011_ = _e1033;
+                                        phi_1013_ = _e1035;
+                                        phi_2581_ = _e582;
+                                        break if !(_e701);
                                     }
                                 }
-                                let _e1039 = phi_2581_;
-                                phi_2702_ = _e1039;
-                                if _e1039 {
+                                let _e1038 = phi_2581_;
+                                phi_2702_ = _e1038;
+                                if _e1038 {
                                     break;
                                 }
-                                let _e1041 = local_3;
-                                let _e1042 = abs(_e1041);
-                                let _e1053 = (((_e1042 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1042))) >> bitcast<u32>(1i))))));
-                                let _e1055 = local_4;
-                                let _e1058 = select((3.141593f - _e1053), _e1053, (_e1055 >= 0f));
-                                let _e1059 = -(_e1058);
-                                let _e1061 = local_5;
-                                let _e1062 = abs(_e1061);
-                                let _e1073 = (((_e1062 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1062))) >> bitcast<u32>(1i))))));
-                                let _e1075 = local_6;
-                                let _e1078 = select((3.141593f - _e1073), _e1073, (_e1075 >= 0f));
-                                let _e1081 = (_e648 + ((1f - _e648) * 0.05f));
-                                let _e1082 = (_e1058 * -2f);
-                                let _e1083 = sin(_e683);
-                                let _e1089 = (_e1078 * 2f);
-                                let _e1101 = params.member.member_13;
-                                if (_e1101 == 0u) {
-                                    phi_1558_ = _e587;
+                                let _e1040 = local_3;
+                                let _e1041 = abs(_e1040);
+                                let _e1052 = (((_e1041 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1041))) >> bitcast<u32>(1i))))));
+                                let _e1054 = local_4;
+                                let _e1057 = select((3.141593f - _e1052), _e1052, (_e1054 >= 0f));
+                                let _e1058 = -(_e1057);
+                                let _e1060 = local_5;
+                                let _e1061 = abs(_e1060);
+                                let _e1072 = (((_e1061 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1061))) >> bitcast<u32>(1i))))));
+                                let _e1074 = local_6;
+                                let _e1077 = select((3.141593f - _e1072), _e1072, (_e1074 >= 0f));
+                                let _e1080 = (_e647 + ((1f - _e647) * 0.05f));
+                                let _e1081 = (_e1057 * -2f);
+                                let _e1082 = sin(_e682);
+                                let _e1088 = (_e1077 * 2f);
+                                let _e1100 = params.member.member_13;
+                                if (_e1100 == 0u) {
+                                    phi_1558_ = _e586;
                                 } else {
-                                    let _e1107 = ((_e1058 * -3f) - _e683);
-                                    let _e1115 = ((_e1078 * 3f) - _e683);
-                                    let _e1120 = (_e1059 + _e683);
-                                    let _e1122 = (_e1078 + _e683);
-                                    let _e1127 = (((((((sin((_e1059 - _e683)) * 6f) - sin(_e1107)) + (sin((_e1078 - _e683)) * 6f)) - sin(_e1115)) + (_e1083 * 16f)) - ((sin(_e1120) + sin(_e1122)) * 3f)) * 0.083333336f);
-                                    let _e1139 = (((-(cos(_e1107)) - cos(_e1115)) + (cos(_e683) * 8f)) - ((cos(_e1120) + cos(_e1122)) * 3f));
-                                    let _e1140 = (_e597 * _e1127);
-                                    let _e1141 = (_e596 * _e1127);
-                                    let _e1142 = (_e1139 * -0.083333336f);
-                                    let _e1143 = (-1f * _e411);
-                                    let _e1144 = (-1f * _e409);
-                                    let _e1146 = (1f / (_e1143 + 1f));
-                                    let _e1147 = (_e1146 * _e410);
-                                    let _e1151 = (_e1147 * _e1144);
-                                    let _e1172 = (_e1143 > 0.9997f);
-                                    let _e1173 = (_e1143 < -0.9997f);
-                                    phi_1558_ = (_e587 + vec3<f32>((select(select(((((_e1143 + (_e1147 * _e410)) * _e1140) + (_e1151 * _e1141)) + (_e1144 * _e1142)), _e1140, _e1173), _e1140, _e1172) * _e1081), (select(select((((_e1151 * _e1140) + ((_e1143 + ((_e1146 * _e1144) * _e1144)) * _e1141)) + (-(_e410) * _e1142)), -(_e1141), _e1173), _e1141, _e1172) * _e1081), (select(select((((_e409 * _e1140) + (_e410 * _e1141)) + (_e1143 * _e1142)), (_e1139 * 0.083333336f), _e1173), _e1142, _e1172) * _e1081)));
+                                    let _e1106 = ((_e1057 * -3f) - _e682);
+                                    let _e1114 = ((_e1077 * 3f) - _e682);
+                                    let _e1119 = (_e1058 + _e682);
+                                    let _e1121 = (_e1077 + _e682);
+                                    let _e1126 = (((((((sin((_e1058 - _e682)) * 6f) - sin(_e1106)) + (sin((_e1077 - _e682)) * 6f)) - sin(_e1114)) + (_e1082 * 16f)) - ((sin(_e1119) + sin(_e1121)) * 3f)) * 0.083333336f);
+                                    let _e1138 = (((-(cos(_e1106)) - cos(_e1114)) + (cos(_e682) * 8f)) - ((cos(_e1119) + cos(_e1121)) * 3f));
+                                    let _e1139 = (_e596 * _e1126);
+                                    let _e1140 = (_e595 * _e1126);
+                                    let _e1141 = (_e1138 * -0.083333336f);
+                                    let _e1142 = (-1f * _e411);
+                                    let _e1143 = (-1f * _e409);
+                                    let _e1145 = (1f / (_e1142 + 1f));
+                                    let _e1146 = (_e1145 * _e410);
+                                    let _e1150 = (_e1146 * _e1143);
+                                    let _e1171 = (_e1142 > 0.9997f);
+                                    let _e1172 = (_e1142 < -0.9997f);
+                                    phi_1558_ = (_e586 + vec3<f32>((select(select(((((_e1142 + (_e1146 * _e410)) * _e1139) + (_e1150 * _e1140)) + (_e1143 * _e1141)), _e1139, _e1172), _e1139, _e1171) * _e1080), (select(select((((_e1150 * _e1139) + ((_e1142 + ((_e1145 * _e1143) * _e1143)) * _e1140)) + (-(_e410) * _e1141)), -(_e1140), _e1172), _e1140, _e1171) * _e1080), (select(select((((_e409 * _e1139) + (_e410 * _e1140)) + (_e1142 * _e1141)), (_e1138 * 0.083333336f), _e1172), _e1141, _e1171) * _e1080)));
                                 }
-                                let _e1186 = phi_1558_;
-                                phi_2703_ = _e1039;
-                                phi_833_ = (_e585 + 1u);
-                                phi_836_ = _e1186;
-                                phi_838_ = (_e589 + ((0.25f * (((_e667 + (_e1082 * _e1083)) - cos((_e1082 - _e683))) + ((_e667 + (_e1089 * _e1083)) - cos((_e1089 - _e683))))) * _e1081));
+                                let _e1185 = phi_1558_;
+                                phi_2703_ = _e1038;
+                                phi_833_ = (_e584 + 1u);
+                                phi_836_ = _e1185;
+                                phi_838_ = (_e588 + ((0.25f * (((_e666 + (_e1081 * _e1082)) - cos((_e1081 - _e682))) + ((_e666 + (_e1088 * _e1082)) - cos((_e1088 - _e682))))) * _e1080));
                             } else {
-                                phi_2703_ = _e583;
+                                phi_2703_ = _e582;
                                 phi_833_ = u32();
                                 phi_836_ = vec3<f32>();
                                 phi_838_ = f32();
                             }
-                            let _e1189 = phi_2703_;
-                            let _e1191 = phi_833_;
-                            let _e1193 = phi_836_;
-                            let _e1195 = phi_838_;
+                            let _e1188 = phi_2703_;
+                            let _e1190 = phi_833_;
+                            let _e1192 = phi_836_;
+                            let _e1194 = phi_838_;
                             continue;
                             continuing {
-                                phi_2635_ = _e1189;
-                                phi_832_ = _e1191;
-                                phi_835_ = _e1193;
-                                phi_837_ = _e1195;
-                                phi_2702_ = _e1189;
-                                break if !(_e590);
+                                phi_2635_ = _e1188;
+                                phi_832_ = _e1190;
+                                phi_835_ = _e1192;
+                                phi_837_ = _e1194;
+                                phi_2702_ = _e1188;
+                                break if !(_e589);
                             }
                         }
-                        let _e1198 = phi_2702_;
-                        if _e1198 {
+                        let _e1197 = phi_2702_;
+                        if _e1197 {
                             break;
                         }
-                        let _e1201 = local_7;
-                        let _e1204 = local_8;
-                        phi_1564_ = type_22((_e1201 / f32(_e581)), _e1204);
+                        let _e1200 = local_7;
+                        let _e1203 = local_8;
+                        phi_1564_ = type_22((_e1200 / f32(_e580)), _e1203);
                     } else {
                         phi_1564_ = type_22(1f, vec3<f32>(0f, 0f, 0f));
                     }
-                    let _e1207 = phi_1564_;
-                    if _e565 {
-                        let _e1212 = params.member.member_6;
-                        let _e1213 = pow(_e1207.member, _e1212);
-                        if (_e1213 != _e1213) {
+                    let _e1206 = phi_1564_;
+                    if _e564 {
+                        let _e1211 = params.member.member_6;
+                        let _e1212 = pow(_e1206.member, _e1211);
+                        if (_e1212 != _e1212) {
                             phi_2383_ = true;
                         } else {
-                            phi_2383_ = (0.03f >= _e1213);
+                            phi_2383_ = (0.03f >= _e1212);
                         }
-                        let _e1217 = phi_2383_;
-                        let _e1218 = select(_e1213, 0.03f, _e1217);
-                        let _e1221 = params.member.member_13;
-                        if (_e1221 == 0u) {
-                            let _e1223 = (_e1218 * 0.6666667f);
-                            let _e1229 = ((select(0f, select(1f, _e1223, (_e1223 < 1f)), (_e1223 > 0f)) * 255f) + 0.5f);
-                            phi_1640_ = select(select(u32(_e1229), 0u, (_e1229 < 0f)), 4294967295u, (_e1229 > 4294967000f));
+                        let _e1216 = phi_2383_;
+                        let _e1217 = select(_e1212, 0.03f, _e1216);
+                        let _e1220 = params.member.member_13;
+                        if (_e1220 == 0u) {
+                            let _e1222 = (_e1217 * 0.6666667f);
+                            let _e1228 = ((select(0f, select(1f, _e1222, (_e1222 < 1f)), (_e1222 > 0f)) * 255f) + 0.5f);
+                            phi_1640_ = select(select(u32(_e1228), 0u, (_e1228 < 0f)), 4294967295u, (_e1228 > 4294967000f));
                         } else {
-                            let _e1243 = sqrt((((_e1207.member_1.x * _e1207.member_1.x) + (_e1207.member_1.y * _e1207.member_1.y)) + (_e1207.member_1.z * _e1207.member_1.z)));
-                            if (_e1243 > 0f) {
-                                phi_1619_ = (_e1207.member_1 / vec3(_e1243));
+                            let _e1242 = sqrt((((_e1206.member_1.x * _e1206.member_1.x) + (_e1206.member_1.y * _e1206.member_1.y)) + (_e1206.member_1.z * _e1206.member_1.z)));
+                            if (_e1242 > 0f) {
+                                phi_1619_ = (_e1206.member_1 / vec3(_e1242));
                             } else {
                                 phi_1619_ = _e484;
                             }
-                            let _e1248 = phi_1619_;
-                            let _e1249 = (_e1218 * 0.6666667f);
-                            let _e1256 = ((_e1248.x * 0.5f) + 0.5f);
-                            let _e1257 = ((_e1248.y * 0.5f) + 0.5f);
-                            let _e1258 = ((_e1248.z * 0.5f) + 0.5f);
-                            let _e1264 = ((select(0f, select(1f, _e1256, (_e1256 < 1f)), (_e1256 > 0f)) * 255f) + 0.5f);
-                            let _e1275 = ((select(0f, select(1f, _e1257, (_e1257 < 1f)), (_e1257 > 0f)) * 255f) + 0.5f);
-                            let _e1289 = ((select(0f, select(1f, _e1258, (_e1258 < 1f)), (_e1258 > 0f)) * 255f) + 0.5f);
-                            let _e1303 = ((select(0f, select(1f, _e1249, (_e1249 < 1f)), (_e1249 > 0f)) * 255f) + 0.5f);
-                            phi_1640_ = (((select(select(u32(_e1264), 0u, (_e1264 < 0f)), 4294967295u, (_e1264 > 4294967000f)) | (select(select(u32(_e1275), 0u, (_e1275 < 0f)), 4294967295u, (_e1275 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1289), 0u, (_e1289 < 0f)), 4294967295u, (_e1289 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1303), 0u, (_e1303 < 0f)), 4294967295u, (_e1303 > 4294967000f)) << bitcast<u32>(24i)));
+                            let _e1247 = phi_1619_;
+                            let _e1248 = (_e1217 * 0.6666667f);
+                            let _e1255 = ((_e1247.x * 0.5f) + 0.5f);
+                            let _e1256 = ((_e1247.y * 0.5f) + 0.5f);
+                            let _e1257 = ((_e1247.z * 0.5f) + 0.5f);
+                            let _e1263 = ((select(0f, select(1f, _e1255, (_e1255 < 1f)), (_e1255 > 0f)) * 255f) + 0.5f);
+                            let _e1274 = ((select(0f, select(1f, _e1256, (_e1256 < 1f)), (_e1256 > 0f)) * 255f) + 0.5f);
+                            let _e1288 = ((select(0f, select(1f, _e1257, (_e1257 < 1f)), (_e1257 > 0f)) * 255f) + 0.5f);
+                            let _e1302 = ((select(0f, select(1f, _e1248, (_e1248 < 1f)), (_e1248 > 0f)) * 255f) + 0.5f);
+                            phi_1640_ = (((select(select(u32(_e1263), 0u, (_e1263 < 0f)), 4294967295u, (_e1263 > 4294967000f)) | (select(select(u32(_e1274), 0u, (_e1274 < 0f)), 4294967295u, (_e1274 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1288), 0u, (_e1288 < 0f)), 4294967295u, (_e1288 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1302), 0u, (_e1302 < 0f)), 4294967295u, (_e1302 > 4294967000f)) << bitcast<u32>(24i)));
                         }
-                        let _e1313 = phi_1640_;
-                        phi_1685_ = _e1313;
+                        let _e1312 = phi_1640_;
+                        phi_1685_ = _e1312;
                     } else {
-                        let _e1316 = params.member.member_13;
-                        phi_1685_ = select(2852159616u, 170u, (_e1316 == 0u));
+                        let _e1315 = params.member.member_13;
+                        phi_1685_ = select(2852159616u, 170u, (_e1315 == 0u));
                     }
-                    let _e1320 = phi_1685_;
+                    let _e1319 = phi_1685_;
                     if (_e118 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e118] = _e1320;
+                    terms.member[_e118] = _e1319;
                     if (_e118 < arrayLength((&edges.member))) {
                     } else {
                         break;

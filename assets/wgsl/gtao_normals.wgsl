@@ -48,27 +48,22 @@ var<storage, read_write> normals: type_10;
 fn function_() {
     var phi_132_: i32;
     var phi_151_: i32;
-    var phi_181_: bool;
-    var phi_232_: i32;
-    var phi_251_: i32;
-    var phi_281_: bool;
-    var phi_332_: i32;
-    var phi_351_: i32;
-    var phi_381_: bool;
-    var phi_432_: i32;
-    var phi_451_: i32;
-    var phi_481_: bool;
-    var phi_532_: i32;
-    var phi_551_: i32;
-    var phi_581_: bool;
-    var phi_723_: vec3<f32>;
-    var phi_741_: vec3<f32>;
-    var phi_759_: vec3<f32>;
-    var phi_777_: vec3<f32>;
-    var phi_945_: vec3<f32>;
-    var phi_979_: vec2<f32>;
-    var phi_995_: f32;
-    var phi_1030_: f32;
+    var phi_230_: i32;
+    var phi_249_: i32;
+    var phi_328_: i32;
+    var phi_347_: i32;
+    var phi_426_: i32;
+    var phi_445_: i32;
+    var phi_524_: i32;
+    var phi_543_: i32;
+    var phi_713_: vec3<f32>;
+    var phi_731_: vec3<f32>;
+    var phi_749_: vec3<f32>;
+    var phi_767_: vec3<f32>;
+    var phi_935_: vec3<f32>;
+    var phi_969_: vec2<f32>;
+    var phi_985_: f32;
+    var phi_1020_: f32;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -119,268 +114,238 @@ fn function_() {
                     }
                     let _e86 = depth.member[_e82];
                     let _e90 = params.member.member.member_3;
-                    if (_e86 > 0f) {
-                        phi_181_ = (_e86 < _e90);
-                    } else {
-                        phi_181_ = false;
-                    }
-                    let _e94 = phi_181_;
-                    let _e95 = select(_e90, _e86, _e94);
-                    let _e108 = params.member.member.member_1[0u];
-                    let _e110 = ((((((f32(_e70) + 0.5f) / _e41) * 2f) - 1f) * _e108) * _e95);
-                    let _e117 = params.member.member.member_1[1u];
-                    let _e119 = ((((((f32(_e80) + 0.5f) / _e51) * -2f) + 1f) * _e117) * _e95);
-                    let _e120 = (_e61 + -1i);
+                    let _e94 = select(_e90, _e86, select(false, (_e86 < _e90), (_e86 > 0f)));
+                    let _e107 = params.member.member.member_1[0u];
+                    let _e109 = ((((((f32(_e70) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e94);
+                    let _e116 = params.member.member.member_1[1u];
+                    let _e118 = ((((((f32(_e80) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e94);
+                    let _e119 = (_e61 + -1i);
                     if _e64 {
                     } else {
                         break;
                     }
-                    if (_e120 < 0i) {
-                        phi_232_ = 0i;
+                    if (_e119 < 0i) {
+                        phi_230_ = 0i;
                     } else {
-                        phi_232_ = select(_e120, _e63, (_e120 > _e63));
+                        phi_230_ = select(_e119, _e63, (_e119 > _e63));
                     }
-                    let _e125 = phi_232_;
-                    let _e126 = bitcast<u32>(_e125);
+                    let _e124 = phi_230_;
+                    let _e125 = bitcast<u32>(_e124);
                     if _e74 {
                     } else {
                         break;
                     }
                     if _e75 {
-                        phi_251_ = 0i;
+                        phi_249_ = 0i;
                     } else {
-                        phi_251_ = select(_e71, _e73, (_e71 > _e73));
+                        phi_249_ = select(_e71, _e73, (_e71 > _e73));
                     }
-                    let _e130 = phi_251_;
-                    let _e131 = bitcast<u32>(_e130);
-                    let _e133 = ((_e131 * _e46) + _e126);
-                    if (_e133 < _e34) {
+                    let _e129 = phi_249_;
+                    let _e130 = bitcast<u32>(_e129);
+                    let _e132 = ((_e130 * _e46) + _e125);
+                    if (_e132 < _e34) {
                     } else {
                         break;
                     }
-                    let _e137 = depth.member[_e133];
-                    if (_e137 > 0f) {
-                        phi_281_ = (_e137 < _e90);
-                    } else {
-                        phi_281_ = false;
-                    }
-                    let _e141 = phi_281_;
-                    let _e142 = select(_e90, _e137, _e141);
-                    let _e157 = (_e61 + 1i);
+                    let _e136 = depth.member[_e132];
+                    let _e140 = select(_e90, _e136, select(false, (_e136 < _e90), (_e136 > 0f)));
+                    let _e155 = (_e61 + 1i);
                     if _e64 {
                     } else {
                         break;
                     }
-                    if (_e157 < 0i) {
-                        phi_332_ = 0i;
+                    if (_e155 < 0i) {
+                        phi_328_ = 0i;
                     } else {
-                        phi_332_ = select(_e157, _e63, (_e157 > _e63));
+                        phi_328_ = select(_e155, _e63, (_e155 > _e63));
                     }
-                    let _e162 = phi_332_;
-                    let _e163 = bitcast<u32>(_e162);
+                    let _e160 = phi_328_;
+                    let _e161 = bitcast<u32>(_e160);
                     if _e74 {
                     } else {
                         break;
                     }
                     if _e75 {
-                        phi_351_ = 0i;
+                        phi_347_ = 0i;
                     } else {
-                        phi_351_ = select(_e71, _e73, (_e71 > _e73));
+                        phi_347_ = select(_e71, _e73, (_e71 > _e73));
                     }
-                    let _e167 = phi_351_;
-                    let _e168 = bitcast<u32>(_e167);
-                    let _e170 = ((_e168 * _e46) + _e163);
-                    if (_e170 < _e34) {
+                    let _e165 = phi_347_;
+                    let _e166 = bitcast<u32>(_e165);
+                    let _e168 = ((_e166 * _e46) + _e161);
+                    if (_e168 < _e34) {
                     } else {
                         break;
                     }
-                    let _e174 = depth.member[_e170];
-                    if (_e174 > 0f) {
-                        phi_381_ = (_e174 < _e90);
-                    } else {
-                        phi_381_ = false;
-                    }
-                    let _e178 = phi_381_;
-                    let _e179 = select(_e90, _e174, _e178);
+                    let _e172 = depth.member[_e168];
+                    let _e176 = select(_e90, _e172, select(false, (_e172 < _e90), (_e172 > 0f)));
                     if _e64 {
                     } else {
                         break;
                     }
                     if _e65 {
-                        phi_432_ = 0i;
+                        phi_426_ = 0i;
                     } else {
-                        phi_432_ = select(_e61, _e63, (_e61 > _e63));
+                        phi_426_ = select(_e61, _e63, (_e61 > _e63));
                     }
-                    let _e197 = phi_432_;
-                    let _e198 = bitcast<u32>(_e197);
-                    let _e199 = (_e71 + -1i);
+                    let _e194 = phi_426_;
+                    let _e195 = bitcast<u32>(_e194);
+                    let _e196 = (_e71 + -1i);
                     if _e74 {
                     } else {
                         break;
                     }
-                    if (_e199 < 0i) {
-                        phi_451_ = 0i;
+                    if (_e196 < 0i) {
+                        phi_445_ = 0i;
                     } else {
-                        phi_451_ = select(_e199, _e73, (_e199 > _e73));
+                        phi_445_ = select(_e196, _e73, (_e196 > _e73));
                     }
-                    let _e204 = phi_451_;
-                    let _e205 = bitcast<u32>(_e204);
-                    let _e207 = ((_e205 * _e46) + _e198);
-                    if (_e207 < _e34) {
+                    let _e201 = phi_445_;
+                    let _e202 = bitcast<u32>(_e201);
+                    let _e204 = ((_e202 * _e46) + _e195);
+                    if (_e204 < _e34) {
                     } else {
                         break;
                     }
-                    let _e211 = depth.member[_e207];
-                    if (_e211 > 0f) {
-                        phi_481_ = (_e211 < _e90);
-                    } else {
-                        phi_481_ = false;
-                    }
-                    let _e215 = phi_481_;
-                    let _e216 = select(_e90, _e211, _e215);
+                    let _e208 = depth.member[_e204];
+                    let _e212 = select(_e90, _e208, select(false, (_e208 < _e90), (_e208 > 0f)));
                     if _e64 {
                     } else {
                         break;
                     }
                     if _e65 {
-                        phi_532_ = 0i;
+                        phi_524_ = 0i;
                     } else {
-                        phi_532_ = select(_e61, _e63, (_e61 > _e63));
+                        phi_524_ = select(_e61, _e63, (_e61 > _e63));
                     }
-                    let _e234 = phi_532_;
-                    let _e235 = bitcast<u32>(_e234);
-                    let _e236 = (_e71 + 1i);
+                    let _e230 = phi_524_;
+                    let _e231 = bitcast<u32>(_e230);
+                    let _e232 = (_e71 + 1i);
                     if _e74 {
                     } else {
                         break;
                     }
-                    if (_e236 < 0i) {
-                        phi_551_ = 0i;
+                    if (_e232 < 0i) {
+                        phi_543_ = 0i;
                     } else {
-                        phi_551_ = select(_e236, _e73, (_e236 > _e73));
+                        phi_543_ = select(_e232, _e73, (_e232 > _e73));
                     }
-                    let _e241 = phi_551_;
-                    let _e242 = bitcast<u32>(_e241);
-                    let _e244 = ((_e242 * _e46) + _e235);
-                    if (_e244 < _e34) {
+                    let _e237 = phi_543_;
+                    let _e238 = bitcast<u32>(_e237);
+                    let _e240 = ((_e238 * _e46) + _e231);
+                    if (_e240 < _e34) {
                     } else {
                         break;
                     }
-                    let _e248 = depth.member[_e244];
-                    if (_e248 > 0f) {
-                        phi_581_ = (_e248 < _e90);
-                    } else {
-                        phi_581_ = false;
-                    }
-                    let _e252 = phi_581_;
-                    let _e253 = select(_e90, _e248, _e252);
-                    let _e268 = (_e142 - _e95);
-                    let _e269 = (_e179 - _e95);
-                    let _e270 = (_e216 - _e95);
-                    let _e271 = (_e253 - _e95);
-                    let _e272 = (_e269 - _e268);
-                    let _e274 = (_e271 - _e270);
-                    let _e282 = abs(_e268);
-                    let _e283 = abs(_e269);
-                    let _e284 = abs(_e270);
-                    let _e285 = abs(_e271);
-                    let _e286 = abs((_e268 + (_e272 * 0.5f)));
-                    let _e287 = abs((_e269 + (_e272 * -0.5f)));
-                    let _e288 = abs((_e270 + (_e274 * 0.5f)));
-                    let _e289 = abs((_e271 + (_e274 * -0.5f)));
-                    let _e298 = (_e95 * 0.011f);
-                    let _e303 = (1.25f - (select(_e286, _e282, (_e282 < _e286)) / _e298));
+                    let _e244 = depth.member[_e240];
+                    let _e248 = select(_e90, _e244, select(false, (_e244 < _e90), (_e244 > 0f)));
+                    let _e263 = (_e140 - _e94);
+                    let _e264 = (_e176 - _e94);
+                    let _e265 = (_e212 - _e94);
+                    let _e266 = (_e248 - _e94);
+                    let _e267 = (_e264 - _e263);
+                    let _e269 = (_e266 - _e265);
+                    let _e277 = abs(_e263);
+                    let _e278 = abs(_e264);
+                    let _e279 = abs(_e265);
+                    let _e280 = abs(_e266);
+                    let _e281 = abs((_e263 + (_e267 * 0.5f)));
+                    let _e282 = abs((_e264 + (_e267 * -0.5f)));
+                    let _e283 = abs((_e265 + (_e269 * 0.5f)));
+                    let _e284 = abs((_e266 + (_e269 * -0.5f)));
+                    let _e293 = (_e94 * 0.011f);
+                    let _e298 = (1.25f - (select(_e281, _e277, (_e277 < _e281)) / _e293));
+                    let _e302 = select(0f, select(1f, _e298, (_e298 < 1f)), (_e298 > 0f));
+                    let _e303 = (1.25f - (select(_e282, _e278, (_e278 < _e282)) / _e293));
                     let _e307 = select(0f, select(1f, _e303, (_e303 < 1f)), (_e303 > 0f));
-                    let _e308 = (1.25f - (select(_e287, _e283, (_e283 < _e287)) / _e298));
+                    let _e308 = (1.25f - (select(_e283, _e279, (_e279 < _e283)) / _e293));
                     let _e312 = select(0f, select(1f, _e308, (_e308 < 1f)), (_e308 > 0f));
-                    let _e313 = (1.25f - (select(_e288, _e284, (_e284 < _e288)) / _e298));
+                    let _e313 = (1.25f - (select(_e284, _e280, (_e280 < _e284)) / _e293));
                     let _e317 = select(0f, select(1f, _e313, (_e313 < 1f)), (_e313 > 0f));
-                    let _e318 = (1.25f - (select(_e289, _e285, (_e285 < _e289)) / _e298));
-                    let _e322 = select(0f, select(1f, _e318, (_e318 < 1f)), (_e318 > 0f));
-                    let _e323 = (((((((f32(_e126) + 0.5f) / _e41) * 2f) - 1f) * _e108) * _e142) - _e110);
-                    let _e324 = (((((((f32(_e131) + 0.5f) / _e51) * -2f) + 1f) * _e117) * _e142) - _e119);
-                    let _e330 = sqrt((((_e323 * _e323) + (_e324 * _e324)) + (_e268 * _e268)));
-                    if (_e330 > 0f) {
-                        phi_723_ = vec3<f32>((_e323 / _e330), (_e324 / _e330), (_e268 / _e330));
+                    let _e318 = (((((((f32(_e125) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e140) - _e109);
+                    let _e319 = (((((((f32(_e130) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e140) - _e118);
+                    let _e325 = sqrt((((_e318 * _e318) + (_e319 * _e319)) + (_e263 * _e263)));
+                    if (_e325 > 0f) {
+                        phi_713_ = vec3<f32>((_e318 / _e325), (_e319 / _e325), (_e263 / _e325));
                     } else {
-                        phi_723_ = vec3<f32>(0f, 0f, 0f);
+                        phi_713_ = vec3<f32>(0f, 0f, 0f);
                     }
-                    let _e337 = phi_723_;
-                    let _e338 = (((((((f32(_e163) + 0.5f) / _e41) * 2f) - 1f) * _e108) * _e179) - _e110);
-                    let _e339 = (((((((f32(_e168) + 0.5f) / _e51) * -2f) + 1f) * _e117) * _e179) - _e119);
-                    let _e345 = sqrt((((_e338 * _e338) + (_e339 * _e339)) + (_e269 * _e269)));
-                    if (_e345 > 0f) {
-                        phi_741_ = vec3<f32>((_e338 / _e345), (_e339 / _e345), (_e269 / _e345));
+                    let _e332 = phi_713_;
+                    let _e333 = (((((((f32(_e161) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e176) - _e109);
+                    let _e334 = (((((((f32(_e166) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e176) - _e118);
+                    let _e340 = sqrt((((_e333 * _e333) + (_e334 * _e334)) + (_e264 * _e264)));
+                    if (_e340 > 0f) {
+                        phi_731_ = vec3<f32>((_e333 / _e340), (_e334 / _e340), (_e264 / _e340));
                     } else {
-                        phi_741_ = vec3<f32>(0f, 0f, 0f);
+                        phi_731_ = vec3<f32>(0f, 0f, 0f);
                     }
-                    let _e352 = phi_741_;
-                    let _e353 = (((((((f32(_e198) + 0.5f) / _e41) * 2f) - 1f) * _e108) * _e216) - _e110);
-                    let _e354 = (((((((f32(_e205) + 0.5f) / _e51) * -2f) + 1f) * _e117) * _e216) - _e119);
-                    let _e360 = sqrt((((_e353 * _e353) + (_e354 * _e354)) + (_e270 * _e270)));
-                    if (_e360 > 0f) {
-                        phi_759_ = vec3<f32>((_e353 / _e360), (_e354 / _e360), (_e270 / _e360));
+                    let _e347 = phi_731_;
+                    let _e348 = (((((((f32(_e195) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e212) - _e109);
+                    let _e349 = (((((((f32(_e202) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e212) - _e118);
+                    let _e355 = sqrt((((_e348 * _e348) + (_e349 * _e349)) + (_e265 * _e265)));
+                    if (_e355 > 0f) {
+                        phi_749_ = vec3<f32>((_e348 / _e355), (_e349 / _e355), (_e265 / _e355));
                     } else {
-                        phi_759_ = vec3<f32>(0f, 0f, 0f);
+                        phi_749_ = vec3<f32>(0f, 0f, 0f);
                     }
-                    let _e367 = phi_759_;
-                    let _e368 = (((((((f32(_e235) + 0.5f) / _e41) * 2f) - 1f) * _e108) * _e253) - _e110);
-                    let _e369 = (((((((f32(_e242) + 0.5f) / _e51) * -2f) + 1f) * _e117) * _e253) - _e119);
-                    let _e375 = sqrt((((_e368 * _e368) + (_e369 * _e369)) + (_e271 * _e271)));
-                    if (_e375 > 0f) {
-                        phi_777_ = vec3<f32>((_e368 / _e375), (_e369 / _e375), (_e271 / _e375));
+                    let _e362 = phi_749_;
+                    let _e363 = (((((((f32(_e231) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e248) - _e109);
+                    let _e364 = (((((((f32(_e238) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e248) - _e118);
+                    let _e370 = sqrt((((_e363 * _e363) + (_e364 * _e364)) + (_e266 * _e266)));
+                    if (_e370 > 0f) {
+                        phi_767_ = vec3<f32>((_e363 / _e370), (_e364 / _e370), (_e266 / _e370));
                     } else {
-                        phi_777_ = vec3<f32>(0f, 0f, 0f);
+                        phi_767_ = vec3<f32>(0f, 0f, 0f);
                     }
-                    let _e382 = phi_777_;
-                    let _e399 = ((_e307 * _e317) + 0.01f);
-                    let _e403 = select(0f, select(1f, _e399, (_e399 < 1f)), (_e399 > 0f));
-                    let _e420 = ((_e317 * _e312) + 0.01f);
-                    let _e424 = select(0f, select(1f, _e420, (_e420 < 1f)), (_e420 > 0f));
-                    let _e444 = ((_e312 * _e322) + 0.01f);
-                    let _e448 = select(0f, select(1f, _e444, (_e444 < 1f)), (_e444 > 0f));
-                    let _e465 = ((_e322 * _e307) + 0.01f);
-                    let _e469 = select(0f, select(1f, _e465, (_e465 < 1f)), (_e465 > 0f));
-                    let _e473 = ((((((_e337.y * _e367.z) - (_e367.y * _e337.z)) * _e403) + (((_e367.y * _e352.z) - (_e352.y * _e367.z)) * _e424)) + (((_e352.y * _e382.z) - (_e382.y * _e352.z)) * _e448)) + (((_e382.y * _e337.z) - (_e337.y * _e382.z)) * _e469));
-                    let _e474 = ((((((_e337.z * _e367.x) - (_e367.z * _e337.x)) * _e403) + (((_e367.z * _e352.x) - (_e352.z * _e367.x)) * _e424)) + (((_e352.z * _e382.x) - (_e382.z * _e352.x)) * _e448)) + (((_e382.z * _e337.x) - (_e337.z * _e382.x)) * _e469));
-                    let _e475 = ((((((_e337.x * _e367.y) - (_e367.x * _e337.y)) * _e403) + (((_e367.x * _e352.y) - (_e352.x * _e367.y)) * _e424)) + (((_e352.x * _e382.y) - (_e382.x * _e352.y)) * _e448)) + (((_e382.x * _e337.y) - (_e337.x * _e382.y)) * _e469));
-                    let _e481 = sqrt((((_e473 * _e473) + (_e474 * _e474)) + (_e475 * _e475)));
-                    if (_e481 > 0f) {
-                        phi_945_ = vec3<f32>((_e473 / _e481), (_e474 / _e481), (_e475 / _e481));
+                    let _e377 = phi_767_;
+                    let _e394 = ((_e302 * _e312) + 0.01f);
+                    let _e398 = select(0f, select(1f, _e394, (_e394 < 1f)), (_e394 > 0f));
+                    let _e415 = ((_e312 * _e307) + 0.01f);
+                    let _e419 = select(0f, select(1f, _e415, (_e415 < 1f)), (_e415 > 0f));
+                    let _e439 = ((_e307 * _e317) + 0.01f);
+                    let _e443 = select(0f, select(1f, _e439, (_e439 < 1f)), (_e439 > 0f));
+                    let _e460 = ((_e317 * _e302) + 0.01f);
+                    let _e464 = select(0f, select(1f, _e460, (_e460 < 1f)), (_e460 > 0f));
+                    let _e468 = ((((((_e332.y * _e362.z) - (_e362.y * _e332.z)) * _e398) + (((_e362.y * _e347.z) - (_e347.y * _e362.z)) * _e419)) + (((_e347.y * _e377.z) - (_e377.y * _e347.z)) * _e443)) + (((_e377.y * _e332.z) - (_e332.y * _e377.z)) * _e464));
+                    let _e469 = ((((((_e332.z * _e362.x) - (_e362.z * _e332.x)) * _e398) + (((_e362.z * _e347.x) - (_e347.z * _e362.x)) * _e419)) + (((_e347.z * _e377.x) - (_e377.z * _e347.x)) * _e443)) + (((_e377.z * _e332.x) - (_e332.z * _e377.x)) * _e464));
+                    let _e470 = ((((((_e332.x * _e362.y) - (_e362.x * _e332.y)) * _e398) + (((_e362.x * _e347.y) - (_e347.x * _e362.y)) * _e419)) + (((_e347.x * _e377.y) - (_e377.x * _e347.y)) * _e443)) + (((_e377.x * _e332.y) - (_e332.x * _e377.y)) * _e464));
+                    let _e476 = sqrt((((_e468 * _e468) + (_e469 * _e469)) + (_e470 * _e470)));
+                    if (_e476 > 0f) {
+                        phi_935_ = vec3<f32>((_e468 / _e476), (_e469 / _e476), (_e470 / _e476));
                     } else {
-                        phi_945_ = vec3<f32>(0f, 0f, 0f);
+                        phi_935_ = vec3<f32>(0f, 0f, 0f);
                     }
-                    let _e488 = phi_945_;
-                    let _e492 = -(_e488.z);
-                    let _e497 = ((abs(_e488.x) + abs(_e488.y)) + abs(_e492));
-                    let _e498 = (_e488.x / _e497);
-                    let _e499 = (_e488.y / _e497);
-                    if (_e492 < 0f) {
-                        phi_979_ = vec2<f32>(((1f - abs(_e499)) * select(1f, -1f, (_e498 < 0f))), ((1f - abs(_e498)) * select(1f, -1f, (_e499 < 0f))));
+                    let _e483 = phi_935_;
+                    let _e487 = -(_e483.z);
+                    let _e492 = ((abs(_e483.x) + abs(_e483.y)) + abs(_e487));
+                    let _e493 = (_e483.x / _e492);
+                    let _e494 = (_e483.y / _e492);
+                    if (_e487 < 0f) {
+                        phi_969_ = vec2<f32>(((1f - abs(_e494)) * select(1f, -1f, (_e493 < 0f))), ((1f - abs(_e493)) * select(1f, -1f, (_e494 < 0f))));
                     } else {
-                        phi_979_ = vec2<f32>(_e498, _e499);
+                        phi_969_ = vec2<f32>(_e493, _e494);
                     }
-                    let _e514 = phi_979_;
-                    if (_e514.x != _e514.x) {
-                        phi_995_ = 0f;
+                    let _e509 = phi_969_;
+                    if (_e509.x != _e509.x) {
+                        phi_985_ = 0f;
                     } else {
-                        phi_995_ = select(-1f, select(1f, _e514.x, (_e514.x < 1f)), (_e514.x > -1f));
+                        phi_985_ = select(-1f, select(1f, _e509.x, (_e509.x < 1f)), (_e509.x > -1f));
                     }
-                    let _e522 = phi_995_;
-                    let _e527 = ((_e522 * 127f) + (0.5f * select(1f, -1f, (_e522 < 0f))));
-                    if (_e514.y != _e514.y) {
-                        phi_1030_ = 0f;
+                    let _e517 = phi_985_;
+                    let _e522 = ((_e517 * 127f) + (0.5f * select(1f, -1f, (_e517 < 0f))));
+                    if (_e509.y != _e509.y) {
+                        phi_1020_ = 0f;
                     } else {
-                        phi_1030_ = select(-1f, select(1f, _e514.y, (_e514.y < 1f)), (_e514.y > -1f));
+                        phi_1020_ = select(-1f, select(1f, _e509.y, (_e509.y < 1f)), (_e509.y > -1f));
                     }
-                    let _e544 = phi_1030_;
-                    let _e549 = ((_e544 * 127f) + (0.5f * select(1f, -1f, (_e544 < 0f))));
-                    let _e563 = ((_e32.y * _e46) + _e32.x);
-                    if (_e563 < arrayLength((&normals.member))) {
+                    let _e539 = phi_1020_;
+                    let _e544 = ((_e539 * 127f) + (0.5f * select(1f, -1f, (_e539 < 0f))));
+                    let _e558 = ((_e32.y * _e46) + _e32.x);
+                    if (_e558 < arrayLength((&normals.member))) {
                     } else {
                         break;
                     }
-                    normals.member[_e563] = ((bitcast<u32>(select(0i, select(select(i32(_e527), i32(-2147483648), (_e527 < -2147483600f)), 2147483647i, (_e527 > 2147483500f)), (_e527 == _e527))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e549), i32(-2147483648), (_e549 < -2147483600f)), 2147483647i, (_e549 > 2147483500f)), (_e549 == _e549))) & 255u) << bitcast<u32>(8i)));
+                    normals.member[_e558] = ((bitcast<u32>(select(0i, select(select(i32(_e522), i32(-2147483648), (_e522 < -2147483600f)), 2147483647i, (_e522 > 2147483500f)), (_e522 == _e522))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e544), i32(-2147483648), (_e544 < -2147483600f)), 2147483647i, (_e544 > 2147483500f)), (_e544 == _e544))) & 255u) << bitcast<u32>(8i)));
                 }
             }
             break;

@@ -43,33 +43,32 @@ var<storage, read_write> mips: type_7;
 
 fn function_() {
     var local: array<f32, 4>;
-    var phi_160_: bool;
-    var phi_194_: u32;
-    var phi_197_: u32;
+    var phi_192_: u32;
     var phi_195_: u32;
-    var phi_198_: u32;
+    var phi_193_: u32;
+    var phi_196_: u32;
     var local_1: u32;
     var local_2: u32;
     var local_3: u32;
     var local_4: u32;
-    var phi_457_: bool;
-    var phi_472_: bool;
-    var phi_487_: bool;
-    var phi_340_: u32;
+    var phi_455_: bool;
+    var phi_470_: bool;
+    var phi_485_: bool;
+    var phi_338_: u32;
+    var phi_341_: f32;
     var phi_343_: f32;
-    var phi_345_: f32;
-    var phi_387_: f32;
-    var phi_341_: u32;
+    var phi_385_: f32;
+    var phi_339_: u32;
+    var phi_342_: f32;
     var phi_344_: f32;
-    var phi_346_: f32;
-    var phi_492_: bool;
+    var phi_490_: bool;
     var local_5: f32;
     var local_6: f32;
-    var phi_400_: f32;
-    var phi_404_: u32;
-    var phi_407_: u32;
+    var phi_398_: f32;
+    var phi_402_: u32;
     var phi_405_: u32;
-    var phi_408_: u32;
+    var phi_403_: u32;
+    var phi_406_: u32;
     var local_7: u32;
 
     switch bitcast<i32>(0u) {
@@ -97,209 +96,203 @@ fn function_() {
                         }
                         let _e70 = depth.member[_e66];
                         let _e74 = params.member.member.member_3;
-                        if (_e70 > 0f) {
-                            phi_160_ = (_e70 < _e74);
-                        } else {
-                            phi_160_ = false;
-                        }
-                        let _e78 = phi_160_;
-                        let _e79 = select(_e74, _e70, _e78);
-                        phi_400_ = select(0f, select(65504f, _e79, (_e79 < 65504f)), (_e79 > 0f));
+                        let _e78 = select(_e74, _e70, select(false, (_e70 < _e74), (_e70 > 0f)));
+                        phi_398_ = select(0f, select(65504f, _e78, (_e78 < 65504f)), (_e78 > 0f));
                     } else {
-                        let _e84 = (_e50 - 1u);
-                        let _e85 = (_e84 & 31u);
-                        let _e87 = (_e37 >> bitcast<u32>(_e85));
-                        let _e89 = select(1u, _e87, (1u < _e87));
-                        let _e91 = (_e47 >> bitcast<u32>(_e85));
-                        phi_194_ = 0u;
-                        phi_197_ = 0u;
+                        let _e83 = (_e50 - 1u);
+                        let _e84 = (_e83 & 31u);
+                        let _e86 = (_e37 >> bitcast<u32>(_e84));
+                        let _e88 = select(1u, _e86, (1u < _e86));
+                        let _e90 = (_e47 >> bitcast<u32>(_e84));
+                        phi_192_ = 0u;
+                        phi_195_ = 0u;
                         loop {
-                            let _e95 = phi_194_;
-                            let _e97 = phi_197_;
-                            local_1 = _e97;
-                            local_2 = _e97;
-                            local_3 = _e97;
-                            local_4 = _e97;
-                            let _e98 = (_e95 < _e84);
-                            if _e98 {
-                                let _e99 = (_e95 & 31u);
-                                let _e101 = (_e37 >> bitcast<u32>(_e99));
-                                let _e105 = (_e47 >> bitcast<u32>(_e99));
-                                phi_195_ = (_e95 + 1u);
-                                phi_198_ = (_e97 + (select(1u, _e101, (1u < _e101)) * select(1u, _e105, (1u < _e105))));
+                            let _e94 = phi_192_;
+                            let _e96 = phi_195_;
+                            local_1 = _e96;
+                            local_2 = _e96;
+                            local_3 = _e96;
+                            local_4 = _e96;
+                            let _e97 = (_e94 < _e83);
+                            if _e97 {
+                                let _e98 = (_e94 & 31u);
+                                let _e100 = (_e37 >> bitcast<u32>(_e98));
+                                let _e104 = (_e47 >> bitcast<u32>(_e98));
+                                phi_193_ = (_e94 + 1u);
+                                phi_196_ = (_e96 + (select(1u, _e100, (1u < _e100)) * select(1u, _e104, (1u < _e104))));
                             } else {
-                                phi_195_ = u32();
-                                phi_198_ = u32();
+                                phi_193_ = u32();
+                                phi_196_ = u32();
                             }
-                            let _e112 = phi_195_;
-                            let _e114 = phi_198_;
+                            let _e111 = phi_193_;
+                            let _e113 = phi_196_;
                             continue;
                             continuing {
-                                phi_194_ = _e112;
-                                phi_197_ = _e114;
-                                break if !(_e98);
+                                phi_192_ = _e111;
+                                phi_195_ = _e113;
+                                break if !(_e97);
                             }
                         }
-                        let _e116 = (2u * _e23.x);
-                        let _e117 = (2u * _e23.y);
-                        let _e118 = (select(1u, _e91, (1u < _e91)) - 1u);
-                        let _e121 = (select(_e117, _e118, (_e118 < _e117)) * _e89);
-                        let _e122 = (_e89 - 1u);
-                        let _e124 = select(_e116, _e122, (_e122 < _e116));
-                        let _e127 = local_1;
-                        let _e128 = (_e127 + (_e121 + _e124));
-                        if (_e128 < _e27) {
+                        let _e115 = (2u * _e23.x);
+                        let _e116 = (2u * _e23.y);
+                        let _e117 = (select(1u, _e90, (1u < _e90)) - 1u);
+                        let _e120 = (select(_e116, _e117, (_e117 < _e116)) * _e88);
+                        let _e121 = (_e88 - 1u);
+                        let _e123 = select(_e115, _e121, (_e121 < _e115));
+                        let _e126 = local_1;
+                        let _e127 = (_e126 + (_e120 + _e123));
+                        if (_e127 < _e27) {
                         } else {
                             break;
                         }
-                        let _e132 = mips.member[_e128];
-                        let _e133 = (_e116 + 1u);
-                        let _e135 = select(_e133, _e122, (_e122 < _e133));
-                        let _e138 = local_2;
-                        let _e139 = (_e138 + (_e121 + _e135));
-                        if (_e139 < _e27) {
+                        let _e131 = mips.member[_e127];
+                        let _e132 = (_e115 + 1u);
+                        let _e134 = select(_e132, _e121, (_e121 < _e132));
+                        let _e137 = local_2;
+                        let _e138 = (_e137 + (_e120 + _e134));
+                        if (_e138 < _e27) {
                         } else {
                             break;
                         }
-                        let _e143 = mips.member[_e139];
-                        let _e144 = (_e117 + 1u);
-                        let _e147 = (select(_e144, _e118, (_e118 < _e144)) * _e89);
-                        let _e150 = local_3;
-                        let _e151 = (_e150 + (_e147 + _e124));
-                        if (_e151 < _e27) {
+                        let _e142 = mips.member[_e138];
+                        let _e143 = (_e116 + 1u);
+                        let _e146 = (select(_e143, _e117, (_e117 < _e143)) * _e88);
+                        let _e149 = local_3;
+                        let _e150 = (_e149 + (_e146 + _e123));
+                        if (_e150 < _e27) {
                         } else {
                             break;
                         }
-                        let _e155 = mips.member[_e151];
-                        let _e158 = local_4;
-                        let _e159 = (_e158 + (_e147 + _e135));
-                        if (_e159 < _e27) {
+                        let _e154 = mips.member[_e150];
+                        let _e157 = local_4;
+                        let _e158 = (_e157 + (_e146 + _e134));
+                        if (_e158 < _e27) {
                         } else {
                             break;
                         }
-                        let _e163 = mips.member[_e159];
-                        local = array<f32, 4>(_e132, _e143, _e155, _e163);
-                        let _e167 = params.member.member_1;
-                        let _e170 = params.member.member_2;
-                        let _e172 = (0.75f * (_e167 * _e170));
-                        let _e174 = local[0u];
-                        let _e176 = local[1u];
-                        if (_e174 != _e174) {
-                            phi_457_ = true;
+                        let _e162 = mips.member[_e158];
+                        local = array<f32, 4>(_e131, _e142, _e154, _e162);
+                        let _e166 = params.member.member_1;
+                        let _e169 = params.member.member_2;
+                        let _e171 = (0.75f * (_e166 * _e169));
+                        let _e173 = local[0u];
+                        let _e175 = local[1u];
+                        if (_e173 != _e173) {
+                            phi_455_ = true;
                         } else {
-                            phi_457_ = (_e176 >= _e174);
+                            phi_455_ = (_e175 >= _e173);
                         }
-                        let _e180 = phi_457_;
-                        let _e181 = select(_e174, _e176, _e180);
-                        let _e183 = local[2u];
-                        if (_e181 != _e181) {
-                            phi_472_ = true;
+                        let _e179 = phi_455_;
+                        let _e180 = select(_e173, _e175, _e179);
+                        let _e182 = local[2u];
+                        if (_e180 != _e180) {
+                            phi_470_ = true;
                         } else {
-                            phi_472_ = (_e183 >= _e181);
+                            phi_470_ = (_e182 >= _e180);
                         }
-                        let _e187 = phi_472_;
-                        let _e188 = select(_e181, _e183, _e187);
-                        let _e190 = local[3u];
-                        if (_e188 != _e188) {
-                            phi_487_ = true;
+                        let _e186 = phi_470_;
+                        let _e187 = select(_e180, _e182, _e186);
+                        let _e189 = local[3u];
+                        if (_e187 != _e187) {
+                            phi_485_ = true;
                         } else {
-                            phi_487_ = (_e190 >= _e188);
+                            phi_485_ = (_e189 >= _e187);
                         }
-                        let _e194 = phi_487_;
-                        phi_340_ = 0u;
+                        let _e193 = phi_485_;
+                        phi_338_ = 0u;
+                        phi_341_ = 0f;
                         phi_343_ = 0f;
-                        phi_345_ = 0f;
                         loop {
-                            let _e197 = phi_340_;
-                            let _e199 = phi_343_;
-                            let _e201 = phi_345_;
-                            local_5 = _e201;
-                            local_6 = _e199;
-                            let _e202 = (_e197 < 4u);
-                            if _e202 {
-                                if _e202 {
+                            let _e196 = phi_338_;
+                            let _e198 = phi_341_;
+                            let _e200 = phi_343_;
+                            local_5 = _e200;
+                            local_6 = _e198;
+                            let _e201 = (_e196 < 4u);
+                            if _e201 {
+                                if _e201 {
                                 } else {
-                                    phi_492_ = true;
+                                    phi_490_ = true;
                                     break;
                                 }
-                                let _e204 = local[_e197];
-                                let _e206 = (_e172 - (select(_e188, _e190, _e194) - _e204));
-                                let _e209 = params.member.member_3;
-                                if (_e209 > 0f) {
-                                    let _e212 = (_e206 / (_e209 * _e172));
-                                    phi_387_ = select(0f, select(1f, _e212, (_e212 < 1f)), (_e212 > 0f));
+                                let _e203 = local[_e196];
+                                let _e205 = (_e171 - (select(_e187, _e189, _e193) - _e203));
+                                let _e208 = params.member.member_3;
+                                if (_e208 > 0f) {
+                                    let _e211 = (_e205 / (_e208 * _e171));
+                                    phi_385_ = select(0f, select(1f, _e211, (_e211 < 1f)), (_e211 > 0f));
                                 } else {
-                                    phi_387_ = select(0f, 1f, (_e206 >= 0f));
+                                    phi_385_ = select(0f, 1f, (_e205 >= 0f));
                                 }
-                                let _e220 = phi_387_;
-                                if _e202 {
+                                let _e219 = phi_385_;
+                                if _e201 {
                                 } else {
-                                    phi_492_ = true;
+                                    phi_490_ = true;
                                     break;
                                 }
-                                let _e221 = local[_e197];
-                                phi_341_ = (_e197 + 1u);
-                                phi_344_ = (_e199 + _e220);
-                                phi_346_ = (_e201 + (_e220 * _e221));
+                                let _e220 = local[_e196];
+                                phi_339_ = (_e196 + 1u);
+                                phi_342_ = (_e198 + _e219);
+                                phi_344_ = (_e200 + (_e219 * _e220));
                             } else {
-                                phi_341_ = u32();
+                                phi_339_ = u32();
+                                phi_342_ = f32();
                                 phi_344_ = f32();
-                                phi_346_ = f32();
                             }
-                            let _e227 = phi_341_;
-                            let _e229 = phi_344_;
-                            let _e231 = phi_346_;
+                            let _e226 = phi_339_;
+                            let _e228 = phi_342_;
+                            let _e230 = phi_344_;
                             continue;
                             continuing {
-                                phi_340_ = _e227;
-                                phi_343_ = _e229;
-                                phi_345_ = _e231;
-                                phi_492_ = false;
-                                break if !(_e202);
+                                phi_338_ = _e226;
+                                phi_341_ = _e228;
+                                phi_343_ = _e230;
+                                phi_490_ = false;
+                                break if !(_e201);
                             }
                         }
-                        let _e234 = phi_492_;
-                        if _e234 {
+                        let _e233 = phi_490_;
+                        if _e233 {
                             break;
                         }
-                        let _e236 = local_5;
-                        let _e238 = local_6;
-                        phi_400_ = (_e236 / _e238);
+                        let _e235 = local_5;
+                        let _e237 = local_6;
+                        phi_398_ = (_e235 / _e237);
                     }
-                    let _e241 = phi_400_;
-                    phi_404_ = 0u;
-                    phi_407_ = 0u;
+                    let _e240 = phi_398_;
+                    phi_402_ = 0u;
+                    phi_405_ = 0u;
                     loop {
-                        let _e243 = phi_404_;
-                        let _e245 = phi_407_;
-                        local_7 = _e245;
-                        let _e246 = (_e243 < _e50);
-                        if _e246 {
-                            let _e247 = (_e243 & 31u);
-                            let _e249 = (_e37 >> bitcast<u32>(_e247));
-                            let _e253 = (_e47 >> bitcast<u32>(_e247));
-                            phi_405_ = (_e243 + 1u);
-                            phi_408_ = (_e245 + (select(1u, _e249, (1u < _e249)) * select(1u, _e253, (1u < _e253))));
+                        let _e242 = phi_402_;
+                        let _e244 = phi_405_;
+                        local_7 = _e244;
+                        let _e245 = (_e242 < _e50);
+                        if _e245 {
+                            let _e246 = (_e242 & 31u);
+                            let _e248 = (_e37 >> bitcast<u32>(_e246));
+                            let _e252 = (_e47 >> bitcast<u32>(_e246));
+                            phi_403_ = (_e242 + 1u);
+                            phi_406_ = (_e244 + (select(1u, _e248, (1u < _e248)) * select(1u, _e252, (1u < _e252))));
                         } else {
-                            phi_405_ = u32();
-                            phi_408_ = u32();
+                            phi_403_ = u32();
+                            phi_406_ = u32();
                         }
-                        let _e260 = phi_405_;
-                        let _e262 = phi_408_;
+                        let _e259 = phi_403_;
+                        let _e261 = phi_406_;
                         continue;
                         continuing {
-                            phi_404_ = _e260;
-                            phi_407_ = _e262;
-                            break if !(_e246);
+                            phi_402_ = _e259;
+                            phi_405_ = _e261;
+                            break if !(_e245);
                         }
                     }
-                    let _e267 = local_7;
-                    let _e268 = (_e267 + ((_e23.y * _e55) + _e23.x));
-                    if (_e268 < _e27) {
+                    let _e266 = local_7;
+                    let _e267 = (_e266 + ((_e23.y * _e55) + _e23.x));
+                    if (_e267 < _e27) {
                     } else {
                         break;
                     }
-                    mips.member[_e268] = _e241;
+                    mips.member[_e267] = _e240;
                 }
             }
             break;

@@ -77,100 +77,94 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_281_: bool;
-    var phi_305_: i32;
-    var phi_324_: i32;
-    var phi_353_: bool;
-    var phi_377_: i32;
-    var phi_396_: i32;
-    var phi_425_: bool;
-    var phi_449_: i32;
-    var phi_468_: i32;
-    var phi_497_: bool;
-    var phi_521_: i32;
-    var phi_540_: i32;
-    var phi_569_: bool;
-    var phi_1809_: f32;
-    var phi_1813_: f32;
-    var phi_1814_: bool;
-    var phi_1852_: f32;
-    var phi_1856_: f32;
-    var phi_1857_: bool;
-    var phi_1895_: f32;
-    var phi_1899_: f32;
-    var phi_1900_: bool;
-    var phi_1938_: f32;
-    var phi_1942_: f32;
-    var phi_1943_: bool;
-    var phi_705_: bool;
-    var phi_1965_: bool;
-    var phi_1980_: bool;
-    var phi_799_: vec2<f32>;
-    var phi_830_: vec3<f32>;
-    var phi_836_: u32;
-    var phi_839_: u32;
-    var phi_841_: u32;
-    var phi_843_: u32;
-    var phi_872_: u32;
-    var phi_873_: u32;
-    var phi_874_: u32;
-    var phi_875_: u32;
-    var phi_837_: u32;
-    var phi_840_: u32;
-    var phi_842_: u32;
-    var phi_844_: u32;
+    var phi_303_: i32;
+    var phi_322_: i32;
+    var phi_373_: i32;
+    var phi_392_: i32;
+    var phi_443_: i32;
+    var phi_462_: i32;
+    var phi_513_: i32;
+    var phi_532_: i32;
+    var phi_1797_: f32;
+    var phi_1801_: f32;
+    var phi_1802_: bool;
+    var phi_1840_: f32;
+    var phi_1844_: f32;
+    var phi_1845_: bool;
+    var phi_1883_: f32;
+    var phi_1887_: f32;
+    var phi_1888_: bool;
+    var phi_1926_: f32;
+    var phi_1930_: f32;
+    var phi_1931_: bool;
+    var phi_1953_: bool;
+    var phi_1968_: bool;
+    var phi_789_: vec2<f32>;
+    var phi_820_: vec3<f32>;
+    var phi_826_: u32;
+    var phi_829_: u32;
+    var phi_831_: u32;
+    var phi_833_: u32;
+    var phi_862_: u32;
+    var phi_863_: u32;
+    var phi_864_: u32;
+    var phi_865_: u32;
+    var phi_827_: u32;
+    var phi_830_: u32;
+    var phi_832_: u32;
+    var phi_834_: u32;
     var local: u32;
-    var phi_906_: type_29;
-    var phi_2360_: bool;
-    var phi_941_: u32;
-    var phi_944_: f32;
-    var phi_1995_: bool;
-    var phi_1090_: u32;
-    var phi_1093_: f32;
-    var phi_1095_: bool;
-    var phi_1097_: bool;
-    var phi_1099_: f32;
-    var phi_1101_: f32;
-    var phi_2047_: u32;
-    var phi_2074_: u32;
-    var phi_2246_: bool;
-    var phi_2261_: bool;
-    var phi_2222_: vec2<f32>;
-    var phi_1333_: bool;
-    var phi_1378_: u32;
-    var phi_1380_: u32;
-    var phi_1381_: f32;
+    var phi_896_: type_29;
+    var phi_2348_: bool;
+    var phi_931_: u32;
+    var phi_934_: f32;
+    var phi_1983_: bool;
+    var phi_1080_: u32;
+    var phi_1083_: f32;
+    var phi_1085_: bool;
+    var phi_1087_: bool;
+    var phi_1089_: f32;
+    var phi_1091_: f32;
+    var phi_2035_: u32;
+    var phi_2062_: u32;
+    var phi_2234_: bool;
+    var phi_2249_: bool;
+    var phi_2210_: vec2<f32>;
+    var phi_1321_: bool;
+    var phi_1366_: u32;
+    var phi_1368_: u32;
+    var phi_1369_: f32;
+    var phi_1370_: bool;
+    var phi_1371_: bool;
+    var phi_1372_: f32;
+    var phi_1375_: bool;
+    var phi_1376_: bool;
+    var phi_1081_: u32;
+    var phi_1084_: f32;
+    var phi_1086_: bool;
+    var phi_1088_: bool;
+    var phi_1090_: f32;
+    var phi_1092_: f32;
+    var phi_1380_: bool;
     var phi_1382_: bool;
     var phi_1383_: bool;
-    var phi_1384_: f32;
-    var phi_1387_: bool;
-    var phi_1388_: bool;
-    var phi_1091_: u32;
-    var phi_1094_: f32;
-    var phi_1096_: bool;
-    var phi_1098_: bool;
-    var phi_1100_: f32;
-    var phi_1102_: f32;
-    var phi_1392_: bool;
-    var phi_1394_: bool;
-    var phi_1395_: bool;
-    var phi_2314_: bool;
-    var phi_1782_: bool;
-    var phi_1781_: bool;
-    var phi_1780_: bool;
-    var phi_1779_: bool;
-    var phi_1777_: f32;
+    var phi_2302_: bool;
+    var phi_1770_: bool;
+    var phi_1769_: bool;
+    var phi_1768_: bool;
+    var phi_1767_: bool;
+    var phi_1765_: f32;
     var local_1: f32;
     var local_2: bool;
     var local_3: f32;
     var local_4: bool;
-    var phi_1435_: f32;
-    var phi_2438_: bool;
-    var phi_942_: u32;
-    var phi_945_: f32;
-    var phi_2437_: bool;
+    var phi_1423_: f32;
+    var phi_2426_: bool;
+    var phi_932_: u32;
+    var phi_935_: f32;
+    var phi_2425_: bool;
     var local_5: f32;
-    var phi_1506_: type_30;
+    var phi_1494_: type_30;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -194,700 +188,664 @@ fn function_() {
                     }
                     let _e104 = depth.member[_e100];
                     let _e108 = params.member.member.member_3;
-                    let _e109 = (_e104 > 0f);
-                    if _e109 {
-                        phi_281_ = (_e104 < _e108);
-                    } else {
-                        phi_281_ = false;
-                    }
-                    let _e112 = phi_281_;
-                    let _e113 = select(_e108, _e104, _e112);
-                    let _e114 = bitcast<i32>(_e60.x);
-                    let _e115 = (_e114 + -1i);
-                    let _e117 = (bitcast<i32>(_e84) - 1i);
-                    let _e118 = (0i <= _e117);
-                    if _e118 {
+                    let _e111 = select(false, (_e104 < _e108), (_e104 > 0f));
+                    let _e112 = select(_e108, _e104, _e111);
+                    let _e113 = bitcast<i32>(_e60.x);
+                    let _e114 = (_e113 + -1i);
+                    let _e116 = (bitcast<i32>(_e84) - 1i);
+                    let _e117 = (0i <= _e116);
+                    if _e117 {
                     } else {
                         break;
                     }
-                    if (_e115 < 0i) {
-                        phi_305_ = 0i;
+                    if (_e114 < 0i) {
+                        phi_303_ = 0i;
                     } else {
-                        phi_305_ = select(_e115, _e117, (_e115 > _e117));
+                        phi_303_ = select(_e114, _e116, (_e114 > _e116));
                     }
-                    let _e123 = phi_305_;
-                    let _e125 = bitcast<i32>(_e60.y);
-                    let _e127 = (bitcast<i32>(_e94) - 1i);
-                    let _e128 = (0i <= _e127);
+                    let _e122 = phi_303_;
+                    let _e124 = bitcast<i32>(_e60.y);
+                    let _e126 = (bitcast<i32>(_e94) - 1i);
+                    let _e127 = (0i <= _e126);
+                    if _e127 {
+                    } else {
+                        break;
+                    }
+                    let _e128 = (_e124 < 0i);
                     if _e128 {
+                        phi_322_ = 0i;
+                    } else {
+                        phi_322_ = select(_e124, _e126, (_e124 > _e126));
+                    }
+                    let _e132 = phi_322_;
+                    let _e135 = ((bitcast<u32>(_e132) * _e84) + bitcast<u32>(_e122));
+                    if (_e135 < _e62) {
                     } else {
                         break;
                     }
-                    let _e129 = (_e125 < 0i);
-                    if _e129 {
-                        phi_324_ = 0i;
-                    } else {
-                        phi_324_ = select(_e125, _e127, (_e125 > _e127));
-                    }
-                    let _e133 = phi_324_;
-                    let _e136 = ((bitcast<u32>(_e133) * _e84) + bitcast<u32>(_e123));
-                    if (_e136 < _e62) {
+                    let _e139 = depth.member[_e135];
+                    let _e144 = (_e113 + 1i);
+                    if _e117 {
                     } else {
                         break;
                     }
-                    let _e140 = depth.member[_e136];
-                    if (_e140 > 0f) {
-                        phi_353_ = (_e140 < _e108);
+                    if (_e144 < 0i) {
+                        phi_373_ = 0i;
                     } else {
-                        phi_353_ = false;
+                        phi_373_ = select(_e144, _e116, (_e144 > _e116));
                     }
-                    let _e144 = phi_353_;
-                    let _e146 = (_e114 + 1i);
-                    if _e118 {
+                    let _e149 = phi_373_;
+                    if _e127 {
                     } else {
                         break;
                     }
-                    if (_e146 < 0i) {
-                        phi_377_ = 0i;
-                    } else {
-                        phi_377_ = select(_e146, _e117, (_e146 > _e117));
-                    }
-                    let _e151 = phi_377_;
                     if _e128 {
+                        phi_392_ = 0i;
+                    } else {
+                        phi_392_ = select(_e124, _e126, (_e124 > _e126));
+                    }
+                    let _e154 = phi_392_;
+                    let _e157 = ((bitcast<u32>(_e154) * _e84) + bitcast<u32>(_e149));
+                    if (_e157 < _e62) {
                     } else {
                         break;
                     }
-                    if _e129 {
-                        phi_396_ = 0i;
-                    } else {
-                        phi_396_ = select(_e125, _e127, (_e125 > _e127));
-                    }
-                    let _e156 = phi_396_;
-                    let _e159 = ((bitcast<u32>(_e156) * _e84) + bitcast<u32>(_e151));
-                    if (_e159 < _e62) {
+                    let _e161 = depth.member[_e157];
+                    if _e117 {
                     } else {
                         break;
                     }
-                    let _e163 = depth.member[_e159];
-                    if (_e163 > 0f) {
-                        phi_425_ = (_e163 < _e108);
+                    let _e166 = (_e113 < 0i);
+                    if _e166 {
+                        phi_443_ = 0i;
                     } else {
-                        phi_425_ = false;
+                        phi_443_ = select(_e113, _e116, (_e113 > _e116));
                     }
-                    let _e167 = phi_425_;
-                    if _e118 {
-                    } else {
-                        break;
-                    }
-                    let _e169 = (_e114 < 0i);
-                    if _e169 {
-                        phi_449_ = 0i;
-                    } else {
-                        phi_449_ = select(_e114, _e117, (_e114 > _e117));
-                    }
-                    let _e173 = phi_449_;
-                    let _e175 = (_e125 + -1i);
-                    if _e128 {
+                    let _e170 = phi_443_;
+                    let _e172 = (_e124 + -1i);
+                    if _e127 {
                     } else {
                         break;
                     }
-                    if (_e175 < 0i) {
-                        phi_468_ = 0i;
+                    if (_e172 < 0i) {
+                        phi_462_ = 0i;
                     } else {
-                        phi_468_ = select(_e175, _e127, (_e175 > _e127));
+                        phi_462_ = select(_e172, _e126, (_e172 > _e126));
                     }
-                    let _e180 = phi_468_;
-                    let _e183 = ((bitcast<u32>(_e180) * _e84) + bitcast<u32>(_e173));
-                    if (_e183 < _e62) {
-                    } else {
-                        break;
-                    }
-                    let _e187 = depth.member[_e183];
-                    if (_e187 > 0f) {
-                        phi_497_ = (_e187 < _e108);
-                    } else {
-                        phi_497_ = false;
-                    }
-                    let _e191 = phi_497_;
-                    if _e118 {
+                    let _e177 = phi_462_;
+                    let _e180 = ((bitcast<u32>(_e177) * _e84) + bitcast<u32>(_e170));
+                    if (_e180 < _e62) {
                     } else {
                         break;
                     }
-                    if _e169 {
-                        phi_521_ = 0i;
-                    } else {
-                        phi_521_ = select(_e114, _e117, (_e114 > _e117));
-                    }
-                    let _e196 = phi_521_;
-                    let _e198 = (_e125 + 1i);
-                    if _e128 {
+                    let _e184 = depth.member[_e180];
+                    if _e117 {
                     } else {
                         break;
                     }
-                    if (_e198 < 0i) {
-                        phi_540_ = 0i;
+                    if _e166 {
+                        phi_513_ = 0i;
                     } else {
-                        phi_540_ = select(_e198, _e127, (_e198 > _e127));
+                        phi_513_ = select(_e113, _e116, (_e113 > _e116));
                     }
-                    let _e203 = phi_540_;
-                    let _e206 = ((bitcast<u32>(_e203) * _e84) + bitcast<u32>(_e196));
-                    if (_e206 < _e62) {
+                    let _e192 = phi_513_;
+                    let _e194 = (_e124 + 1i);
+                    if _e127 {
                     } else {
                         break;
                     }
-                    let _e210 = depth.member[_e206];
-                    if (_e210 > 0f) {
-                        phi_569_ = (_e210 < _e108);
+                    if (_e194 < 0i) {
+                        phi_532_ = 0i;
                     } else {
-                        phi_569_ = false;
+                        phi_532_ = select(_e194, _e126, (_e194 > _e126));
                     }
-                    let _e214 = phi_569_;
-                    let _e216 = (select(_e108, _e140, _e144) - _e113);
-                    let _e217 = (select(_e108, _e163, _e167) - _e113);
-                    let _e218 = (select(_e108, _e187, _e191) - _e113);
-                    let _e219 = (select(_e108, _e210, _e214) - _e113);
-                    let _e220 = (_e217 - _e216);
-                    let _e222 = (_e219 - _e218);
-                    let _e230 = abs(_e216);
-                    let _e231 = abs(_e217);
-                    let _e232 = abs(_e218);
-                    let _e233 = abs(_e219);
-                    let _e234 = abs((_e216 + (_e220 * 0.5f)));
-                    let _e235 = abs((_e217 + (_e220 * -0.5f)));
-                    let _e236 = abs((_e218 + (_e222 * 0.5f)));
-                    let _e237 = abs((_e219 + (_e222 * -0.5f)));
-                    let _e246 = (_e113 * 0.011f);
-                    let _e251 = (1.25f - (select(_e234, _e230, (_e230 < _e234)) / _e246));
+                    let _e199 = phi_532_;
+                    let _e202 = ((bitcast<u32>(_e199) * _e84) + bitcast<u32>(_e192));
+                    if (_e202 < _e62) {
+                    } else {
+                        break;
+                    }
+                    let _e206 = depth.member[_e202];
+                    let _e211 = (select(_e108, _e139, select(false, (_e139 < _e108), (_e139 > 0f))) - _e112);
+                    let _e212 = (select(_e108, _e161, select(false, (_e161 < _e108), (_e161 > 0f))) - _e112);
+                    let _e213 = (select(_e108, _e184, select(false, (_e184 < _e108), (_e184 > 0f))) - _e112);
+                    let _e214 = (select(_e108, _e206, select(false, (_e206 < _e108), (_e206 > 0f))) - _e112);
+                    let _e215 = (_e212 - _e211);
+                    let _e217 = (_e214 - _e213);
+                    let _e225 = abs(_e211);
+                    let _e226 = abs(_e212);
+                    let _e227 = abs(_e213);
+                    let _e228 = abs(_e214);
+                    let _e229 = abs((_e211 + (_e215 * 0.5f)));
+                    let _e230 = abs((_e212 + (_e215 * -0.5f)));
+                    let _e231 = abs((_e213 + (_e217 * 0.5f)));
+                    let _e232 = abs((_e214 + (_e217 * -0.5f)));
+                    let _e241 = (_e112 * 0.011f);
+                    let _e246 = (1.25f - (select(_e229, _e225, (_e225 < _e229)) / _e241));
+                    let _e250 = select(0f, select(1f, _e246, (_e246 < 1f)), (_e246 > 0f));
+                    let _e251 = (1.25f - (select(_e230, _e226, (_e226 < _e230)) / _e241));
                     let _e255 = select(0f, select(1f, _e251, (_e251 < 1f)), (_e251 > 0f));
-                    let _e256 = (1.25f - (select(_e235, _e231, (_e231 < _e235)) / _e246));
+                    let _e256 = (1.25f - (select(_e231, _e227, (_e227 < _e231)) / _e241));
                     let _e260 = select(0f, select(1f, _e256, (_e256 < 1f)), (_e256 > 0f));
-                    let _e261 = (1.25f - (select(_e236, _e232, (_e232 < _e236)) / _e246));
+                    let _e261 = (1.25f - (select(_e232, _e228, (_e228 < _e232)) / _e241));
                     let _e265 = select(0f, select(1f, _e261, (_e261 < 1f)), (_e261 > 0f));
-                    let _e266 = (1.25f - (select(_e237, _e233, (_e233 < _e237)) / _e246));
-                    let _e270 = select(0f, select(1f, _e266, (_e266 < 1f)), (_e266 > 0f));
-                    let _e275 = (select(0f, select(1f, _e255, (_e255 < 1f)), (_e255 > 0f)) * 2.9f);
-                    let _e277 = floor((_e275 + 0.5f));
-                    if ((_e277 - _e275) == 0.5f) {
-                        let _e283 = ((floor((_e277 * 0.5f)) * 2f) != _e277);
-                        if _e283 {
-                            phi_1809_ = (_e277 - 1f);
+                    let _e270 = (select(0f, select(1f, _e250, (_e250 < 1f)), (_e250 > 0f)) * 2.9f);
+                    let _e272 = floor((_e270 + 0.5f));
+                    if ((_e272 - _e270) == 0.5f) {
+                        let _e278 = ((floor((_e272 * 0.5f)) * 2f) != _e272);
+                        if _e278 {
+                            phi_1797_ = (_e272 - 1f);
                         } else {
-                            phi_1809_ = f32();
+                            phi_1797_ = f32();
                         }
-                        let _e286 = phi_1809_;
-                        phi_1813_ = _e286;
-                        phi_1814_ = select(true, false, _e283);
+                        let _e281 = phi_1797_;
+                        phi_1801_ = _e281;
+                        phi_1802_ = select(true, false, _e278);
                     } else {
-                        phi_1813_ = f32();
-                        phi_1814_ = true;
+                        phi_1801_ = f32();
+                        phi_1802_ = true;
                     }
-                    let _e289 = phi_1813_;
-                    let _e291 = phi_1814_;
-                    let _e292 = select(_e289, _e277, _e291);
-                    let _e303 = (select(0f, select(1f, _e260, (_e260 < 1f)), (_e260 > 0f)) * 2.9f);
-                    let _e305 = floor((_e303 + 0.5f));
-                    if ((_e305 - _e303) == 0.5f) {
-                        let _e311 = ((floor((_e305 * 0.5f)) * 2f) != _e305);
-                        if _e311 {
-                            phi_1852_ = (_e305 - 1f);
+                    let _e284 = phi_1801_;
+                    let _e286 = phi_1802_;
+                    let _e287 = select(_e284, _e272, _e286);
+                    let _e298 = (select(0f, select(1f, _e255, (_e255 < 1f)), (_e255 > 0f)) * 2.9f);
+                    let _e300 = floor((_e298 + 0.5f));
+                    if ((_e300 - _e298) == 0.5f) {
+                        let _e306 = ((floor((_e300 * 0.5f)) * 2f) != _e300);
+                        if _e306 {
+                            phi_1840_ = (_e300 - 1f);
                         } else {
-                            phi_1852_ = f32();
+                            phi_1840_ = f32();
                         }
-                        let _e314 = phi_1852_;
-                        phi_1856_ = _e314;
-                        phi_1857_ = select(true, false, _e311);
+                        let _e309 = phi_1840_;
+                        phi_1844_ = _e309;
+                        phi_1845_ = select(true, false, _e306);
                     } else {
-                        phi_1856_ = f32();
-                        phi_1857_ = true;
+                        phi_1844_ = f32();
+                        phi_1845_ = true;
                     }
-                    let _e317 = phi_1856_;
-                    let _e319 = phi_1857_;
-                    let _e320 = select(_e317, _e305, _e319);
-                    let _e332 = (select(0f, select(1f, _e265, (_e265 < 1f)), (_e265 > 0f)) * 2.9f);
-                    let _e334 = floor((_e332 + 0.5f));
-                    if ((_e334 - _e332) == 0.5f) {
-                        let _e340 = ((floor((_e334 * 0.5f)) * 2f) != _e334);
-                        if _e340 {
-                            phi_1895_ = (_e334 - 1f);
+                    let _e312 = phi_1844_;
+                    let _e314 = phi_1845_;
+                    let _e315 = select(_e312, _e300, _e314);
+                    let _e327 = (select(0f, select(1f, _e260, (_e260 < 1f)), (_e260 > 0f)) * 2.9f);
+                    let _e329 = floor((_e327 + 0.5f));
+                    if ((_e329 - _e327) == 0.5f) {
+                        let _e335 = ((floor((_e329 * 0.5f)) * 2f) != _e329);
+                        if _e335 {
+                            phi_1883_ = (_e329 - 1f);
                         } else {
-                            phi_1895_ = f32();
+                            phi_1883_ = f32();
                         }
-                        let _e343 = phi_1895_;
-                        phi_1899_ = _e343;
-                        phi_1900_ = select(true, false, _e340);
+                        let _e338 = phi_1883_;
+                        phi_1887_ = _e338;
+                        phi_1888_ = select(true, false, _e335);
                     } else {
-                        phi_1899_ = f32();
-                        phi_1900_ = true;
+                        phi_1887_ = f32();
+                        phi_1888_ = true;
                     }
-                    let _e346 = phi_1899_;
-                    let _e348 = phi_1900_;
-                    let _e349 = select(_e346, _e334, _e348);
-                    let _e361 = (select(0f, select(1f, _e270, (_e270 < 1f)), (_e270 > 0f)) * 2.9f);
-                    let _e363 = floor((_e361 + 0.5f));
-                    if ((_e363 - _e361) == 0.5f) {
-                        let _e369 = ((floor((_e363 * 0.5f)) * 2f) != _e363);
-                        if _e369 {
-                            phi_1938_ = (_e363 - 1f);
+                    let _e341 = phi_1887_;
+                    let _e343 = phi_1888_;
+                    let _e344 = select(_e341, _e329, _e343);
+                    let _e356 = (select(0f, select(1f, _e265, (_e265 < 1f)), (_e265 > 0f)) * 2.9f);
+                    let _e358 = floor((_e356 + 0.5f));
+                    if ((_e358 - _e356) == 0.5f) {
+                        let _e364 = ((floor((_e358 * 0.5f)) * 2f) != _e358);
+                        if _e364 {
+                            phi_1926_ = (_e358 - 1f);
                         } else {
-                            phi_1938_ = f32();
+                            phi_1926_ = f32();
                         }
-                        let _e372 = phi_1938_;
-                        phi_1942_ = _e372;
-                        phi_1943_ = select(true, false, _e369);
+                        let _e367 = phi_1926_;
+                        phi_1930_ = _e367;
+                        phi_1931_ = select(true, false, _e364);
                     } else {
-                        phi_1942_ = f32();
-                        phi_1943_ = true;
+                        phi_1930_ = f32();
+                        phi_1931_ = true;
                     }
-                    let _e375 = phi_1942_;
-                    let _e377 = phi_1943_;
-                    let _e378 = select(_e375, _e363, _e377);
-                    let _e384 = ((((64u * select(select(u32(_e292), 0u, (_e292 < 0f)), 4294967295u, (_e292 > 4294967000f))) + (16u * select(select(u32(_e320), 0u, (_e320 < 0f)), 4294967295u, (_e320 > 4294967000f)))) + (4u * select(select(u32(_e349), 0u, (_e349 < 0f)), 4294967295u, (_e349 > 4294967000f)))) + select(select(u32(_e378), 0u, (_e378 < 0f)), 4294967295u, (_e378 > 4294967000f)));
+                    let _e370 = phi_1930_;
+                    let _e372 = phi_1931_;
+                    let _e373 = select(_e370, _e358, _e372);
+                    let _e379 = ((((64u * select(select(u32(_e287), 0u, (_e287 < 0f)), 4294967295u, (_e287 > 4294967000f))) + (16u * select(select(u32(_e315), 0u, (_e315 < 0f)), 4294967295u, (_e315 > 4294967000f)))) + (4u * select(select(u32(_e344), 0u, (_e344 < 0f)), 4294967295u, (_e344 > 4294967000f)))) + select(select(u32(_e373), 0u, (_e373 < 0f)), 4294967295u, (_e373 > 4294967000f)));
                     if _e101 {
                     } else {
                         break;
                     }
-                    if _e109 {
-                        phi_705_ = (_e104 < _e108);
-                    } else {
-                        phi_705_ = false;
-                    }
-                    let _e387 = phi_705_;
-                    if _e387 {
-                        let _e400 = params.member.member.member_1[0u];
-                        let _e402 = ((((((f32(_e60.x) + 0.5f) / _e79) * 2f) - 1f) * _e400) * _e104);
-                        let _e409 = params.member.member.member_1[1u];
-                        let _e411 = ((((((f32(_e60.y) + 0.5f) / _e89) * -2f) + 1f) * _e409) * _e104);
+                    if _e111 {
+                        let _e392 = params.member.member.member_1[0u];
+                        let _e394 = ((((((f32(_e60.x) + 0.5f) / _e79) * 2f) - 1f) * _e392) * _e104);
+                        let _e401 = params.member.member.member_1[1u];
+                        let _e403 = ((((((f32(_e60.y) + 0.5f) / _e89) * -2f) + 1f) * _e401) * _e104);
                         if (_e100 < _e64) {
                         } else {
                             break;
                         }
-                        let _e416 = normals.member[_e100];
-                        let _e424 = (f32((bitcast<i32>(((_e416 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e424 != _e424) {
-                            phi_1965_ = true;
+                        let _e408 = normals.member[_e100];
+                        let _e416 = (f32((bitcast<i32>(((_e408 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e416 != _e416) {
+                            phi_1953_ = true;
                         } else {
-                            phi_1965_ = (-1f >= _e424);
+                            phi_1953_ = (-1f >= _e416);
                         }
-                        let _e428 = phi_1965_;
-                        let _e429 = select(_e424, -1f, _e428);
-                        let _e439 = (f32((bitcast<i32>((((_e416 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e439 != _e439) {
-                            phi_1980_ = true;
+                        let _e420 = phi_1953_;
+                        let _e421 = select(_e416, -1f, _e420);
+                        let _e431 = (f32((bitcast<i32>((((_e408 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e431 != _e431) {
+                            phi_1968_ = true;
                         } else {
-                            phi_1980_ = (-1f >= _e439);
+                            phi_1968_ = (-1f >= _e431);
                         }
-                        let _e443 = phi_1980_;
-                        let _e444 = select(_e439, -1f, _e443);
-                        let _e447 = (1f - abs(_e429));
-                        let _e448 = abs(_e444);
-                        let _e449 = (_e447 - _e448);
-                        if (_e449 < 0f) {
-                            phi_799_ = vec2<f32>(((1f - _e448) * select(1f, -1f, (_e429 < 0f))), (_e447 * select(1f, -1f, (_e444 < 0f))));
+                        let _e435 = phi_1968_;
+                        let _e436 = select(_e431, -1f, _e435);
+                        let _e439 = (1f - abs(_e421));
+                        let _e440 = abs(_e436);
+                        let _e441 = (_e439 - _e440);
+                        if (_e441 < 0f) {
+                            phi_789_ = vec2<f32>(((1f - _e440) * select(1f, -1f, (_e421 < 0f))), (_e439 * select(1f, -1f, (_e436 < 0f))));
                         } else {
-                            phi_799_ = vec2<f32>(_e429, _e444);
+                            phi_789_ = vec2<f32>(_e421, _e436);
                         }
-                        let _e460 = phi_799_;
-                        let _e469 = (1f / sqrt((((_e460.x * _e460.x) + (_e460.y * _e460.y)) + (_e449 * _e449))));
-                        let _e470 = (_e460.x * _e469);
-                        let _e471 = (_e460.y * _e469);
-                        let _e472 = (_e449 * _e469);
-                        let _e473 = -(_e472);
-                        if ((((_e470 * -(_e402)) + (_e471 * -(_e411))) + (_e473 * -(_e104))) < 0f) {
-                            phi_830_ = vec3<f32>(-(_e470), -(_e471), _e472);
+                        let _e452 = phi_789_;
+                        let _e461 = (1f / sqrt((((_e452.x * _e452.x) + (_e452.y * _e452.y)) + (_e441 * _e441))));
+                        let _e462 = (_e452.x * _e461);
+                        let _e463 = (_e452.y * _e461);
+                        let _e464 = (_e441 * _e461);
+                        let _e465 = -(_e464);
+                        if ((((_e462 * -(_e394)) + (_e463 * -(_e403))) + (_e465 * -(_e104))) < 0f) {
+                            phi_820_ = vec3<f32>(-(_e462), -(_e463), _e464);
                         } else {
-                            phi_830_ = vec3<f32>(_e470, _e471, _e473);
+                            phi_820_ = vec3<f32>(_e462, _e463, _e465);
                         }
-                        let _e488 = phi_830_;
-                        let _e491 = params.member.member_8;
-                        phi_836_ = (_e60.y & 63u);
-                        phi_839_ = (_e60.x & 63u);
-                        phi_841_ = 32u;
-                        phi_843_ = 0u;
+                        let _e480 = phi_820_;
+                        let _e483 = params.member.member_8;
+                        phi_826_ = (_e60.y & 63u);
+                        phi_829_ = (_e60.x & 63u);
+                        phi_831_ = 32u;
+                        phi_833_ = 0u;
                         loop {
-                            let _e495 = phi_836_;
-                            let _e497 = phi_839_;
-                            let _e499 = phi_841_;
-                            let _e501 = phi_843_;
-                            local = _e501;
-                            let _e502 = (_e499 > 0u);
-                            if _e502 {
-                                let _e505 = select(0u, 1u, ((_e497 & _e499) != 0u));
-                                let _e508 = select(0u, 1u, ((_e495 & _e499) != 0u));
-                                if (_e508 == 0u) {
-                                    if (_e505 == 1u) {
-                                        phi_872_ = (63u - _e495);
-                                        phi_873_ = (63u - _e497);
+                            let _e487 = phi_826_;
+                            let _e489 = phi_829_;
+                            let _e491 = phi_831_;
+                            let _e493 = phi_833_;
+                            local = _e493;
+                            let _e494 = (_e491 > 0u);
+                            if _e494 {
+                                let _e497 = select(0u, 1u, ((_e489 & _e491) != 0u));
+                                let _e500 = select(0u, 1u, ((_e487 & _e491) != 0u));
+                                if (_e500 == 0u) {
+                                    if (_e497 == 1u) {
+                                        phi_862_ = (63u - _e487);
+                                        phi_863_ = (63u - _e489);
                                     } else {
-                                        phi_872_ = _e495;
-                                        phi_873_ = _e497;
+                                        phi_862_ = _e487;
+                                        phi_863_ = _e489;
                                     }
-                                    let _e519 = phi_872_;
-                                    let _e521 = phi_873_;
-                                    phi_874_ = _e521;
-                                    phi_875_ = _e519;
+                                    let _e511 = phi_862_;
+                                    let _e513 = phi_863_;
+                                    phi_864_ = _e513;
+                                    phi_865_ = _e511;
                                 } else {
-                                    phi_874_ = _e495;
-                                    phi_875_ = _e497;
+                                    phi_864_ = _e487;
+                                    phi_865_ = _e489;
                                 }
-                                let _e523 = phi_874_;
-                                let _e525 = phi_875_;
-                                phi_837_ = _e523;
-                                phi_840_ = _e525;
-                                phi_842_ = (_e499 / 2u);
-                                phi_844_ = (_e501 + ((_e499 * _e499) * ((3u * _e505) ^ _e508)));
+                                let _e515 = phi_864_;
+                                let _e517 = phi_865_;
+                                phi_827_ = _e515;
+                                phi_830_ = _e517;
+                                phi_832_ = (_e491 / 2u);
+                                phi_834_ = (_e493 + ((_e491 * _e491) * ((3u * _e497) ^ _e500)));
                             } else {
-                                phi_837_ = u32();
-                                phi_840_ = u32();
-                                phi_842_ = u32();
-                                phi_844_ = u32();
+                                phi_827_ = u32();
+                                phi_830_ = u32();
+                                phi_832_ = u32();
+                                phi_834_ = u32();
                             }
-                            let _e528 = phi_837_;
-                            let _e530 = phi_840_;
-                            let _e532 = phi_842_;
-                            let _e534 = phi_844_;
+                            let _e520 = phi_827_;
+                            let _e522 = phi_830_;
+                            let _e524 = phi_832_;
+                            let _e526 = phi_834_;
                             continue;
                             continuing {
-                                phi_836_ = _e528;
-                                phi_839_ = _e530;
-                                phi_841_ = _e532;
-                                phi_843_ = _e534;
-                                break if !(_e502);
+                                phi_826_ = _e520;
+                                phi_829_ = _e522;
+                                phi_831_ = _e524;
+                                phi_833_ = _e526;
+                                break if !(_e494);
                             }
                         }
-                        let _e539 = local;
-                        let _e541 = f32((_e539 + (288u * (_e491 % 64u))));
-                        let _e543 = (0.5f + (_e541 * 0.7548777f));
-                        let _e547 = (0.5f + (_e541 * 0.5698403f));
-                        let _e550 = (6.2831855f * (_e543 - floor(_e543)));
-                        phi_906_ = type_29(_e384, type_28(1u, type_27(vec2<u32>(_e60.x, _e60.y), vec3<f32>(_e402, _e411, _e104), _e488, sin(_e550), cos(_e550), (_e547 - floor(_e547)))));
+                        let _e531 = local;
+                        let _e533 = f32((_e531 + (288u * (_e483 % 64u))));
+                        let _e535 = (0.5f + (_e533 * 0.7548777f));
+                        let _e539 = (0.5f + (_e533 * 0.5698403f));
+                        let _e542 = (6.2831855f * (_e535 - floor(_e535)));
+                        phi_896_ = type_29(_e379, type_28(1u, type_27(vec2<u32>(_e60.x, _e60.y), vec3<f32>(_e394, _e403, _e104), _e480, sin(_e542), cos(_e542), (_e539 - floor(_e539)))));
                     } else {
-                        phi_906_ = type_29(_e384, type_28(0u, type_28().member_1));
+                        phi_896_ = type_29(_e379, type_28(0u, type_28().member_1));
                     }
-                    let _e562 = phi_906_;
-                    if (bitcast<i32>(_e562.member_1.member) != 0i) {
-                        let _e571 = params.member.member_5;
-                        let _e573 = select(_e571, 64u, (64u < _e571));
-                        let _e575 = select(_e573, _e66, (_e66 < _e573));
-                        let _e577 = select(1u, _e575, (1u < _e575));
-                        let _e580 = params.member.member_6;
-                        let _e582 = select(1u, _e580, (1u < _e580));
-                        phi_2360_ = false;
-                        phi_941_ = 0u;
-                        phi_944_ = 0f;
+                    let _e554 = phi_896_;
+                    if (bitcast<i32>(_e554.member_1.member) != 0i) {
+                        let _e563 = params.member.member_5;
+                        let _e565 = select(_e563, 64u, (64u < _e563));
+                        let _e567 = select(_e565, _e66, (_e66 < _e565));
+                        let _e569 = select(1u, _e567, (1u < _e567));
+                        let _e572 = params.member.member_6;
+                        let _e574 = select(1u, _e572, (1u < _e572));
+                        phi_2348_ = false;
+                        phi_931_ = 0u;
+                        phi_934_ = 0f;
                         loop {
-                            let _e584 = phi_2360_;
-                            let _e586 = phi_941_;
-                            let _e588 = phi_944_;
-                            local_5 = _e588;
-                            let _e589 = (_e586 < _e577);
-                            if _e589 {
-                                if (_e586 < _e66) {
+                            let _e576 = phi_2348_;
+                            let _e578 = phi_931_;
+                            let _e580 = phi_934_;
+                            local_5 = _e580;
+                            let _e581 = (_e578 < _e569);
+                            if _e581 {
+                                if (_e578 < _e66) {
                                 } else {
-                                    phi_2437_ = true;
+                                    phi_2425_ = true;
                                     break;
                                 }
-                                let _e594 = kernel.member[_e586][0u];
-                                let _e598 = kernel.member[_e586][1u];
-                                let _e603 = ((_e562.member_1.member_1.member_4 * _e594) - (_e562.member_1.member_1.member_3 * _e598));
-                                let _e606 = ((_e562.member_1.member_1.member_3 * _e594) + (_e562.member_1.member_1.member_4 * _e598));
-                                let _e611 = ((1f - (_e603 * _e603)) - (_e606 * _e606));
-                                if (_e611 != _e611) {
-                                    phi_1995_ = true;
+                                let _e586 = kernel.member[_e578][0u];
+                                let _e590 = kernel.member[_e578][1u];
+                                let _e595 = ((_e554.member_1.member_1.member_4 * _e586) - (_e554.member_1.member_1.member_3 * _e590));
+                                let _e598 = ((_e554.member_1.member_1.member_3 * _e586) + (_e554.member_1.member_1.member_4 * _e590));
+                                let _e603 = ((1f - (_e595 * _e595)) - (_e598 * _e598));
+                                if (_e603 != _e603) {
+                                    phi_1983_ = true;
                                 } else {
-                                    phi_1995_ = (0f >= _e611);
+                                    phi_1983_ = (0f >= _e603);
                                 }
-                                let _e615 = phi_1995_;
-                                let _e617 = sqrt(select(_e611, 0f, _e615));
-                                let _e618 = -(_e617);
-                                let _e622 = (-1f * _e562.member_1.member_1.member_2.z);
-                                let _e623 = (-1f * _e562.member_1.member_1.member_2.x);
-                                let _e625 = (1f / (_e622 + 1f));
-                                let _e626 = (_e625 * _e562.member_1.member_1.member_2.y);
-                                let _e630 = (_e626 * _e623);
-                                let _e650 = (_e622 > 0.9997f);
-                                let _e651 = (_e622 < -0.9997f);
-                                let _e661 = params.member.member_1;
-                                let _e665 = params.member.member_3;
-                                let _e668 = params.member.member_4;
-                                phi_1090_ = 1u;
-                                phi_1093_ = _e661;
-                                phi_1095_ = false;
-                                phi_1097_ = true;
-                                phi_1099_ = 0f;
-                                phi_1101_ = 0f;
+                                let _e607 = phi_1983_;
+                                let _e609 = sqrt(select(_e603, 0f, _e607));
+                                let _e610 = -(_e609);
+                                let _e614 = (-1f * _e554.member_1.member_1.member_2.z);
+                                let _e615 = (-1f * _e554.member_1.member_1.member_2.x);
+                                let _e617 = (1f / (_e614 + 1f));
+                                let _e618 = (_e617 * _e554.member_1.member_1.member_2.y);
+                                let _e622 = (_e618 * _e615);
+                                let _e642 = (_e614 > 0.9997f);
+                                let _e643 = (_e614 < -0.9997f);
+                                let _e653 = params.member.member_1;
+                                let _e657 = params.member.member_3;
+                                let _e660 = params.member.member_4;
+                                phi_1080_ = 1u;
+                                phi_1083_ = _e653;
+                                phi_1085_ = false;
+                                phi_1087_ = true;
+                                phi_1089_ = 0f;
+                                phi_1091_ = 0f;
                                 loop {
-                                    let _e674 = phi_1090_;
-                                    let _e676 = phi_1093_;
-                                    let _e678 = phi_1095_;
-                                    let _e680 = phi_1097_;
-                                    let _e682 = phi_1099_;
-                                    let _e684 = phi_1101_;
-                                    local_1 = _e676;
-                                    local_2 = _e678;
-                                    local_3 = _e676;
-                                    local_4 = _e678;
-                                    let _e685 = (_e674 <= _e582);
-                                    if _e685 {
-                                        let _e691 = (((-(_e562.member_1.member_1.member_5) + f32(_e674)) * _e661) / f32(_e582));
-                                        let _e696 = (_e562.member_1.member_1.member_1.x + (select(select(((((_e622 + (_e626 * _e562.member_1.member_1.member_2.y)) * _e603) + (_e630 * _e606)) + (_e623 * _e618)), _e603, _e651), _e603, _e650) * _e691));
-                                        let _e698 = (_e562.member_1.member_1.member_1.y + (select(select((((_e630 * _e603) + ((_e622 + ((_e625 * _e623) * _e623)) * _e606)) + (-(_e562.member_1.member_1.member_2.y) * _e618)), -(_e606), _e651), _e606, _e650) * _e691));
-                                        let _e700 = (_e562.member_1.member_1.member_1.z + (select(select((((_e562.member_1.member_1.member_2.x * _e603) + (_e562.member_1.member_1.member_2.y * _e606)) + (_e622 * _e618)), _e617, _e651), _e618, _e650) * _e691));
-                                        let _e706 = params.member.member.member_1[0u];
-                                        let _e709 = (((_e696 * 0.5f) / (_e700 * _e706)) + 0.5f);
-                                        let _e715 = params.member.member.member_1[1u];
-                                        let _e718 = (0.5f - ((_e698 * 0.5f) / (_e700 * _e715)));
-                                        let _e728 = select(false, select(false, select(false, select(false, (_e718 <= 1f), (_e718 >= 0f)), select(false, (_e709 <= 1f), (_e709 >= 0f))), (_e700 > 0f)), _e680);
-                                        if _e728 {
-                                            let _e729 = params.member.member;
-                                            let _e736 = select(select(u32(_e729.member.x), 0u, (_e729.member.x < 0f)), 4294967295u, (_e729.member.x > 4294967000f));
-                                            let _e742 = select(select(u32(_e729.member.y), 0u, (_e729.member.y < 0f)), 4294967295u, (_e729.member.y > 4294967000f));
-                                            let _e744 = floor((_e709 * _e729.member.x));
-                                            if (_e744 > 0f) {
-                                                let _e750 = select(select(u32(_e744), 0u, (_e744 < 0f)), 4294967295u, (_e744 > 4294967000f));
-                                                let _e751 = (_e736 - 1u);
-                                                phi_2047_ = select(_e750, _e751, (_e751 < _e750));
+                                    let _e666 = phi_1080_;
+                                    let _e668 = phi_1083_;
+                                    let _e670 = phi_1085_;
+                                    let _e672 = phi_1087_;
+                                    let _e674 = phi_1089_;
+                                    let _e676 = phi_1091_;
+                                    local_1 = _e668;
+                                    local_2 = _e670;
+                                    local_3 = _e668;
+                                    local_4 = _e670;
+                                    let _e677 = (_e666 <= _e574);
+                                    if _e677 {
+                                        let _e683 = (((-(_e554.member_1.member_1.member_5) + f32(_e666)) * _e653) / f32(_e574));
+                                        let _e688 = (_e554.member_1.member_1.member_1.x + (select(select(((((_e614 + (_e618 * _e554.member_1.member_1.member_2.y)) * _e595) + (_e622 * _e598)) + (_e615 * _e610)), _e595, _e643), _e595, _e642) * _e683));
+                                        let _e690 = (_e554.member_1.member_1.member_1.y + (select(select((((_e622 * _e595) + ((_e614 + ((_e617 * _e615) * _e615)) * _e598)) + (-(_e554.member_1.member_1.member_2.y) * _e610)), -(_e598), _e643), _e598, _e642) * _e683));
+                                        let _e692 = (_e554.member_1.member_1.member_1.z + (select(select((((_e554.member_1.member_1.member_2.x * _e595) + (_e554.member_1.member_1.member_2.y * _e598)) + (_e614 * _e610)), _e609, _e643), _e610, _e642) * _e683));
+                                        let _e698 = params.member.member.member_1[0u];
+                                        let _e701 = (((_e688 * 0.5f) / (_e692 * _e698)) + 0.5f);
+                                        let _e707 = params.member.member.member_1[1u];
+                                        let _e710 = (0.5f - ((_e690 * 0.5f) / (_e692 * _e707)));
+                                        let _e720 = select(false, select(false, select(false, select(false, (_e710 <= 1f), (_e710 >= 0f)), select(false, (_e701 <= 1f), (_e701 >= 0f))), (_e692 > 0f)), _e672);
+                                        if _e720 {
+                                            let _e721 = params.member.member;
+                                            let _e728 = select(select(u32(_e721.member.x), 0u, (_e721.member.x < 0f)), 4294967295u, (_e721.member.x > 4294967000f));
+                                            let _e734 = select(select(u32(_e721.member.y), 0u, (_e721.member.y < 0f)), 4294967295u, (_e721.member.y > 4294967000f));
+                                            let _e736 = floor((_e701 * _e721.member.x));
+                                            if (_e736 > 0f) {
+                                                let _e742 = select(select(u32(_e736), 0u, (_e736 < 0f)), 4294967295u, (_e736 > 4294967000f));
+                                                let _e743 = (_e728 - 1u);
+                                                phi_2035_ = select(_e742, _e743, (_e743 < _e742));
                                             } else {
-                                                phi_2047_ = 0u;
+                                                phi_2035_ = 0u;
                                             }
-                                            let _e755 = phi_2047_;
-                                            let _e757 = floor((_e718 * _e729.member.y));
-                                            if (_e757 > 0f) {
-                                                let _e763 = select(select(u32(_e757), 0u, (_e757 < 0f)), 4294967295u, (_e757 > 4294967000f));
-                                                let _e764 = (_e742 - 1u);
-                                                phi_2074_ = select(_e763, _e764, (_e764 < _e763));
+                                            let _e747 = phi_2035_;
+                                            let _e749 = floor((_e710 * _e721.member.y));
+                                            if (_e749 > 0f) {
+                                                let _e755 = select(select(u32(_e749), 0u, (_e749 < 0f)), 4294967295u, (_e749 > 4294967000f));
+                                                let _e756 = (_e734 - 1u);
+                                                phi_2062_ = select(_e755, _e756, (_e756 < _e755));
                                             } else {
-                                                phi_2074_ = 0u;
+                                                phi_2062_ = 0u;
                                             }
-                                            let _e768 = phi_2074_;
-                                            let _e770 = ((_e768 * _e736) + _e755);
-                                            if (_e770 < _e62) {
+                                            let _e760 = phi_2062_;
+                                            let _e762 = ((_e760 * _e728) + _e747);
+                                            if (_e762 < _e62) {
                                             } else {
-                                                phi_2314_ = true;
-                                                phi_1782_ = bool();
-                                                phi_1781_ = bool();
-                                                phi_1780_ = bool();
-                                                phi_1779_ = bool();
-                                                phi_1777_ = f32();
+                                                phi_2302_ = true;
+                                                phi_1770_ = bool();
+                                                phi_1769_ = bool();
+                                                phi_1768_ = bool();
+                                                phi_1767_ = bool();
+                                                phi_1765_ = f32();
                                                 break;
                                             }
-                                            let _e774 = depth.member[_e770];
-                                            let _e778 = select(_e108, _e774, select(false, (_e774 < _e108), (_e774 > 0f)));
-                                            let _e781 = (((_e709 * 2f) - 1f) * _e706);
-                                            let _e785 = (((_e718 * -2f) + 1f) * _e715);
-                                            let _e787 = (_e696 - (_e781 * _e778));
-                                            let _e788 = (_e698 - (_e785 * _e778));
-                                            let _e789 = (_e700 - _e778);
-                                            let _e795 = sqrt((((_e787 * _e787) + (_e788 * _e788)) + (_e789 * _e789)));
-                                            let _e800 = (select(0f, select(1f, _e709, (_e709 < 1f)), (_e709 > 0f)) * _e729.member.x);
-                                            let _e805 = (select(0f, select(1f, _e718, (_e718 < 1f)), (_e718 > 0f)) * _e729.member.y);
-                                            let _e810 = select(select(u32(_e800), 0u, (_e800 < 0f)), 4294967295u, (_e800 > 4294967000f));
-                                            let _e811 = (_e736 - 1u);
+                                            let _e766 = depth.member[_e762];
+                                            let _e770 = select(_e108, _e766, select(false, (_e766 < _e108), (_e766 > 0f)));
+                                            let _e773 = (((_e701 * 2f) - 1f) * _e698);
+                                            let _e777 = (((_e710 * -2f) + 1f) * _e707);
+                                            let _e779 = (_e688 - (_e773 * _e770));
+                                            let _e780 = (_e690 - (_e777 * _e770));
+                                            let _e781 = (_e692 - _e770);
+                                            let _e787 = sqrt((((_e779 * _e779) + (_e780 * _e780)) + (_e781 * _e781)));
+                                            let _e792 = (select(0f, select(1f, _e701, (_e701 < 1f)), (_e701 > 0f)) * _e721.member.x);
+                                            let _e797 = (select(0f, select(1f, _e710, (_e710 < 1f)), (_e710 > 0f)) * _e721.member.y);
+                                            let _e802 = select(select(u32(_e792), 0u, (_e792 < 0f)), 4294967295u, (_e792 > 4294967000f));
+                                            let _e803 = (_e728 - 1u);
+                                            let _e805 = select(_e802, _e803, (_e803 < _e802));
+                                            let _e810 = select(select(u32(_e797), 0u, (_e797 < 0f)), 4294967295u, (_e797 > 4294967000f));
+                                            let _e811 = (_e734 - 1u);
                                             let _e813 = select(_e810, _e811, (_e811 < _e810));
-                                            let _e818 = select(select(u32(_e805), 0u, (_e805 < 0f)), 4294967295u, (_e805 > 4294967000f));
-                                            let _e819 = (_e742 - 1u);
-                                            let _e821 = select(_e818, _e819, (_e819 < _e818));
-                                            let _e839 = ((_e821 * _e84) + _e813);
-                                            if (_e839 < _e64) {
+                                            let _e831 = ((_e813 * _e84) + _e805);
+                                            if (_e831 < _e64) {
                                             } else {
-                                                phi_2314_ = true;
-                                                phi_1782_ = bool();
-                                                phi_1781_ = bool();
-                                                phi_1780_ = bool();
-                                                phi_1779_ = bool();
-                                                phi_1777_ = f32();
+                                                phi_2302_ = true;
+                                                phi_1770_ = bool();
+                                                phi_1769_ = bool();
+                                                phi_1768_ = bool();
+                                                phi_1767_ = bool();
+                                                phi_1765_ = f32();
                                                 break;
                                             }
-                                            let _e843 = normals.member[_e839];
-                                            let _e851 = (f32((bitcast<i32>(((_e843 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e851 != _e851) {
-                                                phi_2246_ = true;
+                                            let _e835 = normals.member[_e831];
+                                            let _e843 = (f32((bitcast<i32>(((_e835 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                            if (_e843 != _e843) {
+                                                phi_2234_ = true;
                                             } else {
-                                                phi_2246_ = (-1f >= _e851);
+                                                phi_2234_ = (-1f >= _e843);
                                             }
-                                            let _e855 = phi_2246_;
-                                            let _e856 = select(_e851, -1f, _e855);
-                                            let _e866 = (f32((bitcast<i32>((((_e843 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e866 != _e866) {
-                                                phi_2261_ = true;
+                                            let _e847 = phi_2234_;
+                                            let _e848 = select(_e843, -1f, _e847);
+                                            let _e858 = (f32((bitcast<i32>((((_e835 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                            if (_e858 != _e858) {
+                                                phi_2249_ = true;
                                             } else {
-                                                phi_2261_ = (-1f >= _e866);
+                                                phi_2249_ = (-1f >= _e858);
                                             }
-                                            let _e870 = phi_2261_;
-                                            let _e871 = select(_e866, -1f, _e870);
-                                            let _e874 = (1f - abs(_e856));
-                                            let _e875 = abs(_e871);
-                                            let _e876 = (_e874 - _e875);
-                                            if (_e876 < 0f) {
-                                                phi_2222_ = vec2<f32>(((1f - _e875) * select(1f, -1f, (_e856 < 0f))), (_e874 * select(1f, -1f, (_e871 < 0f))));
+                                            let _e862 = phi_2249_;
+                                            let _e863 = select(_e858, -1f, _e862);
+                                            let _e866 = (1f - abs(_e848));
+                                            let _e867 = abs(_e863);
+                                            let _e868 = (_e866 - _e867);
+                                            if (_e868 < 0f) {
+                                                phi_2210_ = vec2<f32>(((1f - _e867) * select(1f, -1f, (_e848 < 0f))), (_e866 * select(1f, -1f, (_e863 < 0f))));
                                             } else {
-                                                phi_2222_ = vec2<f32>(_e856, _e871);
+                                                phi_2210_ = vec2<f32>(_e848, _e863);
                                             }
-                                            let _e887 = phi_2222_;
-                                            let _e896 = (1f / sqrt((((_e887.x * _e887.x) + (_e887.y * _e887.y)) + (_e876 * _e876))));
-                                            let _e897 = (_e887.x * _e896);
-                                            let _e898 = (_e887.y * _e896);
-                                            let _e900 = -((_e876 * _e896));
-                                            let _e904 = (((_e897 * _e781) + (_e898 * _e785)) + _e900);
-                                            let _e913 = select(((((_e897 * ((((((f32(_e813) + 0.5f) * (1f / _e729.member.x)) * 2f) - 1f) * _e706) * _e778)) + (_e898 * ((((((f32(_e821) + 0.5f) * (1f / _e729.member.y)) * -2f) + 1f) * _e715) * _e778))) + (_e900 * _e778)) / _e904), _e778, (abs(_e904) < 0.001f));
-                                            if (_e813 == _e562.member_1.member_1.member.x) {
-                                                phi_1333_ = (_e821 == _e562.member_1.member_1.member.y);
+                                            let _e879 = phi_2210_;
+                                            let _e888 = (1f / sqrt((((_e879.x * _e879.x) + (_e879.y * _e879.y)) + (_e868 * _e868))));
+                                            let _e889 = (_e879.x * _e888);
+                                            let _e890 = (_e879.y * _e888);
+                                            let _e892 = -((_e868 * _e888));
+                                            let _e896 = (((_e889 * _e773) + (_e890 * _e777)) + _e892);
+                                            let _e905 = select(((((_e889 * ((((((f32(_e805) + 0.5f) * (1f / _e721.member.x)) * 2f) - 1f) * _e698) * _e770)) + (_e890 * ((((((f32(_e813) + 0.5f) * (1f / _e721.member.y)) * -2f) + 1f) * _e707) * _e770))) + (_e892 * _e770)) / _e896), _e770, (abs(_e896) < 0.001f));
+                                            if (_e805 == _e554.member_1.member_1.member.x) {
+                                                phi_1321_ = (_e813 == _e554.member_1.member_1.member.y);
                                             } else {
-                                                phi_1333_ = false;
+                                                phi_1321_ = false;
                                             }
-                                            let _e917 = phi_1333_;
-                                            let _e924 = select(select(((_e700 - _e913) > _e668), true, (_e700 < (_e913 * (1f + _e665)))), true, _e917);
-                                            let _e926 = select(false, !(_e924), _e728);
-                                            let _e927 = (_e682 + _e795);
-                                            let _e936 = select(false, _e924, _e728);
-                                            if _e936 {
-                                                phi_1378_ = (_e674 + 1u);
+                                            let _e909 = phi_1321_;
+                                            let _e916 = select(select(((_e692 - _e905) > _e660), true, (_e692 < (_e905 * (1f + _e657)))), true, _e909);
+                                            let _e918 = select(false, !(_e916), _e720);
+                                            let _e919 = (_e674 + _e787);
+                                            let _e928 = select(false, _e916, _e720);
+                                            if _e928 {
+                                                phi_1366_ = (_e666 + 1u);
                                             } else {
-                                                phi_1378_ = u32();
+                                                phi_1366_ = u32();
                                             }
-                                            let _e939 = phi_1378_;
-                                            phi_1380_ = _e939;
-                                            phi_1381_ = select(_e676, select((_e684 + ((_e682 * (_e691 - _e684)) / _e927)), _e684, (_e927 < 0.000001f)), _e926);
-                                            phi_1382_ = select(_e926, true, _e678);
-                                            phi_1383_ = _e936;
-                                            phi_1384_ = _e795;
-                                            phi_1387_ = _e936;
-                                            phi_1388_ = select(true, false, _e936);
+                                            let _e931 = phi_1366_;
+                                            phi_1368_ = _e931;
+                                            phi_1369_ = select(_e668, select((_e676 + ((_e674 * (_e683 - _e676)) / _e919)), _e676, (_e919 < 0.000001f)), _e918);
+                                            phi_1370_ = select(_e918, true, _e670);
+                                            phi_1371_ = _e928;
+                                            phi_1372_ = _e787;
+                                            phi_1375_ = _e928;
+                                            phi_1376_ = select(true, false, _e928);
                                         } else {
-                                            phi_1380_ = u32();
-                                            phi_1381_ = f32();
-                                            phi_1382_ = bool();
-                                            phi_1383_ = bool();
-                                            phi_1384_ = f32();
-                                            phi_1387_ = false;
-                                            phi_1388_ = false;
+                                            phi_1368_ = u32();
+                                            phi_1369_ = f32();
+                                            phi_1370_ = bool();
+                                            phi_1371_ = bool();
+                                            phi_1372_ = f32();
+                                            phi_1375_ = false;
+                                            phi_1376_ = false;
                                         }
-                                        let _e942 = phi_1380_;
-                                        let _e944 = phi_1381_;
-                                        let _e946 = phi_1382_;
-                                        let _e948 = phi_1383_;
-                                        let _e950 = phi_1384_;
-                                        let _e952 = phi_1387_;
-                                        let _e954 = phi_1388_;
-                                        phi_1091_ = _e942;
-                                        phi_1094_ = _e944;
-                                        phi_1096_ = _e946;
-                                        phi_1098_ = _e948;
-                                        phi_1100_ = _e950;
-                                        phi_1102_ = _e691;
-                                        phi_1392_ = _e952;
-                                        phi_1394_ = _e954;
-                                        phi_1395_ = select(true, false, _e728);
+                                        let _e934 = phi_1368_;
+                                        let _e936 = phi_1369_;
+                                        let _e938 = phi_1370_;
+                                        let _e940 = phi_1371_;
+                                        let _e942 = phi_1372_;
+                                        let _e944 = phi_1375_;
+                                        let _e946 = phi_1376_;
+                                        phi_1081_ = _e934;
+                                        phi_1084_ = _e936;
+                                        phi_1086_ = _e938;
+                                        phi_1088_ = _e940;
+                                        phi_1090_ = _e942;
+                                        phi_1092_ = _e683;
+                                        phi_1380_ = _e944;
+                                        phi_1382_ = _e946;
+                                        phi_1383_ = select(true, false, _e720);
                                     } else {
-                                        phi_1091_ = u32();
-                                        phi_1094_ = f32();
-                                        phi_1096_ = bool();
-                                        phi_1098_ = bool();
-                                        phi_1100_ = f32();
-                                        phi_1102_ = f32();
-                                        phi_1392_ = false;
-                                        phi_1394_ = false;
-                                        phi_1395_ = false;
+                                        phi_1081_ = u32();
+                                        phi_1084_ = f32();
+                                        phi_1086_ = bool();
+                                        phi_1088_ = bool();
+                                        phi_1090_ = f32();
+                                        phi_1092_ = f32();
+                                        phi_1380_ = false;
+                                        phi_1382_ = false;
+                                        phi_1383_ = false;
                                     }
-                                    let _e957 = phi_1091_;
-                                    let _e959 = phi_1094_;
-                                    let _e961 = phi_1096_;
-                                    let _e963 = phi_1098_;
-                                    let _e965 = phi_1100_;
-                                    let _e967 = phi_1102_;
-                                    let _e969 = phi_1392_;
-                                    let _e971 = phi_1394_;
-                                    let _e973 = phi_1395_;
+                                    let _e949 = phi_1081_;
+                                    let _e951 = phi_1084_;
+                                    let _e953 = phi_1086_;
+                                    let _e955 = phi_1088_;
+                                    let _e957 = phi_1090_;
+                                    let _e959 = phi_1092_;
+                                    let _e961 = phi_1380_;
+                                    let _e963 = phi_1382_;
+                                    let _e965 = phi_1383_;
                                     continue;
                                     continuing {
-                                        phi_1090_ = _e957;
-                                        phi_1093_ = _e959;
-                                        phi_1095_ = _e961;
-                                        phi_1097_ = _e963;
-                                        phi_1099_ = _e965;
-                                        phi_1101_ = _e967;
-                                        phi_2314_ = _e584;
-                                        phi_1782_ = _e973;
-                                        phi_1781_ = _e971;
-                                        phi_1780_ = select(true, false, _e685);
-                                        phi_1779_ = _e961;
-                                        phi_1777_ = _e959;
-                                        break if !(_e969);
+                                        phi_1080_ = _e949;
+                                        phi_1083_ = _e951;
+                                        phi_1085_ = _e953;
+                                        phi_1087_ = _e955;
+                                        phi_1089_ = _e957;
+                                        phi_1091_ = _e959;
+                                        phi_2302_ = _e576;
+                                        phi_1770_ = _e965;
+                                        phi_1769_ = _e963;
+                                        phi_1768_ = select(true, false, _e677);
+                                        phi_1767_ = _e953;
+                                        phi_1765_ = _e951;
+                                        break if !(_e961);
                                     }
                                 }
-                                let _e977 = phi_2314_;
-                                let _e979 = phi_1782_;
-                                let _e981 = phi_1781_;
-                                let _e983 = phi_1780_;
-                                let _e985 = phi_1779_;
-                                let _e987 = phi_1777_;
-                                phi_2437_ = _e977;
-                                if _e977 {
+                                let _e969 = phi_2302_;
+                                let _e971 = phi_1770_;
+                                let _e973 = phi_1769_;
+                                let _e975 = phi_1768_;
+                                let _e977 = phi_1767_;
+                                let _e979 = phi_1765_;
+                                phi_2425_ = _e969;
+                                if _e969 {
                                     break;
                                 }
-                                let _e988 = select(_e981, false, _e983);
-                                let _e990 = select(select(_e979, false, _e983), false, _e988);
-                                let _e992 = local_1;
-                                let _e995 = local_2;
-                                let _e997 = select(_e988, true, _e990);
-                                let _e999 = local_3;
-                                let _e1002 = local_4;
-                                let _e1006 = params.member.member_7;
-                                if (_e1006 == 1u) {
-                                    phi_1435_ = 0f;
+                                let _e980 = select(_e973, false, _e975);
+                                let _e982 = select(select(_e971, false, _e975), false, _e980);
+                                let _e984 = local_1;
+                                let _e987 = local_2;
+                                let _e989 = select(_e980, true, _e982);
+                                let _e991 = local_3;
+                                let _e994 = local_4;
+                                let _e998 = params.member.member_7;
+                                if (_e998 == 1u) {
+                                    phi_1423_ = 0f;
                                 } else {
-                                    let _e1008 = (select(_e999, select(_e987, _e992, _e990), _e997) / _e661);
-                                    phi_1435_ = select(0f, select(1f, _e1008, (_e1008 < 1f)), (_e1008 > 0f));
+                                    let _e1000 = (select(_e991, select(_e979, _e984, _e982), _e989) / _e653);
+                                    phi_1423_ = select(0f, select(1f, _e1000, (_e1000 < 1f)), (_e1000 > 0f));
                                 }
-                                let _e1014 = phi_1435_;
-                                phi_2438_ = _e977;
-                                phi_942_ = (_e586 + 1u);
-                                phi_945_ = (_e588 + select(1f, _e1014, select(_e1002, select(_e985, _e995, _e990), _e997)));
+                                let _e1006 = phi_1423_;
+                                phi_2426_ = _e969;
+                                phi_932_ = (_e578 + 1u);
+                                phi_935_ = (_e580 + select(1f, _e1006, select(_e994, select(_e977, _e987, _e982), _e989)));
                             } else {
-                                phi_2438_ = _e584;
-                                phi_942_ = u32();
-                                phi_945_ = f32();
+                                phi_2426_ = _e576;
+                                phi_932_ = u32();
+                                phi_935_ = f32();
                             }
-                            let _e1019 = phi_2438_;
-                            let _e1021 = phi_942_;
-                            let _e1023 = phi_945_;
+                            let _e1011 = phi_2426_;
+                            let _e1013 = phi_932_;
+                            let _e1015 = phi_935_;
                             continue;
                             continuing {
-                                phi_2360_ = _e1019;
-                                phi_941_ = _e1021;
-                                phi_944_ = _e1023;
-                                phi_2437_ = _e1019;
-                                break if !(_e589);
+                                phi_2348_ = _e1011;
+                                phi_931_ = _e1013;
+                                phi_934_ = _e1015;
+                                phi_2425_ = _e1011;
+                                break if !(_e581);
                             }
                         }
-                        let _e1026 = phi_2437_;
-                        if _e1026 {
+                        let _e1018 = phi_2425_;
+                        if _e1018 {
                             break;
                         }
-                        let _e1029 = local_5;
-                        let _e1033 = params.member.member_2;
-                        let _e1034 = pow((_e1029 / f32(_e577)), _e1033);
-                        let _e1035 = (_e1034 * 0.6666667f);
-                        let _e1041 = ((select(0f, select(1f, _e1035, (_e1035 < 1f)), (_e1035 > 0f)) * 255f) + 0.5f);
-                        phi_1506_ = type_30(_e1034, select(select(u32(_e1041), 0u, (_e1041 < 0f)), 4294967295u, (_e1041 > 4294967000f)), _e562.member);
+                        let _e1021 = local_5;
+                        let _e1025 = params.member.member_2;
+                        let _e1026 = pow((_e1021 / f32(_e569)), _e1025);
+                        let _e1027 = (_e1026 * 0.6666667f);
+                        let _e1033 = ((select(0f, select(1f, _e1027, (_e1027 < 1f)), (_e1027 > 0f)) * 255f) + 0.5f);
+                        phi_1494_ = type_30(_e1026, select(select(u32(_e1033), 0u, (_e1033 < 0f)), 4294967295u, (_e1033 > 4294967000f)), _e554.member);
                     } else {
-                        phi_1506_ = type_30(1f, 170u, _e562.member);
+                        phi_1494_ = type_30(1f, 170u, _e554.member);
                     }
-                    let _e1050 = phi_1506_;
+                    let _e1042 = phi_1494_;
                     if (_e100 < arrayLength((&ao.member))) {
                     } else {
                         break;
                     }
-                    ao.member[_e100] = _e1050.member;
+                    ao.member[_e100] = _e1042.member;
                     if (_e100 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e100] = _e1050.member_1;
+                    terms.member[_e100] = _e1042.member_1;
                     if (_e100 < arrayLength((&edges.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e100] = _e1050.member_2;
+                    edges.member[_e100] = _e1042.member_2;
                 }
             }
             break;

@@ -64,7 +64,6 @@ fn function_() {
     var phi_186_: bool;
     var phi_187_: bool;
     var phi_188_: bool;
-    var phi_220_: bool;
     var phi_441_: bool;
     var phi_443_: bool;
     var phi_444_: bool;
@@ -100,7 +99,6 @@ fn function_() {
     var phi_630_: bool;
     var phi_631_: bool;
     var phi_632_: bool;
-    var phi_668_: bool;
     var phi_676_: bool;
     var phi_690_: f32;
     var phi_691_: f32;
@@ -191,366 +189,354 @@ fn function_() {
                             }
                             let _e119 = depth.member[_e82];
                             let _e125 = frame.member[0u].member.member_2.member_3;
-                            if (_e119 > 0f) {
-                                phi_220_ = (_e119 < _e125);
-                            } else {
-                                phi_220_ = false;
-                            }
-                            let _e129 = phi_220_;
-                            if _e129 {
-                                let _e147 = frame.member[0u].member.member_2.member_1[0u];
-                                let _e148 = ((((((f32(_e39.x) + 0.5f) / _e59) * 2f) - 1f) * _e119) * _e147);
-                                let _e156 = frame.member[0u].member.member_2.member_1[1u];
-                                let _e157 = ((((((f32(_e39.y) + 0.5f) / _e71) * -2f) + 1f) * _e119) * _e156);
-                                let _e158 = -(_e119);
-                                let _e164 = frame.member[0u].member.member_1.member;
-                                let _e176 = frame.member[0u].member.member_1.member_1;
-                                let _e191 = frame.member[0u].member.member_1.member_2;
-                                let _e206 = frame.member[0u].member.member_1.member_3;
-                                let _e208 = (_e206.x + ((_e191.x * _e158) + ((_e176.x * _e157) + (_e164.x * _e148))));
-                                let _e210 = (_e206.y + ((_e191.y * _e158) + ((_e176.y * _e157) + (_e164.y * _e148))));
-                                let _e212 = (_e206.z + ((_e191.z * _e158) + ((_e176.z * _e157) + (_e164.z * _e148))));
-                                let _e218 = frame.member[0u].member_1.member.member;
-                                let _e230 = frame.member[0u].member_1.member.member_1;
-                                let _e245 = frame.member[0u].member_1.member.member_2;
-                                let _e260 = frame.member[0u].member_1.member.member_3;
-                                let _e266 = (_e260.z + ((_e245.z * _e212) + ((_e230.z * _e210) + (_e218.z * _e208))));
-                                let _e267 = -(_e266);
-                                if (_e267 != _e267) {
+                            if select(false, (_e119 < _e125), (_e119 > 0f)) {
+                                let _e146 = frame.member[0u].member.member_2.member_1[0u];
+                                let _e147 = ((((((f32(_e39.x) + 0.5f) / _e59) * 2f) - 1f) * _e119) * _e146);
+                                let _e155 = frame.member[0u].member.member_2.member_1[1u];
+                                let _e156 = ((((((f32(_e39.y) + 0.5f) / _e71) * -2f) + 1f) * _e119) * _e155);
+                                let _e157 = -(_e119);
+                                let _e163 = frame.member[0u].member.member_1.member;
+                                let _e175 = frame.member[0u].member.member_1.member_1;
+                                let _e190 = frame.member[0u].member.member_1.member_2;
+                                let _e205 = frame.member[0u].member.member_1.member_3;
+                                let _e207 = (_e205.x + ((_e190.x * _e157) + ((_e175.x * _e156) + (_e163.x * _e147))));
+                                let _e209 = (_e205.y + ((_e190.y * _e157) + ((_e175.y * _e156) + (_e163.y * _e147))));
+                                let _e211 = (_e205.z + ((_e190.z * _e157) + ((_e175.z * _e156) + (_e163.z * _e147))));
+                                let _e217 = frame.member[0u].member_1.member.member;
+                                let _e229 = frame.member[0u].member_1.member.member_1;
+                                let _e244 = frame.member[0u].member_1.member.member_2;
+                                let _e259 = frame.member[0u].member_1.member.member_3;
+                                let _e265 = (_e259.z + ((_e244.z * _e211) + ((_e229.z * _e209) + (_e217.z * _e207))));
+                                let _e266 = -(_e265);
+                                if (_e266 != _e266) {
                                     phi_483_ = type_22();
                                     phi_484_ = true;
                                     phi_485_ = false;
                                 } else {
-                                    let _e274 = frame.member[0u].member_1.member_2.member_2;
-                                    let _e275 = (_e267 <= _e274);
-                                    if _e275 {
+                                    let _e273 = frame.member[0u].member_1.member_2.member_2;
+                                    let _e274 = (_e266 <= _e273);
+                                    if _e274 {
                                         phi_481_ = type_22();
                                         phi_482_ = false;
                                     } else {
-                                        let _e276 = (-0.5f / _e266);
-                                        let _e284 = frame.member[0u].member_1.member_2.member_1[0u];
-                                        let _e294 = frame.member[0u].member_1.member_2.member_1[1u];
-                                        let _e303 = frame.member[0u].member_1.member_2.member[0u];
-                                        let _e310 = frame.member[0u].member_1.member_2.member[1u];
-                                        let _e311 = (((((_e260.x + ((_e245.x * _e212) + ((_e230.x * _e210) + (_e218.x * _e208)))) * _e276) / _e284) + 0.5f) * _e303);
-                                        let _e312 = ((0.5f - (((_e260.y + ((_e245.y * _e212) + ((_e230.y * _e210) + (_e218.y * _e208)))) * _e276) / _e294)) * _e310);
-                                        if (_e311 >= 0f) {
-                                            if (_e312 >= 0f) {
-                                                if (_e311 < _e303) {
-                                                    let _e316 = (_e312 < _e310);
-                                                    if _e316 {
-                                                        let _e321 = select(select(u32(_e311), 0u, (_e311 < 0f)), 4294967295u, (_e311 > 4294967000f));
-                                                        let _e326 = select(select(u32(_e312), 0u, (_e312 < 0f)), 4294967295u, (_e312 > 4294967000f));
-                                                        let _e342 = frame.member[0u].member_1.member_2.member_4;
-                                                        if (_e321 >= _e342) {
-                                                            if (_e326 >= _e342) {
-                                                                let _e346 = ((_e321 + _e342) < select(select(u32(_e303), 0u, (_e303 < 0f)), 4294967295u, (_e303 > 4294967000f)));
-                                                                if _e346 {
-                                                                    phi_441_ = ((_e326 + _e342) < select(select(u32(_e310), 0u, (_e310 < 0f)), 4294967295u, (_e310 > 4294967000f)));
+                                        let _e275 = (-0.5f / _e265);
+                                        let _e283 = frame.member[0u].member_1.member_2.member_1[0u];
+                                        let _e293 = frame.member[0u].member_1.member_2.member_1[1u];
+                                        let _e302 = frame.member[0u].member_1.member_2.member[0u];
+                                        let _e309 = frame.member[0u].member_1.member_2.member[1u];
+                                        let _e310 = (((((_e259.x + ((_e244.x * _e211) + ((_e229.x * _e209) + (_e217.x * _e207)))) * _e275) / _e283) + 0.5f) * _e302);
+                                        let _e311 = ((0.5f - (((_e259.y + ((_e244.y * _e211) + ((_e229.y * _e209) + (_e217.y * _e207)))) * _e275) / _e293)) * _e309);
+                                        if (_e310 >= 0f) {
+                                            if (_e311 >= 0f) {
+                                                if (_e310 < _e302) {
+                                                    let _e315 = (_e311 < _e309);
+                                                    if _e315 {
+                                                        let _e320 = select(select(u32(_e310), 0u, (_e310 < 0f)), 4294967295u, (_e310 > 4294967000f));
+                                                        let _e325 = select(select(u32(_e311), 0u, (_e311 < 0f)), 4294967295u, (_e311 > 4294967000f));
+                                                        let _e341 = frame.member[0u].member_1.member_2.member_4;
+                                                        if (_e320 >= _e341) {
+                                                            if (_e325 >= _e341) {
+                                                                let _e345 = ((_e320 + _e341) < select(select(u32(_e302), 0u, (_e302 < 0f)), 4294967295u, (_e302 > 4294967000f)));
+                                                                if _e345 {
+                                                                    phi_441_ = ((_e325 + _e341) < select(select(u32(_e309), 0u, (_e309 < 0f)), 4294967295u, (_e309 > 4294967000f)));
                                                                 } else {
                                                                     phi_441_ = bool();
                                                                 }
-                                                                let _e350 = phi_441_;
-                                                                phi_443_ = _e350;
-                                                                phi_444_ = select(true, false, _e346);
+                                                                let _e349 = phi_441_;
+                                                                phi_443_ = _e349;
+                                                                phi_444_ = select(true, false, _e345);
                                                             } else {
                                                                 phi_443_ = bool();
                                                                 phi_444_ = true;
                                                             }
-                                                            let _e353 = phi_443_;
-                                                            let _e355 = phi_444_;
-                                                            phi_445_ = _e353;
-                                                            phi_446_ = _e355;
+                                                            let _e352 = phi_443_;
+                                                            let _e354 = phi_444_;
+                                                            phi_445_ = _e352;
+                                                            phi_446_ = _e354;
                                                         } else {
                                                             phi_445_ = bool();
                                                             phi_446_ = true;
                                                         }
-                                                        let _e357 = phi_445_;
-                                                        let _e359 = phi_446_;
-                                                        let _e360 = select(_e357, false, _e359);
-                                                        if _e360 {
-                                                            phi_460_ = type_22(vec2<u32>(_e321, _e326), vec2<f32>(_e311, _e312), _e267, true);
+                                                        let _e356 = phi_445_;
+                                                        let _e358 = phi_446_;
+                                                        let _e359 = select(_e356, false, _e358);
+                                                        if _e359 {
+                                                            phi_460_ = type_22(vec2<u32>(_e320, _e325), vec2<f32>(_e310, _e311), _e266, true);
                                                         } else {
                                                             phi_460_ = type_22();
                                                         }
-                                                        let _e365 = phi_460_;
-                                                        phi_462_ = _e365;
-                                                        phi_464_ = select(true, false, _e360);
+                                                        let _e364 = phi_460_;
+                                                        phi_462_ = _e364;
+                                                        phi_464_ = select(true, false, _e359);
                                                     } else {
                                                         phi_462_ = type_22();
                                                         phi_464_ = false;
                                                     }
-                                                    let _e368 = phi_462_;
-                                                    let _e370 = phi_464_;
-                                                    phi_465_ = _e368;
-                                                    phi_466_ = select(true, false, _e316);
-                                                    phi_467_ = _e370;
+                                                    let _e367 = phi_462_;
+                                                    let _e369 = phi_464_;
+                                                    phi_465_ = _e367;
+                                                    phi_466_ = select(true, false, _e315);
+                                                    phi_467_ = _e369;
                                                 } else {
                                                     phi_465_ = type_22();
                                                     phi_466_ = true;
                                                     phi_467_ = false;
                                                 }
-                                                let _e373 = phi_465_;
-                                                let _e375 = phi_466_;
-                                                let _e377 = phi_467_;
-                                                phi_468_ = _e373;
-                                                phi_469_ = _e375;
-                                                phi_470_ = _e377;
+                                                let _e372 = phi_465_;
+                                                let _e374 = phi_466_;
+                                                let _e376 = phi_467_;
+                                                phi_468_ = _e372;
+                                                phi_469_ = _e374;
+                                                phi_470_ = _e376;
                                             } else {
                                                 phi_468_ = type_22();
                                                 phi_469_ = true;
                                                 phi_470_ = false;
                                             }
-                                            let _e379 = phi_468_;
-                                            let _e381 = phi_469_;
-                                            let _e383 = phi_470_;
-                                            phi_471_ = _e379;
-                                            phi_472_ = _e381;
-                                            phi_473_ = _e383;
+                                            let _e378 = phi_468_;
+                                            let _e380 = phi_469_;
+                                            let _e382 = phi_470_;
+                                            phi_471_ = _e378;
+                                            phi_472_ = _e380;
+                                            phi_473_ = _e382;
                                         } else {
                                             phi_471_ = type_22();
                                             phi_472_ = true;
                                             phi_473_ = false;
                                         }
-                                        let _e385 = phi_471_;
-                                        let _e387 = phi_472_;
-                                        let _e389 = phi_473_;
-                                        phi_481_ = _e385;
-                                        phi_482_ = select(_e389, true, _e387);
+                                        let _e384 = phi_471_;
+                                        let _e386 = phi_472_;
+                                        let _e388 = phi_473_;
+                                        phi_481_ = _e384;
+                                        phi_482_ = select(_e388, true, _e386);
                                     }
-                                    let _e392 = phi_481_;
-                                    let _e394 = phi_482_;
-                                    phi_483_ = _e392;
-                                    phi_484_ = _e275;
-                                    phi_485_ = _e394;
+                                    let _e391 = phi_481_;
+                                    let _e393 = phi_482_;
+                                    phi_483_ = _e391;
+                                    phi_484_ = _e274;
+                                    phi_485_ = _e393;
                                 }
-                                let _e396 = phi_483_;
-                                let _e398 = phi_484_;
-                                let _e400 = phi_485_;
-                                phi_493_ = _e396;
-                                phi_494_ = select(_e400, true, _e398);
+                                let _e395 = phi_483_;
+                                let _e397 = phi_484_;
+                                let _e399 = phi_485_;
+                                phi_493_ = _e395;
+                                phi_494_ = select(_e399, true, _e397);
                             } else {
                                 phi_493_ = type_22();
                                 phi_494_ = true;
                             }
-                            let _e403 = phi_493_;
-                            let _e405 = phi_494_;
-                            if _e405 {
+                            let _e402 = phi_493_;
+                            let _e404 = phi_494_;
+                            if _e404 {
                                 phi_498_ = type_22(vec2<u32>(0u, 0u), vec2<f32>(0f, 0f), 0f, false);
                             } else {
-                                phi_498_ = _e403;
+                                phi_498_ = _e402;
                             }
-                            let _e407 = phi_498_;
-                            if _e407.member_3 {
-                                let _e412 = frame.member[0u].member_3;
-                                let _e417 = (_e407.member_1.x - 0.5f);
-                                let _e418 = (_e407.member_1.y - 0.5f);
+                            let _e406 = phi_498_;
+                            if _e406.member_3 {
+                                let _e411 = frame.member[0u].member_3;
+                                let _e416 = (_e406.member_1.x - 0.5f);
+                                let _e417 = (_e406.member_1.y - 0.5f);
+                                let _e418 = floor(_e416);
                                 let _e419 = floor(_e417);
-                                let _e420 = floor(_e418);
+                                let _e428 = (floor((((_e416 - _e418) * 256f) + 0.5f)) * 0.00390625f);
                                 let _e429 = (floor((((_e417 - _e419) * 256f) + 0.5f)) * 0.00390625f);
-                                let _e430 = (floor((((_e418 - _e420) * 256f) + 0.5f)) * 0.00390625f);
                                 phi_524_ = 0i;
                                 phi_527_ = 0f;
                                 phi_529_ = 0f;
                                 loop {
-                                    let _e432 = phi_524_;
-                                    let _e434 = phi_527_;
-                                    let _e436 = phi_529_;
-                                    local = _e434;
-                                    local_1 = _e436;
-                                    local_2 = _e434;
-                                    local_3 = _e434;
-                                    let _e437 = (_e432 < 4i);
-                                    if _e437 {
-                                        let _e438 = (_e432 & 1i);
-                                        let _e440 = (_e432 >> bitcast<u32>(1i));
-                                        let _e448 = (select(0i, select(select(i32(_e419), i32(-2147483648), (_e419 < -2147483600f)), 2147483647i, (_e419 > 2147483500f)), (_e419 == _e419)) + _e438);
-                                        let _e456 = (select(0i, select(select(i32(_e420), i32(-2147483648), (_e420 < -2147483600f)), 2147483647i, (_e420 > 2147483500f)), (_e420 == _e420)) + _e440);
-                                        if (_e438 == 0i) {
-                                            phi_564_ = (1f - _e429);
+                                    let _e431 = phi_524_;
+                                    let _e433 = phi_527_;
+                                    let _e435 = phi_529_;
+                                    local = _e433;
+                                    local_1 = _e435;
+                                    local_2 = _e433;
+                                    local_3 = _e433;
+                                    let _e436 = (_e431 < 4i);
+                                    if _e436 {
+                                        let _e437 = (_e431 & 1i);
+                                        let _e439 = (_e431 >> bitcast<u32>(1i));
+                                        let _e447 = (select(0i, select(select(i32(_e418), i32(-2147483648), (_e418 < -2147483600f)), 2147483647i, (_e418 > 2147483500f)), (_e418 == _e418)) + _e437);
+                                        let _e455 = (select(0i, select(select(i32(_e419), i32(-2147483648), (_e419 < -2147483600f)), 2147483647i, (_e419 > 2147483500f)), (_e419 == _e419)) + _e439);
+                                        if (_e437 == 0i) {
+                                            phi_564_ = (1f - _e428);
                                         } else {
-                                            phi_564_ = _e429;
+                                            phi_564_ = _e428;
                                         }
-                                        let _e460 = phi_564_;
-                                        if (_e440 == 0i) {
-                                            phi_570_ = (1f - _e430);
+                                        let _e459 = phi_564_;
+                                        if (_e439 == 0i) {
+                                            phi_570_ = (1f - _e429);
                                         } else {
-                                            phi_570_ = _e430;
+                                            phi_570_ = _e429;
                                         }
-                                        let _e464 = phi_570_;
-                                        let _e465 = (_e460 * _e464);
-                                        if (_e465 > 0f) {
-                                            if (_e448 >= 0i) {
-                                                if (_e456 >= 0i) {
-                                                    let _e469 = bitcast<u32>(_e448);
-                                                    let _e470 = bitcast<u32>(_e456);
-                                                    let _e477 = frame.member[0u].member_1.member_2.member[0u];
-                                                    let _e482 = select(select(u32(_e477), 0u, (_e477 < 0f)), 4294967295u, (_e477 > 4294967000f));
-                                                    let _e489 = frame.member[0u].member_1.member_2.member[1u];
-                                                    let _e500 = frame.member[0u].member_1.member_2.member_4;
-                                                    if (_e469 >= _e500) {
-                                                        if (_e470 >= _e500) {
-                                                            let _e504 = ((_e469 + _e500) < _e482);
-                                                            if _e504 {
-                                                                phi_627_ = ((_e470 + _e500) < select(select(u32(_e489), 0u, (_e489 < 0f)), 4294967295u, (_e489 > 4294967000f)));
+                                        let _e463 = phi_570_;
+                                        let _e464 = (_e459 * _e463);
+                                        if (_e464 > 0f) {
+                                            if (_e447 >= 0i) {
+                                                if (_e455 >= 0i) {
+                                                    let _e468 = bitcast<u32>(_e447);
+                                                    let _e469 = bitcast<u32>(_e455);
+                                                    let _e476 = frame.member[0u].member_1.member_2.member[0u];
+                                                    let _e481 = select(select(u32(_e476), 0u, (_e476 < 0f)), 4294967295u, (_e476 > 4294967000f));
+                                                    let _e488 = frame.member[0u].member_1.member_2.member[1u];
+                                                    let _e499 = frame.member[0u].member_1.member_2.member_4;
+                                                    if (_e468 >= _e499) {
+                                                        if (_e469 >= _e499) {
+                                                            let _e503 = ((_e468 + _e499) < _e481);
+                                                            if _e503 {
+                                                                phi_627_ = ((_e469 + _e499) < select(select(u32(_e488), 0u, (_e488 < 0f)), 4294967295u, (_e488 > 4294967000f)));
                                                             } else {
                                                                 phi_627_ = bool();
                                                             }
-                                                            let _e508 = phi_627_;
-                                                            phi_629_ = _e508;
-                                                            phi_630_ = select(true, false, _e504);
+                                                            let _e507 = phi_627_;
+                                                            phi_629_ = _e507;
+                                                            phi_630_ = select(true, false, _e503);
                                                         } else {
                                                             phi_629_ = bool();
                                                             phi_630_ = true;
                                                         }
-                                                        let _e511 = phi_629_;
-                                                        let _e513 = phi_630_;
-                                                        phi_631_ = _e511;
-                                                        phi_632_ = _e513;
+                                                        let _e510 = phi_629_;
+                                                        let _e512 = phi_630_;
+                                                        phi_631_ = _e510;
+                                                        phi_632_ = _e512;
                                                     } else {
                                                         phi_631_ = bool();
                                                         phi_632_ = true;
                                                     }
-                                                    let _e515 = phi_631_;
-                                                    let _e517 = phi_632_;
-                                                    if select(_e515, false, _e517) {
-                                                        let _e520 = ((_e470 * _e482) + _e469);
-                                                        if (_e520 < arrayLength((&history_depth.member))) {
+                                                    let _e514 = phi_631_;
+                                                    let _e516 = phi_632_;
+                                                    if select(_e514, false, _e516) {
+                                                        let _e519 = ((_e469 * _e481) + _e468);
+                                                        if (_e519 < arrayLength((&history_depth.member))) {
                                                         } else {
                                                             phi_766_ = true;
                                                             break;
                                                         }
-                                                        let _e525 = history_depth.member[_e520];
-                                                        let _e531 = frame.member[0u].member_1.member_2.member_3;
-                                                        if (_e525 > 0f) {
-                                                            phi_668_ = (_e525 < _e531);
-                                                        } else {
-                                                            phi_668_ = false;
-                                                        }
-                                                        let _e535 = phi_668_;
-                                                        if _e535 {
-                                                            phi_676_ = (abs((_e525 - _e407.member_2)) <= (_e412 * _e407.member_2));
+                                                        let _e524 = history_depth.member[_e519];
+                                                        let _e530 = frame.member[0u].member_1.member_2.member_3;
+                                                        if select(false, (_e524 < _e530), (_e524 > 0f)) {
+                                                            phi_676_ = (abs((_e524 - _e406.member_2)) <= (_e411 * _e406.member_2));
                                                         } else {
                                                             phi_676_ = false;
                                                         }
-                                                        let _e541 = phi_676_;
-                                                        if _e541 {
-                                                            if (_e520 < arrayLength((&history_ao.member))) {
+                                                        let _e539 = phi_676_;
+                                                        if _e539 {
+                                                            if (_e519 < arrayLength((&history_ao.member))) {
                                                             } else {
                                                                 phi_766_ = true;
                                                                 break;
                                                             }
-                                                            let _e545 = history_ao.member[_e520];
-                                                            phi_690_ = (_e434 + _e465);
-                                                            phi_691_ = (_e436 + (_e465 * _e545));
+                                                            let _e543 = history_ao.member[_e519];
+                                                            phi_690_ = (_e433 + _e464);
+                                                            phi_691_ = (_e435 + (_e464 * _e543));
                                                         } else {
-                                                            phi_690_ = _e434;
-                                                            phi_691_ = _e436;
+                                                            phi_690_ = _e433;
+                                                            phi_691_ = _e435;
                                                         }
-                                                        let _e550 = phi_690_;
-                                                        let _e552 = phi_691_;
-                                                        phi_692_ = _e550;
-                                                        phi_693_ = _e552;
+                                                        let _e548 = phi_690_;
+                                                        let _e550 = phi_691_;
+                                                        phi_692_ = _e548;
+                                                        phi_693_ = _e550;
                                                     } else {
-                                                        phi_692_ = _e434;
-                                                        phi_693_ = _e436;
+                                                        phi_692_ = _e433;
+                                                        phi_693_ = _e435;
                                                     }
-                                                    let _e554 = phi_692_;
-                                                    let _e556 = phi_693_;
-                                                    phi_694_ = _e554;
-                                                    phi_695_ = _e556;
+                                                    let _e552 = phi_692_;
+                                                    let _e554 = phi_693_;
+                                                    phi_694_ = _e552;
+                                                    phi_695_ = _e554;
                                                 } else {
-                                                    phi_694_ = _e434;
-                                                    phi_695_ = _e436;
+                                                    phi_694_ = _e433;
+                                                    phi_695_ = _e435;
                                                 }
-                                                let _e558 = phi_694_;
-                                                let _e560 = phi_695_;
-                                                phi_696_ = _e558;
-                                                phi_697_ = _e560;
+                                                let _e556 = phi_694_;
+                                                let _e558 = phi_695_;
+                                                phi_696_ = _e556;
+                                                phi_697_ = _e558;
                                             } else {
-                                                phi_696_ = _e434;
-                                                phi_697_ = _e436;
+                                                phi_696_ = _e433;
+                                                phi_697_ = _e435;
                                             }
-                                            let _e562 = phi_696_;
-                                            let _e564 = phi_697_;
-                                            phi_698_ = _e562;
-                                            phi_699_ = _e564;
+                                            let _e560 = phi_696_;
+                                            let _e562 = phi_697_;
+                                            phi_698_ = _e560;
+                                            phi_699_ = _e562;
                                         } else {
-                                            phi_698_ = _e434;
-                                            phi_699_ = _e436;
+                                            phi_698_ = _e433;
+                                            phi_699_ = _e435;
                                         }
-                                        let _e566 = phi_698_;
-                                        let _e568 = phi_699_;
-                                        phi_525_ = (_e432 + 1i);
-                                        phi_528_ = _e566;
-                                        phi_530_ = _e568;
+                                        let _e564 = phi_698_;
+                                        let _e566 = phi_699_;
+                                        phi_525_ = (_e431 + 1i);
+                                        phi_528_ = _e564;
+                                        phi_530_ = _e566;
                                     } else {
                                         phi_525_ = i32();
                                         phi_528_ = f32();
                                         phi_530_ = f32();
                                     }
-                                    let _e571 = phi_525_;
-                                    let _e573 = phi_528_;
-                                    let _e575 = phi_530_;
+                                    let _e569 = phi_525_;
+                                    let _e571 = phi_528_;
+                                    let _e573 = phi_530_;
                                     continue;
                                     continuing {
-                                        phi_524_ = _e571;
-                                        phi_527_ = _e573;
-                                        phi_529_ = _e575;
+                                        phi_524_ = _e569;
+                                        phi_527_ = _e571;
+                                        phi_529_ = _e573;
                                         phi_766_ = false;
-                                        break if !(_e437);
+                                        break if !(_e436);
                                     }
                                 }
-                                let _e578 = phi_766_;
-                                if _e578 {
+                                let _e576 = phi_766_;
+                                if _e576 {
                                     break;
                                 }
-                                let _e580 = local;
-                                if (_e580 > 0f) {
-                                    let _e583 = local_1;
-                                    let _e585 = local_2;
-                                    let _e588 = local_3;
-                                    phi_708_ = vec2<f32>(_e588, (_e583 / _e585));
+                                let _e578 = local;
+                                if (_e578 > 0f) {
+                                    let _e581 = local_1;
+                                    let _e583 = local_2;
+                                    let _e586 = local_3;
+                                    phi_708_ = vec2<f32>(_e586, (_e581 / _e583));
                                 } else {
                                     phi_708_ = vec2<f32>(0f, 0f);
                                 }
-                                let _e591 = phi_708_;
-                                let _e594 = (_e591.x <= 0f);
-                                if _e594 {
+                                let _e589 = phi_708_;
+                                let _e592 = (_e589.x <= 0f);
+                                if _e592 {
                                     phi_720_ = f32();
                                 } else {
-                                    let _e598 = frame.member[0u].member_2;
-                                    phi_720_ = (_e591.y + (_e598 * (_e86 - _e591.y)));
+                                    let _e596 = frame.member[0u].member_2;
+                                    phi_720_ = (_e589.y + (_e596 * (_e86 - _e589.y)));
                                 }
-                                let _e603 = phi_720_;
-                                phi_721_ = _e603;
-                                phi_722_ = _e594;
+                                let _e601 = phi_720_;
+                                phi_721_ = _e601;
+                                phi_722_ = _e592;
                             } else {
                                 phi_721_ = f32();
                                 phi_722_ = true;
                             }
-                            let _e605 = phi_721_;
-                            let _e607 = phi_722_;
-                            phi_726_ = _e605;
-                            phi_728_ = _e607;
+                            let _e603 = phi_721_;
+                            let _e605 = phi_722_;
+                            phi_726_ = _e603;
+                            phi_728_ = _e605;
                         } else {
                             phi_726_ = f32();
                             phi_728_ = false;
                         }
-                        let _e609 = phi_726_;
-                        let _e611 = phi_728_;
-                        phi_729_ = _e609;
+                        let _e607 = phi_726_;
+                        let _e609 = phi_728_;
+                        phi_729_ = _e607;
                         phi_730_ = select(true, false, _e115);
-                        phi_731_ = _e611;
+                        phi_731_ = _e609;
                     }
-                    let _e614 = phi_729_;
-                    let _e616 = phi_730_;
-                    let _e618 = phi_731_;
+                    let _e612 = phi_729_;
+                    let _e614 = phi_730_;
+                    let _e616 = phi_731_;
                     if (_e82 < arrayLength((&out.member))) {
                     } else {
                         break;
                     }
-                    out.member[_e82] = select(_e614, _e86, select(_e618, true, _e616));
+                    out.member[_e82] = select(_e612, _e86, select(_e616, true, _e614));
                 }
             }
             break;

@@ -106,7 +106,6 @@ fn function_() {
     var phi_911_: u32;
     var phi_913_: u32;
     var local_1: u32;
-    var phi_967_: bool;
     var phi_2897_: bool;
     var phi_990_: u32;
     var phi_993_: f32;
@@ -561,730 +560,724 @@ fn function_() {
                     let _e557 = (0.5f + (_e555 * 0.7548777f));
                     let _e561 = (0.5f + (_e555 * 0.5698403f));
                     let _e568 = params.member.member_4.member.member_3;
-                    if (_e123 > 0f) {
-                        phi_967_ = (_e123 < _e568);
-                    } else {
-                        phi_967_ = false;
-                    }
-                    let _e572 = phi_967_;
-                    if _e572 {
-                        let _e577 = params.member.member_4.member_8;
-                        let _e579 = select(1u, _e577, (1u < _e577));
+                    if select(false, (_e123 < _e568), (_e123 > 0f)) {
+                        let _e576 = params.member.member_4.member_8;
+                        let _e578 = select(1u, _e576, (1u < _e576));
                         phi_2897_ = false;
                         phi_990_ = 0u;
                         phi_993_ = 0f;
                         phi_995_ = 0f;
                         loop {
-                            let _e581 = phi_2897_;
-                            let _e583 = phi_990_;
-                            let _e585 = phi_993_;
-                            let _e587 = phi_995_;
-                            local_9 = _e585;
-                            local_10 = _e587;
-                            local_11 = _e585;
-                            let _e588 = (_e583 < _e579);
-                            if _e588 {
-                                let _e593 = ((((_e557 - floor(_e557)) + f32(_e583)) * 3.1415927f) / f32(_e579));
-                                let _e594 = sin(_e593);
-                                let _e595 = cos(_e593);
-                                let _e601 = ((_e595 * _e412) + (_e594 * _e413));
-                                let _e605 = (_e595 - (_e412 * _e601));
-                                let _e606 = (_e594 - (_e413 * _e601));
-                                let _e607 = -((_e414 * _e601));
-                                let _e610 = ((_e606 * _e414) - (_e413 * _e607));
-                                let _e613 = ((_e607 * _e412) - (_e414 * _e605));
-                                let _e616 = ((_e605 * _e413) - (_e412 * _e606));
-                                let _e623 = (1f / sqrt((((_e610 * _e610) + (_e613 * _e613)) + (_e616 * _e616))));
-                                let _e624 = (_e610 * _e623);
-                                let _e625 = (_e613 * _e623);
-                                let _e626 = (_e616 * _e623);
-                                let _e634 = (((_e487.x * _e624) + (_e487.y * _e625)) + (_e487.z * _e626));
-                                let _e638 = (_e487.x - (_e624 * _e634));
-                                let _e639 = (_e487.y - (_e625 * _e634));
-                                let _e640 = (_e487.z - (_e626 * _e634));
-                                let _e646 = sqrt((((_e638 * _e638) + (_e639 * _e639)) + (_e640 * _e640)));
-                                let _e651 = (((_e605 * _e638) + (_e606 * _e639)) + (_e607 * _e640));
-                                let _e661 = ((((_e638 * _e412) + (_e639 * _e413)) + (_e640 * _e414)) / _e646);
-                                let _e665 = select(0f, select(1f, _e661, (_e661 < 1f)), (_e661 > 0f));
-                                let _e667 = (select(select(0f, -1f, (_e651 < 0f)), 1f, (_e651 > 0f)) * acos(_e665));
-                                let _e671 = params.member.member_4.member_9;
-                                let _e673 = select(1u, _e671, (1u < _e671));
+                            let _e580 = phi_2897_;
+                            let _e582 = phi_990_;
+                            let _e584 = phi_993_;
+                            let _e586 = phi_995_;
+                            local_9 = _e584;
+                            local_10 = _e586;
+                            local_11 = _e584;
+                            let _e587 = (_e582 < _e578);
+                            if _e587 {
+                                let _e592 = ((((_e557 - floor(_e557)) + f32(_e582)) * 3.1415927f) / f32(_e578));
+                                let _e593 = sin(_e592);
+                                let _e594 = cos(_e592);
+                                let _e600 = ((_e594 * _e412) + (_e593 * _e413));
+                                let _e604 = (_e594 - (_e412 * _e600));
+                                let _e605 = (_e593 - (_e413 * _e600));
+                                let _e606 = -((_e414 * _e600));
+                                let _e609 = ((_e605 * _e414) - (_e413 * _e606));
+                                let _e612 = ((_e606 * _e412) - (_e414 * _e604));
+                                let _e615 = ((_e604 * _e413) - (_e412 * _e605));
+                                let _e622 = (1f / sqrt((((_e609 * _e609) + (_e612 * _e612)) + (_e615 * _e615))));
+                                let _e623 = (_e609 * _e622);
+                                let _e624 = (_e612 * _e622);
+                                let _e625 = (_e615 * _e622);
+                                let _e633 = (((_e487.x * _e623) + (_e487.y * _e624)) + (_e487.z * _e625));
+                                let _e637 = (_e487.x - (_e623 * _e633));
+                                let _e638 = (_e487.y - (_e624 * _e633));
+                                let _e639 = (_e487.z - (_e625 * _e633));
+                                let _e645 = sqrt((((_e637 * _e637) + (_e638 * _e638)) + (_e639 * _e639)));
+                                let _e650 = (((_e604 * _e637) + (_e605 * _e638)) + (_e606 * _e639));
+                                let _e660 = ((((_e637 * _e412) + (_e638 * _e413)) + (_e639 * _e414)) / _e645);
+                                let _e664 = select(0f, select(1f, _e660, (_e660 < 1f)), (_e660 > 0f));
+                                let _e666 = (select(select(0f, -1f, (_e650 < 0f)), 1f, (_e650 > 0f)) * acos(_e664));
+                                let _e670 = params.member.member_4.member_9;
+                                let _e672 = select(1u, _e670, (1u < _e670));
                                 phi_1165_ = 0u;
                                 phi_1168_ = 0u;
                                 loop {
-                                    let _e675 = phi_1165_;
-                                    let _e677 = phi_1168_;
-                                    local_4 = _e677;
-                                    local_5 = _e677;
-                                    local_7 = _e677;
-                                    let _e678 = (_e675 < _e673);
-                                    if _e678 {
-                                        let _e683 = ((_e561 - floor(_e561)) + (f32((_e583 + (_e675 * _e673))) * 0.618034f));
-                                        let _e689 = (((_e683 - floor(_e683)) + f32(_e675)) / f32(_e673));
-                                        let _e693 = params.member.member_4.member_4;
-                                        if (_e693 == 2f) {
-                                            phi_1222_ = (_e689 * _e689);
+                                    let _e674 = phi_1165_;
+                                    let _e676 = phi_1168_;
+                                    local_4 = _e676;
+                                    local_5 = _e676;
+                                    local_7 = _e676;
+                                    let _e677 = (_e674 < _e672);
+                                    if _e677 {
+                                        let _e682 = ((_e561 - floor(_e561)) + (f32((_e582 + (_e674 * _e672))) * 0.618034f));
+                                        let _e688 = (((_e682 - floor(_e682)) + f32(_e674)) / f32(_e672));
+                                        let _e692 = params.member.member_4.member_4;
+                                        if (_e692 == 2f) {
+                                            phi_1222_ = (_e688 * _e688);
                                         } else {
-                                            phi_1222_ = pow(_e689, _e693);
+                                            phi_1222_ = pow(_e688, _e692);
                                         }
-                                        let _e698 = phi_1222_;
-                                        let _e699 = (_e698 + (1.3f / _e500));
-                                        let _e700 = ((_e595 * _e500) * _e699);
-                                        let _e701 = ((-(_e594) * _e500) * _e699);
-                                        let _e710 = params.member.member_4.member_7;
-                                        let _e711 = (log2(sqrt(((_e700 * _e700) + (_e701 * _e701)))) - _e710);
-                                        let _e718 = (-1f - floor((-0.5f - select(0f, select(5f, _e711, (_e711 < 5f)), (_e711 > 0f)))));
-                                        let _e720 = floor((_e700 + 0.5f));
-                                        if ((_e720 - _e700) == 0.5f) {
-                                            let _e726 = ((floor((_e720 * 0.5f)) * 2f) != _e720);
-                                            if _e726 {
-                                                phi_1267_ = (_e720 - 1f);
+                                        let _e697 = phi_1222_;
+                                        let _e698 = (_e697 + (1.3f / _e500));
+                                        let _e699 = ((_e594 * _e500) * _e698);
+                                        let _e700 = ((-(_e593) * _e500) * _e698);
+                                        let _e709 = params.member.member_4.member_7;
+                                        let _e710 = (log2(sqrt(((_e699 * _e699) + (_e700 * _e700)))) - _e709);
+                                        let _e717 = (-1f - floor((-0.5f - select(0f, select(5f, _e710, (_e710 < 5f)), (_e710 > 0f)))));
+                                        let _e719 = floor((_e699 + 0.5f));
+                                        if ((_e719 - _e699) == 0.5f) {
+                                            let _e725 = ((floor((_e719 * 0.5f)) * 2f) != _e719);
+                                            if _e725 {
+                                                phi_1267_ = (_e719 - 1f);
                                             } else {
                                                 phi_1267_ = f32();
                                             }
-                                            let _e729 = phi_1267_;
-                                            phi_1269_ = _e729;
-                                            phi_1270_ = select(true, false, _e726);
+                                            let _e728 = phi_1267_;
+                                            phi_1269_ = _e728;
+                                            phi_1270_ = select(true, false, _e725);
                                         } else {
                                             phi_1269_ = f32();
                                             phi_1270_ = true;
                                         }
-                                        let _e732 = phi_1269_;
-                                        let _e734 = phi_1270_;
-                                        let _e736 = (select(_e732, _e720, _e734) / _e97);
-                                        let _e738 = floor((_e701 + 0.5f));
-                                        if ((_e738 - _e701) == 0.5f) {
-                                            let _e744 = ((floor((_e738 * 0.5f)) * 2f) != _e738);
-                                            if _e744 {
-                                                phi_1293_ = (_e738 - 1f);
+                                        let _e731 = phi_1269_;
+                                        let _e733 = phi_1270_;
+                                        let _e735 = (select(_e731, _e719, _e733) / _e97);
+                                        let _e737 = floor((_e700 + 0.5f));
+                                        if ((_e737 - _e700) == 0.5f) {
+                                            let _e743 = ((floor((_e737 * 0.5f)) * 2f) != _e737);
+                                            if _e743 {
+                                                phi_1293_ = (_e737 - 1f);
                                             } else {
                                                 phi_1293_ = f32();
                                             }
-                                            let _e747 = phi_1293_;
-                                            phi_1295_ = _e747;
-                                            phi_1296_ = select(true, false, _e744);
+                                            let _e746 = phi_1293_;
+                                            phi_1295_ = _e746;
+                                            phi_1296_ = select(true, false, _e743);
                                         } else {
                                             phi_1295_ = f32();
                                             phi_1296_ = true;
                                         }
-                                        let _e750 = phi_1295_;
-                                        let _e752 = phi_1296_;
-                                        let _e754 = (select(_e750, _e738, _e752) / _e108);
-                                        let _e755 = (_e379 + _e736);
-                                        let _e756 = (_e380 + _e754);
-                                        let _e757 = (_e379 - _e736);
-                                        let _e758 = (_e380 - _e754);
-                                        let _e759 = (_e718 > 0f);
-                                        if _e759 {
-                                            let _e764 = select(select(u32(_e718), 0u, (_e718 < 0f)), 4294967295u, (_e718 > 4294967000f));
-                                            phi_2492_ = select(_e764, 4u, (4u < _e764));
+                                        let _e749 = phi_1295_;
+                                        let _e751 = phi_1296_;
+                                        let _e753 = (select(_e749, _e737, _e751) / _e108);
+                                        let _e754 = (_e379 + _e735);
+                                        let _e755 = (_e380 + _e753);
+                                        let _e756 = (_e379 - _e735);
+                                        let _e757 = (_e380 - _e753);
+                                        let _e758 = (_e717 > 0f);
+                                        if _e758 {
+                                            let _e763 = select(select(u32(_e717), 0u, (_e717 < 0f)), 4294967295u, (_e717 > 4294967000f));
+                                            phi_2492_ = select(_e763, 4u, (4u < _e763));
                                         } else {
                                             phi_2492_ = 0u;
                                         }
-                                        let _e768 = phi_2492_;
-                                        let _e769 = (_e768 & 31u);
-                                        let _e771 = (_e102 >> bitcast<u32>(_e769));
-                                        let _e773 = select(1u, _e771, (1u < _e771));
-                                        let _e775 = (_e113 >> bitcast<u32>(_e769));
-                                        let _e777 = select(1u, _e775, (1u < _e775));
-                                        let _e779 = (_e755 * f32(_e773));
-                                        if (_e779 > 0f) {
-                                            let _e785 = select(select(u32(_e779), 0u, (_e779 < 0f)), 4294967295u, (_e779 > 4294967000f));
-                                            let _e786 = (_e773 - 1u);
-                                            phi_2540_ = select(_e785, _e786, (_e786 < _e785));
+                                        let _e767 = phi_2492_;
+                                        let _e768 = (_e767 & 31u);
+                                        let _e770 = (_e102 >> bitcast<u32>(_e768));
+                                        let _e772 = select(1u, _e770, (1u < _e770));
+                                        let _e774 = (_e113 >> bitcast<u32>(_e768));
+                                        let _e776 = select(1u, _e774, (1u < _e774));
+                                        let _e778 = (_e754 * f32(_e772));
+                                        if (_e778 > 0f) {
+                                            let _e784 = select(select(u32(_e778), 0u, (_e778 < 0f)), 4294967295u, (_e778 > 4294967000f));
+                                            let _e785 = (_e772 - 1u);
+                                            phi_2540_ = select(_e784, _e785, (_e785 < _e784));
                                         } else {
                                             phi_2540_ = 0u;
                                         }
-                                        let _e790 = phi_2540_;
-                                        let _e792 = (_e756 * f32(_e777));
-                                        if (_e792 > 0f) {
-                                            let _e798 = select(select(u32(_e792), 0u, (_e792 < 0f)), 4294967295u, (_e792 > 4294967000f));
-                                            let _e799 = (_e777 - 1u);
-                                            phi_2560_ = select(_e798, _e799, (_e799 < _e798));
+                                        let _e789 = phi_2540_;
+                                        let _e791 = (_e755 * f32(_e776));
+                                        if (_e791 > 0f) {
+                                            let _e797 = select(select(u32(_e791), 0u, (_e791 < 0f)), 4294967295u, (_e791 > 4294967000f));
+                                            let _e798 = (_e776 - 1u);
+                                            phi_2560_ = select(_e797, _e798, (_e798 < _e797));
                                         } else {
                                             phi_2560_ = 0u;
                                         }
-                                        let _e803 = phi_2560_;
+                                        let _e802 = phi_2560_;
                                         phi_2562_ = 0u;
                                         phi_2563_ = 0u;
                                         loop {
-                                            let _e805 = phi_2562_;
-                                            let _e807 = phi_2563_;
-                                            local_2 = _e807;
-                                            let _e808 = (_e805 < _e768);
-                                            if _e808 {
-                                                let _e809 = (_e805 & 31u);
-                                                let _e811 = (_e102 >> bitcast<u32>(_e809));
-                                                let _e815 = (_e113 >> bitcast<u32>(_e809));
-                                                phi_2586_ = (_e805 + 1u);
-                                                phi_2587_ = (_e807 + (select(1u, _e811, (1u < _e811)) * select(1u, _e815, (1u < _e815))));
+                                            let _e804 = phi_2562_;
+                                            let _e806 = phi_2563_;
+                                            local_2 = _e806;
+                                            let _e807 = (_e804 < _e767);
+                                            if _e807 {
+                                                let _e808 = (_e804 & 31u);
+                                                let _e810 = (_e102 >> bitcast<u32>(_e808));
+                                                let _e814 = (_e113 >> bitcast<u32>(_e808));
+                                                phi_2586_ = (_e804 + 1u);
+                                                phi_2587_ = (_e806 + (select(1u, _e810, (1u < _e810)) * select(1u, _e814, (1u < _e814))));
                                             } else {
                                                 phi_2586_ = u32();
                                                 phi_2587_ = u32();
                                             }
-                                            let _e822 = phi_2586_;
-                                            let _e824 = phi_2587_;
+                                            let _e821 = phi_2586_;
+                                            let _e823 = phi_2587_;
                                             continue;
                                             continuing {
-                                                phi_2562_ = _e822;
-                                                phi_2563_ = _e824;
-                                                break if !(_e808);
+                                                phi_2562_ = _e821;
+                                                phi_2563_ = _e823;
+                                                break if !(_e807);
                                             }
                                         }
-                                        let _e829 = local_2;
-                                        let _e830 = (_e829 + ((_e803 * _e773) + _e790));
-                                        if (_e830 < _e85) {
+                                        let _e828 = local_2;
+                                        let _e829 = (_e828 + ((_e802 * _e772) + _e789));
+                                        if (_e829 < _e85) {
                                         } else {
                                             phi_2845_ = true;
                                             break;
                                         }
-                                        let _e834 = mips.member[_e830];
-                                        if _e759 {
-                                            let _e847 = select(select(u32(_e718), 0u, (_e718 < 0f)), 4294967295u, (_e718 > 4294967000f));
-                                            phi_2614_ = select(_e847, 4u, (4u < _e847));
+                                        let _e833 = mips.member[_e829];
+                                        if _e758 {
+                                            let _e846 = select(select(u32(_e717), 0u, (_e717 < 0f)), 4294967295u, (_e717 > 4294967000f));
+                                            phi_2614_ = select(_e846, 4u, (4u < _e846));
                                         } else {
                                             phi_2614_ = 0u;
                                         }
-                                        let _e851 = phi_2614_;
-                                        let _e852 = (_e851 & 31u);
-                                        let _e854 = (_e102 >> bitcast<u32>(_e852));
-                                        let _e856 = select(1u, _e854, (1u < _e854));
-                                        let _e858 = (_e113 >> bitcast<u32>(_e852));
-                                        let _e860 = select(1u, _e858, (1u < _e858));
-                                        let _e862 = (_e757 * f32(_e856));
-                                        if (_e862 > 0f) {
-                                            let _e868 = select(select(u32(_e862), 0u, (_e862 < 0f)), 4294967295u, (_e862 > 4294967000f));
-                                            let _e869 = (_e856 - 1u);
-                                            phi_2662_ = select(_e868, _e869, (_e869 < _e868));
+                                        let _e850 = phi_2614_;
+                                        let _e851 = (_e850 & 31u);
+                                        let _e853 = (_e102 >> bitcast<u32>(_e851));
+                                        let _e855 = select(1u, _e853, (1u < _e853));
+                                        let _e857 = (_e113 >> bitcast<u32>(_e851));
+                                        let _e859 = select(1u, _e857, (1u < _e857));
+                                        let _e861 = (_e756 * f32(_e855));
+                                        if (_e861 > 0f) {
+                                            let _e867 = select(select(u32(_e861), 0u, (_e861 < 0f)), 4294967295u, (_e861 > 4294967000f));
+                                            let _e868 = (_e855 - 1u);
+                                            phi_2662_ = select(_e867, _e868, (_e868 < _e867));
                                         } else {
                                             phi_2662_ = 0u;
                                         }
-                                        let _e873 = phi_2662_;
-                                        let _e875 = (_e758 * f32(_e860));
-                                        if (_e875 > 0f) {
-                                            let _e881 = select(select(u32(_e875), 0u, (_e875 < 0f)), 4294967295u, (_e875 > 4294967000f));
-                                            let _e882 = (_e860 - 1u);
-                                            phi_2682_ = select(_e881, _e882, (_e882 < _e881));
+                                        let _e872 = phi_2662_;
+                                        let _e874 = (_e757 * f32(_e859));
+                                        if (_e874 > 0f) {
+                                            let _e880 = select(select(u32(_e874), 0u, (_e874 < 0f)), 4294967295u, (_e874 > 4294967000f));
+                                            let _e881 = (_e859 - 1u);
+                                            phi_2682_ = select(_e880, _e881, (_e881 < _e880));
                                         } else {
                                             phi_2682_ = 0u;
                                         }
-                                        let _e886 = phi_2682_;
+                                        let _e885 = phi_2682_;
                                         phi_2684_ = 0u;
                                         phi_2685_ = 0u;
                                         loop {
-                                            let _e888 = phi_2684_;
-                                            let _e890 = phi_2685_;
-                                            local_3 = _e890;
-                                            let _e891 = (_e888 < _e851);
-                                            if _e891 {
-                                                let _e892 = (_e888 & 31u);
-                                                let _e894 = (_e102 >> bitcast<u32>(_e892));
-                                                let _e898 = (_e113 >> bitcast<u32>(_e892));
-                                                phi_2708_ = (_e888 + 1u);
-                                                phi_2709_ = (_e890 + (select(1u, _e894, (1u < _e894)) * select(1u, _e898, (1u < _e898))));
+                                            let _e887 = phi_2684_;
+                                            let _e889 = phi_2685_;
+                                            local_3 = _e889;
+                                            let _e890 = (_e887 < _e850);
+                                            if _e890 {
+                                                let _e891 = (_e887 & 31u);
+                                                let _e893 = (_e102 >> bitcast<u32>(_e891));
+                                                let _e897 = (_e113 >> bitcast<u32>(_e891));
+                                                phi_2708_ = (_e887 + 1u);
+                                                phi_2709_ = (_e889 + (select(1u, _e893, (1u < _e893)) * select(1u, _e897, (1u < _e897))));
                                             } else {
                                                 phi_2708_ = u32();
                                                 phi_2709_ = u32();
                                             }
-                                            let _e905 = phi_2708_;
-                                            let _e907 = phi_2709_;
+                                            let _e904 = phi_2708_;
+                                            let _e906 = phi_2709_;
                                             continue;
                                             continuing {
-                                                phi_2684_ = _e905;
-                                                phi_2685_ = _e907;
-                                                break if !(_e891);
+                                                phi_2684_ = _e904;
+                                                phi_2685_ = _e906;
+                                                break if !(_e890);
                                             }
                                         }
-                                        let _e912 = local_3;
-                                        let _e913 = (_e912 + ((_e886 * _e856) + _e873));
-                                        if (_e913 < _e85) {
+                                        let _e911 = local_3;
+                                        let _e912 = (_e911 + ((_e885 * _e855) + _e872));
+                                        if (_e912 < _e85) {
                                         } else {
                                             phi_2845_ = true;
                                             break;
                                         }
-                                        let _e917 = mips.member[_e913];
-                                        let _e926 = (((((_e755 * 2f) - 1f) * _e389) * _e834) - _e391);
-                                        let _e927 = (((((_e756 * -2f) + 1f) * _e399) * _e834) - _e401);
-                                        let _e928 = (_e834 - _e381);
-                                        let _e931 = params.member.member_1;
-                                        let _e932 = (_e931 > 0f);
-                                        if _e932 {
-                                            phi_1404_ = select(true, false, (sqrt((((_e926 * _e926) + (_e927 * _e927)) + (_e928 * _e928))) > _e931));
+                                        let _e916 = mips.member[_e912];
+                                        let _e925 = (((((_e754 * 2f) - 1f) * _e389) * _e833) - _e391);
+                                        let _e926 = (((((_e755 * -2f) + 1f) * _e399) * _e833) - _e401);
+                                        let _e927 = (_e833 - _e381);
+                                        let _e930 = params.member.member_1;
+                                        let _e931 = (_e930 > 0f);
+                                        if _e931 {
+                                            phi_1404_ = select(true, false, (sqrt((((_e925 * _e925) + (_e926 * _e926)) + (_e927 * _e927))) > _e930));
                                         } else {
                                             phi_1404_ = true;
                                         }
-                                        let _e942 = phi_1404_;
-                                        if _e942 {
-                                            let _e945 = params.member.member;
-                                            let _e948 = params.member.member_3;
-                                            let _e953 = (((_e926 * _e412) + (_e927 * _e413)) + (_e928 * _e414));
-                                            let _e957 = (_e926 - (_e412 * _e953));
-                                            let _e958 = (_e927 - (_e413 * _e953));
-                                            let _e959 = (_e928 - (_e414 * _e953));
-                                            if (sqrt((((_e957 * _e957) + (_e958 * _e958)) + (_e959 * _e959))) <= 0f) {
+                                        let _e941 = phi_1404_;
+                                        if _e941 {
+                                            let _e944 = params.member.member;
+                                            let _e947 = params.member.member_3;
+                                            let _e952 = (((_e925 * _e412) + (_e926 * _e413)) + (_e927 * _e414));
+                                            let _e956 = (_e925 - (_e412 * _e952));
+                                            let _e957 = (_e926 - (_e413 * _e952));
+                                            let _e958 = (_e927 - (_e414 * _e952));
+                                            if (sqrt((((_e956 * _e956) + (_e957 * _e957)) + (_e958 * _e958))) <= 0f) {
                                                 phi_1709_ = 0u;
                                             } else {
-                                                let _e969 = ((_e958 * _e414) - (_e413 * _e959));
-                                                let _e972 = ((_e959 * _e412) - (_e414 * _e957));
-                                                let _e975 = ((_e957 * _e413) - (_e412 * _e958));
-                                                let _e982 = (1f / sqrt((((_e969 * _e969) + (_e972 * _e972)) + (_e975 * _e975))));
-                                                let _e983 = (_e969 * _e982);
-                                                let _e984 = (_e972 * _e982);
-                                                let _e985 = (_e975 * _e982);
-                                                let _e990 = (((_e487.x * _e983) + (_e487.y * _e984)) + (_e487.z * _e985));
-                                                let _e994 = (_e487.x - (_e983 * _e990));
-                                                let _e995 = (_e487.y - (_e984 * _e990));
-                                                let _e996 = (_e487.z - (_e985 * _e990));
-                                                let _e1002 = sqrt((((_e994 * _e994) + (_e995 * _e995)) + (_e996 * _e996)));
-                                                let _e1008 = ((((_e994 * _e412) + (_e995 * _e413)) + (_e996 * _e414)) / _e1002);
-                                                let _e1012 = select(0f, select(1f, _e1008, (_e1008 < 1f)), (_e1008 > 0f));
-                                                if ((((_e957 * _e994) + (_e958 * _e995)) + (_e959 * _e996)) < 0f) {
-                                                    phi_1520_ = -(acos(_e1012));
+                                                let _e968 = ((_e957 * _e414) - (_e413 * _e958));
+                                                let _e971 = ((_e958 * _e412) - (_e414 * _e956));
+                                                let _e974 = ((_e956 * _e413) - (_e412 * _e957));
+                                                let _e981 = (1f / sqrt((((_e968 * _e968) + (_e971 * _e971)) + (_e974 * _e974))));
+                                                let _e982 = (_e968 * _e981);
+                                                let _e983 = (_e971 * _e981);
+                                                let _e984 = (_e974 * _e981);
+                                                let _e989 = (((_e487.x * _e982) + (_e487.y * _e983)) + (_e487.z * _e984));
+                                                let _e993 = (_e487.x - (_e982 * _e989));
+                                                let _e994 = (_e487.y - (_e983 * _e989));
+                                                let _e995 = (_e487.z - (_e984 * _e989));
+                                                let _e1001 = sqrt((((_e993 * _e993) + (_e994 * _e994)) + (_e995 * _e995)));
+                                                let _e1007 = ((((_e993 * _e412) + (_e994 * _e413)) + (_e995 * _e414)) / _e1001);
+                                                let _e1011 = select(0f, select(1f, _e1007, (_e1007 < 1f)), (_e1007 > 0f));
+                                                if ((((_e956 * _e993) + (_e957 * _e994)) + (_e958 * _e995)) < 0f) {
+                                                    phi_1520_ = -(acos(_e1011));
                                                 } else {
-                                                    phi_1520_ = acos(_e1012);
+                                                    phi_1520_ = acos(_e1011);
                                                 }
-                                                let _e1023 = phi_1520_;
-                                                let _e1024 = (0.02f / _e1002);
-                                                if (_e1024 != _e1024) {
+                                                let _e1022 = phi_1520_;
+                                                let _e1023 = (0.02f / _e1001);
+                                                if (_e1023 != _e1023) {
                                                     phi_2725_ = true;
                                                 } else {
-                                                    phi_2725_ = (0.19634955f <= _e1024);
+                                                    phi_2725_ = (0.19634955f <= _e1023);
                                                 }
-                                                let _e1028 = phi_2725_;
-                                                let _e1029 = select(_e1024, 0.19634955f, _e1028);
-                                                let _e1033 = (_e926 - (_e412 * _e945));
-                                                let _e1034 = (_e927 - (_e413 * _e945));
-                                                let _e1035 = (_e928 - (_e414 * _e945));
-                                                let _e1042 = (1f / sqrt((((_e926 * _e926) + (_e927 * _e927)) + (_e928 * _e928))));
-                                                let _e1050 = ((((_e926 * _e1042) * _e412) + ((_e927 * _e1042) * _e413)) + ((_e928 * _e1042) * _e414));
-                                                let _e1059 = ((((acos(select(-1f, select(1f, _e1050, (_e1050 < 1f)), (_e1050 > -1f))) + _e1029) - _e1023) + 1.5707964f) * 0.31830987f);
-                                                let _e1063 = select(0f, select(1f, _e1059, (_e1059 < 1f)), (_e1059 > 0f));
-                                                let _e1070 = (1f / sqrt((((_e1033 * _e1033) + (_e1034 * _e1034)) + (_e1035 * _e1035))));
-                                                let _e1078 = ((((_e1033 * _e1070) * _e412) + ((_e1034 * _e1070) * _e413)) + ((_e1035 * _e1070) * _e414));
-                                                let _e1087 = ((((acos(select(-1f, select(1f, _e1078, (_e1078 < 1f)), (_e1078 > -1f))) + _e1029) - _e1023) + 1.5707964f) * 0.31830987f);
-                                                let _e1091 = select(0f, select(1f, _e1087, (_e1087 < 1f)), (_e1087 > 0f));
-                                                let _e1092 = (_e1063 != _e1063);
-                                                if _e1092 {
+                                                let _e1027 = phi_2725_;
+                                                let _e1028 = select(_e1023, 0.19634955f, _e1027);
+                                                let _e1032 = (_e925 - (_e412 * _e944));
+                                                let _e1033 = (_e926 - (_e413 * _e944));
+                                                let _e1034 = (_e927 - (_e414 * _e944));
+                                                let _e1041 = (1f / sqrt((((_e925 * _e925) + (_e926 * _e926)) + (_e927 * _e927))));
+                                                let _e1049 = ((((_e925 * _e1041) * _e412) + ((_e926 * _e1041) * _e413)) + ((_e927 * _e1041) * _e414));
+                                                let _e1058 = ((((acos(select(-1f, select(1f, _e1049, (_e1049 < 1f)), (_e1049 > -1f))) + _e1028) - _e1022) + 1.5707964f) * 0.31830987f);
+                                                let _e1062 = select(0f, select(1f, _e1058, (_e1058 < 1f)), (_e1058 > 0f));
+                                                let _e1069 = (1f / sqrt((((_e1032 * _e1032) + (_e1033 * _e1033)) + (_e1034 * _e1034))));
+                                                let _e1077 = ((((_e1032 * _e1069) * _e412) + ((_e1033 * _e1069) * _e413)) + ((_e1034 * _e1069) * _e414));
+                                                let _e1086 = ((((acos(select(-1f, select(1f, _e1077, (_e1077 < 1f)), (_e1077 > -1f))) + _e1028) - _e1022) + 1.5707964f) * 0.31830987f);
+                                                let _e1090 = select(0f, select(1f, _e1086, (_e1086 < 1f)), (_e1086 > 0f));
+                                                let _e1091 = (_e1062 != _e1062);
+                                                if _e1091 {
                                                     phi_2740_ = true;
                                                 } else {
-                                                    phi_2740_ = (_e1091 <= _e1063);
+                                                    phi_2740_ = (_e1090 <= _e1062);
                                                 }
-                                                let _e1095 = phi_2740_;
-                                                let _e1096 = select(_e1063, _e1091, _e1095);
-                                                if _e1092 {
+                                                let _e1094 = phi_2740_;
+                                                let _e1095 = select(_e1062, _e1090, _e1094);
+                                                if _e1091 {
                                                     phi_2755_ = true;
                                                 } else {
-                                                    phi_2755_ = (_e1091 >= _e1063);
+                                                    phi_2755_ = (_e1090 >= _e1062);
                                                 }
-                                                let _e1099 = phi_2755_;
-                                                let _e1100 = select(_e1063, _e1091, _e1099);
-                                                let _e1102 = floor((32f * _e1096));
-                                                let _e1107 = select(select(u32(_e1102), 0u, (_e1102 < 0f)), 4294967295u, (_e1102 > 4294967000f));
-                                                if (_e948 == 1u) {
-                                                    let _e1117 = (_e1100 <= _e1096);
-                                                    if _e1117 {
+                                                let _e1098 = phi_2755_;
+                                                let _e1099 = select(_e1062, _e1090, _e1098);
+                                                let _e1101 = floor((32f * _e1095));
+                                                let _e1106 = select(select(u32(_e1101), 0u, (_e1101 < 0f)), 4294967295u, (_e1101 > 4294967000f));
+                                                if (_e947 == 1u) {
+                                                    let _e1116 = (_e1099 <= _e1095);
+                                                    if _e1116 {
                                                         phi_1666_ = u32();
                                                     } else {
-                                                        let _e1119 = ceil((32f * _e1100));
-                                                        let _e1124 = select(select(u32(_e1119), 0u, (_e1119 < 0f)), 4294967295u, (_e1119 > 4294967000f));
-                                                        let _e1126 = select(_e1124, 32u, (32u < _e1124));
-                                                        if (_e1126 > _e1107) {
-                                                            phi_1665_ = (_e1126 - _e1107);
+                                                        let _e1118 = ceil((32f * _e1099));
+                                                        let _e1123 = select(select(u32(_e1118), 0u, (_e1118 < 0f)), 4294967295u, (_e1118 > 4294967000f));
+                                                        let _e1125 = select(_e1123, 32u, (32u < _e1123));
+                                                        if (_e1125 > _e1106) {
+                                                            phi_1665_ = (_e1125 - _e1106);
                                                         } else {
                                                             phi_1665_ = 0u;
                                                         }
-                                                        let _e1130 = phi_1665_;
-                                                        phi_1666_ = _e1130;
+                                                        let _e1129 = phi_1665_;
+                                                        phi_1666_ = _e1129;
                                                     }
-                                                    let _e1132 = phi_1666_;
-                                                    phi_1678_ = _e1132;
-                                                    phi_1679_ = select(true, false, _e1117);
+                                                    let _e1131 = phi_1666_;
+                                                    phi_1678_ = _e1131;
+                                                    phi_1679_ = select(true, false, _e1116);
                                                 } else {
-                                                    let _e1111 = ceil((32f * (_e1100 - _e1096)));
-                                                    phi_1678_ = select(select(u32(_e1111), 0u, (_e1111 < 0f)), 4294967295u, (_e1111 > 4294967000f));
+                                                    let _e1110 = ceil((32f * (_e1099 - _e1095)));
+                                                    phi_1678_ = select(select(u32(_e1110), 0u, (_e1110 < 0f)), 4294967295u, (_e1110 > 4294967000f));
                                                     phi_1679_ = true;
                                                 }
-                                                let _e1135 = phi_1678_;
-                                                let _e1137 = phi_1679_;
-                                                if _e1137 {
-                                                    if (_e1107 >= 32u) {
+                                                let _e1134 = phi_1678_;
+                                                let _e1136 = phi_1679_;
+                                                if _e1136 {
+                                                    if (_e1106 >= 32u) {
                                                         phi_1702_ = u32();
                                                         phi_1703_ = true;
                                                     } else {
-                                                        let _e1139 = (_e1135 == 0u);
-                                                        if _e1139 {
+                                                        let _e1138 = (_e1134 == 0u);
+                                                        if _e1138 {
                                                             phi_1701_ = u32();
                                                         } else {
-                                                            if (_e1135 >= 32u) {
+                                                            if (_e1134 >= 32u) {
                                                                 phi_1698_ = 4294967295u;
                                                             } else {
-                                                                phi_1698_ = ((1u << bitcast<u32>((_e1135 & 31u))) - 1u);
+                                                                phi_1698_ = ((1u << bitcast<u32>((_e1134 & 31u))) - 1u);
                                                             }
-                                                            let _e1146 = phi_1698_;
-                                                            phi_1701_ = (_e1146 << bitcast<u32>((_e1107 & 31u)));
+                                                            let _e1145 = phi_1698_;
+                                                            phi_1701_ = (_e1145 << bitcast<u32>((_e1106 & 31u)));
                                                         }
-                                                        let _e1151 = phi_1701_;
-                                                        phi_1702_ = _e1151;
-                                                        phi_1703_ = _e1139;
+                                                        let _e1150 = phi_1701_;
+                                                        phi_1702_ = _e1150;
+                                                        phi_1703_ = _e1138;
                                                     }
-                                                    let _e1153 = phi_1702_;
-                                                    let _e1155 = phi_1703_;
-                                                    phi_1708_ = select(_e1153, 0u, _e1155);
+                                                    let _e1152 = phi_1702_;
+                                                    let _e1154 = phi_1703_;
+                                                    phi_1708_ = select(_e1152, 0u, _e1154);
                                                 } else {
                                                     phi_1708_ = 0u;
                                                 }
-                                                let _e1158 = phi_1708_;
-                                                phi_1709_ = _e1158;
+                                                let _e1157 = phi_1708_;
+                                                phi_1709_ = _e1157;
                                             }
-                                            let _e1160 = phi_1709_;
-                                            phi_1710_ = _e1160;
+                                            let _e1159 = phi_1709_;
+                                            phi_1710_ = _e1159;
                                         } else {
                                             phi_1710_ = 0u;
                                         }
-                                        let _e1162 = phi_1710_;
-                                        let _e1164 = (((((_e757 * 2f) - 1f) * _e389) * _e917) - _e391);
-                                        let _e1165 = (((((_e758 * -2f) + 1f) * _e399) * _e917) - _e401);
-                                        let _e1166 = (_e917 - _e381);
-                                        if _e932 {
-                                            phi_1738_ = select(true, false, (sqrt((((_e1164 * _e1164) + (_e1165 * _e1165)) + (_e1166 * _e1166))) > _e931));
+                                        let _e1161 = phi_1710_;
+                                        let _e1163 = (((((_e756 * 2f) - 1f) * _e389) * _e916) - _e391);
+                                        let _e1164 = (((((_e757 * -2f) + 1f) * _e399) * _e916) - _e401);
+                                        let _e1165 = (_e916 - _e381);
+                                        if _e931 {
+                                            phi_1738_ = select(true, false, (sqrt((((_e1163 * _e1163) + (_e1164 * _e1164)) + (_e1165 * _e1165))) > _e930));
                                         } else {
                                             phi_1738_ = true;
                                         }
-                                        let _e1176 = phi_1738_;
-                                        if _e1176 {
-                                            let _e1179 = params.member.member;
-                                            let _e1182 = params.member.member_3;
-                                            let _e1187 = (((_e1164 * _e412) + (_e1165 * _e413)) + (_e1166 * _e414));
-                                            let _e1191 = (_e1164 - (_e412 * _e1187));
-                                            let _e1192 = (_e1165 - (_e413 * _e1187));
-                                            let _e1193 = (_e1166 - (_e414 * _e1187));
-                                            if (sqrt((((_e1191 * _e1191) + (_e1192 * _e1192)) + (_e1193 * _e1193))) <= 0f) {
+                                        let _e1175 = phi_1738_;
+                                        if _e1175 {
+                                            let _e1178 = params.member.member;
+                                            let _e1181 = params.member.member_3;
+                                            let _e1186 = (((_e1163 * _e412) + (_e1164 * _e413)) + (_e1165 * _e414));
+                                            let _e1190 = (_e1163 - (_e412 * _e1186));
+                                            let _e1191 = (_e1164 - (_e413 * _e1186));
+                                            let _e1192 = (_e1165 - (_e414 * _e1186));
+                                            if (sqrt((((_e1190 * _e1190) + (_e1191 * _e1191)) + (_e1192 * _e1192))) <= 0f) {
                                                 phi_2043_ = 0u;
                                             } else {
-                                                let _e1203 = ((_e1192 * _e414) - (_e413 * _e1193));
-                                                let _e1206 = ((_e1193 * _e412) - (_e414 * _e1191));
-                                                let _e1209 = ((_e1191 * _e413) - (_e412 * _e1192));
-                                                let _e1216 = (1f / sqrt((((_e1203 * _e1203) + (_e1206 * _e1206)) + (_e1209 * _e1209))));
-                                                let _e1217 = (_e1203 * _e1216);
-                                                let _e1218 = (_e1206 * _e1216);
-                                                let _e1219 = (_e1209 * _e1216);
-                                                let _e1224 = (((_e487.x * _e1217) + (_e487.y * _e1218)) + (_e487.z * _e1219));
-                                                let _e1228 = (_e487.x - (_e1217 * _e1224));
-                                                let _e1229 = (_e487.y - (_e1218 * _e1224));
-                                                let _e1230 = (_e487.z - (_e1219 * _e1224));
-                                                let _e1236 = sqrt((((_e1228 * _e1228) + (_e1229 * _e1229)) + (_e1230 * _e1230)));
-                                                let _e1242 = ((((_e1228 * _e412) + (_e1229 * _e413)) + (_e1230 * _e414)) / _e1236);
-                                                let _e1246 = select(0f, select(1f, _e1242, (_e1242 < 1f)), (_e1242 > 0f));
-                                                if ((((_e1191 * _e1228) + (_e1192 * _e1229)) + (_e1193 * _e1230)) < 0f) {
-                                                    phi_1854_ = -(acos(_e1246));
+                                                let _e1202 = ((_e1191 * _e414) - (_e413 * _e1192));
+                                                let _e1205 = ((_e1192 * _e412) - (_e414 * _e1190));
+                                                let _e1208 = ((_e1190 * _e413) - (_e412 * _e1191));
+                                                let _e1215 = (1f / sqrt((((_e1202 * _e1202) + (_e1205 * _e1205)) + (_e1208 * _e1208))));
+                                                let _e1216 = (_e1202 * _e1215);
+                                                let _e1217 = (_e1205 * _e1215);
+                                                let _e1218 = (_e1208 * _e1215);
+                                                let _e1223 = (((_e487.x * _e1216) + (_e487.y * _e1217)) + (_e487.z * _e1218));
+                                                let _e1227 = (_e487.x - (_e1216 * _e1223));
+                                                let _e1228 = (_e487.y - (_e1217 * _e1223));
+                                                let _e1229 = (_e487.z - (_e1218 * _e1223));
+                                                let _e1235 = sqrt((((_e1227 * _e1227) + (_e1228 * _e1228)) + (_e1229 * _e1229)));
+                                                let _e1241 = ((((_e1227 * _e412) + (_e1228 * _e413)) + (_e1229 * _e414)) / _e1235);
+                                                let _e1245 = select(0f, select(1f, _e1241, (_e1241 < 1f)), (_e1241 > 0f));
+                                                if ((((_e1190 * _e1227) + (_e1191 * _e1228)) + (_e1192 * _e1229)) < 0f) {
+                                                    phi_1854_ = -(acos(_e1245));
                                                 } else {
-                                                    phi_1854_ = acos(_e1246);
+                                                    phi_1854_ = acos(_e1245);
                                                 }
-                                                let _e1257 = phi_1854_;
-                                                let _e1258 = (0.02f / _e1236);
-                                                if (_e1258 != _e1258) {
+                                                let _e1256 = phi_1854_;
+                                                let _e1257 = (0.02f / _e1235);
+                                                if (_e1257 != _e1257) {
                                                     phi_2770_ = true;
                                                 } else {
-                                                    phi_2770_ = (0.19634955f <= _e1258);
+                                                    phi_2770_ = (0.19634955f <= _e1257);
                                                 }
-                                                let _e1262 = phi_2770_;
-                                                let _e1263 = select(_e1258, 0.19634955f, _e1262);
-                                                let _e1267 = (_e1164 - (_e412 * _e1179));
-                                                let _e1268 = (_e1165 - (_e413 * _e1179));
-                                                let _e1269 = (_e1166 - (_e414 * _e1179));
-                                                let _e1276 = (1f / sqrt((((_e1164 * _e1164) + (_e1165 * _e1165)) + (_e1166 * _e1166))));
-                                                let _e1284 = ((((_e1164 * _e1276) * _e412) + ((_e1165 * _e1276) * _e413)) + ((_e1166 * _e1276) * _e414));
-                                                let _e1293 = ((((acos(select(-1f, select(1f, _e1284, (_e1284 < 1f)), (_e1284 > -1f))) + _e1263) - _e1257) + 1.5707964f) * 0.31830987f);
-                                                let _e1304 = (1f / sqrt((((_e1267 * _e1267) + (_e1268 * _e1268)) + (_e1269 * _e1269))));
-                                                let _e1312 = ((((_e1267 * _e1304) * _e412) + ((_e1268 * _e1304) * _e413)) + ((_e1269 * _e1304) * _e414));
-                                                let _e1321 = ((((acos(select(-1f, select(1f, _e1312, (_e1312 < 1f)), (_e1312 > -1f))) + _e1263) - _e1257) + 1.5707964f) * 0.31830987f);
-                                                let _e1326 = (1f - select(0f, select(1f, _e1293, (_e1293 < 1f)), (_e1293 > 0f)));
-                                                let _e1327 = (1f - select(0f, select(1f, _e1321, (_e1321 < 1f)), (_e1321 > 0f)));
-                                                let _e1328 = (_e1326 != _e1326);
-                                                if _e1328 {
+                                                let _e1261 = phi_2770_;
+                                                let _e1262 = select(_e1257, 0.19634955f, _e1261);
+                                                let _e1266 = (_e1163 - (_e412 * _e1178));
+                                                let _e1267 = (_e1164 - (_e413 * _e1178));
+                                                let _e1268 = (_e1165 - (_e414 * _e1178));
+                                                let _e1275 = (1f / sqrt((((_e1163 * _e1163) + (_e1164 * _e1164)) + (_e1165 * _e1165))));
+                                                let _e1283 = ((((_e1163 * _e1275) * _e412) + ((_e1164 * _e1275) * _e413)) + ((_e1165 * _e1275) * _e414));
+                                                let _e1292 = ((((acos(select(-1f, select(1f, _e1283, (_e1283 < 1f)), (_e1283 > -1f))) + _e1262) - _e1256) + 1.5707964f) * 0.31830987f);
+                                                let _e1303 = (1f / sqrt((((_e1266 * _e1266) + (_e1267 * _e1267)) + (_e1268 * _e1268))));
+                                                let _e1311 = ((((_e1266 * _e1303) * _e412) + ((_e1267 * _e1303) * _e413)) + ((_e1268 * _e1303) * _e414));
+                                                let _e1320 = ((((acos(select(-1f, select(1f, _e1311, (_e1311 < 1f)), (_e1311 > -1f))) + _e1262) - _e1256) + 1.5707964f) * 0.31830987f);
+                                                let _e1325 = (1f - select(0f, select(1f, _e1292, (_e1292 < 1f)), (_e1292 > 0f)));
+                                                let _e1326 = (1f - select(0f, select(1f, _e1320, (_e1320 < 1f)), (_e1320 > 0f)));
+                                                let _e1327 = (_e1325 != _e1325);
+                                                if _e1327 {
                                                     phi_2785_ = true;
                                                 } else {
-                                                    phi_2785_ = (_e1327 <= _e1326);
+                                                    phi_2785_ = (_e1326 <= _e1325);
                                                 }
-                                                let _e1331 = phi_2785_;
-                                                let _e1332 = select(_e1326, _e1327, _e1331);
-                                                if _e1328 {
+                                                let _e1330 = phi_2785_;
+                                                let _e1331 = select(_e1325, _e1326, _e1330);
+                                                if _e1327 {
                                                     phi_2800_ = true;
                                                 } else {
-                                                    phi_2800_ = (_e1327 >= _e1326);
+                                                    phi_2800_ = (_e1326 >= _e1325);
                                                 }
-                                                let _e1335 = phi_2800_;
-                                                let _e1336 = select(_e1326, _e1327, _e1335);
-                                                let _e1338 = floor((32f * _e1332));
-                                                let _e1343 = select(select(u32(_e1338), 0u, (_e1338 < 0f)), 4294967295u, (_e1338 > 4294967000f));
-                                                if (_e1182 == 1u) {
-                                                    let _e1353 = (_e1336 <= _e1332);
-                                                    if _e1353 {
+                                                let _e1334 = phi_2800_;
+                                                let _e1335 = select(_e1325, _e1326, _e1334);
+                                                let _e1337 = floor((32f * _e1331));
+                                                let _e1342 = select(select(u32(_e1337), 0u, (_e1337 < 0f)), 4294967295u, (_e1337 > 4294967000f));
+                                                if (_e1181 == 1u) {
+                                                    let _e1352 = (_e1335 <= _e1331);
+                                                    if _e1352 {
                                                         phi_2000_ = u32();
                                                     } else {
-                                                        let _e1355 = ceil((32f * _e1336));
-                                                        let _e1360 = select(select(u32(_e1355), 0u, (_e1355 < 0f)), 4294967295u, (_e1355 > 4294967000f));
-                                                        let _e1362 = select(_e1360, 32u, (32u < _e1360));
-                                                        if (_e1362 > _e1343) {
-                                                            phi_1999_ = (_e1362 - _e1343);
+                                                        let _e1354 = ceil((32f * _e1335));
+                                                        let _e1359 = select(select(u32(_e1354), 0u, (_e1354 < 0f)), 4294967295u, (_e1354 > 4294967000f));
+                                                        let _e1361 = select(_e1359, 32u, (32u < _e1359));
+                                                        if (_e1361 > _e1342) {
+                                                            phi_1999_ = (_e1361 - _e1342);
                                                         } else {
                                                             phi_1999_ = 0u;
                                                         }
-                                                        let _e1366 = phi_1999_;
-                                                        phi_2000_ = _e1366;
+                                                        let _e1365 = phi_1999_;
+                                                        phi_2000_ = _e1365;
                                                     }
-                                                    let _e1368 = phi_2000_;
-                                                    phi_2012_ = _e1368;
-                                                    phi_2013_ = select(true, false, _e1353);
+                                                    let _e1367 = phi_2000_;
+                                                    phi_2012_ = _e1367;
+                                                    phi_2013_ = select(true, false, _e1352);
                                                 } else {
-                                                    let _e1347 = ceil((32f * (_e1336 - _e1332)));
-                                                    phi_2012_ = select(select(u32(_e1347), 0u, (_e1347 < 0f)), 4294967295u, (_e1347 > 4294967000f));
+                                                    let _e1346 = ceil((32f * (_e1335 - _e1331)));
+                                                    phi_2012_ = select(select(u32(_e1346), 0u, (_e1346 < 0f)), 4294967295u, (_e1346 > 4294967000f));
                                                     phi_2013_ = true;
                                                 }
-                                                let _e1371 = phi_2012_;
-                                                let _e1373 = phi_2013_;
-                                                if _e1373 {
-                                                    if (_e1343 >= 32u) {
+                                                let _e1370 = phi_2012_;
+                                                let _e1372 = phi_2013_;
+                                                if _e1372 {
+                                                    if (_e1342 >= 32u) {
                                                         phi_2036_ = u32();
                                                         phi_2037_ = true;
                                                     } else {
-                                                        let _e1375 = (_e1371 == 0u);
-                                                        if _e1375 {
+                                                        let _e1374 = (_e1370 == 0u);
+                                                        if _e1374 {
                                                             phi_2035_ = u32();
                                                         } else {
-                                                            if (_e1371 >= 32u) {
+                                                            if (_e1370 >= 32u) {
                                                                 phi_2032_ = 4294967295u;
                                                             } else {
-                                                                phi_2032_ = ((1u << bitcast<u32>((_e1371 & 31u))) - 1u);
+                                                                phi_2032_ = ((1u << bitcast<u32>((_e1370 & 31u))) - 1u);
                                                             }
-                                                            let _e1382 = phi_2032_;
-                                                            phi_2035_ = (_e1382 << bitcast<u32>((_e1343 & 31u)));
+                                                            let _e1381 = phi_2032_;
+                                                            phi_2035_ = (_e1381 << bitcast<u32>((_e1342 & 31u)));
                                                         }
-                                                        let _e1387 = phi_2035_;
-                                                        phi_2036_ = _e1387;
-                                                        phi_2037_ = _e1375;
+                                                        let _e1386 = phi_2035_;
+                                                        phi_2036_ = _e1386;
+                                                        phi_2037_ = _e1374;
                                                     }
-                                                    let _e1389 = phi_2036_;
-                                                    let _e1391 = phi_2037_;
-                                                    phi_2042_ = select(_e1389, 0u, _e1391);
+                                                    let _e1388 = phi_2036_;
+                                                    let _e1390 = phi_2037_;
+                                                    phi_2042_ = select(_e1388, 0u, _e1390);
                                                 } else {
                                                     phi_2042_ = 0u;
                                                 }
-                                                let _e1394 = phi_2042_;
-                                                phi_2043_ = _e1394;
+                                                let _e1393 = phi_2042_;
+                                                phi_2043_ = _e1393;
                                             }
-                                            let _e1396 = phi_2043_;
-                                            phi_2044_ = _e1396;
+                                            let _e1395 = phi_2043_;
+                                            phi_2044_ = _e1395;
                                         } else {
                                             phi_2044_ = 0u;
                                         }
-                                        let _e1398 = phi_2044_;
-                                        phi_1166_ = (_e675 + 1u);
-                                        phi_1169_ = ((_e677 | _e1162) | _e1398);
+                                        let _e1397 = phi_2044_;
+                                        phi_1166_ = (_e674 + 1u);
+                                        phi_1169_ = ((_e676 | _e1161) | _e1397);
                                     } else {
                                         phi_1166_ = u32();
                                         phi_1169_ = u32();
                                     }
-                                    let _e1402 = phi_1166_;
-                                    let _e1404 = phi_1169_;
+                                    let _e1401 = phi_1166_;
+                                    let _e1403 = phi_1169_;
                                     continue;
                                     continuing {
-                                        phi_1165_ = _e1402;
-                                        phi_1168_ = _e1404;
-                                        phi_2845_ = _e581;
-                                        break if !(_e678);
+                                        phi_1165_ = _e1401;
+                                        phi_1168_ = _e1403;
+                                        phi_2845_ = _e580;
+                                        break if !(_e677);
                                     }
                                 }
-                                let _e1407 = phi_2845_;
-                                phi_3017_ = _e1407;
-                                if _e1407 {
+                                let _e1406 = phi_2845_;
+                                phi_3017_ = _e1406;
+                                if _e1406 {
                                     break;
                                 }
-                                let _e1410 = params.member.member_2;
-                                if (_e1410 == 2u) {
-                                    let _e1466 = (_e667 - 1.5707964f);
-                                    let _e1467 = (_e1466 * 2f);
-                                    let _e1468 = sin(_e667);
-                                    let _e1473 = ((_e665 + (_e1467 * _e1468)) - cos((_e1467 - _e667)));
-                                    if (_e1466 < 0f) {
-                                        phi_2073_ = (_e1473 * -0.25f);
+                                let _e1409 = params.member.member_2;
+                                if (_e1409 == 2u) {
+                                    let _e1465 = (_e666 - 1.5707964f);
+                                    let _e1466 = (_e1465 * 2f);
+                                    let _e1467 = sin(_e666);
+                                    let _e1472 = ((_e664 + (_e1466 * _e1467)) - cos((_e1466 - _e666)));
+                                    if (_e1465 < 0f) {
+                                        phi_2073_ = (_e1472 * -0.25f);
                                     } else {
-                                        phi_2073_ = (_e1473 * 0.25f);
+                                        phi_2073_ = (_e1472 * 0.25f);
                                     }
-                                    let _e1478 = phi_2073_;
+                                    let _e1477 = phi_2073_;
                                     phi_2075_ = 0u;
-                                    phi_2078_ = _e1478;
+                                    phi_2078_ = _e1477;
                                     phi_2080_ = 0f;
                                     loop {
-                                        let _e1480 = phi_2075_;
-                                        let _e1482 = phi_2078_;
-                                        let _e1484 = phi_2080_;
-                                        local_8 = _e1484;
-                                        let _e1485 = (_e1480 < 32u);
-                                        if _e1485 {
-                                            let _e1486 = (_e1480 + 1u);
-                                            let _e1489 = (_e1466 + (f32(_e1486) * 0.09817477f));
-                                            let _e1490 = (_e1489 * 2f);
-                                            let _e1495 = ((_e665 + (_e1490 * _e1468)) - cos((_e1490 - _e667)));
-                                            if (_e1489 < 0f) {
-                                                phi_2106_ = (_e1495 * -0.25f);
+                                        let _e1479 = phi_2075_;
+                                        let _e1481 = phi_2078_;
+                                        let _e1483 = phi_2080_;
+                                        local_8 = _e1483;
+                                        let _e1484 = (_e1479 < 32u);
+                                        if _e1484 {
+                                            let _e1485 = (_e1479 + 1u);
+                                            let _e1488 = (_e1465 + (f32(_e1485) * 0.09817477f));
+                                            let _e1489 = (_e1488 * 2f);
+                                            let _e1494 = ((_e664 + (_e1489 * _e1467)) - cos((_e1489 - _e666)));
+                                            if (_e1488 < 0f) {
+                                                phi_2106_ = (_e1494 * -0.25f);
                                             } else {
-                                                phi_2106_ = (_e1495 * 0.25f);
+                                                phi_2106_ = (_e1494 * 0.25f);
                                             }
-                                            let _e1500 = phi_2106_;
-                                            let _e1503 = local_7;
-                                            if (((_e1503 >> bitcast<u32>((_e1480 & 31u))) & 1u) == 0u) {
-                                                phi_2116_ = (_e1484 + (_e1500 - _e1482));
+                                            let _e1499 = phi_2106_;
+                                            let _e1502 = local_7;
+                                            if (((_e1502 >> bitcast<u32>((_e1479 & 31u))) & 1u) == 0u) {
+                                                phi_2116_ = (_e1483 + (_e1499 - _e1481));
                                             } else {
-                                                phi_2116_ = _e1484;
+                                                phi_2116_ = _e1483;
                                             }
-                                            let _e1511 = phi_2116_;
-                                            phi_2076_ = _e1486;
-                                            phi_2079_ = _e1500;
-                                            phi_2081_ = _e1511;
+                                            let _e1510 = phi_2116_;
+                                            phi_2076_ = _e1485;
+                                            phi_2079_ = _e1499;
+                                            phi_2081_ = _e1510;
                                         } else {
                                             phi_2076_ = u32();
                                             phi_2079_ = f32();
                                             phi_2081_ = f32();
                                         }
-                                        let _e1513 = phi_2076_;
-                                        let _e1515 = phi_2079_;
-                                        let _e1517 = phi_2081_;
+                                        let _e1512 = phi_2076_;
+                                        let _e1514 = phi_2079_;
+                                        let _e1516 = phi_2081_;
                                         continue;
                                         continuing {
-                                            phi_2075_ = _e1513;
-                                            phi_2078_ = _e1515;
-                                            phi_2080_ = _e1517;
-                                            break if !(_e1485);
+                                            phi_2075_ = _e1512;
+                                            phi_2078_ = _e1514;
+                                            phi_2080_ = _e1516;
+                                            break if !(_e1484);
                                         }
                                     }
-                                    let _e1520 = local_8;
-                                    phi_3019_ = _e1407;
-                                    phi_2180_ = (_e585 + 1f);
-                                    phi_2181_ = (_e587 + ((_e646 + ((1f - _e646) * 0.05f)) * _e1520));
+                                    let _e1519 = local_8;
+                                    phi_3019_ = _e1406;
+                                    phi_2180_ = (_e584 + 1f);
+                                    phi_2181_ = (_e586 + ((_e645 + ((1f - _e645) * 0.05f)) * _e1519));
                                 } else {
-                                    if (_e1410 == 1u) {
+                                    if (_e1409 == 1u) {
                                         phi_2128_ = 0u;
                                         phi_2131_ = 0f;
                                         loop {
-                                            let _e1422 = phi_2128_;
-                                            let _e1424 = phi_2131_;
-                                            local_6 = _e1424;
-                                            let _e1425 = (_e1422 < 4u);
-                                            if _e1425 {
+                                            let _e1421 = phi_2128_;
+                                            let _e1423 = phi_2131_;
+                                            local_6 = _e1423;
+                                            let _e1424 = (_e1421 < 4u);
+                                            if _e1424 {
                                                 local = array<type_25, 4>(type_25(4026531855u, 0.0095061f), type_25(251658480u, 0.0270951f), type_25(15732480u, 0.0405571f), type_25(1044480u, 0.0478421f));
-                                                if _e1425 {
+                                                if _e1424 {
                                                 } else {
                                                     phi_3014_ = true;
                                                     break;
                                                 }
-                                                let _e1428 = local[_e1422].member;
-                                                let _e1431 = local[_e1422].member_1;
-                                                let _e1433 = local_5;
-                                                phi_2129_ = (_e1422 + 1u);
-                                                phi_2132_ = (_e1424 + (f32(countOneBits((_e1433 & _e1428))) * _e1431));
+                                                let _e1427 = local[_e1421].member;
+                                                let _e1430 = local[_e1421].member_1;
+                                                let _e1432 = local_5;
+                                                phi_2129_ = (_e1421 + 1u);
+                                                phi_2132_ = (_e1423 + (f32(countOneBits((_e1432 & _e1427))) * _e1430));
                                             } else {
                                                 phi_2129_ = u32();
                                                 phi_2132_ = f32();
                                             }
-                                            let _e1441 = phi_2129_;
-                                            let _e1443 = phi_2132_;
+                                            let _e1440 = phi_2129_;
+                                            let _e1442 = phi_2132_;
                                             continue;
                                             continuing {
-                                                phi_2128_ = _e1441;
-                                                phi_2131_ = _e1443;
-                                                phi_3014_ = _e1407;
-                                                break if !(_e1425);
+                                                phi_2128_ = _e1440;
+                                                phi_2131_ = _e1442;
+                                                phi_3014_ = _e1406;
+                                                break if !(_e1424);
                                             }
                                         }
-                                        let _e1446 = phi_3014_;
-                                        phi_3017_ = _e1446;
-                                        if _e1446 {
+                                        let _e1445 = phi_3014_;
+                                        phi_3017_ = _e1445;
+                                        if _e1445 {
                                             break;
                                         }
-                                        let _e1448 = local_6;
-                                        let _e1449 = (1f - _e1448);
-                                        phi_3025_ = _e1446;
-                                        phi_2178_ = (_e585 + _e646);
-                                        phi_2179_ = (_e587 + (_e646 * select(0f, select(1f, _e1449, (_e1449 < 1f)), (_e1449 > 0f))));
+                                        let _e1447 = local_6;
+                                        let _e1448 = (1f - _e1447);
+                                        phi_3025_ = _e1445;
+                                        phi_2178_ = (_e584 + _e645);
+                                        phi_2179_ = (_e586 + (_e645 * select(0f, select(1f, _e1448, (_e1448 < 1f)), (_e1448 > 0f))));
                                     } else {
-                                        let _e1414 = local_4;
-                                        phi_3025_ = _e1407;
-                                        phi_2178_ = (_e585 + 1f);
-                                        phi_2179_ = (_e587 + (1f - (f32(countOneBits(_e1414)) * 0.03125f)));
+                                        let _e1413 = local_4;
+                                        phi_3025_ = _e1406;
+                                        phi_2178_ = (_e584 + 1f);
+                                        phi_2179_ = (_e586 + (1f - (f32(countOneBits(_e1413)) * 0.03125f)));
                                     }
-                                    let _e1458 = phi_3025_;
-                                    let _e1460 = phi_2178_;
-                                    let _e1462 = phi_2179_;
-                                    phi_3019_ = _e1458;
-                                    phi_2180_ = _e1460;
-                                    phi_2181_ = _e1462;
+                                    let _e1457 = phi_3025_;
+                                    let _e1459 = phi_2178_;
+                                    let _e1461 = phi_2179_;
+                                    phi_3019_ = _e1457;
+                                    phi_2180_ = _e1459;
+                                    phi_2181_ = _e1461;
                                 }
-                                let _e1525 = phi_3019_;
-                                let _e1527 = phi_2180_;
-                                let _e1529 = phi_2181_;
-                                phi_3018_ = _e1525;
-                                phi_991_ = (_e583 + 1u);
-                                phi_994_ = _e1527;
-                                phi_996_ = _e1529;
+                                let _e1524 = phi_3019_;
+                                let _e1526 = phi_2180_;
+                                let _e1528 = phi_2181_;
+                                phi_3018_ = _e1524;
+                                phi_991_ = (_e582 + 1u);
+                                phi_994_ = _e1526;
+                                phi_996_ = _e1528;
                             } else {
-                                phi_3018_ = _e581;
+                                phi_3018_ = _e580;
                                 phi_991_ = u32();
                                 phi_994_ = f32();
                                 phi_996_ = f32();
                             }
-                            let _e1532 = phi_3018_;
-                            let _e1534 = phi_991_;
-                            let _e1536 = phi_994_;
-                            let _e1538 = phi_996_;
+                            let _e1531 = phi_3018_;
+                            let _e1533 = phi_991_;
+                            let _e1535 = phi_994_;
+                            let _e1537 = phi_996_;
                             continue;
                             continuing {
-                                phi_2897_ = _e1532;
-                                phi_990_ = _e1534;
-                                phi_993_ = _e1536;
-                                phi_995_ = _e1538;
-                                phi_3017_ = _e1532;
-                                break if !(_e588);
+                                phi_2897_ = _e1531;
+                                phi_990_ = _e1533;
+                                phi_993_ = _e1535;
+                                phi_995_ = _e1537;
+                                phi_3017_ = _e1531;
+                                break if !(_e587);
                             }
                         }
-                        let _e1541 = phi_3017_;
-                        if _e1541 {
+                        let _e1540 = phi_3017_;
+                        if _e1540 {
                             break;
                         }
-                        let _e1543 = local_9;
-                        if (_e1543 > 0f) {
-                            let _e1546 = local_10;
-                            let _e1548 = local_11;
-                            phi_2188_ = (_e1546 / _e1548);
+                        let _e1542 = local_9;
+                        if (_e1542 > 0f) {
+                            let _e1545 = local_10;
+                            let _e1547 = local_11;
+                            phi_2188_ = (_e1545 / _e1547);
                         } else {
                             phi_2188_ = 1f;
                         }
-                        let _e1551 = phi_2188_;
-                        let _e1555 = params.member.member_4.member_6;
-                        let _e1556 = pow(_e1551, _e1555);
-                        if (_e1556 != _e1556) {
+                        let _e1550 = phi_2188_;
+                        let _e1554 = params.member.member_4.member_6;
+                        let _e1555 = pow(_e1550, _e1554);
+                        if (_e1555 != _e1555) {
                             phi_2815_ = true;
                         } else {
-                            phi_2815_ = (0.03f >= _e1556);
+                            phi_2815_ = (0.03f >= _e1555);
                         }
-                        let _e1560 = phi_2815_;
-                        let _e1562 = (select(_e1556, 0.03f, _e1560) * 0.6666667f);
-                        let _e1568 = ((select(0f, select(1f, _e1562, (_e1562 < 1f)), (_e1562 > 0f)) * 255f) + 0.5f);
-                        phi_2236_ = type_28(select(select(u32(_e1568), 0u, (_e1568 < 0f)), 4294967295u, (_e1568 > 4294967000f)), _e374);
+                        let _e1559 = phi_2815_;
+                        let _e1561 = (select(_e1555, 0.03f, _e1559) * 0.6666667f);
+                        let _e1567 = ((select(0f, select(1f, _e1561, (_e1561 < 1f)), (_e1561 > 0f)) * 255f) + 0.5f);
+                        phi_2236_ = type_28(select(select(u32(_e1567), 0u, (_e1567 < 0f)), 4294967295u, (_e1567 > 4294967000f)), _e374);
                     } else {
                         phi_2236_ = type_28(170u, _e374);
                     }
-                    let _e1576 = phi_2236_;
+                    let _e1575 = phi_2236_;
                     if (_e119 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e119] = _e1576.member;
+                    terms.member[_e119] = _e1575.member;
                     if (_e119 < arrayLength((&edges.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e119] = _e1576.member_1;
+                    edges.member[_e119] = _e1575.member_1;
                 }
             }
             break;

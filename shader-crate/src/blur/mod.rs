@@ -7,7 +7,7 @@ pub mod graph;
 
 use crate::common::ViewParams;
 use crate::common::lanes::Lanes;
-use crate::common::math::is_valid_depth_lanes;
+use crate::common::math::is_valid_depth;
 use crate::glam::{IVec2, UVec2, UVec3};
 use spirv_std::spirv;
 
@@ -81,7 +81,7 @@ pub fn blur_lanes<L: Lanes>(params: &BlurParams, ao: &[f32], depth: &[f32], p: U
         }
         d += 1;
     }
-    L::select(is_valid_depth_lanes(z0, view.far), sum / weights, a0)
+    L::select(is_valid_depth(z0, view.far), sum / weights, a0)
 }
 
 #[spirv(compute(threads(8, 8), entry_point_name = "blur_main"))]

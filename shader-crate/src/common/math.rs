@@ -71,16 +71,17 @@ pub fn sign_nonzero(x: f32) -> f32 {
     if x < 0.0 { -1.0 } else { 1.0 }
 }
 
-/// True for a usable linear depth: finite, positive and in front of the far plane.
+/// True for a usable linear depth: finite, positive and in front of the far plane (per lane).
 #[inline]
-pub fn is_valid_depth(d: f32, far: f32) -> bool {
-    d > 0.0 && d < far
+pub fn is_valid_depth<L: Lanes>(d: L, far: f32) -> L::Mask {
+    L::and(d.gt(L::splat(0.0)), d.lt(L::splat(far)))
 }
 
-/// [`is_valid_depth`] per lane.
+/// A depth as the kernels read it: unusable depths (NaN, ±∞, ≤ 0, ≥ far) read as the far plane,
+/// where nothing occludes.
 #[inline]
-pub fn is_valid_depth_lanes<L: Lanes>(d: L, far: f32) -> L::Mask {
-    L::and(d.gt(L::splat(0.0)), d.lt(L::splat(far)))
+pub fn depth_or_far<L: Lanes>(d: L, far: f32) -> L {
+    L::select(is_valid_depth(d, far), d, L::splat(far))
 }
 
 /// XeGTAO's `fastSqrt` (spec gtao-raymarch-hybrid §1.7): the float with bits

@@ -10,7 +10,7 @@ use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, store_te
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
 #[cfg(not(target_arch = "spirv"))]
 use crate::common::lanes::{v2_from_lanes, v3_from_lanes};
-use crate::common::math::{ceil, clamp, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat};
+use crate::common::math::{ceil, clamp, depth_or_far, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::{decode_normal, encode_normal};
 use crate::common::screen_space::{clamp_index, neighbour, view_pos};
@@ -347,10 +347,7 @@ pub fn normal_from_depth(params: &GtaoParams, depth: &[f32], p: UVec2) -> u32 {
 #[inline]
 fn depth_point(params: &GtaoParams, depth: &[f32], q: UVec2) -> (Vec3, f32) {
     let view = &params.view;
-    let mut z = depth[(q.y * view.size().x + q.x) as usize];
-    if !is_valid_depth(z, view.far) {
-        z = view.far;
-    }
+    let z = depth_or_far(depth[(q.y * view.size().x + q.x) as usize], view.far);
     (view_pos(view, view.pixel_uv(q), z), z)
 }
 

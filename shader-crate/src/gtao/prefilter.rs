@@ -3,7 +3,7 @@
 //! the level above with a weighted average that prefers the farthest sample.
 
 use super::{GtaoParams, mip_offset, mip_size};
-use crate::common::math::is_valid_depth;
+use crate::common::math::depth_or_far;
 use crate::glam::{UVec2, uvec2};
 
 /// Largest working depth (the fp16 maximum, spec §2.5 step 1, §7.6).
@@ -41,10 +41,7 @@ pub fn prefilter_texel(params: &GtaoParams, depth: &[f32], mips: &[f32], t: UVec
     let full = view.size();
     let k = params.pass;
     if k == 0 {
-        let mut d = depth[(t.y * full.x + t.x) as usize];
-        if !is_valid_depth(d, view.far) {
-            d = view.far;
-        }
+        let d = depth_or_far(depth[(t.y * full.x + t.x) as usize], view.far);
         return crate::common::math::clamp(d, 0.0, MAX_WORKING_DEPTH);
     }
     let above = mip_size(full, k - 1);

@@ -13,7 +13,7 @@ pub mod settings;
 use crate::common::ViewParams;
 use crate::common::denoise_terms::{edges, pack_edges, store_term};
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
-use crate::common::math::{floor, is_valid_depth, is_valid_depth_lanes, rotate_minimal, sat};
+use crate::common::math::{depth_or_far, floor, is_valid_depth, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::decode_normal;
 use crate::common::screen_space::{clamp_index, neighbour, view_pos};
@@ -75,7 +75,7 @@ pub fn depth_at<L: Lanes>(view: &ViewParams, depth: &[f32], uv: L::V2) -> L {
         let y = clamp_index(floor(uv.y().lane(i) * v.res.y), size.y);
         (y * size.x + x) as usize
     });
-    L::select(is_valid_depth_lanes(d, view.far), d, L::splat(view.far))
+    depth_or_far(d, view.far)
 }
 
 /// Result of marching one direction: the occluder distance Δ̃ (Eq. 1) or none (then the
@@ -201,8 +201,7 @@ pub struct RaymarchPixel {
 /// Linear depth of pixel `q` (unusable depths read as far).
 #[inline]
 fn depth_px(view: &ViewParams, depth: &[f32], q: UVec2) -> f32 {
-    let d = depth[(q.y * view.size().x + q.x) as usize];
-    if is_valid_depth(d, view.far) { d } else { view.far }
+    depth_or_far(depth[(q.y * view.size().x + q.x) as usize], view.far)
 }
 
 /// Packed XeGTAO edges of pixel `p` from the linear depth (for the optional denoiser).

@@ -15,7 +15,7 @@ use crate::common::any_hit::{ACCEPT, CandidateHit, IGNORE};
 use crate::common::float_order::from_ordered_bits;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::hash::wyman_hash;
-use crate::common::math::{is_valid_depth, sat};
+use crate::common::math::{depth_or_far, sat};
 use crate::common::noise::{frame_rotation, rotate};
 use crate::common::tables::sd_jitter;
 use crate::glam::{IVec2, UVec2, Vec2, Vec3};
@@ -170,10 +170,7 @@ pub fn bilinear_depth<G: GBuffer>(gbuffer: &G, frame: &SvaoFrame, uv: Vec2) -> f
     };
     let (xa, xb) = (clampi(x0, size.x), clampi(x0 + 1.0, size.x));
     let (ya, yb) = (clampi(y0, size.y), clampi(y0 + 1.0, size.y));
-    let read = |px: u32, py: u32| -> f32 {
-        let d = gbuffer.linear_depth(UVec2::new(px, py));
-        if is_valid_depth(d, view.far) { d } else { view.far }
-    };
+    let read = |px: u32, py: u32| -> f32 { depth_or_far(gbuffer.linear_depth(UVec2::new(px, py)), view.far) };
     let top = read(xa, ya) * (1.0 - fx) + read(xb, ya) * fx;
     let bottom = read(xa, yb) * (1.0 - fx) + read(xb, yb) * fx;
     top * (1.0 - fy) + bottom * fy

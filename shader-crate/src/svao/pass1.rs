@@ -7,11 +7,11 @@ use crate::common::atomics::AtomicU32Buffer;
 use crate::common::float_order::ordered_bits;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::lanes::Lanes;
-use crate::common::math::{clamp, is_valid_depth_lanes, sat};
+use crate::common::math::{clamp, sat};
 use crate::glam::{UVec2, Vec2};
 use crate::vao::kernel::{
     KERNEL_HBAO, LineSample, PixelFrame, halo_visibility, hbao_occlusion, line_sample_of, object_z, setup_pixel,
-    unoccluded_visibility,
+    texel_point, unoccluded_visibility,
 };
 
 /// Output of pass 1 for one pixel.
@@ -60,14 +60,6 @@ pub fn primary_sample<G: GBuffer, L: Lanes>(
     let d2 = L::gather(depth2, move |i| vp.index(L::texel_lane(texel, i)));
     let (z2, v2) = depth_point_value(params, frame, s, texel_point(view, d2, s));
     (L::select(second, z.min(z2), z), L::select(second, combine(params, v, v2), v))
-}
-
-/// View point of the depth value `d` at the sample's raster texel (unusable depths read as far).
-#[inline]
-fn texel_point<L: Lanes>(view: &crate::common::ViewParams, d: L, s: &LineSample<L>) -> L::V3 {
-    let d = L::select(is_valid_depth_lanes(d, view.far), d, L::splat(view.far));
-    let v = *view;
-    view.uv_to_view_lanes::<L>(L::texel_map(s.texel, move |t| v.texel_uv(t)), d)
 }
 
 /// Object-space z of a view point `d` and its per-sample value under the kernel: VAO

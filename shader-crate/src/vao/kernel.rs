@@ -5,7 +5,7 @@
 use crate::common::ViewParams;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
-use crate::common::math::{clamp_lanes, is_valid_depth, is_valid_depth_lanes, sat, sign_nonzero};
+use crate::common::math::{clamp_lanes, depth_or_far, is_valid_depth, sat, sign_nonzero};
 use crate::common::tables::{
     AO_SAMPLES, HBAO_HALF_CHORDS, HBAO_PDFS, HBAO_RADII, VAO_DIRECTIONS, VAO_HALF_CHORDS, VAO_RADII, kernel_entry,
     rotation_sin_cos,
@@ -259,11 +259,14 @@ pub fn primary_object_z<G: GBuffer, L: Lanes>(
     frame: &PixelFrame<L>,
     s: &LineSample<L>,
 ) -> L {
-    let d = L::gather_depth(gbuffer, s.texel);
-    let d = L::select(is_valid_depth_lanes(d, view.far), d, L::splat(view.far));
+    object_z(frame, texel_point(view, L::gather_depth(gbuffer, s.texel), s))
+}
+
+/// View point of the depth value `d` at the sample's raster texel (unusable depths read as far).
+#[inline]
+pub fn texel_point<L: Lanes>(view: &ViewParams, d: L, s: &LineSample<L>) -> L::V3 {
     let v = *view;
-    let uv = L::texel_map(s.texel, move |t| v.texel_uv(t));
-    object_z(frame, view.uv_to_view_lanes::<L>(uv, d))
+    view.uv_to_view_lanes::<L>(L::texel_map(s.texel, move |t| v.texel_uv(t)), depth_or_far(d, view.far))
 }
 
 /// Final AO of one pixel with plain VAO on a single depth layer (spec §4, §5 with secondary
