@@ -420,17 +420,18 @@ mod kernels {
     /// The temporal accumulation (`aokit_shaders::temporal`) over the full target.
     pub fn temporal_blend(io: &mut PassIo) {
         let frame: aokit_shaders::temporal::TemporalFrame = io.record(0);
-        let out = crate::gtao::per_pixel(frame.camera.view.size(), |p| {
-            aokit_shaders::temporal::temporal_pixel(&frame, io.f32(1), io.f32(2), io.f32(3), io.f32(4), p)
+        let size = frame.camera.view.size();
+        let out = io.take_f32(5);
+        let (depth, ao, history, history_depth) = (io.f32(1), io.f32(2), io.f32(3), io.f32(4));
+        crate::screen::tiled(out, size.x, 0..size.x, 0..size.y, &crate::no_progress, |p, v| {
+            *v = aokit_shaders::temporal::temporal_pixel(&frame, depth, ao, history, history_depth, p)
         });
-        io.take_f32(5).copy_from_slice(&out);
     }
 
     /// The history for the next frame: the accumulated AO and this frame's depth.
     pub fn temporal_store(io: &mut PassIo) {
-        let accumulated = io.f32(2).to_vec();
-        let depth = io.f32(1).to_vec();
-        io.take_f32(3).copy_from_slice(&accumulated);
-        io.take_f32(4).copy_from_slice(&depth);
+        let (history, history_depth) = (io.take_f32(3), io.take_f32(4));
+        history.copy_from_slice(io.f32(2));
+        history_depth.copy_from_slice(io.f32(1));
     }
 }

@@ -1,8 +1,9 @@
 //! XeGTAO's passes on the CPU (spec gtao-raymarch-hybrid §2.3–§2.7): the shader crate's
 //! per-texel and per-pixel functions over whole buffers, in the GPU's dispatch order.
 
+use crate::screen::lane_pixel;
 use aokit_shaders::common::lanes::{F32x8, Lanes};
-use aokit_shaders::glam::{UVec2, uvec2, vec3};
+use aokit_shaders::glam::{UVec2, vec3};
 use aokit_shaders::gtao::main_pass::{PixelSetup, finish_pixel, pixel_setup, slices_visibility};
 use aokit_shaders::gtao::{
     GtaoParams, MIP_LEVELS, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
@@ -62,9 +63,8 @@ pub fn main_pass_x8(
     terms: &mut [u32],
     edges: &mut [u32],
 ) {
-    let last = terms.len() - 1;
     let setups: [_; 8] =
-        core::array::from_fn(|i| pixel_setup(params, mips, normals, uvec2(first.x + i.min(last) as u32, first.y)));
+        core::array::from_fn(|i| pixel_setup(params, mips, normals, lane_pixel(first, i, terms.len())));
     let px = PixelSetup::<F32x8>::from_lanes(&setups.map(|s| s.2));
     let (vis, bent) = slices_visibility(params, mips, &px);
     for (i, (t, e)) in terms.iter_mut().zip(edges.iter_mut()).enumerate() {

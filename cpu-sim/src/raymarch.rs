@@ -1,8 +1,9 @@
 //! Poisson-disk ray-marched SSAO on the CPU (spec gtao-raymarch-hybrid §3): the shader crate's
 //! per-pixel setup and finish per pixel, its directions' marches on eight pixels at once.
 
+use crate::screen::lane_pixel;
 use aokit_shaders::common::lanes::{F32x8, Lanes, v3_from_lanes};
-use aokit_shaders::glam::{UVec2, Vec2, uvec2};
+use aokit_shaders::glam::{UVec2, Vec2};
 use aokit_shaders::raymarch::{
     MarchOrigin, RaymarchParams, RaymarchPixel, raymarch_finish, raymarch_setup, raymarch_sum, unshaded,
 };
@@ -37,9 +38,8 @@ pub fn raymarch_x8(
     first: UVec2,
     out: &mut [RaymarchPixel],
 ) {
-    let last = out.len() - 1;
     let setups: [(u32, Option<MarchOrigin>); 8] =
-        core::array::from_fn(|i| raymarch_setup(params, depth, normals, uvec2(first.x + i.min(last) as u32, first.y)));
+        core::array::from_fn(|i| raymarch_setup(params, depth, normals, lane_pixel(first, i, out.len())));
     let any = setups.iter().find_map(|s| s.1);
     let sum = any.map(|any| {
         let o = setups.map(|s| s.1.unwrap_or(any));

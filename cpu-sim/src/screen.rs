@@ -90,6 +90,13 @@ pub fn tiled_lanes2<A: Send, B: Send>(
     });
 }
 
+/// Pixel of lane `i` in a run of `n` ≥ 1 consecutive pixels of a row from `first`: lanes past
+/// the run repeat its last pixel (they are computed and discarded, as on a GPU).
+#[inline]
+pub fn lane_pixel(first: UVec2, i: usize, n: usize) -> UVec2 {
+    uvec2(first.x + i.min(n - 1) as u32, first.y)
+}
+
 /// Call `kernel(first, out)` for runs of up to 8 consecutive inner pixels of a full-target
 /// image, in parallel [`tiled_lanes`] bands. Guard-band pixels keep 1.
 fn for_inner_lanes(size: UVec2, guard: u32, progress: Progress, kernel: impl Fn(UVec2, &mut [f32]) + Sync) -> Vec<f32> {
@@ -112,15 +119,9 @@ pub fn run_vao(params: &VaoParams, depth: &[f32], normals: &[u32], progress: Pro
 /// last pixel; unshaded pixels (no usable depth) borrow a shaded lane's frame and are
 /// discarded.
 pub fn vao_x8(gbuffer: &GBufferSlices, params: &VaoParams, first: UVec2, ao: &mut [f32]) {
-    let last = ao.len() - 1;
     let frames: [Option<PixelFrame>; 8] = core::array::from_fn(|i| {
-        setup_pixel(
-            gbuffer,
-            &params.view,
-            params.radius,
-            params.max_screen_radius,
-            uvec2(first.x + i.min(last) as u32, first.y),
-        )
+        let p = lane_pixel(first, i, ao.len());
+        setup_pixel(gbuffer, &params.view, params.radius, params.max_screen_radius, p)
     });
     let Some(any) = frames.iter().flatten().next().copied() else {
         ao.fill(1.0);

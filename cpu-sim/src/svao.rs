@@ -5,6 +5,7 @@
 
 use crate::bvh::AnyHit;
 use crate::gbuffer::Surfaces;
+use crate::screen::lane_pixel;
 use crate::{Progress, SceneBvh};
 use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
 use aokit_shaders::common::gbuffer_read::{DepthSlice, GBufferSlices};
@@ -13,7 +14,7 @@ use aokit_shaders::glam::{UVec2, uvec2, vec2};
 use aokit_shaders::rastersd::raster_fragment;
 use aokit_shaders::raysd::{SdMapRefine, SdPayload, reservoir_any_hit, sd_ray, store_layers};
 use aokit_shaders::raysvao::{ACCEPT, ACCEPT_AND_END, SampleRay, SampleTracer, refine_by_ray, sample_any_hit};
-use aokit_shaders::svao::pass1::{Pass1Pixel, pass1_finish, pass1_sample, record_interval};
+use aokit_shaders::svao::pass1::{pass1_finish, pass1_sample, record_interval};
 use aokit_shaders::svao::{Refine, Refined, SvaoFrame, SvaoParams, pass2_pixel};
 use aokit_shaders::vao::kernel::{LineSample, PixelFrame, setup_pixel};
 use rayon::prelude::*;
@@ -46,35 +47,18 @@ pub fn run_pass1(params: &SvaoParams, depth: &[f32], normals: &[u32], depth2: &[
     let texels = (sd.x * sd.y) as usize;
     let ray_min: Vec<AtomicU32> = (0..texels).map(|_| AtomicU32::new(RAY_MIN_CLEAR)).collect();
     let ray_max: Vec<AtomicU32> = (0..texels).map(|_| AtomicU32::new(RAY_MAX_CLEAR)).collect();
-    let ao: Vec<AtomicU32> = (0..pixels).map(|_| AtomicU32::new(1.0f32.to_bits())).collect();
-    let mask: Vec<AtomicU32> = (0..pixels).map(|_| AtomicU32::new(0)).collect();
+    let (mut ao, mut mask) = (vec![1.0f32; pixels], vec![0u32; pixels]);
     let gbuffer = GBufferSlices { depth, normals, width: size.x };
     let g = view.guard;
-    (g..size.y - g).into_par_iter().for_each(|y| {
-        let mut x = g;
-        while x < size.x - g {
-            let n = 8.min(size.x - g - x);
-            let (mut lo, mut hi) = (ray_min.as_slice(), ray_max.as_slice());
-            let out = pass1_x8(&gbuffer, depth2, params, uvec2(x, y), n as usize, &mut lo, &mut hi);
-            for (k, o) in out.iter().take(n as usize).enumerate() {
-                let i = view.index(uvec2(x + k as u32, y));
-                ao[i].store(o.ao.to_bits(), Ordering::Relaxed);
-                mask[i].store(o.mask, Ordering::Relaxed);
-            }
-            x += n;
-        }
-        progress(1);
+    let (xs, ys) = (g..size.x - g, g..size.y - g);
+    crate::screen::tiled_lanes2(&mut ao, &mut mask, size.x, xs, ys, 8, progress, |p, ao, mask| {
+        pass1_x8(&gbuffer, depth2, params, p, ao, mask, (&ray_min, &ray_max))
     });
     let unwrap = |v: Vec<AtomicU32>| v.into_iter().map(AtomicU32::into_inner).collect::<Vec<u32>>();
-    Pass1 {
-        ao: unwrap(ao).into_iter().map(f32::from_bits).collect(),
-        mask: unwrap(mask),
-        ray_min: unwrap(ray_min),
-        ray_max: unwrap(ray_max),
-    }
+    Pass1 { ao, mask, ray_min: unwrap(ray_min), ray_max: unwrap(ray_max) }
 }
 
-/// [`aokit_shaders::svao::pass1_pixel`] for `n` ≤ 8 consecutive pixels of a row from `first`: the per-pixel setup,
+/// [`aokit_shaders::svao::pass1_pixel`] for `ao.len()` ≤ 8 consecutive pixels of a row from `first`: the per-pixel setup,
 /// the mask bits, the interval atomics and the final store per lane, the samples' arithmetic on
 /// eight lanes at once. Missing lanes repeat the last pixel; unshaded pixels borrow a shaded
 /// lane's frame and are discarded.
@@ -83,18 +67,17 @@ fn pass1_x8(
     depth2: &[f32],
     params: &SvaoParams,
     first: UVec2,
-    n: usize,
-    ray_min: &mut &[AtomicU32],
-    ray_max: &mut &[AtomicU32],
-) -> [Pass1Pixel; 8] {
+    ao: &mut [f32],
+    mask_out: &mut [u32],
+    (mut ray_min, mut ray_max): (&[AtomicU32], &[AtomicU32]),
+) {
     let vao = &params.vao;
+    let n = ao.len();
     let frames: [Option<PixelFrame>; 8] = core::array::from_fn(|i| {
-        let p = uvec2(first.x + i.min(n - 1) as u32, first.y);
-        setup_pixel(gbuffer, &vao.view, vao.radius, vao.max_screen_radius, p)
+        setup_pixel(gbuffer, &vao.view, vao.radius, vao.max_screen_radius, lane_pixel(first, i, n))
     });
-    let unshaded = Pass1Pixel { ao: 1.0, mask: 0 };
     let Some(any) = frames.iter().flatten().next().copied() else {
-        return [unshaded; 8];
+        return;
     };
     let lanes = PixelFrame::<F32x8>::from_lanes(&frames.map(|f| f.unwrap_or(any)));
     let distance = frames.map(|f| f.map_or(0.0, |f| f.position.length()));
@@ -109,11 +92,16 @@ fn pass1_x8(
                 let uv = vec2(s.uv.x.lane(k), s.uv.y.lane(k));
                 let (z, h, end, radius) =
                     (r.z.lane(k), s.half_chord.lane(k), s.sphere_end.lane(k), lanes.radius.lane(k));
-                record_interval(params, uv, z, h, end, radius, distance[k], ray_min, ray_max);
+                record_interval(params, uv, z, h, end, radius, distance[k], &mut ray_min, &mut ray_max);
             }
         }
     }
-    core::array::from_fn(|k| if frames[k].is_some() { pass1_finish(params, sum.lane(k), mask[k]) } else { unshaded })
+    for (k, (a, m)) in ao.iter_mut().zip(mask_out.iter_mut()).enumerate() {
+        if frames[k].is_some() {
+            let out = pass1_finish(params, sum.lane(k), mask[k]);
+            (*a, *m) = (out.ao, out.mask);
+        }
+    }
 }
 
 /// The ray-traced SD map (spec §7) and the number of rays traced.
