@@ -2,7 +2,7 @@
 //! per-pixel setup and finish per pixel, its directions' marches on eight pixels at once.
 
 use crate::screen::lane_pixel;
-use aokit_shaders::common::lanes::{F32x8, Lanes, v3_from_lanes};
+use aokit_shaders::common::lanes::{F32x8, Lanes};
 use aokit_shaders::glam::{UVec2, Vec2};
 use aokit_shaders::raymarch::{
     MarchOrigin, RaymarchParams, RaymarchPixel, raymarch_finish, raymarch_setup, raymarch_sum, unshaded,
@@ -42,15 +42,7 @@ pub fn raymarch_x8(
         core::array::from_fn(|i| raymarch_setup(params, depth, normals, lane_pixel(first, i, out.len())));
     let any = setups.iter().find_map(|s| s.1);
     let sum = any.map(|any| {
-        let o = setups.map(|s| s.1.unwrap_or(any));
-        let lanes = MarchOrigin::<F32x8> {
-            pixel: o.map(|o| o.pixel),
-            pos: v3_from_lanes::<F32x8>(|i| o[i].pos),
-            n: v3_from_lanes::<F32x8>(|i| o[i].n),
-            sin_t: F32x8::from_lanes(|i| o[i].sin_t),
-            cos_t: F32x8::from_lanes(|i| o[i].cos_t),
-            jitter: F32x8::from_lanes(|i| o[i].jitter),
-        };
+        let lanes = MarchOrigin::<F32x8>::from_lanes(&setups.map(|s| s.1.unwrap_or(any)));
         raymarch_sum(params, depth, normals, kernel, &lanes)
     });
     for (i, o) in out.iter_mut().enumerate() {

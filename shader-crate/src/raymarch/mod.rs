@@ -253,6 +253,22 @@ pub struct MarchOrigin<L: Lanes = f32> {
     pub jitter: L,
 }
 
+#[cfg(not(target_arch = "spirv"))]
+impl MarchOrigin<crate::common::lanes::F32x8> {
+    /// The origins of eight pixels side by side (lane `i` from `each[i]`).
+    pub fn from_lanes(each: &[MarchOrigin; 8]) -> Self {
+        use crate::common::lanes::{F32x8, v3_from_lanes};
+        MarchOrigin {
+            pixel: each.map(|o| o.pixel),
+            pos: v3_from_lanes::<F32x8>(|i| each[i].pos),
+            n: v3_from_lanes::<F32x8>(|i| each[i].n),
+            sin_t: F32x8::from_lanes(|i| each[i].sin_t),
+            cos_t: F32x8::from_lanes(|i| each[i].cos_t),
+            jitter: F32x8::from_lanes(|i| each[i].jitter),
+        }
+    }
+}
+
 /// The packed edges of pixel `p` and where it marches from; `None` without a usable depth.
 #[inline]
 pub fn raymarch_setup(params: &RaymarchParams, depth: &[f32], normals: &[u32], p: UVec2) -> (u32, Option<MarchOrigin>) {
