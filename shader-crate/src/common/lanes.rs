@@ -13,6 +13,7 @@
 use spirv_std::num_traits::Float;
 
 use crate::common::gbuffer_read::GBuffer;
+use crate::common::screen_space::clamp_index;
 use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
 use core::ops::{Add, Div, Mul, Neg, Sub};
 
@@ -39,6 +40,8 @@ pub trait Lanes:
     type V2: LaneVec2<Self>;
     /// Three-component vector of lanes (`Vec3` for `f32`).
     type V3: LaneVec3<Self>;
+    /// A whole number per lane, e.g. an index into a buffer (`u32` for `f32`).
+    type Index: Copy + Add<Output = Self::Index> + Mul<Output = Self::Index>;
 
     fn splat(v: f32) -> Self;
     /// The value whose lane `i` is `f(i)`.
@@ -91,6 +94,15 @@ pub trait Lanes:
     fn texel_eq(a: Self::U2, b: Self::U2) -> Self::Mask;
     /// Linear depth of the G-buffer at each lane's texel.
     fn gather_depth<G: GBuffer>(g: &G, t: Self::U2) -> Self;
+    /// `n` in every lane.
+    fn index_splat(n: u32) -> Self::Index;
+    /// `if m { a } else { b }` per lane.
+    fn index_select(m: Self::Mask, a: Self::Index, b: Self::Index) -> Self::Index;
+    /// The clamp-to-edge texel coordinate `clamp(⌊self⌋, 0, n − 1)` per lane (NaN → 0), as
+    /// [`clamp_index`] computes it.
+    fn texel_index(self, n: Self::Index) -> Self::Index;
+    /// `data[i]` in each lane.
+    fn gather_index(data: &[f32], i: Self::Index) -> Self;
 }
 
 /// Two lanes-valued components.
@@ -122,6 +134,7 @@ impl Lanes for f32 {
     type U2 = UVec2;
     type V2 = Vec2;
     type V3 = Vec3;
+    type Index = u32;
 
     #[inline]
     fn splat(v: f32) -> Self {
@@ -259,6 +272,22 @@ impl Lanes for f32 {
     fn gather_depth<G: GBuffer>(g: &G, t: UVec2) -> Self {
         g.linear_depth(t)
     }
+    #[inline]
+    fn index_splat(n: u32) -> u32 {
+        n
+    }
+    #[inline]
+    fn index_select(m: bool, a: u32, b: u32) -> u32 {
+        if m { a } else { b }
+    }
+    #[inline]
+    fn texel_index(self, n: u32) -> u32 {
+        clamp_index(self, n)
+    }
+    #[inline]
+    fn gather_index(data: &[f32], i: u32) -> f32 {
+        data[i as usize]
+    }
 }
 
 impl LaneVec2<f32> for Vec2 {
@@ -337,7 +366,7 @@ mod x8 {
     use crate::common::gbuffer_read::GBuffer;
     use crate::glam::{UVec2, Vec2, Vec3};
     use core::ops::{Add, Div, Mul, Neg, Sub};
-    use wide::f32x8;
+    use wide::{f32x8, i32x8};
 
     /// Eight pixels' values of one `f32` variable.
     #[derive(Copy, Clone, Debug, PartialEq)]
@@ -380,6 +409,7 @@ mod x8 {
         type U2 = [UVec2; 8];
         type V2 = V2x8;
         type V3 = V3x8;
+        type Index = i32x8;
 
         #[inline(always)]
         fn splat(v: f32) -> Self {
@@ -524,6 +554,25 @@ mod x8 {
         #[inline(always)]
         fn gather_depth<G: GBuffer>(g: &G, t: [UVec2; 8]) -> Self {
             F32x8::from_lanes(|i| g.linear_depth(t[i]))
+        }
+        #[inline(always)]
+        fn index_splat(n: u32) -> i32x8 {
+            i32x8::splat(n as i32)
+        }
+        #[inline(always)]
+        fn index_select(m: f32x8, a: i32x8, b: i32x8) -> i32x8 {
+            bytemuck::cast::<f32x8, i32x8>(m).bitselect(a, b)
+        }
+        /// `maxps(x, 0)` takes 0 for a NaN `x`; clamped below `n`, the truncation is exact.
+        #[inline(always)]
+        fn texel_index(self, n: i32x8) -> i32x8 {
+            let last = (n - i32x8::splat(1)).round_float();
+            self.0.fast_max(f32x8::ZERO).fast_min(last).fast_trunc_int()
+        }
+        #[inline(always)]
+        fn gather_index(data: &[f32], i: i32x8) -> Self {
+            let i = i.to_array();
+            F32x8(f32x8::new(core::array::from_fn(|k| data[i[k] as usize])))
         }
     }
 

@@ -5,7 +5,7 @@
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
-use super::{GtaoParams, mip_texel};
+use super::{GtaoParams, MIP_LEVELS, mip_offset, mip_size};
 use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, store_term};
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
 #[cfg(not(target_arch = "spirv"))]
@@ -13,8 +13,8 @@ use crate::common::lanes::{v2_from_lanes, v3_from_lanes};
 use crate::common::math::{ceil, clamp, depth_or_far, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::{decode_normal, encode_normal};
-use crate::common::screen_space::{clamp_index, neighbour, view_pos};
-use crate::glam::{UVec2, Vec3, vec2, vec3};
+use crate::common::screen_space::{neighbour, view_pos};
+use crate::glam::{UVec2, Vec3, vec3};
 
 /// Output of the main pass for one pixel: the working AO term `uint(sat(vis/1.5)·255 + 0.5)`
 /// and the packed LRTB edges.
@@ -266,13 +266,27 @@ pub fn sample_pair<L: Lanes>(
 }
 
 /// Point sample of the MIP chain per lane at level `level` (an integral float; clamped to the
-/// chain) and `uv`.
+/// chain, NaN reads level 0) and `uv`: the texel `clamp(⌊uv·size⌋, 0, size − 1)` of that level
+/// (spec §1.5), each lane's level size and offset chosen branch-free.
 #[inline]
 fn mip_sample<L: Lanes>(mips: &[f32], full: UVec2, level: L, uv: L::V2) -> L {
-    L::gather(mips, move |i| {
-        let k = clamp_index(level.lane(i), super::MIP_LEVELS);
-        mip_texel(full, k, vec2(uv.x().lane(i), uv.y().lane(i)))
-    })
+    let s = mip_size(full, 0);
+    let (mut w, mut h, mut at) = (L::index_splat(s.x), L::index_splat(s.y), L::index_splat(0));
+    let (mut wf, mut hf) = (L::splat(s.x as f32), L::splat(s.y as f32));
+    let mut k = 1;
+    while k < MIP_LEVELS {
+        let reached = level.ge(L::splat(k as f32));
+        let s = mip_size(full, k);
+        w = L::index_select(reached, L::index_splat(s.x), w);
+        h = L::index_select(reached, L::index_splat(s.y), h);
+        at = L::index_select(reached, L::index_splat(mip_offset(full, k) as u32), at);
+        wf = L::select(reached, L::splat(s.x as f32), wf);
+        hf = L::select(reached, L::splat(s.y as f32), hf);
+        k += 1;
+    }
+    let x = (uv.x() * wf).texel_index(w);
+    let y = (uv.y() * hf).texel_index(h);
+    L::gather_index(mips, at + y * w + x)
 }
 
 /// One slice's horizon angles `(h0, h1)` (spec §2.6.3 steps 6–9): the largest horizon cosine

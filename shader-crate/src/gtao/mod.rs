@@ -18,8 +18,7 @@ pub use prefilter::prefilter_texel;
 use spirv_std::num_traits::Float;
 
 use crate::common::ViewParams;
-use crate::common::screen_space::clamp_index;
-use crate::glam::{UVec2, Vec2, uvec2};
+use crate::glam::{UVec2, uvec2};
 
 /// Levels of the working-depth MIP chain (spec §2.1).
 pub const MIP_LEVELS: u32 = 5;
@@ -88,17 +87,6 @@ pub fn mip_offset(full: UVec2, k: u32) -> usize {
         j += 1;
     }
     offset
-}
-
-/// Texel of MIP `k` holding uv, point sampling with clamp-to-edge (spec §1.5):
-/// `clamp(floor(uv·size), 0, size − 1)`, where [`clamp_index`]'s truncation of a positive
-/// coordinate is the floor (one operation fewer per sample).
-#[inline]
-pub fn mip_texel(full: UVec2, k: u32, uv: Vec2) -> usize {
-    let s = mip_size(full, k);
-    let x = clamp_index(uv.x * s.x as f32, s.x);
-    let y = clamp_index(uv.y * s.y as f32, s.y);
-    mip_offset(full, k) + (y * s.x + x) as usize
 }
 
 use crate::glam::UVec3;

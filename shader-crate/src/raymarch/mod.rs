@@ -13,10 +13,10 @@ pub mod settings;
 use crate::common::ViewParams;
 use crate::common::denoise_terms::{edges, pack_edges, store_term};
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
-use crate::common::math::{depth_or_far, floor, is_valid_depth, rotate_minimal, sat};
+use crate::common::math::{depth_or_far, is_valid_depth, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::decode_normal;
-use crate::common::screen_space::{clamp_index, neighbour, view_pos};
+use crate::common::screen_space::{neighbour, view_pos};
 use crate::glam::{UVec2, UVec3, Vec2, Vec3, vec3};
 use spirv_std::spirv;
 
@@ -68,13 +68,11 @@ fn project<L: Lanes>(view: &ViewParams, s: L::V3) -> L::V2 {
 /// Linear depth at a uv (point sampling, clamp-to-edge; unusable depths read as far).
 #[inline]
 pub fn depth_at<L: Lanes>(view: &ViewParams, depth: &[f32], uv: L::V2) -> L {
-    let v = *view;
-    let d = L::gather(depth, move |i| {
-        let size = v.size();
-        let x = clamp_index(floor(uv.x().lane(i) * v.res.x), size.x);
-        let y = clamp_index(floor(uv.y().lane(i) * v.res.y), size.y);
-        (y * size.x + x) as usize
-    });
+    let size = view.size();
+    let w = L::index_splat(size.x);
+    let x = (uv.x() * view.res.x).texel_index(w);
+    let y = (uv.y() * view.res.y).texel_index(L::index_splat(size.y));
+    let d = L::gather_index(depth, y * w + x);
     depth_or_far(d, view.far)
 }
 
