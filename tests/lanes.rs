@@ -3,7 +3,7 @@
 //! only IEEE-exact operations (add, mul, div, sqrt, compares) the two must agree bit for bit:
 //! VAO, SVAO pass 1 and the ray march. The blur's weights and XeGTAO's slices use `wide`'s
 //! exp2/sin/cos/ln polynomials, a few ulp from libm's: the blur agrees within 1e-6, XeGTAO's
-//! 8-bit terms may differ by one step in a few pixels.
+//! 8-bit terms may differ by one step in a few pixels; its denoiser agrees bit for bit.
 
 mod common;
 
@@ -14,7 +14,7 @@ use aokit_shaders::common::atomics::AtomicU32Buffer;
 use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
 use aokit_shaders::common::gbuffer_read::GBufferSlices;
 use aokit_shaders::glam::{UVec2, uvec2};
-use aokit_shaders::gtao::{GtaoParams, gtao_pixel};
+use aokit_shaders::gtao::{GtaoParams, denoise_pixel, gtao_pixel};
 use aokit_shaders::raymarch::raymarch_pixel;
 use aokit_shaders::raymarch::settings::RaymarchSettings;
 use aokit_shaders::svao::{Secondary, pass1_pixel};
@@ -106,4 +106,26 @@ fn xegtao_lanes_match_one_pixel_at_a_time_within_one_step() {
     // wide's polynomials are within a few ulp: a one-step difference needs a value within a few
     // ulp of a rounding boundary of the 8-bit term.
     assert!(differ * 100 <= total, "{differ} of {total} terms differ");
+
+    // The denoiser uses exact operations only: its lanes agree bit for bit, borders included,
+    // in an earlier pass (terms for the next pass) and in the last (rescaled terms, visibility).
+    let params = GtaoParams { denoise_passes: 2, ..params };
+    let mut current = terms.clone();
+    for pass in 0..2 {
+        let p = GtaoParams { pass, ..params };
+        let (mut next, mut ao) = (vec![0; current.len()], vec![0.0; current.len()]);
+        aokit_cpu::gtao::denoise_into(&p, &current, &edges, &mut next, &mut ao);
+        let mut changed = 0;
+        for q in (0..size.y).flat_map(|y| (0..size.x).map(move |x| uvec2(x, y))) {
+            let one = denoise_pixel(&p, &current, &edges, q);
+            let i = view.index(q);
+            assert_eq!(next[i], one.term, "denoise pass {pass} term at {q}");
+            if one.last {
+                assert_eq!(ao[i].to_bits(), one.visibility.to_bits(), "denoise visibility at {q}");
+            }
+            changed += (next[i] != current[i]) as u32;
+        }
+        assert!(changed * 10 > total, "pass {pass} must filter: {changed} of {total} terms changed");
+        current = next;
+    }
 }

@@ -15,7 +15,7 @@ struct type_10 {
     member: array<u32>,
 }
 
-struct type_21 {
+struct type_20 {
     member: type_5,
     member_1: f32,
     member_2: f32,
@@ -27,15 +27,15 @@ struct type_21 {
     member_8: u32,
 }
 
-struct type_22 {
-    member: type_21,
+struct type_21 {
+    member: type_20,
 }
 
-struct type_25 {
+struct type_24 {
     member: array<vec2<f32>>,
 }
 
-struct type_27 {
+struct type_26 {
     member: vec2<u32>,
     member_1: vec3<f32>,
     member_2: vec3<f32>,
@@ -44,17 +44,17 @@ struct type_27 {
     member_5: f32,
 }
 
+struct type_27 {
+    member: u32,
+    member_1: type_26,
+}
+
 struct type_28 {
     member: u32,
     member_1: type_27,
 }
 
 struct type_29 {
-    member: u32,
-    member_1: type_28,
-}
-
-struct type_30 {
     member: f32,
     member_1: u32,
     member_2: u32,
@@ -68,103 +68,104 @@ var<storage> normals: type_10;
 @group(0) @binding(3) 
 var<storage, read_write> ao: type_7;
 @group(0) @binding(6) 
-var<uniform> params: type_22;
+var<uniform> params: type_21;
 @group(0) @binding(2) 
-var<storage> kernel: type_25;
+var<storage> kernel: type_24;
 @group(0) @binding(4) 
 var<storage, read_write> terms: type_10;
 @group(0) @binding(5) 
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_295_: i32;
-    var phi_314_: i32;
-    var phi_365_: i32;
-    var phi_384_: i32;
-    var phi_435_: i32;
-    var phi_454_: i32;
-    var phi_505_: i32;
-    var phi_524_: i32;
-    var phi_1759_: f32;
-    var phi_1763_: f32;
-    var phi_1764_: bool;
-    var phi_1802_: f32;
-    var phi_1806_: f32;
-    var phi_1807_: bool;
-    var phi_1845_: f32;
-    var phi_1849_: f32;
-    var phi_1850_: bool;
-    var phi_1888_: f32;
-    var phi_1892_: f32;
-    var phi_1893_: bool;
-    var phi_1915_: bool;
-    var phi_1930_: bool;
-    var phi_781_: vec2<f32>;
-    var phi_812_: vec3<f32>;
-    var phi_818_: u32;
-    var phi_821_: u32;
-    var phi_823_: u32;
-    var phi_825_: u32;
-    var phi_854_: u32;
-    var phi_855_: u32;
-    var phi_856_: u32;
-    var phi_857_: u32;
-    var phi_819_: u32;
-    var phi_822_: u32;
-    var phi_824_: u32;
-    var phi_826_: u32;
+    var phi_284_: i32;
+    var phi_303_: i32;
+    var phi_354_: i32;
+    var phi_373_: i32;
+    var phi_424_: i32;
+    var phi_443_: i32;
+    var phi_494_: i32;
+    var phi_513_: i32;
+    var phi_1722_: f32;
+    var phi_1726_: f32;
+    var phi_1727_: bool;
+    var phi_1765_: f32;
+    var phi_1769_: f32;
+    var phi_1770_: bool;
+    var phi_1808_: f32;
+    var phi_1812_: f32;
+    var phi_1813_: bool;
+    var phi_1851_: f32;
+    var phi_1855_: f32;
+    var phi_1856_: bool;
+    var phi_1879_: bool;
+    var phi_1894_: bool;
+    var phi_770_: vec2<f32>;
+    var phi_801_: vec3<f32>;
+    var phi_807_: u32;
+    var phi_810_: u32;
+    var phi_812_: u32;
+    var phi_814_: u32;
+    var phi_843_: u32;
+    var phi_844_: u32;
+    var phi_845_: u32;
+    var phi_846_: u32;
+    var phi_808_: u32;
+    var phi_811_: u32;
+    var phi_813_: u32;
+    var phi_815_: u32;
     var local: u32;
-    var phi_888_: type_29;
-    var phi_2217_: bool;
-    var phi_923_: u32;
-    var phi_926_: f32;
-    var phi_1945_: bool;
-    var phi_1072_: u32;
-    var phi_1075_: f32;
-    var phi_1077_: bool;
-    var phi_1079_: bool;
-    var phi_1081_: f32;
-    var phi_1083_: f32;
-    var phi_1187_: u32;
-    var phi_1208_: u32;
-    var phi_2120_: bool;
-    var phi_2135_: bool;
-    var phi_2096_: vec2<f32>;
-    var phi_1360_: bool;
-    var phi_1405_: u32;
-    var phi_1407_: u32;
-    var phi_1408_: f32;
-    var phi_1409_: bool;
-    var phi_1410_: bool;
-    var phi_1411_: f32;
-    var phi_1414_: bool;
-    var phi_1415_: bool;
-    var phi_1073_: u32;
-    var phi_1076_: f32;
-    var phi_1078_: bool;
-    var phi_1080_: bool;
-    var phi_1082_: f32;
-    var phi_1084_: f32;
-    var phi_1419_: bool;
-    var phi_1421_: bool;
-    var phi_1422_: bool;
-    var phi_2171_: bool;
-    var phi_1732_: bool;
-    var phi_1731_: bool;
-    var phi_1730_: bool;
-    var phi_1729_: bool;
-    var phi_1727_: f32;
+    var phi_877_: type_28;
+    var phi_2069_: bool;
+    var phi_912_: u32;
+    var phi_915_: f32;
+    var phi_1909_: bool;
+    var phi_1061_: u32;
+    var phi_1064_: f32;
+    var phi_1066_: bool;
+    var phi_1068_: bool;
+    var phi_1070_: f32;
+    var phi_1072_: f32;
+    var phi_1176_: u32;
+    var phi_1197_: u32;
+    var phi_1291_: u32;
+    var phi_1322_: u32;
+    var phi_1992_: bool;
+    var phi_2007_: bool;
+    var phi_1968_: vec2<f32>;
+    var phi_1462_: u32;
+    var phi_1464_: u32;
+    var phi_1465_: f32;
+    var phi_1466_: bool;
+    var phi_1467_: bool;
+    var phi_1468_: f32;
+    var phi_1471_: bool;
+    var phi_1472_: bool;
+    var phi_1062_: u32;
+    var phi_1065_: f32;
+    var phi_1067_: bool;
+    var phi_1069_: bool;
+    var phi_1071_: f32;
+    var phi_1073_: f32;
+    var phi_1476_: bool;
+    var phi_1478_: bool;
+    var phi_1479_: bool;
+    var phi_2021_: bool;
+    var phi_1695_: bool;
+    var phi_1694_: bool;
+    var phi_1693_: bool;
+    var phi_1692_: bool;
+    var phi_1690_: f32;
     var local_1: f32;
     var local_2: bool;
     var local_3: f32;
     var local_4: bool;
-    var phi_1462_: f32;
-    var phi_2295_: bool;
-    var phi_924_: u32;
-    var phi_927_: f32;
-    var phi_2294_: bool;
+    var phi_1519_: f32;
+    var phi_2147_: bool;
+    var phi_913_: u32;
+    var phi_916_: f32;
+    var phi_2146_: bool;
     var local_5: f32;
-    var phi_1533_: type_30;
+    var phi_1590_: type_29;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -172,678 +173,681 @@ fn function_() {
             let _e62 = arrayLength((&depth.member));
             let _e64 = arrayLength((&normals.member));
             let _e66 = arrayLength((&kernel.member));
-            let _e79 = params.member.member.member[0u];
-            let _e84 = select(select(u32(_e79), 0u, (_e79 < 0f)), 4294967295u, (_e79 > 4294967000f));
-            let _e89 = params.member.member.member[1u];
-            let _e94 = select(select(u32(_e89), 0u, (_e89 < 0f)), 4294967295u, (_e89 > 4294967000f));
-            if (_e60.x >= _e84) {
+            let _e77 = params.member.member.member[0u];
+            let _e82 = select(select(u32(_e77), 0u, (_e77 < 0f)), 4294967295u, (_e77 > 4294967000f));
+            let _e87 = params.member.member.member[1u];
+            let _e92 = select(select(u32(_e87), 0u, (_e87 < 0f)), 4294967295u, (_e87 > 4294967000f));
+            if (_e60.x >= _e82) {
             } else {
-                if (_e60.y >= _e94) {
+                if (_e60.y >= _e92) {
                 } else {
-                    let _e100 = ((_e60.y * _e84) + _e60.x);
-                    let _e101 = (_e100 < _e62);
-                    if _e101 {
+                    let _e98 = ((_e60.y * _e82) + _e60.x);
+                    let _e99 = (_e98 < _e62);
+                    if _e99 {
                     } else {
                         break;
                     }
-                    let _e104 = depth.member[_e100];
-                    let _e108 = params.member.member.member_3;
-                    let _e111 = select(false, (_e104 < _e108), (_e104 > 0f));
-                    let _e112 = select(_e108, _e104, _e111);
-                    let _e113 = bitcast<i32>(_e60.x);
-                    let _e114 = (_e113 + -1i);
-                    let _e116 = (bitcast<i32>(_e84) - 1i);
-                    let _e117 = (0i <= _e116);
-                    if _e117 {
+                    let _e102 = depth.member[_e98];
+                    let _e106 = params.member.member.member_3;
+                    let _e109 = select(false, (_e102 < _e106), (_e102 > 0f));
+                    let _e110 = select(_e106, _e102, _e109);
+                    let _e111 = bitcast<i32>(_e60.x);
+                    let _e112 = (_e111 + -1i);
+                    let _e114 = (bitcast<i32>(_e82) - 1i);
+                    let _e115 = (0i <= _e114);
+                    if _e115 {
                     } else {
                         break;
                     }
-                    if (_e114 < 0i) {
-                        phi_295_ = 0i;
+                    if (_e112 < 0i) {
+                        phi_284_ = 0i;
                     } else {
-                        phi_295_ = select(_e114, _e116, (_e114 > _e116));
+                        phi_284_ = select(_e112, _e114, (_e112 > _e114));
                     }
-                    let _e122 = phi_295_;
-                    let _e124 = bitcast<i32>(_e60.y);
-                    let _e126 = (bitcast<i32>(_e94) - 1i);
-                    let _e127 = (0i <= _e126);
-                    if _e127 {
-                    } else {
-                        break;
-                    }
-                    let _e128 = (_e124 < 0i);
-                    if _e128 {
-                        phi_314_ = 0i;
-                    } else {
-                        phi_314_ = select(_e124, _e126, (_e124 > _e126));
-                    }
-                    let _e132 = phi_314_;
-                    let _e135 = ((bitcast<u32>(_e132) * _e84) + bitcast<u32>(_e122));
-                    if (_e135 < _e62) {
+                    let _e120 = phi_284_;
+                    let _e122 = bitcast<i32>(_e60.y);
+                    let _e124 = (bitcast<i32>(_e92) - 1i);
+                    let _e125 = (0i <= _e124);
+                    if _e125 {
                     } else {
                         break;
                     }
-                    let _e139 = depth.member[_e135];
-                    let _e144 = (_e113 + 1i);
-                    if _e117 {
+                    let _e126 = (_e122 < 0i);
+                    if _e126 {
+                        phi_303_ = 0i;
+                    } else {
+                        phi_303_ = select(_e122, _e124, (_e122 > _e124));
+                    }
+                    let _e130 = phi_303_;
+                    let _e133 = ((bitcast<u32>(_e130) * _e82) + bitcast<u32>(_e120));
+                    if (_e133 < _e62) {
                     } else {
                         break;
                     }
-                    if (_e144 < 0i) {
-                        phi_365_ = 0i;
-                    } else {
-                        phi_365_ = select(_e144, _e116, (_e144 > _e116));
-                    }
-                    let _e149 = phi_365_;
-                    if _e127 {
+                    let _e137 = depth.member[_e133];
+                    let _e142 = (_e111 + 1i);
+                    if _e115 {
                     } else {
                         break;
                     }
-                    if _e128 {
-                        phi_384_ = 0i;
+                    if (_e142 < 0i) {
+                        phi_354_ = 0i;
                     } else {
-                        phi_384_ = select(_e124, _e126, (_e124 > _e126));
+                        phi_354_ = select(_e142, _e114, (_e142 > _e114));
                     }
-                    let _e154 = phi_384_;
-                    let _e157 = ((bitcast<u32>(_e154) * _e84) + bitcast<u32>(_e149));
-                    if (_e157 < _e62) {
-                    } else {
-                        break;
-                    }
-                    let _e161 = depth.member[_e157];
-                    if _e117 {
+                    let _e147 = phi_354_;
+                    if _e125 {
                     } else {
                         break;
                     }
-                    let _e166 = (_e113 < 0i);
-                    if _e166 {
-                        phi_435_ = 0i;
+                    if _e126 {
+                        phi_373_ = 0i;
                     } else {
-                        phi_435_ = select(_e113, _e116, (_e113 > _e116));
+                        phi_373_ = select(_e122, _e124, (_e122 > _e124));
                     }
-                    let _e170 = phi_435_;
-                    let _e172 = (_e124 + -1i);
-                    if _e127 {
-                    } else {
-                        break;
-                    }
-                    if (_e172 < 0i) {
-                        phi_454_ = 0i;
-                    } else {
-                        phi_454_ = select(_e172, _e126, (_e172 > _e126));
-                    }
-                    let _e177 = phi_454_;
-                    let _e180 = ((bitcast<u32>(_e177) * _e84) + bitcast<u32>(_e170));
-                    if (_e180 < _e62) {
+                    let _e152 = phi_373_;
+                    let _e155 = ((bitcast<u32>(_e152) * _e82) + bitcast<u32>(_e147));
+                    if (_e155 < _e62) {
                     } else {
                         break;
                     }
-                    let _e184 = depth.member[_e180];
-                    if _e117 {
+                    let _e159 = depth.member[_e155];
+                    if _e115 {
                     } else {
                         break;
                     }
-                    if _e166 {
-                        phi_505_ = 0i;
+                    let _e164 = (_e111 < 0i);
+                    if _e164 {
+                        phi_424_ = 0i;
                     } else {
-                        phi_505_ = select(_e113, _e116, (_e113 > _e116));
+                        phi_424_ = select(_e111, _e114, (_e111 > _e114));
                     }
-                    let _e192 = phi_505_;
-                    let _e194 = (_e124 + 1i);
-                    if _e127 {
-                    } else {
-                        break;
-                    }
-                    if (_e194 < 0i) {
-                        phi_524_ = 0i;
-                    } else {
-                        phi_524_ = select(_e194, _e126, (_e194 > _e126));
-                    }
-                    let _e199 = phi_524_;
-                    let _e202 = ((bitcast<u32>(_e199) * _e84) + bitcast<u32>(_e192));
-                    if (_e202 < _e62) {
+                    let _e168 = phi_424_;
+                    let _e170 = (_e122 + -1i);
+                    if _e125 {
                     } else {
                         break;
                     }
-                    let _e206 = depth.member[_e202];
-                    let _e211 = (select(_e108, _e139, select(false, (_e139 < _e108), (_e139 > 0f))) - _e112);
-                    let _e212 = (select(_e108, _e161, select(false, (_e161 < _e108), (_e161 > 0f))) - _e112);
-                    let _e213 = (select(_e108, _e184, select(false, (_e184 < _e108), (_e184 > 0f))) - _e112);
-                    let _e214 = (select(_e108, _e206, select(false, (_e206 < _e108), (_e206 > 0f))) - _e112);
+                    if (_e170 < 0i) {
+                        phi_443_ = 0i;
+                    } else {
+                        phi_443_ = select(_e170, _e124, (_e170 > _e124));
+                    }
+                    let _e175 = phi_443_;
+                    let _e178 = ((bitcast<u32>(_e175) * _e82) + bitcast<u32>(_e168));
+                    if (_e178 < _e62) {
+                    } else {
+                        break;
+                    }
+                    let _e182 = depth.member[_e178];
+                    if _e115 {
+                    } else {
+                        break;
+                    }
+                    if _e164 {
+                        phi_494_ = 0i;
+                    } else {
+                        phi_494_ = select(_e111, _e114, (_e111 > _e114));
+                    }
+                    let _e190 = phi_494_;
+                    let _e192 = (_e122 + 1i);
+                    if _e125 {
+                    } else {
+                        break;
+                    }
+                    if (_e192 < 0i) {
+                        phi_513_ = 0i;
+                    } else {
+                        phi_513_ = select(_e192, _e124, (_e192 > _e124));
+                    }
+                    let _e197 = phi_513_;
+                    let _e200 = ((bitcast<u32>(_e197) * _e82) + bitcast<u32>(_e190));
+                    if (_e200 < _e62) {
+                    } else {
+                        break;
+                    }
+                    let _e204 = depth.member[_e200];
+                    let _e209 = (select(_e106, _e137, select(false, (_e137 < _e106), (_e137 > 0f))) - _e110);
+                    let _e210 = (select(_e106, _e159, select(false, (_e159 < _e106), (_e159 > 0f))) - _e110);
+                    let _e211 = (select(_e106, _e182, select(false, (_e182 < _e106), (_e182 > 0f))) - _e110);
+                    let _e212 = (select(_e106, _e204, select(false, (_e204 < _e106), (_e204 > 0f))) - _e110);
+                    let _e213 = (_e210 - _e209);
                     let _e215 = (_e212 - _e211);
-                    let _e217 = (_e214 - _e213);
+                    let _e223 = abs(_e209);
+                    let _e224 = abs(_e210);
                     let _e225 = abs(_e211);
                     let _e226 = abs(_e212);
-                    let _e227 = abs(_e213);
-                    let _e228 = abs(_e214);
+                    let _e227 = abs((_e209 + (_e213 * 0.5f)));
+                    let _e228 = abs((_e210 + (_e213 * -0.5f)));
                     let _e229 = abs((_e211 + (_e215 * 0.5f)));
                     let _e230 = abs((_e212 + (_e215 * -0.5f)));
-                    let _e231 = abs((_e213 + (_e217 * 0.5f)));
-                    let _e232 = abs((_e214 + (_e217 * -0.5f)));
-                    let _e241 = (_e112 * 0.011f);
-                    let _e246 = (1.25f - (select(_e229, _e225, (_e225 < _e229)) / _e241));
-                    let _e250 = select(0f, select(1f, _e246, (_e246 < 1f)), (_e246 > 0f));
-                    let _e251 = (1.25f - (select(_e230, _e226, (_e226 < _e230)) / _e241));
-                    let _e255 = select(0f, select(1f, _e251, (_e251 < 1f)), (_e251 > 0f));
-                    let _e256 = (1.25f - (select(_e231, _e227, (_e227 < _e231)) / _e241));
-                    let _e260 = select(0f, select(1f, _e256, (_e256 < 1f)), (_e256 > 0f));
-                    let _e261 = (1.25f - (select(_e232, _e228, (_e228 < _e232)) / _e241));
-                    let _e265 = select(0f, select(1f, _e261, (_e261 < 1f)), (_e261 > 0f));
-                    let _e270 = (select(0f, select(1f, _e250, (_e250 < 1f)), (_e250 > 0f)) * 2.9f);
-                    let _e272 = floor((_e270 + 0.5f));
-                    if ((_e272 - _e270) == 0.5f) {
-                        let _e278 = ((floor((_e272 * 0.5f)) * 2f) != _e272);
-                        if _e278 {
-                            phi_1759_ = (_e272 - 1f);
+                    let _e239 = (_e110 * 0.011f);
+                    let _e244 = (1.25f - (select(_e227, _e223, (_e223 < _e227)) / _e239));
+                    let _e248 = select(0f, select(1f, _e244, (_e244 < 1f)), (_e244 > 0f));
+                    let _e249 = (1.25f - (select(_e228, _e224, (_e224 < _e228)) / _e239));
+                    let _e253 = select(0f, select(1f, _e249, (_e249 < 1f)), (_e249 > 0f));
+                    let _e254 = (1.25f - (select(_e229, _e225, (_e225 < _e229)) / _e239));
+                    let _e258 = select(0f, select(1f, _e254, (_e254 < 1f)), (_e254 > 0f));
+                    let _e259 = (1.25f - (select(_e230, _e226, (_e226 < _e230)) / _e239));
+                    let _e263 = select(0f, select(1f, _e259, (_e259 < 1f)), (_e259 > 0f));
+                    let _e268 = (select(0f, select(1f, _e248, (_e248 < 1f)), (_e248 > 0f)) * 2.9f);
+                    let _e270 = floor((_e268 + 0.5f));
+                    if ((_e270 - _e268) == 0.5f) {
+                        let _e276 = ((floor((_e270 * 0.5f)) * 2f) != _e270);
+                        if _e276 {
+                            phi_1722_ = (_e270 - 1f);
                         } else {
-                            phi_1759_ = f32();
+                            phi_1722_ = f32();
                         }
-                        let _e281 = phi_1759_;
-                        phi_1763_ = _e281;
-                        phi_1764_ = select(true, false, _e278);
+                        let _e279 = phi_1722_;
+                        phi_1726_ = _e279;
+                        phi_1727_ = select(true, false, _e276);
                     } else {
-                        phi_1763_ = f32();
-                        phi_1764_ = true;
+                        phi_1726_ = f32();
+                        phi_1727_ = true;
                     }
-                    let _e284 = phi_1763_;
-                    let _e286 = phi_1764_;
-                    let _e287 = select(_e284, _e272, _e286);
-                    let _e298 = (select(0f, select(1f, _e255, (_e255 < 1f)), (_e255 > 0f)) * 2.9f);
-                    let _e300 = floor((_e298 + 0.5f));
-                    if ((_e300 - _e298) == 0.5f) {
-                        let _e306 = ((floor((_e300 * 0.5f)) * 2f) != _e300);
-                        if _e306 {
-                            phi_1802_ = (_e300 - 1f);
+                    let _e282 = phi_1726_;
+                    let _e284 = phi_1727_;
+                    let _e285 = select(_e282, _e270, _e284);
+                    let _e296 = (select(0f, select(1f, _e253, (_e253 < 1f)), (_e253 > 0f)) * 2.9f);
+                    let _e298 = floor((_e296 + 0.5f));
+                    if ((_e298 - _e296) == 0.5f) {
+                        let _e304 = ((floor((_e298 * 0.5f)) * 2f) != _e298);
+                        if _e304 {
+                            phi_1765_ = (_e298 - 1f);
                         } else {
-                            phi_1802_ = f32();
+                            phi_1765_ = f32();
                         }
-                        let _e309 = phi_1802_;
-                        phi_1806_ = _e309;
-                        phi_1807_ = select(true, false, _e306);
+                        let _e307 = phi_1765_;
+                        phi_1769_ = _e307;
+                        phi_1770_ = select(true, false, _e304);
                     } else {
-                        phi_1806_ = f32();
-                        phi_1807_ = true;
+                        phi_1769_ = f32();
+                        phi_1770_ = true;
                     }
-                    let _e312 = phi_1806_;
-                    let _e314 = phi_1807_;
-                    let _e315 = select(_e312, _e300, _e314);
-                    let _e327 = (select(0f, select(1f, _e260, (_e260 < 1f)), (_e260 > 0f)) * 2.9f);
-                    let _e329 = floor((_e327 + 0.5f));
-                    if ((_e329 - _e327) == 0.5f) {
-                        let _e335 = ((floor((_e329 * 0.5f)) * 2f) != _e329);
-                        if _e335 {
-                            phi_1845_ = (_e329 - 1f);
+                    let _e310 = phi_1769_;
+                    let _e312 = phi_1770_;
+                    let _e313 = select(_e310, _e298, _e312);
+                    let _e325 = (select(0f, select(1f, _e258, (_e258 < 1f)), (_e258 > 0f)) * 2.9f);
+                    let _e327 = floor((_e325 + 0.5f));
+                    if ((_e327 - _e325) == 0.5f) {
+                        let _e333 = ((floor((_e327 * 0.5f)) * 2f) != _e327);
+                        if _e333 {
+                            phi_1808_ = (_e327 - 1f);
                         } else {
-                            phi_1845_ = f32();
+                            phi_1808_ = f32();
                         }
-                        let _e338 = phi_1845_;
-                        phi_1849_ = _e338;
-                        phi_1850_ = select(true, false, _e335);
+                        let _e336 = phi_1808_;
+                        phi_1812_ = _e336;
+                        phi_1813_ = select(true, false, _e333);
                     } else {
-                        phi_1849_ = f32();
-                        phi_1850_ = true;
+                        phi_1812_ = f32();
+                        phi_1813_ = true;
                     }
-                    let _e341 = phi_1849_;
-                    let _e343 = phi_1850_;
-                    let _e344 = select(_e341, _e329, _e343);
-                    let _e356 = (select(0f, select(1f, _e265, (_e265 < 1f)), (_e265 > 0f)) * 2.9f);
-                    let _e358 = floor((_e356 + 0.5f));
-                    if ((_e358 - _e356) == 0.5f) {
-                        let _e364 = ((floor((_e358 * 0.5f)) * 2f) != _e358);
-                        if _e364 {
-                            phi_1888_ = (_e358 - 1f);
+                    let _e339 = phi_1812_;
+                    let _e341 = phi_1813_;
+                    let _e342 = select(_e339, _e327, _e341);
+                    let _e354 = (select(0f, select(1f, _e263, (_e263 < 1f)), (_e263 > 0f)) * 2.9f);
+                    let _e356 = floor((_e354 + 0.5f));
+                    if ((_e356 - _e354) == 0.5f) {
+                        let _e362 = ((floor((_e356 * 0.5f)) * 2f) != _e356);
+                        if _e362 {
+                            phi_1851_ = (_e356 - 1f);
                         } else {
-                            phi_1888_ = f32();
+                            phi_1851_ = f32();
                         }
-                        let _e367 = phi_1888_;
-                        phi_1892_ = _e367;
-                        phi_1893_ = select(true, false, _e364);
+                        let _e365 = phi_1851_;
+                        phi_1855_ = _e365;
+                        phi_1856_ = select(true, false, _e362);
                     } else {
-                        phi_1892_ = f32();
-                        phi_1893_ = true;
+                        phi_1855_ = f32();
+                        phi_1856_ = true;
                     }
-                    let _e370 = phi_1892_;
-                    let _e372 = phi_1893_;
-                    let _e373 = select(_e370, _e358, _e372);
-                    let _e379 = ((((64u * select(select(u32(_e287), 0u, (_e287 < 0f)), 4294967295u, (_e287 > 4294967000f))) + (16u * select(select(u32(_e315), 0u, (_e315 < 0f)), 4294967295u, (_e315 > 4294967000f)))) + (4u * select(select(u32(_e344), 0u, (_e344 < 0f)), 4294967295u, (_e344 > 4294967000f)))) + select(select(u32(_e373), 0u, (_e373 < 0f)), 4294967295u, (_e373 > 4294967000f)));
-                    if _e101 {
+                    let _e368 = phi_1855_;
+                    let _e370 = phi_1856_;
+                    let _e371 = select(_e368, _e356, _e370);
+                    let _e377 = ((((64u * select(select(u32(_e285), 0u, (_e285 < 0f)), 4294967295u, (_e285 > 4294967000f))) + (16u * select(select(u32(_e313), 0u, (_e313 < 0f)), 4294967295u, (_e313 > 4294967000f)))) + (4u * select(select(u32(_e342), 0u, (_e342 < 0f)), 4294967295u, (_e342 > 4294967000f)))) + select(select(u32(_e371), 0u, (_e371 < 0f)), 4294967295u, (_e371 > 4294967000f)));
+                    if _e99 {
                     } else {
                         break;
                     }
-                    if _e111 {
-                        let _e392 = params.member.member.member_1[0u];
-                        let _e394 = ((((((f32(_e60.x) + 0.5f) / _e79) * 2f) - 1f) * _e392) * _e104);
-                        let _e401 = params.member.member.member_1[1u];
-                        let _e403 = ((((((f32(_e60.y) + 0.5f) / _e89) * -2f) + 1f) * _e401) * _e104);
-                        if (_e100 < _e64) {
+                    if _e109 {
+                        let _e390 = params.member.member.member_1[0u];
+                        let _e392 = ((((((f32(_e60.x) + 0.5f) / _e77) * 2f) - 1f) * _e390) * _e102);
+                        let _e399 = params.member.member.member_1[1u];
+                        let _e401 = ((((((f32(_e60.y) + 0.5f) / _e87) * -2f) + 1f) * _e399) * _e102);
+                        if (_e98 < _e64) {
                         } else {
                             break;
                         }
-                        let _e408 = normals.member[_e100];
-                        let _e416 = (f32((bitcast<i32>(((_e408 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e416 != _e416) {
-                            phi_1915_ = true;
+                        let _e406 = normals.member[_e98];
+                        let _e414 = (f32((bitcast<i32>(((_e406 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e414 != _e414) {
+                            phi_1879_ = true;
                         } else {
-                            phi_1915_ = (-1f >= _e416);
+                            phi_1879_ = (-1f >= _e414);
                         }
-                        let _e420 = phi_1915_;
-                        let _e421 = select(_e416, -1f, _e420);
-                        let _e431 = (f32((bitcast<i32>((((_e408 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e431 != _e431) {
-                            phi_1930_ = true;
+                        let _e418 = phi_1879_;
+                        let _e419 = select(_e414, -1f, _e418);
+                        let _e429 = (f32((bitcast<i32>((((_e406 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e429 != _e429) {
+                            phi_1894_ = true;
                         } else {
-                            phi_1930_ = (-1f >= _e431);
+                            phi_1894_ = (-1f >= _e429);
                         }
-                        let _e435 = phi_1930_;
-                        let _e436 = select(_e431, -1f, _e435);
-                        let _e439 = (1f - abs(_e421));
-                        let _e440 = abs(_e436);
-                        let _e441 = (_e439 - _e440);
-                        if (_e441 < 0f) {
-                            phi_781_ = vec2<f32>(((1f - _e440) * select(1f, -1f, (_e421 < 0f))), (_e439 * select(1f, -1f, (_e436 < 0f))));
+                        let _e433 = phi_1894_;
+                        let _e434 = select(_e429, -1f, _e433);
+                        let _e437 = (1f - abs(_e419));
+                        let _e438 = abs(_e434);
+                        let _e439 = (_e437 - _e438);
+                        if (_e439 < 0f) {
+                            phi_770_ = vec2<f32>(((1f - _e438) * select(1f, -1f, (_e419 < 0f))), (_e437 * select(1f, -1f, (_e434 < 0f))));
                         } else {
-                            phi_781_ = vec2<f32>(_e421, _e436);
+                            phi_770_ = vec2<f32>(_e419, _e434);
                         }
-                        let _e452 = phi_781_;
-                        let _e461 = (1f / sqrt((((_e452.x * _e452.x) + (_e452.y * _e452.y)) + (_e441 * _e441))));
-                        let _e462 = (_e452.x * _e461);
-                        let _e463 = (_e452.y * _e461);
-                        let _e464 = (_e441 * _e461);
-                        let _e465 = -(_e464);
-                        if ((((_e462 * -(_e394)) + (_e463 * -(_e403))) + (_e465 * -(_e104))) < 0f) {
-                            phi_812_ = vec3<f32>(-(_e462), -(_e463), _e464);
+                        let _e450 = phi_770_;
+                        let _e459 = (1f / sqrt((((_e450.x * _e450.x) + (_e450.y * _e450.y)) + (_e439 * _e439))));
+                        let _e460 = (_e450.x * _e459);
+                        let _e461 = (_e450.y * _e459);
+                        let _e462 = (_e439 * _e459);
+                        let _e463 = -(_e462);
+                        if ((((_e460 * -(_e392)) + (_e461 * -(_e401))) + (_e463 * -(_e102))) < 0f) {
+                            phi_801_ = vec3<f32>(-(_e460), -(_e461), _e462);
                         } else {
-                            phi_812_ = vec3<f32>(_e462, _e463, _e465);
+                            phi_801_ = vec3<f32>(_e460, _e461, _e463);
                         }
-                        let _e480 = phi_812_;
-                        let _e483 = params.member.member_8;
-                        phi_818_ = (_e60.y & 63u);
-                        phi_821_ = (_e60.x & 63u);
-                        phi_823_ = 32u;
-                        phi_825_ = 0u;
+                        let _e478 = phi_801_;
+                        let _e481 = params.member.member_8;
+                        phi_807_ = (_e60.y & 63u);
+                        phi_810_ = (_e60.x & 63u);
+                        phi_812_ = 32u;
+                        phi_814_ = 0u;
                         loop {
-                            let _e487 = phi_818_;
-                            let _e489 = phi_821_;
-                            let _e491 = phi_823_;
-                            let _e493 = phi_825_;
-                            local = _e493;
-                            let _e494 = (_e491 > 0u);
-                            if _e494 {
-                                let _e497 = select(0u, 1u, ((_e489 & _e491) != 0u));
-                                let _e500 = select(0u, 1u, ((_e487 & _e491) != 0u));
-                                if (_e500 == 0u) {
-                                    if (_e497 == 1u) {
-                                        phi_854_ = (63u - _e487);
-                                        phi_855_ = (63u - _e489);
+                            let _e485 = phi_807_;
+                            let _e487 = phi_810_;
+                            let _e489 = phi_812_;
+                            let _e491 = phi_814_;
+                            local = _e491;
+                            let _e492 = (_e489 > 0u);
+                            if _e492 {
+                                let _e495 = select(0u, 1u, ((_e487 & _e489) != 0u));
+                                let _e498 = select(0u, 1u, ((_e485 & _e489) != 0u));
+                                if (_e498 == 0u) {
+                                    if (_e495 == 1u) {
+                                        phi_843_ = (63u - _e485);
+                                        phi_844_ = (63u - _e487);
                                     } else {
-                                        phi_854_ = _e487;
-                                        phi_855_ = _e489;
+                                        phi_843_ = _e485;
+                                        phi_844_ = _e487;
                                     }
-                                    let _e511 = phi_854_;
-                                    let _e513 = phi_855_;
-                                    phi_856_ = _e513;
-                                    phi_857_ = _e511;
+                                    let _e509 = phi_843_;
+                                    let _e511 = phi_844_;
+                                    phi_845_ = _e511;
+                                    phi_846_ = _e509;
                                 } else {
-                                    phi_856_ = _e487;
-                                    phi_857_ = _e489;
+                                    phi_845_ = _e485;
+                                    phi_846_ = _e487;
                                 }
-                                let _e515 = phi_856_;
-                                let _e517 = phi_857_;
-                                phi_819_ = _e515;
-                                phi_822_ = _e517;
-                                phi_824_ = (_e491 / 2u);
-                                phi_826_ = (_e493 + ((_e491 * _e491) * ((3u * _e497) ^ _e500)));
+                                let _e513 = phi_845_;
+                                let _e515 = phi_846_;
+                                phi_808_ = _e513;
+                                phi_811_ = _e515;
+                                phi_813_ = (_e489 / 2u);
+                                phi_815_ = (_e491 + ((_e489 * _e489) * ((3u * _e495) ^ _e498)));
                             } else {
-                                phi_819_ = u32();
-                                phi_822_ = u32();
-                                phi_824_ = u32();
-                                phi_826_ = u32();
+                                phi_808_ = u32();
+                                phi_811_ = u32();
+                                phi_813_ = u32();
+                                phi_815_ = u32();
                             }
-                            let _e520 = phi_819_;
-                            let _e522 = phi_822_;
-                            let _e524 = phi_824_;
-                            let _e526 = phi_826_;
+                            let _e518 = phi_808_;
+                            let _e520 = phi_811_;
+                            let _e522 = phi_813_;
+                            let _e524 = phi_815_;
                             continue;
                             continuing {
-                                phi_818_ = _e520;
-                                phi_821_ = _e522;
-                                phi_823_ = _e524;
-                                phi_825_ = _e526;
-                                break if !(_e494);
+                                phi_807_ = _e518;
+                                phi_810_ = _e520;
+                                phi_812_ = _e522;
+                                phi_814_ = _e524;
+                                break if !(_e492);
                             }
                         }
-                        let _e531 = local;
-                        let _e533 = f32((_e531 + (288u * (_e483 % 64u))));
-                        let _e535 = (0.5f + (_e533 * 0.7548777f));
-                        let _e539 = (0.5f + (_e533 * 0.5698403f));
-                        let _e542 = (6.2831855f * (_e535 - floor(_e535)));
-                        phi_888_ = type_29(_e379, type_28(1u, type_27(vec2<u32>(_e60.x, _e60.y), vec3<f32>(_e394, _e403, _e104), _e480, sin(_e542), cos(_e542), (_e539 - floor(_e539)))));
+                        let _e529 = local;
+                        let _e531 = f32((_e529 + (288u * (_e481 % 64u))));
+                        let _e533 = (0.5f + (_e531 * 0.7548777f));
+                        let _e537 = (0.5f + (_e531 * 0.5698403f));
+                        let _e540 = (6.2831855f * (_e533 - floor(_e533)));
+                        phi_877_ = type_28(_e377, type_27(1u, type_26(vec2<u32>(_e60.x, _e60.y), vec3<f32>(_e392, _e401, _e102), _e478, sin(_e540), cos(_e540), (_e537 - floor(_e537)))));
                     } else {
-                        phi_888_ = type_29(_e379, type_28(0u, type_28().member_1));
+                        phi_877_ = type_28(_e377, type_27(0u, type_27().member_1));
                     }
-                    let _e554 = phi_888_;
-                    if (bitcast<i32>(_e554.member_1.member) != 0i) {
-                        let _e563 = params.member.member_5;
-                        let _e565 = select(_e563, 64u, (64u < _e563));
-                        let _e567 = select(_e565, _e66, (_e66 < _e565));
-                        let _e569 = select(1u, _e567, (1u < _e567));
-                        let _e572 = params.member.member_6;
-                        let _e574 = select(1u, _e572, (1u < _e572));
-                        phi_2217_ = false;
-                        phi_923_ = 0u;
-                        phi_926_ = 0f;
+                    let _e552 = phi_877_;
+                    if (bitcast<i32>(_e552.member_1.member) != 0i) {
+                        let _e561 = params.member.member_5;
+                        let _e563 = select(_e561, 64u, (64u < _e561));
+                        let _e565 = select(_e563, _e66, (_e66 < _e563));
+                        let _e567 = select(1u, _e565, (1u < _e565));
+                        let _e570 = params.member.member_6;
+                        let _e572 = select(1u, _e570, (1u < _e570));
+                        phi_2069_ = false;
+                        phi_912_ = 0u;
+                        phi_915_ = 0f;
                         loop {
-                            let _e576 = phi_2217_;
-                            let _e578 = phi_923_;
-                            let _e580 = phi_926_;
-                            local_5 = _e580;
-                            let _e581 = (_e578 < _e569);
-                            if _e581 {
-                                if (_e578 < _e66) {
+                            let _e574 = phi_2069_;
+                            let _e576 = phi_912_;
+                            let _e578 = phi_915_;
+                            local_5 = _e578;
+                            let _e579 = (_e576 < _e567);
+                            if _e579 {
+                                if (_e576 < _e66) {
                                 } else {
-                                    phi_2294_ = true;
+                                    phi_2146_ = true;
                                     break;
                                 }
-                                let _e586 = kernel.member[_e578][0u];
-                                let _e590 = kernel.member[_e578][1u];
-                                let _e595 = ((_e554.member_1.member_1.member_4 * _e586) - (_e554.member_1.member_1.member_3 * _e590));
-                                let _e598 = ((_e554.member_1.member_1.member_3 * _e586) + (_e554.member_1.member_1.member_4 * _e590));
-                                let _e603 = ((1f - (_e595 * _e595)) - (_e598 * _e598));
-                                if (_e603 != _e603) {
-                                    phi_1945_ = true;
+                                let _e584 = kernel.member[_e576][0u];
+                                let _e588 = kernel.member[_e576][1u];
+                                let _e593 = ((_e552.member_1.member_1.member_4 * _e584) - (_e552.member_1.member_1.member_3 * _e588));
+                                let _e596 = ((_e552.member_1.member_1.member_3 * _e584) + (_e552.member_1.member_1.member_4 * _e588));
+                                let _e601 = ((1f - (_e593 * _e593)) - (_e596 * _e596));
+                                if (_e601 != _e601) {
+                                    phi_1909_ = true;
                                 } else {
-                                    phi_1945_ = (0f >= _e603);
+                                    phi_1909_ = (0f >= _e601);
                                 }
-                                let _e607 = phi_1945_;
-                                let _e609 = sqrt(select(_e603, 0f, _e607));
-                                let _e610 = -(_e609);
-                                let _e614 = (-1f * _e554.member_1.member_1.member_2.z);
-                                let _e615 = (-1f * _e554.member_1.member_1.member_2.x);
-                                let _e617 = (1f / (_e614 + 1f));
-                                let _e618 = (_e617 * _e554.member_1.member_1.member_2.y);
-                                let _e622 = (_e618 * _e615);
-                                let _e642 = (_e614 > 0.9997f);
-                                let _e643 = (_e614 < -0.9997f);
-                                let _e653 = params.member.member_1;
-                                let _e657 = params.member.member_3;
-                                let _e660 = params.member.member_4;
-                                phi_1072_ = 1u;
-                                phi_1075_ = _e653;
-                                phi_1077_ = false;
-                                phi_1079_ = true;
-                                phi_1081_ = 0f;
-                                phi_1083_ = 0f;
+                                let _e605 = phi_1909_;
+                                let _e607 = sqrt(select(_e601, 0f, _e605));
+                                let _e608 = -(_e607);
+                                let _e612 = (-1f * _e552.member_1.member_1.member_2.z);
+                                let _e613 = (-1f * _e552.member_1.member_1.member_2.x);
+                                let _e615 = (1f / (_e612 + 1f));
+                                let _e616 = (_e615 * _e552.member_1.member_1.member_2.y);
+                                let _e620 = (_e616 * _e613);
+                                let _e640 = (_e612 > 0.9997f);
+                                let _e641 = (_e612 < -0.9997f);
+                                let _e651 = params.member.member_1;
+                                let _e655 = params.member.member_3;
+                                let _e658 = params.member.member_4;
+                                phi_1061_ = 1u;
+                                phi_1064_ = _e651;
+                                phi_1066_ = false;
+                                phi_1068_ = true;
+                                phi_1070_ = 0f;
+                                phi_1072_ = 0f;
                                 loop {
-                                    let _e666 = phi_1072_;
-                                    let _e668 = phi_1075_;
-                                    let _e670 = phi_1077_;
-                                    let _e672 = phi_1079_;
-                                    let _e674 = phi_1081_;
-                                    let _e676 = phi_1083_;
-                                    local_1 = _e668;
-                                    local_2 = _e670;
-                                    local_3 = _e668;
-                                    local_4 = _e670;
-                                    let _e677 = (_e666 <= _e574);
-                                    if _e677 {
-                                        let _e683 = (((-(_e554.member_1.member_1.member_5) + f32(_e666)) * _e653) / f32(_e574));
-                                        let _e688 = (_e554.member_1.member_1.member_1.x + (select(select(((((_e614 + (_e618 * _e554.member_1.member_1.member_2.y)) * _e595) + (_e622 * _e598)) + (_e615 * _e610)), _e595, _e643), _e595, _e642) * _e683));
-                                        let _e690 = (_e554.member_1.member_1.member_1.y + (select(select((((_e622 * _e595) + ((_e614 + ((_e617 * _e615) * _e615)) * _e598)) + (-(_e554.member_1.member_1.member_2.y) * _e610)), -(_e598), _e643), _e598, _e642) * _e683));
-                                        let _e692 = (_e554.member_1.member_1.member_1.z + (select(select((((_e554.member_1.member_1.member_2.x * _e595) + (_e554.member_1.member_1.member_2.y * _e598)) + (_e614 * _e610)), _e609, _e643), _e610, _e642) * _e683));
-                                        let _e698 = params.member.member.member_1[0u];
-                                        let _e701 = (((_e688 * 0.5f) / (_e692 * _e698)) + 0.5f);
-                                        let _e707 = params.member.member.member_1[1u];
-                                        let _e710 = (0.5f - ((_e690 * 0.5f) / (_e692 * _e707)));
-                                        let _e720 = select(false, select(false, select(false, select(false, (_e710 <= 1f), (_e710 >= 0f)), select(false, (_e701 <= 1f), (_e701 >= 0f))), (_e692 > 0f)), _e672);
-                                        if _e720 {
-                                            let _e721 = (_e701 * _e79);
-                                            if (_e721 > 0f) {
-                                                let _e727 = select(select(u32(_e721), 0u, (_e721 < 0f)), 4294967295u, (_e721 > 4294967000f));
-                                                let _e728 = (_e84 - 1u);
-                                                phi_1187_ = select(_e727, _e728, (_e728 < _e727));
+                                    let _e664 = phi_1061_;
+                                    let _e666 = phi_1064_;
+                                    let _e668 = phi_1066_;
+                                    let _e670 = phi_1068_;
+                                    let _e672 = phi_1070_;
+                                    let _e674 = phi_1072_;
+                                    local_1 = _e666;
+                                    local_2 = _e668;
+                                    local_3 = _e666;
+                                    local_4 = _e668;
+                                    let _e675 = (_e664 <= _e572);
+                                    if _e675 {
+                                        let _e681 = (((-(_e552.member_1.member_1.member_5) + f32(_e664)) * _e651) / f32(_e572));
+                                        let _e686 = (_e552.member_1.member_1.member_1.x + (select(select(((((_e612 + (_e616 * _e552.member_1.member_1.member_2.y)) * _e593) + (_e620 * _e596)) + (_e613 * _e608)), _e593, _e641), _e593, _e640) * _e681));
+                                        let _e688 = (_e552.member_1.member_1.member_1.y + (select(select((((_e620 * _e593) + ((_e612 + ((_e615 * _e613) * _e613)) * _e596)) + (-(_e552.member_1.member_1.member_2.y) * _e608)), -(_e596), _e641), _e596, _e640) * _e681));
+                                        let _e690 = (_e552.member_1.member_1.member_1.z + (select(select((((_e552.member_1.member_1.member_2.x * _e593) + (_e552.member_1.member_1.member_2.y * _e596)) + (_e612 * _e608)), _e607, _e641), _e608, _e640) * _e681));
+                                        let _e696 = params.member.member.member_1[0u];
+                                        let _e699 = (((_e686 * 0.5f) / (_e690 * _e696)) + 0.5f);
+                                        let _e705 = params.member.member.member_1[1u];
+                                        let _e708 = (0.5f - ((_e688 * 0.5f) / (_e690 * _e705)));
+                                        let _e718 = select(false, select(false, select(false, select(false, (_e708 <= 1f), (_e708 >= 0f)), select(false, (_e699 <= 1f), (_e699 >= 0f))), (_e690 > 0f)), _e670);
+                                        if _e718 {
+                                            let _e719 = (_e699 * _e77);
+                                            if (_e719 > 0f) {
+                                                let _e725 = select(select(u32(_e719), 0u, (_e719 < 0f)), 4294967295u, (_e719 > 4294967000f));
+                                                let _e726 = (_e82 - 1u);
+                                                phi_1176_ = select(_e725, _e726, (_e726 < _e725));
                                             } else {
-                                                phi_1187_ = 0u;
+                                                phi_1176_ = 0u;
                                             }
-                                            let _e732 = phi_1187_;
-                                            let _e733 = (_e710 * _e89);
-                                            if (_e733 > 0f) {
-                                                let _e739 = select(select(u32(_e733), 0u, (_e733 < 0f)), 4294967295u, (_e733 > 4294967000f));
-                                                let _e740 = (_e94 - 1u);
-                                                phi_1208_ = select(_e739, _e740, (_e740 < _e739));
+                                            let _e730 = phi_1176_;
+                                            let _e731 = (_e708 * _e87);
+                                            if (_e731 > 0f) {
+                                                let _e737 = select(select(u32(_e731), 0u, (_e731 < 0f)), 4294967295u, (_e731 > 4294967000f));
+                                                let _e738 = (_e92 - 1u);
+                                                phi_1197_ = select(_e737, _e738, (_e738 < _e737));
                                             } else {
-                                                phi_1208_ = 0u;
+                                                phi_1197_ = 0u;
                                             }
-                                            let _e744 = phi_1208_;
-                                            let _e746 = ((_e744 * _e84) + _e732);
-                                            if (_e746 < _e62) {
+                                            let _e742 = phi_1197_;
+                                            let _e744 = ((_e742 * _e82) + _e730);
+                                            if (_e744 < _e62) {
                                             } else {
-                                                phi_2171_ = true;
-                                                phi_1732_ = bool();
-                                                phi_1731_ = bool();
-                                                phi_1730_ = bool();
-                                                phi_1729_ = bool();
-                                                phi_1727_ = f32();
+                                                phi_2021_ = true;
+                                                phi_1695_ = bool();
+                                                phi_1694_ = bool();
+                                                phi_1693_ = bool();
+                                                phi_1692_ = bool();
+                                                phi_1690_ = f32();
                                                 break;
                                             }
-                                            let _e750 = depth.member[_e746];
-                                            let _e754 = select(_e108, _e750, select(false, (_e750 < _e108), (_e750 > 0f)));
-                                            let _e757 = (((_e701 * 2f) - 1f) * _e698);
-                                            let _e761 = (((_e710 * -2f) + 1f) * _e707);
-                                            let _e763 = (_e688 - (_e757 * _e754));
-                                            let _e764 = (_e690 - (_e761 * _e754));
-                                            let _e765 = (_e692 - _e754);
-                                            let _e771 = sqrt((((_e763 * _e763) + (_e764 * _e764)) + (_e765 * _e765)));
-                                            let _e772 = params.member.member;
-                                            let _e790 = (select(0f, select(1f, _e701, (_e701 < 1f)), (_e701 > 0f)) * _e772.member.x);
-                                            let _e795 = (select(0f, select(1f, _e710, (_e710 < 1f)), (_e710 > 0f)) * _e772.member.y);
-                                            let _e800 = select(select(u32(_e790), 0u, (_e790 < 0f)), 4294967295u, (_e790 > 4294967000f));
-                                            let _e801 = (select(select(u32(_e772.member.x), 0u, (_e772.member.x < 0f)), 4294967295u, (_e772.member.x > 4294967000f)) - 1u);
-                                            let _e803 = select(_e800, _e801, (_e801 < _e800));
-                                            let _e808 = select(select(u32(_e795), 0u, (_e795 < 0f)), 4294967295u, (_e795 > 4294967000f));
-                                            let _e809 = (select(select(u32(_e772.member.y), 0u, (_e772.member.y < 0f)), 4294967295u, (_e772.member.y > 4294967000f)) - 1u);
-                                            let _e811 = select(_e808, _e809, (_e809 < _e808));
-                                            let _e829 = ((_e811 * _e84) + _e803);
-                                            if (_e829 < _e64) {
+                                            let _e748 = depth.member[_e744];
+                                            let _e752 = select(_e106, _e748, select(false, (_e748 < _e106), (_e748 > 0f)));
+                                            let _e755 = (((_e699 * 2f) - 1f) * _e696);
+                                            let _e759 = (((_e708 * -2f) + 1f) * _e705);
+                                            let _e761 = (_e686 - (_e755 * _e752));
+                                            let _e762 = (_e688 - (_e759 * _e752));
+                                            let _e763 = (_e690 - _e752);
+                                            let _e769 = sqrt((((_e761 * _e761) + (_e762 * _e762)) + (_e763 * _e763)));
+                                            let _e774 = (select(0f, select(1f, _e699, (_e699 < 1f)), (_e699 > 0f)) * _e77);
+                                            if (_e774 > 0f) {
+                                                let _e780 = select(select(u32(_e774), 0u, (_e774 < 0f)), 4294967295u, (_e774 > 4294967000f));
+                                                let _e781 = (_e82 - 1u);
+                                                phi_1291_ = select(_e780, _e781, (_e781 < _e780));
                                             } else {
-                                                phi_2171_ = true;
-                                                phi_1732_ = bool();
-                                                phi_1731_ = bool();
-                                                phi_1730_ = bool();
-                                                phi_1729_ = bool();
-                                                phi_1727_ = f32();
+                                                phi_1291_ = 0u;
+                                            }
+                                            let _e785 = phi_1291_;
+                                            let _e790 = (select(0f, select(1f, _e708, (_e708 < 1f)), (_e708 > 0f)) * _e87);
+                                            if (_e790 > 0f) {
+                                                let _e796 = select(select(u32(_e790), 0u, (_e790 < 0f)), 4294967295u, (_e790 > 4294967000f));
+                                                let _e797 = (_e92 - 1u);
+                                                phi_1322_ = select(_e796, _e797, (_e797 < _e796));
+                                            } else {
+                                                phi_1322_ = 0u;
+                                            }
+                                            let _e801 = phi_1322_;
+                                            let _e819 = ((_e801 * _e82) + _e785);
+                                            if (_e819 < _e64) {
+                                            } else {
+                                                phi_2021_ = true;
+                                                phi_1695_ = bool();
+                                                phi_1694_ = bool();
+                                                phi_1693_ = bool();
+                                                phi_1692_ = bool();
+                                                phi_1690_ = f32();
                                                 break;
                                             }
-                                            let _e833 = normals.member[_e829];
-                                            let _e841 = (f32((bitcast<i32>(((_e833 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e841 != _e841) {
-                                                phi_2120_ = true;
+                                            let _e823 = normals.member[_e819];
+                                            let _e831 = (f32((bitcast<i32>(((_e823 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                            if (_e831 != _e831) {
+                                                phi_1992_ = true;
                                             } else {
-                                                phi_2120_ = (-1f >= _e841);
+                                                phi_1992_ = (-1f >= _e831);
                                             }
-                                            let _e845 = phi_2120_;
-                                            let _e846 = select(_e841, -1f, _e845);
-                                            let _e856 = (f32((bitcast<i32>((((_e833 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e856 != _e856) {
-                                                phi_2135_ = true;
+                                            let _e835 = phi_1992_;
+                                            let _e836 = select(_e831, -1f, _e835);
+                                            let _e846 = (f32((bitcast<i32>((((_e823 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                            if (_e846 != _e846) {
+                                                phi_2007_ = true;
                                             } else {
-                                                phi_2135_ = (-1f >= _e856);
+                                                phi_2007_ = (-1f >= _e846);
                                             }
-                                            let _e860 = phi_2135_;
-                                            let _e861 = select(_e856, -1f, _e860);
-                                            let _e864 = (1f - abs(_e846));
-                                            let _e865 = abs(_e861);
-                                            let _e866 = (_e864 - _e865);
-                                            if (_e866 < 0f) {
-                                                phi_2096_ = vec2<f32>(((1f - _e865) * select(1f, -1f, (_e846 < 0f))), (_e864 * select(1f, -1f, (_e861 < 0f))));
+                                            let _e850 = phi_2007_;
+                                            let _e851 = select(_e846, -1f, _e850);
+                                            let _e854 = (1f - abs(_e836));
+                                            let _e855 = abs(_e851);
+                                            let _e856 = (_e854 - _e855);
+                                            if (_e856 < 0f) {
+                                                phi_1968_ = vec2<f32>(((1f - _e855) * select(1f, -1f, (_e836 < 0f))), (_e854 * select(1f, -1f, (_e851 < 0f))));
                                             } else {
-                                                phi_2096_ = vec2<f32>(_e846, _e861);
+                                                phi_1968_ = vec2<f32>(_e836, _e851);
                                             }
-                                            let _e877 = phi_2096_;
-                                            let _e886 = (1f / sqrt((((_e877.x * _e877.x) + (_e877.y * _e877.y)) + (_e866 * _e866))));
-                                            let _e887 = (_e877.x * _e886);
-                                            let _e888 = (_e877.y * _e886);
-                                            let _e890 = -((_e866 * _e886));
-                                            let _e894 = (((_e887 * _e757) + (_e888 * _e761)) + _e890);
-                                            let _e903 = select(((((_e887 * ((((((f32(_e803) + 0.5f) * (1f / _e772.member.x)) * 2f) - 1f) * _e698) * _e754)) + (_e888 * ((((((f32(_e811) + 0.5f) * (1f / _e772.member.y)) * -2f) + 1f) * _e707) * _e754))) + (_e890 * _e754)) / _e894), _e754, (abs(_e894) < 0.001f));
-                                            if (_e803 == _e554.member_1.member_1.member.x) {
-                                                phi_1360_ = (_e811 == _e554.member_1.member_1.member.y);
+                                            let _e867 = phi_1968_;
+                                            let _e876 = (1f / sqrt((((_e867.x * _e867.x) + (_e867.y * _e867.y)) + (_e856 * _e856))));
+                                            let _e877 = (_e867.x * _e876);
+                                            let _e878 = (_e867.y * _e876);
+                                            let _e880 = -((_e856 * _e876));
+                                            let _e884 = (((_e877 * _e755) + (_e878 * _e759)) + _e880);
+                                            let _e893 = select(((((_e877 * ((((((f32(_e785) + 0.5f) * (1f / _e77)) * 2f) - 1f) * _e696) * _e752)) + (_e878 * ((((((f32(_e801) + 0.5f) * (1f / _e87)) * -2f) + 1f) * _e705) * _e752))) + (_e880 * _e752)) / _e884), _e752, (abs(_e884) < 0.001f));
+                                            let _e903 = select(select(((_e690 - _e893) > _e658), true, (_e690 < (_e893 * (1f + _e655)))), true, select(false, (_e801 == _e552.member_1.member_1.member.y), (_e785 == _e552.member_1.member_1.member.x)));
+                                            let _e905 = select(false, !(_e903), _e718);
+                                            let _e906 = (_e672 + _e769);
+                                            let _e915 = select(false, _e903, _e718);
+                                            if _e915 {
+                                                phi_1462_ = (_e664 + 1u);
                                             } else {
-                                                phi_1360_ = false;
+                                                phi_1462_ = u32();
                                             }
-                                            let _e907 = phi_1360_;
-                                            let _e914 = select(select(((_e692 - _e903) > _e660), true, (_e692 < (_e903 * (1f + _e657)))), true, _e907);
-                                            let _e916 = select(false, !(_e914), _e720);
-                                            let _e917 = (_e674 + _e771);
-                                            let _e926 = select(false, _e914, _e720);
-                                            if _e926 {
-                                                phi_1405_ = (_e666 + 1u);
-                                            } else {
-                                                phi_1405_ = u32();
-                                            }
-                                            let _e929 = phi_1405_;
-                                            phi_1407_ = _e929;
-                                            phi_1408_ = select(_e668, select((_e676 + ((_e674 * (_e683 - _e676)) / _e917)), _e676, (_e917 < 0.000001f)), _e916);
-                                            phi_1409_ = select(_e916, true, _e670);
-                                            phi_1410_ = _e926;
-                                            phi_1411_ = _e771;
-                                            phi_1414_ = _e926;
-                                            phi_1415_ = select(true, false, _e926);
+                                            let _e918 = phi_1462_;
+                                            phi_1464_ = _e918;
+                                            phi_1465_ = select(_e666, select((_e674 + ((_e672 * (_e681 - _e674)) / _e906)), _e674, (_e906 < 0.000001f)), _e905);
+                                            phi_1466_ = select(_e905, true, _e668);
+                                            phi_1467_ = _e915;
+                                            phi_1468_ = _e769;
+                                            phi_1471_ = _e915;
+                                            phi_1472_ = select(true, false, _e915);
                                         } else {
-                                            phi_1407_ = u32();
-                                            phi_1408_ = f32();
-                                            phi_1409_ = bool();
-                                            phi_1410_ = bool();
-                                            phi_1411_ = f32();
-                                            phi_1414_ = false;
-                                            phi_1415_ = false;
+                                            phi_1464_ = u32();
+                                            phi_1465_ = f32();
+                                            phi_1466_ = bool();
+                                            phi_1467_ = bool();
+                                            phi_1468_ = f32();
+                                            phi_1471_ = false;
+                                            phi_1472_ = false;
                                         }
-                                        let _e932 = phi_1407_;
-                                        let _e934 = phi_1408_;
-                                        let _e936 = phi_1409_;
-                                        let _e938 = phi_1410_;
-                                        let _e940 = phi_1411_;
-                                        let _e942 = phi_1414_;
-                                        let _e944 = phi_1415_;
-                                        phi_1073_ = _e932;
-                                        phi_1076_ = _e934;
-                                        phi_1078_ = _e936;
-                                        phi_1080_ = _e938;
-                                        phi_1082_ = _e940;
-                                        phi_1084_ = _e683;
-                                        phi_1419_ = _e942;
-                                        phi_1421_ = _e944;
-                                        phi_1422_ = select(true, false, _e720);
+                                        let _e921 = phi_1464_;
+                                        let _e923 = phi_1465_;
+                                        let _e925 = phi_1466_;
+                                        let _e927 = phi_1467_;
+                                        let _e929 = phi_1468_;
+                                        let _e931 = phi_1471_;
+                                        let _e933 = phi_1472_;
+                                        phi_1062_ = _e921;
+                                        phi_1065_ = _e923;
+                                        phi_1067_ = _e925;
+                                        phi_1069_ = _e927;
+                                        phi_1071_ = _e929;
+                                        phi_1073_ = _e681;
+                                        phi_1476_ = _e931;
+                                        phi_1478_ = _e933;
+                                        phi_1479_ = select(true, false, _e718);
                                     } else {
-                                        phi_1073_ = u32();
-                                        phi_1076_ = f32();
-                                        phi_1078_ = bool();
-                                        phi_1080_ = bool();
-                                        phi_1082_ = f32();
-                                        phi_1084_ = f32();
-                                        phi_1419_ = false;
-                                        phi_1421_ = false;
-                                        phi_1422_ = false;
+                                        phi_1062_ = u32();
+                                        phi_1065_ = f32();
+                                        phi_1067_ = bool();
+                                        phi_1069_ = bool();
+                                        phi_1071_ = f32();
+                                        phi_1073_ = f32();
+                                        phi_1476_ = false;
+                                        phi_1478_ = false;
+                                        phi_1479_ = false;
                                     }
-                                    let _e947 = phi_1073_;
-                                    let _e949 = phi_1076_;
-                                    let _e951 = phi_1078_;
-                                    let _e953 = phi_1080_;
-                                    let _e955 = phi_1082_;
-                                    let _e957 = phi_1084_;
-                                    let _e959 = phi_1419_;
-                                    let _e961 = phi_1421_;
-                                    let _e963 = phi_1422_;
+                                    let _e936 = phi_1062_;
+                                    let _e938 = phi_1065_;
+                                    let _e940 = phi_1067_;
+                                    let _e942 = phi_1069_;
+                                    let _e944 = phi_1071_;
+                                    let _e946 = phi_1073_;
+                                    let _e948 = phi_1476_;
+                                    let _e950 = phi_1478_;
+                                    let _e952 = phi_1479_;
                                     continue;
                                     continuing {
-                                        phi_1072_ = _e947;
-                                        phi_1075_ = _e949;
-                                        phi_1077_ = _e951;
-                                        phi_1079_ = _e953;
-                                        phi_1081_ = _e955;
-                                        phi_1083_ = _e957;
-                                        phi_2171_ = _e576;
-                                        phi_1732_ = _e963;
-                                        phi_1731_ = _e961;
-                                        phi_1730_ = select(true, false, _e677);
-                                        phi_1729_ = _e951;
-                                        phi_1727_ = _e949;
-                                        break if !(_e959);
+                                        phi_1061_ = _e936;
+                                        phi_1064_ = _e938;
+                                        phi_1066_ = _e940;
+                                        phi_1068_ = _e942;
+                                        phi_1070_ = _e944;
+                                        phi_1072_ = _e946;
+                                        phi_2021_ = _e574;
+                                        phi_1695_ = _e952;
+                                        phi_1694_ = _e950;
+                                        phi_1693_ = select(true, false, _e675);
+                                        phi_1692_ = _e940;
+                                        phi_1690_ = _e938;
+                                        break if !(_e948);
                                     }
                                 }
-                                let _e967 = phi_2171_;
-                                let _e969 = phi_1732_;
-                                let _e971 = phi_1731_;
-                                let _e973 = phi_1730_;
-                                let _e975 = phi_1729_;
-                                let _e977 = phi_1727_;
-                                phi_2294_ = _e967;
-                                if _e967 {
+                                let _e956 = phi_2021_;
+                                let _e958 = phi_1695_;
+                                let _e960 = phi_1694_;
+                                let _e962 = phi_1693_;
+                                let _e964 = phi_1692_;
+                                let _e966 = phi_1690_;
+                                phi_2146_ = _e956;
+                                if _e956 {
                                     break;
                                 }
-                                let _e978 = select(_e971, false, _e973);
-                                let _e980 = select(select(_e969, false, _e973), false, _e978);
-                                let _e982 = local_1;
-                                let _e985 = local_2;
-                                let _e987 = select(_e978, true, _e980);
-                                let _e989 = local_3;
-                                let _e992 = local_4;
-                                let _e996 = params.member.member_7;
-                                if (_e996 == 1u) {
-                                    phi_1462_ = 0f;
+                                let _e967 = select(_e960, false, _e962);
+                                let _e969 = select(select(_e958, false, _e962), false, _e967);
+                                let _e971 = local_1;
+                                let _e974 = local_2;
+                                let _e976 = select(_e967, true, _e969);
+                                let _e978 = local_3;
+                                let _e981 = local_4;
+                                let _e985 = params.member.member_7;
+                                if (_e985 == 1u) {
+                                    phi_1519_ = 0f;
                                 } else {
-                                    let _e998 = (select(_e989, select(_e977, _e982, _e980), _e987) / _e653);
-                                    phi_1462_ = select(0f, select(1f, _e998, (_e998 < 1f)), (_e998 > 0f));
+                                    let _e987 = (select(_e978, select(_e966, _e971, _e969), _e976) / _e651);
+                                    phi_1519_ = select(0f, select(1f, _e987, (_e987 < 1f)), (_e987 > 0f));
                                 }
-                                let _e1004 = phi_1462_;
-                                phi_2295_ = _e967;
-                                phi_924_ = (_e578 + 1u);
-                                phi_927_ = (_e580 + select(1f, _e1004, select(_e992, select(_e975, _e985, _e980), _e987)));
+                                let _e993 = phi_1519_;
+                                phi_2147_ = _e956;
+                                phi_913_ = (_e576 + 1u);
+                                phi_916_ = (_e578 + select(1f, _e993, select(_e981, select(_e964, _e974, _e969), _e976)));
                             } else {
-                                phi_2295_ = _e576;
-                                phi_924_ = u32();
-                                phi_927_ = f32();
+                                phi_2147_ = _e574;
+                                phi_913_ = u32();
+                                phi_916_ = f32();
                             }
-                            let _e1009 = phi_2295_;
-                            let _e1011 = phi_924_;
-                            let _e1013 = phi_927_;
+                            let _e998 = phi_2147_;
+                            let _e1000 = phi_913_;
+                            let _e1002 = phi_916_;
                             continue;
                             continuing {
-                                phi_2217_ = _e1009;
-                                phi_923_ = _e1011;
-                                phi_926_ = _e1013;
-                                phi_2294_ = _e1009;
-                                break if !(_e581);
+                                phi_2069_ = _e998;
+                                phi_912_ = _e1000;
+                                phi_915_ = _e1002;
+                                phi_2146_ = _e998;
+                                break if !(_e579);
                             }
                         }
-                        let _e1016 = phi_2294_;
-                        if _e1016 {
+                        let _e1005 = phi_2146_;
+                        if _e1005 {
                             break;
                         }
-                        let _e1019 = local_5;
-                        let _e1023 = params.member.member_2;
-                        let _e1024 = pow((_e1019 / f32(_e569)), _e1023);
-                        let _e1025 = (_e1024 * 0.6666667f);
-                        let _e1031 = ((select(0f, select(1f, _e1025, (_e1025 < 1f)), (_e1025 > 0f)) * 255f) + 0.5f);
-                        phi_1533_ = type_30(_e1024, select(select(u32(_e1031), 0u, (_e1031 < 0f)), 4294967295u, (_e1031 > 4294967000f)), _e554.member);
+                        let _e1008 = local_5;
+                        let _e1012 = params.member.member_2;
+                        let _e1013 = pow((_e1008 / f32(_e567)), _e1012);
+                        let _e1014 = (_e1013 * 0.6666667f);
+                        let _e1020 = ((select(0f, select(1f, _e1014, (_e1014 < 1f)), (_e1014 > 0f)) * 255f) + 0.5f);
+                        phi_1590_ = type_29(_e1013, select(select(u32(_e1020), 0u, (_e1020 < 0f)), 4294967295u, (_e1020 > 4294967000f)), _e552.member);
                     } else {
-                        phi_1533_ = type_30(1f, 170u, _e554.member);
+                        phi_1590_ = type_29(1f, 170u, _e552.member);
                     }
-                    let _e1040 = phi_1533_;
-                    if (_e100 < arrayLength((&ao.member))) {
-                    } else {
-                        break;
-                    }
-                    ao.member[_e100] = _e1040.member;
-                    if (_e100 < arrayLength((&terms.member))) {
+                    let _e1029 = phi_1590_;
+                    if (_e98 < arrayLength((&ao.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e100] = _e1040.member_1;
-                    if (_e100 < arrayLength((&edges.member))) {
+                    ao.member[_e98] = _e1029.member;
+                    if (_e98 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e100] = _e1040.member_2;
+                    terms.member[_e98] = _e1029.member_1;
+                    if (_e98 < arrayLength((&edges.member))) {
+                    } else {
+                        break;
+                    }
+                    edges.member[_e98] = _e1029.member_2;
                 }
             }
             break;

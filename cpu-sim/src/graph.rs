@@ -246,7 +246,7 @@ mod kernels {
     use super::*;
     use aokit_shaders::blur::BlurParams;
     use aokit_shaders::groundtruth::GroundTruthFrame;
-    use aokit_shaders::gtao::{GtaoParams, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel};
+    use aokit_shaders::gtao::{GtaoParams, mip_offset, mip_size, normal_from_depth, prefilter_texel};
     use aokit_shaders::hybrid::HybridFrame;
     use aokit_shaders::raymarch::RaymarchParams;
     use aokit_shaders::svao::SvaoFrame;
@@ -370,16 +370,8 @@ mod kernels {
 
     pub fn gtao_denoise(io: &mut PassIo) {
         let params: GtaoParams = io.push();
-        let size = params.view.size();
         let (terms, ao) = (io.take(2), io.take_f32(3));
-        let (terms_in, edges) = (io.words(0), io.words(1));
-        crate::screen::tiled_lanes2(terms, ao, size.x, 0..size.x, 0..size.y, 1, &crate::no_progress, |q, t, a| {
-            let o = denoise_pixel(&params, terms_in, edges, q);
-            t[0] = o.term;
-            if o.last {
-                a[0] = o.visibility;
-            }
-        });
+        crate::gtao::denoise_into(&params, io.words(0), io.words(1), terms, ao);
     }
 
     pub fn ground_truth(io: &mut PassIo) {

@@ -2,8 +2,9 @@
 //! per-texel and per-pixel functions over whole buffers, in the GPU's dispatch order.
 
 use crate::screen::lane_pixel;
-use aokit_shaders::common::lanes::{F32x8, Lanes};
+use aokit_shaders::common::lanes::{F32x8, Lanes, U2x8};
 use aokit_shaders::glam::{UVec2, vec3};
+use aokit_shaders::gtao::denoise::{denoise_lanes, is_last_pass};
 use aokit_shaders::gtao::main_pass::{PixelSetup, finish_pixel, pixel_setup, slices_visibility};
 use aokit_shaders::gtao::{
     GtaoParams, MIP_LEVELS, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
@@ -77,14 +78,43 @@ pub fn main_pass_x8(
 /// The denoise passes; returns the visibility per pixel (full target).
 pub fn run_denoise(params: &GtaoParams, terms: &[u32], edges: &[u32]) -> Vec<f32> {
     let mut current = terms.to_vec();
-    let mut ao = Vec::new();
+    let mut next = vec![0; current.len()];
+    let mut ao = vec![0.0; current.len()];
     for pass in 0..params.denoise_passes.max(1) {
         let p = GtaoParams { pass, ..*params };
-        let out = per_pixel(params.view.size(), |q| {
-            let o = denoise_pixel(&p, &current, edges, q);
-            (o.term, o.visibility)
-        });
-        (current, ao) = out.into_iter().unzip();
+        denoise_into(&p, &current, edges, &mut next, &mut ao);
+        core::mem::swap(&mut current, &mut next);
     }
     ao
+}
+
+/// Denoise pass `params.pass` into the caller's buffers: the terms for the next pass and, in
+/// the last pass, the visibility. Without bent normals eight pixels of a row per call of the
+/// shader crate's lane-generic [`denoise_lanes`]; with them one pixel at a time.
+pub fn denoise_into(params: &GtaoParams, terms_in: &[u32], edges: &[u32], terms_out: &mut [u32], ao: &mut [f32]) {
+    let size = params.view.size();
+    if params.bent_normals != 0 {
+        crate::screen::tiled_lanes2(terms_out, ao, size.x, 0..size.x, 0..size.y, 1, &crate::no_progress, |q, t, a| {
+            let o = denoise_pixel(params, terms_in, edges, q);
+            t[0] = o.term;
+            if o.last {
+                a[0] = o.visibility;
+            }
+        });
+        return;
+    }
+    let last = is_last_pass(params);
+    crate::screen::tiled_lanes2(terms_out, ao, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |first, t, a| {
+        let p = U2x8::from_texels(&core::array::from_fn(|i| lane_pixel(first, i, t.len())));
+        let (term, visibility) = denoise_lanes::<F32x8>(params, terms_in, edges, p);
+        let term = term.to_array();
+        for (i, out) in t.iter_mut().enumerate() {
+            *out = term[i] as u32;
+        }
+        if last {
+            for (i, out) in a.iter_mut().enumerate() {
+                *out = visibility.lane(i);
+            }
+        }
+    });
 }

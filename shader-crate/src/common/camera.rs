@@ -40,7 +40,14 @@ impl ViewParams {
     /// the per-sample fetches, where [`Self::pixel_uv`]'s division would cost.
     #[inline]
     pub fn texel_uv(&self, p: UVec2) -> Vec2 {
-        (p.as_vec2() + 0.5) * self.res.recip()
+        self.texel_uv_lanes::<f32>(p)
+    }
+
+    /// [`Self::texel_uv`] per lane.
+    #[inline]
+    pub fn texel_uv_lanes<L: Lanes>(&self, p: L::U2) -> L::V2 {
+        let r = self.res.recip();
+        L::V2::new((L::index_to_float(L::texel_x(p)) + 0.5) * r.x, (L::index_to_float(L::texel_y(p)) + 0.5) * r.y)
     }
 
     /// uv→view: `ndc = (2u−1, 1−2v)`, `X = (ndc.x·d·tx, ndc.y·d·ty, −d)` (spec §1).
@@ -76,10 +83,17 @@ impl ViewParams {
     /// inside `[0, res−1]`. Its centre is spec §1's `snap(saturate(uv), res)`.
     #[inline]
     pub fn texel_of_uv(&self, uv: Vec2) -> UVec2 {
+        self.texel_of_uv_lanes::<f32>(uv)
+    }
+
+    /// [`Self::texel_of_uv`] per lane ([`Lanes::floor_index`] truncates the non-negative
+    /// coordinate, i.e. takes its floor, and keeps it inside the target).
+    #[inline]
+    pub fn texel_of_uv_lanes<L: Lanes>(&self, uv: L::V2) -> L::U2 {
         let size = self.size();
-        let x = crate::common::math::sat(uv.x) * self.res.x;
-        let y = crate::common::math::sat(uv.y) * self.res.y;
-        UVec2::new((x as u32).min(size.x - 1), (y as u32).min(size.y - 1))
+        let x = (crate::common::math::sat(uv.x()) * self.res.x).floor_index(L::index_splat(size.x));
+        let y = (crate::common::math::sat(uv.y()) * self.res.y).floor_index(L::index_splat(size.y));
+        L::texel(x, y)
     }
 
     /// Is pixel `p` inside the inner image `[g, W−g) × [g, H−g)`?
@@ -92,7 +106,13 @@ impl ViewParams {
     /// Row-major index of pixel `p` in a full-target buffer.
     #[inline]
     pub fn index(&self, p: UVec2) -> usize {
-        (p.y * self.size().x + p.x) as usize
+        self.index_lanes::<f32>(p) as usize
+    }
+
+    /// [`Self::index`] per lane.
+    #[inline]
+    pub fn index_lanes<L: Lanes>(&self, p: L::U2) -> L::Index {
+        L::texel_y(p) * L::index_splat(self.size().x) + L::texel_x(p)
     }
 }
 

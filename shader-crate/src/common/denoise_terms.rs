@@ -4,6 +4,7 @@
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
+use crate::common::lanes::Lanes;
 use crate::common::math::{floor, sat};
 use crate::glam::{Vec3, Vec4, vec4};
 
@@ -33,11 +34,27 @@ pub fn pack_edges(e: Vec4) -> u32 {
     64 * q(e.x) + 16 * q(e.y) + 4 * q(e.z) + q(e.w)
 }
 
-/// Unpack [`pack_edges`]: each 2-bit field / 3, as a product with the rounded 1/3 (for the
-/// fields 0–3 exactly the quotients, without four divisions per neighbour).
+/// Edge weights (L, R, T, B) of a pixel per lane, 1 = connected.
+#[derive(Copy, Clone, Debug)]
+pub struct EdgeWeights<L: Lanes = f32> {
+    pub l: L,
+    pub r: L,
+    pub t: L,
+    pub b: L,
+}
+
+/// Unpack [`pack_edges`] per lane: each 2-bit field / 3, as a product with the rounded 1/3 (for
+/// the fields 0–3 exactly the quotients, without four divisions per neighbour).
 #[inline]
-pub fn unpack_edges(p: u32) -> Vec4 {
-    vec4(((p >> 6) & 3) as f32, ((p >> 4) & 3) as f32, ((p >> 2) & 3) as f32, (p & 3) as f32) * (1.0 / 3.0)
+pub fn unpack_edges<L: Lanes>(p: L::Index) -> EdgeWeights<L> {
+    let three = L::index_splat(3);
+    let third = 1.0 / 3.0;
+    EdgeWeights {
+        l: L::index_to_float((p >> 6) & three) * third,
+        r: L::index_to_float((p >> 4) & three) * third,
+        t: L::index_to_float((p >> 2) & three) * third,
+        b: L::index_to_float(p & three) * third,
+    }
 }
 
 /// `uint(sat(vis/1.5)·255 + 0.5)` (spec §2.6.4).

@@ -1,6 +1,7 @@
 //! Read access to the G-buffer (linear depth + encoded view-space face normal), the resource
 //! trait every screen-space kernel is written against.
 
+use crate::common::lanes::Lanes;
 use crate::common::normal_codec::decode_normal;
 use crate::glam::{UVec2, Vec3};
 
@@ -10,6 +11,17 @@ pub trait GBuffer {
     fn linear_depth(&self, p: UVec2) -> f32;
     /// Unit view-space face normal at pixel `p`.
     fn view_normal(&self, p: UVec2) -> Vec3;
+    /// [`Self::linear_depth`] at each lane's pixel.
+    #[inline]
+    fn linear_depth_lanes<L: Lanes>(&self, p: L::U2) -> L {
+        L::from_lanes(|i| self.linear_depth(L::texel_lane(p, i)))
+    }
+}
+
+/// `depth[y·width + x]` per lane: a row-major depth buffer's gather.
+#[inline]
+fn row_major_lanes<L: Lanes>(depth: &[f32], width: u32, p: L::U2) -> L {
+    L::gather_index(depth, L::texel_y(p) * L::index_splat(width) + L::texel_x(p))
 }
 
 /// The G-buffer as two row-major storage buffers of the full target: `f32` linear depth and
@@ -24,6 +36,10 @@ impl GBuffer for GBufferSlices<'_> {
     #[inline]
     fn linear_depth(&self, p: UVec2) -> f32 {
         self.depth[(p.y * self.width + p.x) as usize]
+    }
+    #[inline]
+    fn linear_depth_lanes<L: Lanes>(&self, p: L::U2) -> L {
+        row_major_lanes(self.depth, self.width, p)
     }
     #[inline]
     fn view_normal(&self, p: UVec2) -> Vec3 {
@@ -41,6 +57,10 @@ impl GBuffer for DepthSlice<'_> {
     #[inline]
     fn linear_depth(&self, p: UVec2) -> f32 {
         self.depth[(p.y * self.width + p.x) as usize]
+    }
+    #[inline]
+    fn linear_depth_lanes<L: Lanes>(&self, p: L::U2) -> L {
+        row_major_lanes(self.depth, self.width, p)
     }
     #[inline]
     fn view_normal(&self, _p: UVec2) -> Vec3 {

@@ -12,10 +12,9 @@
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
-use crate::common::gbuffer_read::GBuffer;
 use crate::common::screen_space::clamp_index;
 use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
-use core::ops::{Add, Div, Mul, Neg, Sub};
+use core::ops::{Add, BitAnd, Div, Mul, Neg, Shr, Sub};
 
 /// A number per lane: `f32` (one pixel) or a vector of pixels' values.
 pub trait Lanes:
@@ -41,7 +40,11 @@ pub trait Lanes:
     /// Three-component vector of lanes (`Vec3` for `f32`).
     type V3: LaneVec3<Self>;
     /// A whole number per lane, e.g. an index into a buffer (`u32` for `f32`).
-    type Index: Copy + Add<Output = Self::Index> + Mul<Output = Self::Index>;
+    type Index: Copy
+        + Add<Output = Self::Index>
+        + Mul<Output = Self::Index>
+        + Shr<u32, Output = Self::Index>
+        + BitAnd<Output = Self::Index>;
 
     fn splat(v: f32) -> Self;
     /// The value whose lane `i` is `f(i)`.
@@ -87,22 +90,32 @@ pub trait Lanes:
     fn any(m: Self::Mask) -> bool;
     /// `map(data[index(i)])` in lane `i`, for words that hold a vector (an encoded normal).
     fn gather_v3(data: &[u32], index: impl Fn(usize) -> usize, map: impl Fn(u32) -> Vec3) -> Self::V3;
-    /// The texel `f(uv)` per lane (`f` captures values only, see [`Lanes::gather`]).
-    fn texel_of(uv: Self::V2, f: impl Fn(Vec2) -> UVec2) -> Self::U2;
-    /// `f(texel)` per lane.
-    fn texel_map(t: Self::U2, f: impl Fn(UVec2) -> Vec2) -> Self::V2;
-    fn texel_eq(a: Self::U2, b: Self::U2) -> Self::Mask;
-    /// Linear depth of the G-buffer at each lane's texel.
-    fn gather_depth<G: GBuffer>(g: &G, t: Self::U2) -> Self;
+    /// The texel `(x, y)` per lane.
+    fn texel(x: Self::Index, y: Self::Index) -> Self::U2;
+    fn texel_x(t: Self::U2) -> Self::Index;
+    fn texel_y(t: Self::U2) -> Self::Index;
+    /// `i as f32` per lane.
+    fn index_to_float(i: Self::Index) -> Self;
+    fn index_eq(a: Self::Index, b: Self::Index) -> Self::Mask;
     /// `n` in every lane.
     fn index_splat(n: u32) -> Self::Index;
     /// `if m { a } else { b }` per lane.
     fn index_select(m: Self::Mask, a: Self::Index, b: Self::Index) -> Self::Index;
-    /// The clamp-to-edge texel coordinate `clamp(⌊self⌋, 0, n − 1)` per lane (NaN → 0), as
-    /// [`clamp_index`] computes it.
-    fn texel_index(self, n: Self::Index) -> Self::Index;
+    /// `clamp(⌊self⌋, 0, n − 1)` per lane (NaN → 0), as [`clamp_index`] computes it: a
+    /// clamp-to-edge texel coordinate, or a float rounded into an n-valued integer.
+    fn floor_index(self, n: Self::Index) -> Self::Index;
+    /// `clamp(i + d, 0, n − 1)` per lane (a clamp-to-edge neighbour's coordinate).
+    fn index_offset_clamped(i: Self::Index, d: i32, n: u32) -> Self::Index;
     /// `data[i]` in each lane.
     fn gather_index(data: &[f32], i: Self::Index) -> Self;
+    /// The word `data[i]` in each lane.
+    fn gather_word(data: &[u32], i: Self::Index) -> Self::Index;
+}
+
+/// Do the lanes' texels `a` and `b` coincide?
+#[inline]
+pub fn texel_eq<L: Lanes>(a: L::U2, b: L::U2) -> L::Mask {
+    L::and(L::index_eq(L::texel_x(a), L::texel_x(b)), L::index_eq(L::texel_y(a), L::texel_y(b)))
 }
 
 /// Two lanes-valued components.
@@ -257,20 +270,24 @@ impl Lanes for f32 {
         map(data[index(0)])
     }
     #[inline]
-    fn texel_of(uv: Vec2, f: impl Fn(Vec2) -> UVec2) -> UVec2 {
-        f(uv)
+    fn texel(x: u32, y: u32) -> UVec2 {
+        UVec2::new(x, y)
     }
     #[inline]
-    fn texel_map(t: UVec2, f: impl Fn(UVec2) -> Vec2) -> Vec2 {
-        f(t)
+    fn texel_x(t: UVec2) -> u32 {
+        t.x
     }
     #[inline]
-    fn texel_eq(a: UVec2, b: UVec2) -> bool {
-        a.x == b.x && a.y == b.y
+    fn texel_y(t: UVec2) -> u32 {
+        t.y
     }
     #[inline]
-    fn gather_depth<G: GBuffer>(g: &G, t: UVec2) -> Self {
-        g.linear_depth(t)
+    fn index_to_float(i: u32) -> f32 {
+        i as f32
+    }
+    #[inline]
+    fn index_eq(a: u32, b: u32) -> bool {
+        a == b
     }
     #[inline]
     fn index_splat(n: u32) -> u32 {
@@ -281,11 +298,19 @@ impl Lanes for f32 {
         if m { a } else { b }
     }
     #[inline]
-    fn texel_index(self, n: u32) -> u32 {
+    fn floor_index(self, n: u32) -> u32 {
         clamp_index(self, n)
     }
     #[inline]
+    fn index_offset_clamped(i: u32, d: i32, n: u32) -> u32 {
+        (i as i32 + d).clamp(0, n as i32 - 1) as u32
+    }
+    #[inline]
     fn gather_index(data: &[f32], i: u32) -> f32 {
+        data[i as usize]
+    }
+    #[inline]
+    fn gather_word(data: &[u32], i: u32) -> u32 {
         data[i as usize]
     }
 }
@@ -357,14 +382,13 @@ pub fn v3_from_lanes<L: Lanes>(f: impl Fn(usize) -> Vec3) -> L::V3 {
 }
 
 #[cfg(not(target_arch = "spirv"))]
-pub use x8::{F32x8, V2x8, V3x8};
+pub use x8::{F32x8, U2x8, V2x8, V3x8};
 
 /// Eight lanes on the CPU.
 #[cfg(not(target_arch = "spirv"))]
 mod x8 {
     use super::{LaneVec2, LaneVec3, Lanes};
-    use crate::common::gbuffer_read::GBuffer;
-    use crate::glam::{UVec2, Vec2, Vec3};
+    use crate::glam::{UVec2, Vec3};
     use core::ops::{Add, Div, Mul, Neg, Sub};
     use wide::{f32x8, i32x8};
 
@@ -406,7 +430,7 @@ mod x8 {
     impl Lanes for F32x8 {
         const LANES: usize = 8;
         type Mask = f32x8;
-        type U2 = [UVec2; 8];
+        type U2 = U2x8;
         type V2 = V2x8;
         type V3 = V3x8;
         type Index = i32x8;
@@ -522,8 +546,8 @@ mod x8 {
             m.as_array()[i].to_bits() != 0
         }
         #[inline(always)]
-        fn texel_lane(t: [UVec2; 8], i: usize) -> UVec2 {
-            t[i]
+        fn texel_lane(t: U2x8, i: usize) -> UVec2 {
+            UVec2::new(t.x.as_array()[i] as u32, t.y.as_array()[i] as u32)
         }
         #[inline(always)]
         fn any(m: f32x8) -> bool {
@@ -539,21 +563,24 @@ mod x8 {
             }
         }
         #[inline(always)]
-        fn texel_of(uv: V2x8, f: impl Fn(Vec2) -> UVec2) -> [UVec2; 8] {
-            core::array::from_fn(|i| f(Vec2::new(uv.x.lane(i), uv.y.lane(i))))
+        fn texel(x: i32x8, y: i32x8) -> U2x8 {
+            U2x8 { x, y }
         }
         #[inline(always)]
-        fn texel_map(t: [UVec2; 8], f: impl Fn(UVec2) -> Vec2) -> V2x8 {
-            let v: [Vec2; 8] = t.map(f);
-            V2x8 { x: F32x8::from_lanes(|i| v[i].x), y: F32x8::from_lanes(|i| v[i].y) }
+        fn texel_x(t: U2x8) -> i32x8 {
+            t.x
         }
         #[inline(always)]
-        fn texel_eq(a: [UVec2; 8], b: [UVec2; 8]) -> f32x8 {
-            f32x8::new(core::array::from_fn(|i| if a[i] == b[i] { f32::from_bits(u32::MAX) } else { 0.0 }))
+        fn texel_y(t: U2x8) -> i32x8 {
+            t.y
         }
         #[inline(always)]
-        fn gather_depth<G: GBuffer>(g: &G, t: [UVec2; 8]) -> Self {
-            F32x8::from_lanes(|i| g.linear_depth(t[i]))
+        fn index_to_float(i: i32x8) -> Self {
+            F32x8(i.round_float())
+        }
+        #[inline(always)]
+        fn index_eq(a: i32x8, b: i32x8) -> f32x8 {
+            bytemuck::cast::<i32x8, f32x8>(a.simd_eq(b))
         }
         #[inline(always)]
         fn index_splat(n: u32) -> i32x8 {
@@ -565,14 +592,38 @@ mod x8 {
         }
         /// `maxps(x, 0)` takes 0 for a NaN `x`; clamped below `n`, the truncation is exact.
         #[inline(always)]
-        fn texel_index(self, n: i32x8) -> i32x8 {
+        fn floor_index(self, n: i32x8) -> i32x8 {
             let last = (n - i32x8::splat(1)).round_float();
             self.0.fast_max(f32x8::ZERO).fast_min(last).fast_trunc_int()
+        }
+        #[inline(always)]
+        fn index_offset_clamped(i: i32x8, d: i32, n: u32) -> i32x8 {
+            (i + i32x8::splat(d)).max(i32x8::ZERO).min(i32x8::splat(n as i32 - 1))
+        }
+        #[inline(always)]
+        fn gather_word(data: &[u32], i: i32x8) -> i32x8 {
+            let i = i.to_array();
+            i32x8::new(core::array::from_fn(|k| data[i[k] as usize] as i32))
         }
         #[inline(always)]
         fn gather_index(data: &[f32], i: i32x8) -> Self {
             let i = i.to_array();
             F32x8(f32x8::new(core::array::from_fn(|k| data[i[k] as usize])))
+        }
+    }
+
+    /// Eight texels (or pixels).
+    #[derive(Copy, Clone, Debug, PartialEq)]
+    pub struct U2x8 {
+        pub x: i32x8,
+        pub y: i32x8,
+    }
+
+    impl U2x8 {
+        /// Lane `i` from `each[i]`.
+        #[inline(always)]
+        pub fn from_texels(each: &[UVec2; 8]) -> Self {
+            U2x8 { x: i32x8::new(each.map(|t| t.x as i32)), y: i32x8::new(each.map(|t| t.y as i32)) }
         }
     }
 

@@ -4,7 +4,7 @@
 
 use crate::common::ViewParams;
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
-use crate::glam::{UVec2, uvec2};
+use crate::glam::UVec2;
 
 /// `clamp(v, 0, n − 1)` of a float coordinate as an index (NaN → 0).
 #[inline]
@@ -22,7 +22,17 @@ pub fn view_pos<L: Lanes>(view: &ViewParams, uv: L::V2, z: L) -> L::V3 {
 /// Pixel `p` clamped into the full target after adding `(dx, dy)` (clamp-to-edge reads).
 #[inline]
 pub fn neighbour(p: UVec2, dx: i32, dy: i32, size: UVec2) -> UVec2 {
-    let x = (p.x as i32 + dx).clamp(0, size.x as i32 - 1) as u32;
-    let y = (p.y as i32 + dy).clamp(0, size.y as i32 - 1) as u32;
-    uvec2(x, y)
+    neighbour_lanes::<f32>(p, dx, dy, size)
+}
+
+/// [`neighbour`] per lane.
+#[inline]
+pub fn neighbour_lanes<L: Lanes>(p: L::U2, dx: i32, dy: i32, size: UVec2) -> L::U2 {
+    L::texel(L::index_offset_clamped(L::texel_x(p), dx, size.x), L::index_offset_clamped(L::texel_y(p), dy, size.y))
+}
+
+/// `data[p.y·width + p.x]` per lane, for buffers of words (AO terms, packed edges).
+#[inline]
+pub fn word_at<L: Lanes>(data: &[u32], width: u32, p: L::U2) -> L::Index {
+    L::gather_word(data, L::texel_y(p) * L::index_splat(width) + L::texel_x(p))
 }

@@ -2,10 +2,11 @@
 //! `max(1, DenoisePasses)` times; the last pass rescales by the 1.5 headroom.
 
 use super::GtaoParams;
-use crate::common::denoise_terms::{pack_bent_normal, pack_bent_term, unpack_bent_term, unpack_edges};
+use crate::common::denoise_terms::{EdgeWeights, pack_bent_normal, pack_bent_term, unpack_bent_term, unpack_edges};
+use crate::common::lanes::Lanes;
 use crate::common::math::sat;
-use crate::common::screen_space::neighbour;
-use crate::glam::{UVec2, Vec4, vec3, vec4};
+use crate::common::screen_space::{neighbour_lanes, word_at};
+use crate::glam::{UVec2, Vec4, vec3};
 use core::ops::{Add, Mul};
 
 /// Result of one denoise pass at a pixel.
@@ -36,116 +37,150 @@ fn centre_weight(params: &GtaoParams, last: bool) -> f32 {
 /// packed `edges` (spec §2.7 steps 1–5).
 #[inline]
 pub fn denoise_pixel(params: &GtaoParams, terms: &[u32], edges: &[u32], p: UVec2) -> Denoised {
+    let last = is_last_pass(params);
+    if params.bent_normals == 0 {
+        let (term, visibility) = denoise_lanes::<f32>(params, terms, edges, p);
+        return Denoised { term, last, visibility };
+    }
+    // Bent normals (spec §2.6.5): the four packed channels filtered alike; the last pass
+    // normalizes the normal (returned in the G-buffer's right-handed space) and rescales.
+    let s = stencil::<f32>(params, edges, p);
+    let value = weighted::<f32, Vec4>(terms, params.view.size().x, &s) / s.total;
+    if !last {
+        return Denoised { term: pack_bent_term(value), last, visibility: 0.0 };
+    }
+    let n = vec3(value.x, value.y, value.z) * 2.0 - 1.0;
+    let l = n.length();
+    let n = if l > 0.0 { n / l } else { vec3(0.0, 0.0, -1.0) };
+    let a = ((value.w * 1.5 * 255.0 + 0.5) as u32).min(255) as f32 / 255.0;
+    Denoised { term: pack_bent_normal(vec3(n.x, n.y, -n.z), a), last, visibility: a }
+}
+
+/// Is `params.pass` the last of the `max(1, DenoisePasses)` passes?
+#[inline]
+pub fn is_last_pass(params: &GtaoParams) -> bool {
+    params.pass + 1 >= params.denoise_passes.max(1)
+}
+
+/// Denoise pass `params.pass` without bent normals at the pixels `p` (one or `L::LANES`): the
+/// stored term and, in the last pass, the final visibility `term/255` (spec §2.7 steps 1–5).
+#[inline]
+pub fn denoise_lanes<L: Lanes>(params: &GtaoParams, terms: &[u32], edges: &[u32], p: L::U2) -> (L::Index, L) {
+    let s = stencil::<L>(params, edges, p);
+    let value = weighted::<L, L>(terms, params.view.size().x, &s) / s.total;
+    // uint(x + 0.5) of a value in [0, 1] (in [0, 1.5] after the last pass's rescale) is its
+    // floor; the last pass clamps to 255 (aokit, spec §7.5), the others cannot exceed it.
+    let term = if is_last_pass(params) { value * 1.5 * 255.0 + 0.5 } else { value * 255.0 + 0.5 };
+    let term = term.floor_index(L::index_splat(256));
+    (term, L::index_to_float(term) / 255.0)
+}
+
+/// The 3×3 neighbourhood of a pixel (centre, L, R, T, B, TL, TR, BL, BR) and its weights:
+/// β, the symmetrized edges C = (CL, CR, CT, CB), the diagonal weights, and their sum (spec
+/// §2.7 steps 1–4).
+struct Stencil<L: Lanes> {
+    p: L::U2,
+    l: L::U2,
+    r: L::U2,
+    t: L::U2,
+    b: L::U2,
+    tl: L::U2,
+    tr: L::U2,
+    bl: L::U2,
+    br: L::U2,
+    beta: f32,
+    c: EdgeWeights<L>,
+    w_tl: L,
+    w_tr: L,
+    w_bl: L,
+    w_br: L,
+    total: L,
+}
+
+/// The stencil of pass `params.pass` at `p` from the packed edges (spec §2.7 steps 1–3).
+#[inline]
+fn stencil<L: Lanes>(params: &GtaoParams, edges: &[u32], p: L::U2) -> Stencil<L> {
     let size = params.view.size();
-    let passes = params.denoise_passes.max(1);
-    let last = params.pass + 1 >= passes;
-    let beta = centre_weight(params, last);
-    let idx = |q: UVec2| (q.y * size.x + q.x) as usize;
-    let (l, r, t, b) =
-        (neighbour(p, -1, 0, size), neighbour(p, 1, 0, size), neighbour(p, 0, -1, size), neighbour(p, 0, 1, size));
-    let edges_l = unpack_edges(edges[idx(l)]);
-    let edges_r = unpack_edges(edges[idx(r)]);
-    let edges_t = unpack_edges(edges[idx(t)]);
-    let edges_b = unpack_edges(edges[idx(b)]);
+    let beta = centre_weight(params, is_last_pass(params));
+    let (l, r, t, b) = (
+        neighbour_lanes::<L>(p, -1, 0, size),
+        neighbour_lanes::<L>(p, 1, 0, size),
+        neighbour_lanes::<L>(p, 0, -1, size),
+        neighbour_lanes::<L>(p, 0, 1, size),
+    );
+    let edges_l = unpack_edges::<L>(word_at::<L>(edges, size.x, l));
+    let edges_r = unpack_edges::<L>(word_at::<L>(edges, size.x, r));
+    let edges_t = unpack_edges::<L>(word_at::<L>(edges, size.x, t));
+    let edges_b = unpack_edges::<L>(word_at::<L>(edges, size.x, b));
+    let centre = unpack_edges::<L>(word_at::<L>(edges, size.x, p));
     // 1. Symmetrize with the neighbours' opposite edges.
-    let mut c = unpack_edges(edges[idx(p)]) * vec4(edges_l.y, edges_r.x, edges_t.w, edges_b.z);
+    let c = EdgeWeights {
+        l: centre.l * edges_l.r,
+        r: centre.r * edges_r.l,
+        t: centre.t * edges_t.b,
+        b: centre.b * edges_b.t,
+    };
     // 2. Leak: pixels with 3–4 edges get a little blur.
-    let g = 0.5 * sat(1.5 - (c.x + c.y + c.z + c.w)) / 1.5;
-    c = vec4(sat(c.x + g), sat(c.y + g), sat(c.z + g), sat(c.w + g));
+    let g = sat(-(c.l + c.r + c.t + c.b) + 1.5) * 0.5 / 1.5;
+    let c = EdgeWeights { l: sat(c.l + g), r: sat(c.r + g), t: sat(c.t + g), b: sat(c.b + g) };
     // 3. Diagonal weights from the raw neighbour edges.
-    let w_tl = 0.425 * (c.x * edges_l.z + c.z * edges_t.x);
-    let w_tr = 0.425 * (c.z * edges_t.y + c.y * edges_r.z);
-    let w_bl = 0.425 * (c.w * edges_b.x + c.x * edges_l.w);
-    let w_br = 0.425 * (c.y * edges_r.w + c.w * edges_b.y);
-    let w = size.x;
-    let stencil = Stencil {
+    let w_tl = (c.l * edges_l.t + c.t * edges_t.l) * 0.425;
+    let w_tr = (c.t * edges_t.r + c.r * edges_r.t) * 0.425;
+    let w_bl = (c.b * edges_b.l + c.l * edges_l.b) * 0.425;
+    let w_br = (c.r * edges_r.b + c.b * edges_b.r) * 0.425;
+    let total = L::splat(beta) + c.l + c.r + c.t + c.b + w_tl + w_tr + w_bl + w_br;
+    Stencil {
         p,
         l,
         r,
         t,
         b,
-        tl: neighbour(p, -1, -1, size),
-        tr: neighbour(p, 1, -1, size),
-        bl: neighbour(p, -1, 1, size),
-        br: neighbour(p, 1, 1, size),
+        tl: neighbour_lanes::<L>(p, -1, -1, size),
+        tr: neighbour_lanes::<L>(p, 1, -1, size),
+        bl: neighbour_lanes::<L>(p, -1, 1, size),
+        br: neighbour_lanes::<L>(p, 1, 1, size),
         beta,
         c,
         w_tl,
         w_tr,
         w_bl,
         w_br,
-    };
-    let total = beta + c.x + c.y + c.z + c.w + w_tl + w_tr + w_bl + w_br;
-    if params.bent_normals != 0 {
-        // Bent normals (spec §2.6.5): the four packed channels filtered alike; the last pass
-        // normalizes the normal (returned in the G-buffer's right-handed space) and rescales.
-        let value = weighted::<Vec4>(terms, w, &stencil) / total;
-        if !last {
-            return Denoised { term: pack_bent_term(value), last, visibility: 0.0 };
-        }
-        let n = vec3(value.x, value.y, value.z) * 2.0 - 1.0;
-        let l = n.length();
-        let n = if l > 0.0 { n / l } else { vec3(0.0, 0.0, -1.0) };
-        let a = ((value.w * 1.5 * 255.0 + 0.5) as u32).min(255) as f32 / 255.0;
-        return Denoised { term: pack_bent_normal(vec3(n.x, n.y, -n.z), a), last, visibility: a };
-    }
-    let value = weighted::<f32>(terms, w, &stencil) / total;
-    let term = if last { ((value * 1.5 * 255.0 + 0.5) as u32).min(255) } else { (value * 255.0 + 0.5) as u32 };
-    Denoised { term, last, visibility: term as f32 / 255.0 }
-}
-
-/// The 3×3 neighbourhood of a pixel (centre, L, R, T, B, TL, TR, BL, BR) and its weights:
-/// β, the symmetrized edges C = (CL, CR, CT, CB) and the diagonal weights (spec §2.7).
-struct Stencil {
-    p: UVec2,
-    l: UVec2,
-    r: UVec2,
-    t: UVec2,
-    b: UVec2,
-    tl: UVec2,
-    tr: UVec2,
-    bl: UVec2,
-    br: UVec2,
-    beta: f32,
-    c: Vec4,
-    w_tl: f32,
-    w_tr: f32,
-    w_bl: f32,
-    w_br: f32,
-}
-
-/// A stored denoiser term: the AO value alone (0–255), or AO with a bent normal (RGBA8).
-trait Term: Copy + Add<Output = Self> + Mul<f32, Output = Self> {
-    /// The term at index `i`, each channel in [0, 1] (the /1.5 domain for the AO).
-    fn load(terms: &[u32], i: usize) -> Self;
-}
-
-impl Term for f32 {
-    #[inline]
-    fn load(terms: &[u32], i: usize) -> f32 {
-        terms[i] as f32 / 255.0
+        total,
     }
 }
 
-impl Term for Vec4 {
+/// A stored denoiser term per lane: the AO value alone (0–255), or AO with a bent normal
+/// (RGBA8, one pixel).
+trait Term<L: Lanes>: Copy + Add<Output = Self> + Mul<L, Output = Self> {
+    /// The term at pixel `q`, each channel in [0, 1] (the /1.5 domain for the AO).
+    fn load(terms: &[u32], width: u32, q: L::U2) -> Self;
+}
+
+impl<L: Lanes> Term<L> for L {
     #[inline]
-    fn load(terms: &[u32], i: usize) -> Vec4 {
-        unpack_bent_term(terms[i])
+    fn load(terms: &[u32], width: u32, q: L::U2) -> L {
+        L::index_to_float(word_at::<L>(terms, width, q)) / 255.0
+    }
+}
+
+impl Term<f32> for Vec4 {
+    #[inline]
+    fn load(terms: &[u32], width: u32, q: UVec2) -> Vec4 {
+        unpack_bent_term(terms[(q.y * width + q.x) as usize])
     }
 }
 
 /// `β·a_c + CL·a_L + CR·a_R + CT·a_T + CB·a_B + wTL·a_TL + wTR·a_TR + wBL·a_BL + wBR·a_BR`
 /// (spec §2.7 step 4's numerator), in the order the reference sums it.
 #[inline]
-fn weighted<T: Term>(terms: &[u32], width: u32, s: &Stencil) -> T {
-    let i = |q: UVec2| (q.y * width + q.x) as usize;
-    T::load(terms, i(s.p)) * s.beta
-        + T::load(terms, i(s.l)) * s.c.x
-        + T::load(terms, i(s.r)) * s.c.y
-        + T::load(terms, i(s.t)) * s.c.z
-        + T::load(terms, i(s.b)) * s.c.w
-        + T::load(terms, i(s.tl)) * s.w_tl
-        + T::load(terms, i(s.tr)) * s.w_tr
-        + T::load(terms, i(s.bl)) * s.w_bl
-        + T::load(terms, i(s.br)) * s.w_br
+fn weighted<L: Lanes, T: Term<L>>(terms: &[u32], width: u32, s: &Stencil<L>) -> T {
+    T::load(terms, width, s.p) * L::splat(s.beta)
+        + T::load(terms, width, s.l) * s.c.l
+        + T::load(terms, width, s.r) * s.c.r
+        + T::load(terms, width, s.t) * s.c.t
+        + T::load(terms, width, s.b) * s.c.b
+        + T::load(terms, width, s.tl) * s.w_tl
+        + T::load(terms, width, s.tr) * s.w_tr
+        + T::load(terms, width, s.bl) * s.w_bl
+        + T::load(terms, width, s.br) * s.w_br
 }

@@ -284,8 +284,8 @@ fn mip_sample<L: Lanes>(mips: &[f32], full: UVec2, level: L, uv: L::V2) -> L {
         hf = L::select(reached, L::splat(s.y as f32), hf);
         k += 1;
     }
-    let x = (uv.x() * wf).texel_index(w);
-    let y = (uv.y() * hf).texel_index(h);
+    let x = (uv.x() * wf).floor_index(w);
+    let y = (uv.y() * hf).floor_index(h);
     L::gather_index(mips, at + y * w + x)
 }
 

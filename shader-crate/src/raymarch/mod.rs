@@ -12,7 +12,7 @@ pub mod settings;
 
 use crate::common::ViewParams;
 use crate::common::denoise_terms::{edges, pack_edges, store_term};
-use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
+use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, texel_eq};
 use crate::common::math::{depth_or_far, is_valid_depth, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::decode_normal;
@@ -70,8 +70,8 @@ fn project<L: Lanes>(view: &ViewParams, s: L::V3) -> L::V2 {
 pub fn depth_at<L: Lanes>(view: &ViewParams, depth: &[f32], uv: L::V2) -> L {
     let size = view.size();
     let w = L::index_splat(size.x);
-    let x = (uv.x() * view.res.x).texel_index(w);
-    let y = (uv.y() * view.res.y).texel_index(L::index_splat(size.y));
+    let x = (uv.x() * view.res.x).floor_index(w);
+    let y = (uv.y() * view.res.y).floor_index(L::index_splat(size.y));
     let d = L::gather_index(depth, y * w + x);
     depth_or_far(d, view.far)
 }
@@ -126,11 +126,10 @@ pub fn march<L: Lanes>(
         }
         let z = depth_at::<L>(view, depth, uv);
         let gap = (s - view_pos(view, uv, z)).length();
-        let v = *view;
-        let q = L::texel_of(uv, move |uv| v.texel_of_uv(uv));
+        let q = view.texel_of_uv_lanes::<L>(uv);
         let zp = plane_depth(view, normals, q, z, uv);
         let free = L::or(
-            L::texel_eq(q, home),
+            texel_eq::<L>(q, home),
             L::or(s.z().lt(zp * (1.0 + depth_bias)), L::gt(s.z() - zp, L::splat(thickness))),
         );
         let hit_now = L::and(marching, L::not(free));
@@ -171,8 +170,7 @@ pub fn hemisphere_dir<L: Lanes>(d: L::V2, n: L::V3) -> L::V3 {
 /// G-buffer normal), the texel's centre depth where that plane is seen edge-on.
 #[inline]
 fn plane_depth<L: Lanes>(view: &ViewParams, normals: &[u32], q: L::U2, z: L, uv: L::V2) -> L {
-    let v = *view;
-    let c = view_pos(view, L::texel_map(q, move |t| v.texel_uv(t)), z);
+    let c = view_pos(view, view.texel_uv_lanes::<L>(q), z);
     let width = view.size().x;
     let n = L::gather_v3(
         normals,
@@ -257,7 +255,7 @@ impl MarchOrigin<crate::common::lanes::F32x8> {
     pub fn from_lanes(each: &[MarchOrigin; 8]) -> Self {
         use crate::common::lanes::{F32x8, v3_from_lanes};
         MarchOrigin {
-            pixel: each.map(|o| o.pixel),
+            pixel: crate::common::lanes::U2x8::from_texels(&each.map(|o| o.pixel)),
             pos: v3_from_lanes::<F32x8>(|i| each[i].pos),
             n: v3_from_lanes::<F32x8>(|i| each[i].n),
             sin_t: F32x8::from_lanes(|i| each[i].sin_t),

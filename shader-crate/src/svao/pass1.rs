@@ -51,13 +51,12 @@ pub fn primary_sample<G: GBuffer, L: Lanes>(
     s: &LineSample<L>,
 ) -> (L, L) {
     let view = &params.vao.view;
-    let (z, v) = depth_point_value(params, frame, s, texel_point(view, L::gather_depth(gbuffer, s.texel), s));
+    let (z, v) = depth_point_value(params, frame, s, texel_point(view, gbuffer.linear_depth_lanes::<L>(s.texel), s));
     if params.dual == 0 {
         return (z, v);
     }
     let second = needs_refinement(z, s, frame, params);
-    let (vp, texel) = (*view, s.texel);
-    let d2 = L::gather(depth2, move |i| vp.index(L::texel_lane(texel, i)));
+    let d2 = L::gather_index(depth2, view.index_lanes::<L>(s.texel));
     let (z2, v2) = depth_point_value(params, frame, s, texel_point(view, d2, s));
     (L::select(second, z.min(z2), z), L::select(second, combine(params, v, v2), v))
 }

@@ -4,7 +4,7 @@
 // with `num_traits::Float`.
 use crate::common::ViewParams;
 use crate::common::gbuffer_read::GBuffer;
-use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
+use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, texel_eq};
 use crate::common::math::{clamp_lanes, depth_or_far, is_valid_depth, sat, sign_nonzero};
 use crate::common::tables::{
     AO_SAMPLES, HBAO_HALF_CHORDS, HBAO_PDFS, HBAO_RADII, VAO_DIRECTIONS, VAO_HALF_CHORDS, VAO_RADII, kernel_entry,
@@ -63,7 +63,7 @@ impl PixelFrame<crate::common::lanes::F32x8> {
         use crate::common::lanes::{F32x8, v2_from_lanes, v3_from_lanes};
         type L = F32x8;
         PixelFrame {
-            pixel: each.map(|p| p.pixel),
+            pixel: crate::common::lanes::U2x8::from_texels(&each.map(|p| p.pixel)),
             uv: v2_from_lanes::<L>(|i| each[i].uv),
             radius: L::from_lanes(|i| each[i].radius),
             screen_radius: L::from_lanes(|i| each[i].screen_radius),
@@ -205,13 +205,12 @@ pub fn line_sample_of<L: Lanes>(
     let uv = view.view_to_uv_lanes::<L>(s);
     let (zero, one) = (L::splat(0.0), L::splat(1.0));
     let in_screen = L::and(L::and(uv.x().ge(zero), uv.x().le(one)), L::and(uv.y().ge(zero), uv.y().le(one)));
-    let v = *view;
-    let texel = L::texel_of(uv, move |uv| v.texel_of_uv(uv));
+    let texel = view.texel_of_uv_lanes::<L>(uv);
     let d = frame.uv - uv;
     let screen_distance = L::V2::new(d.x() * view.res.x, d.y() * view.res.y).length();
     // Spec §4.2 tests |uv − uvR| < 0.9/res on both axes; both are texel centres, so this holds
     // exactly when the raster sample's texel is the shaded pixel.
-    let same_pixel = L::texel_eq(texel, frame.pixel);
+    let same_pixel = texel_eq::<L>(texel, frame.pixel);
     LineSample { valid, half_chord, pdf, sphere_end, point: s, uv, texel, in_screen, screen_distance, same_pixel }
 }
 
@@ -259,14 +258,13 @@ pub fn primary_object_z<G: GBuffer, L: Lanes>(
     frame: &PixelFrame<L>,
     s: &LineSample<L>,
 ) -> L {
-    object_z(frame, texel_point(view, L::gather_depth(gbuffer, s.texel), s))
+    object_z(frame, texel_point(view, gbuffer.linear_depth_lanes::<L>(s.texel), s))
 }
 
 /// View point of the depth value `d` at the sample's raster texel (unusable depths read as far).
 #[inline]
 pub fn texel_point<L: Lanes>(view: &ViewParams, d: L, s: &LineSample<L>) -> L::V3 {
-    let v = *view;
-    view.uv_to_view_lanes::<L>(L::texel_map(s.texel, move |t| v.texel_uv(t)), depth_or_far(d, view.far))
+    view.uv_to_view_lanes::<L>(view.texel_uv_lanes::<L>(s.texel), depth_or_far(d, view.far))
 }
 
 /// Final AO of one pixel with plain VAO on a single depth layer (spec §4, §5 with secondary
