@@ -415,11 +415,11 @@ fn function_() {
                     let _e364 = phi_2175_;
                     let _e366 = phi_2176_;
                     let _e367 = select(_e364, _e352, _e366);
-                    let _e378 = ((f32(_e84.x) + 0.5f) / _e97);
+                    let _e376 = ((f32(_e84.x) + 0.5f) / _e97);
                     let _e379 = ((f32(_e84.y) + 0.5f) / _e107);
                     let _e380 = (_e122 * 0.99999f);
                     let _e387 = params.member.member.member_1[0u];
-                    let _e389 = ((((_e378 * 2f) - 1f) * _e387) * _e380);
+                    let _e389 = ((((_e376 * 2f) - 1f) * _e387) * _e380);
                     let _e396 = params.member.member.member_1[1u];
                     let _e398 = ((((_e379 * -2f) + 1f) * _e396) * _e380);
                     let _e399 = -(_e389);
@@ -649,9 +649,9 @@ fn function_() {
                                         let _e771 = phi_1128_;
                                         let _e773 = phi_1129_;
                                         let _e775 = (select(_e771, _e759, _e773) / _e107);
-                                        let _e776 = (_e378 + _e757);
+                                        let _e776 = (_e376 + _e757);
                                         let _e777 = (_e379 + _e775);
-                                        let _e778 = (_e378 - _e757);
+                                        let _e778 = (_e376 - _e757);
                                         let _e779 = (_e379 - _e775);
                                         let _e781 = select(1u, _e102, (1u < _e102));
                                         let _e783 = select(1u, _e112, (1u < _e112));

@@ -77,14 +77,14 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_284_: i32;
-    var phi_303_: i32;
-    var phi_354_: i32;
-    var phi_373_: i32;
-    var phi_424_: i32;
-    var phi_443_: i32;
-    var phi_494_: i32;
-    var phi_513_: i32;
+    var phi_341_: i32;
+    var phi_360_: i32;
+    var phi_411_: i32;
+    var phi_430_: i32;
+    var phi_481_: i32;
+    var phi_500_: i32;
+    var phi_551_: i32;
+    var phi_570_: i32;
     var phi_1722_: f32;
     var phi_1726_: f32;
     var phi_1727_: bool;
@@ -99,56 +99,56 @@ fn function_() {
     var phi_1856_: bool;
     var phi_1879_: bool;
     var phi_1894_: bool;
-    var phi_770_: vec2<f32>;
-    var phi_801_: vec3<f32>;
-    var phi_807_: u32;
-    var phi_810_: u32;
-    var phi_812_: u32;
-    var phi_814_: u32;
-    var phi_843_: u32;
-    var phi_844_: u32;
-    var phi_845_: u32;
-    var phi_846_: u32;
-    var phi_808_: u32;
-    var phi_811_: u32;
-    var phi_813_: u32;
-    var phi_815_: u32;
+    var phi_827_: vec2<f32>;
+    var phi_858_: vec3<f32>;
+    var phi_864_: u32;
+    var phi_867_: u32;
+    var phi_869_: u32;
+    var phi_871_: u32;
+    var phi_900_: u32;
+    var phi_901_: u32;
+    var phi_902_: u32;
+    var phi_903_: u32;
+    var phi_865_: u32;
+    var phi_868_: u32;
+    var phi_870_: u32;
+    var phi_872_: u32;
     var local: u32;
-    var phi_877_: type_28;
+    var phi_934_: type_28;
     var phi_2069_: bool;
-    var phi_912_: u32;
-    var phi_915_: f32;
+    var phi_969_: u32;
+    var phi_972_: f32;
     var phi_1909_: bool;
-    var phi_1061_: u32;
-    var phi_1064_: f32;
-    var phi_1066_: bool;
-    var phi_1068_: bool;
-    var phi_1070_: f32;
-    var phi_1072_: f32;
-    var phi_1176_: u32;
-    var phi_1197_: u32;
-    var phi_1291_: u32;
-    var phi_1322_: u32;
+    var phi_1118_: u32;
+    var phi_1121_: f32;
+    var phi_1123_: bool;
+    var phi_1125_: bool;
+    var phi_1127_: f32;
+    var phi_1129_: f32;
+    var phi_1233_: u32;
+    var phi_1254_: u32;
+    var phi_1348_: u32;
+    var phi_1379_: u32;
     var phi_1992_: bool;
     var phi_2007_: bool;
     var phi_1968_: vec2<f32>;
-    var phi_1462_: u32;
-    var phi_1464_: u32;
-    var phi_1465_: f32;
-    var phi_1466_: bool;
-    var phi_1467_: bool;
-    var phi_1468_: f32;
-    var phi_1471_: bool;
-    var phi_1472_: bool;
-    var phi_1062_: u32;
-    var phi_1065_: f32;
-    var phi_1067_: bool;
-    var phi_1069_: bool;
-    var phi_1071_: f32;
-    var phi_1073_: f32;
-    var phi_1476_: bool;
-    var phi_1478_: bool;
-    var phi_1479_: bool;
+    var phi_1519_: u32;
+    var phi_1521_: u32;
+    var phi_1522_: f32;
+    var phi_1523_: bool;
+    var phi_1524_: bool;
+    var phi_1525_: f32;
+    var phi_1528_: bool;
+    var phi_1529_: bool;
+    var phi_1119_: u32;
+    var phi_1122_: f32;
+    var phi_1124_: bool;
+    var phi_1126_: bool;
+    var phi_1128_: f32;
+    var phi_1130_: f32;
+    var phi_1533_: bool;
+    var phi_1535_: bool;
+    var phi_1536_: bool;
     var phi_2021_: bool;
     var phi_1695_: bool;
     var phi_1694_: bool;
@@ -159,13 +159,13 @@ fn function_() {
     var local_2: bool;
     var local_3: f32;
     var local_4: bool;
-    var phi_1519_: f32;
+    var phi_1576_: f32;
     var phi_2147_: bool;
-    var phi_913_: u32;
-    var phi_916_: f32;
+    var phi_970_: u32;
+    var phi_973_: f32;
     var phi_2146_: bool;
     var local_5: f32;
-    var phi_1590_: type_29;
+    var phi_1647_: type_29;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -200,11 +200,11 @@ fn function_() {
                         break;
                     }
                     if (_e112 < 0i) {
-                        phi_284_ = 0i;
+                        phi_341_ = 0i;
                     } else {
-                        phi_284_ = select(_e112, _e114, (_e112 > _e114));
+                        phi_341_ = select(_e112, _e114, (_e112 > _e114));
                     }
-                    let _e120 = phi_284_;
+                    let _e120 = phi_341_;
                     let _e122 = bitcast<i32>(_e60.y);
                     let _e124 = (bitcast<i32>(_e92) - 1i);
                     let _e125 = (0i <= _e124);
@@ -214,11 +214,11 @@ fn function_() {
                     }
                     let _e126 = (_e122 < 0i);
                     if _e126 {
-                        phi_303_ = 0i;
+                        phi_360_ = 0i;
                     } else {
-                        phi_303_ = select(_e122, _e124, (_e122 > _e124));
+                        phi_360_ = select(_e122, _e124, (_e122 > _e124));
                     }
-                    let _e130 = phi_303_;
+                    let _e130 = phi_360_;
                     let _e133 = ((bitcast<u32>(_e130) * _e82) + bitcast<u32>(_e120));
                     if (_e133 < _e62) {
                     } else {
@@ -231,21 +231,21 @@ fn function_() {
                         break;
                     }
                     if (_e142 < 0i) {
-                        phi_354_ = 0i;
+                        phi_411_ = 0i;
                     } else {
-                        phi_354_ = select(_e142, _e114, (_e142 > _e114));
+                        phi_411_ = select(_e142, _e114, (_e142 > _e114));
                     }
-                    let _e147 = phi_354_;
+                    let _e147 = phi_411_;
                     if _e125 {
                     } else {
                         break;
                     }
                     if _e126 {
-                        phi_373_ = 0i;
+                        phi_430_ = 0i;
                     } else {
-                        phi_373_ = select(_e122, _e124, (_e122 > _e124));
+                        phi_430_ = select(_e122, _e124, (_e122 > _e124));
                     }
-                    let _e152 = phi_373_;
+                    let _e152 = phi_430_;
                     let _e155 = ((bitcast<u32>(_e152) * _e82) + bitcast<u32>(_e147));
                     if (_e155 < _e62) {
                     } else {
@@ -258,22 +258,22 @@ fn function_() {
                     }
                     let _e164 = (_e111 < 0i);
                     if _e164 {
-                        phi_424_ = 0i;
+                        phi_481_ = 0i;
                     } else {
-                        phi_424_ = select(_e111, _e114, (_e111 > _e114));
+                        phi_481_ = select(_e111, _e114, (_e111 > _e114));
                     }
-                    let _e168 = phi_424_;
+                    let _e168 = phi_481_;
                     let _e170 = (_e122 + -1i);
                     if _e125 {
                     } else {
                         break;
                     }
                     if (_e170 < 0i) {
-                        phi_443_ = 0i;
+                        phi_500_ = 0i;
                     } else {
-                        phi_443_ = select(_e170, _e124, (_e170 > _e124));
+                        phi_500_ = select(_e170, _e124, (_e170 > _e124));
                     }
-                    let _e175 = phi_443_;
+                    let _e175 = phi_500_;
                     let _e178 = ((bitcast<u32>(_e175) * _e82) + bitcast<u32>(_e168));
                     if (_e178 < _e62) {
                     } else {
@@ -285,22 +285,22 @@ fn function_() {
                         break;
                     }
                     if _e164 {
-                        phi_494_ = 0i;
+                        phi_551_ = 0i;
                     } else {
-                        phi_494_ = select(_e111, _e114, (_e111 > _e114));
+                        phi_551_ = select(_e111, _e114, (_e111 > _e114));
                     }
-                    let _e190 = phi_494_;
+                    let _e190 = phi_551_;
                     let _e192 = (_e122 + 1i);
                     if _e125 {
                     } else {
                         break;
                     }
                     if (_e192 < 0i) {
-                        phi_513_ = 0i;
+                        phi_570_ = 0i;
                     } else {
-                        phi_513_ = select(_e192, _e124, (_e192 > _e124));
+                        phi_570_ = select(_e192, _e124, (_e192 > _e124));
                     }
-                    let _e197 = phi_513_;
+                    let _e197 = phi_570_;
                     let _e200 = ((bitcast<u32>(_e197) * _e82) + bitcast<u32>(_e190));
                     if (_e200 < _e62) {
                     } else {
@@ -441,32 +441,32 @@ fn function_() {
                         let _e438 = abs(_e434);
                         let _e439 = (_e437 - _e438);
                         if (_e439 < 0f) {
-                            phi_770_ = vec2<f32>(((1f - _e438) * select(1f, -1f, (_e419 < 0f))), (_e437 * select(1f, -1f, (_e434 < 0f))));
+                            phi_827_ = vec2<f32>(((1f - _e438) * select(1f, -1f, (_e419 < 0f))), (_e437 * select(1f, -1f, (_e434 < 0f))));
                         } else {
-                            phi_770_ = vec2<f32>(_e419, _e434);
+                            phi_827_ = vec2<f32>(_e419, _e434);
                         }
-                        let _e450 = phi_770_;
+                        let _e450 = phi_827_;
                         let _e459 = (1f / sqrt((((_e450.x * _e450.x) + (_e450.y * _e450.y)) + (_e439 * _e439))));
                         let _e460 = (_e450.x * _e459);
                         let _e461 = (_e450.y * _e459);
                         let _e462 = (_e439 * _e459);
                         let _e463 = -(_e462);
                         if ((((_e460 * -(_e392)) + (_e461 * -(_e401))) + (_e463 * -(_e102))) < 0f) {
-                            phi_801_ = vec3<f32>(-(_e460), -(_e461), _e462);
+                            phi_858_ = vec3<f32>(-(_e460), -(_e461), _e462);
                         } else {
-                            phi_801_ = vec3<f32>(_e460, _e461, _e463);
+                            phi_858_ = vec3<f32>(_e460, _e461, _e463);
                         }
-                        let _e478 = phi_801_;
+                        let _e478 = phi_858_;
                         let _e481 = params.member.member_8;
-                        phi_807_ = (_e60.y & 63u);
-                        phi_810_ = (_e60.x & 63u);
-                        phi_812_ = 32u;
-                        phi_814_ = 0u;
+                        phi_864_ = (_e60.y & 63u);
+                        phi_867_ = (_e60.x & 63u);
+                        phi_869_ = 32u;
+                        phi_871_ = 0u;
                         loop {
-                            let _e485 = phi_807_;
-                            let _e487 = phi_810_;
-                            let _e489 = phi_812_;
-                            let _e491 = phi_814_;
+                            let _e485 = phi_864_;
+                            let _e487 = phi_867_;
+                            let _e489 = phi_869_;
+                            let _e491 = phi_871_;
                             local = _e491;
                             let _e492 = (_e489 > 0u);
                             if _e492 {
@@ -474,42 +474,42 @@ fn function_() {
                                 let _e498 = select(0u, 1u, ((_e485 & _e489) != 0u));
                                 if (_e498 == 0u) {
                                     if (_e495 == 1u) {
-                                        phi_843_ = (63u - _e485);
-                                        phi_844_ = (63u - _e487);
+                                        phi_900_ = (63u - _e485);
+                                        phi_901_ = (63u - _e487);
                                     } else {
-                                        phi_843_ = _e485;
-                                        phi_844_ = _e487;
+                                        phi_900_ = _e485;
+                                        phi_901_ = _e487;
                                     }
-                                    let _e509 = phi_843_;
-                                    let _e511 = phi_844_;
-                                    phi_845_ = _e511;
-                                    phi_846_ = _e509;
+                                    let _e509 = phi_900_;
+                                    let _e511 = phi_901_;
+                                    phi_902_ = _e511;
+                                    phi_903_ = _e509;
                                 } else {
-                                    phi_845_ = _e485;
-                                    phi_846_ = _e487;
+                                    phi_902_ = _e485;
+                                    phi_903_ = _e487;
                                 }
-                                let _e513 = phi_845_;
-                                let _e515 = phi_846_;
-                                phi_808_ = _e513;
-                                phi_811_ = _e515;
-                                phi_813_ = (_e489 / 2u);
-                                phi_815_ = (_e491 + ((_e489 * _e489) * ((3u * _e495) ^ _e498)));
+                                let _e513 = phi_902_;
+                                let _e515 = phi_903_;
+                                phi_865_ = _e513;
+                                phi_868_ = _e515;
+                                phi_870_ = (_e489 / 2u);
+                                phi_872_ = (_e491 + ((_e489 * _e489) * ((3u * _e495) ^ _e498)));
                             } else {
-                                phi_808_ = u32();
-                                phi_811_ = u32();
-                                phi_813_ = u32();
-                                phi_815_ = u32();
+                                phi_865_ = u32();
+                                phi_868_ = u32();
+                                phi_870_ = u32();
+                                phi_872_ = u32();
                             }
-                            let _e518 = phi_808_;
-                            let _e520 = phi_811_;
-                            let _e522 = phi_813_;
-                            let _e524 = phi_815_;
+                            let _e518 = phi_865_;
+                            let _e520 = phi_868_;
+                            let _e522 = phi_870_;
+                            let _e524 = phi_872_;
                             continue;
                             continuing {
-                                phi_807_ = _e518;
-                                phi_810_ = _e520;
-                                phi_812_ = _e522;
-                                phi_814_ = _e524;
+                                phi_864_ = _e518;
+                                phi_867_ = _e520;
+                                phi_869_ = _e522;
+                                phi_871_ = _e524;
                                 break if !(_e492);
                             }
                         }
@@ -518,11 +518,11 @@ fn function_() {
                         let _e533 = (0.5f + (_e531 * 0.7548777f));
                         let _e537 = (0.5f + (_e531 * 0.5698403f));
                         let _e540 = (6.2831855f * (_e533 - floor(_e533)));
-                        phi_877_ = type_28(_e377, type_27(1u, type_26(vec2<u32>(_e60.x, _e60.y), vec3<f32>(_e392, _e401, _e102), _e478, sin(_e540), cos(_e540), (_e537 - floor(_e537)))));
+                        phi_934_ = type_28(_e377, type_27(1u, type_26(vec2<u32>(_e60.x, _e60.y), vec3<f32>(_e392, _e401, _e102), _e478, sin(_e540), cos(_e540), (_e537 - floor(_e537)))));
                     } else {
-                        phi_877_ = type_28(_e377, type_27(0u, type_27().member_1));
+                        phi_934_ = type_28(_e377, type_27(0u, type_27().member_1));
                     }
-                    let _e552 = phi_877_;
+                    let _e552 = phi_934_;
                     if (bitcast<i32>(_e552.member_1.member) != 0i) {
                         let _e561 = params.member.member_5;
                         let _e563 = select(_e561, 64u, (64u < _e561));
@@ -531,12 +531,12 @@ fn function_() {
                         let _e570 = params.member.member_6;
                         let _e572 = select(1u, _e570, (1u < _e570));
                         phi_2069_ = false;
-                        phi_912_ = 0u;
-                        phi_915_ = 0f;
+                        phi_969_ = 0u;
+                        phi_972_ = 0f;
                         loop {
                             let _e574 = phi_2069_;
-                            let _e576 = phi_912_;
-                            let _e578 = phi_915_;
+                            let _e576 = phi_969_;
+                            let _e578 = phi_972_;
                             local_5 = _e578;
                             let _e579 = (_e576 < _e567);
                             if _e579 {
@@ -568,19 +568,19 @@ fn function_() {
                                 let _e651 = params.member.member_1;
                                 let _e655 = params.member.member_3;
                                 let _e658 = params.member.member_4;
-                                phi_1061_ = 1u;
-                                phi_1064_ = _e651;
-                                phi_1066_ = false;
-                                phi_1068_ = true;
-                                phi_1070_ = 0f;
-                                phi_1072_ = 0f;
+                                phi_1118_ = 1u;
+                                phi_1121_ = _e651;
+                                phi_1123_ = false;
+                                phi_1125_ = true;
+                                phi_1127_ = 0f;
+                                phi_1129_ = 0f;
                                 loop {
-                                    let _e664 = phi_1061_;
-                                    let _e666 = phi_1064_;
-                                    let _e668 = phi_1066_;
-                                    let _e670 = phi_1068_;
-                                    let _e672 = phi_1070_;
-                                    let _e674 = phi_1072_;
+                                    let _e664 = phi_1118_;
+                                    let _e666 = phi_1121_;
+                                    let _e668 = phi_1123_;
+                                    let _e670 = phi_1125_;
+                                    let _e672 = phi_1127_;
+                                    let _e674 = phi_1129_;
                                     local_1 = _e666;
                                     local_2 = _e668;
                                     local_3 = _e666;
@@ -601,20 +601,20 @@ fn function_() {
                                             if (_e719 > 0f) {
                                                 let _e725 = select(select(u32(_e719), 0u, (_e719 < 0f)), 4294967295u, (_e719 > 4294967000f));
                                                 let _e726 = (_e82 - 1u);
-                                                phi_1176_ = select(_e725, _e726, (_e726 < _e725));
+                                                phi_1233_ = select(_e725, _e726, (_e726 < _e725));
                                             } else {
-                                                phi_1176_ = 0u;
+                                                phi_1233_ = 0u;
                                             }
-                                            let _e730 = phi_1176_;
+                                            let _e730 = phi_1233_;
                                             let _e731 = (_e708 * _e87);
                                             if (_e731 > 0f) {
                                                 let _e737 = select(select(u32(_e731), 0u, (_e731 < 0f)), 4294967295u, (_e731 > 4294967000f));
                                                 let _e738 = (_e92 - 1u);
-                                                phi_1197_ = select(_e737, _e738, (_e738 < _e737));
+                                                phi_1254_ = select(_e737, _e738, (_e738 < _e737));
                                             } else {
-                                                phi_1197_ = 0u;
+                                                phi_1254_ = 0u;
                                             }
-                                            let _e742 = phi_1197_;
+                                            let _e742 = phi_1254_;
                                             let _e744 = ((_e742 * _e82) + _e730);
                                             if (_e744 < _e62) {
                                             } else {
@@ -638,20 +638,20 @@ fn function_() {
                                             if (_e774 > 0f) {
                                                 let _e780 = select(select(u32(_e774), 0u, (_e774 < 0f)), 4294967295u, (_e774 > 4294967000f));
                                                 let _e781 = (_e82 - 1u);
-                                                phi_1291_ = select(_e780, _e781, (_e781 < _e780));
+                                                phi_1348_ = select(_e780, _e781, (_e781 < _e780));
                                             } else {
-                                                phi_1291_ = 0u;
+                                                phi_1348_ = 0u;
                                             }
-                                            let _e785 = phi_1291_;
+                                            let _e785 = phi_1348_;
                                             let _e790 = (select(0f, select(1f, _e708, (_e708 < 1f)), (_e708 > 0f)) * _e87);
                                             if (_e790 > 0f) {
                                                 let _e796 = select(select(u32(_e790), 0u, (_e790 < 0f)), 4294967295u, (_e790 > 4294967000f));
                                                 let _e797 = (_e92 - 1u);
-                                                phi_1322_ = select(_e796, _e797, (_e797 < _e796));
+                                                phi_1379_ = select(_e796, _e797, (_e797 < _e796));
                                             } else {
-                                                phi_1322_ = 0u;
+                                                phi_1379_ = 0u;
                                             }
-                                            let _e801 = phi_1322_;
+                                            let _e801 = phi_1379_;
                                             let _e819 = ((_e801 * _e82) + _e785);
                                             if (_e819 < _e64) {
                                             } else {
@@ -700,71 +700,71 @@ fn function_() {
                                             let _e906 = (_e672 + _e769);
                                             let _e915 = select(false, _e903, _e718);
                                             if _e915 {
-                                                phi_1462_ = (_e664 + 1u);
+                                                phi_1519_ = (_e664 + 1u);
                                             } else {
-                                                phi_1462_ = u32();
+                                                phi_1519_ = u32();
                                             }
-                                            let _e918 = phi_1462_;
-                                            phi_1464_ = _e918;
-                                            phi_1465_ = select(_e666, select((_e674 + ((_e672 * (_e681 - _e674)) / _e906)), _e674, (_e906 < 0.000001f)), _e905);
-                                            phi_1466_ = select(_e905, true, _e668);
-                                            phi_1467_ = _e915;
-                                            phi_1468_ = _e769;
-                                            phi_1471_ = _e915;
-                                            phi_1472_ = select(true, false, _e915);
+                                            let _e918 = phi_1519_;
+                                            phi_1521_ = _e918;
+                                            phi_1522_ = select(_e666, select((_e674 + ((_e672 * (_e681 - _e674)) / _e906)), _e674, (_e906 < 0.000001f)), _e905);
+                                            phi_1523_ = select(_e905, true, _e668);
+                                            phi_1524_ = _e915;
+                                            phi_1525_ = _e769;
+                                            phi_1528_ = _e915;
+                                            phi_1529_ = select(true, false, _e915);
                                         } else {
-                                            phi_1464_ = u32();
-                                            phi_1465_ = f32();
-                                            phi_1466_ = bool();
-                                            phi_1467_ = bool();
-                                            phi_1468_ = f32();
-                                            phi_1471_ = false;
-                                            phi_1472_ = false;
+                                            phi_1521_ = u32();
+                                            phi_1522_ = f32();
+                                            phi_1523_ = bool();
+                                            phi_1524_ = bool();
+                                            phi_1525_ = f32();
+                                            phi_1528_ = false;
+                                            phi_1529_ = false;
                                         }
-                                        let _e921 = phi_1464_;
-                                        let _e923 = phi_1465_;
-                                        let _e925 = phi_1466_;
-                                        let _e927 = phi_1467_;
-                                        let _e929 = phi_1468_;
-                                        let _e931 = phi_1471_;
-                                        let _e933 = phi_1472_;
-                                        phi_1062_ = _e921;
-                                        phi_1065_ = _e923;
-                                        phi_1067_ = _e925;
-                                        phi_1069_ = _e927;
-                                        phi_1071_ = _e929;
-                                        phi_1073_ = _e681;
-                                        phi_1476_ = _e931;
-                                        phi_1478_ = _e933;
-                                        phi_1479_ = select(true, false, _e718);
+                                        let _e921 = phi_1521_;
+                                        let _e923 = phi_1522_;
+                                        let _e925 = phi_1523_;
+                                        let _e927 = phi_1524_;
+                                        let _e929 = phi_1525_;
+                                        let _e931 = phi_1528_;
+                                        let _e933 = phi_1529_;
+                                        phi_1119_ = _e921;
+                                        phi_1122_ = _e923;
+                                        phi_1124_ = _e925;
+                                        phi_1126_ = _e927;
+                                        phi_1128_ = _e929;
+                                        phi_1130_ = _e681;
+                                        phi_1533_ = _e931;
+                                        phi_1535_ = _e933;
+                                        phi_1536_ = select(true, false, _e718);
                                     } else {
-                                        phi_1062_ = u32();
-                                        phi_1065_ = f32();
-                                        phi_1067_ = bool();
-                                        phi_1069_ = bool();
-                                        phi_1071_ = f32();
-                                        phi_1073_ = f32();
-                                        phi_1476_ = false;
-                                        phi_1478_ = false;
-                                        phi_1479_ = false;
+                                        phi_1119_ = u32();
+                                        phi_1122_ = f32();
+                                        phi_1124_ = bool();
+                                        phi_1126_ = bool();
+                                        phi_1128_ = f32();
+                                        phi_1130_ = f32();
+                                        phi_1533_ = false;
+                                        phi_1535_ = false;
+                                        phi_1536_ = false;
                                     }
-                                    let _e936 = phi_1062_;
-                                    let _e938 = phi_1065_;
-                                    let _e940 = phi_1067_;
-                                    let _e942 = phi_1069_;
-                                    let _e944 = phi_1071_;
-                                    let _e946 = phi_1073_;
-                                    let _e948 = phi_1476_;
-                                    let _e950 = phi_1478_;
-                                    let _e952 = phi_1479_;
+                                    let _e936 = phi_1119_;
+                                    let _e938 = phi_1122_;
+                                    let _e940 = phi_1124_;
+                                    let _e942 = phi_1126_;
+                                    let _e944 = phi_1128_;
+                                    let _e946 = phi_1130_;
+                                    let _e948 = phi_1533_;
+                                    let _e950 = phi_1535_;
+                                    let _e952 = phi_1536_;
                                     continue;
                                     continuing {
-                                        phi_1061_ = _e936;
-                                        phi_1064_ = _e938;
-                                        phi_1066_ = _e940;
-                                        phi_1068_ = _e942;
-                                        phi_1070_ = _e944;
-                                        phi_1072_ = _e946;
+                                        phi_1118_ = _e936;
+                                        phi_1121_ = _e938;
+                                        phi_1123_ = _e940;
+                                        phi_1125_ = _e942;
+                                        phi_1127_ = _e944;
+                                        phi_1129_ = _e946;
                                         phi_2021_ = _e574;
                                         phi_1695_ = _e952;
                                         phi_1694_ = _e950;
@@ -793,28 +793,28 @@ fn function_() {
                                 let _e981 = local_4;
                                 let _e985 = params.member.member_7;
                                 if (_e985 == 1u) {
-                                    phi_1519_ = 0f;
+                                    phi_1576_ = 0f;
                                 } else {
                                     let _e987 = (select(_e978, select(_e966, _e971, _e969), _e976) / _e651);
-                                    phi_1519_ = select(0f, select(1f, _e987, (_e987 < 1f)), (_e987 > 0f));
+                                    phi_1576_ = select(0f, select(1f, _e987, (_e987 < 1f)), (_e987 > 0f));
                                 }
-                                let _e993 = phi_1519_;
+                                let _e993 = phi_1576_;
                                 phi_2147_ = _e956;
-                                phi_913_ = (_e576 + 1u);
-                                phi_916_ = (_e578 + select(1f, _e993, select(_e981, select(_e964, _e974, _e969), _e976)));
+                                phi_970_ = (_e576 + 1u);
+                                phi_973_ = (_e578 + select(1f, _e993, select(_e981, select(_e964, _e974, _e969), _e976)));
                             } else {
                                 phi_2147_ = _e574;
-                                phi_913_ = u32();
-                                phi_916_ = f32();
+                                phi_970_ = u32();
+                                phi_973_ = f32();
                             }
                             let _e998 = phi_2147_;
-                            let _e1000 = phi_913_;
-                            let _e1002 = phi_916_;
+                            let _e1000 = phi_970_;
+                            let _e1002 = phi_973_;
                             continue;
                             continuing {
                                 phi_2069_ = _e998;
-                                phi_912_ = _e1000;
-                                phi_915_ = _e1002;
+                                phi_969_ = _e1000;
+                                phi_972_ = _e1002;
                                 phi_2146_ = _e998;
                                 break if !(_e579);
                             }
@@ -828,11 +828,11 @@ fn function_() {
                         let _e1013 = pow((_e1008 / f32(_e567)), _e1012);
                         let _e1014 = (_e1013 * 0.6666667f);
                         let _e1020 = ((select(0f, select(1f, _e1014, (_e1014 < 1f)), (_e1014 > 0f)) * 255f) + 0.5f);
-                        phi_1590_ = type_29(_e1013, select(select(u32(_e1020), 0u, (_e1020 < 0f)), 4294967295u, (_e1020 > 4294967000f)), _e552.member);
+                        phi_1647_ = type_29(_e1013, select(select(u32(_e1020), 0u, (_e1020 < 0f)), 4294967295u, (_e1020 > 4294967000f)), _e552.member);
                     } else {
-                        phi_1590_ = type_29(1f, 170u, _e552.member);
+                        phi_1647_ = type_29(1f, 170u, _e552.member);
                     }
-                    let _e1029 = phi_1590_;
+                    let _e1029 = phi_1647_;
                     if (_e98 < arrayLength((&ao.member))) {
                     } else {
                         break;

@@ -475,11 +475,11 @@ fn function_() {
                     let _e368 = phi_2561_;
                     let _e369 = select(_e366, _e354, _e368);
                     let _e375 = ((((64u * select(select(u32(_e283), 0u, (_e283 < 0f)), 4294967295u, (_e283 > 4294967000f))) + (16u * select(select(u32(_e311), 0u, (_e311 < 0f)), 4294967295u, (_e311 > 4294967000f)))) + (4u * select(select(u32(_e340), 0u, (_e340 < 0f)), 4294967295u, (_e340 > 4294967000f)))) + select(select(u32(_e369), 0u, (_e369 < 0f)), 4294967295u, (_e369 > 4294967000f)));
-                    let _e380 = ((f32(_e84.x) + 0.5f) / _e98);
+                    let _e378 = ((f32(_e84.x) + 0.5f) / _e98);
                     let _e381 = ((f32(_e84.y) + 0.5f) / _e109);
                     let _e382 = (_e124 * 0.99999f);
                     let _e390 = params.member.member_4.member.member_1[0u];
-                    let _e392 = ((((_e380 * 2f) - 1f) * _e390) * _e382);
+                    let _e392 = ((((_e378 * 2f) - 1f) * _e390) * _e382);
                     let _e400 = params.member.member_4.member.member_1[1u];
                     let _e402 = ((((_e381 * -2f) + 1f) * _e400) * _e382);
                     let _e403 = -(_e392);
@@ -697,9 +697,9 @@ fn function_() {
                                         let _e750 = phi_1163_;
                                         let _e752 = phi_1164_;
                                         let _e754 = (select(_e750, _e738, _e752) / _e109);
-                                        let _e755 = (_e380 + _e736);
+                                        let _e755 = (_e378 + _e736);
                                         let _e756 = (_e381 + _e754);
-                                        let _e757 = (_e380 - _e736);
+                                        let _e757 = (_e378 - _e736);
                                         let _e758 = (_e381 - _e754);
                                         let _e760 = select(1u, _e103, (1u < _e103));
                                         let _e762 = select(1u, _e114, (1u < _e114));

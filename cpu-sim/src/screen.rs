@@ -4,10 +4,10 @@
 use crate::Progress;
 use aokit_shaders::blur::{BlurParams, blur_lanes};
 use aokit_shaders::common::gbuffer_read::GBufferSlices;
-use aokit_shaders::common::lanes::{F32x8, Lanes};
+use aokit_shaders::common::lanes::{F32x8, Lanes, U2x8};
 use aokit_shaders::glam::{UVec2, uvec2};
 use aokit_shaders::vao::VaoParams;
-use aokit_shaders::vao::kernel::{PixelFrame, setup_pixel, vao_finish, vao_visibility_sum};
+use aokit_shaders::vao::kernel::{setup_lanes, vao_finish, vao_visibility_sum};
 use rayon::prelude::*;
 
 /// Rows per band of [`tiled`]: the unit of parallel work.
@@ -119,18 +119,15 @@ pub fn run_vao(params: &VaoParams, depth: &[f32], normals: &[u32], progress: Pro
 /// last pixel; unshaded pixels (no usable depth) borrow a shaded lane's frame and are
 /// discarded.
 pub fn vao_x8(gbuffer: &GBufferSlices, params: &VaoParams, first: UVec2, ao: &mut [f32]) {
-    let frames: [Option<PixelFrame>; 8] = core::array::from_fn(|i| {
-        let p = lane_pixel(first, i, ao.len());
-        setup_pixel(gbuffer, &params.view, params.radius, params.max_screen_radius, p)
-    });
-    let Some(any) = frames.iter().flatten().next().copied() else {
+    let p = U2x8::from_texels(&core::array::from_fn(|i| lane_pixel(first, i, ao.len())));
+    let (shaded, frame) = setup_lanes::<_, F32x8>(gbuffer, &params.view, params.radius, params.max_screen_radius, p);
+    if !F32x8::any(shaded) {
         ao.fill(1.0);
         return;
-    };
-    let lanes = PixelFrame::<F32x8>::from_lanes(&frames.map(|f| f.unwrap_or(any)));
-    let sum = vao_visibility_sum(gbuffer, params, &lanes);
+    }
+    let sum = vao_visibility_sum(gbuffer, params, &frame);
     for (i, v) in ao.iter_mut().enumerate() {
-        *v = if frames[i].is_some() { vao_finish(params, sum.lane(i)) } else { 1.0 };
+        *v = if F32x8::mask_lane(shaded, i) { vao_finish(params, sum.lane(i)) } else { 1.0 };
     }
 }
 

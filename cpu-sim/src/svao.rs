@@ -9,14 +9,14 @@ use crate::screen::lane_pixel;
 use crate::{Progress, SceneBvh};
 use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
 use aokit_shaders::common::gbuffer_read::{DepthSlice, GBufferSlices};
-use aokit_shaders::common::lanes::{F32x8, Lanes};
+use aokit_shaders::common::lanes::{F32x8, LaneVec3, Lanes, U2x8};
 use aokit_shaders::glam::{UVec2, uvec2, vec2};
 use aokit_shaders::rastersd::raster_fragment;
 use aokit_shaders::raysd::{SdMapRefine, SdPayload, reservoir_any_hit, sd_ray, store_layers};
 use aokit_shaders::raysvao::{ACCEPT, ACCEPT_AND_END, SampleRay, SampleTracer, refine_by_ray, sample_any_hit};
 use aokit_shaders::svao::pass1::{pass1_finish, pass1_sample, record_interval};
 use aokit_shaders::svao::{Refine, Refined, SvaoFrame, SvaoParams, pass2_pixel};
-use aokit_shaders::vao::kernel::{LineSample, PixelFrame, setup_pixel};
+use aokit_shaders::vao::kernel::{LineSample, PixelFrame, setup_lanes};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU32, AtomicU64, Ordering};
 
@@ -73,31 +73,30 @@ fn pass1_x8(
 ) {
     let vao = &params.vao;
     let n = ao.len();
-    let frames: [Option<PixelFrame>; 8] = core::array::from_fn(|i| {
-        setup_pixel(gbuffer, &vao.view, vao.radius, vao.max_screen_radius, lane_pixel(first, i, n))
-    });
-    let Some(any) = frames.iter().flatten().next().copied() else {
+    let p = U2x8::from_texels(&core::array::from_fn(|i| lane_pixel(first, i, n)));
+    let (shaded, lanes) = setup_lanes::<_, F32x8>(gbuffer, &vao.view, vao.radius, vao.max_screen_radius, p);
+    if !F32x8::any(shaded) {
         return;
-    };
-    let lanes = PixelFrame::<F32x8>::from_lanes(&frames.map(|f| f.unwrap_or(any)));
-    let distance = frames.map(|f| f.map_or(0.0, |f| f.position.length()));
+    }
+    let shaded: [bool; 8] = core::array::from_fn(|k| F32x8::mask_lane(shaded, k));
+    let distance = lanes.position.length();
     let (mut sum, mut mask) = (F32x8::splat(0.0), [0u32; 8]);
     for i in 0..params.samples() {
         let r = pass1_sample(gbuffer, depth2, params, &lanes, i);
         sum = sum + r.value;
         for (k, m) in mask.iter_mut().enumerate().take(n) {
-            if frames[k].is_some() && F32x8::mask_lane(r.flagged, k) {
+            if shaded[k] && F32x8::mask_lane(r.flagged, k) {
                 *m |= 1 << i;
                 let s = &r.sample;
                 let uv = vec2(s.uv.x.lane(k), s.uv.y.lane(k));
                 let (z, h, end, radius) =
                     (r.z.lane(k), s.half_chord.lane(k), s.sphere_end.lane(k), lanes.radius.lane(k));
-                record_interval(params, uv, z, h, end, radius, distance[k], &mut ray_min, &mut ray_max);
+                record_interval(params, uv, z, h, end, radius, distance.lane(k), &mut ray_min, &mut ray_max);
             }
         }
     }
     for (k, (a, m)) in ao.iter_mut().zip(mask_out.iter_mut()).enumerate() {
-        if frames[k].is_some() {
+        if shaded[k] {
             let out = pass1_finish(params, sum.lane(k), mask[k]);
             (*a, *m) = (out.ao, out.mask);
         }

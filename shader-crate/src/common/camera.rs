@@ -33,7 +33,16 @@ impl ViewParams {
     /// Centre uv of pixel `p`: `(p + 0.5)/res` (spec §1).
     #[inline]
     pub fn pixel_uv(&self, p: UVec2) -> Vec2 {
-        (p.as_vec2() + 0.5) / self.res
+        self.pixel_uv_lanes::<f32>(p)
+    }
+
+    /// [`Self::pixel_uv`] per lane.
+    #[inline]
+    pub fn pixel_uv_lanes<L: Lanes>(&self, p: L::U2) -> L::V2 {
+        L::V2::new(
+            (L::index_to_float(L::texel_x(p)) + 0.5) / self.res.x,
+            (L::index_to_float(L::texel_y(p)) + 0.5) / self.res.y,
+        )
     }
 
     /// Centre uv of texel `p` as a multiply by the (loop-invariant) reciprocal resolution; for

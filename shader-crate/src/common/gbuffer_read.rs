@@ -1,7 +1,7 @@
 //! Read access to the G-buffer (linear depth + encoded view-space face normal), the resource
 //! trait every screen-space kernel is written against.
 
-use crate::common::lanes::Lanes;
+use crate::common::lanes::{LaneVec3, Lanes};
 use crate::common::normal_codec::decode_normal;
 use crate::glam::{UVec2, Vec3};
 
@@ -12,10 +12,9 @@ pub trait GBuffer {
     /// Unit view-space face normal at pixel `p`.
     fn view_normal(&self, p: UVec2) -> Vec3;
     /// [`Self::linear_depth`] at each lane's pixel.
-    #[inline]
-    fn linear_depth_lanes<L: Lanes>(&self, p: L::U2) -> L {
-        L::from_lanes(|i| self.linear_depth(L::texel_lane(p, i)))
-    }
+    fn linear_depth_lanes<L: Lanes>(&self, p: L::U2) -> L;
+    /// [`Self::view_normal`] at each lane's pixel.
+    fn view_normal_lanes<L: Lanes>(&self, p: L::U2) -> L::V3;
 }
 
 /// `depth[y·width + x]` per lane: a row-major depth buffer's gather.
@@ -45,6 +44,18 @@ impl GBuffer for GBufferSlices<'_> {
     fn view_normal(&self, p: UVec2) -> Vec3 {
         decode_normal(self.normals[(p.y * self.width + p.x) as usize])
     }
+    #[inline]
+    fn view_normal_lanes<L: Lanes>(&self, p: L::U2) -> L::V3 {
+        let width = self.width;
+        L::gather_v3(
+            self.normals,
+            move |i| {
+                let q = L::texel_lane(p, i);
+                (q.y * width + q.x) as usize
+            },
+            decode_normal,
+        )
+    }
 }
 
 /// Depth alone, for passes that never read normals (the raster SD map's first-layer test).
@@ -65,5 +76,9 @@ impl GBuffer for DepthSlice<'_> {
     #[inline]
     fn view_normal(&self, _p: UVec2) -> Vec3 {
         Vec3::Z
+    }
+    #[inline]
+    fn view_normal_lanes<L: Lanes>(&self, _p: L::U2) -> L::V3 {
+        L::V3::new(L::splat(0.0), L::splat(0.0), L::splat(1.0))
     }
 }

@@ -67,8 +67,8 @@ pub fn ceil<L: Lanes>(x: L) -> L {
 
 /// Sign with `sign(0) = +1` (spec svao-raysd §1 octahedral codec, §4.2 `nz`).
 #[inline]
-pub fn sign_nonzero(x: f32) -> f32 {
-    if x < 0.0 { -1.0 } else { 1.0 }
+pub fn sign_nonzero<L: Lanes>(x: L) -> L {
+    L::select(x.lt(L::splat(0.0)), L::splat(-1.0), L::splat(1.0))
 }
 
 /// True for a usable linear depth: finite, positive and in front of the far plane (per lane).

@@ -10,7 +10,7 @@ use crate::common::tables::{
     AO_SAMPLES, HBAO_HALF_CHORDS, HBAO_PDFS, HBAO_RADII, VAO_DIRECTIONS, VAO_HALF_CHORDS, VAO_RADII, kernel_entry,
     rotation_sin_cos,
 };
-use crate::glam::{UVec2, vec3};
+use crate::glam::UVec2;
 
 /// Push constants of the VAO pass.
 #[repr(C)]
@@ -56,28 +56,6 @@ pub struct PixelFrame<L: Lanes = f32> {
     pub inv_normal_z: L,
 }
 
-#[cfg(not(target_arch = "spirv"))]
-impl PixelFrame<crate::common::lanes::F32x8> {
-    /// The frames of eight pixels side by side (lane `i` from `each[i]`).
-    pub fn from_lanes(each: &[PixelFrame; 8]) -> Self {
-        use crate::common::lanes::{F32x8, v2_from_lanes, v3_from_lanes};
-        type L = F32x8;
-        PixelFrame {
-            pixel: crate::common::lanes::U2x8::from_texels(&each.map(|p| p.pixel)),
-            uv: v2_from_lanes::<L>(|i| each[i].uv),
-            radius: L::from_lanes(|i| each[i].radius),
-            screen_radius: L::from_lanes(|i| each[i].screen_radius),
-            position: v3_from_lanes::<L>(|i| each[i].position),
-            normal: v3_from_lanes::<L>(|i| each[i].normal),
-            axis: v3_from_lanes::<L>(|i| each[i].axis),
-            tangent: v3_from_lanes::<L>(|i| each[i].tangent),
-            bitangent: v3_from_lanes::<L>(|i| each[i].bitangent),
-            normal_sphere: v3_from_lanes::<L>(|i| each[i].normal_sphere),
-            inv_normal_z: L::from_lanes(|i| each[i].inv_normal_z),
-        }
-    }
-}
-
 /// Per-pixel setup of spec §4.1. `None` means "unshaded" (AO = 1): the depth is unusable or the
 /// screen radius is below half a pixel. (The reference has no explicit background test, §15.10;
 /// we also treat NaN, ±∞, ≤ 0 and ≥ far as background so broken input never yields NaN.)
@@ -89,34 +67,44 @@ pub fn setup_pixel<G: GBuffer>(
     max_screen_radius: f32,
     p: UVec2,
 ) -> Option<PixelFrame> {
-    let uv = view.pixel_uv(p);
-    let d = gbuffer.linear_depth(p);
-    if !is_valid_depth(d, view.far) {
-        return None;
-    }
+    let (shaded, frame) = setup_lanes::<G, f32>(gbuffer, view, world_radius, max_screen_radius, p);
+    if shaded { Some(frame) } else { None }
+}
+
+/// [`setup_pixel`] of one pixel or of `L::LANES` pixels: whether each is shaded, and the frames
+/// (those of unshaded pixels are computed and meaningless).
+#[inline]
+pub fn setup_lanes<G: GBuffer, L: Lanes>(
+    gbuffer: &G,
+    view: &ViewParams,
+    world_radius: f32,
+    max_screen_radius: f32,
+    p: L::U2,
+) -> (L::Mask, PixelFrame<L>) {
+    let uv = view.pixel_uv_lanes::<L>(p);
+    let d = gbuffer.linear_depth_lanes::<L>(p);
     // Mean of the x and y pixel radii (§4.1 step 2).
     let t = view.tan_half_fov;
-    let mut rpx = 0.5 * (world_radius * view.res.x / (2.0 * t.x * d) + world_radius * view.res.y / (2.0 * t.y * d));
-    let mut radius = world_radius;
-    if rpx > max_screen_radius {
-        radius = world_radius * max_screen_radius / rpx;
-        rpx = max_screen_radius;
-    }
-    if rpx < 0.5 {
-        return None;
-    }
-    let position = view.uv_to_view(uv, d);
-    let mut normal = gbuffer.view_normal(p);
-    if position.dot(normal) > 0.0 {
-        normal = -normal;
-    }
-    let rot = rotation_sin_cos(p);
-    let r = vec3(rot.x, rot.y, 0.0);
+    let rpx = (L::splat(world_radius * view.res.x) / (d * (2.0 * t.x))
+        + L::splat(world_radius * view.res.y) / (d * (2.0 * t.y)))
+        * 0.5;
+    let clamped = rpx.gt(L::splat(max_screen_radius));
+    let radius = L::select(clamped, L::splat(world_radius * max_screen_radius) / rpx, L::splat(world_radius));
+    let rpx = L::select(clamped, L::splat(max_screen_radius), rpx);
+    let shaded = L::and(is_valid_depth(d, view.far), L::not(rpx.lt(L::splat(0.5))));
+    let position = view.uv_to_view_lanes::<L>(uv, d);
+    let normal = gbuffer.view_normal_lanes::<L>(p);
+    let normal = select_v3::<L>(position.dot(normal).gt(L::splat(0.0)), -normal, normal);
+    let rot = L::V2::new(
+        L::from_lanes(|i| rotation_sin_cos(L::texel_lane(p, i)).x),
+        L::from_lanes(|i| rotation_sin_cos(L::texel_lane(p, i)).y),
+    );
+    let r = L::V3::new(rot.x(), rot.y(), L::splat(0.0));
     let axis = -position / position.length();
     let bitangent = axis.cross(r).normalize();
     let tangent = bitangent.cross(axis);
-    let normal_sphere = vec3(normal.dot(tangent), normal.dot(bitangent), normal.dot(axis));
-    Some(PixelFrame {
+    let normal_sphere = L::V3::new(normal.dot(tangent), normal.dot(bitangent), normal.dot(axis));
+    let frame = PixelFrame {
         pixel: p,
         uv,
         radius,
@@ -127,8 +115,15 @@ pub fn setup_pixel<G: GBuffer>(
         tangent,
         bitangent,
         normal_sphere,
-        inv_normal_z: 1.0 / non_zero(normal_sphere.z),
-    })
+        inv_normal_z: L::splat(1.0) / non_zero(normal_sphere.z()),
+    };
+    (shaded, frame)
+}
+
+/// `if m { a } else { b }` per lane for vectors.
+#[inline]
+fn select_v3<L: Lanes>(m: L::Mask, a: L::V3, b: L::V3) -> L::V3 {
+    L::V3::new(L::select(m, a.x(), b.x()), L::select(m, a.y(), b.y()), L::select(m, a.z(), b.z()))
 }
 
 /// One VAO line sample (spec §4.2), of one pixel (`L = f32`) or of `L::LANES` pixels.
@@ -158,10 +153,10 @@ pub struct LineSample<L: Lanes = f32> {
     pub same_pixel: L::Mask,
 }
 
-/// `nz(x) = sign(x)·max(|x|, 1e−4)` (spec §4.2).
+/// `nz(x) = sign(x)·max(|x|, 1e−4)` (spec §4.2; sign(0) = +1).
 #[inline]
-fn non_zero(x: f32) -> f32 {
-    sign_nonzero(x) * x.abs().max(1.0e-4)
+fn non_zero<L: Lanes>(x: L) -> L {
+    sign_nonzero(x) * x.abs().max(L::splat(1.0e-4))
 }
 
 /// The VAO kernel (spec §4.2–§4.3).
