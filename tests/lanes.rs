@@ -129,3 +129,37 @@ fn xegtao_lanes_match_one_pixel_at_a_time_within_one_step() {
         current = next;
     }
 }
+
+#[test]
+fn vbao_lanes_match_one_pixel_at_a_time_within_one_step() {
+    use aokit_shaders::vbao::settings::VbaoSettings;
+    use aokit_shaders::vbao::{RULE_PAPER, RULE_TOUCH, WEIGHT_COSINE_BLENDER, WEIGHT_COSINE_EXACT, WEIGHT_UNIFORM};
+    let (scene, frame) = common::builtin_frame("sponza", 157, 90, 16);
+    let cpu = CpuRenderer::new(&scene);
+    let (g, _) = cpu.gbuffer(&frame, &no_progress);
+    let size = frame.camera.view.size();
+    let base = VbaoSettings::default().params(&frame.desc());
+    let mips = aokit_cpu::gtao::run_prefilter(&base.gtao, &g.depth);
+    // Every weighting, and both sector rules: wide's acos/sin/cos/ln are a few ulp from libm's,
+    // so a sector boundary or an 8-bit rounding may flip in a few pixels, never more than a step.
+    for (weighting, rule) in
+        [(WEIGHT_UNIFORM, RULE_PAPER), (WEIGHT_COSINE_BLENDER, RULE_TOUCH), (WEIGHT_COSINE_EXACT, RULE_PAPER)]
+    {
+        let params = aokit_shaders::vbao::VbaoParams { weighting, sector_rule: rule, ..base };
+        let (mut terms, mut edges) = (vec![0; (size.x * size.y) as usize], vec![0; (size.x * size.y) as usize]);
+        aokit_cpu::gtao::run_vbao_into(&params, &mips, &g.normals, &mut terms, &mut edges);
+        let (mut differ, mut occluded, mut total) = (0, 0, 0);
+        for p in (0..size.y).flat_map(|y| (0..size.x).map(move |x| uvec2(x, y))) {
+            let one = aokit_shaders::vbao::vbao_pixel(&params, &mips, &g.normals, p);
+            let i = (p.y * size.x + p.x) as usize;
+            assert_eq!(edges[i], one.edges, "edges at {p}");
+            let w = weighting;
+            assert!(terms[i].abs_diff(one.term) <= 1, "weighting {w} at {p}: lanes {} vs one pixel {}", terms[i], one.term);
+            differ += (terms[i] != one.term) as u32;
+            occluded += (one.term < 160) as u32;
+            total += 1;
+        }
+        assert!(occluded * 10 > total, "weighting {weighting}: the image must be occluded, {occluded} of {total}");
+        assert!(differ * 100 <= total, "weighting {weighting}: {differ} of {total} terms differ");
+    }
+}

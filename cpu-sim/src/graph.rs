@@ -251,7 +251,7 @@ mod kernels {
     use aokit_shaders::raymarch::RaymarchParams;
     use aokit_shaders::svao::SvaoFrame;
     use aokit_shaders::vao::VaoParams;
-    use aokit_shaders::vbao::{VbaoParams, vbao_pixel};
+    use aokit_shaders::vbao::VbaoParams;
 
     pub fn vao(io: &mut PassIo) {
         let params: VaoParams = io.push();
@@ -359,13 +359,8 @@ mod kernels {
 
     pub fn vbao_main(io: &mut PassIo) {
         let params: VbaoParams = io.push();
-        let size = params.gtao.view.size();
         let (terms, edges) = (io.take(2), io.take(3));
-        let (mips, normals) = (io.f32(0), io.words(1));
-        crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 1, &crate::no_progress, |p, t, e| {
-            let o = vbao_pixel(&params, mips, normals, p);
-            (t[0], e[0]) = (o.term, o.edges);
-        });
+        crate::gtao::run_vbao_into(&params, io.f32(0), io.words(1), terms, edges);
     }
 
     pub fn gtao_denoise(io: &mut PassIo) {

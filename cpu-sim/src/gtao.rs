@@ -9,6 +9,8 @@ use aokit_shaders::gtao::main_pass::{PixelSetup, finish_pixel, pixel_setup, slic
 use aokit_shaders::gtao::{
     GtaoParams, MIP_LEVELS, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
 };
+use aokit_shaders::vbao::VbaoParams;
+use aokit_shaders::vbao::kernel::{vbao_term, vbao_visibility};
 
 /// Evaluate `f` for every pixel of a `size` image in parallel [`crate::screen::tiled`] bands.
 pub fn per_pixel<T: Send + Copy + Default>(size: UVec2, f: impl Fn(UVec2) -> T + Sync) -> Vec<T> {
@@ -53,9 +55,9 @@ pub fn run_main_into(params: &GtaoParams, mips: &[f32], normals: &[u32], terms: 
 }
 
 /// XeGTAO's MainPass for `terms.len()` ≤ 8 consecutive pixels of a row from `first`: the
-/// per-pixel setup and finish of [`aokit_shaders::gtao::gtao_pixel`] per lane, the slices (all the arithmetic) on
-/// eight lanes at once. Missing lanes repeat the last pixel; lanes without a usable depth are
-/// computed and discarded, as on a GPU.
+/// per-pixel setup and finish of [`aokit_shaders::gtao::gtao_pixel`] per lane, the slices (all
+/// the arithmetic) on eight lanes at once. Missing lanes repeat the last pixel; lanes without a
+/// usable depth are computed and discarded, as on a GPU.
 pub fn main_pass_x8(
     params: &GtaoParams,
     mips: &[f32],
@@ -64,15 +66,41 @@ pub fn main_pass_x8(
     terms: &mut [u32],
     edges: &mut [u32],
 ) {
-    let setups: [_; 8] =
-        core::array::from_fn(|i| pixel_setup(params, mips, normals, lane_pixel(first, i, terms.len())));
-    let px = PixelSetup::<F32x8>::from_lanes(&setups.map(|s| s.2));
+    let (setups, px) = setups_x8(params, mips, normals, first, terms.len());
     let (vis, bent) = slices_visibility(params, mips, &px);
     for (i, (t, e)) in terms.iter_mut().zip(edges.iter_mut()).enumerate() {
         let (packed, valid, setup) = setups[i];
         let b = vec3(bent.x.lane(i), bent.y.lane(i), bent.z.lane(i));
         (*t, *e) = (finish_pixel(params, valid, vis.lane(i), b, setup.n), packed);
     }
+}
+
+/// The per-pixel setups (packed edges, usable depth, [`PixelSetup`]) of `n` ≤ 8 consecutive
+/// pixels from `first`, and the same setups side by side on eight lanes.
+fn setups_x8(
+    params: &GtaoParams,
+    mips: &[f32],
+    normals: &[u32],
+    first: UVec2,
+    n: usize,
+) -> ([(u32, bool, PixelSetup); 8], PixelSetup<F32x8>) {
+    let setups: [_; 8] = core::array::from_fn(|i| pixel_setup(params, mips, normals, lane_pixel(first, i, n)));
+    let px = PixelSetup::<F32x8>::from_lanes(&setups.map(|s| s.2));
+    (setups, px)
+}
+
+/// VBAO's main pass into the caller's term and edge buffers, eight pixels of a row per call of
+/// the shader crate's lane-generic [`vbao_visibility`] (the setups and the final term per lane).
+pub fn run_vbao_into(params: &VbaoParams, mips: &[f32], normals: &[u32], terms: &mut [u32], edges: &mut [u32]) {
+    let size = params.gtao.view.size();
+    crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |first, t, e| {
+        let (setups, px) = setups_x8(&params.gtao, mips, normals, first, t.len());
+        let vis = vbao_visibility(params, mips, &px);
+        for (i, (t, e)) in t.iter_mut().zip(e.iter_mut()).enumerate() {
+            let (packed, valid, _) = setups[i];
+            (*t, *e) = (vbao_term(params, valid, vis.lane(i)), packed);
+        }
+    });
 }
 
 /// The denoise passes; returns the visibility per pixel (full target).

@@ -14,7 +14,7 @@ use spirv_std::num_traits::Float;
 
 use crate::common::screen_space::clamp_index;
 use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
-use core::ops::{Add, BitAnd, Div, Mul, Neg, Shr, Sub};
+use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Shr, Sub};
 
 /// A number per lane: `f32` (one pixel) or a vector of pixels' values.
 pub trait Lanes:
@@ -44,7 +44,8 @@ pub trait Lanes:
         + Add<Output = Self::Index>
         + Mul<Output = Self::Index>
         + Shr<u32, Output = Self::Index>
-        + BitAnd<Output = Self::Index>;
+        + BitAnd<Output = Self::Index>
+        + BitOr<Output = Self::Index>;
 
     fn splat(v: f32) -> Self;
     /// The value whose lane `i` is `f(i)`.
@@ -60,6 +61,7 @@ pub trait Lanes:
     fn max(self, other: Self) -> Self;
     fn min(self, other: Self) -> Self;
     fn sin(self) -> Self;
+    fn acos(self) -> Self;
     fn cos(self) -> Self;
     /// `(sin, cos)`, one evaluation on the CPU's lanes.
     fn sin_cos(self) -> (Self, Self);
@@ -110,6 +112,10 @@ pub trait Lanes:
     fn gather_index(data: &[f32], i: Self::Index) -> Self;
     /// The word `data[i]` in each lane.
     fn gather_word(data: &[u32], i: Self::Index) -> Self::Index;
+    /// The index whose lane `k` is `f(k)`.
+    fn index_from_lanes(f: impl Fn(usize) -> u32) -> Self::Index;
+    /// Lane `k` of an index.
+    fn index_lane(i: Self::Index, k: usize) -> u32;
 }
 
 /// Do the lanes' texels `a` and `b` coincide?
@@ -180,6 +186,10 @@ impl Lanes for f32 {
     #[inline]
     fn min(self, other: Self) -> Self {
         Float::min(self, other)
+    }
+    #[inline]
+    fn acos(self) -> Self {
+        Float::acos(self)
     }
     #[inline]
     fn sin(self) -> Self {
@@ -312,6 +322,14 @@ impl Lanes for f32 {
     #[inline]
     fn gather_word(data: &[u32], i: u32) -> u32 {
         data[i as usize]
+    }
+    #[inline]
+    fn index_from_lanes(f: impl Fn(usize) -> u32) -> u32 {
+        f(0)
+    }
+    #[inline]
+    fn index_lane(i: u32, _k: usize) -> u32 {
+        i
     }
 }
 
@@ -468,6 +486,10 @@ mod x8 {
             F32x8(self.0.min(o.0))
         }
         #[inline(always)]
+        fn acos(self) -> Self {
+            F32x8(self.0.acos())
+        }
+        #[inline(always)]
         fn sin(self) -> Self {
             F32x8(self.0.sin_cos().0)
         }
@@ -599,6 +621,14 @@ mod x8 {
         #[inline(always)]
         fn index_offset_clamped(i: i32x8, d: i32, n: u32) -> i32x8 {
             (i + i32x8::splat(d)).max(i32x8::ZERO).min(i32x8::splat(n as i32 - 1))
+        }
+        #[inline(always)]
+        fn index_from_lanes(f: impl Fn(usize) -> u32) -> i32x8 {
+            i32x8::new(core::array::from_fn(|k| f(k) as i32))
+        }
+        #[inline(always)]
+        fn index_lane(i: i32x8, k: usize) -> u32 {
+            i.as_array()[k] as u32
         }
         #[inline(always)]
         fn gather_word(data: &[u32], i: i32x8) -> i32x8 {

@@ -8,8 +8,9 @@ use spirv_std::num_traits::Float;
 
 use super::{RULE_TOUCH, VbaoParams, WEIGHT_COSINE_BLENDER, WEIGHT_COSINE_EXACT};
 use crate::common::denoise_terms::store_term;
-use crate::common::math::{clamp, sat};
-use crate::glam::{UVec2, Vec3};
+use crate::common::lanes::{LaneVec3, Lanes};
+use crate::common::math::{ceil, clamp, sat};
+use crate::glam::UVec2;
 use crate::gtao::GtaoPixel;
 use crate::gtao::main_pass::{
     PixelSetup, SliceFrame, arc_integral, final_visibility, pixel_setup, projected_length_fudge, sample_pair,
@@ -26,20 +27,22 @@ pub const SECTORS: u32 = 32;
 /// start). `RULE_TOUCH`: bits `[⌊N·lo⌋, min(⌈N·hi⌉, N))` when hi > lo.
 #[inline]
 pub fn sector_bits(lo: f32, hi: f32, rule: u32) -> u32 {
+    sector_bits_lanes::<f32>(lo, hi, rule)
+}
+
+/// [`sector_bits`] per lane: start and count as whole floats (exact up to N), the bit run per
+/// lane.
+#[inline]
+pub fn sector_bits_lanes<L: Lanes>(lo: L, hi: L, rule: u32) -> L::Index {
     let n = SECTORS as f32;
-    let start = (n * lo).floor() as u32;
+    let start = (lo * n).floor();
     let count = if rule == RULE_TOUCH {
-        if hi <= lo {
-            return 0;
-        }
-        let end = ((n * hi).ceil() as u32).min(SECTORS);
-        // Spelled out: `saturating_sub` lowers to an intrinsic rust-gpu does not take.
-        #[allow(clippy::implicit_saturating_sub)]
-        if end > start { end - start } else { 0 }
+        let end = ceil(hi * n).min(L::splat(n));
+        L::select(hi.le(lo), L::splat(0.0), (end - start).max(L::splat(0.0)))
     } else {
-        (n * (hi - lo)).ceil() as u32
+        ceil((hi - lo) * n)
     };
-    bit_run(start, count)
+    L::index_from_lanes(move |i| bit_run(start.lane(i) as u32, count.lane(i) as u32))
 }
 
 /// `count` ones starting at bit `start`, without any shift of 32 or more (undefined in SPIR-V,
@@ -69,7 +72,7 @@ pub const MAX_EDGE_TOLERANCE: f32 = 2.0 * core::f32::consts::PI / SECTORS as f32
 /// `x = clamp((θ − γ + π/2)/π, 0, 1)`: 0 is the edge on side 1, 1 the edge on side 0 (spec
 /// vbao §2.4).
 #[inline]
-pub fn sector_coordinate(theta: f32, gamma: f32) -> f32 {
+pub fn sector_coordinate<L: Lanes>(theta: L, gamma: L) -> L {
     sat((theta - gamma + core::f32::consts::FRAC_PI_2) / core::f32::consts::PI)
 }
 
@@ -87,56 +90,56 @@ pub fn sector_coordinate(theta: f32, gamma: f32) -> f32 {
 /// sectors on every plane (the spec's plane test, §6.2). The sources use the nominal slice.
 /// For a sample on the nominal slice both are the same.
 #[inline]
-pub fn sample_bits(delta_f: Vec3, v: Vec3, n: Vec3, side: f32, thickness: f32, rule: u32) -> u32 {
+pub fn sample_bits<L: Lanes>(delta_f: L::V3, v: L::V3, n: L::V3, side: f32, thickness: f32, rule: u32) -> L::Index {
+    let zero = L::splat(0.0);
     // The sample's own slice: toward the sample across v, and that slice's projected normal.
     let toward = delta_f - v * delta_f.dot(v);
     let t_len = toward.length();
-    if t_len <= 0.0 {
-        return 0;
-    }
     let axis = toward.cross(v).normalize();
     let projected = n - axis * n.dot(axis);
     let len = projected.length();
     let cos_n = sat(projected.dot(v) / len);
-    let gamma = if toward.dot(projected) < 0.0 { -cos_n.acos() } else { cos_n.acos() };
+    let angle = cos_n.acos();
+    let gamma = L::select(toward.dot(projected).lt(zero), -angle, angle);
     // A normal off by ε turns the slice's projected normal by up to ε/L.
-    let tolerance = (EDGE_TOLERANCE / len).min(MAX_EDGE_TOLERANCE);
-    let delta_b = delta_f - v * thickness;
-    let x_f = sector_coordinate(angle_to(delta_f, v) + tolerance, gamma);
-    let x_b = sector_coordinate(angle_to(delta_b, v) + tolerance, gamma);
+    let tolerance = (L::splat(EDGE_TOLERANCE) / len).min(L::splat(MAX_EDGE_TOLERANCE));
+    let delta_b = delta_f - v * L::splat(thickness);
+    let x_f = sector_coordinate(angle_to::<L>(delta_f, v) + tolerance, gamma);
+    let x_b = sector_coordinate(angle_to::<L>(delta_b, v) + tolerance, gamma);
     // In the own slice the sample's side is side 0; on the nominal side 1 that is mirrored.
-    let (x_f, x_b) = if side > 0.0 { (x_f, x_b) } else { (1.0 - x_f, 1.0 - x_b) };
-    sector_bits(x_f.min(x_b), x_f.max(x_b), rule)
+    let (x_f, x_b) = if side > 0.0 { (x_f, x_b) } else { (-x_f + 1.0, -x_b + 1.0) };
+    let bits = sector_bits_lanes(x_f.min(x_b), x_f.max(x_b), rule);
+    // No own slice for a sample on the view ray.
+    L::index_select(t_len.le(zero), L::index_splat(0), bits)
 }
 
 /// The angle between `delta` and the unit vector `v`, exact acos.
 #[inline]
-fn angle_to(delta: Vec3, v: Vec3) -> f32 {
+fn angle_to<L: Lanes>(delta: L::V3, v: L::V3) -> L {
     clamp(delta.normalize().dot(v), -1.0, 1.0).acos()
 }
 
 /// The signed cosine-weighted arc from 0 to θ, `A(θ) = sgn(θ)·a(θ)` with XeGTAO's `a`: an
 /// antiderivative of `cos(θ − γ)·|sin θ|` (spec vbao §4, `CosineExact`).
 #[inline]
-fn signed_arc(theta: f32, gamma: f32, cos_n: f32) -> f32 {
+fn signed_arc<L: Lanes>(theta: L, gamma: L, cos_n: L) -> L {
     let a = arc_integral(theta, gamma, cos_n);
-    if theta < 0.0 { -a } else { a }
+    L::select(theta.lt(L::splat(0.0)), -a, a)
 }
 
 /// `Σ_{i∉M} w_i` with `w_i = A(upper_i) − A(lower_i)` over sector i's angles
 /// `[γ − π/2 + iπ/N, γ − π/2 + (i+1)π/N]` (spec vbao §4, `CosineExact`).
 #[inline]
-fn free_cosine_weight(mask: u32, gamma: f32, cos_n: f32) -> f32 {
+fn free_cosine_weight<L: Lanes>(mask: L::Index, gamma: L, cos_n: L) -> L {
     let width = core::f32::consts::PI / SECTORS as f32;
     let edge = gamma - core::f32::consts::FRAC_PI_2;
     let mut lower = signed_arc(edge, gamma, cos_n);
-    let mut sum = 0.0;
+    let mut sum = L::splat(0.0);
     let mut i = 0;
     while i < SECTORS {
         let upper = signed_arc(edge + (i + 1) as f32 * width, gamma, cos_n);
-        if (mask >> i) & 1 == 0 {
-            sum += upper - lower;
-        }
+        let free = L::index_eq((mask >> i) & L::index_splat(1), L::index_splat(0));
+        sum = L::select(free, sum + (upper - lower), sum);
         lower = upper;
         i += 1;
     }
@@ -150,28 +153,34 @@ const BLENDER_GROUPS: [(u32, f32); 4] =
 
 /// `clamp(1 − Σ_k popcount(M & mask_k)·w_k, 0, 1)` (spec vbao §4, `CosineBlender`).
 #[inline]
-fn blender_visibility(mask: u32) -> f32 {
-    let mut occluded = 0.0;
+fn blender_visibility<L: Lanes>(mask: L::Index) -> L {
+    let mut occluded = L::splat(0.0);
     let mut k = 0;
     while k < 4 {
         let (group, w) = BLENDER_GROUPS[k];
-        occluded += (mask & group).count_ones() as f32 * w;
+        occluded = occluded + set_sectors::<L>(mask, group) * w;
         k += 1;
     }
-    sat(1.0 - occluded)
+    sat(-occluded + 1.0)
+}
+
+/// The number of sectors of `mask` within `group`, per lane.
+#[inline]
+fn set_sectors<L: Lanes>(mask: L::Index, group: u32) -> L {
+    L::from_lanes(move |k| (L::index_lane(mask, k) & group).count_ones() as f32)
 }
 
 /// One slice's mask: both sides' samples OR-ed into it (spec vbao §2–§3).
 #[inline]
-fn slice_mask(params: &VbaoParams, mips: &[f32], px: &PixelSetup, sl: &SliceFrame, s: u32) -> u32 {
+fn slice_mask<L: Lanes>(params: &VbaoParams, mips: &[f32], px: &PixelSetup<L>, sl: &SliceFrame<L>, s: u32) -> L::Index {
     let g = &params.gtao;
     let steps = g.steps.max(1);
-    let mut mask = 0u32;
+    let mut mask = L::index_splat(0);
     let mut k = 0;
     while k < steps {
         let (q0, q1) = sample_pair(g, mips, px, sl, s, k);
-        mask |= gated_bits(params, q0 - px.pos, px, 1.0);
-        mask |= gated_bits(params, q1 - px.pos, px, -1.0);
+        mask = mask | gated_bits(params, q0 - px.pos, px, 1.0);
+        mask = mask | gated_bits(params, q1 - px.pos, px, -1.0);
         k += 1;
     }
     mask
@@ -180,11 +189,13 @@ fn slice_mask(params: &VbaoParams, mips: &[f32], px: &PixelSetup, sl: &SliceFram
 /// [`sample_bits`] unless the sample lies beyond the gate radius R_g (spec vbao §2.1; no
 /// falloff).
 #[inline]
-fn gated_bits(params: &VbaoParams, delta: Vec3, px: &PixelSetup, side: f32) -> u32 {
-    if params.gate_radius > 0.0 && delta.length() > params.gate_radius {
-        return 0;
+fn gated_bits<L: Lanes>(params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>, side: f32) -> L::Index {
+    let bits = sample_bits::<L>(delta, px.v, px.n, side, params.thickness, params.sector_rule);
+    if params.gate_radius > 0.0 {
+        L::index_select(delta.length().gt(L::splat(params.gate_radius)), L::index_splat(0), bits)
+    } else {
+        bits
     }
-    sample_bits(delta, px.v, px.n, side, params.thickness, params.sector_rule)
 }
 
 /// VBAO's main pass for pixel `p` (spec vbao §1–§4): the visibility of every slice's mask
@@ -192,32 +203,47 @@ fn gated_bits(params: &VbaoParams, delta: Vec3, px: &PixelSetup, side: f32) -> u
 /// stored as XeGTAO's term with its edges. Background pixels get visibility 1 (as XeGTAO).
 #[inline]
 pub fn vbao_pixel(params: &VbaoParams, mips: &[f32], normals: &[u32], p: UVec2) -> GtaoPixel {
-    let g = &params.gtao;
-    let (packed, valid, px) = pixel_setup(g, mips, normals, p);
+    let (packed, valid, px) = pixel_setup(&params.gtao, mips, normals, p);
+    let vis = if valid { vbao_visibility(params, mips, &px) } else { 1.0 };
+    GtaoPixel { term: vbao_term(params, valid, vis), edges: packed }
+}
+
+/// The stored term of a pixel from its averaged visibility (spec vbao §4): the final power and
+/// the 0.03 clamp; background (`valid` false) is visible.
+#[inline]
+pub fn vbao_term(params: &VbaoParams, valid: bool, vis: f32) -> u32 {
     if !valid {
-        return GtaoPixel { term: store_term(1.0), edges: packed };
+        return store_term(1.0);
     }
+    store_term(final_visibility(vis, params.gtao.final_value_power))
+}
+
+/// The average over the slices of their masks' visibility under the chosen weighting (spec
+/// vbao §2–§4), of one pixel or of `L::LANES` pixels.
+#[inline]
+pub fn vbao_visibility<L: Lanes>(params: &VbaoParams, mips: &[f32], px: &PixelSetup<L>) -> L {
+    let g = &params.gtao;
+    let zero = L::splat(0.0);
     let slices = g.slices.max(1);
-    let (mut sum, mut weights) = (0.0, 0.0);
+    let (mut sum, mut weights) = (zero, zero);
     let mut s = 0;
     while s < slices {
-        let mut sl = slice_frame(g, &px, s);
+        let mut sl = slice_frame(g, px, s);
         // γ with the exact acos: the fast one errs up to 0.055 rad (0.56 sector), which sets
         // sectors on a plane (spec vbao §2.3, artefact 1 of §5).
         sl.gamma = sl.sign * sl.cos_n.acos();
-        let mask = slice_mask(params, mips, &px, &sl, s);
+        let mask = slice_mask(params, mips, px, &sl, s);
         if params.weighting == WEIGHT_COSINE_EXACT {
-            sum += projected_length_fudge(sl.len) * free_cosine_weight(mask, sl.gamma, sl.cos_n);
-            weights += 1.0;
+            sum = sum + projected_length_fudge(sl.len) * free_cosine_weight(mask, sl.gamma, sl.cos_n);
+            weights = weights + 1.0;
         } else if params.weighting == WEIGHT_COSINE_BLENDER {
-            sum += sl.len * blender_visibility(mask);
-            weights += sl.len;
+            sum = sum + sl.len * blender_visibility::<L>(mask);
+            weights = weights + sl.len;
         } else {
-            sum += 1.0 - mask.count_ones() as f32 / SECTORS as f32;
-            weights += 1.0;
+            sum = sum + (-(set_sectors::<L>(mask, u32::MAX) / SECTORS as f32) + 1.0);
+            weights = weights + 1.0;
         }
         s += 1;
     }
-    let vis = if weights > 0.0 { sum / weights } else { 1.0 };
-    GtaoPixel { term: store_term(final_visibility(vis, g.final_value_power)), edges: packed }
+    L::select(weights.gt(zero), sum / weights, L::splat(1.0))
 }
