@@ -112,6 +112,10 @@ pub trait Lanes:
     fn gather_index(data: &[f32], i: Self::Index) -> Self;
     /// The word `data[i]` in each lane.
     fn gather_word(data: &[u32], i: Self::Index) -> Self::Index;
+    /// `count` ones from bit `start` per lane, without any shift of 32 or more (undefined in
+    /// SPIR-V, a panic in debug Rust): 0 where `start` ≥ 32 or `count` = 0, every bit from
+    /// `start` where `count` ≥ 32.
+    fn index_bit_run(start: Self::Index, count: Self::Index) -> Self::Index;
     /// The index whose lane `k` is `f(k)`.
     fn index_from_lanes(f: impl Fn(usize) -> u32) -> Self::Index;
     /// Lane `k` of an index.
@@ -322,6 +326,14 @@ impl Lanes for f32 {
     #[inline]
     fn gather_word(data: &[u32], i: u32) -> u32 {
         data[i as usize]
+    }
+    #[inline]
+    fn index_bit_run(start: u32, count: u32) -> u32 {
+        if start >= 32 || count == 0 {
+            return 0;
+        }
+        let ones = if count >= 32 { 0xFFFF_FFFF } else { (1u32 << count) - 1 };
+        ones << start
     }
     #[inline]
     fn index_from_lanes(f: impl Fn(usize) -> u32) -> u32 {
@@ -621,6 +633,14 @@ mod x8 {
         #[inline(always)]
         fn index_offset_clamped(i: i32x8, d: i32, n: u32) -> i32x8 {
             (i + i32x8::splat(d)).max(i32x8::ZERO).min(i32x8::splat(n as i32 - 1))
+        }
+        /// AVX2's variable shifts give 0 for shifts of 32 or more, so `(1 ≪ count) − 1` is all
+        /// ones for count = 32.
+        #[inline(always)]
+        fn index_bit_run(start: i32x8, count: i32x8) -> i32x8 {
+            let one = i32x8::splat(1);
+            let ones = one.unbounded_shl(bytemuck::cast(count)) - one;
+            ones.unbounded_shl(bytemuck::cast(start))
         }
         #[inline(always)]
         fn index_from_lanes(f: impl Fn(usize) -> u32) -> i32x8 {

@@ -30,8 +30,8 @@ pub fn sector_bits(lo: f32, hi: f32, rule: u32) -> u32 {
     sector_bits_lanes::<f32>(lo, hi, rule)
 }
 
-/// [`sector_bits`] per lane: start and count as whole floats (exact up to N), the bit run per
-/// lane.
+/// [`sector_bits`] per lane: start and count as whole floats (exact up to N), then the run of
+/// bits ([`Lanes::index_bit_run`]: shifts of 32 or more give 0).
 #[inline]
 pub fn sector_bits_lanes<L: Lanes>(lo: L, hi: L, rule: u32) -> L::Index {
     let n = SECTORS as f32;
@@ -42,18 +42,8 @@ pub fn sector_bits_lanes<L: Lanes>(lo: L, hi: L, rule: u32) -> L::Index {
     } else {
         ceil((hi - lo) * n)
     };
-    L::index_from_lanes(move |i| bit_run(start.lane(i) as u32, count.lane(i) as u32))
-}
-
-/// `count` ones starting at bit `start`, without any shift of 32 or more (undefined in SPIR-V,
-/// a panic in debug Rust; spec vbao §3).
-#[inline]
-fn bit_run(start: u32, count: u32) -> u32 {
-    if start >= SECTORS || count == 0 {
-        return 0;
-    }
-    let ones = if count >= SECTORS { 0xFFFF_FFFF } else { (1u32 << count) - 1 };
-    ones << start
+    let whole = L::index_splat(SECTORS + 1);
+    L::index_bit_run(start.floor_index(whole), count.floor_index(whole))
 }
 
 /// [aokit] Samples within this angle (radians) of the hemisphere's edge count as on it: every
