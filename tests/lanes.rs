@@ -1,9 +1,10 @@
 //! The CPU's eight-lane drivers (issue 14: SIMD across pixels, `aokit_shaders::common::lanes`)
 //! against the same kernels run one pixel at a time, as the GPU runs them. Where the lanes use
 //! only IEEE-exact operations (add, mul, div, sqrt, compares) the two must agree bit for bit:
-//! VAO, SVAO pass 1 and the ray march. The blur's weights and XeGTAO's slices use `wide`'s
-//! exp2/sin/cos/ln polynomials, a few ulp from libm's: the blur agrees within 1e-6, XeGTAO's
-//! 8-bit terms may differ by one step in a few pixels; its denoiser agrees bit for bit.
+//! VAO, SVAO pass 1, the ray march and XeGTAO's denoiser. The blur's weights, XeGTAO's slices
+//! and VBAO's sectors use `wide`'s exp2/sin/cos/acos/ln polynomials, a few ulp from libm's: the
+//! blur agrees within 1e-6, XeGTAO's and VBAO's 8-bit terms may differ by one step in a few
+//! pixels.
 
 mod common;
 
