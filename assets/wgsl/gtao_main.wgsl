@@ -15,7 +15,7 @@ struct type_10 {
     member: array<u32>,
 }
 
-struct type_19 {
+struct type_20 {
     member: type_5,
     member_1: f32,
     member_2: f32,
@@ -33,11 +33,11 @@ struct type_19 {
     member_14: u32,
 }
 
-struct type_20 {
-    member: type_19,
+struct type_21 {
+    member: type_20,
 }
 
-struct type_22 {
+struct type_23 {
     member: f32,
     member_1: vec3<f32>,
 }
@@ -46,7 +46,7 @@ var<private> id_1: vec3<u32>;
 @group(0) @binding(1) 
 var<storage> normals: type_10;
 @group(0) @binding(4) 
-var<uniform> params: type_20;
+var<uniform> params: type_21;
 @group(0) @binding(0) 
 var<storage> mips: type_7;
 @group(0) @binding(2) 
@@ -55,167 +55,174 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_254_: i32;
-    var phi_273_: i32;
-    var phi_313_: i32;
-    var phi_332_: i32;
+    var phi_293_: i32;
+    var phi_312_: i32;
+    var phi_353_: i32;
     var phi_372_: i32;
-    var phi_391_: i32;
-    var phi_431_: i32;
-    var phi_450_: i32;
-    var phi_2042_: f32;
-    var phi_2046_: f32;
-    var phi_2047_: bool;
-    var phi_2085_: f32;
-    var phi_2089_: f32;
-    var phi_2090_: bool;
-    var phi_2128_: f32;
-    var phi_2132_: f32;
-    var phi_2133_: bool;
-    var phi_2171_: f32;
-    var phi_2175_: f32;
-    var phi_2176_: bool;
-    var phi_2199_: bool;
-    var phi_2214_: bool;
-    var phi_667_: vec2<f32>;
-    var phi_695_: vec3<f32>;
-    var phi_716_: u32;
-    var phi_719_: u32;
-    var phi_721_: u32;
-    var phi_723_: u32;
-    var phi_752_: u32;
-    var phi_753_: u32;
-    var phi_754_: u32;
-    var phi_755_: u32;
-    var phi_717_: u32;
-    var phi_720_: u32;
-    var phi_722_: u32;
-    var phi_724_: u32;
+    var phi_413_: i32;
+    var phi_432_: i32;
+    var phi_473_: i32;
+    var phi_492_: i32;
+    var phi_2119_: bool;
+    var phi_2134_: bool;
+    var phi_2149_: bool;
+    var phi_2164_: bool;
+    var phi_2195_: f32;
+    var phi_2199_: f32;
+    var phi_2200_: bool;
+    var phi_2222_: u32;
+    var phi_2249_: f32;
+    var phi_2253_: f32;
+    var phi_2254_: bool;
+    var phi_2276_: u32;
+    var phi_2303_: f32;
+    var phi_2307_: f32;
+    var phi_2308_: bool;
+    var phi_2330_: u32;
+    var phi_2357_: f32;
+    var phi_2361_: f32;
+    var phi_2362_: bool;
+    var phi_2384_: u32;
+    var phi_2464_: bool;
+    var phi_2479_: bool;
+    var phi_2439_: vec2<f32>;
+    var phi_2496_: u32;
+    var phi_2497_: u32;
+    var phi_2498_: u32;
+    var phi_2499_: u32;
+    var phi_2522_: u32;
+    var phi_2523_: u32;
+    var phi_2526_: u32;
+    var phi_2527_: u32;
+    var phi_2531_: u32;
+    var phi_2532_: u32;
+    var phi_2533_: u32;
+    var phi_2534_: u32;
     var local: u32;
-    var phi_2518_: bool;
-    var phi_820_: u32;
-    var phi_823_: vec3<f32>;
-    var phi_825_: f32;
-    var phi_996_: u32;
-    var phi_999_: f32;
-    var phi_1001_: f32;
-    var phi_1055_: f32;
-    var phi_1100_: f32;
-    var phi_1102_: f32;
-    var phi_1103_: bool;
-    var phi_1126_: f32;
-    var phi_1128_: f32;
-    var phi_1129_: bool;
-    var phi_1162_: u32;
-    var phi_1165_: f32;
-    var phi_1167_: f32;
-    var phi_1169_: u32;
-    var phi_1171_: u32;
-    var phi_1173_: u32;
-    var phi_1206_: u32;
-    var phi_1209_: u32;
-    var phi_1207_: u32;
-    var phi_1210_: u32;
+    var phi_2868_: bool;
+    var phi_767_: u32;
+    var phi_770_: vec3<f32>;
+    var phi_772_: f32;
+    var phi_943_: u32;
+    var phi_946_: f32;
+    var phi_948_: f32;
+    var phi_1002_: f32;
+    var phi_1047_: f32;
+    var phi_1049_: f32;
+    var phi_1050_: bool;
+    var phi_1073_: f32;
+    var phi_1075_: f32;
+    var phi_1076_: bool;
+    var phi_1109_: u32;
+    var phi_1112_: f32;
+    var phi_1114_: f32;
+    var phi_1116_: u32;
+    var phi_1118_: u32;
+    var phi_1120_: u32;
+    var phi_1153_: u32;
+    var phi_1156_: u32;
+    var phi_1154_: u32;
+    var phi_1157_: u32;
     var local_1: u32;
-    var phi_1163_: u32;
-    var phi_1166_: f32;
-    var phi_1168_: f32;
-    var phi_1170_: u32;
-    var phi_1172_: u32;
-    var phi_1174_: u32;
+    var phi_1110_: u32;
+    var phi_1113_: f32;
+    var phi_1115_: f32;
+    var phi_1117_: u32;
+    var phi_1119_: u32;
+    var phi_1121_: u32;
     var local_2: f32;
     var local_3: u32;
-    var phi_1267_: u32;
+    var phi_1214_: u32;
     var local_4: f32;
     var local_5: u32;
-    var phi_1286_: u32;
+    var phi_1233_: u32;
     var local_6: u32;
     var local_7: u32;
-    var phi_1330_: u32;
-    var phi_1333_: f32;
-    var phi_1335_: f32;
-    var phi_1337_: u32;
-    var phi_1339_: u32;
-    var phi_1341_: u32;
-    var phi_1374_: u32;
-    var phi_1377_: u32;
-    var phi_1375_: u32;
-    var phi_1378_: u32;
+    var phi_1277_: u32;
+    var phi_1280_: f32;
+    var phi_1282_: f32;
+    var phi_1284_: u32;
+    var phi_1286_: u32;
+    var phi_1288_: u32;
+    var phi_1321_: u32;
+    var phi_1324_: u32;
+    var phi_1322_: u32;
+    var phi_1325_: u32;
     var local_8: u32;
-    var phi_1331_: u32;
-    var phi_1334_: f32;
-    var phi_1336_: f32;
-    var phi_1338_: u32;
-    var phi_1340_: u32;
-    var phi_1342_: u32;
+    var phi_1278_: u32;
+    var phi_1281_: f32;
+    var phi_1283_: f32;
+    var phi_1285_: u32;
+    var phi_1287_: u32;
+    var phi_1289_: u32;
     var local_9: f32;
     var local_10: u32;
-    var phi_1435_: u32;
+    var phi_1382_: u32;
     var local_11: f32;
     var local_12: u32;
-    var phi_1454_: u32;
+    var phi_1401_: u32;
     var local_13: u32;
     var local_14: u32;
-    var phi_1537_: f32;
-    var phi_1597_: f32;
-    var phi_2235_: bool;
-    var phi_2250_: bool;
-    var phi_997_: u32;
-    var phi_1000_: f32;
-    var phi_1002_: f32;
-    var phi_2450_: bool;
+    var phi_1484_: f32;
+    var phi_1544_: f32;
+    var phi_2568_: bool;
+    var phi_2583_: bool;
+    var phi_944_: u32;
+    var phi_947_: f32;
+    var phi_949_: f32;
+    var phi_2800_: bool;
     var local_15: f32;
     var local_16: f32;
     var local_17: f32;
     var local_18: f32;
-    var phi_1816_: vec3<f32>;
-    var phi_2586_: bool;
-    var phi_821_: u32;
-    var phi_824_: vec3<f32>;
-    var phi_826_: f32;
-    var phi_2585_: bool;
+    var phi_1763_: vec3<f32>;
+    var phi_2950_: bool;
+    var phi_768_: u32;
+    var phi_771_: vec3<f32>;
+    var phi_773_: f32;
+    var phi_2949_: bool;
     var local_19: f32;
     var local_20: vec3<f32>;
-    var phi_1822_: type_22;
-    var phi_2277_: bool;
-    var phi_1877_: vec3<f32>;
-    var phi_1898_: u32;
-    var phi_1943_: u32;
+    var phi_1769_: type_23;
+    var phi_2610_: bool;
+    var phi_1824_: vec3<f32>;
+    var phi_1845_: u32;
+    var phi_1890_: u32;
 
     switch bitcast<i32>(0u) {
         default: {
             let _e84 = id_1;
-            let _e86 = arrayLength((&mips.member));
-            let _e97 = params.member.member.member[0u];
-            let _e102 = select(select(u32(_e97), 0u, (_e97 < 0f)), 4294967295u, (_e97 > 4294967000f));
-            let _e107 = params.member.member.member[1u];
-            let _e112 = select(select(u32(_e107), 0u, (_e107 < 0f)), 4294967295u, (_e107 > 4294967000f));
-            if (_e84.x >= _e102) {
+            let _e87 = arrayLength((&mips.member));
+            let _e98 = params.member.member.member[0u];
+            let _e103 = select(select(u32(_e98), 0u, (_e98 < 0f)), 4294967295u, (_e98 > 4294967000f));
+            let _e108 = params.member.member.member[1u];
+            let _e113 = select(select(u32(_e108), 0u, (_e108 < 0f)), 4294967295u, (_e108 > 4294967000f));
+            if (_e84.x >= _e103) {
             } else {
-                if (_e84.y >= _e112) {
+                if (_e84.y >= _e113) {
                 } else {
-                    let _e118 = ((_e84.y * _e102) + _e84.x);
-                    if (_e118 < _e86) {
+                    let _e119 = ((_e84.y * _e103) + _e84.x);
+                    if (_e119 < _e87) {
                     } else {
                         break;
                     }
-                    let _e122 = mips.member[_e118];
+                    let _e122 = mips.member[_e119];
                     let _e123 = bitcast<i32>(_e84.x);
                     let _e124 = (_e123 + -1i);
-                    let _e126 = (bitcast<i32>(_e102) - 1i);
+                    let _e126 = (bitcast<i32>(_e103) - 1i);
                     let _e127 = (0i <= _e126);
                     if _e127 {
                     } else {
                         break;
                     }
                     if (_e124 < 0i) {
-                        phi_254_ = 0i;
+                        phi_293_ = 0i;
                     } else {
-                        phi_254_ = select(_e124, _e126, (_e124 > _e126));
+                        phi_293_ = select(_e124, _e126, (_e124 > _e126));
                     }
-                    let _e132 = phi_254_;
+                    let _e132 = phi_293_;
                     let _e134 = bitcast<i32>(_e84.y);
-                    let _e136 = (bitcast<i32>(_e112) - 1i);
+                    let _e136 = (bitcast<i32>(_e113) - 1i);
                     let _e137 = (0i <= _e136);
                     if _e137 {
                     } else {
@@ -223,864 +230,914 @@ fn function_() {
                     }
                     let _e138 = (_e134 < 0i);
                     if _e138 {
-                        phi_273_ = 0i;
+                        phi_312_ = 0i;
                     } else {
-                        phi_273_ = select(_e134, _e136, (_e134 > _e136));
+                        phi_312_ = select(_e134, _e136, (_e134 > _e136));
                     }
-                    let _e142 = phi_273_;
-                    let _e145 = ((bitcast<u32>(_e142) * _e102) + bitcast<u32>(_e132));
-                    if (_e145 < _e86) {
+                    let _e142 = phi_312_;
+                    let _e145 = ((bitcast<u32>(_e142) * _e103) + bitcast<u32>(_e132));
+                    if (_e145 < _e87) {
                     } else {
                         break;
                     }
-                    let _e149 = mips.member[_e145];
-                    let _e150 = (_e123 + 1i);
+                    let _e148 = mips.member[_e145];
+                    let _e149 = (_e123 + 1i);
                     if _e127 {
                     } else {
                         break;
                     }
-                    if (_e150 < 0i) {
-                        phi_313_ = 0i;
+                    if (_e149 < 0i) {
+                        phi_353_ = 0i;
                     } else {
-                        phi_313_ = select(_e150, _e126, (_e150 > _e126));
+                        phi_353_ = select(_e149, _e126, (_e149 > _e126));
                     }
-                    let _e155 = phi_313_;
+                    let _e154 = phi_353_;
                     if _e137 {
                     } else {
                         break;
                     }
                     if _e138 {
-                        phi_332_ = 0i;
-                    } else {
-                        phi_332_ = select(_e134, _e136, (_e134 > _e136));
-                    }
-                    let _e160 = phi_332_;
-                    let _e163 = ((bitcast<u32>(_e160) * _e102) + bitcast<u32>(_e155));
-                    if (_e163 < _e86) {
-                    } else {
-                        break;
-                    }
-                    let _e167 = mips.member[_e163];
-                    if _e127 {
-                    } else {
-                        break;
-                    }
-                    let _e168 = (_e123 < 0i);
-                    if _e168 {
                         phi_372_ = 0i;
                     } else {
-                        phi_372_ = select(_e123, _e126, (_e123 > _e126));
+                        phi_372_ = select(_e134, _e136, (_e134 > _e136));
                     }
-                    let _e172 = phi_372_;
-                    let _e174 = (_e134 + -1i);
-                    if _e137 {
+                    let _e159 = phi_372_;
+                    let _e162 = ((bitcast<u32>(_e159) * _e103) + bitcast<u32>(_e154));
+                    if (_e162 < _e87) {
                     } else {
                         break;
                     }
-                    if (_e174 < 0i) {
-                        phi_391_ = 0i;
-                    } else {
-                        phi_391_ = select(_e174, _e136, (_e174 > _e136));
-                    }
-                    let _e179 = phi_391_;
-                    let _e182 = ((bitcast<u32>(_e179) * _e102) + bitcast<u32>(_e172));
-                    if (_e182 < _e86) {
-                    } else {
-                        break;
-                    }
-                    let _e186 = mips.member[_e182];
+                    let _e165 = mips.member[_e162];
                     if _e127 {
                     } else {
                         break;
                     }
-                    if _e168 {
-                        phi_431_ = 0i;
+                    let _e166 = (_e123 < 0i);
+                    if _e166 {
+                        phi_413_ = 0i;
                     } else {
-                        phi_431_ = select(_e123, _e126, (_e123 > _e126));
+                        phi_413_ = select(_e123, _e126, (_e123 > _e126));
                     }
-                    let _e190 = phi_431_;
-                    let _e192 = (_e134 + 1i);
+                    let _e170 = phi_413_;
+                    let _e172 = (_e134 + -1i);
                     if _e137 {
                     } else {
                         break;
                     }
-                    if (_e192 < 0i) {
-                        phi_450_ = 0i;
+                    if (_e172 < 0i) {
+                        phi_432_ = 0i;
                     } else {
-                        phi_450_ = select(_e192, _e136, (_e192 > _e136));
+                        phi_432_ = select(_e172, _e136, (_e172 > _e136));
                     }
-                    let _e197 = phi_450_;
-                    let _e200 = ((bitcast<u32>(_e197) * _e102) + bitcast<u32>(_e190));
-                    if (_e200 < _e86) {
-                    } else {
-                        break;
-                    }
-                    let _e204 = mips.member[_e200];
-                    let _e205 = (_e149 - _e122);
-                    let _e206 = (_e167 - _e122);
-                    let _e207 = (_e186 - _e122);
-                    let _e208 = (_e204 - _e122);
-                    let _e209 = (_e206 - _e205);
-                    let _e211 = (_e208 - _e207);
-                    let _e219 = abs(_e205);
-                    let _e220 = abs(_e206);
-                    let _e221 = abs(_e207);
-                    let _e222 = abs(_e208);
-                    let _e223 = abs((_e205 + (_e209 * 0.5f)));
-                    let _e224 = abs((_e206 + (_e209 * -0.5f)));
-                    let _e225 = abs((_e207 + (_e211 * 0.5f)));
-                    let _e226 = abs((_e208 + (_e211 * -0.5f)));
-                    let _e235 = (_e122 * 0.011f);
-                    let _e240 = (1.25f - (select(_e223, _e219, (_e219 < _e223)) / _e235));
-                    let _e244 = select(0f, select(1f, _e240, (_e240 < 1f)), (_e240 > 0f));
-                    let _e245 = (1.25f - (select(_e224, _e220, (_e220 < _e224)) / _e235));
-                    let _e249 = select(0f, select(1f, _e245, (_e245 < 1f)), (_e245 > 0f));
-                    let _e250 = (1.25f - (select(_e225, _e221, (_e221 < _e225)) / _e235));
-                    let _e254 = select(0f, select(1f, _e250, (_e250 < 1f)), (_e250 > 0f));
-                    let _e255 = (1.25f - (select(_e226, _e222, (_e222 < _e226)) / _e235));
-                    let _e259 = select(0f, select(1f, _e255, (_e255 < 1f)), (_e255 > 0f));
-                    let _e264 = (select(0f, select(1f, _e244, (_e244 < 1f)), (_e244 > 0f)) * 2.9f);
-                    let _e266 = floor((_e264 + 0.5f));
-                    if ((_e266 - _e264) == 0.5f) {
-                        let _e272 = ((floor((_e266 * 0.5f)) * 2f) != _e266);
-                        if _e272 {
-                            phi_2042_ = (_e266 - 1f);
-                        } else {
-                            phi_2042_ = f32();
-                        }
-                        let _e275 = phi_2042_;
-                        phi_2046_ = _e275;
-                        phi_2047_ = select(true, false, _e272);
-                    } else {
-                        phi_2046_ = f32();
-                        phi_2047_ = true;
-                    }
-                    let _e278 = phi_2046_;
-                    let _e280 = phi_2047_;
-                    let _e281 = select(_e278, _e266, _e280);
-                    let _e292 = (select(0f, select(1f, _e249, (_e249 < 1f)), (_e249 > 0f)) * 2.9f);
-                    let _e294 = floor((_e292 + 0.5f));
-                    if ((_e294 - _e292) == 0.5f) {
-                        let _e300 = ((floor((_e294 * 0.5f)) * 2f) != _e294);
-                        if _e300 {
-                            phi_2085_ = (_e294 - 1f);
-                        } else {
-                            phi_2085_ = f32();
-                        }
-                        let _e303 = phi_2085_;
-                        phi_2089_ = _e303;
-                        phi_2090_ = select(true, false, _e300);
-                    } else {
-                        phi_2089_ = f32();
-                        phi_2090_ = true;
-                    }
-                    let _e306 = phi_2089_;
-                    let _e308 = phi_2090_;
-                    let _e309 = select(_e306, _e294, _e308);
-                    let _e321 = (select(0f, select(1f, _e254, (_e254 < 1f)), (_e254 > 0f)) * 2.9f);
-                    let _e323 = floor((_e321 + 0.5f));
-                    if ((_e323 - _e321) == 0.5f) {
-                        let _e329 = ((floor((_e323 * 0.5f)) * 2f) != _e323);
-                        if _e329 {
-                            phi_2128_ = (_e323 - 1f);
-                        } else {
-                            phi_2128_ = f32();
-                        }
-                        let _e332 = phi_2128_;
-                        phi_2132_ = _e332;
-                        phi_2133_ = select(true, false, _e329);
-                    } else {
-                        phi_2132_ = f32();
-                        phi_2133_ = true;
-                    }
-                    let _e335 = phi_2132_;
-                    let _e337 = phi_2133_;
-                    let _e338 = select(_e335, _e323, _e337);
-                    let _e350 = (select(0f, select(1f, _e259, (_e259 < 1f)), (_e259 > 0f)) * 2.9f);
-                    let _e352 = floor((_e350 + 0.5f));
-                    if ((_e352 - _e350) == 0.5f) {
-                        let _e358 = ((floor((_e352 * 0.5f)) * 2f) != _e352);
-                        if _e358 {
-                            phi_2171_ = (_e352 - 1f);
-                        } else {
-                            phi_2171_ = f32();
-                        }
-                        let _e361 = phi_2171_;
-                        phi_2175_ = _e361;
-                        phi_2176_ = select(true, false, _e358);
-                    } else {
-                        phi_2175_ = f32();
-                        phi_2176_ = true;
-                    }
-                    let _e364 = phi_2175_;
-                    let _e366 = phi_2176_;
-                    let _e367 = select(_e364, _e352, _e366);
-                    let _e376 = ((f32(_e84.x) + 0.5f) / _e97);
-                    let _e379 = ((f32(_e84.y) + 0.5f) / _e107);
-                    let _e380 = (_e122 * 0.99999f);
-                    let _e387 = params.member.member.member_1[0u];
-                    let _e389 = ((((_e376 * 2f) - 1f) * _e387) * _e380);
-                    let _e396 = params.member.member.member_1[1u];
-                    let _e398 = ((((_e379 * -2f) + 1f) * _e396) * _e380);
-                    let _e399 = -(_e389);
-                    let _e400 = -(_e398);
-                    let _e401 = (_e122 * -0.99999f);
-                    let _e408 = (1f / sqrt((((_e399 * _e399) + (_e400 * _e400)) + (_e401 * _e401))));
-                    let _e409 = (_e399 * _e408);
-                    let _e410 = (_e400 * _e408);
-                    let _e411 = (_e401 * _e408);
-                    if (_e118 < arrayLength((&normals.member))) {
+                    let _e177 = phi_432_;
+                    let _e180 = ((bitcast<u32>(_e177) * _e103) + bitcast<u32>(_e170));
+                    if (_e180 < _e87) {
                     } else {
                         break;
                     }
-                    let _e415 = normals.member[_e118];
-                    let _e423 = (f32((bitcast<i32>(((_e415 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e423 != _e423) {
-                        phi_2199_ = true;
+                    let _e183 = mips.member[_e180];
+                    if _e127 {
                     } else {
-                        phi_2199_ = (-1f >= _e423);
+                        break;
                     }
-                    let _e427 = phi_2199_;
-                    let _e428 = select(_e423, -1f, _e427);
-                    let _e438 = (f32((bitcast<i32>((((_e415 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e438 != _e438) {
-                        phi_2214_ = true;
+                    if _e166 {
+                        phi_473_ = 0i;
                     } else {
-                        phi_2214_ = (-1f >= _e438);
+                        phi_473_ = select(_e123, _e126, (_e123 > _e126));
                     }
-                    let _e442 = phi_2214_;
-                    let _e443 = select(_e438, -1f, _e442);
-                    let _e446 = (1f - abs(_e428));
-                    let _e447 = abs(_e443);
-                    let _e448 = (_e446 - _e447);
-                    if (_e448 < 0f) {
-                        phi_667_ = vec2<f32>(((1f - _e447) * select(1f, -1f, (_e428 < 0f))), (_e446 * select(1f, -1f, (_e443 < 0f))));
+                    let _e187 = phi_473_;
+                    let _e189 = (_e134 + 1i);
+                    if _e137 {
                     } else {
-                        phi_667_ = vec2<f32>(_e428, _e443);
+                        break;
                     }
-                    let _e459 = phi_667_;
-                    let _e468 = (1f / sqrt((((_e459.x * _e459.x) + (_e459.y * _e459.y)) + (_e448 * _e448))));
-                    let _e469 = (_e459.x * _e468);
-                    let _e470 = (_e459.y * _e468);
-                    let _e471 = (_e448 * _e468);
-                    let _e472 = -(_e471);
-                    if ((((_e469 * _e409) + (_e470 * _e410)) + (_e472 * _e411)) < 0f) {
-                        phi_695_ = vec3<f32>(-(_e469), -(_e470), _e471);
+                    if (_e189 < 0i) {
+                        phi_492_ = 0i;
                     } else {
-                        phi_695_ = vec3<f32>(_e469, _e470, _e472);
+                        phi_492_ = select(_e189, _e136, (_e189 > _e136));
                     }
-                    let _e484 = phi_695_;
-                    let _e487 = params.member.member_1;
-                    let _e490 = params.member.member_2;
-                    let _e491 = (_e487 * _e490);
-                    let _e495 = (_e491 / (((_e122 * 1.99998f) * _e387) / _e97));
-                    let _e499 = params.member.member_11;
-                    phi_716_ = (_e84.y & 63u);
-                    phi_719_ = (_e84.x & 63u);
-                    phi_721_ = 32u;
-                    phi_723_ = 0u;
+                    let _e194 = phi_492_;
+                    let _e197 = ((bitcast<u32>(_e194) * _e103) + bitcast<u32>(_e187));
+                    if (_e197 < _e87) {
+                    } else {
+                        break;
+                    }
+                    let _e200 = mips.member[_e197];
+                    let _e201 = (_e148 - _e122);
+                    let _e202 = (_e165 - _e122);
+                    let _e203 = (_e183 - _e122);
+                    let _e204 = (_e200 - _e122);
+                    let _e206 = ((_e202 - _e201) * 0.5f);
+                    let _e208 = ((_e204 - _e203) * 0.5f);
+                    let _e209 = (_e122 * 0.011f);
+                    let _e211 = abs(_e201);
+                    let _e212 = abs((_e201 + _e206));
+                    if (_e211 != _e211) {
+                        phi_2119_ = true;
+                    } else {
+                        phi_2119_ = (_e212 <= _e211);
+                    }
+                    let _e216 = phi_2119_;
+                    let _e219 = (1.25f - (select(_e211, _e212, _e216) / _e209));
+                    let _e223 = select(0f, select(1f, _e219, (_e219 < 1f)), (_e219 > 0f));
+                    let _e225 = abs(_e202);
+                    let _e226 = abs((_e202 - _e206));
+                    if (_e225 != _e225) {
+                        phi_2134_ = true;
+                    } else {
+                        phi_2134_ = (_e226 <= _e225);
+                    }
+                    let _e230 = phi_2134_;
+                    let _e233 = (1.25f - (select(_e225, _e226, _e230) / _e209));
+                    let _e237 = select(0f, select(1f, _e233, (_e233 < 1f)), (_e233 > 0f));
+                    let _e239 = abs(_e203);
+                    let _e240 = abs((_e203 + _e208));
+                    if (_e239 != _e239) {
+                        phi_2149_ = true;
+                    } else {
+                        phi_2149_ = (_e240 <= _e239);
+                    }
+                    let _e244 = phi_2149_;
+                    let _e247 = (1.25f - (select(_e239, _e240, _e244) / _e209));
+                    let _e251 = select(0f, select(1f, _e247, (_e247 < 1f)), (_e247 > 0f));
+                    let _e253 = abs(_e204);
+                    let _e254 = abs((_e204 - _e208));
+                    if (_e253 != _e253) {
+                        phi_2164_ = true;
+                    } else {
+                        phi_2164_ = (_e254 <= _e253);
+                    }
+                    let _e258 = phi_2164_;
+                    let _e261 = (1.25f - (select(_e253, _e254, _e258) / _e209));
+                    let _e265 = select(0f, select(1f, _e261, (_e261 < 1f)), (_e261 > 0f));
+                    let _e270 = (select(0f, select(1f, _e223, (_e223 < 1f)), (_e223 > 0f)) * 2.9f);
+                    let _e272 = floor((_e270 + 0.5f));
+                    if ((_e272 - _e270) == 0.5f) {
+                        let _e278 = ((floor((_e272 * 0.5f)) * 2f) != _e272);
+                        if _e278 {
+                            phi_2195_ = (_e272 - 1f);
+                        } else {
+                            phi_2195_ = f32();
+                        }
+                        let _e281 = phi_2195_;
+                        phi_2199_ = _e281;
+                        phi_2200_ = select(true, false, _e278);
+                    } else {
+                        phi_2199_ = f32();
+                        phi_2200_ = true;
+                    }
+                    let _e284 = phi_2199_;
+                    let _e286 = phi_2200_;
+                    let _e287 = select(_e284, _e272, _e286);
+                    if (_e287 > 0f) {
+                        let _e293 = select(select(u32(_e287), 0u, (_e287 < 0f)), 4294967295u, (_e287 > 4294967000f));
+                        phi_2222_ = select(_e293, 3u, (3u < _e293));
+                    } else {
+                        phi_2222_ = 0u;
+                    }
+                    let _e297 = phi_2222_;
+                    let _e303 = (select(0f, select(1f, _e237, (_e237 < 1f)), (_e237 > 0f)) * 2.9f);
+                    let _e305 = floor((_e303 + 0.5f));
+                    if ((_e305 - _e303) == 0.5f) {
+                        let _e311 = ((floor((_e305 * 0.5f)) * 2f) != _e305);
+                        if _e311 {
+                            phi_2249_ = (_e305 - 1f);
+                        } else {
+                            phi_2249_ = f32();
+                        }
+                        let _e314 = phi_2249_;
+                        phi_2253_ = _e314;
+                        phi_2254_ = select(true, false, _e311);
+                    } else {
+                        phi_2253_ = f32();
+                        phi_2254_ = true;
+                    }
+                    let _e317 = phi_2253_;
+                    let _e319 = phi_2254_;
+                    let _e320 = select(_e317, _e305, _e319);
+                    if (_e320 > 0f) {
+                        let _e326 = select(select(u32(_e320), 0u, (_e320 < 0f)), 4294967295u, (_e320 > 4294967000f));
+                        phi_2276_ = select(_e326, 3u, (3u < _e326));
+                    } else {
+                        phi_2276_ = 0u;
+                    }
+                    let _e330 = phi_2276_;
+                    let _e337 = (select(0f, select(1f, _e251, (_e251 < 1f)), (_e251 > 0f)) * 2.9f);
+                    let _e339 = floor((_e337 + 0.5f));
+                    if ((_e339 - _e337) == 0.5f) {
+                        let _e345 = ((floor((_e339 * 0.5f)) * 2f) != _e339);
+                        if _e345 {
+                            phi_2303_ = (_e339 - 1f);
+                        } else {
+                            phi_2303_ = f32();
+                        }
+                        let _e348 = phi_2303_;
+                        phi_2307_ = _e348;
+                        phi_2308_ = select(true, false, _e345);
+                    } else {
+                        phi_2307_ = f32();
+                        phi_2308_ = true;
+                    }
+                    let _e351 = phi_2307_;
+                    let _e353 = phi_2308_;
+                    let _e354 = select(_e351, _e339, _e353);
+                    if (_e354 > 0f) {
+                        let _e360 = select(select(u32(_e354), 0u, (_e354 < 0f)), 4294967295u, (_e354 > 4294967000f));
+                        phi_2330_ = select(_e360, 3u, (3u < _e360));
+                    } else {
+                        phi_2330_ = 0u;
+                    }
+                    let _e364 = phi_2330_;
+                    let _e371 = (select(0f, select(1f, _e265, (_e265 < 1f)), (_e265 > 0f)) * 2.9f);
+                    let _e373 = floor((_e371 + 0.5f));
+                    if ((_e373 - _e371) == 0.5f) {
+                        let _e379 = ((floor((_e373 * 0.5f)) * 2f) != _e373);
+                        if _e379 {
+                            phi_2357_ = (_e373 - 1f);
+                        } else {
+                            phi_2357_ = f32();
+                        }
+                        let _e382 = phi_2357_;
+                        phi_2361_ = _e382;
+                        phi_2362_ = select(true, false, _e379);
+                    } else {
+                        phi_2361_ = f32();
+                        phi_2362_ = true;
+                    }
+                    let _e385 = phi_2361_;
+                    let _e387 = phi_2362_;
+                    let _e388 = select(_e385, _e373, _e387);
+                    if (_e388 > 0f) {
+                        let _e394 = select(select(u32(_e388), 0u, (_e388 < 0f)), 4294967295u, (_e388 > 4294967000f));
+                        phi_2384_ = select(_e394, 3u, (3u < _e394));
+                    } else {
+                        phi_2384_ = 0u;
+                    }
+                    let _e398 = phi_2384_;
+                    let _e402 = ((f32(_e84.x) + 0.5f) / _e98);
+                    let _e405 = ((f32(_e84.y) + 0.5f) / _e108);
+                    let _e406 = (_e122 * 0.99999f);
+                    let _e413 = params.member.member.member_1[0u];
+                    let _e415 = ((((_e402 * 2f) - 1f) * _e413) * _e406);
+                    let _e422 = params.member.member.member_1[1u];
+                    let _e424 = ((((_e405 * -2f) + 1f) * _e422) * _e406);
+                    let _e425 = -(_e415);
+                    let _e426 = -(_e424);
+                    let _e427 = (_e122 * -0.99999f);
+                    let _e434 = (1f / sqrt((((_e425 * _e425) + (_e426 * _e426)) + (_e427 * _e427))));
+                    let _e435 = (_e425 * _e434);
+                    let _e436 = (_e426 * _e434);
+                    let _e437 = (_e427 * _e434);
+                    if (_e119 < arrayLength((&normals.member))) {
+                    } else {
+                        break;
+                    }
+                    let _e441 = normals.member[_e119];
+                    let _e449 = (f32((bitcast<i32>(((_e441 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e449 != _e449) {
+                        phi_2464_ = true;
+                    } else {
+                        phi_2464_ = (-1f >= _e449);
+                    }
+                    let _e453 = phi_2464_;
+                    let _e454 = select(_e449, -1f, _e453);
+                    let _e464 = (f32((bitcast<i32>((((_e441 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e464 != _e464) {
+                        phi_2479_ = true;
+                    } else {
+                        phi_2479_ = (-1f >= _e464);
+                    }
+                    let _e468 = phi_2479_;
+                    let _e469 = select(_e464, -1f, _e468);
+                    let _e472 = (1f - abs(_e454));
+                    let _e473 = abs(_e469);
+                    let _e474 = (_e472 - _e473);
+                    if (_e474 < 0f) {
+                        phi_2439_ = vec2<f32>(((1f - _e473) * select(1f, -1f, (_e454 < 0f))), (_e472 * select(1f, -1f, (_e469 < 0f))));
+                    } else {
+                        phi_2439_ = vec2<f32>(_e454, _e469);
+                    }
+                    let _e485 = phi_2439_;
+                    let _e494 = (1f / sqrt((((_e485.x * _e485.x) + (_e485.y * _e485.y)) + (_e474 * _e474))));
+                    let _e495 = (_e485.x * _e494);
+                    let _e496 = (_e485.y * _e494);
+                    let _e497 = (_e474 * _e494);
+                    let _e498 = -(_e497);
+                    let _e504 = ((((_e495 * _e435) + (_e496 * _e436)) + (_e498 * _e437)) < 0f);
+                    let _e506 = select(_e495, -(_e495), _e504);
+                    let _e508 = select(_e496, -(_e496), _e504);
+                    let _e509 = select(_e498, _e497, _e504);
+                    let _e513 = params.member.member_1;
+                    let _e516 = params.member.member_2;
+                    let _e517 = (_e513 * _e516);
+                    let _e521 = (_e517 / (((_e122 * 1.99998f) * _e413) / _e98));
+                    let _e525 = params.member.member_11;
+                    phi_2496_ = (_e84.y & 63u);
+                    phi_2497_ = (_e84.x & 63u);
+                    phi_2498_ = 32u;
+                    phi_2499_ = 0u;
                     loop {
-                        let _e503 = phi_716_;
-                        let _e505 = phi_719_;
-                        let _e507 = phi_721_;
-                        let _e509 = phi_723_;
-                        local = _e509;
-                        let _e510 = (_e507 > 0u);
-                        if _e510 {
-                            let _e513 = select(0u, 1u, ((_e505 & _e507) != 0u));
-                            let _e516 = select(0u, 1u, ((_e503 & _e507) != 0u));
-                            if (_e516 == 0u) {
-                                if (_e513 == 1u) {
-                                    phi_752_ = (63u - _e503);
-                                    phi_753_ = (63u - _e505);
+                        let _e529 = phi_2496_;
+                        let _e531 = phi_2497_;
+                        let _e533 = phi_2498_;
+                        let _e535 = phi_2499_;
+                        local = _e535;
+                        let _e536 = (_e533 > 0u);
+                        if _e536 {
+                            let _e539 = select(0u, 1u, ((_e531 & _e533) != 0u));
+                            let _e542 = select(0u, 1u, ((_e529 & _e533) != 0u));
+                            if (_e542 == 0u) {
+                                if (_e539 == 1u) {
+                                    phi_2522_ = (63u - _e529);
+                                    phi_2523_ = (63u - _e531);
                                 } else {
-                                    phi_752_ = _e503;
-                                    phi_753_ = _e505;
+                                    phi_2522_ = _e529;
+                                    phi_2523_ = _e531;
                                 }
-                                let _e527 = phi_752_;
-                                let _e529 = phi_753_;
-                                phi_754_ = _e529;
-                                phi_755_ = _e527;
+                                let _e553 = phi_2522_;
+                                let _e555 = phi_2523_;
+                                phi_2526_ = _e555;
+                                phi_2527_ = _e553;
                             } else {
-                                phi_754_ = _e503;
-                                phi_755_ = _e505;
+                                phi_2526_ = _e529;
+                                phi_2527_ = _e531;
                             }
-                            let _e531 = phi_754_;
-                            let _e533 = phi_755_;
-                            phi_717_ = _e531;
-                            phi_720_ = _e533;
-                            phi_722_ = (_e507 / 2u);
-                            phi_724_ = (_e509 + ((_e507 * _e507) * ((3u * _e513) ^ _e516)));
+                            let _e557 = phi_2526_;
+                            let _e559 = phi_2527_;
+                            phi_2531_ = _e557;
+                            phi_2532_ = _e559;
+                            phi_2533_ = (_e533 / 2u);
+                            phi_2534_ = (_e535 + ((_e533 * _e533) * ((3u * _e539) ^ _e542)));
                         } else {
-                            phi_717_ = u32();
-                            phi_720_ = u32();
-                            phi_722_ = u32();
-                            phi_724_ = u32();
+                            phi_2531_ = u32();
+                            phi_2532_ = u32();
+                            phi_2533_ = u32();
+                            phi_2534_ = u32();
                         }
-                        let _e536 = phi_717_;
-                        let _e538 = phi_720_;
-                        let _e540 = phi_722_;
-                        let _e542 = phi_724_;
+                        let _e562 = phi_2531_;
+                        let _e564 = phi_2532_;
+                        let _e566 = phi_2533_;
+                        let _e568 = phi_2534_;
                         continue;
                         continuing {
-                            phi_716_ = _e536;
-                            phi_719_ = _e538;
-                            phi_721_ = _e540;
-                            phi_723_ = _e542;
-                            break if !(_e510);
+                            phi_2496_ = _e562;
+                            phi_2497_ = _e564;
+                            phi_2498_ = _e566;
+                            phi_2499_ = _e568;
+                            break if !(_e536);
                         }
                     }
-                    let _e547 = local;
-                    let _e549 = f32((_e547 + (288u * (_e499 % 64u))));
-                    let _e551 = (0.5f + (_e549 * 0.7548777f));
-                    let _e555 = (0.5f + (_e549 * 0.5698403f));
-                    let _e561 = params.member.member.member_3;
-                    let _e564 = select(false, (_e122 < _e561), (_e122 > 0f));
-                    if _e564 {
-                        let _e567 = params.member.member_3;
-                        let _e568 = (_e567 * _e491);
-                        let _e570 = ((10f - _e495) * 0.01f);
-                        let _e578 = params.member.member_8;
-                        let _e580 = select(1u, _e578, (1u < _e578));
-                        phi_2518_ = false;
-                        phi_820_ = 0u;
-                        phi_823_ = vec3<f32>(0f, 0f, 0f);
-                        phi_825_ = (select(0f, select(1f, _e570, (_e570 < 1f)), (_e570 > 0f)) * 0.5f);
+                    let _e573 = local;
+                    let _e575 = f32((_e573 + (288u * (_e525 % 64u))));
+                    let _e577 = (0.5f + (_e575 * 0.7548777f));
+                    let _e581 = (0.5f + (_e575 * 0.5698403f));
+                    let _e587 = params.member.member.member_3;
+                    let _e590 = select(false, (_e122 < _e587), (_e122 > 0f));
+                    if _e590 {
+                        let _e593 = params.member.member_3;
+                        let _e594 = (_e593 * _e517);
+                        let _e596 = ((10f - _e521) * 0.01f);
+                        let _e604 = params.member.member_8;
+                        let _e606 = select(1u, _e604, (1u < _e604));
+                        phi_2868_ = false;
+                        phi_767_ = 0u;
+                        phi_770_ = vec3<f32>(0f, 0f, 0f);
+                        phi_772_ = (select(0f, select(1f, _e596, (_e596 < 1f)), (_e596 > 0f)) * 0.5f);
                         loop {
-                            let _e582 = phi_2518_;
-                            let _e584 = phi_820_;
-                            let _e586 = phi_823_;
-                            let _e588 = phi_825_;
-                            local_19 = _e588;
-                            local_20 = _e586;
-                            let _e589 = (_e584 < _e580);
-                            if _e589 {
-                                let _e594 = ((((_e551 - floor(_e551)) + f32(_e584)) * 3.1415927f) / f32(_e580));
-                                let _e595 = sin(_e594);
-                                let _e596 = cos(_e594);
-                                let _e602 = ((_e596 * _e409) + (_e595 * _e410));
-                                let _e606 = (_e596 - (_e409 * _e602));
-                                let _e607 = (_e595 - (_e410 * _e602));
-                                let _e608 = -((_e411 * _e602));
-                                let _e611 = ((_e607 * _e411) - (_e410 * _e608));
-                                let _e614 = ((_e608 * _e409) - (_e411 * _e606));
-                                let _e617 = ((_e606 * _e410) - (_e409 * _e607));
-                                let _e624 = (1f / sqrt((((_e611 * _e611) + (_e614 * _e614)) + (_e617 * _e617))));
-                                let _e625 = (_e611 * _e624);
-                                let _e626 = (_e614 * _e624);
-                                let _e627 = (_e617 * _e624);
-                                let _e635 = (((_e484.x * _e625) + (_e484.y * _e626)) + (_e484.z * _e627));
-                                let _e639 = (_e484.x - (_e625 * _e635));
-                                let _e640 = (_e484.y - (_e626 * _e635));
-                                let _e641 = (_e484.z - (_e627 * _e635));
-                                let _e647 = sqrt((((_e639 * _e639) + (_e640 * _e640)) + (_e641 * _e641)));
-                                let _e652 = (((_e606 * _e639) + (_e607 * _e640)) + (_e608 * _e641));
-                                let _e662 = ((((_e639 * _e409) + (_e640 * _e410)) + (_e641 * _e411)) / _e647);
-                                let _e666 = select(0f, select(1f, _e662, (_e662 < 1f)), (_e662 > 0f));
-                                let _e667 = abs(_e666);
-                                let _e678 = (((_e667 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e667))) >> bitcast<u32>(1i))))));
-                                let _e682 = (select(select(0f, -1f, (_e652 < 0f)), 1f, (_e652 > 0f)) * select((3.141593f - _e678), _e678, (_e666 >= 0f)));
-                                let _e685 = params.member.member_9;
-                                let _e687 = select(1u, _e685, (1u < _e685));
-                                let _e689 = cos((_e682 + 1.5707964f));
-                                let _e691 = cos((_e682 - 1.5707964f));
-                                let _e694 = params.member.member_5;
-                                phi_996_ = 0u;
-                                phi_999_ = _e691;
-                                phi_1001_ = _e689;
+                            let _e608 = phi_2868_;
+                            let _e610 = phi_767_;
+                            let _e612 = phi_770_;
+                            let _e614 = phi_772_;
+                            local_19 = _e614;
+                            local_20 = _e612;
+                            let _e615 = (_e610 < _e606);
+                            if _e615 {
+                                let _e620 = ((((_e577 - floor(_e577)) + f32(_e610)) * 3.1415927f) / f32(_e606));
+                                let _e621 = sin(_e620);
+                                let _e622 = cos(_e620);
+                                let _e628 = ((_e622 * _e435) + (_e621 * _e436));
+                                let _e632 = (_e622 - (_e435 * _e628));
+                                let _e633 = (_e621 - (_e436 * _e628));
+                                let _e634 = -((_e437 * _e628));
+                                let _e637 = ((_e633 * _e437) - (_e436 * _e634));
+                                let _e640 = ((_e634 * _e435) - (_e437 * _e632));
+                                let _e643 = ((_e632 * _e436) - (_e435 * _e633));
+                                let _e650 = (1f / sqrt((((_e637 * _e637) + (_e640 * _e640)) + (_e643 * _e643))));
+                                let _e651 = (_e637 * _e650);
+                                let _e652 = (_e640 * _e650);
+                                let _e653 = (_e643 * _e650);
+                                let _e658 = (((_e506 * _e651) + (_e508 * _e652)) + (_e509 * _e653));
+                                let _e662 = (_e506 - (_e651 * _e658));
+                                let _e663 = (_e508 - (_e652 * _e658));
+                                let _e664 = (_e509 - (_e653 * _e658));
+                                let _e670 = sqrt((((_e662 * _e662) + (_e663 * _e663)) + (_e664 * _e664)));
+                                let _e675 = (((_e632 * _e662) + (_e633 * _e663)) + (_e634 * _e664));
+                                let _e685 = ((((_e662 * _e435) + (_e663 * _e436)) + (_e664 * _e437)) / _e670);
+                                let _e689 = select(0f, select(1f, _e685, (_e685 < 1f)), (_e685 > 0f));
+                                let _e690 = abs(_e689);
+                                let _e701 = (((_e690 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e690))) >> bitcast<u32>(1i))))));
+                                let _e705 = (select(select(0f, -1f, (_e675 < 0f)), 1f, (_e675 > 0f)) * select((3.141593f - _e701), _e701, (_e689 >= 0f)));
+                                let _e708 = params.member.member_9;
+                                let _e710 = select(1u, _e708, (1u < _e708));
+                                let _e712 = cos((_e705 + 1.5707964f));
+                                let _e714 = cos((_e705 - 1.5707964f));
+                                let _e717 = params.member.member_5;
+                                phi_943_ = 0u;
+                                phi_946_ = _e714;
+                                phi_948_ = _e712;
                                 loop {
-                                    let _e696 = phi_996_;
-                                    let _e698 = phi_999_;
-                                    let _e700 = phi_1001_;
-                                    local_15 = _e698;
-                                    local_16 = _e698;
-                                    local_17 = _e700;
-                                    local_18 = _e700;
-                                    let _e701 = (_e696 < _e687);
-                                    if _e701 {
-                                        let _e706 = ((_e555 - floor(_e555)) + (f32((_e584 + (_e696 * _e687))) * 0.618034f));
-                                        let _e712 = (((_e706 - floor(_e706)) + f32(_e696)) / f32(_e687));
-                                        let _e715 = params.member.member_4;
-                                        if (_e715 == 2f) {
-                                            phi_1055_ = (_e712 * _e712);
+                                    let _e719 = phi_943_;
+                                    let _e721 = phi_946_;
+                                    let _e723 = phi_948_;
+                                    local_15 = _e721;
+                                    local_16 = _e721;
+                                    local_17 = _e723;
+                                    local_18 = _e723;
+                                    let _e724 = (_e719 < _e710);
+                                    if _e724 {
+                                        let _e729 = ((_e581 - floor(_e581)) + (f32((_e610 + (_e719 * _e710))) * 0.618034f));
+                                        let _e735 = (((_e729 - floor(_e729)) + f32(_e719)) / f32(_e710));
+                                        let _e738 = params.member.member_4;
+                                        if (_e738 == 2f) {
+                                            phi_1002_ = (_e735 * _e735);
                                         } else {
-                                            phi_1055_ = pow(_e712, _e715);
+                                            phi_1002_ = pow(_e735, _e738);
                                         }
-                                        let _e720 = phi_1055_;
-                                        let _e721 = (_e720 + (1.3f / _e495));
-                                        let _e722 = ((_e596 * _e495) * _e721);
-                                        let _e723 = ((-(_e595) * _e495) * _e721);
-                                        let _e731 = params.member.member_7;
-                                        let _e732 = (log2(sqrt(((_e722 * _e722) + (_e723 * _e723)))) - _e731);
-                                        let _e739 = (-1f - floor((-0.5f - select(0f, select(5f, _e732, (_e732 < 5f)), (_e732 > 0f)))));
-                                        let _e741 = floor((_e722 + 0.5f));
-                                        if ((_e741 - _e722) == 0.5f) {
-                                            let _e747 = ((floor((_e741 * 0.5f)) * 2f) != _e741);
-                                            if _e747 {
-                                                phi_1100_ = (_e741 - 1f);
+                                        let _e743 = phi_1002_;
+                                        let _e744 = (_e743 + (1.3f / _e521));
+                                        let _e745 = ((_e622 * _e521) * _e744);
+                                        let _e746 = ((-(_e621) * _e521) * _e744);
+                                        let _e754 = params.member.member_7;
+                                        let _e755 = (log2(sqrt(((_e745 * _e745) + (_e746 * _e746)))) - _e754);
+                                        let _e762 = (-1f - floor((-0.5f - select(0f, select(5f, _e755, (_e755 < 5f)), (_e755 > 0f)))));
+                                        let _e764 = floor((_e745 + 0.5f));
+                                        if ((_e764 - _e745) == 0.5f) {
+                                            let _e770 = ((floor((_e764 * 0.5f)) * 2f) != _e764);
+                                            if _e770 {
+                                                phi_1047_ = (_e764 - 1f);
                                             } else {
-                                                phi_1100_ = f32();
+                                                phi_1047_ = f32();
                                             }
-                                            let _e750 = phi_1100_;
-                                            phi_1102_ = _e750;
-                                            phi_1103_ = select(true, false, _e747);
+                                            let _e773 = phi_1047_;
+                                            phi_1049_ = _e773;
+                                            phi_1050_ = select(true, false, _e770);
                                         } else {
-                                            phi_1102_ = f32();
-                                            phi_1103_ = true;
+                                            phi_1049_ = f32();
+                                            phi_1050_ = true;
                                         }
-                                        let _e753 = phi_1102_;
-                                        let _e755 = phi_1103_;
-                                        let _e757 = (select(_e753, _e741, _e755) / _e97);
-                                        let _e759 = floor((_e723 + 0.5f));
-                                        if ((_e759 - _e723) == 0.5f) {
-                                            let _e765 = ((floor((_e759 * 0.5f)) * 2f) != _e759);
-                                            if _e765 {
-                                                phi_1126_ = (_e759 - 1f);
+                                        let _e776 = phi_1049_;
+                                        let _e778 = phi_1050_;
+                                        let _e780 = (select(_e776, _e764, _e778) / _e98);
+                                        let _e782 = floor((_e746 + 0.5f));
+                                        if ((_e782 - _e746) == 0.5f) {
+                                            let _e788 = ((floor((_e782 * 0.5f)) * 2f) != _e782);
+                                            if _e788 {
+                                                phi_1073_ = (_e782 - 1f);
                                             } else {
-                                                phi_1126_ = f32();
+                                                phi_1073_ = f32();
                                             }
-                                            let _e768 = phi_1126_;
-                                            phi_1128_ = _e768;
-                                            phi_1129_ = select(true, false, _e765);
+                                            let _e791 = phi_1073_;
+                                            phi_1075_ = _e791;
+                                            phi_1076_ = select(true, false, _e788);
                                         } else {
-                                            phi_1128_ = f32();
-                                            phi_1129_ = true;
+                                            phi_1075_ = f32();
+                                            phi_1076_ = true;
                                         }
-                                        let _e771 = phi_1128_;
-                                        let _e773 = phi_1129_;
-                                        let _e775 = (select(_e771, _e759, _e773) / _e107);
-                                        let _e776 = (_e376 + _e757);
-                                        let _e777 = (_e379 + _e775);
-                                        let _e778 = (_e376 - _e757);
-                                        let _e779 = (_e379 - _e775);
-                                        let _e781 = select(1u, _e102, (1u < _e102));
-                                        let _e783 = select(1u, _e112, (1u < _e112));
-                                        let _e784 = f32(_e781);
-                                        let _e785 = f32(_e783);
-                                        phi_1162_ = 1u;
-                                        phi_1165_ = _e785;
-                                        phi_1167_ = _e784;
-                                        phi_1169_ = 0u;
-                                        phi_1171_ = _e783;
-                                        phi_1173_ = _e781;
+                                        let _e794 = phi_1075_;
+                                        let _e796 = phi_1076_;
+                                        let _e798 = (select(_e794, _e782, _e796) / _e108);
+                                        let _e799 = (_e402 + _e780);
+                                        let _e800 = (_e405 + _e798);
+                                        let _e801 = (_e402 - _e780);
+                                        let _e802 = (_e405 - _e798);
+                                        let _e804 = select(1u, _e103, (1u < _e103));
+                                        let _e806 = select(1u, _e113, (1u < _e113));
+                                        let _e807 = f32(_e804);
+                                        let _e808 = f32(_e806);
+                                        phi_1109_ = 1u;
+                                        phi_1112_ = _e808;
+                                        phi_1114_ = _e807;
+                                        phi_1116_ = 0u;
+                                        phi_1118_ = _e806;
+                                        phi_1120_ = _e804;
                                         loop {
-                                            let _e787 = phi_1162_;
-                                            let _e789 = phi_1165_;
-                                            let _e791 = phi_1167_;
-                                            let _e793 = phi_1169_;
-                                            let _e795 = phi_1171_;
-                                            let _e797 = phi_1173_;
-                                            local_2 = _e791;
-                                            local_3 = _e797;
-                                            local_4 = _e789;
-                                            local_5 = _e795;
-                                            local_6 = _e797;
-                                            local_7 = _e793;
-                                            let _e798 = (_e787 < 5u);
-                                            if _e798 {
-                                                let _e800 = (_e739 >= f32(_e787));
-                                                let _e801 = (_e787 & 31u);
-                                                let _e803 = (_e102 >> bitcast<u32>(_e801));
-                                                let _e805 = select(1u, _e803, (1u < _e803));
-                                                let _e807 = (_e112 >> bitcast<u32>(_e801));
-                                                let _e809 = select(1u, _e807, (1u < _e807));
-                                                phi_1206_ = 0u;
-                                                phi_1209_ = 0u;
+                                            let _e810 = phi_1109_;
+                                            let _e812 = phi_1112_;
+                                            let _e814 = phi_1114_;
+                                            let _e816 = phi_1116_;
+                                            let _e818 = phi_1118_;
+                                            let _e820 = phi_1120_;
+                                            local_2 = _e814;
+                                            local_3 = _e820;
+                                            local_4 = _e812;
+                                            local_5 = _e818;
+                                            local_6 = _e820;
+                                            local_7 = _e816;
+                                            let _e821 = (_e810 < 5u);
+                                            if _e821 {
+                                                let _e823 = (_e762 >= f32(_e810));
+                                                let _e824 = (_e810 & 31u);
+                                                let _e826 = (_e103 >> bitcast<u32>(_e824));
+                                                let _e828 = select(1u, _e826, (1u < _e826));
+                                                let _e830 = (_e113 >> bitcast<u32>(_e824));
+                                                let _e832 = select(1u, _e830, (1u < _e830));
+                                                phi_1153_ = 0u;
+                                                phi_1156_ = 0u;
                                                 loop {
-                                                    let _e813 = phi_1206_;
-                                                    let _e815 = phi_1209_;
-                                                    local_1 = _e815;
-                                                    let _e816 = (_e813 < _e787);
-                                                    if _e816 {
-                                                        let _e817 = (_e813 & 31u);
-                                                        let _e819 = (_e102 >> bitcast<u32>(_e817));
-                                                        let _e823 = (_e112 >> bitcast<u32>(_e817));
-                                                        phi_1207_ = (_e813 + 1u);
-                                                        phi_1210_ = (_e815 + (select(1u, _e819, (1u < _e819)) * select(1u, _e823, (1u < _e823))));
+                                                    let _e836 = phi_1153_;
+                                                    let _e838 = phi_1156_;
+                                                    local_1 = _e838;
+                                                    let _e839 = (_e836 < _e810);
+                                                    if _e839 {
+                                                        let _e840 = (_e836 & 31u);
+                                                        let _e842 = (_e103 >> bitcast<u32>(_e840));
+                                                        let _e846 = (_e113 >> bitcast<u32>(_e840));
+                                                        phi_1154_ = (_e836 + 1u);
+                                                        phi_1157_ = (_e838 + (select(1u, _e842, (1u < _e842)) * select(1u, _e846, (1u < _e846))));
                                                     } else {
-                                                        phi_1207_ = u32();
-                                                        phi_1210_ = u32();
+                                                        phi_1154_ = u32();
+                                                        phi_1157_ = u32();
                                                     }
-                                                    let _e830 = phi_1207_;
-                                                    let _e832 = phi_1210_;
+                                                    let _e853 = phi_1154_;
+                                                    let _e855 = phi_1157_;
                                                     continue;
                                                     continuing {
-                                                        phi_1206_ = _e830;
-                                                        phi_1209_ = _e832;
-                                                        break if !(_e816);
+                                                        phi_1153_ = _e853;
+                                                        phi_1156_ = _e855;
+                                                        break if !(_e839);
                                                     }
                                                 }
-                                                let _e835 = local_1;
-                                                phi_1163_ = (_e787 + 1u);
-                                                phi_1166_ = select(_e789, f32(_e809), _e800);
-                                                phi_1168_ = select(_e791, f32(_e805), _e800);
-                                                phi_1170_ = select(_e793, _e835, _e800);
-                                                phi_1172_ = select(_e795, _e809, _e800);
-                                                phi_1174_ = select(_e797, _e805, _e800);
+                                                let _e858 = local_1;
+                                                phi_1110_ = (_e810 + 1u);
+                                                phi_1113_ = select(_e812, f32(_e832), _e823);
+                                                phi_1115_ = select(_e814, f32(_e828), _e823);
+                                                phi_1117_ = select(_e816, _e858, _e823);
+                                                phi_1119_ = select(_e818, _e832, _e823);
+                                                phi_1121_ = select(_e820, _e828, _e823);
                                             } else {
-                                                phi_1163_ = u32();
-                                                phi_1166_ = f32();
-                                                phi_1168_ = f32();
-                                                phi_1170_ = u32();
-                                                phi_1172_ = u32();
-                                                phi_1174_ = u32();
+                                                phi_1110_ = u32();
+                                                phi_1113_ = f32();
+                                                phi_1115_ = f32();
+                                                phi_1117_ = u32();
+                                                phi_1119_ = u32();
+                                                phi_1121_ = u32();
                                             }
-                                            let _e843 = phi_1163_;
-                                            let _e845 = phi_1166_;
-                                            let _e847 = phi_1168_;
-                                            let _e849 = phi_1170_;
-                                            let _e851 = phi_1172_;
-                                            let _e853 = phi_1174_;
+                                            let _e866 = phi_1110_;
+                                            let _e868 = phi_1113_;
+                                            let _e870 = phi_1115_;
+                                            let _e872 = phi_1117_;
+                                            let _e874 = phi_1119_;
+                                            let _e876 = phi_1121_;
                                             continue;
                                             continuing {
-                                                phi_1162_ = _e843;
-                                                phi_1165_ = _e845;
-                                                phi_1167_ = _e847;
-                                                phi_1169_ = _e849;
-                                                phi_1171_ = _e851;
-                                                phi_1173_ = _e853;
-                                                break if !(_e798);
+                                                phi_1109_ = _e866;
+                                                phi_1112_ = _e868;
+                                                phi_1114_ = _e870;
+                                                phi_1116_ = _e872;
+                                                phi_1118_ = _e874;
+                                                phi_1120_ = _e876;
+                                                break if !(_e821);
                                             }
                                         }
-                                        let _e856 = local_2;
-                                        let _e857 = (_e776 * _e856);
-                                        if (_e857 > 0f) {
-                                            let _e863 = select(select(u32(_e857), 0u, (_e857 < 0f)), 4294967295u, (_e857 > 4294967000f));
-                                            let _e865 = local_3;
-                                            let _e866 = (_e865 - 1u);
-                                            phi_1267_ = select(_e863, _e866, (_e866 < _e863));
+                                        let _e879 = local_2;
+                                        let _e880 = (_e799 * _e879);
+                                        if (_e880 > 0f) {
+                                            let _e886 = select(select(u32(_e880), 0u, (_e880 < 0f)), 4294967295u, (_e880 > 4294967000f));
+                                            let _e888 = local_3;
+                                            let _e889 = (_e888 - 1u);
+                                            phi_1214_ = select(_e886, _e889, (_e889 < _e886));
                                         } else {
-                                            phi_1267_ = 0u;
+                                            phi_1214_ = 0u;
                                         }
-                                        let _e870 = phi_1267_;
-                                        let _e872 = local_4;
-                                        let _e873 = (_e777 * _e872);
-                                        if (_e873 > 0f) {
-                                            let _e879 = select(select(u32(_e873), 0u, (_e873 < 0f)), 4294967295u, (_e873 > 4294967000f));
-                                            let _e881 = local_5;
-                                            let _e882 = (_e881 - 1u);
-                                            phi_1286_ = select(_e879, _e882, (_e882 < _e879));
+                                        let _e893 = phi_1214_;
+                                        let _e895 = local_4;
+                                        let _e896 = (_e800 * _e895);
+                                        if (_e896 > 0f) {
+                                            let _e902 = select(select(u32(_e896), 0u, (_e896 < 0f)), 4294967295u, (_e896 > 4294967000f));
+                                            let _e904 = local_5;
+                                            let _e905 = (_e904 - 1u);
+                                            phi_1233_ = select(_e902, _e905, (_e905 < _e902));
                                         } else {
-                                            phi_1286_ = 0u;
+                                            phi_1233_ = 0u;
                                         }
-                                        let _e886 = phi_1286_;
-                                        let _e888 = local_6;
-                                        let _e891 = local_7;
-                                        let _e893 = ((_e891 + (_e886 * _e888)) + _e870);
-                                        if (_e893 < _e86) {
+                                        let _e909 = phi_1233_;
+                                        let _e911 = local_6;
+                                        let _e914 = local_7;
+                                        let _e916 = ((_e914 + (_e909 * _e911)) + _e893);
+                                        if (_e916 < _e87) {
                                         } else {
-                                            phi_2450_ = true;
+                                            phi_2800_ = true;
                                             break;
                                         }
-                                        let _e897 = mips.member[_e893];
-                                        phi_1330_ = 1u;
-                                        phi_1333_ = _e785;
-                                        phi_1335_ = _e784;
-                                        phi_1337_ = 0u;
-                                        phi_1339_ = _e783;
-                                        phi_1341_ = _e781;
+                                        let _e920 = mips.member[_e916];
+                                        phi_1277_ = 1u;
+                                        phi_1280_ = _e808;
+                                        phi_1282_ = _e807;
+                                        phi_1284_ = 0u;
+                                        phi_1286_ = _e806;
+                                        phi_1288_ = _e804;
                                         loop {
-                                            let _e907 = phi_1330_;
-                                            let _e909 = phi_1333_;
-                                            let _e911 = phi_1335_;
-                                            let _e913 = phi_1337_;
-                                            let _e915 = phi_1339_;
-                                            let _e917 = phi_1341_;
-                                            local_9 = _e911;
-                                            local_10 = _e917;
-                                            local_11 = _e909;
-                                            local_12 = _e915;
-                                            local_13 = _e917;
-                                            local_14 = _e913;
-                                            let _e918 = (_e907 < 5u);
-                                            if _e918 {
-                                                let _e920 = (_e739 >= f32(_e907));
-                                                let _e921 = (_e907 & 31u);
-                                                let _e923 = (_e102 >> bitcast<u32>(_e921));
-                                                let _e925 = select(1u, _e923, (1u < _e923));
-                                                let _e927 = (_e112 >> bitcast<u32>(_e921));
-                                                let _e929 = select(1u, _e927, (1u < _e927));
-                                                phi_1374_ = 0u;
-                                                phi_1377_ = 0u;
+                                            let _e930 = phi_1277_;
+                                            let _e932 = phi_1280_;
+                                            let _e934 = phi_1282_;
+                                            let _e936 = phi_1284_;
+                                            let _e938 = phi_1286_;
+                                            let _e940 = phi_1288_;
+                                            local_9 = _e934;
+                                            local_10 = _e940;
+                                            local_11 = _e932;
+                                            local_12 = _e938;
+                                            local_13 = _e940;
+                                            local_14 = _e936;
+                                            let _e941 = (_e930 < 5u);
+                                            if _e941 {
+                                                let _e943 = (_e762 >= f32(_e930));
+                                                let _e944 = (_e930 & 31u);
+                                                let _e946 = (_e103 >> bitcast<u32>(_e944));
+                                                let _e948 = select(1u, _e946, (1u < _e946));
+                                                let _e950 = (_e113 >> bitcast<u32>(_e944));
+                                                let _e952 = select(1u, _e950, (1u < _e950));
+                                                phi_1321_ = 0u;
+                                                phi_1324_ = 0u;
                                                 loop {
-                                                    let _e933 = phi_1374_;
-                                                    let _e935 = phi_1377_;
-                                                    local_8 = _e935;
-                                                    let _e936 = (_e933 < _e907);
-                                                    if _e936 {
-                                                        let _e937 = (_e933 & 31u);
-                                                        let _e939 = (_e102 >> bitcast<u32>(_e937));
-                                                        let _e943 = (_e112 >> bitcast<u32>(_e937));
-                                                        phi_1375_ = (_e933 + 1u);
-                                                        phi_1378_ = (_e935 + (select(1u, _e939, (1u < _e939)) * select(1u, _e943, (1u < _e943))));
+                                                    let _e956 = phi_1321_;
+                                                    let _e958 = phi_1324_;
+                                                    local_8 = _e958;
+                                                    let _e959 = (_e956 < _e930);
+                                                    if _e959 {
+                                                        let _e960 = (_e956 & 31u);
+                                                        let _e962 = (_e103 >> bitcast<u32>(_e960));
+                                                        let _e966 = (_e113 >> bitcast<u32>(_e960));
+                                                        phi_1322_ = (_e956 + 1u);
+                                                        phi_1325_ = (_e958 + (select(1u, _e962, (1u < _e962)) * select(1u, _e966, (1u < _e966))));
                                                     } else {
-                                                        phi_1375_ = u32();
-                                                        phi_1378_ = u32();
+                                                        phi_1322_ = u32();
+                                                        phi_1325_ = u32();
                                                     }
-                                                    let _e950 = phi_1375_;
-                                                    let _e952 = phi_1378_;
+                                                    let _e973 = phi_1322_;
+                                                    let _e975 = phi_1325_;
                                                     continue;
                                                     continuing {
-                                                        phi_1374_ = _e950;
-                                                        phi_1377_ = _e952;
-                                                        break if !(_e936);
+                                                        phi_1321_ = _e973;
+                                                        phi_1324_ = _e975;
+                                                        break if !(_e959);
                                                     }
                                                 }
-                                                let _e955 = local_8;
-                                                phi_1331_ = (_e907 + 1u);
-                                                phi_1334_ = select(_e909, f32(_e929), _e920);
-                                                phi_1336_ = select(_e911, f32(_e925), _e920);
-                                                phi_1338_ = select(_e913, _e955, _e920);
-                                                phi_1340_ = select(_e915, _e929, _e920);
-                                                phi_1342_ = select(_e917, _e925, _e920);
+                                                let _e978 = local_8;
+                                                phi_1278_ = (_e930 + 1u);
+                                                phi_1281_ = select(_e932, f32(_e952), _e943);
+                                                phi_1283_ = select(_e934, f32(_e948), _e943);
+                                                phi_1285_ = select(_e936, _e978, _e943);
+                                                phi_1287_ = select(_e938, _e952, _e943);
+                                                phi_1289_ = select(_e940, _e948, _e943);
                                             } else {
-                                                phi_1331_ = u32();
-                                                phi_1334_ = f32();
-                                                phi_1336_ = f32();
-                                                phi_1338_ = u32();
-                                                phi_1340_ = u32();
-                                                phi_1342_ = u32();
+                                                phi_1278_ = u32();
+                                                phi_1281_ = f32();
+                                                phi_1283_ = f32();
+                                                phi_1285_ = u32();
+                                                phi_1287_ = u32();
+                                                phi_1289_ = u32();
                                             }
-                                            let _e963 = phi_1331_;
-                                            let _e965 = phi_1334_;
-                                            let _e967 = phi_1336_;
-                                            let _e969 = phi_1338_;
-                                            let _e971 = phi_1340_;
-                                            let _e973 = phi_1342_;
+                                            let _e986 = phi_1278_;
+                                            let _e988 = phi_1281_;
+                                            let _e990 = phi_1283_;
+                                            let _e992 = phi_1285_;
+                                            let _e994 = phi_1287_;
+                                            let _e996 = phi_1289_;
                                             continue;
                                             continuing {
-                                                phi_1330_ = _e963;
-                                                phi_1333_ = _e965;
-                                                phi_1335_ = _e967;
-                                                phi_1337_ = _e969;
-                                                phi_1339_ = _e971;
-                                                phi_1341_ = _e973;
-                                                break if !(_e918);
+                                                phi_1277_ = _e986;
+                                                phi_1280_ = _e988;
+                                                phi_1282_ = _e990;
+                                                phi_1284_ = _e992;
+                                                phi_1286_ = _e994;
+                                                phi_1288_ = _e996;
+                                                break if !(_e941);
                                             }
                                         }
-                                        let _e976 = local_9;
-                                        let _e977 = (_e778 * _e976);
-                                        if (_e977 > 0f) {
-                                            let _e983 = select(select(u32(_e977), 0u, (_e977 < 0f)), 4294967295u, (_e977 > 4294967000f));
-                                            let _e985 = local_10;
-                                            let _e986 = (_e985 - 1u);
-                                            phi_1435_ = select(_e983, _e986, (_e986 < _e983));
+                                        let _e999 = local_9;
+                                        let _e1000 = (_e801 * _e999);
+                                        if (_e1000 > 0f) {
+                                            let _e1006 = select(select(u32(_e1000), 0u, (_e1000 < 0f)), 4294967295u, (_e1000 > 4294967000f));
+                                            let _e1008 = local_10;
+                                            let _e1009 = (_e1008 - 1u);
+                                            phi_1382_ = select(_e1006, _e1009, (_e1009 < _e1006));
                                         } else {
-                                            phi_1435_ = 0u;
+                                            phi_1382_ = 0u;
                                         }
-                                        let _e990 = phi_1435_;
-                                        let _e992 = local_11;
-                                        let _e993 = (_e779 * _e992);
-                                        if (_e993 > 0f) {
-                                            let _e999 = select(select(u32(_e993), 0u, (_e993 < 0f)), 4294967295u, (_e993 > 4294967000f));
-                                            let _e1001 = local_12;
-                                            let _e1002 = (_e1001 - 1u);
-                                            phi_1454_ = select(_e999, _e1002, (_e1002 < _e999));
+                                        let _e1013 = phi_1382_;
+                                        let _e1015 = local_11;
+                                        let _e1016 = (_e802 * _e1015);
+                                        if (_e1016 > 0f) {
+                                            let _e1022 = select(select(u32(_e1016), 0u, (_e1016 < 0f)), 4294967295u, (_e1016 > 4294967000f));
+                                            let _e1024 = local_12;
+                                            let _e1025 = (_e1024 - 1u);
+                                            phi_1401_ = select(_e1022, _e1025, (_e1025 < _e1022));
                                         } else {
-                                            phi_1454_ = 0u;
+                                            phi_1401_ = 0u;
                                         }
-                                        let _e1006 = phi_1454_;
-                                        let _e1008 = local_13;
-                                        let _e1011 = local_14;
-                                        let _e1013 = ((_e1011 + (_e1006 * _e1008)) + _e990);
-                                        if (_e1013 < _e86) {
+                                        let _e1029 = phi_1401_;
+                                        let _e1031 = local_13;
+                                        let _e1034 = local_14;
+                                        let _e1036 = ((_e1034 + (_e1029 * _e1031)) + _e1013);
+                                        if (_e1036 < _e87) {
                                         } else {
-                                            phi_2450_ = true;
+                                            phi_2800_ = true;
                                             break;
                                         }
-                                        let _e1017 = mips.member[_e1013];
-                                        let _e1026 = (((((_e776 * 2f) - 1f) * _e387) * _e897) - _e389);
-                                        let _e1027 = (((((_e777 * -2f) + 1f) * _e396) * _e897) - _e398);
-                                        let _e1028 = (_e897 - _e380);
-                                        let _e1031 = ((_e1026 * _e1026) + (_e1027 * _e1027));
-                                        let _e1034 = sqrt((_e1031 + (_e1028 * _e1028)));
-                                        let _e1043 = (1f + _e694);
-                                        let _e1044 = (_e1028 * _e1043);
-                                        let _e1047 = sqrt((_e1031 + (_e1044 * _e1044)));
-                                        let _e1048 = (_e568 > 0f);
-                                        if _e1048 {
-                                            let _e1051 = ((-(_e1047) + _e491) / _e568);
-                                            phi_1537_ = select(0f, select(1f, _e1051, (_e1051 < 1f)), (_e1051 > 0f));
+                                        let _e1040 = mips.member[_e1036];
+                                        let _e1049 = (((((_e799 * 2f) - 1f) * _e413) * _e920) - _e415);
+                                        let _e1050 = (((((_e800 * -2f) + 1f) * _e422) * _e920) - _e424);
+                                        let _e1051 = (_e920 - _e406);
+                                        let _e1054 = ((_e1049 * _e1049) + (_e1050 * _e1050));
+                                        let _e1057 = sqrt((_e1054 + (_e1051 * _e1051)));
+                                        let _e1066 = (1f + _e717);
+                                        let _e1067 = (_e1051 * _e1066);
+                                        let _e1070 = sqrt((_e1054 + (_e1067 * _e1067)));
+                                        let _e1071 = (_e594 > 0f);
+                                        if _e1071 {
+                                            let _e1074 = ((-(_e1070) + _e517) / _e594);
+                                            phi_1484_ = select(0f, select(1f, _e1074, (_e1074 < 1f)), (_e1074 > 0f));
                                         } else {
-                                            phi_1537_ = select(0f, 1f, (_e1047 <= _e491));
+                                            phi_1484_ = select(0f, 1f, (_e1070 <= _e517));
                                         }
-                                        let _e1059 = phi_1537_;
-                                        let _e1062 = (_e689 + ((((((_e1026 / _e1034) * _e409) + ((_e1027 / _e1034) * _e410)) + ((_e1028 / _e1034) * _e411)) - _e689) * _e1059));
-                                        let _e1063 = (((((_e778 * 2f) - 1f) * _e387) * _e1017) - _e389);
-                                        let _e1064 = (((((_e779 * -2f) + 1f) * _e396) * _e1017) - _e398);
-                                        let _e1065 = (_e1017 - _e380);
-                                        let _e1068 = ((_e1063 * _e1063) + (_e1064 * _e1064));
-                                        let _e1071 = sqrt((_e1068 + (_e1065 * _e1065)));
-                                        let _e1080 = (_e1065 * _e1043);
-                                        let _e1083 = sqrt((_e1068 + (_e1080 * _e1080)));
-                                        if _e1048 {
-                                            let _e1086 = ((-(_e1083) + _e491) / _e568);
-                                            phi_1597_ = select(0f, select(1f, _e1086, (_e1086 < 1f)), (_e1086 > 0f));
+                                        let _e1082 = phi_1484_;
+                                        let _e1085 = (_e712 + ((((((_e1049 / _e1057) * _e435) + ((_e1050 / _e1057) * _e436)) + ((_e1051 / _e1057) * _e437)) - _e712) * _e1082));
+                                        let _e1086 = (((((_e801 * 2f) - 1f) * _e413) * _e1040) - _e415);
+                                        let _e1087 = (((((_e802 * -2f) + 1f) * _e422) * _e1040) - _e424);
+                                        let _e1088 = (_e1040 - _e406);
+                                        let _e1091 = ((_e1086 * _e1086) + (_e1087 * _e1087));
+                                        let _e1094 = sqrt((_e1091 + (_e1088 * _e1088)));
+                                        let _e1103 = (_e1088 * _e1066);
+                                        let _e1106 = sqrt((_e1091 + (_e1103 * _e1103)));
+                                        if _e1071 {
+                                            let _e1109 = ((-(_e1106) + _e517) / _e594);
+                                            phi_1544_ = select(0f, select(1f, _e1109, (_e1109 < 1f)), (_e1109 > 0f));
                                         } else {
-                                            phi_1597_ = select(0f, 1f, (_e1083 <= _e491));
+                                            phi_1544_ = select(0f, 1f, (_e1106 <= _e517));
                                         }
-                                        let _e1094 = phi_1597_;
-                                        let _e1097 = (_e691 + ((((((_e1063 / _e1071) * _e409) + ((_e1064 / _e1071) * _e410)) + ((_e1065 / _e1071) * _e411)) - _e691) * _e1094));
-                                        if (_e700 != _e700) {
-                                            phi_2235_ = true;
+                                        let _e1117 = phi_1544_;
+                                        let _e1120 = (_e714 + ((((((_e1086 / _e1094) * _e435) + ((_e1087 / _e1094) * _e436)) + ((_e1088 / _e1094) * _e437)) - _e714) * _e1117));
+                                        if (_e723 != _e723) {
+                                            phi_2568_ = true;
                                         } else {
-                                            phi_2235_ = (_e1062 >= _e700);
+                                            phi_2568_ = (_e1085 >= _e723);
                                         }
-                                        let _e1101 = phi_2235_;
-                                        if (_e698 != _e698) {
-                                            phi_2250_ = true;
+                                        let _e1124 = phi_2568_;
+                                        if (_e721 != _e721) {
+                                            phi_2583_ = true;
                                         } else {
-                                            phi_2250_ = (_e1097 >= _e698);
+                                            phi_2583_ = (_e1120 >= _e721);
                                         }
-                                        let _e1106 = phi_2250_;
-                                        phi_997_ = (_e696 + 1u);
-                                        phi_1000_ = select(_e698, _e1097, _e1106);
-                                        phi_1002_ = select(_e700, _e1062, _e1101);
+                                        let _e1129 = phi_2583_;
+                                        phi_944_ = (_e719 + 1u);
+                                        phi_947_ = select(_e721, _e1120, _e1129);
+                                        phi_949_ = select(_e723, _e1085, _e1124);
                                     } else {
-                                        phi_997_ = u32();
-                                        phi_1000_ = f32();
-                                        phi_1002_ = f32();
+                                        phi_944_ = u32();
+                                        phi_947_ = f32();
+                                        phi_949_ = f32();
                                     }
-                                    let _e1110 = phi_997_;
-                                    let _e1112 = phi_1000_;
-                                    let _e1114 = phi_1002_;
+                                    let _e1133 = phi_944_;
+                                    let _e1135 = phi_947_;
+                                    let _e1137 = phi_949_;
                                     continue;
                                     continuing {
-                                        phi_996_ = _e1110;
-                                        phi_999_ = _e1112;
-                                        phi_1001_ = _e1114;
-                                        phi_2450_ = _e582;
-                                        break if !(_e701);
+                                        phi_943_ = _e1133;
+                                        phi_946_ = _e1135;
+                                        phi_948_ = _e1137;
+                                        phi_2800_ = _e608;
+                                        break if !(_e724);
                                     }
                                 }
-                                let _e1117 = phi_2450_;
-                                phi_2585_ = _e1117;
-                                if _e1117 {
+                                let _e1140 = phi_2800_;
+                                phi_2949_ = _e1140;
+                                if _e1140 {
                                     break;
                                 }
-                                let _e1119 = local_15;
-                                let _e1120 = abs(_e1119);
-                                let _e1131 = (((_e1120 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1120))) >> bitcast<u32>(1i))))));
-                                let _e1133 = local_16;
-                                let _e1136 = select((3.141593f - _e1131), _e1131, (_e1133 >= 0f));
-                                let _e1137 = -(_e1136);
-                                let _e1139 = local_17;
-                                let _e1140 = abs(_e1139);
-                                let _e1151 = (((_e1140 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1140))) >> bitcast<u32>(1i))))));
-                                let _e1153 = local_18;
-                                let _e1156 = select((3.141593f - _e1151), _e1151, (_e1153 >= 0f));
-                                let _e1159 = (_e647 + ((1f - _e647) * 0.05f));
-                                let _e1160 = (_e1136 * -2f);
-                                let _e1161 = sin(_e682);
-                                let _e1167 = (_e1156 * 2f);
-                                let _e1179 = params.member.member_13;
-                                if (_e1179 == 0u) {
-                                    phi_1816_ = _e586;
+                                let _e1142 = local_15;
+                                let _e1143 = abs(_e1142);
+                                let _e1154 = (((_e1143 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1143))) >> bitcast<u32>(1i))))));
+                                let _e1156 = local_16;
+                                let _e1159 = select((3.141593f - _e1154), _e1154, (_e1156 >= 0f));
+                                let _e1160 = -(_e1159);
+                                let _e1162 = local_17;
+                                let _e1163 = abs(_e1162);
+                                let _e1174 = (((_e1163 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1163))) >> bitcast<u32>(1i))))));
+                                let _e1176 = local_18;
+                                let _e1179 = select((3.141593f - _e1174), _e1174, (_e1176 >= 0f));
+                                let _e1182 = (_e670 + ((1f - _e670) * 0.05f));
+                                let _e1183 = (_e1159 * -2f);
+                                let _e1184 = sin(_e705);
+                                let _e1190 = (_e1179 * 2f);
+                                let _e1202 = params.member.member_13;
+                                if (_e1202 == 0u) {
+                                    phi_1763_ = _e612;
                                 } else {
-                                    let _e1185 = ((_e1136 * -3f) - _e682);
-                                    let _e1193 = ((_e1156 * 3f) - _e682);
-                                    let _e1198 = (_e1137 + _e682);
-                                    let _e1200 = (_e1156 + _e682);
-                                    let _e1205 = (((((((sin((_e1137 - _e682)) * 6f) - sin(_e1185)) + (sin((_e1156 - _e682)) * 6f)) - sin(_e1193)) + (_e1161 * 16f)) - ((sin(_e1198) + sin(_e1200)) * 3f)) * 0.083333336f);
-                                    let _e1217 = (((-(cos(_e1185)) - cos(_e1193)) + (cos(_e682) * 8f)) - ((cos(_e1198) + cos(_e1200)) * 3f));
-                                    let _e1218 = (_e596 * _e1205);
-                                    let _e1219 = (_e595 * _e1205);
-                                    let _e1220 = (_e1217 * -0.083333336f);
-                                    let _e1221 = (-1f * _e411);
-                                    let _e1222 = (-1f * _e409);
-                                    let _e1224 = (1f / (_e1221 + 1f));
-                                    let _e1225 = (_e1224 * _e410);
-                                    let _e1229 = (_e1225 * _e1222);
-                                    let _e1250 = (_e1221 > 0.9997f);
-                                    let _e1251 = (_e1221 < -0.9997f);
-                                    phi_1816_ = (_e586 + vec3<f32>((select(select(((((_e1221 + (_e1225 * _e410)) * _e1218) + (_e1229 * _e1219)) + (_e1222 * _e1220)), _e1218, _e1251), _e1218, _e1250) * _e1159), (select(select((((_e1229 * _e1218) + ((_e1221 + ((_e1224 * _e1222) * _e1222)) * _e1219)) + (-(_e410) * _e1220)), -(_e1219), _e1251), _e1219, _e1250) * _e1159), (select(select((((_e409 * _e1218) + (_e410 * _e1219)) + (_e1221 * _e1220)), (_e1217 * 0.083333336f), _e1251), _e1220, _e1250) * _e1159)));
+                                    let _e1208 = ((_e1159 * -3f) - _e705);
+                                    let _e1216 = ((_e1179 * 3f) - _e705);
+                                    let _e1221 = (_e1160 + _e705);
+                                    let _e1223 = (_e1179 + _e705);
+                                    let _e1228 = (((((((sin((_e1160 - _e705)) * 6f) - sin(_e1208)) + (sin((_e1179 - _e705)) * 6f)) - sin(_e1216)) + (_e1184 * 16f)) - ((sin(_e1221) + sin(_e1223)) * 3f)) * 0.083333336f);
+                                    let _e1240 = (((-(cos(_e1208)) - cos(_e1216)) + (cos(_e705) * 8f)) - ((cos(_e1221) + cos(_e1223)) * 3f));
+                                    let _e1241 = (_e622 * _e1228);
+                                    let _e1242 = (_e621 * _e1228);
+                                    let _e1243 = (_e1240 * -0.083333336f);
+                                    let _e1244 = (-1f * _e437);
+                                    let _e1245 = (-1f * _e435);
+                                    let _e1247 = (1f / (_e1244 + 1f));
+                                    let _e1248 = (_e1247 * _e436);
+                                    let _e1252 = (_e1248 * _e1245);
+                                    let _e1273 = (_e1244 > 0.9997f);
+                                    let _e1274 = (_e1244 < -0.9997f);
+                                    phi_1763_ = (_e612 + vec3<f32>((select(select(((((_e1244 + (_e1248 * _e436)) * _e1241) + (_e1252 * _e1242)) + (_e1245 * _e1243)), _e1241, _e1274), _e1241, _e1273) * _e1182), (select(select((((_e1252 * _e1241) + ((_e1244 + ((_e1247 * _e1245) * _e1245)) * _e1242)) + (-(_e436) * _e1243)), -(_e1242), _e1274), _e1242, _e1273) * _e1182), (select(select((((_e435 * _e1241) + (_e436 * _e1242)) + (_e1244 * _e1243)), (_e1240 * 0.083333336f), _e1274), _e1243, _e1273) * _e1182)));
                                 }
-                                let _e1264 = phi_1816_;
-                                phi_2586_ = _e1117;
-                                phi_821_ = (_e584 + 1u);
-                                phi_824_ = _e1264;
-                                phi_826_ = (_e588 + ((0.25f * (((_e666 + (_e1160 * _e1161)) - cos((_e1160 - _e682))) + ((_e666 + (_e1167 * _e1161)) - cos((_e1167 - _e682))))) * _e1159));
+                                let _e1287 = phi_1763_;
+                                phi_2950_ = _e1140;
+                                phi_768_ = (_e610 + 1u);
+                                phi_771_ = _e1287;
+                                phi_773_ = (_e614 + ((0.25f * (((_e689 + (_e1183 * _e1184)) - cos((_e1183 - _e705))) + ((_e689 + (_e1190 * _e1184)) - cos((_e1190 - _e705))))) * _e1182));
                             } else {
-                                phi_2586_ = _e582;
-                                phi_821_ = u32();
-                                phi_824_ = vec3<f32>();
-                                phi_826_ = f32();
+                                phi_2950_ = _e608;
+                                phi_768_ = u32();
+                                phi_771_ = vec3<f32>();
+                                phi_773_ = f32();
                             }
-                            let _e1267 = phi_2586_;
-                            let _e1269 = phi_821_;
-                            let _e1271 = phi_824_;
-                            let _e1273 = phi_826_;
+                            let _e1290 = phi_2950_;
+                            let _e1292 = phi_768_;
+                            let _e1294 = phi_771_;
+                            let _e1296 = phi_773_;
                             continue;
                             continuing {
-                                phi_2518_ = _e1267;
-                                phi_820_ = _e1269;
-                                phi_823_ = _e1271;
-                                phi_825_ = _e1273;
-                                phi_2585_ = _e1267;
-                                break if !(_e589);
+                                phi_2868_ = _e1290;
+                                phi_767_ = _e1292;
+                                phi_770_ = _e1294;
+                                phi_772_ = _e1296;
+                                phi_2949_ = _e1290;
+                                break if !(_e615);
                             }
                         }
-                        let _e1276 = phi_2585_;
-                        if _e1276 {
+                        let _e1299 = phi_2949_;
+                        if _e1299 {
                             break;
                         }
-                        let _e1279 = local_19;
-                        let _e1282 = local_20;
-                        phi_1822_ = type_22((_e1279 / f32(_e580)), _e1282);
+                        let _e1302 = local_19;
+                        let _e1305 = local_20;
+                        phi_1769_ = type_23((_e1302 / f32(_e606)), _e1305);
                     } else {
-                        phi_1822_ = type_22(1f, vec3<f32>(0f, 0f, 0f));
+                        phi_1769_ = type_23(1f, vec3<f32>(0f, 0f, 0f));
                     }
-                    let _e1285 = phi_1822_;
-                    if _e564 {
-                        let _e1290 = params.member.member_6;
-                        let _e1291 = pow(_e1285.member, _e1290);
-                        if (_e1291 != _e1291) {
-                            phi_2277_ = true;
+                    let _e1308 = phi_1769_;
+                    if _e590 {
+                        let _e1313 = params.member.member_6;
+                        let _e1314 = pow(_e1308.member, _e1313);
+                        if (_e1314 != _e1314) {
+                            phi_2610_ = true;
                         } else {
-                            phi_2277_ = (0.03f >= _e1291);
+                            phi_2610_ = (0.03f >= _e1314);
                         }
-                        let _e1295 = phi_2277_;
-                        let _e1296 = select(_e1291, 0.03f, _e1295);
-                        let _e1299 = params.member.member_13;
-                        if (_e1299 == 0u) {
-                            let _e1301 = (_e1296 * 0.6666667f);
-                            let _e1307 = ((select(0f, select(1f, _e1301, (_e1301 < 1f)), (_e1301 > 0f)) * 255f) + 0.5f);
-                            phi_1898_ = select(select(u32(_e1307), 0u, (_e1307 < 0f)), 4294967295u, (_e1307 > 4294967000f));
+                        let _e1318 = phi_2610_;
+                        let _e1319 = select(_e1314, 0.03f, _e1318);
+                        let _e1322 = params.member.member_13;
+                        if (_e1322 == 0u) {
+                            let _e1324 = (_e1319 * 0.6666667f);
+                            let _e1330 = ((select(0f, select(1f, _e1324, (_e1324 < 1f)), (_e1324 > 0f)) * 255f) + 0.5f);
+                            phi_1845_ = select(select(u32(_e1330), 0u, (_e1330 < 0f)), 4294967295u, (_e1330 > 4294967000f));
                         } else {
-                            let _e1321 = sqrt((((_e1285.member_1.x * _e1285.member_1.x) + (_e1285.member_1.y * _e1285.member_1.y)) + (_e1285.member_1.z * _e1285.member_1.z)));
-                            if (_e1321 > 0f) {
-                                phi_1877_ = (_e1285.member_1 / vec3(_e1321));
+                            let _e1344 = sqrt((((_e1308.member_1.x * _e1308.member_1.x) + (_e1308.member_1.y * _e1308.member_1.y)) + (_e1308.member_1.z * _e1308.member_1.z)));
+                            if (_e1344 > 0f) {
+                                phi_1824_ = (_e1308.member_1 / vec3(_e1344));
                             } else {
-                                phi_1877_ = _e484;
+                                phi_1824_ = vec3<f32>(_e506, _e508, _e509);
                             }
-                            let _e1326 = phi_1877_;
-                            let _e1327 = (_e1296 * 0.6666667f);
-                            let _e1334 = ((_e1326.x * 0.5f) + 0.5f);
-                            let _e1335 = ((_e1326.y * 0.5f) + 0.5f);
-                            let _e1336 = ((_e1326.z * 0.5f) + 0.5f);
-                            let _e1342 = ((select(0f, select(1f, _e1334, (_e1334 < 1f)), (_e1334 > 0f)) * 255f) + 0.5f);
-                            let _e1353 = ((select(0f, select(1f, _e1335, (_e1335 < 1f)), (_e1335 > 0f)) * 255f) + 0.5f);
-                            let _e1367 = ((select(0f, select(1f, _e1336, (_e1336 < 1f)), (_e1336 > 0f)) * 255f) + 0.5f);
-                            let _e1381 = ((select(0f, select(1f, _e1327, (_e1327 < 1f)), (_e1327 > 0f)) * 255f) + 0.5f);
-                            phi_1898_ = (((select(select(u32(_e1342), 0u, (_e1342 < 0f)), 4294967295u, (_e1342 > 4294967000f)) | (select(select(u32(_e1353), 0u, (_e1353 < 0f)), 4294967295u, (_e1353 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1367), 0u, (_e1367 < 0f)), 4294967295u, (_e1367 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1381), 0u, (_e1381 < 0f)), 4294967295u, (_e1381 > 4294967000f)) << bitcast<u32>(24i)));
+                            let _e1349 = phi_1824_;
+                            let _e1350 = (_e1319 * 0.6666667f);
+                            let _e1357 = ((_e1349.x * 0.5f) + 0.5f);
+                            let _e1358 = ((_e1349.y * 0.5f) + 0.5f);
+                            let _e1359 = ((_e1349.z * 0.5f) + 0.5f);
+                            let _e1365 = ((select(0f, select(1f, _e1357, (_e1357 < 1f)), (_e1357 > 0f)) * 255f) + 0.5f);
+                            let _e1376 = ((select(0f, select(1f, _e1358, (_e1358 < 1f)), (_e1358 > 0f)) * 255f) + 0.5f);
+                            let _e1390 = ((select(0f, select(1f, _e1359, (_e1359 < 1f)), (_e1359 > 0f)) * 255f) + 0.5f);
+                            let _e1404 = ((select(0f, select(1f, _e1350, (_e1350 < 1f)), (_e1350 > 0f)) * 255f) + 0.5f);
+                            phi_1845_ = (((select(select(u32(_e1365), 0u, (_e1365 < 0f)), 4294967295u, (_e1365 > 4294967000f)) | (select(select(u32(_e1376), 0u, (_e1376 < 0f)), 4294967295u, (_e1376 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1390), 0u, (_e1390 < 0f)), 4294967295u, (_e1390 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1404), 0u, (_e1404 < 0f)), 4294967295u, (_e1404 > 4294967000f)) << bitcast<u32>(24i)));
                         }
-                        let _e1391 = phi_1898_;
-                        phi_1943_ = _e1391;
+                        let _e1414 = phi_1845_;
+                        phi_1890_ = _e1414;
                     } else {
-                        let _e1394 = params.member.member_13;
-                        phi_1943_ = select(2852159616u, 170u, (_e1394 == 0u));
+                        let _e1417 = params.member.member_13;
+                        phi_1890_ = select(2852159616u, 170u, (_e1417 == 0u));
                     }
-                    let _e1398 = phi_1943_;
-                    if (_e118 < arrayLength((&terms.member))) {
-                    } else {
-                        break;
-                    }
-                    terms.member[_e118] = _e1398;
-                    if (_e118 < arrayLength((&edges.member))) {
+                    let _e1421 = phi_1890_;
+                    if (_e119 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e118] = ((((64u * select(select(u32(_e281), 0u, (_e281 < 0f)), 4294967295u, (_e281 > 4294967000f))) + (16u * select(select(u32(_e309), 0u, (_e309 < 0f)), 4294967295u, (_e309 > 4294967000f)))) + (4u * select(select(u32(_e338), 0u, (_e338 < 0f)), 4294967295u, (_e338 > 4294967000f)))) + select(select(u32(_e367), 0u, (_e367 < 0f)), 4294967295u, (_e367 > 4294967000f)));
+                    terms.member[_e119] = _e1421;
+                    if (_e119 < arrayLength((&edges.member))) {
+                    } else {
+                        break;
+                    }
+                    edges.member[_e119] = ((((64u * _e297) + (16u * _e330)) + (4u * _e364)) + _e398);
                 }
             }
             break;

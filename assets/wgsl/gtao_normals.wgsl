@@ -46,24 +46,28 @@ var<uniform> params: type_19;
 var<storage, read_write> normals: type_10;
 
 fn function_() {
-    var phi_132_: i32;
-    var phi_151_: i32;
-    var phi_230_: i32;
-    var phi_249_: i32;
-    var phi_328_: i32;
-    var phi_347_: i32;
-    var phi_426_: i32;
-    var phi_445_: i32;
-    var phi_524_: i32;
-    var phi_543_: i32;
-    var phi_713_: vec3<f32>;
-    var phi_731_: vec3<f32>;
-    var phi_749_: vec3<f32>;
-    var phi_767_: vec3<f32>;
-    var phi_935_: vec3<f32>;
-    var phi_969_: vec2<f32>;
-    var phi_985_: f32;
-    var phi_1020_: f32;
+    var phi_135_: i32;
+    var phi_154_: i32;
+    var phi_233_: i32;
+    var phi_252_: i32;
+    var phi_331_: i32;
+    var phi_350_: i32;
+    var phi_429_: i32;
+    var phi_448_: i32;
+    var phi_527_: i32;
+    var phi_546_: i32;
+    var phi_1070_: bool;
+    var phi_1085_: bool;
+    var phi_1100_: bool;
+    var phi_1115_: bool;
+    var phi_702_: vec3<f32>;
+    var phi_720_: vec3<f32>;
+    var phi_738_: vec3<f32>;
+    var phi_756_: vec3<f32>;
+    var phi_924_: vec3<f32>;
+    var phi_958_: vec2<f32>;
+    var phi_974_: f32;
+    var phi_1009_: f32;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -86,11 +90,11 @@ fn function_() {
                     }
                     let _e65 = (_e61 < 0i);
                     if _e65 {
-                        phi_132_ = 0i;
+                        phi_135_ = 0i;
                     } else {
-                        phi_132_ = select(_e61, _e63, (_e61 > _e63));
+                        phi_135_ = select(_e61, _e63, (_e61 > _e63));
                     }
-                    let _e69 = phi_132_;
+                    let _e69 = phi_135_;
                     let _e70 = bitcast<u32>(_e69);
                     let _e71 = bitcast<i32>(_e32.y);
                     let _e73 = (bitcast<i32>(_e56) - 1i);
@@ -101,11 +105,11 @@ fn function_() {
                     }
                     let _e75 = (_e71 < 0i);
                     if _e75 {
-                        phi_151_ = 0i;
+                        phi_154_ = 0i;
                     } else {
-                        phi_151_ = select(_e71, _e73, (_e71 > _e73));
+                        phi_154_ = select(_e71, _e73, (_e71 > _e73));
                     }
-                    let _e79 = phi_151_;
+                    let _e79 = phi_154_;
                     let _e80 = bitcast<u32>(_e79);
                     let _e82 = ((_e80 * _e46) + _e70);
                     if (_e82 < _e34) {
@@ -125,22 +129,22 @@ fn function_() {
                         break;
                     }
                     if (_e119 < 0i) {
-                        phi_230_ = 0i;
+                        phi_233_ = 0i;
                     } else {
-                        phi_230_ = select(_e119, _e63, (_e119 > _e63));
+                        phi_233_ = select(_e119, _e63, (_e119 > _e63));
                     }
-                    let _e124 = phi_230_;
+                    let _e124 = phi_233_;
                     let _e125 = bitcast<u32>(_e124);
                     if _e74 {
                     } else {
                         break;
                     }
                     if _e75 {
-                        phi_249_ = 0i;
+                        phi_252_ = 0i;
                     } else {
-                        phi_249_ = select(_e71, _e73, (_e71 > _e73));
+                        phi_252_ = select(_e71, _e73, (_e71 > _e73));
                     }
-                    let _e129 = phi_249_;
+                    let _e129 = phi_252_;
                     let _e130 = bitcast<u32>(_e129);
                     let _e132 = ((_e130 * _e46) + _e125);
                     if (_e132 < _e34) {
@@ -155,22 +159,22 @@ fn function_() {
                         break;
                     }
                     if (_e155 < 0i) {
-                        phi_328_ = 0i;
+                        phi_331_ = 0i;
                     } else {
-                        phi_328_ = select(_e155, _e63, (_e155 > _e63));
+                        phi_331_ = select(_e155, _e63, (_e155 > _e63));
                     }
-                    let _e160 = phi_328_;
+                    let _e160 = phi_331_;
                     let _e161 = bitcast<u32>(_e160);
                     if _e74 {
                     } else {
                         break;
                     }
                     if _e75 {
-                        phi_347_ = 0i;
+                        phi_350_ = 0i;
                     } else {
-                        phi_347_ = select(_e71, _e73, (_e71 > _e73));
+                        phi_350_ = select(_e71, _e73, (_e71 > _e73));
                     }
-                    let _e165 = phi_347_;
+                    let _e165 = phi_350_;
                     let _e166 = bitcast<u32>(_e165);
                     let _e168 = ((_e166 * _e46) + _e161);
                     if (_e168 < _e34) {
@@ -184,11 +188,11 @@ fn function_() {
                         break;
                     }
                     if _e65 {
-                        phi_426_ = 0i;
+                        phi_429_ = 0i;
                     } else {
-                        phi_426_ = select(_e61, _e63, (_e61 > _e63));
+                        phi_429_ = select(_e61, _e63, (_e61 > _e63));
                     }
-                    let _e194 = phi_426_;
+                    let _e194 = phi_429_;
                     let _e195 = bitcast<u32>(_e194);
                     let _e196 = (_e71 + -1i);
                     if _e74 {
@@ -196,11 +200,11 @@ fn function_() {
                         break;
                     }
                     if (_e196 < 0i) {
-                        phi_445_ = 0i;
+                        phi_448_ = 0i;
                     } else {
-                        phi_445_ = select(_e196, _e73, (_e196 > _e73));
+                        phi_448_ = select(_e196, _e73, (_e196 > _e73));
                     }
-                    let _e201 = phi_445_;
+                    let _e201 = phi_448_;
                     let _e202 = bitcast<u32>(_e201);
                     let _e204 = ((_e202 * _e46) + _e195);
                     if (_e204 < _e34) {
@@ -214,11 +218,11 @@ fn function_() {
                         break;
                     }
                     if _e65 {
-                        phi_524_ = 0i;
+                        phi_527_ = 0i;
                     } else {
-                        phi_524_ = select(_e61, _e63, (_e61 > _e63));
+                        phi_527_ = select(_e61, _e63, (_e61 > _e63));
                     }
-                    let _e230 = phi_524_;
+                    let _e230 = phi_527_;
                     let _e231 = bitcast<u32>(_e230);
                     let _e232 = (_e71 + 1i);
                     if _e74 {
@@ -226,11 +230,11 @@ fn function_() {
                         break;
                     }
                     if (_e232 < 0i) {
-                        phi_543_ = 0i;
+                        phi_546_ = 0i;
                     } else {
-                        phi_543_ = select(_e232, _e73, (_e232 > _e73));
+                        phi_546_ = select(_e232, _e73, (_e232 > _e73));
                     }
-                    let _e237 = phi_543_;
+                    let _e237 = phi_546_;
                     let _e238 = bitcast<u32>(_e237);
                     let _e240 = ((_e238 * _e46) + _e231);
                     if (_e240 < _e34) {
@@ -243,109 +247,133 @@ fn function_() {
                     let _e264 = (_e176 - _e94);
                     let _e265 = (_e212 - _e94);
                     let _e266 = (_e248 - _e94);
-                    let _e267 = (_e264 - _e263);
-                    let _e269 = (_e266 - _e265);
-                    let _e277 = abs(_e263);
-                    let _e278 = abs(_e264);
-                    let _e279 = abs(_e265);
-                    let _e280 = abs(_e266);
-                    let _e281 = abs((_e263 + (_e267 * 0.5f)));
-                    let _e282 = abs((_e264 + (_e267 * -0.5f)));
-                    let _e283 = abs((_e265 + (_e269 * 0.5f)));
-                    let _e284 = abs((_e266 + (_e269 * -0.5f)));
-                    let _e293 = (_e94 * 0.011f);
-                    let _e298 = (1.25f - (select(_e281, _e277, (_e277 < _e281)) / _e293));
-                    let _e302 = select(0f, select(1f, _e298, (_e298 < 1f)), (_e298 > 0f));
-                    let _e303 = (1.25f - (select(_e282, _e278, (_e278 < _e282)) / _e293));
-                    let _e307 = select(0f, select(1f, _e303, (_e303 < 1f)), (_e303 > 0f));
-                    let _e308 = (1.25f - (select(_e283, _e279, (_e279 < _e283)) / _e293));
-                    let _e312 = select(0f, select(1f, _e308, (_e308 < 1f)), (_e308 > 0f));
-                    let _e313 = (1.25f - (select(_e284, _e280, (_e280 < _e284)) / _e293));
-                    let _e317 = select(0f, select(1f, _e313, (_e313 < 1f)), (_e313 > 0f));
-                    let _e318 = (((((((f32(_e125) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e140) - _e109);
-                    let _e319 = (((((((f32(_e130) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e140) - _e118);
-                    let _e325 = sqrt((((_e318 * _e318) + (_e319 * _e319)) + (_e263 * _e263)));
-                    if (_e325 > 0f) {
-                        phi_713_ = vec3<f32>((_e318 / _e325), (_e319 / _e325), (_e263 / _e325));
+                    let _e268 = ((_e264 - _e263) * 0.5f);
+                    let _e270 = ((_e266 - _e265) * 0.5f);
+                    let _e271 = (_e94 * 0.011f);
+                    let _e273 = abs(_e263);
+                    let _e274 = abs((_e263 + _e268));
+                    if (_e273 != _e273) {
+                        phi_1070_ = true;
                     } else {
-                        phi_713_ = vec3<f32>(0f, 0f, 0f);
+                        phi_1070_ = (_e274 <= _e273);
                     }
-                    let _e332 = phi_713_;
-                    let _e333 = (((((((f32(_e161) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e176) - _e109);
-                    let _e334 = (((((((f32(_e166) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e176) - _e118);
-                    let _e340 = sqrt((((_e333 * _e333) + (_e334 * _e334)) + (_e264 * _e264)));
-                    if (_e340 > 0f) {
-                        phi_731_ = vec3<f32>((_e333 / _e340), (_e334 / _e340), (_e264 / _e340));
+                    let _e278 = phi_1070_;
+                    let _e281 = (1.25f - (select(_e273, _e274, _e278) / _e271));
+                    let _e285 = select(0f, select(1f, _e281, (_e281 < 1f)), (_e281 > 0f));
+                    let _e287 = abs(_e264);
+                    let _e288 = abs((_e264 - _e268));
+                    if (_e287 != _e287) {
+                        phi_1085_ = true;
                     } else {
-                        phi_731_ = vec3<f32>(0f, 0f, 0f);
+                        phi_1085_ = (_e288 <= _e287);
                     }
-                    let _e347 = phi_731_;
-                    let _e348 = (((((((f32(_e195) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e212) - _e109);
-                    let _e349 = (((((((f32(_e202) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e212) - _e118);
-                    let _e355 = sqrt((((_e348 * _e348) + (_e349 * _e349)) + (_e265 * _e265)));
-                    if (_e355 > 0f) {
-                        phi_749_ = vec3<f32>((_e348 / _e355), (_e349 / _e355), (_e265 / _e355));
+                    let _e292 = phi_1085_;
+                    let _e295 = (1.25f - (select(_e287, _e288, _e292) / _e271));
+                    let _e299 = select(0f, select(1f, _e295, (_e295 < 1f)), (_e295 > 0f));
+                    let _e301 = abs(_e265);
+                    let _e302 = abs((_e265 + _e270));
+                    if (_e301 != _e301) {
+                        phi_1100_ = true;
                     } else {
-                        phi_749_ = vec3<f32>(0f, 0f, 0f);
+                        phi_1100_ = (_e302 <= _e301);
                     }
-                    let _e362 = phi_749_;
-                    let _e363 = (((((((f32(_e231) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e248) - _e109);
-                    let _e364 = (((((((f32(_e238) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e248) - _e118);
-                    let _e370 = sqrt((((_e363 * _e363) + (_e364 * _e364)) + (_e266 * _e266)));
-                    if (_e370 > 0f) {
-                        phi_767_ = vec3<f32>((_e363 / _e370), (_e364 / _e370), (_e266 / _e370));
+                    let _e306 = phi_1100_;
+                    let _e309 = (1.25f - (select(_e301, _e302, _e306) / _e271));
+                    let _e313 = select(0f, select(1f, _e309, (_e309 < 1f)), (_e309 > 0f));
+                    let _e315 = abs(_e266);
+                    let _e316 = abs((_e266 - _e270));
+                    if (_e315 != _e315) {
+                        phi_1115_ = true;
                     } else {
-                        phi_767_ = vec3<f32>(0f, 0f, 0f);
+                        phi_1115_ = (_e316 <= _e315);
                     }
-                    let _e377 = phi_767_;
-                    let _e394 = ((_e302 * _e312) + 0.01f);
-                    let _e398 = select(0f, select(1f, _e394, (_e394 < 1f)), (_e394 > 0f));
-                    let _e415 = ((_e312 * _e307) + 0.01f);
-                    let _e419 = select(0f, select(1f, _e415, (_e415 < 1f)), (_e415 > 0f));
-                    let _e439 = ((_e307 * _e317) + 0.01f);
-                    let _e443 = select(0f, select(1f, _e439, (_e439 < 1f)), (_e439 > 0f));
-                    let _e460 = ((_e317 * _e302) + 0.01f);
-                    let _e464 = select(0f, select(1f, _e460, (_e460 < 1f)), (_e460 > 0f));
-                    let _e468 = ((((((_e332.y * _e362.z) - (_e362.y * _e332.z)) * _e398) + (((_e362.y * _e347.z) - (_e347.y * _e362.z)) * _e419)) + (((_e347.y * _e377.z) - (_e377.y * _e347.z)) * _e443)) + (((_e377.y * _e332.z) - (_e332.y * _e377.z)) * _e464));
-                    let _e469 = ((((((_e332.z * _e362.x) - (_e362.z * _e332.x)) * _e398) + (((_e362.z * _e347.x) - (_e347.z * _e362.x)) * _e419)) + (((_e347.z * _e377.x) - (_e377.z * _e347.x)) * _e443)) + (((_e377.z * _e332.x) - (_e332.z * _e377.x)) * _e464));
-                    let _e470 = ((((((_e332.x * _e362.y) - (_e362.x * _e332.y)) * _e398) + (((_e362.x * _e347.y) - (_e347.x * _e362.y)) * _e419)) + (((_e347.x * _e377.y) - (_e377.x * _e347.y)) * _e443)) + (((_e377.x * _e332.y) - (_e332.x * _e377.y)) * _e464));
-                    let _e476 = sqrt((((_e468 * _e468) + (_e469 * _e469)) + (_e470 * _e470)));
-                    if (_e476 > 0f) {
-                        phi_935_ = vec3<f32>((_e468 / _e476), (_e469 / _e476), (_e470 / _e476));
+                    let _e320 = phi_1115_;
+                    let _e323 = (1.25f - (select(_e315, _e316, _e320) / _e271));
+                    let _e327 = select(0f, select(1f, _e323, (_e323 < 1f)), (_e323 > 0f));
+                    let _e328 = (((((((f32(_e125) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e140) - _e109);
+                    let _e329 = (((((((f32(_e130) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e140) - _e118);
+                    let _e335 = sqrt((((_e328 * _e328) + (_e329 * _e329)) + (_e263 * _e263)));
+                    if (_e335 > 0f) {
+                        phi_702_ = vec3<f32>((_e328 / _e335), (_e329 / _e335), (_e263 / _e335));
                     } else {
-                        phi_935_ = vec3<f32>(0f, 0f, 0f);
+                        phi_702_ = vec3<f32>(0f, 0f, 0f);
                     }
-                    let _e483 = phi_935_;
-                    let _e487 = -(_e483.z);
-                    let _e492 = ((abs(_e483.x) + abs(_e483.y)) + abs(_e487));
-                    let _e493 = (_e483.x / _e492);
-                    let _e494 = (_e483.y / _e492);
-                    if (_e487 < 0f) {
-                        phi_969_ = vec2<f32>(((1f - abs(_e494)) * select(1f, -1f, (_e493 < 0f))), ((1f - abs(_e493)) * select(1f, -1f, (_e494 < 0f))));
+                    let _e342 = phi_702_;
+                    let _e343 = (((((((f32(_e161) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e176) - _e109);
+                    let _e344 = (((((((f32(_e166) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e176) - _e118);
+                    let _e350 = sqrt((((_e343 * _e343) + (_e344 * _e344)) + (_e264 * _e264)));
+                    if (_e350 > 0f) {
+                        phi_720_ = vec3<f32>((_e343 / _e350), (_e344 / _e350), (_e264 / _e350));
                     } else {
-                        phi_969_ = vec2<f32>(_e493, _e494);
+                        phi_720_ = vec3<f32>(0f, 0f, 0f);
                     }
-                    let _e509 = phi_969_;
-                    if (_e509.x != _e509.x) {
-                        phi_985_ = 0f;
+                    let _e357 = phi_720_;
+                    let _e358 = (((((((f32(_e195) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e212) - _e109);
+                    let _e359 = (((((((f32(_e202) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e212) - _e118);
+                    let _e365 = sqrt((((_e358 * _e358) + (_e359 * _e359)) + (_e265 * _e265)));
+                    if (_e365 > 0f) {
+                        phi_738_ = vec3<f32>((_e358 / _e365), (_e359 / _e365), (_e265 / _e365));
                     } else {
-                        phi_985_ = select(-1f, select(1f, _e509.x, (_e509.x < 1f)), (_e509.x > -1f));
+                        phi_738_ = vec3<f32>(0f, 0f, 0f);
                     }
-                    let _e517 = phi_985_;
-                    let _e522 = ((_e517 * 127f) + (0.5f * select(1f, -1f, (_e517 < 0f))));
-                    if (_e509.y != _e509.y) {
-                        phi_1020_ = 0f;
+                    let _e372 = phi_738_;
+                    let _e373 = (((((((f32(_e231) + 0.5f) / _e41) * 2f) - 1f) * _e107) * _e248) - _e109);
+                    let _e374 = (((((((f32(_e238) + 0.5f) / _e51) * -2f) + 1f) * _e116) * _e248) - _e118);
+                    let _e380 = sqrt((((_e373 * _e373) + (_e374 * _e374)) + (_e266 * _e266)));
+                    if (_e380 > 0f) {
+                        phi_756_ = vec3<f32>((_e373 / _e380), (_e374 / _e380), (_e266 / _e380));
                     } else {
-                        phi_1020_ = select(-1f, select(1f, _e509.y, (_e509.y < 1f)), (_e509.y > -1f));
+                        phi_756_ = vec3<f32>(0f, 0f, 0f);
                     }
-                    let _e539 = phi_1020_;
-                    let _e544 = ((_e539 * 127f) + (0.5f * select(1f, -1f, (_e539 < 0f))));
-                    let _e558 = ((_e32.y * _e46) + _e32.x);
-                    if (_e558 < arrayLength((&normals.member))) {
+                    let _e387 = phi_756_;
+                    let _e404 = ((_e285 * _e313) + 0.01f);
+                    let _e408 = select(0f, select(1f, _e404, (_e404 < 1f)), (_e404 > 0f));
+                    let _e425 = ((_e313 * _e299) + 0.01f);
+                    let _e429 = select(0f, select(1f, _e425, (_e425 < 1f)), (_e425 > 0f));
+                    let _e449 = ((_e299 * _e327) + 0.01f);
+                    let _e453 = select(0f, select(1f, _e449, (_e449 < 1f)), (_e449 > 0f));
+                    let _e470 = ((_e327 * _e285) + 0.01f);
+                    let _e474 = select(0f, select(1f, _e470, (_e470 < 1f)), (_e470 > 0f));
+                    let _e478 = ((((((_e342.y * _e372.z) - (_e372.y * _e342.z)) * _e408) + (((_e372.y * _e357.z) - (_e357.y * _e372.z)) * _e429)) + (((_e357.y * _e387.z) - (_e387.y * _e357.z)) * _e453)) + (((_e387.y * _e342.z) - (_e342.y * _e387.z)) * _e474));
+                    let _e479 = ((((((_e342.z * _e372.x) - (_e372.z * _e342.x)) * _e408) + (((_e372.z * _e357.x) - (_e357.z * _e372.x)) * _e429)) + (((_e357.z * _e387.x) - (_e387.z * _e357.x)) * _e453)) + (((_e387.z * _e342.x) - (_e342.z * _e387.x)) * _e474));
+                    let _e480 = ((((((_e342.x * _e372.y) - (_e372.x * _e342.y)) * _e408) + (((_e372.x * _e357.y) - (_e357.x * _e372.y)) * _e429)) + (((_e357.x * _e387.y) - (_e387.x * _e357.y)) * _e453)) + (((_e387.x * _e342.y) - (_e342.x * _e387.y)) * _e474));
+                    let _e486 = sqrt((((_e478 * _e478) + (_e479 * _e479)) + (_e480 * _e480)));
+                    if (_e486 > 0f) {
+                        phi_924_ = vec3<f32>((_e478 / _e486), (_e479 / _e486), (_e480 / _e486));
+                    } else {
+                        phi_924_ = vec3<f32>(0f, 0f, 0f);
+                    }
+                    let _e493 = phi_924_;
+                    let _e497 = -(_e493.z);
+                    let _e502 = ((abs(_e493.x) + abs(_e493.y)) + abs(_e497));
+                    let _e503 = (_e493.x / _e502);
+                    let _e504 = (_e493.y / _e502);
+                    if (_e497 < 0f) {
+                        phi_958_ = vec2<f32>(((1f - abs(_e504)) * select(1f, -1f, (_e503 < 0f))), ((1f - abs(_e503)) * select(1f, -1f, (_e504 < 0f))));
+                    } else {
+                        phi_958_ = vec2<f32>(_e503, _e504);
+                    }
+                    let _e519 = phi_958_;
+                    if (_e519.x != _e519.x) {
+                        phi_974_ = 0f;
+                    } else {
+                        phi_974_ = select(-1f, select(1f, _e519.x, (_e519.x < 1f)), (_e519.x > -1f));
+                    }
+                    let _e527 = phi_974_;
+                    let _e532 = ((_e527 * 127f) + (0.5f * select(1f, -1f, (_e527 < 0f))));
+                    if (_e519.y != _e519.y) {
+                        phi_1009_ = 0f;
+                    } else {
+                        phi_1009_ = select(-1f, select(1f, _e519.y, (_e519.y < 1f)), (_e519.y > -1f));
+                    }
+                    let _e549 = phi_1009_;
+                    let _e554 = ((_e549 * 127f) + (0.5f * select(1f, -1f, (_e549 < 0f))));
+                    let _e568 = ((_e32.y * _e46) + _e32.x);
+                    if (_e568 < arrayLength((&normals.member))) {
                     } else {
                         break;
                     }
-                    normals.member[_e558] = ((bitcast<u32>(select(0i, select(select(i32(_e522), i32(-2147483648), (_e522 < -2147483600f)), 2147483647i, (_e522 > 2147483500f)), (_e522 == _e522))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e544), i32(-2147483648), (_e544 < -2147483600f)), 2147483647i, (_e544 > 2147483500f)), (_e544 == _e544))) & 255u) << bitcast<u32>(8i)));
+                    normals.member[_e568] = ((bitcast<u32>(select(0i, select(select(i32(_e532), i32(-2147483648), (_e532 < -2147483600f)), 2147483647i, (_e532 > 2147483500f)), (_e532 == _e532))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e554), i32(-2147483648), (_e554 < -2147483600f)), 2147483647i, (_e554 > 2147483500f)), (_e554 == _e554))) & 255u) << bitcast<u32>(8i)));
                 }
             }
             break;

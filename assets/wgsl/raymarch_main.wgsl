@@ -77,777 +77,837 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_341_: i32;
-    var phi_360_: i32;
-    var phi_411_: i32;
-    var phi_430_: i32;
-    var phi_481_: i32;
-    var phi_500_: i32;
-    var phi_551_: i32;
-    var phi_570_: i32;
-    var phi_1722_: f32;
-    var phi_1726_: f32;
-    var phi_1727_: bool;
-    var phi_1765_: f32;
-    var phi_1769_: f32;
-    var phi_1770_: bool;
-    var phi_1808_: f32;
-    var phi_1812_: f32;
-    var phi_1813_: bool;
+    var phi_369_: i32;
+    var phi_388_: i32;
+    var phi_439_: i32;
+    var phi_458_: i32;
+    var phi_509_: i32;
+    var phi_528_: i32;
+    var phi_579_: i32;
+    var phi_598_: i32;
+    var phi_1721_: bool;
+    var phi_1736_: bool;
+    var phi_1751_: bool;
+    var phi_1766_: bool;
+    var phi_1797_: f32;
+    var phi_1801_: f32;
+    var phi_1802_: bool;
+    var phi_1824_: u32;
     var phi_1851_: f32;
     var phi_1855_: f32;
     var phi_1856_: bool;
-    var phi_1879_: bool;
-    var phi_1894_: bool;
-    var phi_827_: vec2<f32>;
-    var phi_858_: vec3<f32>;
-    var phi_864_: u32;
-    var phi_867_: u32;
-    var phi_869_: u32;
-    var phi_871_: u32;
-    var phi_900_: u32;
-    var phi_901_: u32;
-    var phi_902_: u32;
-    var phi_903_: u32;
-    var phi_865_: u32;
-    var phi_868_: u32;
-    var phi_870_: u32;
-    var phi_872_: u32;
+    var phi_1878_: u32;
+    var phi_1905_: f32;
+    var phi_1909_: f32;
+    var phi_1910_: bool;
+    var phi_1932_: u32;
+    var phi_1959_: f32;
+    var phi_1963_: f32;
+    var phi_1964_: bool;
+    var phi_1986_: u32;
+    var phi_1997_: bool;
+    var phi_2012_: bool;
+    var phi_841_: vec2<f32>;
+    var phi_872_: vec3<f32>;
+    var phi_878_: u32;
+    var phi_881_: u32;
+    var phi_883_: u32;
+    var phi_885_: u32;
+    var phi_914_: u32;
+    var phi_915_: u32;
+    var phi_916_: u32;
+    var phi_917_: u32;
+    var phi_879_: u32;
+    var phi_882_: u32;
+    var phi_884_: u32;
+    var phi_886_: u32;
     var local: u32;
-    var phi_934_: type_28;
-    var phi_2069_: bool;
-    var phi_969_: u32;
-    var phi_972_: f32;
-    var phi_1909_: bool;
-    var phi_1118_: u32;
-    var phi_1121_: f32;
-    var phi_1123_: bool;
-    var phi_1125_: bool;
-    var phi_1127_: f32;
-    var phi_1129_: f32;
-    var phi_1233_: u32;
-    var phi_1254_: u32;
-    var phi_1348_: u32;
-    var phi_1379_: u32;
-    var phi_1992_: bool;
-    var phi_2007_: bool;
-    var phi_1968_: vec2<f32>;
-    var phi_1519_: u32;
-    var phi_1521_: u32;
-    var phi_1522_: f32;
-    var phi_1523_: bool;
-    var phi_1524_: bool;
-    var phi_1525_: f32;
-    var phi_1528_: bool;
-    var phi_1529_: bool;
-    var phi_1119_: u32;
-    var phi_1122_: f32;
-    var phi_1124_: bool;
-    var phi_1126_: bool;
-    var phi_1128_: f32;
-    var phi_1130_: f32;
-    var phi_1533_: bool;
-    var phi_1535_: bool;
-    var phi_1536_: bool;
-    var phi_2021_: bool;
-    var phi_1695_: bool;
-    var phi_1694_: bool;
-    var phi_1693_: bool;
-    var phi_1692_: bool;
-    var phi_1690_: f32;
+    var phi_948_: type_28;
+    var phi_2187_: bool;
+    var phi_983_: u32;
+    var phi_986_: f32;
+    var phi_2027_: bool;
+    var phi_1132_: u32;
+    var phi_1135_: f32;
+    var phi_1137_: bool;
+    var phi_1139_: bool;
+    var phi_1141_: f32;
+    var phi_1143_: f32;
+    var phi_1247_: u32;
+    var phi_1268_: u32;
+    var phi_1362_: u32;
+    var phi_1393_: u32;
+    var phi_2110_: bool;
+    var phi_2125_: bool;
+    var phi_2086_: vec2<f32>;
+    var phi_1533_: u32;
+    var phi_1535_: u32;
+    var phi_1536_: f32;
+    var phi_1537_: bool;
+    var phi_1538_: bool;
+    var phi_1539_: f32;
+    var phi_1542_: bool;
+    var phi_1543_: bool;
+    var phi_1133_: u32;
+    var phi_1136_: f32;
+    var phi_1138_: bool;
+    var phi_1140_: bool;
+    var phi_1142_: f32;
+    var phi_1144_: f32;
+    var phi_1547_: bool;
+    var phi_1549_: bool;
+    var phi_1550_: bool;
+    var phi_2139_: bool;
+    var phi_1709_: bool;
+    var phi_1708_: bool;
+    var phi_1707_: bool;
+    var phi_1706_: bool;
+    var phi_1704_: f32;
     var local_1: f32;
     var local_2: bool;
     var local_3: f32;
     var local_4: bool;
-    var phi_1576_: f32;
-    var phi_2147_: bool;
-    var phi_970_: u32;
-    var phi_973_: f32;
-    var phi_2146_: bool;
+    var phi_1590_: f32;
+    var phi_2277_: bool;
+    var phi_984_: u32;
+    var phi_987_: f32;
+    var phi_2276_: bool;
     var local_5: f32;
-    var phi_1647_: type_29;
+    var phi_1661_: type_29;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e60 = id_1;
-            let _e62 = arrayLength((&depth.member));
-            let _e64 = arrayLength((&normals.member));
-            let _e66 = arrayLength((&kernel.member));
-            let _e77 = params.member.member.member[0u];
-            let _e82 = select(select(u32(_e77), 0u, (_e77 < 0f)), 4294967295u, (_e77 > 4294967000f));
-            let _e87 = params.member.member.member[1u];
-            let _e92 = select(select(u32(_e87), 0u, (_e87 < 0f)), 4294967295u, (_e87 > 4294967000f));
-            if (_e60.x >= _e82) {
+            let _e59 = id_1;
+            let _e61 = arrayLength((&depth.member));
+            let _e63 = arrayLength((&normals.member));
+            let _e65 = arrayLength((&kernel.member));
+            let _e76 = params.member.member.member[0u];
+            let _e81 = select(select(u32(_e76), 0u, (_e76 < 0f)), 4294967295u, (_e76 > 4294967000f));
+            let _e86 = params.member.member.member[1u];
+            let _e91 = select(select(u32(_e86), 0u, (_e86 < 0f)), 4294967295u, (_e86 > 4294967000f));
+            if (_e59.x >= _e81) {
             } else {
-                if (_e60.y >= _e92) {
+                if (_e59.y >= _e91) {
                 } else {
-                    let _e98 = ((_e60.y * _e82) + _e60.x);
-                    let _e99 = (_e98 < _e62);
-                    if _e99 {
+                    let _e97 = ((_e59.y * _e81) + _e59.x);
+                    let _e98 = (_e97 < _e61);
+                    if _e98 {
                     } else {
                         break;
                     }
-                    let _e102 = depth.member[_e98];
-                    let _e106 = params.member.member.member_3;
-                    let _e109 = select(false, (_e102 < _e106), (_e102 > 0f));
-                    let _e110 = select(_e106, _e102, _e109);
-                    let _e111 = bitcast<i32>(_e60.x);
-                    let _e112 = (_e111 + -1i);
-                    let _e114 = (bitcast<i32>(_e82) - 1i);
-                    let _e115 = (0i <= _e114);
-                    if _e115 {
+                    let _e101 = depth.member[_e97];
+                    let _e105 = params.member.member.member_3;
+                    let _e108 = select(false, (_e101 < _e105), (_e101 > 0f));
+                    let _e109 = select(_e105, _e101, _e108);
+                    let _e110 = bitcast<i32>(_e59.x);
+                    let _e111 = (_e110 + -1i);
+                    let _e113 = (bitcast<i32>(_e81) - 1i);
+                    let _e114 = (0i <= _e113);
+                    if _e114 {
                     } else {
                         break;
                     }
-                    if (_e112 < 0i) {
-                        phi_341_ = 0i;
+                    if (_e111 < 0i) {
+                        phi_369_ = 0i;
                     } else {
-                        phi_341_ = select(_e112, _e114, (_e112 > _e114));
+                        phi_369_ = select(_e111, _e113, (_e111 > _e113));
                     }
-                    let _e120 = phi_341_;
-                    let _e122 = bitcast<i32>(_e60.y);
-                    let _e124 = (bitcast<i32>(_e92) - 1i);
-                    let _e125 = (0i <= _e124);
+                    let _e119 = phi_369_;
+                    let _e121 = bitcast<i32>(_e59.y);
+                    let _e123 = (bitcast<i32>(_e91) - 1i);
+                    let _e124 = (0i <= _e123);
+                    if _e124 {
+                    } else {
+                        break;
+                    }
+                    let _e125 = (_e121 < 0i);
                     if _e125 {
+                        phi_388_ = 0i;
+                    } else {
+                        phi_388_ = select(_e121, _e123, (_e121 > _e123));
+                    }
+                    let _e129 = phi_388_;
+                    let _e132 = ((bitcast<u32>(_e129) * _e81) + bitcast<u32>(_e119));
+                    if (_e132 < _e61) {
                     } else {
                         break;
                     }
-                    let _e126 = (_e122 < 0i);
-                    if _e126 {
-                        phi_360_ = 0i;
-                    } else {
-                        phi_360_ = select(_e122, _e124, (_e122 > _e124));
-                    }
-                    let _e130 = phi_360_;
-                    let _e133 = ((bitcast<u32>(_e130) * _e82) + bitcast<u32>(_e120));
-                    if (_e133 < _e62) {
+                    let _e136 = depth.member[_e132];
+                    let _e141 = (_e110 + 1i);
+                    if _e114 {
                     } else {
                         break;
                     }
-                    let _e137 = depth.member[_e133];
-                    let _e142 = (_e111 + 1i);
-                    if _e115 {
+                    if (_e141 < 0i) {
+                        phi_439_ = 0i;
+                    } else {
+                        phi_439_ = select(_e141, _e113, (_e141 > _e113));
+                    }
+                    let _e146 = phi_439_;
+                    if _e124 {
                     } else {
                         break;
                     }
-                    if (_e142 < 0i) {
-                        phi_411_ = 0i;
-                    } else {
-                        phi_411_ = select(_e142, _e114, (_e142 > _e114));
-                    }
-                    let _e147 = phi_411_;
                     if _e125 {
+                        phi_458_ = 0i;
+                    } else {
+                        phi_458_ = select(_e121, _e123, (_e121 > _e123));
+                    }
+                    let _e151 = phi_458_;
+                    let _e154 = ((bitcast<u32>(_e151) * _e81) + bitcast<u32>(_e146));
+                    if (_e154 < _e61) {
                     } else {
                         break;
                     }
-                    if _e126 {
-                        phi_430_ = 0i;
-                    } else {
-                        phi_430_ = select(_e122, _e124, (_e122 > _e124));
-                    }
-                    let _e152 = phi_430_;
-                    let _e155 = ((bitcast<u32>(_e152) * _e82) + bitcast<u32>(_e147));
-                    if (_e155 < _e62) {
+                    let _e158 = depth.member[_e154];
+                    if _e114 {
                     } else {
                         break;
                     }
-                    let _e159 = depth.member[_e155];
-                    if _e115 {
+                    let _e163 = (_e110 < 0i);
+                    if _e163 {
+                        phi_509_ = 0i;
+                    } else {
+                        phi_509_ = select(_e110, _e113, (_e110 > _e113));
+                    }
+                    let _e167 = phi_509_;
+                    let _e169 = (_e121 + -1i);
+                    if _e124 {
                     } else {
                         break;
                     }
-                    let _e164 = (_e111 < 0i);
-                    if _e164 {
-                        phi_481_ = 0i;
+                    if (_e169 < 0i) {
+                        phi_528_ = 0i;
                     } else {
-                        phi_481_ = select(_e111, _e114, (_e111 > _e114));
+                        phi_528_ = select(_e169, _e123, (_e169 > _e123));
                     }
-                    let _e168 = phi_481_;
-                    let _e170 = (_e122 + -1i);
-                    if _e125 {
-                    } else {
-                        break;
-                    }
-                    if (_e170 < 0i) {
-                        phi_500_ = 0i;
-                    } else {
-                        phi_500_ = select(_e170, _e124, (_e170 > _e124));
-                    }
-                    let _e175 = phi_500_;
-                    let _e178 = ((bitcast<u32>(_e175) * _e82) + bitcast<u32>(_e168));
-                    if (_e178 < _e62) {
+                    let _e174 = phi_528_;
+                    let _e177 = ((bitcast<u32>(_e174) * _e81) + bitcast<u32>(_e167));
+                    if (_e177 < _e61) {
                     } else {
                         break;
                     }
-                    let _e182 = depth.member[_e178];
-                    if _e115 {
+                    let _e181 = depth.member[_e177];
+                    if _e114 {
                     } else {
                         break;
                     }
-                    if _e164 {
-                        phi_551_ = 0i;
+                    if _e163 {
+                        phi_579_ = 0i;
                     } else {
-                        phi_551_ = select(_e111, _e114, (_e111 > _e114));
+                        phi_579_ = select(_e110, _e113, (_e110 > _e113));
                     }
-                    let _e190 = phi_551_;
-                    let _e192 = (_e122 + 1i);
-                    if _e125 {
-                    } else {
-                        break;
-                    }
-                    if (_e192 < 0i) {
-                        phi_570_ = 0i;
-                    } else {
-                        phi_570_ = select(_e192, _e124, (_e192 > _e124));
-                    }
-                    let _e197 = phi_570_;
-                    let _e200 = ((bitcast<u32>(_e197) * _e82) + bitcast<u32>(_e190));
-                    if (_e200 < _e62) {
+                    let _e189 = phi_579_;
+                    let _e191 = (_e121 + 1i);
+                    if _e124 {
                     } else {
                         break;
                     }
-                    let _e204 = depth.member[_e200];
-                    let _e209 = (select(_e106, _e137, select(false, (_e137 < _e106), (_e137 > 0f))) - _e110);
-                    let _e210 = (select(_e106, _e159, select(false, (_e159 < _e106), (_e159 > 0f))) - _e110);
-                    let _e211 = (select(_e106, _e182, select(false, (_e182 < _e106), (_e182 > 0f))) - _e110);
-                    let _e212 = (select(_e106, _e204, select(false, (_e204 < _e106), (_e204 > 0f))) - _e110);
-                    let _e213 = (_e210 - _e209);
-                    let _e215 = (_e212 - _e211);
-                    let _e223 = abs(_e209);
-                    let _e224 = abs(_e210);
-                    let _e225 = abs(_e211);
-                    let _e226 = abs(_e212);
-                    let _e227 = abs((_e209 + (_e213 * 0.5f)));
-                    let _e228 = abs((_e210 + (_e213 * -0.5f)));
-                    let _e229 = abs((_e211 + (_e215 * 0.5f)));
-                    let _e230 = abs((_e212 + (_e215 * -0.5f)));
-                    let _e239 = (_e110 * 0.011f);
-                    let _e244 = (1.25f - (select(_e227, _e223, (_e223 < _e227)) / _e239));
-                    let _e248 = select(0f, select(1f, _e244, (_e244 < 1f)), (_e244 > 0f));
-                    let _e249 = (1.25f - (select(_e228, _e224, (_e224 < _e228)) / _e239));
-                    let _e253 = select(0f, select(1f, _e249, (_e249 < 1f)), (_e249 > 0f));
-                    let _e254 = (1.25f - (select(_e229, _e225, (_e225 < _e229)) / _e239));
+                    if (_e191 < 0i) {
+                        phi_598_ = 0i;
+                    } else {
+                        phi_598_ = select(_e191, _e123, (_e191 > _e123));
+                    }
+                    let _e196 = phi_598_;
+                    let _e199 = ((bitcast<u32>(_e196) * _e81) + bitcast<u32>(_e189));
+                    if (_e199 < _e61) {
+                    } else {
+                        break;
+                    }
+                    let _e203 = depth.member[_e199];
+                    let _e208 = (select(_e105, _e136, select(false, (_e136 < _e105), (_e136 > 0f))) - _e109);
+                    let _e209 = (select(_e105, _e158, select(false, (_e158 < _e105), (_e158 > 0f))) - _e109);
+                    let _e210 = (select(_e105, _e181, select(false, (_e181 < _e105), (_e181 > 0f))) - _e109);
+                    let _e211 = (select(_e105, _e203, select(false, (_e203 < _e105), (_e203 > 0f))) - _e109);
+                    let _e213 = ((_e209 - _e208) * 0.5f);
+                    let _e215 = ((_e211 - _e210) * 0.5f);
+                    let _e216 = (_e109 * 0.011f);
+                    let _e218 = abs(_e208);
+                    let _e219 = abs((_e208 + _e213));
+                    if (_e218 != _e218) {
+                        phi_1721_ = true;
+                    } else {
+                        phi_1721_ = (_e219 <= _e218);
+                    }
+                    let _e223 = phi_1721_;
+                    let _e226 = (1.25f - (select(_e218, _e219, _e223) / _e216));
+                    let _e230 = select(0f, select(1f, _e226, (_e226 < 1f)), (_e226 > 0f));
+                    let _e232 = abs(_e209);
+                    let _e233 = abs((_e209 - _e213));
+                    if (_e232 != _e232) {
+                        phi_1736_ = true;
+                    } else {
+                        phi_1736_ = (_e233 <= _e232);
+                    }
+                    let _e237 = phi_1736_;
+                    let _e240 = (1.25f - (select(_e232, _e233, _e237) / _e216));
+                    let _e244 = select(0f, select(1f, _e240, (_e240 < 1f)), (_e240 > 0f));
+                    let _e246 = abs(_e210);
+                    let _e247 = abs((_e210 + _e215));
+                    if (_e246 != _e246) {
+                        phi_1751_ = true;
+                    } else {
+                        phi_1751_ = (_e247 <= _e246);
+                    }
+                    let _e251 = phi_1751_;
+                    let _e254 = (1.25f - (select(_e246, _e247, _e251) / _e216));
                     let _e258 = select(0f, select(1f, _e254, (_e254 < 1f)), (_e254 > 0f));
-                    let _e259 = (1.25f - (select(_e230, _e226, (_e226 < _e230)) / _e239));
-                    let _e263 = select(0f, select(1f, _e259, (_e259 < 1f)), (_e259 > 0f));
-                    let _e268 = (select(0f, select(1f, _e248, (_e248 < 1f)), (_e248 > 0f)) * 2.9f);
-                    let _e270 = floor((_e268 + 0.5f));
-                    if ((_e270 - _e268) == 0.5f) {
-                        let _e276 = ((floor((_e270 * 0.5f)) * 2f) != _e270);
-                        if _e276 {
-                            phi_1722_ = (_e270 - 1f);
-                        } else {
-                            phi_1722_ = f32();
-                        }
-                        let _e279 = phi_1722_;
-                        phi_1726_ = _e279;
-                        phi_1727_ = select(true, false, _e276);
+                    let _e260 = abs(_e211);
+                    let _e261 = abs((_e211 - _e215));
+                    if (_e260 != _e260) {
+                        phi_1766_ = true;
                     } else {
-                        phi_1726_ = f32();
-                        phi_1727_ = true;
+                        phi_1766_ = (_e261 <= _e260);
                     }
-                    let _e282 = phi_1726_;
-                    let _e284 = phi_1727_;
-                    let _e285 = select(_e282, _e270, _e284);
-                    let _e296 = (select(0f, select(1f, _e253, (_e253 < 1f)), (_e253 > 0f)) * 2.9f);
-                    let _e298 = floor((_e296 + 0.5f));
-                    if ((_e298 - _e296) == 0.5f) {
-                        let _e304 = ((floor((_e298 * 0.5f)) * 2f) != _e298);
-                        if _e304 {
-                            phi_1765_ = (_e298 - 1f);
+                    let _e265 = phi_1766_;
+                    let _e268 = (1.25f - (select(_e260, _e261, _e265) / _e216));
+                    let _e272 = select(0f, select(1f, _e268, (_e268 < 1f)), (_e268 > 0f));
+                    let _e277 = (select(0f, select(1f, _e230, (_e230 < 1f)), (_e230 > 0f)) * 2.9f);
+                    let _e279 = floor((_e277 + 0.5f));
+                    if ((_e279 - _e277) == 0.5f) {
+                        let _e285 = ((floor((_e279 * 0.5f)) * 2f) != _e279);
+                        if _e285 {
+                            phi_1797_ = (_e279 - 1f);
                         } else {
-                            phi_1765_ = f32();
+                            phi_1797_ = f32();
                         }
-                        let _e307 = phi_1765_;
-                        phi_1769_ = _e307;
-                        phi_1770_ = select(true, false, _e304);
+                        let _e288 = phi_1797_;
+                        phi_1801_ = _e288;
+                        phi_1802_ = select(true, false, _e285);
                     } else {
-                        phi_1769_ = f32();
-                        phi_1770_ = true;
+                        phi_1801_ = f32();
+                        phi_1802_ = true;
                     }
-                    let _e310 = phi_1769_;
-                    let _e312 = phi_1770_;
-                    let _e313 = select(_e310, _e298, _e312);
-                    let _e325 = (select(0f, select(1f, _e258, (_e258 < 1f)), (_e258 > 0f)) * 2.9f);
-                    let _e327 = floor((_e325 + 0.5f));
-                    if ((_e327 - _e325) == 0.5f) {
-                        let _e333 = ((floor((_e327 * 0.5f)) * 2f) != _e327);
-                        if _e333 {
-                            phi_1808_ = (_e327 - 1f);
-                        } else {
-                            phi_1808_ = f32();
-                        }
-                        let _e336 = phi_1808_;
-                        phi_1812_ = _e336;
-                        phi_1813_ = select(true, false, _e333);
+                    let _e291 = phi_1801_;
+                    let _e293 = phi_1802_;
+                    let _e294 = select(_e291, _e279, _e293);
+                    if (_e294 > 0f) {
+                        let _e300 = select(select(u32(_e294), 0u, (_e294 < 0f)), 4294967295u, (_e294 > 4294967000f));
+                        phi_1824_ = select(_e300, 3u, (3u < _e300));
                     } else {
-                        phi_1812_ = f32();
-                        phi_1813_ = true;
+                        phi_1824_ = 0u;
                     }
-                    let _e339 = phi_1812_;
-                    let _e341 = phi_1813_;
-                    let _e342 = select(_e339, _e327, _e341);
-                    let _e354 = (select(0f, select(1f, _e263, (_e263 < 1f)), (_e263 > 0f)) * 2.9f);
-                    let _e356 = floor((_e354 + 0.5f));
-                    if ((_e356 - _e354) == 0.5f) {
-                        let _e362 = ((floor((_e356 * 0.5f)) * 2f) != _e356);
-                        if _e362 {
-                            phi_1851_ = (_e356 - 1f);
+                    let _e304 = phi_1824_;
+                    let _e310 = (select(0f, select(1f, _e244, (_e244 < 1f)), (_e244 > 0f)) * 2.9f);
+                    let _e312 = floor((_e310 + 0.5f));
+                    if ((_e312 - _e310) == 0.5f) {
+                        let _e318 = ((floor((_e312 * 0.5f)) * 2f) != _e312);
+                        if _e318 {
+                            phi_1851_ = (_e312 - 1f);
                         } else {
                             phi_1851_ = f32();
                         }
-                        let _e365 = phi_1851_;
-                        phi_1855_ = _e365;
-                        phi_1856_ = select(true, false, _e362);
+                        let _e321 = phi_1851_;
+                        phi_1855_ = _e321;
+                        phi_1856_ = select(true, false, _e318);
                     } else {
                         phi_1855_ = f32();
                         phi_1856_ = true;
                     }
-                    let _e368 = phi_1855_;
-                    let _e370 = phi_1856_;
-                    let _e371 = select(_e368, _e356, _e370);
-                    let _e377 = ((((64u * select(select(u32(_e285), 0u, (_e285 < 0f)), 4294967295u, (_e285 > 4294967000f))) + (16u * select(select(u32(_e313), 0u, (_e313 < 0f)), 4294967295u, (_e313 > 4294967000f)))) + (4u * select(select(u32(_e342), 0u, (_e342 < 0f)), 4294967295u, (_e342 > 4294967000f)))) + select(select(u32(_e371), 0u, (_e371 < 0f)), 4294967295u, (_e371 > 4294967000f)));
-                    if _e99 {
+                    let _e324 = phi_1855_;
+                    let _e326 = phi_1856_;
+                    let _e327 = select(_e324, _e312, _e326);
+                    if (_e327 > 0f) {
+                        let _e333 = select(select(u32(_e327), 0u, (_e327 < 0f)), 4294967295u, (_e327 > 4294967000f));
+                        phi_1878_ = select(_e333, 3u, (3u < _e333));
+                    } else {
+                        phi_1878_ = 0u;
+                    }
+                    let _e337 = phi_1878_;
+                    let _e344 = (select(0f, select(1f, _e258, (_e258 < 1f)), (_e258 > 0f)) * 2.9f);
+                    let _e346 = floor((_e344 + 0.5f));
+                    if ((_e346 - _e344) == 0.5f) {
+                        let _e352 = ((floor((_e346 * 0.5f)) * 2f) != _e346);
+                        if _e352 {
+                            phi_1905_ = (_e346 - 1f);
+                        } else {
+                            phi_1905_ = f32();
+                        }
+                        let _e355 = phi_1905_;
+                        phi_1909_ = _e355;
+                        phi_1910_ = select(true, false, _e352);
+                    } else {
+                        phi_1909_ = f32();
+                        phi_1910_ = true;
+                    }
+                    let _e358 = phi_1909_;
+                    let _e360 = phi_1910_;
+                    let _e361 = select(_e358, _e346, _e360);
+                    if (_e361 > 0f) {
+                        let _e367 = select(select(u32(_e361), 0u, (_e361 < 0f)), 4294967295u, (_e361 > 4294967000f));
+                        phi_1932_ = select(_e367, 3u, (3u < _e367));
+                    } else {
+                        phi_1932_ = 0u;
+                    }
+                    let _e371 = phi_1932_;
+                    let _e378 = (select(0f, select(1f, _e272, (_e272 < 1f)), (_e272 > 0f)) * 2.9f);
+                    let _e380 = floor((_e378 + 0.5f));
+                    if ((_e380 - _e378) == 0.5f) {
+                        let _e386 = ((floor((_e380 * 0.5f)) * 2f) != _e380);
+                        if _e386 {
+                            phi_1959_ = (_e380 - 1f);
+                        } else {
+                            phi_1959_ = f32();
+                        }
+                        let _e389 = phi_1959_;
+                        phi_1963_ = _e389;
+                        phi_1964_ = select(true, false, _e386);
+                    } else {
+                        phi_1963_ = f32();
+                        phi_1964_ = true;
+                    }
+                    let _e392 = phi_1963_;
+                    let _e394 = phi_1964_;
+                    let _e395 = select(_e392, _e380, _e394);
+                    if (_e395 > 0f) {
+                        let _e401 = select(select(u32(_e395), 0u, (_e395 < 0f)), 4294967295u, (_e395 > 4294967000f));
+                        phi_1986_ = select(_e401, 3u, (3u < _e401));
+                    } else {
+                        phi_1986_ = 0u;
+                    }
+                    let _e405 = phi_1986_;
+                    let _e406 = ((((64u * _e304) + (16u * _e337)) + (4u * _e371)) + _e405);
+                    if _e98 {
                     } else {
                         break;
                     }
-                    if _e109 {
-                        let _e390 = params.member.member.member_1[0u];
-                        let _e392 = ((((((f32(_e60.x) + 0.5f) / _e77) * 2f) - 1f) * _e390) * _e102);
-                        let _e399 = params.member.member.member_1[1u];
-                        let _e401 = ((((((f32(_e60.y) + 0.5f) / _e87) * -2f) + 1f) * _e399) * _e102);
-                        if (_e98 < _e64) {
+                    if _e108 {
+                        let _e419 = params.member.member.member_1[0u];
+                        let _e421 = ((((((f32(_e59.x) + 0.5f) / _e76) * 2f) - 1f) * _e419) * _e101);
+                        let _e428 = params.member.member.member_1[1u];
+                        let _e430 = ((((((f32(_e59.y) + 0.5f) / _e86) * -2f) + 1f) * _e428) * _e101);
+                        if (_e97 < _e63) {
                         } else {
                             break;
                         }
-                        let _e406 = normals.member[_e98];
-                        let _e414 = (f32((bitcast<i32>(((_e406 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e414 != _e414) {
-                            phi_1879_ = true;
+                        let _e435 = normals.member[_e97];
+                        let _e443 = (f32((bitcast<i32>(((_e435 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e443 != _e443) {
+                            phi_1997_ = true;
                         } else {
-                            phi_1879_ = (-1f >= _e414);
+                            phi_1997_ = (-1f >= _e443);
                         }
-                        let _e418 = phi_1879_;
-                        let _e419 = select(_e414, -1f, _e418);
-                        let _e429 = (f32((bitcast<i32>((((_e406 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e429 != _e429) {
-                            phi_1894_ = true;
+                        let _e447 = phi_1997_;
+                        let _e448 = select(_e443, -1f, _e447);
+                        let _e458 = (f32((bitcast<i32>((((_e435 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e458 != _e458) {
+                            phi_2012_ = true;
                         } else {
-                            phi_1894_ = (-1f >= _e429);
+                            phi_2012_ = (-1f >= _e458);
                         }
-                        let _e433 = phi_1894_;
-                        let _e434 = select(_e429, -1f, _e433);
-                        let _e437 = (1f - abs(_e419));
-                        let _e438 = abs(_e434);
-                        let _e439 = (_e437 - _e438);
-                        if (_e439 < 0f) {
-                            phi_827_ = vec2<f32>(((1f - _e438) * select(1f, -1f, (_e419 < 0f))), (_e437 * select(1f, -1f, (_e434 < 0f))));
+                        let _e462 = phi_2012_;
+                        let _e463 = select(_e458, -1f, _e462);
+                        let _e466 = (1f - abs(_e448));
+                        let _e467 = abs(_e463);
+                        let _e468 = (_e466 - _e467);
+                        if (_e468 < 0f) {
+                            phi_841_ = vec2<f32>(((1f - _e467) * select(1f, -1f, (_e448 < 0f))), (_e466 * select(1f, -1f, (_e463 < 0f))));
                         } else {
-                            phi_827_ = vec2<f32>(_e419, _e434);
+                            phi_841_ = vec2<f32>(_e448, _e463);
                         }
-                        let _e450 = phi_827_;
-                        let _e459 = (1f / sqrt((((_e450.x * _e450.x) + (_e450.y * _e450.y)) + (_e439 * _e439))));
-                        let _e460 = (_e450.x * _e459);
-                        let _e461 = (_e450.y * _e459);
-                        let _e462 = (_e439 * _e459);
-                        let _e463 = -(_e462);
-                        if ((((_e460 * -(_e392)) + (_e461 * -(_e401))) + (_e463 * -(_e102))) < 0f) {
-                            phi_858_ = vec3<f32>(-(_e460), -(_e461), _e462);
+                        let _e479 = phi_841_;
+                        let _e488 = (1f / sqrt((((_e479.x * _e479.x) + (_e479.y * _e479.y)) + (_e468 * _e468))));
+                        let _e489 = (_e479.x * _e488);
+                        let _e490 = (_e479.y * _e488);
+                        let _e491 = (_e468 * _e488);
+                        let _e492 = -(_e491);
+                        if ((((_e489 * -(_e421)) + (_e490 * -(_e430))) + (_e492 * -(_e101))) < 0f) {
+                            phi_872_ = vec3<f32>(-(_e489), -(_e490), _e491);
                         } else {
-                            phi_858_ = vec3<f32>(_e460, _e461, _e463);
+                            phi_872_ = vec3<f32>(_e489, _e490, _e492);
                         }
-                        let _e478 = phi_858_;
-                        let _e481 = params.member.member_8;
-                        phi_864_ = (_e60.y & 63u);
-                        phi_867_ = (_e60.x & 63u);
-                        phi_869_ = 32u;
-                        phi_871_ = 0u;
+                        let _e507 = phi_872_;
+                        let _e510 = params.member.member_8;
+                        phi_878_ = (_e59.y & 63u);
+                        phi_881_ = (_e59.x & 63u);
+                        phi_883_ = 32u;
+                        phi_885_ = 0u;
                         loop {
-                            let _e485 = phi_864_;
-                            let _e487 = phi_867_;
-                            let _e489 = phi_869_;
-                            let _e491 = phi_871_;
-                            local = _e491;
-                            let _e492 = (_e489 > 0u);
-                            if _e492 {
-                                let _e495 = select(0u, 1u, ((_e487 & _e489) != 0u));
-                                let _e498 = select(0u, 1u, ((_e485 & _e489) != 0u));
-                                if (_e498 == 0u) {
-                                    if (_e495 == 1u) {
-                                        phi_900_ = (63u - _e485);
-                                        phi_901_ = (63u - _e487);
+                            let _e514 = phi_878_;
+                            let _e516 = phi_881_;
+                            let _e518 = phi_883_;
+                            let _e520 = phi_885_;
+                            local = _e520;
+                            let _e521 = (_e518 > 0u);
+                            if _e521 {
+                                let _e524 = select(0u, 1u, ((_e516 & _e518) != 0u));
+                                let _e527 = select(0u, 1u, ((_e514 & _e518) != 0u));
+                                if (_e527 == 0u) {
+                                    if (_e524 == 1u) {
+                                        phi_914_ = (63u - _e514);
+                                        phi_915_ = (63u - _e516);
                                     } else {
-                                        phi_900_ = _e485;
-                                        phi_901_ = _e487;
+                                        phi_914_ = _e514;
+                                        phi_915_ = _e516;
                                     }
-                                    let _e509 = phi_900_;
-                                    let _e511 = phi_901_;
-                                    phi_902_ = _e511;
-                                    phi_903_ = _e509;
+                                    let _e538 = phi_914_;
+                                    let _e540 = phi_915_;
+                                    phi_916_ = _e540;
+                                    phi_917_ = _e538;
                                 } else {
-                                    phi_902_ = _e485;
-                                    phi_903_ = _e487;
+                                    phi_916_ = _e514;
+                                    phi_917_ = _e516;
                                 }
-                                let _e513 = phi_902_;
-                                let _e515 = phi_903_;
-                                phi_865_ = _e513;
-                                phi_868_ = _e515;
-                                phi_870_ = (_e489 / 2u);
-                                phi_872_ = (_e491 + ((_e489 * _e489) * ((3u * _e495) ^ _e498)));
+                                let _e542 = phi_916_;
+                                let _e544 = phi_917_;
+                                phi_879_ = _e542;
+                                phi_882_ = _e544;
+                                phi_884_ = (_e518 / 2u);
+                                phi_886_ = (_e520 + ((_e518 * _e518) * ((3u * _e524) ^ _e527)));
                             } else {
-                                phi_865_ = u32();
-                                phi_868_ = u32();
-                                phi_870_ = u32();
-                                phi_872_ = u32();
+                                phi_879_ = u32();
+                                phi_882_ = u32();
+                                phi_884_ = u32();
+                                phi_886_ = u32();
                             }
-                            let _e518 = phi_865_;
-                            let _e520 = phi_868_;
-                            let _e522 = phi_870_;
-                            let _e524 = phi_872_;
+                            let _e547 = phi_879_;
+                            let _e549 = phi_882_;
+                            let _e551 = phi_884_;
+                            let _e553 = phi_886_;
                             continue;
                             continuing {
-                                phi_864_ = _e518;
-                                phi_867_ = _e520;
-                                phi_869_ = _e522;
-                                phi_871_ = _e524;
-                                break if !(_e492);
+                                phi_878_ = _e547;
+                                phi_881_ = _e549;
+                                phi_883_ = _e551;
+                                phi_885_ = _e553;
+                                break if !(_e521);
                             }
                         }
-                        let _e529 = local;
-                        let _e531 = f32((_e529 + (288u * (_e481 % 64u))));
-                        let _e533 = (0.5f + (_e531 * 0.7548777f));
-                        let _e537 = (0.5f + (_e531 * 0.5698403f));
-                        let _e540 = (6.2831855f * (_e533 - floor(_e533)));
-                        phi_934_ = type_28(_e377, type_27(1u, type_26(vec2<u32>(_e60.x, _e60.y), vec3<f32>(_e392, _e401, _e102), _e478, sin(_e540), cos(_e540), (_e537 - floor(_e537)))));
+                        let _e558 = local;
+                        let _e560 = f32((_e558 + (288u * (_e510 % 64u))));
+                        let _e562 = (0.5f + (_e560 * 0.7548777f));
+                        let _e566 = (0.5f + (_e560 * 0.5698403f));
+                        let _e569 = (6.2831855f * (_e562 - floor(_e562)));
+                        phi_948_ = type_28(_e406, type_27(1u, type_26(vec2<u32>(_e59.x, _e59.y), vec3<f32>(_e421, _e430, _e101), _e507, sin(_e569), cos(_e569), (_e566 - floor(_e566)))));
                     } else {
-                        phi_934_ = type_28(_e377, type_27(0u, type_27().member_1));
+                        phi_948_ = type_28(_e406, type_27(0u, type_27().member_1));
                     }
-                    let _e552 = phi_934_;
-                    if (bitcast<i32>(_e552.member_1.member) != 0i) {
-                        let _e561 = params.member.member_5;
-                        let _e563 = select(_e561, 64u, (64u < _e561));
-                        let _e565 = select(_e563, _e66, (_e66 < _e563));
-                        let _e567 = select(1u, _e565, (1u < _e565));
-                        let _e570 = params.member.member_6;
-                        let _e572 = select(1u, _e570, (1u < _e570));
-                        phi_2069_ = false;
-                        phi_969_ = 0u;
-                        phi_972_ = 0f;
+                    let _e581 = phi_948_;
+                    if (bitcast<i32>(_e581.member_1.member) != 0i) {
+                        let _e590 = params.member.member_5;
+                        let _e592 = select(_e590, 64u, (64u < _e590));
+                        let _e594 = select(_e592, _e65, (_e65 < _e592));
+                        let _e596 = select(1u, _e594, (1u < _e594));
+                        let _e599 = params.member.member_6;
+                        let _e601 = select(1u, _e599, (1u < _e599));
+                        phi_2187_ = false;
+                        phi_983_ = 0u;
+                        phi_986_ = 0f;
                         loop {
-                            let _e574 = phi_2069_;
-                            let _e576 = phi_969_;
-                            let _e578 = phi_972_;
-                            local_5 = _e578;
-                            let _e579 = (_e576 < _e567);
-                            if _e579 {
-                                if (_e576 < _e66) {
+                            let _e603 = phi_2187_;
+                            let _e605 = phi_983_;
+                            let _e607 = phi_986_;
+                            local_5 = _e607;
+                            let _e608 = (_e605 < _e596);
+                            if _e608 {
+                                if (_e605 < _e65) {
                                 } else {
-                                    phi_2146_ = true;
+                                    phi_2276_ = true;
                                     break;
                                 }
-                                let _e584 = kernel.member[_e576][0u];
-                                let _e588 = kernel.member[_e576][1u];
-                                let _e593 = ((_e552.member_1.member_1.member_4 * _e584) - (_e552.member_1.member_1.member_3 * _e588));
-                                let _e596 = ((_e552.member_1.member_1.member_3 * _e584) + (_e552.member_1.member_1.member_4 * _e588));
-                                let _e601 = ((1f - (_e593 * _e593)) - (_e596 * _e596));
-                                if (_e601 != _e601) {
-                                    phi_1909_ = true;
+                                let _e613 = kernel.member[_e605][0u];
+                                let _e617 = kernel.member[_e605][1u];
+                                let _e622 = ((_e581.member_1.member_1.member_4 * _e613) - (_e581.member_1.member_1.member_3 * _e617));
+                                let _e625 = ((_e581.member_1.member_1.member_3 * _e613) + (_e581.member_1.member_1.member_4 * _e617));
+                                let _e630 = ((1f - (_e622 * _e622)) - (_e625 * _e625));
+                                if (_e630 != _e630) {
+                                    phi_2027_ = true;
                                 } else {
-                                    phi_1909_ = (0f >= _e601);
+                                    phi_2027_ = (0f >= _e630);
                                 }
-                                let _e605 = phi_1909_;
-                                let _e607 = sqrt(select(_e601, 0f, _e605));
-                                let _e608 = -(_e607);
-                                let _e612 = (-1f * _e552.member_1.member_1.member_2.z);
-                                let _e613 = (-1f * _e552.member_1.member_1.member_2.x);
-                                let _e615 = (1f / (_e612 + 1f));
-                                let _e616 = (_e615 * _e552.member_1.member_1.member_2.y);
-                                let _e620 = (_e616 * _e613);
-                                let _e640 = (_e612 > 0.9997f);
-                                let _e641 = (_e612 < -0.9997f);
-                                let _e651 = params.member.member_1;
-                                let _e655 = params.member.member_3;
-                                let _e658 = params.member.member_4;
-                                phi_1118_ = 1u;
-                                phi_1121_ = _e651;
-                                phi_1123_ = false;
-                                phi_1125_ = true;
-                                phi_1127_ = 0f;
-                                phi_1129_ = 0f;
+                                let _e634 = phi_2027_;
+                                let _e636 = sqrt(select(_e630, 0f, _e634));
+                                let _e637 = -(_e636);
+                                let _e641 = (-1f * _e581.member_1.member_1.member_2.z);
+                                let _e642 = (-1f * _e581.member_1.member_1.member_2.x);
+                                let _e644 = (1f / (_e641 + 1f));
+                                let _e645 = (_e644 * _e581.member_1.member_1.member_2.y);
+                                let _e649 = (_e645 * _e642);
+                                let _e669 = (_e641 > 0.9997f);
+                                let _e670 = (_e641 < -0.9997f);
+                                let _e680 = params.member.member_1;
+                                let _e684 = params.member.member_3;
+                                let _e687 = params.member.member_4;
+                                phi_1132_ = 1u;
+                                phi_1135_ = _e680;
+                                phi_1137_ = false;
+                                phi_1139_ = true;
+                                phi_1141_ = 0f;
+                                phi_1143_ = 0f;
                                 loop {
-                                    let _e664 = phi_1118_;
-                                    let _e666 = phi_1121_;
-                                    let _e668 = phi_1123_;
-                                    let _e670 = phi_1125_;
-                                    let _e672 = phi_1127_;
-                                    let _e674 = phi_1129_;
-                                    local_1 = _e666;
-                                    local_2 = _e668;
-                                    local_3 = _e666;
-                                    local_4 = _e668;
-                                    let _e675 = (_e664 <= _e572);
-                                    if _e675 {
-                                        let _e681 = (((-(_e552.member_1.member_1.member_5) + f32(_e664)) * _e651) / f32(_e572));
-                                        let _e686 = (_e552.member_1.member_1.member_1.x + (select(select(((((_e612 + (_e616 * _e552.member_1.member_1.member_2.y)) * _e593) + (_e620 * _e596)) + (_e613 * _e608)), _e593, _e641), _e593, _e640) * _e681));
-                                        let _e688 = (_e552.member_1.member_1.member_1.y + (select(select((((_e620 * _e593) + ((_e612 + ((_e615 * _e613) * _e613)) * _e596)) + (-(_e552.member_1.member_1.member_2.y) * _e608)), -(_e596), _e641), _e596, _e640) * _e681));
-                                        let _e690 = (_e552.member_1.member_1.member_1.z + (select(select((((_e552.member_1.member_1.member_2.x * _e593) + (_e552.member_1.member_1.member_2.y * _e596)) + (_e612 * _e608)), _e607, _e641), _e608, _e640) * _e681));
-                                        let _e696 = params.member.member.member_1[0u];
-                                        let _e699 = (((_e686 * 0.5f) / (_e690 * _e696)) + 0.5f);
-                                        let _e705 = params.member.member.member_1[1u];
-                                        let _e708 = (0.5f - ((_e688 * 0.5f) / (_e690 * _e705)));
-                                        let _e718 = select(false, select(false, select(false, select(false, (_e708 <= 1f), (_e708 >= 0f)), select(false, (_e699 <= 1f), (_e699 >= 0f))), (_e690 > 0f)), _e670);
-                                        if _e718 {
-                                            let _e719 = (_e699 * _e77);
-                                            if (_e719 > 0f) {
-                                                let _e725 = select(select(u32(_e719), 0u, (_e719 < 0f)), 4294967295u, (_e719 > 4294967000f));
-                                                let _e726 = (_e82 - 1u);
-                                                phi_1233_ = select(_e725, _e726, (_e726 < _e725));
+                                    let _e693 = phi_1132_;
+                                    let _e695 = phi_1135_;
+                                    let _e697 = phi_1137_;
+                                    let _e699 = phi_1139_;
+                                    let _e701 = phi_1141_;
+                                    let _e703 = phi_1143_;
+                                    local_1 = _e695;
+                                    local_2 = _e697;
+                                    local_3 = _e695;
+                                    local_4 = _e697;
+                                    let _e704 = (_e693 <= _e601);
+                                    if _e704 {
+                                        let _e710 = (((-(_e581.member_1.member_1.member_5) + f32(_e693)) * _e680) / f32(_e601));
+                                        let _e715 = (_e581.member_1.member_1.member_1.x + (select(select(((((_e641 + (_e645 * _e581.member_1.member_1.member_2.y)) * _e622) + (_e649 * _e625)) + (_e642 * _e637)), _e622, _e670), _e622, _e669) * _e710));
+                                        let _e717 = (_e581.member_1.member_1.member_1.y + (select(select((((_e649 * _e622) + ((_e641 + ((_e644 * _e642) * _e642)) * _e625)) + (-(_e581.member_1.member_1.member_2.y) * _e637)), -(_e625), _e670), _e625, _e669) * _e710));
+                                        let _e719 = (_e581.member_1.member_1.member_1.z + (select(select((((_e581.member_1.member_1.member_2.x * _e622) + (_e581.member_1.member_1.member_2.y * _e625)) + (_e641 * _e637)), _e636, _e670), _e637, _e669) * _e710));
+                                        let _e725 = params.member.member.member_1[0u];
+                                        let _e728 = (((_e715 * 0.5f) / (_e719 * _e725)) + 0.5f);
+                                        let _e734 = params.member.member.member_1[1u];
+                                        let _e737 = (0.5f - ((_e717 * 0.5f) / (_e719 * _e734)));
+                                        let _e747 = select(false, select(false, select(false, select(false, (_e737 <= 1f), (_e737 >= 0f)), select(false, (_e728 <= 1f), (_e728 >= 0f))), (_e719 > 0f)), _e699);
+                                        if _e747 {
+                                            let _e748 = (_e728 * _e76);
+                                            if (_e748 > 0f) {
+                                                let _e754 = select(select(u32(_e748), 0u, (_e748 < 0f)), 4294967295u, (_e748 > 4294967000f));
+                                                let _e755 = (_e81 - 1u);
+                                                phi_1247_ = select(_e754, _e755, (_e755 < _e754));
                                             } else {
-                                                phi_1233_ = 0u;
+                                                phi_1247_ = 0u;
                                             }
-                                            let _e730 = phi_1233_;
-                                            let _e731 = (_e708 * _e87);
-                                            if (_e731 > 0f) {
-                                                let _e737 = select(select(u32(_e731), 0u, (_e731 < 0f)), 4294967295u, (_e731 > 4294967000f));
-                                                let _e738 = (_e92 - 1u);
-                                                phi_1254_ = select(_e737, _e738, (_e738 < _e737));
+                                            let _e759 = phi_1247_;
+                                            let _e760 = (_e737 * _e86);
+                                            if (_e760 > 0f) {
+                                                let _e766 = select(select(u32(_e760), 0u, (_e760 < 0f)), 4294967295u, (_e760 > 4294967000f));
+                                                let _e767 = (_e91 - 1u);
+                                                phi_1268_ = select(_e766, _e767, (_e767 < _e766));
                                             } else {
-                                                phi_1254_ = 0u;
+                                                phi_1268_ = 0u;
                                             }
-                                            let _e742 = phi_1254_;
-                                            let _e744 = ((_e742 * _e82) + _e730);
-                                            if (_e744 < _e62) {
+                                            let _e771 = phi_1268_;
+                                            let _e773 = ((_e771 * _e81) + _e759);
+                                            if (_e773 < _e61) {
                                             } else {
-                                                phi_2021_ = true;
-                                                phi_1695_ = bool();
-                                                phi_1694_ = bool();
-                                                phi_1693_ = bool();
-                                                phi_1692_ = bool();
-                                                phi_1690_ = f32();
+                                                phi_2139_ = true;
+                                                phi_1709_ = bool();
+                                                phi_1708_ = bool();
+                                                phi_1707_ = bool();
+                                                phi_1706_ = bool();
+                                                phi_1704_ = f32();
                                                 break;
                                             }
-                                            let _e748 = depth.member[_e744];
-                                            let _e752 = select(_e106, _e748, select(false, (_e748 < _e106), (_e748 > 0f)));
-                                            let _e755 = (((_e699 * 2f) - 1f) * _e696);
-                                            let _e759 = (((_e708 * -2f) + 1f) * _e705);
-                                            let _e761 = (_e686 - (_e755 * _e752));
-                                            let _e762 = (_e688 - (_e759 * _e752));
-                                            let _e763 = (_e690 - _e752);
-                                            let _e769 = sqrt((((_e761 * _e761) + (_e762 * _e762)) + (_e763 * _e763)));
-                                            let _e774 = (select(0f, select(1f, _e699, (_e699 < 1f)), (_e699 > 0f)) * _e77);
-                                            if (_e774 > 0f) {
-                                                let _e780 = select(select(u32(_e774), 0u, (_e774 < 0f)), 4294967295u, (_e774 > 4294967000f));
-                                                let _e781 = (_e82 - 1u);
-                                                phi_1348_ = select(_e780, _e781, (_e781 < _e780));
+                                            let _e777 = depth.member[_e773];
+                                            let _e781 = select(_e105, _e777, select(false, (_e777 < _e105), (_e777 > 0f)));
+                                            let _e784 = (((_e728 * 2f) - 1f) * _e725);
+                                            let _e788 = (((_e737 * -2f) + 1f) * _e734);
+                                            let _e790 = (_e715 - (_e784 * _e781));
+                                            let _e791 = (_e717 - (_e788 * _e781));
+                                            let _e792 = (_e719 - _e781);
+                                            let _e798 = sqrt((((_e790 * _e790) + (_e791 * _e791)) + (_e792 * _e792)));
+                                            let _e803 = (select(0f, select(1f, _e728, (_e728 < 1f)), (_e728 > 0f)) * _e76);
+                                            if (_e803 > 0f) {
+                                                let _e809 = select(select(u32(_e803), 0u, (_e803 < 0f)), 4294967295u, (_e803 > 4294967000f));
+                                                let _e810 = (_e81 - 1u);
+                                                phi_1362_ = select(_e809, _e810, (_e810 < _e809));
                                             } else {
-                                                phi_1348_ = 0u;
+                                                phi_1362_ = 0u;
                                             }
-                                            let _e785 = phi_1348_;
-                                            let _e790 = (select(0f, select(1f, _e708, (_e708 < 1f)), (_e708 > 0f)) * _e87);
-                                            if (_e790 > 0f) {
-                                                let _e796 = select(select(u32(_e790), 0u, (_e790 < 0f)), 4294967295u, (_e790 > 4294967000f));
-                                                let _e797 = (_e92 - 1u);
-                                                phi_1379_ = select(_e796, _e797, (_e797 < _e796));
+                                            let _e814 = phi_1362_;
+                                            let _e819 = (select(0f, select(1f, _e737, (_e737 < 1f)), (_e737 > 0f)) * _e86);
+                                            if (_e819 > 0f) {
+                                                let _e825 = select(select(u32(_e819), 0u, (_e819 < 0f)), 4294967295u, (_e819 > 4294967000f));
+                                                let _e826 = (_e91 - 1u);
+                                                phi_1393_ = select(_e825, _e826, (_e826 < _e825));
                                             } else {
-                                                phi_1379_ = 0u;
+                                                phi_1393_ = 0u;
                                             }
-                                            let _e801 = phi_1379_;
-                                            let _e819 = ((_e801 * _e82) + _e785);
-                                            if (_e819 < _e64) {
+                                            let _e830 = phi_1393_;
+                                            let _e848 = ((_e830 * _e81) + _e814);
+                                            if (_e848 < _e63) {
                                             } else {
-                                                phi_2021_ = true;
-                                                phi_1695_ = bool();
-                                                phi_1694_ = bool();
-                                                phi_1693_ = bool();
-                                                phi_1692_ = bool();
-                                                phi_1690_ = f32();
+                                                phi_2139_ = true;
+                                                phi_1709_ = bool();
+                                                phi_1708_ = bool();
+                                                phi_1707_ = bool();
+                                                phi_1706_ = bool();
+                                                phi_1704_ = f32();
                                                 break;
                                             }
-                                            let _e823 = normals.member[_e819];
-                                            let _e831 = (f32((bitcast<i32>(((_e823 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e831 != _e831) {
-                                                phi_1992_ = true;
+                                            let _e852 = normals.member[_e848];
+                                            let _e860 = (f32((bitcast<i32>(((_e852 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                            if (_e860 != _e860) {
+                                                phi_2110_ = true;
                                             } else {
-                                                phi_1992_ = (-1f >= _e831);
+                                                phi_2110_ = (-1f >= _e860);
                                             }
-                                            let _e835 = phi_1992_;
-                                            let _e836 = select(_e831, -1f, _e835);
-                                            let _e846 = (f32((bitcast<i32>((((_e823 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e846 != _e846) {
-                                                phi_2007_ = true;
+                                            let _e864 = phi_2110_;
+                                            let _e865 = select(_e860, -1f, _e864);
+                                            let _e875 = (f32((bitcast<i32>((((_e852 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                            if (_e875 != _e875) {
+                                                phi_2125_ = true;
                                             } else {
-                                                phi_2007_ = (-1f >= _e846);
+                                                phi_2125_ = (-1f >= _e875);
                                             }
-                                            let _e850 = phi_2007_;
-                                            let _e851 = select(_e846, -1f, _e850);
-                                            let _e854 = (1f - abs(_e836));
-                                            let _e855 = abs(_e851);
-                                            let _e856 = (_e854 - _e855);
-                                            if (_e856 < 0f) {
-                                                phi_1968_ = vec2<f32>(((1f - _e855) * select(1f, -1f, (_e836 < 0f))), (_e854 * select(1f, -1f, (_e851 < 0f))));
+                                            let _e879 = phi_2125_;
+                                            let _e880 = select(_e875, -1f, _e879);
+                                            let _e883 = (1f - abs(_e865));
+                                            let _e884 = abs(_e880);
+                                            let _e885 = (_e883 - _e884);
+                                            if (_e885 < 0f) {
+                                                phi_2086_ = vec2<f32>(((1f - _e884) * select(1f, -1f, (_e865 < 0f))), (_e883 * select(1f, -1f, (_e880 < 0f))));
                                             } else {
-                                                phi_1968_ = vec2<f32>(_e836, _e851);
+                                                phi_2086_ = vec2<f32>(_e865, _e880);
                                             }
-                                            let _e867 = phi_1968_;
-                                            let _e876 = (1f / sqrt((((_e867.x * _e867.x) + (_e867.y * _e867.y)) + (_e856 * _e856))));
-                                            let _e877 = (_e867.x * _e876);
-                                            let _e878 = (_e867.y * _e876);
-                                            let _e880 = -((_e856 * _e876));
-                                            let _e884 = (((_e877 * _e755) + (_e878 * _e759)) + _e880);
-                                            let _e893 = select(((((_e877 * ((((((f32(_e785) + 0.5f) * (1f / _e77)) * 2f) - 1f) * _e696) * _e752)) + (_e878 * ((((((f32(_e801) + 0.5f) * (1f / _e87)) * -2f) + 1f) * _e705) * _e752))) + (_e880 * _e752)) / _e884), _e752, (abs(_e884) < 0.001f));
-                                            let _e903 = select(select(((_e690 - _e893) > _e658), true, (_e690 < (_e893 * (1f + _e655)))), true, select(false, (_e801 == _e552.member_1.member_1.member.y), (_e785 == _e552.member_1.member_1.member.x)));
-                                            let _e905 = select(false, !(_e903), _e718);
-                                            let _e906 = (_e672 + _e769);
-                                            let _e915 = select(false, _e903, _e718);
-                                            if _e915 {
-                                                phi_1519_ = (_e664 + 1u);
+                                            let _e896 = phi_2086_;
+                                            let _e905 = (1f / sqrt((((_e896.x * _e896.x) + (_e896.y * _e896.y)) + (_e885 * _e885))));
+                                            let _e906 = (_e896.x * _e905);
+                                            let _e907 = (_e896.y * _e905);
+                                            let _e909 = -((_e885 * _e905));
+                                            let _e913 = (((_e906 * _e784) + (_e907 * _e788)) + _e909);
+                                            let _e922 = select(((((_e906 * ((((((f32(_e814) + 0.5f) * (1f / _e76)) * 2f) - 1f) * _e725) * _e781)) + (_e907 * ((((((f32(_e830) + 0.5f) * (1f / _e86)) * -2f) + 1f) * _e734) * _e781))) + (_e909 * _e781)) / _e913), _e781, (abs(_e913) < 0.001f));
+                                            let _e932 = select(select(((_e719 - _e922) > _e687), true, (_e719 < (_e922 * (1f + _e684)))), true, select(false, (_e830 == _e581.member_1.member_1.member.y), (_e814 == _e581.member_1.member_1.member.x)));
+                                            let _e934 = select(false, !(_e932), _e747);
+                                            let _e935 = (_e701 + _e798);
+                                            let _e944 = select(false, _e932, _e747);
+                                            if _e944 {
+                                                phi_1533_ = (_e693 + 1u);
                                             } else {
-                                                phi_1519_ = u32();
+                                                phi_1533_ = u32();
                                             }
-                                            let _e918 = phi_1519_;
-                                            phi_1521_ = _e918;
-                                            phi_1522_ = select(_e666, select((_e674 + ((_e672 * (_e681 - _e674)) / _e906)), _e674, (_e906 < 0.000001f)), _e905);
-                                            phi_1523_ = select(_e905, true, _e668);
-                                            phi_1524_ = _e915;
-                                            phi_1525_ = _e769;
-                                            phi_1528_ = _e915;
-                                            phi_1529_ = select(true, false, _e915);
+                                            let _e947 = phi_1533_;
+                                            phi_1535_ = _e947;
+                                            phi_1536_ = select(_e695, select((_e703 + ((_e701 * (_e710 - _e703)) / _e935)), _e703, (_e935 < 0.000001f)), _e934);
+                                            phi_1537_ = select(_e934, true, _e697);
+                                            phi_1538_ = _e944;
+                                            phi_1539_ = _e798;
+                                            phi_1542_ = _e944;
+                                            phi_1543_ = select(true, false, _e944);
                                         } else {
-                                            phi_1521_ = u32();
-                                            phi_1522_ = f32();
-                                            phi_1523_ = bool();
-                                            phi_1524_ = bool();
-                                            phi_1525_ = f32();
-                                            phi_1528_ = false;
-                                            phi_1529_ = false;
+                                            phi_1535_ = u32();
+                                            phi_1536_ = f32();
+                                            phi_1537_ = bool();
+                                            phi_1538_ = bool();
+                                            phi_1539_ = f32();
+                                            phi_1542_ = false;
+                                            phi_1543_ = false;
                                         }
-                                        let _e921 = phi_1521_;
-                                        let _e923 = phi_1522_;
-                                        let _e925 = phi_1523_;
-                                        let _e927 = phi_1524_;
-                                        let _e929 = phi_1525_;
-                                        let _e931 = phi_1528_;
-                                        let _e933 = phi_1529_;
-                                        phi_1119_ = _e921;
-                                        phi_1122_ = _e923;
-                                        phi_1124_ = _e925;
-                                        phi_1126_ = _e927;
-                                        phi_1128_ = _e929;
-                                        phi_1130_ = _e681;
-                                        phi_1533_ = _e931;
-                                        phi_1535_ = _e933;
-                                        phi_1536_ = select(true, false, _e718);
+                                        let _e950 = phi_1535_;
+                                        let _e952 = phi_1536_;
+                                        let _e954 = phi_1537_;
+                                        let _e956 = phi_1538_;
+                                        let _e958 = phi_1539_;
+                                        let _e960 = phi_1542_;
+                                        let _e962 = phi_1543_;
+                                        phi_1133_ = _e950;
+                                        phi_1136_ = _e952;
+                                        phi_1138_ = _e954;
+                                        phi_1140_ = _e956;
+                                        phi_1142_ = _e958;
+                                        phi_1144_ = _e710;
+                                        phi_1547_ = _e960;
+                                        phi_1549_ = _e962;
+                                        phi_1550_ = select(true, false, _e747);
                                     } else {
-                                        phi_1119_ = u32();
-                                        phi_1122_ = f32();
-                                        phi_1124_ = bool();
-                                        phi_1126_ = bool();
-                                        phi_1128_ = f32();
-                                        phi_1130_ = f32();
-                                        phi_1533_ = false;
-                                        phi_1535_ = false;
-                                        phi_1536_ = false;
+                                        phi_1133_ = u32();
+                                        phi_1136_ = f32();
+                                        phi_1138_ = bool();
+                                        phi_1140_ = bool();
+                                        phi_1142_ = f32();
+                                        phi_1144_ = f32();
+                                        phi_1547_ = false;
+                                        phi_1549_ = false;
+                                        phi_1550_ = false;
                                     }
-                                    let _e936 = phi_1119_;
-                                    let _e938 = phi_1122_;
-                                    let _e940 = phi_1124_;
-                                    let _e942 = phi_1126_;
-                                    let _e944 = phi_1128_;
-                                    let _e946 = phi_1130_;
-                                    let _e948 = phi_1533_;
-                                    let _e950 = phi_1535_;
-                                    let _e952 = phi_1536_;
+                                    let _e965 = phi_1133_;
+                                    let _e967 = phi_1136_;
+                                    let _e969 = phi_1138_;
+                                    let _e971 = phi_1140_;
+                                    let _e973 = phi_1142_;
+                                    let _e975 = phi_1144_;
+                                    let _e977 = phi_1547_;
+                                    let _e979 = phi_1549_;
+                                    let _e981 = phi_1550_;
                                     continue;
                                     continuing {
-                                        phi_1118_ = _e936;
-                                        phi_1121_ = _e938;
-                                        phi_1123_ = _e940;
-                                        phi_1125_ = _e942;
-                                        phi_1127_ = _e944;
-                                        phi_1129_ = _e946;
-                                        phi_2021_ = _e574;
-                                        phi_1695_ = _e952;
-                                        phi_1694_ = _e950;
-                                        phi_1693_ = select(true, false, _e675);
-                                        phi_1692_ = _e940;
-                                        phi_1690_ = _e938;
-                                        break if !(_e948);
+                                        phi_1132_ = _e965;
+                                        phi_1135_ = _e967;
+                                        phi_1137_ = _e969;
+                                        phi_1139_ = _e971;
+                                        phi_1141_ = _e973;
+                                        phi_1143_ = _e975;
+                                        phi_2139_ = _e603;
+                                        phi_1709_ = _e981;
+                                        phi_1708_ = _e979;
+                                        phi_1707_ = select(true, false, _e704);
+                                        phi_1706_ = _e969;
+                                        phi_1704_ = _e967;
+                                        break if !(_e977);
                                     }
                                 }
-                                let _e956 = phi_2021_;
-                                let _e958 = phi_1695_;
-                                let _e960 = phi_1694_;
-                                let _e962 = phi_1693_;
-                                let _e964 = phi_1692_;
-                                let _e966 = phi_1690_;
-                                phi_2146_ = _e956;
-                                if _e956 {
+                                let _e985 = phi_2139_;
+                                let _e987 = phi_1709_;
+                                let _e989 = phi_1708_;
+                                let _e991 = phi_1707_;
+                                let _e993 = phi_1706_;
+                                let _e995 = phi_1704_;
+                                phi_2276_ = _e985;
+                                if _e985 {
                                     break;
                                 }
-                                let _e967 = select(_e960, false, _e962);
-                                let _e969 = select(select(_e958, false, _e962), false, _e967);
-                                let _e971 = local_1;
-                                let _e974 = local_2;
-                                let _e976 = select(_e967, true, _e969);
-                                let _e978 = local_3;
-                                let _e981 = local_4;
-                                let _e985 = params.member.member_7;
-                                if (_e985 == 1u) {
-                                    phi_1576_ = 0f;
+                                let _e996 = select(_e989, false, _e991);
+                                let _e998 = select(select(_e987, false, _e991), false, _e996);
+                                let _e1000 = local_1;
+                                let _e1003 = local_2;
+                                let _e1005 = select(_e996, true, _e998);
+                                let _e1007 = local_3;
+                                let _e1010 = local_4;
+                                let _e1014 = params.member.member_7;
+                                if (_e1014 == 1u) {
+                                    phi_1590_ = 0f;
                                 } else {
-                                    let _e987 = (select(_e978, select(_e966, _e971, _e969), _e976) / _e651);
-                                    phi_1576_ = select(0f, select(1f, _e987, (_e987 < 1f)), (_e987 > 0f));
+                                    let _e1016 = (select(_e1007, select(_e995, _e1000, _e998), _e1005) / _e680);
+                                    phi_1590_ = select(0f, select(1f, _e1016, (_e1016 < 1f)), (_e1016 > 0f));
                                 }
-                                let _e993 = phi_1576_;
-                                phi_2147_ = _e956;
-                                phi_970_ = (_e576 + 1u);
-                                phi_973_ = (_e578 + select(1f, _e993, select(_e981, select(_e964, _e974, _e969), _e976)));
+                                let _e1022 = phi_1590_;
+                                phi_2277_ = _e985;
+                                phi_984_ = (_e605 + 1u);
+                                phi_987_ = (_e607 + select(1f, _e1022, select(_e1010, select(_e993, _e1003, _e998), _e1005)));
                             } else {
-                                phi_2147_ = _e574;
-                                phi_970_ = u32();
-                                phi_973_ = f32();
+                                phi_2277_ = _e603;
+                                phi_984_ = u32();
+                                phi_987_ = f32();
                             }
-                            let _e998 = phi_2147_;
-                            let _e1000 = phi_970_;
-                            let _e1002 = phi_973_;
+                            let _e1027 = phi_2277_;
+                            let _e1029 = phi_984_;
+                            let _e1031 = phi_987_;
                             continue;
                             continuing {
-                                phi_2069_ = _e998;
-                                phi_969_ = _e1000;
-                                phi_972_ = _e1002;
-                                phi_2146_ = _e998;
-                                break if !(_e579);
+                                phi_2187_ = _e1027;
+                                phi_983_ = _e1029;
+                                phi_986_ = _e1031;
+                                phi_2276_ = _e1027;
+                                break if !(_e608);
                             }
                         }
-                        let _e1005 = phi_2146_;
-                        if _e1005 {
+                        let _e1034 = phi_2276_;
+                        if _e1034 {
                             break;
                         }
-                        let _e1008 = local_5;
-                        let _e1012 = params.member.member_2;
-                        let _e1013 = pow((_e1008 / f32(_e567)), _e1012);
-                        let _e1014 = (_e1013 * 0.6666667f);
-                        let _e1020 = ((select(0f, select(1f, _e1014, (_e1014 < 1f)), (_e1014 > 0f)) * 255f) + 0.5f);
-                        phi_1647_ = type_29(_e1013, select(select(u32(_e1020), 0u, (_e1020 < 0f)), 4294967295u, (_e1020 > 4294967000f)), _e552.member);
+                        let _e1037 = local_5;
+                        let _e1041 = params.member.member_2;
+                        let _e1042 = pow((_e1037 / f32(_e596)), _e1041);
+                        let _e1043 = (_e1042 * 0.6666667f);
+                        let _e1049 = ((select(0f, select(1f, _e1043, (_e1043 < 1f)), (_e1043 > 0f)) * 255f) + 0.5f);
+                        phi_1661_ = type_29(_e1042, select(select(u32(_e1049), 0u, (_e1049 < 0f)), 4294967295u, (_e1049 > 4294967000f)), _e581.member);
                     } else {
-                        phi_1647_ = type_29(1f, 170u, _e552.member);
+                        phi_1661_ = type_29(1f, 170u, _e581.member);
                     }
-                    let _e1029 = phi_1647_;
-                    if (_e98 < arrayLength((&ao.member))) {
-                    } else {
-                        break;
-                    }
-                    ao.member[_e98] = _e1029.member;
-                    if (_e98 < arrayLength((&terms.member))) {
+                    let _e1058 = phi_1661_;
+                    if (_e97 < arrayLength((&ao.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e98] = _e1029.member_1;
-                    if (_e98 < arrayLength((&edges.member))) {
+                    ao.member[_e97] = _e1058.member;
+                    if (_e97 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e98] = _e1029.member_2;
+                    terms.member[_e97] = _e1058.member_1;
+                    if (_e97 < arrayLength((&edges.member))) {
+                    } else {
+                        break;
+                    }
+                    edges.member[_e97] = _e1058.member_2;
                 }
             }
             break;

@@ -61,292 +61,279 @@ fn function_() {
     var local_1: array<f32, 56>;
     var local_2: array<f32, 56>;
     var local_3: array<array<array<f32, 2>, 4>, 4>;
-    var local_4: array<array<array<f32, 2>, 4>, 4>;
-    var phi_593_: bool;
+    var phi_592_: bool;
+    var phi_594_: bool;
     var phi_595_: bool;
     var phi_596_: bool;
     var phi_597_: bool;
-    var phi_598_: bool;
-    var phi_1488_: bool;
-    var phi_1503_: bool;
-    var phi_1464_: vec2<f32>;
-    var phi_1518_: bool;
-    var phi_883_: type_35;
-    var phi_892_: u32;
-    var phi_895_: f32;
-    var phi_1100_: u32;
-    var phi_1131_: u32;
-    var phi_1533_: bool;
-    var phi_1548_: bool;
-    var phi_893_: u32;
-    var phi_896_: f32;
-    var phi_1562_: bool;
-    var local_5: f32;
-    var phi_1300_: f32;
+    var phi_1469_: bool;
+    var phi_1484_: bool;
+    var phi_1445_: vec2<f32>;
+    var phi_1499_: bool;
+    var phi_864_: type_35;
+    var phi_873_: u32;
+    var phi_876_: f32;
+    var phi_1081_: u32;
+    var phi_1112_: u32;
+    var phi_1514_: bool;
+    var phi_1529_: bool;
+    var phi_874_: u32;
+    var phi_877_: f32;
+    var phi_1543_: bool;
+    var local_4: f32;
+    var phi_1281_: f32;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e300 = id_1;
-            let _e303 = arrayLength((&depth.member));
-            let _e314 = params.member.member.member_4;
-            let _e315 = (_e300.x + _e314);
-            let _e316 = (_e300.y + _e314);
-            let _e321 = params.member.member.member[0u];
-            let _e326 = select(select(u32(_e321), 0u, (_e321 < 0f)), 4294967295u, (_e321 > 4294967000f));
-            let _e331 = params.member.member.member[1u];
-            let _e336 = select(select(u32(_e331), 0u, (_e331 < 0f)), 4294967295u, (_e331 > 4294967000f));
-            if (_e315 >= _e314) {
-                if (_e316 >= _e314) {
-                    let _e340 = ((_e315 + _e314) < _e326);
-                    if _e340 {
-                        phi_593_ = ((_e316 + _e314) < _e336);
+            let _e299 = id_1;
+            let _e302 = arrayLength((&depth.member));
+            let _e313 = params.member.member.member_4;
+            let _e314 = (_e299.x + _e313);
+            let _e315 = (_e299.y + _e313);
+            let _e320 = params.member.member.member[0u];
+            let _e325 = select(select(u32(_e320), 0u, (_e320 < 0f)), 4294967295u, (_e320 > 4294967000f));
+            let _e330 = params.member.member.member[1u];
+            let _e335 = select(select(u32(_e330), 0u, (_e330 < 0f)), 4294967295u, (_e330 > 4294967000f));
+            if (_e314 >= _e313) {
+                if (_e315 >= _e313) {
+                    let _e339 = ((_e314 + _e313) < _e325);
+                    if _e339 {
+                        phi_592_ = ((_e315 + _e313) < _e335);
                     } else {
-                        phi_593_ = bool();
+                        phi_592_ = bool();
                     }
-                    let _e344 = phi_593_;
-                    phi_595_ = _e344;
-                    phi_596_ = select(true, false, _e340);
+                    let _e343 = phi_592_;
+                    phi_594_ = _e343;
+                    phi_595_ = select(true, false, _e339);
                 } else {
-                    phi_595_ = bool();
-                    phi_596_ = true;
+                    phi_594_ = bool();
+                    phi_595_ = true;
                 }
-                let _e347 = phi_595_;
-                let _e349 = phi_596_;
-                phi_597_ = _e347;
-                phi_598_ = _e349;
+                let _e346 = phi_594_;
+                let _e348 = phi_595_;
+                phi_596_ = _e346;
+                phi_597_ = _e348;
             } else {
-                phi_597_ = bool();
-                phi_598_ = true;
+                phi_596_ = bool();
+                phi_597_ = true;
             }
-            let _e351 = phi_597_;
-            let _e353 = phi_598_;
-            if select(_e351, false, _e353) {
-                let _e357 = params.member.member_1;
-                let _e360 = params.member.member_4;
-                let _e363 = ((f32(_e315) + 0.5f) / _e321);
-                let _e366 = ((f32(_e316) + 0.5f) / _e331);
-                let _e368 = ((_e316 * _e326) + _e315);
-                if (_e368 < _e303) {
+            let _e350 = phi_596_;
+            let _e352 = phi_597_;
+            if select(_e350, false, _e352) {
+                let _e356 = params.member.member_1;
+                let _e359 = params.member.member_4;
+                let _e362 = ((f32(_e314) + 0.5f) / _e320);
+                let _e365 = ((f32(_e315) + 0.5f) / _e330);
+                let _e367 = ((_e315 * _e325) + _e314);
+                if (_e367 < _e302) {
                 } else {
                     break;
                 }
-                let _e371 = depth.member[_e368];
-                let _e376 = params.member.member.member_1[0u];
-                let _e381 = params.member.member.member_1[1u];
-                let _e391 = ((((_e357 * _e321) / (_e371 * (2f * _e376))) + ((_e357 * _e331) / (_e371 * (2f * _e381)))) * 0.5f);
-                let _e392 = (_e391 > _e360);
-                let _e396 = select(_e391, _e360, _e392);
-                let _e400 = params.member.member.member_3;
-                let _e412 = ((((_e363 * 2f) - 1f) * _e371) * _e376);
-                let _e414 = ((((_e366 * -2f) + 1f) * _e371) * _e381);
-                let _e415 = -(_e371);
-                if (_e368 < arrayLength((&normals.member))) {
+                let _e370 = depth.member[_e367];
+                let _e375 = params.member.member.member_1[0u];
+                let _e380 = params.member.member.member_1[1u];
+                let _e390 = ((((_e356 * _e320) / (_e370 * (2f * _e375))) + ((_e356 * _e330) / (_e370 * (2f * _e380)))) * 0.5f);
+                let _e391 = (_e390 > _e359);
+                let _e395 = select(_e390, _e359, _e391);
+                let _e399 = params.member.member.member_3;
+                let _e411 = ((((_e362 * 2f) - 1f) * _e370) * _e375);
+                let _e413 = ((((_e365 * -2f) + 1f) * _e370) * _e380);
+                let _e414 = -(_e370);
+                if (_e367 < arrayLength((&normals.member))) {
                 } else {
                     break;
                 }
-                let _e419 = normals.member[_e368];
-                let _e427 = (f32((bitcast<i32>(((_e419 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                if (_e427 != _e427) {
-                    phi_1488_ = true;
+                let _e418 = normals.member[_e367];
+                let _e426 = (f32((bitcast<i32>(((_e418 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                if (_e426 != _e426) {
+                    phi_1469_ = true;
                 } else {
-                    phi_1488_ = (-1f >= _e427);
+                    phi_1469_ = (-1f >= _e426);
                 }
-                let _e431 = phi_1488_;
-                let _e432 = select(_e427, -1f, _e431);
-                let _e442 = (f32((bitcast<i32>((((_e419 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                if (_e442 != _e442) {
-                    phi_1503_ = true;
+                let _e430 = phi_1469_;
+                let _e431 = select(_e426, -1f, _e430);
+                let _e441 = (f32((bitcast<i32>((((_e418 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                if (_e441 != _e441) {
+                    phi_1484_ = true;
                 } else {
-                    phi_1503_ = (-1f >= _e442);
+                    phi_1484_ = (-1f >= _e441);
                 }
-                let _e446 = phi_1503_;
-                let _e447 = select(_e442, -1f, _e446);
-                let _e450 = (1f - abs(_e432));
-                let _e451 = abs(_e447);
-                let _e452 = (_e450 - _e451);
-                if (_e452 < 0f) {
-                    phi_1464_ = vec2<f32>(((1f - _e451) * select(1f, -1f, (_e432 < 0f))), (_e450 * select(1f, -1f, (_e447 < 0f))));
+                let _e445 = phi_1484_;
+                let _e446 = select(_e441, -1f, _e445);
+                let _e449 = (1f - abs(_e431));
+                let _e450 = abs(_e446);
+                let _e451 = (_e449 - _e450);
+                if (_e451 < 0f) {
+                    phi_1445_ = vec2<f32>(((1f - _e450) * select(1f, -1f, (_e431 < 0f))), (_e449 * select(1f, -1f, (_e446 < 0f))));
                 } else {
-                    phi_1464_ = vec2<f32>(_e432, _e447);
+                    phi_1445_ = vec2<f32>(_e431, _e446);
                 }
-                let _e463 = phi_1464_;
-                let _e472 = (1f / sqrt((((_e463.x * _e463.x) + (_e463.y * _e463.y)) + (_e452 * _e452))));
-                let _e473 = (_e463.x * _e472);
-                let _e474 = (_e463.y * _e472);
-                let _e475 = (_e452 * _e472);
-                let _e481 = ((((_e412 * _e473) + (_e414 * _e474)) + (_e415 * _e475)) > 0f);
-                let _e485 = select(_e473, -(_e473), _e481);
-                let _e486 = select(_e474, -(_e474), _e481);
-                let _e487 = select(_e475, -(_e475), _e481);
-                local_4 = array<array<array<f32, 2>, 4>, 4>(array<array<f32, 2>, 4>(array<f32, 2>(0f, 1f), array<f32, 2>(0.012909942f, -0.9999167f), array<f32, 2>(0.69159436f, 0.7222861f), array<f32, 2>(-0.7000154f, -0.7141277f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.99997514f, -0.0070477454f), array<f32, 2>(0.9998238f, 0.018771695f), array<f32, 2>(-0.7100116f, 0.70418996f), array<f32, 2>(0.7182193f, -0.6958169f)), array<array<f32, 2>, 4>(array<f32, 2>(0.91594595f, 0.40130165f), array<f32, 2>(-0.92058814f, -0.39053485f), array<f32, 2>(0.36117664f, 0.93249744f), array<f32, 2>(-0.3720851f, -0.92819864f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.38513124f, 0.9228618f), array<f32, 2>(0.39592505f, -0.9182828f), array<f32, 2>(-0.9260013f, 0.37752023f), array<f32, 2>(0.930364f, -0.36663717f)));
-                let _e489 = (_e316 % 4u);
-                let _e490 = (_e489 < 4u);
-                if _e490 {
-                } else {
-                    break;
-                }
-                let _e491 = (_e315 % 4u);
-                let _e492 = (_e491 < 4u);
-                if _e492 {
-                } else {
-                    break;
-                }
-                let _e495 = local_4[_e489][_e491];
+                let _e462 = phi_1445_;
+                let _e471 = (1f / sqrt((((_e462.x * _e462.x) + (_e462.y * _e462.y)) + (_e451 * _e451))));
+                let _e472 = (_e462.x * _e471);
+                let _e473 = (_e462.y * _e471);
+                let _e474 = (_e451 * _e471);
+                let _e480 = ((((_e411 * _e472) + (_e413 * _e473)) + (_e414 * _e474)) > 0f);
+                let _e484 = select(_e472, -(_e472), _e480);
+                let _e485 = select(_e473, -(_e473), _e480);
+                let _e486 = select(_e474, -(_e474), _e480);
                 local_3 = array<array<array<f32, 2>, 4>, 4>(array<array<f32, 2>, 4>(array<f32, 2>(0f, 1f), array<f32, 2>(0.012909942f, -0.9999167f), array<f32, 2>(0.69159436f, 0.7222861f), array<f32, 2>(-0.7000154f, -0.7141277f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.99997514f, -0.0070477454f), array<f32, 2>(0.9998238f, 0.018771695f), array<f32, 2>(-0.7100116f, 0.70418996f), array<f32, 2>(0.7182193f, -0.6958169f)), array<array<f32, 2>, 4>(array<f32, 2>(0.91594595f, 0.40130165f), array<f32, 2>(-0.92058814f, -0.39053485f), array<f32, 2>(0.36117664f, 0.93249744f), array<f32, 2>(-0.3720851f, -0.92819864f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.38513124f, 0.9228618f), array<f32, 2>(0.39592505f, -0.9182828f), array<f32, 2>(-0.9260013f, 0.37752023f), array<f32, 2>(0.930364f, -0.36663717f)));
-                if _e490 {
+                let _e488 = (_e315 % 4u);
+                if (_e488 < 4u) {
                 } else {
                     break;
                 }
-                if _e492 {
+                let _e490 = (_e314 % 4u);
+                if (_e490 < 4u) {
                 } else {
                     break;
                 }
-                let _e499 = local_3[_e489][_e491];
-                let _e508 = sqrt((((_e412 * _e412) + (_e414 * _e414)) + (_e415 * _e415)));
-                let _e509 = (-(_e412) / _e508);
-                let _e510 = (-(_e414) / _e508);
-                let _e511 = (_e371 / _e508);
-                let _e514 = -((_e499[1] * _e511));
-                let _e515 = (_e511 * _e495[0]);
-                let _e518 = ((_e509 * _e499[1]) - (_e495[0] * _e510));
-                let _e525 = (1f / sqrt((((_e514 * _e514) + (_e515 * _e515)) + (_e518 * _e518))));
-                let _e526 = (_e514 * _e525);
-                let _e527 = (_e515 * _e525);
-                let _e528 = (_e518 * _e525);
-                let _e532 = ((_e527 * _e511) - (_e510 * _e528));
-                let _e535 = ((_e528 * _e509) - (_e511 * _e526));
-                let _e538 = ((_e526 * _e510) - (_e509 * _e527));
-                let _e554 = (((_e485 * _e509) + (_e486 * _e510)) + (_e487 * _e511));
-                let _e558 = abs(_e554);
-                if (_e558 != _e558) {
-                    phi_1518_ = true;
+                let _e494 = local_3[_e488][_e490];
+                let _e504 = sqrt((((_e411 * _e411) + (_e413 * _e413)) + (_e414 * _e414)));
+                let _e505 = (-(_e411) / _e504);
+                let _e506 = (-(_e413) / _e504);
+                let _e507 = (_e370 / _e504);
+                let _e510 = -((_e494[1] * _e507));
+                let _e511 = (_e507 * _e494[0]);
+                let _e514 = ((_e505 * _e494[1]) - (_e494[0] * _e506));
+                let _e521 = (1f / sqrt((((_e510 * _e510) + (_e511 * _e511)) + (_e514 * _e514))));
+                let _e522 = (_e510 * _e521);
+                let _e523 = (_e511 * _e521);
+                let _e524 = (_e514 * _e521);
+                let _e528 = ((_e523 * _e507) - (_e506 * _e524));
+                let _e531 = ((_e524 * _e505) - (_e507 * _e522));
+                let _e534 = ((_e522 * _e506) - (_e505 * _e523));
+                let _e550 = (((_e484 * _e505) + (_e485 * _e506)) + (_e486 * _e507));
+                let _e554 = abs(_e550);
+                if (_e554 != _e554) {
+                    phi_1499_ = true;
                 } else {
-                    phi_1518_ = (0.0001f >= _e558);
+                    phi_1499_ = (0.0001f >= _e554);
                 }
-                let _e562 = phi_1518_;
-                if select(false, !((_e396 < 0.5f)), select(false, (_e371 < _e400), (_e371 > 0f))) {
-                    phi_883_ = type_35(1u, type_34(vec2<u32>(_e315, _e316), vec2<f32>(_e363, _e366), select(_e357, ((_e357 * _e360) / _e391), _e392), _e396, vec3<f32>(_e412, _e414, _e415), vec3<f32>(_e485, _e486, _e487), vec3<f32>(_e509, _e510, _e511), vec3<f32>(_e532, _e535, _e538), vec3<f32>(_e526, _e527, _e528), vec3<f32>((((_e485 * _e532) + (_e486 * _e535)) + (_e487 * _e538)), (((_e485 * _e526) + (_e486 * _e527)) + (_e487 * _e528)), _e554), (1f / (select(1f, -1f, (_e554 < 0f)) * select(_e558, 0.0001f, _e562)))));
+                let _e558 = phi_1499_;
+                if select(false, !((_e395 < 0.5f)), select(false, (_e370 < _e399), (_e370 > 0f))) {
+                    phi_864_ = type_35(1u, type_34(vec2<u32>(_e314, _e315), vec2<f32>(_e362, _e365), select(_e356, ((_e356 * _e359) / _e390), _e391), _e395, vec3<f32>(_e411, _e413, _e414), vec3<f32>(_e484, _e485, _e486), vec3<f32>(_e505, _e506, _e507), vec3<f32>(_e528, _e531, _e534), vec3<f32>(_e522, _e523, _e524), vec3<f32>((((_e484 * _e528) + (_e485 * _e531)) + (_e486 * _e534)), (((_e484 * _e522) + (_e485 * _e523)) + (_e486 * _e524)), _e550), (1f / (select(1f, -1f, (_e550 < 0f)) * select(_e554, 0.0001f, _e558)))));
                 } else {
-                    phi_883_ = type_35(0u, type_35().member_1);
+                    phi_864_ = type_35(0u, type_35().member_1);
                 }
-                let _e574 = phi_883_;
-                if (bitcast<i32>(_e574.member) != 0i) {
-                    phi_892_ = 0u;
-                    phi_895_ = 0f;
+                let _e570 = phi_864_;
+                if (bitcast<i32>(_e570.member) != 0i) {
+                    phi_873_ = 0u;
+                    phi_876_ = 0f;
                     loop {
-                        let _e580 = phi_892_;
-                        let _e582 = phi_895_;
-                        local_5 = _e582;
-                        let _e583 = (_e580 < 8u);
-                        if _e583 {
+                        let _e576 = phi_873_;
+                        let _e578 = phi_876_;
+                        local_4 = _e578;
+                        let _e579 = (_e576 < 8u);
+                        if _e579 {
                             local = array<array<f32, 2>, 56>(array<f32, 2>(0f, 1f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(0f, 1f), array<f32, 2>(0.382615f, 0.9239079f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.92379445f, 0.38288876f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.92402124f, -0.3823412f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.38316247f, -0.92368096f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.38206735f, -0.9241345f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.92356735f, -0.38343617f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.9242476f, 0.3817935f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(-0.38370985f, 0.9234537f), array<f32, 2>(0f, 1f), array<f32, 2>(0.195054f, 0.9807925f), array<f32, 2>(0.382615f, 0.9239079f), array<f32, 2>(0.55547786f, 0.83153135f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.8313667f, 0.5557242f), array<f32, 2>(0.92379445f, 0.38288876f), array<f32, 2>(0.98073465f, 0.19534461f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.9808503f, -0.19476335f), array<f32, 2>(0.92402124f, -0.3823412f), array<f32, 2>(0.8316959f, -0.5552314f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.55597055f, -0.831202f), array<f32, 2>(0.38316247f, -0.92368096f), array<f32, 2>(0.19563523f, -0.9806767f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.19447269f, -0.9809079f), array<f32, 2>(-0.38206735f, -0.9241345f), array<f32, 2>(-0.5549849f, -0.8318604f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.8310372f, -0.55621684f), array<f32, 2>(-0.92356735f, -0.38343617f), array<f32, 2>(-0.9806187f, -0.19592582f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.9809655f, 0.19418201f), array<f32, 2>(-0.9242476f, 0.3817935f), array<f32, 2>(-0.8320248f, 0.5547384f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(-0.55646306f, 0.83087236f), array<f32, 2>(-0.38370985f, 0.9234537f), array<f32, 2>(-0.19621639f, 0.9805606f));
-                            let _e584 = (_e580 < 56u);
-                            if _e584 {
+                            let _e580 = (_e576 < 56u);
+                            if _e580 {
                             } else {
-                                phi_1562_ = true;
+                                phi_1543_ = true;
                                 break;
                             }
-                            let _e586 = local[_e580];
+                            let _e582 = local[_e576];
                             local_1 = array<f32, 56>(0.917883f, 0.564429f, 0.734504f, 0.359545f, 0.820004f, 0.470149f, 0.650919f, 0.205215f, 0.9490982f, 0.5865639f, 0.7554682f, 0.38954395f, 0.84255606f, 0.4948004f, 0.6719197f, 0.252031f, 0.8908589f, 0.54182106f, 0.7136428f, 0.32724136f, 0.798092f, 0.44453403f, 0.6297374f, 0.14471826f, 0.96824586f, 0.5974803f, 0.7660169f, 0.40384725f, 0.8541535f, 0.5068159f, 0.6823727f, 0.27260765f, 0.90401816f, 0.55318946f, 0.72406566f, 0.34372202f, 0.80898184f, 0.45747337f, 0.6403549f, 0.17748062f, 0.9327351f, 0.57555f, 0.7449678f, 0.37479568f, 0.83118564f, 0.48258433f, 0.6614378f, 0.22975244f, 0.87823313f, 0.5303115f, 0.7032256f, 0.30999523f, 0.7873134f, 0.4313043f, 0.61905813f, 0.10219581f);
-                            if _e584 {
+                            if _e580 {
                             } else {
-                                phi_1562_ = true;
+                                phi_1543_ = true;
                                 break;
                             }
-                            let _e590 = local_1[_e580];
-                            let _e592 = (_e574.member_1.member_2 * _e590);
-                            let _e593 = (_e592 * _e586[0]);
-                            let _e594 = (_e592 * _e586[1]);
+                            let _e586 = local_1[_e576];
+                            let _e588 = (_e570.member_1.member_2 * _e586);
+                            let _e589 = (_e588 * _e582[0]);
+                            let _e590 = (_e588 * _e582[1]);
                             local_2 = array<f32, 56>(0.39685115f, 0.82548165f, 0.67860436f, 0.93312776f, 0.57235783f, 0.8825871f, 0.75914717f, 0.9787169f, 0.31498024f, 0.80990297f, 0.65518534f, 0.9210079f, 0.5386087f, 0.86900663f, 0.740624f, 0.96771914f, 0.45428014f, 0.84049386f, 0.7005098f, 0.9449408f, 0.6025356f, 0.89576197f, 0.7768081f, 0.9894729f, 0.2499999f, 0.8018836f, 0.6428204f, 0.91482645f, 0.52002096f, 0.8620543f, 0.7310045f, 0.9621253f, 0.42749405f, 0.8330555f, 0.68973106f, 0.9390714f, 0.58783364f, 0.88922334f, 0.76807916f, 0.9841243f, 0.3605624f, 0.8177666f, 0.6671004f, 0.92710745f, 0.555995f, 0.8758495f, 0.75f, 0.9732491f, 0.47823274f, 0.8478029f, 0.71096677f, 0.95073813f, 0.616553f, 0.90220654f, 0.78534514f, 0.9947643f);
-                            if _e584 {
+                            if _e580 {
                             } else {
-                                phi_1562_ = true;
+                                phi_1543_ = true;
                                 break;
                             }
-                            let _e596 = local_2[_e580];
-                            let _e597 = (_e574.member_1.member_2 * _e596);
-                            let _e606 = (-(((_e593 * _e574.member_1.member_9.x) + (_e594 * _e574.member_1.member_9.y))) * _e574.member_1.member_10);
-                            let _e607 = -(_e597);
-                            let _e611 = select(_e607, select(_e597, _e606, (_e606 < _e597)), (_e606 > _e607));
-                            let _e612 = (_e597 - _e611);
-                            let _e639 = (-0.5f / ((_e574.member_1.member_4.z + (_e574.member_1.member_7.z * _e593)) + (_e574.member_1.member_8.z * _e594)));
-                            let _e642 = (((((_e574.member_1.member_4.x + (_e574.member_1.member_7.x * _e593)) + (_e574.member_1.member_8.x * _e594)) * _e639) / _e376) + 0.5f);
-                            let _e645 = (0.5f - ((((_e574.member_1.member_4.y + (_e574.member_1.member_7.y * _e593)) + (_e574.member_1.member_8.y * _e594)) * _e639) / _e381));
-                            let _e650 = (select(0f, select(1f, _e642, (_e642 < 1f)), (_e642 > 0f)) * _e321);
-                            if (_e650 > 0f) {
-                                let _e656 = select(select(u32(_e650), 0u, (_e650 < 0f)), 4294967295u, (_e650 > 4294967000f));
-                                let _e657 = (_e326 - 1u);
-                                phi_1100_ = select(_e656, _e657, (_e657 < _e656));
+                            let _e592 = local_2[_e576];
+                            let _e593 = (_e570.member_1.member_2 * _e592);
+                            let _e602 = (-(((_e589 * _e570.member_1.member_9.x) + (_e590 * _e570.member_1.member_9.y))) * _e570.member_1.member_10);
+                            let _e603 = -(_e593);
+                            let _e607 = select(_e603, select(_e593, _e602, (_e602 < _e593)), (_e602 > _e603));
+                            let _e608 = (_e593 - _e607);
+                            let _e635 = (-0.5f / ((_e570.member_1.member_4.z + (_e570.member_1.member_7.z * _e589)) + (_e570.member_1.member_8.z * _e590)));
+                            let _e638 = (((((_e570.member_1.member_4.x + (_e570.member_1.member_7.x * _e589)) + (_e570.member_1.member_8.x * _e590)) * _e635) / _e375) + 0.5f);
+                            let _e641 = (0.5f - ((((_e570.member_1.member_4.y + (_e570.member_1.member_7.y * _e589)) + (_e570.member_1.member_8.y * _e590)) * _e635) / _e380));
+                            let _e646 = (select(0f, select(1f, _e638, (_e638 < 1f)), (_e638 > 0f)) * _e320);
+                            if (_e646 > 0f) {
+                                let _e652 = select(select(u32(_e646), 0u, (_e646 < 0f)), 4294967295u, (_e646 > 4294967000f));
+                                let _e653 = (_e325 - 1u);
+                                phi_1081_ = select(_e652, _e653, (_e653 < _e652));
                             } else {
-                                phi_1100_ = 0u;
+                                phi_1081_ = 0u;
                             }
-                            let _e661 = phi_1100_;
-                            let _e666 = (select(0f, select(1f, _e645, (_e645 < 1f)), (_e645 > 0f)) * _e331);
-                            if (_e666 > 0f) {
-                                let _e672 = select(select(u32(_e666), 0u, (_e666 < 0f)), 4294967295u, (_e666 > 4294967000f));
-                                let _e673 = (_e336 - 1u);
-                                phi_1131_ = select(_e672, _e673, (_e673 < _e672));
+                            let _e657 = phi_1081_;
+                            let _e662 = (select(0f, select(1f, _e641, (_e641 < 1f)), (_e641 > 0f)) * _e330);
+                            if (_e662 > 0f) {
+                                let _e668 = select(select(u32(_e662), 0u, (_e662 < 0f)), 4294967295u, (_e662 > 4294967000f));
+                                let _e669 = (_e335 - 1u);
+                                phi_1112_ = select(_e668, _e669, (_e669 < _e668));
                             } else {
-                                phi_1131_ = 0u;
+                                phi_1112_ = 0u;
                             }
-                            let _e677 = phi_1131_;
-                            let _e686 = ((_e677 * _e326) + _e661);
-                            if (_e686 < _e303) {
+                            let _e673 = phi_1112_;
+                            let _e682 = ((_e673 * _e325) + _e657);
+                            if (_e682 < _e302) {
                             } else {
-                                phi_1562_ = true;
+                                phi_1543_ = true;
                                 break;
                             }
-                            let _e689 = depth.member[_e686];
-                            let _e701 = select(_e400, _e689, select(false, (_e689 < _e400), (_e689 > 0f)));
-                            let _e722 = ((((((((((f32(_e661) + 0.5f) * (1f / _e321)) * 2f) - 1f) * _e701) * _e376) - _e574.member_1.member_4.x) * _e574.member_1.member_6.x) + ((((((((f32(_e677) + 0.5f) * (1f / _e331)) * -2f) + 1f) * _e701) * _e381) - _e574.member_1.member_4.y) * _e574.member_1.member_6.y)) + ((-(_e701) - _e574.member_1.member_4.z) * _e574.member_1.member_6.z));
-                            let _e727 = params.member.member_3;
-                            if (_e611 != _e611) {
-                                phi_1533_ = true;
+                            let _e685 = depth.member[_e682];
+                            let _e697 = select(_e399, _e685, select(false, (_e685 < _e399), (_e685 > 0f)));
+                            let _e718 = ((((((((((f32(_e657) + 0.5f) * (1f / _e320)) * 2f) - 1f) * _e697) * _e375) - _e570.member_1.member_4.x) * _e570.member_1.member_6.x) + ((((((((f32(_e673) + 0.5f) * (1f / _e330)) * -2f) + 1f) * _e697) * _e380) - _e570.member_1.member_4.y) * _e570.member_1.member_6.y)) + ((-(_e697) - _e570.member_1.member_4.z) * _e570.member_1.member_6.z));
+                            let _e723 = params.member.member_3;
+                            if (_e607 != _e607) {
+                                phi_1514_ = true;
                             } else {
-                                phi_1533_ = (_e722 >= _e611);
+                                phi_1514_ = (_e718 >= _e607);
                             }
-                            let _e732 = phi_1533_;
-                            let _e734 = (_e597 - select(_e611, _e722, _e732));
-                            if (_e734 != _e734) {
-                                phi_1548_ = true;
+                            let _e728 = phi_1514_;
+                            let _e730 = (_e593 - select(_e607, _e718, _e728));
+                            if (_e730 != _e730) {
+                                phi_1529_ = true;
                             } else {
-                                phi_1548_ = (0f >= _e734);
+                                phi_1529_ = (0f >= _e730);
                             }
-                            let _e738 = phi_1548_;
-                            let _e743 = ((_e722 - (_e574.member_1.member_2 * (1f + _e727))) * (1f / _e597));
-                            phi_893_ = (_e580 + 1u);
-                            phi_896_ = (_e582 + select(0f, select(((select(_e734, 0f, _e738) + (select(0f, select(1f, _e743, (_e743 < 1f)), (_e743 > 0f)) * _e612)) * (0.5f / _e597)), (_e612 / (_e597 * 2f)), select(false, (_e677 == _e574.member_1.member.y), (_e661 == _e574.member_1.member.x))), (_e612 > (_e597 * 0.2f))));
+                            let _e734 = phi_1529_;
+                            let _e739 = ((_e718 - (_e570.member_1.member_2 * (1f + _e723))) * (1f / _e593));
+                            phi_874_ = (_e576 + 1u);
+                            phi_877_ = (_e578 + select(0f, select(((select(_e730, 0f, _e734) + (select(0f, select(1f, _e739, (_e739 < 1f)), (_e739 > 0f)) * _e608)) * (0.5f / _e593)), (_e608 / (_e593 * 2f)), select(false, (_e673 == _e570.member_1.member.y), (_e657 == _e570.member_1.member.x))), (_e608 > (_e593 * 0.2f))));
                         } else {
-                            phi_893_ = u32();
-                            phi_896_ = f32();
+                            phi_874_ = u32();
+                            phi_877_ = f32();
                         }
-                        let _e757 = phi_893_;
-                        let _e759 = phi_896_;
+                        let _e753 = phi_874_;
+                        let _e755 = phi_877_;
                         continue;
                         continuing {
-                            phi_892_ = _e757;
-                            phi_895_ = _e759;
-                            phi_1562_ = false;
-                            break if !(_e583);
+                            phi_873_ = _e753;
+                            phi_876_ = _e755;
+                            phi_1543_ = false;
+                            break if !(_e579);
                         }
                     }
-                    let _e762 = phi_1562_;
-                    if _e762 {
+                    let _e758 = phi_1543_;
+                    if _e758 {
                         break;
                     }
-                    let _e764 = local_5;
-                    let _e765 = (0.25f * _e764);
-                    let _e772 = params.member.member_2;
-                    phi_1300_ = pow(select(0f, select(1f, _e765, (_e765 < 1f)), (_e765 > 0f)), _e772);
+                    let _e760 = local_4;
+                    let _e761 = (0.25f * _e760);
+                    let _e768 = params.member.member_2;
+                    phi_1281_ = pow(select(0f, select(1f, _e761, (_e761 < 1f)), (_e761 > 0f)), _e768);
                 } else {
-                    phi_1300_ = 1f;
+                    phi_1281_ = 1f;
                 }
-                let _e775 = phi_1300_;
-                if (_e368 < arrayLength((&ao.member))) {
+                let _e771 = phi_1281_;
+                if (_e367 < arrayLength((&ao.member))) {
                 } else {
                     break;
                 }
-                ao.member[_e368] = _e775;
+                ao.member[_e367] = _e771;
             }
             break;
         }

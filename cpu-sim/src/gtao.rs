@@ -1,11 +1,11 @@
 //! XeGTAO's passes on the CPU (spec gtao-raymarch-hybrid §2.3–§2.7): the shader crate's
 //! per-texel and per-pixel functions over whole buffers, in the GPU's dispatch order.
 
-use crate::screen::lane_pixel;
-use aokit_shaders::common::lanes::{F32x8, Lanes, U2x8};
+use crate::screen::lanes_of_run;
+use aokit_shaders::common::lanes::{F32x8, Lanes};
 use aokit_shaders::glam::{UVec2, vec3};
 use aokit_shaders::gtao::denoise::{denoise_lanes, is_last_pass};
-use aokit_shaders::gtao::main_pass::{PixelSetup, finish_pixel, pixel_setup, slices_visibility};
+use aokit_shaders::gtao::main_pass::{finish_pixel, pixel_setup, slices_visibility};
 use aokit_shaders::gtao::{
     GtaoParams, MIP_LEVELS, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
 };
@@ -66,27 +66,14 @@ pub fn main_pass_x8(
     terms: &mut [u32],
     edges: &mut [u32],
 ) {
-    let (setups, px) = setups_x8(params, mips, normals, first, terms.len());
+    let (packed, valid, px) = pixel_setup::<F32x8>(params, mips, normals, lanes_of_run(first, terms.len()));
     let (vis, bent) = slices_visibility(params, mips, &px);
     for (i, (t, e)) in terms.iter_mut().zip(edges.iter_mut()).enumerate() {
-        let (packed, valid, setup) = setups[i];
         let b = vec3(bent.x.lane(i), bent.y.lane(i), bent.z.lane(i));
-        (*t, *e) = (finish_pixel(params, valid, vis.lane(i), b, setup.n), packed);
+        let n = vec3(px.n.x.lane(i), px.n.y.lane(i), px.n.z.lane(i));
+        *t = finish_pixel(params, F32x8::mask_lane(valid, i), vis.lane(i), b, n);
+        *e = F32x8::index_lane(packed, i);
     }
-}
-
-/// The per-pixel setups (packed edges, usable depth, [`PixelSetup`]) of `n` ≤ 8 consecutive
-/// pixels from `first`, and the same setups side by side on eight lanes.
-fn setups_x8(
-    params: &GtaoParams,
-    mips: &[f32],
-    normals: &[u32],
-    first: UVec2,
-    n: usize,
-) -> ([(u32, bool, PixelSetup); 8], PixelSetup<F32x8>) {
-    let setups: [_; 8] = core::array::from_fn(|i| pixel_setup(params, mips, normals, lane_pixel(first, i, n)));
-    let px = PixelSetup::<F32x8>::from_lanes(&setups.map(|s| s.2));
-    (setups, px)
 }
 
 /// VBAO's main pass into the caller's term and edge buffers, eight pixels of a row per call of
@@ -94,11 +81,11 @@ fn setups_x8(
 pub fn run_vbao_into(params: &VbaoParams, mips: &[f32], normals: &[u32], terms: &mut [u32], edges: &mut [u32]) {
     let size = params.gtao.view.size();
     crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |first, t, e| {
-        let (setups, px) = setups_x8(&params.gtao, mips, normals, first, t.len());
+        let (packed, valid, px) = pixel_setup::<F32x8>(&params.gtao, mips, normals, lanes_of_run(first, t.len()));
         let vis = vbao_visibility(params, mips, &px);
         for (i, (t, e)) in t.iter_mut().zip(e.iter_mut()).enumerate() {
-            let (packed, valid, _) = setups[i];
-            (*t, *e) = (vbao_term(params, valid, vis.lane(i)), packed);
+            *t = vbao_term(params, F32x8::mask_lane(valid, i), vis.lane(i));
+            *e = F32x8::index_lane(packed, i);
         }
     });
 }
@@ -133,8 +120,7 @@ pub fn denoise_into(params: &GtaoParams, terms_in: &[u32], edges: &[u32], terms_
     }
     let last = is_last_pass(params);
     crate::screen::tiled_lanes2(terms_out, ao, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |first, t, a| {
-        let p = U2x8::from_texels(&core::array::from_fn(|i| lane_pixel(first, i, t.len())));
-        let (term, visibility) = denoise_lanes::<F32x8>(params, terms_in, edges, p);
+        let (term, visibility) = denoise_lanes::<F32x8>(params, terms_in, edges, lanes_of_run(first, t.len()));
         let term = term.to_array();
         for (i, out) in t.iter_mut().enumerate() {
             *out = term[i] as u32;

@@ -97,6 +97,11 @@ pub fn lane_pixel(first: UVec2, i: usize, n: usize) -> UVec2 {
     uvec2(first.x + i.min(n - 1) as u32, first.y)
 }
 
+/// The `n` ≥ 1 consecutive pixels of a row from `first` as eight lanes ([`lane_pixel`]).
+pub fn lanes_of_run(first: UVec2, n: usize) -> U2x8 {
+    U2x8::from_texels(&core::array::from_fn(|i| lane_pixel(first, i, n)))
+}
+
 /// Call `kernel(first, out)` for runs of up to 8 consecutive inner pixels of a full-target
 /// image, in parallel [`tiled_lanes`] bands. Guard-band pixels keep 1.
 fn for_inner_lanes(size: UVec2, guard: u32, progress: Progress, kernel: impl Fn(UVec2, &mut [f32]) + Sync) -> Vec<f32> {
@@ -119,7 +124,7 @@ pub fn run_vao(params: &VaoParams, depth: &[f32], normals: &[u32], progress: Pro
 /// last pixel; unshaded pixels (no usable depth) borrow a shaded lane's frame and are
 /// discarded.
 pub fn vao_x8(gbuffer: &GBufferSlices, params: &VaoParams, first: UVec2, ao: &mut [f32]) {
-    let p = U2x8::from_texels(&core::array::from_fn(|i| lane_pixel(first, i, ao.len())));
+    let p = lanes_of_run(first, ao.len());
     let (shaded, frame) = setup_lanes::<_, F32x8>(gbuffer, &params.view, params.radius, params.max_screen_radius, p);
     if !F32x8::any(shaded) {
         ao.fill(1.0);

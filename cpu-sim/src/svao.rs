@@ -5,11 +5,11 @@
 
 use crate::bvh::AnyHit;
 use crate::gbuffer::Surfaces;
-use crate::screen::lane_pixel;
+use crate::screen::lanes_of_run;
 use crate::{Progress, SceneBvh};
 use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
 use aokit_shaders::common::gbuffer_read::{DepthSlice, GBufferSlices};
-use aokit_shaders::common::lanes::{F32x8, LaneVec3, Lanes, U2x8};
+use aokit_shaders::common::lanes::{F32x8, LaneVec3, Lanes};
 use aokit_shaders::glam::{UVec2, uvec2, vec2};
 use aokit_shaders::rastersd::raster_fragment;
 use aokit_shaders::raysd::{SdMapRefine, SdPayload, reservoir_any_hit, sd_ray, store_layers};
@@ -73,7 +73,7 @@ fn pass1_x8(
 ) {
     let vao = &params.vao;
     let n = ao.len();
-    let p = U2x8::from_texels(&core::array::from_fn(|i| lane_pixel(first, i, n)));
+    let p = lanes_of_run(first, n);
     let (shaded, lanes) = setup_lanes::<_, F32x8>(gbuffer, &vao.view, vao.radius, vao.max_screen_radius, p);
     if !F32x8::any(shaded) {
         return;

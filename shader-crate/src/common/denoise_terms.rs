@@ -17,21 +17,28 @@ pub fn round_even(x: f32) -> f32 {
 
 /// Edge weights (L, R, T, B) of a pixel at depth `zc` from its 4-neighbours (spec §2.6.1):
 /// slope-corrected depth differences, `sat(1.25 − min(|Δ|, |Δ'|)/(0.011·zc))`, 1 = connected.
+/// One pixel or `L::LANES` pixels.
 #[inline]
-pub fn edges(zc: f32, zl: f32, zr: f32, zt: f32, zb: f32) -> Vec4 {
-    let d = vec4(zl, zr, zt, zb) - zc;
-    let slope_lr = (d.y - d.x) * 0.5;
-    let slope_tb = (d.w - d.z) * 0.5;
-    let adjusted = d + vec4(slope_lr, -slope_lr, slope_tb, -slope_tb);
-    let m = d.abs().min(adjusted.abs()) / (zc * 0.011);
-    vec4(sat(1.25 - m.x), sat(1.25 - m.y), sat(1.25 - m.z), sat(1.25 - m.w))
+pub fn edges<L: Lanes>(zc: L, zl: L, zr: L, zt: L, zb: L) -> EdgeWeights<L> {
+    let (dl, dr, dt, db) = (zl - zc, zr - zc, zt - zc, zb - zc);
+    let slope_lr = (dr - dl) * 0.5;
+    let slope_tb = (db - dt) * 0.5;
+    let scale = zc * 0.011;
+    let weight = |d: L, adjusted: L| sat(-(d.abs().min(adjusted.abs()) / scale) + 1.25);
+    EdgeWeights {
+        l: weight(dl, dl + slope_lr),
+        r: weight(dr, dr - slope_lr),
+        t: weight(dt, dt + slope_tb),
+        b: weight(db, db - slope_tb),
+    }
 }
 
 /// Pack edges as XeGTAO's R8 value: `q = round(sat(e)·2.9)`, `64·qL + 16·qR + 4·qT + qB`.
 #[inline]
-pub fn pack_edges(e: Vec4) -> u32 {
-    let q = |v: f32| round_even(sat(v) * 2.9) as u32;
-    64 * q(e.x) + 16 * q(e.y) + 4 * q(e.z) + q(e.w)
+pub fn pack_edges<L: Lanes>(e: EdgeWeights<L>) -> L::Index {
+    // round(·) of [0, 2.9] is a whole number 0–3, which floor_index takes exactly.
+    let q = |v: L| (sat(v) * 2.9).round_even().floor_index(L::index_splat(4));
+    L::index_splat(64) * q(e.l) + L::index_splat(16) * q(e.r) + L::index_splat(4) * q(e.t) + q(e.b)
 }
 
 /// Edge weights (L, R, T, B) of a pixel per lane, 1 = connected.

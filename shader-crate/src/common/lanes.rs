@@ -116,6 +116,8 @@ pub trait Lanes:
     /// SPIR-V, a panic in debug Rust): 0 where `start` ≥ 32 or `count` = 0, every bit from
     /// `start` where `count` ≥ 32.
     fn index_bit_run(start: Self::Index, count: Self::Index) -> Self::Index;
+    /// The vector whose lane `i` is `f(i)`, one call of `f` per lane.
+    fn v2_from_lanes(f: impl Fn(usize) -> Vec2) -> Self::V2;
     /// The index whose lane `k` is `f(k)`.
     fn index_from_lanes(f: impl Fn(usize) -> u32) -> Self::Index;
     /// Lane `k` of an index.
@@ -336,6 +338,10 @@ impl Lanes for f32 {
         ones << start
     }
     #[inline]
+    fn v2_from_lanes(f: impl Fn(usize) -> Vec2) -> Vec2 {
+        f(0)
+    }
+    #[inline]
     fn index_from_lanes(f: impl Fn(usize) -> u32) -> u32 {
         f(0)
     }
@@ -399,12 +405,6 @@ impl LaneVec3<f32> for Vec3 {
     }
 }
 
-/// The vector whose lane `i` is `f(i)` (gathering per-pixel setups into lanes).
-#[inline(always)]
-pub fn v2_from_lanes<L: Lanes>(f: impl Fn(usize) -> Vec2) -> L::V2 {
-    L::V2::new(L::from_lanes(|i| f(i).x), L::from_lanes(|i| f(i).y))
-}
-
 /// The vector whose lane `i` is `f(i)`.
 #[inline(always)]
 pub fn v3_from_lanes<L: Lanes>(f: impl Fn(usize) -> Vec3) -> L::V3 {
@@ -418,7 +418,7 @@ pub use x8::{F32x8, U2x8, V2x8, V3x8};
 #[cfg(not(target_arch = "spirv"))]
 mod x8 {
     use super::{LaneVec2, LaneVec3, Lanes};
-    use crate::glam::{UVec2, Vec3};
+    use crate::glam::{UVec2, Vec2, Vec3};
     use core::ops::{Add, Div, Mul, Neg, Sub};
     use wide::{f32x8, i32x8};
 
@@ -641,6 +641,11 @@ mod x8 {
             let one = i32x8::splat(1);
             let ones = one.unbounded_shl(bytemuck::cast(count)) - one;
             ones.unbounded_shl(bytemuck::cast(start))
+        }
+        #[inline(always)]
+        fn v2_from_lanes(f: impl Fn(usize) -> Vec2) -> V2x8 {
+            let v: [Vec2; 8] = core::array::from_fn(f);
+            V2x8 { x: F32x8::from_lanes(|i| v[i].x), y: F32x8::from_lanes(|i| v[i].y) }
         }
         #[inline(always)]
         fn index_from_lanes(f: impl Fn(usize) -> u32) -> i32x8 {

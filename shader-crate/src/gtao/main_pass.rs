@@ -8,12 +8,10 @@ use spirv_std::num_traits::Float;
 use super::{GtaoParams, MIP_LEVELS, mip_offset, mip_size};
 use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, store_term};
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
-#[cfg(not(target_arch = "spirv"))]
-use crate::common::lanes::{v2_from_lanes, v3_from_lanes};
 use crate::common::math::{ceil, clamp, depth_or_far, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::{decode_normal, encode_normal};
-use crate::common::screen_space::{neighbour, view_pos};
+use crate::common::screen_space::{neighbour, neighbour_lanes, view_pos};
 use crate::glam::{UVec2, Vec3, vec3};
 
 /// Output of the main pass for one pixel: the working AO term `uint(sat(vis/1.5)·255 + 0.5)`
@@ -22,12 +20,6 @@ use crate::glam::{UVec2, Vec3, vec3};
 pub struct GtaoPixel {
     pub term: u32,
     pub edges: u32,
-}
-
-/// Working-depth MIP 0 at pixel `p`.
-#[inline]
-fn depth0(params: &GtaoParams, mips: &[f32], p: UVec2) -> f32 {
-    mips[(p.y * params.view.size().x + p.x) as usize]
 }
 
 /// The G-buffer's right-handed (−z forward) view normal in XeGTAO's +z-forward space.
@@ -58,53 +50,50 @@ pub struct PixelSetup<L: Lanes = f32> {
     pub xi: L::V2,
 }
 
-#[cfg(not(target_arch = "spirv"))]
-impl<L: Lanes> PixelSetup<L> {
-    /// The setups of `L::LANES` pixels side by side (lane `i` from `each[i]`).
-    #[inline]
-    pub fn from_lanes(each: &[PixelSetup<f32>]) -> Self {
-        PixelSetup {
-            uv: v2_from_lanes::<L>(|i| each[i].uv),
-            pos: v3_from_lanes::<L>(|i| each[i].pos),
-            v: v3_from_lanes::<L>(|i| each[i].v),
-            n: v3_from_lanes::<L>(|i| each[i].n),
-            r: each[0].r,
-            r_px: L::from_lanes(|i| each[i].r_px),
-            min_s: L::from_lanes(|i| each[i].min_s),
-            xi: v2_from_lanes::<L>(|i| each[i].xi),
-        }
-    }
-}
-
-/// The packed denoiser edges of pixel `p`, whether it has a usable depth (background has
-/// none), and its [`PixelSetup`] (spec §2.6.1–§2.6.2).
+/// The packed denoiser edges of pixel `p` (one or `L::LANES`), whether it has a usable depth
+/// (background has none), and its [`PixelSetup`] (spec §2.6.1–§2.6.2).
 #[inline]
-pub fn pixel_setup(params: &GtaoParams, mips: &[f32], normals: &[u32], p: UVec2) -> (u32, bool, PixelSetup) {
+pub fn pixel_setup<L: Lanes>(
+    params: &GtaoParams,
+    mips: &[f32],
+    normals: &[u32],
+    p: L::U2,
+) -> (L::Index, L::Mask, PixelSetup<L>) {
     let view = &params.view;
     let size = view.size();
-    let zc = depth0(params, mips, p);
+    // Working-depth MIP 0 (the first level of the chain, row-major over the full target).
+    let depth0 = |q: L::U2| L::gather_index(mips, view.index_lanes::<L>(q));
+    let zc = depth0(p);
     let e = edges(
         zc,
-        depth0(params, mips, neighbour(p, -1, 0, size)),
-        depth0(params, mips, neighbour(p, 1, 0, size)),
-        depth0(params, mips, neighbour(p, 0, -1, size)),
-        depth0(params, mips, neighbour(p, 0, 1, size)),
+        depth0(neighbour_lanes::<L>(p, -1, 0, size)),
+        depth0(neighbour_lanes::<L>(p, 1, 0, size)),
+        depth0(neighbour_lanes::<L>(p, 0, -1, size)),
+        depth0(neighbour_lanes::<L>(p, 0, 1, size)),
     );
     let packed = pack_edges(e);
-    let uv = view.pixel_uv(p);
+    let uv = view.pixel_uv_lanes::<L>(p);
     // fp32 working depth: pull 0.99999 toward the camera (spec §2.6.2).
     let z = zc * 0.99999;
     let pos = view_pos(view, uv, z);
     let v = (-pos).normalize();
-    let mut n = to_gtao_space(decode_normal(normals[(p.y * size.x + p.x) as usize]));
-    if n.dot(v) < 0.0 {
-        n = -n;
-    }
+    let width = size.x;
+    let n = L::gather_v3(
+        normals,
+        move |i| {
+            let q = L::texel_lane(p, i);
+            (q.y * width + q.x) as usize
+        },
+        |code| to_gtao_space(decode_normal(code)),
+    );
+    let away = n.dot(v).lt(L::splat(0.0));
+    let n = L::V3::new(L::select(away, -n.x(), n.x()), L::select(away, -n.y(), n.y()), L::select(away, -n.z(), n.z()));
     let r = params.effective_radius();
     // Screen radius in pixels: R / (z·2·tanX/W).
-    let r_px = r / (z * 2.0 * view.tan_half_fov.x / view.res.x);
-    let min_s = 1.3 / r_px;
-    let xi = spatio_temporal_noise(p, params.noise_frame);
+    let r_px = L::splat(r) / (z * 2.0 * view.tan_half_fov.x / view.res.x);
+    let min_s = L::splat(1.3) / r_px;
+    let frame = params.noise_frame;
+    let xi = L::v2_from_lanes(move |i| spatio_temporal_noise(L::texel_lane(p, i), frame));
     (packed, is_valid_depth(zc, view.far), PixelSetup { uv, pos, v, n, r, r_px, min_s, xi })
 }
 
@@ -113,7 +102,7 @@ pub fn pixel_setup(params: &GtaoParams, mips: &[f32], normals: &[u32], p: UVec2)
 /// (background) get visibility 1 [aokit choice: the reference has no background test].
 #[inline]
 pub fn gtao_pixel(params: &GtaoParams, mips: &[f32], normals: &[u32], p: UVec2) -> GtaoPixel {
-    let (packed, valid, px) = pixel_setup(params, mips, normals, p);
+    let (packed, valid, px) = pixel_setup::<f32>(params, mips, normals, p);
     let (vis, bent) = if valid { slices_visibility(params, mips, &px) } else { (1.0, Vec3::ZERO) };
     GtaoPixel { term: finish_pixel(params, valid, vis, bent, px.n), edges: packed }
 }
@@ -349,10 +338,10 @@ pub fn normal_from_depth(params: &GtaoParams, depth: &[f32], p: UVec2) -> u32 {
     let e = edges(zc, zl, zr, zt, zb);
     let dir = |q: Vec3| safe_normalize(q - pc);
     let (l, r, t, b) = (dir(pl), dir(pr), dir(pt), dir(pb));
-    let n = l.cross(t) * sat(e.x * e.z + 0.01)
-        + t.cross(r) * sat(e.z * e.y + 0.01)
-        + r.cross(b) * sat(e.y * e.w + 0.01)
-        + b.cross(l) * sat(e.w * e.x + 0.01);
+    let n = l.cross(t) * sat(e.l * e.t + 0.01)
+        + t.cross(r) * sat(e.t * e.r + 0.01)
+        + r.cross(b) * sat(e.r * e.b + 0.01)
+        + b.cross(l) * sat(e.b * e.l + 0.01);
     let n = safe_normalize(n);
     encode_normal(vec3(n.x, n.y, -n.z))
 }

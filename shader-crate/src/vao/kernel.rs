@@ -95,10 +95,7 @@ pub fn setup_lanes<G: GBuffer, L: Lanes>(
     let position = view.uv_to_view_lanes::<L>(uv, d);
     let normal = gbuffer.view_normal_lanes::<L>(p);
     let normal = select_v3::<L>(position.dot(normal).gt(L::splat(0.0)), -normal, normal);
-    let rot = L::V2::new(
-        L::from_lanes(|i| rotation_sin_cos(L::texel_lane(p, i)).x),
-        L::from_lanes(|i| rotation_sin_cos(L::texel_lane(p, i)).y),
-    );
+    let rot = L::v2_from_lanes(move |i| rotation_sin_cos(L::texel_lane(p, i)));
     let r = L::V3::new(rot.x(), rot.y(), L::splat(0.0));
     let axis = -position / position.length();
     let bitangent = axis.cross(r).normalize();

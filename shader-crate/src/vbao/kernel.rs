@@ -193,7 +193,7 @@ fn gated_bits<L: Lanes>(params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>, s
 /// stored as XeGTAO's term with its edges. Background pixels get visibility 1 (as XeGTAO).
 #[inline]
 pub fn vbao_pixel(params: &VbaoParams, mips: &[f32], normals: &[u32], p: UVec2) -> GtaoPixel {
-    let (packed, valid, px) = pixel_setup(&params.gtao, mips, normals, p);
+    let (packed, valid, px) = pixel_setup::<f32>(&params.gtao, mips, normals, p);
     let vis = if valid { vbao_visibility(params, mips, &px) } else { 1.0 };
     GtaoPixel { term: vbao_term(params, valid, vis), edges: packed }
 }
