@@ -155,7 +155,12 @@ fn vbao_lanes_match_one_pixel_at_a_time_within_one_step() {
             let i = (p.y * size.x + p.x) as usize;
             assert_eq!(edges[i], one.edges, "edges at {p}");
             let w = weighting;
-            assert!(terms[i].abs_diff(one.term) <= 1, "weighting {w} at {p}: lanes {} vs one pixel {}", terms[i], one.term);
+            assert!(
+                terms[i].abs_diff(one.term) <= 1,
+                "weighting {w} at {p}: lanes {} vs one pixel {}",
+                terms[i],
+                one.term
+            );
             differ += (terms[i] != one.term) as u32;
             occluded += (one.term < 160) as u32;
             total += 1;
