@@ -7,12 +7,19 @@
 //! repeated here.
 
 use crate::scene::Scene;
-use aokit_cpu::bvh::Hit;
+use aokit_cpu::bvh::{AnyHit, Hit, packet_tiles};
+use aokit_cpu::svao::Pass1;
 use aokit_cpu::{GBufferImage, SceneBvh, Surfaces};
+use aokit_shaders::common::alpha::AlphaTables;
+use aokit_shaders::common::any_hit::CandidateHit;
 use aokit_shaders::common::camera::Camera;
 use aokit_shaders::common::gbuffer_read::GBufferSlices;
 use aokit_shaders::glam::{UVec2, Vec3, uvec2};
 use aokit_shaders::groundtruth::{GroundTruthFrame, OcclusionQuery, ground_truth_pixel};
+use aokit_shaders::raysd::{SdHits, SdPayload, sd_ray};
+use aokit_shaders::raysvao::{SampleHits, SampleRay, SampleRayState, SampleTracer, refine_by_ray};
+use aokit_shaders::svao::{Refine, Refined, SvaoFrame, pass2_pixel};
+use aokit_shaders::vao::kernel::{LineSample, PixelFrame};
 use rayon::prelude::*;
 use std::io::Write;
 use std::path::Path;
@@ -113,10 +120,10 @@ pub enum Alpha {
 /// record of what each step bought).
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum Tracer {
-    /// `SceneBvh::occluded` / `closest_hit`: the wide layout, occlusion rays from one origin
-    /// sharing an `OriginCut`.
+    /// `SceneBvh::occluded` / `closest_hits`: the wide layout, occlusion rays from one origin
+    /// sharing an `OriginCut`, primary rays as 4×2 packets.
     Scene,
-    /// The wide layout, every ray from the root (`occluded_uncached`).
+    /// The wide layout, every ray alone from the root (`occluded_uncached` / `closest_hit`).
     Wide,
     /// obvhs' own CWBVH traversal (`occluded_cwbvh` / `closest_hit_cwbvh`).
     Cwbvh,
@@ -150,7 +157,7 @@ pub fn trace_occluded(
 ) {
     assert_eq!(out.len(), rays.len(), "one answer per ray");
     let accept = |tri: u32, b| alpha == Alpha::Off || surfaces.passes_alpha(tri, b);
-    out.par_chunks_mut(CHUNK).enumerate().for_each(|(c, chunk)| {
+    out.par_chunks_mut(CHUNK).with_max_len(1).enumerate().for_each(|(c, chunk)| {
         let base = c * CHUNK;
         for (i, o) in chunk.iter_mut().enumerate() {
             let k = base + i;
@@ -167,28 +174,224 @@ pub fn trace_occluded(
 
 /// Closest hit of every primary ray from `eye` over `t ∈ (0, ∞)`, as the G-buffer casts it
 /// (alpha-masked triangles tested where `alpha` is on and the scene has masks), on the current
-/// rayon pool, into `out` (one per ray). `Tracer::Cwbvh` has no alpha test (opaque scenes
-/// only).
+/// rayon pool, into `out` (one per ray). `directions` are row-major rows of `width`:
+/// `Tracer::Scene` traces bands of two rows as 4×2 packets (`SceneBvh::closest_hits`, as
+/// `aokit_cpu::ray_cast_gbuffer`), `Tracer::Wide` one ray at a time (`closest_hit`),
+/// `Tracer::Cwbvh` through obvhs (no alpha test: opaque scenes only). One band (or
+/// [`CHUNK`] rays) per work item: rayon's default splitting of an indexed iterator stops at
+/// about four pieces for two threads, and on a frame whose halves cost differently one
+/// thread then idles for up to half the run.
 pub fn trace_primary(
     bvh: &SceneBvh,
     surfaces: &Surfaces,
-    (eye, directions): (Vec3, &[Vec3]),
+    (eye, directions, width): (Vec3, &[Vec3], usize),
     alpha: Alpha,
     tracer: Tracer,
     out: &mut [Option<Hit>],
 ) {
     assert_eq!(out.len(), directions.len(), "one answer per ray");
+    assert!(width > 0 && directions.len() % width == 0, "whole rows of {width} rays");
     let masked = alpha == Alpha::On && surfaces.mask_headers.iter().any(|h| h.width > 0);
-    out.par_chunks_mut(CHUNK).enumerate().for_each(|(c, chunk)| {
+    let alpha_test = |tri, b| surfaces.passes_alpha(tri, b);
+    if tracer == Tracer::Scene {
+        let band = 2 * width;
+        out.par_chunks_mut(band).with_max_len(1).enumerate().for_each(|(b, chunk)| {
+            let dirs = &directions[b * band..b * band + chunk.len()];
+            for tile in packet_tiles(width, chunk.len() / width) {
+                let packet = tile.map(|i| dirs[i]);
+                let hits = if masked {
+                    bvh.closest_accepted_hits(eye, &packet, 0.0, f32::INFINITY, alpha_test)
+                } else {
+                    bvh.closest_hits(eye, &packet, 0.0, f32::INFINITY)
+                };
+                for (&i, hit) in tile.iter().zip(hits) {
+                    chunk[i] = hit;
+                }
+            }
+        });
+        return;
+    }
+    out.par_chunks_mut(CHUNK).with_max_len(1).enumerate().for_each(|(c, chunk)| {
         for (i, o) in chunk.iter_mut().enumerate() {
             let dir = directions[c * CHUNK + i];
             *o = if tracer == Tracer::Cwbvh {
                 bvh.closest_hit_cwbvh(eye, dir, 0.0, f32::INFINITY)
             } else if masked {
-                bvh.closest_accepted_hit(eye, dir, 0.0, f32::INFINITY, |tri, b| surfaces.passes_alpha(tri, b))
+                bvh.closest_accepted_hit(eye, dir, 0.0, f32::INFINITY, alpha_test)
             } else {
                 bvh.closest_hit(eye, dir, 0.0, f32::INFINITY)
             };
+        }
+    });
+}
+
+/// The SD map's rays of one frame (spec svao-raysd §7.1): one per SD texel whose interval
+/// pass 1 requested, from the eye, set up by the kernel's `sd_ray`, each with the reservoir's
+/// empty payload (`SdPayload::new`: its `cos θ`, `N`, `MAX_COUNT`, near/far, rotation).
+#[derive(Clone, Debug, Default)]
+pub struct SdRays {
+    pub origin: Vec3,
+    pub directions: Vec<Vec3>,
+    /// Each ray covers `t ∈ (t_min, t_max)`.
+    pub t_min: Vec<f32>,
+    pub t_max: Vec<f32>,
+    pub payloads: Vec<SdPayload>,
+    /// The SD texel (`SvaoParams::sd_index`) of each ray.
+    pub texels: Vec<u32>,
+}
+
+/// Ray-SVAO's rays of one frame (spec svao-raysd §10): one per flagged sample of pass 1, in
+/// pass 2's pixel and sample order, from the eye, set up by the kernel's `sample_ray` (through
+/// `pass2_pixel` and `refine_by_ray` with a tracer that records instead of tracing).
+#[derive(Clone, Debug, Default)]
+pub struct SampleRays {
+    pub origin: Vec3,
+    pub directions: Vec<Vec3>,
+    pub t_min: Vec<f32>,
+    pub t_max: Vec<f32>,
+    /// The halo state each ray starts with.
+    pub states: Vec<SampleRayState>,
+}
+
+/// AO pass 1 of the stenciled pipeline on `gbuffer` (single depth): the flagged samples and the
+/// SD rays' intervals.
+pub fn svao_pass1(frame: &SvaoFrame, gbuffer: &GBufferImage) -> Pass1 {
+    let far = vec![frame.params.vao.view.far; gbuffer.depth.len()];
+    aokit_cpu::svao::run_pass1(&frame.params, &gbuffer.depth, &gbuffer.normals, &far, &aokit_cpu::no_progress)
+}
+
+/// The SD rays of `frame` (`Secondary::StochasticDepth`) after `pass1`, row by row.
+pub fn sd_rays(frame: &SvaoFrame, gbuffer: &GBufferImage, pass1: &Pass1) -> SdRays {
+    let params = &frame.params;
+    let view = &params.vao.view;
+    let sd = params.sd_size();
+    let slices = GBufferSlices { depth: &gbuffer.depth, normals: &gbuffer.normals, width: gbuffer.width };
+    let mut out = SdRays { origin: frame.camera.eye(), ..Default::default() };
+    for y in 0..sd.y {
+        for x in 0..sd.x {
+            let q = uvec2(x, y);
+            let i = params.sd_index(q);
+            let ray = sd_ray(&slices, frame, q, pass1.ray_min[i], pass1.ray_max[i]);
+            if ray.traced() {
+                assert_eq!(ray.origin, out.origin, "SD rays start at the eye");
+                out.directions.push(ray.direction);
+                out.t_min.push(ray.t_min);
+                out.t_max.push(ray.t_max);
+                out.payloads.push(SdPayload::new(params, view.near, view.far, ray.cos_theta));
+                out.texels.push(i as u32);
+            }
+        }
+    }
+    out
+}
+
+/// A pass-2 source that records each flagged sample's ray (the kernel's `refine_by_ray` sets it
+/// up) and traces nothing.
+struct SampleRecorder<'a> {
+    frame: &'a SvaoFrame,
+    rays: SampleRays,
+}
+
+impl SampleTracer for SampleRecorder<'_> {
+    fn trace(&mut self, ray: &mut SampleRay) {
+        assert_eq!(ray.origin, self.rays.origin, "Ray-SVAO rays start at the eye");
+        self.rays.directions.push(ray.direction);
+        self.rays.t_min.push(ray.t_min);
+        self.rays.t_max.push(ray.t_max);
+        self.rays.states.push(ray.state);
+    }
+}
+
+impl Refine for SampleRecorder<'_> {
+    fn refine(&mut self, pixel: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> Refined {
+        let frame = self.frame;
+        refine_by_ray(&frame.camera, &frame.params, pixel, s, v, z_primary, self)
+    }
+}
+
+/// Ray-SVAO's rays of `frame` (`Secondary::Raytraced`) after `pass1`, pixel by pixel.
+pub fn sample_rays(frame: &SvaoFrame, gbuffer: &GBufferImage, pass1: &Pass1) -> SampleRays {
+    let params = &frame.params;
+    let view = &params.vao.view;
+    let size = view.size();
+    let slices = GBufferSlices { depth: &gbuffer.depth, normals: &gbuffer.normals, width: gbuffer.width };
+    let far = vec![view.far; gbuffer.depth.len()];
+    let rays = SampleRays { origin: frame.camera.eye(), ..Default::default() };
+    let mut recorder = SampleRecorder { frame, rays };
+    for y in view.guard..size.y - view.guard {
+        for x in view.guard..size.x - view.guard {
+            let i = view.index(uvec2(x, y));
+            pass2_pixel(&slices, &far, params, uvec2(x, y), pass1.ao[i], pass1.mask[i], &mut recorder);
+        }
+    }
+    recorder.rays
+}
+
+/// The alpha tables of `surfaces`, or none (every triangle opaque) with `Alpha::Off`.
+fn alpha_tables<'a>(surfaces: &'a Surfaces, alpha: Alpha) -> AlphaTables<'a> {
+    match alpha {
+        Alpha::On => AlphaTables {
+            uvs: surfaces.uvs.as_flattened(),
+            materials: surfaces.materials,
+            headers: surfaces.mask_headers,
+            texels: surfaces.mask_texels,
+        },
+        Alpha::Off => AlphaTables { uvs: &[], materials: &[], headers: &[], texels: &[] },
+    }
+}
+
+/// Trace one ray through cpu-sim's any-hit traversal (`tracer` picks which), every candidate
+/// going to the kernel's `CandidateHit::decide` — the decision the any-hit shader and the
+/// ray-query loop make on Vulkan.
+fn trace_candidates<H: CandidateHit>(bvh: &SceneBvh, tracer: Tracer, ray: (Vec3, Vec3, f32, f32), hits: &mut H) {
+    let (origin, direction, t_min, t_max) = ray;
+    let decide = |t: f32, tri: u32, b| AnyHit::from_decision(hits.decide(t, b, tri));
+    match tracer {
+        Tracer::Cwbvh => bvh.trace_any_hit_cwbvh(origin, direction, t_min, t_max, decide),
+        _ => bvh.trace_any_hit(origin, direction, t_min, t_max, decide),
+    }
+}
+
+/// Trace every SD ray with the reservoir any-hit (`SdHits`, alpha test per `alpha`) on the
+/// current rayon pool; `out` gets each ray's final payload (its `N` depths and hit count).
+pub fn trace_sd(
+    bvh: &SceneBvh,
+    surfaces: &Surfaces,
+    rays: &SdRays,
+    alpha: Alpha,
+    tracer: Tracer,
+    out: &mut [SdPayload],
+) {
+    assert_eq!(out.len(), rays.payloads.len(), "one answer per ray");
+    let tables = alpha_tables(surfaces, alpha);
+    out.par_chunks_mut(CHUNK / 16).with_max_len(1).enumerate().for_each(|(c, chunk)| {
+        for (i, o) in chunk.iter_mut().enumerate() {
+            let k = c * (CHUNK / 16) + i;
+            let mut hits = SdHits { payload: rays.payloads[k], alpha: tables };
+            trace_candidates(bvh, tracer, (rays.origin, rays.directions[k], rays.t_min[k], rays.t_max[k]), &mut hits);
+            *o = hits.payload;
+        }
+    });
+}
+
+/// Trace every Ray-SVAO ray with the halo any-hit (`SampleHits`, alpha test per `alpha`) on
+/// the current rayon pool; `out` gets each ray's final state.
+pub fn trace_samples(
+    bvh: &SceneBvh,
+    surfaces: &Surfaces,
+    rays: &SampleRays,
+    alpha: Alpha,
+    tracer: Tracer,
+    out: &mut [SampleRayState],
+) {
+    assert_eq!(out.len(), rays.states.len(), "one answer per ray");
+    let tables = alpha_tables(surfaces, alpha);
+    out.par_chunks_mut(CHUNK / 4).with_max_len(1).enumerate().for_each(|(c, chunk)| {
+        for (i, o) in chunk.iter_mut().enumerate() {
+            let k = c * (CHUNK / 4) + i;
+            let mut hits = SampleHits { state: rays.states[k], alpha: tables };
+            trace_candidates(bvh, tracer, (rays.origin, rays.directions[k], rays.t_min[k], rays.t_max[k]), &mut hits);
+            *o = hits.state;
         }
     });
 }
@@ -324,6 +527,38 @@ pub fn write_dump(
     write_npy(&dir.join("primary_t.npy"), "<f4", &[p], bytemuck::cast_slice(&ts))
 }
 
+/// Write the any-hit rays and cpu-sim's answers into `dir` (beside [`write_dump`]'s files; all
+/// rays start at the eye): `sd_directions.npy` (f32 S×3), `sd_interval.npy` (f32 S×2:
+/// `t_min, t_max`, open), `sd_cos.npy` (f32 S: the payload's `cos θ`), `sd_depth.npy` (f32 S×N:
+/// cpu-sim's reservoir, 1 = empty), `sd_count.npy` (u32 S: its hit count) and `sd_texels.npy`
+/// (u32 S: each ray's SD texel, `SvaoParams::sd_index`);
+/// `svao_directions.npy` (f32 V×3), `svao_interval.npy` (f32 V×2), `svao_state.npy` (f32 V×4:
+/// the starting `t_halo, t_inside, t_const, t_sphere`) and `svao_result.npy` (f32 V×4:
+/// cpu-sim's final state).
+pub fn write_any_hit_dump(
+    dir: &Path,
+    (sd, sd_out, layers): (&SdRays, &[SdPayload], usize),
+    (sv, sv_out): (&SampleRays, &[SampleRayState]),
+) -> std::io::Result<()> {
+    let f32s = |v: &[Vec3]| -> Vec<f32> { v.iter().flat_map(|p| p.to_array()).collect() };
+    let pairs = |a: &[f32], b: &[f32]| -> Vec<f32> { a.iter().zip(b).flat_map(|(x, y)| [*x, *y]).collect() };
+    let n = sd.payloads.len();
+    write_npy(&dir.join("sd_directions.npy"), "<f4", &[n, 3], bytemuck::cast_slice(&f32s(&sd.directions)))?;
+    write_npy(&dir.join("sd_interval.npy"), "<f4", &[n, 2], bytemuck::cast_slice(&pairs(&sd.t_min, &sd.t_max)))?;
+    let cos: Vec<f32> = sd.payloads.iter().map(|p| p.cos_theta).collect();
+    write_npy(&dir.join("sd_cos.npy"), "<f4", &[n], bytemuck::cast_slice(&cos))?;
+    let depth: Vec<f32> = sd_out.iter().flat_map(|p| p.depth[..layers].iter().copied()).collect();
+    write_npy(&dir.join("sd_depth.npy"), "<f4", &[n, layers], bytemuck::cast_slice(&depth))?;
+    let count: Vec<u32> = sd_out.iter().map(|p| p.count).collect();
+    write_npy(&dir.join("sd_count.npy"), "<u4", &[n], bytemuck::cast_slice(&count))?;
+    write_npy(&dir.join("sd_texels.npy"), "<u4", &[n], bytemuck::cast_slice(&sd.texels))?;
+    let v = sv.states.len();
+    write_npy(&dir.join("svao_directions.npy"), "<f4", &[v, 3], bytemuck::cast_slice(&f32s(&sv.directions)))?;
+    write_npy(&dir.join("svao_interval.npy"), "<f4", &[v, 2], bytemuck::cast_slice(&pairs(&sv.t_min, &sv.t_max)))?;
+    write_npy(&dir.join("svao_state.npy"), "<f4", &[v, 4], bytemuck::cast_slice(&sv.states))?;
+    write_npy(&dir.join("svao_result.npy"), "<f4", &[v, 4], bytemuck::cast_slice(sv_out))
+}
+
 #[cfg(feature = "cli")]
 pub use command::{RaysArgs, rays_command};
 
@@ -331,7 +566,8 @@ pub use command::{RaysArgs, rays_command};
 mod command {
     use super::*;
     use crate::cli::{SceneArgs, TechniqueArgs};
-    use crate::technique::GroundTruthSettings;
+    use crate::technique::{GroundTruthSettings, SdOptions};
+    use aokit_shaders::svao::Secondary;
     use std::path::PathBuf;
 
     /// `aokit rays`: the frame's ground-truth AO rays and primary rays through cpu-sim's BVH.
@@ -419,24 +655,52 @@ mod command {
                 timed(args.repeat, || trace_occluded(&bvh, &surfaces, &ao, alpha, Tracer::Scene, &mut occluded));
             let directions = primary_directions(&frame.camera);
             let eye = frame.camera.eye();
+            let width = frame.camera.view.size().x as usize;
             let mut hits = vec![None; directions.len()];
             let ((), primary_times) = timed(args.repeat, || {
-                trace_primary(&bvh, &surfaces, (eye, &directions), alpha, Tracer::Scene, &mut hits)
+                trace_primary(&bvh, &surfaces, (eye, &directions, width), alpha, Tracer::Scene, &mut hits)
             });
+            // The SD map's and Ray-SVAO's any-hit rays (default settings) after AO pass 1.
+            let sd_frame = SdOptions::default().frame(&frame.desc(), Secondary::StochasticDepth);
+            let t = Instant::now();
+            let sd = sd_rays(&sd_frame, &gbuffer, &svao_pass1(&sd_frame, &gbuffer));
+            let sd_generate_ms = t.elapsed().as_secs_f64() * 1e3;
+            let mut sd_out = sd.payloads.clone();
+            let ((), sd_times) =
+                timed(args.repeat, || trace_sd(&bvh, &surfaces, &sd, alpha, Tracer::Scene, &mut sd_out));
+            let sv_frame = SdOptions::default().frame(&frame.desc(), Secondary::Raytraced);
+            let t = Instant::now();
+            let sv = sample_rays(&sv_frame, &gbuffer, &svao_pass1(&sv_frame, &gbuffer));
+            let sv_generate_ms = t.elapsed().as_secs_f64() * 1e3;
+            let mut sv_out = sv.states.clone();
+            let ((), sv_times) =
+                timed(args.repeat, || trace_samples(&bvh, &surfaces, &sv, alpha, Tracer::Scene, &mut sv_out));
             // The earlier steps: throughput and how many answers differ from the shipped one.
             let mut steps = serde_json::Map::new();
             for tracer in Tracer::ALL.into_iter().skip(1).filter(|_| args.steps) {
                 let mut o = vec![1u8; ao.len()];
                 let ((), t) = timed(args.repeat, || trace_occluded(&bvh, &surfaces, &ao, alpha, tracer, &mut o));
                 let mut h = vec![None; directions.len()];
-                let ((), p) =
-                    timed(args.repeat, || trace_primary(&bvh, &surfaces, (eye, &directions), alpha, tracer, &mut h));
-                steps.insert(tracer.name().into(), serde_json::json!({
+                let primary = (eye, directions.as_slice(), width);
+                let ((), p) = timed(args.repeat, || trace_primary(&bvh, &surfaces, primary, alpha, tracer, &mut h));
+                let mut step = serde_json::json!({
                     "ao": throughput_json(ao.len(), &t),
                     "ao_differ": o.iter().zip(&occluded).filter(|(a, b)| a != b).count(),
                     "primary": throughput_json(directions.len(), &p),
                     "primary_differ": h.iter().zip(&hits).filter(|(a, b)| a.map(|x| x.triangle) != b.map(|x| x.triangle)).count(),
-                }));
+                });
+                if tracer == Tracer::Cwbvh {
+                    // The any-hit rays have two traversals: the shipped one and obvhs'.
+                    let mut d = sd.payloads.clone();
+                    let ((), t) = timed(args.repeat, || trace_sd(&bvh, &surfaces, &sd, alpha, tracer, &mut d));
+                    step["sd"] = throughput_json(sd.payloads.len(), &t);
+                    step["sd_differ"] = d.iter().zip(&sd_out).filter(|(a, b)| a != b).count().into();
+                    let mut v = sv.states.clone();
+                    let ((), t) = timed(args.repeat, || trace_samples(&bvh, &surfaces, &sv, alpha, tracer, &mut v));
+                    step["svao"] = throughput_json(sv.states.len(), &t);
+                    step["svao_differ"] = v.iter().zip(&sv_out).filter(|(a, b)| a != b).count().into();
+                }
+                steps.insert(tracer.name().into(), step);
             }
             let n_occluded = occluded.iter().filter(|&&o| o != 0).count();
             let n_hits = hits.iter().filter(|h| h.is_some()).count();
@@ -462,11 +726,24 @@ mod command {
                 "hits": n_hits, "hit_fraction": n_hits as f64 / directions.len().max(1) as f64,
                 "cpu_sim": throughput_json(directions.len(), &primary_times),
             });
+            let p = &sd_frame.params;
+            json["sd"] = serde_json::json!({
+                "rays": sd.payloads.len(), "generate_ms": sd_generate_ms, "origin": sd.origin.to_array(),
+                "layers": p.sd_layers, "max_count": p.max_count, "sd_res_divisor": SdOptions::default().divisor,
+                "near": p.vao.view.near, "far": p.vao.view.far,
+                "rotation": sd.payloads.first().map_or(0.0, |q| q.rotation),
+                "cpu_sim": throughput_json(sd.payloads.len(), &sd_times),
+            });
+            json["svao"] = serde_json::json!({
+                "rays": sv.states.len(), "generate_ms": sv_generate_ms, "origin": sv.origin.to_array(),
+                "cpu_sim": throughput_json(sv.states.len(), &sv_times),
+            });
             if args.steps {
                 json["steps"] = steps.into();
             }
             if let Some(dir) = &args.dump {
                 write_dump(dir, &scene, &ao, &occluded, &directions, &hits)
+                    .and_then(|()| write_any_hit_dump(dir, (&sd, &sd_out, sd_frame.params.sd_layers as usize), (&sv, &sv_out)))
                     .map_err(|e| format!("{}: {e}", dir.display()))?;
                 let text = serde_json::to_string_pretty(&json).expect("serializable") + "\n";
                 crate::output::write_atomic_bytes(&dir.join("rays.json"), text.as_bytes())

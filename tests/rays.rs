@@ -7,8 +7,10 @@ mod common;
 
 use aokit::rays::read_npy;
 use aokit::render::CpuRenderer;
+use aokit::technique::{SdOptions, Technique};
 use aokit_cpu::no_progress;
 use aokit_shaders::glam::{DVec3, Vec3};
+use aokit_shaders::svao::settings::{RAYSD, RAYSVAO};
 use std::path::Path;
 use std::process::Command;
 
@@ -67,9 +69,9 @@ fn dumped_rays_are_the_ground_truths_and_the_answers_recount() {
         "--scene",
         "cornell",
         "--width",
-        "64",
+        "160",
         "--height",
-        "48",
+        "120",
         "--guard",
         "8",
         "--spp",
@@ -89,7 +91,7 @@ fn dumped_rays_are_the_ground_truths_and_the_answers_recount() {
     );
 
     // Files: types and sizes from the documented layout.
-    let (scene, frame) = common::builtin_frame("cornell", 64, 48, 8);
+    let (scene, frame) = common::builtin_frame("cornell", 160, 120, 8);
     let t = scene.triangles.len();
     let tris = vec3s(&array::<f32>(&dir, "triangles.npy", "<f4", &[t, 3, 3]));
     let tris: Vec<[Vec3; 3]> = tris.chunks_exact(3).map(|c| [c[0], c[1], c[2]]).collect();
@@ -183,6 +185,40 @@ fn dumped_rays_are_the_ground_truths_and_the_answers_recount() {
     }
     assert_eq!(json["primary"]["hits"].as_u64(), Some(hits.iter().filter(|&&h| h >= 0).count() as u64));
     assert!(hit_count > p / 4, "the camera sees the box");
+
+    // The any-hit rays are the techniques' own (default settings): the dumped SD rays are the
+    // SD texels the map traces, and their reservoirs end as the map's layers do, bit for bit;
+    // Ray-SVAO traces as many rays as the dump holds.
+    let s = json["sd"]["rays"].as_u64().unwrap() as usize;
+    let layers = json["sd"]["layers"].as_u64().unwrap() as usize;
+    let texels: Vec<u32> = array(&dir, "sd_texels.npy", "<u4", &[s]);
+    let depth: Vec<f32> = array(&dir, "sd_depth.npy", "<f4", &[s, layers]);
+    let count: Vec<u32> = array(&dir, "sd_count.npy", "<u4", &[s]);
+    let _ = array::<f32>(&dir, "sd_directions.npy", "<f4", &[s, 3]);
+    let _ = array::<f32>(&dir, "sd_interval.npy", "<f4", &[s, 2]);
+    let _ = array::<f32>(&dir, "sd_cos.npy", "<f4", &[s]);
+    let raysd = Technique::new(&RAYSD, SdOptions::default());
+    let run = renderer.run(&frame, &gbuffer, &raysd, &no_progress);
+    assert_eq!(run.rays, s as u64, "the SD map traces the dumped rays");
+    let map = &run.debug.as_ref().expect("the SD map").sd_map;
+    for (k, &q) in texels.iter().enumerate() {
+        let q = q as usize;
+        let stored: Vec<u32> = map[q * layers..(q + 1) * layers].iter().map(|d| d.to_bits()).collect();
+        let dumped: Vec<u32> = depth[k * layers..(k + 1) * layers].iter().map(|d| d.to_bits()).collect();
+        assert_eq!(stored, dumped, "SD texel {q}: the dumped reservoir is the map's");
+    }
+    assert!(s > 100 && count.iter().any(|&c| c > 0), "SD rays that meet surfaces: {s}");
+    let v = json["svao"]["rays"].as_u64().unwrap() as usize;
+    let state: Vec<f32> = array(&dir, "svao_state.npy", "<f4", &[v, 4]);
+    let result: Vec<f32> = array(&dir, "svao_result.npy", "<f4", &[v, 4]);
+    let _ = array::<f32>(&dir, "svao_interval.npy", "<f4", &[v, 2]);
+    let raysvao = Technique::new(&RAYSVAO, SdOptions::default());
+    assert_eq!(
+        renderer.run(&frame, &gbuffer, &raysvao, &no_progress).rays,
+        v as u64,
+        "Ray-SVAO traces the dumped rays"
+    );
+    assert!(v > 100 && state != result, "Ray-SVAO rays that meet surfaces: {v}");
     std::fs::remove_dir_all(&dir).ok();
 }
 
@@ -199,4 +235,128 @@ fn bad_input_is_one_line() {
         let err = String::from_utf8_lossy(&out.stderr);
         assert!(err.contains(expect) && err.trim().lines().count() == 1, "{args:?}: {err}");
     }
+}
+
+/// `bench/embree_anyhit.c` gives Embree's intersection filter a C port of the kernels' any-hit
+/// decisions (the SD reservoir, `SdHits`; the Ray-SVAO halo, `SampleHits`): on random candidate
+/// sequences (random payloads, N, MAX_COUNT, frame rotation, distances and barycentrics) its
+/// `--replay` mode ends every ray in the state the Rust kernels end it in, bit for bit.
+#[test]
+fn embree_harness_any_hit_port_matches_the_kernels() {
+    use aokit_cpu::bvh::{AnyHit, replay_any_hit};
+    use aokit_shaders::common::alpha::AlphaTables;
+    use aokit_shaders::common::any_hit::CandidateHit;
+    use aokit_shaders::glam::vec2;
+    use aokit_shaders::raysd::{MAX_LAYERS, SdHits, SdPayload};
+    use aokit_shaders::raysvao::{SampleHits, SampleRayState};
+
+    if !Command::new("cc").arg("--version").output().is_ok_and(|o| o.status.success()) {
+        assert!(std::env::var_os("CI").is_none(), "CI must have a C compiler (apt-get install gcc)");
+        eprintln!("no `cc`: skipping the Embree harness check");
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("aokit-replay-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let exe = dir.join("embree_anyhit");
+    let source = Path::new(env!("CARGO_MANIFEST_DIR")).join("bench/embree_anyhit.c");
+    let out = Command::new("cc")
+        .args(["-std=c11", "-O2", "-ffp-contract=off", "-DAOKIT_NO_EMBREE", "-o"])
+        .arg(&exe)
+        .arg(&source)
+        .arg("-lm")
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "cc: {}", String::from_utf8_lossy(&out.stderr));
+
+    // xorshift32 in [0, 1).
+    let mut state = 0x1234_5678u32;
+    let mut rnd = move || {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        (state >> 8) as f32 / (1 << 24) as f32
+    };
+    let none = AlphaTables { uvs: &[], materials: &[], headers: &[], texels: &[] };
+    let (mut input, mut expect) = (Vec::<u8>::new(), Vec::<u8>::new());
+    let (mut accepted, mut ended) = (0, 0);
+    for ray in 0..3000 {
+        let n = (rnd() * 24.0) as usize;
+        let t_halo = 5.0 * rnd();
+        let t_const = t_halo + 5.0 * rnd();
+        let t_sphere = t_const + 5.0 * rnd();
+        let start = SampleRayState { t_halo, t_inside: t_sphere + 30.0 * rnd(), t_const, t_sphere };
+        // Candidates anywhere, some exactly on the halo state's bounds, some repeating the one
+        // before (the reservoir's z-cull on equal depths).
+        let mut hits: Vec<(f32, u32, aokit_shaders::glam::Vec2)> = Vec::new();
+        for _ in 0..n {
+            let (u, v) = (rnd(), rnd());
+            let (u, v) = if u + v > 1.0 { (1.0 - u, 1.0 - v) } else { (u, v) };
+            let pick = rnd();
+            let t = match (pick * 10.0) as u32 {
+                0 => [t_halo, t_const, t_sphere, start.t_inside][(rnd() * 4.0) as usize],
+                _ => 0.01 + 40.0 * rnd(),
+            };
+            match hits.last() {
+                Some(&last) if pick > 0.85 => hits.push(last),
+                _ => hits.push((t.max(0.01), 7, vec2(u, v))),
+            }
+        }
+        let sd = ray % 2 == 0;
+        input.extend_from_slice(&[u32::from(!sd), n as u32].map(u32::to_le_bytes).concat());
+        if sd {
+            let layers = [1, 2, 4, 8][ray % 4];
+            let near = 0.01 + rnd();
+            let mut payload = SdPayload {
+                depth: [1.0; MAX_LAYERS],
+                count: 0,
+                layers,
+                max_count: layers + (rnd() * 12.0) as u32,
+                cos_theta: 0.5 + 0.5 * rnd(),
+                near,
+                far: near + 5.0 + 50.0 * rnd(),
+                rotation: if ray % 3 == 0 { 0.0 } else { rnd() },
+            };
+            let bytes = |p: &SdPayload| -> Vec<u8> {
+                let words: Vec<u32> = p
+                    .depth
+                    .iter()
+                    .map(|d| d.to_bits())
+                    .chain([p.count, p.layers, p.max_count])
+                    .chain([p.cos_theta, p.near, p.far, p.rotation].map(f32::to_bits))
+                    .collect();
+                bytemuck::cast_slice(&words).to_vec()
+            };
+            input.extend(bytes(&payload));
+            let mut sd_hits = SdHits { payload, alpha: none };
+            replay_any_hit(&hits, 0.0, f32::INFINITY, |t, tri, b| {
+                let d = AnyHit::from_decision(sd_hits.decide(t, b, tri));
+                accepted += (d != AnyHit::Ignore) as u32;
+                d
+            });
+            payload = sd_hits.payload;
+            expect.extend(bytes(&payload));
+        } else {
+            input.extend_from_slice(bytemuck::bytes_of(&start));
+            let mut halo = SampleHits { state: start, alpha: none };
+            replay_any_hit(&hits, 0.0, start.t_inside, |t, tri, b| {
+                let d = AnyHit::from_decision(halo.decide(t, b, tri));
+                ended += (d == AnyHit::AcceptAndEnd) as u32;
+                d
+            });
+            expect.extend_from_slice(bytemuck::bytes_of(&halo.state));
+        }
+        for (t, _, b) in &hits {
+            input.extend_from_slice(&[t.to_bits(), b.x.to_bits(), b.y.to_bits()].map(u32::to_le_bytes).concat());
+        }
+    }
+    assert!(accepted > 100 && ended > 100, "the sequences must reach ACCEPT ({accepted}) and ACCEPT_AND_END ({ended})");
+    let (inp, outp) = (dir.join("in.bin"), dir.join("out.bin"));
+    std::fs::write(&inp, &input).unwrap();
+    let run = Command::new(&exe).arg("--replay").arg(&inp).arg(&outp).output().unwrap();
+    assert!(run.status.success(), "--replay: {}", String::from_utf8_lossy(&run.stderr));
+    let got = std::fs::read(&outp).unwrap();
+    assert_eq!(got.len(), expect.len(), "one final state per record");
+    let differ = got.chunks(4).zip(expect.chunks(4)).filter(|(a, b)| a != b).count();
+    assert_eq!(differ, 0, "{differ} words of the C port's final states differ from the kernels'");
+    std::fs::remove_dir_all(&dir).ok();
 }

@@ -1,10 +1,11 @@
 //! CPU ray casting, built once per scene over obvhs' CWBVH (Ylitie et al. 2017): closest-hit
-//! and occlusion queries through its wide re-layout ([`wide`]), any-hit queries through obvhs'
-//! own traversal (their hit order is what the stochastic depth map's reservoir sees).
+//! (single rays and 4×2 packets), occlusion and any-hit queries through its wide re-layout
+//! ([`wide`]); any-hit queries offer candidates in exactly obvhs' own traversal order (the
+//! order the stochastic depth map's reservoir sees).
 
 mod wide;
 
-pub use wide::OriginCut;
+pub use wide::{OriginCut, PACKET};
 
 use aokit_shaders::glam::{Vec2, Vec3, Vec3A, vec2};
 use obvhs::BvhBuildParams;
@@ -51,7 +52,8 @@ impl SceneBvh {
     }
 
     /// Closest hit along `origin + t·direction` for `t ∈ (t_min, t_max)`, both ends exclusive as
-    /// on lavapipe's hardware-style traversal.
+    /// on lavapipe's hardware-style traversal; of triangles hit at the same distance, the lowest
+    /// BVH primitive.
     pub fn closest_hit(&self, origin: Vec3, direction: Vec3, t_min: f32, t_max: f32) -> Option<Hit> {
         let found = self.wide.closest(Vec3A::from(origin), Vec3A::from(direction), t_min, t_max, |_, _| true);
         found.map(|(t, id)| Hit { t, triangle: self.bvh.primitive_indices[id] })
@@ -59,8 +61,8 @@ impl SceneBvh {
 
     /// Closest hit that `accept(triangle, barycentrics)` accepts (an alpha test, say); the
     /// barycentrics are the weights of the triangle's second and third vertex. `accept` is
-    /// asked about candidates in no particular order, only about those nearer than the closest
-    /// accepted so far.
+    /// asked about candidates in no particular order, only about those not farther than the
+    /// closest accepted so far.
     pub fn closest_accepted_hit(
         &self,
         origin: Vec3,
@@ -72,6 +74,37 @@ impl SceneBvh {
         let (o, d) = (Vec3A::from(origin), Vec3A::from(direction));
         let found = self.wide.closest(o, d, t_min, t_max, |id, t| self.accepts(o, d, id, t, &accept));
         found.map(|(t, id)| Hit { t, triangle: self.bvh.primitive_indices[id] })
+    }
+
+    /// [`SceneBvh::closest_hit`] of [`PACKET`] rays from one origin over one interval (camera
+    /// rays of a 4×2 pixel tile), traversed together ([`wide::WideBvh::closest_packet`]): per ray
+    /// the same triangle and distance as `closest_hit` (of hits at one distance the lowest BVH
+    /// primitive, in both).
+    pub fn closest_hits(
+        &self,
+        origin: Vec3,
+        directions: &[Vec3; PACKET],
+        t_min: f32,
+        t_max: f32,
+    ) -> [Option<Hit>; PACKET] {
+        let dirs = directions.map(Vec3A::from);
+        let found = self.wide.closest_packet(Vec3A::from(origin), &dirs, t_min, t_max, |_, _, _| true);
+        found.map(|f| f.map(|(t, id)| Hit { t, triangle: self.bvh.primitive_indices[id] }))
+    }
+
+    /// [`SceneBvh::closest_accepted_hit`] of a packet, as [`SceneBvh::closest_hits`].
+    pub fn closest_accepted_hits(
+        &self,
+        origin: Vec3,
+        directions: &[Vec3; PACKET],
+        t_min: f32,
+        t_max: f32,
+        accept: impl Fn(u32, Vec2) -> bool,
+    ) -> [Option<Hit>; PACKET] {
+        let (o, dirs) = (Vec3A::from(origin), directions.map(Vec3A::from));
+        let found =
+            self.wide.closest_packet(o, &dirs, t_min, t_max, |ray, id, t| self.accepts(o, dirs[ray], id, t, &accept));
+        found.map(|f| f.map(|(t, id)| Hit { t, triangle: self.bvh.primitive_indices[id] }))
     }
 
     /// Whether `accept` takes BVH primitive `id` hit at distance `t` (its barycentrics from the
@@ -149,6 +182,22 @@ impl SceneBvh {
     }
 }
 
+/// The pixels of a band of `rows` (1 or 2) rows of `width` pixels as 4×2 tiles for
+/// [`SceneBvh::closest_hits`]: each item holds eight indices into the band (row-major, the
+/// tile's top row first); a tile cut by the band's edge repeats its last pixel, whose answer is
+/// then written twice.
+pub fn packet_tiles(width: usize, rows: usize) -> impl Iterator<Item = [usize; PACKET]> {
+    assert!((1..=2).contains(&rows), "a band is one or two rows");
+    (0..width).step_by(4).map(move |x0| {
+        let mut tile = [0; PACKET];
+        for (i, slot) in tile.iter_mut().enumerate() {
+            let (x, y) = ((x0 + i % 4).min(width - 1), (i / 4).min(rows - 1));
+            *slot = y * width + x;
+        }
+        tile
+    })
+}
+
 /// What an any-hit function decides about a candidate hit (DXR / Vulkan semantics).
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum AnyHit {
@@ -160,11 +209,41 @@ pub enum AnyHit {
     AcceptAndEnd,
 }
 
+impl AnyHit {
+    /// A kernel's [`CandidateHit`](aokit_shaders::common::any_hit::CandidateHit) answer
+    /// (`IGNORE`, `ACCEPT`, `ACCEPT_AND_END`) as the traversal's.
+    #[inline]
+    pub fn from_decision(decision: u32) -> AnyHit {
+        use aokit_shaders::common::any_hit::{ACCEPT, IGNORE};
+        match decision {
+            IGNORE => AnyHit::Ignore,
+            ACCEPT => AnyHit::Accept,
+            _ => AnyHit::AcceptAndEnd,
+        }
+    }
+}
+
 impl SceneBvh {
     /// Trace with any-hit semantics: `any_hit(t, triangle, barycentrics)` runs for EVERY
-    /// triangle hit inside the current open interval `(t_min, t_max)`, in the BVH's traversal
-    /// order (front-to-back by node, not sorted by distance), exactly once per triangle.
+    /// triangle hit inside the current open interval `(t_min, t_max)`, in obvhs' CWBVH
+    /// traversal order (depth first, ordered by the ray's octant, not sorted by distance;
+    /// [`wide::WideBvh::any_hit`]), exactly once per triangle.
     pub fn trace_any_hit(
+        &self,
+        origin: Vec3,
+        direction: Vec3,
+        t_min: f32,
+        t_max: f32,
+        mut any_hit: impl FnMut(f32, u32, Vec2) -> AnyHit,
+    ) {
+        let (o, d) = (Vec3A::from(origin), Vec3A::from(direction));
+        self.wide.any_hit((&self.bvh, &self.triangles), o, d, t_min, t_max, |id, t| {
+            any_hit(t, self.bvh.primitive_indices[id], barycentrics(o + d * t, &self.triangles[id]))
+        })
+    }
+
+    /// [`SceneBvh::trace_any_hit`] by obvhs' own CWBVH traversal, for comparisons.
+    pub fn trace_any_hit_cwbvh(
         &self,
         origin: Vec3,
         direction: Vec3,

@@ -1,6 +1,7 @@
 //! Ray-cast G-buffer: one primary ray per pixel centre of the full target (spec svao-raysd §1),
 //! the CPU counterpart of the raster pass in `aokit_shaders::gbuffer`.
 
+use crate::bvh::packet_tiles;
 use crate::{Progress, SceneBvh};
 use aokit_shaders::common::alpha::{AlphaMaskHeader, triangle_alpha_passes};
 use aokit_shaders::common::camera::Camera;
@@ -46,26 +47,33 @@ pub fn ray_cast_gbuffer(bvh: &SceneBvh, surfaces: &Surfaces, camera: &Camera, pr
     let far = camera.view.far;
     let mut depth = vec![far; (size.x * size.y) as usize];
     let mut normals = vec![0u32; depth.len()];
-    depth.par_chunks_mut(size.x as usize).zip(normals.par_chunks_mut(size.x as usize)).enumerate().for_each(
-        |(y, (depth_row, normal_row))| {
-            for x in 0..size.x {
-                let uv = camera.view.pixel_uv(UVec2::new(x, y as u32));
-                let dir = camera.primary_ray_direction(uv);
-                let hit = if masked {
-                    bvh.closest_accepted_hit(eye, dir, 0.0, f32::INFINITY, |tri, b| surfaces.passes_alpha(tri, b))
+    // Bands of two rows traced as 4×2 packets (the same hits as single rays); one band per
+    // work item, so that both threads stay busy to the end.
+    let band = 2 * size.x as usize;
+    depth.par_chunks_mut(band).zip(normals.par_chunks_mut(band)).with_max_len(1).enumerate().for_each(
+        |(b, (depth_band, normal_band))| {
+            let rows = depth_band.len() / size.x as usize;
+            let pixel = |i: usize| UVec2::new((i % size.x as usize) as u32, (2 * b + i / size.x as usize) as u32);
+            for tile in packet_tiles(size.x as usize, rows) {
+                let dirs = tile.map(|i| camera.primary_ray_direction(camera.view.pixel_uv(pixel(i))));
+                let hits = if masked {
+                    bvh.closest_accepted_hits(eye, &dirs, 0.0, f32::INFINITY, |tri, b| surfaces.passes_alpha(tri, b))
                 } else {
-                    bvh.closest_hit(eye, dir, 0.0, f32::INFINITY)
+                    bvh.closest_hits(eye, &dirs, 0.0, f32::INFINITY)
                 };
-                if let Some(hit) = hit {
-                    let d = camera.linear_depth_of_hit(dir, hit.t);
-                    if d < far {
-                        depth_row[x as usize] = d;
-                        let n = camera.world_to_view.transform_vector3(surfaces.face_normals[hit.triangle as usize]);
-                        normal_row[x as usize] = encode_normal(n);
+                for ((&i, dir), hit) in tile.iter().zip(dirs).zip(hits) {
+                    if let Some(hit) = hit {
+                        let d = camera.linear_depth_of_hit(dir, hit.t);
+                        if d < far {
+                            depth_band[i] = d;
+                            let n =
+                                camera.world_to_view.transform_vector3(surfaces.face_normals[hit.triangle as usize]);
+                            normal_band[i] = encode_normal(n);
+                        }
                     }
                 }
             }
-            progress(1);
+            progress(rows as u64);
         },
     );
     GBufferImage { width: size.x, height: size.y, depth, normals }
