@@ -1,8 +1,9 @@
 //! CPU kernel throughput on the Sponza G-buffer at 1920×1080 (+64 px guard band = 2048×1208).
 //! Team targets: one VAO pass ≤ 0.1 s on 2 cores; ≥ 5 M incoherent AO rays/s. Also the Ray-SD
 //! passes and the reservoir any-hit. Then every pass of every technique's graph at 960×540 (+64)
-//! in Mpixel/s of the inner image, timed by the CPU executor itself (issue 14). Run: `cargo
-//! bench --bench cpu_kernels` (filter: `-- passes/gtao`).
+//! in Mpixel/s of the inner image, timed by the CPU executor itself (issue 14), and the ray
+//! tracer in M rays/s (`rays/...`). Run: `cargo bench --bench cpu_kernels` (filter:
+//! `-- passes/gtao`).
 
 use aokit::cli::TechniqueArgs;
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
@@ -136,5 +137,41 @@ fn passes(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, kernels, passes);
+/// Ray throughput in M rays/s on the rays `aokit rays` records (issue 14): the G-buffer's
+/// primary rays as 4×2 packets and one at a time, and Ray-SVAO's any-hit rays (the SD map's
+/// are `sponza_2048x1208/raysd_sd_map_rays`).
+fn rays(c: &mut Criterion) {
+    use aokit::rays::{Alpha, Tracer, primary_directions, sample_rays, svao_pass1, trace_primary, trace_samples};
+    let b = builtin::find("sponza").unwrap();
+    let scene = b.load().unwrap();
+    let frame = sponza_frame(&scene, 1920, 1080);
+    let renderer = CpuRenderer::new(&scene);
+    let (g, _) = renderer.gbuffer(&frame, &no_progress);
+    let (bvh, surfaces) = (renderer.bvh(), renderer.surfaces());
+    let mut group = c.benchmark_group("rays");
+    group.sample_size(10).measurement_time(Duration::from_secs(6));
+    let directions = primary_directions(&frame.camera);
+    let width = frame.camera.view.size().x as usize;
+    let mut hits = vec![None; directions.len()];
+    group.throughput(Throughput::Elements(directions.len() as u64));
+    for tracer in [Tracer::Scene, Tracer::Wide] {
+        let name = if tracer == Tracer::Scene { "primary_packets" } else { "primary_single" };
+        group.bench_function(name, |bench| {
+            bench.iter(|| {
+                let rays = (frame.camera.eye(), directions.as_slice(), width);
+                trace_primary(bvh, &surfaces, rays, Alpha::On, tracer, &mut hits)
+            })
+        });
+    }
+    let svao = SdOptions::default().frame(&frame.desc(), Secondary::Raytraced);
+    let samples = sample_rays(&svao, &g, &svao_pass1(&svao, &g));
+    let mut states = samples.states.clone();
+    group.throughput(Throughput::Elements(samples.states.len() as u64));
+    group.bench_function("raysvao_any_hit", |bench| {
+        bench.iter(|| trace_samples(bvh, &surfaces, &samples, Alpha::On, Tracer::Scene, &mut states))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, kernels, passes, rays);
 criterion_main!(benches);
