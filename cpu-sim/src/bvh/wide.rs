@@ -57,6 +57,16 @@ mod lanes {
         pub fn div(self, b: F4) -> F4 {
             F4(unsafe { _mm_div_ps(self.0, b.0) })
         }
+        /// `c − a·b` as glam 0.34's `m128_neg_mul_sub` computes it (inside `Vec3A::cross`):
+        /// one rounding (`vfnmadd`) where the build targets FMA, two otherwise.
+        #[inline(always)]
+        pub fn neg_mul_sub(a: F4, b: F4, c: F4) -> F4 {
+            #[cfg(target_feature = "fma")]
+            let out = F4(unsafe { _mm_fnmadd_ps(a.0, b.0, c.0) });
+            #[cfg(not(target_feature = "fma"))]
+            let out = c.sub(a.mul(b));
+            out
+        }
         /// `if a < b { a } else { b }` per lane.
         #[inline(always)]
         pub fn min(self, b: F4) -> F4 {
@@ -354,15 +364,42 @@ impl Block {
     /// `t_min < t < t_max`.
     #[inline(always)]
     fn intersect(&self, ray: &RayPre, t_min: F4, t_max: F4) -> (u32, [f32; 4]) {
+        self.intersect_with::<false>(ray, t_min, t_max)
+    }
+
+    /// [`Block::intersect`] with `r = d × c` rounded exactly as glam's `Vec3A::cross` rounds it
+    /// on x86-64 (`r.x = d.y·c.z − c.y·d.z` by [`F4::neg_mul_sub`], fused where the build
+    /// targets FMA; the other terms, glam's `dot` (`(x + y) + z`), `1/det`, `w` and `t` are the
+    /// same IEEE operations already): per lane bit for bit what obvhs' `Triangle::intersect`
+    /// (as compiled here) answers, so the any-hit traversal can test four triangles at once and
+    /// keep obvhs' decisions on edges.
+    #[cfg(target_arch = "x86_64")]
+    #[inline(always)]
+    fn intersect_obvhs(&self, ray: &RayPre, t_min: F4, t_max: F4) -> (u32, [f32; 4]) {
+        self.intersect_with::<true>(ray, t_min, t_max)
+    }
+
+    /// The test of [`Block::intersect`]; `GLAM_CROSS`: `r` as [`Block::intersect_obvhs`]
+    /// rounds it.
+    #[inline(always)]
+    fn intersect_with<const GLAM_CROSS: bool>(&self, ray: &RayPre, t_min: F4, t_max: F4) -> (u32, [f32; 4]) {
         let load = |a: &[[f32; 4]; 3]| [F4::load(&a[0]), F4::load(&a[1]), F4::load(&a[2])];
         let (v0, e1, e2, n) = (load(&self.v0), load(&self.e1), load(&self.e2), load(&self.n));
         let dot = |a: [F4; 3], b: [F4; 3]| a[0].mul(b[0]).add(a[1].mul(b[1])).add(a[2].mul(b[2]));
         let (o, d) = (ray.o4, ray.d4);
         let c = [v0[0].sub(o[0]), v0[1].sub(o[1]), v0[2].sub(o[2])];
+        // `a·b − e·f`, the first product rounded.
+        let cross_term = |a: F4, b: F4, e: F4, f: F4| {
+            #[cfg(target_arch = "x86_64")]
+            if GLAM_CROSS {
+                return F4::neg_mul_sub(e, f, a.mul(b));
+            }
+            a.mul(b).sub(e.mul(f))
+        };
         let r = [
-            d[1].mul(c[2]).sub(d[2].mul(c[1])),
-            d[2].mul(c[0]).sub(d[0].mul(c[2])),
-            d[0].mul(c[1]).sub(d[1].mul(c[0])),
+            cross_term(d[1], c[2], d[2], c[1]),
+            cross_term(d[2], c[0], d[0], c[2]),
+            cross_term(d[0], c[1], d[1], c[0]),
         ];
         let inv_det = F4::splat(1.0).div(dot(n, d));
         let u = dot(r, e2).mul(inv_det);
@@ -886,6 +923,9 @@ impl WideBvh {
         }
         let mut ray = obvhs::ray::Ray::new(origin, direction, t_min, t_max);
         let pre = RayPre::new(origin, direction);
+        // The blocks carry the triangles (on x86-64 they are tested there).
+        #[cfg(target_arch = "x86_64")]
+        let _ = triangles;
         // obvhs' `ray_get_octant_inv4`: bit x, y, z set where not `< 0.0` (−0 counts as positive).
         let octant =
             [direction.x, direction.y, direction.z].iter().fold(0, |o, &d| o << 1 | u32::from(d.is_nan() || d >= 0.0));
@@ -947,15 +987,22 @@ impl WideBvh {
                 if child & LEAF == 0 {
                     continue;
                 }
-                // obvhs' own triangle test, one at a time: the 4-lane blocks use the same
-                // operations in another grouping than glam's `dot` / `cross`, which decides a few
-                // edge hits otherwise (seen on the kitchen: 1 SD ray of 73,349).
                 let block = &self.blocks[(child & !LEAF) as usize];
+                // On x86-64 the block's four triangles at once, by obvhs' arithmetic to the bit
+                // (`Block::intersect_obvhs`): the lanes hit in `(t_min, t_max)` with their
+                // distances, re-checked against `t_max` as it shrinks; elsewhere obvhs' own
+                // test, one at a time.
+                #[cfg(target_arch = "x86_64")]
+                let (mut lanes, hits) = block.intersect_obvhs(&pre, F4::splat(ray.tmin), F4::splat(ray.tmax));
+                #[cfg(not(target_arch = "x86_64"))]
                 let mut lanes = block.valid;
                 while lanes != 0 {
                     let lane = 31 - lanes.leading_zeros() as usize;
                     lanes &= !(1 << lane);
                     let id = block.prim[lane] as usize;
+                    #[cfg(target_arch = "x86_64")]
+                    let t = hits[lane];
+                    #[cfg(not(target_arch = "x86_64"))]
                     let t = triangles[id].intersect(&ray);
                     if t > ray.tmin && t < ray.tmax {
                         match any_hit(id, t) {
@@ -1468,6 +1515,50 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// `Block::intersect_obvhs` answers per lane bit for bit as obvhs' `Triangle::intersect`
+    /// (kept to the open interval), on rays aimed at edges and corners where rounding decides.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn block_test_is_obvhs_to_the_bit() {
+        let (tris, _) = scene(400, 23);
+        let mut rng = Rng(41);
+        let (mut hits, mut plain_differs) = (0, 0);
+        for chunk in tris.chunks(4) {
+            let (block, _, _) = Block::new(chunk, 0, chunk.len() as u32);
+            for k in 0..200 {
+                // A point on an edge, at a corner or inside a triangle of the block, from a
+                // random origin.
+                let tri = &chunk[k % chunk.len()];
+                let s = if k % 5 == 0 { 0.0 } else { rng.next() };
+                let target = match k % 3 {
+                    0 => tri.v0 + (tri.v1 - tri.v0) * s,
+                    1 => tri.v1 + (tri.v2 - tri.v1) * s,
+                    _ => tri.v2 + (tri.v0 - tri.v2) * s * rng.next(),
+                };
+                let o = rng.vec(-0.5, 1.5);
+                let d = (target - o).normalize();
+                let (t_min, t_max) = if k % 4 == 0 { (0.01, 1.2) } else { (0.0, f32::INFINITY) };
+                let pre = RayPre::new(o, d);
+                let (mask, ts) = block.intersect_obvhs(&pre, F4::splat(t_min), F4::splat(t_max));
+                let (plain, _) = block.intersect(&pre, F4::splat(t_min), F4::splat(t_max));
+                plain_differs += (plain != mask) as u32;
+                for (lane, tri) in chunk.iter().enumerate() {
+                    let t = tri.intersect(&obvhs::ray::Ray::new(o, d, t_min, t_max));
+                    let expect = (t > t_min && t < t_max).then_some(t.to_bits());
+                    let got = (mask & 1 << lane != 0).then_some(ts[lane].to_bits());
+                    assert_eq!(got, expect, "lane {lane}, ray {o} {d} [{t_min}, {t_max}]");
+                    hits += expect.is_some() as u32;
+                }
+            }
+        }
+        assert!(hits > 5_000, "the rays must hit often enough to test something: {hits}");
+        // With FMA glam's cross rounds once per component; the plain test then decides some
+        // edges otherwise, which these rays must be sharp enough to show.
+        #[cfg(target_feature = "fma")]
+        assert!(plain_differs > 0, "the rays never reach the edges' rounding");
+        let _ = plain_differs;
     }
 
     #[test]
