@@ -11,7 +11,7 @@ use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
 use crate::common::math::{ceil, clamp, depth_or_far, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::{decode_normal, encode_normal};
-use crate::common::screen_space::{neighbour, neighbour_lanes, view_pos};
+use crate::common::screen_space::{clamp_index, neighbour, neighbour_lanes, view_pos};
 use crate::glam::{UVec2, Vec3, vec3};
 
 /// Output of the main pass for one pixel: the working AO term `uint(sat(vis/1.5)·255 + 0.5)`
@@ -256,23 +256,33 @@ pub fn sample_pair<L: Lanes>(
 
 /// Point sample of the MIP chain per lane at level `level` (an integral float; clamped to the
 /// chain, NaN reads level 0) and `uv`: the texel `clamp(⌊uv·size⌋, 0, size − 1)` of that level
-/// (spec §1.5), each lane's level size and offset chosen branch-free.
+/// (spec §1.5).
 #[inline]
 fn mip_sample<L: Lanes>(mips: &[f32], full: UVec2, level: L, uv: L::V2) -> L {
-    let s = mip_size(full, 0);
-    let (mut w, mut h, mut at) = (L::index_splat(s.x), L::index_splat(s.y), L::index_splat(0));
-    let (mut wf, mut hf) = (L::splat(s.x as f32), L::splat(s.y as f32));
-    let mut k = 1;
-    while k < MIP_LEVELS {
-        let reached = level.ge(L::splat(k as f32));
+    let (w, h, at, wf, hf) = if L::LANES == 1 {
+        // One pixel (the GPU): the level's size and offset directly.
+        let k = clamp_index(level.lane(0), MIP_LEVELS);
         let s = mip_size(full, k);
-        w = L::index_select(reached, L::index_splat(s.x), w);
-        h = L::index_select(reached, L::index_splat(s.y), h);
-        at = L::index_select(reached, L::index_splat(mip_offset(full, k) as u32), at);
-        wf = L::select(reached, L::splat(s.x as f32), wf);
-        hf = L::select(reached, L::splat(s.y as f32), hf);
-        k += 1;
-    }
+        let at = mip_offset(full, k) as u32;
+        (L::index_splat(s.x), L::index_splat(s.y), L::index_splat(at), L::splat(s.x as f32), L::splat(s.y as f32))
+    } else {
+        // Several pixels: each lane's level size and offset chosen branch-free.
+        let s = mip_size(full, 0);
+        let (mut w, mut h, mut at) = (L::index_splat(s.x), L::index_splat(s.y), L::index_splat(0));
+        let (mut wf, mut hf) = (L::splat(s.x as f32), L::splat(s.y as f32));
+        let mut k = 1;
+        while k < MIP_LEVELS {
+            let reached = level.ge(L::splat(k as f32));
+            let s = mip_size(full, k);
+            w = L::index_select(reached, L::index_splat(s.x), w);
+            h = L::index_select(reached, L::index_splat(s.y), h);
+            at = L::index_select(reached, L::index_splat(mip_offset(full, k) as u32), at);
+            wf = L::select(reached, L::splat(s.x as f32), wf);
+            hf = L::select(reached, L::splat(s.y as f32), hf);
+            k += 1;
+        }
+        (w, h, at, wf, hf)
+    };
     let x = (uv.x() * wf).floor_index(w);
     let y = (uv.y() * hf).floor_index(h);
     L::gather_index(mips, at + y * w + x)

@@ -180,12 +180,14 @@ fn slice_mask<L: Lanes>(params: &VbaoParams, mips: &[f32], px: &PixelSetup<L>, s
 /// falloff).
 #[inline]
 fn gated_bits<L: Lanes>(params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>, side: f32) -> L::Index {
-    let bits = sample_bits::<L>(delta, px.v, px.n, side, params.thickness, params.sector_rule);
-    if params.gate_radius > 0.0 {
-        L::index_select(delta.length().gt(L::splat(params.gate_radius)), L::index_splat(0), bits)
-    } else {
-        bits
+    let beyond =
+        if params.gate_radius > 0.0 { delta.length().gt(L::splat(params.gate_radius)) } else { L::mask_splat(false) };
+    // Skip the sample's arithmetic when no lane needs it (always, for one pixel beyond R_g).
+    if !L::any(L::not(beyond)) {
+        return L::index_splat(0);
     }
+    let bits = sample_bits::<L>(delta, px.v, px.n, side, params.thickness, params.sector_rule);
+    L::index_select(beyond, L::index_splat(0), bits)
 }
 
 /// VBAO's main pass for pixel `p` (spec vbao §1–§4): the visibility of every slice's mask
