@@ -77,14 +77,14 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_369_: i32;
-    var phi_388_: i32;
-    var phi_439_: i32;
-    var phi_458_: i32;
-    var phi_509_: i32;
-    var phi_528_: i32;
-    var phi_579_: i32;
-    var phi_598_: i32;
+    var phi_379_: i32;
+    var phi_398_: i32;
+    var phi_449_: i32;
+    var phi_468_: i32;
+    var phi_519_: i32;
+    var phi_538_: i32;
+    var phi_589_: i32;
+    var phi_608_: i32;
     var phi_1721_: bool;
     var phi_1736_: bool;
     var phi_1751_: bool;
@@ -107,56 +107,56 @@ fn function_() {
     var phi_1986_: u32;
     var phi_1997_: bool;
     var phi_2012_: bool;
-    var phi_841_: vec2<f32>;
-    var phi_872_: vec3<f32>;
-    var phi_878_: u32;
-    var phi_881_: u32;
-    var phi_883_: u32;
-    var phi_885_: u32;
-    var phi_914_: u32;
-    var phi_915_: u32;
-    var phi_916_: u32;
-    var phi_917_: u32;
-    var phi_879_: u32;
-    var phi_882_: u32;
-    var phi_884_: u32;
-    var phi_886_: u32;
+    var phi_851_: vec2<f32>;
+    var phi_882_: vec3<f32>;
+    var phi_888_: u32;
+    var phi_891_: u32;
+    var phi_893_: u32;
+    var phi_895_: u32;
+    var phi_924_: u32;
+    var phi_925_: u32;
+    var phi_926_: u32;
+    var phi_927_: u32;
+    var phi_889_: u32;
+    var phi_892_: u32;
+    var phi_894_: u32;
+    var phi_896_: u32;
     var local: u32;
-    var phi_948_: type_28;
+    var phi_958_: type_28;
     var phi_2187_: bool;
-    var phi_983_: u32;
-    var phi_986_: f32;
+    var phi_993_: u32;
+    var phi_996_: f32;
     var phi_2027_: bool;
-    var phi_1132_: u32;
-    var phi_1135_: f32;
-    var phi_1137_: bool;
-    var phi_1139_: bool;
-    var phi_1141_: f32;
-    var phi_1143_: f32;
-    var phi_1247_: u32;
-    var phi_1268_: u32;
-    var phi_1362_: u32;
-    var phi_1393_: u32;
+    var phi_1142_: u32;
+    var phi_1145_: f32;
+    var phi_1147_: bool;
+    var phi_1149_: bool;
+    var phi_1151_: f32;
+    var phi_1153_: f32;
+    var phi_1257_: u32;
+    var phi_1278_: u32;
+    var phi_1372_: u32;
+    var phi_1403_: u32;
     var phi_2110_: bool;
     var phi_2125_: bool;
     var phi_2086_: vec2<f32>;
-    var phi_1533_: u32;
-    var phi_1535_: u32;
-    var phi_1536_: f32;
-    var phi_1537_: bool;
-    var phi_1538_: bool;
-    var phi_1539_: f32;
-    var phi_1542_: bool;
-    var phi_1543_: bool;
-    var phi_1133_: u32;
-    var phi_1136_: f32;
-    var phi_1138_: bool;
-    var phi_1140_: bool;
-    var phi_1142_: f32;
-    var phi_1144_: f32;
+    var phi_1543_: u32;
+    var phi_1545_: u32;
+    var phi_1546_: f32;
     var phi_1547_: bool;
-    var phi_1549_: bool;
-    var phi_1550_: bool;
+    var phi_1548_: bool;
+    var phi_1549_: f32;
+    var phi_1552_: bool;
+    var phi_1553_: bool;
+    var phi_1143_: u32;
+    var phi_1146_: f32;
+    var phi_1148_: bool;
+    var phi_1150_: bool;
+    var phi_1152_: f32;
+    var phi_1154_: f32;
+    var phi_1557_: bool;
+    var phi_1559_: bool;
+    var phi_1560_: bool;
     var phi_2139_: bool;
     var phi_1709_: bool;
     var phi_1708_: bool;
@@ -167,13 +167,13 @@ fn function_() {
     var local_2: bool;
     var local_3: f32;
     var local_4: bool;
-    var phi_1590_: f32;
+    var phi_1600_: f32;
     var phi_2277_: bool;
-    var phi_984_: u32;
-    var phi_987_: f32;
+    var phi_994_: u32;
+    var phi_997_: f32;
     var phi_2276_: bool;
     var local_5: f32;
-    var phi_1661_: type_29;
+    var phi_1671_: type_29;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -208,11 +208,11 @@ fn function_() {
                         break;
                     }
                     if (_e111 < 0i) {
-                        phi_369_ = 0i;
+                        phi_379_ = 0i;
                     } else {
-                        phi_369_ = select(_e111, _e113, (_e111 > _e113));
+                        phi_379_ = select(_e111, _e113, (_e111 > _e113));
                     }
-                    let _e119 = phi_369_;
+                    let _e119 = phi_379_;
                     let _e121 = bitcast<i32>(_e59.y);
                     let _e123 = (bitcast<i32>(_e91) - 1i);
                     let _e124 = (0i <= _e123);
@@ -222,11 +222,11 @@ fn function_() {
                     }
                     let _e125 = (_e121 < 0i);
                     if _e125 {
-                        phi_388_ = 0i;
+                        phi_398_ = 0i;
                     } else {
-                        phi_388_ = select(_e121, _e123, (_e121 > _e123));
+                        phi_398_ = select(_e121, _e123, (_e121 > _e123));
                     }
-                    let _e129 = phi_388_;
+                    let _e129 = phi_398_;
                     let _e132 = ((bitcast<u32>(_e129) * _e81) + bitcast<u32>(_e119));
                     if (_e132 < _e61) {
                     } else {
@@ -239,21 +239,21 @@ fn function_() {
                         break;
                     }
                     if (_e141 < 0i) {
-                        phi_439_ = 0i;
+                        phi_449_ = 0i;
                     } else {
-                        phi_439_ = select(_e141, _e113, (_e141 > _e113));
+                        phi_449_ = select(_e141, _e113, (_e141 > _e113));
                     }
-                    let _e146 = phi_439_;
+                    let _e146 = phi_449_;
                     if _e124 {
                     } else {
                         break;
                     }
                     if _e125 {
-                        phi_458_ = 0i;
+                        phi_468_ = 0i;
                     } else {
-                        phi_458_ = select(_e121, _e123, (_e121 > _e123));
+                        phi_468_ = select(_e121, _e123, (_e121 > _e123));
                     }
-                    let _e151 = phi_458_;
+                    let _e151 = phi_468_;
                     let _e154 = ((bitcast<u32>(_e151) * _e81) + bitcast<u32>(_e146));
                     if (_e154 < _e61) {
                     } else {
@@ -266,22 +266,22 @@ fn function_() {
                     }
                     let _e163 = (_e110 < 0i);
                     if _e163 {
-                        phi_509_ = 0i;
+                        phi_519_ = 0i;
                     } else {
-                        phi_509_ = select(_e110, _e113, (_e110 > _e113));
+                        phi_519_ = select(_e110, _e113, (_e110 > _e113));
                     }
-                    let _e167 = phi_509_;
+                    let _e167 = phi_519_;
                     let _e169 = (_e121 + -1i);
                     if _e124 {
                     } else {
                         break;
                     }
                     if (_e169 < 0i) {
-                        phi_528_ = 0i;
+                        phi_538_ = 0i;
                     } else {
-                        phi_528_ = select(_e169, _e123, (_e169 > _e123));
+                        phi_538_ = select(_e169, _e123, (_e169 > _e123));
                     }
-                    let _e174 = phi_528_;
+                    let _e174 = phi_538_;
                     let _e177 = ((bitcast<u32>(_e174) * _e81) + bitcast<u32>(_e167));
                     if (_e177 < _e61) {
                     } else {
@@ -293,22 +293,22 @@ fn function_() {
                         break;
                     }
                     if _e163 {
-                        phi_579_ = 0i;
+                        phi_589_ = 0i;
                     } else {
-                        phi_579_ = select(_e110, _e113, (_e110 > _e113));
+                        phi_589_ = select(_e110, _e113, (_e110 > _e113));
                     }
-                    let _e189 = phi_579_;
+                    let _e189 = phi_589_;
                     let _e191 = (_e121 + 1i);
                     if _e124 {
                     } else {
                         break;
                     }
                     if (_e191 < 0i) {
-                        phi_598_ = 0i;
+                        phi_608_ = 0i;
                     } else {
-                        phi_598_ = select(_e191, _e123, (_e191 > _e123));
+                        phi_608_ = select(_e191, _e123, (_e191 > _e123));
                     }
-                    let _e196 = phi_598_;
+                    let _e196 = phi_608_;
                     let _e199 = ((bitcast<u32>(_e196) * _e81) + bitcast<u32>(_e189));
                     if (_e199 < _e61) {
                     } else {
@@ -501,32 +501,32 @@ fn function_() {
                         let _e467 = abs(_e463);
                         let _e468 = (_e466 - _e467);
                         if (_e468 < 0f) {
-                            phi_841_ = vec2<f32>(((1f - _e467) * select(1f, -1f, (_e448 < 0f))), (_e466 * select(1f, -1f, (_e463 < 0f))));
+                            phi_851_ = vec2<f32>(((1f - _e467) * select(1f, -1f, (_e448 < 0f))), (_e466 * select(1f, -1f, (_e463 < 0f))));
                         } else {
-                            phi_841_ = vec2<f32>(_e448, _e463);
+                            phi_851_ = vec2<f32>(_e448, _e463);
                         }
-                        let _e479 = phi_841_;
+                        let _e479 = phi_851_;
                         let _e488 = (1f / sqrt((((_e479.x * _e479.x) + (_e479.y * _e479.y)) + (_e468 * _e468))));
                         let _e489 = (_e479.x * _e488);
                         let _e490 = (_e479.y * _e488);
                         let _e491 = (_e468 * _e488);
                         let _e492 = -(_e491);
                         if ((((_e489 * -(_e421)) + (_e490 * -(_e430))) + (_e492 * -(_e101))) < 0f) {
-                            phi_872_ = vec3<f32>(-(_e489), -(_e490), _e491);
+                            phi_882_ = vec3<f32>(-(_e489), -(_e490), _e491);
                         } else {
-                            phi_872_ = vec3<f32>(_e489, _e490, _e492);
+                            phi_882_ = vec3<f32>(_e489, _e490, _e492);
                         }
-                        let _e507 = phi_872_;
+                        let _e507 = phi_882_;
                         let _e510 = params.member.member_8;
-                        phi_878_ = (_e59.y & 63u);
-                        phi_881_ = (_e59.x & 63u);
-                        phi_883_ = 32u;
-                        phi_885_ = 0u;
+                        phi_888_ = (_e59.y & 63u);
+                        phi_891_ = (_e59.x & 63u);
+                        phi_893_ = 32u;
+                        phi_895_ = 0u;
                         loop {
-                            let _e514 = phi_878_;
-                            let _e516 = phi_881_;
-                            let _e518 = phi_883_;
-                            let _e520 = phi_885_;
+                            let _e514 = phi_888_;
+                            let _e516 = phi_891_;
+                            let _e518 = phi_893_;
+                            let _e520 = phi_895_;
                             local = _e520;
                             let _e521 = (_e518 > 0u);
                             if _e521 {
@@ -534,42 +534,42 @@ fn function_() {
                                 let _e527 = select(0u, 1u, ((_e514 & _e518) != 0u));
                                 if (_e527 == 0u) {
                                     if (_e524 == 1u) {
-                                        phi_914_ = (63u - _e514);
-                                        phi_915_ = (63u - _e516);
+                                        phi_924_ = (63u - _e514);
+                                        phi_925_ = (63u - _e516);
                                     } else {
-                                        phi_914_ = _e514;
-                                        phi_915_ = _e516;
+                                        phi_924_ = _e514;
+                                        phi_925_ = _e516;
                                     }
-                                    let _e538 = phi_914_;
-                                    let _e540 = phi_915_;
-                                    phi_916_ = _e540;
-                                    phi_917_ = _e538;
+                                    let _e538 = phi_924_;
+                                    let _e540 = phi_925_;
+                                    phi_926_ = _e540;
+                                    phi_927_ = _e538;
                                 } else {
-                                    phi_916_ = _e514;
-                                    phi_917_ = _e516;
+                                    phi_926_ = _e514;
+                                    phi_927_ = _e516;
                                 }
-                                let _e542 = phi_916_;
-                                let _e544 = phi_917_;
-                                phi_879_ = _e542;
-                                phi_882_ = _e544;
-                                phi_884_ = (_e518 / 2u);
-                                phi_886_ = (_e520 + ((_e518 * _e518) * ((3u * _e524) ^ _e527)));
+                                let _e542 = phi_926_;
+                                let _e544 = phi_927_;
+                                phi_889_ = _e542;
+                                phi_892_ = _e544;
+                                phi_894_ = (_e518 / 2u);
+                                phi_896_ = (_e520 + ((_e518 * _e518) * ((3u * _e524) ^ _e527)));
                             } else {
-                                phi_879_ = u32();
-                                phi_882_ = u32();
-                                phi_884_ = u32();
-                                phi_886_ = u32();
+                                phi_889_ = u32();
+                                phi_892_ = u32();
+                                phi_894_ = u32();
+                                phi_896_ = u32();
                             }
-                            let _e547 = phi_879_;
-                            let _e549 = phi_882_;
-                            let _e551 = phi_884_;
-                            let _e553 = phi_886_;
+                            let _e547 = phi_889_;
+                            let _e549 = phi_892_;
+                            let _e551 = phi_894_;
+                            let _e553 = phi_896_;
                             continue;
                             continuing {
-                                phi_878_ = _e547;
-                                phi_881_ = _e549;
-                                phi_883_ = _e551;
-                                phi_885_ = _e553;
+                                phi_888_ = _e547;
+                                phi_891_ = _e549;
+                                phi_893_ = _e551;
+                                phi_895_ = _e553;
                                 break if !(_e521);
                             }
                         }
@@ -578,11 +578,11 @@ fn function_() {
                         let _e562 = (0.5f + (_e560 * 0.7548777f));
                         let _e566 = (0.5f + (_e560 * 0.5698403f));
                         let _e569 = (6.2831855f * (_e562 - floor(_e562)));
-                        phi_948_ = type_28(_e406, type_27(1u, type_26(vec2<u32>(_e59.x, _e59.y), vec3<f32>(_e421, _e430, _e101), _e507, sin(_e569), cos(_e569), (_e566 - floor(_e566)))));
+                        phi_958_ = type_28(_e406, type_27(1u, type_26(vec2<u32>(_e59.x, _e59.y), vec3<f32>(_e421, _e430, _e101), _e507, sin(_e569), cos(_e569), (_e566 - floor(_e566)))));
                     } else {
-                        phi_948_ = type_28(_e406, type_27(0u, type_27().member_1));
+                        phi_958_ = type_28(_e406, type_27(0u, type_27().member_1));
                     }
-                    let _e581 = phi_948_;
+                    let _e581 = phi_958_;
                     if (bitcast<i32>(_e581.member_1.member) != 0i) {
                         let _e590 = params.member.member_5;
                         let _e592 = select(_e590, 64u, (64u < _e590));
@@ -591,12 +591,12 @@ fn function_() {
                         let _e599 = params.member.member_6;
                         let _e601 = select(1u, _e599, (1u < _e599));
                         phi_2187_ = false;
-                        phi_983_ = 0u;
-                        phi_986_ = 0f;
+                        phi_993_ = 0u;
+                        phi_996_ = 0f;
                         loop {
                             let _e603 = phi_2187_;
-                            let _e605 = phi_983_;
-                            let _e607 = phi_986_;
+                            let _e605 = phi_993_;
+                            let _e607 = phi_996_;
                             local_5 = _e607;
                             let _e608 = (_e605 < _e596);
                             if _e608 {
@@ -628,19 +628,19 @@ fn function_() {
                                 let _e680 = params.member.member_1;
                                 let _e684 = params.member.member_3;
                                 let _e687 = params.member.member_4;
-                                phi_1132_ = 1u;
-                                phi_1135_ = _e680;
-                                phi_1137_ = false;
-                                phi_1139_ = true;
-                                phi_1141_ = 0f;
-                                phi_1143_ = 0f;
+                                phi_1142_ = 1u;
+                                phi_1145_ = _e680;
+                                phi_1147_ = false;
+                                phi_1149_ = true;
+                                phi_1151_ = 0f;
+                                phi_1153_ = 0f;
                                 loop {
-                                    let _e693 = phi_1132_;
-                                    let _e695 = phi_1135_;
-                                    let _e697 = phi_1137_;
-                                    let _e699 = phi_1139_;
-                                    let _e701 = phi_1141_;
-                                    let _e703 = phi_1143_;
+                                    let _e693 = phi_1142_;
+                                    let _e695 = phi_1145_;
+                                    let _e697 = phi_1147_;
+                                    let _e699 = phi_1149_;
+                                    let _e701 = phi_1151_;
+                                    let _e703 = phi_1153_;
                                     local_1 = _e695;
                                     local_2 = _e697;
                                     local_3 = _e695;
@@ -661,20 +661,20 @@ fn function_() {
                                             if (_e748 > 0f) {
                                                 let _e754 = select(select(u32(_e748), 0u, (_e748 < 0f)), 4294967295u, (_e748 > 4294967000f));
                                                 let _e755 = (_e81 - 1u);
-                                                phi_1247_ = select(_e754, _e755, (_e755 < _e754));
+                                                phi_1257_ = select(_e754, _e755, (_e755 < _e754));
                                             } else {
-                                                phi_1247_ = 0u;
+                                                phi_1257_ = 0u;
                                             }
-                                            let _e759 = phi_1247_;
+                                            let _e759 = phi_1257_;
                                             let _e760 = (_e737 * _e86);
                                             if (_e760 > 0f) {
                                                 let _e766 = select(select(u32(_e760), 0u, (_e760 < 0f)), 4294967295u, (_e760 > 4294967000f));
                                                 let _e767 = (_e91 - 1u);
-                                                phi_1268_ = select(_e766, _e767, (_e767 < _e766));
+                                                phi_1278_ = select(_e766, _e767, (_e767 < _e766));
                                             } else {
-                                                phi_1268_ = 0u;
+                                                phi_1278_ = 0u;
                                             }
-                                            let _e771 = phi_1268_;
+                                            let _e771 = phi_1278_;
                                             let _e773 = ((_e771 * _e81) + _e759);
                                             if (_e773 < _e61) {
                                             } else {
@@ -698,20 +698,20 @@ fn function_() {
                                             if (_e803 > 0f) {
                                                 let _e809 = select(select(u32(_e803), 0u, (_e803 < 0f)), 4294967295u, (_e803 > 4294967000f));
                                                 let _e810 = (_e81 - 1u);
-                                                phi_1362_ = select(_e809, _e810, (_e810 < _e809));
+                                                phi_1372_ = select(_e809, _e810, (_e810 < _e809));
                                             } else {
-                                                phi_1362_ = 0u;
+                                                phi_1372_ = 0u;
                                             }
-                                            let _e814 = phi_1362_;
+                                            let _e814 = phi_1372_;
                                             let _e819 = (select(0f, select(1f, _e737, (_e737 < 1f)), (_e737 > 0f)) * _e86);
                                             if (_e819 > 0f) {
                                                 let _e825 = select(select(u32(_e819), 0u, (_e819 < 0f)), 4294967295u, (_e819 > 4294967000f));
                                                 let _e826 = (_e91 - 1u);
-                                                phi_1393_ = select(_e825, _e826, (_e826 < _e825));
+                                                phi_1403_ = select(_e825, _e826, (_e826 < _e825));
                                             } else {
-                                                phi_1393_ = 0u;
+                                                phi_1403_ = 0u;
                                             }
-                                            let _e830 = phi_1393_;
+                                            let _e830 = phi_1403_;
                                             let _e848 = ((_e830 * _e81) + _e814);
                                             if (_e848 < _e63) {
                                             } else {
@@ -760,71 +760,71 @@ fn function_() {
                                             let _e935 = (_e701 + _e798);
                                             let _e944 = select(false, _e932, _e747);
                                             if _e944 {
-                                                phi_1533_ = (_e693 + 1u);
+                                                phi_1543_ = (_e693 + 1u);
                                             } else {
-                                                phi_1533_ = u32();
+                                                phi_1543_ = u32();
                                             }
-                                            let _e947 = phi_1533_;
-                                            phi_1535_ = _e947;
-                                            phi_1536_ = select(_e695, select((_e703 + ((_e701 * (_e710 - _e703)) / _e935)), _e703, (_e935 < 0.000001f)), _e934);
-                                            phi_1537_ = select(_e934, true, _e697);
-                                            phi_1538_ = _e944;
-                                            phi_1539_ = _e798;
-                                            phi_1542_ = _e944;
-                                            phi_1543_ = select(true, false, _e944);
+                                            let _e947 = phi_1543_;
+                                            phi_1545_ = _e947;
+                                            phi_1546_ = select(_e695, select((_e703 + ((_e701 * (_e710 - _e703)) / _e935)), _e703, (_e935 < 0.000001f)), _e934);
+                                            phi_1547_ = select(_e934, true, _e697);
+                                            phi_1548_ = _e944;
+                                            phi_1549_ = _e798;
+                                            phi_1552_ = _e944;
+                                            phi_1553_ = select(true, false, _e944);
                                         } else {
-                                            phi_1535_ = u32();
-                                            phi_1536_ = f32();
-                                            phi_1537_ = bool();
-                                            phi_1538_ = bool();
-                                            phi_1539_ = f32();
-                                            phi_1542_ = false;
-                                            phi_1543_ = false;
+                                            phi_1545_ = u32();
+                                            phi_1546_ = f32();
+                                            phi_1547_ = bool();
+                                            phi_1548_ = bool();
+                                            phi_1549_ = f32();
+                                            phi_1552_ = false;
+                                            phi_1553_ = false;
                                         }
-                                        let _e950 = phi_1535_;
-                                        let _e952 = phi_1536_;
-                                        let _e954 = phi_1537_;
-                                        let _e956 = phi_1538_;
-                                        let _e958 = phi_1539_;
-                                        let _e960 = phi_1542_;
-                                        let _e962 = phi_1543_;
-                                        phi_1133_ = _e950;
-                                        phi_1136_ = _e952;
-                                        phi_1138_ = _e954;
-                                        phi_1140_ = _e956;
-                                        phi_1142_ = _e958;
-                                        phi_1144_ = _e710;
-                                        phi_1547_ = _e960;
-                                        phi_1549_ = _e962;
-                                        phi_1550_ = select(true, false, _e747);
+                                        let _e950 = phi_1545_;
+                                        let _e952 = phi_1546_;
+                                        let _e954 = phi_1547_;
+                                        let _e956 = phi_1548_;
+                                        let _e958 = phi_1549_;
+                                        let _e960 = phi_1552_;
+                                        let _e962 = phi_1553_;
+                                        phi_1143_ = _e950;
+                                        phi_1146_ = _e952;
+                                        phi_1148_ = _e954;
+                                        phi_1150_ = _e956;
+                                        phi_1152_ = _e958;
+                                        phi_1154_ = _e710;
+                                        phi_1557_ = _e960;
+                                        phi_1559_ = _e962;
+                                        phi_1560_ = select(true, false, _e747);
                                     } else {
-                                        phi_1133_ = u32();
-                                        phi_1136_ = f32();
-                                        phi_1138_ = bool();
-                                        phi_1140_ = bool();
-                                        phi_1142_ = f32();
-                                        phi_1144_ = f32();
-                                        phi_1547_ = false;
-                                        phi_1549_ = false;
-                                        phi_1550_ = false;
+                                        phi_1143_ = u32();
+                                        phi_1146_ = f32();
+                                        phi_1148_ = bool();
+                                        phi_1150_ = bool();
+                                        phi_1152_ = f32();
+                                        phi_1154_ = f32();
+                                        phi_1557_ = false;
+                                        phi_1559_ = false;
+                                        phi_1560_ = false;
                                     }
-                                    let _e965 = phi_1133_;
-                                    let _e967 = phi_1136_;
-                                    let _e969 = phi_1138_;
-                                    let _e971 = phi_1140_;
-                                    let _e973 = phi_1142_;
-                                    let _e975 = phi_1144_;
-                                    let _e977 = phi_1547_;
-                                    let _e979 = phi_1549_;
-                                    let _e981 = phi_1550_;
+                                    let _e965 = phi_1143_;
+                                    let _e967 = phi_1146_;
+                                    let _e969 = phi_1148_;
+                                    let _e971 = phi_1150_;
+                                    let _e973 = phi_1152_;
+                                    let _e975 = phi_1154_;
+                                    let _e977 = phi_1557_;
+                                    let _e979 = phi_1559_;
+                                    let _e981 = phi_1560_;
                                     continue;
                                     continuing {
-                                        phi_1132_ = _e965;
-                                        phi_1135_ = _e967;
-                                        phi_1137_ = _e969;
-                                        phi_1139_ = _e971;
-                                        phi_1141_ = _e973;
-                                        phi_1143_ = _e975;
+                                        phi_1142_ = _e965;
+                                        phi_1145_ = _e967;
+                                        phi_1147_ = _e969;
+                                        phi_1149_ = _e971;
+                                        phi_1151_ = _e973;
+                                        phi_1153_ = _e975;
                                         phi_2139_ = _e603;
                                         phi_1709_ = _e981;
                                         phi_1708_ = _e979;
@@ -853,28 +853,28 @@ fn function_() {
                                 let _e1010 = local_4;
                                 let _e1014 = params.member.member_7;
                                 if (_e1014 == 1u) {
-                                    phi_1590_ = 0f;
+                                    phi_1600_ = 0f;
                                 } else {
                                     let _e1016 = (select(_e1007, select(_e995, _e1000, _e998), _e1005) / _e680);
-                                    phi_1590_ = select(0f, select(1f, _e1016, (_e1016 < 1f)), (_e1016 > 0f));
+                                    phi_1600_ = select(0f, select(1f, _e1016, (_e1016 < 1f)), (_e1016 > 0f));
                                 }
-                                let _e1022 = phi_1590_;
+                                let _e1022 = phi_1600_;
                                 phi_2277_ = _e985;
-                                phi_984_ = (_e605 + 1u);
-                                phi_987_ = (_e607 + select(1f, _e1022, select(_e1010, select(_e993, _e1003, _e998), _e1005)));
+                                phi_994_ = (_e605 + 1u);
+                                phi_997_ = (_e607 + select(1f, _e1022, select(_e1010, select(_e993, _e1003, _e998), _e1005)));
                             } else {
                                 phi_2277_ = _e603;
-                                phi_984_ = u32();
-                                phi_987_ = f32();
+                                phi_994_ = u32();
+                                phi_997_ = f32();
                             }
                             let _e1027 = phi_2277_;
-                            let _e1029 = phi_984_;
-                            let _e1031 = phi_987_;
+                            let _e1029 = phi_994_;
+                            let _e1031 = phi_997_;
                             continue;
                             continuing {
                                 phi_2187_ = _e1027;
-                                phi_983_ = _e1029;
-                                phi_986_ = _e1031;
+                                phi_993_ = _e1029;
+                                phi_996_ = _e1031;
                                 phi_2276_ = _e1027;
                                 break if !(_e608);
                             }
@@ -888,11 +888,11 @@ fn function_() {
                         let _e1042 = pow((_e1037 / f32(_e596)), _e1041);
                         let _e1043 = (_e1042 * 0.6666667f);
                         let _e1049 = ((select(0f, select(1f, _e1043, (_e1043 < 1f)), (_e1043 > 0f)) * 255f) + 0.5f);
-                        phi_1661_ = type_29(_e1042, select(select(u32(_e1049), 0u, (_e1049 < 0f)), 4294967295u, (_e1049 > 4294967000f)), _e581.member);
+                        phi_1671_ = type_29(_e1042, select(select(u32(_e1049), 0u, (_e1049 < 0f)), 4294967295u, (_e1049 > 4294967000f)), _e581.member);
                     } else {
-                        phi_1661_ = type_29(1f, 170u, _e581.member);
+                        phi_1671_ = type_29(1f, 170u, _e581.member);
                     }
-                    let _e1058 = phi_1661_;
+                    let _e1058 = phi_1671_;
                     if (_e97 < arrayLength((&ao.member))) {
                     } else {
                         break;

@@ -121,7 +121,7 @@ impl ViewParams {
     /// [`Self::index`] per lane.
     #[inline]
     pub fn index_lanes<L: Lanes>(&self, p: L::U2) -> L::Index {
-        L::texel_y(p) * L::index_splat(self.size().x) + L::texel_x(p)
+        crate::common::lanes::row_major_index::<L>(p, self.size().x)
     }
 }
 

@@ -1,7 +1,7 @@
 //! Read access to the G-buffer (linear depth + encoded view-space face normal), the resource
 //! trait every screen-space kernel is written against.
 
-use crate::common::lanes::{LaneVec3, Lanes};
+use crate::common::lanes::{LaneVec3, Lanes, row_major_index};
 use crate::common::normal_codec::decode_normal;
 use crate::glam::{UVec2, Vec3};
 
@@ -20,7 +20,21 @@ pub trait GBuffer {
 /// `depth[y·width + x]` per lane: a row-major depth buffer's gather.
 #[inline]
 fn row_major_lanes<L: Lanes>(depth: &[f32], width: u32, p: L::U2) -> L {
-    L::gather_index(depth, L::texel_y(p) * L::index_splat(width) + L::texel_x(p))
+    L::gather_index(depth, row_major_index::<L>(p, width))
+}
+
+/// The decoded G-buffer normals (row-major octahedral codes, [`decode_normal`]) at each lane's
+/// pixel.
+#[inline]
+pub fn decoded_normals<L: Lanes>(normals: &[u32], width: u32, p: L::U2) -> L::V3 {
+    L::gather_v3(
+        normals,
+        move |i| {
+            let q = L::texel_lane(p, i);
+            (q.y * width + q.x) as usize
+        },
+        decode_normal,
+    )
 }
 
 /// The G-buffer as two row-major storage buffers of the full target: `f32` linear depth and
@@ -46,15 +60,7 @@ impl GBuffer for GBufferSlices<'_> {
     }
     #[inline]
     fn view_normal_lanes<L: Lanes>(&self, p: L::U2) -> L::V3 {
-        let width = self.width;
-        L::gather_v3(
-            self.normals,
-            move |i| {
-                let q = L::texel_lane(p, i);
-                (q.y * width + q.x) as usize
-            },
-            decode_normal,
-        )
+        decoded_normals::<L>(self.normals, self.width, p)
     }
 }
 

@@ -130,6 +130,18 @@ pub fn texel_eq<L: Lanes>(a: L::U2, b: L::U2) -> L::Mask {
     L::and(L::index_eq(L::texel_x(a), L::texel_x(b)), L::index_eq(L::texel_y(a), L::texel_y(b)))
 }
 
+/// The row-major index `y·width + x` of each lane's texel.
+#[inline]
+pub fn row_major_index<L: Lanes>(p: L::U2, width: u32) -> L::Index {
+    L::texel_y(p) * L::index_splat(width) + L::texel_x(p)
+}
+
+/// `if m { a } else { b }` per lane for vectors.
+#[inline]
+pub fn select_v3<L: Lanes>(m: L::Mask, a: L::V3, b: L::V3) -> L::V3 {
+    L::V3::new(L::select(m, a.x(), b.x()), L::select(m, a.y(), b.y()), L::select(m, a.z(), b.z()))
+}
+
 /// Two lanes-valued components.
 pub trait LaneVec2<L>: Copy + Add<Output = Self> + Sub<Output = Self> + Mul<L, Output = Self> {
     fn new(x: L, y: L) -> Self;

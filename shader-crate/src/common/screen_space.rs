@@ -34,5 +34,5 @@ pub fn neighbour_lanes<L: Lanes>(p: L::U2, dx: i32, dy: i32, size: UVec2) -> L::
 /// `data[p.y·width + p.x]` per lane, for buffers of words (AO terms, packed edges).
 #[inline]
 pub fn word_at<L: Lanes>(data: &[u32], width: u32, p: L::U2) -> L::Index {
-    L::gather_word(data, L::texel_y(p) * L::index_splat(width) + L::texel_x(p))
+    L::gather_word(data, crate::common::lanes::row_major_index::<L>(p, width))
 }

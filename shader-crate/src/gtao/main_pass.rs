@@ -7,10 +7,11 @@ use spirv_std::num_traits::Float;
 
 use super::{GtaoParams, MIP_LEVELS, mip_offset, mip_size};
 use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, store_term};
-use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
+use crate::common::gbuffer_read::decoded_normals;
+use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, select_v3};
 use crate::common::math::{ceil, clamp, depth_or_far, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
-use crate::common::normal_codec::{decode_normal, encode_normal};
+use crate::common::normal_codec::encode_normal;
 use crate::common::screen_space::{clamp_index, neighbour, neighbour_lanes, view_pos};
 use crate::glam::{UVec2, Vec3, vec3};
 
@@ -20,12 +21,6 @@ use crate::glam::{UVec2, Vec3, vec3};
 pub struct GtaoPixel {
     pub term: u32,
     pub edges: u32,
-}
-
-/// The G-buffer's right-handed (−z forward) view normal in XeGTAO's +z-forward space.
-#[inline]
-fn to_gtao_space(n: Vec3) -> Vec3 {
-    vec3(n.x, n.y, -n.z)
 }
 
 /// What the main pass knows about pixel `p` before its slices (spec §2.6.2): uv, the pulled
@@ -77,17 +72,11 @@ pub fn pixel_setup<L: Lanes>(
     let z = zc * 0.99999;
     let pos = view_pos(view, uv, z);
     let v = (-pos).normalize();
-    let width = size.x;
-    let n = L::gather_v3(
-        normals,
-        move |i| {
-            let q = L::texel_lane(p, i);
-            (q.y * width + q.x) as usize
-        },
-        |code| to_gtao_space(decode_normal(code)),
-    );
-    let away = n.dot(v).lt(L::splat(0.0));
-    let n = L::V3::new(L::select(away, -n.x(), n.x()), L::select(away, -n.y(), n.y()), L::select(away, -n.z(), n.z()));
+    // The G-buffer's right-handed (−z forward) normal in XeGTAO's +z-forward space, facing the
+    // camera.
+    let n = decoded_normals::<L>(normals, size.x, p);
+    let n = L::V3::new(n.x(), n.y(), -n.z());
+    let n = select_v3::<L>(n.dot(v).lt(L::splat(0.0)), -n, n);
     let r = params.effective_radius();
     // Screen radius in pixels: R / (z·2·tanX/W).
     let r_px = L::splat(r) / (z * 2.0 * view.tan_half_fov.x / view.res.x);

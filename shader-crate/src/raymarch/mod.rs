@@ -12,6 +12,7 @@ pub mod settings;
 
 use crate::common::ViewParams;
 use crate::common::denoise_terms::{edges, pack_edges, store_term};
+use crate::common::gbuffer_read::decoded_normals;
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, texel_eq};
 use crate::common::math::{depth_or_far, is_valid_depth, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
@@ -171,15 +172,7 @@ pub fn hemisphere_dir<L: Lanes>(d: L::V2, n: L::V3) -> L::V3 {
 #[inline]
 fn plane_depth<L: Lanes>(view: &ViewParams, normals: &[u32], q: L::U2, z: L, uv: L::V2) -> L {
     let c = view_pos(view, view.texel_uv_lanes::<L>(q), z);
-    let width = view.size().x;
-    let n = L::gather_v3(
-        normals,
-        move |i| {
-            let t = L::texel_lane(q, i);
-            (t.y * width + t.x) as usize
-        },
-        decode_normal,
-    );
+    let n = decoded_normals::<L>(normals, view.size().x, q);
     let n = L::V3::new(n.x(), n.y(), -n.z());
     let r = view_pos(view, uv, L::splat(1.0));
     let denom = n.dot(r);

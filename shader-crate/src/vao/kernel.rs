@@ -4,7 +4,7 @@
 // with `num_traits::Float`.
 use crate::common::ViewParams;
 use crate::common::gbuffer_read::GBuffer;
-use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, texel_eq};
+use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, select_v3, texel_eq};
 use crate::common::math::{clamp_lanes, depth_or_far, is_valid_depth, sat, sign_nonzero};
 use crate::common::tables::{
     AO_SAMPLES, HBAO_HALF_CHORDS, HBAO_PDFS, HBAO_RADII, VAO_DIRECTIONS, VAO_HALF_CHORDS, VAO_RADII, kernel_entry,
@@ -115,12 +115,6 @@ pub fn setup_lanes<G: GBuffer, L: Lanes>(
         inv_normal_z: L::splat(1.0) / non_zero(normal_sphere.z()),
     };
     (shaded, frame)
-}
-
-/// `if m { a } else { b }` per lane for vectors.
-#[inline]
-fn select_v3<L: Lanes>(m: L::Mask, a: L::V3, b: L::V3) -> L::V3 {
-    L::V3::new(L::select(m, a.x(), b.x()), L::select(m, a.y(), b.y()), L::select(m, a.z(), b.z()))
 }
 
 /// One VAO line sample (spec §4.2), of one pixel (`L = f32`) or of `L::LANES` pixels.
