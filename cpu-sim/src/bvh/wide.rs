@@ -806,27 +806,10 @@ impl WideBvh {
         loop {
             if current & LEAF == 0 {
                 let node = &self.nodes[current as usize];
-                let (mut mask, near) = N::intersect(node, &ray, t_min, with_margin(best_t));
-                if mask != 0 {
-                    if mask & (mask - 1) == 0 {
-                        // One child: straight into it.
-                        current = node.child[mask.trailing_zeros() as usize];
-                        continue;
-                    }
-                    let base = sp;
-                    while mask != 0 {
-                        let slot = mask.trailing_zeros() as usize;
-                        mask &= mask - 1;
-                        let entry = (node.child[slot], near[slot]);
-                        let mut k = sp;
-                        // SAFETY (both): the entries below `sp` were written.
-                        while k > base && unsafe { stack[k - 1].assume_init() }.1 < entry.1 {
-                            stack[k] = stack[k - 1];
-                            k -= 1;
-                        }
-                        stack[k].write(entry);
-                        sp += 1;
-                    }
+                let (mask, near) = N::intersect(node, &ray, t_min, with_margin(best_t));
+                if let Some(child) = enter_nearest_first(node, mask, &near, &mut stack, &mut sp) {
+                    current = child;
+                    continue;
                 }
             } else {
                 let block = &self.blocks[(current & !LEAF) as usize];
@@ -1126,26 +1109,10 @@ impl WideBvh {
         loop {
             if current & LEAF == 0 {
                 let node = &self.nodes[current as usize];
-                let (mut mask, near) = node_test(node, bound);
-                if mask != 0 {
-                    if mask & (mask - 1) == 0 {
-                        current = node.child[mask.trailing_zeros() as usize];
-                        continue;
-                    }
-                    let base = sp;
-                    while mask != 0 {
-                        let slot = mask.trailing_zeros() as usize;
-                        mask &= mask - 1;
-                        let entry = (node.child[slot], near[slot]);
-                        let mut k = sp;
-                        // SAFETY (both): the entries below `sp` were written.
-                        while k > base && unsafe { stack[k - 1].assume_init() }.1 < entry.1 {
-                            stack[k] = stack[k - 1];
-                            k -= 1;
-                        }
-                        stack[k].write(entry);
-                        sp += 1;
-                    }
+                let (mask, near) = node_test(node, bound);
+                if let Some(child) = enter_nearest_first(node, mask, &near, &mut stack, &mut sp) {
+                    current = child;
+                    continue;
                 }
             } else {
                 let block = &self.blocks[(current & !LEAF) as usize];
@@ -1223,6 +1190,37 @@ impl WideBvh {
 #[inline(always)]
 fn with_margin(best_t: f32) -> f32 {
     best_t + best_t.abs() * MARGIN
+}
+
+/// Enter the children `mask` of `node` nearest first: with a single child, return it (the
+/// traversal goes straight into it); otherwise push them above `sp`, sorted by their entry
+/// distances `near` with the farthest lowest, so that the nearest pops first.
+#[inline(always)]
+fn enter_nearest_first(
+    node: &Node,
+    mut mask: u32,
+    near: &[f32; 8],
+    stack: &mut [MaybeUninit<(u32, f32)>; STACK],
+    sp: &mut usize,
+) -> Option<u32> {
+    if mask != 0 && mask & (mask - 1) == 0 {
+        return Some(node.child[mask.trailing_zeros() as usize]);
+    }
+    let base = *sp;
+    while mask != 0 {
+        let slot = mask.trailing_zeros() as usize;
+        mask &= mask - 1;
+        let entry = (node.child[slot], near[slot]);
+        let mut k = *sp;
+        // SAFETY (both): the entries below `sp` were written.
+        while k > base && unsafe { stack[k - 1].assume_init() }.1 < entry.1 {
+            stack[k] = stack[k - 1];
+            k -= 1;
+        }
+        stack[k].write(entry);
+        *sp += 1;
+    }
+    None
 }
 
 /// The relative margin of [`with_margin`].
