@@ -118,8 +118,6 @@ pub trait Lanes:
     fn index_bit_run(start: Self::Index, count: Self::Index) -> Self::Index;
     /// The vector whose lane `i` is `f(i)`, one call of `f` per lane.
     fn v2_from_lanes(f: impl Fn(usize) -> Vec2) -> Self::V2;
-    /// The index whose lane `k` is `f(k)`.
-    fn index_from_lanes(f: impl Fn(usize) -> u32) -> Self::Index;
     /// Lane `k` of an index.
     fn index_lane(i: Self::Index, k: usize) -> u32;
 }
@@ -351,10 +349,6 @@ impl Lanes for f32 {
     }
     #[inline]
     fn v2_from_lanes(f: impl Fn(usize) -> Vec2) -> Vec2 {
-        f(0)
-    }
-    #[inline]
-    fn index_from_lanes(f: impl Fn(usize) -> u32) -> u32 {
         f(0)
     }
     #[inline]
@@ -658,10 +652,6 @@ mod x8 {
         fn v2_from_lanes(f: impl Fn(usize) -> Vec2) -> V2x8 {
             let v: [Vec2; 8] = core::array::from_fn(f);
             V2x8 { x: F32x8::from_lanes(|i| v[i].x), y: F32x8::from_lanes(|i| v[i].y) }
-        }
-        #[inline(always)]
-        fn index_from_lanes(f: impl Fn(usize) -> u32) -> i32x8 {
-            i32x8::new(core::array::from_fn(|k| f(k) as i32))
         }
         #[inline(always)]
         fn index_lane(i: i32x8, k: usize) -> u32 {
