@@ -8,9 +8,15 @@ use crate::glam::{UVec2, Vec3};
 /// What a screen-space kernel reads per pixel (spec svao-raysd §1 inputs).
 pub trait GBuffer {
     /// Linear view depth at pixel `p` (may be NaN/∞/0 for broken input; kernels sanitize).
-    fn linear_depth(&self, p: UVec2) -> f32;
+    #[inline]
+    fn linear_depth(&self, p: UVec2) -> f32 {
+        self.linear_depth_lanes::<f32>(p)
+    }
     /// Unit view-space face normal at pixel `p`.
-    fn view_normal(&self, p: UVec2) -> Vec3;
+    #[inline]
+    fn view_normal(&self, p: UVec2) -> Vec3 {
+        self.view_normal_lanes::<f32>(p)
+    }
     /// [`Self::linear_depth`] at each lane's pixel.
     fn linear_depth_lanes<L: Lanes>(&self, p: L::U2) -> L;
     /// [`Self::view_normal`] at each lane's pixel.
@@ -47,16 +53,8 @@ pub struct GBufferSlices<'a> {
 
 impl GBuffer for GBufferSlices<'_> {
     #[inline]
-    fn linear_depth(&self, p: UVec2) -> f32 {
-        self.depth[(p.y * self.width + p.x) as usize]
-    }
-    #[inline]
     fn linear_depth_lanes<L: Lanes>(&self, p: L::U2) -> L {
         row_major_lanes(self.depth, self.width, p)
-    }
-    #[inline]
-    fn view_normal(&self, p: UVec2) -> Vec3 {
-        decode_normal(self.normals[(p.y * self.width + p.x) as usize])
     }
     #[inline]
     fn view_normal_lanes<L: Lanes>(&self, p: L::U2) -> L::V3 {
@@ -72,16 +70,8 @@ pub struct DepthSlice<'a> {
 
 impl GBuffer for DepthSlice<'_> {
     #[inline]
-    fn linear_depth(&self, p: UVec2) -> f32 {
-        self.depth[(p.y * self.width + p.x) as usize]
-    }
-    #[inline]
     fn linear_depth_lanes<L: Lanes>(&self, p: L::U2) -> L {
         row_major_lanes(self.depth, self.width, p)
-    }
-    #[inline]
-    fn view_normal(&self, _p: UVec2) -> Vec3 {
-        Vec3::Z
     }
     #[inline]
     fn view_normal_lanes<L: Lanes>(&self, _p: L::U2) -> L::V3 {
