@@ -7,7 +7,7 @@
 //! repeated here.
 
 use crate::scene::Scene;
-use aokit_cpu::bvh::{AnyHit, Hit, packet_tiles};
+use aokit_cpu::bvh::{AnyHit, Hit, PACKET, packet_tiles};
 use aokit_cpu::svao::Pass1;
 use aokit_cpu::{GBufferImage, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaTables;
@@ -354,6 +354,8 @@ fn trace_candidates<H: CandidateHit>(bvh: &SceneBvh, tracer: Tracer, ray: (Vec3,
 
 /// Trace every SD ray with the reservoir any-hit (`SdHits`, alpha test per `alpha`) on the
 /// current rayon pool; `out` gets each ray's final payload (its `N` depths and hit count).
+/// `Tracer::Scene` traces packets of 8 consecutive rays (`SceneBvh::trace_any_hit_packet`, as
+/// the SD map does), the others one ray at a time.
 pub fn trace_sd(
     bvh: &SceneBvh,
     surfaces: &Surfaces,
@@ -365,8 +367,27 @@ pub fn trace_sd(
     assert_eq!(out.len(), rays.payloads.len(), "one answer per ray");
     let tables = alpha_tables(surfaces, alpha);
     out.par_chunks_mut(CHUNK / 16).with_max_len(1).enumerate().for_each(|(c, chunk)| {
+        let first = c * (CHUNK / 16);
+        if tracer == Tracer::Scene {
+            for (p, packet) in chunk.chunks_mut(PACKET).enumerate() {
+                let k = first + p * PACKET;
+                let n = packet.len();
+                let pick = |v: &[f32]| std::array::from_fn(|i| v[k + i.min(n - 1)]);
+                let directions = std::array::from_fn(|i| rays.directions[k + i.min(n - 1)]);
+                let mut hits: [SdHits; PACKET] =
+                    std::array::from_fn(|i| SdHits { payload: rays.payloads[k + i.min(n - 1)], alpha: tables });
+                let interval = (&pick(&rays.t_min), &pick(&rays.t_max));
+                bvh.trace_any_hit_packet(rays.origin, &directions, interval, n, |ray, t, tri, b| {
+                    AnyHit::from_decision(hits[ray].decide(t, b, tri))
+                });
+                for (o, h) in packet.iter_mut().zip(&hits) {
+                    *o = h.payload;
+                }
+            }
+            return;
+        }
         for (i, o) in chunk.iter_mut().enumerate() {
-            let k = c * (CHUNK / 16) + i;
+            let k = first + i;
             let mut hits = SdHits { payload: rays.payloads[k], alpha: tables };
             trace_candidates(bvh, tracer, (rays.origin, rays.directions[k], rays.t_min[k], rays.t_max[k]), &mut hits);
             *o = hits.payload;
@@ -689,12 +710,13 @@ mod command {
                     "primary": throughput_json(directions.len(), &p),
                     "primary_differ": h.iter().zip(&hits).filter(|(a, b)| a.map(|x| x.triangle) != b.map(|x| x.triangle)).count(),
                 });
+                // SD rays: packets, single rays on the wide layout, obvhs' traversal.
+                let mut d = sd.payloads.clone();
+                let ((), t) = timed(args.repeat, || trace_sd(&bvh, &surfaces, &sd, alpha, tracer, &mut d));
+                step["sd"] = throughput_json(sd.payloads.len(), &t);
+                step["sd_differ"] = d.iter().zip(&sd_out).filter(|(a, b)| a != b).count().into();
                 if tracer == Tracer::Cwbvh {
-                    // The any-hit rays have two traversals: the shipped one and obvhs'.
-                    let mut d = sd.payloads.clone();
-                    let ((), t) = timed(args.repeat, || trace_sd(&bvh, &surfaces, &sd, alpha, tracer, &mut d));
-                    step["sd"] = throughput_json(sd.payloads.len(), &t);
-                    step["sd_differ"] = d.iter().zip(&sd_out).filter(|(a, b)| a != b).count().into();
+                    // The Ray-SVAO rays have two traversals: the shipped one and obvhs'.
                     let mut v = sv.states.clone();
                     let ((), t) = timed(args.repeat, || trace_samples(&bvh, &surfaces, &sv, alpha, tracer, &mut v));
                     step["svao"] = throughput_json(sv.states.len(), &t);

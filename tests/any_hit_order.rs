@@ -7,8 +7,8 @@
 mod common;
 
 use aokit::render::CpuRenderer;
-use aokit_cpu::bvh::AnyHit;
-use aokit_shaders::glam::{UVec2, Vec3};
+use aokit_cpu::bvh::{AnyHit, PACKET};
+use aokit_shaders::glam::{UVec2, Vec2, Vec3};
 
 /// A deterministic answer from the candidate itself: mostly IGNORE, sometimes ACCEPT (the
 /// interval shrinks), rarely ACCEPT_AND_END.
@@ -66,7 +66,7 @@ fn any_hit_candidates_come_in_obvhs_order_on_real_scenes() {
 
 /// The SD map's own rays (default settings, after AO pass 1) with the reservoir any-hit: every
 /// ray offers the same candidates in the same order on both traversals, so every texel's
-/// reservoir ends the same. (A 4-lane triangle test instead of obvhs' own decided one edge hit
+/// reservoir ends the same; and traced in packets of 8, as the SD map traces them, too. (A 4-lane triangle test instead of obvhs' own decided one edge hit
 /// of the kitchen's 73,349 full-resolution SD rays otherwise.)
 #[test]
 fn sd_rays_see_obvhs_order() {
@@ -109,7 +109,84 @@ fn sd_rays_see_obvhs_order() {
             assert_eq!(wide.payload, cwbvh.payload);
             candidates += a.len();
         }
+        // Packets of 8 consecutive rays, as the SD map traces them: each ray's reservoir ends
+        // as the lone ray's.
+        for (p, first) in (0..rays.payloads.len()).step_by(PACKET).enumerate() {
+            let count = (rays.payloads.len() - first).min(PACKET);
+            let ray = |k: usize| first + k.min(count - 1);
+            let directions = std::array::from_fn(|k| rays.directions[ray(k)]);
+            let interval = (&std::array::from_fn(|k| rays.t_min[ray(k)]), &std::array::from_fn(|k| rays.t_max[ray(k)]));
+            let mut hits: [SdHits; PACKET] = std::array::from_fn(|k| SdHits { payload: rays.payloads[ray(k)], alpha });
+            bvh.trace_any_hit_packet(rays.origin, &directions, interval, count, |k, t, tri, bary| {
+                AnyHit::from_decision(hits[k].decide(t, bary, tri))
+            });
+            for (k, h) in hits.iter().enumerate().take(count) {
+                let mut lone = SdHits { payload: rays.payloads[first + k], alpha };
+                let (d, t_min, t_max) = (directions[k], interval.0[k], interval.1[k]);
+                bvh.trace_any_hit(rays.origin, d, t_min, t_max, |t, tri, bary| {
+                    AnyHit::from_decision(lone.decide(t, bary, tri))
+                });
+                assert_eq!(h.payload, lone.payload, "{name}: packet {p}, SD ray {}", first + k);
+            }
+        }
         eprintln!("{name}: {} SD rays, {candidates} candidates", rays.payloads.len());
         assert!(rays.payloads.len() > 1000 && candidates > rays.payloads.len() / 2, "{name}: too few to test");
+    }
+}
+
+/// Packets ([`SceneBvh::trace_any_hit_packet`]) offer each ray exactly the candidates, in the
+/// order, and under the same answers as the lone ray (`trace_any_hit`): 8 camera rays of a row
+/// (packets across the image's middle mix octants, and split), each over its own interval —
+/// some beginning deep in the scene, some short — under any mix of IGNORE / ACCEPT /
+/// ACCEPT_AND_END answers, on real scenes.
+#[test]
+fn packets_offer_each_ray_the_lone_rays_candidates() {
+    for name in ["sponza", "kitchen"] {
+        let (scene, frame) = common::builtin_frame(name, 96, 64, 8);
+        let cpu = CpuRenderer::new(&scene);
+        let bvh = cpu.bvh();
+        let camera = &frame.camera;
+        let size = camera.view.size();
+        let eye = camera.eye();
+        let (mut packets, mut mixed, mut calls) = (0, 0, 0usize);
+        for y in 0..size.y {
+            // Packets start at shifting columns, so some straddle the image's middle.
+            for x0 in (y % 5..size.x).step_by(PACKET) {
+                let count = ((size.x - x0) as usize).min(PACKET - (y as usize % 3));
+                let pixel = |k: usize| UVec2::new(x0 + k.min(count - 1) as u32, y);
+                let directions: [Vec3; PACKET] =
+                    std::array::from_fn(|k| camera.primary_ray_direction(camera.view.pixel_uv(pixel(k))));
+                let first = |k: usize| bvh.closest_hit(eye, directions[k], 0.0, f32::INFINITY).map_or(1.0, |h| h.t);
+                // Over everything, from just before the first surface to a little behind it, or
+                // a window deep behind it.
+                let interval = |k: usize| match (k + y as usize) % 3 {
+                    0 => (0.05, f32::INFINITY),
+                    1 => (first(k) * 0.98, first(k) * 1.3),
+                    _ => (first(k) * 1.1, first(k) * 3.0),
+                };
+                let t_min = std::array::from_fn(|k| interval(k).0);
+                let t_max = std::array::from_fn(|k| interval(k).1);
+                let mix = |k: usize| (x0 as usize + k + 2 * y as usize) as u32 % 3;
+                let mut got: [Vec<(f32, u32, Vec2)>; PACKET] = Default::default();
+                bvh.trace_any_hit_packet(eye, &directions, (&t_min, &t_max), count, |k, t, tri, b| {
+                    got[k].push((t, tri, b));
+                    answer(t, tri, mix(k))
+                });
+                for k in 0..count {
+                    let mut lone = Vec::new();
+                    bvh.trace_any_hit(eye, directions[k], t_min[k], t_max[k], |t, tri, b| {
+                        lone.push((t, tri, b));
+                        answer(t, tri, mix(k))
+                    });
+                    assert_eq!(got[k], lone, "{name}: pixel {} ({}, {})", pixel(k), t_min[k], t_max[k]);
+                    calls += lone.len();
+                }
+                let octant = |d: Vec3| (d.x >= 0.0, d.y >= 0.0, d.z >= 0.0);
+                mixed += directions[..count].iter().any(|&d| octant(d) != octant(directions[0])) as u32;
+                packets += 1;
+            }
+        }
+        eprintln!("{name}: {packets} packets ({mixed} of mixed octants), {calls} candidates");
+        assert!(mixed > 0 && calls > 10 * packets as usize, "{name}: too little to test: {mixed}, {calls}");
     }
 }

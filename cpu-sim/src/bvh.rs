@@ -7,7 +7,7 @@ mod wide;
 
 pub use wide::{OriginCut, PACKET};
 
-use aokit_shaders::glam::{Vec2, Vec3, Vec3A, vec2};
+use aokit_shaders::glam::{Vec2, Vec3, Vec3A};
 use obvhs::BvhBuildParams;
 use obvhs::cwbvh::CwBvh;
 use obvhs::cwbvh::builder::build_cwbvh_from_tris;
@@ -72,7 +72,7 @@ impl SceneBvh {
         accept: impl Fn(u32, Vec2) -> bool,
     ) -> Option<Hit> {
         let (o, d) = (Vec3A::from(origin), Vec3A::from(direction));
-        let found = self.wide.closest(o, d, t_min, t_max, |id, t| self.accepts(o, d, id, t, &accept));
+        let found = self.wide.closest(o, d, t_min, t_max, |id, _| self.accepts(o, d, id, &accept));
         found.map(|(t, id)| Hit { t, triangle: self.bvh.primitive_indices[id] })
     }
 
@@ -103,15 +103,15 @@ impl SceneBvh {
     ) -> [Option<Hit>; PACKET] {
         let (o, dirs) = (Vec3A::from(origin), directions.map(Vec3A::from));
         let found =
-            self.wide.closest_packet(o, &dirs, t_min, t_max, |ray, id, t| self.accepts(o, dirs[ray], id, t, &accept));
+            self.wide.closest_packet(o, &dirs, t_min, t_max, |ray, id, _| self.accepts(o, dirs[ray], id, &accept));
         found.map(|f| f.map(|(t, id)| Hit { t, triangle: self.bvh.primitive_indices[id] }))
     }
 
-    /// Whether `accept` takes BVH primitive `id` hit at distance `t` (its barycentrics from the
-    /// hit point).
+    /// Whether `accept` takes a hit of BVH primitive `id` (its barycentrics as the triangle test
+    /// computes them).
     #[inline]
-    fn accepts(&self, origin: Vec3A, direction: Vec3A, id: usize, t: f32, accept: &impl Fn(u32, Vec2) -> bool) -> bool {
-        accept(self.bvh.primitive_indices[id], barycentrics(origin + direction * t, &self.triangles[id]))
+    fn accepts(&self, origin: Vec3A, direction: Vec3A, id: usize, accept: &impl Fn(u32, Vec2) -> bool) -> bool {
+        accept(self.bvh.primitive_indices[id], wide::obvhs_barycentrics(&self.triangles[id], origin, direction))
     }
 
     /// Is anything that `accept` accepts hit along the ray for `t ∈ (t_min, t_max)`? Stops at
@@ -128,7 +128,7 @@ impl SceneBvh {
         accept: impl Fn(u32, Vec2) -> bool,
     ) -> bool {
         let (o, d) = (Vec3A::from(origin), Vec3A::from(direction));
-        let test = |id, t| self.accepts(o, d, id, t, &accept);
+        let test = |id, _| self.accepts(o, d, id, &accept);
         CUT.with(|cut| match cut.try_borrow_mut() {
             Ok(mut cut) => self.wide.occluded_cut(&mut cut, o, d, t_min, t_max, test),
             // Re-entered from `accept` (tracing inside an alpha test): no shared cut.
@@ -146,7 +146,7 @@ impl SceneBvh {
         accept: impl Fn(u32, Vec2) -> bool,
     ) -> bool {
         let (o, d) = (Vec3A::from(origin), Vec3A::from(direction));
-        self.wide.occluded(o, d, t_min, t_max, |id, t| self.accepts(o, d, id, t, &accept))
+        self.wide.occluded(o, d, t_min, t_max, |id, _| self.accepts(o, d, id, &accept))
     }
 
     /// obvhs' own occlusion traversal of the CWBVH (the implementation before the wide
@@ -166,7 +166,7 @@ impl SceneBvh {
             if !(t > ray.tmin && t < ray.tmax) {
                 return f32::INFINITY;
             }
-            if self.accepts(ray.origin, ray.direction, id, t, &accept) { t } else { f32::INFINITY }
+            if self.accepts(ray.origin, ray.direction, id, &accept) { t } else { f32::INFINITY }
         })
     }
 
@@ -237,8 +237,28 @@ impl SceneBvh {
         mut any_hit: impl FnMut(f32, u32, Vec2) -> AnyHit,
     ) {
         let (o, d) = (Vec3A::from(origin), Vec3A::from(direction));
-        self.wide.any_hit((&self.bvh, &self.triangles), o, d, t_min, t_max, |id, t| {
-            any_hit(t, self.bvh.primitive_indices[id], barycentrics(o + d * t, &self.triangles[id]))
+        self.wide.any_hit((&self.bvh, &self.triangles), o, d, t_min, t_max, |id, t, uv| {
+            any_hit(t, self.bvh.primitive_indices[id], uv)
+        })
+    }
+
+    /// [`SceneBvh::trace_any_hit`] of the first `count` (≤ [`PACKET`]) rays of a packet from one
+    /// origin, each over its own interval, traced together ([`wide::WideBvh::any_hit_packet`]):
+    /// `any_hit(ray, t, triangle, barycentrics)` gets each ray's candidates in the order
+    /// `trace_any_hit` offers them (coherent rays, such as the SD map's, share most node tests).
+    pub fn trace_any_hit_packet(
+        &self,
+        origin: Vec3,
+        directions: &[Vec3; PACKET],
+        (t_min, t_max): (&[f32; PACKET], &[f32; PACKET]),
+        count: usize,
+        mut any_hit: impl FnMut(usize, f32, u32, Vec2) -> AnyHit,
+    ) {
+        assert!(count <= PACKET, "at most {PACKET} rays per packet");
+        let (o, dirs) = (Vec3A::from(origin), directions.map(Vec3A::from));
+        let rays = (1u32 << count) - 1;
+        self.wide.any_hit_packet((&self.bvh, &self.triangles), o, &dirs, t_min, t_max, rays, |ray, id, t, uv| {
+            any_hit(ray, t, self.bvh.primitive_indices[id], uv)
         })
     }
 
@@ -263,7 +283,7 @@ impl SceneBvh {
             if !(t > ray.tmin && t < ray.tmax) {
                 return f32::INFINITY;
             }
-            let b = barycentrics(ray.origin + ray.direction * t, tri);
+            let b = wide::obvhs_barycentrics(tri, ray.origin, ray.direction);
             match any_hit(t, self.bvh.primitive_indices[id], b) {
                 AnyHit::Ignore => f32::INFINITY,
                 AnyHit::Accept => t,
@@ -284,7 +304,11 @@ impl SceneBvh {
             let tri = &self.triangles[id];
             let t = tri.intersect(ray);
             if t > ray.tmin && t < ray.tmax {
-                hits.push((t, self.bvh.primitive_indices[id], barycentrics(ray.origin + ray.direction * t, tri)));
+                hits.push((
+                    t,
+                    self.bvh.primitive_indices[id],
+                    wide::obvhs_barycentrics(tri, ray.origin, ray.direction),
+                ));
             }
         });
         hits
@@ -310,14 +334,4 @@ pub fn replay_any_hit(
             AnyHit::AcceptAndEnd => return,
         }
     }
-}
-
-/// Barycentric weights `(b1, b2)` of `v1` and `v2` for a point `p` in the triangle's plane.
-#[inline]
-fn barycentrics(p: Vec3A, tri: &Triangle) -> Vec2 {
-    let (e1, e2, d) = (tri.v1 - tri.v0, tri.v2 - tri.v0, p - tri.v0);
-    let (d00, d01, d11) = (e1.dot(e1), e1.dot(e2), e2.dot(e2));
-    let (d20, d21) = (d.dot(e1), d.dot(e2));
-    let denom = d00 * d11 - d01 * d01;
-    vec2(d11 * d20 - d01 * d21, d00 * d21 - d01 * d20) / denom
 }

@@ -3,7 +3,7 @@
 //! AO pass 2 from the SD map, and Ray-SVAO's per-sample rays. Every per-pixel and per-hit
 //! function is the shader crate's.
 
-use crate::bvh::AnyHit;
+use crate::bvh::{AnyHit, PACKET};
 use crate::gbuffer::Surfaces;
 use crate::screen::lanes_of_run;
 use crate::{Progress, SceneBvh};
@@ -12,7 +12,7 @@ use aokit_shaders::common::gbuffer_read::{DepthSlice, GBufferSlices};
 use aokit_shaders::common::lanes::{F32x8, LaneVec3, Lanes};
 use aokit_shaders::glam::{UVec2, uvec2, vec2};
 use aokit_shaders::rastersd::raster_fragment;
-use aokit_shaders::raysd::{SdMapRefine, SdPayload, reservoir_any_hit, sd_ray, store_layers};
+use aokit_shaders::raysd::{SdMapRefine, SdPayload, SdRay, reservoir_any_hit, sd_ray, store_layers};
 use aokit_shaders::raysvao::{ACCEPT, ACCEPT_AND_END, SampleRay, SampleTracer, refine_by_ray, sample_any_hit};
 use aokit_shaders::svao::pass1::{pass1_finish, pass1_sample, record_interval};
 use aokit_shaders::svao::{Refine, Refined, SvaoFrame, SvaoParams, pass2_pixel};
@@ -122,7 +122,8 @@ pub enum HitOrder {
 }
 
 /// Trace one SD ray per SD texel (spec §7.1) with the shared reservoir any-hit (spec §7.3),
-/// alpha test included.
+/// alpha test included: a row's traced rays in packets of [`PACKET`] consecutive ones
+/// ([`SceneBvh::trace_any_hit_packet`]: each ray's candidates come as a lone ray's would).
 pub fn run_sd_map(
     bvh: &SceneBvh,
     surfaces: &Surfaces,
@@ -140,32 +141,50 @@ pub fn run_sd_map(
     let rays = AtomicU64::new(0);
     let mut layers = vec![1.0f32; (sd.x * sd.y) as usize * n];
     layers.par_chunks_mut(sd.x as usize * n).enumerate().for_each(|(y, row)| {
-        let mut traced = 0;
-        for x in 0..sd.x {
-            let q = uvec2(x, y as u32);
-            let i = params.sd_index(q);
-            let ray = sd_ray(&gbuffer, frame, q, pass1.ray_min[i], pass1.ray_max[i]);
-            let mut payload = SdPayload::new(params, view.near, view.far, ray.cos_theta);
-            if ray.traced() {
-                traced += 1;
-                let mut any_hit = |t: f32, tri: u32, b| {
-                    let accept = reservoir_any_hit(&mut payload, t, b, || surfaces.passes_alpha(tri, b));
-                    if accept { AnyHit::Accept } else { AnyHit::Ignore }
-                };
-                match order {
-                    HitOrder::Traversal => bvh.trace_any_hit(ray.origin, ray.direction, ray.t_min, ray.t_max, any_hit),
-                    HitOrder::Shuffled(seed) => {
-                        let mut hits = bvh.all_hits(ray.origin, ray.direction, ray.t_min, ray.t_max);
-                        shuffle(&mut hits, seed ^ (i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
-                        crate::bvh::replay_any_hit(&hits, ray.t_min, ray.t_max, &mut any_hit);
-                    }
+        let texel = |x: u32| uvec2(x, y as u32);
+        let texel_rays: Vec<SdRay> = (0..sd.x)
+            .map(|x| {
+                let i = params.sd_index(texel(x));
+                sd_ray(&gbuffer, frame, texel(x), pass1.ray_min[i], pass1.ray_max[i])
+            })
+            .collect();
+        let mut payloads: Vec<SdPayload> =
+            texel_rays.iter().map(|r| SdPayload::new(params, view.near, view.far, r.cos_theta)).collect();
+        let traced: Vec<usize> = (0..texel_rays.len()).filter(|&x| texel_rays[x].traced()).collect();
+        match order {
+            // The row's rays (all from the eye) in packets of PACKET consecutive ones.
+            HitOrder::Traversal => {
+                for run in traced.chunks(PACKET) {
+                    let ray = |k: usize| texel_rays[run[k.min(run.len() - 1)]];
+                    let packet: [SdRay; PACKET] = std::array::from_fn(ray);
+                    let origin = packet[0].origin;
+                    debug_assert!(packet.iter().all(|r| r.origin == origin), "SD rays start at the eye");
+                    let interval = (&packet.map(|r| r.t_min), &packet.map(|r| r.t_max));
+                    let directions = packet.map(|r| r.direction);
+                    bvh.trace_any_hit_packet(origin, &directions, interval, run.len(), |k, t, tri, b| {
+                        let accept = reservoir_any_hit(&mut payloads[run[k]], t, b, || surfaces.passes_alpha(tri, b));
+                        if accept { AnyHit::Accept } else { AnyHit::Ignore }
+                    });
                 }
             }
-            // `store_layers` indexes the whole map; write this row's slice at offset 0.
-            let row_params = SvaoParams { sd_low_res: uvec2(sd.x, 1), sd_guard: 0, ..*params };
-            store_layers(row, &row_params, uvec2(x, 0), &payload);
+            HitOrder::Shuffled(seed) => {
+                for &x in &traced {
+                    let (ray, i) = (texel_rays[x], params.sd_index(texel(x as u32)));
+                    let mut hits = bvh.all_hits(ray.origin, ray.direction, ray.t_min, ray.t_max);
+                    shuffle(&mut hits, seed ^ (i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
+                    crate::bvh::replay_any_hit(&hits, ray.t_min, ray.t_max, |t, tri, b| {
+                        let accept = reservoir_any_hit(&mut payloads[x], t, b, || surfaces.passes_alpha(tri, b));
+                        if accept { AnyHit::Accept } else { AnyHit::Ignore }
+                    });
+                }
+            }
         }
-        rays.fetch_add(traced, Ordering::Relaxed);
+        // `store_layers` indexes the whole map; write this row's slice at offset 0.
+        let row_params = SvaoParams { sd_low_res: uvec2(sd.x, 1), sd_guard: 0, ..*params };
+        for (x, payload) in payloads.iter().enumerate() {
+            store_layers(row, &row_params, uvec2(x as u32, 0), payload);
+        }
+        rays.fetch_add(traced.len() as u64, Ordering::Relaxed);
     });
     SdMap { layers, rays: rays.into_inner() }
 }

@@ -11,11 +11,12 @@
 //!   by the very same arithmetic (Möller & Trumbore 1997, in the form of
 //!   `obvhs::triangle::Triangle::intersect`): a hit is where that test hits;
 //! - closest-hit traversal visits children nearest first and drops stack entries beyond the
-//!   best hit; occlusion traversal stops at the first accepted hit;
+//!   best hit; occlusion traversal stops at the first accepted hit; any-hit traversal offers
+//!   candidates in obvhs' order, one ray at a time or as a packet of rays from one origin;
 //! - [`OriginCut`]: rays that share an origin and a length (a pixel's AO rays) start below the
 //!   BVH's top levels.
 
-use aokit_shaders::glam::Vec3A;
+use aokit_shaders::glam::{Vec2, Vec3A};
 use obvhs::cwbvh::CwBvh;
 use obvhs::triangle::Triangle;
 use std::mem::MaybeUninit;
@@ -364,7 +365,8 @@ impl Block {
     /// `t_min < t < t_max`.
     #[inline(always)]
     fn intersect(&self, ray: &RayPre, t_min: F4, t_max: F4) -> (u32, [f32; 4]) {
-        self.intersect_with::<false>(ray, t_min, t_max)
+        let (hit, t, _) = self.intersect_with::<false>(ray, t_min, t_max);
+        (hit, t)
     }
 
     /// [`Block::intersect`] with `r = d × c` rounded exactly as glam's `Vec3A::cross` rounds it
@@ -372,17 +374,22 @@ impl Block {
     /// targets FMA; the other terms, glam's `dot` (`(x + y) + z`), `1/det`, `w` and `t` are the
     /// same IEEE operations already): per lane bit for bit what obvhs' `Triangle::intersect`
     /// (as compiled here) answers, so the any-hit traversal can test four triangles at once and
-    /// keep obvhs' decisions on edges.
+    /// keep obvhs' decisions on edges. Also the hits' barycentrics `(u, v)` ([`obvhs_barycentrics`]).
     #[cfg(target_arch = "x86_64")]
     #[inline(always)]
-    fn intersect_obvhs(&self, ray: &RayPre, t_min: F4, t_max: F4) -> (u32, [f32; 4]) {
+    fn intersect_obvhs(&self, ray: &RayPre, t_min: F4, t_max: F4) -> (u32, [f32; 4], [[f32; 4]; 2]) {
         self.intersect_with::<true>(ray, t_min, t_max)
     }
 
-    /// The test of [`Block::intersect`]; `GLAM_CROSS`: `r` as [`Block::intersect_obvhs`]
-    /// rounds it.
+    /// The test of [`Block::intersect`], and `u`, `v`; `GLAM_CROSS`: `r` as
+    /// [`Block::intersect_obvhs`] rounds it.
     #[inline(always)]
-    fn intersect_with<const GLAM_CROSS: bool>(&self, ray: &RayPre, t_min: F4, t_max: F4) -> (u32, [f32; 4]) {
+    fn intersect_with<const GLAM_CROSS: bool>(
+        &self,
+        ray: &RayPre,
+        t_min: F4,
+        t_max: F4,
+    ) -> (u32, [f32; 4], [[f32; 4]; 2]) {
         let load = |a: &[[f32; 4]; 3]| [F4::load(&a[0]), F4::load(&a[1]), F4::load(&a[2])];
         let (v0, e1, e2, n) = (load(&self.v0), load(&self.e1), load(&self.e2), load(&self.n));
         let dot = |a: [F4; 3], b: [F4; 3]| a[0].mul(b[0]).add(a[1].mul(b[1])).add(a[2].mul(b[2]));
@@ -407,7 +414,7 @@ impl Block {
         let w = F4::splat(1.0).sub(u).sub(v);
         let t = dot(n, c).mul(inv_det);
         let hit = inv_det.ne(F4::splat(0.0)) & !F4::any_sign(u, v, w) & t_min.lt(t) & t.lt(t_max) & self.valid;
-        (hit, t.to_array())
+        (hit, t.to_array(), [u.to_array(), v.to_array()])
     }
 }
 
@@ -867,7 +874,7 @@ impl WideBvh {
         direction: Vec3A,
         t_min: f32,
         t_max: f32,
-        any_hit: impl FnMut(usize, f32) -> super::AnyHit,
+        any_hit: impl FnMut(usize, f32, Vec2) -> super::AnyHit,
     ) {
         #[cfg(target_arch = "x86_64")]
         if self.avx {
@@ -886,7 +893,7 @@ impl WideBvh {
         direction: Vec3A,
         t_min: f32,
         t_max: f32,
-        any_hit: impl FnMut(usize, f32) -> super::AnyHit,
+        any_hit: impl FnMut(usize, f32, Vec2) -> super::AnyHit,
     ) {
         self.any_hit_with::<Avx>((cwbvh, triangles), origin, direction, t_min, t_max, any_hit)
     }
@@ -899,7 +906,7 @@ impl WideBvh {
         direction: Vec3A,
         t_min: f32,
         t_max: f32,
-        mut any_hit: impl FnMut(usize, f32) -> super::AnyHit,
+        mut any_hit: impl FnMut(usize, f32, Vec2) -> super::AnyHit,
     ) {
         if self.root.is_none() {
             return;
@@ -909,9 +916,7 @@ impl WideBvh {
         // The blocks carry the triangles (on x86-64 they are tested there).
         #[cfg(target_arch = "x86_64")]
         let _ = triangles;
-        // obvhs' `ray_get_octant_inv4`: bit x, y, z set where not `< 0.0` (−0 counts as positive).
-        let octant =
-            [direction.x, direction.y, direction.z].iter().fold(0, |o, &d| o << 1 | u32::from(d.is_nan() || d >= 0.0));
+        let octant = octant(direction);
         let mut stack = [MaybeUninit::<u32>::uninit(); STACK];
         stack[0].write(0);
         let mut sp = 1;
@@ -976,7 +981,7 @@ impl WideBvh {
                 // distances, re-checked against `t_max` as it shrinks; elsewhere obvhs' own
                 // test, one at a time.
                 #[cfg(target_arch = "x86_64")]
-                let (mut lanes, hits) = block.intersect_obvhs(&pre, F4::splat(ray.tmin), F4::splat(ray.tmax));
+                let (mut lanes, hits, [us, vs]) = block.intersect_obvhs(&pre, F4::splat(ray.tmin), F4::splat(ray.tmax));
                 #[cfg(not(target_arch = "x86_64"))]
                 let mut lanes = block.valid;
                 while lanes != 0 {
@@ -984,11 +989,12 @@ impl WideBvh {
                     lanes &= !(1 << lane);
                     let id = block.prim[lane] as usize;
                     #[cfg(target_arch = "x86_64")]
-                    let t = hits[lane];
+                    let (t, uv) = (hits[lane], Vec2::new(us[lane], vs[lane]));
                     #[cfg(not(target_arch = "x86_64"))]
-                    let t = triangles[id].intersect(&ray);
+                    let (t, uv) =
+                        (triangles[id].intersect(&ray), obvhs_barycentrics(&triangles[id], origin, direction));
                     if t > ray.tmin && t < ray.tmax {
-                        match any_hit(id, t) {
+                        match any_hit(id, t, uv) {
                             super::AnyHit::Ignore => {}
                             super::AnyHit::Accept => ray.tmax = t,
                             super::AnyHit::AcceptAndEnd => return,
@@ -1058,50 +1064,8 @@ impl WideBvh {
         let mut best_t = [t_max; PACKET];
         let mut best = [None::<usize>; PACKET];
         let Some(mut current) = self.root else { return [None; PACKET] };
-        let o = origin.to_array();
-        // The rays' directions as lanes, and each axis' range of reciprocals.
-        let axis = |a: usize| {
-            let lanes: [f32; PACKET] = std::array::from_fn(|i| directions[i][a]);
-            // SAFETY: `lanes` holds eight f32.
-            unsafe { _mm256_loadu_ps(lanes.as_ptr()) }
-        };
-        let d = [axis(0), axis(1), axis(2)];
-        let (mut inv_lo, mut inv_hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
-        for dir in directions {
-            for a in 0..3 {
-                let inv = safe_inverse(dir[a]);
-                inv_lo[a] = inv_lo[a].min(inv);
-                inv_hi[a] = inv_hi[a].max(inv);
-            }
-        }
+        let rays = PacketRays::new(origin, directions, 0xff);
         let t_min8 = _mm256_set1_ps(t_min);
-        // The packet's entry bound into a node's eight boxes (entry ≥ it for every ray, exit ≤
-        // the far bound), over `[t_min, bound]`; empty slots (lo > hi) are never entered.
-        let node_test = |node: &Node, bound: f32| -> (u32, [f32; 8]) {
-            let (mut near, mut far) = (t_min8, _mm256_set1_ps(bound));
-            let mut valid = 0xff;
-            for a in 0..3 {
-                let oa = _mm256_set1_ps(o[a]);
-                let (ia, ib) = (_mm256_set1_ps(inv_lo[a]), _mm256_set1_ps(inv_hi[a]));
-                // SAFETY: `Node` is 32-byte aligned and every `[f32; 8]` of `bounds` sits at a
-                // multiple of 32 bytes in it.
-                let (lo, hi) =
-                    unsafe { (_mm256_load_ps(node.bounds[a][0].as_ptr()), _mm256_load_ps(node.bounds[a][1].as_ptr())) };
-                if a == 0 {
-                    valid = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(lo, hi)) as u32;
-                }
-                let (lo, hi) = (_mm256_sub_ps(lo, oa), _mm256_sub_ps(hi, oa));
-                let (p0, p1, p2, p3) =
-                    (_mm256_mul_ps(lo, ia), _mm256_mul_ps(lo, ib), _mm256_mul_ps(hi, ia), _mm256_mul_ps(hi, ib));
-                near = _mm256_max_ps(near, _mm256_min_ps(_mm256_min_ps(p0, p1), _mm256_min_ps(p2, p3)));
-                far = _mm256_min_ps(far, _mm256_max_ps(_mm256_max_ps(p0, p1), _mm256_max_ps(p2, p3)));
-            }
-            let mask = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(near, far)) as u32 & valid;
-            let mut entry = [0.0f32; 8];
-            // SAFETY: `entry` holds eight f32.
-            unsafe { _mm256_storeu_ps(entry.as_mut_ptr(), near) };
-            (mask, entry)
-        };
         let bound_of = |best_t: &[f32; PACKET]| best_t.iter().copied().fold(f32::NEG_INFINITY, f32::max);
         let mut bound = with_margin(t_max);
         let mut stack = [MaybeUninit::<(u32, f32)>::uninit(); STACK];
@@ -1109,7 +1073,10 @@ impl WideBvh {
         loop {
             if current & LEAF == 0 {
                 let node = &self.nodes[current as usize];
-                let (mask, near) = node_test(node, bound);
+                let (mask, entries) = rays.node_test(node, t_min, bound);
+                let mut near = [0.0f32; 8];
+                // SAFETY: `near` holds eight f32.
+                unsafe { _mm256_storeu_ps(near.as_mut_ptr(), entries) };
                 if let Some(child) = enter_nearest_first(node, mask, &near, &mut stack, &mut sp) {
                     current = child;
                     continue;
@@ -1120,31 +1087,11 @@ impl WideBvh {
                 while lanes != 0 {
                     let k = lanes.trailing_zeros() as usize;
                     lanes &= lanes - 1;
-                    // Block::intersect's operations, one triangle against eight ray lanes.
-                    let s = |x: f32| _mm256_set1_ps(x);
-                    let (add, sub, mul) =
-                        (|a, b| _mm256_add_ps(a, b), |a, b| _mm256_sub_ps(a, b), |a, b| _mm256_mul_ps(a, b));
-                    let c = [s(block.v0[0][k] - o[0]), s(block.v0[1][k] - o[1]), s(block.v0[2][k] - o[2])];
-                    let n = [s(block.n[0][k]), s(block.n[1][k]), s(block.n[2][k])];
-                    let e1 = [s(block.e1[0][k]), s(block.e1[1][k]), s(block.e1[2][k])];
-                    let e2 = [s(block.e2[0][k]), s(block.e2[1][k]), s(block.e2[2][k])];
-                    let dot =
-                        |a: [__m256; 3], b: [__m256; 3]| add(add(mul(a[0], b[0]), mul(a[1], b[1])), mul(a[2], b[2]));
-                    let r = [
-                        sub(mul(d[1], c[2]), mul(d[2], c[1])),
-                        sub(mul(d[2], c[0]), mul(d[0], c[2])),
-                        sub(mul(d[0], c[1]), mul(d[1], c[0])),
-                    ];
-                    let inv_det = _mm256_div_ps(s(1.0), dot(n, d));
-                    let u = mul(dot(r, e2), inv_det);
-                    let v = mul(dot(r, e1), inv_det);
-                    let w = sub(sub(s(1.0), u), v);
-                    let t = mul(dot(n, c), inv_det);
+                    let Some(([t, _, _], valid)) = rays.triangle::<false>(block, k, 0xff) else { continue };
                     // SAFETY: `best_t` holds eight f32.
                     let best8 = unsafe { _mm256_loadu_ps(best_t.as_ptr()) };
                     let bits = |m: __m256| _mm256_movemask_ps(m) as u32;
-                    let mut hit = bits(_mm256_cmp_ps::<_CMP_NEQ_UQ>(inv_det, s(0.0)))
-                        & !bits(_mm256_or_ps(u, _mm256_or_ps(v, w)))
+                    let mut hit = valid
                         & bits(_mm256_cmp_ps::<_CMP_LT_OQ>(t_min8, t))
                         & bits(_mm256_cmp_ps::<_CMP_LE_OQ>(t, best8));
                     if hit == 0 {
@@ -1180,6 +1127,313 @@ impl WideBvh {
             }
         }
     }
+}
+
+/// A packet of up to [`PACKET`] rays from one origin, prepared for the packet traversals: the
+/// directions as AVX lanes and, per axis, the range of the reciprocals of the rays in `rays`
+/// (a bit per ray).
+#[cfg(target_arch = "x86_64")]
+struct PacketRays {
+    origin: [f32; 3],
+    directions: [std::arch::x86_64::__m256; 3],
+    inv_lo: [f32; 3],
+    inv_hi: [f32; 3],
+}
+
+#[cfg(target_arch = "x86_64")]
+impl PacketRays {
+    #[target_feature(enable = "avx")]
+    #[inline]
+    fn new(origin: Vec3A, directions: &[Vec3A; PACKET], rays: u32) -> PacketRays {
+        use std::arch::x86_64::*;
+        let axis = |a: usize| {
+            let lanes: [f32; PACKET] = std::array::from_fn(|i| directions[i][a]);
+            // SAFETY: `lanes` holds eight f32.
+            unsafe { _mm256_loadu_ps(lanes.as_ptr()) }
+        };
+        let (mut inv_lo, mut inv_hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
+        for (_, dir) in directions.iter().enumerate().filter(|(i, _)| rays & (1 << i) != 0) {
+            for a in 0..3 {
+                let inv = safe_inverse(dir[a]);
+                inv_lo[a] = inv_lo[a].min(inv);
+                inv_hi[a] = inv_hi[a].max(inv);
+            }
+        }
+        PacketRays { origin: origin.to_array(), directions: [axis(0), axis(1), axis(2)], inv_lo, inv_hi }
+    }
+
+    /// The packet's slab test of a node's eight boxes over `[near, far]`: the children some
+    /// ray may enter, and a lower bound of every ray's entry distance. Interval bounds over the
+    /// reciprocals, which rounding cannot undercut (`(plane − o)·x` rounds monotonically in
+    /// `x`): a box a ray of the packet enters (by [`avx_node`]'s arithmetic) is entered here.
+    /// Empty slots (lo > hi) are never entered.
+    #[target_feature(enable = "avx")]
+    #[inline]
+    fn node_test(&self, node: &Node, near: f32, far: f32) -> (u32, std::arch::x86_64::__m256) {
+        use std::arch::x86_64::*;
+        let (mut near, mut far) = (_mm256_set1_ps(near), _mm256_set1_ps(far));
+        let mut valid = 0xff;
+        for a in 0..3 {
+            let oa = _mm256_set1_ps(self.origin[a]);
+            let (ia, ib) = (_mm256_set1_ps(self.inv_lo[a]), _mm256_set1_ps(self.inv_hi[a]));
+            // SAFETY: `Node` is 32-byte aligned and every `[f32; 8]` of `bounds` sits at a
+            // multiple of 32 bytes in it.
+            let (lo, hi) =
+                unsafe { (_mm256_load_ps(node.bounds[a][0].as_ptr()), _mm256_load_ps(node.bounds[a][1].as_ptr())) };
+            if a == 0 {
+                valid = _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(lo, hi)) as u32;
+            }
+            let (lo, hi) = (_mm256_sub_ps(lo, oa), _mm256_sub_ps(hi, oa));
+            let (p0, p1, p2, p3) =
+                (_mm256_mul_ps(lo, ia), _mm256_mul_ps(lo, ib), _mm256_mul_ps(hi, ia), _mm256_mul_ps(hi, ib));
+            near = _mm256_max_ps(near, _mm256_min_ps(_mm256_min_ps(p0, p1), _mm256_min_ps(p2, p3)));
+            far = _mm256_min_ps(far, _mm256_max_ps(_mm256_max_ps(p0, p1), _mm256_max_ps(p2, p3)));
+        }
+        (_mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(near, far)) as u32 & valid, near)
+    }
+
+    /// Triangle `k` of `block` against the eight rays by [`Block::intersect_with`]'s arithmetic
+    /// (`GLAM_CROSS` as there), so the same distances as the single-ray tests: per ray `t`, and
+    /// the rays whose hit stands before the interval check (`1/det ≠ 0`, no sign bit in `u`,
+    /// `v`, `w`). `None` where none of the rays `rays` (a bit per ray) can hit it: `u = (r·e2)/det`
+    /// takes its sign bit from `r·e2` and `det` (IEEE multiplication, zeros and underflow
+    /// included), so a ray whose `u` or `v` is negative by those signs misses before the
+    /// division.
+    #[target_feature(enable = "avx")]
+    #[inline]
+    fn triangle<const GLAM_CROSS: bool>(
+        &self,
+        block: &Block,
+        k: usize,
+        rays: u32,
+    ) -> Option<([std::arch::x86_64::__m256; 3], u32)> {
+        use std::arch::x86_64::*;
+        let s = |x: f32| _mm256_set1_ps(x);
+        let (add, sub, mul) = (|a, b| _mm256_add_ps(a, b), |a, b| _mm256_sub_ps(a, b), |a, b| _mm256_mul_ps(a, b));
+        let (o, d) = (self.origin, self.directions);
+        let c = [s(block.v0[0][k] - o[0]), s(block.v0[1][k] - o[1]), s(block.v0[2][k] - o[2])];
+        let n = [s(block.n[0][k]), s(block.n[1][k]), s(block.n[2][k])];
+        let e1 = [s(block.e1[0][k]), s(block.e1[1][k]), s(block.e1[2][k])];
+        let e2 = [s(block.e2[0][k]), s(block.e2[1][k]), s(block.e2[2][k])];
+        let dot = |a: [__m256; 3], b: [__m256; 3]| add(add(mul(a[0], b[0]), mul(a[1], b[1])), mul(a[2], b[2]));
+        // `a·b − e·f`, the first product rounded (fused as `F4::neg_mul_sub` where asked).
+        let cross_term = |a: __m256, b: __m256, e: __m256, f: __m256| {
+            #[cfg(target_feature = "fma")]
+            if GLAM_CROSS {
+                // SAFETY: the build targets FMA (`cfg(target_feature = "fma")`).
+                return unsafe { _mm256_fnmadd_ps(e, f, mul(a, b)) };
+            }
+            sub(mul(a, b), mul(e, f))
+        };
+        let r = [
+            cross_term(d[1], c[2], d[2], c[1]),
+            cross_term(d[2], c[0], d[0], c[2]),
+            cross_term(d[0], c[1], d[1], c[0]),
+        ];
+        let det = dot(n, d);
+        let (u_num, v_num) = (dot(r, e2), dot(r, e1));
+        let bits = |m: __m256| _mm256_movemask_ps(m) as u32;
+        let negative = bits(_mm256_or_ps(_mm256_xor_ps(u_num, det), _mm256_xor_ps(v_num, det)));
+        if rays & !negative == 0 {
+            return None;
+        }
+        let inv_det = _mm256_div_ps(s(1.0), det);
+        let u = mul(u_num, inv_det);
+        let v = mul(v_num, inv_det);
+        let w = sub(sub(s(1.0), u), v);
+        let t = mul(dot(n, c), inv_det);
+        Some((
+            [t, u, v],
+            bits(_mm256_cmp_ps::<_CMP_NEQ_UQ>(inv_det, s(0.0))) & !bits(_mm256_or_ps(u, _mm256_or_ps(v, w))),
+        ))
+    }
+}
+
+impl WideBvh {
+    /// [`WideBvh::any_hit`] for up to [`PACKET`] rays from one origin (`rays`: a bit per ray in
+    /// use), each over its own interval `(t_min[i], t_max[i])`, traversed together:
+    /// `any_hit(ray, primitive, t)`. Rays whose directions share an octant go down the tree as
+    /// one packet in the single ray's order (depth first; at a node its entered leaves, slots
+    /// and lanes downward, then its inner children by `slot ^ octant`, highest first), entering
+    /// every box that any of them may enter ([`PacketRays::node_test`] over the packet's widest
+    /// interval); a leaf's triangles are tested against all the rays at once by obvhs'
+    /// arithmetic ([`PacketRays::triangle`]), and each ray gets the triangles it hits inside its
+    /// current interval. So a ray's candidates come in the order [`WideBvh::any_hit`] offers
+    /// them: both follow the same fixed order of the tree's leaves, and both offer every
+    /// triangle hit inside the interval — unless rounding at a box boundary made the single
+    /// ray's (obvhs') box test skip a box holding such a hit, which this wider test enters
+    /// (tests/any_hit_order.rs finds no such ray among the SD map's rays of sponza and the
+    /// kitchen, nor among camera rays with mixed intervals and answers). Each candidate comes
+    /// with its barycentrics as the triangle test computes them ([`obvhs_barycentrics`]).
+    #[allow(clippy::too_many_arguments)]
+    #[inline]
+    pub fn any_hit_packet(
+        &self,
+        (cwbvh, triangles): (&CwBvh, &[Triangle]),
+        origin: Vec3A,
+        directions: &[Vec3A; PACKET],
+        t_min: &[f32; PACKET],
+        t_max: &[f32; PACKET],
+        rays: u32,
+        mut any_hit: impl FnMut(usize, usize, f32, Vec2) -> super::AnyHit,
+    ) {
+        #[cfg(target_arch = "x86_64")]
+        if self.avx {
+            let mut left = rays & 0xff;
+            while left != 0 {
+                let first = octant(directions[left.trailing_zeros() as usize]);
+                let group = (0..PACKET).filter(|&i| left & (1 << i) != 0 && octant(directions[i]) == first);
+                let group = group.fold(0, |m, i| m | 1 << i);
+                left &= !group;
+                // SAFETY: `avx` is set only where the CPU has AVX.
+                unsafe { self.any_hit_group_avx(origin, directions, t_min, t_max, (group, first), &mut any_hit) };
+            }
+            return;
+        }
+        for i in (0..PACKET).filter(|&i| rays & (1 << i) != 0) {
+            self.any_hit((cwbvh, triangles), origin, directions[i], t_min[i], t_max[i], |p, t, uv| {
+                any_hit(i, p, t, uv)
+            });
+        }
+    }
+
+    /// [`WideBvh::any_hit_packet`] of the rays `group` (a bit per ray), whose directions all lie
+    /// in `octant`.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    fn any_hit_group_avx(
+        &self,
+        origin: Vec3A,
+        directions: &[Vec3A; PACKET],
+        t_min: &[f32; PACKET],
+        t_max: &[f32; PACKET],
+        (group, octant): (u32, u32),
+        any_hit: &mut impl FnMut(usize, usize, f32, Vec2) -> super::AnyHit,
+    ) {
+        use std::arch::x86_64::*;
+        if self.root.is_none() {
+            return;
+        }
+        let rays = PacketRays::new(origin, directions, group);
+        let mut t_max = *t_max;
+        // SAFETY: `t_min` holds eight f32.
+        let t_min8 = unsafe { _mm256_loadu_ps(t_min.as_ptr()) };
+        let mut alive = group;
+        let in_group = |m: u32| (0..PACKET).filter(move |&i| m & (1 << i) != 0);
+        // Boxes are tested over the packet's widest interval, widened by the rounding margin as
+        // the single ray's `maybe` test.
+        let lo = in_group(group).map(|i| t_min[i]).fold(f32::INFINITY, f32::min);
+        let lo = lo - lo.abs() * MARGIN;
+        let far = |t_max: &[f32; PACKET], alive: u32| in_group(alive).map(|i| with_margin(t_max[i])).fold(lo, f32::max);
+        let mut hi = far(&t_max, alive);
+        let mut stack = [MaybeUninit::<u32>::uninit(); STACK];
+        stack[0].write(0);
+        let mut sp = 1;
+        while sp > 0 {
+            sp -= 1;
+            // SAFETY: the entries below `sp` were written.
+            let node = &self.nodes[unsafe { stack[sp].assume_init() } as usize];
+            let (entered, _) = rays.node_test(node, lo, hi);
+            // The entered children's memory is fetched at once, not miss after miss.
+            let mut fetch = entered;
+            while fetch != 0 {
+                let child = node.child[fetch.trailing_zeros() as usize];
+                fetch &= fetch - 1;
+                if child & LEAF != 0 {
+                    prefetch(&self.blocks[(child & !LEAF) as usize]);
+                } else {
+                    prefetch(&self.nodes[child as usize]);
+                }
+            }
+            let mut leaves = entered;
+            while leaves != 0 {
+                let slot = 31 - leaves.leading_zeros() as usize;
+                leaves &= !(1 << slot);
+                let child = node.child[slot];
+                if child & LEAF == 0 {
+                    continue;
+                }
+                let block = &self.blocks[(child & !LEAF) as usize];
+                let mut lanes = block.valid;
+                while lanes != 0 {
+                    let lane = 31 - lanes.leading_zeros() as usize;
+                    lanes &= !(1 << lane);
+                    let Some(([t, u, v], valid)) = rays.triangle::<true>(block, lane, alive) else { continue };
+                    // SAFETY: `t_max` holds eight f32.
+                    let t_max8 = unsafe { _mm256_loadu_ps(t_max.as_ptr()) };
+                    let within =
+                        _mm256_and_ps(_mm256_cmp_ps::<_CMP_LT_OQ>(t_min8, t), _mm256_cmp_ps::<_CMP_LT_OQ>(t, t_max8));
+                    let mut hit = valid & alive & _mm256_movemask_ps(within) as u32;
+                    if hit == 0 {
+                        continue;
+                    }
+                    let (mut ts, mut us, mut vs) = ([0.0f32; 8], [0.0f32; 8], [0.0f32; 8]);
+                    // SAFETY: each holds eight f32.
+                    unsafe { (_mm256_storeu_ps(ts.as_mut_ptr(), t), _mm256_storeu_ps(us.as_mut_ptr(), u)) };
+                    // SAFETY: as above.
+                    unsafe { _mm256_storeu_ps(vs.as_mut_ptr(), v) };
+                    let prim = block.prim[lane] as usize;
+                    while hit != 0 {
+                        let ray = hit.trailing_zeros() as usize;
+                        hit &= hit - 1;
+                        match any_hit(ray, prim, ts[ray], Vec2::new(us[ray], vs[ray])) {
+                            super::AnyHit::Ignore => continue,
+                            super::AnyHit::Accept => t_max[ray] = ts[ray],
+                            super::AnyHit::AcceptAndEnd => alive &= !(1 << ray),
+                        }
+                        hi = far(&t_max, alive);
+                    }
+                }
+            }
+            if alive == 0 {
+                return;
+            }
+            // Inner children by `slot ^ octant`: pushed lowest first, so the highest pops first.
+            for k in 0..8 {
+                let slot = (k ^ octant) as usize;
+                let child = node.child[slot];
+                if entered & (1 << slot) != 0 && child & LEAF == 0 {
+                    stack[sp].write(child);
+                    sp += 1;
+                }
+            }
+        }
+    }
+}
+
+/// The barycentrics `(u, v)` of a hit of `tri` (the weights of its second and third corner) as
+/// obvhs' `Triangle::intersect` computes them on the way to the distance (Möller & Trumbore
+/// 1997, with `e1 = v0 − v1`, `e2 = v2 − v0`: `u = ((d × c)·e2)/(n·d)`, `v = ((d × c)·e1)/(n·d)`,
+/// `c = v0 − o`), bit for bit what the block and packet tests report.
+#[inline]
+pub fn obvhs_barycentrics(tri: &Triangle, origin: Vec3A, direction: Vec3A) -> Vec2 {
+    let (e1, e2) = (tri.v0 - tri.v1, tri.v2 - tri.v0);
+    let n = e1.cross(e2);
+    let r = direction.cross(tri.v0 - origin);
+    let inv_det = 1.0 / n.dot(direction);
+    Vec2::new(r.dot(e2) * inv_det, r.dot(e1) * inv_det)
+}
+
+/// Ask the CPU to bring `value`'s cache lines into its caches (a hint; nothing on other
+/// architectures).
+#[inline(always)]
+fn prefetch<T>(value: &T) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_MM_HINT_T0, _mm_prefetch};
+        let start = value as *const T as *const i8;
+        for line in (0..std::mem::size_of::<T>()).step_by(64) {
+            // SAFETY: a prefetch never faults; the address lies inside `value`.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>(start.wrapping_add(line)) };
+        }
+    }
+}
+
+/// obvhs' `ray_get_octant_inv4`: bit 2 / 1 / 0 set where the direction's x / y / z is not
+/// `< 0.0` (−0 counts as positive).
+#[inline(always)]
+fn octant(direction: Vec3A) -> u32 {
+    [direction.x, direction.y, direction.z].iter().fold(0, |o, &d| o << 1 | u32::from(d.is_nan() || d >= 0.0))
 }
 
 /// How far beyond the best hit so far the closest-hit traversals still enter boxes: a relative
@@ -1539,7 +1793,7 @@ mod tests {
                 let d = (target - o).normalize();
                 let (t_min, t_max) = if k % 4 == 0 { (0.01, 1.2) } else { (0.0, f32::INFINITY) };
                 let pre = RayPre::new(o, d);
-                let (mask, ts) = block.intersect_obvhs(&pre, F4::splat(t_min), F4::splat(t_max));
+                let (mask, ts, [us, vs]) = block.intersect_obvhs(&pre, F4::splat(t_min), F4::splat(t_max));
                 let (plain, _) = block.intersect(&pre, F4::splat(t_min), F4::splat(t_max));
                 plain_differs += (plain != mask) as u32;
                 for (lane, tri) in chunk.iter().enumerate() {
@@ -1547,6 +1801,15 @@ mod tests {
                     let expect = (t > t_min && t < t_max).then_some(t.to_bits());
                     let got = (mask & 1 << lane != 0).then_some(ts[lane].to_bits());
                     assert_eq!(got, expect, "lane {lane}, ray {o} {d} [{t_min}, {t_max}]");
+                    if expect.is_some() {
+                        // The barycentrics come from the same arithmetic, and weigh the corners
+                        // to the hit point.
+                        let uv = obvhs_barycentrics(tri, o, d);
+                        assert_eq!((us[lane].to_bits(), vs[lane].to_bits()), (uv.x.to_bits(), uv.y.to_bits()));
+                        let p = tri.v0 * (1.0 - uv.x - uv.y) + tri.v1 * uv.x + tri.v2 * uv.y;
+                        let scale = 1.0 + tri.v0.abs().max(tri.v1.abs()).max(tri.v2.abs()).max_element();
+                        assert!((p - (o + d * t)).length() < 1e-3 * scale, "weights of v0, v1, v2: {uv}");
+                    }
                     hits += expect.is_some() as u32;
                 }
             }
