@@ -156,7 +156,8 @@ pub fn trace_occluded(
     out: &mut [u8],
 ) {
     assert_eq!(out.len(), rays.len(), "one answer per ray");
-    let accept = |tri: u32, b| alpha == Alpha::Off || surfaces.passes_alpha(tri, b);
+    let tables = alpha_tables(surfaces, alpha);
+    let accept = |tri: u32, b| tables.passes(tri, b);
     out.par_chunks_mut(CHUNK).with_max_len(1).enumerate().for_each(|(c, chunk)| {
         let base = c * CHUNK;
         for (i, o) in chunk.iter_mut().enumerate() {
@@ -330,12 +331,7 @@ pub fn sample_rays(frame: &SvaoFrame, gbuffer: &GBufferImage, pass1: &Pass1) -> 
 /// The alpha tables of `surfaces`, or none (every triangle opaque) with `Alpha::Off`.
 fn alpha_tables<'a>(surfaces: &'a Surfaces, alpha: Alpha) -> AlphaTables<'a> {
     match alpha {
-        Alpha::On => AlphaTables {
-            uvs: surfaces.uvs.as_flattened(),
-            materials: surfaces.materials,
-            headers: surfaces.mask_headers,
-            texels: surfaces.mask_texels,
-        },
+        Alpha::On => surfaces.alpha(),
         Alpha::Off => AlphaTables { uvs: &[], materials: &[], headers: &[], texels: &[] },
     }
 }

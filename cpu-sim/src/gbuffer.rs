@@ -3,7 +3,7 @@
 
 use crate::bvh::packet_tiles;
 use crate::{Progress, SceneBvh};
-use aokit_shaders::common::alpha::{AlphaMaskHeader, triangle_alpha_passes};
+use aokit_shaders::common::alpha::{AlphaMaskHeader, AlphaTables, triangle_alpha_passes};
 use aokit_shaders::common::camera::Camera;
 use aokit_shaders::common::normal_codec::encode_normal;
 use aokit_shaders::glam::{UVec2, Vec2, Vec3};
@@ -33,6 +33,22 @@ pub struct Surfaces<'a> {
 }
 
 impl Surfaces<'_> {
+    /// The alpha tables the kernels' any-hit decisions read; empty where no material has a
+    /// mask, so that a candidate's alpha test (which every triangle then passes) reads no
+    /// memory: the per-triangle materials and uvs are scattered reads, a cache miss per
+    /// candidate on a large scene. Take them once per pass, not per candidate.
+    pub fn alpha(&self) -> AlphaTables<'_> {
+        if self.mask_headers.iter().all(|h| h.width == 0 || h.height == 0) {
+            return AlphaTables { uvs: &[], materials: &[], headers: &[], texels: &[] };
+        }
+        AlphaTables {
+            uvs: self.uvs.as_flattened(),
+            materials: self.materials,
+            headers: self.mask_headers,
+            texels: self.mask_texels,
+        }
+    }
+
     /// Alpha test of triangle `tri` at barycentrics `b` (weights of its 2nd and 3rd corner).
     pub fn passes_alpha(&self, tri: u32, b: Vec2) -> bool {
         triangle_alpha_passes(self.uvs.as_flattened(), self.materials, self.mask_headers, self.mask_texels, tri, b)
@@ -42,6 +58,7 @@ impl Surfaces<'_> {
 /// Cast one primary ray per pixel centre; alpha-masked surfaces are skipped where cut out.
 pub fn ray_cast_gbuffer(bvh: &SceneBvh, surfaces: &Surfaces, camera: &Camera, progress: Progress) -> GBufferImage {
     let masked = surfaces.mask_headers.iter().any(|h| h.width > 0);
+    let alpha = surfaces.alpha();
     let size = camera.view.size();
     let eye = camera.eye();
     let far = camera.view.far;
@@ -57,7 +74,7 @@ pub fn ray_cast_gbuffer(bvh: &SceneBvh, surfaces: &Surfaces, camera: &Camera, pr
             for tile in packet_tiles(size.x as usize, rows) {
                 let dirs = tile.map(|i| camera.primary_ray_direction(camera.view.pixel_uv(pixel(i))));
                 let hits = if masked {
-                    bvh.closest_accepted_hits(eye, &dirs, 0.0, f32::INFINITY, |tri, b| surfaces.passes_alpha(tri, b))
+                    bvh.closest_accepted_hits(eye, &dirs, 0.0, f32::INFINITY, |tri, b| alpha.passes(tri, b))
                 } else {
                     bvh.closest_hits(eye, &dirs, 0.0, f32::INFINITY)
                 };
@@ -92,6 +109,7 @@ pub fn ray_cast_second_layer(
     let size = camera.view.size();
     let far = camera.view.far;
     let eye = camera.eye();
+    let alpha = surfaces.alpha();
     let mut depth2 = vec![far; (size.x * size.y) as usize];
     depth2.par_chunks_mut(size.x as usize).enumerate().for_each(|(y, row)| {
         for (x, out) in row.iter_mut().enumerate() {
@@ -103,7 +121,7 @@ pub fn ray_cast_second_layer(
             let dir = camera.primary_ray_direction(camera.view.pixel_uv(p));
             let cos = camera.linear_depth_of_hit(dir, 1.0);
             let t_min = (d1 + separation) / cos;
-            let hit = bvh.closest_accepted_hit(eye, dir, t_min, f32::INFINITY, |tri, b| surfaces.passes_alpha(tri, b));
+            let hit = bvh.closest_accepted_hit(eye, dir, t_min, f32::INFINITY, |tri, b| alpha.passes(tri, b));
             if let Some(h) = hit {
                 let d = camera.linear_depth_of_hit(dir, h.t);
                 if d < far {

@@ -3,21 +3,23 @@
 
 use crate::gbuffer::{GBufferImage, Surfaces};
 use crate::{Progress, SceneBvh};
+use aokit_shaders::common::alpha::AlphaTables;
 use aokit_shaders::common::gbuffer_read::GBufferSlices;
 use aokit_shaders::glam::{Vec3, uvec2};
 use aokit_shaders::groundtruth::{GroundTruthFrame, OcclusionQuery, ground_truth_pixel};
 use rayon::prelude::*;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-/// BVH occlusion rays for the shared ground-truth kernel.
+/// BVH occlusion rays for the shared ground-truth kernel, the alpha test included
+/// ([`Surfaces::alpha`]).
 pub(crate) struct BvhOcclusion<'a> {
     pub(crate) bvh: &'a SceneBvh,
-    pub(crate) surfaces: &'a Surfaces<'a>,
+    pub(crate) alpha: AlphaTables<'a>,
 }
 
 impl OcclusionQuery for BvhOcclusion<'_> {
     fn occluded(&mut self, origin: Vec3, direction: Vec3, t_max: f32) -> bool {
-        self.bvh.occluded(origin, direction, 0.0, t_max, |tri, b| self.surfaces.passes_alpha(tri, b))
+        self.bvh.occluded(origin, direction, 0.0, t_max, |tri, b| self.alpha.passes(tri, b))
     }
 }
 
@@ -41,7 +43,7 @@ pub fn run_ground_truth(
         if y < guard || y + guard >= size.y {
             return;
         }
-        let mut rays = BvhOcclusion { bvh, surfaces };
+        let mut rays = BvhOcclusion { bvh, alpha: surfaces.alpha() };
         let mut traced = 0;
         for x in guard..size.x - guard {
             let out = ground_truth_pixel(&slices, frame, uvec2(x, y), &mut rays);

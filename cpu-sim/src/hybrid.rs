@@ -22,7 +22,7 @@ pub fn run_hybrid(
     let pixels: Vec<_> = (0..size.y)
         .into_par_iter()
         .flat_map_iter(|y| (0..size.x).map(move |x| uvec2(x, y)))
-        .map_init(|| BvhOcclusion { bvh, surfaces }, |rays, p| hybrid_pixel(&gbuffer, frame, p, rays))
+        .map_init(|| BvhOcclusion { bvh, alpha: surfaces.alpha() }, |rays, p| hybrid_pixel(&gbuffer, frame, p, rays))
         .collect();
     let ao = pixels.iter().map(|o| o.ao).collect();
     let terms = pixels.iter().map(|o| o.term).collect();

@@ -7,6 +7,7 @@ use crate::bvh::{AnyHit, PACKET};
 use crate::gbuffer::Surfaces;
 use crate::screen::lanes_of_run;
 use crate::{Progress, SceneBvh};
+use aokit_shaders::common::alpha::AlphaTables;
 use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
 use aokit_shaders::common::gbuffer_read::{DepthSlice, GBufferSlices};
 use aokit_shaders::common::lanes::{F32x8, LaneVec3, Lanes};
@@ -138,6 +139,7 @@ pub fn run_sd_map(
     let sd = params.sd_size();
     let n = params.sd_layers as usize;
     let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
+    let alpha = surfaces.alpha();
     let rays = AtomicU64::new(0);
     let mut layers = vec![1.0f32; (sd.x * sd.y) as usize * n];
     layers.par_chunks_mut(sd.x as usize * n).enumerate().for_each(|(y, row)| {
@@ -162,7 +164,7 @@ pub fn run_sd_map(
                     let interval = (&packet.map(|r| r.t_min), &packet.map(|r| r.t_max));
                     let directions = packet.map(|r| r.direction);
                     bvh.trace_any_hit_packet(origin, &directions, interval, run.len(), |k, t, tri, b| {
-                        let accept = reservoir_any_hit(&mut payloads[run[k]], t, b, || surfaces.passes_alpha(tri, b));
+                        let accept = reservoir_any_hit(&mut payloads[run[k]], t, b, || alpha.passes(tri, b));
                         if accept { AnyHit::Accept } else { AnyHit::Ignore }
                     });
                 }
@@ -173,7 +175,7 @@ pub fn run_sd_map(
                     let mut hits = bvh.all_hits(ray.origin, ray.direction, ray.t_min, ray.t_max);
                     shuffle(&mut hits, seed ^ (i as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15));
                     crate::bvh::replay_any_hit(&hits, ray.t_min, ray.t_max, |t, tri, b| {
-                        let accept = reservoir_any_hit(&mut payloads[x], t, b, || surfaces.passes_alpha(tri, b));
+                        let accept = reservoir_any_hit(&mut payloads[x], t, b, || alpha.passes(tri, b));
                         if accept { AnyHit::Accept } else { AnyHit::Ignore }
                     });
                 }
@@ -253,7 +255,7 @@ pub fn run_pass2_sd(
 /// into `rays` when dropped.
 struct BvhRefine<'a> {
     bvh: &'a SceneBvh,
-    surfaces: &'a Surfaces<'a>,
+    alpha: AlphaTables<'a>,
     frame: &'a SvaoFrame,
     traced: u64,
     rays: &'a AtomicU64,
@@ -263,9 +265,9 @@ impl SampleTracer for BvhRefine<'_> {
     fn trace(&mut self, ray: &mut SampleRay) {
         self.traced += 1;
         let state = &mut ray.state;
-        let surfaces = self.surfaces;
+        let alpha = self.alpha;
         self.bvh.trace_any_hit(ray.origin, ray.direction, ray.t_min, ray.t_max, |t, tri, b| {
-            if !surfaces.passes_alpha(tri, b) {
+            if !alpha.passes(tri, b) {
                 return AnyHit::Ignore;
             }
             match sample_any_hit(state, t) {
@@ -304,7 +306,7 @@ pub fn run_raysvao_pass2(
     let rays = AtomicU64::new(0);
     let ao = run_pass2(&frame.params, depth, normals, depth2, pass1, &crate::no_progress, || BvhRefine {
         bvh,
-        surfaces,
+        alpha: surfaces.alpha(),
         frame,
         traced: 0,
         rays: &rays,
