@@ -8,7 +8,7 @@
 
 use crate::scene::Scene;
 use aokit_cpu::bvh::{AnyHit, Hit, PACKET, packet_tiles};
-use aokit_cpu::svao::Pass1;
+use aokit_cpu::svao::{Pass1, SD_TILE, sd_band_order};
 use aokit_cpu::{GBufferImage, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaTables;
 use aokit_shaders::common::any_hit::CandidateHit;
@@ -261,16 +261,19 @@ pub fn svao_pass1(frame: &SvaoFrame, gbuffer: &GBufferImage) -> Pass1 {
     aokit_cpu::svao::run_pass1(&frame.params, &gbuffer.depth, &gbuffer.normals, &far, &aokit_cpu::no_progress)
 }
 
-/// The SD rays of `frame` (`Secondary::StochasticDepth`) after `pass1`, row by row.
+/// The SD rays of `frame` (`Secondary::StochasticDepth`) after `pass1`, in the order the SD map
+/// traces them (`aokit_cpu::svao::sd_band_order`): consecutive rays make its packets.
 pub fn sd_rays(frame: &SvaoFrame, gbuffer: &GBufferImage, pass1: &Pass1) -> SdRays {
     let params = &frame.params;
     let view = &params.vao.view;
     let sd = params.sd_size();
     let slices = GBufferSlices { depth: &gbuffer.depth, normals: &gbuffer.normals, width: gbuffer.width };
     let mut out = SdRays { origin: frame.camera.eye(), ..Default::default() };
-    for y in 0..sd.y {
-        for x in 0..sd.x {
-            let q = uvec2(x, y);
+    // Band by band in the order the SD map traces its texels (tiles of SD_TILE).
+    let bands = (0..sd.y).step_by(SD_TILE.y as usize);
+    for y0 in bands {
+        for q in sd_band_order(sd.x, SD_TILE.y.min(sd.y - y0)) {
+            let q = q + uvec2(0, y0);
             let i = params.sd_index(q);
             let ray = sd_ray(&slices, frame, q, pass1.ray_min[i], pass1.ray_max[i]);
             if ray.traced() {

@@ -190,3 +190,41 @@ fn packets_offer_each_ray_the_lone_rays_candidates() {
         assert!(mixed > 0 && calls > 10 * packets as usize, "{name}: too little to test: {mixed}, {calls}");
     }
 }
+
+/// The SD map as the renderer traces it (`run_sd_map`: bands of 2×4-texel tiles, packets) holds
+/// in every texel exactly the depths of its ray traced alone (`trace_sd` with lone rays), and
+/// the far plane (1) where no ray was traced.
+#[test]
+fn sd_map_of_packets_is_the_map_of_lone_rays() {
+    use aokit::rays::{Alpha, Tracer, sd_rays, svao_pass1, trace_sd};
+    use aokit::technique::SdOptions;
+    use aokit_cpu::svao::{HitOrder, run_sd_map};
+    use aokit_shaders::svao::Secondary;
+    // 30 SD rows: the last band is cut short.
+    let (scene, frame) = common::builtin_frame("sponza", 224, 104, 8);
+    let cpu = CpuRenderer::new(&scene);
+    let (bvh, surfaces) = (cpu.bvh(), cpu.surfaces());
+    let (gbuffer, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
+    let sd_frame = SdOptions::default().frame(&frame.desc(), Secondary::StochasticDepth);
+    let pass1 = svao_pass1(&sd_frame, &gbuffer);
+    let map = run_sd_map(bvh, &surfaces, &sd_frame, &gbuffer.depth, &gbuffer.normals, &pass1, HitOrder::Traversal);
+    let rays = sd_rays(&sd_frame, &gbuffer, &pass1);
+    let mut lone = rays.payloads.clone();
+    trace_sd(bvh, &surfaces, &rays, Alpha::On, Tracer::Wide, &mut lone);
+    let n = sd_frame.params.sd_layers as usize;
+    let mut expect = vec![1.0f32; map.layers.len()];
+    for (k, payload) in lone.iter().enumerate() {
+        let i = rays.texels[k] as usize;
+        expect[i * n..(i + 1) * n].copy_from_slice(&payload.depth[..n]);
+    }
+    assert_eq!(sd_frame.params.sd_size().y % 4, 2, "a short last band");
+    assert_eq!(map.rays as usize, rays.payloads.len());
+    let filled = expect.iter().filter(|&&d| d < 1.0).count();
+    assert!(filled > 1000, "too few stored depths to test: {filled}");
+    assert!(
+        map.layers == expect,
+        "{} of {} depths differ",
+        map.layers.iter().zip(&expect).filter(|(a, b)| a != b).count(),
+        expect.len()
+    );
+}
