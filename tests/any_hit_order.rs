@@ -22,15 +22,19 @@ fn answer(t: f32, tri: u32, mix: u32) -> AnyHit {
     }
 }
 
+/// A built-in scene's CPU renderer and a 96×64 frame of it (8-pixel guard band).
+fn small_frame(name: &str) -> (CpuRenderer, aokit::frame::Frame) {
+    let (scene, frame) = common::builtin_frame(name, 96, 64, 8);
+    (CpuRenderer::new(&scene), frame)
+}
+
 #[test]
 fn any_hit_candidates_come_in_obvhs_order_on_real_scenes() {
     for name in ["sponza", "kitchen"] {
-        let (scene, frame) = common::builtin_frame(name, 96, 64, 8);
-        let cpu = CpuRenderer::new(&scene);
+        let (cpu, frame) = small_frame(name);
         let bvh = cpu.bvh();
         let camera = &frame.camera;
-        let size = camera.view.size();
-        let eye = camera.eye();
+        let (size, eye) = (camera.view.size(), camera.eye());
         let (mut rays, mut calls, mut accepted) = (0, 0usize, 0usize);
         for y in 0..size.y {
             for x in 0..size.x {
@@ -142,12 +146,10 @@ fn sd_rays_see_obvhs_order() {
 #[test]
 fn packets_offer_each_ray_the_lone_rays_candidates() {
     for name in ["sponza", "kitchen"] {
-        let (scene, frame) = common::builtin_frame(name, 96, 64, 8);
-        let cpu = CpuRenderer::new(&scene);
+        let (cpu, frame) = small_frame(name);
         let bvh = cpu.bvh();
         let camera = &frame.camera;
-        let size = camera.view.size();
-        let eye = camera.eye();
+        let (size, eye) = (camera.view.size(), camera.eye());
         let (mut packets, mut mixed, mut calls) = (0, 0, 0usize);
         for y in 0..size.y {
             // Packets start at shifting columns, so some straddle the image's middle.

@@ -190,6 +190,44 @@ struct Node {
     child: [u32; 8],
 }
 
+/// obvhs' order of a node's children (`CwBvh::ray_traverse`), which the any-hit traversals
+/// keep: first the leaves, highest primitive first — a later slot holds later primitives
+/// (checked at build), so slots downward, each block's lanes downward — then the inner children
+/// by `slot ^ octant` (obvhs' hit bit 24 + that), highest first.
+impl Node {
+    /// The blocks of the leaves among the children `slots` (a bit per slot), in that order.
+    #[inline(always)]
+    fn leaves_in_order(&self, slots: u32) -> impl Iterator<Item = u32> + '_ {
+        bits_downward(slots).map(|slot| self.child[slot]).filter(|c| c & LEAF != 0).map(|c| c & !LEAF)
+    }
+
+    /// Push the inner children among `slots` onto the stack above `sp`, lowest first, so that
+    /// they pop in that order.
+    #[inline(always)]
+    fn push_inner_in_order(&self, slots: u32, octant: u32, stack: &mut [MaybeUninit<u32>; STACK], sp: &mut usize) {
+        for k in 0..8 {
+            let slot = (k ^ octant) as usize;
+            let child = self.child[slot];
+            if slots & (1 << slot) != 0 && child & LEAF == 0 {
+                stack[*sp].write(child);
+                *sp += 1;
+            }
+        }
+    }
+}
+
+/// The set bits of `mask`, highest first.
+#[inline(always)]
+fn bits_downward(mut mask: u32) -> impl Iterator<Item = usize> {
+    std::iter::from_fn(move || {
+        (mask != 0).then(|| {
+            let bit = 31 - mask.leading_zeros() as usize;
+            mask &= !(1 << bit);
+            bit
+        })
+    })
+}
+
 const EMPTY_NODE: Node = Node { bounds: [[[f32::INFINITY; 8], [f32::NEG_INFINITY; 8]]; 3], child: [0; 8] };
 
 /// Up to four triangles as SoA lanes: a corner and the values obvhs' test derives from the
@@ -965,28 +1003,17 @@ impl WideBvh {
             if beyond == 0 {
                 continue;
             }
-            // Leaves: a later slot holds later primitives (checked at build), so obvhs' order
-            // (highest primitive first) is slots downward, lanes downward.
-            let mut leaves = beyond;
-            while leaves != 0 {
-                let slot = 31 - leaves.leading_zeros() as usize;
-                leaves &= !(1 << slot);
-                let child = node.child[slot];
-                if child & LEAF == 0 {
-                    continue;
-                }
-                let block = &self.blocks[(child & !LEAF) as usize];
+            for leaf in node.leaves_in_order(beyond) {
+                let block = &self.blocks[leaf as usize];
                 // On x86-64 the block's four triangles at once, by obvhs' arithmetic to the bit
                 // (`Block::intersect_obvhs`): the lanes hit in `(t_min, t_max)` with their
                 // distances, re-checked against `t_max` as it shrinks; elsewhere obvhs' own
                 // test, one at a time.
                 #[cfg(target_arch = "x86_64")]
-                let (mut lanes, hits, [us, vs]) = block.intersect_obvhs(&pre, F4::splat(ray.tmin), F4::splat(ray.tmax));
+                let (lanes, hits, [us, vs]) = block.intersect_obvhs(&pre, F4::splat(ray.tmin), F4::splat(ray.tmax));
                 #[cfg(not(target_arch = "x86_64"))]
-                let mut lanes = block.valid;
-                while lanes != 0 {
-                    let lane = 31 - lanes.leading_zeros() as usize;
-                    lanes &= !(1 << lane);
+                let lanes = block.valid;
+                for lane in bits_downward(lanes) {
                     let id = block.prim[lane] as usize;
                     #[cfg(target_arch = "x86_64")]
                     let (t, uv) = (hits[lane], Vec2::new(us[lane], vs[lane]));
@@ -1002,16 +1029,7 @@ impl WideBvh {
                     }
                 }
             }
-            // Inner children by `slot ^ octant` (obvhs' hit bit 24 + that): pushed lowest
-            // first, so the highest pops first.
-            for k in 0..8 {
-                let slot = (k ^ octant) as usize;
-                let child = node.child[slot];
-                if beyond & (1 << slot) != 0 && child & LEAF == 0 {
-                    stack[sp].write(child);
-                    sp += 1;
-                }
-            }
+            node.push_inner_in_order(beyond, octant, &mut stack, &mut sp);
         }
     }
 }
@@ -1345,19 +1363,9 @@ impl WideBvh {
                     prefetch(&self.nodes[child as usize]);
                 }
             }
-            let mut leaves = entered;
-            while leaves != 0 {
-                let slot = 31 - leaves.leading_zeros() as usize;
-                leaves &= !(1 << slot);
-                let child = node.child[slot];
-                if child & LEAF == 0 {
-                    continue;
-                }
-                let block = &self.blocks[(child & !LEAF) as usize];
-                let mut lanes = block.valid;
-                while lanes != 0 {
-                    let lane = 31 - lanes.leading_zeros() as usize;
-                    lanes &= !(1 << lane);
+            for leaf in node.leaves_in_order(entered) {
+                let block = &self.blocks[leaf as usize];
+                for lane in bits_downward(block.valid) {
                     let Some(([t, u, v], valid)) = rays.triangle::<true>(block, lane, alive) else { continue };
                     // SAFETY: `t_max` holds eight f32.
                     let t_max8 = unsafe { _mm256_loadu_ps(t_max.as_ptr()) };
@@ -1388,15 +1396,7 @@ impl WideBvh {
             if alive == 0 {
                 return;
             }
-            // Inner children by `slot ^ octant`: pushed lowest first, so the highest pops first.
-            for k in 0..8 {
-                let slot = (k ^ octant) as usize;
-                let child = node.child[slot];
-                if entered & (1 << slot) != 0 && child & LEAF == 0 {
-                    stack[sp].write(child);
-                    sp += 1;
-                }
-            }
+            node.push_inner_in_order(entered, octant, &mut stack, &mut sp);
         }
     }
 }
