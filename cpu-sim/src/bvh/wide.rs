@@ -195,10 +195,13 @@ struct Node {
 /// (checked at build), so slots downward, each block's lanes downward — then the inner children
 /// by `slot ^ octant` (obvhs' hit bit 24 + that), highest first.
 impl Node {
-    /// The blocks of the leaves among the children `slots` (a bit per slot), in that order.
+    /// The leaves among the children `slots` (a bit per slot), in that order: slot and block.
     #[inline(always)]
-    fn leaves_in_order(&self, slots: u32) -> impl Iterator<Item = u32> + '_ {
-        bits_downward(slots).map(|slot| self.child[slot]).filter(|c| c & LEAF != 0).map(|c| c & !LEAF)
+    fn leaves_in_order(&self, slots: u32) -> impl Iterator<Item = (usize, u32)> + '_ {
+        bits_downward(slots)
+            .map(|slot| (slot, self.child[slot]))
+            .filter(|c| c.1 & LEAF != 0)
+            .map(|(s, c)| (s, c & !LEAF))
     }
 
     /// Push the inner children among `slots` onto the stack above `sp`, lowest first, so that
@@ -1003,7 +1006,7 @@ impl WideBvh {
             if beyond == 0 {
                 continue;
             }
-            for leaf in node.leaves_in_order(beyond) {
+            for (_, leaf) in node.leaves_in_order(beyond) {
                 let block = &self.blocks[leaf as usize];
                 // On x86-64 the block's four triangles at once, by obvhs' arithmetic to the bit
                 // (`Block::intersect_obvhs`): the lanes hit in `(t_min, t_max)` with their
@@ -1154,6 +1157,8 @@ impl WideBvh {
 struct PacketRays {
     origin: [f32; 3],
     directions: [std::arch::x86_64::__m256; 3],
+    /// Per ray, obvhs' safe reciprocal of the direction.
+    inv: [std::arch::x86_64::__m256; 3],
     inv_lo: [f32; 3],
     inv_hi: [f32; 3],
 }
@@ -1177,7 +1182,18 @@ impl PacketRays {
                 inv_hi[a] = inv_hi[a].max(inv);
             }
         }
-        PacketRays { origin: origin.to_array(), directions: [axis(0), axis(1), axis(2)], inv_lo, inv_hi }
+        let inv = |a: usize| {
+            let lanes: [f32; PACKET] = std::array::from_fn(|i| safe_inverse(directions[i][a]));
+            // SAFETY: `lanes` holds eight f32.
+            unsafe { _mm256_loadu_ps(lanes.as_ptr()) }
+        };
+        PacketRays {
+            origin: origin.to_array(),
+            directions: [axis(0), axis(1), axis(2)],
+            inv: [inv(0), inv(1), inv(2)],
+            inv_lo,
+            inv_hi,
+        }
     }
 
     /// The packet's slab test of a node's eight boxes over `[near, far]`: the children some
@@ -1208,6 +1224,30 @@ impl PacketRays {
             far = _mm256_min_ps(far, _mm256_max_ps(_mm256_max_ps(p0, p1), _mm256_max_ps(p2, p3)));
         }
         (_mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(near, far)) as u32 & valid, near)
+    }
+
+    /// The rays (a bit per ray) whose own slab test enters child `slot`'s box of `node` over
+    /// their own intervals `[near, far]` (lanes): per ray the values [`avx_node`] computes for
+    /// it (the same subtractions and products; of a slab's two distances the smaller is the one
+    /// it takes as the near plane's).
+    #[target_feature(enable = "avx")]
+    #[inline]
+    fn box_rays(
+        &self,
+        node: &Node,
+        slot: usize,
+        mut near: std::arch::x86_64::__m256,
+        mut far: std::arch::x86_64::__m256,
+    ) -> u32 {
+        use std::arch::x86_64::*;
+        for a in 0..3 {
+            let (lo, hi) = (node.bounds[a][0][slot] - self.origin[a], node.bounds[a][1][slot] - self.origin[a]);
+            let (p, q) =
+                (_mm256_mul_ps(_mm256_set1_ps(lo), self.inv[a]), _mm256_mul_ps(_mm256_set1_ps(hi), self.inv[a]));
+            near = _mm256_max_ps(near, _mm256_min_ps(p, q));
+            far = _mm256_min_ps(far, _mm256_max_ps(p, q));
+        }
+        _mm256_movemask_ps(_mm256_cmp_ps::<_CMP_LE_OQ>(near, far)) as u32
     }
 
     /// Triangle `k` of `block` against the eight rays by [`Block::intersect_with`]'s arithmetic
@@ -1274,9 +1314,10 @@ impl WideBvh {
     /// one packet in the single ray's order (depth first; at a node its entered leaves, slots
     /// and lanes downward, then its inner children by `slot ^ octant`, highest first), entering
     /// every box that any of them may enter ([`PacketRays::node_test`] over the packet's widest
-    /// interval); a leaf's triangles are tested against all the rays at once by obvhs'
-    /// arithmetic ([`PacketRays::triangle`]), and each ray gets the triangles it hits inside its
-    /// current interval. So a ray's candidates come in the order [`WideBvh::any_hit`] offers
+    /// interval); a leaf's triangles are tested against the rays whose own slab test enters the
+    /// leaf's box ([`PacketRays::box_rays`]) at once, by obvhs' arithmetic
+    /// ([`PacketRays::triangle`]), and each ray gets the triangles it hits inside its current
+    /// interval. So a ray's candidates come in the order [`WideBvh::any_hit`] offers
     /// them: both follow the same fixed order of the tree's leaves, and both offer every
     /// triangle hit inside the interval — unless rounding at a box boundary made the single
     /// ray's (obvhs') box test skip a box holding such a hit, which this wider test enters
@@ -1344,6 +1385,11 @@ impl WideBvh {
         let lo = lo - lo.abs() * MARGIN;
         let far = |t_max: &[f32; PACKET], alive: u32| in_group(alive).map(|i| with_margin(t_max[i])).fold(lo, f32::max);
         let mut hi = far(&t_max, alive);
+        // Per ray, its own interval so widened (lanes), for the leaves' boxes.
+        // SAFETY (both): the arrays hold eight f32.
+        let near8 = unsafe { _mm256_loadu_ps(t_min.map(|t| t - t.abs() * MARGIN).as_ptr()) };
+        let far8 = |t_max: &[f32; PACKET]| unsafe { _mm256_loadu_ps(t_max.map(with_margin).as_ptr()) };
+        let mut ray_far = far8(&t_max);
         let mut stack = [MaybeUninit::<u32>::uninit(); STACK];
         stack[0].write(0);
         let mut sp = 1;
@@ -1351,27 +1397,38 @@ impl WideBvh {
             sp -= 1;
             // SAFETY: the entries below `sp` were written.
             let node = &self.nodes[unsafe { stack[sp].assume_init() } as usize];
-            let (entered, _) = rays.node_test(node, lo, hi);
-            // The entered children's memory is fetched at once, not miss after miss.
+            let (mut entered, _) = rays.node_test(node, lo, hi);
+            // A leaf is tested only by the rays whose own slab test enters its box (the
+            // packet's bounds enter more boxes than any of its rays; the lone ray's `maybe` test,
+            // so no box the lone ray enters is missed), and not at all where none does; the
+            // memory of the children to visit is fetched at once, not miss after miss.
+            let mut leaf_rays = [0u32; 8];
             let mut fetch = entered;
             while fetch != 0 {
-                let child = node.child[fetch.trailing_zeros() as usize];
+                let slot = fetch.trailing_zeros() as usize;
                 fetch &= fetch - 1;
-                if child & LEAF != 0 {
-                    prefetch(&self.blocks[(child & !LEAF) as usize]);
-                } else {
+                let child = node.child[slot];
+                if child & LEAF == 0 {
                     prefetch(&self.nodes[child as usize]);
+                    continue;
+                }
+                leaf_rays[slot] = rays.box_rays(node, slot, near8, ray_far) & alive;
+                if leaf_rays[slot] == 0 {
+                    entered &= !(1 << slot);
+                } else {
+                    prefetch(&self.blocks[(child & !LEAF) as usize]);
                 }
             }
-            for leaf in node.leaves_in_order(entered) {
+            for (slot, leaf) in node.leaves_in_order(entered) {
                 let block = &self.blocks[leaf as usize];
                 for lane in bits_downward(block.valid) {
-                    let Some(([t, u, v], valid)) = rays.triangle::<true>(block, lane, alive) else { continue };
+                    let testing = leaf_rays[slot] & alive;
+                    let Some(([t, u, v], valid)) = rays.triangle::<true>(block, lane, testing) else { continue };
                     // SAFETY: `t_max` holds eight f32.
                     let t_max8 = unsafe { _mm256_loadu_ps(t_max.as_ptr()) };
                     let within =
                         _mm256_and_ps(_mm256_cmp_ps::<_CMP_LT_OQ>(t_min8, t), _mm256_cmp_ps::<_CMP_LT_OQ>(t, t_max8));
-                    let mut hit = valid & alive & _mm256_movemask_ps(within) as u32;
+                    let mut hit = valid & testing & _mm256_movemask_ps(within) as u32;
                     if hit == 0 {
                         continue;
                     }
@@ -1390,6 +1447,7 @@ impl WideBvh {
                             super::AnyHit::AcceptAndEnd => alive &= !(1 << ray),
                         }
                         hi = far(&t_max, alive);
+                        ray_far = far8(&t_max);
                     }
                 }
             }
