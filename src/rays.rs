@@ -192,7 +192,7 @@ pub fn trace_primary(
 ) {
     assert_eq!(out.len(), directions.len(), "one answer per ray");
     assert!(width > 0 && directions.len() % width == 0, "whole rows of {width} rays");
-    let masked = alpha == Alpha::On && surfaces.mask_headers.iter().any(|h| h.width > 0);
+    let masked = alpha == Alpha::On && surfaces.masked();
     let alpha_test = |tri, b| surfaces.passes_alpha(tri, b);
     if tracer == Tracer::Scene {
         let band = 2 * width;
@@ -369,15 +369,16 @@ pub fn trace_sd(
         let first = c * (CHUNK / 16);
         if tracer == Tracer::Scene {
             for (p, packet) in chunk.chunks_mut(PACKET).enumerate() {
-                let k = first + p * PACKET;
                 let n = packet.len();
-                let pick = |v: &[f32]| std::array::from_fn(|i| v[k + i.min(n - 1)]);
-                let directions = std::array::from_fn(|i| rays.directions[k + i.min(n - 1)]);
+                // Ray `i` of the packet (a short packet repeats its last ray in the unused lanes).
+                let ray = |i: usize| first + p * PACKET + i.min(n - 1);
+                let pick = |v: &[f32]| std::array::from_fn(|i| v[ray(i)]);
+                let directions = std::array::from_fn(|i| rays.directions[ray(i)]);
                 let mut hits: [SdHits; PACKET] =
-                    std::array::from_fn(|i| SdHits { payload: rays.payloads[k + i.min(n - 1)], alpha: tables });
+                    std::array::from_fn(|i| SdHits { payload: rays.payloads[ray(i)], alpha: tables });
                 let interval = (&pick(&rays.t_min), &pick(&rays.t_max));
-                bvh.trace_any_hit_packet(rays.origin, &directions, interval, n, |ray, t, tri, b| {
-                    AnyHit::from_decision(hits[ray].decide(t, b, tri))
+                bvh.trace_any_hit_packet(rays.origin, &directions, interval, n, |i, t, tri, b| {
+                    AnyHit::from_decision(hits[i].decide(t, b, tri))
                 });
                 for (o, h) in packet.iter_mut().zip(&hits) {
                     *o = h.payload;

@@ -38,7 +38,7 @@ impl Surfaces<'_> {
     /// memory: the per-triangle materials and uvs are scattered reads, a cache miss per
     /// candidate on a large scene. Take them once per pass, not per candidate.
     pub fn alpha(&self) -> AlphaTables<'_> {
-        if self.mask_headers.iter().all(|h| h.width == 0 || h.height == 0) {
+        if !self.masked() {
             return AlphaTables { uvs: &[], materials: &[], headers: &[], texels: &[] };
         }
         AlphaTables {
@@ -49,6 +49,12 @@ impl Surfaces<'_> {
         }
     }
 
+    /// Does any material have an alpha mask (a texture the alpha test reads; a header of zero
+    /// width or height is opaque)?
+    pub fn masked(&self) -> bool {
+        self.mask_headers.iter().any(|h| h.width > 0 && h.height > 0)
+    }
+
     /// Alpha test of triangle `tri` at barycentrics `b` (weights of its 2nd and 3rd corner).
     pub fn passes_alpha(&self, tri: u32, b: Vec2) -> bool {
         triangle_alpha_passes(self.uvs.as_flattened(), self.materials, self.mask_headers, self.mask_texels, tri, b)
@@ -57,7 +63,7 @@ impl Surfaces<'_> {
 
 /// Cast one primary ray per pixel centre; alpha-masked surfaces are skipped where cut out.
 pub fn ray_cast_gbuffer(bvh: &SceneBvh, surfaces: &Surfaces, camera: &Camera, progress: Progress) -> GBufferImage {
-    let masked = surfaces.mask_headers.iter().any(|h| h.width > 0);
+    let masked = surfaces.masked();
     let alpha = surfaces.alpha();
     let size = camera.view.size();
     let eye = camera.eye();

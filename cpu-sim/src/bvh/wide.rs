@@ -974,12 +974,12 @@ impl WideBvh {
             // either test enters and that can hold a hit; `surely` (met over the interval
             // narrowed by the margin, and beyond obvhs' ε) only children obvhs' larger boxes
             // surely enter too. obvhs' own test runs only where they differ.
-            let lo = t_min - t_min.abs() * MARGIN;
+            let lo = below_margin(t_min);
             let (maybe, surely) = N::intersect2(
                 node,
                 &pre,
                 (lo, with_margin(ray.tmax)),
-                (lo.max(OBVHS_EPSILON * (1.0 + MARGIN)), ray.tmax - ray.tmax.abs() * MARGIN),
+                (lo.max(OBVHS_EPSILON * (1.0 + MARGIN)), below_margin(ray.tmax)),
             );
             if maybe == 0 {
                 continue;
@@ -1174,23 +1174,19 @@ impl PacketRays {
             // SAFETY: `lanes` holds eight f32.
             unsafe { _mm256_loadu_ps(lanes.as_ptr()) }
         };
+        let inv: [[f32; PACKET]; 3] = std::array::from_fn(|a| directions.map(|d| safe_inverse(d[a])));
         let (mut inv_lo, mut inv_hi) = ([f32::INFINITY; 3], [f32::NEG_INFINITY; 3]);
-        for (_, dir) in directions.iter().enumerate().filter(|(i, _)| rays & (1 << i) != 0) {
+        for i in (0..PACKET).filter(|i| rays & (1 << i) != 0) {
             for a in 0..3 {
-                let inv = safe_inverse(dir[a]);
-                inv_lo[a] = inv_lo[a].min(inv);
-                inv_hi[a] = inv_hi[a].max(inv);
+                inv_lo[a] = inv_lo[a].min(inv[a][i]);
+                inv_hi[a] = inv_hi[a].max(inv[a][i]);
             }
         }
-        let inv = |a: usize| {
-            let lanes: [f32; PACKET] = std::array::from_fn(|i| safe_inverse(directions[i][a]));
-            // SAFETY: `lanes` holds eight f32.
-            unsafe { _mm256_loadu_ps(lanes.as_ptr()) }
-        };
         PacketRays {
             origin: origin.to_array(),
             directions: [axis(0), axis(1), axis(2)],
-            inv: [inv(0), inv(1), inv(2)],
+            // SAFETY: each row holds eight f32.
+            inv: inv.map(|lanes| unsafe { _mm256_loadu_ps(lanes.as_ptr()) }),
             inv_lo,
             inv_hi,
         }
@@ -1379,17 +1375,19 @@ impl WideBvh {
         let t_min8 = unsafe { _mm256_loadu_ps(t_min.as_ptr()) };
         let mut alive = group;
         let in_group = |m: u32| (0..PACKET).filter(move |&i| m & (1 << i) != 0);
-        // Boxes are tested over the packet's widest interval, widened by the rounding margin as
-        // the single ray's `maybe` test.
-        let lo = in_group(group).map(|i| t_min[i]).fold(f32::INFINITY, f32::min);
-        let lo = lo - lo.abs() * MARGIN;
-        let far = |t_max: &[f32; PACKET], alive: u32| in_group(alive).map(|i| with_margin(t_max[i])).fold(lo, f32::max);
-        let mut hi = far(&t_max, alive);
-        // Per ray, its own interval so widened (lanes), for the leaves' boxes.
-        // SAFETY (both): the arrays hold eight f32.
-        let near8 = unsafe { _mm256_loadu_ps(t_min.map(|t| t - t.abs() * MARGIN).as_ptr()) };
-        let far8 = |t_max: &[f32; PACKET]| unsafe { _mm256_loadu_ps(t_max.map(with_margin).as_ptr()) };
-        let mut ray_far = far8(&t_max);
+        // Per ray, its interval widened by the rounding margin as the single ray's `maybe` test
+        // (as lanes, for the leaves' boxes), and the packet's widest such interval, for the
+        // nodes' boxes (both margins round monotonically, so the widest is the widened one).
+        let near = t_min.map(below_margin);
+        let lo = in_group(group).map(|i| near[i]).fold(f32::INFINITY, f32::min);
+        // SAFETY: `near` holds eight f32.
+        let near8 = unsafe { _mm256_loadu_ps(near.as_ptr()) };
+        let widen = |t_max: &[f32; PACKET], alive: u32| {
+            let far = t_max.map(with_margin);
+            // SAFETY: `far` holds eight f32.
+            (in_group(alive).map(|i| far[i]).fold(lo, f32::max), unsafe { _mm256_loadu_ps(far.as_ptr()) })
+        };
+        let (mut hi, mut ray_far) = widen(&t_max, alive);
         let mut stack = [MaybeUninit::<u32>::uninit(); STACK];
         stack[0].write(0);
         let mut sp = 1;
@@ -1446,8 +1444,7 @@ impl WideBvh {
                             super::AnyHit::Accept => t_max[ray] = ts[ray],
                             super::AnyHit::AcceptAndEnd => alive &= !(1 << ray),
                         }
-                        hi = far(&t_max, alive);
-                        ray_far = far8(&t_max);
+                        (hi, ray_far) = widen(&t_max, alive);
                     }
                 }
             }
@@ -1502,6 +1499,12 @@ fn octant(direction: Vec3A) -> u32 {
 #[inline(always)]
 fn with_margin(best_t: f32) -> f32 {
     best_t + best_t.abs() * MARGIN
+}
+
+/// `t` less the relative margin of [`with_margin`]: the other end of a widened interval.
+#[inline(always)]
+fn below_margin(t: f32) -> f32 {
+    t - t.abs() * MARGIN
 }
 
 /// Enter the children `mask` of `node` nearest first: with a single child, return it (the
