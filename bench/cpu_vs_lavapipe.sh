@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates bench/CPU_VS_LAVAPIPE.md: per screen-space pass, the CPU simulator's median time
-# against lavapipe running the same kernels' SPIR-V, measured in one run on this machine
-# (issue 14). For each technique the two back-ends run back to back with `aokit bench`.
+# against lavapipe running the same kernels' SPIR-V, measured in one run on this machine.
+# For each technique the two back-ends run back to back with `aokit bench`.
 #
 #   bench/cpu_vs_lavapipe.sh                      # sponza, 1920×1080 (+ guard), 3 frames after 1 warm-up
 #   SCENE=kitchen WIDTH=960 HEIGHT=540 FRAMES=5 bench/cpu_vs_lavapipe.sh

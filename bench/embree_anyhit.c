@@ -1,5 +1,5 @@
 /* embree_anyhit.c — Embree 4 traces the rays of an `aokit rays --dump DIR` folder on P pthreads
- * (issue 14, bench/rays_vs_embree.sh): the G-buffer's primary rays (rtcIntersect1), the ground
+ * (for bench/rays_vs_embree.sh): the G-buffer's primary rays (rtcIntersect1), the ground
  * truth's AO rays (rtcOccluded1), and the any-hit rays of the SD map and of Ray-SVAO
  * (rtcIntersect1 with an intersection filter doing the kernels' any-hit: valid[0] = 0 rejects a
  * candidate and traversal goes on over the same interval, as IGNORE does; a kept candidate is

@@ -1,5 +1,5 @@
 """Traces the rays of an `aokit rays --dump DIR` folder with Embree 4 (the `embreex` package) and
-compares with cpu-sim's answers in the same folder (issue 14).
+compares with cpu-sim's answers in the same folder (for bench/rays_vs_embree.sh).
 
     python3 bench/embree_rays.py DIR [--procs 2] [--repeat 3] [--robust] [--json OUT]
 
