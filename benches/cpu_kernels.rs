@@ -1,7 +1,7 @@
 //! CPU kernel throughput on the Sponza G-buffer at 1920×1080 (+64 px guard band = 2048×1208).
 //! Team targets: one VAO pass ≤ 0.1 s on 2 cores; ≥ 5 M incoherent AO rays/s. Also the Ray-SD
 //! passes and the reservoir any-hit. Then every pass of every technique's graph at 960×540 (+64)
-//! in Mpixel/s of the inner image, timed by the CPU executor itself (issue 14), and the ray
+//! in Mpixel/s of the inner image, timed by the CPU executor itself (to compare with lavapipe), and the ray
 //! tracer in M rays/s (`rays/...`). Run: `cargo bench --bench cpu_kernels` (filter:
 //! `-- passes/gtao`).
 
@@ -137,7 +137,7 @@ fn passes(c: &mut Criterion) {
     group.finish();
 }
 
-/// Ray throughput in M rays/s on the rays `aokit rays` records (issue 14): the G-buffer's
+/// Ray throughput in M rays/s on the rays `aokit rays` records (as bench/rays_vs_embree.sh): the G-buffer's
 /// primary rays as 4×2 packets and one at a time, and Ray-SVAO's any-hit rays (the SD map's
 /// are `sponza_2048x1208/raysd_sd_map_rays`).
 fn rays(c: &mut Criterion) {

@@ -1,28 +1,28 @@
 //! An engine adopting aokit: the application owns the Vulkan instance, the device, the queue,
 //! the command buffer, the depth and normal images (drawn by its own raster pass, WGSL shaders
-//! compiled with naga at run time) and the AO image; aokit only records its passes into the
-//! engine's command buffer through [`AoContext::record_engine`].
+//! compiled with naga at run time) and the AO image; aokit is one [`AoEffect`] that records its
+//! passes into the engine's command buffer (see `main`: create, resize, record, drop).
 //!
 //! ```sh
 //! cargo run --release --example engine_frame -- --scene sponza --technique raysd --width 640 --height 360 --out ao.png
 //! ```
 //!
-//! Camera and AO flags are `aokit render`'s, with the same defaults; there is no guard band (an
-//! engine renders none): compare with `aokit render … --guard 0`, e.g. with `--compare cpu.png`.
+//! Scene, camera preset and AO parameters mean what they mean for `aokit render`, with the same
+//! defaults; there is no guard band (an engine renders none): compare with `aokit render …
+//! --guard 0`, e.g. with `--compare cpu.png`.
 
-use aokit::cli::{SceneArgs, TechniqueArgs};
-use aokit::frame::Frame;
+use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::output::write_png;
-use aokit::technique::Technique;
-use aokit_shaders::adapters::{DEPTH_REVERSED, ImportParams};
-use aokit_shaders::glam::{Mat4, Vec4};
-use aokit_shaders::graph::PassKind;
-use aokit_vulkan::{AoContext, AoImage, EngineFrame, EngineImage, ExternalDevice, Gpu, SceneAccel};
+use aokit::scene::{Scene, builtin};
+use aokit_vulkan::glam::{Mat4, Vec4};
+use aokit_vulkan::{
+    AoEffect, AoFrame, AoImage, AoSettings, DepthConvention, EngineImage, ExternalDevice, SceneGeometry, Technique,
+};
 use ash::{ext, khr, vk};
 use clap::{Parser, ValueEnum};
 use std::error::Error;
 use std::ffi::{CStr, c_void};
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use std::time::Instant;
 
@@ -32,17 +32,28 @@ const VALIDATION_LAYER: &CStr = c"VK_LAYER_KHRONOS_validation";
 const DEPTH_FORMAT: vk::Format = vk::Format::D32_SFLOAT;
 const NORMAL_FORMAT: vk::Format = vk::Format::R8G8B8A8_UNORM;
 
-/// `aokit render`'s scene, camera and AO flags (same names and defaults), minus the guard band.
+/// The scene, camera and AO parameters of `aokit render` (same meanings and defaults).
 #[derive(Parser)]
 #[command(about = "Render a scene's depth and normals with a minimal engine raster pass, then AO with aokit")]
-#[command(allow_negative_numbers = true)]
 struct Args {
-    #[command(flatten)]
-    view: SceneArgs,
-    #[command(flatten)]
-    settings: TechniqueArgs,
-    /// A technique of `aokit techniques` (single depth, no raster pass), optionally with
-    /// `:key=value` settings.
+    /// A built-in scene (`aokit scenes`) or a scene file (OBJ, glTF, PLY).
+    #[arg(long, default_value = "sponza")]
+    scene: String,
+    /// A camera preset of the built-in scene (default: its first), or `auto`.
+    #[arg(long)]
+    camera: Option<String>,
+    #[arg(long, default_value_t = 640)]
+    width: u32,
+    #[arg(long, default_value_t = 360)]
+    height: u32,
+    /// World-space AO radius (default: the built-in scene's, else 2 % of the bounding box).
+    #[arg(long)]
+    radius: Option<f32>,
+    #[arg(long, default_value_t = 2.0)]
+    exponent: f32,
+    #[arg(long, default_value_t = 0.0)]
+    thickness: f32,
+    /// A technique of `aokit techniques`, optionally with `:key=value` settings.
     #[arg(long, default_value = "vao")]
     technique: String,
     /// Output PNG (8-bit grey, 1 = unoccluded = white).
@@ -381,8 +392,8 @@ impl Image {
 const RASTER_WGSL: &str = r#"
 struct Params {
     world_to_view: mat4x4<f32>,
-    // (1/tx, 1/ty, n·f/(f−n), n/(f−n)): reversed-Z perspective, depth 1 at near, 0 at far.
-    projection: vec4<f32>,
+    // Reversed-Z perspective (depth 1 at near, 0 at far), right-handed view space.
+    projection: mat4x4<f32>,
 }
 var<immediate> params: Params;
 
@@ -401,9 +412,8 @@ struct Varyings {
 @vertex
 fn raster_vs(@location(0) world: vec3<f32>, @location(1) uv: vec2<f32>, @location(2) material: u32) -> Varyings {
     let v = (params.world_to_view * vec4(world, 1.0)).xyz; // right-handed, looking down −Z
-    let p = params.projection;
     var out: Varyings;
-    out.clip = vec4(v.x * p.x, v.y * p.y, p.z + v.z * p.w, -v.z);
+    out.clip = params.projection * vec4(v, 1.0);
     out.view_position = v;
     out.uv = uv;
     out.material = material;
@@ -437,7 +447,7 @@ fn raster_fs(in: Varyings) -> @location(0) vec4<f32> {
 #[derive(Copy, Clone, bytemuck::Pod, bytemuck::Zeroable)]
 struct RasterPush {
     world_to_view: Mat4,
-    projection: Vec4,
+    projection: Mat4,
 }
 
 /// A vertex of the de-indexed scene: world position, texture coordinate, material.
@@ -740,30 +750,44 @@ fn record_frame(
     Ok(())
 }
 
-/// What the technique's graph needs besides depth and normals.
-fn check_graph(technique: &Technique, frame: &Frame, gpu: &Gpu) -> Result<bool> {
-    let graph = technique.graph(&frame.desc())?;
-    if technique.second_layer().is_some() {
-        return Err("dual-depth techniques need a depth-peeled second layer, which this example does not render".into());
-    }
-    if graph.passes.iter().any(|p| matches!(p.kind, PassKind::Raster { .. })) {
-        return Err(format!(
-            "{}: raster passes need aokit's vertex stream, which EngineFrame has no slot for",
-            technique.name()
-        )
-        .into());
-    }
-    let traces = graph.traces_rays();
-    if traces && !gpu.has_ray_tracing() {
-        return Err(format!("{} traces rays; this device has no ray tracing", technique.name()).into());
-    }
-    Ok(traces)
+/// The engine's camera: `aokit render`'s for this scene, size and preset (no guard band).
+fn engine_camera(args: &Args) -> Result<(Scene, Frame)> {
+    let (scene, builtin) = match builtin::find(&args.scene) {
+        Some(b) => (b.load()?, Some(b)),
+        None => (Scene::load(Path::new(&args.scene))?, None),
+    };
+    let camera = match (args.camera.as_deref(), builtin) {
+        (Some("auto"), _) | (_, None) => CameraChoice::Auto { fov_deg: 60.0 },
+        (name, Some(_)) => CameraChoice::Preset { name: name.map(str::to_string), fov_deg: None },
+    };
+    let request = FrameRequest {
+        width: args.width,
+        height: args.height,
+        guard: 0,
+        camera,
+        radius: args.radius,
+        exponent: args.exponent,
+        thickness: args.thickness,
+    };
+    let frame = Frame::resolve(&scene, builtin, &request)?;
+    Ok((scene, frame))
+}
+
+/// A reversed-Z perspective projection (depth 1 at `near`, 0 at `far`) with these tangents of
+/// the half field of view, right-handed, in WebGPU's clip space (y up, z ∈ [0, 1]).
+fn reversed_z_projection(tan_half_fov: (f32, f32), near: f32, far: f32) -> Mat4 {
+    Mat4::from_cols(
+        Vec4::new(1.0 / tan_half_fov.0, 0.0, 0.0, 0.0),
+        Vec4::new(0.0, 1.0 / tan_half_fov.1, 0.0, 0.0),
+        Vec4::new(0.0, 0.0, near / (far - near), -1.0),
+        Vec4::new(0.0, 0.0, near * far / (far - near), 0.0),
+    )
 }
 
 fn main() -> Result<()> {
     let args = Args::parse();
-    let technique = args.settings.technique(&args.technique)?; // the settings flags of `aokit render`
-    let (scene, frame) = args.view.resolve(0)?; // an engine renders no guard band
+    let technique = Technique::parse(&args.technique)?;
+    let (scene, frame) = engine_camera(&args)?;
     let (width, height) = (frame.inner.x, frame.inner.y);
     let view = frame.camera.view;
 
@@ -826,45 +850,39 @@ fn main() -> Result<()> {
     };
     let fence = unsafe { device.create_fence(&vk::FenceCreateInfo::default(), None)? };
 
-    // aokit on the engine's device.
-    let gpu = Gpu::from_external(engine.external())?;
-    let mut ctx = AoContext::new(&gpu);
-    let traces = check_graph(&technique, &frame, &gpu)?;
-    let accel = if traces {
-        let positions: Vec<[f32; 3]> = scene.triangles.iter().flatten().map(|v| v.to_array()).collect();
-        let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
-        Some(SceneAccel::build(&gpu, &positions, &uvs, &scene.triangle_materials, &masks)?)
-    } else {
-        None
-    };
+    // The engine's camera: its view matrix and a reversed-Z projection (any near/far works).
+    let projection = reversed_z_projection((view.tan_half_fov.x, view.tan_half_fov.y), view.near, view.far);
+    let push = RasterPush { world_to_view: frame.camera.world_to_view, projection };
 
-    // The engine's projection: the aokit camera's view and field of view, reversed Z with the
-    // aokit view's near and far planes (any near/far works: ImportParams carries them).
-    let (near, far) = (view.near, view.far);
-    let push = RasterPush {
-        world_to_view: frame.camera.world_to_view,
-        projection: Vec4::new(
-            1.0 / view.tan_half_fov.x,
-            1.0 / view.tan_half_fov.y,
-            near * far / (far - near),
-            near / (far - near),
-        ),
+    // ---- aokit: create, size, (scene for ray-traced techniques), record per frame, drop. ----
+    let settings = AoSettings::new(technique).radius(frame.radius).exponent(frame.exponent).thickness(frame.thickness);
+    let mut effect = AoEffect::new(engine.external(), settings)?;
+    effect.resize(width, height)?;
+    let positions: Vec<[f32; 3]> = scene.triangles.iter().flatten().map(|v| v.to_array()).collect();
+    let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
+    let geometry = SceneGeometry {
+        positions: &positions,
+        uvs: &uvs,
+        materials: &scene.triangle_materials,
+        mask_headers: &masks.0,
+        mask_texels: &masks.1,
     };
-    let engine_frame = EngineFrame {
-        depth: EngineImage { view: images.depth.view, layout: vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL },
-        normals: (!args.no_normals)
-            .then_some(EngineImage { view: images.normals.view, layout: vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL }),
-        second_depth: None, // check_graph refused dual-depth techniques
-        output: AoImage { view: images.ao.view, format: args.ao_format.vk() },
-        import: ImportParams { view, engine_size: frame.inner, depth_convention: DEPTH_REVERSED, near, far, _pad: 0 },
-        scene: accel.as_ref(),
-    };
+    let rays = if effect.traces_rays()? { Some(effect.build_scene(&geometry)?) } else { None };
+    let depth = EngineImage { view: images.depth.view, layout: vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL };
+    let output = AoImage { view: images.ao.view, format: args.ao_format.vk() };
+    let mut ao_frame = AoFrame::new(depth, DepthConvention::Reversed, output, projection, frame.camera.world_to_view);
+    if !args.no_normals {
+        let layout = vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL;
+        ao_frame = ao_frame.normals(EngineImage { view: images.normals.view, layout });
+    }
+    if let Some(rays) = &rays {
+        ao_frame = ao_frame.scene(rays);
+    }
 
-    // The frame loop. The graph carries the camera: an engine rebuilds it whenever the camera
-    // moves (here it stands still, so the rebuilt graph binds the same resources every frame).
+    // The frame loop (the camera stands still, frame index 0 as `aokit render`; a moving camera
+    // is just another AoFrame, `.temporal(index, previous_view)` animates the noise).
     let vertex_count = vertices.len() as u32;
     for index in 0..args.frames {
-        let graph = technique.graph(&frame.desc())?;
         let record_start = Instant::now();
         unsafe {
             device.reset_command_pool(pool, vk::CommandPoolResetFlags::empty())?;
@@ -873,7 +891,7 @@ fn main() -> Result<()> {
         }
         let recorded =
             record_frame(&device, cmd, &raster, (&vertex_buffer, vertex_count), &push, &images, &readback, |cmd| {
-                Ok(ctx.record_engine(cmd, &graph, &engine_frame)?)
+                Ok(effect.record(cmd, &ao_frame)?)
             });
         let record_ms = record_start.elapsed().as_secs_f64() * 1e3;
         let submit_start = Instant::now();
@@ -888,7 +906,7 @@ fn main() -> Result<()> {
         }
         let frame_ms = submit_start.elapsed().as_secs_f64() * 1e3;
         recorded?;
-        let passes_ms: f64 = ctx.pass_times()?.iter().map(|(_, ms)| ms).sum();
+        let passes_ms: f64 = effect.pass_times()?.iter().map(|(_, ms)| ms).sum();
         println!(
             "frame {index}: recorded in {record_ms:.2} ms (host), submit→fence {frame_ms:.2} ms, aokit passes {passes_ms:.2} ms"
         );
@@ -909,16 +927,13 @@ fn main() -> Result<()> {
     let mean = ao.iter().map(|&a| f64::from(a)).sum::<f64>() / count as f64;
     println!(
         "{} on {} ({} triangles) at {width}×{height}, {}: mean AO {mean:.4} → {}",
-        technique.name(),
+        effect.settings().technique.name(),
         scene.name,
         scene.triangles.len(),
         engine.device_name,
         args.out.display()
     );
-    if let Some(a) = &accel {
-        println!("  accel_build        {:>9.2} ms", a.build_ms);
-    }
-    let passes = ctx.pass_times()?;
+    let passes = effect.pass_times()?;
     for (label, ms) in &passes {
         println!("  {label:<18} {ms:>9.2} ms");
     }
@@ -943,11 +958,8 @@ fn main() -> Result<()> {
     }
 
     // Teardown: the device finished (fence); aokit's objects first, then the engine's.
-    drop(ctx);
-    if let Some(a) = accel {
-        a.destroy(&gpu);
-    }
-    drop(gpu);
+    drop(rays);
+    drop(effect);
     unsafe {
         device.destroy_fence(fence, None);
         device.destroy_command_pool(pool, None);

@@ -206,7 +206,7 @@ impl TechniqueArgs {
     /// The techniques of `specs` (`name[:key=value…]`) with the given flags applied; refuses
     /// a flag none of them reads.
     pub fn techniques(&self, specs: &[&str]) -> Result<Vec<Technique>, String> {
-        let techniques = specs.iter().map(|s| Technique::parse(s, &self.given)).collect::<Result<Vec<_>, _>>()?;
+        let techniques = specs.iter().map(|s| self.given.technique(s)).collect::<Result<Vec<_>, _>>()?;
         let unused = self.given.unused(&techniques.iter().collect::<Vec<_>>());
         if !unused.is_empty() {
             let names: Vec<_> = techniques.iter().map(|t| t.name()).collect();

@@ -36,7 +36,7 @@ pub struct FrameRequest {
     /// Output (inner) image size.
     pub width: u32,
     pub height: u32,
-    /// G-buffer guard band in pixels (spec §1: 64).
+    /// G-buffer guard band in pixels (spec svao-raysd §1: 64).
     pub guard: u32,
     pub camera: CameraChoice,
     /// World-space AO radius; `None`: the scene's default.
@@ -203,7 +203,7 @@ impl Frame {
         aokit_shaders::vao::settings::vao_params(&self.desc())
     }
 
-    /// Push constants of the horizontal blur (spec §12: sharpness 16).
+    /// Push constants of the horizontal blur (spec svao-raysd §12: sharpness 16).
     pub fn blur_params(&self) -> BlurParams {
         aokit_shaders::blur::graph::blur_params(&self.desc(), uvec2(1, 0))
     }

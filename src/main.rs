@@ -8,6 +8,7 @@ use aokit::render::{CpuRenderer, Renderer, VulkanRenderer};
 use aokit::report::{BenchResult, CompareReport, CompareSetup};
 use aokit::scene::Scene;
 use aokit::scene::builtin;
+use aokit::technique::Describe;
 use aokit_cpu::GBufferImage;
 use aokit_shaders::graph::RtMode;
 use aokit_vulkan::GpuOptions;

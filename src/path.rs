@@ -1,4 +1,4 @@
-//! Camera paths and temporal stability (`aokit path`, issue 13 item 3): a sequence of frames
+//! Camera paths and temporal stability (`aokit path`): a sequence of frames
 //! along an orbit around the camera's target or a dolly toward it, every technique rendered
 //! frame after frame (its noise taking the frame index, optionally with the temporal
 //! accumulation of `aokit_shaders::temporal`), and per technique
@@ -16,7 +16,7 @@ use crate::frame::Frame;
 use crate::output::crop_inner;
 use crate::render::Renderer;
 use crate::scene::Scene;
-use crate::technique::Technique;
+use crate::technique::{Describe, Technique};
 use aokit_cpu::graph::CpuExecutor;
 use aokit_cpu::{GBufferImage, Progress};
 use aokit_shaders::common::camera::Camera;

@@ -1,4 +1,4 @@
-//! `aokit rays` (issue 14): the rays cpu-sim traces for one frame — the ground truth's AO rays
+//! `aokit rays` (CPU rays vs Embree): the rays cpu-sim traces for one frame — the ground truth's AO rays
 //! (spec gtao-raymarch-hybrid §5) and the G-buffer's primary rays (spec svao-raysd §1) — as plain
 //! arrays, traced through cpu-sim's BVH on a fixed number of threads and timed, and written as
 //! `.npy` files so that another tracer (Embree 4 through `bench/embree_rays.py`) traces exactly
@@ -179,7 +179,7 @@ pub fn trace_occluded(
 /// `Tracer::Scene` traces bands of two rows as 4×2 packets (`SceneBvh::closest_hits`, as
 /// `aokit_cpu::ray_cast_gbuffer`), `Tracer::Wide` one ray at a time (`closest_hit`),
 /// `Tracer::Cwbvh` through obvhs (no alpha test: opaque scenes only). One band (or
-/// [`CHUNK`] rays) per work item: rayon's default splitting of an indexed iterator stops at
+/// `CHUNK` rays) per work item: rayon's default splitting of an indexed iterator stops at
 /// about four pieces for two threads, and on a frame whose halves cost differently one
 /// thread then idles for up to half the run.
 pub fn trace_primary(

@@ -4,7 +4,7 @@
 use crate::frame::Frame;
 use crate::metrics::{ImageRef, mse, psnr, ssim};
 use crate::output::crop_inner;
-use crate::technique::{Technique, TechniqueRun};
+use crate::technique::{Describe, Technique, TechniqueRun};
 use aokit_cpu::GBufferImage;
 use image::{Rgb, RgbImage};
 use std::io;

@@ -3,10 +3,8 @@
 
 use crate::frame::Frame;
 use aokit_shaders::glam::UVec2;
-use aokit_shaders::graph::{FrameDesc, Graph};
 use aokit_shaders::groundtruth::GroundTruthParams;
 use aokit_shaders::gtao::GtaoParams;
-use aokit_shaders::technique::Configured;
 
 /// XeGTAO's settings and presets (spec gtao-raymarch-hybrid §2.1–§2.2), beside its kernels.
 pub use aokit_shaders::gtao::settings::{GtaoSettings as GtaoOptions, Quality as GtaoPreset};
@@ -23,15 +21,7 @@ pub use aokit_shaders::hybrid::settings::HybridSettings as HybridOptions;
 pub use aokit_shaders::technique::{Declaration, Row, Settings};
 pub use aokit_shaders::techniques::TECHNIQUES;
 
-/// An AO technique from the registry ([`TECHNIQUES`]) with its settings.
-#[derive(Debug)]
-pub struct Technique(Box<dyn Configured>);
-
-impl Clone for Technique {
-    fn clone(&self) -> Self {
-        Technique(self.0.clone_box())
-    }
-}
+pub use aokit_shaders::technique::Technique;
 
 /// Settings given on the command line: `(flag, value)`, no value for a value-less switch. They
 /// apply to every technique that has the flag, in the order of the technique's settings rows.
@@ -48,106 +38,22 @@ impl CliSettings {
         };
         self.0.iter().filter(|(f, _)| !reads(f)).map(|(f, _)| format!("--{f}")).collect()
     }
+
+    /// The technique `spec` (`name[:key=value…]`) with these flags applied first.
+    pub fn technique(&self, spec: &str) -> Result<Technique, String> {
+        Technique::parse_with_flags(spec, &self.0)
+    }
 }
 
-impl Technique {
-    /// `technique` with `settings`.
-    pub fn new<S: Settings>(technique: &'static Declaration<S>, settings: S) -> Technique {
-        Technique(aokit_shaders::technique::configure(technique, settings))
-    }
+/// A technique's settings as JSON for reports.
+pub trait Describe {
+    /// Every setting the technique reads, as JSON (`snake_case` keys).
+    fn describe(&self) -> serde_json::Value;
+}
 
-    /// The registered technique `name` at its defaults.
-    pub fn named(name: &str) -> Result<Technique, String> {
-        let technique = aokit_shaders::techniques::find(name)
-            .ok_or_else(|| format!("unknown technique '{name}' (known: {})", aokit_shaders::techniques::names()))?;
-        Ok(Technique(technique.configure()))
-    }
-
-    /// A technique from its name, the command line's settings, then per-technique overrides
-    /// after the name as `:key=value` with the keys of its settings rows, e.g.
-    /// `raysd:sd-layers=8:interval=off`.
-    pub fn parse(spec: &str, cli: &CliSettings) -> Result<Technique, String> {
-        let mut parts = spec.trim().split(':');
-        let mut t = Technique::named(parts.next().unwrap_or_default())?;
-        let rows = t.rows();
-        let mut overrides = Vec::new();
-        for part in parts {
-            let (key, value) = part.split_once('=').ok_or_else(|| format!("'{part}' in '{spec}' is not key=value"))?;
-            if !rows.iter().any(|r| r.key == key) {
-                // The technique's own message, naming the keys it has.
-                t.0.set(key, value).map_err(|e| format!("'{spec}': {e}"))?;
-            }
-            overrides.push((key, value));
-        }
-        // Row order (a preset before its slices and steps, a variant before its weight), the
-        // override after the name winning over the flag of the same setting.
-        for row in &rows {
-            if let Some((_, value)) = overrides.iter().rev().find(|(k, _)| *k == row.key) {
-                t.0.set(row.key, value).map_err(|e| format!("'{spec}': {e}"))?;
-                continue;
-            }
-            for (flag, value) in &cli.0 {
-                // A value flag carries its value; a switch sets the value it stands for.
-                let value = match value {
-                    Some(v) if row.flag == Some(flag.as_str()) => v.as_str(),
-                    None => match row.switch {
-                        Some((f, v)) if f == flag => v,
-                        _ => continue,
-                    },
-                    Some(_) => continue,
-                };
-                t.0.set(row.key, value)?;
-            }
-        }
-        t.0.validate().map_err(|e| format!("'{spec}': {e}"))?;
-        Ok(t)
-    }
-
-    /// The registry name.
-    pub fn name(&self) -> &'static str {
-        self.0.name()
-    }
-
-    /// The settings the technique reads (flags, help, ranges, defaults).
-    pub fn rows(&self) -> Vec<Row> {
-        self.0.rows()
-    }
-
-    /// Set one setting by its key.
-    pub fn set(&mut self, key: &str, value: &str) -> Result<(), String> {
-        self.0.set(key, value)?;
-        self.0.validate()
-    }
-
-    /// The settings struct when it is an `S`.
-    pub fn settings<S: Settings>(&self) -> Option<&S> {
-        self.0.settings().downcast_ref()
-    }
-
-    /// A label for tables and file names: the name plus the settings that differ from the
-    /// technique's defaults, e.g. `raysd_sd-layers-8`.
-    pub fn label(&self) -> String {
-        let mut label = self.name().to_string();
-        for (key, value) in self.0.changed() {
-            label += &format!("_{key}-{value}");
-        }
-        label
-    }
-
-    /// The technique's pass graph for a frame.
-    pub fn graph(&self, frame: &FrameDesc) -> Result<Graph, String> {
-        self.0.graph(frame)
-    }
-
-    /// The separation of the depth-peeled second layer, for techniques that read one (spec
-    /// svao-raysd §11).
-    pub fn second_layer(&self) -> Option<f32> {
-        self.0.second_layer()
-    }
-
-    /// Every setting the technique reads, as JSON for reports (`snake_case` keys).
-    pub fn describe(&self) -> serde_json::Value {
-        serde_json::from_str(&self.0.json()).expect("the settings rows write valid JSON")
+impl Describe for Technique {
+    fn describe(&self) -> serde_json::Value {
+        serde_json::from_str(&self.json()).expect("the settings rows write valid JSON")
     }
 }
 

@@ -33,7 +33,7 @@ use crate::output::crop_inner;
 use crate::render::{CpuRenderer, VulkanRenderer};
 use crate::scene::Scene;
 use crate::scene::builtin;
-use crate::technique::Technique;
+use crate::technique::{Describe, Technique};
 use aokit_cpu::GBufferImage;
 use aokit_shaders::graph::FrameDesc;
 use aokit_shaders::technique::Kind;

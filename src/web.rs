@@ -9,7 +9,7 @@
 use crate::frame::Frame;
 use crate::output::crop_inner;
 use crate::scene::Scene;
-use crate::technique::{Row, TECHNIQUES, Technique};
+use crate::technique::{Describe, Row, TECHNIQUES, Technique};
 use aokit_cpu::GBufferImage;
 use aokit_cpu::graph::{CpuExecutor, CpuInputs};
 use aokit_shaders::graph::{Access, Elem, FrameDesc, Graph, Init, Lifetime, PassKind, inputs};

@@ -117,7 +117,7 @@ fn check_sd_layers(map: &[f32], frame: &Frame, options: &SdOptions, backend: &st
     }
 }
 
-/// Spec §7.3: the SD any-hit runs the material's alpha test before storing a depth, on both
+/// Spec svao-raysd §7.3: the SD any-hit runs the material's alpha test before storing a depth, on both
 /// back-ends (full-resolution map, no intervals so every texel traces its whole range).
 #[test]
 fn sd_map_any_hit_applies_the_alpha_test() {

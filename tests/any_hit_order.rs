@@ -1,4 +1,4 @@
-//! cpu-sim's any-hit traversal (`SceneBvh::trace_any_hit`, on the wide layout since issue 14)
+//! cpu-sim's any-hit traversal (`SceneBvh::trace_any_hit`, now on the wide layout)
 //! offers the candidates of a ray in exactly the order obvhs' CWBVH traversal did
 //! (`trace_any_hit_cwbvh`), so that order-dependent any-hits — the SD map's reservoir —
 //! decide as before: on real scenes, every call (distance, triangle, barycentrics) is the same,

@@ -1,4 +1,4 @@
-//! Issue 14 (CPU simulator speed): the CPU-only fast paths must not change a result. The inline
+//! CPU simulator speed: the CPU-only fast paths must not change a result. The inline
 //! floor/ceil equal `f32::floor`/`f32::ceil` bit for bit, `pow(x, 2)` is the exact product, and
 //! the tiled pixel loop visits every pixel of its rectangle exactly once and nothing else.
 

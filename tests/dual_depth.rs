@@ -63,7 +63,7 @@ impl Refine for FindsNothing {
 }
 
 /// Dual depth with refinement: pass 2 must subtract exactly the first+second-layer visibility
-/// pass 1 added for each flagged sample (the reference subtracts nothing, spec §11 "Bug"). With
+/// pass 1 added for each flagged sample (the reference subtracts nothing, spec svao-raysd §11 "Bug"). With
 /// a secondary source that finds nothing, the result must be the VAO sum with every flagged
 /// sample fully visible, recomputed here sample by sample (up to the UNORM8 store), wherever
 /// every flagged sample is on screen and pass 1 did not saturate. Subtracting the single-layer
@@ -85,8 +85,8 @@ fn dual_depth_pass_2_subtracts_what_pass_1_added() {
         for x in view.guard..view.size().x - view.guard {
             let p = uvec2(x, y);
             let i = view.index(p);
-            // Out-of-screen samples are dropped in pass 2 by design (§9), and a pass-1 sum above 1
-            // saturates in the UNORM8 store (§5): both change the value on purpose.
+            // Out-of-screen samples are dropped in pass 2 by design (svao-raysd §9), and a pass-1 sum above 1
+            // saturates in the UNORM8 store (svao-raysd §5): both change the value on purpose.
             if pass1.mask[i] == 0 || pass1.ao[i] >= 1.0 {
                 continue;
             }
@@ -144,7 +144,7 @@ fn dual_depth_vulkan_agrees_with_cpu() {
     assert!(v.passes.iter().any(|p| p.0 == "depth_peel"));
 }
 
-/// HBAO+ occlusion of one point (spec §4.5): along the normal at half the unclamped radius,
+/// HBAO+ occlusion of one point (spec svao-raysd §4.5): along the normal at half the unclamped radius,
 /// `k = sat(1 − 0.1)·sat(1 − ¼) = 0.675`, `o = sat(k/pdf)`; a point in the tangent plane does not
 /// occlude (N·V = 0 → sat(−0.1) = 0); beyond the radius nothing occludes.
 #[test]

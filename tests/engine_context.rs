@@ -31,14 +31,15 @@ use aokit_cpu::{GBufferImage, no_progress};
 use aokit_shaders::adapters::{DEPTH_REVERSED, DEPTH_STANDARD, ImportParams};
 use aokit_shaders::common::ViewParams;
 use aokit_shaders::common::normal_codec::decode_normal;
-use aokit_shaders::glam::{UVec2, Vec3};
-use aokit_shaders::graph::Graph;
+use aokit_shaders::glam::{Mat4, UVec2, Vec3, Vec4};
+use aokit_shaders::graph::{FrameDesc, Graph};
 use aokit_shaders::gtao::GtaoParams;
 use aokit_shaders::gtao::settings::GTAO;
 use aokit_shaders::svao::settings::RAYSD;
 use aokit_shaders::vao::settings::VAO;
 use aokit_vulkan::{
-    AoContext, AoImage, EngineFrame, EngineImage, FRAMES_IN_FLIGHT, Gpu, GpuError, Image2d, SceneAccel,
+    AoContext, AoEffect, AoFrame, AoImage, AoSettings, DepthConvention, EngineFrame, EngineImage, FRAMES_IN_FLIGHT,
+    Gpu, GpuError, Image2d, SceneAccel, SceneGeometry, engine_camera,
 };
 use ash::vk;
 use engine_device::{EngineDevice, EngineNeeds, RayTracing};
@@ -589,6 +590,160 @@ fn engine_frames_agree_with_cpu_sim() {
 }
 
 // ---------------------------------------------------------------------------------------------
+// 1b. The same engine frames through the engine API (`AoEffect`): the engine hands its
+//     projection and view matrices, not aokit's structs.
+
+/// The engine's projection of `view`'s inner image: right-handed, clip depth in [0, 1] with
+/// `convention`'s near/far mapping (what `engine_depth` stored), Y flipped so row 0 is the top.
+fn engine_projection(view: &ViewParams, convention: u32) -> Mat4 {
+    let inner = (view.size() - 2 * view.guard).as_vec2();
+    let tan = view.tan_half_fov * inner / view.res;
+    let (n, f) = (view.near, view.far);
+    // d = a + b/z: standard d(n) = 0, d(f) = 1; reversed d(n) = 1, d(f) = 0.
+    let (p22, p32) = match convention {
+        DEPTH_STANDARD => (f / (n - f), n * f / (n - f)),
+        DEPTH_REVERSED => (n / (f - n), n * f / (f - n)),
+        _ => unreachable!("convention {convention}"),
+    };
+    Mat4::from_cols(
+        Vec4::new(1.0 / tan.x, 0.0, 0.0, 0.0),
+        Vec4::new(0.0, -1.0 / tan.y, 0.0, 0.0),
+        Vec4::new(0.0, 0.0, p22, -1.0),
+        Vec4::new(0.0, 0.0, p32, 0.0),
+    )
+}
+
+#[test]
+fn effect_frames_agree_with_cpu_sim() {
+    let Some(engine) = Engine::new() else { return };
+    let start = Instant::now();
+    let (scene, frame): (Scene, Frame) = common::builtin_frame("sponza", 160, 96, 16);
+    let view = frame.camera.view;
+    let renderer = CpuRenderer::new(&scene);
+    let (gbuffer, _) = renderer.gbuffer(&frame, &no_progress);
+    let techniques = [
+        ("vao", Technique::new(&VAO, SdOptions::default())),
+        ("gtao", Technique::preset("gtao", "high").unwrap()),
+        ("raysd", Technique::new(&RAYSD, SdOptions::default())),
+        ("vao-dual", Technique::new(&VAO, SdOptions { dual: true, peel_separation: 0.5, ..Default::default() })),
+    ];
+    let separation = techniques[3].1.second_layer().expect("dual depth");
+    let surfaces = renderer.surfaces();
+    let depth2 = aokit_cpu::ray_cast_second_layer(renderer.bvh(), &surfaces, &frame.camera, &gbuffer, separation);
+    // The engine's own images go through a Gpu of its own on the same device.
+    let images = Gpu::from_external(engine.external()).unwrap();
+    let settings = |t: &Technique| {
+        AoSettings::new(t.clone())
+            .radius(frame.radius)
+            .exponent(frame.exponent)
+            .thickness(frame.thickness)
+            .guard(view.guard)
+    };
+    let mut effect = AoEffect::new(engine.external(), settings(&techniques[0].1)).unwrap();
+    let inner = view.size() - 2 * view.guard;
+    let positions: Vec<[f32; 3]> = scene.triangles.iter().flatten().map(|v| v.to_array()).collect();
+    let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
+    let masks = scene.alpha_masks();
+    let geometry = SceneGeometry {
+        positions: &positions,
+        uvs: &uvs,
+        materials: &scene.triangle_materials,
+        mask_headers: &masks.0,
+        mask_texels: &masks.1,
+    };
+    let rays = effect.build_scene(&geometry).unwrap();
+    let mut report = Vec::new();
+    for (convention_name, convention, depth_convention, with_normals) in [
+        ("reversed-Z", DEPTH_REVERSED, DepthConvention::Reversed, true),
+        ("standard-Z", DEPTH_STANDARD, DepthConvention::Standard, true),
+        ("reversed-Z", DEPTH_REVERSED, DepthConvention::Reversed, false),
+    ] {
+        let projection = engine_projection(&view, convention);
+        let world_to_view = frame.camera.world_to_view;
+        // What the effect derives from the matrices; the CPU reference runs on exactly that.
+        let derived = engine_camera(projection, world_to_view, inner, view.guard, depth_convention).unwrap();
+        let cam = derived.camera;
+        assert!((cam.view.tan_half_fov - view.tan_half_fov).abs().max_element() < 1e-5 * view.tan_half_fov.x);
+        assert!((derived.near / view.near - 1.0).abs() < 1e-5 && (derived.far / view.far - 1.0).abs() < 1e-5);
+        let mut g = EngineGBuffer {
+            second: Some(engine_depth(&view, &depth2, convention)),
+            ..engine_gbuffer(&view, &gbuffer, convention)
+        };
+        g.params = ImportParams {
+            view: cam.view,
+            engine_size: inner,
+            depth_convention: convention,
+            near: derived.near,
+            far: derived.far,
+            _pad: 0,
+        };
+        let texels = (g.size.x * g.size.y) as usize;
+        let targets = Targets::new(&engine, &images, &g);
+        let readback = HostBuffer::new(&engine, 4 * texels as u64, vk::BufferUsageFlags::TRANSFER_DST);
+        effect.resize(inner.x, inner.y).unwrap();
+        let general = vk::ImageLayout::GENERAL;
+        let output = AoImage { view: targets.output.view, format: vk::Format::R32_SFLOAT };
+        let depth = EngineImage { view: targets.depth.view, layout: DEPTH_LAYOUT };
+        let second = EngineImage { view: targets.second.as_ref().expect("second layer").view, layout: DEPTH_LAYOUT };
+        let mut ao_frame =
+            AoFrame::new(depth, depth_convention, output, projection, world_to_view).second_depth(second).scene(&rays);
+        if with_normals {
+            ao_frame = ao_frame.normals(EngineImage { view: targets.normals.view, layout: NORMAL_LAYOUT });
+        }
+        for (name, technique) in &techniques {
+            effect.set_settings(settings(technique)).unwrap();
+            let cmd = engine.begin();
+            let write = (S::COMPUTE_SHADER, A::SHADER_WRITE);
+            let previous = (S::COMPUTE_SHADER | S::TRANSFER, A::empty());
+            image_barrier(&engine, cmd, &targets.output, (vk::ImageLayout::UNDEFINED, general), previous, write);
+            effect.record(cmd, &ao_frame).unwrap();
+            let src = vk::ImageLayout::TRANSFER_SRC_OPTIMAL;
+            image_barrier(&engine, cmd, &targets.output, (general, src), write, (S::TRANSFER, A::TRANSFER_READ));
+            let region = [copy_region(&targets.output, 0)];
+            unsafe { engine.device.cmd_copy_image_to_buffer(cmd, targets.output.raw, src, readback.buffer, &region) };
+            let host = vk::MemoryBarrier::default().src_access_mask(A::TRANSFER_WRITE).dst_access_mask(A::HOST_READ);
+            let flags = vk::DependencyFlags::empty();
+            unsafe { engine.device.cmd_pipeline_barrier(cmd, S::TRANSFER, S::HOST, flags, &[host], &[], &[]) };
+            engine.submit_and_wait(cmd);
+            let on_gpu = readback.read_f32(&engine, texels);
+            let desc = FrameDesc::new(cam, frame.radius, frame.exponent, frame.thickness);
+            let graph = technique.graph(&desc).unwrap();
+            let (on_cpu, _, _) = cpu_reference(&renderer, &graph, &g, with_normals);
+            let normals_name = if with_normals { "RGBA8 normals" } else { "normals from depth" };
+            let label = format!("{name} ({convention_name}, {normals_name}, AoEffect)");
+            report.push(check_agreement(&label, &on_cpu, &on_gpu));
+        }
+        readback.destroy(&engine);
+        targets.destroy(&images);
+    }
+    // A technique whose graph rasterizes the scene itself is refused on one line, naming it.
+    effect.set_settings(settings(&Technique::named("sdsvao").unwrap())).unwrap();
+    let cmd = engine.begin();
+    let output = AoImage { view: vk::ImageView::null(), format: vk::Format::R32_SFLOAT };
+    let depth = EngineImage { view: vk::ImageView::null(), layout: DEPTH_LAYOUT };
+    let refused = effect.record(
+        cmd,
+        &AoFrame::new(
+            depth,
+            DepthConvention::Reversed,
+            output,
+            engine_projection(&view, DEPTH_REVERSED),
+            frame.camera.world_to_view,
+        ),
+    );
+    let e = refused.err().expect("sdsvao through the engine API").to_string();
+    assert!(e.contains("sdsvao") && e.contains("raster") && !e.contains('\n'), "{e}");
+    engine.submit_and_wait(cmd);
+    drop(rays);
+    drop(effect); // the engine waited for every frame
+    drop(images);
+    eprintln!("effect_frames_agree_with_cpu_sim: {:.1} s", start.elapsed().as_secs_f64());
+    let messages = engine.destroy();
+    assert_validation_clean("effect_frames_agree_with_cpu_sim", messages);
+    assert_eq!(report.len(), 12);
+}
+
+// ---------------------------------------------------------------------------------------------
 // 2. The soak.
 
 const SOAK_SCENE: &str = "sponza";
@@ -990,7 +1145,7 @@ fn the_engines_own_tlas_with_instances_and_custom_indices() {
     let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
     let masks = scene.alpha_masks();
     let graphs = [
-        ("groundtruth", Technique::parse("groundtruth:spp=32", &Default::default()).unwrap().graph(&desc).unwrap()),
+        ("groundtruth", Technique::parse("groundtruth:spp=32").unwrap().graph(&desc).unwrap()),
         ("raysd", Technique::new(&RAYSD, SdOptions::default()).graph(&desc).unwrap()),
     ];
     // Run every graph on the engine's TLAS built with the fence's custom index `fence_index`;

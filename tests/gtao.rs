@@ -14,7 +14,7 @@ use aokit_shaders::gtao::GtaoParams;
 use aokit_shaders::gtao::main_pass::arc_integral;
 use aokit_shaders::gtao::settings::GTAO;
 
-/// Spec §1.6 / issue: the Hilbert index visits every cell of the 64×64 tile exactly once, and
+/// Spec gtao-raymarch-hybrid §1.6: the Hilbert index visits every cell of the 64×64 tile exactly once, and
 /// consecutive indices are unit steps apart.
 #[test]
 fn hilbert_index_visits_every_cell_once_with_unit_steps() {
@@ -108,9 +108,9 @@ fn stats(frame: &Frame, ao: &[f32]) -> (f64, f32) {
 
 /// An unoccluded infinite plane has visibility 1: seen head-on and at 45°, the denoised output
 /// averages ≥ 0.985 and no pixel falls below 0.95. Not exactly 1: 8-bit storage with the 1.5
-/// headroom quantizes to 1.5/255, the fast acos/sqrt of spec §1.7 are approximations, and where
+/// headroom quantizes to 1.5/255, the fast acos/sqrt of spec gtao-raymarch-hybrid §1.7 are approximations, and where
 /// the view direction is far from the normal (image corners) three slices with the projected-
-/// normal fudge of §2.6.3 step 8 estimate the cosine integral only roughly (measured: mean
+/// normal fudge of gtao-raymarch-hybrid §2.6.3 step 8 estimate the cosine integral only roughly (measured: mean
 /// 0.993, minimum 0.957 at the corner of the head-on view).
 #[test]
 fn an_infinite_plane_is_unoccluded() {

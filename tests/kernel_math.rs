@@ -33,7 +33,7 @@ fn van_der_corput(mut i: u32) -> f64 {
 
 #[test]
 fn vao_radii_follow_inversion_sampling_of_the_chord_pdf() {
-    // Spec §4.2: ρ_i = sqrt(1 − ψ_i^(2/3)), ψ_i = VdC(8 + i); the table is rounded to 6 decimals.
+    // Spec svao-raysd §4.2: ρ_i = sqrt(1 − ψ_i^(2/3)), ψ_i = VdC(8 + i); the table is rounded to 6 decimals.
     let expected_psi = [1.0, 9.0, 5.0, 13.0, 3.0, 11.0, 7.0, 15.0].map(|k| k / 16.0);
     for i in 0..8 {
         let psi = van_der_corput(8 + i as u32);
@@ -46,7 +46,7 @@ fn vao_radii_follow_inversion_sampling_of_the_chord_pdf() {
 /// HBAO+ kernel tables (spec svao-raysd §4.5): radii ρ_i = 2·asin(ψ_i^1.25)/π with
 /// ψ_i = VdC(8 + i), half-chords sqrt(1 − ρ_i²) (hemisphere clipping as for VAO) and weights
 /// pdf_i = 0.9·(1 − ρ_i)^1.5, each recomputed in f64 here; the tables are f32, so within 1e-7.
-/// The spec's listed radii (§4.2 table, 17 digits) are checked too.
+/// The spec's listed radii (svao-raysd §4.2 table, 17 digits) are checked too.
 #[test]
 fn hbao_tables_follow_their_formulas() {
     use aokit_shaders::common::tables::{HBAO_HALF_CHORDS, HBAO_PDFS, HBAO_RADII};
@@ -78,7 +78,7 @@ fn hbao_tables_follow_their_formulas() {
 
 #[test]
 fn rotation_table_matches_spec_angles() {
-    // Spec §4.1.1: Bayer ranks k, texel floor(k·255/16), ξ = texel/255·2·3.141.
+    // Spec svao-raysd §4.1.1: Bayer ranks k, texel floor(k·255/16), ξ = texel/255·2·3.141.
     let ranks = [[0, 8, 2, 10], [12, 4, 14, 6], [3, 11, 1, 9], [15, 7, 13, 5]];
     let listed = [
         [0.000000, 3.128682, 0.763694, 3.917012],
@@ -126,7 +126,7 @@ fn sd_jitter_tables_are_latin_hypercubes() {
         vec2(SD_JITTER_SCRAMBLED[9][0], SD_JITTER_SCRAMBLED[9][1])
     );
     assert_eq!(sd_jitter(uvec2(5, 6), JitterTable::None as u32, 0), vec2(0.5, 0.5));
-    // Spec §7.2 lists idx 13 = (0.44085410237312317, 0.011881716549396515).
+    // Spec svao-raysd §7.2 lists idx 13 = (0.44085410237312317, 0.011881716549396515).
     assert_eq!(SD_JITTER_SCRAMBLED[13], [0.440_854_1_f64 as f32, 0.011_881_717_f64 as f32]);
 }
 
@@ -212,7 +212,7 @@ proptest! {
 
 #[test]
 fn normal_codec_reference_bytes() {
-    // Spec §1 worked by hand: +Z → p = (0, 0) → bytes (0, 0).
+    // Spec svao-raysd §1 worked by hand: +Z → p = (0, 0) → bytes (0, 0).
     assert_eq!(encode_normal(vec3(0.0, 0.0, 1.0)), 0);
     // +X: p = (1, 0) → 127 in byte 0.
     assert_eq!(encode_normal(vec3(1.0, 0.0, 0.0)), 127);
@@ -228,7 +228,7 @@ fn normal_codec_reference_bytes() {
 
 #[test]
 fn guard_band_widens_the_frustum_at_the_same_focal_length() {
-    // 1920×1080 with g = 64 → 2048×1208 (spec §1); tan of the half fov scales with pixels.
+    // 1920×1080 with g = 64 → 2048×1208 (spec svao-raysd §1); tan of the half fov scales with pixels.
     let cam = Camera::look_at(Vec3::ZERO, -Vec3::Z, Vec3::Y, 60f32.to_radians(), uvec2(1920, 1080), 64, 0.1, 100.0);
     assert_eq!(cam.view.size(), uvec2(2048, 1208));
     let ty = (30f64.to_radians()).tan() * 1208.0 / 1080.0;

@@ -1,4 +1,4 @@
-//! The CPU's eight-lane drivers (issue 14: SIMD across pixels, `aokit_shaders::common::lanes`)
+//! The CPU's eight-lane drivers (SIMD across pixels, `aokit_shaders::common::lanes`)
 //! against the same kernels run one pixel at a time, as the GPU runs them. Where the lanes use
 //! only IEEE-exact operations (add, mul, div, sqrt, compares) the two must agree bit for bit:
 //! VAO, SVAO pass 1, the ray march and XeGTAO's denoiser. The blur's weights, XeGTAO's slices

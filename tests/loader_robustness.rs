@@ -1,4 +1,4 @@
-//! No byte sequence crashes a scene loader (issue 12): mutated bytes of real scene files (the fuzz
+//! No byte sequence crashes a scene loader: mutated bytes of real scene files (the fuzz
 //! seeds under `fuzz/seeds/`: the Cornell box, cut-down Sponza and kitchen, the oak tree, as OBJ
 //! (+MTL), PLY ascii/binary/gzip, glTF and GLB) are fed to every loader, and each load must
 //!

@@ -21,7 +21,7 @@ fn techniques() -> Vec<(String, Technique)> {
         .iter()
         .map(|t| {
             let spec = if t.name() == "groundtruth" { "groundtruth:spp=4".into() } else { t.name().to_string() };
-            let technique = Technique::parse(&spec, &Default::default()).unwrap();
+            let technique = Technique::parse(&spec).unwrap();
             (spec, technique)
         })
         .collect()
@@ -66,20 +66,20 @@ fn without_acceleration_structures_screen_space_runs_and_ray_tracing_fails_first
 #[test]
 fn ray_queries_and_pipelines_each_need_their_own_extension() {
     let (scene, frame) = common::builtin_frame("cornell", 64, 48, 8);
-    let raysd = Technique::parse("raysd", &Default::default()).unwrap();
+    let raysd = Technique::parse("raysd").unwrap();
     let Some(vk) = hiding(&["VK_KHR_ray_query"]) else { return };
     assert!(vk.gpu.has_ray_tracing() && !vk.gpu.has_ray_query());
     vk.frame(&scene, &frame, &raysd, false).expect("pipelines need no ray queries");
     vk.set_rt_mode(RtMode::Query);
     let e = vk.frame(&scene, &frame, &raysd, false).unwrap_err().to_string();
-    assert!(e.contains("lacks VK_KHR_ray_query") && e.contains("--rt-mode pipeline"), "{e}");
+    assert!(e.contains("lacks VK_KHR_ray_query") && e.contains("RtMode::Pipeline"), "{e}");
     common::assert_validation_clean(&vk);
 
     // Ray queries need no ray-tracing pipeline: a device without one runs the query variant.
     let Some(vk) = hiding(&["VK_KHR_ray_tracing_pipeline"]) else { return };
     assert!(!vk.gpu.has_ray_tracing() && vk.gpu.has_ray_query());
     let e = vk.frame(&scene, &frame, &raysd, false).unwrap_err().to_string();
-    assert!(e.contains("lacks VK_KHR_ray_tracing_pipeline") && e.contains("--rt-mode query"), "{e}");
+    assert!(e.contains("lacks VK_KHR_ray_tracing_pipeline") && e.contains("RtMode::Query"), "{e}");
     vk.set_rt_mode(RtMode::Query);
     let (run, _) = vk.frame(&scene, &frame, &raysd, false).expect("ray queries need no pipeline extension");
     assert!(run.ao_final.iter().all(|a| a.is_finite()));

@@ -1,4 +1,4 @@
-//! Packet traversal (issue 14): camera rays traced as 4×2 packets (`SceneBvh::closest_hits`,
+//! Packet traversal: camera rays traced as 4×2 packets (`SceneBvh::closest_hits`,
 //! what the CPU G-buffer casts) get, ray by ray, the same triangle and the same distance as the
 //! single-ray traversal (`closest_hit`), on real scenes, with and without the alpha test; and the
 //! G-buffer cast with packets is the single-ray G-buffer bit for bit.

@@ -13,7 +13,7 @@ use aokit_shaders::svao::settings::{RAYSD, RAYSVAO, SDSVAO};
 /// with probability at most 0.1 % (Bonferroni over its comparisons), i.e. 99.9 % confidence.
 const FAMILY_ALPHA: f64 = 0.001;
 
-/// Spec §8: the N = 4 LUT lists the masks by popcount then value; `I = [0, 1, 5, 11, 15]`.
+/// Spec svao-raysd §8: the N = 4 LUT lists the masks by popcount then value; `I = [0, 1, 5, 11, 15]`.
 #[test]
 fn lut_and_strata_match_the_spec() {
     let lut: Vec<u32> = (0..16).map(|i| mask_lut(4, i)).collect();

@@ -39,7 +39,7 @@ fn check_scene(vk: &aokit::render::VulkanRenderer, name: &str, min_occluded: f64
     let view = frame.camera.view;
     let inner = |ao: &[f32]| aokit::output::crop_inner(&view, ao);
     for spec in ["raysd", "raysvao", "groundtruth:spp=32", "hybrid"] {
-        let technique = Technique::parse(spec, &Default::default()).unwrap();
+        let technique = Technique::parse(spec).unwrap();
         vk.set_rt_mode(RtMode::Pipeline);
         let pipeline = vk.run(&scene, &frame, &gbuffer, &technique).unwrap();
         vk.set_rt_mode(RtMode::Query);

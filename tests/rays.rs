@@ -1,4 +1,4 @@
-//! `aokit rays` (issue 14, bench/rays_vs_embree.sh): the dumped files have the documented types
+//! `aokit rays` (bench/rays_vs_embree.sh): the dumped files have the documented types
 //! and sizes, the dumped AO rays are exactly the ground truth's (per pixel, its AO from the dumped
 //! answers equals the ground-truth kernel's), the answers and the reported fractions match an
 //! independent brute-force recount over every triangle, and bad input gets a one-line error.

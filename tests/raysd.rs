@@ -1,5 +1,5 @@
 //! Ray-SD on the CPU: reservoir statistics (spec svao-raysd §7.3), MAX_COUNT acceptance under
-//! any-hit semantics, interval coverage (§5, §7.1, §9), hit-order independence of the result,
+//! any-hit semantics, interval coverage (svao-raysd §5, §7.1, §9), hit-order independence of the result,
 //! and the quality ordering vao < raysd ≤ raysvao on a real scene.
 
 mod common;
@@ -71,7 +71,7 @@ fn payload(layers: u32, max_count: u32) -> SdPayload {
     }
 }
 
-/// Spec §7.3 / issue: with z-cull out of play (every new hit nearer than all before), hit `k`
+/// Spec svao-raysd §7.3: with z-cull out of play (every new hit nearer than all before), hit `k`
 /// of a sequence of `count` hits ends in the payload with probability p = min(1, N/count). The
 /// random numbers are the Wyman hash of random barycentrics, as the any-hit computes them.
 ///
@@ -137,7 +137,7 @@ fn reservoir_keeps_every_hit_with_probability_n_over_count() {
     assert!(p_total >= FAMILY_ALPHA / 2.0, "summed χ² = {total:.1} with {total_df} df: p = {p_total:.2e}");
 }
 
-/// Brute-force oracle of the final payload (spec §7.3 written independently): every reservoir
+/// Brute-force oracle of the final payload (spec svao-raysd §7.3 written independently): every reservoir
 /// choice `floor(u·count) = j` for `j ∈ [0, count)` is equally likely; enumerate all of them.
 fn oracle(zs: &[f32], layers: usize) -> HashMap<Vec<u32>, f64> {
     fn walk(zs: &[f32], layers: usize, k: usize, slots: Vec<f32>, prob: f64, out: &mut HashMap<Vec<u32>, f64>) {
@@ -214,7 +214,7 @@ fn reservoir_with_z_cull_matches_a_brute_force_oracle() {
     }
 }
 
-/// MAX_COUNT (spec §7.3, §15.6): from the hit that brings `count` to MAX_COUNT on, every hit is
+/// MAX_COUNT (spec svao-raysd §7.3, §15.6): from the hit that brings `count` to MAX_COUNT on, every hit is
 /// accepted (tMax shrinks), so later reported hits are only nearer ones. Checked over shuffled
 /// hit orders against a reservoir written here from the spec's listing, fed the same reported
 /// hits: `count` is the number of hits reported so far (not the payload's own counter), the
@@ -302,7 +302,7 @@ fn sd_frame(frame: &aokit::frame::Frame, divisor: u32) -> aokit_shaders::svao::S
     SdOptions { divisor, ..Default::default() }.frame(&frame.desc(), Secondary::StochasticDepth)
 }
 
-/// Spec §5/§7.1/§9: every flagged sample of pass 1 requests the SD texel pass 2 reads,
+/// Spec svao-raysd §5/§7.1/§9: every flagged sample of pass 1 requests the SD texel pass 2 reads,
 /// `clamp(floor(uv·L) + sg, 0, L + 2sg − 1)` (computed here), and the texel's interval covers
 /// every distance the halo model needs there, `[|P| − min(z, (1+τ)R + h), |P| − sphereEnd]`
 /// (z = +∞ off screen). And it is tight: over ALL flagged samples of the image, each requested
@@ -323,7 +323,7 @@ fn pass_2_needs_lie_inside_the_texel_interval(divisor: u32) {
     let renderer = CpuRenderer::new(&scene);
     let (g, _) = renderer.gbuffer(&frame, &aokit_cpu::no_progress);
     let svao = sd_frame(&frame, divisor);
-    assert_eq!(svao.params.sd_guard, 512 / divisor, "SD guard band floor(512/div) (spec §3)");
+    assert_eq!(svao.params.sd_guard, 512 / divisor, "SD guard band floor(512/div) (spec svao-raysd §3)");
     let params: &SvaoParams = &svao.params;
     let pass1 = run_pass1(params, &g.depth, &g.normals, &[], &aokit_cpu::no_progress);
     let view = &params.vao.view;
@@ -412,7 +412,7 @@ fn sd_map_result_does_not_depend_on_hit_order() {
     assert!(m < 1e-4, "AO from shuffled hit orders differs: MSE {m:.2e}");
 }
 
-/// Issue 3's quality claim at test size: against Ray-SVAO, Ray-SD (¼, N = 4) has at most ⅛ of
+/// The quality requirement on Ray-SD at test size: against Ray-SVAO, Ray-SD (¼, N = 4) has at most ⅛ of
 /// VAO's MSE, and MSE does not grow from N = 2 to 4 to 8.
 #[test]
 fn raysd_error_is_a_fraction_of_vao_error_and_falls_with_layers() {

@@ -18,7 +18,7 @@ use aokit_shaders::raymarch::kernel::{best_candidate, vogel};
 use aokit_shaders::raymarch::march;
 use aokit_shaders::raymarch::settings::RAYMARCH;
 
-/// Spec §3.3: best-candidate and Vogel points lie in the unit disk; best-candidate is
+/// Spec gtao-raymarch-hybrid §3.3: best-candidate and Vogel points lie in the unit disk; best-candidate is
 /// deterministic and well spread (its closest pair is more than twice as far apart as the
 /// expected closest pair of uniform random points, ≈ 0.56/N for N points in the unit disk).
 #[test]
@@ -75,7 +75,7 @@ fn occluder_distance_interpolates_the_crossing() {
     }
 }
 
-/// Eq. 2 on occluding geometry, by hand (spec §3.4 steps 3–9). A 64×64 target without guard,
+/// Eq. 2 on occluding geometry, by hand (spec gtao-raymarch-hybrid §3.4 steps 3–9). A 64×64 target without guard,
 /// tan of the half fov 0.5 on both axes (so `u = 0.5 + x/z`): a fronto-parallel floor at depth
 /// z0 = 4 and, from column 50 on, a block whose top is at z1 = 3 (nearer the camera); every
 /// G-buffer normal faces the camera. Pixel p = (48, 32) lies on the floor at
@@ -92,7 +92,7 @@ fn occluder_distance_interpolates_the_crossing() {
 ///   every step is over the floor (columns 40–48) and in front of it, no hit.
 ///
 /// With R = 1, S = 4 steps at t_j = (j − ξ₂)/4 and α = 2: Binary A = ((0 + 0 + 1 + 1)/4)² =
-/// 0.25, Linear A = ((2·Δ̃ + 2)/4)². ξ = (ξ₁, ξ₂) is the pixel's noise (spec §1.6, pinned against
+/// 0.25, Linear A = ((2·Δ̃ + 2)/4)². ξ = (ξ₁, ξ₂) is the pixel's noise (spec gtao-raymarch-hybrid §1.6, pinned against
 /// its closed form in tests/gtao.rs), θ = 2π·ξ₁.
 #[test]
 fn raymarch_eq2_on_a_step_matches_the_hand_computation() {

@@ -30,7 +30,7 @@ fn every_technique_renders_many_frames_without_messages_or_growth() {
     let mut runs = Vec::new();
     for t in aokit_shaders::techniques::TECHNIQUES {
         let spec = if t.name() == "groundtruth" { "groundtruth:spp=4".to_string() } else { t.name().to_string() };
-        let technique = Technique::parse(&spec, &Default::default()).unwrap();
+        let technique = Technique::parse(&spec).unwrap();
         let traced = technique.graph(&frame.desc()).unwrap().traces_rays();
         for mode in if traced { &[RtMode::Pipeline, RtMode::Query][..] } else { &[RtMode::Pipeline][..] } {
             runs.push((spec.clone(), technique.clone(), *mode));

@@ -1,6 +1,6 @@
-//! The spec rows of issue 13 item 5: 16- and 32-sample VAO and HBAO+ kernels (spec svao-raysd
-//! §2, §4.2, §4.5), SD-map divisors 8 and 16 (§2, §3, §6–§7) and the HBAO+ variant of Ray-SVAO
-//! (§10). Their tables against the formulas (recomputed here in f64, never copied from the
+//! Spec rows beyond the defaults: 16- and 32-sample VAO and HBAO+ kernels (spec svao-raysd
+//! §2, §4.2, §4.5), SD-map divisors 8 and 16 (svao-raysd §2, §3, §6–§7) and the HBAO+ variant of Ray-SVAO
+//! (svao-raysd §10). Their tables against the formulas (recomputed here in f64, never copied from the
 //! implementation), a convergence property on an analytic plane, the settings rows, and CPU ≡
 //! Vulkan agreement of every new row (validation layer on) with its figures printed: max |Δ|,
 //! the fraction of inner pixels over the tolerance, MSE.
@@ -44,7 +44,7 @@ fn kernel_samples() -> impl Iterator<Item = (u32, u32)> {
     KERNEL_SAMPLE_COUNTS.into_iter().flat_map(|n| (0..n).map(move |i| (n, i)))
 }
 
-/// Spec §4.2 and §4.5 for N = 8, 16, 32: ψ = VdC(N + i); VAO ρ = sqrt(1 − ψ^(2/3)) (8 samples:
+/// Spec svao-raysd §4.2 and §4.5 for N = 8, 16, 32: ψ = VdC(N + i); VAO ρ = sqrt(1 − ψ^(2/3)) (8 samples:
 /// the reference's 6-decimal literals, within 5e-7; 16 and 32: the f64 formula rounded to f32,
 /// within f32 rounding), half-chords sqrt(1 − ρ²), HBAO+ ρ = 2·asin(ψ^1.25)/π, its half-chords
 /// and pdf = 0.9·(1 − ρ)^1.5, disc directions α = (i/N)·2·3.141. The tables hold one entry per
@@ -145,9 +145,9 @@ fn floor_frame(radius: f32) -> (Scene, Frame) {
 }
 
 /// The continuous VAO value of a plane through the shaded point whose normal makes cos θ = c
-/// with the sphere axis n̂ (spec §4.2–§4.3): A = 2·∫ visible chord dA / (4π/3) over the unit
+/// with the sphere axis n̂ (spec svao-raysd §4.2–§4.3): A = 2·∫ visible chord dA / (4π/3) over the unit
 /// disc, the visible chord `h − clamp(−x·tan θ, −h, h)` above the plane, and chords with no more
-/// than 10 % above it dropped (§4.2 validity). Integrated in f64 on a polar grid.
+/// than 10 % above it dropped (svao-raysd §4.2 validity). Integrated in f64 on a polar grid.
 fn plane_vao(c: f64) -> f64 {
     let tan = (1.0 - c * c).sqrt() / c;
     let (nr, nphi) = (400, 400);
@@ -223,13 +223,13 @@ fn svao_record(graph: &aokit_shaders::graph::Graph) -> Option<aokit_shaders::sva
 }
 
 fn parse(spec: &str) -> Result<Technique, String> {
-    Technique::parse(spec, &Default::default())
+    Technique::parse(spec)
 }
 
 /// The new rows are read by every technique of the stenciled family and reach the graph's
 /// constants: `ao-samples` 8/16/32 → `sample_set` 0/1/2 (plain VAO with 16/32 samples runs the
 /// stenciled pass 1), `sd-res` eighth/sixteenth → divisor 8/16 with the SD guard band
-/// floor(512/div) = 64/32 texels and ceil(W/div)×ceil(H/div) low-res texels (spec §2, §3),
+/// floor(512/div) = 64/32 texels and ceil(W/div)×ceil(H/div) low-res texels (spec svao-raysd §2, §3),
 /// `raysvao:kernel=hbao` → the HBAO+ kernel with R × 1.5; other values are refused by name.
 #[test]
 fn the_new_rows_reach_every_graph_and_bad_values_are_refused() {
@@ -248,7 +248,7 @@ fn the_new_rows_reach_every_graph_and_bad_values_are_refused() {
             }
         }
         let err = parse(&format!("{name}:ao-samples=12")).unwrap_err();
-        assert!(err.contains("--ao-samples 12: expected 8|16|32"), "{err}");
+        assert!(err.contains("ao-samples 12: expected 8|16|32"), "{err}");
     }
     for name in ["raysd", "hbao-sd", "sdsvao"] {
         for (value, div) in [("quarter", 4u32), ("eighth", 8), ("sixteenth", 16)] {
@@ -262,7 +262,7 @@ fn the_new_rows_reach_every_graph_and_bad_values_are_refused() {
             assert_eq!(ray_max.size.len(&frame.camera.view), texels, "{name} sd-res={value}: interval buffer size");
         }
         let err = parse(&format!("{name}:sd-res=32")).unwrap_err();
-        assert!(err.contains("--sd-res 32: expected full|half|quarter|eighth|sixteenth"), "{err}");
+        assert!(err.contains("sd-res 32: expected full|half|quarter|eighth|sixteenth"), "{err}");
     }
     for (spec, kernel, scale) in [("raysvao", 0, 1.0), ("raysvao:kernel=hbao", 1, 1.5)] {
         let graph = parse(spec).unwrap().graph(&desc).unwrap();
@@ -442,7 +442,7 @@ fn raysvao_hbao_vulkan_agrees_with_cpu_sim_in_both_rt_modes() {
     common::assert_validation_clean(&vk);
 }
 
-/// Against the ray-traced references of their kernels (Ray-SVAO, spec §10 and §14; for HBAO+
+/// Against the ray-traced references of their kernels (Ray-SVAO, spec svao-raysd §10 and §14; for HBAO+
 /// `raysvao:kernel=hbao`), on the CPU at 384×216: the SD map refines — Ray-SD and HBAO-SD at ¼
 /// resolution have at most ⅛ of the unrefined kernel's MSE — and a coarser map is a worse
 /// approximation: MSE grows from ¼ to ⅛ to 1/16 resolution and stays below the unrefined one.

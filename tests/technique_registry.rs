@@ -6,7 +6,7 @@
 mod common;
 
 use aokit::cli::TechniqueArgs;
-use aokit::technique::{CliSettings, Row, TECHNIQUES, Technique};
+use aokit::technique::{Describe, Row, TECHNIQUES, Technique};
 use aokit_shaders::graph::FrameDesc;
 use aokit_shaders::technique::Kind;
 use clap::{Args, FromArgMatches};
@@ -60,7 +60,7 @@ fn every_declared_key_has_a_row_and_names_are_unique() {
         }
         // The defaults are legal.
         Technique::named(t.name()).unwrap().set("x", "1").unwrap_err();
-        Technique::parse(t.name(), &CliSettings::default()).unwrap();
+        Technique::parse(t.name()).unwrap();
     }
 }
 
@@ -181,9 +181,9 @@ fn flags_come_from_the_rows_and_apply_where_they_are_read() {
     assert!(e.contains("--sd-layers not read by gtao, vao"), "{e}");
     // Bad values name the flag, on one line.
     let e = parse_cli(&["--sd-layers", "9"]).unwrap().technique("raysd").unwrap_err();
-    assert!(e.contains("--sd-layers 9: expected 1–8") && !e.contains('\n'), "{e}");
+    assert!(e.contains("sd-layers 9: expected 1–8") && !e.contains('\n'), "{e}");
     let e = parse_cli(&["--sd-layers", "3"]).unwrap().technique("raysd").unwrap_err();
-    assert!(e.contains("--sd-layers 3 is not 1, 2, 4 or 8"), "{e}");
+    assert!(e.contains("sd-layers 3 is not 1, 2, 4 or 8"), "{e}");
     assert!(parse_cli(&["--preset", "extreme"]).is_err());
     let e = parse_cli(&[]).unwrap().technique("raysd:bogus=1").unwrap_err();
     assert!(e.contains("raysd has no option 'bogus'"), "{e}");

@@ -1,4 +1,4 @@
-//! Temporal behaviour (issue 13 item 3): the frame index in every stochastic technique's noise,
+//! Temporal behaviour: the frame index in every stochastic technique's noise,
 //! the temporal accumulation appended to any technique's graph (CPU and Vulkan), and the
 //! temporal-instability metric of `aokit path`.
 
@@ -141,7 +141,7 @@ fn static_camera_flickers_only_with_animated_noise() {
     let frames_animated = static_frames(&base, 3, true, None);
     let g = gbuffers(cpu, &frames_static);
     for (name, stochastic) in [("gtao", true), ("groundtruth:spp=8", true), ("raymarch", true), ("vao", false)] {
-        let t = Technique::parse(name, &Default::default()).unwrap();
+        let t = Technique::parse(name).unwrap();
         let run = |frames| {
             let inputs = PathInputs { renderer: &renderer, scene: &scene, frames, gbuffers: &g };
             let measure = Measure { reference: None, tolerance: DEPTH_TOLERANCE, images: false, keep_ao: false };
@@ -219,10 +219,10 @@ fn the_accumulation_appends_to_every_technique() {
             assert!(aokit_cpu::graph::kernel(pass.entry).is_some(), "{}: no CPU kernel", pass.entry);
         }
     }
-    // Out-of-range settings are refused with the flag's name.
+    // Out-of-range settings are refused with the setting named.
     let bad = Frame { temporal: Some(TemporalSettings { alpha: 0.0, ..Default::default() }), ..base.clone() };
     let err = Technique::named("vao").unwrap().graph(&bad.desc()).unwrap_err();
-    assert!(err.contains("--temporal-alpha"), "{err}");
+    assert!(err.contains("temporal alpha 0"), "{err}");
 }
 
 /// The accumulation on the CPU: the first frame (no history) is the technique's output bit for
@@ -275,7 +275,7 @@ fn the_accumulation_reduces_the_instability_of_a_noisy_technique() {
     let Renderer::Cpu(cpu) = &renderer else { unreachable!() };
     let g = gbuffers(cpu, &off);
     let run = |frames, technique: &str, reference: Option<&[Vec<f32>]>| {
-        let t = Technique::parse(technique, &Default::default()).unwrap();
+        let t = Technique::parse(technique).unwrap();
         let inputs = PathInputs { renderer: &renderer, scene: &scene, frames, gbuffers: &g };
         let measure = Measure { reference, tolerance: DEPTH_TOLERANCE, images: false, keep_ao: true };
         run_path(inputs, &t, measure, &no_progress, &|| ()).unwrap()

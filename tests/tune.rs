@@ -7,7 +7,7 @@ mod common;
 
 use aokit::frame::{CameraChoice, FrameRequest};
 use aokit::render::CpuRenderer;
-use aokit::technique::{CliSettings, Technique};
+use aokit::technique::{Describe, Technique};
 use aokit::tune::{Device, Metric, TuneSet, parameters, scene_views, spec};
 use aokit_shaders::technique::Kind;
 use std::path::PathBuf;
@@ -26,7 +26,7 @@ fn request(width: u32, height: u32, guard: u32) -> FrameRequest {
 }
 
 fn technique(spec: &str) -> Technique {
-    Technique::parse(spec, &CliSettings::default()).unwrap()
+    Technique::parse(spec).unwrap()
 }
 
 /// A tune set on the CPU without the disk cache.

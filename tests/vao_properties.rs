@@ -32,7 +32,7 @@ fn sample(h: f32, end: f32) -> LineSample {
 
 #[test]
 fn halo_visibility_is_the_piecewise_closed_form() {
-    // Spec §4.3 with R = 1, τ = 0.5, h = 0.6, hemisphere end = −0.2: the chord spans
+    // Spec svao-raysd §4.3 with R = 1, τ = 0.5, h = 0.6, hemisphere end = −0.2: the chord spans
     // [−0.2, 0.6] (length 0.8, pdf 1.2); constant zone (0.6, 1.5]; falloff (1.5, 2.1].
     let (r, tau, h, end) = (1.0, 0.5, 0.6, -0.2);
     let s = sample(h, end);
@@ -65,7 +65,7 @@ fn fronto_parallel_plane_is_nearly_unoccluded() {
     // A plane facing the camera occludes nothing. On the view axis (n̂ ∥ N) every chord is cut
     // exactly at the plane, v_i = ½ and A = (2/8)·8·½ = 1. Off axis the plane is tilted against
     // n̂: the 8 samples' unequal radii no longer cancel and samples with less than 10 % of their
-    // chord above the plane are dropped (spec §4.2, §15.2), so A dips a little below 1. The
+    // chord above the plane are dropped (spec svao-raysd §4.2, §15.2), so A dips a little below 1. The
     // guard band (32 px) covers the screen radius (≈ 26 px) as the spec intends.
     let cam = Camera::look_at(Vec3::ZERO, -Vec3::Z, Vec3::Y, 40f32.to_radians(), uvec2(128, 96), 32, 0.01, 100.0);
     let g = plane_gbuffer(&cam.view, 10.0);
@@ -81,8 +81,8 @@ fn fronto_parallel_plane_is_nearly_unoccluded() {
 }
 
 /// Background pixels (depth at or beyond the far plane, or NaN) are unshaded (AO = 1) even where
-/// the screen radius is large, so the `rpx < 0.5` exit (spec §4.1 step 4) cannot be what keeps
-/// them at 1: at depth 100 with R = 50 the screen radius is ≈ 22 px (computed here from §4.1
+/// the screen radius is large, so the `rpx < 0.5` exit (spec svao-raysd §4.1 step 4) cannot be what keeps
+/// them at 1: at depth 100 with R = 50 the screen radius is ≈ 22 px (computed here from svao-raysd §4.1
 /// step 2). Half the pixels are foreground 40 units in front of the sky, well inside R, so a
 /// sky pixel that were shaded would be darkened, which the same geometry with the sky at 99.9
 /// (a valid depth, just inside the far plane) confirms.
@@ -91,7 +91,7 @@ fn sky_pixels_are_unshaded_even_with_a_large_screen_radius() {
     let cam = Camera::look_at(Vec3::ZERO, -Vec3::Z, Vec3::Y, 40f32.to_radians(), uvec2(32, 32), 4, 0.01, 100.0);
     let view = cam.view;
     let radius = 50.0f32;
-    // §4.1 step 2 by hand: rpx = R·H/(2·ty·d), ty = tan(20°)·40/32, the same on both axes.
+    // svao-raysd §4.1 step 2 by hand: rpx = R·H/(2·ty·d), ty = tan(20°)·40/32, the same on both axes.
     let ty = (20f64.to_radians()).tan() * 40.0 / 32.0;
     let rpx = radius as f64 * 40.0 / (2.0 * ty * 100.0);
     assert!(rpx > 20.0, "the test needs a screen radius well above half a pixel: {rpx}");
@@ -125,7 +125,7 @@ fn sky_pixels_are_unshaded_even_with_a_large_screen_radius() {
     }
 }
 
-/// A screen radius below half a pixel leaves the pixel unshaded (spec §4.1 step 4).
+/// A screen radius below half a pixel leaves the pixel unshaded (spec svao-raysd §4.1 step 4).
 #[test]
 fn sub_pixel_radii_are_unshaded() {
     let cam = Camera::look_at(Vec3::ZERO, -Vec3::Z, Vec3::Y, 40f32.to_radians(), uvec2(32, 32), 4, 0.01, 100.0);
@@ -251,7 +251,7 @@ fn interior(view: &aokit_shaders::common::ViewParams, v: &[f32], margin: u32) ->
         .collect()
 }
 
-/// Spec §12 on a flat depth: a constant stays constant, and white noise is smoothed by the
+/// Spec svao-raysd §12 on a flat depth: a constant stays constant, and white noise is smoothed by the
 /// separable Gaussian `w_d = 2^(−0.08·d²)`, d = −4..4. Per pass the variance of i.i.d. noise
 /// shrinks by Σw²/(Σw)²: Σw = 1 + 2·(0.94606 + 0.80107 + 0.60709 + 0.41180) = 6.53203,
 /// Σw² = 1 + 2·(0.89503 + 0.64171 + 0.36856 + 0.16958) = 5.14976, ratio 0.120694; two passes
@@ -313,7 +313,7 @@ fn blur_preserves_depth_edges() {
     assert!((mean - 0.9).abs() < 0.03, "right side of the edge: mean {mean}");
 }
 
-/// One output pixel of one direction against the weighted sum of spec §12 computed by hand.
+/// One output pixel of one direction against the weighted sum of spec svao-raysd §12 computed by hand.
 /// Depths along the direction at offsets −4..4: 9.96 9.95 9.98 9.99 |10.00| 10.03 10.02 10.06
 /// 10.20, AO 0.1 0.2 … 0.9. Slopes sL = 0.01, sR = 0.03: s = 0.01 (smaller magnitude); the
 /// positive side predicts z0 + 0.01·d, the negative side z0 − 0.01·d. Deviations: −3: −0.02,

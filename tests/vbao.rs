@@ -1,4 +1,4 @@
-//! Visibility-bitmask AO (spec vbao): the sector bits, the closed forms of §6 (plane, corner),
+//! Visibility-bitmask AO (spec vbao): the sector bits, the closed forms of vbao §6 (plane, corner),
 //! the thin occluder VBAO exists for, the T → ∞ equivalence with XeGTAO, and CPU ≡ Vulkan.
 
 mod common;
@@ -16,7 +16,7 @@ use aokit_shaders::vbao::{RULE_PAPER, RULE_TOUCH, WEIGHT_COSINE_BLENDER, WEIGHT_
 use aokit_shaders::vbao::{sector_bits, vbao_pixel};
 use std::f32::consts::PI;
 
-/// The §3 unit tests (Blender's), (lo, hi) → mask, hold under both rules; the rules differ
+/// The vbao §3 unit tests (Blender's), (lo, hi) → mask, hold under both rules; the rules differ
 /// where the interval straddles a sector edge without covering a whole sector.
 #[test]
 fn sector_bits_match_the_spec_table() {
@@ -171,7 +171,7 @@ fn pole_scene(w: f32, t_p: f32, g: f32) -> Scene {
 /// pole were a solid block reaching it, VBAO at its defaults (T = 0.5·R) lets the light behind
 /// the pole through. Against the 256-spp ground truth (exponent 1), VBAO's mean absolute error
 /// there is at most half of GTAO's, and below GTAO's with FinalValuePower 1 (measured: 0.028
-/// vs 0.100 and 0.056). Thicker samples darken monotonically toward GTAO's solid block (§6.4).
+/// vs 0.100 and 0.056). Thicker samples darken monotonically toward GTAO's solid block (vbao §6.4).
 #[test]
 fn behind_a_thin_pole_vbao_errs_at_most_half_as_much_as_gtao() {
     let radius = 1.0;
@@ -212,7 +212,7 @@ fn behind_a_thin_pole_vbao_errs_at_most_half_as_much_as_gtao() {
         mean(&gtao_linear)
     );
     assert!(e_vbao <= 0.5 * e_gtao && e_vbao < e_linear, "VBAO {e_vbao} vs GTAO {e_gtao} / {e_linear}");
-    // Thicker samples darken monotonically toward GTAO's solid-block answer (§6.4 table).
+    // Thicker samples darken monotonically toward GTAO's solid-block answer (vbao §6.4 table).
     let means: Vec<f64> = [0.1, 0.3, 0.5, 0.7].into_iter().map(|t| mean(&vbao_at(t))).collect();
     eprintln!("VBAO mean near the pole for T = 0.1, 0.3, 0.5, 0.7: {means:.3?}");
     assert!(means.windows(2).all(|m| m[1] < m[0]), "not monotone in T: {means:?}");

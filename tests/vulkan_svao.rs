@@ -35,7 +35,7 @@ fn raysd_vulkan_agrees_with_cpu_sim() {
     common::assert_validation_clean(&vk);
     let (dc, dv) = (debug(&c), debug(&v));
 
-    // Pass 1: full-target masks and AO (pass 1 also runs in part of the guard band, spec §5),
+    // Pass 1: full-target masks and AO (pass 1 also runs in part of the guard band, spec svao-raysd §5),
     // SD-size interval buffers; every pair must have the same, non-zero length.
     let view = frame.camera.view;
     let pixels = (view.size().x * view.size().y) as usize;

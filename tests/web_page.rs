@@ -8,7 +8,7 @@
 //! fails without it unless AOKIT_SKIP_CHROMIUM=1.
 
 use aokit::output::crop_inner;
-use aokit::technique::{CliSettings, Technique};
+use aokit::technique::Technique;
 use aokit_cpu::graph::{CpuExecutor, CpuInputs};
 use aokit_shaders::common::camera::Camera;
 use aokit_shaders::graph::FrameDesc;
@@ -273,7 +273,7 @@ fn web_page_runs_the_screen_space_techniques_in_chromium_and_agrees_with_cpu_sim
     let runs: Vec<String> = names.iter().cloned().chain(ALSO.iter().map(|s| s.to_string())).collect();
     let mut failures = Vec::new();
     for spec in &runs {
-        let technique = Technique::parse(spec, &CliSettings::default()).unwrap();
+        let technique = Technique::parse(spec).unwrap();
         let graph = technique.graph(&desc).unwrap();
         let mut cpu = CpuExecutor::new();
         let inputs = CpuInputs {

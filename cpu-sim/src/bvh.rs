@@ -1,6 +1,6 @@
 //! CPU ray casting, built once per scene over obvhs' CWBVH (Ylitie et al. 2017): closest-hit
 //! (single rays and 4×2 packets), occlusion and any-hit queries through its wide re-layout
-//! ([`wide`]); any-hit queries offer candidates in exactly obvhs' own traversal order (the
+//! (`wide`); any-hit queries offer candidates in exactly obvhs' own traversal order (the
 //! order the stochastic depth map's reservoir sees).
 
 mod wide;
@@ -77,7 +77,7 @@ impl SceneBvh {
     }
 
     /// [`SceneBvh::closest_hit`] of [`PACKET`] rays from one origin over one interval (camera
-    /// rays of a 4×2 pixel tile), traversed together ([`wide::WideBvh::closest_packet`]): per ray
+    /// rays of a 4×2 pixel tile), traversed together (`wide::WideBvh::closest_packet`): per ray
     /// the same triangle and distance as `closest_hit` (of hits at one distance the lowest BVH
     /// primitive, in both).
     pub fn closest_hits(
@@ -227,7 +227,7 @@ impl SceneBvh {
     /// Trace with any-hit semantics: `any_hit(t, triangle, barycentrics)` runs for EVERY
     /// triangle hit inside the current open interval `(t_min, t_max)`, in obvhs' CWBVH
     /// traversal order (depth first, ordered by the ray's octant, not sorted by distance;
-    /// [`wide::WideBvh::any_hit`]), exactly once per triangle. Inlined into the caller's loop:
+    /// `wide::WideBvh::any_hit`), exactly once per triangle. Inlined into the caller's loop:
     /// left to the compiler it became a call of its own per ray, and Ray-SVAO's rays ran 15 %
     /// slower (tower, alternating runs).
     #[inline(always)]
@@ -246,7 +246,7 @@ impl SceneBvh {
     }
 
     /// [`SceneBvh::trace_any_hit`] of the first `count` (≤ [`PACKET`]) rays of a packet from one
-    /// origin, each over its own interval, traced together ([`wide::WideBvh::any_hit_packet`]):
+    /// origin, each over its own interval, traced together (`wide::WideBvh::any_hit_packet`):
     /// `any_hit(ray, t, triangle, barycentrics)` gets each ray's candidates in the order
     /// `trace_any_hit` offers them (coherent rays, such as the SD map's, share most node tests).
     #[inline(always)]

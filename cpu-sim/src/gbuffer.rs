@@ -27,7 +27,7 @@ pub struct Surfaces<'a> {
     pub uvs: &'a [[Vec2; 3]],
     /// Material index of each triangle.
     pub materials: &'a [u32],
-    /// Alpha masks per material ([`alpha_test_passes`]).
+    /// Alpha masks per material (`alpha_test_passes`).
     pub mask_headers: &'a [AlphaMaskHeader],
     pub mask_texels: &'a [f32],
 }
@@ -102,7 +102,7 @@ pub fn ray_cast_gbuffer(bvh: &SceneBvh, surfaces: &Surfaces, camera: &Camera, pr
     GBufferImage { width: size.x, height: size.y, depth, normals }
 }
 
-/// The depth-peeled second layer (spec §11): per pixel, the nearest surface (alpha test
+/// The depth-peeled second layer (spec svao-raysd §11): per pixel, the nearest surface (alpha test
 /// included) whose linear depth exceeds the first layer's by more than `separation`; the far
 /// plane where there is none or the first layer is background.
 pub fn ray_cast_second_layer(

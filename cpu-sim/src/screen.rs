@@ -136,7 +136,7 @@ pub fn vao_x8(gbuffer: &GBufferSlices, params: &VaoParams, first: UVec2, ao: &mu
     }
 }
 
-/// One direction (`params.direction`) of the cross-bilateral blur (spec §12).
+/// One direction (`params.direction`) of the cross-bilateral blur (spec svao-raysd §12).
 /// Eight pixels of a row per call of the shader crate's lane-generic blur.
 pub fn run_blur_direction(params: &BlurParams, ao: &[f32], depth: &[f32]) -> Vec<f32> {
     for_inner_lanes(params.view.size(), params.view.guard, &crate::no_progress, |p, out| {
@@ -147,7 +147,7 @@ pub fn run_blur_direction(params: &BlurParams, ao: &[f32], depth: &[f32]) -> Vec
     })
 }
 
-/// The two-pass cross-bilateral blur (spec §12): horizontal then vertical.
+/// The two-pass cross-bilateral blur (spec svao-raysd §12): horizontal then vertical.
 pub fn run_blur(params: &BlurParams, ao: &[f32], depth: &[f32]) -> Vec<f32> {
     let pass = |direction: UVec2, input: &[f32]| run_blur_direction(&BlurParams { direction, ..*params }, input, depth);
     let horizontal = pass(uvec2(1, 0), ao);

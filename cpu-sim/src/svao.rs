@@ -38,7 +38,7 @@ impl Pass1 {
     }
 }
 
-/// AO pass 1 (spec §5) over the inner image, interval atomics as `AtomicU32`.
+/// AO pass 1 (spec svao-raysd §5) over the inner image, interval atomics as `AtomicU32`.
 /// `depth2`: the depth-peeled second layer, read only when `params.dual` is set.
 pub fn run_pass1(params: &SvaoParams, depth: &[f32], normals: &[u32], depth2: &[f32], progress: Progress) -> Pass1 {
     let view = &params.vao.view;
@@ -104,7 +104,7 @@ fn pass1_x8(
     }
 }
 
-/// The ray-traced SD map (spec §7) and the number of rays traced.
+/// The ray-traced SD map (spec svao-raysd §7) and the number of rays traced.
 #[derive(Clone, Debug)]
 pub struct SdMap {
     /// `N` normalized depths per SD texel (1 = empty), row-major over the SD size.
@@ -136,7 +136,7 @@ pub fn sd_band_order(width: u32, rows: u32) -> impl Iterator<Item = UVec2> {
         .flat_map(move |x0| (0..rows).flat_map(move |y| (x0..(x0 + SD_TILE.x).min(width)).map(move |x| uvec2(x, y))))
 }
 
-/// Trace one SD ray per SD texel (spec §7.1) with the shared reservoir any-hit (spec §7.3),
+/// Trace one SD ray per SD texel (spec svao-raysd §7.1) with the shared reservoir any-hit (spec svao-raysd §7.3),
 /// alpha test included: a band's traced rays, in [`sd_band_order`], in packets of [`PACKET`]
 /// consecutive ones ([`SceneBvh::trace_any_hit_packet`]: each ray's candidates come as a lone
 /// ray's would).
@@ -226,7 +226,7 @@ fn shuffle<T>(v: &mut [T], seed: u64) {
     }
 }
 
-/// AO pass 2 (spec §9) with any [`Refine`] source made per row.
+/// AO pass 2 (spec svao-raysd §9) with any [`Refine`] source made per row.
 fn run_pass2<R: Refine>(
     params: &SvaoParams,
     depth: &[f32],
@@ -257,7 +257,7 @@ fn run_pass2<R: Refine>(
     out
 }
 
-/// AO pass 2 from the SD map (spec §9).
+/// AO pass 2 from the SD map (spec svao-raysd §9).
 pub fn run_pass2_sd(
     params: &SvaoParams,
     depth: &[f32],
@@ -311,7 +311,7 @@ impl Drop for BvhRefine<'_> {
     }
 }
 
-/// Ray-SVAO pass 2 (spec §10): one traced ray per flagged sample. Returns the AO and the rays
+/// Ray-SVAO pass 2 (spec svao-raysd §10): one traced ray per flagged sample. Returns the AO and the rays
 /// traced.
 pub fn run_raysvao_pass2(
     bvh: &SceneBvh,
@@ -358,7 +358,7 @@ pub fn sd_ray_stats(frame: &SvaoFrame, depth: &[f32], normals: &[u32], ray_min: 
         .reduce(|| (0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
 }
 
-/// The raster SD map on the CPU (spec §8): for every requested SD texel, every surface along the
+/// The raster SD map on the CPU (spec svao-raysd §8): for every requested SD texel, every surface along the
 /// ray through the texel centre (what rasterization at SD resolution produces there) becomes a
 /// fragment for the shader crate's [`raster_fragment`] — alpha test, first-layer and interval
 /// discards, coverage mask — and each covered sample keeps the nearest depth (depth test LESS).

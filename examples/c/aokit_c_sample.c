@@ -317,7 +317,7 @@ static void bind(Pass *p, uint32_t slot, int resource) {
 
 /* --- Constants (manifest `structs` field docs and technique `settings` defaults). */
 
-/* VaoParams: the frame's radius, exponent, thickness; max_screen_radius 512 (spec §4.1). */
+/* VaoParams: the frame's radius, exponent, thickness; max_screen_radius 512 (spec svao-raysd §4.1). */
 static aokit_VaoParams vao_params(const Frame *f) {
     aokit_VaoParams p;
     memset(&p, 0, sizeof p);
@@ -329,7 +329,7 @@ static aokit_VaoParams vao_params(const Frame *f) {
     return p;
 }
 
-/* BlurParams: direction (1, 0) then (0, 1), sharpness 16 (spec §12). */
+/* BlurParams: direction (1, 0) then (0, 1), sharpness 16 (spec svao-raysd §12). */
 static aokit_BlurParams blur_params(const Frame *f, uint32_t dx, uint32_t dy) {
     aokit_BlurParams p;
     memset(&p, 0, sizeof p);

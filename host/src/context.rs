@@ -649,8 +649,8 @@ impl Gpu {
             format!(" (hidden: {})", info.hidden_extensions.join(", "))
         };
         let other = match mode {
-            RtMode::Pipeline if self.has_ray_query() => "; --rt-mode query uses ray queries instead",
-            RtMode::Query if self.has_ray_tracing() => "; --rt-mode pipeline uses ray-tracing pipelines instead",
+            RtMode::Pipeline if self.has_ray_query() => "; ray queries (RtMode::Query) would work instead",
+            RtMode::Query if self.has_ray_tracing() => "; ray-tracing pipelines (RtMode::Pipeline) would work instead",
             _ => "",
         };
         let what = match mode {
@@ -720,6 +720,7 @@ impl Gpu {
     /// Deliberately misuse the API once (a sampler with anisotropy although the
     /// `samplerAnisotropy` feature was not enabled) so tests can prove that validation messages
     /// reach [`Gpu::validation_messages`]. Harmless to the driver.
+    #[cfg(feature = "testing")]
     pub fn provoke_validation_error(&self) -> Result<(), GpuError> {
         let info = vk::SamplerCreateInfo::default().anisotropy_enable(true).max_anisotropy(4.0);
         let sampler = unsafe { self.device.create_sampler(&info, None)? };

@@ -10,6 +10,7 @@ use aokit_shaders::gbuffer::RasterParams;
 use aokit_shaders::glam::UVec2;
 use ash::vk;
 use gpu_allocator::MemoryLocation;
+use std::ffi::CStr;
 
 /// One de-indexed vertex: world position, its triangle's world face normal (w unused), texture
 /// coordinate and material index (for the alpha test).
@@ -32,7 +33,7 @@ pub struct RasterGBuffer {
     set_layout: vk::DescriptorSetLayout,
     layout: vk::PipelineLayout,
     pipeline: vk::Pipeline,
-    /// Same pipeline with the depth-peeling fragment shader (spec §11).
+    /// Same pipeline with the depth-peeling fragment shader (spec svao-raysd §11).
     peel_pipeline: vk::Pipeline,
 }
 
@@ -355,7 +356,7 @@ impl RasterGBuffer {
     /// Rasterize `vertices` (de-indexed triangles) into `(depth, normals)` storage buffers of the
     /// full target in a command buffer of its own (submits and waits); empty pixels hold depth =
     /// far and normal code 0. `masks` are the alpha masks per material (non-empty slices). With
-    /// `first_layer`, the depth-peeling pass of spec §11 against that linear depth. Returns the
+    /// `first_layer`, the depth-peeling pass of spec svao-raysd §11 against that linear depth. Returns the
     /// buffers and the GPU time of the pass in milliseconds.
     pub fn render(
         &self,
@@ -485,60 +486,67 @@ impl RasterFrame {
     }
 }
 
-/// The raster stochastic-depth pass (spec svao-raysd §8): the G-buffer's vertex shader and the
-/// coverage-mask fragment shader at SD resolution, no attachments (samples are written with
-/// atomics to a storage buffer).
-pub struct RasterSdPass {
+/// A raster pass without attachments, as a graph declares it (`PassKind::Raster`): a vertex
+/// shader over the scene's vertex stream, a fragment shader that writes storage buffers only
+/// (e.g. the raster stochastic depth map's atomics, svao-raysd §8), a dynamic viewport, the
+/// push constants to the vertex stage, every binding a storage buffer read by the fragment stage.
+pub struct AttachmentlessPass {
     pub(crate) set_layout: vk::DescriptorSetLayout,
+    /// Storage-buffer bindings of the fragment shader.
+    pub(crate) bindings: u32,
     layout: vk::PipelineLayout,
     pipeline: vk::Pipeline,
 }
 
-/// Storage buffers of the raster SD fragment shader, in binding order.
-pub const RASTER_SD_BINDINGS: u32 = 7;
-
-impl RasterSdPass {
-    pub fn new(gpu: &Gpu) -> Result<Self, GpuError> {
+impl AttachmentlessPass {
+    /// The pass of `vertex` and `fragment` (SPIR-V, entry point) with `bindings` storage buffers
+    /// and `push_bytes` of vertex push constants.
+    pub(crate) fn new(
+        gpu: &Gpu,
+        vertex: (&[u8], &CStr),
+        fragment: (&[u8], &CStr),
+        bindings: u32,
+        push_bytes: u32,
+    ) -> Result<Self, GpuError> {
         let d = &gpu.device;
         unsafe {
-            let push = [vk::PushConstantRange::default()
-                .stage_flags(vk::ShaderStageFlags::VERTEX)
-                .size(size_of::<RasterParams>() as u32)];
-            let set_layout = gpu.set_layout(&storage_bindings(RASTER_SD_BINDINGS), vk::ShaderStageFlags::FRAGMENT)?;
+            let push = [vk::PushConstantRange::default().stage_flags(vk::ShaderStageFlags::VERTEX).size(push_bytes)];
+            let set_layout = gpu.set_layout(&storage_bindings(bindings), vk::ShaderStageFlags::FRAGMENT)?;
             let set_layouts = [set_layout];
+            let ranges = if push_bytes == 0 { &[][..] } else { &push[..] };
             let layout = d.create_pipeline_layout(
-                &vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts).push_constant_ranges(&push),
+                &vk::PipelineLayoutCreateInfo::default().set_layouts(&set_layouts).push_constant_ranges(ranges),
                 None,
             )?;
-            let vs = gpu.shader_module(modules::GBUFFER_VS)?;
-            let fs = gpu.shader_module(modules::RASTERSD_FS)?;
+            let vs = gpu.shader_module(vertex.0)?;
+            let fs = gpu.shader_module(fragment.0)?;
             let stages = [
                 vk::PipelineShaderStageCreateInfo::default()
                     .stage(vk::ShaderStageFlags::VERTEX)
                     .module(vs)
-                    .name(c"gbuffer_vs"),
+                    .name(vertex.1),
                 vk::PipelineShaderStageCreateInfo::default()
                     .stage(vk::ShaderStageFlags::FRAGMENT)
                     .module(fs)
-                    .name(c"rastersd_fs"),
+                    .name(fragment.1),
             ];
             let created = graphics_pipeline(d, layout, &stages, None);
             d.destroy_shader_module(vs, None);
             d.destroy_shader_module(fs, None);
             let pipeline = created?;
-            Ok(RasterSdPass { set_layout, layout, pipeline })
+            Ok(AttachmentlessPass { set_layout, bindings, layout, pipeline })
         }
     }
 
-    /// Record the pass over `size` SD texels: draw `count` vertices from `vertices` with
-    /// descriptor set `set` (headers, texels, frame, depth, rayMin, rayMax, SD sample bits).
+    /// Record the pass over a viewport of `size` pixels: draw `count` vertices from `vertices`
+    /// with descriptor set `set` and vertex push constants `push`.
     pub(crate) fn record(
         &self,
         gpu: &Gpu,
         cb: vk::CommandBuffer,
         set: vk::DescriptorSet,
         (vertices, count): (&Buffer, u32),
-        params: &RasterParams,
+        push: &[u8],
         size: aokit_shaders::glam::UVec2,
     ) {
         let d = &gpu.device;
@@ -549,7 +557,9 @@ impl RasterSdPass {
             d.cmd_bind_pipeline(cb, vk::PipelineBindPoint::GRAPHICS, self.pipeline);
             d.cmd_bind_descriptor_sets(cb, vk::PipelineBindPoint::GRAPHICS, self.layout, 0, &[set], &[]);
             set_viewport(d, cb, area);
-            d.cmd_push_constants(cb, self.layout, vk::ShaderStageFlags::VERTEX, 0, bytemuck::bytes_of(params));
+            if !push.is_empty() {
+                d.cmd_push_constants(cb, self.layout, vk::ShaderStageFlags::VERTEX, 0, push);
+            }
             d.cmd_bind_vertex_buffers(cb, 0, &[vertices.raw], &[0]);
             d.cmd_draw(cb, count, 1, 0, 0);
             d.cmd_end_rendering(cb);

@@ -19,13 +19,13 @@
 use crate::adapters::{Adapters, AoImage, EngineImage};
 use crate::compute::{ComputeKernel, memory_barrier};
 use crate::descriptors::{Descriptor, KeptSets};
-use crate::gbuffer::RasterSdPass;
+use crate::gbuffer::AttachmentlessPass;
 use crate::manifest::{Manifest, ModuleManifest};
 use crate::raytracing::{RtPipeline, SceneAccel};
 use crate::{Buffer, Gpu, GpuError, modules};
 use aokit_shaders::adapters::ImportParams;
 use aokit_shaders::common::ViewParams;
-use aokit_shaders::graph::{Access, Extent, Graph, Init, Lifetime, Pass, PassKind, RtMode, Size, inputs};
+use aokit_shaders::graph::{Graph, Init, Lifetime, Pass, PassKind, RtMode, Size, inputs};
 use ash::vk;
 use ash::vk::Handle;
 use gpu_allocator::MemoryLocation;
@@ -126,7 +126,7 @@ fn descriptor_types(pass: &Pass, slots: u32) -> Vec<vk::DescriptorType> {
 enum Pipeline {
     Compute { kernel: ComputeKernel, workgroup: [u32; 3] },
     RayTracing(RtPipeline),
-    Raster(RasterSdPass),
+    Raster(AttachmentlessPass),
 }
 
 /// A resource on the device.
@@ -259,7 +259,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
                 let spirv = Self::spirv(pass.entry)?;
                 if types.contains(&vk::DescriptorType::ACCELERATION_STRUCTURE_KHR) && !self.gpu().has_ray_query() {
                     return Err(GpuError::NoDevice(format!(
-                        "ray queries: '{}' lacks VK_KHR_ray_query / VK_KHR_acceleration_structure / bufferDeviceAddress (pass '{}'; --rt-mode pipeline uses ray-tracing pipelines instead)",
+                        "ray queries: '{}' lacks VK_KHR_ray_query / VK_KHR_acceleration_structure / bufferDeviceAddress (pass '{}'; RtMode::Pipeline uses ray-tracing pipelines instead)",
                         self.gpu().info().name,
                         pass.entry
                     )));
@@ -276,12 +276,17 @@ impl<G: Borrow<Gpu>> AoContext<G> {
                 ];
                 Pipeline::RayTracing(RtPipeline::new(self.gpu(), shaders, descriptor_types(pass, slots))?)
             }
-            // The one raster pipeline state aokit has: no attachments, dynamic viewport.
-            PassKind::Raster { vertex: "gbuffer_vs" } if pass.entry == "rastersd_fs" => {
-                Pipeline::Raster(RasterSdPass::new(self.gpu())?)
-            }
+            // The raster pipeline state graphs declare: no attachments, dynamic viewport.
             PassKind::Raster { vertex } => {
-                return Err(GpuError::Input(format!("no raster pipeline for {vertex} + {}", pass.entry)));
+                let names = [vertex, pass.entry].map(|n| CString::new(n).expect("entry names have no NUL"));
+                let push = self.module(vertex)?.push_constant_bytes;
+                Pipeline::Raster(AttachmentlessPass::new(
+                    self.gpu(),
+                    (Self::spirv(vertex)?, names[0].as_c_str()),
+                    (Self::spirv(pass.entry)?, names[1].as_c_str()),
+                    slots,
+                    push,
+                )?)
             }
         };
         self.pipelines.insert(pass.entry, pipeline);
@@ -404,8 +409,14 @@ impl<G: Borrow<Gpu>> AoContext<G> {
                 Pipeline::RayTracing(p) => p.record_trace(self.gpu(), cmd, sets[i], invocations.x, invocations.y)?,
                 Pipeline::Raster(p) => {
                     let scene = inputs.raster.expect("checked by bound_buffers");
-                    let params = bytemuck::pod_read_unaligned(&pass.push_constants);
-                    p.record(self.gpu(), cmd, sets[i], (scene.vertices, scene.vertex_count), &params, invocations);
+                    p.record(
+                        self.gpu(),
+                        cmd,
+                        sets[i],
+                        (scene.vertices, scene.vertex_count),
+                        &pass.push_constants,
+                        invocations,
+                    );
                 }
             }
             for snap in graph.snapshots.iter().filter(|s| s.after == i) {
@@ -486,36 +497,15 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             let sets = &mut self.adapter_sets;
             adapters.record_import_from(gpu, cmd, sets, &frame.import, (image, buffer), None)?;
         }
-        let mut full = graph.clone();
-        if frame.normals.is_none() {
-            // XeGTAO's pass 0 reads only the view (spec gtao-raymarch-hybrid §2.4).
-            let params = aokit_shaders::gtao::GtaoParams { view: frame.import.view, ..bytemuck::Zeroable::zeroed() };
-            let bindings = [(inputs::LINEAR_DEPTH, Access::Read), (ENGINE_NORMALS, Access::Write)];
-            let normals_pass = Pass::compute(
-                "normals_from_depth",
-                "gtao_normals",
-                &bindings,
-                Extent::Full,
-                bytemuck::bytes_of(&params),
-            );
-            // The graph's passes read the derived normals under their own name, so `record`
-            // sees the read after pass 0's write and puts a barrier between them (bound to the
-            // same buffer as `inputs.normals` below).
-            for b in full.passes.iter_mut().flat_map(|p| &mut p.bindings) {
-                if b.resource == inputs::VIEW_NORMALS {
-                    b.resource = ENGINE_NORMALS;
-                }
-            }
-            full.passes.insert(0, normals_pass);
-            full.resources.push(internal[1].clone());
-        }
+        // Without the engine's normals, the graph derives them from depth first.
+        let mut full = if frame.normals.is_none() { graph.clone().with_normals_from_depth() } else { graph.clone() };
         // Diagnostic copies are for reports, not engine frames.
         full.snapshots.clear();
         let (depth, normals) = (&self.resources[ENGINE_DEPTH].buffer, &self.resources[ENGINE_NORMALS].buffer);
         let second_depth = second.map(|_| &self.resources[ENGINE_SECOND_DEPTH].buffer as *const Buffer);
         // SAFETY of the aliasing below: the resources are boxed (inserting others does not move
-        // them) and `record` does not replace these: the depths are not in `full.resources`,
-        // the normals are, at the size made above, so `ensure_resources` keeps them.
+        // them) and `record` does not replace these: the imported buffers are not in
+        // `full.resources`, so `ensure_resources` never re-makes them.
         let (depth, normals): (*const Buffer, *const Buffer) = (depth, normals);
         let inputs = GpuInputs {
             depth: unsafe { &*depth },
@@ -548,6 +538,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
 
     /// Descriptor pools this context has made so far (graphs' and adapters'): constant over frames
     /// that re-record graphs and images it has seen recently.
+    #[cfg(feature = "testing")]
     pub fn descriptor_pools_made(&self) -> u64 {
         self.bound_made + self.adapter_sets.made
     }
@@ -665,7 +656,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             let (layout, count) = match &self.pipelines[pass.entry] {
                 Pipeline::Compute { kernel, .. } => (kernel.set_layout(), kernel.bindings()),
                 Pipeline::RayTracing(p) => (p.set_layout, p.bindings.len() as u32),
-                Pipeline::Raster(p) => (p.set_layout, crate::gbuffer::RASTER_SD_BINDINGS),
+                Pipeline::Raster(p) => (p.set_layout, p.bindings),
             };
             let mut descriptors = Vec::new();
             for slot in 0..count {

@@ -13,6 +13,7 @@ mod buffer;
 mod compute;
 mod context;
 mod descriptors;
+mod effect;
 mod gbuffer;
 mod graph;
 mod image;
@@ -24,9 +25,16 @@ pub mod spirv_hash;
 pub mod wgsl;
 
 pub use adapters::{Adapters, AoImage, EngineImage};
+pub use aokit_shaders::glam;
+pub use aokit_shaders::graph::RtMode;
+pub use aokit_shaders::technique::Technique;
+pub use aokit_shaders::temporal::settings::TemporalSettings;
 pub use buffer::Buffer;
 pub use context::{DeviceInfo, ExternalDevice, Gpu, GpuOptions, HIDE_EXTENSIONS_VAR};
-pub use gbuffer::{GBufferVertex, RasterFrame, RasterGBuffer, RasterSdPass};
+pub use effect::{
+    AoEffect, AoError, AoFrame, AoScene, AoSettings, DepthConvention, EngineCamera, SceneGeometry, engine_camera,
+};
+pub use gbuffer::{GBufferVertex, RasterFrame, RasterGBuffer};
 pub use graph::{AoContext, EngineFrame, FRAMES_IN_FLIGHT, GpuInputs, RasterScene, check_device};
 pub use image::Image2d;
 pub use raytracing::SceneAccel;

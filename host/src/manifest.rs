@@ -905,7 +905,7 @@ fn techniques() -> Result<Vec<TechniqueManifest>, String> {
 pub mod constants {
     use super::{ConstantManifest, ModuleManifest, StructManifest};
     use aokit_shaders::graph::{Graph, Init, PassKind};
-    use aokit_shaders::technique::{Kind, Technique};
+    use aokit_shaders::technique::{Kind, Registered};
 
     /// The modules a pass runs: its entry, the ray-tracing pipeline's miss and any-hit and its
     /// ray-query variant, the raster pass's vertex module.
@@ -995,7 +995,7 @@ pub mod constants {
     /// [`values_tried`] (one at a time; values its checks refuse are skipped), for the frame
     /// `super::reference_frame`.
     pub fn structs_of(
-        t: &'static dyn Technique,
+        t: &'static dyn Registered,
         modules: &[ModuleManifest],
         structs: &[StructManifest],
     ) -> Result<Vec<String>, String> {
@@ -1019,7 +1019,7 @@ pub mod constants {
     /// order. Fails where a field has no formula, a row names a field that does not exist (or
     /// twice), or a formula refers to a `Struct.field` or a setting key that does not exist.
     pub fn of(
-        t: &'static dyn Technique,
+        t: &'static dyn Registered,
         modules: &[ModuleManifest],
         structs: &[StructManifest],
     ) -> Result<Vec<ConstantManifest>, String> {

@@ -250,7 +250,7 @@ impl RtMode {
         match s {
             "pipeline" => Ok(RtMode::Pipeline),
             "query" => Ok(RtMode::Query),
-            _ => Err(format!("--rt-mode {s}: expected pipeline or query")),
+            _ => Err(format!("rt mode {s}: expected pipeline or query")),
         }
     }
 }
@@ -374,6 +374,40 @@ impl Graph {
         self
     }
 
+    /// The graph for a frame without view normals: XeGTAO's normals-from-depth pass
+    /// (`crate::gtao::gtao_normals`, gtao-raymarch-hybrid §2.4) runs first into
+    /// [`DERIVED_NORMALS`], and every pass that read [`inputs::VIEW_NORMALS`] reads that instead.
+    /// Unchanged when no pass reads normals.
+    pub fn with_normals_from_depth(mut self) -> Graph {
+        let mut reads = false;
+        for b in self.passes.iter_mut().flat_map(|p| &mut p.bindings) {
+            if b.resource == inputs::VIEW_NORMALS {
+                b.resource = DERIVED_NORMALS;
+                reads = true;
+            }
+        }
+        if reads {
+            // The normals pass reads only the view of its parameters.
+            let params = crate::gtao::GtaoParams { view: self.view, ..bytemuck::Zeroable::zeroed() };
+            let bindings = [(inputs::LINEAR_DEPTH, Access::Read), (DERIVED_NORMALS, Access::Write)];
+            let pass = Pass::compute(
+                "normals_from_depth",
+                "gtao_normals",
+                &bindings,
+                Extent::Full,
+                bytemuck::bytes_of(&params),
+            );
+            self.passes.insert(0, pass);
+            self.snapshots.iter_mut().for_each(|s| s.after += 1);
+            self.resources.push(target_u32(
+                DERIVED_NORMALS,
+                0,
+                "view normals derived from depth for a frame without normals (gtao-raymarch-hybrid §2.4)",
+            ));
+        }
+        self
+    }
+
     /// Check the graph's consistency: every bound resource is declared or an input, no input is
     /// written, binding slots are unique per pass, and the outputs exist. Executors call this
     /// once per new graph.
@@ -475,7 +509,7 @@ pub struct FrameDesc {
     pub radius: f32,
     /// AO exponent `e` of the final `A^e` (spec svao-raysd §4.3).
     pub exponent: f32,
-    /// VAO thickness τ (spec svao-raysd §2, used in §4.3–§4.4).
+    /// VAO thickness τ (spec svao-raysd §2, used in svao-raysd §4.3–§4.4).
     pub thickness: f32,
     /// The frame's index in a sequence: every stochastic technique's noise takes it (XeGTAO's
     /// `NoiseIndex`, spec gtao-raymarch-hybrid §1.6; the ray-traced techniques' hashes and
@@ -529,6 +563,9 @@ pub fn target_f32(name: &'static str, value: f32, doc: &'static str) -> Resource
 pub fn target_u32(name: &'static str, value: u32, doc: &'static str) -> Resource {
     Resource { name, elem: Elem::U32, size: Size::TARGET, init: Init::Fill(value), lifetime: Lifetime::PerFrame, doc }
 }
+
+/// The resource [`Graph::with_normals_from_depth`] derives the view normals into.
+pub const DERIVED_NORMALS: &str = "derived_view_normals";
 
 /// The resource every ray-traced pass adds the rays it traced to.
 pub const RAY_COUNT: &str = "ray_count";

@@ -2,10 +2,10 @@
 //! the CPU simulator (`aokit-cpu`).
 //!
 //! Folders mirror techniques: [`common`] (camera, hash, sequences, float-as-uint, normal codec),
-//! [`vao`] (Volumetric AO, spec svao-raysd §4–§5), [`blur`] (cross-bilateral blur, §12) and
-//! [`gbuffer`] (raster G-buffer entry points, §1), [`svao`] (the two-phase stenciled pipeline,
-//! §3, §5, §9), [`raysd`] (ray-traced stochastic depth map, §7), [`raysvao`] (rays per flagged
-//! sample, §10) and [`groundtruth`] (world-space ray-traced AO).
+//! [`vao`] (Volumetric AO, spec svao-raysd §4–§5), [`blur`] (cross-bilateral blur, svao-raysd §12) and
+//! [`gbuffer`] (raster G-buffer entry points, svao-raysd §1), [`svao`] (the two-phase stenciled pipeline,
+//! svao-raysd §3, §5, §9), [`raysd`] (ray-traced stochastic depth map, svao-raysd §7), [`raysvao`] (rays per flagged
+//! sample, svao-raysd §10) and [`groundtruth`] (world-space ray-traced AO).
 //!
 //! Entry points are thin: they read storage-buffer slices and push constants and call pure
 //! per-pixel functions, which the CPU simulator calls directly over the same slices.

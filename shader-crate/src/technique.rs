@@ -109,15 +109,6 @@ impl<S> Setting<S> {
         Setting { help, ..self }
     }
 
-    /// The name a value of the setting is given by: its value flag, else its key (a value-less
-    /// switch never carries a wrong value).
-    pub fn user_name(&self) -> String {
-        match self.flag {
-            Some(f) => format!("--{f}"),
-            None => self.key.to_string(),
-        }
-    }
-
     /// The value as text (a name for choices).
     pub fn get(&self, settings: &S) -> String
     where
@@ -133,9 +124,10 @@ impl<S> Setting<S> {
         }
     }
 
-    /// Parse and store `value`; out-of-range values and unknown names are refused.
+    /// Parse and store `value`; out-of-range values and unknown names are refused (the message
+    /// names the setting's key).
     pub fn set(&self, settings: &mut S, value: &str) -> Result<(), String> {
-        let bad = || format!("{} {value}: expected {}", self.user_name(), self.kind.accepted());
+        let bad = || format!("{} {value}: expected {}", self.key, self.kind.accepted());
         match (&self.field, self.kind) {
             (Field::Count(f), Kind::Count { min, max }) => {
                 let v: u32 = value.trim().parse().map_err(|_| bad())?;
@@ -174,11 +166,7 @@ impl<S> Setting<S> {
             (Field::Choice { get, .. }, Kind::Choice(names)) => get(&s) < names.len(),
             _ => true,
         };
-        if ok {
-            Ok(())
-        } else {
-            Err(format!("{} {}: expected {}", self.user_name(), self.get(&s), self.kind.accepted()))
-        }
+        if ok { Ok(()) } else { Err(format!("{} {}: expected {}", self.key, self.get(&s), self.kind.accepted())) }
     }
 
     /// The value as JSON-ready text: numbers bare, names quoted.
@@ -313,7 +301,7 @@ pub trait Configured: Send + Sync + Debug {
 }
 
 /// An entry of the registry: a declaration for any settings struct.
-pub trait Technique: Sync {
+pub trait Registered: Sync {
     fn name(&self) -> &'static str;
     fn summary(&self) -> &'static str;
     /// The keys of the settings it reads.
@@ -363,7 +351,7 @@ pub fn configure<S: Settings>(technique: &'static Declaration<S>, settings: S) -
     Box::new(Instance { declaration: technique, settings })
 }
 
-impl<S: Settings> Technique for Declaration<S> {
+impl<S: Settings> Registered for Declaration<S> {
     fn name(&self) -> &'static str {
         self.name
     }
@@ -468,4 +456,146 @@ impl<S: Settings> Configured for Instance<S> {
 /// For declarations without a second layer.
 pub fn single_layer<S>(_: &S) -> Option<f32> {
     None
+}
+
+/// An AO technique from the registry ([`crate::techniques::TECHNIQUES`]) with its settings:
+/// what an engine, the CLI and the tests pick and configure.
+///
+/// ```
+/// use aokit_shaders::technique::Technique;
+/// let gtao = Technique::preset("gtao", "ultra")?;
+/// let raysd = Technique::parse("raysd:sd-layers=8:interval=off")?;
+/// assert_eq!(raysd.label(), "raysd_sd-layers-8_interval-off");
+/// assert!(Technique::preset("vao", "high").is_err()); // vao has no presets
+/// # Ok::<(), String>(())
+/// ```
+#[derive(Debug)]
+pub struct Technique(Box<dyn Configured>);
+
+impl Clone for Technique {
+    fn clone(&self) -> Self {
+        Technique(self.0.clone_box())
+    }
+}
+
+impl Technique {
+    /// `technique` with `settings`.
+    pub fn new<S: Settings>(technique: &'static Declaration<S>, settings: S) -> Technique {
+        Technique(configure(technique, settings))
+    }
+
+    /// The registered technique `name` at its defaults.
+    pub fn named(name: &str) -> Result<Technique, String> {
+        let technique = crate::techniques::find(name)
+            .ok_or_else(|| format!("unknown technique '{name}' (known: {})", crate::techniques::names()))?;
+        Ok(Technique(technique.configure()))
+    }
+
+    /// The registered technique `name` at quality preset `preset` (its `preset` setting, e.g.
+    /// XeGTAO's `low`, `medium`, `high`, `ultra`); refused for techniques without presets.
+    pub fn preset(name: &str, preset: &str) -> Result<Technique, String> {
+        let mut t = Technique::named(name)?;
+        if !t.rows().iter().any(|r| r.key == "preset") {
+            return Err(format!("{name} has no quality presets; configure it with Technique::set"));
+        }
+        t.set("preset", preset)?;
+        Ok(t)
+    }
+
+    /// A technique from its name followed by settings as `:key=value` with the keys of its
+    /// settings rows, e.g. `raysd:sd-layers=8:interval=off`.
+    pub fn parse(spec: &str) -> Result<Technique, String> {
+        Technique::parse_with_flags(spec, &[])
+    }
+
+    /// [`Technique::parse`] after settings given by their rows' flags (`(flag, value)`, no value
+    /// for a value-less switch) that apply to every technique with that flag; a `:key=value`
+    /// after the name wins over the flag of the same setting. Rows are applied in declaration
+    /// order (a preset before its slices and steps, a variant before its weight).
+    pub fn parse_with_flags(spec: &str, flags: &[(String, Option<String>)]) -> Result<Technique, String> {
+        let mut parts = spec.trim().split(':');
+        let mut t = Technique::named(parts.next().unwrap_or_default())?;
+        let rows = t.rows();
+        let mut overrides = Vec::new();
+        for part in parts {
+            let (key, value) = part.split_once('=').ok_or_else(|| format!("'{part}' in '{spec}' is not key=value"))?;
+            if !rows.iter().any(|r| r.key == key) {
+                // The technique's own message, naming the keys it has.
+                t.0.set(key, value).map_err(|e| format!("'{spec}': {e}"))?;
+            }
+            overrides.push((key, value));
+        }
+        for row in &rows {
+            if let Some((_, value)) = overrides.iter().rev().find(|(k, _)| *k == row.key) {
+                t.0.set(row.key, value).map_err(|e| format!("'{spec}': {e}"))?;
+                continue;
+            }
+            for (flag, value) in flags {
+                // A value flag carries its value; a switch sets the value it stands for.
+                let value = match value {
+                    Some(v) if row.flag == Some(flag.as_str()) => v.as_str(),
+                    None => match row.switch {
+                        Some((f, v)) if f == flag => v,
+                        _ => continue,
+                    },
+                    Some(_) => continue,
+                };
+                t.0.set(row.key, value)?;
+            }
+        }
+        t.0.validate().map_err(|e| format!("'{spec}': {e}"))?;
+        Ok(t)
+    }
+
+    /// The registry name.
+    pub fn name(&self) -> &'static str {
+        self.0.name()
+    }
+
+    /// The settings the technique reads (keys, flags, help, ranges, defaults).
+    pub fn rows(&self) -> Vec<Row> {
+        self.0.rows()
+    }
+
+    /// `(key, value as text)` of every setting the technique reads.
+    pub fn values(&self) -> Vec<(&'static str, String)> {
+        self.0.values()
+    }
+
+    /// Set one setting by its key (a value out of its row's range is refused).
+    pub fn set(&mut self, key: &str, value: &str) -> Result<(), String> {
+        self.0.set(key, value)?;
+        self.0.validate()
+    }
+
+    /// The settings struct when it is an `S`.
+    pub fn settings<S: Settings>(&self) -> Option<&S> {
+        self.0.settings().downcast_ref()
+    }
+
+    /// A label for tables and file names: the name plus the settings that differ from the
+    /// technique's defaults, e.g. `raysd_sd-layers-8`.
+    pub fn label(&self) -> String {
+        let mut label = self.name().to_string();
+        for (key, value) in self.0.changed() {
+            label += &format!("_{key}-{value}");
+        }
+        label
+    }
+
+    /// Every setting the technique reads as a JSON object text (`snake_case` keys).
+    pub fn json(&self) -> String {
+        self.0.json()
+    }
+
+    /// The technique's pass graph for a frame.
+    pub fn graph(&self, frame: &FrameDesc) -> Result<Graph, String> {
+        self.0.graph(frame)
+    }
+
+    /// The separation of the depth-peeled second layer, for techniques that read one (spec
+    /// svao-raysd §11).
+    pub fn second_layer(&self) -> Option<f32> {
+        self.0.second_layer()
+    }
 }

@@ -2,10 +2,10 @@
 //! (kernels, settings rows, pass graph, its [`Declaration`](crate::technique::Declaration)) plus
 //! its line here; the CLI, the reports and both executors find it through this list.
 
-use crate::technique::Technique;
+use crate::technique::Registered;
 
 /// Every technique, in the order listings show them.
-pub static TECHNIQUES: &[&dyn Technique] = &[
+pub static TECHNIQUES: &[&dyn Registered] = &[
     &crate::vao::settings::VAO,
     &crate::svao::settings::HBAO,
     &crate::svao::settings::RAYSD,
@@ -20,7 +20,7 @@ pub static TECHNIQUES: &[&dyn Technique] = &[
 ];
 
 /// The technique called `name`.
-pub fn find(name: &str) -> Option<&'static dyn Technique> {
+pub fn find(name: &str) -> Option<&'static dyn Registered> {
     TECHNIQUES.iter().copied().find(|t| t.name() == name)
 }
 

@@ -235,7 +235,7 @@ impl Scene {
 
     /// Axis-aligned bounds `(min, max)`.
     /// `copies` instances of the scene on a square grid in the x–z plane (the scaling study of
-    /// spec svao-raysd / issue 6): the original stays where it is, the others are shifted by
+    /// the Ray-SD paper): the original stays where it is, the others are shifted by
     /// whole multiples of 1.25 × its extent, so a camera framing the original sees the same
     /// image as long as the copies stay out of view. `copies` must be a square (1, 4, 16, 64…).
     pub fn instanced_grid(&self, copies: u32) -> Result<Scene, String> {

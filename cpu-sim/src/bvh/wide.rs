@@ -1,5 +1,5 @@
 //! The traversal structure behind [`SceneBvh`](super::SceneBvh)'s closest-hit and occlusion
-//! queries (issue 14: CPU rays at Embree's pace). The topology is obvhs' CWBVH (Ylitie et al.
+//! queries (the goal: CPU rays at Embree's pace). The topology is obvhs' CWBVH (Ylitie et al.
 //! 2017: its PLOC BVH2 collapsed into an 8-wide tree by their SAH dynamic programme, at most
 //! three triangles per leaf); only the layout differs:
 //!
@@ -464,7 +464,7 @@ const CUT: usize = 16;
 
 /// The cut of the tree that every ray from one origin with one length passes through: the
 /// children whose boxes meet the cube of half-size `t_max` around the origin, expanded from the
-/// root while at most [`CUT`] of them remain, packed as two virtual nodes. Every node such a
+/// root while at most `CUT` of them remain, packed as two virtual nodes. Every node such a
 /// ray enters lies below one of them (its box and all its ancestors' meet the segment, which
 /// lies in the cube), so starting there finds the same hits while skipping the top levels.
 #[derive(Clone)]
@@ -1037,7 +1037,7 @@ impl WideBvh {
     }
 }
 
-/// Rays per packet of [`WideBvh::closest_packet`].
+/// Rays per packet of `WideBvh::closest_packet`.
 pub const PACKET: usize = 8;
 
 impl WideBvh {

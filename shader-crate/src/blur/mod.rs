@@ -11,9 +11,9 @@ use crate::common::math::is_valid_depth;
 use crate::glam::{IVec2, UVec2, UVec3};
 use spirv_std::spirv;
 
-/// Kernel radius `K` (spec §12).
+/// Kernel radius `K` (spec svao-raysd §12).
 pub const BLUR_RADIUS: i32 = 4;
-/// Gaussian falloff `φ = 1/(2σ²)` with `σ = (K+1)/2 = 2.5` (spec §12).
+/// Gaussian falloff `φ = 1/(2σ²)` with `σ = (K+1)/2 = 2.5` (spec svao-raysd §12).
 pub const BLUR_FALLOFF: f32 = 0.08;
 
 /// Push constants of one blur pass.
@@ -26,12 +26,12 @@ pub struct BlurParams {
     pub view: ViewParams,
     /// Pass direction: (1, 0) horizontal, (0, 1) vertical.
     pub direction: UVec2,
-    /// Depth sharpness (spec §12: 16).
+    /// Depth sharpness (spec svao-raysd §12: 16).
     pub sharpness: f32,
     pub _pad: u32,
 }
 
-/// Sample coordinate clamped to the inner image, `[g, res − g − 1]` per axis (spec §12 clamps
+/// Sample coordinate clamped to the inner image, `[g, res − g − 1]` per axis (spec svao-raysd §12 clamps
 /// the uv to the inner pixel-centre rectangle).
 #[inline]
 fn clamp_inner(view: &ViewParams, p: IVec2) -> UVec2 {
@@ -40,7 +40,7 @@ fn clamp_inner(view: &ViewParams, p: IVec2) -> UVec2 {
     UVec2::new(p.x.max(g).min(size.x - g - 1) as u32, p.y.max(g).min(size.y - g - 1) as u32)
 }
 
-/// One output pixel of one blur direction (spec §12): slope-corrected depth differences
+/// One output pixel of one blur direction (spec svao-raysd §12): slope-corrected depth differences
 /// `Δ = |z_d − s·d − z0|·sharpness·12/z0`, weights `w = 2^(−d²·φ − Δ²)`, result
 /// `(a0 + Σ w·a_d)/(1 + Σ w)`; the slope is the smaller-magnitude one-sided difference, negated
 /// for the negative side ("better slope").

@@ -4,7 +4,7 @@
 //!
 //! Each ray-traced technique writes its decision once, as a [`CandidateHit`]: the any-hit shader
 //! of its ray-tracing pipeline calls it and maps the answer to `ignoreIntersectionEXT` /
-//! return / `terminateRayEXT`; the ray-query variant calls it from [`query_candidates`]
+//! return / `terminateRayEXT`; the ray-query variant calls it from `query_candidates`
 //! (`rayQueryConfirmIntersectionEXT` / skip / `rayQueryTerminateEXT`); the CPU simulator calls it
 //! from its BVH traversal. A candidate is triangle `InstanceCustomIndex + PrimitiveId` at ray
 //! distance `t` with barycentrics `bary` (weights of its second and third corner).

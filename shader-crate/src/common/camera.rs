@@ -12,13 +12,13 @@ use crate::glam::{UVec2, Vec2, Vec3, vec2};
 pub struct ViewParams {
     /// Full target size `W×H` in pixels (inner size + 2·guard).
     pub res: Vec2,
-    /// `(tx, ty)`: tangents of the half field of view of the FULL target (spec §1).
+    /// `(tx, ty)`: tangents of the half field of view of the FULL target (spec svao-raysd §1).
     pub tan_half_fov: Vec2,
     /// Near plane distance (view depth).
     pub near: f32,
     /// Far plane distance: depths at or beyond it are background.
     pub far: f32,
-    /// G-buffer guard band `g` in pixels (spec §1, default 64).
+    /// G-buffer guard band `g` in pixels (spec svao-raysd §1, default 64).
     pub guard: u32,
     pub _pad: u32,
 }
@@ -30,7 +30,7 @@ impl ViewParams {
         UVec2::new(self.res.x as u32, self.res.y as u32)
     }
 
-    /// Centre uv of pixel `p`: `(p + 0.5)/res` (spec §1).
+    /// Centre uv of pixel `p`: `(p + 0.5)/res` (spec svao-raysd §1).
     #[inline]
     pub fn pixel_uv(&self, p: UVec2) -> Vec2 {
         self.pixel_uv_lanes::<f32>(p)
@@ -59,7 +59,7 @@ impl ViewParams {
         L::V2::new((L::index_to_float(L::texel_x(p)) + 0.5) * r.x, (L::index_to_float(L::texel_y(p)) + 0.5) * r.y)
     }
 
-    /// uv→view: `ndc = (2u−1, 1−2v)`, `X = (ndc.x·d·tx, ndc.y·d·ty, −d)` (spec §1).
+    /// uv→view: `ndc = (2u−1, 1−2v)`, `X = (ndc.x·d·tx, ndc.y·d·ty, −d)` (spec svao-raysd §1).
     #[inline]
     pub fn uv_to_view(&self, uv: Vec2, d: f32) -> Vec3 {
         self.uv_to_view_lanes::<f32>(uv, d)
@@ -72,7 +72,7 @@ impl ViewParams {
         L::V3::new(nx * d * self.tan_half_fov.x, ny * d * self.tan_half_fov.y, -d)
     }
 
-    /// view→uv: `u = 0.5 + 0.5·X.x/(tx·(−X.z))`, `v = 0.5 − 0.5·X.y/(ty·(−X.z))` (spec §1).
+    /// view→uv: `u = 0.5 + 0.5·X.x/(tx·(−X.z))`, `v = 0.5 − 0.5·X.y/(ty·(−X.z))` (spec svao-raysd §1).
     #[inline]
     pub fn view_to_uv(&self, x: Vec3) -> Vec2 {
         self.view_to_uv_lanes::<f32>(x)
@@ -89,7 +89,7 @@ impl ViewParams {
     }
 
     /// Texel containing `uv` after clamping it into the target: `floor(sat(uv)·res)`, kept
-    /// inside `[0, res−1]`. Its centre is spec §1's `snap(saturate(uv), res)`.
+    /// inside `[0, res−1]`. Its centre is spec svao-raysd §1's `snap(saturate(uv), res)`.
     #[inline]
     pub fn texel_of_uv(&self, uv: Vec2) -> UVec2 {
         self.texel_of_uv_lanes::<f32>(uv)
@@ -142,7 +142,7 @@ pub struct Camera {
 impl Camera {
     /// Look-at camera whose vertical field of view `fov_y` (radians) covers the INNER image of
     /// `inner` pixels; the guard band `guard` widens the frustum at the same focal length, so the
-    /// full target is `inner + 2·guard` (spec §1: 1920×1080 → 2048×1208).
+    /// full target is `inner + 2·guard` (spec svao-raysd §1: 1920×1080 → 2048×1208).
     pub fn look_at(
         eye: Vec3,
         target: Vec3,

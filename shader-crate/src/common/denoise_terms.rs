@@ -8,14 +8,14 @@ use crate::common::lanes::Lanes;
 use crate::common::math::{floor, sat};
 use crate::glam::{Vec3, Vec4, vec4};
 
-/// Round half to even (HLSL `round`, spec §1.5).
+/// Round half to even (HLSL `round`, spec gtao-raymarch-hybrid §1.5).
 #[inline]
 pub fn round_even(x: f32) -> f32 {
     let r = floor(x + 0.5);
     if r - x == 0.5 && floor(r * 0.5) * 2.0 != r { r - 1.0 } else { r }
 }
 
-/// Edge weights (L, R, T, B) of a pixel at depth `zc` from its 4-neighbours (spec §2.6.1):
+/// Edge weights (L, R, T, B) of a pixel at depth `zc` from its 4-neighbours (spec gtao-raymarch-hybrid §2.6.1):
 /// slope-corrected depth differences, `sat(1.25 − min(|Δ|, |Δ'|)/(0.011·zc))`, 1 = connected.
 /// One pixel or `L::LANES` pixels.
 #[inline]
@@ -64,7 +64,7 @@ pub fn unpack_edges<L: Lanes>(p: L::Index) -> EdgeWeights<L> {
     }
 }
 
-/// `uint(sat(vis/1.5)·255 + 0.5)` (spec §2.6.4).
+/// `uint(sat(vis/1.5)·255 + 0.5)` (spec gtao-raymarch-hybrid §2.6.4).
 #[inline]
 pub fn store_term(vis: f32) -> u32 {
     (sat(vis / 1.5) * 255.0 + 0.5) as u32

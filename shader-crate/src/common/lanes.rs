@@ -1,5 +1,5 @@
 //! Lane-generic arithmetic, so that one kernel source runs one pixel per invocation on the GPU
-//! and several pixels per call on the CPU (issue 14: SIMD across pixels without a second copy
+//! and several pixels per call on the CPU (SIMD across pixels without a second copy
 //! of any kernel).
 //!
 //! A kernel function written over `L: Lanes` uses `L` where it used `f32`, `L::V2`/`L::V3`

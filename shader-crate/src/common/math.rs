@@ -91,10 +91,10 @@ pub fn fast_sqrt<L: Lanes>(x: L) -> L {
     x.map_bits(|b| 0x1fbd_1df5u32.wrapping_add(((b as i32) >> 1) as u32))
 }
 
-/// XeGTAO's `fastAcos` (spec §1.7) with its literal 7-digit constants:
+/// XeGTAO's `fastAcos` (spec gtao-raymarch-hybrid §1.7) with its literal 7-digit constants:
 /// `r = (−0.156583·|x| + 1.570796)·fastSqrt(1 − |x|)`, `π − r` for negative x.
 #[inline]
-#[allow(clippy::approx_constant)] // XeGTAO's literal constants, kept for parity (spec §1.7)
+#[allow(clippy::approx_constant)] // XeGTAO's literal constants, kept for parity (spec gtao-raymarch-hybrid §1.7)
 pub fn fast_acos<L: Lanes>(x: L) -> L {
     let a = x.abs();
     let r = (a * -0.156_583 + 1.570_796) * fast_sqrt(-a + 1.0);
@@ -110,7 +110,7 @@ pub fn lerp<L: Lanes>(a: L, b: L, t: L) -> L {
 /// Möller–Hughes minimal rotation taking unit `from` to unit `to`, applied to `v` (spec
 /// gtao-raymarch-hybrid §2.6.5): identity when `from·to > 0.9997`; for near-opposite vectors
 /// the rotation by π about `from`'s orthogonal x axis, `diag(1, −1, −1)` for `from = (0,0,−1)`
-/// (spec §3.4 step 5).
+/// (spec gtao-raymarch-hybrid §3.4 step 5).
 #[inline]
 pub fn rotate_minimal<L: Lanes>(from: L::V3, to: L::V3, v: L::V3) -> L::V3 {
     let e = from.dot(to);

@@ -6,7 +6,7 @@ use crate::common::math::frac;
 use crate::glam::{UVec2, Vec2, vec2};
 
 /// Hilbert index of `p` in a 64×64 tile (6 levels; only the low 6 bits of x and y count),
-/// spec §1.6: for b = 32…1, `idx += b²·((3·rx) ^ ry)`, then rotate the quadrant.
+/// spec gtao-raymarch-hybrid §1.6: for b = 32…1, `idx += b²·((3·rx) ^ ry)`, then rotate the quadrant.
 #[inline]
 pub fn hilbert_index(p: UVec2) -> u32 {
     let mut x = p.x & 63;
@@ -29,11 +29,11 @@ pub fn hilbert_index(p: UVec2) -> u32 {
     index
 }
 
-/// R2 constants `1/ρ`, `1/ρ²` of the plastic number ρ = 1.32471795… (spec §1.6).
+/// R2 constants `1/ρ`, `1/ρ²` of the plastic number ρ = 1.32471795… (spec gtao-raymarch-hybrid §1.6).
 pub const R2: [f32; 2] = [0.754_877_7, 0.569_840_3];
 
 /// The noise `ξ = frac(0.5 + i·(1/ρ, 1/ρ²))` of pixel `p` with `i = hilbert(p) + 288·(frame mod
-/// 64)`, in f32 in XeGTAO's order (spec §1.6). `ξ.x` drives slice/rotation angles, `ξ.y` steps.
+/// 64)`, in f32 in XeGTAO's order (spec gtao-raymarch-hybrid §1.6). `ξ.x` drives slice/rotation angles, `ξ.y` steps.
 #[inline]
 pub fn spatio_temporal_noise(p: UVec2, frame: u32) -> Vec2 {
     let i = (hilbert_index(p) + 288 * (frame % 64)) as f32;
@@ -42,7 +42,7 @@ pub fn spatio_temporal_noise(p: UVec2, frame: u32) -> Vec2 {
 
 /// The frame's Cranley–Patterson offset for the random numbers that have no temporal index of
 /// their own (the ray-traced techniques' hashes and per-pixel sequences): the R2 point of the
-/// frame, `r(f) = frac((f mod 64)·(1/ρ, 1/ρ²))` — spec §1.6's sequence and 64-frame period,
+/// frame, `r(f) = frac((f mod 64)·(1/ρ, 1/ρ²))` — spec gtao-raymarch-hybrid §1.6's sequence and 64-frame period,
 /// without its 0.5 start so that `r(0) = (0, 0)`.
 #[inline]
 pub fn frame_rotation(frame: u32) -> Vec2 {

@@ -7,13 +7,13 @@ use spirv_std::num_traits::Float;
 use crate::common::math::{clamp, sign_nonzero};
 use crate::glam::{Vec2, Vec3, vec2};
 
-/// Wrap of the lower hemisphere: `(1 − |p.yx|)·sign(p)`, sign of 0 = +1 (spec §1).
+/// Wrap of the lower hemisphere: `(1 − |p.yx|)·sign(p)`, sign of 0 = +1 (spec svao-raysd §1).
 #[inline]
 fn oct_wrap(p: Vec2) -> Vec2 {
     vec2((1.0 - p.y.abs()) * sign_nonzero(p.x), (1.0 - p.x.abs()) * sign_nonzero(p.y))
 }
 
-/// snorm8 quantization `trunc(c·127 ± 0.5)` after clamping to [−1, 1], NaN → 0 (spec §1).
+/// snorm8 quantization `trunc(c·127 ± 0.5)` after clamping to [−1, 1], NaN → 0 (spec svao-raysd §1).
 #[inline]
 fn snorm8(c: f32) -> u32 {
     let c = if c.is_nan() { 0.0 } else { clamp(c, -1.0, 1.0) };
@@ -21,7 +21,7 @@ fn snorm8(c: f32) -> u32 {
     (q as u32) & 0xFF
 }
 
-/// Sign-extended snorm8 byte back to [−1, 1]: `max(b/127, −1)` (spec §1).
+/// Sign-extended snorm8 byte back to [−1, 1]: `max(b/127, −1)` (spec svao-raysd §1).
 #[inline]
 fn unsnorm8(byte: u32) -> f32 {
     let b = ((byte << 24) as i32) >> 24;
@@ -40,7 +40,7 @@ pub fn encode_normal(n: Vec3) -> u32 {
     snorm8(p.x) | (snorm8(p.y) << 8)
 }
 
-/// Decode to a unit normal (spec §1).
+/// Decode to a unit normal (spec svao-raysd §1).
 #[inline]
 pub fn decode_normal(code: u32) -> Vec3 {
     let mut p = vec2(unsnorm8(code & 0xFF), unsnorm8((code >> 8) & 0xFF));

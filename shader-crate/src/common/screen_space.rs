@@ -13,7 +13,7 @@ pub fn clamp_index(v: f32, n: u32) -> u32 {
 }
 
 /// `viewPos(uv, z) = ((2u−1)·tanX·z, (1−2v)·tanY·z, z)` in XeGTAO's +z-forward view space
-/// (spec §1.4).
+/// (spec gtao-raymarch-hybrid §1.4).
 #[inline]
 pub fn view_pos<L: Lanes>(view: &ViewParams, uv: L::V2, z: L) -> L::V3 {
     L::V3::new((uv.x() * 2.0 - 1.0) * view.tan_half_fov.x * z, (-(uv.y() * 2.0) + 1.0) * view.tan_half_fov.y * z, z)

@@ -1,5 +1,5 @@
-//! Constant tables of spec svao-raysd: per-pixel rotation (§4.1.1), the VAO and HBAO+ kernels
-//! of 8, 16 and 32 samples (§4.2, §4.5) and the 4×4 SD-map jitter (§7.2).
+//! Constant tables of spec svao-raysd: per-pixel rotation (svao-raysd §4.1.1), the VAO and HBAO+ kernels
+//! of 8, 16 and 32 samples (svao-raysd §4.2, §4.5) and the 4×4 SD-map jitter (svao-raysd §7.2).
 
 use crate::glam::{UVec2, Vec2, vec2};
 
@@ -8,11 +8,11 @@ use crate::glam::{UVec2, Vec2, vec2};
 #[allow(clippy::approx_constant)]
 pub const REFERENCE_PI: f32 = 3.141;
 
-/// Bayer 4×4 ranks `k` stored as the R8Unorm texel `floor(k·255/16)` (spec §4.1.1), row-major
+/// Bayer 4×4 ranks `k` stored as the R8Unorm texel `floor(k·255/16)` (spec svao-raysd §4.1.1), row-major
 /// `[y][x]`.
 const ROTATION_TEXELS: [[u32; 4]; 4] = [[0, 127, 31, 159], [191, 63, 223, 95], [47, 175, 15, 143], [239, 111, 207, 79]];
 
-/// Per-pixel rotation angle ξ = (u8/255)·2·3.141 at `(p.x mod 4, p.y mod 4)` (spec §4.1.1; the
+/// Per-pixel rotation angle ξ = (u8/255)·2·3.141 at `(p.x mod 4, p.y mod 4)` (spec svao-raysd §4.1.1; the
 /// reference uses 3.141 for π).
 #[inline]
 pub fn rotation_angle(p: UVec2) -> f32 {
@@ -51,7 +51,7 @@ pub const ROTATION_SIN_COS: [[[f32; 2]; 4]; 4] = [
     ],
 ];
 
-/// `(sin ξ, cos ξ)` of the per-pixel rotation at `(p.x mod 4, p.y mod 4)` (spec §4.1 step 6).
+/// `(sin ξ, cos ξ)` of the per-pixel rotation at `(p.x mod 4, p.y mod 4)` (spec svao-raysd §4.1 step 6).
 #[inline]
 pub fn rotation_sin_cos(p: UVec2) -> Vec2 {
     let e = ROTATION_SIN_COS[(p.y % 4) as usize][(p.x % 4) as usize];
@@ -285,7 +285,7 @@ pub const HBAO_RADII: [f32; KERNEL_ENTRIES] = [
     0.8740953207015991,
 ];
 
-/// Normalized half-chords `sqrt(1 − ρ²)` of [`HBAO_RADII`] (hemisphere clipping, spec §4.5),
+/// Normalized half-chords `sqrt(1 − ρ²)` of [`HBAO_RADII`] (hemisphere clipping, spec svao-raysd §4.5),
 /// indexed by [`kernel_entry`].
 #[allow(clippy::excessive_precision)]
 pub const HBAO_HALF_CHORDS: [f32; KERNEL_ENTRIES] = [
@@ -354,7 +354,7 @@ pub const HBAO_HALF_CHORDS: [f32; KERNEL_ENTRIES] = [
     0.48575446009635925,
 ];
 
-/// HBAO+ sample weights `pdf = 0.9·(1 − ρ)^1.5` (spec §4.5, the kernel maximum's envelope),
+/// HBAO+ sample weights `pdf = 0.9·(1 − ρ)^1.5` (spec svao-raysd §4.5, the kernel maximum's envelope),
 /// indexed by [`kernel_entry`].
 #[allow(clippy::excessive_precision)]
 pub const HBAO_PDFS: [f32; KERNEL_ENTRIES] = [
@@ -424,7 +424,7 @@ pub const HBAO_PDFS: [f32; KERNEL_ENTRIES] = [
 ];
 
 /// Disc directions `(sin α, cos α)` with `α = (i/N)·2·3.141` for sample `i` of the `N`-sample
-/// kernel (spec §4.2; 3.141 as in the reference), rounded from f64, indexed by [`kernel_entry`].
+/// kernel (spec svao-raysd §4.2; 3.141 as in the reference), rounded from f64, indexed by [`kernel_entry`].
 #[allow(clippy::excessive_precision)]
 pub const VAO_DIRECTIONS: [[f32; 2]; KERNEL_ENTRIES] = [
     // m = 8..15
@@ -492,11 +492,11 @@ pub const VAO_DIRECTIONS: [[f32; 2]; KERNEL_ENTRIES] = [
     [-0.1962163895368576, 0.9805606007575989],
 ];
 
-/// Samples per pixel of plain VAO and the stenciled family's default (spec §2: 8).
+/// Samples per pixel of plain VAO and the stenciled family's default (spec svao-raysd §2: 8).
 pub const AO_SAMPLES: u32 = 8;
 
 /// SD-map jitter at the reference's HEAD ("scrambled ray-sd samples"), index
-/// `(y mod 4)·4 + (x mod 4)` (spec §7.2). A Latin hypercube over the 16×16 sub-grid of a
+/// `(y mod 4)·4 + (x mod 4)` (spec svao-raysd §7.2). A Latin hypercube over the 16×16 sub-grid of a
 /// 4×4-pixel block.
 #[allow(clippy::excessive_precision)]
 pub const SD_JITTER_SCRAMBLED: [[f32; 2]; 16] = [
@@ -518,7 +518,7 @@ pub const SD_JITTER_SCRAMBLED: [[f32; 2]; 16] = [
     [0.6563677340745926, 0.35924511030316353],
 ];
 
-/// Paper-era jitter table (stratum centres, "default sobol", spec §7.2).
+/// Paper-era jitter table (stratum centres, "default sobol", spec svao-raysd §7.2).
 pub const SD_JITTER_PAPER: [[f32; 2]; 16] = [
     [0.125, 0.125],
     [0.375, 0.875],
@@ -538,7 +538,7 @@ pub const SD_JITTER_PAPER: [[f32; 2]; 16] = [
     [0.625, 0.625],
 ];
 
-/// Which SD-map jitter table to use (spec §7.2).
+/// Which SD-map jitter table to use (spec svao-raysd §7.2).
 #[repr(u32)]
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum JitterTable {
@@ -550,7 +550,7 @@ pub enum JitterTable {
     Paper = 2,
 }
 
-/// Jitter of SD texel `q` inside its texel (spec §7.2: index `(y mod 4)·4 + (x mod 4)` of the
+/// Jitter of SD texel `q` inside its texel (spec svao-raysd §7.2: index `(y mod 4)·4 + (x mod 4)` of the
 /// guard-inclusive `q`), in frame `frame` of a sequence offset by `frame mod 16`: over 16
 /// frames every texel takes all 16 entries (frame 0 is the spec's index).
 #[inline]

@@ -1,9 +1,9 @@
 //! Raster G-buffer: linear view depth and the view-space face normal per pixel, over the full
-//! target including the guard band (spec svao-raysd §1, pass 0 of §3).
+//! target including the guard band (spec svao-raysd §1, pass 0 of svao-raysd §3).
 //!
 //! Triangles arrive de-indexed, each vertex carrying its triangle's face normal, so flat
 //! interpolation yields the geometric normal the reference uses. Depth is written from the
-//! perspective-correct view position rather than re-linearized from D32 (spec §1's `n·f/(…)`),
+//! perspective-correct view position rather than re-linearized from D32 (spec svao-raysd §1's `n·f/(…)`),
 //! which is more precise; the hardware depth only resolves visibility (reverse-Z, infinite far).
 
 use crate::common::ViewParams;
@@ -22,7 +22,7 @@ pub struct RasterParams {
     pub world_to_view: Mat4,
     /// Projection of the full target.
     pub view: ViewParams,
-    /// Depth peeling (spec §11): the second layer keeps only fragments farther than the first
+    /// Depth peeling (spec svao-raysd §11): the second layer keeps only fragments farther than the first
     /// layer's depth plus this separation [0.01]. Unused by the first pass.
     pub peel_separation: f32,
     pub _pad0: u32,
@@ -80,14 +80,14 @@ pub fn gbuffer_fs(
 }
 
 /// Does a fragment at linear depth `d` belong to the peeled second layer: farther than the first
-/// layer's depth `first` plus `separation` (spec §11; the first layer's background = nothing
+/// layer's depth `first` plus `separation` (spec svao-raysd §11; the first layer's background = nothing
 /// left to peel).
 #[inline]
 pub fn beyond_first_layer(d: f32, first: f32, separation: f32) -> bool {
     d > first + separation
 }
 
-/// Fragment shader of the depth-peeling pass (spec §11): the G-buffer fragment shader plus a
+/// Fragment shader of the depth-peeling pass (spec svao-raysd §11): the G-buffer fragment shader plus a
 /// discard of everything up to the first layer's depth + separation at this pixel.
 #[spirv(fragment(entry_point_name = "gbuffer_peel_fs"))]
 pub fn gbuffer_peel_fs(

@@ -8,12 +8,12 @@ use crate::graph::{
 };
 use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
-/// Ground-truth settings [defaults].
+/// Ground-truth settings \[defaults\].
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct GroundTruthSettings {
-    /// Rays per pixel [512].
+    /// Rays per pixel \[512\].
     pub spp: u32,
-    /// Uniform hemisphere sampling weighted by cos θ instead of cosine-weighted sampling [off].
+    /// Uniform hemisphere sampling weighted by cos θ instead of cosine-weighted sampling \[off\].
     pub uniform: bool,
 }
 
@@ -97,7 +97,7 @@ impl GroundTruthSettings {
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let resources = vec![
             record("groundtruth_frame", std::slice::from_ref(&self.frame(frame)), "camera + GroundTruthParams"),
-            target_f32("ao", 1.0, "ray-traced AO (spec §5), 1 = unoccluded"),
+            target_f32("ao", 1.0, "ray-traced AO (spec gtao-raymarch-hybrid §5), 1 = unoccluded"),
             ray_counter(),
         ];
         let mut bindings = slots(&[

@@ -13,7 +13,7 @@ use core::ops::{Add, Mul};
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct Denoised {
     /// Stored term for the next pass, `uint(a·255 + 0.5)` (earlier passes), or the final
-    /// `min(255, uint(a·1.5·255 + 0.5))` (last pass; the clamp is aokit's, spec §7.5).
+    /// `min(255, uint(a·1.5·255 + 0.5))` (last pass; the clamp is aokit's, spec gtao-raymarch-hybrid §7.5).
     pub term: u32,
     /// Whether this was the last pass.
     pub last: bool,
@@ -34,7 +34,7 @@ fn centre_weight(params: &GtaoParams, last: bool) -> f32 {
 }
 
 /// Denoise pass `params.pass` at pixel `p` over the full-target AO terms `terms` (0–255) and
-/// packed `edges` (spec §2.7 steps 1–5).
+/// packed `edges` (spec gtao-raymarch-hybrid §2.7 steps 1–5).
 #[inline]
 pub fn denoise_pixel(params: &GtaoParams, terms: &[u32], edges: &[u32], p: UVec2) -> Denoised {
     let last = is_last_pass(params);
@@ -42,7 +42,7 @@ pub fn denoise_pixel(params: &GtaoParams, terms: &[u32], edges: &[u32], p: UVec2
         let (term, visibility) = denoise_lanes::<f32>(params, terms, edges, p);
         return Denoised { term, last, visibility };
     }
-    // Bent normals (spec §2.6.5): the four packed channels filtered alike; the last pass
+    // Bent normals (spec gtao-raymarch-hybrid §2.6.5): the four packed channels filtered alike; the last pass
     // normalizes the normal (returned in the G-buffer's right-handed space) and rescales.
     let s = stencil::<f32>(params, edges, p);
     let value = weighted::<f32, Vec4>(terms, params.view.size().x, &s) / s.total;
@@ -63,13 +63,13 @@ pub fn is_last_pass(params: &GtaoParams) -> bool {
 }
 
 /// Denoise pass `params.pass` without bent normals at the pixels `p` (one or `L::LANES`): the
-/// stored term and, in the last pass, the final visibility `term/255` (spec §2.7 steps 1–5).
+/// stored term and, in the last pass, the final visibility `term/255` (spec gtao-raymarch-hybrid §2.7 steps 1–5).
 #[inline]
 pub fn denoise_lanes<L: Lanes>(params: &GtaoParams, terms: &[u32], edges: &[u32], p: L::U2) -> (L::Index, L) {
     let s = stencil::<L>(params, edges, p);
     let value = weighted::<L, L>(terms, params.view.size().x, &s) / s.total;
     // uint(x + 0.5) of a value in [0, 1] (in [0, 1.5] after the last pass's rescale) is its
-    // floor; the last pass clamps to 255 (aokit, spec §7.5), the others cannot exceed it.
+    // floor; the last pass clamps to 255 (aokit, spec gtao-raymarch-hybrid §7.5), the others cannot exceed it.
     let term = if is_last_pass(params) { value * 1.5 * 255.0 + 0.5 } else { value * 255.0 + 0.5 };
     let term = term.floor_index(L::index_splat(256));
     (term, L::index_to_float(term) / 255.0)
@@ -77,7 +77,7 @@ pub fn denoise_lanes<L: Lanes>(params: &GtaoParams, terms: &[u32], edges: &[u32]
 
 /// The 3×3 neighbourhood of a pixel (centre, L, R, T, B, TL, TR, BL, BR) and its weights:
 /// β, the symmetrized edges C = (CL, CR, CT, CB), the diagonal weights, and their sum (spec
-/// §2.7 steps 1–4).
+/// gtao-raymarch-hybrid §2.7 steps 1–4).
 struct Stencil<L: Lanes> {
     p: L::U2,
     l: L::U2,
@@ -97,7 +97,7 @@ struct Stencil<L: Lanes> {
     total: L,
 }
 
-/// The stencil of pass `params.pass` at `p` from the packed edges (spec §2.7 steps 1–3).
+/// The stencil of pass `params.pass` at `p` from the packed edges (spec gtao-raymarch-hybrid §2.7 steps 1–3).
 #[inline]
 fn stencil<L: Lanes>(params: &GtaoParams, edges: &[u32], p: L::U2) -> Stencil<L> {
     let size = params.view.size();
@@ -171,7 +171,7 @@ impl Term<f32> for Vec4 {
 }
 
 /// `β·a_c + CL·a_L + CR·a_R + CT·a_T + CB·a_B + wTL·a_TL + wTR·a_TR + wBL·a_BL + wBR·a_BR`
-/// (spec §2.7 step 4's numerator), in the order the reference sums it.
+/// (spec gtao-raymarch-hybrid §2.7 step 4's numerator), in the order the reference sums it.
 #[inline]
 fn weighted<L: Lanes, T: Term<L>>(terms: &[u32], width: u32, s: &Stencil<L>) -> T {
     T::load(terms, width, s.p) * L::splat(s.beta)

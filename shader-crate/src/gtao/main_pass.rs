@@ -1,6 +1,6 @@
 //! XeGTAO MainPass (spec gtao-raymarch-hybrid §2.6): edges for the denoiser, then per slice the
 //! two horizons found by stepping through the depth MIP chain, and the cosine-weighted arc
-//! integral of the visible part of the slice. Also pass 0, normals from depth (§2.4).
+//! integral of the visible part of the slice. Also pass 0, normals from depth (gtao-raymarch-hybrid §2.4).
 
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
@@ -23,7 +23,7 @@ pub struct GtaoPixel {
     pub edges: u32,
 }
 
-/// What the main pass knows about pixel `p` before its slices (spec §2.6.2): uv, the pulled
+/// What the main pass knows about pixel `p` before its slices (spec gtao-raymarch-hybrid §2.6.2): uv, the pulled
 /// view position, the unit vector toward the camera, the normal facing it, the screen radius
 /// in pixels, the minimum step and the noise. Shared by XeGTAO and VBAO (spec vbao §1). `L`:
 /// one pixel (`f32`) or several ([`Lanes`]).
@@ -46,7 +46,7 @@ pub struct PixelSetup<L: Lanes = f32> {
 }
 
 /// The packed denoiser edges of pixel `p` (one or `L::LANES`), whether it has a usable depth
-/// (background has none), and its [`PixelSetup`] (spec §2.6.1–§2.6.2).
+/// (background has none), and its [`PixelSetup`] (spec gtao-raymarch-hybrid §2.6.1–§2.6.2).
 #[inline]
 pub fn pixel_setup<L: Lanes>(
     params: &GtaoParams,
@@ -68,7 +68,7 @@ pub fn pixel_setup<L: Lanes>(
     );
     let packed = pack_edges(e);
     let uv = view.pixel_uv_lanes::<L>(p);
-    // fp32 working depth: pull 0.99999 toward the camera (spec §2.6.2).
+    // fp32 working depth: pull 0.99999 toward the camera (spec gtao-raymarch-hybrid §2.6.2).
     let z = zc * 0.99999;
     let pos = view_pos(view, uv, z);
     let v = (-pos).normalize();
@@ -86,7 +86,7 @@ pub fn pixel_setup<L: Lanes>(
     (packed, is_valid_depth(zc, view.far), PixelSetup { uv, pos, v, n, r, r_px, min_s, xi })
 }
 
-/// MainPass for pixel `p` of the full target (spec §2.6.2–§2.6.4). `normals`: encoded
+/// MainPass for pixel `p` of the full target (spec gtao-raymarch-hybrid §2.6.2–§2.6.4). `normals`: encoded
 /// right-handed view normals (the G-buffer's or pass 0's). Pixels without a usable depth
 /// (background) get visibility 1 [aokit choice: the reference has no background test].
 #[inline]
@@ -97,7 +97,7 @@ pub fn gtao_pixel(params: &GtaoParams, mips: &[f32], normals: &[u32], p: UVec2) 
 }
 
 /// The stored term of a pixel from the slices' average visibility `vis` and bent-normal sum
-/// (spec §2.6.4–§2.6.5): the final power, and with bent normals the normalised direction.
+/// (spec gtao-raymarch-hybrid §2.6.4–§2.6.5): the final power, and with bent normals the normalised direction.
 /// Background (`valid` false): visible, its bent normal toward the camera.
 #[inline]
 pub fn finish_pixel(params: &GtaoParams, valid: bool, vis: f32, bent: Vec3, n: Vec3) -> u32 {
@@ -118,7 +118,7 @@ pub fn finish_pixel(params: &GtaoParams, valid: bool, vis: f32, bent: Vec3, n: V
 }
 
 /// The slices of a pixel (or of `L::LANES` pixels): the average visibility before the final
-/// power, `(0.5·sat((10 − r_px)/100) + Σ L·(a(h0) + a(h1)))/slices` (spec §2.6.2–§2.6.4), and
+/// power, `(0.5·sat((10 − r_px)/100) + Σ L·(a(h0) + a(h1)))/slices` (spec gtao-raymarch-hybrid §2.6.2–§2.6.4), and
 /// the sum of the slices' bent-normal contributions when `params.bent_normals` is set (else
 /// zero).
 #[inline]
@@ -142,7 +142,7 @@ pub fn slices_visibility<L: Lanes>(params: &GtaoParams, mips: &[f32], px: &Pixel
     (vis / slices as f32, bent)
 }
 
-/// One slice's bent-normal contribution, `L·M·(dir.x·t0, dir.y·t0, −t1)` (spec §2.6.5: the
+/// One slice's bent-normal contribution, `L·M·(dir.x·t0, dir.y·t0, −t1)` (spec gtao-raymarch-hybrid §2.6.5: the
 /// cosine-weighted mean direction of the visible arc between the horizons h0, h1 in the slice
 /// frame, rotated by the minimal rotation M taking (0, 0, −1) to v, weighted by the fudged L).
 #[inline]
@@ -159,26 +159,26 @@ fn slice_bent_normal<L: Lanes>(sl: &SliceFrame<L>, h0: L, h1: L, v: L::V3, len: 
     rotate_minimal::<L>(L::V3::new(zero, zero, L::splat(-1.0)), v, local) * len
 }
 
-/// `max(V^p, 0.03)` (spec §2.6.4; VBAO finalises the same way, spec vbao §4).
+/// `max(V^p, 0.03)` (spec gtao-raymarch-hybrid §2.6.4; VBAO finalises the same way, spec vbao §4).
 #[inline]
 pub fn final_visibility(vis: f32, power: f32) -> f32 {
     Float::max(Float::powf(vis, power), 0.03)
 }
 
-/// Falloff weight `W(D) = sat((R − D)/falloffRange)` (spec §2.6.2; a step when the range is 0).
+/// Falloff weight `W(D) = sat((R − D)/falloffRange)` (spec gtao-raymarch-hybrid §2.6.2; a step when the range is 0).
 #[inline]
 fn falloff<L: Lanes>(d: L, r: f32, range: f32) -> L {
     if range > 0.0 { sat((-d + r) / range) } else { L::select(d.le(L::splat(r)), L::splat(1.0), L::splat(0.0)) }
 }
 
 /// The cosine-weighted visible arc of one side, `a(h) = (cos n + 2h·sin γ − cos(2h − γ))/4`
-/// (spec §2.6.3 step 10; GTAO paper eq. 10).
+/// (spec gtao-raymarch-hybrid §2.6.3 step 10; GTAO paper eq. 10).
 #[inline]
 pub fn arc_integral<L: Lanes>(h: L, gamma: L, cos_n: L) -> L {
     (cos_n + h * 2.0 * gamma.sin() - (h * 2.0 - gamma).cos()) * 0.25
 }
 
-/// One slice's frame (spec §2.6.3 steps 1–5): the screen step vector, the slice direction,
+/// One slice's frame (spec gtao-raymarch-hybrid §2.6.3 steps 1–5): the screen step vector, the slice direction,
 /// the projected normal, its length L, cos n and the signed normal angle γ.
 #[derive(Copy, Clone, Debug)]
 pub struct SliceFrame<L: Lanes = f32> {
@@ -195,7 +195,7 @@ pub struct SliceFrame<L: Lanes = f32> {
     pub gamma: L,
 }
 
-/// The frame of slice `s` of a pixel (spec §2.6.3 steps 1–5).
+/// The frame of slice `s` of a pixel (spec gtao-raymarch-hybrid §2.6.3 steps 1–5).
 #[inline]
 pub fn slice_frame<L: Lanes>(params: &GtaoParams, px: &PixelSetup<L>, s: u32) -> SliceFrame<L> {
     let slices = params.slices.max(1);
@@ -217,7 +217,7 @@ pub fn slice_frame<L: Lanes>(params: &GtaoParams, px: &PixelSetup<L>, s: u32) ->
 
 /// Step `k` of slice `s`: the view positions of the two samples, `Q0` at uv + offset (side 0)
 /// and `Q1` at uv − offset (side 1), with the MIP level chosen from the offset length and the
-/// offset rounded to whole pixels (spec §2.6.3 step 7).
+/// offset rounded to whole pixels (spec gtao-raymarch-hybrid §2.6.3 step 7).
 #[inline]
 pub fn sample_pair<L: Lanes>(
     params: &GtaoParams,
@@ -245,7 +245,7 @@ pub fn sample_pair<L: Lanes>(
 
 /// Point sample of the MIP chain per lane at level `level` (an integral float; clamped to the
 /// chain, NaN reads level 0) and `uv`: the texel `clamp(⌊uv·size⌋, 0, size − 1)` of that level
-/// (spec §1.5).
+/// (spec gtao-raymarch-hybrid §1.5).
 #[inline]
 fn mip_sample<L: Lanes>(mips: &[f32], full: UVec2, level: L, uv: L::V2) -> L {
     let (w, h, at, wf, hf) = if L::LANES == 1 {
@@ -277,7 +277,7 @@ fn mip_sample<L: Lanes>(mips: &[f32], full: UVec2, level: L, uv: L::V2) -> L {
     L::gather_index(mips, at + y * w + x)
 }
 
-/// One slice's horizon angles `(h0, h1)` (spec §2.6.3 steps 6–9): the largest horizon cosine
+/// One slice's horizon angles `(h0, h1)` (spec gtao-raymarch-hybrid §2.6.3 steps 6–9): the largest horizon cosine
 /// per side over the steps, starting at the hemisphere's edge, as angles.
 #[inline]
 fn slice_horizons<L: Lanes>(
@@ -306,14 +306,14 @@ fn slice_horizons<L: Lanes>(
     (-fast_acos(c1), fast_acos(c0))
 }
 
-/// XeGTAO's fudge of the projected normal's length, `lerp(L, 1, 0.05)` (spec §2.6.3 step 8).
+/// XeGTAO's fudge of the projected normal's length, `lerp(L, 1, 0.05)` (spec gtao-raymarch-hybrid §2.6.3 step 8).
 #[inline]
 pub fn projected_length_fudge<L: Lanes>(len: L) -> L {
     lerp(len, L::splat(1.0), L::splat(0.05))
 }
 
 /// Horizon cosine of one sample, faded toward the hemisphere fallback `low` with distance
-/// (spec §2.6.3 step 7; thin-occluder compensation stretches z of the falloff distance).
+/// (spec gtao-raymarch-hybrid §2.6.3 step 7; thin-occluder compensation stretches z of the falloff distance).
 #[inline]
 fn horizon_cosine<L: Lanes>(delta: L::V3, v: L::V3, thin: f32, r: f32, range: f32, low: L) -> L {
     let d = delta.length();
@@ -322,7 +322,7 @@ fn horizon_cosine<L: Lanes>(delta: L::V3, v: L::V3, thin: f32, r: f32, range: f3
     lerp(low, shc, falloff(stretched, r, range))
 }
 
-/// Pass 0 (spec §2.4): the view normal from depth at pixel `p` — four cross products of the
+/// Pass 0 (spec gtao-raymarch-hybrid §2.4): the view normal from depth at pixel `p` — four cross products of the
 /// neighbour directions weighted by edge connectivity `sat(e_a·e_b + 0.01)` — encoded as the
 /// G-buffer's right-handed octahedral normal.
 #[inline]

@@ -2,7 +2,7 @@
 //! chain (PrefilterDepths), horizon search over slices with the cosine-weighted arc integral
 //! (MainPass), and an edge-aware 3×3 denoiser run 1–3 times. Optional pass 0 derives normals
 //! from depth. View space here is XeGTAO's (+z forward); the G-buffer's right-handed normals are
-//! converted by negating z (spec §1.2).
+//! converted by negating z (spec gtao-raymarch-hybrid §1.2).
 
 pub mod denoise;
 pub mod main_pass;
@@ -20,10 +20,10 @@ use spirv_std::num_traits::Float;
 use crate::common::ViewParams;
 use crate::glam::{UVec2, uvec2};
 
-/// Levels of the working-depth MIP chain (spec §2.1).
+/// Levels of the working-depth MIP chain (spec gtao-raymarch-hybrid §2.1).
 pub const MIP_LEVELS: u32 = 5;
 
-/// XeGTAO settings (spec §2.1 defaults in brackets) plus the per-dispatch `pass` index.
+/// XeGTAO settings (spec gtao-raymarch-hybrid §2.1 defaults in brackets) plus the per-dispatch `pass` index.
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
@@ -49,13 +49,13 @@ pub struct GtaoParams {
     pub slices: u32,
     /// Steps per side (Low/Medium 2, High/Ultra 3).
     pub steps: u32,
-    /// Denoise passes 0–3 [1].
+    /// Denoise passes 0–3 \[1\].
     pub denoise_passes: u32,
-    /// Temporal noise frame (0 unless TAA + denoise, spec §1.6).
+    /// Temporal noise frame (0 unless TAA + denoise, spec gtao-raymarch-hybrid §1.6).
     pub noise_frame: u32,
     /// Prefilter: the MIP level this dispatch writes; denoise: the pass index.
     pub pass: u32,
-    /// 1: the main pass also computes the bent normal and the terms are RGBA8 (spec §2.6.5).
+    /// 1: the main pass also computes the bent normal and the terms are RGBA8 (spec gtao-raymarch-hybrid §2.6.5).
     pub bent_normals: u32,
     /// Pads the struct to a multiple of 8 bytes (ViewParams' vec2 alignment), so VbaoParams,
     /// which holds it, has the same layout in Rust and in SPIR-V.
@@ -63,14 +63,14 @@ pub struct GtaoParams {
 }
 
 impl GtaoParams {
-    /// `R = Radius·RadiusMultiplier` (spec §2.6.2).
+    /// `R = Radius·RadiusMultiplier` (spec gtao-raymarch-hybrid §2.6.2).
     #[inline]
     pub fn effective_radius(&self) -> f32 {
         self.radius * self.radius_multiplier
     }
 }
 
-/// Size of MIP `k` of the full target: `max(1, ⌊W/2^k⌋) × max(1, ⌊H/2^k⌋)` (spec §1.5).
+/// Size of MIP `k` of the full target: `max(1, ⌊W/2^k⌋) × max(1, ⌊H/2^k⌋)` (spec gtao-raymarch-hybrid §1.5).
 #[inline]
 pub fn mip_size(full: UVec2, k: u32) -> UVec2 {
     uvec2((full.x >> k).max(1), (full.y >> k).max(1))

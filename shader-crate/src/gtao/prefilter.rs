@@ -6,10 +6,10 @@ use super::{GtaoParams, mip_offset, mip_size};
 use crate::common::math::depth_or_far;
 use crate::glam::{UVec2, uvec2};
 
-/// Largest working depth (the fp16 maximum, spec §2.5 step 1, §7.6).
+/// Largest working depth (the fp16 maximum, spec gtao-raymarch-hybrid §2.5 step 1, §7.6).
 pub const MAX_WORKING_DEPTH: f32 = 65504.0;
 
-/// Depth MIP filter (spec §2.5): `R' = 0.75·R·mult`, `w_i = sat((R' − (dmax − d_i)) /
+/// Depth MIP filter (spec gtao-raymarch-hybrid §2.5): `R' = 0.75·R·mult`, `w_i = sat((R' − (dmax − d_i)) /
 /// (FalloffRange·R'))`, result `Σ w_i·d_i / Σ w_i`; a step function when FalloffRange = 0.
 #[inline]
 pub fn mip_filter(d: [f32; 4], params: &GtaoParams) -> f32 {

@@ -38,12 +38,12 @@ impl Quality {
     }
 }
 
-/// Upper bounds of a custom quality (the spec's reference settings use 32 × 24, spec §2.2; VBAO's
+/// Upper bounds of a custom quality (the spec's reference settings use 32 × 24, spec gtao-raymarch-hybrid §2.2; VBAO's
 /// "dense" sampling is K ≥ 64 steps, spec vbao §6).
 pub const MAX_SLICES: u32 = 64;
 pub const MAX_STEPS: u32 = 64;
 
-/// XeGTAO settings (spec §2.1 defaults and UI ranges; the effect radius is the frame's AO
+/// XeGTAO settings (spec gtao-raymarch-hybrid §2.1 defaults and UI ranges; the effect radius is the frame's AO
 /// radius).
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct GtaoSettings {
@@ -51,23 +51,23 @@ pub struct GtaoSettings {
     pub slices: u32,
     /// Steps per slice side [3, High].
     pub steps: u32,
-    /// Denoise passes 0 (off) … 3 (soft) [1].
+    /// Denoise passes 0 (off) … 3 (soft) \[1\].
     pub denoise_passes: u32,
     /// [1.457], range 0.3–3.
     pub radius_multiplier: f32,
     /// [0.615], range 0–1.
     pub falloff_range: f32,
-    /// [2], range 1–3.
+    /// \[2\], range 1–3.
     pub sample_distribution_power: f32,
-    /// [0], range 0–0.7.
+    /// \[0\], range 0–0.7.
     pub thin_occluder_compensation: f32,
     /// [2.2], range 0.5–5.
     pub final_value_power: f32,
     /// [3.3], range 0–30.
     pub depth_mip_sampling_offset: f32,
-    /// Derive normals from depth (pass 0) instead of reading the G-buffer's [off].
+    /// Derive normals from depth (pass 0) instead of reading the G-buffer's \[off\].
     pub normals_from_depth: bool,
-    /// Also output the bent normal, resource `bent_normals` (spec §2.6.5, ≈ 25 % cost) [off].
+    /// Also output the bent normal, resource `bent_normals` (spec gtao-raymarch-hybrid §2.6.5, ≈ 25 % cost) \[off\].
     pub bent_normals: bool,
 }
 
@@ -151,7 +151,7 @@ pub mod rows {
             set_preset::<S>,
         )
         .flag(flag)
-        .help("XeGTAO quality preset: slices × steps per side 1×2, 2×2, 3×3, 9×3, or custom (spec §2.2)")
+        .help("XeGTAO quality preset: slices × steps per side 1×2, 2×2, 3×3, 9×3 or custom (gtao-raymarch-hybrid §2.2)")
     }
     pub const fn slices<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
         Setting::<S>::count("slices", 1, MAX_SLICES, slices_of::<S>)
@@ -166,7 +166,7 @@ pub mod rows {
     pub const fn denoise<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
         Setting::<S>::count("denoise", 0, 3, denoise_of::<S>)
             .flag(flag)
-            .help("XeGTAO denoise passes (0 off, 1 sharp, 2 medium, 3 soft; spec §2.7)")
+            .help("XeGTAO denoise passes (0 off, 1 sharp, 2 medium, 3 soft; spec gtao-raymarch-hybrid §2.7)")
     }
     pub const fn radius_multiplier<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
         Setting::<S>::number("radius-multiplier", 0.3, 3.0, radius_multiplier_of::<S>)
@@ -197,12 +197,12 @@ pub mod rows {
     pub const fn bent_normals<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
         Setting::<S>::switch("bent-normals", &["off", "on"], bent_normals_of::<S>)
             .flag(flag)
-            .help("XeGTAO: also output the bent normal, RGBA8 beside the AO (spec §2.6.5, ≈25 % cost)")
+            .help("XeGTAO: also output the bent normal, RGBA8 beside the AO (gtao-raymarch-hybrid §2.6.5, ≈25 % cost)")
     }
     pub const fn normals<S: XeGtaoBased>(flag: &'static str) -> Setting<S> {
         Setting::<S>::switch("normals", &["gbuffer", "depth"], normals_of::<S>)
             .flag(flag)
-            .help("XeGTAO normals: the G-buffer's, or derived from depth (pass 0, spec §2.4)")
+            .help("XeGTAO normals: the G-buffer's, or derived from depth (pass 0, spec gtao-raymarch-hybrid §2.4)")
     }
 }
 
@@ -286,7 +286,7 @@ pub const XEGTAO_STRUCTURE: &[Constant] = &[
     Constant::new(
         "GtaoParams.noise_frame",
         "the frame index (FrameDesc::frame_index; 0 for a single frame): XeGTAO's NoiseIndex, taken mod 64 by \
-         the noise (spec §1.6)",
+         the noise (spec gtao-raymarch-hybrid §1.6)",
     ),
     Constant::new("GtaoParams._pad", "0"),
 ];
@@ -330,7 +330,7 @@ impl GtaoSettings {
             slices,
             steps,
             denoise_passes: self.denoise_passes,
-            // XeGTAO's NoiseIndex (spec §1.6): the frame's index in its sequence.
+            // XeGTAO's NoiseIndex (spec gtao-raymarch-hybrid §1.6): the frame's index in its sequence.
             noise_frame: frame.frame_index,
             pass: 0,
             bent_normals: self.bent_normals as u32,
@@ -367,8 +367,8 @@ pub fn xegtao_graph(
     };
     let mut resources = vec![
         mips,
-        target_u32("gtao_terms", 0, "MainPass AO terms, 0–255 (spec §2.6)"),
-        target_u32("gtao_edges", 0, "packed depth edges of the denoiser (spec §2.6.1, read by §2.7)"),
+        target_u32("gtao_terms", 0, "MainPass AO terms, 0–255 (spec gtao-raymarch-hybrid §2.6)"),
+        target_u32("gtao_edges", 0, "packed depth edges, the denoiser's input (gtao-raymarch-hybrid §2.6.1, §2.7)"),
     ];
     let mut passes = Vec::new();
     for level in 0..MIP_LEVELS {
@@ -384,7 +384,7 @@ pub fn xegtao_graph(
     }
     let bytes = bytemuck::bytes_of(&params);
     let normals = if normals_from_depth {
-        resources.push(target_u32("gtao_normals", 0, "view normals derived from depth (spec §2.4)"));
+        resources.push(target_u32("gtao_normals", 0, "view normals derived from depth (gtao-raymarch-hybrid §2.4)"));
         let bindings = [(inputs::LINEAR_DEPTH, Access::Read), ("gtao_normals", Access::Write)];
         passes.push(Pass::compute("gtao_normals", "gtao_normals", &bindings, Extent::Full, bytes));
         "gtao_normals"
@@ -447,7 +447,7 @@ pub fn denoise_passes(
 /// The graph of a technique that writes visibility `"ao"` plus denoiser terms `"ao_terms"` and
 /// edges `"ao_edges"` (the ray march, the hybrid): its `resources` and `passes`, then XeGTAO's
 /// denoiser with `denoise` passes into `"ao_final"` when `denoise > 0` (spec
-/// gtao-raymarch-hybrid §3.4, §4.2: both reuse §2.7).
+/// gtao-raymarch-hybrid §3.4, §4.2: both reuse gtao-raymarch-hybrid §2.7).
 pub fn with_denoiser(frame: &FrameDesc, mut resources: Vec<Resource>, mut passes: Vec<Pass>, denoise: u32) -> Graph {
     let view = frame.camera.view;
     if denoise == 0 {

@@ -23,7 +23,7 @@ use crate::glam::{UVec2, Vec2, vec2, vec3};
 use crate::groundtruth::{OcclusionQuery, surface_point};
 use crate::raymarch::{depth_edges, facing_normal, hemisphere_dir, march};
 
-/// Hybrid parameters (spec §4.1 defaults in brackets).
+/// Hybrid parameters (spec gtao-raymarch-hybrid §4.1 defaults in brackets).
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
@@ -35,13 +35,13 @@ pub struct HybridParams {
     pub world_weight: f32,
     /// Relative depth bias κ of the screen march [0.0008].
     pub depth_bias: f32,
-    /// Screen rays per pixel `n_ss` [1].
+    /// Screen rays per pixel `n_ss` \[1\].
     pub screen_rays: u32,
-    /// World rays per pixel `n_ws` [1].
+    /// World rays per pixel `n_ws` \[1\].
     pub world_rays: u32,
-    /// Steps of a screen ray `S_ss` [16].
+    /// Steps of a screen ray `S_ss` \[16\].
     pub screen_steps: u32,
-    /// Temporal noise frame [0].
+    /// Temporal noise frame \[0\].
     pub noise_frame: u32,
     pub _pad: u32,
 }
@@ -58,7 +58,7 @@ pub struct HybridFrame {
     pub params: HybridParams,
 }
 
-/// Unit-disk point of a uniform pair: `(√u₁ cos 2πu₂, √u₁ sin 2πu₂)` (Malley, spec §4.2 step 2).
+/// Unit-disk point of a uniform pair: `(√u₁ cos 2πu₂, √u₁ sin 2πu₂)` (Malley, spec gtao-raymarch-hybrid §4.2 step 2).
 #[inline]
 pub fn disk(u: Vec2) -> Vec2 {
     let r = u.x.sqrt();
@@ -77,7 +77,7 @@ pub struct HybridPixel {
     pub rays: u32,
 }
 
-/// Hybrid AO of pixel `p` (spec §4.2). Ray slot k uses `u_k = frac(ξ + k·(½, ½))`; world rays
+/// Hybrid AO of pixel `p` (spec gtao-raymarch-hybrid §4.2). Ray slot k uses `u_k = frac(ξ + k·(½, ½))`; world rays
 /// take the first `n_ws` slots, screen rays the next `n_ss`, so the default pairs `u_ws = ξ` with
 /// `u_ss = frac(ξ + ½)`. Screen rays march `S_ss` steps with jitter `frac(0.5 + i·0.618…)` (i the
 /// noise index), Binary, no thickness, off-screen = miss; world rays are one ground-truth sample

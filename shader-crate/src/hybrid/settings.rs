@@ -11,18 +11,18 @@ use crate::gtao::settings::with_denoiser;
 use crate::raymarch::settings::DEPTH_BIAS;
 use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
-/// Rays per pixel and the world-ray weight (spec §4.1 defaults in brackets).
+/// Rays per pixel and the world-ray weight (spec gtao-raymarch-hybrid §4.1 defaults in brackets).
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct HybridSettings {
-    /// Screen-space rays per pixel [1].
+    /// Screen-space rays per pixel \[1\].
     pub screen_rays: u32,
-    /// World-space rays per pixel [1].
+    /// World-space rays per pixel \[1\].
     pub world_rays: u32,
     /// Weight of the world rays, 0–1 [2/3].
     pub world_weight: f32,
-    /// Steps of a screen ray [16].
+    /// Steps of a screen ray \[16\].
     pub screen_steps: u32,
-    /// XeGTAO denoise passes, 0–3 [3].
+    /// XeGTAO denoise passes, 0–3 \[3\].
     pub denoise_passes: u32,
 }
 
@@ -56,11 +56,11 @@ impl Settings for HybridSettings {
         if self.screen_rays + self.world_rays == 0 {
             return Err("hybrid needs at least one ray per pixel".into());
         }
-        // The blend (1 − w)·mean(screen) + w·mean(world) (spec §4.2 step 5) needs both means
+        // The blend (1 − w)·mean(screen) + w·mean(world) (spec gtao-raymarch-hybrid §4.2 step 5) needs both means
         // where both weights are non-zero.
         if (self.screen_rays == 0 && self.world_weight != 1.0) || (self.world_rays == 0 && self.world_weight != 0.0) {
             return Err(format!(
-                "--world-weight {}: the {} variant blends nothing else (use the mixed variant to weight)",
+                "world-weight {}: the {} variant blends nothing else (use the mixed variant to weight)",
                 self.world_weight,
                 if self.screen_rays == 0 { "world" } else { "screen" }
             ));
@@ -69,7 +69,7 @@ impl Settings for HybridSettings {
     }
 }
 
-/// The paper's variants (spec §4.2, last paragraph).
+/// The paper's variants (spec gtao-raymarch-hybrid §4.2, last paragraph).
 const VARIANTS: [&str; 3] = ["mixed", "world", "screen"];
 
 /// Variant `i` of [`VARIANTS`]: `mixed` (1 screen + 1 world, w = 2/3), `world` (2 world rays),
@@ -120,7 +120,7 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
         Constant::new("HybridParams.screen_steps", "`screen-steps`: steps of a screen ray [16]"),
         Constant::new(
             "HybridParams.noise_frame",
-            "the frame index (FrameDesc::frame_index; 0 for a single frame), taken mod 64 by the noise (spec §1.6, §4.1)",
+            "FrameDesc::frame_index (0 for one frame), mod 64 in the noise (gtao-raymarch-hybrid §1.6, §4.1)",
         ),
         Constant::new("HybridParams._pad", "0"),
     ],
@@ -129,8 +129,8 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
 ];
 
 impl HybridSettings {
-    /// The paper's variants (spec §4.2, last paragraph): `mixed` (1 screen + 1 world, w = 2/3), `world` (2 world
-    /// rays), `screen` (2 screen rays).
+    /// The paper's variants (spec gtao-raymarch-hybrid §4.2, last paragraph): `mixed` (1 screen + 1 world, w = 2/3),
+    /// `world` (2 world rays), `screen` (2 screen rays).
     pub fn variant(name: &str) -> Result<HybridSettings, String> {
         match VARIANTS.iter().position(|v| *v == name) {
             Some(i) => Ok(variant_at(i)),
@@ -149,18 +149,19 @@ impl HybridSettings {
                 screen_rays: self.screen_rays,
                 world_rays: self.world_rays,
                 screen_steps: self.screen_steps,
-                // The frame's index in its sequence: the Hilbert-R2 noise's temporal offset (spec §1.6, §4.1).
+                // The frame's index in its sequence: the Hilbert-R2 noise's temporal offset
+                // (spec gtao-raymarch-hybrid §1.6, §4.1).
                 noise_frame: frame.frame_index,
                 _pad: 0,
             },
         }
     }
 
-    /// Rays → [denoise].
+    /// Rays → \[denoise\].
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let resources = vec![
             record("hybrid_frame", std::slice::from_ref(&self.frame(frame)), "camera + HybridParams"),
-            target_f32("ao", 1.0, "blended screen/world visibility (spec §4.2 step 5), 1 = unoccluded"),
+            target_f32("ao", 1.0, "blended screen/world visibility (gtao-raymarch-hybrid §4.2 step 5), 1 = unoccluded"),
             target_u32("ao_terms", 0, "the AO as the denoiser's 0–255 terms"),
             target_u32("ao_edges", 0, "packed depth edges for the denoiser"),
             ray_counter(),

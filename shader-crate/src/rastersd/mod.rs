@@ -4,7 +4,7 @@
 //! fraction α = 1.5/N of the N samples; per sample the nearest kept depth wins (depth test
 //! LESS). aokit writes the samples' depths with an atomic min on a storage buffer — the same
 //! "nearest wins" as an MSAA depth buffer, with the stencil replaced by an early-out on
-//! `rayMax == 0` (spec §8 allows an equivalent early-out).
+//! `rayMax == 0` (spec svao-raysd §8 allows an equivalent early-out).
 
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
@@ -17,7 +17,7 @@ use crate::glam::{UVec2, Vec3};
 use crate::raysd::bilinear_depth;
 use crate::svao::SvaoFrame;
 
-/// `hash3(a, b, c) = hash(hash(a, b), c)` (spec §8 step 4).
+/// `hash3(a, b, c) = hash(hash(a, b), c)` (spec svao-raysd §8 step 4).
 #[inline]
 pub fn hash3(a: f32, b: f32, c: f32) -> f32 {
     wyman_hash(wyman_hash(a, b), c)
@@ -53,7 +53,7 @@ pub fn stratum_start(n: u32, k: u32) -> u32 {
     s
 }
 
-/// `LUT[idx]`: all N-bit masks sorted by popcount, then by value (spec §8; N = 4:
+/// `LUT[idx]`: all N-bit masks sorted by popcount, then by value (spec svao-raysd §8; N = 4:
 /// `[0, 1,2,4,8, 3,5,6,9,10,12, 7,11,13,14, 15]`).
 #[inline]
 pub fn mask_lut(n: u32, idx: u32) -> u32 {
@@ -75,7 +75,7 @@ pub fn mask_lut(n: u32, idx: u32) -> u32 {
     (1 << n) - 1
 }
 
-/// The fragment's coverage mask (spec §8 step 5): `Rn = floor(α·N + u)` kept samples with
+/// The fragment's coverage mask (spec svao-raysd §8 step 5): `Rn = floor(α·N + u)` kept samples with
 /// `u = hash4(posW, 1.438943289)`, α = 1.5/N; all N when Rn ≥ N, none when Rn = 0, else one of the
 /// C(N, Rn) masks with Rn bits, picked by `u2 = hash3(posW.zyx)` from its stratum of the LUT. In
 /// frame `frame` of a sequence both hashes are rotated by its `frame_rotation` (frame 0: none).
@@ -96,7 +96,7 @@ pub fn coverage_mask(pos_w: Vec3, n: u32, frame: u32) -> u32 {
     mask_lut(n, (lo + (hi - lo) * u2) as u32)
 }
 
-/// One fragment at SD texel `q` (spec §8 steps 2–6, the alpha test done by the caller): linear
+/// One fragment at SD texel `q` (spec svao-raysd §8 steps 2–6, the alpha test done by the caller): linear
 /// view depth `d`, world position `pos_w`, camera distance `dist`. Returns the coverage mask
 /// (0 = discarded) and the normalized depth `(d − near)/(far − near)` to min into each covered
 /// sample. Fragments not farther than the first layer (bilinear primary depth at the texel

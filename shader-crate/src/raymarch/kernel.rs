@@ -31,7 +31,7 @@ impl Pcg32 {
     }
 }
 
-/// Best-candidate Poisson disk of `n` points in the unit disk (spec §3.3): point i keeps the
+/// Best-candidate Poisson disk of `n` points in the unit disk (spec gtao-raymarch-hybrid §3.3): point i keeps the
 /// best of `32·max(i, 1)` uniform candidates `(√u₁ cos 2πu₂, √u₁ sin 2πu₂)` by distance to the
 /// accepted points; ties keep the first. PCG32 seeded with the spec's initstate/initseq.
 pub fn best_candidate(n: usize) -> Vec<Vec2> {
@@ -55,7 +55,7 @@ pub fn best_candidate(n: usize) -> Vec<Vec2> {
     points.into_iter().map(|(x, y)| vec2(x as f32, y as f32)).collect()
 }
 
-/// Vogel spiral: `p_i = √((i+½)/N)·(cos iγ, sin iγ)`, γ = π(3 − √5) (spec §3.3).
+/// Vogel spiral: `p_i = √((i+½)/N)·(cos iγ, sin iγ)`, γ = π(3 − √5) (spec gtao-raymarch-hybrid §3.3).
 pub fn vogel(n: usize) -> Vec<Vec2> {
     let golden = std::f64::consts::PI * (3.0 - 5f64.sqrt());
     (0..n)

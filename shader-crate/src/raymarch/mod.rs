@@ -24,17 +24,17 @@ use spirv_std::spirv;
 /// Most Poisson-disk directions a kernel may hold.
 pub const MAX_DIRECTIONS: u32 = 64;
 
-/// How a hit direction contributes (spec §3.4 step 8, aokit's two readings of Eq. 2).
+/// How a hit direction contributes (spec gtao-raymarch-hybrid §3.4 step 8, aokit's two readings of Eq. 2).
 #[repr(u32)]
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum Contribution {
-    /// `c = sat(Δ̃/R)`: visible free distance over R (obscurance with linear falloff) [default].
+    /// `c = sat(Δ̃/R)`: visible free distance over R (obscurance with linear falloff) \[default\].
     Linear = 0,
-    /// `c = 0` on any hit: in expectation the cosine-weighted ground truth of §5.
+    /// `c = 0` on any hit: in expectation the cosine-weighted ground truth of gtao-raymarch-hybrid §5.
     Binary = 1,
 }
 
-/// Ray-marched SSAO parameters (push constants; spec §3.2 defaults in brackets).
+/// Ray-marched SSAO parameters (push constants; spec gtao-raymarch-hybrid §3.2 defaults in brackets).
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
@@ -44,19 +44,19 @@ pub struct RaymarchParams {
     pub view: ViewParams,
     /// March distance R in world units [the ground truth's radius].
     pub radius: f32,
-    /// Contrast exponent α of Eq. 2 [1].
+    /// Contrast exponent α of Eq. 2 \[1\].
     pub alpha: f32,
     /// Relative depth bias κ [0.0008].
     pub depth_bias: f32,
     /// Thickness T_max of depth-buffer surfaces [a huge number: a pure height field].
     pub thickness: f32,
-    /// Directions N (8/16/24) [16], at most [`MAX_DIRECTIONS`].
+    /// Directions N (8/16/24) \[16\], at most [`MAX_DIRECTIONS`].
     pub directions: u32,
-    /// Steps S per direction [8].
+    /// Steps S per direction \[8\].
     pub steps: u32,
     /// [`Contribution`] as `u32`.
     pub contribution: u32,
-    /// Temporal noise frame [0].
+    /// Temporal noise frame \[0\].
     pub noise_frame: u32,
 }
 
@@ -89,7 +89,7 @@ pub struct March<L: Lanes = f32> {
 /// `jitter`: `t_j = R·(j − jitter)/S`. A step is free while it is nearer than the depth buffer
 /// (`S.z < z·(1+κ)`) or more than `thickness` behind it; the first other step is the hit, and
 /// Eq. 1 interpolates the crossing from the gaps `δ = |S − T|` of it and the step before
-/// (`t_0 = δ_0 = 0`). Leaving the screen ends the march without a hit (spec §3.4 steps 6–7).
+/// (`t_0 = δ_0 = 0`). Leaving the screen ends the march without a hit (spec gtao-raymarch-hybrid §3.4 steps 6–7).
 /// A step that projects into the shaded pixel `home` is free [aokit: its only depth is the
 /// pixel's own centre, so on a tilted surface every step moving away from the camera would
 /// otherwise hit the surface it starts on]. Per lane: a lane stops at its hit or when it leaves
@@ -158,7 +158,7 @@ pub fn facing_normal(normals: &[u32], width: u32, p: UVec2, pos: Vec3) -> Vec3 {
 }
 
 /// Direction for disk point `d` (unit disk) lifted toward the camera and rotated to the normal
-/// (spec §3.4 steps 4–5; §4.2 step 2): Malley's method, cosine-distributed around `n`.
+/// (spec gtao-raymarch-hybrid §3.4 steps 4–5, §4.2 step 2): Malley's method, cosine-distributed around `n`.
 #[inline]
 pub fn hemisphere_dir<L: Lanes>(d: L::V2, n: L::V3) -> L::V3 {
     let (x, y) = (d.x(), d.y());
@@ -206,7 +206,7 @@ pub fn depth_edges(view: &ViewParams, depth: &[f32], p: UVec2) -> u32 {
     ))
 }
 
-/// Ray-marched AO of pixel `p` (spec §3.4); `kernel` holds the N unit-disk points.
+/// Ray-marched AO of pixel `p` (spec gtao-raymarch-hybrid §3.4); `kernel` holds the N unit-disk points.
 #[inline]
 pub fn raymarch_pixel(
     params: &RaymarchParams,
@@ -228,7 +228,7 @@ pub fn unshaded(edges: u32) -> RaymarchPixel {
     RaymarchPixel { ao: 1.0, term: store_term(1.0), edges }
 }
 
-/// What pixel `p` marches from (spec §3.4 steps 1–3), per lane in [`raymarch_sum`].
+/// What pixel `p` marches from (spec gtao-raymarch-hybrid §3.4 steps 1–3), per lane in [`raymarch_sum`].
 #[derive(Copy, Clone, Debug)]
 pub struct MarchOrigin<L: Lanes = f32> {
     pub pixel: L::U2,
@@ -275,7 +275,7 @@ pub fn raymarch_setup(params: &RaymarchParams, depth: &[f32], normals: &[u32], p
     (edges, Some(origin))
 }
 
-/// `Σ c` over the directions (spec §3.4 steps 4–8): each disk point rotated by the noise,
+/// `Σ c` over the directions (spec gtao-raymarch-hybrid §3.4 steps 4–8): each disk point rotated by the noise,
 /// lifted to the hemisphere, marched; `c` = 1 without a hit, else 0 (binary) or `sat(Δ̃/R)`.
 #[inline]
 pub fn raymarch_sum<L: Lanes>(

@@ -6,23 +6,23 @@ use crate::graph::{Access, Extent, FrameDesc, Graph, Pass, inputs, record, targe
 use crate::gtao::settings::with_denoiser;
 use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
-/// Relative depth bias κ (spec §3.2).
+/// Relative depth bias κ (spec gtao-raymarch-hybrid §3.2).
 pub const DEPTH_BIAS: f32 = 0.0008;
 
 /// Options of the ray-marched SSAO (spec gtao-raymarch-hybrid §3.2 defaults in brackets).
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct RaymarchSettings {
-    /// Directions N (8, 16 or 24 in the paper; 1–64) [16].
+    /// Directions N (8, 16 or 24 in the paper; 1–64) \[16\].
     pub directions: u32,
-    /// Steps per direction [8].
+    /// Steps per direction \[8\].
     pub steps: u32,
-    /// Contrast exponent α [1].
+    /// Contrast exponent α \[1\].
     pub alpha: f32,
-    /// Eq. 2 reading: binary (c = 0 on a hit) instead of linear (c = Δ̃/R) [linear].
+    /// Eq. 2 reading: binary (c = 0 on a hit) instead of linear (c = Δ̃/R) \[linear\].
     pub binary: bool,
-    /// Vogel spiral instead of the best-candidate Poisson disk [off].
+    /// Vogel spiral instead of the best-candidate Poisson disk \[off\].
     pub vogel: bool,
-    /// XeGTAO denoise passes afterwards, 0–3 [0].
+    /// XeGTAO denoise passes afterwards, 0–3 \[0\].
     pub denoise_passes: u32,
 }
 
@@ -36,7 +36,7 @@ impl Settings for RaymarchSettings {
     const ROWS: &'static [Setting<Self>] = &[
         Setting::<Self>::count("directions", 1, MAX_DIRECTIONS, |s| &mut s.directions)
             .flag("rm-directions")
-            .help("Ray-marched SSAO: directions N (the paper uses 8, 16, 24; spec §3.2)"),
+            .help("Ray-marched SSAO: directions N (the paper uses 8, 16, 24; spec gtao-raymarch-hybrid §3.2)"),
         Setting::<Self>::count("steps", 1, 256, |s| &mut s.steps)
             .flag("rm-steps")
             .help("Ray-marched SSAO: steps per direction"),
@@ -48,7 +48,7 @@ impl Settings for RaymarchSettings {
             .help("Ray-marched SSAO: reading of Eq. 2 (linear: visible distance / R; binary: 0 on a hit)"),
         Setting::<Self>::switch("kernel", &["best-candidate", "vogel"], |s| &mut s.vogel)
             .only_switch("rm-vogel", "vogel")
-            .help("Ray-marched SSAO: Poisson disk (spec §3.3); --rm-vogel uses a Vogel spiral"),
+            .help("Ray-marched SSAO: Poisson disk (spec gtao-raymarch-hybrid §3.3); --rm-vogel uses a Vogel spiral"),
         Setting::<Self>::count("denoise", 0, 3, |s| &mut s.denoise_passes)
             .flag("rm-denoise")
             .help("Ray-marched SSAO: XeGTAO denoise passes afterwards"),
@@ -87,7 +87,7 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
         Constant::new("RaymarchParams.contribution", "Contribution of `contribution`: linear 0, binary 1 [linear 0]"),
         Constant::new(
             "RaymarchParams.noise_frame",
-            "the frame index (FrameDesc::frame_index; 0 for a single frame), taken mod 64 by the noise (spec §1.6)"
+            "the frame index (FrameDesc::frame_index; 0 for one frame), mod 64 in the noise (gtao-raymarch-hybrid §1.6)"
         ),
     ],
     crate::gtao::settings::DENOISER,
@@ -106,21 +106,21 @@ impl RaymarchSettings {
             directions: self.directions,
             steps: self.steps,
             contribution: if self.binary { Contribution::Binary } else { Contribution::Linear } as u32,
-            // The frame's index in its sequence: the Hilbert-R2 noise's temporal offset (spec §1.6).
+            // The frame's index in its sequence: the Hilbert-R2 noise's temporal offset (gtao-raymarch-hybrid §1.6).
             noise_frame: frame.frame_index,
         }
     }
 
-    /// The Poisson-disk kernel (spec §3.3).
+    /// The Poisson-disk kernel (spec gtao-raymarch-hybrid §3.3).
     pub fn kernel(&self) -> Vec<crate::glam::Vec2> {
         let n = self.directions as usize;
         if self.vogel { super::kernel::vogel(n) } else { super::kernel::best_candidate(n) }
     }
 
-    /// March → [denoise].
+    /// March → \[denoise\].
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let resources = vec![
-            record("raymarch_kernel", &self.kernel(), "Poisson-disk directions (spec §3.3)"),
+            record("raymarch_kernel", &self.kernel(), "Poisson-disk directions (spec gtao-raymarch-hybrid §3.3)"),
             target_f32("ao", 1.0, "ray-marched accessibility (Eq. 2), 1 = unoccluded"),
             target_u32("ao_terms", 0, "the AO as the denoiser's 0–255 terms"),
             target_u32("ao_edges", 0, "packed depth edges for the denoiser"),

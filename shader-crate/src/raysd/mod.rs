@@ -23,12 +23,12 @@ use crate::svao::pass1::{combine, depth_point_value};
 use crate::svao::{Refine, Refined, SvaoFrame, SvaoParams, sd_pixel};
 use crate::vao::kernel::{LineSample, PixelFrame};
 
-/// Most layers an SD map holds (spec §2: N ∈ {1, 2, 4, 8}).
+/// Most layers an SD map holds (spec svao-raysd §2: N ∈ {1, 2, 4, 8}).
 pub const MAX_LAYERS: usize = 8;
 /// [`reservoir_slot`]'s answer for a hit that does not enter the map.
 pub const NO_SLOT: u32 = u32::MAX;
 
-/// The any-hit payload of one SD ray (spec §7.3): `N` normalized depths (1 = far = empty) and
+/// The any-hit payload of one SD ray (spec svao-raysd §7.3): `N` normalized depths (1 = far = empty) and
 /// the hit count, plus what the any-hit needs to normalize a hit distance.
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -63,7 +63,7 @@ impl SdPayload {
     }
 }
 
-/// Reservoir step for one candidate (spec §7.3, Ray-SD paper Listing 1): `slot = count++`; past
+/// Reservoir step for one candidate (spec svao-raysd §7.3, Ray-SD paper Listing 1): `slot = count++`; past
 /// `N` the slot is `floor(u·count)` with the incremented count; a slot ≥ N is rejected, and so is
 /// a hit behind the depth already in its slot (z-cull). Returns the slot to write or
 /// [`NO_SLOT`]. The count grows for every candidate, rejected or not.
@@ -80,7 +80,7 @@ pub fn reservoir_slot(payload: &mut SdPayload, u: f32, z: f32) -> u32 {
     slot
 }
 
-/// First half of the SD any-hit (spec §7.3) for a hit at ray distance `t` with DXR barycentrics
+/// First half of the SD any-hit (spec svao-raysd §7.3) for a hit at ray distance `t` with DXR barycentrics
 /// `bary`: hash the barycentrics (rotated by the frame's [`SdPayload::rotation`]), normalize the
 /// hit's linear depth and pick the reservoir slot.
 /// Returns `(slot, z)`; only a hit with `slot != NO_SLOT` needs the alpha test.
@@ -111,7 +111,7 @@ pub fn reservoir_any_hit(payload: &mut SdPayload, t: f32, bary: Vec2, alpha_pass
     reservoir_commit(payload, slot, z, alpha)
 }
 
-/// The SD any-hit (spec §7.3) over one ray's candidates: [`reservoir_candidate`], the alpha
+/// The SD any-hit (spec svao-raysd §7.3) over one ray's candidates: [`reservoir_candidate`], the alpha
 /// test only for hits that would be stored, [`reservoir_commit`] — ACCEPT once the count reaches
 /// `MAX_COUNT`, IGNORE before. The any-hit shader and the ray-query loop both run it.
 pub struct SdHits<'a> {
@@ -150,7 +150,7 @@ impl SdRay {
 }
 
 /// Bilinear linear depth at uv (clamp to edge; unusable depths read as the far plane), as the
-/// reference samples the primary depth at the SD texel centre (spec §7.1).
+/// reference samples the primary depth at the SD texel centre (spec svao-raysd §7.1).
 #[inline]
 pub fn bilinear_depth<G: GBuffer>(gbuffer: &G, frame: &SvaoFrame, uv: Vec2) -> f32 {
     let view = &frame.params.vao.view;
@@ -182,7 +182,7 @@ fn low_res_texel(q: UVec2, params: &SvaoParams) -> IVec2 {
     q.as_ivec2() - IVec2::splat(params.sd_guard as i32)
 }
 
-/// The ray of SD texel `q` (spec §7.1): from the camera through the jittered low-res position
+/// The ray of SD texel `q` (spec svao-raysd §7.1): from the camera through the jittered low-res position
 /// `(q' + J(q))/L`; `tMin = d_p/cos θ + 0.1·near` behind the (bilinear, un-jittered) primary
 /// depth, `tMax = far/cos θ_centre`; with the interval optimisation both are clamped to the
 /// `[rayMin, rayMax]` pass 1 recorded (0 = unset), so unrequested texels get an empty interval.
@@ -213,7 +213,7 @@ pub fn sd_ray<G: GBuffer>(gbuffer: &G, frame: &SvaoFrame, q: UVec2, ray_min: u32
     SdRay { origin: camera.eye(), direction, t_min, t_max, cos_theta }
 }
 
-/// Pass-2 source reading the SD map (spec §9): the flagged sample's SD texel `q`, reconstructed
+/// Pass-2 source reading the SD map (spec svao-raysd §9): the flagged sample's SD texel `q`, reconstructed
 /// at its jittered low-res position, every layer combined by `min`.
 pub struct SdMapRefine<'a> {
     /// `N` normalized depths per SD texel, row-major over the SD size.
@@ -258,7 +258,7 @@ use crate::glam::UVec3;
 use crate::svao::pass2_pixel;
 use spirv_std::spirv;
 
-/// Compute entry point of AO pass 2 from the SD map (spec §9), in place on `ao`.
+/// Compute entry point of AO pass 2 from the SD map (spec svao-raysd §9), in place on `ao`.
 #[spirv(compute(threads(8, 8), entry_point_name = "raysd_pass2"))]
 pub fn raysd_pass2(
     #[spirv(global_invocation_id)] id: UVec3,

@@ -1,7 +1,7 @@
 //! Ray-SVAO / RT-VAO (spec svao-raysd §10), the Ray-SD paper's reference: pass 2 traces one
 //! ray per flagged sample from the camera through the sample's snapped texel and finds every
-//! surface that matters for the halo model on that line — or, with the HBAO+ kernel (§4.5,
-//! §10 "HBAO kernel"), the first surface inside the sphere.
+//! surface that matters for the halo model on that line — or, with the HBAO+ kernel (svao-raysd §4.5,
+//! svao-raysd §10 "HBAO kernel"), the first surface inside the sphere.
 
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
@@ -22,10 +22,10 @@ use crate::vao::kernel::{KERNEL_HBAO, LineSample, PixelFrame, halo_visibility, h
 
 pub use crate::common::any_hit::{ACCEPT, ACCEPT_AND_END, IGNORE};
 
-/// The running ray distances of one sample's ray (spec §10), also its ray payload. With the
+/// The running ray distances of one sample's ray (spec svao-raysd §10), also its ray payload. With the
 /// HBAO+ kernel the halo branch is switched off (`t_halo` = 0, `t_sphere` = `t_const` = −1: no
 /// hit is ignored or treated as lying in front of the sphere), so [`sample_any_hit`] keeps the
-/// nearest hit in `t_inside`: §10's first hit on `[T(h), T(sphereEnd)]`.
+/// nearest hit in `t_inside`: svao-raysd §10's first hit on `[T(h), T(sphereEnd)]`.
 #[repr(C)]
 #[derive(Copy, Clone, Debug, PartialEq)]
 #[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
@@ -54,7 +54,7 @@ pub struct SampleRay {
     pub kappa: f32,
 }
 
-/// Set up the ray of flagged sample `s` (spec §10): direction through `snap(uvS)` (not clamped),
+/// Set up the ray of flagged sample `s` (spec svao-raysd §10): direction through `snap(uvS)` (not clamped),
 /// `T(z) = (|P| − z)·κ`; `tMin = max(tHalo, 0)`, `tMax = tInside`, and in screen `tMin` starts
 /// `0.01·R` behind the depth-buffer surface. With the HBAO+ kernel the interval is
 /// `[max(T(h), 0), T(sphereEnd)]` (same in-screen raise) and the halo branch is off
@@ -95,7 +95,7 @@ pub fn sample_ray(
     SampleRay { origin: camera.eye(), direction, view_direction, t_min, t_max: state.t_inside, state, kappa }
 }
 
-/// The Ray-SVAO any-hit (spec §10) for a hit at `t` that passed the alpha and facing tests:
+/// The Ray-SVAO any-hit (spec svao-raysd §10) for a hit at `t` that passed the alpha and facing tests:
 /// hits nearer than the running `tHalo` do not matter; in front of the sphere a hit pushes
 /// `tHalo` back and, inside the constant area, ends the search; inside the sphere the nearest
 /// hit is committed.
@@ -112,9 +112,9 @@ pub fn sample_any_hit(state: &mut SampleRayState, t: f32) -> u32 {
     ACCEPT
 }
 
-/// The Ray-SVAO any-hit over one ray's candidates (spec §10): the alpha test, then
+/// The Ray-SVAO any-hit over one ray's candidates (spec svao-raysd §10): the alpha test, then
 /// [`sample_any_hit`] (every triangle counts as facing the ray: the library traces without
-/// culling, §10's "double-sided" case). The any-hit shader and the ray-query loop both run it.
+/// culling, svao-raysd §10's "double-sided" case). The any-hit shader and the ray-query loop both run it.
 pub struct SampleHits<'a> {
     pub state: SampleRayState,
     pub alpha: AlphaTables<'a>,
@@ -130,11 +130,11 @@ impl CandidateHit for SampleHits<'_> {
     }
 }
 
-/// Value after the trace (spec §10): VAO `min(v, v(Z(tInside)), vHaloOnly(Z(tHalo)))` with
-/// `Z(t) = |P| − t/κ`, `vHaloOnly` the halo (second) term of spec §4.3; HBAO+ `max(v, o)` with
-/// `o` the occlusion (§4.5) of the first hit `dir·tFirst` (view space), `v` unchanged on a miss.
+/// Value after the trace (spec svao-raysd §10): VAO `min(v, v(Z(tInside)), vHaloOnly(Z(tHalo)))` with
+/// `Z(t) = |P| − t/κ`, `vHaloOnly` the halo (second) term of spec svao-raysd §4.3; HBAO+ `max(v, o)` with
+/// `o` the occlusion (svao-raysd §4.5) of the first hit `dir·tFirst` (view space), `v` unchanged on a miss.
 /// (The reference evaluates a miss at `tFirst = 0`, the camera itself, which adds occlusion when
-/// the camera is within `R` of the pixel (§10); aokit counts a miss as nothing found.)
+/// the camera is within `R` of the pixel (svao-raysd §10); aokit counts a miss as nothing found.)
 #[inline]
 pub fn sample_visibility(frame: &PixelFrame, s: &LineSample, params: &SvaoParams, ray: &SampleRay, v: f32) -> f32 {
     if params.kernel == KERNEL_HBAO {
@@ -161,7 +161,7 @@ pub trait SampleTracer {
     fn trace(&mut self, ray: &mut SampleRay);
 }
 
-/// Refine flagged sample `s` by tracing its ray (spec §10): set up, trace when the interval is
+/// Refine flagged sample `s` by tracing its ray (spec svao-raysd §10): set up, trace when the interval is
 /// not empty, evaluate.
 #[inline]
 pub fn refine_by_ray<T: SampleTracer>(

@@ -18,13 +18,13 @@ use crate::vao::kernel::{
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct Pass1Pixel {
     /// Final AO when `mask == 0`; otherwise the un-exponentiated sum `A` as stored by a UNORM8
-    /// target (spec §5), which pass 2 completes.
+    /// target (spec svao-raysd §5), which pass 2 completes.
     pub ao: f32,
     /// Bit `i` set: sample `i` needs more depth.
     pub mask: u32,
 }
 
-/// "Requires more depth" (spec §4.4): the depth-buffer surface lies in front of the constant
+/// "Requires more depth" (spec svao-raysd §4.4): the depth-buffer surface lies in front of the constant
 /// area (VAO) or beyond `max(h, 0.1·R)` (HBAO+), and the sample is farther than the radius
 /// cutoff on screen.
 #[inline]
@@ -37,11 +37,11 @@ pub fn needs_refinement<L: Lanes>(z: L, s: &LineSample<L>, frame: &PixelFrame<L>
     L::and(z.gt(threshold), s.screen_distance.gt(L::splat(params.cutoff)))
 }
 
-/// Object-space z and visibility of sample `s` from the primary depth (spec §4.2–§4.3); with
-/// dual depth (spec §11) a sample the first layer does not settle (it would need refinement)
+/// Object-space z and visibility of sample `s` from the primary depth (spec svao-raysd §4.2–§4.3); with
+/// dual depth (spec svao-raysd §11) a sample the first layer does not settle (it would need refinement)
 /// also reads the depth-peeled second layer `depth2`, combined by min. Both AO passes call this,
 /// so pass 2 subtracts exactly what pass 1 added — the reference's pass 2 skips the second layer
-/// there, which breaks dual depth with a secondary source (spec §11 "Bug"); this is its fix.
+/// there, which breaks dual depth with a secondary source (spec svao-raysd §11 "Bug"); this is its fix.
 #[inline]
 pub fn primary_sample<G: GBuffer, L: Lanes>(
     gbuffer: &G,
@@ -62,7 +62,7 @@ pub fn primary_sample<G: GBuffer, L: Lanes>(
 }
 
 /// Object-space z of a view point `d` and its per-sample value under the kernel: VAO
-/// visibility (spec §4.3) or HBAO+ occlusion (spec §4.5, unclamped radius in the falloff).
+/// visibility (spec svao-raysd §4.3) or HBAO+ occlusion (spec svao-raysd §4.5, unclamped radius in the falloff).
 #[inline]
 pub fn depth_point_value<L: Lanes>(params: &SvaoParams, frame: &PixelFrame<L>, s: &LineSample<L>, d: L::V3) -> (L, L) {
     let z = object_z(frame, d);
@@ -74,29 +74,29 @@ pub fn depth_point_value<L: Lanes>(params: &SvaoParams, frame: &PixelFrame<L>, s
     (z, value)
 }
 
-/// Combine two depth points' values of one sample: min of visibility (VAO, spec §4.3) or max of
-/// occlusion (HBAO+, spec §4.5).
+/// Combine two depth points' values of one sample: min of visibility (VAO, spec svao-raysd §4.3) or max of
+/// occlusion (HBAO+, spec svao-raysd §4.5).
 #[inline]
 pub fn combine<L: Lanes>(params: &SvaoParams, a: L, b: L) -> L {
     if params.kernel == KERNEL_HBAO { a.max(b) } else { a.min(b) }
 }
 
 /// A sample's value when nothing occludes it: the visible chord (VAO) or 0 (HBAO+); used for
-/// same-pixel samples and for dropped out-of-screen ones (spec §4.2, §9).
+/// same-pixel samples and for dropped out-of-screen ones (spec svao-raysd §4.2, §9).
 #[inline]
 pub fn unoccluded_value<L: Lanes>(params: &SvaoParams, s: &LineSample<L>) -> L {
     if params.kernel == KERNEL_HBAO { L::splat(0.0) } else { unoccluded_visibility(s) }
 }
 
-/// Starting value of a dropped out-of-screen sample in pass 2 (spec §9): 1 (VAO, then min with
+/// Starting value of a dropped out-of-screen sample in pass 2 (spec svao-raysd §9): 1 (VAO, then min with
 /// the SD values) or 0 (HBAO+, then max).
 #[inline]
 pub fn dropped_value(params: &SvaoParams) -> f32 {
     if params.kernel == KERNEL_HBAO { 0.0 } else { 1.0 }
 }
 
-/// The pixel accumulator from the samples' values: `A = (2/N)·Σv` (VAO, spec §4.3) or
-/// `mean = (1/N)·Σo` (HBAO+, spec §4.5), `N` = 8, 16 or 32 samples; what pass 1 stores for
+/// The pixel accumulator from the samples' values: `A = (2/N)·Σv` (VAO, spec svao-raysd §4.3) or
+/// `mean = (1/N)·Σo` (HBAO+, spec svao-raysd §4.5), `N` = 8, 16 or 32 samples; what pass 1 stores for
 /// flagged pixels.
 #[inline]
 pub fn accumulate(params: &SvaoParams, sum: f32) -> f32 {
@@ -105,7 +105,7 @@ pub fn accumulate(params: &SvaoParams, sum: f32) -> f32 {
 }
 
 /// Final AO from the accumulator: `sat(A)^exponent` (VAO) or `sat(1 − 2·mean)^exponent`
-/// (HBAO+, spec §4.5).
+/// (HBAO+, spec svao-raysd §4.5).
 #[inline]
 pub fn finish(params: &SvaoParams, a: f32) -> f32 {
     let base = if params.kernel == KERNEL_HBAO { 1.0 - 2.0 * a } else { a };
@@ -113,7 +113,7 @@ pub fn finish(params: &SvaoParams, a: f32) -> f32 {
 }
 
 /// SD texel of an (unsnapped, unclamped) uv: `clamp(floor(uv·L) + sg, 0, L + 2sg − 1)` per axis
-/// (spec §5 `SDpixel`).
+/// (spec svao-raysd §5 `SDpixel`).
 #[inline]
 pub fn sd_pixel(uv: Vec2, params: &SvaoParams) -> UVec2 {
     let low = params.sd_low_res.as_vec2();
@@ -124,7 +124,7 @@ pub fn sd_pixel(uv: Vec2, params: &SvaoParams) -> UVec2 {
     UVec2::new(x as u32, y as u32)
 }
 
-/// AO pass 1 of pixel `p` (spec §5; `depth2`: the second layer, read only with dual depth).
+/// AO pass 1 of pixel `p` (spec svao-raysd §5; `depth2`: the second layer, read only with dual depth).
 /// `ray_min`/`ray_max` are the SD-size interval buffers
 /// (only touched for [`Secondary::StochasticDepth`]); they must be cleared to
 /// `RAY_MIN_CLEAR`/`RAY_MAX_CLEAR` before the pass.
@@ -159,7 +159,7 @@ pub fn pass1_pixel<G: GBuffer, A: AtomicU32Buffer, B: AtomicU32Buffer>(
     pass1_finish(params, sum, mask)
 }
 
-/// What pass 1 learns from sample `i` of one pixel or of `L::LANES` pixels (spec §5).
+/// What pass 1 learns from sample `i` of one pixel or of `L::LANES` pixels (spec svao-raysd §5).
 #[derive(Copy, Clone)]
 pub struct Pass1Sample<L: Lanes = f32> {
     pub sample: LineSample<L>,
@@ -173,9 +173,9 @@ pub struct Pass1Sample<L: Lanes = f32> {
     pub flagged: L::Mask,
 }
 
-/// Sample `i` of pass 1 (spec §5): its value, and whether it is flagged. Out-of-screen samples
+/// Sample `i` of pass 1 (spec svao-raysd §5): its value, and whether it is flagged. Out-of-screen samples
 /// are always refined: Ray-SVAO traces them, the SD map covers them with its guard band (spec
-/// §5 "force").
+/// svao-raysd §5 "force").
 #[inline]
 pub fn pass1_sample<G: GBuffer, L: Lanes>(
     gbuffer: &G,
@@ -200,7 +200,7 @@ pub fn pass1_sample<G: GBuffer, L: Lanes>(
     Pass1Sample { sample: s, value, z, flagged }
 }
 
-/// A flagged sample's share of the SD map's ray interval at its SD texel (spec §5): with
+/// A flagged sample's share of the SD map's ray interval at its SD texel (spec svao-raysd §5): with
 /// intervals, the Euclidean camera distances `|P| − z` of the sample's far end and `|P| − end`
 /// of its near end by atomic min / max (uncorrected); without, the texel is just marked.
 /// Nothing for other secondary sources.
@@ -235,7 +235,7 @@ pub fn record_interval<A: AtomicU32Buffer, B: AtomicU32Buffer>(
 }
 
 /// A pixel's pass-1 output from its sum and mask: final AO when nothing is flagged, else the
-/// accumulator as stored by a UNORM8 target (spec §5).
+/// accumulator as stored by a UNORM8 target (spec svao-raysd §5).
 #[inline]
 pub fn pass1_finish(params: &SvaoParams, sum: f32, mask: u32) -> Pass1Pixel {
     let a = accumulate(params, sum);

@@ -16,12 +16,12 @@ pub struct Refined {
     pub rays: u32,
 }
 
-/// A secondary depth source: the SD map (spec §9) or traced rays (spec §10).
+/// A secondary depth source: the SD map (spec svao-raysd §9) or traced rays (spec svao-raysd §10).
 pub trait Refine {
     /// Value of flagged sample `s` given its starting value `v` (the primary-depth value in
     /// screen; for a dropped out-of-screen sample 1 with VAO, 0 with HBAO+) and the primary
     /// depth's object-space `z_primary`. Sources combine with the kernel's `combine`: `min` of
-    /// visibility for VAO (spec §4.3 `a_i = min_j a_ij`), `max` of occlusion for HBAO+ (§4.5).
+    /// visibility for VAO (spec svao-raysd §4.3 `a_i = min_j a_ij`), `max` of occlusion for HBAO+ (svao-raysd §4.5).
     fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> Refined;
 }
 
@@ -32,9 +32,9 @@ pub struct Pass2Pixel {
     pub rays: u32,
 }
 
-/// AO pass 2 of pixel `p` (spec §9): for every flagged sample, subtract its pass-1 (primary)
+/// AO pass 2 of pixel `p` (spec svao-raysd §9): for every flagged sample, subtract its pass-1 (primary)
 /// visibility and add the refined one; `A = AO_stored + (2/N)·Δ`, clamped to [0, 1] before the
-/// exponent (spec §9: `A` may dip below 0 through the UNORM8 store). Pixels without flags keep
+/// exponent (spec svao-raysd §9: `A` may dip below 0 through the UNORM8 store). Pixels without flags keep
 /// their pass-1 value.
 #[inline]
 pub fn pass2_pixel<G: GBuffer, R: Refine>(
@@ -64,7 +64,7 @@ pub fn pass2_pixel<G: GBuffer, R: Refine>(
             let s = line_sample_of(&frame, view, i, samples, params.kernel);
             let (z, v) = super::primary_sample(gbuffer, depth2, params, &frame, &s);
             delta -= v;
-            // Out of screen the clamped border texel is dropped (spec §9, §15.8).
+            // Out of screen the clamped border texel is dropped (spec svao-raysd §9, §15.8).
             let start = if s.in_screen { v } else { super::pass1::dropped_value(params) };
             let refined = source.refine(&frame, &s, start, z);
             delta += refined.v;

@@ -1,7 +1,7 @@
 //! Settings and pass graph of the stenciled VAO family (host side): dual-depth VAO and HBAO+
 //! (pass 1 alone), Ray-SD / HBAO-SD (pass 1 → ray-traced SD map → pass 2), Ray-SVAO (pass 1 →
 //! rays per flagged sample) — spec svao-raysd §3, §5, §7, §9, §10, §11 — each followed by the
-//! blur (§12).
+//! blur (svao-raysd §12).
 
 use super::{Secondary, SvaoFrame, SvaoParams};
 use crate::blur::graph::blur_passes;
@@ -20,31 +20,31 @@ use crate::vao::settings::vao_params;
 /// in brackets).
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct SvaoSettings {
-    /// SD-map resolution divisor: 1 (full), 2 (½), 4 (¼), 8 (⅛) or 16 (1/16) [4] (spec §2).
+    /// SD-map resolution divisor: 1 (full), 2 (½), 4 (¼), 8 (⅛) or 16 (1/16) \[4\] (spec svao-raysd §2).
     pub divisor: u32,
-    /// AO samples per pixel N of both AO passes: 8, 16 or 32 [8] (spec §2, §4.2).
+    /// AO samples per pixel N of both AO passes: 8, 16 or 32 \[8\] (spec svao-raysd §2, §4.2).
     pub samples: u32,
-    /// Layers N: 1, 2, 4 or 8 [4].
+    /// Layers N: 1, 2, 4 or 8 \[4\].
     pub layers: u32,
-    /// MAX_COUNT of the reservoir any-hit; raised to N when smaller [8].
+    /// MAX_COUNT of the reservoir any-hit; raised to N when smaller \[8\].
     pub max_count: u32,
-    /// Radius cutoff in full-res pixels: closer samples are never refined (§4.4) [6].
+    /// Radius cutoff in full-res pixels: closer samples are never refined (svao-raysd §4.4) \[6\].
     pub cutoff: f32,
-    /// Ray-interval optimisation (§6) [on].
+    /// Ray-interval optimisation (svao-raysd §6) \[on\].
     pub interval: bool,
-    /// SD jitter table (§7.2) [the reference's scrambled table].
+    /// SD jitter table (svao-raysd §7.2) [the reference's scrambled table].
     pub jitter: JitterTable,
-    /// SD guard band in full-res pixels (§3) [512, i.e. 128 SD texels at ¼].
+    /// SD guard band in full-res pixels (svao-raysd §3) [512, i.e. 128 SD texels at ¼].
     pub guard: u32,
-    /// Dual depth: a depth-peeled second layer (§11) [single].
+    /// Dual depth: a depth-peeled second layer (svao-raysd §11) \[single\].
     pub dual: bool,
     /// Minimum separation of the peeled layer beyond the first, view depth [0.01, as SVAO.py].
     pub peel_separation: f32,
-    /// The HBAO+ kernel instead of VAO's (§4.5); the radius is scaled by 1.5 as the reference's
-    /// UI does (0.2 → 0.3) [VAO].
+    /// The HBAO+ kernel instead of VAO's (svao-raysd §4.5); the radius is scaled by 1.5 as the reference's
+    /// UI does (0.2 → 0.3) \[VAO\].
     pub hbao: bool,
-    /// The SD map from the raster coverage-mask baseline (§8: no SD guard band, no jitter)
-    /// instead of ray tracing [ray].
+    /// The SD map from the raster coverage-mask baseline (svao-raysd §8: no SD guard band, no jitter)
+    /// instead of ray tracing \[ray\].
     pub raster: bool,
 }
 
@@ -107,21 +107,21 @@ impl Settings for SvaoSettings {
     fn check(&self) -> Result<(), String> {
         if !(self.divisor.is_power_of_two() && self.divisor <= 16) {
             return Err(format!(
-                "--sd-res: divisor {} is not 1 (full), 2 (half), 4 (quarter), 8 (eighth) or 16 (sixteenth)",
+                "sd-res: divisor {} is not 1 (full), 2 (half), 4 (quarter), 8 (eighth) or 16 (sixteenth)",
                 self.divisor
             ));
         }
         if !KERNEL_SAMPLE_COUNTS.contains(&self.samples) {
-            return Err(format!("--ao-samples {} is not 8, 16 or 32", self.samples));
+            return Err(format!("ao-samples {} is not 8, 16 or 32", self.samples));
         }
         if !self.layers.is_power_of_two() {
-            return Err(format!("--sd-layers {} is not 1, 2, 4 or 8", self.layers));
+            return Err(format!("sd-layers {} is not 1, 2, 4 or 8", self.layers));
         }
         Ok(())
     }
 }
 
-/// The `sd-res` names of the SD divisors 1, 2, 4, 8, 16 (spec §2), in that order.
+/// The `sd-res` names of the SD divisors 1, 2, 4, 8, 16 (spec svao-raysd §2), in that order.
 const SD_RES_NAMES: [&str; 5] = ["full", "half", "quarter", "eighth", "sixteenth"];
 
 /// The index of an SD divisor in [`SD_RES_NAMES`] (5 = none of them).
@@ -297,7 +297,7 @@ pub static SDSVAO: Declaration<SvaoSettings> = stenciled(
 );
 
 /// Stenciled VAO refined by one ray per flagged sample (spec svao-raysd §10), the Ray-SD reference;
-/// with `kernel` = hbao the HBAO+ variant (first hit per ray, max combination, §4.5, §10).
+/// with `kernel` = hbao the HBAO+ variant (first hit per ray, max combination, svao-raysd §4.5, §10).
 pub static RAYSVAO: Declaration<SvaoSettings> = stenciled(
     "raysvao",
     "stenciled VAO or HBAO+ refined by one ray per flagged sample, the Ray-SD reference (spec svao-raysd §10)",
@@ -312,13 +312,13 @@ impl SvaoSettings {
     pub fn frame(&self, frame: &FrameDesc, secondary: Secondary) -> SvaoFrame {
         let full = frame.size();
         let is_sd = secondary == Secondary::StochasticDepth;
-        // The raster SD map has no guard band and no jitter (spec §3, §8).
+        // The raster SD map has no guard band and no jitter (spec svao-raysd §3, §8).
         let guard = if self.raster { 0 } else { self.guard / self.divisor };
         let (low, guard) = if is_sd { (sd_low_res(full, self.divisor), guard) } else { (uvec2(1, 1), 0) };
         SvaoFrame {
             camera: frame.camera,
             params: SvaoParams {
-                // The reference's UI scales R by 1.5 for the HBAO+ kernel (spec §2, §4.5).
+                // The reference's UI scales R by 1.5 for the HBAO+ kernel (spec svao-raysd §2, §4.5).
                 vao: crate::vao::VaoParams {
                     radius: frame.radius * if self.hbao { 1.5 } else { 1.0 },
                     ..vao_params(frame)
@@ -343,7 +343,7 @@ impl SvaoSettings {
     }
 
     /// The pass graph for `secondary` (spec svao-raysd §3): pass 1, then the SD map and pass 2
-    /// (Ray-SD, or the raster coverage-mask map of §8 when `raster`) or the per-sample rays
+    /// (Ray-SD, or the raster coverage-mask map of svao-raysd §8 when `raster`) or the per-sample rays
     /// (Ray-SVAO), then the blur.
     pub fn graph(&self, frame: &FrameDesc, secondary: Secondary) -> Result<Graph, String> {
         let svao = self.frame(frame, secondary);
@@ -361,21 +361,21 @@ impl SvaoSettings {
             |name, elem, size, init, doc| Resource { name, elem, size, init, lifetime: Lifetime::PerFrame, doc };
         let mut resources = vec![
             record("svao_frame", std::slice::from_ref(&svao), "camera + SvaoParams of both AO passes and the rays"),
-            target_f32("ao", 1.0, "AO: final after pass 1 where unflagged, refined by pass 2 (spec §5, §9)"),
-            target_u32("refine_mask", 0, "per-pixel bit mask of the samples pass 1 flagged (spec §5)"),
+            target_f32("ao", 1.0, "AO: final after pass 1 where unflagged, refined by pass 2 (spec svao-raysd §5, §9)"),
+            target_u32("refine_mask", 0, "per-pixel bit mask of the samples pass 1 flagged (spec svao-raysd §5)"),
             per_frame(
                 "ray_min",
                 Elem::U32,
                 sd_texels(1),
                 Init::Fill(RAY_MIN_CLEAR),
-                "per-SD-texel ray tMin, float bits (§6)",
+                "per-SD-texel ray tMin, float bits (svao-raysd §6)",
             ),
             per_frame(
                 "ray_max",
                 Elem::U32,
                 sd_texels(1),
                 Init::Fill(RAY_MAX_CLEAR),
-                "per-SD-texel ray tMax, float bits (§6)",
+                "per-SD-texel ray tMax, float bits (svao-raysd §6)",
             ),
         ];
         use Access::{Read, ReadWrite, Write};
@@ -400,10 +400,10 @@ impl SvaoSettings {
                     Elem::F32,
                     sd_texels(params.sd_layers),
                     Init::Fill(1f32.to_bits()),
-                    "N normalized depths per SD texel (spec §7)",
+                    "N normalized depths per SD texel (spec svao-raysd §7)",
                 ));
                 if self.raster {
-                    // The raster coverage-mask SD map (spec §8): the scene drawn at SD resolution.
+                    // The raster coverage-mask SD map (spec svao-raysd §8): the scene drawn at SD resolution.
                     let bindings = slots(&[
                         (inputs::SCENE_MASK_HEADERS, Read),
                         (inputs::SCENE_MASK_TEXELS, Read),

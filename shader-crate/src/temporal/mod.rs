@@ -1,4 +1,4 @@
-//! Temporal accumulation of any technique's final AO (issue 13 item 3; spec gtao-raymarch-hybrid
+//! Temporal accumulation of any technique's final AO (engines resolve noise over time; spec gtao-raymarch-hybrid
 //! §4.1 "temporal", extended from its static-camera running mean to a moving camera): every
 //! pixel of the current frame is carried back into the previous frame through its depth — world
 //! position from the current depth, into the previous camera's view, onto the previous image —

@@ -5,7 +5,7 @@
 use super::TemporalFrame;
 use crate::graph::{Access, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, inputs, record};
 
-/// The accumulation's settings [defaults].
+/// The accumulation's settings \[defaults\].
 #[derive(Copy, Clone, Debug, PartialEq)]
 pub struct TemporalSettings {
     /// Weight α of the current frame in the exponential blend [0.1]: the history's weight
@@ -33,10 +33,10 @@ impl TemporalSettings {
     /// α ∈ (0, 1], ε ∈ (0, 1].
     pub fn validate(&self) -> Result<(), String> {
         if !(self.alpha > 0.0 && self.alpha <= 1.0) {
-            return Err(format!("--temporal-alpha {}: expected a number in (0, 1]", self.alpha));
+            return Err(format!("temporal alpha {}: expected a number in (0, 1]", self.alpha));
         }
         if !(self.depth_tolerance > 0.0 && self.depth_tolerance <= 1.0) {
-            return Err(format!("--temporal-depth-tolerance {}: expected a number in (0, 1]", self.depth_tolerance));
+            return Err(format!("temporal depth tolerance {}: expected a number in (0, 1]", self.depth_tolerance));
         }
         Ok(())
     }

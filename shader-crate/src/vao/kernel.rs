@@ -20,24 +20,24 @@ use crate::glam::UVec2;
 pub struct VaoParams {
     /// Projection of the full target.
     pub view: ViewParams,
-    /// World-space AO radius `R` (spec §2 default 0.2).
+    /// World-space AO radius `R` (spec svao-raysd §2 default 0.2).
     pub radius: f32,
-    /// Final exponent (spec §2: 2.0; the papers' figures use 4.0).
+    /// Final exponent (spec svao-raysd §2: 2.0; the papers' figures use 4.0).
     pub exponent: f32,
-    /// Thickness `τ` of the halo's constant area (spec §2: 0).
+    /// Thickness `τ` of the halo's constant area (spec svao-raysd §2: 0).
     pub thickness: f32,
-    /// Screen-space radius clamp in pixels (spec §4.1: 512).
+    /// Screen-space radius clamp in pixels (spec svao-raysd §4.1: 512).
     pub max_screen_radius: f32,
 }
 
-/// Everything §4.1 derives once per shaded pixel (`L = f32`) or per `L::LANES` pixels.
+/// Everything svao-raysd §4.1 derives once per shaded pixel (`L = f32`) or per `L::LANES` pixels.
 #[derive(Copy, Clone, Debug)]
 pub struct PixelFrame<L: Lanes = f32> {
     /// The shaded pixel.
     pub pixel: L::U2,
     /// Pixel centre uv.
     pub uv: L::V2,
-    /// Sample radius after the screen clamp (`R_pix`, spec §4.1 step 3).
+    /// Sample radius after the screen clamp (`R_pix`, spec svao-raysd §4.1 step 3).
     pub radius: L,
     /// Screen radius in pixels after the clamp.
     pub screen_radius: L,
@@ -52,12 +52,12 @@ pub struct PixelFrame<L: Lanes = f32> {
     pub bitangent: L::V3,
     /// Normal in sphere space `(N·t, N·b, N·n̂)`.
     pub normal_sphere: L::V3,
-    /// `1/nz(N_o.z)`, the hemisphere-clipping divisor of spec §4.2, hoisted out of the samples.
+    /// `1/nz(N_o.z)`, the hemisphere-clipping divisor of spec svao-raysd §4.2, hoisted out of the samples.
     pub inv_normal_z: L,
 }
 
-/// Per-pixel setup of spec §4.1. `None` means "unshaded" (AO = 1): the depth is unusable or the
-/// screen radius is below half a pixel. (The reference has no explicit background test, §15.10;
+/// Per-pixel setup of spec svao-raysd §4.1. `None` means "unshaded" (AO = 1): the depth is unusable or the
+/// screen radius is below half a pixel. (The reference has no explicit background test, svao-raysd §15.10;
 /// we also treat NaN, ±∞, ≤ 0 and ≥ far as background so broken input never yields NaN.)
 #[inline]
 pub fn setup_pixel<G: GBuffer>(
@@ -83,7 +83,7 @@ pub fn setup_lanes<G: GBuffer, L: Lanes>(
 ) -> (L::Mask, PixelFrame<L>) {
     let uv = view.pixel_uv_lanes::<L>(p);
     let d = gbuffer.linear_depth_lanes::<L>(p);
-    // Mean of the x and y pixel radii (§4.1 step 2).
+    // Mean of the x and y pixel radii (svao-raysd §4.1 step 2).
     let t = view.tan_half_fov;
     let rpx = (L::splat(world_radius * view.res.x) / (d * (2.0 * t.x))
         + L::splat(world_radius * view.res.y) / (d * (2.0 * t.y)))
@@ -117,7 +117,7 @@ pub fn setup_lanes<G: GBuffer, L: Lanes>(
     (shaded, frame)
 }
 
-/// One VAO line sample (spec §4.2), of one pixel (`L = f32`) or of `L::LANES` pixels.
+/// One VAO line sample (spec svao-raysd §4.2), of one pixel (`L = f32`) or of `L::LANES` pixels.
 #[derive(Copy, Clone, Debug)]
 pub struct LineSample<L: Lanes = f32> {
     /// False for an invalid sample (less than 10 % of its chord above the tangent plane): it
@@ -126,7 +126,7 @@ pub struct LineSample<L: Lanes = f32> {
     pub valid: L::Mask,
     /// Sphere half-chord `h`.
     pub half_chord: L,
-    /// The sample's weight: `2h` for VAO, `0.9·(1 − ρ)^1.5` for HBAO+ (spec §4.2, §4.5).
+    /// The sample's weight: `2h` for VAO, `0.9·(1 − ρ)^1.5` for HBAO+ (spec svao-raysd §4.2, §4.5).
     pub pdf: L,
     /// Hemisphere-clipped chord end (in object-space z, towards the camera is positive).
     pub sphere_end: L,
@@ -144,18 +144,18 @@ pub struct LineSample<L: Lanes = f32> {
     pub same_pixel: L::Mask,
 }
 
-/// `nz(x) = sign(x)·max(|x|, 1e−4)` (spec §4.2; sign(0) = +1).
+/// `nz(x) = sign(x)·max(|x|, 1e−4)` (spec svao-raysd §4.2; sign(0) = +1).
 #[inline]
 fn non_zero<L: Lanes>(x: L) -> L {
     sign_nonzero(x) * x.abs().max(L::splat(1.0e-4))
 }
 
-/// The VAO kernel (spec §4.2–§4.3).
+/// The VAO kernel (spec svao-raysd §4.2–§4.3).
 pub const KERNEL_VAO: u32 = 0;
-/// The HBAO+ kernel (spec §4.5).
+/// The HBAO+ kernel (spec svao-raysd §4.5).
 pub const KERNEL_HBAO: u32 = 1;
 
-/// Build sample `i` of the 8-sample VAO kernel (spec §4.2).
+/// Build sample `i` of the 8-sample VAO kernel (spec svao-raysd §4.2).
 #[inline]
 pub fn line_sample<L: Lanes>(frame: &PixelFrame<L>, view: &ViewParams, i: u32) -> LineSample<L> {
     line_sample_of(frame, view, i, AO_SAMPLES, KERNEL_VAO)
@@ -164,7 +164,7 @@ pub fn line_sample<L: Lanes>(frame: &PixelFrame<L>, view: &ViewParams, i: u32) -
 /// Build sample `i` of the `samples`-sample (8, 16 or 32) `kernel` ([`KERNEL_VAO`] or
 /// [`KERNEL_HBAO`]): the kernels share the frame, disc directions `α = (i/N)·2·3.141`,
 /// hemisphere clipping, validity and projection, and differ in the radii and weights (spec
-/// §4.2, §4.5); every per-sample constant comes from the tables at
+/// svao-raysd §4.2, §4.5); every per-sample constant comes from the tables at
 /// [`kernel_entry`]`(samples, i)`.
 #[inline]
 pub fn line_sample_of<L: Lanes>(
@@ -194,19 +194,19 @@ pub fn line_sample_of<L: Lanes>(
     let texel = view.texel_of_uv_lanes::<L>(uv);
     let d = frame.uv - uv;
     let screen_distance = L::V2::new(d.x() * view.res.x, d.y() * view.res.y).length();
-    // Spec §4.2 tests |uv − uvR| < 0.9/res on both axes; both are texel centres, so this holds
+    // Spec svao-raysd §4.2 tests |uv − uvR| < 0.9/res on both axes; both are texel centres, so this holds
     // exactly when the raster sample's texel is the shaded pixel.
     let same_pixel = texel_eq::<L>(texel, frame.pixel);
     LineSample { valid, half_chord, pdf, sphere_end, point: s, uv, texel, in_screen, screen_distance, same_pixel }
 }
 
-/// Object-space z of a view point: `oz(D) = dot(D − P, n̂)` (spec §1; larger = closer to the camera).
+/// Object-space z of a view point: `oz(D) = dot(D − P, n̂)` (spec svao-raysd §1; larger = closer to the camera).
 #[inline]
 pub fn object_z<L: Lanes>(frame: &PixelFrame<L>, d: L::V3) -> L {
     (d - frame.position).dot(frame.axis)
 }
 
-/// Halo visibility of one depth point at object-space `z` (spec §4.3, SVAO paper §3.3):
+/// Halo visibility of one depth point at object-space `z` (spec svao-raysd §4.3, SVAO paper §3.3):
 /// `v(z) = [max(h − max(end, z), 0) + sat((z − (1+τ)R)/h)·(h − end)] / (2h)`.
 #[inline]
 pub fn halo_visibility<L: Lanes>(z: L, s: &LineSample<L>, radius: L, thickness: f32) -> L {
@@ -217,7 +217,7 @@ pub fn halo_visibility<L: Lanes>(z: L, s: &LineSample<L>, radius: L, thickness: 
     (inside + halo) * (inv_h * 0.5)
 }
 
-/// HBAO+ occlusion of one depth point `d` (view space) for sample `s` (spec §4.5):
+/// HBAO+ occlusion of one depth point `d` (view space) for sample `s` (spec svao-raysd §4.5):
 /// `V = D − P`, `k = sat(N·V/|V| − 0.1)·sat(1 − |V|²/R_g²)` with the UNCLAMPED radius `R_g`,
 /// `o = sat(k/pdf)`. Points combine by max; 0 = unoccluded.
 #[inline]
@@ -229,7 +229,7 @@ pub fn hbao_occlusion<L: Lanes>(frame: &PixelFrame<L>, s: &LineSample<L>, d: L::
 }
 
 /// Visibility of a sample whose raster position falls into the shaded pixel: fully visible,
-/// `(h − end)/pdf` (spec §4.2 "same pixel").
+/// `(h − end)/pdf` (spec svao-raysd §4.2 "same pixel").
 #[inline]
 pub fn unoccluded_visibility<L: Lanes>(s: &LineSample<L>) -> L {
     (s.half_chord - s.sphere_end) / (s.half_chord * 2.0)
@@ -253,7 +253,7 @@ pub fn texel_point<L: Lanes>(view: &ViewParams, d: L, s: &LineSample<L>) -> L::V
     view.uv_to_view_lanes::<L>(view.texel_uv_lanes::<L>(s.texel), depth_or_far(d, view.far))
 }
 
-/// Final AO of one pixel with plain VAO on a single depth layer (spec §4, §5 with secondary
+/// Final AO of one pixel with plain VAO on a single depth layer (spec svao-raysd §4, §5 with secondary
 /// mode Disabled): `A = (2/8)·Σ v_i`, `AO = sat(A)^exponent`, 1 = unoccluded.
 #[inline]
 pub fn vao_pixel<G: GBuffer>(gbuffer: &G, params: &VaoParams, p: UVec2) -> f32 {
@@ -263,7 +263,7 @@ pub fn vao_pixel<G: GBuffer>(gbuffer: &G, params: &VaoParams, p: UVec2) -> f32 {
     }
 }
 
-/// `Σ v_i` over the 8 samples of spec §4.2–§4.3 for one pixel or `L::LANES` pixels: invalid
+/// `Σ v_i` over the 8 samples of spec svao-raysd §4.2–§4.3 for one pixel or `L::LANES` pixels: invalid
 /// samples add 0, a sample in the shaded pixel itself is unoccluded.
 #[inline]
 pub fn vao_visibility_sum<G: GBuffer, L: Lanes>(gbuffer: &G, params: &VaoParams, frame: &PixelFrame<L>) -> L {
@@ -282,7 +282,7 @@ pub fn vao_visibility_sum<G: GBuffer, L: Lanes>(gbuffer: &G, params: &VaoParams,
     sum
 }
 
-/// `AO = sat((2/8)·Σ v_i)^exponent` (spec §5).
+/// `AO = sat((2/8)·Σ v_i)^exponent` (spec svao-raysd §5).
 #[inline]
 pub fn vao_finish(params: &VaoParams, sum: f32) -> f32 {
     let a = (2.0 / AO_SAMPLES as f32) * sum;

@@ -1,5 +1,5 @@
 //! Volumetric Ambient Occlusion (Szirmay-Kalos et al. 2010, as used by the SVAO paper), single
-//! depth: spec svao-raysd §4.1–§4.4 and the plain-VAO case of §5.
+//! depth: spec svao-raysd §4.1–§4.4 and the plain-VAO case of svao-raysd §5.
 
 pub mod kernel;
 #[cfg(not(target_arch = "spirv"))]

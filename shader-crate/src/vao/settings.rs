@@ -1,5 +1,5 @@
 //! Plain VAO's settings and pass graph (host side): VAO over the inner image (spec svao-raysd
-//! §4–§5), then the cross-bilateral blur (§12).
+//! §4–§5), then the cross-bilateral blur (svao-raysd §12).
 
 use super::VaoParams;
 use crate::blur::graph::blur_passes;

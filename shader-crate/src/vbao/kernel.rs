@@ -46,7 +46,7 @@ pub fn sector_bits_lanes<L: Lanes>(lo: L, hi: L, rule: u32) -> L::Index {
     L::index_bit_run(start.floor_index(whole), count.floor_index(whole))
 }
 
-/// [aokit] Samples within this angle (radians) of the hemisphere's edge count as on it: every
+/// \[aokit\] Samples within this angle (radians) of the hemisphere's edge count as on it: every
 /// angle is shifted by it toward the edge before the sectors are taken. The G-buffer's snorm8
 /// octahedral normal is off by up to 0.0166 rad (measured over 400 000 random normals), so
 /// flat ground rises up to that far into the half-circle and, with ⌈·⌉, sets a sector in about
@@ -70,14 +70,14 @@ pub fn sector_coordinate<L: Lanes>(theta: L, gamma: L) -> L {
 /// for side 0, −1 for side 1), spec vbao §2: the front angle, and the back angle of the sample
 /// pushed `thickness` away from the camera along the centre pixel's view vector `v`, mapped to
 /// the half-circle around the normal `n` and ordered into `[lo, hi]` (exact acos, spec vbao
-/// §2.3 [OWN]).
+/// §2.3 \[OWN\]).
 ///
-/// [aokit] Each sample is measured in its own slice, the plane through v and the sample, with
+/// \[aokit\] Each sample is measured in its own slice, the plane through v and the sample, with
 /// that plane's projected normal (γ'), then placed on the nominal slice's half-circle: XeGTAO
 /// rounds sample offsets to whole pixels, which turns the first steps' directions by up to 45°
 /// off the nominal slice, and measured against the nominal slice's γ a sample on flat ground
 /// then lies up to a quarter of the half-circle inside it (measured: 0.24 rad), setting
-/// sectors on every plane (the spec's plane test, §6.2). The sources use the nominal slice.
+/// sectors on every plane (the spec's plane test, vbao §6.2). The sources use the nominal slice.
 /// For a sample on the nominal slice both are the same.
 #[inline]
 pub fn sample_bits<L: Lanes>(delta_f: L::V3, v: L::V3, n: L::V3, side: f32, thickness: f32, rule: u32) -> L::Index {
@@ -222,7 +222,7 @@ pub fn vbao_visibility<L: Lanes>(params: &VbaoParams, mips: &[f32], px: &PixelSe
     while s < slices {
         let mut sl = slice_frame(g, px, s);
         // γ with the exact acos: the fast one errs up to 0.055 rad (0.56 sector), which sets
-        // sectors on a plane (spec vbao §2.3, artefact 1 of §5).
+        // sectors on a plane (spec vbao §2.3, artefact 1 of vbao §5).
         sl.gamma = sl.sign * sl.cos_n.acos();
         let mask = slice_mask(params, mips, px, &sl, s);
         if params.weighting == WEIGHT_COSINE_EXACT {

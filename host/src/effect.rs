@@ -1,0 +1,689 @@
+//! The engine API: ambient occlusion as one effect on the engine's own Vulkan device, in four
+//! verbs — [`AoEffect::new`], [`AoEffect::resize`], [`AoEffect::set_settings`] and
+//! [`AoEffect::record`] — and one settings struct, [`AoSettings`].
+//!
+//! The engine hands its depth image with its convention, optionally its view-space normals, the
+//! AO output image, and its projection and view matrices ([`AoFrame`]); the effect derives
+//! aokit's camera from the matrices, builds the technique's pass graph when anything it depends
+//! on changed (a moving camera is just a new frame), keeps its pipelines and buffers across
+//! frames and records everything into the engine's command buffer: no submit, no wait, no host
+//! round trip. Everything it made is freed when it is dropped.
+//!
+//! ```no_run
+//! use aokit_vulkan::glam::Mat4;
+//! use aokit_vulkan::{AoEffect, AoFrame, AoImage, AoSettings, DepthConvention, EngineImage, ExternalDevice, Technique};
+//! use ash::vk;
+//!
+//! # struct Engine { device: ExternalDevice, cmd: vk::CommandBuffer, depth_view: vk::ImageView, ao_view: vk::ImageView }
+//! // `projection`: e.g. glam's `Mat4::perspective_infinite_reverse_rh` with Y flipped;
+//! // `view`: world → view, e.g. `Mat4::look_at_rh`.
+//! fn frame(engine: Engine, projection: Mat4, view: Mat4) -> Result<(), Box<dyn std::error::Error>> {
+//!     let Engine { device, cmd, depth_view, ao_view } = engine;
+//!     // Once: a technique at one of its presets, on the engine's device and queue.
+//!     let settings = AoSettings::new(Technique::preset("gtao", "high")?).radius(0.5);
+//!     let mut ao = AoEffect::new(device, settings)?;
+//!     ao.resize(1920, 1080)?;
+//!     // Every frame, after the depth pass, into the engine's command buffer:
+//!     let depth = EngineImage { view: depth_view, layout: vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL };
+//!     let output = AoImage { view: ao_view, format: vk::Format::R8_UNORM };
+//!     ao.record(cmd, &AoFrame::new(depth, DepthConvention::ReversedInfinite, output, projection, view))?;
+//!     Ok(())
+//! }
+//! ```
+//!
+//! The images' formats, usages and layouts and the barriers around `record` are in
+//! `docs/vulkan.md` and on [`EngineImage`] / [`AoImage`]; the device's extensions and features
+//! on [`ExternalDevice`].
+
+use crate::graph::{AoContext, EngineFrame, check_device};
+use crate::{AoImage, EngineImage, ExternalDevice, Gpu, GpuError, SceneAccel};
+use aokit_shaders::adapters::{DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_REVERSED_INFINITE, DEPTH_STANDARD, ImportParams};
+use aokit_shaders::common::alpha::AlphaMaskHeader;
+use aokit_shaders::common::camera::{Camera, ViewParams};
+use aokit_shaders::glam::{Mat4, UVec2, Vec2, vec2};
+use aokit_shaders::graph::{FrameDesc, Graph, PassKind, RtMode};
+use aokit_shaders::technique::Technique;
+use aokit_shaders::temporal::settings::TemporalSettings;
+use ash::vk;
+use std::sync::Arc;
+
+/// Why the effect could not be made or a frame could not be recorded. Nothing was recorded
+/// into the command buffer when `record` returns an error.
+#[derive(Debug, thiserror::Error)]
+pub enum AoError {
+    /// The settings are out of range, or name a technique or setting that does not exist.
+    #[error("settings: {0}")]
+    Settings(String),
+    /// The projection or view matrix cannot be the camera of a depth image aokit reads.
+    #[error("projection: {0}")]
+    Projection(String),
+    /// `record` before the first `resize`.
+    #[error("the effect has no size yet: call AoEffect::resize(width, height) before the first record")]
+    NotResized,
+    /// The frame lacks an image or the scene that the technique reads, or the technique needs
+    /// something the engine API cannot take.
+    #[error("frame: {0}")]
+    Frame(String),
+    /// Vulkan or the device: a missing extension, feature or limit, or a failed call.
+    #[error(transparent)]
+    Gpu(#[from] GpuError),
+}
+
+/// The engine's depth convention: what its depth image stores (Vulkan clip depth in `[0, 1]`).
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum DepthConvention {
+    /// 0 at the near plane, 1 at the far plane (e.g. glam's `Mat4::perspective_rh`).
+    Standard,
+    /// 1 at the near plane, 0 at a finite far plane.
+    Reversed,
+    /// 1 at the near plane, 0 at infinity (glam's `Mat4::perspective_infinite_reverse_rh`).
+    ReversedInfinite,
+    /// An `R32_SFLOAT` image holding the linear view depth (distance along −Z), not hardware
+    /// depth; the projection still gives the field of view and the far plane.
+    Linear,
+}
+
+impl DepthConvention {
+    /// The adapter's number for it (`aokit_shaders::adapters::depth_convention`).
+    fn code(self) -> u32 {
+        match self {
+            DepthConvention::Standard => DEPTH_STANDARD,
+            DepthConvention::Reversed => DEPTH_REVERSED,
+            DepthConvention::ReversedInfinite => DEPTH_REVERSED_INFINITE,
+            DepthConvention::Linear => DEPTH_LINEAR,
+        }
+    }
+}
+
+/// Everything that selects what the effect computes. Made with [`AoSettings::new`] and the
+/// builder methods; the fields are public for reading and for struct-update syntax.
+#[derive(Clone, Debug)]
+pub struct AoSettings {
+    /// The technique and its settings (presets first: [`Technique::preset`]).
+    pub technique: Technique,
+    /// World-space AO radius, in the units of the engine's view matrix [0.5].
+    pub radius: f32,
+    /// Exponent `e` of the final `A^e` \[2\] (XeGTAO applies its own `final-power` instead).
+    pub exponent: f32,
+    /// Halo thickness τ of the VAO family, world units \[0\].
+    pub thickness: f32,
+    /// Guard band in pixels around the engine's image \[0\]: aokit's internal target is larger
+    /// by `2·guard` and reads the engine's edge texels there.
+    pub guard: u32,
+    /// Temporal accumulation of the AO over frames (reprojected through the previous view of
+    /// [`AoFrame::temporal`]) \[off\].
+    pub temporal: Option<TemporalSettings>,
+    /// How ray-traced techniques trace: ray-tracing pipelines or ray queries [`None`: pipelines
+    /// where the device has them, else ray queries].
+    pub rt_mode: Option<RtMode>,
+    /// View depth at and beyond which aokit treats a pixel as background [`None`: the
+    /// projection's far plane; `1e5 × near` for an infinite projection].
+    pub background_depth: Option<f32>,
+}
+
+impl AoSettings {
+    /// `technique` with the default AO parameters.
+    pub fn new(technique: Technique) -> AoSettings {
+        AoSettings {
+            technique,
+            radius: 0.5,
+            exponent: 2.0,
+            thickness: 0.0,
+            guard: 0,
+            temporal: None,
+            rt_mode: None,
+            background_depth: None,
+        }
+    }
+
+    /// With AO radius `radius` (world units).
+    pub fn radius(self, radius: f32) -> AoSettings {
+        AoSettings { radius, ..self }
+    }
+
+    /// With exponent `exponent`.
+    pub fn exponent(self, exponent: f32) -> AoSettings {
+        AoSettings { exponent, ..self }
+    }
+
+    /// With halo thickness `thickness`.
+    pub fn thickness(self, thickness: f32) -> AoSettings {
+        AoSettings { thickness, ..self }
+    }
+
+    /// With a guard band of `guard` pixels.
+    pub fn guard(self, guard: u32) -> AoSettings {
+        AoSettings { guard, ..self }
+    }
+
+    /// With temporal accumulation.
+    pub fn temporal(self, temporal: TemporalSettings) -> AoSettings {
+        AoSettings { temporal: Some(temporal), ..self }
+    }
+
+    /// With ray-traced passes run as `mode`.
+    pub fn rt_mode(self, mode: RtMode) -> AoSettings {
+        AoSettings { rt_mode: Some(mode), ..self }
+    }
+
+    fn check(&self) -> Result<(), AoError> {
+        let positive = |what: &str, v: f32| {
+            if v.is_finite() && v > 0.0 { Ok(()) } else { Err(AoError::Settings(format!("{what} {v}: expected > 0"))) }
+        };
+        positive("radius", self.radius)?;
+        positive("exponent", self.exponent)?;
+        if let Some(d) = self.background_depth {
+            positive("background depth", d)?;
+        }
+        if !(self.thickness.is_finite() && self.thickness >= 0.0) {
+            return Err(AoError::Settings(format!("thickness {}: expected ≥ 0", self.thickness)));
+        }
+        if self.guard > 512 {
+            return Err(AoError::Settings(format!("guard band {} px: expected ≤ 512", self.guard)));
+        }
+        if let Some(t) = self.temporal
+            && !(t.alpha > 0.0 && t.alpha <= 1.0 && t.depth_tolerance > 0.0)
+        {
+            return Err(AoError::Settings(format!("temporal {t:?}: expected alpha in (0, 1], depth tolerance > 0")));
+        }
+        Ok(())
+    }
+}
+
+/// One frame of the engine: its images, its camera and its place in a sequence. Made with
+/// [`AoFrame::new`] and the builder methods.
+#[derive(Copy, Clone)]
+pub struct AoFrame<'a> {
+    /// The depth image (hardware depth in `depth_convention`, or linear depth).
+    pub depth: EngineImage,
+    /// What `depth` stores.
+    pub depth_convention: DepthConvention,
+    /// View-space normals `n·0.5 + 0.5` in RGB; `None`: derived from depth (XeGTAO's normals
+    /// pass, gtao-raymarch-hybrid §2.4).
+    pub normals: Option<EngineImage>,
+    /// The depth-peeled second layer of the dual-depth techniques (svao-raysd §11): same format
+    /// and convention as `depth`, the nearest surface at least the technique's peel separation
+    /// behind it, cleared where there is none.
+    pub second_depth: Option<EngineImage>,
+    /// Where the AO goes (1 = unoccluded).
+    pub output: AoImage,
+    /// The projection the depth image was rendered with: right-handed view space looking down
+    /// −Z, Vulkan clip depth `[0, 1]`, symmetric frustum (pass the unjittered matrix), row 0 of
+    /// the images at the top of the view (a Y-flipped projection or a negative viewport height).
+    pub projection: Mat4,
+    /// World → view.
+    pub view: Mat4,
+    /// The frame's index in a sequence: every stochastic technique's noise takes it \[0\].
+    pub frame_index: u32,
+    /// The previous frame's world → view, for the temporal accumulation's reprojection; `None`
+    /// on a first frame or after a cut.
+    pub previous_view: Option<Mat4>,
+    /// The scene, for techniques that trace rays.
+    pub scene: Option<&'a AoScene>,
+}
+
+impl<'a> AoFrame<'a> {
+    /// A frame of `depth` (in `depth_convention`) into `output`, seen through `projection` and
+    /// `view`; normals derived from depth, frame index 0, no previous view, no scene.
+    pub fn new(
+        depth: EngineImage,
+        depth_convention: DepthConvention,
+        output: AoImage,
+        projection: Mat4,
+        view: Mat4,
+    ) -> AoFrame<'a> {
+        AoFrame {
+            depth,
+            depth_convention,
+            normals: None,
+            second_depth: None,
+            output,
+            projection,
+            view,
+            frame_index: 0,
+            previous_view: None,
+            scene: None,
+        }
+    }
+
+    /// With the engine's view-space normals.
+    pub fn normals(self, normals: EngineImage) -> AoFrame<'a> {
+        AoFrame { normals: Some(normals), ..self }
+    }
+
+    /// With the depth-peeled second layer.
+    pub fn second_depth(self, second_depth: EngineImage) -> AoFrame<'a> {
+        AoFrame { second_depth: Some(second_depth), ..self }
+    }
+
+    /// As frame `index` of a sequence whose previous frame was seen through `previous_view`.
+    pub fn temporal(self, index: u32, previous_view: Option<Mat4>) -> AoFrame<'a> {
+        AoFrame { frame_index: index, previous_view, ..self }
+    }
+
+    /// With the scene for ray-traced techniques.
+    pub fn scene(self, scene: &'a AoScene) -> AoFrame<'a> {
+        AoFrame { scene: Some(scene), ..self }
+    }
+}
+
+/// The scene's triangles, for the ray-traced techniques ([`AoEffect::build_scene`]).
+#[derive(Copy, Clone, Debug)]
+pub struct SceneGeometry<'a> {
+    /// World-space positions, three corners per triangle.
+    pub positions: &'a [[f32; 3]],
+    /// Texture coordinates, three per triangle (what the alpha masks are sampled at).
+    pub uvs: &'a [Vec2],
+    /// Material index per triangle (into `mask_headers`).
+    pub materials: &'a [u32],
+    /// Alpha mask per material (`width == 0`: opaque); empty: every material opaque.
+    pub mask_headers: &'a [AlphaMaskHeader],
+    /// The masks' alpha texels.
+    pub mask_texels: &'a [f32],
+}
+
+/// The scene on the device for ray tracing: aokit's acceleration structure (or the engine's
+/// TLAS) and the tables the any-hit alpha test reads. Freed when dropped (after the device
+/// finished the frames that used it).
+pub struct AoScene {
+    gpu: Arc<Gpu>,
+    accel: Option<SceneAccel>,
+}
+
+impl AoScene {
+    fn accel(&self) -> &SceneAccel {
+        self.accel.as_ref().expect("present until dropped")
+    }
+}
+
+impl Drop for AoScene {
+    fn drop(&mut self) {
+        if let Some(accel) = self.accel.take() {
+            accel.destroy(&self.gpu);
+        }
+    }
+}
+
+/// The graph built for the last frame and what it was built from.
+struct BuiltGraph {
+    desc: FrameDesc,
+    graph: Graph,
+}
+
+/// Ambient occlusion on the engine's device (see the module documentation).
+pub struct AoEffect {
+    /// Declared before `gpu`: dropped (and so freed) first.
+    context: AoContext<Arc<Gpu>>,
+    gpu: Arc<Gpu>,
+    settings: AoSettings,
+    size: Option<UVec2>,
+    built: Option<BuiltGraph>,
+}
+
+impl AoEffect {
+    /// The effect on the engine's device (see [`ExternalDevice`] for the extensions and features
+    /// it must have been created with) running `settings`.
+    pub fn new(device: ExternalDevice, settings: AoSettings) -> Result<AoEffect, AoError> {
+        settings.check()?;
+        let gpu = Arc::new(Gpu::from_external(device)?);
+        Ok(AoEffect { context: AoContext::new(gpu.clone()), gpu, settings, size: None, built: None })
+    }
+
+    /// Set the size of the engine's images (depth, normals, output) in texels. Call it before
+    /// the first frame and whenever the images change; views of the old images may be
+    /// destroyed once the frames that used them completed.
+    pub fn resize(&mut self, width: u32, height: u32) -> Result<(), AoError> {
+        if width == 0 || height == 0 || width > 16384 || height > 16384 {
+            return Err(AoError::Settings(format!("image size {width}×{height}: expected 1…16384 per side")));
+        }
+        self.size = Some(UVec2::new(width, height));
+        self.built = None;
+        // The new images' views may reuse the old views' handles.
+        self.context.invalidate_bindings();
+        Ok(())
+    }
+
+    /// Replace the settings; the next frame runs them.
+    pub fn set_settings(&mut self, settings: AoSettings) -> Result<(), AoError> {
+        settings.check()?;
+        self.settings = settings;
+        self.built = None;
+        Ok(())
+    }
+
+    /// The settings in use.
+    pub fn settings(&self) -> &AoSettings {
+        &self.settings
+    }
+
+    /// Does the technique trace rays at the current size and settings (then every frame needs
+    /// [`AoFrame::scene`])?
+    pub fn traces_rays(&self) -> Result<bool, AoError> {
+        let size = self.size.ok_or(AoError::NotResized)?;
+        let s = &self.settings;
+        // Which passes a graph has depends on the settings and the size, not on the camera.
+        let full = size + 2 * s.guard;
+        let view = ViewParams {
+            res: full.as_vec2(),
+            tan_half_fov: vec2(1.0, 1.0),
+            near: 0.1,
+            far: 100.0,
+            guard: s.guard,
+            _pad: 0,
+        };
+        let camera = Camera { world_to_view: Mat4::IDENTITY, view_to_world: Mat4::IDENTITY, view };
+        let desc = FrameDesc { temporal: s.temporal, ..FrameDesc::new(camera, s.radius, s.exponent, s.thickness) };
+        Ok(s.technique.graph(&desc).map_err(AoError::Settings)?.traces_rays())
+    }
+
+    /// Build an acceleration structure of `geometry` for the ray-traced techniques (submits the
+    /// build and waits for it).
+    pub fn build_scene(&self, geometry: &SceneGeometry) -> Result<AoScene, AoError> {
+        let masks = (geometry.mask_headers.to_vec(), geometry.mask_texels.to_vec());
+        let accel = SceneAccel::build(&self.gpu, geometry.positions, geometry.uvs, geometry.materials, &masks)?;
+        Ok(AoScene { gpu: self.gpu.clone(), accel: Some(accel) })
+    }
+
+    /// Use the engine's own TLAS (triangles in its instances' order, `uvs`/`materials` per
+    /// triangle of that order) for the ray-traced techniques; the engine keeps it alive.
+    pub fn scene_from_tlas(
+        &self,
+        tlas: vk::AccelerationStructureKHR,
+        geometry: &SceneGeometry,
+    ) -> Result<AoScene, AoError> {
+        let masks = (geometry.mask_headers.to_vec(), geometry.mask_texels.to_vec());
+        let accel = SceneAccel::from_engine_tlas(&self.gpu, tlas, geometry.uvs, geometry.materials, &masks)?;
+        Ok(AoScene { gpu: self.gpu.clone(), accel: Some(accel) })
+    }
+
+    /// Record one frame into `cmd` (a primary command buffer in the recording state, from a pool
+    /// of the device's queue family): import the depth (and normals), run the technique's
+    /// passes, export the AO into `frame.output`. The engine's writes of the input images must
+    /// be visible to compute-shader reads before the recorded commands, and the output's
+    /// compute-shader writes are made visible by the engine's barrier after them. At most
+    /// three frames may be in flight.
+    pub fn record(&mut self, cmd: vk::CommandBuffer, frame: &AoFrame) -> Result<(), AoError> {
+        let size = self.size.ok_or(AoError::NotResized)?;
+        let s = &self.settings;
+        let derived = engine_camera(frame.projection, frame.view, size, s.guard, frame.depth_convention)?;
+        let mut camera = derived.camera;
+        let infinite = derived.far == f32::MAX;
+        camera.view.far = s.background_depth.unwrap_or(if infinite { derived.near * 1e5 } else { derived.far });
+        let previous_camera =
+            frame.previous_view.map(|v| Camera { world_to_view: v, view_to_world: v.inverse(), ..camera });
+        let desc = FrameDesc {
+            frame_index: frame.frame_index,
+            previous_camera,
+            temporal: s.temporal,
+            ..FrameDesc::new(camera, s.radius, s.exponent, s.thickness)
+        };
+        if self.built.as_ref().is_none_or(|b| b.desc != desc) {
+            self.built = Some(BuiltGraph { desc, graph: self.build_graph(&desc, frame)? });
+        }
+        let graph = &self.built.as_ref().expect("built above").graph;
+        let import = ImportParams {
+            view: camera.view,
+            engine_size: size,
+            depth_convention: frame.depth_convention.code(),
+            near: derived.near,
+            far: derived.far,
+            _pad: 0,
+        };
+        let engine_frame = EngineFrame {
+            depth: frame.depth,
+            normals: frame.normals,
+            second_depth: frame.second_depth,
+            output: frame.output,
+            import,
+            scene: frame.scene.map(AoScene::accel),
+        };
+        Ok(self.context.record_engine(cmd, graph, &engine_frame)?)
+    }
+
+    /// The technique's graph for `desc`, checked against the device and the frame.
+    fn build_graph(&self, desc: &FrameDesc, frame: &AoFrame) -> Result<Graph, AoError> {
+        let technique = &self.settings.technique;
+        let graph = technique.graph(desc).map_err(AoError::Settings)?;
+        let mode =
+            self.settings.rt_mode.unwrap_or(if self.gpu.has_ray_tracing() { RtMode::Pipeline } else { RtMode::Query });
+        let graph = graph.with_rt_mode(mode);
+        let name = technique.name();
+        if graph.passes.iter().any(|p| matches!(p.kind, PassKind::Raster { .. })) {
+            return Err(AoError::Frame(format!(
+                "{name} rasterizes the scene's triangles itself (a raster pass), which the engine API cannot take: choose a technique without raster passes"
+            )));
+        }
+        if graph.traces_rays() && frame.scene.is_none() {
+            return Err(AoError::Frame(format!(
+                "{name} traces rays: give the scene (AoEffect::build_scene, AoFrame::scene)"
+            )));
+        }
+        if technique.second_layer().is_some() && frame.second_depth.is_none() {
+            return Err(AoError::Frame(format!(
+                "{name} reads a depth-peeled second layer: give AoFrame::second_depth"
+            )));
+        }
+        graph.validate().map_err(AoError::Settings)?;
+        check_device(&self.gpu, &graph)?;
+        Ok(graph)
+    }
+
+    /// `(pass label, ms)` of the last recorded frame once the device finished it (GPU
+    /// timestamps; waits for them).
+    pub fn pass_times(&self) -> Result<Vec<(&'static str, f64)>, AoError> {
+        Ok(self.context.pass_times()?)
+    }
+
+    /// The context underneath, for tests that count its descriptor pools.
+    #[cfg(feature = "testing")]
+    pub fn context(&self) -> &AoContext<Arc<Gpu>> {
+        &self.context
+    }
+}
+
+/// aokit's camera of an engine frame and the engine projection's planes.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct EngineCamera {
+    /// The camera of aokit's full target (the engine's image plus the guard band).
+    pub camera: Camera,
+    /// The projection's near plane (view depth).
+    pub near: f32,
+    /// The projection's far plane (`f32::MAX` for an infinite projection).
+    pub far: f32,
+}
+
+/// aokit's camera from an engine's `projection` and `view` for images of `size` texels, a guard
+/// band of `guard` pixels and depth stored in `convention` (see [`AoFrame::projection`]).
+///
+/// A perspective projection maps view depth `z` to clip depth `d = −P₂₂ + P₃₂/z`
+/// (`P₂₂ = projection.z_axis.z`, `P₃₂ = projection.w_axis.z`), so `d = 0` and `d = 1` fall at
+/// `z = P₃₂/P₂₂` and `z = P₃₂/(1 + P₂₂)`: the near plane is the one that `convention` puts at
+/// depth 0 (standard) or 1 (reversed). The field of view is `tan(fov/2) = 1/P₀₀` and `1/|P₁₁|`
+/// of the engine's image, widened by the guard band at the same focal length.
+pub fn engine_camera(
+    projection: Mat4,
+    view: Mat4,
+    size: UVec2,
+    guard: u32,
+    convention: DepthConvention,
+) -> Result<EngineCamera, AoError> {
+    let bad = |why: String| Err(AoError::Projection(why));
+    let p = projection;
+    if !p.is_finite() || !view.is_finite() {
+        return bad("the matrices hold NaN or infinity".into());
+    }
+    if (p.z_axis.w + 1.0).abs() > 1e-6 || p.w_axis.w.abs() > 1e-6 {
+        return bad(format!(
+            "not a right-handed perspective projection (expected w = −z: P₂₃ = −1, P₃₃ = 0; got {}, {})",
+            p.z_axis.w, p.w_axis.w
+        ));
+    }
+    let (sx, sy) = (p.x_axis.x, p.y_axis.y.abs());
+    if !(sx > 0.0 && sy > 0.0) {
+        return bad(format!("the focal scales P₀₀ = {sx}, |P₁₁| = {sy} must be positive"));
+    }
+    // The frustum's off-centre terms move the image by P₂₀·w/2 pixels: more than half a pixel
+    // is a shifted (or jittered) frustum that aokit's symmetric camera would misplace.
+    if (p.z_axis.x * size.x as f32).abs() > 1.0 || (p.z_axis.y * size.y as f32).abs() > 1.0 {
+        return bad(format!(
+            "the frustum is off-centre by ({}, {}) pixels: pass the symmetric (unjittered) projection",
+            0.5 * p.z_axis.x * size.x as f32,
+            0.5 * p.z_axis.y * size.y as f32
+        ));
+    }
+    let (p22, p32) = (p.z_axis.z, p.w_axis.z);
+    let reversed_matrix = p22 > -0.5; // standard: P₂₂ ≤ −1 (≈ −f/(f − n)); reversed: P₂₂ ≥ 0
+    let (near, far) = if p22 == 0.0 {
+        (p32, f32::MAX)
+    } else if reversed_matrix {
+        (p32 / (1.0 + p22), p32 / p22)
+    } else if p22 == -1.0 {
+        (-p32, f32::MAX)
+    } else {
+        (p32 / p22, p32 / (1.0 + p22))
+    };
+    if !(near > 0.0 && far > near) {
+        return bad(format!("near {near}, far {far} from P₂₂ = {p22}, P₃₂ = {p32}: expected 0 < near < far"));
+    }
+    let matrix_says = match (reversed_matrix, far == f32::MAX) {
+        (false, false) => DepthConvention::Standard,
+        (true, false) => DepthConvention::Reversed,
+        (true, true) => DepthConvention::ReversedInfinite,
+        (false, true) => {
+            return bad("standard depth with an infinite far plane is not supported: use reversed Z".into());
+        }
+    };
+    if convention != DepthConvention::Linear && convention != matrix_says {
+        return bad(format!("the frame's depth is {convention:?} but the projection is {matrix_says:?}"));
+    }
+    let full = size + 2 * guard;
+    let tan_inner = vec2(1.0 / sx, 1.0 / sy);
+    let tan_half_fov = tan_inner * full.as_vec2() / size.as_vec2();
+    let view_params = ViewParams { res: full.as_vec2(), tan_half_fov, near, far, guard, _pad: 0 };
+    let camera = Camera { world_to_view: view, view_to_world: view.inverse(), view: view_params };
+    Ok(EngineCamera { camera, near, far })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use aokit_shaders::adapters::linear_depth;
+    use aokit_shaders::glam::{Vec3, Vec4};
+
+    const SIZE: UVec2 = UVec2::new(640, 360);
+
+    /// A Vulkan perspective projection written out (right-handed, looking down −Z, clip depth
+    /// in [0, 1], `d = −P₂₂ + P₃₂/z`) that stores depth 0 at view depth `z_at_0` and 1 at
+    /// `z_at_1` (either may be infinite), with vertical field of view `fov`.
+    fn perspective(fov: f32, aspect: f32, z_at_0: f32, z_at_1: f32) -> Mat4 {
+        let sy = 1.0 / (0.5 * fov).tan();
+        // d(z) = a + b/z with d(z_at_0) = 0, d(z_at_1) = 1: b = z0·z1/(z0 − z1), a = −b/z0.
+        let (p22, p32) = if z_at_0.is_infinite() {
+            (0.0, z_at_1) // reversed infinite: d = n/z
+        } else if z_at_1.is_infinite() {
+            (-1.0, -z_at_0) // standard infinite: d = 1 − n/z
+        } else {
+            let b = z_at_0 * z_at_1 / (z_at_0 - z_at_1);
+            (b / z_at_0, b)
+        };
+        Mat4::from_cols(
+            Vec4::new(sy / aspect, 0.0, 0.0, 0.0),
+            Vec4::new(0.0, sy, 0.0, 0.0),
+            Vec4::new(0.0, 0.0, p22, -1.0),
+            Vec4::new(0.0, 0.0, p32, 0.0),
+        )
+    }
+
+    /// World → view of a camera at `eye` looking at `target` (right-handed, −Z forward).
+    fn look_at(eye: Vec3, target: Vec3) -> Mat4 {
+        let f = (target - eye).normalize();
+        let r = f.cross(Vec3::Y).normalize();
+        let u = r.cross(f);
+        Mat4::from_cols(r.extend(0.0), u.extend(0.0), (-f).extend(0.0), eye.extend(1.0)).inverse()
+    }
+
+    /// Clip depth of view depth `z` through `p`.
+    fn clip_depth(p: Mat4, z: f32) -> f32 {
+        let c = p * Vec4::new(0.0, 0.0, -z, 1.0);
+        c.z / c.w
+    }
+
+    #[test]
+    fn every_convention_reads_back_the_view_depth_and_the_field_of_view() {
+        let (fov, aspect, n, f) = (1.0f32, 640.0 / 360.0, 0.1, 50.0);
+        let cases = [
+            (perspective(fov, aspect, n, f), DepthConvention::Standard, f),
+            (perspective(fov, aspect, f, n), DepthConvention::Reversed, f),
+            (perspective(fov, aspect, f32::INFINITY, n), DepthConvention::ReversedInfinite, f32::MAX),
+        ];
+        for (p, convention, far) in cases {
+            let e = engine_camera(p, Mat4::IDENTITY, SIZE, 0, convention).unwrap();
+            assert!((e.near - n).abs() < 1e-6 * n, "{convention:?}: near {}", e.near);
+            assert!(
+                far == f32::MAX && e.far == far || (e.far - far).abs() < 1e-4 * far,
+                "{convention:?}: far {}",
+                e.far
+            );
+            assert!((e.camera.view.tan_half_fov.y - (0.5 * fov).tan()).abs() < 1e-6);
+            assert!((e.camera.view.tan_half_fov.x - aspect * (0.5 * fov).tan()).abs() < 1e-5);
+            // The adapter's inverse of the convention recovers the depth the matrix stored.
+            for z in [0.2f32, 1.0, 7.5, 40.0] {
+                let back = linear_depth(clip_depth(p, z), convention.code(), e.near, e.far);
+                assert!((back - z).abs() < 2e-4 * z, "{convention:?}: z {z} read back as {back}");
+            }
+        }
+    }
+
+    #[test]
+    fn the_camera_projects_view_points_where_the_matrix_does() {
+        let p = perspective(0.9, 640.0 / 360.0, f32::INFINITY, 0.05);
+        let view = look_at(Vec3::new(1.0, 2.0, 3.0), Vec3::ZERO);
+        for guard in [0, 32] {
+            let e = engine_camera(p, view, SIZE, guard, DepthConvention::ReversedInfinite).unwrap();
+            for x in [Vec3::new(0.3, -0.2, -2.0), Vec3::new(-1.0, 0.4, -5.0)] {
+                let c = p * x.extend(1.0);
+                let ndc = c.truncate() / c.w;
+                // The matrix's NDC (y up here) as pixels of the engine image (row 0 at the top),
+                // then shifted by the guard band into aokit's target.
+                let pixel = Vec2::new(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y) * SIZE.as_vec2() + guard as f32;
+                let ours = e.camera.view.view_to_uv(x) * e.camera.view.res;
+                assert!((ours - pixel).length() < 1e-3, "guard {guard}: {ours} vs {pixel}");
+            }
+            assert_eq!(e.camera.world_to_view, view);
+        }
+    }
+
+    #[test]
+    fn unusable_matrices_are_refused_with_the_reason() {
+        let p = perspective(1.0, 1.5, 0.1, 10.0);
+        let err = |p, c| engine_camera(p, Mat4::IDENTITY, SIZE, 0, c).unwrap_err().to_string();
+        assert!(err(p, DepthConvention::Reversed).contains("is Reversed but the projection is Standard"));
+        let orthographic = Mat4::from_scale(Vec3::new(1.0, 1.0, -0.1));
+        assert!(err(orthographic, DepthConvention::Standard).contains("perspective"));
+        let mut jittered = p;
+        jittered.z_axis.x = 4.0 / SIZE.x as f32;
+        assert!(err(jittered, DepthConvention::Standard).contains("off-centre"));
+        let mut subpixel = p;
+        subpixel.z_axis.x = 0.5 / SIZE.x as f32;
+        assert!(engine_camera(subpixel, Mat4::IDENTITY, SIZE, 0, DepthConvention::Standard).is_ok());
+        assert!(err(perspective(1.0, 1.5, 0.1, f32::INFINITY), DepthConvention::Standard).contains("infinite"));
+        assert!(err(Mat4::NAN, DepthConvention::Standard).contains("NaN"));
+    }
+
+    #[test]
+    fn settings_out_of_range_are_refused() {
+        let t = Technique::named("vao").unwrap();
+        assert!(AoSettings::new(t.clone()).radius(0.0).check().is_err());
+        assert!(AoSettings::new(t.clone()).exponent(f32::NAN).check().is_err());
+        assert!(AoSettings::new(t.clone()).thickness(-1.0).check().is_err());
+        assert!(AoSettings::new(t.clone()).guard(4096).check().is_err());
+        assert!(AoSettings::new(t).check().is_ok());
+    }
+
+    #[test]
+    fn the_effect_is_send() {
+        fn send<T: Send>() {}
+        send::<AoEffect>();
+        send::<AoScene>();
+    }
+}
