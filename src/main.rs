@@ -508,7 +508,11 @@ fn path(args: PathArgs) -> Result<(), String> {
         other => return Err(format!("--temporal {other}: expected off, on or both")),
     };
     let temporal = TemporalSettings { alpha: args.temporal_alpha, depth_tolerance: args.temporal_depth_tolerance };
-    temporal.validate()?;
+    // The library names the setting; the command line names its flags.
+    temporal.validate().map_err(|e| {
+        e.replace("temporal alpha", "--temporal-alpha")
+            .replace("temporal depth tolerance", "--temporal-depth-tolerance")
+    })?;
     if let Some(out) = &args.out
         && !out.extension().is_some_and(|e| e.eq_ignore_ascii_case("png"))
     {

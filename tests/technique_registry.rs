@@ -116,8 +116,8 @@ fn every_setting_round_trips_refuses_bad_values_and_changes_the_graph() {
             };
             for b in bad {
                 let e = base.clone().set(row.key, &b).expect_err(&format!("{} {}={b} accepted", t.name(), row.key));
-                let named = row.flag.map_or(row.key.to_string(), |f| format!("--{f}"));
-                assert!(e.contains(&named) && !e.contains('\n'), "{e}");
+                // The library names the setting by its key (no command-line flag).
+                assert!(e.starts_with(&format!("{} ", row.key)) && !e.contains('\n'), "{e}");
             }
             settings += 1;
         }
@@ -181,7 +181,7 @@ fn flags_come_from_the_rows_and_apply_where_they_are_read() {
     assert!(e.contains("--sd-layers not read by gtao, vao"), "{e}");
     // Bad values name the flag, on one line.
     let e = parse_cli(&["--sd-layers", "9"]).unwrap().technique("raysd").unwrap_err();
-    assert!(e.contains("sd-layers 9: expected 1–8") && !e.contains('\n'), "{e}");
+    assert!(e.contains("--sd-layers 9: expected 1–8") && !e.contains('\n'), "{e}");
     let e = parse_cli(&["--sd-layers", "3"]).unwrap().technique("raysd").unwrap_err();
     assert!(e.contains("sd-layers 3 is not 1, 2, 4 or 8"), "{e}");
     assert!(parse_cli(&["--preset", "extreme"]).is_err());

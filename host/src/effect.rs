@@ -4,10 +4,12 @@
 //!
 //! The engine hands its depth image with its convention, optionally its view-space normals, the
 //! AO output image, and its projection and view matrices ([`AoFrame`]); the effect derives
-//! aokit's camera from the matrices, builds the technique's pass graph when anything it depends
-//! on changed (a moving camera is just a new frame), keeps its pipelines and buffers across
-//! frames and records everything into the engine's command buffer: no submit, no wait, no host
-//! round trip. Everything it made is freed when it is dropped.
+//! aokit's camera from the matrices, rebuilds the technique's pass graph (a few small vectors)
+//! only when the settings, the size or the frame's camera or index changed (a moving camera is
+//! just a new frame), keeps its pipelines and buffers across frames and records everything into
+//! the engine's command buffer: no submit, no wait, no host round trip. Everything it made is
+//! freed when it is dropped: drop it (and every [`AoScene`]) once the device finished the frames
+//! it recorded, and before the engine destroys the device.
 //!
 //! ```no_run
 //! use aokit_vulkan::glam::Mat4;
@@ -17,13 +19,18 @@
 //! # struct Engine { device: ExternalDevice, cmd: vk::CommandBuffer, depth_view: vk::ImageView, ao_view: vk::ImageView }
 //! // `projection`: e.g. glam's `Mat4::perspective_infinite_reverse_rh` with Y flipped;
 //! // `view`: world → view, e.g. `Mat4::look_at_rh`.
-//! fn frame(engine: Engine, projection: Mat4, view: Mat4) -> Result<(), Box<dyn std::error::Error>> {
-//!     let Engine { device, cmd, depth_view, ao_view } = engine;
-//!     // Once: a technique at one of its presets, on the engine's device and queue.
+//! // Once: a technique at one of its presets, on the engine's device and queue.
+//! fn setup(device: ExternalDevice) -> Result<AoEffect, Box<dyn std::error::Error>> {
 //!     let settings = AoSettings::new(Technique::preset("gtao", "high")?).radius(0.5);
 //!     let mut ao = AoEffect::new(device, settings)?;
 //!     ao.resize(1920, 1080)?;
-//!     // Every frame, after the depth pass, into the engine's command buffer:
+//!     Ok(ao)
+//! }
+//!
+//! // Every frame, after the depth pass, into the engine's command buffer (which the engine then
+//! // submits; `ao` lives on across frames).
+//! fn frame(ao: &mut AoEffect, engine: &Engine, projection: Mat4, view: Mat4) -> Result<(), Box<dyn std::error::Error>> {
+//!     let Engine { cmd, depth_view, ao_view, .. } = *engine;
 //!     let depth = EngineImage { view: depth_view, layout: vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL };
 //!     let output = AoImage { view: ao_view, format: vk::Format::R8_UNORM };
 //!     ao.record(cmd, &AoFrame::new(depth, DepthConvention::ReversedInfinite, output, projection, view))?;
@@ -181,10 +188,8 @@ impl AoSettings {
         if self.guard > 512 {
             return Err(AoError::Settings(format!("guard band {} px: expected ≤ 512", self.guard)));
         }
-        if let Some(t) = self.temporal
-            && !(t.alpha > 0.0 && t.alpha <= 1.0 && t.depth_tolerance > 0.0)
-        {
-            return Err(AoError::Settings(format!("temporal {t:?}: expected alpha in (0, 1], depth tolerance > 0")));
+        if let Some(t) = self.temporal {
+            t.validate().map_err(AoError::Settings)?;
         }
         Ok(())
     }
@@ -377,8 +382,8 @@ impl AoEffect {
     }
 
     /// Build an acceleration structure of `geometry` for the ray-traced techniques (submits the
-    /// build and waits for it).
-    pub fn build_scene(&self, geometry: &SceneGeometry) -> Result<AoScene, AoError> {
+    /// build to the effect's queue and waits for it).
+    pub fn build_scene(&mut self, geometry: &SceneGeometry) -> Result<AoScene, AoError> {
         let masks = (geometry.mask_headers.to_vec(), geometry.mask_texels.to_vec());
         let accel = SceneAccel::build(&self.gpu, geometry.positions, geometry.uvs, geometry.materials, &masks)?;
         Ok(AoScene { gpu: self.gpu.clone(), accel: Some(accel) })
@@ -387,7 +392,7 @@ impl AoEffect {
     /// Use the engine's own TLAS (triangles in its instances' order, `uvs`/`materials` per
     /// triangle of that order) for the ray-traced techniques; the engine keeps it alive.
     pub fn scene_from_tlas(
-        &self,
+        &mut self,
         tlas: vk::AccelerationStructureKHR,
         geometry: &SceneGeometry,
     ) -> Result<AoScene, AoError> {
@@ -418,9 +423,21 @@ impl AoEffect {
             ..FrameDesc::new(camera, s.radius, s.exponent, s.thickness)
         };
         if self.built.as_ref().is_none_or(|b| b.desc != desc) {
-            self.built = Some(BuiltGraph { desc, graph: self.build_graph(&desc, frame)? });
+            self.built = Some(BuiltGraph { desc, graph: self.build_graph(&desc)? });
         }
         let graph = &self.built.as_ref().expect("built above").graph;
+        // What this frame must give, checked every frame before anything is recorded.
+        let name = self.settings.technique.name();
+        if graph.traces_rays() && frame.scene.is_none() {
+            return Err(AoError::Frame(format!(
+                "{name} traces rays: give the scene (AoEffect::build_scene, AoFrame::scene)"
+            )));
+        }
+        if self.settings.technique.second_layer().is_some() && frame.second_depth.is_none() {
+            return Err(AoError::Frame(format!(
+                "{name} reads a depth-peeled second layer: give AoFrame::second_depth"
+            )));
+        }
         let import = ImportParams {
             view: camera.view,
             engine_size: size,
@@ -441,7 +458,7 @@ impl AoEffect {
     }
 
     /// The technique's graph for `desc`, checked against the device and the frame.
-    fn build_graph(&self, desc: &FrameDesc, frame: &AoFrame) -> Result<Graph, AoError> {
+    fn build_graph(&self, desc: &FrameDesc) -> Result<Graph, AoError> {
         let technique = &self.settings.technique;
         let graph = technique.graph(desc).map_err(AoError::Settings)?;
         let mode =
@@ -453,23 +470,13 @@ impl AoEffect {
                 "{name} rasterizes the scene's triangles itself (a raster pass), which the engine API cannot take: choose a technique without raster passes"
             )));
         }
-        if graph.traces_rays() && frame.scene.is_none() {
-            return Err(AoError::Frame(format!(
-                "{name} traces rays: give the scene (AoEffect::build_scene, AoFrame::scene)"
-            )));
-        }
-        if technique.second_layer().is_some() && frame.second_depth.is_none() {
-            return Err(AoError::Frame(format!(
-                "{name} reads a depth-peeled second layer: give AoFrame::second_depth"
-            )));
-        }
         graph.validate().map_err(AoError::Settings)?;
         check_device(&self.gpu, &graph)?;
         Ok(graph)
     }
 
-    /// `(pass label, ms)` of the last recorded frame once the device finished it (GPU
-    /// timestamps; waits for them).
+    /// `(pass label, ms)` of the last recorded frame: call it after that frame's fence and before
+    /// the next `record` (GPU timestamps; it waits for them, so before the submit it would hang).
     pub fn pass_times(&self) -> Result<Vec<(&'static str, f64)>, AoError> {
         Ok(self.context.pass_times()?)
     }
@@ -533,6 +540,8 @@ pub fn engine_camera(
     }
     let (p22, p32) = (p.z_axis.z, p.w_axis.z);
     let reversed_matrix = p22 > -0.5; // standard: P₂₂ ≤ −1 (≈ −f/(f − n)); reversed: P₂₂ ≥ 0
+    // |P₂₂| below float noise of 0 is the infinite reversed projection.
+    let p22 = if p22.abs() < 1e-7 { 0.0 } else { p22 };
     let (near, far) = if p22 == 0.0 {
         (p32, f32::MAX)
     } else if reversed_matrix {
@@ -549,9 +558,10 @@ pub fn engine_camera(
         (false, false) => DepthConvention::Standard,
         (true, false) => DepthConvention::Reversed,
         (true, true) => DepthConvention::ReversedInfinite,
-        (false, true) => {
+        (false, true) if convention != DepthConvention::Linear => {
             return bad("standard depth with an infinite far plane is not supported: use reversed Z".into());
         }
+        (false, true) => DepthConvention::Linear,
     };
     if convention != DepthConvention::Linear && convention != matrix_says {
         return bad(format!("the frame's depth is {convention:?} but the projection is {matrix_says:?}"));

@@ -540,7 +540,11 @@ impl Technique {
                     },
                     Some(_) => continue,
                 };
-                t.0.set(row.key, value)?;
+                // A flag's value refused is named by the flag it came with.
+                t.0.set(row.key, value).map_err(|e| match e.strip_prefix(row.key) {
+                    Some(rest) => format!("--{flag}{rest}"),
+                    None => e,
+                })?;
             }
         }
         t.0.validate().map_err(|e| format!("'{spec}': {e}"))?;

@@ -120,7 +120,7 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
         Constant::new("HybridParams.screen_steps", "`screen-steps`: steps of a screen ray [16]"),
         Constant::new(
             "HybridParams.noise_frame",
-            "FrameDesc::frame_index (0 for one frame), mod 64 in the noise (gtao-raymarch-hybrid §1.6, §4.1)",
+            "the frame index (FrameDesc::frame_index; 0 for one frame), mod 64 in the noise (gtao-raymarch-hybrid §1.6, §4.1)",
         ),
         Constant::new("HybridParams._pad", "0"),
     ],
