@@ -735,7 +735,7 @@ fn effect_frames_agree_with_cpu_sim() {
             frame.camera.world_to_view,
         ),
     );
-    let e = refused.err().expect("sdsvao through the engine API").to_string();
+    let e = refused.expect_err("sdsvao through the engine API").to_string();
     assert!(e.contains("sdsvao") && e.contains("raster") && !e.contains('\n'), "{e}");
     engine.submit_and_wait(cmd);
     drop(rays);
