@@ -15,9 +15,7 @@ use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::output::write_png;
 use aokit::scene::{Scene, builtin};
 use aokit_vulkan::glam::{Mat4, Vec4};
-use aokit_vulkan::{
-    AoEffect, AoFrame, AoImage, AoSettings, DepthConvention, EngineImage, ExternalDevice, SceneGeometry, Technique,
-};
+use aokit_vulkan::{AoEffect, AoFrame, AoImage, AoSettings, DepthConvention, EngineImage, ExternalDevice, Technique};
 use ash::{ext, khr, vk};
 use clap::{Parser, ValueEnum};
 use std::error::Error;
@@ -818,7 +816,8 @@ fn main() -> Result<()> {
             (0..3).map(move |i| Vertex { position: t[i].to_array(), uv: uv[i].to_array(), material })
         })
         .collect();
-    let masks = scene.alpha_masks();
+    let tables = scene.corner_tables();
+    let masks = &tables.masks;
     let vertex_buffer = engine.host_buffer(vk::BufferUsageFlags::VERTEX_BUFFER, bytemuck::cast_slice(&vertices), 0)?;
     let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
     let mask_headers = engine.host_buffer(storage, bytemuck::cast_slice(&masks.0), 0)?;
@@ -858,15 +857,7 @@ fn main() -> Result<()> {
     let settings = AoSettings::new(technique).radius(frame.radius).exponent(frame.exponent).thickness(frame.thickness);
     let mut effect = AoEffect::new(engine.external(), settings)?;
     effect.resize(width, height)?;
-    let positions: Vec<[f32; 3]> = scene.triangles.iter().flatten().map(|v| v.to_array()).collect();
-    let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
-    let geometry = SceneGeometry {
-        positions: &positions,
-        uvs: &uvs,
-        materials: &scene.triangle_materials,
-        mask_headers: &masks.0,
-        mask_texels: &masks.1,
-    };
+    let geometry = tables.geometry(&scene.triangle_materials);
     let rays = if effect.traces_rays()? { Some(effect.build_scene(&geometry)?) } else { None };
     let depth = EngineImage { view: images.depth.view, layout: vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL };
     let output = AoImage { view: images.ao.view, format: args.ao_format.vk() };

@@ -438,10 +438,8 @@ impl VulkanRenderer {
             if let Some((_, old)) = cache.take() {
                 old.destroy(&self.gpu);
             }
-            let positions: Vec<[f32; 3]> = scene.triangles.iter().flatten().map(|v| v.to_array()).collect();
-            let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
-            let accel =
-                SceneAccel::build(&self.gpu, &positions, &uvs, &scene.triangle_materials, &scene.alpha_masks())?;
+            let t = scene.corner_tables();
+            let accel = SceneAccel::build(&self.gpu, &t.positions, &t.uvs, &scene.triangle_materials, &t.masks)?;
             built = Some(accel.build_ms);
             *cache = Some((key, accel));
         }

@@ -39,7 +39,7 @@ use aokit_shaders::svao::settings::RAYSD;
 use aokit_shaders::vao::settings::VAO;
 use aokit_vulkan::{
     AoContext, AoEffect, AoFrame, AoImage, AoSettings, DepthConvention, EngineFrame, EngineImage, FRAMES_IN_FLIGHT,
-    Gpu, GpuError, Image2d, SceneAccel, SceneGeometry, engine_camera,
+    Gpu, GpuError, Image2d, SceneAccel, engine_camera,
 };
 use ash::vk;
 use engine_device::{EngineDevice, EngineNeeds, RayTracing};
@@ -415,9 +415,8 @@ fn record_frame(
 
 /// The scene's acceleration structure on the engine's device (through aokit's `Gpu`).
 fn scene_accel(gpu: &Gpu, scene: &Scene) -> SceneAccel {
-    let positions: Vec<[f32; 3]> = scene.triangles.iter().flatten().map(|v| v.to_array()).collect();
-    let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
-    SceneAccel::build(gpu, &positions, &uvs, &scene.triangle_materials, &scene.alpha_masks()).unwrap()
+    let t = scene.corner_tables();
+    SceneAccel::build(gpu, &t.positions, &t.uvs, &scene.triangle_materials, &t.masks).unwrap()
 }
 
 /// No validation message (core and synchronization validation).
@@ -641,17 +640,7 @@ fn effect_frames_agree_with_cpu_sim() {
     };
     let mut effect = AoEffect::new(engine.external(), settings(&techniques[0].1)).unwrap();
     let inner = view.size() - 2 * view.guard;
-    let positions: Vec<[f32; 3]> = scene.triangles.iter().flatten().map(|v| v.to_array()).collect();
-    let uvs: Vec<_> = scene.triangle_uvs.iter().flatten().copied().collect();
-    let masks = scene.alpha_masks();
-    let geometry = SceneGeometry {
-        positions: &positions,
-        uvs: &uvs,
-        materials: &scene.triangle_materials,
-        mask_headers: &masks.0,
-        mask_texels: &masks.1,
-    };
-    let rays = effect.build_scene(&geometry).unwrap();
+    let rays = effect.build_scene(&scene.corner_tables().geometry(&scene.triangle_materials)).unwrap();
     let mut report = Vec::new();
     for (convention_name, convention, depth_convention, with_normals) in [
         ("reversed-Z", DEPTH_REVERSED, DepthConvention::Reversed, true),

@@ -284,6 +284,16 @@ impl Scene {
         (lo, hi)
     }
 
+    /// The per-corner tables the GPU's acceleration structure is built from (positions and uvs,
+    /// three per triangle) with the packed alpha masks ([`Scene::alpha_masks`]).
+    pub fn corner_tables(&self) -> CornerTables {
+        CornerTables {
+            positions: self.triangles.iter().flatten().map(|v| v.to_array()).collect(),
+            uvs: self.triangle_uvs.iter().flatten().copied().collect(),
+            masks: self.alpha_masks(),
+        }
+    }
+
     /// Alpha masks packed for the kernels: one header per material (width 0 = opaque) and all
     /// mask texels concatenated. Never empty, so they bind as storage buffers.
     pub fn alpha_masks(&self) -> (Vec<AlphaMaskHeader>, Vec<f32>) {
@@ -347,4 +357,28 @@ fn available_memory() -> Option<u64> {
     let line = info.lines().find(|l| l.starts_with("MemAvailable:"))?;
     let kib: u64 = line.split_whitespace().nth(1)?.parse().ok()?;
     Some(kib * 1024)
+}
+
+/// A scene's triangles as the Vulkan back-end's ray tracing takes them ([`Scene::corner_tables`]).
+#[derive(Clone, Debug)]
+pub struct CornerTables {
+    /// World-space positions, three corners per triangle.
+    pub positions: Vec<[f32; 3]>,
+    /// Texture coordinates, three per triangle.
+    pub uvs: Vec<Vec2>,
+    /// The packed alpha masks: headers per material, texels.
+    pub masks: (Vec<AlphaMaskHeader>, Vec<f32>),
+}
+
+impl CornerTables {
+    /// The tables with the scene's per-triangle `materials` as the engine API's geometry.
+    pub fn geometry<'a>(&'a self, materials: &'a [u32]) -> aokit_vulkan::SceneGeometry<'a> {
+        aokit_vulkan::SceneGeometry {
+            positions: &self.positions,
+            uvs: &self.uvs,
+            materials,
+            mask_headers: &self.masks.0,
+            mask_texels: &self.masks.1,
+        }
+    }
 }
