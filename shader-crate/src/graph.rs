@@ -399,11 +399,15 @@ impl Graph {
             );
             self.passes.insert(0, pass);
             self.snapshots.iter_mut().for_each(|s| s.after += 1);
-            self.resources.push(target_u32(
-                DERIVED_NORMALS,
-                0,
-                "view normals derived from depth for a frame without normals (gtao-raymarch-hybrid §2.4)",
-            ));
+            // The normals pass writes every texel of the target before any pass reads one.
+            self.resources.push(Resource {
+                init: Init::Undefined,
+                ..target_u32(
+                    DERIVED_NORMALS,
+                    0,
+                    "view normals derived from depth for a frame without normals (gtao-raymarch-hybrid §2.4)",
+                )
+            });
         }
         self
     }
