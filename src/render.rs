@@ -310,8 +310,7 @@ impl Drop for VulkanRenderer {
 
 impl CpuRenderer {
     /// Run `technique` on a given G-buffer: its pass graph through the CPU executor (the
-    /// depth-peeled second layer first where the technique reads one), or the techniques not yet
-    /// expressed as graphs directly.
+    /// depth-peeled second layer first where the technique reads one).
     pub fn run(
         &self,
         frame: &Frame,
@@ -447,8 +446,7 @@ impl VulkanRenderer {
         Ok((f(accel)?, built))
     }
 
-    /// Run `technique` on a given G-buffer (uploaded): its pass graph through the context, or
-    /// the techniques without a graph directly.
+    /// Run `technique` on a given G-buffer (uploaded): its pass graph through the context.
     pub fn run(
         &self,
         scene: &Scene,

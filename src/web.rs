@@ -69,11 +69,11 @@ type Settings = Vec<(&'static str, String)>;
 fn unsupported(manifest: &Manifest, graph: &Graph) -> Option<String> {
     for p in &graph.passes {
         if !matches!(p.kind, PassKind::Compute) {
-            return Some(format!("pass '{}' ({}) is not a compute pass", p.label, p.entry));
+            return Some(format!("pass '{}' ({}) is not a compute pass", p.label, p.entry()));
         }
-        let module = manifest.modules.iter().find(|m| m.entry_point == p.entry);
+        let module = manifest.modules.iter().find(|m| m.entry_point == p.entry());
         if module.is_none_or(|m| m.wgsl.is_none()) {
-            return Some(format!("module {} has no WGSL", p.entry));
+            return Some(format!("module {} has no WGSL", p.entry()));
         }
     }
     graph
@@ -116,12 +116,12 @@ pub fn graph_json(graph: &Graph) -> Value {
         .map(|(p, barrier)| {
             let (kind, stages): (&str, Vec<&str>) = match p.kind {
                 PassKind::Compute => ("compute", vec![]),
-                PassKind::RayTracing { miss, any_hit, .. } => ("ray_tracing", vec![miss, any_hit]),
-                PassKind::Raster { vertex } => ("raster", vec![vertex]),
+                PassKind::RayTracing { miss, any_hit, .. } => ("ray_tracing", vec![miss.entry, any_hit.entry]),
+                PassKind::Raster { vertex } => ("raster", vec![vertex.entry]),
             };
             let mut pass = json!({
                 "label": p.label,
-                "entry": p.entry,
+                "entry": p.entry(),
                 "kind": kind,
                 "bindings": p.bindings.iter().map(|b| json!([b.slot, b.resource, access(b.access)])).collect::<Vec<_>>(),
                 "dispatch": p.dispatch.formula(),

@@ -20,7 +20,7 @@ fn regenerated() -> Manifest {
         let bytes = std::fs::read(root().join("assets/spirv").join(&m.file)).unwrap();
         manifest.modules.push(reflect::reflect_any(&m.file, &bytes).unwrap());
     }
-    let mut manifest = manifest.complete(&root().join("shader-crate/src")).unwrap();
+    let mut manifest = manifest.complete().unwrap();
     manifest.add_wgsl(&root().join("assets/spirv")).unwrap();
     manifest
 }
@@ -259,13 +259,13 @@ fn technique_formulas_match_the_graphs_at_every_size() {
             let barriers = graph.barriers();
             assert_eq!(t.passes.len(), graph.passes.len(), "{}", t.name);
             for ((m, p), barrier) in t.passes.iter().zip(&graph.passes).zip(barriers) {
-                assert_eq!((m.entry.as_str(), m.barrier_before), (p.entry, barrier));
+                assert_eq!((m.entry.as_str(), m.barrier_before), (p.entry(), barrier));
                 let n = p.invocations(&view);
                 let got = [eval(&m.dispatch[0], &vars), eval(&m.dispatch[1], &vars)];
-                assert_eq!(got, [n.x as f64, n.y as f64], "{} {}: {:?} at {w}×{h}+{g}", t.name, p.entry, m.dispatch);
+                assert_eq!(got, [n.x as f64, n.y as f64], "{} {}: {:?} at {w}×{h}+{g}", t.name, p.entry(), m.dispatch);
                 let bindings: Vec<_> = p.bindings.iter().map(|b| (b.slot, b.resource.to_string())).collect();
                 let listed: Vec<_> = m.bindings.iter().map(|b| (b.0, b.1.clone())).collect();
-                assert_eq!(bindings, listed, "{} {}", t.name, p.entry);
+                assert_eq!(bindings, listed, "{} {}", t.name, p.entry());
                 checked += 1;
             }
         }
@@ -321,9 +321,9 @@ fn constants_formulas_cover_every_field_and_name_the_settings_that_change_it() {
         let mut out = Decoded { fields: BTreeMap::new(), structs: BTreeSet::new() };
         let module = |name: &str| manifest.modules.iter().find(|m| m.entry_point == name).unwrap();
         for (i, pass) in graph.passes.iter().enumerate() {
-            let nth = graph.passes[..i].iter().filter(|p| p.entry == pass.entry).count();
-            let place = format!("{}#{nth}", pass.entry);
-            let modules: Vec<_> = pass_modules(pass.kind, pass.entry).into_iter().map(module).collect();
+            let nth = graph.passes[..i].iter().filter(|p| p.entry() == pass.entry()).count();
+            let place = format!("{}#{nth}", pass.entry());
+            let modules: Vec<_> = pass_modules(pass).into_iter().map(module).collect();
             match modules.iter().find_map(|m| m.push_constants.as_deref()) {
                 Some(name) => {
                     let size = structs.iter().find(|s| s.name == name).unwrap().size as usize;

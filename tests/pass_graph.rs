@@ -73,9 +73,9 @@ fn check(manifest: &Manifest, name: &str, graph: &Graph) -> Result<(), String> {
     graph.validate()?;
     for pass in &graph.passes {
         let entries = match pass.kind {
-            PassKind::Compute => vec![pass.entry],
-            PassKind::RayTracing { miss, any_hit, .. } => vec![pass.entry, miss, any_hit],
-            PassKind::Raster { vertex } => vec![vertex, pass.entry],
+            PassKind::Compute => vec![pass.entry()],
+            PassKind::RayTracing { miss, any_hit, .. } => vec![pass.entry(), miss.entry, any_hit.entry],
+            PassKind::Raster { vertex } => vec![vertex.entry, pass.entry()],
         };
         // Every slot the module declares is bound with its access; a slot the module does not
         // declare (rust-gpu drops unused parameters) may be bound read-only.
@@ -86,7 +86,7 @@ fn check(manifest: &Manifest, name: &str, graph: &Graph) -> Result<(), String> {
         let extra_written = got.iter().any(|g| !declared(g.0) && g.1);
         let covered: Vec<_> = got.iter().filter(|g| declared(g.0)).copied().collect();
         if covered != want || extra_written {
-            return Err(format!("{name}: pass {} binds {got:?}, module declares {want:?}", pass.entry));
+            return Err(format!("{name}: pass {} binds {got:?}, module declares {want:?}", pass.entry()));
         }
         // The push constants of a pipeline: its largest block (a raster pass's vertex stage).
         let push = entries
@@ -97,12 +97,12 @@ fn check(manifest: &Manifest, name: &str, graph: &Graph) -> Result<(), String> {
         if pass.push_constants.len() as u32 != push {
             return Err(format!(
                 "{name}: pass {} pushes {} bytes, module takes {push}",
-                pass.entry,
+                pass.entry(),
                 pass.push_constants.len()
             ));
         }
-        if aokit_cpu::graph::kernel(pass.entry).is_none() {
-            return Err(format!("{name}: no CPU kernel for {}", pass.entry));
+        if aokit_cpu::graph::kernel(pass.kernel).is_none() {
+            return Err(format!("{name}: no CPU kernel for {}", pass.entry()));
         }
     }
     Ok(())

@@ -242,9 +242,9 @@ fn the_new_rows_reach_every_graph_and_bad_values_are_refused() {
             match svao_record(&graph) {
                 Some(record) => {
                     assert_eq!(record.params.sample_set, set, "{name} ao-samples={value}");
-                    assert_eq!(graph.passes[0].entry, "svao_pass1");
+                    assert_eq!(graph.passes[0].entry(), "svao_pass1");
                 }
-                None => assert_eq!((name, value, graph.passes[0].entry), ("vao", "8", "vao_main")),
+                None => assert_eq!((name, value, graph.passes[0].entry()), ("vao", "8", "vao_main")),
             }
         }
         let err = parse(&format!("{name}:ao-samples=12")).unwrap_err();
@@ -269,7 +269,7 @@ fn the_new_rows_reach_every_graph_and_bad_values_are_refused() {
         let p = svao_record(&graph).unwrap().params;
         assert_eq!((p.kernel, p.secondary), (kernel, Secondary::Raytraced as u32), "{spec}");
         assert_eq!(p.vao.radius, frame.radius * scale, "{spec}");
-        assert!(graph.passes.iter().any(|pass| pass.entry == "raysvao_rgen"), "{spec}");
+        assert!(graph.passes.iter().any(|pass| pass.entry() == "raysvao_rgen"), "{spec}");
     }
 }
 

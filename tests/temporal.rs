@@ -211,12 +211,12 @@ fn the_accumulation_appends_to_every_technique() {
         assert_eq!(blend.resource(2), Some(plain.output), "{}: the blend reads the technique's output", t.name());
         assert_eq!(blend.resource(1), Some(inputs::LINEAR_DEPTH));
         for pass in [blend, store] {
-            let module = manifest.modules.iter().find(|m| m.entry_point == pass.entry).unwrap();
+            let module = manifest.modules.iter().find(|m| m.entry_point == pass.entry()).unwrap();
             let mut declared: Vec<_> = module.bindings.iter().map(|b| (b.binding, b.writable)).collect();
             declared.sort();
             let bound: Vec<_> = pass.bindings.iter().map(|b| (b.slot, b.access != Access::Read)).collect();
-            assert_eq!(bound, declared, "{}", pass.entry);
-            assert!(aokit_cpu::graph::kernel(pass.entry).is_some(), "{}: no CPU kernel", pass.entry);
+            assert_eq!(bound, declared, "{}", pass.entry());
+            assert!(aokit_cpu::graph::kernel(pass.kernel).is_some(), "{}: no CPU kernel", pass.entry());
         }
     }
     // Out-of-range settings are refused with the setting named.

@@ -321,10 +321,13 @@ fn web_page_runs_the_screen_space_techniques_in_chromium_and_agrees_with_cpu_sim
         assert_eq!(sent.len(), graph.passes.len(), "{spec}: pass count");
         for (i, (pass, s)) in graph.passes.iter().zip(sent).enumerate() {
             let hex: String = pass.push_constants.iter().map(|b| format!("{b:02x}")).collect();
-            assert_eq!(s["entry"], pass.entry, "{spec}: pass {i}");
+            assert_eq!(s["entry"], pass.entry(), "{spec}: pass {i}");
             if s["hex"] != hex.as_str() {
-                failures
-                    .push(format!("{spec}: pass {i} ({}) constants\n  page {}\n  rust {hex}", pass.entry, s["hex"]));
+                failures.push(format!(
+                    "{spec}: pass {i} ({}) constants\n  page {}\n  rust {hex}",
+                    pass.entry(),
+                    s["hex"]
+                ));
             }
         }
     }

@@ -61,19 +61,19 @@ fn run_on_wgpu(
     }
     let mut encoder = device.create_command_encoder(&Default::default());
     for pass in &graph.passes {
-        let module = manifest.modules.iter().find(|m| m.entry_point == pass.entry).expect("a module");
-        let wgsl = module.wgsl.as_ref().unwrap_or_else(|| panic!("{} has no WGSL", pass.entry));
+        let module = manifest.modules.iter().find(|m| m.entry_point == pass.entry()).expect("a module");
+        let wgsl = module.wgsl.as_ref().unwrap_or_else(|| panic!("{} has no WGSL", pass.entry()));
         let source =
             std::fs::read_to_string(format!("{}/assets/wgsl/{}", env!("CARGO_MANIFEST_DIR"), wgsl.file)).unwrap();
         let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some(pass.entry),
+            label: Some(pass.entry()),
             source: wgpu::ShaderSource::Wgsl(source.into()),
         });
         let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some(pass.entry),
+            label: Some(pass.entry()),
             layout: None,
             module: &shader,
-            entry_point: Some(pass.entry),
+            entry_point: Some(pass.entry()),
             compilation_options: Default::default(),
             cache: None,
         });
@@ -96,7 +96,7 @@ fn run_on_wgpu(
             entries.push(wgpu::BindGroupEntry { binding, resource: constants.as_entire_binding() });
         }
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some(pass.entry),
+            label: Some(pass.entry()),
             layout: &pipeline.get_bind_group_layout(0),
             entries: &entries,
         });

@@ -2,14 +2,17 @@
 //! kept across frames, each pass calls the kernel functions of its entry point over whole
 //! images, ray-tracing passes go through the BVH with the shared any-hit functions.
 //!
-//! The executor knows kernels (one line per entry point in [`kernel`]), never techniques: the
-//! order of passes comes from the graph alone.
+//! The executor knows no technique: the order of passes comes from the graph alone, and each
+//! pass runs its kernel's CPU driver — the whole-image runner of this crate where one exists
+//! ([`kernel`]: fast paths over 8-pixel lanes and the BVH), else the driver `#[kernel]` generated
+//! beside the entry point, which calls the entry point itself once per invocation
+//! ([`Kernel::cpu`]). A new screen-space kernel so runs here with no code in this crate.
 
 use crate::gbuffer::Surfaces;
 use crate::svao::{HitOrder, Pass1, SdMap};
 use crate::{Progress, SceneBvh};
-use aokit_shaders::glam::Vec2;
 use aokit_shaders::graph::{Access, Graph, Init, Lifetime, Pass, RAY_COUNT, inputs, ray_count_of};
+use aokit_shaders::kernel::{Kernel, KernelIo, Slot};
 use std::collections::HashMap;
 use std::time::Instant;
 
@@ -45,30 +48,33 @@ pub struct PassIo<'a> {
 
 impl<'a> PassIo<'a> {
     /// The words bound at `slot` (read-only or read-write bindings that were not taken yet).
-    pub fn words(&self, slot: u32) -> &[u32] {
+    fn words(&self, slot: u32) -> &[u32] {
         if let Some((_, r)) = self.reads.iter().find(|(s, _)| *s == slot) {
             return r;
         }
         match self.writes.iter().find(|(s, _)| *s == slot) {
             Some((_, Some(w))) => w,
-            _ => panic!("pass '{}': slot {slot} is not bound for reading", self.pass.entry),
+            _ => panic!("pass '{}': slot {slot} is not bound for reading", self.pass.entry()),
         }
     }
 
-    pub fn f32(&self, slot: u32) -> &[f32] {
-        bytemuck::cast_slice(self.words(slot))
-    }
-
     /// The writable words at `slot`, handed out once per pass.
-    pub fn take(&mut self, slot: u32) -> &'a mut [u32] {
+    fn take(&mut self, slot: u32) -> &'a mut [u32] {
         let entry = self.writes.iter_mut().find(|(s, _)| *s == slot);
         entry
             .and_then(|(_, w)| w.take())
-            .unwrap_or_else(|| panic!("pass '{}': slot {slot} is not writable", self.pass.entry))
+            .unwrap_or_else(|| panic!("pass '{}': slot {slot} is not writable", self.pass.entry()))
     }
 
-    pub fn take_f32(&mut self, slot: u32) -> &'a mut [f32] {
-        bytemuck::cast_slice_mut(self.take(slot))
+    /// The buffer bound at `slot` as its declared elements (4-byte aligned ones: `f32`, `u32`,
+    /// `Vec2`); read-only, or read-write and not taken yet.
+    pub fn read<T: bytemuck::Pod>(&self, slot: Slot<T>) -> &[T] {
+        bytemuck::cast_slice(self.words(slot.slot))
+    }
+
+    /// The written buffer at `slot` as its declared elements, handed out once per pass.
+    pub fn write<T: bytemuck::Pod>(&mut self, slot: Slot<T>) -> &'a mut [T] {
+        bytemuck::cast_slice_mut(self.take(slot.slot))
     }
 
     /// The push constants as the kernel's parameter struct.
@@ -77,43 +83,90 @@ impl<'a> PassIo<'a> {
     }
 
     /// The first record of the buffer at `slot` (parameter records such as `SvaoFrame`).
-    pub fn record<T: bytemuck::Pod>(&self, slot: u32) -> T {
-        bytemuck::pod_read_unaligned(&bytemuck::cast_slice::<u32, u8>(self.words(slot))[..size_of::<T>()])
+    pub fn record<T: bytemuck::Pod>(&self, slot: Slot<T>) -> T {
+        bytemuck::pod_read_unaligned(&bytemuck::cast_slice::<u32, u8>(self.words(slot.slot))[..size_of::<T>()])
     }
 
     /// The scene, or a panic naming the pass (the executor checks it before running).
     pub fn scene(&self) -> CpuScene<'a> {
-        self.inputs.scene.unwrap_or_else(|| panic!("pass '{}' traces rays but no scene was given", self.pass.entry))
+        self.inputs.scene.unwrap_or_else(|| panic!("pass '{}' traces rays but no scene was given", self.pass.entry()))
     }
 }
 
-/// A kernel on the CPU: reads and writes its bindings through [`PassIo`].
+impl KernelIo for PassIo<'_> {
+    fn buffers(&mut self, reads: &[u32], writes: &[u32]) -> (&[u8], Vec<&[u32]>, Vec<&mut [u32]>) {
+        let read = reads
+            .iter()
+            .map(|&slot| match self.reads.iter().find(|(s, _)| *s == slot) {
+                Some((_, words)) => *words,
+                None => panic!("pass '{}': slot {slot} is not bound for reading", self.pass.entry()),
+            })
+            .collect();
+        let mut written: Vec<Option<&mut [u32]>> = writes.iter().map(|_| None).collect();
+        for (slot, words) in self.writes.iter_mut() {
+            if let Some(i) = writes.iter().position(|s| s == slot) {
+                written[i] = words.as_deref_mut();
+            }
+        }
+        let written = written
+            .into_iter()
+            .zip(writes)
+            .map(|(w, slot)| w.unwrap_or_else(|| panic!("pass '{}': slot {slot} is not writable", self.pass.entry())))
+            .collect();
+        (&self.pass.push_constants, read, written)
+    }
+}
+
+/// A whole-image CPU runner of a kernel: reads and writes its bindings through [`PassIo`].
 pub type CpuKernel = fn(&mut PassIo);
 
-/// The CPU kernel of each entry point.
-pub fn kernel(entry: &str) -> Option<CpuKernel> {
-    Some(match entry {
-        "vao_main" => kernels::vao,
-        "blur_main" => kernels::blur,
-        "svao_pass1" => kernels::svao_pass1,
-        // A ray-tracing pass and its ray-query variant are one kernel on the CPU: the BVH reports
-        // every candidate to the same any-hit decision.
-        "raysd_rgen" | "raysd_rq" => kernels::sd_map,
-        "rastersd_fs" => kernels::raster_sd_map,
-        "raysd_pass2" => kernels::raysd_pass2,
-        "raysvao_rgen" | "raysvao_rq" => kernels::raysvao,
-        "gtao_prefilter" => kernels::gtao_prefilter,
-        "gtao_normals" => kernels::gtao_normals,
-        "gtao_main" => kernels::gtao_main,
-        "gtao_denoise" => kernels::gtao_denoise,
-        "vbao_main" => kernels::vbao_main,
-        "raymarch_main" => kernels::raymarch,
-        "groundtruth_rgen" | "groundtruth_rq" => kernels::ground_truth,
-        "hybrid_rgen" | "hybrid_rq" => kernels::hybrid,
-        "temporal_blend" => kernels::temporal_blend,
-        "temporal_store" => kernels::temporal_store,
-        _ => return None,
-    })
+/// How a pass runs on the CPU.
+#[derive(Copy, Clone)]
+pub enum CpuDriver {
+    /// A runner of this crate.
+    Runner(CpuKernel),
+    /// The driver generated beside the entry point ([`Kernel::cpu`]).
+    Generated(fn(&mut dyn KernelIo, [u32; 2])),
+}
+
+/// The kernels this crate runs with its own whole-image runners (lanes, tiles, the BVH). A
+/// ray-tracing pass and its ray-query variant are one runner here: the BVH reports every
+/// candidate to the same any-hit decision.
+static RUNNERS: &[(&Kernel, CpuKernel)] = {
+    use aokit_shaders::{
+        blur, groundtruth, gtao, hybrid, rastersd, raymarch, raysd, raysvao, svao, temporal, vao, vbao,
+    };
+    &[
+        (&vao::vao_main::ENTRY, kernels::vao),
+        (&blur::blur_main::ENTRY, kernels::blur),
+        (&svao::svao_pass1::ENTRY, kernels::svao_pass1),
+        (&raysd::rt::raysd_rgen::ENTRY, kernels::sd_map),
+        (&raysd::rq::raysd_rq::ENTRY, kernels::sd_map),
+        (&rastersd::rastersd_fs::ENTRY, kernels::raster_sd_map),
+        (&raysd::raysd_pass2::ENTRY, kernels::raysd_pass2),
+        (&raysvao::rt::raysvao_rgen::ENTRY, kernels::raysvao),
+        (&raysvao::rq::raysvao_rq::ENTRY, kernels::raysvao),
+        (&gtao::gtao_prefilter::ENTRY, kernels::gtao_prefilter),
+        (&gtao::gtao_normals::ENTRY, kernels::gtao_normals),
+        (&gtao::gtao_main::ENTRY, kernels::gtao_main),
+        (&gtao::gtao_denoise::ENTRY, kernels::gtao_denoise),
+        (&vbao::vbao_main::ENTRY, kernels::vbao_main),
+        (&raymarch::raymarch_main::ENTRY, kernels::raymarch),
+        (&groundtruth::rt::groundtruth_rgen::ENTRY, kernels::ground_truth),
+        (&groundtruth::rq::groundtruth_rq::ENTRY, kernels::ground_truth),
+        (&hybrid::rt::hybrid_rgen::ENTRY, kernels::hybrid),
+        (&hybrid::rq::hybrid_rq::ENTRY, kernels::hybrid),
+        (&temporal::temporal_blend::ENTRY, kernels::temporal_blend),
+    ]
+};
+
+/// How `kernel` runs on the CPU: this crate's runner, else the generated driver; `None` for a
+/// kernel with neither (a ray-tracing or raster kernel without a runner).
+pub fn kernel(kernel: &Kernel) -> Option<CpuDriver> {
+    match RUNNERS.iter().find(|(k, _)| *k == kernel) {
+        Some(&(_, run)) => Some(CpuDriver::Runner(run)),
+        None => kernel.cpu.map(CpuDriver::Generated),
+    }
 }
 
 /// What one frame of a graph produced.
@@ -130,11 +183,19 @@ pub struct FrameStats {
 #[derive(Default)]
 pub struct CpuExecutor {
     resources: HashMap<&'static str, Vec<u32>>,
+    generated_first: bool,
 }
 
 impl CpuExecutor {
     pub fn new() -> Self {
         Self::default()
+    }
+
+    /// An executor that runs every kernel with a generated driver ([`Kernel::cpu`]: the entry
+    /// point itself, once per invocation) through it rather than through this crate's runner:
+    /// slower, and a check that the runners compute what the entry points do.
+    pub fn generated_drivers_first() -> Self {
+        CpuExecutor { generated_first: true, ..Self::default() }
     }
 
     /// The contents of resource `name` after the last frame.
@@ -172,9 +233,13 @@ impl CpuExecutor {
         }
         let mut stats = FrameStats::default();
         for (i, pass) in graph.passes.iter().enumerate() {
-            let run = kernel(pass.entry).ok_or_else(|| format!("no CPU kernel for entry point '{}'", pass.entry))?;
+            let generated = pass.kernel.cpu.filter(|_| self.generated_first).map(CpuDriver::Generated);
+            let run = generated
+                .or_else(|| kernel(pass.kernel))
+                .ok_or_else(|| format!("no CPU driver for entry point '{}'", pass.entry()))?;
             let start = Instant::now();
-            stats.rays += self.run_pass(pass, inputs, run)?;
+            let invocations = pass.invocations(&graph.view).to_array();
+            stats.rays += self.run_pass(pass, inputs, run, invocations)?;
             let ms = start.elapsed().as_secs_f64() * 1e3;
             match stats.pass_ms.last_mut() {
                 Some((label, total)) if *label == pass.label => *total += ms,
@@ -188,7 +253,13 @@ impl CpuExecutor {
         Ok(stats)
     }
 
-    fn run_pass(&mut self, pass: &Pass, inputs: &CpuInputs, run: CpuKernel) -> Result<u64, String> {
+    fn run_pass(
+        &mut self,
+        pass: &Pass,
+        inputs: &CpuInputs,
+        run: CpuDriver,
+        invocations: [u32; 2],
+    ) -> Result<u64, String> {
         // Written resources leave the map for the pass, so reads can borrow the rest.
         let mut taken: Vec<(&'static str, Vec<u32>)> = Vec::new();
         for b in pass.bindings.iter().filter(|b| b.access.writes()) {
@@ -208,7 +279,7 @@ impl CpuExecutor {
                     // The scene's buffers are the BVH's surfaces on the CPU.
                     name if inputs::ALL.contains(&name) => {
                         if inputs.scene.is_none() {
-                            return Err(format!("pass '{}' traces rays but no scene was given", pass.entry));
+                            return Err(format!("pass '{}' traces rays but no scene was given", pass.entry()));
                         }
                         &[]
                     }
@@ -224,7 +295,10 @@ impl CpuExecutor {
                 .map(|(b, (_, v))| (b.slot, Some(&mut v[..])))
                 .collect();
             let mut io = PassIo { pass, reads, writes, inputs, rays: 0 };
-            run(&mut io);
+            match run {
+                CpuDriver::Runner(run) => run(&mut io),
+                CpuDriver::Generated(run) => run(&mut io, invocations),
+            }
             // The ray counter, as the GPU kernels keep it (`common::atomics::count_rays`).
             if let Some(b) = pass.bindings.iter().find(|b| b.resource == RAY_COUNT) {
                 let words = io.take(b.slot);
@@ -244,181 +318,205 @@ impl CpuExecutor {
 /// whole-image runners of this crate) and writes its outputs into the bound resources.
 mod kernels {
     use super::*;
-    use aokit_shaders::blur::BlurParams;
-    use aokit_shaders::groundtruth::GroundTruthFrame;
-    use aokit_shaders::gtao::{GtaoParams, mip_offset, mip_size, normal_from_depth, prefilter_texel};
-    use aokit_shaders::hybrid::HybridFrame;
-    use aokit_shaders::raymarch::RaymarchParams;
-    use aokit_shaders::svao::SvaoFrame;
-    use aokit_shaders::vao::VaoParams;
-    use aokit_shaders::vbao::VbaoParams;
+    use aokit_shaders::gtao::{mip_offset, mip_size, normal_from_depth, prefilter_texel};
+    use aokit_shaders::{
+        blur, groundtruth, gtao, hybrid, rastersd, raymarch, raysd, raysvao, svao, temporal, vao, vbao,
+    };
 
     pub fn vao(io: &mut PassIo) {
-        let params: VaoParams = io.push();
-        let out = crate::run_vao(&params, io.f32(0), io.words(1), io.inputs.progress);
-        io.take_f32(2).copy_from_slice(&out);
+        use vao::vao_main::*;
+        let params: vao::VaoParams = io.push();
+        let out = crate::run_vao(&params, io.read(DEPTH), io.read(NORMALS), io.inputs.progress);
+        io.write(AO).copy_from_slice(&out);
     }
 
     pub fn blur(io: &mut PassIo) {
-        let params: BlurParams = io.push();
-        let out = crate::screen::run_blur_direction(&params, io.f32(0), io.f32(1));
-        io.take_f32(2).copy_from_slice(&out);
+        use blur::blur_main::*;
+        let params: blur::BlurParams = io.push();
+        let out = crate::screen::run_blur_direction(&params, io.read(AO_IN), io.read(DEPTH));
+        io.write(AO_OUT).copy_from_slice(&out);
     }
 
     pub fn svao_pass1(io: &mut PassIo) {
-        let frame: SvaoFrame = io.record(0);
-        let p = crate::svao::run_pass1(&frame.params, io.f32(1), io.words(2), io.f32(7), io.inputs.progress);
-        io.take_f32(3).copy_from_slice(&p.ao);
-        io.take(4).copy_from_slice(&p.mask);
-        io.take(5).copy_from_slice(&p.ray_min);
-        io.take(6).copy_from_slice(&p.ray_max);
+        use svao::svao_pass1::*;
+        let frame = io.record(FRAME);
+        let p = crate::svao::run_pass1(
+            &frame.params,
+            io.read(DEPTH),
+            io.read(NORMALS),
+            io.read(DEPTH2),
+            io.inputs.progress,
+        );
+        io.write(AO).copy_from_slice(&p.ao);
+        io.write(MASK).copy_from_slice(&p.mask);
+        io.write(RAY_MIN).copy_from_slice(&p.ray_min);
+        io.write(RAY_MAX).copy_from_slice(&p.ray_max);
     }
 
     pub fn sd_map(io: &mut PassIo) {
-        let frame: SvaoFrame = io.record(0);
+        use raysd::rq::raysd_rq::*;
+        let frame = io.record(FRAME);
         let scene = io.scene();
-        let pass1 =
-            Pass1 { ao: Vec::new(), mask: Vec::new(), ray_min: io.words(4).to_vec(), ray_max: io.words(5).to_vec() };
+        let pass1 = Pass1 {
+            ao: Vec::new(),
+            mask: Vec::new(),
+            ray_min: io.read(RAY_MIN).to_vec(),
+            ray_max: io.read(RAY_MAX).to_vec(),
+        };
         let map = crate::svao::run_sd_map(
             scene.bvh,
             scene.surfaces,
             &frame,
-            io.f32(2),
-            io.words(3),
+            io.read(DEPTH),
+            io.read(NORMALS),
             &pass1,
             HitOrder::Traversal,
         );
-        io.take_f32(6).copy_from_slice(&map.layers);
+        io.write(SD_MAP).copy_from_slice(&map.layers);
         io.rays += map.rays;
     }
 
     /// The raster coverage-mask SD map: every surface on the texel-centre ray is a fragment.
     pub fn raster_sd_map(io: &mut PassIo) {
-        let frame: SvaoFrame = io.record(2);
+        use rastersd::rastersd_fs::*;
+        let frame = io.record(FRAME);
         let scene = io.scene();
-        let pass1 =
-            Pass1 { ao: Vec::new(), mask: Vec::new(), ray_min: io.words(4).to_vec(), ray_max: io.words(5).to_vec() };
-        let map = crate::svao::run_raster_sd_map(scene.bvh, scene.surfaces, &frame, io.f32(3), &pass1);
-        io.take_f32(6).copy_from_slice(&map.layers);
+        let pass1 = Pass1 {
+            ao: Vec::new(),
+            mask: Vec::new(),
+            ray_min: io.read(RAY_MIN).to_vec(),
+            ray_max: io.read(RAY_MAX).to_vec(),
+        };
+        let map = crate::svao::run_raster_sd_map(scene.bvh, scene.surfaces, &frame, io.read(DEPTH), &pass1);
+        io.write(SD_BITS).copy_from_slice(bytemuck::cast_slice(&map.layers));
         io.rays += map.rays;
     }
 
     /// Pass 1's AO and mask as the CPU runners take them.
-    fn pass1(io: &PassIo, ao: &[u32], mask: u32) -> Pass1 {
-        Pass1 {
-            ao: bytemuck::cast_slice(ao).to_vec(),
-            mask: io.words(mask).to_vec(),
-            ray_min: Vec::new(),
-            ray_max: Vec::new(),
-        }
+    fn pass1(ao: &[f32], mask: &[u32]) -> Pass1 {
+        Pass1 { ao: ao.to_vec(), mask: mask.to_vec(), ray_min: Vec::new(), ray_max: Vec::new() }
     }
 
     pub fn raysd_pass2(io: &mut PassIo) {
-        let frame: SvaoFrame = io.record(0);
-        let ao = io.take(3);
-        let map = SdMap { layers: io.f32(5).to_vec(), rays: 0 };
-        let out = crate::svao::run_pass2_sd(&frame.params, io.f32(1), io.words(2), io.f32(6), &pass1(io, ao, 4), &map);
-        ao.copy_from_slice(bytemuck::cast_slice(&out));
+        use raysd::raysd_pass2::*;
+        let frame = io.record(FRAME);
+        let ao = io.write(AO);
+        let map = SdMap { layers: io.read(SD_MAP).to_vec(), rays: 0 };
+        let p1 = pass1(ao, io.read(MASK));
+        let out =
+            crate::svao::run_pass2_sd(&frame.params, io.read(DEPTH), io.read(NORMALS), io.read(DEPTH2), &p1, &map);
+        ao.copy_from_slice(&out);
     }
 
     pub fn raysvao(io: &mut PassIo) {
-        let frame: SvaoFrame = io.record(0);
+        use raysvao::rq::raysvao_rq::*;
+        let frame = io.record(FRAME);
         let scene = io.scene();
-        let ao = io.take(4);
-        let p1 = pass1(io, ao, 5);
-        let (out, rays) =
-            crate::svao::run_raysvao_pass2(scene.bvh, scene.surfaces, &frame, io.f32(2), io.words(3), io.f32(10), &p1);
-        ao.copy_from_slice(bytemuck::cast_slice(&out));
+        let ao = io.write(AO);
+        let p1 = pass1(ao, io.read(MASK));
+        let (out, rays) = crate::svao::run_raysvao_pass2(
+            scene.bvh,
+            scene.surfaces,
+            &frame,
+            io.read(DEPTH),
+            io.read(NORMALS),
+            io.read(DEPTH2),
+            &p1,
+        );
+        ao.copy_from_slice(&out);
         io.rays += rays;
     }
 
     pub fn gtao_prefilter(io: &mut PassIo) {
-        let params: GtaoParams = io.push();
+        use gtao::gtao_prefilter::*;
+        let params: gtao::GtaoParams = io.push();
         let full = params.view.size();
         let size = mip_size(full, params.pass);
         // This level is written in place; it reads only the levels before it.
-        let (before, level) = io.take_f32(1).split_at_mut(mip_offset(full, params.pass));
+        let (before, level) = io.write(MIPS).split_at_mut(mip_offset(full, params.pass));
         let level = &mut level[..(size.x * size.y) as usize];
-        let depth = io.f32(0);
+        let depth = io.read(DEPTH);
         crate::screen::tiled(level, size.x, 0..size.x, 0..size.y, &crate::no_progress, |t, v| {
             *v = prefilter_texel(&params, depth, before, t)
         });
     }
 
     pub fn gtao_normals(io: &mut PassIo) {
-        let params: GtaoParams = io.push();
-        let out = crate::gtao::per_pixel(params.view.size(), |p| normal_from_depth(&params, io.f32(0), p));
-        io.take(1).copy_from_slice(&out);
+        use gtao::gtao_normals::*;
+        let params: gtao::GtaoParams = io.push();
+        let out = crate::gtao::per_pixel(params.view.size(), |p| normal_from_depth(&params, io.read(DEPTH), p));
+        io.write(NORMALS).copy_from_slice(&out);
     }
 
     pub fn gtao_main(io: &mut PassIo) {
-        let params: GtaoParams = io.push();
-        let (terms, edges) = (io.take(2), io.take(3));
-        crate::gtao::run_main_into(&params, io.f32(0), io.words(1), terms, edges);
+        use gtao::gtao_main::*;
+        let params: gtao::GtaoParams = io.push();
+        let (terms, edges) = (io.write(TERMS), io.write(EDGES));
+        crate::gtao::run_main_into(&params, io.read(MIPS), io.read(NORMALS), terms, edges);
     }
 
     pub fn vbao_main(io: &mut PassIo) {
-        let params: VbaoParams = io.push();
-        let (terms, edges) = (io.take(2), io.take(3));
-        crate::gtao::run_vbao_into(&params, io.f32(0), io.words(1), terms, edges);
+        use vbao::vbao_main::*;
+        let params: vbao::VbaoParams = io.push();
+        let (terms, edges) = (io.write(TERMS), io.write(EDGES));
+        crate::gtao::run_vbao_into(&params, io.read(MIPS), io.read(NORMALS), terms, edges);
     }
 
     pub fn gtao_denoise(io: &mut PassIo) {
-        let params: GtaoParams = io.push();
-        let (terms, ao) = (io.take(2), io.take_f32(3));
-        crate::gtao::denoise_into(&params, io.words(0), io.words(1), terms, ao);
+        use gtao::gtao_denoise::*;
+        let params: gtao::GtaoParams = io.push();
+        let (terms, ao) = (io.write(TERMS_OUT), io.write(AO));
+        crate::gtao::denoise_into(&params, io.read(TERMS_IN), io.read(EDGES), terms, ao);
     }
 
     pub fn ground_truth(io: &mut PassIo) {
-        let frame: GroundTruthFrame = io.record(0);
+        use groundtruth::rq::groundtruth_rq::*;
+        let frame = io.record(FRAME);
         let scene = io.scene();
         let size = frame.camera.view.size();
         let gbuffer = crate::GBufferImage {
             width: size.x,
             height: size.y,
-            depth: io.f32(2).to_vec(),
-            normals: io.words(3).to_vec(),
+            depth: io.read(DEPTH).to_vec(),
+            normals: io.read(NORMALS).to_vec(),
         };
         let (ao, rays) = crate::run_ground_truth(scene.bvh, scene.surfaces, &frame, &gbuffer, io.inputs.progress);
-        io.take_f32(4).copy_from_slice(&ao);
+        io.write(AO).copy_from_slice(&ao);
         io.rays += rays;
     }
 
     pub fn hybrid(io: &mut PassIo) {
-        let frame: HybridFrame = io.record(0);
+        use hybrid::rq::hybrid_rq::*;
+        let frame = io.record(FRAME);
         let scene = io.scene();
         let (ao, terms, edges, rays) =
-            crate::hybrid::run_hybrid(scene.bvh, scene.surfaces, &frame, io.f32(2), io.words(3));
+            crate::hybrid::run_hybrid(scene.bvh, scene.surfaces, &frame, io.read(DEPTH), io.read(NORMALS));
         io.rays += rays;
-        io.take_f32(4).copy_from_slice(&ao);
-        io.take(9).copy_from_slice(&terms);
-        io.take(10).copy_from_slice(&edges);
+        io.write(AO).copy_from_slice(&ao);
+        io.write(TERMS).copy_from_slice(&terms);
+        io.write(EDGES).copy_from_slice(&edges);
     }
 
     pub fn raymarch(io: &mut PassIo) {
-        let params: RaymarchParams = io.push();
-        let kernel: &[Vec2] = &bytemuck::cast_slice::<u32, Vec2>(io.words(2))[..params.directions as usize];
-        let (ao, terms, edges) = crate::raymarch::run_raymarch(&params, io.f32(0), io.words(1), kernel);
-        io.take_f32(3).copy_from_slice(&ao);
-        io.take(4).copy_from_slice(&terms);
-        io.take(5).copy_from_slice(&edges);
+        use raymarch::raymarch_main::*;
+        let params: raymarch::RaymarchParams = io.push();
+        let kernel = &io.read(KERNEL)[..params.directions as usize];
+        let (ao, terms, edges) = crate::raymarch::run_raymarch(&params, io.read(DEPTH), io.read(NORMALS), kernel);
+        io.write(AO).copy_from_slice(&ao);
+        io.write(TERMS).copy_from_slice(&terms);
+        io.write(EDGES).copy_from_slice(&edges);
     }
 
     /// The temporal accumulation (`aokit_shaders::temporal`) over the full target.
     pub fn temporal_blend(io: &mut PassIo) {
-        let frame: aokit_shaders::temporal::TemporalFrame = io.record(0);
+        use temporal::temporal_blend::*;
+        let frame = io.record(FRAME);
         let size = frame.camera.view.size();
-        let out = io.take_f32(5);
-        let (depth, ao, history, history_depth) = (io.f32(1), io.f32(2), io.f32(3), io.f32(4));
+        let out = io.write(OUT);
+        let (depth, ao, history, history_depth) =
+            (io.read(DEPTH), io.read(AO), io.read(HISTORY_AO), io.read(HISTORY_DEPTH));
         crate::screen::tiled(out, size.x, 0..size.x, 0..size.y, &crate::no_progress, |p, v| {
-            *v = aokit_shaders::temporal::temporal_pixel(&frame, depth, ao, history, history_depth, p)
+            *v = temporal::temporal_pixel(&frame, depth, ao, history, history_depth, p)
         });
-    }
-
-    /// The history for the next frame: the accumulated AO and this frame's depth.
-    pub fn temporal_store(io: &mut PassIo) {
-        let (history, history_depth) = (io.take_f32(3), io.take_f32(4));
-        history.copy_from_slice(io.f32(2));
-        history_depth.copy_from_slice(io.f32(1));
     }
 }

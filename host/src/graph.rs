@@ -247,49 +247,50 @@ impl<G: Borrow<Gpu>> AoContext<G> {
 
     /// The pipeline of `pass`, made on first use.
     fn ensure_pipeline(&mut self, pass: &Pass) -> Result<(), GpuError> {
-        if self.pipelines.contains_key(pass.entry) {
+        if self.pipelines.contains_key(pass.entry()) {
             return Ok(());
         }
-        let module = self.module(pass.entry)?.clone();
+        let module = self.module(pass.entry())?.clone();
         let slots = module.bindings.iter().map(|b| b.binding + 1).max().unwrap_or(0);
         let pipeline = match pass.kind {
             PassKind::Compute => {
-                let entry = CString::new(pass.entry).expect("entry names have no NUL");
+                let entry = CString::new(pass.entry()).expect("entry names have no NUL");
                 let types = descriptor_types(pass, slots);
-                let spirv = Self::spirv(pass.entry)?;
+                let spirv = Self::spirv(pass.entry())?;
                 if types.contains(&vk::DescriptorType::ACCELERATION_STRUCTURE_KHR) && !self.gpu().has_ray_query() {
                     return Err(GpuError::NoDevice(format!(
                         "ray queries: '{}' lacks VK_KHR_ray_query / VK_KHR_acceleration_structure / bufferDeviceAddress (pass '{}'; RtMode::Pipeline uses ray-tracing pipelines instead)",
                         self.gpu().info().name,
-                        pass.entry
+                        pass.entry()
                     )));
                 }
                 let kernel = ComputeKernel::new(self.gpu(), spirv, &entry, &types, module.push_constant_bytes)?;
                 Pipeline::Compute { kernel, workgroup: module.workgroup_size.unwrap_or([1, 1, 1]) }
             }
             PassKind::RayTracing { miss, any_hit, .. } => {
-                let names = [pass.entry, miss, any_hit].map(|n| CString::new(n).expect("entry names have no NUL"));
+                let names = [pass.entry(), miss.entry, any_hit.entry]
+                    .map(|n| CString::new(n).expect("entry names have no NUL"));
                 let shaders = [
-                    (Self::spirv(pass.entry)?, names[0].as_c_str()),
-                    (Self::spirv(miss)?, names[1].as_c_str()),
-                    (Self::spirv(any_hit)?, names[2].as_c_str()),
+                    (Self::spirv(pass.entry())?, names[0].as_c_str()),
+                    (Self::spirv(miss.entry)?, names[1].as_c_str()),
+                    (Self::spirv(any_hit.entry)?, names[2].as_c_str()),
                 ];
                 Pipeline::RayTracing(RtPipeline::new(self.gpu(), shaders, descriptor_types(pass, slots))?)
             }
             // The raster pipeline state graphs declare: no attachments, dynamic viewport.
             PassKind::Raster { vertex } => {
-                let names = [vertex, pass.entry].map(|n| CString::new(n).expect("entry names have no NUL"));
-                let push = self.module(vertex)?.push_constant_bytes;
+                let names = [vertex.entry, pass.entry()].map(|n| CString::new(n).expect("entry names have no NUL"));
+                let push = self.module(vertex.entry)?.push_constant_bytes;
                 Pipeline::Raster(AttachmentlessPass::new(
                     self.gpu(),
-                    (Self::spirv(vertex)?, names[0].as_c_str()),
-                    (Self::spirv(pass.entry)?, names[1].as_c_str()),
+                    (Self::spirv(vertex.entry)?, names[0].as_c_str()),
+                    (Self::spirv(pass.entry())?, names[1].as_c_str()),
                     slots,
                     push,
                 )?)
             }
         };
-        self.pipelines.insert(pass.entry, pipeline);
+        self.pipelines.insert(pass.entry(), pipeline);
         Ok(())
     }
 
@@ -401,7 +402,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
                 memory_barrier(self.gpu(), cmd, stages, stages);
             }
             let invocations = pass.invocations(&graph.view);
-            match &self.pipelines[pass.entry] {
+            match &self.pipelines[pass.entry()] {
                 Pipeline::Compute { kernel, workgroup } => {
                     let groups = [invocations.x.div_ceil(workgroup[0]), invocations.y.div_ceil(workgroup[1]), 1];
                     kernel.record_set(self.gpu(), cmd, sets[i], &pass.push_constants, groups);
@@ -579,7 +580,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             // Checked before anything is recorded into the caller's command buffer.
             return Err(GpuError::Input("a raster pass needs the scene's vertices (GpuInputs::raster)".into()));
         }
-        Ok(SetKey { entries: graph.passes.iter().map(|p| p.entry).collect(), buffers })
+        Ok(SetKey { entries: graph.passes.iter().map(|p| p.entry()).collect(), buffers })
     }
 
     /// The buffer bound for `name`; `None` for the TLAS.
@@ -653,7 +654,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
     ) -> Result<Vec<vk::DescriptorSet>, GpuError> {
         let mut sets = Vec::new();
         for pass in &graph.passes {
-            let (layout, count) = match &self.pipelines[pass.entry] {
+            let (layout, count) = match &self.pipelines[pass.entry()] {
                 Pipeline::Compute { kernel, .. } => (kernel.set_layout(), kernel.bindings()),
                 Pipeline::RayTracing(p) => (p.set_layout, p.bindings.len() as u32),
                 Pipeline::Raster(p) => (p.set_layout, p.bindings),
@@ -661,7 +662,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             let mut descriptors = Vec::new();
             for slot in 0..count {
                 let name = pass.resource(slot).ok_or_else(|| {
-                    GpuError::Input(format!("pass '{}' leaves binding {slot} of its module unbound", pass.entry))
+                    GpuError::Input(format!("pass '{}' leaves binding {slot} of its module unbound", pass.entry()))
                 })?;
                 descriptors.push(match self.input_or_resource(name, inputs)? {
                     Some(buffer) => Descriptor::Storage(buffer),

@@ -408,159 +408,6 @@ pub mod words {
     }
 }
 
-/// The kernels' entry-point signatures read from the shader crate's Rust source (feature
-/// `reflect`): which struct is a module's push-constant block and each binding's parameter name
-/// and Rust type — what the SPIR-V does not name.
-#[cfg(feature = "reflect")]
-pub mod source {
-    use quote::ToTokens;
-    use std::path::Path;
-
-    /// One entry point's interface as written in Rust.
-    #[derive(Clone, Debug, PartialEq)]
-    pub struct EntrySignature {
-        pub entry: String,
-        /// The push-constant parameter's type name.
-        pub push_constants: Option<String>,
-        /// `(set, binding, parameter name, Rust type without the reference)`.
-        pub bindings: Vec<(u32, u32, String, String)>,
-    }
-
-    const STAGES: [&str; 8] =
-        ["compute", "fragment", "vertex", "ray_generation", "any_hit", "miss", "closest_hit", "intersection"];
-
-    /// `spirv(...)` attribute tokens as text, if `attr` is one.
-    fn spirv_attr(attr: &syn::Attribute) -> Option<String> {
-        match &attr.meta {
-            syn::Meta::List(l) if l.path.is_ident("spirv") => Some(l.tokens.to_string()),
-            _ => None,
-        }
-    }
-
-    /// The integer after `key =` in attribute text.
-    fn number_after(text: &str, key: &str) -> Option<u32> {
-        let rest = text.split(key).nth(1)?.trim_start().strip_prefix('=')?.trim_start();
-        rest.split(|c: char| !c.is_ascii_digit()).next()?.parse().ok()
-    }
-
-    fn entry_of(f: &syn::ItemFn) -> Option<EntrySignature> {
-        let attr = f.attrs.iter().filter_map(spirv_attr).find(|a| {
-            let first = a.split(|c: char| !(c.is_alphanumeric() || c == '_')).next().unwrap_or("");
-            STAGES.contains(&first)
-        })?;
-        let entry = attr
-            .split("entry_point_name")
-            .nth(1)
-            .and_then(|r| r.split('"').nth(1))
-            .map_or_else(|| f.sig.ident.to_string(), str::to_string);
-        let mut sig = EntrySignature { entry, push_constants: None, bindings: Vec::new() };
-        for input in &f.sig.inputs {
-            let syn::FnArg::Typed(p) = input else { continue };
-            let Some(text) = p.attrs.iter().filter_map(spirv_attr).next() else { continue };
-            let name = p.pat.to_token_stream().to_string();
-            let ty = p.ty.to_token_stream().to_string().replace(' ', "");
-            // `&'a mut [f32]` → `[f32]`.
-            let ty = ty.trim_start_matches('&');
-            let ty = match ty.strip_prefix('\'') {
-                Some(rest) => rest.trim_start_matches(|c: char| c.is_alphanumeric() || c == '_'),
-                None => ty,
-            };
-            let ty = ty.trim_start_matches("mut").to_string();
-            if text.contains("push_constant") {
-                sig.push_constants = Some(ty);
-            } else if let (Some(set), Some(binding)) =
-                (number_after(&text, "descriptor_set"), number_after(&text, "binding"))
-            {
-                sig.bindings.push((set, binding, name, ty));
-            }
-        }
-        Some(sig)
-    }
-
-    /// A one-arm `macro_rules!` whose arm is an entry point: its metavariables and body.
-    struct EntryMacro {
-        name: String,
-        params: Vec<String>,
-        body: String,
-    }
-
-    /// `macro_rules! m { ($a:ident, $b:tt, …) => { …fn… }; }` as an [`EntryMacro`].
-    fn entry_macro(m: &syn::ItemMacro) -> Option<EntryMacro> {
-        let name = m.ident.as_ref()?.to_string();
-        if !m.mac.path.is_ident("macro_rules") {
-            return None;
-        }
-        let mut tokens = m.mac.tokens.clone().into_iter();
-        let pattern = match tokens.next()? {
-            proc_macro2::TokenTree::Group(g) => g.stream().to_string(),
-            _ => return None,
-        };
-        let body = tokens.find_map(|t| match t {
-            proc_macro2::TokenTree::Group(g) => Some(g.stream().to_string()),
-            _ => None,
-        })?;
-        let params = pattern.split(',').filter_map(|p| Some(p.split(':').next()?.trim().replace(' ', ""))).collect();
-        body.contains("spirv").then_some(EntryMacro { name, params, body })
-    }
-
-    fn items(items: &[syn::Item], out: &mut Vec<EntrySignature>) {
-        let macros: Vec<EntryMacro> = items
-            .iter()
-            .filter_map(|i| match i {
-                syn::Item::Macro(m) => entry_macro(m),
-                _ => None,
-            })
-            .collect();
-        for item in items {
-            match item {
-                syn::Item::Fn(f) => out.extend(entry_of(f)),
-                syn::Item::Mod(m) => {
-                    if let Some((_, inner)) = &m.content {
-                        self::items(inner, out);
-                    }
-                }
-                // An invocation of an entry-point macro: its body with the arguments substituted.
-                syn::Item::Macro(m) => {
-                    let Some(mac) = macros.iter().find(|d| m.mac.path.is_ident(&d.name)) else { continue };
-                    let args: Vec<String> = m.mac.tokens.to_string().split(',').map(|a| a.trim().to_string()).collect();
-                    let mut body = mac.body.clone();
-                    for (param, arg) in mac.params.iter().zip(&args) {
-                        body = body.replace(&param.replacen('$', "$ ", 1), arg).replace(param.as_str(), arg);
-                    }
-                    if let Ok(f) = syn::parse_str::<syn::ItemFn>(&body) {
-                        out.extend(entry_of(&f));
-                    }
-                }
-                _ => {}
-            }
-        }
-    }
-
-    /// Every entry point under `src` (the shader crate's `src/`).
-    pub fn entry_points(src: &Path) -> Result<Vec<EntrySignature>, String> {
-        let mut files = Vec::new();
-        let mut dirs = vec![src.to_path_buf()];
-        while let Some(dir) = dirs.pop() {
-            for e in std::fs::read_dir(&dir).map_err(|e| format!("{}: {e}", dir.display()))? {
-                let path = e.map_err(|e| e.to_string())?.path();
-                if path.is_dir() {
-                    dirs.push(path);
-                } else if path.extension().is_some_and(|x| x == "rs") {
-                    files.push(path);
-                }
-            }
-        }
-        files.sort();
-        let mut out = Vec::new();
-        for path in files {
-            let text = std::fs::read_to_string(&path).map_err(|e| format!("{}: {e}", path.display()))?;
-            let file = syn::parse_file(&text).map_err(|e| format!("{}: {e}", path.display()))?;
-            items(&file.items, &mut out);
-        }
-        Ok(out)
-    }
-}
-
 #[cfg(feature = "reflect")]
 impl Manifest {
     /// Translate every compute module (but [`NOT_WGSL`] and the ray-query variants, which
@@ -587,10 +434,11 @@ impl Manifest {
     }
 
     /// Version 2 of the manifest from the reflected modules: binding names and Rust types and
-    /// push-constant structs from the entry points' source (`shader_src`), the shared structs
-    /// from `aokit_shaders::contract`. Fails where a module's push constants or record have no
-    /// struct, or a struct's size differs from the module's block.
-    pub fn complete(mut self, shader_src: &std::path::Path) -> Result<Manifest, String> {
+    /// push-constant structs from the entry points' declarations (`aokit_shaders::kernel`), the
+    /// shared structs from `aokit_shaders::contract`. Fails where a module's binding is not
+    /// declared or its writability differs from the declaration, where its push constants or
+    /// record have no struct, or a struct's size differs from the module's block.
+    pub fn complete(mut self) -> Result<Manifest, String> {
         self.schema = "aokit-manifest/2".into();
         self.structs = aokit_shaders::contract::shared_structs()
             .into_iter()
@@ -613,13 +461,10 @@ impl Manifest {
             })
             .collect();
         self.techniques = techniques()?;
-        let signatures = source::entry_points(shader_src)?;
         for m in &mut self.modules {
-            let sig = signatures
-                .iter()
-                .find(|s| s.entry == m.entry_point)
-                .ok_or_else(|| format!("{}: no entry point of that name in the shader sources", m.entry_point))?;
-            m.push_constants = sig.push_constants.clone();
+            let kernel = aokit_shaders::kernel::Kernel::find(&m.entry_point)
+                .ok_or_else(|| format!("{}: no #[kernel] entry point of that name", m.entry_point))?;
+            m.push_constants = kernel.push_constants.map(|(name, _)| name.to_string());
             if let Some(name) = &m.push_constants {
                 let s = self.structs.iter().find(|s| &s.name == name).ok_or_else(|| {
                     format!(
@@ -635,17 +480,27 @@ impl Manifest {
                 }
             }
             for b in &mut m.bindings {
-                let (_, _, name, ty) = sig
-                    .bindings
-                    .iter()
-                    .find(|(set, binding, ..)| (*set, *binding) == (b.set, b.binding))
-                    .ok_or_else(|| format!("{}: binding {} not found in the source", m.entry_point, b.binding))?;
-                if b.name.is_empty() {
-                    b.name = name.clone();
+                let decl = kernel.binding(b.binding).filter(|_| b.set == 0).ok_or_else(|| {
+                    format!("{}: binding {} is not declared by the entry point", m.entry_point, b.binding)
+                })?;
+                // The declaration (the Rust signature) and the compiled module agree on what a
+                // storage buffer is and whether the kernel may write it.
+                if b.kind == "storage_buffer" && decl.access.writes() != b.writable {
+                    return Err(format!(
+                        "{}: binding {} ({}) is declared {:?}, the module's is {}",
+                        m.entry_point,
+                        b.binding,
+                        decl.name,
+                        decl.access,
+                        if b.writable { "writable" } else { "read-only" }
+                    ));
                 }
-                b.rust_type = ty.clone();
+                if b.name.is_empty() {
+                    b.name = decl.name.into();
+                }
+                b.rust_type = decl.rust_type.into();
                 // A storage buffer holds plain elements or records of a shared struct.
-                let element = ty.trim_start_matches('[').trim_end_matches(']');
+                let element = decl.rust_type.trim_start_matches('[').trim_end_matches(']');
                 let plain = PLAIN_TYPES.iter().any(|p| p.name == element);
                 if b.kind == "storage_buffer" && !plain && !self.structs.iter().any(|s| s.name == element) {
                     return Err(format!(
@@ -864,9 +719,9 @@ fn techniques() -> Result<Vec<TechniqueManifest>, String> {
                 let (kind, stages, ray_query) = match p.kind {
                     PassKind::Compute => ("compute", vec![], None),
                     PassKind::RayTracing { miss, any_hit, query } => {
-                        ("ray_tracing", vec![miss.into(), any_hit.into()], Some(query.into()))
+                        ("ray_tracing", vec![miss.entry.into(), any_hit.entry.into()], Some(query.entry.into()))
                     }
-                    PassKind::Raster { vertex } => ("raster", vec![vertex.into()], None),
+                    PassKind::Raster { vertex } => ("raster", vec![vertex.entry.into()], None),
                 };
                 let access = |a: Access| match a {
                     Access::Read => "read",
@@ -875,7 +730,7 @@ fn techniques() -> Result<Vec<TechniqueManifest>, String> {
                 };
                 PassManifest {
                     label: p.label.into(),
-                    entry: p.entry.into(),
+                    entry: p.entry().into(),
                     kind: kind.into(),
                     stages,
                     ray_query,
@@ -904,16 +759,16 @@ fn techniques() -> Result<Vec<TechniqueManifest>, String> {
 #[cfg(feature = "reflect")]
 pub mod constants {
     use super::{ConstantManifest, ModuleManifest, StructManifest};
-    use aokit_shaders::graph::{Graph, Init, PassKind};
+    use aokit_shaders::graph::{Graph, Init, Pass, PassKind};
     use aokit_shaders::technique::{Kind, Registered};
 
     /// The modules a pass runs: its entry, the ray-tracing pipeline's miss and any-hit and its
     /// ray-query variant, the raster pass's vertex module.
-    pub fn pass_modules(kind: PassKind, entry: &'static str) -> Vec<&'static str> {
-        match kind {
-            PassKind::Compute => vec![entry],
-            PassKind::RayTracing { miss, any_hit, query } => vec![entry, miss, any_hit, query],
-            PassKind::Raster { vertex } => vec![vertex, entry],
+    pub fn pass_modules(pass: &Pass) -> Vec<&'static str> {
+        match pass.kind {
+            PassKind::Compute => vec![pass.entry()],
+            PassKind::RayTracing { miss, any_hit, query } => vec![pass.entry(), miss.entry, any_hit.entry, query.entry],
+            PassKind::Raster { vertex } => vec![vertex.entry, pass.entry()],
         }
     }
 
@@ -934,7 +789,7 @@ pub mod constants {
     ) -> Result<(), String> {
         let mut roots = Vec::new();
         for pass in &graph.passes {
-            for name in pass_modules(pass.kind, pass.entry) {
+            for name in pass_modules(pass) {
                 let m = modules
                     .iter()
                     .find(|m| m.entry_point == name)

@@ -85,28 +85,14 @@ impl<T: Layout, const N: usize> Layout for [T; N] {
 }
 
 /// Every struct an engine passes to the kernels (push constants, records in storage buffers),
-/// with the structs they contain before them. A test checks that every push-constant block and
-/// record an entry point declares is here.
+/// with the structs they contain before them: the push-constant blocks and buffer elements that
+/// the entry points declare ([`crate::kernel::KERNELS`], in entry-name order), so the list is
+/// derived, never typed by hand.
 pub fn shared_structs() -> Vec<StructLayout> {
-    let roots = [
-        crate::common::camera::ViewParams::layout,
-        crate::common::camera::Camera::layout,
-        crate::common::alpha::AlphaMaskHeader::layout,
-        crate::vao::VaoParams::layout,
-        crate::blur::BlurParams::layout,
-        crate::svao::SvaoParams::layout,
-        crate::svao::SvaoFrame::layout,
-        crate::gtao::GtaoParams::layout,
-        crate::vbao::VbaoParams::layout,
-        crate::raymarch::RaymarchParams::layout,
-        crate::hybrid::HybridParams::layout,
-        crate::hybrid::HybridFrame::layout,
-        crate::groundtruth::GroundTruthParams::layout,
-        crate::groundtruth::GroundTruthFrame::layout,
-        crate::gbuffer::RasterParams::layout,
-        crate::adapters::ImportParams::layout,
-        crate::temporal::TemporalFrame::layout,
-    ];
+    let roots = crate::kernel::Kernel::all().into_iter().flat_map(|k| {
+        let push = k.push_constants.map(|(_, layout)| layout);
+        push.into_iter().chain(k.bindings.iter().map(|b| b.element))
+    });
     let mut out: Vec<StructLayout> = Vec::new();
     fn add(layout: StructLayout, out: &mut Vec<StructLayout>) {
         if out.iter().any(|s| s.name == layout.name) {
@@ -119,8 +105,8 @@ pub fn shared_structs() -> Vec<StructLayout> {
         }
         out.push(layout);
     }
-    for root in roots {
-        add(root().expect("a shared struct"), &mut out);
+    for layout in roots.filter_map(|root| root()) {
+        add(layout, &mut out);
     }
     out
 }

@@ -2,7 +2,8 @@
 //!
 //! A [`Graph`] lists the technique's resources (storage buffers of 32-bit elements, sized from
 //! the target) and its passes in order (kernel entry point, which resource each binding slot is
-//! and how it is accessed, the number of invocations, the push constants). The CPU simulator
+//! and how it is accessed — both as the kernel's signature declares them, [`crate::kernel`] —
+//! the number of invocations, the push constants). The CPU simulator
 //! (`aokit_cpu::graph`) calls the kernels' functions for each pass; the Vulkan executor
 //! (`aokit_vulkan::AoContext`) records the same passes with barriers derived from the accesses.
 //! Neither knows a technique by name, so the order of passes exists exactly once: in the
@@ -14,6 +15,7 @@
 
 use crate::common::camera::{Camera, ViewParams};
 use crate::glam::UVec2;
+use crate::kernel::{BindingDecl, EntryBindings, Kernel};
 
 /// Input resources every technique may bind; the executor provides them.
 pub mod inputs {
@@ -212,19 +214,19 @@ pub struct Binding {
 }
 
 /// The kind of pipeline a pass runs.
-#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+#[derive(Copy, Clone, Debug, PartialEq)]
 pub enum PassKind {
-    /// A compute shader: `entry` is the compute entry point.
+    /// A compute shader: the pass's kernel is the compute entry point.
     Compute,
-    /// A ray-tracing pipeline: `entry` is the ray-generation shader, with this miss and any-hit
-    /// shader (every candidate triangle runs the any-hit; no closest-hit). `query` is the same
-    /// pass as a compute kernel with `VK_KHR_ray_query` (the bindings of the three shaders
-    /// together, workgroups over the launch size), which [`Graph::with_rt_mode`] swaps in.
-    RayTracing { miss: &'static str, any_hit: &'static str, query: &'static str },
+    /// A ray-tracing pipeline: the pass's kernel is the ray-generation shader, with this miss and
+    /// any-hit shader (every candidate triangle runs the any-hit; no closest-hit). `query` is the
+    /// same pass as a compute kernel with `VK_KHR_ray_query`, whose bindings are those of the
+    /// three shaders together; [`Graph::with_rt_mode`] swaps it in.
+    RayTracing { miss: &'static Kernel, any_hit: &'static Kernel, query: &'static Kernel },
     /// A raster pass without attachments: `vertex` draws the scene's triangles
-    /// ([`inputs::SCENE_VERTICES`]) over a viewport of `invocations` pixels, `entry` is the
-    /// fragment shader; the push constants go to the vertex stage.
-    Raster { vertex: &'static str },
+    /// ([`inputs::SCENE_VERTICES`]) over a viewport of `invocations` pixels, the pass's kernel is
+    /// the fragment shader; the push constants go to the vertex stage.
+    Raster { vertex: &'static Kernel },
 }
 
 /// How ray-traced passes run on Vulkan.
@@ -261,9 +263,12 @@ pub struct Pass {
     /// Label for timing; consecutive passes with one label are timed as one (e.g. the two blur
     /// directions are `blur`).
     pub label: &'static str,
-    /// Kernel entry point (SPIR-V module name, and the CPU simulator's kernel).
-    pub entry: &'static str,
+    /// The entry point (its SPIR-V module, and the CPU simulator's kernel), as its signature
+    /// declares it.
+    pub kernel: &'static Kernel,
     pub kind: PassKind,
+    /// Each slot's resource, with the slot and access the kernel declares (see
+    /// [`crate::kernel::EntryBindings`]).
     pub bindings: Vec<Binding>,
     /// Invocations in x and y ([`Pass::invocations`] for a view; compute: rounded up to whole
     /// workgroups; ray tracing: the launch size; raster: the viewport).
@@ -274,21 +279,68 @@ pub struct Pass {
 }
 
 impl Pass {
-    /// A compute pass.
-    pub fn compute(
+    /// A compute pass of the kernel whose `Bindings` these are.
+    pub fn compute(label: &'static str, bindings: impl EntryBindings, dispatch: Extent, push_constants: &[u8]) -> Pass {
+        Pass {
+            label,
+            kernel: bindings.kernel(),
+            kind: PassKind::Compute,
+            bindings: bindings.slots(),
+            dispatch,
+            push_constants: push_constants.to_vec(),
+        }
+    }
+
+    /// A ray-tracing pass of the shaders `[ray generation, miss, any-hit]`, bound as the
+    /// ray-query variant's `Bindings` say (the three shaders' bindings together, which
+    /// [`Graph::validate`] checks).
+    pub fn ray_traced(
         label: &'static str,
-        entry: &'static str,
-        bindings: &[(&'static str, Access)],
+        shaders: [&'static Kernel; 3],
+        query: impl EntryBindings,
+        dispatch: Extent,
+    ) -> Pass {
+        let [rgen, miss, any_hit] = shaders;
+        Pass {
+            label,
+            kernel: rgen,
+            kind: PassKind::RayTracing { miss, any_hit, query: query.kernel() },
+            bindings: query.slots(),
+            dispatch,
+            push_constants: Vec::new(),
+        }
+    }
+
+    /// A raster pass: `vertex` draws the scene, the fragment kernel's `Bindings` say what it
+    /// reads and writes; `push_constants` go to the vertex stage.
+    pub fn raster(
+        label: &'static str,
+        vertex: &'static Kernel,
+        fragment: impl EntryBindings,
         dispatch: Extent,
         push_constants: &[u8],
     ) -> Pass {
         Pass {
             label,
-            entry,
-            kind: PassKind::Compute,
-            bindings: slots(bindings),
+            kernel: fragment.kernel(),
+            kind: PassKind::Raster { vertex },
+            bindings: fragment.slots(),
             dispatch,
             push_constants: push_constants.to_vec(),
+        }
+    }
+
+    /// The entry point's name.
+    pub fn entry(&self) -> &'static str {
+        self.kernel.entry
+    }
+
+    /// The kernels whose declarations the bindings follow: the kernel itself, or the three
+    /// shaders of a ray-tracing pass.
+    pub fn declared_by(&self) -> Vec<&'static Kernel> {
+        match self.kind {
+            PassKind::RayTracing { miss, any_hit, .. } => vec![self.kernel, miss, any_hit],
+            _ => vec![self.kernel],
         }
     }
 
@@ -301,11 +353,51 @@ impl Pass {
     pub fn resource(&self, slot: u32) -> Option<&'static str> {
         self.bindings.iter().find(|b| b.slot == slot).map(|b| b.resource)
     }
-}
 
-/// Bindings numbered 0, 1, 2, … in order.
-pub fn slots(bindings: &[(&'static str, Access)]) -> Vec<Binding> {
-    bindings.iter().enumerate().map(|(i, &(resource, access))| Binding { slot: i as u32, resource, access }).collect()
+    /// Whether the bindings are exactly what the kernel declares: every declared slot bound
+    /// once with its declared access. A ray-tracing pass follows its three shaders together,
+    /// which must declare what its ray-query variant declares.
+    fn check_declared(&self) -> Result<(), String> {
+        let mut declared: Vec<&BindingDecl> = Vec::new();
+        for k in self.declared_by() {
+            for d in k.bindings {
+                match declared.iter().find(|e| e.slot == d.slot) {
+                    Some(e) if e.access != d.access || e.kind != d.kind => {
+                        return Err(format!("{}: slot {} is declared differently by two shaders", k.entry, d.slot));
+                    }
+                    Some(_) => {}
+                    None => declared.push(d),
+                }
+            }
+        }
+        if let PassKind::RayTracing { query, .. } = self.kind {
+            let same = query.bindings.len() == declared.len()
+                && query.bindings.iter().all(|q| declared.iter().any(|d| d.slot == q.slot && d.access == q.access));
+            if !same {
+                return Err(format!("{}: its bindings differ from those of the ray-tracing shaders", query.entry));
+            }
+        }
+        for d in &declared {
+            match self.bindings.iter().find(|b| b.slot == d.slot) {
+                None => return Err(format!("pass '{}' leaves slot {} ({}) unbound", self.entry(), d.slot, d.name)),
+                Some(b) if b.access != d.access => {
+                    return Err(format!(
+                        "pass '{}' binds slot {} ({}) as {:?}; the kernel declares {:?}",
+                        self.entry(),
+                        d.slot,
+                        d.name,
+                        b.access,
+                        d.access
+                    ));
+                }
+                Some(_) => {}
+            }
+        }
+        if let Some(b) = self.bindings.iter().find(|b| !declared.iter().any(|d| d.slot == b.slot)) {
+            return Err(format!("pass '{}' binds slot {}, which the kernel does not declare", self.entry(), b.slot));
+        }
+        Ok(())
+    }
 }
 
 /// A technique's resources and passes for one frame.
@@ -366,7 +458,7 @@ impl Graph {
         if mode == RtMode::Query {
             for pass in &mut self.passes {
                 if let PassKind::RayTracing { query, .. } = pass.kind {
-                    pass.entry = query;
+                    pass.kernel = query;
                     pass.kind = PassKind::Compute;
                 }
             }
@@ -389,14 +481,9 @@ impl Graph {
         if reads {
             // The normals pass reads only the view of its parameters.
             let params = crate::gtao::GtaoParams { view: self.view, ..bytemuck::Zeroable::zeroed() };
-            let bindings = [(inputs::LINEAR_DEPTH, Access::Read), (DERIVED_NORMALS, Access::Write)];
-            let pass = Pass::compute(
-                "normals_from_depth",
-                "gtao_normals",
-                &bindings,
-                Extent::Full,
-                bytemuck::bytes_of(&params),
-            );
+            let bindings =
+                crate::gtao::gtao_normals::Bindings { depth: inputs::LINEAR_DEPTH, normals: DERIVED_NORMALS };
+            let pass = Pass::compute("normals_from_depth", bindings, Extent::Full, bytemuck::bytes_of(&params));
             self.passes.insert(0, pass);
             self.snapshots.iter_mut().for_each(|s| s.after += 1);
             // The normals pass writes every texel of the target before any pass reads one.
@@ -465,16 +552,17 @@ impl Graph {
             }
         }
         for p in &self.passes {
+            p.check_declared()?;
             for (j, b) in p.bindings.iter().enumerate() {
                 let input = inputs::ALL.contains(&b.resource);
                 if !input && self.resource(b.resource).is_none() {
-                    return Err(format!("pass '{}' binds undeclared resource '{}'", p.entry, b.resource));
+                    return Err(format!("pass '{}' binds undeclared resource '{}'", p.entry(), b.resource));
                 }
                 if input && b.access.writes() {
-                    return Err(format!("pass '{}' writes input '{}'", p.entry, b.resource));
+                    return Err(format!("pass '{}' writes input '{}'", p.entry(), b.resource));
                 }
                 if p.bindings[..j].iter().any(|c| c.slot == b.slot) {
-                    return Err(format!("pass '{}' binds slot {} twice", p.entry, b.slot));
+                    return Err(format!("pass '{}' binds slot {} twice", p.entry(), b.slot));
                 }
                 // A written resource is bound once per pass: the CPU executor hands it to the
                 // kernel once, and a second view of it would alias on the GPU.
@@ -482,7 +570,7 @@ impl Graph {
                     .iter()
                     .any(|c| c.resource == b.resource && (c.access.writes() || b.access.writes()));
                 if twice {
-                    return Err(format!("pass '{}' binds '{}' twice, writing it", p.entry, b.resource));
+                    return Err(format!("pass '{}' binds '{}' twice, writing it", p.entry(), b.resource));
                 }
             }
         }

@@ -16,6 +16,9 @@
 
 pub use spirv_std::glam;
 
+/// Declares an entry point's interface from its signature ([`kernel`](mod@kernel)).
+pub use aokit_contract_derive::kernel;
+
 pub mod adapters;
 pub mod blur;
 pub mod common;
@@ -27,6 +30,8 @@ pub mod graph;
 pub mod groundtruth;
 pub mod gtao;
 pub mod hybrid;
+#[cfg(not(target_arch = "spirv"))]
+pub mod kernel;
 pub mod rastersd;
 pub mod raymarch;
 pub mod raysd;

@@ -119,7 +119,7 @@ fn build_spirv() -> Result<(), String> {
         );
         manifest.modules.push(module);
     }
-    let mut manifest = manifest.complete(&shader_crate.join("src"))?;
+    let mut manifest = manifest.complete()?;
     let wgsl_dir = root.join("assets/wgsl");
     std::fs::create_dir_all(&wgsl_dir).map_err(|e| e.to_string())?;
     let mut written = Vec::new();

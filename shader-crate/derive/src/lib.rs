@@ -1,12 +1,29 @@
-//! `#[derive(Layout)]` for the `#[repr(C)]` structs the kernels share with the host (push
-//! constants, buffer records): implements `crate::contract::Layout` with the struct's name, doc
-//! comment, size and alignment, and per field its name, Rust type, byte offset (`offset_of!`, so
-//! the compiler's layout, not a re-computation) and doc comment. Used only inside
-//! `aokit-shaders` (the generated code names `crate::contract`), and only on the host.
+//! The two macros that make `aokit-shaders`' interfaces data, so nothing about them is written
+//! twice (the generated code names `crate::contract` and `crate::kernel`: it is used only inside
+//! `aokit-shaders`):
+//!
+//! - `#[derive(Layout)]` for the `#[repr(C)]` structs the kernels share with the host (push
+//!   constants, buffer records): implements `crate::contract::Layout` with the struct's name,
+//!   doc comment, size and alignment, and per field its name, Rust type, byte offset
+//!   (`offset_of!`, so the compiler's layout, not a re-computation) and doc comment. Host only.
+//! - `#[kernel]` on an entry point: its bindings, push constants and stage as a
+//!   `crate::kernel::Kernel`, typed slot constants, a `Bindings` struct for the pass graphs and,
+//!   where it can, a CPU driver (see `aokit_shaders::kernel`). The function itself is left as
+//!   written, so the SPIR-V does not change.
+
+mod kernel;
 
 use proc_macro::TokenStream;
 use quote::quote;
 use syn::{Attribute, Data, DeriveInput, Expr, ExprLit, Fields, Lit, Meta, parse_macro_input};
+
+/// Declares an entry point's interface from its signature; put it above `#[spirv(…)]`. See the
+/// `aokit_shaders::kernel` module. A `&mut [T]` binding the kernel also reads is marked
+/// `#[read_write]` (the marker is removed from the function).
+#[proc_macro_attribute]
+pub fn kernel(attr: TokenStream, item: TokenStream) -> TokenStream {
+    kernel::expand(attr.into(), item.into()).unwrap_or_else(|e| e.to_compile_error()).into()
+}
 
 /// The `///` lines of `attrs`, trimmed and joined with spaces.
 fn doc(attrs: &[Attribute]) -> String {
@@ -24,7 +41,7 @@ fn doc(attrs: &[Attribute]) -> String {
 }
 
 /// `a::b::C` → `C` wherever a path appears in a type's text (`[crate::glam::Vec2;4]` → `[Vec2;4]`).
-fn strip_paths(text: &str) -> String {
+pub(crate) fn strip_paths(text: &str) -> String {
     let mut out = String::new();
     let mut word = String::new();
     let mut chars = text.chars().peekable();

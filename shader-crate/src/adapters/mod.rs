@@ -164,6 +164,7 @@ fn inside(p: UVec2, size: UVec2) -> bool {
 /// Compute entry point: one invocation per FULL-target pixel; converts the engine's depth image
 /// (binding 0, sampled, any convention of [`depth_convention`]) into the linear depth buffer
 /// (binding 1).
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "import_depth"))]
 pub fn import_depth(
     #[spirv(global_invocation_id)] id: UVec3,
@@ -181,6 +182,7 @@ pub fn import_depth(
 /// Compute entry point: one invocation per FULL-target pixel; encodes the engine's view-space
 /// normal image (binding 0, sampled, `n·0.5 + 0.5` in RGB) into the `u32` normal buffer
 /// (binding 1).
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "import_normals"))]
 pub fn import_normals(
     #[spirv(global_invocation_id)] id: UVec3,
@@ -200,6 +202,7 @@ pub fn import_normals(
 macro_rules! export_entry_point {
     ($name:ident, $entry:tt, $format:ident) => {
         #[doc = concat!("Compute entry point: export the AO buffer into an `", stringify!($format), "` storage image.")]
+        #[crate::kernel]
         #[spirv(compute(threads(8, 8), entry_point_name = $entry))]
         pub fn $name(
             #[spirv(global_invocation_id)] id: UVec3,

@@ -2,7 +2,7 @@
 
 use super::BlurParams;
 use crate::glam::uvec2;
-use crate::graph::{Access, Extent, FrameDesc, Pass, Resource, inputs, target_f32};
+use crate::graph::{Extent, FrameDesc, Pass, Resource, inputs, target_f32};
 
 /// Depth-aware blur sharpness (spec svao-raysd §12).
 pub const SHARPNESS: f32 = 16.0;
@@ -22,8 +22,8 @@ pub fn blur_passes(frame: &FrameDesc, input: &'static str, output: &'static str)
         target_f32(output, 1.0, "AO after the cross-bilateral blur (spec svao-raysd §12)"),
     ];
     let pass = |from, to, direction| {
-        let bindings = [(from, Access::Read), (inputs::LINEAR_DEPTH, Access::Read), (to, Access::Write)];
-        Pass::compute("blur", "blur_main", &bindings, Extent::Inner, bytemuck::bytes_of(&blur_params(frame, direction)))
+        let bindings = super::blur_main::Bindings { ao_in: from, depth: inputs::LINEAR_DEPTH, ao_out: to };
+        Pass::compute("blur", bindings, Extent::Inner, bytemuck::bytes_of(&blur_params(frame, direction)))
     };
     (resources, vec![pass(input, SCRATCH, uvec2(1, 0)), pass(SCRATCH, output, uvec2(0, 1))])
 }

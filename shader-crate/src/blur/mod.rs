@@ -84,6 +84,7 @@ pub fn blur_lanes<L: Lanes>(params: &BlurParams, ao: &[f32], depth: &[f32], p: U
     L::select(is_valid_depth(z0, view.far), sum / weights, a0)
 }
 
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "blur_main"))]
 pub fn blur_main(
     #[spirv(global_invocation_id)] id: UVec3,

@@ -39,6 +39,7 @@ pub fn view_to_clip(view: &ViewParams, x: Vec3) -> Vec4 {
 
 /// Vertex stage: world position (xyz), world face normal (xyz), texture coordinate and material
 /// of a de-indexed triangle's corner.
+#[crate::kernel]
 #[spirv(vertex(entry_point_name = "gbuffer_vs"))]
 pub fn gbuffer_vs(
     position: Vec4,
@@ -61,6 +62,7 @@ pub fn gbuffer_vs(
 }
 
 /// Fragment stage: alpha test, then linear depth (R32_SFLOAT) and encoded view normal (R32_UINT).
+#[crate::kernel]
 #[spirv(fragment(entry_point_name = "gbuffer_fs"))]
 pub fn gbuffer_fs(
     view_position: Vec3,
@@ -89,6 +91,7 @@ pub fn beyond_first_layer(d: f32, first: f32, separation: f32) -> bool {
 
 /// Fragment shader of the depth-peeling pass (spec svao-raysd §11): the G-buffer fragment shader plus a
 /// discard of everything up to the first layer's depth + separation at this pixel.
+#[crate::kernel]
 #[spirv(fragment(entry_point_name = "gbuffer_peel_fs"))]
 pub fn gbuffer_peel_fs(
     #[spirv(frag_coord)] frag_coord: Vec4,

@@ -38,6 +38,7 @@ impl OcclusionQuery for TracedOcclusion<'_> {
     }
 }
 
+#[crate::kernel]
 #[spirv(ray_generation(entry_point_name = "groundtruth_rgen"))]
 pub fn groundtruth_rgen(
     #[spirv(launch_id)] id: UVec3,
@@ -46,7 +47,9 @@ pub fn groundtruth_rgen(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] depth: &[f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] normals: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ao: &mut [f32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mut ray_count: &mut [u32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 9)]
+    mut ray_count: &mut [u32],
     #[spirv(ray_payload)] payload: &mut u32,
 ) {
     let frame = &frame[0];
@@ -62,6 +65,7 @@ pub fn groundtruth_rgen(
     count_rays(&mut ray_count, out.rays);
 }
 
+#[crate::kernel]
 #[spirv(miss(entry_point_name = "groundtruth_miss"))]
 pub fn groundtruth_miss(#[spirv(incoming_ray_payload)] payload: &mut u32) {
     *payload = 0;
@@ -70,6 +74,7 @@ pub fn groundtruth_miss(#[spirv(incoming_ray_payload)] payload: &mut u32) {
 /// Alpha test of masked triangles (only non-opaque geometry runs it). Triangle `first + prim`'s
 /// corner texture coordinates are `uvs[3·(first + prim) ..]`, `first` = the instance's custom
 /// index (see `crate::common::alpha`).
+#[crate::kernel]
 #[spirv(any_hit(entry_point_name = "groundtruth_ahit"))]
 pub fn groundtruth_ahit(
     #[spirv(incoming_ray_payload)] _payload: &mut u32,

@@ -2,10 +2,8 @@
 //! ray-generation pass over the inner image.
 
 use super::{GroundTruthFrame, GroundTruthParams};
-use crate::graph::{
-    Access, Binding, Extent, FrameDesc, Graph, Pass, PassKind, RAY_COUNT, inputs, ray_counter, record, slots,
-    target_f32,
-};
+use crate::graph::{Extent, FrameDesc, Graph, Pass, RAY_COUNT, inputs, ray_counter, record, target_f32};
+use crate::kernel::Kernel;
 use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
 /// Ground-truth settings \[defaults\].
@@ -23,13 +21,9 @@ impl Default for GroundTruthSettings {
     }
 }
 
-/// The alpha-test buffers every any-hit reads (`crate::common::alpha`), from binding `first` on.
-pub fn alpha_bindings(first: u32) -> impl Iterator<Item = Binding> {
-    [inputs::SCENE_UVS, inputs::SCENE_MATERIALS, inputs::SCENE_MASK_HEADERS, inputs::SCENE_MASK_TEXELS]
-        .into_iter()
-        .enumerate()
-        .map(move |(i, resource)| Binding { slot: first + i as u32, resource, access: Access::Read })
-}
+/// The ground truth's ray-tracing shaders: ray generation, miss, any-hit.
+pub const SHADERS: [&Kernel; 3] =
+    [&super::rt::groundtruth_rgen::ENTRY, &super::rt::groundtruth_miss::ENTRY, &super::rt::groundtruth_ahit::ENTRY];
 
 impl Settings for GroundTruthSettings {
     const ROWS: &'static [Setting<Self>] = &[
@@ -100,27 +94,19 @@ impl GroundTruthSettings {
             target_f32("ao", 1.0, "ray-traced AO (spec gtao-raymarch-hybrid §5), 1 = unoccluded"),
             ray_counter(),
         ];
-        let mut bindings = slots(&[
-            ("groundtruth_frame", Access::Read),
-            (inputs::SCENE_TLAS, Access::Read),
-            (inputs::LINEAR_DEPTH, Access::Read),
-            (inputs::VIEW_NORMALS, Access::Read),
-            ("ao", Access::Write),
-        ]);
-        bindings.extend(alpha_bindings(5));
-        bindings.push(Binding { slot: 9, resource: RAY_COUNT, access: Access::ReadWrite });
-        let passes = vec![Pass {
-            label: "groundtruth",
-            entry: "groundtruth_rgen",
-            kind: PassKind::RayTracing {
-                miss: "groundtruth_miss",
-                any_hit: "groundtruth_ahit",
-                query: "groundtruth_rq",
-            },
-            bindings,
-            dispatch: Extent::Inner,
-            push_constants: Vec::new(),
-        }];
+        let bindings = super::rq::groundtruth_rq::Bindings {
+            frame: "groundtruth_frame",
+            tlas: inputs::SCENE_TLAS,
+            depth: inputs::LINEAR_DEPTH,
+            normals: inputs::VIEW_NORMALS,
+            ao: "ao",
+            uvs: inputs::SCENE_UVS,
+            materials: inputs::SCENE_MATERIALS,
+            mask_headers: inputs::SCENE_MASK_HEADERS,
+            mask_texels: inputs::SCENE_MASK_TEXELS,
+            ray_count: RAY_COUNT,
+        };
+        let passes = vec![Pass::ray_traced("groundtruth", SHADERS, bindings, Extent::Inner)];
         Graph { resources, passes, output: "ao", raw_output: "ao", snapshots: Vec::new(), view: frame.camera.view }
     }
 }

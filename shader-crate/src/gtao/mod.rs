@@ -94,12 +94,15 @@ use spirv_std::spirv;
 
 /// PrefilterDepths: one invocation per texel of MIP `params.pass` (dispatch per level, MIP 0
 /// first).
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "gtao_prefilter"))]
 pub fn gtao_prefilter(
     #[spirv(global_invocation_id)] id: UVec3,
     #[spirv(push_constant)] params: &GtaoParams,
     #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] depth: &[f32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] mips: &mut [f32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 1)]
+    mips: &mut [f32],
 ) {
     let full = params.view.size();
     let size = mip_size(full, params.pass);
@@ -112,6 +115,7 @@ pub fn gtao_prefilter(
 }
 
 /// Pass 0: normals from depth, one invocation per pixel of the full target.
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "gtao_normals"))]
 pub fn gtao_normals(
     #[spirv(global_invocation_id)] id: UVec3,
@@ -128,6 +132,7 @@ pub fn gtao_normals(
 }
 
 /// MainPass, one invocation per pixel of the full target.
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "gtao_main"))]
 pub fn gtao_main(
     #[spirv(global_invocation_id)] id: UVec3,
@@ -149,6 +154,7 @@ pub fn gtao_main(
 }
 
 /// Denoise pass `params.pass`: terms in → terms out; the last pass also writes the visibility.
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "gtao_denoise"))]
 pub fn gtao_denoise(
     #[spirv(global_invocation_id)] id: UVec3,

@@ -4,8 +4,7 @@
 
 use super::{GtaoParams, MIP_LEVELS};
 use crate::graph::{
-    Access, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, Snapshot, inputs, target_f32,
-    target_u32,
+    Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, Snapshot, inputs, target_f32, target_u32,
 };
 use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
@@ -341,24 +340,42 @@ impl GtaoSettings {
     /// Prefilter (5 MIP levels) → [normals from depth] → main pass → denoise.
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let params = self.params(frame);
-        xegtao_graph(frame, &params, self.normals_from_depth, "gtao_main", bytemuck::bytes_of(&params))
+        let main = |r: MainPassResources| {
+            let bindings =
+                super::gtao_main::Bindings { mips: r.mips, normals: r.normals, terms: r.terms, edges: r.edges };
+            Pass::compute("gtao_main", bindings, Extent::Full, bytemuck::bytes_of(&params))
+        };
+        xegtao_graph(frame, &params, self.normals_from_depth, main)
     }
 }
 
+/// The resources of XeGTAO's main pass: it reads the MIP chain and the normals, writes the AO
+/// terms and the edges.
+pub struct MainPassResources {
+    pub mips: &'static str,
+    pub normals: &'static str,
+    pub terms: &'static str,
+    pub edges: &'static str,
+}
+
+/// The packed working-depth MIP chain, the main pass's AO terms and its edges.
+const MIPS: &str = "gtao_mips";
+const TERMS: &str = "gtao_terms";
+const EDGES: &str = "gtao_edges";
+
 /// XeGTAO's passes around a main pass (spec gtao-raymarch-hybrid §2.3–§2.7): PrefilterDepths
-/// level by level → [normals from depth] → `main` (its entry point and push constants; it
-/// reads the MIP chain and the normals, writes the AO terms and the edges) → the denoiser.
-/// XeGTAO's own main pass and VBAO's bitmask main pass (spec vbao §1) plug in here.
+/// level by level → [normals from depth] → `main` (the main pass over [`MainPassResources`]) →
+/// the denoiser. XeGTAO's own main pass and VBAO's bitmask main pass (spec vbao §1) plug in
+/// here.
 pub fn xegtao_graph(
     frame: &FrameDesc,
     params: &GtaoParams,
     normals_from_depth: bool,
-    main: &'static str,
-    main_push: &[u8],
+    main: impl FnOnce(MainPassResources) -> Pass,
 ) -> Graph {
     let params = *params;
     let mips = Resource {
-        name: "gtao_mips",
+        name: MIPS,
         elem: Elem::F32,
         size: Size::MipChain { levels: MIP_LEVELS },
         init: Init::Undefined,
@@ -367,38 +384,26 @@ pub fn xegtao_graph(
     };
     let mut resources = vec![
         mips,
-        target_u32("gtao_terms", 0, "MainPass AO terms, 0–255 (spec gtao-raymarch-hybrid §2.6)"),
-        target_u32("gtao_edges", 0, "packed depth edges, the denoiser's input (gtao-raymarch-hybrid §2.6.1, §2.7)"),
+        target_u32(TERMS, 0, "MainPass AO terms, 0–255 (spec gtao-raymarch-hybrid §2.6)"),
+        target_u32(EDGES, 0, "packed depth edges, the denoiser's input (gtao-raymarch-hybrid §2.6.1, §2.7)"),
     ];
     let mut passes = Vec::new();
     for level in 0..MIP_LEVELS {
         let p = GtaoParams { pass: level, ..params };
-        let bindings = [(inputs::LINEAR_DEPTH, Access::Read), ("gtao_mips", Access::ReadWrite)];
-        passes.push(Pass::compute(
-            "gtao_prefilter",
-            "gtao_prefilter",
-            &bindings,
-            Extent::Mip(level),
-            bytemuck::bytes_of(&p),
-        ));
+        let bindings = super::gtao_prefilter::Bindings { depth: inputs::LINEAR_DEPTH, mips: MIPS };
+        passes.push(Pass::compute("gtao_prefilter", bindings, Extent::Mip(level), bytemuck::bytes_of(&p)));
     }
     let bytes = bytemuck::bytes_of(&params);
     let normals = if normals_from_depth {
         resources.push(target_u32("gtao_normals", 0, "view normals derived from depth (gtao-raymarch-hybrid §2.4)"));
-        let bindings = [(inputs::LINEAR_DEPTH, Access::Read), ("gtao_normals", Access::Write)];
-        passes.push(Pass::compute("gtao_normals", "gtao_normals", &bindings, Extent::Full, bytes));
+        let bindings = super::gtao_normals::Bindings { depth: inputs::LINEAR_DEPTH, normals: "gtao_normals" };
+        passes.push(Pass::compute("gtao_normals", bindings, Extent::Full, bytes));
         "gtao_normals"
     } else {
         inputs::VIEW_NORMALS
     };
-    let main_bindings = [
-        ("gtao_mips", Access::Read),
-        (normals, Access::Read),
-        ("gtao_terms", Access::Write),
-        ("gtao_edges", Access::Write),
-    ];
-    passes.push(Pass::compute(main, main, &main_bindings, Extent::Full, main_push));
-    let (r, p) = denoise_passes(&params, "gtao_terms", "gtao_edges", "ao_final", "gtao_denoise");
+    passes.push(main(MainPassResources { mips: MIPS, normals, terms: TERMS, edges: EDGES }));
+    let (r, p) = denoise_passes(&params, TERMS, EDGES, "ao_final", "gtao_denoise");
     resources.extend(r);
     passes.extend(p);
     let mut snapshots = Vec::new();
@@ -437,8 +442,8 @@ pub fn denoise_passes(
     let (mut from, mut to) = (terms, PING);
     for pass in 0..params.denoise_passes.max(1) {
         let p = GtaoParams { pass, ..*params };
-        let bindings = [(from, Access::Read), (edges, Access::Read), (to, Access::Write), (output, Access::Write)];
-        passes.push(Pass::compute(label, "gtao_denoise", &bindings, Extent::Full, bytemuck::bytes_of(&p)));
+        let bindings = super::gtao_denoise::Bindings { terms_in: from, edges, terms_out: to, ao: output };
+        passes.push(Pass::compute(label, bindings, Extent::Full, bytemuck::bytes_of(&p)));
         (from, to) = (to, if to == PING { PONG } else { PING });
     }
     (resources, passes)

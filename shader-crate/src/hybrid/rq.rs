@@ -1,16 +1,21 @@
 //! Ray-query variant of the hybrid AO for `VK_KHR_ray_query`: per pixel of the full target, the
-//! shared [`hybrid_pixel`] with its world rays through the ground truth's [`QueriedOcclusion`].
+//! shared [`hybrid_pixel`] with its world rays through the ground truth's `QueriedOcclusion`.
 //! Bindings are those of `hybrid_rgen` and the ground truth's any-hit together.
+
+// On the host only the entry points' declarations exist (`#[kernel(spirv_only)]`).
+#![cfg_attr(not(target_arch = "spirv"), allow(unused_imports))]
 
 use super::{HybridFrame, hybrid_pixel};
 use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
 use crate::common::atomics::count_rays;
 use crate::common::gbuffer_read::GBufferSlices;
 use crate::glam::{UVec3, Vec2};
+#[cfg(target_arch = "spirv")]
 use crate::groundtruth::rq::QueriedOcclusion;
 use spirv_std::ray_tracing::AccelerationStructure;
 use spirv_std::spirv;
 
+#[crate::kernel(spirv_only)]
 #[spirv(compute(threads(8, 8), entry_point_name = "hybrid_rq"))]
 pub fn hybrid_rq(
     #[spirv(global_invocation_id)] id: UVec3,
@@ -25,7 +30,9 @@ pub fn hybrid_rq(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_texels: &[f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] terms: &mut [u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] edges: &mut [u32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)] mut ray_count: &mut [u32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)]
+    mut ray_count: &mut [u32],
 ) {
     let frame = &frame[0];
     let view = &frame.camera.view;

@@ -10,6 +10,7 @@ use crate::groundtruth::rt::TracedOcclusion;
 use spirv_std::ray_tracing::AccelerationStructure;
 use spirv_std::spirv;
 
+#[crate::kernel]
 #[spirv(ray_generation(entry_point_name = "hybrid_rgen"))]
 pub fn hybrid_rgen(
     #[spirv(launch_id)] id: UVec3,
@@ -20,7 +21,9 @@ pub fn hybrid_rgen(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ao: &mut [f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] terms: &mut [u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] edges: &mut [u32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)] mut ray_count: &mut [u32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)]
+    mut ray_count: &mut [u32],
     #[spirv(ray_payload)] payload: &mut u32,
 ) {
     let frame = &frame[0];

@@ -3,10 +3,7 @@
 //! then XeGTAO's denoiser.
 
 use super::{HybridFrame, HybridParams};
-use crate::graph::{
-    Access, Binding, Extent, FrameDesc, Graph, Pass, PassKind, RAY_COUNT, inputs, ray_counter, record, slots,
-    target_f32, target_u32,
-};
+use crate::graph::{Extent, FrameDesc, Graph, Pass, RAY_COUNT, inputs, ray_counter, record, target_f32, target_u32};
 use crate::gtao::settings::with_denoiser;
 use crate::raymarch::settings::DEPTH_BIAS;
 use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
@@ -166,25 +163,24 @@ impl HybridSettings {
             target_u32("ao_edges", 0, "packed depth edges for the denoiser"),
             ray_counter(),
         ];
-        let mut bindings = slots(&[
-            ("hybrid_frame", Access::Read),
-            (inputs::SCENE_TLAS, Access::Read),
-            (inputs::LINEAR_DEPTH, Access::Read),
-            (inputs::VIEW_NORMALS, Access::Read),
-            ("ao", Access::Write),
-        ]);
-        bindings.extend(crate::groundtruth::settings::alpha_bindings(5));
-        bindings.push(Binding { slot: 9, resource: "ao_terms", access: Access::Write });
-        bindings.push(Binding { slot: 10, resource: "ao_edges", access: Access::Write });
-        bindings.push(Binding { slot: 11, resource: RAY_COUNT, access: Access::ReadWrite });
-        let passes = vec![Pass {
-            label: "hybrid_rays",
-            entry: "hybrid_rgen",
-            kind: PassKind::RayTracing { miss: "groundtruth_miss", any_hit: "groundtruth_ahit", query: "hybrid_rq" },
-            bindings,
-            dispatch: Extent::Full,
-            push_constants: Vec::new(),
-        }];
+        let bindings = super::rq::hybrid_rq::Bindings {
+            frame: "hybrid_frame",
+            tlas: inputs::SCENE_TLAS,
+            depth: inputs::LINEAR_DEPTH,
+            normals: inputs::VIEW_NORMALS,
+            ao: "ao",
+            uvs: inputs::SCENE_UVS,
+            materials: inputs::SCENE_MATERIALS,
+            mask_headers: inputs::SCENE_MASK_HEADERS,
+            mask_texels: inputs::SCENE_MASK_TEXELS,
+            terms: "ao_terms",
+            edges: "ao_edges",
+            ray_count: RAY_COUNT,
+        };
+        // The world rays are the ground truth's: its miss and any-hit shaders.
+        let [_, miss, any_hit] = crate::groundtruth::settings::SHADERS;
+        let shaders = [&super::rt::hybrid_rgen::ENTRY, miss, any_hit];
+        let passes = vec![Pass::ray_traced("hybrid_rays", shaders, bindings, Extent::Full)];
         with_denoiser(frame, resources, passes, self.denoise_passes)
     }
 }

@@ -138,6 +138,7 @@ use spirv_std::spirv;
 /// Fragment shader of the raster SD pass, drawn at SD resolution with the G-buffer's vertex
 /// shader: early-out where no SD sample was requested, alpha test, then the covered samples'
 /// atomic min of the normalized depth.
+#[crate::kernel]
 #[spirv(fragment(entry_point_name = "rastersd_fs"))]
 pub fn rastersd_fs(
     #[spirv(frag_coord)] frag_coord: Vec4,
@@ -151,7 +152,9 @@ pub fn rastersd_fs(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] depth: &[f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ray_min: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] ray_max: &[u32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] mut sd_bits: &mut [u32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 6)]
+    mut sd_bits: &mut [u32],
 ) {
     let frame = &frame[0];
     let params = &frame.params;

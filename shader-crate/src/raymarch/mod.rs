@@ -332,6 +332,7 @@ pub fn raymarch_finish(params: &RaymarchParams, kernel: &[Vec2], edges: u32, sum
 }
 
 /// Compute entry point, one invocation per pixel of the full target.
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "raymarch_main"))]
 pub fn raymarch_main(
     #[spirv(global_invocation_id)] id: UVec3,

@@ -2,7 +2,7 @@
 //! gtao-raymarch-hybrid §3): the march, then optionally XeGTAO's denoiser.
 
 use super::{Contribution, MAX_DIRECTIONS, RaymarchParams};
-use crate::graph::{Access, Extent, FrameDesc, Graph, Pass, inputs, record, target_f32, target_u32};
+use crate::graph::{Extent, FrameDesc, Graph, Pass, inputs, record, target_f32, target_u32};
 use crate::gtao::settings::with_denoiser;
 use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
@@ -125,17 +125,16 @@ impl RaymarchSettings {
             target_u32("ao_terms", 0, "the AO as the denoiser's 0–255 terms"),
             target_u32("ao_edges", 0, "packed depth edges for the denoiser"),
         ];
-        let bindings = [
-            (inputs::LINEAR_DEPTH, Access::Read),
-            (inputs::VIEW_NORMALS, Access::Read),
-            ("raymarch_kernel", Access::Read),
-            ("ao", Access::Write),
-            ("ao_terms", Access::Write),
-            ("ao_edges", Access::Write),
-        ];
+        let bindings = super::raymarch_main::Bindings {
+            depth: inputs::LINEAR_DEPTH,
+            normals: inputs::VIEW_NORMALS,
+            kernel: "raymarch_kernel",
+            ao: "ao",
+            terms: "ao_terms",
+            edges: "ao_edges",
+        };
         let params = self.params(frame);
-        let passes =
-            vec![Pass::compute("raymarch", "raymarch_main", &bindings, Extent::Full, bytemuck::bytes_of(&params))];
+        let passes = vec![Pass::compute("raymarch", bindings, Extent::Full, bytemuck::bytes_of(&params))];
         with_denoiser(frame, resources, passes, self.denoise_passes)
     }
 }

@@ -5,7 +5,9 @@
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
-#[cfg(all(target_arch = "spirv", feature = "rq"))]
+// The ray-query entry points exist in SPIR-V only (built with the `rq` feature); their
+// declarations (`#[kernel(spirv_only)]`) exist on the host too.
+#[cfg(any(feature = "rq", not(target_arch = "spirv")))]
 pub mod rq;
 #[cfg(any(feature = "rt", not(target_arch = "spirv")))]
 pub mod rt;
@@ -259,13 +261,16 @@ use crate::svao::pass2_pixel;
 use spirv_std::spirv;
 
 /// Compute entry point of AO pass 2 from the SD map (spec svao-raysd §9), in place on `ao`.
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "raysd_pass2"))]
 pub fn raysd_pass2(
     #[spirv(global_invocation_id)] id: UVec3,
     #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] frame: &[SvaoFrame],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] depth: &[f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] normals: &[u32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] ao: &mut [f32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 3)]
+    ao: &mut [f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] mask: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] sd_map: &[f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] depth2: &[f32],

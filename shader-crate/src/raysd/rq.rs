@@ -3,8 +3,12 @@
 //! ([`SdHits`]) over the candidate loop of [`query_candidates`] — no shader binding table.
 //! Bindings are those of `raysd_rgen` and `raysd_ahit` together.
 
+// On the host only the entry points' declarations exist (`#[kernel(spirv_only)]`).
+#![cfg_attr(not(target_arch = "spirv"), allow(unused_imports))]
+
 use super::{SdHits, SdPayload, sd_ray, store_layers};
 use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
+#[cfg(target_arch = "spirv")]
 use crate::common::any_hit::query_candidates;
 use crate::common::atomics::count_rays;
 use crate::common::gbuffer_read::GBufferSlices;
@@ -13,6 +17,7 @@ use crate::svao::SvaoFrame;
 use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
 use spirv_std::spirv;
 
+#[crate::kernel(spirv_only)]
 #[spirv(compute(threads(8, 8), entry_point_name = "raysd_rq"))]
 pub fn raysd_rq(
     #[spirv(global_invocation_id)] id: UVec3,
@@ -27,7 +32,9 @@ pub fn raysd_rq(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] materials: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mask_headers: &[AlphaMaskHeader],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] mask_texels: &[f32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)] mut ray_count: &mut [u32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)]
+    mut ray_count: &mut [u32],
 ) {
     let frame = &frame[0];
     let params = &frame.params;

@@ -12,6 +12,7 @@ use crate::svao::SvaoFrame;
 use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
 use spirv_std::spirv;
 
+#[crate::kernel]
 #[spirv(ray_generation(entry_point_name = "raysd_rgen"))]
 pub fn raysd_rgen(
     #[spirv(launch_id)] id: UVec3,
@@ -22,7 +23,9 @@ pub fn raysd_rgen(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ray_min: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] ray_max: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] sd_map: &mut [f32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)] mut ray_count: &mut [u32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)]
+    mut ray_count: &mut [u32],
     #[spirv(ray_payload)] payload: &mut SdPayload,
 ) {
     let frame = &frame[0];
@@ -57,11 +60,13 @@ pub fn raysd_rgen(
     store_layers(sd_map, params, q, payload);
 }
 
+#[crate::kernel]
 #[spirv(miss(entry_point_name = "raysd_miss"))]
 pub fn raysd_miss(#[spirv(incoming_ray_payload)] _payload: &mut SdPayload) {}
 
 /// The reservoir any-hit; triangle `first + prim`'s corner texture coordinates are
 /// `uvs[3·(first + prim) ..]`, `first` = the instance's custom index (see `crate::common::alpha`).
+#[crate::kernel]
 #[spirv(any_hit(entry_point_name = "raysd_ahit"))]
 pub fn raysd_ahit(
     #[spirv(incoming_ray_payload)] payload: &mut SdPayload,

@@ -6,7 +6,9 @@
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
-#[cfg(all(target_arch = "spirv", feature = "rq"))]
+// The ray-query entry points exist in SPIR-V only (built with the `rq` feature); their
+// declarations (`#[kernel(spirv_only)]`) exist on the host too.
+#[cfg(any(feature = "rq", not(target_arch = "spirv")))]
 pub mod rq;
 #[cfg(any(feature = "rt", not(target_arch = "spirv")))]
 pub mod rt;

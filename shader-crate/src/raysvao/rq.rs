@@ -3,8 +3,12 @@
 //! ([`SampleHits`]) over the candidate loop of [`query_candidates`]. Bindings are those of
 //! `raysvao_rgen` and `raysvao_ahit` together.
 
+// On the host only the entry points' declarations exist (`#[kernel(spirv_only)]`).
+#![cfg_attr(not(target_arch = "spirv"), allow(unused_imports))]
+
 use super::{SampleHits, SampleRay, SampleTracer, refine_by_ray};
 use crate::common::alpha::{AlphaMaskHeader, AlphaTables};
+#[cfg(target_arch = "spirv")]
 use crate::common::any_hit::query_candidates;
 use crate::common::atomics::count_rays;
 use crate::common::camera::Camera;
@@ -16,6 +20,7 @@ use spirv_std::ray_tracing::{AccelerationStructure, RayFlags};
 use spirv_std::spirv;
 
 /// Pass 2's source: every flagged sample's ray through a ray query.
+#[cfg(target_arch = "spirv")]
 struct QueryRefine<'a> {
     tlas: &'a AccelerationStructure,
     alpha: AlphaTables<'a>,
@@ -23,6 +28,7 @@ struct QueryRefine<'a> {
     params: &'a SvaoParams,
 }
 
+#[cfg(target_arch = "spirv")]
 impl Refine for QueryRefine<'_> {
     fn refine(&mut self, frame: &PixelFrame, s: &LineSample, v: f32, z_primary: f32) -> Refined {
         let (camera, params) = (self.camera, self.params);
@@ -30,6 +36,7 @@ impl Refine for QueryRefine<'_> {
     }
 }
 
+#[cfg(target_arch = "spirv")]
 impl SampleTracer for QueryRefine<'_> {
     fn trace(&mut self, ray: &mut SampleRay) {
         let mut hits = SampleHits { state: ray.state, alpha: self.alpha };
@@ -38,6 +45,7 @@ impl SampleTracer for QueryRefine<'_> {
     }
 }
 
+#[crate::kernel(spirv_only)]
 #[spirv(compute(threads(8, 8), entry_point_name = "raysvao_rq"))]
 pub fn raysvao_rq(
     #[spirv(global_invocation_id)] id: UVec3,
@@ -45,14 +53,18 @@ pub fn raysvao_rq(
     #[spirv(descriptor_set = 0, binding = 1)] tlas: &AccelerationStructure,
     #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] depth: &[f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] normals: &[u32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ao: &mut [f32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 4)]
+    ao: &mut [f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] mask: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] uvs: &[Vec2],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 7)] materials: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 8)] mask_headers: &[AlphaMaskHeader],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 9)] mask_texels: &[f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] depth2: &[f32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)] mut ray_count: &mut [u32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)]
+    mut ray_count: &mut [u32],
 ) {
     let frame = &frame[0];
     let params = &frame.params;

@@ -52,6 +52,7 @@ impl SampleTracer for TlasRefine<'_> {
     }
 }
 
+#[crate::kernel]
 #[spirv(ray_generation(entry_point_name = "raysvao_rgen"))]
 pub fn raysvao_rgen(
     #[spirv(launch_id)] id: UVec3,
@@ -59,10 +60,14 @@ pub fn raysvao_rgen(
     #[spirv(descriptor_set = 0, binding = 1)] tlas: &AccelerationStructure,
     #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] depth: &[f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] normals: &[u32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ao: &mut [f32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 4)]
+    ao: &mut [f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] mask: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 10)] depth2: &[f32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)] mut ray_count: &mut [u32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 11)]
+    mut ray_count: &mut [u32],
     #[spirv(ray_payload)] payload: &mut SampleRayState,
 ) {
     let frame = &frame[0];
@@ -80,10 +85,12 @@ pub fn raysvao_rgen(
     count_rays(&mut ray_count, out.rays);
 }
 
+#[crate::kernel]
 #[spirv(miss(entry_point_name = "raysvao_miss"))]
 pub fn raysvao_miss(#[spirv(incoming_ray_payload)] _payload: &mut SampleRayState) {}
 
 /// [`SampleHits`]: the alpha test, then the halo decision.
+#[crate::kernel]
 #[spirv(any_hit(entry_point_name = "raysvao_ahit"))]
 pub fn raysvao_ahit(
     #[spirv(incoming_ray_payload)] payload: &mut SampleRayState,

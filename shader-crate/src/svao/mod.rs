@@ -116,6 +116,7 @@ use spirv_std::spirv;
 
 /// Compute entry point of AO pass 1 (one invocation per inner pixel, pixel = id + guard). The
 /// interval buffers must hold their clear values (spec svao-raysd §6).
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "svao_pass1"))]
 pub fn svao_pass1(
     #[spirv(global_invocation_id)] id: UVec3,
@@ -124,8 +125,12 @@ pub fn svao_pass1(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] normals: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] ao: &mut [f32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] mask: &mut [u32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 5)] mut ray_min: &mut [u32],
-    #[spirv(storage_buffer, descriptor_set = 0, binding = 6)] mut ray_max: &mut [u32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 5)]
+    mut ray_min: &mut [u32],
+    #[read_write]
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 6)]
+    mut ray_max: &mut [u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 7)] depth2: &[f32],
 ) {
     let params = &frame[0].params;

@@ -9,8 +9,8 @@ use crate::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
 use crate::common::tables::{AO_SAMPLES, JitterTable, KERNEL_SAMPLE_COUNTS};
 use crate::glam::{UVec2, uvec2};
 use crate::graph::{
-    Access, Binding, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, PassKind, RAY_COUNT, Resource, Size,
-    Snapshot, inputs, ray_counter, record, slots, target_f32, target_u32,
+    Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, RAY_COUNT, Resource, Size, Snapshot, inputs, ray_counter,
+    record, target_f32, target_u32,
 };
 use crate::technique::{Constant, Declaration, Setting, Settings};
 use crate::vao::kernel::{KERNEL_HBAO, KERNEL_VAO};
@@ -378,20 +378,18 @@ impl SvaoSettings {
                 "per-SD-texel ray tMax, float bits (svao-raysd §6)",
             ),
         ];
-        use Access::{Read, ReadWrite, Write};
         let (g, n) = (inputs::LINEAR_DEPTH, inputs::VIEW_NORMALS);
-        let pass1 = [
-            ("svao_frame", Read),
-            (g, Read),
-            (n, Read),
-            ("ao", Write),
-            ("refine_mask", Write),
-            ("ray_min", ReadWrite),
-            ("ray_max", ReadWrite),
-            (depth2, Read),
-        ];
-        let mut passes = vec![Pass::compute("ao_pass1", "svao_pass1", &pass1, Extent::Inner, &[])];
-        let scene = crate::groundtruth::settings::alpha_bindings;
+        let pass1 = super::svao_pass1::Bindings {
+            frame: "svao_frame",
+            depth: g,
+            normals: n,
+            ao: "ao",
+            mask: "refine_mask",
+            ray_min: "ray_min",
+            ray_max: "ray_max",
+            depth2,
+        };
+        let mut passes = vec![Pass::compute("ao_pass1", pass1, Extent::Inner, &[])];
         match secondary {
             Secondary::Disabled => {}
             Secondary::StochasticDepth => {
@@ -404,15 +402,15 @@ impl SvaoSettings {
                 ));
                 if self.raster {
                     // The raster coverage-mask SD map (spec svao-raysd §8): the scene drawn at SD resolution.
-                    let bindings = slots(&[
-                        (inputs::SCENE_MASK_HEADERS, Read),
-                        (inputs::SCENE_MASK_TEXELS, Read),
-                        ("svao_frame", Read),
-                        (g, Read),
-                        ("ray_min", Read),
-                        ("ray_max", Read),
-                        ("sd_map", ReadWrite),
-                    ]);
+                    let bindings = crate::rastersd::rastersd_fs::Bindings {
+                        mask_headers: inputs::SCENE_MASK_HEADERS,
+                        mask_texels: inputs::SCENE_MASK_TEXELS,
+                        frame: "svao_frame",
+                        depth: g,
+                        ray_min: "ray_min",
+                        ray_max: "ray_max",
+                        sd_bits: "sd_map",
+                    };
                     let raster = crate::gbuffer::RasterParams {
                         world_to_view: frame.camera.world_to_view,
                         view: frame.camera.view,
@@ -421,70 +419,66 @@ impl SvaoSettings {
                         _pad1: 0,
                         _pad2: 0,
                     };
-                    passes.push(Pass {
-                        label: "sd_map_raster",
-                        entry: "rastersd_fs",
-                        kind: PassKind::Raster { vertex: "gbuffer_vs" },
+                    let vertex = &crate::gbuffer::gbuffer_vs::ENTRY;
+                    passes.push(Pass::raster(
+                        "sd_map_raster",
+                        vertex,
                         bindings,
-                        dispatch: sd_extent,
-                        push_constants: bytemuck::bytes_of(&raster).to_vec(),
-                    });
+                        sd_extent,
+                        bytemuck::bytes_of(&raster),
+                    ));
                 }
-                let mut bindings = slots(&[
-                    ("svao_frame", Read),
-                    (inputs::SCENE_TLAS, Read),
-                    (g, Read),
-                    (n, Read),
-                    ("ray_min", Read),
-                    ("ray_max", Read),
-                    ("sd_map", Write),
-                ]);
-                bindings.extend(scene(7));
-                bindings.push(Binding { slot: 11, resource: RAY_COUNT, access: ReadWrite });
-                let traced = Pass {
-                    label: "sd_map",
-                    entry: "raysd_rgen",
-                    kind: PassKind::RayTracing { miss: "raysd_miss", any_hit: "raysd_ahit", query: "raysd_rq" },
-                    bindings,
-                    dispatch: sd_extent,
-                    push_constants: Vec::new(),
+                let bindings = crate::raysd::rq::raysd_rq::Bindings {
+                    frame: "svao_frame",
+                    tlas: inputs::SCENE_TLAS,
+                    depth: g,
+                    normals: n,
+                    ray_min: "ray_min",
+                    ray_max: "ray_max",
+                    sd_map: "sd_map",
+                    uvs: inputs::SCENE_UVS,
+                    materials: inputs::SCENE_MATERIALS,
+                    mask_headers: inputs::SCENE_MASK_HEADERS,
+                    mask_texels: inputs::SCENE_MASK_TEXELS,
+                    ray_count: RAY_COUNT,
                 };
+                use crate::raysd::rt::{raysd_ahit, raysd_miss, raysd_rgen};
+                let shaders = [&raysd_rgen::ENTRY, &raysd_miss::ENTRY, &raysd_ahit::ENTRY];
+                let traced = Pass::ray_traced("sd_map", shaders, bindings, sd_extent);
                 if !self.raster {
                     passes.push(traced);
                     resources.push(ray_counter());
                 }
-                let pass2 = [
-                    ("svao_frame", Read),
-                    (g, Read),
-                    (n, Read),
-                    ("ao", ReadWrite),
-                    ("refine_mask", Read),
-                    ("sd_map", Read),
-                    (depth2, Read),
-                ];
-                passes.push(Pass::compute("ao_pass2", "raysd_pass2", &pass2, Extent::Inner, &[]));
+                let pass2 = crate::raysd::raysd_pass2::Bindings {
+                    frame: "svao_frame",
+                    depth: g,
+                    normals: n,
+                    ao: "ao",
+                    mask: "refine_mask",
+                    sd_map: "sd_map",
+                    depth2,
+                };
+                passes.push(Pass::compute("ao_pass2", pass2, Extent::Inner, &[]));
             }
             Secondary::Raytraced => {
-                let mut bindings = slots(&[
-                    ("svao_frame", Read),
-                    (inputs::SCENE_TLAS, Read),
-                    (g, Read),
-                    (n, Read),
-                    ("ao", ReadWrite),
-                    ("refine_mask", Read),
-                ]);
-                bindings.extend(scene(6));
-                bindings.push(Binding { slot: 10, resource: depth2, access: Read });
-                bindings.push(Binding { slot: 11, resource: RAY_COUNT, access: ReadWrite });
+                let bindings = crate::raysvao::rq::raysvao_rq::Bindings {
+                    frame: "svao_frame",
+                    tlas: inputs::SCENE_TLAS,
+                    depth: g,
+                    normals: n,
+                    ao: "ao",
+                    mask: "refine_mask",
+                    uvs: inputs::SCENE_UVS,
+                    materials: inputs::SCENE_MATERIALS,
+                    mask_headers: inputs::SCENE_MASK_HEADERS,
+                    mask_texels: inputs::SCENE_MASK_TEXELS,
+                    depth2,
+                    ray_count: RAY_COUNT,
+                };
+                use crate::raysvao::rt::{raysvao_ahit, raysvao_miss, raysvao_rgen};
+                let shaders = [&raysvao_rgen::ENTRY, &raysvao_miss::ENTRY, &raysvao_ahit::ENTRY];
                 resources.push(ray_counter());
-                passes.push(Pass {
-                    label: "ao_pass2_rays",
-                    entry: "raysvao_rgen",
-                    kind: PassKind::RayTracing { miss: "raysvao_miss", any_hit: "raysvao_ahit", query: "raysvao_rq" },
-                    bindings,
-                    dispatch: Extent::Inner,
-                    push_constants: Vec::new(),
-                });
+                passes.push(Pass::ray_traced("ao_pass2_rays", shaders, bindings, Extent::Inner));
             }
         }
         let (r, p) = blur_passes(frame, "ao", "ao_final");

@@ -171,6 +171,7 @@ pub fn temporal_pixel(
 }
 
 /// The accumulation, one invocation per pixel of the full target: `out = temporal_pixel(…)`.
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "temporal_blend"))]
 pub fn temporal_blend(
     #[spirv(global_invocation_id)] id: UVec3,
@@ -192,6 +193,7 @@ pub fn temporal_blend(
 
 /// The history for the next frame, one invocation per pixel of the full target: the accumulated
 /// AO and this frame's depth. A pass of its own: the blend reads history at other pixels.
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "temporal_store"))]
 pub fn temporal_store(
     #[spirv(global_invocation_id)] id: UVec3,

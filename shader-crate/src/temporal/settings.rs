@@ -3,7 +3,7 @@
 //! ([`FrameDesc::previous_camera`]); the history lives in persistent resources.
 
 use super::TemporalFrame;
-use crate::graph::{Access, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, inputs, record};
+use crate::graph::{Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, inputs, record};
 
 /// The accumulation's settings \[defaults\].
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -93,23 +93,23 @@ pub fn accumulate(mut graph: Graph, frame: &FrameDesc) -> Result<Graph, String> 
         persistent(HISTORY_AO, "the previous frame's accumulated AO (persistent)"),
         persistent(HISTORY_DEPTH, "the previous frame's linear depth (persistent)"),
     ]);
-    let blend = [
-        (RECORD, Access::Read),
-        (inputs::LINEAR_DEPTH, Access::Read),
-        (graph.output, Access::Read),
-        (HISTORY_AO, Access::Read),
-        (HISTORY_DEPTH, Access::Read),
-        (OUTPUT, Access::Write),
-    ];
-    let store = [
-        (RECORD, Access::Read),
-        (inputs::LINEAR_DEPTH, Access::Read),
-        (OUTPUT, Access::Read),
-        (HISTORY_AO, Access::Write),
-        (HISTORY_DEPTH, Access::Write),
-    ];
-    graph.passes.push(Pass::compute("temporal", "temporal_blend", &blend, Extent::Full, &[]));
-    graph.passes.push(Pass::compute("temporal", "temporal_store", &store, Extent::Full, &[]));
+    let blend = super::temporal_blend::Bindings {
+        frame: RECORD,
+        depth: inputs::LINEAR_DEPTH,
+        ao: graph.output,
+        history_ao: HISTORY_AO,
+        history_depth: HISTORY_DEPTH,
+        out: OUTPUT,
+    };
+    let store = super::temporal_store::Bindings {
+        frame: RECORD,
+        depth: inputs::LINEAR_DEPTH,
+        accumulated: OUTPUT,
+        history_ao: HISTORY_AO,
+        history_depth: HISTORY_DEPTH,
+    };
+    graph.passes.push(Pass::compute("temporal", blend, Extent::Full, &[]));
+    graph.passes.push(Pass::compute("temporal", store, Extent::Full, &[]));
     graph.output = OUTPUT;
     Ok(graph)
 }

@@ -13,6 +13,7 @@ use spirv_std::spirv;
 
 /// Compute entry point: one invocation per inner pixel (pixel = id + guard). Writes the final
 /// AO (1 = unoccluded) into the full-target `ao` buffer; guard-band texels are left untouched.
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "vao_main"))]
 pub fn vao_main(
     #[spirv(global_invocation_id)] id: UVec3,

@@ -4,7 +4,7 @@
 use super::VaoParams;
 use crate::blur::graph::blur_passes;
 use crate::common::tables::AO_SAMPLES;
-use crate::graph::{Access, Extent, FrameDesc, Graph, Pass, inputs, target_f32};
+use crate::graph::{Extent, FrameDesc, Graph, Pass, inputs, target_f32};
 use crate::svao::settings::{SvaoSettings, stenciled, unrefined};
 use crate::technique::{Constant, Declaration};
 
@@ -59,9 +59,8 @@ pub const CONSTANTS: &[Constant] = &[
 /// VAO → blur.
 pub fn graph(frame: &FrameDesc) -> Graph {
     let mut resources = vec![target_f32("ao", 1.0, "VAO before the blur (1 = unoccluded)")];
-    let bindings = [(inputs::LINEAR_DEPTH, Access::Read), (inputs::VIEW_NORMALS, Access::Read), ("ao", Access::Write)];
-    let mut passes =
-        vec![Pass::compute("vao", "vao_main", &bindings, Extent::Inner, bytemuck::bytes_of(&vao_params(frame)))];
+    let bindings = super::vao_main::Bindings { depth: inputs::LINEAR_DEPTH, normals: inputs::VIEW_NORMALS, ao: "ao" };
+    let mut passes = vec![Pass::compute("vao", bindings, Extent::Inner, bytemuck::bytes_of(&vao_params(frame)))];
     let (r, p) = blur_passes(frame, "ao", "ao_final");
     resources.extend(r);
     passes.extend(p);

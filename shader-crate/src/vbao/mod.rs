@@ -50,6 +50,7 @@ pub struct VbaoParams {
 
 /// VBAO's main pass, one invocation per pixel of the full target; the bindings are XeGTAO's
 /// main pass's (spec vbao §1).
+#[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "vbao_main"))]
 pub fn vbao_main(
     #[spirv(global_invocation_id)] id: UVec3,

@@ -2,8 +2,8 @@
 //! passes (`crate::gtao::settings`), the bitmask's thickness, gate, sector rule and weighting.
 
 use super::{RULE_PAPER, RULE_TOUCH, VbaoParams, WEIGHT_COSINE_BLENDER, WEIGHT_COSINE_EXACT, WEIGHT_UNIFORM};
-use crate::graph::{FrameDesc, Graph};
-use crate::gtao::settings::{GtaoSettings, XeGtaoBased, rows, xegtao_graph};
+use crate::graph::{Extent, FrameDesc, Graph, Pass};
+use crate::gtao::settings::{GtaoSettings, MainPassResources, XeGtaoBased, rows, xegtao_graph};
 use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
 /// Where samples stop counting (spec vbao §2.1).
@@ -160,7 +160,12 @@ impl VbaoSettings {
     /// XeGTAO's passes with VBAO's main pass (spec vbao §1).
     pub fn graph(&self, frame: &FrameDesc) -> Graph {
         let params = self.params(frame);
-        xegtao_graph(frame, &params.gtao, self.xegtao.normals_from_depth, "vbao_main", bytemuck::bytes_of(&params))
+        let main = |r: MainPassResources| {
+            let bindings =
+                super::vbao_main::Bindings { mips: r.mips, normals: r.normals, terms: r.terms, edges: r.edges };
+            Pass::compute("vbao_main", bindings, Extent::Full, bytemuck::bytes_of(&params))
+        };
+        xegtao_graph(frame, &params.gtao, self.xegtao.normals_from_depth, main)
     }
 }
 
