@@ -46,7 +46,12 @@ fn effect(t: &Technique, frame: &FrameDesc) -> String {
 #[test]
 fn every_declared_key_has_a_row_and_names_are_unique() {
     let mut names: Vec<_> = TECHNIQUES.iter().map(|t| t.name()).collect();
-    assert_eq!(names.len(), 11);
+    // The techniques aokit ships are all registered (a new one needs no edit here).
+    let shipped =
+        ["vao", "hbao", "raysd", "hbao-sd", "sdsvao", "raysvao", "gtao", "vbao", "raymarch", "hybrid", "groundtruth"];
+    for name in shipped {
+        assert!(names.contains(&name), "{name} is not registered: {names:?}");
+    }
     names.sort();
     names.dedup();
     assert_eq!(names.len(), TECHNIQUES.len(), "a name is registered twice");
