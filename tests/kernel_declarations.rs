@@ -4,7 +4,8 @@
 //!
 //! - every committed module has exactly one declaration, and every declaration a module;
 //! - a pass that binds other than what its kernel declares (an access, a missing or an extra
-//!   slot) is refused by `Graph::validate`, which both executors call;
+//!   slot) or runs a kernel of the wrong stage is refused by `Graph::validate`, which both
+//!   executors call;
 //! - the generated CPU drivers (the entry point itself, once per invocation) reproduce this
 //!   crate's whole-image runners on real frames — so a slot the runners read from the wrong
 //!   binding, or a driver binding buffers out of order, shows as a difference.
@@ -14,7 +15,7 @@ mod common;
 use aokit::render::CpuRenderer;
 use aokit::technique::Technique;
 use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
-use aokit_shaders::graph::{Access, Binding, Graph};
+use aokit_shaders::graph::{Access, Binding, Graph, PassKind};
 use aokit_shaders::kernel::Kernel;
 use aokit_vulkan::manifest::Manifest;
 
@@ -64,6 +65,12 @@ fn a_pass_binds_exactly_what_its_kernel_declares() {
     extra.passes[0].bindings.push(Binding { slot: 7, resource: "ao", access: Access::Read });
     let e = extra.validate().unwrap_err();
     assert!(e.contains("binds slot 7, which the kernel does not declare"), "{e}");
+
+    // A compute kernel run as a raster pass's fragment shader.
+    let mut wrong_stage = graph.clone();
+    wrong_stage.passes[0].kind = PassKind::Raster { vertex: &aokit_shaders::gbuffer::gbuffer_vs::ENTRY };
+    let e = wrong_stage.validate().unwrap_err();
+    assert!(e.contains("vao_main is a compute kernel where the pass needs a fragment one"), "{e}");
 }
 
 /// `technique` on a Cornell-box frame through the runners and through the generated drivers:
@@ -99,7 +106,7 @@ fn runners_vs_generated(technique: &str) -> (f32, usize) {
 /// float rounding; a binding read from the wrong slot changes the AO by far more than 1/255.
 #[test]
 fn generated_cpu_drivers_reproduce_the_runners() {
-    for technique in ["vao", "gtao", "vbao", "raymarch"] {
+    for technique in ["vao", "hbao", "gtao", "vbao", "raymarch"] {
         let (max, driven) = runners_vs_generated(technique);
         eprintln!("{technique}: {driven} passes through generated drivers, max |Δ| {max:.2e}");
         assert!(driven >= 1, "{technique}: {driven} generated passes");

@@ -101,7 +101,7 @@ fn check(manifest: &Manifest, name: &str, graph: &Graph) -> Result<(), String> {
                 pass.push_constants.len()
             ));
         }
-        if aokit_cpu::graph::kernel(pass.kernel).is_none() {
+        if aokit_cpu::graph::cpu_driver(pass.kernel).is_none() {
             return Err(format!("{name}: no CPU kernel for {}", pass.entry()));
         }
     }

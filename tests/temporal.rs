@@ -216,7 +216,7 @@ fn the_accumulation_appends_to_every_technique() {
             declared.sort();
             let bound: Vec<_> = pass.bindings.iter().map(|b| (b.slot, b.access != Access::Read)).collect();
             assert_eq!(bound, declared, "{}", pass.entry());
-            assert!(aokit_cpu::graph::kernel(pass.kernel).is_some(), "{}: no CPU kernel", pass.entry());
+            assert!(aokit_cpu::graph::cpu_driver(pass.kernel).is_some(), "{}: no CPU kernel", pass.entry());
         }
     }
     // Out-of-range settings are refused with the setting named.

@@ -1,6 +1,6 @@
 //! The CPU executor of a technique's pass graph (`aokit_shaders::graph`): resources are `Vec<u32>`
-//! kept across frames, each pass calls the kernel functions of its entry point over whole
-//! images, ray-tracing passes go through the BVH with the shared any-hit functions.
+//! kept across frames, each pass runs its kernel's CPU driver (below), ray-tracing passes go
+//! through the BVH with the shared any-hit functions.
 //!
 //! The executor knows no technique: the order of passes comes from the graph alone, and each
 //! pass runs its kernel's CPU driver — the whole-image runner of this crate where one exists
@@ -117,14 +117,15 @@ impl KernelIo for PassIo<'_> {
     }
 }
 
-/// A whole-image CPU runner of a kernel: reads and writes its bindings through [`PassIo`].
-pub type CpuKernel = fn(&mut PassIo);
+/// A whole-image CPU runner of a kernel: reads and writes its bindings through [`PassIo`]'s typed
+/// slots.
+pub type Runner = fn(&mut PassIo);
 
 /// How a pass runs on the CPU.
 #[derive(Copy, Clone)]
 pub enum CpuDriver {
     /// A runner of this crate.
-    Runner(CpuKernel),
+    Runner(Runner),
     /// The driver generated beside the entry point ([`Kernel::cpu`]).
     Generated(fn(&mut dyn KernelIo, [u32; 2])),
 }
@@ -132,37 +133,37 @@ pub enum CpuDriver {
 /// The kernels this crate runs with its own whole-image runners (lanes, tiles, the BVH). A
 /// ray-tracing pass and its ray-query variant are one runner here: the BVH reports every
 /// candidate to the same any-hit decision.
-static RUNNERS: &[(&Kernel, CpuKernel)] = {
+static RUNNERS: &[(&Kernel, Runner)] = {
     use aokit_shaders::{
         blur, groundtruth, gtao, hybrid, rastersd, raymarch, raysd, raysvao, svao, temporal, vao, vbao,
     };
     &[
-        (&vao::vao_main::ENTRY, kernels::vao),
-        (&blur::blur_main::ENTRY, kernels::blur),
-        (&svao::svao_pass1::ENTRY, kernels::svao_pass1),
-        (&raysd::rt::raysd_rgen::ENTRY, kernels::sd_map),
-        (&raysd::rq::raysd_rq::ENTRY, kernels::sd_map),
-        (&rastersd::rastersd_fs::ENTRY, kernels::raster_sd_map),
-        (&raysd::raysd_pass2::ENTRY, kernels::raysd_pass2),
-        (&raysvao::rt::raysvao_rgen::ENTRY, kernels::raysvao),
-        (&raysvao::rq::raysvao_rq::ENTRY, kernels::raysvao),
-        (&gtao::gtao_prefilter::ENTRY, kernels::gtao_prefilter),
-        (&gtao::gtao_normals::ENTRY, kernels::gtao_normals),
-        (&gtao::gtao_main::ENTRY, kernels::gtao_main),
-        (&gtao::gtao_denoise::ENTRY, kernels::gtao_denoise),
-        (&vbao::vbao_main::ENTRY, kernels::vbao_main),
-        (&raymarch::raymarch_main::ENTRY, kernels::raymarch),
-        (&groundtruth::rt::groundtruth_rgen::ENTRY, kernels::ground_truth),
-        (&groundtruth::rq::groundtruth_rq::ENTRY, kernels::ground_truth),
-        (&hybrid::rt::hybrid_rgen::ENTRY, kernels::hybrid),
-        (&hybrid::rq::hybrid_rq::ENTRY, kernels::hybrid),
-        (&temporal::temporal_blend::ENTRY, kernels::temporal_blend),
+        (&vao::vao_main::ENTRY, runners::vao),
+        (&blur::blur_main::ENTRY, runners::blur),
+        (&svao::svao_pass1::ENTRY, runners::svao_pass1),
+        (&raysd::rt::raysd_rgen::ENTRY, runners::sd_map),
+        (&raysd::rq::raysd_rq::ENTRY, runners::sd_map),
+        (&rastersd::rastersd_fs::ENTRY, runners::raster_sd_map),
+        (&raysd::raysd_pass2::ENTRY, runners::raysd_pass2),
+        (&raysvao::rt::raysvao_rgen::ENTRY, runners::raysvao),
+        (&raysvao::rq::raysvao_rq::ENTRY, runners::raysvao),
+        (&gtao::gtao_prefilter::ENTRY, runners::gtao_prefilter),
+        (&gtao::gtao_normals::ENTRY, runners::gtao_normals),
+        (&gtao::gtao_main::ENTRY, runners::gtao_main),
+        (&gtao::gtao_denoise::ENTRY, runners::gtao_denoise),
+        (&vbao::vbao_main::ENTRY, runners::vbao_main),
+        (&raymarch::raymarch_main::ENTRY, runners::raymarch),
+        (&groundtruth::rt::groundtruth_rgen::ENTRY, runners::ground_truth),
+        (&groundtruth::rq::groundtruth_rq::ENTRY, runners::ground_truth),
+        (&hybrid::rt::hybrid_rgen::ENTRY, runners::hybrid),
+        (&hybrid::rq::hybrid_rq::ENTRY, runners::hybrid),
+        (&temporal::temporal_blend::ENTRY, runners::temporal_blend),
     ]
 };
 
 /// How `kernel` runs on the CPU: this crate's runner, else the generated driver; `None` for a
 /// kernel with neither (a ray-tracing or raster kernel without a runner).
-pub fn kernel(kernel: &Kernel) -> Option<CpuDriver> {
+pub fn cpu_driver(kernel: &Kernel) -> Option<CpuDriver> {
     match RUNNERS.iter().find(|(k, _)| *k == kernel) {
         Some(&(_, run)) => Some(CpuDriver::Runner(run)),
         None => kernel.cpu.map(CpuDriver::Generated),
@@ -235,7 +236,7 @@ impl CpuExecutor {
         for (i, pass) in graph.passes.iter().enumerate() {
             let generated = pass.kernel.cpu.filter(|_| self.generated_first).map(CpuDriver::Generated);
             let run = generated
-                .or_else(|| kernel(pass.kernel))
+                .or_else(|| cpu_driver(pass.kernel))
                 .ok_or_else(|| format!("no CPU driver for entry point '{}'", pass.entry()))?;
             let start = Instant::now();
             let invocations = pass.invocations(&graph.view).to_array();
@@ -314,9 +315,10 @@ impl CpuExecutor {
     }
 }
 
-/// The kernels, one per entry point: each calls the shader crate's functions (through the
-/// whole-image runners of this crate) and writes its outputs into the bound resources.
-mod kernels {
+/// The whole-image runners (see [`RUNNERS`]): each calls the shader crate's per-pixel functions
+/// over whole images (8-pixel lanes, tiles, the BVH) and writes its outputs into the bound
+/// resources.
+mod runners {
     use super::*;
     use aokit_shaders::gtao::{mip_offset, mip_size, normal_from_depth, prefilter_texel};
     use aokit_shaders::{

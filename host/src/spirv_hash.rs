@@ -17,11 +17,13 @@ fn collect(dir: &Path, out: &mut Vec<PathBuf>) -> std::io::Result<()> {
     Ok(())
 }
 
-/// SHA-256 over `Cargo.toml` and every `.rs` file below `src/` of `shader_crate`, in sorted
-/// relative-path order, each as `path\0contents\0` (line endings normalized to `\n`).
+/// SHA-256 over `Cargo.toml` and every `.rs` file below `src/` of `shader_crate`, and the same of
+/// its `derive/` crate (whose `#[kernel]` rewrites every entry point in the SPIR-V build too), in
+/// sorted relative-path order, each as `path\0contents\0` (line endings normalized to `\n`).
 pub fn shader_source_hash(shader_crate: &Path) -> std::io::Result<String> {
-    let mut files = vec![shader_crate.join("Cargo.toml")];
+    let mut files = vec![shader_crate.join("Cargo.toml"), shader_crate.join("derive/Cargo.toml")];
     collect(&shader_crate.join("src"), &mut files)?;
+    collect(&shader_crate.join("derive/src"), &mut files)?;
     let mut rel: Vec<(String, PathBuf)> = files
         .into_iter()
         .map(|p| (p.strip_prefix(shader_crate).unwrap_or(&p).to_string_lossy().replace('\\', "/"), p))

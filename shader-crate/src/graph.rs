@@ -15,7 +15,7 @@
 
 use crate::common::camera::{Camera, ViewParams};
 use crate::glam::UVec2;
-use crate::kernel::{BindingDecl, EntryBindings, Kernel};
+use crate::kernel::{BindingDecl, EntryBindings, Kernel, Stage};
 
 /// Input resources every technique may bind; the executor provides them.
 pub mod inputs {
@@ -283,7 +283,7 @@ impl Pass {
     pub fn compute(label: &'static str, bindings: impl EntryBindings, dispatch: Extent, push_constants: &[u8]) -> Pass {
         Pass {
             label,
-            kernel: bindings.kernel(),
+            kernel: bindings.declaration(),
             kind: PassKind::Compute,
             bindings: bindings.slots(),
             dispatch,
@@ -291,9 +291,10 @@ impl Pass {
         }
     }
 
-    /// A ray-tracing pass of the shaders `[ray generation, miss, any-hit]`, bound as the
-    /// ray-query variant's `Bindings` say (the three shaders' bindings together, which
-    /// [`Graph::validate`] checks).
+    /// A ray-tracing pass of the shaders `[ray generation, miss, any-hit]` (in that order), bound
+    /// as the ray-query variant's `Bindings` say: that compute kernel declares the three shaders'
+    /// bindings together, so a ray-traced pass always has one (written `#[kernel(spirv_only)]`).
+    /// [`Graph::validate`] checks the stages and that the declarations agree.
     pub fn ray_traced(
         label: &'static str,
         shaders: [&'static Kernel; 3],
@@ -304,7 +305,7 @@ impl Pass {
         Pass {
             label,
             kernel: rgen,
-            kind: PassKind::RayTracing { miss, any_hit, query: query.kernel() },
+            kind: PassKind::RayTracing { miss, any_hit, query: query.declaration() },
             bindings: query.slots(),
             dispatch,
             push_constants: Vec::new(),
@@ -322,7 +323,7 @@ impl Pass {
     ) -> Pass {
         Pass {
             label,
-            kernel: fragment.kernel(),
+            kernel: fragment.declaration(),
             kind: PassKind::Raster { vertex },
             bindings: fragment.slots(),
             dispatch,
@@ -335,12 +336,28 @@ impl Pass {
         self.kernel.entry
     }
 
-    /// The kernels whose declarations the bindings follow: the kernel itself, or the three
-    /// shaders of a ray-tracing pass.
+    /// The kernels whose declarations the bindings follow: the kernel itself, the three shaders
+    /// of a ray-tracing pass, the vertex and fragment shaders of a raster pass.
     pub fn declared_by(&self) -> Vec<&'static Kernel> {
         match self.kind {
+            PassKind::Compute => vec![self.kernel],
             PassKind::RayTracing { miss, any_hit, .. } => vec![self.kernel, miss, any_hit],
-            _ => vec![self.kernel],
+            PassKind::Raster { vertex } => vec![vertex, self.kernel],
+        }
+    }
+
+    /// Each kernel of the pass with the stage its place needs: compute; ray generation, miss,
+    /// any-hit and the compute ray-query variant; vertex and fragment.
+    fn stages(&self) -> Vec<(&'static Kernel, Stage)> {
+        match self.kind {
+            PassKind::Compute => vec![(self.kernel, Stage::Compute)],
+            PassKind::RayTracing { miss, any_hit, query } => vec![
+                (self.kernel, Stage::RayGeneration),
+                (miss, Stage::Miss),
+                (any_hit, Stage::AnyHit),
+                (query, Stage::Compute),
+            ],
+            PassKind::Raster { vertex } => vec![(vertex, Stage::Vertex), (self.kernel, Stage::Fragment)],
         }
     }
 
@@ -358,6 +375,17 @@ impl Pass {
     /// once with its declared access. A ray-tracing pass follows its three shaders together,
     /// which must declare what its ray-query variant declares.
     fn check_declared(&self) -> Result<(), String> {
+        for (kernel, stage) in self.stages() {
+            if kernel.stage != stage {
+                return Err(format!(
+                    "pass '{}': {} is a {} kernel where the pass needs a {} one",
+                    self.label,
+                    kernel.entry,
+                    kernel.stage.name(),
+                    stage.name()
+                ));
+            }
+        }
         let mut declared: Vec<&BindingDecl> = Vec::new();
         for k in self.declared_by() {
             for d in k.bindings {
@@ -372,7 +400,10 @@ impl Pass {
         }
         if let PassKind::RayTracing { query, .. } = self.kind {
             let same = query.bindings.len() == declared.len()
-                && query.bindings.iter().all(|q| declared.iter().any(|d| d.slot == q.slot && d.access == q.access));
+                && query
+                    .bindings
+                    .iter()
+                    .all(|q| declared.iter().any(|d| d.slot == q.slot && d.access == q.access && d.kind == q.kind));
             if !same {
                 return Err(format!("{}: its bindings differ from those of the ray-tracing shaders", query.entry));
             }

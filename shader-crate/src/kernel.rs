@@ -135,7 +135,13 @@ pub fn no_layout() -> Option<StructLayout> {
 #[linkme::distributed_slice]
 pub static KERNELS: [&'static Kernel];
 
-/// A binding slot whose storage buffer holds `T` (`()` for images and acceleration structures).
+/// The element type of a slot that is no storage buffer (an image, the acceleration structure):
+/// nothing the CPU can read or write through it.
+#[derive(Copy, Clone, Debug)]
+pub enum Opaque {}
+
+/// A binding slot whose storage buffer holds `T` ([`Opaque`] for images and acceleration
+/// structures).
 pub struct Slot<T> {
     pub slot: u32,
     _element: core::marker::PhantomData<fn() -> T>,
@@ -157,15 +163,14 @@ impl<T> Copy for Slot<T> {}
 /// The generated `Bindings` struct of an entry point: which graph resource each of its bindings
 /// is.
 pub trait EntryBindings {
-    /// The entry point.
-    fn kernel(&self) -> &'static Kernel;
+    /// The entry point's declaration.
+    fn declaration(&self) -> &'static Kernel;
     /// The resources in the order of [`Kernel::bindings`].
     fn resources(&self) -> Vec<&'static str>;
 
     /// The graph's bindings: each resource at its declared slot with its declared access.
     fn slots(&self) -> Vec<Binding> {
-        let kernel = self.kernel();
-        kernel
+        self.declaration()
             .bindings
             .iter()
             .zip(self.resources())
@@ -203,8 +208,17 @@ pub mod cpu {
         }
     }
 
-    /// A written buffer as `T`s (elements of at most 4-byte alignment).
+    /// A written buffer as `T`s: elements of at most 4-byte alignment (checked when the driver
+    /// compiles), as many as the words hold.
     pub fn write<T: bytemuck::Pod>(words: &mut [u32]) -> &mut [T] {
-        bytemuck::cast_slice_mut(words)
+        const {
+            assert!(
+                align_of::<T>() <= 4,
+                "a written storage buffer of 16-byte-aligned records has no generated CPU driver"
+            )
+        };
+        let bytes: &mut [u8] = bytemuck::cast_slice_mut(words);
+        let whole = bytes.len() / size_of::<T>() * size_of::<T>();
+        bytemuck::cast_slice_mut(&mut bytes[..whole])
     }
 }

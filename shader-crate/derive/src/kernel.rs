@@ -75,11 +75,14 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> Result<TokenStream, Error
         .nth(1)
         .and_then(|r| r.split('"').nth(1))
         .map_or_else(|| fn_name.to_string(), str::to_string);
-    let threads: Vec<u32> = match stage_text.split("threads").nth(1) {
+    // `threads(x[, y[, z]])` of a compute stage, as integer literals.
+    let threads: Vec<u32> = match stage_text.split("threads (").nth(1).or_else(|| stage_text.split("threads(").nth(1)) {
         Some(rest) => {
-            let inner = rest.trim_start().trim_start_matches('(');
-            let inner = inner.split(')').next().unwrap_or("");
-            inner.split(',').filter_map(|n| n.trim().parse().ok()).collect()
+            let inner = rest.split(')').next().unwrap_or("");
+            let sizes: Result<Vec<u32>, _> = inner.split(',').map(|n| n.trim().parse()).collect();
+            sizes.map_err(|_| {
+                Error::new_spanned(&f.sig.ident, format!("#[kernel]: threads({inner}) is not integer literals"))
+            })?
         }
         None => Vec::new(),
     };
@@ -96,6 +99,12 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> Result<TokenStream, Error
             Pat::Ident(i) => i.ident.clone(),
             _ => format_ident!("unnamed"),
         };
+        // The names the generated module uses for itself.
+        if text.contains("descriptor_set")
+            && ["entry", "registered", "cpu", "bindings"].contains(&name.to_string().as_str())
+        {
+            return Err(Error::new_spanned(&p.pat, "#[kernel]: this binding name is taken by the generated module"));
+        }
         let (mutable, referent) = match &*p.ty {
             Type::Reference(r) => (r.mutability.is_some(), Some((*r.elem).clone())),
             _ => (false, None),
@@ -114,7 +123,7 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> Result<TokenStream, Error
                 return Err(Error::new_spanned(&p.pat, "aokit binds descriptor set 0 only"));
             }
             let referent = referent.ok_or_else(|| Error::new_spanned(&p.ty, "a binding is a reference"))?;
-            let rust_type = referent.to_token_stream().to_string().replace(' ', "");
+            let rust_type = crate::strip_paths(&referent.to_token_stream().to_string().replace(' ', ""));
             let (kind, access, element) = if text.contains("storage_buffer") {
                 let Type::Slice(s) = &referent else {
                     return Err(Error::new_spanned(&p.ty, "a storage buffer is `&[T]` or `&mut [T]`"));
@@ -127,8 +136,13 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> Result<TokenStream, Error
                 ("StorageBuffer", access, Some((*s.elem).clone()))
             } else if rust_type.starts_with("Image!") {
                 ("Image", if rust_type.contains("sampled=false") { "Write" } else { "Read" }, None)
-            } else {
+            } else if rust_type == "AccelerationStructure" {
                 ("AccelerationStructure", "Read", None)
+            } else {
+                return Err(Error::new_spanned(
+                    &p.ty,
+                    "#[kernel]: a binding is a storage buffer, an `Image!` or an `AccelerationStructure`",
+                ));
             };
             Param::Binding(Binding { slot, name, kind, access, element, rust_type })
         } else {
@@ -174,7 +188,7 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> Result<TokenStream, Error
     let slot_consts = bindings.iter().map(|b| {
         let konst = Ident::new(&b.name.to_string().to_uppercase(), b.name.span());
         let slot = b.slot;
-        let element = b.element.clone().map_or_else(|| quote!(()), |t| t.to_token_stream());
+        let element = b.element.clone().map_or_else(|| quote!(crate::kernel::Opaque), |t| t.to_token_stream());
         let doc = format!(
             "Binding `{}`: slot {slot}, `{}`, {}.",
             b.name,
@@ -221,19 +235,19 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> Result<TokenStream, Error
         let read_slots = reads.iter().map(|b| b.slot);
         let write_slots = writes.iter().map(|b| b.slot);
         let read_lets = reads.iter().map(|b| {
-            let (local, t) = (format_ident!("__{}", b.name), &b.element);
-            quote!(let #local = crate::kernel::cpu::read::<#t>(__reads.next().expect("a read slot"));)
+            let (local, t) = (format_ident!("__aokit_{}", b.name), &b.element);
+            quote!(let #local = crate::kernel::cpu::read::<#t>(__aokit_reads.next().expect("a read slot"));)
         });
         let write_lets = writes.iter().map(|b| {
-            let (local, t) = (format_ident!("__{}", b.name), &b.element);
-            quote!(let #local: &mut [#t] = crate::kernel::cpu::write(__writes.next().expect("a written slot"));)
+            let (local, t) = (format_ident!("__aokit_{}", b.name), &b.element);
+            quote!(let #local: &mut [#t] = crate::kernel::cpu::write(__aokit_writes.next().expect("a written slot"));)
         });
-        let push_let = push.map(|t| quote!(let __push: #t = crate::kernel::cpu::push(__push_bytes);));
+        let push_let = push.map(|t| quote!(let __aokit_push: #t = crate::kernel::cpu::push(__aokit_push_bytes);));
         let args = params.iter().map(|p| match p {
             Param::InvocationId => quote!(crate::glam::UVec3::new(x, y, 0)),
-            Param::PushConstants(_) => quote!(&__push),
+            Param::PushConstants(_) => quote!(&__aokit_push),
             Param::Binding(b) => {
-                let local = format_ident!("__{}", b.name);
+                let local = format_ident!("__aokit_{}", b.name);
                 if b.access == "Read" { quote!(&#local) } else { quote!(&mut *#local) }
             }
             Param::Other => unreachable!(),
@@ -243,10 +257,10 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> Result<TokenStream, Error
             quote! {
                 /// The CPU driver: the entry point itself, once per invocation id.
                 fn cpu(io: &mut dyn crate::kernel::KernelIo, invocations: [u32; 2]) {
-                    let (__push_bytes, __reads, __writes) = io.buffers(&[#(#read_slots),*], &[#(#write_slots),*]);
-                    let _ = __push_bytes;
-                    let mut __reads = __reads.into_iter();
-                    let mut __writes = __writes.into_iter();
+                    let (__aokit_push_bytes, __aokit_reads, __aokit_writes) = io.buffers(&[#(#read_slots),*], &[#(#write_slots),*]);
+                    let _ = __aokit_push_bytes;
+                    let mut __aokit_reads = __aokit_reads.into_iter();
+                    let mut __aokit_writes = __aokit_writes.into_iter();
                     #(#read_lets)*
                     #(#write_lets)*
                     #push_let
@@ -301,7 +315,7 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> Result<TokenStream, Error
             }
 
             impl crate::kernel::EntryBindings for Bindings {
-                fn kernel(&self) -> &'static crate::kernel::Kernel {
+                fn declaration(&self) -> &'static crate::kernel::Kernel {
                     &ENTRY
                 }
                 fn resources(&self) -> Vec<&'static str> {
