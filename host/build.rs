@@ -5,7 +5,9 @@ use std::fmt::Write as _;
 use std::path::PathBuf;
 
 fn main() {
-    let dir = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").expect("cargo sets it")).join("../assets/spirv");
+    // `host/spirv` is a link to the repository's `assets/spirv/`; a packaged crate holds the
+    // files themselves there (cargo follows the link when it packages).
+    let dir = PathBuf::from(std::env::var("CARGO_MANIFEST_DIR").expect("cargo sets it")).join("spirv");
     println!("cargo::rerun-if-changed={}", dir.display());
     let mut entries: Vec<String> = std::fs::read_dir(&dir)
         .unwrap_or_else(|e| panic!("{}: {e} (the committed SPIR-V)", dir.display()))
