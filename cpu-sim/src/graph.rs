@@ -4,7 +4,7 @@
 //!
 //! The executor knows no technique: the order of passes comes from the graph alone, and each
 //! pass runs its kernel's CPU driver — the whole-image runner of this crate where one exists
-//! ([`kernel`]: fast paths over 8-pixel lanes and the BVH), else the driver `#[kernel]` generated
+//! ([`cpu_driver`]: fast paths over 8-pixel lanes and the BVH), else the driver `#[kernel]` generated
 //! beside the entry point, which calls the entry point itself once per invocation
 //! ([`Kernel::cpu`]). A new screen-space kernel so runs here with no code in this crate.
 

@@ -2,7 +2,7 @@
 //!
 //! A [`Graph`] lists the technique's resources (storage buffers of 32-bit elements, sized from
 //! the target) and its passes in order (kernel entry point, which resource each binding slot is
-//! and how it is accessed — both as the kernel's signature declares them, [`crate::kernel`] —
+//! and how it is accessed — both as the kernel's signature declares them, [`crate::kernel`](mod@crate::kernel) —
 //! the number of invocations, the push constants). The CPU simulator
 //! (`aokit_cpu::graph`) calls the kernels' functions for each pass; the Vulkan executor
 //! (`aokit_vulkan::AoContext`) records the same passes with barriers derived from the accesses.

@@ -1,6 +1,6 @@
 //! Ray-query variant of the SD map (spec svao-raysd §7) for `VK_KHR_ray_query`: one compute
 //! invocation per SD texel, the same ray as `raysd_rgen` and the same reservoir decision
-//! ([`SdHits`]) over the candidate loop of [`query_candidates`] — no shader binding table.
+//! ([`SdHits`]) over the candidate loop of `query_candidates` — no shader binding table.
 //! Bindings are those of `raysd_rgen` and `raysd_ahit` together.
 
 // On the host only the entry points' declarations exist (`#[kernel(spirv_only)]`).

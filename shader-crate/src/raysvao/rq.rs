@@ -1,6 +1,6 @@
 //! Ray-query variant of Ray-SVAO's pass 2 (spec svao-raysd §10) for `VK_KHR_ray_query`: one
 //! compute invocation per inner pixel, each flagged sample's ray with the same decision
-//! ([`SampleHits`]) over the candidate loop of [`query_candidates`]. Bindings are those of
+//! ([`SampleHits`]) over the candidate loop of `query_candidates`. Bindings are those of
 //! `raysvao_rgen` and `raysvao_ahit` together.
 
 // On the host only the entry points' declarations exist (`#[kernel(spirv_only)]`).
