@@ -31,7 +31,7 @@ fn manifest_matches_naga_reflection_of_every_module() {
     assert_eq!(names, sorted, "manifest and embedded modules list the same entry points");
     for m in &manifest.modules {
         let bytes = std::fs::read(root().join("assets/spirv").join(&m.file)).unwrap();
-        let embedded = modules::ALL.iter().find(|e| e.0 == m.entry_point).unwrap().1;
+        let embedded = modules::of(&m.entry_point).unwrap();
         assert_eq!(bytes, embedded, "{} embedded == on disk", m.file);
         let reflected = reflect::reflect_any(&m.file, &bytes).unwrap_or_else(|e| panic!("{}: {e}", m.file));
         // What the SPIR-V says; the Rust types and push-constant struct come from the sources

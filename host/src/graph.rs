@@ -238,11 +238,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
     }
 
     fn spirv(entry: &str) -> Result<&'static [u8], GpuError> {
-        modules::ALL
-            .iter()
-            .find(|(name, _)| *name == entry)
-            .map(|(_, bytes)| *bytes)
-            .ok_or_else(|| GpuError::Input(format!("no SPIR-V module for entry point '{entry}'")))
+        modules::of(entry).ok_or_else(|| GpuError::Input(format!("no SPIR-V module for entry point '{entry}'")))
     }
 
     /// The pipeline of `pass`, made on first use.

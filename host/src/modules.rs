@@ -6,9 +6,9 @@ pub const MANIFEST: &str = include_str!("../spirv/manifest.json");
 // `VAO_MAIN`, … and `ALL`: one constant per `assets/spirv/*.spv`, written by build.rs.
 include!(concat!(env!("OUT_DIR"), "/modules.rs"));
 
-/// The module of `kernel`.
-pub fn of(kernel: &aokit_shaders::kernel::Kernel) -> Option<&'static [u8]> {
-    ALL.iter().find(|(name, _)| *name == kernel.entry).map(|m| m.1)
+/// The module of entry point `entry`.
+pub fn of(entry: &str) -> Option<&'static [u8]> {
+    ALL.iter().find(|(name, _)| *name == entry).map(|m| m.1)
 }
 
 /// SPIR-V words of a module (validates the magic number and alignment).
