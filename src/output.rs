@@ -6,7 +6,7 @@ use aokit_shaders::common::ViewParams;
 use std::io;
 use std::path::Path;
 
-pub use aokit_vulkan::atomic_file::{is_temp_name, write_atomic, write_atomic_bytes};
+pub use aokit_contract::atomic_file::{is_temp_name, write_atomic, write_atomic_bytes};
 
 /// The inner image of a full-target buffer, row-major.
 pub fn crop_inner<T: Copy>(view: &ViewParams, full: &[T]) -> Vec<T> {

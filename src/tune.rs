@@ -475,7 +475,7 @@ impl TuneSet {
             "frame": frame.describe(),
             "reference": self.reference.name(),
             "options": self.reference.describe(),
-            "shader_manifest_sha256": sha256_hex(aokit_vulkan::modules::MANIFEST.as_bytes()),
+            "shader_manifest_sha256": sha256_hex(aokit_contract::MANIFEST_JSON.as_bytes()),
             "aokit": env!("CARGO_PKG_VERSION"),
         })
         .to_string()

@@ -10,11 +10,11 @@ use crate::frame::Frame;
 use crate::output::crop_inner;
 use crate::scene::Scene;
 use crate::technique::{Describe, Row, TECHNIQUES, Technique};
+use aokit_contract::manifest::Manifest;
 use aokit_cpu::GBufferImage;
 use aokit_cpu::graph::{CpuExecutor, CpuInputs};
 use aokit_shaders::graph::{Access, Elem, FrameDesc, Graph, Init, Lifetime, PassKind, inputs};
 use aokit_shaders::technique::Kind;
-use aokit_vulkan::manifest::Manifest;
 use serde_json::{Value, json};
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -476,7 +476,7 @@ pub fn write(
         }
     }
     let manifest = Manifest::committed();
-    let manifest_text = aokit_vulkan::modules::MANIFEST;
+    let manifest_text = aokit_contract::MANIFEST_JSON;
     let manifest_json: Value = serde_json::from_str(manifest_text).map_err(|e| io_err(e.to_string()))?;
     crate::output::write_atomic_bytes(&dir.join("manifest.json"), manifest_text.as_bytes())?;
     std::fs::create_dir_all(dir.join("wgsl"))?;

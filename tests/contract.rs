@@ -3,7 +3,7 @@
 //! (a stale one fails here), a C11 compiler lays out every shared struct exactly as Rust does
 //! (the header's `_Static_assert`s, compiled with `cc`), and the WGSL validates for WebGPU core.
 
-use aokit_vulkan::manifest::{Manifest, reflect};
+use aokit_contract::manifest::{Manifest, reflect};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -51,14 +51,14 @@ fn wgsl_is_what_the_modules_translate_to_and_validates_without_capabilities() {
             .iter()
             .filter(|(_, v)| matches!(v.space, naga::AddressSpace::Storage { .. }))
             .count();
-        assert!(storage <= aokit_vulkan::wgsl::MAX_STORAGE_BUFFERS, "{file}: {storage} storage buffers");
+        assert!(storage <= aokit_contract::wgsl::MAX_STORAGE_BUFFERS, "{file}: {storage} storage buffers");
     }
     // Every compute module has one but the two WebGPU core cannot express and the ray-query
     // variants (naga reads no ray queries; WebGPU has none).
     let queries =
-        |m: &&aokit_vulkan::manifest::ModuleManifest| m.bindings.iter().any(|b| b.kind == "acceleration_structure");
+        |m: &&aokit_contract::manifest::ModuleManifest| m.bindings.iter().any(|b| b.kind == "acceleration_structure");
     let compute = manifest.modules.iter().filter(|m| m.stage == "compute").filter(|m| !queries(m)).count();
-    assert_eq!(sources.len(), compute - aokit_vulkan::manifest::NOT_WGSL.len());
+    assert_eq!(sources.len(), compute - aokit_contract::manifest::NOT_WGSL.len());
     assert_eq!(manifest.modules.iter().filter(|m| m.stage == "compute").filter(queries).count(), 4);
     assert!(sources.iter().any(|(f, _)| f == "vao_main.wgsl") && sources.iter().any(|(f, _)| f == "gtao_main.wgsl"));
 }
@@ -244,7 +244,7 @@ fn technique_formulas_match_the_graphs_at_every_size() {
         let technique = Technique::named(&t.name).unwrap();
         assert_eq!(t.settings.len(), technique.rows().len(), "{}", t.name);
         for (w, h, g) in [(1920, 1080, 64), (333, 197, 7), (64, 48, 0)] {
-            let frame = aokit_vulkan::manifest::reference_frame(aokit_shaders::glam::UVec2::new(w, h), g);
+            let frame = aokit_contract::manifest::reference_frame(aokit_shaders::glam::UVec2::new(w, h), g);
             let graph = technique.graph(&frame).unwrap();
             let view = graph.view;
             let full = view.size();
@@ -287,11 +287,11 @@ fn technique_formulas_match_the_graphs_at_every_size() {
 /// and field of view change exactly the fields whose formulas say so.
 #[test]
 fn constants_formulas_cover_every_field_and_name_the_settings_that_change_it() {
+    use aokit_contract::manifest::constants::{pass_modules, values_tried};
+    use aokit_contract::manifest::{StructManifest, TechniqueManifest};
     use aokit_shaders::common::camera::Camera;
     use aokit_shaders::glam::{UVec2, Vec3};
     use aokit_shaders::graph::{FrameDesc, Graph, Init};
-    use aokit_vulkan::manifest::constants::{pass_modules, values_tried};
-    use aokit_vulkan::manifest::{StructManifest, TechniqueManifest};
     use std::collections::{BTreeMap, BTreeSet};
 
     /// A graph's constants: `(place, struct, field)` → bytes of every leaf field (`place`: a
@@ -353,7 +353,7 @@ fn constants_formulas_cover_every_field_and_name_the_settings_that_change_it() {
         let differ = a.iter().filter(|(k, v)| b.get(*k).is_some_and(|w| w != *v));
         differ.map(|((_, s, f), _)| (s.clone(), f.clone())).collect()
     };
-    let frame = aokit_vulkan::manifest::reference_frame(UVec2::new(1920, 1080), 64);
+    let frame = aokit_contract::manifest::reference_frame(UVec2::new(1920, 1080), 64);
     // Each technique at its defaults, and with each setting at each value tried (refused
     // combinations skipped): `(key, value, graph)`.
     let variants = |name: &str| {

@@ -14,10 +14,10 @@ mod common;
 
 use aokit::render::CpuRenderer;
 use aokit::technique::Technique;
+use aokit_contract::manifest::Manifest;
 use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
 use aokit_shaders::graph::{Access, Binding, Graph, PassKind};
 use aokit_shaders::kernel::Kernel;
-use aokit_vulkan::manifest::Manifest;
 
 #[test]
 fn every_committed_module_is_declared_once() {
@@ -29,6 +29,17 @@ fn every_committed_module_is_declared_once() {
     committed.sort();
     assert_eq!(committed, declared, "the committed modules are the declared entry points");
     assert_eq!(declared.len(), aokit_vulkan::modules::ALL.len(), "every module is embedded");
+    // The Vulkan executor sizes descriptor-set layouts, push-constant ranges and dispatches from
+    // the declarations: they must be the modules' own (reflected from the SPIR-V).
+    for m in &Manifest::committed().modules {
+        let k = Kernel::find(&m.entry_point).unwrap();
+        assert_eq!(k.push_constant_bytes(), m.push_constant_bytes, "{}: push-constant bytes", k.entry);
+        let slots = m.bindings.iter().map(|b| b.binding + 1).max().unwrap_or(0);
+        assert_eq!(k.slot_count(), slots, "{}: descriptor slots", k.entry);
+        if let Some(workgroup) = m.workgroup_size {
+            assert_eq!(k.threads, workgroup, "{}: workgroup size", k.entry);
+        }
+    }
     // The generated CPU drivers: every compute kernel of plain storage buffers has one.
     let drivable: Vec<&str> = Kernel::all().iter().filter(|k| k.cpu.is_some()).map(|k| k.entry).collect();
     for entry in ["vao_main", "blur_main", "gtao_main", "gtao_denoise", "vbao_main", "raymarch_main", "temporal_store"]

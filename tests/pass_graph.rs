@@ -6,6 +6,7 @@
 mod common;
 
 use aokit::technique::{GroundTruthSettings, GtaoOptions, HybridOptions, RaymarchOptions, SdOptions, Technique};
+use aokit_contract::manifest::Manifest;
 use aokit_shaders::graph::{Access, Graph, PassKind, RtMode, inputs};
 use aokit_shaders::groundtruth::settings::GROUNDTRUTH;
 use aokit_shaders::gtao::settings::GTAO;
@@ -13,7 +14,6 @@ use aokit_shaders::hybrid::settings::HYBRID;
 use aokit_shaders::raymarch::settings::RAYMARCH;
 use aokit_shaders::svao::settings::{HBAO, HBAO_SD, RAYSD, RAYSVAO, SDSVAO};
 use aokit_shaders::vao::settings::VAO;
-use aokit_vulkan::manifest::Manifest;
 
 /// Every registered technique at its defaults, plus the variants that change the graph.
 fn techniques() -> Vec<Technique> {

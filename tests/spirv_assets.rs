@@ -2,9 +2,9 @@
 //! described correctly by its manifest. Needs no nightly; needs spirv-val (package spirv-tools)
 //! unless AOKIT_SKIP_SPIRV_VAL=1.
 
-use aokit_vulkan::manifest::{Manifest, reflect};
+use aokit_contract::manifest::{Manifest, reflect};
+use aokit_contract::spirv_hash::shader_source_hash;
 use aokit_vulkan::modules;
-use aokit_vulkan::spirv_hash::shader_source_hash;
 use std::path::Path;
 
 fn root() -> &'static Path {
@@ -42,7 +42,7 @@ fn manifest_matches_naga_reflection_of_every_module() {
         from_spirv.bindings.iter_mut().for_each(|b| b.rust_type.clear());
         assert_eq!(reflected, from_spirv);
         // naga reads (and validates) everything but ray-tracing stages and ray-query kernels.
-        if aokit_vulkan::manifest::words::is_ray_tracing(&bytes).unwrap() {
+        if aokit_contract::manifest::words::is_ray_tracing(&bytes).unwrap() {
             assert!(m.stage != "vertex" && m.stage != "fragment", "{}", m.file);
         } else {
             assert!(["compute", "vertex", "fragment"].contains(&m.stage.as_str()), "{}", m.file);

@@ -198,7 +198,7 @@ fn the_frame_index_reaches_every_stochastic_technique() {
 #[test]
 fn the_accumulation_appends_to_every_technique() {
     let (_, base) = cornell();
-    let manifest = aokit_vulkan::manifest::Manifest::committed();
+    let manifest = aokit_contract::manifest::Manifest::committed();
     let on = Frame { temporal: Some(TemporalSettings::default()), previous_camera: Some(base.camera), ..base.clone() };
     for t in TECHNIQUES {
         let technique = Technique::named(t.name()).unwrap();

@@ -7,10 +7,10 @@ mod common;
 
 use aokit::render::CpuRenderer;
 use aokit::technique::Technique;
+use aokit_contract::manifest::Manifest;
 use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
 use aokit_cpu::no_progress;
 use aokit_shaders::graph::{Graph, Init, inputs};
-use aokit_vulkan::manifest::Manifest;
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
 

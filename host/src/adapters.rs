@@ -46,15 +46,20 @@ const GROUP: u32 = 8; // threads(8, 8) in the shader crate
 /// commands execute.
 #[derive(Copy, Clone, Debug)]
 pub struct EngineImage {
+    /// A 2D view of the image's first mip level and layer.
     pub view: vk::ImageView,
+    /// The layout the image is in while the recorded commands execute.
     pub layout: vk::ImageLayout,
 }
 
 /// The engine's AO output image: a view (in `GENERAL` layout while the export runs) and its
-/// format, one of [`Adapters::EXPORT_FORMATS`].
+/// format: `R32_SFLOAT`, `R16_SFLOAT` or `R8_UNORM` (one export kernel each, whose storage
+/// image format matches the view's).
 #[derive(Copy, Clone, Debug)]
 pub struct AoImage {
+    /// A 2D view of the image's first mip level and layer, with storage usage.
     pub view: vk::ImageView,
+    /// The view's format.
     pub format: vk::Format,
 }
 
@@ -82,6 +87,7 @@ impl Adapters {
         (vk::Format::R8_UNORM, c"export_ao_r8", modules::EXPORT_AO_R8),
     ];
 
+    /// The import and export pipelines on `gpu`.
     pub fn new(gpu: &Gpu) -> Result<Self, GpuError> {
         let push = size_of::<ImportParams>() as u32;
         let kernel = |spirv, entry, types: &[vk::DescriptorType]| ComputeKernel::new(gpu, spirv, entry, types, push);
@@ -101,6 +107,7 @@ impl Adapters {
         gpu.descriptor_pool(2 * records.max(1), &types)
     }
 
+    /// Destroy a pool of [`Adapters::create_descriptor_pool`].
     pub fn destroy_descriptor_pool(&self, gpu: &Gpu, pool: vk::DescriptorPool) {
         unsafe { gpu.device.destroy_descriptor_pool(pool, None) };
     }
@@ -201,6 +208,7 @@ impl Adapters {
         self.exports[k].record(gpu, cb, sets, &descriptors, bytemuck::bytes_of(params), groups)
     }
 
+    /// Destroy the pipelines (after the device finished every frame that used them).
     pub fn destroy(&self, gpu: &Gpu) {
         for k in [&self.import_depth, &self.import_normals].into_iter().chain(&self.exports) {
             k.destroy(gpu);

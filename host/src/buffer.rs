@@ -7,7 +7,9 @@ use gpu_allocator::vulkan::{Allocation, AllocationCreateDesc, AllocationScheme};
 
 /// A `VkBuffer` and its memory. Free it with [`Gpu::free_buffer`].
 pub struct Buffer {
+    /// The Vulkan buffer.
     pub raw: vk::Buffer,
+    /// Its size in bytes.
     pub size: u64,
     allocation: Option<Allocation>,
 }

@@ -35,9 +35,13 @@ impl GpuOptions {
 /// What `aokit info` prints.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct DeviceInfo {
+    /// `deviceName`.
     pub name: String,
+    /// `deviceType`, e.g. `CPU` for lavapipe.
     pub device_type: String,
+    /// `apiVersion` as `major.minor.patch`.
     pub api_version: String,
+    /// `driverVersion` as the driver encodes it.
     pub driver_version: u32,
     /// Ray-tracing related extensions and whether the device has them (a hidden one counts as
     /// absent).
@@ -74,11 +78,38 @@ pub(crate) struct RayTracing {
 }
 
 /// A Vulkan device that the application created itself (a game engine, say), for
-/// [`Gpu::from_external`], which lists what the device must have been created with.
+/// [`AoEffect::new`](crate::AoEffect::new).
 ///
 /// These are plain handles: dropping them destroys nothing. aokit never destroys any of them,
 /// so keep a clone (`ExternalDevice` is `Clone`, as are the ash loaders) to destroy the device
-/// and the instance yourself after dropping the [`Gpu`].
+/// and the instance yourself after dropping the effect.
+///
+/// # What the device must have been created with
+///
+/// * Vulkan 1.3: the instance's `apiVersion` and the physical device's.
+/// * Always: the Vulkan 1.2 features `vulkanMemoryModel` and `vulkanMemoryModelDeviceScope`
+///   (every kernel's SPIR-V uses the Vulkan memory model that rust-gpu emits), and a queue
+///   family with compute and timestamps (every pass is timed with timestamp queries). This
+///   is all that the screen-space techniques need.
+/// * For aokit's own raster passes (its G-buffer and the raster SD map, feature `harness`;
+///   the effect runs none) also: a graphics queue, the Vulkan 1.3 feature `dynamicRendering`,
+///   the core feature `fragmentStoresAndAtomics` (the raster SD map's atomic min) and, where
+///   the device has it, `maintenance4` (the raster SD fragment shader does not read every
+///   vertex output).
+/// * For ray tracing (`external.ray_tracing == true`): the extensions
+///   `VK_KHR_acceleration_structure`, `VK_KHR_ray_tracing_pipeline` and
+///   `VK_KHR_deferred_host_operations`, and the features `accelerationStructure`,
+///   `rayTracingPipeline` and `bufferDeviceAddress` (Vulkan 1.2). The allocator then
+///   allocates all memory with `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`.
+/// * For ray queries (`external.ray_query == true`, with or without `ray_tracing`):
+///   `VK_KHR_ray_query`, `VK_KHR_acceleration_structure` and
+///   `VK_KHR_deferred_host_operations`, and the features `rayQuery`,
+///   `accelerationStructure` and `bufferDeviceAddress`.
+///
+/// aokit cannot read back which features were enabled: it checks what the *physical* device
+/// supports (a clear error when it lacks the memory model, when the queue family lacks
+/// compute or timestamps, or when `ray_tracing` is set but the device cannot ray trace) and
+/// trusts the caller for the rest; the validation layer reports a missing feature.
 #[derive(Clone)]
 pub struct ExternalDevice {
     /// The loader `instance` was created from; the `Gpu` keeps it so the Vulkan library stays
@@ -88,8 +119,7 @@ pub struct ExternalDevice {
     pub instance: ash::Instance,
     /// The physical device `device` was created on.
     pub physical_device: vk::PhysicalDevice,
-    /// The logical device, created with the features and extensions that
-    /// [`Gpu::from_external`] lists.
+    /// The logical device, created with the features and extensions listed above.
     pub device: ash::Device,
     /// The family of `queue`: it must support compute and timestamps (`timestampValidBits > 0`),
     /// and graphics as well for the raster passes.
@@ -102,8 +132,8 @@ pub struct ExternalDevice {
     /// (`VK_KHR_acceleration_structure`, `VK_KHR_ray_tracing_pipeline`,
     /// `VK_KHR_deferred_host_operations`) and the `accelerationStructure`,
     /// `rayTracingPipeline` and `bufferDeviceAddress` features enabled. aokit cannot query what
-    /// was enabled, so it trusts this flag; `false` makes the `Gpu` behave as on a device without
-    /// ray tracing ([`Gpu::has_ray_tracing`] is `false`).
+    /// was enabled, so it trusts this flag; `false` makes aokit behave as on a device without
+    /// ray tracing.
     pub ray_tracing: bool,
     /// Whether the device was created with `VK_KHR_ray_query` and the `rayQuery` feature, and
     /// with `VK_KHR_acceleration_structure`, `VK_KHR_deferred_host_operations`,
@@ -378,32 +408,7 @@ impl Gpu {
     /// `Gpu` creates its own command pool and gpu-allocator `Allocator` on `external.device`
     /// and destroys only those; the device and the instance stay the caller's.
     ///
-    /// # What the device must have been created with
-    ///
-    /// * Vulkan 1.3: the instance's `apiVersion` and the physical device's.
-    /// * Always: the Vulkan 1.2 features `vulkanMemoryModel` and `vulkanMemoryModelDeviceScope`
-    ///   (every kernel's SPIR-V uses the Vulkan memory model that rust-gpu emits), and a queue
-    ///   family with compute and timestamps (every pass is timed with timestamp queries). This
-    ///   is all that graphs of compute passes on [`AoContext`](crate::AoContext) need.
-    /// * For the raster passes ([`RasterGBuffer`](crate::RasterGBuffer), the raster SD map of
-    ///   sdsvao) also: a graphics queue, the Vulkan 1.3 feature
-    ///   `dynamicRendering`, the core feature `fragmentStoresAndAtomics` (the raster SD map's
-    ///   atomic min) and, where the device has it, `maintenance4` (the raster SD fragment shader
-    ///   does not read every vertex output).
-    /// * For ray tracing (`external.ray_tracing == true`): the extensions
-    ///   `VK_KHR_acceleration_structure`, `VK_KHR_ray_tracing_pipeline` and
-    ///   `VK_KHR_deferred_host_operations`, and the features `accelerationStructure`,
-    ///   `rayTracingPipeline` and `bufferDeviceAddress` (Vulkan 1.2). The allocator then
-    ///   allocates all memory with `VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT`.
-    /// * For ray queries (`external.ray_query == true`, with or without `ray_tracing`):
-    ///   `VK_KHR_ray_query`, `VK_KHR_acceleration_structure` and
-    ///   `VK_KHR_deferred_host_operations`, and the features `rayQuery`,
-    ///   `accelerationStructure` and `bufferDeviceAddress`.
-    ///
-    /// aokit cannot read back which features were enabled: it checks what the *physical* device
-    /// supports (a clear error when it lacks the memory model, when the queue family lacks
-    /// compute or timestamps, or when `ray_tracing` is set but the device cannot ray trace) and
-    /// trusts the caller for the rest; the validation layer reports a missing feature.
+    /// The device must have been created as [`ExternalDevice`] lists.
     ///
     /// # Rules for the caller
     ///
@@ -693,21 +698,29 @@ impl Gpu {
         &self.device
     }
 
-    /// The queue family of the queue aokit submits to.
     /// Whether the queue family has graphics (raster passes, fragment-stage barriers).
     pub fn has_graphics_queue(&self) -> bool {
         self.graphics
     }
 
+    /// The queue family of the queue aokit submits to.
     pub fn queue_family_index(&self) -> u32 {
         self.queue_family_index
     }
 
     /// Bytes currently allocated by this `Gpu`'s gpu-allocator: the sum of its live allocations
     /// (buffers, images, acceleration structures), not the capacity of the memory blocks they
-    /// are carved from. Flat across frames when nothing leaks.
+    /// are carved from. gpu-allocator counts the padding that aligned an allocation in its
+    /// block as part of it, so the same allocations placed differently may differ by up to the
+    /// alignment each. Flat across frames when nothing leaks.
     pub fn allocated_bytes(&self) -> u64 {
         self.allocator.lock().unwrap_or_else(|e| e.into_inner()).generate_report().total_allocated_bytes
+    }
+
+    /// How many allocations are live (for leak checks that must not depend on placement).
+    #[cfg(feature = "testing")]
+    pub fn live_allocations(&self) -> usize {
+        self.allocator.lock().unwrap_or_else(|e| e.into_inner()).generate_report().allocations.len()
     }
 
     /// Validation-layer warnings and errors reported so far: empty without validation, and

@@ -17,10 +17,15 @@ use std::ffi::CStr;
 #[repr(C)]
 #[derive(Copy, Clone, Debug, bytemuck::Pod, bytemuck::Zeroable)]
 pub struct GBufferVertex {
+    /// World-space position (`w` = 1).
     pub position: [f32; 4],
+    /// The triangle's world-space face normal (`w` = 0).
     pub face_normal: [f32; 4],
+    /// Texture coordinates (where the alpha mask is sampled).
     pub uv: [f32; 2],
+    /// Material index (into the alpha-mask headers).
     pub material: u32,
+    /// Padding to 16 bytes.
     pub _pad: u32,
 }
 
@@ -152,6 +157,7 @@ const PUSH_STAGES: vk::ShaderStageFlags =
     vk::ShaderStageFlags::from_raw(vk::ShaderStageFlags::VERTEX.as_raw() | vk::ShaderStageFlags::FRAGMENT.as_raw());
 
 impl RasterGBuffer {
+    /// The G-buffer and peeling pipelines on `gpu`.
     pub fn new(gpu: &Gpu) -> Result<Self, GpuError> {
         let d = &gpu.device;
         unsafe {
@@ -402,6 +408,7 @@ impl RasterGBuffer {
         result
     }
 
+    /// Destroy the pipelines and the timestamp pool.
     pub fn destroy(&self, gpu: &Gpu) {
         unsafe {
             gpu.device.destroy_pipeline(self.pipeline, None);
@@ -470,6 +477,7 @@ impl RasterFrame {
         Ok(out)
     }
 
+    /// Free the frame's buffers.
     pub fn destroy(self, gpu: &Gpu) {
         if self.queries != vk::QueryPool::null() {
             unsafe { gpu.device.destroy_query_pool(self.queries, None) };

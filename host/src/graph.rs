@@ -20,7 +20,6 @@ use crate::adapters::{Adapters, AoImage, EngineImage};
 use crate::compute::{ComputeKernel, memory_barrier};
 use crate::descriptors::{Descriptor, KeptSets};
 use crate::gbuffer::AttachmentlessPass;
-use crate::manifest::{Manifest, ModuleManifest};
 use crate::raytracing::{RtPipeline, SceneAccel};
 use crate::{Buffer, Gpu, GpuError, modules};
 use aokit_shaders::adapters::ImportParams;
@@ -43,13 +42,17 @@ pub const FRAMES_IN_FLIGHT: u64 = 3;
 /// camera view (`FrameDesc::camera.view`) and `engine_size` the images' size.
 #[derive(Copy, Clone)]
 pub struct EngineFrame<'a> {
+    /// The engine's depth image.
     pub depth: EngineImage,
+    /// The engine's view-space normals, if it has them.
     pub normals: Option<EngineImage>,
     /// The depth-peeled second layer (spec svao-raysd §11), for the dual-depth techniques: the
     /// nearest surface at least the technique's peel separation (view depth) behind `depth`,
     /// in the same format and convention, cleared (background) where there is none.
     pub second_depth: Option<EngineImage>,
+    /// Where the AO goes.
     pub output: AoImage,
+    /// How the adapter reads the engine's depth (convention, planes, size).
     pub import: ImportParams,
     /// The scene's acceleration structure, for graphs that trace rays.
     pub scene: Option<&'a SceneAccel>,
@@ -65,9 +68,13 @@ const ENGINE_SECOND_DEPTH: &str = "engine_second_depth";
 /// second layer and the scene.
 #[derive(Copy, Clone)]
 pub struct GpuInputs<'a> {
+    /// Linear view depth, `f32` per pixel of the full target.
     pub depth: &'a Buffer,
+    /// Octahedral view normals, `u32` per pixel.
     pub normals: &'a Buffer,
+    /// The depth-peeled second layer, for the dual-depth techniques.
     pub second_depth: Option<&'a Buffer>,
+    /// The acceleration structure, for graphs that trace rays.
     pub scene: Option<&'a SceneAccel>,
     /// The scene for raster passes (the raster SD map).
     pub raster: Option<RasterScene<'a>>,
@@ -77,9 +84,13 @@ pub struct GpuInputs<'a> {
 /// alpha masks (headers, texels) their fragment shaders test.
 #[derive(Copy, Clone)]
 pub struct RasterScene<'a> {
+    /// [`GBufferVertex`](crate::GBufferVertex) records, three per triangle.
     pub vertices: &'a Buffer,
+    /// How many vertices `vertices` holds.
     pub vertex_count: u32,
+    /// Alpha-mask header per material.
     pub mask_headers: &'a Buffer,
+    /// The masks' texels.
     pub mask_texels: &'a Buffer,
 }
 
@@ -169,7 +180,6 @@ struct Timing {
 /// Runs pass graphs on one Vulkan device (see the module documentation).
 pub struct AoContext<G: Borrow<Gpu> = Gpu> {
     owner: G,
-    manifest: Manifest,
     pipelines: HashMap<&'static str, Pipeline>,
     /// Boxed: a frame's inputs may point into an entry while others are inserted.
     resources: HashMap<&'static str, Box<DeviceResource>>,
@@ -199,7 +209,6 @@ impl<G: Borrow<Gpu>> AoContext<G> {
     pub fn new(gpu: G) -> AoContext<G> {
         AoContext {
             owner: gpu,
-            manifest: Manifest::committed(),
             pipelines: HashMap::new(),
             resources: HashMap::new(),
             bound: Vec::new(),
@@ -212,6 +221,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         }
     }
 
+    /// The device it runs on.
     pub fn gpu(&self) -> &Gpu {
         self.owner.borrow()
     }
@@ -229,14 +239,6 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         stages
     }
 
-    fn module(&self, entry: &str) -> Result<&ModuleManifest, GpuError> {
-        self.manifest
-            .modules
-            .iter()
-            .find(|m| m.entry_point == entry)
-            .ok_or_else(|| GpuError::Input(format!("no SPIR-V module for entry point '{entry}'")))
-    }
-
     fn spirv(entry: &str) -> Result<&'static [u8], GpuError> {
         modules::of(entry).ok_or_else(|| GpuError::Input(format!("no SPIR-V module for entry point '{entry}'")))
     }
@@ -246,8 +248,8 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         if self.pipelines.contains_key(pass.entry()) {
             return Ok(());
         }
-        let module = self.module(pass.entry())?.clone();
-        let slots = module.bindings.iter().map(|b| b.binding + 1).max().unwrap_or(0);
+        let kernel = pass.kernel;
+        let slots = kernel.slot_count();
         let pipeline = match pass.kind {
             PassKind::Compute => {
                 let entry = CString::new(pass.entry()).expect("entry names have no NUL");
@@ -260,8 +262,8 @@ impl<G: Borrow<Gpu>> AoContext<G> {
                         pass.entry()
                     )));
                 }
-                let kernel = ComputeKernel::new(self.gpu(), spirv, &entry, &types, module.push_constant_bytes)?;
-                Pipeline::Compute { kernel, workgroup: module.workgroup_size.unwrap_or([1, 1, 1]) }
+                let compute = ComputeKernel::new(self.gpu(), spirv, &entry, &types, kernel.push_constant_bytes())?;
+                Pipeline::Compute { kernel: compute, workgroup: kernel.threads }
             }
             PassKind::RayTracing { miss, any_hit, .. } => {
                 let names = [pass.entry(), miss.entry, any_hit.entry]
@@ -276,7 +278,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             // The raster pipeline state graphs declare: no attachments, dynamic viewport.
             PassKind::Raster { vertex } => {
                 let names = [vertex.entry, pass.entry()].map(|n| CString::new(n).expect("entry names have no NUL"));
-                let push = self.module(vertex.entry)?.push_constant_bytes;
+                let push = vertex.push_constant_bytes();
                 Pipeline::Raster(AttachmentlessPass::new(
                     self.gpu(),
                     (Self::spirv(vertex.entry)?, names[0].as_c_str()),

@@ -10,10 +10,15 @@ use gpu_allocator::vulkan::{Allocation, AllocationCreateDesc, AllocationScheme};
 /// aspect of a depth format) and its memory: what tests and tools need to hand the adapters an
 /// engine-like image. Free it with [`Gpu::free_image`].
 pub struct Image2d {
+    /// The image.
     pub raw: vk::Image,
+    /// Its view.
     pub view: vk::ImageView,
+    /// Its format.
     pub format: vk::Format,
+    /// Width in texels.
     pub width: u32,
+    /// Height in texels.
     pub height: u32,
     allocation: Option<Allocation>,
 }

@@ -1,8 +1,5 @@
 //! The committed SPIR-V modules (one per entry point, `assets/spirv/`), embedded at compile time.
 
-/// `assets/spirv/manifest.json`: entry points, bindings, push constants and the source hash.
-pub const MANIFEST: &str = include_str!("../spirv/manifest.json");
-
 // `VAO_MAIN`, … and `ALL`: one constant per `assets/spirv/*.spv`, written by build.rs.
 include!(concat!(env!("OUT_DIR"), "/modules.rs"));
 

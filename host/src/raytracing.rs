@@ -102,6 +102,7 @@ pub struct SceneAccel {
     materials: Buffer,
     mask_headers: Buffer,
     mask_texels: Buffer,
+    /// Wall time of the build in milliseconds (0 for the engine's TLAS).
     pub build_ms: f64,
     generation: u64,
 }

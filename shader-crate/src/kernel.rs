@@ -105,6 +105,16 @@ impl Kernel {
         self.bindings.iter().find(|b| b.slot == slot)
     }
 
+    /// Size in bytes of the push-constant block (0 without one).
+    pub fn push_constant_bytes(&self) -> u32 {
+        self.push_constants.and_then(|(_, layout)| layout()).map_or(0, |l| l.size as u32)
+    }
+
+    /// One past the highest binding slot: the length of the descriptor-set layout.
+    pub fn slot_count(&self) -> u32 {
+        self.bindings.iter().map(|b| b.slot + 1).max().unwrap_or(0)
+    }
+
     /// The kernel called `entry`.
     pub fn find(entry: &str) -> Option<&'static Kernel> {
         KERNELS.iter().copied().find(|k| k.entry == entry)

@@ -7,9 +7,9 @@
 //!
 //! Runs on stable; nothing else in the workspace needs the nightly.
 
-use aokit_vulkan::atomic_file::write_atomic_bytes;
-use aokit_vulkan::manifest::{Manifest, reflect};
-use aokit_vulkan::spirv_hash::shader_source_hash;
+use aokit_contract::atomic_file::write_atomic_bytes;
+use aokit_contract::manifest::{Manifest, reflect};
+use aokit_contract::spirv_hash::shader_source_hash;
 use cargo_gpu_install::install::Install;
 use cargo_gpu_install::spirv_builder::{Capability, ModuleResult, SpirvMetadata};
 use std::collections::BTreeMap;

@@ -1,4 +1,4 @@
-//! WGSL for WebGPU and wgpu from the compute modules (feature `reflect`): naga reads the SPIR-V,
+//! WGSL for WebGPU and wgpu from the compute modules: naga reads the SPIR-V,
 //! the push-constant block becomes a uniform buffer at the first free binding of group 0
 //! (WebGPU core has no push constants), naga validates the result with NO optional capability
 //! and checks WebGPU's default per-stage limits, writes WGSL, and re-reads and re-validates that

@@ -2,6 +2,7 @@
 //! points, stages, descriptor bindings, push-constant sizes — plus the hash of the shader
 //! sources the modules were built from.
 
+use crate::MANIFEST_JSON;
 use aokit_shaders::contract::PLAIN_TYPES;
 use serde::{Deserialize, Serialize};
 
@@ -178,7 +179,6 @@ pub struct WgslManifest {
 }
 
 /// Compute modules without a WGSL translation, and why.
-#[cfg(feature = "reflect")]
 pub const NOT_WGSL: [(&str, &str); 2] = [
     ("export_ao_r16f", "WebGPU core has no r16float storage textures: use export_ao_r32f"),
     ("export_ao_r8", "WebGPU core has no r8unorm storage textures: use export_ao_r32f"),
@@ -203,13 +203,12 @@ pub struct BindingManifest {
 impl Manifest {
     /// The committed manifest.
     pub fn committed() -> Manifest {
-        serde_json::from_str(crate::modules::MANIFEST).expect("committed manifest.json parses")
+        serde_json::from_str(MANIFEST_JSON).expect("committed manifest.json parses")
     }
 }
 
-/// naga-based validation and reflection (feature `reflect`). naga reads compute and graphics
+/// naga-based validation and reflection. naga reads compute and graphics
 /// modules; it cannot read ray-tracing modules.
-#[cfg(feature = "reflect")]
 pub mod reflect {
     use super::{BindingManifest, ModuleManifest};
     use naga::{AddressSpace, ShaderStage, StorageAccess, TypeInner};
@@ -285,7 +284,6 @@ pub mod reflect {
 
 /// A minimal reader of SPIR-V words: entry point, execution model and descriptor bindings of
 /// ray-tracing modules (SPIR-V spec §2.3 physical layout, §3 enumerants).
-#[cfg(feature = "reflect")]
 pub mod words {
     use super::{BindingManifest, ModuleManifest};
     use std::collections::HashMap;
@@ -408,7 +406,6 @@ pub mod words {
     }
 }
 
-#[cfg(feature = "reflect")]
 impl Manifest {
     /// Translate every compute module (but [`NOT_WGSL`] and the ray-query variants, which
     /// naga's SPIR-V front end cannot read and WebGPU cannot run) of `spirv_dir` to WGSL
@@ -631,7 +628,6 @@ impl Manifest {
 
 /// The frame the technique section's graphs are built for: only their structure is written
 /// (sizes and dispatches as formulas), so any valid frame gives the same section.
-#[cfg(feature = "reflect")]
 pub fn reference_frame(inner: aokit_shaders::glam::UVec2, guard: u32) -> aokit_shaders::graph::FrameDesc {
     use aokit_shaders::glam::Vec3;
     let camera = aokit_shaders::common::camera::Camera::look_at(
@@ -648,7 +644,6 @@ pub fn reference_frame(inner: aokit_shaders::glam::UVec2, guard: u32) -> aokit_s
 }
 
 /// The registry's techniques at their defaults.
-#[cfg(feature = "reflect")]
 fn techniques() -> Result<Vec<TechniqueManifest>, String> {
     use aokit_shaders::graph::{Access, Elem, Init, Lifetime, PassKind};
     use aokit_shaders::technique::Kind;
@@ -754,9 +749,8 @@ fn techniques() -> Result<Vec<TechniqueManifest>, String> {
     Ok(out)
 }
 
-/// The techniques' `constants` (feature `reflect`): which constants structs a technique's passes
+/// The techniques' `constants`: which constants structs a technique's passes
 /// use, and every field of them with its formula from the technique's declaration.
-#[cfg(feature = "reflect")]
 pub mod constants {
     use super::{ConstantManifest, ModuleManifest, StructManifest};
     use aokit_shaders::graph::{Graph, Init, Pass, PassKind};

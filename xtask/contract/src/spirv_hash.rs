@@ -1,6 +1,5 @@
 //! Hash of the shader crate's sources, recorded beside the committed SPIR-V by the xtask and
 //! re-checked by a stable test, so SPIR-V that is stale against its sources cannot go unnoticed.
-//! (Shared with the xtask through `#[path]`; keep it dependency-light.)
 
 use sha2::{Digest, Sha256};
 use std::path::{Path, PathBuf};
