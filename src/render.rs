@@ -2,14 +2,12 @@
 
 use crate::frame::Frame;
 use crate::scene::Scene;
-use crate::technique::{GroundTruthSettings, GtaoOptions, SvaoDebug, Technique, TechniqueRun};
+use crate::technique::{GroundTruthSettings, GtaoOptions, Technique, TechniqueRun};
 use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
-use aokit_cpu::svao as svao_cpu;
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
-use aokit_shaders::graph::{FrameDesc, Graph, PassKind, RAY_COUNT, RtMode, ray_count_of};
+use aokit_shaders::graph::{Executed, FrameDesc, Graph, RAY_COUNT, RtMode, ray_count_of};
 use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
-use aokit_shaders::svao::{Secondary, SvaoFrame};
 use aokit_vulkan::{AoContext, GpuInputs};
 use aokit_vulkan::{
     Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, RasterFrame, RasterGBuffer, RasterScene, SceneAccel,
@@ -357,8 +355,8 @@ impl CpuRenderer {
 }
 
 /// A technique's result from the resources of an executed graph (`read` returns a resource's
-/// words): raw and final AO, and for the stenciled family the refinement statistics and the
-/// diagnostic buffers; the rays the kernels counted as they traced them ([`RAY_COUNT`]).
+/// words): raw and final AO, the rays the kernels counted as they traced them ([`RAY_COUNT`]),
+/// and what the graph's [`Diagnostics`](aokit_shaders::graph::Diagnostics) declare.
 fn graph_run(
     graph: &Graph,
     passes: PassTimes,
@@ -367,41 +365,24 @@ fn graph_run(
 ) -> TechniqueRun {
     // Only the graph's own resources: an executor may still hold another technique's.
     let read = |name: &str| graph.resource(name).and_then(|_| read(name));
-    let f32s = |name: &str| -> Vec<f32> {
-        read(name).map(|w| w.into_iter().map(f32::from_bits).collect()).unwrap_or_default()
-    };
-    let mut run = TechniqueRun::plain(f32s(graph.raw_output), f32s(graph.output), passes);
+    let run = Executed { words: &read, depth: &gbuffer.depth, normals: &gbuffer.normals };
+    let mut result = TechniqueRun::plain(run.f32s(graph.raw_output), run.f32s(graph.output), passes);
     if let Some(words) = read(RAY_COUNT) {
-        run.rays = ray_count_of(&words);
+        result.rays = ray_count_of(&words);
     }
-    run.bent_normals = read(aokit_shaders::gtao::settings::BENT_NORMALS).unwrap_or_default();
-    let Some(record) = read("svao_frame") else { return run };
-    let svao: SvaoFrame =
-        bytemuck::pod_read_unaligned(&bytemuck::cast_slice::<u32, u8>(&record)[..size_of::<SvaoFrame>()]);
-    let params = &svao.params;
-    let mask = read("refine_mask").unwrap_or_default();
-    run.refined_samples = mask.iter().map(|m| m.count_ones() as u64).sum();
-    let sd = params.secondary == Secondary::StochasticDepth as u32;
-    let (ray_min, ray_max) = (read("ray_min").unwrap_or_default(), read("ray_max").unwrap_or_default());
-    let (depth, normals) = (&gbuffer.depth[..], &gbuffer.normals[..]);
-    let raster_map = graph.passes.iter().any(|p| matches!(p.kind, PassKind::Raster { .. }));
-    if sd && raster_map {
-        // The raster map "traces" no rays: count the SD texels it was asked for.
-        run.rays = ray_max.iter().filter(|&&m| m != 0).count() as u64;
-    } else if sd {
-        let (_, sum) = svao_cpu::sd_ray_stats(&svao, depth, normals, &ray_min, &ray_max);
-        run.interval_sum = Some(sum);
+    if let Some(name) = graph.diagnostics.bent_normals {
+        result.bent_normals = run.u32s(name);
     }
-    run.debug = Some(SvaoDebug {
-        ao_pass1: f32s("ao_pass1"),
-        mask,
-        ray_min: if sd { ray_min } else { Vec::new() },
-        ray_max: if sd { ray_max } else { Vec::new() },
-        sd_size: params.sd_size(),
-        sd_map: f32s("sd_map"),
-        layers: params.sd_layers,
-    });
-    run
+    if let Some(decode) = graph.diagnostics.refinement {
+        let refinement = decode(&run);
+        result.refined_samples = refinement.refined_samples;
+        result.interval_sum = refinement.interval_sum;
+        if let Some(rays) = refinement.rays {
+            result.rays = rays;
+        }
+        result.debug = Some(refinement);
+    }
+    result
 }
 
 /// XeGTAO's buffers after one frame (host copies), for per-pass comparisons.

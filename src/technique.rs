@@ -2,7 +2,6 @@
 //! G-buffer (the same G-buffer for every technique of a comparison).
 
 use crate::frame::Frame;
-use aokit_shaders::glam::UVec2;
 use aokit_shaders::groundtruth::GroundTruthParams;
 use aokit_shaders::gtao::GtaoParams;
 
@@ -74,21 +73,8 @@ impl Frame {
     }
 }
 
-/// Diagnostic buffers of a stenciled run, for the report's images.
-#[derive(Clone, Debug, Default)]
-pub struct SvaoDebug {
-    /// AO after pass 1 (final where `mask == 0`, the UNORM8-stored sum elsewhere).
-    pub ao_pass1: Vec<f32>,
-    /// Refinement mask per full-target pixel.
-    pub mask: Vec<u32>,
-    /// SD-size interval buffers (float bits; 0 = unset) and the SD size.
-    pub ray_min: Vec<u32>,
-    pub ray_max: Vec<u32>,
-    pub sd_size: UVec2,
-    /// SD map: `layers` normalized depths per SD texel.
-    pub sd_map: Vec<f32>,
-    pub layers: u32,
-}
+/// Diagnostic buffers of a stenciled run, for the report's images (what its graph declares).
+pub use aokit_shaders::graph::Refinement as SvaoDebug;
 
 /// One technique's result on a G-buffer.
 #[derive(Clone, Debug)]

@@ -333,31 +333,6 @@ pub fn run_raysvao_pass2(
     (ao, rays.into_inner())
 }
 
-/// SD rays a map with these interval buffers traces (texels with a non-empty interval) and
-/// their summed interval length `Σ (tMax − tMin)` in world units, by the same ray setup as
-/// [`run_sd_map`]; for reports on either back-end.
-pub fn sd_ray_stats(frame: &SvaoFrame, depth: &[f32], normals: &[u32], ray_min: &[u32], ray_max: &[u32]) -> (u64, f64) {
-    let params = &frame.params;
-    let sd = params.sd_size();
-    let gbuffer = GBufferSlices { depth, normals, width: params.vao.view.size().x };
-    (0..sd.y)
-        .into_par_iter()
-        .map(|y| {
-            let (mut rays, mut length) = (0u64, 0.0f64);
-            for x in 0..sd.x {
-                let q = uvec2(x, y);
-                let i = params.sd_index(q);
-                let ray = sd_ray(&gbuffer, frame, q, ray_min[i], ray_max[i]);
-                if ray.traced() {
-                    rays += 1;
-                    length += (ray.t_max - ray.t_min) as f64;
-                }
-            }
-            (rays, length)
-        })
-        .reduce(|| (0, 0.0), |a, b| (a.0 + b.0, a.1 + b.1))
-}
-
 /// The raster SD map on the CPU (spec svao-raysd §8): for every requested SD texel, every surface along the
 /// ray through the texel centre (what rasterization at SD resolution produces there) becomes a
 /// fragment for the shader crate's [`raster_fragment`] — alpha test, first-layer and interval

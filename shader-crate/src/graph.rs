@@ -445,6 +445,76 @@ pub struct Graph {
     /// Diagnostic copies for reports: after pass `after`, copy resource `from` into `to` (a
     /// declared resource of the same length).
     pub snapshots: Vec<Snapshot>,
+    /// What reports read besides the AO, declared here so that no executor or report names a
+    /// technique's buffers.
+    pub diagnostics: Diagnostics,
+}
+
+/// The diagnostics a graph offers its reports ([`Graph::diagnostics`]).
+#[derive(Copy, Clone, Debug, Default)]
+pub struct Diagnostics {
+    /// The resource holding bent normals (RGBA8 in a `u32` per full-target pixel), where the
+    /// graph writes them.
+    pub bent_normals: Option<&'static str>,
+    /// Decodes the stenciled family's refinement buffers after a run.
+    pub refinement: Option<fn(&Executed) -> Refinement>,
+}
+
+impl PartialEq for Diagnostics {
+    /// The same resources and the same decoder (by address: graphs compare equal when built by
+    /// the same code).
+    fn eq(&self, other: &Diagnostics) -> bool {
+        let decoder = |d: &Diagnostics| d.refinement.map(|f| f as usize);
+        self.bent_normals == other.bent_normals && decoder(self) == decoder(other)
+    }
+}
+
+/// A finished graph as a report reads it: a resource's words, and the G-buffer it ran on.
+pub struct Executed<'a> {
+    /// The words of the graph's resource `name` (`None` where the graph has none of that name).
+    pub words: &'a dyn Fn(&str) -> Option<Vec<u32>>,
+    /// Linear view depth per full-target pixel.
+    pub depth: &'a [f32],
+    /// Encoded view normals per full-target pixel.
+    pub normals: &'a [u32],
+}
+
+impl Executed<'_> {
+    /// Resource `name` as `f32`s (empty where the graph has none).
+    pub fn f32s(&self, name: &str) -> Vec<f32> {
+        (self.words)(name).map(|w| w.into_iter().map(f32::from_bits).collect()).unwrap_or_default()
+    }
+
+    /// Resource `name`'s words (empty where the graph has none).
+    pub fn u32s(&self, name: &str) -> Vec<u32> {
+        (self.words)(name).unwrap_or_default()
+    }
+}
+
+/// What a stenciled run refined and traced, and its buffers for the report's images.
+#[derive(Clone, Debug, Default)]
+pub struct Refinement {
+    /// Samples flagged for refinement in pass 1.
+    pub refined_samples: u64,
+    /// Rays the secondary visibility stands for where no ray counter counts them (the raster SD
+    /// map counts the SD texels it rasterized).
+    pub rays: Option<u64>,
+    /// Ray-SD: the summed interval length `Σ (tMax − tMin)` of the SD rays, world units.
+    pub interval_sum: Option<f64>,
+    /// AO after pass 1 (final where `mask == 0`, the UNORM8-stored sum elsewhere).
+    pub ao_pass1: Vec<f32>,
+    /// Refinement mask per full-target pixel.
+    pub mask: Vec<u32>,
+    /// SD-size interval buffers (float bits; 0 = unset), empty without an SD map.
+    pub ray_min: Vec<u32>,
+    /// See `ray_min`.
+    pub ray_max: Vec<u32>,
+    /// The SD map's size.
+    pub sd_size: crate::glam::UVec2,
+    /// SD map: `layers` normalized depths per SD texel.
+    pub sd_map: Vec<f32>,
+    /// Layers per SD texel.
+    pub layers: u32,
 }
 
 /// See [`Graph::snapshots`].

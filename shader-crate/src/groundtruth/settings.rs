@@ -107,6 +107,14 @@ impl GroundTruthSettings {
             ray_count: RAY_COUNT,
         };
         let passes = vec![Pass::ray_traced("groundtruth", SHADERS, bindings, Extent::Inner)];
-        Graph { resources, passes, output: "ao", raw_output: "ao", snapshots: Vec::new(), view: frame.camera.view }
+        Graph {
+            resources,
+            passes,
+            output: "ao",
+            raw_output: "ao",
+            snapshots: Vec::new(),
+            view: frame.camera.view,
+            diagnostics: Default::default(),
+        }
     }
 }

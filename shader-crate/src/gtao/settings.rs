@@ -4,7 +4,8 @@
 
 use super::{GtaoParams, MIP_LEVELS};
 use crate::graph::{
-    Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, Snapshot, inputs, target_f32, target_u32,
+    Diagnostics, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, Snapshot, inputs, target_f32,
+    target_u32,
 };
 use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
@@ -413,7 +414,17 @@ pub fn xegtao_graph(
         resources.push(target_u32(BENT_NORMALS, 0, BENT_NORMALS_DOC));
         snapshots.push(Snapshot { after: last, from: passes[last].bindings[2].resource, to: BENT_NORMALS });
     }
-    Graph { resources, passes, output: "ao_final", raw_output: "ao_final", snapshots, view: frame.camera.view }
+    let bent_normals = (params.bent_normals != 0).then_some(BENT_NORMALS);
+    let diagnostics = Diagnostics { bent_normals, ..Default::default() };
+    Graph {
+        resources,
+        passes,
+        output: "ao_final",
+        raw_output: "ao_final",
+        snapshots,
+        view: frame.camera.view,
+        diagnostics,
+    }
 }
 
 /// The optional bent-normal output of XeGTAO (`bent-normals on`).
@@ -456,11 +467,13 @@ pub fn denoise_passes(
 pub fn with_denoiser(frame: &FrameDesc, mut resources: Vec<Resource>, mut passes: Vec<Pass>, denoise: u32) -> Graph {
     let view = frame.camera.view;
     if denoise == 0 {
-        return Graph { resources, passes, output: "ao", raw_output: "ao", snapshots: Vec::new(), view };
+        let diagnostics = Diagnostics::default();
+        return Graph { resources, passes, output: "ao", raw_output: "ao", snapshots: Vec::new(), view, diagnostics };
     }
     let params = GtaoSettings { denoise_passes: denoise, ..Default::default() }.params(frame);
     let (r, p) = denoise_passes(&params, "ao_terms", "ao_edges", "ao_final", "denoise");
     resources.extend(r);
     passes.extend(p);
-    Graph { resources, passes, output: "ao_final", raw_output: "ao", snapshots: Vec::new(), view }
+    let diagnostics = Diagnostics::default();
+    Graph { resources, passes, output: "ao_final", raw_output: "ao", snapshots: Vec::new(), view, diagnostics }
 }

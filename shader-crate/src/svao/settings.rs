@@ -6,11 +6,12 @@
 use super::{Secondary, SvaoFrame, SvaoParams};
 use crate::blur::graph::blur_passes;
 use crate::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
+use crate::common::gbuffer_read::GBufferSlices;
 use crate::common::tables::{AO_SAMPLES, JitterTable, KERNEL_SAMPLE_COUNTS};
 use crate::glam::{UVec2, uvec2};
 use crate::graph::{
-    Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, RAY_COUNT, Resource, Size, Snapshot, inputs, ray_counter,
-    record, target_f32, target_u32,
+    Diagnostics, Elem, Executed, Extent, FrameDesc, Graph, Init, Lifetime, Pass, RAY_COUNT, Refinement, Resource, Size,
+    Snapshot, inputs, ray_counter, record, target_f32, target_u32,
 };
 use crate::technique::{Constant, Declaration, Setting, Settings};
 use crate::vao::kernel::{KERNEL_HBAO, KERNEL_VAO};
@@ -486,6 +487,68 @@ impl SvaoSettings {
         passes.extend(p);
         resources.push(target_f32("ao_pass1", 1.0, "copy of the AO after pass 1, for reports"));
         let snapshots = vec![Snapshot { after: 0, from: "ao", to: "ao_pass1" }];
-        Ok(Graph { resources, passes, output: "ao_final", raw_output: "ao", snapshots, view: frame.camera.view })
+        let refinement: fn(&Executed) -> Refinement =
+            if self.raster { rasterized_refinement } else { traced_refinement };
+        let diagnostics = Diagnostics { refinement: Some(refinement), ..Default::default() };
+        let view = frame.camera.view;
+        Ok(Graph { resources, passes, output: "ao_final", raw_output: "ao", snapshots, view, diagnostics })
+    }
+}
+
+/// The refinement of a run whose SD map (if any) was ray traced: the refined samples, the
+/// buffers, and for Ray-SD the rays' summed interval length `Σ (tMax − tMin)` by the map's own
+/// ray setup (spec svao-raysd §7).
+fn traced_refinement(run: &Executed) -> Refinement {
+    let mut r = refinement(run);
+    if !r.ray_max.is_empty() {
+        let frame = svao_frame(run);
+        let g = GBufferSlices { depth: run.depth, normals: run.normals, width: frame.params.vao.view.size().x };
+        let mut sum = 0.0f64;
+        for y in 0..r.sd_size.y {
+            for x in 0..r.sd_size.x {
+                let q = uvec2(x, y);
+                let i = frame.params.sd_index(q);
+                let ray = crate::raysd::sd_ray(&g, &frame, q, r.ray_min[i], r.ray_max[i]);
+                if ray.traced() {
+                    sum += (ray.t_max - ray.t_min) as f64;
+                }
+            }
+        }
+        r.interval_sum = Some(sum);
+    }
+    r
+}
+
+/// The refinement of a run with the raster SD map (spec svao-raysd §8), which traces no rays:
+/// its "rays" are the SD texels it was asked for.
+fn rasterized_refinement(run: &Executed) -> Refinement {
+    let r = refinement(run);
+    Refinement { rays: Some(r.ray_max.iter().filter(|&&m| m != 0).count() as u64), ..r }
+}
+
+/// The frame record the graph ran with.
+fn svao_frame(run: &Executed) -> SvaoFrame {
+    let record = run.u32s("svao_frame");
+    bytemuck::pod_read_unaligned(&bytemuck::cast_slice::<u32, u8>(&record)[..size_of::<SvaoFrame>()])
+}
+
+/// What every stenciled run reports: its refine mask, pass-1 AO and, with an SD map, the ray
+/// intervals and the map.
+fn refinement(run: &Executed) -> Refinement {
+    let params = svao_frame(run).params;
+    let mask = run.u32s("refine_mask");
+    let sd = params.secondary == Secondary::StochasticDepth as u32;
+    let intervals = |name| if sd { run.u32s(name) } else { Vec::new() };
+    Refinement {
+        refined_samples: mask.iter().map(|m| m.count_ones() as u64).sum(),
+        rays: None,
+        interval_sum: None,
+        ao_pass1: run.f32s("ao_pass1"),
+        mask,
+        ray_min: intervals("ray_min"),
+        ray_max: intervals("ray_max"),
+        sd_size: params.sd_size(),
+        sd_map: run.f32s("sd_map"),
+        layers: params.sd_layers,
     }
 }

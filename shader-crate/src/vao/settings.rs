@@ -64,5 +64,13 @@ pub fn graph(frame: &FrameDesc) -> Graph {
     let (r, p) = blur_passes(frame, "ao", "ao_final");
     resources.extend(r);
     passes.extend(p);
-    Graph { resources, passes, output: "ao_final", raw_output: "ao", snapshots: Vec::new(), view: frame.camera.view }
+    Graph {
+        resources,
+        passes,
+        output: "ao_final",
+        raw_output: "ao",
+        snapshots: Vec::new(),
+        view: frame.camera.view,
+        diagnostics: Default::default(),
+    }
 }
