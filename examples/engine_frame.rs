@@ -133,7 +133,7 @@ struct Engine {
 
 impl Engine {
     /// Instance (+ validation) and a device with what the engine's raster pass and aokit need
-    /// (see `Gpu::from_external`): Vulkan 1.3, `vulkanMemoryModel(DeviceScope)`,
+    /// (see `ExternalDevice`): Vulkan 1.3, `vulkanMemoryModel(DeviceScope)`,
     /// `dynamicRendering`, `synchronization2`, a graphics+compute queue with timestamps, and the
     /// ray-tracing extensions and features where the device has them.
     fn new(validation: bool) -> Result<Engine> {

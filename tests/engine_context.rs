@@ -470,7 +470,7 @@ fn mse(a: &[f32], b: &[f32]) -> f64 {
 
 /// What the CPU computes from the engine arrays: the imported linear depth and normals (the
 /// normals derived from depth by XeGTAO's pass 0 when the engine gives no normal image, as
-/// `record_engine` documents), then the graph, then the export into the engine's image.
+/// `AoFrame::normals` documents), then the graph, then the export into the engine's image.
 fn cpu_reference(
     renderer: &CpuRenderer,
     graph: &Graph,
@@ -628,15 +628,24 @@ fn effect_frames_agree_with_cpu_sim() {
         readback.destroy(&engine);
         targets.destroy(&images);
     }
-    // A technique whose graph rasterizes the scene itself is refused on one line, naming it.
-    effect.set_settings(effect_settings(&Technique::named("sdsvao").unwrap(), &frame)).unwrap();
+    // A technique whose graph rasterizes the scene itself is refused by set_settings, on one
+    // line naming it, and the effect keeps the settings it had.
+    let before = effect.settings().technique.name();
+    let refused = effect.set_settings(effect_settings(&Technique::named("sdsvao").unwrap(), &frame));
+    let e = refused.expect_err("sdsvao through the engine API").to_string();
+    assert!(e.contains("sdsvao") && e.contains("raster") && !e.contains('\n'), "{e}");
+    assert_eq!(effect.settings().technique.name(), before);
+    // An output format without an export kernel is refused before anything is recorded: the
+    // command buffer stays empty (null views would otherwise be written into descriptor sets,
+    // which the validation layer reports).
+    effect.set_settings(effect_settings(&techniques[0].1, &frame)).unwrap();
     let cmd = engine.begin();
-    let output = AoImage { view: vk::ImageView::null(), format: vk::Format::R32_SFLOAT };
+    let output = AoImage { view: vk::ImageView::null(), format: vk::Format::R8G8B8A8_UNORM };
     let depth = EngineImage { view: vk::ImageView::null(), layout: DEPTH_LAYOUT };
     let v = engine_view(&frame, DEPTH_REVERSED);
     let refused = effect.record(cmd, &AoFrame::new(depth, v.convention, output, v.projection, v.world_to_view));
-    let e = refused.expect_err("sdsvao through the engine API").to_string();
-    assert!(e.contains("sdsvao") && e.contains("raster") && !e.contains('\n'), "{e}");
+    let e = refused.expect_err("an RGBA8 AO image").to_string();
+    assert!(e.contains("R8G8B8A8_UNORM") && e.contains("R8_UNORM") && !e.contains('\n'), "{e}");
     engine.submit_and_wait(cmd);
     drop(rays);
     drop(effect); // the engine waited for every frame

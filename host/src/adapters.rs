@@ -42,8 +42,17 @@ use std::ffi::CStr;
 
 const GROUP: u32 = 8; // threads(8, 8) in the shader crate
 
-/// An engine image as an adapter input: a view and the layout it is in while the recorded
-/// commands execute.
+/// An engine image aokit reads: a 2D image of the engine's size (`AoEffect::resize`) with
+/// `SAMPLED` usage, viewed with one mip level and layer (a depth view with the `DEPTH` aspect
+/// only), whose writes the engine made visible to `COMPUTE_SHADER` reads before the recorded
+/// commands.
+///
+/// * Depth: `D32_SFLOAT`, `D16_UNORM`, `X8_D24_UNORM_PACK32`, or `R32_SFLOAT` holding linear
+///   view depth; in `DEPTH_STENCIL_READ_ONLY_OPTIMAL` (or `DEPTH_READ_ONLY_OPTIMAL` with
+///   `separateDepthStencilLayouts`, `SHADER_READ_ONLY_OPTIMAL`, `GENERAL`).
+/// * Normals: any format read as floats (`R8G8B8A8_UNORM`, `A2B10G10R10_UNORM_PACK32`,
+///   `R16G16B16A16_SFLOAT`, …) holding the view-space normal `n·0.5 + 0.5` in RGB; in
+///   `SHADER_READ_ONLY_OPTIMAL` or `GENERAL`.
 #[derive(Copy, Clone, Debug)]
 pub struct EngineImage {
     /// A 2D view of the image's first mip level and layer.
@@ -52,9 +61,11 @@ pub struct EngineImage {
     pub layout: vk::ImageLayout,
 }
 
-/// The engine's AO output image: a view (in `GENERAL` layout while the export runs) and its
-/// format: `R32_SFLOAT`, `R16_SFLOAT` or `R8_UNORM` (one export kernel each, whose storage
-/// image format matches the view's).
+/// The engine's AO output image: a 2D image of the engine's size with `STORAGE` usage, in
+/// `GENERAL` layout while the recorded commands run, format `R32_SFLOAT`, `R16_SFLOAT` or
+/// `R8_UNORM` (one export kernel each, whose storage image format matches the view's; another
+/// format is refused before anything is recorded). The engine's barrier after `record` makes
+/// the `COMPUTE_SHADER` writes visible to whatever reads it next.
 #[derive(Copy, Clone, Debug)]
 pub struct AoImage {
     /// A 2D view of the image's first mip level and layer, with storage usage.

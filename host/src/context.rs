@@ -33,7 +33,8 @@ impl GpuOptions {
 }
 
 /// What `aokit info` prints.
-#[derive(Clone, Debug, serde::Serialize)]
+#[derive(Clone, Debug)]
+#[cfg_attr(feature = "harness", derive(serde::Serialize))]
 pub struct DeviceInfo {
     /// `deviceName`.
     pub name: String,
@@ -110,10 +111,22 @@ pub(crate) struct RayTracing {
 /// supports (a clear error when it lacks the memory model, when the queue family lacks
 /// compute or timestamps, or when `ray_tracing` is set but the device cannot ray trace) and
 /// trusts the caller for the rest; the validation layer reports a missing feature.
+///
+/// # Rules for the caller
+///
+/// * aokit makes its own command pool and allocator on the device and destroys only those.
+///   Calls that submit (building an [`AoScene`](crate::AoScene)) wait for their own
+///   submissions before returning; `record` submits nothing.
+/// * Drop the effect and its scenes after the device finished the frames they recorded, and
+///   before destroying the device and the instance.
+/// * Don't use `queue` from another thread while an aokit call runs (Vulkan's external
+///   synchronisation of queues).
+/// * aokit installs no debug messenger on the engine's instance: install your own to see
+///   validation messages.
 #[derive(Clone)]
 pub struct ExternalDevice {
-    /// The loader `instance` was created from; the `Gpu` keeps it so the Vulkan library stays
-    /// loaded while it lives.
+    /// The loader `instance` was created from; aokit keeps it so the Vulkan library stays loaded
+    /// while the effect lives.
     pub entry: ash::Entry,
     /// The instance, created with `apiVersion` 1.3 or later (aokit cannot check this one).
     pub instance: ash::Instance,
@@ -121,8 +134,8 @@ pub struct ExternalDevice {
     pub physical_device: vk::PhysicalDevice,
     /// The logical device, created with the features and extensions listed above.
     pub device: ash::Device,
-    /// The family of `queue`: it must support compute and timestamps (`timestampValidBits > 0`),
-    /// and graphics as well for the raster passes.
+    /// The family of `queue`: it must support compute and timestamps (`timestampValidBits > 0`);
+    /// the command buffers given to `record` come from a pool of this family.
     pub queue_family_index: u32,
     /// The queue aokit submits to. Vulkan requires host access to a queue to be externally
     /// synchronised: while an aokit call runs, no other thread may submit to (or wait idle on)

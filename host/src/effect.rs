@@ -1,46 +1,4 @@
-//! The engine API: ambient occlusion as one effect on the engine's own Vulkan device, in four
-//! verbs — [`AoEffect::new`], [`AoEffect::resize`], [`AoEffect::set_settings`] and
-//! [`AoEffect::record`] — and one settings struct, [`AoSettings`].
-//!
-//! The engine hands its depth image with its convention, optionally its view-space normals, the
-//! AO output image, and its projection and view matrices ([`AoFrame`]); the effect derives
-//! aokit's camera from the matrices, rebuilds the technique's pass graph (a few small vectors)
-//! only when the settings, the size or the frame's camera or index changed (a moving camera is
-//! just a new frame), keeps its pipelines and buffers across frames and records everything into
-//! the engine's command buffer: no submit, no wait, no host round trip. Everything it made is
-//! freed when it is dropped: drop it (and every [`AoScene`]) once the device finished the frames
-//! it recorded, and before the engine destroys the device.
-//!
-//! ```no_run
-//! use aokit_vulkan::glam::Mat4;
-//! use aokit_vulkan::{AoEffect, AoFrame, AoImage, AoSettings, DepthConvention, EngineImage, ExternalDevice, Technique};
-//! use ash::vk;
-//!
-//! # struct Engine { device: ExternalDevice, cmd: vk::CommandBuffer, depth_view: vk::ImageView, ao_view: vk::ImageView }
-//! // `projection`: e.g. glam's `Mat4::perspective_infinite_reverse_rh` with Y flipped;
-//! // `view`: world → view, e.g. `Mat4::look_at_rh`.
-//! // Once: a technique at one of its presets, on the engine's device and queue.
-//! fn setup(device: ExternalDevice) -> Result<AoEffect, Box<dyn std::error::Error>> {
-//!     let settings = AoSettings::new(Technique::preset("gtao", "high")?).radius(0.5);
-//!     let mut ao = AoEffect::new(device, settings)?;
-//!     ao.resize(1920, 1080)?;
-//!     Ok(ao)
-//! }
-//!
-//! // Every frame, after the depth pass, into the engine's command buffer (which the engine then
-//! // submits; `ao` lives on across frames).
-//! fn frame(ao: &mut AoEffect, engine: &Engine, projection: Mat4, view: Mat4) -> Result<(), Box<dyn std::error::Error>> {
-//!     let Engine { cmd, depth_view, ao_view, .. } = *engine;
-//!     let depth = EngineImage { view: depth_view, layout: vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL };
-//!     let output = AoImage { view: ao_view, format: vk::Format::R8_UNORM };
-//!     ao.record(cmd, &AoFrame::new(depth, DepthConvention::ReversedInfinite, output, projection, view))?;
-//!     Ok(())
-//! }
-//! ```
-//!
-//! The images' formats, usages and layouts and the barriers around `record` are in
-//! `docs/vulkan.md` and on [`EngineImage`] / [`AoImage`]; the device's extensions and features
-//! on [`ExternalDevice`].
+//! The engine API ([`AoEffect`]); its documentation is the crate's (`lib.rs`).
 
 use crate::graph::{AoContext, EngineFrame, check_device};
 use crate::{AoImage, EngineImage, ExternalDevice, Gpu, GpuError, SceneAccel};
@@ -54,8 +12,10 @@ use aokit_shaders::temporal::settings::TemporalSettings;
 use ash::vk;
 use std::sync::Arc;
 
-/// Why the effect could not be made or a frame could not be recorded. Nothing was recorded
-/// into the command buffer when `record` returns an error.
+/// Why the effect could not be made or a frame could not be recorded. When `record` returns an
+/// error nothing was recorded into the command buffer, unless a device allocation (a buffer,
+/// descriptor pool or query pool made for the frame) failed part-way: then discard the command
+/// buffer.
 #[derive(Debug, thiserror::Error)]
 pub enum AoError {
     /// The settings are out of range, or name a technique or setting that does not exist.
@@ -173,6 +133,11 @@ impl AoSettings {
         AoSettings { rt_mode: Some(mode), ..self }
     }
 
+    /// With pixels at and beyond view depth `depth` treated as background.
+    pub fn background_depth(self, depth: f32) -> AoSettings {
+        AoSettings { background_depth: Some(depth), ..self }
+    }
+
     fn check(&self) -> Result<(), AoError> {
         let positive = |what: &str, v: f32| {
             if v.is_finite() && v > 0.0 { Ok(()) } else { Err(AoError::Settings(format!("{what} {v}: expected > 0"))) }
@@ -197,7 +162,7 @@ impl AoSettings {
 
 /// One frame of the engine: its images, its camera and its place in a sequence. Made with
 /// [`AoFrame::new`] and the builder methods.
-#[derive(Copy, Clone)]
+#[derive(Copy, Clone, Debug)]
 pub struct AoFrame<'a> {
     /// The depth image (hardware depth in `depth_convention`, or linear depth).
     pub depth: EngineImage,
@@ -301,6 +266,12 @@ impl AoScene {
     }
 }
 
+impl std::fmt::Debug for AoScene {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("AoScene").finish_non_exhaustive()
+    }
+}
+
 impl Drop for AoScene {
     fn drop(&mut self) {
         if let Some(accel) = self.accel.take() {
@@ -315,7 +286,7 @@ struct BuiltGraph {
     graph: Graph,
 }
 
-/// Ambient occlusion on the engine's device (see the module documentation).
+/// Ambient occlusion on the engine's device (see the crate documentation).
 pub struct AoEffect {
     /// Declared before `gpu`: dropped (and so freed) first.
     context: AoContext<Arc<Gpu>>,
@@ -325,13 +296,23 @@ pub struct AoEffect {
     built: Option<BuiltGraph>,
 }
 
+impl std::fmt::Debug for AoEffect {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("AoEffect").field("settings", &self.settings).field("size", &self.size).finish_non_exhaustive()
+    }
+}
+
 impl AoEffect {
     /// The effect on the engine's device (see [`ExternalDevice`] for the extensions and features
     /// it must have been created with) running `settings`.
+    /// A technique the effect cannot run on this device (a raster pass, ray tracing the device
+    /// lacks) is refused here, not at the first `record`.
     pub fn new(device: ExternalDevice, settings: AoSettings) -> Result<AoEffect, AoError> {
         settings.check()?;
         let gpu = Arc::new(Gpu::from_external(device)?);
-        Ok(AoEffect { context: AoContext::new(gpu.clone()), gpu, settings, size: None, built: None })
+        let effect = AoEffect { context: AoContext::new(gpu.clone()), gpu, settings, size: None, built: None };
+        effect.build_graph(&effect.settings, &effect.probe_desc(&effect.settings))?;
+        Ok(effect)
     }
 
     /// Set the size of the engine's images (depth, normals, output) in texels. Call it before
@@ -348,12 +329,22 @@ impl AoEffect {
         Ok(())
     }
 
-    /// Replace the settings; the next frame runs them.
+    /// Replace the settings; the next frame runs them. Settings the effect cannot run on this
+    /// device are refused (and the old ones kept).
     pub fn set_settings(&mut self, settings: AoSettings) -> Result<(), AoError> {
         settings.check()?;
+        self.build_graph(&settings, &self.probe_desc(&settings))?;
         self.settings = settings;
         self.built = None;
         Ok(())
+    }
+
+    /// Forget the descriptor sets that bind the engine's images and the scene, so the next frame
+    /// writes new ones. Call it after destroying an image view (or a TLAS) that an earlier frame
+    /// used without a [`AoEffect::resize`] (which does this too): a new view may get the old
+    /// handle.
+    pub fn invalidate_bindings(&mut self) {
+        self.context.invalidate_bindings();
     }
 
     /// The settings in use.
@@ -364,10 +355,16 @@ impl AoEffect {
     /// Does the technique trace rays at the current size and settings (then every frame needs
     /// [`AoFrame::scene`])?
     pub fn traces_rays(&self) -> Result<bool, AoError> {
-        let size = self.size.ok_or(AoError::NotResized)?;
+        self.size.ok_or(AoError::NotResized)?;
         let s = &self.settings;
-        // Which passes a graph has depends on the settings and the size, not on the camera.
-        let full = size + 2 * s.guard;
+        Ok(s.technique.graph(&self.probe_desc(s)).map_err(AoError::Settings)?.traces_rays())
+    }
+
+    /// A frame of `settings` at the effect's size (64×64 before the first `resize`) seen by a
+    /// nominal camera: which passes a graph has depends on the settings and the size, not on
+    /// the camera.
+    fn probe_desc(&self, s: &AoSettings) -> FrameDesc {
+        let full = self.size.unwrap_or(UVec2::splat(64)) + 2 * s.guard;
         let view = ViewParams {
             res: full.as_vec2(),
             tan_half_fov: vec2(1.0, 1.0),
@@ -377,8 +374,7 @@ impl AoEffect {
             _pad: 0,
         };
         let camera = Camera { world_to_view: Mat4::IDENTITY, view_to_world: Mat4::IDENTITY, view };
-        let desc = FrameDesc { temporal: s.temporal, ..FrameDesc::new(camera, s.radius, s.exponent, s.thickness) };
-        Ok(s.technique.graph(&desc).map_err(AoError::Settings)?.traces_rays())
+        FrameDesc { temporal: s.temporal, ..FrameDesc::new(camera, s.radius, s.exponent, s.thickness) }
     }
 
     /// Build an acceleration structure of `geometry` for the ray-traced techniques (submits the
@@ -423,7 +419,7 @@ impl AoEffect {
             ..FrameDesc::new(camera, s.radius, s.exponent, s.thickness)
         };
         if self.built.as_ref().is_none_or(|b| b.desc != desc) {
-            self.built = Some(BuiltGraph { desc, graph: self.build_graph(&desc)? });
+            self.built = Some(BuiltGraph { desc, graph: self.build_graph(&self.settings, &desc)? });
         }
         let graph = &self.built.as_ref().expect("built above").graph;
         // What this frame must give, checked every frame before anything is recorded.
@@ -457,12 +453,12 @@ impl AoEffect {
         Ok(self.context.record_engine(cmd, graph, &engine_frame)?)
     }
 
-    /// The technique's graph for `desc`, checked against the device and the frame.
-    fn build_graph(&self, desc: &FrameDesc) -> Result<Graph, AoError> {
-        let technique = &self.settings.technique;
+    /// The graph of `settings` for `desc`, checked against the device and the engine API.
+    fn build_graph(&self, settings: &AoSettings, desc: &FrameDesc) -> Result<Graph, AoError> {
+        let technique = &settings.technique;
         let graph = technique.graph(desc).map_err(AoError::Settings)?;
         let mode =
-            self.settings.rt_mode.unwrap_or(if self.gpu.has_ray_tracing() { RtMode::Pipeline } else { RtMode::Query });
+            settings.rt_mode.unwrap_or(if self.gpu.has_ray_tracing() { RtMode::Pipeline } else { RtMode::Query });
         let graph = graph.with_rt_mode(mode);
         let name = technique.name();
         if graph.passes.iter().any(|p| matches!(p.kind, PassKind::Raster { .. })) {

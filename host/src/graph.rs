@@ -32,7 +32,9 @@ use std::borrow::Borrow;
 use std::collections::HashMap;
 use std::ffi::CString;
 
-/// Frames a replaced buffer or descriptor pool is kept before it is freed.
+/// Frames that may be in flight: what a frame replaced (a buffer re-made at another size, a
+/// descriptor pool) is freed this many `record` calls later, so before recording frame F + 3 the
+/// engine must have waited for frame F.
 pub const FRAMES_IN_FLIGHT: u64 = 3;
 
 /// An engine's frame (see `crate::adapters` for formats, usages and layouts): its depth image
@@ -250,6 +252,12 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         }
         let kernel = pass.kernel;
         let slots = kernel.slot_count();
+        if let Some((name, _)) = kernel.push_constants.filter(|_| kernel.push_constant_bytes() == 0) {
+            return Err(GpuError::Input(format!(
+                "'{}': push constants {name} have no shared-struct layout (derive Layout)",
+                kernel.entry
+            )));
+        }
         let pipeline = match pass.kind {
             PassKind::Compute => {
                 let entry = CString::new(pass.entry()).expect("entry names have no NUL");
@@ -465,6 +473,23 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         if frame.import.view != graph.view {
             return Err(GpuError::Input("EngineFrame::import.view differs from the graph's camera view".into()));
         }
+        if !Adapters::EXPORT_FORMATS.iter().any(|e| e.0 == frame.output.format) {
+            let formats: Vec<_> = Adapters::EXPORT_FORMATS.iter().map(|e| e.0).collect();
+            return Err(GpuError::Input(format!(
+                "AO output format {:?}: expected one of {formats:?}",
+                frame.output.format
+            )));
+        }
+        // Without the engine's normals, the graph derives them from depth first.
+        let mut full = if frame.normals.is_none() { graph.clone().with_normals_from_depth() } else { graph.clone() };
+        // Diagnostic copies are for reports, not engine frames.
+        full.snapshots.clear();
+        // What can fail short of running out of memory fails here, before anything is recorded.
+        full.validate().map_err(GpuError::Input)?;
+        check_device(self.gpu(), &full)?;
+        for pass in &full.passes {
+            self.ensure_pipeline(pass)?;
+        }
         if self.adapters.is_none() {
             self.adapters = Some(Adapters::new(self.gpu())?);
         }
@@ -496,10 +521,6 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             let sets = &mut self.adapter_sets;
             adapters.record_import_from(gpu, cmd, sets, &frame.import, (image, buffer), None)?;
         }
-        // Without the engine's normals, the graph derives them from depth first.
-        let mut full = if frame.normals.is_none() { graph.clone().with_normals_from_depth() } else { graph.clone() };
-        // Diagnostic copies are for reports, not engine frames.
-        full.snapshots.clear();
         let (depth, normals) = (&self.resources[ENGINE_DEPTH].buffer, &self.resources[ENGINE_NORMALS].buffer);
         let second_depth = second.map(|_| &self.resources[ENGINE_SECOND_DEPTH].buffer as *const Buffer);
         // SAFETY of the aliasing below: the resources are boxed (inserting others does not move
