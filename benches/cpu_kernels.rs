@@ -72,7 +72,12 @@ fn kernels(c: &mut Criterion) {
     let gt = frame.ground_truth_params(4, false);
     group.throughput(Throughput::Elements(4 * frame.inner.x as u64 * frame.inner.y as u64));
     group.bench_function("groundtruth_ao_rays", |bench| {
-        bench.iter(|| renderer.ground_truth(&frame, &g, &gt, &no_progress))
+        let gt = aokit_shaders::groundtruth::GroundTruthFrame {
+            camera: frame.camera,
+            params: gt,
+            ..bytemuck::Zeroable::zeroed()
+        };
+        bench.iter(|| aokit_cpu::run_ground_truth(renderer.bvh(), &renderer.surfaces(), &gt, &g, &no_progress))
     });
     group.finish();
 

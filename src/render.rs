@@ -1,13 +1,14 @@
-//! The VAO pipeline on either back-end: G-buffer → VAO → bilateral blur.
+//! A technique on either back-end: the G-buffer (ray cast on the CPU, rasterized on Vulkan),
+//! then the technique's pass graph through cpu-sim's executor or aokit-vulkan's, read back as a
+//! [`TechniqueRun`] with what the graph's diagnostics declare.
 
 use crate::frame::Frame;
 use crate::scene::Scene;
-use crate::technique::{GroundTruthSettings, GtaoOptions, Technique, TechniqueRun};
+use crate::technique::{Technique, TechniqueRun};
 use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
-use aokit_shaders::graph::{Executed, FrameDesc, Graph, RAY_COUNT, RtMode, ray_count_of};
-use aokit_shaders::groundtruth::{GroundTruthFrame, GroundTruthParams};
+use aokit_shaders::graph::{Executed, Graph, RAY_COUNT, RtMode, ray_count_of};
 use aokit_vulkan::{AoContext, GpuInputs};
 use aokit_vulkan::{
     Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, RasterFrame, RasterGBuffer, RasterScene, SceneAccel,
@@ -18,23 +19,6 @@ use std::time::Instant;
 
 /// `(pass, milliseconds)` per pass.
 pub type PassTimes = Vec<(&'static str, f64)>;
-
-/// Result of one render: the G-buffer it used, AO before and after the blur (full target,
-/// guard band = 1), and time per pass.
-pub struct Render {
-    pub gbuffer: GBufferImage,
-    pub ao: Vec<f32>,
-    pub ao_blurred: Vec<f32>,
-    /// `(pass, milliseconds)`: wall clock on the CPU, timestamp queries on Vulkan.
-    pub passes: PassTimes,
-}
-
-impl Render {
-    /// A render without a blur pass (the ground truth): both AO fields hold `ao`.
-    pub fn unblurred(gbuffer: GBufferImage, ao: Vec<f32>, passes: PassTimes) -> Render {
-        Render { gbuffer, ao_blurred: ao.clone(), ao, passes }
-    }
-}
 
 fn ms_since(t: Instant) -> f64 {
     t.elapsed().as_secs_f64() * 1e3
@@ -71,20 +55,6 @@ impl CpuRenderer {
         (g, ms_since(t))
     }
 
-    /// Ground-truth AO (spec gtao-raymarch-hybrid §5) on a given G-buffer.
-    pub fn ground_truth(
-        &self,
-        frame: &Frame,
-        gbuffer: &GBufferImage,
-        params: &GroundTruthParams,
-        progress: Progress,
-    ) -> (Vec<f32>, f64) {
-        let t = Instant::now();
-        let gt = GroundTruthFrame { camera: frame.camera, params: *params, ..bytemuck::Zeroable::zeroed() };
-        let (ao, _) = aokit_cpu::run_ground_truth(&self.bvh, &self.surfaces(), &gt, gbuffer, progress);
-        (ao, ms_since(t))
-    }
-
     /// The scene's BVH (for tests and benches that drive the CPU kernels directly).
     pub fn bvh(&self) -> &SceneBvh {
         &self.bvh
@@ -99,25 +69,6 @@ impl CpuRenderer {
             mask_headers: &self.masks.0,
             mask_texels: &self.masks.1,
         }
-    }
-
-    /// VAO and blur on a given G-buffer.
-    pub fn ao(frame: &Frame, gbuffer: GBufferImage, progress: Progress) -> Render {
-        let t = Instant::now();
-        let ao = aokit_cpu::run_vao(&frame.vao_params(), &gbuffer.depth, &gbuffer.normals, progress);
-        let vao_ms = ms_since(t);
-        let t = Instant::now();
-        let ao_blurred = aokit_cpu::run_blur(&frame.blur_params(), &ao, &gbuffer.depth);
-        let passes = vec![("vao", vao_ms), ("blur", ms_since(t))];
-        Render { gbuffer, ao, ao_blurred, passes }
-    }
-
-    /// The whole pipeline.
-    pub fn render(&self, frame: &Frame, progress: Progress) -> Render {
-        let (gbuffer, gbuffer_ms) = self.gbuffer(frame, progress);
-        let mut r = Self::ao(frame, gbuffer, progress);
-        r.passes.insert(0, ("gbuffer", gbuffer_ms));
-        r
     }
 }
 
@@ -224,30 +175,6 @@ impl VulkanRenderer {
         Ok((r, image, ms))
     }
 
-    /// VAO and blur on a given G-buffer (uploaded).
-    pub fn ao(&self, frame: &Frame, gbuffer: GBufferImage) -> Result<Render, GpuError> {
-        let run = self.run_graph_without_scene(
-            frame,
-            &gbuffer,
-            &Technique::new(&aokit_shaders::vao::settings::VAO, Default::default()),
-        )?;
-        Ok(Render { gbuffer, ao: run.ao, ao_blurred: run.ao_final, passes: run.passes })
-    }
-
-    /// A technique that neither traces rays nor peels a second layer.
-    fn run_graph_without_scene(
-        &self,
-        frame: &Frame,
-        gbuffer: &GBufferImage,
-        technique: &Technique,
-    ) -> Result<TechniqueRun, GpuError> {
-        let graph = technique.graph(&frame.desc()).expect("a technique with a graph");
-        self.graph_frame(None, frame, gbuffer, technique, &graph, |ctx, passes| {
-            let read = |name: &str| ctx.download::<u32>(name).ok();
-            graph_run(&graph, passes, &read, gbuffer)
-        })
-    }
-
     /// Upload a host G-buffer, run `pass` on its device buffers (depth, normals), free them.
     fn with_uploaded_gbuffer<R>(
         &self,
@@ -263,34 +190,6 @@ impl VulkanRenderer {
         });
         self.gpu.free_buffer(depth);
         out
-    }
-
-    /// Ground truth by Vulkan ray tracing on a given G-buffer (uploaded). Returns the AO
-    /// (full target) and `(pass, ms)` (the acceleration-structure build when it was built now).
-    pub fn ground_truth(
-        &self,
-        scene: &Scene,
-        frame: &Frame,
-        gbuffer: &GBufferImage,
-        params: &GroundTruthParams,
-    ) -> Result<(Vec<f32>, PassTimes), GpuError> {
-        let settings = GroundTruthSettings { spp: params.samples, uniform: params.uniform != 0 };
-        // The given radius and exponent, not the frame's.
-        let desc = FrameDesc { radius: params.radius, exponent: params.exponent, ..frame.desc() };
-        let technique = Technique::new(&aokit_shaders::groundtruth::settings::GROUNDTRUTH, settings);
-        let mut run = self.run_graph(scene, frame, gbuffer, &technique, &settings.graph(&desc))?;
-        if let Some(ms) = self.last_accel_build.take() {
-            run.passes.insert(0, ("accel_build", ms));
-        }
-        Ok((run.ao_final, run.passes))
-    }
-
-    /// The whole pipeline (raster G-buffer, VAO, blur).
-    pub fn render(&self, scene: &Scene, frame: &Frame) -> Result<Render, GpuError> {
-        let (gbuffer, gbuffer_ms) = self.gbuffer(scene, frame)?;
-        let mut r = self.ao(frame, gbuffer)?;
-        r.passes.insert(0, ("gbuffer", gbuffer_ms));
-        Ok(r)
     }
 }
 
@@ -373,8 +272,8 @@ fn graph_run(
     if let Some(name) = graph.diagnostics.bent_normals {
         result.bent_normals = run.u32s(name);
     }
-    if let Some(decode) = graph.diagnostics.refinement {
-        let refinement = decode(&run);
+    if let Some(decoder) = graph.diagnostics.refinement {
+        let refinement = (decoder.decode)(&run);
         result.refined_samples = refinement.refined_samples;
         result.interval_sum = refinement.interval_sum;
         if let Some(rays) = refinement.rays {
@@ -383,19 +282,6 @@ fn graph_run(
         result.debug = Some(refinement);
     }
     result
-}
-
-/// XeGTAO's buffers after one frame (host copies), for per-pass comparisons.
-pub struct GtaoOutput {
-    /// Visibility per pixel of the full target after the last denoise pass.
-    pub ao: Vec<f32>,
-    /// The packed MIP chain, the main pass's terms and edges, and (pass 0) the normals.
-    pub mips: Vec<f32>,
-    pub terms: Vec<u32>,
-    pub edges: Vec<u32>,
-    pub normals: Option<Vec<u32>>,
-    /// GPU time per pass in ms.
-    pub pass_ms: Vec<(&'static str, f64)>,
 }
 
 /// Identity of a loaded scene for the acceleration-structure cache.
@@ -631,19 +517,25 @@ impl VulkanRenderer {
         result
     }
 
-    /// XeGTAO's passes on a given G-buffer (uploaded), with every intermediate buffer.
-    pub fn gtao(&self, frame: &Frame, gbuffer: &GBufferImage, options: &GtaoOptions) -> Result<GtaoOutput, GpuError> {
-        let technique = Technique::new(&aokit_shaders::gtao::settings::GTAO, *options);
-        let graph = technique.graph(&frame.desc()).expect("XeGTAO has a graph");
-        self.graph_frame(None, frame, gbuffer, &technique, &graph, |ctx, pass_ms| {
-            Ok(GtaoOutput {
-                ao: ctx.download(graph.output)?,
-                mips: ctx.download("gtao_mips")?,
-                terms: ctx.download("gtao_terms")?,
-                edges: ctx.download("gtao_edges")?,
-                normals: if options.normals_from_depth { Some(ctx.download("gtao_normals")?) } else { None },
-                pass_ms,
-            })
+    /// `technique`'s graph on a given G-buffer (uploaded; a technique that needs no scene), and
+    /// afterwards the words of each of its resources `names` (for per-pass comparisons) with the
+    /// pass times.
+    pub fn resources_after(
+        &self,
+        frame: &Frame,
+        gbuffer: &GBufferImage,
+        technique: &Technique,
+        names: &[&str],
+    ) -> Result<(Vec<Vec<u32>>, PassTimes), GpuError> {
+        let graph = technique.graph(&frame.desc()).map_err(GpuError::Input)?;
+        for name in names {
+            if graph.resource(name).is_none() {
+                return Err(GpuError::Input(format!("{} has no resource '{name}'", technique.name())));
+            }
+        }
+        self.graph_frame(None, frame, gbuffer, technique, &graph, |ctx, pass_ms| {
+            let words: Result<Vec<_>, GpuError> = names.iter().map(|name| ctx.download::<u32>(name)).collect();
+            Ok((words?, pass_ms))
         })?
     }
 }

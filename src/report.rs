@@ -481,7 +481,7 @@ fn interval_lengths(w: u32, h: u32, ray_min: &[u32], ray_max: &[u32]) -> RgbImag
 
 /// The SD map's layers side by side, each tinted with its slot's colour; brightness falls with
 /// linear depth over the G-buffer's depth range; empty texels are black.
-fn sd_layers(debug: &crate::technique::SvaoDebug, frame: &Frame, gbuffer: &GBufferImage) -> RgbImage {
+fn sd_layers(debug: &aokit_shaders::graph::Refinement, frame: &Frame, gbuffer: &GBufferImage) -> RgbImage {
     const COLOURS: [[f32; 3]; 8] = [
         [1.0, 0.3, 0.3],
         [0.3, 1.0, 0.3],

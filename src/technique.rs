@@ -2,6 +2,7 @@
 //! G-buffer (the same G-buffer for every technique of a comparison).
 
 use crate::frame::Frame;
+use aokit_shaders::graph::Refinement;
 use aokit_shaders::groundtruth::GroundTruthParams;
 use aokit_shaders::gtao::GtaoParams;
 
@@ -73,9 +74,6 @@ impl Frame {
     }
 }
 
-/// Diagnostic buffers of a stenciled run, for the report's images (what its graph declares).
-pub use aokit_shaders::graph::Refinement as SvaoDebug;
-
 /// One technique's result on a G-buffer.
 #[derive(Clone, Debug)]
 pub struct TechniqueRun {
@@ -91,7 +89,9 @@ pub struct TechniqueRun {
     pub refined_samples: u64,
     /// Ray-SD: summed interval length `Σ (tMax − tMin)` of the SD rays, world units.
     pub interval_sum: Option<f64>,
-    pub debug: Option<SvaoDebug>,
+    /// The stenciled family's refinement and buffers, for the report's images (what its graph
+    /// declares: `Graph::diagnostics`).
+    pub debug: Option<Refinement>,
     /// Vulkan graph techniques: wall time of the technique's one command buffer from submit to
     /// fence, ms (compare with the sum of its pass timestamps: host round trips show as the gap).
     pub frame_ms: Option<f64>,

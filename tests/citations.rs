@@ -40,7 +40,7 @@ const EXTERNAL: [&str; 8] = [
 
 /// Where every `§` must belong to a citation that names its document. Not the generated files
 /// (`assets/`: regenerated from the Rust sources) and not the prose docs outside `docs/algorithms/`.
-const STRICT_DIRS: [&str; 9] = [
+const STRICT_DIRS: [&str; 10] = [
     "shader-crate/src/",
     "cpu-sim/src/",
     "host/src/",
@@ -50,11 +50,21 @@ const STRICT_DIRS: [&str; 9] = [
     "bench/",
     "benches/",
     "xtask/src/",
+    "xtask/contract/src/",
 ];
 
 /// Directories walked when git is unavailable (plus the top-level files below).
-const FALLBACK_DIRS: [&str; 8] =
-    ["src", "shader-crate/src", "cpu-sim/src", "host/src", "xtask/src", "tests", "examples", "docs"];
+const FALLBACK_DIRS: [&str; 9] = [
+    "src",
+    "shader-crate/src",
+    "cpu-sim/src",
+    "host/src",
+    "xtask/src",
+    "xtask/contract/src",
+    "tests",
+    "examples",
+    "docs",
+];
 const FALLBACK_FILES: [&str; 2] = ["README.md", "CONTRIBUTING.md"];
 
 /// This file: it spells out the forbidden strings and example citations.

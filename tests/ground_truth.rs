@@ -101,7 +101,7 @@ fn floor_under_a_ceiling_matches_the_closed_form() {
         let cpu = CpuRenderer::new(&scene);
         let (g, _) = cpu.gbuffer(&frame, &no_progress);
         let params = GroundTruthParams { radius: 1.0, exponent: 1.0, samples: 512, uniform };
-        let (ao, _) = cpu.ground_truth(&frame, &g, &params, &no_progress);
+        let ao = common::cpu_ground_truth(&cpu, &frame, &g, &params);
         let inner = crop_inner(&frame.camera.view, &ao);
         let mean = inner.iter().map(|&a| a as f64).sum::<f64>() / inner.len() as f64;
         let expected = (gap as f64).powi(2);
@@ -127,7 +127,7 @@ fn cornell_box_converges_by_512_samples() {
     let (g, _) = cpu.gbuffer(&frame, &no_progress);
     let run = |samples| {
         let params = GroundTruthParams { radius: frame.radius, exponent: 1.0, samples, uniform: 0 };
-        cpu.ground_truth(&frame, &g, &params, &no_progress).0
+        common::cpu_ground_truth(&cpu, &frame, &g, &params)
     };
     let (a, b) = (run(512), run(4096));
     let view = frame.camera.view;

@@ -117,7 +117,7 @@ fn dumped_rays_are_the_ground_truths_and_the_answers_recount() {
     let renderer = CpuRenderer::new(&scene);
     let (gbuffer, _) = renderer.gbuffer(&frame, &no_progress);
     let params = frame.ground_truth_params(SPP as u32, false);
-    let (ao, _) = renderer.ground_truth(&frame, &gbuffer, &params, &no_progress);
+    let ao = common::cpu_ground_truth(&renderer, &frame, &gbuffer, &params);
     let view = frame.camera.view;
     for (i, xy) in pixels.chunks_exact(2).enumerate() {
         let index = (xy[1] * size.x + xy[0]) as usize;

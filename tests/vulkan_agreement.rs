@@ -5,6 +5,7 @@ mod common;
 
 use aokit::output::crop_inner;
 use aokit::render::CpuRenderer;
+use aokit::technique::Technique;
 use aokit_cpu::no_progress;
 
 /// Fraction of inner pixels whose |cpu − gpu| is within 1/255 and the largest difference
@@ -19,14 +20,15 @@ fn vao_spirv_agrees_with_cpu_sim_on_the_same_gbuffer() {
     let (scene, frame) = common::builtin_frame("sponza", 256, 256, 64);
     let cpu = CpuRenderer::new(&scene);
     let (gbuffer, _) = cpu.gbuffer(&frame, &no_progress);
-    let on_cpu = CpuRenderer::ao(&frame, gbuffer.clone(), &no_progress);
-    let on_gpu = vk.ao(&frame, gbuffer).unwrap();
+    let vao = Technique::named("vao").unwrap();
+    let on_cpu = cpu.run(&frame, &gbuffer, &vao, &no_progress);
+    let on_gpu = vk.run(&scene, &frame, &gbuffer, &vao).unwrap();
     let view = frame.camera.view;
     // The image must actually contain occlusion for the comparison to mean something.
     let inner = crop_inner(&view, &on_cpu.ao);
     let occluded = inner.iter().filter(|&&a| a < 0.9).count();
     assert!(occluded > inner.len() / 50, "only {occluded} occluded pixels");
-    for (name, a, b) in [("vao", &on_cpu.ao, &on_gpu.ao), ("vao+blur", &on_cpu.ao_blurred, &on_gpu.ao_blurred)] {
+    for (name, a, b) in [("vao", &on_cpu.ao, &on_gpu.ao), ("vao+blur", &on_cpu.ao_final, &on_gpu.ao_final)] {
         let (within, max) = compare(&view, a, b);
         eprintln!("{name}: {:.4} % within 1/255, max |Δ| = {max:.2e} ({:.3}/255)", 100.0 * within, max * 255.0);
         assert!(within >= 0.999, "{name}: only {:.3} % within 1/255", 100.0 * within);
@@ -80,9 +82,12 @@ fn raster_gbuffer_matches_ray_cast_gbuffer() {
 fn full_vulkan_pipeline_matches_cpu_pipeline_on_the_tower() {
     let Some(vk) = common::vulkan() else { return };
     let (scene, frame) = common::builtin_frame("tower", 160, 120, 32);
-    let gpu = vk.render(&scene, &frame).unwrap();
-    let cpu = CpuRenderer::new(&scene).render(&frame, &no_progress);
-    let (within, max) = compare(&frame.camera.view, &cpu.ao_blurred, &gpu.ao_blurred);
+    let vao = Technique::named("vao").unwrap();
+    let (gpu, _) = vk.frame(&scene, &frame, &vao, false).unwrap();
+    let cpu_renderer = CpuRenderer::new(&scene);
+    let (gbuffer, _) = cpu_renderer.gbuffer(&frame, &no_progress);
+    let cpu = cpu_renderer.run(&frame, &gbuffer, &vao, &no_progress);
+    let (within, max) = compare(&frame.camera.view, &cpu.ao_final, &gpu.ao_final);
     eprintln!("tower end to end: {:.3} % within 1/255, max {max:.3}", 100.0 * within);
     // Different G-buffers (raster vs rays) differ at silhouettes; the bulk must agree.
     assert!(within >= 0.97, "only {:.3} % within 1/255", 100.0 * within);
@@ -125,14 +130,17 @@ fn ground_truth_ray_tracing_agrees_with_the_cpu_bvh() {
     if !vk.gpu.has_ray_tracing() {
         panic!("device '{}' has no ray-tracing pipelines", vk.gpu.info().name);
     }
-    use aokit_shaders::groundtruth::GroundTruthParams;
     for name in ["tower", "sponza"] {
-        let (scene, frame) = common::builtin_frame(name, 96, 64, 16);
+        let (scene, mut frame) = common::builtin_frame(name, 96, 64, 16);
+        frame.exponent = 1.0;
         let cpu = CpuRenderer::new(&scene);
         let (gbuffer, _) = cpu.gbuffer(&frame, &no_progress);
-        let params = GroundTruthParams { radius: frame.radius, exponent: 1.0, samples: 64, uniform: 0 };
-        let (on_cpu, _) = cpu.ground_truth(&frame, &gbuffer, &params, &no_progress);
-        let (on_gpu, passes) = vk.ground_truth(&scene, &frame, &gbuffer, &params).unwrap();
+        // cpu-sim's kernel called directly against the Vulkan technique's graph.
+        let params = frame.ground_truth_params(64, false);
+        let on_cpu = common::cpu_ground_truth(&cpu, &frame, &gbuffer, &params);
+        let technique = Technique::parse("groundtruth:spp=64").unwrap();
+        let run = vk.run(&scene, &frame, &gbuffer, &technique).unwrap();
+        let (on_gpu, passes) = (run.ao_final, run.passes);
         let view = frame.camera.view;
         let (a, b) = common::inner_pair(&view, &on_cpu, &on_gpu);
         // Same count of visible rays (AO differs by less than half a ray's 1/64).

@@ -5,9 +5,10 @@
 mod common;
 
 use aokit::render::CpuRenderer;
-use aokit::technique::{SdOptions, SvaoDebug, Technique, TechniqueRun};
+use aokit::technique::{SdOptions, Technique, TechniqueRun};
 use aokit_shaders::common::gbuffer_read::GBufferSlices;
 use aokit_shaders::glam::uvec2;
+use aokit_shaders::graph::Refinement;
 use aokit_shaders::raysd::sd_ray;
 use aokit_shaders::svao::Secondary;
 use aokit_shaders::svao::settings::{RAYSD, RAYSVAO};
@@ -16,7 +17,7 @@ fn ulps(a: u32, b: u32) -> u32 {
     (a as i64 - b as i64).unsigned_abs() as u32
 }
 
-fn debug(run: &TechniqueRun) -> &SvaoDebug {
+fn debug(run: &TechniqueRun) -> &Refinement {
     run.debug.as_ref().expect("stenciled techniques report their buffers")
 }
 

@@ -451,21 +451,27 @@ pub struct Graph {
 }
 
 /// The diagnostics a graph offers its reports ([`Graph::diagnostics`]).
-#[derive(Copy, Clone, Debug, Default)]
+#[derive(Copy, Clone, Debug, Default, PartialEq)]
 pub struct Diagnostics {
     /// The resource holding bent normals (RGBA8 in a `u32` per full-target pixel), where the
     /// graph writes them.
     pub bent_normals: Option<&'static str>,
     /// Decodes the stenciled family's refinement buffers after a run.
-    pub refinement: Option<fn(&Executed) -> Refinement>,
+    pub refinement: Option<RefinementDecoder>,
 }
 
-impl PartialEq for Diagnostics {
-    /// The same resources and the same decoder (by address: graphs compare equal when built by
-    /// the same code).
-    fn eq(&self, other: &Diagnostics) -> bool {
-        let decoder = |d: &Diagnostics| d.refinement.map(|f| f as usize);
-        self.bent_normals == other.bent_normals && decoder(self) == decoder(other)
+/// A technique's decoder of its refinement buffers, named (graphs compare by the name).
+#[derive(Copy, Clone, Debug)]
+pub struct RefinementDecoder {
+    /// What it decodes, e.g. `svao (traced SD map)`.
+    pub name: &'static str,
+    /// The decoder.
+    pub decode: fn(&Executed) -> Refinement,
+}
+
+impl PartialEq for RefinementDecoder {
+    fn eq(&self, other: &RefinementDecoder) -> bool {
+        self.name == other.name
     }
 }
 

@@ -14,6 +14,7 @@ pub struct BenchArgs {
     pub frame: FrameArgs,
     #[command(flatten)]
     pub options: TechniqueArgs,
+    /// A technique of `aokit techniques`, optionally with `:key=value` settings.
     #[arg(long, default_value = "vao")]
     pub technique: String,
     /// Timed frames after the warm-up.

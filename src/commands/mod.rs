@@ -96,10 +96,6 @@ pub fn progress_bar(message: String, rows: u64) -> ProgressBar {
     bar
 }
 
-pub fn passes_json(passes: &[(&str, f64)]) -> serde_json::Value {
-    passes.iter().map(|(n, ms)| serde_json::json!({"name": n, "ms": ms})).collect::<Vec<_>>().into()
-}
-
 /// The frame and its G-buffer on the chosen back-end, for commands that write them out (export,
 /// web); `command` names the command in the `--rt-mode` refusal.
 pub fn frame_gbuffer(args: &FrameArgs, command: &str) -> Result<(Scene, Frame, GBufferImage, &'static str), String> {

@@ -1,7 +1,7 @@
 //! `aokit render`: one AO image of a scene (PNG, optionally EXR and bent normals) and a JSON line
 //! describing the run.
 
-use super::{FrameArgs, check_validation, passes_json, progress_bar, renderer, resolve};
+use super::{FrameArgs, check_validation, progress_bar, renderer, resolve};
 use aokit::cli::TechniqueArgs;
 use aokit::output::{crop_inner, write_bent_png, write_exr, write_png};
 use aokit::technique::Describe;
@@ -80,4 +80,9 @@ pub fn run(args: RenderArgs) -> Result<(), String> {
     }
     println!("{line}");
     Ok(())
+}
+
+/// `(pass, ms)` as the JSON line's `passes_ms`.
+fn passes_json(passes: &[(&str, f64)]) -> serde_json::Value {
+    passes.iter().map(|(n, ms)| serde_json::json!({"name": n, "ms": ms})).collect::<Vec<_>>().into()
 }

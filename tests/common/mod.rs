@@ -192,3 +192,20 @@ pub fn noise(n: usize, seed: u32) -> Vec<f32> {
         })
         .collect()
 }
+
+/// cpu-sim's ground-truth kernel (spec gtao-raymarch-hybrid §5) with `params` on a given
+/// G-buffer of `frame`: the AO per full-target pixel.
+#[allow(dead_code)]
+pub fn cpu_ground_truth(
+    cpu: &aokit::render::CpuRenderer,
+    frame: &aokit::frame::Frame,
+    gbuffer: &aokit_cpu::GBufferImage,
+    params: &aokit_shaders::groundtruth::GroundTruthParams,
+) -> Vec<f32> {
+    let gt = aokit_shaders::groundtruth::GroundTruthFrame {
+        camera: frame.camera,
+        params: *params,
+        ..bytemuck::Zeroable::zeroed()
+    };
+    aokit_cpu::run_ground_truth(cpu.bvh(), &cpu.surfaces(), &gt, gbuffer, &aokit_cpu::no_progress).0
+}

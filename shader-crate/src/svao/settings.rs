@@ -10,8 +10,8 @@ use crate::common::gbuffer_read::GBufferSlices;
 use crate::common::tables::{AO_SAMPLES, JitterTable, KERNEL_SAMPLE_COUNTS};
 use crate::glam::{UVec2, uvec2};
 use crate::graph::{
-    Diagnostics, Elem, Executed, Extent, FrameDesc, Graph, Init, Lifetime, Pass, RAY_COUNT, Refinement, Resource, Size,
-    Snapshot, inputs, ray_counter, record, target_f32, target_u32,
+    Diagnostics, Elem, Executed, Extent, FrameDesc, Graph, Init, Lifetime, Pass, RAY_COUNT, Refinement,
+    RefinementDecoder, Resource, Size, Snapshot, inputs, ray_counter, record, target_f32, target_u32,
 };
 use crate::technique::{Constant, Declaration, Setting, Settings};
 use crate::vao::kernel::{KERNEL_HBAO, KERNEL_VAO};
@@ -487,8 +487,12 @@ impl SvaoSettings {
         passes.extend(p);
         resources.push(target_f32("ao_pass1", 1.0, "copy of the AO after pass 1, for reports"));
         let snapshots = vec![Snapshot { after: 0, from: "ao", to: "ao_pass1" }];
-        let refinement: fn(&Executed) -> Refinement =
-            if self.raster { rasterized_refinement } else { traced_refinement };
+        // The raster SD map traces no rays; without an SD map the ray counter counts them all.
+        let refinement = if self.raster && secondary == Secondary::StochasticDepth {
+            RefinementDecoder { name: "svao (raster SD map)", decode: rasterized_refinement }
+        } else {
+            RefinementDecoder { name: "svao", decode: traced_refinement }
+        };
         let diagnostics = Diagnostics { refinement: Some(refinement), ..Default::default() };
         let view = frame.camera.view;
         Ok(Graph { resources, passes, output: "ao_final", raw_output: "ao", snapshots, view, diagnostics })
@@ -528,7 +532,7 @@ fn rasterized_refinement(run: &Executed) -> Refinement {
 
 /// The frame record the graph ran with.
 fn svao_frame(run: &Executed) -> SvaoFrame {
-    let record = run.u32s("svao_frame");
+    let record = (run.words)("svao_frame").expect("a stenciled graph declares its svao_frame record");
     bytemuck::pod_read_unaligned(&bytemuck::cast_slice::<u32, u8>(&record)[..size_of::<SvaoFrame>()])
 }
 
