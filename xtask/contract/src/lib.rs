@@ -5,11 +5,14 @@
 //! from, and the atomic file writes all of it goes through.
 //!
 //! Nothing here is needed to run the kernels: an engine links `aokit-vulkan` (or reads
-//! `assets/` directly), never this crate.
+//! `assets/` directly), never this crate. Feature `reflect` adds what needs naga (reading the
+//! SPIR-V, writing the WGSL): the xtask and the tests use it; the CLI reads the committed files
+//! without it.
 
 pub mod atomic_file;
 pub mod manifest;
 pub mod spirv_hash;
+#[cfg(feature = "reflect")]
 pub mod wgsl;
 
 /// The committed `assets/spirv/manifest.json`.

@@ -207,8 +207,9 @@ impl Manifest {
     }
 }
 
-/// naga-based validation and reflection. naga reads compute and graphics
+/// naga-based validation and reflection (feature `reflect`). naga reads compute and graphics
 /// modules; it cannot read ray-tracing modules.
+#[cfg(feature = "reflect")]
 pub mod reflect {
     use super::{BindingManifest, ModuleManifest};
     use naga::{AddressSpace, ShaderStage, StorageAccess, TypeInner};
@@ -406,10 +407,11 @@ pub mod words {
     }
 }
 
+#[cfg(feature = "reflect")]
 impl Manifest {
     /// Translate every compute module (but [`NOT_WGSL`] and the ray-query variants, which
     /// naga's SPIR-V front end cannot read and WebGPU cannot run) of `spirv_dir` to WGSL
-    /// (`crate::wgsl`), note it in the module entries, and return `(file, source)` to write into
+    /// (`crate::wgsl`, feature `reflect`), note it in the module entries, and return `(file, source)` to write into
     /// `assets/wgsl/`.
     pub fn add_wgsl(&mut self, spirv_dir: &std::path::Path) -> Result<Vec<(String, String)>, String> {
         let mut out = Vec::new();
