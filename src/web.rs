@@ -29,30 +29,9 @@ const PAGE: [(&str, &str); 3] = [
     ("graph.js", include_str!("../assets/web/graph.js")),
 ];
 
-macro_rules! wgsl_files {
-    ($($name:literal),* $(,)?) => {
-        [$(($name, include_str!(concat!("../assets/wgsl/", $name)))),*]
-    };
-}
-
-/// Every committed WGSL module (`assets/wgsl/`); [`write`] refuses a manifest naming another.
-const WGSL: &[(&str, &str)] = &wgsl_files!(
-    "blur_main.wgsl",
-    "export_ao_r32f.wgsl",
-    "gtao_denoise.wgsl",
-    "gtao_main.wgsl",
-    "gtao_normals.wgsl",
-    "gtao_prefilter.wgsl",
-    "import_depth.wgsl",
-    "import_normals.wgsl",
-    "raymarch_main.wgsl",
-    "raysd_pass2.wgsl",
-    "svao_pass1.wgsl",
-    "temporal_blend.wgsl",
-    "temporal_store.wgsl",
-    "vao_main.wgsl",
-    "vbao_main.wgsl",
-);
+// `WGSL`: every committed WGSL module (`assets/wgsl/`), written by build.rs; [`write`] refuses a
+// manifest naming another.
+include!(concat!(env!("OUT_DIR"), "/wgsl_files.rs"));
 
 /// The inputs a browser page has: the exported G-buffer.
 const PAGE_INPUTS: [&str; 2] = [inputs::LINEAR_DEPTH, inputs::VIEW_NORMALS];
