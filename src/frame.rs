@@ -227,7 +227,7 @@ impl Frame {
         let full = self.camera.view.size();
         serde_json::json!({
             "camera": {"eye": v(self.eye), "target": v(self.target), "up": v(self.up), "fov_y_deg": self.fov_deg,
-                       "near": self.camera.view.near, "far": self.camera.view.far},
+                       "fov_y": self.fov_deg.to_radians(), "near": self.camera.view.near, "far": self.camera.view.far},
             "radius": self.radius,
             "exponent": self.exponent,
             "thickness": self.thickness,

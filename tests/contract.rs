@@ -1,4 +1,4 @@
-//! The engine contract in `assets/`: the manifest (schema aokit-manifest/2), the C header and the
+//! The engine contract in `assets/`: the manifest (schema aokit-manifest/3), the C header and the
 //! WGSL are what the xtask generates from the committed modules and the current shader sources
 //! (a stale one fails here), a C11 compiler lays out every shared struct exactly as Rust does
 //! (the header's `_Static_assert`s, compiled with `cc`), and the WGSL validates for WebGPU core.
@@ -73,7 +73,7 @@ fn manifest_and_header_are_what_the_sources_generate() {
 
     // What an engine needs is named: every binding, every push-constant block of a module that
     // has one, and every struct's fields.
-    assert_eq!(manifest.schema, "aokit-manifest/2");
+    assert_eq!(manifest.schema, "aokit-manifest/3");
     for m in &manifest.modules {
         for b in &m.bindings {
             assert!(!b.name.is_empty() && !b.rust_type.is_empty(), "{}: binding {} unnamed", m.entry_point, b.binding);
@@ -345,7 +345,7 @@ fn constants_formulas_cover_every_field_and_name_the_settings_that_change_it() {
     };
     let formula = |t: &TechniqueManifest, s: &str, f: &str| -> String {
         let c = t.constants.iter().find(|c| c.struct_name == s && c.field == f);
-        c.unwrap_or_else(|| panic!("{}: its passes use {s}.{f}, which has no formula", t.name)).formula.clone()
+        c.unwrap_or_else(|| panic!("{}: its passes use {s}.{f}, which has no formula", t.name)).doc.clone()
     };
     // The leaf fields that differ between two graphs' passes and records present in both.
     let changed = |a: &Graph, b: &Graph| -> BTreeSet<(String, String)> {
@@ -381,7 +381,7 @@ fn constants_formulas_cover_every_field_and_name_the_settings_that_change_it() {
             let s = structs.iter().find(|s| s.name == c.struct_name).unwrap();
             let f = s.fields.iter().find(|f| f.name == c.field).unwrap();
             assert_eq!((c.offset, c.ty.as_str()), (f.offset, f.ty.as_str()), "{} {}.{}", t.name, s.name, f.name);
-            assert!(!c.formula.trim().is_empty(), "{} {}.{}", t.name, s.name, f.name);
+            assert!(!c.doc.trim().is_empty(), "{} {}.{}", t.name, s.name, f.name);
         }
         let (base, variants) = variants(&t.name);
         for graph in std::iter::once(&base).chain(variants.iter().map(|v| &v.2)) {

@@ -3,7 +3,7 @@
 // against cpu-sim's AO. `?test=1`: every technique runs once at its defaults and its AO is
 // POSTed to /result/<technique> (docs/web.md). Plain ES module, no build step.
 
-import { CONSTANTS, Runner, cropInner, fieldBytes, gtaoSettings, readStruct, structOf, writeStruct } from './graph.js';
+import { Runner, constantBytes, cropInner, expressionInputs, fieldBytes, readStruct, structOf } from './graph.js';
 
 const params = new URLSearchParams(location.search);
 const TEST = params.get('test') === '1';
@@ -227,17 +227,18 @@ class Page {
     const { graph, why } = this.graph(m, w);
     if (!graph) throw new Error(`these settings cannot run in the browser: ${why}`);
     const data = await this.dataFor(m, w, graph);
-    const ctx = {
-      view: this.view,
-      frame: { radius: this.exported.radius, exponent: this.exported.exponent, thickness: this.exported.thickness },
-      settings: this.settings,
-      gtao: gtaoSettings(this.manifest, this.name, this.settings),
-    };
+    // The constants from the manifest's expressions (assets/README.md, "Expressions"): the
+    // exported camera and AO parameters, the settings, the pass's index among its module's.
+    const e = this.exported;
+    const inputs = expressionInputs(m, this.settings, {
+      eye: e.camera.eye, target: e.camera.target, up: e.camera.up, fov_y: e.camera.fov_y, near: e.camera.near,
+      far: e.camera.far, inner: e.image, guard: e.guard_band, radius: e.radius, exponent: e.exponent,
+      thickness: e.thickness, frame_index: 0,
+    });
     const constants = (pass, index, occurrence) => {
       const struct = this.runner.module(pass.entry).push_constants;
-      const recipe = CONSTANTS[struct];
-      if (!recipe) throw new Error(`no rule for the constants ${struct} of ${pass.entry}`);
-      return writeStruct(this.manifest, struct, recipe({ ...ctx, entry: pass.entry, index, occurrence }));
+      inputs.names.pass = { t: 'int', v: occurrence };
+      return constantBytes(this.manifest, m, struct, inputs);
     };
     status(`running ${this.name}…`);
     const { W, H, guard } = this.size;
@@ -264,12 +265,12 @@ class Page {
       const struct = this.runner.module(entry).push_constants;
       if (!struct) return;
       for (const [path, owner, field, value] of flat(struct, readStruct(this.manifest, struct, bytes), struct)) {
-        const formula = (m.constants ?? []).find((c) => c.struct === owner && c.field === field)?.formula ?? '';
+        const formula = (m.constants ?? []).find((c) => c.struct === owner && c.field === field)?.expr ?? '';
         const text = (Array.isArray(value) ? value : [value]).map(shortest).join(', ');
         rows.push(`<tr><td>${i} ${entry}</td><td>${path}</td><td>${text}</td><td>${formula.replace(/&/g, '&amp;').replace(/</g, '&lt;')}</td></tr>`);
       }
     });
-    $('constants').innerHTML = `<tr><th>pass</th><th>field</th><th>value</th><th>manifest formula</th></tr>${rows.join('')}`;
+    $('constants').innerHTML = `<tr><th>pass</th><th>field</th><th>value</th><th>manifest expression</th></tr>${rows.join('')}`;
     $('constants-count').textContent = `${graph.passes.length} passes`;
   }
 

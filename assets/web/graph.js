@@ -1,5 +1,6 @@
-// aokit's contract in the browser: the manifest's formulas and struct layouts, the constants of
-// each push-constant struct, and a technique's pass graph run through WebGPU from the WGSL files.
+// aokit's contract in the browser: the manifest's formulas and struct layouts, every constants
+// struct computed from the manifest's expressions, and a technique's pass graph run through
+// WebGPU from the WGSL files. Nothing here names a technique.
 // Plain ES module, no build step, no dependencies. Formats: assets/README.md, docs/web.md.
 
 // ---------------------------------------------------------------------------------------------
@@ -164,74 +165,283 @@ export function fieldBytes(manifest, name, field, bytes) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Constants. The manifest gives each push-constant struct's layout and its fields' meaning in
-// words; what fills each field is here, from the Rust functions beside the kernels (docs/web.md,
-// "What the page takes from the Rust sources"). `c` holds: view (ViewParams bytes of camera.bin),
-// frame (export.json: radius, exponent, thickness), settings (the technique's, key → string),
-// gtao (XeGTAO's settings for its passes), entry, occurrence (index of this pass among the
-// graph's passes of the same entry).
+// Expressions: the grammar of the constants (`techniques[].constants[].expr`, assets/README.md,
+// "Expressions"). Integers exact; reals binary32, rounded (Math.fround) after every operation,
+// left to right; sin, cos, tan, pow in binary64 rounded once. Values are {t, v}: t = 'int',
+// 'real', 'bool', 'text', 'vec' (reals), 'ivec' (integers) or 'mat' (16 reals, column-major).
 
-const num = (v) => Number(v);
+const fr = Math.fround;
+const EXPR_TOKEN = /\s*(\d+(?:\.\d*)?(?:e[+-]?\d+)?|[A-Za-z_]\w*|`[^`]*`|"[^"]*"|==|!=|<=|>=|&&|\|\||[+\-*/()<>,.!])/y;
 
-export const CONSTANTS = {
-  // aokit_shaders::vao::settings::vao_params; MAX_SCREEN_RADIUS = 512.
-  VaoParams: (c) => ({
-    view: c.view, radius: c.frame.radius, exponent: c.frame.exponent, thickness: c.frame.thickness,
-    max_screen_radius: 512,
-  }),
-  // aokit_shaders::blur::graph::blur_passes: horizontal, then vertical; SHARPNESS = 16.
-  BlurParams: (c) => ({ view: c.view, direction: c.occurrence % 2 === 0 ? [1, 0] : [0, 1], sharpness: 16 }),
-  // GtaoSettings::params; `pass` = MIP level of a prefilter dispatch, index of a denoise pass.
-  GtaoParams: (c) => ({
-    view: c.view,
-    radius: c.frame.radius,
-    radius_multiplier: num(c.gtao['radius-multiplier']),
-    falloff_range: num(c.gtao['falloff-range']),
-    sample_distribution_power: num(c.gtao['sample-power']),
-    thin_occluder_compensation: num(c.gtao['thin-occluder']),
-    final_value_power: num(c.gtao['final-power']),
-    depth_mip_sampling_offset: num(c.gtao['mip-offset']),
-    slices: num(c.gtao.slices),
-    steps: num(c.gtao.steps),
-    denoise_passes: num(c.gtao.denoise),
-    noise_frame: 0,
-    pass: c.entry === 'gtao_prefilter' || c.entry === 'gtao_denoise' ? c.occurrence : 0,
-    bent_normals: c.gtao['bent-normals'] === 'on' ? 1 : 0,
-  }),
-  // VbaoSettings::params: T = thickness·R; R_g by gate (off 0, effective R·multiplier, radius
-  // R); weighting uniform 0, cosine-blender 1, cosine-exact 2; sectors paper 0, touch 1.
-  VbaoParams: (c) => ({
-    thickness: num(c.settings.thickness) * c.frame.radius,
-    gate_radius: { off: 0, effective: c.frame.radius * num(c.settings['radius-multiplier']), radius: c.frame.radius }[c.settings.gate],
-    weighting: ['uniform', 'cosine-blender', 'cosine-exact'].indexOf(c.settings.weighting),
-    sector_rule: c.settings.sectors === 'touch' ? 1 : 0,
-    gtao: CONSTANTS.GtaoParams(c),
-  }),
-  // RaymarchSettings::params; DEPTH_BIAS = 0.0008, thickness f32::MAX (a pure height field),
-  // contribution Linear = 0, Binary = 1.
-  RaymarchParams: (c) => ({
-    view: c.view,
-    radius: c.frame.radius,
-    alpha: num(c.settings.alpha),
-    depth_bias: 0.0008,
-    thickness: 3.4028234663852886e38,
-    directions: num(c.settings.directions),
-    steps: num(c.settings.steps),
-    contribution: c.settings.contribution === 'binary' ? 1 : 0,
-    noise_frame: 0,
-  }),
+const isNum = (x) => x.t === 'int' || x.t === 'real';
+const realOf = (x) => {
+  if (!isNum(x)) throw new Error(`expected a number, got ${x.t}`);
+  return fr(x.v);
+};
+const vec3Of = (x) => {
+  if (x.t !== 'vec' || x.v.length !== 3) throw new Error(`expected a vec3, got ${x.t}`);
+  return x.v;
+};
+const dot3 = (a, b) => fr(fr(fr(a[0] * b[0]) + fr(a[1] * b[1])) + fr(a[2] * b[2]));
+const normalize3 = (v) => {
+  const r = fr(1 / fr(Math.sqrt(dot3(v, v))));
+  return v.map((c) => fr(c * r));
+};
+const cross3 = (a, b) => [
+  fr(fr(a[1] * b[2]) - fr(b[1] * a[2])),
+  fr(fr(a[2] * b[0]) - fr(b[2] * a[0])),
+  fr(fr(a[0] * b[1]) - fr(b[0] * a[1])),
+];
+function lookAt(eye, target, up) {
+  const d = normalize3([fr(target[0] - eye[0]), fr(target[1] - eye[1]), fr(target[2] - eye[2])]);
+  const r = normalize3(cross3(d, up));
+  const u = cross3(r, d);
+  return [r[0], r[1], r[2], 0, u[0], u[1], u[2], 0, -d[0], -d[1], -d[2], 0, eye[0], eye[1], eye[2], 1];
+}
+function inverseRigid(m) {
+  const c = (i) => [m[4 * i], m[4 * i + 1], m[4 * i + 2]];
+  const [c0, c1, c2, t] = [c(0), c(1), c(2), c(3)];
+  return [c0[0], c1[0], c2[0], 0, c0[1], c1[1], c2[1], 0, c0[2], c1[2], c2[2], 0, -dot3(c0, t), -dot3(c1, t), -dot3(c2, t), 1];
+}
+
+const BUILTINS = {
+  select: (c, a, b) => {
+    if (c.t !== 'bool') throw new Error('select: the condition is not a truth value');
+    return c.v ? a : b;
+  },
+  pick: (i, ...values) => {
+    if (i.t !== 'int' || i.v < 0 || i.v >= values.length) throw new Error('pick: index out of range');
+    return values[i.v];
+  },
+  f32: (x) => ({ t: 'real', v: realOf(x) }),
+  u32: (x) => ({ t: 'int', v: x.t === 'bool' ? Number(x.v) : Math.min(4294967295, Math.max(0, Math.trunc(realOf(x)))) }),
+  div_ceil: (a, b) => ({ t: 'int', v: Math.ceil(a.v / b.v) }),
+  div_floor: (a, b) => ({ t: 'int', v: Math.floor(a.v / b.v) }),
+  min: (a, b) => (a.t === 'int' && b.t === 'int' ? { t: 'int', v: Math.min(a.v, b.v) } : { t: 'real', v: Math.min(realOf(a), realOf(b)) }),
+  max: (a, b) => (a.t === 'int' && b.t === 'int' ? { t: 'int', v: Math.max(a.v, b.v) } : { t: 'real', v: Math.max(realOf(a), realOf(b)) }),
+  floor: (x) => (x.t === 'int' ? x : { t: 'real', v: Math.floor(realOf(x)) }),
+  ceil: (x) => (x.t === 'int' ? x : { t: 'real', v: Math.ceil(realOf(x)) }),
+  sqrt: (x) => ({ t: 'real', v: fr(Math.sqrt(realOf(x))) }),
+  sin: (x) => ({ t: 'real', v: fr(Math.sin(realOf(x))) }),
+  cos: (x) => ({ t: 'real', v: fr(Math.cos(realOf(x))) }),
+  tan: (x) => ({ t: 'real', v: fr(Math.tan(realOf(x))) }),
+  pow: (a, b) => ({ t: 'real', v: fr(Math.pow(realOf(a), realOf(b))) }),
+  vec2: (...a) => ({ t: 'vec', v: a.map(realOf) }),
+  vec3: (...a) => ({ t: 'vec', v: a.map(realOf) }),
+  vec4: (...a) => ({ t: 'vec', v: a.map(realOf) }),
+  uvec2: (a, b) => ({ t: 'ivec', v: [a.v, b.v] }),
+  normalize: (v) => ({ t: 'vec', v: normalize3(vec3Of(v)) }),
+  cross: (a, b) => ({ t: 'vec', v: cross3(vec3Of(a), vec3Of(b)) }),
+  look_at: (e, t, u) => ({ t: 'mat', v: lookAt(vec3Of(e), vec3Of(t), vec3Of(u)) }),
+  inverse_rigid: (m) => ({ t: 'mat', v: inverseRigid(m.v) }),
 };
 
-/** XeGTAO's settings for the GtaoParams of a graph of `technique`: its own for gtao; for a
- *  technique that reuses the denoiser (raymarch), gtao's defaults with its `denoise` count
- *  (aokit_shaders::gtao::settings::with_denoiser). */
-export function gtaoSettings(manifest, technique, settings) {
-  if (technique === 'gtao') return settings;
-  const gtao = manifest.techniques.find((t) => t.name === 'gtao');
-  const defaults = Object.fromEntries(gtao.settings.map((s) => [s.key, s.default]));
-  // VBAO's XeGTAO settings are its own, the rest (falloff, thin occluder) stay at gtao's defaults.
-  if (technique === 'vbao') return { ...defaults, ...settings };
-  return { ...defaults, denoise: settings.denoise ?? defaults.denoise };
+function arithmetic(op, a, b) {
+  const f = (x, y) => fr(op === '+' ? x + y : op === '-' ? x - y : op === '*' ? x * y : x / y);
+  if (a.t === 'int' && b.t === 'int' && op !== '/') return { t: 'int', v: op === '+' ? a.v + b.v : op === '-' ? a.v - b.v : a.v * b.v };
+  if (a.t === 'vec' && b.t === 'vec' && a.v.length === b.v.length) return { t: 'vec', v: a.v.map((x, k) => f(x, b.v[k])) };
+  if (a.t === 'vec' && isNum(b)) return { t: 'vec', v: a.v.map((x) => f(x, realOf(b))) };
+  return { t: 'real', v: f(realOf(a), realOf(b)) };
+}
+
+/**
+ * Evaluate expression `text`. `inputs`: {settings: key → value ({t, v}), choices: key → [names],
+ * names: name → value} (W, H, w, h, g, eye, target, up, fov_y, near, far, radius, exponent,
+ * thickness, frame, pass).
+ */
+export function evalExpr(text, inputs) {
+  const t = [];
+  EXPR_TOKEN.lastIndex = 0;
+  while (EXPR_TOKEN.lastIndex < text.length) {
+    if (/^\s*$/.test(text.slice(EXPR_TOKEN.lastIndex))) break;
+    const at = EXPR_TOKEN.lastIndex;
+    const m = EXPR_TOKEN.exec(text);
+    if (!m) throw new Error(`expression '${text}': cannot read at ${at}`);
+    t.push(m[1]);
+  }
+  let i = 0;
+  const fail = (what) => new Error(`expression '${text}': ${what}`);
+  const eat = (tok) => (t[i] === tok ? (i++, true) : false);
+  const expect = (tok) => {
+    if (!eat(tok)) throw fail(`expected '${tok}' at token ${i}`);
+  };
+  const truth = (v) => {
+    if (v.t !== 'bool') throw fail('expected a truth value');
+    return v.v;
+  };
+  const or = () => {
+    let a = and();
+    while (eat('||')) {
+      const b = and();
+      a = { t: 'bool', v: truth(a) || truth(b) };
+    }
+    return a;
+  };
+  const and = () => {
+    let a = comparison();
+    while (eat('&&')) {
+      const b = comparison();
+      a = { t: 'bool', v: truth(a) && truth(b) };
+    }
+    return a;
+  };
+  const comparison = () => {
+    const a = sum();
+    const op = t[i];
+    if (!['==', '!=', '<', '<=', '>', '>='].includes(op)) return a;
+    i++;
+    const b = sum();
+    let x;
+    let y;
+    if (a.t === 'int' && b.t === 'int') [x, y] = [a.v, b.v];
+    else if ((a.t === 'text' && b.t === 'text') || (a.t === 'bool' && b.t === 'bool')) {
+      if (op !== '==' && op !== '!=') throw fail(`cannot order ${a.t}s`);
+      [x, y] = [a.v, b.v];
+    } else [x, y] = [realOf(a), realOf(b)];
+    const r = { '==': x === y, '!=': x !== y, '<': x < y, '<=': x <= y, '>': x > y, '>=': x >= y }[op];
+    return { t: 'bool', v: r };
+  };
+  const sum = () => {
+    let a = product();
+    while (t[i] === '+' || t[i] === '-') {
+      const op = t[i++];
+      a = arithmetic(op, a, product());
+    }
+    return a;
+  };
+  const product = () => {
+    let a = unary();
+    while (t[i] === '*' || t[i] === '/') {
+      const op = t[i++];
+      a = arithmetic(op, a, unary());
+    }
+    return a;
+  };
+  const unary = () => {
+    if (eat('-')) {
+      const v = unary();
+      if (v.t === 'int' || v.t === 'real') return { t: v.t, v: -v.v };
+      if (v.t === 'vec') return { t: 'vec', v: v.v.map((x) => -x) };
+      throw fail(`cannot negate a ${v.t}`);
+    }
+    if (eat('!')) return { t: 'bool', v: !truth(unary()) };
+    let v = primary();
+    while (eat('.')) {
+      const k = 'xyzw'.indexOf(t[i++]);
+      if (k < 0 || !(v.t === 'vec' || v.t === 'ivec') || k >= v.v.length) throw fail('bad component');
+      v = { t: v.t === 'vec' ? 'real' : 'int', v: v.v[k] };
+    }
+    return v;
+  };
+  const primary = () => {
+    const tok = t[i++];
+    if (tok === undefined) throw fail('unexpected end');
+    if (tok === '(') {
+      const v = or();
+      expect(')');
+      return v;
+    }
+    if (tok.startsWith('`')) {
+      const key = tok.slice(1, -1);
+      if (!(key in inputs.settings)) throw fail(`no setting \`${key}\``);
+      return inputs.settings[key];
+    }
+    if (tok.startsWith('"')) return { t: 'text', v: tok.slice(1, -1) };
+    if (/^\d/.test(tok)) return /[.e]/.test(tok) ? { t: 'real', v: fr(Number(tok)) } : { t: 'int', v: Number(tok) };
+    if (tok === 'true' || tok === 'false') return { t: 'bool', v: tok === 'true' };
+    if (t[i] === '(') {
+      expect('(');
+      if (tok === 'index') {
+        const key = (t[i++] ?? '').slice(1, -1);
+        expect(')');
+        const value = inputs.settings[key];
+        const names = inputs.choices[key];
+        if (!value || !names) throw fail(`index: \`${key}\` is not a choice setting`);
+        return { t: 'int', v: names.indexOf(value.v) };
+      }
+      const args = [];
+      if (!eat(')')) {
+        do args.push(or()); while (eat(','));
+        expect(')');
+      }
+      if (!(tok in BUILTINS)) throw fail(`unknown function ${tok}`);
+      return BUILTINS[tok](...args);
+    }
+    if (tok in inputs.names) return inputs.names[tok];
+    throw fail(`unknown name '${tok}'`);
+  };
+  const v = or();
+  if (i !== t.length) throw fail(`trailing '${t[i]}'`);
+  return v;
+}
+
+/** The value of a setting as an expression reads it: counts integers, numbers binary32, choices names. */
+export function settingValue(row, text) {
+  if (row.kind === 'count') return { t: 'int', v: Number(text) };
+  if (row.kind === 'number') return { t: 'real', v: fr(Number(text)) };
+  return { t: 'text', v: String(text) };
+}
+
+/**
+ * The inputs of technique `t`'s expressions (manifest entry) with `settings` (key → string) and
+ * `frame` = {eye, target, up, fov_y (radians), near, far, inner: [w, h], guard, radius, exponent,
+ * thickness, frame_index}.
+ */
+export function expressionInputs(t, settings, frame) {
+  const out = { settings: {}, choices: {}, names: {} };
+  for (const row of t.settings) {
+    out.settings[row.key] = settingValue(row, settings[row.key] ?? row.default);
+    if (row.kind === 'choice') out.choices[row.key] = row.choices;
+  }
+  const [w, h] = frame.inner;
+  const g = frame.guard;
+  const vec = (v) => ({ t: 'vec', v: v.map(fr) });
+  const real = (v) => ({ t: 'real', v: fr(v) });
+  Object.assign(out.names, {
+    W: { t: 'int', v: w + 2 * g }, H: { t: 'int', v: h + 2 * g }, w: { t: 'int', v: w }, h: { t: 'int', v: h }, g: { t: 'int', v: g },
+    eye: vec(frame.eye), target: vec(frame.target), up: vec(frame.up), fov_y: real(frame.fov_y), near: real(frame.near),
+    far: real(frame.far), radius: real(frame.radius), exponent: real(frame.exponent), thickness: real(frame.thickness),
+    frame: { t: 'int', v: frame.frame_index ?? 0 },
+  });
+  return out;
+}
+
+/** The bytes of struct `name` from technique `t`'s constants (its `expr` per field) for `inputs`
+ *  (with `names.pass` set for the pass). */
+export function constantBytes(manifest, t, name, inputs) {
+  const s = structOf(manifest, name);
+  const bytes = new Uint8Array(s.size);
+  const dv = new DataView(bytes.buffer);
+  for (const f of s.fields) {
+    const c = t.constants.find((c) => c.struct === name && c.field === f.name);
+    if (!c) throw new Error(`${t.name}: no constant ${name}.${f.name}`);
+    if (manifest.structs.some((x) => x.name === f.ty)) {
+      bytes.set(constantBytes(manifest, t, f.ty, inputs), f.offset);
+      continue;
+    }
+    const v = evalExpr(c.expr, inputs);
+    const put = (k, ty, x) => {
+      if (ty === 'f32') dv.setFloat32(f.offset + 4 * k, x, true);
+      else if (ty === 'i32') dv.setInt32(f.offset + 4 * k, x, true);
+      else dv.setUint32(f.offset + 4 * k, x, true);
+    };
+    const want = { f32: ['real', 1], u32: ['int', 1], i32: ['int', 1], Vec2: ['vec', 2], Vec3: ['vec', 3], Vec4: ['vec', 4], UVec2: ['ivec', 2], Mat4: ['mat', 16] }[f.ty];
+    if (!want) throw new Error(`${name}.${f.name}: type ${f.ty} is not in the grammar`);
+    const [kind, n] = want;
+    const scalarTy = f.ty === 'i32' ? 'i32' : f.ty === 'u32' || f.ty === 'UVec2' ? 'u32' : 'f32';
+    if (n === 1) {
+      let x;
+      if (kind === 'real') x = realOf(v);
+      else if (v.t === 'int') x = v.v;
+      else if (v.t === 'bool') x = Number(v.v);
+      else throw new Error(`${name}.${f.name}: ${f.ty} from a ${v.t} (${c.expr})`);
+      put(0, scalarTy, x);
+    } else {
+      if (v.t !== kind || v.v.length !== n) throw new Error(`${name}.${f.name}: ${f.ty} from a ${v.t} (${c.expr})`);
+      v.v.forEach((x, k) => put(k, scalarTy, x));
+    }
+  }
+  return bytes;
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -234,11 +234,20 @@ pub struct Constant {
     /// target, `w×h` inner image, `g` guard band, R radius, e exponent, τ thickness) and units;
     /// `[x]` is the value where the technique does not read the key (its default).
     pub formula: &'static str,
+    /// The same as a machine-evaluable expression in the grammar of `assets/README.md`
+    /// ("Expressions"); empty where not written yet. A field whose type is a shared struct has
+    /// that struct's name (its rows say the rest).
+    pub expr: &'static str,
 }
 
 impl Constant {
     pub const fn new(field: &'static str, formula: &'static str) -> Self {
-        Constant { field, formula }
+        Constant { field, formula, expr: "" }
+    }
+
+    /// The row with its expression ([`Constant::expr`]).
+    pub const fn expr(self, expr: &'static str) -> Self {
+        Constant { expr, ..self }
     }
 
     /// `(struct, field)` of [`Constant::field`].
@@ -312,6 +321,9 @@ pub trait Registered: Sync {
     fn rows(&self) -> Vec<Row>;
     /// How each field of its constants structs is computed ([`Declaration::constants`]).
     fn constants(&self) -> &'static [Constant];
+    /// `(key, value)` of the settings of its settings type that it does not read: fixed by the
+    /// declaration (e.g. hbao's `kernel` = hbao), substituted into its constants' expressions.
+    fn fixed(&self) -> Vec<(Row, String)>;
 }
 
 /// A setting without its settings type: what the CLI needs to declare a flag.
@@ -334,6 +346,19 @@ impl<S: Settings> Declaration<S> {
     }
 }
 
+/// `setting` without its settings type.
+fn row_of<S: Settings>(setting: &Setting<S>) -> Row {
+    Row {
+        key: setting.key,
+        flag: setting.flag,
+        switch: setting.switch,
+        help: setting.help,
+        kind: setting.kind,
+        default: setting.get(&S::default()),
+        settings_type: core::any::type_name::<S>(),
+    }
+}
+
 /// A declaration with its settings.
 struct Instance<S: 'static> {
     declaration: &'static Declaration<S>,
@@ -346,8 +371,14 @@ impl<S: Settings> Debug for Instance<S> {
     }
 }
 
-/// `technique` with `settings`.
-pub fn configure<S: Settings>(technique: &'static Declaration<S>, settings: S) -> Box<dyn Configured> {
+/// `technique` with `settings`; the settings it does not read are its declaration's fixed ones
+/// (hbao's `kernel`, raysd's `refinement`, …), whatever `settings` holds there, so the graph
+/// and the constants' expressions always see the technique's own.
+pub fn configure<S: Settings>(technique: &'static Declaration<S>, mut settings: S) -> Box<dyn Configured> {
+    let fixed = (technique.defaults)();
+    for row in S::ROWS.iter().filter(|r| !technique.keys.contains(&r.key)) {
+        row.set(&mut settings, &row.get(&fixed)).expect("a declaration's defaults are valid");
+    }
     Box::new(Instance { declaration: technique, settings })
 }
 
@@ -369,22 +400,16 @@ impl<S: Settings> Registered for Declaration<S> {
     }
 
     fn rows(&self) -> Vec<Row> {
-        let defaults = S::default();
-        self.rows_read()
-            .map(|r| Row {
-                key: r.key,
-                flag: r.flag,
-                switch: r.switch,
-                help: r.help,
-                kind: r.kind,
-                default: r.get(&defaults),
-                settings_type: core::any::type_name::<S>(),
-            })
-            .collect()
+        self.rows_read().map(row_of).collect()
     }
 
     fn constants(&self) -> &'static [Constant] {
         self.constants
+    }
+
+    fn fixed(&self) -> Vec<(Row, String)> {
+        let defaults = (self.defaults)();
+        S::ROWS.iter().filter(|r| !self.keys.contains(&r.key)).map(|r| (row_of(r), r.get(&defaults))).collect()
     }
 }
 
@@ -479,7 +504,8 @@ impl Clone for Technique {
 }
 
 impl Technique {
-    /// `technique` with `settings`.
+    /// `technique` with `settings` (its fixed settings, those it does not read, are the
+    /// declaration's).
     pub fn new<S: Settings>(technique: &'static Declaration<S>, settings: S) -> Technique {
         Technique(configure(technique, settings))
     }

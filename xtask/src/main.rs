@@ -1,7 +1,7 @@
 //! `cargo run -p xtask -- build-spirv`: compile `shader-crate/` to SPIR-V with rust-gpu 0.11
 //! (cargo-gpu-install fetches the pinned nightly and builds the codegen backend once, cached
 //! under ~/.cache/rust-gpu), validate every module with `spirv-val` and naga, and write
-//! `assets/spirv/{entry}.spv` plus `manifest.json` (schema aokit-manifest/2: modules with named
+//! `assets/spirv/{entry}.spv` plus `manifest.json` (schema aokit-manifest/3: modules with named
 //! bindings, push-constant structs, the shared structs' layouts, the hash of the sources) and
 //! the C header `assets/include/aokit.h` generated from it.
 //!

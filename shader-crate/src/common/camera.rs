@@ -143,6 +143,11 @@ impl Camera {
     /// Look-at camera whose vertical field of view `fov_y` (radians) covers the INNER image of
     /// `inner` pixels; the guard band `guard` widens the frustum at the same focal length, so the
     /// full target is `inner + 2·guard` (spec svao-raysd §1: 1920×1080 → 2048×1208).
+    ///
+    /// The arithmetic is the contract's (`assets/README.md`, "Expressions": `look_at`,
+    /// `inverse_rigid`, `tan` in binary64 rounded once), so an engine evaluating
+    /// [`CONSTANTS`] gets these bits.
+    #[cfg(not(target_arch = "spirv"))]
     pub fn look_at(
         eye: Vec3,
         target: Vec3,
@@ -153,25 +158,27 @@ impl Camera {
         near: f32,
         far: f32,
     ) -> Self {
-        #[allow(unused_imports)]
-        use spirv_std::num_traits::Float;
+        use crate::glam::{Mat4, Vec4};
         // Right-handed view basis: x = right, y = up, z = backwards (the camera looks down −Z).
         let forward = (target - eye).normalize();
         let right = forward.cross(up).normalize();
         let true_up = right.cross(forward);
-        let view_to_world = crate::glam::Mat4::from_cols(
-            right.extend(0.0),
-            true_up.extend(0.0),
-            (-forward).extend(0.0),
-            eye.extend(1.0),
+        let view_to_world =
+            Mat4::from_cols(right.extend(0.0), true_up.extend(0.0), (-forward).extend(0.0), eye.extend(1.0));
+        // The rigid inverse: rotation transposed, translation −Rᵀ·E.
+        let world_to_view = Mat4::from_cols(
+            Vec4::new(right.x, true_up.x, -forward.x, 0.0),
+            Vec4::new(right.y, true_up.y, -forward.y, 0.0),
+            Vec4::new(right.z, true_up.z, -forward.z, 0.0),
+            Vec4::new(-right.dot(eye), -true_up.dot(eye), -(-forward).dot(eye), 1.0),
         );
         let full = inner + 2 * guard;
-        let ty_inner = (0.5 * fov_y).tan();
+        let ty_inner = ((0.5 * fov_y) as f64).tan() as f32;
         // Same focal length: the tangent grows with the pixel count.
         let ty = ty_inner * full.y as f32 / inner.y as f32;
         let tx = ty * full.x as f32 / full.y as f32;
         Camera {
-            world_to_view: view_to_world.inverse(),
+            world_to_view,
             view_to_world,
             view: ViewParams { res: full.as_vec2(), tan_half_fov: vec2(tx, ty), near, far, guard, _pad: 0 },
         }
@@ -209,25 +216,30 @@ pub const CONSTANTS: &[crate::technique::Constant] = {
             "Camera.world_to_view",
             "the inverse of Camera.view_to_world (rigid: rotation Rᵀ, translation −Rᵀ·E with R = [r u −d]): \
              world → right-handed view space looking down −Z",
-        ),
+        )
+        .expr("inverse_rigid(look_at(eye, target, up))"),
         C::new(
             "Camera.view_to_world",
             "look-at, column-major: columns (r, 0), (u, 0), (−d, 0), (E, 1) with d = normalize(T − E), \
              r = normalize(d × U), u = r × d",
-        ),
-        C::new("Camera.view", "the frame's ViewParams (ViewParams rows)"),
+        )
+        .expr("look_at(eye, target, up)"),
+        C::new("Camera.view", "the frame's ViewParams (ViewParams rows)").expr("ViewParams"),
         C::new(
             "ViewParams.res",
             "(W, H) = (w + 2g, h + 2g) as f32: the full target, inner image plus guard band (pixels)",
-        ),
+        )
+        .expr("vec2(W, H)"),
         C::new(
             "ViewParams.tan_half_fov",
             "(tx, ty) of the FULL target: ty = tan(fov_y/2)·H/h (the same focal length over the guard band), \
              tx = ty·W/H",
-        ),
-        C::new("ViewParams.near", "n: near plane distance (view depth, world units)"),
-        C::new("ViewParams.far", "f: far plane distance (view depth, world units); depths ≥ f are background"),
-        C::new("ViewParams.guard", "g: the G-buffer's guard band, pixels per side (the inputs are W×H)"),
-        C::new("ViewParams._pad", "0"),
+        )
+        .expr("vec2(tan(0.5 * fov_y) * H / h * W / H, tan(0.5 * fov_y) * H / h)"),
+        C::new("ViewParams.near", "n: near plane distance (view depth, world units)").expr("near"),
+        C::new("ViewParams.far", "f: far plane distance (view depth, world units); depths ≥ f are background")
+            .expr("far"),
+        C::new("ViewParams.guard", "g: the G-buffer's guard band, pixels per side (the inputs are W×H)").expr("g"),
+        C::new("ViewParams._pad", "0").expr("0"),
     ]
 };

@@ -49,22 +49,32 @@ pub static GROUNDTRUTH: Declaration<GroundTruthSettings> = Declaration {
 /// camera's rows.
 pub const CONSTANTS: &[Constant] = crate::join_constants![
     &[
-        Constant::new("GroundTruthFrame.camera", "the frame's Camera (Camera and ViewParams rows)"),
-        Constant::new("GroundTruthFrame.params", "the technique's GroundTruthParams (GroundTruthParams rows)"),
+        Constant::new("GroundTruthFrame.camera", "the frame's Camera (Camera and ViewParams rows)")
+        .expr("Camera"),
+        Constant::new("GroundTruthFrame.params", "the technique's GroundTruthParams (GroundTruthParams rows)")
+        .expr("GroundTruthParams"),
         Constant::new(
             "GroundTruthFrame.noise_frame",
             "the frame index (FrameDesc::frame_index; 0 for a single frame): the samples' rotation frame_rotation(f mod 64)",
-        ),
-        Constant::new("GroundTruthFrame._pad0", "0"),
-        Constant::new("GroundTruthFrame._pad1", "0"),
-        Constant::new("GroundTruthFrame._pad2", "0"),
+        )
+        .expr("frame"),
+        Constant::new("GroundTruthFrame._pad0", "0")
+        .expr("0"),
+        Constant::new("GroundTruthFrame._pad1", "0")
+        .expr("0"),
+        Constant::new("GroundTruthFrame._pad2", "0")
+        .expr("0"),
         Constant::new(
             "GroundTruthParams.radius",
             "R: the frame's world-space AO radius, the rays' length (world units)"
-        ),
-        Constant::new("GroundTruthParams.exponent", "e: the frame's AO exponent (the AO is V^e)"),
-        Constant::new("GroundTruthParams.samples", "`spp`: rays per pixel [512]"),
-        Constant::new("GroundTruthParams.uniform", "`sampling`: cosine 0, uniform 1 [cosine 0]"),
+        )
+        .expr("radius"),
+        Constant::new("GroundTruthParams.exponent", "e: the frame's AO exponent (the AO is V^e)")
+        .expr("exponent"),
+        Constant::new("GroundTruthParams.samples", "`spp`: rays per pixel [512]")
+        .expr("`spp`"),
+        Constant::new("GroundTruthParams.uniform", "`sampling`: cosine 0, uniform 1 [cosine 0]")
+        .expr("index(`sampling`)"),
     ],
     crate::common::camera::CONSTANTS,
 ];

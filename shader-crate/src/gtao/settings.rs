@@ -252,15 +252,16 @@ pub static GTAO: Declaration<GtaoSettings> = Declaration {
 /// `GTAOUpdateConstants`), then the camera's rows.
 pub const CONSTANTS: &[Constant] = crate::join_constants![
     &[
-        Constant::new("GtaoParams.falloff_range", "`falloff-range` [0.615]"),
-        Constant::new("GtaoParams.thin_occluder_compensation", "`thin-occluder` [0]"),
-        Constant::new("GtaoParams.final_value_power", "`final-power` [2.2]"),
+        Constant::new("GtaoParams.falloff_range", "`falloff-range` [0.615]").expr("`falloff-range`"),
+        Constant::new("GtaoParams.thin_occluder_compensation", "`thin-occluder` [0]").expr("`thin-occluder`"),
+        Constant::new("GtaoParams.final_value_power", "`final-power` [2.2]").expr("`final-power`"),
         Constant::new(
             "GtaoParams.pass",
             "per pass: gtao_prefilter: the MIP level k = 0…4 its dispatch writes (one pass per level, in \
              order); gtao_normals and gtao_main: 0; gtao_denoise: the pass index i = 0 … max(1, `denoise`) − 1",
-        ),
-        Constant::new("GtaoParams.bent_normals", "`bent-normals`: off 0, on 1 [0]"),
+        )
+        .expr("pass"),
+        Constant::new("GtaoParams.bent_normals", "`bent-normals`: off 0, on 1 [0]").expr("index(`bent-normals`)"),
     ],
     XEGTAO_STRUCTURE,
     crate::common::camera::CONSTANTS,
@@ -269,49 +270,56 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
 /// The `GtaoParams` rows every technique built on XeGTAO's passes shares (XeGTAO, VBAO): the
 /// view, the radius, the slice/step structure, the sampling and the noise.
 pub const XEGTAO_STRUCTURE: &[Constant] = &[
-    Constant::new("GtaoParams.view", "the frame's ViewParams (ViewParams rows)"),
-    Constant::new("GtaoParams.radius", "R: the frame's world-space AO radius (world units), XeGTAO's EffectRadius"),
-    Constant::new("GtaoParams.radius_multiplier", "`radius-multiplier` [1.457]"),
-    Constant::new("GtaoParams.sample_distribution_power", "`sample-power` [2]"),
-    Constant::new("GtaoParams.depth_mip_sampling_offset", "`mip-offset` [3.3]"),
+    Constant::new("GtaoParams.view", "the frame's ViewParams (ViewParams rows)").expr("ViewParams"),
+    Constant::new("GtaoParams.radius", "R: the frame's world-space AO radius (world units), XeGTAO's EffectRadius")
+        .expr("radius"),
+    Constant::new("GtaoParams.radius_multiplier", "`radius-multiplier` [1.457]").expr("`radius-multiplier`"),
+    Constant::new("GtaoParams.sample_distribution_power", "`sample-power` [2]").expr("`sample-power`"),
+    Constant::new("GtaoParams.depth_mip_sampling_offset", "`mip-offset` [3.3]").expr("`mip-offset`"),
     Constant::new(
         "GtaoParams.slices",
         "`slices`, which `preset` sets first: low 1, medium 2, high 3, ultra 9 (custom keeps it) [3]",
-    ),
+    )
+    .expr("`slices`"),
     Constant::new(
         "GtaoParams.steps",
         "`steps`, which `preset` sets first: low 2, medium 2, high 3, ultra 3 (custom keeps it) [3]",
-    ),
-    Constant::new("GtaoParams.denoise_passes", "`denoise` (0 still runs one denoise pass) [1]"),
+    )
+    .expr("`steps`"),
+    Constant::new("GtaoParams.denoise_passes", "`denoise` (0 still runs one denoise pass) [1]").expr("`denoise`"),
     Constant::new(
         "GtaoParams.noise_frame",
         "the frame index (FrameDesc::frame_index; 0 for a single frame): XeGTAO's NoiseIndex, taken mod 64 by \
          the noise (spec gtao-raymarch-hybrid §1.6)",
-    ),
-    Constant::new("GtaoParams._pad", "0"),
+    )
+    .expr("frame"),
+    Constant::new("GtaoParams._pad", "0").expr("0"),
 ];
 
 /// How [`with_denoiser`] fills `GtaoParams` for the techniques that reuse XeGTAO's denoiser
 /// (the ray march, the hybrid: their `denoise` key): XeGTAO's defaults but the pass count.
 pub const DENOISER: &[Constant] = &[
-    Constant::new("GtaoParams.view", "the frame's ViewParams (ViewParams rows)"),
-    Constant::new("GtaoParams.radius", "R: the frame's world-space AO radius (world units; unread by the denoiser)"),
-    Constant::new("GtaoParams.radius_multiplier", "1.457 (XeGTAO's default; unread by the denoiser)"),
-    Constant::new("GtaoParams.falloff_range", "0.615 (XeGTAO's default; unread by the denoiser)"),
-    Constant::new("GtaoParams.sample_distribution_power", "2 (XeGTAO's default; unread by the denoiser)"),
-    Constant::new("GtaoParams.thin_occluder_compensation", "0 (XeGTAO's default; unread by the denoiser)"),
-    Constant::new("GtaoParams.final_value_power", "2.2 (XeGTAO's default; unread by the denoiser)"),
-    Constant::new("GtaoParams.depth_mip_sampling_offset", "3.3 (XeGTAO's default; unread by the denoiser)"),
-    Constant::new("GtaoParams.slices", "3 (XeGTAO's default; unread by the denoiser)"),
-    Constant::new("GtaoParams.steps", "3 (XeGTAO's default; unread by the denoiser)"),
+    Constant::new("GtaoParams.view", "the frame's ViewParams (ViewParams rows)").expr("ViewParams"),
+    Constant::new("GtaoParams.radius", "R: the frame's world-space AO radius (world units; unread by the denoiser)")
+        .expr("radius"),
+    Constant::new("GtaoParams.radius_multiplier", "1.457 (XeGTAO's default; unread by the denoiser)").expr("1.457"),
+    Constant::new("GtaoParams.falloff_range", "0.615 (XeGTAO's default; unread by the denoiser)").expr("0.615"),
+    Constant::new("GtaoParams.sample_distribution_power", "2 (XeGTAO's default; unread by the denoiser)").expr("2.0"),
+    Constant::new("GtaoParams.thin_occluder_compensation", "0 (XeGTAO's default; unread by the denoiser)").expr("0.0"),
+    Constant::new("GtaoParams.final_value_power", "2.2 (XeGTAO's default; unread by the denoiser)").expr("2.2"),
+    Constant::new("GtaoParams.depth_mip_sampling_offset", "3.3 (XeGTAO's default; unread by the denoiser)").expr("3.3"),
+    Constant::new("GtaoParams.slices", "3 (XeGTAO's default; unread by the denoiser)").expr("3"),
+    Constant::new("GtaoParams.steps", "3 (XeGTAO's default; unread by the denoiser)").expr("3"),
     Constant::new(
         "GtaoParams.denoise_passes",
         "`denoise`: the denoise passes, 1–3 (0: no denoiser, the technique's AO is final)",
-    ),
-    Constant::new("GtaoParams.noise_frame", "the frame index (FrameDesc::frame_index; unread by the denoiser)"),
-    Constant::new("GtaoParams.pass", "per pass: the denoise pass index i = 0 … `denoise` − 1"),
-    Constant::new("GtaoParams.bent_normals", "0 (no bent normals)"),
-    Constant::new("GtaoParams._pad", "0"),
+    )
+    .expr("`denoise`"),
+    Constant::new("GtaoParams.noise_frame", "the frame index (FrameDesc::frame_index; unread by the denoiser)")
+        .expr("frame"),
+    Constant::new("GtaoParams.pass", "per pass: the denoise pass index i = 0 … `denoise` − 1").expr("pass"),
+    Constant::new("GtaoParams.bent_normals", "0 (no bent normals)").expr("0"),
+    Constant::new("GtaoParams._pad", "0").expr("0"),
 ];
 
 impl GtaoSettings {

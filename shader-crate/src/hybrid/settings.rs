@@ -104,22 +104,32 @@ pub static HYBRID: Declaration<HybridSettings> = Declaration {
 /// `GtaoParams` (`denoise` > 0) and the camera's rows.
 pub const CONSTANTS: &[Constant] = crate::join_constants![
     &[
-        Constant::new("HybridFrame.camera", "the frame's Camera (Camera and ViewParams rows)"),
-        Constant::new("HybridFrame.params", "the technique's HybridParams (HybridParams rows)"),
-        Constant::new("HybridParams.radius", "R: the frame's world-space AO radius, the rays' length (world units)"),
+        Constant::new("HybridFrame.camera", "the frame's Camera (Camera and ViewParams rows)")
+        .expr("Camera"),
+        Constant::new("HybridFrame.params", "the technique's HybridParams (HybridParams rows)")
+        .expr("HybridParams"),
+        Constant::new("HybridParams.radius", "R: the frame's world-space AO radius, the rays' length (world units)")
+        .expr("radius"),
         Constant::new(
             "HybridParams.world_weight",
             "`world-weight`, which `variant` sets first: mixed 2/3, world 1, screen 0 [2/3]",
-        ),
-        Constant::new("HybridParams.depth_bias", "0.0008: relative depth bias κ of the screen march"),
-        Constant::new("HybridParams.screen_rays", "`variant`: mixed 1, world 0, screen 2 screen rays per pixel [1]"),
-        Constant::new("HybridParams.world_rays", "`variant`: mixed 1, world 2, screen 0 world rays per pixel [1]"),
-        Constant::new("HybridParams.screen_steps", "`screen-steps`: steps of a screen ray [16]"),
+        )
+        .expr("`world-weight`"),
+        Constant::new("HybridParams.depth_bias", "0.0008: relative depth bias κ of the screen march")
+        .expr("0.0008"),
+        Constant::new("HybridParams.screen_rays", "`variant`: mixed 1, world 0, screen 2 screen rays per pixel [1]")
+        .expr("pick(index(`variant`), 1, 0, 2)"),
+        Constant::new("HybridParams.world_rays", "`variant`: mixed 1, world 2, screen 0 world rays per pixel [1]")
+        .expr("pick(index(`variant`), 1, 2, 0)"),
+        Constant::new("HybridParams.screen_steps", "`screen-steps`: steps of a screen ray [16]")
+        .expr("`screen-steps`"),
         Constant::new(
             "HybridParams.noise_frame",
             "the frame index (FrameDesc::frame_index; 0 for one frame), mod 64 in the noise (gtao-raymarch-hybrid §1.6, §4.1)",
-        ),
-        Constant::new("HybridParams._pad", "0"),
+        )
+        .expr("frame"),
+        Constant::new("HybridParams._pad", "0")
+        .expr("0"),
     ],
     crate::gtao::settings::DENOISER,
     crate::common::camera::CONSTANTS,

@@ -71,24 +71,28 @@ pub static RAYMARCH: Declaration<RaymarchSettings> = Declaration {
 /// `raymarch_kernel`, a resource, not a constant.)
 pub const CONSTANTS: &[Constant] = crate::join_constants![
     &[
-        Constant::new("RaymarchParams.view", "the frame's ViewParams (ViewParams rows)"),
+        Constant::new("RaymarchParams.view", "the frame's ViewParams (ViewParams rows)").expr("ViewParams"),
         Constant::new(
             "RaymarchParams.radius",
             "R: the frame's world-space AO radius, the march distance (world units)"
-        ),
-        Constant::new("RaymarchParams.alpha", "`alpha`: contrast exponent α of Eq. 2 [1]"),
-        Constant::new("RaymarchParams.depth_bias", "0.0008: relative depth bias κ"),
+        )
+        .expr("radius"),
+        Constant::new("RaymarchParams.alpha", "`alpha`: contrast exponent α of Eq. 2 [1]").expr("`alpha`"),
+        Constant::new("RaymarchParams.depth_bias", "0.0008: relative depth bias κ").expr("0.0008"),
         Constant::new(
             "RaymarchParams.thickness",
             "f32::MAX = 3.4028235e38: depth-buffer surfaces are a pure height field"
-        ),
-        Constant::new("RaymarchParams.directions", "`directions`: N [16]"),
-        Constant::new("RaymarchParams.steps", "`steps`: S per direction [8]"),
-        Constant::new("RaymarchParams.contribution", "Contribution of `contribution`: linear 0, binary 1 [linear 0]"),
+        )
+        .expr("3.4028235e38"),
+        Constant::new("RaymarchParams.directions", "`directions`: N [16]").expr("`directions`"),
+        Constant::new("RaymarchParams.steps", "`steps`: S per direction [8]").expr("`steps`"),
+        Constant::new("RaymarchParams.contribution", "Contribution of `contribution`: linear 0, binary 1 [linear 0]")
+            .expr("index(`contribution`)"),
         Constant::new(
             "RaymarchParams.noise_frame",
             "the frame index (FrameDesc::frame_index; 0 for one frame), mod 64 in the noise (gtao-raymarch-hybrid §1.6)"
-        ),
+        )
+        .expr("frame"),
     ],
     crate::gtao::settings::DENOISER,
     crate::common::camera::CONSTANTS,

@@ -47,6 +47,9 @@ pub struct SvaoSettings {
     /// The SD map from the raster coverage-mask baseline (svao-raysd §8: no SD guard band, no jitter)
     /// instead of ray tracing \[ray\].
     pub raster: bool,
+    /// What refines pass 1's flagged samples: fixed by each technique of the family (no
+    /// technique reads the `refinement` key), so its constants' expressions read it too.
+    pub refinement: Secondary,
 }
 
 impl Default for SvaoSettings {
@@ -64,6 +67,7 @@ impl Default for SvaoSettings {
             peel_separation: 0.01,
             hbao: false,
             raster: false,
+            refinement: Secondary::Disabled,
         }
     }
 }
@@ -103,6 +107,10 @@ impl Settings for SvaoSettings {
             s.samples = AO_SAMPLES << i
         })
         .help("AO samples per pixel N of the VAO/HBAO+ kernel: ψ = VdC(N + i) (spec svao-raysd §2, §4.2, §4.5)"),
+        Setting::<Self>::choice("refinement", &["none", "sd-map", "rays"], |s| s.refinement as usize, |s, i| {
+            s.refinement = [Secondary::Disabled, Secondary::StochasticDepth, Secondary::Raytraced][i]
+        })
+        .help("What refines pass 1 (fixed by the technique: vao and hbao none, raysd, hbao-sd and sdsvao the SD map, raysvao rays)"),
     ];
 
     fn check(&self) -> Result<(), String> {
@@ -163,77 +171,93 @@ pub const fn stenciled(
 /// ([`crate::vao::settings::CONSTANTS`]) and the camera's, the table of the whole stenciled
 /// family: vao, hbao, raysd, hbao-sd, sdsvao, raysvao.
 pub const SVAO: &[Constant] = &[
-    Constant::new("SvaoFrame.camera", "the frame's Camera (Camera and ViewParams rows)"),
-    Constant::new("SvaoFrame.params", "the technique's SvaoParams (SvaoParams rows)"),
-    Constant::new("SvaoParams.vao", "VaoParams as for vao_main (VaoParams rows: radius R·1.5 when `kernel` = hbao)"),
+    Constant::new("SvaoFrame.camera", "the frame's Camera (Camera and ViewParams rows)")
+        .expr("Camera"),
+    Constant::new("SvaoFrame.params", "the technique's SvaoParams (SvaoParams rows)")
+        .expr("SvaoParams"),
+    Constant::new("SvaoParams.vao", "VaoParams as for vao_main (VaoParams rows: radius R·1.5 when `kernel` = hbao)")
+        .expr("VaoParams"),
     Constant::new(
         "SvaoParams.secondary",
         "Secondary, fixed by the technique: 0 Disabled (hbao, and vao with dual depth, the HBAO+ kernel or \
          16/32 `ao-samples`: pass 1 alone finalizes every pixel), 1 StochasticDepth (raysd, hbao-sd, sdsvao: pass 2 reads the SD \
          map), 2 Raytraced (raysvao: one ray per flagged sample)",
-    ),
-    Constant::new("SvaoParams.interval", "`interval`: off 0, on 1 [on]"),
-    Constant::new("SvaoParams.cutoff", "`cutoff`: radius cutoff in full-resolution pixels [6]"),
+    )
+        .expr("index(`refinement`)"),
+    Constant::new("SvaoParams.interval", "`interval`: off 0, on 1 [on]")
+        .expr("index(`interval`)"),
+    Constant::new("SvaoParams.cutoff", "`cutoff`: radius cutoff in full-resolution pixels [6]")
+        .expr("`cutoff`"),
     Constant::new(
         "SvaoParams.sd_guard",
         "SD guard band in SD texels: floor(`sd-guard`/div), div = 1, 2, 4, 8, 16 for `sd-res` full, half, \
          quarter, eighth, sixteenth [floor(512/4) = 128]; 0 when `sd-source` = raster (always in sdsvao) and without an SD map \
          (Secondary ≠ 1)",
-    ),
+    )
+        .expr("select(`refinement` == \"sd-map\" && `sd-source` == \"ray\", div_floor(`sd-guard`, pick(index(`sd-res`), 1, 2, 4, 8, 16)), 0)"),
     Constant::new(
         "SvaoParams.sd_low_res",
         "(ceil(W/div), ceil(H/div)) SD texels, div = 1, 2, 4, 8, 16 for `sd-res` full, half, quarter, \
          eighth, sixteenth [4], W×H the full target incl. its guard band; (1, 1) without an SD map (Secondary ≠ 1)",
-    ),
-    Constant::new("SvaoParams.sd_layers", "N = `sd-layers` [4]"),
-    Constant::new("SvaoParams.max_count", "max(`max-count`, `sd-layers`) [max(8, 4) = 8]"),
+    )
+        .expr("select(`refinement` == \"sd-map\", uvec2(div_ceil(W, pick(index(`sd-res`), 1, 2, 4, 8, 16)), div_ceil(H, pick(index(`sd-res`), 1, 2, 4, 8, 16))), uvec2(1, 1))"),
+    Constant::new("SvaoParams.sd_layers", "N = `sd-layers` [4]")
+        .expr("`sd-layers`"),
+    Constant::new("SvaoParams.max_count", "max(`max-count`, `sd-layers`) [max(8, 4) = 8]")
+        .expr("max(`max-count`, `sd-layers`)"),
     Constant::new(
         "SvaoParams.jitter",
         "JitterTable of `jitter`: none 0, scrambled 1, paper 2 [scrambled 1]; 0 when `sd-source` = raster \
          (always in sdsvao)",
-    ),
-    Constant::new("SvaoParams.dual", "`primary`: single 0, dual 1 [single 0]"),
-    Constant::new("SvaoParams.kernel", "`kernel`: vao 0 (KERNEL_VAO), hbao 1 (KERNEL_HBAO); hbao and hbao-sd: 1"),
+    )
+        .expr("select(`sd-source` == \"raster\", 0, index(`jitter`))"),
+    Constant::new("SvaoParams.dual", "`primary`: single 0, dual 1 [single 0]")
+        .expr("index(`primary`)"),
+    Constant::new("SvaoParams.kernel", "`kernel`: vao 0 (KERNEL_VAO), hbao 1 (KERNEL_HBAO); hbao and hbao-sd: 1")
+        .expr("index(`kernel`)"),
     Constant::new(
         "SvaoParams.sample_set",
         "`ao-samples`: 8 → 0, 16 → 1, 32 → 2 (N = 8·2^sample_set samples per pixel) [8 → 0]",
-    ),
+    )
+        .expr("index(`ao-samples`)"),
     Constant::new(
         "SvaoParams.noise_frame",
         "the frame index (FrameDesc::frame_index; 0 for a single frame): rotates the SD maps' hashes by \
          frame_rotation(f mod 64) and offsets the jitter index by f mod 16",
-    ),
-    Constant::new("SvaoParams._pad0", "0"),
-    Constant::new("SvaoParams._pad1", "0"),
-    Constant::new("SvaoParams._pad2", "0"),
+    )
+        .expr("frame"),
+    Constant::new("SvaoParams._pad0", "0")
+        .expr("0"),
+    Constant::new("SvaoParams._pad1", "0")
+        .expr("0"),
+    Constant::new("SvaoParams._pad2", "0")
+        .expr("0"),
     Constant::new(
         "RasterParams.world_to_view",
         "Camera.world_to_view of the frame (pushed to gbuffer_vs by the raster SD pass, sd_map_raster)",
-    ),
-    Constant::new("RasterParams.view", "the frame's ViewParams (ViewParams rows); the pass's viewport is the SD map"),
-    Constant::new("RasterParams.peel_separation", "0 (the SD map's pass peels nothing)"),
-    Constant::new("RasterParams._pad0", "0"),
-    Constant::new("RasterParams._pad1", "0"),
-    Constant::new("RasterParams._pad2", "0"),
+    )
+        .expr("inverse_rigid(look_at(eye, target, up))"),
+    Constant::new("RasterParams.view", "the frame's ViewParams (ViewParams rows); the pass's viewport is the SD map")
+        .expr("ViewParams"),
+    Constant::new("RasterParams.peel_separation", "0 (the SD map's pass peels nothing)")
+        .expr("0.0"),
+    Constant::new("RasterParams._pad0", "0")
+        .expr("0"),
+    Constant::new("RasterParams._pad1", "0")
+        .expr("0"),
+    Constant::new("RasterParams._pad2", "0")
+        .expr("0"),
 ];
 
 /// The stenciled family's constants: [`SVAO`], VAO's and the blur's, the camera's.
 pub const CONSTANTS: &[Constant] =
     crate::join_constants![SVAO, crate::vao::settings::CONSTANTS, crate::common::camera::CONSTANTS];
 
-/// Pass 1 alone: every pixel final (spec svao-raysd §5).
-pub fn unrefined(s: &SvaoSettings, frame: &FrameDesc) -> Result<Graph, String> {
-    s.graph(frame, Secondary::Disabled)
-}
-
-/// Refined from a stochastic depth map, ray-traced or raster (spec svao-raysd §7–§9).
-fn refined_by_sd_map(s: &SvaoSettings, frame: &FrameDesc) -> Result<Graph, String> {
-    s.graph(frame, Secondary::StochasticDepth)
-}
-
-/// Refined by one ray per flagged sample (spec svao-raysd §10).
-fn refined_by_rays(s: &SvaoSettings, frame: &FrameDesc) -> Result<Graph, String> {
-    s.graph(frame, Secondary::Raytraced)
+/// Pass 1, refined as [`SvaoSettings::refinement`] says: not at all (every pixel final, spec
+/// svao-raysd §5), from a stochastic depth map, ray-traced or raster (spec svao-raysd §7–§9), or
+/// by one ray per flagged sample (spec svao-raysd §10).
+pub fn refined(s: &SvaoSettings, frame: &FrameDesc) -> Result<Graph, String> {
+    s.graph(frame, s.refinement)
 }
 
 /// VAO's pass 1 alone with the HBAO+ kernel, on single or dual depth (spec svao-raysd §4.5, §11).
@@ -242,7 +266,7 @@ pub static HBAO: Declaration<SvaoSettings> = stenciled(
     "HBAO+ kernel on single or dual depth, no refinement (spec svao-raysd §4.5, §11)",
     &["primary", "peel-separation", "ao-samples"],
     || SvaoSettings { hbao: true, ..Default::default() },
-    unrefined,
+    refined,
 );
 
 /// Stenciled VAO refined from the ray-traced stochastic depth map (spec svao-raysd §3, §5, §7, §9).
@@ -263,8 +287,8 @@ pub static RAYSD: Declaration<SvaoSettings> = stenciled(
         "sd-source",
         "ao-samples",
     ],
-    SvaoSettings::default,
-    refined_by_sd_map,
+    || SvaoSettings { refinement: Secondary::StochasticDepth, ..Default::default() },
+    refined,
 );
 
 /// Ray-SD with the HBAO+ kernel in both AO passes (spec svao-raysd §4.5).
@@ -283,8 +307,8 @@ pub static HBAO_SD: Declaration<SvaoSettings> = stenciled(
         "peel-separation",
         "ao-samples",
     ],
-    || SvaoSettings { hbao: true, ..Default::default() },
-    refined_by_sd_map,
+    || SvaoSettings { hbao: true, refinement: Secondary::StochasticDepth, ..Default::default() },
+    refined,
 );
 
 /// Stenciled VAO refined from the raster coverage-mask SD map (spec svao-raysd §8; no SD guard
@@ -293,8 +317,8 @@ pub static SDSVAO: Declaration<SvaoSettings> = stenciled(
     "sdsvao",
     "stenciled VAO refined from the raster coverage-mask SD map (spec svao-raysd §8)",
     &["sd-res", "sd-layers", "max-count", "cutoff", "interval", "primary", "peel-separation", "kernel", "ao-samples"],
-    || SvaoSettings { raster: true, ..Default::default() },
-    refined_by_sd_map,
+    || SvaoSettings { raster: true, refinement: Secondary::StochasticDepth, ..Default::default() },
+    refined,
 );
 
 /// Stenciled VAO refined by one ray per flagged sample (spec svao-raysd §10), the Ray-SD reference;
@@ -303,8 +327,8 @@ pub static RAYSVAO: Declaration<SvaoSettings> = stenciled(
     "raysvao",
     "stenciled VAO or HBAO+ refined by one ray per flagged sample, the Ray-SD reference (spec svao-raysd §10)",
     &["cutoff", "primary", "peel-separation", "kernel", "ao-samples"],
-    SvaoSettings::default,
-    refined_by_rays,
+    || SvaoSettings { refinement: Secondary::Raytraced, ..Default::default() },
+    refined,
 );
 
 impl SvaoSettings {

@@ -5,7 +5,7 @@ use super::VaoParams;
 use crate::blur::graph::blur_passes;
 use crate::common::tables::AO_SAMPLES;
 use crate::graph::{Extent, FrameDesc, Graph, Pass, inputs, target_f32};
-use crate::svao::settings::{SvaoSettings, stenciled, unrefined};
+use crate::svao::settings::{SvaoSettings, refined, stenciled};
 use crate::technique::{Constant, Declaration};
 
 /// Plain VAO → blur; on dual depth, with the HBAO+ kernel or with 16/32 samples, the stenciled
@@ -15,7 +15,7 @@ pub static VAO: Declaration<SvaoSettings> = stenciled(
     "Volumetric AO on the depth buffer, or on dual depth (spec svao-raysd §4–§5, §11)",
     &["primary", "peel-separation", "kernel", "ao-samples"],
     SvaoSettings::default,
-    |s, frame| if s.dual || s.hbao || s.samples != AO_SAMPLES { unrefined(s, frame) } else { Ok(graph(frame)) },
+    |s, frame| if s.dual || s.hbao || s.samples != AO_SAMPLES { refined(s, frame) } else { Ok(graph(frame)) },
 );
 
 /// Screen-space clamp of the sampling disk in pixels (spec svao-raysd §2 default).
@@ -37,23 +37,25 @@ pub fn vao_params(frame: &FrameDesc) -> VaoParams {
 /// pass 1), so its declaration uses the family's table, [`crate::svao::settings::CONSTANTS`],
 /// which holds these rows.
 pub const CONSTANTS: &[Constant] = &[
-    Constant::new("VaoParams.view", "the frame's ViewParams (ViewParams rows)"),
+    Constant::new("VaoParams.view", "the frame's ViewParams (ViewParams rows)").expr("ViewParams"),
     Constant::new(
         "VaoParams.radius",
         "R·k, R the frame's world-space AO radius (world units), k = 1 for `kernel` = vao, k = 1.5 for \
          `kernel` = hbao (the reference UI's scaling for the HBAO+ kernel; hbao and hbao-sd: always 1.5)",
-    ),
-    Constant::new("VaoParams.exponent", "e: the frame's AO exponent (the AO is A^e)"),
-    Constant::new("VaoParams.thickness", "τ: the frame's VAO thickness (world units)"),
-    Constant::new("VaoParams.max_screen_radius", "512 (pixels): screen-space clamp of the sampling disk"),
-    Constant::new("BlurParams.view", "the frame's ViewParams (ViewParams rows)"),
+    )
+    .expr("radius * pick(index(`kernel`), 1.0, 1.5)"),
+    Constant::new("VaoParams.exponent", "e: the frame's AO exponent (the AO is A^e)").expr("exponent"),
+    Constant::new("VaoParams.thickness", "τ: the frame's VAO thickness (world units)").expr("thickness"),
+    Constant::new("VaoParams.max_screen_radius", "512 (pixels): screen-space clamp of the sampling disk").expr("512"),
+    Constant::new("BlurParams.view", "the frame's ViewParams (ViewParams rows)").expr("ViewParams"),
     Constant::new(
         "BlurParams.direction",
         "per pass: (1, 0) in the first blur pass (horizontal, into blur_horizontal), (0, 1) in the second \
          (vertical, into ao_final)",
-    ),
-    Constant::new("BlurParams.sharpness", "16 (depth sharpness of the cross-bilateral weights)"),
-    Constant::new("BlurParams._pad", "0"),
+    )
+    .expr("select(pass == 0, uvec2(1, 0), uvec2(0, 1))"),
+    Constant::new("BlurParams.sharpness", "16 (depth sharpness of the cross-bilateral weights)").expr("16"),
+    Constant::new("BlurParams._pad", "0").expr("0"),
 ];
 
 /// VAO → blur.

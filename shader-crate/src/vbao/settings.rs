@@ -115,24 +115,28 @@ pub static VBAO: Declaration<VbaoSettings> = Declaration {
 /// the camera's rows.
 pub const CONSTANTS: &[Constant] = crate::join_constants![
     &[
-        Constant::new("VbaoParams.gtao", "the GtaoParams below (GtaoParams rows)"),
-        Constant::new("VbaoParams.thickness", "T = `thickness` · R, R the frame's AO radius (world units) [0.5·R]"),
+        Constant::new("VbaoParams.gtao", "the GtaoParams below (GtaoParams rows)").expr("GtaoParams"),
+        Constant::new("VbaoParams.thickness", "T = `thickness` · R, R the frame's AO radius (world units) [0.5·R]")
+            .expr("`thickness` * radius"),
         Constant::new(
             "VbaoParams.gate_radius",
             "R_g by `gate`: off 0 (no gate), effective R·`radius-multiplier`, radius R, R the frame's AO radius \
              (world units) [R·1.457]",
-        ),
-        Constant::new("VbaoParams.weighting", "`weighting`: uniform 0, cosine-blender 1, cosine-exact 2 [0]"),
-        Constant::new("VbaoParams.sector_rule", "`sectors`: paper 0, touch 1 [0]"),
-        Constant::new("GtaoParams.falloff_range", "0.615 (unread: VBAO has no falloff, spec vbao §2.1)"),
-        Constant::new("GtaoParams.thin_occluder_compensation", "0 (unread by VBAO)"),
-        Constant::new("GtaoParams.final_value_power", "`final-power` [1]"),
+        )
+        .expr("pick(index(`gate`), 0.0, radius * `radius-multiplier`, radius)"),
+        Constant::new("VbaoParams.weighting", "`weighting`: uniform 0, cosine-blender 1, cosine-exact 2 [0]")
+            .expr("index(`weighting`)"),
+        Constant::new("VbaoParams.sector_rule", "`sectors`: paper 0, touch 1 [0]").expr("index(`sectors`)"),
+        Constant::new("GtaoParams.falloff_range", "0.615 (unread: VBAO has no falloff, spec vbao §2.1)").expr("0.615"),
+        Constant::new("GtaoParams.thin_occluder_compensation", "0 (unread by VBAO)").expr("0.0"),
+        Constant::new("GtaoParams.final_value_power", "`final-power` [1]").expr("`final-power`"),
         Constant::new(
             "GtaoParams.pass",
             "per pass: gtao_prefilter: the MIP level k = 0…4 its dispatch writes (one pass per level, in \
              order); gtao_normals and vbao_main: 0; gtao_denoise: the pass index i = 0 … max(1, `denoise`) − 1",
-        ),
-        Constant::new("GtaoParams.bent_normals", "0 (VBAO outputs no bent normal)"),
+        )
+        .expr("pass"),
+        Constant::new("GtaoParams.bent_normals", "0 (VBAO outputs no bent normal)").expr("0"),
     ],
     crate::gtao::settings::XEGTAO_STRUCTURE,
     crate::common::camera::CONSTANTS,

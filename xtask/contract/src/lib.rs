@@ -10,6 +10,8 @@
 //! without it.
 
 pub mod atomic_file;
+pub mod constants;
+pub mod expr;
 pub mod manifest;
 pub mod spirv_hash;
 #[cfg(feature = "reflect")]

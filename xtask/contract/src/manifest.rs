@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Manifest {
-    /// The schema of this file (`assets/README.md`): `aokit-manifest/2`.
+    /// The schema of this file (`assets/README.md`): `aokit-manifest/3`.
     #[serde(default)]
     pub schema: String,
     /// [`crate::spirv_hash::shader_source_hash`] of the sources the modules were built from.
@@ -58,10 +58,13 @@ pub struct ConstantManifest {
     pub offset: u32,
     #[serde(rename = "type")]
     pub ty: String,
-    /// In words and symbols: setting keys in backticks, `[x]` the value where the technique does
-    /// not read the key, the frame's quantities (W×H full target, w×h inner image, g guard band,
-    /// R radius, e exponent, τ thickness; the camera's rows name theirs).
-    pub formula: String,
+    /// The value as an expression of the grammar `assets/README.md` defines ("Expressions"):
+    /// the technique's settings in backticks, the frame's named inputs, arithmetic and builtins;
+    /// a field of struct type has the struct's name. Settings the technique does not read are
+    /// already replaced by their fixed values.
+    pub expr: String,
+    /// The same in words, with units and the paper sections.
+    pub doc: String,
 }
 
 /// One setting (`aokit_shaders::technique::Setting`).
@@ -188,8 +191,11 @@ pub const NOT_WGSL: [(&str, &str); 2] = [
 pub struct BindingManifest {
     pub set: u32,
     pub binding: u32,
-    /// "storage_buffer", "uniform_buffer", "image", "acceleration_structure", …
+    /// "storage_buffer", "uniform_buffer", "storage_image", "sampled_image" (read with
+    /// `OpImageFetch`, no sampler), "acceleration_structure".
     pub kind: String,
+    /// The module writes it (storage buffers: no `NonWritable` decoration; storage images: the
+    /// image is not `readonly`).
     pub writable: bool,
     /// The kernel's parameter name (SPIR-V `OpName`).
     #[serde(default)]
@@ -198,6 +204,14 @@ pub struct BindingManifest {
     /// a record struct of [`Manifest::structs`] (`SvaoFrame`), an image or the TLAS.
     #[serde(default)]
     pub rust_type: String,
+    /// Storage images: the texel format the module declares, as WebGPU names it (`r32float`,
+    /// `r16float`, `r8unorm`; Vulkan `R32_SFLOAT`, `R16_SFLOAT`, `R8_UNORM`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub format: Option<String>,
+    /// Sampled images: the sample type (`float`: a depth image's or a colour image's first
+    /// channels read as floats; WebGPU `unfilterable-float` suffices, no sampler is used).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sample_type: Option<String>,
 }
 
 impl Manifest {
@@ -212,7 +226,7 @@ impl Manifest {
 #[cfg(feature = "reflect")]
 pub mod reflect {
     use super::{BindingManifest, ModuleManifest};
-    use naga::{AddressSpace, ShaderStage, StorageAccess, TypeInner};
+    use naga::{AddressSpace, ImageClass, ScalarKind, ShaderStage, StorageAccess, TypeInner};
 
     /// Parse with naga's SPIR-V front end and run naga's validator.
     pub fn validate(bytes: &[u8]) -> Result<naga::Module, String> {
@@ -254,18 +268,44 @@ pub mod reflect {
                 AddressSpace::Immediate => push_constant_bytes += size,
                 _ => {
                     let Some(b) = &var.binding else { continue };
+                    let (mut format, mut sample_type) = (None, None);
                     let (kind, writable) = match var.space {
                         AddressSpace::Storage { access } => ("storage_buffer", access.contains(StorageAccess::STORE)),
                         AddressSpace::Uniform => ("uniform_buffer", false),
                         _ => match module.types[var.ty].inner {
                             TypeInner::Sampler { .. } => ("sampler", false),
-                            TypeInner::Image { .. } => ("image", false),
+                            TypeInner::Image { class: ImageClass::Storage { format: f, access }, .. } => {
+                                // naga's names are WebGPU's texel formats (`R32Float` → r32float).
+                                format = Some(format!("{f:?}").to_lowercase());
+                                ("storage_image", access.contains(StorageAccess::STORE))
+                            }
+                            TypeInner::Image { class, .. } => {
+                                sample_type = Some(match class {
+                                    ImageClass::Sampled { kind: ScalarKind::Float, .. } => "float",
+                                    ImageClass::Sampled { kind: ScalarKind::Sint, .. } => "sint",
+                                    ImageClass::Sampled { kind: ScalarKind::Uint, .. } => "uint",
+                                    ImageClass::Depth { .. } => "depth",
+                                    _ => "other",
+                                });
+                                ("sampled_image", false)
+                            }
                             _ => ("other", false),
                         },
                     };
                     let name = var.name.clone().unwrap_or_default();
                     let (set, binding, kind) = (b.group, b.binding, kind.into());
-                    bindings.push(BindingManifest { set, binding, kind, writable, name, rust_type: String::new() });
+                    let sample_type = sample_type.map(Into::into);
+                    let rust_type = String::new();
+                    bindings.push(BindingManifest {
+                        set,
+                        binding,
+                        kind,
+                        writable,
+                        name,
+                        rust_type,
+                        format,
+                        sample_type,
+                    });
                 }
             }
         }
@@ -391,7 +431,9 @@ pub mod words {
             };
             let name = names.get(&id).cloned().unwrap_or_default();
             let kind = kind.into();
-            bindings.push(BindingManifest { set: s, binding: b, kind, writable, name, rust_type: String::new() });
+            let rust_type = String::new();
+            let (format, sample_type) = (None, None);
+            bindings.push(BindingManifest { set: s, binding: b, kind, writable, name, rust_type, format, sample_type });
         }
         bindings.sort_by_key(|b| (b.set, b.binding));
         Ok(ModuleManifest {
@@ -438,7 +480,7 @@ impl Manifest {
     /// declared or its writability differs from the declaration, where its push constants or
     /// record have no struct, or a struct's size differs from the module's block.
     pub fn complete(mut self) -> Result<Manifest, String> {
-        self.schema = "aokit-manifest/2".into();
+        self.schema = "aokit-manifest/3".into();
         self.structs = aokit_shaders::contract::shared_structs()
             .into_iter()
             .map(|s| StructManifest {
@@ -484,7 +526,7 @@ impl Manifest {
                 })?;
                 // The declaration (the Rust signature) and the compiled module agree on what a
                 // storage buffer is and whether the kernel may write it.
-                if b.kind == "storage_buffer" && decl.access.writes() != b.writable {
+                if matches!(b.kind.as_str(), "storage_buffer" | "storage_image") && decl.access.writes() != b.writable {
                     return Err(format!(
                         "{}: binding {} ({}) is declared {:?}, the module's is {}",
                         m.entry_point,
@@ -646,6 +688,7 @@ pub fn reference_frame(inner: aokit_shaders::glam::UVec2, guard: u32) -> aokit_s
 }
 
 /// The registry's techniques at their defaults.
+#[cfg(feature = "reflect")]
 fn techniques() -> Result<Vec<TechniqueManifest>, String> {
     use aokit_shaders::graph::{Access, Elem, Init, Lifetime, PassKind};
     use aokit_shaders::technique::Kind;
@@ -866,9 +909,11 @@ pub mod constants {
         Ok(used)
     }
 
-    /// Every field of every constants struct `t` uses with its formula, structs in `structs`
-    /// order. Fails where a field has no formula, a row names a field that does not exist (or
-    /// twice), or a formula refers to a `Struct.field` or a setting key that does not exist.
+    /// Every field of every constants struct `t` uses with its expression and its prose,
+    /// structs in `structs` order. Fails where a field has no expression or an empty prose, a
+    /// row names a field that does not exist (or twice), an expression does not parse or names a
+    /// setting `t` does not read (after its fixed settings are substituted), or the prose refers
+    /// to a `Struct.field` or a setting key that does not exist.
     pub fn of(
         t: &'static dyn Registered,
         modules: &[ModuleManifest],
@@ -889,6 +934,17 @@ pub mod constants {
             }
             if row.formula.trim().is_empty() {
                 return Err(format!("{name}: constant {} has an empty formula", row.field));
+            }
+            let expr = crate::constants::expression(t, row.expr);
+            let own: Vec<&str> = t.rows().iter().map(|r| r.key).collect();
+            if let Some(key) = crate::expr::settings_named(&expr).into_iter().find(|k| !own.contains(k)) {
+                return Err(format!(
+                    "{name}: constant {}: its expression names `{key}`, not a setting of {name}",
+                    row.field
+                ));
+            }
+            if !row.expr.is_empty() && !structs.iter().any(|s| s.name == expr) {
+                crate::expr::parse(&expr).map_err(|e| format!("{name}: constant {}: {e}", row.field))?;
             }
             // Setting keys are in backticks.
             for (j, key) in row.formula.split('`').enumerate() {
@@ -920,12 +976,16 @@ pub mod constants {
                         s.name, f.name, f.ty, f.offset, s.name
                     )
                 })?;
+                if row.expr.is_empty() {
+                    return Err(format!("{name}: {}.{} has no expression (Constant::expr)", s.name, f.name));
+                }
                 out.push(ConstantManifest {
                     struct_name: s.name.clone(),
                     field: f.name.clone(),
                     offset: f.offset,
                     ty: f.ty.clone(),
-                    formula: row.formula.into(),
+                    expr: crate::constants::expression(t, row.expr),
+                    doc: row.formula.into(),
                 });
             }
         }

@@ -1,0 +1,84 @@
+//! Every technique's constants as its expressions compute them (`aokit_contract::constants`,
+//! the grammar of `assets/README.md`, "Expressions") equal, bit for bit, the push constants and
+//! records the Rust builders put into its graph: at its defaults and with each setting at each
+//! of the manifest's tried values, for two frames (different cameras, sizes, guard bands, AO
+//! parameters and frame indices). A reworded or mistyped expression, or a builder changed
+//! without its expression, fails here naming the struct and field.
+
+use aokit_contract::constants::{FrameInputs, check};
+use aokit_contract::manifest::constants::values_tried;
+use aokit_shaders::glam::{UVec2, Vec3};
+use aokit_shaders::techniques::TECHNIQUES;
+
+fn frames() -> [FrameInputs; 2] {
+    [
+        FrameInputs {
+            eye: Vec3::new(0.0, 1.0, 5.0),
+            target: Vec3::ZERO,
+            up: Vec3::Y,
+            fov_y: 1.0,
+            inner: UVec2::new(1920, 1080),
+            guard: 64,
+            near: 0.1,
+            far: 100.0,
+            radius: 0.5,
+            exponent: 2.0,
+            thickness: 0.0,
+            frame_index: 0,
+        },
+        FrameInputs {
+            eye: Vec3::new(3.7, -2.1, 0.4),
+            target: Vec3::new(-1.0, 0.5, -7.3),
+            up: Vec3::new(0.1, 1.0, 0.05),
+            fov_y: 0.83,
+            inner: UVec2::new(96, 64),
+            guard: 16,
+            near: 0.05,
+            far: 40.0,
+            radius: 0.37,
+            exponent: 1.7,
+            thickness: 0.02,
+            frame_index: 5,
+        },
+    ]
+}
+
+#[test]
+fn expressions_reproduce_the_builders_bit_for_bit() {
+    let mut failures = Vec::new();
+    let mut compared = 0;
+    for &t in TECHNIQUES {
+        let defaults = t.configure();
+        let mut variants = vec![defaults.values()];
+        for (key, default) in defaults.values() {
+            let row = t.rows().into_iter().find(|r| r.key == key).expect("a row per value");
+            for value in values_tried(row.kind, &default) {
+                let mut c = t.configure();
+                if c.set(key, &value).is_ok() && c.validate().is_ok() {
+                    variants.push(c.values());
+                }
+            }
+        }
+        let mut missing = None;
+        for values in &variants {
+            let mut c = t.configure();
+            for (k, v) in values {
+                c.set(k, v).expect("a value tried above");
+            }
+            for frame in frames() {
+                let Ok(graph) = c.graph(&frame.frame_desc()) else { continue };
+                match check(t, values, &frame, &graph) {
+                    Ok(checked) => compared += checked.len(),
+                    Err(e) if e.contains("no expression") => missing = missing.or(Some(e)),
+                    Err(e) => failures.push(format!("{} {values:?}: {e}", t.name())),
+                }
+            }
+        }
+        if let Some(e) = missing {
+            failures.push(format!("{}: {e}", t.name()));
+        }
+    }
+    eprintln!("compared {compared} structs");
+    assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
+    assert!(compared > 0, "nothing compared");
+}
