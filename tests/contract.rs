@@ -152,83 +152,17 @@ fn the_header_compiles_and_c_lays_out_every_struct_as_rust_does() {
     let _ = std::fs::remove_dir_all(&dir);
 }
 
-/// A tiny evaluator of the manifest's size formulas: numbers, `W H w h`, `+`, `·`, `/`,
-/// parentheses, `ceil(x)`, `floor(x)`, `max(a, b)` — what an engine implements from the schema.
-fn eval(formula: &str, vars: &[(char, f64)]) -> f64 {
-    struct P<'a> {
-        s: Vec<char>,
-        i: usize,
-        vars: &'a [(char, f64)],
+/// A size or dispatch expression of the manifest at the target `vars` (`W H w h`) with the
+/// settings of `settings`, through the contract's evaluator.
+fn eval(text: &str, vars: &[(char, f64)], settings: &aokit_contract::expr::Inputs) -> f64 {
+    let mut inputs = settings.clone();
+    for (name, v) in vars {
+        inputs.names.insert(name.to_string(), aokit_contract::expr::Value::Int(*v as i64));
     }
-    impl P<'_> {
-        fn skip(&mut self) {
-            while self.s.get(self.i) == Some(&' ') {
-                self.i += 1;
-            }
-        }
-        fn eat(&mut self, c: char) -> bool {
-            self.skip();
-            let hit = self.s.get(self.i) == Some(&c);
-            self.i += hit as usize;
-            hit
-        }
-        fn expr(&mut self) -> f64 {
-            let mut v = self.term();
-            while self.eat('+') {
-                v += self.term();
-            }
-            v
-        }
-        fn term(&mut self) -> f64 {
-            let mut v = self.atom();
-            loop {
-                if self.eat('·') {
-                    v *= self.atom();
-                } else if self.eat('/') {
-                    v /= self.atom();
-                } else {
-                    return v;
-                }
-            }
-        }
-        fn atom(&mut self) -> f64 {
-            self.skip();
-            if self.eat('(') {
-                let v = self.expr();
-                assert!(self.eat(')'), "')' expected");
-                return v;
-            }
-            let start = self.i;
-            while self.s.get(self.i).is_some_and(|c| c.is_alphanumeric() || *c == '.') {
-                self.i += 1;
-            }
-            let word: String = self.s[start..self.i].iter().collect();
-            if let Ok(n) = word.parse::<f64>() {
-                return n;
-            }
-            if let Some((_, v)) = self.vars.iter().find(|(c, _)| word.len() == 1 && word.starts_with(*c)) {
-                return *v;
-            }
-            assert!(self.eat('('), "unknown word '{word}'");
-            let a = self.expr();
-            let v = match word.as_str() {
-                "ceil" => a.ceil(),
-                "floor" => a.floor(),
-                "max" => {
-                    assert!(self.eat(','));
-                    a.max(self.expr())
-                }
-                other => panic!("unknown function {other}"),
-            };
-            assert!(self.eat(')'), "')' expected after {word}");
-            v
-        }
+    match aokit_contract::expr::eval(text, &inputs) {
+        Ok(aokit_contract::expr::Value::Int(i)) => i as f64,
+        other => panic!("'{text}': {other:?}, not a whole number"),
     }
-    let mut p = P { s: formula.chars().collect(), i: 0, vars };
-    let v = p.expr();
-    p.skip();
-    assert_eq!(p.i, p.s.len(), "trailing text in '{formula}'");
-    v
 }
 
 /// The manifest's technique section: every size and dispatch formula evaluates, at several
@@ -243,6 +177,8 @@ fn technique_formulas_match_the_graphs_at_every_size() {
     for t in &manifest.techniques {
         let technique = Technique::named(&t.name).unwrap();
         assert_eq!(t.settings.len(), technique.rows().len(), "{}", t.name);
+        let example = aokit_contract::constants::FrameInputs::examples()[0];
+        let settings = aokit_contract::constants::inputs(&technique.rows(), &technique.values(), &example).unwrap();
         for (w, h, g) in [(1920, 1080, 64), (333, 197, 7), (64, 48, 0)] {
             let frame = aokit_contract::manifest::reference_frame(aokit_shaders::glam::UVec2::new(w, h), g);
             let graph = technique.graph(&frame).unwrap();
@@ -252,7 +188,7 @@ fn technique_formulas_match_the_graphs_at_every_size() {
             assert_eq!(t.resources.len(), graph.resources.len(), "{}", t.name);
             for (m, r) in t.resources.iter().zip(&graph.resources) {
                 assert_eq!(m.name, r.name);
-                let v = eval(&m.size, &vars);
+                let v = eval(&m.size, &vars, &settings);
                 assert_eq!(v, r.len(&view) as f64, "{} {}: '{}' at {w}×{h}+{g}", t.name, r.name, m.size);
                 checked += 1;
             }
@@ -261,7 +197,7 @@ fn technique_formulas_match_the_graphs_at_every_size() {
             for ((m, p), barrier) in t.passes.iter().zip(&graph.passes).zip(barriers) {
                 assert_eq!((m.entry.as_str(), m.barrier_before), (p.entry(), barrier));
                 let n = p.invocations(&view);
-                let got = [eval(&m.dispatch[0], &vars), eval(&m.dispatch[1], &vars)];
+                let got = [eval(&m.dispatch[0], &vars, &settings), eval(&m.dispatch[1], &vars, &settings)];
                 assert_eq!(got, [n.x as f64, n.y as f64], "{} {}: {:?} at {w}×{h}+{g}", t.name, p.entry(), m.dispatch);
                 let bindings: Vec<_> = p.bindings.iter().map(|b| (b.slot, b.resource.to_string())).collect();
                 let listed: Vec<_> = m.bindings.iter().map(|b| (b.0, b.1.clone())).collect();
@@ -271,11 +207,15 @@ fn technique_formulas_match_the_graphs_at_every_size() {
         }
     }
     assert!(checked > 300, "{checked} formulas checked");
-    // The evaluator itself: a formula of each shape, by hand.
+    // The evaluator on a size of each shape, by hand.
     let vars = [('W', 2048.0), ('H', 1208.0), ('w', 1920.0), ('h', 1080.0)];
-    assert_eq!(eval("(ceil(W/4) + 256)·(ceil(H/4) + 256)·4", &vars), (512.0 + 256.0) * (302.0 + 256.0) * 4.0);
-    assert_eq!(eval("max(1, floor(W/16))·max(1, floor(H/16))", &vars), 128.0 * 75.0);
-    assert_eq!(eval("w·h + 3", &vars), 1920.0 * 1080.0 + 3.0);
+    let none = aokit_contract::expr::Inputs::default();
+    assert_eq!(
+        eval("(div_ceil(W, 4) + 256) * (div_ceil(H, 4) + 256) * 4", &vars, &none),
+        (512.0 + 256.0) * (302.0 + 256.0) * 4.0
+    );
+    assert_eq!(eval("max(1, div_floor(W, 16)) * max(1, div_floor(H, 16))", &vars, &none), 128.0 * 75.0);
+    assert_eq!(eval("w * h + 3", &vars, &none), 1920.0 * 1080.0 + 3.0);
 }
 
 /// The manifest's `constants`: every field of every constants struct a technique's passes use

@@ -1,18 +1,51 @@
-//! The generated WGSL (`assets/wgsl/`) run through wgpu — a consumer that shares no code with
-//! aokit's executors: every pass of a technique's graph (from the manifest's module entries:
-//! WGSL file, bindings, the uniform block's binding) dispatched on wgpu's Vulkan back-end, and
-//! the final AO compared with cpu-sim on the same G-buffer, for vao+blur, gtao and raymarch.
+//! The generated WGSL (`assets/wgsl/`) run through wgpu by a consumer that follows the manifest
+//! alone — as an engine without Rust would: the technique's graph for the settings is the
+//! manifest's variant (`techniques[].variants`), its sizes and dispatches the variant's
+//! expressions, its data the `contents` (tables, records), its push constants the constants'
+//! expressions (`aokit_contract::expr`, the grammar of `assets/README.md`); nothing comes from
+//! the Rust `Graph`. Every WebGPU-capable technique at its defaults and at non-default settings
+//! runs on wgpu's Vulkan back-end with WebGPU's default limits, and its AO is compared with
+//! cpu-sim (which runs the Rust graph) on the same G-buffer: ≥ 99.9 % of the inner pixels within
+//! 1/255 and MSE ≤ 1e-6, the conformance bar of `assets/README.md` (VBAO: ≥ 99.5 %, below).
 
 mod common;
 
 use aokit::render::CpuRenderer;
 use aokit::technique::Technique;
-use aokit_contract::manifest::Manifest;
-use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
+use aokit_contract::constants::{FrameInputs, evaluate_struct, inputs};
+use aokit_contract::expr::{Inputs, Value, eval};
+use aokit_contract::graphs::data_words;
+use aokit_contract::manifest::{Manifest, TechniqueManifest, VariantManifest};
+use aokit_cpu::graph::{CpuExecutor, CpuInputs};
 use aokit_cpu::no_progress;
-use aokit_shaders::graph::{Graph, Init, inputs};
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
+
+/// Every technique the browser and wgpu run (compute passes with WGSL on depth and normals),
+/// at its defaults and at these settings (at least three each, graph-changing ones included).
+const RUNS: [&str; 21] = [
+    "vao",
+    "vao:kernel=hbao",
+    "vao:ao-samples=16",
+    "vao:kernel=hbao:ao-samples=32",
+    "hbao",
+    "hbao:ao-samples=16",
+    "hbao:ao-samples=32",
+    "hbao:peel-separation=0.2:ao-samples=16",
+    "gtao",
+    "gtao:preset=low:denoise=2",
+    "gtao:preset=ultra:normals=depth",
+    "gtao:bent-normals=on:denoise=0:falloff-range=0.3",
+    "vbao",
+    "vbao:denoise=0",
+    "vbao:normals=depth:sectors=touch",
+    "vbao:weighting=cosine-exact:gate=radius:thickness=0.3",
+    "raymarch",
+    "raymarch:directions=8:kernel=vogel:denoise=1",
+    "raymarch:directions=24:steps=4:contribution=binary",
+    "raymarch:alpha=2:denoise=3",
+    "raymarch:directions=61:kernel=vogel",
+];
 
 /// wgpu's device on the Vulkan back-end; `None` when AOKIT_SKIP_VULKAN=1.
 fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
@@ -30,11 +63,20 @@ fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
     Some((device, queue, name))
 }
 
-/// Run `graph` through wgpu from the WGSL files; returns the output resource as `f32`.
+fn count(text: &str, inputs: &Inputs) -> u32 {
+    match eval(text, inputs) {
+        Ok(Value::Int(n)) if n >= 0 => n as u32,
+        other => panic!("'{text}' = {other:?}, not a count"),
+    }
+}
+
+/// Run `variant` of `t` through wgpu from the WGSL files, everything from the manifest; returns
+/// the output resource as `f32`.
 fn run_on_wgpu(
     (device, queue): (&wgpu::Device, &wgpu::Queue),
     manifest: &Manifest,
-    graph: &Graph,
+    (t, variant): (&'static dyn aokit_shaders::technique::Registered, &VariantManifest),
+    mut inputs: Inputs,
     depth: &[f32],
     normals: &[u32],
 ) -> Vec<f32> {
@@ -47,67 +89,73 @@ fn run_on_wgpu(
             usage,
         })
     };
-    buffers.insert(inputs::LINEAR_DEPTH, init("depth", bytemuck::cast_slice(depth)));
-    buffers.insert(inputs::VIEW_NORMALS, init("normals", normals));
-    for r in &graph.resources {
-        let len = r.len(&graph.view);
-        let mut words = vec![0u32; len];
-        match &r.init {
-            Init::Fill(bits) => words.fill(*bits),
-            Init::Data(d) => words[..d.len()].copy_from_slice(d),
-            Init::Undefined => {}
+    buffers.insert("linear_depth", init("depth", bytemuck::cast_slice(depth)));
+    buffers.insert("view_normals", init("normals", normals));
+    for r in &variant.resources {
+        let mut words = vec![0u32; count(&r.size, &inputs) as usize];
+        if let Some(bits) = r.init.strip_prefix("fill 0x") {
+            words.fill(u32::from_str_radix(bits, 16).unwrap());
+        } else if r.init == "data" {
+            let data = data_words(t, r.contents.as_ref().expect("contents"), &inputs, &manifest.tables).unwrap();
+            assert_eq!(data.len(), words.len(), "{}: contents and size", r.name);
+            words = data;
         }
-        buffers.insert(r.name, init(r.name, &words));
+        buffers.insert(&r.name, init(&r.name, &words));
     }
     let mut encoder = device.create_command_encoder(&Default::default());
-    for pass in &graph.passes {
-        let module = manifest.modules.iter().find(|m| m.entry_point == pass.entry()).expect("a module");
-        let wgsl = module.wgsl.as_ref().unwrap_or_else(|| panic!("{} has no WGSL", pass.entry()));
+    let mut seen: HashMap<&str, i64> = HashMap::new();
+    for pass in &variant.passes {
+        let module = manifest.modules.iter().find(|m| m.entry_point == pass.entry).expect("a module");
+        let wgsl = module.wgsl.as_ref().unwrap_or_else(|| panic!("{} has no WGSL", pass.entry));
         let source =
             std::fs::read_to_string(format!("{}/assets/wgsl/{}", env!("CARGO_MANIFEST_DIR"), wgsl.file)).unwrap();
         let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-            label: Some(pass.entry()),
+            label: Some(&pass.entry),
             source: wgpu::ShaderSource::Wgsl(source.into()),
         });
         let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some(pass.entry()),
+            label: Some(&pass.entry),
             layout: None,
             module: &shader,
-            entry_point: Some(pass.entry()),
+            entry_point: Some(wgsl.entry_point.as_deref().unwrap_or(&pass.entry)),
             compilation_options: Default::default(),
             cache: None,
         });
-        // The push constants as a uniform buffer (16-byte multiple), at the manifest's binding.
-        let mut bytes = pass.push_constants.clone();
-        bytes.resize(bytes.len().next_multiple_of(16).max(16), 0);
-        let constants = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-            label: Some("constants"),
-            contents: &bytes,
-            usage: wgpu::BufferUsages::UNIFORM,
-        });
-        // Bind only the slots the module declares (the graph may bind unread extra slots).
+        // The push constants from the expressions (`pass`: this pass's index among its
+        // module's), as a uniform buffer (16-byte multiple) at the manifest's binding.
+        let index = seen.entry(&pass.entry).or_insert(0);
+        inputs.names.insert("pass".into(), Value::Int(*index));
+        *index += 1;
         let mut entries: Vec<wgpu::BindGroupEntry> = pass
             .bindings
             .iter()
-            .filter(|b| module.bindings.iter().any(|m| m.binding == b.slot))
-            .map(|b| wgpu::BindGroupEntry { binding: b.slot, resource: buffers[b.resource].as_entire_binding() })
+            .filter(|b| module.bindings.iter().any(|m| m.binding == b.0))
+            .map(|b| wgpu::BindGroupEntry { binding: b.0, resource: buffers[b.1.as_str()].as_entire_binding() })
             .collect();
-        if let Some(binding) = wgsl.constants_binding {
+        let constants;
+        if let (Some(name), Some(binding)) = (&module.push_constants, wgsl.constants_binding) {
+            let mut bytes = evaluate_struct(t, name, &inputs).unwrap();
+            bytes.resize(bytes.len().next_multiple_of(16), 0);
+            constants = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+                label: Some("constants"),
+                contents: &bytes,
+                usage: wgpu::BufferUsages::UNIFORM,
+            });
             entries.push(wgpu::BindGroupEntry { binding, resource: constants.as_entire_binding() });
         }
         let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some(pass.entry()),
+            label: Some(&pass.entry),
             layout: &pipeline.get_bind_group_layout(0),
             entries: &entries,
         });
-        let size = pass.invocations(&graph.view);
+        let [x, y] = [count(&pass.dispatch[0], &inputs), count(&pass.dispatch[1], &inputs)];
         let workgroup = module.workgroup_size.expect("a compute module");
         let mut cpass = encoder.begin_compute_pass(&Default::default());
         cpass.set_pipeline(&pipeline);
         cpass.set_bind_group(0, &group, &[]);
-        cpass.dispatch_workgroups(size.x.div_ceil(workgroup[0]), size.y.div_ceil(workgroup[1]), 1);
+        cpass.dispatch_workgroups(x.div_ceil(workgroup[0]), y.div_ceil(workgroup[1]), 1);
     }
-    let output = &buffers[graph.output];
+    let output = &buffers[variant.output.as_str()];
     let readback = device.create_buffer(&wgpu::BufferDescriptor {
         label: Some("readback"),
         size: output.size(),
@@ -121,43 +169,85 @@ fn run_on_wgpu(
     bytemuck::cast_slice(&readback.slice(..).get_mapped_range()).to_vec()
 }
 
+/// The variant of `t` whose `when` holds `values`.
+fn variant_of<'a>(t: &'a TechniqueManifest, values: &[(&str, String)]) -> &'a VariantManifest {
+    let value = |k: &str| values.iter().find(|(vk, _)| *vk == k).map(|(_, v)| v.as_str());
+    let hits: Vec<_> =
+        t.variants.iter().filter(|v| v.when.iter().any(|w| w.iter().all(|(k, x)| value(k) == Some(x)))).collect();
+    assert_eq!(hits.len(), 1, "{}: {} variants match {values:?}", t.name, hits.len());
+    hits[0]
+}
+
 #[test]
-fn vao_gtao_and_raymarch_from_wgsl_on_wgpu_agree_with_cpu_sim() {
+fn every_webgpu_technique_from_the_manifest_alone_on_wgpu_agrees_with_cpu_sim() {
     let Some((device, queue, name)) = device() else { return };
     let manifest = Manifest::committed();
-    let (scene, frame) = common::builtin_frame("sponza", 160, 96, 16);
-    let renderer = CpuRenderer::new(&scene);
-    let (g, _) = renderer.gbuffer(&frame, &no_progress);
-    let surfaces = renderer.surfaces();
-    for technique in ["vao", "gtao", "raymarch"] {
-        let graph = Technique::named(technique).unwrap().graph(&frame.desc()).unwrap();
-        let on_wgpu = run_on_wgpu((&device, &queue), &manifest, &graph, &g.depth, &g.normals);
-        let inputs = CpuInputs {
-            depth: &g.depth,
-            normals: &g.normals,
-            second_depth: None,
-            scene: Some(CpuScene { bvh: renderer.bvh(), surfaces: &surfaces }),
-            progress: &no_progress,
+    let mut failures = Vec::new();
+    for scene_name in ["sponza", "kitchen"] {
+        let (scene, frame) = common::builtin_frame(scene_name, 160, 96, 16);
+        let renderer = CpuRenderer::new(&scene);
+        let (g, _) = renderer.gbuffer(&frame, &no_progress);
+        let camera = FrameInputs {
+            eye: frame.eye,
+            target: frame.target,
+            up: frame.up,
+            fov_y: frame.fov_deg.to_radians(),
+            inner: frame.inner,
+            guard: frame.camera.view.guard,
+            near: frame.camera.view.near,
+            far: frame.camera.view.far,
+            radius: frame.radius,
+            exponent: frame.exponent,
+            thickness: frame.thickness,
+            frame_index: 0,
         };
-        let mut cpu = CpuExecutor::new();
-        cpu.run(&graph, &inputs).unwrap();
-        let view = graph.view;
-        let (a, b) = (
-            aokit::output::crop_inner(&view, cpu.f32(graph.output).unwrap()),
-            aokit::output::crop_inner(&view, &on_wgpu),
-        );
-        assert_eq!(a.len(), b.len());
-        let within = a.iter().zip(&b).filter(|(x, y)| (*x - *y).abs() <= 1.0 / 255.0).count() as f64 / a.len() as f64;
-        let mse = a.iter().zip(&b).map(|(x, y)| ((x - y) as f64).powi(2)).sum::<f64>() / a.len() as f64;
-        let occluded = a.iter().filter(|&&v| v < 0.9).count() as f64 / a.len() as f64;
-        eprintln!(
-            "{technique} on wgpu ({name}) vs cpu-sim: {:.3} % within 1/255, MSE {mse:.2e}, occluded {:.1} %",
-            100.0 * within,
-            100.0 * occluded
-        );
-        assert!(occluded > 0.02, "{technique}: the image must show occlusion");
-        // The agreement the Vulkan tests hold these techniques to (tests/vulkan_agreement.rs,
-        // tests/gtao.rs, tests/screen_rays.rs).
-        assert!(within >= 0.999 || mse <= 1e-5, "{technique}: {:.3} % within 1/255, MSE {mse:.2e}", 100.0 * within);
+        for spec in RUNS {
+            let technique = Technique::parse(spec).unwrap();
+            let registered = aokit_shaders::techniques::find(technique.name()).unwrap();
+            let listed = manifest.techniques.iter().find(|t| t.name == technique.name()).unwrap();
+            let values = technique.values();
+            let variant = variant_of(listed, &values);
+            let ins = inputs(&registered.rows(), &values, &camera).unwrap();
+            let on_wgpu = run_on_wgpu((&device, &queue), &manifest, (registered, variant), ins, &g.depth, &g.normals);
+            // cpu-sim runs the Rust graph.
+            let graph = technique.graph(&frame.desc()).unwrap();
+            let cpu_inputs = CpuInputs {
+                depth: &g.depth,
+                normals: &g.normals,
+                second_depth: None,
+                scene: None,
+                progress: &no_progress,
+            };
+            let mut cpu = CpuExecutor::new();
+            cpu.run(&graph, &cpu_inputs).unwrap();
+            let view = graph.view;
+            let (a, b) = (
+                aokit::output::crop_inner(&view, cpu.f32(graph.output).unwrap()),
+                aokit::output::crop_inner(&view, &on_wgpu),
+            );
+            assert_eq!((a.len(), b.len()), (160 * 96, 160 * 96), "{spec}: inner image lengths");
+            let n = a.len() as f64;
+            let within = a.iter().zip(&b).filter(|(x, y)| (*x - *y).abs() <= 1.0 / 255.0).count() as f64 / n;
+            let mse = a.iter().zip(&b).map(|(x, y)| ((x - y) as f64).powi(2)).sum::<f64>() / n;
+            let occluded = a.iter().filter(|&&v| v < 0.9).count() as f64 / n;
+            eprintln!(
+                "{scene_name:8} {spec:52} wgpu ({name}) vs cpu-sim: {:7.3} % within 1/255, MSE {mse:.2e}, occluded {:.1} %",
+                100.0 * within,
+                100.0 * occluded
+            );
+            if occluded <= 0.02 {
+                failures
+                    .push(format!("{scene_name} {spec}: the image must show occlusion ({:.1} %)", 100.0 * occluded));
+            }
+            // VBAO's bitmask quantizes each slice's horizons into 32 sectors: a horizon angle
+            // that lands on a sector edge flips a whole sector under a different float order,
+            // moving the pixel by 1/(32·slices) > 1/255; so its pixel share is the 99.5 % of the
+            // SPIR-V agreement (tests/vbao.rs), its MSE the conformance bar.
+            let share = if technique.name() == "vbao" { 0.995 } else { 0.999 };
+            if within < share || mse > 1e-6 {
+                failures.push(format!("{scene_name} {spec}: {:.3} % within 1/255, MSE {mse:.2e}", 100.0 * within));
+            }
+        }
     }
+    assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
 }

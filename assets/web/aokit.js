@@ -3,7 +3,7 @@
 // against cpu-sim's AO. `?test=1`: every technique runs once at its defaults and its AO is
 // POSTed to /result/<technique> (docs/web.md). Plain ES module, no build step.
 
-import { Runner, constantBytes, cropInner, expressionInputs, fieldBytes, readStruct, structOf } from './graph.js';
+import { Runner, constantBytes, cropInner, dataOf, expressionInputs, fieldBytes, readStruct, sameValue, structOf, unsupported, variantOf } from './graph.js';
 
 const params = new URLSearchParams(location.search);
 const TEST = params.get('test') === '1';
@@ -34,7 +34,7 @@ const bytes = async (path) => new Uint8Array(await (await fetchOk(path)).arrayBu
 /** Everything the page loads once. */
 async function load() {
   const web = await json('web.json');
-  if (web.format !== 'aokit-web/1') throw new Error(`web.json: unknown format ${web.format}`);
+  if (web.format !== 'aokit-web/2') throw new Error(`web.json: unknown format ${web.format}`);
   const [manifest, exported, camera, depth, normals] = await Promise.all([
     json(web.files.manifest),
     json(web.files.export),
@@ -57,15 +57,6 @@ async function load() {
 /** The settings of technique `t` (manifest entry) at their defaults, key → string. */
 const defaults = (t) => Object.fromEntries(t.settings.map((s) => [s.key, s.default]));
 
-/** Whether two setting values are the same (numbers compared as numbers). */
-function same(kind, a, b) {
-  return kind === 'choice' ? a === b : Number(a) === Number(b);
-}
-
-function matches(entry, settings, rows) {
-  return Object.entries(entry.settings).every(([k, v]) => same(rows.find((r) => r.key === k)?.kind ?? 'choice', settings[k], v));
-}
-
 class Page {
   constructor(ctx, device, adapterName) {
     Object.assign(this, ctx);
@@ -74,7 +65,6 @@ class Page {
     this.runner = new Runner(device, this.manifest, new URL(this.web.files.wgsl, location.href));
     this.runner.setInput('linear_depth', this.depth);
     this.runner.setInput('view_normals', this.normals);
-    this.data = new Map();
     this.settings = {};
     this.generation = 0;
     this.last = null;
@@ -91,19 +81,19 @@ class Page {
   select(name) {
     this.name = name;
     $('technique').value = name;
-    const { m, w } = this.technique(name);
+    const { m } = this.technique(name);
     this.settings = defaults(m);
     $('summary').textContent = m.summary;
-    this.buildControls(m, w);
+    this.buildControls(m);
   }
 
   /** Controls generated from the manifest's settings rows: presets (choices that set other
-   *  settings, from web.json) first, then the rest in the manifest's order. */
-  buildControls(m, w) {
+   *  settings, their `sets`) first, then the rest in the manifest's order. */
+  buildControls(m) {
     const box = $('settings');
     box.replaceChildren();
-    const presets = Object.keys(w.presets);
-    const rows = [...m.settings.filter((s) => presets.includes(s.key)), ...m.settings.filter((s) => !presets.includes(s.key))];
+    const preset = (s) => Object.keys(s.sets ?? {}).length > 0;
+    const rows = [...m.settings.filter(preset), ...m.settings.filter((s) => !preset(s))];
     for (const s of rows) {
       const label = document.createElement('label');
       label.title = s.help;
@@ -122,11 +112,6 @@ class Page {
       }
       input.id = `setting-${s.key}`;
       input.value = this.settings[s.key];
-      const fixed = w.fixed.find((f) => f.key === s.key);
-      if (fixed) {
-        input.disabled = true;
-        label.title += ` — ${fixed.why}`;
-      }
       input.addEventListener('change', () => this.change(s, input));
       const range = document.createElement('small');
       range.textContent = s.kind === 'choice' ? '' : s.max === null ? `≥ ${s.min}` : `${s.min}–${s.max}`;
@@ -137,7 +122,7 @@ class Page {
 
   /** A control changed: check the value against the row, apply presets, re-run. */
   change(row, input, rerun = true) {
-    const { m, w } = this.technique(this.name);
+    const { m } = this.technique(this.name);
     let value = input.value.trim();
     if (row.kind !== 'choice') {
       const v = Number(value);
@@ -152,15 +137,13 @@ class Page {
     }
     this.settings[row.key] = value;
     // A preset sets other settings; a setting a preset sets shows the preset it now matches.
-    const table = w.presets[row.key];
-    if (table) Object.assign(this.settings, table[value] ?? {});
-    for (const [key, choices] of Object.entries(w.presets)) {
-      if (key === row.key) continue;
-      const entries = Object.entries(choices);
+    if (row.sets) Object.assign(this.settings, row.sets[value] ?? {});
+    for (const p of m.settings.filter((s) => s.sets && s.key !== row.key)) {
+      const entries = Object.entries(p.sets);
       const hit = entries.find(([, set]) => Object.keys(set).length > 0
-        && Object.entries(set).every(([k, v]) => same(m.settings.find((s) => s.key === k).kind, this.settings[k], v)));
+        && Object.entries(set).every(([k, v]) => sameValue(m.settings.find((s) => s.key === k), this.settings[k], v)));
       const none = entries.find(([, set]) => Object.keys(set).length === 0);
-      if (hit || none) this.settings[key] = (hit ?? none)[0];
+      if (hit || none) this.settings[p.key] = (hit ?? none)[0];
     }
     for (const s of m.settings) $(`setting-${s.key}`).value = this.settings[s.key];
     if (rerun) this.rerun();
@@ -182,30 +165,6 @@ class Page {
     status(`${this.name}: ${e.stack || e}`, true);
   }
 
-  /** The graph of the current settings: the manifest's at the defaults' structure, else the
-   *  variant web.json carries; `why` when the browser cannot run it. */
-  graph(m, w) {
-    const entry = w.graphs.find((g) => matches(g, this.settings, m.settings));
-    if (!entry) throw new Error(`web.json has no graph of ${this.name} for these settings`);
-    if (entry.unsupported) return { why: entry.unsupported };
-    return { graph: entry.graph === 'manifest' ? m : entry.graph };
-  }
-
-  async dataFor(m, w, graph) {
-    const out = {};
-    const needed = graph.resources.filter((r) => r.init === 'data');
-    if (needed.length === 0) return out;
-    const entry = w.data.find((d) => matches(d, this.settings, m.settings));
-    if (!entry) throw new Error(`web.json has no data of ${this.name} for these settings`);
-    for (const r of needed) {
-      const file = entry.files[r.name];
-      if (!file) throw new Error(`web.json has no data file for ${r.name}`);
-      if (!this.data.has(file)) this.data.set(file, new Uint32Array((await bytes(file)).buffer));
-      out[r.name] = this.data.get(file);
-    }
-    return out;
-  }
-
   /** Select `technique:key=value…` through the controls (as a user would set them). */
   configure(spec) {
     const [name, ...pairs] = spec.split(':');
@@ -223,18 +182,20 @@ class Page {
   /** Run the selected technique with the current settings and show it. */
   async run() {
     const generation = ++this.generation;
-    const { m, w } = this.technique(this.name);
-    const { graph, why } = this.graph(m, w);
-    if (!graph) throw new Error(`these settings cannot run in the browser: ${why}`);
-    const data = await this.dataFor(m, w, graph);
-    // The constants from the manifest's expressions (assets/README.md, "Expressions"): the
-    // exported camera and AO parameters, the settings, the pass's index among its module's.
+    const { m } = this.technique(this.name);
+    // The graph, its data and its constants from the manifest alone (assets/README.md): the
+    // variant for these settings, its expressions evaluated with the exported camera and AO
+    // parameters, the settings and each pass's index among its module's.
+    const graph = variantOf(m, this.settings);
+    const why = unsupported(this.manifest, graph);
+    if (why) throw new Error(`these settings cannot run in the browser: ${why}`);
     const e = this.exported;
     const inputs = expressionInputs(m, this.settings, {
       eye: e.camera.eye, target: e.camera.target, up: e.camera.up, fov_y: e.camera.fov_y, near: e.camera.near,
       far: e.camera.far, inner: e.image, guard: e.guard_band, radius: e.radius, exponent: e.exponent,
       thickness: e.thickness, frame_index: 0,
     });
+    const data = dataOf(this.manifest, m, graph, inputs);
     const constants = (pass, index, occurrence) => {
       const struct = this.runner.module(pass.entry).push_constants;
       inputs.names.pass = { t: 'int', v: occurrence };
@@ -242,10 +203,10 @@ class Page {
     };
     status(`running ${this.name}…`);
     const { W, H, guard } = this.size;
-    const result = await this.runner.run(graph, this.size, data, constants);
+    const result = await this.runner.run(graph, inputs, data, constants);
     if (generation !== this.generation) return null;
     const ao = cropInner(result.output, W, H, guard);
-    this.last = { name: this.name, ao, constants: result.constants, settings: { ...this.settings } };
+    this.last = { name: this.name, ao, constants: result.constants, data, settings: { ...this.settings } };
     this.draw();
     this.showConstants(m, graph, result.constants);
     const passes = graph.passes.map((p) => p.entry).join(' → ');
@@ -306,7 +267,7 @@ class Page {
     canvas.getContext('2d').putImageData(image, 0, 0);
     const { m, w: entry } = this.technique(this.last.name);
     const changed = m.settings
-      .filter((s) => !same(s.kind, this.last.settings[s.key], entry.reference.settings[s.key]))
+      .filter((s) => !sameValue(s, this.last.settings[s.key], entry.reference.settings[s.key]))
       .map((s) => `${s.key}=${this.last.settings[s.key]}`);
     $('agreement').textContent = `vs cpu-sim (${entry.reference.file}): ${(100 * within / (w * h)).toFixed(3)} % of pixels within 1/255, `
       + `max |Δ| ${maxAbs.toExponential(2)}, MSE ${(sq / (w * h)).toExponential(2)}`;
@@ -373,6 +334,8 @@ async function main() {
         if (!result) throw new Error(`${spec} did not run`);
         await post(`/result/${encodeURIComponent(spec)}`, result.ao);
         await post(`/constants/${encodeURIComponent(spec)}`, JSON.stringify(result.constants.map((c) => ({ entry: c.entry, hex: hex(c.bytes) }))));
+        const data = Object.fromEntries(Object.entries(result.data).map(([k, words]) => [k, hex(new Uint8Array(words.buffer))]));
+        await post(`/data/${encodeURIComponent(spec)}`, JSON.stringify(data));
       } catch (e) {
         // The test decides what a failure means; the others still run.
         page.fail(e);

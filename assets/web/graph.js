@@ -4,80 +4,6 @@
 // Plain ES module, no build step, no dependencies. Formats: assets/README.md, docs/web.md.
 
 // ---------------------------------------------------------------------------------------------
-// Formulas: `W×H` the full target, `w×h` the inner image, numbers, + - · * /, ceil, floor, max,
-// min and parentheses (assets/README.md, "Formulas").
-
-const TOKEN = /\s*(\d+(?:\.\d+)?(?:e[+-]?\d+)?|[A-Za-z_]\w*|[+\-*/·(),])/y;
-
-function tokenize(text) {
-  const out = [];
-  TOKEN.lastIndex = 0;
-  while (TOKEN.lastIndex < text.length) {
-    if (/^\s*$/.test(text.slice(TOKEN.lastIndex))) break;
-    const at = TOKEN.lastIndex;
-    const m = TOKEN.exec(text);
-    if (!m) throw new Error(`formula '${text}': cannot read at ${at}`);
-    out.push(m[1]);
-  }
-  return out;
-}
-
-const FUNCTIONS = {
-  ceil: (a) => Math.ceil(a),
-  floor: (a) => Math.floor(a),
-  max: (...a) => Math.max(...a),
-  min: (...a) => Math.min(...a),
-};
-
-/** Evaluate a size or dispatch formula with `vars` = {W, H, w, h}. */
-export function evalFormula(text, vars) {
-  const t = tokenize(String(text));
-  let i = 0;
-  const peek = () => t[i];
-  const take = (want) => {
-    const tok = t[i++];
-    if (want !== undefined && tok !== want) throw new Error(`formula '${text}': expected '${want}', got '${tok}'`);
-    return tok;
-  };
-  const expr = () => {
-    let v = term();
-    while (peek() === '+' || peek() === '-') v = take() === '+' ? v + term() : v - term();
-    return v;
-  };
-  const term = () => {
-    let v = factor();
-    while (peek() === '·' || peek() === '*' || peek() === '/') v = take() === '/' ? v / factor() : v * factor();
-    return v;
-  };
-  const factor = () => {
-    const tok = take();
-    if (tok === undefined) throw new Error(`formula '${text}': unexpected end`);
-    if (tok === '(') {
-      const v = expr();
-      take(')');
-      return v;
-    }
-    if (tok === '-') return -factor();
-    if (/^\d/.test(tok)) return Number(tok);
-    if (tok in FUNCTIONS) {
-      take('(');
-      const args = [expr()];
-      while (peek() === ',') {
-        take(',');
-        args.push(expr());
-      }
-      take(')');
-      return FUNCTIONS[tok](...args);
-    }
-    if (tok in vars) return vars[tok];
-    throw new Error(`formula '${text}': unknown name '${tok}'`);
-  };
-  const v = expr();
-  if (i !== t.length) throw new Error(`formula '${text}': trailing '${t[i]}'`);
-  return v;
-}
-
-// ---------------------------------------------------------------------------------------------
 // Structs: the manifest's `structs` (size, field offsets, Rust types) read and written with a
 // DataView, little-endian. Fields named `_…` are padding (written 0).
 
@@ -445,6 +371,59 @@ export function constantBytes(manifest, t, name, inputs) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Graphs and data for any settings: the technique's variant whose `when` holds the settings'
+// structural values, and the words of its `data` resources (records from the constants, tables
+// from the manifest's `tables`).
+
+/** Whether two setting values are the same (numbers compared as numbers). */
+export function sameValue(row, a, b) {
+  return row.kind === 'choice' ? a === b : Number(a) === Number(b);
+}
+
+/** The graph of technique `t` (manifest entry) for `settings` (key → string). */
+export function variantOf(t, settings) {
+  const rows = (key) => t.settings.find((s) => s.key === key);
+  const v = t.variants.find((v) => v.when.some((w) => Object.entries(w).every(([k, x]) => sameValue(rows(k), settings[k], x))));
+  if (!v) throw new Error(`${t.name}: no graph in the manifest for these settings`);
+  return v;
+}
+
+/** The words of every `data` resource of `graph`. */
+export function dataOf(manifest, t, graph, inputs) {
+  const out = {};
+  for (const r of graph.resources.filter((r) => r.init === 'data')) {
+    const c = r.contents ?? {};
+    if (c.record) {
+      inputs.names.pass = { t: 'int', v: 0 };
+      const bytes = constantBytes(manifest, t, c.record, inputs);
+      out[r.name] = new Uint32Array(bytes.buffer);
+      continue;
+    }
+    const name = evalExpr(c.table, inputs);
+    const table = manifest.tables.find((x) => x.name === name.v);
+    if (!table) throw new Error(`${r.name}: no table ${name.v}`);
+    const per = { Vec2: 2, Vec3: 3, Vec4: 4 }[table.elem] ?? 1;
+    const first = c.first ? evalExpr(c.first, inputs).v : 0;
+    const n = evalExpr(c.count, inputs).v;
+    const values = table.values.slice(first * per, (first + n) * per);
+    if (values.length !== n * per) throw new Error(`${r.name}: elements ${first}…${first + n} are outside table ${table.name}`);
+    out[r.name] = new Uint32Array(Float32Array.from(values).buffer);
+  }
+  return out;
+}
+
+/** Why the browser cannot run `graph`, or null: every pass a compute module with WGSL, and
+ *  no input but the exported depth and normals. */
+export function unsupported(manifest, graph) {
+  for (const p of graph.passes) {
+    if (p.kind !== 'compute') return `pass '${p.label}' (${p.entry}) is not a compute pass`;
+    if (!manifest.modules.find((m) => m.entry_point === p.entry)?.wgsl) return `module ${p.entry} has no WGSL`;
+  }
+  const other = graph.inputs.find((i) => i !== 'linear_depth' && i !== 'view_normals');
+  return other ? `reads input '${other}', which the export does not provide to the page` : null;
+}
+
+// ---------------------------------------------------------------------------------------------
 // The runner: a graph (the manifest's technique format) through WebGPU.
 
 /** The compute entry point of a WGSL module: the manifest names the SPIR-V entry point, which
@@ -505,21 +484,26 @@ export class Runner {
   }
 
   /**
-   * Run `graph` once. `view`: ViewParams bytes; `data`: resource name → Uint32Array for
-   * resources initialised with data; `constants(pass, index, occurrence)`: the bytes of the
-   * module's push-constant struct. Returns {output: Float32Array of the full target, constants:
-   * [{entry, bytes}], ms}.
+   * Run `graph` once. `inputs`: the expressions' inputs (`expressionInputs`); `data`: resource
+   * name → Uint32Array for resources initialised with data; `constants(pass, index,
+   * occurrence)`: the bytes of the module's push-constant struct. Returns {output: Float32Array
+   * of the full target, constants: [{entry, bytes}], ms}.
    */
-  async run(graph, { W, H, guard }, data, constants) {
+  async run(graph, inputs, data, constants) {
     const device = this.device;
-    const vars = { W, H, w: W - 2 * guard, h: H - 2 * guard };
+    // Sizes and dispatches: integer expressions of the target and the settings.
+    const count = (text) => {
+      const v = evalExpr(text, inputs);
+      if (v.t !== 'int') throw new Error(`'${text}' is not a whole number`);
+      return v.v;
+    };
     device.pushErrorScope('validation');
     device.pushErrorScope('out-of-memory');
     const t0 = performance.now();
     const buffers = new Map(this.inputs);
     const owned = [];
     for (const r of graph.resources) {
-      let len = evalFormula(r.size, vars);
+      let len = count(r.size);
       const words = r.init === 'data' ? data[r.name] : undefined;
       if (r.init === 'data' && !words) throw new Error(`no data for resource ${r.name}`);
       if (words) len = Math.max(len, words.length);
@@ -568,7 +552,7 @@ export class Runner {
         written.push({ entry: pass.entry, bytes: new Uint8Array(0) });
       }
       const group = device.createBindGroup({ label: pass.label, layout: pipeline.getBindGroupLayout(0), entries });
-      const [x, y] = pass.dispatch.map((f) => evalFormula(f, vars));
+      const [x, y] = pass.dispatch.map(count);
       const [gx, gy] = m.workgroup_size;
       // WebGPU orders dispatches that write and read a buffer itself: `barrier_before` needs no
       // call here.

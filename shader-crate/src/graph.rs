@@ -108,17 +108,18 @@ impl Extent {
         }
     }
 
-    /// `[x, y]` as formulas of `W`, `H`, `w`, `h`.
+    /// `[x, y]` as integer expressions of `W`, `H`, `w`, `h` (the grammar of the manifest's
+    /// constants, `assets/README.md` "Expressions").
     pub fn formula(self) -> [String; 2] {
         let of = |v: &str| match self {
             Extent::Full => v.to_string(),
             Extent::Inner => v.to_lowercase(),
             Extent::Reduced { divisor: 1, border: 0 } => v.to_string(),
             Extent::Reduced { divisor: 1, border } => format!("{v} + {}", 2 * border),
-            Extent::Reduced { divisor, border: 0 } => format!("ceil({v}/{divisor})"),
-            Extent::Reduced { divisor, border } => format!("ceil({v}/{divisor}) + {}", 2 * border),
+            Extent::Reduced { divisor, border: 0 } => format!("div_ceil({v}, {divisor})"),
+            Extent::Reduced { divisor, border } => format!("div_ceil({v}, {divisor}) + {}", 2 * border),
             Extent::Mip(0) => v.to_string(),
-            Extent::Mip(k) => format!("max(1, floor({v}/{}))", 1u32 << k),
+            Extent::Mip(k) => format!("max(1, div_floor({v}, {}))", 1u32 << k),
         };
         [of("W"), of("H")]
     }
@@ -151,16 +152,17 @@ impl Size {
         }
     }
 
-    /// The element count as a formula of `W`, `H`, `w`, `h` (`·` multiplies).
+    /// The element count as an integer expression of `W`, `H`, `w`, `h` (the grammar of
+    /// [`Extent::formula`]).
     pub fn formula(&self) -> String {
         let area = |e: Extent| {
             let [x, y] = e.formula();
-            let term = |t: String| if t.contains(' ') { format!("({t})") } else { t };
-            format!("{}·{}", term(x), term(y))
+            let term = |t: String| if t.contains(" + ") { format!("({t})") } else { t };
+            format!("{} * {}", term(x), term(y))
         };
         match *self {
             Size::Texels { extent, per_texel: 1 } => area(extent),
-            Size::Texels { extent, per_texel } => format!("({})·{per_texel}", area(extent)),
+            Size::Texels { extent, per_texel } => format!("{} * {per_texel}", area(extent)),
             Size::MipChain { levels } => (0..levels).map(|k| area(Extent::Mip(k))).collect::<Vec<_>>().join(" + "),
             Size::Words(n) => n.to_string(),
         }

@@ -220,6 +220,34 @@ pub struct Declaration<S: 'static> {
     /// joined with [`join_constants!`](crate::join_constants) (the camera's rows are
     /// [`crate::common::camera::CONSTANTS`]).
     pub constants: &'static [Constant],
+    /// The graph's shape where the settings change it beyond the structure: sizes, dispatches
+    /// and data contents as expressions of the settings (the manifest's `size`, `dispatch`,
+    /// `contents`); everything not listed prints from the graph itself.
+    pub formulas: &'static [Formula],
+    /// The data tables the `contents` formulas take their values from.
+    pub tables: &'static [Table],
+}
+
+/// A size, dispatch or data-contents formula of a graph that depends on the settings, in the
+/// grammar of the constants' expressions (`assets/README.md`, "Expressions").
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct Formula {
+    /// What it gives: `<resource>` its element count; `<pass label>.x` / `.y` the pass's
+    /// invocations; `<resource>.table` (a table's name), `.first` and `.count` (elements) the
+    /// words of a `data` resource: elements `first .. first + count` of that table.
+    pub of: &'static str,
+    pub expr: &'static str,
+}
+
+/// A table of values a `data` resource is filled from ([`Formula`]'s `.table`).
+#[derive(Copy, Clone, Debug)]
+pub struct Table {
+    pub name: &'static str,
+    /// The element type (`Vec2`: two f32 per element).
+    pub elem: &'static str,
+    pub doc: &'static str,
+    /// Every element's components, in order.
+    pub values: fn() -> Vec<f32>,
 }
 
 /// How an engine computes one field of a constants struct (a push-constant block or a record
@@ -324,6 +352,10 @@ pub trait Registered: Sync {
     /// `(key, value)` of the settings of its settings type that it does not read: fixed by the
     /// declaration (e.g. hbao's `kernel` = hbao), substituted into its constants' expressions.
     fn fixed(&self) -> Vec<(Row, String)>;
+    /// [`Declaration::formulas`].
+    fn formulas(&self) -> &'static [Formula];
+    /// [`Declaration::tables`].
+    fn tables(&self) -> &'static [Table];
 }
 
 /// A setting without its settings type: what the CLI needs to declare a flag.
@@ -405,6 +437,14 @@ impl<S: Settings> Registered for Declaration<S> {
 
     fn constants(&self) -> &'static [Constant] {
         self.constants
+    }
+
+    fn formulas(&self) -> &'static [Formula] {
+        self.formulas
+    }
+
+    fn tables(&self) -> &'static [Table] {
+        self.tables
     }
 
     fn fixed(&self) -> Vec<(Row, String)> {

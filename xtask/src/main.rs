@@ -100,6 +100,7 @@ fn build_spirv() -> Result<(), String> {
         modules: Vec::new(),
         structs: Vec::new(),
         techniques: Vec::new(),
+        tables: Vec::new(),
     };
     for (entry, path) in &modules {
         let file = format!("{entry}.spv");

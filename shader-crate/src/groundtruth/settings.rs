@@ -43,6 +43,8 @@ pub static GROUNDTRUTH: Declaration<GroundTruthSettings> = Declaration {
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
     constants: CONSTANTS,
+    formulas: &[],
+    tables: &[],
 };
 
 /// How [`GroundTruthSettings::frame`] fills `GroundTruthFrame` and `GroundTruthParams`, then the

@@ -246,6 +246,8 @@ pub static GTAO: Declaration<GtaoSettings> = Declaration {
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
     constants: CONSTANTS,
+    formulas: &[],
+    tables: &[],
 };
 
 /// How [`GtaoSettings::params`] and [`GtaoSettings::graph`] fill `GtaoParams` (XeGTAO's

@@ -98,6 +98,8 @@ pub static HYBRID: Declaration<HybridSettings> = Declaration {
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
     constants: CONSTANTS,
+    formulas: &[],
+    tables: &[],
 };
 
 /// How [`HybridSettings::frame`] fills `HybridFrame` and `HybridParams`, then the denoiser's

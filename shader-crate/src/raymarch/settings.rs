@@ -4,7 +4,7 @@
 use super::{Contribution, MAX_DIRECTIONS, RaymarchParams};
 use crate::graph::{Extent, FrameDesc, Graph, Pass, inputs, record, target_f32, target_u32};
 use crate::gtao::settings::with_denoiser;
-use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
+use crate::technique::{Constant, Declaration, Formula, Setting, Settings, Table, single_layer};
 
 /// Relative depth bias κ (spec gtao-raymarch-hybrid §3.2).
 pub const DEPTH_BIAS: f32 = 0.0008;
@@ -64,6 +64,31 @@ pub static RAYMARCH: Declaration<RaymarchSettings> = Declaration {
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
     constants: CONSTANTS,
+    formulas: &[
+        Formula { of: "raymarch_kernel", expr: "2 * `directions`" },
+        Formula { of: "raymarch_kernel.table", expr: "pick(index(`kernel`), \"best_candidate\", \"vogel\")" },
+        Formula {
+            of: "raymarch_kernel.first",
+            expr: "select(`kernel` == \"vogel\", div_floor(`directions` * (`directions` - 1), 2), 0)",
+        },
+        Formula { of: "raymarch_kernel.count", expr: "`directions`" },
+    ],
+    tables: &[
+        Table {
+            name: "best_candidate",
+            elem: "Vec2",
+            doc: "the best-candidate Poisson disk of MAX_DIRECTIONS points (spec gtao-raymarch-hybrid §3.3); \
+                  N directions use its first N points (point i does not depend on N)",
+            values: || flat(&super::kernel::best_candidate(MAX_DIRECTIONS as usize)),
+        },
+        Table {
+            name: "vogel",
+            elem: "Vec2",
+            doc: "the Vogel spirals of N = 1, 2, …, MAX_DIRECTIONS points one after another (spec \
+                  gtao-raymarch-hybrid §3.3): N's starts at element N·(N − 1)/2",
+            values: || (1..=MAX_DIRECTIONS as usize).flat_map(|n| flat(&super::kernel::vogel(n))).collect(),
+        },
+    ],
 };
 
 /// How [`RaymarchSettings::params`] fills `RaymarchParams`, then the denoiser's `GtaoParams`
@@ -141,4 +166,9 @@ impl RaymarchSettings {
         let passes = vec![Pass::compute("raymarch", bindings, Extent::Full, bytemuck::bytes_of(&params))];
         with_denoiser(frame, resources, passes, self.denoise_passes)
     }
+}
+
+/// The components of `points`, in order.
+fn flat(points: &[crate::glam::Vec2]) -> Vec<f32> {
+    points.iter().flat_map(|p| [p.x, p.y]).collect()
 }

@@ -13,7 +13,7 @@ use crate::graph::{
     Diagnostics, Elem, Executed, Extent, FrameDesc, Graph, Init, Lifetime, Pass, RAY_COUNT, Refinement,
     RefinementDecoder, Resource, Size, Snapshot, inputs, ray_counter, record, target_f32, target_u32,
 };
-use crate::technique::{Constant, Declaration, Setting, Settings};
+use crate::technique::{Constant, Declaration, Formula, Setting, Settings};
 use crate::vao::kernel::{KERNEL_HBAO, KERNEL_VAO};
 use crate::vao::settings::vao_params;
 
@@ -163,7 +163,17 @@ pub const fn stenciled(
     defaults: fn() -> SvaoSettings,
     graph: fn(&SvaoSettings, &FrameDesc) -> Result<Graph, String>,
 ) -> Declaration<SvaoSettings> {
-    Declaration { name, summary, keys, defaults, graph, second_layer: dual_layer, constants: CONSTANTS }
+    Declaration {
+        name,
+        summary,
+        keys,
+        defaults,
+        graph,
+        second_layer: dual_layer,
+        constants: CONSTANTS,
+        formulas: SD_MAP_FORMULAS,
+        tables: &[],
+    }
 }
 
 /// How [`SvaoSettings::frame`] and [`SvaoSettings::graph`] fill `SvaoFrame`, `SvaoParams` and
@@ -248,6 +258,35 @@ pub const SVAO: &[Constant] = &[
     Constant::new("RasterParams._pad2", "0")
         .expr("0"),
 ];
+
+/// The SD map's size and dispatch (spec svao-raysd §3: `ceil(W/div) + 2·guard` texels per
+/// side, the guard band `floor(sd-guard/div)` SD texels, none for the raster map) as expressions
+/// of the settings; without an SD map the ray-interval buffers are one word.
+pub const SD_MAP_FORMULAS: &[Formula] = {
+    const X: &str = "div_ceil(W, pick(index(`sd-res`), 1, 2, 4, 8, 16)) + 2 * select(`sd-source` == \"ray\", \
+                     div_floor(`sd-guard`, pick(index(`sd-res`), 1, 2, 4, 8, 16)), 0)";
+    const Y: &str = "div_ceil(H, pick(index(`sd-res`), 1, 2, 4, 8, 16)) + 2 * select(`sd-source` == \"ray\", \
+                     div_floor(`sd-guard`, pick(index(`sd-res`), 1, 2, 4, 8, 16)), 0)";
+    const TEXELS: &str = "select(`refinement` == \"sd-map\", (div_ceil(W, pick(index(`sd-res`), 1, 2, 4, 8, 16)) + 2 * \
+                          select(`sd-source` == \"ray\", div_floor(`sd-guard`, pick(index(`sd-res`), 1, 2, 4, 8, 16)), 0)) \
+                          * (div_ceil(H, pick(index(`sd-res`), 1, 2, 4, 8, 16)) + 2 * select(`sd-source` == \"ray\", \
+                          div_floor(`sd-guard`, pick(index(`sd-res`), 1, 2, 4, 8, 16)), 0)), 1)";
+    &[
+        Formula { of: "ray_min", expr: TEXELS },
+        Formula { of: "ray_max", expr: TEXELS },
+        Formula {
+            of: "sd_map",
+            expr: "(div_ceil(W, pick(index(`sd-res`), 1, 2, 4, 8, 16)) + 2 * select(`sd-source` == \"ray\", \
+                   div_floor(`sd-guard`, pick(index(`sd-res`), 1, 2, 4, 8, 16)), 0)) * (div_ceil(H, pick(index(`sd-res`), \
+                   1, 2, 4, 8, 16)) + 2 * select(`sd-source` == \"ray\", div_floor(`sd-guard`, pick(index(`sd-res`), 1, 2, 4, \
+                   8, 16)), 0)) * `sd-layers`",
+        },
+        Formula { of: "sd_map.x", expr: X },
+        Formula { of: "sd_map.y", expr: Y },
+        Formula { of: "sd_map_raster.x", expr: X },
+        Formula { of: "sd_map_raster.y", expr: Y },
+    ]
+};
 
 /// The stenciled family's constants: [`SVAO`], VAO's and the blur's, the camera's.
 pub const CONSTANTS: &[Constant] =

@@ -109,6 +109,8 @@ pub static VBAO: Declaration<VbaoSettings> = Declaration {
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,
     constants: CONSTANTS,
+    formulas: &[],
+    tables: &[],
 };
 
 /// How [`VbaoSettings::params`] fills `VbaoParams` and the `GtaoParams` of its passes, then

@@ -30,6 +30,41 @@ pub struct FrameInputs {
 }
 
 impl FrameInputs {
+    /// Two frames the checks use: different cameras, image sizes, guard bands, AO parameters
+    /// and frame indices (a 1920×1080 frame with a 64-pixel guard band, and a small odd one).
+    pub fn examples() -> [FrameInputs; 2] {
+        [
+            FrameInputs {
+                eye: Vec3::new(0.0, 1.0, 5.0),
+                target: Vec3::ZERO,
+                up: Vec3::Y,
+                fov_y: 1.0,
+                inner: UVec2::new(1920, 1080),
+                guard: 64,
+                near: 0.1,
+                far: 100.0,
+                radius: 0.5,
+                exponent: 2.0,
+                thickness: 0.0,
+                frame_index: 0,
+            },
+            FrameInputs {
+                eye: Vec3::new(3.7, -2.1, 0.4),
+                target: Vec3::new(-1.0, 0.5, -7.3),
+                up: Vec3::new(0.1, 1.0, 0.05),
+                fov_y: 0.83,
+                inner: UVec2::new(97, 63),
+                guard: 13,
+                near: 0.05,
+                far: 40.0,
+                radius: 0.37,
+                exponent: 1.7,
+                thickness: 0.02,
+                frame_index: 5,
+            },
+        ]
+    }
+
     /// The frame the Rust builders take.
     pub fn frame_desc(&self) -> FrameDesc {
         let camera =

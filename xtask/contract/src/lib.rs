@@ -12,6 +12,7 @@
 pub mod atomic_file;
 pub mod constants;
 pub mod expr;
+pub mod graphs;
 pub mod manifest;
 pub mod spirv_hash;
 #[cfg(feature = "reflect")]

@@ -26,6 +26,33 @@ pub struct Manifest {
     /// graph.
     #[serde(default)]
     pub techniques: Vec<TechniqueManifest>,
+    /// The data tables `data` resources take their words from (`contents.table`).
+    #[serde(default)]
+    pub tables: Vec<TableManifest>,
+}
+
+/// A table of values (`aokit_shaders::technique::Table`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct TableManifest {
+    pub name: String,
+    /// The element type (`Vec2`: two f32 per element, as the module's binding holds them).
+    pub elem: String,
+    pub doc: String,
+    /// Every element's components, in order (binary32 values, shortest decimal form).
+    pub values: Vec<f32>,
+}
+
+/// The graph of a technique for the settings of one or more `when` entries.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct VariantManifest {
+    /// The settings this graph is for: one entry per combination of the technique's structural
+    /// settings (those that change its passes or resources), `key → value`; every other setting
+    /// may take any legal value (sizes, dispatches and contents are expressions of them).
+    pub when: Vec<std::collections::BTreeMap<String, String>>,
+    pub inputs: Vec<String>,
+    pub resources: Vec<ResourceManifest>,
+    pub passes: Vec<PassManifest>,
+    pub output: String,
 }
 
 /// One technique (`aokit_shaders::techniques`).
@@ -40,6 +67,13 @@ pub struct TechniqueManifest {
     pub passes: Vec<PassManifest>,
     /// The resource holding the final AO (`f32` per full-target texel, 1 = unoccluded).
     pub output: String,
+    /// The keys of the settings that change the graph's passes or resources.
+    #[serde(default)]
+    pub structural: Vec<String>,
+    /// The graph for every combination of the structural settings (the one above is the
+    /// defaults' variant).
+    #[serde(default)]
+    pub variants: Vec<VariantManifest>,
     /// How each field of the constants structs the passes use (push-constant blocks, records
     /// bound as storage buffers, the structs they hold) is computed from the settings and the
     /// camera: every field of every such struct, structs in [`Manifest::structs`] order.
@@ -83,6 +117,10 @@ pub struct SettingManifest {
     pub choices: Vec<String>,
     pub default: String,
     pub help: String,
+    /// Choice settings that set others (XeGTAO's `preset` sets `slices` and `steps`): per
+    /// choice, the settings it sets (`custom`: none). Apply in the order of `settings`.
+    #[serde(default, skip_serializing_if = "std::collections::BTreeMap::is_empty")]
+    pub sets: std::collections::BTreeMap<String, std::collections::BTreeMap<String, String>>,
 }
 
 /// One storage buffer of a graph.
@@ -91,15 +129,32 @@ pub struct ResourceManifest {
     pub name: String,
     /// "f32" or "u32" (records are `u32` words holding the struct the binding names).
     pub elem: String,
-    /// Element count as a formula of the full target `W×H` and inner image `w×h`: `·`
-    /// multiplies, `ceil`, `floor`, `max`; records and tables a number.
+    /// Element count as an integer expression (the constants' grammar) of the full target
+    /// `W×H`, the inner image `w×h` and the technique's settings.
     pub size: String,
     /// "per_frame" (initialised every frame) or "persistent".
     pub lifetime: String,
     /// "fill 0x3f800000" (every element these bits, here 1.0f), "data" (a record or table the
     /// host writes each frame: the module binding's struct), "undefined" (written before read).
     pub init: String,
+    /// "data" resources: what the words are.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub contents: Option<ContentsManifest>,
     pub doc: String,
+}
+
+/// The words of a `data` resource: a record of a struct filled from the technique's constants,
+/// or elements `first .. first + count` of a table (expressions of the settings).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ContentsManifest {
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub record: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub table: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub first: Option<String>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub count: Option<String>,
 }
 
 /// One dispatch, in graph order.
@@ -119,7 +174,8 @@ pub struct PassManifest {
     pub ray_query: Option<String>,
     /// `(slot, resource or input, "read" | "write" | "read_write")`.
     pub bindings: Vec<(u32, String, String)>,
-    /// Invocations `[x, y]` as formulas (compute: divide by the workgroup size, rounding up).
+    /// Invocations `[x, y]` as integer expressions like `size` (compute: divide by the
+    /// workgroup size, rounding up).
     pub dispatch: [String; 2],
     /// A memory barrier (shader writes → shader reads and writes) comes before this pass.
     pub barrier_before: bool,
@@ -502,6 +558,7 @@ impl Manifest {
             })
             .collect();
         self.techniques = techniques()?;
+        self.tables = tables()?;
         for m in &mut self.modules {
             let kernel = aokit_shaders::kernel::Kernel::find(&m.entry_point)
                 .ok_or_else(|| format!("{}: no #[kernel] entry point of that name", m.entry_point))?;
@@ -687,10 +744,71 @@ pub fn reference_frame(inner: aokit_shaders::glam::UVec2, guard: u32) -> aokit_s
     aokit_shaders::graph::FrameDesc::new(camera, 0.5, 2.0, 0.0)
 }
 
-/// The registry's techniques at their defaults.
+/// What each choice of setting `key` sets besides itself: the settings that come out the same
+/// whichever value they had before (from the defaults and from every other choice's state), for
+/// the choices that change any.
+#[cfg(feature = "reflect")]
+fn presets(
+    t: &'static dyn aokit_shaders::technique::Registered,
+    key: &str,
+    kind: aokit_shaders::technique::Kind,
+) -> std::collections::BTreeMap<String, std::collections::BTreeMap<String, String>> {
+    use std::collections::BTreeMap;
+    let aokit_shaders::technique::Kind::Choice(names) = kind else { return BTreeMap::new() };
+    let after = |from: Option<&str>, choice: &str| -> Option<Vec<(&'static str, String)>> {
+        let mut c = t.configure();
+        if let Some(f) = from {
+            c.set(key, f).ok()?;
+        }
+        c.set(key, choice).ok()?;
+        Some(c.values().into_iter().filter(|(k, _)| *k != key).collect())
+    };
+    let starts: Vec<Option<&str>> = std::iter::once(None).chain(names.iter().map(|n| Some(*n))).collect();
+    let mut out = BTreeMap::new();
+    for choice in names {
+        let Some(state) = after(None, choice) else { continue };
+        let sets: BTreeMap<String, String> = state
+            .into_iter()
+            .filter(|(k, v)| {
+                let changed = names
+                    .iter()
+                    .any(|other| after(None, other).is_some_and(|s| s.iter().any(|(ok, ov)| ok == k && ov != v)));
+                changed
+                    && starts
+                        .iter()
+                        .all(|f| after(*f, choice).is_some_and(|s| s.iter().any(|(sk, sv)| sk == k && sv == v)))
+            })
+            .map(|(k, v)| (k.to_string(), v))
+            .collect();
+        out.insert(choice.to_string(), sets);
+    }
+    if out.values().all(BTreeMap::is_empty) { BTreeMap::new() } else { out }
+}
+
+/// Every technique's data tables, each once.
+pub fn tables() -> Result<Vec<TableManifest>, String> {
+    let mut out: Vec<TableManifest> = Vec::new();
+    for t in aokit_shaders::techniques::TECHNIQUES {
+        for table in t.tables() {
+            let m = TableManifest {
+                name: table.name.into(),
+                elem: table.elem.into(),
+                doc: table.doc.into(),
+                values: (table.values)(),
+            };
+            match out.iter().find(|o| o.name == m.name) {
+                Some(o) if *o != m => return Err(format!("two tables named {}", m.name)),
+                Some(_) => {}
+                None => out.push(m),
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// The registry's techniques: settings, the graph at the defaults and every variant.
 #[cfg(feature = "reflect")]
 fn techniques() -> Result<Vec<TechniqueManifest>, String> {
-    use aokit_shaders::graph::{Access, Elem, Init, Lifetime, PassKind};
     use aokit_shaders::technique::Kind;
     let frame = reference_frame(aokit_shaders::glam::UVec2::new(1920, 1080), 64);
     let mut out = Vec::new();
@@ -722,72 +840,22 @@ fn techniques() -> Result<Vec<TechniqueManifest>, String> {
                     choices,
                     default: defaults.iter().find(|(k, _)| *k == r.key).map(|(_, v)| v.clone()).unwrap_or_default(),
                     help: r.help.into(),
+                    sets: presets(*t, r.key, r.kind),
                 }
             })
             .collect();
-        let graph = configured.graph(&frame)?;
-        let resources = graph
-            .resources
-            .iter()
-            .map(|r| ResourceManifest {
-                name: r.name.into(),
-                elem: match r.elem {
-                    Elem::F32 => "f32",
-                    Elem::U32 => "u32",
-                }
-                .into(),
-                size: r.size.formula(),
-                lifetime: match r.lifetime {
-                    Lifetime::PerFrame => "per_frame",
-                    Lifetime::Persistent => "persistent",
-                }
-                .into(),
-                init: match &r.init {
-                    Init::Fill(bits) => format!("fill {bits:#010x}"),
-                    Init::Data(_) => "data".into(),
-                    Init::Undefined => "undefined".into(),
-                },
-                doc: r.doc.into(),
-            })
-            .collect();
-        let barriers = graph.barriers();
-        let passes = graph
-            .passes
-            .iter()
-            .zip(barriers)
-            .map(|(p, barrier_before)| {
-                let (kind, stages, ray_query) = match p.kind {
-                    PassKind::Compute => ("compute", vec![], None),
-                    PassKind::RayTracing { miss, any_hit, query } => {
-                        ("ray_tracing", vec![miss.entry.into(), any_hit.entry.into()], Some(query.entry.into()))
-                    }
-                    PassKind::Raster { vertex } => ("raster", vec![vertex.entry.into()], None),
-                };
-                let access = |a: Access| match a {
-                    Access::Read => "read",
-                    Access::Write => "write",
-                    Access::ReadWrite => "read_write",
-                };
-                PassManifest {
-                    label: p.label.into(),
-                    entry: p.entry().into(),
-                    kind: kind.into(),
-                    stages,
-                    ray_query,
-                    bindings: p.bindings.iter().map(|b| (b.slot, b.resource.into(), access(b.access).into())).collect(),
-                    dispatch: p.dispatch.formula(),
-                    barrier_before,
-                }
-            })
-            .collect();
+        let (structural, variants) = crate::graphs::variants(*t, &frame)?;
+        let defaults = crate::graphs::publish(*t, &configured.graph(&frame)?)?;
         out.push(TechniqueManifest {
             name: t.name().into(),
             summary: t.summary().into(),
             settings,
-            inputs: graph.inputs().into_iter().map(Into::into).collect(),
-            resources,
-            passes,
-            output: graph.output.into(),
+            inputs: defaults.inputs,
+            resources: defaults.resources,
+            passes: defaults.passes,
+            output: defaults.output,
+            structural,
+            variants,
             constants: Vec::new(),
         });
     }

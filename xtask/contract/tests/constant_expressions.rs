@@ -7,41 +7,7 @@
 
 use aokit_contract::constants::{FrameInputs, check};
 use aokit_contract::manifest::constants::values_tried;
-use aokit_shaders::glam::{UVec2, Vec3};
 use aokit_shaders::techniques::TECHNIQUES;
-
-fn frames() -> [FrameInputs; 2] {
-    [
-        FrameInputs {
-            eye: Vec3::new(0.0, 1.0, 5.0),
-            target: Vec3::ZERO,
-            up: Vec3::Y,
-            fov_y: 1.0,
-            inner: UVec2::new(1920, 1080),
-            guard: 64,
-            near: 0.1,
-            far: 100.0,
-            radius: 0.5,
-            exponent: 2.0,
-            thickness: 0.0,
-            frame_index: 0,
-        },
-        FrameInputs {
-            eye: Vec3::new(3.7, -2.1, 0.4),
-            target: Vec3::new(-1.0, 0.5, -7.3),
-            up: Vec3::new(0.1, 1.0, 0.05),
-            fov_y: 0.83,
-            inner: UVec2::new(96, 64),
-            guard: 16,
-            near: 0.05,
-            far: 40.0,
-            radius: 0.37,
-            exponent: 1.7,
-            thickness: 0.02,
-            frame_index: 5,
-        },
-    ]
-}
 
 #[test]
 fn expressions_reproduce_the_builders_bit_for_bit() {
@@ -65,7 +31,7 @@ fn expressions_reproduce_the_builders_bit_for_bit() {
             for (k, v) in values {
                 c.set(k, v).expect("a value tried above");
             }
-            for frame in frames() {
+            for frame in FrameInputs::examples() {
                 let Ok(graph) = c.graph(&frame.frame_desc()) else { continue };
                 match check(t, values, &frame, &graph) {
                     Ok(checked) => compared += checked.len(),
