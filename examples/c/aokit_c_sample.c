@@ -1,6 +1,6 @@
 /* aokit-c-sample: run one of aokit's AO techniques from plain C on Vulkan, using nothing of aokit
- * but its committed SPIR-V (the .spv files of assets/spirv/) and the generated header
- * (assets/include/aokit.h).
+ * but its committed SPIR-V (the .spv files of assets/spirv/) and the generated headers
+ * (assets/include/aokit.h, aokit_constants.h).
  *
  *   aokit-c-sample DIR TECHNIQUE OUT.pgm
  *
@@ -8,7 +8,7 @@
  * its default settings; OUT.pgm receives the final AO of the inner image as a 16-bit binary PGM
  * (65535 = unoccluded). The passes, resources, sizes and fill values below are transcribed from
  * the `techniques` section of assets/spirv/manifest.json; binding slots and workgroup sizes come
- * from aokit.h. See examples/c/README.md.
+ * from aokit.h, the push constants and records from aokit_constants.h. See examples/c/README.md.
  *
  * Environment: AOKIT_ASSETS (the assets/ folder; default: ../../../assets next to this
  * executable), AOKIT_C_VALIDATION=1 (Khronos validation layer; any message fails the run). */
@@ -27,7 +27,7 @@
 
 #include <vulkan/vulkan.h>
 
-#include "aokit.h"
+#include "aokit_constants.h"
 
 /* ---------------------------------------------------------------------------------------------
  * Errors: one line on stderr, exit status 1. */
@@ -128,19 +128,21 @@ static double json_number(const char *json, const char *key) {
     return v;
 }
 
-/* `"key": [a, b]`. */
-static void json_pair(const char *json, const char *key, double out[2]) {
+/* `"key": [a, b, …]`: `n` numbers. */
+static void json_array(const char *json, const char *key, double *out, int n) {
     const char *p = json_value(json, key);
-    if (!p || *p != '[') die("export.json: no pair \"%s\"", key);
+    if (!p || *p != '[') die("export.json: no array \"%s\"", key);
     p++;
-    for (int i = 0; i < 2; i++) {
+    for (int i = 0; i < n; i++) {
         char *end = NULL;
         out[i] = strtod(p, &end);
-        if (end == p) die("export.json: \"%s\" is not a pair of numbers", key);
+        if (end == p) die("export.json: \"%s\" is not %d numbers", key, n);
         p = end;
         while (*p == ' ' || *p == ',') p++;
     }
 }
+
+static void json_pair(const char *json, const char *key, double out[2]) { json_array(json, key, out, 2); }
 
 /* ---------------------------------------------------------------------------------------------
  * The frame: camera.bin, export.json and aokit's internal G-buffer. */
@@ -151,6 +153,8 @@ typedef struct {
     uint32_t w, h;    /* inner image */
     uint32_t guard;   /* guard band on each side */
     float radius, exponent, thickness;
+    /* What the constants' functions (aokit_constants.h) read: the camera as export.json gives it. */
+    aokit_frame_inputs inputs;
     uint32_t triangles;
     Blob depth, normals; /* W·H f32 linear view depth, W·H u32 octahedral normals */
 } Frame;
@@ -170,6 +174,25 @@ static Frame load_frame(const char *dir) {
     f.exponent = (float)json_number(text, "exponent");
     f.thickness = (float)json_number(text, "thickness");
     f.triangles = (uint32_t)json_number(text, "triangles");
+    double eye[3], target[3], up[3];
+    json_array(text, "eye", eye, 3);
+    json_array(text, "target", target, 3);
+    json_array(text, "up", up, 3);
+    for (int i = 0; i < 3; i++) {
+        f.inputs.eye[i] = (float)eye[i];
+        f.inputs.target[i] = (float)target[i];
+        f.inputs.up[i] = (float)up[i];
+    }
+    f.inputs.fov_y = (float)json_number(text, "fov_y"); /* radians, the binary32 the camera used */
+    f.inputs.near_plane = (float)json_number(text, "near");
+    f.inputs.far_plane = (float)json_number(text, "far");
+    f.inputs.w = f.w;
+    f.inputs.h = f.h;
+    f.inputs.g = f.guard;
+    f.inputs.radius = f.radius;
+    f.inputs.exponent = f.exponent;
+    f.inputs.thickness = f.thickness;
+    f.inputs.frame = 0;
     free(json.data);
 
     Blob camera = load_sized(dir, "camera.bin", sizeof(aokit_Camera), "aokit_Camera");
@@ -315,39 +338,17 @@ static void bind(Pass *p, uint32_t slot, int resource) {
 
 #define MODULE(M) AOKIT_##M##_SPV, AOKIT_##M##_WORKGROUP_X, AOKIT_##M##_WORKGROUP_Y
 
-/* --- Constants (manifest `structs` field docs and technique `settings` defaults). */
+/* --- Constants: aokit_constants.h's functions, generated from the manifest's expressions (each
+ * technique at its defaults; `pass` is the pass's index among its module's passes). */
 
-/* VaoParams: the frame's radius, exponent, thickness; max_screen_radius 512 (spec svao-raysd §4.1). */
-static aokit_VaoParams vao_params(const Frame *f) {
-    aokit_VaoParams p;
-    memset(&p, 0, sizeof p);
-    p.view = f->camera.view;
-    p.radius = f->radius;
-    p.exponent = f->exponent;
-    p.thickness = f->thickness;
-    p.max_screen_radius = 512.0f;
-    return p;
-}
-
-/* BlurParams: direction (1, 0) then (0, 1), sharpness 16 (spec svao-raysd §12). */
-static aokit_BlurParams blur_params(const Frame *f, uint32_t dx, uint32_t dy) {
-    aokit_BlurParams p;
-    memset(&p, 0, sizeof p);
-    p.view = f->camera.view;
-    p.direction.v[0] = dx;
-    p.direction.v[1] = dy;
-    p.sharpness = 16.0f;
-    return p;
-}
-
-/* The cross-bilateral blur of `input` into a new resource ao_final (blur_horizontal between). */
-static int add_blur(Graph *g, const Frame *f, int depth, int input) {
+/* The cross-bilateral blur of `input` into a new resource ao_final (blur_horizontal between);
+ * `bp` the two passes' BlurParams. */
+static int add_blur(Graph *g, const Frame *f, int depth, int input, const aokit_BlurParams bp[2]) {
     int scratch = add_resource(g, "blur_horizontal", (size_t)f->W * f->H, ONE_F32);
     int output = add_resource(g, "ao_final", (size_t)f->W * f->H, ONE_F32);
     const int from[2] = {input, scratch}, to[2] = {scratch, output};
     for (int i = 0; i < 2; i++) {
-        aokit_BlurParams bp = blur_params(f, i == 0, i == 1);
-        Pass *p = add_pass(g, MODULE(BLUR_MAIN), f->w, f->h, &bp, sizeof bp);
+        Pass *p = add_pass(g, MODULE(BLUR_MAIN), f->w, f->h, &bp[i], sizeof bp[i]);
         bind(p, AOKIT_BLUR_MAIN_BINDING_AO_IN, from[i]);
         bind(p, AOKIT_BLUR_MAIN_BINDING_DEPTH, depth);
         bind(p, AOKIT_BLUR_MAIN_BINDING_AO_OUT, to[i]);
@@ -360,12 +361,16 @@ static void graph_vao(Graph *g, const Frame *f) {
     int depth = add_data(g, "linear_depth", f->depth.data, f->depth.size);
     int normals = add_data(g, "view_normals", f->normals.data, f->normals.size);
     int ao = add_resource(g, "ao", (size_t)f->W * f->H, ONE_F32);
-    aokit_VaoParams vp = vao_params(f);
+    aokit_vao_settings s = aokit_vao_defaults();
+    aokit_VaoParams vp;
+    aokit_vao_VaoParams(&s, &f->inputs, 0, &vp);
     Pass *p = add_pass(g, MODULE(VAO_MAIN), f->w, f->h, &vp, sizeof vp);
     bind(p, AOKIT_VAO_MAIN_BINDING_DEPTH, depth);
     bind(p, AOKIT_VAO_MAIN_BINDING_NORMALS, normals);
     bind(p, AOKIT_VAO_MAIN_BINDING_AO, ao);
-    g->output = add_blur(g, f, depth, ao);
+    aokit_BlurParams bp[2];
+    for (uint32_t i = 0; i < 2; i++) aokit_vao_BlurParams(&s, &f->inputs, i, &bp[i]);
+    g->output = add_blur(g, f, depth, ao, bp);
 }
 
 /* gtao (preset high: 3 slices × 3 steps, 1 denoise pass): 5 prefilter levels, main pass, denoise. */
@@ -389,29 +394,18 @@ static void graph_gtao(Graph *g, const Frame *f) {
     int pong = add_resource(g, "denoise_pong", texels, 0);
     int output = add_resource(g, "ao_final", texels, ONE_F32);
 
+    aokit_gtao_settings s = aokit_gtao_defaults();
     aokit_GtaoParams gp;
-    memset(&gp, 0, sizeof gp);
-    gp.view = f->camera.view;
-    gp.radius = f->radius;
-    gp.radius_multiplier = 1.457f;
-    gp.falloff_range = 0.615f;
-    gp.sample_distribution_power = 2.0f;
-    gp.thin_occluder_compensation = 0.0f;
-    gp.final_value_power = 2.2f;
-    gp.depth_mip_sampling_offset = 3.3f;
-    gp.slices = 3;
-    gp.steps = 3;
-    gp.denoise_passes = 1;
-    gp.noise_frame = 0;
+    aokit_gtao_GtaoParams(&s, &f->inputs, 0, &gp);
 
     for (uint32_t level = 0; level < GTAO_MIP_LEVELS; level++) {
-        gp.pass = level; /* prefilter: the MIP level this dispatch writes */
+        aokit_gtao_GtaoParams(&s, &f->inputs, level, &gp); /* prefilter: pass = the MIP level it writes */
         Pass *p = add_pass(g, MODULE(GTAO_PREFILTER), mip_extent(f->W, level), mip_extent(f->H, level), &gp,
                            sizeof gp);
         bind(p, AOKIT_GTAO_PREFILTER_BINDING_DEPTH, depth);
         bind(p, AOKIT_GTAO_PREFILTER_BINDING_MIPS, mips);
     }
-    gp.pass = 0;
+    aokit_gtao_GtaoParams(&s, &f->inputs, 0, &gp);
     Pass *p = add_pass(g, MODULE(GTAO_MAIN), f->W, f->H, &gp, sizeof gp);
     bind(p, AOKIT_GTAO_MAIN_BINDING_MIPS, mips);
     bind(p, AOKIT_GTAO_MAIN_BINDING_NORMALS, normals);
@@ -420,7 +414,7 @@ static void graph_gtao(Graph *g, const Frame *f) {
     /* max(1, denoise_passes) passes ping-ponging; each writes the visibility into ao_final. */
     int from = terms, to = ping;
     for (uint32_t i = 0; i < (gp.denoise_passes ? gp.denoise_passes : 1); i++) {
-        gp.pass = i; /* denoise: the pass index */
+        aokit_gtao_GtaoParams(&s, &f->inputs, i, &gp); /* denoise: pass = its index */
         p = add_pass(g, MODULE(GTAO_DENOISE), f->W, f->H, &gp, sizeof gp);
         bind(p, AOKIT_GTAO_DENOISE_BINDING_TERMS_IN, from);
         bind(p, AOKIT_GTAO_DENOISE_BINDING_EDGES, edges);
@@ -432,33 +426,12 @@ static void graph_gtao(Graph *g, const Frame *f) {
     g->output = output;
 }
 
-/* raysd (SD map at ¼ resolution, 4 layers, MAX_COUNT 8, cutoff 6 px, interval on, scrambled
- * jitter, SD guard 512 px, single depth, VAO kernel): svao_pass1 → SD map (ray queries) →
- * raysd_pass2 → blur. */
-#define SD_DIVISOR 4u
-#define SD_GUARD_PX 512u
-#define SD_LAYERS 4u
-#define SD_MAX_COUNT 8u
-#define SECONDARY_STOCHASTIC_DEPTH 1u /* Secondary::StochasticDepth */
-#define JITTER_SCRAMBLED 1u           /* JitterTable::Scrambled */
-#define KERNEL_VAO 0u
-
-static void graph_raysd(Graph *g, const Frame *f, const Scene *s, aokit_SvaoFrame *svao) {
-    memset(svao, 0, sizeof *svao);
-    svao->camera = f->camera;
-    aokit_SvaoParams *sp = &svao->params;
-    sp->vao = vao_params(f);
-    sp->secondary = SECONDARY_STOCHASTIC_DEPTH;
-    sp->interval = 1;
-    sp->cutoff = 6.0f;
-    sp->sd_guard = SD_GUARD_PX / SD_DIVISOR;
-    sp->sd_low_res.v[0] = (f->W + SD_DIVISOR - 1) / SD_DIVISOR;
-    sp->sd_low_res.v[1] = (f->H + SD_DIVISOR - 1) / SD_DIVISOR;
-    sp->sd_layers = SD_LAYERS;
-    sp->max_count = SD_MAX_COUNT > SD_LAYERS ? SD_MAX_COUNT : SD_LAYERS;
-    sp->jitter = JITTER_SCRAMBLED;
-    sp->dual = 0;
-    sp->kernel = KERNEL_VAO;
+/* raysd at its defaults (SD map at ¼ resolution, 4 layers, single depth, VAO kernel):
+ * svao_pass1 → SD map (ray queries) → raysd_pass2 → blur. */
+static void graph_raysd(Graph *g, const Frame *f, const Scene *sc, aokit_SvaoFrame *svao) {
+    aokit_raysd_settings s = aokit_raysd_defaults();
+    aokit_raysd_SvaoFrame(&s, &f->inputs, 0, svao);
+    const aokit_SvaoParams *sp = &svao->params;
     /* SD texels: the low-res map plus its guard band on each side. */
     uint32_t sd_w = sp->sd_low_res.v[0] + 2 * sp->sd_guard, sd_h = sp->sd_low_res.v[1] + 2 * sp->sd_guard;
     size_t sd_texels = (size_t)sd_w * sd_h, texels = (size_t)f->W * f->H;
@@ -467,15 +440,15 @@ static void graph_raysd(Graph *g, const Frame *f, const Scene *s, aokit_SvaoFram
     int frame = add_data(g, "svao_frame", svao, sizeof *svao);
     int depth = add_data(g, "linear_depth", f->depth.data, f->depth.size);
     int normals = add_data(g, "view_normals", f->normals.data, f->normals.size);
-    int uvs = add_data(g, "scene_uvs", s->uvs.data, s->uvs.size);
-    int materials = add_data(g, "scene_materials", s->materials.data, s->materials.size);
-    int headers = add_data(g, "scene_mask_headers", s->mask_headers.data, s->mask_headers.size);
-    int texels_ = add_data(g, "scene_mask_texels", s->mask_texels.data, s->mask_texels.size);
+    int uvs = add_data(g, "scene_uvs", sc->uvs.data, sc->uvs.size);
+    int materials = add_data(g, "scene_materials", sc->materials.data, sc->materials.size);
+    int headers = add_data(g, "scene_mask_headers", sc->mask_headers.data, sc->mask_headers.size);
+    int texels_ = add_data(g, "scene_mask_texels", sc->mask_texels.data, sc->mask_texels.size);
     int ao = add_resource(g, "ao", texels, ONE_F32);
     int mask = add_resource(g, "refine_mask", texels, 0);
     int ray_min = add_resource(g, "ray_min", sd_texels, 0x7f7fffffu);
     int ray_max = add_resource(g, "ray_max", sd_texels, 0);
-    int sd_map = add_resource(g, "sd_map", sd_texels * SD_LAYERS, ONE_F32);
+    int sd_map = add_resource(g, "sd_map", sd_texels * sp->sd_layers, ONE_F32);
     int ray_count = add_resource(g, "ray_count", 2, 0); /* rays traced: u64 as (low, high) */
 
     Pass *p = add_pass(g, MODULE(SVAO_PASS1), f->w, f->h, NULL, 0);
@@ -513,7 +486,9 @@ static void graph_raysd(Graph *g, const Frame *f, const Scene *s, aokit_SvaoFram
     bind(p, AOKIT_RAYSD_PASS2_BINDING_SD_MAP, sd_map);
     bind(p, AOKIT_RAYSD_PASS2_BINDING_DEPTH2, depth);
 
-    g->output = add_blur(g, f, depth, ao);
+    aokit_BlurParams bp[2];
+    for (uint32_t i = 0; i < 2; i++) aokit_raysd_BlurParams(&s, &f->inputs, i, &bp[i]);
+    g->output = add_blur(g, f, depth, ao, bp);
 }
 
 /* ---------------------------------------------------------------------------------------------

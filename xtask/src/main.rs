@@ -141,6 +141,8 @@ fn build_spirv() -> Result<(), String> {
     let include = root.join("assets/include");
     std::fs::create_dir_all(&include).map_err(|e| e.to_string())?;
     write_atomic_bytes(&include.join("aokit.h"), manifest.c_header().as_bytes()).map_err(|e| e.to_string())?;
+    let constants = manifest.c_constants_header()?;
+    write_atomic_bytes(&include.join("aokit_constants.h"), constants.as_bytes()).map_err(|e| e.to_string())?;
     println!("wrote {} modules and manifest.json (source hash {})", manifest.modules.len(), manifest.source_hash);
     Ok(())
 }

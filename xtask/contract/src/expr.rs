@@ -59,6 +59,11 @@ pub fn parse(text: &str) -> Result<(), String> {
     Ok(())
 }
 
+/// The tokens of `text` (numbers, names, settings in backticks, quoted names, operators).
+pub fn tokens(text: &str) -> Result<Vec<String>, String> {
+    tokenize(text)
+}
+
 /// The setting keys `text` names (in backticks).
 pub fn settings_named(text: &str) -> Vec<&str> {
     text.split('`').skip(1).step_by(2).collect()

@@ -10,6 +10,7 @@
 //! without it.
 
 pub mod atomic_file;
+pub mod c_constants;
 pub mod constants;
 pub mod expr;
 pub mod graphs;

@@ -1,0 +1,163 @@
+//! `assets/include/aokit_constants.h` — the constants' expressions translated to C — gives the
+//! bytes the Rust builders put into the graphs: a C program generated here fills, for every
+//! technique at its defaults and with each setting at each tried value, every push-constant
+//! block and record the technique's graph carries (each pass with its index among its module's
+//! passes), on a frame with odd sizes, and prints them; they must equal the graph's bytes.
+//! Needs a C compiler (gcc: CI has one; elsewhere a missing one skips by name).
+
+use aokit_contract::constants::FrameInputs;
+use aokit_contract::manifest::Manifest;
+use aokit_contract::manifest::constants::values_tried;
+use aokit_shaders::graph::{Init, PassKind};
+use aokit_shaders::techniques::TECHNIQUES;
+use std::fmt::Write;
+use std::path::PathBuf;
+use std::process::Command;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// A binary32 as an exact C literal.
+fn c_float(v: f32) -> String {
+    format!("{:?}f", v as f64).replace("inf", "INFINITY")
+}
+
+#[test]
+fn generated_c_constants_equal_the_rust_builders_bytes() {
+    let manifest = Manifest::committed();
+    let header = std::fs::read_to_string(root().join("assets/include/aokit_constants.h")).unwrap();
+    assert_eq!(header, manifest.c_constants_header().unwrap(), "aokit_constants.h is stale: run the xtask");
+    if !Command::new("cc").arg("--version").output().is_ok_and(|o| o.status.success()) {
+        assert!(std::env::var_os("CI").is_none(), "CI must have a C compiler");
+        eprintln!("SKIPPED generated_c_constants_equal_the_rust_builders_bytes: no `cc`");
+        return;
+    }
+    let frame = FrameInputs::examples()[1];
+    let v = |x: aokit_shaders::glam::Vec3| format!("{{{}, {}, {}}}", c_float(x.x), c_float(x.y), c_float(x.z));
+    let mut c = String::from("#include <stdio.h>\n#include <string.h>\n#include \"aokit_constants.h\"\n");
+    c += "static void dump(const char *what, const void *p, size_t n) {\n    printf(\"%s \", what);\n";
+    c += "    for (size_t i = 0; i < n; i++) printf(\"%02x\", ((const unsigned char *)p)[i]);\n    printf(\"\\n\");\n}\n";
+    c += "int main(void) {\n";
+    writeln!(
+        c,
+        "    aokit_frame_inputs f = {{{}, {}, {}, {}, {}, {}, {}u, {}u, {}u, {}, {}, {}, {}u}};",
+        v(frame.eye),
+        v(frame.target),
+        v(frame.up),
+        c_float(frame.fov_y),
+        c_float(frame.near),
+        c_float(frame.far),
+        frame.inner.x,
+        frame.inner.y,
+        frame.guard,
+        c_float(frame.radius),
+        c_float(frame.exponent),
+        c_float(frame.thickness),
+        frame.frame_index
+    )
+    .unwrap();
+    let mut expected = Vec::new();
+    for &t in TECHNIQUES {
+        let listed = manifest.techniques.iter().find(|m| m.name == t.name()).unwrap();
+        let defaults = t.configure();
+        let mut variants = vec![defaults.values()];
+        for (key, default) in defaults.values() {
+            let row = t.rows().into_iter().find(|r| r.key == key).unwrap();
+            for value in values_tried(row.kind, &default) {
+                let mut c = t.configure();
+                if c.set(key, &value).is_ok() && c.validate().is_ok() {
+                    variants.push(c.values());
+                }
+            }
+        }
+        let p = format!("aokit_{}", t.name().replace('-', "_"));
+        for values in variants {
+            let mut configured = t.configure();
+            values.iter().for_each(|(k, val)| configured.set(k, val).unwrap());
+            let Ok(graph) = configured.graph(&frame.frame_desc()) else { continue };
+            writeln!(c, "    {{\n        {p}_settings s = {p}_defaults();").unwrap();
+            for (key, value) in &values {
+                let row = listed.settings.iter().find(|s| s.key == *key).unwrap();
+                let literal = match row.kind.as_str() {
+                    "count" => format!("{value}u"),
+                    "number" => c_float(value.parse().unwrap()),
+                    _ => format!("{}u", row.choices.iter().position(|c| c == value).unwrap()),
+                };
+                writeln!(c, "        s.{} = {literal};", key.replace('-', "_")).unwrap();
+            }
+            for (i, pass) in graph.passes.iter().enumerate() {
+                let index = graph.passes[..i].iter().filter(|q| q.entry() == pass.entry()).count();
+                let kernels = match pass.kind {
+                    PassKind::Raster { vertex } => vec![vertex, pass.kernel],
+                    _ => pass.declared_by(),
+                };
+                let mut blocks = Vec::new();
+                if let Some((name, _)) = kernels.iter().find_map(|k| k.push_constants) {
+                    blocks.push((name, index, pass.push_constants.clone()));
+                }
+                for b in &pass.bindings {
+                    let Some(Init::Data(words)) = graph.resource(b.resource).map(|r| &r.init) else { continue };
+                    let ty = kernels.iter().find_map(|k| k.binding(b.slot)).map(|d| d.rust_type).unwrap_or("");
+                    let name = ty.trim_start_matches('[').trim_end_matches(']');
+                    if listed.constants.iter().any(|c| c.struct_name == name) {
+                        blocks.push((name, 0, words.iter().flat_map(|w| w.to_le_bytes()).collect()));
+                    }
+                }
+                for (name, index, bytes) in blocks {
+                    let what = format!("{}:{values:?}:{i}:{name}", t.name()).replace(['"', ' '], "");
+                    writeln!(
+                        c,
+                        "        {{ aokit_{name} out; memset(&out, 0, sizeof out); {p}_{name}(&s, &f, {index}u, &out); dump(\"{what}\", &out, sizeof out); }}"
+                    )
+                    .unwrap();
+                    let hex: String = bytes.iter().map(|b| format!("{b:02x}")).collect();
+                    expected.push(format!("{what} {hex}"));
+                }
+            }
+            c += "    }\n";
+        }
+    }
+    c += "    return 0;\n}\n";
+    let dir = std::env::temp_dir().join(format!("aokit-c-constants-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    std::fs::write(dir.join("check.c"), &c).unwrap();
+    let exe = dir.join("check");
+    let out = Command::new("cc")
+        .args(["-std=c11", "-O2", "-Wall", "-Wextra", "-Werror", "-I"])
+        .arg(root().join("assets/include"))
+        .arg(dir.join("check.c"))
+        .arg("-o")
+        .arg(&exe)
+        .arg("-lm")
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "the generated C does not compile:\n{}", String::from_utf8_lossy(&out.stderr));
+    let run = Command::new(&exe).output().unwrap();
+    assert!(run.status.success());
+    let got: Vec<String> = String::from_utf8(run.stdout).unwrap().lines().map(String::from).collect();
+    assert_eq!(got.len(), expected.len(), "one line per block");
+    let wrong: Vec<String> =
+        got.iter().zip(&expected).filter(|(g, e)| g != e).map(|(g, e)| format!("C    {g}\nRust {e}")).collect();
+    eprintln!("{} blocks compared", expected.len());
+    assert!(
+        wrong.is_empty(),
+        "{} of {} blocks differ:\n{}",
+        wrong.len(),
+        expected.len(),
+        wrong[..wrong.len().min(5)].join("\n")
+    );
+    assert!(expected.len() > 500, "{} blocks", expected.len());
+    // C++ engines include it too (C++11: no hexadecimal float literals, designated initializers).
+    std::fs::write(dir.join("check.cpp"), "#include \"aokit_constants.h\"\nint main() { return 0; }\n").unwrap();
+    match Command::new("c++")
+        .args(["-std=c++11", "-Wall", "-Wextra", "-Werror", "-fsyntax-only", "-I"])
+        .arg(root().join("assets/include"))
+        .arg(dir.join("check.cpp"))
+        .output()
+    {
+        Ok(out) => assert!(out.status.success(), "aokit_constants.h in C++:\n{}", String::from_utf8_lossy(&out.stderr)),
+        Err(e) => assert!(std::env::var_os("CI").is_none(), "no c++ in CI: {e}"),
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
