@@ -26,14 +26,12 @@ pub fn reversed_z(z: f32, near: f32, far: f32) -> f32 {
 /// What the export holds besides the files: the import parameters an engine passes.
 pub fn import_params(frame: &Frame) -> ImportParams {
     let view = frame.camera.view;
-    ImportParams {
-        view,
-        engine_size: frame.inner,
-        depth_convention: DEPTH_REVERSED,
+    let engine = aokit_shaders::adapters::settings::AdapterSettings {
+        convention: DEPTH_REVERSED,
         near: view.near,
         far: view.far,
-        _pad: 0,
-    }
+    };
+    engine.params(&frame.desc())
 }
 
 /// Write the export of `scene` seen in `frame` with G-buffer `gbuffer` (full target) into `dir`;

@@ -101,6 +101,7 @@ fn build_spirv() -> Result<(), String> {
         structs: Vec::new(),
         techniques: Vec::new(),
         tables: Vec::new(),
+        adapters: None,
     };
     for (entry, path) in &modules {
         let file = format!("{entry}.spv");

@@ -35,6 +35,9 @@ use crate::common::normal_codec::encode_normal;
 use crate::glam::{UVec2, UVec3, Vec3};
 use spirv_std::{Image, spirv};
 
+#[cfg(not(target_arch = "spirv"))]
+pub mod settings;
+
 /// Depth conventions of the engine's depth image (`ImportParams::depth_convention`).
 ///
 /// `z` below is the view depth (distance along −Z, > 0), `n`/`f` the ENGINE projection's near

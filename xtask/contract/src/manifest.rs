@@ -29,6 +29,31 @@ pub struct Manifest {
     /// The data tables `data` resources take their words from (`contents.table`).
     #[serde(default)]
     pub tables: Vec<TableManifest>,
+    /// The modules between an engine's images and aokit's buffers.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub adapters: Option<AdaptersManifest>,
+}
+
+/// The adapter modules (`aokit_shaders::adapters`): their settings, modules and constants.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct AdaptersManifest {
+    /// The engine's side: its depth convention and its projection's planes.
+    pub settings: Vec<SettingManifest>,
+    pub modules: Vec<AdapterModuleManifest>,
+    /// `ImportParams` (the push constants of every adapter module) and the `ViewParams` inside
+    /// it, as expressions of `settings` and the frame.
+    pub constants: Vec<ConstantManifest>,
+}
+
+/// One adapter module.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct AdapterModuleManifest {
+    pub entry: String,
+    /// Invocations `[x, y]` (integer expressions of `W H w h`).
+    pub dispatch: [String; 2],
+    /// `(slot, what it binds)`: an engine image, or the technique graphs' input or output.
+    pub bindings: Vec<(u32, String)>,
+    pub doc: String,
 }
 
 /// A table of values (`aokit_shaders::technique::Table`).
@@ -559,6 +584,7 @@ impl Manifest {
             .collect();
         self.techniques = techniques()?;
         self.tables = tables()?;
+        self.adapters = Some(adapters(&self.structs)?);
         for m in &mut self.modules {
             let kernel = aokit_shaders::kernel::Kernel::find(&m.entry_point)
                 .ok_or_else(|| format!("{}: no #[kernel] entry point of that name", m.entry_point))?;
@@ -806,44 +832,82 @@ pub fn tables() -> Result<Vec<TableManifest>, String> {
     Ok(out)
 }
 
+/// The settings rows of `t` with its defaults and, for presets, what each choice sets.
+#[cfg(feature = "reflect")]
+fn settings_of(t: &'static dyn aokit_shaders::technique::Registered) -> Vec<SettingManifest> {
+    use aokit_shaders::technique::Kind;
+    let defaults = t.configure().values();
+    t.rows()
+        .into_iter()
+        .map(|r| {
+            let (kind, min, max, choices) = match r.kind {
+                Kind::Count { min, max } => ("count", Some(min as f64), (max < u32::MAX).then_some(max as f64), vec![]),
+                Kind::Number { min, max } => {
+                    // Through the f32's shortest decimal form: 0.3, not 0.30000001192092896.
+                    let exact = |v: f32| v.to_string().parse::<f64>().expect("a number");
+                    ("number", Some(exact(min)), (max < f32::MAX).then_some(exact(max)), vec![])
+                }
+                Kind::Choice(names) => ("choice", None, None, names.iter().map(|n| n.to_string()).collect()),
+            };
+            SettingManifest {
+                key: r.key.into(),
+                flag: r.flag.map(Into::into),
+                switch: r.switch.map(|(f, v)| (f.into(), v.into())),
+                kind: kind.into(),
+                min,
+                max,
+                choices,
+                default: defaults.iter().find(|(k, _)| *k == r.key).map(|(_, v)| v.clone()).unwrap_or_default(),
+                help: r.help.into(),
+                sets: presets(t, r.key, r.kind),
+            }
+        })
+        .collect()
+}
+
+/// The adapter modules: their settings (the engine's depth convention and planes), their
+/// dispatch and bindings, and `ImportParams` as expressions.
+#[cfg(feature = "reflect")]
+fn adapters(structs: &[StructManifest]) -> Result<AdaptersManifest, String> {
+    use aokit_shaders::adapters::settings::{ADAPTERS, MODULES};
+    let t: &'static dyn aokit_shaders::technique::Registered = &ADAPTERS;
+    let mut constants = Vec::new();
+    for name in ["ViewParams", "ImportParams"] {
+        let s = structs.iter().find(|s| s.name == name).ok_or_else(|| format!("no struct {name}"))?;
+        for f in &s.fields {
+            let path = format!("{name}.{}", f.name);
+            let row =
+                t.constants().iter().find(|c| c.field == path).ok_or_else(|| format!("adapters: no row {path}"))?;
+            constants.push(ConstantManifest {
+                struct_name: name.into(),
+                field: f.name.clone(),
+                offset: f.offset,
+                ty: f.ty.clone(),
+                expr: crate::constants::expression(t, row.expr),
+                doc: row.formula.into(),
+            });
+        }
+    }
+    let modules = MODULES
+        .iter()
+        .map(|m| AdapterModuleManifest {
+            entry: m.entry.into(),
+            dispatch: m.dispatch.map(Into::into),
+            bindings: m.bindings.iter().map(|(slot, what)| (*slot, what.to_string())).collect(),
+            doc: m.doc.into(),
+        })
+        .collect();
+    Ok(AdaptersManifest { settings: settings_of(t), modules, constants })
+}
+
 /// The registry's techniques: settings, the graph at the defaults and every variant.
 #[cfg(feature = "reflect")]
 fn techniques() -> Result<Vec<TechniqueManifest>, String> {
-    use aokit_shaders::technique::Kind;
     let frame = reference_frame(aokit_shaders::glam::UVec2::new(1920, 1080), 64);
     let mut out = Vec::new();
     for t in aokit_shaders::techniques::TECHNIQUES {
         let configured = t.configure();
-        let defaults = configured.values();
-        let settings = t
-            .rows()
-            .into_iter()
-            .map(|r| {
-                let (kind, min, max, choices) = match r.kind {
-                    Kind::Count { min, max } => {
-                        ("count", Some(min as f64), (max < u32::MAX).then_some(max as f64), vec![])
-                    }
-                    Kind::Number { min, max } => {
-                        // Through the f32's shortest decimal form: 0.3, not 0.30000001192092896.
-                        let exact = |v: f32| v.to_string().parse::<f64>().expect("a number");
-                        ("number", Some(exact(min)), (max < f32::MAX).then_some(exact(max)), vec![])
-                    }
-                    Kind::Choice(names) => ("choice", None, None, names.iter().map(|n| n.to_string()).collect()),
-                };
-                SettingManifest {
-                    key: r.key.into(),
-                    flag: r.flag.map(Into::into),
-                    switch: r.switch.map(|(f, v)| (f.into(), v.into())),
-                    kind: kind.into(),
-                    min,
-                    max,
-                    choices,
-                    default: defaults.iter().find(|(k, _)| *k == r.key).map(|(_, v)| v.clone()).unwrap_or_default(),
-                    help: r.help.into(),
-                    sets: presets(*t, r.key, r.kind),
-                }
-            })
-            .collect();
+        let settings = settings_of(*t);
         let (structural, variants) = crate::graphs::variants(*t, &frame)?;
         let defaults = crate::graphs::publish(*t, &configured.graph(&frame)?)?;
         out.push(TechniqueManifest {

@@ -48,3 +48,37 @@ fn expressions_reproduce_the_builders_bit_for_bit() {
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
     assert!(compared > 0, "nothing compared");
 }
+
+/// The adapters' `ImportParams` from their expressions equal `AdapterSettings::params`, at the
+/// defaults and each setting at each tried value, on both frames.
+#[test]
+fn adapter_expressions_reproduce_the_import_params() {
+    use aokit_contract::constants::{evaluate_struct, inputs};
+    use aokit_shaders::adapters::settings::{ADAPTERS, AdapterSettings};
+    use aokit_shaders::technique::Registered;
+    let t: &'static dyn Registered = &ADAPTERS;
+    let mut checked = 0;
+    let defaults = t.configure();
+    let mut variants = vec![defaults.values()];
+    for (key, default) in defaults.values() {
+        let row = t.rows().into_iter().find(|r| r.key == key).unwrap();
+        for value in values_tried(row.kind, &default) {
+            let mut c = t.configure();
+            if c.set(key, &value).is_ok() {
+                variants.push(c.values());
+            }
+        }
+    }
+    for values in &variants {
+        let mut c = t.configure();
+        values.iter().for_each(|(k, v)| c.set(k, v).unwrap());
+        let settings = c.settings().downcast_ref::<AdapterSettings>().unwrap();
+        for frame in FrameInputs::examples() {
+            let built = settings.params(&frame.frame_desc());
+            let ours = evaluate_struct(t, "ImportParams", &inputs(&t.rows(), values, &frame).unwrap()).unwrap();
+            assert_eq!(ours, bytemuck::bytes_of(&built), "{values:?}");
+            checked += 1;
+        }
+    }
+    assert!(checked >= 10, "{checked}");
+}
