@@ -118,6 +118,46 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
             c += "    }\n";
         }
     }
+    // The adapters' ImportParams, against AdapterSettings::params.
+    {
+        use aokit_shaders::adapters::settings::{ADAPTERS, AdapterSettings};
+        use aokit_shaders::technique::Registered;
+        let t: &'static dyn Registered = &ADAPTERS;
+        let listed = manifest.adapters.as_ref().expect("the manifest's adapters");
+        let defaults = t.configure();
+        let mut variants = vec![defaults.values()];
+        for (key, default) in defaults.values() {
+            let row = t.rows().into_iter().find(|r| r.key == key).unwrap();
+            for value in values_tried(row.kind, &default) {
+                let mut c = t.configure();
+                if c.set(key, &value).is_ok() {
+                    variants.push(c.values());
+                }
+            }
+        }
+        for values in variants {
+            let mut configured = t.configure();
+            values.iter().for_each(|(k, val)| configured.set(k, val).unwrap());
+            let settings = configured.settings().downcast_ref::<AdapterSettings>().unwrap();
+            let bytes = bytemuck::bytes_of(&settings.params(&frame.frame_desc())).to_vec();
+            writeln!(c, "    {{\n        aokit_adapters_settings s = aokit_adapters_defaults();").unwrap();
+            for (key, value) in &values {
+                let row = listed.settings.iter().find(|s| s.key == *key).unwrap();
+                let literal = match row.kind.as_str() {
+                    "number" => c_float(value.parse().unwrap()),
+                    _ => format!("{}u", row.choices.iter().position(|c| c == value).unwrap()),
+                };
+                writeln!(c, "        s.{} = {literal};", key.replace('-', "_")).unwrap();
+            }
+            let what = format!("adapters:{values:?}:ImportParams").replace(['"', ' '], "");
+            writeln!(
+                c,
+                "        {{ aokit_ImportParams out; memset(&out, 0, sizeof out); aokit_adapters_ImportParams(&s, &f, 0u, &out); dump(\"{what}\", &out, sizeof out); }}\n    }}"
+            )
+            .unwrap();
+            expected.push(format!("{what} {}", bytes.iter().map(|b| format!("{b:02x}")).collect::<String>()));
+        }
+    }
     c += "    return 0;\n}\n";
     let dir = std::env::temp_dir().join(format!("aokit-c-constants-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();

@@ -869,4 +869,36 @@ static inline void aokit_groundtruth_GroundTruthFrame(const aokit_groundtruth_se
     out->_pad2 = (uint32_t)(INT64_C(0)); /* 0 */
 }
 
+/* adapters: ImportParams, the push constants of the import_depth, import_normals and export_ao_* modules */
+#define AOKIT_ADAPTERS_DEPTH_CONVENTION_STANDARD 0u
+#define AOKIT_ADAPTERS_DEPTH_CONVENTION_REVERSED 1u
+#define AOKIT_ADAPTERS_DEPTH_CONVENTION_REVERSED_INFINITE 2u
+#define AOKIT_ADAPTERS_DEPTH_CONVENTION_LINEAR 3u
+typedef struct aokit_adapters_settings {
+    uint32_t depth_convention; /* The engine depth image's convention (ImportParams.depth_convention: standard 0, reversed 1, reversed-infinite 2, linear 3) (index: standard, reversed, reversed-infinite, linear) */
+    float engine_near; /* The engine projection's near plane (view depth, world units) */
+    float engine_far; /* The engine projection's far plane (view depth, world units; unread for reversed-infinite) */
+} aokit_adapters_settings;
+static inline aokit_adapters_settings aokit_adapters_defaults(void) { aokit_adapters_settings s = {1u, 0.1f, 1000.0f}; return s; }
+/* ViewParams of adapters: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_adapters_ViewParams(const aokit_adapters_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_ViewParams *out) {
+    (void)s; (void)f; (void)pass;
+    out->res = aokit__vec2f((float)((int64_t)(f->w + 2u * f->g)), (float)((int64_t)(f->h + 2u * f->g))); /* vec2(W, H) */
+    out->tan_half_fov = aokit__vec2f((((((float)tan((double)(0.5f * f->fov_y)) * (float)((int64_t)(f->h + 2u * f->g))) / (float)((int64_t)f->h)) * (float)((int64_t)(f->w + 2u * f->g))) / (float)((int64_t)(f->h + 2u * f->g))), (((float)tan((double)(0.5f * f->fov_y)) * (float)((int64_t)(f->h + 2u * f->g))) / (float)((int64_t)f->h))); /* vec2(tan(0.5 * fov_y) * H / h * W / H, tan(0.5 * fov_y) * H / h) */
+    out->near = f->near_plane; /* near */
+    out->far = f->far_plane; /* far */
+    out->guard = (uint32_t)((int64_t)f->g); /* g */
+    out->_pad = (uint32_t)(INT64_C(0)); /* 0 */
+}
+/* ImportParams of adapters: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_adapters_ImportParams(const aokit_adapters_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_ImportParams *out) {
+    (void)s; (void)f; (void)pass;
+    aokit_adapters_ViewParams(s, f, pass, &out->view);
+    out->engine_size = aokit__uvec2((int64_t)f->w, (int64_t)f->h); /* uvec2(w, h) */
+    out->depth_convention = (uint32_t)((int64_t)s->depth_convention); /* index(`depth-convention`) */
+    out->near = s->engine_near; /* `engine-near` */
+    out->far = s->engine_far; /* `engine-far` */
+    out->_pad = (uint32_t)(INT64_C(0)); /* 0 */
+}
+
 #endif /* AOKIT_CONSTANTS_H */

@@ -214,7 +214,7 @@ class Page {
     return this.last;
   }
 
-  /** The constants the page computed, per pass and field, beside the manifest's formula. */
+  /** The constants the page computed, per pass and field, beside the manifest's expression. */
   showConstants(m, graph, constants) {
     const rows = [];
     // [path, struct, field, value] of every scalar or vector field, nested structs walked.
@@ -226,9 +226,9 @@ class Page {
       const struct = this.runner.module(entry).push_constants;
       if (!struct) return;
       for (const [path, owner, field, value] of flat(struct, readStruct(this.manifest, struct, bytes), struct)) {
-        const formula = (m.constants ?? []).find((c) => c.struct === owner && c.field === field)?.expr ?? '';
+        const expr = (m.constants ?? []).find((c) => c.struct === owner && c.field === field)?.expr ?? '';
         const text = (Array.isArray(value) ? value : [value]).map(shortest).join(', ');
-        rows.push(`<tr><td>${i} ${entry}</td><td>${path}</td><td>${text}</td><td>${formula.replace(/&/g, '&amp;').replace(/</g, '&lt;')}</td></tr>`);
+        rows.push(`<tr><td>${i} ${entry}</td><td>${path}</td><td>${text}</td><td>${expr.replace(/&/g, '&amp;').replace(/</g, '&lt;')}</td></tr>`);
       }
     });
     $('constants').innerHTML = `<tr><th>pass</th><th>field</th><th>value</th><th>manifest expression</th></tr>${rows.join('')}`;

@@ -1,4 +1,4 @@
-// aokit's contract in the browser: the manifest's formulas and struct layouts, every constants
+// aokit's contract in the browser: the manifest's graphs and struct layouts, every constants
 // struct computed from the manifest's expressions, and a technique's pass graph run through
 // WebGPU from the WGSL files. Nothing here names a technique.
 // Plain ES module, no build step, no dependencies. Formats: assets/README.md, docs/web.md.

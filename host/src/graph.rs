@@ -357,13 +357,25 @@ impl<G: Borrow<Gpu>> AoContext<G> {
     /// from a pool of the context's queue family). See the module documentation for the
     /// synchronisation contract.
     pub fn record(&mut self, cmd: vk::CommandBuffer, graph: &Graph, inputs: &GpuInputs) -> Result<(), GpuError> {
+        self.check_and_prepare(graph)?;
+        self.record_prepared(cmd, graph, inputs)
+    }
+
+    /// What can fail short of running out of memory, before anything is recorded: the graph's
+    /// consistency, the device's features, every pass's pipeline.
+    fn check_and_prepare(&mut self, graph: &Graph) -> Result<(), GpuError> {
         graph.validate().map_err(GpuError::Input)?;
         check_device(self.gpu(), graph)?;
-        self.frame += 1;
-        self.release_retired();
         for pass in &graph.passes {
             self.ensure_pipeline(pass)?;
         }
+        Ok(())
+    }
+
+    /// [`AoContext::record`] of a graph [`AoContext::check_and_prepare`] accepted.
+    fn record_prepared(&mut self, cmd: vk::CommandBuffer, graph: &Graph, inputs: &GpuInputs) -> Result<(), GpuError> {
+        self.frame += 1;
+        self.release_retired();
         let made = self.ensure_resources(graph)?;
         let key = self.set_key(graph, inputs)?;
         let bound = self.ensure_sets(graph, key, inputs)?;
@@ -484,12 +496,9 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         let mut full = if frame.normals.is_none() { graph.clone().with_normals_from_depth() } else { graph.clone() };
         // Diagnostic copies are for reports, not engine frames.
         full.snapshots.clear();
-        // What can fail short of running out of memory fails here, before anything is recorded.
-        full.validate().map_err(GpuError::Input)?;
-        check_device(self.gpu(), &full)?;
-        for pass in &full.passes {
-            self.ensure_pipeline(pass)?;
-        }
+        // What can fail short of running out of memory fails here, before anything is recorded
+        // (once per frame: the graph's own recording below does not check it again).
+        self.check_and_prepare(&full)?;
         if self.adapters.is_none() {
             self.adapters = Some(Adapters::new(self.gpu())?);
         }
@@ -534,7 +543,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             scene: frame.scene,
             raster: None,
         };
-        self.record(cmd, &full, &inputs)?;
+        self.record_prepared(cmd, &full, &inputs)?;
         let adapters = self.adapters.as_ref().expect("made above");
         let ao = &self.resources[graph.output].buffer;
         let gpu = self.owner.borrow();

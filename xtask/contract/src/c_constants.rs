@@ -7,7 +7,7 @@
 //! operation (compile with `-ffp-contract=off`, which `-std=c11` implies for GCC), `sin`, `cos`,
 //! `tan`, `pow` in `double` rounded once.
 
-use crate::manifest::{Manifest, SettingManifest, TechniqueManifest};
+use crate::manifest::{ConstantManifest, Manifest, SettingManifest};
 
 /// A translated expression: its C text and its type.
 #[derive(Clone, Debug)]
@@ -409,9 +409,18 @@ fn setting_field(s: &SettingManifest) -> (String, String) {
     }
 }
 
+/// What [`technique`] generates from: a technique's (or the adapters') name, summary, settings
+/// and constants.
+struct Source<'a> {
+    name: &'a str,
+    summary: &'a str,
+    settings: &'a [SettingManifest],
+    constants: &'a [ConstantManifest],
+}
+
 /// One technique's settings struct, defaults and constants functions.
-fn technique(t: &TechniqueManifest, manifest: &Manifest) -> Result<String, String> {
-    let p = format!("aokit_{}", ident(&t.name));
+fn technique(t: &Source, manifest: &Manifest) -> Result<String, String> {
+    let p = format!("aokit_{}", ident(t.name));
     let mut h = format!("/* {}: {} */\n", t.name, t.summary.replace("*/", "* /"));
     for s in t.settings.iter().filter(|s| s.kind == "choice") {
         for (i, c) in s.choices.iter().enumerate() {
@@ -419,7 +428,7 @@ fn technique(t: &TechniqueManifest, manifest: &Manifest) -> Result<String, Strin
         }
     }
     h += &format!("typedef struct {p}_settings {{\n");
-    for s in &t.settings {
+    for s in t.settings {
         let (ty, _) = setting_field(s);
         let what = if s.kind == "choice" { format!(" (index: {})", s.choices.join(", ")) } else { String::new() };
         h += &format!("    {ty} {}; /* {}{what} */\n", ident(&s.key), s.help.replace("*/", "* /"));
@@ -459,10 +468,10 @@ fn technique(t: &TechniqueManifest, manifest: &Manifest) -> Result<String, Strin
                 continue;
             }
             let value =
-                translate(&c.expr, &t.settings).map_err(|e| format!("{} {name}.{}: {e}", t.name, field.name))?;
+                translate(&c.expr, t.settings).map_err(|e| format!("{} {name}.{}: {e}", t.name, field.name))?;
             h += &format!(
                 "    {} /* {} */\n",
-                store(&format!("out->{}", field.name), &field.ty, &value, &t.settings, &c.expr)?,
+                store(&format!("out->{}", field.name), &field.ty, &value, t.settings, &c.expr)?,
                 c.expr.replace("*/", "* /")
             );
         }
@@ -492,7 +501,14 @@ impl Manifest {
         h += HELPERS;
         h += "\n";
         for t in &self.techniques {
-            h += &technique(t, self)?;
+            let source = Source { name: &t.name, summary: &t.summary, settings: &t.settings, constants: &t.constants };
+            h += &technique(&source, self)?;
+        }
+        if let Some(a) = &self.adapters {
+            let summary =
+                "ImportParams, the push constants of the import_depth, import_normals and export_ao_* modules";
+            let source = Source { name: "adapters", summary, settings: &a.settings, constants: &a.constants };
+            h += &technique(&source, self)?;
         }
         h += "#endif /* AOKIT_CONSTANTS_H */\n";
         Ok(h)
