@@ -248,8 +248,10 @@ fn infinite_thickness_is_xegtao_with_a_hard_cut() {
 }
 
 /// CPU ≡ Vulkan on Sponza (same CPU G-buffer) for each weighting and both sector rules: the
-/// final visibility within one 8-bit step (1/255) on ≥ 99.5 % of the inner image, MSE ≤ 1e-5
-/// (as XeGTAO's agreement test; only the order of float operations differs).
+/// final visibility within one 8-bit step (1/255) on ≥ 99.9 % of the inner image and MSE ≤ 1e-6
+/// (the contract's conformance bar). The angles go through `precise_acos`, one operation
+/// sequence on both back-ends; with the platforms' own acos (several ulp apart) a horizon on a
+/// sector edge flipped a whole sector (1/(32·slices) > 1/255) on 0.1–0.3 % of the pixels.
 #[test]
 fn vbao_vulkan_agrees_with_cpu() {
     let Some(vk) = common::vulkan() else { return };
@@ -266,7 +268,7 @@ fn vbao_vulkan_agrees_with_cpu() {
         let within = common::inner_within(&view, &c, &v, 1.0 / 255.0 + 1e-6);
         let mse = common::inner_mse(&view, &c, &v);
         eprintln!("weighting {weighting}, touch {touch}: within one step {:.3} %, MSE {mse:.2e}", 100.0 * within);
-        assert!(within >= 0.995 && mse <= 1e-5, "weighting {weighting}: {within}, {mse}");
+        assert!(within >= 0.999 && mse <= 1e-6, "weighting {weighting}: {within}, {mse}");
     }
     common::assert_validation_clean(&vk);
 }

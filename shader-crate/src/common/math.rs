@@ -101,6 +101,28 @@ pub fn fast_acos<L: Lanes>(x: L) -> L {
     L::select(x.ge(L::splat(0.0)), r, -r + 3.141_593)
 }
 
+/// `acos(x)` for `x ∈ [−1, 1]` as one fixed sequence of binary32 operations, so every back-end
+/// computes the same value (the platforms' own `acos` differ by several ulp: libm, `wide`'s
+/// lanes, a GPU driver's lowering): Abramowitz & Stegun 4.4.46,
+/// `acos(a) = sqrt(1 − a)·(c0 + c1·a + … + c7·a⁷)` for `a = |x|` (|error| ≤ 2·10⁻⁸ rad in exact
+/// arithmetic; ≤ 5·10⁻⁷ rad in binary32, `tests/kernel_math.rs`), Horner order, and
+/// `π − acos(|x|)` for negative x.
+#[inline]
+#[allow(clippy::approx_constant)] // c0 is A&S's 1.5707963050, not π/2 rounded
+pub fn precise_acos<L: Lanes>(x: L) -> L {
+    let a = x.abs();
+    // Horner, written out (rust-gpu compiles no slice iterators).
+    let p = ((((((a * -0.001_262_491_1 + 0.006_670_09) * a - 0.017_088_126) * a + 0.030_891_88) * a - 0.050_174_303)
+        * a
+        + 0.088_978_99)
+        * a
+        - 0.214_598_8)
+        * a
+        + 1.570_796_3;
+    let r = p * (-a + 1.0).sqrt();
+    L::select(x.ge(L::splat(0.0)), r, -r + core::f32::consts::PI)
+}
+
 /// `a + (b − a)·t` (HLSL `lerp`).
 #[inline]
 pub fn lerp<L: Lanes>(a: L, b: L, t: L) -> L {

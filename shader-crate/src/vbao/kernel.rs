@@ -9,7 +9,7 @@ use spirv_std::num_traits::Float;
 use super::{RULE_TOUCH, VbaoParams, WEIGHT_COSINE_BLENDER, WEIGHT_COSINE_EXACT};
 use crate::common::denoise_terms::store_term;
 use crate::common::lanes::{LaneVec3, Lanes};
-use crate::common::math::{ceil, clamp, sat};
+use crate::common::math::{ceil, clamp, precise_acos, sat};
 use crate::glam::UVec2;
 use crate::gtao::GtaoPixel;
 use crate::gtao::main_pass::{
@@ -69,7 +69,7 @@ pub fn sector_coordinate<L: Lanes>(theta: L, gamma: L) -> L {
 /// The mask bits of one depth sample `delta_f = Q − P` on the slice side with sign `side` (+1
 /// for side 0, −1 for side 1), spec vbao §2: the front angle, and the back angle of the sample
 /// pushed `thickness` away from the camera along the centre pixel's view vector `v`, mapped to
-/// the half-circle around the normal `n` and ordered into `[lo, hi]` (exact acos, spec vbao
+/// the half-circle around the normal `n` and ordered into `[lo, hi]` (precise acos, spec vbao
 /// §2.3 \[OWN\]).
 ///
 /// \[aokit\] Each sample is measured in its own slice, the plane through v and the sample, with
@@ -89,7 +89,7 @@ pub fn sample_bits<L: Lanes>(delta_f: L::V3, v: L::V3, n: L::V3, side: f32, thic
     let projected = n - axis * n.dot(axis);
     let len = projected.length();
     let cos_n = sat(projected.dot(v) / len);
-    let angle = cos_n.acos();
+    let angle = precise_acos(cos_n);
     let gamma = L::select(toward.dot(projected).lt(zero), -angle, angle);
     // A normal off by ε turns the slice's projected normal by up to ε/L.
     let tolerance = (L::splat(EDGE_TOLERANCE) / len).min(L::splat(MAX_EDGE_TOLERANCE));
@@ -103,10 +103,10 @@ pub fn sample_bits<L: Lanes>(delta_f: L::V3, v: L::V3, n: L::V3, side: f32, thic
     L::index_select(t_len.le(zero), L::index_splat(0), bits)
 }
 
-/// The angle between `delta` and the unit vector `v`, exact acos.
+/// The angle between `delta` and the unit vector `v` ([`precise_acos`]).
 #[inline]
 fn angle_to<L: Lanes>(delta: L::V3, v: L::V3) -> L {
-    clamp(delta.normalize().dot(v), -1.0, 1.0).acos()
+    precise_acos(clamp(delta.normalize().dot(v), -1.0, 1.0))
 }
 
 /// The signed cosine-weighted arc from 0 to θ, `A(θ) = sgn(θ)·a(θ)` with XeGTAO's `a`: an
@@ -221,9 +221,9 @@ pub fn vbao_visibility<L: Lanes>(params: &VbaoParams, mips: &[f32], px: &PixelSe
     let mut s = 0;
     while s < slices {
         let mut sl = slice_frame(g, px, s);
-        // γ with the exact acos: the fast one errs up to 0.055 rad (0.56 sector), which sets
+        // γ with the precise acos: the fast one errs up to 0.055 rad (0.56 sector), which sets
         // sectors on a plane (spec vbao §2.3, artefact 1 of vbao §5).
-        sl.gamma = sl.sign * sl.cos_n.acos();
+        sl.gamma = sl.sign * precise_acos(sl.cos_n);
         let mask = slice_mask(params, mips, px, &sl, s);
         if params.weighting == WEIGHT_COSINE_EXACT {
             sum = sum + projected_length_fudge(sl.len) * free_cosine_weight(mask, sl.gamma, sl.cos_n);

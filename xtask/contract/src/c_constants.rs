@@ -467,8 +467,7 @@ fn technique(t: &Source, manifest: &Manifest) -> Result<String, String> {
                 h += &format!("    {p}_{}(s, f, pass, &out->{});\n", field.ty, field.name);
                 continue;
             }
-            let value =
-                translate(&c.expr, t.settings).map_err(|e| format!("{} {name}.{}: {e}", t.name, field.name))?;
+            let value = translate(&c.expr, t.settings).map_err(|e| format!("{} {name}.{}: {e}", t.name, field.name))?;
             h += &format!(
                 "    {} /* {} */\n",
                 store(&format!("out->{}", field.name), &field.ty, &value, t.settings, &c.expr)?,
