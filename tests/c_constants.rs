@@ -7,7 +7,7 @@
 
 use aokit_contract::constants::FrameInputs;
 use aokit_contract::manifest::Manifest;
-use aokit_contract::manifest::constants::values_tried;
+use aokit_contract::manifest::constants::settings_tried;
 use aokit_shaders::graph::{Init, PassKind};
 use aokit_shaders::techniques::TECHNIQUES;
 use std::fmt::Write;
@@ -60,17 +60,7 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
     let mut expected = Vec::new();
     for &t in TECHNIQUES {
         let listed = manifest.techniques.iter().find(|m| m.name == t.name()).unwrap();
-        let defaults = t.configure();
-        let mut variants = vec![defaults.values()];
-        for (key, default) in defaults.values() {
-            let row = t.rows().into_iter().find(|r| r.key == key).unwrap();
-            for value in values_tried(row.kind, &default) {
-                let mut c = t.configure();
-                if c.set(key, &value).is_ok() && c.validate().is_ok() {
-                    variants.push(c.values());
-                }
-            }
-        }
+        let variants = settings_tried(t);
         let p = format!("aokit_{}", t.name().replace('-', "_"));
         for values in variants {
             let mut configured = t.configure();
@@ -124,17 +114,7 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
         use aokit_shaders::technique::Registered;
         let t: &'static dyn Registered = &ADAPTERS;
         let listed = manifest.adapters.as_ref().expect("the manifest's adapters");
-        let defaults = t.configure();
-        let mut variants = vec![defaults.values()];
-        for (key, default) in defaults.values() {
-            let row = t.rows().into_iter().find(|r| r.key == key).unwrap();
-            for value in values_tried(row.kind, &default) {
-                let mut c = t.configure();
-                if c.set(key, &value).is_ok() {
-                    variants.push(c.values());
-                }
-            }
-        }
+        let variants = settings_tried(t);
         for values in variants {
             let mut configured = t.configure();
             values.iter().for_each(|(k, val)| configured.set(k, val).unwrap());

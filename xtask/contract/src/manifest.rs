@@ -1017,6 +1017,24 @@ pub mod constants {
         out
     }
 
+    /// `t`'s settings (`(key, value)`, as `Configured::values`) at its defaults and with each
+    /// setting at each of [`values_tried`], one at a time, where the technique accepts them:
+    /// the settings every check of the published contract runs through.
+    pub fn settings_tried(t: &'static dyn Registered) -> Vec<Vec<(&'static str, String)>> {
+        let defaults = t.configure();
+        let mut out = vec![defaults.values()];
+        for (key, default) in defaults.values() {
+            let row = t.rows().into_iter().find(|r| r.key == key).expect("a row per value");
+            for value in values_tried(row.kind, &default) {
+                let mut c = t.configure();
+                if c.set(key, &value).is_ok() && c.validate().is_ok() {
+                    out.push(c.values());
+                }
+            }
+        }
+        out
+    }
+
     /// The constants structs `t` uses at its defaults and with each setting at each of
     /// [`values_tried`] (one at a time; values its checks refuse are skipped), for the frame
     /// `super::reference_frame`.

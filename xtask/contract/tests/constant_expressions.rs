@@ -6,7 +6,7 @@
 //! without its expression, fails here naming the struct and field.
 
 use aokit_contract::constants::{FrameInputs, check};
-use aokit_contract::manifest::constants::values_tried;
+use aokit_contract::manifest::constants::settings_tried;
 use aokit_shaders::techniques::TECHNIQUES;
 
 #[test]
@@ -14,17 +14,7 @@ fn expressions_reproduce_the_builders_bit_for_bit() {
     let mut failures = Vec::new();
     let mut compared = 0;
     for &t in TECHNIQUES {
-        let defaults = t.configure();
-        let mut variants = vec![defaults.values()];
-        for (key, default) in defaults.values() {
-            let row = t.rows().into_iter().find(|r| r.key == key).expect("a row per value");
-            for value in values_tried(row.kind, &default) {
-                let mut c = t.configure();
-                if c.set(key, &value).is_ok() && c.validate().is_ok() {
-                    variants.push(c.values());
-                }
-            }
-        }
+        let variants = settings_tried(t);
         let mut missing = None;
         for values in &variants {
             let mut c = t.configure();
@@ -58,17 +48,7 @@ fn adapter_expressions_reproduce_the_import_params() {
     use aokit_shaders::technique::Registered;
     let t: &'static dyn Registered = &ADAPTERS;
     let mut checked = 0;
-    let defaults = t.configure();
-    let mut variants = vec![defaults.values()];
-    for (key, default) in defaults.values() {
-        let row = t.rows().into_iter().find(|r| r.key == key).unwrap();
-        for value in values_tried(row.kind, &default) {
-            let mut c = t.configure();
-            if c.set(key, &value).is_ok() {
-                variants.push(c.values());
-            }
-        }
-    }
+    let variants = settings_tried(t);
     for values in &variants {
         let mut c = t.configure();
         values.iter().for_each(|(k, v)| c.set(k, v).unwrap());

@@ -9,7 +9,7 @@
 use aokit_contract::constants::{FrameInputs, inputs};
 use aokit_contract::expr::{Value, eval};
 use aokit_contract::graphs::variants;
-use aokit_contract::manifest::constants::values_tried;
+use aokit_contract::manifest::constants::settings_tried;
 use aokit_contract::manifest::tables;
 use aokit_shaders::graph::Init;
 use aokit_shaders::techniques::TECHNIQUES;
@@ -30,17 +30,7 @@ fn published_graphs_are_the_declarations_at_every_tried_setting() {
     let mut formulas_used = std::collections::BTreeSet::new();
     for &t in TECHNIQUES {
         let (structural, published) = variants(t, &reference).unwrap();
-        let defaults = t.configure();
-        let mut settings = vec![defaults.values()];
-        for (key, default) in defaults.values() {
-            let row = t.rows().into_iter().find(|r| r.key == key).unwrap();
-            for value in values_tried(row.kind, &default) {
-                let mut c = t.configure();
-                if c.set(key, &value).is_ok() && c.validate().is_ok() {
-                    settings.push(c.values());
-                }
-            }
-        }
+        let settings = settings_tried(t);
         for values in &settings {
             let mut c = t.configure();
             values.iter().for_each(|(k, v)| c.set(k, v).unwrap());
