@@ -5,10 +5,10 @@
 //! passes), on a frame with odd sizes, and prints them; they must equal the graph's bytes.
 //! Needs a C compiler (gcc: CI has one; elsewhere a missing one skips by name).
 
-use aokit_contract::constants::FrameInputs;
+use aokit_contract::constants::{FrameInputs, push_struct, record_struct};
 use aokit_contract::manifest::Manifest;
 use aokit_contract::manifest::constants::settings_tried;
-use aokit_shaders::graph::{Init, PassKind};
+use aokit_shaders::graph::Init;
 use aokit_shaders::techniques::TECHNIQUES;
 use std::fmt::Write;
 use std::path::PathBuf;
@@ -78,19 +78,13 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
             }
             for (i, pass) in graph.passes.iter().enumerate() {
                 let index = graph.passes[..i].iter().filter(|q| q.entry() == pass.entry()).count();
-                let kernels = match pass.kind {
-                    PassKind::Raster { vertex } => vec![vertex, pass.kernel],
-                    _ => pass.declared_by(),
-                };
                 let mut blocks = Vec::new();
-                if let Some((name, _)) = kernels.iter().find_map(|k| k.push_constants) {
+                if let Some(name) = push_struct(pass) {
                     blocks.push((name, index, pass.push_constants.clone()));
                 }
                 for b in &pass.bindings {
                     let Some(Init::Data(words)) = graph.resource(b.resource).map(|r| &r.init) else { continue };
-                    let ty = kernels.iter().find_map(|k| k.binding(b.slot)).map(|d| d.rust_type).unwrap_or("");
-                    let name = ty.trim_start_matches('[').trim_end_matches(']');
-                    if listed.constants.iter().any(|c| c.struct_name == name) {
+                    if let Some(name) = record_struct(pass, b.slot) {
                         blocks.push((name, 0, words.iter().flat_map(|w| w.to_le_bytes()).collect()));
                     }
                 }

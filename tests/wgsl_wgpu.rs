@@ -171,9 +171,7 @@ fn run_on_wgpu(
 
 /// The variant of `t` whose `when` holds `values`.
 fn variant_of<'a>(t: &'a TechniqueManifest, values: &[(&str, String)]) -> &'a VariantManifest {
-    let value = |k: &str| values.iter().find(|(vk, _)| *vk == k).map(|(_, v)| v.as_str());
-    let hits: Vec<_> =
-        t.variants.iter().filter(|v| v.when.iter().any(|w| w.iter().all(|(k, x)| value(k) == Some(x)))).collect();
+    let hits = aokit_contract::graphs::matching(&t.variants, values);
     assert_eq!(hits.len(), 1, "{}: {} variants match {values:?}", t.name, hits.len());
     hits[0]
 }

@@ -7,7 +7,7 @@ use crate::expr::{self, Inputs, Value};
 use aokit_shaders::common::camera::Camera;
 use aokit_shaders::contract::{StructLayout, shared_structs};
 use aokit_shaders::glam::{UVec2, Vec3};
-use aokit_shaders::graph::{FrameDesc, Graph, Init, PassKind};
+use aokit_shaders::graph::{FrameDesc, Graph, Init, Pass};
 use aokit_shaders::technique::{Kind, Registered, Row};
 
 /// What an engine knows of a frame: the camera as eye/target/up and vertical field of view of
@@ -202,6 +202,18 @@ fn write_struct(
     Ok(())
 }
 
+/// The push-constant struct of `pass`: the first of its kernels that declares one (a raster
+/// pass's is its vertex module's).
+pub fn push_struct(pass: &Pass) -> Option<&'static str> {
+    pass.declared_by().iter().find_map(|k| k.push_constants).map(|(name, _)| name)
+}
+
+/// The shared struct whose records `pass`'s binding at `slot` holds (`[SvaoFrame]` →
+/// `SvaoFrame`), from the kernels' declarations; `None` for plain elements.
+pub fn record_struct(pass: &Pass, slot: u32) -> Option<&'static str> {
+    pass.declared_by().iter().find_map(|k| k.binding(slot)).and_then(|d| (d.element)()).map(|s| s.name)
+}
+
 /// One comparison of [`check`]: a struct the Rust builder wrote and the expressions' bytes.
 #[derive(Debug)]
 pub struct Checked {
@@ -226,10 +238,6 @@ pub fn check(
     for (i, pass) in graph.passes.iter().enumerate() {
         let index = graph.passes[..i].iter().filter(|p| p.entry() == pass.entry()).count();
         inputs.names.insert("pass".into(), Value::Int(index as i64));
-        let kernels = match pass.kind {
-            PassKind::Raster { vertex } => vec![vertex, pass.kernel],
-            _ => pass.declared_by(),
-        };
         let mut compare = |name: &str, built: &[u8], what: String| -> Result<(), String> {
             let ours = evaluate_struct(t, name, &inputs).map_err(|e| format!("{what}: {e}"))?;
             if ours != built[..ours.len().min(built.len())] || built.len() < ours.len() {
@@ -239,14 +247,12 @@ pub fn check(
             checked.push(Checked { pass: format!("{} {}", pass.label, pass.entry()), structure: name.into() });
             Ok(())
         };
-        if let Some((name, _)) = kernels.iter().find_map(|k| k.push_constants) {
+        if let Some(name) = push_struct(pass) {
             compare(name, &pass.push_constants, format!("pass {i} ({}) push constants {name}", pass.entry()))?;
         }
         for b in &pass.bindings {
             let Some(Init::Data(words)) = graph.resource(b.resource).map(|r| &r.init) else { continue };
-            let element = kernels.iter().find_map(|k| k.binding(b.slot)).map(|d| d.rust_type);
-            let name = element.unwrap_or("").trim_start_matches('[').trim_end_matches(']');
-            if layouts.iter().any(|s| s.name == name) {
+            if let Some(name) = record_struct(pass, b.slot) {
                 let what = format!("pass {i} ({}) record {} ({name})", pass.entry(), b.resource);
                 compare(name, bytemuck::cast_slice(words), what)?;
             }

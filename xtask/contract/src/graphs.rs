@@ -5,10 +5,9 @@
 //! settings. Generation fails where a setting changes a graph in a way the published form does
 //! not express.
 
-use crate::constants::expression;
+use crate::constants::{expression, record_struct};
 use crate::manifest::constants::values_tried;
 use crate::manifest::{ContentsManifest, PassManifest, ResourceManifest, VariantManifest};
-use aokit_shaders::contract::shared_structs;
 use aokit_shaders::graph::{Access, Elem, FrameDesc, Graph, Init, Lifetime, PassKind};
 use aokit_shaders::technique::{Configured, Kind, Registered};
 use std::collections::BTreeMap;
@@ -23,7 +22,6 @@ fn formula(t: &dyn Registered, of: &str) -> Option<String> {
 
 /// `graph` (of technique `t`) in the manifest's form, `when` empty.
 pub fn publish(t: &dyn Registered, graph: &Graph) -> Result<VariantManifest, String> {
-    let structs = shared_structs();
     let mut resources = Vec::new();
     for r in &graph.resources {
         let contents = match &r.init {
@@ -31,13 +29,7 @@ pub fn publish(t: &dyn Registered, graph: &Graph) -> Result<VariantManifest, Str
                 // A record: bound where a module's binding holds a shared struct.
                 let record = graph.passes.iter().find_map(|p| {
                     let b = p.bindings.iter().find(|b| b.resource == r.name)?;
-                    let kernels = match p.kind {
-                        PassKind::Raster { vertex } => vec![vertex, p.kernel],
-                        _ => p.declared_by(),
-                    };
-                    let ty = kernels.iter().find_map(|k| k.binding(b.slot)).map(|d| d.rust_type)?;
-                    let name = ty.trim_start_matches('[').trim_end_matches(']');
-                    structs.iter().any(|s| s.name == name).then(|| name.to_string())
+                    record_struct(p, b.slot).map(String::from)
                 });
                 let part = |p: &str| formula(t, &format!("{}.{p}", r.name));
                 let contents =
@@ -113,6 +105,13 @@ pub fn publish(t: &dyn Registered, graph: &Graph) -> Result<VariantManifest, Str
         passes,
         output: graph.output.into(),
     })
+}
+
+/// The variants whose `when` holds an entry that `values` (`(key, value)` of a technique's
+/// settings, as `Configured::values`) match: exactly one for legal settings.
+pub fn matching<'a>(variants: &'a [VariantManifest], values: &[(&str, String)]) -> Vec<&'a VariantManifest> {
+    let value = |k: &str| values.iter().find(|(vk, _)| *vk == k).map(|(_, v)| v.as_str());
+    variants.iter().filter(|v| v.when.iter().any(|w| w.iter().all(|(k, x)| value(k) == Some(x)))).collect()
 }
 
 /// `t` with `values` set in order (`None`: refused or not runnable).

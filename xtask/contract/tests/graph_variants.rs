@@ -8,7 +8,7 @@
 
 use aokit_contract::constants::{FrameInputs, inputs};
 use aokit_contract::expr::{Value, eval};
-use aokit_contract::graphs::variants;
+use aokit_contract::graphs::{matching, variants};
 use aokit_contract::manifest::constants::settings_tried;
 use aokit_contract::manifest::tables;
 use aokit_shaders::graph::Init;
@@ -30,18 +30,20 @@ fn published_graphs_are_the_declarations_at_every_tried_setting() {
     let mut formulas_used = std::collections::BTreeSet::new();
     for &t in TECHNIQUES {
         let (structural, published) = variants(t, &reference).unwrap();
+        // Every variant's `when` names exactly the structural settings.
+        assert!(
+            published
+                .iter()
+                .flat_map(|v| &v.when)
+                .all(|w| w.len() == structural.len() && structural.iter().all(|k| w.contains_key(k))),
+            "{}: a variant's `when` names other settings than {structural:?}",
+            t.name()
+        );
         let settings = settings_tried(t);
         for values in &settings {
             let mut c = t.configure();
             values.iter().for_each(|(k, v)| c.set(k, v).unwrap());
-            let matching: Vec<_> = published
-                .iter()
-                .filter(|v| {
-                    v.when.iter().any(|w| {
-                        structural.iter().all(|k| values.iter().any(|(vk, vv)| vk == k && w.get(k) == Some(vv)))
-                    })
-                })
-                .collect();
+            let matching = matching(&published, values);
             let [variant] = matching[..] else {
                 failures.push(format!("{} {values:?}: {} variants match", t.name(), matching.len()));
                 continue;
