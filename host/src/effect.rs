@@ -2,7 +2,8 @@
 
 use crate::graph::{AoContext, EngineFrame, check_device};
 use crate::{AoImage, EngineImage, ExternalDevice, Gpu, GpuError, SceneAccel};
-use aokit_shaders::adapters::{DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_REVERSED_INFINITE, DEPTH_STANDARD, ImportParams};
+use aokit_shaders::adapters::settings::AdapterSettings;
+use aokit_shaders::adapters::{DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_REVERSED_INFINITE, DEPTH_STANDARD};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_shaders::common::camera::{Camera, ViewParams};
 use aokit_shaders::glam::{Mat4, UVec2, Vec2, vec2};
@@ -434,14 +435,10 @@ impl AoEffect {
                 "{name} reads a depth-peeled second layer: give AoFrame::second_depth"
             )));
         }
-        let import = ImportParams {
-            view: camera.view,
-            engine_size: size,
-            depth_convention: frame.depth_convention.code(),
-            near: derived.near,
-            far: derived.far,
-            _pad: 0,
-        };
+        // The builder whose expressions the manifest publishes (`adapters.constants`).
+        let engine =
+            AdapterSettings { convention: frame.depth_convention.code(), near: derived.near, far: derived.far };
+        let import = engine.params(&desc);
         let engine_frame = EngineFrame {
             depth: frame.depth,
             normals: frame.normals,
