@@ -3,7 +3,10 @@
 //! technique at its defaults and with each setting at each tried value, every push-constant
 //! block and record the technique's graph carries (each pass with its index among its module's
 //! passes), on a frame with odd sizes, and prints them; they must equal the graph's bytes.
-//! Needs a C compiler (gcc: CI has one; elsewhere a missing one skips by name).
+//! Needs a C and a C++ compiler (gcc, g++; a missing one fails unless the run allows its skip:
+//! tests/common/skip.rs).
+
+mod common;
 
 use aokit_contract::constants::{FrameInputs, push_struct, record_struct};
 use aokit_contract::manifest::Manifest;
@@ -28,9 +31,7 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
     let manifest = Manifest::committed();
     let header = std::fs::read_to_string(root().join("assets/include/aokit_constants.h")).unwrap();
     assert_eq!(header, manifest.c_constants_header().unwrap(), "aokit_constants.h is stale: run the xtask");
-    if !Command::new("cc").arg("--version").output().is_ok_and(|o| o.status.success()) {
-        assert!(std::env::var_os("CI").is_none(), "CI must have a C compiler");
-        eprintln!("SKIPPED generated_c_constants_equal_the_rust_builders_bytes: no `cc`");
+    if common::skip::without_tool(common::skip::C_COMPILER, "cc", "apt-get install gcc") {
         return;
     }
     let frame = FrameInputs::examples()[1];
@@ -164,14 +165,14 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
     assert!(expected.len() > 500, "{} blocks", expected.len());
     // C++ engines include it too (C++11: no hexadecimal float literals, designated initializers).
     std::fs::write(dir.join("check.cpp"), "#include \"aokit_constants.h\"\nint main() { return 0; }\n").unwrap();
-    match Command::new("c++")
-        .args(["-std=c++11", "-Wall", "-Wextra", "-Werror", "-fsyntax-only", "-I"])
-        .arg(root().join("assets/include"))
-        .arg(dir.join("check.cpp"))
-        .output()
-    {
-        Ok(out) => assert!(out.status.success(), "aokit_constants.h in C++:\n{}", String::from_utf8_lossy(&out.stderr)),
-        Err(e) => assert!(std::env::var_os("CI").is_none(), "no c++ in CI: {e}"),
+    if !common::skip::without_tool(common::skip::CXX_COMPILER, "c++", "apt-get install g++") {
+        let out = Command::new("c++")
+            .args(["-std=c++11", "-Wall", "-Wextra", "-Werror", "-fsyntax-only", "-I"])
+            .arg(root().join("assets/include"))
+            .arg(dir.join("check.cpp"))
+            .output()
+            .unwrap();
+        assert!(out.status.success(), "aokit_constants.h in C++:\n{}", String::from_utf8_lossy(&out.stderr));
     }
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -1,6 +1,6 @@
 //! `aokit compare`'s report: the JSON contract, metrics that agree with `aokit::metrics`, the PNGs,
 //! and the HTML page rendered by headless Chromium (Debian `chromium`; the test fails without it
-//! unless AOKIT_SKIP_CHROMIUM=1).
+//! unless the run allows its skip: tests/common/skip.rs).
 
 mod common;
 
@@ -189,23 +189,12 @@ fn quality_cost_plot_holds_one_point_per_technique_at_the_json_numbers() {
     assert!(spread(&xs) > 100.0 && spread(&ys) > 100.0, "{} {}", spread(&xs), spread(&ys));
 }
 
-fn chromium() -> Option<&'static str> {
-    ["chromium", "chromium-browser", "google-chrome"]
-        .into_iter()
-        .find(|c| Command::new(c).arg("--version").output().is_ok_and(|o| o.status.success()))
-}
-
 /// The HTML page, rendered by headless Chromium: its DOM holds the metrics table with the
 /// report's numbers, and the screenshot shows the AO images (grey) and the signed differences
 /// (red and blue), i.e. the PNGs loaded.
 #[test]
 fn html_report_renders_in_headless_chromium() {
-    if std::env::var_os("AOKIT_SKIP_CHROMIUM").is_some_and(|v| v == "1") {
-        eprintln!("AOKIT_SKIP_CHROMIUM=1: skipping the screenshot test");
-        return;
-    }
-    let browser =
-        chromium().expect("headless Chromium is required (apt-get install chromium); AOKIT_SKIP_CHROMIUM=1 skips");
+    let Some(browser) = common::skip::chromium() else { return };
     let dir = scratch("html");
     let (r, _, _, _) = report(&dir);
     let page = r.write_html(&dir, &dir).unwrap();

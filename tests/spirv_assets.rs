@@ -1,6 +1,8 @@
 //! The committed SPIR-V is fresh against the shader sources, valid (spirv-val, naga) and
 //! described correctly by its manifest. Needs no nightly; needs spirv-val (package spirv-tools)
-//! unless AOKIT_SKIP_SPIRV_VAL=1.
+//! unless the run allows its skip (tests/common/skip.rs).
+
+mod common;
 
 use aokit_contract::manifest::{Manifest, reflect};
 use aokit_contract::spirv_hash::shader_source_hash;
@@ -52,19 +54,12 @@ fn manifest_matches_naga_reflection_of_every_module() {
 }
 
 /// Needs `spirv-val` from the spirv-tools package (Debian/Ubuntu: `apt-get install spirv-tools`):
-/// without it the test fails, unless AOKIT_SKIP_SPIRV_VAL=1 says to skip.
+/// without it the test fails, unless the run allows its skip (tests/common/skip.rs).
 #[test]
 fn every_module_passes_spirv_val() {
-    if std::env::var_os("AOKIT_SKIP_SPIRV_VAL").is_some_and(|v| v == "1") {
-        eprintln!("AOKIT_SKIP_SPIRV_VAL=1: skipping spirv-val");
+    if common::skip::without_tool(common::skip::SPIRV_VAL, "spirv-val", "apt-get install spirv-tools") {
         return;
     }
-    let available = std::process::Command::new("spirv-val").arg("--version").output().is_ok_and(|o| o.status.success());
-    assert!(
-        available,
-        "spirv-val not found: install the spirv-tools package (apt-get install spirv-tools), \
-         or set AOKIT_SKIP_SPIRV_VAL=1 to skip this test"
-    );
     for m in &Manifest::committed().modules {
         let path = root().join("assets/spirv").join(&m.file);
         let out =

@@ -5,7 +5,9 @@
 //! constants it computed; this test compares the AO with cpu-sim on the same exported G-buffer
 //! (the page's own reference files too) and the constants with the graph's push constants, then
 //! checks the screenshot Chromium took once the page was done. Debian `chromium`; the test
-//! fails without it unless AOKIT_SKIP_CHROMIUM=1.
+//! fails without it unless the run allows its skip (tests/common/skip.rs).
+
+mod common;
 
 use aokit::output::crop_inner;
 use aokit::technique::Technique;
@@ -45,12 +47,6 @@ const ALSO: [&str; 16] = [
 
 /// The scenes the page runs on.
 const SCENES: [&str; 2] = ["sponza", "kitchen"];
-
-fn chromium() -> Option<&'static str> {
-    ["chromium", "chromium-browser", "google-chrome"]
-        .into_iter()
-        .find(|c| Command::new(c).arg("--version").output().is_ok_and(|o| o.status.success()))
-}
 
 fn is_root() -> bool {
     std::fs::read_to_string("/proc/self/status")
@@ -203,12 +199,7 @@ fn words<T: bytemuck::Pod>(path: &Path) -> Vec<T> {
 
 #[test]
 fn web_page_runs_the_screen_space_techniques_in_chromium_and_agrees_with_cpu_sim() {
-    if std::env::var_os("AOKIT_SKIP_CHROMIUM").is_some_and(|v| v == "1") {
-        eprintln!("AOKIT_SKIP_CHROMIUM=1: skipping the WebGPU page test");
-        return;
-    }
-    let browser =
-        chromium().expect("headless Chromium is required (apt-get install chromium); AOKIT_SKIP_CHROMIUM=1 skips");
+    let Some(browser) = common::skip::chromium() else { return };
     for scene in SCENES {
         run_page(browser, scene);
     }

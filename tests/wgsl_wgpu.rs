@@ -47,16 +47,20 @@ const RUNS: [&str; 21] = [
     "raymarch:directions=61:kernel=vogel",
 ];
 
-/// wgpu's device on the Vulkan back-end; `None` when AOKIT_SKIP_VULKAN=1.
+/// wgpu's device on the Vulkan back-end; `None` when there is none and the run allows the skip.
 fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
-    if std::env::var_os("AOKIT_SKIP_VULKAN").is_some_and(|v| v == "1") {
-        eprintln!("AOKIT_SKIP_VULKAN=1: skipping the wgpu test");
-        return None;
-    }
     let instance =
         wgpu::Instance::new(&wgpu::InstanceDescriptor { backends: wgpu::Backends::VULKAN, ..Default::default() });
-    let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
-        .expect("a Vulkan adapter for wgpu (lavapipe: apt-get install mesa-vulkan-drivers)");
+    let adapter = match pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default())) {
+        Ok(adapter) => adapter,
+        Err(e) => {
+            common::skip::cannot_run(
+                common::skip::VULKAN,
+                &format!("no Vulkan adapter for wgpu ({e}; apt-get install mesa-vulkan-drivers)"),
+            );
+            return None;
+        }
+    };
     let name = adapter.get_info().name;
     // WebGPU's default limits: what a browser gives.
     let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default())).unwrap();

@@ -4,6 +4,7 @@
 //! game engine would make them.
 #![allow(dead_code)]
 
+use super::skip;
 use aokit_vulkan::ExternalDevice;
 use ash::{ext, khr, vk};
 use std::ffi::{CStr, c_void};
@@ -42,8 +43,6 @@ pub enum RayTracing {
 pub struct EngineNeeds {
     /// The application name the instance is created with.
     pub app_name: &'static CStr,
-    /// Synchronization validation as well as the layer's core validation.
-    pub sync_validation: bool,
     /// What the queue family must support (besides timestamps).
     pub queue_flags: vk::QueueFlags,
     /// The raster features aokit can use: dynamic rendering, and maintenance4 and fragment stores
@@ -72,19 +71,20 @@ pub struct EngineDevice {
 impl EngineDevice {
     /// The engine's instance (validation layer + messenger for warnings and errors) and device
     /// on lavapipe (or the first Vulkan 1.3 device when there is no lavapipe) with `needs`.
-    /// `None` when AOKIT_SKIP_VULKAN=1.
+    /// `None` when there is no such device and the run allows the skip ([`skip::cannot_run`]).
     pub fn new(needs: &EngineNeeds) -> Option<EngineDevice> {
-        if std::env::var_os("AOKIT_SKIP_VULKAN").is_some_and(|v| v == "1") {
-            eprintln!("AOKIT_SKIP_VULKAN=1: skipping a Vulkan test");
-            return None;
+        let cannot_run = |reason: String| {
+            skip::cannot_run(skip::VULKAN, &reason);
+            None
+        };
+        let entry = match unsafe { ash::Entry::load() } {
+            Ok(entry) => entry,
+            Err(e) => return cannot_run(format!("no Vulkan loader ({e}; apt-get install libvulkan1)")),
+        };
+        let layers = unsafe { entry.enumerate_instance_layer_properties() }.unwrap_or_default();
+        if !layers.iter().any(|l| l.layer_name_as_c_str() == Ok(VALIDATION_LAYER)) {
+            return cannot_run(format!("no {VALIDATION_LAYER:?} (apt-get install vulkan-validationlayers)"));
         }
-        let skip_hint = "set AOKIT_SKIP_VULKAN=1 to skip";
-        let entry = unsafe { ash::Entry::load() }.unwrap_or_else(|e| panic!("no Vulkan loader ({e}); {skip_hint}"));
-        let layers = unsafe { entry.enumerate_instance_layer_properties() }.unwrap();
-        assert!(
-            layers.iter().any(|l| l.layer_name_as_c_str() == Ok(VALIDATION_LAYER)),
-            "this test needs {VALIDATION_LAYER:?}; {skip_hint}"
-        );
         let messages: Box<Mutex<Vec<String>>> = Box::default();
         let mut messenger_info = vk::DebugUtilsMessengerCreateInfoEXT::default()
             .message_severity(
@@ -107,22 +107,27 @@ impl EngineDevice {
             .enabled_layer_names(&layer_names)
             .enabled_extension_names(&extension_names)
             .push_next(&mut messenger_info); // covers vkCreateInstance and vkDestroyInstance
-        if needs.sync_validation {
-            create = create.push_next(&mut features);
-        }
-        let instance = unsafe { entry.create_instance(&create, None) }.unwrap();
+        // Synchronisation validation as well as the core checks, always: on lavapipe a missing
+        // barrier rarely changes a result, so the layer's hazard tracking is what checks them.
+        create = create.push_next(&mut features);
+        let instance = match unsafe { entry.create_instance(&create, None) } {
+            Ok(instance) => instance,
+            Err(e) => return cannot_run(format!("vkCreateInstance: {e} (apt-get install mesa-vulkan-drivers)")),
+        };
         let debug = ext::debug_utils::Instance::new(&entry, &instance);
         let messenger = unsafe { debug.create_debug_utils_messenger(&messenger_info, None) }.unwrap();
 
-        let devices = unsafe { instance.enumerate_physical_devices() }.unwrap();
+        let devices = unsafe { instance.enumerate_physical_devices() }.unwrap_or_default();
         let props = |pd| unsafe { instance.get_physical_device_properties(pd) };
         let name = |pd| props(pd).device_name_as_c_str().unwrap().to_string_lossy().into_owned();
         let physical_device = devices
             .iter()
             .copied()
             .find(|&pd| name(pd).contains("llvmpipe"))
-            .or_else(|| devices.iter().copied().find(|&pd| props(pd).api_version >= vk::API_VERSION_1_3))
-            .unwrap_or_else(|| panic!("no Vulkan 1.3 device; {skip_hint}"));
+            .or_else(|| devices.iter().copied().find(|&pd| props(pd).api_version >= vk::API_VERSION_1_3));
+        let Some(physical_device) = physical_device else {
+            return cannot_run("no Vulkan 1.3 device (apt-get install mesa-vulkan-drivers)".into());
+        };
         let families = unsafe { instance.get_physical_device_queue_family_properties(physical_device) };
         let family = families
             .iter()
@@ -145,8 +150,8 @@ impl EngineDevice {
             .map(|&n| unsafe { CStr::from_ptr(n) })
             .filter(|n| !available.iter().any(|e| e.extension_name_as_c_str() == Ok(*n)))
             .collect();
-        if needs.ray_tracing == RayTracing::Required {
-            assert!(missing.is_empty(), "device '{}' lacks {missing:?}; {skip_hint}", name(physical_device));
+        if needs.ray_tracing == RayTracing::Required && !missing.is_empty() {
+            return cannot_run(format!("device '{}' lacks {missing:?}", name(physical_device)));
         }
         let mut as_query = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default();
         let mut rt_query = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default();

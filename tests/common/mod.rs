@@ -1,23 +1,62 @@
 //! Helpers shared by the integration tests.
 #![allow(dead_code)]
 
+pub mod agreement;
+pub mod engine_device;
+pub mod skip;
+
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::render::VulkanRenderer;
 use aokit::scene::Scene;
 use aokit::scene::builtin;
+use aokit_shaders::glam::{UVec2, Vec3, uvec2};
 use aokit_vulkan::GpuOptions;
 
-/// Open the Vulkan back-end with the Khronos validation layer. Vulkan tests must not pass by
-/// silently skipping: without a device they fail, unless AOKIT_SKIP_VULKAN=1 says to skip.
+/// Open the Vulkan back-end with the Khronos validation layer (core and synchronisation
+/// checks). Without a device the test fails, unless the run allows its skip
+/// ([`skip::cannot_run`]); `None` then, and the test returns.
 pub fn vulkan() -> Option<VulkanRenderer> {
-    if std::env::var_os("AOKIT_SKIP_VULKAN").is_some_and(|v| v == "1") {
-        eprintln!("AOKIT_SKIP_VULKAN=1: skipping a Vulkan test");
-        return None;
-    }
     match VulkanRenderer::new(&GpuOptions { validation: true, ..Default::default() }) {
         Ok(r) => Some(r),
-        Err(e) => panic!("Vulkan with validation is required for this test ({e}); set AOKIT_SKIP_VULKAN=1 to skip"),
+        Err(e) => {
+            skip::cannot_run(skip::VULKAN, &format!("no Vulkan device with validation ({e})"));
+            None
+        }
     }
+}
+
+/// A synthetic G-buffer: a fronto-parallel wall at depth 10 with a raised block at depth 9,
+/// both facing the camera, an `inner` image (at least 48×40) with a guard band of 8, the frame
+/// for it and the VAO/blur parameters.
+pub fn step_gbuffer(
+    inner: UVec2,
+) -> (aokit_shaders::graph::FrameDesc, aokit_shaders::vao::VaoParams, aokit_shaders::blur::BlurParams, Vec<f32>, Vec<u32>)
+{
+    let guard = 8;
+    let camera = aokit_shaders::common::camera::Camera::look_at(
+        Vec3::ZERO,
+        -Vec3::Z,
+        Vec3::Y,
+        60f32.to_radians(),
+        inner,
+        guard,
+        0.01,
+        100.0,
+    );
+    let view = camera.view;
+    let size = view.size();
+    let mut depth = vec![10.0f32; (size.x * size.y) as usize];
+    for y in 20..size.y - 20 {
+        for x in 24..size.x - 24 {
+            depth[(y * size.x + x) as usize] = 9.0;
+        }
+    }
+    let normals = vec![aokit_shaders::common::normal_codec::encode_normal(Vec3::Z); depth.len()];
+    let frame = aokit_shaders::graph::FrameDesc::new(camera, 2.0, 2.0, 0.0);
+    let vao =
+        aokit_shaders::vao::VaoParams { view, radius: 2.0, exponent: 2.0, thickness: 0.0, max_screen_radius: 512.0 };
+    let blur = aokit_shaders::blur::BlurParams { view, direction: uvec2(1, 0), sharpness: 16.0, _pad: 0 };
+    (frame, vao, blur, depth, normals)
 }
 
 /// Fail on any validation warning or error.

@@ -1,0 +1,75 @@
+//! The agreement statistics and tolerances every back-end comparison uses (CPU ≡ Vulkan, the
+//! engine path, wgpu, the WebGPU page, the C sample), written once.
+#![allow(dead_code)]
+
+/// One step of an 8-bit AO output: the quantum an engine's R8 target can show.
+pub const STEP: f32 = 1.0 / 255.0;
+/// Deterministic kernels: at least this fraction of inner pixels within one [`STEP`] (a one-ulp
+/// difference in a rounding flips a value across a step boundary in a few pixels, no more).
+pub const MIN_WITHIN: f64 = 0.999;
+/// Deterministic kernels: the MSE a handful of one-step flips gives is ~1e-8; a wrong term, a
+/// missing pass or one misplaced tap in a 64×64 block gives ≥ 1e-5. Bound in between.
+pub const MAX_MSE: f64 = 1e-6;
+
+/// How two AO images of equal, non-empty length agree.
+#[derive(Clone, Copy, Debug)]
+pub struct Agreement {
+    /// Values compared.
+    pub n: usize,
+    /// Fraction with `|a − b| ≤ STEP`.
+    pub within: f64,
+    /// Mean squared difference.
+    pub mse: f64,
+    /// Largest `|a − b|`.
+    pub max: f32,
+    /// Fraction of `a` below 0.9 (is there occlusion to compare?).
+    pub occluded: f64,
+}
+
+/// The statistics of `a` against `b`; lengths must match and be non-zero.
+pub fn of(a: &[f32], b: &[f32]) -> Agreement {
+    super::assert_same_len(a, b, "agreement");
+    let n = a.len();
+    let (mut within, mut sum, mut max, mut occluded) = (0usize, 0.0f64, 0.0f32, 0usize);
+    for (x, y) in a.iter().zip(b) {
+        let d = (x - y).abs();
+        within += usize::from(d <= STEP);
+        sum += (d as f64).powi(2);
+        max = max.max(if d.is_nan() { f32::INFINITY } else { d });
+        occluded += usize::from(*x < 0.9);
+    }
+    Agreement { n, within: within as f64 / n as f64, mse: sum / n as f64, max, occluded: occluded as f64 / n as f64 }
+}
+
+/// The statistics over the inner image of two full-target buffers.
+pub fn inner(view: &aokit_shaders::common::ViewParams, a: &[f32], b: &[f32]) -> Agreement {
+    let (a, b) = super::inner_pair(view, a, b);
+    of(&a, &b)
+}
+
+impl Agreement {
+    /// One line for the test's log and its failure messages.
+    pub fn line(&self, label: &str) -> String {
+        format!(
+            "{label}: {:.3} % of {} within 1/255, MSE {:.2e}, max |Δ| {:.2}/255, occluded {:.1} %",
+            100.0 * self.within,
+            self.n,
+            self.mse,
+            255.0 * self.max,
+            100.0 * self.occluded
+        )
+    }
+
+    /// Assert the deterministic-kernel agreement: ≥ [`MIN_WITHIN`] within a step AND MSE ≤
+    /// [`MAX_MSE`].
+    pub fn assert_exact(&self, label: &str) {
+        self.assert_bounds(label, MIN_WITHIN, MAX_MSE);
+    }
+
+    /// Assert both a fraction within one step and an MSE bound (state where they come from).
+    pub fn assert_bounds(&self, label: &str, min_within: f64, max_mse: f64) {
+        let line = self.line(label);
+        assert!(self.within >= min_within, "{line}: fewer than {:.3} % within 1/255", 100.0 * min_within);
+        assert!(self.mse <= max_mse, "{line}: MSE above {max_mse:.1e}");
+    }
+}
