@@ -5,28 +5,21 @@
 
 use aokit::output::crop_inner;
 use aokit_cpu::no_progress;
-use aokit_shaders::blur::BlurParams;
-use aokit_shaders::common::camera::Camera;
-use aokit_shaders::common::normal_codec::encode_normal;
-use aokit_shaders::glam::{Vec3, uvec2};
-use aokit_shaders::graph::FrameDesc;
-use aokit_shaders::vao::VaoParams;
+use aokit_shaders::glam::uvec2;
 use aokit_vulkan::{AoContext, ExternalDevice, Gpu, GpuError, GpuInputs};
 use ash::vk;
 
-#[path = "common/engine_device.rs"]
-mod engine_device;
+mod common;
 
-use engine_device::{EngineDevice as Engine, EngineNeeds, RayTracing};
+use common::engine_device::{EngineDevice as Engine, EngineNeeds, RayTracing};
 
 /// An engine's instance (validation layer + messenger) and device on lavapipe (or the first
 /// Vulkan 1.3 device when there is no lavapipe), with a graphics+compute queue. `full`:
 /// everything aokit can use (raster features, ray tracing where supported); otherwise only what
-/// the compute passes need. `None` when AOKIT_SKIP_VULKAN=1.
+/// the compute passes need. `None` when the run allows its skip (tests/common/skip.rs).
 fn new_engine(full: bool) -> Option<Engine> {
     Engine::new(&EngineNeeds {
         app_name: c"some engine",
-        sync_validation: false,
         queue_flags: vk::QueueFlags::GRAPHICS | vk::QueueFlags::COMPUTE,
         raster: full,
         ray_tracing: if full { RayTracing::WhereSupported } else { RayTracing::Off },
@@ -40,26 +33,6 @@ fn destroy(engine: Engine) -> Vec<String> {
         let fence = device.create_fence(&vk::FenceCreateInfo::default(), None).unwrap();
         device.destroy_fence(fence, None);
     })
-}
-
-/// A synthetic G-buffer: a fronto-parallel wall at depth 10 with a raised block at depth 9,
-/// both facing the camera, the frame for it and the VAO/blur parameters.
-fn step_gbuffer() -> (FrameDesc, VaoParams, BlurParams, Vec<f32>, Vec<u32>) {
-    let (inner, guard) = (uvec2(48, 40), 8);
-    let camera = Camera::look_at(Vec3::ZERO, -Vec3::Z, Vec3::Y, 60f32.to_radians(), inner, guard, 0.01, 100.0);
-    let view = camera.view;
-    let size = view.size();
-    let mut depth = vec![10.0f32; (size.x * size.y) as usize];
-    for y in 20..36 {
-        for x in 24..40 {
-            depth[(y * size.x + x) as usize] = 9.0;
-        }
-    }
-    let normals = vec![encode_normal(Vec3::Z); depth.len()];
-    let frame = FrameDesc::new(camera, 2.0, 2.0, 0.0);
-    let vao = VaoParams { view, radius: 2.0, exponent: 2.0, thickness: 0.0, max_screen_radius: 512.0 };
-    let blur = BlurParams { view, direction: uvec2(1, 0), sharpness: 16.0, _pad: 0 };
-    (frame, vao, blur, depth, normals)
 }
 
 /// Upload/download roundtrip with `allocated_bytes` accounting, then VAO + blur (the vao pass
@@ -77,7 +50,7 @@ fn exercise(gpu: &Gpu) -> Result<(), GpuError> {
     gpu.free_buffer(buffer);
     assert_eq!(gpu.allocated_bytes(), base, "free_buffer returns the bytes");
 
-    let (frame, vao, blur, depth, normals) = step_gbuffer();
+    let (frame, vao, blur, depth, normals) = common::step_gbuffer(uvec2(48, 40));
     let cpu_ao = aokit_cpu::run_vao(&vao, &depth, &normals, &no_progress);
     let cpu_blurred = aokit_cpu::run_blur(&blur, &cpu_ao, &depth);
     let graph = aokit_shaders::vao::settings::graph(&frame);

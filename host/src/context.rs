@@ -12,7 +12,8 @@ use std::sync::Mutex;
 /// How to open the device.
 #[derive(Clone, Debug, Default)]
 pub struct GpuOptions {
-    /// Enable `VK_LAYER_KHRONOS_validation` and record its warnings and errors.
+    /// Enable `VK_LAYER_KHRONOS_validation` with its synchronisation checks (hazards between
+    /// commands a missing barrier leaves) and record its warnings and errors.
     pub validation: bool,
     /// Device extensions to treat as absent, e.g. `VK_KHR_ray_tracing_pipeline`: how aokit
     /// behaves on a device without them, on one that has them. The environment variable
@@ -22,6 +23,17 @@ pub struct GpuOptions {
 
 /// `AOKIT_HIDE_EXTENSIONS=VK_KHR_ray_tracing_pipeline,…`: see [`GpuOptions::hidden_extensions`].
 pub const HIDE_EXTENSIONS_VAR: &str = "AOKIT_HIDE_EXTENSIONS";
+
+/// `AOKIT_MAX_STORAGE_BUFFER_RANGE=<bytes>`: treat the device's `maxStorageBufferRange` as at
+/// most this many bytes (how aokit refuses a target too large for a smaller device, on a device
+/// with a larger range).
+pub const MAX_STORAGE_BUFFER_RANGE_VAR: &str = "AOKIT_MAX_STORAGE_BUFFER_RANGE";
+
+/// The device's `maxStorageBufferRange`, lowered by [`MAX_STORAGE_BUFFER_RANGE_VAR`].
+fn storage_buffer_range(device: u32) -> u64 {
+    let cap = std::env::var(MAX_STORAGE_BUFFER_RANGE_VAR).ok().and_then(|v| v.trim().parse::<u64>().ok());
+    cap.map_or(device as u64, |c| c.min(device as u64))
+}
 
 impl GpuOptions {
     /// The extensions to hide: the option's and the environment variable's.
@@ -271,7 +283,7 @@ impl DeviceProbe {
         Ok(DeviceProbe {
             info,
             timestamp_period_ns: props.limits.timestamp_period,
-            max_storage_buffer_range: props.limits.max_storage_buffer_range as u64,
+            max_storage_buffer_range: storage_buffer_range(props.limits.max_storage_buffer_range),
             ray_tracing: limits,
             pipelines,
             ray_query,
@@ -370,12 +382,15 @@ impl Gpu {
             )
             .pfn_user_callback(Some(debug_callback))
             .user_data(&*messages as *const Mutex<Vec<String>> as *mut c_void);
+        let sync = [vk::ValidationFeatureEnableEXT::SYNCHRONIZATION_VALIDATION];
+        let mut features = vk::ValidationFeaturesEXT::default().enabled_validation_features(&sync);
         let mut create = vk::InstanceCreateInfo::default()
             .application_info(&app)
             .enabled_layer_names(&layers)
             .enabled_extension_names(&extensions);
         if options.validation {
-            create = create.push_next(&mut messenger_info); // also covers instance creation
+            // The messenger also covers instance creation.
+            create = create.push_next(&mut messenger_info).push_next(&mut features);
         }
         let instance = unsafe { entry.create_instance(&create, None) }.map_err(|e| match e {
             vk::Result::ERROR_INCOMPATIBLE_DRIVER => GpuError::NoDriver,

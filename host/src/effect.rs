@@ -479,6 +479,12 @@ impl AoEffect {
     pub fn context(&self) -> &AoContext<Arc<Gpu>> {
         &self.context
     }
+
+    /// Record the next frames with deliberate defects (aokit's own tests).
+    #[cfg(feature = "testing")]
+    pub fn sabotage(&mut self, sabotage: crate::Sabotage) {
+        self.context.sabotage(sabotage);
+    }
 }
 
 /// aokit's camera of an engine frame and the engine projection's planes.

@@ -197,6 +197,19 @@ pub struct AoContext<G: Borrow<Gpu> = Gpu> {
     /// `(frame recorded, buffer or pool)` waiting to be freed.
     retired: Vec<(u64, Retired)>,
     frame: u64,
+    #[cfg(feature = "testing")]
+    sabotage: Sabotage,
+}
+
+/// Deliberate defects for aokit's own tests (feature `testing`): they show that the validation
+/// layer and the tests catch what they claim to catch. Never set outside a test.
+#[cfg(feature = "testing")]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Sabotage {
+    /// Leave out the barrier the graph puts before this pass (its index in `graph.passes`):
+    /// the pass then reads what the previous one writes without a dependency, a hazard the
+    /// synchronisation validation must report.
+    pub omit_barrier_before: Option<usize>,
 }
 
 enum Retired {
@@ -220,7 +233,24 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             adapter_sets: KeptSets::new(KEPT_ADAPTER_SETS),
             retired: Vec::new(),
             frame: 0,
+            #[cfg(feature = "testing")]
+            sabotage: Sabotage::default(),
         }
+    }
+
+    /// Record the next frames with `sabotage`'s defects (see [`Sabotage`]).
+    #[cfg(feature = "testing")]
+    pub fn sabotage(&mut self, sabotage: Sabotage) {
+        self.sabotage = sabotage;
+    }
+
+    /// Does the sabotage leave out the barrier before pass `i`?
+    fn omits_barrier_before(&self, _i: usize) -> bool {
+        #[cfg(feature = "testing")]
+        if self.sabotage.omit_barrier_before == Some(_i) {
+            return true;
+        }
+        false
     }
 
     /// The device it runs on.
@@ -416,7 +446,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         let mut stamp = 0;
         let sets = &self.bound[bound].sets;
         for (i, pass) in graph.passes.iter().enumerate() {
-            if barriers[i] {
+            if barriers[i] && !self.omits_barrier_before(i) {
                 memory_barrier(self.gpu(), cmd, stages, stages);
             }
             let invocations = pass.invocations(&graph.view);

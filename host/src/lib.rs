@@ -84,13 +84,15 @@ pub use ash;
 pub use context::ExternalDevice;
 pub use effect::{AoEffect, AoError, AoFrame, AoScene, AoSettings, DepthConvention, SceneGeometry};
 pub use graph::FRAMES_IN_FLIGHT;
+#[cfg(feature = "testing")]
+pub use graph::Sabotage;
 
 /// What feature `harness` makes public; the effect uses it either way.
 #[cfg_attr(not(feature = "harness"), allow(unused_imports))]
 mod harness {
     pub use crate::adapters::Adapters;
     pub use crate::buffer::Buffer;
-    pub use crate::context::{DeviceInfo, Gpu, GpuOptions, HIDE_EXTENSIONS_VAR};
+    pub use crate::context::{DeviceInfo, Gpu, GpuOptions, HIDE_EXTENSIONS_VAR, MAX_STORAGE_BUFFER_RANGE_VAR};
     pub use crate::effect::{EngineCamera, engine_camera};
     pub use crate::gbuffer::{GBufferVertex, RasterFrame, RasterGBuffer};
     pub use crate::graph::{AoContext, EngineFrame, GpuInputs, RasterScene, check_device};

@@ -1,0 +1,197 @@
+//! The validation layer sees what the Vulkan tests rely on it to see. Every Vulkan test runs
+//! under `VK_LAYER_KHRONOS_validation` with its synchronisation checks — aokit's own instance
+//! (`GpuOptions::validation`) and the engine-owned one of tests/common/engine_device.rs — and
+//! fails on any message. These tests are the positive controls: a deliberate defect (the
+//! `testing` feature's `Sabotage`) must produce the message, on both instances, and the same
+//! work without the defect must produce none.
+//!
+//! What lavapipe hides: it executes each dispatch to completion before the next, so a missing
+//! barrier between two dispatches does not change a result there (the test shows the same AO
+//! with and without it); a real GPU overlaps dispatches. On lavapipe only the layer's tracking
+//! of the commands' accesses catches it, which is why it must be shown to fire. Frames in
+//! flight are likewise finished by lavapipe before the next one is recorded, so a buffer freed
+//! too early (while its frame is pending on a GPU) is not observable here: the layer retires a
+//! submission as soon as the driver completes it.
+
+mod common;
+
+use aokit_shaders::glam::{UVec2, uvec2};
+use aokit_shaders::graph::Graph;
+use aokit_vulkan::{AoContext, Buffer, Gpu, GpuInputs, GpuOptions, Sabotage};
+use ash::vk;
+use common::engine_device::{EngineDevice, EngineNeeds, RayTracing};
+
+/// The first pass of `graph` after a barrier: it reads what an earlier pass wrote.
+fn pass_after_barrier(graph: &Graph) -> usize {
+    let barriers = graph.barriers();
+    (1..graph.passes.len()).find(|&i| barriers[i]).expect("a graph with a barrier between passes")
+}
+
+/// The vao graph (main pass + two blur passes) on the synthetic step G-buffer of `inner`.
+fn vao_frame(inner: UVec2) -> (Graph, Vec<f32>, Vec<u32>) {
+    let (frame, _, _, depth, normals) = common::step_gbuffer(inner);
+    (aokit_shaders::vao::settings::graph(&frame), depth, normals)
+}
+
+/// Run `graph` once through a fresh context on `gpu` with `sabotage` (submitted and waited).
+fn run_once(gpu: &Gpu, graph: &Graph, depth: &[f32], normals: &[u32], sabotage: Sabotage) -> Vec<f32> {
+    let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
+    let (d, n) = (gpu.upload(depth, storage).unwrap(), gpu.upload(normals, storage).unwrap());
+    let out = {
+        let mut ctx = AoContext::new(gpu);
+        ctx.sabotage(sabotage);
+        let inputs = GpuInputs { depth: &d, normals: &n, second_depth: None, scene: None, raster: None };
+        ctx.run(graph, &inputs).unwrap();
+        ctx.download::<f32>(graph.output).unwrap()
+    };
+    gpu.free_buffer(d);
+    gpu.free_buffer(n);
+    out
+}
+
+/// The synchronisation layer's hazard message for a read after an unsynchronised write.
+fn is_read_after_write(message: &str) -> bool {
+    message.contains("SYNC-HAZARD-READ-AFTER-WRITE") || message.contains("SYNC-HAZARD-READ_AFTER_WRITE")
+}
+
+#[test]
+fn a_missing_barrier_is_reported_on_aokits_own_instance() {
+    if common::vulkan().is_none() {
+        return;
+    }
+    let gpu = Gpu::new(&GpuOptions { validation: true, ..Default::default() }).unwrap();
+    let (graph, depth, normals) = vao_frame(uvec2(48, 40));
+    let omitted = pass_after_barrier(&graph);
+    let clean = run_once(&gpu, &graph, &depth, &normals, Sabotage::default());
+    let messages = gpu.validation_messages();
+    assert!(messages.is_empty(), "the intact graph:\n{}", messages.join("\n"));
+    let broken = run_once(&gpu, &graph, &depth, &normals, Sabotage { omit_barrier_before: Some(omitted) });
+    let messages = gpu.validation_messages();
+    eprintln!(
+        "without the barrier before pass {omitted} ({}): {} messages",
+        graph.passes[omitted].label,
+        messages.len()
+    );
+    assert!(
+        messages.iter().any(|m| is_read_after_write(m)),
+        "no read-after-write hazard reported without the barrier before pass {omitted}:\n{}",
+        messages.join("\n")
+    );
+    // What lavapipe hides: the result is the same without the barrier.
+    assert_eq!(clean.len(), broken.len());
+    eprintln!("results identical without the barrier: {}", clean == broken);
+}
+
+/// The engine's instance and device (compute queue, no ray tracing), its messages so far.
+fn new_engine() -> Option<EngineDevice> {
+    EngineDevice::new(&EngineNeeds {
+        app_name: c"a sync-validation engine",
+        queue_flags: vk::QueueFlags::COMPUTE,
+        raster: false,
+        ray_tracing: RayTracing::Off,
+    })
+}
+
+#[test]
+fn a_missing_barrier_is_reported_on_an_engine_owned_instance() {
+    let Some(engine) = new_engine() else { return };
+    let (graph, depth, normals) = vao_frame(uvec2(48, 40));
+    let omitted = pass_after_barrier(&graph);
+    {
+        let gpu = Gpu::from_external(engine.external()).unwrap();
+        run_once(&gpu, &graph, &depth, &normals, Sabotage::default());
+        let messages = engine.messages.lock().unwrap().clone();
+        assert!(messages.is_empty(), "the intact graph:\n{}", messages.join("\n"));
+        run_once(&gpu, &graph, &depth, &normals, Sabotage { omit_barrier_before: Some(omitted) });
+    }
+    let messages = engine.destroy_with(|_| {});
+    assert!(
+        messages.iter().any(|m| is_read_after_write(m)),
+        "no read-after-write hazard reported on the engine's instance:\n{}",
+        messages.join("\n")
+    );
+}
+
+/// The engine's frames in flight: `ring` command buffers and fences it owns; frame F waits for
+/// frame F − ring's fence before it records. Each frame runs the vao graph of the next size of
+/// `sizes` through one context (a resize re-makes its buffers and retires the old ones, freed
+/// FRAMES_IN_FLIGHT frames later); returns the last frame's AO.
+fn frames_in_flight(engine: &EngineDevice, ring: usize, sizes: &[UVec2]) -> Vec<f32> {
+    let d = &engine.device;
+    let gpu = Gpu::from_external(engine.external()).unwrap();
+    let pool_info = vk::CommandPoolCreateInfo::default()
+        .queue_family_index(engine.family)
+        .flags(vk::CommandPoolCreateFlags::RESET_COMMAND_BUFFER);
+    let pool = unsafe { d.create_command_pool(&pool_info, None) }.unwrap();
+    let info = vk::CommandBufferAllocateInfo::default().command_pool(pool).command_buffer_count(ring as u32);
+    let cmds = unsafe { d.allocate_command_buffers(&info) }.unwrap();
+    let signalled = vk::FenceCreateInfo::default().flags(vk::FenceCreateFlags::SIGNALED);
+    let fences: Vec<_> = (0..ring).map(|_| unsafe { d.create_fence(&signalled, None) }.unwrap()).collect();
+    let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
+    let mut ctx = AoContext::new(&gpu);
+    // Inputs per frame slot, freed once the slot's fence says the frame finished.
+    let mut slots: Vec<Option<(Buffer, Buffer)>> = (0..ring).map(|_| None).collect();
+    let mut last = None;
+    for (f, &inner) in sizes.iter().enumerate() {
+        let k = f % ring;
+        unsafe { d.wait_for_fences(&[fences[k]], true, u64::MAX) }.unwrap();
+        if let Some((a, b)) = slots[k].take() {
+            gpu.free_buffer(a);
+            gpu.free_buffer(b);
+        }
+        let (graph, depth, normals) = vao_frame(inner);
+        let (dep, nor) = (gpu.upload(&depth, storage).unwrap(), gpu.upload(&normals, storage).unwrap());
+        unsafe {
+            d.reset_fences(&[fences[k]]).unwrap();
+            d.begin_command_buffer(cmds[k], &vk::CommandBufferBeginInfo::default()).unwrap();
+        }
+        let inputs = GpuInputs { depth: &dep, normals: &nor, second_depth: None, scene: None, raster: None };
+        ctx.record(cmds[k], &graph, &inputs).unwrap();
+        let submit = [vk::SubmitInfo::default().command_buffers(&cmds[k..k + 1])];
+        unsafe {
+            d.end_command_buffer(cmds[k]).unwrap();
+            d.queue_submit(engine.queue, &submit, fences[k]).unwrap();
+        }
+        ctx.invalidate_bindings();
+        slots[k] = Some((dep, nor));
+        last = Some(graph);
+    }
+    unsafe { d.device_wait_idle() }.unwrap();
+    let ao = ctx.download::<f32>(last.expect("frames").output).unwrap();
+    drop(ctx);
+    for (a, b) in slots.into_iter().flatten() {
+        gpu.free_buffer(a);
+        gpu.free_buffer(b);
+    }
+    unsafe {
+        for f in fences {
+            d.destroy_fence(f, None);
+        }
+        d.destroy_command_pool(pool, None);
+    }
+    ao
+}
+
+/// 2 and 3 frames in flight through a resize sequence (each resize re-makes the context's
+/// buffers while earlier frames may be pending): no validation message (core and
+/// synchronisation), and the last frame agrees with cpu-sim's run of the same graph.
+#[test]
+fn frames_in_flight_through_resizes_agree_with_cpu_sim() {
+    let sizes = [uvec2(48, 40), uvec2(64, 48), uvec2(64, 48), uvec2(56, 40), uvec2(48, 40), uvec2(80, 56)];
+    for ring in [2, 3] {
+        let Some(engine) = new_engine() else { return };
+        let ao = frames_in_flight(&engine, ring, &sizes);
+        let messages = engine.destroy_with(|_| {});
+        assert!(messages.is_empty(), "{ring} frames in flight:\n{}", messages.join("\n"));
+        let (graph, depth, normals) = vao_frame(*sizes.last().unwrap());
+        let mut cpu = aokit_cpu::graph::CpuExecutor::new();
+        let progress = &aokit_cpu::no_progress;
+        let inputs =
+            aokit_cpu::graph::CpuInputs { depth: &depth, normals: &normals, second_depth: None, scene: None, progress };
+        cpu.run(&graph, &inputs).unwrap();
+        let agreement = common::agreement::inner(&graph.view, cpu.f32(graph.output).unwrap(), &ao);
+        eprintln!("{}", agreement.line(&format!("{ring} in flight, last frame vs cpu-sim")));
+        agreement.assert_exact(&format!("{ring} frames in flight"));
+        assert!(agreement.occluded > 0.01, "the step must occlude");
+    }
+}
