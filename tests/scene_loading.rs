@@ -209,10 +209,11 @@ fn instanced_grid_copies_the_scene() {
 fn instancing_beyond_memory_is_refused_before_allocating() {
     let scene = builtin::find("cornell").unwrap().load().unwrap();
     let copies = 63245 * 63245;
-    let start = std::time::Instant::now();
+    // No time bound (a wall-clock assert fails on a busy machine): building this grid would take
+    // ~58 TB (1.4·10¹¹ triangles × 400 bytes) and abort rather than return, so the error itself
+    // shows that the refusal came first; its message names the memory check.
     let Err(e) = scene.instanced_grid(copies) else { panic!("no machine holds this grid") };
     assert!(e.contains("copies of cornell") && e.contains("MiB of memory available") && !e.contains('\n'), "{e}");
-    assert!(start.elapsed().as_secs_f64() < 1.0, "refused only after {:?}", start.elapsed());
     // A grid that fits is still built.
     assert_eq!(scene.instanced_grid(4).unwrap().triangles.len(), 4 * scene.triangles.len());
 }
