@@ -186,8 +186,51 @@ fn hbao_occlusion_matches_the_formula() {
     assert_eq!(hbao_occlusion(&frame, &s(0.5), frame.position + vec3(0.0, 0.0, 2.5), radius), 0.0);
 }
 
+/// Pass 2 (spec svao-raysd §9) on the CPU from a run's own pass-1 buffers and SD map, refining
+/// only the flagged samples `keep` selects by their running index: all reproduces the run's
+/// pass-2 AO; leaving every k-th out models a pass 2 that misses 1 in k flagged samples (they
+/// keep their pass-1 value).
+fn pass2_refining(
+    svao: &aokit_shaders::svao::SvaoFrame,
+    g: &aokit_cpu::GBufferImage,
+    d: &aokit_shaders::graph::Refinement,
+    keep: impl Fn(u64) -> bool,
+) -> Vec<f32> {
+    use aokit_shaders::common::gbuffer_read::GBufferSlices;
+    use aokit_shaders::glam::uvec2;
+    use aokit_shaders::raysd::SdMapRefine;
+    use aokit_shaders::svao::{Refine, Refined, pass2_pixel};
+    use aokit_shaders::vao::kernel::{LineSample, PixelFrame};
+    struct Some_<'a, F> {
+        inner: SdMapRefine<'a>,
+        keep: F,
+        k: u64,
+    }
+    impl<F: Fn(u64) -> bool> Refine for Some_<'_, F> {
+        fn refine(&mut self, f: &PixelFrame, s: &LineSample, v: f32, z: f32) -> Refined {
+            self.k += 1;
+            if (self.keep)(self.k) { self.inner.refine(f, s, v, z) } else { Refined { v, rays: 0 } }
+        }
+    }
+    let params = &svao.params;
+    let view = &params.vao.view;
+    let size = view.size();
+    let gb = GBufferSlices { depth: &g.depth, normals: &g.normals, width: g.width };
+    let mut out = d.ao_pass1.clone();
+    let mut refine = Some_ { inner: SdMapRefine { map: &d.sd_map, params }, keep, k: 0 };
+    for y in view.guard..size.y - view.guard {
+        for x in view.guard..size.x - view.guard {
+            let p = uvec2(x, y);
+            let i = view.index(p);
+            out[i] = pass2_pixel(&gb, &[], params, p, d.ao_pass1[i], d.mask[i], &mut refine).ao;
+        }
+    }
+    out
+}
+
 /// HBAO+ with the SD map on Vulkan against the CPU (same G-buffer): pass-1 masks identical,
-/// final AO MSE ≤ 1e-4 (the SD maps agree only statistically); plain HBAO+ within 1/255 on
+/// pass-2 and final AO within bounds derived from a pass 2 that misses some flagged samples (the
+/// SD maps agree only statistically); plain HBAO+ within 1/255 on
 /// 99.9 % of pixels; validation clean.
 #[test]
 fn hbao_vulkan_agrees_with_cpu() {
@@ -204,8 +247,31 @@ fn hbao_vulkan_agrees_with_cpu() {
     assert!(cm.iter().any(|&m| m != 0), "the view must flag samples");
     assert_eq!(cm, vm);
     let mse = common::inner_mse(&view, &c.ao_final, &v.ao_final);
-    eprintln!("hbao-sd CPU vs Vulkan MSE {mse:.2e}");
-    assert!(mse <= 1e-4);
+    // Bounds derived from what the comparison must detect, a pass 2 that leaves flagged samples
+    // unrefined (MSE against the CPU's own pass 2, grows with the fraction left out; measured:
+    // half 2.3e-3 (94.9 % within 1/255), 1 in 10 4.2e-4 (99.05 %), 1 in 50 8.6e-5 (99.80 %)):
+    // pass-2 AO MSE ≤ 1/10 of the 1-in-50 effect (≈ 8.6e-6; observed 3.5e-6, from the SD texels
+    // whose any-hit order differs), fraction within ≥ 1 − 1/10 of the 1-in-10 shortfall (≈ 99.90 %;
+    // observed 99.99 %); the final (blurred) AO under the same MSE bound (observed 2e-7).
+    let svao = SdOptions { hbao: true, ..Default::default() }.frame(&frame.desc(), Secondary::StochasticDepth);
+    let dc = c.debug.as_ref().unwrap();
+    let (ca, cb) = common::inner_pair(&view, &pass2_refining(&svao, &g, dc, |_| true), &c.ao);
+    assert!(ca == cb, "pass2_refining must reproduce the CPU's pass 2");
+    let missing =
+        |every: u64| common::agreement::inner(&view, &c.ao, &pass2_refining(&svao, &g, dc, |k| k % every != 0));
+    let (m10, m50) = (missing(10), missing(50));
+    let (max_mse, min_within) = (m50.mse / 10.0, 1.0 - (1.0 - m10.within) / 10.0);
+    let a = common::agreement::inner(&view, &c.ao, &v.ao);
+    eprintln!(
+        "{}\n{}\n{}\nbounds: MSE ≤ {max_mse:.2e}, within ≥ {:.3} %",
+        m10.line("pass 2 missing 1 in 10"),
+        m50.line("pass 2 missing 1 in 50"),
+        a.line("hbao-sd pass-2 AO CPU vs Vulkan"),
+        100.0 * min_within
+    );
+    assert!(m50.mse > 1e-5 && m10.within < 0.995, "the mutations must change the image");
+    a.assert_bounds("hbao-sd pass-2 AO CPU vs Vulkan", min_within, max_mse);
+    assert!(mse <= max_mse, "hbao-sd final AO CPU vs Vulkan: MSE {mse:.2e} above {max_mse:.1e}");
     let t = Technique::new(&HBAO, SdOptions { hbao: true, dual: false, peel_separation: 0.01, ..Default::default() });
     let (c, v) = (cpu.run(&frame, &g, &t, none), vk.run(&scene, &frame, &g, &t).unwrap());
     let close = common::inner_within(&view, &c.ao, &v.ao, 1.0 / 255.0);

@@ -19,8 +19,6 @@
 //!    custom-index convention breaks the ground truth's agreement.
 
 mod common;
-#[path = "common/engine_device.rs"]
-mod engine_device;
 
 use aokit::frame::Frame;
 use aokit::output::crop_inner;
@@ -44,7 +42,7 @@ use aokit_vulkan::{
     Image2d, engine_camera,
 };
 use ash::vk;
-use engine_device::{EngineDevice, EngineNeeds, RayTracing};
+use common::engine_device::{EngineDevice, EngineNeeds, RayTracing};
 use std::ops::Deref;
 use std::time::Instant;
 
@@ -72,13 +70,10 @@ impl Deref for Engine {
 impl Engine {
     /// Instance with the validation layer and a messenger (warnings and errors), device on
     /// lavapipe (or the first Vulkan 1.3 device) with what aokit's compute and ray-tracing graphs
-    /// need. `None` when AOKIT_SKIP_VULKAN=1.
+    /// need. `None` when the run allows its skip (tests/common/skip.rs).
     fn new() -> Option<Engine> {
         let base = EngineDevice::new(&EngineNeeds {
             app_name: c"an engine",
-            // Synchronization validation as well: on lavapipe a missing barrier rarely changes a
-            // result, so the layer's hazard tracking is what checks aokit's barriers.
-            sync_validation: true,
             queue_flags: vk::QueueFlags::COMPUTE,
             raster: false,
             // raysd traces rays: the device must have the ray-tracing pipeline.

@@ -87,10 +87,18 @@ fn full_vulkan_pipeline_matches_cpu_pipeline_on_the_tower() {
     let cpu_renderer = CpuRenderer::new(&scene);
     let (gbuffer, _) = cpu_renderer.gbuffer(&frame, &no_progress);
     let cpu = cpu_renderer.run(&frame, &gbuffer, &vao, &no_progress);
-    let (within, max) = compare(&frame.camera.view, &cpu.ao_final, &gpu.ao_final);
-    eprintln!("tower end to end: {:.3} % within 1/255, max {max:.3}", 100.0 * within);
-    // Different G-buffers (raster vs rays) differ at silhouettes; the bulk must agree.
-    assert!(within >= 0.97, "only {:.3} % within 1/255", 100.0 * within);
+    // The G-buffers differ (raster vs rays: depth within 1e-4 relative on ≥ 99 % of the pixels,
+    // silhouettes aside), the kernels do not, and the blur averages a silhouette pixel's
+    // difference with its neighbours: measured 99.97 % within 1/255, MSE 2.3e-8, max 3.3/255. So
+    // the deterministic-kernel bounds hold end to end (≥ 99.9 % within 1/255 — 19 pixels of the
+    // 19200 may differ — and MSE ≤ 1e-6), and the largest difference is bounded by twice the
+    // same-G-buffer bound (4/255, vao_spirv_agrees_with_cpu_sim_on_the_same_gbuffer): 8/255. A
+    // missing blur gives 32 % within, MSE 1e-2, max 166/255; one unwritten 8×8 tile ≥ 20/255.
+    let a = common::agreement::inner(&frame.camera.view, &cpu.ao_final, &gpu.ao_final);
+    eprintln!("{}", a.line("tower end to end"));
+    assert!(a.occluded > 0.1, "{}: too little occlusion to compare", a.line("tower end to end"));
+    a.assert_exact("tower end to end");
+    assert!(a.max <= 8.0 / 255.0, "{}: max above 8/255", a.line("tower end to end"));
     assert_eq!(gpu.passes.iter().map(|p| p.0).collect::<Vec<_>>(), ["gbuffer", "vao", "blur"]);
     assert!(gpu.passes.iter().all(|p| p.1 > 0.0 && p.1.is_finite()));
     common::assert_validation_clean(&vk);
