@@ -501,4 +501,123 @@ mod vulkan {
         adapters.destroy(gpu);
         common::assert_validation_clean(&vulkan);
     }
+
+    /// Half precision of `x` in [0, 1] (round to nearest; the CPU reference reads the stored
+    /// bits back, so only the stored value matters).
+    fn f32_to_f16(x: f32) -> u16 {
+        let x = x as f64;
+        if x < 2f64.powi(-14) {
+            return (x / 2f64.powi(-24)).round() as u16;
+        }
+        let e = x.log2().floor() as i32;
+        let mant = (x / 2f64.powi(e) * 1024.0).round() as u32 - 1024;
+        if mant == 1024 { (((e + 16) as u16) << 10) as u16 } else { (((e + 15) as u16) << 10) | mant as u16 }
+    }
+
+    /// The other engine formats through the import: a D16 depth buffer (each convention but
+    /// linear) and RGBA16F and A2B10G10R10 normal images, against cpu-sim's import of the values
+    /// the sampler returns (the stored texels decoded). Same tolerances as above: depth within
+    /// 8U·(1 + κ), normal codes ≥ 99.9 % identical (a one-ulp difference in the unit-vector
+    /// normalisation may flip a code at a rounding boundary).
+    #[test]
+    fn d16_depth_and_half_and_10_bit_normals_agree_with_cpu_sim() {
+        let Some(vulkan) = common::vulkan() else { return };
+        let gpu = vulkan.gpu();
+        let adapters = Adapters::new(gpu).unwrap();
+        let (inner, guard) = (uvec2(37, 29), 4);
+        let view = view_params(inner, guard, 900.0);
+        let full = view.size();
+        let (texels, pixels) = ((inner.x * inner.y) as usize, (full.x * full.y) as usize);
+        let base = import_params(view, inner, NEAR as f32, FAR as f32);
+        let usage = vk::ImageUsageFlags::SAMPLED | vk::ImageUsageFlags::TRANSFER_DST;
+        let depth_usage = usage | vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT;
+        let depth_layout = vk::ImageLayout::DEPTH_STENCIL_READ_ONLY_OPTIMAL;
+        let shader_read = vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL;
+        let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
+        let conventions = [
+            (DEPTH_STANDARD, Projection::Standard),
+            (DEPTH_REVERSED, Projection::Reversed),
+            (DEPTH_REVERSED_INFINITE, Projection::ReversedInfinite),
+        ];
+        let mut depth_images = Vec::new();
+        for &(_, projection) in &conventions {
+            let stored: Vec<u16> =
+                (0..texels).map(|i| (engine_depth(Some(projection), i) as f64 * 65535.0).round() as u16).collect();
+            let image = gpu.create_image_2d(vk::Format::D16_UNORM, inner.x, inner.y, depth_usage).unwrap();
+            gpu.upload_image(&image, bytemuck::cast_slice(&stored), depth_layout).unwrap();
+            let sampled: Vec<f32> = stored.iter().map(|&d| d as f32 / 65535.0).collect();
+            depth_images.push((sampled, image));
+        }
+        let normals = unit_normals(texels - 8);
+        let half: Vec<u16> = normals
+            .iter()
+            .flat_map(|n| {
+                let c = *n * 0.5 + Vec3::splat(0.5);
+                [f32_to_f16(c.x), f32_to_f16(c.y), f32_to_f16(c.z), f32_to_f16(1.0)]
+            })
+            .collect();
+        let half_rgb: Vec<[f32; 3]> =
+            half.chunks(4).map(|c| [f16_to_f32(c[0]), f16_to_f32(c[1]), f16_to_f32(c[2])]).collect();
+        let ten: Vec<u32> = normals
+            .iter()
+            .map(|n| {
+                let c = (*n * 0.5 + Vec3::splat(0.5)) * 1023.0;
+                (c.x.round() as u32) | ((c.y.round() as u32) << 10) | ((c.z.round() as u32) << 20) | (3 << 30)
+            })
+            .collect();
+        let ten_rgb: Vec<[f32; 3]> = ten
+            .iter()
+            .map(|&w| {
+                [(w & 1023) as f32 / 1023.0, ((w >> 10) & 1023) as f32 / 1023.0, ((w >> 20) & 1023) as f32 / 1023.0]
+            })
+            .collect();
+        let half_image = gpu.create_image_2d(vk::Format::R16G16B16A16_SFLOAT, inner.x, inner.y, usage).unwrap();
+        gpu.upload_image(&half_image, bytemuck::cast_slice(&half), shader_read).unwrap();
+        let ten_image = gpu.create_image_2d(vk::Format::A2B10G10R10_UNORM_PACK32, inner.x, inner.y, usage).unwrap();
+        gpu.upload_image(&ten_image, bytemuck::cast_slice(&ten), shader_read).unwrap();
+        let depth_out: Vec<_> =
+            conventions.iter().map(|_| gpu.upload(&vec![-1.0f32; pixels], storage).unwrap()).collect();
+        let normals_out: Vec<_> = (0..2).map(|_| gpu.upload(&vec![0u32; pixels], storage).unwrap()).collect();
+        let pool = adapters.create_descriptor_pool(gpu, conventions.len() as u32).unwrap();
+        gpu.run_commands(|cb| {
+            for (k, (convention, _)) in conventions.iter().enumerate() {
+                let params = ImportParams { depth_convention: *convention, ..base };
+                let depth = EngineImage { view: depth_images[k].1.view, layout: depth_layout };
+                let normal_image =
+                    [&half_image, &ten_image].get(k).map(|i| EngineImage { view: i.view, layout: shader_read });
+                let normal = normal_image.map(|n| (n, &normals_out[k]));
+                adapters.record_import(gpu, cb, pool, &params, (depth, &depth_out[k]), normal).unwrap();
+            }
+        })
+        .unwrap();
+        for (k, (convention, _)) in conventions.iter().enumerate() {
+            let params = ImportParams { depth_convention: *convention, ..base };
+            let want = cpu::import_depth(&params, &depth_images[k].0);
+            let got: Vec<f32> = gpu.download(&depth_out[k]).unwrap();
+            common::assert_same_len(&got, &want, "D16 import");
+            for (&g, &w) in got.iter().zip(&want) {
+                let (g, w) = (g as f64, w as f64);
+                let kappa = if *convention == DEPTH_STANDARD { w * (FAR - NEAR) / (NEAR * FAR) } else { 0.0 };
+                let tol = 8.0 * U * (1.0 + kappa);
+                assert!((g - w).abs() / w <= tol, "D16, convention {convention}: gpu {g} cpu {w}");
+            }
+        }
+        for (k, (name, rgb)) in [("RGBA16F", &half_rgb), ("A2B10G10R10", &ten_rgb)].into_iter().enumerate() {
+            let want = cpu::import_normals(&base, rgb);
+            let got: Vec<u32> = gpu.download(&normals_out[k]).unwrap();
+            common::assert_same_len(&got, &want, name);
+            let identical = got.iter().zip(&want).filter(|(a, b)| a == b).count();
+            eprintln!("{name} normals: {identical}/{pixels} identical codes");
+            assert!(identical as f64 >= 0.999 * pixels as f64, "{name}: only {identical}/{pixels} identical codes");
+        }
+        adapters.destroy_descriptor_pool(gpu, pool);
+        for b in depth_out.into_iter().chain(normals_out) {
+            gpu.free_buffer(b);
+        }
+        for image in depth_images.into_iter().map(|d| d.1).chain([half_image, ten_image]) {
+            gpu.free_image(image);
+        }
+        adapters.destroy(gpu);
+        common::assert_validation_clean(&vulkan);
+    }
 }
