@@ -511,7 +511,7 @@ mod vulkan {
         }
         let e = x.log2().floor() as i32;
         let mant = (x / 2f64.powi(e) * 1024.0).round() as u32 - 1024;
-        if mant == 1024 { (((e + 16) as u16) << 10) as u16 } else { (((e + 15) as u16) << 10) | mant as u16 }
+        if mant == 1024 { ((e + 16) as u16) << 10 } else { (((e + 15) as u16) << 10) | mant as u16 }
     }
 
     /// The other engine formats through the import: a D16 depth buffer (each convention but

@@ -186,48 +186,6 @@ fn hbao_occlusion_matches_the_formula() {
     assert_eq!(hbao_occlusion(&frame, &s(0.5), frame.position + vec3(0.0, 0.0, 2.5), radius), 0.0);
 }
 
-/// Pass 2 (spec svao-raysd §9) on the CPU from a run's own pass-1 buffers and SD map, refining
-/// only the flagged samples `keep` selects by their running index: all reproduces the run's
-/// pass-2 AO; leaving every k-th out models a pass 2 that misses 1 in k flagged samples (they
-/// keep their pass-1 value).
-fn pass2_refining(
-    svao: &aokit_shaders::svao::SvaoFrame,
-    g: &aokit_cpu::GBufferImage,
-    d: &aokit_shaders::graph::Refinement,
-    keep: impl Fn(u64) -> bool,
-) -> Vec<f32> {
-    use aokit_shaders::common::gbuffer_read::GBufferSlices;
-    use aokit_shaders::glam::uvec2;
-    use aokit_shaders::raysd::SdMapRefine;
-    use aokit_shaders::svao::{Refine, Refined, pass2_pixel};
-    use aokit_shaders::vao::kernel::{LineSample, PixelFrame};
-    struct Some_<'a, F> {
-        inner: SdMapRefine<'a>,
-        keep: F,
-        k: u64,
-    }
-    impl<F: Fn(u64) -> bool> Refine for Some_<'_, F> {
-        fn refine(&mut self, f: &PixelFrame, s: &LineSample, v: f32, z: f32) -> Refined {
-            self.k += 1;
-            if (self.keep)(self.k) { self.inner.refine(f, s, v, z) } else { Refined { v, rays: 0 } }
-        }
-    }
-    let params = &svao.params;
-    let view = &params.vao.view;
-    let size = view.size();
-    let gb = GBufferSlices { depth: &g.depth, normals: &g.normals, width: g.width };
-    let mut out = d.ao_pass1.clone();
-    let mut refine = Some_ { inner: SdMapRefine { map: &d.sd_map, params }, keep, k: 0 };
-    for y in view.guard..size.y - view.guard {
-        for x in view.guard..size.x - view.guard {
-            let p = uvec2(x, y);
-            let i = view.index(p);
-            out[i] = pass2_pixel(&gb, &[], params, p, d.ao_pass1[i], d.mask[i], &mut refine).ao;
-        }
-    }
-    out
-}
-
 /// HBAO+ with the SD map on Vulkan against the CPU (same G-buffer): pass-1 masks identical,
 /// pass-2 and final AO within bounds derived from a pass 2 that misses some flagged samples (the
 /// SD maps agree only statistically); plain HBAO+ within 1/255 on
@@ -255,10 +213,19 @@ fn hbao_vulkan_agrees_with_cpu() {
     // observed 99.99 %); the final (blurred) AO under the same MSE bound (observed 2e-7).
     let svao = SdOptions { hbao: true, ..Default::default() }.frame(&frame.desc(), Secondary::StochasticDepth);
     let dc = c.debug.as_ref().unwrap();
-    let (ca, cb) = common::inner_pair(&view, &pass2_refining(&svao, &g, dc, |_| true), &c.ao);
+    let (ca, cb) = common::inner_pair(
+        &view,
+        &common::pass2_refining(&svao.params, &g, (&dc.ao_pass1, &dc.mask), &dc.sd_map, |_| true),
+        &c.ao,
+    );
     assert!(ca == cb, "pass2_refining must reproduce the CPU's pass 2");
-    let missing =
-        |every: u64| common::agreement::inner(&view, &c.ao, &pass2_refining(&svao, &g, dc, |k| k % every != 0));
+    let missing = |every: u64| {
+        common::agreement::inner(
+            &view,
+            &c.ao,
+            &common::pass2_refining(&svao.params, &g, (&dc.ao_pass1, &dc.mask), &dc.sd_map, |k| k % every != 0),
+        )
+    };
     let (m10, m50) = (missing(10), missing(50));
     let (max_mse, min_within) = (m50.mse / 10.0, 1.0 - (1.0 - m10.within) / 10.0);
     let a = common::agreement::inner(&view, &c.ao, &v.ao);

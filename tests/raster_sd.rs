@@ -111,48 +111,6 @@ fn coverage_keeps_the_expected_fraction_of_samples() {
     }
 }
 
-/// Pass 2 (spec svao-raysd §9) on the CPU from a run's own pass-1 buffers and SD map, refining
-/// only the flagged samples `keep` selects by their running index: all reproduces the run's
-/// pass-2 AO; leaving every k-th out models a pass 2 that misses 1 in k flagged samples (they
-/// keep their pass-1 value).
-fn pass2_refining(
-    svao: &aokit_shaders::svao::SvaoFrame,
-    g: &aokit_cpu::GBufferImage,
-    d: &aokit_shaders::graph::Refinement,
-    keep: impl Fn(u64) -> bool,
-) -> Vec<f32> {
-    use aokit_shaders::common::gbuffer_read::GBufferSlices;
-    use aokit_shaders::glam::uvec2;
-    use aokit_shaders::raysd::SdMapRefine;
-    use aokit_shaders::svao::{Refine, Refined, pass2_pixel};
-    use aokit_shaders::vao::kernel::{LineSample, PixelFrame};
-    struct Some_<'a, F> {
-        inner: SdMapRefine<'a>,
-        keep: F,
-        k: u64,
-    }
-    impl<F: Fn(u64) -> bool> Refine for Some_<'_, F> {
-        fn refine(&mut self, f: &PixelFrame, s: &LineSample, v: f32, z: f32) -> Refined {
-            self.k += 1;
-            if (self.keep)(self.k) { self.inner.refine(f, s, v, z) } else { Refined { v, rays: 0 } }
-        }
-    }
-    let params = &svao.params;
-    let view = &params.vao.view;
-    let size = view.size();
-    let gb = GBufferSlices { depth: &g.depth, normals: &g.normals, width: g.width };
-    let mut out = d.ao_pass1.clone();
-    let mut refine = Some_ { inner: SdMapRefine { map: &d.sd_map, params }, keep, k: 0 };
-    for y in view.guard..size.y - view.guard {
-        for x in view.guard..size.x - view.guard {
-            let p = uvec2(x, y);
-            let i = view.index(p);
-            out[i] = pass2_pixel(&gb, &[], params, p, d.ao_pass1[i], d.mask[i], &mut refine).ao;
-        }
-    }
-    out
-}
-
 /// CPU ≡ Vulkan for the raster SD map on the same G-buffer: pass-1 masks identical, pass-2 AO
 /// without bias, MSE and fraction within bounds derived from a pass 2 that refines half the
 /// flagged samples (fragment positions differ in the last bits, so the hashes differ: statistical);
@@ -186,13 +144,17 @@ fn raster_sd_vulkan_agrees_with_cpu() {
     let svao = SdOptions { raster: true, ..Default::default() }
         .frame(&frame.desc(), aokit_shaders::svao::Secondary::StochasticDepth);
     let dc = c.debug.as_ref().unwrap();
-    let (ca, cb) = common::inner_pair(&view, &pass2_refining(&svao, &g, dc, |_| true), &c.ao);
+    let (ca, cb) = common::inner_pair(
+        &view,
+        &common::pass2_refining(&svao.params, &g, (&dc.ao_pass1, &dc.mask), &dc.sd_map, |_| true),
+        &c.ao,
+    );
     assert!(ca == cb, "pass2_refining must reproduce the CPU's pass 2");
     let bias = |x: &[f32]| {
         let (a, b) = common::inner_pair(&view, x, &c.ao);
         a.iter().zip(&b).map(|(x, y)| *x as f64 - *y as f64).sum::<f64>() / a.len() as f64
     };
-    let half_ao = pass2_refining(&svao, &g, dc, |k| k % 2 == 0);
+    let half_ao = common::pass2_refining(&svao.params, &g, (&dc.ao_pass1, &dc.mask), &dc.sd_map, |k| k % 2 == 0);
     let (half, half_bias) = (common::agreement::inner(&view, &c.ao, &half_ao), bias(&half_ao));
     let a = common::agreement::inner(&view, &c.ao, &v.ao);
     let gpu_bias = bias(&v.ao);

@@ -387,45 +387,6 @@ fn pass_2_needs_lie_inside_the_texel_interval(divisor: u32) {
     assert!(requested > 100);
 }
 
-/// Pass 2 (spec svao-raysd §9) from `pass1` and the SD map `map`, refining only the flagged
-/// samples `keep` selects by their running index (all: `run_pass2_sd`'s result; every k-th
-/// left out: a pass 2 that misses 1 in k flagged samples, which keep their pass-1 value).
-fn pass2_refining(
-    params: &SvaoParams,
-    g: &aokit_cpu::GBufferImage,
-    pass1: &aokit_cpu::svao::Pass1,
-    map: &[f32],
-    keep: impl Fn(u64) -> bool,
-) -> Vec<f32> {
-    use aokit_shaders::raysd::SdMapRefine;
-    use aokit_shaders::svao::{Refine, Refined, pass2_pixel};
-    use aokit_shaders::vao::kernel::{LineSample, PixelFrame};
-    struct Some_<'a, F> {
-        inner: SdMapRefine<'a>,
-        keep: F,
-        k: u64,
-    }
-    impl<F: Fn(u64) -> bool> Refine for Some_<'_, F> {
-        fn refine(&mut self, f: &PixelFrame, s: &LineSample, v: f32, z: f32) -> Refined {
-            self.k += 1;
-            if (self.keep)(self.k) { self.inner.refine(f, s, v, z) } else { Refined { v, rays: 0 } }
-        }
-    }
-    let view = &params.vao.view;
-    let size = view.size();
-    let gb = GBufferSlices { depth: &g.depth, normals: &g.normals, width: g.width };
-    let mut out = pass1.ao.clone();
-    let mut refine = Some_ { inner: SdMapRefine { map, params }, keep, k: 0 };
-    for y in view.guard..size.y - view.guard {
-        for x in view.guard..size.x - view.guard {
-            let p = uvec2(x, y);
-            let i = view.index(p);
-            out[i] = pass2_pixel(&gb, &[], params, p, pass1.ao[i], pass1.mask[i], &mut refine).ao;
-        }
-    }
-    out
-}
-
 /// Hardware reports hits in no particular order: the SD map from shuffled hit orders differs
 /// texel by texel, but the AO it yields agrees with the traversal-order one far more closely than
 /// a pass 2 that misses 1 in 50 flagged samples (bounds below).
@@ -449,12 +410,16 @@ fn sd_map_result_does_not_depend_on_hit_order() {
     let differing = map_a.layers.iter().zip(&map_b.layers).filter(|(a, b)| a != b).count();
     assert!(differing > 0, "shuffling the hit order should change some stored layers");
     let view = &svao.params.vao.view;
-    assert_eq!(pass2_refining(&svao.params, &g, &pass1, &map_a.layers, |_| true), ao_a, "pass2_refining");
+    assert_eq!(
+        common::pass2_refining(&svao.params, &g, (&pass1.ao, &pass1.mask), &map_a.layers, |_| true),
+        ao_a,
+        "pass2_refining"
+    );
     let missing = |every: u64| {
         common::agreement::inner(
             view,
             &ao_a,
-            &pass2_refining(&svao.params, &g, &pass1, &map_a.layers, |k| k % every != 0),
+            &common::pass2_refining(&svao.params, &g, (&pass1.ao, &pass1.mask), &map_a.layers, |k| k % every != 0),
         )
     };
     // The bound is what the comparison must detect: a pass 2 that leaves flagged samples

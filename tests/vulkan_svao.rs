@@ -11,10 +11,9 @@ use aokit_cpu::bvh::replay_any_hit;
 use aokit_shaders::common::gbuffer_read::GBufferSlices;
 use aokit_shaders::glam::uvec2;
 use aokit_shaders::graph::Refinement;
-use aokit_shaders::raysd::{SdMapRefine, SdPayload, reservoir_any_hit, sd_ray};
+use aokit_shaders::raysd::{SdPayload, reservoir_any_hit, sd_ray};
 use aokit_shaders::svao::settings::{RAYSD, RAYSVAO};
-use aokit_shaders::svao::{Refine, Refined, Secondary, SvaoFrame, pass2_pixel};
-use aokit_shaders::vao::kernel::{LineSample, PixelFrame};
+use aokit_shaders::svao::{Secondary, SvaoFrame};
 
 fn ulps(a: u32, b: u32) -> u32 {
     (a as i64 - b as i64).unsigned_abs() as u32
@@ -22,43 +21,6 @@ fn ulps(a: u32, b: u32) -> u32 {
 
 fn debug(run: &TechniqueRun) -> &Refinement {
     run.debug.as_ref().expect("stenciled techniques report their buffers")
-}
-
-/// Pass 2 (spec svao-raysd §9) on the CPU from a run's own pass-1 buffers and SD map, refining
-/// only the flagged samples `keep` selects (by their running index over the row): `keep(k) =
-/// true` for all reproduces the run's pass-2 AO; every other one models a pass 2 that refines
-/// half the flagged samples (the rest keep their pass-1 value).
-fn pass2_refining(
-    svao: &SvaoFrame,
-    g: &aokit_cpu::GBufferImage,
-    d: &Refinement,
-    keep: impl Fn(u64) -> bool + Copy,
-) -> Vec<f32> {
-    struct Some_<'a, F> {
-        inner: SdMapRefine<'a>,
-        keep: F,
-        k: u64,
-    }
-    impl<F: Fn(u64) -> bool> Refine for Some_<'_, F> {
-        fn refine(&mut self, f: &PixelFrame, s: &LineSample, v: f32, z: f32) -> Refined {
-            self.k += 1;
-            if (self.keep)(self.k) { self.inner.refine(f, s, v, z) } else { Refined { v, rays: 0 } }
-        }
-    }
-    let params = &svao.params;
-    let view = &params.vao.view;
-    let size = view.size();
-    let gb = GBufferSlices { depth: &g.depth, normals: &g.normals, width: g.width };
-    let mut out = d.ao_pass1.clone();
-    let mut refine = Some_ { inner: SdMapRefine { map: &d.sd_map, params }, keep, k: 0 };
-    for y in view.guard..size.y - view.guard {
-        for x in view.guard..size.x - view.guard {
-            let p = uvec2(x, y);
-            let i = view.index(p);
-            out[i] = pass2_pixel(&gb, &[], params, p, d.ao_pass1[i], d.mask[i], &mut refine).ao;
-        }
-    }
-    out
 }
 
 /// Fisher–Yates with SplitMix64 (a hit order as hardware might report it).
@@ -307,7 +269,7 @@ fn raysd_vulkan_agrees_with_cpu_sim() {
 
     // Pass 2: the CPU's pass-2 AO from its own buffers is reproduced by `pass2_refining`, so the
     // same with every other flagged sample left unrefined is the mutation to detect.
-    let d2 = pass2_refining(&svao, &g, dc, |_| true);
+    let d2 = common::pass2_refining(&svao.params, &g, (&dc.ao_pass1, &dc.mask), &dc.sd_map, |_| true);
     assert_eq!(common::inner_pair(view, &d2, &c.ao), common::inner_pair(view, &c.ao, &c.ao), "pass2_refining");
     // The GPU's SD map differs from the CPU's only where the any-hit order changed the reservoir
     // (measured: 2978 of 446336 SD texels), so the AO agrees far more closely than a defective
@@ -317,8 +279,13 @@ fn raysd_vulkan_agrees_with_cpu_sim() {
     // same mutations: MSE ≤ 1/10 of the 1-in-50 effect (≈ 9e-6; observed 1.1e-6), fraction
     // within ≥ 1 − 1/10 of the 1-in-10 shortfall (≈ 99.78 %; observed 99.94 %); the final
     // (blurred) AO under the same MSE bound (observed 5e-8).
-    let missing =
-        |every: u64| common::agreement::inner(view, &c.ao, &pass2_refining(&svao, &g, dc, |k| k % every != 0));
+    let missing = |every: u64| {
+        common::agreement::inner(
+            view,
+            &c.ao,
+            &common::pass2_refining(&svao.params, &g, (&dc.ao_pass1, &dc.mask), &dc.sd_map, |k| k % every != 0),
+        )
+    };
     let (m10, m50) = (missing(10), missing(50));
     let max_mse = m50.mse / 10.0;
     let min_within = 1.0 - (1.0 - m10.within) / 10.0;

@@ -59,6 +59,48 @@ pub fn step_gbuffer(
     (frame, vao, blur, depth, normals)
 }
 
+/// Pass 2 (spec svao-raysd §9) on the CPU from a run's own pass-1 AO and mask and its SD map
+/// `map`, refining only the flagged samples `keep` selects by their running index: `|_| true`
+/// reproduces the run's pass-2 AO; leaving every k-th out models a pass 2 that misses 1 in k
+/// flagged samples (they keep their pass-1 value) — the defect the SD tests' bounds are
+/// derived from.
+pub fn pass2_refining(
+    params: &aokit_shaders::svao::SvaoParams,
+    g: &aokit_cpu::GBufferImage,
+    (ao_pass1, mask): (&[f32], &[u32]),
+    map: &[f32],
+    keep: impl Fn(u64) -> bool,
+) -> Vec<f32> {
+    use aokit_shaders::common::gbuffer_read::GBufferSlices;
+    use aokit_shaders::raysd::SdMapRefine;
+    use aokit_shaders::svao::{Refine, Refined, pass2_pixel};
+    use aokit_shaders::vao::kernel::{LineSample, PixelFrame};
+    struct Some_<'a, F> {
+        inner: SdMapRefine<'a>,
+        keep: F,
+        k: u64,
+    }
+    impl<F: Fn(u64) -> bool> Refine for Some_<'_, F> {
+        fn refine(&mut self, f: &PixelFrame, s: &LineSample, v: f32, z: f32) -> Refined {
+            self.k += 1;
+            if (self.keep)(self.k) { self.inner.refine(f, s, v, z) } else { Refined { v, rays: 0 } }
+        }
+    }
+    let view = &params.vao.view;
+    let size = view.size();
+    let gb = GBufferSlices { depth: &g.depth, normals: &g.normals, width: g.width };
+    let mut out = ao_pass1.to_vec();
+    let mut refine = Some_ { inner: SdMapRefine { map, params }, keep, k: 0 };
+    for y in view.guard..size.y - view.guard {
+        for x in view.guard..size.x - view.guard {
+            let p = uvec2(x, y);
+            let i = view.index(p);
+            out[i] = pass2_pixel(&gb, &[], params, p, ao_pass1[i], mask[i], &mut refine).ao;
+        }
+    }
+    out
+}
+
 /// Fail on any validation warning or error.
 pub fn assert_validation_clean(r: &VulkanRenderer) {
     let messages = r.gpu.validation_messages();
