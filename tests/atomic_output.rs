@@ -4,8 +4,9 @@
 //! a complete new one, never a truncated one; a normal run leaves no temporary file behind.
 //!
 //! A ground-truth render of sponza on the CPU (a couple of seconds) writes a PNG and an EXR over
-//! old ones; it is killed at fixed delays (loading, tracing), at the moment the PNG's or the
-//! EXR's write is seen starting (a temporary file appears or the destination changes), and by
+//! old ones; it is killed at fixed delays (loading, tracing), in the middle of the PNG's and of
+//! the EXR's write (stopped once its temporary file holds bytes, confirmed unfinished, then
+//! SIGKILLed; asserted to have happened), and by
 //! the file-size limit while the PNG or the EXR is being written. A run whose EXR write fails
 //! (the limit with SIGXFSZ ignored: EFBIG) reports one line naming the EXR, keeps the old EXR
 //! and removes its temporary file.
@@ -161,25 +162,54 @@ fn spawn(dir: &Path) -> Child {
     Command::new(BIN).args(render_args(dir)).stdout(Stdio::null()).stderr(Stdio::null()).spawn().unwrap()
 }
 
-/// Signs that the write of `name` in `dir` began: a temporary file of it, or the destination no
-/// longer the old file (its size or modification time changed).
-fn write_started(dir: &Path, name: &str, old: &std::fs::Metadata) -> Option<String> {
-    let entries = std::fs::read_dir(dir).ok()?;
-    for e in entries.flatten() {
+/// The temporary file of `name` in `dir` once bytes have reached it (its write has begun):
+/// (file name, length).
+fn temp_with_bytes(dir: &Path, name: &str) -> Option<(String, u64)> {
+    for e in std::fs::read_dir(dir).ok()?.flatten() {
         let n = e.file_name().to_string_lossy().into_owned();
-        if n != name && n.contains(name) {
-            return Some(format!("temporary file {n}"));
+        if aokit::output::is_temp_name(&n)
+            && n.starts_with(&format!(".{name}."))
+            && let Ok(m) = e.metadata()
+            && m.len() > 0
+        {
+            return Some((n, m.len()));
         }
-    }
-    let now = std::fs::metadata(dir.join(name)).ok()?;
-    if now.len() != old.len() || now.modified().ok() != old.modified().ok() {
-        return Some(format!("{name} changed ({} bytes)", now.len()));
     }
     None
 }
 
+const SIGKILL: i32 = 9;
+/// Linux's SIGSTOP (x86, ARM, RISC-V).
+const SIGSTOP: i32 = 19;
+
+unsafe extern "C" {
+    /// libc's `kill(2)` (std links libc; the test crate has no libc dependency).
+    fn kill(pid: i32, sig: i32) -> i32;
+}
+
+fn signal(pid: i32, sig: i32) {
+    // SAFETY: kill(2) with a child's pid and a signal number has no memory effects.
+    let rc = unsafe { kill(pid, sig) };
+    assert_eq!(rc, 0, "kill({pid}, {sig}): {}", std::io::Error::last_os_error());
+}
+
+/// Wait until `pid` is in the stopped state (/proc/<pid>/stat field 3 is `T`), or gone.
+fn wait_stopped(pid: i32) {
+    let start = Instant::now();
+    loop {
+        let Ok(stat) = std::fs::read_to_string(format!("/proc/{pid}/stat")) else { return };
+        let state = stat.rsplit_once(')').and_then(|(_, rest)| rest.split_whitespace().next());
+        if matches!(state, Some("T" | "t" | "Z" | "X")) {
+            return;
+        }
+        assert!(start.elapsed() < Duration::from_secs(10), "pid {pid} did not stop: {stat}");
+        std::thread::sleep(Duration::from_micros(20));
+    }
+}
+
 #[test]
 fn sigkill_leaves_old_or_complete_new_files() {
+    use std::os::unix::process::ExitStatusExt;
     let r = reference();
     let dir = scratch("sigkill");
     // Fixed delays: start-up and scene loading, tracing, and near the end (perhaps writing).
@@ -195,36 +225,62 @@ fn sigkill_leaves_old_or_complete_new_files() {
         let state = outputs(&dir, &when);
         eprintln!("{when}: {state:?} (exit {status})");
     }
-    // At the moment each output's write is seen starting: the interesting one.
-    for name in ["out.png", "out.exr"] {
-        reset(&dir);
-        let old = std::fs::metadata(dir.join(name)).unwrap();
-        let mut child = spawn(&dir);
-        let start = Instant::now();
-        let seen = loop {
-            if let Some(what) = write_started(&dir, name, &old) {
-                let _ = child.kill();
-                break Some(what);
+    // Mid-write, deterministically: poll for the output's temporary file holding bytes (its
+    // write has begun), stop the run there (SIGSTOP, so it cannot finish the write while we
+    // look), confirm the temporary file is still there and the destination still the old file
+    // (the write has not completed), and only then SIGKILL it. A run that slips past the window
+    // (the write done between poll and stop) is not counted and the attempt is repeated; the
+    // test fails unless the kill lands mid-write for each output within `ATTEMPTS` runs.
+    const ATTEMPTS: usize = 8;
+    for (name, old_bytes) in [("out.png", old_png()), ("out.exr", old_exr())] {
+        let mut caught = None;
+        let mut log = Vec::new();
+        for attempt in 1..=ATTEMPTS {
+            reset(&dir);
+            let mut child = spawn(&dir);
+            let pid = child.id() as i32;
+            let start = Instant::now();
+            let stopped = loop {
+                if let Some((temp, len)) = temp_with_bytes(&dir, name) {
+                    signal(pid, SIGSTOP);
+                    wait_stopped(pid);
+                    break Some((temp, len));
+                }
+                if child.try_wait().unwrap().is_some() {
+                    break None;
+                }
+                assert!(start.elapsed() < Duration::from_secs(120), "the render did not finish");
+                std::thread::sleep(Duration::from_micros(50));
+            };
+            // Stopped (or exited): nothing changes in `dir` from here until the kill.
+            let mid_write = stopped.as_ref().and_then(|(temp, _)| {
+                let len = std::fs::metadata(dir.join(temp)).ok()?.len();
+                (std::fs::read(dir.join(name)).ok()? == old_bytes).then_some(len)
+            });
+            let _ = child.kill();
+            let status = child.wait().unwrap();
+            let when = match (&stopped, mid_write) {
+                (Some((temp, _)), Some(len)) => format!("SIGKILL while writing {name} ({temp}: {len} bytes)"),
+                (Some((temp, len)), None) => format!("{name}: {temp} ({len} bytes) seen, but the write completed"),
+                (None, _) => format!("{name}: the run finished before its write was seen"),
+            };
+            let state = outputs(&dir, &when);
+            log.push(format!("attempt {attempt}: {when}: {state:?} (exit {status})"));
+            if let Some(len) = mid_write {
+                assert_eq!(status.signal(), Some(SIGKILL), "{when}: the run must die by SIGKILL ({status})");
+                let png = if name == "out.exr" { State::New } else { State::Old };
+                assert_eq!(state, (png, State::Old), "{when}");
+                let temps: Vec<String> =
+                    entries(&dir).into_iter().filter(|n| aokit::output::is_temp_name(n) && n.contains(name)).collect();
+                assert_eq!(temps.len(), 1, "{when}: the killed write's temporary file stays: {temps:?}");
+                let full = if name == "out.png" { r.png.len() } else { r.exr.len() } as u64;
+                assert!(len > 0 && len <= full, "{when}: a partial write of the {full}-byte output");
+                caught = Some(len);
+                break;
             }
-            if child.try_wait().unwrap().is_some() {
-                break None;
-            }
-            assert!(start.elapsed() < Duration::from_secs(120), "the render did not finish");
-            std::thread::sleep(Duration::from_micros(100));
-        };
-        child.wait().unwrap();
-        let when = match &seen {
-            Some(what) => format!("SIGKILL at {what}"),
-            None => format!("{name}: the run finished before its write was seen"),
-        };
-        let state = outputs(&dir, &when);
-        eprintln!("{when}: {state:?}");
-        if seen.is_some() && name == "out.exr" {
-            assert_eq!(state.0, State::New, "{when}: the PNG was written before the EXR");
         }
-        if seen.is_none() {
-            assert_eq!(state, (State::New, State::New), "{when}");
-        }
+        eprintln!("{}", log.join("\n"));
+        assert!(caught.is_some(), "{name}: no run was killed in the middle of its write:\n{}", log.join("\n"));
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }

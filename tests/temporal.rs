@@ -409,15 +409,32 @@ fn frame_rotations_leave_frame_zero_alone_and_move_later_frames() {
         p
     };
     assert_eq!((payload(0).rotation, payload(3).rotation), (0.0, frame_rotation(3).x));
-    let bary = |i: usize| aokit_shaders::glam::Vec2::new(u[2 * i] * 0.5, u[2 * i + 1] * 0.5);
+    // The 7th hit (count 6 → 7) takes slot ⌊u·7⌋ and enters the map iff that is < N = 2: each of
+    // the `HITS` candidates is kept with p = 2/7, so the kept count is Binomial(HITS, p) for a
+    // uniform hash: mean HITS·p, σ = √(HITS·p·(1 − p)). The interval is mean ± 5σ (two-sided
+    // false-failure probability 5.7e-7 for a correct reservoir). The defects it must catch are
+    // an off-by-one in the count or in N: p = 2/6 (count not incremented) or 2/8 (incremented
+    // twice), 1/7 or 3/7. With HITS = 20 000: mean 5714.3, σ = 63.9, interval [5395, 6033];
+    // 2/8 gives 5000 ± 61 (6.4 of its σ below the interval), 2/6 gives 6667 ± 67 (9.5 σ above).
+    // (The old 1000 hits, σ = 14.3, could not separate 2/7 from 2/6 at any useful confidence.)
+    const HITS: usize = 20_000;
+    let h = common::noise(2 * HITS, 11);
+    let bary = |i: usize| aokit_shaders::glam::Vec2::new(h[2 * i] * 0.5, h[2 * i + 1] * 0.5);
     let slots =
-        |frame| -> Vec<u32> { (0..1000).map(|i| reservoir_candidate(&mut payload(frame), 0.5, bary(i)).0).collect() };
+        |frame| -> Vec<u32> { (0..HITS).map(|i| reservoir_candidate(&mut payload(frame), 0.5, bary(i)).0).collect() };
     let (s0, s1) = (slots(0), slots(1));
     let changed = s0.iter().zip(&s1).filter(|(a, b)| a != b).count();
-    assert!(changed > 200, "the rotation changes {changed} of 1000 slot choices");
+    assert!(changed > HITS / 5, "the rotation changes {changed} of {HITS} slot choices");
+    let p = 2.0 / 7.0;
+    let (mean, sigma) = (HITS as f64 * p, (HITS as f64 * p * (1.0 - p)).sqrt());
+    let (lo, hi) = ((mean - 5.0 * sigma).ceil() as usize, (mean + 5.0 * sigma).floor() as usize);
     for s in [&s0, &s1] {
         let kept = s.iter().filter(|&&s| s != NO_SLOT).count();
-        assert!((250..420).contains(&kept), "N/count = 2/7 of the hits enter the map: {kept}");
+        let z = (kept as f64 - mean) / sigma;
+        assert!(
+            (lo..=hi).contains(&kept),
+            "N/count = 2/7 of {HITS} hits enter the map: {kept} kept, expected {mean:.1} ± 5σ = [{lo}, {hi}] (z = {z:.2})"
+        );
     }
 
     // Raster SD: masks change with the frame, the mean kept count stays α·N = 1.5.
