@@ -101,6 +101,22 @@ pub fn pass2_refining(
     out
 }
 
+/// Pass 2 refined only where `keep` says, on a CPU run's own refinement buffers `d`, after
+/// asserting that refining every flagged sample reproduces the run's pass-2 AO `ao` over the
+/// inner image: the defect images the SD tests derive their bounds from then differ from `ao`
+/// only by the samples left out.
+pub fn pass2_defects<'a>(
+    params: &'a aokit_shaders::svao::SvaoParams,
+    g: &'a aokit_cpu::GBufferImage,
+    d: &'a aokit_shaders::graph::Refinement,
+    ao: &[f32],
+) -> impl Fn(&dyn Fn(u64) -> bool) -> Vec<f32> + 'a {
+    let refining = move |keep: &dyn Fn(u64) -> bool| pass2_refining(params, g, (&d.ao_pass1, &d.mask), &d.sd_map, keep);
+    let (all, run) = inner_pair(&params.vao.view, &refining(&|_| true), ao);
+    assert!(all == run, "pass2_refining must reproduce the CPU's pass 2");
+    refining
+}
+
 /// Fail on any validation warning or error.
 pub fn assert_validation_clean(r: &VulkanRenderer) {
     let messages = r.gpu.validation_messages();
