@@ -199,7 +199,14 @@ pub struct AoContext<G: Borrow<Gpu> = Gpu> {
     frame: u64,
     #[cfg(feature = "testing")]
     sabotage: Sabotage,
+    #[cfg(feature = "testing")]
+    free_audit: Option<FreeAudit>,
 }
+
+/// A test's use-after-free check (feature `testing`): called before each retired buffer or pool
+/// is freed with the last frame (1-based `record` count) whose commands may use it.
+#[cfg(feature = "testing")]
+pub type FreeAudit = Box<dyn FnMut(u64)>;
 
 /// Deliberate defects for aokit's own tests (feature `testing`): they show that the validation
 /// layer and the tests catch what they claim to catch. Never set outside a test.
@@ -210,6 +217,10 @@ pub struct Sabotage {
     /// the pass then reads what the previous one writes without a dependency, a hazard the
     /// synchronisation validation must report.
     pub omit_barrier_before: Option<usize>,
+    /// Free what a `record` replaces (a buffer re-made at another size, a descriptor pool) at
+    /// once, instead of [`FRAMES_IN_FLIGHT`] frames later: the frame before, possibly still
+    /// pending, used it. A use-after-free check must catch it.
+    pub free_retired_at_once: bool,
 }
 
 enum Retired {
@@ -235,6 +246,8 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             frame: 0,
             #[cfg(feature = "testing")]
             sabotage: Sabotage::default(),
+            #[cfg(feature = "testing")]
+            free_audit: None,
         }
     }
 
@@ -242,6 +255,12 @@ impl<G: Borrow<Gpu>> AoContext<G> {
     #[cfg(feature = "testing")]
     pub fn sabotage(&mut self, sabotage: Sabotage) {
         self.sabotage = sabotage;
+    }
+
+    /// Call `audit` before each retired resource is freed (see [`FreeAudit`]).
+    #[cfg(feature = "testing")]
+    pub fn audit_frees(&mut self, audit: FreeAudit) {
+        self.free_audit = Some(audit);
     }
 
     /// Does the sabotage leave out the barrier before pass `i`?
@@ -483,6 +502,10 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             }
         }
         memory_barrier(self.gpu(), cmd, transfer | stages, transfer | stages);
+        #[cfg(feature = "testing")]
+        if self.sabotage.free_retired_at_once {
+            self.release_retired_after(0);
+        }
         Ok(())
     }
 
@@ -756,12 +779,23 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         Ok(())
     }
 
+    /// Free what was retired [`FRAMES_IN_FLIGHT`] or more `record` calls ago.
     fn release_retired(&mut self) {
+        self.release_retired_after(FRAMES_IN_FLIGHT);
+    }
+
+    /// Free what was retired `frames` or more `record` calls ago. A resource retired while
+    /// recording frame R was last used by frame R − 1.
+    fn release_retired_after(&mut self, frames: u64) {
         let frame = self.frame;
         let (done, keep): (Vec<_>, Vec<_>) =
-            std::mem::take(&mut self.retired).into_iter().partition(|(f, _)| f + FRAMES_IN_FLIGHT <= frame);
+            std::mem::take(&mut self.retired).into_iter().partition(|(f, _)| f + frames <= frame);
         self.retired = keep;
-        for (_, r) in done {
+        for (_retired_at, r) in done {
+            #[cfg(feature = "testing")]
+            if let Some(audit) = self.free_audit.as_mut() {
+                audit(_retired_at - 1);
+            }
             self.free(r);
         }
     }

@@ -85,7 +85,7 @@ pub use context::ExternalDevice;
 pub use effect::{AoEffect, AoError, AoFrame, AoScene, AoSettings, DepthConvention, SceneGeometry};
 pub use graph::FRAMES_IN_FLIGHT;
 #[cfg(feature = "testing")]
-pub use graph::Sabotage;
+pub use graph::{FreeAudit, Sabotage};
 
 /// What feature `harness` makes public; the effect uses it either way.
 #[cfg_attr(not(feature = "harness"), allow(unused_imports))]
