@@ -321,16 +321,6 @@ mod vulkan {
     use aokit_vulkan::{Adapters, AoImage, EngineImage, Image2d};
     use ash::vk;
 
-    fn f16_to_f32(h: u16) -> f32 {
-        let (sign, exp, mant) = ((h >> 15) as i32, ((h >> 10) & 0x1F) as i32, (h & 0x3FF) as f32);
-        let magnitude = match exp {
-            0 => mant * 2f32.powi(-24),
-            31 => f32::INFINITY,
-            e => (1.0 + mant / 1024.0) * 2f32.powi(e - 15),
-        };
-        if sign == 1 { -magnitude } else { magnitude }
-    }
-
     /// Stored depth of engine texel `i` for `projection` (`None`: linear) and its view depth:
     /// depths log-spaced over [near, 0.95·far] in a scrambled order, every 11th texel background.
     fn engine_depth(projection: Option<Projection>, i: usize) -> f32 {
@@ -476,7 +466,7 @@ mod vulkan {
         let r16 = gpu.download_image(&outputs[1], vk::ImageLayout::GENERAL, 2).unwrap();
         let mut worst16: f32 = 0.0;
         for (k, (h, &w)) in r16.chunks(2).zip(&want).enumerate() {
-            let v = f16_to_f32(u16::from_le_bytes([h[0], h[1]]));
+            let v = common::f16_to_f32(u16::from_le_bytes([h[0], h[1]]));
             // One half-precision ulp (2^-10 relative; rounding may go either way), 2^-24 below
             // the normal range.
             let tol = (w * 2f32.powi(-10)).max(2f32.powi(-24));
@@ -500,18 +490,6 @@ mod vulkan {
         }
         adapters.destroy(gpu);
         common::assert_validation_clean(&vulkan);
-    }
-
-    /// Half precision of `x` in [0, 1] (round to nearest; the CPU reference reads the stored
-    /// bits back, so only the stored value matters).
-    fn f32_to_f16(x: f32) -> u16 {
-        let x = x as f64;
-        if x < 2f64.powi(-14) {
-            return (x / 2f64.powi(-24)).round() as u16;
-        }
-        let e = x.log2().floor() as i32;
-        let mant = (x / 2f64.powi(e) * 1024.0).round() as u32 - 1024;
-        if mant == 1024 { ((e + 16) as u16) << 10 } else { (((e + 15) as u16) << 10) | mant as u16 }
     }
 
     /// The other engine formats through the import: a D16 depth buffer (each convention but
@@ -553,11 +531,13 @@ mod vulkan {
             .iter()
             .flat_map(|n| {
                 let c = *n * 0.5 + Vec3::splat(0.5);
-                [f32_to_f16(c.x), f32_to_f16(c.y), f32_to_f16(c.z), f32_to_f16(1.0)]
+                [common::f32_to_f16(c.x), common::f32_to_f16(c.y), common::f32_to_f16(c.z), common::f32_to_f16(1.0)]
             })
             .collect();
-        let half_rgb: Vec<[f32; 3]> =
-            half.chunks(4).map(|c| [f16_to_f32(c[0]), f16_to_f32(c[1]), f16_to_f32(c[2])]).collect();
+        let half_rgb: Vec<[f32; 3]> = half
+            .chunks(4)
+            .map(|c| [common::f16_to_f32(c[0]), common::f16_to_f32(c[1]), common::f16_to_f32(c[2])])
+            .collect();
         let ten: Vec<u32> = normals
             .iter()
             .map(|n| {

@@ -27,7 +27,7 @@ use aokit::scene::Scene;
 use aokit::technique::{GtaoOptions, SdOptions, Technique};
 use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
 use aokit_cpu::{GBufferImage, no_progress};
-use aokit_shaders::adapters::{DEPTH_REVERSED, DEPTH_STANDARD, ImportParams};
+use aokit_shaders::adapters::{DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_REVERSED_INFINITE, DEPTH_STANDARD, ImportParams};
 use aokit_shaders::common::ViewParams;
 use aokit_shaders::common::camera::Camera;
 use aokit_shaders::common::normal_codec::decode_normal;
@@ -163,16 +163,33 @@ impl HostBuffer {
         }
     }
 
-    fn read_f32(&self, engine: &Engine, count: usize) -> Vec<f32> {
-        assert!(4 * count as u64 <= self.size);
+    fn read_bytes(&self, engine: &Engine, len: usize) -> Vec<u8> {
+        assert!(len as u64 <= self.size);
         let d = &engine.device;
-        let mut out = vec![0f32; count];
+        let mut out = vec![0u8; len];
         unsafe {
-            let ptr = d.map_memory(self.memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty()).unwrap() as *const f32;
-            std::ptr::copy_nonoverlapping(ptr, out.as_mut_ptr(), count);
+            let ptr = d.map_memory(self.memory, 0, vk::WHOLE_SIZE, vk::MemoryMapFlags::empty()).unwrap() as *const u8;
+            std::ptr::copy_nonoverlapping(ptr, out.as_mut_ptr(), len);
             d.unmap_memory(self.memory);
         }
         out
+    }
+
+    fn read_f32(&self, engine: &Engine, count: usize) -> Vec<f32> {
+        bytemuck::pod_collect_to_vec(&self.read_bytes(engine, 4 * count))
+    }
+
+    /// `count` texels of an AO image of `format` copied here, as the values a shader samples.
+    fn read_ao(&self, engine: &Engine, format: vk::Format, count: usize) -> Vec<f32> {
+        let bytes = self.read_bytes(engine, texel_bytes(format) * count);
+        match format {
+            vk::Format::R32_SFLOAT => bytemuck::pod_collect_to_vec(&bytes),
+            vk::Format::R16_SFLOAT => {
+                bytes.chunks(2).map(|h| common::f16_to_f32(u16::from_le_bytes([h[0], h[1]]))).collect()
+            }
+            vk::Format::R8_UNORM => bytes.iter().map(|&b| b as f32 / 255.0).collect(),
+            _ => unreachable!("AO format {format:?}"),
+        }
     }
 
     fn destroy(self, engine: &Engine) {
@@ -192,8 +209,10 @@ fn image_barrier(
     (src_stage, src_access): (vk::PipelineStageFlags, vk::AccessFlags),
     (dst_stage, dst_access): (vk::PipelineStageFlags, vk::AccessFlags),
 ) {
-    let aspect =
-        if image.format == vk::Format::D32_SFLOAT { vk::ImageAspectFlags::DEPTH } else { vk::ImageAspectFlags::COLOR };
+    let aspect = match image.format {
+        vk::Format::D24_UNORM_S8_UINT => vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL,
+        f => copy_aspect(f),
+    };
     let barrier = vk::ImageMemoryBarrier::default()
         .src_access_mask(src_access)
         .dst_access_mask(dst_access)
@@ -216,9 +235,30 @@ fn image_barrier(
     };
 }
 
+/// The aspect a copy of `format` reads or writes (the depth of a depth/stencil format).
+fn copy_aspect(format: vk::Format) -> vk::ImageAspectFlags {
+    match format {
+        vk::Format::D32_SFLOAT
+        | vk::Format::D16_UNORM
+        | vk::Format::X8_D24_UNORM_PACK32
+        | vk::Format::D24_UNORM_S8_UINT => vk::ImageAspectFlags::DEPTH,
+        _ => vk::ImageAspectFlags::COLOR,
+    }
+}
+
+/// Bytes per texel of a buffer ↔ image copy of `format` (the depth aspect's for depth formats:
+/// D24 depth travels in 32 bits, Vulkan spec §"Copying Data Between Buffers and Images").
+fn texel_bytes(format: vk::Format) -> usize {
+    match format {
+        vk::Format::R8_UNORM => 1,
+        vk::Format::R16_SFLOAT | vk::Format::D16_UNORM => 2,
+        vk::Format::R16G16B16A16_SFLOAT => 8,
+        _ => 4,
+    }
+}
+
 fn copy_region(image: &Image2d, buffer_offset: u64) -> vk::BufferImageCopy {
-    let aspect =
-        if image.format == vk::Format::D32_SFLOAT { vk::ImageAspectFlags::DEPTH } else { vk::ImageAspectFlags::COLOR };
+    let aspect = copy_aspect(image.format);
     vk::BufferImageCopy::default()
         .buffer_offset(buffer_offset)
         .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(aspect).layer_count(1))
@@ -233,68 +273,155 @@ const NORMAL_LAYOUT: vk::ImageLayout = vk::ImageLayout::SHADER_READ_ONLY_OPTIMAL
 // ---------------------------------------------------------------------------------------------
 // The engine's G-buffer images.
 
-/// What the engine renders: the inner image's hardware depth and RGBA8 view normals.
+/// The formats of the engine's images and its depth convention.
+#[derive(Clone, Copy, Debug)]
+struct EngineFormats {
+    depth: vk::Format,
+    convention: DepthConvention,
+    normals: vk::Format,
+    output: vk::Format,
+}
+
+impl EngineFormats {
+    /// D32 depth in `convention`, RGBA8 normals, an R32F AO image.
+    fn d32(convention: DepthConvention) -> EngineFormats {
+        EngineFormats {
+            depth: vk::Format::D32_SFLOAT,
+            convention,
+            normals: vk::Format::R8G8B8A8_UNORM,
+            output: vk::Format::R32_SFLOAT,
+        }
+    }
+}
+
+/// The adapter's number of `convention` (`aokit_shaders::adapters::depth_convention`).
+fn convention_code(convention: DepthConvention) -> u32 {
+    match convention {
+        DepthConvention::Standard | DepthConvention::NegativeOneToOne => DEPTH_STANDARD,
+        DepthConvention::Reversed => DEPTH_REVERSED,
+        DepthConvention::ReversedInfinite => DEPTH_REVERSED_INFINITE,
+        DepthConvention::Linear => DEPTH_LINEAR,
+    }
+}
+
+/// Is `convention`'s stored depth the standard `f·(z − n)/(z·(f − n))`, whose inverse has
+/// the condition number κ = z·(f − n)/(n·f)?
+fn is_standard(convention: DepthConvention) -> bool {
+    matches!(convention, DepthConvention::Standard | DepthConvention::NegativeOneToOne)
+}
+
+/// What the engine renders: the inner image's hardware depth and view normals.
 struct EngineGBuffer {
     size: UVec2,
-    /// Stored D32 values.
+    formats: EngineFormats,
+    /// The depth image's texels as the sampler returns them (UNORM formats: `u/(2^b − 1)`), for
+    /// the CPU import.
     depth: Vec<f32>,
+    /// The depth image's stored texels (the copy's layout of its depth aspect).
+    depth_bytes: Vec<u8>,
     /// Stored D32 values of the depth-peeled second layer, for dual-depth graphs.
     second: Option<Vec<f32>>,
-    rgba8: Vec<u8>,
-    /// The RGBA8 normals as the sampler returns them (`c / 255`), for the CPU import.
+    /// The normal image's stored texels.
+    normal_bytes: Vec<u8>,
+    /// The normals as the sampler returns them, for the CPU import.
     rgb: Vec<[f32; 3]>,
     params: ImportParams,
 }
 
-/// The engine's depth buffer of the CPU ray-cast G-buffer (inner image), `convention`
-/// (DEPTH_STANDARD or DEPTH_REVERSED) with the camera projection's near/far planes, computed in
-/// f64 and stored as f32 like a D32_SFLOAT depth buffer; background (`>= view.far`) is the
-/// cleared value. Normals: `n·0.5 + 0.5` of the decoded G-buffer normals in RGBA8.
-fn engine_gbuffer(view: &ViewParams, gbuffer: &GBufferImage, convention: u32) -> EngineGBuffer {
-    let size = view.size() - 2 * view.guard;
-    let depth = engine_depth(view, &gbuffer.depth, convention);
-    let (full, g) = (view.size(), view.guard);
-    let mut rgba8 = Vec::with_capacity(4 * depth.len());
-    for y in g..full.y - g {
-        for x in g..full.x - g {
-            let c = (decode_normal(gbuffer.normals[(y * full.x + x) as usize]) * 0.5 + Vec3::splat(0.5)) * 255.0;
-            rgba8.extend([c.x.round() as u8, c.y.round() as u8, c.z.round() as u8, 255]);
+/// Stored bytes of the hardware depths `hw` (in [0, 1]) in `format`, and what the sampler
+/// returns for them: UNORM depth `u = round(d·(2^b − 1))` reads back as `u/(2^b − 1)` (Vulkan
+/// spec §"Fixed-Point Data Conversions"); D24 travels in the low 24 bits of 32.
+fn depth_texels(format: vk::Format, hw: &[f32]) -> (Vec<u8>, Vec<f32>) {
+    let unorm = |bits: u32| {
+        let max = ((1u64 << bits) - 1) as f64;
+        let stored: Vec<u32> = hw.iter().map(|&d| (d as f64 * max).round() as u32).collect();
+        let sampled = stored.iter().map(|&u| (u as f64 / max) as f32).collect();
+        (stored, sampled)
+    };
+    match format {
+        vk::Format::D32_SFLOAT => (bytemuck::cast_slice(hw).to_vec(), hw.to_vec()),
+        vk::Format::D16_UNORM => {
+            let (stored, sampled) = unorm(16);
+            (stored.iter().flat_map(|&u| (u as u16).to_le_bytes()).collect(), sampled)
         }
+        vk::Format::X8_D24_UNORM_PACK32 | vk::Format::D24_UNORM_S8_UINT => {
+            let (stored, sampled) = unorm(24);
+            (bytemuck::cast_slice(&stored).to_vec(), sampled)
+        }
+        _ => unreachable!("depth format {format:?}"),
     }
-    let rgb = rgba8.chunks(4).map(|c| [c[0] as f32 / 255.0, c[1] as f32 / 255.0, c[2] as f32 / 255.0]).collect();
+}
+
+/// Stored bytes of the encoded normals `c = n·0.5 + 0.5` in `format` (RGB, alpha 1), and what
+/// the sampler returns for them.
+fn normal_texels(format: vk::Format, c: &[Vec3]) -> (Vec<u8>, Vec<[f32; 3]>) {
+    match format {
+        vk::Format::R8G8B8A8_UNORM => {
+            let q: Vec<[u8; 4]> = c.iter().map(|c| [c.x, c.y, c.z, 1.0].map(|v| (v * 255.0).round() as u8)).collect();
+            let rgb = q.iter().map(|q| [q[0], q[1], q[2]].map(|v| v as f32 / 255.0)).collect();
+            (q.concat(), rgb)
+        }
+        vk::Format::R16G16B16A16_SFLOAT => {
+            let q: Vec<[u16; 4]> = c.iter().map(|c| [c.x, c.y, c.z, 1.0].map(common::f32_to_f16)).collect();
+            let rgb = q.iter().map(|q| [q[0], q[1], q[2]].map(common::f16_to_f32)).collect();
+            (q.iter().flatten().flat_map(|h| h.to_le_bytes()).collect(), rgb)
+        }
+        vk::Format::A2B10G10R10_UNORM_PACK32 => {
+            let q: Vec<[u32; 3]> = c.iter().map(|c| [c.x, c.y, c.z].map(|v| (v * 1023.0).round() as u32)).collect();
+            let words: Vec<u32> = q.iter().map(|q| q[0] | (q[1] << 10) | (q[2] << 20) | (3 << 30)).collect();
+            let rgb = q.iter().map(|q| q.map(|v| v as f32 / 1023.0)).collect();
+            (bytemuck::cast_slice(&words).to_vec(), rgb)
+        }
+        _ => unreachable!("normal format {format:?}"),
+    }
+}
+
+/// The engine's depth buffer of the CPU ray-cast G-buffer (inner image) in `formats`: depth in
+/// its convention with the camera projection's near/far planes, computed in f64 and stored in
+/// its format; background (`>= view.far`) is the cleared value. Normals: `n·0.5 + 0.5` of the
+/// decoded G-buffer normals in the normal format.
+fn engine_gbuffer(view: &ViewParams, gbuffer: &GBufferImage, formats: EngineFormats) -> EngineGBuffer {
+    let size = view.size() - 2 * view.guard;
+    let (depth_bytes, depth) = depth_texels(formats.depth, &engine_depth(view, &gbuffer.depth, formats.convention));
+    let encoded: Vec<Vec3> =
+        crop_inner(view, &gbuffer.normals).iter().map(|&n| decode_normal(n) * 0.5 + Vec3::splat(0.5)).collect();
+    let (normal_bytes, rgb) = normal_texels(formats.normals, &encoded);
     let params = ImportParams {
         view: *view,
         engine_size: size,
-        depth_convention: convention,
+        depth_convention: convention_code(formats.convention),
         near: view.near,
         far: view.far,
         _pad: 0,
     };
-    EngineGBuffer { size, depth, second: None, rgba8, rgb, params }
+    EngineGBuffer { size, formats, depth, depth_bytes, second: None, normal_bytes, rgb, params }
 }
 
 /// The inner image of a full-target linear depth as the engine's D32 depth buffer in
 /// `convention` (see [`engine_gbuffer`]).
-fn engine_depth(view: &ViewParams, linear: &[f32], convention: u32) -> Vec<f32> {
+fn engine_depth(view: &ViewParams, linear: &[f32], convention: DepthConvention) -> Vec<f32> {
     let linear = crop_inner(view, linear);
     let (n, f) = (view.near as f64, view.far as f64);
+    let standard = is_standard(convention);
     linear
         .iter()
         .map(|&z| {
             let z = z as f64;
             match convention {
-                DEPTH_STANDARD if z >= f => 1.0,
-                DEPTH_STANDARD => (f * (z - n) / (z * (f - n))) as f32,
-                DEPTH_REVERSED if z >= f => 0.0,
-                DEPTH_REVERSED => (n * (f - z) / (z * (f - n))) as f32,
-                _ => unreachable!("convention {convention}"),
+                _ if standard && z >= f => 1.0,
+                // OpenGL's window depth 0.5·z_ndc + 0.5 is this same value.
+                _ if standard => (f * (z - n) / (z * (f - n))) as f32,
+                DepthConvention::Reversed | DepthConvention::ReversedInfinite if z >= f => 0.0,
+                DepthConvention::Reversed => (n * (f - z) / (z * (f - n))) as f32,
+                DepthConvention::ReversedInfinite => (n / z) as f32,
+                _ => unreachable!("convention {convention:?}"),
             }
         })
         .collect()
 }
 
-/// The engine's images: depth (D32, sampled, a depth attachment), normals (RGBA8, sampled) and
-/// the AO output (R32F storage).
+/// The engine's images in `EngineGBuffer::formats`: depth (sampled, a depth attachment),
+/// normals (sampled) and the AO output (storage).
 struct Targets {
     depth: Image2d,
     normals: Image2d,
@@ -313,26 +440,27 @@ impl Targets {
         let sampled = vk::ImageUsageFlags::SAMPLED | vk::ImageUsageFlags::TRANSFER_DST;
         let depth_usage = sampled | vk::ImageUsageFlags::DEPTH_STENCIL_ATTACHMENT;
         let out_usage = vk::ImageUsageFlags::STORAGE | vk::ImageUsageFlags::TRANSFER_SRC;
+        let f = g.formats;
         let targets = Targets {
-            depth: gpu.create_image_2d(vk::Format::D32_SFLOAT, w, h, depth_usage).unwrap(),
-            normals: gpu.create_image_2d(vk::Format::R8G8B8A8_UNORM, w, h, sampled).unwrap(),
+            depth: gpu.create_image_2d(f.depth, w, h, depth_usage).unwrap(),
+            normals: gpu.create_image_2d(f.normals, w, h, sampled).unwrap(),
             second: g.second.as_ref().map(|_| gpu.create_image_2d(vk::Format::D32_SFLOAT, w, h, depth_usage).unwrap()),
-            output: gpu.create_image_2d(vk::Format::R32_SFLOAT, w, h, out_usage).unwrap(),
+            output: gpu.create_image_2d(f.output, w, h, out_usage).unwrap(),
             size: g.size,
         };
-        let depth_bytes: &[u8] = bytemuck::cast_slice(&g.depth);
+        let (depth_bytes, normal_bytes) = (&g.depth_bytes, &g.normal_bytes);
         let second_bytes: &[u8] = g.second.as_deref().map_or(&[], bytemuck::cast_slice);
-        let staging_size = (2 * depth_bytes.len() + g.rgba8.len()) as u64;
+        let staging_size = (depth_bytes.len() + normal_bytes.len() + second_bytes.len()).max(4) as u64;
         let staging = HostBuffer::new(engine, staging_size, vk::BufferUsageFlags::TRANSFER_SRC);
         staging.write(engine, 0, depth_bytes);
-        staging.write(engine, depth_bytes.len() as u64, &g.rgba8);
-        staging.write(engine, (depth_bytes.len() + g.rgba8.len()) as u64, second_bytes);
+        staging.write(engine, depth_bytes.len() as u64, normal_bytes);
+        staging.write(engine, (depth_bytes.len() + normal_bytes.len()) as u64, second_bytes);
         let cmd = engine.begin();
         let dst = vk::ImageLayout::TRANSFER_DST_OPTIMAL;
         let mut regions =
             vec![(&targets.depth, 0, DEPTH_LAYOUT), (&targets.normals, depth_bytes.len() as u64, NORMAL_LAYOUT)];
         if let Some(second) = &targets.second {
-            regions.push((second, (depth_bytes.len() + g.rgba8.len()) as u64, DEPTH_LAYOUT));
+            regions.push((second, (depth_bytes.len() + normal_bytes.len()) as u64, DEPTH_LAYOUT));
         }
         for (image, offset, layout) in regions {
             let none = (S::TOP_OF_PIPE, A::empty());
@@ -361,8 +489,8 @@ impl Targets {
     }
 }
 
-/// What the engine hands the effect for `frame`'s camera with depth stored in `convention`
-/// (DEPTH_STANDARD or DEPTH_REVERSED), and what the effect derives from it: the CPU reference
+/// What the engine hands the effect for `frame`'s camera with depth stored in `convention`,
+/// and what the effect derives from it: the CPU reference
 /// runs on exactly that camera and those import parameters.
 struct EngineView {
     projection: Mat4,
@@ -372,25 +500,33 @@ struct EngineView {
     params: ImportParams,
 }
 
-fn engine_view(frame: &Frame, convention: u32) -> EngineView {
+fn engine_view(frame: &Frame, convention: DepthConvention) -> EngineView {
     let view = frame.camera.view;
     let projection = engine_projection(&view, convention);
-    let depth_convention =
-        if convention == DEPTH_STANDARD { DepthConvention::Standard } else { DepthConvention::Reversed };
+    let depth_convention = convention;
     let inner = view.size() - 2 * view.guard;
     let world_to_view = frame.camera.world_to_view;
     let derived = engine_camera(projection, world_to_view, inner, view.guard, depth_convention).unwrap();
-    let camera = derived.camera;
+    let mut camera = derived.camera;
+    if convention == DepthConvention::ReversedInfinite {
+        // No far plane: background from 1e5 × near on (`AoSettings::background_depth`'s default).
+        camera.view.far = derived.near * 1e5;
+    }
     assert!((camera.view.tan_half_fov - view.tan_half_fov).abs().max_element() < 1e-5 * view.tan_half_fov.x);
     // The planes come back from the f32 matrix: a standard-Z P₂₂ = f/(n − f) keeps f only to
     // 8U·f/n (1 + P₂₂ cancels), reversed Z and the near plane to a few U.
-    let far_bound = if convention == DEPTH_STANDARD { 8.0 * U * (view.far / view.near) as f64 } else { 8.0 * U };
+    // An infinite projection has no far plane to read back.
+    let far_bound = if is_standard(convention) { 8.0 * U * (view.far / view.near) as f64 } else { 8.0 * U };
     assert!((derived.near as f64 / view.near as f64 - 1.0).abs() <= 8.0 * U, "near {}", derived.near);
-    assert!((derived.far as f64 / view.far as f64 - 1.0).abs() <= far_bound, "far {}", derived.far);
+    if convention == DepthConvention::ReversedInfinite {
+        assert_eq!(derived.far, f32::MAX);
+    } else {
+        assert!((derived.far as f64 / view.far as f64 - 1.0).abs() <= far_bound, "far {}", derived.far);
+    }
     let params = ImportParams {
         view: camera.view,
         engine_size: inner,
-        depth_convention: convention,
+        depth_convention: convention_code(convention),
         near: derived.near,
         far: derived.far,
         _pad: 0,
@@ -410,7 +546,7 @@ fn effect_settings(t: &Technique, frame: &Frame) -> AoSettings {
 /// The frame the engine hands the effect: its images in `targets` (normals only `with_normals`,
 /// the second layer where `targets` has one), its matrices and the scene.
 fn effect_frame<'a>(targets: &Targets, v: &EngineView, with_normals: bool, scene: &'a AoScene) -> AoFrame<'a> {
-    let output = AoImage { view: targets.output.view, format: vk::Format::R32_SFLOAT };
+    let output = AoImage { view: targets.output.view, format: targets.output.format };
     let depth = EngineImage { view: targets.depth.view, layout: DEPTH_LAYOUT };
     let mut frame = AoFrame::new(depth, v.convention, output, v.projection, v.world_to_view).scene(scene);
     if let Some(second) = &targets.second {
@@ -529,16 +665,20 @@ fn check_agreement(name: &str, cpu: &[f32], gpu: &[f32]) -> String {
 }
 
 /// The engine's projection of `view`'s inner image: right-handed, clip depth in [0, 1] with
-/// `convention`'s near/far mapping (what `engine_depth` stored), Y flipped so row 0 is the top.
-fn engine_projection(view: &ViewParams, convention: u32) -> Mat4 {
+/// `convention`'s near/far mapping (what `engine_depth` stored; OpenGL's clip depth in [−1, 1]
+/// for NegativeOneToOne), Y flipped so row 0 is the top.
+fn engine_projection(view: &ViewParams, convention: DepthConvention) -> Mat4 {
     let inner = (view.size() - 2 * view.guard).as_vec2();
     let tan = view.tan_half_fov * inner / view.res;
     let (n, f) = (view.near, view.far);
-    // d = a + b/z: standard d(n) = 0, d(f) = 1; reversed d(n) = 1, d(f) = 0.
+    // d = a + b/z: standard d(n) = 0, d(f) = 1; reversed d(n) = 1, d(f) = 0; reversed
+    // infinite d = n/z; OpenGL (gluPerspective) z_ndc(n) = −1, z_ndc(f) = 1.
     let (p22, p32) = match convention {
-        DEPTH_STANDARD => (f / (n - f), n * f / (n - f)),
-        DEPTH_REVERSED => (n / (f - n), n * f / (f - n)),
-        _ => unreachable!("convention {convention}"),
+        DepthConvention::Standard => (f / (n - f), n * f / (n - f)),
+        DepthConvention::Reversed => (n / (f - n), n * f / (f - n)),
+        DepthConvention::ReversedInfinite => (0.0, n),
+        DepthConvention::NegativeOneToOne => ((f + n) / (n - f), 2.0 * f * n / (n - f)),
+        DepthConvention::Linear => unreachable!("linear depth"),
     };
     Mat4::from_cols(
         Vec4::new(1.0 / tan.x, 0.0, 0.0, 0.0),
@@ -573,14 +713,14 @@ fn effect_frames_agree_with_cpu_sim() {
     let rays = effect.build_scene(&scene.corner_tables().geometry(&scene.triangle_materials)).unwrap();
     let mut report = Vec::new();
     for (convention_name, convention, with_normals) in [
-        ("reversed-Z", DEPTH_REVERSED, true),
-        ("standard-Z", DEPTH_STANDARD, true),
-        ("reversed-Z", DEPTH_REVERSED, false),
+        ("reversed-Z", DepthConvention::Reversed, true),
+        ("standard-Z", DepthConvention::Standard, true),
+        ("reversed-Z", DepthConvention::Reversed, false),
     ] {
         let v = engine_view(&frame, convention);
         let exact = EngineGBuffer {
             second: Some(engine_depth(&view, &depth2, convention)),
-            ..engine_gbuffer(&view, &gbuffer, convention)
+            ..engine_gbuffer(&view, &gbuffer, EngineFormats::d32(convention))
         };
         // The stored depths hold the G-buffer's: the CPU import with the exact planes recovers
         // the linear depth within the bound of tests/adapters.rs (8U·(1 + κ), κ = z·(f − n)/(n·f)
@@ -591,7 +731,7 @@ fn effect_frames_agree_with_cpu_sim() {
         let mut worst = 0.0f64;
         for (&got, &want) in imported.iter().zip(&original) {
             let (got, want) = (got as f64, want as f64);
-            let kappa = if convention == DEPTH_STANDARD { want * (f - n) / (n * f) } else { 0.0 };
+            let kappa = if is_standard(convention) { want * (f - n) / (n * f) } else { 0.0 };
             let rel = (got - want).abs() / want;
             assert!(rel <= 8.0 * U * (1.0 + kappa), "{convention_name}: depth {want} imported as {got}");
             worst = worst.max(rel);
@@ -637,7 +777,7 @@ fn effect_frames_agree_with_cpu_sim() {
     let cmd = engine.begin();
     let output = AoImage { view: vk::ImageView::null(), format: vk::Format::R8G8B8A8_UNORM };
     let depth = EngineImage { view: vk::ImageView::null(), layout: DEPTH_LAYOUT };
-    let v = engine_view(&frame, DEPTH_REVERSED);
+    let v = engine_view(&frame, DepthConvention::Reversed);
     let refused = effect.record(cmd, &AoFrame::new(depth, v.convention, output, v.projection, v.world_to_view));
     let e = refused.expect_err("an RGBA8 AO image").to_string();
     assert!(e.contains("R8G8B8A8_UNORM") && e.contains("R8_UNORM") && !e.contains('\n'), "{e}");
@@ -649,6 +789,118 @@ fn effect_frames_agree_with_cpu_sim() {
     let messages = engine.destroy();
     assert_validation_clean("effect_frames_agree_with_cpu_sim", messages);
     assert_eq!(report.len(), 12);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 1b. Every engine format and depth convention through the effect.
+
+/// Can `format` be a sampled, optimally tiled image with `features` on the engine's device?
+fn supports(engine: &Engine, format: vk::Format, features: vk::FormatFeatureFlags) -> bool {
+    let props = unsafe { engine.instance.get_physical_device_format_properties(engine.physical_device, format) };
+    props.optimal_tiling_features.contains(features | vk::FormatFeatureFlags::SAMPLED_IMAGE)
+}
+
+/// Each depth format (D16, D24S8's depth aspect, X8_D24, D32) in each convention (reversed,
+/// standard, OpenGL-style [−1, 1] clip depth, infinite reversed), each normal format (RGBA16F,
+/// A2B10G10R10, RGBA8) and each AO format (R16F, R8, R32F) through `AoEffect`, one frame each,
+/// against cpu-sim on the same stored texels (what the sampler returns for them):
+/// - the effect's imported linear depth over the WHOLE target, guard band included (the engine
+///   image is the inner image, smaller than aokit's target: the guard band is filled by clamping
+///   to the nearest edge texel), within the adapter bound 8U·(1 + κ) relative (tests/adapters.rs);
+///   its normal codes ≥ 99.9 % identical;
+/// - the exported AO within vao's bound (tests/vulkan_agreement.rs: ≥ 99.9 % within 1/255, max
+///   4/255), which the R8 quantisation (≤ 0.5/255) and R16F (≤ 2⁻¹¹) leave room for.
+///
+/// A projection read with the wrong convention moves every depth (the OpenGL matrix read as
+/// [0, 1] clip depth gives another near plane), which the depth check catches at once.
+#[test]
+fn every_engine_format_through_the_effect_agrees_with_cpu_sim() {
+    let Some(engine) = Engine::new() else { return };
+    let (scene, frame) = common::builtin_frame("sponza", 96, 64, 12);
+    let view = frame.camera.view;
+    let renderer = CpuRenderer::new(&scene);
+    let (gbuffer, _) = renderer.gbuffer(&frame, &no_progress);
+    let technique = Technique::new(&VAO, SdOptions::default());
+    let cases = [
+        (vk::Format::D16_UNORM, DepthConvention::Reversed, vk::Format::R16G16B16A16_SFLOAT, vk::Format::R16_SFLOAT),
+        (
+            vk::Format::D24_UNORM_S8_UINT,
+            DepthConvention::Standard,
+            vk::Format::A2B10G10R10_UNORM_PACK32,
+            vk::Format::R8_UNORM,
+        ),
+        (
+            vk::Format::X8_D24_UNORM_PACK32,
+            DepthConvention::NegativeOneToOne,
+            vk::Format::R8G8B8A8_UNORM,
+            vk::Format::R32_SFLOAT,
+        ),
+        (vk::Format::D32_SFLOAT, DepthConvention::ReversedInfinite, vk::Format::R8G8B8A8_UNORM, vk::Format::R32_SFLOAT),
+    ];
+    let images = Gpu::from_external(engine.external()).unwrap();
+    let mut effect = AoEffect::new(engine.external(), effect_settings(&technique, &frame)).unwrap();
+    let inner = view.size() - 2 * view.guard;
+    effect.resize(inner.x, inner.y).unwrap();
+    let mut report = Vec::new();
+    for (depth, convention, normals, output) in cases {
+        let formats = EngineFormats { depth, convention, normals, output };
+        let name = format!("vao ({depth:?} {convention:?}, {normals:?} normals, {output:?} AO)");
+        let attachment = vk::FormatFeatureFlags::DEPTH_STENCIL_ATTACHMENT;
+        assert!(supports(&engine, depth, attachment), "{name}: the device cannot sample {depth:?} depth");
+        assert!(supports(&engine, normals, vk::FormatFeatureFlags::empty()), "{name}: {normals:?}");
+        assert!(supports(&engine, output, vk::FormatFeatureFlags::STORAGE_IMAGE), "{name}: {output:?} storage");
+        let v = engine_view(&frame, convention);
+        let g = EngineGBuffer { params: v.params, ..engine_gbuffer(&view, &gbuffer, formats) };
+        let texels = (g.size.x * g.size.y) as usize;
+        let targets = Targets::new(&engine, &images, &g);
+        let readback =
+            HostBuffer::new(&engine, (texel_bytes(output) * texels) as u64, vk::BufferUsageFlags::TRANSFER_DST);
+        let ao_frame = AoFrame::new(
+            EngineImage { view: targets.depth.view, layout: DEPTH_LAYOUT },
+            v.convention,
+            AoImage { view: targets.output.view, format: output },
+            v.projection,
+            v.world_to_view,
+        )
+        .normals(EngineImage { view: targets.normals.view, layout: NORMAL_LAYOUT });
+        let cmd = engine.begin();
+        record_frame(&engine, &mut effect, cmd, &targets, &ao_frame, Some(&readback)).unwrap();
+        engine.submit_and_wait(cmd);
+        let on_gpu = readback.read_ao(&engine, output, texels);
+        let desc = FrameDesc::new(v.camera, frame.radius, frame.exponent, frame.thickness);
+        let graph = technique.graph(&desc).unwrap();
+        let (on_cpu, cpu_depth, cpu_normals) = cpu_reference(&renderer, &graph, &g, true);
+        // The import over the whole target, guard band included.
+        let ctx = effect.context();
+        let gpu_depth: Vec<f32> = ctx.download(aokit_vulkan::ENGINE_DEPTH).unwrap();
+        let gpu_normals: Vec<u32> = ctx.download(aokit_vulkan::ENGINE_NORMALS).unwrap();
+        common::assert_same_len(&gpu_depth, &cpu_depth, &name);
+        common::assert_same_len(&gpu_normals, &cpu_normals, &name);
+        assert_eq!(cpu_depth.len(), view.size().element_product() as usize, "{name}: the whole target");
+        let (n, far) = (v.params.near as f64, v.params.far as f64);
+        let mut background = 0;
+        for (i, (&got, &want)) in gpu_depth.iter().zip(&cpu_depth).enumerate() {
+            let (got, want) = (got as f64, want as f64);
+            if want >= v.camera.view.far as f64 {
+                assert_eq!(got, want, "{name}: background pixel {i}");
+                background += 1;
+                continue;
+            }
+            let kappa = if is_standard(convention) { want * (far - n) / (n * far) } else { 0.0 };
+            let rel = (got - want).abs() / want;
+            assert!(rel <= 8.0 * U * (1.0 + kappa), "{name}: pixel {i} depth {got} vs cpu-sim {want}");
+        }
+        assert!(background < cpu_depth.len() / 2, "{name}: {background} background pixels");
+        let same = gpu_normals.iter().zip(&cpu_normals).filter(|(a, b)| a == b).count();
+        assert!(same as f64 >= 0.999 * cpu_normals.len() as f64, "{name}: {same}/{} normal codes", cpu_normals.len());
+        report.push(check_agreement(&name, &on_cpu, &on_gpu));
+        readback.destroy(&engine);
+        targets.destroy(&images);
+    }
+    drop(effect);
+    drop(images);
+    assert_validation_clean("every_engine_format_through_the_effect_agrees_with_cpu_sim", engine.destroy());
+    assert_eq!(report.len(), 4);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -685,8 +937,8 @@ fn soak_300_frames_two_resolutions() {
     for &(w, h, frames) in &PHASES {
         let (_, frame) = common::builtin_frame(SOAK_SCENE, w, h, 8);
         let (gbuffer, _) = renderer.gbuffer(&frame, &no_progress);
-        let g = engine_gbuffer(&frame.camera.view, &gbuffer, DEPTH_REVERSED);
-        let v = engine_view(&frame, DEPTH_REVERSED);
+        let g = engine_gbuffer(&frame.camera.view, &gbuffer, EngineFormats::d32(DepthConvention::Reversed));
+        let v = engine_view(&frame, DepthConvention::Reversed);
         // An engine re-creates its render targets on a resize (after waiting for its frames).
         let targets = Targets::new(&engine, &images, &g);
         effect.resize(targets.size.x, targets.size.y).unwrap();
@@ -1059,8 +1311,11 @@ fn the_engines_own_tlas_with_instances_and_custom_indices() {
     let view = frame.camera.view;
     let renderer = CpuRenderer::new(&scene);
     let (gbuffer, _) = renderer.gbuffer(&frame, &no_progress);
-    let v = engine_view(&frame, DEPTH_REVERSED);
-    let g = EngineGBuffer { params: v.params, ..engine_gbuffer(&view, &gbuffer, DEPTH_REVERSED) };
+    let v = engine_view(&frame, DepthConvention::Reversed);
+    let g = EngineGBuffer {
+        params: v.params,
+        ..engine_gbuffer(&view, &gbuffer, EngineFormats::d32(DepthConvention::Reversed))
+    };
     let texels = (g.size.x * g.size.y) as usize;
     let images = Gpu::from_external(engine.external()).unwrap();
     let targets = Targets::new(&engine, &images, &g);

@@ -21,8 +21,8 @@ use aokit_shaders::graph::Graph;
 use aokit_vulkan::{AoContext, Buffer, Gpu, GpuInputs, GpuOptions, Sabotage};
 use ash::vk;
 use common::engine_device::{EngineDevice, EngineNeeds, RayTracing};
-use std::cell::{Cell, RefCell};
-use std::rc::Rc;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex};
 
 /// The first pass of `graph` after a barrier: it reads what an earlier pass wrote.
 fn pass_after_barrier(graph: &Graph) -> usize {
@@ -144,16 +144,16 @@ fn frames_in_flight(engine: &EngineDevice, ring: usize, sizes: &[UVec2], sabotag
     let fences: Vec<_> = (0..ring).map(|_| unsafe { d.create_fence(&signalled, None) }.unwrap()).collect();
     let storage = vk::BufferUsageFlags::STORAGE_BUFFER;
     // The last frame (1-based, as aokit counts `record` calls) whose fence the engine waited for.
-    let waited_through = Rc::new(Cell::new(0u64));
-    let early_frees = Rc::new(RefCell::new(Vec::new()));
+    let waited_through = Arc::new(AtomicU64::new(0));
+    let early_frees = Arc::new(Mutex::new(Vec::new()));
     let mut ctx = AoContext::new(&gpu);
     ctx.sabotage(sabotage);
     let (waited, early) = (waited_through.clone(), early_frees.clone());
     ctx.audit_frees(Box::new(move |last_used| {
-        if last_used > waited.get() {
-            early.borrow_mut().push(format!(
-                "a resource of frame {last_used} freed while the engine had waited only for frame {}",
-                waited.get()
+        let waited = waited.load(Ordering::Relaxed);
+        if last_used > waited {
+            early.lock().unwrap().push(format!(
+                "a resource of frame {last_used} freed while the engine had waited only for frame {waited}"
             ));
         }
     }));
@@ -163,7 +163,7 @@ fn frames_in_flight(engine: &EngineDevice, ring: usize, sizes: &[UVec2], sabotag
     for (f, &inner) in sizes.iter().enumerate() {
         let k = f % ring;
         unsafe { d.wait_for_fences(&[fences[k]], true, u64::MAX) }.unwrap();
-        waited_through.set((f + 1).saturating_sub(ring) as u64);
+        waited_through.store((f + 1).saturating_sub(ring) as u64, Ordering::Relaxed);
         if let Some((a, b)) = slots[k].take() {
             gpu.free_buffer(a);
             gpu.free_buffer(b);
@@ -192,7 +192,7 @@ fn frames_in_flight(engine: &EngineDevice, ring: usize, sizes: &[UVec2], sabotag
         outputs.push(copy);
     }
     unsafe { d.device_wait_idle() }.unwrap();
-    waited_through.set(sizes.len() as u64);
+    waited_through.store(sizes.len() as u64, Ordering::Relaxed);
     drop(ctx);
     let ao = outputs
         .into_iter()
@@ -212,7 +212,7 @@ fn frames_in_flight(engine: &EngineDevice, ring: usize, sizes: &[UVec2], sabotag
         }
         d.destroy_command_pool(pool, None);
     }
-    let early_frees = early_frees.borrow().clone();
+    let early_frees = early_frees.lock().unwrap().clone();
     Frames { ao, early_frees }
 }
 

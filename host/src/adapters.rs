@@ -12,7 +12,8 @@
 //!   `SHADER_READ_ONLY_OPTIMAL`, `GENERAL`) for depth, `SHADER_READ_ONLY_OPTIMAL` (or
 //!   `GENERAL`) for normals, with the engine's writes made
 //!   visible to `COMPUTE_SHADER` reads by the caller's barrier (the same one that changes the
-//!   layout). Depth: `D32_SFLOAT`, `D16_UNORM`, `X8_D24_UNORM_PACK32` or `R32_SFLOAT` (linear);
+//!   layout). Depth: `D32_SFLOAT`, `D16_UNORM`, `X8_D24_UNORM_PACK32`, `D24_UNORM_S8_UINT` (its depth
+//!   aspect) or `R32_SFLOAT` (linear);
 //!   normals: any format read as floats (`R8G8B8A8_UNORM`, `A2B10G10R10_UNORM_PACK32`,
 //!   `R16G16B16A16_SFLOAT`, …) holding `n·0.5 + 0.5` in RGB.
 //! - **Output image** (`export`): a 2D image of `engine_size` with `STORAGE` usage in `GENERAL`
@@ -47,8 +48,8 @@ const GROUP: u32 = 8; // threads(8, 8) in the shader crate
 /// only), whose writes the engine made visible to `COMPUTE_SHADER` reads before the recorded
 /// commands.
 ///
-/// * Depth: `D32_SFLOAT`, `D16_UNORM`, `X8_D24_UNORM_PACK32`, or `R32_SFLOAT` holding linear
-///   view depth; in `DEPTH_STENCIL_READ_ONLY_OPTIMAL` (or `DEPTH_READ_ONLY_OPTIMAL` with
+/// * Depth: `D32_SFLOAT`, `D16_UNORM`, `X8_D24_UNORM_PACK32`, `D24_UNORM_S8_UINT` (a view of
+///   its depth aspect), or `R32_SFLOAT` holding linear view depth; in `DEPTH_STENCIL_READ_ONLY_OPTIMAL` (or `DEPTH_READ_ONLY_OPTIMAL` with
 ///   `separateDepthStencilLayouts`, `SHADER_READ_ONLY_OPTIMAL`, `GENERAL`).
 /// * Normals: any format read as floats (`R8G8B8A8_UNORM`, `A2B10G10R10_UNORM_PACK32`,
 ///   `R16G16B16A16_SFLOAT`, …) holding the view-space normal `n·0.5 + 0.5` in RGB; in

@@ -46,6 +46,12 @@ pub enum DepthConvention {
     Reversed,
     /// 1 at the near plane, 0 at infinity (glam's `Mat4::perspective_infinite_reverse_rh`).
     ReversedInfinite,
+    /// 0 at the near plane, 1 at the far plane, from an OpenGL-style projection whose clip depth
+    /// spans `[−1, 1]` (`glFrustum`, glam's `Mat4::perspective_rh_gl`) and is stored as the
+    /// window depth `0.5·z + 0.5`: OpenGL with `glDepthRange(0, 1)` (OpenGL 4.6 §13.8.1), or
+    /// Vulkan with `VK_EXT_depth_clip_control`'s `negativeOneToOne`. The stored values are those
+    /// of [`DepthConvention::Standard`]; only the planes are read differently from the matrix.
+    NegativeOneToOne,
     /// An `R32_SFLOAT` image holding the linear view depth (distance along −Z), not hardware
     /// depth; the projection still gives the field of view and the far plane.
     Linear,
@@ -55,7 +61,7 @@ impl DepthConvention {
     /// The adapter's number for it (`aokit_shaders::adapters::depth_convention`).
     fn code(self) -> u32 {
         match self {
-            DepthConvention::Standard => DEPTH_STANDARD,
+            DepthConvention::Standard | DepthConvention::NegativeOneToOne => DEPTH_STANDARD,
             DepthConvention::Reversed => DEPTH_REVERSED,
             DepthConvention::ReversedInfinite => DEPTH_REVERSED_INFINITE,
             DepthConvention::Linear => DEPTH_LINEAR,
@@ -541,7 +547,15 @@ pub fn engine_camera(
     let reversed_matrix = p22 > -0.5; // standard: P₂₂ ≤ −1 (≈ −f/(f − n)); reversed: P₂₂ ≥ 0
     // |P₂₂| below float noise of 0 is the infinite reversed projection.
     let p22 = if p22.abs() < 1e-7 { 0.0 } else { p22 };
-    let (near, far) = if p22 == 0.0 {
+    let (near, far) = if convention == DepthConvention::NegativeOneToOne {
+        // z_ndc = −P₂₂ + P₃₂/z is −1 at the near plane and 1 at the far plane.
+        if p22 >= -1.0 {
+            return bad(format!(
+                "P₂₂ = {p22}: a NegativeOneToOne projection has P₂₂ = −(f + n)/(f − n) < −1 (an infinite far plane is not supported)"
+            ));
+        }
+        (p32 / (p22 - 1.0), p32 / (p22 + 1.0))
+    } else if p22 == 0.0 {
         (p32, f32::MAX)
     } else if reversed_matrix {
         (p32 / (1.0 + p22), p32 / p22)
@@ -554,6 +568,8 @@ pub fn engine_camera(
         return bad(format!("near {near}, far {far} from P₂₂ = {p22}, P₃₂ = {p32}: expected 0 < near < far"));
     }
     let matrix_says = match (reversed_matrix, far == f32::MAX) {
+        // The matrix alone cannot tell [−1, 1] from [0, 1] clip depth: trust the frame.
+        (false, false) if convention == DepthConvention::NegativeOneToOne => convention,
         (false, false) => DepthConvention::Standard,
         (true, false) => DepthConvention::Reversed,
         (true, true) => DepthConvention::ReversedInfinite,
@@ -641,6 +657,20 @@ mod tests {
                 assert!((back - z).abs() < 2e-4 * z, "{convention:?}: z {z} read back as {back}");
             }
         }
+        // OpenGL-style clip depth (gluPerspective's matrix: P₂₂ = (f + n)/(n − f),
+        // P₃₂ = 2fn/(n − f)), stored as 0.5·z_ndc + 0.5.
+        let mut gl = perspective(fov, aspect, n, f);
+        (gl.z_axis.z, gl.w_axis.z) = ((f + n) / (n - f), 2.0 * f * n / (n - f));
+        let e = engine_camera(gl, Mat4::IDENTITY, SIZE, 0, DepthConvention::NegativeOneToOne).unwrap();
+        assert!((e.near - n).abs() < 1e-6 * n && (e.far - f).abs() < 1e-4 * f, "GL planes {} {}", e.near, e.far);
+        for z in [0.2f32, 1.0, 7.5, 40.0] {
+            let stored = 0.5 * clip_depth(gl, z) + 0.5;
+            let back = linear_depth(stored, DepthConvention::NegativeOneToOne.code(), e.near, e.far);
+            assert!((back - z).abs() < 2e-4 * z, "NegativeOneToOne: z {z} read back as {back}");
+        }
+        // The same matrix read as [0, 1] clip depth gives other planes: the convention matters.
+        let as_vulkan = engine_camera(gl, Mat4::IDENTITY, SIZE, 0, DepthConvention::Standard).unwrap();
+        assert!((as_vulkan.near - n).abs() > 0.5 * n, "near {} read as Standard", as_vulkan.near);
     }
 
     #[test]
@@ -677,6 +707,7 @@ mod tests {
         assert!(engine_camera(subpixel, Mat4::IDENTITY, SIZE, 0, DepthConvention::Standard).is_ok());
         assert!(err(perspective(1.0, 1.5, 0.1, f32::INFINITY), DepthConvention::Standard).contains("infinite"));
         assert!(err(Mat4::NAN, DepthConvention::Standard).contains("NaN"));
+        assert!(err(perspective(1.0, 1.5, 10.0, 0.1), DepthConvention::NegativeOneToOne).contains("P₂₂"));
     }
 
     #[test]

@@ -60,9 +60,13 @@ pub struct EngineFrame<'a> {
     pub scene: Option<&'a SceneAccel>,
 }
 
-/// Internal G-buffer buffers an engine frame is imported into.
-const ENGINE_DEPTH: &str = "engine_linear_depth";
-const ENGINE_NORMALS: &str = "engine_view_normals";
+/// The context's buffer an engine frame's depth is imported into (linear view depth `f32` per
+/// full-target pixel, the guard band clamped to the edge texels): read it with
+/// [`AoContext::download`] to see what aokit made of the engine's depth.
+pub const ENGINE_DEPTH: &str = "engine_linear_depth";
+/// The context's buffer an engine frame's normals are imported into (octahedral `u32` codes per
+/// full-target pixel).
+pub const ENGINE_NORMALS: &str = "engine_view_normals";
 const ENGINE_SECOND_DEPTH: &str = "engine_second_depth";
 
 /// What a frame reads besides the graph's own resources: the G-buffer in aokit's internal layout
@@ -206,7 +210,7 @@ pub struct AoContext<G: Borrow<Gpu> = Gpu> {
 /// A test's use-after-free check (feature `testing`): called before each retired buffer or pool
 /// is freed with the last frame (1-based `record` count) whose commands may use it.
 #[cfg(feature = "testing")]
-pub type FreeAudit = Box<dyn FnMut(u64)>;
+pub type FreeAudit = Box<dyn FnMut(u64) + Send>;
 
 /// Deliberate defects for aokit's own tests (feature `testing`): they show that the validation
 /// layer and the tests catch what they claim to catch. Never set outside a test.

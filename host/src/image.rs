@@ -28,8 +28,16 @@ impl Image2d {
         aspect_of(self.format)
     }
 
+    /// Every aspect of the image, for layout transitions: a combined depth/stencil format
+    /// transitions both (Vulkan spec, VUID-VkImageMemoryBarrier-image-03320, without
+    /// `separateDepthStencilLayouts`).
     pub(crate) fn range(&self) -> vk::ImageSubresourceRange {
-        vk::ImageSubresourceRange::default().aspect_mask(self.aspect()).level_count(1).layer_count(1)
+        let aspect = if self.format == vk::Format::D24_UNORM_S8_UINT {
+            vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL
+        } else {
+            self.aspect()
+        };
+        vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1)
     }
 
     pub(crate) fn copy_region(&self) -> vk::BufferImageCopy {
@@ -41,7 +49,10 @@ impl Image2d {
 
 fn aspect_of(format: vk::Format) -> vk::ImageAspectFlags {
     match format {
-        vk::Format::D32_SFLOAT | vk::Format::D16_UNORM | vk::Format::X8_D24_UNORM_PACK32 => vk::ImageAspectFlags::DEPTH,
+        vk::Format::D32_SFLOAT
+        | vk::Format::D16_UNORM
+        | vk::Format::X8_D24_UNORM_PACK32
+        | vk::Format::D24_UNORM_S8_UINT => vk::ImageAspectFlags::DEPTH,
         _ => vk::ImageAspectFlags::COLOR,
     }
 }
@@ -84,7 +95,7 @@ impl Gpu {
                 .image(raw)
                 .view_type(vk::ImageViewType::TYPE_2D)
                 .format(format)
-                .subresource_range(image.range());
+                .subresource_range(image.range().aspect_mask(image.aspect()));
             image.view = unsafe { self.device.create_image_view(&view, None)? };
             Ok(())
         })();

@@ -306,3 +306,26 @@ pub fn cpu_ground_truth(
     };
     aokit_cpu::run_ground_truth(cpu.bvh(), &cpu.surfaces(), &gt, gbuffer, &aokit_cpu::no_progress).0
 }
+
+/// The value of the IEEE 754 half-precision number `h`.
+pub fn f16_to_f32(h: u16) -> f32 {
+    let (sign, exp, mant) = ((h >> 15) as i32, ((h >> 10) & 0x1F) as i32, (h & 0x3FF) as f32);
+    let magnitude = match exp {
+        0 => mant * 2f32.powi(-24),
+        31 => f32::INFINITY,
+        e => (1.0 + mant / 1024.0) * 2f32.powi(e - 15),
+    };
+    if sign == 1 { -magnitude } else { magnitude }
+}
+
+/// Half precision of `x` in [0, 1] (round to nearest; the CPU reference reads the stored
+/// bits back, so only the stored value matters).
+pub fn f32_to_f16(x: f32) -> u16 {
+    let x = x as f64;
+    if x < 2f64.powi(-14) {
+        return (x / 2f64.powi(-24)).round() as u16;
+    }
+    let e = x.log2().floor() as i32;
+    let mant = (x / 2f64.powi(e) * 1024.0).round() as u32 - 1024;
+    if mant == 1024 { ((e + 16) as u16) << 10 } else { (((e + 15) as u16) << 10) | mant as u16 }
+}
