@@ -37,6 +37,9 @@ pub enum RayTracing {
     WhereSupported,
     /// The device must have the extensions (asserted); always enabled.
     Required,
+    /// Ray queries (`VK_KHR_ray_query`) and acceleration structures only, no ray-tracing
+    /// pipeline: the device must have them.
+    QueriesOnly,
 }
 
 /// What the engine makes its instance and device with.
@@ -64,8 +67,10 @@ pub struct EngineDevice {
     pub device: ash::Device,
     pub family: u32,
     pub queue: vk::Queue,
-    /// The device was created with the ray-tracing extensions and features.
+    /// The device was created with the ray-tracing pipeline extensions and features.
     pub ray_tracing: bool,
+    /// The device was created with `VK_KHR_ray_query` and `rayQuery` (and no pipeline).
+    pub ray_query: bool,
 }
 
 impl EngineDevice {
@@ -153,6 +158,16 @@ impl EngineDevice {
         if needs.ray_tracing == RayTracing::Required && !missing.is_empty() {
             return cannot_run(format!("device '{}' lacks {missing:?}", name(physical_device)));
         }
+        let query_names = [
+            khr::acceleration_structure::NAME.as_ptr(),
+            khr::ray_query::NAME.as_ptr(),
+            khr::deferred_host_operations::NAME.as_ptr(),
+        ];
+        let ray_query = needs.ray_tracing == RayTracing::QueriesOnly;
+        let lacks = |n: &CStr| !available.iter().any(|e| e.extension_name_as_c_str() == Ok(n));
+        if ray_query && query_names.iter().any(|&n| lacks(unsafe { CStr::from_ptr(n) })) {
+            return cannot_run(format!("device '{}' lacks VK_KHR_ray_query", name(physical_device)));
+        }
         let mut as_query = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default();
         let mut rt_query = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default();
         let mut f12_query = vk::PhysicalDeviceVulkan12Features::default();
@@ -173,23 +188,28 @@ impl EngineDevice {
                     && f12_query.buffer_device_address != 0
             }
             RayTracing::Required => true,
+            RayTracing::QueriesOnly => false,
         };
         let raster = needs.raster;
         let maintenance4 = raster && f13_query.maintenance4 != 0;
-        eprintln!("engine device: {} (ray tracing enabled: {ray_tracing})", name(physical_device));
+        eprintln!(
+            "engine device: {} (ray-tracing pipeline enabled: {ray_tracing}, ray queries only: {ray_query})",
+            name(physical_device)
+        );
 
         let priorities = [1.0];
         let queues = [vk::DeviceQueueCreateInfo::default().queue_family_index(family).queue_priorities(&priorities)];
         let mut f12 = vk::PhysicalDeviceVulkan12Features::default()
             .vulkan_memory_model(true)
             .vulkan_memory_model_device_scope(true)
-            .buffer_device_address(ray_tracing);
+            .buffer_device_address(ray_tracing || ray_query);
         let mut f13 =
             vk::PhysicalDeviceVulkan13Features::default().dynamic_rendering(raster).maintenance4(maintenance4);
         let core = vk::PhysicalDeviceFeatures::default()
             .fragment_stores_and_atomics(raster && core_supported.fragment_stores_and_atomics != 0);
         let mut as_enable = vk::PhysicalDeviceAccelerationStructureFeaturesKHR::default().acceleration_structure(true);
         let mut rt_enable = vk::PhysicalDeviceRayTracingPipelineFeaturesKHR::default().ray_tracing_pipeline(true);
+        let mut rq_enable = vk::PhysicalDeviceRayQueryFeaturesKHR::default().ray_query(true);
         let mut create = vk::DeviceCreateInfo::default()
             .queue_create_infos(&queues)
             .enabled_features(&core)
@@ -197,6 +217,8 @@ impl EngineDevice {
             .push_next(&mut f13);
         if ray_tracing {
             create = create.enabled_extension_names(&rt_names).push_next(&mut as_enable).push_next(&mut rt_enable);
+        } else if ray_query {
+            create = create.enabled_extension_names(&query_names).push_next(&mut as_enable).push_next(&mut rq_enable);
         }
         let device = unsafe { instance.create_device(physical_device, &create, None) }.unwrap();
         let queue = unsafe { device.get_device_queue(family, 0) };
@@ -211,6 +233,7 @@ impl EngineDevice {
             family,
             queue,
             ray_tracing,
+            ray_query,
         })
     }
 
@@ -224,8 +247,7 @@ impl EngineDevice {
             queue_family_index: self.family,
             queue: self.queue,
             ray_tracing: self.ray_tracing,
-            // Not enabled here: the ray-query variants are exercised through aokit's own device.
-            ray_query: false,
+            ray_query: self.ray_query,
         }
     }
 
