@@ -223,10 +223,6 @@ fn image_barrier(
     (src_stage, src_access): (vk::PipelineStageFlags, vk::AccessFlags),
     (dst_stage, dst_access): (vk::PipelineStageFlags, vk::AccessFlags),
 ) {
-    let aspect = match image.format {
-        vk::Format::D24_UNORM_S8_UINT => vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL,
-        f => copy_aspect(f),
-    };
     let barrier = vk::ImageMemoryBarrier::default()
         .src_access_mask(src_access)
         .dst_access_mask(dst_access)
@@ -235,7 +231,7 @@ fn image_barrier(
         .src_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
         .dst_queue_family_index(vk::QUEUE_FAMILY_IGNORED)
         .image(image.raw)
-        .subresource_range(vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1));
+        .subresource_range(image.range());
     unsafe {
         engine.device.cmd_pipeline_barrier(
             cmd,
@@ -247,17 +243,6 @@ fn image_barrier(
             &[barrier],
         )
     };
-}
-
-/// The aspect a copy of `format` reads or writes (the depth of a depth/stencil format).
-fn copy_aspect(format: vk::Format) -> vk::ImageAspectFlags {
-    match format {
-        vk::Format::D32_SFLOAT
-        | vk::Format::D16_UNORM
-        | vk::Format::X8_D24_UNORM_PACK32
-        | vk::Format::D24_UNORM_S8_UINT => vk::ImageAspectFlags::DEPTH,
-        _ => vk::ImageAspectFlags::COLOR,
-    }
 }
 
 /// Bytes per texel of a buffer ↔ image copy of `format` (the depth aspect's for depth formats:
@@ -272,11 +257,7 @@ fn texel_bytes(format: vk::Format) -> usize {
 }
 
 fn copy_region(image: &Image2d, buffer_offset: u64) -> vk::BufferImageCopy {
-    let aspect = copy_aspect(image.format);
-    vk::BufferImageCopy::default()
-        .buffer_offset(buffer_offset)
-        .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(aspect).layer_count(1))
-        .image_extent(vk::Extent3D { width: image.width, height: image.height, depth: 1 })
+    image.copy_region().buffer_offset(buffer_offset)
 }
 
 type S = vk::PipelineStageFlags;

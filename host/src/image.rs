@@ -24,14 +24,16 @@ pub struct Image2d {
 }
 
 impl Image2d {
-    pub(crate) fn aspect(&self) -> vk::ImageAspectFlags {
+    /// The aspect its view shows and copies read or write: `DEPTH` for a depth format (a
+    /// depth/stencil format's depth), `COLOR` otherwise.
+    pub fn aspect(&self) -> vk::ImageAspectFlags {
         aspect_of(self.format)
     }
 
     /// Every aspect of the image, for layout transitions: a combined depth/stencil format
     /// transitions both (Vulkan spec, VUID-VkImageMemoryBarrier-image-03320, without
     /// `separateDepthStencilLayouts`).
-    pub(crate) fn range(&self) -> vk::ImageSubresourceRange {
+    pub fn range(&self) -> vk::ImageSubresourceRange {
         let aspect = if self.format == vk::Format::D24_UNORM_S8_UINT {
             vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL
         } else {
@@ -40,7 +42,9 @@ impl Image2d {
         vk::ImageSubresourceRange::default().aspect_mask(aspect).level_count(1).layer_count(1)
     }
 
-    pub(crate) fn copy_region(&self) -> vk::BufferImageCopy {
+    /// A buffer ↔ image copy of the whole image's [`Image2d::aspect`], tightly packed from
+    /// buffer offset 0.
+    pub fn copy_region(&self) -> vk::BufferImageCopy {
         vk::BufferImageCopy::default()
             .image_subresource(vk::ImageSubresourceLayers::default().aspect_mask(self.aspect()).layer_count(1))
             .image_extent(vk::Extent3D { width: self.width, height: self.height, depth: 1 })
