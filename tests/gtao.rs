@@ -65,11 +65,8 @@ fn r2_noise_matches_the_closed_form() {
 /// the numeric integral is a 20 000-interval midpoint sum in f64.
 #[test]
 fn slice_arc_integral_matches_numeric_integration() {
-    let mut state = 12345u64;
-    let mut unit = || {
-        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut rng = common::rng::Rng::new(12345);
+    let mut unit = || rng.unit_f64();
     use std::f64::consts::FRAC_PI_2;
     for _ in 0..200 {
         let gamma = (unit() - 0.5) * 2.0 * 1.2;

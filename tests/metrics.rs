@@ -11,8 +11,8 @@ fn img(width: usize, height: usize, pixels: &[f32]) -> ImageRef<'_> {
 #[test]
 fn mse_matches_a_naive_double_loop_and_respects_the_mask() {
     let (w, h) = (13, 7);
-    let a = common::noise(w * h, 1);
-    let b = common::noise(w * h, 2);
+    let a = common::rng::noise(w * h, 1);
+    let b = common::rng::noise(w * h, 2);
     let mut naive = 0.0f64;
     for y in 0..h {
         for x in 0..w {
@@ -34,8 +34,8 @@ fn mse_matches_a_naive_double_loop_and_respects_the_mask() {
 #[test]
 fn ssim_of_an_image_with_itself_is_one_and_ssim_is_symmetric() {
     let (w, h) = (32, 24);
-    let a = common::noise(w * h, 7);
-    let b: Vec<f32> = a.iter().zip(common::noise(w * h, 9)).map(|(x, n)| 0.7 * x + 0.3 * n).collect();
+    let a = common::rng::noise(w * h, 7);
+    let b: Vec<f32> = a.iter().zip(common::rng::noise(w * h, 9)).map(|(x, n)| 0.7 * x + 0.3 * n).collect();
     assert!((ssim(img(w, h, &a), img(w, h, &a), None).unwrap() - 1.0).abs() < 1e-12);
     let ab = ssim(img(w, h, &a), img(w, h, &b), None).unwrap();
     let ba = ssim(img(w, h, &b), img(w, h, &a), None).unwrap();

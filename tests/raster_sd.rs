@@ -42,11 +42,8 @@ fn lut_and_strata_match_the_spec() {
 /// [`FAMILY_ALPHA`].
 #[test]
 fn coverage_keeps_the_expected_fraction_of_samples() {
-    let mut state = 99u64;
-    let mut unit = || {
-        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-        (state >> 40) as f32 / (1u64 << 24) as f32
-    };
+    let mut rng = common::rng::Rng::new(99);
+    let mut unit = || rng.unit();
     const FRAGMENTS: usize = 200_000;
     let alpha_each = FAMILY_ALPHA / 6.0;
     for n in [1u32, 2, 4, 8] {

@@ -266,14 +266,8 @@ fn embree_harness_any_hit_port_matches_the_kernels() {
         .unwrap();
     assert!(out.status.success(), "cc: {}", String::from_utf8_lossy(&out.stderr));
 
-    // xorshift32 in [0, 1).
-    let mut state = 0x1234_5678u32;
-    let mut rnd = move || {
-        state ^= state << 13;
-        state ^= state >> 17;
-        state ^= state << 5;
-        (state >> 8) as f32 / (1 << 24) as f32
-    };
+    let mut rng = common::rng::Rng::new(0x1234_5678);
+    let mut rnd = move || rng.unit();
     let none = AlphaTables { uvs: &[], materials: &[], headers: &[], texels: &[] };
     let (mut input, mut expect) = (Vec::<u8>::new(), Vec::<u8>::new());
     let (mut accepted, mut ended) = (0, 0);

@@ -18,22 +18,8 @@ use aokit_shaders::svao::settings::{RAYSD, RAYSVAO};
 use aokit_shaders::svao::{Secondary, SvaoParams};
 use aokit_shaders::vao::kernel::{line_sample, primary_object_z, setup_pixel};
 use aokit_shaders::vao::settings::VAO;
+use common::rng::Rng;
 use std::collections::HashMap;
-
-/// Deterministic SplitMix64 stream for the tests.
-struct Rng(u64);
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-    fn unit(&mut self) -> f32 {
-        (self.next() >> 40) as f32 / (1u64 << 24) as f32
-    }
-}
 
 /// Family-wise significance of each test's χ² comparisons: a correct implementation fails a
 /// test (with fresh random streams) with probability at most 0.1 % (Bonferroni over the
@@ -91,7 +77,7 @@ fn reservoir_keeps_every_hit_with_probability_n_over_count() {
     let cases: Vec<(u32, usize)> = [1u32, 2, 4, 8].iter().flat_map(|&n| (2..=16usize).map(move |c| (n, c))).collect();
     let comparisons = cases.iter().filter(|&&(n, c)| (n as usize) < c).count();
     let alpha = FAMILY_ALPHA / (2 * comparisons) as f64;
-    let mut rng = Rng(7);
+    let mut rng = Rng::new(7);
     let (mut worst, mut total, mut total_df) = (f64::INFINITY, 0.0, 0usize);
     for (layers, count) in cases {
         let mut survived = vec![0u64; count];
@@ -170,7 +156,7 @@ fn reservoir_with_z_cull_matches_a_brute_force_oracle() {
     const STREAMS: usize = 200_000;
     let cases = [(2usize, 5usize), (4, 7), (4, 8), (1, 6)];
     let alpha = FAMILY_ALPHA / cases.len() as f64;
-    let mut rng = Rng(11);
+    let mut rng = Rng::new(11);
     for (layers, count) in cases {
         let zs: Vec<f32> = (0..count).map(|_| 0.05 + 0.9 * rng.unit()).collect();
         let exact = oracle(&zs, layers);
@@ -226,10 +212,10 @@ fn max_count_accepts_hits_and_later_hits_are_nearer() {
     use aokit_shaders::common::hash::wyman_hash;
     const LAYERS: usize = 4;
     const MAX_COUNT: usize = 8;
-    let mut rng = Rng(3);
+    let mut rng = Rng::new(3);
     let mut accepted_trials = 0;
     for trial in 0..2000 {
-        let n_hits = 4 + (rng.next() % 20) as usize;
+        let n_hits = 4 + (rng.next_u64() % 20) as usize;
         let hits: Vec<(f32, u32, Vec2)> =
             (0..n_hits).map(|i| (0.1 + 0.8 * rng.unit(), i as u32, vec2(rng.unit(), rng.unit()))).collect();
         let mut p = payload(LAYERS as u32, MAX_COUNT as u32);
@@ -276,7 +262,7 @@ fn bvh_any_hit_reports_every_triangle_once() {
     let renderer = CpuRenderer::new(&scene);
     let bvh = renderer.bvh();
     let camera = frame.camera;
-    let mut rng = Rng(5);
+    let mut rng = Rng::new(5);
     let mut total = 0;
     for _ in 0..300 {
         let uv = vec2(rng.unit(), rng.unit());

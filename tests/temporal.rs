@@ -390,7 +390,7 @@ fn frame_rotations_leave_frame_zero_alone_and_move_later_frames() {
     use aokit_shaders::rastersd::coverage_mask;
     use aokit_shaders::raysd::{NO_SLOT, SdPayload, reservoir_candidate};
     assert_eq!(frame_rotation(0), aokit_shaders::glam::Vec2::ZERO);
-    let u = common::noise(10_000, 7);
+    let u = common::rng::noise(10_000, 7);
     assert!(u.iter().all(|&u| rotate(u, 0.0).to_bits() == u.to_bits()));
     let rotations: Vec<_> = (0..64).map(frame_rotation).collect();
     assert!(rotations.iter().all(|r| (0.0..1.0).contains(&r.x) && (0.0..1.0).contains(&r.y)));
@@ -418,7 +418,7 @@ fn frame_rotations_leave_frame_zero_alone_and_move_later_frames() {
     // 2/8 gives 5000 ± 61 (6.4 of its σ below the interval), 2/6 gives 6667 ± 67 (9.5 σ above).
     // (The old 1000 hits, σ = 14.3, could not separate 2/7 from 2/6 at any useful confidence.)
     const HITS: usize = 20_000;
-    let h = common::noise(2 * HITS, 11);
+    let h = common::rng::noise(2 * HITS, 11);
     let bary = |i: usize| aokit_shaders::glam::Vec2::new(h[2 * i] * 0.5, h[2 * i + 1] * 0.5);
     let slots =
         |frame| -> Vec<u32> { (0..HITS).map(|i| reservoir_candidate(&mut payload(frame), 0.5, bary(i)).0).collect() };

@@ -268,7 +268,7 @@ fn blur_smooths_noise_on_a_flat_depth() {
     for a in interior(&view, &run_blur(&blur, &vec![0.4f32; n], &flat), 0) {
         assert!((a - 0.4).abs() < 1e-6, "a constant must stay constant: {a}");
     }
-    let input = common::noise(n, 1234);
+    let input = common::rng::noise(n, 1234);
     let out = run_blur(&blur, &input, &flat);
     let ratio = variance(&interior(&view, &out, 4)) / variance(&interior(&view, &input, 4));
     eprintln!("variance ratio after the blur: {ratio:.5} (i.i.d. prediction 0.01457)");
@@ -291,7 +291,7 @@ fn blur_preserves_depth_edges() {
     let mid = size.x / 2;
     let left = |i: usize| (i as u32 % size.x) < mid;
     let depth: Vec<f32> = (0..n).map(|i| if left(i) { 5.0 } else { 50.0 }).collect();
-    let noisy = common::noise(n, 99);
+    let noisy = common::rng::noise(n, 99);
     let ao = |other: f32| -> Vec<f32> {
         (0..n).map(|i| if left(i) { 0.3 + 0.2 * noisy[i] } else { other + 0.2 * noisy[i] }).collect()
     };

@@ -23,18 +23,6 @@ fn debug(run: &TechniqueRun) -> &Refinement {
     run.debug.as_ref().expect("stenciled techniques report their buffers")
 }
 
-/// Fisher–Yates with SplitMix64 (a hit order as hardware might report it).
-fn shuffle<T>(v: &mut [T], seed: u64) {
-    let mut state = seed;
-    for i in (1..v.len()).rev() {
-        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = state;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        v.swap(i, ((z ^ (z >> 31)) % (i as u64 + 1)) as usize);
-    }
-}
-
 /// How many of a texel's stored depths (`< 1`) are among its `nearest` candidates.
 fn among(layers: &[f32], nearest: &[f32]) -> usize {
     layers.iter().filter(|&&z| z < 1.0 && nearest.iter().any(|&c| (c - z).abs() <= 1e-4 * z.max(1e-3))).count()
@@ -103,7 +91,7 @@ fn reservoir_stats(
             let (mut s1, mut s2) = (0.0, 0.0);
             for o in 0..ORDERS {
                 let mut order = hits.clone();
-                shuffle(&mut order, (i as u64) << 8 | o);
+                common::rng::Rng::new((i as u64) << 8 | o).shuffle(&mut order);
                 let mut payload = SdPayload::new(params, view.near, view.far, ray.cos_theta);
                 replay_any_hit(&order, ray.t_min, ray.t_max, |t, tri, b| {
                     if reservoir_any_hit(&mut payload, t, b, || alpha.passes(tri, b)) {

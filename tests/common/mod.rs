@@ -3,6 +3,7 @@
 
 pub mod agreement;
 pub mod engine_device;
+pub mod rng;
 pub mod skip;
 
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
@@ -275,19 +276,6 @@ fn ln_gamma(x: f64) -> f64 {
     }
     let t = x + 7.5;
     0.5 * (2.0 * std::f64::consts::PI).ln() + (x + 0.5) * t.ln() - t + s.ln()
-}
-
-/// Uniform noise in [0, 1): xorshift32 from `seed` (not 0).
-pub fn noise(n: usize, seed: u32) -> Vec<f32> {
-    let mut s = seed;
-    (0..n)
-        .map(|_| {
-            s ^= s << 13;
-            s ^= s >> 17;
-            s ^= s << 5;
-            (s >> 8) as f32 / (1u32 << 24) as f32
-        })
-        .collect()
 }
 
 /// cpu-sim's ground-truth kernel (spec gtao-raymarch-hybrid §5) with `params` on a given
