@@ -134,12 +134,12 @@ fn dual_depth_vulkan_agrees_with_cpu() {
     let v = vk.run(&scene, &frame, &g, &dual).expect("Vulkan dual depth");
     common::assert_validation_clean(&vk);
     let view = frame.camera.view;
-    let close = common::inner_within(&view, &c.ao, &v.ao, 1.0 / 255.0);
+    let close = common::inner_within(&view, &c.ao, &v.ao, common::agreement::STEP);
     eprintln!("dual VAO CPU vs Vulkan: {:.3} % of the inner image within 1/255", 100.0 * close);
     assert!(close >= 0.995);
     let single = cpu.run(&frame, &g, &Technique::new(&VAO, SdOptions::default()), &aokit_cpu::no_progress);
     let (si, ci) = common::inner_pair(&view, &single.ao, &c.ao);
-    let changed = si.iter().zip(&ci).filter(|(a, b)| (*a - *b).abs() > 1.0 / 255.0).count();
+    let changed = si.iter().zip(&ci).filter(|(a, b)| (*a - *b).abs() > common::agreement::STEP).count();
     assert!(changed > 100, "dual depth should change some pixels ({changed})");
     assert!(v.passes.iter().any(|p| p.0 == "depth_peel"));
 }
@@ -230,8 +230,8 @@ fn hbao_vulkan_agrees_with_cpu() {
     assert!(mse <= max_mse, "hbao-sd final AO CPU vs Vulkan: MSE {mse:.2e} above {max_mse:.1e}");
     let t = Technique::new(&HBAO, SdOptions { hbao: true, dual: false, peel_separation: 0.01, ..Default::default() });
     let (c, v) = (cpu.run(&frame, &g, &t, none), vk.run(&scene, &frame, &g, &t).unwrap());
-    let close = common::inner_within(&view, &c.ao, &v.ao, 1.0 / 255.0);
-    assert!(close >= 0.999, "hbao: {:.3} % of the inner image within 1/255", 100.0 * close);
+    let close = common::inner_within(&view, &c.ao, &v.ao, common::agreement::STEP);
+    assert!(close >= common::agreement::MIN_WITHIN, "hbao: {:.3} % of the inner image within 1/255", 100.0 * close);
     common::assert_validation_clean(&vk);
 }
 
@@ -258,7 +258,7 @@ fn peel_separation_is_honoured_on_both_backends() {
         a.iter().zip(&b).map(|(x, y)| (*x as f64 - *y as f64).abs()).sum::<f64>() / a.len() as f64
     };
     let (cpu_change, vk_change) = (mean_abs(&c_near, &c_far), mean_abs(&v_near, &v_far));
-    let close = common::inner_within(&view, &c_far, &v_far, 1.0 / 255.0);
+    let close = common::inner_within(&view, &c_far, &v_far, common::agreement::STEP);
     eprintln!(
         "separation 0.01 → 0.5 (inner image): mean |Δ| CPU {cpu_change:.2e}, Vulkan {vk_change:.2e}; CPU vs Vulkan at 0.5: {:.3} % within 1/255",
         100.0 * close

@@ -52,6 +52,7 @@ use aokit_vulkan::{
 };
 use ash::vk;
 use common::engine_device::{EngineDevice, EngineNeeds, RayTracing};
+use common::mse_of as mse;
 use std::ops::Deref;
 use std::time::Instant;
 
@@ -587,10 +588,6 @@ fn assert_validation_clean(test: &str, messages: Vec<String>) {
     assert!(messages.is_empty(), "validation layer reported:\n{}", messages.join("\n"));
 }
 
-fn mse(a: &[f32], b: &[f32]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| (*x as f64 - *y as f64).powi(2)).sum::<f64>() / a.len() as f64
-}
-
 // ---------------------------------------------------------------------------------------------
 // 1. Engine frames against cpu-sim on the same engine arrays.
 
@@ -720,7 +717,8 @@ fn check_frame(
 /// The agreement each technique must reach (from the existing CPU ≡ Vulkan tests).
 fn check_agreement(name: &str, cpu: &[f32], gpu: &[f32]) -> String {
     assert_eq!(cpu.len(), gpu.len(), "{name}: CPU and engine images differ in size");
-    let within = cpu.iter().zip(gpu).filter(|(a, b)| (*a - *b).abs() <= 1.0 / 255.0).count() as f64 / cpu.len() as f64;
+    let within = cpu.iter().zip(gpu).filter(|(a, b)| (*a - *b).abs() <= common::agreement::STEP).count() as f64
+        / cpu.len() as f64;
     let max = cpu.iter().zip(gpu).map(|(a, b)| (a - b).abs()).fold(0.0, f32::max);
     let m = mse(cpu, gpu);
     let occluded = cpu.iter().filter(|&&a| a < 0.9).count() as f64 / cpu.len() as f64;
@@ -749,7 +747,7 @@ fn check_agreement(name: &str, cpu: &[f32], gpu: &[f32]) -> String {
         // Each pixel's AO is the fraction of its fixed rays that escape: the same hit/miss
         // decisions give the same value; only a ray grazing a shared edge may decide otherwise
         // (watertightness), moving a pixel by 1/spp. Allow that at 0.1 % of the pixels.
-        assert!(within >= 0.999, "{line}");
+        assert!(within >= common::agreement::MIN_WITHIN, "{line}");
     } else {
         // raysd: its own bounds, derived per frame (check_raysd), which calls this for the rest.
         assert!(name.starts_with("raysd"), "{name}: no agreement bound for this technique");
@@ -1068,9 +1066,13 @@ fn ray_queries_on_an_engine_device_agree_with_the_pipelines_and_cpu_sim() {
     let Some(pipelines) = ray_traced_frames(RayTracing::Required, &specs) else { return };
     for ((spec, query), pipeline) in specs.iter().zip(&queries).zip(&pipelines) {
         common::assert_same_len(query, pipeline, spec);
-        let within = common::fraction_within(query, pipeline, 1.0 / 255.0);
+        let within = common::fraction_within(query, pipeline, common::agreement::STEP);
         eprintln!("{spec}: ray queries vs pipelines on engine devices: {:.3} % within 1/255", 100.0 * within);
-        assert!(within >= 0.999, "{spec}: ray queries vs pipelines only {:.3} % within 1/255", 100.0 * within);
+        assert!(
+            within >= common::agreement::MIN_WITHIN,
+            "{spec}: ray queries vs pipelines only {:.3} % within 1/255",
+            100.0 * within
+        );
     }
 }
 

@@ -85,7 +85,7 @@ fn export_holds_what_render_uses_and_imports_back() {
         let n = decode_normal(gbuffer.normals[y * full.x as usize + x]);
         let back = [c[0], c[1], c[2]].map(|v| v as f32 / 255.0 * 2.0 - 1.0);
         for (a, b) in back.iter().zip(n.to_array()) {
-            assert!((a - b).abs() <= 1.0 / 255.0 + 1e-6, "normal {n} exported as {c:?}");
+            assert!((a - b).abs() <= common::agreement::STEP + 1e-6, "normal {n} exported as {c:?}");
         }
         assert_eq!(c[3], 255);
     }

@@ -73,7 +73,7 @@ fn exercise(gpu: &Gpu) -> Result<(), GpuError> {
             let occluded = cpu.iter().filter(|&&a| a < 0.9).count();
             assert!(occluded >= 20, "{name}: only {occluded} occluded pixels: the input does not test much");
             let max = cpu.iter().zip(&on_gpu).map(|(a, b)| (a - b).abs()).fold(0.0, f32::max);
-            let within = cpu.iter().zip(&on_gpu).filter(|(a, b)| (*a - *b).abs() <= 1.0 / 255.0).count();
+            let within = cpu.iter().zip(&on_gpu).filter(|(a, b)| (*a - *b).abs() <= common::agreement::STEP).count();
             assert!(max <= 4.0 / 255.0, "{name}: max |cpu − gpu| = {max}");
             assert!(within * 1000 >= cpu.len() * 999, "{name}: only {within}/{} within 1/255", cpu.len());
         }

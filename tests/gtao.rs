@@ -209,8 +209,8 @@ fn gtao_vulkan_agrees_with_cpu_per_pass() {
         100.0 * terms_close
     );
     assert_eq!(mip_close, mips.len());
-    assert!(normals_equal >= 0.999);
-    assert!(edges_equal >= 0.999);
+    assert!(normals_equal >= common::agreement::MIN_WITHIN);
+    assert!(edges_equal >= common::agreement::MIN_WITHIN);
     assert!(terms_close >= 0.995);
     assert!(mse <= 1e-5);
 }

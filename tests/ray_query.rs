@@ -10,13 +10,7 @@ use aokit::technique::Technique;
 use aokit_cpu::no_progress;
 use aokit_shaders::graph::RtMode;
 
-fn within(a: &[f32], b: &[f32], tolerance: f32) -> f64 {
-    a.iter().zip(b).filter(|(x, y)| (*x - *y).abs() <= tolerance).count() as f64 / a.len() as f64
-}
-
-fn mse(a: &[f32], b: &[f32]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| (*x as f64 - *y as f64).powi(2)).sum::<f64>() / a.len() as f64
-}
+use common::{fraction_within as within, mse_of as mse};
 
 #[test]
 fn ray_query_variants_agree_with_the_pipelines_and_cpu_sim() {
@@ -48,8 +42,11 @@ fn check_scene(vk: &aokit::render::VulkanRenderer, name: &str, min_occluded: f64
         let (p, q, c) = (inner(&pipeline.ao_final), inner(&query.ao_final), inner(&on_cpu.ao_final));
         let occluded = c.iter().filter(|&&a| a < 0.9).count() as f64 / c.len() as f64;
         let identical = within(&p, &q, 0.0);
-        let (q_vs_p, q_vs_c, p_vs_c) =
-            (within(&q, &p, 1.0 / 255.0), within(&q, &c, 1.0 / 255.0), within(&p, &c, 1.0 / 255.0));
+        let (q_vs_p, q_vs_c, p_vs_c) = (
+            within(&q, &p, common::agreement::STEP),
+            within(&q, &c, common::agreement::STEP),
+            within(&p, &c, common::agreement::STEP),
+        );
         let time = |run: &aokit::technique::TechniqueRun| {
             run.passes.iter().filter(|(n, _)| *n != "accel_build").map(|(_, ms)| ms).sum::<f64>()
         };
@@ -75,7 +72,11 @@ fn check_scene(vk: &aokit::render::VulkanRenderer, name: &str, min_occluded: f64
         let off = (pipeline.rays as f64 - on_cpu.rays as f64).abs() / on_cpu.rays as f64;
         assert!(off <= 1e-3, "{name} {spec}: {} rays on Vulkan, {} on the CPU", pipeline.rays, on_cpu.rays);
         // The same decisions over the same traversal: the variants agree like two runs of one.
-        assert!(q_vs_p >= 0.999, "{spec}: query vs pipeline only {:.3} % within 1/255", 100.0 * q_vs_p);
+        assert!(
+            q_vs_p >= common::agreement::MIN_WITHIN,
+            "{spec}: query vs pipeline only {:.3} % within 1/255",
+            100.0 * q_vs_p
+        );
         // And like the pipeline does with cpu-sim (its own tests state why not bit-exact).
         assert!(q_vs_c >= p_vs_c - 0.002, "{spec}: query {q_vs_c} vs pipeline {p_vs_c} agreement with cpu-sim");
         assert!(mse(&q, &c) <= 1e-4, "{spec}: MSE vs cpu-sim {}", mse(&q, &c));

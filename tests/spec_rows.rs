@@ -461,7 +461,7 @@ fn raysvao_hbao_vulkan_agrees_with_cpu_sim_in_both_rt_modes() {
             vk.set_rt_mode(mode);
             let v = vk.run(&scene, &frame, &g, &t).unwrap_or_else(|e| panic!("{spec} {mode:?}: {e}"));
             let label = format!("{spec} ({mode:?})");
-            let (_, over, mse) = figures(&label, &frame, &c.ao, &v.ao, 1.0 / 255.0);
+            let (_, over, mse) = figures(&label, &frame, &c.ao, &v.ao, common::agreement::STEP);
             eprintln!("{label}: rays {} (CPU) vs {} (Vulkan)", c.rays, v.rays);
             assert!(mse <= 1e-5 && over <= 0.005, "{label}: MSE {mse:.2e}, {over} over 1/255");
             let rays = (c.rays as f64 - v.rays as f64).abs();

@@ -318,17 +318,17 @@ fn the_accumulation_agrees_between_cpu_and_vulkan() {
     let last = Frame { temporal: None, ..on[2].clone() };
     let plain = cpu.run(&last, &g[2], &technique, &no_progress).ao_final;
     let view = base.camera.view;
-    let within = common::inner_within(&view, &on_cpu, &on_gpu, 1.0 / 255.0);
+    let within = common::inner_within(&view, &on_cpu, &on_gpu, common::agreement::STEP);
     let max = common::inner_max_abs(&view, &on_cpu, &on_gpu);
-    let used = 1.0 - common::inner_within(&view, &on_cpu, &plain, 1.0 / 255.0);
-    let used_gpu = 1.0 - common::inner_within(&view, &on_gpu, &plain, 1.0 / 255.0);
+    let used = 1.0 - common::inner_within(&view, &on_cpu, &plain, common::agreement::STEP);
+    let used_gpu = 1.0 - common::inner_within(&view, &on_gpu, &plain, common::agreement::STEP);
     eprintln!(
         "temporal gtao: {:.3} % within 1/255, max {max:.4}; history changed {:.1} % (cpu), {:.1} % (vulkan)",
         100.0 * within,
         100.0 * used,
         100.0 * used_gpu
     );
-    assert!(within >= 0.999, "{within}");
+    assert!(within >= common::agreement::MIN_WITHIN, "{within}");
     assert!(used > 0.2 && used_gpu > 0.2, "{used} {used_gpu}");
     common::assert_validation_clean(&vk);
 }

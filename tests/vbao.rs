@@ -265,10 +265,13 @@ fn vbao_vulkan_agrees_with_cpu() {
         let t = Technique::new(&VBAO, VbaoSettings { weighting, touch, ..Default::default() });
         let c = cpu.run(&frame, &g, &t, &aokit_cpu::no_progress).ao_final;
         let v = vk.run(&scene, &frame, &g, &t).expect("Vulkan VBAO").ao_final;
-        let within = common::inner_within(&view, &c, &v, 1.0 / 255.0 + 1e-6);
+        let within = common::inner_within(&view, &c, &v, common::agreement::STEP + 1e-6);
         let mse = common::inner_mse(&view, &c, &v);
         eprintln!("weighting {weighting}, touch {touch}: within one step {:.3} %, MSE {mse:.2e}", 100.0 * within);
-        assert!(within >= 0.999 && mse <= 1e-6, "weighting {weighting}: {within}, {mse}");
+        assert!(
+            within >= common::agreement::MIN_WITHIN && mse <= common::agreement::MAX_MSE,
+            "weighting {weighting}: {within}, {mse}"
+        );
     }
     common::assert_validation_clean(&vk);
 }

@@ -11,7 +11,7 @@ use aokit_cpu::no_progress;
 /// Fraction of inner pixels whose |cpu − gpu| is within 1/255 and the largest difference
 /// (both buffers must cover the full target; the guard band is cropped away).
 fn compare(view: &aokit_shaders::common::ViewParams, a: &[f32], b: &[f32]) -> (f64, f32) {
-    (common::inner_within(view, a, b, 1.0 / 255.0), common::inner_max_abs(view, a, b))
+    (common::inner_within(view, a, b, common::agreement::STEP), common::inner_max_abs(view, a, b))
 }
 
 #[test]
@@ -31,7 +31,7 @@ fn vao_spirv_agrees_with_cpu_sim_on_the_same_gbuffer() {
     for (name, a, b) in [("vao", &on_cpu.ao, &on_gpu.ao), ("vao+blur", &on_cpu.ao_final, &on_gpu.ao_final)] {
         let (within, max) = compare(&view, a, b);
         eprintln!("{name}: {:.4} % within 1/255, max |Δ| = {max:.2e} ({:.3}/255)", 100.0 * within, max * 255.0);
-        assert!(within >= 0.999, "{name}: only {:.3} % within 1/255", 100.0 * within);
+        assert!(within >= common::agreement::MIN_WITHIN, "{name}: only {:.3} % within 1/255", 100.0 * within);
         assert!(max <= 4.0 / 255.0, "{name}: max difference {max}");
     }
     common::assert_validation_clean(&vk);

@@ -300,7 +300,7 @@ fn raysvao_vulkan_agrees_with_cpu_sim() {
     common::assert_validation_clean(&vk);
     let view = frame.camera.view;
     let m = common::inner_mse(&view, &c.ao, &v.ao);
-    let close = common::inner_within(&view, &c.ao, &v.ao, 1.0 / 255.0);
+    let close = common::inner_within(&view, &c.ao, &v.ao, common::agreement::STEP);
     eprintln!(
         "Ray-SVAO CPU vs Vulkan (inner image): MSE {m:.3e}, {:.3} % within 1/255; rays {} vs {}",
         100.0 * close,

@@ -321,7 +321,8 @@ fn run_page(browser: &str, scene: &str) {
         let page: Vec<f32> = bytemuck::pod_collect_to_vec(bytes);
         assert_eq!(page.len(), reference.len(), "{spec}: the page sent {} pixels", page.len());
         let n = page.len() as f64;
-        let within = page.iter().zip(&reference).filter(|(a, b)| (*a - *b).abs() <= 1.0 / 255.0).count() as f64 / n;
+        let within =
+            page.iter().zip(&reference).filter(|(a, b)| (*a - *b).abs() <= common::agreement::STEP).count() as f64 / n;
         let mse = page.iter().zip(&reference).map(|(a, b)| ((a - b) as f64).powi(2)).sum::<f64>() / n;
         let max = page.iter().zip(&reference).map(|(a, b)| (a - b).abs()).fold(0.0f32, f32::max);
         let occluded = reference.iter().filter(|&&v| v < 0.9).count() as f64 / n;

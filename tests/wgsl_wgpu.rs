@@ -229,7 +229,8 @@ fn every_webgpu_technique_from_the_manifest_alone_on_wgpu_agrees_with_cpu_sim() 
             );
             assert_eq!((a.len(), b.len()), (160 * 96, 160 * 96), "{spec}: inner image lengths");
             let n = a.len() as f64;
-            let within = a.iter().zip(&b).filter(|(x, y)| (*x - *y).abs() <= 1.0 / 255.0).count() as f64 / n;
+            let within =
+                a.iter().zip(&b).filter(|(x, y)| (*x - *y).abs() <= common::agreement::STEP).count() as f64 / n;
             let mse = a.iter().zip(&b).map(|(x, y)| ((x - y) as f64).powi(2)).sum::<f64>() / n;
             let occluded = a.iter().filter(|&&v| v < 0.9).count() as f64 / n;
             eprintln!(
@@ -241,7 +242,7 @@ fn every_webgpu_technique_from_the_manifest_alone_on_wgpu_agrees_with_cpu_sim() 
                 failures
                     .push(format!("{scene_name} {spec}: the image must show occlusion ({:.1} %)", 100.0 * occluded));
             }
-            if within < 0.999 || mse > 1e-6 {
+            if within < common::agreement::MIN_WITHIN || mse > common::agreement::MAX_MSE {
                 failures.push(format!("{scene_name} {spec}: {:.3} % within 1/255, MSE {mse:.2e}", 100.0 * within));
             }
         }
