@@ -61,8 +61,8 @@ pub struct EngineFrame<'a> {
 }
 
 /// The context's buffer an engine frame's depth is imported into (linear view depth `f32` per
-/// full-target pixel, the guard band clamped to the edge texels): read it with
-/// [`AoContext::download`] to see what aokit made of the engine's depth.
+/// full-target pixel, the guard band clamped to the edge texels): read it with the context's
+/// `download` (feature `harness`) to see what aokit made of the engine's depth.
 pub const ENGINE_DEPTH: &str = "engine_linear_depth";
 /// The context's buffer an engine frame's normals are imported into (octahedral `u32` codes per
 /// full-target pixel).

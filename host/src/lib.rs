@@ -83,7 +83,9 @@ pub use aokit_shaders::temporal::settings::TemporalSettings;
 pub use ash;
 pub use context::ExternalDevice;
 pub use effect::{AoEffect, AoError, AoFrame, AoScene, AoSettings, DepthConvention, SceneGeometry};
-pub use graph::{ENGINE_DEPTH, ENGINE_NORMALS, FRAMES_IN_FLIGHT};
+pub use graph::FRAMES_IN_FLIGHT;
+#[cfg(feature = "harness")]
+pub use graph::{ENGINE_DEPTH, ENGINE_NORMALS};
 #[cfg(feature = "testing")]
 pub use graph::{FreeAudit, Sabotage};
 
