@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Instruction, block and branch counts of SPIR-V modules: what a GPU pays for in code size and
-divergence, measured on the binary itself (SPIR-V 1.6 spec, §2.3 "Physical Layout of a SPIR-V
-Module and Instruction": a 5-word header, then instructions whose first word holds the word count
+divergence, measured on the binary itself (SPIR-V 1.6 specification, section 2.3 "Physical Layout of a
+SPIR-V Module and Instruction": a 5-word header, then instructions whose first word holds the word count
 in its high 16 bits and the opcode in its low 16).
 
     python3 bench/spirv_stats.py [--peer NAME=PATH.spv ...] [--out bench/SPIRV_STATS.md]
@@ -16,7 +16,7 @@ import os
 import struct
 import sys
 
-# Opcodes (SPIR-V 1.6 spec §3.52, "Instructions").
+# Opcodes (SPIR-V 1.6 specification, section 3.52 "Instructions").
 OP = {
     "OpFunction": 54,
     "OpFunctionCall": 57,

@@ -326,7 +326,7 @@ struct EngineGBuffer {
 
 /// Stored bytes of the hardware depths `hw` (in [0, 1]) in `format`, and what the sampler
 /// returns for them: UNORM depth `u = round(d·(2^b − 1))` reads back as `u/(2^b − 1)` (Vulkan
-/// spec §"Fixed-Point Data Conversions"); D24 travels in the low 24 bits of 32.
+/// spec, "Fixed-Point Data Conversions"); D24 travels in the low 24 bits of 32.
 fn depth_texels(format: vk::Format, hw: &[f32]) -> (Vec<u8>, Vec<f32>) {
     let unorm = |bits: u32| {
         let max = ((1u64 << bits) - 1) as f64;

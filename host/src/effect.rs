@@ -48,7 +48,7 @@ pub enum DepthConvention {
     ReversedInfinite,
     /// 0 at the near plane, 1 at the far plane, from an OpenGL-style projection whose clip depth
     /// spans `[−1, 1]` (`glFrustum`, glam's `Mat4::perspective_rh_gl`) and is stored as the
-    /// window depth `0.5·z + 0.5`: OpenGL with `glDepthRange(0, 1)` (OpenGL 4.6 §13.8.1), or
+    /// window depth `0.5·z + 0.5`: OpenGL with `glDepthRange(0, 1)` (OpenGL 4.6 core specification, section 13.8.1), or
     /// Vulkan with `VK_EXT_depth_clip_control`'s `negativeOneToOne`. The stored values are those
     /// of [`DepthConvention::Standard`]; only the planes are read differently from the matrix.
     NegativeOneToOne,
