@@ -4,16 +4,18 @@ divergence, measured on the binary itself (SPIR-V 1.6 specification, section 2.3
 SPIR-V Module and Instruction": a 5-word header, then instructions whose first word holds the word count
 in its high 16 bits and the opcode in its low 16).
 
-    python3 bench/spirv_stats.py [--peer NAME=PATH.spv ...] [--out bench/SPIRV_STATS.md]
+    python3 bench/spirv_stats.py [--baseline REV] [--peer NAME=PATH.spv ...] [--out bench/SPIRV_STATS.md]
 
 Counts every module in assets/spirv/ (aokit's committed SPIR-V) and any peer modules given, and
-writes one Markdown table. Standard library only.
+writes Markdown tables; with --baseline, also each module's counts at git revision REV beside
+today's (before → after). Standard library only.
 """
 
 import argparse
 import hashlib
 import os
 import struct
+import subprocess
 import sys
 
 # Opcodes (SPIR-V 1.6 specification, section 3.52 "Instructions").
@@ -114,12 +116,30 @@ def table(rows) -> str:
     return head + "".join(f"| {name} | " + " | ".join(str(s[c]) for c in COLUMNS) + " |\n" for name, s in rows)
 
 
+BEFORE_AFTER = ["instructions", "blocks", "conditional branches", "OpULessThan", "OpSelect"]
+
+
+def baseline_table(repo: str, rev: str, rows) -> str:
+    """Before (the modules at git revision `rev`) → after (today's) for the columns above."""
+    def at_rev(name):
+        path = f"assets/spirv/{name}"
+        done = subprocess.run(["git", "-C", repo, "show", f"{rev}:{path}"], capture_output=True)
+        return stats(done.stdout) if done.returncode == 0 else None
+    out = f"\n## Before ({rev}) → after\n\n| module | " + " | ".join(BEFORE_AFTER) + " |\n|---|" + "---:|" * len(BEFORE_AFTER) + "\n"
+    for name, now in rows:
+        before = at_rev(name)
+        cells = [f"{before[c]} → {now[c]}" if before else f"new: {now[c]}" for c in BEFORE_AFTER]
+        out += f"| {name} | " + " | ".join(cells) + " |\n"
+    return out
+
+
 def main() -> int:
     here = os.path.dirname(os.path.abspath(__file__))
     repo = os.path.dirname(here)
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--spirv", default=os.path.join(repo, "assets", "spirv"), help="folder of aokit's modules")
     parser.add_argument("--peer", action="append", default=[], metavar="NAME=PATH", help="a peer module to count beside aokit's")
+    parser.add_argument("--baseline", metavar="REV", help="a git revision whose assets/spirv/ to compare with")
     parser.add_argument("--out", default=os.path.join(here, "SPIRV_STATS.md"), help="the Markdown file to write ('-': stdout)")
     args = parser.parse_args()
     rows = []
@@ -158,6 +178,8 @@ def main() -> int:
         "(issue 26). A module holds one entry point and the functions it calls.\n\n"
         "## aokit\n\n" + table(rows)
     )
+    if args.baseline:
+        text += baseline_table(repo, args.baseline, rows)
     if peers:
         text += "\n## Peers\n\n" + table(peers)
     if args.out == "-":

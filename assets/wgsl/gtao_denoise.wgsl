@@ -56,707 +56,241 @@ var<storage, read_write> terms_out: type_10;
 var<storage, read_write> ao: type_7;
 
 fn function_() {
-    var phi_177_: f32;
-    var phi_195_: i32;
-    var phi_214_: i32;
-    var phi_233_: i32;
-    var phi_252_: i32;
-    var phi_271_: i32;
-    var phi_290_: i32;
-    var phi_309_: i32;
-    var phi_328_: i32;
-    var phi_559_: i32;
-    var phi_578_: i32;
-    var phi_597_: i32;
-    var phi_616_: i32;
-    var phi_635_: i32;
-    var phi_654_: i32;
-    var phi_673_: i32;
-    var phi_692_: i32;
-    var phi_885_: f32;
-    var phi_903_: u32;
-    var phi_948_: f32;
-    var phi_966_: i32;
-    var phi_985_: i32;
-    var phi_1004_: i32;
-    var phi_1023_: i32;
-    var phi_1042_: i32;
-    var phi_1061_: i32;
-    var phi_1080_: i32;
-    var phi_1099_: i32;
-    var phi_1330_: i32;
-    var phi_1349_: i32;
-    var phi_1368_: i32;
-    var phi_1387_: i32;
-    var phi_1406_: i32;
-    var phi_1425_: i32;
-    var phi_1444_: i32;
-    var phi_1463_: i32;
-    var phi_1823_: vec3<f32>;
-    var phi_1873_: type_22;
-    var phi_1874_: type_22;
-    var phi_1876_: type_22;
-    var phi_1877_: type_22;
-    var phi_1878_: bool;
-    var phi_1882_: type_22;
+    var phi_175_: f32;
+    var phi_749_: f32;
+    var phi_767_: u32;
+    var phi_812_: f32;
+    var phi_1553_: vec3<f32>;
+    var phi_1603_: type_22;
+    var phi_1604_: type_22;
+    var phi_1606_: type_22;
+    var phi_1607_: type_22;
+    var phi_1608_: bool;
+    var phi_1612_: type_22;
 
     switch bitcast<i32>(0u) {
         default: {
             let _e44 = id_1;
-            let _e46 = arrayLength((&terms_in.member));
-            let _e48 = arrayLength((&edges.member));
-            let _e57 = params.member.member.member[0u];
-            let _e62 = select(select(u32(_e57), 0u, (_e57 < 0f)), 4294967295u, (_e57 > 4294967000f));
-            let _e67 = params.member.member.member[1u];
-            let _e72 = select(select(u32(_e67), 0u, (_e67 < 0f)), 4294967295u, (_e67 > 4294967000f));
-            if (_e44.x >= _e62) {
+            let _e53 = params.member.member.member[0u];
+            let _e58 = select(select(u32(_e53), 0u, (_e53 < 0f)), 4294967295u, (_e53 > 4294967000f));
+            let _e63 = params.member.member.member[1u];
+            let _e68 = select(select(u32(_e63), 0u, (_e63 < 0f)), 4294967295u, (_e63 > 4294967000f));
+            if (_e44.x >= _e58) {
             } else {
-                if (_e44.y >= _e72) {
+                if (_e44.y >= _e68) {
                 } else {
-                    let _e79 = params.member.member_12;
-                    let _e83 = params.member.member_10;
-                    let _e86 = ((_e79 + 1u) >= select(1u, _e83, (1u < _e83)));
-                    let _e89 = params.member.member_13;
-                    if (_e89 == 0u) {
-                        if (_e83 == 0u) {
-                            phi_177_ = 10000f;
+                    let _e75 = params.member.member_12;
+                    let _e79 = params.member.member_10;
+                    let _e82 = ((_e75 + 1u) >= select(1u, _e79, (1u < _e79)));
+                    let _e85 = params.member.member_13;
+                    if (_e85 == 0u) {
+                        if (_e79 == 0u) {
+                            phi_175_ = 10000f;
                         } else {
-                            phi_177_ = select(0.24000001f, 1.2f, _e86);
+                            phi_175_ = select(0.24000001f, 1.2f, _e82);
                         }
-                        let _e94 = phi_177_;
-                        let _e95 = bitcast<i32>(_e44.x);
-                        let _e96 = (_e95 + -1i);
-                        let _e98 = (bitcast<i32>(_e62) - 1i);
-                        let _e99 = (0i <= _e98);
-                        if _e99 {
+                        let _e90 = phi_175_;
+                        let _e91 = bitcast<i32>(_e44.x);
+                        let _e92 = (_e91 + -1i);
+                        let _e94 = select(0i, _e92, (0i < _e92));
+                        let _e96 = (bitcast<i32>(_e58) - 1i);
+                        let _e99 = bitcast<u32>(select(_e94, _e96, (_e96 < _e94)));
+                        let _e100 = bitcast<i32>(_e44.y);
+                        let _e102 = select(0i, _e100, (0i < _e100));
+                        let _e104 = (bitcast<i32>(_e68) - 1i);
+                        let _e108 = (_e91 + 1i);
+                        let _e110 = select(0i, _e108, (0i < _e108));
+                        let _e113 = bitcast<u32>(select(_e110, _e96, (_e96 < _e110)));
+                        let _e115 = select(0i, _e91, (0i < _e91));
+                        let _e118 = bitcast<u32>(select(_e115, _e96, (_e96 < _e115)));
+                        let _e119 = (_e100 + -1i);
+                        let _e121 = select(0i, _e119, (0i < _e119));
+                        let _e125 = (_e100 + 1i);
+                        let _e127 = select(0i, _e125, (0i < _e125));
+                        let _e131 = (bitcast<u32>(select(_e102, _e104, (_e104 < _e102))) * _e58);
+                        let _e132 = (_e131 + _e99);
+                        let _e135 = edges.member[_e132];
+                        let _e149 = (_e131 + _e113);
+                        let _e152 = edges.member[_e149];
+                        let _e166 = (bitcast<u32>(select(_e121, _e104, (_e104 < _e121))) * _e58);
+                        let _e167 = (_e166 + _e118);
+                        let _e170 = edges.member[_e167];
+                        let _e184 = (bitcast<u32>(select(_e127, _e104, (_e104 < _e127))) * _e58);
+                        let _e185 = (_e184 + _e118);
+                        let _e188 = edges.member[_e185];
+                        let _e205 = ((_e44.y * _e58) + _e44.x);
+                        let _e208 = edges.member[_e205];
+                        let _e227 = ((f32(((_e208 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f) * (f32(((_e135 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f));
+                        let _e228 = ((f32(((_e208 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f) * (f32(((_e152 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f));
+                        let _e229 = ((f32(((_e208 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f) * (f32((_e170 & 3u)) * 0.33333334f));
+                        let _e230 = ((f32((_e208 & 3u)) * 0.33333334f) * (f32(((_e188 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f));
+                        let _e234 = (1.5f - (((_e227 + _e228) + _e229) + _e230));
+                        let _e239 = (select(0f, select(1f, _e234, (_e234 < 1f)), (_e234 > 0f)) * 0.33333334f);
+                        let _e240 = (_e227 + _e239);
+                        let _e244 = select(0f, select(1f, _e240, (_e240 < 1f)), (_e240 > 0f));
+                        let _e245 = (_e228 + _e239);
+                        let _e249 = select(0f, select(1f, _e245, (_e245 < 1f)), (_e245 > 0f));
+                        let _e250 = (_e229 + _e239);
+                        let _e254 = select(0f, select(1f, _e250, (_e250 < 1f)), (_e250 > 0f));
+                        let _e255 = (_e230 + _e239);
+                        let _e259 = select(0f, select(1f, _e255, (_e255 < 1f)), (_e255 > 0f));
+                        let _e263 = (((_e244 * (f32(((_e135 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f)) + (_e254 * (f32(((_e170 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f))) * 0.425f);
+                        let _e267 = (((_e254 * (f32(((_e170 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f)) + (_e249 * (f32(((_e152 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f))) * 0.425f);
+                        let _e271 = (((_e259 * (f32(((_e188 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f)) + (_e244 * (f32((_e135 & 3u)) * 0.33333334f))) * 0.425f);
+                        let _e275 = (((_e249 * (f32((_e152 & 3u)) * 0.33333334f)) + (_e259 * (f32(((_e188 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f))) * 0.425f);
+                        let _e286 = terms_in.member[_e205];
+                        let _e292 = terms_in.member[_e132];
+                        let _e299 = terms_in.member[_e149];
+                        let _e306 = terms_in.member[_e167];
+                        let _e313 = terms_in.member[_e185];
+                        let _e321 = terms_in.member[(_e166 + _e99)];
+                        let _e329 = terms_in.member[(_e166 + _e113)];
+                        let _e337 = terms_in.member[(_e184 + _e99)];
+                        let _e345 = terms_in.member[(_e184 + _e113)];
+                        let _e350 = (((((((((((f32(_e286) * 0.003921569f) * _e90) + ((f32(_e292) * 0.003921569f) * _e244)) + ((f32(_e299) * 0.003921569f) * _e249)) + ((f32(_e306) * 0.003921569f) * _e254)) + ((f32(_e313) * 0.003921569f) * _e259)) + ((f32(_e321) * 0.003921569f) * _e263)) + ((f32(_e329) * 0.003921569f) * _e267)) + ((f32(_e337) * 0.003921569f) * _e271)) + ((f32(_e345) * 0.003921569f) * _e275)) / ((((((((_e90 + _e244) + _e249) + _e254) + _e259) + _e263) + _e267) + _e271) + _e275));
+                        if _e82 {
+                            phi_749_ = ((_e350 * 382.5f) + 0.5f);
                         } else {
-                            break;
+                            phi_749_ = ((_e350 * 255f) + 0.5f);
                         }
-                        let _e100 = (_e96 < 0i);
-                        if _e100 {
-                            phi_195_ = 0i;
+                        let _e356 = phi_749_;
+                        if (_e356 > 0f) {
+                            let _e362 = select(select(u32(_e356), 0u, (_e356 < 0f)), 4294967295u, (_e356 > 4294967000f));
+                            phi_767_ = select(_e362, 255u, (255u < _e362));
                         } else {
-                            phi_195_ = select(_e96, _e98, (_e96 > _e98));
+                            phi_767_ = 0u;
                         }
-                        let _e104 = phi_195_;
-                        let _e106 = bitcast<i32>(_e44.y);
-                        let _e108 = (bitcast<i32>(_e72) - 1i);
-                        let _e109 = (0i <= _e108);
-                        if _e109 {
-                        } else {
-                            break;
-                        }
-                        let _e110 = (_e106 < 0i);
-                        if _e110 {
-                            phi_214_ = 0i;
-                        } else {
-                            phi_214_ = select(_e106, _e108, (_e106 > _e108));
-                        }
-                        let _e114 = phi_214_;
-                        let _e116 = (_e95 + 1i);
-                        if _e99 {
-                        } else {
-                            break;
-                        }
-                        let _e117 = (_e116 < 0i);
-                        if _e117 {
-                            phi_233_ = 0i;
-                        } else {
-                            phi_233_ = select(_e116, _e98, (_e116 > _e98));
-                        }
-                        let _e121 = phi_233_;
-                        if _e109 {
-                        } else {
-                            break;
-                        }
-                        if _e110 {
-                            phi_252_ = 0i;
-                        } else {
-                            phi_252_ = select(_e106, _e108, (_e106 > _e108));
-                        }
-                        let _e126 = phi_252_;
-                        if _e99 {
-                        } else {
-                            break;
-                        }
-                        let _e128 = (_e95 < 0i);
-                        if _e128 {
-                            phi_271_ = 0i;
-                        } else {
-                            phi_271_ = select(_e95, _e98, (_e95 > _e98));
-                        }
-                        let _e132 = phi_271_;
-                        let _e134 = (_e106 + -1i);
-                        if _e109 {
-                        } else {
-                            break;
-                        }
-                        let _e135 = (_e134 < 0i);
-                        if _e135 {
-                            phi_290_ = 0i;
-                        } else {
-                            phi_290_ = select(_e134, _e108, (_e134 > _e108));
-                        }
-                        let _e139 = phi_290_;
-                        if _e99 {
-                        } else {
-                            break;
-                        }
-                        if _e128 {
-                            phi_309_ = 0i;
-                        } else {
-                            phi_309_ = select(_e95, _e98, (_e95 > _e98));
-                        }
-                        let _e144 = phi_309_;
-                        let _e146 = (_e106 + 1i);
-                        if _e109 {
-                        } else {
-                            break;
-                        }
-                        let _e147 = (_e146 < 0i);
-                        if _e147 {
-                            phi_328_ = 0i;
-                        } else {
-                            phi_328_ = select(_e146, _e108, (_e146 > _e108));
-                        }
-                        let _e151 = phi_328_;
-                        let _e154 = ((bitcast<u32>(_e114) * _e62) + bitcast<u32>(_e104));
-                        if (_e154 < _e48) {
-                        } else {
-                            break;
-                        }
-                        let _e158 = edges.member[_e154];
-                        let _e173 = ((bitcast<u32>(_e126) * _e62) + bitcast<u32>(_e121));
-                        if (_e173 < _e48) {
-                        } else {
-                            break;
-                        }
-                        let _e177 = edges.member[_e173];
-                        let _e192 = ((bitcast<u32>(_e139) * _e62) + bitcast<u32>(_e132));
-                        if (_e192 < _e48) {
-                        } else {
-                            break;
-                        }
-                        let _e196 = edges.member[_e192];
-                        let _e211 = ((bitcast<u32>(_e151) * _e62) + bitcast<u32>(_e144));
-                        if (_e211 < _e48) {
-                        } else {
-                            break;
-                        }
-                        let _e215 = edges.member[_e211];
-                        let _e232 = ((_e44.y * _e62) + _e44.x);
-                        if (_e232 < _e48) {
-                        } else {
-                            break;
-                        }
-                        let _e236 = edges.member[_e232];
-                        let _e255 = ((f32(((_e236 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f) * (f32(((_e158 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f));
-                        let _e256 = ((f32(((_e236 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f) * (f32(((_e177 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f));
-                        let _e257 = ((f32(((_e236 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f) * (f32((_e196 & 3u)) * 0.33333334f));
-                        let _e258 = ((f32((_e236 & 3u)) * 0.33333334f) * (f32(((_e215 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f));
-                        let _e262 = (1.5f - (((_e255 + _e256) + _e257) + _e258));
-                        let _e267 = (select(0f, select(1f, _e262, (_e262 < 1f)), (_e262 > 0f)) * 0.33333334f);
-                        let _e268 = (_e255 + _e267);
-                        let _e272 = select(0f, select(1f, _e268, (_e268 < 1f)), (_e268 > 0f));
-                        let _e273 = (_e256 + _e267);
-                        let _e277 = select(0f, select(1f, _e273, (_e273 < 1f)), (_e273 > 0f));
-                        let _e278 = (_e257 + _e267);
-                        let _e282 = select(0f, select(1f, _e278, (_e278 < 1f)), (_e278 > 0f));
-                        let _e283 = (_e258 + _e267);
-                        let _e287 = select(0f, select(1f, _e283, (_e283 < 1f)), (_e283 > 0f));
-                        let _e291 = (((_e272 * (f32(((_e158 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f)) + (_e282 * (f32(((_e196 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e295 = (((_e282 * (f32(((_e196 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f)) + (_e277 * (f32(((_e177 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e299 = (((_e287 * (f32(((_e215 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f)) + (_e272 * (f32((_e158 & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e303 = (((_e277 * (f32((_e177 & 3u)) * 0.33333334f)) + (_e287 * (f32(((_e215 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f))) * 0.425f);
-                        if _e99 {
-                        } else {
-                            break;
-                        }
-                        if _e100 {
-                            phi_559_ = 0i;
-                        } else {
-                            phi_559_ = select(_e96, _e98, (_e96 > _e98));
-                        }
-                        let _e315 = phi_559_;
-                        if _e109 {
-                        } else {
-                            break;
-                        }
-                        if _e135 {
-                            phi_578_ = 0i;
-                        } else {
-                            phi_578_ = select(_e134, _e108, (_e134 > _e108));
-                        }
-                        let _e320 = phi_578_;
-                        if _e99 {
-                        } else {
-                            break;
-                        }
-                        if _e117 {
-                            phi_597_ = 0i;
-                        } else {
-                            phi_597_ = select(_e116, _e98, (_e116 > _e98));
-                        }
-                        let _e325 = phi_597_;
-                        if _e109 {
-                        } else {
-                            break;
-                        }
-                        if _e135 {
-                            phi_616_ = 0i;
-                        } else {
-                            phi_616_ = select(_e134, _e108, (_e134 > _e108));
-                        }
-                        let _e330 = phi_616_;
-                        if _e99 {
-                        } else {
-                            break;
-                        }
-                        if _e100 {
-                            phi_635_ = 0i;
-                        } else {
-                            phi_635_ = select(_e96, _e98, (_e96 > _e98));
-                        }
-                        let _e335 = phi_635_;
-                        if _e109 {
-                        } else {
-                            break;
-                        }
-                        if _e147 {
-                            phi_654_ = 0i;
-                        } else {
-                            phi_654_ = select(_e146, _e108, (_e146 > _e108));
-                        }
-                        let _e340 = phi_654_;
-                        if _e99 {
-                        } else {
-                            break;
-                        }
-                        if _e117 {
-                            phi_673_ = 0i;
-                        } else {
-                            phi_673_ = select(_e116, _e98, (_e116 > _e98));
-                        }
-                        let _e345 = phi_673_;
-                        if _e109 {
-                        } else {
-                            break;
-                        }
-                        if _e147 {
-                            phi_692_ = 0i;
-                        } else {
-                            phi_692_ = select(_e146, _e108, (_e146 > _e108));
-                        }
-                        let _e350 = phi_692_;
-                        if (_e232 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e355 = terms_in.member[_e232];
-                        if (_e154 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e362 = terms_in.member[_e154];
-                        if (_e173 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e370 = terms_in.member[_e173];
-                        if (_e192 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e378 = terms_in.member[_e192];
-                        if (_e211 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e386 = terms_in.member[_e211];
-                        let _e392 = ((bitcast<u32>(_e320) * _e62) + bitcast<u32>(_e315));
-                        if (_e392 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e396 = terms_in.member[_e392];
-                        let _e402 = ((bitcast<u32>(_e330) * _e62) + bitcast<u32>(_e325));
-                        if (_e402 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e406 = terms_in.member[_e402];
-                        let _e412 = ((bitcast<u32>(_e340) * _e62) + bitcast<u32>(_e335));
-                        if (_e412 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e416 = terms_in.member[_e412];
-                        let _e422 = ((bitcast<u32>(_e350) * _e62) + bitcast<u32>(_e345));
-                        if (_e422 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e426 = terms_in.member[_e422];
-                        let _e431 = (((((((((((f32(_e355) * 0.003921569f) * _e94) + ((f32(_e362) * 0.003921569f) * _e272)) + ((f32(_e370) * 0.003921569f) * _e277)) + ((f32(_e378) * 0.003921569f) * _e282)) + ((f32(_e386) * 0.003921569f) * _e287)) + ((f32(_e396) * 0.003921569f) * _e291)) + ((f32(_e406) * 0.003921569f) * _e295)) + ((f32(_e416) * 0.003921569f) * _e299)) + ((f32(_e426) * 0.003921569f) * _e303)) / ((((((((_e94 + _e272) + _e277) + _e282) + _e287) + _e291) + _e295) + _e299) + _e303));
-                        if _e86 {
-                            phi_885_ = ((_e431 * 382.5f) + 0.5f);
-                        } else {
-                            phi_885_ = ((_e431 * 255f) + 0.5f);
-                        }
-                        let _e437 = phi_885_;
-                        if (_e437 > 0f) {
-                            let _e443 = select(select(u32(_e437), 0u, (_e437 < 0f)), 4294967295u, (_e437 > 4294967000f));
-                            phi_903_ = select(_e443, 255u, (255u < _e443));
-                        } else {
-                            phi_903_ = 0u;
-                        }
-                        let _e447 = phi_903_;
-                        phi_1876_ = type_22(_e447, (f32(_e447) * 0.003921569f), _e86);
-                        phi_1877_ = type_22();
-                        phi_1878_ = true;
+                        let _e366 = phi_767_;
+                        phi_1606_ = type_22(_e366, (f32(_e366) * 0.003921569f), _e82);
+                        phi_1607_ = type_22();
+                        phi_1608_ = true;
                     } else {
-                        if (_e83 == 0u) {
-                            phi_948_ = 10000f;
+                        if (_e79 == 0u) {
+                            phi_812_ = 10000f;
                         } else {
-                            phi_948_ = select(0.24000001f, 1.2f, _e86);
+                            phi_812_ = select(0.24000001f, 1.2f, _e82);
                         }
-                        let _e454 = phi_948_;
-                        let _e455 = bitcast<i32>(_e44.x);
-                        let _e456 = (_e455 + -1i);
-                        let _e458 = (bitcast<i32>(_e62) - 1i);
-                        let _e459 = (0i <= _e458);
-                        if _e459 {
-                        } else {
-                            break;
-                        }
-                        let _e460 = (_e456 < 0i);
-                        if _e460 {
-                            phi_966_ = 0i;
-                        } else {
-                            phi_966_ = select(_e456, _e458, (_e456 > _e458));
-                        }
-                        let _e464 = phi_966_;
-                        let _e466 = bitcast<i32>(_e44.y);
-                        let _e468 = (bitcast<i32>(_e72) - 1i);
-                        let _e469 = (0i <= _e468);
-                        if _e469 {
-                        } else {
-                            break;
-                        }
-                        let _e470 = (_e466 < 0i);
-                        if _e470 {
-                            phi_985_ = 0i;
-                        } else {
-                            phi_985_ = select(_e466, _e468, (_e466 > _e468));
-                        }
-                        let _e474 = phi_985_;
-                        let _e476 = (_e455 + 1i);
-                        if _e459 {
-                        } else {
-                            break;
-                        }
-                        let _e477 = (_e476 < 0i);
-                        if _e477 {
-                            phi_1004_ = 0i;
-                        } else {
-                            phi_1004_ = select(_e476, _e458, (_e476 > _e458));
-                        }
-                        let _e481 = phi_1004_;
-                        if _e469 {
-                        } else {
-                            break;
-                        }
-                        if _e470 {
-                            phi_1023_ = 0i;
-                        } else {
-                            phi_1023_ = select(_e466, _e468, (_e466 > _e468));
-                        }
-                        let _e486 = phi_1023_;
-                        if _e459 {
-                        } else {
-                            break;
-                        }
-                        let _e488 = (_e455 < 0i);
-                        if _e488 {
-                            phi_1042_ = 0i;
-                        } else {
-                            phi_1042_ = select(_e455, _e458, (_e455 > _e458));
-                        }
-                        let _e492 = phi_1042_;
-                        let _e494 = (_e466 + -1i);
-                        if _e469 {
-                        } else {
-                            break;
-                        }
-                        let _e495 = (_e494 < 0i);
-                        if _e495 {
-                            phi_1061_ = 0i;
-                        } else {
-                            phi_1061_ = select(_e494, _e468, (_e494 > _e468));
-                        }
-                        let _e499 = phi_1061_;
-                        if _e459 {
-                        } else {
-                            break;
-                        }
-                        if _e488 {
-                            phi_1080_ = 0i;
-                        } else {
-                            phi_1080_ = select(_e455, _e458, (_e455 > _e458));
-                        }
-                        let _e504 = phi_1080_;
-                        let _e506 = (_e466 + 1i);
-                        if _e469 {
-                        } else {
-                            break;
-                        }
-                        let _e507 = (_e506 < 0i);
-                        if _e507 {
-                            phi_1099_ = 0i;
-                        } else {
-                            phi_1099_ = select(_e506, _e468, (_e506 > _e468));
-                        }
-                        let _e511 = phi_1099_;
-                        let _e514 = ((bitcast<u32>(_e474) * _e62) + bitcast<u32>(_e464));
-                        if (_e514 < _e48) {
-                        } else {
-                            break;
-                        }
-                        let _e518 = edges.member[_e514];
-                        let _e533 = ((bitcast<u32>(_e486) * _e62) + bitcast<u32>(_e481));
-                        if (_e533 < _e48) {
-                        } else {
-                            break;
-                        }
-                        let _e537 = edges.member[_e533];
-                        let _e552 = ((bitcast<u32>(_e499) * _e62) + bitcast<u32>(_e492));
-                        if (_e552 < _e48) {
-                        } else {
-                            break;
-                        }
-                        let _e556 = edges.member[_e552];
-                        let _e571 = ((bitcast<u32>(_e511) * _e62) + bitcast<u32>(_e504));
-                        if (_e571 < _e48) {
-                        } else {
-                            break;
-                        }
-                        let _e575 = edges.member[_e571];
-                        let _e592 = ((_e44.y * _e62) + _e44.x);
-                        if (_e592 < _e48) {
-                        } else {
-                            break;
-                        }
-                        let _e596 = edges.member[_e592];
-                        let _e615 = ((f32(((_e596 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f) * (f32(((_e518 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f));
-                        let _e616 = ((f32(((_e596 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f) * (f32(((_e537 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f));
-                        let _e617 = ((f32(((_e596 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f) * (f32((_e556 & 3u)) * 0.33333334f));
-                        let _e618 = ((f32((_e596 & 3u)) * 0.33333334f) * (f32(((_e575 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f));
-                        let _e622 = (1.5f - (((_e615 + _e616) + _e617) + _e618));
-                        let _e627 = (select(0f, select(1f, _e622, (_e622 < 1f)), (_e622 > 0f)) * 0.33333334f);
-                        let _e628 = (_e615 + _e627);
-                        let _e632 = select(0f, select(1f, _e628, (_e628 < 1f)), (_e628 > 0f));
-                        let _e633 = (_e616 + _e627);
-                        let _e637 = select(0f, select(1f, _e633, (_e633 < 1f)), (_e633 > 0f));
-                        let _e638 = (_e617 + _e627);
-                        let _e642 = select(0f, select(1f, _e638, (_e638 < 1f)), (_e638 > 0f));
-                        let _e643 = (_e618 + _e627);
-                        let _e647 = select(0f, select(1f, _e643, (_e643 < 1f)), (_e643 > 0f));
-                        let _e651 = (((_e632 * (f32(((_e518 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f)) + (_e642 * (f32(((_e556 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e655 = (((_e642 * (f32(((_e556 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f)) + (_e637 * (f32(((_e537 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e659 = (((_e647 * (f32(((_e575 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f)) + (_e632 * (f32((_e518 & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e663 = (((_e637 * (f32((_e537 & 3u)) * 0.33333334f)) + (_e647 * (f32(((_e575 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e671 = ((((((((_e454 + _e632) + _e637) + _e642) + _e647) + _e651) + _e655) + _e659) + _e663);
-                        if _e459 {
-                        } else {
-                            break;
-                        }
-                        if _e460 {
-                            phi_1330_ = 0i;
-                        } else {
-                            phi_1330_ = select(_e456, _e458, (_e456 > _e458));
-                        }
-                        let _e675 = phi_1330_;
-                        if _e469 {
-                        } else {
-                            break;
-                        }
-                        if _e495 {
-                            phi_1349_ = 0i;
-                        } else {
-                            phi_1349_ = select(_e494, _e468, (_e494 > _e468));
-                        }
-                        let _e680 = phi_1349_;
-                        if _e459 {
-                        } else {
-                            break;
-                        }
-                        if _e477 {
-                            phi_1368_ = 0i;
-                        } else {
-                            phi_1368_ = select(_e476, _e458, (_e476 > _e458));
-                        }
-                        let _e685 = phi_1368_;
-                        if _e469 {
-                        } else {
-                            break;
-                        }
-                        if _e495 {
-                            phi_1387_ = 0i;
-                        } else {
-                            phi_1387_ = select(_e494, _e468, (_e494 > _e468));
-                        }
-                        let _e690 = phi_1387_;
-                        if _e459 {
-                        } else {
-                            break;
-                        }
-                        if _e460 {
-                            phi_1406_ = 0i;
-                        } else {
-                            phi_1406_ = select(_e456, _e458, (_e456 > _e458));
-                        }
-                        let _e695 = phi_1406_;
-                        if _e469 {
-                        } else {
-                            break;
-                        }
-                        if _e507 {
-                            phi_1425_ = 0i;
-                        } else {
-                            phi_1425_ = select(_e506, _e468, (_e506 > _e468));
-                        }
-                        let _e700 = phi_1425_;
-                        if _e459 {
-                        } else {
-                            break;
-                        }
-                        if _e477 {
-                            phi_1444_ = 0i;
-                        } else {
-                            phi_1444_ = select(_e476, _e458, (_e476 > _e458));
-                        }
-                        let _e705 = phi_1444_;
-                        if _e469 {
-                        } else {
-                            break;
-                        }
-                        if _e507 {
-                            phi_1463_ = 0i;
-                        } else {
-                            phi_1463_ = select(_e506, _e468, (_e506 > _e468));
-                        }
-                        let _e710 = phi_1463_;
-                        if (_e592 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e715 = terms_in.member[_e592];
-                        if (_e514 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e740 = terms_in.member[_e514];
-                        if (_e533 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e769 = terms_in.member[_e533];
-                        if (_e552 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e798 = terms_in.member[_e552];
-                        if (_e571 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e827 = terms_in.member[_e571];
-                        let _e854 = ((bitcast<u32>(_e680) * _e62) + bitcast<u32>(_e675));
-                        if (_e854 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e858 = terms_in.member[_e854];
-                        let _e885 = ((bitcast<u32>(_e690) * _e62) + bitcast<u32>(_e685));
-                        if (_e885 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e889 = terms_in.member[_e885];
-                        let _e916 = ((bitcast<u32>(_e700) * _e62) + bitcast<u32>(_e695));
-                        if (_e916 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e920 = terms_in.member[_e916];
-                        let _e947 = ((bitcast<u32>(_e710) * _e62) + bitcast<u32>(_e705));
-                        if (_e947 < _e46) {
-                        } else {
-                            break;
-                        }
-                        let _e951 = terms_in.member[_e947];
-                        let _e977 = (((((((((((f32((_e715 & 255u)) * 0.003921569f) * _e454) + ((f32((_e740 & 255u)) * 0.003921569f) * _e632)) + ((f32((_e769 & 255u)) * 0.003921569f) * _e637)) + ((f32((_e798 & 255u)) * 0.003921569f) * _e642)) + ((f32((_e827 & 255u)) * 0.003921569f) * _e647)) + ((f32((_e858 & 255u)) * 0.003921569f) * _e651)) + ((f32((_e889 & 255u)) * 0.003921569f) * _e655)) + ((f32((_e920 & 255u)) * 0.003921569f) * _e659)) + ((f32((_e951 & 255u)) * 0.003921569f) * _e663)) / _e671);
-                        let _e978 = (((((((((((f32(((_e715 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e454) + ((f32(((_e740 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e632)) + ((f32(((_e769 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e637)) + ((f32(((_e798 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e642)) + ((f32(((_e827 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e647)) + ((f32(((_e858 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e651)) + ((f32(((_e889 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e655)) + ((f32(((_e920 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e659)) + ((f32(((_e951 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e663)) / _e671);
-                        let _e979 = (((((((((((f32(((_e715 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e454) + ((f32(((_e740 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e632)) + ((f32(((_e769 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e637)) + ((f32(((_e798 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e642)) + ((f32(((_e827 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e647)) + ((f32(((_e858 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e651)) + ((f32(((_e889 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e655)) + ((f32(((_e920 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e659)) + ((f32(((_e951 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e663)) / _e671);
-                        let _e980 = (((((((((((f32((_e715 >> bitcast<u32>(24i))) * 0.003921569f) * _e454) + ((f32((_e740 >> bitcast<u32>(24i))) * 0.003921569f) * _e632)) + ((f32((_e769 >> bitcast<u32>(24i))) * 0.003921569f) * _e637)) + ((f32((_e798 >> bitcast<u32>(24i))) * 0.003921569f) * _e642)) + ((f32((_e827 >> bitcast<u32>(24i))) * 0.003921569f) * _e647)) + ((f32((_e858 >> bitcast<u32>(24i))) * 0.003921569f) * _e651)) + ((f32((_e889 >> bitcast<u32>(24i))) * 0.003921569f) * _e655)) + ((f32((_e920 >> bitcast<u32>(24i))) * 0.003921569f) * _e659)) + ((f32((_e951 >> bitcast<u32>(24i))) * 0.003921569f) * _e663)) / _e671);
-                        if _e86 {
-                            let _e984 = ((_e977 * 2f) - 1f);
-                            let _e985 = ((_e978 * 2f) - 1f);
-                            let _e986 = ((_e979 * 2f) - 1f);
-                            let _e992 = sqrt((((_e984 * _e984) + (_e985 * _e985)) + (_e986 * _e986)));
-                            if (_e992 > 0f) {
-                                phi_1823_ = vec3<f32>((_e984 / _e992), (_e985 / _e992), (_e986 / _e992));
+                        let _e373 = phi_812_;
+                        let _e374 = bitcast<i32>(_e44.x);
+                        let _e375 = (_e374 + -1i);
+                        let _e377 = select(0i, _e375, (0i < _e375));
+                        let _e379 = (bitcast<i32>(_e58) - 1i);
+                        let _e382 = bitcast<u32>(select(_e377, _e379, (_e379 < _e377)));
+                        let _e383 = bitcast<i32>(_e44.y);
+                        let _e385 = select(0i, _e383, (0i < _e383));
+                        let _e387 = (bitcast<i32>(_e68) - 1i);
+                        let _e391 = (_e374 + 1i);
+                        let _e393 = select(0i, _e391, (0i < _e391));
+                        let _e396 = bitcast<u32>(select(_e393, _e379, (_e379 < _e393)));
+                        let _e398 = select(0i, _e374, (0i < _e374));
+                        let _e401 = bitcast<u32>(select(_e398, _e379, (_e379 < _e398)));
+                        let _e402 = (_e383 + -1i);
+                        let _e404 = select(0i, _e402, (0i < _e402));
+                        let _e408 = (_e383 + 1i);
+                        let _e410 = select(0i, _e408, (0i < _e408));
+                        let _e414 = (bitcast<u32>(select(_e385, _e387, (_e387 < _e385))) * _e58);
+                        let _e415 = (_e414 + _e382);
+                        let _e418 = edges.member[_e415];
+                        let _e432 = (_e414 + _e396);
+                        let _e435 = edges.member[_e432];
+                        let _e449 = (bitcast<u32>(select(_e404, _e387, (_e387 < _e404))) * _e58);
+                        let _e450 = (_e449 + _e401);
+                        let _e453 = edges.member[_e450];
+                        let _e467 = (bitcast<u32>(select(_e410, _e387, (_e387 < _e410))) * _e58);
+                        let _e468 = (_e467 + _e401);
+                        let _e471 = edges.member[_e468];
+                        let _e488 = ((_e44.y * _e58) + _e44.x);
+                        let _e491 = edges.member[_e488];
+                        let _e510 = ((f32(((_e491 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f) * (f32(((_e418 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f));
+                        let _e511 = ((f32(((_e491 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f) * (f32(((_e435 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f));
+                        let _e512 = ((f32(((_e491 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f) * (f32((_e453 & 3u)) * 0.33333334f));
+                        let _e513 = ((f32((_e491 & 3u)) * 0.33333334f) * (f32(((_e471 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f));
+                        let _e517 = (1.5f - (((_e510 + _e511) + _e512) + _e513));
+                        let _e522 = (select(0f, select(1f, _e517, (_e517 < 1f)), (_e517 > 0f)) * 0.33333334f);
+                        let _e523 = (_e510 + _e522);
+                        let _e527 = select(0f, select(1f, _e523, (_e523 < 1f)), (_e523 > 0f));
+                        let _e528 = (_e511 + _e522);
+                        let _e532 = select(0f, select(1f, _e528, (_e528 < 1f)), (_e528 > 0f));
+                        let _e533 = (_e512 + _e522);
+                        let _e537 = select(0f, select(1f, _e533, (_e533 < 1f)), (_e533 > 0f));
+                        let _e538 = (_e513 + _e522);
+                        let _e542 = select(0f, select(1f, _e538, (_e538 < 1f)), (_e538 > 0f));
+                        let _e546 = (((_e527 * (f32(((_e418 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f)) + (_e537 * (f32(((_e453 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f))) * 0.425f);
+                        let _e550 = (((_e537 * (f32(((_e453 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f)) + (_e532 * (f32(((_e435 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f))) * 0.425f);
+                        let _e554 = (((_e542 * (f32(((_e471 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f)) + (_e527 * (f32((_e418 & 3u)) * 0.33333334f))) * 0.425f);
+                        let _e558 = (((_e532 * (f32((_e435 & 3u)) * 0.33333334f)) + (_e542 * (f32(((_e471 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f))) * 0.425f);
+                        let _e566 = ((((((((_e373 + _e527) + _e532) + _e537) + _e542) + _e546) + _e550) + _e554) + _e558);
+                        let _e569 = terms_in.member[_e488];
+                        let _e593 = terms_in.member[_e415];
+                        let _e621 = terms_in.member[_e432];
+                        let _e649 = terms_in.member[_e450];
+                        let _e677 = terms_in.member[_e468];
+                        let _e706 = terms_in.member[(_e449 + _e382)];
+                        let _e735 = terms_in.member[(_e449 + _e396)];
+                        let _e764 = terms_in.member[(_e467 + _e382)];
+                        let _e793 = terms_in.member[(_e467 + _e396)];
+                        let _e819 = (((((((((((f32((_e569 & 255u)) * 0.003921569f) * _e373) + ((f32((_e593 & 255u)) * 0.003921569f) * _e527)) + ((f32((_e621 & 255u)) * 0.003921569f) * _e532)) + ((f32((_e649 & 255u)) * 0.003921569f) * _e537)) + ((f32((_e677 & 255u)) * 0.003921569f) * _e542)) + ((f32((_e706 & 255u)) * 0.003921569f) * _e546)) + ((f32((_e735 & 255u)) * 0.003921569f) * _e550)) + ((f32((_e764 & 255u)) * 0.003921569f) * _e554)) + ((f32((_e793 & 255u)) * 0.003921569f) * _e558)) / _e566);
+                        let _e820 = (((((((((((f32(((_e569 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e373) + ((f32(((_e593 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e527)) + ((f32(((_e621 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e532)) + ((f32(((_e649 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e537)) + ((f32(((_e677 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e542)) + ((f32(((_e706 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e546)) + ((f32(((_e735 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e550)) + ((f32(((_e764 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e554)) + ((f32(((_e793 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e558)) / _e566);
+                        let _e821 = (((((((((((f32(((_e569 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e373) + ((f32(((_e593 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e527)) + ((f32(((_e621 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e532)) + ((f32(((_e649 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e537)) + ((f32(((_e677 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e542)) + ((f32(((_e706 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e546)) + ((f32(((_e735 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e550)) + ((f32(((_e764 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e554)) + ((f32(((_e793 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e558)) / _e566);
+                        let _e822 = (((((((((((f32((_e569 >> bitcast<u32>(24i))) * 0.003921569f) * _e373) + ((f32((_e593 >> bitcast<u32>(24i))) * 0.003921569f) * _e527)) + ((f32((_e621 >> bitcast<u32>(24i))) * 0.003921569f) * _e532)) + ((f32((_e649 >> bitcast<u32>(24i))) * 0.003921569f) * _e537)) + ((f32((_e677 >> bitcast<u32>(24i))) * 0.003921569f) * _e542)) + ((f32((_e706 >> bitcast<u32>(24i))) * 0.003921569f) * _e546)) + ((f32((_e735 >> bitcast<u32>(24i))) * 0.003921569f) * _e550)) + ((f32((_e764 >> bitcast<u32>(24i))) * 0.003921569f) * _e554)) + ((f32((_e793 >> bitcast<u32>(24i))) * 0.003921569f) * _e558)) / _e566);
+                        if _e82 {
+                            let _e826 = ((_e819 * 2f) - 1f);
+                            let _e827 = ((_e820 * 2f) - 1f);
+                            let _e828 = ((_e821 * 2f) - 1f);
+                            let _e834 = sqrt((((_e826 * _e826) + (_e827 * _e827)) + (_e828 * _e828)));
+                            if (_e834 > 0f) {
+                                phi_1553_ = vec3<f32>((_e826 / _e834), (_e827 / _e834), (_e828 / _e834));
                             } else {
-                                phi_1823_ = vec3<f32>(0f, 0f, -1f);
+                                phi_1553_ = vec3<f32>(0f, 0f, -1f);
                             }
-                            let _e999 = phi_1823_;
-                            let _e1001 = ((_e980 * 382.5f) + 0.5f);
-                            let _e1006 = select(select(u32(_e1001), 0u, (_e1001 < 0f)), 4294967295u, (_e1001 > 4294967000f));
-                            let _e1010 = (f32(select(_e1006, 255u, (255u < _e1006))) * 0.003921569f);
-                            let _e1017 = ((_e999.x * 0.5f) + 0.5f);
-                            let _e1018 = ((_e999.y * 0.5f) + 0.5f);
-                            let _e1019 = ((_e999.z * -0.5f) + 0.5f);
-                            let _e1025 = ((select(0f, select(1f, _e1017, (_e1017 < 1f)), (_e1017 > 0f)) * 255f) + 0.5f);
-                            let _e1036 = ((select(0f, select(1f, _e1018, (_e1018 < 1f)), (_e1018 > 0f)) * 255f) + 0.5f);
-                            let _e1050 = ((select(0f, select(1f, _e1019, (_e1019 < 1f)), (_e1019 > 0f)) * 255f) + 0.5f);
-                            let _e1064 = ((select(0f, select(1f, _e1010, (_e1010 < 1f)), (_e1010 > 0f)) * 255f) + 0.5f);
-                            phi_1873_ = type_22((((select(select(u32(_e1025), 0u, (_e1025 < 0f)), 4294967295u, (_e1025 > 4294967000f)) | (select(select(u32(_e1036), 0u, (_e1036 < 0f)), 4294967295u, (_e1036 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1050), 0u, (_e1050 < 0f)), 4294967295u, (_e1050 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1064), 0u, (_e1064 < 0f)), 4294967295u, (_e1064 > 4294967000f)) << bitcast<u32>(24i))), _e1010, _e86);
-                            phi_1874_ = type_22();
+                            let _e841 = phi_1553_;
+                            let _e843 = ((_e822 * 382.5f) + 0.5f);
+                            let _e848 = select(select(u32(_e843), 0u, (_e843 < 0f)), 4294967295u, (_e843 > 4294967000f));
+                            let _e852 = (f32(select(_e848, 255u, (255u < _e848))) * 0.003921569f);
+                            let _e859 = ((_e841.x * 0.5f) + 0.5f);
+                            let _e860 = ((_e841.y * 0.5f) + 0.5f);
+                            let _e861 = ((_e841.z * -0.5f) + 0.5f);
+                            let _e867 = ((select(0f, select(1f, _e859, (_e859 < 1f)), (_e859 > 0f)) * 255f) + 0.5f);
+                            let _e878 = ((select(0f, select(1f, _e860, (_e860 < 1f)), (_e860 > 0f)) * 255f) + 0.5f);
+                            let _e892 = ((select(0f, select(1f, _e861, (_e861 < 1f)), (_e861 > 0f)) * 255f) + 0.5f);
+                            let _e906 = ((select(0f, select(1f, _e852, (_e852 < 1f)), (_e852 > 0f)) * 255f) + 0.5f);
+                            phi_1603_ = type_22((((select(select(u32(_e867), 0u, (_e867 < 0f)), 4294967295u, (_e867 > 4294967000f)) | (select(select(u32(_e878), 0u, (_e878 < 0f)), 4294967295u, (_e878 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e892), 0u, (_e892 < 0f)), 4294967295u, (_e892 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e906), 0u, (_e906 < 0f)), 4294967295u, (_e906 > 4294967000f)) << bitcast<u32>(24i))), _e852, _e82);
+                            phi_1604_ = type_22();
                         } else {
-                            let _e1079 = ((select(0f, select(1f, _e977, (_e977 < 1f)), (_e977 > 0f)) * 255f) + 0.5f);
-                            let _e1090 = ((select(0f, select(1f, _e978, (_e978 < 1f)), (_e978 > 0f)) * 255f) + 0.5f);
-                            let _e1104 = ((select(0f, select(1f, _e979, (_e979 < 1f)), (_e979 > 0f)) * 255f) + 0.5f);
-                            let _e1118 = ((select(0f, select(1f, _e980, (_e980 < 1f)), (_e980 > 0f)) * 255f) + 0.5f);
-                            phi_1873_ = type_22();
-                            phi_1874_ = type_22((((select(select(u32(_e1079), 0u, (_e1079 < 0f)), 4294967295u, (_e1079 > 4294967000f)) | (select(select(u32(_e1090), 0u, (_e1090 < 0f)), 4294967295u, (_e1090 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1104), 0u, (_e1104 < 0f)), 4294967295u, (_e1104 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1118), 0u, (_e1118 < 0f)), 4294967295u, (_e1118 > 4294967000f)) << bitcast<u32>(24i))), 0f, _e86);
+                            let _e921 = ((select(0f, select(1f, _e819, (_e819 < 1f)), (_e819 > 0f)) * 255f) + 0.5f);
+                            let _e932 = ((select(0f, select(1f, _e820, (_e820 < 1f)), (_e820 > 0f)) * 255f) + 0.5f);
+                            let _e946 = ((select(0f, select(1f, _e821, (_e821 < 1f)), (_e821 > 0f)) * 255f) + 0.5f);
+                            let _e960 = ((select(0f, select(1f, _e822, (_e822 < 1f)), (_e822 > 0f)) * 255f) + 0.5f);
+                            phi_1603_ = type_22();
+                            phi_1604_ = type_22((((select(select(u32(_e921), 0u, (_e921 < 0f)), 4294967295u, (_e921 > 4294967000f)) | (select(select(u32(_e932), 0u, (_e932 < 0f)), 4294967295u, (_e932 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e946), 0u, (_e946 < 0f)), 4294967295u, (_e946 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e960), 0u, (_e960 < 0f)), 4294967295u, (_e960 > 4294967000f)) << bitcast<u32>(24i))), 0f, _e82);
                         }
-                        let _e1129 = phi_1873_;
-                        let _e1131 = phi_1874_;
-                        phi_1876_ = _e1131;
-                        phi_1877_ = _e1129;
-                        phi_1878_ = select(true, false, _e86);
+                        let _e971 = phi_1603_;
+                        let _e973 = phi_1604_;
+                        phi_1606_ = _e973;
+                        phi_1607_ = _e971;
+                        phi_1608_ = select(true, false, _e82);
                     }
-                    let _e1134 = phi_1876_;
-                    let _e1136 = phi_1877_;
-                    let _e1138 = phi_1878_;
-                    if _e1138 {
-                        phi_1882_ = _e1134;
+                    let _e976 = phi_1606_;
+                    let _e978 = phi_1607_;
+                    let _e980 = phi_1608_;
+                    if _e980 {
+                        phi_1612_ = _e976;
                     } else {
-                        phi_1882_ = _e1136;
+                        phi_1612_ = _e978;
                     }
-                    let _e1140 = phi_1882_;
-                    let _e1142 = ((_e44.y * _e62) + _e44.x);
-                    if (_e1142 < arrayLength((&terms_out.member))) {
+                    let _e982 = phi_1612_;
+                    let _e984 = ((_e44.y * _e58) + _e44.x);
+                    if (_e984 < arrayLength((&terms_out.member))) {
                     } else {
                         break;
                     }
-                    terms_out.member[_e1142] = _e1140.member;
-                    if _e1140.member_2 {
-                        if (_e1142 < arrayLength((&ao.member))) {
+                    terms_out.member[_e984] = _e982.member;
+                    if _e982.member_2 {
+                        if (_e984 < arrayLength((&ao.member))) {
                         } else {
                             break;
                         }
-                        ao.member[_e1142] = _e1140.member_1;
+                        ao.member[_e984] = _e982.member_1;
                     }
                 }
             }

@@ -43,256 +43,230 @@ var<storage, read_write> mips: type_7;
 
 fn function_() {
     var local: array<f32, 4>;
-    var phi_192_: u32;
-    var phi_195_: u32;
-    var phi_193_: u32;
-    var phi_196_: u32;
+    var phi_186_: u32;
+    var phi_189_: u32;
+    var phi_187_: u32;
+    var phi_190_: u32;
     var local_1: u32;
     var local_2: u32;
     var local_3: u32;
     var local_4: u32;
-    var phi_455_: bool;
-    var phi_470_: bool;
-    var phi_485_: bool;
-    var phi_338_: u32;
-    var phi_341_: f32;
-    var phi_343_: f32;
-    var phi_385_: f32;
-    var phi_339_: u32;
-    var phi_342_: f32;
-    var phi_344_: f32;
-    var phi_490_: bool;
+    var phi_429_: bool;
+    var phi_444_: bool;
+    var phi_459_: bool;
+    var phi_312_: u32;
+    var phi_315_: f32;
+    var phi_317_: f32;
+    var phi_359_: f32;
+    var phi_313_: u32;
+    var phi_316_: f32;
+    var phi_318_: f32;
+    var phi_464_: bool;
     var local_5: f32;
     var local_6: f32;
-    var phi_398_: f32;
-    var phi_402_: u32;
-    var phi_405_: u32;
-    var phi_403_: u32;
-    var phi_406_: u32;
+    var phi_372_: f32;
+    var phi_376_: u32;
+    var phi_379_: u32;
+    var phi_377_: u32;
+    var phi_380_: u32;
     var local_7: u32;
 
     switch bitcast<i32>(0u) {
         default: {
             let _e23 = id_1;
-            let _e27 = arrayLength((&mips.member));
-            let _e32 = params.member.member.member[0u];
-            let _e37 = select(select(u32(_e32), 0u, (_e32 < 0f)), 4294967295u, (_e32 > 4294967000f));
-            let _e42 = params.member.member.member[1u];
-            let _e47 = select(select(u32(_e42), 0u, (_e42 < 0f)), 4294967295u, (_e42 > 4294967000f));
-            let _e50 = params.member.member_12;
-            let _e51 = (_e50 & 31u);
-            let _e53 = (_e37 >> bitcast<u32>(_e51));
-            let _e55 = select(1u, _e53, (1u < _e53));
-            let _e57 = (_e47 >> bitcast<u32>(_e51));
-            if (_e23.x >= _e55) {
+            let _e30 = params.member.member.member[0u];
+            let _e35 = select(select(u32(_e30), 0u, (_e30 < 0f)), 4294967295u, (_e30 > 4294967000f));
+            let _e40 = params.member.member.member[1u];
+            let _e45 = select(select(u32(_e40), 0u, (_e40 < 0f)), 4294967295u, (_e40 > 4294967000f));
+            let _e48 = params.member.member_12;
+            let _e49 = (_e48 & 31u);
+            let _e51 = (_e35 >> bitcast<u32>(_e49));
+            let _e53 = select(1u, _e51, (1u < _e51));
+            let _e55 = (_e45 >> bitcast<u32>(_e49));
+            if (_e23.x >= _e53) {
             } else {
-                if (_e23.y >= select(1u, _e57, (1u < _e57))) {
+                if (_e23.y >= select(1u, _e55, (1u < _e55))) {
                 } else {
-                    if (_e50 == 0u) {
-                        let _e66 = ((_e23.y * _e37) + _e23.x);
-                        if (_e66 < arrayLength((&depth.member))) {
-                        } else {
-                            break;
-                        }
-                        let _e70 = depth.member[_e66];
-                        let _e74 = params.member.member.member_3;
-                        let _e78 = select(_e74, _e70, select(false, (_e70 < _e74), (_e70 > 0f)));
-                        phi_398_ = select(0f, select(65504f, _e78, (_e78 < 65504f)), (_e78 > 0f));
+                    if (_e48 == 0u) {
+                        let _e67 = depth.member[((_e23.y * _e35) + _e23.x)];
+                        let _e71 = params.member.member.member_3;
+                        let _e75 = select(_e71, _e67, select(false, (_e67 < _e71), (_e67 > 0f)));
+                        phi_372_ = select(0f, select(65504f, _e75, (_e75 < 65504f)), (_e75 > 0f));
                     } else {
-                        let _e83 = (_e50 - 1u);
-                        let _e84 = (_e83 & 31u);
-                        let _e86 = (_e37 >> bitcast<u32>(_e84));
-                        let _e88 = select(1u, _e86, (1u < _e86));
-                        let _e90 = (_e47 >> bitcast<u32>(_e84));
-                        phi_192_ = 0u;
-                        phi_195_ = 0u;
+                        let _e80 = (_e48 - 1u);
+                        let _e81 = (_e80 & 31u);
+                        let _e83 = (_e35 >> bitcast<u32>(_e81));
+                        let _e85 = select(1u, _e83, (1u < _e83));
+                        let _e87 = (_e45 >> bitcast<u32>(_e81));
+                        phi_186_ = 0u;
+                        phi_189_ = 0u;
                         loop {
-                            let _e94 = phi_192_;
-                            let _e96 = phi_195_;
-                            local_1 = _e96;
-                            local_2 = _e96;
-                            local_3 = _e96;
-                            local_4 = _e96;
-                            let _e97 = (_e94 < _e83);
-                            if _e97 {
-                                let _e98 = (_e94 & 31u);
-                                let _e100 = (_e37 >> bitcast<u32>(_e98));
-                                let _e104 = (_e47 >> bitcast<u32>(_e98));
-                                phi_193_ = (_e94 + 1u);
-                                phi_196_ = (_e96 + (select(1u, _e100, (1u < _e100)) * select(1u, _e104, (1u < _e104))));
+                            let _e91 = phi_186_;
+                            let _e93 = phi_189_;
+                            local_1 = _e93;
+                            local_2 = _e93;
+                            local_3 = _e93;
+                            local_4 = _e93;
+                            let _e94 = (_e91 < _e80);
+                            if _e94 {
+                                let _e95 = (_e91 & 31u);
+                                let _e97 = (_e35 >> bitcast<u32>(_e95));
+                                let _e101 = (_e45 >> bitcast<u32>(_e95));
+                                phi_187_ = (_e91 + 1u);
+                                phi_190_ = (_e93 + (select(1u, _e97, (1u < _e97)) * select(1u, _e101, (1u < _e101))));
                             } else {
-                                phi_193_ = u32();
-                                phi_196_ = u32();
+                                phi_187_ = u32();
+                                phi_190_ = u32();
                             }
-                            let _e111 = phi_193_;
-                            let _e113 = phi_196_;
+                            let _e108 = phi_187_;
+                            let _e110 = phi_190_;
                             continue;
                             continuing {
-                                phi_192_ = _e111;
-                                phi_195_ = _e113;
-                                break if !(_e97);
+                                phi_186_ = _e108;
+                                phi_189_ = _e110;
+                                break if !(_e94);
                             }
                         }
-                        let _e115 = (2u * _e23.x);
-                        let _e116 = (2u * _e23.y);
-                        let _e117 = (select(1u, _e90, (1u < _e90)) - 1u);
-                        let _e120 = (select(_e116, _e117, (_e117 < _e116)) * _e88);
-                        let _e121 = (_e88 - 1u);
-                        let _e123 = select(_e115, _e121, (_e121 < _e115));
-                        let _e126 = local_1;
-                        let _e127 = (_e126 + (_e120 + _e123));
-                        if (_e127 < _e27) {
+                        let _e112 = (2u * _e23.x);
+                        let _e113 = (2u * _e23.y);
+                        let _e114 = (select(1u, _e87, (1u < _e87)) - 1u);
+                        let _e117 = (select(_e113, _e114, (_e114 < _e113)) * _e85);
+                        let _e118 = (_e85 - 1u);
+                        let _e120 = select(_e112, _e118, (_e118 < _e112));
+                        let _e123 = local_1;
+                        let _e127 = mips.member[(_e123 + (_e117 + _e120))];
+                        let _e128 = (_e112 + 1u);
+                        let _e130 = select(_e128, _e118, (_e118 < _e128));
+                        let _e133 = local_2;
+                        let _e137 = mips.member[(_e133 + (_e117 + _e130))];
+                        let _e138 = (_e113 + 1u);
+                        let _e141 = (select(_e138, _e114, (_e114 < _e138)) * _e85);
+                        let _e144 = local_3;
+                        let _e148 = mips.member[(_e144 + (_e141 + _e120))];
+                        let _e151 = local_4;
+                        let _e155 = mips.member[(_e151 + (_e141 + _e130))];
+                        local = array<f32, 4>(_e127, _e137, _e148, _e155);
+                        let _e159 = params.member.member_1;
+                        let _e162 = params.member.member_2;
+                        let _e164 = (0.75f * (_e159 * _e162));
+                        let _e166 = local[0u];
+                        let _e168 = local[1u];
+                        if (_e166 != _e166) {
+                            phi_429_ = true;
                         } else {
-                            break;
+                            phi_429_ = (_e168 >= _e166);
                         }
-                        let _e131 = mips.member[_e127];
-                        let _e132 = (_e115 + 1u);
-                        let _e134 = select(_e132, _e121, (_e121 < _e132));
-                        let _e137 = local_2;
-                        let _e138 = (_e137 + (_e120 + _e134));
-                        if (_e138 < _e27) {
-                        } else {
-                            break;
-                        }
-                        let _e142 = mips.member[_e138];
-                        let _e143 = (_e116 + 1u);
-                        let _e146 = (select(_e143, _e117, (_e117 < _e143)) * _e88);
-                        let _e149 = local_3;
-                        let _e150 = (_e149 + (_e146 + _e123));
-                        if (_e150 < _e27) {
-                        } else {
-                            break;
-                        }
-                        let _e154 = mips.member[_e150];
-                        let _e157 = local_4;
-                        let _e158 = (_e157 + (_e146 + _e134));
-                        if (_e158 < _e27) {
-                        } else {
-                            break;
-                        }
-                        let _e162 = mips.member[_e158];
-                        local = array<f32, 4>(_e131, _e142, _e154, _e162);
-                        let _e166 = params.member.member_1;
-                        let _e169 = params.member.member_2;
-                        let _e171 = (0.75f * (_e166 * _e169));
-                        let _e173 = local[0u];
-                        let _e175 = local[1u];
+                        let _e172 = phi_429_;
+                        let _e173 = select(_e166, _e168, _e172);
+                        let _e175 = local[2u];
                         if (_e173 != _e173) {
-                            phi_455_ = true;
+                            phi_444_ = true;
                         } else {
-                            phi_455_ = (_e175 >= _e173);
+                            phi_444_ = (_e175 >= _e173);
                         }
-                        let _e179 = phi_455_;
+                        let _e179 = phi_444_;
                         let _e180 = select(_e173, _e175, _e179);
-                        let _e182 = local[2u];
+                        let _e182 = local[3u];
                         if (_e180 != _e180) {
-                            phi_470_ = true;
+                            phi_459_ = true;
                         } else {
-                            phi_470_ = (_e182 >= _e180);
+                            phi_459_ = (_e182 >= _e180);
                         }
-                        let _e186 = phi_470_;
-                        let _e187 = select(_e180, _e182, _e186);
-                        let _e189 = local[3u];
-                        if (_e187 != _e187) {
-                            phi_485_ = true;
-                        } else {
-                            phi_485_ = (_e189 >= _e187);
-                        }
-                        let _e193 = phi_485_;
-                        phi_338_ = 0u;
-                        phi_341_ = 0f;
-                        phi_343_ = 0f;
+                        let _e186 = phi_459_;
+                        phi_312_ = 0u;
+                        phi_315_ = 0f;
+                        phi_317_ = 0f;
                         loop {
-                            let _e196 = phi_338_;
-                            let _e198 = phi_341_;
-                            let _e200 = phi_343_;
-                            local_5 = _e200;
-                            local_6 = _e198;
-                            let _e201 = (_e196 < 4u);
-                            if _e201 {
-                                if _e201 {
+                            let _e189 = phi_312_;
+                            let _e191 = phi_315_;
+                            let _e193 = phi_317_;
+                            local_5 = _e193;
+                            local_6 = _e191;
+                            let _e194 = (_e189 < 4u);
+                            if _e194 {
+                                if _e194 {
                                 } else {
-                                    phi_490_ = true;
+                                    phi_464_ = true;
                                     break;
                                 }
-                                let _e203 = local[_e196];
-                                let _e205 = (_e171 - (select(_e187, _e189, _e193) - _e203));
-                                let _e208 = params.member.member_3;
-                                if (_e208 > 0f) {
-                                    let _e211 = (_e205 / (_e208 * _e171));
-                                    phi_385_ = select(0f, select(1f, _e211, (_e211 < 1f)), (_e211 > 0f));
+                                let _e196 = local[_e189];
+                                let _e198 = (_e164 - (select(_e180, _e182, _e186) - _e196));
+                                let _e201 = params.member.member_3;
+                                if (_e201 > 0f) {
+                                    let _e204 = (_e198 / (_e201 * _e164));
+                                    phi_359_ = select(0f, select(1f, _e204, (_e204 < 1f)), (_e204 > 0f));
                                 } else {
-                                    phi_385_ = select(0f, 1f, (_e205 >= 0f));
+                                    phi_359_ = select(0f, 1f, (_e198 >= 0f));
                                 }
-                                let _e219 = phi_385_;
-                                if _e201 {
+                                let _e212 = phi_359_;
+                                if _e194 {
                                 } else {
-                                    phi_490_ = true;
+                                    phi_464_ = true;
                                     break;
                                 }
-                                let _e220 = local[_e196];
-                                phi_339_ = (_e196 + 1u);
-                                phi_342_ = (_e198 + _e219);
-                                phi_344_ = (_e200 + (_e219 * _e220));
+                                let _e213 = local[_e189];
+                                phi_313_ = (_e189 + 1u);
+                                phi_316_ = (_e191 + _e212);
+                                phi_318_ = (_e193 + (_e212 * _e213));
                             } else {
-                                phi_339_ = u32();
-                                phi_342_ = f32();
-                                phi_344_ = f32();
+                                phi_313_ = u32();
+                                phi_316_ = f32();
+                                phi_318_ = f32();
                             }
-                            let _e226 = phi_339_;
-                            let _e228 = phi_342_;
-                            let _e230 = phi_344_;
+                            let _e219 = phi_313_;
+                            let _e221 = phi_316_;
+                            let _e223 = phi_318_;
                             continue;
                             continuing {
-                                phi_338_ = _e226;
-                                phi_341_ = _e228;
-                                phi_343_ = _e230;
-                                phi_490_ = false;
-                                break if !(_e201);
+                                phi_312_ = _e219;
+                                phi_315_ = _e221;
+                                phi_317_ = _e223;
+                                phi_464_ = false;
+                                break if !(_e194);
                             }
                         }
-                        let _e233 = phi_490_;
-                        if _e233 {
+                        let _e226 = phi_464_;
+                        if _e226 {
                             break;
                         }
-                        let _e235 = local_5;
-                        let _e237 = local_6;
-                        phi_398_ = (_e235 / _e237);
+                        let _e228 = local_5;
+                        let _e230 = local_6;
+                        phi_372_ = (_e228 / _e230);
                     }
-                    let _e240 = phi_398_;
-                    phi_402_ = 0u;
-                    phi_405_ = 0u;
+                    let _e233 = phi_372_;
+                    phi_376_ = 0u;
+                    phi_379_ = 0u;
                     loop {
-                        let _e242 = phi_402_;
-                        let _e244 = phi_405_;
-                        local_7 = _e244;
-                        let _e245 = (_e242 < _e50);
-                        if _e245 {
-                            let _e246 = (_e242 & 31u);
-                            let _e248 = (_e37 >> bitcast<u32>(_e246));
-                            let _e252 = (_e47 >> bitcast<u32>(_e246));
-                            phi_403_ = (_e242 + 1u);
-                            phi_406_ = (_e244 + (select(1u, _e248, (1u < _e248)) * select(1u, _e252, (1u < _e252))));
+                        let _e235 = phi_376_;
+                        let _e237 = phi_379_;
+                        local_7 = _e237;
+                        let _e238 = (_e235 < _e48);
+                        if _e238 {
+                            let _e239 = (_e235 & 31u);
+                            let _e241 = (_e35 >> bitcast<u32>(_e239));
+                            let _e245 = (_e45 >> bitcast<u32>(_e239));
+                            phi_377_ = (_e235 + 1u);
+                            phi_380_ = (_e237 + (select(1u, _e241, (1u < _e241)) * select(1u, _e245, (1u < _e245))));
                         } else {
-                            phi_403_ = u32();
-                            phi_406_ = u32();
+                            phi_377_ = u32();
+                            phi_380_ = u32();
                         }
-                        let _e259 = phi_403_;
-                        let _e261 = phi_406_;
+                        let _e252 = phi_377_;
+                        let _e254 = phi_380_;
                         continue;
                         continuing {
-                            phi_402_ = _e259;
-                            phi_405_ = _e261;
-                            break if !(_e245);
+                            phi_376_ = _e252;
+                            phi_379_ = _e254;
+                            break if !(_e238);
                         }
                     }
-                    let _e266 = local_7;
-                    let _e267 = (_e266 + ((_e23.y * _e55) + _e23.x));
-                    if (_e267 < _e27) {
+                    let _e259 = local_7;
+                    let _e260 = (_e259 + ((_e23.y * _e53) + _e23.x));
+                    if (_e260 < arrayLength((&mips.member))) {
                     } else {
                         break;
                     }
-                    mips.member[_e267] = _e240;
+                    mips.member[_e260] = _e233;
                 }
             }
             break;

@@ -64,1248 +64,1120 @@ var<uniform> params: type_23;
 
 fn function_() {
     var local: array<type_25, 4>;
-    var phi_491_: i32;
-    var phi_510_: i32;
-    var phi_551_: i32;
-    var phi_570_: i32;
-    var phi_611_: i32;
-    var phi_630_: i32;
-    var phi_671_: i32;
-    var phi_690_: i32;
-    var phi_2614_: bool;
-    var phi_2629_: bool;
-    var phi_2644_: bool;
-    var phi_2659_: bool;
-    var phi_2690_: f32;
-    var phi_2694_: f32;
-    var phi_2695_: bool;
-    var phi_2717_: u32;
-    var phi_2744_: f32;
-    var phi_2748_: f32;
-    var phi_2749_: bool;
-    var phi_2771_: u32;
-    var phi_2798_: f32;
-    var phi_2802_: f32;
-    var phi_2803_: bool;
-    var phi_2825_: u32;
-    var phi_2852_: f32;
-    var phi_2856_: f32;
-    var phi_2857_: bool;
-    var phi_2879_: u32;
-    var phi_2958_: bool;
-    var phi_2973_: bool;
-    var phi_2934_: vec2<f32>;
-    var phi_2990_: u32;
-    var phi_2991_: u32;
-    var phi_2992_: u32;
-    var phi_2993_: u32;
-    var phi_3016_: u32;
-    var phi_3017_: u32;
-    var phi_3020_: u32;
-    var phi_3021_: u32;
-    var phi_3025_: u32;
-    var phi_3026_: u32;
-    var phi_3027_: u32;
-    var phi_3028_: u32;
+    var phi_2540_: bool;
+    var phi_2555_: bool;
+    var phi_2570_: bool;
+    var phi_2585_: bool;
+    var phi_2616_: f32;
+    var phi_2620_: f32;
+    var phi_2621_: bool;
+    var phi_2643_: u32;
+    var phi_2670_: f32;
+    var phi_2674_: f32;
+    var phi_2675_: bool;
+    var phi_2697_: u32;
+    var phi_2724_: f32;
+    var phi_2728_: f32;
+    var phi_2729_: bool;
+    var phi_2751_: u32;
+    var phi_2778_: f32;
+    var phi_2782_: f32;
+    var phi_2783_: bool;
+    var phi_2805_: u32;
+    var phi_2884_: bool;
+    var phi_2899_: bool;
+    var phi_2860_: vec2<f32>;
+    var phi_2916_: u32;
+    var phi_2917_: u32;
+    var phi_2918_: u32;
+    var phi_2919_: u32;
+    var phi_2942_: u32;
+    var phi_2943_: u32;
+    var phi_2946_: u32;
+    var phi_2947_: u32;
+    var phi_2951_: u32;
+    var phi_2952_: u32;
+    var phi_2953_: u32;
+    var phi_2954_: u32;
     var local_1: u32;
-    var phi_3375_: bool;
-    var phi_942_: u32;
-    var phi_945_: f32;
-    var phi_947_: f32;
-    var phi_1142_: u32;
-    var phi_1145_: u32;
-    var phi_1199_: f32;
-    var phi_1244_: f32;
-    var phi_1246_: f32;
-    var phi_1247_: bool;
-    var phi_1270_: f32;
-    var phi_1272_: f32;
-    var phi_1273_: bool;
-    var phi_1306_: u32;
-    var phi_1322_: u32;
-    var phi_1325_: u32;
-    var phi_1323_: u32;
-    var phi_1326_: u32;
-    var phi_1370_: u32;
-    var phi_1389_: u32;
+    var phi_3303_: bool;
+    var phi_880_: u32;
+    var phi_883_: f32;
+    var phi_885_: f32;
+    var phi_1080_: u32;
+    var phi_1083_: u32;
+    var phi_1137_: f32;
+    var phi_1182_: f32;
+    var phi_1184_: f32;
+    var phi_1185_: bool;
+    var phi_1208_: f32;
+    var phi_1210_: f32;
+    var phi_1211_: bool;
+    var phi_1244_: u32;
+    var phi_1260_: u32;
+    var phi_1263_: u32;
+    var phi_1261_: u32;
+    var phi_1264_: u32;
+    var phi_1308_: u32;
+    var phi_1327_: u32;
     var local_2: u32;
-    var phi_1433_: u32;
+    var phi_1366_: u32;
+    var phi_1382_: u32;
+    var phi_1385_: u32;
+    var phi_1383_: u32;
+    var phi_1386_: u32;
+    var phi_1430_: u32;
     var phi_1449_: u32;
-    var phi_1452_: u32;
-    var phi_1450_: u32;
-    var phi_1453_: u32;
-    var phi_1497_: u32;
-    var phi_1516_: u32;
     var local_3: u32;
-    var phi_1565_: bool;
-    var phi_3062_: bool;
-    var phi_3077_: bool;
-    var phi_3092_: bool;
-    var phi_3107_: bool;
-    var phi_3122_: bool;
-    var phi_1886_: f32;
-    var phi_1904_: u32;
-    var phi_1922_: u32;
-    var phi_1938_: u32;
-    var phi_1941_: u32;
-    var phi_1942_: u32;
-    var phi_1943_: bool;
-    var phi_1957_: u32;
-    var phi_1981_: bool;
-    var phi_3137_: bool;
-    var phi_3152_: bool;
-    var phi_3167_: bool;
-    var phi_3182_: bool;
-    var phi_3197_: bool;
-    var phi_2302_: f32;
-    var phi_2320_: u32;
-    var phi_2338_: u32;
-    var phi_2354_: u32;
-    var phi_2357_: u32;
-    var phi_2358_: u32;
-    var phi_2359_: bool;
-    var phi_2373_: u32;
-    var phi_1143_: u32;
-    var phi_1146_: u32;
-    var phi_3256_: bool;
+    var phi_1493_: bool;
+    var phi_2988_: bool;
+    var phi_3003_: bool;
+    var phi_3018_: bool;
+    var phi_3033_: bool;
+    var phi_3048_: bool;
+    var phi_1814_: f32;
+    var phi_1832_: u32;
+    var phi_1850_: u32;
+    var phi_1866_: u32;
+    var phi_1869_: u32;
+    var phi_1870_: u32;
+    var phi_1871_: bool;
+    var phi_1885_: u32;
+    var phi_1909_: bool;
+    var phi_3063_: bool;
+    var phi_3078_: bool;
+    var phi_3093_: bool;
+    var phi_3108_: bool;
+    var phi_3123_: bool;
+    var phi_2230_: f32;
+    var phi_2248_: u32;
+    var phi_2266_: u32;
+    var phi_2282_: u32;
+    var phi_2285_: u32;
+    var phi_2286_: u32;
+    var phi_2287_: bool;
+    var phi_2301_: u32;
+    var phi_1081_: u32;
+    var phi_1084_: u32;
     var local_4: u32;
-    var phi_2457_: u32;
-    var phi_2460_: f32;
+    var phi_2385_: u32;
+    var phi_2388_: f32;
     var local_5: u32;
-    var phi_2458_: u32;
-    var phi_2461_: f32;
-    var phi_3456_: bool;
+    var phi_2386_: u32;
+    var phi_2389_: f32;
+    var phi_3182_: bool;
     var local_6: f32;
-    var phi_3467_: bool;
-    var phi_2510_: f32;
-    var phi_2511_: f32;
-    var phi_2404_: u32;
-    var phi_2407_: f32;
-    var phi_2409_: f32;
+    var phi_3392_: bool;
+    var phi_2438_: f32;
+    var phi_2439_: f32;
+    var phi_2332_: u32;
+    var phi_2335_: f32;
+    var phi_2337_: f32;
     var local_7: u32;
-    var phi_2405_: u32;
-    var phi_2408_: f32;
-    var phi_2410_: f32;
+    var phi_2333_: u32;
+    var phi_2336_: f32;
+    var phi_2338_: f32;
     var local_8: f32;
-    var phi_3461_: bool;
-    var phi_2512_: f32;
-    var phi_2513_: f32;
-    var phi_3460_: bool;
-    var phi_943_: u32;
-    var phi_946_: f32;
-    var phi_948_: f32;
-    var phi_3459_: bool;
+    var phi_3386_: bool;
+    var phi_2440_: f32;
+    var phi_2441_: f32;
+    var phi_3385_: bool;
+    var phi_881_: u32;
+    var phi_884_: f32;
+    var phi_886_: f32;
+    var phi_3384_: bool;
     var local_9: f32;
     var local_10: f32;
     var local_11: f32;
-    var phi_2521_: f32;
-    var phi_3230_: bool;
-    var phi_2570_: u32;
+    var phi_2449_: f32;
+    var phi_3156_: bool;
+    var phi_2498_: u32;
 
     switch bitcast<i32>(0u) {
         default: {
             let _e92 = id_1;
-            let _e95 = arrayLength((&mips.member));
-            let _e107 = params.member.member_4.member.member[0u];
-            let _e112 = select(select(u32(_e107), 0u, (_e107 < 0f)), 4294967295u, (_e107 > 4294967000f));
-            let _e118 = params.member.member_4.member.member[1u];
-            let _e123 = select(select(u32(_e118), 0u, (_e118 < 0f)), 4294967295u, (_e118 > 4294967000f));
-            if (_e92.x >= _e112) {
+            let _e105 = params.member.member_4.member.member[0u];
+            let _e110 = select(select(u32(_e105), 0u, (_e105 < 0f)), 4294967295u, (_e105 > 4294967000f));
+            let _e116 = params.member.member_4.member.member[1u];
+            let _e121 = select(select(u32(_e116), 0u, (_e116 < 0f)), 4294967295u, (_e116 > 4294967000f));
+            if (_e92.x >= _e110) {
             } else {
-                if (_e92.y >= _e123) {
+                if (_e92.y >= _e121) {
                 } else {
-                    let _e129 = ((_e92.y * _e112) + _e92.x);
-                    if (_e129 < _e95) {
+                    let _e127 = ((_e92.y * _e110) + _e92.x);
+                    let _e129 = mips.member[_e127];
+                    let _e130 = bitcast<i32>(_e92.x);
+                    let _e131 = (_e130 + -1i);
+                    let _e133 = select(0i, _e131, (0i < _e131));
+                    let _e135 = (bitcast<i32>(_e110) - 1i);
+                    let _e139 = bitcast<i32>(_e92.y);
+                    let _e141 = select(0i, _e139, (0i < _e139));
+                    let _e143 = (bitcast<i32>(_e121) - 1i);
+                    let _e147 = (bitcast<u32>(select(_e141, _e143, (_e143 < _e141))) * _e110);
+                    let _e150 = mips.member[(_e147 + bitcast<u32>(select(_e133, _e135, (_e135 < _e133))))];
+                    let _e151 = (_e130 + 1i);
+                    let _e153 = select(0i, _e151, (0i < _e151));
+                    let _e159 = mips.member[(_e147 + bitcast<u32>(select(_e153, _e135, (_e135 < _e153))))];
+                    let _e161 = select(0i, _e130, (0i < _e130));
+                    let _e164 = bitcast<u32>(select(_e161, _e135, (_e135 < _e161)));
+                    let _e165 = (_e139 + -1i);
+                    let _e167 = select(0i, _e165, (0i < _e165));
+                    let _e174 = mips.member[((bitcast<u32>(select(_e167, _e143, (_e143 < _e167))) * _e110) + _e164)];
+                    let _e175 = (_e139 + 1i);
+                    let _e177 = select(0i, _e175, (0i < _e175));
+                    let _e184 = mips.member[((bitcast<u32>(select(_e177, _e143, (_e143 < _e177))) * _e110) + _e164)];
+                    let _e185 = (_e150 - _e129);
+                    let _e186 = (_e159 - _e129);
+                    let _e187 = (_e174 - _e129);
+                    let _e188 = (_e184 - _e129);
+                    let _e190 = ((_e186 - _e185) * 0.5f);
+                    let _e192 = ((_e188 - _e187) * 0.5f);
+                    let _e193 = (_e129 * 0.011f);
+                    let _e195 = abs(_e185);
+                    let _e196 = abs((_e185 + _e190));
+                    if (_e195 != _e195) {
+                        phi_2540_ = true;
                     } else {
-                        break;
+                        phi_2540_ = (_e196 <= _e195);
                     }
-                    let _e132 = mips.member[_e129];
-                    let _e133 = bitcast<i32>(_e92.x);
-                    let _e134 = (_e133 + -1i);
-                    let _e136 = (bitcast<i32>(_e112) - 1i);
-                    let _e137 = (0i <= _e136);
-                    if _e137 {
+                    let _e200 = phi_2540_;
+                    let _e203 = (1.25f - (select(_e195, _e196, _e200) / _e193));
+                    let _e207 = select(0f, select(1f, _e203, (_e203 < 1f)), (_e203 > 0f));
+                    let _e209 = abs(_e186);
+                    let _e210 = abs((_e186 - _e190));
+                    if (_e209 != _e209) {
+                        phi_2555_ = true;
                     } else {
-                        break;
+                        phi_2555_ = (_e210 <= _e209);
                     }
-                    if (_e134 < 0i) {
-                        phi_491_ = 0i;
+                    let _e214 = phi_2555_;
+                    let _e217 = (1.25f - (select(_e209, _e210, _e214) / _e193));
+                    let _e221 = select(0f, select(1f, _e217, (_e217 < 1f)), (_e217 > 0f));
+                    let _e223 = abs(_e187);
+                    let _e224 = abs((_e187 + _e192));
+                    if (_e223 != _e223) {
+                        phi_2570_ = true;
                     } else {
-                        phi_491_ = select(_e134, _e136, (_e134 > _e136));
+                        phi_2570_ = (_e224 <= _e223);
                     }
-                    let _e142 = phi_491_;
-                    let _e144 = bitcast<i32>(_e92.y);
-                    let _e146 = (bitcast<i32>(_e123) - 1i);
-                    let _e147 = (0i <= _e146);
-                    if _e147 {
+                    let _e228 = phi_2570_;
+                    let _e231 = (1.25f - (select(_e223, _e224, _e228) / _e193));
+                    let _e235 = select(0f, select(1f, _e231, (_e231 < 1f)), (_e231 > 0f));
+                    let _e237 = abs(_e188);
+                    let _e238 = abs((_e188 - _e192));
+                    if (_e237 != _e237) {
+                        phi_2585_ = true;
                     } else {
-                        break;
+                        phi_2585_ = (_e238 <= _e237);
                     }
-                    let _e148 = (_e144 < 0i);
-                    if _e148 {
-                        phi_510_ = 0i;
-                    } else {
-                        phi_510_ = select(_e144, _e146, (_e144 > _e146));
-                    }
-                    let _e152 = phi_510_;
-                    let _e155 = ((bitcast<u32>(_e152) * _e112) + bitcast<u32>(_e142));
-                    if (_e155 < _e95) {
-                    } else {
-                        break;
-                    }
-                    let _e158 = mips.member[_e155];
-                    let _e159 = (_e133 + 1i);
-                    if _e137 {
-                    } else {
-                        break;
-                    }
-                    if (_e159 < 0i) {
-                        phi_551_ = 0i;
-                    } else {
-                        phi_551_ = select(_e159, _e136, (_e159 > _e136));
-                    }
-                    let _e164 = phi_551_;
-                    if _e147 {
-                    } else {
-                        break;
-                    }
-                    if _e148 {
-                        phi_570_ = 0i;
-                    } else {
-                        phi_570_ = select(_e144, _e146, (_e144 > _e146));
-                    }
-                    let _e169 = phi_570_;
-                    let _e172 = ((bitcast<u32>(_e169) * _e112) + bitcast<u32>(_e164));
-                    if (_e172 < _e95) {
-                    } else {
-                        break;
-                    }
-                    let _e175 = mips.member[_e172];
-                    if _e137 {
-                    } else {
-                        break;
-                    }
-                    let _e176 = (_e133 < 0i);
-                    if _e176 {
-                        phi_611_ = 0i;
-                    } else {
-                        phi_611_ = select(_e133, _e136, (_e133 > _e136));
-                    }
-                    let _e180 = phi_611_;
-                    let _e182 = (_e144 + -1i);
-                    if _e147 {
-                    } else {
-                        break;
-                    }
-                    if (_e182 < 0i) {
-                        phi_630_ = 0i;
-                    } else {
-                        phi_630_ = select(_e182, _e146, (_e182 > _e146));
-                    }
-                    let _e187 = phi_630_;
-                    let _e190 = ((bitcast<u32>(_e187) * _e112) + bitcast<u32>(_e180));
-                    if (_e190 < _e95) {
-                    } else {
-                        break;
-                    }
-                    let _e193 = mips.member[_e190];
-                    if _e137 {
-                    } else {
-                        break;
-                    }
-                    if _e176 {
-                        phi_671_ = 0i;
-                    } else {
-                        phi_671_ = select(_e133, _e136, (_e133 > _e136));
-                    }
-                    let _e197 = phi_671_;
-                    let _e199 = (_e144 + 1i);
-                    if _e147 {
-                    } else {
-                        break;
-                    }
-                    if (_e199 < 0i) {
-                        phi_690_ = 0i;
-                    } else {
-                        phi_690_ = select(_e199, _e146, (_e199 > _e146));
-                    }
-                    let _e204 = phi_690_;
-                    let _e207 = ((bitcast<u32>(_e204) * _e112) + bitcast<u32>(_e197));
-                    if (_e207 < _e95) {
-                    } else {
-                        break;
-                    }
-                    let _e210 = mips.member[_e207];
-                    let _e211 = (_e158 - _e132);
-                    let _e212 = (_e175 - _e132);
-                    let _e213 = (_e193 - _e132);
-                    let _e214 = (_e210 - _e132);
-                    let _e216 = ((_e212 - _e211) * 0.5f);
-                    let _e218 = ((_e214 - _e213) * 0.5f);
-                    let _e219 = (_e132 * 0.011f);
-                    let _e221 = abs(_e211);
-                    let _e222 = abs((_e211 + _e216));
-                    if (_e221 != _e221) {
-                        phi_2614_ = true;
-                    } else {
-                        phi_2614_ = (_e222 <= _e221);
-                    }
-                    let _e226 = phi_2614_;
-                    let _e229 = (1.25f - (select(_e221, _e222, _e226) / _e219));
-                    let _e233 = select(0f, select(1f, _e229, (_e229 < 1f)), (_e229 > 0f));
-                    let _e235 = abs(_e212);
-                    let _e236 = abs((_e212 - _e216));
-                    if (_e235 != _e235) {
-                        phi_2629_ = true;
-                    } else {
-                        phi_2629_ = (_e236 <= _e235);
-                    }
-                    let _e240 = phi_2629_;
-                    let _e243 = (1.25f - (select(_e235, _e236, _e240) / _e219));
-                    let _e247 = select(0f, select(1f, _e243, (_e243 < 1f)), (_e243 > 0f));
-                    let _e249 = abs(_e213);
-                    let _e250 = abs((_e213 + _e218));
-                    if (_e249 != _e249) {
-                        phi_2644_ = true;
-                    } else {
-                        phi_2644_ = (_e250 <= _e249);
-                    }
-                    let _e254 = phi_2644_;
-                    let _e257 = (1.25f - (select(_e249, _e250, _e254) / _e219));
-                    let _e261 = select(0f, select(1f, _e257, (_e257 < 1f)), (_e257 > 0f));
-                    let _e263 = abs(_e214);
-                    let _e264 = abs((_e214 - _e218));
-                    if (_e263 != _e263) {
-                        phi_2659_ = true;
-                    } else {
-                        phi_2659_ = (_e264 <= _e263);
-                    }
-                    let _e268 = phi_2659_;
-                    let _e271 = (1.25f - (select(_e263, _e264, _e268) / _e219));
-                    let _e275 = select(0f, select(1f, _e271, (_e271 < 1f)), (_e271 > 0f));
-                    let _e280 = (select(0f, select(1f, _e233, (_e233 < 1f)), (_e233 > 0f)) * 2.9f);
-                    let _e282 = floor((_e280 + 0.5f));
-                    if ((_e282 - _e280) == 0.5f) {
-                        let _e288 = ((floor((_e282 * 0.5f)) * 2f) != _e282);
-                        if _e288 {
-                            phi_2690_ = (_e282 - 1f);
+                    let _e242 = phi_2585_;
+                    let _e245 = (1.25f - (select(_e237, _e238, _e242) / _e193));
+                    let _e249 = select(0f, select(1f, _e245, (_e245 < 1f)), (_e245 > 0f));
+                    let _e254 = (select(0f, select(1f, _e207, (_e207 < 1f)), (_e207 > 0f)) * 2.9f);
+                    let _e256 = floor((_e254 + 0.5f));
+                    if ((_e256 - _e254) == 0.5f) {
+                        let _e262 = ((floor((_e256 * 0.5f)) * 2f) != _e256);
+                        if _e262 {
+                            phi_2616_ = (_e256 - 1f);
                         } else {
-                            phi_2690_ = f32();
+                            phi_2616_ = f32();
                         }
-                        let _e291 = phi_2690_;
-                        phi_2694_ = _e291;
-                        phi_2695_ = select(true, false, _e288);
+                        let _e265 = phi_2616_;
+                        phi_2620_ = _e265;
+                        phi_2621_ = select(true, false, _e262);
                     } else {
-                        phi_2694_ = f32();
-                        phi_2695_ = true;
+                        phi_2620_ = f32();
+                        phi_2621_ = true;
                     }
-                    let _e294 = phi_2694_;
-                    let _e296 = phi_2695_;
-                    let _e297 = select(_e294, _e282, _e296);
-                    if (_e297 > 0f) {
-                        let _e303 = select(select(u32(_e297), 0u, (_e297 < 0f)), 4294967295u, (_e297 > 4294967000f));
-                        phi_2717_ = select(_e303, 3u, (3u < _e303));
+                    let _e268 = phi_2620_;
+                    let _e270 = phi_2621_;
+                    let _e271 = select(_e268, _e256, _e270);
+                    if (_e271 > 0f) {
+                        let _e277 = select(select(u32(_e271), 0u, (_e271 < 0f)), 4294967295u, (_e271 > 4294967000f));
+                        phi_2643_ = select(_e277, 3u, (3u < _e277));
                     } else {
-                        phi_2717_ = 0u;
+                        phi_2643_ = 0u;
                     }
-                    let _e307 = phi_2717_;
-                    let _e313 = (select(0f, select(1f, _e247, (_e247 < 1f)), (_e247 > 0f)) * 2.9f);
-                    let _e315 = floor((_e313 + 0.5f));
-                    if ((_e315 - _e313) == 0.5f) {
-                        let _e321 = ((floor((_e315 * 0.5f)) * 2f) != _e315);
-                        if _e321 {
-                            phi_2744_ = (_e315 - 1f);
+                    let _e281 = phi_2643_;
+                    let _e287 = (select(0f, select(1f, _e221, (_e221 < 1f)), (_e221 > 0f)) * 2.9f);
+                    let _e289 = floor((_e287 + 0.5f));
+                    if ((_e289 - _e287) == 0.5f) {
+                        let _e295 = ((floor((_e289 * 0.5f)) * 2f) != _e289);
+                        if _e295 {
+                            phi_2670_ = (_e289 - 1f);
                         } else {
-                            phi_2744_ = f32();
+                            phi_2670_ = f32();
                         }
-                        let _e324 = phi_2744_;
-                        phi_2748_ = _e324;
-                        phi_2749_ = select(true, false, _e321);
+                        let _e298 = phi_2670_;
+                        phi_2674_ = _e298;
+                        phi_2675_ = select(true, false, _e295);
                     } else {
-                        phi_2748_ = f32();
-                        phi_2749_ = true;
+                        phi_2674_ = f32();
+                        phi_2675_ = true;
                     }
-                    let _e327 = phi_2748_;
-                    let _e329 = phi_2749_;
-                    let _e330 = select(_e327, _e315, _e329);
-                    if (_e330 > 0f) {
-                        let _e336 = select(select(u32(_e330), 0u, (_e330 < 0f)), 4294967295u, (_e330 > 4294967000f));
-                        phi_2771_ = select(_e336, 3u, (3u < _e336));
+                    let _e301 = phi_2674_;
+                    let _e303 = phi_2675_;
+                    let _e304 = select(_e301, _e289, _e303);
+                    if (_e304 > 0f) {
+                        let _e310 = select(select(u32(_e304), 0u, (_e304 < 0f)), 4294967295u, (_e304 > 4294967000f));
+                        phi_2697_ = select(_e310, 3u, (3u < _e310));
                     } else {
-                        phi_2771_ = 0u;
+                        phi_2697_ = 0u;
                     }
-                    let _e340 = phi_2771_;
-                    let _e347 = (select(0f, select(1f, _e261, (_e261 < 1f)), (_e261 > 0f)) * 2.9f);
-                    let _e349 = floor((_e347 + 0.5f));
-                    if ((_e349 - _e347) == 0.5f) {
-                        let _e355 = ((floor((_e349 * 0.5f)) * 2f) != _e349);
-                        if _e355 {
-                            phi_2798_ = (_e349 - 1f);
+                    let _e314 = phi_2697_;
+                    let _e321 = (select(0f, select(1f, _e235, (_e235 < 1f)), (_e235 > 0f)) * 2.9f);
+                    let _e323 = floor((_e321 + 0.5f));
+                    if ((_e323 - _e321) == 0.5f) {
+                        let _e329 = ((floor((_e323 * 0.5f)) * 2f) != _e323);
+                        if _e329 {
+                            phi_2724_ = (_e323 - 1f);
                         } else {
-                            phi_2798_ = f32();
+                            phi_2724_ = f32();
                         }
-                        let _e358 = phi_2798_;
-                        phi_2802_ = _e358;
-                        phi_2803_ = select(true, false, _e355);
+                        let _e332 = phi_2724_;
+                        phi_2728_ = _e332;
+                        phi_2729_ = select(true, false, _e329);
                     } else {
-                        phi_2802_ = f32();
-                        phi_2803_ = true;
+                        phi_2728_ = f32();
+                        phi_2729_ = true;
                     }
-                    let _e361 = phi_2802_;
-                    let _e363 = phi_2803_;
-                    let _e364 = select(_e361, _e349, _e363);
-                    if (_e364 > 0f) {
-                        let _e370 = select(select(u32(_e364), 0u, (_e364 < 0f)), 4294967295u, (_e364 > 4294967000f));
-                        phi_2825_ = select(_e370, 3u, (3u < _e370));
+                    let _e335 = phi_2728_;
+                    let _e337 = phi_2729_;
+                    let _e338 = select(_e335, _e323, _e337);
+                    if (_e338 > 0f) {
+                        let _e344 = select(select(u32(_e338), 0u, (_e338 < 0f)), 4294967295u, (_e338 > 4294967000f));
+                        phi_2751_ = select(_e344, 3u, (3u < _e344));
                     } else {
-                        phi_2825_ = 0u;
+                        phi_2751_ = 0u;
                     }
-                    let _e374 = phi_2825_;
-                    let _e381 = (select(0f, select(1f, _e275, (_e275 < 1f)), (_e275 > 0f)) * 2.9f);
-                    let _e383 = floor((_e381 + 0.5f));
-                    if ((_e383 - _e381) == 0.5f) {
-                        let _e389 = ((floor((_e383 * 0.5f)) * 2f) != _e383);
-                        if _e389 {
-                            phi_2852_ = (_e383 - 1f);
+                    let _e348 = phi_2751_;
+                    let _e355 = (select(0f, select(1f, _e249, (_e249 < 1f)), (_e249 > 0f)) * 2.9f);
+                    let _e357 = floor((_e355 + 0.5f));
+                    if ((_e357 - _e355) == 0.5f) {
+                        let _e363 = ((floor((_e357 * 0.5f)) * 2f) != _e357);
+                        if _e363 {
+                            phi_2778_ = (_e357 - 1f);
                         } else {
-                            phi_2852_ = f32();
+                            phi_2778_ = f32();
                         }
-                        let _e392 = phi_2852_;
-                        phi_2856_ = _e392;
-                        phi_2857_ = select(true, false, _e389);
+                        let _e366 = phi_2778_;
+                        phi_2782_ = _e366;
+                        phi_2783_ = select(true, false, _e363);
                     } else {
-                        phi_2856_ = f32();
-                        phi_2857_ = true;
+                        phi_2782_ = f32();
+                        phi_2783_ = true;
                     }
-                    let _e395 = phi_2856_;
-                    let _e397 = phi_2857_;
-                    let _e398 = select(_e395, _e383, _e397);
-                    if (_e398 > 0f) {
-                        let _e404 = select(select(u32(_e398), 0u, (_e398 < 0f)), 4294967295u, (_e398 > 4294967000f));
-                        phi_2879_ = select(_e404, 3u, (3u < _e404));
+                    let _e369 = phi_2782_;
+                    let _e371 = phi_2783_;
+                    let _e372 = select(_e369, _e357, _e371);
+                    if (_e372 > 0f) {
+                        let _e378 = select(select(u32(_e372), 0u, (_e372 < 0f)), 4294967295u, (_e372 > 4294967000f));
+                        phi_2805_ = select(_e378, 3u, (3u < _e378));
                     } else {
-                        phi_2879_ = 0u;
+                        phi_2805_ = 0u;
                     }
-                    let _e408 = phi_2879_;
-                    let _e412 = ((f32(_e92.x) + 0.5f) / _e107);
-                    let _e415 = ((f32(_e92.y) + 0.5f) / _e118);
-                    let _e416 = (_e132 * 0.99999f);
-                    let _e424 = params.member.member_4.member.member_1[0u];
-                    let _e426 = ((((_e412 * 2f) - 1f) * _e424) * _e416);
-                    let _e434 = params.member.member_4.member.member_1[1u];
-                    let _e436 = ((((_e415 * -2f) + 1f) * _e434) * _e416);
-                    let _e437 = -(_e426);
-                    let _e438 = -(_e436);
-                    let _e439 = (_e132 * -0.99999f);
-                    let _e446 = (1f / sqrt((((_e437 * _e437) + (_e438 * _e438)) + (_e439 * _e439))));
-                    let _e447 = (_e437 * _e446);
-                    let _e448 = (_e438 * _e446);
-                    let _e449 = (_e439 * _e446);
-                    if (_e129 < arrayLength((&normals.member))) {
+                    let _e382 = phi_2805_;
+                    let _e386 = ((f32(_e92.x) + 0.5f) / _e105);
+                    let _e389 = ((f32(_e92.y) + 0.5f) / _e116);
+                    let _e390 = (_e129 * 0.99999f);
+                    let _e398 = params.member.member_4.member.member_1[0u];
+                    let _e400 = ((((_e386 * 2f) - 1f) * _e398) * _e390);
+                    let _e408 = params.member.member_4.member.member_1[1u];
+                    let _e410 = ((((_e389 * -2f) + 1f) * _e408) * _e390);
+                    let _e411 = -(_e400);
+                    let _e412 = -(_e410);
+                    let _e413 = (_e129 * -0.99999f);
+                    let _e420 = (1f / sqrt((((_e411 * _e411) + (_e412 * _e412)) + (_e413 * _e413))));
+                    let _e421 = (_e411 * _e420);
+                    let _e422 = (_e412 * _e420);
+                    let _e423 = (_e413 * _e420);
+                    if (_e127 < arrayLength((&normals.member))) {
                     } else {
                         break;
                     }
-                    let _e453 = normals.member[_e129];
-                    let _e461 = (f32((bitcast<i32>(((_e453 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e461 != _e461) {
-                        phi_2958_ = true;
+                    let _e427 = normals.member[_e127];
+                    let _e435 = (f32((bitcast<i32>(((_e427 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e435 != _e435) {
+                        phi_2884_ = true;
                     } else {
-                        phi_2958_ = (-1f >= _e461);
+                        phi_2884_ = (-1f >= _e435);
                     }
-                    let _e465 = phi_2958_;
-                    let _e466 = select(_e461, -1f, _e465);
-                    let _e476 = (f32((bitcast<i32>((((_e453 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e476 != _e476) {
-                        phi_2973_ = true;
+                    let _e439 = phi_2884_;
+                    let _e440 = select(_e435, -1f, _e439);
+                    let _e450 = (f32((bitcast<i32>((((_e427 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e450 != _e450) {
+                        phi_2899_ = true;
                     } else {
-                        phi_2973_ = (-1f >= _e476);
+                        phi_2899_ = (-1f >= _e450);
                     }
-                    let _e480 = phi_2973_;
-                    let _e481 = select(_e476, -1f, _e480);
-                    let _e484 = (1f - abs(_e466));
-                    let _e485 = abs(_e481);
-                    let _e486 = (_e484 - _e485);
-                    if (_e486 < 0f) {
-                        phi_2934_ = vec2<f32>(((1f - _e485) * select(1f, -1f, (_e466 < 0f))), (_e484 * select(1f, -1f, (_e481 < 0f))));
+                    let _e454 = phi_2899_;
+                    let _e455 = select(_e450, -1f, _e454);
+                    let _e458 = (1f - abs(_e440));
+                    let _e459 = abs(_e455);
+                    let _e460 = (_e458 - _e459);
+                    if (_e460 < 0f) {
+                        phi_2860_ = vec2<f32>(((1f - _e459) * select(1f, -1f, (_e440 < 0f))), (_e458 * select(1f, -1f, (_e455 < 0f))));
                     } else {
-                        phi_2934_ = vec2<f32>(_e466, _e481);
+                        phi_2860_ = vec2<f32>(_e440, _e455);
                     }
-                    let _e497 = phi_2934_;
-                    let _e506 = (1f / sqrt((((_e497.x * _e497.x) + (_e497.y * _e497.y)) + (_e486 * _e486))));
-                    let _e507 = (_e497.x * _e506);
-                    let _e508 = (_e497.y * _e506);
-                    let _e509 = (_e486 * _e506);
-                    let _e510 = -(_e509);
-                    let _e516 = ((((_e507 * _e447) + (_e508 * _e448)) + (_e510 * _e449)) < 0f);
-                    let _e519 = select(_e507, -(_e507), _e516);
-                    let _e520 = select(_e508, -(_e508), _e516);
-                    let _e521 = select(_e510, _e509, _e516);
-                    let _e525 = params.member.member_4.member_1;
-                    let _e529 = params.member.member_4.member_2;
-                    let _e534 = ((_e525 * _e529) / (((_e132 * 1.99998f) * _e424) / _e107));
-                    let _e539 = params.member.member_4.member_11;
-                    phi_2990_ = (_e92.y & 63u);
-                    phi_2991_ = (_e92.x & 63u);
-                    phi_2992_ = 32u;
-                    phi_2993_ = 0u;
+                    let _e471 = phi_2860_;
+                    let _e480 = (1f / sqrt((((_e471.x * _e471.x) + (_e471.y * _e471.y)) + (_e460 * _e460))));
+                    let _e481 = (_e471.x * _e480);
+                    let _e482 = (_e471.y * _e480);
+                    let _e483 = (_e460 * _e480);
+                    let _e484 = -(_e483);
+                    let _e490 = ((((_e481 * _e421) + (_e482 * _e422)) + (_e484 * _e423)) < 0f);
+                    let _e493 = select(_e481, -(_e481), _e490);
+                    let _e494 = select(_e482, -(_e482), _e490);
+                    let _e495 = select(_e484, _e483, _e490);
+                    let _e499 = params.member.member_4.member_1;
+                    let _e503 = params.member.member_4.member_2;
+                    let _e508 = ((_e499 * _e503) / (((_e129 * 1.99998f) * _e398) / _e105));
+                    let _e513 = params.member.member_4.member_11;
+                    phi_2916_ = (_e92.y & 63u);
+                    phi_2917_ = (_e92.x & 63u);
+                    phi_2918_ = 32u;
+                    phi_2919_ = 0u;
                     loop {
-                        let _e543 = phi_2990_;
-                        let _e545 = phi_2991_;
-                        let _e547 = phi_2992_;
-                        let _e549 = phi_2993_;
-                        local_1 = _e549;
-                        let _e550 = (_e547 > 0u);
-                        if _e550 {
-                            let _e553 = select(0u, 1u, ((_e545 & _e547) != 0u));
-                            let _e556 = select(0u, 1u, ((_e543 & _e547) != 0u));
-                            if (_e556 == 0u) {
-                                if (_e553 == 1u) {
-                                    phi_3016_ = (63u - _e543);
-                                    phi_3017_ = (63u - _e545);
+                        let _e517 = phi_2916_;
+                        let _e519 = phi_2917_;
+                        let _e521 = phi_2918_;
+                        let _e523 = phi_2919_;
+                        local_1 = _e523;
+                        let _e524 = (_e521 > 0u);
+                        if _e524 {
+                            let _e527 = select(0u, 1u, ((_e519 & _e521) != 0u));
+                            let _e530 = select(0u, 1u, ((_e517 & _e521) != 0u));
+                            if (_e530 == 0u) {
+                                if (_e527 == 1u) {
+                                    phi_2942_ = (63u - _e517);
+                                    phi_2943_ = (63u - _e519);
                                 } else {
-                                    phi_3016_ = _e543;
-                                    phi_3017_ = _e545;
+                                    phi_2942_ = _e517;
+                                    phi_2943_ = _e519;
                                 }
-                                let _e567 = phi_3016_;
-                                let _e569 = phi_3017_;
-                                phi_3020_ = _e569;
-                                phi_3021_ = _e567;
+                                let _e541 = phi_2942_;
+                                let _e543 = phi_2943_;
+                                phi_2946_ = _e543;
+                                phi_2947_ = _e541;
                             } else {
-                                phi_3020_ = _e543;
-                                phi_3021_ = _e545;
+                                phi_2946_ = _e517;
+                                phi_2947_ = _e519;
                             }
-                            let _e571 = phi_3020_;
-                            let _e573 = phi_3021_;
-                            phi_3025_ = _e571;
-                            phi_3026_ = _e573;
-                            phi_3027_ = (_e547 / 2u);
-                            phi_3028_ = (_e549 + ((_e547 * _e547) * ((3u * _e553) ^ _e556)));
+                            let _e545 = phi_2946_;
+                            let _e547 = phi_2947_;
+                            phi_2951_ = _e545;
+                            phi_2952_ = _e547;
+                            phi_2953_ = (_e521 / 2u);
+                            phi_2954_ = (_e523 + ((_e521 * _e521) * ((3u * _e527) ^ _e530)));
                         } else {
-                            phi_3025_ = u32();
-                            phi_3026_ = u32();
-                            phi_3027_ = u32();
-                            phi_3028_ = u32();
+                            phi_2951_ = u32();
+                            phi_2952_ = u32();
+                            phi_2953_ = u32();
+                            phi_2954_ = u32();
                         }
-                        let _e576 = phi_3025_;
-                        let _e578 = phi_3026_;
-                        let _e580 = phi_3027_;
-                        let _e582 = phi_3028_;
+                        let _e550 = phi_2951_;
+                        let _e552 = phi_2952_;
+                        let _e554 = phi_2953_;
+                        let _e556 = phi_2954_;
                         continue;
                         continuing {
-                            phi_2990_ = _e576;
-                            phi_2991_ = _e578;
-                            phi_2992_ = _e580;
-                            phi_2993_ = _e582;
-                            break if !(_e550);
+                            phi_2916_ = _e550;
+                            phi_2917_ = _e552;
+                            phi_2918_ = _e554;
+                            phi_2919_ = _e556;
+                            break if !(_e524);
                         }
                     }
-                    let _e587 = local_1;
-                    let _e589 = f32((_e587 + (288u * (_e539 % 64u))));
-                    let _e591 = (0.5f + (_e589 * 0.7548777f));
-                    let _e595 = (0.5f + (_e589 * 0.5698403f));
-                    let _e602 = params.member.member_4.member.member_3;
-                    let _e605 = select(false, (_e132 < _e602), (_e132 > 0f));
-                    if _e605 {
-                        let _e609 = params.member.member_4.member_8;
-                        let _e611 = select(1u, _e609, (1u < _e609));
-                        phi_3375_ = false;
-                        phi_942_ = 0u;
-                        phi_945_ = 0f;
-                        phi_947_ = 0f;
+                    let _e561 = local_1;
+                    let _e563 = f32((_e561 + (288u * (_e513 % 64u))));
+                    let _e565 = (0.5f + (_e563 * 0.7548777f));
+                    let _e569 = (0.5f + (_e563 * 0.5698403f));
+                    let _e576 = params.member.member_4.member.member_3;
+                    let _e579 = select(false, (_e129 < _e576), (_e129 > 0f));
+                    if _e579 {
+                        let _e583 = params.member.member_4.member_8;
+                        let _e585 = select(1u, _e583, (1u < _e583));
+                        phi_3303_ = false;
+                        phi_880_ = 0u;
+                        phi_883_ = 0f;
+                        phi_885_ = 0f;
                         loop {
-                            let _e613 = phi_3375_;
-                            let _e615 = phi_942_;
-                            let _e617 = phi_945_;
-                            let _e619 = phi_947_;
-                            local_9 = _e617;
-                            local_10 = _e619;
-                            local_11 = _e617;
-                            let _e620 = (_e615 < _e611);
-                            if _e620 {
-                                let _e625 = ((((_e591 - floor(_e591)) + f32(_e615)) * 3.1415927f) / f32(_e611));
-                                let _e626 = sin(_e625);
-                                let _e627 = cos(_e625);
-                                let _e633 = ((_e627 * _e447) + (_e626 * _e448));
-                                let _e637 = (_e627 - (_e447 * _e633));
-                                let _e638 = (_e626 - (_e448 * _e633));
-                                let _e639 = -((_e449 * _e633));
-                                let _e642 = ((_e638 * _e449) - (_e448 * _e639));
-                                let _e645 = ((_e639 * _e447) - (_e449 * _e637));
-                                let _e648 = ((_e637 * _e448) - (_e447 * _e638));
-                                let _e655 = (1f / sqrt((((_e642 * _e642) + (_e645 * _e645)) + (_e648 * _e648))));
-                                let _e656 = (_e642 * _e655);
-                                let _e657 = (_e645 * _e655);
-                                let _e658 = (_e648 * _e655);
-                                let _e663 = (((_e519 * _e656) + (_e520 * _e657)) + (_e521 * _e658));
-                                let _e667 = (_e519 - (_e656 * _e663));
-                                let _e668 = (_e520 - (_e657 * _e663));
-                                let _e669 = (_e521 - (_e658 * _e663));
-                                let _e675 = sqrt((((_e667 * _e667) + (_e668 * _e668)) + (_e669 * _e669)));
-                                let _e680 = (((_e637 * _e667) + (_e638 * _e668)) + (_e639 * _e669));
-                                let _e690 = ((((_e667 * _e447) + (_e668 * _e448)) + (_e669 * _e449)) / _e675);
-                                let _e694 = select(0f, select(1f, _e690, (_e690 < 1f)), (_e690 > 0f));
-                                let _e695 = abs(_e694);
-                                let _e713 = (((((((((((((((_e695 * -0.0012624911f) + 0.00667009f) * _e695) - 0.017088126f) * _e695) + 0.03089188f) * _e695) - 0.050174303f) * _e695) + 0.08897899f) * _e695) - 0.2145988f) * _e695) + 1.5707963f) * sqrt((1f - _e695)));
-                                let _e716 = (select(select(0f, -1f, (_e680 < 0f)), 1f, (_e680 > 0f)) * select((3.1415927f - _e713), _e713, (_e694 >= 0f)));
-                                let _e720 = params.member.member_4.member_9;
-                                let _e722 = select(1u, _e720, (1u < _e720));
-                                phi_1142_ = 0u;
-                                phi_1145_ = 0u;
+                            let _e587 = phi_3303_;
+                            let _e589 = phi_880_;
+                            let _e591 = phi_883_;
+                            let _e593 = phi_885_;
+                            local_9 = _e591;
+                            local_10 = _e593;
+                            local_11 = _e591;
+                            let _e594 = (_e589 < _e585);
+                            if _e594 {
+                                let _e599 = ((((_e565 - floor(_e565)) + f32(_e589)) * 3.1415927f) / f32(_e585));
+                                let _e600 = sin(_e599);
+                                let _e601 = cos(_e599);
+                                let _e607 = ((_e601 * _e421) + (_e600 * _e422));
+                                let _e611 = (_e601 - (_e421 * _e607));
+                                let _e612 = (_e600 - (_e422 * _e607));
+                                let _e613 = -((_e423 * _e607));
+                                let _e616 = ((_e612 * _e423) - (_e422 * _e613));
+                                let _e619 = ((_e613 * _e421) - (_e423 * _e611));
+                                let _e622 = ((_e611 * _e422) - (_e421 * _e612));
+                                let _e629 = (1f / sqrt((((_e616 * _e616) + (_e619 * _e619)) + (_e622 * _e622))));
+                                let _e630 = (_e616 * _e629);
+                                let _e631 = (_e619 * _e629);
+                                let _e632 = (_e622 * _e629);
+                                let _e637 = (((_e493 * _e630) + (_e494 * _e631)) + (_e495 * _e632));
+                                let _e641 = (_e493 - (_e630 * _e637));
+                                let _e642 = (_e494 - (_e631 * _e637));
+                                let _e643 = (_e495 - (_e632 * _e637));
+                                let _e649 = sqrt((((_e641 * _e641) + (_e642 * _e642)) + (_e643 * _e643)));
+                                let _e654 = (((_e611 * _e641) + (_e612 * _e642)) + (_e613 * _e643));
+                                let _e664 = ((((_e641 * _e421) + (_e642 * _e422)) + (_e643 * _e423)) / _e649);
+                                let _e668 = select(0f, select(1f, _e664, (_e664 < 1f)), (_e664 > 0f));
+                                let _e669 = abs(_e668);
+                                let _e687 = (((((((((((((((_e669 * -0.0012624911f) + 0.00667009f) * _e669) - 0.017088126f) * _e669) + 0.03089188f) * _e669) - 0.050174303f) * _e669) + 0.08897899f) * _e669) - 0.2145988f) * _e669) + 1.5707963f) * sqrt((1f - _e669)));
+                                let _e690 = (select(select(0f, -1f, (_e654 < 0f)), 1f, (_e654 > 0f)) * select((3.1415927f - _e687), _e687, (_e668 >= 0f)));
+                                let _e694 = params.member.member_4.member_9;
+                                let _e696 = select(1u, _e694, (1u < _e694));
+                                phi_1080_ = 0u;
+                                phi_1083_ = 0u;
                                 loop {
-                                    let _e724 = phi_1142_;
-                                    let _e726 = phi_1145_;
-                                    local_4 = _e726;
-                                    local_5 = _e726;
-                                    local_7 = _e726;
-                                    let _e727 = (_e724 < _e722);
-                                    if _e727 {
-                                        let _e732 = ((_e595 - floor(_e595)) + (f32((_e615 + (_e724 * _e722))) * 0.618034f));
-                                        let _e738 = (((_e732 - floor(_e732)) + f32(_e724)) / f32(_e722));
-                                        let _e742 = params.member.member_4.member_4;
-                                        if (_e742 == 2f) {
-                                            phi_1199_ = (_e738 * _e738);
+                                    let _e698 = phi_1080_;
+                                    let _e700 = phi_1083_;
+                                    local_4 = _e700;
+                                    local_5 = _e700;
+                                    local_7 = _e700;
+                                    let _e701 = (_e698 < _e696);
+                                    if _e701 {
+                                        let _e706 = ((_e569 - floor(_e569)) + (f32((_e589 + (_e698 * _e696))) * 0.618034f));
+                                        let _e712 = (((_e706 - floor(_e706)) + f32(_e698)) / f32(_e696));
+                                        let _e716 = params.member.member_4.member_4;
+                                        if (_e716 == 2f) {
+                                            phi_1137_ = (_e712 * _e712);
                                         } else {
-                                            phi_1199_ = pow(_e738, _e742);
+                                            phi_1137_ = pow(_e712, _e716);
                                         }
-                                        let _e747 = phi_1199_;
-                                        let _e748 = (_e747 + (1.3f / _e534));
-                                        let _e749 = ((_e627 * _e534) * _e748);
-                                        let _e750 = ((-(_e626) * _e534) * _e748);
-                                        let _e759 = params.member.member_4.member_7;
-                                        let _e760 = (log2(sqrt(((_e749 * _e749) + (_e750 * _e750)))) - _e759);
-                                        let _e767 = (-1f - floor((-0.5f - select(0f, select(5f, _e760, (_e760 < 5f)), (_e760 > 0f)))));
-                                        let _e769 = floor((_e749 + 0.5f));
-                                        if ((_e769 - _e749) == 0.5f) {
-                                            let _e775 = ((floor((_e769 * 0.5f)) * 2f) != _e769);
-                                            if _e775 {
-                                                phi_1244_ = (_e769 - 1f);
+                                        let _e721 = phi_1137_;
+                                        let _e722 = (_e721 + (1.3f / _e508));
+                                        let _e723 = ((_e601 * _e508) * _e722);
+                                        let _e724 = ((-(_e600) * _e508) * _e722);
+                                        let _e733 = params.member.member_4.member_7;
+                                        let _e734 = (log2(sqrt(((_e723 * _e723) + (_e724 * _e724)))) - _e733);
+                                        let _e741 = (-1f - floor((-0.5f - select(0f, select(5f, _e734, (_e734 < 5f)), (_e734 > 0f)))));
+                                        let _e743 = floor((_e723 + 0.5f));
+                                        if ((_e743 - _e723) == 0.5f) {
+                                            let _e749 = ((floor((_e743 * 0.5f)) * 2f) != _e743);
+                                            if _e749 {
+                                                phi_1182_ = (_e743 - 1f);
                                             } else {
-                                                phi_1244_ = f32();
+                                                phi_1182_ = f32();
                                             }
-                                            let _e778 = phi_1244_;
-                                            phi_1246_ = _e778;
-                                            phi_1247_ = select(true, false, _e775);
+                                            let _e752 = phi_1182_;
+                                            phi_1184_ = _e752;
+                                            phi_1185_ = select(true, false, _e749);
                                         } else {
-                                            phi_1246_ = f32();
-                                            phi_1247_ = true;
+                                            phi_1184_ = f32();
+                                            phi_1185_ = true;
                                         }
-                                        let _e781 = phi_1246_;
-                                        let _e783 = phi_1247_;
-                                        let _e785 = (select(_e781, _e769, _e783) / _e107);
-                                        let _e787 = floor((_e750 + 0.5f));
-                                        if ((_e787 - _e750) == 0.5f) {
-                                            let _e793 = ((floor((_e787 * 0.5f)) * 2f) != _e787);
-                                            if _e793 {
-                                                phi_1270_ = (_e787 - 1f);
+                                        let _e755 = phi_1184_;
+                                        let _e757 = phi_1185_;
+                                        let _e759 = (select(_e755, _e743, _e757) / _e105);
+                                        let _e761 = floor((_e724 + 0.5f));
+                                        if ((_e761 - _e724) == 0.5f) {
+                                            let _e767 = ((floor((_e761 * 0.5f)) * 2f) != _e761);
+                                            if _e767 {
+                                                phi_1208_ = (_e761 - 1f);
                                             } else {
-                                                phi_1270_ = f32();
+                                                phi_1208_ = f32();
                                             }
-                                            let _e796 = phi_1270_;
-                                            phi_1272_ = _e796;
-                                            phi_1273_ = select(true, false, _e793);
+                                            let _e770 = phi_1208_;
+                                            phi_1210_ = _e770;
+                                            phi_1211_ = select(true, false, _e767);
                                         } else {
-                                            phi_1272_ = f32();
-                                            phi_1273_ = true;
+                                            phi_1210_ = f32();
+                                            phi_1211_ = true;
                                         }
-                                        let _e799 = phi_1272_;
-                                        let _e801 = phi_1273_;
-                                        let _e803 = (select(_e799, _e787, _e801) / _e118);
-                                        let _e804 = (_e412 + _e785);
-                                        let _e805 = (_e415 + _e803);
-                                        let _e806 = (_e412 - _e785);
-                                        let _e807 = (_e415 - _e803);
-                                        let _e808 = (_e767 > 0f);
-                                        if _e808 {
-                                            let _e813 = select(select(u32(_e767), 0u, (_e767 < 0f)), 4294967295u, (_e767 > 4294967000f));
-                                            phi_1306_ = select(_e813, 4u, (4u < _e813));
+                                        let _e773 = phi_1210_;
+                                        let _e775 = phi_1211_;
+                                        let _e777 = (select(_e773, _e761, _e775) / _e116);
+                                        let _e778 = (_e386 + _e759);
+                                        let _e779 = (_e389 + _e777);
+                                        let _e780 = (_e386 - _e759);
+                                        let _e781 = (_e389 - _e777);
+                                        let _e782 = (_e741 > 0f);
+                                        if _e782 {
+                                            let _e787 = select(select(u32(_e741), 0u, (_e741 < 0f)), 4294967295u, (_e741 > 4294967000f));
+                                            phi_1244_ = select(_e787, 4u, (4u < _e787));
                                         } else {
-                                            phi_1306_ = 0u;
+                                            phi_1244_ = 0u;
                                         }
-                                        let _e817 = phi_1306_;
-                                        let _e818 = (_e817 & 31u);
-                                        let _e820 = (_e112 >> bitcast<u32>(_e818));
-                                        let _e822 = select(1u, _e820, (1u < _e820));
-                                        let _e824 = (_e123 >> bitcast<u32>(_e818));
-                                        let _e826 = select(1u, _e824, (1u < _e824));
-                                        phi_1322_ = 0u;
-                                        phi_1325_ = 0u;
+                                        let _e791 = phi_1244_;
+                                        let _e792 = (_e791 & 31u);
+                                        let _e794 = (_e110 >> bitcast<u32>(_e792));
+                                        let _e796 = select(1u, _e794, (1u < _e794));
+                                        let _e798 = (_e121 >> bitcast<u32>(_e792));
+                                        let _e800 = select(1u, _e798, (1u < _e798));
+                                        phi_1260_ = 0u;
+                                        phi_1263_ = 0u;
                                         loop {
-                                            let _e828 = phi_1322_;
-                                            let _e830 = phi_1325_;
-                                            local_2 = _e830;
-                                            let _e831 = (_e828 < _e817);
-                                            if _e831 {
-                                                let _e832 = (_e828 & 31u);
-                                                let _e834 = (_e112 >> bitcast<u32>(_e832));
-                                                let _e838 = (_e123 >> bitcast<u32>(_e832));
-                                                phi_1323_ = (_e828 + 1u);
-                                                phi_1326_ = (_e830 + (select(1u, _e834, (1u < _e834)) * select(1u, _e838, (1u < _e838))));
+                                            let _e802 = phi_1260_;
+                                            let _e804 = phi_1263_;
+                                            local_2 = _e804;
+                                            let _e805 = (_e802 < _e791);
+                                            if _e805 {
+                                                let _e806 = (_e802 & 31u);
+                                                let _e808 = (_e110 >> bitcast<u32>(_e806));
+                                                let _e812 = (_e121 >> bitcast<u32>(_e806));
+                                                phi_1261_ = (_e802 + 1u);
+                                                phi_1264_ = (_e804 + (select(1u, _e808, (1u < _e808)) * select(1u, _e812, (1u < _e812))));
                                             } else {
-                                                phi_1323_ = u32();
-                                                phi_1326_ = u32();
+                                                phi_1261_ = u32();
+                                                phi_1264_ = u32();
                                             }
-                                            let _e845 = phi_1323_;
-                                            let _e847 = phi_1326_;
+                                            let _e819 = phi_1261_;
+                                            let _e821 = phi_1264_;
                                             continue;
                                             continuing {
-                                                phi_1322_ = _e845;
-                                                phi_1325_ = _e847;
-                                                break if !(_e831);
+                                                phi_1260_ = _e819;
+                                                phi_1263_ = _e821;
+                                                break if !(_e805);
                                             }
                                         }
-                                        let _e851 = (_e804 * f32(_e822));
-                                        if (_e851 > 0f) {
-                                            let _e857 = select(select(u32(_e851), 0u, (_e851 < 0f)), 4294967295u, (_e851 > 4294967000f));
-                                            let _e858 = (_e822 - 1u);
-                                            phi_1370_ = select(_e857, _e858, (_e858 < _e857));
+                                        let _e825 = (_e778 * f32(_e796));
+                                        if (_e825 > 0f) {
+                                            let _e831 = select(select(u32(_e825), 0u, (_e825 < 0f)), 4294967295u, (_e825 > 4294967000f));
+                                            let _e832 = (_e796 - 1u);
+                                            phi_1308_ = select(_e831, _e832, (_e832 < _e831));
                                         } else {
-                                            phi_1370_ = 0u;
+                                            phi_1308_ = 0u;
                                         }
-                                        let _e862 = phi_1370_;
-                                        let _e863 = (_e805 * f32(_e826));
-                                        if (_e863 > 0f) {
-                                            let _e869 = select(select(u32(_e863), 0u, (_e863 < 0f)), 4294967295u, (_e863 > 4294967000f));
-                                            let _e870 = (_e826 - 1u);
-                                            phi_1389_ = select(_e869, _e870, (_e870 < _e869));
+                                        let _e836 = phi_1308_;
+                                        let _e837 = (_e779 * f32(_e800));
+                                        if (_e837 > 0f) {
+                                            let _e843 = select(select(u32(_e837), 0u, (_e837 < 0f)), 4294967295u, (_e837 > 4294967000f));
+                                            let _e844 = (_e800 - 1u);
+                                            phi_1327_ = select(_e843, _e844, (_e844 < _e843));
                                         } else {
-                                            phi_1389_ = 0u;
+                                            phi_1327_ = 0u;
                                         }
-                                        let _e874 = phi_1389_;
-                                        let _e877 = local_2;
-                                        let _e879 = ((_e877 + (_e874 * _e822)) + _e862);
-                                        if (_e879 < _e95) {
+                                        let _e848 = phi_1327_;
+                                        let _e851 = local_2;
+                                        let _e856 = mips.member[((_e851 + (_e848 * _e796)) + _e836)];
+                                        if _e782 {
+                                            let _e869 = select(select(u32(_e741), 0u, (_e741 < 0f)), 4294967295u, (_e741 > 4294967000f));
+                                            phi_1366_ = select(_e869, 4u, (4u < _e869));
                                         } else {
-                                            phi_3256_ = true;
-                                            break;
+                                            phi_1366_ = 0u;
                                         }
-                                        let _e883 = mips.member[_e879];
-                                        if _e808 {
-                                            let _e896 = select(select(u32(_e767), 0u, (_e767 < 0f)), 4294967295u, (_e767 > 4294967000f));
-                                            phi_1433_ = select(_e896, 4u, (4u < _e896));
-                                        } else {
-                                            phi_1433_ = 0u;
-                                        }
-                                        let _e900 = phi_1433_;
-                                        let _e901 = (_e900 & 31u);
-                                        let _e903 = (_e112 >> bitcast<u32>(_e901));
-                                        let _e905 = select(1u, _e903, (1u < _e903));
-                                        let _e907 = (_e123 >> bitcast<u32>(_e901));
-                                        let _e909 = select(1u, _e907, (1u < _e907));
-                                        phi_1449_ = 0u;
-                                        phi_1452_ = 0u;
+                                        let _e873 = phi_1366_;
+                                        let _e874 = (_e873 & 31u);
+                                        let _e876 = (_e110 >> bitcast<u32>(_e874));
+                                        let _e878 = select(1u, _e876, (1u < _e876));
+                                        let _e880 = (_e121 >> bitcast<u32>(_e874));
+                                        let _e882 = select(1u, _e880, (1u < _e880));
+                                        phi_1382_ = 0u;
+                                        phi_1385_ = 0u;
                                         loop {
-                                            let _e911 = phi_1449_;
-                                            let _e913 = phi_1452_;
-                                            local_3 = _e913;
-                                            let _e914 = (_e911 < _e900);
-                                            if _e914 {
-                                                let _e915 = (_e911 & 31u);
-                                                let _e917 = (_e112 >> bitcast<u32>(_e915));
-                                                let _e921 = (_e123 >> bitcast<u32>(_e915));
-                                                phi_1450_ = (_e911 + 1u);
-                                                phi_1453_ = (_e913 + (select(1u, _e917, (1u < _e917)) * select(1u, _e921, (1u < _e921))));
+                                            let _e884 = phi_1382_;
+                                            let _e886 = phi_1385_;
+                                            local_3 = _e886;
+                                            let _e887 = (_e884 < _e873);
+                                            if _e887 {
+                                                let _e888 = (_e884 & 31u);
+                                                let _e890 = (_e110 >> bitcast<u32>(_e888));
+                                                let _e894 = (_e121 >> bitcast<u32>(_e888));
+                                                phi_1383_ = (_e884 + 1u);
+                                                phi_1386_ = (_e886 + (select(1u, _e890, (1u < _e890)) * select(1u, _e894, (1u < _e894))));
                                             } else {
-                                                phi_1450_ = u32();
-                                                phi_1453_ = u32();
+                                                phi_1383_ = u32();
+                                                phi_1386_ = u32();
                                             }
-                                            let _e928 = phi_1450_;
-                                            let _e930 = phi_1453_;
+                                            let _e901 = phi_1383_;
+                                            let _e903 = phi_1386_;
                                             continue;
                                             continuing {
-                                                phi_1449_ = _e928;
-                                                phi_1452_ = _e930;
-                                                break if !(_e914);
+                                                phi_1382_ = _e901;
+                                                phi_1385_ = _e903;
+                                                break if !(_e887);
                                             }
                                         }
-                                        let _e934 = (_e806 * f32(_e905));
-                                        if (_e934 > 0f) {
-                                            let _e940 = select(select(u32(_e934), 0u, (_e934 < 0f)), 4294967295u, (_e934 > 4294967000f));
-                                            let _e941 = (_e905 - 1u);
-                                            phi_1497_ = select(_e940, _e941, (_e941 < _e940));
+                                        let _e907 = (_e780 * f32(_e878));
+                                        if (_e907 > 0f) {
+                                            let _e913 = select(select(u32(_e907), 0u, (_e907 < 0f)), 4294967295u, (_e907 > 4294967000f));
+                                            let _e914 = (_e878 - 1u);
+                                            phi_1430_ = select(_e913, _e914, (_e914 < _e913));
                                         } else {
-                                            phi_1497_ = 0u;
+                                            phi_1430_ = 0u;
                                         }
-                                        let _e945 = phi_1497_;
-                                        let _e946 = (_e807 * f32(_e909));
-                                        if (_e946 > 0f) {
-                                            let _e952 = select(select(u32(_e946), 0u, (_e946 < 0f)), 4294967295u, (_e946 > 4294967000f));
-                                            let _e953 = (_e909 - 1u);
-                                            phi_1516_ = select(_e952, _e953, (_e953 < _e952));
+                                        let _e918 = phi_1430_;
+                                        let _e919 = (_e781 * f32(_e882));
+                                        if (_e919 > 0f) {
+                                            let _e925 = select(select(u32(_e919), 0u, (_e919 < 0f)), 4294967295u, (_e919 > 4294967000f));
+                                            let _e926 = (_e882 - 1u);
+                                            phi_1449_ = select(_e925, _e926, (_e926 < _e925));
                                         } else {
-                                            phi_1516_ = 0u;
+                                            phi_1449_ = 0u;
                                         }
-                                        let _e957 = phi_1516_;
-                                        let _e960 = local_3;
-                                        let _e962 = ((_e960 + (_e957 * _e905)) + _e945);
-                                        if (_e962 < _e95) {
+                                        let _e930 = phi_1449_;
+                                        let _e933 = local_3;
+                                        let _e938 = mips.member[((_e933 + (_e930 * _e878)) + _e918)];
+                                        let _e947 = (((((_e778 * 2f) - 1f) * _e398) * _e856) - _e400);
+                                        let _e948 = (((((_e779 * -2f) + 1f) * _e408) * _e856) - _e410);
+                                        let _e949 = (_e856 - _e390);
+                                        let _e952 = params.member.member_1;
+                                        let _e953 = (_e952 > 0f);
+                                        if _e953 {
+                                            phi_1493_ = (sqrt((((_e947 * _e947) + (_e948 * _e948)) + (_e949 * _e949))) > _e952);
                                         } else {
-                                            phi_3256_ = true;
-                                            break;
+                                            phi_1493_ = false;
                                         }
-                                        let _e966 = mips.member[_e962];
-                                        let _e975 = (((((_e804 * 2f) - 1f) * _e424) * _e883) - _e426);
-                                        let _e976 = (((((_e805 * -2f) + 1f) * _e434) * _e883) - _e436);
-                                        let _e977 = (_e883 - _e416);
-                                        let _e980 = params.member.member_1;
-                                        let _e981 = (_e980 > 0f);
-                                        if _e981 {
-                                            phi_1565_ = (sqrt((((_e975 * _e975) + (_e976 * _e976)) + (_e977 * _e977))) > _e980);
-                                        } else {
-                                            phi_1565_ = false;
-                                        }
-                                        let _e990 = phi_1565_;
-                                        if !(_e990) {
-                                            let _e994 = params.member.member;
-                                            let _e997 = params.member.member_3;
-                                            let _e1002 = (((_e975 * _e447) + (_e976 * _e448)) + (_e977 * _e449));
-                                            let _e1006 = (_e975 - (_e447 * _e1002));
-                                            let _e1007 = (_e976 - (_e448 * _e1002));
-                                            let _e1008 = (_e977 - (_e449 * _e1002));
-                                            let _e1017 = ((_e1007 * _e449) - (_e448 * _e1008));
-                                            let _e1020 = ((_e1008 * _e447) - (_e449 * _e1006));
-                                            let _e1023 = ((_e1006 * _e448) - (_e447 * _e1007));
-                                            let _e1030 = (1f / sqrt((((_e1017 * _e1017) + (_e1020 * _e1020)) + (_e1023 * _e1023))));
-                                            let _e1031 = (_e1017 * _e1030);
-                                            let _e1032 = (_e1020 * _e1030);
-                                            let _e1033 = (_e1023 * _e1030);
-                                            let _e1038 = (((_e519 * _e1031) + (_e520 * _e1032)) + (_e521 * _e1033));
-                                            let _e1042 = (_e519 - (_e1031 * _e1038));
-                                            let _e1043 = (_e520 - (_e1032 * _e1038));
-                                            let _e1044 = (_e521 - (_e1033 * _e1038));
-                                            let _e1050 = sqrt((((_e1042 * _e1042) + (_e1043 * _e1043)) + (_e1044 * _e1044)));
-                                            let _e1056 = ((((_e1042 * _e447) + (_e1043 * _e448)) + (_e1044 * _e449)) / _e1050);
-                                            let _e1060 = select(0f, select(1f, _e1056, (_e1056 < 1f)), (_e1056 > 0f));
-                                            let _e1061 = abs(_e1060);
-                                            let _e1078 = (((((((((((((((_e1061 * -0.0012624911f) + 0.00667009f) * _e1061) - 0.017088126f) * _e1061) + 0.03089188f) * _e1061) - 0.050174303f) * _e1061) + 0.08897899f) * _e1061) - 0.2145988f) * _e1061) + 1.5707963f) * sqrt((1f - _e1061)));
-                                            let _e1081 = select((3.1415927f - _e1078), _e1078, (_e1060 >= 0f));
-                                            let _e1089 = select(_e1081, -(_e1081), ((((_e1006 * _e1042) + (_e1007 * _e1043)) + (_e1008 * _e1044)) < 0f));
-                                            let _e1090 = (0.02f / _e1050);
-                                            if (_e1090 != _e1090) {
-                                                phi_3062_ = true;
+                                        let _e962 = phi_1493_;
+                                        if !(_e962) {
+                                            let _e966 = params.member.member;
+                                            let _e969 = params.member.member_3;
+                                            let _e974 = (((_e947 * _e421) + (_e948 * _e422)) + (_e949 * _e423));
+                                            let _e978 = (_e947 - (_e421 * _e974));
+                                            let _e979 = (_e948 - (_e422 * _e974));
+                                            let _e980 = (_e949 - (_e423 * _e974));
+                                            let _e989 = ((_e979 * _e423) - (_e422 * _e980));
+                                            let _e992 = ((_e980 * _e421) - (_e423 * _e978));
+                                            let _e995 = ((_e978 * _e422) - (_e421 * _e979));
+                                            let _e1002 = (1f / sqrt((((_e989 * _e989) + (_e992 * _e992)) + (_e995 * _e995))));
+                                            let _e1003 = (_e989 * _e1002);
+                                            let _e1004 = (_e992 * _e1002);
+                                            let _e1005 = (_e995 * _e1002);
+                                            let _e1010 = (((_e493 * _e1003) + (_e494 * _e1004)) + (_e495 * _e1005));
+                                            let _e1014 = (_e493 - (_e1003 * _e1010));
+                                            let _e1015 = (_e494 - (_e1004 * _e1010));
+                                            let _e1016 = (_e495 - (_e1005 * _e1010));
+                                            let _e1022 = sqrt((((_e1014 * _e1014) + (_e1015 * _e1015)) + (_e1016 * _e1016)));
+                                            let _e1028 = ((((_e1014 * _e421) + (_e1015 * _e422)) + (_e1016 * _e423)) / _e1022);
+                                            let _e1032 = select(0f, select(1f, _e1028, (_e1028 < 1f)), (_e1028 > 0f));
+                                            let _e1033 = abs(_e1032);
+                                            let _e1050 = (((((((((((((((_e1033 * -0.0012624911f) + 0.00667009f) * _e1033) - 0.017088126f) * _e1033) + 0.03089188f) * _e1033) - 0.050174303f) * _e1033) + 0.08897899f) * _e1033) - 0.2145988f) * _e1033) + 1.5707963f) * sqrt((1f - _e1033)));
+                                            let _e1053 = select((3.1415927f - _e1050), _e1050, (_e1032 >= 0f));
+                                            let _e1061 = select(_e1053, -(_e1053), ((((_e978 * _e1014) + (_e979 * _e1015)) + (_e980 * _e1016)) < 0f));
+                                            let _e1062 = (0.02f / _e1022);
+                                            if (_e1062 != _e1062) {
+                                                phi_2988_ = true;
                                             } else {
-                                                phi_3062_ = (0.19634955f <= _e1090);
+                                                phi_2988_ = (0.19634955f <= _e1062);
                                             }
-                                            let _e1094 = phi_3062_;
-                                            let _e1095 = select(_e1090, 0.19634955f, _e1094);
-                                            let _e1099 = (_e975 - (_e447 * _e994));
-                                            let _e1100 = (_e976 - (_e448 * _e994));
-                                            let _e1101 = (_e977 - (_e449 * _e994));
-                                            let _e1108 = (1f / sqrt((((_e975 * _e975) + (_e976 * _e976)) + (_e977 * _e977))));
-                                            let _e1116 = ((((_e975 * _e1108) * _e447) + ((_e976 * _e1108) * _e448)) + ((_e977 * _e1108) * _e449));
-                                            let _e1120 = select(-1f, select(1f, _e1116, (_e1116 < 1f)), (_e1116 > -1f));
-                                            let _e1121 = abs(_e1120);
-                                            let _e1138 = (((((((((((((((_e1121 * -0.0012624911f) + 0.00667009f) * _e1121) - 0.017088126f) * _e1121) + 0.03089188f) * _e1121) - 0.050174303f) * _e1121) + 0.08897899f) * _e1121) - 0.2145988f) * _e1121) + 1.5707963f) * sqrt((1f - _e1121)));
-                                            let _e1145 = ((((select((3.1415927f - _e1138), _e1138, (_e1120 >= 0f)) + _e1095) - _e1089) + 1.5707964f) * 0.31830987f);
-                                            let _e1149 = select(0f, select(1f, _e1145, (_e1145 < 1f)), (_e1145 > 0f));
-                                            let _e1156 = (1f / sqrt((((_e1099 * _e1099) + (_e1100 * _e1100)) + (_e1101 * _e1101))));
-                                            let _e1164 = ((((_e1099 * _e1156) * _e447) + ((_e1100 * _e1156) * _e448)) + ((_e1101 * _e1156) * _e449));
-                                            let _e1168 = select(-1f, select(1f, _e1164, (_e1164 < 1f)), (_e1164 > -1f));
-                                            let _e1169 = abs(_e1168);
-                                            let _e1186 = (((((((((((((((_e1169 * -0.0012624911f) + 0.00667009f) * _e1169) - 0.017088126f) * _e1169) + 0.03089188f) * _e1169) - 0.050174303f) * _e1169) + 0.08897899f) * _e1169) - 0.2145988f) * _e1169) + 1.5707963f) * sqrt((1f - _e1169)));
-                                            let _e1193 = ((((select((3.1415927f - _e1186), _e1186, (_e1168 >= 0f)) + _e1095) - _e1089) + 1.5707964f) * 0.31830987f);
-                                            let _e1197 = select(0f, select(1f, _e1193, (_e1193 < 1f)), (_e1193 > 0f));
-                                            let _e1198 = (_e1149 != _e1149);
-                                            if _e1198 {
-                                                phi_3077_ = true;
+                                            let _e1066 = phi_2988_;
+                                            let _e1067 = select(_e1062, 0.19634955f, _e1066);
+                                            let _e1071 = (_e947 - (_e421 * _e966));
+                                            let _e1072 = (_e948 - (_e422 * _e966));
+                                            let _e1073 = (_e949 - (_e423 * _e966));
+                                            let _e1080 = (1f / sqrt((((_e947 * _e947) + (_e948 * _e948)) + (_e949 * _e949))));
+                                            let _e1088 = ((((_e947 * _e1080) * _e421) + ((_e948 * _e1080) * _e422)) + ((_e949 * _e1080) * _e423));
+                                            let _e1092 = select(-1f, select(1f, _e1088, (_e1088 < 1f)), (_e1088 > -1f));
+                                            let _e1093 = abs(_e1092);
+                                            let _e1110 = (((((((((((((((_e1093 * -0.0012624911f) + 0.00667009f) * _e1093) - 0.017088126f) * _e1093) + 0.03089188f) * _e1093) - 0.050174303f) * _e1093) + 0.08897899f) * _e1093) - 0.2145988f) * _e1093) + 1.5707963f) * sqrt((1f - _e1093)));
+                                            let _e1117 = ((((select((3.1415927f - _e1110), _e1110, (_e1092 >= 0f)) + _e1067) - _e1061) + 1.5707964f) * 0.31830987f);
+                                            let _e1121 = select(0f, select(1f, _e1117, (_e1117 < 1f)), (_e1117 > 0f));
+                                            let _e1128 = (1f / sqrt((((_e1071 * _e1071) + (_e1072 * _e1072)) + (_e1073 * _e1073))));
+                                            let _e1136 = ((((_e1071 * _e1128) * _e421) + ((_e1072 * _e1128) * _e422)) + ((_e1073 * _e1128) * _e423));
+                                            let _e1140 = select(-1f, select(1f, _e1136, (_e1136 < 1f)), (_e1136 > -1f));
+                                            let _e1141 = abs(_e1140);
+                                            let _e1158 = (((((((((((((((_e1141 * -0.0012624911f) + 0.00667009f) * _e1141) - 0.017088126f) * _e1141) + 0.03089188f) * _e1141) - 0.050174303f) * _e1141) + 0.08897899f) * _e1141) - 0.2145988f) * _e1141) + 1.5707963f) * sqrt((1f - _e1141)));
+                                            let _e1165 = ((((select((3.1415927f - _e1158), _e1158, (_e1140 >= 0f)) + _e1067) - _e1061) + 1.5707964f) * 0.31830987f);
+                                            let _e1169 = select(0f, select(1f, _e1165, (_e1165 < 1f)), (_e1165 > 0f));
+                                            let _e1170 = (_e1121 != _e1121);
+                                            if _e1170 {
+                                                phi_3003_ = true;
                                             } else {
-                                                phi_3077_ = (_e1197 <= _e1149);
+                                                phi_3003_ = (_e1169 <= _e1121);
                                             }
-                                            let _e1201 = phi_3077_;
-                                            let _e1202 = select(_e1149, _e1197, _e1201);
-                                            if _e1198 {
-                                                phi_3092_ = true;
+                                            let _e1173 = phi_3003_;
+                                            let _e1174 = select(_e1121, _e1169, _e1173);
+                                            if _e1170 {
+                                                phi_3018_ = true;
                                             } else {
-                                                phi_3092_ = (_e1197 >= _e1149);
+                                                phi_3018_ = (_e1169 >= _e1121);
                                             }
-                                            let _e1205 = phi_3092_;
-                                            let _e1206 = select(_e1149, _e1197, _e1205);
-                                            let _e1208 = floor((_e1202 * 32f));
-                                            if (_e997 == 1u) {
-                                                let _e1216 = -(floor((_e1206 * -32f)));
-                                                if (_e1216 != _e1216) {
-                                                    phi_3107_ = true;
+                                            let _e1177 = phi_3018_;
+                                            let _e1178 = select(_e1121, _e1169, _e1177);
+                                            let _e1180 = floor((_e1174 * 32f));
+                                            if (_e969 == 1u) {
+                                                let _e1188 = -(floor((_e1178 * -32f)));
+                                                if (_e1188 != _e1188) {
+                                                    phi_3033_ = true;
                                                 } else {
-                                                    phi_3107_ = (32f <= _e1216);
+                                                    phi_3033_ = (32f <= _e1188);
                                                 }
-                                                let _e1220 = phi_3107_;
-                                                let _e1223 = (select(_e1216, 32f, _e1220) - _e1208);
-                                                if (_e1223 != _e1223) {
-                                                    phi_3122_ = true;
+                                                let _e1192 = phi_3033_;
+                                                let _e1195 = (select(_e1188, 32f, _e1192) - _e1180);
+                                                if (_e1195 != _e1195) {
+                                                    phi_3048_ = true;
                                                 } else {
-                                                    phi_3122_ = (0f >= _e1223);
+                                                    phi_3048_ = (0f >= _e1195);
                                                 }
-                                                let _e1227 = phi_3122_;
-                                                phi_1886_ = select(select(_e1223, 0f, _e1227), 0f, (_e1206 <= _e1202));
+                                                let _e1199 = phi_3048_;
+                                                phi_1814_ = select(select(_e1195, 0f, _e1199), 0f, (_e1178 <= _e1174));
                                             } else {
-                                                phi_1886_ = -(floor(((_e1206 - _e1202) * -32f)));
+                                                phi_1814_ = -(floor(((_e1178 - _e1174) * -32f)));
                                             }
-                                            let _e1231 = phi_1886_;
-                                            if (_e1208 > 0f) {
-                                                let _e1237 = select(select(u32(_e1208), 0u, (_e1208 < 0f)), 4294967295u, (_e1208 > 4294967000f));
-                                                phi_1904_ = select(_e1237, 32u, (32u < _e1237));
+                                            let _e1203 = phi_1814_;
+                                            if (_e1180 > 0f) {
+                                                let _e1209 = select(select(u32(_e1180), 0u, (_e1180 < 0f)), 4294967295u, (_e1180 > 4294967000f));
+                                                phi_1832_ = select(_e1209, 32u, (32u < _e1209));
                                             } else {
-                                                phi_1904_ = 0u;
+                                                phi_1832_ = 0u;
                                             }
-                                            let _e1241 = phi_1904_;
-                                            if (_e1231 > 0f) {
-                                                let _e1247 = select(select(u32(_e1231), 0u, (_e1231 < 0f)), 4294967295u, (_e1231 > 4294967000f));
-                                                phi_1922_ = select(_e1247, 32u, (32u < _e1247));
+                                            let _e1213 = phi_1832_;
+                                            if (_e1203 > 0f) {
+                                                let _e1219 = select(select(u32(_e1203), 0u, (_e1203 < 0f)), 4294967295u, (_e1203 > 4294967000f));
+                                                phi_1850_ = select(_e1219, 32u, (32u < _e1219));
                                             } else {
-                                                phi_1922_ = 0u;
+                                                phi_1850_ = 0u;
                                             }
-                                            let _e1251 = phi_1922_;
-                                            if (_e1241 >= 32u) {
-                                                phi_1942_ = u32();
-                                                phi_1943_ = true;
+                                            let _e1223 = phi_1850_;
+                                            if (_e1213 >= 32u) {
+                                                phi_1870_ = u32();
+                                                phi_1871_ = true;
                                             } else {
-                                                let _e1253 = (_e1251 == 0u);
-                                                if _e1253 {
-                                                    phi_1941_ = u32();
+                                                let _e1225 = (_e1223 == 0u);
+                                                if _e1225 {
+                                                    phi_1869_ = u32();
                                                 } else {
-                                                    if (_e1251 >= 32u) {
-                                                        phi_1938_ = 4294967295u;
+                                                    if (_e1223 >= 32u) {
+                                                        phi_1866_ = 4294967295u;
                                                     } else {
-                                                        phi_1938_ = ((1u << bitcast<u32>((_e1251 & 31u))) - 1u);
+                                                        phi_1866_ = ((1u << bitcast<u32>((_e1223 & 31u))) - 1u);
                                                     }
-                                                    let _e1260 = phi_1938_;
-                                                    phi_1941_ = (_e1260 << bitcast<u32>((_e1241 & 31u)));
+                                                    let _e1232 = phi_1866_;
+                                                    phi_1869_ = (_e1232 << bitcast<u32>((_e1213 & 31u)));
                                                 }
-                                                let _e1265 = phi_1941_;
-                                                phi_1942_ = _e1265;
-                                                phi_1943_ = _e1253;
+                                                let _e1237 = phi_1869_;
+                                                phi_1870_ = _e1237;
+                                                phi_1871_ = _e1225;
                                             }
-                                            let _e1267 = phi_1942_;
-                                            let _e1269 = phi_1943_;
-                                            phi_1957_ = select(select(select(_e1267, 0u, _e1269), 0u, (sqrt((((_e1006 * _e1006) + (_e1007 * _e1007)) + (_e1008 * _e1008))) <= 0f)), 0u, _e990);
+                                            let _e1239 = phi_1870_;
+                                            let _e1241 = phi_1871_;
+                                            phi_1885_ = select(select(select(_e1239, 0u, _e1241), 0u, (sqrt((((_e978 * _e978) + (_e979 * _e979)) + (_e980 * _e980))) <= 0f)), 0u, _e962);
                                         } else {
-                                            phi_1957_ = 0u;
+                                            phi_1885_ = 0u;
                                         }
-                                        let _e1275 = phi_1957_;
-                                        let _e1277 = (((((_e806 * 2f) - 1f) * _e424) * _e966) - _e426);
-                                        let _e1278 = (((((_e807 * -2f) + 1f) * _e434) * _e966) - _e436);
-                                        let _e1279 = (_e966 - _e416);
-                                        if _e981 {
-                                            phi_1981_ = (sqrt((((_e1277 * _e1277) + (_e1278 * _e1278)) + (_e1279 * _e1279))) > _e980);
+                                        let _e1247 = phi_1885_;
+                                        let _e1249 = (((((_e780 * 2f) - 1f) * _e398) * _e938) - _e400);
+                                        let _e1250 = (((((_e781 * -2f) + 1f) * _e408) * _e938) - _e410);
+                                        let _e1251 = (_e938 - _e390);
+                                        if _e953 {
+                                            phi_1909_ = (sqrt((((_e1249 * _e1249) + (_e1250 * _e1250)) + (_e1251 * _e1251))) > _e952);
                                         } else {
-                                            phi_1981_ = false;
+                                            phi_1909_ = false;
                                         }
-                                        let _e1288 = phi_1981_;
-                                        if !(_e1288) {
-                                            let _e1292 = params.member.member;
-                                            let _e1295 = params.member.member_3;
-                                            let _e1300 = (((_e1277 * _e447) + (_e1278 * _e448)) + (_e1279 * _e449));
-                                            let _e1304 = (_e1277 - (_e447 * _e1300));
-                                            let _e1305 = (_e1278 - (_e448 * _e1300));
-                                            let _e1306 = (_e1279 - (_e449 * _e1300));
-                                            let _e1315 = ((_e1305 * _e449) - (_e448 * _e1306));
-                                            let _e1318 = ((_e1306 * _e447) - (_e449 * _e1304));
-                                            let _e1321 = ((_e1304 * _e448) - (_e447 * _e1305));
-                                            let _e1328 = (1f / sqrt((((_e1315 * _e1315) + (_e1318 * _e1318)) + (_e1321 * _e1321))));
-                                            let _e1329 = (_e1315 * _e1328);
-                                            let _e1330 = (_e1318 * _e1328);
-                                            let _e1331 = (_e1321 * _e1328);
-                                            let _e1336 = (((_e519 * _e1329) + (_e520 * _e1330)) + (_e521 * _e1331));
-                                            let _e1340 = (_e519 - (_e1329 * _e1336));
-                                            let _e1341 = (_e520 - (_e1330 * _e1336));
-                                            let _e1342 = (_e521 - (_e1331 * _e1336));
-                                            let _e1348 = sqrt((((_e1340 * _e1340) + (_e1341 * _e1341)) + (_e1342 * _e1342)));
-                                            let _e1354 = ((((_e1340 * _e447) + (_e1341 * _e448)) + (_e1342 * _e449)) / _e1348);
-                                            let _e1358 = select(0f, select(1f, _e1354, (_e1354 < 1f)), (_e1354 > 0f));
-                                            let _e1359 = abs(_e1358);
-                                            let _e1376 = (((((((((((((((_e1359 * -0.0012624911f) + 0.00667009f) * _e1359) - 0.017088126f) * _e1359) + 0.03089188f) * _e1359) - 0.050174303f) * _e1359) + 0.08897899f) * _e1359) - 0.2145988f) * _e1359) + 1.5707963f) * sqrt((1f - _e1359)));
-                                            let _e1379 = select((3.1415927f - _e1376), _e1376, (_e1358 >= 0f));
-                                            let _e1387 = select(_e1379, -(_e1379), ((((_e1304 * _e1340) + (_e1305 * _e1341)) + (_e1306 * _e1342)) < 0f));
-                                            let _e1388 = (0.02f / _e1348);
-                                            if (_e1388 != _e1388) {
-                                                phi_3137_ = true;
+                                        let _e1260 = phi_1909_;
+                                        if !(_e1260) {
+                                            let _e1264 = params.member.member;
+                                            let _e1267 = params.member.member_3;
+                                            let _e1272 = (((_e1249 * _e421) + (_e1250 * _e422)) + (_e1251 * _e423));
+                                            let _e1276 = (_e1249 - (_e421 * _e1272));
+                                            let _e1277 = (_e1250 - (_e422 * _e1272));
+                                            let _e1278 = (_e1251 - (_e423 * _e1272));
+                                            let _e1287 = ((_e1277 * _e423) - (_e422 * _e1278));
+                                            let _e1290 = ((_e1278 * _e421) - (_e423 * _e1276));
+                                            let _e1293 = ((_e1276 * _e422) - (_e421 * _e1277));
+                                            let _e1300 = (1f / sqrt((((_e1287 * _e1287) + (_e1290 * _e1290)) + (_e1293 * _e1293))));
+                                            let _e1301 = (_e1287 * _e1300);
+                                            let _e1302 = (_e1290 * _e1300);
+                                            let _e1303 = (_e1293 * _e1300);
+                                            let _e1308 = (((_e493 * _e1301) + (_e494 * _e1302)) + (_e495 * _e1303));
+                                            let _e1312 = (_e493 - (_e1301 * _e1308));
+                                            let _e1313 = (_e494 - (_e1302 * _e1308));
+                                            let _e1314 = (_e495 - (_e1303 * _e1308));
+                                            let _e1320 = sqrt((((_e1312 * _e1312) + (_e1313 * _e1313)) + (_e1314 * _e1314)));
+                                            let _e1326 = ((((_e1312 * _e421) + (_e1313 * _e422)) + (_e1314 * _e423)) / _e1320);
+                                            let _e1330 = select(0f, select(1f, _e1326, (_e1326 < 1f)), (_e1326 > 0f));
+                                            let _e1331 = abs(_e1330);
+                                            let _e1348 = (((((((((((((((_e1331 * -0.0012624911f) + 0.00667009f) * _e1331) - 0.017088126f) * _e1331) + 0.03089188f) * _e1331) - 0.050174303f) * _e1331) + 0.08897899f) * _e1331) - 0.2145988f) * _e1331) + 1.5707963f) * sqrt((1f - _e1331)));
+                                            let _e1351 = select((3.1415927f - _e1348), _e1348, (_e1330 >= 0f));
+                                            let _e1359 = select(_e1351, -(_e1351), ((((_e1276 * _e1312) + (_e1277 * _e1313)) + (_e1278 * _e1314)) < 0f));
+                                            let _e1360 = (0.02f / _e1320);
+                                            if (_e1360 != _e1360) {
+                                                phi_3063_ = true;
                                             } else {
-                                                phi_3137_ = (0.19634955f <= _e1388);
+                                                phi_3063_ = (0.19634955f <= _e1360);
                                             }
-                                            let _e1392 = phi_3137_;
-                                            let _e1393 = select(_e1388, 0.19634955f, _e1392);
-                                            let _e1397 = (_e1277 - (_e447 * _e1292));
-                                            let _e1398 = (_e1278 - (_e448 * _e1292));
-                                            let _e1399 = (_e1279 - (_e449 * _e1292));
-                                            let _e1406 = (1f / sqrt((((_e1277 * _e1277) + (_e1278 * _e1278)) + (_e1279 * _e1279))));
-                                            let _e1414 = ((((_e1277 * _e1406) * _e447) + ((_e1278 * _e1406) * _e448)) + ((_e1279 * _e1406) * _e449));
-                                            let _e1418 = select(-1f, select(1f, _e1414, (_e1414 < 1f)), (_e1414 > -1f));
-                                            let _e1419 = abs(_e1418);
-                                            let _e1436 = (((((((((((((((_e1419 * -0.0012624911f) + 0.00667009f) * _e1419) - 0.017088126f) * _e1419) + 0.03089188f) * _e1419) - 0.050174303f) * _e1419) + 0.08897899f) * _e1419) - 0.2145988f) * _e1419) + 1.5707963f) * sqrt((1f - _e1419)));
-                                            let _e1443 = ((((select((3.1415927f - _e1436), _e1436, (_e1418 >= 0f)) + _e1393) - _e1387) + 1.5707964f) * 0.31830987f);
-                                            let _e1454 = (1f / sqrt((((_e1397 * _e1397) + (_e1398 * _e1398)) + (_e1399 * _e1399))));
-                                            let _e1462 = ((((_e1397 * _e1454) * _e447) + ((_e1398 * _e1454) * _e448)) + ((_e1399 * _e1454) * _e449));
-                                            let _e1466 = select(-1f, select(1f, _e1462, (_e1462 < 1f)), (_e1462 > -1f));
-                                            let _e1467 = abs(_e1466);
-                                            let _e1484 = (((((((((((((((_e1467 * -0.0012624911f) + 0.00667009f) * _e1467) - 0.017088126f) * _e1467) + 0.03089188f) * _e1467) - 0.050174303f) * _e1467) + 0.08897899f) * _e1467) - 0.2145988f) * _e1467) + 1.5707963f) * sqrt((1f - _e1467)));
-                                            let _e1491 = ((((select((3.1415927f - _e1484), _e1484, (_e1466 >= 0f)) + _e1393) - _e1387) + 1.5707964f) * 0.31830987f);
-                                            let _e1496 = (1f - select(0f, select(1f, _e1443, (_e1443 < 1f)), (_e1443 > 0f)));
-                                            let _e1497 = (1f - select(0f, select(1f, _e1491, (_e1491 < 1f)), (_e1491 > 0f)));
-                                            let _e1498 = (_e1496 != _e1496);
-                                            if _e1498 {
-                                                phi_3152_ = true;
+                                            let _e1364 = phi_3063_;
+                                            let _e1365 = select(_e1360, 0.19634955f, _e1364);
+                                            let _e1369 = (_e1249 - (_e421 * _e1264));
+                                            let _e1370 = (_e1250 - (_e422 * _e1264));
+                                            let _e1371 = (_e1251 - (_e423 * _e1264));
+                                            let _e1378 = (1f / sqrt((((_e1249 * _e1249) + (_e1250 * _e1250)) + (_e1251 * _e1251))));
+                                            let _e1386 = ((((_e1249 * _e1378) * _e421) + ((_e1250 * _e1378) * _e422)) + ((_e1251 * _e1378) * _e423));
+                                            let _e1390 = select(-1f, select(1f, _e1386, (_e1386 < 1f)), (_e1386 > -1f));
+                                            let _e1391 = abs(_e1390);
+                                            let _e1408 = (((((((((((((((_e1391 * -0.0012624911f) + 0.00667009f) * _e1391) - 0.017088126f) * _e1391) + 0.03089188f) * _e1391) - 0.050174303f) * _e1391) + 0.08897899f) * _e1391) - 0.2145988f) * _e1391) + 1.5707963f) * sqrt((1f - _e1391)));
+                                            let _e1415 = ((((select((3.1415927f - _e1408), _e1408, (_e1390 >= 0f)) + _e1365) - _e1359) + 1.5707964f) * 0.31830987f);
+                                            let _e1426 = (1f / sqrt((((_e1369 * _e1369) + (_e1370 * _e1370)) + (_e1371 * _e1371))));
+                                            let _e1434 = ((((_e1369 * _e1426) * _e421) + ((_e1370 * _e1426) * _e422)) + ((_e1371 * _e1426) * _e423));
+                                            let _e1438 = select(-1f, select(1f, _e1434, (_e1434 < 1f)), (_e1434 > -1f));
+                                            let _e1439 = abs(_e1438);
+                                            let _e1456 = (((((((((((((((_e1439 * -0.0012624911f) + 0.00667009f) * _e1439) - 0.017088126f) * _e1439) + 0.03089188f) * _e1439) - 0.050174303f) * _e1439) + 0.08897899f) * _e1439) - 0.2145988f) * _e1439) + 1.5707963f) * sqrt((1f - _e1439)));
+                                            let _e1463 = ((((select((3.1415927f - _e1456), _e1456, (_e1438 >= 0f)) + _e1365) - _e1359) + 1.5707964f) * 0.31830987f);
+                                            let _e1468 = (1f - select(0f, select(1f, _e1415, (_e1415 < 1f)), (_e1415 > 0f)));
+                                            let _e1469 = (1f - select(0f, select(1f, _e1463, (_e1463 < 1f)), (_e1463 > 0f)));
+                                            let _e1470 = (_e1468 != _e1468);
+                                            if _e1470 {
+                                                phi_3078_ = true;
                                             } else {
-                                                phi_3152_ = (_e1497 <= _e1496);
+                                                phi_3078_ = (_e1469 <= _e1468);
                                             }
-                                            let _e1501 = phi_3152_;
-                                            let _e1502 = select(_e1496, _e1497, _e1501);
-                                            if _e1498 {
-                                                phi_3167_ = true;
+                                            let _e1473 = phi_3078_;
+                                            let _e1474 = select(_e1468, _e1469, _e1473);
+                                            if _e1470 {
+                                                phi_3093_ = true;
                                             } else {
-                                                phi_3167_ = (_e1497 >= _e1496);
+                                                phi_3093_ = (_e1469 >= _e1468);
                                             }
-                                            let _e1505 = phi_3167_;
-                                            let _e1506 = select(_e1496, _e1497, _e1505);
-                                            let _e1508 = floor((_e1502 * 32f));
-                                            if (_e1295 == 1u) {
-                                                let _e1516 = -(floor((_e1506 * -32f)));
-                                                if (_e1516 != _e1516) {
-                                                    phi_3182_ = true;
+                                            let _e1477 = phi_3093_;
+                                            let _e1478 = select(_e1468, _e1469, _e1477);
+                                            let _e1480 = floor((_e1474 * 32f));
+                                            if (_e1267 == 1u) {
+                                                let _e1488 = -(floor((_e1478 * -32f)));
+                                                if (_e1488 != _e1488) {
+                                                    phi_3108_ = true;
                                                 } else {
-                                                    phi_3182_ = (32f <= _e1516);
+                                                    phi_3108_ = (32f <= _e1488);
                                                 }
-                                                let _e1520 = phi_3182_;
-                                                let _e1523 = (select(_e1516, 32f, _e1520) - _e1508);
-                                                if (_e1523 != _e1523) {
-                                                    phi_3197_ = true;
+                                                let _e1492 = phi_3108_;
+                                                let _e1495 = (select(_e1488, 32f, _e1492) - _e1480);
+                                                if (_e1495 != _e1495) {
+                                                    phi_3123_ = true;
                                                 } else {
-                                                    phi_3197_ = (0f >= _e1523);
+                                                    phi_3123_ = (0f >= _e1495);
                                                 }
-                                                let _e1527 = phi_3197_;
-                                                phi_2302_ = select(select(_e1523, 0f, _e1527), 0f, (_e1506 <= _e1502));
+                                                let _e1499 = phi_3123_;
+                                                phi_2230_ = select(select(_e1495, 0f, _e1499), 0f, (_e1478 <= _e1474));
                                             } else {
-                                                phi_2302_ = -(floor(((_e1506 - _e1502) * -32f)));
+                                                phi_2230_ = -(floor(((_e1478 - _e1474) * -32f)));
                                             }
-                                            let _e1531 = phi_2302_;
-                                            if (_e1508 > 0f) {
-                                                let _e1537 = select(select(u32(_e1508), 0u, (_e1508 < 0f)), 4294967295u, (_e1508 > 4294967000f));
-                                                phi_2320_ = select(_e1537, 32u, (32u < _e1537));
+                                            let _e1503 = phi_2230_;
+                                            if (_e1480 > 0f) {
+                                                let _e1509 = select(select(u32(_e1480), 0u, (_e1480 < 0f)), 4294967295u, (_e1480 > 4294967000f));
+                                                phi_2248_ = select(_e1509, 32u, (32u < _e1509));
                                             } else {
-                                                phi_2320_ = 0u;
+                                                phi_2248_ = 0u;
                                             }
-                                            let _e1541 = phi_2320_;
-                                            if (_e1531 > 0f) {
-                                                let _e1547 = select(select(u32(_e1531), 0u, (_e1531 < 0f)), 4294967295u, (_e1531 > 4294967000f));
-                                                phi_2338_ = select(_e1547, 32u, (32u < _e1547));
+                                            let _e1513 = phi_2248_;
+                                            if (_e1503 > 0f) {
+                                                let _e1519 = select(select(u32(_e1503), 0u, (_e1503 < 0f)), 4294967295u, (_e1503 > 4294967000f));
+                                                phi_2266_ = select(_e1519, 32u, (32u < _e1519));
                                             } else {
-                                                phi_2338_ = 0u;
+                                                phi_2266_ = 0u;
                                             }
-                                            let _e1551 = phi_2338_;
-                                            if (_e1541 >= 32u) {
-                                                phi_2358_ = u32();
-                                                phi_2359_ = true;
+                                            let _e1523 = phi_2266_;
+                                            if (_e1513 >= 32u) {
+                                                phi_2286_ = u32();
+                                                phi_2287_ = true;
                                             } else {
-                                                let _e1553 = (_e1551 == 0u);
-                                                if _e1553 {
-                                                    phi_2357_ = u32();
+                                                let _e1525 = (_e1523 == 0u);
+                                                if _e1525 {
+                                                    phi_2285_ = u32();
                                                 } else {
-                                                    if (_e1551 >= 32u) {
-                                                        phi_2354_ = 4294967295u;
+                                                    if (_e1523 >= 32u) {
+                                                        phi_2282_ = 4294967295u;
                                                     } else {
-                                                        phi_2354_ = ((1u << bitcast<u32>((_e1551 & 31u))) - 1u);
+                                                        phi_2282_ = ((1u << bitcast<u32>((_e1523 & 31u))) - 1u);
                                                     }
-                                                    let _e1560 = phi_2354_;
-                                                    phi_2357_ = (_e1560 << bitcast<u32>((_e1541 & 31u)));
+                                                    let _e1532 = phi_2282_;
+                                                    phi_2285_ = (_e1532 << bitcast<u32>((_e1513 & 31u)));
                                                 }
-                                                let _e1565 = phi_2357_;
-                                                phi_2358_ = _e1565;
-                                                phi_2359_ = _e1553;
+                                                let _e1537 = phi_2285_;
+                                                phi_2286_ = _e1537;
+                                                phi_2287_ = _e1525;
                                             }
-                                            let _e1567 = phi_2358_;
-                                            let _e1569 = phi_2359_;
-                                            phi_2373_ = select(select(select(_e1567, 0u, _e1569), 0u, (sqrt((((_e1304 * _e1304) + (_e1305 * _e1305)) + (_e1306 * _e1306))) <= 0f)), 0u, _e1288);
+                                            let _e1539 = phi_2286_;
+                                            let _e1541 = phi_2287_;
+                                            phi_2301_ = select(select(select(_e1539, 0u, _e1541), 0u, (sqrt((((_e1276 * _e1276) + (_e1277 * _e1277)) + (_e1278 * _e1278))) <= 0f)), 0u, _e1260);
                                         } else {
-                                            phi_2373_ = 0u;
+                                            phi_2301_ = 0u;
                                         }
-                                        let _e1575 = phi_2373_;
-                                        phi_1143_ = (_e724 + 1u);
-                                        phi_1146_ = ((_e726 | _e1275) | _e1575);
+                                        let _e1547 = phi_2301_;
+                                        phi_1081_ = (_e698 + 1u);
+                                        phi_1084_ = ((_e700 | _e1247) | _e1547);
                                     } else {
-                                        phi_1143_ = u32();
-                                        phi_1146_ = u32();
+                                        phi_1081_ = u32();
+                                        phi_1084_ = u32();
                                     }
-                                    let _e1579 = phi_1143_;
-                                    let _e1581 = phi_1146_;
+                                    let _e1551 = phi_1081_;
+                                    let _e1553 = phi_1084_;
                                     continue;
                                     continuing {
-                                        phi_1142_ = _e1579;
-                                        phi_1145_ = _e1581;
-                                        phi_3256_ = _e613;
-                                        break if !(_e727);
+                                        phi_1080_ = _e1551;
+                                        phi_1083_ = _e1553;
+                                        break if !(_e701);
                                     }
                                 }
-                                let _e1584 = phi_3256_;
-                                phi_3459_ = _e1584;
-                                if _e1584 {
-                                    break;
-                                }
-                                let _e1587 = params.member.member_2;
-                                if (_e1587 == 2u) {
-                                    let _e1644 = (_e716 - 1.5707964f);
-                                    let _e1645 = (_e1644 * 2f);
-                                    let _e1646 = sin(_e716);
-                                    let _e1651 = ((_e694 + (_e1645 * _e1646)) - cos((_e1645 - _e716)));
-                                    phi_2404_ = 0u;
-                                    phi_2407_ = select((_e1651 * 0.25f), (_e1651 * -0.25f), (_e1644 < 0f));
-                                    phi_2409_ = 0f;
+                                let _e1557 = params.member.member_2;
+                                if (_e1557 == 2u) {
+                                    let _e1614 = (_e690 - 1.5707964f);
+                                    let _e1615 = (_e1614 * 2f);
+                                    let _e1616 = sin(_e690);
+                                    let _e1621 = ((_e668 + (_e1615 * _e1616)) - cos((_e1615 - _e690)));
+                                    phi_2332_ = 0u;
+                                    phi_2335_ = select((_e1621 * 0.25f), (_e1621 * -0.25f), (_e1614 < 0f));
+                                    phi_2337_ = 0f;
                                     loop {
-                                        let _e1657 = phi_2404_;
-                                        let _e1659 = phi_2407_;
-                                        let _e1661 = phi_2409_;
-                                        local_8 = _e1661;
-                                        let _e1662 = (_e1657 < 32u);
-                                        if _e1662 {
-                                            let _e1663 = (_e1657 + 1u);
-                                            let _e1666 = (_e1644 + (f32(_e1663) * 0.09817477f));
-                                            let _e1667 = (_e1666 * 2f);
-                                            let _e1672 = ((_e694 + (_e1667 * _e1646)) - cos((_e1667 - _e716)));
-                                            let _e1676 = select((_e1672 * 0.25f), (_e1672 * -0.25f), (_e1666 < 0f));
-                                            let _e1679 = local_7;
-                                            phi_2405_ = _e1663;
-                                            phi_2408_ = _e1676;
-                                            phi_2410_ = select(_e1661, (_e1661 + (_e1676 - _e1659)), (((_e1679 >> bitcast<u32>((_e1657 & 31u))) & 1u) == 0u));
+                                        let _e1627 = phi_2332_;
+                                        let _e1629 = phi_2335_;
+                                        let _e1631 = phi_2337_;
+                                        local_8 = _e1631;
+                                        let _e1632 = (_e1627 < 32u);
+                                        if _e1632 {
+                                            let _e1633 = (_e1627 + 1u);
+                                            let _e1636 = (_e1614 + (f32(_e1633) * 0.09817477f));
+                                            let _e1637 = (_e1636 * 2f);
+                                            let _e1642 = ((_e668 + (_e1637 * _e1616)) - cos((_e1637 - _e690)));
+                                            let _e1646 = select((_e1642 * 0.25f), (_e1642 * -0.25f), (_e1636 < 0f));
+                                            let _e1649 = local_7;
+                                            phi_2333_ = _e1633;
+                                            phi_2336_ = _e1646;
+                                            phi_2338_ = select(_e1631, (_e1631 + (_e1646 - _e1629)), (((_e1649 >> bitcast<u32>((_e1627 & 31u))) & 1u) == 0u));
                                         } else {
-                                            phi_2405_ = u32();
-                                            phi_2408_ = f32();
-                                            phi_2410_ = f32();
+                                            phi_2333_ = u32();
+                                            phi_2336_ = f32();
+                                            phi_2338_ = f32();
                                         }
-                                        let _e1688 = phi_2405_;
-                                        let _e1690 = phi_2408_;
-                                        let _e1692 = phi_2410_;
+                                        let _e1658 = phi_2333_;
+                                        let _e1660 = phi_2336_;
+                                        let _e1662 = phi_2338_;
                                         continue;
                                         continuing {
-                                            phi_2404_ = _e1688;
-                                            phi_2407_ = _e1690;
-                                            phi_2409_ = _e1692;
-                                            break if !(_e1662);
+                                            phi_2332_ = _e1658;
+                                            phi_2335_ = _e1660;
+                                            phi_2337_ = _e1662;
+                                            break if !(_e1632);
                                         }
                                     }
-                                    let _e1695 = local_8;
-                                    phi_3461_ = _e1584;
-                                    phi_2512_ = (_e617 + 1f);
-                                    phi_2513_ = (_e619 + ((_e675 + ((1f - _e675) * 0.05f)) * _e1695));
+                                    let _e1665 = local_8;
+                                    phi_3386_ = _e587;
+                                    phi_2440_ = (_e591 + 1f);
+                                    phi_2441_ = (_e593 + ((_e649 + ((1f - _e649) * 0.05f)) * _e1665));
                                 } else {
-                                    if (_e1587 == 1u) {
-                                        phi_2457_ = 0u;
-                                        phi_2460_ = 0f;
+                                    if (_e1557 == 1u) {
+                                        phi_2385_ = 0u;
+                                        phi_2388_ = 0f;
                                         loop {
-                                            let _e1600 = phi_2457_;
-                                            let _e1602 = phi_2460_;
-                                            local_6 = _e1602;
-                                            let _e1603 = (_e1600 < 4u);
-                                            if _e1603 {
+                                            let _e1570 = phi_2385_;
+                                            let _e1572 = phi_2388_;
+                                            local_6 = _e1572;
+                                            let _e1573 = (_e1570 < 4u);
+                                            if _e1573 {
                                                 local = array<type_25, 4>(type_25(4026531855u, 0.0095061f), type_25(251658480u, 0.0270951f), type_25(15732480u, 0.0405571f), type_25(1044480u, 0.0478421f));
-                                                if _e1603 {
+                                                if _e1573 {
                                                 } else {
-                                                    phi_3456_ = true;
+                                                    phi_3182_ = true;
                                                     break;
                                                 }
-                                                let _e1606 = local[_e1600].member;
-                                                let _e1609 = local[_e1600].member_1;
-                                                let _e1611 = local_5;
-                                                phi_2458_ = (_e1600 + 1u);
-                                                phi_2461_ = (_e1602 + (f32(countOneBits((_e1611 & _e1606))) * _e1609));
+                                                let _e1576 = local[_e1570].member;
+                                                let _e1579 = local[_e1570].member_1;
+                                                let _e1581 = local_5;
+                                                phi_2386_ = (_e1570 + 1u);
+                                                phi_2389_ = (_e1572 + (f32(countOneBits((_e1581 & _e1576))) * _e1579));
                                             } else {
-                                                phi_2458_ = u32();
-                                                phi_2461_ = f32();
+                                                phi_2386_ = u32();
+                                                phi_2389_ = f32();
                                             }
-                                            let _e1619 = phi_2458_;
-                                            let _e1621 = phi_2461_;
+                                            let _e1589 = phi_2386_;
+                                            let _e1591 = phi_2389_;
                                             continue;
                                             continuing {
-                                                phi_2457_ = _e1619;
-                                                phi_2460_ = _e1621;
-                                                phi_3456_ = _e1584;
-                                                break if !(_e1603);
+                                                phi_2385_ = _e1589;
+                                                phi_2388_ = _e1591;
+                                                phi_3182_ = _e587;
+                                                break if !(_e1573);
                                             }
                                         }
-                                        let _e1624 = phi_3456_;
-                                        phi_3459_ = _e1624;
-                                        if _e1624 {
+                                        let _e1594 = phi_3182_;
+                                        phi_3384_ = _e1594;
+                                        if _e1594 {
                                             break;
                                         }
-                                        let _e1626 = local_6;
-                                        let _e1627 = (1f - _e1626);
-                                        phi_3467_ = _e1624;
-                                        phi_2510_ = (_e617 + _e675);
-                                        phi_2511_ = (_e619 + (_e675 * select(0f, select(1f, _e1627, (_e1627 < 1f)), (_e1627 > 0f))));
+                                        let _e1596 = local_6;
+                                        let _e1597 = (1f - _e1596);
+                                        phi_3392_ = _e1594;
+                                        phi_2438_ = (_e591 + _e649);
+                                        phi_2439_ = (_e593 + (_e649 * select(0f, select(1f, _e1597, (_e1597 < 1f)), (_e1597 > 0f))));
                                     } else {
-                                        let _e1591 = local_4;
-                                        phi_3467_ = _e1584;
-                                        phi_2510_ = (_e617 + 1f);
-                                        phi_2511_ = (_e619 + ((f32(countOneBits((_e1591 & 4294967295u))) * -0.03125f) + 1f));
+                                        let _e1561 = local_4;
+                                        phi_3392_ = _e587;
+                                        phi_2438_ = (_e591 + 1f);
+                                        phi_2439_ = (_e593 + ((f32(countOneBits((_e1561 & 4294967295u))) * -0.03125f) + 1f));
                                     }
-                                    let _e1636 = phi_3467_;
-                                    let _e1638 = phi_2510_;
-                                    let _e1640 = phi_2511_;
-                                    phi_3461_ = _e1636;
-                                    phi_2512_ = _e1638;
-                                    phi_2513_ = _e1640;
+                                    let _e1606 = phi_3392_;
+                                    let _e1608 = phi_2438_;
+                                    let _e1610 = phi_2439_;
+                                    phi_3386_ = _e1606;
+                                    phi_2440_ = _e1608;
+                                    phi_2441_ = _e1610;
                                 }
-                                let _e1700 = phi_3461_;
-                                let _e1702 = phi_2512_;
-                                let _e1704 = phi_2513_;
-                                phi_3460_ = _e1700;
-                                phi_943_ = (_e615 + 1u);
-                                phi_946_ = _e1702;
-                                phi_948_ = _e1704;
+                                let _e1670 = phi_3386_;
+                                let _e1672 = phi_2440_;
+                                let _e1674 = phi_2441_;
+                                phi_3385_ = _e1670;
+                                phi_881_ = (_e589 + 1u);
+                                phi_884_ = _e1672;
+                                phi_886_ = _e1674;
                             } else {
-                                phi_3460_ = _e613;
-                                phi_943_ = u32();
-                                phi_946_ = f32();
-                                phi_948_ = f32();
+                                phi_3385_ = _e587;
+                                phi_881_ = u32();
+                                phi_884_ = f32();
+                                phi_886_ = f32();
                             }
-                            let _e1707 = phi_3460_;
-                            let _e1709 = phi_943_;
-                            let _e1711 = phi_946_;
-                            let _e1713 = phi_948_;
+                            let _e1677 = phi_3385_;
+                            let _e1679 = phi_881_;
+                            let _e1681 = phi_884_;
+                            let _e1683 = phi_886_;
                             continue;
                             continuing {
-                                phi_3375_ = _e1707;
-                                phi_942_ = _e1709;
-                                phi_945_ = _e1711;
-                                phi_947_ = _e1713;
-                                phi_3459_ = _e1707;
-                                break if !(_e620);
+                                phi_3303_ = _e1677;
+                                phi_880_ = _e1679;
+                                phi_883_ = _e1681;
+                                phi_885_ = _e1683;
+                                phi_3384_ = _e1677;
+                                break if !(_e594);
                             }
                         }
-                        let _e1716 = phi_3459_;
-                        if _e1716 {
+                        let _e1686 = phi_3384_;
+                        if _e1686 {
                             break;
                         }
-                        let _e1718 = local_9;
-                        let _e1721 = local_10;
-                        let _e1723 = local_11;
-                        phi_2521_ = select(1f, (_e1721 / _e1723), (_e1718 > 0f));
+                        let _e1688 = local_9;
+                        let _e1691 = local_10;
+                        let _e1693 = local_11;
+                        phi_2449_ = select(1f, (_e1691 / _e1693), (_e1688 > 0f));
                     } else {
-                        phi_2521_ = 1f;
+                        phi_2449_ = 1f;
                     }
-                    let _e1727 = phi_2521_;
-                    if _e605 {
-                        let _e1731 = params.member.member_4.member_6;
-                        let _e1732 = pow(_e1727, _e1731);
-                        if (_e1732 != _e1732) {
-                            phi_3230_ = true;
+                    let _e1697 = phi_2449_;
+                    if _e579 {
+                        let _e1701 = params.member.member_4.member_6;
+                        let _e1702 = pow(_e1697, _e1701);
+                        if (_e1702 != _e1702) {
+                            phi_3156_ = true;
                         } else {
-                            phi_3230_ = (0.03f >= _e1732);
+                            phi_3156_ = (0.03f >= _e1702);
                         }
-                        let _e1736 = phi_3230_;
-                        let _e1738 = (select(_e1732, 0.03f, _e1736) * 0.6666667f);
-                        let _e1744 = ((select(0f, select(1f, _e1738, (_e1738 < 1f)), (_e1738 > 0f)) * 255f) + 0.5f);
-                        phi_2570_ = select(select(u32(_e1744), 0u, (_e1744 < 0f)), 4294967295u, (_e1744 > 4294967000f));
+                        let _e1706 = phi_3156_;
+                        let _e1708 = (select(_e1702, 0.03f, _e1706) * 0.6666667f);
+                        let _e1714 = ((select(0f, select(1f, _e1708, (_e1708 < 1f)), (_e1708 > 0f)) * 255f) + 0.5f);
+                        phi_2498_ = select(select(u32(_e1714), 0u, (_e1714 < 0f)), 4294967295u, (_e1714 > 4294967000f));
                     } else {
-                        phi_2570_ = 170u;
+                        phi_2498_ = 170u;
                     }
-                    let _e1751 = phi_2570_;
-                    if (_e129 < arrayLength((&terms.member))) {
-                    } else {
-                        break;
-                    }
-                    terms.member[_e129] = _e1751;
-                    if (_e129 < arrayLength((&edges.member))) {
+                    let _e1721 = phi_2498_;
+                    if (_e127 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e129] = ((((64u * _e307) + (16u * _e340)) + (4u * _e374)) + _e408);
+                    terms.member[_e127] = _e1721;
+                    if (_e127 < arrayLength((&edges.member))) {
+                    } else {
+                        break;
+                    }
+                    edges.member[_e127] = ((((64u * _e281) + (16u * _e314)) + (4u * _e348)) + _e382);
                 }
             }
             break;

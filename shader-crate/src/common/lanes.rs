@@ -329,15 +329,16 @@ impl Lanes for f32 {
     }
     #[inline]
     fn index_offset_clamped(i: u32, d: i32, n: u32) -> u32 {
-        (i as i32 + d).clamp(0, n as i32 - 1) as u32
+        // max/min, not `clamp`: `clamp` asserts min ≤ max, a panic branch on the GPU.
+        (i as i32 + d).max(0).min(n as i32 - 1) as u32
     }
     #[inline]
     fn gather_index(data: &[f32], i: u32) -> f32 {
-        data[i as usize]
+        crate::common::read::read(data, i as usize)
     }
     #[inline]
     fn gather_word(data: &[u32], i: u32) -> u32 {
-        data[i as usize]
+        crate::common::read::read(data, i as usize)
     }
     #[inline]
     fn index_bit_run(start: u32, count: u32) -> u32 {

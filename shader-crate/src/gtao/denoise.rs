@@ -5,6 +5,7 @@ use super::GtaoParams;
 use crate::common::denoise_terms::{EdgeWeights, pack_bent_normal, pack_bent_term, unpack_bent_term, unpack_edges};
 use crate::common::lanes::Lanes;
 use crate::common::math::sat;
+use crate::common::read::read;
 use crate::common::screen_space::{neighbour_lanes, word_at};
 use crate::glam::{UVec2, Vec4, vec3};
 use core::ops::{Add, Mul};
@@ -166,7 +167,7 @@ impl<L: Lanes> Term<L> for L {
 impl Term<f32> for Vec4 {
     #[inline]
     fn load(terms: &[u32], width: u32, q: UVec2) -> Vec4 {
-        unpack_bent_term(terms[(q.y * width + q.x) as usize])
+        unpack_bent_term(read(terms, (q.y * width + q.x) as usize))
     }
 }
 
