@@ -33,27 +33,27 @@ var<storage> depth: type_7;
 var<storage, read_write> ao_out: type_7;
 
 fn function_() {
-    var phi_135_: bool;
+    var phi_134_: bool;
+    var phi_136_: bool;
     var phi_137_: bool;
     var phi_138_: bool;
     var phi_139_: bool;
-    var phi_140_: bool;
-    var phi_1456_: bool;
-    var phi_269_: i32;
-    var phi_272_: f32;
-    var phi_274_: f32;
-    var phi_284_: i32;
+    var phi_1450_: bool;
+    var phi_282_: i32;
+    var phi_285_: f32;
     var phi_287_: f32;
-    var phi_289_: f32;
-    var phi_285_: i32;
+    var phi_297_: i32;
+    var phi_300_: f32;
+    var phi_302_: f32;
+    var phi_298_: i32;
+    var phi_301_: f32;
+    var phi_303_: f32;
+    var phi_1437_: bool;
+    var phi_1473_: bool;
+    var phi_283_: i32;
+    var phi_286_: f32;
     var phi_288_: f32;
-    var phi_290_: f32;
-    var phi_1443_: bool;
-    var phi_1479_: bool;
-    var phi_270_: i32;
-    var phi_273_: f32;
-    var phi_275_: f32;
-    var phi_1478_: bool;
+    var phi_1472_: bool;
     var local: f32;
     var local_1: f32;
     var local_2: f32;
@@ -64,45 +64,45 @@ fn function_() {
             let _e25 = id_1;
             let _e27 = arrayLength((&ao_in.member));
             let _e29 = arrayLength((&depth.member));
-            let _e37 = params.member.member.member_4;
-            let _e38 = (_e25.x + _e37);
-            let _e39 = (_e25.y + _e37);
-            let _e46 = params.member.member.member[0u];
-            let _e51 = select(select(u32(_e46), 0u, (_e46 < 0f)), 4294967295u, (_e46 > 4294967000f));
-            let _e56 = params.member.member.member[1u];
-            if (_e38 >= _e37) {
-                if (_e39 >= _e37) {
-                    let _e65 = ((_e38 + _e37) < _e51);
-                    if _e65 {
-                        phi_135_ = ((_e39 + _e37) < select(select(u32(_e56), 0u, (_e56 < 0f)), 4294967295u, (_e56 > 4294967000f)));
+            let _e35 = params.member.member.member_4;
+            let _e36 = (_e25.x + _e35);
+            let _e37 = (_e25.y + _e35);
+            let _e44 = params.member.member.member[0u];
+            let _e49 = select(select(u32(_e44), 0u, (_e44 < 0f)), 4294967295u, (_e44 > 4294967000f));
+            let _e54 = params.member.member.member[1u];
+            if (_e36 >= _e35) {
+                if (_e37 >= _e35) {
+                    let _e63 = ((_e36 + _e35) < _e49);
+                    if _e63 {
+                        phi_134_ = ((_e37 + _e35) < select(select(u32(_e54), 0u, (_e54 < 0f)), 4294967295u, (_e54 > 4294967000f)));
                     } else {
-                        phi_135_ = bool();
+                        phi_134_ = bool();
                     }
-                    let _e69 = phi_135_;
-                    phi_137_ = _e69;
-                    phi_138_ = select(true, false, _e65);
+                    let _e67 = phi_134_;
+                    phi_136_ = _e67;
+                    phi_137_ = select(true, false, _e63);
                 } else {
-                    phi_137_ = bool();
-                    phi_138_ = true;
+                    phi_136_ = bool();
+                    phi_137_ = true;
                 }
+                let _e70 = phi_136_;
                 let _e72 = phi_137_;
-                let _e74 = phi_138_;
+                phi_138_ = _e70;
                 phi_139_ = _e72;
-                phi_140_ = _e74;
             } else {
-                phi_139_ = bool();
-                phi_140_ = true;
+                phi_138_ = bool();
+                phi_139_ = true;
             }
+            let _e74 = phi_138_;
             let _e76 = phi_139_;
-            let _e78 = phi_140_;
-            if select(_e76, false, _e78) {
+            if select(_e74, false, _e76) {
                 let _e80 = params.member.member;
                 let _e84 = params.member.member_1[0u];
                 let _e88 = params.member.member_1[1u];
                 let _e89 = bitcast<i32>(_e84);
                 let _e90 = bitcast<i32>(_e88);
-                let _e94 = bitcast<i32>(_e38);
-                let _e95 = bitcast<i32>(_e39);
+                let _e94 = bitcast<i32>(_e36);
+                let _e95 = bitcast<i32>(_e37);
                 let _e96 = bitcast<i32>(_e80.member_4);
                 let _e102 = select(select(u32(_e80.member.x), 0u, (_e80.member.x < 0f)), 4294967295u, (_e80.member.x > 4294967000f));
                 let _e112 = select(_e96, _e94, (_e96 < _e94));
@@ -143,27 +143,27 @@ fn function_() {
                 let _e173 = depth.member[_e169];
                 let _e174 = (_e173 - _e134);
                 let _e181 = params.member.member_2;
-                phi_1456_ = false;
-                phi_269_ = 1i;
-                phi_272_ = 1f;
-                phi_274_ = _e130;
+                phi_1450_ = false;
+                phi_282_ = 1i;
+                phi_285_ = 1f;
+                phi_287_ = _e130;
                 loop {
-                    let _e185 = phi_1456_;
-                    let _e187 = phi_269_;
-                    let _e189 = phi_272_;
-                    let _e191 = phi_274_;
+                    let _e185 = phi_1450_;
+                    let _e187 = phi_282_;
+                    let _e189 = phi_285_;
+                    let _e191 = phi_287_;
                     local = _e191;
                     local_1 = _e189;
                     let _e192 = (_e187 <= 4i);
                     if _e192 {
                         let _e193 = f32(_e187);
-                        phi_284_ = -1i;
-                        phi_287_ = _e189;
-                        phi_289_ = _e191;
+                        phi_297_ = -1i;
+                        phi_300_ = _e189;
+                        phi_302_ = _e191;
                         loop {
-                            let _e195 = phi_284_;
-                            let _e197 = phi_287_;
-                            let _e199 = phi_289_;
+                            let _e195 = phi_297_;
+                            let _e197 = phi_300_;
+                            let _e199 = phi_302_;
                             local_2 = _e197;
                             local_3 = _e199;
                             let _e200 = (_e195 <= 1i);
@@ -176,7 +176,7 @@ fn function_() {
                                 let _e217 = ((bitcast<u32>(select(_e212, _e121, (_e121 < _e212))) * _e102) + bitcast<u32>(select(_e207, _e114, (_e114 < _e207))));
                                 if (_e217 < _e29) {
                                 } else {
-                                    phi_1443_ = true;
+                                    phi_1437_ = true;
                                     break;
                                 }
                                 let _e221 = depth.member[_e217];
@@ -185,73 +185,68 @@ fn function_() {
                                 let _e235 = (_e234 > 0f);
                                 if (_e217 < _e27) {
                                 } else {
-                                    phi_1443_ = true;
+                                    phi_1437_ = true;
                                     break;
                                 }
                                 let _e239 = ao_in.member[_e217];
-                                phi_285_ = (_e195 + 2i);
-                                phi_288_ = select(_e197, (_e197 + _e234), _e235);
-                                phi_290_ = select(_e199, (_e199 + (_e234 * _e239)), _e235);
+                                phi_298_ = (_e195 + 2i);
+                                phi_301_ = select(_e197, (_e197 + _e234), _e235);
+                                phi_303_ = select(_e199, (_e199 + (_e234 * _e239)), _e235);
                             } else {
-                                phi_285_ = i32();
-                                phi_288_ = f32();
-                                phi_290_ = f32();
+                                phi_298_ = i32();
+                                phi_301_ = f32();
+                                phi_303_ = f32();
                             }
-                            let _e247 = phi_285_;
-                            let _e249 = phi_288_;
-                            let _e251 = phi_290_;
+                            let _e247 = phi_298_;
+                            let _e249 = phi_301_;
+                            let _e251 = phi_303_;
                             continue;
                             continuing {
-                                phi_284_ = _e247;
-                                phi_287_ = _e249;
-                                phi_289_ = _e251;
-                                phi_1443_ = _e185;
+                                phi_297_ = _e247;
+                                phi_300_ = _e249;
+                                phi_302_ = _e251;
+                                phi_1437_ = _e185;
                                 break if !(_e200);
                             }
                         }
-                        let _e254 = phi_1443_;
-                        phi_1478_ = _e254;
+                        let _e254 = phi_1437_;
+                        phi_1472_ = _e254;
                         if _e254 {
                             break;
                         }
-                        phi_1479_ = _e254;
-                        phi_270_ = (_e187 + 1i);
-                        let _e301 = local_2;
-                        phi_273_ = _e301;
-                        let _e304 = local_3;
-                        phi_275_ = _e304;
+                        phi_1473_ = _e254;
+                        phi_283_ = (_e187 + 1i);
+                        let _e298 = local_2;
+                        phi_286_ = _e298;
+                        let _e301 = local_3;
+                        phi_288_ = _e301;
                     } else {
-                        phi_1479_ = _e185;
-                        phi_270_ = i32();
-                        phi_273_ = f32();
-                        phi_275_ = f32();
+                        phi_1473_ = _e185;
+                        phi_283_ = i32();
+                        phi_286_ = f32();
+                        phi_288_ = f32();
                     }
-                    let _e257 = phi_1479_;
-                    let _e259 = phi_270_;
-                    let _e261 = phi_273_;
-                    let _e263 = phi_275_;
+                    let _e257 = phi_1473_;
+                    let _e259 = phi_283_;
+                    let _e261 = phi_286_;
+                    let _e263 = phi_288_;
                     continue;
                     continuing {
-                        phi_1456_ = _e257;
-                        phi_269_ = _e259;
-                        phi_272_ = _e261;
-                        phi_274_ = _e263;
-                        phi_1478_ = _e257;
+                        phi_1450_ = _e257;
+                        phi_282_ = _e259;
+                        phi_285_ = _e261;
+                        phi_287_ = _e263;
+                        phi_1472_ = _e257;
                         break if !(_e192);
                     }
                 }
-                let _e266 = phi_1478_;
+                let _e266 = phi_1472_;
                 if _e266 {
                     break;
                 }
                 let _e271 = local;
                 let _e273 = local_1;
-                let _e277 = ((_e39 * _e51) + _e38);
-                if (_e277 < arrayLength((&ao_out.member))) {
-                } else {
-                    break;
-                }
-                ao_out.member[_e277] = select(_e130, (_e271 / _e273), select(false, (_e134 < _e80.member_3), (_e134 > 0f)));
+                ao_out.member[((_e37 * _e49) + _e36)] = select(_e130, (_e271 / _e273), select(false, (_e134 < _e80.member_3), (_e134 > 0f)));
             }
             break;
         }

@@ -56,245 +56,232 @@ var<storage, read_write> terms_out: type_10;
 var<storage, read_write> ao: type_7;
 
 fn function_() {
-    var phi_175_: f32;
-    var phi_749_: f32;
-    var phi_767_: u32;
-    var phi_812_: f32;
-    var phi_1553_: vec3<f32>;
-    var phi_1603_: type_22;
+    var phi_173_: f32;
+    var phi_747_: f32;
+    var phi_765_: u32;
+    var phi_810_: f32;
+    var phi_1551_: vec3<f32>;
+    var phi_1601_: type_22;
+    var phi_1602_: type_22;
     var phi_1604_: type_22;
-    var phi_1606_: type_22;
-    var phi_1607_: type_22;
-    var phi_1608_: bool;
-    var phi_1612_: type_22;
+    var phi_1605_: type_22;
+    var phi_1606_: bool;
+    var phi_1610_: type_22;
 
-    switch bitcast<i32>(0u) {
-        default: {
-            let _e44 = id_1;
-            let _e53 = params.member.member.member[0u];
-            let _e58 = select(select(u32(_e53), 0u, (_e53 < 0f)), 4294967295u, (_e53 > 4294967000f));
-            let _e63 = params.member.member.member[1u];
-            let _e68 = select(select(u32(_e63), 0u, (_e63 < 0f)), 4294967295u, (_e63 > 4294967000f));
-            if (_e44.x >= _e58) {
-            } else {
-                if (_e44.y >= _e68) {
+    let _e43 = id_1;
+    let _e48 = params.member.member.member[0u];
+    let _e53 = select(select(u32(_e48), 0u, (_e48 < 0f)), 4294967295u, (_e48 > 4294967000f));
+    let _e58 = params.member.member.member[1u];
+    let _e63 = select(select(u32(_e58), 0u, (_e58 < 0f)), 4294967295u, (_e58 > 4294967000f));
+    if (_e43.x >= _e53) {
+    } else {
+        if (_e43.y >= _e63) {
+        } else {
+            let _e70 = params.member.member_12;
+            let _e74 = params.member.member_10;
+            let _e77 = ((_e70 + 1u) >= select(1u, _e74, (1u < _e74)));
+            let _e80 = params.member.member_13;
+            if (_e80 == 0u) {
+                if (_e74 == 0u) {
+                    phi_173_ = 10000f;
                 } else {
-                    let _e75 = params.member.member_12;
-                    let _e79 = params.member.member_10;
-                    let _e82 = ((_e75 + 1u) >= select(1u, _e79, (1u < _e79)));
-                    let _e85 = params.member.member_13;
-                    if (_e85 == 0u) {
-                        if (_e79 == 0u) {
-                            phi_175_ = 10000f;
-                        } else {
-                            phi_175_ = select(0.24000001f, 1.2f, _e82);
-                        }
-                        let _e90 = phi_175_;
-                        let _e91 = bitcast<i32>(_e44.x);
-                        let _e92 = (_e91 + -1i);
-                        let _e94 = select(0i, _e92, (0i < _e92));
-                        let _e96 = (bitcast<i32>(_e58) - 1i);
-                        let _e99 = bitcast<u32>(select(_e94, _e96, (_e96 < _e94)));
-                        let _e100 = bitcast<i32>(_e44.y);
-                        let _e102 = select(0i, _e100, (0i < _e100));
-                        let _e104 = (bitcast<i32>(_e68) - 1i);
-                        let _e108 = (_e91 + 1i);
-                        let _e110 = select(0i, _e108, (0i < _e108));
-                        let _e113 = bitcast<u32>(select(_e110, _e96, (_e96 < _e110)));
-                        let _e115 = select(0i, _e91, (0i < _e91));
-                        let _e118 = bitcast<u32>(select(_e115, _e96, (_e96 < _e115)));
-                        let _e119 = (_e100 + -1i);
-                        let _e121 = select(0i, _e119, (0i < _e119));
-                        let _e125 = (_e100 + 1i);
-                        let _e127 = select(0i, _e125, (0i < _e125));
-                        let _e131 = (bitcast<u32>(select(_e102, _e104, (_e104 < _e102))) * _e58);
-                        let _e132 = (_e131 + _e99);
-                        let _e135 = edges.member[_e132];
-                        let _e149 = (_e131 + _e113);
-                        let _e152 = edges.member[_e149];
-                        let _e166 = (bitcast<u32>(select(_e121, _e104, (_e104 < _e121))) * _e58);
-                        let _e167 = (_e166 + _e118);
-                        let _e170 = edges.member[_e167];
-                        let _e184 = (bitcast<u32>(select(_e127, _e104, (_e104 < _e127))) * _e58);
-                        let _e185 = (_e184 + _e118);
-                        let _e188 = edges.member[_e185];
-                        let _e205 = ((_e44.y * _e58) + _e44.x);
-                        let _e208 = edges.member[_e205];
-                        let _e227 = ((f32(((_e208 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f) * (f32(((_e135 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f));
-                        let _e228 = ((f32(((_e208 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f) * (f32(((_e152 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f));
-                        let _e229 = ((f32(((_e208 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f) * (f32((_e170 & 3u)) * 0.33333334f));
-                        let _e230 = ((f32((_e208 & 3u)) * 0.33333334f) * (f32(((_e188 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f));
-                        let _e234 = (1.5f - (((_e227 + _e228) + _e229) + _e230));
-                        let _e239 = (select(0f, select(1f, _e234, (_e234 < 1f)), (_e234 > 0f)) * 0.33333334f);
-                        let _e240 = (_e227 + _e239);
-                        let _e244 = select(0f, select(1f, _e240, (_e240 < 1f)), (_e240 > 0f));
-                        let _e245 = (_e228 + _e239);
-                        let _e249 = select(0f, select(1f, _e245, (_e245 < 1f)), (_e245 > 0f));
-                        let _e250 = (_e229 + _e239);
-                        let _e254 = select(0f, select(1f, _e250, (_e250 < 1f)), (_e250 > 0f));
-                        let _e255 = (_e230 + _e239);
-                        let _e259 = select(0f, select(1f, _e255, (_e255 < 1f)), (_e255 > 0f));
-                        let _e263 = (((_e244 * (f32(((_e135 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f)) + (_e254 * (f32(((_e170 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e267 = (((_e254 * (f32(((_e170 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f)) + (_e249 * (f32(((_e152 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e271 = (((_e259 * (f32(((_e188 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f)) + (_e244 * (f32((_e135 & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e275 = (((_e249 * (f32((_e152 & 3u)) * 0.33333334f)) + (_e259 * (f32(((_e188 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e286 = terms_in.member[_e205];
-                        let _e292 = terms_in.member[_e132];
-                        let _e299 = terms_in.member[_e149];
-                        let _e306 = terms_in.member[_e167];
-                        let _e313 = terms_in.member[_e185];
-                        let _e321 = terms_in.member[(_e166 + _e99)];
-                        let _e329 = terms_in.member[(_e166 + _e113)];
-                        let _e337 = terms_in.member[(_e184 + _e99)];
-                        let _e345 = terms_in.member[(_e184 + _e113)];
-                        let _e350 = (((((((((((f32(_e286) * 0.003921569f) * _e90) + ((f32(_e292) * 0.003921569f) * _e244)) + ((f32(_e299) * 0.003921569f) * _e249)) + ((f32(_e306) * 0.003921569f) * _e254)) + ((f32(_e313) * 0.003921569f) * _e259)) + ((f32(_e321) * 0.003921569f) * _e263)) + ((f32(_e329) * 0.003921569f) * _e267)) + ((f32(_e337) * 0.003921569f) * _e271)) + ((f32(_e345) * 0.003921569f) * _e275)) / ((((((((_e90 + _e244) + _e249) + _e254) + _e259) + _e263) + _e267) + _e271) + _e275));
-                        if _e82 {
-                            phi_749_ = ((_e350 * 382.5f) + 0.5f);
-                        } else {
-                            phi_749_ = ((_e350 * 255f) + 0.5f);
-                        }
-                        let _e356 = phi_749_;
-                        if (_e356 > 0f) {
-                            let _e362 = select(select(u32(_e356), 0u, (_e356 < 0f)), 4294967295u, (_e356 > 4294967000f));
-                            phi_767_ = select(_e362, 255u, (255u < _e362));
-                        } else {
-                            phi_767_ = 0u;
-                        }
-                        let _e366 = phi_767_;
-                        phi_1606_ = type_22(_e366, (f32(_e366) * 0.003921569f), _e82);
-                        phi_1607_ = type_22();
-                        phi_1608_ = true;
-                    } else {
-                        if (_e79 == 0u) {
-                            phi_812_ = 10000f;
-                        } else {
-                            phi_812_ = select(0.24000001f, 1.2f, _e82);
-                        }
-                        let _e373 = phi_812_;
-                        let _e374 = bitcast<i32>(_e44.x);
-                        let _e375 = (_e374 + -1i);
-                        let _e377 = select(0i, _e375, (0i < _e375));
-                        let _e379 = (bitcast<i32>(_e58) - 1i);
-                        let _e382 = bitcast<u32>(select(_e377, _e379, (_e379 < _e377)));
-                        let _e383 = bitcast<i32>(_e44.y);
-                        let _e385 = select(0i, _e383, (0i < _e383));
-                        let _e387 = (bitcast<i32>(_e68) - 1i);
-                        let _e391 = (_e374 + 1i);
-                        let _e393 = select(0i, _e391, (0i < _e391));
-                        let _e396 = bitcast<u32>(select(_e393, _e379, (_e379 < _e393)));
-                        let _e398 = select(0i, _e374, (0i < _e374));
-                        let _e401 = bitcast<u32>(select(_e398, _e379, (_e379 < _e398)));
-                        let _e402 = (_e383 + -1i);
-                        let _e404 = select(0i, _e402, (0i < _e402));
-                        let _e408 = (_e383 + 1i);
-                        let _e410 = select(0i, _e408, (0i < _e408));
-                        let _e414 = (bitcast<u32>(select(_e385, _e387, (_e387 < _e385))) * _e58);
-                        let _e415 = (_e414 + _e382);
-                        let _e418 = edges.member[_e415];
-                        let _e432 = (_e414 + _e396);
-                        let _e435 = edges.member[_e432];
-                        let _e449 = (bitcast<u32>(select(_e404, _e387, (_e387 < _e404))) * _e58);
-                        let _e450 = (_e449 + _e401);
-                        let _e453 = edges.member[_e450];
-                        let _e467 = (bitcast<u32>(select(_e410, _e387, (_e387 < _e410))) * _e58);
-                        let _e468 = (_e467 + _e401);
-                        let _e471 = edges.member[_e468];
-                        let _e488 = ((_e44.y * _e58) + _e44.x);
-                        let _e491 = edges.member[_e488];
-                        let _e510 = ((f32(((_e491 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f) * (f32(((_e418 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f));
-                        let _e511 = ((f32(((_e491 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f) * (f32(((_e435 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f));
-                        let _e512 = ((f32(((_e491 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f) * (f32((_e453 & 3u)) * 0.33333334f));
-                        let _e513 = ((f32((_e491 & 3u)) * 0.33333334f) * (f32(((_e471 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f));
-                        let _e517 = (1.5f - (((_e510 + _e511) + _e512) + _e513));
-                        let _e522 = (select(0f, select(1f, _e517, (_e517 < 1f)), (_e517 > 0f)) * 0.33333334f);
-                        let _e523 = (_e510 + _e522);
-                        let _e527 = select(0f, select(1f, _e523, (_e523 < 1f)), (_e523 > 0f));
-                        let _e528 = (_e511 + _e522);
-                        let _e532 = select(0f, select(1f, _e528, (_e528 < 1f)), (_e528 > 0f));
-                        let _e533 = (_e512 + _e522);
-                        let _e537 = select(0f, select(1f, _e533, (_e533 < 1f)), (_e533 > 0f));
-                        let _e538 = (_e513 + _e522);
-                        let _e542 = select(0f, select(1f, _e538, (_e538 < 1f)), (_e538 > 0f));
-                        let _e546 = (((_e527 * (f32(((_e418 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f)) + (_e537 * (f32(((_e453 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e550 = (((_e537 * (f32(((_e453 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f)) + (_e532 * (f32(((_e435 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e554 = (((_e542 * (f32(((_e471 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f)) + (_e527 * (f32((_e418 & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e558 = (((_e532 * (f32((_e435 & 3u)) * 0.33333334f)) + (_e542 * (f32(((_e471 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f))) * 0.425f);
-                        let _e566 = ((((((((_e373 + _e527) + _e532) + _e537) + _e542) + _e546) + _e550) + _e554) + _e558);
-                        let _e569 = terms_in.member[_e488];
-                        let _e593 = terms_in.member[_e415];
-                        let _e621 = terms_in.member[_e432];
-                        let _e649 = terms_in.member[_e450];
-                        let _e677 = terms_in.member[_e468];
-                        let _e706 = terms_in.member[(_e449 + _e382)];
-                        let _e735 = terms_in.member[(_e449 + _e396)];
-                        let _e764 = terms_in.member[(_e467 + _e382)];
-                        let _e793 = terms_in.member[(_e467 + _e396)];
-                        let _e819 = (((((((((((f32((_e569 & 255u)) * 0.003921569f) * _e373) + ((f32((_e593 & 255u)) * 0.003921569f) * _e527)) + ((f32((_e621 & 255u)) * 0.003921569f) * _e532)) + ((f32((_e649 & 255u)) * 0.003921569f) * _e537)) + ((f32((_e677 & 255u)) * 0.003921569f) * _e542)) + ((f32((_e706 & 255u)) * 0.003921569f) * _e546)) + ((f32((_e735 & 255u)) * 0.003921569f) * _e550)) + ((f32((_e764 & 255u)) * 0.003921569f) * _e554)) + ((f32((_e793 & 255u)) * 0.003921569f) * _e558)) / _e566);
-                        let _e820 = (((((((((((f32(((_e569 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e373) + ((f32(((_e593 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e527)) + ((f32(((_e621 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e532)) + ((f32(((_e649 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e537)) + ((f32(((_e677 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e542)) + ((f32(((_e706 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e546)) + ((f32(((_e735 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e550)) + ((f32(((_e764 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e554)) + ((f32(((_e793 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e558)) / _e566);
-                        let _e821 = (((((((((((f32(((_e569 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e373) + ((f32(((_e593 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e527)) + ((f32(((_e621 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e532)) + ((f32(((_e649 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e537)) + ((f32(((_e677 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e542)) + ((f32(((_e706 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e546)) + ((f32(((_e735 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e550)) + ((f32(((_e764 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e554)) + ((f32(((_e793 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e558)) / _e566);
-                        let _e822 = (((((((((((f32((_e569 >> bitcast<u32>(24i))) * 0.003921569f) * _e373) + ((f32((_e593 >> bitcast<u32>(24i))) * 0.003921569f) * _e527)) + ((f32((_e621 >> bitcast<u32>(24i))) * 0.003921569f) * _e532)) + ((f32((_e649 >> bitcast<u32>(24i))) * 0.003921569f) * _e537)) + ((f32((_e677 >> bitcast<u32>(24i))) * 0.003921569f) * _e542)) + ((f32((_e706 >> bitcast<u32>(24i))) * 0.003921569f) * _e546)) + ((f32((_e735 >> bitcast<u32>(24i))) * 0.003921569f) * _e550)) + ((f32((_e764 >> bitcast<u32>(24i))) * 0.003921569f) * _e554)) + ((f32((_e793 >> bitcast<u32>(24i))) * 0.003921569f) * _e558)) / _e566);
-                        if _e82 {
-                            let _e826 = ((_e819 * 2f) - 1f);
-                            let _e827 = ((_e820 * 2f) - 1f);
-                            let _e828 = ((_e821 * 2f) - 1f);
-                            let _e834 = sqrt((((_e826 * _e826) + (_e827 * _e827)) + (_e828 * _e828)));
-                            if (_e834 > 0f) {
-                                phi_1553_ = vec3<f32>((_e826 / _e834), (_e827 / _e834), (_e828 / _e834));
-                            } else {
-                                phi_1553_ = vec3<f32>(0f, 0f, -1f);
-                            }
-                            let _e841 = phi_1553_;
-                            let _e843 = ((_e822 * 382.5f) + 0.5f);
-                            let _e848 = select(select(u32(_e843), 0u, (_e843 < 0f)), 4294967295u, (_e843 > 4294967000f));
-                            let _e852 = (f32(select(_e848, 255u, (255u < _e848))) * 0.003921569f);
-                            let _e859 = ((_e841.x * 0.5f) + 0.5f);
-                            let _e860 = ((_e841.y * 0.5f) + 0.5f);
-                            let _e861 = ((_e841.z * -0.5f) + 0.5f);
-                            let _e867 = ((select(0f, select(1f, _e859, (_e859 < 1f)), (_e859 > 0f)) * 255f) + 0.5f);
-                            let _e878 = ((select(0f, select(1f, _e860, (_e860 < 1f)), (_e860 > 0f)) * 255f) + 0.5f);
-                            let _e892 = ((select(0f, select(1f, _e861, (_e861 < 1f)), (_e861 > 0f)) * 255f) + 0.5f);
-                            let _e906 = ((select(0f, select(1f, _e852, (_e852 < 1f)), (_e852 > 0f)) * 255f) + 0.5f);
-                            phi_1603_ = type_22((((select(select(u32(_e867), 0u, (_e867 < 0f)), 4294967295u, (_e867 > 4294967000f)) | (select(select(u32(_e878), 0u, (_e878 < 0f)), 4294967295u, (_e878 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e892), 0u, (_e892 < 0f)), 4294967295u, (_e892 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e906), 0u, (_e906 < 0f)), 4294967295u, (_e906 > 4294967000f)) << bitcast<u32>(24i))), _e852, _e82);
-                            phi_1604_ = type_22();
-                        } else {
-                            let _e921 = ((select(0f, select(1f, _e819, (_e819 < 1f)), (_e819 > 0f)) * 255f) + 0.5f);
-                            let _e932 = ((select(0f, select(1f, _e820, (_e820 < 1f)), (_e820 > 0f)) * 255f) + 0.5f);
-                            let _e946 = ((select(0f, select(1f, _e821, (_e821 < 1f)), (_e821 > 0f)) * 255f) + 0.5f);
-                            let _e960 = ((select(0f, select(1f, _e822, (_e822 < 1f)), (_e822 > 0f)) * 255f) + 0.5f);
-                            phi_1603_ = type_22();
-                            phi_1604_ = type_22((((select(select(u32(_e921), 0u, (_e921 < 0f)), 4294967295u, (_e921 > 4294967000f)) | (select(select(u32(_e932), 0u, (_e932 < 0f)), 4294967295u, (_e932 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e946), 0u, (_e946 < 0f)), 4294967295u, (_e946 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e960), 0u, (_e960 < 0f)), 4294967295u, (_e960 > 4294967000f)) << bitcast<u32>(24i))), 0f, _e82);
-                        }
-                        let _e971 = phi_1603_;
-                        let _e973 = phi_1604_;
-                        phi_1606_ = _e973;
-                        phi_1607_ = _e971;
-                        phi_1608_ = select(true, false, _e82);
-                    }
-                    let _e976 = phi_1606_;
-                    let _e978 = phi_1607_;
-                    let _e980 = phi_1608_;
-                    if _e980 {
-                        phi_1612_ = _e976;
-                    } else {
-                        phi_1612_ = _e978;
-                    }
-                    let _e982 = phi_1612_;
-                    let _e984 = ((_e44.y * _e58) + _e44.x);
-                    if (_e984 < arrayLength((&terms_out.member))) {
-                    } else {
-                        break;
-                    }
-                    terms_out.member[_e984] = _e982.member;
-                    if _e982.member_2 {
-                        if (_e984 < arrayLength((&ao.member))) {
-                        } else {
-                            break;
-                        }
-                        ao.member[_e984] = _e982.member_1;
-                    }
+                    phi_173_ = select(0.24000001f, 1.2f, _e77);
                 }
+                let _e85 = phi_173_;
+                let _e86 = bitcast<i32>(_e43.x);
+                let _e87 = (_e86 + -1i);
+                let _e89 = select(0i, _e87, (0i < _e87));
+                let _e91 = (bitcast<i32>(_e53) - 1i);
+                let _e94 = bitcast<u32>(select(_e89, _e91, (_e91 < _e89)));
+                let _e95 = bitcast<i32>(_e43.y);
+                let _e97 = select(0i, _e95, (0i < _e95));
+                let _e99 = (bitcast<i32>(_e63) - 1i);
+                let _e103 = (_e86 + 1i);
+                let _e105 = select(0i, _e103, (0i < _e103));
+                let _e108 = bitcast<u32>(select(_e105, _e91, (_e91 < _e105)));
+                let _e110 = select(0i, _e86, (0i < _e86));
+                let _e113 = bitcast<u32>(select(_e110, _e91, (_e91 < _e110)));
+                let _e114 = (_e95 + -1i);
+                let _e116 = select(0i, _e114, (0i < _e114));
+                let _e120 = (_e95 + 1i);
+                let _e122 = select(0i, _e120, (0i < _e120));
+                let _e126 = (bitcast<u32>(select(_e97, _e99, (_e99 < _e97))) * _e53);
+                let _e127 = (_e126 + _e94);
+                let _e130 = edges.member[_e127];
+                let _e144 = (_e126 + _e108);
+                let _e147 = edges.member[_e144];
+                let _e161 = (bitcast<u32>(select(_e116, _e99, (_e99 < _e116))) * _e53);
+                let _e162 = (_e161 + _e113);
+                let _e165 = edges.member[_e162];
+                let _e179 = (bitcast<u32>(select(_e122, _e99, (_e99 < _e122))) * _e53);
+                let _e180 = (_e179 + _e113);
+                let _e183 = edges.member[_e180];
+                let _e200 = ((_e43.y * _e53) + _e43.x);
+                let _e203 = edges.member[_e200];
+                let _e222 = ((f32(((_e203 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f) * (f32(((_e130 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f));
+                let _e223 = ((f32(((_e203 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f) * (f32(((_e147 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f));
+                let _e224 = ((f32(((_e203 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f) * (f32((_e165 & 3u)) * 0.33333334f));
+                let _e225 = ((f32((_e203 & 3u)) * 0.33333334f) * (f32(((_e183 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f));
+                let _e229 = (1.5f - (((_e222 + _e223) + _e224) + _e225));
+                let _e234 = (select(0f, select(1f, _e229, (_e229 < 1f)), (_e229 > 0f)) * 0.33333334f);
+                let _e235 = (_e222 + _e234);
+                let _e239 = select(0f, select(1f, _e235, (_e235 < 1f)), (_e235 > 0f));
+                let _e240 = (_e223 + _e234);
+                let _e244 = select(0f, select(1f, _e240, (_e240 < 1f)), (_e240 > 0f));
+                let _e245 = (_e224 + _e234);
+                let _e249 = select(0f, select(1f, _e245, (_e245 < 1f)), (_e245 > 0f));
+                let _e250 = (_e225 + _e234);
+                let _e254 = select(0f, select(1f, _e250, (_e250 < 1f)), (_e250 > 0f));
+                let _e258 = (((_e239 * (f32(((_e130 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f)) + (_e249 * (f32(((_e165 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f))) * 0.425f);
+                let _e262 = (((_e249 * (f32(((_e165 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f)) + (_e244 * (f32(((_e147 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f))) * 0.425f);
+                let _e266 = (((_e254 * (f32(((_e183 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f)) + (_e239 * (f32((_e130 & 3u)) * 0.33333334f))) * 0.425f);
+                let _e270 = (((_e244 * (f32((_e147 & 3u)) * 0.33333334f)) + (_e254 * (f32(((_e183 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f))) * 0.425f);
+                let _e281 = terms_in.member[_e200];
+                let _e287 = terms_in.member[_e127];
+                let _e294 = terms_in.member[_e144];
+                let _e301 = terms_in.member[_e162];
+                let _e308 = terms_in.member[_e180];
+                let _e316 = terms_in.member[(_e161 + _e94)];
+                let _e324 = terms_in.member[(_e161 + _e108)];
+                let _e332 = terms_in.member[(_e179 + _e94)];
+                let _e340 = terms_in.member[(_e179 + _e108)];
+                let _e345 = (((((((((((f32(_e281) * 0.003921569f) * _e85) + ((f32(_e287) * 0.003921569f) * _e239)) + ((f32(_e294) * 0.003921569f) * _e244)) + ((f32(_e301) * 0.003921569f) * _e249)) + ((f32(_e308) * 0.003921569f) * _e254)) + ((f32(_e316) * 0.003921569f) * _e258)) + ((f32(_e324) * 0.003921569f) * _e262)) + ((f32(_e332) * 0.003921569f) * _e266)) + ((f32(_e340) * 0.003921569f) * _e270)) / ((((((((_e85 + _e239) + _e244) + _e249) + _e254) + _e258) + _e262) + _e266) + _e270));
+                if _e77 {
+                    phi_747_ = ((_e345 * 382.5f) + 0.5f);
+                } else {
+                    phi_747_ = ((_e345 * 255f) + 0.5f);
+                }
+                let _e351 = phi_747_;
+                if (_e351 > 0f) {
+                    let _e357 = select(select(u32(_e351), 0u, (_e351 < 0f)), 4294967295u, (_e351 > 4294967000f));
+                    phi_765_ = select(_e357, 255u, (255u < _e357));
+                } else {
+                    phi_765_ = 0u;
+                }
+                let _e361 = phi_765_;
+                phi_1604_ = type_22(_e361, (f32(_e361) * 0.003921569f), _e77);
+                phi_1605_ = type_22();
+                phi_1606_ = true;
+            } else {
+                if (_e74 == 0u) {
+                    phi_810_ = 10000f;
+                } else {
+                    phi_810_ = select(0.24000001f, 1.2f, _e77);
+                }
+                let _e368 = phi_810_;
+                let _e369 = bitcast<i32>(_e43.x);
+                let _e370 = (_e369 + -1i);
+                let _e372 = select(0i, _e370, (0i < _e370));
+                let _e374 = (bitcast<i32>(_e53) - 1i);
+                let _e377 = bitcast<u32>(select(_e372, _e374, (_e374 < _e372)));
+                let _e378 = bitcast<i32>(_e43.y);
+                let _e380 = select(0i, _e378, (0i < _e378));
+                let _e382 = (bitcast<i32>(_e63) - 1i);
+                let _e386 = (_e369 + 1i);
+                let _e388 = select(0i, _e386, (0i < _e386));
+                let _e391 = bitcast<u32>(select(_e388, _e374, (_e374 < _e388)));
+                let _e393 = select(0i, _e369, (0i < _e369));
+                let _e396 = bitcast<u32>(select(_e393, _e374, (_e374 < _e393)));
+                let _e397 = (_e378 + -1i);
+                let _e399 = select(0i, _e397, (0i < _e397));
+                let _e403 = (_e378 + 1i);
+                let _e405 = select(0i, _e403, (0i < _e403));
+                let _e409 = (bitcast<u32>(select(_e380, _e382, (_e382 < _e380))) * _e53);
+                let _e410 = (_e409 + _e377);
+                let _e413 = edges.member[_e410];
+                let _e427 = (_e409 + _e391);
+                let _e430 = edges.member[_e427];
+                let _e444 = (bitcast<u32>(select(_e399, _e382, (_e382 < _e399))) * _e53);
+                let _e445 = (_e444 + _e396);
+                let _e448 = edges.member[_e445];
+                let _e462 = (bitcast<u32>(select(_e405, _e382, (_e382 < _e405))) * _e53);
+                let _e463 = (_e462 + _e396);
+                let _e466 = edges.member[_e463];
+                let _e483 = ((_e43.y * _e53) + _e43.x);
+                let _e486 = edges.member[_e483];
+                let _e505 = ((f32(((_e486 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f) * (f32(((_e413 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f));
+                let _e506 = ((f32(((_e486 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f) * (f32(((_e430 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f));
+                let _e507 = ((f32(((_e486 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f) * (f32((_e448 & 3u)) * 0.33333334f));
+                let _e508 = ((f32((_e486 & 3u)) * 0.33333334f) * (f32(((_e466 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f));
+                let _e512 = (1.5f - (((_e505 + _e506) + _e507) + _e508));
+                let _e517 = (select(0f, select(1f, _e512, (_e512 < 1f)), (_e512 > 0f)) * 0.33333334f);
+                let _e518 = (_e505 + _e517);
+                let _e522 = select(0f, select(1f, _e518, (_e518 < 1f)), (_e518 > 0f));
+                let _e523 = (_e506 + _e517);
+                let _e527 = select(0f, select(1f, _e523, (_e523 < 1f)), (_e523 > 0f));
+                let _e528 = (_e507 + _e517);
+                let _e532 = select(0f, select(1f, _e528, (_e528 < 1f)), (_e528 > 0f));
+                let _e533 = (_e508 + _e517);
+                let _e537 = select(0f, select(1f, _e533, (_e533 < 1f)), (_e533 > 0f));
+                let _e541 = (((_e522 * (f32(((_e413 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f)) + (_e532 * (f32(((_e448 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f))) * 0.425f);
+                let _e545 = (((_e532 * (f32(((_e448 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f)) + (_e527 * (f32(((_e430 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f))) * 0.425f);
+                let _e549 = (((_e537 * (f32(((_e466 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f)) + (_e522 * (f32((_e413 & 3u)) * 0.33333334f))) * 0.425f);
+                let _e553 = (((_e527 * (f32((_e430 & 3u)) * 0.33333334f)) + (_e537 * (f32(((_e466 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f))) * 0.425f);
+                let _e561 = ((((((((_e368 + _e522) + _e527) + _e532) + _e537) + _e541) + _e545) + _e549) + _e553);
+                let _e564 = terms_in.member[_e483];
+                let _e588 = terms_in.member[_e410];
+                let _e616 = terms_in.member[_e427];
+                let _e644 = terms_in.member[_e445];
+                let _e672 = terms_in.member[_e463];
+                let _e701 = terms_in.member[(_e444 + _e377)];
+                let _e730 = terms_in.member[(_e444 + _e391)];
+                let _e759 = terms_in.member[(_e462 + _e377)];
+                let _e788 = terms_in.member[(_e462 + _e391)];
+                let _e814 = (((((((((((f32((_e564 & 255u)) * 0.003921569f) * _e368) + ((f32((_e588 & 255u)) * 0.003921569f) * _e522)) + ((f32((_e616 & 255u)) * 0.003921569f) * _e527)) + ((f32((_e644 & 255u)) * 0.003921569f) * _e532)) + ((f32((_e672 & 255u)) * 0.003921569f) * _e537)) + ((f32((_e701 & 255u)) * 0.003921569f) * _e541)) + ((f32((_e730 & 255u)) * 0.003921569f) * _e545)) + ((f32((_e759 & 255u)) * 0.003921569f) * _e549)) + ((f32((_e788 & 255u)) * 0.003921569f) * _e553)) / _e561);
+                let _e815 = (((((((((((f32(((_e564 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e368) + ((f32(((_e588 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e522)) + ((f32(((_e616 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e527)) + ((f32(((_e644 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e532)) + ((f32(((_e672 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e537)) + ((f32(((_e701 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e541)) + ((f32(((_e730 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e545)) + ((f32(((_e759 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e549)) + ((f32(((_e788 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e553)) / _e561);
+                let _e816 = (((((((((((f32(((_e564 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e368) + ((f32(((_e588 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e522)) + ((f32(((_e616 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e527)) + ((f32(((_e644 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e532)) + ((f32(((_e672 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e537)) + ((f32(((_e701 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e541)) + ((f32(((_e730 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e545)) + ((f32(((_e759 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e549)) + ((f32(((_e788 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e553)) / _e561);
+                let _e817 = (((((((((((f32((_e564 >> bitcast<u32>(24i))) * 0.003921569f) * _e368) + ((f32((_e588 >> bitcast<u32>(24i))) * 0.003921569f) * _e522)) + ((f32((_e616 >> bitcast<u32>(24i))) * 0.003921569f) * _e527)) + ((f32((_e644 >> bitcast<u32>(24i))) * 0.003921569f) * _e532)) + ((f32((_e672 >> bitcast<u32>(24i))) * 0.003921569f) * _e537)) + ((f32((_e701 >> bitcast<u32>(24i))) * 0.003921569f) * _e541)) + ((f32((_e730 >> bitcast<u32>(24i))) * 0.003921569f) * _e545)) + ((f32((_e759 >> bitcast<u32>(24i))) * 0.003921569f) * _e549)) + ((f32((_e788 >> bitcast<u32>(24i))) * 0.003921569f) * _e553)) / _e561);
+                if _e77 {
+                    let _e821 = ((_e814 * 2f) - 1f);
+                    let _e822 = ((_e815 * 2f) - 1f);
+                    let _e823 = ((_e816 * 2f) - 1f);
+                    let _e829 = sqrt((((_e821 * _e821) + (_e822 * _e822)) + (_e823 * _e823)));
+                    if (_e829 > 0f) {
+                        phi_1551_ = vec3<f32>((_e821 / _e829), (_e822 / _e829), (_e823 / _e829));
+                    } else {
+                        phi_1551_ = vec3<f32>(0f, 0f, -1f);
+                    }
+                    let _e836 = phi_1551_;
+                    let _e838 = ((_e817 * 382.5f) + 0.5f);
+                    let _e843 = select(select(u32(_e838), 0u, (_e838 < 0f)), 4294967295u, (_e838 > 4294967000f));
+                    let _e847 = (f32(select(_e843, 255u, (255u < _e843))) * 0.003921569f);
+                    let _e854 = ((_e836.x * 0.5f) + 0.5f);
+                    let _e855 = ((_e836.y * 0.5f) + 0.5f);
+                    let _e856 = ((_e836.z * -0.5f) + 0.5f);
+                    let _e862 = ((select(0f, select(1f, _e854, (_e854 < 1f)), (_e854 > 0f)) * 255f) + 0.5f);
+                    let _e873 = ((select(0f, select(1f, _e855, (_e855 < 1f)), (_e855 > 0f)) * 255f) + 0.5f);
+                    let _e887 = ((select(0f, select(1f, _e856, (_e856 < 1f)), (_e856 > 0f)) * 255f) + 0.5f);
+                    let _e901 = ((select(0f, select(1f, _e847, (_e847 < 1f)), (_e847 > 0f)) * 255f) + 0.5f);
+                    phi_1601_ = type_22((((select(select(u32(_e862), 0u, (_e862 < 0f)), 4294967295u, (_e862 > 4294967000f)) | (select(select(u32(_e873), 0u, (_e873 < 0f)), 4294967295u, (_e873 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e887), 0u, (_e887 < 0f)), 4294967295u, (_e887 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e901), 0u, (_e901 < 0f)), 4294967295u, (_e901 > 4294967000f)) << bitcast<u32>(24i))), _e847, _e77);
+                    phi_1602_ = type_22();
+                } else {
+                    let _e916 = ((select(0f, select(1f, _e814, (_e814 < 1f)), (_e814 > 0f)) * 255f) + 0.5f);
+                    let _e927 = ((select(0f, select(1f, _e815, (_e815 < 1f)), (_e815 > 0f)) * 255f) + 0.5f);
+                    let _e941 = ((select(0f, select(1f, _e816, (_e816 < 1f)), (_e816 > 0f)) * 255f) + 0.5f);
+                    let _e955 = ((select(0f, select(1f, _e817, (_e817 < 1f)), (_e817 > 0f)) * 255f) + 0.5f);
+                    phi_1601_ = type_22();
+                    phi_1602_ = type_22((((select(select(u32(_e916), 0u, (_e916 < 0f)), 4294967295u, (_e916 > 4294967000f)) | (select(select(u32(_e927), 0u, (_e927 < 0f)), 4294967295u, (_e927 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e941), 0u, (_e941 < 0f)), 4294967295u, (_e941 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e955), 0u, (_e955 < 0f)), 4294967295u, (_e955 > 4294967000f)) << bitcast<u32>(24i))), 0f, _e77);
+                }
+                let _e966 = phi_1601_;
+                let _e968 = phi_1602_;
+                phi_1604_ = _e968;
+                phi_1605_ = _e966;
+                phi_1606_ = select(true, false, _e77);
             }
-            break;
+            let _e971 = phi_1604_;
+            let _e973 = phi_1605_;
+            let _e975 = phi_1606_;
+            if _e975 {
+                phi_1610_ = _e971;
+            } else {
+                phi_1610_ = _e973;
+            }
+            let _e977 = phi_1610_;
+            let _e979 = ((_e43.y * _e53) + _e43.x);
+            terms_out.member[_e979] = _e977.member;
+            if _e977.member_2 {
+                ao.member[_e979] = _e977.member_1;
+            }
         }
     }
     return;

@@ -46,202 +46,192 @@ var<uniform> params: type_19;
 var<storage, read_write> normals: type_10;
 
 fn function_() {
-    var phi_1004_: bool;
-    var phi_1019_: bool;
-    var phi_1034_: bool;
-    var phi_1049_: bool;
-    var phi_636_: vec3<f32>;
-    var phi_654_: vec3<f32>;
-    var phi_672_: vec3<f32>;
-    var phi_690_: vec3<f32>;
-    var phi_858_: vec3<f32>;
-    var phi_892_: vec2<f32>;
-    var phi_908_: f32;
-    var phi_943_: f32;
+    var phi_994_: bool;
+    var phi_1009_: bool;
+    var phi_1024_: bool;
+    var phi_1039_: bool;
+    var phi_637_: vec3<f32>;
+    var phi_655_: vec3<f32>;
+    var phi_673_: vec3<f32>;
+    var phi_691_: vec3<f32>;
+    var phi_859_: vec3<f32>;
+    var phi_893_: vec2<f32>;
+    var phi_909_: f32;
+    var phi_944_: f32;
 
-    switch bitcast<i32>(0u) {
-        default: {
-            let _e32 = id_1;
-            let _e39 = params.member.member.member[0u];
-            let _e44 = select(select(u32(_e39), 0u, (_e39 < 0f)), 4294967295u, (_e39 > 4294967000f));
-            let _e49 = params.member.member.member[1u];
-            let _e54 = select(select(u32(_e49), 0u, (_e49 < 0f)), 4294967295u, (_e49 > 4294967000f));
-            if (_e32.x >= _e44) {
+    let _e31 = id_1;
+    let _e36 = params.member.member.member[0u];
+    let _e41 = select(select(u32(_e36), 0u, (_e36 < 0f)), 4294967295u, (_e36 > 4294967000f));
+    let _e46 = params.member.member.member[1u];
+    let _e51 = select(select(u32(_e46), 0u, (_e46 < 0f)), 4294967295u, (_e46 > 4294967000f));
+    if (_e31.x >= _e41) {
+    } else {
+        if (_e31.y >= _e51) {
+        } else {
+            let _e58 = bitcast<i32>(_e31.x);
+            let _e60 = select(0i, _e58, (0i < _e58));
+            let _e62 = (bitcast<i32>(_e41) - 1i);
+            let _e65 = bitcast<u32>(select(_e60, _e62, (_e62 < _e60)));
+            let _e66 = bitcast<i32>(_e31.y);
+            let _e68 = select(0i, _e66, (0i < _e66));
+            let _e70 = (bitcast<i32>(_e51) - 1i);
+            let _e73 = bitcast<u32>(select(_e68, _e70, (_e70 < _e68)));
+            let _e74 = (_e73 * _e41);
+            let _e78 = depth.member[(_e74 + _e65)];
+            let _e82 = params.member.member.member_3;
+            let _e86 = select(_e82, _e78, select(false, (_e78 < _e82), (_e78 > 0f)));
+            let _e99 = params.member.member.member_1[0u];
+            let _e100 = (((((f32(_e65) + 0.5f) / _e36) * 2f) - 1f) * _e99);
+            let _e101 = (_e100 * _e86);
+            let _e108 = params.member.member.member_1[1u];
+            let _e109 = (((((f32(_e73) + 0.5f) / _e46) * -2f) + 1f) * _e108);
+            let _e110 = (_e109 * _e86);
+            let _e111 = (_e58 + -1i);
+            let _e113 = select(0i, _e111, (0i < _e111));
+            let _e116 = bitcast<u32>(select(_e113, _e62, (_e62 < _e113)));
+            let _e120 = depth.member[(_e74 + _e116)];
+            let _e124 = select(_e82, _e120, select(false, (_e120 < _e82), (_e120 > 0f)));
+            let _e133 = (_e58 + 1i);
+            let _e135 = select(0i, _e133, (0i < _e133));
+            let _e138 = bitcast<u32>(select(_e135, _e62, (_e62 < _e135)));
+            let _e142 = depth.member[(_e74 + _e138)];
+            let _e146 = select(_e82, _e142, select(false, (_e142 < _e82), (_e142 > 0f)));
+            let _e155 = (_e66 + -1i);
+            let _e157 = select(0i, _e155, (0i < _e155));
+            let _e160 = bitcast<u32>(select(_e157, _e70, (_e70 < _e157)));
+            let _e165 = depth.member[((_e160 * _e41) + _e65)];
+            let _e169 = select(_e82, _e165, select(false, (_e165 < _e82), (_e165 > 0f)));
+            let _e178 = (_e66 + 1i);
+            let _e180 = select(0i, _e178, (0i < _e178));
+            let _e183 = bitcast<u32>(select(_e180, _e70, (_e70 < _e180)));
+            let _e188 = depth.member[((_e183 * _e41) + _e65)];
+            let _e192 = select(_e82, _e188, select(false, (_e188 < _e82), (_e188 > 0f)));
+            let _e201 = (_e124 - _e86);
+            let _e202 = (_e146 - _e86);
+            let _e203 = (_e169 - _e86);
+            let _e204 = (_e192 - _e86);
+            let _e206 = ((_e202 - _e201) * 0.5f);
+            let _e208 = ((_e204 - _e203) * 0.5f);
+            let _e209 = (_e86 * 0.011f);
+            let _e211 = abs(_e201);
+            let _e212 = abs((_e201 + _e206));
+            if (_e211 != _e211) {
+                phi_994_ = true;
             } else {
-                if (_e32.y >= _e54) {
-                } else {
-                    let _e59 = bitcast<i32>(_e32.x);
-                    let _e61 = select(0i, _e59, (0i < _e59));
-                    let _e63 = (bitcast<i32>(_e44) - 1i);
-                    let _e66 = bitcast<u32>(select(_e61, _e63, (_e63 < _e61)));
-                    let _e67 = bitcast<i32>(_e32.y);
-                    let _e69 = select(0i, _e67, (0i < _e67));
-                    let _e71 = (bitcast<i32>(_e54) - 1i);
-                    let _e74 = bitcast<u32>(select(_e69, _e71, (_e71 < _e69)));
-                    let _e75 = (_e74 * _e44);
-                    let _e79 = depth.member[(_e75 + _e66)];
-                    let _e83 = params.member.member.member_3;
-                    let _e87 = select(_e83, _e79, select(false, (_e79 < _e83), (_e79 > 0f)));
-                    let _e100 = params.member.member.member_1[0u];
-                    let _e101 = (((((f32(_e66) + 0.5f) / _e39) * 2f) - 1f) * _e100);
-                    let _e102 = (_e101 * _e87);
-                    let _e109 = params.member.member.member_1[1u];
-                    let _e110 = (((((f32(_e74) + 0.5f) / _e49) * -2f) + 1f) * _e109);
-                    let _e111 = (_e110 * _e87);
-                    let _e112 = (_e59 + -1i);
-                    let _e114 = select(0i, _e112, (0i < _e112));
-                    let _e117 = bitcast<u32>(select(_e114, _e63, (_e63 < _e114)));
-                    let _e121 = depth.member[(_e75 + _e117)];
-                    let _e125 = select(_e83, _e121, select(false, (_e121 < _e83), (_e121 > 0f)));
-                    let _e134 = (_e59 + 1i);
-                    let _e136 = select(0i, _e134, (0i < _e134));
-                    let _e139 = bitcast<u32>(select(_e136, _e63, (_e63 < _e136)));
-                    let _e143 = depth.member[(_e75 + _e139)];
-                    let _e147 = select(_e83, _e143, select(false, (_e143 < _e83), (_e143 > 0f)));
-                    let _e156 = (_e67 + -1i);
-                    let _e158 = select(0i, _e156, (0i < _e156));
-                    let _e161 = bitcast<u32>(select(_e158, _e71, (_e71 < _e158)));
-                    let _e166 = depth.member[((_e161 * _e44) + _e66)];
-                    let _e170 = select(_e83, _e166, select(false, (_e166 < _e83), (_e166 > 0f)));
-                    let _e179 = (_e67 + 1i);
-                    let _e181 = select(0i, _e179, (0i < _e179));
-                    let _e184 = bitcast<u32>(select(_e181, _e71, (_e71 < _e181)));
-                    let _e189 = depth.member[((_e184 * _e44) + _e66)];
-                    let _e193 = select(_e83, _e189, select(false, (_e189 < _e83), (_e189 > 0f)));
-                    let _e202 = (_e125 - _e87);
-                    let _e203 = (_e147 - _e87);
-                    let _e204 = (_e170 - _e87);
-                    let _e205 = (_e193 - _e87);
-                    let _e207 = ((_e203 - _e202) * 0.5f);
-                    let _e209 = ((_e205 - _e204) * 0.5f);
-                    let _e210 = (_e87 * 0.011f);
-                    let _e212 = abs(_e202);
-                    let _e213 = abs((_e202 + _e207));
-                    if (_e212 != _e212) {
-                        phi_1004_ = true;
-                    } else {
-                        phi_1004_ = (_e213 <= _e212);
-                    }
-                    let _e217 = phi_1004_;
-                    let _e220 = (1.25f - (select(_e212, _e213, _e217) / _e210));
-                    let _e224 = select(0f, select(1f, _e220, (_e220 < 1f)), (_e220 > 0f));
-                    let _e226 = abs(_e203);
-                    let _e227 = abs((_e203 - _e207));
-                    if (_e226 != _e226) {
-                        phi_1019_ = true;
-                    } else {
-                        phi_1019_ = (_e227 <= _e226);
-                    }
-                    let _e231 = phi_1019_;
-                    let _e234 = (1.25f - (select(_e226, _e227, _e231) / _e210));
-                    let _e238 = select(0f, select(1f, _e234, (_e234 < 1f)), (_e234 > 0f));
-                    let _e240 = abs(_e204);
-                    let _e241 = abs((_e204 + _e209));
-                    if (_e240 != _e240) {
-                        phi_1034_ = true;
-                    } else {
-                        phi_1034_ = (_e241 <= _e240);
-                    }
-                    let _e245 = phi_1034_;
-                    let _e248 = (1.25f - (select(_e240, _e241, _e245) / _e210));
-                    let _e252 = select(0f, select(1f, _e248, (_e248 < 1f)), (_e248 > 0f));
-                    let _e254 = abs(_e205);
-                    let _e255 = abs((_e205 - _e209));
-                    if (_e254 != _e254) {
-                        phi_1049_ = true;
-                    } else {
-                        phi_1049_ = (_e255 <= _e254);
-                    }
-                    let _e259 = phi_1049_;
-                    let _e262 = (1.25f - (select(_e254, _e255, _e259) / _e210));
-                    let _e266 = select(0f, select(1f, _e262, (_e262 < 1f)), (_e262 > 0f));
-                    let _e267 = (((((((f32(_e117) + 0.5f) / _e39) * 2f) - 1f) * _e100) * _e125) - _e102);
-                    let _e268 = ((_e110 * _e125) - _e111);
-                    let _e274 = sqrt((((_e267 * _e267) + (_e268 * _e268)) + (_e202 * _e202)));
-                    if (_e274 > 0f) {
-                        phi_636_ = vec3<f32>((_e267 / _e274), (_e268 / _e274), (_e202 / _e274));
-                    } else {
-                        phi_636_ = vec3<f32>(0f, 0f, 0f);
-                    }
-                    let _e281 = phi_636_;
-                    let _e282 = (((((((f32(_e139) + 0.5f) / _e39) * 2f) - 1f) * _e100) * _e147) - _e102);
-                    let _e283 = ((_e110 * _e147) - _e111);
-                    let _e289 = sqrt((((_e282 * _e282) + (_e283 * _e283)) + (_e203 * _e203)));
-                    if (_e289 > 0f) {
-                        phi_654_ = vec3<f32>((_e282 / _e289), (_e283 / _e289), (_e203 / _e289));
-                    } else {
-                        phi_654_ = vec3<f32>(0f, 0f, 0f);
-                    }
-                    let _e296 = phi_654_;
-                    let _e297 = ((_e101 * _e170) - _e102);
-                    let _e298 = (((((((f32(_e161) + 0.5f) / _e49) * -2f) + 1f) * _e109) * _e170) - _e111);
-                    let _e304 = sqrt((((_e297 * _e297) + (_e298 * _e298)) + (_e204 * _e204)));
-                    if (_e304 > 0f) {
-                        phi_672_ = vec3<f32>((_e297 / _e304), (_e298 / _e304), (_e204 / _e304));
-                    } else {
-                        phi_672_ = vec3<f32>(0f, 0f, 0f);
-                    }
-                    let _e311 = phi_672_;
-                    let _e312 = ((_e101 * _e193) - _e102);
-                    let _e313 = (((((((f32(_e184) + 0.5f) / _e49) * -2f) + 1f) * _e109) * _e193) - _e111);
-                    let _e319 = sqrt((((_e312 * _e312) + (_e313 * _e313)) + (_e205 * _e205)));
-                    if (_e319 > 0f) {
-                        phi_690_ = vec3<f32>((_e312 / _e319), (_e313 / _e319), (_e205 / _e319));
-                    } else {
-                        phi_690_ = vec3<f32>(0f, 0f, 0f);
-                    }
-                    let _e326 = phi_690_;
-                    let _e343 = ((_e224 * _e252) + 0.01f);
-                    let _e347 = select(0f, select(1f, _e343, (_e343 < 1f)), (_e343 > 0f));
-                    let _e364 = ((_e252 * _e238) + 0.01f);
-                    let _e368 = select(0f, select(1f, _e364, (_e364 < 1f)), (_e364 > 0f));
-                    let _e388 = ((_e238 * _e266) + 0.01f);
-                    let _e392 = select(0f, select(1f, _e388, (_e388 < 1f)), (_e388 > 0f));
-                    let _e409 = ((_e266 * _e224) + 0.01f);
-                    let _e413 = select(0f, select(1f, _e409, (_e409 < 1f)), (_e409 > 0f));
-                    let _e417 = ((((((_e281.y * _e311.z) - (_e311.y * _e281.z)) * _e347) + (((_e311.y * _e296.z) - (_e296.y * _e311.z)) * _e368)) + (((_e296.y * _e326.z) - (_e326.y * _e296.z)) * _e392)) + (((_e326.y * _e281.z) - (_e281.y * _e326.z)) * _e413));
-                    let _e418 = ((((((_e281.z * _e311.x) - (_e311.z * _e281.x)) * _e347) + (((_e311.z * _e296.x) - (_e296.z * _e311.x)) * _e368)) + (((_e296.z * _e326.x) - (_e326.z * _e296.x)) * _e392)) + (((_e326.z * _e281.x) - (_e281.z * _e326.x)) * _e413));
-                    let _e419 = ((((((_e281.x * _e311.y) - (_e311.x * _e281.y)) * _e347) + (((_e311.x * _e296.y) - (_e296.x * _e311.y)) * _e368)) + (((_e296.x * _e326.y) - (_e326.x * _e296.y)) * _e392)) + (((_e326.x * _e281.y) - (_e281.x * _e326.y)) * _e413));
-                    let _e425 = sqrt((((_e417 * _e417) + (_e418 * _e418)) + (_e419 * _e419)));
-                    if (_e425 > 0f) {
-                        phi_858_ = vec3<f32>((_e417 / _e425), (_e418 / _e425), (_e419 / _e425));
-                    } else {
-                        phi_858_ = vec3<f32>(0f, 0f, 0f);
-                    }
-                    let _e432 = phi_858_;
-                    let _e436 = -(_e432.z);
-                    let _e441 = ((abs(_e432.x) + abs(_e432.y)) + abs(_e436));
-                    let _e442 = (_e432.x / _e441);
-                    let _e443 = (_e432.y / _e441);
-                    if (_e436 < 0f) {
-                        phi_892_ = vec2<f32>(((1f - abs(_e443)) * select(1f, -1f, (_e442 < 0f))), ((1f - abs(_e442)) * select(1f, -1f, (_e443 < 0f))));
-                    } else {
-                        phi_892_ = vec2<f32>(_e442, _e443);
-                    }
-                    let _e458 = phi_892_;
-                    if (_e458.x != _e458.x) {
-                        phi_908_ = 0f;
-                    } else {
-                        phi_908_ = select(-1f, select(1f, _e458.x, (_e458.x < 1f)), (_e458.x > -1f));
-                    }
-                    let _e466 = phi_908_;
-                    let _e471 = ((_e466 * 127f) + (0.5f * select(1f, -1f, (_e466 < 0f))));
-                    if (_e458.y != _e458.y) {
-                        phi_943_ = 0f;
-                    } else {
-                        phi_943_ = select(-1f, select(1f, _e458.y, (_e458.y < 1f)), (_e458.y > -1f));
-                    }
-                    let _e488 = phi_943_;
-                    let _e493 = ((_e488 * 127f) + (0.5f * select(1f, -1f, (_e488 < 0f))));
-                    let _e507 = ((_e32.y * _e44) + _e32.x);
-                    if (_e507 < arrayLength((&normals.member))) {
-                    } else {
-                        break;
-                    }
-                    normals.member[_e507] = ((bitcast<u32>(select(0i, select(select(i32(_e471), i32(-2147483648), (_e471 < -2147483600f)), 2147483647i, (_e471 > 2147483500f)), (_e471 == _e471))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e493), i32(-2147483648), (_e493 < -2147483600f)), 2147483647i, (_e493 > 2147483500f)), (_e493 == _e493))) & 255u) << bitcast<u32>(8i)));
-                }
+                phi_994_ = (_e212 <= _e211);
             }
-            break;
+            let _e216 = phi_994_;
+            let _e219 = (1.25f - (select(_e211, _e212, _e216) / _e209));
+            let _e223 = select(0f, select(1f, _e219, (_e219 < 1f)), (_e219 > 0f));
+            let _e225 = abs(_e202);
+            let _e226 = abs((_e202 - _e206));
+            if (_e225 != _e225) {
+                phi_1009_ = true;
+            } else {
+                phi_1009_ = (_e226 <= _e225);
+            }
+            let _e230 = phi_1009_;
+            let _e233 = (1.25f - (select(_e225, _e226, _e230) / _e209));
+            let _e237 = select(0f, select(1f, _e233, (_e233 < 1f)), (_e233 > 0f));
+            let _e239 = abs(_e203);
+            let _e240 = abs((_e203 + _e208));
+            if (_e239 != _e239) {
+                phi_1024_ = true;
+            } else {
+                phi_1024_ = (_e240 <= _e239);
+            }
+            let _e244 = phi_1024_;
+            let _e247 = (1.25f - (select(_e239, _e240, _e244) / _e209));
+            let _e251 = select(0f, select(1f, _e247, (_e247 < 1f)), (_e247 > 0f));
+            let _e253 = abs(_e204);
+            let _e254 = abs((_e204 - _e208));
+            if (_e253 != _e253) {
+                phi_1039_ = true;
+            } else {
+                phi_1039_ = (_e254 <= _e253);
+            }
+            let _e258 = phi_1039_;
+            let _e261 = (1.25f - (select(_e253, _e254, _e258) / _e209));
+            let _e265 = select(0f, select(1f, _e261, (_e261 < 1f)), (_e261 > 0f));
+            let _e266 = (((((((f32(_e116) + 0.5f) / _e36) * 2f) - 1f) * _e99) * _e124) - _e101);
+            let _e267 = ((_e109 * _e124) - _e110);
+            let _e273 = sqrt((((_e266 * _e266) + (_e267 * _e267)) + (_e201 * _e201)));
+            if (_e273 > 0f) {
+                phi_637_ = vec3<f32>((_e266 / _e273), (_e267 / _e273), (_e201 / _e273));
+            } else {
+                phi_637_ = vec3<f32>(0f, 0f, 0f);
+            }
+            let _e280 = phi_637_;
+            let _e281 = (((((((f32(_e138) + 0.5f) / _e36) * 2f) - 1f) * _e99) * _e146) - _e101);
+            let _e282 = ((_e109 * _e146) - _e110);
+            let _e288 = sqrt((((_e281 * _e281) + (_e282 * _e282)) + (_e202 * _e202)));
+            if (_e288 > 0f) {
+                phi_655_ = vec3<f32>((_e281 / _e288), (_e282 / _e288), (_e202 / _e288));
+            } else {
+                phi_655_ = vec3<f32>(0f, 0f, 0f);
+            }
+            let _e295 = phi_655_;
+            let _e296 = ((_e100 * _e169) - _e101);
+            let _e297 = (((((((f32(_e160) + 0.5f) / _e46) * -2f) + 1f) * _e108) * _e169) - _e110);
+            let _e303 = sqrt((((_e296 * _e296) + (_e297 * _e297)) + (_e203 * _e203)));
+            if (_e303 > 0f) {
+                phi_673_ = vec3<f32>((_e296 / _e303), (_e297 / _e303), (_e203 / _e303));
+            } else {
+                phi_673_ = vec3<f32>(0f, 0f, 0f);
+            }
+            let _e310 = phi_673_;
+            let _e311 = ((_e100 * _e192) - _e101);
+            let _e312 = (((((((f32(_e183) + 0.5f) / _e46) * -2f) + 1f) * _e108) * _e192) - _e110);
+            let _e318 = sqrt((((_e311 * _e311) + (_e312 * _e312)) + (_e204 * _e204)));
+            if (_e318 > 0f) {
+                phi_691_ = vec3<f32>((_e311 / _e318), (_e312 / _e318), (_e204 / _e318));
+            } else {
+                phi_691_ = vec3<f32>(0f, 0f, 0f);
+            }
+            let _e325 = phi_691_;
+            let _e342 = ((_e223 * _e251) + 0.01f);
+            let _e346 = select(0f, select(1f, _e342, (_e342 < 1f)), (_e342 > 0f));
+            let _e363 = ((_e251 * _e237) + 0.01f);
+            let _e367 = select(0f, select(1f, _e363, (_e363 < 1f)), (_e363 > 0f));
+            let _e387 = ((_e237 * _e265) + 0.01f);
+            let _e391 = select(0f, select(1f, _e387, (_e387 < 1f)), (_e387 > 0f));
+            let _e408 = ((_e265 * _e223) + 0.01f);
+            let _e412 = select(0f, select(1f, _e408, (_e408 < 1f)), (_e408 > 0f));
+            let _e416 = ((((((_e280.y * _e310.z) - (_e310.y * _e280.z)) * _e346) + (((_e310.y * _e295.z) - (_e295.y * _e310.z)) * _e367)) + (((_e295.y * _e325.z) - (_e325.y * _e295.z)) * _e391)) + (((_e325.y * _e280.z) - (_e280.y * _e325.z)) * _e412));
+            let _e417 = ((((((_e280.z * _e310.x) - (_e310.z * _e280.x)) * _e346) + (((_e310.z * _e295.x) - (_e295.z * _e310.x)) * _e367)) + (((_e295.z * _e325.x) - (_e325.z * _e295.x)) * _e391)) + (((_e325.z * _e280.x) - (_e280.z * _e325.x)) * _e412));
+            let _e418 = ((((((_e280.x * _e310.y) - (_e310.x * _e280.y)) * _e346) + (((_e310.x * _e295.y) - (_e295.x * _e310.y)) * _e367)) + (((_e295.x * _e325.y) - (_e325.x * _e295.y)) * _e391)) + (((_e325.x * _e280.y) - (_e280.x * _e325.y)) * _e412));
+            let _e424 = sqrt((((_e416 * _e416) + (_e417 * _e417)) + (_e418 * _e418)));
+            if (_e424 > 0f) {
+                phi_859_ = vec3<f32>((_e416 / _e424), (_e417 / _e424), (_e418 / _e424));
+            } else {
+                phi_859_ = vec3<f32>(0f, 0f, 0f);
+            }
+            let _e431 = phi_859_;
+            let _e435 = -(_e431.z);
+            let _e440 = ((abs(_e431.x) + abs(_e431.y)) + abs(_e435));
+            let _e441 = (_e431.x / _e440);
+            let _e442 = (_e431.y / _e440);
+            if (_e435 < 0f) {
+                phi_893_ = vec2<f32>(((1f - abs(_e442)) * select(1f, -1f, (_e441 < 0f))), ((1f - abs(_e441)) * select(1f, -1f, (_e442 < 0f))));
+            } else {
+                phi_893_ = vec2<f32>(_e441, _e442);
+            }
+            let _e457 = phi_893_;
+            if (_e457.x != _e457.x) {
+                phi_909_ = 0f;
+            } else {
+                phi_909_ = select(-1f, select(1f, _e457.x, (_e457.x < 1f)), (_e457.x > -1f));
+            }
+            let _e465 = phi_909_;
+            let _e470 = ((_e465 * 127f) + (0.5f * select(1f, -1f, (_e465 < 0f))));
+            if (_e457.y != _e457.y) {
+                phi_944_ = 0f;
+            } else {
+                phi_944_ = select(-1f, select(1f, _e457.y, (_e457.y < 1f)), (_e457.y > -1f));
+            }
+            let _e487 = phi_944_;
+            let _e492 = ((_e487 * 127f) + (0.5f * select(1f, -1f, (_e487 < 0f))));
+            normals.member[((_e31.y * _e41) + _e31.x)] = ((bitcast<u32>(select(0i, select(select(i32(_e470), i32(-2147483648), (_e470 < -2147483600f)), 2147483647i, (_e470 > 2147483500f)), (_e470 == _e470))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e492), i32(-2147483648), (_e492 < -2147483600f)), 2147483647i, (_e492 > 2147483500f)), (_e492 == _e492))) & 255u) << bitcast<u32>(8i)));
         }
     }
     return;

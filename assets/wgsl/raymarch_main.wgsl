@@ -77,707 +77,685 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
+    var phi_1633_: bool;
     var phi_1648_: bool;
     var phi_1663_: bool;
     var phi_1678_: bool;
-    var phi_1693_: bool;
-    var phi_1724_: f32;
-    var phi_1728_: f32;
-    var phi_1729_: bool;
-    var phi_1751_: u32;
-    var phi_1778_: f32;
-    var phi_1782_: f32;
-    var phi_1783_: bool;
-    var phi_1805_: u32;
-    var phi_1832_: f32;
-    var phi_1836_: f32;
-    var phi_1837_: bool;
-    var phi_1859_: u32;
-    var phi_1886_: f32;
-    var phi_1890_: f32;
-    var phi_1891_: bool;
-    var phi_1913_: u32;
+    var phi_1709_: f32;
+    var phi_1713_: f32;
+    var phi_1714_: bool;
+    var phi_1736_: u32;
+    var phi_1763_: f32;
+    var phi_1767_: f32;
+    var phi_1768_: bool;
+    var phi_1790_: u32;
+    var phi_1817_: f32;
+    var phi_1821_: f32;
+    var phi_1822_: bool;
+    var phi_1844_: u32;
+    var phi_1871_: f32;
+    var phi_1875_: f32;
+    var phi_1876_: bool;
+    var phi_1898_: u32;
+    var phi_1909_: bool;
     var phi_1924_: bool;
-    var phi_1939_: bool;
-    var phi_783_: vec2<f32>;
-    var phi_814_: vec3<f32>;
+    var phi_782_: vec2<f32>;
+    var phi_813_: vec3<f32>;
+    var phi_819_: u32;
+    var phi_822_: u32;
+    var phi_824_: u32;
+    var phi_826_: u32;
+    var phi_855_: u32;
+    var phi_856_: u32;
+    var phi_857_: u32;
+    var phi_858_: u32;
     var phi_820_: u32;
     var phi_823_: u32;
     var phi_825_: u32;
     var phi_827_: u32;
-    var phi_856_: u32;
-    var phi_857_: u32;
-    var phi_858_: u32;
-    var phi_859_: u32;
-    var phi_821_: u32;
-    var phi_824_: u32;
-    var phi_826_: u32;
-    var phi_828_: u32;
     var local: u32;
-    var phi_890_: type_28;
-    var phi_2114_: bool;
-    var phi_925_: u32;
-    var phi_928_: f32;
-    var phi_1954_: bool;
+    var phi_889_: type_28;
+    var phi_924_: u32;
+    var phi_927_: f32;
+    var phi_1939_: bool;
+    var phi_1073_: u32;
+    var phi_1076_: f32;
+    var phi_1078_: bool;
+    var phi_1080_: bool;
+    var phi_1082_: f32;
+    var phi_1084_: f32;
+    var phi_1188_: u32;
+    var phi_1209_: u32;
+    var phi_1298_: u32;
+    var phi_1329_: u32;
+    var phi_2022_: bool;
+    var phi_2037_: bool;
+    var phi_1998_: vec2<f32>;
+    var phi_1464_: u32;
+    var phi_1466_: u32;
+    var phi_1467_: f32;
+    var phi_1468_: bool;
+    var phi_1469_: bool;
+    var phi_1470_: f32;
+    var phi_1473_: bool;
+    var phi_1474_: bool;
     var phi_1074_: u32;
     var phi_1077_: f32;
     var phi_1079_: bool;
     var phi_1081_: bool;
     var phi_1083_: f32;
     var phi_1085_: f32;
-    var phi_1189_: u32;
-    var phi_1210_: u32;
-    var phi_1299_: u32;
-    var phi_1330_: u32;
-    var phi_2037_: bool;
-    var phi_2052_: bool;
-    var phi_2013_: vec2<f32>;
-    var phi_1470_: u32;
-    var phi_1472_: u32;
-    var phi_1473_: f32;
-    var phi_1474_: bool;
-    var phi_1475_: bool;
-    var phi_1476_: f32;
-    var phi_1479_: bool;
+    var phi_1478_: bool;
     var phi_1480_: bool;
-    var phi_1075_: u32;
-    var phi_1078_: f32;
-    var phi_1080_: bool;
-    var phi_1082_: bool;
-    var phi_1084_: f32;
-    var phi_1086_: f32;
-    var phi_1484_: bool;
-    var phi_1486_: bool;
-    var phi_1487_: bool;
-    var phi_2066_: bool;
-    var phi_1636_: bool;
-    var phi_1635_: bool;
-    var phi_1634_: bool;
-    var phi_1633_: bool;
-    var phi_1631_: f32;
-    var local_1: f32;
+    var phi_1481_: bool;
+    var local_1: bool;
     var local_2: bool;
-    var local_3: f32;
+    var local_3: bool;
     var local_4: bool;
-    var phi_1527_: f32;
-    var phi_2204_: bool;
-    var phi_926_: u32;
-    var phi_929_: f32;
-    var phi_2203_: bool;
     var local_5: f32;
-    var phi_1598_: type_29;
+    var local_6: f32;
+    var local_7: bool;
+    var local_8: bool;
+    var local_9: f32;
+    var local_10: bool;
+    var phi_1521_: f32;
+    var phi_925_: u32;
+    var phi_928_: f32;
+    var phi_2051_: bool;
+    var local_11: f32;
+    var phi_1592_: type_29;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e59 = id_1;
-            let _e63 = arrayLength((&kernel.member));
-            let _e74 = params.member.member.member[0u];
-            let _e79 = select(select(u32(_e74), 0u, (_e74 < 0f)), 4294967295u, (_e74 > 4294967000f));
-            let _e84 = params.member.member.member[1u];
-            let _e89 = select(select(u32(_e84), 0u, (_e84 < 0f)), 4294967295u, (_e84 > 4294967000f));
-            if (_e59.x >= _e79) {
+            let _e57 = id_1;
+            let _e59 = arrayLength((&kernel.member));
+            let _e70 = params.member.member.member[0u];
+            let _e75 = select(select(u32(_e70), 0u, (_e70 < 0f)), 4294967295u, (_e70 > 4294967000f));
+            let _e80 = params.member.member.member[1u];
+            let _e85 = select(select(u32(_e80), 0u, (_e80 < 0f)), 4294967295u, (_e80 > 4294967000f));
+            if (_e57.x >= _e75) {
             } else {
-                if (_e59.y >= _e89) {
+                if (_e57.y >= _e85) {
                 } else {
-                    let _e95 = ((_e59.y * _e79) + _e59.x);
-                    let _e98 = depth.member[_e95];
-                    let _e102 = params.member.member.member_3;
-                    let _e105 = select(false, (_e98 < _e102), (_e98 > 0f));
-                    let _e106 = select(_e102, _e98, _e105);
-                    let _e107 = bitcast<i32>(_e59.x);
-                    let _e108 = (_e107 + -1i);
-                    let _e110 = select(0i, _e108, (0i < _e108));
-                    let _e112 = (bitcast<i32>(_e79) - 1i);
-                    let _e116 = bitcast<i32>(_e59.y);
-                    let _e118 = select(0i, _e116, (0i < _e116));
-                    let _e120 = (bitcast<i32>(_e89) - 1i);
-                    let _e124 = (bitcast<u32>(select(_e118, _e120, (_e120 < _e118))) * _e79);
-                    let _e128 = depth.member[(_e124 + bitcast<u32>(select(_e110, _e112, (_e112 < _e110))))];
-                    let _e133 = (_e107 + 1i);
-                    let _e135 = select(0i, _e133, (0i < _e133));
-                    let _e142 = depth.member[(_e124 + bitcast<u32>(select(_e135, _e112, (_e112 < _e135))))];
-                    let _e148 = select(0i, _e107, (0i < _e107));
-                    let _e151 = bitcast<u32>(select(_e148, _e112, (_e112 < _e148)));
-                    let _e152 = (_e116 + -1i);
-                    let _e154 = select(0i, _e152, (0i < _e152));
-                    let _e162 = depth.member[((bitcast<u32>(select(_e154, _e120, (_e120 < _e154))) * _e79) + _e151)];
-                    let _e167 = (_e116 + 1i);
-                    let _e169 = select(0i, _e167, (0i < _e167));
-                    let _e177 = depth.member[((bitcast<u32>(select(_e169, _e120, (_e120 < _e169))) * _e79) + _e151)];
-                    let _e182 = (select(_e102, _e128, select(false, (_e128 < _e102), (_e128 > 0f))) - _e106);
-                    let _e183 = (select(_e102, _e142, select(false, (_e142 < _e102), (_e142 > 0f))) - _e106);
-                    let _e184 = (select(_e102, _e162, select(false, (_e162 < _e102), (_e162 > 0f))) - _e106);
-                    let _e185 = (select(_e102, _e177, select(false, (_e177 < _e102), (_e177 > 0f))) - _e106);
-                    let _e187 = ((_e183 - _e182) * 0.5f);
-                    let _e189 = ((_e185 - _e184) * 0.5f);
-                    let _e190 = (_e106 * 0.011f);
-                    let _e192 = abs(_e182);
-                    let _e193 = abs((_e182 + _e187));
-                    if (_e192 != _e192) {
+                    let _e91 = ((_e57.y * _e75) + _e57.x);
+                    let _e94 = depth.member[_e91];
+                    let _e98 = params.member.member.member_3;
+                    let _e101 = select(false, (_e94 < _e98), (_e94 > 0f));
+                    let _e102 = select(_e98, _e94, _e101);
+                    let _e103 = bitcast<i32>(_e57.x);
+                    let _e104 = (_e103 + -1i);
+                    let _e106 = select(0i, _e104, (0i < _e104));
+                    let _e108 = (bitcast<i32>(_e75) - 1i);
+                    let _e112 = bitcast<i32>(_e57.y);
+                    let _e114 = select(0i, _e112, (0i < _e112));
+                    let _e116 = (bitcast<i32>(_e85) - 1i);
+                    let _e120 = (bitcast<u32>(select(_e114, _e116, (_e116 < _e114))) * _e75);
+                    let _e124 = depth.member[(_e120 + bitcast<u32>(select(_e106, _e108, (_e108 < _e106))))];
+                    let _e129 = (_e103 + 1i);
+                    let _e131 = select(0i, _e129, (0i < _e129));
+                    let _e138 = depth.member[(_e120 + bitcast<u32>(select(_e131, _e108, (_e108 < _e131))))];
+                    let _e144 = select(0i, _e103, (0i < _e103));
+                    let _e147 = bitcast<u32>(select(_e144, _e108, (_e108 < _e144)));
+                    let _e148 = (_e112 + -1i);
+                    let _e150 = select(0i, _e148, (0i < _e148));
+                    let _e158 = depth.member[((bitcast<u32>(select(_e150, _e116, (_e116 < _e150))) * _e75) + _e147)];
+                    let _e163 = (_e112 + 1i);
+                    let _e165 = select(0i, _e163, (0i < _e163));
+                    let _e173 = depth.member[((bitcast<u32>(select(_e165, _e116, (_e116 < _e165))) * _e75) + _e147)];
+                    let _e178 = (select(_e98, _e124, select(false, (_e124 < _e98), (_e124 > 0f))) - _e102);
+                    let _e179 = (select(_e98, _e138, select(false, (_e138 < _e98), (_e138 > 0f))) - _e102);
+                    let _e180 = (select(_e98, _e158, select(false, (_e158 < _e98), (_e158 > 0f))) - _e102);
+                    let _e181 = (select(_e98, _e173, select(false, (_e173 < _e98), (_e173 > 0f))) - _e102);
+                    let _e183 = ((_e179 - _e178) * 0.5f);
+                    let _e185 = ((_e181 - _e180) * 0.5f);
+                    let _e186 = (_e102 * 0.011f);
+                    let _e188 = abs(_e178);
+                    let _e189 = abs((_e178 + _e183));
+                    if (_e188 != _e188) {
+                        phi_1633_ = true;
+                    } else {
+                        phi_1633_ = (_e189 <= _e188);
+                    }
+                    let _e193 = phi_1633_;
+                    let _e196 = (1.25f - (select(_e188, _e189, _e193) / _e186));
+                    let _e200 = select(0f, select(1f, _e196, (_e196 < 1f)), (_e196 > 0f));
+                    let _e202 = abs(_e179);
+                    let _e203 = abs((_e179 - _e183));
+                    if (_e202 != _e202) {
                         phi_1648_ = true;
                     } else {
-                        phi_1648_ = (_e193 <= _e192);
+                        phi_1648_ = (_e203 <= _e202);
                     }
-                    let _e197 = phi_1648_;
-                    let _e200 = (1.25f - (select(_e192, _e193, _e197) / _e190));
-                    let _e204 = select(0f, select(1f, _e200, (_e200 < 1f)), (_e200 > 0f));
-                    let _e206 = abs(_e183);
-                    let _e207 = abs((_e183 - _e187));
-                    if (_e206 != _e206) {
+                    let _e207 = phi_1648_;
+                    let _e210 = (1.25f - (select(_e202, _e203, _e207) / _e186));
+                    let _e214 = select(0f, select(1f, _e210, (_e210 < 1f)), (_e210 > 0f));
+                    let _e216 = abs(_e180);
+                    let _e217 = abs((_e180 + _e185));
+                    if (_e216 != _e216) {
                         phi_1663_ = true;
                     } else {
-                        phi_1663_ = (_e207 <= _e206);
+                        phi_1663_ = (_e217 <= _e216);
                     }
-                    let _e211 = phi_1663_;
-                    let _e214 = (1.25f - (select(_e206, _e207, _e211) / _e190));
-                    let _e218 = select(0f, select(1f, _e214, (_e214 < 1f)), (_e214 > 0f));
-                    let _e220 = abs(_e184);
-                    let _e221 = abs((_e184 + _e189));
-                    if (_e220 != _e220) {
+                    let _e221 = phi_1663_;
+                    let _e224 = (1.25f - (select(_e216, _e217, _e221) / _e186));
+                    let _e228 = select(0f, select(1f, _e224, (_e224 < 1f)), (_e224 > 0f));
+                    let _e230 = abs(_e181);
+                    let _e231 = abs((_e181 - _e185));
+                    if (_e230 != _e230) {
                         phi_1678_ = true;
                     } else {
-                        phi_1678_ = (_e221 <= _e220);
+                        phi_1678_ = (_e231 <= _e230);
                     }
-                    let _e225 = phi_1678_;
-                    let _e228 = (1.25f - (select(_e220, _e221, _e225) / _e190));
-                    let _e232 = select(0f, select(1f, _e228, (_e228 < 1f)), (_e228 > 0f));
-                    let _e234 = abs(_e185);
-                    let _e235 = abs((_e185 - _e189));
-                    if (_e234 != _e234) {
-                        phi_1693_ = true;
-                    } else {
-                        phi_1693_ = (_e235 <= _e234);
-                    }
-                    let _e239 = phi_1693_;
-                    let _e242 = (1.25f - (select(_e234, _e235, _e239) / _e190));
-                    let _e246 = select(0f, select(1f, _e242, (_e242 < 1f)), (_e242 > 0f));
-                    let _e251 = (select(0f, select(1f, _e204, (_e204 < 1f)), (_e204 > 0f)) * 2.9f);
-                    let _e253 = floor((_e251 + 0.5f));
-                    if ((_e253 - _e251) == 0.5f) {
-                        let _e259 = ((floor((_e253 * 0.5f)) * 2f) != _e253);
-                        if _e259 {
-                            phi_1724_ = (_e253 - 1f);
+                    let _e235 = phi_1678_;
+                    let _e238 = (1.25f - (select(_e230, _e231, _e235) / _e186));
+                    let _e242 = select(0f, select(1f, _e238, (_e238 < 1f)), (_e238 > 0f));
+                    let _e247 = (select(0f, select(1f, _e200, (_e200 < 1f)), (_e200 > 0f)) * 2.9f);
+                    let _e249 = floor((_e247 + 0.5f));
+                    if ((_e249 - _e247) == 0.5f) {
+                        let _e255 = ((floor((_e249 * 0.5f)) * 2f) != _e249);
+                        if _e255 {
+                            phi_1709_ = (_e249 - 1f);
                         } else {
-                            phi_1724_ = f32();
+                            phi_1709_ = f32();
                         }
-                        let _e262 = phi_1724_;
-                        phi_1728_ = _e262;
-                        phi_1729_ = select(true, false, _e259);
+                        let _e258 = phi_1709_;
+                        phi_1713_ = _e258;
+                        phi_1714_ = select(true, false, _e255);
                     } else {
-                        phi_1728_ = f32();
-                        phi_1729_ = true;
+                        phi_1713_ = f32();
+                        phi_1714_ = true;
                     }
-                    let _e265 = phi_1728_;
-                    let _e267 = phi_1729_;
-                    let _e268 = select(_e265, _e253, _e267);
-                    if (_e268 > 0f) {
-                        let _e274 = select(select(u32(_e268), 0u, (_e268 < 0f)), 4294967295u, (_e268 > 4294967000f));
-                        phi_1751_ = select(_e274, 3u, (3u < _e274));
+                    let _e261 = phi_1713_;
+                    let _e263 = phi_1714_;
+                    let _e264 = select(_e261, _e249, _e263);
+                    if (_e264 > 0f) {
+                        let _e270 = select(select(u32(_e264), 0u, (_e264 < 0f)), 4294967295u, (_e264 > 4294967000f));
+                        phi_1736_ = select(_e270, 3u, (3u < _e270));
                     } else {
-                        phi_1751_ = 0u;
+                        phi_1736_ = 0u;
                     }
-                    let _e278 = phi_1751_;
-                    let _e284 = (select(0f, select(1f, _e218, (_e218 < 1f)), (_e218 > 0f)) * 2.9f);
-                    let _e286 = floor((_e284 + 0.5f));
-                    if ((_e286 - _e284) == 0.5f) {
-                        let _e292 = ((floor((_e286 * 0.5f)) * 2f) != _e286);
-                        if _e292 {
-                            phi_1778_ = (_e286 - 1f);
+                    let _e274 = phi_1736_;
+                    let _e280 = (select(0f, select(1f, _e214, (_e214 < 1f)), (_e214 > 0f)) * 2.9f);
+                    let _e282 = floor((_e280 + 0.5f));
+                    if ((_e282 - _e280) == 0.5f) {
+                        let _e288 = ((floor((_e282 * 0.5f)) * 2f) != _e282);
+                        if _e288 {
+                            phi_1763_ = (_e282 - 1f);
                         } else {
-                            phi_1778_ = f32();
+                            phi_1763_ = f32();
                         }
-                        let _e295 = phi_1778_;
-                        phi_1782_ = _e295;
-                        phi_1783_ = select(true, false, _e292);
+                        let _e291 = phi_1763_;
+                        phi_1767_ = _e291;
+                        phi_1768_ = select(true, false, _e288);
                     } else {
-                        phi_1782_ = f32();
-                        phi_1783_ = true;
+                        phi_1767_ = f32();
+                        phi_1768_ = true;
                     }
-                    let _e298 = phi_1782_;
-                    let _e300 = phi_1783_;
-                    let _e301 = select(_e298, _e286, _e300);
-                    if (_e301 > 0f) {
-                        let _e307 = select(select(u32(_e301), 0u, (_e301 < 0f)), 4294967295u, (_e301 > 4294967000f));
-                        phi_1805_ = select(_e307, 3u, (3u < _e307));
+                    let _e294 = phi_1767_;
+                    let _e296 = phi_1768_;
+                    let _e297 = select(_e294, _e282, _e296);
+                    if (_e297 > 0f) {
+                        let _e303 = select(select(u32(_e297), 0u, (_e297 < 0f)), 4294967295u, (_e297 > 4294967000f));
+                        phi_1790_ = select(_e303, 3u, (3u < _e303));
                     } else {
-                        phi_1805_ = 0u;
+                        phi_1790_ = 0u;
                     }
-                    let _e311 = phi_1805_;
-                    let _e318 = (select(0f, select(1f, _e232, (_e232 < 1f)), (_e232 > 0f)) * 2.9f);
-                    let _e320 = floor((_e318 + 0.5f));
-                    if ((_e320 - _e318) == 0.5f) {
-                        let _e326 = ((floor((_e320 * 0.5f)) * 2f) != _e320);
-                        if _e326 {
-                            phi_1832_ = (_e320 - 1f);
+                    let _e307 = phi_1790_;
+                    let _e314 = (select(0f, select(1f, _e228, (_e228 < 1f)), (_e228 > 0f)) * 2.9f);
+                    let _e316 = floor((_e314 + 0.5f));
+                    if ((_e316 - _e314) == 0.5f) {
+                        let _e322 = ((floor((_e316 * 0.5f)) * 2f) != _e316);
+                        if _e322 {
+                            phi_1817_ = (_e316 - 1f);
                         } else {
-                            phi_1832_ = f32();
+                            phi_1817_ = f32();
                         }
-                        let _e329 = phi_1832_;
-                        phi_1836_ = _e329;
-                        phi_1837_ = select(true, false, _e326);
+                        let _e325 = phi_1817_;
+                        phi_1821_ = _e325;
+                        phi_1822_ = select(true, false, _e322);
                     } else {
-                        phi_1836_ = f32();
-                        phi_1837_ = true;
+                        phi_1821_ = f32();
+                        phi_1822_ = true;
                     }
-                    let _e332 = phi_1836_;
-                    let _e334 = phi_1837_;
-                    let _e335 = select(_e332, _e320, _e334);
-                    if (_e335 > 0f) {
-                        let _e341 = select(select(u32(_e335), 0u, (_e335 < 0f)), 4294967295u, (_e335 > 4294967000f));
-                        phi_1859_ = select(_e341, 3u, (3u < _e341));
+                    let _e328 = phi_1821_;
+                    let _e330 = phi_1822_;
+                    let _e331 = select(_e328, _e316, _e330);
+                    if (_e331 > 0f) {
+                        let _e337 = select(select(u32(_e331), 0u, (_e331 < 0f)), 4294967295u, (_e331 > 4294967000f));
+                        phi_1844_ = select(_e337, 3u, (3u < _e337));
                     } else {
-                        phi_1859_ = 0u;
+                        phi_1844_ = 0u;
                     }
-                    let _e345 = phi_1859_;
-                    let _e352 = (select(0f, select(1f, _e246, (_e246 < 1f)), (_e246 > 0f)) * 2.9f);
-                    let _e354 = floor((_e352 + 0.5f));
-                    if ((_e354 - _e352) == 0.5f) {
-                        let _e360 = ((floor((_e354 * 0.5f)) * 2f) != _e354);
-                        if _e360 {
-                            phi_1886_ = (_e354 - 1f);
+                    let _e341 = phi_1844_;
+                    let _e348 = (select(0f, select(1f, _e242, (_e242 < 1f)), (_e242 > 0f)) * 2.9f);
+                    let _e350 = floor((_e348 + 0.5f));
+                    if ((_e350 - _e348) == 0.5f) {
+                        let _e356 = ((floor((_e350 * 0.5f)) * 2f) != _e350);
+                        if _e356 {
+                            phi_1871_ = (_e350 - 1f);
                         } else {
-                            phi_1886_ = f32();
+                            phi_1871_ = f32();
                         }
-                        let _e363 = phi_1886_;
-                        phi_1890_ = _e363;
-                        phi_1891_ = select(true, false, _e360);
+                        let _e359 = phi_1871_;
+                        phi_1875_ = _e359;
+                        phi_1876_ = select(true, false, _e356);
                     } else {
-                        phi_1890_ = f32();
-                        phi_1891_ = true;
+                        phi_1875_ = f32();
+                        phi_1876_ = true;
                     }
-                    let _e366 = phi_1890_;
-                    let _e368 = phi_1891_;
-                    let _e369 = select(_e366, _e354, _e368);
-                    if (_e369 > 0f) {
-                        let _e375 = select(select(u32(_e369), 0u, (_e369 < 0f)), 4294967295u, (_e369 > 4294967000f));
-                        phi_1913_ = select(_e375, 3u, (3u < _e375));
+                    let _e362 = phi_1875_;
+                    let _e364 = phi_1876_;
+                    let _e365 = select(_e362, _e350, _e364);
+                    if (_e365 > 0f) {
+                        let _e371 = select(select(u32(_e365), 0u, (_e365 < 0f)), 4294967295u, (_e365 > 4294967000f));
+                        phi_1898_ = select(_e371, 3u, (3u < _e371));
                     } else {
-                        phi_1913_ = 0u;
+                        phi_1898_ = 0u;
                     }
-                    let _e379 = phi_1913_;
-                    let _e380 = ((((64u * _e278) + (16u * _e311)) + (4u * _e345)) + _e379);
-                    if _e105 {
-                        let _e393 = params.member.member.member_1[0u];
-                        let _e395 = ((((((f32(_e59.x) + 0.5f) / _e74) * 2f) - 1f) * _e393) * _e98);
-                        let _e402 = params.member.member.member_1[1u];
-                        let _e404 = ((((((f32(_e59.y) + 0.5f) / _e84) * -2f) + 1f) * _e402) * _e98);
-                        let _e408 = normals.member[_e95];
-                        let _e416 = (f32((bitcast<i32>(((_e408 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e416 != _e416) {
+                    let _e375 = phi_1898_;
+                    let _e376 = ((((64u * _e274) + (16u * _e307)) + (4u * _e341)) + _e375);
+                    if _e101 {
+                        let _e389 = params.member.member.member_1[0u];
+                        let _e391 = ((((((f32(_e57.x) + 0.5f) / _e70) * 2f) - 1f) * _e389) * _e94);
+                        let _e398 = params.member.member.member_1[1u];
+                        let _e400 = ((((((f32(_e57.y) + 0.5f) / _e80) * -2f) + 1f) * _e398) * _e94);
+                        let _e404 = normals.member[_e91];
+                        let _e412 = (f32((bitcast<i32>(((_e404 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e412 != _e412) {
+                            phi_1909_ = true;
+                        } else {
+                            phi_1909_ = (-1f >= _e412);
+                        }
+                        let _e416 = phi_1909_;
+                        let _e417 = select(_e412, -1f, _e416);
+                        let _e427 = (f32((bitcast<i32>((((_e404 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e427 != _e427) {
                             phi_1924_ = true;
                         } else {
-                            phi_1924_ = (-1f >= _e416);
+                            phi_1924_ = (-1f >= _e427);
                         }
-                        let _e420 = phi_1924_;
-                        let _e421 = select(_e416, -1f, _e420);
-                        let _e431 = (f32((bitcast<i32>((((_e408 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e431 != _e431) {
-                            phi_1939_ = true;
+                        let _e431 = phi_1924_;
+                        let _e432 = select(_e427, -1f, _e431);
+                        let _e435 = (1f - abs(_e417));
+                        let _e436 = abs(_e432);
+                        let _e437 = (_e435 - _e436);
+                        if (_e437 < 0f) {
+                            phi_782_ = vec2<f32>(((1f - _e436) * select(1f, -1f, (_e417 < 0f))), (_e435 * select(1f, -1f, (_e432 < 0f))));
                         } else {
-                            phi_1939_ = (-1f >= _e431);
+                            phi_782_ = vec2<f32>(_e417, _e432);
                         }
-                        let _e435 = phi_1939_;
-                        let _e436 = select(_e431, -1f, _e435);
-                        let _e439 = (1f - abs(_e421));
-                        let _e440 = abs(_e436);
-                        let _e441 = (_e439 - _e440);
-                        if (_e441 < 0f) {
-                            phi_783_ = vec2<f32>(((1f - _e440) * select(1f, -1f, (_e421 < 0f))), (_e439 * select(1f, -1f, (_e436 < 0f))));
+                        let _e448 = phi_782_;
+                        let _e457 = (1f / sqrt((((_e448.x * _e448.x) + (_e448.y * _e448.y)) + (_e437 * _e437))));
+                        let _e458 = (_e448.x * _e457);
+                        let _e459 = (_e448.y * _e457);
+                        let _e460 = (_e437 * _e457);
+                        let _e461 = -(_e460);
+                        if ((((_e458 * -(_e391)) + (_e459 * -(_e400))) + (_e461 * -(_e94))) < 0f) {
+                            phi_813_ = vec3<f32>(-(_e458), -(_e459), _e460);
                         } else {
-                            phi_783_ = vec2<f32>(_e421, _e436);
+                            phi_813_ = vec3<f32>(_e458, _e459, _e461);
                         }
-                        let _e452 = phi_783_;
-                        let _e461 = (1f / sqrt((((_e452.x * _e452.x) + (_e452.y * _e452.y)) + (_e441 * _e441))));
-                        let _e462 = (_e452.x * _e461);
-                        let _e463 = (_e452.y * _e461);
-                        let _e464 = (_e441 * _e461);
-                        let _e465 = -(_e464);
-                        if ((((_e462 * -(_e395)) + (_e463 * -(_e404))) + (_e465 * -(_e98))) < 0f) {
-                            phi_814_ = vec3<f32>(-(_e462), -(_e463), _e464);
-                        } else {
-                            phi_814_ = vec3<f32>(_e462, _e463, _e465);
-                        }
-                        let _e480 = phi_814_;
-                        let _e483 = params.member.member_8;
-                        phi_820_ = (_e59.y & 63u);
-                        phi_823_ = (_e59.x & 63u);
-                        phi_825_ = 32u;
-                        phi_827_ = 0u;
+                        let _e476 = phi_813_;
+                        let _e479 = params.member.member_8;
+                        phi_819_ = (_e57.y & 63u);
+                        phi_822_ = (_e57.x & 63u);
+                        phi_824_ = 32u;
+                        phi_826_ = 0u;
                         loop {
-                            let _e487 = phi_820_;
-                            let _e489 = phi_823_;
-                            let _e491 = phi_825_;
-                            let _e493 = phi_827_;
-                            local = _e493;
-                            let _e494 = (_e491 > 0u);
-                            if _e494 {
-                                let _e497 = select(0u, 1u, ((_e489 & _e491) != 0u));
-                                let _e500 = select(0u, 1u, ((_e487 & _e491) != 0u));
-                                if (_e500 == 0u) {
-                                    if (_e497 == 1u) {
-                                        phi_856_ = (63u - _e487);
-                                        phi_857_ = (63u - _e489);
+                            let _e483 = phi_819_;
+                            let _e485 = phi_822_;
+                            let _e487 = phi_824_;
+                            let _e489 = phi_826_;
+                            local = _e489;
+                            let _e490 = (_e487 > 0u);
+                            if _e490 {
+                                let _e493 = select(0u, 1u, ((_e485 & _e487) != 0u));
+                                let _e496 = select(0u, 1u, ((_e483 & _e487) != 0u));
+                                if (_e496 == 0u) {
+                                    if (_e493 == 1u) {
+                                        phi_855_ = (63u - _e483);
+                                        phi_856_ = (63u - _e485);
                                     } else {
-                                        phi_856_ = _e487;
-                                        phi_857_ = _e489;
+                                        phi_855_ = _e483;
+                                        phi_856_ = _e485;
                                     }
-                                    let _e511 = phi_856_;
-                                    let _e513 = phi_857_;
-                                    phi_858_ = _e513;
-                                    phi_859_ = _e511;
+                                    let _e507 = phi_855_;
+                                    let _e509 = phi_856_;
+                                    phi_857_ = _e509;
+                                    phi_858_ = _e507;
                                 } else {
-                                    phi_858_ = _e487;
-                                    phi_859_ = _e489;
+                                    phi_857_ = _e483;
+                                    phi_858_ = _e485;
                                 }
-                                let _e515 = phi_858_;
-                                let _e517 = phi_859_;
-                                phi_821_ = _e515;
-                                phi_824_ = _e517;
-                                phi_826_ = (_e491 / 2u);
-                                phi_828_ = (_e493 + ((_e491 * _e491) * ((3u * _e497) ^ _e500)));
+                                let _e511 = phi_857_;
+                                let _e513 = phi_858_;
+                                phi_820_ = _e511;
+                                phi_823_ = _e513;
+                                phi_825_ = (_e487 / 2u);
+                                phi_827_ = (_e489 + ((_e487 * _e487) * ((3u * _e493) ^ _e496)));
                             } else {
-                                phi_821_ = u32();
-                                phi_824_ = u32();
-                                phi_826_ = u32();
-                                phi_828_ = u32();
+                                phi_820_ = u32();
+                                phi_823_ = u32();
+                                phi_825_ = u32();
+                                phi_827_ = u32();
                             }
-                            let _e520 = phi_821_;
-                            let _e522 = phi_824_;
-                            let _e524 = phi_826_;
-                            let _e526 = phi_828_;
+                            let _e516 = phi_820_;
+                            let _e518 = phi_823_;
+                            let _e520 = phi_825_;
+                            let _e522 = phi_827_;
                             continue;
                             continuing {
-                                phi_820_ = _e520;
-                                phi_823_ = _e522;
-                                phi_825_ = _e524;
-                                phi_827_ = _e526;
-                                break if !(_e494);
+                                phi_819_ = _e516;
+                                phi_822_ = _e518;
+                                phi_824_ = _e520;
+                                phi_826_ = _e522;
+                                break if !(_e490);
                             }
                         }
-                        let _e531 = local;
-                        let _e533 = f32((_e531 + (288u * (_e483 % 64u))));
-                        let _e535 = (0.5f + (_e533 * 0.7548777f));
-                        let _e539 = (0.5f + (_e533 * 0.5698403f));
-                        let _e542 = (6.2831855f * (_e535 - floor(_e535)));
-                        phi_890_ = type_28(_e380, type_27(1u, type_26(vec2<u32>(_e59.x, _e59.y), vec3<f32>(_e395, _e404, _e98), _e480, sin(_e542), cos(_e542), (_e539 - floor(_e539)))));
+                        let _e527 = local;
+                        let _e529 = f32((_e527 + (288u * (_e479 % 64u))));
+                        let _e531 = (0.5f + (_e529 * 0.7548777f));
+                        let _e535 = (0.5f + (_e529 * 0.5698403f));
+                        let _e538 = (6.2831855f * (_e531 - floor(_e531)));
+                        phi_889_ = type_28(_e376, type_27(1u, type_26(vec2<u32>(_e57.x, _e57.y), vec3<f32>(_e391, _e400, _e94), _e476, sin(_e538), cos(_e538), (_e535 - floor(_e535)))));
                     } else {
-                        phi_890_ = type_28(_e380, type_27(0u, type_27().member_1));
+                        phi_889_ = type_28(_e376, type_27(0u, type_27().member_1));
                     }
-                    let _e554 = phi_890_;
-                    if (bitcast<i32>(_e554.member_1.member) != 0i) {
-                        let _e563 = params.member.member_5;
-                        let _e565 = select(_e563, 64u, (64u < _e563));
-                        let _e567 = select(_e565, _e63, (_e63 < _e565));
-                        let _e569 = select(1u, _e567, (1u < _e567));
-                        let _e572 = params.member.member_6;
-                        let _e574 = select(1u, _e572, (1u < _e572));
-                        phi_2114_ = false;
-                        phi_925_ = 0u;
-                        phi_928_ = 0f;
+                    let _e550 = phi_889_;
+                    if (bitcast<i32>(_e550.member_1.member) != 0i) {
+                        let _e559 = params.member.member_5;
+                        let _e561 = select(_e559, 64u, (64u < _e559));
+                        let _e563 = select(_e561, _e59, (_e59 < _e561));
+                        let _e565 = select(1u, _e563, (1u < _e563));
+                        let _e568 = params.member.member_6;
+                        let _e570 = select(1u, _e568, (1u < _e568));
+                        phi_924_ = 0u;
+                        phi_927_ = 0f;
                         loop {
-                            let _e576 = phi_2114_;
-                            let _e578 = phi_925_;
-                            let _e580 = phi_928_;
-                            local_5 = _e580;
-                            let _e581 = (_e578 < _e569);
-                            if _e581 {
-                                if (_e578 < _e63) {
+                            let _e572 = phi_924_;
+                            let _e574 = phi_927_;
+                            local_11 = _e574;
+                            let _e575 = (_e572 < _e565);
+                            if _e575 {
+                                if (_e572 < _e59) {
                                 } else {
-                                    phi_2203_ = true;
+                                    phi_2051_ = true;
                                     break;
                                 }
-                                let _e586 = kernel.member[_e578][0u];
-                                let _e590 = kernel.member[_e578][1u];
-                                let _e595 = ((_e554.member_1.member_1.member_4 * _e586) - (_e554.member_1.member_1.member_3 * _e590));
-                                let _e598 = ((_e554.member_1.member_1.member_3 * _e586) + (_e554.member_1.member_1.member_4 * _e590));
-                                let _e603 = ((1f - (_e595 * _e595)) - (_e598 * _e598));
-                                if (_e603 != _e603) {
-                                    phi_1954_ = true;
+                                let _e580 = kernel.member[_e572][0u];
+                                let _e584 = kernel.member[_e572][1u];
+                                let _e589 = ((_e550.member_1.member_1.member_4 * _e580) - (_e550.member_1.member_1.member_3 * _e584));
+                                let _e592 = ((_e550.member_1.member_1.member_3 * _e580) + (_e550.member_1.member_1.member_4 * _e584));
+                                let _e597 = ((1f - (_e589 * _e589)) - (_e592 * _e592));
+                                if (_e597 != _e597) {
+                                    phi_1939_ = true;
                                 } else {
-                                    phi_1954_ = (0f >= _e603);
+                                    phi_1939_ = (0f >= _e597);
                                 }
-                                let _e607 = phi_1954_;
-                                let _e609 = sqrt(select(_e603, 0f, _e607));
-                                let _e610 = -(_e609);
-                                let _e614 = (-1f * _e554.member_1.member_1.member_2.z);
-                                let _e615 = (-1f * _e554.member_1.member_1.member_2.x);
-                                let _e617 = (1f / (_e614 + 1f));
-                                let _e618 = (_e617 * _e554.member_1.member_1.member_2.y);
-                                let _e622 = (_e618 * _e615);
-                                let _e642 = (_e614 > 0.9997f);
-                                let _e643 = (_e614 < -0.9997f);
-                                let _e653 = params.member.member_1;
-                                let _e657 = params.member.member_3;
-                                let _e660 = params.member.member_4;
-                                phi_1074_ = 1u;
-                                phi_1077_ = _e653;
-                                phi_1079_ = false;
-                                phi_1081_ = true;
-                                phi_1083_ = 0f;
-                                phi_1085_ = 0f;
+                                let _e601 = phi_1939_;
+                                let _e603 = sqrt(select(_e597, 0f, _e601));
+                                let _e604 = -(_e603);
+                                let _e608 = (-1f * _e550.member_1.member_1.member_2.z);
+                                let _e609 = (-1f * _e550.member_1.member_1.member_2.x);
+                                let _e611 = (1f / (_e608 + 1f));
+                                let _e612 = (_e611 * _e550.member_1.member_1.member_2.y);
+                                let _e616 = (_e612 * _e609);
+                                let _e636 = (_e608 > 0.9997f);
+                                let _e637 = (_e608 < -0.9997f);
+                                let _e647 = params.member.member_1;
+                                let _e651 = params.member.member_3;
+                                let _e654 = params.member.member_4;
+                                phi_1073_ = 1u;
+                                phi_1076_ = _e647;
+                                phi_1078_ = false;
+                                phi_1080_ = true;
+                                phi_1082_ = 0f;
+                                phi_1084_ = 0f;
                                 loop {
-                                    let _e666 = phi_1074_;
-                                    let _e668 = phi_1077_;
-                                    let _e670 = phi_1079_;
-                                    let _e672 = phi_1081_;
-                                    let _e674 = phi_1083_;
-                                    let _e676 = phi_1085_;
-                                    local_1 = _e668;
-                                    local_2 = _e670;
-                                    local_3 = _e668;
-                                    local_4 = _e670;
-                                    let _e677 = (_e666 <= _e574);
-                                    if _e677 {
-                                        let _e683 = (((-(_e554.member_1.member_1.member_5) + f32(_e666)) * _e653) / f32(_e574));
-                                        let _e688 = (_e554.member_1.member_1.member_1.x + (select(select(((((_e614 + (_e618 * _e554.member_1.member_1.member_2.y)) * _e595) + (_e622 * _e598)) + (_e615 * _e610)), _e595, _e643), _e595, _e642) * _e683));
-                                        let _e690 = (_e554.member_1.member_1.member_1.y + (select(select((((_e622 * _e595) + ((_e614 + ((_e617 * _e615) * _e615)) * _e598)) + (-(_e554.member_1.member_1.member_2.y) * _e610)), -(_e598), _e643), _e598, _e642) * _e683));
-                                        let _e692 = (_e554.member_1.member_1.member_1.z + (select(select((((_e554.member_1.member_1.member_2.x * _e595) + (_e554.member_1.member_1.member_2.y * _e598)) + (_e614 * _e610)), _e609, _e643), _e610, _e642) * _e683));
-                                        let _e698 = params.member.member.member_1[0u];
-                                        let _e701 = (((_e688 * 0.5f) / (_e692 * _e698)) + 0.5f);
-                                        let _e707 = params.member.member.member_1[1u];
-                                        let _e710 = (0.5f - ((_e690 * 0.5f) / (_e692 * _e707)));
-                                        let _e720 = select(false, select(false, select(false, select(false, (_e710 <= 1f), (_e710 >= 0f)), select(false, (_e701 <= 1f), (_e701 >= 0f))), (_e692 > 0f)), _e672);
-                                        if _e720 {
-                                            let _e721 = (_e701 * _e74);
-                                            if (_e721 > 0f) {
-                                                let _e727 = select(select(u32(_e721), 0u, (_e721 < 0f)), 4294967295u, (_e721 > 4294967000f));
-                                                let _e728 = (_e79 - 1u);
-                                                phi_1189_ = select(_e727, _e728, (_e728 < _e727));
+                                    let _e660 = phi_1073_;
+                                    let _e662 = phi_1076_;
+                                    let _e664 = phi_1078_;
+                                    let _e666 = phi_1080_;
+                                    let _e668 = phi_1082_;
+                                    let _e670 = phi_1084_;
+                                    local_5 = _e662;
+                                    local_7 = _e664;
+                                    local_9 = _e662;
+                                    local_10 = _e664;
+                                    let _e671 = (_e660 <= _e570);
+                                    if _e671 {
+                                        let _e677 = (((-(_e550.member_1.member_1.member_5) + f32(_e660)) * _e647) / f32(_e570));
+                                        let _e682 = (_e550.member_1.member_1.member_1.x + (select(select(((((_e608 + (_e612 * _e550.member_1.member_1.member_2.y)) * _e589) + (_e616 * _e592)) + (_e609 * _e604)), _e589, _e637), _e589, _e636) * _e677));
+                                        let _e684 = (_e550.member_1.member_1.member_1.y + (select(select((((_e616 * _e589) + ((_e608 + ((_e611 * _e609) * _e609)) * _e592)) + (-(_e550.member_1.member_1.member_2.y) * _e604)), -(_e592), _e637), _e592, _e636) * _e677));
+                                        let _e686 = (_e550.member_1.member_1.member_1.z + (select(select((((_e550.member_1.member_1.member_2.x * _e589) + (_e550.member_1.member_1.member_2.y * _e592)) + (_e608 * _e604)), _e603, _e637), _e604, _e636) * _e677));
+                                        let _e692 = params.member.member.member_1[0u];
+                                        let _e695 = (((_e682 * 0.5f) / (_e686 * _e692)) + 0.5f);
+                                        let _e701 = params.member.member.member_1[1u];
+                                        let _e704 = (0.5f - ((_e684 * 0.5f) / (_e686 * _e701)));
+                                        let _e714 = select(false, select(false, select(false, select(false, (_e704 <= 1f), (_e704 >= 0f)), select(false, (_e695 <= 1f), (_e695 >= 0f))), (_e686 > 0f)), _e666);
+                                        if _e714 {
+                                            let _e715 = (_e695 * _e70);
+                                            if (_e715 > 0f) {
+                                                let _e721 = select(select(u32(_e715), 0u, (_e715 < 0f)), 4294967295u, (_e715 > 4294967000f));
+                                                let _e722 = (_e75 - 1u);
+                                                phi_1188_ = select(_e721, _e722, (_e722 < _e721));
                                             } else {
-                                                phi_1189_ = 0u;
+                                                phi_1188_ = 0u;
                                             }
-                                            let _e732 = phi_1189_;
-                                            let _e733 = (_e710 * _e84);
-                                            if (_e733 > 0f) {
-                                                let _e739 = select(select(u32(_e733), 0u, (_e733 < 0f)), 4294967295u, (_e733 > 4294967000f));
-                                                let _e740 = (_e89 - 1u);
-                                                phi_1210_ = select(_e739, _e740, (_e740 < _e739));
+                                            let _e726 = phi_1188_;
+                                            let _e727 = (_e704 * _e80);
+                                            if (_e727 > 0f) {
+                                                let _e733 = select(select(u32(_e727), 0u, (_e727 < 0f)), 4294967295u, (_e727 > 4294967000f));
+                                                let _e734 = (_e85 - 1u);
+                                                phi_1209_ = select(_e733, _e734, (_e734 < _e733));
                                             } else {
-                                                phi_1210_ = 0u;
+                                                phi_1209_ = 0u;
                                             }
-                                            let _e744 = phi_1210_;
-                                            let _e749 = depth.member[((_e744 * _e79) + _e732)];
-                                            let _e753 = select(_e102, _e749, select(false, (_e749 < _e102), (_e749 > 0f)));
-                                            let _e756 = (((_e701 * 2f) - 1f) * _e698);
-                                            let _e760 = (((_e710 * -2f) + 1f) * _e707);
-                                            let _e762 = (_e688 - (_e756 * _e753));
-                                            let _e763 = (_e690 - (_e760 * _e753));
-                                            let _e764 = (_e692 - _e753);
-                                            let _e770 = sqrt((((_e762 * _e762) + (_e763 * _e763)) + (_e764 * _e764)));
-                                            let _e775 = (select(0f, select(1f, _e701, (_e701 < 1f)), (_e701 > 0f)) * _e74);
-                                            if (_e775 > 0f) {
-                                                let _e781 = select(select(u32(_e775), 0u, (_e775 < 0f)), 4294967295u, (_e775 > 4294967000f));
-                                                let _e782 = (_e79 - 1u);
-                                                phi_1299_ = select(_e781, _e782, (_e782 < _e781));
+                                            let _e738 = phi_1209_;
+                                            let _e743 = depth.member[((_e738 * _e75) + _e726)];
+                                            let _e747 = select(_e98, _e743, select(false, (_e743 < _e98), (_e743 > 0f)));
+                                            let _e750 = (((_e695 * 2f) - 1f) * _e692);
+                                            let _e754 = (((_e704 * -2f) + 1f) * _e701);
+                                            let _e756 = (_e682 - (_e750 * _e747));
+                                            let _e757 = (_e684 - (_e754 * _e747));
+                                            let _e758 = (_e686 - _e747);
+                                            let _e764 = sqrt((((_e756 * _e756) + (_e757 * _e757)) + (_e758 * _e758)));
+                                            let _e769 = (select(0f, select(1f, _e695, (_e695 < 1f)), (_e695 > 0f)) * _e70);
+                                            if (_e769 > 0f) {
+                                                let _e775 = select(select(u32(_e769), 0u, (_e769 < 0f)), 4294967295u, (_e769 > 4294967000f));
+                                                let _e776 = (_e75 - 1u);
+                                                phi_1298_ = select(_e775, _e776, (_e776 < _e775));
                                             } else {
-                                                phi_1299_ = 0u;
+                                                phi_1298_ = 0u;
                                             }
-                                            let _e786 = phi_1299_;
-                                            let _e791 = (select(0f, select(1f, _e710, (_e710 < 1f)), (_e710 > 0f)) * _e84);
-                                            if (_e791 > 0f) {
-                                                let _e797 = select(select(u32(_e791), 0u, (_e791 < 0f)), 4294967295u, (_e791 > 4294967000f));
-                                                let _e798 = (_e89 - 1u);
-                                                phi_1330_ = select(_e797, _e798, (_e798 < _e797));
+                                            let _e780 = phi_1298_;
+                                            let _e785 = (select(0f, select(1f, _e704, (_e704 < 1f)), (_e704 > 0f)) * _e80);
+                                            if (_e785 > 0f) {
+                                                let _e791 = select(select(u32(_e785), 0u, (_e785 < 0f)), 4294967295u, (_e785 > 4294967000f));
+                                                let _e792 = (_e85 - 1u);
+                                                phi_1329_ = select(_e791, _e792, (_e792 < _e791));
                                             } else {
-                                                phi_1330_ = 0u;
+                                                phi_1329_ = 0u;
                                             }
-                                            let _e802 = phi_1330_;
-                                            let _e820 = ((_e802 * _e79) + _e786);
-                                            if (_e820 < arrayLength((&normals.member))) {
+                                            let _e796 = phi_1329_;
+                                            let _e817 = normals.member[((_e796 * _e75) + _e780)];
+                                            let _e825 = (f32((bitcast<i32>(((_e817 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                            if (_e825 != _e825) {
+                                                phi_2022_ = true;
                                             } else {
-                                                phi_2066_ = true;
-                                                phi_1636_ = bool();
-                                                phi_1635_ = bool();
-                                                phi_1634_ = bool();
-                                                phi_1633_ = bool();
-                                                phi_1631_ = f32();
-                                                break;
+                                                phi_2022_ = (-1f >= _e825);
                                             }
-                                            let _e824 = normals.member[_e820];
-                                            let _e832 = (f32((bitcast<i32>(((_e824 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e832 != _e832) {
+                                            let _e829 = phi_2022_;
+                                            let _e830 = select(_e825, -1f, _e829);
+                                            let _e840 = (f32((bitcast<i32>((((_e817 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                            if (_e840 != _e840) {
                                                 phi_2037_ = true;
                                             } else {
-                                                phi_2037_ = (-1f >= _e832);
+                                                phi_2037_ = (-1f >= _e840);
                                             }
-                                            let _e836 = phi_2037_;
-                                            let _e837 = select(_e832, -1f, _e836);
-                                            let _e847 = (f32((bitcast<i32>((((_e824 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e847 != _e847) {
-                                                phi_2052_ = true;
+                                            let _e844 = phi_2037_;
+                                            let _e845 = select(_e840, -1f, _e844);
+                                            let _e848 = (1f - abs(_e830));
+                                            let _e849 = abs(_e845);
+                                            let _e850 = (_e848 - _e849);
+                                            if (_e850 < 0f) {
+                                                phi_1998_ = vec2<f32>(((1f - _e849) * select(1f, -1f, (_e830 < 0f))), (_e848 * select(1f, -1f, (_e845 < 0f))));
                                             } else {
-                                                phi_2052_ = (-1f >= _e847);
+                                                phi_1998_ = vec2<f32>(_e830, _e845);
                                             }
-                                            let _e851 = phi_2052_;
-                                            let _e852 = select(_e847, -1f, _e851);
-                                            let _e855 = (1f - abs(_e837));
-                                            let _e856 = abs(_e852);
-                                            let _e857 = (_e855 - _e856);
-                                            if (_e857 < 0f) {
-                                                phi_2013_ = vec2<f32>(((1f - _e856) * select(1f, -1f, (_e837 < 0f))), (_e855 * select(1f, -1f, (_e852 < 0f))));
+                                            let _e861 = phi_1998_;
+                                            let _e870 = (1f / sqrt((((_e861.x * _e861.x) + (_e861.y * _e861.y)) + (_e850 * _e850))));
+                                            let _e871 = (_e861.x * _e870);
+                                            let _e872 = (_e861.y * _e870);
+                                            let _e874 = -((_e850 * _e870));
+                                            let _e878 = (((_e871 * _e750) + (_e872 * _e754)) + _e874);
+                                            let _e887 = select(((((_e871 * ((((((f32(_e780) + 0.5f) * (1f / _e70)) * 2f) - 1f) * _e692) * _e747)) + (_e872 * ((((((f32(_e796) + 0.5f) * (1f / _e80)) * -2f) + 1f) * _e701) * _e747))) + (_e874 * _e747)) / _e878), _e747, (abs(_e878) < 0.001f));
+                                            let _e897 = select(select(((_e686 - _e887) > _e654), true, (_e686 < (_e887 * (1f + _e651)))), true, select(false, (_e796 == _e550.member_1.member_1.member.y), (_e780 == _e550.member_1.member_1.member.x)));
+                                            let _e899 = select(false, !(_e897), _e714);
+                                            let _e900 = (_e668 + _e764);
+                                            let _e909 = select(false, _e897, _e714);
+                                            if _e909 {
+                                                phi_1464_ = (_e660 + 1u);
                                             } else {
-                                                phi_2013_ = vec2<f32>(_e837, _e852);
+                                                phi_1464_ = u32();
                                             }
-                                            let _e868 = phi_2013_;
-                                            let _e877 = (1f / sqrt((((_e868.x * _e868.x) + (_e868.y * _e868.y)) + (_e857 * _e857))));
-                                            let _e878 = (_e868.x * _e877);
-                                            let _e879 = (_e868.y * _e877);
-                                            let _e881 = -((_e857 * _e877));
-                                            let _e885 = (((_e878 * _e756) + (_e879 * _e760)) + _e881);
-                                            let _e894 = select(((((_e878 * ((((((f32(_e786) + 0.5f) * (1f / _e74)) * 2f) - 1f) * _e698) * _e753)) + (_e879 * ((((((f32(_e802) + 0.5f) * (1f / _e84)) * -2f) + 1f) * _e707) * _e753))) + (_e881 * _e753)) / _e885), _e753, (abs(_e885) < 0.001f));
-                                            let _e904 = select(select(((_e692 - _e894) > _e660), true, (_e692 < (_e894 * (1f + _e657)))), true, select(false, (_e802 == _e554.member_1.member_1.member.y), (_e786 == _e554.member_1.member_1.member.x)));
-                                            let _e906 = select(false, !(_e904), _e720);
-                                            let _e907 = (_e674 + _e770);
-                                            let _e916 = select(false, _e904, _e720);
-                                            if _e916 {
-                                                phi_1470_ = (_e666 + 1u);
-                                            } else {
-                                                phi_1470_ = u32();
-                                            }
-                                            let _e919 = phi_1470_;
-                                            phi_1472_ = _e919;
-                                            phi_1473_ = select(_e668, select((_e676 + ((_e674 * (_e683 - _e676)) / _e907)), _e676, (_e907 < 0.000001f)), _e906);
-                                            phi_1474_ = select(_e906, true, _e670);
-                                            phi_1475_ = _e916;
-                                            phi_1476_ = _e770;
-                                            phi_1479_ = _e916;
-                                            phi_1480_ = select(true, false, _e916);
+                                            let _e912 = phi_1464_;
+                                            phi_1466_ = _e912;
+                                            phi_1467_ = select(_e662, select((_e670 + ((_e668 * (_e677 - _e670)) / _e900)), _e670, (_e900 < 0.000001f)), _e899);
+                                            phi_1468_ = select(_e899, true, _e664);
+                                            phi_1469_ = _e909;
+                                            phi_1470_ = _e764;
+                                            phi_1473_ = _e909;
+                                            phi_1474_ = select(true, false, _e909);
                                         } else {
-                                            phi_1472_ = u32();
-                                            phi_1473_ = f32();
-                                            phi_1474_ = bool();
-                                            phi_1475_ = bool();
-                                            phi_1476_ = f32();
-                                            phi_1479_ = false;
-                                            phi_1480_ = false;
+                                            phi_1466_ = u32();
+                                            phi_1467_ = f32();
+                                            phi_1468_ = bool();
+                                            phi_1469_ = bool();
+                                            phi_1470_ = f32();
+                                            phi_1473_ = false;
+                                            phi_1474_ = false;
                                         }
-                                        let _e922 = phi_1472_;
-                                        let _e924 = phi_1473_;
-                                        let _e926 = phi_1474_;
-                                        let _e928 = phi_1475_;
-                                        let _e930 = phi_1476_;
-                                        let _e932 = phi_1479_;
-                                        let _e934 = phi_1480_;
-                                        phi_1075_ = _e922;
-                                        phi_1078_ = _e924;
-                                        phi_1080_ = _e926;
-                                        phi_1082_ = _e928;
-                                        phi_1084_ = _e930;
-                                        phi_1086_ = _e683;
-                                        phi_1484_ = _e932;
-                                        phi_1486_ = _e934;
-                                        phi_1487_ = select(true, false, _e720);
+                                        let _e915 = phi_1466_;
+                                        let _e917 = phi_1467_;
+                                        let _e919 = phi_1468_;
+                                        let _e921 = phi_1469_;
+                                        let _e923 = phi_1470_;
+                                        let _e925 = phi_1473_;
+                                        let _e927 = phi_1474_;
+                                        phi_1074_ = _e915;
+                                        phi_1077_ = _e917;
+                                        phi_1079_ = _e919;
+                                        phi_1081_ = _e921;
+                                        phi_1083_ = _e923;
+                                        phi_1085_ = _e677;
+                                        phi_1478_ = _e925;
+                                        phi_1480_ = _e927;
+                                        phi_1481_ = select(true, false, _e714);
                                     } else {
-                                        phi_1075_ = u32();
-                                        phi_1078_ = f32();
-                                        phi_1080_ = bool();
-                                        phi_1082_ = bool();
-                                        phi_1084_ = f32();
-                                        phi_1086_ = f32();
-                                        phi_1484_ = false;
-                                        phi_1486_ = false;
-                                        phi_1487_ = false;
+                                        phi_1074_ = u32();
+                                        phi_1077_ = f32();
+                                        phi_1079_ = bool();
+                                        phi_1081_ = bool();
+                                        phi_1083_ = f32();
+                                        phi_1085_ = f32();
+                                        phi_1478_ = false;
+                                        phi_1480_ = false;
+                                        phi_1481_ = false;
                                     }
-                                    let _e937 = phi_1075_;
-                                    let _e939 = phi_1078_;
-                                    let _e941 = phi_1080_;
-                                    let _e943 = phi_1082_;
-                                    let _e945 = phi_1084_;
-                                    let _e947 = phi_1086_;
-                                    let _e949 = phi_1484_;
-                                    let _e951 = phi_1486_;
-                                    let _e953 = phi_1487_;
+                                    let _e930 = phi_1074_;
+                                    let _e932 = phi_1077_;
+                                    let _e934 = phi_1079_;
+                                    let _e936 = phi_1081_;
+                                    let _e938 = phi_1083_;
+                                    let _e940 = phi_1085_;
+                                    let _e942 = phi_1478_;
+                                    let _e944 = phi_1480_;
+                                    let _e946 = phi_1481_;
+                                    let _e947 = select(true, false, _e671);
+                                    local_1 = _e947;
+                                    local_2 = _e944;
+                                    local_3 = _e947;
+                                    local_4 = _e946;
+                                    local_6 = _e932;
+                                    local_8 = _e934;
                                     continue;
                                     continuing {
-                                        phi_1074_ = _e937;
-                                        phi_1077_ = _e939;
-                                        phi_1079_ = _e941;
-                                        phi_1081_ = _e943;
-                                        phi_1083_ = _e945;
-                                        phi_1085_ = _e947;
-                                        phi_2066_ = _e576;
-                                        phi_1636_ = _e953;
-                                        phi_1635_ = _e951;
-                                        phi_1634_ = select(true, false, _e677);
-                                        phi_1633_ = _e941;
-                                        phi_1631_ = _e939;
-                                        break if !(_e949);
+                                        phi_1073_ = _e930;
+                                        phi_1076_ = _e932;
+                                        phi_1078_ = _e934;
+                                        phi_1080_ = _e936;
+                                        phi_1082_ = _e938;
+                                        phi_1084_ = _e940;
+                                        break if !(_e942);
                                     }
                                 }
-                                let _e957 = phi_2066_;
-                                let _e959 = phi_1636_;
-                                let _e961 = phi_1635_;
-                                let _e963 = phi_1634_;
-                                let _e965 = phi_1633_;
-                                let _e967 = phi_1631_;
-                                phi_2203_ = _e957;
-                                if _e957 {
-                                    break;
-                                }
-                                let _e968 = select(_e961, false, _e963);
-                                let _e970 = select(select(_e959, false, _e963), false, _e968);
-                                let _e972 = local_1;
-                                let _e975 = local_2;
-                                let _e977 = select(_e968, true, _e970);
-                                let _e979 = local_3;
-                                let _e982 = local_4;
-                                let _e986 = params.member.member_7;
-                                if (_e986 == 1u) {
-                                    phi_1527_ = 0f;
+                                let _e950 = local_1;
+                                let _e952 = local_2;
+                                let _e953 = select(_e952, false, _e950);
+                                let _e955 = local_3;
+                                let _e957 = local_4;
+                                let _e959 = select(select(_e957, false, _e955), false, _e953);
+                                let _e961 = local_5;
+                                let _e963 = local_6;
+                                let _e966 = local_7;
+                                let _e968 = local_8;
+                                let _e970 = select(_e953, true, _e959);
+                                let _e972 = local_9;
+                                let _e975 = local_10;
+                                let _e979 = params.member.member_7;
+                                if (_e979 == 1u) {
+                                    phi_1521_ = 0f;
                                 } else {
-                                    let _e988 = (select(_e979, select(_e967, _e972, _e970), _e977) / _e653);
-                                    phi_1527_ = select(0f, select(1f, _e988, (_e988 < 1f)), (_e988 > 0f));
+                                    let _e981 = (select(_e972, select(_e963, _e961, _e959), _e970) / _e647);
+                                    phi_1521_ = select(0f, select(1f, _e981, (_e981 < 1f)), (_e981 > 0f));
                                 }
-                                let _e994 = phi_1527_;
-                                phi_2204_ = _e957;
-                                phi_926_ = (_e578 + 1u);
-                                phi_929_ = (_e580 + select(1f, _e994, select(_e982, select(_e965, _e975, _e970), _e977)));
+                                let _e987 = phi_1521_;
+                                phi_925_ = (_e572 + 1u);
+                                phi_928_ = (_e574 + select(1f, _e987, select(_e975, select(_e968, _e966, _e959), _e970)));
                             } else {
-                                phi_2204_ = _e576;
-                                phi_926_ = u32();
-                                phi_929_ = f32();
+                                phi_925_ = u32();
+                                phi_928_ = f32();
                             }
-                            let _e999 = phi_2204_;
-                            let _e1001 = phi_926_;
-                            let _e1003 = phi_929_;
+                            let _e992 = phi_925_;
+                            let _e994 = phi_928_;
                             continue;
                             continuing {
-                                phi_2114_ = _e999;
-                                phi_925_ = _e1001;
-                                phi_928_ = _e1003;
-                                phi_2203_ = _e999;
-                                break if !(_e581);
+                                phi_924_ = _e992;
+                                phi_927_ = _e994;
+                                phi_2051_ = false;
+                                break if !(_e575);
                             }
                         }
-                        let _e1006 = phi_2203_;
-                        if _e1006 {
+                        let _e997 = phi_2051_;
+                        if _e997 {
                             break;
                         }
-                        let _e1009 = local_5;
-                        let _e1013 = params.member.member_2;
-                        let _e1014 = pow((_e1009 / f32(_e569)), _e1013);
-                        let _e1015 = (_e1014 * 0.6666667f);
-                        let _e1021 = ((select(0f, select(1f, _e1015, (_e1015 < 1f)), (_e1015 > 0f)) * 255f) + 0.5f);
-                        phi_1598_ = type_29(_e1014, select(select(u32(_e1021), 0u, (_e1021 < 0f)), 4294967295u, (_e1021 > 4294967000f)), _e554.member);
+                        let _e1000 = local_11;
+                        let _e1004 = params.member.member_2;
+                        let _e1005 = pow((_e1000 / f32(_e565)), _e1004);
+                        let _e1006 = (_e1005 * 0.6666667f);
+                        let _e1012 = ((select(0f, select(1f, _e1006, (_e1006 < 1f)), (_e1006 > 0f)) * 255f) + 0.5f);
+                        phi_1592_ = type_29(_e1005, select(select(u32(_e1012), 0u, (_e1012 < 0f)), 4294967295u, (_e1012 > 4294967000f)), _e550.member);
                     } else {
-                        phi_1598_ = type_29(1f, 170u, _e554.member);
+                        phi_1592_ = type_29(1f, 170u, _e550.member);
                     }
-                    let _e1030 = phi_1598_;
-                    if (_e95 < arrayLength((&ao.member))) {
-                    } else {
-                        break;
-                    }
-                    ao.member[_e95] = _e1030.member;
-                    if (_e95 < arrayLength((&terms.member))) {
+                    let _e1021 = phi_1592_;
+                    if (_e91 < arrayLength((&ao.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e95] = _e1030.member_1;
-                    if (_e95 < arrayLength((&edges.member))) {
+                    ao.member[_e91] = _e1021.member;
+                    if (_e91 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e95] = _e1030.member_2;
+                    terms.member[_e91] = _e1021.member_1;
+                    if (_e91 < arrayLength((&edges.member))) {
+                    } else {
+                        break;
+                    }
+                    edges.member[_e91] = _e1021.member_2;
                 }
             }
             break;

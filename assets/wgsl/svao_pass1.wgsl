@@ -123,605 +123,597 @@ fn function_() {
     var local_4: array<f32, 56>;
     var local_5: array<f32, 56>;
     var local_6: array<array<array<f32, 2>, 4>, 4>;
-    var phi_726_: bool;
+    var phi_725_: bool;
+    var phi_727_: bool;
     var phi_728_: bool;
     var phi_729_: bool;
     var phi_730_: bool;
-    var phi_731_: bool;
-    var phi_2145_: bool;
-    var phi_2160_: bool;
-    var phi_2121_: vec2<f32>;
-    var phi_2175_: bool;
-    var phi_992_: type_31;
-    var phi_1014_: u32;
-    var phi_1017_: u32;
-    var phi_1019_: f32;
-    var phi_1084_: f32;
-    var phi_1109_: f32;
-    var phi_1122_: f32;
-    var phi_1250_: u32;
-    var phi_1281_: u32;
-    var phi_2190_: bool;
-    var phi_2205_: bool;
-    var phi_1485_: f32;
-    var phi_2220_: bool;
-    var phi_1508_: f32;
-    var phi_2235_: bool;
-    var phi_2250_: bool;
-    var phi_1697_: f32;
-    var phi_2265_: bool;
-    var phi_2280_: bool;
-    var phi_2295_: bool;
-    var phi_1711_: f32;
-    var phi_1717_: type_41;
-    var phi_1733_: f32;
-    var phi_1752_: bool;
-    var phi_1753_: bool;
-    var phi_1765_: f32;
-    var phi_2310_: bool;
-    var phi_1784_: f32;
-    var phi_2325_: bool;
-    var phi_2340_: bool;
-    var phi_1936_: f32;
-    var phi_1943_: u32;
-    var phi_1957_: u32;
-    var phi_1965_: u32;
-    var phi_1015_: u32;
-    var phi_1018_: u32;
-    var phi_1020_: f32;
-    var phi_2354_: bool;
+    var phi_2133_: bool;
+    var phi_2148_: bool;
+    var phi_2109_: vec2<f32>;
+    var phi_2163_: bool;
+    var phi_985_: type_31;
+    var phi_1007_: u32;
+    var phi_1010_: u32;
+    var phi_1012_: f32;
+    var phi_1077_: f32;
+    var phi_1102_: f32;
+    var phi_1115_: f32;
+    var phi_1243_: u32;
+    var phi_1274_: u32;
+    var phi_2178_: bool;
+    var phi_2193_: bool;
+    var phi_1478_: f32;
+    var phi_2208_: bool;
+    var phi_1501_: f32;
+    var phi_2223_: bool;
+    var phi_2238_: bool;
+    var phi_1690_: f32;
+    var phi_2253_: bool;
+    var phi_2268_: bool;
+    var phi_2283_: bool;
+    var phi_1704_: f32;
+    var phi_1710_: type_41;
+    var phi_1726_: f32;
+    var phi_1745_: bool;
+    var phi_1746_: bool;
+    var phi_1758_: f32;
+    var phi_2298_: bool;
+    var phi_1777_: f32;
+    var phi_2313_: bool;
+    var phi_2328_: bool;
+    var phi_1929_: f32;
+    var phi_1936_: u32;
+    var phi_1950_: u32;
+    var phi_1958_: u32;
+    var phi_1008_: u32;
+    var phi_1011_: u32;
+    var phi_1013_: f32;
+    var phi_2342_: bool;
     var local_7: u32;
     var local_8: f32;
     var local_9: u32;
-    var phi_1998_: f32;
+    var phi_1991_: f32;
     var local_10: u32;
     var local_11: u32;
-    var phi_2027_: type_42;
-    var phi_2032_: type_42;
+    var phi_2020_: type_42;
+    var phi_2025_: type_42;
 
     switch bitcast<i32>(0u) {
         default: {
             let _e486 = id_1;
-            let _e500 = arrayLength((&ray_max.member));
+            let _e496 = arrayLength((&ray_max.member));
             if (0u < arrayLength((&frame.member))) {
             } else {
                 break;
             }
-            let _e510 = frame.member[0u].member_1.member.member.member_4;
-            let _e511 = (_e486.x + _e510);
-            let _e512 = (_e486.y + _e510);
-            let _e520 = frame.member[0u].member_1.member.member.member[0u];
-            let _e525 = select(select(u32(_e520), 0u, (_e520 < 0f)), 4294967295u, (_e520 > 4294967000f));
-            let _e533 = frame.member[0u].member_1.member.member.member[1u];
-            let _e538 = select(select(u32(_e533), 0u, (_e533 < 0f)), 4294967295u, (_e533 > 4294967000f));
-            if (_e511 >= _e510) {
-                if (_e512 >= _e510) {
-                    let _e542 = ((_e511 + _e510) < _e525);
-                    if _e542 {
-                        phi_726_ = ((_e512 + _e510) < _e538);
+            let _e506 = frame.member[0u].member_1.member.member.member_4;
+            let _e507 = (_e486.x + _e506);
+            let _e508 = (_e486.y + _e506);
+            let _e516 = frame.member[0u].member_1.member.member.member[0u];
+            let _e521 = select(select(u32(_e516), 0u, (_e516 < 0f)), 4294967295u, (_e516 > 4294967000f));
+            let _e529 = frame.member[0u].member_1.member.member.member[1u];
+            let _e534 = select(select(u32(_e529), 0u, (_e529 < 0f)), 4294967295u, (_e529 > 4294967000f));
+            if (_e507 >= _e506) {
+                if (_e508 >= _e506) {
+                    let _e538 = ((_e507 + _e506) < _e521);
+                    if _e538 {
+                        phi_725_ = ((_e508 + _e506) < _e534);
                     } else {
-                        phi_726_ = bool();
+                        phi_725_ = bool();
                     }
-                    let _e546 = phi_726_;
-                    phi_728_ = _e546;
-                    phi_729_ = select(true, false, _e542);
+                    let _e542 = phi_725_;
+                    phi_727_ = _e542;
+                    phi_728_ = select(true, false, _e538);
                 } else {
-                    phi_728_ = bool();
-                    phi_729_ = true;
+                    phi_727_ = bool();
+                    phi_728_ = true;
                 }
-                let _e549 = phi_728_;
-                let _e551 = phi_729_;
-                phi_730_ = _e549;
-                phi_731_ = _e551;
+                let _e545 = phi_727_;
+                let _e547 = phi_728_;
+                phi_729_ = _e545;
+                phi_730_ = _e547;
             } else {
-                phi_730_ = bool();
-                phi_731_ = true;
+                phi_729_ = bool();
+                phi_730_ = true;
             }
-            let _e553 = phi_730_;
-            let _e555 = phi_731_;
-            if select(_e553, false, _e555) {
-                let _e562 = frame.member[0u].member_1.member.member_1;
-                let _e568 = frame.member[0u].member_1.member.member_4;
-                let _e571 = ((f32(_e511) + 0.5f) / _e520);
-                let _e574 = ((f32(_e512) + 0.5f) / _e533);
-                let _e576 = ((_e512 * _e525) + _e511);
-                let _e578 = depth.member[_e576];
-                let _e586 = frame.member[0u].member_1.member.member.member_1[0u];
-                let _e594 = frame.member[0u].member_1.member.member.member_1[1u];
-                let _e604 = ((((_e562 * _e520) / (_e578 * (2f * _e586))) + ((_e562 * _e533) / (_e578 * (2f * _e594)))) * 0.5f);
-                let _e605 = (_e604 > _e568);
-                let _e609 = select(_e604, _e568, _e605);
-                let _e616 = frame.member[0u].member_1.member.member.member_3;
-                let _e628 = ((((_e571 * 2f) - 1f) * _e578) * _e586);
-                let _e630 = ((((_e574 * -2f) + 1f) * _e578) * _e594);
-                let _e631 = -(_e578);
-                if (_e576 < arrayLength((&normals.member))) {
+            let _e549 = phi_729_;
+            let _e551 = phi_730_;
+            if select(_e549, false, _e551) {
+                let _e558 = frame.member[0u].member_1.member.member_1;
+                let _e564 = frame.member[0u].member_1.member.member_4;
+                let _e567 = ((f32(_e507) + 0.5f) / _e516);
+                let _e570 = ((f32(_e508) + 0.5f) / _e529);
+                let _e572 = ((_e508 * _e521) + _e507);
+                let _e574 = depth.member[_e572];
+                let _e582 = frame.member[0u].member_1.member.member.member_1[0u];
+                let _e590 = frame.member[0u].member_1.member.member.member_1[1u];
+                let _e600 = ((((_e558 * _e516) / (_e574 * (2f * _e582))) + ((_e558 * _e529) / (_e574 * (2f * _e590)))) * 0.5f);
+                let _e601 = (_e600 > _e564);
+                let _e605 = select(_e600, _e564, _e601);
+                let _e612 = frame.member[0u].member_1.member.member.member_3;
+                let _e624 = ((((_e567 * 2f) - 1f) * _e574) * _e582);
+                let _e626 = ((((_e570 * -2f) + 1f) * _e574) * _e590);
+                let _e627 = -(_e574);
+                let _e630 = normals.member[_e572];
+                let _e638 = (f32((bitcast<i32>(((_e630 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                if (_e638 != _e638) {
+                    phi_2133_ = true;
                 } else {
-                    break;
+                    phi_2133_ = (-1f >= _e638);
                 }
-                let _e635 = normals.member[_e576];
-                let _e643 = (f32((bitcast<i32>(((_e635 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                if (_e643 != _e643) {
-                    phi_2145_ = true;
+                let _e642 = phi_2133_;
+                let _e643 = select(_e638, -1f, _e642);
+                let _e653 = (f32((bitcast<i32>((((_e630 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                if (_e653 != _e653) {
+                    phi_2148_ = true;
                 } else {
-                    phi_2145_ = (-1f >= _e643);
+                    phi_2148_ = (-1f >= _e653);
                 }
-                let _e647 = phi_2145_;
-                let _e648 = select(_e643, -1f, _e647);
-                let _e658 = (f32((bitcast<i32>((((_e635 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                if (_e658 != _e658) {
-                    phi_2160_ = true;
+                let _e657 = phi_2148_;
+                let _e658 = select(_e653, -1f, _e657);
+                let _e661 = (1f - abs(_e643));
+                let _e662 = abs(_e658);
+                let _e663 = (_e661 - _e662);
+                if (_e663 < 0f) {
+                    phi_2109_ = vec2<f32>(((1f - _e662) * select(1f, -1f, (_e643 < 0f))), (_e661 * select(1f, -1f, (_e658 < 0f))));
                 } else {
-                    phi_2160_ = (-1f >= _e658);
+                    phi_2109_ = vec2<f32>(_e643, _e658);
                 }
-                let _e662 = phi_2160_;
-                let _e663 = select(_e658, -1f, _e662);
-                let _e666 = (1f - abs(_e648));
-                let _e667 = abs(_e663);
-                let _e668 = (_e666 - _e667);
-                if (_e668 < 0f) {
-                    phi_2121_ = vec2<f32>(((1f - _e667) * select(1f, -1f, (_e648 < 0f))), (_e666 * select(1f, -1f, (_e663 < 0f))));
-                } else {
-                    phi_2121_ = vec2<f32>(_e648, _e663);
-                }
-                let _e679 = phi_2121_;
-                let _e688 = (1f / sqrt((((_e679.x * _e679.x) + (_e679.y * _e679.y)) + (_e668 * _e668))));
-                let _e689 = (_e679.x * _e688);
-                let _e690 = (_e679.y * _e688);
-                let _e691 = (_e668 * _e688);
-                let _e697 = ((((_e628 * _e689) + (_e630 * _e690)) + (_e631 * _e691)) > 0f);
-                let _e701 = select(_e689, -(_e689), _e697);
-                let _e702 = select(_e690, -(_e690), _e697);
-                let _e703 = select(_e691, -(_e691), _e697);
+                let _e674 = phi_2109_;
+                let _e683 = (1f / sqrt((((_e674.x * _e674.x) + (_e674.y * _e674.y)) + (_e663 * _e663))));
+                let _e684 = (_e674.x * _e683);
+                let _e685 = (_e674.y * _e683);
+                let _e686 = (_e663 * _e683);
+                let _e692 = ((((_e624 * _e684) + (_e626 * _e685)) + (_e627 * _e686)) > 0f);
+                let _e696 = select(_e684, -(_e684), _e692);
+                let _e697 = select(_e685, -(_e685), _e692);
+                let _e698 = select(_e686, -(_e686), _e692);
                 local_6 = array<array<array<f32, 2>, 4>, 4>(array<array<f32, 2>, 4>(array<f32, 2>(0f, 1f), array<f32, 2>(0.012909942f, -0.9999167f), array<f32, 2>(0.69159436f, 0.7222861f), array<f32, 2>(-0.7000154f, -0.7141277f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.99997514f, -0.0070477454f), array<f32, 2>(0.9998238f, 0.018771695f), array<f32, 2>(-0.7100116f, 0.70418996f), array<f32, 2>(0.7182193f, -0.6958169f)), array<array<f32, 2>, 4>(array<f32, 2>(0.91594595f, 0.40130165f), array<f32, 2>(-0.92058814f, -0.39053485f), array<f32, 2>(0.36117664f, 0.93249744f), array<f32, 2>(-0.3720851f, -0.92819864f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.38513124f, 0.9228618f), array<f32, 2>(0.39592505f, -0.9182828f), array<f32, 2>(-0.9260013f, 0.37752023f), array<f32, 2>(0.930364f, -0.36663717f)));
-                let _e705 = (_e512 % 4u);
-                if (_e705 < 4u) {
+                let _e700 = (_e508 % 4u);
+                if (_e700 < 4u) {
                 } else {
                     break;
                 }
-                let _e707 = (_e511 % 4u);
-                if (_e707 < 4u) {
+                let _e702 = (_e507 % 4u);
+                if (_e702 < 4u) {
                 } else {
                     break;
                 }
-                let _e711 = local_6[_e705][_e707];
-                let _e721 = sqrt((((_e628 * _e628) + (_e630 * _e630)) + (_e631 * _e631)));
-                let _e722 = (-(_e628) / _e721);
-                let _e723 = (-(_e630) / _e721);
-                let _e724 = (_e578 / _e721);
-                let _e727 = -((_e711[1] * _e724));
-                let _e728 = (_e724 * _e711[0]);
-                let _e731 = ((_e722 * _e711[1]) - (_e711[0] * _e723));
-                let _e738 = (1f / sqrt((((_e727 * _e727) + (_e728 * _e728)) + (_e731 * _e731))));
-                let _e739 = (_e727 * _e738);
-                let _e740 = (_e728 * _e738);
-                let _e741 = (_e731 * _e738);
-                let _e745 = ((_e740 * _e724) - (_e723 * _e741));
-                let _e748 = ((_e741 * _e722) - (_e724 * _e739));
-                let _e751 = ((_e739 * _e723) - (_e722 * _e740));
-                let _e767 = (((_e701 * _e722) + (_e702 * _e723)) + (_e703 * _e724));
-                let _e771 = abs(_e767);
-                if (_e771 != _e771) {
-                    phi_2175_ = true;
+                let _e706 = local_6[_e700][_e702];
+                let _e716 = sqrt((((_e624 * _e624) + (_e626 * _e626)) + (_e627 * _e627)));
+                let _e717 = (-(_e624) / _e716);
+                let _e718 = (-(_e626) / _e716);
+                let _e719 = (_e574 / _e716);
+                let _e722 = -((_e706[1] * _e719));
+                let _e723 = (_e719 * _e706[0]);
+                let _e726 = ((_e717 * _e706[1]) - (_e706[0] * _e718));
+                let _e733 = (1f / sqrt((((_e722 * _e722) + (_e723 * _e723)) + (_e726 * _e726))));
+                let _e734 = (_e722 * _e733);
+                let _e735 = (_e723 * _e733);
+                let _e736 = (_e726 * _e733);
+                let _e740 = ((_e735 * _e719) - (_e718 * _e736));
+                let _e743 = ((_e736 * _e717) - (_e719 * _e734));
+                let _e746 = ((_e734 * _e718) - (_e717 * _e735));
+                let _e762 = (((_e696 * _e717) + (_e697 * _e718)) + (_e698 * _e719));
+                let _e766 = abs(_e762);
+                if (_e766 != _e766) {
+                    phi_2163_ = true;
                 } else {
-                    phi_2175_ = (0.0001f >= _e771);
+                    phi_2163_ = (0.0001f >= _e766);
                 }
-                let _e775 = phi_2175_;
-                if select(false, !((_e609 < 0.5f)), select(false, (_e578 < _e616), (_e578 > 0f))) {
-                    phi_992_ = type_31(1u, type_30(vec2<u32>(_e511, _e512), vec2<f32>(_e571, _e574), select(_e562, ((_e562 * _e568) / _e604), _e605), _e609, vec3<f32>(_e628, _e630, _e631), vec3<f32>(_e701, _e702, _e703), vec3<f32>(_e722, _e723, _e724), vec3<f32>(_e745, _e748, _e751), vec3<f32>(_e739, _e740, _e741), vec3<f32>((((_e701 * _e745) + (_e702 * _e748)) + (_e703 * _e751)), (((_e701 * _e739) + (_e702 * _e740)) + (_e703 * _e741)), _e767), (1f / (select(1f, -1f, (_e767 < 0f)) * select(_e771, 0.0001f, _e775)))));
+                let _e770 = phi_2163_;
+                if select(false, !((_e605 < 0.5f)), select(false, (_e574 < _e612), (_e574 > 0f))) {
+                    phi_985_ = type_31(1u, type_30(vec2<u32>(_e507, _e508), vec2<f32>(_e567, _e570), select(_e558, ((_e558 * _e564) / _e600), _e601), _e605, vec3<f32>(_e624, _e626, _e627), vec3<f32>(_e696, _e697, _e698), vec3<f32>(_e717, _e718, _e719), vec3<f32>(_e740, _e743, _e746), vec3<f32>(_e734, _e735, _e736), vec3<f32>((((_e696 * _e740) + (_e697 * _e743)) + (_e698 * _e746)), (((_e696 * _e734) + (_e697 * _e735)) + (_e698 * _e736)), _e762), (1f / (select(1f, -1f, (_e762 < 0f)) * select(_e766, 0.0001f, _e770)))));
                 } else {
-                    phi_992_ = type_31(0u, type_31().member_1);
+                    phi_985_ = type_31(0u, type_31().member_1);
                 }
-                let _e787 = phi_992_;
-                if (bitcast<i32>(_e787.member) != 0i) {
-                    let _e801 = sqrt((((_e787.member_1.member_4.x * _e787.member_1.member_4.x) + (_e787.member_1.member_4.y * _e787.member_1.member_4.y)) + (_e787.member_1.member_4.z * _e787.member_1.member_4.z)));
-                    phi_1014_ = 0u;
-                    phi_1017_ = 0u;
-                    phi_1019_ = 0f;
+                let _e782 = phi_985_;
+                if (bitcast<i32>(_e782.member) != 0i) {
+                    let _e796 = sqrt((((_e782.member_1.member_4.x * _e782.member_1.member_4.x) + (_e782.member_1.member_4.y * _e782.member_1.member_4.y)) + (_e782.member_1.member_4.z * _e782.member_1.member_4.z)));
+                    phi_1007_ = 0u;
+                    phi_1010_ = 0u;
+                    phi_1012_ = 0f;
                     loop {
-                        let _e803 = phi_1014_;
-                        let _e805 = phi_1017_;
-                        let _e807 = phi_1019_;
-                        let _e812 = frame.member[0u].member_1.member_11;
-                        local_8 = _e807;
-                        local_9 = _e805;
-                        local_10 = _e805;
-                        local_11 = _e805;
-                        let _e817 = (8u << bitcast<u32>((select(_e812, 2u, (2u < _e812)) & 31u)));
-                        let _e818 = (_e803 < _e817);
-                        local_7 = _e817;
-                        if _e818 {
-                            let _e823 = frame.member[0u].member_1.member_1;
-                            let _e824 = (_e823 == 1u);
-                            let _e830 = frame.member[0u].member_1.member_10;
-                            let _e832 = ((_e817 + _e803) - 8u);
+                        let _e798 = phi_1007_;
+                        let _e800 = phi_1010_;
+                        let _e802 = phi_1012_;
+                        let _e807 = frame.member[0u].member_1.member_11;
+                        local_8 = _e802;
+                        local_9 = _e800;
+                        local_10 = _e800;
+                        local_11 = _e800;
+                        let _e812 = (8u << bitcast<u32>((select(_e807, 2u, (2u < _e807)) & 31u)));
+                        let _e813 = (_e798 < _e812);
+                        local_7 = _e812;
+                        if _e813 {
+                            let _e818 = frame.member[0u].member_1.member_1;
+                            let _e819 = (_e818 == 1u);
+                            let _e825 = frame.member[0u].member_1.member_10;
+                            let _e827 = ((_e812 + _e798) - 8u);
                             local = array<array<f32, 2>, 56>(array<f32, 2>(0f, 1f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(0f, 1f), array<f32, 2>(0.382615f, 0.9239079f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.92379445f, 0.38288876f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.92402124f, -0.3823412f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.38316247f, -0.92368096f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.38206735f, -0.9241345f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.92356735f, -0.38343617f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.9242476f, 0.3817935f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(-0.38370985f, 0.9234537f), array<f32, 2>(0f, 1f), array<f32, 2>(0.195054f, 0.9807925f), array<f32, 2>(0.382615f, 0.9239079f), array<f32, 2>(0.55547786f, 0.83153135f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.8313667f, 0.5557242f), array<f32, 2>(0.92379445f, 0.38288876f), array<f32, 2>(0.98073465f, 0.19534461f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.9808503f, -0.19476335f), array<f32, 2>(0.92402124f, -0.3823412f), array<f32, 2>(0.8316959f, -0.5552314f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.55597055f, -0.831202f), array<f32, 2>(0.38316247f, -0.92368096f), array<f32, 2>(0.19563523f, -0.9806767f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.19447269f, -0.9809079f), array<f32, 2>(-0.38206735f, -0.9241345f), array<f32, 2>(-0.5549849f, -0.8318604f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.8310372f, -0.55621684f), array<f32, 2>(-0.92356735f, -0.38343617f), array<f32, 2>(-0.9806187f, -0.19592582f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.9809655f, 0.19418201f), array<f32, 2>(-0.9242476f, 0.3817935f), array<f32, 2>(-0.8320248f, 0.5547384f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(-0.55646306f, 0.83087236f), array<f32, 2>(-0.38370985f, 0.9234537f), array<f32, 2>(-0.19621639f, 0.9805606f));
-                            let _e833 = (_e832 < 56u);
-                            if _e833 {
+                            let _e828 = (_e827 < 56u);
+                            if _e828 {
                             } else {
-                                phi_2354_ = true;
+                                phi_2342_ = true;
                                 break;
                             }
-                            let _e835 = local[_e832];
-                            let _e838 = (_e830 == 1u);
-                            if _e838 {
+                            let _e830 = local[_e827];
+                            let _e833 = (_e825 == 1u);
+                            if _e833 {
                                 local_1 = array<f32, 56>(0.019897608f, 0.3239192f, 0.15013283f, 0.5608856f, 0.07874805f, 0.4306375f, 0.23159242f, 0.74770695f, 0.008364792f, 0.2996842f, 0.13131975f, 0.5251597f, 0.06264064f, 0.40226412f, 0.21027996f, 0.69061786f, 0.033039935f, 0.349031f, 0.16956282f, 0.59961605f, 0.09559796f, 0.46040866f, 0.2535722f, 0.8218291f, 0.0035168785f, 0.2878725f, 0.1221474f, 0.508219f, 0.054890417f, 0.38854375f, 0.19986558f, 0.66562253f, 0.026302148f, 0.3363604f, 0.15977097f, 0.5798254f, 0.08708425f, 0.44533524f, 0.24249692f, 0.78164643f, 0.013886448f, 0.31169695f, 0.14064877f, 0.542692f, 0.07059704f, 0.41628838f, 0.2208546f, 0.7177502f, 0.040069554f, 0.36194277f, 0.1795086f, 0.62038976f, 0.10428292f, 0.47588885f, 0.26482287f, 0.8740953f);
-                                if _e833 {
+                                if _e828 {
                                 } else {
-                                    phi_2354_ = true;
+                                    phi_2342_ = true;
                                     break;
                                 }
-                                let _e840 = local_1[_e832];
-                                phi_1084_ = _e840;
+                                let _e835 = local_1[_e827];
+                                phi_1077_ = _e835;
                             } else {
                                 local_2 = array<f32, 56>(0.917883f, 0.564429f, 0.734504f, 0.359545f, 0.820004f, 0.470149f, 0.650919f, 0.205215f, 0.9490982f, 0.5865639f, 0.7554682f, 0.38954395f, 0.84255606f, 0.4948004f, 0.6719197f, 0.252031f, 0.8908589f, 0.54182106f, 0.7136428f, 0.32724136f, 0.798092f, 0.44453403f, 0.6297374f, 0.14471826f, 0.96824586f, 0.5974803f, 0.7660169f, 0.40384725f, 0.8541535f, 0.5068159f, 0.6823727f, 0.27260765f, 0.90401816f, 0.55318946f, 0.72406566f, 0.34372202f, 0.80898184f, 0.45747337f, 0.6403549f, 0.17748062f, 0.9327351f, 0.57555f, 0.7449678f, 0.37479568f, 0.83118564f, 0.48258433f, 0.6614378f, 0.22975244f, 0.87823313f, 0.5303115f, 0.7032256f, 0.30999523f, 0.7873134f, 0.4313043f, 0.61905813f, 0.10219581f);
-                                if _e833 {
+                                if _e828 {
                                 } else {
-                                    phi_2354_ = true;
+                                    phi_2342_ = true;
                                     break;
                                 }
-                                let _e842 = local_2[_e832];
-                                phi_1084_ = _e842;
+                                let _e837 = local_2[_e827];
+                                phi_1077_ = _e837;
                             }
-                            let _e844 = phi_1084_;
-                            let _e846 = (_e787.member_1.member_2 * _e844);
-                            let _e847 = (_e846 * _e835[0]);
-                            let _e848 = (_e846 * _e835[1]);
-                            if _e838 {
+                            let _e839 = phi_1077_;
+                            let _e841 = (_e782.member_1.member_2 * _e839);
+                            let _e842 = (_e841 * _e830[0]);
+                            let _e843 = (_e841 * _e830[1]);
+                            if _e833 {
                                 local_3 = array<f32, 56>(0.999802f, 0.94608474f, 0.9886658f, 0.8278933f, 0.99689454f, 0.902525f, 0.9728129f, 0.6640288f, 0.999965f, 0.95403844f, 0.99134004f, 0.8510037f, 0.99803615f, 0.91552365f, 0.9776412f, 0.7232199f, 0.999454f, 0.9371112f, 0.9855194f, 0.8002878f, 0.99542004f, 0.8877071f, 0.96731645f, 0.5697341f, 0.9999938f, 0.9576687f, 0.992512f, 0.86122787f, 0.99849236f, 0.9214303f, 0.97982335f, 0.7462886f, 0.99965405f, 0.94173336f, 0.9871541f, 0.8147408f, 0.996201f, 0.8953639f, 0.9701522f, 0.6237217f, 0.99990356f, 0.95018154f, 0.99005955f, 0.8399318f, 0.9975049f, 0.9092326f, 0.97530675f, 0.6963007f, 0.9991969f, 0.9322003f, 0.9837564f, 0.78429365f, 0.99454767f, 0.87950546f, 0.96429706f, 0.48575446f);
-                                if _e833 {
+                                if _e828 {
                                 } else {
-                                    phi_2354_ = true;
+                                    phi_2342_ = true;
                                     break;
                                 }
-                                let _e850 = local_3[_e832];
-                                phi_1109_ = _e850;
+                                let _e845 = local_3[_e827];
+                                phi_1102_ = _e845;
                             } else {
                                 local_4 = array<f32, 56>(0.39685115f, 0.82548165f, 0.67860436f, 0.93312776f, 0.57235783f, 0.8825871f, 0.75914717f, 0.9787169f, 0.31498024f, 0.80990297f, 0.65518534f, 0.9210079f, 0.5386087f, 0.86900663f, 0.740624f, 0.96771914f, 0.45428014f, 0.84049386f, 0.7005098f, 0.9449408f, 0.6025356f, 0.89576197f, 0.7768081f, 0.9894729f, 0.2499999f, 0.8018836f, 0.6428204f, 0.91482645f, 0.52002096f, 0.8620543f, 0.7310045f, 0.9621253f, 0.42749405f, 0.8330555f, 0.68973106f, 0.9390714f, 0.58783364f, 0.88922334f, 0.76807916f, 0.9841243f, 0.3605624f, 0.8177666f, 0.6671004f, 0.92710745f, 0.555995f, 0.8758495f, 0.75f, 0.9732491f, 0.47823274f, 0.8478029f, 0.71096677f, 0.95073813f, 0.616553f, 0.90220654f, 0.78534514f, 0.9947643f);
-                                if _e833 {
+                                if _e828 {
                                 } else {
-                                    phi_2354_ = true;
+                                    phi_2342_ = true;
                                     break;
                                 }
-                                let _e852 = local_4[_e832];
-                                phi_1109_ = _e852;
+                                let _e847 = local_4[_e827];
+                                phi_1102_ = _e847;
                             }
-                            let _e854 = phi_1109_;
-                            let _e855 = (_e787.member_1.member_2 * _e854);
-                            if _e838 {
+                            let _e849 = phi_1102_;
+                            let _e850 = (_e782.member_1.member_2 * _e849);
+                            if _e833 {
                                 local_5 = array<f32, 56>(0.8732723f, 0.50031143f, 0.7051298f, 0.261884f, 0.79581136f, 0.38665694f, 0.6062196f, 0.11405134f, 0.8887312f, 0.5274526f, 0.72867256f, 0.29448545f, 0.8167736f, 0.41591686f, 0.63161474f, 0.15487643f, 0.8557666f, 0.47269714f, 0.68108714f, 0.22801188f, 0.77407813f, 0.35673028f, 0.58039576f, 0.06768583f, 0.8952564f, 0.5408529f, 0.74024403f, 0.31038457f, 0.8269243f, 0.43031907f, 0.6441499f, 0.17401955f, 0.8647266f, 0.4865651f, 0.6931688f, 0.24512479f, 0.7850342f, 0.37178203f, 0.59336114f, 0.09182964f, 0.8813185f, 0.51393956f, 0.71696603f, 0.27832723f, 0.8063964f, 0.4013655f, 0.618971f, 0.13495624f, 0.84645164f, 0.4587034f, 0.6688883f, 0.21049869f, 0.7629548f, 0.3414897f, 0.56732315f, 0.04020735f);
-                                if _e833 {
+                                if _e828 {
                                 } else {
-                                    phi_2354_ = true;
+                                    phi_2342_ = true;
                                     break;
                                 }
-                                let _e857 = local_5[_e832];
-                                phi_1122_ = _e857;
+                                let _e852 = local_5[_e827];
+                                phi_1115_ = _e852;
                             } else {
-                                phi_1122_ = (_e855 * 2f);
+                                phi_1115_ = (_e850 * 2f);
                             }
-                            let _e860 = phi_1122_;
-                            let _e869 = (-(((_e847 * _e787.member_1.member_9.x) + (_e848 * _e787.member_1.member_9.y))) * _e787.member_1.member_10);
-                            let _e870 = -(_e855);
-                            let _e874 = select(_e870, select(_e855, _e869, (_e869 < _e855)), (_e869 > _e870));
-                            let _e875 = (_e855 - _e874);
-                            let _e877 = (_e875 > (_e855 * 0.2f));
-                            let _e898 = (-0.5f / ((_e787.member_1.member_4.z + (_e787.member_1.member_7.z * _e847)) + (_e787.member_1.member_8.z * _e848)));
-                            let _e901 = (((((_e787.member_1.member_4.x + (_e787.member_1.member_7.x * _e847)) + (_e787.member_1.member_8.x * _e848)) * _e898) / _e586) + 0.5f);
-                            let _e904 = (0.5f - ((((_e787.member_1.member_4.y + (_e787.member_1.member_7.y * _e847)) + (_e787.member_1.member_8.y * _e848)) * _e898) / _e594));
-                            let _e916 = (select(0f, select(1f, _e901, (_e901 < 1f)), (_e901 > 0f)) * _e520);
-                            if (_e916 > 0f) {
-                                let _e922 = select(select(u32(_e916), 0u, (_e916 < 0f)), 4294967295u, (_e916 > 4294967000f));
-                                let _e923 = (_e525 - 1u);
-                                phi_1250_ = select(_e922, _e923, (_e923 < _e922));
+                            let _e855 = phi_1115_;
+                            let _e864 = (-(((_e842 * _e782.member_1.member_9.x) + (_e843 * _e782.member_1.member_9.y))) * _e782.member_1.member_10);
+                            let _e865 = -(_e850);
+                            let _e869 = select(_e865, select(_e850, _e864, (_e864 < _e850)), (_e864 > _e865));
+                            let _e870 = (_e850 - _e869);
+                            let _e872 = (_e870 > (_e850 * 0.2f));
+                            let _e893 = (-0.5f / ((_e782.member_1.member_4.z + (_e782.member_1.member_7.z * _e842)) + (_e782.member_1.member_8.z * _e843)));
+                            let _e896 = (((((_e782.member_1.member_4.x + (_e782.member_1.member_7.x * _e842)) + (_e782.member_1.member_8.x * _e843)) * _e893) / _e582) + 0.5f);
+                            let _e899 = (0.5f - ((((_e782.member_1.member_4.y + (_e782.member_1.member_7.y * _e842)) + (_e782.member_1.member_8.y * _e843)) * _e893) / _e590));
+                            let _e911 = (select(0f, select(1f, _e896, (_e896 < 1f)), (_e896 > 0f)) * _e516);
+                            if (_e911 > 0f) {
+                                let _e917 = select(select(u32(_e911), 0u, (_e911 < 0f)), 4294967295u, (_e911 > 4294967000f));
+                                let _e918 = (_e521 - 1u);
+                                phi_1243_ = select(_e917, _e918, (_e918 < _e917));
                             } else {
-                                phi_1250_ = 0u;
+                                phi_1243_ = 0u;
                             }
-                            let _e927 = phi_1250_;
-                            let _e932 = (select(0f, select(1f, _e904, (_e904 < 1f)), (_e904 > 0f)) * _e533);
-                            if (_e932 > 0f) {
-                                let _e938 = select(select(u32(_e932), 0u, (_e932 < 0f)), 4294967295u, (_e932 > 4294967000f));
-                                let _e939 = (_e538 - 1u);
-                                phi_1281_ = select(_e938, _e939, (_e939 < _e938));
+                            let _e922 = phi_1243_;
+                            let _e927 = (select(0f, select(1f, _e899, (_e899 < 1f)), (_e899 > 0f)) * _e529);
+                            if (_e927 > 0f) {
+                                let _e933 = select(select(u32(_e927), 0u, (_e927 < 0f)), 4294967295u, (_e927 > 4294967000f));
+                                let _e934 = (_e534 - 1u);
+                                phi_1274_ = select(_e933, _e934, (_e934 < _e933));
                             } else {
-                                phi_1281_ = 0u;
+                                phi_1274_ = 0u;
                             }
-                            let _e943 = phi_1281_;
-                            let _e950 = ((_e787.member_1.member_1.x - _e901) * _e520);
-                            let _e951 = ((_e787.member_1.member_1.y - _e904) * _e533);
-                            let _e955 = sqrt(((_e950 * _e950) + (_e951 * _e951)));
-                            let _e962 = select(false, (_e943 == _e787.member_1.member.y), (_e927 == _e787.member_1.member.x));
-                            let _e964 = ((_e943 * _e525) + _e927);
-                            let _e966 = depth.member[_e964];
-                            let _e978 = select(_e616, _e966, select(false, (_e966 < _e616), (_e966 > 0f)));
-                            let _e980 = ((((f32(_e927) + 0.5f) * (1f / _e520)) * 2f) - 1f);
-                            let _e982 = ((((f32(_e943) + 0.5f) * (1f / _e533)) * -2f) + 1f);
-                            let _e988 = (((_e980 * _e978) * _e586) - _e787.member_1.member_4.x);
-                            let _e989 = (((_e982 * _e978) * _e594) - _e787.member_1.member_4.y);
-                            let _e990 = (-(_e978) - _e787.member_1.member_4.z);
-                            let _e999 = (((_e988 * _e787.member_1.member_6.x) + (_e989 * _e787.member_1.member_6.y)) + (_e990 * _e787.member_1.member_6.z));
-                            if _e838 {
-                                let _e1004 = (((_e988 * _e988) + (_e989 * _e989)) + (_e990 * _e990));
-                                let _e1016 = (((((_e787.member_1.member_5.x * _e988) + (_e787.member_1.member_5.y * _e989)) + (_e787.member_1.member_5.z * _e990)) / sqrt(_e1004)) - 0.1f);
-                                let _e1023 = (1f - (_e1004 / (_e562 * _e562)));
-                                let _e1030 = ((select(0f, select(1f, _e1016, (_e1016 < 1f)), (_e1016 > 0f)) * select(0f, select(1f, _e1023, (_e1023 < 1f)), (_e1023 > 0f))) / _e860);
-                                phi_1485_ = select(0f, select(0f, select(1f, _e1030, (_e1030 < 1f)), (_e1030 > 0f)), (_e1004 > 0f));
+                            let _e938 = phi_1274_;
+                            let _e945 = ((_e782.member_1.member_1.x - _e896) * _e516);
+                            let _e946 = ((_e782.member_1.member_1.y - _e899) * _e529);
+                            let _e950 = sqrt(((_e945 * _e945) + (_e946 * _e946)));
+                            let _e957 = select(false, (_e938 == _e782.member_1.member.y), (_e922 == _e782.member_1.member.x));
+                            let _e959 = ((_e938 * _e521) + _e922);
+                            let _e961 = depth.member[_e959];
+                            let _e973 = select(_e612, _e961, select(false, (_e961 < _e612), (_e961 > 0f)));
+                            let _e975 = ((((f32(_e922) + 0.5f) * (1f / _e516)) * 2f) - 1f);
+                            let _e977 = ((((f32(_e938) + 0.5f) * (1f / _e529)) * -2f) + 1f);
+                            let _e983 = (((_e975 * _e973) * _e582) - _e782.member_1.member_4.x);
+                            let _e984 = (((_e977 * _e973) * _e590) - _e782.member_1.member_4.y);
+                            let _e985 = (-(_e973) - _e782.member_1.member_4.z);
+                            let _e994 = (((_e983 * _e782.member_1.member_6.x) + (_e984 * _e782.member_1.member_6.y)) + (_e985 * _e782.member_1.member_6.z));
+                            if _e833 {
+                                let _e999 = (((_e983 * _e983) + (_e984 * _e984)) + (_e985 * _e985));
+                                let _e1011 = (((((_e782.member_1.member_5.x * _e983) + (_e782.member_1.member_5.y * _e984)) + (_e782.member_1.member_5.z * _e985)) / sqrt(_e999)) - 0.1f);
+                                let _e1018 = (1f - (_e999 / (_e558 * _e558)));
+                                let _e1025 = ((select(0f, select(1f, _e1011, (_e1011 < 1f)), (_e1011 > 0f)) * select(0f, select(1f, _e1018, (_e1018 < 1f)), (_e1018 > 0f))) / _e855);
+                                phi_1478_ = select(0f, select(0f, select(1f, _e1025, (_e1025 < 1f)), (_e1025 > 0f)), (_e999 > 0f));
                             } else {
-                                let _e1041 = frame.member[0u].member_1.member.member_3;
-                                if (_e874 != _e874) {
-                                    phi_2190_ = true;
+                                let _e1036 = frame.member[0u].member_1.member.member_3;
+                                if (_e869 != _e869) {
+                                    phi_2178_ = true;
                                 } else {
-                                    phi_2190_ = (_e999 >= _e874);
+                                    phi_2178_ = (_e994 >= _e869);
                                 }
-                                let _e1046 = phi_2190_;
-                                let _e1048 = (_e855 - select(_e874, _e999, _e1046));
-                                if (_e1048 != _e1048) {
-                                    phi_2205_ = true;
+                                let _e1041 = phi_2178_;
+                                let _e1043 = (_e850 - select(_e869, _e994, _e1041));
+                                if (_e1043 != _e1043) {
+                                    phi_2193_ = true;
                                 } else {
-                                    phi_2205_ = (0f >= _e1048);
+                                    phi_2193_ = (0f >= _e1043);
                                 }
-                                let _e1052 = phi_2205_;
-                                let _e1057 = ((_e999 - (_e787.member_1.member_2 * (1f + _e1041))) * (1f / _e855));
-                                phi_1485_ = ((select(_e1048, 0f, _e1052) + (select(0f, select(1f, _e1057, (_e1057 < 1f)), (_e1057 > 0f)) * _e875)) * (0.5f / _e855));
+                                let _e1047 = phi_2193_;
+                                let _e1052 = ((_e994 - (_e782.member_1.member_2 * (1f + _e1036))) * (1f / _e850));
+                                phi_1478_ = ((select(_e1043, 0f, _e1047) + (select(0f, select(1f, _e1052, (_e1052 < 1f)), (_e1052 > 0f)) * _e870)) * (0.5f / _e850));
                             }
-                            let _e1067 = phi_1485_;
-                            let _e1072 = frame.member[0u].member_1.member_9;
-                            if (_e1072 == 0u) {
-                                phi_1717_ = type_41(_e999, _e1067);
+                            let _e1062 = phi_1478_;
+                            let _e1067 = frame.member[0u].member_1.member_9;
+                            if (_e1067 == 0u) {
+                                phi_1710_ = type_41(_e994, _e1062);
                             } else {
-                                if _e838 {
-                                    let _e1075 = (_e787.member_1.member_2 * 0.1f);
-                                    if (_e855 != _e855) {
-                                        phi_2220_ = true;
+                                if _e833 {
+                                    let _e1070 = (_e782.member_1.member_2 * 0.1f);
+                                    if (_e850 != _e850) {
+                                        phi_2208_ = true;
                                     } else {
-                                        phi_2220_ = (_e1075 >= _e855);
+                                        phi_2208_ = (_e1070 >= _e850);
                                     }
-                                    let _e1079 = phi_2220_;
-                                    phi_1508_ = select(_e855, _e1075, _e1079);
+                                    let _e1074 = phi_2208_;
+                                    phi_1501_ = select(_e850, _e1070, _e1074);
                                 } else {
-                                    let _e1086 = frame.member[0u].member_1.member.member_3;
-                                    phi_1508_ = (_e787.member_1.member_2 * (1f + _e1086));
+                                    let _e1081 = frame.member[0u].member_1.member.member_3;
+                                    phi_1501_ = (_e782.member_1.member_2 * (1f + _e1081));
                                 }
-                                let _e1090 = phi_1508_;
-                                let _e1096 = frame.member[0u].member_1.member_3;
-                                let _e1098 = select(false, (_e955 > _e1096), (_e999 > _e1090));
-                                let _e1101 = depth2_.member[_e964];
-                                let _e1105 = select(_e616, _e1101, select(false, (_e1101 < _e616), (_e1101 > 0f)));
-                                let _e1111 = (((_e980 * _e1105) * _e586) - _e787.member_1.member_4.x);
-                                let _e1112 = (((_e982 * _e1105) * _e594) - _e787.member_1.member_4.y);
-                                let _e1113 = (-(_e1105) - _e787.member_1.member_4.z);
-                                let _e1118 = (((_e1111 * _e787.member_1.member_6.x) + (_e1112 * _e787.member_1.member_6.y)) + (_e1113 * _e787.member_1.member_6.z));
-                                if _e838 {
-                                    let _e1123 = (((_e1111 * _e1111) + (_e1112 * _e1112)) + (_e1113 * _e1113));
-                                    let _e1135 = (((((_e787.member_1.member_5.x * _e1111) + (_e787.member_1.member_5.y * _e1112)) + (_e787.member_1.member_5.z * _e1113)) / sqrt(_e1123)) - 0.1f);
-                                    let _e1142 = (1f - (_e1123 / (_e562 * _e562)));
-                                    let _e1149 = ((select(0f, select(1f, _e1135, (_e1135 < 1f)), (_e1135 > 0f)) * select(0f, select(1f, _e1142, (_e1142 < 1f)), (_e1142 > 0f))) / _e860);
-                                    phi_1697_ = select(0f, select(0f, select(1f, _e1149, (_e1149 < 1f)), (_e1149 > 0f)), (_e1123 > 0f));
+                                let _e1085 = phi_1501_;
+                                let _e1091 = frame.member[0u].member_1.member_3;
+                                let _e1093 = select(false, (_e950 > _e1091), (_e994 > _e1085));
+                                let _e1096 = depth2_.member[_e959];
+                                let _e1100 = select(_e612, _e1096, select(false, (_e1096 < _e612), (_e1096 > 0f)));
+                                let _e1106 = (((_e975 * _e1100) * _e582) - _e782.member_1.member_4.x);
+                                let _e1107 = (((_e977 * _e1100) * _e590) - _e782.member_1.member_4.y);
+                                let _e1108 = (-(_e1100) - _e782.member_1.member_4.z);
+                                let _e1113 = (((_e1106 * _e782.member_1.member_6.x) + (_e1107 * _e782.member_1.member_6.y)) + (_e1108 * _e782.member_1.member_6.z));
+                                if _e833 {
+                                    let _e1118 = (((_e1106 * _e1106) + (_e1107 * _e1107)) + (_e1108 * _e1108));
+                                    let _e1130 = (((((_e782.member_1.member_5.x * _e1106) + (_e782.member_1.member_5.y * _e1107)) + (_e782.member_1.member_5.z * _e1108)) / sqrt(_e1118)) - 0.1f);
+                                    let _e1137 = (1f - (_e1118 / (_e558 * _e558)));
+                                    let _e1144 = ((select(0f, select(1f, _e1130, (_e1130 < 1f)), (_e1130 > 0f)) * select(0f, select(1f, _e1137, (_e1137 < 1f)), (_e1137 > 0f))) / _e855);
+                                    phi_1690_ = select(0f, select(0f, select(1f, _e1144, (_e1144 < 1f)), (_e1144 > 0f)), (_e1118 > 0f));
                                 } else {
-                                    let _e1160 = frame.member[0u].member_1.member.member_3;
-                                    if (_e874 != _e874) {
-                                        phi_2235_ = true;
+                                    let _e1155 = frame.member[0u].member_1.member.member_3;
+                                    if (_e869 != _e869) {
+                                        phi_2223_ = true;
                                     } else {
-                                        phi_2235_ = (_e1118 >= _e874);
+                                        phi_2223_ = (_e1113 >= _e869);
                                     }
-                                    let _e1165 = phi_2235_;
-                                    let _e1167 = (_e855 - select(_e874, _e1118, _e1165));
-                                    if (_e1167 != _e1167) {
-                                        phi_2250_ = true;
+                                    let _e1160 = phi_2223_;
+                                    let _e1162 = (_e850 - select(_e869, _e1113, _e1160));
+                                    if (_e1162 != _e1162) {
+                                        phi_2238_ = true;
                                     } else {
-                                        phi_2250_ = (0f >= _e1167);
+                                        phi_2238_ = (0f >= _e1162);
                                     }
-                                    let _e1171 = phi_2250_;
-                                    let _e1176 = ((_e1118 - (_e787.member_1.member_2 * (1f + _e1160))) * (1f / _e855));
-                                    phi_1697_ = ((select(_e1167, 0f, _e1171) + (select(0f, select(1f, _e1176, (_e1176 < 1f)), (_e1176 > 0f)) * _e875)) * (0.5f / _e855));
+                                    let _e1166 = phi_2238_;
+                                    let _e1171 = ((_e1113 - (_e782.member_1.member_2 * (1f + _e1155))) * (1f / _e850));
+                                    phi_1690_ = ((select(_e1162, 0f, _e1166) + (select(0f, select(1f, _e1171, (_e1171 < 1f)), (_e1171 > 0f)) * _e870)) * (0.5f / _e850));
                                 }
-                                let _e1186 = phi_1697_;
-                                if (_e999 != _e999) {
-                                    phi_2265_ = true;
+                                let _e1181 = phi_1690_;
+                                if (_e994 != _e994) {
+                                    phi_2253_ = true;
                                 } else {
-                                    phi_2265_ = (_e1118 <= _e999);
+                                    phi_2253_ = (_e1113 <= _e994);
                                 }
-                                let _e1190 = phi_2265_;
-                                if _e838 {
-                                    if (_e1067 != _e1067) {
-                                        phi_2280_ = true;
+                                let _e1185 = phi_2253_;
+                                if _e833 {
+                                    if (_e1062 != _e1062) {
+                                        phi_2268_ = true;
                                     } else {
-                                        phi_2280_ = (_e1186 >= _e1067);
+                                        phi_2268_ = (_e1181 >= _e1062);
                                     }
-                                    let _e1196 = phi_2280_;
-                                    phi_1711_ = select(_e1067, _e1186, _e1196);
+                                    let _e1191 = phi_2268_;
+                                    phi_1704_ = select(_e1062, _e1181, _e1191);
                                 } else {
-                                    if (_e1067 != _e1067) {
-                                        phi_2295_ = true;
+                                    if (_e1062 != _e1062) {
+                                        phi_2283_ = true;
                                     } else {
-                                        phi_2295_ = (_e1186 <= _e1067);
+                                        phi_2283_ = (_e1181 <= _e1062);
                                     }
-                                    let _e1201 = phi_2295_;
-                                    phi_1711_ = select(_e1067, _e1186, _e1201);
+                                    let _e1196 = phi_2283_;
+                                    phi_1704_ = select(_e1062, _e1181, _e1196);
                                 }
-                                let _e1204 = phi_1711_;
-                                phi_1717_ = type_41(select(_e999, select(_e999, _e1118, _e1190), _e1098), select(_e1067, _e1204, _e1098));
+                                let _e1199 = phi_1704_;
+                                phi_1710_ = type_41(select(_e994, select(_e994, _e1113, _e1185), _e1093), select(_e1062, _e1199, _e1093));
                             }
-                            let _e1208 = phi_1717_;
-                            if _e838 {
-                                phi_1733_ = 0f;
+                            let _e1203 = phi_1710_;
+                            if _e833 {
+                                phi_1726_ = 0f;
                             } else {
-                                phi_1733_ = (_e875 / (_e855 * 2f));
+                                phi_1726_ = (_e870 / (_e850 * 2f));
                             }
-                            let _e1214 = phi_1733_;
-                            if (_e823 == 2u) {
-                                phi_1753_ = true;
+                            let _e1209 = phi_1726_;
+                            if (_e818 == 2u) {
+                                phi_1746_ = true;
                             } else {
-                                if _e824 {
-                                    let _e1222 = frame.member[0u].member_1.member_4;
-                                    phi_1752_ = (_e1222 > 0u);
+                                if _e819 {
+                                    let _e1217 = frame.member[0u].member_1.member_4;
+                                    phi_1745_ = (_e1217 > 0u);
                                 } else {
-                                    phi_1752_ = false;
+                                    phi_1745_ = false;
                                 }
-                                let _e1225 = phi_1752_;
-                                phi_1753_ = _e1225;
+                                let _e1220 = phi_1745_;
+                                phi_1746_ = _e1220;
                             }
-                            let _e1227 = phi_1753_;
-                            let _e1228 = select(false, _e1227, !(select(false, select(false, (_e904 <= 1f), (_e904 >= 0f)), select(false, (_e901 <= 1f), (_e901 >= 0f)))));
-                            if _e824 {
-                                phi_1765_ = select(_e1208.member, 0x1.fffffep+127f, _e1228);
+                            let _e1222 = phi_1746_;
+                            let _e1223 = select(false, _e1222, !(select(false, select(false, (_e899 <= 1f), (_e899 >= 0f)), select(false, (_e896 <= 1f), (_e896 >= 0f)))));
+                            if _e819 {
+                                phi_1758_ = select(_e1203.member, 0x1.fffffep+127f, _e1223);
                             } else {
-                                phi_1765_ = _e1208.member;
+                                phi_1758_ = _e1203.member;
                             }
-                            let _e1231 = phi_1765_;
-                            if _e838 {
-                                let _e1233 = (_e787.member_1.member_2 * 0.1f);
-                                if (_e855 != _e855) {
-                                    phi_2310_ = true;
+                            let _e1226 = phi_1758_;
+                            if _e833 {
+                                let _e1228 = (_e782.member_1.member_2 * 0.1f);
+                                if (_e850 != _e850) {
+                                    phi_2298_ = true;
                                 } else {
-                                    phi_2310_ = (_e1233 >= _e855);
+                                    phi_2298_ = (_e1228 >= _e850);
                                 }
-                                let _e1237 = phi_2310_;
-                                phi_1784_ = select(_e855, _e1233, _e1237);
+                                let _e1232 = phi_2298_;
+                                phi_1777_ = select(_e850, _e1228, _e1232);
                             } else {
-                                let _e1244 = frame.member[0u].member_1.member.member_3;
-                                phi_1784_ = (_e787.member_1.member_2 * (1f + _e1244));
+                                let _e1239 = frame.member[0u].member_1.member.member_3;
+                                phi_1777_ = (_e782.member_1.member_2 * (1f + _e1239));
                             }
-                            let _e1248 = phi_1784_;
-                            let _e1254 = frame.member[0u].member_1.member_3;
-                            if select(false, select(false, select(select(false, (_e955 > _e1254), (_e1231 > _e1248)), true, _e1228), (_e823 != 0u)), select(false, !(_e962), _e877)) {
-                                if (_e823 != 1u) {
+                            let _e1243 = phi_1777_;
+                            let _e1249 = frame.member[0u].member_1.member_3;
+                            if select(false, select(false, select(select(false, (_e950 > _e1249), (_e1226 > _e1243)), true, _e1223), (_e818 != 0u)), select(false, !(_e957), _e872)) {
+                                if (_e818 != 1u) {
                                 } else {
-                                    let _e1273 = frame.member[0u].member_1.member_5[0u];
-                                    let _e1279 = frame.member[0u].member_1.member_5[1u];
-                                    let _e1286 = frame.member[0u].member_1.member_4;
-                                    let _e1287 = f32(_e1286);
-                                    let _e1288 = (2u * _e1286);
-                                    let _e1289 = (_e1273 + _e1288);
-                                    let _e1295 = (floor((_e901 * f32(_e1273))) + _e1287);
-                                    let _e1296 = f32((_e1289 - 1u));
-                                    let _e1300 = select(0f, select(_e1296, _e1295, (_e1295 < _e1296)), (_e1295 > 0f));
-                                    let _e1303 = (floor((_e904 * f32(_e1279))) + _e1287);
-                                    let _e1304 = f32(((_e1279 + _e1288) - 1u));
-                                    let _e1308 = select(0f, select(_e1304, _e1303, (_e1303 < _e1304)), (_e1303 > 0f));
-                                    let _e1320 = ((select(select(u32(_e1308), 0u, (_e1308 < 0f)), 4294967295u, (_e1308 > 4294967000f)) * _e1289) + select(select(u32(_e1300), 0u, (_e1300 < 0f)), 4294967295u, (_e1300 > 4294967000f)));
-                                    let _e1325 = frame.member[0u].member_1.member_2;
-                                    if (_e1325 == 0u) {
-                                        if (_e1320 < _e500) {
+                                    let _e1268 = frame.member[0u].member_1.member_5[0u];
+                                    let _e1274 = frame.member[0u].member_1.member_5[1u];
+                                    let _e1281 = frame.member[0u].member_1.member_4;
+                                    let _e1282 = f32(_e1281);
+                                    let _e1283 = (2u * _e1281);
+                                    let _e1284 = (_e1268 + _e1283);
+                                    let _e1290 = (floor((_e896 * f32(_e1268))) + _e1282);
+                                    let _e1291 = f32((_e1284 - 1u));
+                                    let _e1295 = select(0f, select(_e1291, _e1290, (_e1290 < _e1291)), (_e1290 > 0f));
+                                    let _e1298 = (floor((_e899 * f32(_e1274))) + _e1282);
+                                    let _e1299 = f32(((_e1274 + _e1283) - 1u));
+                                    let _e1303 = select(0f, select(_e1299, _e1298, (_e1298 < _e1299)), (_e1298 > 0f));
+                                    let _e1315 = ((select(select(u32(_e1303), 0u, (_e1303 < 0f)), 4294967295u, (_e1303 > 4294967000f)) * _e1284) + select(select(u32(_e1295), 0u, (_e1295 < 0f)), 4294967295u, (_e1295 > 4294967000f)));
+                                    let _e1320 = frame.member[0u].member_1.member_2;
+                                    if (_e1320 == 0u) {
+                                        if (_e1315 < _e496) {
                                         } else {
-                                            phi_2354_ = true;
+                                            phi_2342_ = true;
                                             break;
                                         }
-                                        let _e1330 = atomicMax((&ray_max.member[_e1320]), 1u);
+                                        let _e1325 = atomicMax((&ray_max.member[_e1315]), 1u);
                                     } else {
-                                        if _e838 {
-                                            if (_e1231 != _e1231) {
-                                                phi_2325_ = true;
+                                        if _e833 {
+                                            if (_e1226 != _e1226) {
+                                                phi_2313_ = true;
                                             } else {
-                                                phi_2325_ = (_e855 <= _e1231);
+                                                phi_2313_ = (_e850 <= _e1226);
                                             }
-                                            let _e1334 = phi_2325_;
-                                            phi_1936_ = select(_e1231, _e855, _e1334);
+                                            let _e1329 = phi_2313_;
+                                            phi_1929_ = select(_e1226, _e850, _e1329);
                                         } else {
-                                            let _e1341 = frame.member[0u].member_1.member.member_3;
-                                            let _e1344 = (((1f + _e1341) * _e787.member_1.member_2) + _e855);
-                                            if (_e1231 != _e1231) {
-                                                phi_2340_ = true;
+                                            let _e1336 = frame.member[0u].member_1.member.member_3;
+                                            let _e1339 = (((1f + _e1336) * _e782.member_1.member_2) + _e850);
+                                            if (_e1226 != _e1226) {
+                                                phi_2328_ = true;
                                             } else {
-                                                phi_2340_ = (_e1344 <= _e1231);
+                                                phi_2328_ = (_e1339 <= _e1226);
                                             }
-                                            let _e1348 = phi_2340_;
-                                            phi_1936_ = select(_e1231, _e1344, _e1348);
+                                            let _e1343 = phi_2328_;
+                                            phi_1929_ = select(_e1226, _e1339, _e1343);
+                                        }
+                                        let _e1346 = phi_1929_;
+                                        let _e1347 = (_e796 - _e1346);
+                                        if (_e1347 > 0f) {
+                                            phi_1936_ = bitcast<u32>(_e1347);
+                                        } else {
+                                            phi_1936_ = 0u;
                                         }
                                         let _e1351 = phi_1936_;
-                                        let _e1352 = (_e801 - _e1351);
-                                        if (_e1352 > 0f) {
-                                            phi_1943_ = bitcast<u32>(_e1352);
+                                        if (_e1315 < arrayLength((&ray_min.member))) {
                                         } else {
-                                            phi_1943_ = 0u;
-                                        }
-                                        let _e1356 = phi_1943_;
-                                        if (_e1320 < arrayLength((&ray_min.member))) {
-                                        } else {
-                                            phi_2354_ = true;
+                                            phi_2342_ = true;
                                             break;
                                         }
-                                        let _e1360 = atomicMin((&ray_min.member[_e1320]), _e1356);
-                                        let _e1361 = (_e801 - _e874);
-                                        if (_e1361 > 0f) {
-                                            phi_1957_ = bitcast<u32>(_e1361);
+                                        let _e1355 = atomicMin((&ray_min.member[_e1315]), _e1351);
+                                        let _e1356 = (_e796 - _e869);
+                                        if (_e1356 > 0f) {
+                                            phi_1950_ = bitcast<u32>(_e1356);
                                         } else {
-                                            phi_1957_ = 0u;
+                                            phi_1950_ = 0u;
                                         }
-                                        let _e1365 = phi_1957_;
-                                        if (_e1320 < _e500) {
+                                        let _e1360 = phi_1950_;
+                                        if (_e1315 < _e496) {
                                         } else {
-                                            phi_2354_ = true;
+                                            phi_2342_ = true;
                                             break;
                                         }
-                                        let _e1369 = atomicMax((&ray_max.member[_e1320]), _e1365);
+                                        let _e1364 = atomicMax((&ray_max.member[_e1315]), _e1360);
                                     }
                                 }
-                                phi_1965_ = (_e805 | (1u << bitcast<u32>((_e803 & 31u))));
+                                phi_1958_ = (_e800 | (1u << bitcast<u32>((_e798 & 31u))));
                             } else {
-                                phi_1965_ = _e805;
+                                phi_1958_ = _e800;
                             }
-                            let _e1371 = phi_1965_;
-                            phi_1015_ = (_e803 + 1u);
-                            phi_1018_ = _e1371;
-                            phi_1020_ = (_e807 + select(0f, select(_e1208.member_1, _e1214, _e962), _e877));
+                            let _e1366 = phi_1958_;
+                            phi_1008_ = (_e798 + 1u);
+                            phi_1011_ = _e1366;
+                            phi_1013_ = (_e802 + select(0f, select(_e1203.member_1, _e1209, _e957), _e872));
                         } else {
-                            phi_1015_ = u32();
-                            phi_1018_ = u32();
-                            phi_1020_ = f32();
+                            phi_1008_ = u32();
+                            phi_1011_ = u32();
+                            phi_1013_ = f32();
                         }
-                        let _e1374 = phi_1015_;
-                        let _e1376 = phi_1018_;
-                        let _e1378 = phi_1020_;
+                        let _e1369 = phi_1008_;
+                        let _e1371 = phi_1011_;
+                        let _e1373 = phi_1013_;
                         continue;
                         continuing {
-                            phi_1014_ = _e1374;
-                            phi_1017_ = _e1376;
-                            phi_1019_ = _e1378;
-                            phi_2354_ = false;
-                            break if !(_e818);
+                            phi_1007_ = _e1369;
+                            phi_1010_ = _e1371;
+                            phi_1012_ = _e1373;
+                            phi_2342_ = false;
+                            break if !(_e813);
                         }
                     }
-                    let _e1381 = phi_2354_;
-                    if _e1381 {
+                    let _e1376 = phi_2342_;
+                    if _e1376 {
                         break;
                     }
-                    let _e1386 = frame.member[0u].member_1.member_10;
-                    let _e1387 = (_e1386 == 1u);
-                    let _e1390 = local_7;
-                    let _e1394 = local_8;
-                    let _e1395 = ((select(2f, 1f, _e1387) / f32(_e1390)) * _e1394);
-                    let _e1397 = local_9;
-                    if (_e1397 == 0u) {
-                        if _e1387 {
-                            phi_1998_ = (1f - (2f * _e1395));
+                    let _e1381 = frame.member[0u].member_1.member_10;
+                    let _e1382 = (_e1381 == 1u);
+                    let _e1385 = local_7;
+                    let _e1389 = local_8;
+                    let _e1390 = ((select(2f, 1f, _e1382) / f32(_e1385)) * _e1389);
+                    let _e1392 = local_9;
+                    if (_e1392 == 0u) {
+                        if _e1382 {
+                            phi_1991_ = (1f - (2f * _e1390));
                         } else {
-                            phi_1998_ = _e1395;
+                            phi_1991_ = _e1390;
                         }
-                        let _e1402 = phi_1998_;
-                        let _e1412 = frame.member[0u].member_1.member.member_2;
-                        let _e1415 = local_10;
-                        phi_2027_ = type_42(pow(select(0f, select(1f, _e1402, (_e1402 < 1f)), (_e1402 > 0f)), _e1412), _e1415);
+                        let _e1397 = phi_1991_;
+                        let _e1407 = frame.member[0u].member_1.member.member_2;
+                        let _e1410 = local_10;
+                        phi_2020_ = type_42(pow(select(0f, select(1f, _e1397, (_e1397 < 1f)), (_e1397 > 0f)), _e1407), _e1410);
                     } else {
-                        let _e1425 = local_11;
-                        phi_2027_ = type_42((round((select(0f, select(1f, _e1395, (_e1395 < 1f)), (_e1395 > 0f)) * 255f)) * 0.003921569f), _e1425);
+                        let _e1420 = local_11;
+                        phi_2020_ = type_42((round((select(0f, select(1f, _e1390, (_e1390 < 1f)), (_e1390 > 0f)) * 255f)) * 0.003921569f), _e1420);
                     }
-                    let _e1428 = phi_2027_;
-                    phi_2032_ = _e1428;
+                    let _e1423 = phi_2020_;
+                    phi_2025_ = _e1423;
                 } else {
-                    phi_2032_ = type_42(1f, 0u);
+                    phi_2025_ = type_42(1f, 0u);
                 }
-                let _e1430 = phi_2032_;
-                if (_e576 < arrayLength((&ao.member))) {
-                } else {
-                    break;
-                }
-                ao.member[_e576] = _e1430.member;
-                if (_e576 < arrayLength((&mask.member))) {
+                let _e1425 = phi_2025_;
+                ao.member[_e572] = _e1425.member;
+                if (_e572 < arrayLength((&mask.member))) {
                 } else {
                     break;
                 }
-                mask.member[_e576] = _e1430.member_1;
+                mask.member[_e572] = _e1425.member_1;
             }
             break;
         }

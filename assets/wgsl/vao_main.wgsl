@@ -61,268 +61,260 @@ fn function_() {
     var local_1: array<f32, 56>;
     var local_2: array<f32, 56>;
     var local_3: array<array<array<f32, 2>, 4>, 4>;
-    var phi_592_: bool;
+    var phi_591_: bool;
+    var phi_593_: bool;
     var phi_594_: bool;
     var phi_595_: bool;
     var phi_596_: bool;
-    var phi_597_: bool;
-    var phi_1457_: bool;
-    var phi_1472_: bool;
-    var phi_1433_: vec2<f32>;
-    var phi_1487_: bool;
-    var phi_858_: type_35;
-    var phi_867_: u32;
-    var phi_870_: f32;
-    var phi_1075_: u32;
-    var phi_1106_: u32;
-    var phi_1502_: bool;
-    var phi_1517_: bool;
-    var phi_868_: u32;
-    var phi_871_: f32;
-    var phi_1531_: bool;
+    var phi_1445_: bool;
+    var phi_1460_: bool;
+    var phi_1421_: vec2<f32>;
+    var phi_1475_: bool;
+    var phi_865_: type_35;
+    var phi_874_: u32;
+    var phi_877_: f32;
+    var phi_1082_: u32;
+    var phi_1113_: u32;
+    var phi_1490_: bool;
+    var phi_1505_: bool;
+    var phi_875_: u32;
+    var phi_878_: f32;
+    var phi_1519_: bool;
     var local_4: f32;
-    var phi_1269_: f32;
+    var phi_1276_: f32;
 
     switch bitcast<i32>(0u) {
         default: {
             let _e299 = id_1;
-            let _e311 = params.member.member.member_4;
-            let _e312 = (_e299.x + _e311);
-            let _e313 = (_e299.y + _e311);
-            let _e318 = params.member.member.member[0u];
-            let _e323 = select(select(u32(_e318), 0u, (_e318 < 0f)), 4294967295u, (_e318 > 4294967000f));
-            let _e328 = params.member.member.member[1u];
-            let _e333 = select(select(u32(_e328), 0u, (_e328 < 0f)), 4294967295u, (_e328 > 4294967000f));
-            if (_e312 >= _e311) {
-                if (_e313 >= _e311) {
-                    let _e337 = ((_e312 + _e311) < _e323);
-                    if _e337 {
-                        phi_592_ = ((_e313 + _e311) < _e333);
+            let _e307 = params.member.member.member_4;
+            let _e308 = (_e299.x + _e307);
+            let _e309 = (_e299.y + _e307);
+            let _e314 = params.member.member.member[0u];
+            let _e319 = select(select(u32(_e314), 0u, (_e314 < 0f)), 4294967295u, (_e314 > 4294967000f));
+            let _e324 = params.member.member.member[1u];
+            let _e329 = select(select(u32(_e324), 0u, (_e324 < 0f)), 4294967295u, (_e324 > 4294967000f));
+            if (_e308 >= _e307) {
+                if (_e309 >= _e307) {
+                    let _e333 = ((_e308 + _e307) < _e319);
+                    if _e333 {
+                        phi_591_ = ((_e309 + _e307) < _e329);
                     } else {
-                        phi_592_ = bool();
+                        phi_591_ = bool();
                     }
-                    let _e341 = phi_592_;
-                    phi_594_ = _e341;
-                    phi_595_ = select(true, false, _e337);
+                    let _e337 = phi_591_;
+                    phi_593_ = _e337;
+                    phi_594_ = select(true, false, _e333);
                 } else {
-                    phi_594_ = bool();
-                    phi_595_ = true;
+                    phi_593_ = bool();
+                    phi_594_ = true;
                 }
-                let _e344 = phi_594_;
-                let _e346 = phi_595_;
-                phi_596_ = _e344;
-                phi_597_ = _e346;
+                let _e340 = phi_593_;
+                let _e342 = phi_594_;
+                phi_595_ = _e340;
+                phi_596_ = _e342;
             } else {
-                phi_596_ = bool();
-                phi_597_ = true;
+                phi_595_ = bool();
+                phi_596_ = true;
             }
-            let _e348 = phi_596_;
-            let _e350 = phi_597_;
-            if select(_e348, false, _e350) {
-                let _e354 = params.member.member_1;
-                let _e357 = params.member.member_4;
-                let _e360 = ((f32(_e312) + 0.5f) / _e318);
-                let _e363 = ((f32(_e313) + 0.5f) / _e328);
-                let _e365 = ((_e313 * _e323) + _e312);
-                let _e367 = depth.member[_e365];
-                let _e372 = params.member.member.member_1[0u];
-                let _e377 = params.member.member.member_1[1u];
-                let _e387 = ((((_e354 * _e318) / (_e367 * (2f * _e372))) + ((_e354 * _e328) / (_e367 * (2f * _e377)))) * 0.5f);
-                let _e388 = (_e387 > _e357);
-                let _e392 = select(_e387, _e357, _e388);
-                let _e396 = params.member.member.member_3;
-                let _e408 = ((((_e360 * 2f) - 1f) * _e367) * _e372);
-                let _e410 = ((((_e363 * -2f) + 1f) * _e367) * _e377);
-                let _e411 = -(_e367);
-                if (_e365 < arrayLength((&normals.member))) {
+            let _e344 = phi_595_;
+            let _e346 = phi_596_;
+            if select(_e344, false, _e346) {
+                let _e349 = ((_e309 * _e319) + _e308);
+                let _e352 = params.member.member_1;
+                let _e355 = params.member.member_4;
+                let _e358 = ((f32(_e308) + 0.5f) / _e314);
+                let _e361 = ((f32(_e309) + 0.5f) / _e324);
+                let _e363 = depth.member[_e349];
+                let _e368 = params.member.member.member_1[0u];
+                let _e373 = params.member.member.member_1[1u];
+                let _e383 = ((((_e352 * _e314) / (_e363 * (2f * _e368))) + ((_e352 * _e324) / (_e363 * (2f * _e373)))) * 0.5f);
+                let _e384 = (_e383 > _e355);
+                let _e388 = select(_e383, _e355, _e384);
+                let _e392 = params.member.member.member_3;
+                let _e404 = ((((_e358 * 2f) - 1f) * _e363) * _e368);
+                let _e406 = ((((_e361 * -2f) + 1f) * _e363) * _e373);
+                let _e407 = -(_e363);
+                let _e410 = normals.member[_e349];
+                let _e418 = (f32((bitcast<i32>(((_e410 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                if (_e418 != _e418) {
+                    phi_1445_ = true;
                 } else {
-                    break;
+                    phi_1445_ = (-1f >= _e418);
                 }
-                let _e415 = normals.member[_e365];
-                let _e423 = (f32((bitcast<i32>(((_e415 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                if (_e423 != _e423) {
-                    phi_1457_ = true;
+                let _e422 = phi_1445_;
+                let _e423 = select(_e418, -1f, _e422);
+                let _e433 = (f32((bitcast<i32>((((_e410 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                if (_e433 != _e433) {
+                    phi_1460_ = true;
                 } else {
-                    phi_1457_ = (-1f >= _e423);
+                    phi_1460_ = (-1f >= _e433);
                 }
-                let _e427 = phi_1457_;
-                let _e428 = select(_e423, -1f, _e427);
-                let _e438 = (f32((bitcast<i32>((((_e415 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                if (_e438 != _e438) {
-                    phi_1472_ = true;
+                let _e437 = phi_1460_;
+                let _e438 = select(_e433, -1f, _e437);
+                let _e441 = (1f - abs(_e423));
+                let _e442 = abs(_e438);
+                let _e443 = (_e441 - _e442);
+                if (_e443 < 0f) {
+                    phi_1421_ = vec2<f32>(((1f - _e442) * select(1f, -1f, (_e423 < 0f))), (_e441 * select(1f, -1f, (_e438 < 0f))));
                 } else {
-                    phi_1472_ = (-1f >= _e438);
+                    phi_1421_ = vec2<f32>(_e423, _e438);
                 }
-                let _e442 = phi_1472_;
-                let _e443 = select(_e438, -1f, _e442);
-                let _e446 = (1f - abs(_e428));
-                let _e447 = abs(_e443);
-                let _e448 = (_e446 - _e447);
-                if (_e448 < 0f) {
-                    phi_1433_ = vec2<f32>(((1f - _e447) * select(1f, -1f, (_e428 < 0f))), (_e446 * select(1f, -1f, (_e443 < 0f))));
-                } else {
-                    phi_1433_ = vec2<f32>(_e428, _e443);
-                }
-                let _e459 = phi_1433_;
-                let _e468 = (1f / sqrt((((_e459.x * _e459.x) + (_e459.y * _e459.y)) + (_e448 * _e448))));
-                let _e469 = (_e459.x * _e468);
-                let _e470 = (_e459.y * _e468);
-                let _e471 = (_e448 * _e468);
-                let _e477 = ((((_e408 * _e469) + (_e410 * _e470)) + (_e411 * _e471)) > 0f);
-                let _e481 = select(_e469, -(_e469), _e477);
-                let _e482 = select(_e470, -(_e470), _e477);
-                let _e483 = select(_e471, -(_e471), _e477);
+                let _e454 = phi_1421_;
+                let _e463 = (1f / sqrt((((_e454.x * _e454.x) + (_e454.y * _e454.y)) + (_e443 * _e443))));
+                let _e464 = (_e454.x * _e463);
+                let _e465 = (_e454.y * _e463);
+                let _e466 = (_e443 * _e463);
+                let _e472 = ((((_e404 * _e464) + (_e406 * _e465)) + (_e407 * _e466)) > 0f);
+                let _e476 = select(_e464, -(_e464), _e472);
+                let _e477 = select(_e465, -(_e465), _e472);
+                let _e478 = select(_e466, -(_e466), _e472);
                 local_3 = array<array<array<f32, 2>, 4>, 4>(array<array<f32, 2>, 4>(array<f32, 2>(0f, 1f), array<f32, 2>(0.012909942f, -0.9999167f), array<f32, 2>(0.69159436f, 0.7222861f), array<f32, 2>(-0.7000154f, -0.7141277f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.99997514f, -0.0070477454f), array<f32, 2>(0.9998238f, 0.018771695f), array<f32, 2>(-0.7100116f, 0.70418996f), array<f32, 2>(0.7182193f, -0.6958169f)), array<array<f32, 2>, 4>(array<f32, 2>(0.91594595f, 0.40130165f), array<f32, 2>(-0.92058814f, -0.39053485f), array<f32, 2>(0.36117664f, 0.93249744f), array<f32, 2>(-0.3720851f, -0.92819864f)), array<array<f32, 2>, 4>(array<f32, 2>(-0.38513124f, 0.9228618f), array<f32, 2>(0.39592505f, -0.9182828f), array<f32, 2>(-0.9260013f, 0.37752023f), array<f32, 2>(0.930364f, -0.36663717f)));
-                let _e485 = (_e313 % 4u);
-                if (_e485 < 4u) {
+                let _e480 = (_e309 % 4u);
+                if (_e480 < 4u) {
                 } else {
                     break;
                 }
-                let _e487 = (_e312 % 4u);
-                if (_e487 < 4u) {
+                let _e482 = (_e308 % 4u);
+                if (_e482 < 4u) {
                 } else {
                     break;
                 }
-                let _e491 = local_3[_e485][_e487];
-                let _e501 = sqrt((((_e408 * _e408) + (_e410 * _e410)) + (_e411 * _e411)));
-                let _e502 = (-(_e408) / _e501);
-                let _e503 = (-(_e410) / _e501);
-                let _e504 = (_e367 / _e501);
-                let _e507 = -((_e491[1] * _e504));
-                let _e508 = (_e504 * _e491[0]);
-                let _e511 = ((_e502 * _e491[1]) - (_e491[0] * _e503));
-                let _e518 = (1f / sqrt((((_e507 * _e507) + (_e508 * _e508)) + (_e511 * _e511))));
-                let _e519 = (_e507 * _e518);
-                let _e520 = (_e508 * _e518);
-                let _e521 = (_e511 * _e518);
-                let _e525 = ((_e520 * _e504) - (_e503 * _e521));
-                let _e528 = ((_e521 * _e502) - (_e504 * _e519));
-                let _e531 = ((_e519 * _e503) - (_e502 * _e520));
-                let _e547 = (((_e481 * _e502) + (_e482 * _e503)) + (_e483 * _e504));
-                let _e551 = abs(_e547);
-                if (_e551 != _e551) {
-                    phi_1487_ = true;
+                let _e486 = local_3[_e480][_e482];
+                let _e496 = sqrt((((_e404 * _e404) + (_e406 * _e406)) + (_e407 * _e407)));
+                let _e497 = (-(_e404) / _e496);
+                let _e498 = (-(_e406) / _e496);
+                let _e499 = (_e363 / _e496);
+                let _e502 = -((_e486[1] * _e499));
+                let _e503 = (_e499 * _e486[0]);
+                let _e506 = ((_e497 * _e486[1]) - (_e486[0] * _e498));
+                let _e513 = (1f / sqrt((((_e502 * _e502) + (_e503 * _e503)) + (_e506 * _e506))));
+                let _e514 = (_e502 * _e513);
+                let _e515 = (_e503 * _e513);
+                let _e516 = (_e506 * _e513);
+                let _e520 = ((_e515 * _e499) - (_e498 * _e516));
+                let _e523 = ((_e516 * _e497) - (_e499 * _e514));
+                let _e526 = ((_e514 * _e498) - (_e497 * _e515));
+                let _e542 = (((_e476 * _e497) + (_e477 * _e498)) + (_e478 * _e499));
+                let _e546 = abs(_e542);
+                if (_e546 != _e546) {
+                    phi_1475_ = true;
                 } else {
-                    phi_1487_ = (0.0001f >= _e551);
+                    phi_1475_ = (0.0001f >= _e546);
                 }
-                let _e555 = phi_1487_;
-                if select(false, !((_e392 < 0.5f)), select(false, (_e367 < _e396), (_e367 > 0f))) {
-                    phi_858_ = type_35(1u, type_34(vec2<u32>(_e312, _e313), vec2<f32>(_e360, _e363), select(_e354, ((_e354 * _e357) / _e387), _e388), _e392, vec3<f32>(_e408, _e410, _e411), vec3<f32>(_e481, _e482, _e483), vec3<f32>(_e502, _e503, _e504), vec3<f32>(_e525, _e528, _e531), vec3<f32>(_e519, _e520, _e521), vec3<f32>((((_e481 * _e525) + (_e482 * _e528)) + (_e483 * _e531)), (((_e481 * _e519) + (_e482 * _e520)) + (_e483 * _e521)), _e547), (1f / (select(1f, -1f, (_e547 < 0f)) * select(_e551, 0.0001f, _e555)))));
+                let _e550 = phi_1475_;
+                if select(false, !((_e388 < 0.5f)), select(false, (_e363 < _e392), (_e363 > 0f))) {
+                    phi_865_ = type_35(1u, type_34(vec2<u32>(_e308, _e309), vec2<f32>(_e358, _e361), select(_e352, ((_e352 * _e355) / _e383), _e384), _e388, vec3<f32>(_e404, _e406, _e407), vec3<f32>(_e476, _e477, _e478), vec3<f32>(_e497, _e498, _e499), vec3<f32>(_e520, _e523, _e526), vec3<f32>(_e514, _e515, _e516), vec3<f32>((((_e476 * _e520) + (_e477 * _e523)) + (_e478 * _e526)), (((_e476 * _e514) + (_e477 * _e515)) + (_e478 * _e516)), _e542), (1f / (select(1f, -1f, (_e542 < 0f)) * select(_e546, 0.0001f, _e550)))));
                 } else {
-                    phi_858_ = type_35(0u, type_35().member_1);
+                    phi_865_ = type_35(0u, type_35().member_1);
                 }
-                let _e567 = phi_858_;
-                if (bitcast<i32>(_e567.member) != 0i) {
-                    phi_867_ = 0u;
-                    phi_870_ = 0f;
+                let _e562 = phi_865_;
+                if (bitcast<i32>(_e562.member) != 0i) {
+                    phi_874_ = 0u;
+                    phi_877_ = 0f;
                     loop {
-                        let _e573 = phi_867_;
-                        let _e575 = phi_870_;
-                        local_4 = _e575;
-                        let _e576 = (_e573 < 8u);
-                        if _e576 {
+                        let _e568 = phi_874_;
+                        let _e570 = phi_877_;
+                        local_4 = _e570;
+                        let _e571 = (_e568 < 8u);
+                        if _e571 {
                             local = array<array<f32, 2>, 56>(array<f32, 2>(0f, 1f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(0f, 1f), array<f32, 2>(0.382615f, 0.9239079f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.92379445f, 0.38288876f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.92402124f, -0.3823412f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.38316247f, -0.92368096f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.38206735f, -0.9241345f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.92356735f, -0.38343617f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.9242476f, 0.3817935f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(-0.38370985f, 0.9234537f), array<f32, 2>(0f, 1f), array<f32, 2>(0.195054f, 0.9807925f), array<f32, 2>(0.382615f, 0.9239079f), array<f32, 2>(0.55547786f, 0.83153135f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.8313667f, 0.5557242f), array<f32, 2>(0.92379445f, 0.38288876f), array<f32, 2>(0.98073465f, 0.19534461f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.9808503f, -0.19476335f), array<f32, 2>(0.92402124f, -0.3823412f), array<f32, 2>(0.8316959f, -0.5552314f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.55597055f, -0.831202f), array<f32, 2>(0.38316247f, -0.92368096f), array<f32, 2>(0.19563523f, -0.9806767f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.19447269f, -0.9809079f), array<f32, 2>(-0.38206735f, -0.9241345f), array<f32, 2>(-0.5549849f, -0.8318604f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.8310372f, -0.55621684f), array<f32, 2>(-0.92356735f, -0.38343617f), array<f32, 2>(-0.9806187f, -0.19592582f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.9809655f, 0.19418201f), array<f32, 2>(-0.9242476f, 0.3817935f), array<f32, 2>(-0.8320248f, 0.5547384f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(-0.55646306f, 0.83087236f), array<f32, 2>(-0.38370985f, 0.9234537f), array<f32, 2>(-0.19621639f, 0.9805606f));
-                            let _e577 = (_e573 < 56u);
-                            if _e577 {
+                            let _e572 = (_e568 < 56u);
+                            if _e572 {
                             } else {
-                                phi_1531_ = true;
+                                phi_1519_ = true;
                                 break;
                             }
-                            let _e579 = local[_e573];
+                            let _e574 = local[_e568];
                             local_1 = array<f32, 56>(0.917883f, 0.564429f, 0.734504f, 0.359545f, 0.820004f, 0.470149f, 0.650919f, 0.205215f, 0.9490982f, 0.5865639f, 0.7554682f, 0.38954395f, 0.84255606f, 0.4948004f, 0.6719197f, 0.252031f, 0.8908589f, 0.54182106f, 0.7136428f, 0.32724136f, 0.798092f, 0.44453403f, 0.6297374f, 0.14471826f, 0.96824586f, 0.5974803f, 0.7660169f, 0.40384725f, 0.8541535f, 0.5068159f, 0.6823727f, 0.27260765f, 0.90401816f, 0.55318946f, 0.72406566f, 0.34372202f, 0.80898184f, 0.45747337f, 0.6403549f, 0.17748062f, 0.9327351f, 0.57555f, 0.7449678f, 0.37479568f, 0.83118564f, 0.48258433f, 0.6614378f, 0.22975244f, 0.87823313f, 0.5303115f, 0.7032256f, 0.30999523f, 0.7873134f, 0.4313043f, 0.61905813f, 0.10219581f);
-                            if _e577 {
+                            if _e572 {
                             } else {
-                                phi_1531_ = true;
+                                phi_1519_ = true;
                                 break;
                             }
-                            let _e583 = local_1[_e573];
-                            let _e585 = (_e567.member_1.member_2 * _e583);
-                            let _e586 = (_e585 * _e579[0]);
-                            let _e587 = (_e585 * _e579[1]);
+                            let _e578 = local_1[_e568];
+                            let _e580 = (_e562.member_1.member_2 * _e578);
+                            let _e581 = (_e580 * _e574[0]);
+                            let _e582 = (_e580 * _e574[1]);
                             local_2 = array<f32, 56>(0.39685115f, 0.82548165f, 0.67860436f, 0.93312776f, 0.57235783f, 0.8825871f, 0.75914717f, 0.9787169f, 0.31498024f, 0.80990297f, 0.65518534f, 0.9210079f, 0.5386087f, 0.86900663f, 0.740624f, 0.96771914f, 0.45428014f, 0.84049386f, 0.7005098f, 0.9449408f, 0.6025356f, 0.89576197f, 0.7768081f, 0.9894729f, 0.2499999f, 0.8018836f, 0.6428204f, 0.91482645f, 0.52002096f, 0.8620543f, 0.7310045f, 0.9621253f, 0.42749405f, 0.8330555f, 0.68973106f, 0.9390714f, 0.58783364f, 0.88922334f, 0.76807916f, 0.9841243f, 0.3605624f, 0.8177666f, 0.6671004f, 0.92710745f, 0.555995f, 0.8758495f, 0.75f, 0.9732491f, 0.47823274f, 0.8478029f, 0.71096677f, 0.95073813f, 0.616553f, 0.90220654f, 0.78534514f, 0.9947643f);
-                            if _e577 {
+                            if _e572 {
                             } else {
-                                phi_1531_ = true;
+                                phi_1519_ = true;
                                 break;
                             }
-                            let _e589 = local_2[_e573];
-                            let _e590 = (_e567.member_1.member_2 * _e589);
-                            let _e599 = (-(((_e586 * _e567.member_1.member_9.x) + (_e587 * _e567.member_1.member_9.y))) * _e567.member_1.member_10);
-                            let _e600 = -(_e590);
-                            let _e604 = select(_e600, select(_e590, _e599, (_e599 < _e590)), (_e599 > _e600));
-                            let _e605 = (_e590 - _e604);
-                            let _e632 = (-0.5f / ((_e567.member_1.member_4.z + (_e567.member_1.member_7.z * _e586)) + (_e567.member_1.member_8.z * _e587)));
-                            let _e635 = (((((_e567.member_1.member_4.x + (_e567.member_1.member_7.x * _e586)) + (_e567.member_1.member_8.x * _e587)) * _e632) / _e372) + 0.5f);
-                            let _e638 = (0.5f - ((((_e567.member_1.member_4.y + (_e567.member_1.member_7.y * _e586)) + (_e567.member_1.member_8.y * _e587)) * _e632) / _e377));
-                            let _e643 = (select(0f, select(1f, _e635, (_e635 < 1f)), (_e635 > 0f)) * _e318);
-                            if (_e643 > 0f) {
-                                let _e649 = select(select(u32(_e643), 0u, (_e643 < 0f)), 4294967295u, (_e643 > 4294967000f));
-                                let _e650 = (_e323 - 1u);
-                                phi_1075_ = select(_e649, _e650, (_e650 < _e649));
+                            let _e584 = local_2[_e568];
+                            let _e585 = (_e562.member_1.member_2 * _e584);
+                            let _e594 = (-(((_e581 * _e562.member_1.member_9.x) + (_e582 * _e562.member_1.member_9.y))) * _e562.member_1.member_10);
+                            let _e595 = -(_e585);
+                            let _e599 = select(_e595, select(_e585, _e594, (_e594 < _e585)), (_e594 > _e595));
+                            let _e600 = (_e585 - _e599);
+                            let _e627 = (-0.5f / ((_e562.member_1.member_4.z + (_e562.member_1.member_7.z * _e581)) + (_e562.member_1.member_8.z * _e582)));
+                            let _e630 = (((((_e562.member_1.member_4.x + (_e562.member_1.member_7.x * _e581)) + (_e562.member_1.member_8.x * _e582)) * _e627) / _e368) + 0.5f);
+                            let _e633 = (0.5f - ((((_e562.member_1.member_4.y + (_e562.member_1.member_7.y * _e581)) + (_e562.member_1.member_8.y * _e582)) * _e627) / _e373));
+                            let _e638 = (select(0f, select(1f, _e630, (_e630 < 1f)), (_e630 > 0f)) * _e314);
+                            if (_e638 > 0f) {
+                                let _e644 = select(select(u32(_e638), 0u, (_e638 < 0f)), 4294967295u, (_e638 > 4294967000f));
+                                let _e645 = (_e319 - 1u);
+                                phi_1082_ = select(_e644, _e645, (_e645 < _e644));
                             } else {
-                                phi_1075_ = 0u;
+                                phi_1082_ = 0u;
                             }
-                            let _e654 = phi_1075_;
-                            let _e659 = (select(0f, select(1f, _e638, (_e638 < 1f)), (_e638 > 0f)) * _e328);
-                            if (_e659 > 0f) {
-                                let _e665 = select(select(u32(_e659), 0u, (_e659 < 0f)), 4294967295u, (_e659 > 4294967000f));
-                                let _e666 = (_e333 - 1u);
-                                phi_1106_ = select(_e665, _e666, (_e666 < _e665));
+                            let _e649 = phi_1082_;
+                            let _e654 = (select(0f, select(1f, _e633, (_e633 < 1f)), (_e633 > 0f)) * _e324);
+                            if (_e654 > 0f) {
+                                let _e660 = select(select(u32(_e654), 0u, (_e654 < 0f)), 4294967295u, (_e654 > 4294967000f));
+                                let _e661 = (_e329 - 1u);
+                                phi_1113_ = select(_e660, _e661, (_e661 < _e660));
                             } else {
-                                phi_1106_ = 0u;
+                                phi_1113_ = 0u;
                             }
-                            let _e670 = phi_1106_;
-                            let _e681 = depth.member[((_e670 * _e323) + _e654)];
-                            let _e693 = select(_e396, _e681, select(false, (_e681 < _e396), (_e681 > 0f)));
-                            let _e714 = ((((((((((f32(_e654) + 0.5f) * (1f / _e318)) * 2f) - 1f) * _e693) * _e372) - _e567.member_1.member_4.x) * _e567.member_1.member_6.x) + ((((((((f32(_e670) + 0.5f) * (1f / _e328)) * -2f) + 1f) * _e693) * _e377) - _e567.member_1.member_4.y) * _e567.member_1.member_6.y)) + ((-(_e693) - _e567.member_1.member_4.z) * _e567.member_1.member_6.z));
-                            let _e719 = params.member.member_3;
-                            if (_e604 != _e604) {
-                                phi_1502_ = true;
+                            let _e665 = phi_1113_;
+                            let _e676 = depth.member[((_e665 * _e319) + _e649)];
+                            let _e688 = select(_e392, _e676, select(false, (_e676 < _e392), (_e676 > 0f)));
+                            let _e709 = ((((((((((f32(_e649) + 0.5f) * (1f / _e314)) * 2f) - 1f) * _e688) * _e368) - _e562.member_1.member_4.x) * _e562.member_1.member_6.x) + ((((((((f32(_e665) + 0.5f) * (1f / _e324)) * -2f) + 1f) * _e688) * _e373) - _e562.member_1.member_4.y) * _e562.member_1.member_6.y)) + ((-(_e688) - _e562.member_1.member_4.z) * _e562.member_1.member_6.z));
+                            let _e714 = params.member.member_3;
+                            if (_e599 != _e599) {
+                                phi_1490_ = true;
                             } else {
-                                phi_1502_ = (_e714 >= _e604);
+                                phi_1490_ = (_e709 >= _e599);
                             }
-                            let _e724 = phi_1502_;
-                            let _e726 = (_e590 - select(_e604, _e714, _e724));
-                            if (_e726 != _e726) {
-                                phi_1517_ = true;
+                            let _e719 = phi_1490_;
+                            let _e721 = (_e585 - select(_e599, _e709, _e719));
+                            if (_e721 != _e721) {
+                                phi_1505_ = true;
                             } else {
-                                phi_1517_ = (0f >= _e726);
+                                phi_1505_ = (0f >= _e721);
                             }
-                            let _e730 = phi_1517_;
-                            let _e735 = ((_e714 - (_e567.member_1.member_2 * (1f + _e719))) * (1f / _e590));
-                            phi_868_ = (_e573 + 1u);
-                            phi_871_ = (_e575 + select(0f, select(((select(_e726, 0f, _e730) + (select(0f, select(1f, _e735, (_e735 < 1f)), (_e735 > 0f)) * _e605)) * (0.5f / _e590)), (_e605 / (_e590 * 2f)), select(false, (_e670 == _e567.member_1.member.y), (_e654 == _e567.member_1.member.x))), (_e605 > (_e590 * 0.2f))));
+                            let _e725 = phi_1505_;
+                            let _e730 = ((_e709 - (_e562.member_1.member_2 * (1f + _e714))) * (1f / _e585));
+                            phi_875_ = (_e568 + 1u);
+                            phi_878_ = (_e570 + select(0f, select(((select(_e721, 0f, _e725) + (select(0f, select(1f, _e730, (_e730 < 1f)), (_e730 > 0f)) * _e600)) * (0.5f / _e585)), (_e600 / (_e585 * 2f)), select(false, (_e665 == _e562.member_1.member.y), (_e649 == _e562.member_1.member.x))), (_e600 > (_e585 * 0.2f))));
                         } else {
-                            phi_868_ = u32();
-                            phi_871_ = f32();
+                            phi_875_ = u32();
+                            phi_878_ = f32();
                         }
-                        let _e749 = phi_868_;
-                        let _e751 = phi_871_;
+                        let _e744 = phi_875_;
+                        let _e746 = phi_878_;
                         continue;
                         continuing {
-                            phi_867_ = _e749;
-                            phi_870_ = _e751;
-                            phi_1531_ = false;
-                            break if !(_e576);
+                            phi_874_ = _e744;
+                            phi_877_ = _e746;
+                            phi_1519_ = false;
+                            break if !(_e571);
                         }
                     }
-                    let _e754 = phi_1531_;
-                    if _e754 {
+                    let _e749 = phi_1519_;
+                    if _e749 {
                         break;
                     }
-                    let _e756 = local_4;
-                    let _e757 = (0.25f * _e756);
-                    let _e764 = params.member.member_2;
-                    phi_1269_ = pow(select(0f, select(1f, _e757, (_e757 < 1f)), (_e757 > 0f)), _e764);
+                    let _e751 = local_4;
+                    let _e752 = (0.25f * _e751);
+                    let _e759 = params.member.member_2;
+                    phi_1276_ = pow(select(0f, select(1f, _e752, (_e752 < 1f)), (_e752 > 0f)), _e759);
                 } else {
-                    phi_1269_ = 1f;
+                    phi_1276_ = 1f;
                 }
-                let _e767 = phi_1269_;
-                if (_e365 < arrayLength((&ao.member))) {
-                } else {
-                    break;
-                }
-                ao.member[_e365] = _e767;
+                let _e762 = phi_1276_;
+                ao.member[_e349] = _e762;
             }
             break;
         }

@@ -8,6 +8,7 @@ pub mod graph;
 use crate::common::ViewParams;
 use crate::common::lanes::Lanes;
 use crate::common::math::is_valid_depth;
+use crate::common::read::write;
 use crate::glam::{IVec2, UVec2, UVec3};
 use spirv_std::spirv;
 
@@ -97,5 +98,5 @@ pub fn blur_main(
     if !params.view.is_inner(p) {
         return;
     }
-    ao_out[params.view.index(p)] = blur_pixel(params, ao_in, depth, p);
+    write(ao_out, params.view.index(p), blur_pixel(params, ao_in, depth, p));
 }

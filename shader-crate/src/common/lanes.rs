@@ -293,7 +293,7 @@ impl Lanes for f32 {
     }
     #[inline]
     fn gather_v3(data: &[u32], index: impl Fn(usize) -> usize, map: impl Fn(u32) -> Vec3) -> Vec3 {
-        map(data[index(0)])
+        map(crate::common::read::read(data, index(0)))
     }
     #[inline]
     fn texel(x: u32, y: u32) -> UVec2 {

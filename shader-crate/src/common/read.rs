@@ -1,4 +1,4 @@
-//! Storage-buffer reads without a bounds check on the GPU.
+//! Storage-buffer reads and writes without a bounds check on the GPU.
 //!
 //! rust-gpu keeps Rust's bounds check on every slice index: a compare and a branch to the entry
 //! point's silent exit (`ShaderPanicStrategy::SilentExit`) per read, which made XeGTAO's main
@@ -21,5 +21,20 @@ pub fn read<T: Copy>(data: &[T], i: usize) -> T {
     #[cfg(not(target_arch = "spirv"))]
     {
         data[i]
+    }
+}
+
+/// `data[i] = value`, for an `i` the caller keeps below `data.len()` (checked on the CPU only).
+#[inline(always)]
+pub fn write<T: Copy>(data: &mut [T], i: usize, value: T) {
+    #[cfg(target_arch = "spirv")]
+    {
+        use spirv_std::arch::IndexUnchecked;
+        // SAFETY: as for `read`.
+        unsafe { *data.index_unchecked_mut(i) = value }
+    }
+    #[cfg(not(target_arch = "spirv"))]
+    {
+        data[i] = value;
     }
 }

@@ -2,8 +2,8 @@
 //! two horizons found by stepping through the depth MIP chain, and the cosine-weighted arc
 //! integral of the visible part of the slice. Also pass 0, normals from depth (gtao-raymarch-hybrid §2.4).
 
-#[allow(unused_imports)]
 use crate::common::read::read;
+#[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
 use super::{GtaoParams, MIP_LEVELS, mip_offset, mip_size};

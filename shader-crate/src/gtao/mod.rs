@@ -14,6 +14,7 @@ pub use denoise::denoise_pixel;
 pub use main_pass::{GtaoPixel, gtao_pixel, normal_from_depth};
 pub use prefilter::prefilter_texel;
 
+use crate::common::read::write;
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
@@ -111,7 +112,7 @@ pub fn gtao_prefilter(
         return;
     }
     let value = prefilter_texel(params, depth, mips, t);
-    mips[mip_offset(full, params.pass) + (t.y * size.x + t.x) as usize] = value;
+    write(mips, mip_offset(full, params.pass) + (t.y * size.x + t.x) as usize, value);
 }
 
 /// Pass 0: normals from depth, one invocation per pixel of the full target.
@@ -128,7 +129,7 @@ pub fn gtao_normals(
     if p.x >= size.x || p.y >= size.y {
         return;
     }
-    normals[(p.y * size.x + p.x) as usize] = normal_from_depth(params, depth, p);
+    write(normals, (p.y * size.x + p.x) as usize, normal_from_depth(params, depth, p));
 }
 
 /// MainPass, one invocation per pixel of the full target.
@@ -149,8 +150,8 @@ pub fn gtao_main(
     }
     let out = gtao_pixel(params, mips, normals, p);
     let i = (p.y * size.x + p.x) as usize;
-    terms[i] = out.term;
-    edges[i] = out.edges;
+    write(terms, i, out.term);
+    write(edges, i, out.edges);
 }
 
 /// Denoise pass `params.pass`: terms in → terms out; the last pass also writes the visibility.
@@ -171,8 +172,8 @@ pub fn gtao_denoise(
     }
     let out = denoise_pixel(params, terms_in, edges, p);
     let i = (p.y * size.x + p.x) as usize;
-    terms_out[i] = out.term;
+    write(terms_out, i, out.term);
     if out.last {
-        ao[i] = out.visibility;
+        write(ao, i, out.visibility);
     }
 }

@@ -13,6 +13,7 @@ pub use pass1::{Pass1Pixel, pass1_pixel, primary_sample, sd_pixel};
 pub use pass2::{Pass2Pixel, Refine, Refined, pass2_pixel};
 
 use crate::common::camera::Camera;
+use crate::common::read::write;
 use crate::glam::{UVec2, uvec2};
 use crate::vao::VaoParams;
 
@@ -142,6 +143,6 @@ pub fn svao_pass1(
     let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
     let out = pass1_pixel(&gbuffer, depth2, params, p, &mut ray_min, &mut ray_max);
     let i = view.index(p);
-    ao[i] = out.ao;
+    write(ao, i, out.ao);
     mask[i] = out.mask;
 }

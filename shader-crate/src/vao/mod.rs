@@ -8,6 +8,7 @@ pub mod settings;
 pub use kernel::{VaoParams, vao_pixel};
 
 use crate::common::gbuffer_read::GBufferSlices;
+use crate::common::read::write;
 use crate::glam::UVec3;
 use spirv_std::spirv;
 
@@ -27,5 +28,5 @@ pub fn vao_main(
         return;
     }
     let gbuffer = GBufferSlices { depth, normals, width: params.view.size().x };
-    ao[params.view.index(p)] = vao_pixel(&gbuffer, params, p);
+    write(ao, params.view.index(p), vao_pixel(&gbuffer, params, p));
 }

@@ -10,6 +10,7 @@ pub mod settings;
 
 pub use kernel::{SECTORS, sector_bits, vbao_pixel};
 
+use crate::common::read::write;
 use crate::glam::UVec3;
 use crate::gtao::GtaoParams;
 use spirv_std::spirv;
@@ -67,6 +68,6 @@ pub fn vbao_main(
     }
     let out = vbao_pixel(params, mips, normals, p);
     let i = (p.y * size.x + p.x) as usize;
-    terms[i] = out.term;
-    edges[i] = out.edges;
+    write(terms, i, out.term);
+    write(edges, i, out.edges);
 }
