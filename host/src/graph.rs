@@ -198,7 +198,9 @@ pub struct AoContext<G: Borrow<Gpu> = Gpu> {
     /// per bound images and buffers.
     adapters: Option<Adapters>,
     adapter_sets: KeptSets,
-    /// `(frame recorded, buffer or pool)` waiting to be freed.
+    /// `(last frame that may use it, buffer or pool)` waiting to be freed: tagged with the
+    /// latest `record` count when retired (the frame being recorded, or the last one recorded
+    /// between frames), an upper bound on the frames whose commands use it.
     retired: Vec<(u64, Retired)>,
     frame: u64,
     #[cfg(feature = "testing")]
@@ -208,7 +210,8 @@ pub struct AoContext<G: Borrow<Gpu> = Gpu> {
 }
 
 /// A test's use-after-free check (feature `testing`): called before each retired buffer or pool
-/// is freed with the last frame (1-based `record` count) whose commands may use it.
+/// is freed with the last frame (1-based `record` count) whose commands may use it (an upper
+/// bound: the latest frame recorded when it was retired).
 #[cfg(feature = "testing")]
 pub type FreeAudit = Box<dyn FnMut(u64) + Send>;
 
@@ -788,17 +791,17 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         self.release_retired_after(FRAMES_IN_FLIGHT);
     }
 
-    /// Free what was retired `frames` or more `record` calls ago. A resource retired while
-    /// recording frame R was last used by frame R − 1.
+    /// Free what frames `frames` or more `record` calls ago were the last to use: before
+    /// recording frame F + 3 the caller waited for frame F (the module's contract).
     fn release_retired_after(&mut self, frames: u64) {
         let frame = self.frame;
         let (done, keep): (Vec<_>, Vec<_>) =
             std::mem::take(&mut self.retired).into_iter().partition(|(f, _)| f + frames <= frame);
         self.retired = keep;
-        for (_retired_at, r) in done {
+        for (_last_use, r) in done {
             #[cfg(feature = "testing")]
             if let Some(audit) = self.free_audit.as_mut() {
-                audit(_retired_at - 1);
+                audit(_last_use);
             }
             self.free(r);
         }
