@@ -37,7 +37,8 @@ pub enum AoError {
     Gpu(#[from] GpuError),
 }
 
-/// The engine's depth convention: what its depth image stores (Vulkan clip depth in `[0, 1]`).
+/// The engine's depth convention: what its depth image stores (window depth in `[0, 1]`) and how
+/// the projection's planes are read.
 #[derive(Copy, Clone, Debug, PartialEq, Eq)]
 pub enum DepthConvention {
     /// 0 at the near plane, 1 at the far plane (e.g. glam's `Mat4::perspective_rh`).
@@ -47,10 +48,11 @@ pub enum DepthConvention {
     /// 1 at the near plane, 0 at infinity (glam's `Mat4::perspective_infinite_reverse_rh`).
     ReversedInfinite,
     /// 0 at the near plane, 1 at the far plane, from an OpenGL-style projection whose clip depth
-    /// spans `[−1, 1]` (`glFrustum`, glam's `Mat4::perspective_rh_gl`) and is stored as the
-    /// window depth `0.5·z + 0.5`: OpenGL with `glDepthRange(0, 1)` (OpenGL 4.6 core specification, section 13.8.1), or
+    /// spans `[−1, 1]` (`glFrustum`, `gluPerspective`) and is stored as the window depth
+    /// `0.5·z_ndc + 0.5`: OpenGL with `glDepthRange(0, 1)` (OpenGL 4.6 core specification, section 13.8.1), or
     /// Vulkan with `VK_EXT_depth_clip_control`'s `negativeOneToOne`. The stored values are those
     /// of [`DepthConvention::Standard`]; only the planes are read differently from the matrix.
+    /// An infinite far plane is refused.
     NegativeOneToOne,
     /// An `R32_SFLOAT` image holding the linear view depth (distance along −Z), not hardware
     /// depth; the projection still gives the field of view and the far plane.
@@ -510,7 +512,9 @@ pub struct EngineCamera {
 /// A perspective projection maps view depth `z` to clip depth `d = −P₂₂ + P₃₂/z`
 /// (`P₂₂ = projection.z_axis.z`, `P₃₂ = projection.w_axis.z`), so `d = 0` and `d = 1` fall at
 /// `z = P₃₂/P₂₂` and `z = P₃₂/(1 + P₂₂)`: the near plane is the one that `convention` puts at
-/// depth 0 (standard) or 1 (reversed). The field of view is `tan(fov/2) = 1/P₀₀` and `1/|P₁₁|`
+/// depth 0 (standard) or 1 (reversed). For [`DepthConvention::NegativeOneToOne`] the planes are
+/// where `d = −1` and `1`: `z = P₃₂/(P₂₂ − 1)` and `z = P₃₂/(P₂₂ + 1)`. The field of view is
+/// `tan(fov/2) = 1/P₀₀` and `1/|P₁₁|`
 /// of the engine's image, widened by the guard band at the same focal length.
 pub fn engine_camera(
     projection: Mat4,

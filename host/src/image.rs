@@ -34,7 +34,7 @@ impl Image2d {
     /// transitions both (Vulkan spec, VUID-VkImageMemoryBarrier-image-03320, without
     /// `separateDepthStencilLayouts`).
     pub fn range(&self) -> vk::ImageSubresourceRange {
-        let aspect = if self.format == vk::Format::D24_UNORM_S8_UINT {
+        let aspect = if has_stencil(self.format) {
             vk::ImageAspectFlags::DEPTH | vk::ImageAspectFlags::STENCIL
         } else {
             self.aspect()
@@ -51,12 +51,19 @@ impl Image2d {
     }
 }
 
+/// A combined depth/stencil format.
+fn has_stencil(format: vk::Format) -> bool {
+    matches!(format, vk::Format::D16_UNORM_S8_UINT | vk::Format::D24_UNORM_S8_UINT | vk::Format::D32_SFLOAT_S8_UINT)
+}
+
 fn aspect_of(format: vk::Format) -> vk::ImageAspectFlags {
     match format {
         vk::Format::D32_SFLOAT
         | vk::Format::D16_UNORM
         | vk::Format::X8_D24_UNORM_PACK32
-        | vk::Format::D24_UNORM_S8_UINT => vk::ImageAspectFlags::DEPTH,
+        | vk::Format::D16_UNORM_S8_UINT
+        | vk::Format::D24_UNORM_S8_UINT
+        | vk::Format::D32_SFLOAT_S8_UINT => vk::ImageAspectFlags::DEPTH,
         _ => vk::ImageAspectFlags::COLOR,
     }
 }

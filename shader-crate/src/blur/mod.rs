@@ -98,5 +98,5 @@ pub fn blur_main(
     if !params.view.is_inner(p) {
         return;
     }
-    write(ao_out, params.view.index(p), blur_pixel(params, ao_in, depth, p));
+    unsafe { write(ao_out, params.view.index(p), blur_pixel(params, ao_in, depth, p)) };
 }

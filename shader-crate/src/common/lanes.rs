@@ -293,7 +293,7 @@ impl Lanes for f32 {
     }
     #[inline]
     fn gather_v3(data: &[u32], index: impl Fn(usize) -> usize, map: impl Fn(u32) -> Vec3) -> Vec3 {
-        map(crate::common::read::read(data, index(0)))
+        map(unsafe { crate::common::read::read(data, index(0)) })
     }
     #[inline]
     fn texel(x: u32, y: u32) -> UVec2 {
@@ -334,11 +334,11 @@ impl Lanes for f32 {
     }
     #[inline]
     fn gather_index(data: &[f32], i: u32) -> f32 {
-        crate::common::read::read(data, i as usize)
+        unsafe { crate::common::read::read(data, i as usize) }
     }
     #[inline]
     fn gather_word(data: &[u32], i: u32) -> u32 {
-        crate::common::read::read(data, i as usize)
+        unsafe { crate::common::read::read(data, i as usize) }
     }
     #[inline]
     fn index_bit_run(start: u32, count: u32) -> u32 {

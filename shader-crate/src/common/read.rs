@@ -4,18 +4,23 @@
 //! point's silent exit (`ShaderPanicStrategy::SilentExit`) per read, which made XeGTAO's main
 //! pass four times the basic blocks of Intel's own shader (issue 26). The kernels' indexes are in
 //! range by construction (pixel and texel coordinates clamped to the image, row-major with the
-//! image's width), so on SPIR-V [`read`] indexes unchecked. On the CPU it stays checked: every
-//! CPU test (exhaustive, agreement, fuzz) would panic on an index out of range, which is what
-//! keeps the unchecked GPU read honest.
+//! image's width, buffers of the full target's size), so on SPIR-V [`read`] and [`write`] index
+//! unchecked. On the CPU they stay checked, and cpu-sim's eight-lane kernels index with the same
+//! formulas through checked slice indexing: the CPU tests (exhaustive, agreement, fuzz) panic on
+//! an index out of range. What the GPU no longer does is exit silently when an engine binds a
+//! buffer smaller than the target (`assets/README.md` states the sizes).
 
-/// `data[i]`, for an `i` the caller keeps below `data.len()` (checked on the CPU only).
+/// `data[i]` (checked on the CPU only).
+///
+/// # Safety
+/// `i < data.len()`: on SPIR-V a larger index reads outside the buffer.
 #[inline(always)]
-pub fn read<T: Copy>(data: &[T], i: usize) -> T {
+pub(crate) unsafe fn read<T: Copy>(data: &[T], i: usize) -> T {
     #[cfg(target_arch = "spirv")]
     {
         use spirv_std::arch::IndexUnchecked;
-        // SAFETY: the kernels index within the buffers they are given (see the module docs);
-        // the CPU build of the same code checks every index.
+        // SAFETY: the caller keeps `i` in range (see the module docs); the CPU build of the
+        // same code checks every index.
         unsafe { *data.index_unchecked(i) }
     }
     #[cfg(not(target_arch = "spirv"))]
@@ -24,9 +29,12 @@ pub fn read<T: Copy>(data: &[T], i: usize) -> T {
     }
 }
 
-/// `data[i] = value`, for an `i` the caller keeps below `data.len()` (checked on the CPU only).
+/// `data[i] = value` (checked on the CPU only).
+///
+/// # Safety
+/// `i < data.len()`: on SPIR-V a larger index writes outside the buffer.
 #[inline(always)]
-pub fn write<T: Copy>(data: &mut [T], i: usize, value: T) {
+pub(crate) unsafe fn write<T: Copy>(data: &mut [T], i: usize, value: T) {
     #[cfg(target_arch = "spirv")]
     {
         use spirv_std::arch::IndexUnchecked;

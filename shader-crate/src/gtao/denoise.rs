@@ -167,7 +167,7 @@ impl<L: Lanes> Term<L> for L {
 impl Term<f32> for Vec4 {
     #[inline]
     fn load(terms: &[u32], width: u32, q: UVec2) -> Vec4 {
-        unpack_bent_term(read(terms, (q.y * width + q.x) as usize))
+        unpack_bent_term(unsafe { read(terms, (q.y * width + q.x) as usize) })
     }
 }
 

@@ -350,7 +350,7 @@ pub fn normal_from_depth(params: &GtaoParams, depth: &[f32], p: UVec2) -> u32 {
 #[inline]
 fn depth_point(params: &GtaoParams, depth: &[f32], q: UVec2) -> (Vec3, f32) {
     let view = &params.view;
-    let z = depth_or_far(read(depth, (q.y * view.size().x + q.x) as usize), view.far);
+    let z = depth_or_far(unsafe { read(depth, (q.y * view.size().x + q.x) as usize) }, view.far);
     (view_pos(view, view.pixel_uv(q), z), z)
 }
 

@@ -112,7 +112,7 @@ pub fn gtao_prefilter(
         return;
     }
     let value = prefilter_texel(params, depth, mips, t);
-    write(mips, mip_offset(full, params.pass) + (t.y * size.x + t.x) as usize, value);
+    unsafe { write(mips, mip_offset(full, params.pass) + (t.y * size.x + t.x) as usize, value) };
 }
 
 /// Pass 0: normals from depth, one invocation per pixel of the full target.
@@ -129,7 +129,7 @@ pub fn gtao_normals(
     if p.x >= size.x || p.y >= size.y {
         return;
     }
-    write(normals, (p.y * size.x + p.x) as usize, normal_from_depth(params, depth, p));
+    unsafe { write(normals, (p.y * size.x + p.x) as usize, normal_from_depth(params, depth, p)) };
 }
 
 /// MainPass, one invocation per pixel of the full target.
@@ -150,8 +150,8 @@ pub fn gtao_main(
     }
     let out = gtao_pixel(params, mips, normals, p);
     let i = (p.y * size.x + p.x) as usize;
-    write(terms, i, out.term);
-    write(edges, i, out.edges);
+    unsafe { write(terms, i, out.term) };
+    unsafe { write(edges, i, out.edges) };
 }
 
 /// Denoise pass `params.pass`: terms in → terms out; the last pass also writes the visibility.
@@ -172,8 +172,8 @@ pub fn gtao_denoise(
     }
     let out = denoise_pixel(params, terms_in, edges, p);
     let i = (p.y * size.x + p.x) as usize;
-    write(terms_out, i, out.term);
+    unsafe { write(terms_out, i, out.term) };
     if out.last {
-        write(ao, i, out.visibility);
+        unsafe { write(ao, i, out.visibility) };
     }
 }

@@ -42,7 +42,7 @@ pub fn prefilter_texel(params: &GtaoParams, depth: &[f32], mips: &[f32], t: UVec
     let full = view.size();
     let k = params.pass;
     if k == 0 {
-        let d = depth_or_far(read(depth, (t.y * full.x + t.x) as usize), view.far);
+        let d = depth_or_far(unsafe { read(depth, (t.y * full.x + t.x) as usize) }, view.far);
         return crate::common::math::clamp(d, 0.0, MAX_WORKING_DEPTH);
     }
     let above = mip_size(full, k - 1);
@@ -60,5 +60,5 @@ pub fn prefilter_texel(params: &GtaoParams, depth: &[f32], mips: &[f32], t: UVec
 /// Texel (x, y), clamped to the level's size, of the level at `base` in the chain.
 #[inline]
 fn texel(mips: &[f32], base: usize, size: UVec2, x: u32, y: u32) -> f32 {
-    read(mips, base + (y.min(size.y - 1) * size.x + x.min(size.x - 1)) as usize)
+    unsafe { read(mips, base + (y.min(size.y - 1) * size.x + x.min(size.x - 1)) as usize) }
 }

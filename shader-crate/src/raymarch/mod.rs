@@ -153,7 +153,7 @@ pub fn march<L: Lanes>(
 /// The G-buffer's right-handed normal at `p` in XeGTAO space, turned toward the camera at `pos`.
 #[inline]
 pub fn facing_normal(normals: &[u32], width: u32, p: UVec2, pos: Vec3) -> Vec3 {
-    let n = decode_normal(read(normals, (p.y * width + p.x) as usize));
+    let n = decode_normal(unsafe { read(normals, (p.y * width + p.x) as usize) });
     let n = vec3(n.x, n.y, -n.z);
     if n.dot(-pos) < 0.0 { -n } else { n }
 }
@@ -191,7 +191,7 @@ pub struct RaymarchPixel {
 /// Linear depth of pixel `q` (unusable depths read as far).
 #[inline]
 fn depth_px(view: &ViewParams, depth: &[f32], q: UVec2) -> f32 {
-    depth_or_far(read(depth, (q.y * view.size().x + q.x) as usize), view.far)
+    depth_or_far(unsafe { read(depth, (q.y * view.size().x + q.x) as usize) }, view.far)
 }
 
 /// Packed XeGTAO edges of pixel `p` from the linear depth (for the optional denoiser).
@@ -264,7 +264,7 @@ impl MarchOrigin<crate::common::lanes::F32x8> {
 pub fn raymarch_setup(params: &RaymarchParams, depth: &[f32], normals: &[u32], p: UVec2) -> (u32, Option<MarchOrigin>) {
     let view = &params.view;
     let edges = depth_edges(view, depth, p);
-    let zc = read(depth, (p.y * view.size().x + p.x) as usize);
+    let zc = unsafe { read(depth, (p.y * view.size().x + p.x) as usize) };
     if !is_valid_depth(zc, view.far) {
         return (edges, None);
     }

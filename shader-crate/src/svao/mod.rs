@@ -143,6 +143,6 @@ pub fn svao_pass1(
     let gbuffer = GBufferSlices { depth, normals, width: view.size().x };
     let out = pass1_pixel(&gbuffer, depth2, params, p, &mut ray_min, &mut ray_max);
     let i = view.index(p);
-    write(ao, i, out.ao);
+    unsafe { write(ao, i, out.ao) };
     mask[i] = out.mask;
 }

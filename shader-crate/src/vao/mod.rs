@@ -28,5 +28,5 @@ pub fn vao_main(
         return;
     }
     let gbuffer = GBufferSlices { depth, normals, width: params.view.size().x };
-    write(ao, params.view.index(p), vao_pixel(&gbuffer, params, p));
+    unsafe { write(ao, params.view.index(p), vao_pixel(&gbuffer, params, p)) };
 }

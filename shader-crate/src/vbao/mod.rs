@@ -68,6 +68,6 @@ pub fn vbao_main(
     }
     let out = vbao_pixel(params, mips, normals, p);
     let i = (p.y * size.x + p.x) as usize;
-    write(terms, i, out.term);
-    write(edges, i, out.edges);
+    unsafe { write(terms, i, out.term) };
+    unsafe { write(edges, i, out.edges) };
 }
