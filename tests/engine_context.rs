@@ -35,7 +35,7 @@ use aokit::scene::Scene;
 use aokit::technique::{GtaoOptions, SdOptions, Technique};
 use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
 use aokit_cpu::{GBufferImage, no_progress};
-use aokit_shaders::adapters::{DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_REVERSED_INFINITE, DEPTH_STANDARD, ImportParams};
+use aokit_shaders::adapters::ImportParams;
 use aokit_shaders::common::ViewParams;
 use aokit_shaders::common::camera::Camera;
 use aokit_shaders::common::normal_codec::decode_normal;
@@ -290,16 +290,6 @@ impl EngineFormats {
     }
 }
 
-/// The adapter's number of `convention` (`aokit_shaders::adapters::depth_convention`).
-fn convention_code(convention: DepthConvention) -> u32 {
-    match convention {
-        DepthConvention::Standard | DepthConvention::NegativeOneToOne => DEPTH_STANDARD,
-        DepthConvention::Reversed => DEPTH_REVERSED,
-        DepthConvention::ReversedInfinite => DEPTH_REVERSED_INFINITE,
-        DepthConvention::Linear => DEPTH_LINEAR,
-    }
-}
-
 /// Is `convention`'s stored depth the standard `f·(z − n)/(z·(f − n))`, whose inverse has
 /// the condition number κ = z·(f − n)/(n·f)?
 fn is_standard(convention: DepthConvention) -> bool {
@@ -385,7 +375,7 @@ fn engine_gbuffer(view: &ViewParams, gbuffer: &GBufferImage, formats: EngineForm
     let params = ImportParams {
         view: *view,
         engine_size: size,
-        depth_convention: convention_code(formats.convention),
+        depth_convention: formats.convention.code(),
         near: view.near,
         far: view.far,
         _pad: 0,
@@ -499,10 +489,9 @@ struct EngineView {
 fn engine_view(frame: &Frame, convention: DepthConvention) -> EngineView {
     let view = frame.camera.view;
     let projection = engine_projection(&view, convention);
-    let depth_convention = convention;
     let inner = view.size() - 2 * view.guard;
     let world_to_view = frame.camera.world_to_view;
-    let derived = engine_camera(projection, world_to_view, inner, view.guard, depth_convention).unwrap();
+    let derived = engine_camera(projection, world_to_view, inner, view.guard, convention).unwrap();
     let mut camera = derived.camera;
     if convention == DepthConvention::ReversedInfinite {
         // No far plane: background from 1e5 × near on (`AoSettings::background_depth`'s default).
@@ -522,12 +511,12 @@ fn engine_view(frame: &Frame, convention: DepthConvention) -> EngineView {
     let params = ImportParams {
         view: camera.view,
         engine_size: inner,
-        depth_convention: convention_code(convention),
+        depth_convention: convention.code(),
         near: derived.near,
         far: derived.far,
         _pad: 0,
     };
-    EngineView { projection, world_to_view, convention: depth_convention, camera, params }
+    EngineView { projection, world_to_view, convention, camera, params }
 }
 
 /// The effect's settings for technique `t` at `frame`'s AO parameters.
@@ -540,11 +529,15 @@ fn effect_settings(t: &Technique, frame: &Frame) -> AoSettings {
 }
 
 /// The frame the engine hands the effect: its images in `targets` (normals only `with_normals`,
-/// the second layer where `targets` has one), its matrices and the scene.
-fn effect_frame<'a>(targets: &Targets, v: &EngineView, with_normals: bool, scene: &'a AoScene) -> AoFrame<'a> {
+/// the second layer where `targets` has one), its matrices and the scene (for techniques that
+/// trace rays).
+fn effect_frame<'a>(targets: &Targets, v: &EngineView, with_normals: bool, scene: Option<&'a AoScene>) -> AoFrame<'a> {
     let output = AoImage { view: targets.output.view, format: targets.output.format };
     let depth = EngineImage { view: targets.depth.view, layout: DEPTH_LAYOUT };
-    let mut frame = AoFrame::new(depth, v.convention, output, v.projection, v.world_to_view).scene(scene);
+    let mut frame = AoFrame::new(depth, v.convention, output, v.projection, v.world_to_view);
+    if let Some(scene) = scene {
+        frame = frame.scene(scene);
+    }
     if let Some(second) = &targets.second {
         frame = frame.second_depth(EngineImage { view: second.view, layout: DEPTH_LAYOUT });
     }
@@ -717,12 +710,7 @@ fn check_frame(
 
 /// The agreement each technique must reach (from the existing CPU ≡ Vulkan tests).
 fn check_agreement(name: &str, cpu: &[f32], gpu: &[f32]) -> String {
-    assert_eq!(cpu.len(), gpu.len(), "{name}: CPU and engine images differ in size");
-    let within = cpu.iter().zip(gpu).filter(|(a, b)| (*a - *b).abs() <= common::agreement::STEP).count() as f64
-        / cpu.len() as f64;
-    let max = cpu.iter().zip(gpu).map(|(a, b)| (a - b).abs()).fold(0.0, f32::max);
-    let m = mse(cpu, gpu);
-    let occluded = cpu.iter().filter(|&&a| a < 0.9).count() as f64 / cpu.len() as f64;
+    let common::agreement::Agreement { within, mse: m, max, occluded, .. } = common::agreement::of(cpu, gpu);
     let line = format!(
         "{name}: {:.3} % within 1/255, max |Δ| {max:.2e} ({:.2}/255), MSE {m:.2e}, occluded (< 0.9) {:.1} %",
         100.0 * within,
@@ -839,7 +827,7 @@ fn effect_frames_agree_with_cpu_sim() {
         let targets = Targets::new(&engine, &images, &g);
         let readback = HostBuffer::new(&engine, 4 * texels as u64, vk::BufferUsageFlags::TRANSFER_DST);
         effect.resize(inner.x, inner.y).unwrap();
-        let ao_frame = effect_frame(&targets, &v, with_normals, &rays);
+        let ao_frame = effect_frame(&targets, &v, with_normals, Some(&rays));
         for (name, technique) in &techniques {
             effect.set_settings(effect_settings(technique, &frame)).unwrap();
             let cmd = engine.begin();
@@ -949,14 +937,7 @@ fn every_engine_format_through_the_effect_agrees_with_cpu_sim() {
         let targets = Targets::new(&engine, &images, &g);
         let readback =
             HostBuffer::new(&engine, (texel_bytes(output) * texels) as u64, vk::BufferUsageFlags::TRANSFER_DST);
-        let ao_frame = AoFrame::new(
-            EngineImage { view: targets.depth.view, layout: DEPTH_LAYOUT },
-            v.convention,
-            AoImage { view: targets.output.view, format: output },
-            v.projection,
-            v.world_to_view,
-        )
-        .normals(EngineImage { view: targets.normals.view, layout: NORMAL_LAYOUT });
+        let ao_frame = effect_frame(&targets, &v, true, None);
         let cmd = engine.begin();
         record_frame(&engine, &mut effect, cmd, &targets, &ao_frame, Some(&readback)).unwrap();
         engine.submit_and_wait(cmd);
@@ -1030,7 +1011,7 @@ fn ray_traced_frames(ray_tracing: RayTracing, specs: &[&str]) -> Option<Vec<Vec<
     let texels = (g.size.x * g.size.y) as usize;
     let targets = Targets::new(&engine, &images, &g);
     let readback = HostBuffer::new(&engine, 4 * texels as u64, vk::BufferUsageFlags::TRANSFER_DST);
-    let ao_frame = effect_frame(&targets, &v, true, &rays);
+    let ao_frame = effect_frame(&targets, &v, true, Some(&rays));
     let mut out = Vec::new();
     for spec in specs {
         let technique = Technique::parse(spec).unwrap();
@@ -1118,7 +1099,7 @@ fn soak_300_frames_two_resolutions() {
         // An engine re-creates its render targets on a resize (after waiting for its frames).
         let targets = Targets::new(&engine, &images, &g);
         effect.resize(targets.size.x, targets.size.y).unwrap();
-        let ao_frame = effect_frame(&targets, &v, true, &rays);
+        let ao_frame = effect_frame(&targets, &v, true, Some(&rays));
         let texels = (targets.size.x * targets.size.y) as usize;
         let host = || HostBuffer::new(&engine, 4 * texels as u64, vk::BufferUsageFlags::TRANSFER_DST);
         let (first, last) = (host(), [host(), host()]);
@@ -1516,7 +1497,7 @@ fn the_engines_own_tlas_with_instances_and_custom_indices() {
     let mut run = |fence_index: u32| -> Vec<f64> {
         let accel = EngineAccel::build(&engine, &fence_meshes(&scene, fence_index));
         let engine_scene = effect.scene_from_tlas(accel.tlas, &geometry).unwrap();
-        let ao_frame = effect_frame(&targets, &v, true, &engine_scene);
+        let ao_frame = effect_frame(&targets, &v, true, Some(&engine_scene));
         let mut mses = Vec::new();
         for (name, technique) in &techniques {
             effect.set_settings(effect_settings(technique, &frame)).unwrap();

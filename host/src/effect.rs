@@ -60,8 +60,9 @@ pub enum DepthConvention {
 }
 
 impl DepthConvention {
-    /// The adapter's number for it (`aokit_shaders::adapters::depth_convention`).
-    fn code(self) -> u32 {
+    /// The adapter's number for it (`aokit_shaders::adapters::depth_convention`), the value of
+    /// `ImportParams::depth_convention`.
+    pub fn code(self) -> u32 {
         match self {
             DepthConvention::Standard | DepthConvention::NegativeOneToOne => DEPTH_STANDARD,
             DepthConvention::Reversed => DEPTH_REVERSED,
