@@ -55,93 +55,52 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_1933_: bool;
-    var phi_1948_: bool;
-    var phi_1963_: bool;
-    var phi_1978_: bool;
-    var phi_2009_: f32;
-    var phi_2013_: f32;
-    var phi_2014_: bool;
-    var phi_2036_: u32;
-    var phi_2063_: f32;
-    var phi_2067_: f32;
-    var phi_2068_: bool;
-    var phi_2090_: u32;
-    var phi_2117_: f32;
-    var phi_2121_: f32;
-    var phi_2122_: bool;
-    var phi_2144_: u32;
-    var phi_2171_: f32;
-    var phi_2175_: f32;
-    var phi_2176_: bool;
-    var phi_2198_: u32;
-    var phi_2277_: bool;
-    var phi_2292_: bool;
-    var phi_2253_: vec2<f32>;
-    var phi_2309_: u32;
-    var phi_2310_: u32;
-    var phi_2311_: u32;
-    var phi_2312_: u32;
-    var phi_2335_: u32;
-    var phi_2336_: u32;
-    var phi_2339_: u32;
-    var phi_2340_: u32;
-    var phi_2344_: u32;
-    var phi_2345_: u32;
-    var phi_2346_: u32;
-    var phi_2347_: u32;
+    var phi_2369_: bool;
+    var phi_2384_: bool;
+    var phi_2344_: vec2<f32>;
+    var phi_2401_: u32;
+    var phi_2402_: u32;
+    var phi_2403_: u32;
+    var phi_2404_: u32;
+    var phi_2427_: u32;
+    var phi_2428_: u32;
+    var phi_2431_: u32;
+    var phi_2432_: u32;
+    var phi_2436_: u32;
+    var phi_2437_: u32;
+    var phi_2438_: u32;
+    var phi_2439_: u32;
     var local: u32;
-    var phi_759_: u32;
-    var phi_762_: vec3<f32>;
-    var phi_764_: f32;
-    var phi_935_: u32;
-    var phi_938_: f32;
-    var phi_940_: f32;
-    var phi_994_: f32;
-    var phi_1039_: f32;
-    var phi_1041_: f32;
-    var phi_1042_: bool;
-    var phi_1065_: f32;
-    var phi_1067_: f32;
-    var phi_1068_: bool;
-    var phi_1101_: u32;
-    var phi_1117_: u32;
-    var phi_1120_: u32;
-    var phi_1118_: u32;
-    var phi_1121_: u32;
-    var phi_1165_: u32;
-    var phi_1184_: u32;
-    var local_1: u32;
-    var phi_1223_: u32;
-    var phi_1239_: u32;
-    var phi_1242_: u32;
-    var phi_1240_: u32;
-    var phi_1243_: u32;
-    var phi_1287_: u32;
-    var phi_1306_: u32;
-    var local_2: u32;
-    var phi_1384_: f32;
-    var phi_1444_: f32;
-    var phi_2381_: bool;
-    var phi_2396_: bool;
-    var phi_936_: u32;
-    var phi_939_: f32;
-    var phi_941_: f32;
+    var phi_751_: f32;
+    var phi_778_: u32;
+    var phi_781_: vec3<f32>;
+    var phi_783_: f32;
+    var phi_954_: u32;
+    var phi_957_: f32;
+    var phi_959_: f32;
+    var phi_1014_: f32;
+    var phi_1573_: f32;
+    var phi_1594_: f32;
+    var phi_1633_: f32;
+    var phi_1654_: f32;
+    var phi_955_: u32;
+    var phi_958_: f32;
+    var phi_960_: f32;
+    var local_1: f32;
+    var local_2: f32;
     var local_3: f32;
     var local_4: f32;
+    var phi_1885_: vec3<f32>;
+    var phi_779_: u32;
+    var phi_782_: vec3<f32>;
+    var phi_784_: f32;
     var local_5: f32;
-    var local_6: f32;
-    var phi_1663_: vec3<f32>;
-    var phi_760_: u32;
-    var phi_763_: vec3<f32>;
-    var phi_765_: f32;
-    var local_7: f32;
-    var local_8: vec3<f32>;
-    var phi_1669_: type_23;
-    var phi_2423_: bool;
-    var phi_1724_: vec3<f32>;
-    var phi_1745_: u32;
-    var phi_1790_: u32;
+    var local_6: vec3<f32>;
+    var phi_1891_: type_23;
+    var phi_2485_: bool;
+    var phi_1946_: vec3<f32>;
+    var phi_1967_: u32;
+    var phi_2012_: u32;
 
     let _e83 = id_1;
     let _e89 = params.member.member.member[0u];
@@ -183,664 +142,450 @@ fn function_() {
             let _e176 = (_e112 * 0.011f);
             let _e178 = abs(_e168);
             let _e179 = abs((_e168 + _e173));
-            if (_e178 != _e178) {
-                phi_1933_ = true;
+            let _e185 = (1.25f - (select(_e179, _e178, ((_e178 < _e179) || (_e179 != _e179))) / _e176));
+            let _e189 = select(0f, select(1f, _e185, (_e185 < 1f)), (_e185 > 0f));
+            let _e191 = abs(_e169);
+            let _e192 = abs((_e169 - _e173));
+            let _e198 = (1.25f - (select(_e192, _e191, ((_e191 < _e192) || (_e192 != _e192))) / _e176));
+            let _e202 = select(0f, select(1f, _e198, (_e198 < 1f)), (_e198 > 0f));
+            let _e204 = abs(_e170);
+            let _e205 = abs((_e170 + _e175));
+            let _e211 = (1.25f - (select(_e205, _e204, ((_e204 < _e205) || (_e205 != _e205))) / _e176));
+            let _e215 = select(0f, select(1f, _e211, (_e211 < 1f)), (_e211 > 0f));
+            let _e217 = abs(_e171);
+            let _e218 = abs((_e171 - _e175));
+            let _e224 = (1.25f - (select(_e218, _e217, ((_e217 < _e218) || (_e218 != _e218))) / _e176));
+            let _e228 = select(0f, select(1f, _e224, (_e224 < 1f)), (_e224 > 0f));
+            let _e233 = (select(0f, select(1f, _e189, (_e189 < 1f)), (_e189 > 0f)) * 2.9f);
+            let _e235 = floor((_e233 + 0.5f));
+            let _e244 = select(_e235, (_e235 - 1f), (((_e235 - _e233) == 0.5f) && ((floor((_e235 * 0.5f)) * 2f) != _e235)));
+            let _e246 = select(0f, _e244, (_e244 > 0f));
+            let _e255 = (select(0f, select(1f, _e202, (_e202 < 1f)), (_e202 > 0f)) * 2.9f);
+            let _e257 = floor((_e255 + 0.5f));
+            let _e266 = select(_e257, (_e257 - 1f), (((_e257 - _e255) == 0.5f) && ((floor((_e257 * 0.5f)) * 2f) != _e257)));
+            let _e268 = select(0f, _e266, (_e266 > 0f));
+            let _e278 = (select(0f, select(1f, _e215, (_e215 < 1f)), (_e215 > 0f)) * 2.9f);
+            let _e280 = floor((_e278 + 0.5f));
+            let _e289 = select(_e280, (_e280 - 1f), (((_e280 - _e278) == 0.5f) && ((floor((_e280 * 0.5f)) * 2f) != _e280)));
+            let _e291 = select(0f, _e289, (_e289 > 0f));
+            let _e301 = (select(0f, select(1f, _e228, (_e228 < 1f)), (_e228 > 0f)) * 2.9f);
+            let _e303 = floor((_e301 + 0.5f));
+            let _e312 = select(_e303, (_e303 - 1f), (((_e303 - _e301) == 0.5f) && ((floor((_e303 * 0.5f)) * 2f) != _e303)));
+            let _e314 = select(0f, _e312, (_e312 > 0f));
+            let _e321 = ((f32(_e83.x) + 0.5f) / _e89);
+            let _e324 = ((f32(_e83.y) + 0.5f) / _e99);
+            let _e325 = (_e112 * 0.99999f);
+            let _e332 = params.member.member.member_1[0u];
+            let _e334 = ((((_e321 * 2f) - 1f) * _e332) * _e325);
+            let _e341 = params.member.member.member_1[1u];
+            let _e343 = ((((_e324 * -2f) + 1f) * _e341) * _e325);
+            let _e344 = -(_e334);
+            let _e345 = -(_e343);
+            let _e346 = (_e112 * -0.99999f);
+            let _e353 = (1f / sqrt((((_e344 * _e344) + (_e345 * _e345)) + (_e346 * _e346))));
+            let _e354 = (_e344 * _e353);
+            let _e355 = (_e345 * _e353);
+            let _e356 = (_e346 * _e353);
+            let _e359 = normals.member[_e110];
+            let _e367 = (f32((bitcast<i32>(((_e359 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+            if (_e367 != _e367) {
+                phi_2369_ = true;
             } else {
-                phi_1933_ = (_e179 <= _e178);
+                phi_2369_ = (-1f >= _e367);
             }
-            let _e183 = phi_1933_;
-            let _e186 = (1.25f - (select(_e178, _e179, _e183) / _e176));
-            let _e190 = select(0f, select(1f, _e186, (_e186 < 1f)), (_e186 > 0f));
-            let _e192 = abs(_e169);
-            let _e193 = abs((_e169 - _e173));
-            if (_e192 != _e192) {
-                phi_1948_ = true;
+            let _e371 = phi_2369_;
+            let _e372 = select(_e367, -1f, _e371);
+            let _e382 = (f32((bitcast<i32>((((_e359 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+            if (_e382 != _e382) {
+                phi_2384_ = true;
             } else {
-                phi_1948_ = (_e193 <= _e192);
+                phi_2384_ = (-1f >= _e382);
             }
-            let _e197 = phi_1948_;
-            let _e200 = (1.25f - (select(_e192, _e193, _e197) / _e176));
-            let _e204 = select(0f, select(1f, _e200, (_e200 < 1f)), (_e200 > 0f));
-            let _e206 = abs(_e170);
-            let _e207 = abs((_e170 + _e175));
-            if (_e206 != _e206) {
-                phi_1963_ = true;
+            let _e386 = phi_2384_;
+            let _e387 = select(_e382, -1f, _e386);
+            let _e390 = (1f - abs(_e372));
+            let _e391 = abs(_e387);
+            let _e392 = (_e390 - _e391);
+            if (_e392 < 0f) {
+                phi_2344_ = vec2<f32>(((1f - _e391) * select(1f, -1f, (_e372 < 0f))), (_e390 * select(1f, -1f, (_e387 < 0f))));
             } else {
-                phi_1963_ = (_e207 <= _e206);
+                phi_2344_ = vec2<f32>(_e372, _e387);
             }
-            let _e211 = phi_1963_;
-            let _e214 = (1.25f - (select(_e206, _e207, _e211) / _e176));
-            let _e218 = select(0f, select(1f, _e214, (_e214 < 1f)), (_e214 > 0f));
-            let _e220 = abs(_e171);
-            let _e221 = abs((_e171 - _e175));
-            if (_e220 != _e220) {
-                phi_1978_ = true;
-            } else {
-                phi_1978_ = (_e221 <= _e220);
-            }
-            let _e225 = phi_1978_;
-            let _e228 = (1.25f - (select(_e220, _e221, _e225) / _e176));
-            let _e232 = select(0f, select(1f, _e228, (_e228 < 1f)), (_e228 > 0f));
-            let _e237 = (select(0f, select(1f, _e190, (_e190 < 1f)), (_e190 > 0f)) * 2.9f);
-            let _e239 = floor((_e237 + 0.5f));
-            if ((_e239 - _e237) == 0.5f) {
-                let _e245 = ((floor((_e239 * 0.5f)) * 2f) != _e239);
-                if _e245 {
-                    phi_2009_ = (_e239 - 1f);
-                } else {
-                    phi_2009_ = f32();
-                }
-                let _e248 = phi_2009_;
-                phi_2013_ = _e248;
-                phi_2014_ = select(true, false, _e245);
-            } else {
-                phi_2013_ = f32();
-                phi_2014_ = true;
-            }
-            let _e251 = phi_2013_;
-            let _e253 = phi_2014_;
-            let _e254 = select(_e251, _e239, _e253);
-            if (_e254 > 0f) {
-                let _e260 = select(select(u32(_e254), 0u, (_e254 < 0f)), 4294967295u, (_e254 > 4294967000f));
-                phi_2036_ = select(_e260, 3u, (3u < _e260));
-            } else {
-                phi_2036_ = 0u;
-            }
-            let _e264 = phi_2036_;
-            let _e270 = (select(0f, select(1f, _e204, (_e204 < 1f)), (_e204 > 0f)) * 2.9f);
-            let _e272 = floor((_e270 + 0.5f));
-            if ((_e272 - _e270) == 0.5f) {
-                let _e278 = ((floor((_e272 * 0.5f)) * 2f) != _e272);
-                if _e278 {
-                    phi_2063_ = (_e272 - 1f);
-                } else {
-                    phi_2063_ = f32();
-                }
-                let _e281 = phi_2063_;
-                phi_2067_ = _e281;
-                phi_2068_ = select(true, false, _e278);
-            } else {
-                phi_2067_ = f32();
-                phi_2068_ = true;
-            }
-            let _e284 = phi_2067_;
-            let _e286 = phi_2068_;
-            let _e287 = select(_e284, _e272, _e286);
-            if (_e287 > 0f) {
-                let _e293 = select(select(u32(_e287), 0u, (_e287 < 0f)), 4294967295u, (_e287 > 4294967000f));
-                phi_2090_ = select(_e293, 3u, (3u < _e293));
-            } else {
-                phi_2090_ = 0u;
-            }
-            let _e297 = phi_2090_;
-            let _e304 = (select(0f, select(1f, _e218, (_e218 < 1f)), (_e218 > 0f)) * 2.9f);
-            let _e306 = floor((_e304 + 0.5f));
-            if ((_e306 - _e304) == 0.5f) {
-                let _e312 = ((floor((_e306 * 0.5f)) * 2f) != _e306);
-                if _e312 {
-                    phi_2117_ = (_e306 - 1f);
-                } else {
-                    phi_2117_ = f32();
-                }
-                let _e315 = phi_2117_;
-                phi_2121_ = _e315;
-                phi_2122_ = select(true, false, _e312);
-            } else {
-                phi_2121_ = f32();
-                phi_2122_ = true;
-            }
-            let _e318 = phi_2121_;
-            let _e320 = phi_2122_;
-            let _e321 = select(_e318, _e306, _e320);
-            if (_e321 > 0f) {
-                let _e327 = select(select(u32(_e321), 0u, (_e321 < 0f)), 4294967295u, (_e321 > 4294967000f));
-                phi_2144_ = select(_e327, 3u, (3u < _e327));
-            } else {
-                phi_2144_ = 0u;
-            }
-            let _e331 = phi_2144_;
-            let _e338 = (select(0f, select(1f, _e232, (_e232 < 1f)), (_e232 > 0f)) * 2.9f);
-            let _e340 = floor((_e338 + 0.5f));
-            if ((_e340 - _e338) == 0.5f) {
-                let _e346 = ((floor((_e340 * 0.5f)) * 2f) != _e340);
-                if _e346 {
-                    phi_2171_ = (_e340 - 1f);
-                } else {
-                    phi_2171_ = f32();
-                }
-                let _e349 = phi_2171_;
-                phi_2175_ = _e349;
-                phi_2176_ = select(true, false, _e346);
-            } else {
-                phi_2175_ = f32();
-                phi_2176_ = true;
-            }
-            let _e352 = phi_2175_;
-            let _e354 = phi_2176_;
-            let _e355 = select(_e352, _e340, _e354);
-            if (_e355 > 0f) {
-                let _e361 = select(select(u32(_e355), 0u, (_e355 < 0f)), 4294967295u, (_e355 > 4294967000f));
-                phi_2198_ = select(_e361, 3u, (3u < _e361));
-            } else {
-                phi_2198_ = 0u;
-            }
-            let _e365 = phi_2198_;
-            let _e369 = ((f32(_e83.x) + 0.5f) / _e89);
-            let _e372 = ((f32(_e83.y) + 0.5f) / _e99);
-            let _e373 = (_e112 * 0.99999f);
-            let _e380 = params.member.member.member_1[0u];
-            let _e382 = ((((_e369 * 2f) - 1f) * _e380) * _e373);
-            let _e389 = params.member.member.member_1[1u];
-            let _e391 = ((((_e372 * -2f) + 1f) * _e389) * _e373);
-            let _e392 = -(_e382);
-            let _e393 = -(_e391);
-            let _e394 = (_e112 * -0.99999f);
-            let _e401 = (1f / sqrt((((_e392 * _e392) + (_e393 * _e393)) + (_e394 * _e394))));
-            let _e402 = (_e392 * _e401);
-            let _e403 = (_e393 * _e401);
-            let _e404 = (_e394 * _e401);
-            let _e407 = normals.member[_e110];
-            let _e415 = (f32((bitcast<i32>(((_e407 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-            if (_e415 != _e415) {
-                phi_2277_ = true;
-            } else {
-                phi_2277_ = (-1f >= _e415);
-            }
-            let _e419 = phi_2277_;
-            let _e420 = select(_e415, -1f, _e419);
-            let _e430 = (f32((bitcast<i32>((((_e407 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-            if (_e430 != _e430) {
-                phi_2292_ = true;
-            } else {
-                phi_2292_ = (-1f >= _e430);
-            }
-            let _e434 = phi_2292_;
-            let _e435 = select(_e430, -1f, _e434);
-            let _e438 = (1f - abs(_e420));
-            let _e439 = abs(_e435);
-            let _e440 = (_e438 - _e439);
-            if (_e440 < 0f) {
-                phi_2253_ = vec2<f32>(((1f - _e439) * select(1f, -1f, (_e420 < 0f))), (_e438 * select(1f, -1f, (_e435 < 0f))));
-            } else {
-                phi_2253_ = vec2<f32>(_e420, _e435);
-            }
-            let _e451 = phi_2253_;
-            let _e460 = (1f / sqrt((((_e451.x * _e451.x) + (_e451.y * _e451.y)) + (_e440 * _e440))));
-            let _e461 = (_e451.x * _e460);
-            let _e462 = (_e451.y * _e460);
-            let _e463 = (_e440 * _e460);
-            let _e464 = -(_e463);
-            let _e470 = ((((_e461 * _e402) + (_e462 * _e403)) + (_e464 * _e404)) < 0f);
-            let _e473 = select(_e461, -(_e461), _e470);
-            let _e474 = select(_e462, -(_e462), _e470);
-            let _e475 = select(_e464, _e463, _e470);
-            let _e479 = params.member.member_1;
-            let _e482 = params.member.member_2;
-            let _e483 = (_e479 * _e482);
-            let _e487 = (_e483 / (((_e112 * 1.99998f) * _e380) / _e89));
-            let _e491 = params.member.member_11;
-            phi_2309_ = (_e83.y & 63u);
-            phi_2310_ = (_e83.x & 63u);
-            phi_2311_ = 32u;
-            phi_2312_ = 0u;
+            let _e403 = phi_2344_;
+            let _e412 = (1f / sqrt((((_e403.x * _e403.x) + (_e403.y * _e403.y)) + (_e392 * _e392))));
+            let _e413 = (_e403.x * _e412);
+            let _e414 = (_e403.y * _e412);
+            let _e415 = (_e392 * _e412);
+            let _e416 = -(_e415);
+            let _e422 = ((((_e413 * _e354) + (_e414 * _e355)) + (_e416 * _e356)) < 0f);
+            let _e425 = select(_e413, -(_e413), _e422);
+            let _e426 = select(_e414, -(_e414), _e422);
+            let _e427 = select(_e416, _e415, _e422);
+            let _e431 = params.member.member_1;
+            let _e434 = params.member.member_2;
+            let _e435 = (_e431 * _e434);
+            let _e439 = (_e435 / (((_e112 * 1.99998f) * _e332) / _e89));
+            let _e443 = params.member.member_11;
+            phi_2401_ = (_e83.y & 63u);
+            phi_2402_ = (_e83.x & 63u);
+            phi_2403_ = 32u;
+            phi_2404_ = 0u;
             loop {
-                let _e495 = phi_2309_;
-                let _e497 = phi_2310_;
-                let _e499 = phi_2311_;
-                let _e501 = phi_2312_;
-                local = _e501;
-                let _e502 = (_e499 > 0u);
-                if _e502 {
-                    let _e505 = select(0u, 1u, ((_e497 & _e499) != 0u));
-                    let _e508 = select(0u, 1u, ((_e495 & _e499) != 0u));
-                    if (_e508 == 0u) {
-                        if (_e505 == 1u) {
-                            phi_2335_ = (63u - _e495);
-                            phi_2336_ = (63u - _e497);
+                let _e447 = phi_2401_;
+                let _e449 = phi_2402_;
+                let _e451 = phi_2403_;
+                let _e453 = phi_2404_;
+                local = _e453;
+                let _e454 = (_e451 > 0u);
+                if _e454 {
+                    let _e457 = select(0u, 1u, ((_e449 & _e451) != 0u));
+                    let _e460 = select(0u, 1u, ((_e447 & _e451) != 0u));
+                    if (_e460 == 0u) {
+                        if (_e457 == 1u) {
+                            phi_2427_ = (63u - _e447);
+                            phi_2428_ = (63u - _e449);
                         } else {
-                            phi_2335_ = _e495;
-                            phi_2336_ = _e497;
+                            phi_2427_ = _e447;
+                            phi_2428_ = _e449;
                         }
-                        let _e519 = phi_2335_;
-                        let _e521 = phi_2336_;
-                        phi_2339_ = _e521;
-                        phi_2340_ = _e519;
+                        let _e471 = phi_2427_;
+                        let _e473 = phi_2428_;
+                        phi_2431_ = _e473;
+                        phi_2432_ = _e471;
                     } else {
-                        phi_2339_ = _e495;
-                        phi_2340_ = _e497;
+                        phi_2431_ = _e447;
+                        phi_2432_ = _e449;
                     }
-                    let _e523 = phi_2339_;
-                    let _e525 = phi_2340_;
-                    phi_2344_ = _e523;
-                    phi_2345_ = _e525;
-                    phi_2346_ = (_e499 / 2u);
-                    phi_2347_ = (_e501 + ((_e499 * _e499) * ((3u * _e505) ^ _e508)));
+                    let _e475 = phi_2431_;
+                    let _e477 = phi_2432_;
+                    phi_2436_ = _e475;
+                    phi_2437_ = _e477;
+                    phi_2438_ = (_e451 / 2u);
+                    phi_2439_ = (_e453 + ((_e451 * _e451) * ((3u * _e457) ^ _e460)));
                 } else {
-                    phi_2344_ = u32();
-                    phi_2345_ = u32();
-                    phi_2346_ = u32();
-                    phi_2347_ = u32();
+                    phi_2436_ = u32();
+                    phi_2437_ = u32();
+                    phi_2438_ = u32();
+                    phi_2439_ = u32();
                 }
-                let _e528 = phi_2344_;
-                let _e530 = phi_2345_;
-                let _e532 = phi_2346_;
-                let _e534 = phi_2347_;
+                let _e480 = phi_2436_;
+                let _e482 = phi_2437_;
+                let _e484 = phi_2438_;
+                let _e486 = phi_2439_;
                 continue;
                 continuing {
-                    phi_2309_ = _e528;
-                    phi_2310_ = _e530;
-                    phi_2311_ = _e532;
-                    phi_2312_ = _e534;
-                    break if !(_e502);
+                    phi_2401_ = _e480;
+                    phi_2402_ = _e482;
+                    phi_2403_ = _e484;
+                    phi_2404_ = _e486;
+                    break if !(_e454);
                 }
             }
-            let _e539 = local;
-            let _e541 = f32((_e539 + (288u * (_e491 % 64u))));
-            let _e543 = (0.5f + (_e541 * 0.7548777f));
-            let _e547 = (0.5f + (_e541 * 0.5698403f));
-            let _e553 = params.member.member.member_3;
-            let _e556 = select(false, (_e112 < _e553), (_e112 > 0f));
-            if _e556 {
-                let _e559 = params.member.member_3;
-                let _e560 = (_e559 * _e483);
-                let _e562 = ((10f - _e487) * 0.01f);
-                let _e570 = params.member.member_8;
-                let _e572 = select(1u, _e570, (1u < _e570));
-                phi_759_ = 0u;
-                phi_762_ = vec3<f32>(0f, 0f, 0f);
-                phi_764_ = (select(0f, select(1f, _e562, (_e562 < 1f)), (_e562 > 0f)) * 0.5f);
+            let _e491 = local;
+            let _e493 = f32((_e491 + (288u * (_e443 % 64u))));
+            let _e495 = (0.5f + (_e493 * 0.7548777f));
+            let _e499 = (0.5f + (_e493 * 0.5698403f));
+            let _e505 = params.member.member.member_3;
+            let _e508 = select(false, (_e112 < _e505), (_e112 > 0f));
+            if _e508 {
+                let _e511 = params.member.member_3;
+                let _e512 = (_e511 * _e435);
+                let _e513 = (_e512 <= 0f);
+                if _e513 {
+                    phi_751_ = 0f;
+                } else {
+                    phi_751_ = (1f / _e512);
+                }
+                let _e516 = phi_751_;
+                let _e517 = -(_e516);
+                let _e518 = (_e435 * _e516);
+                let _e520 = ((10f - _e439) * 0.01f);
+                let _e528 = params.member.member_8;
+                let _e530 = select(1u, _e528, (1u < _e528));
+                phi_778_ = 0u;
+                phi_781_ = vec3<f32>(0f, 0f, 0f);
+                phi_783_ = (select(0f, select(1f, _e520, (_e520 < 1f)), (_e520 > 0f)) * 0.5f);
                 loop {
-                    let _e574 = phi_759_;
-                    let _e576 = phi_762_;
-                    let _e578 = phi_764_;
-                    local_7 = _e578;
-                    local_8 = _e576;
-                    let _e579 = (_e574 < _e572);
-                    if _e579 {
-                        let _e584 = ((((_e543 - floor(_e543)) + f32(_e574)) * 3.1415927f) / f32(_e572));
-                        let _e585 = sin(_e584);
-                        let _e586 = cos(_e584);
-                        let _e592 = ((_e586 * _e402) + (_e585 * _e403));
-                        let _e596 = (_e586 - (_e402 * _e592));
-                        let _e597 = (_e585 - (_e403 * _e592));
-                        let _e598 = -((_e404 * _e592));
-                        let _e601 = ((_e597 * _e404) - (_e403 * _e598));
-                        let _e604 = ((_e598 * _e402) - (_e404 * _e596));
-                        let _e607 = ((_e596 * _e403) - (_e402 * _e597));
-                        let _e614 = (1f / sqrt((((_e601 * _e601) + (_e604 * _e604)) + (_e607 * _e607))));
-                        let _e615 = (_e601 * _e614);
-                        let _e616 = (_e604 * _e614);
-                        let _e617 = (_e607 * _e614);
-                        let _e622 = (((_e473 * _e615) + (_e474 * _e616)) + (_e475 * _e617));
-                        let _e626 = (_e473 - (_e615 * _e622));
-                        let _e627 = (_e474 - (_e616 * _e622));
-                        let _e628 = (_e475 - (_e617 * _e622));
-                        let _e634 = sqrt((((_e626 * _e626) + (_e627 * _e627)) + (_e628 * _e628)));
-                        let _e639 = (((_e596 * _e626) + (_e597 * _e627)) + (_e598 * _e628));
-                        let _e649 = ((((_e626 * _e402) + (_e627 * _e403)) + (_e628 * _e404)) / _e634);
-                        let _e653 = select(0f, select(1f, _e649, (_e649 < 1f)), (_e649 > 0f));
-                        let _e654 = abs(_e653);
-                        let _e665 = (((_e654 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e654))) >> bitcast<u32>(1i))))));
-                        let _e669 = (select(select(0f, -1f, (_e639 < 0f)), 1f, (_e639 > 0f)) * select((3.141593f - _e665), _e665, (_e653 >= 0f)));
-                        let _e672 = params.member.member_9;
-                        let _e674 = select(1u, _e672, (1u < _e672));
-                        let _e676 = cos((_e669 + 1.5707964f));
-                        let _e678 = cos((_e669 - 1.5707964f));
-                        let _e681 = params.member.member_5;
-                        phi_935_ = 0u;
-                        phi_938_ = _e678;
-                        phi_940_ = _e676;
+                    let _e532 = phi_778_;
+                    let _e534 = phi_781_;
+                    let _e536 = phi_783_;
+                    local_5 = _e536;
+                    local_6 = _e534;
+                    let _e537 = (_e532 < _e530);
+                    if _e537 {
+                        let _e542 = ((((_e495 - floor(_e495)) + f32(_e532)) * 3.1415927f) / f32(_e530));
+                        let _e543 = sin(_e542);
+                        let _e544 = cos(_e542);
+                        let _e550 = ((_e544 * _e354) + (_e543 * _e355));
+                        let _e554 = (_e544 - (_e354 * _e550));
+                        let _e555 = (_e543 - (_e355 * _e550));
+                        let _e556 = -((_e356 * _e550));
+                        let _e559 = ((_e555 * _e356) - (_e355 * _e556));
+                        let _e562 = ((_e556 * _e354) - (_e356 * _e554));
+                        let _e565 = ((_e554 * _e355) - (_e354 * _e555));
+                        let _e572 = (1f / sqrt((((_e559 * _e559) + (_e562 * _e562)) + (_e565 * _e565))));
+                        let _e573 = (_e559 * _e572);
+                        let _e574 = (_e562 * _e572);
+                        let _e575 = (_e565 * _e572);
+                        let _e580 = (((_e425 * _e573) + (_e426 * _e574)) + (_e427 * _e575));
+                        let _e584 = (_e425 - (_e573 * _e580));
+                        let _e585 = (_e426 - (_e574 * _e580));
+                        let _e586 = (_e427 - (_e575 * _e580));
+                        let _e592 = sqrt((((_e584 * _e584) + (_e585 * _e585)) + (_e586 * _e586)));
+                        let _e597 = (((_e554 * _e584) + (_e555 * _e585)) + (_e556 * _e586));
+                        let _e607 = ((((_e584 * _e354) + (_e585 * _e355)) + (_e586 * _e356)) / _e592);
+                        let _e611 = select(0f, select(1f, _e607, (_e607 < 1f)), (_e607 > 0f));
+                        let _e612 = abs(_e611);
+                        let _e623 = (((_e612 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e612))) >> bitcast<u32>(1i))))));
+                        let _e627 = (select(select(0f, -1f, (_e597 < 0f)), 1f, (_e597 > 0f)) * select((3.141593f - _e623), _e623, (_e611 >= 0f)));
+                        let _e630 = params.member.member_9;
+                        let _e632 = select(1u, _e630, (1u < _e630));
+                        let _e634 = cos((_e627 + 1.5707964f));
+                        let _e636 = cos((_e627 - 1.5707964f));
+                        let _e639 = params.member.member_5;
+                        phi_954_ = 0u;
+                        phi_957_ = _e636;
+                        phi_959_ = _e634;
                         loop {
-                            let _e683 = phi_935_;
-                            let _e685 = phi_938_;
-                            let _e687 = phi_940_;
-                            local_3 = _e685;
-                            local_4 = _e685;
-                            local_5 = _e687;
-                            local_6 = _e687;
-                            let _e688 = (_e683 < _e674);
-                            if _e688 {
-                                let _e693 = ((_e547 - floor(_e547)) + (f32((_e574 + (_e683 * _e674))) * 0.618034f));
-                                let _e699 = (((_e693 - floor(_e693)) + f32(_e683)) / f32(_e674));
-                                let _e702 = params.member.member_4;
-                                if (_e702 == 2f) {
-                                    phi_994_ = (_e699 * _e699);
+                            let _e641 = phi_954_;
+                            let _e643 = phi_957_;
+                            let _e645 = phi_959_;
+                            local_1 = _e643;
+                            local_2 = _e643;
+                            local_3 = _e645;
+                            local_4 = _e645;
+                            let _e646 = (_e641 < _e632);
+                            if _e646 {
+                                let _e651 = ((_e499 - floor(_e499)) + (f32((_e532 + (_e641 * _e632))) * 0.618034f));
+                                let _e658 = (((_e651 - floor(_e651)) + f32(_e641)) * (1f / f32(_e632)));
+                                let _e661 = params.member.member_4;
+                                if (_e661 == 2f) {
+                                    phi_1014_ = (_e658 * _e658);
                                 } else {
-                                    phi_994_ = pow(_e699, _e702);
+                                    phi_1014_ = pow(_e658, _e661);
                                 }
-                                let _e707 = phi_994_;
-                                let _e708 = (_e707 + (1.3f / _e487));
-                                let _e709 = ((_e586 * _e487) * _e708);
-                                let _e710 = ((-(_e585) * _e487) * _e708);
-                                let _e718 = params.member.member_7;
-                                let _e719 = (log2(sqrt(((_e709 * _e709) + (_e710 * _e710)))) - _e718);
-                                let _e726 = (-1f - floor((-0.5f - select(0f, select(5f, _e719, (_e719 < 5f)), (_e719 > 0f)))));
-                                let _e728 = floor((_e709 + 0.5f));
-                                if ((_e728 - _e709) == 0.5f) {
-                                    let _e734 = ((floor((_e728 * 0.5f)) * 2f) != _e728);
-                                    if _e734 {
-                                        phi_1039_ = (_e728 - 1f);
-                                    } else {
-                                        phi_1039_ = f32();
-                                    }
-                                    let _e737 = phi_1039_;
-                                    phi_1041_ = _e737;
-                                    phi_1042_ = select(true, false, _e734);
+                                let _e666 = phi_1014_;
+                                let _e667 = (_e666 + (1.3f / _e439));
+                                let _e668 = ((_e544 * _e439) * _e667);
+                                let _e669 = ((-(_e543) * _e439) * _e667);
+                                let _e677 = params.member.member_7;
+                                let _e678 = (log2(sqrt(((_e668 * _e668) + (_e669 * _e669)))) - _e677);
+                                let _e685 = (-1f - floor((-0.5f - select(0f, select(5f, _e678, (_e678 < 5f)), (_e678 > 0f)))));
+                                let _e687 = floor((_e668 + 0.5f));
+                                let _e698 = (select(_e687, (_e687 - 1f), (((_e687 - _e668) == 0.5f) && ((floor((_e687 * 0.5f)) * 2f) != _e687))) * (1f / _e89));
+                                let _e700 = floor((_e669 + 0.5f));
+                                let _e711 = (select(_e700, (_e700 - 1f), (((_e700 - _e669) == 0.5f) && ((floor((_e700 * 0.5f)) * 2f) != _e700))) * (1f / _e99));
+                                let _e712 = (_e321 + _e698);
+                                let _e713 = (_e324 + _e711);
+                                let _e714 = (_e321 - _e698);
+                                let _e715 = (_e324 - _e711);
+                                let _e717 = select(1u, _e94, (1u < _e94));
+                                let _e719 = select(1u, _e104, (1u < _e104));
+                                let _e722 = (_e717 * _e719);
+                                let _e724 = (_e94 >> bitcast<u32>(1u));
+                                let _e726 = select(1u, _e724, (1u < _e724));
+                                let _e728 = (_e104 >> bitcast<u32>(1u));
+                                let _e730 = select(1u, _e728, (1u < _e728));
+                                let _e731 = (_e685 >= 1f);
+                                let _e740 = (_e722 + (_e726 * _e730));
+                                let _e742 = (_e94 >> bitcast<u32>(2u));
+                                let _e744 = select(1u, _e742, (1u < _e742));
+                                let _e746 = (_e104 >> bitcast<u32>(2u));
+                                let _e748 = select(1u, _e746, (1u < _e746));
+                                let _e749 = (_e685 >= 2f);
+                                let _e758 = (_e740 + (_e744 * _e748));
+                                let _e760 = (_e94 >> bitcast<u32>(3u));
+                                let _e762 = select(1u, _e760, (1u < _e760));
+                                let _e764 = (_e104 >> bitcast<u32>(3u));
+                                let _e766 = select(1u, _e764, (1u < _e764));
+                                let _e767 = (_e685 >= 3f);
+                                let _e778 = (_e94 >> bitcast<u32>(4u));
+                                let _e780 = select(1u, _e778, (1u < _e778));
+                                let _e782 = (_e104 >> bitcast<u32>(4u));
+                                let _e784 = select(1u, _e782, (1u < _e782));
+                                let _e785 = (_e685 >= 4f);
+                                let _e786 = select(select(select(select(_e717, _e726, _e731), _e744, _e749), _e762, _e767), _e780, _e785);
+                                let _e788 = select(select(select(select(0u, _e722, _e731), _e740, _e749), _e758, _e767), (_e758 + (_e762 * _e766)), _e785);
+                                let _e790 = select(select(select(select(f32(_e717), f32(_e726), _e731), f32(_e744), _e749), f32(_e762), _e767), f32(_e780), _e785);
+                                let _e792 = select(select(select(select(f32(_e719), f32(_e730), _e731), f32(_e748), _e749), f32(_e766), _e767), f32(_e784), _e785);
+                                let _e793 = (_e712 * _e790);
+                                let _e795 = f32((_e786 - 1u));
+                                let _e797 = select(0f, _e793, (_e793 > 0f));
+                                let _e801 = (_e713 * _e792);
+                                let _e803 = f32((select(select(select(select(_e719, _e730, _e731), _e748, _e749), _e766, _e767), _e784, _e785) - 1u));
+                                let _e805 = select(0f, _e801, (_e801 > 0f));
+                                let _e814 = mips.member[((_e788 + (u32(select(_e803, _e805, (_e805 < _e803))) * _e786)) + u32(select(_e795, _e797, (_e797 < _e795))))];
+                                let _e823 = (_e714 * _e790);
+                                let _e825 = select(0f, _e823, (_e823 > 0f));
+                                let _e829 = (_e715 * _e792);
+                                let _e831 = select(0f, _e829, (_e829 > 0f));
+                                let _e840 = mips.member[((_e788 + (u32(select(_e803, _e831, (_e831 < _e803))) * _e786)) + u32(select(_e795, _e825, (_e825 < _e795))))];
+                                let _e849 = (((((_e712 * 2f) - 1f) * _e332) * _e814) - _e334);
+                                let _e850 = (((((_e713 * -2f) + 1f) * _e341) * _e814) - _e343);
+                                let _e851 = (_e814 - _e325);
+                                let _e854 = ((_e849 * _e849) + (_e850 * _e850));
+                                let _e857 = sqrt((_e854 + (_e851 * _e851)));
+                                let _e864 = (_e639 == 0f);
+                                if _e864 {
+                                    phi_1573_ = _e857;
                                 } else {
-                                    phi_1041_ = f32();
-                                    phi_1042_ = true;
+                                    let _e866 = (_e851 * (1f + _e639));
+                                    phi_1573_ = sqrt((_e854 + (_e866 * _e866)));
                                 }
-                                let _e740 = phi_1041_;
-                                let _e742 = phi_1042_;
-                                let _e744 = (select(_e740, _e728, _e742) / _e89);
-                                let _e746 = floor((_e710 + 0.5f));
-                                if ((_e746 - _e710) == 0.5f) {
-                                    let _e752 = ((floor((_e746 * 0.5f)) * 2f) != _e746);
-                                    if _e752 {
-                                        phi_1065_ = (_e746 - 1f);
-                                    } else {
-                                        phi_1065_ = f32();
-                                    }
-                                    let _e755 = phi_1065_;
-                                    phi_1067_ = _e755;
-                                    phi_1068_ = select(true, false, _e752);
+                                let _e871 = phi_1573_;
+                                if _e513 {
+                                    phi_1594_ = select(0f, 1f, (_e871 <= _e435));
                                 } else {
-                                    phi_1067_ = f32();
-                                    phi_1068_ = true;
+                                    let _e875 = ((_e871 * _e517) + _e518);
+                                    phi_1594_ = select(0f, select(1f, _e875, (_e875 < 1f)), (_e875 > 0f));
                                 }
-                                let _e758 = phi_1067_;
-                                let _e760 = phi_1068_;
-                                let _e762 = (select(_e758, _e746, _e760) / _e99);
-                                let _e763 = (_e369 + _e744);
-                                let _e764 = (_e372 + _e762);
-                                let _e765 = (_e369 - _e744);
-                                let _e766 = (_e372 - _e762);
-                                let _e767 = (_e726 > 0f);
-                                if _e767 {
-                                    let _e772 = select(select(u32(_e726), 0u, (_e726 < 0f)), 4294967295u, (_e726 > 4294967000f));
-                                    phi_1101_ = select(_e772, 4u, (4u < _e772));
+                                let _e881 = phi_1594_;
+                                let _e884 = (_e634 + ((((((_e849 * _e354) + (_e850 * _e355)) + (_e851 * _e356)) / _e857) - _e634) * _e881));
+                                let _e885 = (((((_e714 * 2f) - 1f) * _e332) * _e840) - _e334);
+                                let _e886 = (((((_e715 * -2f) + 1f) * _e341) * _e840) - _e343);
+                                let _e887 = (_e840 - _e325);
+                                let _e890 = ((_e885 * _e885) + (_e886 * _e886));
+                                let _e893 = sqrt((_e890 + (_e887 * _e887)));
+                                if _e864 {
+                                    phi_1633_ = _e893;
                                 } else {
-                                    phi_1101_ = 0u;
+                                    let _e901 = (_e887 * (1f + _e639));
+                                    phi_1633_ = sqrt((_e890 + (_e901 * _e901)));
                                 }
-                                let _e776 = phi_1101_;
-                                let _e777 = (_e776 & 31u);
-                                let _e779 = (_e94 >> bitcast<u32>(_e777));
-                                let _e781 = select(1u, _e779, (1u < _e779));
-                                let _e783 = (_e104 >> bitcast<u32>(_e777));
-                                let _e785 = select(1u, _e783, (1u < _e783));
-                                phi_1117_ = 0u;
-                                phi_1120_ = 0u;
-                                loop {
-                                    let _e787 = phi_1117_;
-                                    let _e789 = phi_1120_;
-                                    local_1 = _e789;
-                                    let _e790 = (_e787 < _e776);
-                                    if _e790 {
-                                        let _e791 = (_e787 & 31u);
-                                        let _e793 = (_e94 >> bitcast<u32>(_e791));
-                                        let _e797 = (_e104 >> bitcast<u32>(_e791));
-                                        phi_1118_ = (_e787 + 1u);
-                                        phi_1121_ = (_e789 + (select(1u, _e793, (1u < _e793)) * select(1u, _e797, (1u < _e797))));
-                                    } else {
-                                        phi_1118_ = u32();
-                                        phi_1121_ = u32();
-                                    }
-                                    let _e804 = phi_1118_;
-                                    let _e806 = phi_1121_;
-                                    continue;
-                                    continuing {
-                                        phi_1117_ = _e804;
-                                        phi_1120_ = _e806;
-                                        break if !(_e790);
-                                    }
-                                }
-                                let _e810 = (_e763 * f32(_e781));
-                                if (_e810 > 0f) {
-                                    let _e816 = select(select(u32(_e810), 0u, (_e810 < 0f)), 4294967295u, (_e810 > 4294967000f));
-                                    let _e817 = (_e781 - 1u);
-                                    phi_1165_ = select(_e816, _e817, (_e817 < _e816));
+                                let _e906 = phi_1633_;
+                                if _e513 {
+                                    phi_1654_ = select(0f, 1f, (_e906 <= _e435));
                                 } else {
-                                    phi_1165_ = 0u;
+                                    let _e910 = ((_e906 * _e517) + _e518);
+                                    phi_1654_ = select(0f, select(1f, _e910, (_e910 < 1f)), (_e910 > 0f));
                                 }
-                                let _e821 = phi_1165_;
-                                let _e822 = (_e764 * f32(_e785));
-                                if (_e822 > 0f) {
-                                    let _e828 = select(select(u32(_e822), 0u, (_e822 < 0f)), 4294967295u, (_e822 > 4294967000f));
-                                    let _e829 = (_e785 - 1u);
-                                    phi_1184_ = select(_e828, _e829, (_e829 < _e828));
-                                } else {
-                                    phi_1184_ = 0u;
-                                }
-                                let _e833 = phi_1184_;
-                                let _e836 = local_1;
-                                let _e841 = mips.member[((_e836 + (_e833 * _e781)) + _e821)];
-                                if _e767 {
-                                    let _e854 = select(select(u32(_e726), 0u, (_e726 < 0f)), 4294967295u, (_e726 > 4294967000f));
-                                    phi_1223_ = select(_e854, 4u, (4u < _e854));
-                                } else {
-                                    phi_1223_ = 0u;
-                                }
-                                let _e858 = phi_1223_;
-                                let _e859 = (_e858 & 31u);
-                                let _e861 = (_e94 >> bitcast<u32>(_e859));
-                                let _e863 = select(1u, _e861, (1u < _e861));
-                                let _e865 = (_e104 >> bitcast<u32>(_e859));
-                                let _e867 = select(1u, _e865, (1u < _e865));
-                                phi_1239_ = 0u;
-                                phi_1242_ = 0u;
-                                loop {
-                                    let _e869 = phi_1239_;
-                                    let _e871 = phi_1242_;
-                                    local_2 = _e871;
-                                    let _e872 = (_e869 < _e858);
-                                    if _e872 {
-                                        let _e873 = (_e869 & 31u);
-                                        let _e875 = (_e94 >> bitcast<u32>(_e873));
-                                        let _e879 = (_e104 >> bitcast<u32>(_e873));
-                                        phi_1240_ = (_e869 + 1u);
-                                        phi_1243_ = (_e871 + (select(1u, _e875, (1u < _e875)) * select(1u, _e879, (1u < _e879))));
-                                    } else {
-                                        phi_1240_ = u32();
-                                        phi_1243_ = u32();
-                                    }
-                                    let _e886 = phi_1240_;
-                                    let _e888 = phi_1243_;
-                                    continue;
-                                    continuing {
-                                        phi_1239_ = _e886;
-                                        phi_1242_ = _e888;
-                                        break if !(_e872);
-                                    }
-                                }
-                                let _e892 = (_e765 * f32(_e863));
-                                if (_e892 > 0f) {
-                                    let _e898 = select(select(u32(_e892), 0u, (_e892 < 0f)), 4294967295u, (_e892 > 4294967000f));
-                                    let _e899 = (_e863 - 1u);
-                                    phi_1287_ = select(_e898, _e899, (_e899 < _e898));
-                                } else {
-                                    phi_1287_ = 0u;
-                                }
-                                let _e903 = phi_1287_;
-                                let _e904 = (_e766 * f32(_e867));
-                                if (_e904 > 0f) {
-                                    let _e910 = select(select(u32(_e904), 0u, (_e904 < 0f)), 4294967295u, (_e904 > 4294967000f));
-                                    let _e911 = (_e867 - 1u);
-                                    phi_1306_ = select(_e910, _e911, (_e911 < _e910));
-                                } else {
-                                    phi_1306_ = 0u;
-                                }
-                                let _e915 = phi_1306_;
-                                let _e918 = local_2;
-                                let _e923 = mips.member[((_e918 + (_e915 * _e863)) + _e903)];
-                                let _e932 = (((((_e763 * 2f) - 1f) * _e380) * _e841) - _e382);
-                                let _e933 = (((((_e764 * -2f) + 1f) * _e389) * _e841) - _e391);
-                                let _e934 = (_e841 - _e373);
-                                let _e937 = ((_e932 * _e932) + (_e933 * _e933));
-                                let _e940 = sqrt((_e937 + (_e934 * _e934)));
-                                let _e949 = (1f + _e681);
-                                let _e950 = (_e934 * _e949);
-                                let _e953 = sqrt((_e937 + (_e950 * _e950)));
-                                let _e954 = (_e560 > 0f);
-                                if _e954 {
-                                    let _e957 = ((-(_e953) + _e483) / _e560);
-                                    phi_1384_ = select(0f, select(1f, _e957, (_e957 < 1f)), (_e957 > 0f));
-                                } else {
-                                    phi_1384_ = select(0f, 1f, (_e953 <= _e483));
-                                }
-                                let _e965 = phi_1384_;
-                                let _e968 = (_e676 + ((((((_e932 / _e940) * _e402) + ((_e933 / _e940) * _e403)) + ((_e934 / _e940) * _e404)) - _e676) * _e965));
-                                let _e969 = (((((_e765 * 2f) - 1f) * _e380) * _e923) - _e382);
-                                let _e970 = (((((_e766 * -2f) + 1f) * _e389) * _e923) - _e391);
-                                let _e971 = (_e923 - _e373);
-                                let _e974 = ((_e969 * _e969) + (_e970 * _e970));
-                                let _e977 = sqrt((_e974 + (_e971 * _e971)));
-                                let _e986 = (_e971 * _e949);
-                                let _e989 = sqrt((_e974 + (_e986 * _e986)));
-                                if _e954 {
-                                    let _e992 = ((-(_e989) + _e483) / _e560);
-                                    phi_1444_ = select(0f, select(1f, _e992, (_e992 < 1f)), (_e992 > 0f));
-                                } else {
-                                    phi_1444_ = select(0f, 1f, (_e989 <= _e483));
-                                }
-                                let _e1000 = phi_1444_;
-                                let _e1003 = (_e678 + ((((((_e969 / _e977) * _e402) + ((_e970 / _e977) * _e403)) + ((_e971 / _e977) * _e404)) - _e678) * _e1000));
-                                if (_e687 != _e687) {
-                                    phi_2381_ = true;
-                                } else {
-                                    phi_2381_ = (_e968 >= _e687);
-                                }
-                                let _e1007 = phi_2381_;
-                                if (_e685 != _e685) {
-                                    phi_2396_ = true;
-                                } else {
-                                    phi_2396_ = (_e1003 >= _e685);
-                                }
-                                let _e1012 = phi_2396_;
-                                phi_936_ = (_e683 + 1u);
-                                phi_939_ = select(_e685, _e1003, _e1012);
-                                phi_941_ = select(_e687, _e968, _e1007);
+                                let _e916 = phi_1654_;
+                                let _e919 = (_e636 + ((((((_e885 * _e354) + (_e886 * _e355)) + (_e887 * _e356)) / _e893) - _e636) * _e916));
+                                phi_955_ = (_e641 + 1u);
+                                phi_958_ = select(_e919, _e643, ((_e643 > _e919) || (_e919 != _e919)));
+                                phi_960_ = select(_e884, _e645, ((_e645 > _e884) || (_e884 != _e884)));
                             } else {
-                                phi_936_ = u32();
-                                phi_939_ = f32();
-                                phi_941_ = f32();
+                                phi_955_ = u32();
+                                phi_958_ = f32();
+                                phi_960_ = f32();
                             }
-                            let _e1016 = phi_936_;
-                            let _e1018 = phi_939_;
-                            let _e1020 = phi_941_;
+                            let _e930 = phi_955_;
+                            let _e932 = phi_958_;
+                            let _e934 = phi_960_;
                             continue;
                             continuing {
-                                phi_935_ = _e1016;
-                                phi_938_ = _e1018;
-                                phi_940_ = _e1020;
-                                break if !(_e688);
+                                phi_954_ = _e930;
+                                phi_957_ = _e932;
+                                phi_959_ = _e934;
+                                break if !(_e646);
                             }
                         }
-                        let _e1023 = local_3;
-                        let _e1024 = abs(_e1023);
-                        let _e1035 = (((_e1024 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1024))) >> bitcast<u32>(1i))))));
-                        let _e1037 = local_4;
-                        let _e1040 = select((3.141593f - _e1035), _e1035, (_e1037 >= 0f));
-                        let _e1041 = -(_e1040);
-                        let _e1043 = local_5;
-                        let _e1044 = abs(_e1043);
-                        let _e1055 = (((_e1044 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e1044))) >> bitcast<u32>(1i))))));
-                        let _e1057 = local_6;
-                        let _e1060 = select((3.141593f - _e1055), _e1055, (_e1057 >= 0f));
-                        let _e1063 = (_e634 + ((1f - _e634) * 0.05f));
-                        let _e1064 = (_e1040 * -2f);
-                        let _e1065 = sin(_e669);
-                        let _e1071 = (_e1060 * 2f);
-                        let _e1083 = params.member.member_13;
-                        if (_e1083 == 0u) {
-                            phi_1663_ = _e576;
+                        let _e937 = local_1;
+                        let _e938 = abs(_e937);
+                        let _e949 = (((_e938 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e938))) >> bitcast<u32>(1i))))));
+                        let _e951 = local_2;
+                        let _e954 = select((3.141593f - _e949), _e949, (_e951 >= 0f));
+                        let _e955 = -(_e954);
+                        let _e957 = local_3;
+                        let _e958 = abs(_e957);
+                        let _e969 = (((_e958 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e958))) >> bitcast<u32>(1i))))));
+                        let _e971 = local_4;
+                        let _e974 = select((3.141593f - _e969), _e969, (_e971 >= 0f));
+                        let _e977 = (_e592 + ((1f - _e592) * 0.05f));
+                        let _e978 = (_e954 * -2f);
+                        let _e979 = sin(_e627);
+                        let _e985 = (_e974 * 2f);
+                        let _e997 = params.member.member_13;
+                        if (_e997 == 0u) {
+                            phi_1885_ = _e534;
                         } else {
-                            let _e1089 = ((_e1040 * -3f) - _e669);
-                            let _e1097 = ((_e1060 * 3f) - _e669);
-                            let _e1102 = (_e1041 + _e669);
-                            let _e1104 = (_e1060 + _e669);
-                            let _e1109 = (((((((sin((_e1041 - _e669)) * 6f) - sin(_e1089)) + (sin((_e1060 - _e669)) * 6f)) - sin(_e1097)) + (_e1065 * 16f)) - ((sin(_e1102) + sin(_e1104)) * 3f)) * 0.083333336f);
-                            let _e1121 = (((-(cos(_e1089)) - cos(_e1097)) + (cos(_e669) * 8f)) - ((cos(_e1102) + cos(_e1104)) * 3f));
-                            let _e1122 = (_e586 * _e1109);
-                            let _e1123 = (_e585 * _e1109);
-                            let _e1124 = (_e1121 * -0.083333336f);
-                            let _e1125 = (-1f * _e404);
-                            let _e1126 = (-1f * _e402);
-                            let _e1128 = (1f / (_e1125 + 1f));
-                            let _e1129 = (_e1128 * _e403);
-                            let _e1133 = (_e1129 * _e1126);
-                            let _e1154 = (_e1125 > 0.9997f);
-                            let _e1155 = (_e1125 < -0.9997f);
-                            phi_1663_ = (_e576 + vec3<f32>((select(select(((((_e1125 + (_e1129 * _e403)) * _e1122) + (_e1133 * _e1123)) + (_e1126 * _e1124)), _e1122, _e1155), _e1122, _e1154) * _e1063), (select(select((((_e1133 * _e1122) + ((_e1125 + ((_e1128 * _e1126) * _e1126)) * _e1123)) + (-(_e403) * _e1124)), -(_e1123), _e1155), _e1123, _e1154) * _e1063), (select(select((((_e402 * _e1122) + (_e403 * _e1123)) + (_e1125 * _e1124)), (_e1121 * 0.083333336f), _e1155), _e1124, _e1154) * _e1063)));
+                            let _e1003 = ((_e954 * -3f) - _e627);
+                            let _e1011 = ((_e974 * 3f) - _e627);
+                            let _e1016 = (_e955 + _e627);
+                            let _e1018 = (_e974 + _e627);
+                            let _e1023 = (((((((sin((_e955 - _e627)) * 6f) - sin(_e1003)) + (sin((_e974 - _e627)) * 6f)) - sin(_e1011)) + (_e979 * 16f)) - ((sin(_e1016) + sin(_e1018)) * 3f)) * 0.083333336f);
+                            let _e1035 = (((-(cos(_e1003)) - cos(_e1011)) + (cos(_e627) * 8f)) - ((cos(_e1016) + cos(_e1018)) * 3f));
+                            let _e1036 = (_e544 * _e1023);
+                            let _e1037 = (_e543 * _e1023);
+                            let _e1038 = (_e1035 * -0.083333336f);
+                            let _e1039 = (-1f * _e356);
+                            let _e1040 = (-1f * _e354);
+                            let _e1042 = (1f / (_e1039 + 1f));
+                            let _e1043 = (_e1042 * _e355);
+                            let _e1047 = (_e1043 * _e1040);
+                            let _e1068 = (_e1039 > 0.9997f);
+                            let _e1069 = (_e1039 < -0.9997f);
+                            phi_1885_ = (_e534 + vec3<f32>((select(select(((((_e1039 + (_e1043 * _e355)) * _e1036) + (_e1047 * _e1037)) + (_e1040 * _e1038)), _e1036, _e1069), _e1036, _e1068) * _e977), (select(select((((_e1047 * _e1036) + ((_e1039 + ((_e1042 * _e1040) * _e1040)) * _e1037)) + (-(_e355) * _e1038)), -(_e1037), _e1069), _e1037, _e1068) * _e977), (select(select((((_e354 * _e1036) + (_e355 * _e1037)) + (_e1039 * _e1038)), (_e1035 * 0.083333336f), _e1069), _e1038, _e1068) * _e977)));
                         }
-                        let _e1168 = phi_1663_;
-                        phi_760_ = (_e574 + 1u);
-                        phi_763_ = _e1168;
-                        phi_765_ = (_e578 + ((0.25f * (((_e653 + (_e1064 * _e1065)) - cos((_e1064 - _e669))) + ((_e653 + (_e1071 * _e1065)) - cos((_e1071 - _e669))))) * _e1063));
+                        let _e1082 = phi_1885_;
+                        phi_779_ = (_e532 + 1u);
+                        phi_782_ = _e1082;
+                        phi_784_ = (_e536 + ((0.25f * (((_e611 + (_e978 * _e979)) - cos((_e978 - _e627))) + ((_e611 + (_e985 * _e979)) - cos((_e985 - _e627))))) * _e977));
                     } else {
-                        phi_760_ = u32();
-                        phi_763_ = vec3<f32>();
-                        phi_765_ = f32();
+                        phi_779_ = u32();
+                        phi_782_ = vec3<f32>();
+                        phi_784_ = f32();
                     }
-                    let _e1171 = phi_760_;
-                    let _e1173 = phi_763_;
-                    let _e1175 = phi_765_;
+                    let _e1085 = phi_779_;
+                    let _e1087 = phi_782_;
+                    let _e1089 = phi_784_;
                     continue;
                     continuing {
-                        phi_759_ = _e1171;
-                        phi_762_ = _e1173;
-                        phi_764_ = _e1175;
-                        break if !(_e579);
+                        phi_778_ = _e1085;
+                        phi_781_ = _e1087;
+                        phi_783_ = _e1089;
+                        break if !(_e537);
                     }
                 }
-                let _e1179 = local_7;
-                let _e1182 = local_8;
-                phi_1669_ = type_23((_e1179 / f32(_e572)), _e1182);
+                let _e1093 = local_5;
+                let _e1096 = local_6;
+                phi_1891_ = type_23((_e1093 / f32(_e530)), _e1096);
             } else {
-                phi_1669_ = type_23(1f, vec3<f32>(0f, 0f, 0f));
+                phi_1891_ = type_23(1f, vec3<f32>(0f, 0f, 0f));
             }
-            let _e1185 = phi_1669_;
-            if _e556 {
-                let _e1190 = params.member.member_6;
-                let _e1191 = pow(_e1185.member, _e1190);
-                if (_e1191 != _e1191) {
-                    phi_2423_ = true;
+            let _e1099 = phi_1891_;
+            if _e508 {
+                let _e1104 = params.member.member_6;
+                let _e1105 = pow(_e1099.member, _e1104);
+                if (_e1105 != _e1105) {
+                    phi_2485_ = true;
                 } else {
-                    phi_2423_ = (0.03f >= _e1191);
+                    phi_2485_ = (0.03f >= _e1105);
                 }
-                let _e1195 = phi_2423_;
-                let _e1196 = select(_e1191, 0.03f, _e1195);
-                let _e1199 = params.member.member_13;
-                if (_e1199 == 0u) {
-                    let _e1201 = (_e1196 * 0.6666667f);
-                    let _e1207 = ((select(0f, select(1f, _e1201, (_e1201 < 1f)), (_e1201 > 0f)) * 255f) + 0.5f);
-                    phi_1745_ = select(select(u32(_e1207), 0u, (_e1207 < 0f)), 4294967295u, (_e1207 > 4294967000f));
+                let _e1109 = phi_2485_;
+                let _e1110 = select(_e1105, 0.03f, _e1109);
+                let _e1113 = params.member.member_13;
+                if (_e1113 == 0u) {
+                    let _e1115 = (_e1110 * 0.6666667f);
+                    let _e1121 = ((select(0f, select(1f, _e1115, (_e1115 < 1f)), (_e1115 > 0f)) * 255f) + 0.5f);
+                    phi_1967_ = select(select(u32(_e1121), 0u, (_e1121 < 0f)), 4294967295u, (_e1121 > 4294967000f));
                 } else {
-                    let _e1221 = sqrt((((_e1185.member_1.x * _e1185.member_1.x) + (_e1185.member_1.y * _e1185.member_1.y)) + (_e1185.member_1.z * _e1185.member_1.z)));
-                    if (_e1221 > 0f) {
-                        phi_1724_ = (_e1185.member_1 / vec3(_e1221));
+                    let _e1135 = sqrt((((_e1099.member_1.x * _e1099.member_1.x) + (_e1099.member_1.y * _e1099.member_1.y)) + (_e1099.member_1.z * _e1099.member_1.z)));
+                    if (_e1135 > 0f) {
+                        phi_1946_ = (_e1099.member_1 / vec3(_e1135));
                     } else {
-                        phi_1724_ = vec3<f32>(_e473, _e474, _e475);
+                        phi_1946_ = vec3<f32>(_e425, _e426, _e427);
                     }
-                    let _e1226 = phi_1724_;
-                    let _e1227 = (_e1196 * 0.6666667f);
-                    let _e1234 = ((_e1226.x * 0.5f) + 0.5f);
-                    let _e1235 = ((_e1226.y * 0.5f) + 0.5f);
-                    let _e1236 = ((_e1226.z * 0.5f) + 0.5f);
-                    let _e1242 = ((select(0f, select(1f, _e1234, (_e1234 < 1f)), (_e1234 > 0f)) * 255f) + 0.5f);
-                    let _e1253 = ((select(0f, select(1f, _e1235, (_e1235 < 1f)), (_e1235 > 0f)) * 255f) + 0.5f);
-                    let _e1267 = ((select(0f, select(1f, _e1236, (_e1236 < 1f)), (_e1236 > 0f)) * 255f) + 0.5f);
-                    let _e1281 = ((select(0f, select(1f, _e1227, (_e1227 < 1f)), (_e1227 > 0f)) * 255f) + 0.5f);
-                    phi_1745_ = (((select(select(u32(_e1242), 0u, (_e1242 < 0f)), 4294967295u, (_e1242 > 4294967000f)) | (select(select(u32(_e1253), 0u, (_e1253 < 0f)), 4294967295u, (_e1253 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1267), 0u, (_e1267 < 0f)), 4294967295u, (_e1267 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1281), 0u, (_e1281 < 0f)), 4294967295u, (_e1281 > 4294967000f)) << bitcast<u32>(24i)));
+                    let _e1140 = phi_1946_;
+                    let _e1141 = (_e1110 * 0.6666667f);
+                    let _e1148 = ((_e1140.x * 0.5f) + 0.5f);
+                    let _e1149 = ((_e1140.y * 0.5f) + 0.5f);
+                    let _e1150 = ((_e1140.z * 0.5f) + 0.5f);
+                    let _e1156 = ((select(0f, select(1f, _e1148, (_e1148 < 1f)), (_e1148 > 0f)) * 255f) + 0.5f);
+                    let _e1167 = ((select(0f, select(1f, _e1149, (_e1149 < 1f)), (_e1149 > 0f)) * 255f) + 0.5f);
+                    let _e1181 = ((select(0f, select(1f, _e1150, (_e1150 < 1f)), (_e1150 > 0f)) * 255f) + 0.5f);
+                    let _e1195 = ((select(0f, select(1f, _e1141, (_e1141 < 1f)), (_e1141 > 0f)) * 255f) + 0.5f);
+                    phi_1967_ = (((select(select(u32(_e1156), 0u, (_e1156 < 0f)), 4294967295u, (_e1156 > 4294967000f)) | (select(select(u32(_e1167), 0u, (_e1167 < 0f)), 4294967295u, (_e1167 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e1181), 0u, (_e1181 < 0f)), 4294967295u, (_e1181 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e1195), 0u, (_e1195 < 0f)), 4294967295u, (_e1195 > 4294967000f)) << bitcast<u32>(24i)));
                 }
-                let _e1291 = phi_1745_;
-                phi_1790_ = _e1291;
+                let _e1205 = phi_1967_;
+                phi_2012_ = _e1205;
             } else {
-                let _e1294 = params.member.member_13;
-                phi_1790_ = select(2852159616u, 170u, (_e1294 == 0u));
+                let _e1208 = params.member.member_13;
+                phi_2012_ = select(2852159616u, 170u, (_e1208 == 0u));
             }
-            let _e1298 = phi_1790_;
-            terms.member[_e110] = _e1298;
-            edges.member[_e110] = ((((64u * _e264) + (16u * _e297)) + (4u * _e331)) + _e365);
+            let _e1212 = phi_2012_;
+            terms.member[_e110] = _e1212;
+            edges.member[_e110] = ((((64u * u32(select(3f, _e246, (_e246 < 3f)))) + (16u * u32(select(3f, _e268, (_e268 < 3f))))) + (4u * u32(select(3f, _e291, (_e291 < 3f))))) + u32(select(3f, _e314, (_e314 < 3f))));
         }
     }
     return;

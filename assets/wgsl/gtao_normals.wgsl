@@ -46,192 +46,164 @@ var<uniform> params: type_19;
 var<storage, read_write> normals: type_10;
 
 fn function_() {
-    var phi_994_: bool;
-    var phi_1009_: bool;
-    var phi_1024_: bool;
-    var phi_1039_: bool;
-    var phi_637_: vec3<f32>;
-    var phi_655_: vec3<f32>;
-    var phi_673_: vec3<f32>;
-    var phi_691_: vec3<f32>;
-    var phi_859_: vec3<f32>;
-    var phi_893_: vec2<f32>;
-    var phi_909_: f32;
-    var phi_944_: f32;
+    var phi_658_: vec3<f32>;
+    var phi_676_: vec3<f32>;
+    var phi_694_: vec3<f32>;
+    var phi_712_: vec3<f32>;
+    var phi_880_: vec3<f32>;
+    var phi_914_: vec2<f32>;
+    var phi_930_: f32;
+    var phi_965_: f32;
 
-    let _e31 = id_1;
-    let _e36 = params.member.member.member[0u];
-    let _e41 = select(select(u32(_e36), 0u, (_e36 < 0f)), 4294967295u, (_e36 > 4294967000f));
-    let _e46 = params.member.member.member[1u];
-    let _e51 = select(select(u32(_e46), 0u, (_e46 < 0f)), 4294967295u, (_e46 > 4294967000f));
-    if (_e31.x >= _e41) {
+    let _e30 = id_1;
+    let _e35 = params.member.member.member[0u];
+    let _e40 = select(select(u32(_e35), 0u, (_e35 < 0f)), 4294967295u, (_e35 > 4294967000f));
+    let _e45 = params.member.member.member[1u];
+    let _e50 = select(select(u32(_e45), 0u, (_e45 < 0f)), 4294967295u, (_e45 > 4294967000f));
+    if (_e30.x >= _e40) {
     } else {
-        if (_e31.y >= _e51) {
+        if (_e30.y >= _e50) {
         } else {
-            let _e58 = bitcast<i32>(_e31.x);
-            let _e60 = select(0i, _e58, (0i < _e58));
-            let _e62 = (bitcast<i32>(_e41) - 1i);
-            let _e65 = bitcast<u32>(select(_e60, _e62, (_e62 < _e60)));
-            let _e66 = bitcast<i32>(_e31.y);
-            let _e68 = select(0i, _e66, (0i < _e66));
-            let _e70 = (bitcast<i32>(_e51) - 1i);
-            let _e73 = bitcast<u32>(select(_e68, _e70, (_e70 < _e68)));
-            let _e74 = (_e73 * _e41);
-            let _e78 = depth.member[(_e74 + _e65)];
-            let _e82 = params.member.member.member_3;
-            let _e86 = select(_e82, _e78, select(false, (_e78 < _e82), (_e78 > 0f)));
-            let _e99 = params.member.member.member_1[0u];
-            let _e100 = (((((f32(_e65) + 0.5f) / _e36) * 2f) - 1f) * _e99);
-            let _e101 = (_e100 * _e86);
-            let _e108 = params.member.member.member_1[1u];
-            let _e109 = (((((f32(_e73) + 0.5f) / _e46) * -2f) + 1f) * _e108);
-            let _e110 = (_e109 * _e86);
-            let _e111 = (_e58 + -1i);
-            let _e113 = select(0i, _e111, (0i < _e111));
-            let _e116 = bitcast<u32>(select(_e113, _e62, (_e62 < _e113)));
-            let _e120 = depth.member[(_e74 + _e116)];
-            let _e124 = select(_e82, _e120, select(false, (_e120 < _e82), (_e120 > 0f)));
-            let _e133 = (_e58 + 1i);
-            let _e135 = select(0i, _e133, (0i < _e133));
-            let _e138 = bitcast<u32>(select(_e135, _e62, (_e62 < _e135)));
-            let _e142 = depth.member[(_e74 + _e138)];
-            let _e146 = select(_e82, _e142, select(false, (_e142 < _e82), (_e142 > 0f)));
-            let _e155 = (_e66 + -1i);
-            let _e157 = select(0i, _e155, (0i < _e155));
-            let _e160 = bitcast<u32>(select(_e157, _e70, (_e70 < _e157)));
-            let _e165 = depth.member[((_e160 * _e41) + _e65)];
-            let _e169 = select(_e82, _e165, select(false, (_e165 < _e82), (_e165 > 0f)));
-            let _e178 = (_e66 + 1i);
-            let _e180 = select(0i, _e178, (0i < _e178));
-            let _e183 = bitcast<u32>(select(_e180, _e70, (_e70 < _e180)));
-            let _e188 = depth.member[((_e183 * _e41) + _e65)];
-            let _e192 = select(_e82, _e188, select(false, (_e188 < _e82), (_e188 > 0f)));
-            let _e201 = (_e124 - _e86);
-            let _e202 = (_e146 - _e86);
-            let _e203 = (_e169 - _e86);
-            let _e204 = (_e192 - _e86);
-            let _e206 = ((_e202 - _e201) * 0.5f);
-            let _e208 = ((_e204 - _e203) * 0.5f);
-            let _e209 = (_e86 * 0.011f);
-            let _e211 = abs(_e201);
-            let _e212 = abs((_e201 + _e206));
-            if (_e211 != _e211) {
-                phi_994_ = true;
+            let _e57 = bitcast<i32>(_e30.x);
+            let _e59 = select(0i, _e57, (0i < _e57));
+            let _e61 = (bitcast<i32>(_e40) - 1i);
+            let _e64 = bitcast<u32>(select(_e59, _e61, (_e61 < _e59)));
+            let _e65 = bitcast<i32>(_e30.y);
+            let _e67 = select(0i, _e65, (0i < _e65));
+            let _e69 = (bitcast<i32>(_e50) - 1i);
+            let _e72 = bitcast<u32>(select(_e67, _e69, (_e69 < _e67)));
+            let _e73 = (_e72 * _e40);
+            let _e77 = depth.member[(_e73 + _e64)];
+            let _e81 = params.member.member.member_3;
+            let _e85 = select(_e81, _e77, select(false, (_e77 < _e81), (_e77 > 0f)));
+            let _e98 = params.member.member.member_1[0u];
+            let _e99 = (((((f32(_e64) + 0.5f) / _e35) * 2f) - 1f) * _e98);
+            let _e100 = (_e99 * _e85);
+            let _e107 = params.member.member.member_1[1u];
+            let _e108 = (((((f32(_e72) + 0.5f) / _e45) * -2f) + 1f) * _e107);
+            let _e109 = (_e108 * _e85);
+            let _e110 = (_e57 + -1i);
+            let _e112 = select(0i, _e110, (0i < _e110));
+            let _e115 = bitcast<u32>(select(_e112, _e61, (_e61 < _e112)));
+            let _e119 = depth.member[(_e73 + _e115)];
+            let _e123 = select(_e81, _e119, select(false, (_e119 < _e81), (_e119 > 0f)));
+            let _e132 = (_e57 + 1i);
+            let _e134 = select(0i, _e132, (0i < _e132));
+            let _e137 = bitcast<u32>(select(_e134, _e61, (_e61 < _e134)));
+            let _e141 = depth.member[(_e73 + _e137)];
+            let _e145 = select(_e81, _e141, select(false, (_e141 < _e81), (_e141 > 0f)));
+            let _e154 = (_e65 + -1i);
+            let _e156 = select(0i, _e154, (0i < _e154));
+            let _e159 = bitcast<u32>(select(_e156, _e69, (_e69 < _e156)));
+            let _e164 = depth.member[((_e159 * _e40) + _e64)];
+            let _e168 = select(_e81, _e164, select(false, (_e164 < _e81), (_e164 > 0f)));
+            let _e177 = (_e65 + 1i);
+            let _e179 = select(0i, _e177, (0i < _e177));
+            let _e182 = bitcast<u32>(select(_e179, _e69, (_e69 < _e179)));
+            let _e187 = depth.member[((_e182 * _e40) + _e64)];
+            let _e191 = select(_e81, _e187, select(false, (_e187 < _e81), (_e187 > 0f)));
+            let _e200 = (_e123 - _e85);
+            let _e201 = (_e145 - _e85);
+            let _e202 = (_e168 - _e85);
+            let _e203 = (_e191 - _e85);
+            let _e205 = ((_e201 - _e200) * 0.5f);
+            let _e207 = ((_e203 - _e202) * 0.5f);
+            let _e208 = (_e85 * 0.011f);
+            let _e210 = abs(_e200);
+            let _e211 = abs((_e200 + _e205));
+            let _e217 = (1.25f - (select(_e211, _e210, ((_e210 < _e211) || (_e211 != _e211))) / _e208));
+            let _e221 = select(0f, select(1f, _e217, (_e217 < 1f)), (_e217 > 0f));
+            let _e223 = abs(_e201);
+            let _e224 = abs((_e201 - _e205));
+            let _e230 = (1.25f - (select(_e224, _e223, ((_e223 < _e224) || (_e224 != _e224))) / _e208));
+            let _e234 = select(0f, select(1f, _e230, (_e230 < 1f)), (_e230 > 0f));
+            let _e236 = abs(_e202);
+            let _e237 = abs((_e202 + _e207));
+            let _e243 = (1.25f - (select(_e237, _e236, ((_e236 < _e237) || (_e237 != _e237))) / _e208));
+            let _e247 = select(0f, select(1f, _e243, (_e243 < 1f)), (_e243 > 0f));
+            let _e249 = abs(_e203);
+            let _e250 = abs((_e203 - _e207));
+            let _e256 = (1.25f - (select(_e250, _e249, ((_e249 < _e250) || (_e250 != _e250))) / _e208));
+            let _e260 = select(0f, select(1f, _e256, (_e256 < 1f)), (_e256 > 0f));
+            let _e261 = (((((((f32(_e115) + 0.5f) / _e35) * 2f) - 1f) * _e98) * _e123) - _e100);
+            let _e262 = ((_e108 * _e123) - _e109);
+            let _e268 = sqrt((((_e261 * _e261) + (_e262 * _e262)) + (_e200 * _e200)));
+            if (_e268 > 0f) {
+                phi_658_ = vec3<f32>((_e261 / _e268), (_e262 / _e268), (_e200 / _e268));
             } else {
-                phi_994_ = (_e212 <= _e211);
+                phi_658_ = vec3<f32>(0f, 0f, 0f);
             }
-            let _e216 = phi_994_;
-            let _e219 = (1.25f - (select(_e211, _e212, _e216) / _e209));
-            let _e223 = select(0f, select(1f, _e219, (_e219 < 1f)), (_e219 > 0f));
-            let _e225 = abs(_e202);
-            let _e226 = abs((_e202 - _e206));
-            if (_e225 != _e225) {
-                phi_1009_ = true;
+            let _e275 = phi_658_;
+            let _e276 = (((((((f32(_e137) + 0.5f) / _e35) * 2f) - 1f) * _e98) * _e145) - _e100);
+            let _e277 = ((_e108 * _e145) - _e109);
+            let _e283 = sqrt((((_e276 * _e276) + (_e277 * _e277)) + (_e201 * _e201)));
+            if (_e283 > 0f) {
+                phi_676_ = vec3<f32>((_e276 / _e283), (_e277 / _e283), (_e201 / _e283));
             } else {
-                phi_1009_ = (_e226 <= _e225);
+                phi_676_ = vec3<f32>(0f, 0f, 0f);
             }
-            let _e230 = phi_1009_;
-            let _e233 = (1.25f - (select(_e225, _e226, _e230) / _e209));
-            let _e237 = select(0f, select(1f, _e233, (_e233 < 1f)), (_e233 > 0f));
-            let _e239 = abs(_e203);
-            let _e240 = abs((_e203 + _e208));
-            if (_e239 != _e239) {
-                phi_1024_ = true;
+            let _e290 = phi_676_;
+            let _e291 = ((_e99 * _e168) - _e100);
+            let _e292 = (((((((f32(_e159) + 0.5f) / _e45) * -2f) + 1f) * _e107) * _e168) - _e109);
+            let _e298 = sqrt((((_e291 * _e291) + (_e292 * _e292)) + (_e202 * _e202)));
+            if (_e298 > 0f) {
+                phi_694_ = vec3<f32>((_e291 / _e298), (_e292 / _e298), (_e202 / _e298));
             } else {
-                phi_1024_ = (_e240 <= _e239);
+                phi_694_ = vec3<f32>(0f, 0f, 0f);
             }
-            let _e244 = phi_1024_;
-            let _e247 = (1.25f - (select(_e239, _e240, _e244) / _e209));
-            let _e251 = select(0f, select(1f, _e247, (_e247 < 1f)), (_e247 > 0f));
-            let _e253 = abs(_e204);
-            let _e254 = abs((_e204 - _e208));
-            if (_e253 != _e253) {
-                phi_1039_ = true;
+            let _e305 = phi_694_;
+            let _e306 = ((_e99 * _e191) - _e100);
+            let _e307 = (((((((f32(_e182) + 0.5f) / _e45) * -2f) + 1f) * _e107) * _e191) - _e109);
+            let _e313 = sqrt((((_e306 * _e306) + (_e307 * _e307)) + (_e203 * _e203)));
+            if (_e313 > 0f) {
+                phi_712_ = vec3<f32>((_e306 / _e313), (_e307 / _e313), (_e203 / _e313));
             } else {
-                phi_1039_ = (_e254 <= _e253);
+                phi_712_ = vec3<f32>(0f, 0f, 0f);
             }
-            let _e258 = phi_1039_;
-            let _e261 = (1.25f - (select(_e253, _e254, _e258) / _e209));
-            let _e265 = select(0f, select(1f, _e261, (_e261 < 1f)), (_e261 > 0f));
-            let _e266 = (((((((f32(_e116) + 0.5f) / _e36) * 2f) - 1f) * _e99) * _e124) - _e101);
-            let _e267 = ((_e109 * _e124) - _e110);
-            let _e273 = sqrt((((_e266 * _e266) + (_e267 * _e267)) + (_e201 * _e201)));
-            if (_e273 > 0f) {
-                phi_637_ = vec3<f32>((_e266 / _e273), (_e267 / _e273), (_e201 / _e273));
+            let _e320 = phi_712_;
+            let _e337 = ((_e221 * _e247) + 0.01f);
+            let _e341 = select(0f, select(1f, _e337, (_e337 < 1f)), (_e337 > 0f));
+            let _e358 = ((_e247 * _e234) + 0.01f);
+            let _e362 = select(0f, select(1f, _e358, (_e358 < 1f)), (_e358 > 0f));
+            let _e382 = ((_e234 * _e260) + 0.01f);
+            let _e386 = select(0f, select(1f, _e382, (_e382 < 1f)), (_e382 > 0f));
+            let _e403 = ((_e260 * _e221) + 0.01f);
+            let _e407 = select(0f, select(1f, _e403, (_e403 < 1f)), (_e403 > 0f));
+            let _e411 = ((((((_e275.y * _e305.z) - (_e305.y * _e275.z)) * _e341) + (((_e305.y * _e290.z) - (_e290.y * _e305.z)) * _e362)) + (((_e290.y * _e320.z) - (_e320.y * _e290.z)) * _e386)) + (((_e320.y * _e275.z) - (_e275.y * _e320.z)) * _e407));
+            let _e412 = ((((((_e275.z * _e305.x) - (_e305.z * _e275.x)) * _e341) + (((_e305.z * _e290.x) - (_e290.z * _e305.x)) * _e362)) + (((_e290.z * _e320.x) - (_e320.z * _e290.x)) * _e386)) + (((_e320.z * _e275.x) - (_e275.z * _e320.x)) * _e407));
+            let _e413 = ((((((_e275.x * _e305.y) - (_e305.x * _e275.y)) * _e341) + (((_e305.x * _e290.y) - (_e290.x * _e305.y)) * _e362)) + (((_e290.x * _e320.y) - (_e320.x * _e290.y)) * _e386)) + (((_e320.x * _e275.y) - (_e275.x * _e320.y)) * _e407));
+            let _e419 = sqrt((((_e411 * _e411) + (_e412 * _e412)) + (_e413 * _e413)));
+            if (_e419 > 0f) {
+                phi_880_ = vec3<f32>((_e411 / _e419), (_e412 / _e419), (_e413 / _e419));
             } else {
-                phi_637_ = vec3<f32>(0f, 0f, 0f);
+                phi_880_ = vec3<f32>(0f, 0f, 0f);
             }
-            let _e280 = phi_637_;
-            let _e281 = (((((((f32(_e138) + 0.5f) / _e36) * 2f) - 1f) * _e99) * _e146) - _e101);
-            let _e282 = ((_e109 * _e146) - _e110);
-            let _e288 = sqrt((((_e281 * _e281) + (_e282 * _e282)) + (_e202 * _e202)));
-            if (_e288 > 0f) {
-                phi_655_ = vec3<f32>((_e281 / _e288), (_e282 / _e288), (_e202 / _e288));
+            let _e426 = phi_880_;
+            let _e430 = -(_e426.z);
+            let _e435 = ((abs(_e426.x) + abs(_e426.y)) + abs(_e430));
+            let _e436 = (_e426.x / _e435);
+            let _e437 = (_e426.y / _e435);
+            if (_e430 < 0f) {
+                phi_914_ = vec2<f32>(((1f - abs(_e437)) * select(1f, -1f, (_e436 < 0f))), ((1f - abs(_e436)) * select(1f, -1f, (_e437 < 0f))));
             } else {
-                phi_655_ = vec3<f32>(0f, 0f, 0f);
+                phi_914_ = vec2<f32>(_e436, _e437);
             }
-            let _e295 = phi_655_;
-            let _e296 = ((_e100 * _e169) - _e101);
-            let _e297 = (((((((f32(_e160) + 0.5f) / _e46) * -2f) + 1f) * _e108) * _e169) - _e110);
-            let _e303 = sqrt((((_e296 * _e296) + (_e297 * _e297)) + (_e203 * _e203)));
-            if (_e303 > 0f) {
-                phi_673_ = vec3<f32>((_e296 / _e303), (_e297 / _e303), (_e203 / _e303));
+            let _e452 = phi_914_;
+            if (_e452.x != _e452.x) {
+                phi_930_ = 0f;
             } else {
-                phi_673_ = vec3<f32>(0f, 0f, 0f);
+                phi_930_ = select(-1f, select(1f, _e452.x, (_e452.x < 1f)), (_e452.x > -1f));
             }
-            let _e310 = phi_673_;
-            let _e311 = ((_e100 * _e192) - _e101);
-            let _e312 = (((((((f32(_e183) + 0.5f) / _e46) * -2f) + 1f) * _e108) * _e192) - _e110);
-            let _e318 = sqrt((((_e311 * _e311) + (_e312 * _e312)) + (_e204 * _e204)));
-            if (_e318 > 0f) {
-                phi_691_ = vec3<f32>((_e311 / _e318), (_e312 / _e318), (_e204 / _e318));
+            let _e460 = phi_930_;
+            let _e465 = ((_e460 * 127f) + (0.5f * select(1f, -1f, (_e460 < 0f))));
+            if (_e452.y != _e452.y) {
+                phi_965_ = 0f;
             } else {
-                phi_691_ = vec3<f32>(0f, 0f, 0f);
+                phi_965_ = select(-1f, select(1f, _e452.y, (_e452.y < 1f)), (_e452.y > -1f));
             }
-            let _e325 = phi_691_;
-            let _e342 = ((_e223 * _e251) + 0.01f);
-            let _e346 = select(0f, select(1f, _e342, (_e342 < 1f)), (_e342 > 0f));
-            let _e363 = ((_e251 * _e237) + 0.01f);
-            let _e367 = select(0f, select(1f, _e363, (_e363 < 1f)), (_e363 > 0f));
-            let _e387 = ((_e237 * _e265) + 0.01f);
-            let _e391 = select(0f, select(1f, _e387, (_e387 < 1f)), (_e387 > 0f));
-            let _e408 = ((_e265 * _e223) + 0.01f);
-            let _e412 = select(0f, select(1f, _e408, (_e408 < 1f)), (_e408 > 0f));
-            let _e416 = ((((((_e280.y * _e310.z) - (_e310.y * _e280.z)) * _e346) + (((_e310.y * _e295.z) - (_e295.y * _e310.z)) * _e367)) + (((_e295.y * _e325.z) - (_e325.y * _e295.z)) * _e391)) + (((_e325.y * _e280.z) - (_e280.y * _e325.z)) * _e412));
-            let _e417 = ((((((_e280.z * _e310.x) - (_e310.z * _e280.x)) * _e346) + (((_e310.z * _e295.x) - (_e295.z * _e310.x)) * _e367)) + (((_e295.z * _e325.x) - (_e325.z * _e295.x)) * _e391)) + (((_e325.z * _e280.x) - (_e280.z * _e325.x)) * _e412));
-            let _e418 = ((((((_e280.x * _e310.y) - (_e310.x * _e280.y)) * _e346) + (((_e310.x * _e295.y) - (_e295.x * _e310.y)) * _e367)) + (((_e295.x * _e325.y) - (_e325.x * _e295.y)) * _e391)) + (((_e325.x * _e280.y) - (_e280.x * _e325.y)) * _e412));
-            let _e424 = sqrt((((_e416 * _e416) + (_e417 * _e417)) + (_e418 * _e418)));
-            if (_e424 > 0f) {
-                phi_859_ = vec3<f32>((_e416 / _e424), (_e417 / _e424), (_e418 / _e424));
-            } else {
-                phi_859_ = vec3<f32>(0f, 0f, 0f);
-            }
-            let _e431 = phi_859_;
-            let _e435 = -(_e431.z);
-            let _e440 = ((abs(_e431.x) + abs(_e431.y)) + abs(_e435));
-            let _e441 = (_e431.x / _e440);
-            let _e442 = (_e431.y / _e440);
-            if (_e435 < 0f) {
-                phi_893_ = vec2<f32>(((1f - abs(_e442)) * select(1f, -1f, (_e441 < 0f))), ((1f - abs(_e441)) * select(1f, -1f, (_e442 < 0f))));
-            } else {
-                phi_893_ = vec2<f32>(_e441, _e442);
-            }
-            let _e457 = phi_893_;
-            if (_e457.x != _e457.x) {
-                phi_909_ = 0f;
-            } else {
-                phi_909_ = select(-1f, select(1f, _e457.x, (_e457.x < 1f)), (_e457.x > -1f));
-            }
-            let _e465 = phi_909_;
-            let _e470 = ((_e465 * 127f) + (0.5f * select(1f, -1f, (_e465 < 0f))));
-            if (_e457.y != _e457.y) {
-                phi_944_ = 0f;
-            } else {
-                phi_944_ = select(-1f, select(1f, _e457.y, (_e457.y < 1f)), (_e457.y > -1f));
-            }
-            let _e487 = phi_944_;
-            let _e492 = ((_e487 * 127f) + (0.5f * select(1f, -1f, (_e487 < 0f))));
-            normals.member[((_e31.y * _e41) + _e31.x)] = ((bitcast<u32>(select(0i, select(select(i32(_e470), i32(-2147483648), (_e470 < -2147483600f)), 2147483647i, (_e470 > 2147483500f)), (_e470 == _e470))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e492), i32(-2147483648), (_e492 < -2147483600f)), 2147483647i, (_e492 > 2147483500f)), (_e492 == _e492))) & 255u) << bitcast<u32>(8i)));
+            let _e482 = phi_965_;
+            let _e487 = ((_e482 * 127f) + (0.5f * select(1f, -1f, (_e482 < 0f))));
+            normals.member[((_e30.y * _e40) + _e30.x)] = ((bitcast<u32>(select(0i, select(select(i32(_e465), i32(-2147483648), (_e465 < -2147483600f)), 2147483647i, (_e465 > 2147483500f)), (_e465 == _e465))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e487), i32(-2147483648), (_e487 < -2147483600f)), 2147483647i, (_e487 > 2147483500f)), (_e487 == _e487))) & 255u) << bitcast<u32>(8i)));
         }
     }
     return;

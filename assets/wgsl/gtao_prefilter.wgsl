@@ -43,32 +43,30 @@ var<storage, read_write> mips: type_7;
 
 fn function_() {
     var local: array<f32, 4>;
-    var phi_185_: u32;
-    var phi_188_: u32;
-    var phi_186_: u32;
-    var phi_189_: u32;
+    var phi_166_: u32;
+    var phi_169_: u32;
+    var phi_167_: u32;
+    var phi_170_: u32;
     var local_1: u32;
     var local_2: u32;
     var local_3: u32;
     var local_4: u32;
-    var phi_423_: bool;
-    var phi_438_: bool;
-    var phi_453_: bool;
-    var phi_311_: u32;
-    var phi_314_: f32;
-    var phi_316_: f32;
-    var phi_358_: f32;
-    var phi_312_: u32;
-    var phi_315_: f32;
     var phi_317_: f32;
-    var phi_458_: bool;
+    var phi_321_: u32;
+    var phi_324_: f32;
+    var phi_326_: f32;
+    var phi_362_: f32;
+    var phi_322_: u32;
+    var phi_325_: f32;
+    var phi_327_: f32;
+    var phi_418_: bool;
     var local_5: f32;
     var local_6: f32;
-    var phi_371_: f32;
-    var phi_375_: u32;
-    var phi_378_: u32;
-    var phi_376_: u32;
+    var phi_375_: f32;
     var phi_379_: u32;
+    var phi_382_: u32;
+    var phi_380_: u32;
+    var phi_383_: u32;
     var local_7: u32;
 
     switch bitcast<i32>(0u) {
@@ -91,18 +89,18 @@ fn function_() {
                         let _e65 = depth.member[((_e23.y * _e33) + _e23.x)];
                         let _e69 = params.member.member.member_3;
                         let _e73 = select(_e69, _e65, select(false, (_e65 < _e69), (_e65 > 0f)));
-                        phi_371_ = select(0f, select(65504f, _e73, (_e73 < 65504f)), (_e73 > 0f));
+                        phi_375_ = select(0f, select(65504f, _e73, (_e73 < 65504f)), (_e73 > 0f));
                     } else {
                         let _e78 = (_e46 - 1u);
                         let _e79 = (_e78 & 31u);
                         let _e81 = (_e33 >> bitcast<u32>(_e79));
                         let _e83 = select(1u, _e81, (1u < _e81));
                         let _e85 = (_e43 >> bitcast<u32>(_e79));
-                        phi_185_ = 0u;
-                        phi_188_ = 0u;
+                        phi_166_ = 0u;
+                        phi_169_ = 0u;
                         loop {
-                            let _e89 = phi_185_;
-                            let _e91 = phi_188_;
+                            let _e89 = phi_166_;
+                            let _e91 = phi_169_;
                             local_1 = _e91;
                             local_2 = _e91;
                             local_3 = _e91;
@@ -112,18 +110,18 @@ fn function_() {
                                 let _e93 = (_e89 & 31u);
                                 let _e95 = (_e33 >> bitcast<u32>(_e93));
                                 let _e99 = (_e43 >> bitcast<u32>(_e93));
-                                phi_186_ = (_e89 + 1u);
-                                phi_189_ = (_e91 + (select(1u, _e95, (1u < _e95)) * select(1u, _e99, (1u < _e99))));
+                                phi_167_ = (_e89 + 1u);
+                                phi_170_ = (_e91 + (select(1u, _e95, (1u < _e95)) * select(1u, _e99, (1u < _e99))));
                             } else {
-                                phi_186_ = u32();
-                                phi_189_ = u32();
+                                phi_167_ = u32();
+                                phi_170_ = u32();
                             }
-                            let _e106 = phi_186_;
-                            let _e108 = phi_189_;
+                            let _e106 = phi_167_;
+                            let _e108 = phi_170_;
                             continue;
                             continuing {
-                                phi_185_ = _e106;
-                                phi_188_ = _e108;
+                                phi_166_ = _e106;
+                                phi_169_ = _e108;
                                 break if !(_e92);
                             }
                         }
@@ -151,117 +149,107 @@ fn function_() {
                         let _e162 = (0.75f * (_e157 * _e160));
                         let _e164 = local[0u];
                         let _e166 = local[1u];
-                        if (_e164 != _e164) {
-                            phi_423_ = true;
+                        let _e170 = select(_e166, _e164, ((_e164 > _e166) || (_e166 != _e166)));
+                        let _e172 = local[2u];
+                        let _e174 = local[3u];
+                        let _e178 = select(_e174, _e172, ((_e172 > _e174) || (_e174 != _e174)));
+                        let _e185 = params.member.member_3;
+                        let _e186 = (_e185 * _e162);
+                        let _e187 = (_e186 <= 0f);
+                        if _e187 {
+                            phi_317_ = 0f;
                         } else {
-                            phi_423_ = (_e166 >= _e164);
+                            phi_317_ = (1f / _e186);
                         }
-                        let _e170 = phi_423_;
-                        let _e171 = select(_e164, _e166, _e170);
-                        let _e173 = local[2u];
-                        if (_e171 != _e171) {
-                            phi_438_ = true;
-                        } else {
-                            phi_438_ = (_e173 >= _e171);
-                        }
-                        let _e177 = phi_438_;
-                        let _e178 = select(_e171, _e173, _e177);
-                        let _e180 = local[3u];
-                        if (_e178 != _e178) {
-                            phi_453_ = true;
-                        } else {
-                            phi_453_ = (_e180 >= _e178);
-                        }
-                        let _e184 = phi_453_;
-                        phi_311_ = 0u;
-                        phi_314_ = 0f;
-                        phi_316_ = 0f;
+                        let _e190 = phi_317_;
+                        phi_321_ = 0u;
+                        phi_324_ = 0f;
+                        phi_326_ = 0f;
                         loop {
-                            let _e187 = phi_311_;
-                            let _e189 = phi_314_;
-                            let _e191 = phi_316_;
-                            local_5 = _e191;
-                            local_6 = _e189;
-                            let _e192 = (_e187 < 4u);
-                            if _e192 {
-                                if _e192 {
+                            let _e194 = phi_321_;
+                            let _e196 = phi_324_;
+                            let _e198 = phi_326_;
+                            local_5 = _e198;
+                            local_6 = _e196;
+                            let _e199 = (_e194 < 4u);
+                            if _e199 {
+                                if _e199 {
                                 } else {
-                                    phi_458_ = true;
+                                    phi_418_ = true;
                                     break;
                                 }
-                                let _e194 = local[_e187];
-                                let _e196 = (_e162 - (select(_e178, _e180, _e184) - _e194));
-                                let _e199 = params.member.member_3;
-                                if (_e199 > 0f) {
-                                    let _e202 = (_e196 / (_e199 * _e162));
-                                    phi_358_ = select(0f, select(1f, _e202, (_e202 < 1f)), (_e202 > 0f));
+                                let _e201 = local[_e194];
+                                let _e202 = (select(_e178, _e170, ((_e170 > _e178) || (_e178 != _e178))) - _e201);
+                                if _e187 {
+                                    phi_362_ = select(0f, 1f, (_e202 <= _e162));
                                 } else {
-                                    phi_358_ = select(0f, 1f, (_e196 >= 0f));
+                                    let _e206 = ((_e202 * -(_e190)) + (_e162 * _e190));
+                                    phi_362_ = select(0f, select(1f, _e206, (_e206 < 1f)), (_e206 > 0f));
                                 }
-                                let _e210 = phi_358_;
-                                if _e192 {
+                                let _e212 = phi_362_;
+                                if _e199 {
                                 } else {
-                                    phi_458_ = true;
+                                    phi_418_ = true;
                                     break;
                                 }
-                                let _e211 = local[_e187];
-                                phi_312_ = (_e187 + 1u);
-                                phi_315_ = (_e189 + _e210);
-                                phi_317_ = (_e191 + (_e210 * _e211));
+                                let _e213 = local[_e194];
+                                phi_322_ = (_e194 + 1u);
+                                phi_325_ = (_e196 + _e212);
+                                phi_327_ = (_e198 + (_e212 * _e213));
                             } else {
-                                phi_312_ = u32();
-                                phi_315_ = f32();
-                                phi_317_ = f32();
+                                phi_322_ = u32();
+                                phi_325_ = f32();
+                                phi_327_ = f32();
                             }
-                            let _e217 = phi_312_;
-                            let _e219 = phi_315_;
-                            let _e221 = phi_317_;
+                            let _e219 = phi_322_;
+                            let _e221 = phi_325_;
+                            let _e223 = phi_327_;
                             continue;
                             continuing {
-                                phi_311_ = _e217;
-                                phi_314_ = _e219;
-                                phi_316_ = _e221;
-                                phi_458_ = false;
-                                break if !(_e192);
+                                phi_321_ = _e219;
+                                phi_324_ = _e221;
+                                phi_326_ = _e223;
+                                phi_418_ = false;
+                                break if !(_e199);
                             }
                         }
-                        let _e224 = phi_458_;
-                        if _e224 {
+                        let _e226 = phi_418_;
+                        if _e226 {
                             break;
                         }
-                        let _e226 = local_5;
-                        let _e228 = local_6;
-                        phi_371_ = (_e226 / _e228);
+                        let _e228 = local_5;
+                        let _e230 = local_6;
+                        phi_375_ = (_e228 / _e230);
                     }
-                    let _e231 = phi_371_;
-                    phi_375_ = 0u;
-                    phi_378_ = 0u;
+                    let _e233 = phi_375_;
+                    phi_379_ = 0u;
+                    phi_382_ = 0u;
                     loop {
-                        let _e233 = phi_375_;
-                        let _e235 = phi_378_;
-                        local_7 = _e235;
-                        let _e236 = (_e233 < _e46);
-                        if _e236 {
-                            let _e237 = (_e233 & 31u);
-                            let _e239 = (_e33 >> bitcast<u32>(_e237));
-                            let _e243 = (_e43 >> bitcast<u32>(_e237));
-                            phi_376_ = (_e233 + 1u);
-                            phi_379_ = (_e235 + (select(1u, _e239, (1u < _e239)) * select(1u, _e243, (1u < _e243))));
+                        let _e235 = phi_379_;
+                        let _e237 = phi_382_;
+                        local_7 = _e237;
+                        let _e238 = (_e235 < _e46);
+                        if _e238 {
+                            let _e239 = (_e235 & 31u);
+                            let _e241 = (_e33 >> bitcast<u32>(_e239));
+                            let _e245 = (_e43 >> bitcast<u32>(_e239));
+                            phi_380_ = (_e235 + 1u);
+                            phi_383_ = (_e237 + (select(1u, _e241, (1u < _e241)) * select(1u, _e245, (1u < _e245))));
                         } else {
-                            phi_376_ = u32();
-                            phi_379_ = u32();
+                            phi_380_ = u32();
+                            phi_383_ = u32();
                         }
-                        let _e250 = phi_376_;
-                        let _e252 = phi_379_;
+                        let _e252 = phi_380_;
+                        let _e254 = phi_383_;
                         continue;
                         continuing {
-                            phi_375_ = _e250;
-                            phi_378_ = _e252;
-                            break if !(_e236);
+                            phi_379_ = _e252;
+                            phi_382_ = _e254;
+                            break if !(_e238);
                         }
                     }
-                    let _e257 = local_7;
-                    mips.member[(_e257 + ((_e23.y * _e51) + _e23.x))] = _e231;
+                    let _e259 = local_7;
+                    mips.member[(_e259 + ((_e23.y * _e51) + _e23.x))] = _e233;
                 }
             }
             break;

@@ -77,77 +77,52 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_1633_: bool;
-    var phi_1648_: bool;
-    var phi_1663_: bool;
-    var phi_1678_: bool;
-    var phi_1709_: f32;
-    var phi_1713_: f32;
-    var phi_1714_: bool;
-    var phi_1736_: u32;
-    var phi_1763_: f32;
-    var phi_1767_: f32;
-    var phi_1768_: bool;
-    var phi_1790_: u32;
-    var phi_1817_: f32;
-    var phi_1821_: f32;
-    var phi_1822_: bool;
-    var phi_1844_: u32;
-    var phi_1871_: f32;
-    var phi_1875_: f32;
-    var phi_1876_: bool;
-    var phi_1898_: u32;
-    var phi_1909_: bool;
-    var phi_1924_: bool;
-    var phi_782_: vec2<f32>;
-    var phi_813_: vec3<f32>;
+    var phi_1772_: bool;
+    var phi_1787_: bool;
+    var phi_775_: vec2<f32>;
+    var phi_806_: vec3<f32>;
+    var phi_812_: u32;
+    var phi_815_: u32;
+    var phi_817_: u32;
     var phi_819_: u32;
-    var phi_822_: u32;
-    var phi_824_: u32;
-    var phi_826_: u32;
-    var phi_855_: u32;
-    var phi_856_: u32;
-    var phi_857_: u32;
-    var phi_858_: u32;
+    var phi_848_: u32;
+    var phi_849_: u32;
+    var phi_850_: u32;
+    var phi_851_: u32;
+    var phi_813_: u32;
+    var phi_816_: u32;
+    var phi_818_: u32;
     var phi_820_: u32;
-    var phi_823_: u32;
-    var phi_825_: u32;
-    var phi_827_: u32;
     var local: u32;
-    var phi_889_: type_28;
-    var phi_924_: u32;
-    var phi_927_: f32;
-    var phi_1939_: bool;
+    var phi_882_: type_28;
+    var phi_917_: u32;
+    var phi_920_: f32;
+    var phi_1072_: u32;
+    var phi_1075_: f32;
+    var phi_1077_: bool;
+    var phi_1079_: bool;
+    var phi_1081_: f32;
+    var phi_1083_: f32;
+    var phi_1870_: bool;
+    var phi_1885_: bool;
+    var phi_1846_: vec2<f32>;
+    var phi_1443_: u32;
+    var phi_1445_: u32;
+    var phi_1446_: f32;
+    var phi_1447_: bool;
+    var phi_1448_: bool;
+    var phi_1449_: f32;
+    var phi_1452_: bool;
+    var phi_1453_: bool;
     var phi_1073_: u32;
     var phi_1076_: f32;
     var phi_1078_: bool;
     var phi_1080_: bool;
     var phi_1082_: f32;
     var phi_1084_: f32;
-    var phi_1188_: u32;
-    var phi_1209_: u32;
-    var phi_1298_: u32;
-    var phi_1329_: u32;
-    var phi_2022_: bool;
-    var phi_2037_: bool;
-    var phi_1998_: vec2<f32>;
-    var phi_1464_: u32;
-    var phi_1466_: u32;
-    var phi_1467_: f32;
-    var phi_1468_: bool;
-    var phi_1469_: bool;
-    var phi_1470_: f32;
-    var phi_1473_: bool;
-    var phi_1474_: bool;
-    var phi_1074_: u32;
-    var phi_1077_: f32;
-    var phi_1079_: bool;
-    var phi_1081_: bool;
-    var phi_1083_: f32;
-    var phi_1085_: f32;
-    var phi_1478_: bool;
-    var phi_1480_: bool;
-    var phi_1481_: bool;
+    var phi_1457_: bool;
+    var phi_1459_: bool;
+    var phi_1460_: bool;
     var local_1: bool;
     var local_2: bool;
     var local_3: bool;
@@ -158,604 +133,462 @@ fn function_() {
     var local_8: bool;
     var local_9: f32;
     var local_10: bool;
-    var phi_1521_: f32;
-    var phi_925_: u32;
-    var phi_928_: f32;
-    var phi_2051_: bool;
+    var phi_1500_: f32;
+    var phi_918_: u32;
+    var phi_921_: f32;
+    var phi_1899_: bool;
     var local_11: f32;
-    var phi_1592_: type_29;
+    var phi_1571_: type_29;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e57 = id_1;
-            let _e59 = arrayLength((&kernel.member));
-            let _e70 = params.member.member.member[0u];
-            let _e75 = select(select(u32(_e70), 0u, (_e70 < 0f)), 4294967295u, (_e70 > 4294967000f));
-            let _e80 = params.member.member.member[1u];
-            let _e85 = select(select(u32(_e80), 0u, (_e80 < 0f)), 4294967295u, (_e80 > 4294967000f));
-            if (_e57.x >= _e75) {
+            let _e58 = id_1;
+            let _e60 = arrayLength((&kernel.member));
+            let _e71 = params.member.member.member[0u];
+            let _e76 = select(select(u32(_e71), 0u, (_e71 < 0f)), 4294967295u, (_e71 > 4294967000f));
+            let _e81 = params.member.member.member[1u];
+            let _e86 = select(select(u32(_e81), 0u, (_e81 < 0f)), 4294967295u, (_e81 > 4294967000f));
+            if (_e58.x >= _e76) {
             } else {
-                if (_e57.y >= _e85) {
+                if (_e58.y >= _e86) {
                 } else {
-                    let _e91 = ((_e57.y * _e75) + _e57.x);
-                    let _e94 = depth.member[_e91];
-                    let _e98 = params.member.member.member_3;
-                    let _e101 = select(false, (_e94 < _e98), (_e94 > 0f));
-                    let _e102 = select(_e98, _e94, _e101);
-                    let _e103 = bitcast<i32>(_e57.x);
-                    let _e104 = (_e103 + -1i);
-                    let _e106 = select(0i, _e104, (0i < _e104));
-                    let _e108 = (bitcast<i32>(_e75) - 1i);
-                    let _e112 = bitcast<i32>(_e57.y);
-                    let _e114 = select(0i, _e112, (0i < _e112));
-                    let _e116 = (bitcast<i32>(_e85) - 1i);
-                    let _e120 = (bitcast<u32>(select(_e114, _e116, (_e116 < _e114))) * _e75);
-                    let _e124 = depth.member[(_e120 + bitcast<u32>(select(_e106, _e108, (_e108 < _e106))))];
-                    let _e129 = (_e103 + 1i);
-                    let _e131 = select(0i, _e129, (0i < _e129));
-                    let _e138 = depth.member[(_e120 + bitcast<u32>(select(_e131, _e108, (_e108 < _e131))))];
-                    let _e144 = select(0i, _e103, (0i < _e103));
-                    let _e147 = bitcast<u32>(select(_e144, _e108, (_e108 < _e144)));
-                    let _e148 = (_e112 + -1i);
-                    let _e150 = select(0i, _e148, (0i < _e148));
-                    let _e158 = depth.member[((bitcast<u32>(select(_e150, _e116, (_e116 < _e150))) * _e75) + _e147)];
-                    let _e163 = (_e112 + 1i);
-                    let _e165 = select(0i, _e163, (0i < _e163));
-                    let _e173 = depth.member[((bitcast<u32>(select(_e165, _e116, (_e116 < _e165))) * _e75) + _e147)];
-                    let _e178 = (select(_e98, _e124, select(false, (_e124 < _e98), (_e124 > 0f))) - _e102);
-                    let _e179 = (select(_e98, _e138, select(false, (_e138 < _e98), (_e138 > 0f))) - _e102);
-                    let _e180 = (select(_e98, _e158, select(false, (_e158 < _e98), (_e158 > 0f))) - _e102);
-                    let _e181 = (select(_e98, _e173, select(false, (_e173 < _e98), (_e173 > 0f))) - _e102);
-                    let _e183 = ((_e179 - _e178) * 0.5f);
-                    let _e185 = ((_e181 - _e180) * 0.5f);
-                    let _e186 = (_e102 * 0.011f);
-                    let _e188 = abs(_e178);
-                    let _e189 = abs((_e178 + _e183));
-                    if (_e188 != _e188) {
-                        phi_1633_ = true;
-                    } else {
-                        phi_1633_ = (_e189 <= _e188);
-                    }
-                    let _e193 = phi_1633_;
-                    let _e196 = (1.25f - (select(_e188, _e189, _e193) / _e186));
+                    let _e92 = ((_e58.y * _e76) + _e58.x);
+                    let _e95 = depth.member[_e92];
+                    let _e99 = params.member.member.member_3;
+                    let _e102 = select(false, (_e95 < _e99), (_e95 > 0f));
+                    let _e103 = select(_e99, _e95, _e102);
+                    let _e104 = bitcast<i32>(_e58.x);
+                    let _e105 = (_e104 + -1i);
+                    let _e107 = select(0i, _e105, (0i < _e105));
+                    let _e109 = (bitcast<i32>(_e76) - 1i);
+                    let _e113 = bitcast<i32>(_e58.y);
+                    let _e115 = select(0i, _e113, (0i < _e113));
+                    let _e117 = (bitcast<i32>(_e86) - 1i);
+                    let _e121 = (bitcast<u32>(select(_e115, _e117, (_e117 < _e115))) * _e76);
+                    let _e125 = depth.member[(_e121 + bitcast<u32>(select(_e107, _e109, (_e109 < _e107))))];
+                    let _e130 = (_e104 + 1i);
+                    let _e132 = select(0i, _e130, (0i < _e130));
+                    let _e139 = depth.member[(_e121 + bitcast<u32>(select(_e132, _e109, (_e109 < _e132))))];
+                    let _e145 = select(0i, _e104, (0i < _e104));
+                    let _e148 = bitcast<u32>(select(_e145, _e109, (_e109 < _e145)));
+                    let _e149 = (_e113 + -1i);
+                    let _e151 = select(0i, _e149, (0i < _e149));
+                    let _e159 = depth.member[((bitcast<u32>(select(_e151, _e117, (_e117 < _e151))) * _e76) + _e148)];
+                    let _e164 = (_e113 + 1i);
+                    let _e166 = select(0i, _e164, (0i < _e164));
+                    let _e174 = depth.member[((bitcast<u32>(select(_e166, _e117, (_e117 < _e166))) * _e76) + _e148)];
+                    let _e179 = (select(_e99, _e125, select(false, (_e125 < _e99), (_e125 > 0f))) - _e103);
+                    let _e180 = (select(_e99, _e139, select(false, (_e139 < _e99), (_e139 > 0f))) - _e103);
+                    let _e181 = (select(_e99, _e159, select(false, (_e159 < _e99), (_e159 > 0f))) - _e103);
+                    let _e182 = (select(_e99, _e174, select(false, (_e174 < _e99), (_e174 > 0f))) - _e103);
+                    let _e184 = ((_e180 - _e179) * 0.5f);
+                    let _e186 = ((_e182 - _e181) * 0.5f);
+                    let _e187 = (_e103 * 0.011f);
+                    let _e189 = abs(_e179);
+                    let _e190 = abs((_e179 + _e184));
+                    let _e196 = (1.25f - (select(_e190, _e189, ((_e189 < _e190) || (_e190 != _e190))) / _e187));
                     let _e200 = select(0f, select(1f, _e196, (_e196 < 1f)), (_e196 > 0f));
-                    let _e202 = abs(_e179);
-                    let _e203 = abs((_e179 - _e183));
-                    if (_e202 != _e202) {
-                        phi_1648_ = true;
-                    } else {
-                        phi_1648_ = (_e203 <= _e202);
-                    }
-                    let _e207 = phi_1648_;
-                    let _e210 = (1.25f - (select(_e202, _e203, _e207) / _e186));
-                    let _e214 = select(0f, select(1f, _e210, (_e210 < 1f)), (_e210 > 0f));
-                    let _e216 = abs(_e180);
-                    let _e217 = abs((_e180 + _e185));
-                    if (_e216 != _e216) {
-                        phi_1663_ = true;
-                    } else {
-                        phi_1663_ = (_e217 <= _e216);
-                    }
-                    let _e221 = phi_1663_;
-                    let _e224 = (1.25f - (select(_e216, _e217, _e221) / _e186));
-                    let _e228 = select(0f, select(1f, _e224, (_e224 < 1f)), (_e224 > 0f));
-                    let _e230 = abs(_e181);
-                    let _e231 = abs((_e181 - _e185));
-                    if (_e230 != _e230) {
-                        phi_1678_ = true;
-                    } else {
-                        phi_1678_ = (_e231 <= _e230);
-                    }
-                    let _e235 = phi_1678_;
-                    let _e238 = (1.25f - (select(_e230, _e231, _e235) / _e186));
-                    let _e242 = select(0f, select(1f, _e238, (_e238 < 1f)), (_e238 > 0f));
-                    let _e247 = (select(0f, select(1f, _e200, (_e200 < 1f)), (_e200 > 0f)) * 2.9f);
-                    let _e249 = floor((_e247 + 0.5f));
-                    if ((_e249 - _e247) == 0.5f) {
-                        let _e255 = ((floor((_e249 * 0.5f)) * 2f) != _e249);
-                        if _e255 {
-                            phi_1709_ = (_e249 - 1f);
+                    let _e202 = abs(_e180);
+                    let _e203 = abs((_e180 - _e184));
+                    let _e209 = (1.25f - (select(_e203, _e202, ((_e202 < _e203) || (_e203 != _e203))) / _e187));
+                    let _e213 = select(0f, select(1f, _e209, (_e209 < 1f)), (_e209 > 0f));
+                    let _e215 = abs(_e181);
+                    let _e216 = abs((_e181 + _e186));
+                    let _e222 = (1.25f - (select(_e216, _e215, ((_e215 < _e216) || (_e216 != _e216))) / _e187));
+                    let _e226 = select(0f, select(1f, _e222, (_e222 < 1f)), (_e222 > 0f));
+                    let _e228 = abs(_e182);
+                    let _e229 = abs((_e182 - _e186));
+                    let _e235 = (1.25f - (select(_e229, _e228, ((_e228 < _e229) || (_e229 != _e229))) / _e187));
+                    let _e239 = select(0f, select(1f, _e235, (_e235 < 1f)), (_e235 > 0f));
+                    let _e244 = (select(0f, select(1f, _e200, (_e200 < 1f)), (_e200 > 0f)) * 2.9f);
+                    let _e246 = floor((_e244 + 0.5f));
+                    let _e255 = select(_e246, (_e246 - 1f), (((_e246 - _e244) == 0.5f) && ((floor((_e246 * 0.5f)) * 2f) != _e246)));
+                    let _e257 = select(0f, _e255, (_e255 > 0f));
+                    let _e266 = (select(0f, select(1f, _e213, (_e213 < 1f)), (_e213 > 0f)) * 2.9f);
+                    let _e268 = floor((_e266 + 0.5f));
+                    let _e277 = select(_e268, (_e268 - 1f), (((_e268 - _e266) == 0.5f) && ((floor((_e268 * 0.5f)) * 2f) != _e268)));
+                    let _e279 = select(0f, _e277, (_e277 > 0f));
+                    let _e289 = (select(0f, select(1f, _e226, (_e226 < 1f)), (_e226 > 0f)) * 2.9f);
+                    let _e291 = floor((_e289 + 0.5f));
+                    let _e300 = select(_e291, (_e291 - 1f), (((_e291 - _e289) == 0.5f) && ((floor((_e291 * 0.5f)) * 2f) != _e291)));
+                    let _e302 = select(0f, _e300, (_e300 > 0f));
+                    let _e312 = (select(0f, select(1f, _e239, (_e239 < 1f)), (_e239 > 0f)) * 2.9f);
+                    let _e314 = floor((_e312 + 0.5f));
+                    let _e323 = select(_e314, (_e314 - 1f), (((_e314 - _e312) == 0.5f) && ((floor((_e314 * 0.5f)) * 2f) != _e314)));
+                    let _e325 = select(0f, _e323, (_e323 > 0f));
+                    let _e329 = ((((64u * u32(select(3f, _e257, (_e257 < 3f)))) + (16u * u32(select(3f, _e279, (_e279 < 3f))))) + (4u * u32(select(3f, _e302, (_e302 < 3f))))) + u32(select(3f, _e325, (_e325 < 3f))));
+                    if _e102 {
+                        let _e342 = params.member.member.member_1[0u];
+                        let _e344 = ((((((f32(_e58.x) + 0.5f) / _e71) * 2f) - 1f) * _e342) * _e95);
+                        let _e351 = params.member.member.member_1[1u];
+                        let _e353 = ((((((f32(_e58.y) + 0.5f) / _e81) * -2f) + 1f) * _e351) * _e95);
+                        let _e357 = normals.member[_e92];
+                        let _e365 = (f32((bitcast<i32>(((_e357 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e365 != _e365) {
+                            phi_1772_ = true;
                         } else {
-                            phi_1709_ = f32();
+                            phi_1772_ = (-1f >= _e365);
                         }
-                        let _e258 = phi_1709_;
-                        phi_1713_ = _e258;
-                        phi_1714_ = select(true, false, _e255);
-                    } else {
-                        phi_1713_ = f32();
-                        phi_1714_ = true;
-                    }
-                    let _e261 = phi_1713_;
-                    let _e263 = phi_1714_;
-                    let _e264 = select(_e261, _e249, _e263);
-                    if (_e264 > 0f) {
-                        let _e270 = select(select(u32(_e264), 0u, (_e264 < 0f)), 4294967295u, (_e264 > 4294967000f));
-                        phi_1736_ = select(_e270, 3u, (3u < _e270));
-                    } else {
-                        phi_1736_ = 0u;
-                    }
-                    let _e274 = phi_1736_;
-                    let _e280 = (select(0f, select(1f, _e214, (_e214 < 1f)), (_e214 > 0f)) * 2.9f);
-                    let _e282 = floor((_e280 + 0.5f));
-                    if ((_e282 - _e280) == 0.5f) {
-                        let _e288 = ((floor((_e282 * 0.5f)) * 2f) != _e282);
-                        if _e288 {
-                            phi_1763_ = (_e282 - 1f);
+                        let _e369 = phi_1772_;
+                        let _e370 = select(_e365, -1f, _e369);
+                        let _e380 = (f32((bitcast<i32>((((_e357 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e380 != _e380) {
+                            phi_1787_ = true;
                         } else {
-                            phi_1763_ = f32();
+                            phi_1787_ = (-1f >= _e380);
                         }
-                        let _e291 = phi_1763_;
-                        phi_1767_ = _e291;
-                        phi_1768_ = select(true, false, _e288);
-                    } else {
-                        phi_1767_ = f32();
-                        phi_1768_ = true;
-                    }
-                    let _e294 = phi_1767_;
-                    let _e296 = phi_1768_;
-                    let _e297 = select(_e294, _e282, _e296);
-                    if (_e297 > 0f) {
-                        let _e303 = select(select(u32(_e297), 0u, (_e297 < 0f)), 4294967295u, (_e297 > 4294967000f));
-                        phi_1790_ = select(_e303, 3u, (3u < _e303));
-                    } else {
-                        phi_1790_ = 0u;
-                    }
-                    let _e307 = phi_1790_;
-                    let _e314 = (select(0f, select(1f, _e228, (_e228 < 1f)), (_e228 > 0f)) * 2.9f);
-                    let _e316 = floor((_e314 + 0.5f));
-                    if ((_e316 - _e314) == 0.5f) {
-                        let _e322 = ((floor((_e316 * 0.5f)) * 2f) != _e316);
-                        if _e322 {
-                            phi_1817_ = (_e316 - 1f);
+                        let _e384 = phi_1787_;
+                        let _e385 = select(_e380, -1f, _e384);
+                        let _e388 = (1f - abs(_e370));
+                        let _e389 = abs(_e385);
+                        let _e390 = (_e388 - _e389);
+                        if (_e390 < 0f) {
+                            phi_775_ = vec2<f32>(((1f - _e389) * select(1f, -1f, (_e370 < 0f))), (_e388 * select(1f, -1f, (_e385 < 0f))));
                         } else {
-                            phi_1817_ = f32();
+                            phi_775_ = vec2<f32>(_e370, _e385);
                         }
-                        let _e325 = phi_1817_;
-                        phi_1821_ = _e325;
-                        phi_1822_ = select(true, false, _e322);
-                    } else {
-                        phi_1821_ = f32();
-                        phi_1822_ = true;
-                    }
-                    let _e328 = phi_1821_;
-                    let _e330 = phi_1822_;
-                    let _e331 = select(_e328, _e316, _e330);
-                    if (_e331 > 0f) {
-                        let _e337 = select(select(u32(_e331), 0u, (_e331 < 0f)), 4294967295u, (_e331 > 4294967000f));
-                        phi_1844_ = select(_e337, 3u, (3u < _e337));
-                    } else {
-                        phi_1844_ = 0u;
-                    }
-                    let _e341 = phi_1844_;
-                    let _e348 = (select(0f, select(1f, _e242, (_e242 < 1f)), (_e242 > 0f)) * 2.9f);
-                    let _e350 = floor((_e348 + 0.5f));
-                    if ((_e350 - _e348) == 0.5f) {
-                        let _e356 = ((floor((_e350 * 0.5f)) * 2f) != _e350);
-                        if _e356 {
-                            phi_1871_ = (_e350 - 1f);
+                        let _e401 = phi_775_;
+                        let _e410 = (1f / sqrt((((_e401.x * _e401.x) + (_e401.y * _e401.y)) + (_e390 * _e390))));
+                        let _e411 = (_e401.x * _e410);
+                        let _e412 = (_e401.y * _e410);
+                        let _e413 = (_e390 * _e410);
+                        let _e414 = -(_e413);
+                        if ((((_e411 * -(_e344)) + (_e412 * -(_e353))) + (_e414 * -(_e95))) < 0f) {
+                            phi_806_ = vec3<f32>(-(_e411), -(_e412), _e413);
                         } else {
-                            phi_1871_ = f32();
+                            phi_806_ = vec3<f32>(_e411, _e412, _e414);
                         }
-                        let _e359 = phi_1871_;
-                        phi_1875_ = _e359;
-                        phi_1876_ = select(true, false, _e356);
-                    } else {
-                        phi_1875_ = f32();
-                        phi_1876_ = true;
-                    }
-                    let _e362 = phi_1875_;
-                    let _e364 = phi_1876_;
-                    let _e365 = select(_e362, _e350, _e364);
-                    if (_e365 > 0f) {
-                        let _e371 = select(select(u32(_e365), 0u, (_e365 < 0f)), 4294967295u, (_e365 > 4294967000f));
-                        phi_1898_ = select(_e371, 3u, (3u < _e371));
-                    } else {
-                        phi_1898_ = 0u;
-                    }
-                    let _e375 = phi_1898_;
-                    let _e376 = ((((64u * _e274) + (16u * _e307)) + (4u * _e341)) + _e375);
-                    if _e101 {
-                        let _e389 = params.member.member.member_1[0u];
-                        let _e391 = ((((((f32(_e57.x) + 0.5f) / _e70) * 2f) - 1f) * _e389) * _e94);
-                        let _e398 = params.member.member.member_1[1u];
-                        let _e400 = ((((((f32(_e57.y) + 0.5f) / _e80) * -2f) + 1f) * _e398) * _e94);
-                        let _e404 = normals.member[_e91];
-                        let _e412 = (f32((bitcast<i32>(((_e404 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e412 != _e412) {
-                            phi_1909_ = true;
-                        } else {
-                            phi_1909_ = (-1f >= _e412);
-                        }
-                        let _e416 = phi_1909_;
-                        let _e417 = select(_e412, -1f, _e416);
-                        let _e427 = (f32((bitcast<i32>((((_e404 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e427 != _e427) {
-                            phi_1924_ = true;
-                        } else {
-                            phi_1924_ = (-1f >= _e427);
-                        }
-                        let _e431 = phi_1924_;
-                        let _e432 = select(_e427, -1f, _e431);
-                        let _e435 = (1f - abs(_e417));
-                        let _e436 = abs(_e432);
-                        let _e437 = (_e435 - _e436);
-                        if (_e437 < 0f) {
-                            phi_782_ = vec2<f32>(((1f - _e436) * select(1f, -1f, (_e417 < 0f))), (_e435 * select(1f, -1f, (_e432 < 0f))));
-                        } else {
-                            phi_782_ = vec2<f32>(_e417, _e432);
-                        }
-                        let _e448 = phi_782_;
-                        let _e457 = (1f / sqrt((((_e448.x * _e448.x) + (_e448.y * _e448.y)) + (_e437 * _e437))));
-                        let _e458 = (_e448.x * _e457);
-                        let _e459 = (_e448.y * _e457);
-                        let _e460 = (_e437 * _e457);
-                        let _e461 = -(_e460);
-                        if ((((_e458 * -(_e391)) + (_e459 * -(_e400))) + (_e461 * -(_e94))) < 0f) {
-                            phi_813_ = vec3<f32>(-(_e458), -(_e459), _e460);
-                        } else {
-                            phi_813_ = vec3<f32>(_e458, _e459, _e461);
-                        }
-                        let _e476 = phi_813_;
-                        let _e479 = params.member.member_8;
-                        phi_819_ = (_e57.y & 63u);
-                        phi_822_ = (_e57.x & 63u);
-                        phi_824_ = 32u;
-                        phi_826_ = 0u;
+                        let _e429 = phi_806_;
+                        let _e432 = params.member.member_8;
+                        phi_812_ = (_e58.y & 63u);
+                        phi_815_ = (_e58.x & 63u);
+                        phi_817_ = 32u;
+                        phi_819_ = 0u;
                         loop {
-                            let _e483 = phi_819_;
-                            let _e485 = phi_822_;
-                            let _e487 = phi_824_;
-                            let _e489 = phi_826_;
-                            local = _e489;
-                            let _e490 = (_e487 > 0u);
-                            if _e490 {
-                                let _e493 = select(0u, 1u, ((_e485 & _e487) != 0u));
-                                let _e496 = select(0u, 1u, ((_e483 & _e487) != 0u));
-                                if (_e496 == 0u) {
-                                    if (_e493 == 1u) {
-                                        phi_855_ = (63u - _e483);
-                                        phi_856_ = (63u - _e485);
+                            let _e436 = phi_812_;
+                            let _e438 = phi_815_;
+                            let _e440 = phi_817_;
+                            let _e442 = phi_819_;
+                            local = _e442;
+                            let _e443 = (_e440 > 0u);
+                            if _e443 {
+                                let _e446 = select(0u, 1u, ((_e438 & _e440) != 0u));
+                                let _e449 = select(0u, 1u, ((_e436 & _e440) != 0u));
+                                if (_e449 == 0u) {
+                                    if (_e446 == 1u) {
+                                        phi_848_ = (63u - _e436);
+                                        phi_849_ = (63u - _e438);
                                     } else {
-                                        phi_855_ = _e483;
-                                        phi_856_ = _e485;
+                                        phi_848_ = _e436;
+                                        phi_849_ = _e438;
                                     }
-                                    let _e507 = phi_855_;
-                                    let _e509 = phi_856_;
-                                    phi_857_ = _e509;
-                                    phi_858_ = _e507;
+                                    let _e460 = phi_848_;
+                                    let _e462 = phi_849_;
+                                    phi_850_ = _e462;
+                                    phi_851_ = _e460;
                                 } else {
-                                    phi_857_ = _e483;
-                                    phi_858_ = _e485;
+                                    phi_850_ = _e436;
+                                    phi_851_ = _e438;
                                 }
-                                let _e511 = phi_857_;
-                                let _e513 = phi_858_;
-                                phi_820_ = _e511;
-                                phi_823_ = _e513;
-                                phi_825_ = (_e487 / 2u);
-                                phi_827_ = (_e489 + ((_e487 * _e487) * ((3u * _e493) ^ _e496)));
+                                let _e464 = phi_850_;
+                                let _e466 = phi_851_;
+                                phi_813_ = _e464;
+                                phi_816_ = _e466;
+                                phi_818_ = (_e440 / 2u);
+                                phi_820_ = (_e442 + ((_e440 * _e440) * ((3u * _e446) ^ _e449)));
                             } else {
+                                phi_813_ = u32();
+                                phi_816_ = u32();
+                                phi_818_ = u32();
                                 phi_820_ = u32();
-                                phi_823_ = u32();
-                                phi_825_ = u32();
-                                phi_827_ = u32();
                             }
-                            let _e516 = phi_820_;
-                            let _e518 = phi_823_;
-                            let _e520 = phi_825_;
-                            let _e522 = phi_827_;
+                            let _e469 = phi_813_;
+                            let _e471 = phi_816_;
+                            let _e473 = phi_818_;
+                            let _e475 = phi_820_;
                             continue;
                             continuing {
-                                phi_819_ = _e516;
-                                phi_822_ = _e518;
-                                phi_824_ = _e520;
-                                phi_826_ = _e522;
-                                break if !(_e490);
+                                phi_812_ = _e469;
+                                phi_815_ = _e471;
+                                phi_817_ = _e473;
+                                phi_819_ = _e475;
+                                break if !(_e443);
                             }
                         }
-                        let _e527 = local;
-                        let _e529 = f32((_e527 + (288u * (_e479 % 64u))));
-                        let _e531 = (0.5f + (_e529 * 0.7548777f));
-                        let _e535 = (0.5f + (_e529 * 0.5698403f));
-                        let _e538 = (6.2831855f * (_e531 - floor(_e531)));
-                        phi_889_ = type_28(_e376, type_27(1u, type_26(vec2<u32>(_e57.x, _e57.y), vec3<f32>(_e391, _e400, _e94), _e476, sin(_e538), cos(_e538), (_e535 - floor(_e535)))));
+                        let _e480 = local;
+                        let _e482 = f32((_e480 + (288u * (_e432 % 64u))));
+                        let _e484 = (0.5f + (_e482 * 0.7548777f));
+                        let _e488 = (0.5f + (_e482 * 0.5698403f));
+                        let _e491 = (6.2831855f * (_e484 - floor(_e484)));
+                        phi_882_ = type_28(_e329, type_27(1u, type_26(vec2<u32>(_e58.x, _e58.y), vec3<f32>(_e344, _e353, _e95), _e429, sin(_e491), cos(_e491), (_e488 - floor(_e488)))));
                     } else {
-                        phi_889_ = type_28(_e376, type_27(0u, type_27().member_1));
+                        phi_882_ = type_28(_e329, type_27(0u, type_27().member_1));
                     }
-                    let _e550 = phi_889_;
-                    if (bitcast<i32>(_e550.member_1.member) != 0i) {
-                        let _e559 = params.member.member_5;
-                        let _e561 = select(_e559, 64u, (64u < _e559));
-                        let _e563 = select(_e561, _e59, (_e59 < _e561));
-                        let _e565 = select(1u, _e563, (1u < _e563));
-                        let _e568 = params.member.member_6;
-                        let _e570 = select(1u, _e568, (1u < _e568));
-                        phi_924_ = 0u;
-                        phi_927_ = 0f;
+                    let _e503 = phi_882_;
+                    if (bitcast<i32>(_e503.member_1.member) != 0i) {
+                        let _e512 = params.member.member_5;
+                        let _e514 = select(_e512, 64u, (64u < _e512));
+                        let _e516 = select(_e514, _e60, (_e60 < _e514));
+                        let _e518 = select(1u, _e516, (1u < _e516));
+                        let _e521 = params.member.member_6;
+                        let _e523 = select(1u, _e521, (1u < _e521));
+                        phi_917_ = 0u;
+                        phi_920_ = 0f;
                         loop {
-                            let _e572 = phi_924_;
-                            let _e574 = phi_927_;
-                            local_11 = _e574;
-                            let _e575 = (_e572 < _e565);
-                            if _e575 {
-                                if (_e572 < _e59) {
+                            let _e525 = phi_917_;
+                            let _e527 = phi_920_;
+                            local_11 = _e527;
+                            let _e528 = (_e525 < _e518);
+                            if _e528 {
+                                if (_e525 < _e60) {
                                 } else {
-                                    phi_2051_ = true;
+                                    phi_1899_ = true;
                                     break;
                                 }
-                                let _e580 = kernel.member[_e572][0u];
-                                let _e584 = kernel.member[_e572][1u];
-                                let _e589 = ((_e550.member_1.member_1.member_4 * _e580) - (_e550.member_1.member_1.member_3 * _e584));
-                                let _e592 = ((_e550.member_1.member_1.member_3 * _e580) + (_e550.member_1.member_1.member_4 * _e584));
-                                let _e597 = ((1f - (_e589 * _e589)) - (_e592 * _e592));
-                                if (_e597 != _e597) {
-                                    phi_1939_ = true;
-                                } else {
-                                    phi_1939_ = (0f >= _e597);
-                                }
-                                let _e601 = phi_1939_;
-                                let _e603 = sqrt(select(_e597, 0f, _e601));
-                                let _e604 = -(_e603);
-                                let _e608 = (-1f * _e550.member_1.member_1.member_2.z);
-                                let _e609 = (-1f * _e550.member_1.member_1.member_2.x);
-                                let _e611 = (1f / (_e608 + 1f));
-                                let _e612 = (_e611 * _e550.member_1.member_1.member_2.y);
-                                let _e616 = (_e612 * _e609);
-                                let _e636 = (_e608 > 0.9997f);
-                                let _e637 = (_e608 < -0.9997f);
-                                let _e647 = params.member.member_1;
-                                let _e651 = params.member.member_3;
-                                let _e654 = params.member.member_4;
-                                phi_1073_ = 1u;
-                                phi_1076_ = _e647;
-                                phi_1078_ = false;
-                                phi_1080_ = true;
-                                phi_1082_ = 0f;
-                                phi_1084_ = 0f;
+                                let _e533 = kernel.member[_e525][0u];
+                                let _e537 = kernel.member[_e525][1u];
+                                let _e542 = ((_e503.member_1.member_1.member_4 * _e533) - (_e503.member_1.member_1.member_3 * _e537));
+                                let _e545 = ((_e503.member_1.member_1.member_3 * _e533) + (_e503.member_1.member_1.member_4 * _e537));
+                                let _e550 = ((1f - (_e542 * _e542)) - (_e545 * _e545));
+                                let _e554 = sqrt(select(0f, _e550, ((_e550 > 0f) || false)));
+                                let _e555 = -(_e554);
+                                let _e559 = (-1f * _e503.member_1.member_1.member_2.z);
+                                let _e560 = (-1f * _e503.member_1.member_1.member_2.x);
+                                let _e562 = (1f / (_e559 + 1f));
+                                let _e563 = (_e562 * _e503.member_1.member_1.member_2.y);
+                                let _e567 = (_e563 * _e560);
+                                let _e587 = (_e559 > 0.9997f);
+                                let _e588 = (_e559 < -0.9997f);
+                                let _e598 = params.member.member_1;
+                                let _e602 = params.member.member_3;
+                                let _e605 = params.member.member_4;
+                                phi_1072_ = 1u;
+                                phi_1075_ = _e598;
+                                phi_1077_ = false;
+                                phi_1079_ = true;
+                                phi_1081_ = 0f;
+                                phi_1083_ = 0f;
                                 loop {
-                                    let _e660 = phi_1073_;
-                                    let _e662 = phi_1076_;
-                                    let _e664 = phi_1078_;
-                                    let _e666 = phi_1080_;
-                                    let _e668 = phi_1082_;
-                                    let _e670 = phi_1084_;
-                                    local_5 = _e662;
-                                    local_7 = _e664;
-                                    local_9 = _e662;
-                                    local_10 = _e664;
-                                    let _e671 = (_e660 <= _e570);
-                                    if _e671 {
-                                        let _e677 = (((-(_e550.member_1.member_1.member_5) + f32(_e660)) * _e647) / f32(_e570));
-                                        let _e682 = (_e550.member_1.member_1.member_1.x + (select(select(((((_e608 + (_e612 * _e550.member_1.member_1.member_2.y)) * _e589) + (_e616 * _e592)) + (_e609 * _e604)), _e589, _e637), _e589, _e636) * _e677));
-                                        let _e684 = (_e550.member_1.member_1.member_1.y + (select(select((((_e616 * _e589) + ((_e608 + ((_e611 * _e609) * _e609)) * _e592)) + (-(_e550.member_1.member_1.member_2.y) * _e604)), -(_e592), _e637), _e592, _e636) * _e677));
-                                        let _e686 = (_e550.member_1.member_1.member_1.z + (select(select((((_e550.member_1.member_1.member_2.x * _e589) + (_e550.member_1.member_1.member_2.y * _e592)) + (_e608 * _e604)), _e603, _e637), _e604, _e636) * _e677));
-                                        let _e692 = params.member.member.member_1[0u];
-                                        let _e695 = (((_e682 * 0.5f) / (_e686 * _e692)) + 0.5f);
-                                        let _e701 = params.member.member.member_1[1u];
-                                        let _e704 = (0.5f - ((_e684 * 0.5f) / (_e686 * _e701)));
-                                        let _e714 = select(false, select(false, select(false, select(false, (_e704 <= 1f), (_e704 >= 0f)), select(false, (_e695 <= 1f), (_e695 >= 0f))), (_e686 > 0f)), _e666);
-                                        if _e714 {
-                                            let _e715 = (_e695 * _e70);
-                                            if (_e715 > 0f) {
-                                                let _e721 = select(select(u32(_e715), 0u, (_e715 < 0f)), 4294967295u, (_e715 > 4294967000f));
-                                                let _e722 = (_e75 - 1u);
-                                                phi_1188_ = select(_e721, _e722, (_e722 < _e721));
+                                    let _e611 = phi_1072_;
+                                    let _e613 = phi_1075_;
+                                    let _e615 = phi_1077_;
+                                    let _e617 = phi_1079_;
+                                    let _e619 = phi_1081_;
+                                    let _e621 = phi_1083_;
+                                    local_5 = _e613;
+                                    local_7 = _e615;
+                                    local_9 = _e613;
+                                    local_10 = _e615;
+                                    let _e622 = (_e611 <= _e523);
+                                    if _e622 {
+                                        let _e628 = (((-(_e503.member_1.member_1.member_5) + f32(_e611)) * _e598) / f32(_e523));
+                                        let _e633 = (_e503.member_1.member_1.member_1.x + (select(select(((((_e559 + (_e563 * _e503.member_1.member_1.member_2.y)) * _e542) + (_e567 * _e545)) + (_e560 * _e555)), _e542, _e588), _e542, _e587) * _e628));
+                                        let _e635 = (_e503.member_1.member_1.member_1.y + (select(select((((_e567 * _e542) + ((_e559 + ((_e562 * _e560) * _e560)) * _e545)) + (-(_e503.member_1.member_1.member_2.y) * _e555)), -(_e545), _e588), _e545, _e587) * _e628));
+                                        let _e637 = (_e503.member_1.member_1.member_1.z + (select(select((((_e503.member_1.member_1.member_2.x * _e542) + (_e503.member_1.member_1.member_2.y * _e545)) + (_e559 * _e555)), _e554, _e588), _e555, _e587) * _e628));
+                                        let _e643 = params.member.member.member_1[0u];
+                                        let _e646 = (((_e633 * 0.5f) / (_e637 * _e643)) + 0.5f);
+                                        let _e652 = params.member.member.member_1[1u];
+                                        let _e655 = (0.5f - ((_e635 * 0.5f) / (_e637 * _e652)));
+                                        let _e665 = select(false, select(false, select(false, select(false, (_e655 <= 1f), (_e655 >= 0f)), select(false, (_e646 <= 1f), (_e646 >= 0f))), (_e637 > 0f)), _e617);
+                                        if _e665 {
+                                            let _e666 = (_e646 * _e71);
+                                            let _e668 = f32((_e76 - 1u));
+                                            let _e670 = select(0f, _e666, (_e666 > 0f));
+                                            let _e674 = (_e655 * _e81);
+                                            let _e676 = f32((_e86 - 1u));
+                                            let _e678 = select(0f, _e674, (_e674 > 0f));
+                                            let _e686 = depth.member[((u32(select(_e676, _e678, (_e678 < _e676))) * _e76) + u32(select(_e668, _e670, (_e670 < _e668))))];
+                                            let _e690 = select(_e99, _e686, select(false, (_e686 < _e99), (_e686 > 0f)));
+                                            let _e693 = (((_e646 * 2f) - 1f) * _e643);
+                                            let _e697 = (((_e655 * -2f) + 1f) * _e652);
+                                            let _e699 = (_e633 - (_e693 * _e690));
+                                            let _e700 = (_e635 - (_e697 * _e690));
+                                            let _e701 = (_e637 - _e690);
+                                            let _e707 = sqrt((((_e699 * _e699) + (_e700 * _e700)) + (_e701 * _e701)));
+                                            let _e712 = (select(0f, select(1f, _e646, (_e646 < 1f)), (_e646 > 0f)) * _e71);
+                                            let _e714 = select(0f, _e712, (_e712 > 0f));
+                                            let _e717 = u32(select(_e668, _e714, (_e714 < _e668)));
+                                            let _e722 = (select(0f, select(1f, _e655, (_e655 < 1f)), (_e655 > 0f)) * _e81);
+                                            let _e724 = select(0f, _e722, (_e722 > 0f));
+                                            let _e727 = u32(select(_e676, _e724, (_e724 < _e676)));
+                                            let _e748 = normals.member[((_e727 * _e76) + _e717)];
+                                            let _e756 = (f32((bitcast<i32>(((_e748 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                            if (_e756 != _e756) {
+                                                phi_1870_ = true;
                                             } else {
-                                                phi_1188_ = 0u;
+                                                phi_1870_ = (-1f >= _e756);
                                             }
-                                            let _e726 = phi_1188_;
-                                            let _e727 = (_e704 * _e80);
-                                            if (_e727 > 0f) {
-                                                let _e733 = select(select(u32(_e727), 0u, (_e727 < 0f)), 4294967295u, (_e727 > 4294967000f));
-                                                let _e734 = (_e85 - 1u);
-                                                phi_1209_ = select(_e733, _e734, (_e734 < _e733));
+                                            let _e760 = phi_1870_;
+                                            let _e761 = select(_e756, -1f, _e760);
+                                            let _e771 = (f32((bitcast<i32>((((_e748 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                            if (_e771 != _e771) {
+                                                phi_1885_ = true;
                                             } else {
-                                                phi_1209_ = 0u;
+                                                phi_1885_ = (-1f >= _e771);
                                             }
-                                            let _e738 = phi_1209_;
-                                            let _e743 = depth.member[((_e738 * _e75) + _e726)];
-                                            let _e747 = select(_e98, _e743, select(false, (_e743 < _e98), (_e743 > 0f)));
-                                            let _e750 = (((_e695 * 2f) - 1f) * _e692);
-                                            let _e754 = (((_e704 * -2f) + 1f) * _e701);
-                                            let _e756 = (_e682 - (_e750 * _e747));
-                                            let _e757 = (_e684 - (_e754 * _e747));
-                                            let _e758 = (_e686 - _e747);
-                                            let _e764 = sqrt((((_e756 * _e756) + (_e757 * _e757)) + (_e758 * _e758)));
-                                            let _e769 = (select(0f, select(1f, _e695, (_e695 < 1f)), (_e695 > 0f)) * _e70);
-                                            if (_e769 > 0f) {
-                                                let _e775 = select(select(u32(_e769), 0u, (_e769 < 0f)), 4294967295u, (_e769 > 4294967000f));
-                                                let _e776 = (_e75 - 1u);
-                                                phi_1298_ = select(_e775, _e776, (_e776 < _e775));
+                                            let _e775 = phi_1885_;
+                                            let _e776 = select(_e771, -1f, _e775);
+                                            let _e779 = (1f - abs(_e761));
+                                            let _e780 = abs(_e776);
+                                            let _e781 = (_e779 - _e780);
+                                            if (_e781 < 0f) {
+                                                phi_1846_ = vec2<f32>(((1f - _e780) * select(1f, -1f, (_e761 < 0f))), (_e779 * select(1f, -1f, (_e776 < 0f))));
                                             } else {
-                                                phi_1298_ = 0u;
+                                                phi_1846_ = vec2<f32>(_e761, _e776);
                                             }
-                                            let _e780 = phi_1298_;
-                                            let _e785 = (select(0f, select(1f, _e704, (_e704 < 1f)), (_e704 > 0f)) * _e80);
-                                            if (_e785 > 0f) {
-                                                let _e791 = select(select(u32(_e785), 0u, (_e785 < 0f)), 4294967295u, (_e785 > 4294967000f));
-                                                let _e792 = (_e85 - 1u);
-                                                phi_1329_ = select(_e791, _e792, (_e792 < _e791));
+                                            let _e792 = phi_1846_;
+                                            let _e801 = (1f / sqrt((((_e792.x * _e792.x) + (_e792.y * _e792.y)) + (_e781 * _e781))));
+                                            let _e802 = (_e792.x * _e801);
+                                            let _e803 = (_e792.y * _e801);
+                                            let _e805 = -((_e781 * _e801));
+                                            let _e809 = (((_e802 * _e693) + (_e803 * _e697)) + _e805);
+                                            let _e818 = select(((((_e802 * ((((((f32(_e717) + 0.5f) * (1f / _e71)) * 2f) - 1f) * _e643) * _e690)) + (_e803 * ((((((f32(_e727) + 0.5f) * (1f / _e81)) * -2f) + 1f) * _e652) * _e690))) + (_e805 * _e690)) / _e809), _e690, (abs(_e809) < 0.001f));
+                                            let _e828 = select(select(((_e637 - _e818) > _e605), true, (_e637 < (_e818 * (1f + _e602)))), true, select(false, (_e727 == _e503.member_1.member_1.member.y), (_e717 == _e503.member_1.member_1.member.x)));
+                                            let _e830 = select(false, !(_e828), _e665);
+                                            let _e831 = (_e619 + _e707);
+                                            let _e840 = select(false, _e828, _e665);
+                                            if _e840 {
+                                                phi_1443_ = (_e611 + 1u);
                                             } else {
-                                                phi_1329_ = 0u;
+                                                phi_1443_ = u32();
                                             }
-                                            let _e796 = phi_1329_;
-                                            let _e817 = normals.member[((_e796 * _e75) + _e780)];
-                                            let _e825 = (f32((bitcast<i32>(((_e817 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e825 != _e825) {
-                                                phi_2022_ = true;
-                                            } else {
-                                                phi_2022_ = (-1f >= _e825);
-                                            }
-                                            let _e829 = phi_2022_;
-                                            let _e830 = select(_e825, -1f, _e829);
-                                            let _e840 = (f32((bitcast<i32>((((_e817 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e840 != _e840) {
-                                                phi_2037_ = true;
-                                            } else {
-                                                phi_2037_ = (-1f >= _e840);
-                                            }
-                                            let _e844 = phi_2037_;
-                                            let _e845 = select(_e840, -1f, _e844);
-                                            let _e848 = (1f - abs(_e830));
-                                            let _e849 = abs(_e845);
-                                            let _e850 = (_e848 - _e849);
-                                            if (_e850 < 0f) {
-                                                phi_1998_ = vec2<f32>(((1f - _e849) * select(1f, -1f, (_e830 < 0f))), (_e848 * select(1f, -1f, (_e845 < 0f))));
-                                            } else {
-                                                phi_1998_ = vec2<f32>(_e830, _e845);
-                                            }
-                                            let _e861 = phi_1998_;
-                                            let _e870 = (1f / sqrt((((_e861.x * _e861.x) + (_e861.y * _e861.y)) + (_e850 * _e850))));
-                                            let _e871 = (_e861.x * _e870);
-                                            let _e872 = (_e861.y * _e870);
-                                            let _e874 = -((_e850 * _e870));
-                                            let _e878 = (((_e871 * _e750) + (_e872 * _e754)) + _e874);
-                                            let _e887 = select(((((_e871 * ((((((f32(_e780) + 0.5f) * (1f / _e70)) * 2f) - 1f) * _e692) * _e747)) + (_e872 * ((((((f32(_e796) + 0.5f) * (1f / _e80)) * -2f) + 1f) * _e701) * _e747))) + (_e874 * _e747)) / _e878), _e747, (abs(_e878) < 0.001f));
-                                            let _e897 = select(select(((_e686 - _e887) > _e654), true, (_e686 < (_e887 * (1f + _e651)))), true, select(false, (_e796 == _e550.member_1.member_1.member.y), (_e780 == _e550.member_1.member_1.member.x)));
-                                            let _e899 = select(false, !(_e897), _e714);
-                                            let _e900 = (_e668 + _e764);
-                                            let _e909 = select(false, _e897, _e714);
-                                            if _e909 {
-                                                phi_1464_ = (_e660 + 1u);
-                                            } else {
-                                                phi_1464_ = u32();
-                                            }
-                                            let _e912 = phi_1464_;
-                                            phi_1466_ = _e912;
-                                            phi_1467_ = select(_e662, select((_e670 + ((_e668 * (_e677 - _e670)) / _e900)), _e670, (_e900 < 0.000001f)), _e899);
-                                            phi_1468_ = select(_e899, true, _e664);
-                                            phi_1469_ = _e909;
-                                            phi_1470_ = _e764;
-                                            phi_1473_ = _e909;
-                                            phi_1474_ = select(true, false, _e909);
+                                            let _e843 = phi_1443_;
+                                            phi_1445_ = _e843;
+                                            phi_1446_ = select(_e613, select((_e621 + ((_e619 * (_e628 - _e621)) / _e831)), _e621, (_e831 < 0.000001f)), _e830);
+                                            phi_1447_ = select(_e830, true, _e615);
+                                            phi_1448_ = _e840;
+                                            phi_1449_ = _e707;
+                                            phi_1452_ = _e840;
+                                            phi_1453_ = select(true, false, _e840);
                                         } else {
-                                            phi_1466_ = u32();
-                                            phi_1467_ = f32();
-                                            phi_1468_ = bool();
-                                            phi_1469_ = bool();
-                                            phi_1470_ = f32();
-                                            phi_1473_ = false;
-                                            phi_1474_ = false;
+                                            phi_1445_ = u32();
+                                            phi_1446_ = f32();
+                                            phi_1447_ = bool();
+                                            phi_1448_ = bool();
+                                            phi_1449_ = f32();
+                                            phi_1452_ = false;
+                                            phi_1453_ = false;
                                         }
-                                        let _e915 = phi_1466_;
-                                        let _e917 = phi_1467_;
-                                        let _e919 = phi_1468_;
-                                        let _e921 = phi_1469_;
-                                        let _e923 = phi_1470_;
-                                        let _e925 = phi_1473_;
-                                        let _e927 = phi_1474_;
-                                        phi_1074_ = _e915;
-                                        phi_1077_ = _e917;
-                                        phi_1079_ = _e919;
-                                        phi_1081_ = _e921;
-                                        phi_1083_ = _e923;
-                                        phi_1085_ = _e677;
-                                        phi_1478_ = _e925;
-                                        phi_1480_ = _e927;
-                                        phi_1481_ = select(true, false, _e714);
+                                        let _e846 = phi_1445_;
+                                        let _e848 = phi_1446_;
+                                        let _e850 = phi_1447_;
+                                        let _e852 = phi_1448_;
+                                        let _e854 = phi_1449_;
+                                        let _e856 = phi_1452_;
+                                        let _e858 = phi_1453_;
+                                        phi_1073_ = _e846;
+                                        phi_1076_ = _e848;
+                                        phi_1078_ = _e850;
+                                        phi_1080_ = _e852;
+                                        phi_1082_ = _e854;
+                                        phi_1084_ = _e628;
+                                        phi_1457_ = _e856;
+                                        phi_1459_ = _e858;
+                                        phi_1460_ = select(true, false, _e665);
                                     } else {
-                                        phi_1074_ = u32();
-                                        phi_1077_ = f32();
-                                        phi_1079_ = bool();
-                                        phi_1081_ = bool();
-                                        phi_1083_ = f32();
-                                        phi_1085_ = f32();
-                                        phi_1478_ = false;
-                                        phi_1480_ = false;
-                                        phi_1481_ = false;
+                                        phi_1073_ = u32();
+                                        phi_1076_ = f32();
+                                        phi_1078_ = bool();
+                                        phi_1080_ = bool();
+                                        phi_1082_ = f32();
+                                        phi_1084_ = f32();
+                                        phi_1457_ = false;
+                                        phi_1459_ = false;
+                                        phi_1460_ = false;
                                     }
-                                    let _e930 = phi_1074_;
-                                    let _e932 = phi_1077_;
-                                    let _e934 = phi_1079_;
-                                    let _e936 = phi_1081_;
-                                    let _e938 = phi_1083_;
-                                    let _e940 = phi_1085_;
-                                    let _e942 = phi_1478_;
-                                    let _e944 = phi_1480_;
-                                    let _e946 = phi_1481_;
-                                    let _e947 = select(true, false, _e671);
-                                    local_1 = _e947;
-                                    local_2 = _e944;
-                                    local_3 = _e947;
-                                    local_4 = _e946;
-                                    local_6 = _e932;
-                                    local_8 = _e934;
+                                    let _e861 = phi_1073_;
+                                    let _e863 = phi_1076_;
+                                    let _e865 = phi_1078_;
+                                    let _e867 = phi_1080_;
+                                    let _e869 = phi_1082_;
+                                    let _e871 = phi_1084_;
+                                    let _e873 = phi_1457_;
+                                    let _e875 = phi_1459_;
+                                    let _e877 = phi_1460_;
+                                    let _e878 = select(true, false, _e622);
+                                    local_1 = _e878;
+                                    local_2 = _e875;
+                                    local_3 = _e878;
+                                    local_4 = _e877;
+                                    local_6 = _e863;
+                                    local_8 = _e865;
                                     continue;
                                     continuing {
-                                        phi_1073_ = _e930;
-                                        phi_1076_ = _e932;
-                                        phi_1078_ = _e934;
-                                        phi_1080_ = _e936;
-                                        phi_1082_ = _e938;
-                                        phi_1084_ = _e940;
-                                        break if !(_e942);
+                                        phi_1072_ = _e861;
+                                        phi_1075_ = _e863;
+                                        phi_1077_ = _e865;
+                                        phi_1079_ = _e867;
+                                        phi_1081_ = _e869;
+                                        phi_1083_ = _e871;
+                                        break if !(_e873);
                                     }
                                 }
-                                let _e950 = local_1;
-                                let _e952 = local_2;
-                                let _e953 = select(_e952, false, _e950);
-                                let _e955 = local_3;
-                                let _e957 = local_4;
-                                let _e959 = select(select(_e957, false, _e955), false, _e953);
-                                let _e961 = local_5;
-                                let _e963 = local_6;
-                                let _e966 = local_7;
-                                let _e968 = local_8;
-                                let _e970 = select(_e953, true, _e959);
-                                let _e972 = local_9;
-                                let _e975 = local_10;
-                                let _e979 = params.member.member_7;
-                                if (_e979 == 1u) {
-                                    phi_1521_ = 0f;
+                                let _e881 = local_1;
+                                let _e883 = local_2;
+                                let _e884 = select(_e883, false, _e881);
+                                let _e886 = local_3;
+                                let _e888 = local_4;
+                                let _e890 = select(select(_e888, false, _e886), false, _e884);
+                                let _e892 = local_5;
+                                let _e894 = local_6;
+                                let _e897 = local_7;
+                                let _e899 = local_8;
+                                let _e901 = select(_e884, true, _e890);
+                                let _e903 = local_9;
+                                let _e906 = local_10;
+                                let _e910 = params.member.member_7;
+                                if (_e910 == 1u) {
+                                    phi_1500_ = 0f;
                                 } else {
-                                    let _e981 = (select(_e972, select(_e963, _e961, _e959), _e970) / _e647);
-                                    phi_1521_ = select(0f, select(1f, _e981, (_e981 < 1f)), (_e981 > 0f));
+                                    let _e912 = (select(_e903, select(_e894, _e892, _e890), _e901) / _e598);
+                                    phi_1500_ = select(0f, select(1f, _e912, (_e912 < 1f)), (_e912 > 0f));
                                 }
-                                let _e987 = phi_1521_;
-                                phi_925_ = (_e572 + 1u);
-                                phi_928_ = (_e574 + select(1f, _e987, select(_e975, select(_e968, _e966, _e959), _e970)));
+                                let _e918 = phi_1500_;
+                                phi_918_ = (_e525 + 1u);
+                                phi_921_ = (_e527 + select(1f, _e918, select(_e906, select(_e899, _e897, _e890), _e901)));
                             } else {
-                                phi_925_ = u32();
-                                phi_928_ = f32();
+                                phi_918_ = u32();
+                                phi_921_ = f32();
                             }
-                            let _e992 = phi_925_;
-                            let _e994 = phi_928_;
+                            let _e923 = phi_918_;
+                            let _e925 = phi_921_;
                             continue;
                             continuing {
-                                phi_924_ = _e992;
-                                phi_927_ = _e994;
-                                phi_2051_ = false;
-                                break if !(_e575);
+                                phi_917_ = _e923;
+                                phi_920_ = _e925;
+                                phi_1899_ = false;
+                                break if !(_e528);
                             }
                         }
-                        let _e997 = phi_2051_;
-                        if _e997 {
+                        let _e928 = phi_1899_;
+                        if _e928 {
                             break;
                         }
-                        let _e1000 = local_11;
-                        let _e1004 = params.member.member_2;
-                        let _e1005 = pow((_e1000 / f32(_e565)), _e1004);
-                        let _e1006 = (_e1005 * 0.6666667f);
-                        let _e1012 = ((select(0f, select(1f, _e1006, (_e1006 < 1f)), (_e1006 > 0f)) * 255f) + 0.5f);
-                        phi_1592_ = type_29(_e1005, select(select(u32(_e1012), 0u, (_e1012 < 0f)), 4294967295u, (_e1012 > 4294967000f)), _e550.member);
+                        let _e931 = local_11;
+                        let _e935 = params.member.member_2;
+                        let _e936 = pow((_e931 / f32(_e518)), _e935);
+                        let _e937 = (_e936 * 0.6666667f);
+                        let _e943 = ((select(0f, select(1f, _e937, (_e937 < 1f)), (_e937 > 0f)) * 255f) + 0.5f);
+                        phi_1571_ = type_29(_e936, select(select(u32(_e943), 0u, (_e943 < 0f)), 4294967295u, (_e943 > 4294967000f)), _e503.member);
                     } else {
-                        phi_1592_ = type_29(1f, 170u, _e550.member);
+                        phi_1571_ = type_29(1f, 170u, _e503.member);
                     }
-                    let _e1021 = phi_1592_;
-                    if (_e91 < arrayLength((&ao.member))) {
-                    } else {
-                        break;
-                    }
-                    ao.member[_e91] = _e1021.member;
-                    if (_e91 < arrayLength((&terms.member))) {
+                    let _e952 = phi_1571_;
+                    if (_e92 < arrayLength((&ao.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e91] = _e1021.member_1;
-                    if (_e91 < arrayLength((&edges.member))) {
+                    ao.member[_e92] = _e952.member;
+                    if (_e92 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e91] = _e1021.member_2;
+                    terms.member[_e92] = _e952.member_1;
+                    if (_e92 < arrayLength((&edges.member))) {
+                    } else {
+                        break;
+                    }
+                    edges.member[_e92] = _e952.member_2;
                 }
             }
             break;

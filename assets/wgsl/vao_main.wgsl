@@ -66,22 +66,17 @@ fn function_() {
     var phi_594_: bool;
     var phi_595_: bool;
     var phi_596_: bool;
-    var phi_1445_: bool;
-    var phi_1460_: bool;
-    var phi_1421_: vec2<f32>;
-    var phi_1475_: bool;
-    var phi_865_: type_35;
-    var phi_874_: u32;
-    var phi_877_: f32;
-    var phi_1082_: u32;
-    var phi_1113_: u32;
-    var phi_1490_: bool;
-    var phi_1505_: bool;
-    var phi_875_: u32;
-    var phi_878_: f32;
-    var phi_1519_: bool;
+    var phi_1453_: bool;
+    var phi_1468_: bool;
+    var phi_1429_: vec2<f32>;
+    var phi_871_: type_35;
+    var phi_880_: u32;
+    var phi_883_: f32;
+    var phi_881_: u32;
+    var phi_884_: f32;
+    var phi_1482_: bool;
     var local_4: f32;
-    var phi_1276_: f32;
+    var phi_1284_: f32;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -137,29 +132,29 @@ fn function_() {
                 let _e410 = normals.member[_e349];
                 let _e418 = (f32((bitcast<i32>(((_e410 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
                 if (_e418 != _e418) {
-                    phi_1445_ = true;
+                    phi_1453_ = true;
                 } else {
-                    phi_1445_ = (-1f >= _e418);
+                    phi_1453_ = (-1f >= _e418);
                 }
-                let _e422 = phi_1445_;
+                let _e422 = phi_1453_;
                 let _e423 = select(_e418, -1f, _e422);
                 let _e433 = (f32((bitcast<i32>((((_e410 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
                 if (_e433 != _e433) {
-                    phi_1460_ = true;
+                    phi_1468_ = true;
                 } else {
-                    phi_1460_ = (-1f >= _e433);
+                    phi_1468_ = (-1f >= _e433);
                 }
-                let _e437 = phi_1460_;
+                let _e437 = phi_1468_;
                 let _e438 = select(_e433, -1f, _e437);
                 let _e441 = (1f - abs(_e423));
                 let _e442 = abs(_e438);
                 let _e443 = (_e441 - _e442);
                 if (_e443 < 0f) {
-                    phi_1421_ = vec2<f32>(((1f - _e442) * select(1f, -1f, (_e423 < 0f))), (_e441 * select(1f, -1f, (_e438 < 0f))));
+                    phi_1429_ = vec2<f32>(((1f - _e442) * select(1f, -1f, (_e423 < 0f))), (_e441 * select(1f, -1f, (_e438 < 0f))));
                 } else {
-                    phi_1421_ = vec2<f32>(_e423, _e438);
+                    phi_1429_ = vec2<f32>(_e423, _e438);
                 }
-                let _e454 = phi_1421_;
+                let _e454 = phi_1429_;
                 let _e463 = (1f / sqrt((((_e454.x * _e454.x) + (_e454.y * _e454.y)) + (_e443 * _e443))));
                 let _e464 = (_e454.x * _e463);
                 let _e465 = (_e454.y * _e463);
@@ -196,125 +191,97 @@ fn function_() {
                 let _e526 = ((_e514 * _e498) - (_e497 * _e515));
                 let _e542 = (((_e476 * _e497) + (_e477 * _e498)) + (_e478 * _e499));
                 let _e546 = abs(_e542);
-                if (_e546 != _e546) {
-                    phi_1475_ = true;
-                } else {
-                    phi_1475_ = (0.0001f >= _e546);
-                }
-                let _e550 = phi_1475_;
                 if select(false, !((_e388 < 0.5f)), select(false, (_e363 < _e392), (_e363 > 0f))) {
-                    phi_865_ = type_35(1u, type_34(vec2<u32>(_e308, _e309), vec2<f32>(_e358, _e361), select(_e352, ((_e352 * _e355) / _e383), _e384), _e388, vec3<f32>(_e404, _e406, _e407), vec3<f32>(_e476, _e477, _e478), vec3<f32>(_e497, _e498, _e499), vec3<f32>(_e520, _e523, _e526), vec3<f32>(_e514, _e515, _e516), vec3<f32>((((_e476 * _e520) + (_e477 * _e523)) + (_e478 * _e526)), (((_e476 * _e514) + (_e477 * _e515)) + (_e478 * _e516)), _e542), (1f / (select(1f, -1f, (_e542 < 0f)) * select(_e546, 0.0001f, _e550)))));
+                    phi_871_ = type_35(1u, type_34(vec2<u32>(_e308, _e309), vec2<f32>(_e358, _e361), select(_e352, ((_e352 * _e355) / _e383), _e384), _e388, vec3<f32>(_e404, _e406, _e407), vec3<f32>(_e476, _e477, _e478), vec3<f32>(_e497, _e498, _e499), vec3<f32>(_e520, _e523, _e526), vec3<f32>(_e514, _e515, _e516), vec3<f32>((((_e476 * _e520) + (_e477 * _e523)) + (_e478 * _e526)), (((_e476 * _e514) + (_e477 * _e515)) + (_e478 * _e516)), _e542), (1f / (select(1f, -1f, (_e542 < 0f)) * select(0.0001f, _e546, ((_e546 > 0.0001f) || false))))));
                 } else {
-                    phi_865_ = type_35(0u, type_35().member_1);
+                    phi_871_ = type_35(0u, type_35().member_1);
                 }
-                let _e562 = phi_865_;
-                if (bitcast<i32>(_e562.member) != 0i) {
-                    phi_874_ = 0u;
-                    phi_877_ = 0f;
+                let _e560 = phi_871_;
+                if (bitcast<i32>(_e560.member) != 0i) {
+                    phi_880_ = 0u;
+                    phi_883_ = 0f;
                     loop {
-                        let _e568 = phi_874_;
-                        let _e570 = phi_877_;
-                        local_4 = _e570;
-                        let _e571 = (_e568 < 8u);
-                        if _e571 {
+                        let _e566 = phi_880_;
+                        let _e568 = phi_883_;
+                        local_4 = _e568;
+                        let _e569 = (_e566 < 8u);
+                        if _e569 {
                             local = array<array<f32, 2>, 56>(array<f32, 2>(0f, 1f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(0f, 1f), array<f32, 2>(0.382615f, 0.9239079f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.92379445f, 0.38288876f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.92402124f, -0.3823412f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.38316247f, -0.92368096f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.38206735f, -0.9241345f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.92356735f, -0.38343617f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.9242476f, 0.3817935f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(-0.38370985f, 0.9234537f), array<f32, 2>(0f, 1f), array<f32, 2>(0.195054f, 0.9807925f), array<f32, 2>(0.382615f, 0.9239079f), array<f32, 2>(0.55547786f, 0.83153135f), array<f32, 2>(0.707002f, 0.70721155f), array<f32, 2>(0.8313667f, 0.5557242f), array<f32, 2>(0.92379445f, 0.38288876f), array<f32, 2>(0.98073465f, 0.19534461f), array<f32, 2>(0.99999994f, 0.0002963268f), array<f32, 2>(0.9808503f, -0.19476335f), array<f32, 2>(0.92402124f, -0.3823412f), array<f32, 2>(0.8316959f, -0.5552314f), array<f32, 2>(0.707421f, -0.7067924f), array<f32, 2>(0.55597055f, -0.831202f), array<f32, 2>(0.38316247f, -0.92368096f), array<f32, 2>(0.19563523f, -0.9806767f), array<f32, 2>(0.0005926536f, -0.9999998f), array<f32, 2>(-0.19447269f, -0.9809079f), array<f32, 2>(-0.38206735f, -0.9241345f), array<f32, 2>(-0.5549849f, -0.8318604f), array<f32, 2>(-0.7065827f, -0.7076304f), array<f32, 2>(-0.8310372f, -0.55621684f), array<f32, 2>(-0.92356735f, -0.38343617f), array<f32, 2>(-0.9806187f, -0.19592582f), array<f32, 2>(-0.9999996f, -0.0008889803f), array<f32, 2>(-0.9809655f, 0.19418201f), array<f32, 2>(-0.9242476f, 0.3817935f), array<f32, 2>(-0.8320248f, 0.5547384f), array<f32, 2>(-0.7078398f, 0.70637304f), array<f32, 2>(-0.55646306f, 0.83087236f), array<f32, 2>(-0.38370985f, 0.9234537f), array<f32, 2>(-0.19621639f, 0.9805606f));
-                            let _e572 = (_e568 < 56u);
-                            if _e572 {
+                            let _e570 = (_e566 < 56u);
+                            if _e570 {
                             } else {
-                                phi_1519_ = true;
+                                phi_1482_ = true;
                                 break;
                             }
-                            let _e574 = local[_e568];
+                            let _e572 = local[_e566];
                             local_1 = array<f32, 56>(0.917883f, 0.564429f, 0.734504f, 0.359545f, 0.820004f, 0.470149f, 0.650919f, 0.205215f, 0.9490982f, 0.5865639f, 0.7554682f, 0.38954395f, 0.84255606f, 0.4948004f, 0.6719197f, 0.252031f, 0.8908589f, 0.54182106f, 0.7136428f, 0.32724136f, 0.798092f, 0.44453403f, 0.6297374f, 0.14471826f, 0.96824586f, 0.5974803f, 0.7660169f, 0.40384725f, 0.8541535f, 0.5068159f, 0.6823727f, 0.27260765f, 0.90401816f, 0.55318946f, 0.72406566f, 0.34372202f, 0.80898184f, 0.45747337f, 0.6403549f, 0.17748062f, 0.9327351f, 0.57555f, 0.7449678f, 0.37479568f, 0.83118564f, 0.48258433f, 0.6614378f, 0.22975244f, 0.87823313f, 0.5303115f, 0.7032256f, 0.30999523f, 0.7873134f, 0.4313043f, 0.61905813f, 0.10219581f);
-                            if _e572 {
+                            if _e570 {
                             } else {
-                                phi_1519_ = true;
+                                phi_1482_ = true;
                                 break;
                             }
-                            let _e578 = local_1[_e568];
-                            let _e580 = (_e562.member_1.member_2 * _e578);
-                            let _e581 = (_e580 * _e574[0]);
-                            let _e582 = (_e580 * _e574[1]);
+                            let _e576 = local_1[_e566];
+                            let _e578 = (_e560.member_1.member_2 * _e576);
+                            let _e579 = (_e578 * _e572[0]);
+                            let _e580 = (_e578 * _e572[1]);
                             local_2 = array<f32, 56>(0.39685115f, 0.82548165f, 0.67860436f, 0.93312776f, 0.57235783f, 0.8825871f, 0.75914717f, 0.9787169f, 0.31498024f, 0.80990297f, 0.65518534f, 0.9210079f, 0.5386087f, 0.86900663f, 0.740624f, 0.96771914f, 0.45428014f, 0.84049386f, 0.7005098f, 0.9449408f, 0.6025356f, 0.89576197f, 0.7768081f, 0.9894729f, 0.2499999f, 0.8018836f, 0.6428204f, 0.91482645f, 0.52002096f, 0.8620543f, 0.7310045f, 0.9621253f, 0.42749405f, 0.8330555f, 0.68973106f, 0.9390714f, 0.58783364f, 0.88922334f, 0.76807916f, 0.9841243f, 0.3605624f, 0.8177666f, 0.6671004f, 0.92710745f, 0.555995f, 0.8758495f, 0.75f, 0.9732491f, 0.47823274f, 0.8478029f, 0.71096677f, 0.95073813f, 0.616553f, 0.90220654f, 0.78534514f, 0.9947643f);
-                            if _e572 {
+                            if _e570 {
                             } else {
-                                phi_1519_ = true;
+                                phi_1482_ = true;
                                 break;
                             }
-                            let _e584 = local_2[_e568];
-                            let _e585 = (_e562.member_1.member_2 * _e584);
-                            let _e594 = (-(((_e581 * _e562.member_1.member_9.x) + (_e582 * _e562.member_1.member_9.y))) * _e562.member_1.member_10);
-                            let _e595 = -(_e585);
-                            let _e599 = select(_e595, select(_e585, _e594, (_e594 < _e585)), (_e594 > _e595));
-                            let _e600 = (_e585 - _e599);
-                            let _e627 = (-0.5f / ((_e562.member_1.member_4.z + (_e562.member_1.member_7.z * _e581)) + (_e562.member_1.member_8.z * _e582)));
-                            let _e630 = (((((_e562.member_1.member_4.x + (_e562.member_1.member_7.x * _e581)) + (_e562.member_1.member_8.x * _e582)) * _e627) / _e368) + 0.5f);
-                            let _e633 = (0.5f - ((((_e562.member_1.member_4.y + (_e562.member_1.member_7.y * _e581)) + (_e562.member_1.member_8.y * _e582)) * _e627) / _e373));
-                            let _e638 = (select(0f, select(1f, _e630, (_e630 < 1f)), (_e630 > 0f)) * _e314);
-                            if (_e638 > 0f) {
-                                let _e644 = select(select(u32(_e638), 0u, (_e638 < 0f)), 4294967295u, (_e638 > 4294967000f));
-                                let _e645 = (_e319 - 1u);
-                                phi_1082_ = select(_e644, _e645, (_e645 < _e644));
-                            } else {
-                                phi_1082_ = 0u;
-                            }
-                            let _e649 = phi_1082_;
-                            let _e654 = (select(0f, select(1f, _e633, (_e633 < 1f)), (_e633 > 0f)) * _e324);
-                            if (_e654 > 0f) {
-                                let _e660 = select(select(u32(_e654), 0u, (_e654 < 0f)), 4294967295u, (_e654 > 4294967000f));
-                                let _e661 = (_e329 - 1u);
-                                phi_1113_ = select(_e660, _e661, (_e661 < _e660));
-                            } else {
-                                phi_1113_ = 0u;
-                            }
-                            let _e665 = phi_1113_;
-                            let _e676 = depth.member[((_e665 * _e319) + _e649)];
-                            let _e688 = select(_e392, _e676, select(false, (_e676 < _e392), (_e676 > 0f)));
-                            let _e709 = ((((((((((f32(_e649) + 0.5f) * (1f / _e314)) * 2f) - 1f) * _e688) * _e368) - _e562.member_1.member_4.x) * _e562.member_1.member_6.x) + ((((((((f32(_e665) + 0.5f) * (1f / _e324)) * -2f) + 1f) * _e688) * _e373) - _e562.member_1.member_4.y) * _e562.member_1.member_6.y)) + ((-(_e688) - _e562.member_1.member_4.z) * _e562.member_1.member_6.z));
-                            let _e714 = params.member.member_3;
-                            if (_e599 != _e599) {
-                                phi_1490_ = true;
-                            } else {
-                                phi_1490_ = (_e709 >= _e599);
-                            }
-                            let _e719 = phi_1490_;
-                            let _e721 = (_e585 - select(_e599, _e709, _e719));
-                            if (_e721 != _e721) {
-                                phi_1505_ = true;
-                            } else {
-                                phi_1505_ = (0f >= _e721);
-                            }
-                            let _e725 = phi_1505_;
-                            let _e730 = ((_e709 - (_e562.member_1.member_2 * (1f + _e714))) * (1f / _e585));
-                            phi_875_ = (_e568 + 1u);
-                            phi_878_ = (_e570 + select(0f, select(((select(_e721, 0f, _e725) + (select(0f, select(1f, _e730, (_e730 < 1f)), (_e730 > 0f)) * _e600)) * (0.5f / _e585)), (_e600 / (_e585 * 2f)), select(false, (_e665 == _e562.member_1.member.y), (_e649 == _e562.member_1.member.x))), (_e600 > (_e585 * 0.2f))));
+                            let _e582 = local_2[_e566];
+                            let _e583 = (_e560.member_1.member_2 * _e582);
+                            let _e592 = (-(((_e579 * _e560.member_1.member_9.x) + (_e580 * _e560.member_1.member_9.y))) * _e560.member_1.member_10);
+                            let _e593 = -(_e583);
+                            let _e597 = select(_e593, select(_e583, _e592, (_e592 < _e583)), (_e592 > _e593));
+                            let _e598 = (_e583 - _e597);
+                            let _e625 = (-0.5f / ((_e560.member_1.member_4.z + (_e560.member_1.member_7.z * _e579)) + (_e560.member_1.member_8.z * _e580)));
+                            let _e628 = (((((_e560.member_1.member_4.x + (_e560.member_1.member_7.x * _e579)) + (_e560.member_1.member_8.x * _e580)) * _e625) / _e368) + 0.5f);
+                            let _e631 = (0.5f - ((((_e560.member_1.member_4.y + (_e560.member_1.member_7.y * _e579)) + (_e560.member_1.member_8.y * _e580)) * _e625) / _e373));
+                            let _e636 = (select(0f, select(1f, _e628, (_e628 < 1f)), (_e628 > 0f)) * _e314);
+                            let _e638 = f32((_e319 - 1u));
+                            let _e640 = select(0f, _e636, (_e636 > 0f));
+                            let _e643 = u32(select(_e638, _e640, (_e640 < _e638)));
+                            let _e648 = (select(0f, select(1f, _e631, (_e631 < 1f)), (_e631 > 0f)) * _e324);
+                            let _e650 = f32((_e329 - 1u));
+                            let _e652 = select(0f, _e648, (_e648 > 0f));
+                            let _e655 = u32(select(_e650, _e652, (_e652 < _e650)));
+                            let _e666 = depth.member[((_e655 * _e319) + _e643)];
+                            let _e678 = select(_e392, _e666, select(false, (_e666 < _e392), (_e666 > 0f)));
+                            let _e699 = ((((((((((f32(_e643) + 0.5f) * (1f / _e314)) * 2f) - 1f) * _e678) * _e368) - _e560.member_1.member_4.x) * _e560.member_1.member_6.x) + ((((((((f32(_e655) + 0.5f) * (1f / _e324)) * -2f) + 1f) * _e678) * _e373) - _e560.member_1.member_4.y) * _e560.member_1.member_6.y)) + ((-(_e678) - _e560.member_1.member_4.z) * _e560.member_1.member_6.z));
+                            let _e704 = params.member.member_3;
+                            let _e710 = (_e583 - select(_e699, _e597, ((_e597 > _e699) || (_e699 != _e699))));
+                            let _e717 = ((_e699 - (_e560.member_1.member_2 * (1f + _e704))) * (1f / _e583));
+                            phi_881_ = (_e566 + 1u);
+                            phi_884_ = (_e568 + select(0f, select(((select(0f, _e710, ((_e710 > 0f) || false)) + (select(0f, select(1f, _e717, (_e717 < 1f)), (_e717 > 0f)) * _e598)) * (0.5f / _e583)), (_e598 / (_e583 * 2f)), select(false, (_e655 == _e560.member_1.member.y), (_e643 == _e560.member_1.member.x))), (_e598 > (_e583 * 0.2f))));
                         } else {
-                            phi_875_ = u32();
-                            phi_878_ = f32();
+                            phi_881_ = u32();
+                            phi_884_ = f32();
                         }
-                        let _e744 = phi_875_;
-                        let _e746 = phi_878_;
+                        let _e731 = phi_881_;
+                        let _e733 = phi_884_;
                         continue;
                         continuing {
-                            phi_874_ = _e744;
-                            phi_877_ = _e746;
-                            phi_1519_ = false;
-                            break if !(_e571);
+                            phi_880_ = _e731;
+                            phi_883_ = _e733;
+                            phi_1482_ = false;
+                            break if !(_e569);
                         }
                     }
-                    let _e749 = phi_1519_;
-                    if _e749 {
+                    let _e736 = phi_1482_;
+                    if _e736 {
                         break;
                     }
-                    let _e751 = local_4;
-                    let _e752 = (0.25f * _e751);
-                    let _e759 = params.member.member_2;
-                    phi_1276_ = pow(select(0f, select(1f, _e752, (_e752 < 1f)), (_e752 > 0f)), _e759);
+                    let _e738 = local_4;
+                    let _e739 = (0.25f * _e738);
+                    let _e746 = params.member.member_2;
+                    phi_1284_ = pow(select(0f, select(1f, _e739, (_e739 < 1f)), (_e739 > 0f)), _e746);
                 } else {
-                    phi_1276_ = 1f;
+                    phi_1284_ = 1f;
                 }
-                let _e762 = phi_1276_;
-                ao.member[_e349] = _e762;
+                let _e749 = phi_1284_;
+                ao.member[_e349] = _e749;
             }
             break;
         }

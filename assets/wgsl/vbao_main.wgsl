@@ -64,1108 +64,752 @@ var<uniform> params: type_23;
 
 fn function_() {
     var local: array<type_25, 4>;
-    var phi_2522_: bool;
-    var phi_2537_: bool;
-    var phi_2552_: bool;
-    var phi_2567_: bool;
-    var phi_2598_: f32;
-    var phi_2602_: f32;
-    var phi_2603_: bool;
-    var phi_2625_: u32;
-    var phi_2652_: f32;
-    var phi_2656_: f32;
-    var phi_2657_: bool;
-    var phi_2679_: u32;
-    var phi_2706_: f32;
-    var phi_2710_: f32;
-    var phi_2711_: bool;
-    var phi_2733_: u32;
-    var phi_2760_: f32;
-    var phi_2764_: f32;
-    var phi_2765_: bool;
-    var phi_2787_: u32;
-    var phi_2866_: bool;
-    var phi_2881_: bool;
-    var phi_2842_: vec2<f32>;
-    var phi_2898_: u32;
-    var phi_2899_: u32;
-    var phi_2900_: u32;
-    var phi_2901_: u32;
-    var phi_2924_: u32;
-    var phi_2925_: u32;
-    var phi_2928_: u32;
-    var phi_2929_: u32;
-    var phi_2933_: u32;
-    var phi_2934_: u32;
-    var phi_2935_: u32;
-    var phi_2936_: u32;
+    var phi_2976_: bool;
+    var phi_2991_: bool;
+    var phi_2952_: vec2<f32>;
+    var phi_3008_: u32;
+    var phi_3009_: u32;
+    var phi_3010_: u32;
+    var phi_3011_: u32;
+    var phi_3034_: u32;
+    var phi_3035_: u32;
+    var phi_3038_: u32;
+    var phi_3039_: u32;
+    var phi_3043_: u32;
+    var phi_3044_: u32;
+    var phi_3045_: u32;
+    var phi_3046_: u32;
     var local_1: u32;
-    var phi_3285_: bool;
-    var phi_872_: u32;
-    var phi_875_: f32;
-    var phi_877_: f32;
-    var phi_1072_: u32;
-    var phi_1075_: u32;
-    var phi_1129_: f32;
-    var phi_1174_: f32;
-    var phi_1176_: f32;
-    var phi_1177_: bool;
-    var phi_1200_: f32;
-    var phi_1202_: f32;
-    var phi_1203_: bool;
-    var phi_1236_: u32;
-    var phi_1252_: u32;
-    var phi_1255_: u32;
-    var phi_1253_: u32;
-    var phi_1256_: u32;
-    var phi_1300_: u32;
-    var phi_1319_: u32;
+    var phi_3275_: bool;
+    var phi_867_: u32;
+    var phi_870_: f32;
+    var phi_872_: f32;
+    var phi_1067_: u32;
+    var phi_1070_: u32;
+    var phi_1125_: f32;
+    var phi_1671_: bool;
+    var phi_2022_: f32;
+    var phi_2064_: u32;
+    var phi_2067_: u32;
+    var phi_2068_: u32;
+    var phi_2069_: bool;
+    var phi_2083_: u32;
+    var phi_2107_: bool;
+    var phi_2458_: f32;
+    var phi_2500_: u32;
+    var phi_2503_: u32;
+    var phi_2504_: u32;
+    var phi_2505_: bool;
+    var phi_2519_: u32;
+    var phi_1068_: u32;
+    var phi_1071_: u32;
     var local_2: u32;
-    var phi_1358_: u32;
-    var phi_1374_: u32;
-    var phi_1377_: u32;
-    var phi_1375_: u32;
-    var phi_1378_: u32;
-    var phi_1422_: u32;
-    var phi_1441_: u32;
+    var phi_2603_: u32;
+    var phi_2606_: f32;
     var local_3: u32;
-    var phi_1485_: bool;
-    var phi_2970_: bool;
-    var phi_2985_: bool;
-    var phi_3000_: bool;
-    var phi_3015_: bool;
-    var phi_3030_: bool;
-    var phi_1806_: f32;
-    var phi_1824_: u32;
-    var phi_1842_: u32;
-    var phi_1858_: u32;
-    var phi_1861_: u32;
-    var phi_1862_: u32;
-    var phi_1863_: bool;
-    var phi_1877_: u32;
-    var phi_1901_: bool;
-    var phi_3045_: bool;
-    var phi_3060_: bool;
-    var phi_3075_: bool;
-    var phi_3090_: bool;
-    var phi_3105_: bool;
-    var phi_2222_: f32;
-    var phi_2240_: u32;
-    var phi_2258_: u32;
-    var phi_2274_: u32;
-    var phi_2277_: u32;
-    var phi_2278_: u32;
-    var phi_2279_: bool;
-    var phi_2293_: u32;
-    var phi_1073_: u32;
-    var phi_1076_: u32;
-    var local_4: u32;
-    var phi_2377_: u32;
-    var phi_2380_: f32;
+    var phi_2604_: u32;
+    var phi_2607_: f32;
+    var phi_3124_: bool;
+    var local_4: f32;
+    var phi_3352_: bool;
+    var phi_2656_: f32;
+    var phi_2657_: f32;
+    var phi_2550_: u32;
+    var phi_2553_: f32;
+    var phi_2555_: f32;
     var local_5: u32;
-    var phi_2378_: u32;
-    var phi_2381_: f32;
-    var phi_3164_: bool;
+    var phi_2551_: u32;
+    var phi_2554_: f32;
+    var phi_2556_: f32;
     var local_6: f32;
-    var phi_3374_: bool;
-    var phi_2430_: f32;
-    var phi_2431_: f32;
-    var phi_2324_: u32;
-    var phi_2327_: f32;
-    var phi_2329_: f32;
-    var local_7: u32;
-    var phi_2325_: u32;
-    var phi_2328_: f32;
-    var phi_2330_: f32;
+    var phi_3346_: bool;
+    var phi_2658_: f32;
+    var phi_2659_: f32;
+    var phi_3345_: bool;
+    var phi_868_: u32;
+    var phi_871_: f32;
+    var phi_873_: f32;
+    var phi_3344_: bool;
+    var local_7: f32;
     var local_8: f32;
-    var phi_3368_: bool;
-    var phi_2432_: f32;
-    var phi_2433_: f32;
-    var phi_3367_: bool;
-    var phi_873_: u32;
-    var phi_876_: f32;
-    var phi_878_: f32;
-    var phi_3366_: bool;
     var local_9: f32;
-    var local_10: f32;
-    var local_11: f32;
-    var phi_2441_: f32;
-    var phi_3138_: bool;
-    var phi_2490_: u32;
+    var phi_2667_: f32;
+    var phi_3098_: bool;
+    var phi_2716_: u32;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e92 = id_1;
-            let _e99 = params.member.member_4.member.member[0u];
-            let _e104 = select(select(u32(_e99), 0u, (_e99 < 0f)), 4294967295u, (_e99 > 4294967000f));
-            let _e110 = params.member.member_4.member.member[1u];
-            let _e115 = select(select(u32(_e110), 0u, (_e110 < 0f)), 4294967295u, (_e110 > 4294967000f));
-            if (_e92.x >= _e104) {
+            let _e94 = id_1;
+            let _e101 = params.member.member_4.member.member[0u];
+            let _e106 = select(select(u32(_e101), 0u, (_e101 < 0f)), 4294967295u, (_e101 > 4294967000f));
+            let _e112 = params.member.member_4.member.member[1u];
+            let _e117 = select(select(u32(_e112), 0u, (_e112 < 0f)), 4294967295u, (_e112 > 4294967000f));
+            if (_e94.x >= _e106) {
             } else {
-                if (_e92.y >= _e115) {
+                if (_e94.y >= _e117) {
                 } else {
-                    let _e121 = ((_e92.y * _e104) + _e92.x);
-                    let _e123 = mips.member[_e121];
-                    let _e124 = bitcast<i32>(_e92.x);
-                    let _e125 = (_e124 + -1i);
-                    let _e127 = select(0i, _e125, (0i < _e125));
-                    let _e129 = (bitcast<i32>(_e104) - 1i);
-                    let _e133 = bitcast<i32>(_e92.y);
-                    let _e135 = select(0i, _e133, (0i < _e133));
-                    let _e137 = (bitcast<i32>(_e115) - 1i);
-                    let _e141 = (bitcast<u32>(select(_e135, _e137, (_e137 < _e135))) * _e104);
-                    let _e144 = mips.member[(_e141 + bitcast<u32>(select(_e127, _e129, (_e129 < _e127))))];
-                    let _e145 = (_e124 + 1i);
-                    let _e147 = select(0i, _e145, (0i < _e145));
-                    let _e153 = mips.member[(_e141 + bitcast<u32>(select(_e147, _e129, (_e129 < _e147))))];
-                    let _e155 = select(0i, _e124, (0i < _e124));
-                    let _e158 = bitcast<u32>(select(_e155, _e129, (_e129 < _e155)));
-                    let _e159 = (_e133 + -1i);
-                    let _e161 = select(0i, _e159, (0i < _e159));
-                    let _e168 = mips.member[((bitcast<u32>(select(_e161, _e137, (_e137 < _e161))) * _e104) + _e158)];
-                    let _e169 = (_e133 + 1i);
-                    let _e171 = select(0i, _e169, (0i < _e169));
-                    let _e178 = mips.member[((bitcast<u32>(select(_e171, _e137, (_e137 < _e171))) * _e104) + _e158)];
-                    let _e179 = (_e144 - _e123);
-                    let _e180 = (_e153 - _e123);
-                    let _e181 = (_e168 - _e123);
-                    let _e182 = (_e178 - _e123);
-                    let _e184 = ((_e180 - _e179) * 0.5f);
+                    let _e123 = ((_e94.y * _e106) + _e94.x);
+                    let _e125 = mips.member[_e123];
+                    let _e126 = bitcast<i32>(_e94.x);
+                    let _e127 = (_e126 + -1i);
+                    let _e129 = select(0i, _e127, (0i < _e127));
+                    let _e131 = (bitcast<i32>(_e106) - 1i);
+                    let _e135 = bitcast<i32>(_e94.y);
+                    let _e137 = select(0i, _e135, (0i < _e135));
+                    let _e139 = (bitcast<i32>(_e117) - 1i);
+                    let _e143 = (bitcast<u32>(select(_e137, _e139, (_e139 < _e137))) * _e106);
+                    let _e146 = mips.member[(_e143 + bitcast<u32>(select(_e129, _e131, (_e131 < _e129))))];
+                    let _e147 = (_e126 + 1i);
+                    let _e149 = select(0i, _e147, (0i < _e147));
+                    let _e155 = mips.member[(_e143 + bitcast<u32>(select(_e149, _e131, (_e131 < _e149))))];
+                    let _e157 = select(0i, _e126, (0i < _e126));
+                    let _e160 = bitcast<u32>(select(_e157, _e131, (_e131 < _e157)));
+                    let _e161 = (_e135 + -1i);
+                    let _e163 = select(0i, _e161, (0i < _e161));
+                    let _e170 = mips.member[((bitcast<u32>(select(_e163, _e139, (_e139 < _e163))) * _e106) + _e160)];
+                    let _e171 = (_e135 + 1i);
+                    let _e173 = select(0i, _e171, (0i < _e171));
+                    let _e180 = mips.member[((bitcast<u32>(select(_e173, _e139, (_e139 < _e173))) * _e106) + _e160)];
+                    let _e181 = (_e146 - _e125);
+                    let _e182 = (_e155 - _e125);
+                    let _e183 = (_e170 - _e125);
+                    let _e184 = (_e180 - _e125);
                     let _e186 = ((_e182 - _e181) * 0.5f);
-                    let _e187 = (_e123 * 0.011f);
-                    let _e189 = abs(_e179);
-                    let _e190 = abs((_e179 + _e184));
-                    if (_e189 != _e189) {
-                        phi_2522_ = true;
-                    } else {
-                        phi_2522_ = (_e190 <= _e189);
-                    }
-                    let _e194 = phi_2522_;
-                    let _e197 = (1.25f - (select(_e189, _e190, _e194) / _e187));
-                    let _e201 = select(0f, select(1f, _e197, (_e197 < 1f)), (_e197 > 0f));
-                    let _e203 = abs(_e180);
-                    let _e204 = abs((_e180 - _e184));
-                    if (_e203 != _e203) {
-                        phi_2537_ = true;
-                    } else {
-                        phi_2537_ = (_e204 <= _e203);
-                    }
-                    let _e208 = phi_2537_;
-                    let _e211 = (1.25f - (select(_e203, _e204, _e208) / _e187));
+                    let _e188 = ((_e184 - _e183) * 0.5f);
+                    let _e189 = (_e125 * 0.011f);
+                    let _e191 = abs(_e181);
+                    let _e192 = abs((_e181 + _e186));
+                    let _e198 = (1.25f - (select(_e192, _e191, ((_e191 < _e192) || (_e192 != _e192))) / _e189));
+                    let _e202 = select(0f, select(1f, _e198, (_e198 < 1f)), (_e198 > 0f));
+                    let _e204 = abs(_e182);
+                    let _e205 = abs((_e182 - _e186));
+                    let _e211 = (1.25f - (select(_e205, _e204, ((_e204 < _e205) || (_e205 != _e205))) / _e189));
                     let _e215 = select(0f, select(1f, _e211, (_e211 < 1f)), (_e211 > 0f));
-                    let _e217 = abs(_e181);
-                    let _e218 = abs((_e181 + _e186));
-                    if (_e217 != _e217) {
-                        phi_2552_ = true;
+                    let _e217 = abs(_e183);
+                    let _e218 = abs((_e183 + _e188));
+                    let _e224 = (1.25f - (select(_e218, _e217, ((_e217 < _e218) || (_e218 != _e218))) / _e189));
+                    let _e228 = select(0f, select(1f, _e224, (_e224 < 1f)), (_e224 > 0f));
+                    let _e230 = abs(_e184);
+                    let _e231 = abs((_e184 - _e188));
+                    let _e237 = (1.25f - (select(_e231, _e230, ((_e230 < _e231) || (_e231 != _e231))) / _e189));
+                    let _e241 = select(0f, select(1f, _e237, (_e237 < 1f)), (_e237 > 0f));
+                    let _e246 = (select(0f, select(1f, _e202, (_e202 < 1f)), (_e202 > 0f)) * 2.9f);
+                    let _e248 = floor((_e246 + 0.5f));
+                    let _e257 = select(_e248, (_e248 - 1f), (((_e248 - _e246) == 0.5f) && ((floor((_e248 * 0.5f)) * 2f) != _e248)));
+                    let _e259 = select(0f, _e257, (_e257 > 0f));
+                    let _e268 = (select(0f, select(1f, _e215, (_e215 < 1f)), (_e215 > 0f)) * 2.9f);
+                    let _e270 = floor((_e268 + 0.5f));
+                    let _e279 = select(_e270, (_e270 - 1f), (((_e270 - _e268) == 0.5f) && ((floor((_e270 * 0.5f)) * 2f) != _e270)));
+                    let _e281 = select(0f, _e279, (_e279 > 0f));
+                    let _e291 = (select(0f, select(1f, _e228, (_e228 < 1f)), (_e228 > 0f)) * 2.9f);
+                    let _e293 = floor((_e291 + 0.5f));
+                    let _e302 = select(_e293, (_e293 - 1f), (((_e293 - _e291) == 0.5f) && ((floor((_e293 * 0.5f)) * 2f) != _e293)));
+                    let _e304 = select(0f, _e302, (_e302 > 0f));
+                    let _e314 = (select(0f, select(1f, _e241, (_e241 < 1f)), (_e241 > 0f)) * 2.9f);
+                    let _e316 = floor((_e314 + 0.5f));
+                    let _e325 = select(_e316, (_e316 - 1f), (((_e316 - _e314) == 0.5f) && ((floor((_e316 * 0.5f)) * 2f) != _e316)));
+                    let _e327 = select(0f, _e325, (_e325 > 0f));
+                    let _e334 = ((f32(_e94.x) + 0.5f) / _e101);
+                    let _e337 = ((f32(_e94.y) + 0.5f) / _e112);
+                    let _e338 = (_e125 * 0.99999f);
+                    let _e346 = params.member.member_4.member.member_1[0u];
+                    let _e348 = ((((_e334 * 2f) - 1f) * _e346) * _e338);
+                    let _e356 = params.member.member_4.member.member_1[1u];
+                    let _e358 = ((((_e337 * -2f) + 1f) * _e356) * _e338);
+                    let _e359 = -(_e348);
+                    let _e360 = -(_e358);
+                    let _e361 = (_e125 * -0.99999f);
+                    let _e368 = (1f / sqrt((((_e359 * _e359) + (_e360 * _e360)) + (_e361 * _e361))));
+                    let _e369 = (_e359 * _e368);
+                    let _e370 = (_e360 * _e368);
+                    let _e371 = (_e361 * _e368);
+                    let _e374 = normals.member[_e123];
+                    let _e382 = (f32((bitcast<i32>(((_e374 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e382 != _e382) {
+                        phi_2976_ = true;
                     } else {
-                        phi_2552_ = (_e218 <= _e217);
+                        phi_2976_ = (-1f >= _e382);
                     }
-                    let _e222 = phi_2552_;
-                    let _e225 = (1.25f - (select(_e217, _e218, _e222) / _e187));
-                    let _e229 = select(0f, select(1f, _e225, (_e225 < 1f)), (_e225 > 0f));
-                    let _e231 = abs(_e182);
-                    let _e232 = abs((_e182 - _e186));
-                    if (_e231 != _e231) {
-                        phi_2567_ = true;
+                    let _e386 = phi_2976_;
+                    let _e387 = select(_e382, -1f, _e386);
+                    let _e397 = (f32((bitcast<i32>((((_e374 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e397 != _e397) {
+                        phi_2991_ = true;
                     } else {
-                        phi_2567_ = (_e232 <= _e231);
+                        phi_2991_ = (-1f >= _e397);
                     }
-                    let _e236 = phi_2567_;
-                    let _e239 = (1.25f - (select(_e231, _e232, _e236) / _e187));
-                    let _e243 = select(0f, select(1f, _e239, (_e239 < 1f)), (_e239 > 0f));
-                    let _e248 = (select(0f, select(1f, _e201, (_e201 < 1f)), (_e201 > 0f)) * 2.9f);
-                    let _e250 = floor((_e248 + 0.5f));
-                    if ((_e250 - _e248) == 0.5f) {
-                        let _e256 = ((floor((_e250 * 0.5f)) * 2f) != _e250);
-                        if _e256 {
-                            phi_2598_ = (_e250 - 1f);
-                        } else {
-                            phi_2598_ = f32();
-                        }
-                        let _e259 = phi_2598_;
-                        phi_2602_ = _e259;
-                        phi_2603_ = select(true, false, _e256);
+                    let _e401 = phi_2991_;
+                    let _e402 = select(_e397, -1f, _e401);
+                    let _e405 = (1f - abs(_e387));
+                    let _e406 = abs(_e402);
+                    let _e407 = (_e405 - _e406);
+                    if (_e407 < 0f) {
+                        phi_2952_ = vec2<f32>(((1f - _e406) * select(1f, -1f, (_e387 < 0f))), (_e405 * select(1f, -1f, (_e402 < 0f))));
                     } else {
-                        phi_2602_ = f32();
-                        phi_2603_ = true;
+                        phi_2952_ = vec2<f32>(_e387, _e402);
                     }
-                    let _e262 = phi_2602_;
-                    let _e264 = phi_2603_;
-                    let _e265 = select(_e262, _e250, _e264);
-                    if (_e265 > 0f) {
-                        let _e271 = select(select(u32(_e265), 0u, (_e265 < 0f)), 4294967295u, (_e265 > 4294967000f));
-                        phi_2625_ = select(_e271, 3u, (3u < _e271));
-                    } else {
-                        phi_2625_ = 0u;
-                    }
-                    let _e275 = phi_2625_;
-                    let _e281 = (select(0f, select(1f, _e215, (_e215 < 1f)), (_e215 > 0f)) * 2.9f);
-                    let _e283 = floor((_e281 + 0.5f));
-                    if ((_e283 - _e281) == 0.5f) {
-                        let _e289 = ((floor((_e283 * 0.5f)) * 2f) != _e283);
-                        if _e289 {
-                            phi_2652_ = (_e283 - 1f);
-                        } else {
-                            phi_2652_ = f32();
-                        }
-                        let _e292 = phi_2652_;
-                        phi_2656_ = _e292;
-                        phi_2657_ = select(true, false, _e289);
-                    } else {
-                        phi_2656_ = f32();
-                        phi_2657_ = true;
-                    }
-                    let _e295 = phi_2656_;
-                    let _e297 = phi_2657_;
-                    let _e298 = select(_e295, _e283, _e297);
-                    if (_e298 > 0f) {
-                        let _e304 = select(select(u32(_e298), 0u, (_e298 < 0f)), 4294967295u, (_e298 > 4294967000f));
-                        phi_2679_ = select(_e304, 3u, (3u < _e304));
-                    } else {
-                        phi_2679_ = 0u;
-                    }
-                    let _e308 = phi_2679_;
-                    let _e315 = (select(0f, select(1f, _e229, (_e229 < 1f)), (_e229 > 0f)) * 2.9f);
-                    let _e317 = floor((_e315 + 0.5f));
-                    if ((_e317 - _e315) == 0.5f) {
-                        let _e323 = ((floor((_e317 * 0.5f)) * 2f) != _e317);
-                        if _e323 {
-                            phi_2706_ = (_e317 - 1f);
-                        } else {
-                            phi_2706_ = f32();
-                        }
-                        let _e326 = phi_2706_;
-                        phi_2710_ = _e326;
-                        phi_2711_ = select(true, false, _e323);
-                    } else {
-                        phi_2710_ = f32();
-                        phi_2711_ = true;
-                    }
-                    let _e329 = phi_2710_;
-                    let _e331 = phi_2711_;
-                    let _e332 = select(_e329, _e317, _e331);
-                    if (_e332 > 0f) {
-                        let _e338 = select(select(u32(_e332), 0u, (_e332 < 0f)), 4294967295u, (_e332 > 4294967000f));
-                        phi_2733_ = select(_e338, 3u, (3u < _e338));
-                    } else {
-                        phi_2733_ = 0u;
-                    }
-                    let _e342 = phi_2733_;
-                    let _e349 = (select(0f, select(1f, _e243, (_e243 < 1f)), (_e243 > 0f)) * 2.9f);
-                    let _e351 = floor((_e349 + 0.5f));
-                    if ((_e351 - _e349) == 0.5f) {
-                        let _e357 = ((floor((_e351 * 0.5f)) * 2f) != _e351);
-                        if _e357 {
-                            phi_2760_ = (_e351 - 1f);
-                        } else {
-                            phi_2760_ = f32();
-                        }
-                        let _e360 = phi_2760_;
-                        phi_2764_ = _e360;
-                        phi_2765_ = select(true, false, _e357);
-                    } else {
-                        phi_2764_ = f32();
-                        phi_2765_ = true;
-                    }
-                    let _e363 = phi_2764_;
-                    let _e365 = phi_2765_;
-                    let _e366 = select(_e363, _e351, _e365);
-                    if (_e366 > 0f) {
-                        let _e372 = select(select(u32(_e366), 0u, (_e366 < 0f)), 4294967295u, (_e366 > 4294967000f));
-                        phi_2787_ = select(_e372, 3u, (3u < _e372));
-                    } else {
-                        phi_2787_ = 0u;
-                    }
-                    let _e376 = phi_2787_;
-                    let _e380 = ((f32(_e92.x) + 0.5f) / _e99);
-                    let _e383 = ((f32(_e92.y) + 0.5f) / _e110);
-                    let _e384 = (_e123 * 0.99999f);
-                    let _e392 = params.member.member_4.member.member_1[0u];
-                    let _e394 = ((((_e380 * 2f) - 1f) * _e392) * _e384);
-                    let _e402 = params.member.member_4.member.member_1[1u];
-                    let _e404 = ((((_e383 * -2f) + 1f) * _e402) * _e384);
-                    let _e405 = -(_e394);
-                    let _e406 = -(_e404);
-                    let _e407 = (_e123 * -0.99999f);
-                    let _e414 = (1f / sqrt((((_e405 * _e405) + (_e406 * _e406)) + (_e407 * _e407))));
-                    let _e415 = (_e405 * _e414);
-                    let _e416 = (_e406 * _e414);
-                    let _e417 = (_e407 * _e414);
-                    let _e420 = normals.member[_e121];
-                    let _e428 = (f32((bitcast<i32>(((_e420 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e428 != _e428) {
-                        phi_2866_ = true;
-                    } else {
-                        phi_2866_ = (-1f >= _e428);
-                    }
-                    let _e432 = phi_2866_;
-                    let _e433 = select(_e428, -1f, _e432);
-                    let _e443 = (f32((bitcast<i32>((((_e420 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e443 != _e443) {
-                        phi_2881_ = true;
-                    } else {
-                        phi_2881_ = (-1f >= _e443);
-                    }
-                    let _e447 = phi_2881_;
-                    let _e448 = select(_e443, -1f, _e447);
-                    let _e451 = (1f - abs(_e433));
-                    let _e452 = abs(_e448);
-                    let _e453 = (_e451 - _e452);
-                    if (_e453 < 0f) {
-                        phi_2842_ = vec2<f32>(((1f - _e452) * select(1f, -1f, (_e433 < 0f))), (_e451 * select(1f, -1f, (_e448 < 0f))));
-                    } else {
-                        phi_2842_ = vec2<f32>(_e433, _e448);
-                    }
-                    let _e464 = phi_2842_;
-                    let _e473 = (1f / sqrt((((_e464.x * _e464.x) + (_e464.y * _e464.y)) + (_e453 * _e453))));
-                    let _e474 = (_e464.x * _e473);
-                    let _e475 = (_e464.y * _e473);
-                    let _e476 = (_e453 * _e473);
-                    let _e477 = -(_e476);
-                    let _e483 = ((((_e474 * _e415) + (_e475 * _e416)) + (_e477 * _e417)) < 0f);
-                    let _e486 = select(_e474, -(_e474), _e483);
-                    let _e487 = select(_e475, -(_e475), _e483);
-                    let _e488 = select(_e477, _e476, _e483);
-                    let _e492 = params.member.member_4.member_1;
-                    let _e496 = params.member.member_4.member_2;
-                    let _e501 = ((_e492 * _e496) / (((_e123 * 1.99998f) * _e392) / _e99));
-                    let _e506 = params.member.member_4.member_11;
-                    phi_2898_ = (_e92.y & 63u);
-                    phi_2899_ = (_e92.x & 63u);
-                    phi_2900_ = 32u;
-                    phi_2901_ = 0u;
+                    let _e418 = phi_2952_;
+                    let _e427 = (1f / sqrt((((_e418.x * _e418.x) + (_e418.y * _e418.y)) + (_e407 * _e407))));
+                    let _e428 = (_e418.x * _e427);
+                    let _e429 = (_e418.y * _e427);
+                    let _e430 = (_e407 * _e427);
+                    let _e431 = -(_e430);
+                    let _e437 = ((((_e428 * _e369) + (_e429 * _e370)) + (_e431 * _e371)) < 0f);
+                    let _e440 = select(_e428, -(_e428), _e437);
+                    let _e441 = select(_e429, -(_e429), _e437);
+                    let _e442 = select(_e431, _e430, _e437);
+                    let _e446 = params.member.member_4.member_1;
+                    let _e450 = params.member.member_4.member_2;
+                    let _e455 = ((_e446 * _e450) / (((_e125 * 1.99998f) * _e346) / _e101));
+                    let _e460 = params.member.member_4.member_11;
+                    phi_3008_ = (_e94.y & 63u);
+                    phi_3009_ = (_e94.x & 63u);
+                    phi_3010_ = 32u;
+                    phi_3011_ = 0u;
                     loop {
-                        let _e510 = phi_2898_;
-                        let _e512 = phi_2899_;
-                        let _e514 = phi_2900_;
-                        let _e516 = phi_2901_;
-                        local_1 = _e516;
-                        let _e517 = (_e514 > 0u);
-                        if _e517 {
-                            let _e520 = select(0u, 1u, ((_e512 & _e514) != 0u));
-                            let _e523 = select(0u, 1u, ((_e510 & _e514) != 0u));
-                            if (_e523 == 0u) {
-                                if (_e520 == 1u) {
-                                    phi_2924_ = (63u - _e510);
-                                    phi_2925_ = (63u - _e512);
+                        let _e464 = phi_3008_;
+                        let _e466 = phi_3009_;
+                        let _e468 = phi_3010_;
+                        let _e470 = phi_3011_;
+                        local_1 = _e470;
+                        let _e471 = (_e468 > 0u);
+                        if _e471 {
+                            let _e474 = select(0u, 1u, ((_e466 & _e468) != 0u));
+                            let _e477 = select(0u, 1u, ((_e464 & _e468) != 0u));
+                            if (_e477 == 0u) {
+                                if (_e474 == 1u) {
+                                    phi_3034_ = (63u - _e464);
+                                    phi_3035_ = (63u - _e466);
                                 } else {
-                                    phi_2924_ = _e510;
-                                    phi_2925_ = _e512;
+                                    phi_3034_ = _e464;
+                                    phi_3035_ = _e466;
                                 }
-                                let _e534 = phi_2924_;
-                                let _e536 = phi_2925_;
-                                phi_2928_ = _e536;
-                                phi_2929_ = _e534;
+                                let _e488 = phi_3034_;
+                                let _e490 = phi_3035_;
+                                phi_3038_ = _e490;
+                                phi_3039_ = _e488;
                             } else {
-                                phi_2928_ = _e510;
-                                phi_2929_ = _e512;
+                                phi_3038_ = _e464;
+                                phi_3039_ = _e466;
                             }
-                            let _e538 = phi_2928_;
-                            let _e540 = phi_2929_;
-                            phi_2933_ = _e538;
-                            phi_2934_ = _e540;
-                            phi_2935_ = (_e514 / 2u);
-                            phi_2936_ = (_e516 + ((_e514 * _e514) * ((3u * _e520) ^ _e523)));
+                            let _e492 = phi_3038_;
+                            let _e494 = phi_3039_;
+                            phi_3043_ = _e492;
+                            phi_3044_ = _e494;
+                            phi_3045_ = (_e468 / 2u);
+                            phi_3046_ = (_e470 + ((_e468 * _e468) * ((3u * _e474) ^ _e477)));
                         } else {
-                            phi_2933_ = u32();
-                            phi_2934_ = u32();
-                            phi_2935_ = u32();
-                            phi_2936_ = u32();
+                            phi_3043_ = u32();
+                            phi_3044_ = u32();
+                            phi_3045_ = u32();
+                            phi_3046_ = u32();
                         }
-                        let _e543 = phi_2933_;
-                        let _e545 = phi_2934_;
-                        let _e547 = phi_2935_;
-                        let _e549 = phi_2936_;
+                        let _e497 = phi_3043_;
+                        let _e499 = phi_3044_;
+                        let _e501 = phi_3045_;
+                        let _e503 = phi_3046_;
                         continue;
                         continuing {
-                            phi_2898_ = _e543;
-                            phi_2899_ = _e545;
-                            phi_2900_ = _e547;
-                            phi_2901_ = _e549;
-                            break if !(_e517);
+                            phi_3008_ = _e497;
+                            phi_3009_ = _e499;
+                            phi_3010_ = _e501;
+                            phi_3011_ = _e503;
+                            break if !(_e471);
                         }
                     }
-                    let _e554 = local_1;
-                    let _e556 = f32((_e554 + (288u * (_e506 % 64u))));
-                    let _e558 = (0.5f + (_e556 * 0.7548777f));
-                    let _e562 = (0.5f + (_e556 * 0.5698403f));
-                    let _e569 = params.member.member_4.member.member_3;
-                    let _e572 = select(false, (_e123 < _e569), (_e123 > 0f));
-                    if _e572 {
-                        let _e576 = params.member.member_4.member_8;
-                        let _e578 = select(1u, _e576, (1u < _e576));
-                        phi_3285_ = false;
-                        phi_872_ = 0u;
-                        phi_875_ = 0f;
-                        phi_877_ = 0f;
+                    let _e508 = local_1;
+                    let _e510 = f32((_e508 + (288u * (_e460 % 64u))));
+                    let _e512 = (0.5f + (_e510 * 0.7548777f));
+                    let _e516 = (0.5f + (_e510 * 0.5698403f));
+                    let _e523 = params.member.member_4.member.member_3;
+                    let _e526 = select(false, (_e125 < _e523), (_e125 > 0f));
+                    if _e526 {
+                        let _e530 = params.member.member_4.member_8;
+                        let _e532 = select(1u, _e530, (1u < _e530));
+                        phi_3275_ = false;
+                        phi_867_ = 0u;
+                        phi_870_ = 0f;
+                        phi_872_ = 0f;
                         loop {
-                            let _e580 = phi_3285_;
-                            let _e582 = phi_872_;
-                            let _e584 = phi_875_;
-                            let _e586 = phi_877_;
-                            local_9 = _e584;
-                            local_10 = _e586;
-                            local_11 = _e584;
-                            let _e587 = (_e582 < _e578);
-                            if _e587 {
-                                let _e592 = ((((_e558 - floor(_e558)) + f32(_e582)) * 3.1415927f) / f32(_e578));
-                                let _e593 = sin(_e592);
-                                let _e594 = cos(_e592);
-                                let _e600 = ((_e594 * _e415) + (_e593 * _e416));
-                                let _e604 = (_e594 - (_e415 * _e600));
-                                let _e605 = (_e593 - (_e416 * _e600));
-                                let _e606 = -((_e417 * _e600));
-                                let _e609 = ((_e605 * _e417) - (_e416 * _e606));
-                                let _e612 = ((_e606 * _e415) - (_e417 * _e604));
-                                let _e615 = ((_e604 * _e416) - (_e415 * _e605));
-                                let _e622 = (1f / sqrt((((_e609 * _e609) + (_e612 * _e612)) + (_e615 * _e615))));
-                                let _e623 = (_e609 * _e622);
-                                let _e624 = (_e612 * _e622);
-                                let _e625 = (_e615 * _e622);
-                                let _e630 = (((_e486 * _e623) + (_e487 * _e624)) + (_e488 * _e625));
-                                let _e634 = (_e486 - (_e623 * _e630));
-                                let _e635 = (_e487 - (_e624 * _e630));
-                                let _e636 = (_e488 - (_e625 * _e630));
-                                let _e642 = sqrt((((_e634 * _e634) + (_e635 * _e635)) + (_e636 * _e636)));
-                                let _e647 = (((_e604 * _e634) + (_e605 * _e635)) + (_e606 * _e636));
-                                let _e657 = ((((_e634 * _e415) + (_e635 * _e416)) + (_e636 * _e417)) / _e642);
-                                let _e661 = select(0f, select(1f, _e657, (_e657 < 1f)), (_e657 > 0f));
-                                let _e662 = abs(_e661);
-                                let _e680 = (((((((((((((((_e662 * -0.0012624911f) + 0.00667009f) * _e662) - 0.017088126f) * _e662) + 0.03089188f) * _e662) - 0.050174303f) * _e662) + 0.08897899f) * _e662) - 0.2145988f) * _e662) + 1.5707963f) * sqrt((1f - _e662)));
-                                let _e683 = (select(select(0f, -1f, (_e647 < 0f)), 1f, (_e647 > 0f)) * select((3.1415927f - _e680), _e680, (_e661 >= 0f)));
-                                let _e687 = params.member.member_4.member_9;
-                                let _e689 = select(1u, _e687, (1u < _e687));
-                                phi_1072_ = 0u;
-                                phi_1075_ = 0u;
+                            let _e534 = phi_3275_;
+                            let _e536 = phi_867_;
+                            let _e538 = phi_870_;
+                            let _e540 = phi_872_;
+                            local_7 = _e538;
+                            local_8 = _e540;
+                            local_9 = _e538;
+                            let _e541 = (_e536 < _e532);
+                            if _e541 {
+                                let _e546 = ((((_e512 - floor(_e512)) + f32(_e536)) * 3.1415927f) / f32(_e532));
+                                let _e547 = sin(_e546);
+                                let _e548 = cos(_e546);
+                                let _e554 = ((_e548 * _e369) + (_e547 * _e370));
+                                let _e558 = (_e548 - (_e369 * _e554));
+                                let _e559 = (_e547 - (_e370 * _e554));
+                                let _e560 = -((_e371 * _e554));
+                                let _e563 = ((_e559 * _e371) - (_e370 * _e560));
+                                let _e566 = ((_e560 * _e369) - (_e371 * _e558));
+                                let _e569 = ((_e558 * _e370) - (_e369 * _e559));
+                                let _e576 = (1f / sqrt((((_e563 * _e563) + (_e566 * _e566)) + (_e569 * _e569))));
+                                let _e577 = (_e563 * _e576);
+                                let _e578 = (_e566 * _e576);
+                                let _e579 = (_e569 * _e576);
+                                let _e584 = (((_e440 * _e577) + (_e441 * _e578)) + (_e442 * _e579));
+                                let _e588 = (_e440 - (_e577 * _e584));
+                                let _e589 = (_e441 - (_e578 * _e584));
+                                let _e590 = (_e442 - (_e579 * _e584));
+                                let _e596 = sqrt((((_e588 * _e588) + (_e589 * _e589)) + (_e590 * _e590)));
+                                let _e601 = (((_e558 * _e588) + (_e559 * _e589)) + (_e560 * _e590));
+                                let _e611 = ((((_e588 * _e369) + (_e589 * _e370)) + (_e590 * _e371)) / _e596);
+                                let _e615 = select(0f, select(1f, _e611, (_e611 < 1f)), (_e611 > 0f));
+                                let _e616 = abs(_e615);
+                                let _e634 = (((((((((((((((_e616 * -0.0012624911f) + 0.00667009f) * _e616) - 0.017088126f) * _e616) + 0.03089188f) * _e616) - 0.050174303f) * _e616) + 0.08897899f) * _e616) - 0.2145988f) * _e616) + 1.5707963f) * sqrt((1f - _e616)));
+                                let _e637 = (select(select(0f, -1f, (_e601 < 0f)), 1f, (_e601 > 0f)) * select((3.1415927f - _e634), _e634, (_e615 >= 0f)));
+                                let _e641 = params.member.member_4.member_9;
+                                let _e643 = select(1u, _e641, (1u < _e641));
+                                phi_1067_ = 0u;
+                                phi_1070_ = 0u;
                                 loop {
-                                    let _e691 = phi_1072_;
-                                    let _e693 = phi_1075_;
-                                    local_4 = _e693;
-                                    local_5 = _e693;
-                                    local_7 = _e693;
-                                    let _e694 = (_e691 < _e689);
-                                    if _e694 {
-                                        let _e699 = ((_e562 - floor(_e562)) + (f32((_e582 + (_e691 * _e689))) * 0.618034f));
-                                        let _e705 = (((_e699 - floor(_e699)) + f32(_e691)) / f32(_e689));
-                                        let _e709 = params.member.member_4.member_4;
-                                        if (_e709 == 2f) {
-                                            phi_1129_ = (_e705 * _e705);
+                                    let _e645 = phi_1067_;
+                                    let _e647 = phi_1070_;
+                                    local_2 = _e647;
+                                    local_3 = _e647;
+                                    local_5 = _e647;
+                                    let _e648 = (_e645 < _e643);
+                                    if _e648 {
+                                        let _e653 = ((_e516 - floor(_e516)) + (f32((_e536 + (_e645 * _e643))) * 0.618034f));
+                                        let _e660 = (((_e653 - floor(_e653)) + f32(_e645)) * (1f / f32(_e643)));
+                                        let _e664 = params.member.member_4.member_4;
+                                        if (_e664 == 2f) {
+                                            phi_1125_ = (_e660 * _e660);
                                         } else {
-                                            phi_1129_ = pow(_e705, _e709);
+                                            phi_1125_ = pow(_e660, _e664);
                                         }
-                                        let _e714 = phi_1129_;
-                                        let _e715 = (_e714 + (1.3f / _e501));
-                                        let _e716 = ((_e594 * _e501) * _e715);
-                                        let _e717 = ((-(_e593) * _e501) * _e715);
-                                        let _e726 = params.member.member_4.member_7;
-                                        let _e727 = (log2(sqrt(((_e716 * _e716) + (_e717 * _e717)))) - _e726);
-                                        let _e734 = (-1f - floor((-0.5f - select(0f, select(5f, _e727, (_e727 < 5f)), (_e727 > 0f)))));
-                                        let _e736 = floor((_e716 + 0.5f));
-                                        if ((_e736 - _e716) == 0.5f) {
-                                            let _e742 = ((floor((_e736 * 0.5f)) * 2f) != _e736);
-                                            if _e742 {
-                                                phi_1174_ = (_e736 - 1f);
-                                            } else {
-                                                phi_1174_ = f32();
-                                            }
-                                            let _e745 = phi_1174_;
-                                            phi_1176_ = _e745;
-                                            phi_1177_ = select(true, false, _e742);
+                                        let _e669 = phi_1125_;
+                                        let _e670 = (_e669 + (1.3f / _e455));
+                                        let _e671 = ((_e548 * _e455) * _e670);
+                                        let _e672 = ((-(_e547) * _e455) * _e670);
+                                        let _e681 = params.member.member_4.member_7;
+                                        let _e682 = (log2(sqrt(((_e671 * _e671) + (_e672 * _e672)))) - _e681);
+                                        let _e689 = (-1f - floor((-0.5f - select(0f, select(5f, _e682, (_e682 < 5f)), (_e682 > 0f)))));
+                                        let _e691 = floor((_e671 + 0.5f));
+                                        let _e702 = (select(_e691, (_e691 - 1f), (((_e691 - _e671) == 0.5f) && ((floor((_e691 * 0.5f)) * 2f) != _e691))) * (1f / _e101));
+                                        let _e704 = floor((_e672 + 0.5f));
+                                        let _e715 = (select(_e704, (_e704 - 1f), (((_e704 - _e672) == 0.5f) && ((floor((_e704 * 0.5f)) * 2f) != _e704))) * (1f / _e112));
+                                        let _e716 = (_e334 + _e702);
+                                        let _e717 = (_e337 + _e715);
+                                        let _e718 = (_e334 - _e702);
+                                        let _e719 = (_e337 - _e715);
+                                        let _e721 = select(1u, _e106, (1u < _e106));
+                                        let _e723 = select(1u, _e117, (1u < _e117));
+                                        let _e726 = (_e721 * _e723);
+                                        let _e728 = (_e106 >> bitcast<u32>(1u));
+                                        let _e730 = select(1u, _e728, (1u < _e728));
+                                        let _e732 = (_e117 >> bitcast<u32>(1u));
+                                        let _e734 = select(1u, _e732, (1u < _e732));
+                                        let _e735 = (_e689 >= 1f);
+                                        let _e744 = (_e726 + (_e730 * _e734));
+                                        let _e746 = (_e106 >> bitcast<u32>(2u));
+                                        let _e748 = select(1u, _e746, (1u < _e746));
+                                        let _e750 = (_e117 >> bitcast<u32>(2u));
+                                        let _e752 = select(1u, _e750, (1u < _e750));
+                                        let _e753 = (_e689 >= 2f);
+                                        let _e762 = (_e744 + (_e748 * _e752));
+                                        let _e764 = (_e106 >> bitcast<u32>(3u));
+                                        let _e766 = select(1u, _e764, (1u < _e764));
+                                        let _e768 = (_e117 >> bitcast<u32>(3u));
+                                        let _e770 = select(1u, _e768, (1u < _e768));
+                                        let _e771 = (_e689 >= 3f);
+                                        let _e782 = (_e106 >> bitcast<u32>(4u));
+                                        let _e784 = select(1u, _e782, (1u < _e782));
+                                        let _e786 = (_e117 >> bitcast<u32>(4u));
+                                        let _e788 = select(1u, _e786, (1u < _e786));
+                                        let _e789 = (_e689 >= 4f);
+                                        let _e790 = select(select(select(select(_e721, _e730, _e735), _e748, _e753), _e766, _e771), _e784, _e789);
+                                        let _e792 = select(select(select(select(0u, _e726, _e735), _e744, _e753), _e762, _e771), (_e762 + (_e766 * _e770)), _e789);
+                                        let _e794 = select(select(select(select(f32(_e721), f32(_e730), _e735), f32(_e748), _e753), f32(_e766), _e771), f32(_e784), _e789);
+                                        let _e796 = select(select(select(select(f32(_e723), f32(_e734), _e735), f32(_e752), _e753), f32(_e770), _e771), f32(_e788), _e789);
+                                        let _e797 = (_e716 * _e794);
+                                        let _e799 = f32((_e790 - 1u));
+                                        let _e801 = select(0f, _e797, (_e797 > 0f));
+                                        let _e805 = (_e717 * _e796);
+                                        let _e807 = f32((select(select(select(select(_e723, _e734, _e735), _e752, _e753), _e770, _e771), _e788, _e789) - 1u));
+                                        let _e809 = select(0f, _e805, (_e805 > 0f));
+                                        let _e818 = mips.member[((_e792 + (u32(select(_e807, _e809, (_e809 < _e807))) * _e790)) + u32(select(_e799, _e801, (_e801 < _e799))))];
+                                        let _e827 = (_e718 * _e794);
+                                        let _e829 = select(0f, _e827, (_e827 > 0f));
+                                        let _e833 = (_e719 * _e796);
+                                        let _e835 = select(0f, _e833, (_e833 > 0f));
+                                        let _e844 = mips.member[((_e792 + (u32(select(_e807, _e835, (_e835 < _e807))) * _e790)) + u32(select(_e799, _e829, (_e829 < _e799))))];
+                                        let _e853 = (((((_e716 * 2f) - 1f) * _e346) * _e818) - _e348);
+                                        let _e854 = (((((_e717 * -2f) + 1f) * _e356) * _e818) - _e358);
+                                        let _e855 = (_e818 - _e338);
+                                        let _e858 = params.member.member_1;
+                                        let _e859 = (_e858 > 0f);
+                                        if _e859 {
+                                            phi_1671_ = (sqrt((((_e853 * _e853) + (_e854 * _e854)) + (_e855 * _e855))) > _e858);
                                         } else {
-                                            phi_1176_ = f32();
-                                            phi_1177_ = true;
+                                            phi_1671_ = false;
                                         }
-                                        let _e748 = phi_1176_;
-                                        let _e750 = phi_1177_;
-                                        let _e752 = (select(_e748, _e736, _e750) / _e99);
-                                        let _e754 = floor((_e717 + 0.5f));
-                                        if ((_e754 - _e717) == 0.5f) {
-                                            let _e760 = ((floor((_e754 * 0.5f)) * 2f) != _e754);
-                                            if _e760 {
-                                                phi_1200_ = (_e754 - 1f);
-                                            } else {
-                                                phi_1200_ = f32();
-                                            }
-                                            let _e763 = phi_1200_;
-                                            phi_1202_ = _e763;
-                                            phi_1203_ = select(true, false, _e760);
-                                        } else {
-                                            phi_1202_ = f32();
-                                            phi_1203_ = true;
-                                        }
-                                        let _e766 = phi_1202_;
-                                        let _e768 = phi_1203_;
-                                        let _e770 = (select(_e766, _e754, _e768) / _e110);
-                                        let _e771 = (_e380 + _e752);
-                                        let _e772 = (_e383 + _e770);
-                                        let _e773 = (_e380 - _e752);
-                                        let _e774 = (_e383 - _e770);
-                                        let _e775 = (_e734 > 0f);
-                                        if _e775 {
-                                            let _e780 = select(select(u32(_e734), 0u, (_e734 < 0f)), 4294967295u, (_e734 > 4294967000f));
-                                            phi_1236_ = select(_e780, 4u, (4u < _e780));
-                                        } else {
-                                            phi_1236_ = 0u;
-                                        }
-                                        let _e784 = phi_1236_;
-                                        let _e785 = (_e784 & 31u);
-                                        let _e787 = (_e104 >> bitcast<u32>(_e785));
-                                        let _e789 = select(1u, _e787, (1u < _e787));
-                                        let _e791 = (_e115 >> bitcast<u32>(_e785));
-                                        let _e793 = select(1u, _e791, (1u < _e791));
-                                        phi_1252_ = 0u;
-                                        phi_1255_ = 0u;
-                                        loop {
-                                            let _e795 = phi_1252_;
-                                            let _e797 = phi_1255_;
-                                            local_2 = _e797;
-                                            let _e798 = (_e795 < _e784);
-                                            if _e798 {
-                                                let _e799 = (_e795 & 31u);
-                                                let _e801 = (_e104 >> bitcast<u32>(_e799));
-                                                let _e805 = (_e115 >> bitcast<u32>(_e799));
-                                                phi_1253_ = (_e795 + 1u);
-                                                phi_1256_ = (_e797 + (select(1u, _e801, (1u < _e801)) * select(1u, _e805, (1u < _e805))));
-                                            } else {
-                                                phi_1253_ = u32();
-                                                phi_1256_ = u32();
-                                            }
-                                            let _e812 = phi_1253_;
-                                            let _e814 = phi_1256_;
-                                            continue;
-                                            continuing {
-                                                phi_1252_ = _e812;
-                                                phi_1255_ = _e814;
-                                                break if !(_e798);
-                                            }
-                                        }
-                                        let _e818 = (_e771 * f32(_e789));
-                                        if (_e818 > 0f) {
-                                            let _e824 = select(select(u32(_e818), 0u, (_e818 < 0f)), 4294967295u, (_e818 > 4294967000f));
-                                            let _e825 = (_e789 - 1u);
-                                            phi_1300_ = select(_e824, _e825, (_e825 < _e824));
-                                        } else {
-                                            phi_1300_ = 0u;
-                                        }
-                                        let _e829 = phi_1300_;
-                                        let _e830 = (_e772 * f32(_e793));
-                                        if (_e830 > 0f) {
-                                            let _e836 = select(select(u32(_e830), 0u, (_e830 < 0f)), 4294967295u, (_e830 > 4294967000f));
-                                            let _e837 = (_e793 - 1u);
-                                            phi_1319_ = select(_e836, _e837, (_e837 < _e836));
-                                        } else {
-                                            phi_1319_ = 0u;
-                                        }
-                                        let _e841 = phi_1319_;
-                                        let _e844 = local_2;
-                                        let _e849 = mips.member[((_e844 + (_e841 * _e789)) + _e829)];
-                                        if _e775 {
-                                            let _e862 = select(select(u32(_e734), 0u, (_e734 < 0f)), 4294967295u, (_e734 > 4294967000f));
-                                            phi_1358_ = select(_e862, 4u, (4u < _e862));
-                                        } else {
-                                            phi_1358_ = 0u;
-                                        }
-                                        let _e866 = phi_1358_;
-                                        let _e867 = (_e866 & 31u);
-                                        let _e869 = (_e104 >> bitcast<u32>(_e867));
-                                        let _e871 = select(1u, _e869, (1u < _e869));
-                                        let _e873 = (_e115 >> bitcast<u32>(_e867));
-                                        let _e875 = select(1u, _e873, (1u < _e873));
-                                        phi_1374_ = 0u;
-                                        phi_1377_ = 0u;
-                                        loop {
-                                            let _e877 = phi_1374_;
-                                            let _e879 = phi_1377_;
-                                            local_3 = _e879;
-                                            let _e880 = (_e877 < _e866);
-                                            if _e880 {
-                                                let _e881 = (_e877 & 31u);
-                                                let _e883 = (_e104 >> bitcast<u32>(_e881));
-                                                let _e887 = (_e115 >> bitcast<u32>(_e881));
-                                                phi_1375_ = (_e877 + 1u);
-                                                phi_1378_ = (_e879 + (select(1u, _e883, (1u < _e883)) * select(1u, _e887, (1u < _e887))));
-                                            } else {
-                                                phi_1375_ = u32();
-                                                phi_1378_ = u32();
-                                            }
-                                            let _e894 = phi_1375_;
-                                            let _e896 = phi_1378_;
-                                            continue;
-                                            continuing {
-                                                phi_1374_ = _e894;
-                                                phi_1377_ = _e896;
-                                                break if !(_e880);
-                                            }
-                                        }
-                                        let _e900 = (_e773 * f32(_e871));
-                                        if (_e900 > 0f) {
-                                            let _e906 = select(select(u32(_e900), 0u, (_e900 < 0f)), 4294967295u, (_e900 > 4294967000f));
-                                            let _e907 = (_e871 - 1u);
-                                            phi_1422_ = select(_e906, _e907, (_e907 < _e906));
-                                        } else {
-                                            phi_1422_ = 0u;
-                                        }
-                                        let _e911 = phi_1422_;
-                                        let _e912 = (_e774 * f32(_e875));
-                                        if (_e912 > 0f) {
-                                            let _e918 = select(select(u32(_e912), 0u, (_e912 < 0f)), 4294967295u, (_e912 > 4294967000f));
-                                            let _e919 = (_e875 - 1u);
-                                            phi_1441_ = select(_e918, _e919, (_e919 < _e918));
-                                        } else {
-                                            phi_1441_ = 0u;
-                                        }
-                                        let _e923 = phi_1441_;
-                                        let _e926 = local_3;
-                                        let _e931 = mips.member[((_e926 + (_e923 * _e871)) + _e911)];
-                                        let _e940 = (((((_e771 * 2f) - 1f) * _e392) * _e849) - _e394);
-                                        let _e941 = (((((_e772 * -2f) + 1f) * _e402) * _e849) - _e404);
-                                        let _e942 = (_e849 - _e384);
-                                        let _e945 = params.member.member_1;
-                                        let _e946 = (_e945 > 0f);
-                                        if _e946 {
-                                            phi_1485_ = (sqrt((((_e940 * _e940) + (_e941 * _e941)) + (_e942 * _e942))) > _e945);
-                                        } else {
-                                            phi_1485_ = false;
-                                        }
-                                        let _e955 = phi_1485_;
-                                        if !(_e955) {
-                                            let _e959 = params.member.member;
-                                            let _e962 = params.member.member_3;
-                                            let _e967 = (((_e940 * _e415) + (_e941 * _e416)) + (_e942 * _e417));
-                                            let _e971 = (_e940 - (_e415 * _e967));
-                                            let _e972 = (_e941 - (_e416 * _e967));
-                                            let _e973 = (_e942 - (_e417 * _e967));
-                                            let _e982 = ((_e972 * _e417) - (_e416 * _e973));
-                                            let _e985 = ((_e973 * _e415) - (_e417 * _e971));
-                                            let _e988 = ((_e971 * _e416) - (_e415 * _e972));
-                                            let _e995 = (1f / sqrt((((_e982 * _e982) + (_e985 * _e985)) + (_e988 * _e988))));
-                                            let _e996 = (_e982 * _e995);
-                                            let _e997 = (_e985 * _e995);
-                                            let _e998 = (_e988 * _e995);
-                                            let _e1003 = (((_e486 * _e996) + (_e487 * _e997)) + (_e488 * _e998));
-                                            let _e1007 = (_e486 - (_e996 * _e1003));
-                                            let _e1008 = (_e487 - (_e997 * _e1003));
-                                            let _e1009 = (_e488 - (_e998 * _e1003));
-                                            let _e1015 = sqrt((((_e1007 * _e1007) + (_e1008 * _e1008)) + (_e1009 * _e1009)));
-                                            let _e1021 = ((((_e1007 * _e415) + (_e1008 * _e416)) + (_e1009 * _e417)) / _e1015);
+                                        let _e868 = phi_1671_;
+                                        if !(_e868) {
+                                            let _e872 = params.member.member;
+                                            let _e875 = params.member.member_3;
+                                            let _e880 = (((_e853 * _e369) + (_e854 * _e370)) + (_e855 * _e371));
+                                            let _e884 = (_e853 - (_e369 * _e880));
+                                            let _e885 = (_e854 - (_e370 * _e880));
+                                            let _e886 = (_e855 - (_e371 * _e880));
+                                            let _e895 = ((_e885 * _e371) - (_e370 * _e886));
+                                            let _e898 = ((_e886 * _e369) - (_e371 * _e884));
+                                            let _e901 = ((_e884 * _e370) - (_e369 * _e885));
+                                            let _e908 = (1f / sqrt((((_e895 * _e895) + (_e898 * _e898)) + (_e901 * _e901))));
+                                            let _e909 = (_e895 * _e908);
+                                            let _e910 = (_e898 * _e908);
+                                            let _e911 = (_e901 * _e908);
+                                            let _e916 = (((_e440 * _e909) + (_e441 * _e910)) + (_e442 * _e911));
+                                            let _e920 = (_e440 - (_e909 * _e916));
+                                            let _e921 = (_e441 - (_e910 * _e916));
+                                            let _e922 = (_e442 - (_e911 * _e916));
+                                            let _e928 = sqrt((((_e920 * _e920) + (_e921 * _e921)) + (_e922 * _e922)));
+                                            let _e934 = ((((_e920 * _e369) + (_e921 * _e370)) + (_e922 * _e371)) / _e928);
+                                            let _e938 = select(0f, select(1f, _e934, (_e934 < 1f)), (_e934 > 0f));
+                                            let _e939 = abs(_e938);
+                                            let _e956 = (((((((((((((((_e939 * -0.0012624911f) + 0.00667009f) * _e939) - 0.017088126f) * _e939) + 0.03089188f) * _e939) - 0.050174303f) * _e939) + 0.08897899f) * _e939) - 0.2145988f) * _e939) + 1.5707963f) * sqrt((1f - _e939)));
+                                            let _e959 = select((3.1415927f - _e956), _e956, (_e938 >= 0f));
+                                            let _e967 = select(_e959, -(_e959), ((((_e884 * _e920) + (_e885 * _e921)) + (_e886 * _e922)) < 0f));
+                                            let _e968 = (0.02f / _e928);
+                                            let _e971 = select(0.19634955f, _e968, ((_e968 < 0.19634955f) || false));
+                                            let _e975 = (_e853 - (_e369 * _e872));
+                                            let _e976 = (_e854 - (_e370 * _e872));
+                                            let _e977 = (_e855 - (_e371 * _e872));
+                                            let _e984 = (1f / sqrt((((_e853 * _e853) + (_e854 * _e854)) + (_e855 * _e855))));
+                                            let _e992 = ((((_e853 * _e984) * _e369) + ((_e854 * _e984) * _e370)) + ((_e855 * _e984) * _e371));
+                                            let _e996 = select(-1f, select(1f, _e992, (_e992 < 1f)), (_e992 > -1f));
+                                            let _e997 = abs(_e996);
+                                            let _e1014 = (((((((((((((((_e997 * -0.0012624911f) + 0.00667009f) * _e997) - 0.017088126f) * _e997) + 0.03089188f) * _e997) - 0.050174303f) * _e997) + 0.08897899f) * _e997) - 0.2145988f) * _e997) + 1.5707963f) * sqrt((1f - _e997)));
+                                            let _e1021 = ((((select((3.1415927f - _e1014), _e1014, (_e996 >= 0f)) + _e971) - _e967) + 1.5707964f) * 0.31830987f);
                                             let _e1025 = select(0f, select(1f, _e1021, (_e1021 < 1f)), (_e1021 > 0f));
-                                            let _e1026 = abs(_e1025);
-                                            let _e1043 = (((((((((((((((_e1026 * -0.0012624911f) + 0.00667009f) * _e1026) - 0.017088126f) * _e1026) + 0.03089188f) * _e1026) - 0.050174303f) * _e1026) + 0.08897899f) * _e1026) - 0.2145988f) * _e1026) + 1.5707963f) * sqrt((1f - _e1026)));
-                                            let _e1046 = select((3.1415927f - _e1043), _e1043, (_e1025 >= 0f));
-                                            let _e1054 = select(_e1046, -(_e1046), ((((_e971 * _e1007) + (_e972 * _e1008)) + (_e973 * _e1009)) < 0f));
-                                            let _e1055 = (0.02f / _e1015);
-                                            if (_e1055 != _e1055) {
-                                                phi_2970_ = true;
+                                            let _e1032 = (1f / sqrt((((_e975 * _e975) + (_e976 * _e976)) + (_e977 * _e977))));
+                                            let _e1040 = ((((_e975 * _e1032) * _e369) + ((_e976 * _e1032) * _e370)) + ((_e977 * _e1032) * _e371));
+                                            let _e1044 = select(-1f, select(1f, _e1040, (_e1040 < 1f)), (_e1040 > -1f));
+                                            let _e1045 = abs(_e1044);
+                                            let _e1062 = (((((((((((((((_e1045 * -0.0012624911f) + 0.00667009f) * _e1045) - 0.017088126f) * _e1045) + 0.03089188f) * _e1045) - 0.050174303f) * _e1045) + 0.08897899f) * _e1045) - 0.2145988f) * _e1045) + 1.5707963f) * sqrt((1f - _e1045)));
+                                            let _e1069 = ((((select((3.1415927f - _e1062), _e1062, (_e1044 >= 0f)) + _e971) - _e967) + 1.5707964f) * 0.31830987f);
+                                            let _e1073 = select(0f, select(1f, _e1069, (_e1069 < 1f)), (_e1069 > 0f));
+                                            let _e1075 = (_e1073 != _e1073);
+                                            let _e1077 = select(_e1073, _e1025, ((_e1025 < _e1073) || _e1075));
+                                            let _e1080 = select(_e1073, _e1025, ((_e1025 > _e1073) || _e1075));
+                                            let _e1082 = floor((_e1077 * 32f));
+                                            if (_e875 == 1u) {
+                                                let _e1090 = -(floor((_e1080 * -32f)));
+                                                let _e1095 = (select(32f, _e1090, ((_e1090 < 32f) || false)) - _e1082);
+                                                phi_2022_ = select(select(0f, _e1095, ((_e1095 > 0f) || false)), 0f, (_e1080 <= _e1077));
                                             } else {
-                                                phi_2970_ = (0.19634955f <= _e1055);
+                                                phi_2022_ = -(floor(((_e1080 - _e1077) * -32f)));
                                             }
-                                            let _e1059 = phi_2970_;
-                                            let _e1060 = select(_e1055, 0.19634955f, _e1059);
-                                            let _e1064 = (_e940 - (_e415 * _e959));
-                                            let _e1065 = (_e941 - (_e416 * _e959));
-                                            let _e1066 = (_e942 - (_e417 * _e959));
-                                            let _e1073 = (1f / sqrt((((_e940 * _e940) + (_e941 * _e941)) + (_e942 * _e942))));
-                                            let _e1081 = ((((_e940 * _e1073) * _e415) + ((_e941 * _e1073) * _e416)) + ((_e942 * _e1073) * _e417));
-                                            let _e1085 = select(-1f, select(1f, _e1081, (_e1081 < 1f)), (_e1081 > -1f));
-                                            let _e1086 = abs(_e1085);
-                                            let _e1103 = (((((((((((((((_e1086 * -0.0012624911f) + 0.00667009f) * _e1086) - 0.017088126f) * _e1086) + 0.03089188f) * _e1086) - 0.050174303f) * _e1086) + 0.08897899f) * _e1086) - 0.2145988f) * _e1086) + 1.5707963f) * sqrt((1f - _e1086)));
-                                            let _e1110 = ((((select((3.1415927f - _e1103), _e1103, (_e1085 >= 0f)) + _e1060) - _e1054) + 1.5707964f) * 0.31830987f);
-                                            let _e1114 = select(0f, select(1f, _e1110, (_e1110 < 1f)), (_e1110 > 0f));
-                                            let _e1121 = (1f / sqrt((((_e1064 * _e1064) + (_e1065 * _e1065)) + (_e1066 * _e1066))));
-                                            let _e1129 = ((((_e1064 * _e1121) * _e415) + ((_e1065 * _e1121) * _e416)) + ((_e1066 * _e1121) * _e417));
-                                            let _e1133 = select(-1f, select(1f, _e1129, (_e1129 < 1f)), (_e1129 > -1f));
-                                            let _e1134 = abs(_e1133);
-                                            let _e1151 = (((((((((((((((_e1134 * -0.0012624911f) + 0.00667009f) * _e1134) - 0.017088126f) * _e1134) + 0.03089188f) * _e1134) - 0.050174303f) * _e1134) + 0.08897899f) * _e1134) - 0.2145988f) * _e1134) + 1.5707963f) * sqrt((1f - _e1134)));
-                                            let _e1158 = ((((select((3.1415927f - _e1151), _e1151, (_e1133 >= 0f)) + _e1060) - _e1054) + 1.5707964f) * 0.31830987f);
-                                            let _e1162 = select(0f, select(1f, _e1158, (_e1158 < 1f)), (_e1158 > 0f));
-                                            let _e1163 = (_e1114 != _e1114);
-                                            if _e1163 {
-                                                phi_2985_ = true;
+                                            let _e1101 = phi_2022_;
+                                            let _e1103 = select(0f, _e1082, (_e1082 > 0f));
+                                            let _e1106 = u32(select(32f, _e1103, (_e1103 < 32f)));
+                                            let _e1108 = select(0f, _e1101, (_e1101 > 0f));
+                                            let _e1111 = u32(select(32f, _e1108, (_e1108 < 32f)));
+                                            if (_e1106 >= 32u) {
+                                                phi_2068_ = u32();
+                                                phi_2069_ = true;
                                             } else {
-                                                phi_2985_ = (_e1162 <= _e1114);
-                                            }
-                                            let _e1166 = phi_2985_;
-                                            let _e1167 = select(_e1114, _e1162, _e1166);
-                                            if _e1163 {
-                                                phi_3000_ = true;
-                                            } else {
-                                                phi_3000_ = (_e1162 >= _e1114);
-                                            }
-                                            let _e1170 = phi_3000_;
-                                            let _e1171 = select(_e1114, _e1162, _e1170);
-                                            let _e1173 = floor((_e1167 * 32f));
-                                            if (_e962 == 1u) {
-                                                let _e1181 = -(floor((_e1171 * -32f)));
-                                                if (_e1181 != _e1181) {
-                                                    phi_3015_ = true;
+                                                let _e1113 = (_e1111 == 0u);
+                                                if _e1113 {
+                                                    phi_2067_ = u32();
                                                 } else {
-                                                    phi_3015_ = (32f <= _e1181);
-                                                }
-                                                let _e1185 = phi_3015_;
-                                                let _e1188 = (select(_e1181, 32f, _e1185) - _e1173);
-                                                if (_e1188 != _e1188) {
-                                                    phi_3030_ = true;
-                                                } else {
-                                                    phi_3030_ = (0f >= _e1188);
-                                                }
-                                                let _e1192 = phi_3030_;
-                                                phi_1806_ = select(select(_e1188, 0f, _e1192), 0f, (_e1171 <= _e1167));
-                                            } else {
-                                                phi_1806_ = -(floor(((_e1171 - _e1167) * -32f)));
-                                            }
-                                            let _e1196 = phi_1806_;
-                                            if (_e1173 > 0f) {
-                                                let _e1202 = select(select(u32(_e1173), 0u, (_e1173 < 0f)), 4294967295u, (_e1173 > 4294967000f));
-                                                phi_1824_ = select(_e1202, 32u, (32u < _e1202));
-                                            } else {
-                                                phi_1824_ = 0u;
-                                            }
-                                            let _e1206 = phi_1824_;
-                                            if (_e1196 > 0f) {
-                                                let _e1212 = select(select(u32(_e1196), 0u, (_e1196 < 0f)), 4294967295u, (_e1196 > 4294967000f));
-                                                phi_1842_ = select(_e1212, 32u, (32u < _e1212));
-                                            } else {
-                                                phi_1842_ = 0u;
-                                            }
-                                            let _e1216 = phi_1842_;
-                                            if (_e1206 >= 32u) {
-                                                phi_1862_ = u32();
-                                                phi_1863_ = true;
-                                            } else {
-                                                let _e1218 = (_e1216 == 0u);
-                                                if _e1218 {
-                                                    phi_1861_ = u32();
-                                                } else {
-                                                    if (_e1216 >= 32u) {
-                                                        phi_1858_ = 4294967295u;
+                                                    if (_e1111 >= 32u) {
+                                                        phi_2064_ = 4294967295u;
                                                     } else {
-                                                        phi_1858_ = ((1u << bitcast<u32>((_e1216 & 31u))) - 1u);
+                                                        phi_2064_ = ((1u << bitcast<u32>((_e1111 & 31u))) - 1u);
                                                     }
-                                                    let _e1225 = phi_1858_;
-                                                    phi_1861_ = (_e1225 << bitcast<u32>((_e1206 & 31u)));
+                                                    let _e1120 = phi_2064_;
+                                                    phi_2067_ = (_e1120 << bitcast<u32>((_e1106 & 31u)));
                                                 }
-                                                let _e1230 = phi_1861_;
-                                                phi_1862_ = _e1230;
-                                                phi_1863_ = _e1218;
+                                                let _e1125 = phi_2067_;
+                                                phi_2068_ = _e1125;
+                                                phi_2069_ = _e1113;
                                             }
-                                            let _e1232 = phi_1862_;
-                                            let _e1234 = phi_1863_;
-                                            phi_1877_ = select(select(select(_e1232, 0u, _e1234), 0u, (sqrt((((_e971 * _e971) + (_e972 * _e972)) + (_e973 * _e973))) <= 0f)), 0u, _e955);
+                                            let _e1127 = phi_2068_;
+                                            let _e1129 = phi_2069_;
+                                            phi_2083_ = select(select(select(_e1127, 0u, _e1129), 0u, (sqrt((((_e884 * _e884) + (_e885 * _e885)) + (_e886 * _e886))) <= 0f)), 0u, _e868);
                                         } else {
-                                            phi_1877_ = 0u;
+                                            phi_2083_ = 0u;
                                         }
-                                        let _e1240 = phi_1877_;
-                                        let _e1242 = (((((_e773 * 2f) - 1f) * _e392) * _e931) - _e394);
-                                        let _e1243 = (((((_e774 * -2f) + 1f) * _e402) * _e931) - _e404);
-                                        let _e1244 = (_e931 - _e384);
-                                        if _e946 {
-                                            phi_1901_ = (sqrt((((_e1242 * _e1242) + (_e1243 * _e1243)) + (_e1244 * _e1244))) > _e945);
+                                        let _e1135 = phi_2083_;
+                                        let _e1137 = (((((_e718 * 2f) - 1f) * _e346) * _e844) - _e348);
+                                        let _e1138 = (((((_e719 * -2f) + 1f) * _e356) * _e844) - _e358);
+                                        let _e1139 = (_e844 - _e338);
+                                        if _e859 {
+                                            phi_2107_ = (sqrt((((_e1137 * _e1137) + (_e1138 * _e1138)) + (_e1139 * _e1139))) > _e858);
                                         } else {
-                                            phi_1901_ = false;
+                                            phi_2107_ = false;
                                         }
-                                        let _e1253 = phi_1901_;
-                                        if !(_e1253) {
-                                            let _e1257 = params.member.member;
-                                            let _e1260 = params.member.member_3;
-                                            let _e1265 = (((_e1242 * _e415) + (_e1243 * _e416)) + (_e1244 * _e417));
-                                            let _e1269 = (_e1242 - (_e415 * _e1265));
-                                            let _e1270 = (_e1243 - (_e416 * _e1265));
-                                            let _e1271 = (_e1244 - (_e417 * _e1265));
-                                            let _e1280 = ((_e1270 * _e417) - (_e416 * _e1271));
-                                            let _e1283 = ((_e1271 * _e415) - (_e417 * _e1269));
-                                            let _e1286 = ((_e1269 * _e416) - (_e415 * _e1270));
-                                            let _e1293 = (1f / sqrt((((_e1280 * _e1280) + (_e1283 * _e1283)) + (_e1286 * _e1286))));
-                                            let _e1294 = (_e1280 * _e1293);
-                                            let _e1295 = (_e1283 * _e1293);
-                                            let _e1296 = (_e1286 * _e1293);
-                                            let _e1301 = (((_e486 * _e1294) + (_e487 * _e1295)) + (_e488 * _e1296));
-                                            let _e1305 = (_e486 - (_e1294 * _e1301));
-                                            let _e1306 = (_e487 - (_e1295 * _e1301));
-                                            let _e1307 = (_e488 - (_e1296 * _e1301));
-                                            let _e1313 = sqrt((((_e1305 * _e1305) + (_e1306 * _e1306)) + (_e1307 * _e1307)));
-                                            let _e1319 = ((((_e1305 * _e415) + (_e1306 * _e416)) + (_e1307 * _e417)) / _e1313);
-                                            let _e1323 = select(0f, select(1f, _e1319, (_e1319 < 1f)), (_e1319 > 0f));
-                                            let _e1324 = abs(_e1323);
-                                            let _e1341 = (((((((((((((((_e1324 * -0.0012624911f) + 0.00667009f) * _e1324) - 0.017088126f) * _e1324) + 0.03089188f) * _e1324) - 0.050174303f) * _e1324) + 0.08897899f) * _e1324) - 0.2145988f) * _e1324) + 1.5707963f) * sqrt((1f - _e1324)));
-                                            let _e1344 = select((3.1415927f - _e1341), _e1341, (_e1323 >= 0f));
-                                            let _e1352 = select(_e1344, -(_e1344), ((((_e1269 * _e1305) + (_e1270 * _e1306)) + (_e1271 * _e1307)) < 0f));
-                                            let _e1353 = (0.02f / _e1313);
-                                            if (_e1353 != _e1353) {
-                                                phi_3045_ = true;
+                                        let _e1148 = phi_2107_;
+                                        if !(_e1148) {
+                                            let _e1152 = params.member.member;
+                                            let _e1155 = params.member.member_3;
+                                            let _e1160 = (((_e1137 * _e369) + (_e1138 * _e370)) + (_e1139 * _e371));
+                                            let _e1164 = (_e1137 - (_e369 * _e1160));
+                                            let _e1165 = (_e1138 - (_e370 * _e1160));
+                                            let _e1166 = (_e1139 - (_e371 * _e1160));
+                                            let _e1175 = ((_e1165 * _e371) - (_e370 * _e1166));
+                                            let _e1178 = ((_e1166 * _e369) - (_e371 * _e1164));
+                                            let _e1181 = ((_e1164 * _e370) - (_e369 * _e1165));
+                                            let _e1188 = (1f / sqrt((((_e1175 * _e1175) + (_e1178 * _e1178)) + (_e1181 * _e1181))));
+                                            let _e1189 = (_e1175 * _e1188);
+                                            let _e1190 = (_e1178 * _e1188);
+                                            let _e1191 = (_e1181 * _e1188);
+                                            let _e1196 = (((_e440 * _e1189) + (_e441 * _e1190)) + (_e442 * _e1191));
+                                            let _e1200 = (_e440 - (_e1189 * _e1196));
+                                            let _e1201 = (_e441 - (_e1190 * _e1196));
+                                            let _e1202 = (_e442 - (_e1191 * _e1196));
+                                            let _e1208 = sqrt((((_e1200 * _e1200) + (_e1201 * _e1201)) + (_e1202 * _e1202)));
+                                            let _e1214 = ((((_e1200 * _e369) + (_e1201 * _e370)) + (_e1202 * _e371)) / _e1208);
+                                            let _e1218 = select(0f, select(1f, _e1214, (_e1214 < 1f)), (_e1214 > 0f));
+                                            let _e1219 = abs(_e1218);
+                                            let _e1236 = (((((((((((((((_e1219 * -0.0012624911f) + 0.00667009f) * _e1219) - 0.017088126f) * _e1219) + 0.03089188f) * _e1219) - 0.050174303f) * _e1219) + 0.08897899f) * _e1219) - 0.2145988f) * _e1219) + 1.5707963f) * sqrt((1f - _e1219)));
+                                            let _e1239 = select((3.1415927f - _e1236), _e1236, (_e1218 >= 0f));
+                                            let _e1247 = select(_e1239, -(_e1239), ((((_e1164 * _e1200) + (_e1165 * _e1201)) + (_e1166 * _e1202)) < 0f));
+                                            let _e1248 = (0.02f / _e1208);
+                                            let _e1251 = select(0.19634955f, _e1248, ((_e1248 < 0.19634955f) || false));
+                                            let _e1255 = (_e1137 - (_e369 * _e1152));
+                                            let _e1256 = (_e1138 - (_e370 * _e1152));
+                                            let _e1257 = (_e1139 - (_e371 * _e1152));
+                                            let _e1264 = (1f / sqrt((((_e1137 * _e1137) + (_e1138 * _e1138)) + (_e1139 * _e1139))));
+                                            let _e1272 = ((((_e1137 * _e1264) * _e369) + ((_e1138 * _e1264) * _e370)) + ((_e1139 * _e1264) * _e371));
+                                            let _e1276 = select(-1f, select(1f, _e1272, (_e1272 < 1f)), (_e1272 > -1f));
+                                            let _e1277 = abs(_e1276);
+                                            let _e1294 = (((((((((((((((_e1277 * -0.0012624911f) + 0.00667009f) * _e1277) - 0.017088126f) * _e1277) + 0.03089188f) * _e1277) - 0.050174303f) * _e1277) + 0.08897899f) * _e1277) - 0.2145988f) * _e1277) + 1.5707963f) * sqrt((1f - _e1277)));
+                                            let _e1301 = ((((select((3.1415927f - _e1294), _e1294, (_e1276 >= 0f)) + _e1251) - _e1247) + 1.5707964f) * 0.31830987f);
+                                            let _e1312 = (1f / sqrt((((_e1255 * _e1255) + (_e1256 * _e1256)) + (_e1257 * _e1257))));
+                                            let _e1320 = ((((_e1255 * _e1312) * _e369) + ((_e1256 * _e1312) * _e370)) + ((_e1257 * _e1312) * _e371));
+                                            let _e1324 = select(-1f, select(1f, _e1320, (_e1320 < 1f)), (_e1320 > -1f));
+                                            let _e1325 = abs(_e1324);
+                                            let _e1342 = (((((((((((((((_e1325 * -0.0012624911f) + 0.00667009f) * _e1325) - 0.017088126f) * _e1325) + 0.03089188f) * _e1325) - 0.050174303f) * _e1325) + 0.08897899f) * _e1325) - 0.2145988f) * _e1325) + 1.5707963f) * sqrt((1f - _e1325)));
+                                            let _e1349 = ((((select((3.1415927f - _e1342), _e1342, (_e1324 >= 0f)) + _e1251) - _e1247) + 1.5707964f) * 0.31830987f);
+                                            let _e1354 = (1f - select(0f, select(1f, _e1301, (_e1301 < 1f)), (_e1301 > 0f)));
+                                            let _e1355 = (1f - select(0f, select(1f, _e1349, (_e1349 < 1f)), (_e1349 > 0f)));
+                                            let _e1357 = (_e1355 != _e1355);
+                                            let _e1359 = select(_e1355, _e1354, ((_e1354 < _e1355) || _e1357));
+                                            let _e1362 = select(_e1355, _e1354, ((_e1354 > _e1355) || _e1357));
+                                            let _e1364 = floor((_e1359 * 32f));
+                                            if (_e1155 == 1u) {
+                                                let _e1372 = -(floor((_e1362 * -32f)));
+                                                let _e1377 = (select(32f, _e1372, ((_e1372 < 32f) || false)) - _e1364);
+                                                phi_2458_ = select(select(0f, _e1377, ((_e1377 > 0f) || false)), 0f, (_e1362 <= _e1359));
                                             } else {
-                                                phi_3045_ = (0.19634955f <= _e1353);
+                                                phi_2458_ = -(floor(((_e1362 - _e1359) * -32f)));
                                             }
-                                            let _e1357 = phi_3045_;
-                                            let _e1358 = select(_e1353, 0.19634955f, _e1357);
-                                            let _e1362 = (_e1242 - (_e415 * _e1257));
-                                            let _e1363 = (_e1243 - (_e416 * _e1257));
-                                            let _e1364 = (_e1244 - (_e417 * _e1257));
-                                            let _e1371 = (1f / sqrt((((_e1242 * _e1242) + (_e1243 * _e1243)) + (_e1244 * _e1244))));
-                                            let _e1379 = ((((_e1242 * _e1371) * _e415) + ((_e1243 * _e1371) * _e416)) + ((_e1244 * _e1371) * _e417));
-                                            let _e1383 = select(-1f, select(1f, _e1379, (_e1379 < 1f)), (_e1379 > -1f));
-                                            let _e1384 = abs(_e1383);
-                                            let _e1401 = (((((((((((((((_e1384 * -0.0012624911f) + 0.00667009f) * _e1384) - 0.017088126f) * _e1384) + 0.03089188f) * _e1384) - 0.050174303f) * _e1384) + 0.08897899f) * _e1384) - 0.2145988f) * _e1384) + 1.5707963f) * sqrt((1f - _e1384)));
-                                            let _e1408 = ((((select((3.1415927f - _e1401), _e1401, (_e1383 >= 0f)) + _e1358) - _e1352) + 1.5707964f) * 0.31830987f);
-                                            let _e1419 = (1f / sqrt((((_e1362 * _e1362) + (_e1363 * _e1363)) + (_e1364 * _e1364))));
-                                            let _e1427 = ((((_e1362 * _e1419) * _e415) + ((_e1363 * _e1419) * _e416)) + ((_e1364 * _e1419) * _e417));
-                                            let _e1431 = select(-1f, select(1f, _e1427, (_e1427 < 1f)), (_e1427 > -1f));
-                                            let _e1432 = abs(_e1431);
-                                            let _e1449 = (((((((((((((((_e1432 * -0.0012624911f) + 0.00667009f) * _e1432) - 0.017088126f) * _e1432) + 0.03089188f) * _e1432) - 0.050174303f) * _e1432) + 0.08897899f) * _e1432) - 0.2145988f) * _e1432) + 1.5707963f) * sqrt((1f - _e1432)));
-                                            let _e1456 = ((((select((3.1415927f - _e1449), _e1449, (_e1431 >= 0f)) + _e1358) - _e1352) + 1.5707964f) * 0.31830987f);
-                                            let _e1461 = (1f - select(0f, select(1f, _e1408, (_e1408 < 1f)), (_e1408 > 0f)));
-                                            let _e1462 = (1f - select(0f, select(1f, _e1456, (_e1456 < 1f)), (_e1456 > 0f)));
-                                            let _e1463 = (_e1461 != _e1461);
-                                            if _e1463 {
-                                                phi_3060_ = true;
+                                            let _e1383 = phi_2458_;
+                                            let _e1385 = select(0f, _e1364, (_e1364 > 0f));
+                                            let _e1388 = u32(select(32f, _e1385, (_e1385 < 32f)));
+                                            let _e1390 = select(0f, _e1383, (_e1383 > 0f));
+                                            let _e1393 = u32(select(32f, _e1390, (_e1390 < 32f)));
+                                            if (_e1388 >= 32u) {
+                                                phi_2504_ = u32();
+                                                phi_2505_ = true;
                                             } else {
-                                                phi_3060_ = (_e1462 <= _e1461);
-                                            }
-                                            let _e1466 = phi_3060_;
-                                            let _e1467 = select(_e1461, _e1462, _e1466);
-                                            if _e1463 {
-                                                phi_3075_ = true;
-                                            } else {
-                                                phi_3075_ = (_e1462 >= _e1461);
-                                            }
-                                            let _e1470 = phi_3075_;
-                                            let _e1471 = select(_e1461, _e1462, _e1470);
-                                            let _e1473 = floor((_e1467 * 32f));
-                                            if (_e1260 == 1u) {
-                                                let _e1481 = -(floor((_e1471 * -32f)));
-                                                if (_e1481 != _e1481) {
-                                                    phi_3090_ = true;
+                                                let _e1395 = (_e1393 == 0u);
+                                                if _e1395 {
+                                                    phi_2503_ = u32();
                                                 } else {
-                                                    phi_3090_ = (32f <= _e1481);
-                                                }
-                                                let _e1485 = phi_3090_;
-                                                let _e1488 = (select(_e1481, 32f, _e1485) - _e1473);
-                                                if (_e1488 != _e1488) {
-                                                    phi_3105_ = true;
-                                                } else {
-                                                    phi_3105_ = (0f >= _e1488);
-                                                }
-                                                let _e1492 = phi_3105_;
-                                                phi_2222_ = select(select(_e1488, 0f, _e1492), 0f, (_e1471 <= _e1467));
-                                            } else {
-                                                phi_2222_ = -(floor(((_e1471 - _e1467) * -32f)));
-                                            }
-                                            let _e1496 = phi_2222_;
-                                            if (_e1473 > 0f) {
-                                                let _e1502 = select(select(u32(_e1473), 0u, (_e1473 < 0f)), 4294967295u, (_e1473 > 4294967000f));
-                                                phi_2240_ = select(_e1502, 32u, (32u < _e1502));
-                                            } else {
-                                                phi_2240_ = 0u;
-                                            }
-                                            let _e1506 = phi_2240_;
-                                            if (_e1496 > 0f) {
-                                                let _e1512 = select(select(u32(_e1496), 0u, (_e1496 < 0f)), 4294967295u, (_e1496 > 4294967000f));
-                                                phi_2258_ = select(_e1512, 32u, (32u < _e1512));
-                                            } else {
-                                                phi_2258_ = 0u;
-                                            }
-                                            let _e1516 = phi_2258_;
-                                            if (_e1506 >= 32u) {
-                                                phi_2278_ = u32();
-                                                phi_2279_ = true;
-                                            } else {
-                                                let _e1518 = (_e1516 == 0u);
-                                                if _e1518 {
-                                                    phi_2277_ = u32();
-                                                } else {
-                                                    if (_e1516 >= 32u) {
-                                                        phi_2274_ = 4294967295u;
+                                                    if (_e1393 >= 32u) {
+                                                        phi_2500_ = 4294967295u;
                                                     } else {
-                                                        phi_2274_ = ((1u << bitcast<u32>((_e1516 & 31u))) - 1u);
+                                                        phi_2500_ = ((1u << bitcast<u32>((_e1393 & 31u))) - 1u);
                                                     }
-                                                    let _e1525 = phi_2274_;
-                                                    phi_2277_ = (_e1525 << bitcast<u32>((_e1506 & 31u)));
+                                                    let _e1402 = phi_2500_;
+                                                    phi_2503_ = (_e1402 << bitcast<u32>((_e1388 & 31u)));
                                                 }
-                                                let _e1530 = phi_2277_;
-                                                phi_2278_ = _e1530;
-                                                phi_2279_ = _e1518;
+                                                let _e1407 = phi_2503_;
+                                                phi_2504_ = _e1407;
+                                                phi_2505_ = _e1395;
                                             }
-                                            let _e1532 = phi_2278_;
-                                            let _e1534 = phi_2279_;
-                                            phi_2293_ = select(select(select(_e1532, 0u, _e1534), 0u, (sqrt((((_e1269 * _e1269) + (_e1270 * _e1270)) + (_e1271 * _e1271))) <= 0f)), 0u, _e1253);
+                                            let _e1409 = phi_2504_;
+                                            let _e1411 = phi_2505_;
+                                            phi_2519_ = select(select(select(_e1409, 0u, _e1411), 0u, (sqrt((((_e1164 * _e1164) + (_e1165 * _e1165)) + (_e1166 * _e1166))) <= 0f)), 0u, _e1148);
                                         } else {
-                                            phi_2293_ = 0u;
+                                            phi_2519_ = 0u;
                                         }
-                                        let _e1540 = phi_2293_;
-                                        phi_1073_ = (_e691 + 1u);
-                                        phi_1076_ = ((_e693 | _e1240) | _e1540);
+                                        let _e1417 = phi_2519_;
+                                        phi_1068_ = (_e645 + 1u);
+                                        phi_1071_ = ((_e647 | _e1135) | _e1417);
                                     } else {
-                                        phi_1073_ = u32();
-                                        phi_1076_ = u32();
+                                        phi_1068_ = u32();
+                                        phi_1071_ = u32();
                                     }
-                                    let _e1544 = phi_1073_;
-                                    let _e1546 = phi_1076_;
+                                    let _e1421 = phi_1068_;
+                                    let _e1423 = phi_1071_;
                                     continue;
                                     continuing {
-                                        phi_1072_ = _e1544;
-                                        phi_1075_ = _e1546;
-                                        break if !(_e694);
+                                        phi_1067_ = _e1421;
+                                        phi_1070_ = _e1423;
+                                        break if !(_e648);
                                     }
                                 }
-                                let _e1550 = params.member.member_2;
-                                if (_e1550 == 2u) {
-                                    let _e1607 = (_e683 - 1.5707964f);
-                                    let _e1608 = (_e1607 * 2f);
-                                    let _e1609 = sin(_e683);
-                                    let _e1614 = ((_e661 + (_e1608 * _e1609)) - cos((_e1608 - _e683)));
-                                    phi_2324_ = 0u;
-                                    phi_2327_ = select((_e1614 * 0.25f), (_e1614 * -0.25f), (_e1607 < 0f));
-                                    phi_2329_ = 0f;
+                                let _e1427 = params.member.member_2;
+                                if (_e1427 == 2u) {
+                                    let _e1484 = (_e637 - 1.5707964f);
+                                    let _e1485 = (_e1484 * 2f);
+                                    let _e1486 = sin(_e637);
+                                    let _e1491 = ((_e615 + (_e1485 * _e1486)) - cos((_e1485 - _e637)));
+                                    phi_2550_ = 0u;
+                                    phi_2553_ = select((_e1491 * 0.25f), (_e1491 * -0.25f), (_e1484 < 0f));
+                                    phi_2555_ = 0f;
                                     loop {
-                                        let _e1620 = phi_2324_;
-                                        let _e1622 = phi_2327_;
-                                        let _e1624 = phi_2329_;
-                                        local_8 = _e1624;
-                                        let _e1625 = (_e1620 < 32u);
-                                        if _e1625 {
-                                            let _e1626 = (_e1620 + 1u);
-                                            let _e1629 = (_e1607 + (f32(_e1626) * 0.09817477f));
-                                            let _e1630 = (_e1629 * 2f);
-                                            let _e1635 = ((_e661 + (_e1630 * _e1609)) - cos((_e1630 - _e683)));
-                                            let _e1639 = select((_e1635 * 0.25f), (_e1635 * -0.25f), (_e1629 < 0f));
-                                            let _e1642 = local_7;
-                                            phi_2325_ = _e1626;
-                                            phi_2328_ = _e1639;
-                                            phi_2330_ = select(_e1624, (_e1624 + (_e1639 - _e1622)), (((_e1642 >> bitcast<u32>((_e1620 & 31u))) & 1u) == 0u));
+                                        let _e1497 = phi_2550_;
+                                        let _e1499 = phi_2553_;
+                                        let _e1501 = phi_2555_;
+                                        local_6 = _e1501;
+                                        let _e1502 = (_e1497 < 32u);
+                                        if _e1502 {
+                                            let _e1503 = (_e1497 + 1u);
+                                            let _e1506 = (_e1484 + (f32(_e1503) * 0.09817477f));
+                                            let _e1507 = (_e1506 * 2f);
+                                            let _e1512 = ((_e615 + (_e1507 * _e1486)) - cos((_e1507 - _e637)));
+                                            let _e1516 = select((_e1512 * 0.25f), (_e1512 * -0.25f), (_e1506 < 0f));
+                                            let _e1519 = local_5;
+                                            phi_2551_ = _e1503;
+                                            phi_2554_ = _e1516;
+                                            phi_2556_ = select(_e1501, (_e1501 + (_e1516 - _e1499)), (((_e1519 >> bitcast<u32>((_e1497 & 31u))) & 1u) == 0u));
                                         } else {
-                                            phi_2325_ = u32();
-                                            phi_2328_ = f32();
-                                            phi_2330_ = f32();
+                                            phi_2551_ = u32();
+                                            phi_2554_ = f32();
+                                            phi_2556_ = f32();
                                         }
-                                        let _e1651 = phi_2325_;
-                                        let _e1653 = phi_2328_;
-                                        let _e1655 = phi_2330_;
+                                        let _e1528 = phi_2551_;
+                                        let _e1530 = phi_2554_;
+                                        let _e1532 = phi_2556_;
                                         continue;
                                         continuing {
-                                            phi_2324_ = _e1651;
-                                            phi_2327_ = _e1653;
-                                            phi_2329_ = _e1655;
-                                            break if !(_e1625);
+                                            phi_2550_ = _e1528;
+                                            phi_2553_ = _e1530;
+                                            phi_2555_ = _e1532;
+                                            break if !(_e1502);
                                         }
                                     }
-                                    let _e1658 = local_8;
-                                    phi_3368_ = _e580;
-                                    phi_2432_ = (_e584 + 1f);
-                                    phi_2433_ = (_e586 + ((_e642 + ((1f - _e642) * 0.05f)) * _e1658));
+                                    let _e1535 = local_6;
+                                    phi_3346_ = _e534;
+                                    phi_2658_ = (_e538 + 1f);
+                                    phi_2659_ = (_e540 + ((_e596 + ((1f - _e596) * 0.05f)) * _e1535));
                                 } else {
-                                    if (_e1550 == 1u) {
-                                        phi_2377_ = 0u;
-                                        phi_2380_ = 0f;
+                                    if (_e1427 == 1u) {
+                                        phi_2603_ = 0u;
+                                        phi_2606_ = 0f;
                                         loop {
-                                            let _e1563 = phi_2377_;
-                                            let _e1565 = phi_2380_;
-                                            local_6 = _e1565;
-                                            let _e1566 = (_e1563 < 4u);
-                                            if _e1566 {
+                                            let _e1440 = phi_2603_;
+                                            let _e1442 = phi_2606_;
+                                            local_4 = _e1442;
+                                            let _e1443 = (_e1440 < 4u);
+                                            if _e1443 {
                                                 local = array<type_25, 4>(type_25(4026531855u, 0.0095061f), type_25(251658480u, 0.0270951f), type_25(15732480u, 0.0405571f), type_25(1044480u, 0.0478421f));
-                                                if _e1566 {
+                                                if _e1443 {
                                                 } else {
-                                                    phi_3164_ = true;
+                                                    phi_3124_ = true;
                                                     break;
                                                 }
-                                                let _e1569 = local[_e1563].member;
-                                                let _e1572 = local[_e1563].member_1;
-                                                let _e1574 = local_5;
-                                                phi_2378_ = (_e1563 + 1u);
-                                                phi_2381_ = (_e1565 + (f32(countOneBits((_e1574 & _e1569))) * _e1572));
+                                                let _e1446 = local[_e1440].member;
+                                                let _e1449 = local[_e1440].member_1;
+                                                let _e1451 = local_3;
+                                                phi_2604_ = (_e1440 + 1u);
+                                                phi_2607_ = (_e1442 + (f32(countOneBits((_e1451 & _e1446))) * _e1449));
                                             } else {
-                                                phi_2378_ = u32();
-                                                phi_2381_ = f32();
+                                                phi_2604_ = u32();
+                                                phi_2607_ = f32();
                                             }
-                                            let _e1582 = phi_2378_;
-                                            let _e1584 = phi_2381_;
+                                            let _e1459 = phi_2604_;
+                                            let _e1461 = phi_2607_;
                                             continue;
                                             continuing {
-                                                phi_2377_ = _e1582;
-                                                phi_2380_ = _e1584;
-                                                phi_3164_ = _e580;
-                                                break if !(_e1566);
+                                                phi_2603_ = _e1459;
+                                                phi_2606_ = _e1461;
+                                                phi_3124_ = _e534;
+                                                break if !(_e1443);
                                             }
                                         }
-                                        let _e1587 = phi_3164_;
-                                        phi_3366_ = _e1587;
-                                        if _e1587 {
+                                        let _e1464 = phi_3124_;
+                                        phi_3344_ = _e1464;
+                                        if _e1464 {
                                             break;
                                         }
-                                        let _e1589 = local_6;
-                                        let _e1590 = (1f - _e1589);
-                                        phi_3374_ = _e1587;
-                                        phi_2430_ = (_e584 + _e642);
-                                        phi_2431_ = (_e586 + (_e642 * select(0f, select(1f, _e1590, (_e1590 < 1f)), (_e1590 > 0f))));
+                                        let _e1466 = local_4;
+                                        let _e1467 = (1f - _e1466);
+                                        phi_3352_ = _e1464;
+                                        phi_2656_ = (_e538 + _e596);
+                                        phi_2657_ = (_e540 + (_e596 * select(0f, select(1f, _e1467, (_e1467 < 1f)), (_e1467 > 0f))));
                                     } else {
-                                        let _e1554 = local_4;
-                                        phi_3374_ = _e580;
-                                        phi_2430_ = (_e584 + 1f);
-                                        phi_2431_ = (_e586 + ((f32(countOneBits((_e1554 & 4294967295u))) * -0.03125f) + 1f));
+                                        let _e1431 = local_2;
+                                        phi_3352_ = _e534;
+                                        phi_2656_ = (_e538 + 1f);
+                                        phi_2657_ = (_e540 + ((f32(countOneBits((_e1431 & 4294967295u))) * -0.03125f) + 1f));
                                     }
-                                    let _e1599 = phi_3374_;
-                                    let _e1601 = phi_2430_;
-                                    let _e1603 = phi_2431_;
-                                    phi_3368_ = _e1599;
-                                    phi_2432_ = _e1601;
-                                    phi_2433_ = _e1603;
+                                    let _e1476 = phi_3352_;
+                                    let _e1478 = phi_2656_;
+                                    let _e1480 = phi_2657_;
+                                    phi_3346_ = _e1476;
+                                    phi_2658_ = _e1478;
+                                    phi_2659_ = _e1480;
                                 }
-                                let _e1663 = phi_3368_;
-                                let _e1665 = phi_2432_;
-                                let _e1667 = phi_2433_;
-                                phi_3367_ = _e1663;
-                                phi_873_ = (_e582 + 1u);
-                                phi_876_ = _e1665;
-                                phi_878_ = _e1667;
+                                let _e1540 = phi_3346_;
+                                let _e1542 = phi_2658_;
+                                let _e1544 = phi_2659_;
+                                phi_3345_ = _e1540;
+                                phi_868_ = (_e536 + 1u);
+                                phi_871_ = _e1542;
+                                phi_873_ = _e1544;
                             } else {
-                                phi_3367_ = _e580;
-                                phi_873_ = u32();
-                                phi_876_ = f32();
-                                phi_878_ = f32();
+                                phi_3345_ = _e534;
+                                phi_868_ = u32();
+                                phi_871_ = f32();
+                                phi_873_ = f32();
                             }
-                            let _e1670 = phi_3367_;
-                            let _e1672 = phi_873_;
-                            let _e1674 = phi_876_;
-                            let _e1676 = phi_878_;
+                            let _e1547 = phi_3345_;
+                            let _e1549 = phi_868_;
+                            let _e1551 = phi_871_;
+                            let _e1553 = phi_873_;
                             continue;
                             continuing {
-                                phi_3285_ = _e1670;
-                                phi_872_ = _e1672;
-                                phi_875_ = _e1674;
-                                phi_877_ = _e1676;
-                                phi_3366_ = _e1670;
-                                break if !(_e587);
+                                phi_3275_ = _e1547;
+                                phi_867_ = _e1549;
+                                phi_870_ = _e1551;
+                                phi_872_ = _e1553;
+                                phi_3344_ = _e1547;
+                                break if !(_e541);
                             }
                         }
-                        let _e1679 = phi_3366_;
-                        if _e1679 {
+                        let _e1556 = phi_3344_;
+                        if _e1556 {
                             break;
                         }
-                        let _e1681 = local_9;
-                        let _e1684 = local_10;
-                        let _e1686 = local_11;
-                        phi_2441_ = select(1f, (_e1684 / _e1686), (_e1681 > 0f));
+                        let _e1558 = local_7;
+                        let _e1561 = local_8;
+                        let _e1563 = local_9;
+                        phi_2667_ = select(1f, (_e1561 / _e1563), (_e1558 > 0f));
                     } else {
-                        phi_2441_ = 1f;
+                        phi_2667_ = 1f;
                     }
-                    let _e1690 = phi_2441_;
-                    if _e572 {
-                        let _e1694 = params.member.member_4.member_6;
-                        let _e1695 = pow(_e1690, _e1694);
-                        if (_e1695 != _e1695) {
-                            phi_3138_ = true;
+                    let _e1567 = phi_2667_;
+                    if _e526 {
+                        let _e1571 = params.member.member_4.member_6;
+                        let _e1572 = pow(_e1567, _e1571);
+                        if (_e1572 != _e1572) {
+                            phi_3098_ = true;
                         } else {
-                            phi_3138_ = (0.03f >= _e1695);
+                            phi_3098_ = (0.03f >= _e1572);
                         }
-                        let _e1699 = phi_3138_;
-                        let _e1701 = (select(_e1695, 0.03f, _e1699) * 0.6666667f);
-                        let _e1707 = ((select(0f, select(1f, _e1701, (_e1701 < 1f)), (_e1701 > 0f)) * 255f) + 0.5f);
-                        phi_2490_ = select(select(u32(_e1707), 0u, (_e1707 < 0f)), 4294967295u, (_e1707 > 4294967000f));
+                        let _e1576 = phi_3098_;
+                        let _e1578 = (select(_e1572, 0.03f, _e1576) * 0.6666667f);
+                        let _e1584 = ((select(0f, select(1f, _e1578, (_e1578 < 1f)), (_e1578 > 0f)) * 255f) + 0.5f);
+                        phi_2716_ = select(select(u32(_e1584), 0u, (_e1584 < 0f)), 4294967295u, (_e1584 > 4294967000f));
                     } else {
-                        phi_2490_ = 170u;
+                        phi_2716_ = 170u;
                     }
-                    let _e1714 = phi_2490_;
-                    terms.member[_e121] = _e1714;
-                    edges.member[_e121] = ((((64u * _e275) + (16u * _e308)) + (4u * _e342)) + _e376);
+                    let _e1591 = phi_2716_;
+                    terms.member[_e123] = _e1591;
+                    edges.member[_e123] = ((((64u * u32(select(3f, _e259, (_e259 < 3f)))) + (16u * u32(select(3f, _e281, (_e281 < 3f))))) + (4u * u32(select(3f, _e304, (_e304 < 3f))))) + u32(select(3f, _e327, (_e327 < 3f))));
                 }
             }
             break;

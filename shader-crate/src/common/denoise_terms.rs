@@ -8,11 +8,14 @@ use crate::common::lanes::Lanes;
 use crate::common::math::{floor, sat};
 use crate::glam::{Vec3, Vec4, vec4};
 
-/// Round half to even (HLSL `round`, spec gtao-raymarch-hybrid §1.5).
+/// Round half to even (HLSL `round`, spec gtao-raymarch-hybrid §1.5). Both tests are evaluated
+/// (`&`, not `&&`): a select on the GPU, not a branch per call.
 #[inline]
 pub fn round_even(x: f32) -> f32 {
     let r = floor(x + 0.5);
-    if r - x == 0.5 && floor(r * 0.5) * 2.0 != r { r - 1.0 } else { r }
+    let odd_tie = (r - x == 0.5) & (floor(r * 0.5) * 2.0 != r);
+    let down = r - 1.0;
+    if odd_tie { down } else { r }
 }
 
 /// Edge weights (L, R, T, B) of a pixel at depth `zc` from its 4-neighbours (spec gtao-raymarch-hybrid §2.6.1):

@@ -195,13 +195,20 @@ impl Lanes for f32 {
     fn abs(self) -> Self {
         Float::abs(self)
     }
+    /// IEEE 754 maxNum (a NaN operand gives the other) as a compare and a select: `f32::max`
+    /// compiles to a branch per call through rust-gpu.
     #[inline]
     fn max(self, other: Self) -> Self {
-        Float::max(self, other)
+        #[allow(clippy::eq_op)]
+        let keep = (self > other) | (other != other);
+        if keep { self } else { other }
     }
+    /// IEEE 754 minNum, branch-free like [`Lanes::max`].
     #[inline]
     fn min(self, other: Self) -> Self {
-        Float::min(self, other)
+        #[allow(clippy::eq_op)]
+        let keep = (self < other) | (other != other);
+        if keep { self } else { other }
     }
     #[inline]
     fn acos(self) -> Self {

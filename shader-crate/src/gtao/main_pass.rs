@@ -6,14 +6,14 @@ use crate::common::read::read;
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
-use super::{GtaoParams, MIP_LEVELS, mip_offset, mip_size};
+use super::{GtaoParams, MIP_LEVELS, mip_size};
 use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, store_term};
 use crate::common::gbuffer_read::decoded_normals;
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, select_v3};
 use crate::common::math::{ceil, clamp, depth_or_far, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::encode_normal;
-use crate::common::screen_space::{clamp_index, neighbour, neighbour_lanes, view_pos};
+use crate::common::screen_space::{neighbour, neighbour_lanes, view_pos};
 use crate::glam::{UVec2, Vec3, vec3};
 
 /// Output of the main pass for one pixel: the working AO term `uint(sat(vis/1.5)·255 + 0.5)`
@@ -124,7 +124,7 @@ pub fn finish_pixel(params: &GtaoParams, valid: bool, vis: f32, bent: Vec3, n: V
 /// zero).
 #[inline]
 pub fn slices_visibility<L: Lanes>(params: &GtaoParams, mips: &[f32], px: &PixelSetup<L>) -> (L, L::V3) {
-    let falloff_range = params.falloff_range * px.r;
+    let falloff = Falloff::new(px.r, params.falloff_range * px.r);
     let zero = L::splat(0.0);
     let mut vis = sat((-px.r_px + 10.0) / 100.0) * 0.5;
     let mut bent = L::V3::new(zero, zero, zero);
@@ -132,7 +132,7 @@ pub fn slices_visibility<L: Lanes>(params: &GtaoParams, mips: &[f32], px: &Pixel
     let mut s = 0;
     while s < slices {
         let sl = slice_frame(params, px, s);
-        let (h0, h1) = slice_horizons(params, mips, px, &sl, s, falloff_range);
+        let (h0, h1) = slice_horizons(params, mips, px, &sl, s, &falloff);
         let len = projected_length_fudge(sl.len);
         vis = vis + (arc_integral(h0, sl.gamma, sl.cos_n) + arc_integral(h1, sl.gamma, sl.cos_n)) * len;
         if params.bent_normals != 0 {
@@ -166,10 +166,35 @@ pub fn final_visibility(vis: f32, power: f32) -> f32 {
     Float::max(Float::powf(vis, power), 0.03)
 }
 
-/// Falloff weight `W(D) = sat((R − D)/falloffRange)` (spec gtao-raymarch-hybrid §2.6.2; a step when the range is 0).
-#[inline]
-fn falloff<L: Lanes>(d: L, r: f32, range: f32) -> L {
-    if range > 0.0 { sat((-d + r) / range) } else { L::select(d.le(L::splat(r)), L::splat(1.0), L::splat(0.0)) }
+/// Falloff weight `W(D) = sat((R − D)/falloffRange)` (spec gtao-raymarch-hybrid §2.6.2) as XeGTAO
+/// evaluates it, `sat(D·mul + add)` with `mul = −1/falloffRange`, `add = R/falloffRange` made
+/// once per pixel ([`Falloff::new`]); a step `D ≤ R` when the range is 0.
+#[derive(Copy, Clone, Debug)]
+pub struct Falloff {
+    mul: f32,
+    add: f32,
+    r: f32,
+    step: bool,
+}
+
+impl Falloff {
+    /// The weight for effective radius `r` and falloff range `range` (world units).
+    #[inline]
+    pub fn new(r: f32, range: f32) -> Falloff {
+        let step = range <= 0.0;
+        let inv = if step { 0.0 } else { 1.0 / range };
+        Falloff { mul: -inv, add: r * inv, r, step }
+    }
+
+    /// `W(d)` per lane.
+    #[inline]
+    pub fn weight<L: Lanes>(&self, d: L) -> L {
+        if self.step {
+            L::select(d.le(L::splat(self.r)), L::splat(1.0), L::splat(0.0))
+        } else {
+            sat(d * self.mul + self.add)
+        }
+    }
 }
 
 /// The cosine-weighted visible arc of one side, `a(h) = (cos n + 2h·sin γ − cos(2h − γ))/4`
@@ -232,11 +257,12 @@ pub fn sample_pair<L: Lanes>(
     let full = view.size();
     let steps = params.steps.max(1);
     let t = crate::common::math::frac(px.xi.y() + (s + k * steps) as f32 * 0.618_034);
-    let u = pow((t + k as f32) / steps as f32, params.sample_distribution_power) + px.min_s;
+    let u = pow((t + k as f32) * (1.0 / steps as f32), params.sample_distribution_power) + px.min_s;
     let off = slice.omega * u;
     let lambda = clamp(off.length().log2() - params.depth_mip_sampling_offset, 0.0, 5.0);
     let level = ceil(lambda + 0.5) - 1.0;
-    let off_uv = L::V2::new(off.x().round_even() / view.res.x, off.y().round_even() / view.res.y);
+    // Whole pixels times the pixel size: the sample lands on a texel centre either way.
+    let off_uv = L::V2::new(off.x().round_even() * (1.0 / view.res.x), off.y().round_even() * (1.0 / view.res.y));
     let uv0 = px.uv + off_uv;
     let uv1 = px.uv - off_uv;
     let q0 = view_pos(view, uv0, mip_sample(mips, full, level, uv0));
@@ -246,33 +272,33 @@ pub fn sample_pair<L: Lanes>(
 
 /// Point sample of the MIP chain per lane at level `level` (an integral float; clamped to the
 /// chain, NaN reads level 0) and `uv`: the texel `clamp(⌊uv·size⌋, 0, size − 1)` of that level
-/// (spec gtao-raymarch-hybrid §1.5).
+/// (spec gtao-raymarch-hybrid §1.5). Each lane's level size and offset are chosen branch-free
+/// from the chain's (the same for every pixel), for one lane as for several: no loop or branch
+/// per sample.
 #[inline]
 fn mip_sample<L: Lanes>(mips: &[f32], full: UVec2, level: L, uv: L::V2) -> L {
-    let (w, h, at, wf, hf) = if L::LANES == 1 {
-        // One pixel (the GPU): the level's size and offset directly.
-        let k = clamp_index(level.lane(0), MIP_LEVELS);
-        let s = mip_size(full, k);
-        let at = mip_offset(full, k) as u32;
-        (L::index_splat(s.x), L::index_splat(s.y), L::index_splat(at), L::splat(s.x as f32), L::splat(s.y as f32))
-    } else {
-        // Several pixels: each lane's level size and offset chosen branch-free.
-        let s = mip_size(full, 0);
-        let (mut w, mut h, mut at) = (L::index_splat(s.x), L::index_splat(s.y), L::index_splat(0));
-        let (mut wf, mut hf) = (L::splat(s.x as f32), L::splat(s.y as f32));
-        let mut k = 1;
-        while k < MIP_LEVELS {
-            let reached = level.ge(L::splat(k as f32));
-            let s = mip_size(full, k);
-            w = L::index_select(reached, L::index_splat(s.x), w);
-            h = L::index_select(reached, L::index_splat(s.y), h);
-            at = L::index_select(reached, L::index_splat(mip_offset(full, k) as u32), at);
-            wf = L::select(reached, L::splat(s.x as f32), wf);
-            hf = L::select(reached, L::splat(s.y as f32), hf);
-            k += 1;
-        }
-        (w, h, at, wf, hf)
-    };
+    let mut size = mip_size(full, 0);
+    let mut offset = 0u32;
+    let (mut w, mut h, mut at) = (L::index_splat(size.x), L::index_splat(size.y), L::index_splat(0));
+    let (mut wf, mut hf) = (L::splat(size.x as f32), L::splat(size.y as f32));
+    // Levels 1–4 written out: straight-line code on the GPU (rust-gpu emits loops as written).
+    const _: () = assert!(MIP_LEVELS == 5, "mip_sample selects among exactly five levels");
+    macro_rules! level {
+        ($k:expr) => {
+            offset += size.x * size.y;
+            size = mip_size(full, $k);
+            let reached = level.ge(L::splat($k as f32));
+            w = L::index_select(reached, L::index_splat(size.x), w);
+            h = L::index_select(reached, L::index_splat(size.y), h);
+            at = L::index_select(reached, L::index_splat(offset), at);
+            wf = L::select(reached, L::splat(size.x as f32), wf);
+            hf = L::select(reached, L::splat(size.y as f32), hf);
+        };
+    }
+    level!(1);
+    level!(2);
+    level!(3);
+    level!(4);
     let x = (uv.x() * wf).floor_index(w);
     let y = (uv.y() * hf).floor_index(h);
     L::gather_index(mips, at + y * w + x)
@@ -287,7 +313,7 @@ fn slice_horizons<L: Lanes>(
     px: &PixelSetup<L>,
     sl: &SliceFrame<L>,
     s: u32,
-    falloff_range: f32,
+    falloff: &Falloff,
 ) -> (L, L) {
     let steps = params.steps.max(1);
     let half_pi = core::f32::consts::FRAC_PI_2;
@@ -298,8 +324,8 @@ fn slice_horizons<L: Lanes>(
     let mut k = 0;
     while k < steps {
         let (q0, q1) = sample_pair(params, mips, px, sl, s, k);
-        let shc0 = horizon_cosine(q0 - px.pos, px.v, thin, px.r, falloff_range, low0);
-        let shc1 = horizon_cosine(q1 - px.pos, px.v, thin, px.r, falloff_range, low1);
+        let shc0 = horizon_cosine(q0 - px.pos, px.v, thin, falloff, low0);
+        let shc1 = horizon_cosine(q1 - px.pos, px.v, thin, falloff, low1);
         c0 = c0.max(shc0);
         c1 = c1.max(shc1);
         k += 1;
@@ -315,12 +341,14 @@ pub fn projected_length_fudge<L: Lanes>(len: L) -> L {
 
 /// Horizon cosine of one sample, faded toward the hemisphere fallback `low` with distance
 /// (spec gtao-raymarch-hybrid §2.6.3 step 7; thin-occluder compensation stretches z of the falloff distance).
+/// `dot(Δ/|Δ|, v)` is evaluated as `dot(Δ, v)/|Δ|` (one division, not three), and the stretched
+/// length only when the compensation is on.
 #[inline]
-fn horizon_cosine<L: Lanes>(delta: L::V3, v: L::V3, thin: f32, r: f32, range: f32, low: L) -> L {
+fn horizon_cosine<L: Lanes>(delta: L::V3, v: L::V3, thin: f32, falloff: &Falloff, low: L) -> L {
     let d = delta.length();
-    let shc = (delta / d).dot(v);
-    let stretched = L::V3::new(delta.x(), delta.y(), delta.z() * (1.0 + thin)).length();
-    lerp(low, shc, falloff(stretched, r, range))
+    let shc = delta.dot(v) / d;
+    let stretched = if thin == 0.0 { d } else { L::V3::new(delta.x(), delta.y(), delta.z() * (1.0 + thin)).length() };
+    lerp(low, shc, falloff.weight(stretched))
 }
 
 /// Pass 0 (spec gtao-raymarch-hybrid §2.4): the view normal from depth at pixel `p` — four cross products of the

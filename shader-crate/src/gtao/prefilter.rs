@@ -2,7 +2,9 @@
 //! fp16 range as the reference does in every build; each further level filters 2×2 texels of
 //! the level above with a weighted average that prefers the farthest sample.
 
+use super::main_pass::Falloff;
 use super::{GtaoParams, mip_offset, mip_size};
+use crate::common::lanes::Lanes;
 use crate::common::math::depth_or_far;
 use crate::common::read::read;
 use crate::glam::{UVec2, uvec2};
@@ -11,22 +13,17 @@ use crate::glam::{UVec2, uvec2};
 pub const MAX_WORKING_DEPTH: f32 = 65504.0;
 
 /// Depth MIP filter (spec gtao-raymarch-hybrid §2.5): `R' = 0.75·R·mult`, `w_i = sat((R' − (dmax − d_i)) /
-/// (FalloffRange·R'))`, result `Σ w_i·d_i / Σ w_i`; a step function when FalloffRange = 0.
+/// (FalloffRange·R'))` (as XeGTAO evaluates it, [`Falloff`]), result `Σ w_i·d_i / Σ w_i`; a step
+/// function when FalloffRange = 0.
 #[inline]
 pub fn mip_filter(d: [f32; 4], params: &GtaoParams) -> f32 {
     let r = 0.75 * params.effective_radius();
-    let dmax = d[0].max(d[1]).max(d[2]).max(d[3]);
+    let dmax = Lanes::max(Lanes::max(d[0], d[1]), Lanes::max(d[2], d[3]));
+    let falloff = Falloff::new(r, params.falloff_range * r);
     let (mut sum, mut weights) = (0.0, 0.0);
     let mut i = 0;
     while i < 4 {
-        let gap = r - (dmax - d[i]);
-        let w = if params.falloff_range > 0.0 {
-            crate::common::math::sat(gap / (params.falloff_range * r))
-        } else if gap >= 0.0 {
-            1.0
-        } else {
-            0.0
-        };
+        let w = falloff.weight(dmax - d[i]);
         sum += w * d[i];
         weights += w;
         i += 1;
