@@ -35,6 +35,35 @@ fn hilbert_index_visits_every_cell_once_with_unit_steps() {
     assert_eq!(hilbert_index(uvec2(70, 129)), hilbert_index(uvec2(6, 1)));
 }
 
+/// The kernel's straight-line Hilbert index equals the spec's loop (gtao-raymarch-hybrid §1.6,
+/// XeGTAO's `HilbertIndex`: for b = 32…1, `idx += b²·((3·rx) ^ ry)`; when ry = 0, reflect if rx = 1
+/// and swap) on every cell of the tile: the same curve in the same orientation, which the
+/// visiting test above alone would not pin down.
+#[test]
+fn hilbert_index_is_the_spec_loop() {
+    let spec = |mut x: u32, mut y: u32| {
+        let mut index = 0;
+        let mut b = 32;
+        while b > 0 {
+            let (rx, ry) = ((x & b > 0) as u32, (y & b > 0) as u32);
+            index += b * b * ((3 * rx) ^ ry);
+            if ry == 0 {
+                if rx == 1 {
+                    (x, y) = (63 - x, 63 - y);
+                }
+                (x, y) = (y, x);
+            }
+            b /= 2;
+        }
+        index
+    };
+    for y in 0..64 {
+        for x in 0..64 {
+            assert_eq!(hilbert_index(uvec2(x, y)), spec(x, y), "cell ({x}, {y})");
+        }
+    }
+}
+
 /// R2 noise against the closed form `frac(0.5 + i·(1/ρ, 1/ρ²))` in f64, ρ the real root of
 /// ρ³ = ρ + 1 (found here by Newton's method). The kernel evaluates in f32 as XeGTAO does, so the
 /// error grows with i: |Δ| ≤ i·2⁻²³ + 2⁻²³ covers the rounding of the product.

@@ -64,752 +64,723 @@ var<uniform> params: type_23;
 
 fn function_() {
     var local: array<type_25, 4>;
-    var phi_2976_: bool;
-    var phi_2991_: bool;
-    var phi_2952_: vec2<f32>;
-    var phi_3008_: u32;
-    var phi_3009_: u32;
-    var phi_3010_: u32;
-    var phi_3011_: u32;
-    var phi_3034_: u32;
-    var phi_3035_: u32;
-    var phi_3038_: u32;
-    var phi_3039_: u32;
-    var phi_3043_: u32;
-    var phi_3044_: u32;
-    var phi_3045_: u32;
-    var phi_3046_: u32;
+    var phi_3106_: bool;
+    var phi_3121_: bool;
+    var phi_3082_: vec2<f32>;
+    var phi_3533_: bool;
+    var phi_997_: u32;
+    var phi_1000_: f32;
+    var phi_1002_: f32;
+    var phi_1197_: u32;
+    var phi_1200_: u32;
+    var phi_1255_: f32;
+    var phi_1801_: bool;
+    var phi_2152_: f32;
+    var phi_2194_: u32;
+    var phi_2197_: u32;
+    var phi_2198_: u32;
+    var phi_2199_: bool;
+    var phi_2213_: u32;
+    var phi_2237_: bool;
+    var phi_2588_: f32;
+    var phi_2630_: u32;
+    var phi_2633_: u32;
+    var phi_2634_: u32;
+    var phi_2635_: bool;
+    var phi_2649_: u32;
+    var phi_1198_: u32;
+    var phi_1201_: u32;
     var local_1: u32;
-    var phi_3275_: bool;
-    var phi_867_: u32;
-    var phi_870_: f32;
-    var phi_872_: f32;
-    var phi_1067_: u32;
-    var phi_1070_: u32;
-    var phi_1125_: f32;
-    var phi_1671_: bool;
-    var phi_2022_: f32;
-    var phi_2064_: u32;
-    var phi_2067_: u32;
-    var phi_2068_: u32;
-    var phi_2069_: bool;
-    var phi_2083_: u32;
-    var phi_2107_: bool;
-    var phi_2458_: f32;
-    var phi_2500_: u32;
-    var phi_2503_: u32;
-    var phi_2504_: u32;
-    var phi_2505_: bool;
-    var phi_2519_: u32;
-    var phi_1068_: u32;
-    var phi_1071_: u32;
+    var phi_2733_: u32;
+    var phi_2736_: f32;
     var local_2: u32;
-    var phi_2603_: u32;
-    var phi_2606_: f32;
-    var local_3: u32;
-    var phi_2604_: u32;
-    var phi_2607_: f32;
-    var phi_3124_: bool;
-    var local_4: f32;
-    var phi_3352_: bool;
-    var phi_2656_: f32;
-    var phi_2657_: f32;
-    var phi_2550_: u32;
-    var phi_2553_: f32;
-    var phi_2555_: f32;
-    var local_5: u32;
-    var phi_2551_: u32;
-    var phi_2554_: f32;
-    var phi_2556_: f32;
+    var phi_2734_: u32;
+    var phi_2737_: f32;
+    var phi_3382_: bool;
+    var local_3: f32;
+    var phi_3626_: bool;
+    var phi_2786_: f32;
+    var phi_2787_: f32;
+    var phi_2680_: u32;
+    var phi_2683_: f32;
+    var phi_2685_: f32;
+    var local_4: u32;
+    var phi_2681_: u32;
+    var phi_2684_: f32;
+    var phi_2686_: f32;
+    var local_5: f32;
+    var phi_3620_: bool;
+    var phi_2788_: f32;
+    var phi_2789_: f32;
+    var phi_3619_: bool;
+    var phi_998_: u32;
+    var phi_1001_: f32;
+    var phi_1003_: f32;
+    var phi_3618_: bool;
     var local_6: f32;
-    var phi_3346_: bool;
-    var phi_2658_: f32;
-    var phi_2659_: f32;
-    var phi_3345_: bool;
-    var phi_868_: u32;
-    var phi_871_: f32;
-    var phi_873_: f32;
-    var phi_3344_: bool;
     var local_7: f32;
     var local_8: f32;
-    var local_9: f32;
-    var phi_2667_: f32;
-    var phi_3098_: bool;
-    var phi_2716_: u32;
+    var phi_2797_: f32;
+    var phi_3356_: bool;
+    var phi_2846_: u32;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e94 = id_1;
-            let _e101 = params.member.member_4.member.member[0u];
-            let _e106 = select(select(u32(_e101), 0u, (_e101 < 0f)), 4294967295u, (_e101 > 4294967000f));
-            let _e112 = params.member.member_4.member.member[1u];
-            let _e117 = select(select(u32(_e112), 0u, (_e112 < 0f)), 4294967295u, (_e112 > 4294967000f));
-            if (_e94.x >= _e106) {
+            let _e96 = id_1;
+            let _e103 = params.member.member_4.member.member[0u];
+            let _e108 = select(select(u32(_e103), 0u, (_e103 < 0f)), 4294967295u, (_e103 > 4294967000f));
+            let _e114 = params.member.member_4.member.member[1u];
+            let _e119 = select(select(u32(_e114), 0u, (_e114 < 0f)), 4294967295u, (_e114 > 4294967000f));
+            if (_e96.x >= _e108) {
             } else {
-                if (_e94.y >= _e117) {
+                if (_e96.y >= _e119) {
                 } else {
-                    let _e123 = ((_e94.y * _e106) + _e94.x);
-                    let _e125 = mips.member[_e123];
-                    let _e126 = bitcast<i32>(_e94.x);
-                    let _e127 = (_e126 + -1i);
-                    let _e129 = select(0i, _e127, (0i < _e127));
-                    let _e131 = (bitcast<i32>(_e106) - 1i);
-                    let _e135 = bitcast<i32>(_e94.y);
-                    let _e137 = select(0i, _e135, (0i < _e135));
-                    let _e139 = (bitcast<i32>(_e117) - 1i);
-                    let _e143 = (bitcast<u32>(select(_e137, _e139, (_e139 < _e137))) * _e106);
-                    let _e146 = mips.member[(_e143 + bitcast<u32>(select(_e129, _e131, (_e131 < _e129))))];
-                    let _e147 = (_e126 + 1i);
-                    let _e149 = select(0i, _e147, (0i < _e147));
-                    let _e155 = mips.member[(_e143 + bitcast<u32>(select(_e149, _e131, (_e131 < _e149))))];
-                    let _e157 = select(0i, _e126, (0i < _e126));
-                    let _e160 = bitcast<u32>(select(_e157, _e131, (_e131 < _e157)));
-                    let _e161 = (_e135 + -1i);
-                    let _e163 = select(0i, _e161, (0i < _e161));
-                    let _e170 = mips.member[((bitcast<u32>(select(_e163, _e139, (_e139 < _e163))) * _e106) + _e160)];
-                    let _e171 = (_e135 + 1i);
-                    let _e173 = select(0i, _e171, (0i < _e171));
-                    let _e180 = mips.member[((bitcast<u32>(select(_e173, _e139, (_e139 < _e173))) * _e106) + _e160)];
-                    let _e181 = (_e146 - _e125);
-                    let _e182 = (_e155 - _e125);
-                    let _e183 = (_e170 - _e125);
-                    let _e184 = (_e180 - _e125);
-                    let _e186 = ((_e182 - _e181) * 0.5f);
+                    let _e125 = ((_e96.y * _e108) + _e96.x);
+                    let _e127 = mips.member[_e125];
+                    let _e128 = bitcast<i32>(_e96.x);
+                    let _e129 = (_e128 + -1i);
+                    let _e131 = select(0i, _e129, (0i < _e129));
+                    let _e133 = (bitcast<i32>(_e108) - 1i);
+                    let _e137 = bitcast<i32>(_e96.y);
+                    let _e139 = select(0i, _e137, (0i < _e137));
+                    let _e141 = (bitcast<i32>(_e119) - 1i);
+                    let _e145 = (bitcast<u32>(select(_e139, _e141, (_e141 < _e139))) * _e108);
+                    let _e148 = mips.member[(_e145 + bitcast<u32>(select(_e131, _e133, (_e133 < _e131))))];
+                    let _e149 = (_e128 + 1i);
+                    let _e151 = select(0i, _e149, (0i < _e149));
+                    let _e157 = mips.member[(_e145 + bitcast<u32>(select(_e151, _e133, (_e133 < _e151))))];
+                    let _e159 = select(0i, _e128, (0i < _e128));
+                    let _e162 = bitcast<u32>(select(_e159, _e133, (_e133 < _e159)));
+                    let _e163 = (_e137 + -1i);
+                    let _e165 = select(0i, _e163, (0i < _e163));
+                    let _e172 = mips.member[((bitcast<u32>(select(_e165, _e141, (_e141 < _e165))) * _e108) + _e162)];
+                    let _e173 = (_e137 + 1i);
+                    let _e175 = select(0i, _e173, (0i < _e173));
+                    let _e182 = mips.member[((bitcast<u32>(select(_e175, _e141, (_e141 < _e175))) * _e108) + _e162)];
+                    let _e183 = (_e148 - _e127);
+                    let _e184 = (_e157 - _e127);
+                    let _e185 = (_e172 - _e127);
+                    let _e186 = (_e182 - _e127);
                     let _e188 = ((_e184 - _e183) * 0.5f);
-                    let _e189 = (_e125 * 0.011f);
-                    let _e191 = abs(_e181);
-                    let _e192 = abs((_e181 + _e186));
-                    let _e198 = (1.25f - (select(_e192, _e191, ((_e191 < _e192) || (_e192 != _e192))) / _e189));
-                    let _e202 = select(0f, select(1f, _e198, (_e198 < 1f)), (_e198 > 0f));
-                    let _e204 = abs(_e182);
-                    let _e205 = abs((_e182 - _e186));
-                    let _e211 = (1.25f - (select(_e205, _e204, ((_e204 < _e205) || (_e205 != _e205))) / _e189));
-                    let _e215 = select(0f, select(1f, _e211, (_e211 < 1f)), (_e211 > 0f));
-                    let _e217 = abs(_e183);
-                    let _e218 = abs((_e183 + _e188));
-                    let _e224 = (1.25f - (select(_e218, _e217, ((_e217 < _e218) || (_e218 != _e218))) / _e189));
-                    let _e228 = select(0f, select(1f, _e224, (_e224 < 1f)), (_e224 > 0f));
-                    let _e230 = abs(_e184);
-                    let _e231 = abs((_e184 - _e188));
-                    let _e237 = (1.25f - (select(_e231, _e230, ((_e230 < _e231) || (_e231 != _e231))) / _e189));
-                    let _e241 = select(0f, select(1f, _e237, (_e237 < 1f)), (_e237 > 0f));
-                    let _e246 = (select(0f, select(1f, _e202, (_e202 < 1f)), (_e202 > 0f)) * 2.9f);
-                    let _e248 = floor((_e246 + 0.5f));
-                    let _e257 = select(_e248, (_e248 - 1f), (((_e248 - _e246) == 0.5f) && ((floor((_e248 * 0.5f)) * 2f) != _e248)));
-                    let _e259 = select(0f, _e257, (_e257 > 0f));
-                    let _e268 = (select(0f, select(1f, _e215, (_e215 < 1f)), (_e215 > 0f)) * 2.9f);
-                    let _e270 = floor((_e268 + 0.5f));
-                    let _e279 = select(_e270, (_e270 - 1f), (((_e270 - _e268) == 0.5f) && ((floor((_e270 * 0.5f)) * 2f) != _e270)));
-                    let _e281 = select(0f, _e279, (_e279 > 0f));
-                    let _e291 = (select(0f, select(1f, _e228, (_e228 < 1f)), (_e228 > 0f)) * 2.9f);
-                    let _e293 = floor((_e291 + 0.5f));
-                    let _e302 = select(_e293, (_e293 - 1f), (((_e293 - _e291) == 0.5f) && ((floor((_e293 * 0.5f)) * 2f) != _e293)));
-                    let _e304 = select(0f, _e302, (_e302 > 0f));
-                    let _e314 = (select(0f, select(1f, _e241, (_e241 < 1f)), (_e241 > 0f)) * 2.9f);
-                    let _e316 = floor((_e314 + 0.5f));
-                    let _e325 = select(_e316, (_e316 - 1f), (((_e316 - _e314) == 0.5f) && ((floor((_e316 * 0.5f)) * 2f) != _e316)));
-                    let _e327 = select(0f, _e325, (_e325 > 0f));
-                    let _e334 = ((f32(_e94.x) + 0.5f) / _e101);
-                    let _e337 = ((f32(_e94.y) + 0.5f) / _e112);
-                    let _e338 = (_e125 * 0.99999f);
-                    let _e346 = params.member.member_4.member.member_1[0u];
-                    let _e348 = ((((_e334 * 2f) - 1f) * _e346) * _e338);
-                    let _e356 = params.member.member_4.member.member_1[1u];
-                    let _e358 = ((((_e337 * -2f) + 1f) * _e356) * _e338);
-                    let _e359 = -(_e348);
-                    let _e360 = -(_e358);
-                    let _e361 = (_e125 * -0.99999f);
-                    let _e368 = (1f / sqrt((((_e359 * _e359) + (_e360 * _e360)) + (_e361 * _e361))));
-                    let _e369 = (_e359 * _e368);
-                    let _e370 = (_e360 * _e368);
-                    let _e371 = (_e361 * _e368);
-                    let _e374 = normals.member[_e123];
-                    let _e382 = (f32((bitcast<i32>(((_e374 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e382 != _e382) {
-                        phi_2976_ = true;
+                    let _e190 = ((_e186 - _e185) * 0.5f);
+                    let _e191 = (_e127 * 0.011f);
+                    let _e193 = abs(_e183);
+                    let _e194 = abs((_e183 + _e188));
+                    let _e200 = (1.25f - (select(_e194, _e193, ((_e193 < _e194) || (_e194 != _e194))) / _e191));
+                    let _e204 = select(0f, select(1f, _e200, (_e200 < 1f)), (_e200 > 0f));
+                    let _e206 = abs(_e184);
+                    let _e207 = abs((_e184 - _e188));
+                    let _e213 = (1.25f - (select(_e207, _e206, ((_e206 < _e207) || (_e207 != _e207))) / _e191));
+                    let _e217 = select(0f, select(1f, _e213, (_e213 < 1f)), (_e213 > 0f));
+                    let _e219 = abs(_e185);
+                    let _e220 = abs((_e185 + _e190));
+                    let _e226 = (1.25f - (select(_e220, _e219, ((_e219 < _e220) || (_e220 != _e220))) / _e191));
+                    let _e230 = select(0f, select(1f, _e226, (_e226 < 1f)), (_e226 > 0f));
+                    let _e232 = abs(_e186);
+                    let _e233 = abs((_e186 - _e190));
+                    let _e239 = (1.25f - (select(_e233, _e232, ((_e232 < _e233) || (_e233 != _e233))) / _e191));
+                    let _e243 = select(0f, select(1f, _e239, (_e239 < 1f)), (_e239 > 0f));
+                    let _e248 = (select(0f, select(1f, _e204, (_e204 < 1f)), (_e204 > 0f)) * 2.9f);
+                    let _e250 = floor((_e248 + 0.5f));
+                    let _e259 = select(_e250, (_e250 - 1f), (((_e250 - _e248) == 0.5f) && ((floor((_e250 * 0.5f)) * 2f) != _e250)));
+                    let _e261 = select(0f, _e259, (_e259 > 0f));
+                    let _e270 = (select(0f, select(1f, _e217, (_e217 < 1f)), (_e217 > 0f)) * 2.9f);
+                    let _e272 = floor((_e270 + 0.5f));
+                    let _e281 = select(_e272, (_e272 - 1f), (((_e272 - _e270) == 0.5f) && ((floor((_e272 * 0.5f)) * 2f) != _e272)));
+                    let _e283 = select(0f, _e281, (_e281 > 0f));
+                    let _e293 = (select(0f, select(1f, _e230, (_e230 < 1f)), (_e230 > 0f)) * 2.9f);
+                    let _e295 = floor((_e293 + 0.5f));
+                    let _e304 = select(_e295, (_e295 - 1f), (((_e295 - _e293) == 0.5f) && ((floor((_e295 * 0.5f)) * 2f) != _e295)));
+                    let _e306 = select(0f, _e304, (_e304 > 0f));
+                    let _e316 = (select(0f, select(1f, _e243, (_e243 < 1f)), (_e243 > 0f)) * 2.9f);
+                    let _e318 = floor((_e316 + 0.5f));
+                    let _e327 = select(_e318, (_e318 - 1f), (((_e318 - _e316) == 0.5f) && ((floor((_e318 * 0.5f)) * 2f) != _e318)));
+                    let _e329 = select(0f, _e327, (_e327 > 0f));
+                    let _e336 = ((f32(_e96.x) + 0.5f) / _e103);
+                    let _e339 = ((f32(_e96.y) + 0.5f) / _e114);
+                    let _e340 = (_e127 * 0.99999f);
+                    let _e348 = params.member.member_4.member.member_1[0u];
+                    let _e350 = ((((_e336 * 2f) - 1f) * _e348) * _e340);
+                    let _e358 = params.member.member_4.member.member_1[1u];
+                    let _e360 = ((((_e339 * -2f) + 1f) * _e358) * _e340);
+                    let _e361 = -(_e350);
+                    let _e362 = -(_e360);
+                    let _e363 = (_e127 * -0.99999f);
+                    let _e370 = (1f / sqrt((((_e361 * _e361) + (_e362 * _e362)) + (_e363 * _e363))));
+                    let _e371 = (_e361 * _e370);
+                    let _e372 = (_e362 * _e370);
+                    let _e373 = (_e363 * _e370);
+                    let _e376 = normals.member[_e125];
+                    let _e384 = (f32((bitcast<i32>(((_e376 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e384 != _e384) {
+                        phi_3106_ = true;
                     } else {
-                        phi_2976_ = (-1f >= _e382);
+                        phi_3106_ = (-1f >= _e384);
                     }
-                    let _e386 = phi_2976_;
-                    let _e387 = select(_e382, -1f, _e386);
-                    let _e397 = (f32((bitcast<i32>((((_e374 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e397 != _e397) {
-                        phi_2991_ = true;
+                    let _e388 = phi_3106_;
+                    let _e389 = select(_e384, -1f, _e388);
+                    let _e399 = (f32((bitcast<i32>((((_e376 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                    if (_e399 != _e399) {
+                        phi_3121_ = true;
                     } else {
-                        phi_2991_ = (-1f >= _e397);
+                        phi_3121_ = (-1f >= _e399);
                     }
-                    let _e401 = phi_2991_;
-                    let _e402 = select(_e397, -1f, _e401);
-                    let _e405 = (1f - abs(_e387));
-                    let _e406 = abs(_e402);
-                    let _e407 = (_e405 - _e406);
-                    if (_e407 < 0f) {
-                        phi_2952_ = vec2<f32>(((1f - _e406) * select(1f, -1f, (_e387 < 0f))), (_e405 * select(1f, -1f, (_e402 < 0f))));
+                    let _e403 = phi_3121_;
+                    let _e404 = select(_e399, -1f, _e403);
+                    let _e407 = (1f - abs(_e389));
+                    let _e408 = abs(_e404);
+                    let _e409 = (_e407 - _e408);
+                    if (_e409 < 0f) {
+                        phi_3082_ = vec2<f32>(((1f - _e408) * select(1f, -1f, (_e389 < 0f))), (_e407 * select(1f, -1f, (_e404 < 0f))));
                     } else {
-                        phi_2952_ = vec2<f32>(_e387, _e402);
+                        phi_3082_ = vec2<f32>(_e389, _e404);
                     }
-                    let _e418 = phi_2952_;
-                    let _e427 = (1f / sqrt((((_e418.x * _e418.x) + (_e418.y * _e418.y)) + (_e407 * _e407))));
-                    let _e428 = (_e418.x * _e427);
-                    let _e429 = (_e418.y * _e427);
-                    let _e430 = (_e407 * _e427);
-                    let _e431 = -(_e430);
-                    let _e437 = ((((_e428 * _e369) + (_e429 * _e370)) + (_e431 * _e371)) < 0f);
-                    let _e440 = select(_e428, -(_e428), _e437);
-                    let _e441 = select(_e429, -(_e429), _e437);
-                    let _e442 = select(_e431, _e430, _e437);
-                    let _e446 = params.member.member_4.member_1;
-                    let _e450 = params.member.member_4.member_2;
-                    let _e455 = ((_e446 * _e450) / (((_e125 * 1.99998f) * _e346) / _e101));
-                    let _e460 = params.member.member_4.member_11;
-                    phi_3008_ = (_e94.y & 63u);
-                    phi_3009_ = (_e94.x & 63u);
-                    phi_3010_ = 32u;
-                    phi_3011_ = 0u;
-                    loop {
-                        let _e464 = phi_3008_;
-                        let _e466 = phi_3009_;
-                        let _e468 = phi_3010_;
-                        let _e470 = phi_3011_;
-                        local_1 = _e470;
-                        let _e471 = (_e468 > 0u);
-                        if _e471 {
-                            let _e474 = select(0u, 1u, ((_e466 & _e468) != 0u));
-                            let _e477 = select(0u, 1u, ((_e464 & _e468) != 0u));
-                            if (_e477 == 0u) {
-                                if (_e474 == 1u) {
-                                    phi_3034_ = (63u - _e464);
-                                    phi_3035_ = (63u - _e466);
-                                } else {
-                                    phi_3034_ = _e464;
-                                    phi_3035_ = _e466;
-                                }
-                                let _e488 = phi_3034_;
-                                let _e490 = phi_3035_;
-                                phi_3038_ = _e490;
-                                phi_3039_ = _e488;
-                            } else {
-                                phi_3038_ = _e464;
-                                phi_3039_ = _e466;
-                            }
-                            let _e492 = phi_3038_;
-                            let _e494 = phi_3039_;
-                            phi_3043_ = _e492;
-                            phi_3044_ = _e494;
-                            phi_3045_ = (_e468 / 2u);
-                            phi_3046_ = (_e470 + ((_e468 * _e468) * ((3u * _e474) ^ _e477)));
-                        } else {
-                            phi_3043_ = u32();
-                            phi_3044_ = u32();
-                            phi_3045_ = u32();
-                            phi_3046_ = u32();
-                        }
-                        let _e497 = phi_3043_;
-                        let _e499 = phi_3044_;
-                        let _e501 = phi_3045_;
-                        let _e503 = phi_3046_;
-                        continue;
-                        continuing {
-                            phi_3008_ = _e497;
-                            phi_3009_ = _e499;
-                            phi_3010_ = _e501;
-                            phi_3011_ = _e503;
-                            break if !(_e471);
-                        }
-                    }
-                    let _e508 = local_1;
-                    let _e510 = f32((_e508 + (288u * (_e460 % 64u))));
-                    let _e512 = (0.5f + (_e510 * 0.7548777f));
-                    let _e516 = (0.5f + (_e510 * 0.5698403f));
-                    let _e523 = params.member.member_4.member.member_3;
-                    let _e526 = select(false, (_e125 < _e523), (_e125 > 0f));
-                    if _e526 {
-                        let _e530 = params.member.member_4.member_8;
-                        let _e532 = select(1u, _e530, (1u < _e530));
-                        phi_3275_ = false;
-                        phi_867_ = 0u;
-                        phi_870_ = 0f;
-                        phi_872_ = 0f;
+                    let _e420 = phi_3082_;
+                    let _e429 = (1f / sqrt((((_e420.x * _e420.x) + (_e420.y * _e420.y)) + (_e409 * _e409))));
+                    let _e430 = (_e420.x * _e429);
+                    let _e431 = (_e420.y * _e429);
+                    let _e432 = (_e409 * _e429);
+                    let _e433 = -(_e432);
+                    let _e439 = ((((_e430 * _e371) + (_e431 * _e372)) + (_e433 * _e373)) < 0f);
+                    let _e442 = select(_e430, -(_e430), _e439);
+                    let _e443 = select(_e431, -(_e431), _e439);
+                    let _e444 = select(_e433, _e432, _e439);
+                    let _e448 = params.member.member_4.member_1;
+                    let _e452 = params.member.member_4.member_2;
+                    let _e457 = ((_e448 * _e452) / (((_e127 * 1.99998f) * _e348) / _e103));
+                    let _e462 = params.member.member_4.member_11;
+                    let _e463 = (_e96.x & 63u);
+                    let _e464 = (_e96.y & 63u);
+                    let _e467 = select(0u, 1u, ((_e463 & 32u) != 0u));
+                    let _e470 = select(0u, 1u, ((_e464 & 32u) != 0u));
+                    let _e474 = (_e470 == 0u);
+                    let _e476 = (_e474 && (_e467 == 1u));
+                    let _e479 = select(_e463, (63u - _e463), _e476);
+                    let _e480 = select(_e464, (63u - _e464), _e476);
+                    let _e481 = select(_e479, _e480, _e474);
+                    let _e482 = select(_e480, _e479, _e474);
+                    let _e485 = select(0u, 1u, ((_e481 & 16u) != 0u));
+                    let _e488 = select(0u, 1u, ((_e482 & 16u) != 0u));
+                    let _e493 = (_e488 == 0u);
+                    let _e495 = (_e493 && (_e485 == 1u));
+                    let _e498 = select(_e481, (63u - _e481), _e495);
+                    let _e499 = select(_e482, (63u - _e482), _e495);
+                    let _e500 = select(_e498, _e499, _e493);
+                    let _e501 = select(_e499, _e498, _e493);
+                    let _e504 = select(0u, 1u, ((_e500 & 8u) != 0u));
+                    let _e507 = select(0u, 1u, ((_e501 & 8u) != 0u));
+                    let _e512 = (_e507 == 0u);
+                    let _e514 = (_e512 && (_e504 == 1u));
+                    let _e517 = select(_e500, (63u - _e500), _e514);
+                    let _e518 = select(_e501, (63u - _e501), _e514);
+                    let _e519 = select(_e517, _e518, _e512);
+                    let _e520 = select(_e518, _e517, _e512);
+                    let _e523 = select(0u, 1u, ((_e519 & 4u) != 0u));
+                    let _e526 = select(0u, 1u, ((_e520 & 4u) != 0u));
+                    let _e531 = (_e526 == 0u);
+                    let _e533 = (_e531 && (_e523 == 1u));
+                    let _e536 = select(_e519, (63u - _e519), _e533);
+                    let _e537 = select(_e520, (63u - _e520), _e533);
+                    let _e538 = select(_e536, _e537, _e531);
+                    let _e539 = select(_e537, _e536, _e531);
+                    let _e542 = select(0u, 1u, ((_e538 & 2u) != 0u));
+                    let _e545 = select(0u, 1u, ((_e539 & 2u) != 0u));
+                    let _e550 = (_e545 == 0u);
+                    let _e552 = (_e550 && (_e542 == 1u));
+                    let _e555 = select(_e538, (63u - _e538), _e552);
+                    let _e556 = select(_e539, (63u - _e539), _e552);
+                    let _e571 = f32((((((((1024u * ((3u * _e467) ^ _e470)) + (256u * ((3u * _e485) ^ _e488))) + (64u * ((3u * _e504) ^ _e507))) + (16u * ((3u * _e523) ^ _e526))) + (4u * ((3u * _e542) ^ _e545))) + ((3u * select(0u, 1u, ((select(_e555, _e556, _e550) & 1u) != 0u))) ^ select(0u, 1u, ((select(_e556, _e555, _e550) & 1u) != 0u)))) + (288u * (_e462 % 64u))));
+                    let _e573 = (0.5f + (_e571 * 0.7548777f));
+                    let _e577 = (0.5f + (_e571 * 0.5698403f));
+                    let _e584 = params.member.member_4.member.member_3;
+                    let _e587 = select(false, (_e127 < _e584), (_e127 > 0f));
+                    if _e587 {
+                        let _e591 = params.member.member_4.member_8;
+                        let _e593 = select(1u, _e591, (1u < _e591));
+                        phi_3533_ = false;
+                        phi_997_ = 0u;
+                        phi_1000_ = 0f;
+                        phi_1002_ = 0f;
                         loop {
-                            let _e534 = phi_3275_;
-                            let _e536 = phi_867_;
-                            let _e538 = phi_870_;
-                            let _e540 = phi_872_;
-                            local_7 = _e538;
-                            local_8 = _e540;
-                            local_9 = _e538;
-                            let _e541 = (_e536 < _e532);
-                            if _e541 {
-                                let _e546 = ((((_e512 - floor(_e512)) + f32(_e536)) * 3.1415927f) / f32(_e532));
-                                let _e547 = sin(_e546);
-                                let _e548 = cos(_e546);
-                                let _e554 = ((_e548 * _e369) + (_e547 * _e370));
-                                let _e558 = (_e548 - (_e369 * _e554));
-                                let _e559 = (_e547 - (_e370 * _e554));
-                                let _e560 = -((_e371 * _e554));
-                                let _e563 = ((_e559 * _e371) - (_e370 * _e560));
-                                let _e566 = ((_e560 * _e369) - (_e371 * _e558));
-                                let _e569 = ((_e558 * _e370) - (_e369 * _e559));
-                                let _e576 = (1f / sqrt((((_e563 * _e563) + (_e566 * _e566)) + (_e569 * _e569))));
-                                let _e577 = (_e563 * _e576);
-                                let _e578 = (_e566 * _e576);
-                                let _e579 = (_e569 * _e576);
-                                let _e584 = (((_e440 * _e577) + (_e441 * _e578)) + (_e442 * _e579));
-                                let _e588 = (_e440 - (_e577 * _e584));
-                                let _e589 = (_e441 - (_e578 * _e584));
-                                let _e590 = (_e442 - (_e579 * _e584));
-                                let _e596 = sqrt((((_e588 * _e588) + (_e589 * _e589)) + (_e590 * _e590)));
-                                let _e601 = (((_e558 * _e588) + (_e559 * _e589)) + (_e560 * _e590));
-                                let _e611 = ((((_e588 * _e369) + (_e589 * _e370)) + (_e590 * _e371)) / _e596);
-                                let _e615 = select(0f, select(1f, _e611, (_e611 < 1f)), (_e611 > 0f));
-                                let _e616 = abs(_e615);
-                                let _e634 = (((((((((((((((_e616 * -0.0012624911f) + 0.00667009f) * _e616) - 0.017088126f) * _e616) + 0.03089188f) * _e616) - 0.050174303f) * _e616) + 0.08897899f) * _e616) - 0.2145988f) * _e616) + 1.5707963f) * sqrt((1f - _e616)));
-                                let _e637 = (select(select(0f, -1f, (_e601 < 0f)), 1f, (_e601 > 0f)) * select((3.1415927f - _e634), _e634, (_e615 >= 0f)));
-                                let _e641 = params.member.member_4.member_9;
-                                let _e643 = select(1u, _e641, (1u < _e641));
-                                phi_1067_ = 0u;
-                                phi_1070_ = 0u;
+                            let _e595 = phi_3533_;
+                            let _e597 = phi_997_;
+                            let _e599 = phi_1000_;
+                            let _e601 = phi_1002_;
+                            local_6 = _e599;
+                            local_7 = _e601;
+                            local_8 = _e599;
+                            let _e602 = (_e597 < _e593);
+                            if _e602 {
+                                let _e607 = ((((_e573 - floor(_e573)) + f32(_e597)) * 3.1415927f) / f32(_e593));
+                                let _e608 = sin(_e607);
+                                let _e609 = cos(_e607);
+                                let _e615 = ((_e609 * _e371) + (_e608 * _e372));
+                                let _e619 = (_e609 - (_e371 * _e615));
+                                let _e620 = (_e608 - (_e372 * _e615));
+                                let _e621 = -((_e373 * _e615));
+                                let _e624 = ((_e620 * _e373) - (_e372 * _e621));
+                                let _e627 = ((_e621 * _e371) - (_e373 * _e619));
+                                let _e630 = ((_e619 * _e372) - (_e371 * _e620));
+                                let _e637 = (1f / sqrt((((_e624 * _e624) + (_e627 * _e627)) + (_e630 * _e630))));
+                                let _e638 = (_e624 * _e637);
+                                let _e639 = (_e627 * _e637);
+                                let _e640 = (_e630 * _e637);
+                                let _e645 = (((_e442 * _e638) + (_e443 * _e639)) + (_e444 * _e640));
+                                let _e649 = (_e442 - (_e638 * _e645));
+                                let _e650 = (_e443 - (_e639 * _e645));
+                                let _e651 = (_e444 - (_e640 * _e645));
+                                let _e657 = sqrt((((_e649 * _e649) + (_e650 * _e650)) + (_e651 * _e651)));
+                                let _e662 = (((_e619 * _e649) + (_e620 * _e650)) + (_e621 * _e651));
+                                let _e672 = ((((_e649 * _e371) + (_e650 * _e372)) + (_e651 * _e373)) / _e657);
+                                let _e676 = select(0f, select(1f, _e672, (_e672 < 1f)), (_e672 > 0f));
+                                let _e677 = abs(_e676);
+                                let _e695 = (((((((((((((((_e677 * -0.0012624911f) + 0.00667009f) * _e677) - 0.017088126f) * _e677) + 0.03089188f) * _e677) - 0.050174303f) * _e677) + 0.08897899f) * _e677) - 0.2145988f) * _e677) + 1.5707963f) * sqrt((1f - _e677)));
+                                let _e698 = (select(select(0f, -1f, (_e662 < 0f)), 1f, (_e662 > 0f)) * select((3.1415927f - _e695), _e695, (_e676 >= 0f)));
+                                let _e702 = params.member.member_4.member_9;
+                                let _e704 = select(1u, _e702, (1u < _e702));
+                                phi_1197_ = 0u;
+                                phi_1200_ = 0u;
                                 loop {
-                                    let _e645 = phi_1067_;
-                                    let _e647 = phi_1070_;
-                                    local_2 = _e647;
-                                    local_3 = _e647;
-                                    local_5 = _e647;
-                                    let _e648 = (_e645 < _e643);
-                                    if _e648 {
-                                        let _e653 = ((_e516 - floor(_e516)) + (f32((_e536 + (_e645 * _e643))) * 0.618034f));
-                                        let _e660 = (((_e653 - floor(_e653)) + f32(_e645)) * (1f / f32(_e643)));
-                                        let _e664 = params.member.member_4.member_4;
-                                        if (_e664 == 2f) {
-                                            phi_1125_ = (_e660 * _e660);
+                                    let _e706 = phi_1197_;
+                                    let _e708 = phi_1200_;
+                                    local_1 = _e708;
+                                    local_2 = _e708;
+                                    local_4 = _e708;
+                                    let _e709 = (_e706 < _e704);
+                                    if _e709 {
+                                        let _e714 = ((_e577 - floor(_e577)) + (f32((_e597 + (_e706 * _e704))) * 0.618034f));
+                                        let _e721 = (((_e714 - floor(_e714)) + f32(_e706)) * (1f / f32(_e704)));
+                                        let _e725 = params.member.member_4.member_4;
+                                        if (_e725 == 2f) {
+                                            phi_1255_ = (_e721 * _e721);
                                         } else {
-                                            phi_1125_ = pow(_e660, _e664);
+                                            phi_1255_ = pow(_e721, _e725);
                                         }
-                                        let _e669 = phi_1125_;
-                                        let _e670 = (_e669 + (1.3f / _e455));
-                                        let _e671 = ((_e548 * _e455) * _e670);
-                                        let _e672 = ((-(_e547) * _e455) * _e670);
-                                        let _e681 = params.member.member_4.member_7;
-                                        let _e682 = (log2(sqrt(((_e671 * _e671) + (_e672 * _e672)))) - _e681);
-                                        let _e689 = (-1f - floor((-0.5f - select(0f, select(5f, _e682, (_e682 < 5f)), (_e682 > 0f)))));
-                                        let _e691 = floor((_e671 + 0.5f));
-                                        let _e702 = (select(_e691, (_e691 - 1f), (((_e691 - _e671) == 0.5f) && ((floor((_e691 * 0.5f)) * 2f) != _e691))) * (1f / _e101));
-                                        let _e704 = floor((_e672 + 0.5f));
-                                        let _e715 = (select(_e704, (_e704 - 1f), (((_e704 - _e672) == 0.5f) && ((floor((_e704 * 0.5f)) * 2f) != _e704))) * (1f / _e112));
-                                        let _e716 = (_e334 + _e702);
-                                        let _e717 = (_e337 + _e715);
-                                        let _e718 = (_e334 - _e702);
-                                        let _e719 = (_e337 - _e715);
-                                        let _e721 = select(1u, _e106, (1u < _e106));
-                                        let _e723 = select(1u, _e117, (1u < _e117));
-                                        let _e726 = (_e721 * _e723);
-                                        let _e728 = (_e106 >> bitcast<u32>(1u));
-                                        let _e730 = select(1u, _e728, (1u < _e728));
-                                        let _e732 = (_e117 >> bitcast<u32>(1u));
-                                        let _e734 = select(1u, _e732, (1u < _e732));
-                                        let _e735 = (_e689 >= 1f);
-                                        let _e744 = (_e726 + (_e730 * _e734));
-                                        let _e746 = (_e106 >> bitcast<u32>(2u));
-                                        let _e748 = select(1u, _e746, (1u < _e746));
-                                        let _e750 = (_e117 >> bitcast<u32>(2u));
-                                        let _e752 = select(1u, _e750, (1u < _e750));
-                                        let _e753 = (_e689 >= 2f);
-                                        let _e762 = (_e744 + (_e748 * _e752));
-                                        let _e764 = (_e106 >> bitcast<u32>(3u));
-                                        let _e766 = select(1u, _e764, (1u < _e764));
-                                        let _e768 = (_e117 >> bitcast<u32>(3u));
-                                        let _e770 = select(1u, _e768, (1u < _e768));
-                                        let _e771 = (_e689 >= 3f);
-                                        let _e782 = (_e106 >> bitcast<u32>(4u));
-                                        let _e784 = select(1u, _e782, (1u < _e782));
-                                        let _e786 = (_e117 >> bitcast<u32>(4u));
-                                        let _e788 = select(1u, _e786, (1u < _e786));
-                                        let _e789 = (_e689 >= 4f);
-                                        let _e790 = select(select(select(select(_e721, _e730, _e735), _e748, _e753), _e766, _e771), _e784, _e789);
-                                        let _e792 = select(select(select(select(0u, _e726, _e735), _e744, _e753), _e762, _e771), (_e762 + (_e766 * _e770)), _e789);
-                                        let _e794 = select(select(select(select(f32(_e721), f32(_e730), _e735), f32(_e748), _e753), f32(_e766), _e771), f32(_e784), _e789);
-                                        let _e796 = select(select(select(select(f32(_e723), f32(_e734), _e735), f32(_e752), _e753), f32(_e770), _e771), f32(_e788), _e789);
-                                        let _e797 = (_e716 * _e794);
-                                        let _e799 = f32((_e790 - 1u));
-                                        let _e801 = select(0f, _e797, (_e797 > 0f));
-                                        let _e805 = (_e717 * _e796);
-                                        let _e807 = f32((select(select(select(select(_e723, _e734, _e735), _e752, _e753), _e770, _e771), _e788, _e789) - 1u));
-                                        let _e809 = select(0f, _e805, (_e805 > 0f));
-                                        let _e818 = mips.member[((_e792 + (u32(select(_e807, _e809, (_e809 < _e807))) * _e790)) + u32(select(_e799, _e801, (_e801 < _e799))))];
-                                        let _e827 = (_e718 * _e794);
-                                        let _e829 = select(0f, _e827, (_e827 > 0f));
-                                        let _e833 = (_e719 * _e796);
-                                        let _e835 = select(0f, _e833, (_e833 > 0f));
-                                        let _e844 = mips.member[((_e792 + (u32(select(_e807, _e835, (_e835 < _e807))) * _e790)) + u32(select(_e799, _e829, (_e829 < _e799))))];
-                                        let _e853 = (((((_e716 * 2f) - 1f) * _e346) * _e818) - _e348);
-                                        let _e854 = (((((_e717 * -2f) + 1f) * _e356) * _e818) - _e358);
-                                        let _e855 = (_e818 - _e338);
-                                        let _e858 = params.member.member_1;
-                                        let _e859 = (_e858 > 0f);
-                                        if _e859 {
-                                            phi_1671_ = (sqrt((((_e853 * _e853) + (_e854 * _e854)) + (_e855 * _e855))) > _e858);
+                                        let _e730 = phi_1255_;
+                                        let _e731 = (_e730 + (1.3f / _e457));
+                                        let _e732 = ((_e609 * _e457) * _e731);
+                                        let _e733 = ((-(_e608) * _e457) * _e731);
+                                        let _e742 = params.member.member_4.member_7;
+                                        let _e743 = (log2(sqrt(((_e732 * _e732) + (_e733 * _e733)))) - _e742);
+                                        let _e750 = (-1f - floor((-0.5f - select(0f, select(5f, _e743, (_e743 < 5f)), (_e743 > 0f)))));
+                                        let _e752 = floor((_e732 + 0.5f));
+                                        let _e763 = (select(_e752, (_e752 - 1f), (((_e752 - _e732) == 0.5f) && ((floor((_e752 * 0.5f)) * 2f) != _e752))) * (1f / _e103));
+                                        let _e765 = floor((_e733 + 0.5f));
+                                        let _e776 = (select(_e765, (_e765 - 1f), (((_e765 - _e733) == 0.5f) && ((floor((_e765 * 0.5f)) * 2f) != _e765))) * (1f / _e114));
+                                        let _e777 = (_e336 + _e763);
+                                        let _e778 = (_e339 + _e776);
+                                        let _e779 = (_e336 - _e763);
+                                        let _e780 = (_e339 - _e776);
+                                        let _e782 = select(1u, _e108, (1u < _e108));
+                                        let _e784 = select(1u, _e119, (1u < _e119));
+                                        let _e787 = (_e782 * _e784);
+                                        let _e789 = (_e108 >> bitcast<u32>(1u));
+                                        let _e791 = select(1u, _e789, (1u < _e789));
+                                        let _e793 = (_e119 >> bitcast<u32>(1u));
+                                        let _e795 = select(1u, _e793, (1u < _e793));
+                                        let _e796 = (_e750 >= 1f);
+                                        let _e805 = (_e787 + (_e791 * _e795));
+                                        let _e807 = (_e108 >> bitcast<u32>(2u));
+                                        let _e809 = select(1u, _e807, (1u < _e807));
+                                        let _e811 = (_e119 >> bitcast<u32>(2u));
+                                        let _e813 = select(1u, _e811, (1u < _e811));
+                                        let _e814 = (_e750 >= 2f);
+                                        let _e823 = (_e805 + (_e809 * _e813));
+                                        let _e825 = (_e108 >> bitcast<u32>(3u));
+                                        let _e827 = select(1u, _e825, (1u < _e825));
+                                        let _e829 = (_e119 >> bitcast<u32>(3u));
+                                        let _e831 = select(1u, _e829, (1u < _e829));
+                                        let _e832 = (_e750 >= 3f);
+                                        let _e843 = (_e108 >> bitcast<u32>(4u));
+                                        let _e845 = select(1u, _e843, (1u < _e843));
+                                        let _e847 = (_e119 >> bitcast<u32>(4u));
+                                        let _e849 = select(1u, _e847, (1u < _e847));
+                                        let _e850 = (_e750 >= 4f);
+                                        let _e851 = select(select(select(select(_e782, _e791, _e796), _e809, _e814), _e827, _e832), _e845, _e850);
+                                        let _e853 = select(select(select(select(0u, _e787, _e796), _e805, _e814), _e823, _e832), (_e823 + (_e827 * _e831)), _e850);
+                                        let _e855 = select(select(select(select(f32(_e782), f32(_e791), _e796), f32(_e809), _e814), f32(_e827), _e832), f32(_e845), _e850);
+                                        let _e857 = select(select(select(select(f32(_e784), f32(_e795), _e796), f32(_e813), _e814), f32(_e831), _e832), f32(_e849), _e850);
+                                        let _e858 = (_e777 * _e855);
+                                        let _e860 = f32((_e851 - 1u));
+                                        let _e862 = select(0f, _e858, (_e858 > 0f));
+                                        let _e866 = (_e778 * _e857);
+                                        let _e868 = f32((select(select(select(select(_e784, _e795, _e796), _e813, _e814), _e831, _e832), _e849, _e850) - 1u));
+                                        let _e870 = select(0f, _e866, (_e866 > 0f));
+                                        let _e879 = mips.member[((_e853 + (u32(select(_e868, _e870, (_e870 < _e868))) * _e851)) + u32(select(_e860, _e862, (_e862 < _e860))))];
+                                        let _e888 = (_e779 * _e855);
+                                        let _e890 = select(0f, _e888, (_e888 > 0f));
+                                        let _e894 = (_e780 * _e857);
+                                        let _e896 = select(0f, _e894, (_e894 > 0f));
+                                        let _e905 = mips.member[((_e853 + (u32(select(_e868, _e896, (_e896 < _e868))) * _e851)) + u32(select(_e860, _e890, (_e890 < _e860))))];
+                                        let _e914 = (((((_e777 * 2f) - 1f) * _e348) * _e879) - _e350);
+                                        let _e915 = (((((_e778 * -2f) + 1f) * _e358) * _e879) - _e360);
+                                        let _e916 = (_e879 - _e340);
+                                        let _e919 = params.member.member_1;
+                                        let _e920 = (_e919 > 0f);
+                                        if _e920 {
+                                            phi_1801_ = (sqrt((((_e914 * _e914) + (_e915 * _e915)) + (_e916 * _e916))) > _e919);
                                         } else {
-                                            phi_1671_ = false;
+                                            phi_1801_ = false;
                                         }
-                                        let _e868 = phi_1671_;
-                                        if !(_e868) {
-                                            let _e872 = params.member.member;
-                                            let _e875 = params.member.member_3;
-                                            let _e880 = (((_e853 * _e369) + (_e854 * _e370)) + (_e855 * _e371));
-                                            let _e884 = (_e853 - (_e369 * _e880));
-                                            let _e885 = (_e854 - (_e370 * _e880));
-                                            let _e886 = (_e855 - (_e371 * _e880));
-                                            let _e895 = ((_e885 * _e371) - (_e370 * _e886));
-                                            let _e898 = ((_e886 * _e369) - (_e371 * _e884));
-                                            let _e901 = ((_e884 * _e370) - (_e369 * _e885));
-                                            let _e908 = (1f / sqrt((((_e895 * _e895) + (_e898 * _e898)) + (_e901 * _e901))));
-                                            let _e909 = (_e895 * _e908);
-                                            let _e910 = (_e898 * _e908);
-                                            let _e911 = (_e901 * _e908);
-                                            let _e916 = (((_e440 * _e909) + (_e441 * _e910)) + (_e442 * _e911));
-                                            let _e920 = (_e440 - (_e909 * _e916));
-                                            let _e921 = (_e441 - (_e910 * _e916));
-                                            let _e922 = (_e442 - (_e911 * _e916));
-                                            let _e928 = sqrt((((_e920 * _e920) + (_e921 * _e921)) + (_e922 * _e922)));
-                                            let _e934 = ((((_e920 * _e369) + (_e921 * _e370)) + (_e922 * _e371)) / _e928);
-                                            let _e938 = select(0f, select(1f, _e934, (_e934 < 1f)), (_e934 > 0f));
-                                            let _e939 = abs(_e938);
-                                            let _e956 = (((((((((((((((_e939 * -0.0012624911f) + 0.00667009f) * _e939) - 0.017088126f) * _e939) + 0.03089188f) * _e939) - 0.050174303f) * _e939) + 0.08897899f) * _e939) - 0.2145988f) * _e939) + 1.5707963f) * sqrt((1f - _e939)));
-                                            let _e959 = select((3.1415927f - _e956), _e956, (_e938 >= 0f));
-                                            let _e967 = select(_e959, -(_e959), ((((_e884 * _e920) + (_e885 * _e921)) + (_e886 * _e922)) < 0f));
-                                            let _e968 = (0.02f / _e928);
-                                            let _e971 = select(0.19634955f, _e968, ((_e968 < 0.19634955f) || false));
-                                            let _e975 = (_e853 - (_e369 * _e872));
-                                            let _e976 = (_e854 - (_e370 * _e872));
-                                            let _e977 = (_e855 - (_e371 * _e872));
-                                            let _e984 = (1f / sqrt((((_e853 * _e853) + (_e854 * _e854)) + (_e855 * _e855))));
-                                            let _e992 = ((((_e853 * _e984) * _e369) + ((_e854 * _e984) * _e370)) + ((_e855 * _e984) * _e371));
-                                            let _e996 = select(-1f, select(1f, _e992, (_e992 < 1f)), (_e992 > -1f));
-                                            let _e997 = abs(_e996);
-                                            let _e1014 = (((((((((((((((_e997 * -0.0012624911f) + 0.00667009f) * _e997) - 0.017088126f) * _e997) + 0.03089188f) * _e997) - 0.050174303f) * _e997) + 0.08897899f) * _e997) - 0.2145988f) * _e997) + 1.5707963f) * sqrt((1f - _e997)));
-                                            let _e1021 = ((((select((3.1415927f - _e1014), _e1014, (_e996 >= 0f)) + _e971) - _e967) + 1.5707964f) * 0.31830987f);
-                                            let _e1025 = select(0f, select(1f, _e1021, (_e1021 < 1f)), (_e1021 > 0f));
-                                            let _e1032 = (1f / sqrt((((_e975 * _e975) + (_e976 * _e976)) + (_e977 * _e977))));
-                                            let _e1040 = ((((_e975 * _e1032) * _e369) + ((_e976 * _e1032) * _e370)) + ((_e977 * _e1032) * _e371));
-                                            let _e1044 = select(-1f, select(1f, _e1040, (_e1040 < 1f)), (_e1040 > -1f));
-                                            let _e1045 = abs(_e1044);
-                                            let _e1062 = (((((((((((((((_e1045 * -0.0012624911f) + 0.00667009f) * _e1045) - 0.017088126f) * _e1045) + 0.03089188f) * _e1045) - 0.050174303f) * _e1045) + 0.08897899f) * _e1045) - 0.2145988f) * _e1045) + 1.5707963f) * sqrt((1f - _e1045)));
-                                            let _e1069 = ((((select((3.1415927f - _e1062), _e1062, (_e1044 >= 0f)) + _e971) - _e967) + 1.5707964f) * 0.31830987f);
-                                            let _e1073 = select(0f, select(1f, _e1069, (_e1069 < 1f)), (_e1069 > 0f));
-                                            let _e1075 = (_e1073 != _e1073);
-                                            let _e1077 = select(_e1073, _e1025, ((_e1025 < _e1073) || _e1075));
-                                            let _e1080 = select(_e1073, _e1025, ((_e1025 > _e1073) || _e1075));
-                                            let _e1082 = floor((_e1077 * 32f));
-                                            if (_e875 == 1u) {
-                                                let _e1090 = -(floor((_e1080 * -32f)));
-                                                let _e1095 = (select(32f, _e1090, ((_e1090 < 32f) || false)) - _e1082);
-                                                phi_2022_ = select(select(0f, _e1095, ((_e1095 > 0f) || false)), 0f, (_e1080 <= _e1077));
+                                        let _e929 = phi_1801_;
+                                        if !(_e929) {
+                                            let _e933 = params.member.member;
+                                            let _e936 = params.member.member_3;
+                                            let _e941 = (((_e914 * _e371) + (_e915 * _e372)) + (_e916 * _e373));
+                                            let _e945 = (_e914 - (_e371 * _e941));
+                                            let _e946 = (_e915 - (_e372 * _e941));
+                                            let _e947 = (_e916 - (_e373 * _e941));
+                                            let _e956 = ((_e946 * _e373) - (_e372 * _e947));
+                                            let _e959 = ((_e947 * _e371) - (_e373 * _e945));
+                                            let _e962 = ((_e945 * _e372) - (_e371 * _e946));
+                                            let _e969 = (1f / sqrt((((_e956 * _e956) + (_e959 * _e959)) + (_e962 * _e962))));
+                                            let _e970 = (_e956 * _e969);
+                                            let _e971 = (_e959 * _e969);
+                                            let _e972 = (_e962 * _e969);
+                                            let _e977 = (((_e442 * _e970) + (_e443 * _e971)) + (_e444 * _e972));
+                                            let _e981 = (_e442 - (_e970 * _e977));
+                                            let _e982 = (_e443 - (_e971 * _e977));
+                                            let _e983 = (_e444 - (_e972 * _e977));
+                                            let _e989 = sqrt((((_e981 * _e981) + (_e982 * _e982)) + (_e983 * _e983)));
+                                            let _e995 = ((((_e981 * _e371) + (_e982 * _e372)) + (_e983 * _e373)) / _e989);
+                                            let _e999 = select(0f, select(1f, _e995, (_e995 < 1f)), (_e995 > 0f));
+                                            let _e1000 = abs(_e999);
+                                            let _e1017 = (((((((((((((((_e1000 * -0.0012624911f) + 0.00667009f) * _e1000) - 0.017088126f) * _e1000) + 0.03089188f) * _e1000) - 0.050174303f) * _e1000) + 0.08897899f) * _e1000) - 0.2145988f) * _e1000) + 1.5707963f) * sqrt((1f - _e1000)));
+                                            let _e1020 = select((3.1415927f - _e1017), _e1017, (_e999 >= 0f));
+                                            let _e1028 = select(_e1020, -(_e1020), ((((_e945 * _e981) + (_e946 * _e982)) + (_e947 * _e983)) < 0f));
+                                            let _e1029 = (0.02f / _e989);
+                                            let _e1032 = select(0.19634955f, _e1029, ((_e1029 < 0.19634955f) || false));
+                                            let _e1036 = (_e914 - (_e371 * _e933));
+                                            let _e1037 = (_e915 - (_e372 * _e933));
+                                            let _e1038 = (_e916 - (_e373 * _e933));
+                                            let _e1045 = (1f / sqrt((((_e914 * _e914) + (_e915 * _e915)) + (_e916 * _e916))));
+                                            let _e1053 = ((((_e914 * _e1045) * _e371) + ((_e915 * _e1045) * _e372)) + ((_e916 * _e1045) * _e373));
+                                            let _e1057 = select(-1f, select(1f, _e1053, (_e1053 < 1f)), (_e1053 > -1f));
+                                            let _e1058 = abs(_e1057);
+                                            let _e1075 = (((((((((((((((_e1058 * -0.0012624911f) + 0.00667009f) * _e1058) - 0.017088126f) * _e1058) + 0.03089188f) * _e1058) - 0.050174303f) * _e1058) + 0.08897899f) * _e1058) - 0.2145988f) * _e1058) + 1.5707963f) * sqrt((1f - _e1058)));
+                                            let _e1082 = ((((select((3.1415927f - _e1075), _e1075, (_e1057 >= 0f)) + _e1032) - _e1028) + 1.5707964f) * 0.31830987f);
+                                            let _e1086 = select(0f, select(1f, _e1082, (_e1082 < 1f)), (_e1082 > 0f));
+                                            let _e1093 = (1f / sqrt((((_e1036 * _e1036) + (_e1037 * _e1037)) + (_e1038 * _e1038))));
+                                            let _e1101 = ((((_e1036 * _e1093) * _e371) + ((_e1037 * _e1093) * _e372)) + ((_e1038 * _e1093) * _e373));
+                                            let _e1105 = select(-1f, select(1f, _e1101, (_e1101 < 1f)), (_e1101 > -1f));
+                                            let _e1106 = abs(_e1105);
+                                            let _e1123 = (((((((((((((((_e1106 * -0.0012624911f) + 0.00667009f) * _e1106) - 0.017088126f) * _e1106) + 0.03089188f) * _e1106) - 0.050174303f) * _e1106) + 0.08897899f) * _e1106) - 0.2145988f) * _e1106) + 1.5707963f) * sqrt((1f - _e1106)));
+                                            let _e1130 = ((((select((3.1415927f - _e1123), _e1123, (_e1105 >= 0f)) + _e1032) - _e1028) + 1.5707964f) * 0.31830987f);
+                                            let _e1134 = select(0f, select(1f, _e1130, (_e1130 < 1f)), (_e1130 > 0f));
+                                            let _e1136 = (_e1134 != _e1134);
+                                            let _e1138 = select(_e1134, _e1086, ((_e1086 < _e1134) || _e1136));
+                                            let _e1141 = select(_e1134, _e1086, ((_e1086 > _e1134) || _e1136));
+                                            let _e1143 = floor((_e1138 * 32f));
+                                            if (_e936 == 1u) {
+                                                let _e1151 = -(floor((_e1141 * -32f)));
+                                                let _e1156 = (select(32f, _e1151, ((_e1151 < 32f) || false)) - _e1143);
+                                                phi_2152_ = select(select(0f, _e1156, ((_e1156 > 0f) || false)), 0f, (_e1141 <= _e1138));
                                             } else {
-                                                phi_2022_ = -(floor(((_e1080 - _e1077) * -32f)));
+                                                phi_2152_ = -(floor(((_e1141 - _e1138) * -32f)));
                                             }
-                                            let _e1101 = phi_2022_;
-                                            let _e1103 = select(0f, _e1082, (_e1082 > 0f));
-                                            let _e1106 = u32(select(32f, _e1103, (_e1103 < 32f)));
-                                            let _e1108 = select(0f, _e1101, (_e1101 > 0f));
-                                            let _e1111 = u32(select(32f, _e1108, (_e1108 < 32f)));
-                                            if (_e1106 >= 32u) {
-                                                phi_2068_ = u32();
-                                                phi_2069_ = true;
+                                            let _e1162 = phi_2152_;
+                                            let _e1164 = select(0f, _e1143, (_e1143 > 0f));
+                                            let _e1167 = u32(select(32f, _e1164, (_e1164 < 32f)));
+                                            let _e1169 = select(0f, _e1162, (_e1162 > 0f));
+                                            let _e1172 = u32(select(32f, _e1169, (_e1169 < 32f)));
+                                            if (_e1167 >= 32u) {
+                                                phi_2198_ = u32();
+                                                phi_2199_ = true;
                                             } else {
-                                                let _e1113 = (_e1111 == 0u);
-                                                if _e1113 {
-                                                    phi_2067_ = u32();
+                                                let _e1174 = (_e1172 == 0u);
+                                                if _e1174 {
+                                                    phi_2197_ = u32();
                                                 } else {
-                                                    if (_e1111 >= 32u) {
-                                                        phi_2064_ = 4294967295u;
+                                                    if (_e1172 >= 32u) {
+                                                        phi_2194_ = 4294967295u;
                                                     } else {
-                                                        phi_2064_ = ((1u << bitcast<u32>((_e1111 & 31u))) - 1u);
+                                                        phi_2194_ = ((1u << bitcast<u32>((_e1172 & 31u))) - 1u);
                                                     }
-                                                    let _e1120 = phi_2064_;
-                                                    phi_2067_ = (_e1120 << bitcast<u32>((_e1106 & 31u)));
+                                                    let _e1181 = phi_2194_;
+                                                    phi_2197_ = (_e1181 << bitcast<u32>((_e1167 & 31u)));
                                                 }
-                                                let _e1125 = phi_2067_;
-                                                phi_2068_ = _e1125;
-                                                phi_2069_ = _e1113;
+                                                let _e1186 = phi_2197_;
+                                                phi_2198_ = _e1186;
+                                                phi_2199_ = _e1174;
                                             }
-                                            let _e1127 = phi_2068_;
-                                            let _e1129 = phi_2069_;
-                                            phi_2083_ = select(select(select(_e1127, 0u, _e1129), 0u, (sqrt((((_e884 * _e884) + (_e885 * _e885)) + (_e886 * _e886))) <= 0f)), 0u, _e868);
+                                            let _e1188 = phi_2198_;
+                                            let _e1190 = phi_2199_;
+                                            phi_2213_ = select(select(select(_e1188, 0u, _e1190), 0u, (sqrt((((_e945 * _e945) + (_e946 * _e946)) + (_e947 * _e947))) <= 0f)), 0u, _e929);
                                         } else {
-                                            phi_2083_ = 0u;
+                                            phi_2213_ = 0u;
                                         }
-                                        let _e1135 = phi_2083_;
-                                        let _e1137 = (((((_e718 * 2f) - 1f) * _e346) * _e844) - _e348);
-                                        let _e1138 = (((((_e719 * -2f) + 1f) * _e356) * _e844) - _e358);
-                                        let _e1139 = (_e844 - _e338);
-                                        if _e859 {
-                                            phi_2107_ = (sqrt((((_e1137 * _e1137) + (_e1138 * _e1138)) + (_e1139 * _e1139))) > _e858);
+                                        let _e1196 = phi_2213_;
+                                        let _e1198 = (((((_e779 * 2f) - 1f) * _e348) * _e905) - _e350);
+                                        let _e1199 = (((((_e780 * -2f) + 1f) * _e358) * _e905) - _e360);
+                                        let _e1200 = (_e905 - _e340);
+                                        if _e920 {
+                                            phi_2237_ = (sqrt((((_e1198 * _e1198) + (_e1199 * _e1199)) + (_e1200 * _e1200))) > _e919);
                                         } else {
-                                            phi_2107_ = false;
+                                            phi_2237_ = false;
                                         }
-                                        let _e1148 = phi_2107_;
-                                        if !(_e1148) {
-                                            let _e1152 = params.member.member;
-                                            let _e1155 = params.member.member_3;
-                                            let _e1160 = (((_e1137 * _e369) + (_e1138 * _e370)) + (_e1139 * _e371));
-                                            let _e1164 = (_e1137 - (_e369 * _e1160));
-                                            let _e1165 = (_e1138 - (_e370 * _e1160));
-                                            let _e1166 = (_e1139 - (_e371 * _e1160));
-                                            let _e1175 = ((_e1165 * _e371) - (_e370 * _e1166));
-                                            let _e1178 = ((_e1166 * _e369) - (_e371 * _e1164));
-                                            let _e1181 = ((_e1164 * _e370) - (_e369 * _e1165));
-                                            let _e1188 = (1f / sqrt((((_e1175 * _e1175) + (_e1178 * _e1178)) + (_e1181 * _e1181))));
-                                            let _e1189 = (_e1175 * _e1188);
-                                            let _e1190 = (_e1178 * _e1188);
-                                            let _e1191 = (_e1181 * _e1188);
-                                            let _e1196 = (((_e440 * _e1189) + (_e441 * _e1190)) + (_e442 * _e1191));
-                                            let _e1200 = (_e440 - (_e1189 * _e1196));
-                                            let _e1201 = (_e441 - (_e1190 * _e1196));
-                                            let _e1202 = (_e442 - (_e1191 * _e1196));
-                                            let _e1208 = sqrt((((_e1200 * _e1200) + (_e1201 * _e1201)) + (_e1202 * _e1202)));
-                                            let _e1214 = ((((_e1200 * _e369) + (_e1201 * _e370)) + (_e1202 * _e371)) / _e1208);
-                                            let _e1218 = select(0f, select(1f, _e1214, (_e1214 < 1f)), (_e1214 > 0f));
-                                            let _e1219 = abs(_e1218);
-                                            let _e1236 = (((((((((((((((_e1219 * -0.0012624911f) + 0.00667009f) * _e1219) - 0.017088126f) * _e1219) + 0.03089188f) * _e1219) - 0.050174303f) * _e1219) + 0.08897899f) * _e1219) - 0.2145988f) * _e1219) + 1.5707963f) * sqrt((1f - _e1219)));
-                                            let _e1239 = select((3.1415927f - _e1236), _e1236, (_e1218 >= 0f));
-                                            let _e1247 = select(_e1239, -(_e1239), ((((_e1164 * _e1200) + (_e1165 * _e1201)) + (_e1166 * _e1202)) < 0f));
-                                            let _e1248 = (0.02f / _e1208);
-                                            let _e1251 = select(0.19634955f, _e1248, ((_e1248 < 0.19634955f) || false));
-                                            let _e1255 = (_e1137 - (_e369 * _e1152));
-                                            let _e1256 = (_e1138 - (_e370 * _e1152));
-                                            let _e1257 = (_e1139 - (_e371 * _e1152));
-                                            let _e1264 = (1f / sqrt((((_e1137 * _e1137) + (_e1138 * _e1138)) + (_e1139 * _e1139))));
-                                            let _e1272 = ((((_e1137 * _e1264) * _e369) + ((_e1138 * _e1264) * _e370)) + ((_e1139 * _e1264) * _e371));
-                                            let _e1276 = select(-1f, select(1f, _e1272, (_e1272 < 1f)), (_e1272 > -1f));
-                                            let _e1277 = abs(_e1276);
-                                            let _e1294 = (((((((((((((((_e1277 * -0.0012624911f) + 0.00667009f) * _e1277) - 0.017088126f) * _e1277) + 0.03089188f) * _e1277) - 0.050174303f) * _e1277) + 0.08897899f) * _e1277) - 0.2145988f) * _e1277) + 1.5707963f) * sqrt((1f - _e1277)));
-                                            let _e1301 = ((((select((3.1415927f - _e1294), _e1294, (_e1276 >= 0f)) + _e1251) - _e1247) + 1.5707964f) * 0.31830987f);
-                                            let _e1312 = (1f / sqrt((((_e1255 * _e1255) + (_e1256 * _e1256)) + (_e1257 * _e1257))));
-                                            let _e1320 = ((((_e1255 * _e1312) * _e369) + ((_e1256 * _e1312) * _e370)) + ((_e1257 * _e1312) * _e371));
-                                            let _e1324 = select(-1f, select(1f, _e1320, (_e1320 < 1f)), (_e1320 > -1f));
-                                            let _e1325 = abs(_e1324);
-                                            let _e1342 = (((((((((((((((_e1325 * -0.0012624911f) + 0.00667009f) * _e1325) - 0.017088126f) * _e1325) + 0.03089188f) * _e1325) - 0.050174303f) * _e1325) + 0.08897899f) * _e1325) - 0.2145988f) * _e1325) + 1.5707963f) * sqrt((1f - _e1325)));
-                                            let _e1349 = ((((select((3.1415927f - _e1342), _e1342, (_e1324 >= 0f)) + _e1251) - _e1247) + 1.5707964f) * 0.31830987f);
-                                            let _e1354 = (1f - select(0f, select(1f, _e1301, (_e1301 < 1f)), (_e1301 > 0f)));
-                                            let _e1355 = (1f - select(0f, select(1f, _e1349, (_e1349 < 1f)), (_e1349 > 0f)));
-                                            let _e1357 = (_e1355 != _e1355);
-                                            let _e1359 = select(_e1355, _e1354, ((_e1354 < _e1355) || _e1357));
-                                            let _e1362 = select(_e1355, _e1354, ((_e1354 > _e1355) || _e1357));
-                                            let _e1364 = floor((_e1359 * 32f));
-                                            if (_e1155 == 1u) {
-                                                let _e1372 = -(floor((_e1362 * -32f)));
-                                                let _e1377 = (select(32f, _e1372, ((_e1372 < 32f) || false)) - _e1364);
-                                                phi_2458_ = select(select(0f, _e1377, ((_e1377 > 0f) || false)), 0f, (_e1362 <= _e1359));
+                                        let _e1209 = phi_2237_;
+                                        if !(_e1209) {
+                                            let _e1213 = params.member.member;
+                                            let _e1216 = params.member.member_3;
+                                            let _e1221 = (((_e1198 * _e371) + (_e1199 * _e372)) + (_e1200 * _e373));
+                                            let _e1225 = (_e1198 - (_e371 * _e1221));
+                                            let _e1226 = (_e1199 - (_e372 * _e1221));
+                                            let _e1227 = (_e1200 - (_e373 * _e1221));
+                                            let _e1236 = ((_e1226 * _e373) - (_e372 * _e1227));
+                                            let _e1239 = ((_e1227 * _e371) - (_e373 * _e1225));
+                                            let _e1242 = ((_e1225 * _e372) - (_e371 * _e1226));
+                                            let _e1249 = (1f / sqrt((((_e1236 * _e1236) + (_e1239 * _e1239)) + (_e1242 * _e1242))));
+                                            let _e1250 = (_e1236 * _e1249);
+                                            let _e1251 = (_e1239 * _e1249);
+                                            let _e1252 = (_e1242 * _e1249);
+                                            let _e1257 = (((_e442 * _e1250) + (_e443 * _e1251)) + (_e444 * _e1252));
+                                            let _e1261 = (_e442 - (_e1250 * _e1257));
+                                            let _e1262 = (_e443 - (_e1251 * _e1257));
+                                            let _e1263 = (_e444 - (_e1252 * _e1257));
+                                            let _e1269 = sqrt((((_e1261 * _e1261) + (_e1262 * _e1262)) + (_e1263 * _e1263)));
+                                            let _e1275 = ((((_e1261 * _e371) + (_e1262 * _e372)) + (_e1263 * _e373)) / _e1269);
+                                            let _e1279 = select(0f, select(1f, _e1275, (_e1275 < 1f)), (_e1275 > 0f));
+                                            let _e1280 = abs(_e1279);
+                                            let _e1297 = (((((((((((((((_e1280 * -0.0012624911f) + 0.00667009f) * _e1280) - 0.017088126f) * _e1280) + 0.03089188f) * _e1280) - 0.050174303f) * _e1280) + 0.08897899f) * _e1280) - 0.2145988f) * _e1280) + 1.5707963f) * sqrt((1f - _e1280)));
+                                            let _e1300 = select((3.1415927f - _e1297), _e1297, (_e1279 >= 0f));
+                                            let _e1308 = select(_e1300, -(_e1300), ((((_e1225 * _e1261) + (_e1226 * _e1262)) + (_e1227 * _e1263)) < 0f));
+                                            let _e1309 = (0.02f / _e1269);
+                                            let _e1312 = select(0.19634955f, _e1309, ((_e1309 < 0.19634955f) || false));
+                                            let _e1316 = (_e1198 - (_e371 * _e1213));
+                                            let _e1317 = (_e1199 - (_e372 * _e1213));
+                                            let _e1318 = (_e1200 - (_e373 * _e1213));
+                                            let _e1325 = (1f / sqrt((((_e1198 * _e1198) + (_e1199 * _e1199)) + (_e1200 * _e1200))));
+                                            let _e1333 = ((((_e1198 * _e1325) * _e371) + ((_e1199 * _e1325) * _e372)) + ((_e1200 * _e1325) * _e373));
+                                            let _e1337 = select(-1f, select(1f, _e1333, (_e1333 < 1f)), (_e1333 > -1f));
+                                            let _e1338 = abs(_e1337);
+                                            let _e1355 = (((((((((((((((_e1338 * -0.0012624911f) + 0.00667009f) * _e1338) - 0.017088126f) * _e1338) + 0.03089188f) * _e1338) - 0.050174303f) * _e1338) + 0.08897899f) * _e1338) - 0.2145988f) * _e1338) + 1.5707963f) * sqrt((1f - _e1338)));
+                                            let _e1362 = ((((select((3.1415927f - _e1355), _e1355, (_e1337 >= 0f)) + _e1312) - _e1308) + 1.5707964f) * 0.31830987f);
+                                            let _e1373 = (1f / sqrt((((_e1316 * _e1316) + (_e1317 * _e1317)) + (_e1318 * _e1318))));
+                                            let _e1381 = ((((_e1316 * _e1373) * _e371) + ((_e1317 * _e1373) * _e372)) + ((_e1318 * _e1373) * _e373));
+                                            let _e1385 = select(-1f, select(1f, _e1381, (_e1381 < 1f)), (_e1381 > -1f));
+                                            let _e1386 = abs(_e1385);
+                                            let _e1403 = (((((((((((((((_e1386 * -0.0012624911f) + 0.00667009f) * _e1386) - 0.017088126f) * _e1386) + 0.03089188f) * _e1386) - 0.050174303f) * _e1386) + 0.08897899f) * _e1386) - 0.2145988f) * _e1386) + 1.5707963f) * sqrt((1f - _e1386)));
+                                            let _e1410 = ((((select((3.1415927f - _e1403), _e1403, (_e1385 >= 0f)) + _e1312) - _e1308) + 1.5707964f) * 0.31830987f);
+                                            let _e1415 = (1f - select(0f, select(1f, _e1362, (_e1362 < 1f)), (_e1362 > 0f)));
+                                            let _e1416 = (1f - select(0f, select(1f, _e1410, (_e1410 < 1f)), (_e1410 > 0f)));
+                                            let _e1418 = (_e1416 != _e1416);
+                                            let _e1420 = select(_e1416, _e1415, ((_e1415 < _e1416) || _e1418));
+                                            let _e1423 = select(_e1416, _e1415, ((_e1415 > _e1416) || _e1418));
+                                            let _e1425 = floor((_e1420 * 32f));
+                                            if (_e1216 == 1u) {
+                                                let _e1433 = -(floor((_e1423 * -32f)));
+                                                let _e1438 = (select(32f, _e1433, ((_e1433 < 32f) || false)) - _e1425);
+                                                phi_2588_ = select(select(0f, _e1438, ((_e1438 > 0f) || false)), 0f, (_e1423 <= _e1420));
                                             } else {
-                                                phi_2458_ = -(floor(((_e1362 - _e1359) * -32f)));
+                                                phi_2588_ = -(floor(((_e1423 - _e1420) * -32f)));
                                             }
-                                            let _e1383 = phi_2458_;
-                                            let _e1385 = select(0f, _e1364, (_e1364 > 0f));
-                                            let _e1388 = u32(select(32f, _e1385, (_e1385 < 32f)));
-                                            let _e1390 = select(0f, _e1383, (_e1383 > 0f));
-                                            let _e1393 = u32(select(32f, _e1390, (_e1390 < 32f)));
-                                            if (_e1388 >= 32u) {
-                                                phi_2504_ = u32();
-                                                phi_2505_ = true;
+                                            let _e1444 = phi_2588_;
+                                            let _e1446 = select(0f, _e1425, (_e1425 > 0f));
+                                            let _e1449 = u32(select(32f, _e1446, (_e1446 < 32f)));
+                                            let _e1451 = select(0f, _e1444, (_e1444 > 0f));
+                                            let _e1454 = u32(select(32f, _e1451, (_e1451 < 32f)));
+                                            if (_e1449 >= 32u) {
+                                                phi_2634_ = u32();
+                                                phi_2635_ = true;
                                             } else {
-                                                let _e1395 = (_e1393 == 0u);
-                                                if _e1395 {
-                                                    phi_2503_ = u32();
+                                                let _e1456 = (_e1454 == 0u);
+                                                if _e1456 {
+                                                    phi_2633_ = u32();
                                                 } else {
-                                                    if (_e1393 >= 32u) {
-                                                        phi_2500_ = 4294967295u;
+                                                    if (_e1454 >= 32u) {
+                                                        phi_2630_ = 4294967295u;
                                                     } else {
-                                                        phi_2500_ = ((1u << bitcast<u32>((_e1393 & 31u))) - 1u);
+                                                        phi_2630_ = ((1u << bitcast<u32>((_e1454 & 31u))) - 1u);
                                                     }
-                                                    let _e1402 = phi_2500_;
-                                                    phi_2503_ = (_e1402 << bitcast<u32>((_e1388 & 31u)));
+                                                    let _e1463 = phi_2630_;
+                                                    phi_2633_ = (_e1463 << bitcast<u32>((_e1449 & 31u)));
                                                 }
-                                                let _e1407 = phi_2503_;
-                                                phi_2504_ = _e1407;
-                                                phi_2505_ = _e1395;
+                                                let _e1468 = phi_2633_;
+                                                phi_2634_ = _e1468;
+                                                phi_2635_ = _e1456;
                                             }
-                                            let _e1409 = phi_2504_;
-                                            let _e1411 = phi_2505_;
-                                            phi_2519_ = select(select(select(_e1409, 0u, _e1411), 0u, (sqrt((((_e1164 * _e1164) + (_e1165 * _e1165)) + (_e1166 * _e1166))) <= 0f)), 0u, _e1148);
+                                            let _e1470 = phi_2634_;
+                                            let _e1472 = phi_2635_;
+                                            phi_2649_ = select(select(select(_e1470, 0u, _e1472), 0u, (sqrt((((_e1225 * _e1225) + (_e1226 * _e1226)) + (_e1227 * _e1227))) <= 0f)), 0u, _e1209);
                                         } else {
-                                            phi_2519_ = 0u;
+                                            phi_2649_ = 0u;
                                         }
-                                        let _e1417 = phi_2519_;
-                                        phi_1068_ = (_e645 + 1u);
-                                        phi_1071_ = ((_e647 | _e1135) | _e1417);
+                                        let _e1478 = phi_2649_;
+                                        phi_1198_ = (_e706 + 1u);
+                                        phi_1201_ = ((_e708 | _e1196) | _e1478);
                                     } else {
-                                        phi_1068_ = u32();
-                                        phi_1071_ = u32();
+                                        phi_1198_ = u32();
+                                        phi_1201_ = u32();
                                     }
-                                    let _e1421 = phi_1068_;
-                                    let _e1423 = phi_1071_;
+                                    let _e1482 = phi_1198_;
+                                    let _e1484 = phi_1201_;
                                     continue;
                                     continuing {
-                                        phi_1067_ = _e1421;
-                                        phi_1070_ = _e1423;
-                                        break if !(_e648);
+                                        phi_1197_ = _e1482;
+                                        phi_1200_ = _e1484;
+                                        break if !(_e709);
                                     }
                                 }
-                                let _e1427 = params.member.member_2;
-                                if (_e1427 == 2u) {
-                                    let _e1484 = (_e637 - 1.5707964f);
-                                    let _e1485 = (_e1484 * 2f);
-                                    let _e1486 = sin(_e637);
-                                    let _e1491 = ((_e615 + (_e1485 * _e1486)) - cos((_e1485 - _e637)));
-                                    phi_2550_ = 0u;
-                                    phi_2553_ = select((_e1491 * 0.25f), (_e1491 * -0.25f), (_e1484 < 0f));
-                                    phi_2555_ = 0f;
+                                let _e1488 = params.member.member_2;
+                                if (_e1488 == 2u) {
+                                    let _e1545 = (_e698 - 1.5707964f);
+                                    let _e1546 = (_e1545 * 2f);
+                                    let _e1547 = sin(_e698);
+                                    let _e1552 = ((_e676 + (_e1546 * _e1547)) - cos((_e1546 - _e698)));
+                                    phi_2680_ = 0u;
+                                    phi_2683_ = select((_e1552 * 0.25f), (_e1552 * -0.25f), (_e1545 < 0f));
+                                    phi_2685_ = 0f;
                                     loop {
-                                        let _e1497 = phi_2550_;
-                                        let _e1499 = phi_2553_;
-                                        let _e1501 = phi_2555_;
-                                        local_6 = _e1501;
-                                        let _e1502 = (_e1497 < 32u);
-                                        if _e1502 {
-                                            let _e1503 = (_e1497 + 1u);
-                                            let _e1506 = (_e1484 + (f32(_e1503) * 0.09817477f));
-                                            let _e1507 = (_e1506 * 2f);
-                                            let _e1512 = ((_e615 + (_e1507 * _e1486)) - cos((_e1507 - _e637)));
-                                            let _e1516 = select((_e1512 * 0.25f), (_e1512 * -0.25f), (_e1506 < 0f));
-                                            let _e1519 = local_5;
-                                            phi_2551_ = _e1503;
-                                            phi_2554_ = _e1516;
-                                            phi_2556_ = select(_e1501, (_e1501 + (_e1516 - _e1499)), (((_e1519 >> bitcast<u32>((_e1497 & 31u))) & 1u) == 0u));
+                                        let _e1558 = phi_2680_;
+                                        let _e1560 = phi_2683_;
+                                        let _e1562 = phi_2685_;
+                                        local_5 = _e1562;
+                                        let _e1563 = (_e1558 < 32u);
+                                        if _e1563 {
+                                            let _e1564 = (_e1558 + 1u);
+                                            let _e1567 = (_e1545 + (f32(_e1564) * 0.09817477f));
+                                            let _e1568 = (_e1567 * 2f);
+                                            let _e1573 = ((_e676 + (_e1568 * _e1547)) - cos((_e1568 - _e698)));
+                                            let _e1577 = select((_e1573 * 0.25f), (_e1573 * -0.25f), (_e1567 < 0f));
+                                            let _e1580 = local_4;
+                                            phi_2681_ = _e1564;
+                                            phi_2684_ = _e1577;
+                                            phi_2686_ = select(_e1562, (_e1562 + (_e1577 - _e1560)), (((_e1580 >> bitcast<u32>((_e1558 & 31u))) & 1u) == 0u));
                                         } else {
-                                            phi_2551_ = u32();
-                                            phi_2554_ = f32();
-                                            phi_2556_ = f32();
+                                            phi_2681_ = u32();
+                                            phi_2684_ = f32();
+                                            phi_2686_ = f32();
                                         }
-                                        let _e1528 = phi_2551_;
-                                        let _e1530 = phi_2554_;
-                                        let _e1532 = phi_2556_;
+                                        let _e1589 = phi_2681_;
+                                        let _e1591 = phi_2684_;
+                                        let _e1593 = phi_2686_;
                                         continue;
                                         continuing {
-                                            phi_2550_ = _e1528;
-                                            phi_2553_ = _e1530;
-                                            phi_2555_ = _e1532;
-                                            break if !(_e1502);
+                                            phi_2680_ = _e1589;
+                                            phi_2683_ = _e1591;
+                                            phi_2685_ = _e1593;
+                                            break if !(_e1563);
                                         }
                                     }
-                                    let _e1535 = local_6;
-                                    phi_3346_ = _e534;
-                                    phi_2658_ = (_e538 + 1f);
-                                    phi_2659_ = (_e540 + ((_e596 + ((1f - _e596) * 0.05f)) * _e1535));
+                                    let _e1596 = local_5;
+                                    phi_3620_ = _e595;
+                                    phi_2788_ = (_e599 + 1f);
+                                    phi_2789_ = (_e601 + ((_e657 + ((1f - _e657) * 0.05f)) * _e1596));
                                 } else {
-                                    if (_e1427 == 1u) {
-                                        phi_2603_ = 0u;
-                                        phi_2606_ = 0f;
+                                    if (_e1488 == 1u) {
+                                        phi_2733_ = 0u;
+                                        phi_2736_ = 0f;
                                         loop {
-                                            let _e1440 = phi_2603_;
-                                            let _e1442 = phi_2606_;
-                                            local_4 = _e1442;
-                                            let _e1443 = (_e1440 < 4u);
-                                            if _e1443 {
+                                            let _e1501 = phi_2733_;
+                                            let _e1503 = phi_2736_;
+                                            local_3 = _e1503;
+                                            let _e1504 = (_e1501 < 4u);
+                                            if _e1504 {
                                                 local = array<type_25, 4>(type_25(4026531855u, 0.0095061f), type_25(251658480u, 0.0270951f), type_25(15732480u, 0.0405571f), type_25(1044480u, 0.0478421f));
-                                                if _e1443 {
+                                                if _e1504 {
                                                 } else {
-                                                    phi_3124_ = true;
+                                                    phi_3382_ = true;
                                                     break;
                                                 }
-                                                let _e1446 = local[_e1440].member;
-                                                let _e1449 = local[_e1440].member_1;
-                                                let _e1451 = local_3;
-                                                phi_2604_ = (_e1440 + 1u);
-                                                phi_2607_ = (_e1442 + (f32(countOneBits((_e1451 & _e1446))) * _e1449));
+                                                let _e1507 = local[_e1501].member;
+                                                let _e1510 = local[_e1501].member_1;
+                                                let _e1512 = local_2;
+                                                phi_2734_ = (_e1501 + 1u);
+                                                phi_2737_ = (_e1503 + (f32(countOneBits((_e1512 & _e1507))) * _e1510));
                                             } else {
-                                                phi_2604_ = u32();
-                                                phi_2607_ = f32();
+                                                phi_2734_ = u32();
+                                                phi_2737_ = f32();
                                             }
-                                            let _e1459 = phi_2604_;
-                                            let _e1461 = phi_2607_;
+                                            let _e1520 = phi_2734_;
+                                            let _e1522 = phi_2737_;
                                             continue;
                                             continuing {
-                                                phi_2603_ = _e1459;
-                                                phi_2606_ = _e1461;
-                                                phi_3124_ = _e534;
-                                                break if !(_e1443);
+                                                phi_2733_ = _e1520;
+                                                phi_2736_ = _e1522;
+                                                phi_3382_ = _e595;
+                                                break if !(_e1504);
                                             }
                                         }
-                                        let _e1464 = phi_3124_;
-                                        phi_3344_ = _e1464;
-                                        if _e1464 {
+                                        let _e1525 = phi_3382_;
+                                        phi_3618_ = _e1525;
+                                        if _e1525 {
                                             break;
                                         }
-                                        let _e1466 = local_4;
-                                        let _e1467 = (1f - _e1466);
-                                        phi_3352_ = _e1464;
-                                        phi_2656_ = (_e538 + _e596);
-                                        phi_2657_ = (_e540 + (_e596 * select(0f, select(1f, _e1467, (_e1467 < 1f)), (_e1467 > 0f))));
+                                        let _e1527 = local_3;
+                                        let _e1528 = (1f - _e1527);
+                                        phi_3626_ = _e1525;
+                                        phi_2786_ = (_e599 + _e657);
+                                        phi_2787_ = (_e601 + (_e657 * select(0f, select(1f, _e1528, (_e1528 < 1f)), (_e1528 > 0f))));
                                     } else {
-                                        let _e1431 = local_2;
-                                        phi_3352_ = _e534;
-                                        phi_2656_ = (_e538 + 1f);
-                                        phi_2657_ = (_e540 + ((f32(countOneBits((_e1431 & 4294967295u))) * -0.03125f) + 1f));
+                                        let _e1492 = local_1;
+                                        phi_3626_ = _e595;
+                                        phi_2786_ = (_e599 + 1f);
+                                        phi_2787_ = (_e601 + ((f32(countOneBits((_e1492 & 4294967295u))) * -0.03125f) + 1f));
                                     }
-                                    let _e1476 = phi_3352_;
-                                    let _e1478 = phi_2656_;
-                                    let _e1480 = phi_2657_;
-                                    phi_3346_ = _e1476;
-                                    phi_2658_ = _e1478;
-                                    phi_2659_ = _e1480;
+                                    let _e1537 = phi_3626_;
+                                    let _e1539 = phi_2786_;
+                                    let _e1541 = phi_2787_;
+                                    phi_3620_ = _e1537;
+                                    phi_2788_ = _e1539;
+                                    phi_2789_ = _e1541;
                                 }
-                                let _e1540 = phi_3346_;
-                                let _e1542 = phi_2658_;
-                                let _e1544 = phi_2659_;
-                                phi_3345_ = _e1540;
-                                phi_868_ = (_e536 + 1u);
-                                phi_871_ = _e1542;
-                                phi_873_ = _e1544;
+                                let _e1601 = phi_3620_;
+                                let _e1603 = phi_2788_;
+                                let _e1605 = phi_2789_;
+                                phi_3619_ = _e1601;
+                                phi_998_ = (_e597 + 1u);
+                                phi_1001_ = _e1603;
+                                phi_1003_ = _e1605;
                             } else {
-                                phi_3345_ = _e534;
-                                phi_868_ = u32();
-                                phi_871_ = f32();
-                                phi_873_ = f32();
+                                phi_3619_ = _e595;
+                                phi_998_ = u32();
+                                phi_1001_ = f32();
+                                phi_1003_ = f32();
                             }
-                            let _e1547 = phi_3345_;
-                            let _e1549 = phi_868_;
-                            let _e1551 = phi_871_;
-                            let _e1553 = phi_873_;
+                            let _e1608 = phi_3619_;
+                            let _e1610 = phi_998_;
+                            let _e1612 = phi_1001_;
+                            let _e1614 = phi_1003_;
                             continue;
                             continuing {
-                                phi_3275_ = _e1547;
-                                phi_867_ = _e1549;
-                                phi_870_ = _e1551;
-                                phi_872_ = _e1553;
-                                phi_3344_ = _e1547;
-                                break if !(_e541);
+                                phi_3533_ = _e1608;
+                                phi_997_ = _e1610;
+                                phi_1000_ = _e1612;
+                                phi_1002_ = _e1614;
+                                phi_3618_ = _e1608;
+                                break if !(_e602);
                             }
                         }
-                        let _e1556 = phi_3344_;
-                        if _e1556 {
+                        let _e1617 = phi_3618_;
+                        if _e1617 {
                             break;
                         }
-                        let _e1558 = local_7;
-                        let _e1561 = local_8;
-                        let _e1563 = local_9;
-                        phi_2667_ = select(1f, (_e1561 / _e1563), (_e1558 > 0f));
+                        let _e1619 = local_6;
+                        let _e1622 = local_7;
+                        let _e1624 = local_8;
+                        phi_2797_ = select(1f, (_e1622 / _e1624), (_e1619 > 0f));
                     } else {
-                        phi_2667_ = 1f;
+                        phi_2797_ = 1f;
                     }
-                    let _e1567 = phi_2667_;
-                    if _e526 {
-                        let _e1571 = params.member.member_4.member_6;
-                        let _e1572 = pow(_e1567, _e1571);
-                        if (_e1572 != _e1572) {
-                            phi_3098_ = true;
+                    let _e1628 = phi_2797_;
+                    if _e587 {
+                        let _e1632 = params.member.member_4.member_6;
+                        let _e1633 = pow(_e1628, _e1632);
+                        if (_e1633 != _e1633) {
+                            phi_3356_ = true;
                         } else {
-                            phi_3098_ = (0.03f >= _e1572);
+                            phi_3356_ = (0.03f >= _e1633);
                         }
-                        let _e1576 = phi_3098_;
-                        let _e1578 = (select(_e1572, 0.03f, _e1576) * 0.6666667f);
-                        let _e1584 = ((select(0f, select(1f, _e1578, (_e1578 < 1f)), (_e1578 > 0f)) * 255f) + 0.5f);
-                        phi_2716_ = select(select(u32(_e1584), 0u, (_e1584 < 0f)), 4294967295u, (_e1584 > 4294967000f));
+                        let _e1637 = phi_3356_;
+                        let _e1639 = (select(_e1633, 0.03f, _e1637) * 0.6666667f);
+                        let _e1645 = ((select(0f, select(1f, _e1639, (_e1639 < 1f)), (_e1639 > 0f)) * 255f) + 0.5f);
+                        phi_2846_ = select(select(u32(_e1645), 0u, (_e1645 < 0f)), 4294967295u, (_e1645 > 4294967000f));
                     } else {
-                        phi_2716_ = 170u;
+                        phi_2846_ = 170u;
                     }
-                    let _e1591 = phi_2716_;
-                    terms.member[_e123] = _e1591;
-                    edges.member[_e123] = ((((64u * u32(select(3f, _e259, (_e259 < 3f)))) + (16u * u32(select(3f, _e281, (_e281 < 3f))))) + (4u * u32(select(3f, _e304, (_e304 < 3f))))) + u32(select(3f, _e327, (_e327 < 3f))));
+                    let _e1652 = phi_2846_;
+                    terms.member[_e125] = _e1652;
+                    edges.member[_e125] = ((((64u * u32(select(3f, _e261, (_e261 < 3f)))) + (16u * u32(select(3f, _e283, (_e283 < 3f))))) + (4u * u32(select(3f, _e306, (_e306 < 3f))))) + u32(select(3f, _e329, (_e329 < 3f))));
                 }
             }
             break;

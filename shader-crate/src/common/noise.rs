@@ -7,25 +7,34 @@ use crate::glam::{UVec2, Vec2, vec2};
 
 /// Hilbert index of `p` in a 64×64 tile (6 levels; only the low 6 bits of x and y count),
 /// spec gtao-raymarch-hybrid §1.6: for b = 32…1, `idx += b²·((3·rx) ^ ry)`, then rotate the quadrant.
+/// The six levels are written out and the rotation is chosen by selects: straight-line code on
+/// the GPU, no loop or divergent branch per pixel.
 #[inline]
+#[allow(unused_assignments)] // the last level's rotation is not read
 pub fn hilbert_index(p: UVec2) -> u32 {
-    let mut x = p.x & 63;
-    let mut y = p.y & 63;
+    let (mut x, mut y) = (p.x & 63, p.y & 63);
     let mut index = 0;
-    let mut b = 32;
-    while b > 0 {
-        let rx = ((x & b) != 0) as u32;
-        let ry = ((y & b) != 0) as u32;
-        index += b * b * ((3 * rx) ^ ry);
-        if ry == 0 {
-            if rx == 1 {
-                x = 63 - x;
-                y = 63 - y;
-            }
-            core::mem::swap(&mut x, &mut y);
-        }
-        b /= 2;
+    macro_rules! level {
+        ($b:expr) => {
+            let rx = ((x & $b) != 0) as u32;
+            let ry = ((y & $b) != 0) as u32;
+            index += $b * $b * ((3 * rx) ^ ry);
+            // ry = 0: reflect when rx = 1, then swap x and y.
+            let flip = (ry == 0) & (rx == 1);
+            let (fx, fy) = (63 - x, 63 - y);
+            let fx = if flip { fx } else { x };
+            let fy = if flip { fy } else { y };
+            let swap = ry == 0;
+            x = if swap { fy } else { fx };
+            y = if swap { fx } else { fy };
+        };
     }
+    level!(32);
+    level!(16);
+    level!(8);
+    level!(4);
+    level!(2);
+    level!(1);
     index
 }
 
