@@ -212,7 +212,8 @@ pub struct Gpu {
     /// Validation warnings and errors; boxed so the callback's pointer stays valid.
     messages: Box<Mutex<Vec<String>>>,
     instance: ash::Instance,
-    _entry: ash::Entry,
+    physical_device: vk::PhysicalDevice,
+    entry: ash::Entry,
 }
 
 /// What aokit reads from a physical device: the same for a device it opens and an external one.
@@ -561,7 +562,8 @@ impl Gpu {
             owned,
             messages,
             instance,
-            _entry: entry,
+            physical_device,
+            entry,
         })
     }
 
@@ -634,6 +636,23 @@ impl Gpu {
         }
         let device = unsafe { instance.create_device(pd, &create, None)? };
         Ok((pd, device, family, probe))
+    }
+
+    /// The device's handles as an [`ExternalDevice`], for a tool that records work of its own
+    /// beside aokit's on the same queue (a benchmark of another implementation on the same
+    /// device; `AoEffect::new` on the same device). The `Gpu` keeps owning what it created:
+    /// drop everything made through the handles before the `Gpu`.
+    pub fn external(&self) -> ExternalDevice {
+        ExternalDevice {
+            entry: self.entry.clone(),
+            instance: self.instance.clone(),
+            physical_device: self.physical_device,
+            device: self.device.clone(),
+            queue_family_index: self.queue_family_index,
+            queue: self.queue,
+            ray_tracing: self.has_ray_tracing(),
+            ray_query: self.ray_query,
+        }
     }
 
     /// Does the device run ray-tracing pipelines (`VK_KHR_ray_tracing_pipeline` and
@@ -799,8 +818,8 @@ impl Gpu {
     }
 
     /// Read `count` 64-bit timestamps of `queries` (waiting for them) as milliseconds after the
-    /// first.
-    pub(crate) fn timestamps_ms(&self, queries: vk::QueryPool, count: usize) -> Result<Vec<f64>, GpuError> {
+    /// first (also for tools that time work of their own on the device).
+    pub fn timestamps_ms(&self, queries: vk::QueryPool, count: usize) -> Result<Vec<f64>, GpuError> {
         let mut stamps = vec![0u64; count];
         let flags = vk::QueryResultFlags::TYPE_64 | vk::QueryResultFlags::WAIT;
         unsafe { self.device.get_query_pool_results(queries, 0, &mut stamps, flags)? };
