@@ -63,6 +63,8 @@ pub fn run(args: BenchArgs) -> Result<(), String> {
     let json = serde_json::json!({
         "scene": scene.name, "backend": renderer.backend_name(), "device": renderer.device_name(),
         "technique": technique.name(), "options": technique.describe(),
+        "traces_rays": technique.graph(&frame.desc()).map(|g| g.traces_rays()).unwrap_or(false),
+        "rt_mode": args.frame.rt_mode,
         "width": frame.inner.x, "height": frame.inner.y, "target": [frame.camera.view.res.x, frame.camera.view.res.y],
         "warmup": args.warmup, "frames": args.frames, "threads": rayon::current_num_threads(),
         "passes": result.json(),
