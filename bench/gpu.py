@@ -2,13 +2,16 @@
 """The whole benchmark on one Vulkan device, written to bench/GPU.md (run through bench/gpu.sh).
 
     python3 bench/gpu.py [--sizes 1920x1080,3840x2160] [--frames 5] [--warmup 2] [--scene sponza]
-                         [--xegtao-spirv DIR] [--no-bevy] [--out bench/GPU.md]
+                         [--xegtao-spirv DIR] [--no-bevy] [--bevy-src DIR] [--timeout-s 90]
+                         [--bin-dir target/release] [--out bench/GPU.md]
 
 Every technique of `aokit techniques` at every size, per pass (`aokit bench`, GPU timestamps); the
 ray-traced ones with ray-tracing pipelines and with ray queries, each where the device has the
 extensions and otherwise listed with the one-line refusal aokit gave; then the peers
-(bench/peers/README.md): XeGTAO when --xegtao-spirv is given, Bevy unless --no-bevy. Expects
-release builds of `aokit` and `aokit-peers` (bench/gpu.sh makes them). Standard library only.
+(bench/peers/README.md): XeGTAO when --xegtao-spirv is given, Bevy unless --no-bevy. Each command
+gets --timeout-s seconds; one that runs longer is listed as timed out and the run goes on. Expects
+release builds of `aokit` and `aokit-peers` in --bin-dir (bench/gpu.sh makes them; a machine
+without cargo gets them copied). Standard library only.
 """
 
 import argparse
@@ -21,13 +24,15 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-AOKIT = os.path.join(ROOT, "target", "release", "aokit")
-PEERS = os.path.join(ROOT, "target", "release", "aokit-peers")
+TIMEOUT_S = 90.0
 
 
 def attempt(cmd):
     """(True, None) when `cmd` succeeded, else (False, its last error line)."""
-    done = subprocess.run(cmd, cwd=ROOT, text=True, capture_output=True)
+    try:
+        done = subprocess.run(cmd, cwd=ROOT, text=True, capture_output=True, timeout=TIMEOUT_S)
+    except subprocess.TimeoutExpired:
+        return False, f"timed out after {TIMEOUT_S:.0f} s (--timeout-s)"
     if done.returncode != 0:
         lines = [l for l in (done.stderr or done.stdout).strip().splitlines() if l.strip()]
         return False, (lines[-1] if lines else f"exit status {done.returncode}")
@@ -35,6 +40,7 @@ def attempt(cmd):
 
 
 def main():
+    global TIMEOUT_S
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--sizes", default="1920x1080,3840x2160")
     parser.add_argument("--frames", type=int, default=5)
@@ -42,19 +48,26 @@ def main():
     parser.add_argument("--scene", default="sponza")
     parser.add_argument("--xegtao-spirv", help="folder with XeGTAO's SPIR-V (bench/peers/README.md)")
     parser.add_argument("--no-bevy", action="store_true")
+    parser.add_argument("--bevy-src", help="folder holding bevy_pbr-0.20.* and bevy_render-0.20.* (default: cargo's registry)")
+    parser.add_argument("--timeout-s", type=float, default=TIMEOUT_S, help="limit of each command, seconds")
+    parser.add_argument("--bin-dir", default=os.path.join(ROOT, "target", "release"),
+                        help="folder holding the release binaries aokit and aokit-peers")
     parser.add_argument("--out", default=os.path.join(ROOT, "bench", "GPU.md"))
     args = parser.parse_args()
+    TIMEOUT_S = args.timeout_s
+    aokit = os.path.join(os.path.abspath(args.bin_dir), "aokit")
+    peers = os.path.join(os.path.abspath(args.bin_dir), "aokit-peers")
     try:
         sizes = [tuple(int(v) for v in s.split("x")) for s in args.sizes.split(",")]
     except ValueError:
         sys.exit(f"gpu: --sizes takes WxH[,WxH…], not '{args.sizes}'")
-    for binary in (AOKIT, PEERS):
+    for binary in (aokit, peers):
         if not os.access(binary, os.X_OK):
             sys.exit(f"gpu: {binary} is missing: run bench/gpu.sh (it builds the release binaries)")
     start = time.time()
-    info = subprocess.run([AOKIT, "info"], text=True, capture_output=True).stdout.splitlines()
+    info = subprocess.run([aokit, "info"], text=True, capture_output=True).stdout.splitlines()
     device = json.loads(info[0]) if info and info[0].startswith("{") else {"name": "?"}
-    techniques = [l.split()[0] for l in subprocess.run([AOKIT, "techniques"], text=True, capture_output=True)
+    techniques = [l.split()[0] for l in subprocess.run([aokit, "techniques"], text=True, capture_output=True)
                   .stdout.splitlines() if l and not l[0].isspace()]
     rows, refusals = [], []
     with tempfile.TemporaryDirectory() as tmp:
@@ -63,7 +76,7 @@ def main():
                 modes = [None]
                 for mode in modes:
                     path = os.path.join(tmp, "bench.json")
-                    cmd = [AOKIT, "bench", "--backend", "vulkan", "--scene", args.scene, "--technique", t,
+                    cmd = [aokit, "bench", "--backend", "vulkan", "--scene", args.scene, "--technique", t,
                            "--width", str(w), "--height", str(h), "--frames", str(args.frames),
                            "--warmup", str(args.warmup), "--json", path]
                     if mode:
@@ -84,14 +97,15 @@ def main():
                     rows.append((t, w, h, mode or ("pipeline" if r.get("traces_rays") else "—"), r))
         peer_sections = []
         for peer, extra in (("xegtao", ["--spirv", args.xegtao_spirv] if args.xegtao_spirv else None),
-                            ("bevy", None if args.no_bevy else [])):
+                            ("bevy", None if args.no_bevy else
+                             (["--bevy-src", args.bevy_src] if args.bevy_src else []))):
             if extra is None:
                 why = "no --xegtao-spirv given" if peer == "xegtao" else "--no-bevy"
                 peer_sections.append(f"- {peer}: not run ({why}).")
                 continue
             for (w, h) in sizes:
                 path = os.path.join(tmp, f"{peer}.json")
-                cmd = [PEERS, peer, "--scene", args.scene, "--width", str(w), "--height", str(h),
+                cmd = [peers, peer, "--scene", args.scene, "--width", str(w), "--height", str(h),
                        "--iterations", str(args.frames), "--warmup", str(args.warmup), "--json", path] + extra
                 print(f"gpu: peers {peer} {w}×{h}", file=sys.stderr)
                 ok, error = attempt(cmd)

@@ -8,6 +8,10 @@
 # Needs no nightly: the SPIR-V is committed. Budget on one GPU: under 8 minutes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-cargo build --release -p aokit --bin aokit
-cargo build --release -p aokit-peers
+# --bin-dir DIR: the release binaries were built elsewhere and copied to DIR (a GPU machine
+# without cargo); otherwise build them here.
+if [[ " $* " != *" --bin-dir "* ]]; then
+  cargo build --release -p aokit --bin aokit
+  cargo build --release -p aokit-peers
+fi
 python3 bench/gpu.py "$@"
