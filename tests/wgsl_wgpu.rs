@@ -15,7 +15,7 @@ use aokit::technique::Technique;
 use aokit_contract::constants::{FrameInputs, evaluate_struct, inputs};
 use aokit_contract::expr::{Inputs, Value, eval};
 use aokit_contract::graphs::data_words;
-use aokit_contract::manifest::{Manifest, TechniqueManifest, VariantManifest};
+use aokit_contract::manifest::{Manifest, ModuleManifest, TechniqueManifest, VariantManifest};
 use aokit_cpu::graph::{CpuExecutor, CpuInputs};
 use aokit_cpu::no_progress;
 use std::collections::HashMap;
@@ -117,19 +117,23 @@ fn run_on_wgpu(
             label: Some(&pass.entry),
             source: wgpu::ShaderSource::Wgsl(source.into()),
         });
-        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
-            label: Some(&pass.entry),
-            layout: None,
-            module: &shader,
-            entry_point: Some(wgsl.entry_point.as_deref().unwrap_or(&pass.entry)),
-            compilation_options: Default::default(),
-            cache: None,
-        });
         // The push constants from the expressions (`pass`: this pass's index among its
         // module's), as a uniform buffer (16-byte multiple) at the manifest's binding.
         let index = seen.entry(&pass.entry).or_insert(0);
         inputs.names.insert("pass".into(), Value::Int(*index));
         *index += 1;
+        let push = module.push_constants.as_ref().map(|name| evaluate_struct(t, name, &inputs).unwrap());
+        // Specialized as the manifest says (the Vulkan executor does the same).
+        let specialization = specialization(manifest, module, push.as_deref().unwrap_or(&[]));
+        let overrides: Vec<(&str, f64)> = specialization.iter().map(|(id, v)| (id.as_str(), *v)).collect();
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(&pass.entry),
+            layout: None,
+            module: &shader,
+            entry_point: Some(wgsl.entry_point.as_deref().unwrap_or(&pass.entry)),
+            compilation_options: wgpu::PipelineCompilationOptions { constants: &overrides, ..Default::default() },
+            cache: None,
+        });
         let mut entries: Vec<wgpu::BindGroupEntry> = pass
             .bindings
             .iter()
@@ -137,8 +141,7 @@ fn run_on_wgpu(
             .map(|b| wgpu::BindGroupEntry { binding: b.0, resource: buffers[b.1.as_str()].as_entire_binding() })
             .collect();
         let constants;
-        if let (Some(name), Some(binding)) = (&module.push_constants, wgsl.constants_binding) {
-            let mut bytes = evaluate_struct(t, name, &inputs).unwrap();
+        if let (Some(mut bytes), Some(binding)) = (push, wgsl.constants_binding) {
             bytes.resize(bytes.len().next_multiple_of(16), 0);
             constants = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
                 label: Some("constants"),
@@ -248,4 +251,34 @@ fn every_webgpu_technique_from_the_manifest_alone_on_wgpu_agrees_with_cpu_sim() 
         }
     }
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
+}
+
+/// A module's WGSL overrides for push-constant bytes `push`, as `assets/README.md` tells a consumer
+/// to derive them from the manifest: `specialized` 1, every other constant the 4 bytes of the
+/// push-constant field of its name (found in nested structs too), keyed by `@id`.
+fn specialization(manifest: &Manifest, module: &ModuleManifest, push: &[u8]) -> Vec<(String, f64)> {
+    fn offset(manifest: &Manifest, ty: &str, name: &str) -> Option<usize> {
+        let s = manifest.structs.iter().find(|s| s.name == ty)?;
+        s.fields.iter().find_map(|f| {
+            if f.name == name && f.size == 4 {
+                Some(f.offset as usize)
+            } else {
+                offset(manifest, &f.ty, name).map(|o| f.offset as usize + o)
+            }
+        })
+    }
+    module
+        .specialization
+        .iter()
+        .map(|c| {
+            let value = if c.name == "specialized" {
+                1
+            } else {
+                let at = offset(manifest, module.push_constants.as_deref().expect("push constants"), &c.name)
+                    .unwrap_or_else(|| panic!("spec constant {} names no push-constant field", c.name));
+                u32::from_le_bytes(push[at..at + 4].try_into().unwrap())
+            };
+            (c.id.to_string(), f64::from(value))
+        })
+        .collect()
 }

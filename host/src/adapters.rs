@@ -102,7 +102,8 @@ impl Adapters {
     /// The import and export pipelines on `gpu`.
     pub fn new(gpu: &Gpu) -> Result<Self, GpuError> {
         let push = size_of::<ImportParams>() as u32;
-        let kernel = |spirv, entry, types: &[vk::DescriptorType]| ComputeKernel::new(gpu, spirv, entry, types, push);
+        let kernel =
+            |spirv, entry, types: &[vk::DescriptorType]| ComputeKernel::new(gpu, spirv, entry, types, push, &[]);
         let exports = Self::EXPORT_FORMATS.iter().map(|&(_, entry, spirv)| kernel(spirv, entry, &EXPORT_TYPES));
         Ok(Adapters {
             import_depth: kernel(modules::IMPORT_DEPTH, c"import_depth", &IMPORT_TYPES)?,

@@ -14,13 +14,15 @@ pub(crate) struct ComputeKernel {
 }
 
 impl ComputeKernel {
-    /// Pipeline for entry point `entry` of the module `spirv`; `push_size == 0`: no push constants.
+    /// Pipeline for entry point `entry` of the module `spirv`; `push_size == 0`: no push constants;
+    /// `specialization`: `(SpecId, 32-bit value)` of the module's specialization constants.
     pub(crate) fn new(
         gpu: &Gpu,
         spirv: &[u8],
         entry: &std::ffi::CStr,
         types: &[vk::DescriptorType],
         push_size: u32,
+        specialization: &[(u32, u32)],
     ) -> Result<Self, GpuError> {
         let compute = vk::ShaderStageFlags::COMPUTE;
         let set_layout = gpu.set_layout(types, compute)?;
@@ -37,9 +39,16 @@ impl ComputeKernel {
         };
         let layout = unsafe { gpu.device.create_pipeline_layout(&layout_info, None)? };
         let module = gpu.shader_module(spirv)?;
-        let info = vk::ComputePipelineCreateInfo::default()
-            .stage(vk::PipelineShaderStageCreateInfo::default().stage(compute).module(module).name(entry))
-            .layout(layout);
+        let map: Vec<vk::SpecializationMapEntry> = (0..specialization.len() as u32)
+            .map(|i| vk::SpecializationMapEntry { constant_id: specialization[i as usize].0, offset: 4 * i, size: 4 })
+            .collect();
+        let data: Vec<u8> = specialization.iter().flat_map(|&(_, v)| v.to_le_bytes()).collect();
+        let spec = vk::SpecializationInfo::default().map_entries(&map).data(&data);
+        let mut stage = vk::PipelineShaderStageCreateInfo::default().stage(compute).module(module).name(entry);
+        if !specialization.is_empty() {
+            stage = stage.specialization_info(&spec);
+        }
+        let info = vk::ComputePipelineCreateInfo::default().stage(stage).layout(layout);
         let created = unsafe { gpu.device.create_compute_pipelines(vk::PipelineCache::null(), &[info], None) };
         unsafe { gpu.device.destroy_shader_module(module, None) };
         match created {

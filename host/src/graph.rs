@@ -128,6 +128,16 @@ pub fn check_device(gpu: &Gpu, graph: &Graph) -> Result<(), GpuError> {
     gpu.require_rays(if pipelines { RtMode::Pipeline } else { RtMode::Query })
 }
 
+/// A pipeline's identity: the entry point and its specialization constants' `(SpecId, value)`.
+type PipelineKey = (&'static str, Vec<(u32, u32)>);
+
+/// The pipeline `pass` runs on: its entry point, specialized with what its push constants say
+/// (`Kernel::specialization_for`).
+fn pipeline_key(pass: &Pass) -> Result<PipelineKey, GpuError> {
+    let specialization = pass.kernel.specialization_for(&pass.push_constants).map_err(GpuError::Input)?;
+    Ok((pass.entry(), specialization))
+}
+
 /// Set 0 of `pass`'s pipeline: at least `slots` bindings (the module's), the scene's TLAS an
 /// acceleration structure, every other binding a storage buffer.
 fn descriptor_types(pass: &Pass, slots: u32) -> Vec<vk::DescriptorType> {
@@ -186,7 +196,8 @@ struct Timing {
 /// Runs pass graphs on one Vulkan device (see the module documentation).
 pub struct AoContext<G: Borrow<Gpu> = Gpu> {
     owner: G,
-    pipelines: HashMap<&'static str, Pipeline>,
+    /// Per entry point and specialization ([`pipeline_key`]).
+    pipelines: HashMap<PipelineKey, Pipeline>,
     /// Boxed: a frame's inputs may point into an entry while others are inserted.
     resources: HashMap<&'static str, Box<DeviceResource>>,
     /// Descriptor sets per graph and bindings, most recently used last.
@@ -303,7 +314,8 @@ impl<G: Borrow<Gpu>> AoContext<G> {
 
     /// The pipeline of `pass`, made on first use.
     fn ensure_pipeline(&mut self, pass: &Pass) -> Result<(), GpuError> {
-        if self.pipelines.contains_key(pass.entry()) {
+        let key = pipeline_key(pass)?;
+        if self.pipelines.contains_key(&key) {
             return Ok(());
         }
         let kernel = pass.kernel;
@@ -326,7 +338,8 @@ impl<G: Borrow<Gpu>> AoContext<G> {
                         pass.entry()
                     )));
                 }
-                let compute = ComputeKernel::new(self.gpu(), spirv, &entry, &types, kernel.push_constant_bytes())?;
+                let compute =
+                    ComputeKernel::new(self.gpu(), spirv, &entry, &types, kernel.push_constant_bytes(), &key.1)?;
                 Pipeline::Compute { kernel: compute, workgroup: kernel.threads }
             }
             PassKind::RayTracing { miss, any_hit, .. } => {
@@ -352,7 +365,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
                 )?)
             }
         };
-        self.pipelines.insert(pass.entry(), pipeline);
+        self.pipelines.insert(key, pipeline);
         Ok(())
     }
 
@@ -476,7 +489,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
                 memory_barrier(self.gpu(), cmd, stages, stages);
             }
             let invocations = pass.invocations(&graph.view);
-            match &self.pipelines[pass.entry()] {
+            match &self.pipelines[&pipeline_key(pass)?] {
                 Pipeline::Compute { kernel, workgroup } => {
                     let groups = [invocations.x.div_ceil(workgroup[0]), invocations.y.div_ceil(workgroup[1]), 1];
                     kernel.record_set(self.gpu(), cmd, sets[i], &pass.push_constants, groups);
@@ -742,7 +755,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
     ) -> Result<Vec<vk::DescriptorSet>, GpuError> {
         let mut sets = Vec::new();
         for pass in &graph.passes {
-            let (layout, count) = match &self.pipelines[pass.entry()] {
+            let (layout, count) = match &self.pipelines[&pipeline_key(pass)?] {
                 Pipeline::Compute { kernel, .. } => (kernel.set_layout(), kernel.bindings()),
                 Pipeline::RayTracing(p) => (p.set_layout, p.bindings.len() as u32),
                 Pipeline::Raster(p) => (p.set_layout, p.bindings),

@@ -81,6 +81,24 @@ pub struct BindingDecl {
     pub element: LayoutOf,
 }
 
+/// A specialization constant of an entry point, `#[spirv(spec_constant(id = N))] name: u32`
+/// (default 0). The one named [`SPECIALIZED`] is 0 unless an executor fixes the others at
+/// pipeline creation, when it is 1; every other one is named after a field of the push-constant
+/// struct (found in nested structs too) and then holds that field's 4 bytes, so a driver folds
+/// what the push constants would otherwise say at every dispatch (loop counts, modes, exponents).
+/// Left at 0 (cpu-sim, WGSL overrides at their defaults) the kernel reads its push constants:
+/// the result is the same either way.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub struct SpecConstantDecl {
+    /// The `SpecId`.
+    pub id: u32,
+    /// The parameter's name: [`SPECIALIZED`] or a push-constant field.
+    pub name: &'static str,
+}
+
+/// The specialization constant that switches the others on (see [`SpecConstantDecl`]).
+pub const SPECIALIZED: &str = "specialized";
+
 /// An entry point as its signature declares it.
 #[derive(Debug)]
 pub struct Kernel {
@@ -93,6 +111,8 @@ pub struct Kernel {
     pub push_constants: Option<(&'static str, LayoutOf)>,
     /// In slot order.
     pub bindings: &'static [BindingDecl],
+    /// Its specialization constants, in the order declared (see [`SpecConstantDecl`]).
+    pub specialization: &'static [SpecConstantDecl],
     /// Runs a dispatch of `[x, y]` invocations on the CPU, calling the entry point itself once
     /// per invocation id over the bindings of [`KernelIo`]: generated for compute kernels that
     /// take only the invocation id, push constants and storage buffers.
@@ -108,6 +128,37 @@ impl Kernel {
     /// Size in bytes of the push-constant block (0 without one).
     pub fn push_constant_bytes(&self) -> u32 {
         self.push_constants.and_then(|(_, layout)| layout()).map_or(0, |l| l.size as u32)
+    }
+
+    /// `(SpecId, value)` of each specialization constant for a dispatch with push constants
+    /// `push`: [`SPECIALIZED`] is 1, every other one the 4 bytes of its push-constant field (see
+    /// [`SpecConstantDecl`]). Empty when the kernel declares none; an executor makes one pipeline
+    /// per distinct list.
+    pub fn specialization_for(&self, push: &[u8]) -> Result<Vec<(u32, u32)>, String> {
+        if self.specialization.is_empty() {
+            return Ok(Vec::new());
+        }
+        let layout = self.push_constants.and_then(|(_, layout)| layout());
+        self.specialization
+            .iter()
+            .map(|c| {
+                if c.name == SPECIALIZED {
+                    return Ok((c.id, 1));
+                }
+                let offset = layout.as_ref().and_then(|l| field_offset(l, c.name)).ok_or_else(|| {
+                    format!("'{}': spec constant {} names no 4-byte push-constant field", self.entry, c.name)
+                })?;
+                let bytes = push.get(offset..offset + 4).ok_or_else(|| {
+                    format!(
+                        "'{}': {} push-constant bytes, spec constant {} reads {offset}..",
+                        self.entry,
+                        push.len(),
+                        c.name
+                    )
+                })?;
+                Ok((c.id, u32::from_le_bytes(bytes.try_into().expect("4 bytes"))))
+            })
+            .collect()
     }
 
     /// One past the highest binding slot: the length of the descriptor-set layout.
@@ -133,6 +184,15 @@ impl PartialEq for Kernel {
     fn eq(&self, other: &Kernel) -> bool {
         self.entry == other.entry
     }
+}
+
+/// Byte offset of the 4-byte field `name` in `layout` or in a struct nested in it (depth first).
+fn field_offset(layout: &StructLayout, name: &str) -> Option<usize> {
+    layout.fields.iter().find_map(|f| match (f.name == name && f.size == 4, (f.nested)()) {
+        (true, _) => Some(f.offset),
+        (false, Some(nested)) => field_offset(&nested, name).map(|o| f.offset + o),
+        (false, None) => None,
+    })
 }
 
 /// The element layout of a binding that is no storage buffer.

@@ -1453,6 +1453,12 @@ impl AokitSide {
             }
             if !modules.contains_key(entry) {
                 let module = WgslModule::read(entry)?;
+                // Specialized as the Vulkan executor does (Bevy's shader has its slice and sample
+                // counts as shader defs): `@id(N)` overrides keyed by their ids.
+                let specialization = pass.kernel.specialization_for(&pass.push_constants)?;
+                let ids: Vec<String> = specialization.iter().map(|(id, _)| id.to_string()).collect();
+                let constants: Vec<(&str, f64)> =
+                    ids.iter().zip(&specialization).map(|(id, &(_, value))| (id.as_str(), f64::from(value))).collect();
                 let pipeline = gpu.checked(&format!("aokit's {entry}.wgsl"), || {
                     let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
                         label: Some(entry),
@@ -1463,7 +1469,10 @@ impl AokitSide {
                         layout: None,
                         module: &shader,
                         entry_point: Some(&module.entry),
-                        compilation_options: Default::default(),
+                        compilation_options: wgpu::PipelineCompilationOptions {
+                            constants: &constants,
+                            ..Default::default()
+                        },
                         cache: None,
                     })
                 })?;

@@ -11,6 +11,11 @@ enum Param {
     /// `#[spirv(push_constant)] p: &T`.
     PushConstants(Type),
     Binding(Binding),
+    /// `#[spirv(spec_constant(id = N))] name: u32`: the CPU driver passes its default, 0.
+    SpecConstant {
+        id: u32,
+        name: Ident,
+    },
     /// Any other built-in, payload or attribute: no CPU driver is generated.
     Other,
 }
@@ -112,7 +117,20 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> Result<TokenStream, Error
         if read_write && !(mutable && text.contains("storage_buffer")) {
             return Err(Error::new_spanned(&p.pat, "#[read_write] marks a `&mut [T]` storage buffer"));
         }
-        let param = if text.contains("push_constant") {
+        let param = if text.contains("spec_constant") {
+            let id = number_after(&text, "id")
+                .ok_or_else(|| Error::new_spanned(&p.pat, "a spec constant needs `spec_constant(id = N)`"))?;
+            if number_after(&text, "default").is_some_and(|d| d != 0) {
+                return Err(Error::new_spanned(
+                    &p.pat,
+                    "aokit's spec constants default to 0 (the push constants rule)",
+                ));
+            }
+            if p.ty.to_token_stream().to_string() != "u32" {
+                return Err(Error::new_spanned(&p.ty, "a spec constant is a u32 (a float field's bits)"));
+            }
+            Param::SpecConstant { id, name }
+        } else if text.contains("push_constant") {
             Param::PushConstants(referent.ok_or_else(|| Error::new_spanned(&p.ty, "push constants are `&T`"))?)
         } else if text.trim() == "global_invocation_id" {
             Param::InvocationId
@@ -217,6 +235,19 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> Result<TokenStream, Error
         }
         None => quote!(None),
     };
+    let specs: Vec<(u32, String)> = params
+        .iter()
+        .filter_map(|p| match p {
+            Param::SpecConstant { id, name } => Some((*id, name.to_string())),
+            _ => None,
+        })
+        .collect();
+    for (i, (id, name)) in specs.iter().enumerate() {
+        if specs[..i].iter().any(|(other, _)| other == id) {
+            return Err(Error::new_spanned(&f.sig.ident, format!("spec constant id {id} ({name}) is declared twice")));
+        }
+    }
+    let spec_decls = specs.iter().map(|(id, name)| quote!(crate::kernel::SpecConstantDecl { id: #id, name: #name }));
     let stage_ident = Ident::new(stage, Span::call_site());
     let [tx, ty, tz] = threads;
 
@@ -246,6 +277,7 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> Result<TokenStream, Error
         let args = params.iter().map(|p| match p {
             Param::InvocationId => quote!(crate::glam::UVec3::new(x, y, 0)),
             Param::PushConstants(_) => quote!(&__aokit_push),
+            Param::SpecConstant { .. } => quote!(0u32),
             Param::Binding(b) => {
                 let local = format_ident!("__aokit_{}", b.name);
                 if b.access == "Read" { quote!(&#local) } else { quote!(&mut *#local) }
@@ -302,6 +334,7 @@ pub fn expand(attr: TokenStream, item: TokenStream) -> Result<TokenStream, Error
                 threads: [#tx, #ty, #tz],
                 push_constants: #push_decl,
                 bindings: &[#(#decls),*],
+                specialization: &[#(#spec_decls),*],
                 cpu: #cpu,
             };
 

@@ -7,6 +7,7 @@ use crate::common::read::read;
 use spirv_std::num_traits::Float;
 
 use super::{GtaoParams, MIP_LEVELS, mip_size};
+use crate::common::ViewParams;
 use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, store_term};
 use crate::common::gbuffer_read::decoded_normals;
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, select_v3};
@@ -46,6 +47,12 @@ pub struct PixelSetup<L: Lanes = f32> {
     pub xi: L::V2,
 }
 
+/// Working-depth MIP 0 at texels `q` (row-major over the full target).
+#[inline]
+fn depth0<L: Lanes>(mips: &[f32], view: &ViewParams, q: L::U2) -> L {
+    L::gather_index(mips, view.index_lanes::<L>(q))
+}
+
 /// The packed denoiser edges of pixel `p` (one or `L::LANES`), whether it has a usable depth
 /// (background has none), and its [`PixelSetup`] (spec gtao-raymarch-hybrid §2.6.1–§2.6.2).
 #[inline]
@@ -57,15 +64,16 @@ pub fn pixel_setup<L: Lanes>(
 ) -> (L::Index, L::Mask, PixelSetup<L>) {
     let view = &params.view;
     let size = view.size();
-    // Working-depth MIP 0 (the first level of the chain, row-major over the full target).
-    let depth0 = |q: L::U2| L::gather_index(mips, view.index_lanes::<L>(q));
-    let zc = depth0(p);
+    // Working-depth MIP 0 (the first level of the chain, row-major over the full target). A
+    // function, not a closure: a closure over `mips` and a local `params` leaves a struct of
+    // pointers in the SPIR-V that naga rejects.
+    let zc = depth0::<L>(mips, view, p);
     let e = edges(
         zc,
-        depth0(neighbour_lanes::<L>(p, -1, 0, size)),
-        depth0(neighbour_lanes::<L>(p, 1, 0, size)),
-        depth0(neighbour_lanes::<L>(p, 0, -1, size)),
-        depth0(neighbour_lanes::<L>(p, 0, 1, size)),
+        depth0::<L>(mips, view, neighbour_lanes::<L>(p, -1, 0, size)),
+        depth0::<L>(mips, view, neighbour_lanes::<L>(p, 1, 0, size)),
+        depth0::<L>(mips, view, neighbour_lanes::<L>(p, 0, -1, size)),
+        depth0::<L>(mips, view, neighbour_lanes::<L>(p, 0, 1, size)),
     );
     let packed = pack_edges(e);
     let uv = view.pixel_uv_lanes::<L>(p);

@@ -63,7 +63,45 @@ pub struct GtaoParams {
     pub _pad: u32,
 }
 
+/// The settings a preset fixes, as the bits of the specialization constants of the same names
+/// (`aokit_shaders::kernel::SpecConstantDecl`): a pipeline made with them lets the driver fold
+/// the loop counts, the modes and the exponents, as XeGTAO's quality entry points fold their
+/// compile-time constants.
+#[derive(Copy, Clone, Debug, PartialEq)]
+pub struct GtaoFixed {
+    pub slices: u32,
+    pub steps: u32,
+    pub bent_normals: u32,
+    pub thin_occluder_compensation: u32,
+    pub sample_distribution_power: u32,
+    pub final_value_power: u32,
+    pub falloff_range: u32,
+    pub radius_multiplier: u32,
+    pub depth_mip_sampling_offset: u32,
+}
+
 impl GtaoParams {
+    /// These parameters with [`GtaoFixed`]'s settings where `specialized` is 1 (an executor
+    /// fixed them at pipeline creation, each equal to the pushed value); as pushed where it is 0.
+    #[inline]
+    pub fn with_fixed(&self, specialized: u32, fixed: GtaoFixed) -> GtaoParams {
+        if specialized == 0 {
+            return *self;
+        }
+        GtaoParams {
+            slices: fixed.slices,
+            steps: fixed.steps,
+            bent_normals: fixed.bent_normals,
+            thin_occluder_compensation: f32::from_bits(fixed.thin_occluder_compensation),
+            sample_distribution_power: f32::from_bits(fixed.sample_distribution_power),
+            final_value_power: f32::from_bits(fixed.final_value_power),
+            falloff_range: f32::from_bits(fixed.falloff_range),
+            radius_multiplier: f32::from_bits(fixed.radius_multiplier),
+            depth_mip_sampling_offset: f32::from_bits(fixed.depth_mip_sampling_offset),
+            ..*self
+        }
+    }
+
     /// `R = Radius·RadiusMultiplier` (spec gtao-raymarch-hybrid §2.6.2).
     #[inline]
     pub fn effective_radius(&self) -> f32 {
@@ -135,6 +173,7 @@ pub fn gtao_normals(
 /// MainPass, one invocation per pixel of the full target.
 #[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "gtao_main"))]
+#[allow(clippy::too_many_arguments)]
 pub fn gtao_main(
     #[spirv(global_invocation_id)] id: UVec3,
     #[spirv(push_constant)] params: &GtaoParams,
@@ -142,7 +181,29 @@ pub fn gtao_main(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] normals: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] terms: &mut [u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] edges: &mut [u32],
+    #[spirv(spec_constant(id = 0))] specialized: u32,
+    #[spirv(spec_constant(id = 1))] slices: u32,
+    #[spirv(spec_constant(id = 2))] steps: u32,
+    #[spirv(spec_constant(id = 3))] bent_normals: u32,
+    #[spirv(spec_constant(id = 4))] thin_occluder_compensation: u32,
+    #[spirv(spec_constant(id = 5))] sample_distribution_power: u32,
+    #[spirv(spec_constant(id = 6))] final_value_power: u32,
+    #[spirv(spec_constant(id = 7))] falloff_range: u32,
+    #[spirv(spec_constant(id = 8))] radius_multiplier: u32,
+    #[spirv(spec_constant(id = 9))] depth_mip_sampling_offset: u32,
 ) {
+    let fixed = GtaoFixed {
+        slices,
+        steps,
+        bent_normals,
+        thin_occluder_compensation,
+        sample_distribution_power,
+        final_value_power,
+        falloff_range,
+        radius_multiplier,
+        depth_mip_sampling_offset,
+    };
+    let params = &params.with_fixed(specialized, fixed);
     let size = params.view.size();
     let p = id.truncate();
     if p.x >= size.x || p.y >= size.y {

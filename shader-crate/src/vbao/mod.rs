@@ -12,7 +12,7 @@ pub use kernel::{SECTORS, sector_bits, vbao_pixel};
 
 use crate::common::read::write;
 use crate::glam::UVec3;
-use crate::gtao::GtaoParams;
+use crate::gtao::{GtaoFixed, GtaoParams};
 use spirv_std::spirv;
 
 /// `SectorRule::Paper` (spec vbao §3): start = ⌊N·lo⌋, count = ⌈N·(hi − lo)⌉.
@@ -53,6 +53,7 @@ pub struct VbaoParams {
 /// main pass's (spec vbao §1).
 #[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "vbao_main"))]
+#[allow(clippy::too_many_arguments)]
 pub fn vbao_main(
     #[spirv(global_invocation_id)] id: UVec3,
     #[spirv(push_constant)] params: &VbaoParams,
@@ -60,7 +61,36 @@ pub fn vbao_main(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] normals: &[u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] terms: &mut [u32],
     #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] edges: &mut [u32],
+    #[spirv(spec_constant(id = 0))] specialized: u32,
+    #[spirv(spec_constant(id = 1))] slices: u32,
+    #[spirv(spec_constant(id = 2))] steps: u32,
+    #[spirv(spec_constant(id = 3))] bent_normals: u32,
+    #[spirv(spec_constant(id = 4))] thin_occluder_compensation: u32,
+    #[spirv(spec_constant(id = 5))] sample_distribution_power: u32,
+    #[spirv(spec_constant(id = 6))] final_value_power: u32,
+    #[spirv(spec_constant(id = 7))] falloff_range: u32,
+    #[spirv(spec_constant(id = 8))] radius_multiplier: u32,
+    #[spirv(spec_constant(id = 9))] depth_mip_sampling_offset: u32,
+    #[spirv(spec_constant(id = 10))] weighting: u32,
+    #[spirv(spec_constant(id = 11))] sector_rule: u32,
 ) {
+    let fixed = GtaoFixed {
+        slices,
+        steps,
+        bent_normals,
+        thin_occluder_compensation,
+        sample_distribution_power,
+        final_value_power,
+        falloff_range,
+        radius_multiplier,
+        depth_mip_sampling_offset,
+    };
+    let params = &VbaoParams {
+        gtao: params.gtao.with_fixed(specialized, fixed),
+        weighting: if specialized == 0 { params.weighting } else { weighting },
+        sector_rule: if specialized == 0 { params.sector_rule } else { sector_rule },
+        ..*params
+    };
     let size = params.gtao.view.size();
     let p = id.truncate();
     if p.x >= size.x || p.y >= size.y {

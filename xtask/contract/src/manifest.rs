@@ -246,6 +246,20 @@ pub struct ModuleManifest {
     /// The module as WGSL (`assets/wgsl/`), for compute modules WebGPU core can run.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub wgsl: Option<WgslManifest>,
+    /// Its specialization constants (all `u32`, default 0): `specialized` set to 1 makes the
+    /// others hold the push-constant fields of their names (a float's bits), fixed at pipeline
+    /// creation; left at 0 the module reads its push constants (`assets/README.md`).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub specialization: Vec<SpecConstantManifest>,
+}
+
+/// One specialization constant of a module.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SpecConstantManifest {
+    /// The `SpecId` (Vulkan `VkSpecializationMapEntry::constantID`, WGSL `@id`).
+    pub id: u32,
+    /// `specialized`, or the push-constant field it holds.
+    pub name: String,
 }
 
 /// A module's WGSL translation.
@@ -306,7 +320,7 @@ impl Manifest {
 /// modules; it cannot read ray-tracing modules.
 #[cfg(feature = "reflect")]
 pub mod reflect {
-    use super::{BindingManifest, ModuleManifest};
+    use super::{BindingManifest, ModuleManifest, SpecConstantManifest};
     use naga::{AddressSpace, ImageClass, ScalarKind, ShaderStage, StorageAccess, TypeInner};
 
     /// Parse with naga's SPIR-V front end and run naga's validator.
@@ -391,6 +405,13 @@ pub mod reflect {
             }
         }
         bindings.sort_by_key(|b| (b.set, b.binding));
+        // The SpecIds (names come from the kernel's declaration).
+        let mut specialization: Vec<SpecConstantManifest> = module
+            .overrides
+            .iter()
+            .filter_map(|(_, o)| o.id.map(|id| SpecConstantManifest { id: id.into(), name: String::new() }))
+            .collect();
+        specialization.sort_by_key(|c| c.id);
         Ok(ModuleManifest {
             entry_point: entry.name.clone(),
             file: file.into(),
@@ -400,6 +421,7 @@ pub mod reflect {
             push_constant_bytes,
             push_constants: None,
             wgsl: None,
+            specialization,
         })
     }
 }
@@ -526,6 +548,7 @@ pub mod words {
             push_constant_bytes: 0,
             push_constants: None,
             wgsl: None,
+            specialization: Vec::new(),
         })
     }
 }
@@ -589,6 +612,17 @@ impl Manifest {
             let kernel = aokit_shaders::kernel::Kernel::find(&m.entry_point)
                 .ok_or_else(|| format!("{}: no #[kernel] entry point of that name", m.entry_point))?;
             m.push_constants = kernel.push_constants.map(|(name, _)| name.to_string());
+            let mut declared: Vec<u32> = kernel.specialization.iter().map(|c| c.id).collect();
+            declared.sort();
+            let in_module: Vec<u32> = m.specialization.iter().map(|c| c.id).collect();
+            if declared != in_module {
+                return Err(format!(
+                    "{}: the kernel declares spec constants {declared:?}, the module has {in_module:?}",
+                    m.entry_point
+                ));
+            }
+            m.specialization =
+                kernel.specialization.iter().map(|c| SpecConstantManifest { id: c.id, name: c.name.into() }).collect();
             if let Some(name) = &m.push_constants {
                 let s = self.structs.iter().find(|s| &s.name == name).ok_or_else(|| {
                     format!(
