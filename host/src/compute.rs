@@ -39,8 +39,9 @@ impl ComputeKernel {
         };
         let layout = unsafe { gpu.device.create_pipeline_layout(&layout_info, None)? };
         let module = gpu.shader_module(spirv)?;
-        let map: Vec<vk::SpecializationMapEntry> = (0..specialization.len() as u32)
-            .map(|i| vk::SpecializationMapEntry { constant_id: specialization[i as usize].0, offset: 4 * i, size: 4 })
+        let map: Vec<vk::SpecializationMapEntry> = (0..)
+            .zip(specialization)
+            .map(|(i, &(id, _))| vk::SpecializationMapEntry { constant_id: id, offset: 4 * i, size: 4 })
             .collect();
         let data: Vec<u8> = specialization.iter().flat_map(|&(_, v)| v.to_le_bytes()).collect();
         let spec = vk::SpecializationInfo::default().map_entries(&map).data(&data);

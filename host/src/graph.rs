@@ -312,10 +312,9 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         modules::of(entry).ok_or_else(|| GpuError::Input(format!("no SPIR-V module for entry point '{entry}'")))
     }
 
-    /// The pipeline of `pass`, made on first use.
-    fn ensure_pipeline(&mut self, pass: &Pass) -> Result<(), GpuError> {
-        let key = pipeline_key(pass)?;
-        if self.pipelines.contains_key(&key) {
+    /// The pipeline of `pass` (`key`: its [`pipeline_key`]), made on first use.
+    fn ensure_pipeline(&mut self, pass: &Pass, key: &PipelineKey) -> Result<(), GpuError> {
+        if self.pipelines.contains_key(key) {
             return Ok(());
         }
         let kernel = pass.kernel;
@@ -365,7 +364,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
                 )?)
             }
         };
-        self.pipelines.insert(key, pipeline);
+        self.pipelines.insert(key.clone(), pipeline);
         Ok(())
     }
 
@@ -426,28 +425,37 @@ impl<G: Borrow<Gpu>> AoContext<G> {
     /// from a pool of the context's queue family). See the module documentation for the
     /// synchronisation contract.
     pub fn record(&mut self, cmd: vk::CommandBuffer, graph: &Graph, inputs: &GpuInputs) -> Result<(), GpuError> {
-        self.check_and_prepare(graph)?;
-        self.record_prepared(cmd, graph, inputs)
+        let pipelines = self.check_and_prepare(graph)?;
+        self.record_prepared(cmd, graph, &pipelines, inputs)
     }
 
     /// What can fail short of running out of memory, before anything is recorded: the graph's
-    /// consistency, the device's features, every pass's pipeline.
-    fn check_and_prepare(&mut self, graph: &Graph) -> Result<(), GpuError> {
+    /// consistency, the device's features, every pass's pipeline. Returns each pass's
+    /// [`pipeline_key`], computed once a frame.
+    fn check_and_prepare(&mut self, graph: &Graph) -> Result<Vec<PipelineKey>, GpuError> {
         graph.validate().map_err(GpuError::Input)?;
         check_device(self.gpu(), graph)?;
-        for pass in &graph.passes {
-            self.ensure_pipeline(pass)?;
+        let keys = graph.passes.iter().map(pipeline_key).collect::<Result<Vec<_>, _>>()?;
+        for (pass, key) in graph.passes.iter().zip(&keys) {
+            self.ensure_pipeline(pass, key)?;
         }
-        Ok(())
+        Ok(keys)
     }
 
-    /// [`AoContext::record`] of a graph [`AoContext::check_and_prepare`] accepted.
-    fn record_prepared(&mut self, cmd: vk::CommandBuffer, graph: &Graph, inputs: &GpuInputs) -> Result<(), GpuError> {
+    /// [`AoContext::record`] of a graph [`AoContext::check_and_prepare`] accepted (`pipelines`:
+    /// what it returned).
+    fn record_prepared(
+        &mut self,
+        cmd: vk::CommandBuffer,
+        graph: &Graph,
+        pipelines: &[PipelineKey],
+        inputs: &GpuInputs,
+    ) -> Result<(), GpuError> {
         self.frame += 1;
         self.release_retired();
         let made = self.ensure_resources(graph)?;
         let key = self.set_key(graph, inputs)?;
-        let bound = self.ensure_sets(graph, key, inputs)?;
+        let bound = self.ensure_sets(graph, pipelines, key, inputs)?;
         self.ensure_timing(graph)?;
         let stages = self.shader_stages();
         let d = &self.gpu().device;
@@ -489,7 +497,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
                 memory_barrier(self.gpu(), cmd, stages, stages);
             }
             let invocations = pass.invocations(&graph.view);
-            match &self.pipelines[&pipeline_key(pass)?] {
+            match &self.pipelines[&pipelines[i]] {
                 Pipeline::Compute { kernel, workgroup } => {
                     let groups = [invocations.x.div_ceil(workgroup[0]), invocations.y.div_ceil(workgroup[1]), 1];
                     kernel.record_set(self.gpu(), cmd, sets[i], &pass.push_constants, groups);
@@ -571,7 +579,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         full.snapshots.clear();
         // What can fail short of running out of memory fails here, before anything is recorded
         // (once per frame: the graph's own recording below does not check it again).
-        self.check_and_prepare(&full)?;
+        let pipelines = self.check_and_prepare(&full)?;
         if self.adapters.is_none() {
             self.adapters = Some(Adapters::new(self.gpu())?);
         }
@@ -616,7 +624,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             scene: frame.scene,
             raster: None,
         };
-        self.record_prepared(cmd, &full, &inputs)?;
+        self.record_prepared(cmd, &full, &pipelines, &inputs)?;
         let adapters = self.adapters.as_ref().expect("made above");
         let ao = &self.resources[graph.output].buffer;
         let gpu = self.owner.borrow();
@@ -708,7 +716,13 @@ impl<G: Borrow<Gpu>> AoContext<G> {
 
     /// The index in `bound` of descriptor sets for the graph with these bindings: kept ones, or
     /// new ones (retiring the least recently used beyond [`KEPT_SETS`]).
-    fn ensure_sets(&mut self, graph: &Graph, key: SetKey, inputs: &GpuInputs) -> Result<usize, GpuError> {
+    fn ensure_sets(
+        &mut self,
+        graph: &Graph,
+        pipelines: &[PipelineKey],
+        key: SetKey,
+        inputs: &GpuInputs,
+    ) -> Result<usize, GpuError> {
         if let Some(i) = self.bound.iter().position(|b| b.key == key) {
             self.bound[i].used = self.frame;
             return Ok(i);
@@ -728,7 +742,7 @@ impl<G: Borrow<Gpu>> AoContext<G> {
             counts.iter().map(|(&ty, &n)| vk::DescriptorPoolSize::default().ty(ty).descriptor_count(n)).collect();
         let info = vk::DescriptorPoolCreateInfo::default().max_sets(graph.passes.len() as u32).pool_sizes(&sizes);
         let pool = unsafe { self.gpu().device.create_descriptor_pool(&info, None)? };
-        let sets = self.write_sets(graph, pool, inputs);
+        let sets = self.write_sets(graph, pipelines, pool, inputs);
         let sets = match sets {
             Ok(sets) => sets,
             Err(e) => {
@@ -746,16 +760,18 @@ impl<G: Borrow<Gpu>> AoContext<G> {
         Ok(self.bound.len() - 1)
     }
 
-    /// One descriptor set per pass from `pool`, binding each slot's buffer (or the TLAS).
+    /// One descriptor set per pass from `pool`, binding each slot's buffer (or the TLAS);
+    /// `pipelines`: each pass's [`pipeline_key`].
     fn write_sets(
         &self,
         graph: &Graph,
+        pipelines: &[PipelineKey],
         pool: vk::DescriptorPool,
         inputs: &GpuInputs,
     ) -> Result<Vec<vk::DescriptorSet>, GpuError> {
         let mut sets = Vec::new();
-        for pass in &graph.passes {
-            let (layout, count) = match &self.pipelines[&pipeline_key(pass)?] {
+        for (pass, pipeline) in graph.passes.iter().zip(pipelines) {
+            let (layout, count) = match &self.pipelines[pipeline] {
                 Pipeline::Compute { kernel, .. } => (kernel.set_layout(), kernel.bindings()),
                 Pipeline::RayTracing(p) => (p.set_layout, p.bindings.len() as u32),
                 Pipeline::Raster(p) => (p.set_layout, p.bindings),
