@@ -24,15 +24,14 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-TIMEOUT_S = 90.0
 
 
-def attempt(cmd):
+def attempt(cmd, timeout_s):
     """(True, None) when `cmd` succeeded, else (False, its last error line)."""
     try:
-        done = subprocess.run(cmd, cwd=ROOT, text=True, capture_output=True, timeout=TIMEOUT_S)
+        done = subprocess.run(cmd, cwd=ROOT, text=True, capture_output=True, timeout=timeout_s)
     except subprocess.TimeoutExpired:
-        return False, f"timed out after {TIMEOUT_S:.0f} s (--timeout-s)"
+        return False, f"timed out after {timeout_s:.0f} s (--timeout-s)"
     if done.returncode != 0:
         lines = [l for l in (done.stderr or done.stdout).strip().splitlines() if l.strip()]
         return False, (lines[-1] if lines else f"exit status {done.returncode}")
@@ -40,7 +39,6 @@ def attempt(cmd):
 
 
 def main():
-    global TIMEOUT_S
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--sizes", default="1920x1080,3840x2160")
     parser.add_argument("--frames", type=int, default=5)
@@ -49,12 +47,11 @@ def main():
     parser.add_argument("--xegtao-spirv", help="folder with XeGTAO's SPIR-V (bench/peers/README.md)")
     parser.add_argument("--no-bevy", action="store_true")
     parser.add_argument("--bevy-src", help="folder holding bevy_pbr-0.20.* and bevy_render-0.20.* (default: cargo's registry)")
-    parser.add_argument("--timeout-s", type=float, default=TIMEOUT_S, help="limit of each command, seconds")
+    parser.add_argument("--timeout-s", type=float, default=90.0, help="limit of each command, seconds")
     parser.add_argument("--bin-dir", default=os.path.join(ROOT, "target", "release"),
                         help="folder holding the release binaries aokit and aokit-peers")
     parser.add_argument("--out", default=os.path.join(ROOT, "bench", "GPU.md"))
     args = parser.parse_args()
-    TIMEOUT_S = args.timeout_s
     aokit = os.path.join(os.path.abspath(args.bin_dir), "aokit")
     peers = os.path.join(os.path.abspath(args.bin_dir), "aokit-peers")
     try:
@@ -83,7 +80,7 @@ def main():
                         cmd += ["--rt-mode", mode]
                     label = f"{t} {w}×{h}" + (f" ({mode})" if mode else "")
                     print(f"gpu: {label}", file=sys.stderr)
-                    ok, error = attempt(cmd)
+                    ok, error = attempt(cmd, args.timeout_s)
                     if not ok:
                         refusals.append((label, error))
                         if mode is None:
@@ -108,7 +105,7 @@ def main():
                 cmd = [peers, peer, "--scene", args.scene, "--width", str(w), "--height", str(h),
                        "--iterations", str(args.frames), "--warmup", str(args.warmup), "--json", path] + extra
                 print(f"gpu: peers {peer} {w}×{h}", file=sys.stderr)
-                ok, error = attempt(cmd)
+                ok, error = attempt(cmd, args.timeout_s)
                 if not ok:
                     peer_sections.append(f"- {peer} {w}×{h}: failed: {error}")
                     continue
