@@ -243,3 +243,49 @@ fn gtao_vulkan_agrees_with_cpu_per_pass() {
     assert!(terms_close >= 0.995);
     assert!(mse <= 1e-5);
 }
+
+/// The two prefilter dispatches (2×2 and 16×16 blocks, levels filtered from registers), on
+/// Vulkan and in cpu-sim's graph, against the level-by-level definition on the CPU, at sizes whose levels end in partial blocks
+/// and shrink to one texel wide or high, where a level's reads clamp onto its last texel. The
+/// depth is a surface at 5 with a different small offset (≤ 0.05, far inside the filter's
+/// falloff, so every texel of a 2×2 block weighs in) at every pixel: a block that filters a wrong
+/// texel moves a MIP texel by ~1e-3, while every texel of the five levels must match within
+/// float rounding (1e-6 relative).
+#[test]
+fn gtao_prefilter_blocks_agree_with_levels_at_odd_sizes() {
+    let Some(vk) = common::vulkan() else { return };
+    for (w, h) in [(1, 1), (1, 6), (5, 1), (3, 2), (2, 7), (17, 9), (37, 35), (70, 3), (12, 26), (27, 11)] {
+        let (scene, frame) = common::builtin_frame("sponza", w, h, 0);
+        let cpu = CpuRenderer::new(&scene);
+        let (mut g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
+        for (i, d) in g.depth.iter_mut().enumerate() {
+            *d = 5.0 + 0.05 * ((i as u32).wrapping_mul(2_654_435_761) >> 24) as f32 / 255.0;
+        }
+        let options = GtaoOptions::default();
+        let params = frame.gtao_params(&options);
+        assert!(0.05 < 0.1 * 0.75 * params.effective_radius(), "offsets inside the filter's falloff");
+        let technique = Technique::new(&GTAO, options);
+        let (words, _) = vk.resources_after(&frame, &g, &technique, &["gtao_mips"]).expect("Vulkan XeGTAO");
+        let vk_mips: Vec<f32> = words[0].iter().map(|&x| f32::from_bits(x)).collect();
+        let mips = aokit_cpu::gtao::run_prefilter(&params, &g.depth);
+        // cpu-sim's graph runs the same two block passes (eight blocks a call in pass 0).
+        let mut cpu_blocks = vec![f32::NAN; mips.len()];
+        for pass in 0..2 {
+            aokit_cpu::gtao::prefilter_pass(&GtaoParams { pass, ..params }, &g.depth, &mut cpu_blocks);
+        }
+        for (name, blocks) in [("Vulkan", &vk_mips), ("cpu-sim", &cpu_blocks)] {
+            common::assert_same_len(&mips, blocks, "MIP chain");
+            // NaN (a texel never written) is not close.
+            let close = |a: f32, b: f32| (a - b).abs() <= 1e-6 * a.abs().max(1.0);
+            let wrong: Vec<usize> = (0..mips.len()).filter(|&i| !close(mips[i], blocks[i])).collect();
+            let first = &wrong[..wrong.len().min(5)];
+            assert!(
+                wrong.is_empty(),
+                "{name} {w}×{h}: {} of {} MIP texels differ, first at {first:?}",
+                wrong.len(),
+                mips.len()
+            );
+        }
+    }
+    common::assert_validation_clean(&vk);
+}

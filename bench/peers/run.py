@@ -94,7 +94,7 @@ def main():
             r = side_by_side(binary, "xegtao", args, size, ["--spirv", spirv], tmp)
             out += [f"### {r['width']}×{r['height']} on {r['device']}", "", pass_table(r), "",
                     f"aokit's passes: {', '.join(p['name'] for p in r['aokit_passes'])} (the prefilter row sums "
-                    "aokit's MIP dispatches; XeGTAO makes its five MIPs in one). Final AO, aokit vs XeGTAO, "
+                    "aokit's two MIP dispatches; XeGTAO makes its five MIPs in one). Final AO, aokit vs XeGTAO, "
                     f"on the surfaces: {agreement_line(r['agreement']['surfaces'])}; the surface pixels beyond "
                     "1/255 are aokit's documented deviation (docs/deviations.md: a normal facing away from the "
                     "camera is flipped). Every pixel: "

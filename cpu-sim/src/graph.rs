@@ -320,7 +320,7 @@ impl CpuExecutor {
 /// resources.
 mod runners {
     use super::*;
-    use aokit_shaders::gtao::{mip_offset, mip_size, normal_from_depth, prefilter_texel};
+    use aokit_shaders::gtao::normal_from_depth;
     use aokit_shaders::{
         blur, groundtruth, gtao, hybrid, rastersd, raymarch, raysd, raysvao, svao, temporal, vao, vbao,
     };
@@ -432,15 +432,8 @@ mod runners {
     pub fn gtao_prefilter(io: &mut PassIo) {
         use gtao::gtao_prefilter::*;
         let params: gtao::GtaoParams = io.push();
-        let full = params.view.size();
-        let size = mip_size(full, params.pass);
-        // This level is written in place; it reads only the levels before it.
-        let (before, level) = io.write(MIPS).split_at_mut(mip_offset(full, params.pass));
-        let level = &mut level[..(size.x * size.y) as usize];
-        let depth = io.read(DEPTH);
-        crate::screen::tiled(level, size.x, 0..size.x, 0..size.y, &crate::no_progress, |t, v| {
-            *v = prefilter_texel(&params, depth, before, t)
-        });
+        let mips = io.write(MIPS);
+        crate::gtao::prefilter_pass(&params, io.read(DEPTH), mips);
     }
 
     pub fn gtao_normals(io: &mut PassIo) {

@@ -3,14 +3,18 @@
 
 use crate::screen::lanes_of_run;
 use aokit_shaders::common::lanes::{F32x8, Lanes};
+use aokit_shaders::common::read::TexelBuffer;
 use aokit_shaders::glam::{UVec2, vec3};
 use aokit_shaders::gtao::denoise::{denoise_lanes, is_last_pass};
 use aokit_shaders::gtao::main_pass::{finish_pixel, pixel_setup, slices_visibility};
+use aokit_shaders::gtao::prefilter::{mip_falloff, mip_filter, prefilter_far, working_value};
 use aokit_shaders::gtao::{
     GtaoParams, MIP_LEVELS, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
 };
 use aokit_shaders::vbao::VbaoParams;
 use aokit_shaders::vbao::kernel::{vbao_term, vbao_visibility};
+use core::sync::atomic::AtomicU32;
+use rayon::prelude::*;
 
 /// Evaluate `f` for every pixel of a `size` image in parallel [`crate::screen::tiled`] bands.
 pub fn per_pixel<T: Send + Copy + Default>(size: UVec2, f: impl Fn(UVec2) -> T + Sync) -> Vec<T> {
@@ -19,17 +23,78 @@ pub fn per_pixel<T: Send + Copy + Default>(size: UVec2, f: impl Fn(UVec2) -> T +
     out
 }
 
-/// PrefilterDepths: the packed 5-level working-depth MIP chain.
+/// PrefilterDepths: the packed 5-level working-depth MIP chain level by level (each level in
+/// parallel [`crate::screen::tiled`] bands from the level before it), as [`prefilter_texel`]
+/// defines it: the reference the two block dispatches of the GPU and of cpu-sim's graph
+/// ([`prefilter_pass`]) are tested against.
 pub fn run_prefilter(params: &GtaoParams, depth: &[f32]) -> Vec<f32> {
     let full = params.view.size();
     let mut mips = vec![0.0f32; mip_offset(full, MIP_LEVELS)];
-    for level in 0..MIP_LEVELS {
-        let p = GtaoParams { pass: level, ..*params };
-        let level_texels = per_pixel(mip_size(full, level), |t| prefilter_texel(&p, depth, &mips, t));
-        let at = mip_offset(full, level);
-        mips[at..at + level_texels.len()].copy_from_slice(&level_texels);
+    for k in 0..MIP_LEVELS {
+        let size = mip_size(full, k);
+        let (before, level) = mips.split_at_mut(mip_offset(full, k));
+        let level = &mut level[..(size.x * size.y) as usize];
+        crate::screen::tiled(level, size.x, 0..size.x, 0..size.y, &crate::no_progress, |t, v| {
+            *v = prefilter_texel(params, depth, before, k, t)
+        });
     }
     mips
+}
+
+/// Prefilter pass `params.pass` over the packed chain `mips` as the GPU dispatches it, block by
+/// block: pass 0 eight 2×2 blocks at a time ([`prefilter_near_x8`], the lanes of the shader
+/// crate's `prefilter_near`), pass 1 the shader crate's [`prefilter_far`]; each row of blocks on
+/// a thread of its own, writing through relaxed atomics (the blocks write disjoint texels, as
+/// the GPU's invocations do).
+pub fn prefilter_pass(params: &GtaoParams, depth: &[f32], mips: &mut [f32]) {
+    let divisor = aokit_shaders::gtao::PREFILTER_BLOCK[params.pass.min(1) as usize];
+    let full = params.view.size();
+    let blocks = UVec2::new(full.x.div_ceil(divisor), full.y.div_ceil(divisor));
+    const _: () = assert!(align_of::<AtomicU32>() == align_of::<f32>() && size_of::<AtomicU32>() == size_of::<f32>());
+    // SAFETY: AtomicU32 has the size and alignment of f32 (asserted) and every bit pattern is
+    // valid for both; the exclusive borrow of `mips` outlives `shared`.
+    let shared: &[AtomicU32] = unsafe { &*(mips as *mut [f32] as *const [AtomicU32]) };
+    (0..blocks.y).into_par_iter().for_each(|y| {
+        let mut out = shared;
+        if params.pass == 0 {
+            prefilter_near_x8(params, depth, &mut out, y);
+            return;
+        }
+        for x in 0..blocks.x {
+            prefilter_far(params, &mut out, UVec2::new(x, y));
+        }
+    });
+}
+
+/// Pass 0 over a row `y` of 2×2 blocks, eight blocks per call of the shader crate's
+/// lane-generic [`working_value`] and [`mip_filter`]: what [`aokit_shaders::gtao::prefilter::prefilter_near`] computes per block
+/// (whose MIP 0 reads clamp to the target the same way).
+pub fn prefilter_near_x8(params: &GtaoParams, depth: &[f32], out: &mut &[AtomicU32], y: u32) {
+    let full = params.view.size();
+    let (size1, offset1) = (mip_size(full, 1), mip_offset(full, 1));
+    let falloff = mip_falloff(params);
+    let blocks = full.x.div_ceil(2);
+    let rows = [(2 * y).min(full.y - 1), (2 * y + 1).min(full.y - 1)];
+    for x0 in (0..blocks).step_by(8) {
+        let at = |dx: u32, dy: usize| {
+            let row = (rows[dy] * full.x) as usize;
+            F32x8::from_lanes(|i| depth[row + (2 * (x0 + i as u32) + dx).min(full.x - 1) as usize])
+        };
+        let d = [at(0, 0), at(1, 0), at(0, 1), at(1, 1)].map(|v| working_value(v, params.view.far));
+        let m1 = mip_filter(d, &falloff);
+        for i in 0..8.min(blocks - x0) {
+            let b = x0 + i;
+            for (k, (dx, dy)) in [(0, 0), (1, 0), (0, 1), (1, 1)].into_iter().enumerate() {
+                let (x, y) = (2 * b + dx, 2 * y + dy);
+                if x < full.x && y < full.y {
+                    out.store((y * full.x + x) as usize, d[k].lane(i as usize));
+                }
+            }
+            if b < size1.x && y < size1.y {
+                out.store(offset1 + (y * size1.x + b) as usize, m1.lane(i as usize));
+            }
+        }
+    }
 }
 
 /// Pass 0: encoded view normals from depth.

@@ -21,7 +21,7 @@
 //! resource, the push constants as a uniform buffer after the last binding.
 //!
 //! Every dispatch is its own compute pass with GPU timestamps. Rows: the depth MIP chain
-//! (aokit's five `gtao_prefilter` dispatches against Bevy's one `preprocess_depth`), the main
+//! (aokit's two `gtao_prefilter` dispatches against Bevy's one `preprocess_depth`), the main
 //! pass (`vbao_main` against `ssao`), the denoiser (`gtao_denoise` against `spatial_denoise`),
 //! and their total.
 

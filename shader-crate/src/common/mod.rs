@@ -12,7 +12,7 @@ pub mod lanes;
 pub mod math;
 pub mod noise;
 pub mod normal_codec;
-pub(crate) mod read;
+pub mod read;
 pub mod screen_space;
 pub mod tables;
 

@@ -131,8 +131,9 @@ pub fn mip_offset(full: UVec2, k: u32) -> usize {
 use crate::glam::UVec3;
 use spirv_std::spirv;
 
-/// PrefilterDepths: one invocation per texel of MIP `params.pass` (dispatch per level, MIP 0
-/// first).
+/// PrefilterDepths in two dispatches (spec gtao-raymarch-hybrid §2.5): pass 0 makes MIPs 0–1,
+/// one invocation per 2×2 block of MIP 0 ([`prefilter::prefilter_near`]); pass 1 makes MIPs 2–4,
+/// one invocation per MIP 4 texel ([`prefilter::prefilter_far`]).
 #[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "gtao_prefilter"))]
 pub fn gtao_prefilter(
@@ -143,15 +144,21 @@ pub fn gtao_prefilter(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 1)]
     mips: &mut [f32],
 ) {
+    let b = id.truncate();
     let full = params.view.size();
-    let size = mip_size(full, params.pass);
-    let t = id.truncate();
-    if t.x >= size.x || t.y >= size.y {
-        return;
+    let mut mips = mips;
+    if params.pass == 0 {
+        let n = PREFILTER_BLOCK[0];
+        if b.x < full.x.div_ceil(n) && b.y < full.y.div_ceil(n) {
+            prefilter::prefilter_near(params, depth, &mut mips, b);
+        }
+    } else if b.x < full.x.div_ceil(PREFILTER_BLOCK[1]) && b.y < full.y.div_ceil(PREFILTER_BLOCK[1]) {
+        prefilter::prefilter_far(params, &mut mips, b);
     }
-    let value = prefilter_texel(params, depth, mips, t);
-    unsafe { write(mips, mip_offset(full, params.pass) + (t.y * size.x + t.x) as usize, value) };
 }
+
+/// The blocks a prefilter pass covers: pass 0 2×2 texels of MIP 0, pass 1 16×16 (one MIP 4 texel).
+pub const PREFILTER_BLOCK: [u32; 2] = [2, 16];
 
 /// Pass 0: normals from depth, one invocation per pixel of the full target.
 #[crate::kernel]

@@ -259,8 +259,8 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
         Constant::new("GtaoParams.final_value_power", "`final-power` [2.2]").expr("`final-power`"),
         Constant::new(
             "GtaoParams.pass",
-            "per pass: gtao_prefilter: the MIP level k = 0…4 its dispatch writes (one pass per level, in \
-             order); gtao_normals and gtao_main: 0; gtao_denoise: the pass index i = 0 … max(1, `denoise`) − 1",
+            "per pass: gtao_prefilter: 0 for MIPs 0–1 (one invocation per 2×2 texels), then 1 for MIPs \
+             2–4 (one per 16×16); gtao_normals and gtao_main: 0; gtao_denoise: the pass index i = 0 … max(1, `denoise`) − 1",
         )
         .expr("pass"),
         Constant::new("GtaoParams.bent_normals", "`bent-normals`: off 0, on 1 [0]").expr("index(`bent-normals`)"),
@@ -399,10 +399,11 @@ pub fn xegtao_graph(
         target_u32(EDGES, 0, "packed depth edges, the denoiser's input (gtao-raymarch-hybrid §2.6.1, §2.7)"),
     ];
     let mut passes = Vec::new();
-    for level in 0..MIP_LEVELS {
-        let p = GtaoParams { pass: level, ..params };
+    for (pass, divisor) in (0..).zip(super::PREFILTER_BLOCK) {
+        let p = GtaoParams { pass, ..params };
         let bindings = super::gtao_prefilter::Bindings { depth: inputs::LINEAR_DEPTH, mips: MIPS };
-        passes.push(Pass::compute("gtao_prefilter", bindings, Extent::Mip(level), bytemuck::bytes_of(&p)));
+        let blocks = Extent::Reduced { divisor, border: 0 };
+        passes.push(Pass::compute("gtao_prefilter", bindings, blocks, bytemuck::bytes_of(&p)));
     }
     let bytes = bytemuck::bytes_of(&params);
     let normals = if normals_from_depth {

@@ -134,8 +134,8 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
         Constant::new("GtaoParams.final_value_power", "`final-power` [1]").expr("`final-power`"),
         Constant::new(
             "GtaoParams.pass",
-            "per pass: gtao_prefilter: the MIP level k = 0…4 its dispatch writes (one pass per level, in \
-             order); gtao_normals and vbao_main: 0; gtao_denoise: the pass index i = 0 … max(1, `denoise`) − 1",
+            "per pass: gtao_prefilter: 0 for MIPs 0–1 (one invocation per 2×2 texels), then 1 for MIPs \
+             2–4 (one per 16×16); gtao_normals and vbao_main: 0; gtao_denoise: the pass index i = 0 … max(1, `denoise`) − 1",
         )
         .expr("pass"),
         Constant::new("GtaoParams.bent_normals", "0 (VBAO outputs no bent normal)").expr("0"),
