@@ -93,6 +93,9 @@ pub enum Extent {
     /// `max(1, floor(W/2^k))×max(1, floor(H/2^k))`: MIP level `k` of the full target (spec
     /// gtao-raymarch-hybrid §2.3).
     Mip(u32),
+    /// `ceil(W/2)×H`: pairs of horizontally adjacent pixels of the full target (a kernel that
+    /// shades two pixels an invocation, as XeGTAO's denoiser).
+    Pairs,
 }
 
 impl Extent {
@@ -105,6 +108,7 @@ impl Extent {
                 UVec2::new(full.x.div_ceil(divisor), full.y.div_ceil(divisor)) + 2 * border
             }
             Extent::Mip(k) => UVec2::new((full.x >> k).max(1), (full.y >> k).max(1)),
+            Extent::Pairs => UVec2::new(full.x.div_ceil(2), full.y),
         }
     }
 
@@ -120,6 +124,8 @@ impl Extent {
             Extent::Reduced { divisor, border } => format!("div_ceil({v}, {divisor}) + {}", 2 * border),
             Extent::Mip(0) => v.to_string(),
             Extent::Mip(k) => format!("max(1, div_floor({v}, {}))", 1u32 << k),
+            Extent::Pairs if v == "W" => "div_ceil(W, 2)".to_string(),
+            Extent::Pairs => v.to_string(),
         };
         [of("W"), of("H")]
     }

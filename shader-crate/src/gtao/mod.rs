@@ -223,6 +223,8 @@ pub fn gtao_main(
 }
 
 /// Denoise pass `params.pass`: terms in → terms out; the last pass also writes the visibility.
+/// One invocation per pair of horizontally adjacent pixels (`⌈W/2⌉ × H`, as XeGTAO's
+/// denoiser), whose shared neighbourhood is read once ([`denoise::denoise_pair`]).
 #[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "gtao_denoise"))]
 pub fn gtao_denoise(
@@ -234,14 +236,36 @@ pub fn gtao_denoise(
     #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] ao: &mut [f32],
 ) {
     let size = params.view.size();
-    let p = id.truncate();
-    if p.x >= size.x || p.y >= size.y {
+    let b = id.truncate();
+    if b.x >= size.x.div_ceil(2) || b.y >= size.y {
         return;
     }
-    let out = denoise_pixel(params, terms_in, edges, p);
+    let last = denoise::is_last_pass(params);
+    let p = uvec2(2 * b.x, b.y);
+    let second = p.x + 1 < size.x;
     let i = (p.y * size.x + p.x) as usize;
-    unsafe { write(terms_out, i, out.term) };
-    if out.last {
-        unsafe { write(ao, i, out.visibility) };
+    if params.bent_normals != 0 {
+        // One pixel at a time (a loop, so the module holds the RGBA8 filter once).
+        let mut k = 0;
+        while k < 1 + second as u32 {
+            let out = denoise_pixel(params, terms_in, edges, uvec2(p.x + k, p.y));
+            unsafe { write(terms_out, i + k as usize, out.term) };
+            if last {
+                unsafe { write(ao, i + k as usize, out.visibility) };
+            }
+            k += 1;
+        }
+        return;
+    }
+    let [(t0, v0), (t1, v1)] = denoise::denoise_pair(params, terms_in, edges, b);
+    unsafe { write(terms_out, i, t0) };
+    if last {
+        unsafe { write(ao, i, v0) };
+    }
+    if second {
+        unsafe { write(terms_out, i + 1, t1) };
+        if last {
+            unsafe { write(ao, i + 1, v1) };
+        }
     }
 }

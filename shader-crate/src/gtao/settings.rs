@@ -465,7 +465,7 @@ pub fn denoise_passes(
     for pass in 0..params.denoise_passes.max(1) {
         let p = GtaoParams { pass, ..*params };
         let bindings = super::gtao_denoise::Bindings { terms_in: from, edges, terms_out: to, ao: output };
-        passes.push(Pass::compute(label, bindings, Extent::Full, bytemuck::bytes_of(&p)));
+        passes.push(Pass::compute(label, bindings, Extent::Pairs, bytemuck::bytes_of(&p)));
         (from, to) = (to, if to == PING { PONG } else { PING });
     }
     (resources, passes)
