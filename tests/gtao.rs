@@ -244,50 +244,98 @@ fn gtao_vulkan_agrees_with_cpu_per_pass() {
     assert!(mse <= 1e-5);
 }
 
-/// The two prefilter dispatches (2×2 and 16×16 blocks, levels filtered from registers), on
-/// Vulkan and in cpu-sim's graph, against the level-by-level definition on the CPU, at sizes whose levels end in partial blocks
-/// and shrink to one texel wide or high, where a level's reads clamp onto its last texel. The
-/// depth is a surface at 5 with a different small offset (≤ 0.05, far inside the filter's
-/// falloff, so every texel of a 2×2 block weighs in) at every pixel: a block that filters a wrong
-/// texel moves a MIP texel by ~1e-3, while every texel of the five levels must match within
-/// float rounding (1e-6 relative).
+/// Sizes whose MIP levels end in partial blocks and shrink to one texel wide or high, where a
+/// level's reads clamp onto its last texel.
+const ODD_SIZES: [(u32, u32); 10] =
+    [(1, 1), (1, 6), (5, 1), (3, 2), (2, 7), (17, 9), (37, 35), (70, 3), (12, 26), (27, 11)];
+
+/// A depth surface at 5 with a different small offset (≤ 0.05) at every pixel: far inside the
+/// MIP filter's falloff, so every texel of a 2×2 block weighs in and a block that filters a wrong
+/// texel moves a MIP texel by ~1e-3.
+fn jittered_depth(w: u32, h: u32) -> Vec<f32> {
+    (0..w * h).map(|i| 5.0 + 0.05 * (i.wrapping_mul(2_654_435_761) >> 24) as f32 / 255.0).collect()
+}
+
+/// Texels of `blocks` that differ from the level-by-level `mips` by more than float rounding
+/// (1e-6 relative); NaN (a texel never written) counts as different.
+fn differing_texels(mips: &[f32], blocks: &[f32]) -> Vec<usize> {
+    common::assert_same_len(mips, blocks, "MIP chain");
+    let close = |a: f32, b: f32| (a - b).abs() <= 1e-6 * a.abs().max(1.0);
+    (0..mips.len()).filter(|&i| !close(mips[i], blocks[i])).collect()
+}
+
+/// cpu-sim's two prefilter passes (2×2 blocks eight at a time on lanes, then 16×16 blocks, the
+/// shader crate's block functions, on several threads through relaxed atomics) against the
+/// level-by-level definition, every texel of the five levels, at [`ODD_SIZES`]. Needs no GPU.
 #[test]
-fn gtao_prefilter_blocks_agree_with_levels_at_odd_sizes() {
+fn gtao_prefilter_blocks_on_the_cpu_agree_with_levels_at_odd_sizes() {
+    for (w, h) in ODD_SIZES {
+        let (_, frame) = common::builtin_frame("sponza", w, h, 0);
+        let params = frame.gtao_params(&GtaoOptions::default());
+        assert!(0.05 < 0.1 * 0.75 * params.effective_radius(), "offsets inside the filter's falloff");
+        let depth = jittered_depth(w, h);
+        let mips = aokit_cpu::gtao::run_prefilter(&params, &depth);
+        let mut blocks = vec![f32::NAN; mips.len()];
+        for pass in 0..2 {
+            aokit_cpu::gtao::prefilter_pass(&GtaoParams { pass, ..params }, &depth, &mut blocks);
+        }
+        let wrong = differing_texels(&mips, &blocks);
+        let first = &wrong[..wrong.len().min(5)];
+        assert!(wrong.is_empty(), "{w}×{h}: {} of {} MIP texels differ, first at {first:?}", wrong.len(), mips.len());
+    }
+}
+
+/// The GPU's two prefilter dispatches (2×2 and 16×16 blocks, levels filtered from registers)
+/// against the level-by-level definition on the CPU, every texel of the five levels, at
+/// [`ODD_SIZES`] (broken on purpose: without the clamp for a one-texel level, 2×7 fails).
+#[test]
+fn gtao_prefilter_blocks_on_vulkan_agree_with_levels_at_odd_sizes() {
     let Some(vk) = common::vulkan() else { return };
-    for (w, h) in [(1, 1), (1, 6), (5, 1), (3, 2), (2, 7), (17, 9), (37, 35), (70, 3), (12, 26), (27, 11)] {
+    for (w, h) in ODD_SIZES {
         let (scene, frame) = common::builtin_frame("sponza", w, h, 0);
         let cpu = CpuRenderer::new(&scene);
         let (mut g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
-        for (i, d) in g.depth.iter_mut().enumerate() {
-            *d = 5.0 + 0.05 * ((i as u32).wrapping_mul(2_654_435_761) >> 24) as f32 / 255.0;
-        }
+        g.depth = jittered_depth(w, h);
         let options = GtaoOptions::default();
         let params = frame.gtao_params(&options);
-        assert!(0.05 < 0.1 * 0.75 * params.effective_radius(), "offsets inside the filter's falloff");
         let technique = Technique::new(&GTAO, options);
         let (words, _) = vk.resources_after(&frame, &g, &technique, &["gtao_mips"]).expect("Vulkan XeGTAO");
         let vk_mips: Vec<f32> = words[0].iter().map(|&x| f32::from_bits(x)).collect();
         let mips = aokit_cpu::gtao::run_prefilter(&params, &g.depth);
-        // cpu-sim's graph runs the same two block passes (eight blocks a call in pass 0).
-        let mut cpu_blocks = vec![f32::NAN; mips.len()];
-        for pass in 0..2 {
-            aokit_cpu::gtao::prefilter_pass(&GtaoParams { pass, ..params }, &g.depth, &mut cpu_blocks);
-        }
-        for (name, blocks) in [("Vulkan", &vk_mips), ("cpu-sim", &cpu_blocks)] {
-            common::assert_same_len(&mips, blocks, "MIP chain");
-            // NaN (a texel never written) is not close.
-            let close = |a: f32, b: f32| (a - b).abs() <= 1e-6 * a.abs().max(1.0);
-            let wrong: Vec<usize> = (0..mips.len()).filter(|&i| !close(mips[i], blocks[i])).collect();
-            let first = &wrong[..wrong.len().min(5)];
-            assert!(
-                wrong.is_empty(),
-                "{name} {w}×{h}: {} of {} MIP texels differ, first at {first:?}",
-                wrong.len(),
-                mips.len()
-            );
-        }
+        let wrong = differing_texels(&mips, &vk_mips);
+        let first = &wrong[..wrong.len().min(5)];
+        assert!(wrong.is_empty(), "{w}×{h}: {} of {} MIP texels differ, first at {first:?}", wrong.len(), mips.len());
     }
     common::assert_validation_clean(&vk);
+}
+
+/// The denoiser's pixel pairs (the GPU's invocations) against its pixel-at-a-time path
+/// (cpu-sim's lanes, one lane here), bit for bit, on random terms and edges at widths 1–3 and an
+/// odd one, first and last passes: the same operations in the same order. Needs no GPU.
+#[test]
+fn gtao_denoise_pairs_equal_pixels_on_the_cpu() {
+    use aokit_shaders::gtao::denoise::{denoise_lanes, denoise_pair};
+    for (w, h) in [(1, 3), (2, 2), (3, 5), (17, 6)] {
+        let (_, frame) = common::builtin_frame("sponza", w, h, 0);
+        let n = (w * h) as usize;
+        let word = |i: usize, salt: u32| ((i as u32 ^ salt).wrapping_mul(2_654_435_761) >> 24) & 0xFF;
+        let terms: Vec<u32> = (0..n).map(|i| word(i, 0x5bd1)).collect();
+        let edges: Vec<u32> = (0..n).map(|i| word(i, 0x1b87)).collect();
+        for pass in 0..2 {
+            let options = GtaoOptions { denoise_passes: 2, ..Default::default() };
+            let params = GtaoParams { pass, ..frame.gtao_params(&options) };
+            for y in 0..h {
+                for bx in 0..w.div_ceil(2) {
+                    let pair = denoise_pair(&params, &terms, &edges, uvec2(bx, y));
+                    for (k, got) in pair.into_iter().enumerate().take(((w - 2 * bx) as usize).min(2)) {
+                        let want = denoise_lanes::<f32>(&params, &terms, &edges, uvec2(2 * bx + k as u32, y));
+                        assert_eq!(got.0, want.0, "{w}×{h} pass {pass}: term at ({}, {y})", 2 * bx + k as u32);
+                        assert_eq!(got.1.to_bits(), want.1.to_bits(), "{w}×{h} pass {pass}: visibility");
+                    }
+                }
+            }
+        }
+    }
 }
 
 /// The denoiser's pairs of pixels (one invocation shades `(2x, y)` and `(2x + 1, y)` from a

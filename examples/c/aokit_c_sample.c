@@ -373,8 +373,9 @@ static void graph_vao(Graph *g, const Frame *f) {
     g->output = add_blur(g, f, depth, ao, bp);
 }
 
-/* gtao (preset high: 3 slices × 3 steps, 1 denoise pass): 5 prefilter levels, main pass, denoise. */
+/* gtao (preset high: 3 slices × 3 steps, 1 denoise pass): 2 prefilter passes, main pass, denoise. */
 #define GTAO_MIP_LEVELS 5u
+static uint32_t div_ceil(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
 static uint32_t mip_extent(uint32_t full, uint32_t level) {
     uint32_t e = full >> level;
     return e ? e : 1; /* max(1, floor(full / 2^level)) */
@@ -398,9 +399,11 @@ static void graph_gtao(Graph *g, const Frame *f) {
     aokit_GtaoParams gp;
     aokit_gtao_GtaoParams(&s, &f->inputs, 0, &gp);
 
-    for (uint32_t level = 0; level < GTAO_MIP_LEVELS; level++) {
-        aokit_gtao_GtaoParams(&s, &f->inputs, level, &gp); /* prefilter: pass = the MIP level it writes */
-        Pass *p = add_pass(g, MODULE(GTAO_PREFILTER), mip_extent(f->W, level), mip_extent(f->H, level), &gp,
+    /* prefilter: pass 0 over 2×2 blocks (MIPs 0–1), pass 1 over 16×16 blocks (MIPs 2–4). */
+    const uint32_t block[2] = {2, 16};
+    for (uint32_t pass = 0; pass < 2; pass++) {
+        aokit_gtao_GtaoParams(&s, &f->inputs, pass, &gp);
+        Pass *p = add_pass(g, MODULE(GTAO_PREFILTER), div_ceil(f->W, block[pass]), div_ceil(f->H, block[pass]), &gp,
                            sizeof gp);
         bind(p, AOKIT_GTAO_PREFILTER_BINDING_DEPTH, depth);
         bind(p, AOKIT_GTAO_PREFILTER_BINDING_MIPS, mips);
@@ -415,7 +418,7 @@ static void graph_gtao(Graph *g, const Frame *f) {
     int from = terms, to = ping;
     for (uint32_t i = 0; i < (gp.denoise_passes ? gp.denoise_passes : 1); i++) {
         aokit_gtao_GtaoParams(&s, &f->inputs, i, &gp); /* denoise: pass = its index */
-        p = add_pass(g, MODULE(GTAO_DENOISE), f->W, f->H, &gp, sizeof gp);
+        p = add_pass(g, MODULE(GTAO_DENOISE), div_ceil(f->W, 2), f->H, &gp, sizeof gp); /* pixel pairs */
         bind(p, AOKIT_GTAO_DENOISE_BINDING_TERMS_IN, from);
         bind(p, AOKIT_GTAO_DENOISE_BINDING_EDGES, edges);
         bind(p, AOKIT_GTAO_DENOISE_BINDING_TERMS_OUT, to);

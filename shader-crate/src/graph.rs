@@ -88,7 +88,8 @@ pub enum Extent {
     /// The inner image `w×h = (W − 2g)×(H − 2g)`.
     Inner,
     /// `(ceil(W/d) + 2b)×(ceil(H/d) + 2b)`: a reduced-resolution map with its own border of `b`
-    /// texels (the SD map and its guard band, spec svao-raysd §3).
+    /// texels (the SD map and its guard band, spec svao-raysd §3), or, with no border, the
+    /// `d×d` blocks of the target a pass dispatches over (gtao's prefilter).
     Reduced { divisor: u32, border: u32 },
     /// `max(1, floor(W/2^k))×max(1, floor(H/2^k))`: MIP level `k` of the full target (spec
     /// gtao-raymarch-hybrid §2.3).

@@ -74,10 +74,11 @@ pub fn denoise_lanes<L: Lanes>(params: &GtaoParams, terms: &[u32], edges: &[u32]
 }
 
 /// Denoise pass `params.pass` without bent normals at the pixel pair `(2b.x, b.y)`,
-/// `(2b.x + 1, b.y)`, as XeGTAO's denoiser takes two pixels an invocation: the 4×3 terms and
-/// the 8 edges the two 3×3 neighbourhoods share are read once (20 reads, not 28). Each pixel's
-/// `(term, visibility)` is [`denoise_lanes`]'s, bit for bit; the second is meaningless where
-/// `2b.x + 1` lies beyond the target (its reads clamp to the last column).
+/// `(2b.x + 1, b.y)`, as XeGTAO's denoiser takes two pixels an invocation: the union of the two
+/// 3×3 neighbourhoods (4×3 terms, 8 edges) is read once, 20 reads instead of 28. Each pixel's
+/// `(term, visibility)` is [`denoise_lanes`]'s, bit for bit (the same operations in the same
+/// order; tested on the CPU); the second is meaningless where `2b.x + 1` lies beyond the target
+/// (its reads clamp to the last column).
 #[inline]
 pub fn denoise_pair(params: &GtaoParams, terms: &[u32], edges: &[u32], b: UVec2) -> [(u32, f32); 2] {
     // Plain variables and functions, no closures over the buffers or arrays indexed at run

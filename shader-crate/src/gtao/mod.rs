@@ -54,7 +54,7 @@ pub struct GtaoParams {
     pub denoise_passes: u32,
     /// Temporal noise frame (0 unless TAA + denoise, spec gtao-raymarch-hybrid §1.6).
     pub noise_frame: u32,
-    /// Prefilter: the MIP level this dispatch writes; denoise: the pass index.
+    /// Prefilter: 0 for MIPs 0–1, 1 for MIPs 2–4; denoise: the pass index.
     pub pass: u32,
     /// 1: the main pass also computes the bent normal and the terms are RGBA8 (spec gtao-raymarch-hybrid §2.6.5).
     pub bent_normals: u32,
@@ -132,8 +132,10 @@ use crate::glam::UVec3;
 use spirv_std::spirv;
 
 /// PrefilterDepths in two dispatches (spec gtao-raymarch-hybrid §2.5): pass 0 makes MIPs 0–1,
-/// one invocation per 2×2 block of MIP 0 ([`prefilter::prefilter_near`]); pass 1 makes MIPs 2–4,
-/// one invocation per MIP 4 texel ([`prefilter::prefilter_far`]).
+/// one invocation per 2×2 block of MIP 0 (`⌈W/2⌉ × ⌈H/2⌉`, [`prefilter::prefilter_near`]); pass 1
+/// makes MIPs 2–4, one invocation per 16×16 block of MIP 0 (`⌈W/16⌉ × ⌈H/16⌉`: a MIP 4 texel and
+/// the MIP 2–3 texels over it; a partial last block has MIP 2–3 texels but no MIP 4 texel,
+/// [`prefilter::prefilter_far`]).
 #[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "gtao_prefilter"))]
 pub fn gtao_prefilter(
@@ -157,7 +159,8 @@ pub fn gtao_prefilter(
     }
 }
 
-/// The blocks a prefilter pass covers: pass 0 2×2 texels of MIP 0, pass 1 16×16 (one MIP 4 texel).
+/// The blocks of MIP 0 a prefilter invocation covers: pass 0 2×2 texels, pass 1 16×16 (dispatched
+/// `⌈W/b⌉ × ⌈H/b⌉`).
 pub const PREFILTER_BLOCK: [u32; 2] = [2, 16];
 
 /// Pass 0: normals from depth, one invocation per pixel of the full target.

@@ -16,6 +16,11 @@ use crate::common::math::depth_or_far;
 use crate::common::read::{TexelBuffer, read};
 use crate::glam::{UVec2, uvec2};
 
+const _: () = assert!(
+    super::MIP_LEVELS == 5 && super::PREFILTER_BLOCK[1] == 1 << (super::MIP_LEVELS - 1),
+    "prefilter_far makes MIPs 2, 3 and 4: a 16×16 block of MIP 0 is one texel of MIP 4"
+);
+
 /// Largest working depth (the fp16 maximum, spec gtao-raymarch-hybrid §2.5 step 1, §7.6).
 pub const MAX_WORKING_DEPTH: f32 = 65504.0;
 

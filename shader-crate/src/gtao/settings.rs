@@ -1,5 +1,5 @@
 //! XeGTAO's settings, quality presets and pass graph (host side; spec gtao-raymarch-hybrid §2):
-//! PrefilterDepths level by level, optional normals from depth, MainPass, the denoise passes.
+//! PrefilterDepths in two passes, optional normals from depth, MainPass, the denoise passes.
 //! The denoiser's passes are shared with the techniques that reuse it (ray march, hybrid).
 
 use super::{GtaoParams, MIP_LEVELS};
@@ -375,7 +375,7 @@ const TERMS: &str = "gtao_terms";
 const EDGES: &str = "gtao_edges";
 
 /// XeGTAO's passes around a main pass (spec gtao-raymarch-hybrid §2.3–§2.7): PrefilterDepths
-/// level by level → [normals from depth] → `main` (the main pass over [`MainPassResources`]) →
+/// in two passes (MIPs 0–1, MIPs 2–4) → [normals from depth] → `main` (the main pass over [`MainPassResources`]) →
 /// the denoiser. XeGTAO's own main pass and VBAO's bitmask main pass (spec vbao §1) plug in
 /// here.
 pub fn xegtao_graph(
