@@ -57,18 +57,18 @@ var<storage, read_write> ao: type_7;
 
 fn function_() {
     var phi_126_: u32;
-    var phi_841_: u32;
-    var phi_1827_: f32;
-    var phi_2312_: vec3<f32>;
+    var phi_840_: u32;
+    var phi_1826_: f32;
+    var phi_2311_: vec3<f32>;
+    var phi_2361_: type_22;
     var phi_2362_: type_22;
-    var phi_2363_: type_22;
-    var phi_1181_: f32;
-    var phi_1499_: f32;
+    var phi_1180_: f32;
+    var phi_1498_: f32;
+    var phi_2364_: type_22;
     var phi_2365_: type_22;
-    var phi_2366_: type_22;
-    var phi_2367_: bool;
-    var phi_2371_: type_22;
-    var phi_842_: u32;
+    var phi_2366_: bool;
+    var phi_2370_: type_22;
+    var phi_841_: u32;
     var phi_290_: f32;
     var phi_766_: f32;
     var phi_801_: f32;
@@ -229,9 +229,9 @@ fn function_() {
                     }
                 }
             } else {
-                phi_841_ = 0u;
+                phi_840_ = 0u;
                 loop {
-                    let _e96 = phi_841_;
+                    let _e96 = phi_840_;
                     let _e99 = (_e96 < (1u + select(0u, 1u, _e88)));
                     if _e99 {
                         let _e100 = (_e86 + _e96);
@@ -254,11 +254,11 @@ fn function_() {
                             let _e739 = (_e714 + 1i);
                             let _e741 = select(0i, _e739, (0i < _e739));
                             if (_e82 == 0u) {
-                                phi_1181_ = 10000f;
+                                phi_1180_ = 10000f;
                             } else {
-                                phi_1181_ = select(0.24000001f, 1.2f, _e85);
+                                phi_1180_ = select(0.24000001f, 1.2f, _e85);
                             }
-                            let _e748 = phi_1181_;
+                            let _e748 = phi_1180_;
                             let _e749 = (_e89 + _e100);
                             let _e752 = edges.member[_e749];
                             let _e753 = (bitcast<u32>(select(_e716, _e718, (_e718 < _e716))) * _e55);
@@ -301,16 +301,16 @@ fn function_() {
                             let _e947 = terms_in.member[(_e767 + _e727)];
                             let _e967 = (((((((((((f32(_e903) * 0.003921569f) * _e748) + ((f32(_e908) * 0.003921569f) * _e861)) + ((f32(_e913) * 0.003921569f) * _e866)) + ((f32(_e918) * 0.003921569f) * _e871)) + ((f32(_e923) * 0.003921569f) * _e876)) + ((f32(_e929) * 0.003921569f) * _e880)) + ((f32(_e935) * 0.003921569f) * _e884)) + ((f32(_e941) * 0.003921569f) * _e888)) + ((f32(_e947) * 0.003921569f) * _e892)) / ((((((((_e748 + _e861) + _e866) + _e871) + _e876) + _e880) + _e884) + _e888) + _e892));
                             if _e85 {
-                                phi_1499_ = ((_e967 * 382.5f) + 0.5f);
+                                phi_1498_ = ((_e967 * 382.5f) + 0.5f);
                             } else {
-                                phi_1499_ = ((_e967 * 255f) + 0.5f);
+                                phi_1498_ = ((_e967 * 255f) + 0.5f);
                             }
-                            let _e973 = phi_1499_;
+                            let _e973 = phi_1498_;
                             let _e975 = select(0f, _e973, (_e973 > 0f));
                             let _e978 = u32(select(255f, _e975, (_e975 < 255f)));
-                            phi_2365_ = type_22(_e978, (f32(_e978) * 0.003921569f), _e85);
-                            phi_2366_ = type_22();
-                            phi_2367_ = true;
+                            phi_2364_ = type_22(_e978, (f32(_e978) * 0.003921569f), _e85);
+                            phi_2365_ = type_22();
+                            phi_2366_ = true;
                         } else {
                             let _e101 = bitcast<i32>(_e100);
                             let _e102 = (_e101 + -1i);
@@ -330,11 +330,11 @@ fn function_() {
                             let _e135 = (_e110 + 1i);
                             let _e137 = select(0i, _e135, (0i < _e135));
                             if (_e82 == 0u) {
-                                phi_1827_ = 10000f;
+                                phi_1826_ = 10000f;
                             } else {
-                                phi_1827_ = select(0.24000001f, 1.2f, _e85);
+                                phi_1826_ = select(0.24000001f, 1.2f, _e85);
                             }
-                            let _e144 = phi_1827_;
+                            let _e144 = phi_1826_;
                             let _e145 = (_e89 + _e100);
                             let _e148 = edges.member[_e145];
                             let _e149 = (bitcast<u32>(select(_e112, _e114, (_e114 < _e112))) * _e55);
@@ -386,11 +386,11 @@ fn function_() {
                                 let _e612 = ((_e551 * 2f) - 1f);
                                 let _e618 = sqrt((((_e610 * _e610) + (_e611 * _e611)) + (_e612 * _e612)));
                                 if (_e618 > 0f) {
-                                    phi_2312_ = vec3<f32>((_e610 / _e618), (_e611 / _e618), (_e612 / _e618));
+                                    phi_2311_ = vec3<f32>((_e610 / _e618), (_e611 / _e618), (_e612 / _e618));
                                 } else {
-                                    phi_2312_ = vec3<f32>(0f, 0f, -1f);
+                                    phi_2311_ = vec3<f32>(0f, 0f, -1f);
                                 }
-                                let _e625 = phi_2312_;
+                                let _e625 = phi_2311_;
                                 let _e627 = ((_e552 * 382.5f) + 0.5f);
                                 let _e632 = select(select(u32(_e627), 0u, (_e627 < 0f)), 4294967295u, (_e627 > 4294967000f));
                                 let _e636 = (f32(select(_e632, 255u, (255u < _e632))) * 0.003921569f);
@@ -401,44 +401,44 @@ fn function_() {
                                 let _e662 = ((select(0f, select(1f, _e644, (_e644 < 1f)), (_e644 > 0f)) * 255f) + 0.5f);
                                 let _e676 = ((select(0f, select(1f, _e645, (_e645 < 1f)), (_e645 > 0f)) * 255f) + 0.5f);
                                 let _e690 = ((select(0f, select(1f, _e636, (_e636 < 1f)), (_e636 > 0f)) * 255f) + 0.5f);
-                                phi_2362_ = type_22((((select(select(u32(_e651), 0u, (_e651 < 0f)), 4294967295u, (_e651 > 4294967000f)) | (select(select(u32(_e662), 0u, (_e662 < 0f)), 4294967295u, (_e662 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e676), 0u, (_e676 < 0f)), 4294967295u, (_e676 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e690), 0u, (_e690 < 0f)), 4294967295u, (_e690 > 4294967000f)) << bitcast<u32>(24i))), _e636, _e85);
-                                phi_2363_ = type_22();
+                                phi_2361_ = type_22((((select(select(u32(_e651), 0u, (_e651 < 0f)), 4294967295u, (_e651 > 4294967000f)) | (select(select(u32(_e662), 0u, (_e662 < 0f)), 4294967295u, (_e662 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e676), 0u, (_e676 < 0f)), 4294967295u, (_e676 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e690), 0u, (_e690 < 0f)), 4294967295u, (_e690 > 4294967000f)) << bitcast<u32>(24i))), _e636, _e85);
+                                phi_2362_ = type_22();
                             } else {
                                 let _e558 = ((select(0f, select(1f, _e549, (_e549 < 1f)), (_e549 > 0f)) * 255f) + 0.5f);
                                 let _e569 = ((select(0f, select(1f, _e550, (_e550 < 1f)), (_e550 > 0f)) * 255f) + 0.5f);
                                 let _e583 = ((select(0f, select(1f, _e551, (_e551 < 1f)), (_e551 > 0f)) * 255f) + 0.5f);
                                 let _e597 = ((select(0f, select(1f, _e552, (_e552 < 1f)), (_e552 > 0f)) * 255f) + 0.5f);
-                                phi_2362_ = type_22();
-                                phi_2363_ = type_22((((select(select(u32(_e558), 0u, (_e558 < 0f)), 4294967295u, (_e558 > 4294967000f)) | (select(select(u32(_e569), 0u, (_e569 < 0f)), 4294967295u, (_e569 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e583), 0u, (_e583 < 0f)), 4294967295u, (_e583 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e597), 0u, (_e597 < 0f)), 4294967295u, (_e597 > 4294967000f)) << bitcast<u32>(24i))), 0f, _e85);
+                                phi_2361_ = type_22();
+                                phi_2362_ = type_22((((select(select(u32(_e558), 0u, (_e558 < 0f)), 4294967295u, (_e558 > 4294967000f)) | (select(select(u32(_e569), 0u, (_e569 < 0f)), 4294967295u, (_e569 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e583), 0u, (_e583 < 0f)), 4294967295u, (_e583 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e597), 0u, (_e597 < 0f)), 4294967295u, (_e597 > 4294967000f)) << bitcast<u32>(24i))), 0f, _e85);
                             }
-                            let _e701 = phi_2362_;
-                            let _e703 = phi_2363_;
-                            phi_2365_ = _e703;
-                            phi_2366_ = _e701;
-                            phi_2367_ = select(true, false, _e85);
+                            let _e701 = phi_2361_;
+                            let _e703 = phi_2362_;
+                            phi_2364_ = _e703;
+                            phi_2365_ = _e701;
+                            phi_2366_ = select(true, false, _e85);
                         }
-                        let _e983 = phi_2365_;
-                        let _e985 = phi_2366_;
-                        let _e987 = phi_2367_;
+                        let _e983 = phi_2364_;
+                        let _e985 = phi_2365_;
+                        let _e987 = phi_2366_;
                         if _e987 {
-                            phi_2371_ = _e983;
+                            phi_2370_ = _e983;
                         } else {
-                            phi_2371_ = _e985;
+                            phi_2370_ = _e985;
                         }
-                        let _e989 = phi_2371_;
+                        let _e989 = phi_2370_;
                         let _e990 = (_e90 + _e96);
                         terms_out.member[_e990] = _e989.member;
                         if _e85 {
                             ao.member[_e990] = _e989.member_1;
                         }
-                        phi_842_ = (_e96 + 1u);
+                        phi_841_ = (_e96 + 1u);
                     } else {
-                        phi_842_ = u32();
+                        phi_841_ = u32();
                     }
-                    let _e999 = phi_842_;
+                    let _e999 = phi_841_;
                     continue;
                     continuing {
-                        phi_841_ = _e999;
+                        phi_840_ = _e999;
                         break if !(_e99);
                     }
                 }

@@ -67,8 +67,9 @@ pub fn prefilter_pass(params: &GtaoParams, depth: &[f32], mips: &mut [f32]) {
 }
 
 /// Pass 0 over a row `y` of 2×2 blocks, eight blocks per call of the shader crate's
-/// lane-generic [`working_value`] and [`mip_filter`]: what [`aokit_shaders::gtao::prefilter::prefilter_near`] computes per block
-/// (whose MIP 0 reads clamp to the target the same way).
+/// lane-generic [`working_value`] and [`mip_filter`]: what
+/// [`aokit_shaders::gtao::prefilter::prefilter_near`] computes per block (whose MIP 0 reads clamp
+/// to the target the same way).
 pub fn prefilter_near_x8(params: &GtaoParams, depth: &[f32], out: &mut &[AtomicU32], y: u32) {
     let full = params.view.size();
     let (size1, offset1) = (mip_size(full, 1), mip_offset(full, 1));
@@ -85,9 +86,9 @@ pub fn prefilter_near_x8(params: &GtaoParams, depth: &[f32], out: &mut &[AtomicU
         for i in 0..8.min(blocks - x0) {
             let b = x0 + i;
             for (k, (dx, dy)) in [(0, 0), (1, 0), (0, 1), (1, 1)].into_iter().enumerate() {
-                let (x, y) = (2 * b + dx, 2 * y + dy);
-                if x < full.x && y < full.y {
-                    out.store((y * full.x + x) as usize, d[k].lane(i as usize));
+                let (px, py) = (2 * b + dx, 2 * y + dy);
+                if px < full.x && py < full.y {
+                    out.store((py * full.x + px) as usize, d[k].lane(i as usize));
                 }
             }
             if b < size1.x && y < size1.y {

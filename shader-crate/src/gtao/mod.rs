@@ -252,23 +252,24 @@ pub fn gtao_denoise(
         let mut k = 0;
         while k < 1 + second as u32 {
             let out = denoise_pixel(params, terms_in, edges, uvec2(p.x + k, p.y));
-            unsafe { write(terms_out, i + k as usize, out.term) };
-            if last {
-                unsafe { write(ao, i + k as usize, out.visibility) };
-            }
+            store_denoised(terms_out, ao, i + k as usize, out.term, out.visibility, last);
             k += 1;
         }
         return;
     }
     let [(t0, v0), (t1, v1)] = denoise::denoise_pair(params, terms_in, edges, b);
-    unsafe { write(terms_out, i, t0) };
-    if last {
-        unsafe { write(ao, i, v0) };
-    }
+    store_denoised(terms_out, ao, i, t0, v0, last);
     if second {
-        unsafe { write(terms_out, i + 1, t1) };
-        if last {
-            unsafe { write(ao, i + 1, v1) };
-        }
+        store_denoised(terms_out, ao, i + 1, t1, v1, last);
+    }
+}
+
+/// A denoised pixel at index `i`: its term for the next pass and, in the last pass, its
+/// visibility.
+#[inline]
+fn store_denoised(terms_out: &mut [u32], ao: &mut [f32], i: usize, term: u32, visibility: f32, last: bool) {
+    unsafe { write(terms_out, i, term) };
+    if last {
+        unsafe { write(ao, i, visibility) };
     }
 }
