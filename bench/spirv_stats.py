@@ -31,6 +31,9 @@ OP = {
     "OpImageGather": 96,
     "OpImageRead": 98,
     "OpImageWrite": 99,
+    "OpConvertFToU": 109,
+    "OpConvertFToS": 110,
+    "OpConvertUToF": 112,
     "OpUDiv": 134,
     "OpSDiv": 135,
     "OpFDiv": 136,
@@ -88,6 +91,8 @@ def stats(data: bytes) -> dict:
         "OpSelect": counts["OpSelect"],
         "OpULessThan": counts["OpULessThan"],
         "divisions": divisions,
+        "float→int": counts["OpConvertFToU"] + counts["OpConvertFToS"],
+        "uint→float": counts["OpConvertUToF"],
         "loads": counts["OpLoad"],
         "access chains": counts["OpAccessChain"] + counts["OpInBoundsAccessChain"],
         "image ops": image,
@@ -104,6 +109,8 @@ COLUMNS = [
     "OpSelect",
     "OpULessThan",
     "divisions",
+    "float→int",
+    "uint→float",
     "loads",
     "access chains",
     "image ops",
@@ -116,7 +123,7 @@ def table(rows) -> str:
     return head + "".join(f"| {name} | " + " | ".join(str(s[c]) for c in COLUMNS) + " |\n" for name, s in rows)
 
 
-BEFORE_AFTER = ["instructions", "blocks", "conditional branches", "OpULessThan", "OpSelect"]
+BEFORE_AFTER = ["instructions", "blocks", "conditional branches", "OpULessThan", "OpSelect", "float→int"]
 
 
 def baseline_table(repo: str, rev: str, rows) -> str:
@@ -173,7 +180,7 @@ def main() -> int:
         f"(sha256 of names and bytes `{digest.hexdigest()[:16]}`). Counts of the binary's "
         "instructions (debug instructions left out), blocks (`OpLabel`), conditional branches "
         "(`OpBranchConditional`), switches, loops (`OpLoopMerge`), `OpSelect`, `OpULessThan` "
-        "(index bounds checks compile to it), divisions and remainders, loads, access chains, "
+        "(index bounds checks compile to it), divisions and remainders, float-to-integer and unsigned-to-float conversions (lavapipe compiles each float-to-integer conversion to eight scalar saturating ones per vector, an unsigned-to-float one to several instructions), loads, access chains, "
         "image instructions and function calls: what a GPU pays for in code size and divergence "
         "(issue 26). A module holds one entry point and the functions it calls.\n\n"
         "## aokit\n\n" + table(rows)

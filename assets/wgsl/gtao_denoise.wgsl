@@ -56,390 +56,381 @@ var<storage, read_write> terms_out: type_10;
 var<storage, read_write> ao: type_7;
 
 fn function_() {
-    var phi_126_: u32;
-    var phi_840_: u32;
-    var phi_1826_: f32;
-    var phi_2311_: vec3<f32>;
-    var phi_2361_: type_22;
-    var phi_2362_: type_22;
-    var phi_1180_: f32;
-    var phi_1498_: f32;
-    var phi_2364_: type_22;
-    var phi_2365_: type_22;
-    var phi_2366_: bool;
-    var phi_2370_: type_22;
-    var phi_841_: u32;
-    var phi_290_: f32;
-    var phi_766_: f32;
-    var phi_801_: f32;
+    var phi_128_: u32;
+    var phi_896_: u32;
+    var phi_1912_: f32;
+    var phi_2449_: vec3<f32>;
+    var phi_2497_: type_22;
+    var phi_2498_: type_22;
+    var phi_1236_: f32;
+    var phi_1579_: f32;
+    var phi_2500_: type_22;
+    var phi_2501_: type_22;
+    var phi_2502_: bool;
+    var phi_2506_: type_22;
+    var phi_897_: u32;
+    var phi_292_: f32;
+    var phi_812_: f32;
+    var phi_852_: f32;
 
-    let _e45 = id_1;
-    let _e50 = params.member.member.member[0u];
-    let _e55 = select(select(u32(_e50), 0u, (_e50 < 0f)), 4294967295u, (_e50 > 4294967000f));
-    let _e60 = params.member.member.member[1u];
-    let _e65 = select(select(u32(_e60), 0u, (_e60 < 0f)), 4294967295u, (_e60 > 4294967000f));
-    let _e68 = (_e55 / 2u);
-    if ((_e55 % 2u) > 0u) {
-        phi_126_ = (_e68 + 1u);
+    let _e47 = id_1;
+    let _e52 = params.member.member.member[0u];
+    let _e57 = select(select(u32(_e52), 0u, (_e52 < 0f)), 4294967295u, (_e52 > 4294967000f));
+    let _e62 = params.member.member.member[1u];
+    let _e67 = select(select(u32(_e62), 0u, (_e62 < 0f)), 4294967295u, (_e62 > 4294967000f));
+    let _e70 = (_e57 / 2u);
+    if ((_e57 % 2u) > 0u) {
+        phi_128_ = (_e70 + 1u);
     } else {
-        phi_126_ = _e68;
+        phi_128_ = _e70;
     }
-    let _e73 = phi_126_;
-    if (_e45.x >= _e73) {
+    let _e75 = phi_128_;
+    if (_e47.x >= _e75) {
     } else {
-        if (_e45.y >= _e65) {
+        if (_e47.y >= _e67) {
         } else {
-            let _e78 = params.member.member_12;
-            let _e82 = params.member.member_10;
-            let _e85 = ((_e78 + 1u) >= select(1u, _e82, (1u < _e82)));
-            let _e86 = (2u * _e45.x);
-            let _e88 = ((_e86 + 1u) < _e55);
-            let _e89 = (_e45.y * _e55);
-            let _e90 = (_e89 + _e86);
-            let _e93 = params.member.member_13;
-            let _e94 = (_e93 == 0u);
-            if _e94 {
-                let _e1001 = bitcast<i32>(_e86);
-                let _e1002 = (_e1001 + -1i);
-                let _e1004 = select(0i, _e1002, (0i < _e1002));
-                let _e1006 = (bitcast<i32>(_e55) - 1i);
-                let _e1009 = bitcast<u32>(select(_e1004, _e1006, (_e1006 < _e1004)));
-                let _e1010 = (_e1001 + 1i);
-                let _e1012 = select(0i, _e1010, (0i < _e1010));
-                let _e1015 = bitcast<u32>(select(_e1012, _e1006, (_e1006 < _e1012)));
-                let _e1016 = (_e1001 + 2i);
-                let _e1018 = select(0i, _e1016, (0i < _e1016));
-                let _e1021 = bitcast<u32>(select(_e1018, _e1006, (_e1006 < _e1018)));
-                let _e1022 = bitcast<i32>(_e45.y);
-                let _e1023 = (_e1022 + -1i);
-                let _e1025 = select(0i, _e1023, (0i < _e1023));
-                let _e1027 = (bitcast<i32>(_e65) - 1i);
-                let _e1031 = (_e1022 + 1i);
-                let _e1033 = select(0i, _e1031, (0i < _e1031));
-                let _e1037 = (_e89 + _e1009);
-                let _e1040 = edges.member[_e1037];
-                let _e1043 = edges.member[_e90];
-                let _e1044 = (_e89 + _e1015);
-                let _e1047 = edges.member[_e1044];
-                let _e1048 = (_e89 + _e1021);
-                let _e1051 = edges.member[_e1048];
-                if (_e82 == 0u) {
-                    phi_290_ = 10000f;
+            let _e80 = params.member.member_12;
+            let _e84 = params.member.member_10;
+            let _e87 = ((_e80 + 1u) >= select(1u, _e84, (1u < _e84)));
+            let _e88 = (2u * _e47.x);
+            let _e90 = ((_e88 + 1u) < _e57);
+            let _e91 = (_e47.y * _e57);
+            let _e92 = (_e91 + _e88);
+            let _e95 = params.member.member_13;
+            let _e96 = (_e95 == 0u);
+            if _e96 {
+                let _e1076 = bitcast<i32>(_e88);
+                let _e1077 = (_e1076 + -1i);
+                let _e1079 = select(0i, _e1077, (0i < _e1077));
+                let _e1081 = (bitcast<i32>(_e57) - 1i);
+                let _e1084 = bitcast<u32>(select(_e1079, _e1081, (_e1081 < _e1079)));
+                let _e1085 = (_e1076 + 1i);
+                let _e1087 = select(0i, _e1085, (0i < _e1085));
+                let _e1090 = bitcast<u32>(select(_e1087, _e1081, (_e1081 < _e1087)));
+                let _e1091 = (_e1076 + 2i);
+                let _e1093 = select(0i, _e1091, (0i < _e1091));
+                let _e1096 = bitcast<u32>(select(_e1093, _e1081, (_e1081 < _e1093)));
+                let _e1097 = bitcast<i32>(_e47.y);
+                let _e1098 = (_e1097 + -1i);
+                let _e1100 = select(0i, _e1098, (0i < _e1098));
+                let _e1102 = (bitcast<i32>(_e67) - 1i);
+                let _e1106 = (_e1097 + 1i);
+                let _e1108 = select(0i, _e1106, (0i < _e1106));
+                let _e1112 = (_e91 + _e1084);
+                let _e1115 = edges.member[_e1112];
+                let _e1118 = edges.member[_e92];
+                let _e1119 = (_e91 + _e1090);
+                let _e1122 = edges.member[_e1119];
+                let _e1123 = (_e91 + _e1096);
+                let _e1126 = edges.member[_e1123];
+                if (_e84 == 0u) {
+                    phi_292_ = 10000f;
                 } else {
-                    phi_290_ = select(0.24000001f, 1.2f, _e85);
+                    phi_292_ = select(0.24000001f, 1.2f, _e87);
                 }
-                let _e1055 = phi_290_;
-                let _e1056 = (bitcast<u32>(select(_e1025, _e1027, (_e1027 < _e1025))) * _e55);
-                let _e1057 = (_e1056 + _e86);
-                let _e1060 = edges.member[_e1057];
-                let _e1061 = (bitcast<u32>(select(_e1033, _e1027, (_e1027 < _e1033))) * _e55);
-                let _e1062 = (_e1061 + _e86);
-                let _e1065 = edges.member[_e1062];
-                let _e1083 = (f32(((_e1047 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f);
-                let _e1088 = (f32(((_e1047 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f);
-                let _e1091 = (f32((_e1047 & 3u)) * 0.33333334f);
-                let _e1129 = (f32(((_e1043 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f);
-                let _e1134 = (f32(((_e1043 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f);
-                let _e1137 = (f32((_e1043 & 3u)) * 0.33333334f);
-                let _e1138 = ((f32(((_e1043 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f) * (f32(((_e1040 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f));
-                let _e1139 = (_e1129 * _e1083);
-                let _e1140 = (_e1134 * (f32((_e1060 & 3u)) * 0.33333334f));
-                let _e1141 = (_e1137 * (f32(((_e1065 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f));
-                let _e1145 = (1.5f - (((_e1138 + _e1139) + _e1140) + _e1141));
-                let _e1150 = (select(0f, select(1f, _e1145, (_e1145 < 1f)), (_e1145 > 0f)) * 0.33333334f);
-                let _e1151 = (_e1138 + _e1150);
-                let _e1155 = select(0f, select(1f, _e1151, (_e1151 < 1f)), (_e1151 > 0f));
-                let _e1156 = (_e1139 + _e1150);
-                let _e1160 = select(0f, select(1f, _e1156, (_e1156 < 1f)), (_e1156 > 0f));
-                let _e1161 = (_e1140 + _e1150);
-                let _e1165 = select(0f, select(1f, _e1161, (_e1161 < 1f)), (_e1161 > 0f));
-                let _e1166 = (_e1141 + _e1150);
-                let _e1170 = select(0f, select(1f, _e1166, (_e1166 < 1f)), (_e1166 > 0f));
-                let _e1174 = (((_e1155 * (f32(((_e1040 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f)) + (_e1165 * (f32(((_e1060 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f))) * 0.425f);
-                let _e1178 = (((_e1165 * (f32(((_e1060 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f)) + (_e1160 * _e1088)) * 0.425f);
-                let _e1182 = (((_e1170 * (f32(((_e1065 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f)) + (_e1155 * (f32((_e1040 & 3u)) * 0.33333334f))) * 0.425f);
-                let _e1186 = (((_e1160 * _e1091) + (_e1170 * (f32(((_e1065 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f))) * 0.425f);
-                let _e1195 = (_e1056 + _e1015);
-                let _e1198 = edges.member[_e1195];
-                let _e1199 = (_e1061 + _e1015);
-                let _e1202 = edges.member[_e1199];
-                let _e1249 = (_e1083 * _e1129);
-                let _e1250 = ((f32(((_e1047 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f) * (f32(((_e1051 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f));
-                let _e1251 = (_e1088 * (f32((_e1198 & 3u)) * 0.33333334f));
-                let _e1252 = (_e1091 * (f32(((_e1202 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f));
-                let _e1256 = (1.5f - (((_e1249 + _e1250) + _e1251) + _e1252));
-                let _e1261 = (select(0f, select(1f, _e1256, (_e1256 < 1f)), (_e1256 > 0f)) * 0.33333334f);
-                let _e1262 = (_e1249 + _e1261);
-                let _e1266 = select(0f, select(1f, _e1262, (_e1262 < 1f)), (_e1262 > 0f));
-                let _e1267 = (_e1250 + _e1261);
-                let _e1271 = select(0f, select(1f, _e1267, (_e1267 < 1f)), (_e1267 > 0f));
-                let _e1272 = (_e1251 + _e1261);
-                let _e1276 = select(0f, select(1f, _e1272, (_e1272 < 1f)), (_e1272 > 0f));
-                let _e1277 = (_e1252 + _e1261);
-                let _e1281 = select(0f, select(1f, _e1277, (_e1277 < 1f)), (_e1277 > 0f));
-                let _e1285 = (((_e1266 * _e1134) + (_e1276 * (f32(((_e1198 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f))) * 0.425f);
-                let _e1289 = (((_e1276 * (f32(((_e1198 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f)) + (_e1271 * (f32(((_e1051 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f))) * 0.425f);
-                let _e1293 = (((_e1281 * (f32(((_e1202 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f)) + (_e1266 * _e1137)) * 0.425f);
-                let _e1297 = (((_e1271 * (f32((_e1051 & 3u)) * 0.33333334f)) + (_e1281 * (f32(((_e1202 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f))) * 0.425f);
-                let _e1309 = terms_in.member[(_e1056 + _e1009)];
-                let _e1314 = terms_in.member[_e1057];
-                let _e1316 = (f32(_e1314) * 0.003921569f);
-                let _e1319 = terms_in.member[_e1195];
-                let _e1321 = (f32(_e1319) * 0.003921569f);
-                let _e1325 = terms_in.member[(_e1056 + _e1021)];
-                let _e1330 = terms_in.member[_e1037];
-                let _e1335 = terms_in.member[_e90];
-                let _e1337 = (f32(_e1335) * 0.003921569f);
-                let _e1340 = terms_in.member[_e1044];
-                let _e1342 = (f32(_e1340) * 0.003921569f);
-                let _e1345 = terms_in.member[_e1048];
-                let _e1351 = terms_in.member[(_e1061 + _e1009)];
-                let _e1356 = terms_in.member[_e1062];
-                let _e1358 = (f32(_e1356) * 0.003921569f);
-                let _e1361 = terms_in.member[_e1199];
-                let _e1363 = (f32(_e1361) * 0.003921569f);
-                let _e1367 = terms_in.member[(_e1061 + _e1021)];
-                let _e1387 = ((((((((((_e1337 * _e1055) + ((f32(_e1330) * 0.003921569f) * _e1155)) + (_e1342 * _e1160)) + (_e1316 * _e1165)) + (_e1358 * _e1170)) + ((f32(_e1309) * 0.003921569f) * _e1174)) + (_e1321 * _e1178)) + ((f32(_e1351) * 0.003921569f) * _e1182)) + (_e1363 * _e1186)) / ((((((((_e1055 + _e1155) + _e1160) + _e1165) + _e1170) + _e1174) + _e1178) + _e1182) + _e1186));
-                let _e1405 = ((((((((((_e1342 * _e1055) + (_e1337 * _e1266)) + ((f32(_e1345) * 0.003921569f) * _e1271)) + (_e1321 * _e1276)) + (_e1363 * _e1281)) + (_e1316 * _e1285)) + ((f32(_e1325) * 0.003921569f) * _e1289)) + (_e1358 * _e1293)) + ((f32(_e1367) * 0.003921569f) * _e1297)) / ((((((((_e1055 + _e1266) + _e1271) + _e1276) + _e1281) + _e1285) + _e1289) + _e1293) + _e1297));
-                if _e85 {
-                    phi_766_ = ((_e1387 * 382.5f) + 0.5f);
+                let _e1130 = phi_292_;
+                let _e1131 = (bitcast<u32>(select(_e1100, _e1102, (_e1102 < _e1100))) * _e57);
+                let _e1132 = (_e1131 + _e88);
+                let _e1135 = edges.member[_e1132];
+                let _e1136 = (bitcast<u32>(select(_e1108, _e1102, (_e1102 < _e1108))) * _e57);
+                let _e1137 = (_e1136 + _e88);
+                let _e1140 = edges.member[_e1137];
+                let _e1162 = (f32(bitcast<i32>(((_e1122 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f);
+                let _e1168 = (f32(bitcast<i32>(((_e1122 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f);
+                let _e1172 = (f32(bitcast<i32>((_e1122 & 3u))) * 0.33333334f);
+                let _e1218 = (f32(bitcast<i32>(((_e1118 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f);
+                let _e1224 = (f32(bitcast<i32>(((_e1118 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f);
+                let _e1228 = (f32(bitcast<i32>((_e1118 & 3u))) * 0.33333334f);
+                let _e1229 = ((f32(bitcast<i32>(((_e1118 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f) * (f32(bitcast<i32>(((_e1115 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f));
+                let _e1230 = (_e1218 * _e1162);
+                let _e1231 = (_e1224 * (f32(bitcast<i32>((_e1135 & 3u))) * 0.33333334f));
+                let _e1232 = (_e1228 * (f32(bitcast<i32>(((_e1140 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f));
+                let _e1236 = (1.5f - (((_e1229 + _e1230) + _e1231) + _e1232));
+                let _e1241 = (select(0f, select(1f, _e1236, (_e1236 < 1f)), (_e1236 > 0f)) * 0.33333334f);
+                let _e1242 = (_e1229 + _e1241);
+                let _e1246 = select(0f, select(1f, _e1242, (_e1242 < 1f)), (_e1242 > 0f));
+                let _e1247 = (_e1230 + _e1241);
+                let _e1251 = select(0f, select(1f, _e1247, (_e1247 < 1f)), (_e1247 > 0f));
+                let _e1252 = (_e1231 + _e1241);
+                let _e1256 = select(0f, select(1f, _e1252, (_e1252 < 1f)), (_e1252 > 0f));
+                let _e1257 = (_e1232 + _e1241);
+                let _e1261 = select(0f, select(1f, _e1257, (_e1257 < 1f)), (_e1257 > 0f));
+                let _e1265 = (((_e1246 * (f32(bitcast<i32>(((_e1115 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f)) + (_e1256 * (f32(bitcast<i32>(((_e1135 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f))) * 0.425f);
+                let _e1269 = (((_e1256 * (f32(bitcast<i32>(((_e1135 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f)) + (_e1251 * _e1168)) * 0.425f);
+                let _e1273 = (((_e1261 * (f32(bitcast<i32>(((_e1140 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f)) + (_e1246 * (f32(bitcast<i32>((_e1115 & 3u))) * 0.33333334f))) * 0.425f);
+                let _e1277 = (((_e1251 * _e1172) + (_e1261 * (f32(bitcast<i32>(((_e1140 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f))) * 0.425f);
+                let _e1286 = (_e1131 + _e1090);
+                let _e1289 = edges.member[_e1286];
+                let _e1290 = (_e1136 + _e1090);
+                let _e1293 = edges.member[_e1290];
+                let _e1350 = (_e1162 * _e1218);
+                let _e1351 = ((f32(bitcast<i32>(((_e1122 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f) * (f32(bitcast<i32>(((_e1126 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f));
+                let _e1352 = (_e1168 * (f32(bitcast<i32>((_e1289 & 3u))) * 0.33333334f));
+                let _e1353 = (_e1172 * (f32(bitcast<i32>(((_e1293 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f));
+                let _e1357 = (1.5f - (((_e1350 + _e1351) + _e1352) + _e1353));
+                let _e1362 = (select(0f, select(1f, _e1357, (_e1357 < 1f)), (_e1357 > 0f)) * 0.33333334f);
+                let _e1363 = (_e1350 + _e1362);
+                let _e1367 = select(0f, select(1f, _e1363, (_e1363 < 1f)), (_e1363 > 0f));
+                let _e1368 = (_e1351 + _e1362);
+                let _e1372 = select(0f, select(1f, _e1368, (_e1368 < 1f)), (_e1368 > 0f));
+                let _e1373 = (_e1352 + _e1362);
+                let _e1377 = select(0f, select(1f, _e1373, (_e1373 < 1f)), (_e1373 > 0f));
+                let _e1378 = (_e1353 + _e1362);
+                let _e1382 = select(0f, select(1f, _e1378, (_e1378 < 1f)), (_e1378 > 0f));
+                let _e1386 = (((_e1367 * _e1224) + (_e1377 * (f32(bitcast<i32>(((_e1289 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f))) * 0.425f);
+                let _e1390 = (((_e1377 * (f32(bitcast<i32>(((_e1289 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f)) + (_e1372 * (f32(bitcast<i32>(((_e1126 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f))) * 0.425f);
+                let _e1394 = (((_e1382 * (f32(bitcast<i32>(((_e1293 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f)) + (_e1367 * _e1228)) * 0.425f);
+                let _e1398 = (((_e1372 * (f32(bitcast<i32>((_e1126 & 3u))) * 0.33333334f)) + (_e1382 * (f32(bitcast<i32>(((_e1293 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f))) * 0.425f);
+                let _e1410 = terms_in.member[(_e1131 + _e1084)];
+                let _e1416 = terms_in.member[_e1132];
+                let _e1419 = (f32(bitcast<i32>(_e1416)) * 0.003921569f);
+                let _e1422 = terms_in.member[_e1286];
+                let _e1425 = (f32(bitcast<i32>(_e1422)) * 0.003921569f);
+                let _e1429 = terms_in.member[(_e1131 + _e1096)];
+                let _e1435 = terms_in.member[_e1112];
+                let _e1441 = terms_in.member[_e92];
+                let _e1444 = (f32(bitcast<i32>(_e1441)) * 0.003921569f);
+                let _e1447 = terms_in.member[_e1119];
+                let _e1450 = (f32(bitcast<i32>(_e1447)) * 0.003921569f);
+                let _e1453 = terms_in.member[_e1123];
+                let _e1460 = terms_in.member[(_e1136 + _e1084)];
+                let _e1466 = terms_in.member[_e1137];
+                let _e1469 = (f32(bitcast<i32>(_e1466)) * 0.003921569f);
+                let _e1472 = terms_in.member[_e1290];
+                let _e1475 = (f32(bitcast<i32>(_e1472)) * 0.003921569f);
+                let _e1479 = terms_in.member[(_e1136 + _e1096)];
+                let _e1500 = ((((((((((_e1444 * _e1130) + ((f32(bitcast<i32>(_e1435)) * 0.003921569f) * _e1246)) + (_e1450 * _e1251)) + (_e1419 * _e1256)) + (_e1469 * _e1261)) + ((f32(bitcast<i32>(_e1410)) * 0.003921569f) * _e1265)) + (_e1425 * _e1269)) + ((f32(bitcast<i32>(_e1460)) * 0.003921569f) * _e1273)) + (_e1475 * _e1277)) / ((((((((_e1130 + _e1246) + _e1251) + _e1256) + _e1261) + _e1265) + _e1269) + _e1273) + _e1277));
+                let _e1518 = ((((((((((_e1450 * _e1130) + (_e1444 * _e1367)) + ((f32(bitcast<i32>(_e1453)) * 0.003921569f) * _e1372)) + (_e1425 * _e1377)) + (_e1475 * _e1382)) + (_e1419 * _e1386)) + ((f32(bitcast<i32>(_e1429)) * 0.003921569f) * _e1390)) + (_e1469 * _e1394)) + ((f32(bitcast<i32>(_e1479)) * 0.003921569f) * _e1398)) / ((((((((_e1130 + _e1367) + _e1372) + _e1377) + _e1382) + _e1386) + _e1390) + _e1394) + _e1398));
+                if _e87 {
+                    phi_812_ = ((_e1500 * 382.5f) + 0.5f);
                 } else {
-                    phi_766_ = ((_e1387 * 255f) + 0.5f);
+                    phi_812_ = ((_e1500 * 255f) + 0.5f);
                 }
-                let _e1411 = phi_766_;
-                let _e1413 = select(0f, _e1411, (_e1411 > 0f));
-                let _e1416 = u32(select(255f, _e1413, (_e1413 < 255f)));
-                if _e85 {
-                    phi_801_ = ((_e1405 * 382.5f) + 0.5f);
+                let _e1524 = phi_812_;
+                let _e1526 = select(0f, _e1524, (_e1524 > 0f));
+                let _e1532 = (bitcast<u32>((floor(select(255f, _e1526, (_e1526 < 255f))) + 8388608f)) - 1258291200u);
+                if _e87 {
+                    phi_852_ = ((_e1518 * 382.5f) + 0.5f);
                 } else {
-                    phi_801_ = ((_e1405 * 255f) + 0.5f);
+                    phi_852_ = ((_e1518 * 255f) + 0.5f);
                 }
-                let _e1424 = phi_801_;
-                let _e1426 = select(0f, _e1424, (_e1424 > 0f));
-                let _e1429 = u32(select(255f, _e1426, (_e1426 < 255f)));
-                terms_out.member[_e90] = _e1416;
-                if _e85 {
-                    ao.member[_e90] = (f32(_e1416) * 0.003921569f);
+                let _e1541 = phi_852_;
+                let _e1543 = select(0f, _e1541, (_e1541 > 0f));
+                let _e1549 = (bitcast<u32>((floor(select(255f, _e1543, (_e1543 < 255f))) + 8388608f)) - 1258291200u);
+                terms_out.member[_e92] = _e1532;
+                if _e87 {
+                    ao.member[_e92] = (f32(bitcast<i32>(_e1532)) * 0.003921569f);
                 }
-                if _e88 {
-                    let _e1436 = (_e90 + 1u);
-                    terms_out.member[_e1436] = _e1429;
-                    if _e85 {
-                        ao.member[_e1436] = (f32(_e1429) * 0.003921569f);
+                if _e90 {
+                    let _e1557 = (_e92 + 1u);
+                    terms_out.member[_e1557] = _e1549;
+                    if _e87 {
+                        ao.member[_e1557] = (f32(bitcast<i32>(_e1549)) * 0.003921569f);
                     }
                 }
             } else {
-                phi_840_ = 0u;
+                phi_896_ = 0u;
                 loop {
-                    let _e96 = phi_840_;
-                    let _e99 = (_e96 < (1u + select(0u, 1u, _e88)));
-                    if _e99 {
-                        let _e100 = (_e86 + _e96);
-                        if _e94 {
-                            let _e705 = bitcast<i32>(_e100);
-                            let _e706 = (_e705 + -1i);
-                            let _e708 = select(0i, _e706, (0i < _e706));
-                            let _e710 = (bitcast<i32>(_e55) - 1i);
-                            let _e713 = bitcast<u32>(select(_e708, _e710, (_e710 < _e708)));
-                            let _e714 = bitcast<i32>(_e45.y);
-                            let _e716 = select(0i, _e714, (0i < _e714));
-                            let _e718 = (bitcast<i32>(_e65) - 1i);
-                            let _e722 = (_e705 + 1i);
-                            let _e724 = select(0i, _e722, (0i < _e722));
-                            let _e727 = bitcast<u32>(select(_e724, _e710, (_e710 < _e724)));
-                            let _e729 = select(0i, _e705, (0i < _e705));
-                            let _e732 = bitcast<u32>(select(_e729, _e710, (_e710 < _e729)));
-                            let _e733 = (_e714 + -1i);
-                            let _e735 = select(0i, _e733, (0i < _e733));
-                            let _e739 = (_e714 + 1i);
-                            let _e741 = select(0i, _e739, (0i < _e739));
-                            if (_e82 == 0u) {
-                                phi_1180_ = 10000f;
+                    let _e98 = phi_896_;
+                    let _e101 = (_e98 < (1u + select(0u, 1u, _e90)));
+                    if _e101 {
+                        let _e102 = (_e88 + _e98);
+                        if _e96 {
+                            let _e751 = bitcast<i32>(_e102);
+                            let _e752 = (_e751 + -1i);
+                            let _e754 = select(0i, _e752, (0i < _e752));
+                            let _e756 = (bitcast<i32>(_e57) - 1i);
+                            let _e759 = bitcast<u32>(select(_e754, _e756, (_e756 < _e754)));
+                            let _e760 = bitcast<i32>(_e47.y);
+                            let _e762 = select(0i, _e760, (0i < _e760));
+                            let _e764 = (bitcast<i32>(_e67) - 1i);
+                            let _e768 = (_e751 + 1i);
+                            let _e770 = select(0i, _e768, (0i < _e768));
+                            let _e773 = bitcast<u32>(select(_e770, _e756, (_e756 < _e770)));
+                            let _e775 = select(0i, _e751, (0i < _e751));
+                            let _e778 = bitcast<u32>(select(_e775, _e756, (_e756 < _e775)));
+                            let _e779 = (_e760 + -1i);
+                            let _e781 = select(0i, _e779, (0i < _e779));
+                            let _e785 = (_e760 + 1i);
+                            let _e787 = select(0i, _e785, (0i < _e785));
+                            if (_e84 == 0u) {
+                                phi_1236_ = 10000f;
                             } else {
-                                phi_1180_ = select(0.24000001f, 1.2f, _e85);
+                                phi_1236_ = select(0.24000001f, 1.2f, _e87);
                             }
-                            let _e748 = phi_1180_;
-                            let _e749 = (_e89 + _e100);
-                            let _e752 = edges.member[_e749];
-                            let _e753 = (bitcast<u32>(select(_e716, _e718, (_e718 < _e716))) * _e55);
-                            let _e754 = (_e753 + _e713);
-                            let _e757 = edges.member[_e754];
-                            let _e758 = (_e753 + _e727);
-                            let _e761 = edges.member[_e758];
-                            let _e762 = (bitcast<u32>(select(_e735, _e718, (_e718 < _e735))) * _e55);
-                            let _e763 = (_e762 + _e732);
-                            let _e766 = edges.member[_e763];
-                            let _e767 = (bitcast<u32>(select(_e741, _e718, (_e718 < _e741))) * _e55);
-                            let _e768 = (_e767 + _e732);
-                            let _e771 = edges.member[_e768];
-                            let _e844 = ((f32(((_e752 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f) * (f32(((_e757 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f));
-                            let _e845 = ((f32(((_e752 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f) * (f32(((_e761 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f));
-                            let _e846 = ((f32(((_e752 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f) * (f32((_e766 & 3u)) * 0.33333334f));
-                            let _e847 = ((f32((_e752 & 3u)) * 0.33333334f) * (f32(((_e771 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f));
-                            let _e851 = (1.5f - (((_e844 + _e845) + _e846) + _e847));
-                            let _e856 = (select(0f, select(1f, _e851, (_e851 < 1f)), (_e851 > 0f)) * 0.33333334f);
-                            let _e857 = (_e844 + _e856);
-                            let _e861 = select(0f, select(1f, _e857, (_e857 < 1f)), (_e857 > 0f));
-                            let _e862 = (_e845 + _e856);
-                            let _e866 = select(0f, select(1f, _e862, (_e862 < 1f)), (_e862 > 0f));
-                            let _e867 = (_e846 + _e856);
-                            let _e871 = select(0f, select(1f, _e867, (_e867 < 1f)), (_e867 > 0f));
-                            let _e872 = (_e847 + _e856);
-                            let _e876 = select(0f, select(1f, _e872, (_e872 < 1f)), (_e872 > 0f));
-                            let _e880 = (((_e861 * (f32(((_e757 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f)) + (_e871 * (f32(((_e766 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f))) * 0.425f);
-                            let _e884 = (((_e871 * (f32(((_e766 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f)) + (_e866 * (f32(((_e761 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f))) * 0.425f);
-                            let _e888 = (((_e876 * (f32(((_e771 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f)) + (_e861 * (f32((_e757 & 3u)) * 0.33333334f))) * 0.425f);
-                            let _e892 = (((_e866 * (f32((_e761 & 3u)) * 0.33333334f)) + (_e876 * (f32(((_e771 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f))) * 0.425f);
-                            let _e903 = terms_in.member[_e749];
-                            let _e908 = terms_in.member[_e754];
-                            let _e913 = terms_in.member[_e758];
-                            let _e918 = terms_in.member[_e763];
-                            let _e923 = terms_in.member[_e768];
-                            let _e929 = terms_in.member[(_e762 + _e713)];
-                            let _e935 = terms_in.member[(_e762 + _e727)];
-                            let _e941 = terms_in.member[(_e767 + _e713)];
-                            let _e947 = terms_in.member[(_e767 + _e727)];
-                            let _e967 = (((((((((((f32(_e903) * 0.003921569f) * _e748) + ((f32(_e908) * 0.003921569f) * _e861)) + ((f32(_e913) * 0.003921569f) * _e866)) + ((f32(_e918) * 0.003921569f) * _e871)) + ((f32(_e923) * 0.003921569f) * _e876)) + ((f32(_e929) * 0.003921569f) * _e880)) + ((f32(_e935) * 0.003921569f) * _e884)) + ((f32(_e941) * 0.003921569f) * _e888)) + ((f32(_e947) * 0.003921569f) * _e892)) / ((((((((_e748 + _e861) + _e866) + _e871) + _e876) + _e880) + _e884) + _e888) + _e892));
-                            if _e85 {
-                                phi_1498_ = ((_e967 * 382.5f) + 0.5f);
+                            let _e794 = phi_1236_;
+                            let _e795 = (_e91 + _e102);
+                            let _e798 = edges.member[_e795];
+                            let _e799 = (bitcast<u32>(select(_e762, _e764, (_e764 < _e762))) * _e57);
+                            let _e800 = (_e799 + _e759);
+                            let _e803 = edges.member[_e800];
+                            let _e804 = (_e799 + _e773);
+                            let _e807 = edges.member[_e804];
+                            let _e808 = (bitcast<u32>(select(_e781, _e764, (_e764 < _e781))) * _e57);
+                            let _e809 = (_e808 + _e778);
+                            let _e812 = edges.member[_e809];
+                            let _e813 = (bitcast<u32>(select(_e787, _e764, (_e764 < _e787))) * _e57);
+                            let _e814 = (_e813 + _e778);
+                            let _e817 = edges.member[_e814];
+                            let _e906 = ((f32(bitcast<i32>(((_e798 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f) * (f32(bitcast<i32>(((_e803 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f));
+                            let _e907 = ((f32(bitcast<i32>(((_e798 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f) * (f32(bitcast<i32>(((_e807 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f));
+                            let _e908 = ((f32(bitcast<i32>(((_e798 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f) * (f32(bitcast<i32>((_e812 & 3u))) * 0.33333334f));
+                            let _e909 = ((f32(bitcast<i32>((_e798 & 3u))) * 0.33333334f) * (f32(bitcast<i32>(((_e817 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f));
+                            let _e913 = (1.5f - (((_e906 + _e907) + _e908) + _e909));
+                            let _e918 = (select(0f, select(1f, _e913, (_e913 < 1f)), (_e913 > 0f)) * 0.33333334f);
+                            let _e919 = (_e906 + _e918);
+                            let _e923 = select(0f, select(1f, _e919, (_e919 < 1f)), (_e919 > 0f));
+                            let _e924 = (_e907 + _e918);
+                            let _e928 = select(0f, select(1f, _e924, (_e924 < 1f)), (_e924 > 0f));
+                            let _e929 = (_e908 + _e918);
+                            let _e933 = select(0f, select(1f, _e929, (_e929 < 1f)), (_e929 > 0f));
+                            let _e934 = (_e909 + _e918);
+                            let _e938 = select(0f, select(1f, _e934, (_e934 < 1f)), (_e934 > 0f));
+                            let _e942 = (((_e923 * (f32(bitcast<i32>(((_e803 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f)) + (_e933 * (f32(bitcast<i32>(((_e812 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f))) * 0.425f);
+                            let _e946 = (((_e933 * (f32(bitcast<i32>(((_e812 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f)) + (_e928 * (f32(bitcast<i32>(((_e807 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f))) * 0.425f);
+                            let _e950 = (((_e938 * (f32(bitcast<i32>(((_e817 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f)) + (_e923 * (f32(bitcast<i32>((_e803 & 3u))) * 0.33333334f))) * 0.425f);
+                            let _e954 = (((_e928 * (f32(bitcast<i32>((_e807 & 3u))) * 0.33333334f)) + (_e938 * (f32(bitcast<i32>(((_e817 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f))) * 0.425f);
+                            let _e965 = terms_in.member[_e795];
+                            let _e971 = terms_in.member[_e800];
+                            let _e977 = terms_in.member[_e804];
+                            let _e983 = terms_in.member[_e809];
+                            let _e989 = terms_in.member[_e814];
+                            let _e996 = terms_in.member[(_e808 + _e759)];
+                            let _e1003 = terms_in.member[(_e808 + _e773)];
+                            let _e1010 = terms_in.member[(_e813 + _e759)];
+                            let _e1017 = terms_in.member[(_e813 + _e773)];
+                            let _e1038 = (((((((((((f32(bitcast<i32>(_e965)) * 0.003921569f) * _e794) + ((f32(bitcast<i32>(_e971)) * 0.003921569f) * _e923)) + ((f32(bitcast<i32>(_e977)) * 0.003921569f) * _e928)) + ((f32(bitcast<i32>(_e983)) * 0.003921569f) * _e933)) + ((f32(bitcast<i32>(_e989)) * 0.003921569f) * _e938)) + ((f32(bitcast<i32>(_e996)) * 0.003921569f) * _e942)) + ((f32(bitcast<i32>(_e1003)) * 0.003921569f) * _e946)) + ((f32(bitcast<i32>(_e1010)) * 0.003921569f) * _e950)) + ((f32(bitcast<i32>(_e1017)) * 0.003921569f) * _e954)) / ((((((((_e794 + _e923) + _e928) + _e933) + _e938) + _e942) + _e946) + _e950) + _e954));
+                            if _e87 {
+                                phi_1579_ = ((_e1038 * 382.5f) + 0.5f);
                             } else {
-                                phi_1498_ = ((_e967 * 255f) + 0.5f);
+                                phi_1579_ = ((_e1038 * 255f) + 0.5f);
                             }
-                            let _e973 = phi_1498_;
-                            let _e975 = select(0f, _e973, (_e973 > 0f));
-                            let _e978 = u32(select(255f, _e975, (_e975 < 255f)));
-                            phi_2364_ = type_22(_e978, (f32(_e978) * 0.003921569f), _e85);
-                            phi_2365_ = type_22();
-                            phi_2366_ = true;
+                            let _e1044 = phi_1579_;
+                            let _e1046 = select(0f, _e1044, (_e1044 > 0f));
+                            let _e1052 = (bitcast<u32>((floor(select(255f, _e1046, (_e1046 < 255f))) + 8388608f)) - 1258291200u);
+                            phi_2500_ = type_22(_e1052, (f32(bitcast<i32>(_e1052)) * 0.003921569f), _e87);
+                            phi_2501_ = type_22();
+                            phi_2502_ = true;
                         } else {
-                            let _e101 = bitcast<i32>(_e100);
-                            let _e102 = (_e101 + -1i);
-                            let _e104 = select(0i, _e102, (0i < _e102));
-                            let _e106 = (bitcast<i32>(_e55) - 1i);
-                            let _e109 = bitcast<u32>(select(_e104, _e106, (_e106 < _e104)));
-                            let _e110 = bitcast<i32>(_e45.y);
-                            let _e112 = select(0i, _e110, (0i < _e110));
-                            let _e114 = (bitcast<i32>(_e65) - 1i);
-                            let _e118 = (_e101 + 1i);
-                            let _e120 = select(0i, _e118, (0i < _e118));
-                            let _e123 = bitcast<u32>(select(_e120, _e106, (_e106 < _e120)));
-                            let _e125 = select(0i, _e101, (0i < _e101));
-                            let _e128 = bitcast<u32>(select(_e125, _e106, (_e106 < _e125)));
-                            let _e129 = (_e110 + -1i);
-                            let _e131 = select(0i, _e129, (0i < _e129));
-                            let _e135 = (_e110 + 1i);
-                            let _e137 = select(0i, _e135, (0i < _e135));
-                            if (_e82 == 0u) {
-                                phi_1826_ = 10000f;
+                            let _e103 = bitcast<i32>(_e102);
+                            let _e104 = (_e103 + -1i);
+                            let _e106 = select(0i, _e104, (0i < _e104));
+                            let _e108 = (bitcast<i32>(_e57) - 1i);
+                            let _e111 = bitcast<u32>(select(_e106, _e108, (_e108 < _e106)));
+                            let _e112 = bitcast<i32>(_e47.y);
+                            let _e114 = select(0i, _e112, (0i < _e112));
+                            let _e116 = (bitcast<i32>(_e67) - 1i);
+                            let _e120 = (_e103 + 1i);
+                            let _e122 = select(0i, _e120, (0i < _e120));
+                            let _e125 = bitcast<u32>(select(_e122, _e108, (_e108 < _e122)));
+                            let _e127 = select(0i, _e103, (0i < _e103));
+                            let _e130 = bitcast<u32>(select(_e127, _e108, (_e108 < _e127)));
+                            let _e131 = (_e112 + -1i);
+                            let _e133 = select(0i, _e131, (0i < _e131));
+                            let _e137 = (_e112 + 1i);
+                            let _e139 = select(0i, _e137, (0i < _e137));
+                            if (_e84 == 0u) {
+                                phi_1912_ = 10000f;
                             } else {
-                                phi_1826_ = select(0.24000001f, 1.2f, _e85);
+                                phi_1912_ = select(0.24000001f, 1.2f, _e87);
                             }
-                            let _e144 = phi_1826_;
-                            let _e145 = (_e89 + _e100);
-                            let _e148 = edges.member[_e145];
-                            let _e149 = (bitcast<u32>(select(_e112, _e114, (_e114 < _e112))) * _e55);
-                            let _e150 = (_e149 + _e109);
-                            let _e153 = edges.member[_e150];
-                            let _e154 = (_e149 + _e123);
-                            let _e157 = edges.member[_e154];
-                            let _e158 = (bitcast<u32>(select(_e131, _e114, (_e114 < _e131))) * _e55);
-                            let _e159 = (_e158 + _e128);
-                            let _e162 = edges.member[_e159];
-                            let _e163 = (bitcast<u32>(select(_e137, _e114, (_e114 < _e137))) * _e55);
-                            let _e164 = (_e163 + _e128);
-                            let _e167 = edges.member[_e164];
-                            let _e240 = ((f32(((_e148 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f) * (f32(((_e153 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f));
-                            let _e241 = ((f32(((_e148 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f) * (f32(((_e157 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f));
-                            let _e242 = ((f32(((_e148 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f) * (f32((_e162 & 3u)) * 0.33333334f));
-                            let _e243 = ((f32((_e148 & 3u)) * 0.33333334f) * (f32(((_e167 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f));
-                            let _e247 = (1.5f - (((_e240 + _e241) + _e242) + _e243));
-                            let _e252 = (select(0f, select(1f, _e247, (_e247 < 1f)), (_e247 > 0f)) * 0.33333334f);
-                            let _e253 = (_e240 + _e252);
-                            let _e257 = select(0f, select(1f, _e253, (_e253 < 1f)), (_e253 > 0f));
-                            let _e258 = (_e241 + _e252);
-                            let _e262 = select(0f, select(1f, _e258, (_e258 < 1f)), (_e258 > 0f));
-                            let _e263 = (_e242 + _e252);
-                            let _e267 = select(0f, select(1f, _e263, (_e263 < 1f)), (_e263 > 0f));
-                            let _e268 = (_e243 + _e252);
-                            let _e272 = select(0f, select(1f, _e268, (_e268 < 1f)), (_e268 > 0f));
-                            let _e276 = (((_e257 * (f32(((_e153 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f)) + (_e267 * (f32(((_e162 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f))) * 0.425f);
-                            let _e280 = (((_e267 * (f32(((_e162 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f)) + (_e262 * (f32(((_e157 >> bitcast<u32>(2u)) & 3u)) * 0.33333334f))) * 0.425f);
-                            let _e284 = (((_e272 * (f32(((_e167 >> bitcast<u32>(6u)) & 3u)) * 0.33333334f)) + (_e257 * (f32((_e153 & 3u)) * 0.33333334f))) * 0.425f);
-                            let _e288 = (((_e262 * (f32((_e157 & 3u)) * 0.33333334f)) + (_e272 * (f32(((_e167 >> bitcast<u32>(4u)) & 3u)) * 0.33333334f))) * 0.425f);
-                            let _e296 = ((((((((_e144 + _e257) + _e262) + _e267) + _e272) + _e276) + _e280) + _e284) + _e288);
-                            let _e299 = terms_in.member[_e145];
-                            let _e319 = terms_in.member[_e150];
-                            let _e339 = terms_in.member[_e154];
-                            let _e359 = terms_in.member[_e159];
-                            let _e379 = terms_in.member[_e164];
-                            let _e400 = terms_in.member[(_e158 + _e109)];
-                            let _e421 = terms_in.member[(_e158 + _e123)];
-                            let _e442 = terms_in.member[(_e163 + _e109)];
-                            let _e463 = terms_in.member[(_e163 + _e123)];
-                            let _e549 = (((((((((((f32((_e299 & 255u)) * 0.003921569f) * _e144) + ((f32((_e319 & 255u)) * 0.003921569f) * _e257)) + ((f32((_e339 & 255u)) * 0.003921569f) * _e262)) + ((f32((_e359 & 255u)) * 0.003921569f) * _e267)) + ((f32((_e379 & 255u)) * 0.003921569f) * _e272)) + ((f32((_e400 & 255u)) * 0.003921569f) * _e276)) + ((f32((_e421 & 255u)) * 0.003921569f) * _e280)) + ((f32((_e442 & 255u)) * 0.003921569f) * _e284)) + ((f32((_e463 & 255u)) * 0.003921569f) * _e288)) / _e296);
-                            let _e550 = (((((((((((f32(((_e299 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e144) + ((f32(((_e319 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e257)) + ((f32(((_e339 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e262)) + ((f32(((_e359 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e267)) + ((f32(((_e379 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e272)) + ((f32(((_e400 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e276)) + ((f32(((_e421 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e280)) + ((f32(((_e442 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e284)) + ((f32(((_e463 >> bitcast<u32>(8i)) & 255u)) * 0.003921569f) * _e288)) / _e296);
-                            let _e551 = (((((((((((f32(((_e299 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e144) + ((f32(((_e319 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e257)) + ((f32(((_e339 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e262)) + ((f32(((_e359 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e267)) + ((f32(((_e379 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e272)) + ((f32(((_e400 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e276)) + ((f32(((_e421 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e280)) + ((f32(((_e442 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e284)) + ((f32(((_e463 >> bitcast<u32>(16i)) & 255u)) * 0.003921569f) * _e288)) / _e296);
-                            let _e552 = (((((((((((f32((_e299 >> bitcast<u32>(24i))) * 0.003921569f) * _e144) + ((f32((_e319 >> bitcast<u32>(24i))) * 0.003921569f) * _e257)) + ((f32((_e339 >> bitcast<u32>(24i))) * 0.003921569f) * _e262)) + ((f32((_e359 >> bitcast<u32>(24i))) * 0.003921569f) * _e267)) + ((f32((_e379 >> bitcast<u32>(24i))) * 0.003921569f) * _e272)) + ((f32((_e400 >> bitcast<u32>(24i))) * 0.003921569f) * _e276)) + ((f32((_e421 >> bitcast<u32>(24i))) * 0.003921569f) * _e280)) + ((f32((_e442 >> bitcast<u32>(24i))) * 0.003921569f) * _e284)) + ((f32((_e463 >> bitcast<u32>(24i))) * 0.003921569f) * _e288)) / _e296);
-                            if _e85 {
-                                let _e610 = ((_e549 * 2f) - 1f);
-                                let _e611 = ((_e550 * 2f) - 1f);
-                                let _e612 = ((_e551 * 2f) - 1f);
-                                let _e618 = sqrt((((_e610 * _e610) + (_e611 * _e611)) + (_e612 * _e612)));
-                                if (_e618 > 0f) {
-                                    phi_2311_ = vec3<f32>((_e610 / _e618), (_e611 / _e618), (_e612 / _e618));
+                            let _e146 = phi_1912_;
+                            let _e147 = (_e91 + _e102);
+                            let _e150 = edges.member[_e147];
+                            let _e151 = (bitcast<u32>(select(_e114, _e116, (_e116 < _e114))) * _e57);
+                            let _e152 = (_e151 + _e111);
+                            let _e155 = edges.member[_e152];
+                            let _e156 = (_e151 + _e125);
+                            let _e159 = edges.member[_e156];
+                            let _e160 = (bitcast<u32>(select(_e133, _e116, (_e116 < _e133))) * _e57);
+                            let _e161 = (_e160 + _e130);
+                            let _e164 = edges.member[_e161];
+                            let _e165 = (bitcast<u32>(select(_e139, _e116, (_e116 < _e139))) * _e57);
+                            let _e166 = (_e165 + _e130);
+                            let _e169 = edges.member[_e166];
+                            let _e258 = ((f32(bitcast<i32>(((_e150 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f) * (f32(bitcast<i32>(((_e155 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f));
+                            let _e259 = ((f32(bitcast<i32>(((_e150 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f) * (f32(bitcast<i32>(((_e159 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f));
+                            let _e260 = ((f32(bitcast<i32>(((_e150 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f) * (f32(bitcast<i32>((_e164 & 3u))) * 0.33333334f));
+                            let _e261 = ((f32(bitcast<i32>((_e150 & 3u))) * 0.33333334f) * (f32(bitcast<i32>(((_e169 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f));
+                            let _e265 = (1.5f - (((_e258 + _e259) + _e260) + _e261));
+                            let _e270 = (select(0f, select(1f, _e265, (_e265 < 1f)), (_e265 > 0f)) * 0.33333334f);
+                            let _e271 = (_e258 + _e270);
+                            let _e275 = select(0f, select(1f, _e271, (_e271 < 1f)), (_e271 > 0f));
+                            let _e276 = (_e259 + _e270);
+                            let _e280 = select(0f, select(1f, _e276, (_e276 < 1f)), (_e276 > 0f));
+                            let _e281 = (_e260 + _e270);
+                            let _e285 = select(0f, select(1f, _e281, (_e281 < 1f)), (_e281 > 0f));
+                            let _e286 = (_e261 + _e270);
+                            let _e290 = select(0f, select(1f, _e286, (_e286 < 1f)), (_e286 > 0f));
+                            let _e294 = (((_e275 * (f32(bitcast<i32>(((_e155 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f)) + (_e285 * (f32(bitcast<i32>(((_e164 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f))) * 0.425f);
+                            let _e298 = (((_e285 * (f32(bitcast<i32>(((_e164 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f)) + (_e280 * (f32(bitcast<i32>(((_e159 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f))) * 0.425f);
+                            let _e302 = (((_e290 * (f32(bitcast<i32>(((_e169 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f)) + (_e275 * (f32(bitcast<i32>((_e155 & 3u))) * 0.33333334f))) * 0.425f);
+                            let _e306 = (((_e280 * (f32(bitcast<i32>((_e159 & 3u))) * 0.33333334f)) + (_e290 * (f32(bitcast<i32>(((_e169 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f))) * 0.425f);
+                            let _e314 = ((((((((_e146 + _e275) + _e280) + _e285) + _e290) + _e294) + _e298) + _e302) + _e306);
+                            let _e317 = terms_in.member[_e147];
+                            let _e341 = terms_in.member[_e152];
+                            let _e365 = terms_in.member[_e156];
+                            let _e389 = terms_in.member[_e161];
+                            let _e413 = terms_in.member[_e166];
+                            let _e438 = terms_in.member[(_e160 + _e111)];
+                            let _e463 = terms_in.member[(_e160 + _e125)];
+                            let _e488 = terms_in.member[(_e165 + _e111)];
+                            let _e513 = terms_in.member[(_e165 + _e125)];
+                            let _e603 = (((((((((((f32(bitcast<i32>((_e317 & 255u))) * 0.003921569f) * _e146) + ((f32(bitcast<i32>((_e341 & 255u))) * 0.003921569f) * _e275)) + ((f32(bitcast<i32>((_e365 & 255u))) * 0.003921569f) * _e280)) + ((f32(bitcast<i32>((_e389 & 255u))) * 0.003921569f) * _e285)) + ((f32(bitcast<i32>((_e413 & 255u))) * 0.003921569f) * _e290)) + ((f32(bitcast<i32>((_e438 & 255u))) * 0.003921569f) * _e294)) + ((f32(bitcast<i32>((_e463 & 255u))) * 0.003921569f) * _e298)) + ((f32(bitcast<i32>((_e488 & 255u))) * 0.003921569f) * _e302)) + ((f32(bitcast<i32>((_e513 & 255u))) * 0.003921569f) * _e306)) / _e314);
+                            let _e604 = (((((((((((f32(bitcast<i32>(((_e317 >> bitcast<u32>(8i)) & 255u))) * 0.003921569f) * _e146) + ((f32(bitcast<i32>(((_e341 >> bitcast<u32>(8i)) & 255u))) * 0.003921569f) * _e275)) + ((f32(bitcast<i32>(((_e365 >> bitcast<u32>(8i)) & 255u))) * 0.003921569f) * _e280)) + ((f32(bitcast<i32>(((_e389 >> bitcast<u32>(8i)) & 255u))) * 0.003921569f) * _e285)) + ((f32(bitcast<i32>(((_e413 >> bitcast<u32>(8i)) & 255u))) * 0.003921569f) * _e290)) + ((f32(bitcast<i32>(((_e438 >> bitcast<u32>(8i)) & 255u))) * 0.003921569f) * _e294)) + ((f32(bitcast<i32>(((_e463 >> bitcast<u32>(8i)) & 255u))) * 0.003921569f) * _e298)) + ((f32(bitcast<i32>(((_e488 >> bitcast<u32>(8i)) & 255u))) * 0.003921569f) * _e302)) + ((f32(bitcast<i32>(((_e513 >> bitcast<u32>(8i)) & 255u))) * 0.003921569f) * _e306)) / _e314);
+                            let _e605 = (((((((((((f32(bitcast<i32>(((_e317 >> bitcast<u32>(16i)) & 255u))) * 0.003921569f) * _e146) + ((f32(bitcast<i32>(((_e341 >> bitcast<u32>(16i)) & 255u))) * 0.003921569f) * _e275)) + ((f32(bitcast<i32>(((_e365 >> bitcast<u32>(16i)) & 255u))) * 0.003921569f) * _e280)) + ((f32(bitcast<i32>(((_e389 >> bitcast<u32>(16i)) & 255u))) * 0.003921569f) * _e285)) + ((f32(bitcast<i32>(((_e413 >> bitcast<u32>(16i)) & 255u))) * 0.003921569f) * _e290)) + ((f32(bitcast<i32>(((_e438 >> bitcast<u32>(16i)) & 255u))) * 0.003921569f) * _e294)) + ((f32(bitcast<i32>(((_e463 >> bitcast<u32>(16i)) & 255u))) * 0.003921569f) * _e298)) + ((f32(bitcast<i32>(((_e488 >> bitcast<u32>(16i)) & 255u))) * 0.003921569f) * _e302)) + ((f32(bitcast<i32>(((_e513 >> bitcast<u32>(16i)) & 255u))) * 0.003921569f) * _e306)) / _e314);
+                            let _e606 = (((((((((((f32(bitcast<i32>((_e317 >> bitcast<u32>(24i)))) * 0.003921569f) * _e146) + ((f32(bitcast<i32>((_e341 >> bitcast<u32>(24i)))) * 0.003921569f) * _e275)) + ((f32(bitcast<i32>((_e365 >> bitcast<u32>(24i)))) * 0.003921569f) * _e280)) + ((f32(bitcast<i32>((_e389 >> bitcast<u32>(24i)))) * 0.003921569f) * _e285)) + ((f32(bitcast<i32>((_e413 >> bitcast<u32>(24i)))) * 0.003921569f) * _e290)) + ((f32(bitcast<i32>((_e438 >> bitcast<u32>(24i)))) * 0.003921569f) * _e294)) + ((f32(bitcast<i32>((_e463 >> bitcast<u32>(24i)))) * 0.003921569f) * _e298)) + ((f32(bitcast<i32>((_e488 >> bitcast<u32>(24i)))) * 0.003921569f) * _e302)) + ((f32(bitcast<i32>((_e513 >> bitcast<u32>(24i)))) * 0.003921569f) * _e306)) / _e314);
+                            if _e87 {
+                                let _e660 = ((_e603 * 2f) - 1f);
+                                let _e661 = ((_e604 * 2f) - 1f);
+                                let _e662 = ((_e605 * 2f) - 1f);
+                                let _e668 = sqrt((((_e660 * _e660) + (_e661 * _e661)) + (_e662 * _e662)));
+                                if (_e668 > 0f) {
+                                    phi_2449_ = vec3<f32>((_e660 / _e668), (_e661 / _e668), (_e662 / _e668));
                                 } else {
-                                    phi_2311_ = vec3<f32>(0f, 0f, -1f);
+                                    phi_2449_ = vec3<f32>(0f, 0f, -1f);
                                 }
-                                let _e625 = phi_2311_;
-                                let _e627 = ((_e552 * 382.5f) + 0.5f);
-                                let _e632 = select(select(u32(_e627), 0u, (_e627 < 0f)), 4294967295u, (_e627 > 4294967000f));
-                                let _e636 = (f32(select(_e632, 255u, (255u < _e632))) * 0.003921569f);
-                                let _e643 = ((_e625.x * 0.5f) + 0.5f);
-                                let _e644 = ((_e625.y * 0.5f) + 0.5f);
-                                let _e645 = ((_e625.z * -0.5f) + 0.5f);
-                                let _e651 = ((select(0f, select(1f, _e643, (_e643 < 1f)), (_e643 > 0f)) * 255f) + 0.5f);
-                                let _e662 = ((select(0f, select(1f, _e644, (_e644 < 1f)), (_e644 > 0f)) * 255f) + 0.5f);
-                                let _e676 = ((select(0f, select(1f, _e645, (_e645 < 1f)), (_e645 > 0f)) * 255f) + 0.5f);
-                                let _e690 = ((select(0f, select(1f, _e636, (_e636 < 1f)), (_e636 > 0f)) * 255f) + 0.5f);
-                                phi_2361_ = type_22((((select(select(u32(_e651), 0u, (_e651 < 0f)), 4294967295u, (_e651 > 4294967000f)) | (select(select(u32(_e662), 0u, (_e662 < 0f)), 4294967295u, (_e662 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e676), 0u, (_e676 < 0f)), 4294967295u, (_e676 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e690), 0u, (_e690 < 0f)), 4294967295u, (_e690 > 4294967000f)) << bitcast<u32>(24i))), _e636, _e85);
-                                phi_2362_ = type_22();
+                                let _e675 = phi_2449_;
+                                let _e681 = (bitcast<u32>((floor(((_e606 * 382.5f) + 0.5f)) + 8388608f)) - 1258291200u);
+                                let _e686 = (f32(bitcast<i32>(select(_e681, 255u, (255u < _e681)))) * 0.003921569f);
+                                let _e693 = ((_e675.x * 0.5f) + 0.5f);
+                                let _e694 = ((_e675.y * 0.5f) + 0.5f);
+                                let _e695 = ((_e675.z * -0.5f) + 0.5f);
+                                phi_2497_ = type_22(((((bitcast<u32>((floor(((select(0f, select(1f, _e693, (_e693 < 1f)), (_e693 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) | ((bitcast<u32>((floor(((select(0f, select(1f, _e694, (_e694 < 1f)), (_e694 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(8i))) | ((bitcast<u32>((floor(((select(0f, select(1f, _e695, (_e695 < 1f)), (_e695 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(16i))) | ((bitcast<u32>((floor(((select(0f, select(1f, _e686, (_e686 < 1f)), (_e686 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(24i))), _e686, _e87);
+                                phi_2498_ = type_22();
                             } else {
-                                let _e558 = ((select(0f, select(1f, _e549, (_e549 < 1f)), (_e549 > 0f)) * 255f) + 0.5f);
-                                let _e569 = ((select(0f, select(1f, _e550, (_e550 < 1f)), (_e550 > 0f)) * 255f) + 0.5f);
-                                let _e583 = ((select(0f, select(1f, _e551, (_e551 < 1f)), (_e551 > 0f)) * 255f) + 0.5f);
-                                let _e597 = ((select(0f, select(1f, _e552, (_e552 < 1f)), (_e552 > 0f)) * 255f) + 0.5f);
-                                phi_2361_ = type_22();
-                                phi_2362_ = type_22((((select(select(u32(_e558), 0u, (_e558 < 0f)), 4294967295u, (_e558 > 4294967000f)) | (select(select(u32(_e569), 0u, (_e569 < 0f)), 4294967295u, (_e569 > 4294967000f)) << bitcast<u32>(8i))) | (select(select(u32(_e583), 0u, (_e583 < 0f)), 4294967295u, (_e583 > 4294967000f)) << bitcast<u32>(16i))) | (select(select(u32(_e597), 0u, (_e597 < 0f)), 4294967295u, (_e597 > 4294967000f)) << bitcast<u32>(24i))), 0f, _e85);
+                                phi_2497_ = type_22();
+                                phi_2498_ = type_22(((((bitcast<u32>((floor(((select(0f, select(1f, _e603, (_e603 < 1f)), (_e603 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) | ((bitcast<u32>((floor(((select(0f, select(1f, _e604, (_e604 < 1f)), (_e604 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(8i))) | ((bitcast<u32>((floor(((select(0f, select(1f, _e605, (_e605 < 1f)), (_e605 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(16i))) | ((bitcast<u32>((floor(((select(0f, select(1f, _e606, (_e606 < 1f)), (_e606 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(24i))), 0f, _e87);
                             }
-                            let _e701 = phi_2361_;
-                            let _e703 = phi_2362_;
-                            phi_2364_ = _e703;
-                            phi_2365_ = _e701;
-                            phi_2366_ = select(true, false, _e85);
+                            let _e747 = phi_2497_;
+                            let _e749 = phi_2498_;
+                            phi_2500_ = _e749;
+                            phi_2501_ = _e747;
+                            phi_2502_ = select(true, false, _e87);
                         }
-                        let _e983 = phi_2364_;
-                        let _e985 = phi_2365_;
-                        let _e987 = phi_2366_;
-                        if _e987 {
-                            phi_2370_ = _e983;
+                        let _e1058 = phi_2500_;
+                        let _e1060 = phi_2501_;
+                        let _e1062 = phi_2502_;
+                        if _e1062 {
+                            phi_2506_ = _e1058;
                         } else {
-                            phi_2370_ = _e985;
+                            phi_2506_ = _e1060;
                         }
-                        let _e989 = phi_2370_;
-                        let _e990 = (_e90 + _e96);
-                        terms_out.member[_e990] = _e989.member;
-                        if _e85 {
-                            ao.member[_e990] = _e989.member_1;
+                        let _e1064 = phi_2506_;
+                        let _e1065 = (_e92 + _e98);
+                        terms_out.member[_e1065] = _e1064.member;
+                        if _e87 {
+                            ao.member[_e1065] = _e1064.member_1;
                         }
-                        phi_841_ = (_e96 + 1u);
+                        phi_897_ = (_e98 + 1u);
                     } else {
-                        phi_841_ = u32();
+                        phi_897_ = u32();
                     }
-                    let _e999 = phi_841_;
+                    let _e1074 = phi_897_;
                     continue;
                     continuing {
-                        phi_840_ = _e999;
-                        break if !(_e99);
+                        phi_896_ = _e1074;
+                        break if !(_e101);
                     }
                 }
             }

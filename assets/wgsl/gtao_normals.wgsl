@@ -46,14 +46,14 @@ var<uniform> params: type_19;
 var<storage, read_write> normals: type_10;
 
 fn function_() {
-    var phi_658_: vec3<f32>;
-    var phi_676_: vec3<f32>;
-    var phi_694_: vec3<f32>;
-    var phi_712_: vec3<f32>;
-    var phi_880_: vec3<f32>;
-    var phi_914_: vec2<f32>;
-    var phi_930_: f32;
-    var phi_965_: f32;
+    var phi_668_: vec3<f32>;
+    var phi_686_: vec3<f32>;
+    var phi_704_: vec3<f32>;
+    var phi_722_: vec3<f32>;
+    var phi_890_: vec3<f32>;
+    var phi_924_: vec2<f32>;
+    var phi_940_: f32;
+    var phi_975_: f32;
 
     let _e30 = id_1;
     let _e35 = params.member.member.member[0u];
@@ -76,134 +76,134 @@ fn function_() {
             let _e77 = depth.member[(_e73 + _e64)];
             let _e81 = params.member.member.member_3;
             let _e85 = select(_e81, _e77, select(false, (_e77 < _e81), (_e77 > 0f)));
-            let _e98 = params.member.member.member_1[0u];
-            let _e99 = (((((f32(_e64) + 0.5f) / _e35) * 2f) - 1f) * _e98);
-            let _e100 = (_e99 * _e85);
-            let _e107 = params.member.member.member_1[1u];
-            let _e108 = (((((f32(_e72) + 0.5f) / _e45) * -2f) + 1f) * _e107);
-            let _e109 = (_e108 * _e85);
-            let _e110 = (_e57 + -1i);
-            let _e112 = select(0i, _e110, (0i < _e110));
-            let _e115 = bitcast<u32>(select(_e112, _e61, (_e61 < _e112)));
-            let _e119 = depth.member[(_e73 + _e115)];
-            let _e123 = select(_e81, _e119, select(false, (_e119 < _e81), (_e119 > 0f)));
-            let _e132 = (_e57 + 1i);
-            let _e134 = select(0i, _e132, (0i < _e132));
-            let _e137 = bitcast<u32>(select(_e134, _e61, (_e61 < _e134)));
-            let _e141 = depth.member[(_e73 + _e137)];
-            let _e145 = select(_e81, _e141, select(false, (_e141 < _e81), (_e141 > 0f)));
-            let _e154 = (_e65 + -1i);
-            let _e156 = select(0i, _e154, (0i < _e154));
-            let _e159 = bitcast<u32>(select(_e156, _e69, (_e69 < _e156)));
-            let _e164 = depth.member[((_e159 * _e40) + _e64)];
-            let _e168 = select(_e81, _e164, select(false, (_e164 < _e81), (_e164 > 0f)));
-            let _e177 = (_e65 + 1i);
-            let _e179 = select(0i, _e177, (0i < _e177));
-            let _e182 = bitcast<u32>(select(_e179, _e69, (_e69 < _e179)));
-            let _e187 = depth.member[((_e182 * _e40) + _e64)];
-            let _e191 = select(_e81, _e187, select(false, (_e187 < _e81), (_e187 > 0f)));
-            let _e200 = (_e123 - _e85);
-            let _e201 = (_e145 - _e85);
-            let _e202 = (_e168 - _e85);
-            let _e203 = (_e191 - _e85);
-            let _e205 = ((_e201 - _e200) * 0.5f);
-            let _e207 = ((_e203 - _e202) * 0.5f);
-            let _e208 = (_e85 * 0.011f);
-            let _e210 = abs(_e200);
-            let _e211 = abs((_e200 + _e205));
-            let _e217 = (1.25f - (select(_e211, _e210, ((_e210 < _e211) || (_e211 != _e211))) / _e208));
-            let _e221 = select(0f, select(1f, _e217, (_e217 < 1f)), (_e217 > 0f));
-            let _e223 = abs(_e201);
-            let _e224 = abs((_e201 - _e205));
-            let _e230 = (1.25f - (select(_e224, _e223, ((_e223 < _e224) || (_e224 != _e224))) / _e208));
-            let _e234 = select(0f, select(1f, _e230, (_e230 < 1f)), (_e230 > 0f));
-            let _e236 = abs(_e202);
-            let _e237 = abs((_e202 + _e207));
-            let _e243 = (1.25f - (select(_e237, _e236, ((_e236 < _e237) || (_e237 != _e237))) / _e208));
-            let _e247 = select(0f, select(1f, _e243, (_e243 < 1f)), (_e243 > 0f));
-            let _e249 = abs(_e203);
-            let _e250 = abs((_e203 - _e207));
-            let _e256 = (1.25f - (select(_e250, _e249, ((_e249 < _e250) || (_e250 != _e250))) / _e208));
-            let _e260 = select(0f, select(1f, _e256, (_e256 < 1f)), (_e256 > 0f));
-            let _e261 = (((((((f32(_e115) + 0.5f) / _e35) * 2f) - 1f) * _e98) * _e123) - _e100);
-            let _e262 = ((_e108 * _e123) - _e109);
-            let _e268 = sqrt((((_e261 * _e261) + (_e262 * _e262)) + (_e200 * _e200)));
-            if (_e268 > 0f) {
-                phi_658_ = vec3<f32>((_e261 / _e268), (_e262 / _e268), (_e200 / _e268));
+            let _e100 = params.member.member.member_1[0u];
+            let _e101 = (((((f32(bitcast<i32>(_e64)) + 0.5f) / _e35) * 2f) - 1f) * _e100);
+            let _e102 = (_e101 * _e85);
+            let _e109 = params.member.member.member_1[1u];
+            let _e110 = (((((f32(bitcast<i32>(_e72)) + 0.5f) / _e45) * -2f) + 1f) * _e109);
+            let _e111 = (_e110 * _e85);
+            let _e112 = (_e57 + -1i);
+            let _e114 = select(0i, _e112, (0i < _e112));
+            let _e117 = bitcast<u32>(select(_e114, _e61, (_e61 < _e114)));
+            let _e121 = depth.member[(_e73 + _e117)];
+            let _e125 = select(_e81, _e121, select(false, (_e121 < _e81), (_e121 > 0f)));
+            let _e135 = (_e57 + 1i);
+            let _e137 = select(0i, _e135, (0i < _e135));
+            let _e140 = bitcast<u32>(select(_e137, _e61, (_e61 < _e137)));
+            let _e144 = depth.member[(_e73 + _e140)];
+            let _e148 = select(_e81, _e144, select(false, (_e144 < _e81), (_e144 > 0f)));
+            let _e158 = (_e65 + -1i);
+            let _e160 = select(0i, _e158, (0i < _e158));
+            let _e163 = bitcast<u32>(select(_e160, _e69, (_e69 < _e160)));
+            let _e168 = depth.member[((_e163 * _e40) + _e64)];
+            let _e172 = select(_e81, _e168, select(false, (_e168 < _e81), (_e168 > 0f)));
+            let _e182 = (_e65 + 1i);
+            let _e184 = select(0i, _e182, (0i < _e182));
+            let _e187 = bitcast<u32>(select(_e184, _e69, (_e69 < _e184)));
+            let _e192 = depth.member[((_e187 * _e40) + _e64)];
+            let _e196 = select(_e81, _e192, select(false, (_e192 < _e81), (_e192 > 0f)));
+            let _e206 = (_e125 - _e85);
+            let _e207 = (_e148 - _e85);
+            let _e208 = (_e172 - _e85);
+            let _e209 = (_e196 - _e85);
+            let _e211 = ((_e207 - _e206) * 0.5f);
+            let _e213 = ((_e209 - _e208) * 0.5f);
+            let _e214 = (_e85 * 0.011f);
+            let _e216 = abs(_e206);
+            let _e217 = abs((_e206 + _e211));
+            let _e223 = (1.25f - (select(_e217, _e216, ((_e216 < _e217) || (_e217 != _e217))) / _e214));
+            let _e227 = select(0f, select(1f, _e223, (_e223 < 1f)), (_e223 > 0f));
+            let _e229 = abs(_e207);
+            let _e230 = abs((_e207 - _e211));
+            let _e236 = (1.25f - (select(_e230, _e229, ((_e229 < _e230) || (_e230 != _e230))) / _e214));
+            let _e240 = select(0f, select(1f, _e236, (_e236 < 1f)), (_e236 > 0f));
+            let _e242 = abs(_e208);
+            let _e243 = abs((_e208 + _e213));
+            let _e249 = (1.25f - (select(_e243, _e242, ((_e242 < _e243) || (_e243 != _e243))) / _e214));
+            let _e253 = select(0f, select(1f, _e249, (_e249 < 1f)), (_e249 > 0f));
+            let _e255 = abs(_e209);
+            let _e256 = abs((_e209 - _e213));
+            let _e262 = (1.25f - (select(_e256, _e255, ((_e255 < _e256) || (_e256 != _e256))) / _e214));
+            let _e266 = select(0f, select(1f, _e262, (_e262 < 1f)), (_e262 > 0f));
+            let _e267 = (((((((f32(bitcast<i32>(_e117)) + 0.5f) / _e35) * 2f) - 1f) * _e100) * _e125) - _e102);
+            let _e268 = ((_e110 * _e125) - _e111);
+            let _e274 = sqrt((((_e267 * _e267) + (_e268 * _e268)) + (_e206 * _e206)));
+            if (_e274 > 0f) {
+                phi_668_ = vec3<f32>((_e267 / _e274), (_e268 / _e274), (_e206 / _e274));
             } else {
-                phi_658_ = vec3<f32>(0f, 0f, 0f);
+                phi_668_ = vec3<f32>(0f, 0f, 0f);
             }
-            let _e275 = phi_658_;
-            let _e276 = (((((((f32(_e137) + 0.5f) / _e35) * 2f) - 1f) * _e98) * _e145) - _e100);
-            let _e277 = ((_e108 * _e145) - _e109);
-            let _e283 = sqrt((((_e276 * _e276) + (_e277 * _e277)) + (_e201 * _e201)));
-            if (_e283 > 0f) {
-                phi_676_ = vec3<f32>((_e276 / _e283), (_e277 / _e283), (_e201 / _e283));
+            let _e281 = phi_668_;
+            let _e282 = (((((((f32(bitcast<i32>(_e140)) + 0.5f) / _e35) * 2f) - 1f) * _e100) * _e148) - _e102);
+            let _e283 = ((_e110 * _e148) - _e111);
+            let _e289 = sqrt((((_e282 * _e282) + (_e283 * _e283)) + (_e207 * _e207)));
+            if (_e289 > 0f) {
+                phi_686_ = vec3<f32>((_e282 / _e289), (_e283 / _e289), (_e207 / _e289));
             } else {
-                phi_676_ = vec3<f32>(0f, 0f, 0f);
+                phi_686_ = vec3<f32>(0f, 0f, 0f);
             }
-            let _e290 = phi_676_;
-            let _e291 = ((_e99 * _e168) - _e100);
-            let _e292 = (((((((f32(_e159) + 0.5f) / _e45) * -2f) + 1f) * _e107) * _e168) - _e109);
-            let _e298 = sqrt((((_e291 * _e291) + (_e292 * _e292)) + (_e202 * _e202)));
-            if (_e298 > 0f) {
-                phi_694_ = vec3<f32>((_e291 / _e298), (_e292 / _e298), (_e202 / _e298));
+            let _e296 = phi_686_;
+            let _e297 = ((_e101 * _e172) - _e102);
+            let _e298 = (((((((f32(bitcast<i32>(_e163)) + 0.5f) / _e45) * -2f) + 1f) * _e109) * _e172) - _e111);
+            let _e304 = sqrt((((_e297 * _e297) + (_e298 * _e298)) + (_e208 * _e208)));
+            if (_e304 > 0f) {
+                phi_704_ = vec3<f32>((_e297 / _e304), (_e298 / _e304), (_e208 / _e304));
             } else {
-                phi_694_ = vec3<f32>(0f, 0f, 0f);
+                phi_704_ = vec3<f32>(0f, 0f, 0f);
             }
-            let _e305 = phi_694_;
-            let _e306 = ((_e99 * _e191) - _e100);
-            let _e307 = (((((((f32(_e182) + 0.5f) / _e45) * -2f) + 1f) * _e107) * _e191) - _e109);
-            let _e313 = sqrt((((_e306 * _e306) + (_e307 * _e307)) + (_e203 * _e203)));
-            if (_e313 > 0f) {
-                phi_712_ = vec3<f32>((_e306 / _e313), (_e307 / _e313), (_e203 / _e313));
+            let _e311 = phi_704_;
+            let _e312 = ((_e101 * _e196) - _e102);
+            let _e313 = (((((((f32(bitcast<i32>(_e187)) + 0.5f) / _e45) * -2f) + 1f) * _e109) * _e196) - _e111);
+            let _e319 = sqrt((((_e312 * _e312) + (_e313 * _e313)) + (_e209 * _e209)));
+            if (_e319 > 0f) {
+                phi_722_ = vec3<f32>((_e312 / _e319), (_e313 / _e319), (_e209 / _e319));
             } else {
-                phi_712_ = vec3<f32>(0f, 0f, 0f);
+                phi_722_ = vec3<f32>(0f, 0f, 0f);
             }
-            let _e320 = phi_712_;
-            let _e337 = ((_e221 * _e247) + 0.01f);
-            let _e341 = select(0f, select(1f, _e337, (_e337 < 1f)), (_e337 > 0f));
-            let _e358 = ((_e247 * _e234) + 0.01f);
-            let _e362 = select(0f, select(1f, _e358, (_e358 < 1f)), (_e358 > 0f));
-            let _e382 = ((_e234 * _e260) + 0.01f);
-            let _e386 = select(0f, select(1f, _e382, (_e382 < 1f)), (_e382 > 0f));
-            let _e403 = ((_e260 * _e221) + 0.01f);
-            let _e407 = select(0f, select(1f, _e403, (_e403 < 1f)), (_e403 > 0f));
-            let _e411 = ((((((_e275.y * _e305.z) - (_e305.y * _e275.z)) * _e341) + (((_e305.y * _e290.z) - (_e290.y * _e305.z)) * _e362)) + (((_e290.y * _e320.z) - (_e320.y * _e290.z)) * _e386)) + (((_e320.y * _e275.z) - (_e275.y * _e320.z)) * _e407));
-            let _e412 = ((((((_e275.z * _e305.x) - (_e305.z * _e275.x)) * _e341) + (((_e305.z * _e290.x) - (_e290.z * _e305.x)) * _e362)) + (((_e290.z * _e320.x) - (_e320.z * _e290.x)) * _e386)) + (((_e320.z * _e275.x) - (_e275.z * _e320.x)) * _e407));
-            let _e413 = ((((((_e275.x * _e305.y) - (_e305.x * _e275.y)) * _e341) + (((_e305.x * _e290.y) - (_e290.x * _e305.y)) * _e362)) + (((_e290.x * _e320.y) - (_e320.x * _e290.y)) * _e386)) + (((_e320.x * _e275.y) - (_e275.x * _e320.y)) * _e407));
-            let _e419 = sqrt((((_e411 * _e411) + (_e412 * _e412)) + (_e413 * _e413)));
-            if (_e419 > 0f) {
-                phi_880_ = vec3<f32>((_e411 / _e419), (_e412 / _e419), (_e413 / _e419));
+            let _e326 = phi_722_;
+            let _e343 = ((_e227 * _e253) + 0.01f);
+            let _e347 = select(0f, select(1f, _e343, (_e343 < 1f)), (_e343 > 0f));
+            let _e364 = ((_e253 * _e240) + 0.01f);
+            let _e368 = select(0f, select(1f, _e364, (_e364 < 1f)), (_e364 > 0f));
+            let _e388 = ((_e240 * _e266) + 0.01f);
+            let _e392 = select(0f, select(1f, _e388, (_e388 < 1f)), (_e388 > 0f));
+            let _e409 = ((_e266 * _e227) + 0.01f);
+            let _e413 = select(0f, select(1f, _e409, (_e409 < 1f)), (_e409 > 0f));
+            let _e417 = ((((((_e281.y * _e311.z) - (_e311.y * _e281.z)) * _e347) + (((_e311.y * _e296.z) - (_e296.y * _e311.z)) * _e368)) + (((_e296.y * _e326.z) - (_e326.y * _e296.z)) * _e392)) + (((_e326.y * _e281.z) - (_e281.y * _e326.z)) * _e413));
+            let _e418 = ((((((_e281.z * _e311.x) - (_e311.z * _e281.x)) * _e347) + (((_e311.z * _e296.x) - (_e296.z * _e311.x)) * _e368)) + (((_e296.z * _e326.x) - (_e326.z * _e296.x)) * _e392)) + (((_e326.z * _e281.x) - (_e281.z * _e326.x)) * _e413));
+            let _e419 = ((((((_e281.x * _e311.y) - (_e311.x * _e281.y)) * _e347) + (((_e311.x * _e296.y) - (_e296.x * _e311.y)) * _e368)) + (((_e296.x * _e326.y) - (_e326.x * _e296.y)) * _e392)) + (((_e326.x * _e281.y) - (_e281.x * _e326.y)) * _e413));
+            let _e425 = sqrt((((_e417 * _e417) + (_e418 * _e418)) + (_e419 * _e419)));
+            if (_e425 > 0f) {
+                phi_890_ = vec3<f32>((_e417 / _e425), (_e418 / _e425), (_e419 / _e425));
             } else {
-                phi_880_ = vec3<f32>(0f, 0f, 0f);
+                phi_890_ = vec3<f32>(0f, 0f, 0f);
             }
-            let _e426 = phi_880_;
-            let _e430 = -(_e426.z);
-            let _e435 = ((abs(_e426.x) + abs(_e426.y)) + abs(_e430));
-            let _e436 = (_e426.x / _e435);
-            let _e437 = (_e426.y / _e435);
-            if (_e430 < 0f) {
-                phi_914_ = vec2<f32>(((1f - abs(_e437)) * select(1f, -1f, (_e436 < 0f))), ((1f - abs(_e436)) * select(1f, -1f, (_e437 < 0f))));
+            let _e432 = phi_890_;
+            let _e436 = -(_e432.z);
+            let _e441 = ((abs(_e432.x) + abs(_e432.y)) + abs(_e436));
+            let _e442 = (_e432.x / _e441);
+            let _e443 = (_e432.y / _e441);
+            if (_e436 < 0f) {
+                phi_924_ = vec2<f32>(((1f - abs(_e443)) * select(1f, -1f, (_e442 < 0f))), ((1f - abs(_e442)) * select(1f, -1f, (_e443 < 0f))));
             } else {
-                phi_914_ = vec2<f32>(_e436, _e437);
+                phi_924_ = vec2<f32>(_e442, _e443);
             }
-            let _e452 = phi_914_;
-            if (_e452.x != _e452.x) {
-                phi_930_ = 0f;
+            let _e458 = phi_924_;
+            if (_e458.x != _e458.x) {
+                phi_940_ = 0f;
             } else {
-                phi_930_ = select(-1f, select(1f, _e452.x, (_e452.x < 1f)), (_e452.x > -1f));
+                phi_940_ = select(-1f, select(1f, _e458.x, (_e458.x < 1f)), (_e458.x > -1f));
             }
-            let _e460 = phi_930_;
-            let _e465 = ((_e460 * 127f) + (0.5f * select(1f, -1f, (_e460 < 0f))));
-            if (_e452.y != _e452.y) {
-                phi_965_ = 0f;
+            let _e466 = phi_940_;
+            let _e471 = ((_e466 * 127f) + (0.5f * select(1f, -1f, (_e466 < 0f))));
+            if (_e458.y != _e458.y) {
+                phi_975_ = 0f;
             } else {
-                phi_965_ = select(-1f, select(1f, _e452.y, (_e452.y < 1f)), (_e452.y > -1f));
+                phi_975_ = select(-1f, select(1f, _e458.y, (_e458.y < 1f)), (_e458.y > -1f));
             }
-            let _e482 = phi_965_;
-            let _e487 = ((_e482 * 127f) + (0.5f * select(1f, -1f, (_e482 < 0f))));
-            normals.member[((_e30.y * _e40) + _e30.x)] = ((bitcast<u32>(select(0i, select(select(i32(_e465), i32(-2147483648), (_e465 < -2147483600f)), 2147483647i, (_e465 > 2147483500f)), (_e465 == _e465))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e487), i32(-2147483648), (_e487 < -2147483600f)), 2147483647i, (_e487 > 2147483500f)), (_e487 == _e487))) & 255u) << bitcast<u32>(8i)));
+            let _e488 = phi_975_;
+            let _e493 = ((_e488 * 127f) + (0.5f * select(1f, -1f, (_e488 < 0f))));
+            normals.member[((_e30.y * _e40) + _e30.x)] = ((bitcast<u32>(select(0i, select(select(i32(_e471), i32(-2147483648), (_e471 < -2147483600f)), 2147483647i, (_e471 > 2147483500f)), (_e471 == _e471))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e493), i32(-2147483648), (_e493 < -2147483600f)), 2147483647i, (_e493 > 2147483500f)), (_e493 == _e493))) & 255u) << bitcast<u32>(8i)));
         }
     }
     return;

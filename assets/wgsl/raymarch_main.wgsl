@@ -77,39 +77,39 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_1902_: bool;
-    var phi_1917_: bool;
-    var phi_777_: vec2<f32>;
-    var phi_808_: vec3<f32>;
-    var phi_1012_: type_28;
-    var phi_1047_: u32;
-    var phi_1050_: f32;
-    var phi_1202_: u32;
-    var phi_1205_: f32;
-    var phi_1207_: bool;
-    var phi_1209_: bool;
-    var phi_1211_: f32;
-    var phi_1213_: f32;
-    var phi_2000_: bool;
-    var phi_2015_: bool;
-    var phi_1976_: vec2<f32>;
-    var phi_1573_: u32;
-    var phi_1575_: u32;
-    var phi_1576_: f32;
-    var phi_1577_: bool;
-    var phi_1578_: bool;
-    var phi_1579_: f32;
-    var phi_1582_: bool;
-    var phi_1583_: bool;
-    var phi_1203_: u32;
-    var phi_1206_: f32;
-    var phi_1208_: bool;
-    var phi_1210_: bool;
-    var phi_1212_: f32;
-    var phi_1214_: f32;
-    var phi_1587_: bool;
-    var phi_1589_: bool;
-    var phi_1590_: bool;
+    var phi_1874_: bool;
+    var phi_1889_: bool;
+    var phi_772_: vec2<f32>;
+    var phi_803_: vec3<f32>;
+    var phi_1008_: type_28;
+    var phi_1043_: u32;
+    var phi_1046_: f32;
+    var phi_1198_: u32;
+    var phi_1201_: f32;
+    var phi_1203_: bool;
+    var phi_1205_: bool;
+    var phi_1207_: f32;
+    var phi_1209_: f32;
+    var phi_1972_: bool;
+    var phi_1987_: bool;
+    var phi_1948_: vec2<f32>;
+    var phi_1587_: u32;
+    var phi_1589_: u32;
+    var phi_1590_: f32;
+    var phi_1591_: bool;
+    var phi_1592_: bool;
+    var phi_1593_: f32;
+    var phi_1596_: bool;
+    var phi_1597_: bool;
+    var phi_1199_: u32;
+    var phi_1202_: f32;
+    var phi_1204_: bool;
+    var phi_1206_: bool;
+    var phi_1208_: f32;
+    var phi_1210_: f32;
+    var phi_1601_: bool;
+    var phi_1603_: bool;
+    var phi_1604_: bool;
     var local: bool;
     var local_1: bool;
     var local_2: bool;
@@ -120,446 +120,437 @@ fn function_() {
     var local_7: bool;
     var local_8: f32;
     var local_9: bool;
-    var phi_1630_: f32;
-    var phi_1048_: u32;
-    var phi_1051_: f32;
-    var phi_2029_: bool;
+    var phi_1644_: f32;
+    var phi_1044_: u32;
+    var phi_1047_: f32;
+    var phi_2001_: bool;
     var local_10: f32;
-    var phi_1701_: type_29;
+    var phi_1709_: type_29;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e60 = id_1;
-            let _e62 = arrayLength((&kernel.member));
-            let _e73 = params.member.member.member[0u];
-            let _e78 = select(select(u32(_e73), 0u, (_e73 < 0f)), 4294967295u, (_e73 > 4294967000f));
-            let _e83 = params.member.member.member[1u];
-            let _e88 = select(select(u32(_e83), 0u, (_e83 < 0f)), 4294967295u, (_e83 > 4294967000f));
-            if (_e60.x >= _e78) {
+            let _e62 = id_1;
+            let _e64 = arrayLength((&kernel.member));
+            let _e75 = params.member.member.member[0u];
+            let _e80 = select(select(u32(_e75), 0u, (_e75 < 0f)), 4294967295u, (_e75 > 4294967000f));
+            let _e85 = params.member.member.member[1u];
+            let _e90 = select(select(u32(_e85), 0u, (_e85 < 0f)), 4294967295u, (_e85 > 4294967000f));
+            if (_e62.x >= _e80) {
             } else {
-                if (_e60.y >= _e88) {
+                if (_e62.y >= _e90) {
                 } else {
-                    let _e94 = ((_e60.y * _e78) + _e60.x);
-                    let _e97 = depth.member[_e94];
-                    let _e101 = params.member.member.member_3;
-                    let _e104 = select(false, (_e97 < _e101), (_e97 > 0f));
-                    let _e105 = select(_e101, _e97, _e104);
-                    let _e106 = bitcast<i32>(_e60.x);
-                    let _e107 = (_e106 + -1i);
-                    let _e109 = select(0i, _e107, (0i < _e107));
-                    let _e111 = (bitcast<i32>(_e78) - 1i);
-                    let _e115 = bitcast<i32>(_e60.y);
-                    let _e117 = select(0i, _e115, (0i < _e115));
-                    let _e119 = (bitcast<i32>(_e88) - 1i);
-                    let _e123 = (bitcast<u32>(select(_e117, _e119, (_e119 < _e117))) * _e78);
-                    let _e127 = depth.member[(_e123 + bitcast<u32>(select(_e109, _e111, (_e111 < _e109))))];
-                    let _e132 = (_e106 + 1i);
-                    let _e134 = select(0i, _e132, (0i < _e132));
-                    let _e141 = depth.member[(_e123 + bitcast<u32>(select(_e134, _e111, (_e111 < _e134))))];
-                    let _e147 = select(0i, _e106, (0i < _e106));
-                    let _e150 = bitcast<u32>(select(_e147, _e111, (_e111 < _e147)));
-                    let _e151 = (_e115 + -1i);
-                    let _e153 = select(0i, _e151, (0i < _e151));
-                    let _e161 = depth.member[((bitcast<u32>(select(_e153, _e119, (_e119 < _e153))) * _e78) + _e150)];
-                    let _e166 = (_e115 + 1i);
-                    let _e168 = select(0i, _e166, (0i < _e166));
-                    let _e176 = depth.member[((bitcast<u32>(select(_e168, _e119, (_e119 < _e168))) * _e78) + _e150)];
-                    let _e181 = (select(_e101, _e127, select(false, (_e127 < _e101), (_e127 > 0f))) - _e105);
-                    let _e182 = (select(_e101, _e141, select(false, (_e141 < _e101), (_e141 > 0f))) - _e105);
-                    let _e183 = (select(_e101, _e161, select(false, (_e161 < _e101), (_e161 > 0f))) - _e105);
-                    let _e184 = (select(_e101, _e176, select(false, (_e176 < _e101), (_e176 > 0f))) - _e105);
-                    let _e186 = ((_e182 - _e181) * 0.5f);
+                    let _e96 = ((_e62.y * _e80) + _e62.x);
+                    let _e99 = depth.member[_e96];
+                    let _e103 = params.member.member.member_3;
+                    let _e106 = select(false, (_e99 < _e103), (_e99 > 0f));
+                    let _e107 = select(_e103, _e99, _e106);
+                    let _e108 = bitcast<i32>(_e62.x);
+                    let _e109 = (_e108 + -1i);
+                    let _e111 = select(0i, _e109, (0i < _e109));
+                    let _e113 = (bitcast<i32>(_e80) - 1i);
+                    let _e117 = bitcast<i32>(_e62.y);
+                    let _e119 = select(0i, _e117, (0i < _e117));
+                    let _e121 = (bitcast<i32>(_e90) - 1i);
+                    let _e125 = (bitcast<u32>(select(_e119, _e121, (_e121 < _e119))) * _e80);
+                    let _e129 = depth.member[(_e125 + bitcast<u32>(select(_e111, _e113, (_e113 < _e111))))];
+                    let _e134 = (_e108 + 1i);
+                    let _e136 = select(0i, _e134, (0i < _e134));
+                    let _e143 = depth.member[(_e125 + bitcast<u32>(select(_e136, _e113, (_e113 < _e136))))];
+                    let _e149 = select(0i, _e108, (0i < _e108));
+                    let _e152 = bitcast<u32>(select(_e149, _e113, (_e113 < _e149)));
+                    let _e153 = (_e117 + -1i);
+                    let _e155 = select(0i, _e153, (0i < _e153));
+                    let _e163 = depth.member[((bitcast<u32>(select(_e155, _e121, (_e121 < _e155))) * _e80) + _e152)];
+                    let _e168 = (_e117 + 1i);
+                    let _e170 = select(0i, _e168, (0i < _e168));
+                    let _e178 = depth.member[((bitcast<u32>(select(_e170, _e121, (_e121 < _e170))) * _e80) + _e152)];
+                    let _e183 = (select(_e103, _e129, select(false, (_e129 < _e103), (_e129 > 0f))) - _e107);
+                    let _e184 = (select(_e103, _e143, select(false, (_e143 < _e103), (_e143 > 0f))) - _e107);
+                    let _e185 = (select(_e103, _e163, select(false, (_e163 < _e103), (_e163 > 0f))) - _e107);
+                    let _e186 = (select(_e103, _e178, select(false, (_e178 < _e103), (_e178 > 0f))) - _e107);
                     let _e188 = ((_e184 - _e183) * 0.5f);
-                    let _e189 = (_e105 * 0.011f);
-                    let _e191 = abs(_e181);
-                    let _e192 = abs((_e181 + _e186));
-                    let _e198 = (1.25f - (select(_e192, _e191, ((_e191 < _e192) || (_e192 != _e192))) / _e189));
-                    let _e202 = select(0f, select(1f, _e198, (_e198 < 1f)), (_e198 > 0f));
-                    let _e204 = abs(_e182);
-                    let _e205 = abs((_e182 - _e186));
-                    let _e211 = (1.25f - (select(_e205, _e204, ((_e204 < _e205) || (_e205 != _e205))) / _e189));
-                    let _e215 = select(0f, select(1f, _e211, (_e211 < 1f)), (_e211 > 0f));
-                    let _e217 = abs(_e183);
-                    let _e218 = abs((_e183 + _e188));
-                    let _e224 = (1.25f - (select(_e218, _e217, ((_e217 < _e218) || (_e218 != _e218))) / _e189));
-                    let _e228 = select(0f, select(1f, _e224, (_e224 < 1f)), (_e224 > 0f));
-                    let _e230 = abs(_e184);
-                    let _e231 = abs((_e184 - _e188));
-                    let _e237 = (1.25f - (select(_e231, _e230, ((_e230 < _e231) || (_e231 != _e231))) / _e189));
-                    let _e241 = select(0f, select(1f, _e237, (_e237 < 1f)), (_e237 > 0f));
-                    let _e246 = (select(0f, select(1f, _e202, (_e202 < 1f)), (_e202 > 0f)) * 2.9f);
-                    let _e248 = floor((_e246 + 0.5f));
-                    let _e257 = select(_e248, (_e248 - 1f), (((_e248 - _e246) == 0.5f) && ((floor((_e248 * 0.5f)) * 2f) != _e248)));
-                    let _e259 = select(0f, _e257, (_e257 > 0f));
-                    let _e268 = (select(0f, select(1f, _e215, (_e215 < 1f)), (_e215 > 0f)) * 2.9f);
-                    let _e270 = floor((_e268 + 0.5f));
-                    let _e279 = select(_e270, (_e270 - 1f), (((_e270 - _e268) == 0.5f) && ((floor((_e270 * 0.5f)) * 2f) != _e270)));
-                    let _e281 = select(0f, _e279, (_e279 > 0f));
-                    let _e291 = (select(0f, select(1f, _e228, (_e228 < 1f)), (_e228 > 0f)) * 2.9f);
-                    let _e293 = floor((_e291 + 0.5f));
-                    let _e302 = select(_e293, (_e293 - 1f), (((_e293 - _e291) == 0.5f) && ((floor((_e293 * 0.5f)) * 2f) != _e293)));
-                    let _e304 = select(0f, _e302, (_e302 > 0f));
-                    let _e314 = (select(0f, select(1f, _e241, (_e241 < 1f)), (_e241 > 0f)) * 2.9f);
-                    let _e316 = floor((_e314 + 0.5f));
-                    let _e325 = select(_e316, (_e316 - 1f), (((_e316 - _e314) == 0.5f) && ((floor((_e316 * 0.5f)) * 2f) != _e316)));
-                    let _e327 = select(0f, _e325, (_e325 > 0f));
-                    let _e331 = ((((64u * u32(select(3f, _e259, (_e259 < 3f)))) + (16u * u32(select(3f, _e281, (_e281 < 3f))))) + (4u * u32(select(3f, _e304, (_e304 < 3f))))) + u32(select(3f, _e327, (_e327 < 3f))));
-                    if _e104 {
-                        let _e344 = params.member.member.member_1[0u];
-                        let _e346 = ((((((f32(_e60.x) + 0.5f) / _e73) * 2f) - 1f) * _e344) * _e97);
-                        let _e353 = params.member.member.member_1[1u];
-                        let _e355 = ((((((f32(_e60.y) + 0.5f) / _e83) * -2f) + 1f) * _e353) * _e97);
-                        let _e359 = normals.member[_e94];
-                        let _e367 = (f32((bitcast<i32>(((_e359 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e367 != _e367) {
-                            phi_1902_ = true;
+                    let _e190 = ((_e186 - _e185) * 0.5f);
+                    let _e191 = (_e107 * 0.011f);
+                    let _e193 = abs(_e183);
+                    let _e194 = abs((_e183 + _e188));
+                    let _e200 = (1.25f - (select(_e194, _e193, ((_e193 < _e194) || (_e194 != _e194))) / _e191));
+                    let _e204 = select(0f, select(1f, _e200, (_e200 < 1f)), (_e200 > 0f));
+                    let _e206 = abs(_e184);
+                    let _e207 = abs((_e184 - _e188));
+                    let _e213 = (1.25f - (select(_e207, _e206, ((_e206 < _e207) || (_e207 != _e207))) / _e191));
+                    let _e217 = select(0f, select(1f, _e213, (_e213 < 1f)), (_e213 > 0f));
+                    let _e219 = abs(_e185);
+                    let _e220 = abs((_e185 + _e190));
+                    let _e226 = (1.25f - (select(_e220, _e219, ((_e219 < _e220) || (_e220 != _e220))) / _e191));
+                    let _e230 = select(0f, select(1f, _e226, (_e226 < 1f)), (_e226 > 0f));
+                    let _e232 = abs(_e186);
+                    let _e233 = abs((_e186 - _e190));
+                    let _e239 = (1.25f - (select(_e233, _e232, ((_e232 < _e233) || (_e233 != _e233))) / _e191));
+                    let _e243 = select(0f, select(1f, _e239, (_e239 < 1f)), (_e239 > 0f));
+                    let _e249 = round((select(0f, select(1f, _e204, (_e204 < 1f)), (_e204 > 0f)) * 2.9f));
+                    let _e251 = select(0f, _e249, (_e249 > 0f));
+                    let _e264 = round((select(0f, select(1f, _e217, (_e217 < 1f)), (_e217 > 0f)) * 2.9f));
+                    let _e266 = select(0f, _e264, (_e264 > 0f));
+                    let _e280 = round((select(0f, select(1f, _e230, (_e230 < 1f)), (_e230 > 0f)) * 2.9f));
+                    let _e282 = select(0f, _e280, (_e280 > 0f));
+                    let _e296 = round((select(0f, select(1f, _e243, (_e243 < 1f)), (_e243 > 0f)) * 2.9f));
+                    let _e298 = select(0f, _e296, (_e296 > 0f));
+                    let _e305 = ((((64u * (bitcast<u32>((floor(select(3f, _e251, (_e251 < 3f))) + 8388608f)) - 1258291200u)) + (16u * (bitcast<u32>((floor(select(3f, _e266, (_e266 < 3f))) + 8388608f)) - 1258291200u))) + (4u * (bitcast<u32>((floor(select(3f, _e282, (_e282 < 3f))) + 8388608f)) - 1258291200u))) + (bitcast<u32>((floor(select(3f, _e298, (_e298 < 3f))) + 8388608f)) - 1258291200u));
+                    if _e106 {
+                        let _e318 = params.member.member.member_1[0u];
+                        let _e320 = ((((((f32(_e108) + 0.5f) / _e75) * 2f) - 1f) * _e318) * _e99);
+                        let _e327 = params.member.member.member_1[1u];
+                        let _e329 = ((((((f32(_e117) + 0.5f) / _e85) * -2f) + 1f) * _e327) * _e99);
+                        let _e333 = normals.member[_e96];
+                        let _e341 = (f32((bitcast<i32>(((_e333 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e341 != _e341) {
+                            phi_1874_ = true;
                         } else {
-                            phi_1902_ = (-1f >= _e367);
+                            phi_1874_ = (-1f >= _e341);
                         }
-                        let _e371 = phi_1902_;
-                        let _e372 = select(_e367, -1f, _e371);
-                        let _e382 = (f32((bitcast<i32>((((_e359 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e382 != _e382) {
-                            phi_1917_ = true;
+                        let _e345 = phi_1874_;
+                        let _e346 = select(_e341, -1f, _e345);
+                        let _e356 = (f32((bitcast<i32>((((_e333 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                        if (_e356 != _e356) {
+                            phi_1889_ = true;
                         } else {
-                            phi_1917_ = (-1f >= _e382);
+                            phi_1889_ = (-1f >= _e356);
                         }
-                        let _e386 = phi_1917_;
-                        let _e387 = select(_e382, -1f, _e386);
-                        let _e390 = (1f - abs(_e372));
-                        let _e391 = abs(_e387);
-                        let _e392 = (_e390 - _e391);
-                        if (_e392 < 0f) {
-                            phi_777_ = vec2<f32>(((1f - _e391) * select(1f, -1f, (_e372 < 0f))), (_e390 * select(1f, -1f, (_e387 < 0f))));
+                        let _e360 = phi_1889_;
+                        let _e361 = select(_e356, -1f, _e360);
+                        let _e364 = (1f - abs(_e346));
+                        let _e365 = abs(_e361);
+                        let _e366 = (_e364 - _e365);
+                        if (_e366 < 0f) {
+                            phi_772_ = vec2<f32>(((1f - _e365) * select(1f, -1f, (_e346 < 0f))), (_e364 * select(1f, -1f, (_e361 < 0f))));
                         } else {
-                            phi_777_ = vec2<f32>(_e372, _e387);
+                            phi_772_ = vec2<f32>(_e346, _e361);
                         }
-                        let _e403 = phi_777_;
-                        let _e412 = (1f / sqrt((((_e403.x * _e403.x) + (_e403.y * _e403.y)) + (_e392 * _e392))));
-                        let _e413 = (_e403.x * _e412);
-                        let _e414 = (_e403.y * _e412);
-                        let _e415 = (_e392 * _e412);
-                        let _e416 = -(_e415);
-                        if ((((_e413 * -(_e346)) + (_e414 * -(_e355))) + (_e416 * -(_e97))) < 0f) {
-                            phi_808_ = vec3<f32>(-(_e413), -(_e414), _e415);
+                        let _e377 = phi_772_;
+                        let _e386 = (1f / sqrt((((_e377.x * _e377.x) + (_e377.y * _e377.y)) + (_e366 * _e366))));
+                        let _e387 = (_e377.x * _e386);
+                        let _e388 = (_e377.y * _e386);
+                        let _e389 = (_e366 * _e386);
+                        let _e390 = -(_e389);
+                        if ((((_e387 * -(_e320)) + (_e388 * -(_e329))) + (_e390 * -(_e99))) < 0f) {
+                            phi_803_ = vec3<f32>(-(_e387), -(_e388), _e389);
                         } else {
-                            phi_808_ = vec3<f32>(_e413, _e414, _e416);
+                            phi_803_ = vec3<f32>(_e387, _e388, _e390);
                         }
-                        let _e431 = phi_808_;
-                        let _e434 = params.member.member_8;
-                        let _e435 = (_e60.x & 63u);
-                        let _e436 = (_e60.y & 63u);
-                        let _e439 = select(0u, 1u, ((_e435 & 32u) != 0u));
-                        let _e442 = select(0u, 1u, ((_e436 & 32u) != 0u));
-                        let _e446 = (_e442 == 0u);
-                        let _e448 = (_e446 && (_e439 == 1u));
-                        let _e451 = select(_e435, (63u - _e435), _e448);
-                        let _e452 = select(_e436, (63u - _e436), _e448);
-                        let _e453 = select(_e451, _e452, _e446);
-                        let _e454 = select(_e452, _e451, _e446);
-                        let _e457 = select(0u, 1u, ((_e453 & 16u) != 0u));
-                        let _e460 = select(0u, 1u, ((_e454 & 16u) != 0u));
-                        let _e465 = (_e460 == 0u);
-                        let _e467 = (_e465 && (_e457 == 1u));
-                        let _e470 = select(_e453, (63u - _e453), _e467);
-                        let _e471 = select(_e454, (63u - _e454), _e467);
-                        let _e472 = select(_e470, _e471, _e465);
-                        let _e473 = select(_e471, _e470, _e465);
-                        let _e476 = select(0u, 1u, ((_e472 & 8u) != 0u));
-                        let _e479 = select(0u, 1u, ((_e473 & 8u) != 0u));
-                        let _e484 = (_e479 == 0u);
-                        let _e486 = (_e484 && (_e476 == 1u));
-                        let _e489 = select(_e472, (63u - _e472), _e486);
-                        let _e490 = select(_e473, (63u - _e473), _e486);
-                        let _e491 = select(_e489, _e490, _e484);
-                        let _e492 = select(_e490, _e489, _e484);
-                        let _e495 = select(0u, 1u, ((_e491 & 4u) != 0u));
-                        let _e498 = select(0u, 1u, ((_e492 & 4u) != 0u));
-                        let _e503 = (_e498 == 0u);
-                        let _e505 = (_e503 && (_e495 == 1u));
-                        let _e508 = select(_e491, (63u - _e491), _e505);
-                        let _e509 = select(_e492, (63u - _e492), _e505);
-                        let _e510 = select(_e508, _e509, _e503);
-                        let _e511 = select(_e509, _e508, _e503);
-                        let _e514 = select(0u, 1u, ((_e510 & 2u) != 0u));
-                        let _e517 = select(0u, 1u, ((_e511 & 2u) != 0u));
-                        let _e522 = (_e517 == 0u);
-                        let _e524 = (_e522 && (_e514 == 1u));
-                        let _e527 = select(_e510, (63u - _e510), _e524);
-                        let _e528 = select(_e511, (63u - _e511), _e524);
-                        let _e543 = f32((((((((1024u * ((3u * _e439) ^ _e442)) + (256u * ((3u * _e457) ^ _e460))) + (64u * ((3u * _e476) ^ _e479))) + (16u * ((3u * _e495) ^ _e498))) + (4u * ((3u * _e514) ^ _e517))) + ((3u * select(0u, 1u, ((select(_e527, _e528, _e522) & 1u) != 0u))) ^ select(0u, 1u, ((select(_e528, _e527, _e522) & 1u) != 0u)))) + (288u * (_e434 % 64u))));
-                        let _e545 = (0.5f + (_e543 * 0.7548777f));
-                        let _e549 = (0.5f + (_e543 * 0.5698403f));
-                        let _e552 = (6.2831855f * (_e545 - floor(_e545)));
-                        phi_1012_ = type_28(_e331, type_27(1u, type_26(vec2<u32>(_e60.x, _e60.y), vec3<f32>(_e346, _e355, _e97), _e431, sin(_e552), cos(_e552), (_e549 - floor(_e549)))));
+                        let _e405 = phi_803_;
+                        let _e408 = params.member.member_8;
+                        let _e409 = (_e62.x & 63u);
+                        let _e410 = (_e62.y & 63u);
+                        let _e413 = select(0u, 1u, ((_e409 & 32u) != 0u));
+                        let _e416 = select(0u, 1u, ((_e410 & 32u) != 0u));
+                        let _e420 = (_e416 == 0u);
+                        let _e422 = (_e420 && (_e413 == 1u));
+                        let _e425 = select(_e409, (63u - _e409), _e422);
+                        let _e426 = select(_e410, (63u - _e410), _e422);
+                        let _e427 = select(_e425, _e426, _e420);
+                        let _e428 = select(_e426, _e425, _e420);
+                        let _e431 = select(0u, 1u, ((_e427 & 16u) != 0u));
+                        let _e434 = select(0u, 1u, ((_e428 & 16u) != 0u));
+                        let _e439 = (_e434 == 0u);
+                        let _e441 = (_e439 && (_e431 == 1u));
+                        let _e444 = select(_e427, (63u - _e427), _e441);
+                        let _e445 = select(_e428, (63u - _e428), _e441);
+                        let _e446 = select(_e444, _e445, _e439);
+                        let _e447 = select(_e445, _e444, _e439);
+                        let _e450 = select(0u, 1u, ((_e446 & 8u) != 0u));
+                        let _e453 = select(0u, 1u, ((_e447 & 8u) != 0u));
+                        let _e458 = (_e453 == 0u);
+                        let _e460 = (_e458 && (_e450 == 1u));
+                        let _e463 = select(_e446, (63u - _e446), _e460);
+                        let _e464 = select(_e447, (63u - _e447), _e460);
+                        let _e465 = select(_e463, _e464, _e458);
+                        let _e466 = select(_e464, _e463, _e458);
+                        let _e469 = select(0u, 1u, ((_e465 & 4u) != 0u));
+                        let _e472 = select(0u, 1u, ((_e466 & 4u) != 0u));
+                        let _e477 = (_e472 == 0u);
+                        let _e479 = (_e477 && (_e469 == 1u));
+                        let _e482 = select(_e465, (63u - _e465), _e479);
+                        let _e483 = select(_e466, (63u - _e466), _e479);
+                        let _e484 = select(_e482, _e483, _e477);
+                        let _e485 = select(_e483, _e482, _e477);
+                        let _e488 = select(0u, 1u, ((_e484 & 2u) != 0u));
+                        let _e491 = select(0u, 1u, ((_e485 & 2u) != 0u));
+                        let _e496 = (_e491 == 0u);
+                        let _e498 = (_e496 && (_e488 == 1u));
+                        let _e501 = select(_e484, (63u - _e484), _e498);
+                        let _e502 = select(_e485, (63u - _e485), _e498);
+                        let _e518 = f32(bitcast<i32>((((((((1024u * ((3u * _e413) ^ _e416)) + (256u * ((3u * _e431) ^ _e434))) + (64u * ((3u * _e450) ^ _e453))) + (16u * ((3u * _e469) ^ _e472))) + (4u * ((3u * _e488) ^ _e491))) + ((3u * select(0u, 1u, ((select(_e501, _e502, _e496) & 1u) != 0u))) ^ select(0u, 1u, ((select(_e502, _e501, _e496) & 1u) != 0u)))) + (288u * (_e408 % 64u)))));
+                        let _e520 = (0.5f + (_e518 * 0.7548777f));
+                        let _e524 = (0.5f + (_e518 * 0.5698403f));
+                        let _e527 = (6.2831855f * (_e520 - floor(_e520)));
+                        phi_1008_ = type_28(_e305, type_27(1u, type_26(vec2<u32>(_e62.x, _e62.y), vec3<f32>(_e320, _e329, _e99), _e405, sin(_e527), cos(_e527), (_e524 - floor(_e524)))));
                     } else {
-                        phi_1012_ = type_28(_e331, type_27(0u, type_27().member_1));
+                        phi_1008_ = type_28(_e305, type_27(0u, type_27().member_1));
                     }
-                    let _e564 = phi_1012_;
-                    if (bitcast<i32>(_e564.member_1.member) != 0i) {
-                        let _e573 = params.member.member_5;
-                        let _e575 = select(_e573, 64u, (64u < _e573));
-                        let _e577 = select(_e575, _e62, (_e62 < _e575));
-                        let _e579 = select(1u, _e577, (1u < _e577));
-                        let _e582 = params.member.member_6;
-                        let _e584 = select(1u, _e582, (1u < _e582));
-                        phi_1047_ = 0u;
-                        phi_1050_ = 0f;
+                    let _e539 = phi_1008_;
+                    if (bitcast<i32>(_e539.member_1.member) != 0i) {
+                        let _e548 = params.member.member_5;
+                        let _e550 = select(_e548, 64u, (64u < _e548));
+                        let _e552 = select(_e550, _e64, (_e64 < _e550));
+                        let _e554 = select(1u, _e552, (1u < _e552));
+                        let _e557 = params.member.member_6;
+                        let _e559 = select(1u, _e557, (1u < _e557));
+                        phi_1043_ = 0u;
+                        phi_1046_ = 0f;
                         loop {
-                            let _e586 = phi_1047_;
-                            let _e588 = phi_1050_;
-                            local_10 = _e588;
-                            let _e589 = (_e586 < _e579);
-                            if _e589 {
-                                if (_e586 < _e62) {
+                            let _e561 = phi_1043_;
+                            let _e563 = phi_1046_;
+                            local_10 = _e563;
+                            let _e564 = (_e561 < _e554);
+                            if _e564 {
+                                if (_e561 < _e64) {
                                 } else {
-                                    phi_2029_ = true;
+                                    phi_2001_ = true;
                                     break;
                                 }
-                                let _e594 = kernel.member[_e586][0u];
-                                let _e598 = kernel.member[_e586][1u];
-                                let _e603 = ((_e564.member_1.member_1.member_4 * _e594) - (_e564.member_1.member_1.member_3 * _e598));
-                                let _e606 = ((_e564.member_1.member_1.member_3 * _e594) + (_e564.member_1.member_1.member_4 * _e598));
-                                let _e611 = ((1f - (_e603 * _e603)) - (_e606 * _e606));
-                                let _e615 = sqrt(select(0f, _e611, ((_e611 > 0f) || false)));
-                                let _e616 = -(_e615);
-                                let _e620 = (-1f * _e564.member_1.member_1.member_2.z);
-                                let _e621 = (-1f * _e564.member_1.member_1.member_2.x);
-                                let _e623 = (1f / (_e620 + 1f));
-                                let _e624 = (_e623 * _e564.member_1.member_1.member_2.y);
-                                let _e628 = (_e624 * _e621);
-                                let _e648 = (_e620 > 0.9997f);
-                                let _e649 = (_e620 < -0.9997f);
-                                let _e659 = params.member.member_1;
-                                let _e663 = params.member.member_3;
-                                let _e666 = params.member.member_4;
-                                phi_1202_ = 1u;
-                                phi_1205_ = _e659;
-                                phi_1207_ = false;
-                                phi_1209_ = true;
-                                phi_1211_ = 0f;
-                                phi_1213_ = 0f;
+                                let _e569 = kernel.member[_e561][0u];
+                                let _e573 = kernel.member[_e561][1u];
+                                let _e578 = ((_e539.member_1.member_1.member_4 * _e569) - (_e539.member_1.member_1.member_3 * _e573));
+                                let _e581 = ((_e539.member_1.member_1.member_3 * _e569) + (_e539.member_1.member_1.member_4 * _e573));
+                                let _e586 = ((1f - (_e578 * _e578)) - (_e581 * _e581));
+                                let _e590 = sqrt(select(0f, _e586, ((_e586 > 0f) || false)));
+                                let _e591 = -(_e590);
+                                let _e595 = (-1f * _e539.member_1.member_1.member_2.z);
+                                let _e596 = (-1f * _e539.member_1.member_1.member_2.x);
+                                let _e598 = (1f / (_e595 + 1f));
+                                let _e599 = (_e598 * _e539.member_1.member_1.member_2.y);
+                                let _e603 = (_e599 * _e596);
+                                let _e623 = (_e595 > 0.9997f);
+                                let _e624 = (_e595 < -0.9997f);
+                                let _e634 = params.member.member_1;
+                                let _e638 = params.member.member_3;
+                                let _e641 = params.member.member_4;
+                                phi_1198_ = 1u;
+                                phi_1201_ = _e634;
+                                phi_1203_ = false;
+                                phi_1205_ = true;
+                                phi_1207_ = 0f;
+                                phi_1209_ = 0f;
                                 loop {
-                                    let _e672 = phi_1202_;
-                                    let _e674 = phi_1205_;
-                                    let _e676 = phi_1207_;
-                                    let _e678 = phi_1209_;
-                                    let _e680 = phi_1211_;
-                                    let _e682 = phi_1213_;
-                                    local_4 = _e674;
-                                    local_6 = _e676;
-                                    local_8 = _e674;
-                                    local_9 = _e676;
-                                    let _e683 = (_e672 <= _e584);
-                                    if _e683 {
-                                        let _e689 = (((-(_e564.member_1.member_1.member_5) + f32(_e672)) * _e659) / f32(_e584));
-                                        let _e694 = (_e564.member_1.member_1.member_1.x + (select(select(((((_e620 + (_e624 * _e564.member_1.member_1.member_2.y)) * _e603) + (_e628 * _e606)) + (_e621 * _e616)), _e603, _e649), _e603, _e648) * _e689));
-                                        let _e696 = (_e564.member_1.member_1.member_1.y + (select(select((((_e628 * _e603) + ((_e620 + ((_e623 * _e621) * _e621)) * _e606)) + (-(_e564.member_1.member_1.member_2.y) * _e616)), -(_e606), _e649), _e606, _e648) * _e689));
-                                        let _e698 = (_e564.member_1.member_1.member_1.z + (select(select((((_e564.member_1.member_1.member_2.x * _e603) + (_e564.member_1.member_1.member_2.y * _e606)) + (_e620 * _e616)), _e615, _e649), _e616, _e648) * _e689));
-                                        let _e704 = params.member.member.member_1[0u];
-                                        let _e707 = (((_e694 * 0.5f) / (_e698 * _e704)) + 0.5f);
-                                        let _e713 = params.member.member.member_1[1u];
-                                        let _e716 = (0.5f - ((_e696 * 0.5f) / (_e698 * _e713)));
-                                        let _e726 = select(false, select(false, select(false, select(false, (_e716 <= 1f), (_e716 >= 0f)), select(false, (_e707 <= 1f), (_e707 >= 0f))), (_e698 > 0f)), _e678);
-                                        if _e726 {
-                                            let _e727 = (_e707 * _e73);
-                                            let _e729 = f32((_e78 - 1u));
-                                            let _e731 = select(0f, _e727, (_e727 > 0f));
-                                            let _e735 = (_e716 * _e83);
-                                            let _e737 = f32((_e88 - 1u));
-                                            let _e739 = select(0f, _e735, (_e735 > 0f));
-                                            let _e747 = depth.member[((u32(select(_e737, _e739, (_e739 < _e737))) * _e78) + u32(select(_e729, _e731, (_e731 < _e729))))];
-                                            let _e751 = select(_e101, _e747, select(false, (_e747 < _e101), (_e747 > 0f)));
-                                            let _e754 = (((_e707 * 2f) - 1f) * _e704);
-                                            let _e758 = (((_e716 * -2f) + 1f) * _e713);
-                                            let _e760 = (_e694 - (_e754 * _e751));
-                                            let _e761 = (_e696 - (_e758 * _e751));
-                                            let _e762 = (_e698 - _e751);
-                                            let _e768 = sqrt((((_e760 * _e760) + (_e761 * _e761)) + (_e762 * _e762)));
-                                            let _e773 = (select(0f, select(1f, _e707, (_e707 < 1f)), (_e707 > 0f)) * _e73);
-                                            let _e775 = select(0f, _e773, (_e773 > 0f));
-                                            let _e778 = u32(select(_e729, _e775, (_e775 < _e729)));
-                                            let _e783 = (select(0f, select(1f, _e716, (_e716 < 1f)), (_e716 > 0f)) * _e83);
-                                            let _e785 = select(0f, _e783, (_e783 > 0f));
-                                            let _e788 = u32(select(_e737, _e785, (_e785 < _e737)));
-                                            let _e809 = normals.member[((_e788 * _e78) + _e778)];
-                                            let _e817 = (f32((bitcast<i32>(((_e809 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e817 != _e817) {
-                                                phi_2000_ = true;
+                                    let _e647 = phi_1198_;
+                                    let _e649 = phi_1201_;
+                                    let _e651 = phi_1203_;
+                                    let _e653 = phi_1205_;
+                                    let _e655 = phi_1207_;
+                                    let _e657 = phi_1209_;
+                                    local_4 = _e649;
+                                    local_6 = _e651;
+                                    local_8 = _e649;
+                                    local_9 = _e651;
+                                    let _e658 = (_e647 <= _e559);
+                                    if _e658 {
+                                        let _e664 = (((-(_e539.member_1.member_1.member_5) + f32(_e647)) * _e634) / f32(_e559));
+                                        let _e669 = (_e539.member_1.member_1.member_1.x + (select(select(((((_e595 + (_e599 * _e539.member_1.member_1.member_2.y)) * _e578) + (_e603 * _e581)) + (_e596 * _e591)), _e578, _e624), _e578, _e623) * _e664));
+                                        let _e671 = (_e539.member_1.member_1.member_1.y + (select(select((((_e603 * _e578) + ((_e595 + ((_e598 * _e596) * _e596)) * _e581)) + (-(_e539.member_1.member_1.member_2.y) * _e591)), -(_e581), _e624), _e581, _e623) * _e664));
+                                        let _e673 = (_e539.member_1.member_1.member_1.z + (select(select((((_e539.member_1.member_1.member_2.x * _e578) + (_e539.member_1.member_1.member_2.y * _e581)) + (_e595 * _e591)), _e590, _e624), _e591, _e623) * _e664));
+                                        let _e679 = params.member.member.member_1[0u];
+                                        let _e682 = (((_e669 * 0.5f) / (_e673 * _e679)) + 0.5f);
+                                        let _e688 = params.member.member.member_1[1u];
+                                        let _e691 = (0.5f - ((_e671 * 0.5f) / (_e673 * _e688)));
+                                        let _e701 = select(false, select(false, select(false, select(false, (_e691 <= 1f), (_e691 >= 0f)), select(false, (_e682 <= 1f), (_e682 >= 0f))), (_e673 > 0f)), _e653);
+                                        if _e701 {
+                                            let _e702 = (_e682 * _e75);
+                                            let _e705 = f32(bitcast<i32>((_e80 - 1u)));
+                                            let _e707 = select(0f, _e702, (_e702 > 0f));
+                                            let _e714 = (_e691 * _e85);
+                                            let _e717 = f32(bitcast<i32>((_e90 - 1u)));
+                                            let _e719 = select(0f, _e714, (_e714 > 0f));
+                                            let _e730 = depth.member[(((bitcast<u32>((floor(select(_e717, _e719, (_e719 < _e717))) + 8388608f)) - 1258291200u) * _e80) + (bitcast<u32>((floor(select(_e705, _e707, (_e707 < _e705))) + 8388608f)) - 1258291200u))];
+                                            let _e734 = select(_e103, _e730, select(false, (_e730 < _e103), (_e730 > 0f)));
+                                            let _e737 = (((_e682 * 2f) - 1f) * _e679);
+                                            let _e741 = (((_e691 * -2f) + 1f) * _e688);
+                                            let _e743 = (_e669 - (_e737 * _e734));
+                                            let _e744 = (_e671 - (_e741 * _e734));
+                                            let _e745 = (_e673 - _e734);
+                                            let _e751 = sqrt((((_e743 * _e743) + (_e744 * _e744)) + (_e745 * _e745)));
+                                            let _e756 = (select(0f, select(1f, _e682, (_e682 < 1f)), (_e682 > 0f)) * _e75);
+                                            let _e758 = select(0f, _e756, (_e756 > 0f));
+                                            let _e764 = (bitcast<u32>((floor(select(_e705, _e758, (_e758 < _e705))) + 8388608f)) - 1258291200u);
+                                            let _e769 = (select(0f, select(1f, _e691, (_e691 < 1f)), (_e691 > 0f)) * _e85);
+                                            let _e771 = select(0f, _e769, (_e769 > 0f));
+                                            let _e777 = (bitcast<u32>((floor(select(_e717, _e771, (_e771 < _e717))) + 8388608f)) - 1258291200u);
+                                            let _e800 = normals.member[((_e777 * _e80) + _e764)];
+                                            let _e808 = (f32((bitcast<i32>(((_e800 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                            if (_e808 != _e808) {
+                                                phi_1972_ = true;
                                             } else {
-                                                phi_2000_ = (-1f >= _e817);
+                                                phi_1972_ = (-1f >= _e808);
                                             }
-                                            let _e821 = phi_2000_;
-                                            let _e822 = select(_e817, -1f, _e821);
-                                            let _e832 = (f32((bitcast<i32>((((_e809 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e832 != _e832) {
-                                                phi_2015_ = true;
+                                            let _e812 = phi_1972_;
+                                            let _e813 = select(_e808, -1f, _e812);
+                                            let _e823 = (f32((bitcast<i32>((((_e800 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
+                                            if (_e823 != _e823) {
+                                                phi_1987_ = true;
                                             } else {
-                                                phi_2015_ = (-1f >= _e832);
+                                                phi_1987_ = (-1f >= _e823);
                                             }
-                                            let _e836 = phi_2015_;
-                                            let _e837 = select(_e832, -1f, _e836);
-                                            let _e840 = (1f - abs(_e822));
-                                            let _e841 = abs(_e837);
-                                            let _e842 = (_e840 - _e841);
-                                            if (_e842 < 0f) {
-                                                phi_1976_ = vec2<f32>(((1f - _e841) * select(1f, -1f, (_e822 < 0f))), (_e840 * select(1f, -1f, (_e837 < 0f))));
+                                            let _e827 = phi_1987_;
+                                            let _e828 = select(_e823, -1f, _e827);
+                                            let _e831 = (1f - abs(_e813));
+                                            let _e832 = abs(_e828);
+                                            let _e833 = (_e831 - _e832);
+                                            if (_e833 < 0f) {
+                                                phi_1948_ = vec2<f32>(((1f - _e832) * select(1f, -1f, (_e813 < 0f))), (_e831 * select(1f, -1f, (_e828 < 0f))));
                                             } else {
-                                                phi_1976_ = vec2<f32>(_e822, _e837);
+                                                phi_1948_ = vec2<f32>(_e813, _e828);
                                             }
-                                            let _e853 = phi_1976_;
-                                            let _e862 = (1f / sqrt((((_e853.x * _e853.x) + (_e853.y * _e853.y)) + (_e842 * _e842))));
-                                            let _e863 = (_e853.x * _e862);
-                                            let _e864 = (_e853.y * _e862);
-                                            let _e866 = -((_e842 * _e862));
-                                            let _e870 = (((_e863 * _e754) + (_e864 * _e758)) + _e866);
-                                            let _e879 = select(((((_e863 * ((((((f32(_e778) + 0.5f) * (1f / _e73)) * 2f) - 1f) * _e704) * _e751)) + (_e864 * ((((((f32(_e788) + 0.5f) * (1f / _e83)) * -2f) + 1f) * _e713) * _e751))) + (_e866 * _e751)) / _e870), _e751, (abs(_e870) < 0.001f));
-                                            let _e889 = select(select(((_e698 - _e879) > _e666), true, (_e698 < (_e879 * (1f + _e663)))), true, select(false, (_e788 == _e564.member_1.member_1.member.y), (_e778 == _e564.member_1.member_1.member.x)));
-                                            let _e891 = select(false, !(_e889), _e726);
-                                            let _e892 = (_e680 + _e768);
-                                            let _e901 = select(false, _e889, _e726);
-                                            if _e901 {
-                                                phi_1573_ = (_e672 + 1u);
+                                            let _e844 = phi_1948_;
+                                            let _e853 = (1f / sqrt((((_e844.x * _e844.x) + (_e844.y * _e844.y)) + (_e833 * _e833))));
+                                            let _e854 = (_e844.x * _e853);
+                                            let _e855 = (_e844.y * _e853);
+                                            let _e857 = -((_e833 * _e853));
+                                            let _e861 = (((_e854 * _e737) + (_e855 * _e741)) + _e857);
+                                            let _e870 = select(((((_e854 * ((((((f32(bitcast<i32>(_e764)) + 0.5f) * (1f / _e75)) * 2f) - 1f) * _e679) * _e734)) + (_e855 * ((((((f32(bitcast<i32>(_e777)) + 0.5f) * (1f / _e85)) * -2f) + 1f) * _e688) * _e734))) + (_e857 * _e734)) / _e861), _e734, (abs(_e861) < 0.001f));
+                                            let _e880 = select(select(((_e673 - _e870) > _e641), true, (_e673 < (_e870 * (1f + _e638)))), true, select(false, (_e777 == _e539.member_1.member_1.member.y), (_e764 == _e539.member_1.member_1.member.x)));
+                                            let _e882 = select(false, !(_e880), _e701);
+                                            let _e883 = (_e655 + _e751);
+                                            let _e892 = select(false, _e880, _e701);
+                                            if _e892 {
+                                                phi_1587_ = (_e647 + 1u);
                                             } else {
-                                                phi_1573_ = u32();
+                                                phi_1587_ = u32();
                                             }
-                                            let _e904 = phi_1573_;
-                                            phi_1575_ = _e904;
-                                            phi_1576_ = select(_e674, select((_e682 + ((_e680 * (_e689 - _e682)) / _e892)), _e682, (_e892 < 0.000001f)), _e891);
-                                            phi_1577_ = select(_e891, true, _e676);
-                                            phi_1578_ = _e901;
-                                            phi_1579_ = _e768;
-                                            phi_1582_ = _e901;
-                                            phi_1583_ = select(true, false, _e901);
+                                            let _e895 = phi_1587_;
+                                            phi_1589_ = _e895;
+                                            phi_1590_ = select(_e649, select((_e657 + ((_e655 * (_e664 - _e657)) / _e883)), _e657, (_e883 < 0.000001f)), _e882);
+                                            phi_1591_ = select(_e882, true, _e651);
+                                            phi_1592_ = _e892;
+                                            phi_1593_ = _e751;
+                                            phi_1596_ = _e892;
+                                            phi_1597_ = select(true, false, _e892);
                                         } else {
-                                            phi_1575_ = u32();
-                                            phi_1576_ = f32();
-                                            phi_1577_ = bool();
-                                            phi_1578_ = bool();
-                                            phi_1579_ = f32();
-                                            phi_1582_ = false;
-                                            phi_1583_ = false;
+                                            phi_1589_ = u32();
+                                            phi_1590_ = f32();
+                                            phi_1591_ = bool();
+                                            phi_1592_ = bool();
+                                            phi_1593_ = f32();
+                                            phi_1596_ = false;
+                                            phi_1597_ = false;
                                         }
-                                        let _e907 = phi_1575_;
-                                        let _e909 = phi_1576_;
-                                        let _e911 = phi_1577_;
-                                        let _e913 = phi_1578_;
-                                        let _e915 = phi_1579_;
-                                        let _e917 = phi_1582_;
-                                        let _e919 = phi_1583_;
-                                        phi_1203_ = _e907;
-                                        phi_1206_ = _e909;
-                                        phi_1208_ = _e911;
-                                        phi_1210_ = _e913;
-                                        phi_1212_ = _e915;
-                                        phi_1214_ = _e689;
-                                        phi_1587_ = _e917;
-                                        phi_1589_ = _e919;
-                                        phi_1590_ = select(true, false, _e726);
+                                        let _e898 = phi_1589_;
+                                        let _e900 = phi_1590_;
+                                        let _e902 = phi_1591_;
+                                        let _e904 = phi_1592_;
+                                        let _e906 = phi_1593_;
+                                        let _e908 = phi_1596_;
+                                        let _e910 = phi_1597_;
+                                        phi_1199_ = _e898;
+                                        phi_1202_ = _e900;
+                                        phi_1204_ = _e902;
+                                        phi_1206_ = _e904;
+                                        phi_1208_ = _e906;
+                                        phi_1210_ = _e664;
+                                        phi_1601_ = _e908;
+                                        phi_1603_ = _e910;
+                                        phi_1604_ = select(true, false, _e701);
                                     } else {
-                                        phi_1203_ = u32();
-                                        phi_1206_ = f32();
-                                        phi_1208_ = bool();
-                                        phi_1210_ = bool();
-                                        phi_1212_ = f32();
-                                        phi_1214_ = f32();
-                                        phi_1587_ = false;
-                                        phi_1589_ = false;
-                                        phi_1590_ = false;
+                                        phi_1199_ = u32();
+                                        phi_1202_ = f32();
+                                        phi_1204_ = bool();
+                                        phi_1206_ = bool();
+                                        phi_1208_ = f32();
+                                        phi_1210_ = f32();
+                                        phi_1601_ = false;
+                                        phi_1603_ = false;
+                                        phi_1604_ = false;
                                     }
-                                    let _e922 = phi_1203_;
-                                    let _e924 = phi_1206_;
-                                    let _e926 = phi_1208_;
-                                    let _e928 = phi_1210_;
-                                    let _e930 = phi_1212_;
-                                    let _e932 = phi_1214_;
-                                    let _e934 = phi_1587_;
-                                    let _e936 = phi_1589_;
-                                    let _e938 = phi_1590_;
-                                    let _e939 = select(true, false, _e683);
-                                    local = _e939;
-                                    local_1 = _e936;
-                                    local_2 = _e939;
-                                    local_3 = _e938;
-                                    local_5 = _e924;
-                                    local_7 = _e926;
+                                    let _e913 = phi_1199_;
+                                    let _e915 = phi_1202_;
+                                    let _e917 = phi_1204_;
+                                    let _e919 = phi_1206_;
+                                    let _e921 = phi_1208_;
+                                    let _e923 = phi_1210_;
+                                    let _e925 = phi_1601_;
+                                    let _e927 = phi_1603_;
+                                    let _e929 = phi_1604_;
+                                    let _e930 = select(true, false, _e658);
+                                    local = _e930;
+                                    local_1 = _e927;
+                                    local_2 = _e930;
+                                    local_3 = _e929;
+                                    local_5 = _e915;
+                                    local_7 = _e917;
                                     continue;
                                     continuing {
-                                        phi_1202_ = _e922;
-                                        phi_1205_ = _e924;
-                                        phi_1207_ = _e926;
-                                        phi_1209_ = _e928;
-                                        phi_1211_ = _e930;
-                                        phi_1213_ = _e932;
-                                        break if !(_e934);
+                                        phi_1198_ = _e913;
+                                        phi_1201_ = _e915;
+                                        phi_1203_ = _e917;
+                                        phi_1205_ = _e919;
+                                        phi_1207_ = _e921;
+                                        phi_1209_ = _e923;
+                                        break if !(_e925);
                                     }
                                 }
-                                let _e942 = local;
-                                let _e944 = local_1;
-                                let _e945 = select(_e944, false, _e942);
-                                let _e947 = local_2;
-                                let _e949 = local_3;
-                                let _e951 = select(select(_e949, false, _e947), false, _e945);
-                                let _e953 = local_4;
-                                let _e955 = local_5;
-                                let _e958 = local_6;
-                                let _e960 = local_7;
-                                let _e962 = select(_e945, true, _e951);
-                                let _e964 = local_8;
-                                let _e967 = local_9;
-                                let _e971 = params.member.member_7;
-                                if (_e971 == 1u) {
-                                    phi_1630_ = 0f;
+                                let _e933 = local;
+                                let _e935 = local_1;
+                                let _e936 = select(_e935, false, _e933);
+                                let _e938 = local_2;
+                                let _e940 = local_3;
+                                let _e942 = select(select(_e940, false, _e938), false, _e936);
+                                let _e944 = local_4;
+                                let _e946 = local_5;
+                                let _e949 = local_6;
+                                let _e951 = local_7;
+                                let _e953 = select(_e936, true, _e942);
+                                let _e955 = local_8;
+                                let _e958 = local_9;
+                                let _e962 = params.member.member_7;
+                                if (_e962 == 1u) {
+                                    phi_1644_ = 0f;
                                 } else {
-                                    let _e973 = (select(_e964, select(_e955, _e953, _e951), _e962) / _e659);
-                                    phi_1630_ = select(0f, select(1f, _e973, (_e973 < 1f)), (_e973 > 0f));
+                                    let _e964 = (select(_e955, select(_e946, _e944, _e942), _e953) / _e634);
+                                    phi_1644_ = select(0f, select(1f, _e964, (_e964 < 1f)), (_e964 > 0f));
                                 }
-                                let _e979 = phi_1630_;
-                                phi_1048_ = (_e586 + 1u);
-                                phi_1051_ = (_e588 + select(1f, _e979, select(_e967, select(_e960, _e958, _e951), _e962)));
+                                let _e970 = phi_1644_;
+                                phi_1044_ = (_e561 + 1u);
+                                phi_1047_ = (_e563 + select(1f, _e970, select(_e958, select(_e951, _e949, _e942), _e953)));
                             } else {
-                                phi_1048_ = u32();
-                                phi_1051_ = f32();
+                                phi_1044_ = u32();
+                                phi_1047_ = f32();
                             }
-                            let _e984 = phi_1048_;
-                            let _e986 = phi_1051_;
+                            let _e975 = phi_1044_;
+                            let _e977 = phi_1047_;
                             continue;
                             continuing {
-                                phi_1047_ = _e984;
-                                phi_1050_ = _e986;
-                                phi_2029_ = false;
-                                break if !(_e589);
+                                phi_1043_ = _e975;
+                                phi_1046_ = _e977;
+                                phi_2001_ = false;
+                                break if !(_e564);
                             }
                         }
-                        let _e989 = phi_2029_;
-                        if _e989 {
+                        let _e980 = phi_2001_;
+                        if _e980 {
                             break;
                         }
-                        let _e992 = local_10;
-                        let _e996 = params.member.member_2;
-                        let _e997 = pow((_e992 / f32(_e579)), _e996);
-                        let _e998 = (_e997 * 0.6666667f);
-                        let _e1004 = ((select(0f, select(1f, _e998, (_e998 < 1f)), (_e998 > 0f)) * 255f) + 0.5f);
-                        phi_1701_ = type_29(_e997, select(select(u32(_e1004), 0u, (_e1004 < 0f)), 4294967295u, (_e1004 > 4294967000f)), _e564.member);
+                        let _e983 = local_10;
+                        let _e987 = params.member.member_2;
+                        let _e988 = pow((_e983 / f32(_e554)), _e987);
+                        let _e989 = (_e988 * 0.6666667f);
+                        phi_1709_ = type_29(_e988, (bitcast<u32>((floor(((select(0f, select(1f, _e989, (_e989 < 1f)), (_e989 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u), _e539.member);
                     } else {
-                        phi_1701_ = type_29(1f, 170u, _e564.member);
+                        phi_1709_ = type_29(1f, (bitcast<u32>((floor(170.5f) + 8388608f)) - 1258291200u), _e539.member);
                     }
-                    let _e1013 = phi_1701_;
-                    if (_e94 < arrayLength((&ao.member))) {
-                    } else {
-                        break;
-                    }
-                    ao.member[_e94] = _e1013.member;
-                    if (_e94 < arrayLength((&terms.member))) {
+                    let _e1007 = phi_1709_;
+                    if (_e96 < arrayLength((&ao.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e94] = _e1013.member_1;
-                    if (_e94 < arrayLength((&edges.member))) {
+                    ao.member[_e96] = _e1007.member;
+                    if (_e96 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e94] = _e1013.member_2;
+                    terms.member[_e96] = _e1007.member_1;
+                    if (_e96 < arrayLength((&edges.member))) {
+                    } else {
+                        break;
+                    }
+                    edges.member[_e96] = _e1007.member_2;
                 }
             }
             break;

@@ -10,6 +10,9 @@
 //! Entry points are thin: they read storage-buffer slices and push constants and call pure
 //! per-pixel functions, which the CPU simulator calls directly over the same slices.
 #![cfg_attr(target_arch = "spirv", no_std)]
+// `core::intrinsics::round_ties_even_f32`: GLSL.std.450 RoundEven (no stable `core` path).
+#![cfg_attr(target_arch = "spirv", feature(core_intrinsics))]
+#![cfg_attr(target_arch = "spirv", allow(internal_features))]
 // `spirv_std::ray_query!` expands an `asm!` in this crate (the ray-query variants).
 #![cfg_attr(all(target_arch = "spirv", feature = "rq"), feature(asm_experimental_arch))]
 #![allow(clippy::too_many_arguments)]

@@ -5,17 +5,25 @@
 use spirv_std::num_traits::Float;
 
 use crate::common::lanes::Lanes;
-use crate::common::math::{floor, sat};
+use crate::common::math::{f32_to_u32, floor, sat, u32_to_f32};
 use crate::glam::{Vec3, Vec4, vec4};
 
-/// Round half to even (HLSL `round`, spec gtao-raymarch-hybrid §1.5). Both tests are evaluated
-/// (`&`, not `&&`): a select on the GPU, not a branch per call.
+/// Round half to even (HLSL `round`, spec gtao-raymarch-hybrid §1.5). On SPIR-V one
+/// `RoundEven` instruction; natively both tests are evaluated (`&`, not `&&`), a select rather
+/// than a branch per call (and no libm call on x86-64 without SSE4.1).
 #[inline]
 pub fn round_even(x: f32) -> f32 {
-    let r = floor(x + 0.5);
-    let odd_tie = (r - x == 0.5) & (floor(r * 0.5) * 2.0 != r);
-    let down = r - 1.0;
-    if odd_tie { down } else { r }
+    #[cfg(target_arch = "spirv")]
+    #[allow(unused_unsafe)]
+    // SAFETY: a pure float operation (GLSL.std.450 RoundEven).
+    let r = unsafe { core::intrinsics::round_ties_even_f32(x) };
+    #[cfg(not(target_arch = "spirv"))]
+    let r = {
+        let r = floor(x + 0.5);
+        let odd_tie = (r - x == 0.5) & (floor(r * 0.5) * 2.0 != r);
+        if odd_tie { r - 1.0 } else { r }
+    };
+    r
 }
 
 /// Edge weights (L, R, T, B) of a pixel at depth `zc` from its 4-neighbours (spec gtao-raymarch-hybrid §2.6.1):
@@ -70,14 +78,14 @@ pub fn unpack_edges<L: Lanes>(p: L::Index) -> EdgeWeights<L> {
 /// `uint(sat(vis/1.5)·255 + 0.5)` (spec gtao-raymarch-hybrid §2.6.4).
 #[inline]
 pub fn store_term(vis: f32) -> u32 {
-    (sat(vis / 1.5) * 255.0 + 0.5) as u32
+    f32_to_u32(sat(vis / 1.5) * 255.0 + 0.5)
 }
 
 /// RGBA8 UNORM packing of a term with a bent normal, `uint(sat(c)·255 + 0.5)` per channel, r
 /// in the low byte (spec gtao-raymarch-hybrid §2.6.5: rgb = b·0.5 + 0.5, a = vis/1.5).
 #[inline]
 pub fn pack_bent_term(c: Vec4) -> u32 {
-    let q = |x: f32| (sat(x) * 255.0 + 0.5) as u32;
+    let q = |x: f32| f32_to_u32(sat(x) * 255.0 + 0.5);
     q(c.x) | (q(c.y) << 8) | (q(c.z) << 16) | (q(c.w) << 24)
 }
 
@@ -91,5 +99,5 @@ pub fn pack_bent_normal(n: Vec3, a: f32) -> u32 {
 /// [`pack_bent_term`] back to four channels in [0, 1].
 #[inline]
 pub fn unpack_bent_term(p: u32) -> Vec4 {
-    vec4((p & 0xFF) as f32, ((p >> 8) & 0xFF) as f32, ((p >> 16) & 0xFF) as f32, (p >> 24) as f32) / 255.0
+    vec4(u32_to_f32(p & 0xFF), u32_to_f32((p >> 8) & 0xFF), u32_to_f32((p >> 16) & 0xFF), u32_to_f32(p >> 24)) / 255.0
 }

@@ -101,6 +101,8 @@ pub trait Lanes:
     fn index_eq(a: Self::Index, b: Self::Index) -> Self::Mask;
     /// `n` in every lane.
     fn index_splat(n: u32) -> Self::Index;
+    /// `max(n ≫ k, 1)` per lane: the extent of MIP `k` (< 32) of an `n`-texel side.
+    fn index_mip_extent(n: u32, k: Self::Index) -> Self::Index;
     /// `if m { a } else { b }` per lane.
     fn index_select(m: Self::Mask, a: Self::Index, b: Self::Index) -> Self::Index;
     /// `clamp(⌊self⌋, 0, n − 1)` per lane (NaN → 0), as [`clamp_index`] computes it: a
@@ -316,7 +318,7 @@ impl Lanes for f32 {
     }
     #[inline]
     fn index_to_float(i: u32) -> f32 {
-        i as f32
+        crate::common::math::u32_to_f32(i)
     }
     #[inline]
     fn index_eq(a: u32, b: u32) -> bool {
@@ -325,6 +327,10 @@ impl Lanes for f32 {
     #[inline]
     fn index_splat(n: u32) -> u32 {
         n
+    }
+    #[inline]
+    fn index_mip_extent(n: u32, k: u32) -> u32 {
+        (n >> k).max(1)
     }
     #[inline]
     fn index_select(m: bool, a: u32, b: u32) -> u32 {
@@ -633,6 +639,10 @@ mod x8 {
         #[inline(always)]
         fn index_splat(n: u32) -> i32x8 {
             i32x8::splat(n as i32)
+        }
+        #[inline(always)]
+        fn index_mip_extent(n: u32, k: i32x8) -> i32x8 {
+            i32x8::splat(n as i32).unbounded_shr(bytemuck::cast(k)).max(i32x8::splat(1))
         }
         #[inline(always)]
         fn index_select(m: f32x8, a: i32x8, b: i32x8) -> i32x8 {

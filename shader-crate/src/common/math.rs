@@ -6,6 +6,30 @@ use spirv_std::num_traits::Float;
 
 use crate::common::lanes::{LaneVec3, Lanes};
 
+/// `x as f32` for `x < 2³¹` (the indices, texel coordinates, bytes and counts the kernels
+/// convert), through a signed conversion, which gives the same float. Unsigned conversions
+/// have no vector instruction before AVX-512: LLVM — lavapipe's compiler and the CPU build —
+/// expands an unsigned one into several instructions per vector, a signed one is
+/// `vcvtdq2ps`.
+#[inline]
+pub fn u32_to_f32(x: u32) -> f32 {
+    x as i32 as f32
+}
+
+/// `x as u32` (truncation) for a finite `x` in [0, 2²³) (a clamped coordinate, a rounded
+/// byte). On SPIR-V without any conversion instruction: `⌊x⌋ + 2²³` is exact and its bits are
+/// `0x4B00_0000 + ⌊x⌋`. lavapipe compiles every float-to-integer conversion, signed or not, to
+/// eight scalar saturating conversions per vector (about six instructions each); this is three
+/// vector instructions. Natively Rust's `as i32`, the same integer.
+#[inline]
+pub fn f32_to_u32(x: f32) -> u32 {
+    #[cfg(target_arch = "spirv")]
+    let i = (Float::floor(x) + 8_388_608.0).to_bits() - 0x4B00_0000;
+    #[cfg(not(target_arch = "spirv"))]
+    let i = x as i32 as u32;
+    i
+}
+
 /// `saturate(x)`: clamp to [0, 1]. NaN maps to 0.
 #[inline]
 pub fn sat<L: Lanes>(x: L) -> L {

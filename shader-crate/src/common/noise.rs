@@ -2,7 +2,7 @@
 //! a 64×64 tile drives the R2 low-discrepancy sequence, so neighbouring pixels get well spread
 //! samples. Used by XeGTAO, the Poisson-disk ray-marched SSAO and the hybrid AO.
 
-use crate::common::math::frac;
+use crate::common::math::{frac, u32_to_f32};
 use crate::glam::{UVec2, Vec2, vec2};
 
 /// Hilbert index of `p` in a 64×64 tile (6 levels; only the low 6 bits of x and y count),
@@ -45,7 +45,7 @@ pub const R2: [f32; 2] = [0.754_877_7, 0.569_840_3];
 /// 64)`, in f32 in XeGTAO's order (spec gtao-raymarch-hybrid §1.6). `ξ.x` drives slice/rotation angles, `ξ.y` steps.
 #[inline]
 pub fn spatio_temporal_noise(p: UVec2, frame: u32) -> Vec2 {
-    let i = (hilbert_index(p) + 288 * (frame % 64)) as f32;
+    let i = u32_to_f32(hilbert_index(p) + 288 * (frame % 64));
     vec2(frac(0.5 + i * R2[0]), frac(0.5 + i * R2[1]))
 }
 
@@ -55,7 +55,7 @@ pub fn spatio_temporal_noise(p: UVec2, frame: u32) -> Vec2 {
 /// without its 0.5 start so that `r(0) = (0, 0)`.
 #[inline]
 pub fn frame_rotation(frame: u32) -> Vec2 {
-    let f = (frame % 64) as f32;
+    let f = u32_to_f32(frame % 64);
     vec2(frac(f * R2[0]), frac(f * R2[1]))
 }
 

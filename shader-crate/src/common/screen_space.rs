@@ -4,23 +4,19 @@
 
 use crate::common::ViewParams;
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
+use crate::common::math::{f32_to_u32, u32_to_f32};
 use crate::glam::UVec2;
 
 /// `clamp(v, 0, n − 1)` of a float coordinate as an index (NaN → 0), branch-free: the float
 /// is clamped first by compares and selects (a NaN fails `v > 0`), so the conversion needs no
-/// saturation (on SPIR-V a plain `OpConvertFToU`, not Rust's saturating cast with its compares
-/// and selects). `n − 1` must be exact in `f32` (n ≤ 2²⁴).
+/// saturation ([`f32_to_u32`]: on SPIR-V no conversion instruction at all, not Rust's
+/// saturating cast with its compares and selects). `n` ≤ 2²³.
 #[inline]
 pub fn clamp_index(v: f32, n: u32) -> u32 {
-    let last = (n - 1) as f32;
+    let last = u32_to_f32(n - 1);
     let c = if v > 0.0 { v } else { 0.0 };
     let c = if c < last { c } else { last };
-    #[cfg(target_arch = "spirv")]
-    // SAFETY: `c` is finite and in [0, n − 1], which u32 represents.
-    let i = unsafe { c.to_int_unchecked::<u32>() };
-    #[cfg(not(target_arch = "spirv"))]
-    let i = c as u32;
-    i
+    f32_to_u32(c)
 }
 
 /// `viewPos(uv, z) = ((2u−1)·tanX·z, (1−2v)·tanY·z, z)` in XeGTAO's +z-forward view space

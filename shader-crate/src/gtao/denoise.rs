@@ -4,7 +4,7 @@
 use super::GtaoParams;
 use crate::common::denoise_terms::{EdgeWeights, pack_bent_normal, pack_bent_term, unpack_bent_term, unpack_edges};
 use crate::common::lanes::Lanes;
-use crate::common::math::sat;
+use crate::common::math::{f32_to_u32, sat, u32_to_f32};
 use crate::common::read::read;
 use crate::common::screen_space::{neighbour_lanes, word_at};
 use crate::glam::{UVec2, Vec4, vec3};
@@ -54,7 +54,7 @@ pub fn denoise_pixel(params: &GtaoParams, terms: &[u32], edges: &[u32], p: UVec2
     let n = vec3(value.x, value.y, value.z) * 2.0 - 1.0;
     let l = n.length();
     let n = if l > 0.0 { n / l } else { vec3(0.0, 0.0, -1.0) };
-    let a = ((value.w * 1.5 * 255.0 + 0.5) as u32).min(255) as f32 / 255.0;
+    let a = u32_to_f32(f32_to_u32(value.w * 1.5 * 255.0 + 0.5).min(255)) / 255.0;
     Denoised { term: pack_bent_normal(vec3(n.x, n.y, -n.z), a), last, visibility: a }
 }
 
@@ -114,7 +114,7 @@ pub fn denoise_pair(params: &GtaoParams, terms: &[u32], edges: &[u32], b: UVec2)
 /// The stored AO term at column `c`, row `r` as [`Term::load`] reads it (0–255 → /255).
 #[inline]
 fn term_at(terms: &[u32], width: u32, c: u32, r: u32) -> f32 {
-    word(terms, width, c, r) as f32 / 255.0
+    u32_to_f32(word(terms, width, c, r)) / 255.0
 }
 
 /// The word at column `c`, row `r` of a row-major image `width` wide.

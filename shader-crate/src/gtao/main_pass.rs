@@ -11,7 +11,9 @@ use crate::common::ViewParams;
 use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, store_term};
 use crate::common::gbuffer_read::decoded_normals;
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, select_v3};
-use crate::common::math::{ceil, clamp, depth_or_far, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat};
+use crate::common::math::{
+    ceil, clamp, depth_or_far, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat, u32_to_f32,
+};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::encode_normal;
 use crate::common::screen_space::{neighbour, neighbour_lanes, view_pos};
@@ -148,7 +150,7 @@ pub fn slices_visibility<L: Lanes>(params: &GtaoParams, mips: &[f32], px: &Pixel
         }
         s += 1;
     }
-    (vis / slices as f32, bent)
+    (vis / u32_to_f32(slices), bent)
 }
 
 /// One slice's bent-normal contribution, `L·M·(dir.x·t0, dir.y·t0, −t1)` (spec gtao-raymarch-hybrid §2.6.5: the
@@ -233,7 +235,7 @@ pub struct SliceFrame<L: Lanes = f32> {
 #[inline]
 pub fn slice_frame<L: Lanes>(params: &GtaoParams, px: &PixelSetup<L>, s: u32) -> SliceFrame<L> {
     let slices = params.slices.max(1);
-    let phi = (px.xi.x() + s as f32) * core::f32::consts::PI / slices as f32;
+    let phi = (px.xi.x() + u32_to_f32(s)) * core::f32::consts::PI / u32_to_f32(slices);
     let (sin_phi, cos_phi) = phi.sin_cos();
     let omega = L::V2::new(cos_phi, -sin_phi) * px.r_px;
     let dir = L::V3::new(cos_phi, sin_phi, L::splat(0.0));
@@ -264,8 +266,8 @@ pub fn sample_pair<L: Lanes>(
     let view = &params.view;
     let full = view.size();
     let steps = params.steps.max(1);
-    let t = crate::common::math::frac(px.xi.y() + (s + k * steps) as f32 * 0.618_034);
-    let u = pow((t + k as f32) * (1.0 / steps as f32), params.sample_distribution_power) + px.min_s;
+    let t = crate::common::math::frac(px.xi.y() + u32_to_f32(s + k * steps) * 0.618_034);
+    let u = pow((t + u32_to_f32(k)) * (1.0 / u32_to_f32(steps)), params.sample_distribution_power) + px.min_s;
     let off = slice.omega * u;
     let lambda = clamp(off.length().log2() - params.depth_mip_sampling_offset, 0.0, 5.0);
     let level = ceil(lambda + 0.5) - 1.0;
@@ -280,35 +282,30 @@ pub fn sample_pair<L: Lanes>(
 
 /// Point sample of the MIP chain per lane at level `level` (an integral float; clamped to the
 /// chain, NaN reads level 0) and `uv`: the texel `clamp(⌊uv·size⌋, 0, size − 1)` of that level
-/// (spec gtao-raymarch-hybrid §1.5). Each lane's level size and offset are chosen branch-free
-/// from the chain's (the same for every pixel), for one lane as for several: no loop or branch
-/// per sample.
+/// (spec gtao-raymarch-hybrid §1.5). Branch-free, the same for one lane as for several: the
+/// level's extent is `max(full ≫ k, 1)` ([`mip_size`]) and its offset one of four chosen by
+/// compares and selects (the offsets are the same for every pixel).
 #[inline]
 fn mip_sample<L: Lanes>(mips: &[f32], full: UVec2, level: L, uv: L::V2) -> L {
-    let mut size = mip_size(full, 0);
+    let k = level.floor_index(L::index_splat(MIP_LEVELS as u32));
+    let (w, h) = (L::index_mip_extent(full.x, k), L::index_mip_extent(full.y, k));
+    let mut at = L::index_splat(0);
     let mut offset = 0u32;
-    let (mut w, mut h, mut at) = (L::index_splat(size.x), L::index_splat(size.y), L::index_splat(0));
-    let (mut wf, mut hf) = (L::splat(size.x as f32), L::splat(size.y as f32));
     // Levels 1–4 written out: straight-line code on the GPU (rust-gpu emits loops as written).
     const _: () = assert!(MIP_LEVELS == 5, "mip_sample selects among exactly five levels");
     macro_rules! level {
         ($k:expr) => {
-            offset += size.x * size.y;
-            size = mip_size(full, $k);
-            let reached = level.ge(L::splat($k as f32));
-            w = L::index_select(reached, L::index_splat(size.x), w);
-            h = L::index_select(reached, L::index_splat(size.y), h);
-            at = L::index_select(reached, L::index_splat(offset), at);
-            wf = L::select(reached, L::splat(size.x as f32), wf);
-            hf = L::select(reached, L::splat(size.y as f32), hf);
+            let below = mip_size(full, $k - 1);
+            offset += below.x * below.y;
+            at = L::index_select(level.ge(L::splat($k as f32)), L::index_splat(offset), at);
         };
     }
     level!(1);
     level!(2);
     level!(3);
     level!(4);
-    let x = (uv.x() * wf).floor_index(w);
-    let y = (uv.y() * hf).floor_index(h);
+    let x = (uv.x() * L::index_to_float(w)).floor_index(w);
+    let y = (uv.y() * L::index_to_float(h)).floor_index(h);
     L::gather_index(mips, at + y * w + x)
 }
 

@@ -9,7 +9,7 @@ use spirv_std::num_traits::Float;
 use super::{RULE_TOUCH, VbaoParams, WEIGHT_COSINE_BLENDER, WEIGHT_COSINE_EXACT};
 use crate::common::denoise_terms::store_term;
 use crate::common::lanes::{LaneVec3, Lanes};
-use crate::common::math::{ceil, clamp, precise_acos, sat};
+use crate::common::math::{ceil, clamp, precise_acos, sat, u32_to_f32};
 use crate::glam::UVec2;
 use crate::gtao::GtaoPixel;
 use crate::gtao::main_pass::{
@@ -127,7 +127,7 @@ fn free_cosine_weight<L: Lanes>(mask: L::Index, gamma: L, cos_n: L) -> L {
     let mut sum = L::splat(0.0);
     let mut i = 0;
     while i < SECTORS {
-        let upper = signed_arc(edge + (i + 1) as f32 * width, gamma, cos_n);
+        let upper = signed_arc(edge + u32_to_f32(i + 1) * width, gamma, cos_n);
         let free = L::index_eq((mask >> i) & L::index_splat(1), L::index_splat(0));
         sum = L::select(free, sum + (upper - lower), sum);
         lower = upper;
@@ -157,7 +157,7 @@ fn blender_visibility<L: Lanes>(mask: L::Index) -> L {
 /// The number of sectors of `mask` within `group`, per lane.
 #[inline]
 fn set_sectors<L: Lanes>(mask: L::Index, group: u32) -> L {
-    L::from_lanes(move |k| (L::index_lane(mask, k) & group).count_ones() as f32)
+    L::from_lanes(move |k| u32_to_f32((L::index_lane(mask, k) & group).count_ones()))
 }
 
 /// One slice's mask: both sides' samples OR-ed into it (spec vbao §2–§3).
