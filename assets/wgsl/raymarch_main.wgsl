@@ -77,39 +77,33 @@ var<storage, read_write> terms: type_10;
 var<storage, read_write> edges: type_10;
 
 fn function_() {
-    var phi_1874_: bool;
-    var phi_1889_: bool;
-    var phi_772_: vec2<f32>;
-    var phi_803_: vec3<f32>;
-    var phi_1008_: type_28;
-    var phi_1043_: u32;
-    var phi_1046_: f32;
-    var phi_1198_: u32;
-    var phi_1201_: f32;
-    var phi_1203_: bool;
-    var phi_1205_: bool;
-    var phi_1207_: f32;
-    var phi_1209_: f32;
-    var phi_1972_: bool;
-    var phi_1987_: bool;
-    var phi_1948_: vec2<f32>;
-    var phi_1587_: u32;
-    var phi_1589_: u32;
-    var phi_1590_: f32;
-    var phi_1591_: bool;
-    var phi_1592_: bool;
+    var phi_735_: vec3<f32>;
+    var phi_940_: type_28;
+    var phi_975_: u32;
+    var phi_978_: f32;
+    var phi_1130_: u32;
+    var phi_1133_: f32;
+    var phi_1135_: bool;
+    var phi_1137_: bool;
+    var phi_1139_: f32;
+    var phi_1141_: f32;
+    var phi_1590_: u32;
+    var phi_1592_: u32;
     var phi_1593_: f32;
-    var phi_1596_: bool;
-    var phi_1597_: bool;
-    var phi_1199_: u32;
-    var phi_1202_: f32;
-    var phi_1204_: bool;
-    var phi_1206_: bool;
-    var phi_1208_: f32;
-    var phi_1210_: f32;
-    var phi_1601_: bool;
-    var phi_1603_: bool;
+    var phi_1594_: bool;
+    var phi_1595_: bool;
+    var phi_1596_: f32;
+    var phi_1599_: bool;
+    var phi_1600_: bool;
+    var phi_1131_: u32;
+    var phi_1134_: f32;
+    var phi_1136_: bool;
+    var phi_1138_: bool;
+    var phi_1140_: f32;
+    var phi_1142_: f32;
     var phi_1604_: bool;
+    var phi_1606_: bool;
+    var phi_1607_: bool;
     var local: bool;
     var local_1: bool;
     var local_2: bool;
@@ -120,12 +114,12 @@ fn function_() {
     var local_7: bool;
     var local_8: f32;
     var local_9: bool;
-    var phi_1644_: f32;
-    var phi_1044_: u32;
-    var phi_1047_: f32;
-    var phi_2001_: bool;
+    var phi_1647_: f32;
+    var phi_976_: u32;
+    var phi_979_: f32;
+    var phi_1867_: bool;
     var local_10: f32;
-    var phi_1709_: type_29;
+    var phi_1712_: type_29;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -202,355 +196,329 @@ fn function_() {
                         let _e327 = params.member.member.member_1[1u];
                         let _e329 = ((((((f32(_e117) + 0.5f) / _e85) * -2f) + 1f) * _e327) * _e99);
                         let _e333 = normals.member[_e96];
-                        let _e341 = (f32((bitcast<i32>(((_e333 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e341 != _e341) {
-                            phi_1874_ = true;
+                        let _e336 = f32(bitcast<i32>((_e333 & 255u)));
+                        let _e340 = (select(_e336, (_e336 - 256f), (_e336 >= 128f)) * 0.007874016f);
+                        let _e343 = select(-1f, _e340, ((_e340 > -1f) || false));
+                        let _e348 = f32(bitcast<i32>(((_e333 >> bitcast<u32>(8u)) & 255u)));
+                        let _e352 = (select(_e348, (_e348 - 256f), (_e348 >= 128f)) * 0.007874016f);
+                        let _e355 = select(-1f, _e352, ((_e352 > -1f) || false));
+                        let _e357 = (1f - abs(_e343));
+                        let _e358 = abs(_e355);
+                        let _e359 = (_e357 - _e358);
+                        let _e360 = (_e359 < 0f);
+                        let _e368 = select(_e343, ((1f - _e358) * select(1f, -1f, (_e343 < 0f))), _e360);
+                        let _e369 = select(_e355, (_e357 * select(1f, -1f, (_e355 < 0f))), _e360);
+                        let _e376 = (1f / sqrt((((_e368 * _e368) + (_e369 * _e369)) + (_e359 * _e359))));
+                        let _e377 = (_e368 * _e376);
+                        let _e378 = (_e369 * _e376);
+                        let _e379 = (_e359 * _e376);
+                        let _e380 = -(_e379);
+                        if ((((_e377 * -(_e320)) + (_e378 * -(_e329))) + (_e380 * -(_e99))) < 0f) {
+                            phi_735_ = vec3<f32>(-(_e377), -(_e378), _e379);
                         } else {
-                            phi_1874_ = (-1f >= _e341);
+                            phi_735_ = vec3<f32>(_e377, _e378, _e380);
                         }
-                        let _e345 = phi_1874_;
-                        let _e346 = select(_e341, -1f, _e345);
-                        let _e356 = (f32((bitcast<i32>((((_e333 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                        if (_e356 != _e356) {
-                            phi_1889_ = true;
-                        } else {
-                            phi_1889_ = (-1f >= _e356);
-                        }
-                        let _e360 = phi_1889_;
-                        let _e361 = select(_e356, -1f, _e360);
-                        let _e364 = (1f - abs(_e346));
-                        let _e365 = abs(_e361);
-                        let _e366 = (_e364 - _e365);
-                        if (_e366 < 0f) {
-                            phi_772_ = vec2<f32>(((1f - _e365) * select(1f, -1f, (_e346 < 0f))), (_e364 * select(1f, -1f, (_e361 < 0f))));
-                        } else {
-                            phi_772_ = vec2<f32>(_e346, _e361);
-                        }
-                        let _e377 = phi_772_;
-                        let _e386 = (1f / sqrt((((_e377.x * _e377.x) + (_e377.y * _e377.y)) + (_e366 * _e366))));
-                        let _e387 = (_e377.x * _e386);
-                        let _e388 = (_e377.y * _e386);
-                        let _e389 = (_e366 * _e386);
-                        let _e390 = -(_e389);
-                        if ((((_e387 * -(_e320)) + (_e388 * -(_e329))) + (_e390 * -(_e99))) < 0f) {
-                            phi_803_ = vec3<f32>(-(_e387), -(_e388), _e389);
-                        } else {
-                            phi_803_ = vec3<f32>(_e387, _e388, _e390);
-                        }
-                        let _e405 = phi_803_;
-                        let _e408 = params.member.member_8;
-                        let _e409 = (_e62.x & 63u);
-                        let _e410 = (_e62.y & 63u);
-                        let _e413 = select(0u, 1u, ((_e409 & 32u) != 0u));
-                        let _e416 = select(0u, 1u, ((_e410 & 32u) != 0u));
-                        let _e420 = (_e416 == 0u);
-                        let _e422 = (_e420 && (_e413 == 1u));
-                        let _e425 = select(_e409, (63u - _e409), _e422);
-                        let _e426 = select(_e410, (63u - _e410), _e422);
-                        let _e427 = select(_e425, _e426, _e420);
-                        let _e428 = select(_e426, _e425, _e420);
-                        let _e431 = select(0u, 1u, ((_e427 & 16u) != 0u));
-                        let _e434 = select(0u, 1u, ((_e428 & 16u) != 0u));
-                        let _e439 = (_e434 == 0u);
-                        let _e441 = (_e439 && (_e431 == 1u));
-                        let _e444 = select(_e427, (63u - _e427), _e441);
-                        let _e445 = select(_e428, (63u - _e428), _e441);
-                        let _e446 = select(_e444, _e445, _e439);
-                        let _e447 = select(_e445, _e444, _e439);
-                        let _e450 = select(0u, 1u, ((_e446 & 8u) != 0u));
-                        let _e453 = select(0u, 1u, ((_e447 & 8u) != 0u));
-                        let _e458 = (_e453 == 0u);
-                        let _e460 = (_e458 && (_e450 == 1u));
-                        let _e463 = select(_e446, (63u - _e446), _e460);
-                        let _e464 = select(_e447, (63u - _e447), _e460);
-                        let _e465 = select(_e463, _e464, _e458);
-                        let _e466 = select(_e464, _e463, _e458);
-                        let _e469 = select(0u, 1u, ((_e465 & 4u) != 0u));
-                        let _e472 = select(0u, 1u, ((_e466 & 4u) != 0u));
-                        let _e477 = (_e472 == 0u);
-                        let _e479 = (_e477 && (_e469 == 1u));
-                        let _e482 = select(_e465, (63u - _e465), _e479);
-                        let _e483 = select(_e466, (63u - _e466), _e479);
-                        let _e484 = select(_e482, _e483, _e477);
-                        let _e485 = select(_e483, _e482, _e477);
-                        let _e488 = select(0u, 1u, ((_e484 & 2u) != 0u));
-                        let _e491 = select(0u, 1u, ((_e485 & 2u) != 0u));
-                        let _e496 = (_e491 == 0u);
-                        let _e498 = (_e496 && (_e488 == 1u));
-                        let _e501 = select(_e484, (63u - _e484), _e498);
-                        let _e502 = select(_e485, (63u - _e485), _e498);
-                        let _e518 = f32(bitcast<i32>((((((((1024u * ((3u * _e413) ^ _e416)) + (256u * ((3u * _e431) ^ _e434))) + (64u * ((3u * _e450) ^ _e453))) + (16u * ((3u * _e469) ^ _e472))) + (4u * ((3u * _e488) ^ _e491))) + ((3u * select(0u, 1u, ((select(_e501, _e502, _e496) & 1u) != 0u))) ^ select(0u, 1u, ((select(_e502, _e501, _e496) & 1u) != 0u)))) + (288u * (_e408 % 64u)))));
-                        let _e520 = (0.5f + (_e518 * 0.7548777f));
-                        let _e524 = (0.5f + (_e518 * 0.5698403f));
-                        let _e527 = (6.2831855f * (_e520 - floor(_e520)));
-                        phi_1008_ = type_28(_e305, type_27(1u, type_26(vec2<u32>(_e62.x, _e62.y), vec3<f32>(_e320, _e329, _e99), _e405, sin(_e527), cos(_e527), (_e524 - floor(_e524)))));
+                        let _e395 = phi_735_;
+                        let _e398 = params.member.member_8;
+                        let _e399 = (_e62.x & 63u);
+                        let _e400 = (_e62.y & 63u);
+                        let _e403 = select(0u, 1u, ((_e399 & 32u) != 0u));
+                        let _e406 = select(0u, 1u, ((_e400 & 32u) != 0u));
+                        let _e410 = (_e406 == 0u);
+                        let _e412 = (_e410 && (_e403 == 1u));
+                        let _e415 = select(_e399, (63u - _e399), _e412);
+                        let _e416 = select(_e400, (63u - _e400), _e412);
+                        let _e417 = select(_e415, _e416, _e410);
+                        let _e418 = select(_e416, _e415, _e410);
+                        let _e421 = select(0u, 1u, ((_e417 & 16u) != 0u));
+                        let _e424 = select(0u, 1u, ((_e418 & 16u) != 0u));
+                        let _e429 = (_e424 == 0u);
+                        let _e431 = (_e429 && (_e421 == 1u));
+                        let _e434 = select(_e417, (63u - _e417), _e431);
+                        let _e435 = select(_e418, (63u - _e418), _e431);
+                        let _e436 = select(_e434, _e435, _e429);
+                        let _e437 = select(_e435, _e434, _e429);
+                        let _e440 = select(0u, 1u, ((_e436 & 8u) != 0u));
+                        let _e443 = select(0u, 1u, ((_e437 & 8u) != 0u));
+                        let _e448 = (_e443 == 0u);
+                        let _e450 = (_e448 && (_e440 == 1u));
+                        let _e453 = select(_e436, (63u - _e436), _e450);
+                        let _e454 = select(_e437, (63u - _e437), _e450);
+                        let _e455 = select(_e453, _e454, _e448);
+                        let _e456 = select(_e454, _e453, _e448);
+                        let _e459 = select(0u, 1u, ((_e455 & 4u) != 0u));
+                        let _e462 = select(0u, 1u, ((_e456 & 4u) != 0u));
+                        let _e467 = (_e462 == 0u);
+                        let _e469 = (_e467 && (_e459 == 1u));
+                        let _e472 = select(_e455, (63u - _e455), _e469);
+                        let _e473 = select(_e456, (63u - _e456), _e469);
+                        let _e474 = select(_e472, _e473, _e467);
+                        let _e475 = select(_e473, _e472, _e467);
+                        let _e478 = select(0u, 1u, ((_e474 & 2u) != 0u));
+                        let _e481 = select(0u, 1u, ((_e475 & 2u) != 0u));
+                        let _e486 = (_e481 == 0u);
+                        let _e488 = (_e486 && (_e478 == 1u));
+                        let _e491 = select(_e474, (63u - _e474), _e488);
+                        let _e492 = select(_e475, (63u - _e475), _e488);
+                        let _e508 = f32(bitcast<i32>((((((((1024u * ((3u * _e403) ^ _e406)) + (256u * ((3u * _e421) ^ _e424))) + (64u * ((3u * _e440) ^ _e443))) + (16u * ((3u * _e459) ^ _e462))) + (4u * ((3u * _e478) ^ _e481))) + ((3u * select(0u, 1u, ((select(_e491, _e492, _e486) & 1u) != 0u))) ^ select(0u, 1u, ((select(_e492, _e491, _e486) & 1u) != 0u)))) + (288u * (_e398 % 64u)))));
+                        let _e510 = (0.5f + (_e508 * 0.7548777f));
+                        let _e514 = (0.5f + (_e508 * 0.5698403f));
+                        let _e517 = (6.2831855f * (_e510 - floor(_e510)));
+                        phi_940_ = type_28(_e305, type_27(1u, type_26(vec2<u32>(_e62.x, _e62.y), vec3<f32>(_e320, _e329, _e99), _e395, sin(_e517), cos(_e517), (_e514 - floor(_e514)))));
                     } else {
-                        phi_1008_ = type_28(_e305, type_27(0u, type_27().member_1));
+                        phi_940_ = type_28(_e305, type_27(0u, type_27().member_1));
                     }
-                    let _e539 = phi_1008_;
-                    if (bitcast<i32>(_e539.member_1.member) != 0i) {
-                        let _e548 = params.member.member_5;
-                        let _e550 = select(_e548, 64u, (64u < _e548));
-                        let _e552 = select(_e550, _e64, (_e64 < _e550));
-                        let _e554 = select(1u, _e552, (1u < _e552));
-                        let _e557 = params.member.member_6;
-                        let _e559 = select(1u, _e557, (1u < _e557));
-                        phi_1043_ = 0u;
-                        phi_1046_ = 0f;
+                    let _e529 = phi_940_;
+                    if (bitcast<i32>(_e529.member_1.member) != 0i) {
+                        let _e538 = params.member.member_5;
+                        let _e540 = select(_e538, 64u, (64u < _e538));
+                        let _e542 = select(_e540, _e64, (_e64 < _e540));
+                        let _e544 = select(1u, _e542, (1u < _e542));
+                        let _e547 = params.member.member_6;
+                        let _e549 = select(1u, _e547, (1u < _e547));
+                        phi_975_ = 0u;
+                        phi_978_ = 0f;
                         loop {
-                            let _e561 = phi_1043_;
-                            let _e563 = phi_1046_;
-                            local_10 = _e563;
-                            let _e564 = (_e561 < _e554);
-                            if _e564 {
-                                if (_e561 < _e64) {
+                            let _e551 = phi_975_;
+                            let _e553 = phi_978_;
+                            local_10 = _e553;
+                            let _e554 = (_e551 < _e544);
+                            if _e554 {
+                                if (_e551 < _e64) {
                                 } else {
-                                    phi_2001_ = true;
+                                    phi_1867_ = true;
                                     break;
                                 }
-                                let _e569 = kernel.member[_e561][0u];
-                                let _e573 = kernel.member[_e561][1u];
-                                let _e578 = ((_e539.member_1.member_1.member_4 * _e569) - (_e539.member_1.member_1.member_3 * _e573));
-                                let _e581 = ((_e539.member_1.member_1.member_3 * _e569) + (_e539.member_1.member_1.member_4 * _e573));
-                                let _e586 = ((1f - (_e578 * _e578)) - (_e581 * _e581));
-                                let _e590 = sqrt(select(0f, _e586, ((_e586 > 0f) || false)));
-                                let _e591 = -(_e590);
-                                let _e595 = (-1f * _e539.member_1.member_1.member_2.z);
-                                let _e596 = (-1f * _e539.member_1.member_1.member_2.x);
-                                let _e598 = (1f / (_e595 + 1f));
-                                let _e599 = (_e598 * _e539.member_1.member_1.member_2.y);
-                                let _e603 = (_e599 * _e596);
-                                let _e623 = (_e595 > 0.9997f);
-                                let _e624 = (_e595 < -0.9997f);
-                                let _e634 = params.member.member_1;
-                                let _e638 = params.member.member_3;
-                                let _e641 = params.member.member_4;
-                                phi_1198_ = 1u;
-                                phi_1201_ = _e634;
-                                phi_1203_ = false;
-                                phi_1205_ = true;
-                                phi_1207_ = 0f;
-                                phi_1209_ = 0f;
+                                let _e559 = kernel.member[_e551][0u];
+                                let _e563 = kernel.member[_e551][1u];
+                                let _e568 = ((_e529.member_1.member_1.member_4 * _e559) - (_e529.member_1.member_1.member_3 * _e563));
+                                let _e571 = ((_e529.member_1.member_1.member_3 * _e559) + (_e529.member_1.member_1.member_4 * _e563));
+                                let _e576 = ((1f - (_e568 * _e568)) - (_e571 * _e571));
+                                let _e580 = sqrt(select(0f, _e576, ((_e576 > 0f) || false)));
+                                let _e581 = -(_e580);
+                                let _e585 = (-1f * _e529.member_1.member_1.member_2.z);
+                                let _e586 = (-1f * _e529.member_1.member_1.member_2.x);
+                                let _e588 = (1f / (_e585 + 1f));
+                                let _e589 = (_e588 * _e529.member_1.member_1.member_2.y);
+                                let _e593 = (_e589 * _e586);
+                                let _e613 = (_e585 > 0.9997f);
+                                let _e614 = (_e585 < -0.9997f);
+                                let _e624 = params.member.member_1;
+                                let _e628 = params.member.member_3;
+                                let _e631 = params.member.member_4;
+                                phi_1130_ = 1u;
+                                phi_1133_ = _e624;
+                                phi_1135_ = false;
+                                phi_1137_ = true;
+                                phi_1139_ = 0f;
+                                phi_1141_ = 0f;
                                 loop {
-                                    let _e647 = phi_1198_;
-                                    let _e649 = phi_1201_;
-                                    let _e651 = phi_1203_;
-                                    let _e653 = phi_1205_;
-                                    let _e655 = phi_1207_;
-                                    let _e657 = phi_1209_;
-                                    local_4 = _e649;
-                                    local_6 = _e651;
-                                    local_8 = _e649;
-                                    local_9 = _e651;
-                                    let _e658 = (_e647 <= _e559);
-                                    if _e658 {
-                                        let _e664 = (((-(_e539.member_1.member_1.member_5) + f32(_e647)) * _e634) / f32(_e559));
-                                        let _e669 = (_e539.member_1.member_1.member_1.x + (select(select(((((_e595 + (_e599 * _e539.member_1.member_1.member_2.y)) * _e578) + (_e603 * _e581)) + (_e596 * _e591)), _e578, _e624), _e578, _e623) * _e664));
-                                        let _e671 = (_e539.member_1.member_1.member_1.y + (select(select((((_e603 * _e578) + ((_e595 + ((_e598 * _e596) * _e596)) * _e581)) + (-(_e539.member_1.member_1.member_2.y) * _e591)), -(_e581), _e624), _e581, _e623) * _e664));
-                                        let _e673 = (_e539.member_1.member_1.member_1.z + (select(select((((_e539.member_1.member_1.member_2.x * _e578) + (_e539.member_1.member_1.member_2.y * _e581)) + (_e595 * _e591)), _e590, _e624), _e591, _e623) * _e664));
-                                        let _e679 = params.member.member.member_1[0u];
-                                        let _e682 = (((_e669 * 0.5f) / (_e673 * _e679)) + 0.5f);
-                                        let _e688 = params.member.member.member_1[1u];
-                                        let _e691 = (0.5f - ((_e671 * 0.5f) / (_e673 * _e688)));
-                                        let _e701 = select(false, select(false, select(false, select(false, (_e691 <= 1f), (_e691 >= 0f)), select(false, (_e682 <= 1f), (_e682 >= 0f))), (_e673 > 0f)), _e653);
-                                        if _e701 {
-                                            let _e702 = (_e682 * _e75);
-                                            let _e705 = f32(bitcast<i32>((_e80 - 1u)));
-                                            let _e707 = select(0f, _e702, (_e702 > 0f));
-                                            let _e714 = (_e691 * _e85);
-                                            let _e717 = f32(bitcast<i32>((_e90 - 1u)));
-                                            let _e719 = select(0f, _e714, (_e714 > 0f));
-                                            let _e730 = depth.member[(((bitcast<u32>((floor(select(_e717, _e719, (_e719 < _e717))) + 8388608f)) - 1258291200u) * _e80) + (bitcast<u32>((floor(select(_e705, _e707, (_e707 < _e705))) + 8388608f)) - 1258291200u))];
-                                            let _e734 = select(_e103, _e730, select(false, (_e730 < _e103), (_e730 > 0f)));
-                                            let _e737 = (((_e682 * 2f) - 1f) * _e679);
-                                            let _e741 = (((_e691 * -2f) + 1f) * _e688);
-                                            let _e743 = (_e669 - (_e737 * _e734));
-                                            let _e744 = (_e671 - (_e741 * _e734));
-                                            let _e745 = (_e673 - _e734);
-                                            let _e751 = sqrt((((_e743 * _e743) + (_e744 * _e744)) + (_e745 * _e745)));
-                                            let _e756 = (select(0f, select(1f, _e682, (_e682 < 1f)), (_e682 > 0f)) * _e75);
-                                            let _e758 = select(0f, _e756, (_e756 > 0f));
-                                            let _e764 = (bitcast<u32>((floor(select(_e705, _e758, (_e758 < _e705))) + 8388608f)) - 1258291200u);
-                                            let _e769 = (select(0f, select(1f, _e691, (_e691 < 1f)), (_e691 > 0f)) * _e85);
-                                            let _e771 = select(0f, _e769, (_e769 > 0f));
-                                            let _e777 = (bitcast<u32>((floor(select(_e717, _e771, (_e771 < _e717))) + 8388608f)) - 1258291200u);
-                                            let _e800 = normals.member[((_e777 * _e80) + _e764)];
-                                            let _e808 = (f32((bitcast<i32>(((_e800 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e808 != _e808) {
-                                                phi_1972_ = true;
+                                    let _e637 = phi_1130_;
+                                    let _e639 = phi_1133_;
+                                    let _e641 = phi_1135_;
+                                    let _e643 = phi_1137_;
+                                    let _e645 = phi_1139_;
+                                    let _e647 = phi_1141_;
+                                    local_4 = _e639;
+                                    local_6 = _e641;
+                                    local_8 = _e639;
+                                    local_9 = _e641;
+                                    let _e648 = (_e637 <= _e549);
+                                    if _e648 {
+                                        let _e654 = (((-(_e529.member_1.member_1.member_5) + f32(_e637)) * _e624) / f32(_e549));
+                                        let _e659 = (_e529.member_1.member_1.member_1.x + (select(select(((((_e585 + (_e589 * _e529.member_1.member_1.member_2.y)) * _e568) + (_e593 * _e571)) + (_e586 * _e581)), _e568, _e614), _e568, _e613) * _e654));
+                                        let _e661 = (_e529.member_1.member_1.member_1.y + (select(select((((_e593 * _e568) + ((_e585 + ((_e588 * _e586) * _e586)) * _e571)) + (-(_e529.member_1.member_1.member_2.y) * _e581)), -(_e571), _e614), _e571, _e613) * _e654));
+                                        let _e663 = (_e529.member_1.member_1.member_1.z + (select(select((((_e529.member_1.member_1.member_2.x * _e568) + (_e529.member_1.member_1.member_2.y * _e571)) + (_e585 * _e581)), _e580, _e614), _e581, _e613) * _e654));
+                                        let _e669 = params.member.member.member_1[0u];
+                                        let _e672 = (((_e659 * 0.5f) / (_e663 * _e669)) + 0.5f);
+                                        let _e678 = params.member.member.member_1[1u];
+                                        let _e681 = (0.5f - ((_e661 * 0.5f) / (_e663 * _e678)));
+                                        let _e691 = select(false, select(false, select(false, select(false, (_e681 <= 1f), (_e681 >= 0f)), select(false, (_e672 <= 1f), (_e672 >= 0f))), (_e663 > 0f)), _e643);
+                                        if _e691 {
+                                            let _e692 = (_e672 * _e75);
+                                            let _e695 = f32(bitcast<i32>((_e80 - 1u)));
+                                            let _e697 = select(0f, _e692, (_e692 > 0f));
+                                            let _e704 = (_e681 * _e85);
+                                            let _e707 = f32(bitcast<i32>((_e90 - 1u)));
+                                            let _e709 = select(0f, _e704, (_e704 > 0f));
+                                            let _e720 = depth.member[(((bitcast<u32>((floor(select(_e707, _e709, (_e709 < _e707))) + 8388608f)) - 1258291200u) * _e80) + (bitcast<u32>((floor(select(_e695, _e697, (_e697 < _e695))) + 8388608f)) - 1258291200u))];
+                                            let _e724 = select(_e103, _e720, select(false, (_e720 < _e103), (_e720 > 0f)));
+                                            let _e727 = (((_e672 * 2f) - 1f) * _e669);
+                                            let _e731 = (((_e681 * -2f) + 1f) * _e678);
+                                            let _e733 = (_e659 - (_e727 * _e724));
+                                            let _e734 = (_e661 - (_e731 * _e724));
+                                            let _e735 = (_e663 - _e724);
+                                            let _e741 = sqrt((((_e733 * _e733) + (_e734 * _e734)) + (_e735 * _e735)));
+                                            let _e746 = (select(0f, select(1f, _e672, (_e672 < 1f)), (_e672 > 0f)) * _e75);
+                                            let _e748 = select(0f, _e746, (_e746 > 0f));
+                                            let _e754 = (bitcast<u32>((floor(select(_e695, _e748, (_e748 < _e695))) + 8388608f)) - 1258291200u);
+                                            let _e759 = (select(0f, select(1f, _e681, (_e681 < 1f)), (_e681 > 0f)) * _e85);
+                                            let _e761 = select(0f, _e759, (_e759 > 0f));
+                                            let _e767 = (bitcast<u32>((floor(select(_e707, _e761, (_e761 < _e707))) + 8388608f)) - 1258291200u);
+                                            let _e790 = normals.member[((_e767 * _e80) + _e754)];
+                                            let _e793 = f32(bitcast<i32>((_e790 & 255u)));
+                                            let _e797 = (select(_e793, (_e793 - 256f), (_e793 >= 128f)) * 0.007874016f);
+                                            let _e800 = select(-1f, _e797, ((_e797 > -1f) || false));
+                                            let _e805 = f32(bitcast<i32>(((_e790 >> bitcast<u32>(8u)) & 255u)));
+                                            let _e809 = (select(_e805, (_e805 - 256f), (_e805 >= 128f)) * 0.007874016f);
+                                            let _e812 = select(-1f, _e809, ((_e809 > -1f) || false));
+                                            let _e814 = (1f - abs(_e800));
+                                            let _e815 = abs(_e812);
+                                            let _e816 = (_e814 - _e815);
+                                            let _e817 = (_e816 < 0f);
+                                            let _e825 = select(_e800, ((1f - _e815) * select(1f, -1f, (_e800 < 0f))), _e817);
+                                            let _e826 = select(_e812, (_e814 * select(1f, -1f, (_e812 < 0f))), _e817);
+                                            let _e833 = (1f / sqrt((((_e825 * _e825) + (_e826 * _e826)) + (_e816 * _e816))));
+                                            let _e834 = (_e825 * _e833);
+                                            let _e835 = (_e826 * _e833);
+                                            let _e837 = -((_e816 * _e833));
+                                            let _e841 = (((_e834 * _e727) + (_e835 * _e731)) + _e837);
+                                            let _e850 = select(((((_e834 * ((((((f32(bitcast<i32>(_e754)) + 0.5f) * (1f / _e75)) * 2f) - 1f) * _e669) * _e724)) + (_e835 * ((((((f32(bitcast<i32>(_e767)) + 0.5f) * (1f / _e85)) * -2f) + 1f) * _e678) * _e724))) + (_e837 * _e724)) / _e841), _e724, (abs(_e841) < 0.001f));
+                                            let _e860 = select(select(((_e663 - _e850) > _e631), true, (_e663 < (_e850 * (1f + _e628)))), true, select(false, (_e767 == _e529.member_1.member_1.member.y), (_e754 == _e529.member_1.member_1.member.x)));
+                                            let _e862 = select(false, !(_e860), _e691);
+                                            let _e863 = (_e645 + _e741);
+                                            let _e872 = select(false, _e860, _e691);
+                                            if _e872 {
+                                                phi_1590_ = (_e637 + 1u);
                                             } else {
-                                                phi_1972_ = (-1f >= _e808);
+                                                phi_1590_ = u32();
                                             }
-                                            let _e812 = phi_1972_;
-                                            let _e813 = select(_e808, -1f, _e812);
-                                            let _e823 = (f32((bitcast<i32>((((_e800 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                                            if (_e823 != _e823) {
-                                                phi_1987_ = true;
-                                            } else {
-                                                phi_1987_ = (-1f >= _e823);
-                                            }
-                                            let _e827 = phi_1987_;
-                                            let _e828 = select(_e823, -1f, _e827);
-                                            let _e831 = (1f - abs(_e813));
-                                            let _e832 = abs(_e828);
-                                            let _e833 = (_e831 - _e832);
-                                            if (_e833 < 0f) {
-                                                phi_1948_ = vec2<f32>(((1f - _e832) * select(1f, -1f, (_e813 < 0f))), (_e831 * select(1f, -1f, (_e828 < 0f))));
-                                            } else {
-                                                phi_1948_ = vec2<f32>(_e813, _e828);
-                                            }
-                                            let _e844 = phi_1948_;
-                                            let _e853 = (1f / sqrt((((_e844.x * _e844.x) + (_e844.y * _e844.y)) + (_e833 * _e833))));
-                                            let _e854 = (_e844.x * _e853);
-                                            let _e855 = (_e844.y * _e853);
-                                            let _e857 = -((_e833 * _e853));
-                                            let _e861 = (((_e854 * _e737) + (_e855 * _e741)) + _e857);
-                                            let _e870 = select(((((_e854 * ((((((f32(bitcast<i32>(_e764)) + 0.5f) * (1f / _e75)) * 2f) - 1f) * _e679) * _e734)) + (_e855 * ((((((f32(bitcast<i32>(_e777)) + 0.5f) * (1f / _e85)) * -2f) + 1f) * _e688) * _e734))) + (_e857 * _e734)) / _e861), _e734, (abs(_e861) < 0.001f));
-                                            let _e880 = select(select(((_e673 - _e870) > _e641), true, (_e673 < (_e870 * (1f + _e638)))), true, select(false, (_e777 == _e539.member_1.member_1.member.y), (_e764 == _e539.member_1.member_1.member.x)));
-                                            let _e882 = select(false, !(_e880), _e701);
-                                            let _e883 = (_e655 + _e751);
-                                            let _e892 = select(false, _e880, _e701);
-                                            if _e892 {
-                                                phi_1587_ = (_e647 + 1u);
-                                            } else {
-                                                phi_1587_ = u32();
-                                            }
-                                            let _e895 = phi_1587_;
-                                            phi_1589_ = _e895;
-                                            phi_1590_ = select(_e649, select((_e657 + ((_e655 * (_e664 - _e657)) / _e883)), _e657, (_e883 < 0.000001f)), _e882);
-                                            phi_1591_ = select(_e882, true, _e651);
-                                            phi_1592_ = _e892;
-                                            phi_1593_ = _e751;
-                                            phi_1596_ = _e892;
-                                            phi_1597_ = select(true, false, _e892);
+                                            let _e875 = phi_1590_;
+                                            phi_1592_ = _e875;
+                                            phi_1593_ = select(_e639, select((_e647 + ((_e645 * (_e654 - _e647)) / _e863)), _e647, (_e863 < 0.000001f)), _e862);
+                                            phi_1594_ = select(_e862, true, _e641);
+                                            phi_1595_ = _e872;
+                                            phi_1596_ = _e741;
+                                            phi_1599_ = _e872;
+                                            phi_1600_ = select(true, false, _e872);
                                         } else {
-                                            phi_1589_ = u32();
-                                            phi_1590_ = f32();
-                                            phi_1591_ = bool();
-                                            phi_1592_ = bool();
+                                            phi_1592_ = u32();
                                             phi_1593_ = f32();
-                                            phi_1596_ = false;
-                                            phi_1597_ = false;
+                                            phi_1594_ = bool();
+                                            phi_1595_ = bool();
+                                            phi_1596_ = f32();
+                                            phi_1599_ = false;
+                                            phi_1600_ = false;
                                         }
-                                        let _e898 = phi_1589_;
-                                        let _e900 = phi_1590_;
-                                        let _e902 = phi_1591_;
-                                        let _e904 = phi_1592_;
-                                        let _e906 = phi_1593_;
-                                        let _e908 = phi_1596_;
-                                        let _e910 = phi_1597_;
-                                        phi_1199_ = _e898;
-                                        phi_1202_ = _e900;
-                                        phi_1204_ = _e902;
-                                        phi_1206_ = _e904;
-                                        phi_1208_ = _e906;
-                                        phi_1210_ = _e664;
-                                        phi_1601_ = _e908;
-                                        phi_1603_ = _e910;
-                                        phi_1604_ = select(true, false, _e701);
+                                        let _e878 = phi_1592_;
+                                        let _e880 = phi_1593_;
+                                        let _e882 = phi_1594_;
+                                        let _e884 = phi_1595_;
+                                        let _e886 = phi_1596_;
+                                        let _e888 = phi_1599_;
+                                        let _e890 = phi_1600_;
+                                        phi_1131_ = _e878;
+                                        phi_1134_ = _e880;
+                                        phi_1136_ = _e882;
+                                        phi_1138_ = _e884;
+                                        phi_1140_ = _e886;
+                                        phi_1142_ = _e654;
+                                        phi_1604_ = _e888;
+                                        phi_1606_ = _e890;
+                                        phi_1607_ = select(true, false, _e691);
                                     } else {
-                                        phi_1199_ = u32();
-                                        phi_1202_ = f32();
-                                        phi_1204_ = bool();
-                                        phi_1206_ = bool();
-                                        phi_1208_ = f32();
-                                        phi_1210_ = f32();
-                                        phi_1601_ = false;
-                                        phi_1603_ = false;
+                                        phi_1131_ = u32();
+                                        phi_1134_ = f32();
+                                        phi_1136_ = bool();
+                                        phi_1138_ = bool();
+                                        phi_1140_ = f32();
+                                        phi_1142_ = f32();
                                         phi_1604_ = false;
+                                        phi_1606_ = false;
+                                        phi_1607_ = false;
                                     }
-                                    let _e913 = phi_1199_;
-                                    let _e915 = phi_1202_;
-                                    let _e917 = phi_1204_;
-                                    let _e919 = phi_1206_;
-                                    let _e921 = phi_1208_;
-                                    let _e923 = phi_1210_;
-                                    let _e925 = phi_1601_;
-                                    let _e927 = phi_1603_;
-                                    let _e929 = phi_1604_;
-                                    let _e930 = select(true, false, _e658);
-                                    local = _e930;
-                                    local_1 = _e927;
-                                    local_2 = _e930;
-                                    local_3 = _e929;
-                                    local_5 = _e915;
-                                    local_7 = _e917;
+                                    let _e893 = phi_1131_;
+                                    let _e895 = phi_1134_;
+                                    let _e897 = phi_1136_;
+                                    let _e899 = phi_1138_;
+                                    let _e901 = phi_1140_;
+                                    let _e903 = phi_1142_;
+                                    let _e905 = phi_1604_;
+                                    let _e907 = phi_1606_;
+                                    let _e909 = phi_1607_;
+                                    let _e910 = select(true, false, _e648);
+                                    local = _e910;
+                                    local_1 = _e907;
+                                    local_2 = _e910;
+                                    local_3 = _e909;
+                                    local_5 = _e895;
+                                    local_7 = _e897;
                                     continue;
                                     continuing {
-                                        phi_1198_ = _e913;
-                                        phi_1201_ = _e915;
-                                        phi_1203_ = _e917;
-                                        phi_1205_ = _e919;
-                                        phi_1207_ = _e921;
-                                        phi_1209_ = _e923;
-                                        break if !(_e925);
+                                        phi_1130_ = _e893;
+                                        phi_1133_ = _e895;
+                                        phi_1135_ = _e897;
+                                        phi_1137_ = _e899;
+                                        phi_1139_ = _e901;
+                                        phi_1141_ = _e903;
+                                        break if !(_e905);
                                     }
                                 }
-                                let _e933 = local;
-                                let _e935 = local_1;
-                                let _e936 = select(_e935, false, _e933);
-                                let _e938 = local_2;
-                                let _e940 = local_3;
-                                let _e942 = select(select(_e940, false, _e938), false, _e936);
-                                let _e944 = local_4;
-                                let _e946 = local_5;
-                                let _e949 = local_6;
-                                let _e951 = local_7;
-                                let _e953 = select(_e936, true, _e942);
-                                let _e955 = local_8;
-                                let _e958 = local_9;
-                                let _e962 = params.member.member_7;
-                                if (_e962 == 1u) {
-                                    phi_1644_ = 0f;
+                                let _e913 = local;
+                                let _e915 = local_1;
+                                let _e916 = select(_e915, false, _e913);
+                                let _e918 = local_2;
+                                let _e920 = local_3;
+                                let _e922 = select(select(_e920, false, _e918), false, _e916);
+                                let _e924 = local_4;
+                                let _e926 = local_5;
+                                let _e929 = local_6;
+                                let _e931 = local_7;
+                                let _e933 = select(_e916, true, _e922);
+                                let _e935 = local_8;
+                                let _e938 = local_9;
+                                let _e942 = params.member.member_7;
+                                if (_e942 == 1u) {
+                                    phi_1647_ = 0f;
                                 } else {
-                                    let _e964 = (select(_e955, select(_e946, _e944, _e942), _e953) / _e634);
-                                    phi_1644_ = select(0f, select(1f, _e964, (_e964 < 1f)), (_e964 > 0f));
+                                    let _e944 = (select(_e935, select(_e926, _e924, _e922), _e933) / _e624);
+                                    phi_1647_ = select(0f, select(1f, _e944, (_e944 < 1f)), (_e944 > 0f));
                                 }
-                                let _e970 = phi_1644_;
-                                phi_1044_ = (_e561 + 1u);
-                                phi_1047_ = (_e563 + select(1f, _e970, select(_e958, select(_e951, _e949, _e942), _e953)));
+                                let _e950 = phi_1647_;
+                                phi_976_ = (_e551 + 1u);
+                                phi_979_ = (_e553 + select(1f, _e950, select(_e938, select(_e931, _e929, _e922), _e933)));
                             } else {
-                                phi_1044_ = u32();
-                                phi_1047_ = f32();
+                                phi_976_ = u32();
+                                phi_979_ = f32();
                             }
-                            let _e975 = phi_1044_;
-                            let _e977 = phi_1047_;
+                            let _e955 = phi_976_;
+                            let _e957 = phi_979_;
                             continue;
                             continuing {
-                                phi_1043_ = _e975;
-                                phi_1046_ = _e977;
-                                phi_2001_ = false;
-                                break if !(_e564);
+                                phi_975_ = _e955;
+                                phi_978_ = _e957;
+                                phi_1867_ = false;
+                                break if !(_e554);
                             }
                         }
-                        let _e980 = phi_2001_;
-                        if _e980 {
+                        let _e960 = phi_1867_;
+                        if _e960 {
                             break;
                         }
-                        let _e983 = local_10;
-                        let _e987 = params.member.member_2;
-                        let _e988 = pow((_e983 / f32(_e554)), _e987);
-                        let _e989 = (_e988 * 0.6666667f);
-                        phi_1709_ = type_29(_e988, (bitcast<u32>((floor(((select(0f, select(1f, _e989, (_e989 < 1f)), (_e989 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u), _e539.member);
+                        let _e963 = local_10;
+                        let _e967 = params.member.member_2;
+                        let _e968 = pow((_e963 / f32(_e544)), _e967);
+                        let _e969 = (_e968 * 0.6666667f);
+                        phi_1712_ = type_29(_e968, (bitcast<u32>((floor(((select(0f, select(1f, _e969, (_e969 < 1f)), (_e969 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u), _e529.member);
                     } else {
-                        phi_1709_ = type_29(1f, (bitcast<u32>((floor(170.5f) + 8388608f)) - 1258291200u), _e539.member);
+                        phi_1712_ = type_29(1f, (bitcast<u32>((floor(170.5f) + 8388608f)) - 1258291200u), _e529.member);
                     }
-                    let _e1007 = phi_1709_;
+                    let _e987 = phi_1712_;
                     if (_e96 < arrayLength((&ao.member))) {
                     } else {
                         break;
                     }
-                    ao.member[_e96] = _e1007.member;
+                    ao.member[_e96] = _e987.member;
                     if (_e96 < arrayLength((&terms.member))) {
                     } else {
                         break;
                     }
-                    terms.member[_e96] = _e1007.member_1;
+                    terms.member[_e96] = _e987.member_1;
                     if (_e96 < arrayLength((&edges.member))) {
                     } else {
                         break;
                     }
-                    edges.member[_e96] = _e1007.member_2;
+                    edges.member[_e96] = _e987.member_2;
                 }
             }
             break;

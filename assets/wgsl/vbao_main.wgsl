@@ -77,68 +77,65 @@ var<uniform> params: type_24;
 
 fn function_() {
     var local: array<type_26, 4>;
-    var phi_523_: type_21;
-    var phi_530_: u32;
-    var phi_537_: u32;
-    var phi_2926_: bool;
-    var phi_2941_: bool;
-    var phi_2902_: vec2<f32>;
-    var phi_3326_: bool;
-    var phi_996_: u32;
-    var phi_999_: f32;
-    var phi_1001_: f32;
+    var phi_451_: type_21;
+    var phi_458_: u32;
+    var phi_465_: u32;
+    var phi_3219_: bool;
+    var phi_995_: u32;
+    var phi_998_: f32;
+    var phi_1000_: f32;
+    var phi_1193_: u32;
+    var phi_1196_: u32;
+    var phi_1249_: f32;
+    var phi_1662_: bool;
+    var phi_2009_: f32;
+    var phi_2059_: u32;
+    var phi_2062_: u32;
+    var phi_2063_: u32;
+    var phi_2064_: bool;
+    var phi_2078_: u32;
+    var phi_2098_: bool;
+    var phi_2445_: f32;
+    var phi_2495_: u32;
+    var phi_2498_: u32;
+    var phi_2499_: u32;
+    var phi_2500_: bool;
+    var phi_2514_: u32;
     var phi_1194_: u32;
     var phi_1197_: u32;
-    var phi_1250_: f32;
-    var phi_1663_: bool;
-    var phi_2010_: f32;
-    var phi_2060_: u32;
-    var phi_2063_: u32;
-    var phi_2064_: u32;
-    var phi_2065_: bool;
-    var phi_2079_: u32;
-    var phi_2099_: bool;
-    var phi_2446_: f32;
-    var phi_2496_: u32;
-    var phi_2499_: u32;
-    var phi_2500_: u32;
-    var phi_2501_: bool;
-    var phi_2515_: u32;
-    var phi_1195_: u32;
-    var phi_1198_: u32;
     var local_1: u32;
+    var phi_2595_: u32;
+    var phi_2598_: f32;
+    var local_2: u32;
     var phi_2596_: u32;
     var phi_2599_: f32;
-    var local_2: u32;
-    var phi_2597_: u32;
-    var phi_2600_: f32;
-    var phi_3205_: bool;
+    var phi_3098_: bool;
     var local_3: f32;
-    var phi_3418_: bool;
+    var phi_3312_: bool;
+    var phi_2648_: f32;
     var phi_2649_: f32;
-    var phi_2650_: f32;
+    var phi_2543_: u32;
+    var phi_2546_: f32;
+    var phi_2548_: f32;
+    var local_4: u32;
     var phi_2544_: u32;
     var phi_2547_: f32;
     var phi_2549_: f32;
-    var local_4: u32;
-    var phi_2545_: u32;
-    var phi_2548_: f32;
-    var phi_2550_: f32;
     var local_5: f32;
-    var phi_3412_: bool;
+    var phi_3306_: bool;
+    var phi_2650_: f32;
     var phi_2651_: f32;
-    var phi_2652_: f32;
-    var phi_3411_: bool;
-    var phi_997_: u32;
-    var phi_1000_: f32;
-    var phi_1002_: f32;
-    var phi_3410_: bool;
+    var phi_3305_: bool;
+    var phi_996_: u32;
+    var phi_999_: f32;
+    var phi_1001_: f32;
+    var phi_3304_: bool;
     var local_6: f32;
     var local_7: f32;
     var local_8: f32;
-    var phi_2660_: f32;
-    var phi_3179_: bool;
-    var phi_2701_: u32;
+    var phi_2659_: f32;
+    var phi_3080_: bool;
+    var phi_2700_: u32;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -146,7 +143,7 @@ fn function_() {
             let _e113 = (override_type == 0u);
             if _e113 {
                 let _e145 = params.member.member_4;
-                phi_523_ = _e145;
+                phi_451_ = _e145;
             } else {
                 let _e123 = params.member.member_4.member;
                 let _e127 = params.member.member_4.member_1;
@@ -154,23 +151,23 @@ fn function_() {
                 let _e135 = params.member.member_4.member_11;
                 let _e139 = params.member.member_4.member_12;
                 let _e143 = params.member.member_4.member_14;
-                phi_523_ = type_21(_e123, _e127, bitcast<f32>(override_type_5), bitcast<f32>(override_type_4), bitcast<f32>(override_type_2), bitcast<f32>(override_type_1), bitcast<f32>(override_type_3), bitcast<f32>(override_type_6), override_type_7, override_type_8, _e131, _e135, _e139, override_type_9, _e143);
+                phi_451_ = type_21(_e123, _e127, bitcast<f32>(override_type_5), bitcast<f32>(override_type_4), bitcast<f32>(override_type_2), bitcast<f32>(override_type_1), bitcast<f32>(override_type_3), bitcast<f32>(override_type_6), override_type_7, override_type_8, _e131, _e135, _e139, override_type_9, _e143);
             }
-            let _e147 = phi_523_;
+            let _e147 = phi_451_;
             if _e113 {
                 let _e150 = params.member.member_2;
-                phi_530_ = _e150;
+                phi_458_ = _e150;
             } else {
-                phi_530_ = override_type_10;
+                phi_458_ = override_type_10;
             }
-            let _e152 = phi_530_;
+            let _e152 = phi_458_;
             if _e113 {
                 let _e155 = params.member.member_3;
-                phi_537_ = _e155;
+                phi_465_ = _e155;
             } else {
-                phi_537_ = override_type_11;
+                phi_465_ = override_type_11;
             }
-            let _e157 = phi_537_;
+            let _e157 = phi_465_;
             let _e160 = params.member.member;
             let _e163 = params.member.member_1;
             let _e171 = select(select(u32(_e147.member.member.x), 0u, (_e147.member.member.x < 0f)), 4294967295u, (_e147.member.member.x > 4294967000f));
@@ -245,546 +242,533 @@ fn function_() {
                     let _e403 = (_e393 * _e401);
                     let _e404 = (_e394 * _e401);
                     let _e407 = normals.member[_e185];
-                    let _e415 = (f32((bitcast<i32>(((_e407 & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e415 != _e415) {
-                        phi_2926_ = true;
-                    } else {
-                        phi_2926_ = (-1f >= _e415);
-                    }
-                    let _e419 = phi_2926_;
-                    let _e420 = select(_e415, -1f, _e419);
-                    let _e430 = (f32((bitcast<i32>((((_e407 >> bitcast<u32>(8i)) & 255u) << bitcast<u32>(24i))) >> bitcast<u32>(24i))) * 0.007874016f);
-                    if (_e430 != _e430) {
-                        phi_2941_ = true;
-                    } else {
-                        phi_2941_ = (-1f >= _e430);
-                    }
-                    let _e434 = phi_2941_;
-                    let _e435 = select(_e430, -1f, _e434);
-                    let _e438 = (1f - abs(_e420));
-                    let _e439 = abs(_e435);
-                    let _e440 = (_e438 - _e439);
-                    if (_e440 < 0f) {
-                        phi_2902_ = vec2<f32>(((1f - _e439) * select(1f, -1f, (_e420 < 0f))), (_e438 * select(1f, -1f, (_e435 < 0f))));
-                    } else {
-                        phi_2902_ = vec2<f32>(_e420, _e435);
-                    }
-                    let _e451 = phi_2902_;
-                    let _e460 = (1f / sqrt((((_e451.x * _e451.x) + (_e451.y * _e451.y)) + (_e440 * _e440))));
-                    let _e461 = (_e451.x * _e460);
-                    let _e462 = (_e451.y * _e460);
-                    let _e463 = (_e440 * _e460);
-                    let _e464 = -(_e463);
-                    let _e470 = ((((_e461 * _e402) + (_e462 * _e403)) + (_e464 * _e404)) < 0f);
-                    let _e473 = select(_e461, -(_e461), _e470);
-                    let _e474 = select(_e462, -(_e462), _e470);
-                    let _e475 = select(_e464, _e463, _e470);
-                    let _e482 = ((_e147.member_1 * _e147.member_2) / (((_e188 * 1.99998f) * _e147.member.member_1.x) / _e147.member.member.x));
-                    let _e485 = (_e110.x & 63u);
-                    let _e486 = (_e110.y & 63u);
-                    let _e489 = select(0u, 1u, ((_e485 & 32u) != 0u));
-                    let _e492 = select(0u, 1u, ((_e486 & 32u) != 0u));
-                    let _e496 = (_e492 == 0u);
-                    let _e498 = (_e496 && (_e489 == 1u));
-                    let _e501 = select(_e485, (63u - _e485), _e498);
-                    let _e502 = select(_e486, (63u - _e486), _e498);
-                    let _e503 = select(_e501, _e502, _e496);
-                    let _e504 = select(_e502, _e501, _e496);
-                    let _e507 = select(0u, 1u, ((_e503 & 16u) != 0u));
-                    let _e510 = select(0u, 1u, ((_e504 & 16u) != 0u));
-                    let _e515 = (_e510 == 0u);
-                    let _e517 = (_e515 && (_e507 == 1u));
-                    let _e520 = select(_e503, (63u - _e503), _e517);
-                    let _e521 = select(_e504, (63u - _e504), _e517);
-                    let _e522 = select(_e520, _e521, _e515);
-                    let _e523 = select(_e521, _e520, _e515);
-                    let _e526 = select(0u, 1u, ((_e522 & 8u) != 0u));
-                    let _e529 = select(0u, 1u, ((_e523 & 8u) != 0u));
-                    let _e534 = (_e529 == 0u);
-                    let _e536 = (_e534 && (_e526 == 1u));
-                    let _e539 = select(_e522, (63u - _e522), _e536);
-                    let _e540 = select(_e523, (63u - _e523), _e536);
-                    let _e541 = select(_e539, _e540, _e534);
-                    let _e542 = select(_e540, _e539, _e534);
-                    let _e545 = select(0u, 1u, ((_e541 & 4u) != 0u));
-                    let _e548 = select(0u, 1u, ((_e542 & 4u) != 0u));
-                    let _e553 = (_e548 == 0u);
-                    let _e555 = (_e553 && (_e545 == 1u));
-                    let _e558 = select(_e541, (63u - _e541), _e555);
-                    let _e559 = select(_e542, (63u - _e542), _e555);
-                    let _e560 = select(_e558, _e559, _e553);
-                    let _e561 = select(_e559, _e558, _e553);
-                    let _e564 = select(0u, 1u, ((_e560 & 2u) != 0u));
-                    let _e567 = select(0u, 1u, ((_e561 & 2u) != 0u));
-                    let _e572 = (_e567 == 0u);
-                    let _e574 = (_e572 && (_e564 == 1u));
-                    let _e577 = select(_e560, (63u - _e560), _e574);
-                    let _e578 = select(_e561, (63u - _e561), _e574);
-                    let _e594 = f32(bitcast<i32>((((((((1024u * ((3u * _e489) ^ _e492)) + (256u * ((3u * _e507) ^ _e510))) + (64u * ((3u * _e526) ^ _e529))) + (16u * ((3u * _e545) ^ _e548))) + (4u * ((3u * _e564) ^ _e567))) + ((3u * select(0u, 1u, ((select(_e577, _e578, _e572) & 1u) != 0u))) ^ select(0u, 1u, ((select(_e578, _e577, _e572) & 1u) != 0u)))) + (288u * (_e147.member_11 % 64u)))));
-                    let _e596 = (0.5f + (_e594 * 0.7548777f));
-                    let _e600 = (0.5f + (_e594 * 0.5698403f));
-                    let _e607 = select(false, (_e188 < _e147.member.member_3), (_e188 > 0f));
-                    if _e607 {
-                        let _e610 = select(1u, _e147.member_8, (1u < _e147.member_8));
-                        phi_3326_ = false;
-                        phi_996_ = 0u;
-                        phi_999_ = 0f;
-                        phi_1001_ = 0f;
+                    let _e410 = f32(bitcast<i32>((_e407 & 255u)));
+                    let _e414 = (select(_e410, (_e410 - 256f), (_e410 >= 128f)) * 0.007874016f);
+                    let _e417 = select(-1f, _e414, ((_e414 > -1f) || false));
+                    let _e422 = f32(bitcast<i32>(((_e407 >> bitcast<u32>(8u)) & 255u)));
+                    let _e426 = (select(_e422, (_e422 - 256f), (_e422 >= 128f)) * 0.007874016f);
+                    let _e429 = select(-1f, _e426, ((_e426 > -1f) || false));
+                    let _e431 = (1f - abs(_e417));
+                    let _e432 = abs(_e429);
+                    let _e433 = (_e431 - _e432);
+                    let _e434 = (_e433 < 0f);
+                    let _e442 = select(_e417, ((1f - _e432) * select(1f, -1f, (_e417 < 0f))), _e434);
+                    let _e443 = select(_e429, (_e431 * select(1f, -1f, (_e429 < 0f))), _e434);
+                    let _e450 = (1f / sqrt((((_e442 * _e442) + (_e443 * _e443)) + (_e433 * _e433))));
+                    let _e451 = (_e442 * _e450);
+                    let _e452 = (_e443 * _e450);
+                    let _e453 = (_e433 * _e450);
+                    let _e454 = -(_e453);
+                    let _e460 = ((((_e451 * _e402) + (_e452 * _e403)) + (_e454 * _e404)) < 0f);
+                    let _e463 = select(_e451, -(_e451), _e460);
+                    let _e464 = select(_e452, -(_e452), _e460);
+                    let _e465 = select(_e454, _e453, _e460);
+                    let _e472 = ((_e147.member_1 * _e147.member_2) / (((_e188 * 1.99998f) * _e147.member.member_1.x) / _e147.member.member.x));
+                    let _e475 = (_e110.x & 63u);
+                    let _e476 = (_e110.y & 63u);
+                    let _e479 = select(0u, 1u, ((_e475 & 32u) != 0u));
+                    let _e482 = select(0u, 1u, ((_e476 & 32u) != 0u));
+                    let _e486 = (_e482 == 0u);
+                    let _e488 = (_e486 && (_e479 == 1u));
+                    let _e491 = select(_e475, (63u - _e475), _e488);
+                    let _e492 = select(_e476, (63u - _e476), _e488);
+                    let _e493 = select(_e491, _e492, _e486);
+                    let _e494 = select(_e492, _e491, _e486);
+                    let _e497 = select(0u, 1u, ((_e493 & 16u) != 0u));
+                    let _e500 = select(0u, 1u, ((_e494 & 16u) != 0u));
+                    let _e505 = (_e500 == 0u);
+                    let _e507 = (_e505 && (_e497 == 1u));
+                    let _e510 = select(_e493, (63u - _e493), _e507);
+                    let _e511 = select(_e494, (63u - _e494), _e507);
+                    let _e512 = select(_e510, _e511, _e505);
+                    let _e513 = select(_e511, _e510, _e505);
+                    let _e516 = select(0u, 1u, ((_e512 & 8u) != 0u));
+                    let _e519 = select(0u, 1u, ((_e513 & 8u) != 0u));
+                    let _e524 = (_e519 == 0u);
+                    let _e526 = (_e524 && (_e516 == 1u));
+                    let _e529 = select(_e512, (63u - _e512), _e526);
+                    let _e530 = select(_e513, (63u - _e513), _e526);
+                    let _e531 = select(_e529, _e530, _e524);
+                    let _e532 = select(_e530, _e529, _e524);
+                    let _e535 = select(0u, 1u, ((_e531 & 4u) != 0u));
+                    let _e538 = select(0u, 1u, ((_e532 & 4u) != 0u));
+                    let _e543 = (_e538 == 0u);
+                    let _e545 = (_e543 && (_e535 == 1u));
+                    let _e548 = select(_e531, (63u - _e531), _e545);
+                    let _e549 = select(_e532, (63u - _e532), _e545);
+                    let _e550 = select(_e548, _e549, _e543);
+                    let _e551 = select(_e549, _e548, _e543);
+                    let _e554 = select(0u, 1u, ((_e550 & 2u) != 0u));
+                    let _e557 = select(0u, 1u, ((_e551 & 2u) != 0u));
+                    let _e562 = (_e557 == 0u);
+                    let _e564 = (_e562 && (_e554 == 1u));
+                    let _e567 = select(_e550, (63u - _e550), _e564);
+                    let _e568 = select(_e551, (63u - _e551), _e564);
+                    let _e584 = f32(bitcast<i32>((((((((1024u * ((3u * _e479) ^ _e482)) + (256u * ((3u * _e497) ^ _e500))) + (64u * ((3u * _e516) ^ _e519))) + (16u * ((3u * _e535) ^ _e538))) + (4u * ((3u * _e554) ^ _e557))) + ((3u * select(0u, 1u, ((select(_e567, _e568, _e562) & 1u) != 0u))) ^ select(0u, 1u, ((select(_e568, _e567, _e562) & 1u) != 0u)))) + (288u * (_e147.member_11 % 64u)))));
+                    let _e586 = (0.5f + (_e584 * 0.7548777f));
+                    let _e590 = (0.5f + (_e584 * 0.5698403f));
+                    let _e597 = select(false, (_e188 < _e147.member.member_3), (_e188 > 0f));
+                    if _e597 {
+                        let _e600 = select(1u, _e147.member_8, (1u < _e147.member_8));
+                        phi_3219_ = false;
+                        phi_995_ = 0u;
+                        phi_998_ = 0f;
+                        phi_1000_ = 0f;
                         loop {
-                            let _e612 = phi_3326_;
-                            let _e614 = phi_996_;
-                            let _e616 = phi_999_;
-                            let _e618 = phi_1001_;
-                            local_6 = _e616;
-                            local_7 = _e618;
-                            local_8 = _e616;
-                            let _e619 = (_e614 < _e610);
-                            if _e619 {
-                                let _e626 = ((((_e596 - floor(_e596)) + f32(bitcast<i32>(_e614))) * 3.1415927f) / f32(bitcast<i32>(_e610)));
-                                let _e627 = sin(_e626);
-                                let _e628 = cos(_e626);
-                                let _e634 = ((_e628 * _e402) + (_e627 * _e403));
-                                let _e638 = (_e628 - (_e402 * _e634));
-                                let _e639 = (_e627 - (_e403 * _e634));
-                                let _e640 = -((_e404 * _e634));
-                                let _e643 = ((_e639 * _e404) - (_e403 * _e640));
-                                let _e646 = ((_e640 * _e402) - (_e404 * _e638));
-                                let _e649 = ((_e638 * _e403) - (_e402 * _e639));
-                                let _e656 = (1f / sqrt((((_e643 * _e643) + (_e646 * _e646)) + (_e649 * _e649))));
-                                let _e657 = (_e643 * _e656);
-                                let _e658 = (_e646 * _e656);
-                                let _e659 = (_e649 * _e656);
-                                let _e664 = (((_e473 * _e657) + (_e474 * _e658)) + (_e475 * _e659));
-                                let _e668 = (_e473 - (_e657 * _e664));
-                                let _e669 = (_e474 - (_e658 * _e664));
-                                let _e670 = (_e475 - (_e659 * _e664));
-                                let _e676 = sqrt((((_e668 * _e668) + (_e669 * _e669)) + (_e670 * _e670)));
-                                let _e681 = (((_e638 * _e668) + (_e639 * _e669)) + (_e640 * _e670));
-                                let _e691 = ((((_e668 * _e402) + (_e669 * _e403)) + (_e670 * _e404)) / _e676);
-                                let _e695 = select(0f, select(1f, _e691, (_e691 < 1f)), (_e691 > 0f));
-                                let _e696 = abs(_e695);
-                                let _e714 = (((((((((((((((_e696 * -0.0012624911f) + 0.00667009f) * _e696) - 0.017088126f) * _e696) + 0.03089188f) * _e696) - 0.050174303f) * _e696) + 0.08897899f) * _e696) - 0.2145988f) * _e696) + 1.5707963f) * sqrt((1f - _e696)));
-                                let _e717 = (select(select(0f, -1f, (_e681 < 0f)), 1f, (_e681 > 0f)) * select((3.1415927f - _e714), _e714, (_e695 >= 0f)));
-                                let _e720 = select(1u, _e147.member_9, (1u < _e147.member_9));
-                                phi_1194_ = 0u;
-                                phi_1197_ = 0u;
+                            let _e602 = phi_3219_;
+                            let _e604 = phi_995_;
+                            let _e606 = phi_998_;
+                            let _e608 = phi_1000_;
+                            local_6 = _e606;
+                            local_7 = _e608;
+                            local_8 = _e606;
+                            let _e609 = (_e604 < _e600);
+                            if _e609 {
+                                let _e616 = ((((_e586 - floor(_e586)) + f32(bitcast<i32>(_e604))) * 3.1415927f) / f32(bitcast<i32>(_e600)));
+                                let _e617 = sin(_e616);
+                                let _e618 = cos(_e616);
+                                let _e624 = ((_e618 * _e402) + (_e617 * _e403));
+                                let _e628 = (_e618 - (_e402 * _e624));
+                                let _e629 = (_e617 - (_e403 * _e624));
+                                let _e630 = -((_e404 * _e624));
+                                let _e633 = ((_e629 * _e404) - (_e403 * _e630));
+                                let _e636 = ((_e630 * _e402) - (_e404 * _e628));
+                                let _e639 = ((_e628 * _e403) - (_e402 * _e629));
+                                let _e646 = (1f / sqrt((((_e633 * _e633) + (_e636 * _e636)) + (_e639 * _e639))));
+                                let _e647 = (_e633 * _e646);
+                                let _e648 = (_e636 * _e646);
+                                let _e649 = (_e639 * _e646);
+                                let _e654 = (((_e463 * _e647) + (_e464 * _e648)) + (_e465 * _e649));
+                                let _e658 = (_e463 - (_e647 * _e654));
+                                let _e659 = (_e464 - (_e648 * _e654));
+                                let _e660 = (_e465 - (_e649 * _e654));
+                                let _e666 = sqrt((((_e658 * _e658) + (_e659 * _e659)) + (_e660 * _e660)));
+                                let _e671 = (((_e628 * _e658) + (_e629 * _e659)) + (_e630 * _e660));
+                                let _e681 = ((((_e658 * _e402) + (_e659 * _e403)) + (_e660 * _e404)) / _e666);
+                                let _e685 = select(0f, select(1f, _e681, (_e681 < 1f)), (_e681 > 0f));
+                                let _e686 = abs(_e685);
+                                let _e704 = (((((((((((((((_e686 * -0.0012624911f) + 0.00667009f) * _e686) - 0.017088126f) * _e686) + 0.03089188f) * _e686) - 0.050174303f) * _e686) + 0.08897899f) * _e686) - 0.2145988f) * _e686) + 1.5707963f) * sqrt((1f - _e686)));
+                                let _e707 = (select(select(0f, -1f, (_e671 < 0f)), 1f, (_e671 > 0f)) * select((3.1415927f - _e704), _e704, (_e685 >= 0f)));
+                                let _e710 = select(1u, _e147.member_9, (1u < _e147.member_9));
+                                phi_1193_ = 0u;
+                                phi_1196_ = 0u;
                                 loop {
-                                    let _e722 = phi_1194_;
-                                    let _e724 = phi_1197_;
-                                    local_1 = _e724;
-                                    local_2 = _e724;
-                                    local_4 = _e724;
-                                    let _e725 = (_e722 < _e720);
-                                    if _e725 {
-                                        let _e731 = ((_e600 - floor(_e600)) + (f32(bitcast<i32>((_e614 + (_e722 * _e720)))) * 0.618034f));
-                                        let _e740 = (((_e731 - floor(_e731)) + f32(bitcast<i32>(_e722))) * (1f / f32(bitcast<i32>(_e720))));
+                                    let _e712 = phi_1193_;
+                                    let _e714 = phi_1196_;
+                                    local_1 = _e714;
+                                    local_2 = _e714;
+                                    local_4 = _e714;
+                                    let _e715 = (_e712 < _e710);
+                                    if _e715 {
+                                        let _e721 = ((_e590 - floor(_e590)) + (f32(bitcast<i32>((_e604 + (_e712 * _e710)))) * 0.618034f));
+                                        let _e730 = (((_e721 - floor(_e721)) + f32(bitcast<i32>(_e712))) * (1f / f32(bitcast<i32>(_e710))));
                                         if (_e147.member_4 == 2f) {
-                                            phi_1250_ = (_e740 * _e740);
+                                            phi_1249_ = (_e730 * _e730);
                                         } else {
-                                            phi_1250_ = pow(_e740, _e147.member_4);
+                                            phi_1249_ = pow(_e730, _e147.member_4);
                                         }
-                                        let _e746 = phi_1250_;
-                                        let _e747 = (_e746 + (1.3f / _e482));
-                                        let _e748 = ((_e628 * _e482) * _e747);
-                                        let _e749 = ((-(_e627) * _e482) * _e747);
-                                        let _e756 = (log2(sqrt(((_e748 * _e748) + (_e749 * _e749)))) - _e147.member_7);
-                                        let _e763 = (-1f - floor((-0.5f - select(0f, select(5f, _e756, (_e756 < 5f)), (_e756 > 0f)))));
-                                        let _e766 = (round(_e748) * (1f / _e147.member.member.x));
-                                        let _e769 = (round(_e749) * (1f / _e147.member.member.y));
-                                        let _e770 = (_e373 + _e766);
-                                        let _e771 = (_e376 + _e769);
-                                        let _e772 = (_e373 - _e766);
-                                        let _e773 = (_e376 - _e769);
-                                        let _e775 = select(0f, _e763, (_e763 > 0f));
-                                        let _e782 = ((bitcast<u32>((floor(select(4f, _e775, (_e775 < 4f))) + 8388608f)) - 1258291200u) & 31u);
-                                        let _e784 = (_e171 >> bitcast<u32>(_e782));
-                                        let _e786 = select(1u, _e784, (1u < _e784));
-                                        let _e788 = (_e179 >> bitcast<u32>(_e782));
-                                        let _e790 = select(1u, _e788, (1u < _e788));
-                                        let _e795 = (select(1u, _e171, (1u < _e171)) * select(1u, _e179, (1u < _e179)));
-                                        let _e799 = (_e171 >> bitcast<u32>(1u));
-                                        let _e803 = (_e179 >> bitcast<u32>(1u));
-                                        let _e807 = (_e795 + (select(1u, _e799, (1u < _e799)) * select(1u, _e803, (1u < _e803))));
-                                        let _e811 = (_e171 >> bitcast<u32>(2u));
-                                        let _e815 = (_e179 >> bitcast<u32>(2u));
-                                        let _e819 = (_e807 + (select(1u, _e811, (1u < _e811)) * select(1u, _e815, (1u < _e815))));
-                                        let _e823 = (_e171 >> bitcast<u32>(3u));
-                                        let _e827 = (_e179 >> bitcast<u32>(3u));
-                                        let _e833 = select(select(select(select(0u, _e795, (_e763 >= 1f)), _e807, (_e763 >= 2f)), _e819, (_e763 >= 3f)), (_e819 + (select(1u, _e823, (1u < _e823)) * select(1u, _e827, (1u < _e827)))), (_e763 >= 4f));
-                                        let _e835 = f32(bitcast<i32>(_e786));
-                                        let _e836 = (_e770 * _e835);
-                                        let _e839 = f32(bitcast<i32>((_e786 - 1u)));
-                                        let _e841 = select(0f, _e836, (_e836 > 0f));
-                                        let _e849 = f32(bitcast<i32>(_e790));
-                                        let _e850 = (_e771 * _e849);
-                                        let _e853 = f32(bitcast<i32>((_e790 - 1u)));
-                                        let _e855 = select(0f, _e850, (_e850 > 0f));
-                                        let _e867 = mips.member[((_e833 + ((bitcast<u32>((floor(select(_e853, _e855, (_e855 < _e853))) + 8388608f)) - 1258291200u) * _e786)) + (bitcast<u32>((floor(select(_e839, _e841, (_e841 < _e839))) + 8388608f)) - 1258291200u))];
-                                        let _e876 = (_e772 * _e835);
-                                        let _e878 = select(0f, _e876, (_e876 > 0f));
-                                        let _e885 = (_e773 * _e849);
-                                        let _e887 = select(0f, _e885, (_e885 > 0f));
-                                        let _e899 = mips.member[((_e833 + ((bitcast<u32>((floor(select(_e853, _e887, (_e887 < _e853))) + 8388608f)) - 1258291200u) * _e786)) + (bitcast<u32>((floor(select(_e839, _e878, (_e878 < _e839))) + 8388608f)) - 1258291200u))];
-                                        let _e908 = (((((_e770 * 2f) - 1f) * _e147.member.member_1.x) * _e867) - _e384);
-                                        let _e909 = (((((_e771 * -2f) + 1f) * _e147.member.member_1.y) * _e867) - _e391);
-                                        let _e910 = (_e867 - _e377);
-                                        let _e911 = (_e163 > 0f);
-                                        if _e911 {
-                                            phi_1663_ = (sqrt((((_e908 * _e908) + (_e909 * _e909)) + (_e910 * _e910))) > _e163);
+                                        let _e736 = phi_1249_;
+                                        let _e737 = (_e736 + (1.3f / _e472));
+                                        let _e738 = ((_e618 * _e472) * _e737);
+                                        let _e739 = ((-(_e617) * _e472) * _e737);
+                                        let _e746 = (log2(sqrt(((_e738 * _e738) + (_e739 * _e739)))) - _e147.member_7);
+                                        let _e753 = (-1f - floor((-0.5f - select(0f, select(5f, _e746, (_e746 < 5f)), (_e746 > 0f)))));
+                                        let _e756 = (round(_e738) * (1f / _e147.member.member.x));
+                                        let _e759 = (round(_e739) * (1f / _e147.member.member.y));
+                                        let _e760 = (_e373 + _e756);
+                                        let _e761 = (_e376 + _e759);
+                                        let _e762 = (_e373 - _e756);
+                                        let _e763 = (_e376 - _e759);
+                                        let _e765 = select(0f, _e753, (_e753 > 0f));
+                                        let _e772 = ((bitcast<u32>((floor(select(4f, _e765, (_e765 < 4f))) + 8388608f)) - 1258291200u) & 31u);
+                                        let _e774 = (_e171 >> bitcast<u32>(_e772));
+                                        let _e776 = select(1u, _e774, (1u < _e774));
+                                        let _e778 = (_e179 >> bitcast<u32>(_e772));
+                                        let _e780 = select(1u, _e778, (1u < _e778));
+                                        let _e785 = (select(1u, _e171, (1u < _e171)) * select(1u, _e179, (1u < _e179)));
+                                        let _e789 = (_e171 >> bitcast<u32>(1u));
+                                        let _e793 = (_e179 >> bitcast<u32>(1u));
+                                        let _e797 = (_e785 + (select(1u, _e789, (1u < _e789)) * select(1u, _e793, (1u < _e793))));
+                                        let _e801 = (_e171 >> bitcast<u32>(2u));
+                                        let _e805 = (_e179 >> bitcast<u32>(2u));
+                                        let _e809 = (_e797 + (select(1u, _e801, (1u < _e801)) * select(1u, _e805, (1u < _e805))));
+                                        let _e813 = (_e171 >> bitcast<u32>(3u));
+                                        let _e817 = (_e179 >> bitcast<u32>(3u));
+                                        let _e823 = select(select(select(select(0u, _e785, (_e753 >= 1f)), _e797, (_e753 >= 2f)), _e809, (_e753 >= 3f)), (_e809 + (select(1u, _e813, (1u < _e813)) * select(1u, _e817, (1u < _e817)))), (_e753 >= 4f));
+                                        let _e825 = f32(bitcast<i32>(_e776));
+                                        let _e826 = (_e760 * _e825);
+                                        let _e829 = f32(bitcast<i32>((_e776 - 1u)));
+                                        let _e831 = select(0f, _e826, (_e826 > 0f));
+                                        let _e839 = f32(bitcast<i32>(_e780));
+                                        let _e840 = (_e761 * _e839);
+                                        let _e843 = f32(bitcast<i32>((_e780 - 1u)));
+                                        let _e845 = select(0f, _e840, (_e840 > 0f));
+                                        let _e857 = mips.member[((_e823 + ((bitcast<u32>((floor(select(_e843, _e845, (_e845 < _e843))) + 8388608f)) - 1258291200u) * _e776)) + (bitcast<u32>((floor(select(_e829, _e831, (_e831 < _e829))) + 8388608f)) - 1258291200u))];
+                                        let _e866 = (_e762 * _e825);
+                                        let _e868 = select(0f, _e866, (_e866 > 0f));
+                                        let _e875 = (_e763 * _e839);
+                                        let _e877 = select(0f, _e875, (_e875 > 0f));
+                                        let _e889 = mips.member[((_e823 + ((bitcast<u32>((floor(select(_e843, _e877, (_e877 < _e843))) + 8388608f)) - 1258291200u) * _e776)) + (bitcast<u32>((floor(select(_e829, _e868, (_e868 < _e829))) + 8388608f)) - 1258291200u))];
+                                        let _e898 = (((((_e760 * 2f) - 1f) * _e147.member.member_1.x) * _e857) - _e384);
+                                        let _e899 = (((((_e761 * -2f) + 1f) * _e147.member.member_1.y) * _e857) - _e391);
+                                        let _e900 = (_e857 - _e377);
+                                        let _e901 = (_e163 > 0f);
+                                        if _e901 {
+                                            phi_1662_ = (sqrt((((_e898 * _e898) + (_e899 * _e899)) + (_e900 * _e900))) > _e163);
                                         } else {
-                                            phi_1663_ = false;
+                                            phi_1662_ = false;
                                         }
-                                        let _e920 = phi_1663_;
-                                        if !(_e920) {
-                                            let _e926 = (((_e908 * _e402) + (_e909 * _e403)) + (_e910 * _e404));
-                                            let _e930 = (_e908 - (_e402 * _e926));
-                                            let _e931 = (_e909 - (_e403 * _e926));
-                                            let _e932 = (_e910 - (_e404 * _e926));
-                                            let _e941 = ((_e931 * _e404) - (_e403 * _e932));
-                                            let _e944 = ((_e932 * _e402) - (_e404 * _e930));
-                                            let _e947 = ((_e930 * _e403) - (_e402 * _e931));
-                                            let _e954 = (1f / sqrt((((_e941 * _e941) + (_e944 * _e944)) + (_e947 * _e947))));
-                                            let _e955 = (_e941 * _e954);
-                                            let _e956 = (_e944 * _e954);
-                                            let _e957 = (_e947 * _e954);
-                                            let _e962 = (((_e473 * _e955) + (_e474 * _e956)) + (_e475 * _e957));
-                                            let _e966 = (_e473 - (_e955 * _e962));
-                                            let _e967 = (_e474 - (_e956 * _e962));
-                                            let _e968 = (_e475 - (_e957 * _e962));
-                                            let _e974 = sqrt((((_e966 * _e966) + (_e967 * _e967)) + (_e968 * _e968)));
-                                            let _e980 = ((((_e966 * _e402) + (_e967 * _e403)) + (_e968 * _e404)) / _e974);
-                                            let _e984 = select(0f, select(1f, _e980, (_e980 < 1f)), (_e980 > 0f));
-                                            let _e985 = abs(_e984);
-                                            let _e1002 = (((((((((((((((_e985 * -0.0012624911f) + 0.00667009f) * _e985) - 0.017088126f) * _e985) + 0.03089188f) * _e985) - 0.050174303f) * _e985) + 0.08897899f) * _e985) - 0.2145988f) * _e985) + 1.5707963f) * sqrt((1f - _e985)));
-                                            let _e1005 = select((3.1415927f - _e1002), _e1002, (_e984 >= 0f));
-                                            let _e1013 = select(_e1005, -(_e1005), ((((_e930 * _e966) + (_e931 * _e967)) + (_e932 * _e968)) < 0f));
-                                            let _e1014 = (0.02f / _e974);
-                                            let _e1017 = select(0.19634955f, _e1014, ((_e1014 < 0.19634955f) || false));
-                                            let _e1021 = (_e908 - (_e402 * _e160));
-                                            let _e1022 = (_e909 - (_e403 * _e160));
-                                            let _e1023 = (_e910 - (_e404 * _e160));
-                                            let _e1030 = (1f / sqrt((((_e908 * _e908) + (_e909 * _e909)) + (_e910 * _e910))));
-                                            let _e1038 = ((((_e908 * _e1030) * _e402) + ((_e909 * _e1030) * _e403)) + ((_e910 * _e1030) * _e404));
-                                            let _e1042 = select(-1f, select(1f, _e1038, (_e1038 < 1f)), (_e1038 > -1f));
-                                            let _e1043 = abs(_e1042);
-                                            let _e1060 = (((((((((((((((_e1043 * -0.0012624911f) + 0.00667009f) * _e1043) - 0.017088126f) * _e1043) + 0.03089188f) * _e1043) - 0.050174303f) * _e1043) + 0.08897899f) * _e1043) - 0.2145988f) * _e1043) + 1.5707963f) * sqrt((1f - _e1043)));
-                                            let _e1067 = ((((select((3.1415927f - _e1060), _e1060, (_e1042 >= 0f)) + _e1017) - _e1013) + 1.5707964f) * 0.31830987f);
-                                            let _e1071 = select(0f, select(1f, _e1067, (_e1067 < 1f)), (_e1067 > 0f));
-                                            let _e1078 = (1f / sqrt((((_e1021 * _e1021) + (_e1022 * _e1022)) + (_e1023 * _e1023))));
-                                            let _e1086 = ((((_e1021 * _e1078) * _e402) + ((_e1022 * _e1078) * _e403)) + ((_e1023 * _e1078) * _e404));
-                                            let _e1090 = select(-1f, select(1f, _e1086, (_e1086 < 1f)), (_e1086 > -1f));
-                                            let _e1091 = abs(_e1090);
-                                            let _e1108 = (((((((((((((((_e1091 * -0.0012624911f) + 0.00667009f) * _e1091) - 0.017088126f) * _e1091) + 0.03089188f) * _e1091) - 0.050174303f) * _e1091) + 0.08897899f) * _e1091) - 0.2145988f) * _e1091) + 1.5707963f) * sqrt((1f - _e1091)));
-                                            let _e1115 = ((((select((3.1415927f - _e1108), _e1108, (_e1090 >= 0f)) + _e1017) - _e1013) + 1.5707964f) * 0.31830987f);
-                                            let _e1119 = select(0f, select(1f, _e1115, (_e1115 < 1f)), (_e1115 > 0f));
-                                            let _e1121 = (_e1119 != _e1119);
-                                            let _e1123 = select(_e1119, _e1071, ((_e1071 < _e1119) || _e1121));
-                                            let _e1126 = select(_e1119, _e1071, ((_e1071 > _e1119) || _e1121));
-                                            let _e1128 = floor((_e1123 * 32f));
+                                        let _e910 = phi_1662_;
+                                        if !(_e910) {
+                                            let _e916 = (((_e898 * _e402) + (_e899 * _e403)) + (_e900 * _e404));
+                                            let _e920 = (_e898 - (_e402 * _e916));
+                                            let _e921 = (_e899 - (_e403 * _e916));
+                                            let _e922 = (_e900 - (_e404 * _e916));
+                                            let _e931 = ((_e921 * _e404) - (_e403 * _e922));
+                                            let _e934 = ((_e922 * _e402) - (_e404 * _e920));
+                                            let _e937 = ((_e920 * _e403) - (_e402 * _e921));
+                                            let _e944 = (1f / sqrt((((_e931 * _e931) + (_e934 * _e934)) + (_e937 * _e937))));
+                                            let _e945 = (_e931 * _e944);
+                                            let _e946 = (_e934 * _e944);
+                                            let _e947 = (_e937 * _e944);
+                                            let _e952 = (((_e463 * _e945) + (_e464 * _e946)) + (_e465 * _e947));
+                                            let _e956 = (_e463 - (_e945 * _e952));
+                                            let _e957 = (_e464 - (_e946 * _e952));
+                                            let _e958 = (_e465 - (_e947 * _e952));
+                                            let _e964 = sqrt((((_e956 * _e956) + (_e957 * _e957)) + (_e958 * _e958)));
+                                            let _e970 = ((((_e956 * _e402) + (_e957 * _e403)) + (_e958 * _e404)) / _e964);
+                                            let _e974 = select(0f, select(1f, _e970, (_e970 < 1f)), (_e970 > 0f));
+                                            let _e975 = abs(_e974);
+                                            let _e992 = (((((((((((((((_e975 * -0.0012624911f) + 0.00667009f) * _e975) - 0.017088126f) * _e975) + 0.03089188f) * _e975) - 0.050174303f) * _e975) + 0.08897899f) * _e975) - 0.2145988f) * _e975) + 1.5707963f) * sqrt((1f - _e975)));
+                                            let _e995 = select((3.1415927f - _e992), _e992, (_e974 >= 0f));
+                                            let _e1003 = select(_e995, -(_e995), ((((_e920 * _e956) + (_e921 * _e957)) + (_e922 * _e958)) < 0f));
+                                            let _e1004 = (0.02f / _e964);
+                                            let _e1007 = select(0.19634955f, _e1004, ((_e1004 < 0.19634955f) || false));
+                                            let _e1011 = (_e898 - (_e402 * _e160));
+                                            let _e1012 = (_e899 - (_e403 * _e160));
+                                            let _e1013 = (_e900 - (_e404 * _e160));
+                                            let _e1020 = (1f / sqrt((((_e898 * _e898) + (_e899 * _e899)) + (_e900 * _e900))));
+                                            let _e1028 = ((((_e898 * _e1020) * _e402) + ((_e899 * _e1020) * _e403)) + ((_e900 * _e1020) * _e404));
+                                            let _e1032 = select(-1f, select(1f, _e1028, (_e1028 < 1f)), (_e1028 > -1f));
+                                            let _e1033 = abs(_e1032);
+                                            let _e1050 = (((((((((((((((_e1033 * -0.0012624911f) + 0.00667009f) * _e1033) - 0.017088126f) * _e1033) + 0.03089188f) * _e1033) - 0.050174303f) * _e1033) + 0.08897899f) * _e1033) - 0.2145988f) * _e1033) + 1.5707963f) * sqrt((1f - _e1033)));
+                                            let _e1057 = ((((select((3.1415927f - _e1050), _e1050, (_e1032 >= 0f)) + _e1007) - _e1003) + 1.5707964f) * 0.31830987f);
+                                            let _e1061 = select(0f, select(1f, _e1057, (_e1057 < 1f)), (_e1057 > 0f));
+                                            let _e1068 = (1f / sqrt((((_e1011 * _e1011) + (_e1012 * _e1012)) + (_e1013 * _e1013))));
+                                            let _e1076 = ((((_e1011 * _e1068) * _e402) + ((_e1012 * _e1068) * _e403)) + ((_e1013 * _e1068) * _e404));
+                                            let _e1080 = select(-1f, select(1f, _e1076, (_e1076 < 1f)), (_e1076 > -1f));
+                                            let _e1081 = abs(_e1080);
+                                            let _e1098 = (((((((((((((((_e1081 * -0.0012624911f) + 0.00667009f) * _e1081) - 0.017088126f) * _e1081) + 0.03089188f) * _e1081) - 0.050174303f) * _e1081) + 0.08897899f) * _e1081) - 0.2145988f) * _e1081) + 1.5707963f) * sqrt((1f - _e1081)));
+                                            let _e1105 = ((((select((3.1415927f - _e1098), _e1098, (_e1080 >= 0f)) + _e1007) - _e1003) + 1.5707964f) * 0.31830987f);
+                                            let _e1109 = select(0f, select(1f, _e1105, (_e1105 < 1f)), (_e1105 > 0f));
+                                            let _e1111 = (_e1109 != _e1109);
+                                            let _e1113 = select(_e1109, _e1061, ((_e1061 < _e1109) || _e1111));
+                                            let _e1116 = select(_e1109, _e1061, ((_e1061 > _e1109) || _e1111));
+                                            let _e1118 = floor((_e1113 * 32f));
                                             if (_e157 == 1u) {
-                                                let _e1136 = -(floor((_e1126 * -32f)));
-                                                let _e1141 = (select(32f, _e1136, ((_e1136 < 32f) || false)) - _e1128);
-                                                phi_2010_ = select(select(0f, _e1141, ((_e1141 > 0f) || false)), 0f, (_e1126 <= _e1123));
+                                                let _e1126 = -(floor((_e1116 * -32f)));
+                                                let _e1131 = (select(32f, _e1126, ((_e1126 < 32f) || false)) - _e1118);
+                                                phi_2009_ = select(select(0f, _e1131, ((_e1131 > 0f) || false)), 0f, (_e1116 <= _e1113));
                                             } else {
-                                                phi_2010_ = -(floor(((_e1126 - _e1123) * -32f)));
+                                                phi_2009_ = -(floor(((_e1116 - _e1113) * -32f)));
                                             }
-                                            let _e1147 = phi_2010_;
-                                            let _e1149 = select(0f, _e1128, (_e1128 > 0f));
-                                            let _e1155 = (bitcast<u32>((floor(select(32f, _e1149, (_e1149 < 32f))) + 8388608f)) - 1258291200u);
-                                            let _e1157 = select(0f, _e1147, (_e1147 > 0f));
-                                            let _e1163 = (bitcast<u32>((floor(select(32f, _e1157, (_e1157 < 32f))) + 8388608f)) - 1258291200u);
-                                            if (_e1155 >= 32u) {
-                                                phi_2064_ = u32();
-                                                phi_2065_ = true;
+                                            let _e1137 = phi_2009_;
+                                            let _e1139 = select(0f, _e1118, (_e1118 > 0f));
+                                            let _e1145 = (bitcast<u32>((floor(select(32f, _e1139, (_e1139 < 32f))) + 8388608f)) - 1258291200u);
+                                            let _e1147 = select(0f, _e1137, (_e1137 > 0f));
+                                            let _e1153 = (bitcast<u32>((floor(select(32f, _e1147, (_e1147 < 32f))) + 8388608f)) - 1258291200u);
+                                            if (_e1145 >= 32u) {
+                                                phi_2063_ = u32();
+                                                phi_2064_ = true;
                                             } else {
-                                                let _e1165 = (_e1163 == 0u);
-                                                if _e1165 {
-                                                    phi_2063_ = u32();
+                                                let _e1155 = (_e1153 == 0u);
+                                                if _e1155 {
+                                                    phi_2062_ = u32();
                                                 } else {
-                                                    if (_e1163 >= 32u) {
-                                                        phi_2060_ = 4294967295u;
+                                                    if (_e1153 >= 32u) {
+                                                        phi_2059_ = 4294967295u;
                                                     } else {
-                                                        phi_2060_ = ((1u << bitcast<u32>((_e1163 & 31u))) - 1u);
+                                                        phi_2059_ = ((1u << bitcast<u32>((_e1153 & 31u))) - 1u);
                                                     }
-                                                    let _e1172 = phi_2060_;
-                                                    phi_2063_ = (_e1172 << bitcast<u32>((_e1155 & 31u)));
+                                                    let _e1162 = phi_2059_;
+                                                    phi_2062_ = (_e1162 << bitcast<u32>((_e1145 & 31u)));
                                                 }
-                                                let _e1177 = phi_2063_;
-                                                phi_2064_ = _e1177;
-                                                phi_2065_ = _e1165;
+                                                let _e1167 = phi_2062_;
+                                                phi_2063_ = _e1167;
+                                                phi_2064_ = _e1155;
                                             }
-                                            let _e1179 = phi_2064_;
-                                            let _e1181 = phi_2065_;
-                                            phi_2079_ = select(select(select(_e1179, 0u, _e1181), 0u, (sqrt((((_e930 * _e930) + (_e931 * _e931)) + (_e932 * _e932))) <= 0f)), 0u, _e920);
+                                            let _e1169 = phi_2063_;
+                                            let _e1171 = phi_2064_;
+                                            phi_2078_ = select(select(select(_e1169, 0u, _e1171), 0u, (sqrt((((_e920 * _e920) + (_e921 * _e921)) + (_e922 * _e922))) <= 0f)), 0u, _e910);
                                         } else {
-                                            phi_2079_ = 0u;
+                                            phi_2078_ = 0u;
                                         }
-                                        let _e1187 = phi_2079_;
-                                        let _e1189 = (((((_e772 * 2f) - 1f) * _e147.member.member_1.x) * _e899) - _e384);
-                                        let _e1190 = (((((_e773 * -2f) + 1f) * _e147.member.member_1.y) * _e899) - _e391);
-                                        let _e1191 = (_e899 - _e377);
-                                        if _e911 {
-                                            phi_2099_ = (sqrt((((_e1189 * _e1189) + (_e1190 * _e1190)) + (_e1191 * _e1191))) > _e163);
+                                        let _e1177 = phi_2078_;
+                                        let _e1179 = (((((_e762 * 2f) - 1f) * _e147.member.member_1.x) * _e889) - _e384);
+                                        let _e1180 = (((((_e763 * -2f) + 1f) * _e147.member.member_1.y) * _e889) - _e391);
+                                        let _e1181 = (_e889 - _e377);
+                                        if _e901 {
+                                            phi_2098_ = (sqrt((((_e1179 * _e1179) + (_e1180 * _e1180)) + (_e1181 * _e1181))) > _e163);
                                         } else {
-                                            phi_2099_ = false;
+                                            phi_2098_ = false;
                                         }
-                                        let _e1200 = phi_2099_;
-                                        if !(_e1200) {
-                                            let _e1206 = (((_e1189 * _e402) + (_e1190 * _e403)) + (_e1191 * _e404));
-                                            let _e1210 = (_e1189 - (_e402 * _e1206));
-                                            let _e1211 = (_e1190 - (_e403 * _e1206));
-                                            let _e1212 = (_e1191 - (_e404 * _e1206));
-                                            let _e1221 = ((_e1211 * _e404) - (_e403 * _e1212));
-                                            let _e1224 = ((_e1212 * _e402) - (_e404 * _e1210));
-                                            let _e1227 = ((_e1210 * _e403) - (_e402 * _e1211));
-                                            let _e1234 = (1f / sqrt((((_e1221 * _e1221) + (_e1224 * _e1224)) + (_e1227 * _e1227))));
-                                            let _e1235 = (_e1221 * _e1234);
-                                            let _e1236 = (_e1224 * _e1234);
-                                            let _e1237 = (_e1227 * _e1234);
-                                            let _e1242 = (((_e473 * _e1235) + (_e474 * _e1236)) + (_e475 * _e1237));
-                                            let _e1246 = (_e473 - (_e1235 * _e1242));
-                                            let _e1247 = (_e474 - (_e1236 * _e1242));
-                                            let _e1248 = (_e475 - (_e1237 * _e1242));
-                                            let _e1254 = sqrt((((_e1246 * _e1246) + (_e1247 * _e1247)) + (_e1248 * _e1248)));
-                                            let _e1260 = ((((_e1246 * _e402) + (_e1247 * _e403)) + (_e1248 * _e404)) / _e1254);
-                                            let _e1264 = select(0f, select(1f, _e1260, (_e1260 < 1f)), (_e1260 > 0f));
-                                            let _e1265 = abs(_e1264);
-                                            let _e1282 = (((((((((((((((_e1265 * -0.0012624911f) + 0.00667009f) * _e1265) - 0.017088126f) * _e1265) + 0.03089188f) * _e1265) - 0.050174303f) * _e1265) + 0.08897899f) * _e1265) - 0.2145988f) * _e1265) + 1.5707963f) * sqrt((1f - _e1265)));
-                                            let _e1285 = select((3.1415927f - _e1282), _e1282, (_e1264 >= 0f));
-                                            let _e1293 = select(_e1285, -(_e1285), ((((_e1210 * _e1246) + (_e1211 * _e1247)) + (_e1212 * _e1248)) < 0f));
-                                            let _e1294 = (0.02f / _e1254);
-                                            let _e1297 = select(0.19634955f, _e1294, ((_e1294 < 0.19634955f) || false));
-                                            let _e1301 = (_e1189 - (_e402 * _e160));
-                                            let _e1302 = (_e1190 - (_e403 * _e160));
-                                            let _e1303 = (_e1191 - (_e404 * _e160));
-                                            let _e1310 = (1f / sqrt((((_e1189 * _e1189) + (_e1190 * _e1190)) + (_e1191 * _e1191))));
-                                            let _e1318 = ((((_e1189 * _e1310) * _e402) + ((_e1190 * _e1310) * _e403)) + ((_e1191 * _e1310) * _e404));
-                                            let _e1322 = select(-1f, select(1f, _e1318, (_e1318 < 1f)), (_e1318 > -1f));
-                                            let _e1323 = abs(_e1322);
-                                            let _e1340 = (((((((((((((((_e1323 * -0.0012624911f) + 0.00667009f) * _e1323) - 0.017088126f) * _e1323) + 0.03089188f) * _e1323) - 0.050174303f) * _e1323) + 0.08897899f) * _e1323) - 0.2145988f) * _e1323) + 1.5707963f) * sqrt((1f - _e1323)));
-                                            let _e1347 = ((((select((3.1415927f - _e1340), _e1340, (_e1322 >= 0f)) + _e1297) - _e1293) + 1.5707964f) * 0.31830987f);
-                                            let _e1358 = (1f / sqrt((((_e1301 * _e1301) + (_e1302 * _e1302)) + (_e1303 * _e1303))));
-                                            let _e1366 = ((((_e1301 * _e1358) * _e402) + ((_e1302 * _e1358) * _e403)) + ((_e1303 * _e1358) * _e404));
-                                            let _e1370 = select(-1f, select(1f, _e1366, (_e1366 < 1f)), (_e1366 > -1f));
-                                            let _e1371 = abs(_e1370);
-                                            let _e1388 = (((((((((((((((_e1371 * -0.0012624911f) + 0.00667009f) * _e1371) - 0.017088126f) * _e1371) + 0.03089188f) * _e1371) - 0.050174303f) * _e1371) + 0.08897899f) * _e1371) - 0.2145988f) * _e1371) + 1.5707963f) * sqrt((1f - _e1371)));
-                                            let _e1395 = ((((select((3.1415927f - _e1388), _e1388, (_e1370 >= 0f)) + _e1297) - _e1293) + 1.5707964f) * 0.31830987f);
-                                            let _e1400 = (1f - select(0f, select(1f, _e1347, (_e1347 < 1f)), (_e1347 > 0f)));
-                                            let _e1401 = (1f - select(0f, select(1f, _e1395, (_e1395 < 1f)), (_e1395 > 0f)));
-                                            let _e1403 = (_e1401 != _e1401);
-                                            let _e1405 = select(_e1401, _e1400, ((_e1400 < _e1401) || _e1403));
-                                            let _e1408 = select(_e1401, _e1400, ((_e1400 > _e1401) || _e1403));
-                                            let _e1410 = floor((_e1405 * 32f));
+                                        let _e1190 = phi_2098_;
+                                        if !(_e1190) {
+                                            let _e1196 = (((_e1179 * _e402) + (_e1180 * _e403)) + (_e1181 * _e404));
+                                            let _e1200 = (_e1179 - (_e402 * _e1196));
+                                            let _e1201 = (_e1180 - (_e403 * _e1196));
+                                            let _e1202 = (_e1181 - (_e404 * _e1196));
+                                            let _e1211 = ((_e1201 * _e404) - (_e403 * _e1202));
+                                            let _e1214 = ((_e1202 * _e402) - (_e404 * _e1200));
+                                            let _e1217 = ((_e1200 * _e403) - (_e402 * _e1201));
+                                            let _e1224 = (1f / sqrt((((_e1211 * _e1211) + (_e1214 * _e1214)) + (_e1217 * _e1217))));
+                                            let _e1225 = (_e1211 * _e1224);
+                                            let _e1226 = (_e1214 * _e1224);
+                                            let _e1227 = (_e1217 * _e1224);
+                                            let _e1232 = (((_e463 * _e1225) + (_e464 * _e1226)) + (_e465 * _e1227));
+                                            let _e1236 = (_e463 - (_e1225 * _e1232));
+                                            let _e1237 = (_e464 - (_e1226 * _e1232));
+                                            let _e1238 = (_e465 - (_e1227 * _e1232));
+                                            let _e1244 = sqrt((((_e1236 * _e1236) + (_e1237 * _e1237)) + (_e1238 * _e1238)));
+                                            let _e1250 = ((((_e1236 * _e402) + (_e1237 * _e403)) + (_e1238 * _e404)) / _e1244);
+                                            let _e1254 = select(0f, select(1f, _e1250, (_e1250 < 1f)), (_e1250 > 0f));
+                                            let _e1255 = abs(_e1254);
+                                            let _e1272 = (((((((((((((((_e1255 * -0.0012624911f) + 0.00667009f) * _e1255) - 0.017088126f) * _e1255) + 0.03089188f) * _e1255) - 0.050174303f) * _e1255) + 0.08897899f) * _e1255) - 0.2145988f) * _e1255) + 1.5707963f) * sqrt((1f - _e1255)));
+                                            let _e1275 = select((3.1415927f - _e1272), _e1272, (_e1254 >= 0f));
+                                            let _e1283 = select(_e1275, -(_e1275), ((((_e1200 * _e1236) + (_e1201 * _e1237)) + (_e1202 * _e1238)) < 0f));
+                                            let _e1284 = (0.02f / _e1244);
+                                            let _e1287 = select(0.19634955f, _e1284, ((_e1284 < 0.19634955f) || false));
+                                            let _e1291 = (_e1179 - (_e402 * _e160));
+                                            let _e1292 = (_e1180 - (_e403 * _e160));
+                                            let _e1293 = (_e1181 - (_e404 * _e160));
+                                            let _e1300 = (1f / sqrt((((_e1179 * _e1179) + (_e1180 * _e1180)) + (_e1181 * _e1181))));
+                                            let _e1308 = ((((_e1179 * _e1300) * _e402) + ((_e1180 * _e1300) * _e403)) + ((_e1181 * _e1300) * _e404));
+                                            let _e1312 = select(-1f, select(1f, _e1308, (_e1308 < 1f)), (_e1308 > -1f));
+                                            let _e1313 = abs(_e1312);
+                                            let _e1330 = (((((((((((((((_e1313 * -0.0012624911f) + 0.00667009f) * _e1313) - 0.017088126f) * _e1313) + 0.03089188f) * _e1313) - 0.050174303f) * _e1313) + 0.08897899f) * _e1313) - 0.2145988f) * _e1313) + 1.5707963f) * sqrt((1f - _e1313)));
+                                            let _e1337 = ((((select((3.1415927f - _e1330), _e1330, (_e1312 >= 0f)) + _e1287) - _e1283) + 1.5707964f) * 0.31830987f);
+                                            let _e1348 = (1f / sqrt((((_e1291 * _e1291) + (_e1292 * _e1292)) + (_e1293 * _e1293))));
+                                            let _e1356 = ((((_e1291 * _e1348) * _e402) + ((_e1292 * _e1348) * _e403)) + ((_e1293 * _e1348) * _e404));
+                                            let _e1360 = select(-1f, select(1f, _e1356, (_e1356 < 1f)), (_e1356 > -1f));
+                                            let _e1361 = abs(_e1360);
+                                            let _e1378 = (((((((((((((((_e1361 * -0.0012624911f) + 0.00667009f) * _e1361) - 0.017088126f) * _e1361) + 0.03089188f) * _e1361) - 0.050174303f) * _e1361) + 0.08897899f) * _e1361) - 0.2145988f) * _e1361) + 1.5707963f) * sqrt((1f - _e1361)));
+                                            let _e1385 = ((((select((3.1415927f - _e1378), _e1378, (_e1360 >= 0f)) + _e1287) - _e1283) + 1.5707964f) * 0.31830987f);
+                                            let _e1390 = (1f - select(0f, select(1f, _e1337, (_e1337 < 1f)), (_e1337 > 0f)));
+                                            let _e1391 = (1f - select(0f, select(1f, _e1385, (_e1385 < 1f)), (_e1385 > 0f)));
+                                            let _e1393 = (_e1391 != _e1391);
+                                            let _e1395 = select(_e1391, _e1390, ((_e1390 < _e1391) || _e1393));
+                                            let _e1398 = select(_e1391, _e1390, ((_e1390 > _e1391) || _e1393));
+                                            let _e1400 = floor((_e1395 * 32f));
                                             if (_e157 == 1u) {
-                                                let _e1418 = -(floor((_e1408 * -32f)));
-                                                let _e1423 = (select(32f, _e1418, ((_e1418 < 32f) || false)) - _e1410);
-                                                phi_2446_ = select(select(0f, _e1423, ((_e1423 > 0f) || false)), 0f, (_e1408 <= _e1405));
+                                                let _e1408 = -(floor((_e1398 * -32f)));
+                                                let _e1413 = (select(32f, _e1408, ((_e1408 < 32f) || false)) - _e1400);
+                                                phi_2445_ = select(select(0f, _e1413, ((_e1413 > 0f) || false)), 0f, (_e1398 <= _e1395));
                                             } else {
-                                                phi_2446_ = -(floor(((_e1408 - _e1405) * -32f)));
+                                                phi_2445_ = -(floor(((_e1398 - _e1395) * -32f)));
                                             }
-                                            let _e1429 = phi_2446_;
-                                            let _e1431 = select(0f, _e1410, (_e1410 > 0f));
-                                            let _e1437 = (bitcast<u32>((floor(select(32f, _e1431, (_e1431 < 32f))) + 8388608f)) - 1258291200u);
-                                            let _e1439 = select(0f, _e1429, (_e1429 > 0f));
-                                            let _e1445 = (bitcast<u32>((floor(select(32f, _e1439, (_e1439 < 32f))) + 8388608f)) - 1258291200u);
-                                            if (_e1437 >= 32u) {
-                                                phi_2500_ = u32();
-                                                phi_2501_ = true;
+                                            let _e1419 = phi_2445_;
+                                            let _e1421 = select(0f, _e1400, (_e1400 > 0f));
+                                            let _e1427 = (bitcast<u32>((floor(select(32f, _e1421, (_e1421 < 32f))) + 8388608f)) - 1258291200u);
+                                            let _e1429 = select(0f, _e1419, (_e1419 > 0f));
+                                            let _e1435 = (bitcast<u32>((floor(select(32f, _e1429, (_e1429 < 32f))) + 8388608f)) - 1258291200u);
+                                            if (_e1427 >= 32u) {
+                                                phi_2499_ = u32();
+                                                phi_2500_ = true;
                                             } else {
-                                                let _e1447 = (_e1445 == 0u);
-                                                if _e1447 {
-                                                    phi_2499_ = u32();
+                                                let _e1437 = (_e1435 == 0u);
+                                                if _e1437 {
+                                                    phi_2498_ = u32();
                                                 } else {
-                                                    if (_e1445 >= 32u) {
-                                                        phi_2496_ = 4294967295u;
+                                                    if (_e1435 >= 32u) {
+                                                        phi_2495_ = 4294967295u;
                                                     } else {
-                                                        phi_2496_ = ((1u << bitcast<u32>((_e1445 & 31u))) - 1u);
+                                                        phi_2495_ = ((1u << bitcast<u32>((_e1435 & 31u))) - 1u);
                                                     }
-                                                    let _e1454 = phi_2496_;
-                                                    phi_2499_ = (_e1454 << bitcast<u32>((_e1437 & 31u)));
+                                                    let _e1444 = phi_2495_;
+                                                    phi_2498_ = (_e1444 << bitcast<u32>((_e1427 & 31u)));
                                                 }
-                                                let _e1459 = phi_2499_;
-                                                phi_2500_ = _e1459;
-                                                phi_2501_ = _e1447;
+                                                let _e1449 = phi_2498_;
+                                                phi_2499_ = _e1449;
+                                                phi_2500_ = _e1437;
                                             }
-                                            let _e1461 = phi_2500_;
-                                            let _e1463 = phi_2501_;
-                                            phi_2515_ = select(select(select(_e1461, 0u, _e1463), 0u, (sqrt((((_e1210 * _e1210) + (_e1211 * _e1211)) + (_e1212 * _e1212))) <= 0f)), 0u, _e1200);
+                                            let _e1451 = phi_2499_;
+                                            let _e1453 = phi_2500_;
+                                            phi_2514_ = select(select(select(_e1451, 0u, _e1453), 0u, (sqrt((((_e1200 * _e1200) + (_e1201 * _e1201)) + (_e1202 * _e1202))) <= 0f)), 0u, _e1190);
                                         } else {
-                                            phi_2515_ = 0u;
+                                            phi_2514_ = 0u;
                                         }
-                                        let _e1469 = phi_2515_;
-                                        phi_1195_ = (_e722 + 1u);
-                                        phi_1198_ = ((_e724 | _e1187) | _e1469);
+                                        let _e1459 = phi_2514_;
+                                        phi_1194_ = (_e712 + 1u);
+                                        phi_1197_ = ((_e714 | _e1177) | _e1459);
                                     } else {
-                                        phi_1195_ = u32();
-                                        phi_1198_ = u32();
+                                        phi_1194_ = u32();
+                                        phi_1197_ = u32();
                                     }
-                                    let _e1473 = phi_1195_;
-                                    let _e1475 = phi_1198_;
+                                    let _e1463 = phi_1194_;
+                                    let _e1465 = phi_1197_;
                                     continue;
                                     continuing {
-                                        phi_1194_ = _e1473;
-                                        phi_1197_ = _e1475;
-                                        break if !(_e725);
+                                        phi_1193_ = _e1463;
+                                        phi_1196_ = _e1465;
+                                        break if !(_e715);
                                     }
                                 }
                                 if (_e152 == 2u) {
-                                    let _e1535 = (_e717 - 1.5707964f);
-                                    let _e1536 = (_e1535 * 2f);
-                                    let _e1537 = sin(_e717);
-                                    let _e1542 = ((_e695 + (_e1536 * _e1537)) - cos((_e1536 - _e717)));
-                                    phi_2544_ = 0u;
-                                    phi_2547_ = select((_e1542 * 0.25f), (_e1542 * -0.25f), (_e1535 < 0f));
-                                    phi_2549_ = 0f;
+                                    let _e1525 = (_e707 - 1.5707964f);
+                                    let _e1526 = (_e1525 * 2f);
+                                    let _e1527 = sin(_e707);
+                                    let _e1532 = ((_e685 + (_e1526 * _e1527)) - cos((_e1526 - _e707)));
+                                    phi_2543_ = 0u;
+                                    phi_2546_ = select((_e1532 * 0.25f), (_e1532 * -0.25f), (_e1525 < 0f));
+                                    phi_2548_ = 0f;
                                     loop {
-                                        let _e1548 = phi_2544_;
-                                        let _e1550 = phi_2547_;
-                                        let _e1552 = phi_2549_;
-                                        local_5 = _e1552;
-                                        let _e1553 = (_e1548 < 32u);
-                                        if _e1553 {
-                                            let _e1554 = (_e1548 + 1u);
-                                            let _e1558 = (_e1535 + (f32(bitcast<i32>(_e1554)) * 0.09817477f));
-                                            let _e1559 = (_e1558 * 2f);
-                                            let _e1564 = ((_e695 + (_e1559 * _e1537)) - cos((_e1559 - _e717)));
-                                            let _e1568 = select((_e1564 * 0.25f), (_e1564 * -0.25f), (_e1558 < 0f));
-                                            let _e1571 = local_4;
-                                            phi_2545_ = _e1554;
-                                            phi_2548_ = _e1568;
-                                            phi_2550_ = select(_e1552, (_e1552 + (_e1568 - _e1550)), (((_e1571 >> bitcast<u32>((_e1548 & 31u))) & 1u) == 0u));
+                                        let _e1538 = phi_2543_;
+                                        let _e1540 = phi_2546_;
+                                        let _e1542 = phi_2548_;
+                                        local_5 = _e1542;
+                                        let _e1543 = (_e1538 < 32u);
+                                        if _e1543 {
+                                            let _e1544 = (_e1538 + 1u);
+                                            let _e1548 = (_e1525 + (f32(bitcast<i32>(_e1544)) * 0.09817477f));
+                                            let _e1549 = (_e1548 * 2f);
+                                            let _e1554 = ((_e685 + (_e1549 * _e1527)) - cos((_e1549 - _e707)));
+                                            let _e1558 = select((_e1554 * 0.25f), (_e1554 * -0.25f), (_e1548 < 0f));
+                                            let _e1561 = local_4;
+                                            phi_2544_ = _e1544;
+                                            phi_2547_ = _e1558;
+                                            phi_2549_ = select(_e1542, (_e1542 + (_e1558 - _e1540)), (((_e1561 >> bitcast<u32>((_e1538 & 31u))) & 1u) == 0u));
                                         } else {
-                                            phi_2545_ = u32();
-                                            phi_2548_ = f32();
-                                            phi_2550_ = f32();
+                                            phi_2544_ = u32();
+                                            phi_2547_ = f32();
+                                            phi_2549_ = f32();
                                         }
-                                        let _e1580 = phi_2545_;
-                                        let _e1582 = phi_2548_;
-                                        let _e1584 = phi_2550_;
+                                        let _e1570 = phi_2544_;
+                                        let _e1572 = phi_2547_;
+                                        let _e1574 = phi_2549_;
                                         continue;
                                         continuing {
-                                            phi_2544_ = _e1580;
-                                            phi_2547_ = _e1582;
-                                            phi_2549_ = _e1584;
-                                            break if !(_e1553);
+                                            phi_2543_ = _e1570;
+                                            phi_2546_ = _e1572;
+                                            phi_2548_ = _e1574;
+                                            break if !(_e1543);
                                         }
                                     }
-                                    let _e1587 = local_5;
-                                    phi_3412_ = _e612;
-                                    phi_2651_ = (_e616 + 1f);
-                                    phi_2652_ = (_e618 + ((_e676 + ((1f - _e676) * 0.05f)) * _e1587));
+                                    let _e1577 = local_5;
+                                    phi_3306_ = _e602;
+                                    phi_2650_ = (_e606 + 1f);
+                                    phi_2651_ = (_e608 + ((_e666 + ((1f - _e666) * 0.05f)) * _e1577));
                                 } else {
                                     if (_e152 == 1u) {
-                                        phi_2596_ = 0u;
-                                        phi_2599_ = 0f;
+                                        phi_2595_ = 0u;
+                                        phi_2598_ = 0f;
                                         loop {
-                                            let _e1490 = phi_2596_;
-                                            let _e1492 = phi_2599_;
-                                            local_3 = _e1492;
-                                            let _e1493 = (_e1490 < 4u);
-                                            if _e1493 {
+                                            let _e1480 = phi_2595_;
+                                            let _e1482 = phi_2598_;
+                                            local_3 = _e1482;
+                                            let _e1483 = (_e1480 < 4u);
+                                            if _e1483 {
                                                 local = array<type_26, 4>(type_26(4026531855u, 0.0095061f), type_26(251658480u, 0.0270951f), type_26(15732480u, 0.0405571f), type_26(1044480u, 0.0478421f));
-                                                if _e1493 {
+                                                if _e1483 {
                                                 } else {
-                                                    phi_3205_ = true;
+                                                    phi_3098_ = true;
                                                     break;
                                                 }
-                                                let _e1496 = local[_e1490].member;
-                                                let _e1499 = local[_e1490].member_1;
-                                                let _e1501 = local_2;
-                                                phi_2597_ = (_e1490 + 1u);
-                                                phi_2600_ = (_e1492 + (f32(bitcast<i32>(countOneBits((_e1501 & _e1496)))) * _e1499));
+                                                let _e1486 = local[_e1480].member;
+                                                let _e1489 = local[_e1480].member_1;
+                                                let _e1491 = local_2;
+                                                phi_2596_ = (_e1480 + 1u);
+                                                phi_2599_ = (_e1482 + (f32(bitcast<i32>(countOneBits((_e1491 & _e1486)))) * _e1489));
                                             } else {
-                                                phi_2597_ = u32();
-                                                phi_2600_ = f32();
+                                                phi_2596_ = u32();
+                                                phi_2599_ = f32();
                                             }
-                                            let _e1510 = phi_2597_;
-                                            let _e1512 = phi_2600_;
+                                            let _e1500 = phi_2596_;
+                                            let _e1502 = phi_2599_;
                                             continue;
                                             continuing {
-                                                phi_2596_ = _e1510;
-                                                phi_2599_ = _e1512;
-                                                phi_3205_ = _e612;
-                                                break if !(_e1493);
+                                                phi_2595_ = _e1500;
+                                                phi_2598_ = _e1502;
+                                                phi_3098_ = _e602;
+                                                break if !(_e1483);
                                             }
                                         }
-                                        let _e1515 = phi_3205_;
-                                        phi_3410_ = _e1515;
-                                        if _e1515 {
+                                        let _e1505 = phi_3098_;
+                                        phi_3304_ = _e1505;
+                                        if _e1505 {
                                             break;
                                         }
-                                        let _e1517 = local_3;
-                                        let _e1518 = (1f - _e1517);
-                                        phi_3418_ = _e1515;
-                                        phi_2649_ = (_e616 + _e676);
-                                        phi_2650_ = (_e618 + (_e676 * select(0f, select(1f, _e1518, (_e1518 < 1f)), (_e1518 > 0f))));
+                                        let _e1507 = local_3;
+                                        let _e1508 = (1f - _e1507);
+                                        phi_3312_ = _e1505;
+                                        phi_2648_ = (_e606 + _e666);
+                                        phi_2649_ = (_e608 + (_e666 * select(0f, select(1f, _e1508, (_e1508 < 1f)), (_e1508 > 0f))));
                                     } else {
-                                        let _e1480 = local_1;
-                                        phi_3418_ = _e612;
-                                        phi_2649_ = (_e616 + 1f);
-                                        phi_2650_ = (_e618 + ((f32(bitcast<i32>(countOneBits((_e1480 & 4294967295u)))) * -0.03125f) + 1f));
+                                        let _e1470 = local_1;
+                                        phi_3312_ = _e602;
+                                        phi_2648_ = (_e606 + 1f);
+                                        phi_2649_ = (_e608 + ((f32(bitcast<i32>(countOneBits((_e1470 & 4294967295u)))) * -0.03125f) + 1f));
                                     }
-                                    let _e1527 = phi_3418_;
-                                    let _e1529 = phi_2649_;
-                                    let _e1531 = phi_2650_;
-                                    phi_3412_ = _e1527;
-                                    phi_2651_ = _e1529;
-                                    phi_2652_ = _e1531;
+                                    let _e1517 = phi_3312_;
+                                    let _e1519 = phi_2648_;
+                                    let _e1521 = phi_2649_;
+                                    phi_3306_ = _e1517;
+                                    phi_2650_ = _e1519;
+                                    phi_2651_ = _e1521;
                                 }
-                                let _e1592 = phi_3412_;
-                                let _e1594 = phi_2651_;
-                                let _e1596 = phi_2652_;
-                                phi_3411_ = _e1592;
-                                phi_997_ = (_e614 + 1u);
-                                phi_1000_ = _e1594;
-                                phi_1002_ = _e1596;
+                                let _e1582 = phi_3306_;
+                                let _e1584 = phi_2650_;
+                                let _e1586 = phi_2651_;
+                                phi_3305_ = _e1582;
+                                phi_996_ = (_e604 + 1u);
+                                phi_999_ = _e1584;
+                                phi_1001_ = _e1586;
                             } else {
-                                phi_3411_ = _e612;
-                                phi_997_ = u32();
-                                phi_1000_ = f32();
-                                phi_1002_ = f32();
+                                phi_3305_ = _e602;
+                                phi_996_ = u32();
+                                phi_999_ = f32();
+                                phi_1001_ = f32();
                             }
-                            let _e1599 = phi_3411_;
-                            let _e1601 = phi_997_;
-                            let _e1603 = phi_1000_;
-                            let _e1605 = phi_1002_;
+                            let _e1589 = phi_3305_;
+                            let _e1591 = phi_996_;
+                            let _e1593 = phi_999_;
+                            let _e1595 = phi_1001_;
                             continue;
                             continuing {
-                                phi_3326_ = _e1599;
-                                phi_996_ = _e1601;
-                                phi_999_ = _e1603;
-                                phi_1001_ = _e1605;
-                                phi_3410_ = _e1599;
-                                break if !(_e619);
+                                phi_3219_ = _e1589;
+                                phi_995_ = _e1591;
+                                phi_998_ = _e1593;
+                                phi_1000_ = _e1595;
+                                phi_3304_ = _e1589;
+                                break if !(_e609);
                             }
                         }
-                        let _e1608 = phi_3410_;
-                        if _e1608 {
+                        let _e1598 = phi_3304_;
+                        if _e1598 {
                             break;
                         }
-                        let _e1610 = local_6;
-                        let _e1613 = local_7;
-                        let _e1615 = local_8;
-                        phi_2660_ = select(1f, (_e1613 / _e1615), (_e1610 > 0f));
+                        let _e1600 = local_6;
+                        let _e1603 = local_7;
+                        let _e1605 = local_8;
+                        phi_2659_ = select(1f, (_e1603 / _e1605), (_e1600 > 0f));
                     } else {
-                        phi_2660_ = 1f;
+                        phi_2659_ = 1f;
                     }
-                    let _e1619 = phi_2660_;
-                    if _e607 {
-                        let _e1625 = pow(_e1619, _e147.member_6);
-                        if (_e1625 != _e1625) {
-                            phi_3179_ = true;
+                    let _e1609 = phi_2659_;
+                    if _e597 {
+                        let _e1615 = pow(_e1609, _e147.member_6);
+                        if (_e1615 != _e1615) {
+                            phi_3080_ = true;
                         } else {
-                            phi_3179_ = (0.03f >= _e1625);
+                            phi_3080_ = (0.03f >= _e1615);
                         }
-                        let _e1629 = phi_3179_;
-                        let _e1631 = (select(_e1625, 0.03f, _e1629) * 0.6666667f);
-                        phi_2701_ = (bitcast<u32>((floor(((select(0f, select(1f, _e1631, (_e1631 < 1f)), (_e1631 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
+                        let _e1619 = phi_3080_;
+                        let _e1621 = (select(_e1615, 0.03f, _e1619) * 0.6666667f);
+                        phi_2700_ = (bitcast<u32>((floor(((select(0f, select(1f, _e1621, (_e1621 < 1f)), (_e1621 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
                     } else {
-                        phi_2701_ = (bitcast<u32>((floor(170.5f) + 8388608f)) - 1258291200u);
+                        phi_2700_ = (bitcast<u32>((floor(170.5f) + 8388608f)) - 1258291200u);
                     }
-                    let _e1643 = phi_2701_;
-                    terms.member[_e185] = _e1643;
+                    let _e1633 = phi_2700_;
+                    terms.member[_e185] = _e1633;
                     edges.member[_e185] = ((((64u * (bitcast<u32>((floor(select(3f, _e316, (_e316 < 3f))) + 8388608f)) - 1258291200u)) + (16u * (bitcast<u32>((floor(select(3f, _e331, (_e331 < 3f))) + 8388608f)) - 1258291200u))) + (4u * (bitcast<u32>((floor(select(3f, _e347, (_e347 < 3f))) + 8388608f)) - 1258291200u))) + (bitcast<u32>((floor(select(3f, _e363, (_e363 < 3f))) + 8388608f)) - 1258291200u));
                 }
             }

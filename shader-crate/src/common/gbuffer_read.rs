@@ -2,7 +2,7 @@
 //! trait every screen-space kernel is written against.
 
 use crate::common::lanes::{LaneVec3, Lanes, row_major_index};
-use crate::common::normal_codec::decode_normal;
+use crate::common::normal_codec::decode_normal_lanes;
 use crate::glam::{UVec2, Vec3};
 
 /// What a screen-space kernel reads per pixel (spec svao-raysd §1 inputs).
@@ -33,14 +33,7 @@ fn row_major_lanes<L: Lanes>(depth: &[f32], width: u32, p: L::U2) -> L {
 /// pixel.
 #[inline]
 pub fn decoded_normals<L: Lanes>(normals: &[u32], width: u32, p: L::U2) -> L::V3 {
-    L::gather_v3(
-        normals,
-        move |i| {
-            let q = L::texel_lane(p, i);
-            (q.y * width + q.x) as usize
-        },
-        decode_normal,
-    )
+    decode_normal_lanes::<L>(L::gather_word(normals, row_major_index::<L>(p, width)))
 }
 
 /// The G-buffer as two row-major storage buffers of the full target: `f32` linear depth and

@@ -4,6 +4,7 @@
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
 
+use crate::common::lanes::{LaneVec3, Lanes};
 use crate::common::math::{clamp, sign_nonzero};
 use crate::glam::{Vec2, Vec3, vec2};
 
@@ -21,13 +22,6 @@ fn snorm8(c: f32) -> u32 {
     (q as u32) & 0xFF
 }
 
-/// Sign-extended snorm8 byte back to [−1, 1]: `max(b/127, −1)` (spec svao-raysd §1).
-#[inline]
-fn unsnorm8(byte: u32) -> f32 {
-    let b = ((byte << 24) as i32) >> 24;
-    (b as f32 / 127.0).max(-1.0)
-}
-
 /// Encode a (not necessarily unit) normal: `p = n.xy/(|x|+|y|+|z|)`, wrapped when `n.z < 0`;
 /// x in bits 0–7 and y in bits 8–15. Degenerate input encodes as +Z.
 #[inline]
@@ -43,10 +37,24 @@ pub fn encode_normal(n: Vec3) -> u32 {
 /// Decode to a unit normal (spec svao-raysd §1).
 #[inline]
 pub fn decode_normal(code: u32) -> Vec3 {
-    let mut p = vec2(unsnorm8(code & 0xFF), unsnorm8((code >> 8) & 0xFF));
-    let z = 1.0 - p.x.abs() - p.y.abs();
-    if z < 0.0 {
-        p = oct_wrap(p);
-    }
-    p.extend(z).normalize()
+    decode_normal_lanes::<f32>(code)
+}
+
+/// [`decode_normal`] per lane, branch-free (the CPU decodes eight codes in vector registers):
+/// the bytes sign-extended as floats (`b − 256` for b ≥ 128, exact), the lower hemisphere's
+/// wrap chosen by a select.
+#[inline]
+pub fn decode_normal_lanes<L: Lanes>(code: L::Index) -> L::V3 {
+    // Sign-extended snorm8 byte back to [−1, 1]: `max(b/127, −1)` (spec svao-raysd §1).
+    let byte = |shift: u32| {
+        let b = L::index_to_float((code >> shift) & L::index_splat(0xFF));
+        let b = L::select(b.ge(L::splat(128.0)), b - 256.0, b);
+        (b / 127.0).max(L::splat(-1.0))
+    };
+    let (x, y) = (byte(0), byte(8));
+    let z = -x.abs() + 1.0 - y.abs();
+    let below = z.lt(L::splat(0.0));
+    let wx = (-y.abs() + 1.0) * sign_nonzero(x);
+    let wy = (-x.abs() + 1.0) * sign_nonzero(y);
+    L::V3::new(L::select(below, wx, x), L::select(below, wy, y), z).normalize()
 }
