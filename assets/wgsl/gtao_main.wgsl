@@ -151,26 +151,34 @@ fn function_() {
             let _e222 = abs(_e212);
             let _e223 = abs((_e212 + _e217));
             let _e229 = (1.25f - (select(_e223, _e222, ((_e222 < _e223) || (_e223 != _e223))) / _e220));
-            let _e233 = select(0f, select(1f, _e229, (_e229 < 1f)), (_e229 > 0f));
+            let _e231 = select(0f, _e229, (_e229 > 0f));
+            let _e233 = select(1f, _e231, (_e231 < 1f));
             let _e235 = abs(_e213);
             let _e236 = abs((_e213 - _e217));
             let _e242 = (1.25f - (select(_e236, _e235, ((_e235 < _e236) || (_e236 != _e236))) / _e220));
-            let _e246 = select(0f, select(1f, _e242, (_e242 < 1f)), (_e242 > 0f));
+            let _e244 = select(0f, _e242, (_e242 > 0f));
+            let _e246 = select(1f, _e244, (_e244 < 1f));
             let _e248 = abs(_e214);
             let _e249 = abs((_e214 + _e219));
             let _e255 = (1.25f - (select(_e249, _e248, ((_e248 < _e249) || (_e249 != _e249))) / _e220));
-            let _e259 = select(0f, select(1f, _e255, (_e255 < 1f)), (_e255 > 0f));
+            let _e257 = select(0f, _e255, (_e255 > 0f));
+            let _e259 = select(1f, _e257, (_e257 < 1f));
             let _e261 = abs(_e215);
             let _e262 = abs((_e215 - _e219));
             let _e268 = (1.25f - (select(_e262, _e261, ((_e261 < _e262) || (_e262 != _e262))) / _e220));
-            let _e272 = select(0f, select(1f, _e268, (_e268 < 1f)), (_e268 > 0f));
-            let _e278 = round((select(0f, select(1f, _e233, (_e233 < 1f)), (_e233 > 0f)) * 2.9f));
+            let _e270 = select(0f, _e268, (_e268 > 0f));
+            let _e272 = select(1f, _e270, (_e270 < 1f));
+            let _e274 = select(0f, _e233, (_e233 > 0f));
+            let _e278 = round((select(1f, _e274, (_e274 < 1f)) * 2.9f));
             let _e280 = select(0f, _e278, (_e278 > 0f));
-            let _e293 = round((select(0f, select(1f, _e246, (_e246 < 1f)), (_e246 > 0f)) * 2.9f));
+            let _e289 = select(0f, _e246, (_e246 > 0f));
+            let _e293 = round((select(1f, _e289, (_e289 < 1f)) * 2.9f));
             let _e295 = select(0f, _e293, (_e293 > 0f));
-            let _e309 = round((select(0f, select(1f, _e259, (_e259 < 1f)), (_e259 > 0f)) * 2.9f));
+            let _e305 = select(0f, _e259, (_e259 > 0f));
+            let _e309 = round((select(1f, _e305, (_e305 < 1f)) * 2.9f));
             let _e311 = select(0f, _e309, (_e309 > 0f));
-            let _e325 = round((select(0f, select(1f, _e272, (_e272 < 1f)), (_e272 > 0f)) * 2.9f));
+            let _e321 = select(0f, _e272, (_e272 > 0f));
+            let _e325 = round((select(1f, _e321, (_e321 < 1f)) * 2.9f));
             let _e327 = select(0f, _e325, (_e325 > 0f));
             let _e337 = ((f32(_e153) + 0.5f) / _e127.member.member.x);
             let _e340 = ((f32(_e162) + 0.5f) / _e127.member.member.y);
@@ -264,10 +272,11 @@ fn function_() {
                 let _e569 = -(_e568);
                 let _e570 = (_e433 * _e568);
                 let _e572 = ((10f - _e437) * 0.01f);
+                let _e574 = select(0f, _e572, (_e572 > 0f));
                 let _e580 = select(1u, _e127.member_8, (1u < _e127.member_8));
                 phi_748_ = 0u;
                 phi_751_ = vec3<f32>(0f, 0f, 0f);
-                phi_753_ = (select(0f, select(1f, _e572, (_e572 < 1f)), (_e572 > 0f)) * 0.5f);
+                phi_753_ = (select(1f, _e574, (_e574 < 1f)) * 0.5f);
                 loop {
                     let _e582 = phi_748_;
                     let _e584 = phi_751_;
@@ -297,7 +306,8 @@ fn function_() {
                         let _e644 = sqrt((((_e636 * _e636) + (_e637 * _e637)) + (_e638 * _e638)));
                         let _e649 = (((_e606 * _e636) + (_e607 * _e637)) + (_e608 * _e638));
                         let _e659 = ((((_e636 * _e366) + (_e637 * _e367)) + (_e638 * _e368)) / _e644);
-                        let _e663 = select(0f, select(1f, _e659, (_e659 < 1f)), (_e659 > 0f));
+                        let _e661 = select(0f, _e659, (_e659 > 0f));
+                        let _e663 = select(1f, _e661, (_e661 < 1f));
                         let _e664 = abs(_e663);
                         let _e675 = (((_e664 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e664))) >> bitcast<u32>(1i))))));
                         let _e679 = (select(select(0f, -1f, (_e649 < 0f)), 1f, (_e649 > 0f)) * select((3.141593f - _e675), _e675, (_e663 >= 0f)));
@@ -329,7 +339,8 @@ fn function_() {
                                 let _e717 = ((_e596 * _e437) * _e716);
                                 let _e718 = ((-(_e595) * _e437) * _e716);
                                 let _e725 = (log2(sqrt(((_e717 * _e717) + (_e718 * _e718)))) - _e127.member_7);
-                                let _e732 = (-1f - floor((-0.5f - select(0f, select(5f, _e725, (_e725 < 5f)), (_e725 > 0f)))));
+                                let _e727 = select(0f, _e725, (_e725 > 0f));
+                                let _e732 = (-1f - floor((-0.5f - select(5f, _e727, (_e727 < 5f)))));
                                 let _e735 = (round(_e717) * (1f / _e127.member.member.x));
                                 let _e738 = (round(_e718) * (1f / _e127.member.member.y));
                                 let _e739 = (_e337 + _e735);
@@ -383,7 +394,8 @@ fn function_() {
                                     phi_1432_ = select(0f, 1f, (_e899 <= _e433));
                                 } else {
                                     let _e903 = ((_e899 * _e569) + _e570);
-                                    phi_1432_ = select(0f, select(1f, _e903, (_e903 < 1f)), (_e903 > 0f));
+                                    let _e905 = select(0f, _e903, (_e903 > 0f));
+                                    phi_1432_ = select(1f, _e905, (_e905 < 1f));
                                 }
                                 let _e909 = phi_1432_;
                                 let _e912 = (_e684 + ((((((_e877 * _e366) + (_e878 * _e367)) + (_e879 * _e368)) / _e885) - _e684) * _e909));
@@ -403,7 +415,8 @@ fn function_() {
                                     phi_1492_ = select(0f, 1f, (_e934 <= _e433));
                                 } else {
                                     let _e938 = ((_e934 * _e569) + _e570);
-                                    phi_1492_ = select(0f, select(1f, _e938, (_e938 < 1f)), (_e938 > 0f));
+                                    let _e940 = select(0f, _e938, (_e938 > 0f));
+                                    phi_1492_ = select(1f, _e940, (_e940 < 1f));
                                 }
                                 let _e944 = phi_1492_;
                                 let _e947 = (_e686 + ((((((_e913 * _e366) + (_e914 * _e367)) + (_e915 * _e368)) / _e921) - _e686) * _e944));
@@ -500,7 +513,8 @@ fn function_() {
                 let _e1135 = select(_e1130, 0.03f, _e1134);
                 if (_e127.member_13 == 0u) {
                     let _e1138 = (_e1135 * 0.6666667f);
-                    phi_1800_ = (bitcast<u32>((floor(((select(0f, select(1f, _e1138, (_e1138 < 1f)), (_e1138 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
+                    let _e1140 = select(0f, _e1138, (_e1138 > 0f));
+                    phi_1800_ = (bitcast<u32>((floor(((select(1f, _e1140, (_e1140 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
                 } else {
                     let _e1157 = sqrt((((_e1126.member_1.x * _e1126.member_1.x) + (_e1126.member_1.y * _e1126.member_1.y)) + (_e1126.member_1.z * _e1126.member_1.z)));
                     if (_e1157 > 0f) {
@@ -513,7 +527,11 @@ fn function_() {
                     let _e1170 = ((_e1162.x * 0.5f) + 0.5f);
                     let _e1171 = ((_e1162.y * 0.5f) + 0.5f);
                     let _e1172 = ((_e1162.z * 0.5f) + 0.5f);
-                    phi_1800_ = ((((bitcast<u32>((floor(((select(0f, select(1f, _e1170, (_e1170 < 1f)), (_e1170 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) | ((bitcast<u32>((floor(((select(0f, select(1f, _e1171, (_e1171 < 1f)), (_e1171 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(8i))) | ((bitcast<u32>((floor(((select(0f, select(1f, _e1172, (_e1172 < 1f)), (_e1172 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(16i))) | ((bitcast<u32>((floor(((select(0f, select(1f, _e1163, (_e1163 < 1f)), (_e1163 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(24i)));
+                    let _e1174 = select(0f, _e1170, (_e1170 > 0f));
+                    let _e1184 = select(0f, _e1171, (_e1171 > 0f));
+                    let _e1197 = select(0f, _e1172, (_e1172 > 0f));
+                    let _e1210 = select(0f, _e1163, (_e1163 > 0f));
+                    phi_1800_ = ((((bitcast<u32>((floor(((select(1f, _e1174, (_e1174 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) | ((bitcast<u32>((floor(((select(1f, _e1184, (_e1184 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(8i))) | ((bitcast<u32>((floor(((select(1f, _e1197, (_e1197 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(16i))) | ((bitcast<u32>((floor(((select(1f, _e1210, (_e1210 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(24i)));
                 }
                 let _e1223 = phi_1800_;
                 phi_1841_ = _e1223;

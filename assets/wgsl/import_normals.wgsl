@@ -74,14 +74,16 @@ fn function_() {
                 if (_e111.x != _e111.x) {
                     phi_189_ = 0f;
                 } else {
-                    phi_189_ = select(-1f, select(1f, _e111.x, (_e111.x < 1f)), (_e111.x > -1f));
+                    let _e115 = select(-1f, _e111.x, (_e111.x > -1f));
+                    phi_189_ = select(1f, _e115, (_e115 < 1f));
                 }
                 let _e119 = phi_189_;
                 let _e124 = ((_e119 * 127f) + (0.5f * select(1f, -1f, (_e119 < 0f))));
                 if (_e111.y != _e111.y) {
                     phi_224_ = 0f;
                 } else {
-                    phi_224_ = select(-1f, select(1f, _e111.y, (_e111.y < 1f)), (_e111.y > -1f));
+                    let _e137 = select(-1f, _e111.y, (_e111.y > -1f));
+                    phi_224_ = select(1f, _e137, (_e137 < 1f));
                 }
                 let _e141 = phi_224_;
                 let _e146 = ((_e141 * 127f) + (0.5f * select(1f, -1f, (_e141 < 0f))));

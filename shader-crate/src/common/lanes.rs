@@ -79,6 +79,9 @@ pub trait Lanes:
     fn le(self, other: Self) -> Self::Mask;
     /// `if m { a } else { b }` per lane.
     fn select(m: Self::Mask, a: Self, b: Self) -> Self;
+    /// `x > lo ? (x < hi ? x : hi) : lo` per lane for `lo < hi` or both +0 (NaN → `lo`): the
+    /// kernels' clamp to constant bounds ([`crate::common::math::clamp`]).
+    fn clamp_between(self, lo: Self, hi: Self) -> Self;
     fn and(a: Self::Mask, b: Self::Mask) -> Self::Mask;
     fn or(a: Self::Mask, b: Self::Mask) -> Self::Mask;
     fn not(a: Self::Mask) -> Self::Mask;
@@ -271,6 +274,12 @@ impl Lanes for f32 {
     #[inline]
     fn select(m: bool, a: Self, b: Self) -> Self {
         if m { a } else { b }
+    }
+    /// Compares and selects (branch-free on the GPU).
+    #[inline]
+    fn clamp_between(self, lo: f32, hi: f32) -> f32 {
+        let c = if self > lo { self } else { lo };
+        if c < hi { c } else { hi }
     }
     #[inline]
     fn and(a: bool, b: bool) -> bool {
@@ -577,7 +586,17 @@ mod x8 {
         }
         #[inline(always)]
         fn select(m: f32x8, a: Self, b: Self) -> Self {
-            F32x8(m.bitselect(a.0, b.0))
+            // `vblendvps` (one instruction); the masks are whole lanes of ones or zeros, so it
+            // picks as `bitselect`'s and/andnot/or would.
+            F32x8(wide::Select::select(m, a.0, b.0))
+        }
+        /// `minps(maxps(x, lo), hi)`: `maxps` returns its second operand for a NaN or equal
+        /// pair, so NaN → lo and x = lo → lo (±0 included), then `minps` keeps x below hi and
+        /// returns hi for x = hi: the compares-and-selects' value, bit for bit, in two
+        /// instructions.
+        #[inline(always)]
+        fn clamp_between(self, lo: Self, hi: Self) -> Self {
+            F32x8(self.0.fast_max(lo.0).fast_min(hi.0))
         }
         #[inline(always)]
         fn and(a: f32x8, b: f32x8) -> f32x8 {
@@ -646,7 +665,7 @@ mod x8 {
         }
         #[inline(always)]
         fn index_select(m: f32x8, a: i32x8, b: i32x8) -> i32x8 {
-            bytemuck::cast::<f32x8, i32x8>(m).bitselect(a, b)
+            wide::Select::<i32x8>::select(m, a, b)
         }
         /// `maxps(x, 0)` takes 0 for a NaN `x`; clamped below `n`, the truncation is exact.
         #[inline(always)]

@@ -36,13 +36,15 @@ pub fn sat<L: Lanes>(x: L) -> L {
     clamp(x, 0.0, 1.0)
 }
 
-/// Clamp without `f32::clamp`'s panic path (rust-gpu friendly). NaN maps to `lo`.
+/// Clamp without `f32::clamp`'s panic path (rust-gpu friendly). NaN maps to `lo`. For
+/// `lo < hi` (or both +0): the CPU's lanes clamp in two instructions ([`Lanes::clamp_between`]).
 #[inline]
 pub fn clamp<L: Lanes>(x: L, lo: f32, hi: f32) -> L {
-    clamp_lanes(x, L::splat(lo), L::splat(hi))
+    x.clamp_between(L::splat(lo), L::splat(hi))
 }
 
-/// [`clamp`] with bounds that differ per lane.
+/// [`clamp`] with bounds that differ per lane (any `lo ≤ hi`, signed zeros kept as the
+/// compares choose them).
 #[inline]
 pub fn clamp_lanes<L: Lanes>(x: L, lo: L, hi: L) -> L {
     L::select(x.gt(lo), L::select(x.lt(hi), x, hi), lo)

@@ -84,29 +84,30 @@ pub fn sample_bits<L: Lanes>(delta_f: L::V3, v: L::V3, n: L::V3, side: f32, thic
     let zero = L::splat(0.0);
     // The sample's own slice: toward the sample across v, and that slice's projected normal.
     let toward = delta_f - v * delta_f.dot(v);
-    let t_len = toward.length();
-    let axis = toward.cross(v).normalize();
-    let projected = n - axis * n.dot(axis);
-    let len = projected.length();
-    let cos_n = sat(projected.dot(v) / len);
+    // The normal minus its component along the slice's axis c = toward × v, with c unnormalised:
+    // n − c·(n·c)/(c·c) (one division, no square root).
+    let axis = toward.cross(v);
+    let projected = n - axis * (n.dot(axis) / axis.dot(axis));
+    let inv_len = L::splat(1.0) / projected.length();
+    let cos_n = sat(projected.dot(v) * inv_len);
     let angle = precise_acos(cos_n);
     let gamma = L::select(toward.dot(projected).lt(zero), -angle, angle);
     // A normal off by ε turns the slice's projected normal by up to ε/L.
-    let tolerance = (L::splat(EDGE_TOLERANCE) / len).min(L::splat(MAX_EDGE_TOLERANCE));
+    let tolerance = (inv_len * EDGE_TOLERANCE).min(L::splat(MAX_EDGE_TOLERANCE));
     let delta_b = delta_f - v * L::splat(thickness);
     let x_f = sector_coordinate(angle_to::<L>(delta_f, v) + tolerance, gamma);
     let x_b = sector_coordinate(angle_to::<L>(delta_b, v) + tolerance, gamma);
     // In the own slice the sample's side is side 0; on the nominal side 1 that is mirrored.
     let (x_f, x_b) = if side > 0.0 { (x_f, x_b) } else { (-x_f + 1.0, -x_b + 1.0) };
     let bits = sector_bits_lanes(x_f.min(x_b), x_f.max(x_b), rule);
-    // No own slice for a sample on the view ray.
-    L::index_select(t_len.le(zero), L::index_splat(0), bits)
+    // No own slice for a sample on the view ray (|toward|² = 0).
+    L::index_select(toward.dot(toward).le(zero), L::index_splat(0), bits)
 }
 
 /// The angle between `delta` and the unit vector `v` ([`precise_acos`]).
 #[inline]
 fn angle_to<L: Lanes>(delta: L::V3, v: L::V3) -> L {
-    precise_acos(clamp(delta.normalize().dot(v), -1.0, 1.0))
+    precise_acos(clamp(delta.dot(v) / delta.length(), -1.0, 1.0))
 }
 
 /// The signed cosine-weighted arc from 0 to θ, `A(θ) = sgn(θ)·a(θ)` with XeGTAO's `a`: an
