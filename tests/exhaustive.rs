@@ -17,6 +17,7 @@ use aokit_shaders::common::denoise_terms::{
 use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR, from_ordered_bits, ordered_bits};
 use aokit_shaders::common::hash::wyman_hash;
 use aokit_shaders::common::lanes::{F32x8, Lanes};
+use aokit_shaders::common::math::f32_to_u32_bits;
 use aokit_shaders::common::noise::rotate;
 use aokit_shaders::common::normal_codec::{decode_normal, decode_normal_lanes, encode_normal};
 use aokit_shaders::glam::{Vec3, vec2, vec3, vec4};
@@ -468,6 +469,69 @@ fn normal_codec_over_every_u32_code() {
     report("normal_codec_over_every_u32_code", start, "2^32 codes");
 }
 
+/// The octahedral decoder as it was written before it became generic over lanes (a scalar
+/// sign extension through `i32` and a branch for the lower hemisphere): the reference the
+/// branch-free decoder must equal bit for bit.
+fn decode_normal_scalar_reference(code: u32) -> Vec3 {
+    let unsnorm8 = |byte: u32| ((((byte << 24) as i32) >> 24) as f32 / 127.0).max(-1.0);
+    let sign = |v: f32| if v < 0.0 { -1.0 } else { 1.0 };
+    let (mut x, mut y) = (unsnorm8(code & 0xFF), unsnorm8((code >> 8) & 0xFF));
+    let z = 1.0 - x.abs() - y.abs();
+    if z < 0.0 {
+        (x, y) = ((1.0 - y.abs()) * sign(x), (1.0 - x.abs()) * sign(y));
+    }
+    vec3(x, y, z).normalize()
+}
+
+/// The decoder the kernels read the G-buffer with, one code (`decode_normal`) and eight
+/// (`decode_normal_lanes::<F32x8>`, cpu-sim's lanes), against the scalar reference above, bit
+/// for bit: every 16-bit code in every lane position, with high bits set in half of the lanes
+/// (ignored).
+///
+/// Domain 2¹⁶ codes × 8 lane positions; measured 0.1 s.
+#[test]
+fn normal_decoder_scalar_and_lanes_equal_the_reference_for_every_code() {
+    let start = Instant::now();
+    let mut checked = 0u32;
+    for c in (0..1u32 << 16).step_by(8) {
+        for rot in 0..8 {
+            let codes: [u32; 8] = core::array::from_fn(|i| {
+                let code = c + ((i + rot) % 8) as u32;
+                if i % 2 == 1 { code | 0xABCD_0000 } else { code }
+            });
+            let lanes = decode_normal_lanes::<F32x8>(i32x8::new(codes.map(|k| k as i32)));
+            for (i, &code) in codes.iter().enumerate() {
+                let want = decode_normal_scalar_reference(code & 0xFFFF).to_array().map(f32::to_bits);
+                let one = decode_normal(code).to_array().map(f32::to_bits);
+                let got = [lanes.x.lane(i), lanes.y.lane(i), lanes.z.lane(i)].map(f32::to_bits);
+                assert_eq!(one, want, "decode_normal({code:#010x})");
+                assert_eq!(got, want, "code {code:#010x} in lane {i}");
+                checked += 1;
+            }
+        }
+    }
+    assert_eq!(checked, 8 << 16, "codes × lane positions checked");
+    report("normal_decoder_scalar_and_lanes_equal_the_reference_for_every_code", start, "2^16 codes × 8 lanes");
+}
+
+/// `f32_to_u32_bits` (the SPIR-V form of `f32_to_u32`: ⌊x⌋ + 2²³ read as bits) against Rust's
+/// `as u32` on every float of [0, 2²³), +0 to the largest float below 2²³.
+///
+/// Domain 0x4B00_0000 floats (1.26·10⁹); measured about 2 s.
+#[test]
+fn f32_to_u32_bits_equals_the_cast_on_every_float_of_its_range() {
+    let start = Instant::now();
+    let t = sweep(0, 0x4AFF_FFFF, |a, b, t| {
+        for bits in a..b {
+            let x = f32::from_bits(bits as u32);
+            let got = f32_to_u32_bits(x);
+            t.check(bits, got == x as u32, || format!("f32_to_u32_bits({x:?}) = {got}, as u32 = {}", x as u32));
+        }
+    });
+    t.assert_clean("f32_to_u32_bits");
+    report("f32_to_u32_bits_equals_the_cast_on_every_float_of_its_range", start, "0x4B000000 floats");
+}
+
 /// The octahedral codec's worst angular error over a Fibonacci sphere of 2²⁶ ≈ 6.7·10⁷
 /// directions is within the bound derived from its quantisation step, and near it.
 ///
@@ -482,34 +546,6 @@ fn normal_codec_over_every_u32_code() {
 /// Observed: 0.016 671 rad, 0.998 of the bound.
 ///
 /// Domain 2²⁶ directions; measured 4 s.
-/// The CPU's eight-lane decoder (`decode_normal_lanes::<F32x8>`, what cpu-sim's kernels read
-/// the G-buffer with) gives the scalar decoder's vector bit for bit for every 16-bit code,
-/// each code in every lane position, with its high bits set in half of the lanes (ignored).
-#[test]
-fn normal_decoder_lanes_equal_the_scalar_decoder_for_every_code() {
-    let mut checked = 0u32;
-    for c in (0..1u32 << 16).step_by(8) {
-        for rot in 0..8 {
-            let codes: [u32; 8] = core::array::from_fn(|i| {
-                let code = c + ((i + rot) % 8) as u32;
-                if i % 2 == 1 { code | 0xABCD_0000 } else { code }
-            });
-            let lanes = decode_normal_lanes::<F32x8>(i32x8::new(codes.map(|k| k as i32)));
-            for (i, &code) in codes.iter().enumerate() {
-                let want = decode_normal(code & 0xFFFF);
-                let got = [lanes.x.lane(i), lanes.y.lane(i), lanes.z.lane(i)];
-                assert_eq!(
-                    got.map(f32::to_bits),
-                    want.to_array().map(f32::to_bits),
-                    "code {code:#010x} in lane {i}: lanes {got:?}, scalar {want:?}"
-                );
-                checked += 1;
-            }
-        }
-    }
-    assert_eq!(checked, 8 << 16, "codes × lane positions checked");
-}
-
 #[test]
 fn normal_codec_error_over_a_dense_sphere_is_within_the_quantisation_bound() {
     let start = Instant::now();

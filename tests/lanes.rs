@@ -170,14 +170,14 @@ fn vbao_lanes_match_one_pixel_at_a_time_within_one_step() {
     }
 }
 
-/// The lanes' two-instruction clamp (`minps(maxps(x, lo), hi)`) against the one-pixel
-/// compares and selects, bit for bit, on the values where they could part: NaN, ±0, ±∞, the
+/// The lanes' two-instruction clamp (`minps(maxps(x, lo), hi)`) against the compares and
+/// selects (`clamp_lanes` on one pixel), bit for bit, on the values where they could part: NaN, ±0, ±∞, the
 /// bounds themselves and values next to them, for the bounds the kernels clamp to (sat, the
 /// unit interval, MIP levels, +0 to +0).
 #[test]
 fn lane_clamp_equals_the_scalar_clamp_bit_for_bit() {
     use aokit_shaders::common::lanes::{F32x8, Lanes};
-    use aokit_shaders::common::math::clamp;
+    use aokit_shaders::common::math::{clamp, clamp_lanes};
     let special = [f32::NAN, -f32::NAN, 0.0, -0.0, f32::INFINITY, f32::NEG_INFINITY, f32::MIN_POSITIVE, -1e-30];
     let mut checked = 0;
     for (lo, hi) in [(0.0f32, 1.0f32), (-1.0, 1.0), (0.0, 5.0), (0.0, 0.0), (-3.5, 1e-3)] {
@@ -187,7 +187,7 @@ fn lane_clamp_equals_the_scalar_clamp_bit_for_bit() {
         for chunk in xs.chunks(8) {
             let lanes = clamp(F32x8::from_lanes(|i| chunk[i % chunk.len()]), lo, hi);
             for (i, &x) in chunk.iter().enumerate() {
-                let want = clamp::<f32>(x, lo, hi);
+                let want = clamp_lanes::<f32>(x, lo, hi);
                 assert_eq!(
                     lanes.lane(i).to_bits(),
                     want.to_bits(),

@@ -77,65 +77,65 @@ var<uniform> params: type_24;
 
 fn function_() {
     var local: array<type_26, 4>;
-    var phi_451_: type_21;
-    var phi_458_: u32;
-    var phi_465_: u32;
-    var phi_3199_: bool;
+    var phi_446_: type_21;
+    var phi_453_: u32;
+    var phi_460_: u32;
+    var phi_3048_: bool;
     var phi_995_: u32;
     var phi_998_: f32;
     var phi_1000_: f32;
     var phi_1193_: u32;
     var phi_1196_: u32;
     var phi_1249_: f32;
-    var phi_1662_: bool;
-    var phi_1994_: f32;
-    var phi_2044_: u32;
-    var phi_2047_: u32;
-    var phi_2048_: u32;
-    var phi_2049_: bool;
-    var phi_2068_: u32;
-    var phi_2088_: bool;
-    var phi_2420_: f32;
-    var phi_2470_: u32;
-    var phi_2473_: u32;
-    var phi_2474_: u32;
-    var phi_2475_: bool;
-    var phi_2494_: u32;
+    var phi_1527_: bool;
+    var phi_1859_: f32;
+    var phi_1909_: u32;
+    var phi_1912_: u32;
+    var phi_1913_: u32;
+    var phi_1914_: bool;
+    var phi_1933_: u32;
+    var phi_1953_: bool;
+    var phi_2285_: f32;
+    var phi_2335_: u32;
+    var phi_2338_: u32;
+    var phi_2339_: u32;
+    var phi_2340_: bool;
+    var phi_2359_: u32;
     var phi_1194_: u32;
     var phi_1197_: u32;
     var local_1: u32;
-    var phi_2575_: u32;
-    var phi_2578_: f32;
+    var phi_2440_: u32;
+    var phi_2443_: f32;
     var local_2: u32;
-    var phi_2576_: u32;
-    var phi_2579_: f32;
-    var phi_3078_: bool;
+    var phi_2441_: u32;
+    var phi_2444_: f32;
+    var phi_2943_: bool;
     var local_3: f32;
-    var phi_3292_: bool;
-    var phi_2628_: f32;
-    var phi_2629_: f32;
-    var phi_2523_: u32;
-    var phi_2526_: f32;
-    var phi_2528_: f32;
+    var phi_3141_: bool;
+    var phi_2493_: f32;
+    var phi_2494_: f32;
+    var phi_2388_: u32;
+    var phi_2391_: f32;
+    var phi_2393_: f32;
     var local_4: u32;
-    var phi_2524_: u32;
-    var phi_2527_: f32;
-    var phi_2529_: f32;
+    var phi_2389_: u32;
+    var phi_2392_: f32;
+    var phi_2394_: f32;
     var local_5: f32;
-    var phi_3286_: bool;
-    var phi_2630_: f32;
-    var phi_2631_: f32;
-    var phi_3285_: bool;
+    var phi_3135_: bool;
+    var phi_2495_: f32;
+    var phi_2496_: f32;
+    var phi_3134_: bool;
     var phi_996_: u32;
     var phi_999_: f32;
     var phi_1001_: f32;
-    var phi_3284_: bool;
+    var phi_3133_: bool;
     var local_6: f32;
     var local_7: f32;
     var local_8: f32;
-    var phi_2639_: f32;
-    var phi_3060_: bool;
-    var phi_2680_: u32;
+    var phi_2504_: f32;
+    var phi_2925_: bool;
+    var phi_2545_: u32;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -143,7 +143,7 @@ fn function_() {
             let _e113 = (override_type == 0u);
             if _e113 {
                 let _e145 = params.member.member_4;
-                phi_451_ = _e145;
+                phi_446_ = _e145;
             } else {
                 let _e123 = params.member.member_4.member;
                 let _e127 = params.member.member_4.member_1;
@@ -151,23 +151,23 @@ fn function_() {
                 let _e135 = params.member.member_4.member_11;
                 let _e139 = params.member.member_4.member_12;
                 let _e143 = params.member.member_4.member_14;
-                phi_451_ = type_21(_e123, _e127, bitcast<f32>(override_type_5), bitcast<f32>(override_type_4), bitcast<f32>(override_type_2), bitcast<f32>(override_type_1), bitcast<f32>(override_type_3), bitcast<f32>(override_type_6), override_type_7, override_type_8, _e131, _e135, _e139, override_type_9, _e143);
+                phi_446_ = type_21(_e123, _e127, bitcast<f32>(override_type_5), bitcast<f32>(override_type_4), bitcast<f32>(override_type_2), bitcast<f32>(override_type_1), bitcast<f32>(override_type_3), bitcast<f32>(override_type_6), override_type_7, override_type_8, _e131, _e135, _e139, override_type_9, _e143);
             }
-            let _e147 = phi_451_;
+            let _e147 = phi_446_;
             if _e113 {
                 let _e150 = params.member.member_2;
-                phi_458_ = _e150;
+                phi_453_ = _e150;
             } else {
-                phi_458_ = override_type_10;
+                phi_453_ = override_type_10;
             }
-            let _e152 = phi_458_;
+            let _e152 = phi_453_;
             if _e113 {
                 let _e155 = params.member.member_3;
-                phi_465_ = _e155;
+                phi_460_ = _e155;
             } else {
-                phi_465_ = override_type_11;
+                phi_460_ = override_type_11;
             }
-            let _e157 = phi_465_;
+            let _e157 = phi_460_;
             let _e160 = params.member.member;
             let _e163 = params.member.member_1;
             let _e171 = select(select(u32(_e147.member.member.x), 0u, (_e147.member.member.x < 0f)), 4294967295u, (_e147.member.member.x > 4294967000f));
@@ -315,470 +315,472 @@ fn function_() {
                     let _e584 = f32(bitcast<i32>((((((((1024u * ((3u * _e479) ^ _e482)) + (256u * ((3u * _e497) ^ _e500))) + (64u * ((3u * _e516) ^ _e519))) + (16u * ((3u * _e535) ^ _e538))) + (4u * ((3u * _e554) ^ _e557))) + ((3u * select(0u, 1u, ((select(_e567, _e568, _e562) & 1u) != 0u))) ^ select(0u, 1u, ((select(_e568, _e567, _e562) & 1u) != 0u)))) + (288u * (_e147.member_11 % 64u)))));
                     let _e586 = (0.5f + (_e584 * 0.7548777f));
                     let _e590 = (0.5f + (_e584 * 0.5698403f));
-                    let _e597 = select(false, (_e188 < _e147.member.member_3), (_e188 > 0f));
-                    if _e597 {
-                        let _e600 = select(1u, _e147.member_8, (1u < _e147.member_8));
-                        phi_3199_ = false;
+                    let _e596 = exp2(((2f * _e147.member_7) + 1f));
+                    let _e601 = select(false, (_e188 < _e147.member.member_3), (_e188 > 0f));
+                    if _e601 {
+                        let _e604 = select(1u, _e147.member_8, (1u < _e147.member_8));
+                        phi_3048_ = false;
                         phi_995_ = 0u;
                         phi_998_ = 0f;
                         phi_1000_ = 0f;
                         loop {
-                            let _e602 = phi_3199_;
-                            let _e604 = phi_995_;
-                            let _e606 = phi_998_;
-                            let _e608 = phi_1000_;
-                            local_6 = _e606;
-                            local_7 = _e608;
-                            local_8 = _e606;
-                            let _e609 = (_e604 < _e600);
-                            if _e609 {
-                                let _e616 = ((((_e586 - floor(_e586)) + f32(bitcast<i32>(_e604))) * 3.1415927f) / f32(bitcast<i32>(_e600)));
-                                let _e617 = sin(_e616);
-                                let _e618 = cos(_e616);
-                                let _e624 = ((_e618 * _e402) + (_e617 * _e403));
-                                let _e628 = (_e618 - (_e402 * _e624));
-                                let _e629 = (_e617 - (_e403 * _e624));
-                                let _e630 = -((_e404 * _e624));
-                                let _e633 = ((_e629 * _e404) - (_e403 * _e630));
-                                let _e636 = ((_e630 * _e402) - (_e404 * _e628));
-                                let _e639 = ((_e628 * _e403) - (_e402 * _e629));
-                                let _e646 = (1f / sqrt((((_e633 * _e633) + (_e636 * _e636)) + (_e639 * _e639))));
-                                let _e647 = (_e633 * _e646);
-                                let _e648 = (_e636 * _e646);
-                                let _e649 = (_e639 * _e646);
-                                let _e654 = (((_e463 * _e647) + (_e464 * _e648)) + (_e465 * _e649));
-                                let _e658 = (_e463 - (_e647 * _e654));
-                                let _e659 = (_e464 - (_e648 * _e654));
-                                let _e660 = (_e465 - (_e649 * _e654));
-                                let _e666 = sqrt((((_e658 * _e658) + (_e659 * _e659)) + (_e660 * _e660)));
-                                let _e671 = (((_e628 * _e658) + (_e629 * _e659)) + (_e630 * _e660));
-                                let _e681 = ((((_e658 * _e402) + (_e659 * _e403)) + (_e660 * _e404)) / _e666);
-                                let _e683 = select(0f, _e681, (_e681 > 0f));
-                                let _e685 = select(1f, _e683, (_e683 < 1f));
-                                let _e686 = abs(_e685);
-                                let _e704 = (((((((((((((((_e686 * -0.0012624911f) + 0.00667009f) * _e686) - 0.017088126f) * _e686) + 0.03089188f) * _e686) - 0.050174303f) * _e686) + 0.08897899f) * _e686) - 0.2145988f) * _e686) + 1.5707963f) * sqrt((1f - _e686)));
-                                let _e707 = (select(select(0f, -1f, (_e671 < 0f)), 1f, (_e671 > 0f)) * select((3.1415927f - _e704), _e704, (_e685 >= 0f)));
-                                let _e710 = select(1u, _e147.member_9, (1u < _e147.member_9));
+                            let _e606 = phi_3048_;
+                            let _e608 = phi_995_;
+                            let _e610 = phi_998_;
+                            let _e612 = phi_1000_;
+                            local_6 = _e610;
+                            local_7 = _e612;
+                            local_8 = _e610;
+                            let _e613 = (_e608 < _e604);
+                            if _e613 {
+                                let _e620 = ((((_e586 - floor(_e586)) + f32(bitcast<i32>(_e608))) * 3.1415927f) / f32(bitcast<i32>(_e604)));
+                                let _e621 = sin(_e620);
+                                let _e622 = cos(_e620);
+                                let _e628 = ((_e622 * _e402) + (_e621 * _e403));
+                                let _e632 = (_e622 - (_e402 * _e628));
+                                let _e633 = (_e621 - (_e403 * _e628));
+                                let _e634 = -((_e404 * _e628));
+                                let _e637 = ((_e633 * _e404) - (_e403 * _e634));
+                                let _e640 = ((_e634 * _e402) - (_e404 * _e632));
+                                let _e643 = ((_e632 * _e403) - (_e402 * _e633));
+                                let _e650 = (1f / sqrt((((_e637 * _e637) + (_e640 * _e640)) + (_e643 * _e643))));
+                                let _e651 = (_e637 * _e650);
+                                let _e652 = (_e640 * _e650);
+                                let _e653 = (_e643 * _e650);
+                                let _e658 = (((_e463 * _e651) + (_e464 * _e652)) + (_e465 * _e653));
+                                let _e662 = (_e463 - (_e651 * _e658));
+                                let _e663 = (_e464 - (_e652 * _e658));
+                                let _e664 = (_e465 - (_e653 * _e658));
+                                let _e670 = sqrt((((_e662 * _e662) + (_e663 * _e663)) + (_e664 * _e664)));
+                                let _e675 = (((_e632 * _e662) + (_e633 * _e663)) + (_e634 * _e664));
+                                let _e685 = ((((_e662 * _e402) + (_e663 * _e403)) + (_e664 * _e404)) / _e670);
+                                let _e687 = select(0f, _e685, (_e685 > 0f));
+                                let _e689 = select(1f, _e687, (_e687 < 1f));
+                                let _e690 = abs(_e689);
+                                let _e708 = (((((((((((((((_e690 * -0.0012624911f) + 0.00667009f) * _e690) - 0.017088126f) * _e690) + 0.03089188f) * _e690) - 0.050174303f) * _e690) + 0.08897899f) * _e690) - 0.2145988f) * _e690) + 1.5707963f) * sqrt((1f - _e690)));
+                                let _e711 = (select(select(0f, -1f, (_e675 < 0f)), 1f, (_e675 > 0f)) * select((3.1415927f - _e708), _e708, (_e689 >= 0f)));
+                                let _e714 = select(1u, _e147.member_9, (1u < _e147.member_9));
                                 phi_1193_ = 0u;
                                 phi_1196_ = 0u;
                                 loop {
-                                    let _e712 = phi_1193_;
-                                    let _e714 = phi_1196_;
-                                    local_1 = _e714;
-                                    local_2 = _e714;
-                                    local_4 = _e714;
-                                    let _e715 = (_e712 < _e710);
-                                    if _e715 {
-                                        let _e721 = ((_e590 - floor(_e590)) + (f32(bitcast<i32>((_e604 + (_e712 * _e710)))) * 0.618034f));
-                                        let _e730 = (((_e721 - floor(_e721)) + f32(bitcast<i32>(_e712))) * (1f / f32(bitcast<i32>(_e710))));
+                                    let _e716 = phi_1193_;
+                                    let _e718 = phi_1196_;
+                                    local_1 = _e718;
+                                    local_2 = _e718;
+                                    local_4 = _e718;
+                                    let _e719 = (_e716 < _e714);
+                                    if _e719 {
+                                        let _e725 = ((_e590 - floor(_e590)) + (f32(bitcast<i32>((_e608 + (_e716 * _e714)))) * 0.618034f));
+                                        let _e734 = (((_e725 - floor(_e725)) + f32(bitcast<i32>(_e716))) * (1f / f32(bitcast<i32>(_e714))));
                                         if (_e147.member_4 == 2f) {
-                                            phi_1249_ = (_e730 * _e730);
+                                            phi_1249_ = (_e734 * _e734);
                                         } else {
-                                            phi_1249_ = pow(_e730, _e147.member_4);
+                                            phi_1249_ = pow(_e734, _e147.member_4);
                                         }
-                                        let _e736 = phi_1249_;
-                                        let _e737 = (_e736 + (1.3f / _e472));
-                                        let _e738 = ((_e618 * _e472) * _e737);
-                                        let _e739 = ((-(_e617) * _e472) * _e737);
-                                        let _e746 = (log2(sqrt(((_e738 * _e738) + (_e739 * _e739)))) - _e147.member_7);
-                                        let _e748 = select(0f, _e746, (_e746 > 0f));
-                                        let _e753 = (-1f - floor((-0.5f - select(5f, _e748, (_e748 < 5f)))));
-                                        let _e756 = (round(_e738) * (1f / _e147.member.member.x));
-                                        let _e759 = (round(_e739) * (1f / _e147.member.member.y));
-                                        let _e760 = (_e373 + _e756);
-                                        let _e761 = (_e376 + _e759);
-                                        let _e762 = (_e373 - _e756);
-                                        let _e763 = (_e376 - _e759);
-                                        let _e765 = select(0f, _e753, (_e753 > 0f));
-                                        let _e772 = ((bitcast<u32>((floor(select(4f, _e765, (_e765 < 4f))) + 8388608f)) - 1258291200u) & 31u);
-                                        let _e774 = (_e171 >> bitcast<u32>(_e772));
-                                        let _e776 = select(1u, _e774, (1u < _e774));
-                                        let _e778 = (_e179 >> bitcast<u32>(_e772));
-                                        let _e780 = select(1u, _e778, (1u < _e778));
-                                        let _e785 = (select(1u, _e171, (1u < _e171)) * select(1u, _e179, (1u < _e179)));
-                                        let _e789 = (_e171 >> bitcast<u32>(1u));
-                                        let _e793 = (_e179 >> bitcast<u32>(1u));
-                                        let _e797 = (_e785 + (select(1u, _e789, (1u < _e789)) * select(1u, _e793, (1u < _e793))));
-                                        let _e801 = (_e171 >> bitcast<u32>(2u));
-                                        let _e805 = (_e179 >> bitcast<u32>(2u));
-                                        let _e809 = (_e797 + (select(1u, _e801, (1u < _e801)) * select(1u, _e805, (1u < _e805))));
-                                        let _e813 = (_e171 >> bitcast<u32>(3u));
-                                        let _e817 = (_e179 >> bitcast<u32>(3u));
-                                        let _e823 = select(select(select(select(0u, _e785, (_e753 >= 1f)), _e797, (_e753 >= 2f)), _e809, (_e753 >= 3f)), (_e809 + (select(1u, _e813, (1u < _e813)) * select(1u, _e817, (1u < _e817)))), (_e753 >= 4f));
-                                        let _e825 = f32(bitcast<i32>(_e776));
-                                        let _e826 = (_e760 * _e825);
-                                        let _e829 = f32(bitcast<i32>((_e776 - 1u)));
-                                        let _e831 = select(0f, _e826, (_e826 > 0f));
-                                        let _e839 = f32(bitcast<i32>(_e780));
-                                        let _e840 = (_e761 * _e839);
-                                        let _e843 = f32(bitcast<i32>((_e780 - 1u)));
-                                        let _e845 = select(0f, _e840, (_e840 > 0f));
-                                        let _e857 = mips.member[((_e823 + ((bitcast<u32>((floor(select(_e843, _e845, (_e845 < _e843))) + 8388608f)) - 1258291200u) * _e776)) + (bitcast<u32>((floor(select(_e829, _e831, (_e831 < _e829))) + 8388608f)) - 1258291200u))];
-                                        let _e866 = (_e762 * _e825);
-                                        let _e868 = select(0f, _e866, (_e866 > 0f));
-                                        let _e875 = (_e763 * _e839);
-                                        let _e877 = select(0f, _e875, (_e875 > 0f));
-                                        let _e889 = mips.member[((_e823 + ((bitcast<u32>((floor(select(_e843, _e877, (_e877 < _e843))) + 8388608f)) - 1258291200u) * _e776)) + (bitcast<u32>((floor(select(_e829, _e868, (_e868 < _e829))) + 8388608f)) - 1258291200u))];
-                                        let _e898 = (((((_e760 * 2f) - 1f) * _e147.member.member_1.x) * _e857) - _e384);
-                                        let _e899 = (((((_e761 * -2f) + 1f) * _e147.member.member_1.y) * _e857) - _e391);
-                                        let _e900 = (_e857 - _e377);
-                                        let _e901 = (_e163 > 0f);
-                                        if _e901 {
-                                            phi_1662_ = (sqrt((((_e898 * _e898) + (_e899 * _e899)) + (_e900 * _e900))) > _e163);
+                                        let _e740 = phi_1249_;
+                                        let _e741 = (_e740 + (1.3f / _e472));
+                                        let _e742 = ((_e622 * _e472) * _e741);
+                                        let _e743 = ((-(_e621) * _e472) * _e741);
+                                        let _e746 = ((_e742 * _e742) + (_e743 * _e743));
+                                        let _e751 = (select(1u, _e171, (1u < _e171)) * select(1u, _e179, (1u < _e179)));
+                                        let _e752 = (_e746 > _e596);
+                                        let _e756 = (_e171 >> bitcast<u32>(1u));
+                                        let _e760 = (_e179 >> bitcast<u32>(1u));
+                                        let _e764 = (_e751 + (select(1u, _e756, (1u < _e756)) * select(1u, _e760, (1u < _e760))));
+                                        let _e766 = (_e746 > (_e596 * 4f));
+                                        let _e770 = (_e171 >> bitcast<u32>(2u));
+                                        let _e774 = (_e179 >> bitcast<u32>(2u));
+                                        let _e778 = (_e764 + (select(1u, _e770, (1u < _e770)) * select(1u, _e774, (1u < _e774))));
+                                        let _e780 = (_e746 > (_e596 * 16f));
+                                        let _e784 = (_e171 >> bitcast<u32>(3u));
+                                        let _e788 = (_e179 >> bitcast<u32>(3u));
+                                        let _e794 = (_e746 > (_e596 * 64f));
+                                        let _e796 = select(select(select(select(0u, _e751, _e752), _e764, _e766), _e778, _e780), (_e778 + (select(1u, _e784, (1u < _e784)) * select(1u, _e788, (1u < _e788)))), _e794);
+                                        let _e797 = (select(select(select(select(0u, 1u, _e752), 2u, _e766), 3u, _e780), 4u, _e794) & 31u);
+                                        let _e799 = (_e171 >> bitcast<u32>(_e797));
+                                        let _e801 = select(1u, _e799, (1u < _e799));
+                                        let _e803 = (_e179 >> bitcast<u32>(_e797));
+                                        let _e805 = select(1u, _e803, (1u < _e803));
+                                        let _e808 = (round(_e742) * (1f / _e147.member.member.x));
+                                        let _e811 = (round(_e743) * (1f / _e147.member.member.y));
+                                        let _e812 = (_e373 + _e808);
+                                        let _e813 = (_e376 + _e811);
+                                        let _e814 = (_e373 - _e808);
+                                        let _e815 = (_e376 - _e811);
+                                        let _e817 = f32(bitcast<i32>(_e801));
+                                        let _e818 = (_e812 * _e817);
+                                        let _e821 = f32(bitcast<i32>((_e801 - 1u)));
+                                        let _e823 = select(0f, _e818, (_e818 > 0f));
+                                        let _e831 = f32(bitcast<i32>(_e805));
+                                        let _e832 = (_e813 * _e831);
+                                        let _e835 = f32(bitcast<i32>((_e805 - 1u)));
+                                        let _e837 = select(0f, _e832, (_e832 > 0f));
+                                        let _e849 = mips.member[((_e796 + ((bitcast<u32>((floor(select(_e835, _e837, (_e837 < _e835))) + 8388608f)) - 1258291200u) * _e801)) + (bitcast<u32>((floor(select(_e821, _e823, (_e823 < _e821))) + 8388608f)) - 1258291200u))];
+                                        let _e858 = (_e814 * _e817);
+                                        let _e860 = select(0f, _e858, (_e858 > 0f));
+                                        let _e867 = (_e815 * _e831);
+                                        let _e869 = select(0f, _e867, (_e867 > 0f));
+                                        let _e881 = mips.member[((_e796 + ((bitcast<u32>((floor(select(_e835, _e869, (_e869 < _e835))) + 8388608f)) - 1258291200u) * _e801)) + (bitcast<u32>((floor(select(_e821, _e860, (_e860 < _e821))) + 8388608f)) - 1258291200u))];
+                                        let _e890 = (((((_e812 * 2f) - 1f) * _e147.member.member_1.x) * _e849) - _e384);
+                                        let _e891 = (((((_e813 * -2f) + 1f) * _e147.member.member_1.y) * _e849) - _e391);
+                                        let _e892 = (_e849 - _e377);
+                                        let _e893 = (_e163 > 0f);
+                                        if _e893 {
+                                            phi_1527_ = (sqrt((((_e890 * _e890) + (_e891 * _e891)) + (_e892 * _e892))) > _e163);
                                         } else {
-                                            phi_1662_ = false;
+                                            phi_1527_ = false;
                                         }
-                                        let _e910 = phi_1662_;
-                                        if !(_e910) {
-                                            let _e916 = (((_e898 * _e402) + (_e899 * _e403)) + (_e900 * _e404));
-                                            let _e920 = (_e898 - (_e402 * _e916));
-                                            let _e921 = (_e899 - (_e403 * _e916));
-                                            let _e922 = (_e900 - (_e404 * _e916));
-                                            let _e925 = ((_e921 * _e404) - (_e403 * _e922));
-                                            let _e928 = ((_e922 * _e402) - (_e404 * _e920));
-                                            let _e931 = ((_e920 * _e403) - (_e402 * _e921));
-                                            let _e942 = ((((_e463 * _e925) + (_e464 * _e928)) + (_e465 * _e931)) / (((_e925 * _e925) + (_e928 * _e928)) + (_e931 * _e931)));
-                                            let _e946 = (_e463 - (_e925 * _e942));
-                                            let _e947 = (_e464 - (_e928 * _e942));
-                                            let _e948 = (_e465 - (_e931 * _e942));
-                                            let _e954 = sqrt((((_e946 * _e946) + (_e947 * _e947)) + (_e948 * _e948)));
-                                            let _e961 = ((((_e946 * _e402) + (_e947 * _e403)) + (_e948 * _e404)) * (1f / _e954));
-                                            let _e963 = select(0f, _e961, (_e961 > 0f));
-                                            let _e965 = select(1f, _e963, (_e963 < 1f));
-                                            let _e966 = abs(_e965);
-                                            let _e983 = (((((((((((((((_e966 * -0.0012624911f) + 0.00667009f) * _e966) - 0.017088126f) * _e966) + 0.03089188f) * _e966) - 0.050174303f) * _e966) + 0.08897899f) * _e966) - 0.2145988f) * _e966) + 1.5707963f) * sqrt((1f - _e966)));
-                                            let _e986 = select((3.1415927f - _e983), _e983, (_e965 >= 0f));
-                                            let _e994 = select(_e986, -(_e986), ((((_e920 * _e946) + (_e921 * _e947)) + (_e922 * _e948)) < 0f));
-                                            let _e995 = (0.02f / _e954);
-                                            let _e998 = select(0.19634955f, _e995, ((_e995 < 0.19634955f) || false));
-                                            let _e1002 = (_e898 - (_e402 * _e160));
-                                            let _e1003 = (_e899 - (_e403 * _e160));
-                                            let _e1004 = (_e900 - (_e404 * _e160));
-                                            let _e1011 = (_e916 / sqrt((((_e898 * _e898) + (_e899 * _e899)) + (_e900 * _e900))));
-                                            let _e1013 = select(-1f, _e1011, (_e1011 > -1f));
-                                            let _e1015 = select(1f, _e1013, (_e1013 < 1f));
-                                            let _e1016 = abs(_e1015);
-                                            let _e1033 = (((((((((((((((_e1016 * -0.0012624911f) + 0.00667009f) * _e1016) - 0.017088126f) * _e1016) + 0.03089188f) * _e1016) - 0.050174303f) * _e1016) + 0.08897899f) * _e1016) - 0.2145988f) * _e1016) + 1.5707963f) * sqrt((1f - _e1016)));
-                                            let _e1040 = ((((select((3.1415927f - _e1033), _e1033, (_e1015 >= 0f)) + _e998) - _e994) + 1.5707964f) * 0.31830987f);
-                                            let _e1042 = select(0f, _e1040, (_e1040 > 0f));
-                                            let _e1044 = select(1f, _e1042, (_e1042 < 1f));
-                                            let _e1056 = ((((_e1002 * _e402) + (_e1003 * _e403)) + (_e1004 * _e404)) / sqrt((((_e1002 * _e1002) + (_e1003 * _e1003)) + (_e1004 * _e1004))));
-                                            let _e1058 = select(-1f, _e1056, (_e1056 > -1f));
-                                            let _e1060 = select(1f, _e1058, (_e1058 < 1f));
-                                            let _e1061 = abs(_e1060);
-                                            let _e1078 = (((((((((((((((_e1061 * -0.0012624911f) + 0.00667009f) * _e1061) - 0.017088126f) * _e1061) + 0.03089188f) * _e1061) - 0.050174303f) * _e1061) + 0.08897899f) * _e1061) - 0.2145988f) * _e1061) + 1.5707963f) * sqrt((1f - _e1061)));
-                                            let _e1085 = ((((select((3.1415927f - _e1078), _e1078, (_e1060 >= 0f)) + _e998) - _e994) + 1.5707964f) * 0.31830987f);
-                                            let _e1087 = select(0f, _e1085, (_e1085 > 0f));
-                                            let _e1089 = select(1f, _e1087, (_e1087 < 1f));
-                                            let _e1091 = (_e1089 != _e1089);
-                                            let _e1093 = select(_e1089, _e1044, ((_e1044 < _e1089) || _e1091));
-                                            let _e1096 = select(_e1089, _e1044, ((_e1044 > _e1089) || _e1091));
-                                            let _e1098 = floor((_e1093 * 32f));
+                                        let _e902 = phi_1527_;
+                                        if !(_e902) {
+                                            let _e908 = (((_e890 * _e402) + (_e891 * _e403)) + (_e892 * _e404));
+                                            let _e912 = (_e890 - (_e402 * _e908));
+                                            let _e913 = (_e891 - (_e403 * _e908));
+                                            let _e914 = (_e892 - (_e404 * _e908));
+                                            let _e917 = ((_e913 * _e404) - (_e403 * _e914));
+                                            let _e920 = ((_e914 * _e402) - (_e404 * _e912));
+                                            let _e923 = ((_e912 * _e403) - (_e402 * _e913));
+                                            let _e934 = ((((_e463 * _e917) + (_e464 * _e920)) + (_e465 * _e923)) / (((_e917 * _e917) + (_e920 * _e920)) + (_e923 * _e923)));
+                                            let _e938 = (_e463 - (_e917 * _e934));
+                                            let _e939 = (_e464 - (_e920 * _e934));
+                                            let _e940 = (_e465 - (_e923 * _e934));
+                                            let _e946 = sqrt((((_e938 * _e938) + (_e939 * _e939)) + (_e940 * _e940)));
+                                            let _e953 = ((((_e938 * _e402) + (_e939 * _e403)) + (_e940 * _e404)) * (1f / _e946));
+                                            let _e955 = select(0f, _e953, (_e953 > 0f));
+                                            let _e957 = select(1f, _e955, (_e955 < 1f));
+                                            let _e958 = abs(_e957);
+                                            let _e975 = (((((((((((((((_e958 * -0.0012624911f) + 0.00667009f) * _e958) - 0.017088126f) * _e958) + 0.03089188f) * _e958) - 0.050174303f) * _e958) + 0.08897899f) * _e958) - 0.2145988f) * _e958) + 1.5707963f) * sqrt((1f - _e958)));
+                                            let _e978 = select((3.1415927f - _e975), _e975, (_e957 >= 0f));
+                                            let _e986 = select(_e978, -(_e978), ((((_e912 * _e938) + (_e913 * _e939)) + (_e914 * _e940)) < 0f));
+                                            let _e987 = (0.02f / _e946);
+                                            let _e990 = select(0.19634955f, _e987, ((_e987 < 0.19634955f) || false));
+                                            let _e994 = (_e890 - (_e402 * _e160));
+                                            let _e995 = (_e891 - (_e403 * _e160));
+                                            let _e996 = (_e892 - (_e404 * _e160));
+                                            let _e1003 = (_e908 / sqrt((((_e890 * _e890) + (_e891 * _e891)) + (_e892 * _e892))));
+                                            let _e1005 = select(-1f, _e1003, (_e1003 > -1f));
+                                            let _e1007 = select(1f, _e1005, (_e1005 < 1f));
+                                            let _e1008 = abs(_e1007);
+                                            let _e1025 = (((((((((((((((_e1008 * -0.0012624911f) + 0.00667009f) * _e1008) - 0.017088126f) * _e1008) + 0.03089188f) * _e1008) - 0.050174303f) * _e1008) + 0.08897899f) * _e1008) - 0.2145988f) * _e1008) + 1.5707963f) * sqrt((1f - _e1008)));
+                                            let _e1032 = ((((select((3.1415927f - _e1025), _e1025, (_e1007 >= 0f)) + _e990) - _e986) + 1.5707964f) * 0.31830987f);
+                                            let _e1034 = select(0f, _e1032, (_e1032 > 0f));
+                                            let _e1036 = select(1f, _e1034, (_e1034 < 1f));
+                                            let _e1048 = ((((_e994 * _e402) + (_e995 * _e403)) + (_e996 * _e404)) / sqrt((((_e994 * _e994) + (_e995 * _e995)) + (_e996 * _e996))));
+                                            let _e1050 = select(-1f, _e1048, (_e1048 > -1f));
+                                            let _e1052 = select(1f, _e1050, (_e1050 < 1f));
+                                            let _e1053 = abs(_e1052);
+                                            let _e1070 = (((((((((((((((_e1053 * -0.0012624911f) + 0.00667009f) * _e1053) - 0.017088126f) * _e1053) + 0.03089188f) * _e1053) - 0.050174303f) * _e1053) + 0.08897899f) * _e1053) - 0.2145988f) * _e1053) + 1.5707963f) * sqrt((1f - _e1053)));
+                                            let _e1077 = ((((select((3.1415927f - _e1070), _e1070, (_e1052 >= 0f)) + _e990) - _e986) + 1.5707964f) * 0.31830987f);
+                                            let _e1079 = select(0f, _e1077, (_e1077 > 0f));
+                                            let _e1081 = select(1f, _e1079, (_e1079 < 1f));
+                                            let _e1083 = (_e1081 != _e1081);
+                                            let _e1085 = select(_e1081, _e1036, ((_e1036 < _e1081) || _e1083));
+                                            let _e1088 = select(_e1081, _e1036, ((_e1036 > _e1081) || _e1083));
+                                            let _e1090 = floor((_e1085 * 32f));
                                             if (_e157 == 1u) {
-                                                let _e1106 = -(floor((_e1096 * -32f)));
-                                                let _e1111 = (select(32f, _e1106, ((_e1106 < 32f) || false)) - _e1098);
-                                                phi_1994_ = select(select(0f, _e1111, ((_e1111 > 0f) || false)), 0f, (_e1096 <= _e1093));
+                                                let _e1098 = -(floor((_e1088 * -32f)));
+                                                let _e1103 = (select(32f, _e1098, ((_e1098 < 32f) || false)) - _e1090);
+                                                phi_1859_ = select(select(0f, _e1103, ((_e1103 > 0f) || false)), 0f, (_e1088 <= _e1085));
                                             } else {
-                                                phi_1994_ = -(floor(((_e1096 - _e1093) * -32f)));
+                                                phi_1859_ = -(floor(((_e1088 - _e1085) * -32f)));
                                             }
-                                            let _e1117 = phi_1994_;
-                                            let _e1119 = select(0f, _e1098, (_e1098 > 0f));
+                                            let _e1109 = phi_1859_;
+                                            let _e1111 = select(0f, _e1090, (_e1090 > 0f));
+                                            let _e1117 = (bitcast<u32>((floor(select(32f, _e1111, (_e1111 < 32f))) + 8388608f)) - 1258291200u);
+                                            let _e1119 = select(0f, _e1109, (_e1109 > 0f));
                                             let _e1125 = (bitcast<u32>((floor(select(32f, _e1119, (_e1119 < 32f))) + 8388608f)) - 1258291200u);
-                                            let _e1127 = select(0f, _e1117, (_e1117 > 0f));
-                                            let _e1133 = (bitcast<u32>((floor(select(32f, _e1127, (_e1127 < 32f))) + 8388608f)) - 1258291200u);
-                                            if (_e1125 >= 32u) {
-                                                phi_2048_ = u32();
-                                                phi_2049_ = true;
+                                            if (_e1117 >= 32u) {
+                                                phi_1913_ = u32();
+                                                phi_1914_ = true;
                                             } else {
-                                                let _e1135 = (_e1133 == 0u);
-                                                if _e1135 {
-                                                    phi_2047_ = u32();
+                                                let _e1127 = (_e1125 == 0u);
+                                                if _e1127 {
+                                                    phi_1912_ = u32();
                                                 } else {
-                                                    if (_e1133 >= 32u) {
-                                                        phi_2044_ = 4294967295u;
+                                                    if (_e1125 >= 32u) {
+                                                        phi_1909_ = 4294967295u;
                                                     } else {
-                                                        phi_2044_ = ((1u << bitcast<u32>((_e1133 & 31u))) - 1u);
+                                                        phi_1909_ = ((1u << bitcast<u32>((_e1125 & 31u))) - 1u);
                                                     }
-                                                    let _e1142 = phi_2044_;
-                                                    phi_2047_ = (_e1142 << bitcast<u32>((_e1125 & 31u)));
+                                                    let _e1134 = phi_1909_;
+                                                    phi_1912_ = (_e1134 << bitcast<u32>((_e1117 & 31u)));
                                                 }
-                                                let _e1147 = phi_2047_;
-                                                phi_2048_ = _e1147;
-                                                phi_2049_ = _e1135;
+                                                let _e1139 = phi_1912_;
+                                                phi_1913_ = _e1139;
+                                                phi_1914_ = _e1127;
                                             }
-                                            let _e1149 = phi_2048_;
-                                            let _e1151 = phi_2049_;
-                                            phi_2068_ = select(select(select(_e1149, 0u, _e1151), 0u, ((((_e920 * _e920) + (_e921 * _e921)) + (_e922 * _e922)) <= 0f)), 0u, _e910);
+                                            let _e1141 = phi_1913_;
+                                            let _e1143 = phi_1914_;
+                                            phi_1933_ = select(select(select(_e1141, 0u, _e1143), 0u, ((((_e912 * _e912) + (_e913 * _e913)) + (_e914 * _e914)) <= 0f)), 0u, _e902);
                                         } else {
-                                            phi_2068_ = 0u;
+                                            phi_1933_ = 0u;
                                         }
-                                        let _e1162 = phi_2068_;
-                                        let _e1164 = (((((_e762 * 2f) - 1f) * _e147.member.member_1.x) * _e889) - _e384);
-                                        let _e1165 = (((((_e763 * -2f) + 1f) * _e147.member.member_1.y) * _e889) - _e391);
-                                        let _e1166 = (_e889 - _e377);
-                                        if _e901 {
-                                            phi_2088_ = (sqrt((((_e1164 * _e1164) + (_e1165 * _e1165)) + (_e1166 * _e1166))) > _e163);
+                                        let _e1154 = phi_1933_;
+                                        let _e1156 = (((((_e814 * 2f) - 1f) * _e147.member.member_1.x) * _e881) - _e384);
+                                        let _e1157 = (((((_e815 * -2f) + 1f) * _e147.member.member_1.y) * _e881) - _e391);
+                                        let _e1158 = (_e881 - _e377);
+                                        if _e893 {
+                                            phi_1953_ = (sqrt((((_e1156 * _e1156) + (_e1157 * _e1157)) + (_e1158 * _e1158))) > _e163);
                                         } else {
-                                            phi_2088_ = false;
+                                            phi_1953_ = false;
                                         }
-                                        let _e1175 = phi_2088_;
-                                        if !(_e1175) {
-                                            let _e1181 = (((_e1164 * _e402) + (_e1165 * _e403)) + (_e1166 * _e404));
-                                            let _e1185 = (_e1164 - (_e402 * _e1181));
-                                            let _e1186 = (_e1165 - (_e403 * _e1181));
-                                            let _e1187 = (_e1166 - (_e404 * _e1181));
-                                            let _e1190 = ((_e1186 * _e404) - (_e403 * _e1187));
-                                            let _e1193 = ((_e1187 * _e402) - (_e404 * _e1185));
-                                            let _e1196 = ((_e1185 * _e403) - (_e402 * _e1186));
-                                            let _e1207 = ((((_e463 * _e1190) + (_e464 * _e1193)) + (_e465 * _e1196)) / (((_e1190 * _e1190) + (_e1193 * _e1193)) + (_e1196 * _e1196)));
-                                            let _e1211 = (_e463 - (_e1190 * _e1207));
-                                            let _e1212 = (_e464 - (_e1193 * _e1207));
-                                            let _e1213 = (_e465 - (_e1196 * _e1207));
-                                            let _e1219 = sqrt((((_e1211 * _e1211) + (_e1212 * _e1212)) + (_e1213 * _e1213)));
-                                            let _e1226 = ((((_e1211 * _e402) + (_e1212 * _e403)) + (_e1213 * _e404)) * (1f / _e1219));
-                                            let _e1228 = select(0f, _e1226, (_e1226 > 0f));
-                                            let _e1230 = select(1f, _e1228, (_e1228 < 1f));
-                                            let _e1231 = abs(_e1230);
-                                            let _e1248 = (((((((((((((((_e1231 * -0.0012624911f) + 0.00667009f) * _e1231) - 0.017088126f) * _e1231) + 0.03089188f) * _e1231) - 0.050174303f) * _e1231) + 0.08897899f) * _e1231) - 0.2145988f) * _e1231) + 1.5707963f) * sqrt((1f - _e1231)));
-                                            let _e1251 = select((3.1415927f - _e1248), _e1248, (_e1230 >= 0f));
-                                            let _e1259 = select(_e1251, -(_e1251), ((((_e1185 * _e1211) + (_e1186 * _e1212)) + (_e1187 * _e1213)) < 0f));
-                                            let _e1260 = (0.02f / _e1219);
-                                            let _e1263 = select(0.19634955f, _e1260, ((_e1260 < 0.19634955f) || false));
-                                            let _e1267 = (_e1164 - (_e402 * _e160));
-                                            let _e1268 = (_e1165 - (_e403 * _e160));
-                                            let _e1269 = (_e1166 - (_e404 * _e160));
-                                            let _e1276 = (_e1181 / sqrt((((_e1164 * _e1164) + (_e1165 * _e1165)) + (_e1166 * _e1166))));
-                                            let _e1278 = select(-1f, _e1276, (_e1276 > -1f));
-                                            let _e1280 = select(1f, _e1278, (_e1278 < 1f));
-                                            let _e1281 = abs(_e1280);
-                                            let _e1298 = (((((((((((((((_e1281 * -0.0012624911f) + 0.00667009f) * _e1281) - 0.017088126f) * _e1281) + 0.03089188f) * _e1281) - 0.050174303f) * _e1281) + 0.08897899f) * _e1281) - 0.2145988f) * _e1281) + 1.5707963f) * sqrt((1f - _e1281)));
-                                            let _e1305 = ((((select((3.1415927f - _e1298), _e1298, (_e1280 >= 0f)) + _e1263) - _e1259) + 1.5707964f) * 0.31830987f);
-                                            let _e1307 = select(0f, _e1305, (_e1305 > 0f));
-                                            let _e1321 = ((((_e1267 * _e402) + (_e1268 * _e403)) + (_e1269 * _e404)) / sqrt((((_e1267 * _e1267) + (_e1268 * _e1268)) + (_e1269 * _e1269))));
-                                            let _e1323 = select(-1f, _e1321, (_e1321 > -1f));
-                                            let _e1325 = select(1f, _e1323, (_e1323 < 1f));
-                                            let _e1326 = abs(_e1325);
-                                            let _e1343 = (((((((((((((((_e1326 * -0.0012624911f) + 0.00667009f) * _e1326) - 0.017088126f) * _e1326) + 0.03089188f) * _e1326) - 0.050174303f) * _e1326) + 0.08897899f) * _e1326) - 0.2145988f) * _e1326) + 1.5707963f) * sqrt((1f - _e1326)));
-                                            let _e1350 = ((((select((3.1415927f - _e1343), _e1343, (_e1325 >= 0f)) + _e1263) - _e1259) + 1.5707964f) * 0.31830987f);
-                                            let _e1352 = select(0f, _e1350, (_e1350 > 0f));
-                                            let _e1355 = (1f - select(1f, _e1307, (_e1307 < 1f)));
-                                            let _e1356 = (1f - select(1f, _e1352, (_e1352 < 1f)));
-                                            let _e1358 = (_e1356 != _e1356);
-                                            let _e1360 = select(_e1356, _e1355, ((_e1355 < _e1356) || _e1358));
-                                            let _e1363 = select(_e1356, _e1355, ((_e1355 > _e1356) || _e1358));
-                                            let _e1365 = floor((_e1360 * 32f));
+                                        let _e1167 = phi_1953_;
+                                        if !(_e1167) {
+                                            let _e1173 = (((_e1156 * _e402) + (_e1157 * _e403)) + (_e1158 * _e404));
+                                            let _e1177 = (_e1156 - (_e402 * _e1173));
+                                            let _e1178 = (_e1157 - (_e403 * _e1173));
+                                            let _e1179 = (_e1158 - (_e404 * _e1173));
+                                            let _e1182 = ((_e1178 * _e404) - (_e403 * _e1179));
+                                            let _e1185 = ((_e1179 * _e402) - (_e404 * _e1177));
+                                            let _e1188 = ((_e1177 * _e403) - (_e402 * _e1178));
+                                            let _e1199 = ((((_e463 * _e1182) + (_e464 * _e1185)) + (_e465 * _e1188)) / (((_e1182 * _e1182) + (_e1185 * _e1185)) + (_e1188 * _e1188)));
+                                            let _e1203 = (_e463 - (_e1182 * _e1199));
+                                            let _e1204 = (_e464 - (_e1185 * _e1199));
+                                            let _e1205 = (_e465 - (_e1188 * _e1199));
+                                            let _e1211 = sqrt((((_e1203 * _e1203) + (_e1204 * _e1204)) + (_e1205 * _e1205)));
+                                            let _e1218 = ((((_e1203 * _e402) + (_e1204 * _e403)) + (_e1205 * _e404)) * (1f / _e1211));
+                                            let _e1220 = select(0f, _e1218, (_e1218 > 0f));
+                                            let _e1222 = select(1f, _e1220, (_e1220 < 1f));
+                                            let _e1223 = abs(_e1222);
+                                            let _e1240 = (((((((((((((((_e1223 * -0.0012624911f) + 0.00667009f) * _e1223) - 0.017088126f) * _e1223) + 0.03089188f) * _e1223) - 0.050174303f) * _e1223) + 0.08897899f) * _e1223) - 0.2145988f) * _e1223) + 1.5707963f) * sqrt((1f - _e1223)));
+                                            let _e1243 = select((3.1415927f - _e1240), _e1240, (_e1222 >= 0f));
+                                            let _e1251 = select(_e1243, -(_e1243), ((((_e1177 * _e1203) + (_e1178 * _e1204)) + (_e1179 * _e1205)) < 0f));
+                                            let _e1252 = (0.02f / _e1211);
+                                            let _e1255 = select(0.19634955f, _e1252, ((_e1252 < 0.19634955f) || false));
+                                            let _e1259 = (_e1156 - (_e402 * _e160));
+                                            let _e1260 = (_e1157 - (_e403 * _e160));
+                                            let _e1261 = (_e1158 - (_e404 * _e160));
+                                            let _e1268 = (_e1173 / sqrt((((_e1156 * _e1156) + (_e1157 * _e1157)) + (_e1158 * _e1158))));
+                                            let _e1270 = select(-1f, _e1268, (_e1268 > -1f));
+                                            let _e1272 = select(1f, _e1270, (_e1270 < 1f));
+                                            let _e1273 = abs(_e1272);
+                                            let _e1290 = (((((((((((((((_e1273 * -0.0012624911f) + 0.00667009f) * _e1273) - 0.017088126f) * _e1273) + 0.03089188f) * _e1273) - 0.050174303f) * _e1273) + 0.08897899f) * _e1273) - 0.2145988f) * _e1273) + 1.5707963f) * sqrt((1f - _e1273)));
+                                            let _e1297 = ((((select((3.1415927f - _e1290), _e1290, (_e1272 >= 0f)) + _e1255) - _e1251) + 1.5707964f) * 0.31830987f);
+                                            let _e1299 = select(0f, _e1297, (_e1297 > 0f));
+                                            let _e1313 = ((((_e1259 * _e402) + (_e1260 * _e403)) + (_e1261 * _e404)) / sqrt((((_e1259 * _e1259) + (_e1260 * _e1260)) + (_e1261 * _e1261))));
+                                            let _e1315 = select(-1f, _e1313, (_e1313 > -1f));
+                                            let _e1317 = select(1f, _e1315, (_e1315 < 1f));
+                                            let _e1318 = abs(_e1317);
+                                            let _e1335 = (((((((((((((((_e1318 * -0.0012624911f) + 0.00667009f) * _e1318) - 0.017088126f) * _e1318) + 0.03089188f) * _e1318) - 0.050174303f) * _e1318) + 0.08897899f) * _e1318) - 0.2145988f) * _e1318) + 1.5707963f) * sqrt((1f - _e1318)));
+                                            let _e1342 = ((((select((3.1415927f - _e1335), _e1335, (_e1317 >= 0f)) + _e1255) - _e1251) + 1.5707964f) * 0.31830987f);
+                                            let _e1344 = select(0f, _e1342, (_e1342 > 0f));
+                                            let _e1347 = (1f - select(1f, _e1299, (_e1299 < 1f)));
+                                            let _e1348 = (1f - select(1f, _e1344, (_e1344 < 1f)));
+                                            let _e1350 = (_e1348 != _e1348);
+                                            let _e1352 = select(_e1348, _e1347, ((_e1347 < _e1348) || _e1350));
+                                            let _e1355 = select(_e1348, _e1347, ((_e1347 > _e1348) || _e1350));
+                                            let _e1357 = floor((_e1352 * 32f));
                                             if (_e157 == 1u) {
-                                                let _e1373 = -(floor((_e1363 * -32f)));
-                                                let _e1378 = (select(32f, _e1373, ((_e1373 < 32f) || false)) - _e1365);
-                                                phi_2420_ = select(select(0f, _e1378, ((_e1378 > 0f) || false)), 0f, (_e1363 <= _e1360));
+                                                let _e1365 = -(floor((_e1355 * -32f)));
+                                                let _e1370 = (select(32f, _e1365, ((_e1365 < 32f) || false)) - _e1357);
+                                                phi_2285_ = select(select(0f, _e1370, ((_e1370 > 0f) || false)), 0f, (_e1355 <= _e1352));
                                             } else {
-                                                phi_2420_ = -(floor(((_e1363 - _e1360) * -32f)));
+                                                phi_2285_ = -(floor(((_e1355 - _e1352) * -32f)));
                                             }
-                                            let _e1384 = phi_2420_;
-                                            let _e1386 = select(0f, _e1365, (_e1365 > 0f));
+                                            let _e1376 = phi_2285_;
+                                            let _e1378 = select(0f, _e1357, (_e1357 > 0f));
+                                            let _e1384 = (bitcast<u32>((floor(select(32f, _e1378, (_e1378 < 32f))) + 8388608f)) - 1258291200u);
+                                            let _e1386 = select(0f, _e1376, (_e1376 > 0f));
                                             let _e1392 = (bitcast<u32>((floor(select(32f, _e1386, (_e1386 < 32f))) + 8388608f)) - 1258291200u);
-                                            let _e1394 = select(0f, _e1384, (_e1384 > 0f));
-                                            let _e1400 = (bitcast<u32>((floor(select(32f, _e1394, (_e1394 < 32f))) + 8388608f)) - 1258291200u);
-                                            if (_e1392 >= 32u) {
-                                                phi_2474_ = u32();
-                                                phi_2475_ = true;
+                                            if (_e1384 >= 32u) {
+                                                phi_2339_ = u32();
+                                                phi_2340_ = true;
                                             } else {
-                                                let _e1402 = (_e1400 == 0u);
-                                                if _e1402 {
-                                                    phi_2473_ = u32();
+                                                let _e1394 = (_e1392 == 0u);
+                                                if _e1394 {
+                                                    phi_2338_ = u32();
                                                 } else {
-                                                    if (_e1400 >= 32u) {
-                                                        phi_2470_ = 4294967295u;
+                                                    if (_e1392 >= 32u) {
+                                                        phi_2335_ = 4294967295u;
                                                     } else {
-                                                        phi_2470_ = ((1u << bitcast<u32>((_e1400 & 31u))) - 1u);
+                                                        phi_2335_ = ((1u << bitcast<u32>((_e1392 & 31u))) - 1u);
                                                     }
-                                                    let _e1409 = phi_2470_;
-                                                    phi_2473_ = (_e1409 << bitcast<u32>((_e1392 & 31u)));
+                                                    let _e1401 = phi_2335_;
+                                                    phi_2338_ = (_e1401 << bitcast<u32>((_e1384 & 31u)));
                                                 }
-                                                let _e1414 = phi_2473_;
-                                                phi_2474_ = _e1414;
-                                                phi_2475_ = _e1402;
+                                                let _e1406 = phi_2338_;
+                                                phi_2339_ = _e1406;
+                                                phi_2340_ = _e1394;
                                             }
-                                            let _e1416 = phi_2474_;
-                                            let _e1418 = phi_2475_;
-                                            phi_2494_ = select(select(select(_e1416, 0u, _e1418), 0u, ((((_e1185 * _e1185) + (_e1186 * _e1186)) + (_e1187 * _e1187)) <= 0f)), 0u, _e1175);
+                                            let _e1408 = phi_2339_;
+                                            let _e1410 = phi_2340_;
+                                            phi_2359_ = select(select(select(_e1408, 0u, _e1410), 0u, ((((_e1177 * _e1177) + (_e1178 * _e1178)) + (_e1179 * _e1179)) <= 0f)), 0u, _e1167);
                                         } else {
-                                            phi_2494_ = 0u;
+                                            phi_2359_ = 0u;
                                         }
-                                        let _e1429 = phi_2494_;
-                                        phi_1194_ = (_e712 + 1u);
-                                        phi_1197_ = ((_e714 | _e1162) | _e1429);
+                                        let _e1421 = phi_2359_;
+                                        phi_1194_ = (_e716 + 1u);
+                                        phi_1197_ = ((_e718 | _e1154) | _e1421);
                                     } else {
                                         phi_1194_ = u32();
                                         phi_1197_ = u32();
                                     }
-                                    let _e1433 = phi_1194_;
-                                    let _e1435 = phi_1197_;
+                                    let _e1425 = phi_1194_;
+                                    let _e1427 = phi_1197_;
                                     continue;
                                     continuing {
-                                        phi_1193_ = _e1433;
-                                        phi_1196_ = _e1435;
-                                        break if !(_e715);
+                                        phi_1193_ = _e1425;
+                                        phi_1196_ = _e1427;
+                                        break if !(_e719);
                                     }
                                 }
                                 if (_e152 == 2u) {
-                                    let _e1495 = (_e707 - 1.5707964f);
-                                    let _e1496 = (_e1495 * 2f);
-                                    let _e1497 = sin(_e707);
-                                    let _e1502 = ((_e685 + (_e1496 * _e1497)) - cos((_e1496 - _e707)));
-                                    phi_2523_ = 0u;
-                                    phi_2526_ = select((_e1502 * 0.25f), (_e1502 * -0.25f), (_e1495 < 0f));
-                                    phi_2528_ = 0f;
+                                    let _e1487 = (_e711 - 1.5707964f);
+                                    let _e1488 = (_e1487 * 2f);
+                                    let _e1489 = sin(_e711);
+                                    let _e1494 = ((_e689 + (_e1488 * _e1489)) - cos((_e1488 - _e711)));
+                                    phi_2388_ = 0u;
+                                    phi_2391_ = select((_e1494 * 0.25f), (_e1494 * -0.25f), (_e1487 < 0f));
+                                    phi_2393_ = 0f;
                                     loop {
-                                        let _e1508 = phi_2523_;
-                                        let _e1510 = phi_2526_;
-                                        let _e1512 = phi_2528_;
-                                        local_5 = _e1512;
-                                        let _e1513 = (_e1508 < 32u);
-                                        if _e1513 {
-                                            let _e1514 = (_e1508 + 1u);
-                                            let _e1518 = (_e1495 + (f32(bitcast<i32>(_e1514)) * 0.09817477f));
-                                            let _e1519 = (_e1518 * 2f);
-                                            let _e1524 = ((_e685 + (_e1519 * _e1497)) - cos((_e1519 - _e707)));
-                                            let _e1528 = select((_e1524 * 0.25f), (_e1524 * -0.25f), (_e1518 < 0f));
-                                            let _e1531 = local_4;
-                                            phi_2524_ = _e1514;
-                                            phi_2527_ = _e1528;
-                                            phi_2529_ = select(_e1512, (_e1512 + (_e1528 - _e1510)), (((_e1531 >> bitcast<u32>((_e1508 & 31u))) & 1u) == 0u));
+                                        let _e1500 = phi_2388_;
+                                        let _e1502 = phi_2391_;
+                                        let _e1504 = phi_2393_;
+                                        local_5 = _e1504;
+                                        let _e1505 = (_e1500 < 32u);
+                                        if _e1505 {
+                                            let _e1506 = (_e1500 + 1u);
+                                            let _e1510 = (_e1487 + (f32(bitcast<i32>(_e1506)) * 0.09817477f));
+                                            let _e1511 = (_e1510 * 2f);
+                                            let _e1516 = ((_e689 + (_e1511 * _e1489)) - cos((_e1511 - _e711)));
+                                            let _e1520 = select((_e1516 * 0.25f), (_e1516 * -0.25f), (_e1510 < 0f));
+                                            let _e1523 = local_4;
+                                            phi_2389_ = _e1506;
+                                            phi_2392_ = _e1520;
+                                            phi_2394_ = select(_e1504, (_e1504 + (_e1520 - _e1502)), (((_e1523 >> bitcast<u32>((_e1500 & 31u))) & 1u) == 0u));
                                         } else {
-                                            phi_2524_ = u32();
-                                            phi_2527_ = f32();
-                                            phi_2529_ = f32();
+                                            phi_2389_ = u32();
+                                            phi_2392_ = f32();
+                                            phi_2394_ = f32();
                                         }
-                                        let _e1540 = phi_2524_;
-                                        let _e1542 = phi_2527_;
-                                        let _e1544 = phi_2529_;
+                                        let _e1532 = phi_2389_;
+                                        let _e1534 = phi_2392_;
+                                        let _e1536 = phi_2394_;
                                         continue;
                                         continuing {
-                                            phi_2523_ = _e1540;
-                                            phi_2526_ = _e1542;
-                                            phi_2528_ = _e1544;
-                                            break if !(_e1513);
+                                            phi_2388_ = _e1532;
+                                            phi_2391_ = _e1534;
+                                            phi_2393_ = _e1536;
+                                            break if !(_e1505);
                                         }
                                     }
-                                    let _e1547 = local_5;
-                                    phi_3286_ = _e602;
-                                    phi_2630_ = (_e606 + 1f);
-                                    phi_2631_ = (_e608 + ((_e666 + ((1f - _e666) * 0.05f)) * _e1547));
+                                    let _e1539 = local_5;
+                                    phi_3135_ = _e606;
+                                    phi_2495_ = (_e610 + 1f);
+                                    phi_2496_ = (_e612 + ((_e670 + ((1f - _e670) * 0.05f)) * _e1539));
                                 } else {
                                     if (_e152 == 1u) {
-                                        phi_2575_ = 0u;
-                                        phi_2578_ = 0f;
+                                        phi_2440_ = 0u;
+                                        phi_2443_ = 0f;
                                         loop {
-                                            let _e1450 = phi_2575_;
-                                            let _e1452 = phi_2578_;
-                                            local_3 = _e1452;
-                                            let _e1453 = (_e1450 < 4u);
-                                            if _e1453 {
+                                            let _e1442 = phi_2440_;
+                                            let _e1444 = phi_2443_;
+                                            local_3 = _e1444;
+                                            let _e1445 = (_e1442 < 4u);
+                                            if _e1445 {
                                                 local = array<type_26, 4>(type_26(4026531855u, 0.0095061f), type_26(251658480u, 0.0270951f), type_26(15732480u, 0.0405571f), type_26(1044480u, 0.0478421f));
-                                                if _e1453 {
+                                                if _e1445 {
                                                 } else {
-                                                    phi_3078_ = true;
+                                                    phi_2943_ = true;
                                                     break;
                                                 }
-                                                let _e1456 = local[_e1450].member;
-                                                let _e1459 = local[_e1450].member_1;
-                                                let _e1461 = local_2;
-                                                phi_2576_ = (_e1450 + 1u);
-                                                phi_2579_ = (_e1452 + (f32(bitcast<i32>(countOneBits((_e1461 & _e1456)))) * _e1459));
+                                                let _e1448 = local[_e1442].member;
+                                                let _e1451 = local[_e1442].member_1;
+                                                let _e1453 = local_2;
+                                                phi_2441_ = (_e1442 + 1u);
+                                                phi_2444_ = (_e1444 + (f32(bitcast<i32>(countOneBits((_e1453 & _e1448)))) * _e1451));
                                             } else {
-                                                phi_2576_ = u32();
-                                                phi_2579_ = f32();
+                                                phi_2441_ = u32();
+                                                phi_2444_ = f32();
                                             }
-                                            let _e1470 = phi_2576_;
-                                            let _e1472 = phi_2579_;
+                                            let _e1462 = phi_2441_;
+                                            let _e1464 = phi_2444_;
                                             continue;
                                             continuing {
-                                                phi_2575_ = _e1470;
-                                                phi_2578_ = _e1472;
-                                                phi_3078_ = _e602;
-                                                break if !(_e1453);
+                                                phi_2440_ = _e1462;
+                                                phi_2443_ = _e1464;
+                                                phi_2943_ = _e606;
+                                                break if !(_e1445);
                                             }
                                         }
-                                        let _e1475 = phi_3078_;
-                                        phi_3284_ = _e1475;
-                                        if _e1475 {
+                                        let _e1467 = phi_2943_;
+                                        phi_3133_ = _e1467;
+                                        if _e1467 {
                                             break;
                                         }
-                                        let _e1477 = local_3;
-                                        let _e1478 = (1f - _e1477);
-                                        let _e1480 = select(0f, _e1478, (_e1478 > 0f));
-                                        phi_3292_ = _e1475;
-                                        phi_2628_ = (_e606 + _e666);
-                                        phi_2629_ = (_e608 + (_e666 * select(1f, _e1480, (_e1480 < 1f))));
+                                        let _e1469 = local_3;
+                                        let _e1470 = (1f - _e1469);
+                                        let _e1472 = select(0f, _e1470, (_e1470 > 0f));
+                                        phi_3141_ = _e1467;
+                                        phi_2493_ = (_e610 + _e670);
+                                        phi_2494_ = (_e612 + (_e670 * select(1f, _e1472, (_e1472 < 1f))));
                                     } else {
-                                        let _e1440 = local_1;
-                                        phi_3292_ = _e602;
-                                        phi_2628_ = (_e606 + 1f);
-                                        phi_2629_ = (_e608 + ((f32(bitcast<i32>(countOneBits((_e1440 & 4294967295u)))) * -0.03125f) + 1f));
+                                        let _e1432 = local_1;
+                                        phi_3141_ = _e606;
+                                        phi_2493_ = (_e610 + 1f);
+                                        phi_2494_ = (_e612 + ((f32(bitcast<i32>(countOneBits((_e1432 & 4294967295u)))) * -0.03125f) + 1f));
                                     }
-                                    let _e1487 = phi_3292_;
-                                    let _e1489 = phi_2628_;
-                                    let _e1491 = phi_2629_;
-                                    phi_3286_ = _e1487;
-                                    phi_2630_ = _e1489;
-                                    phi_2631_ = _e1491;
+                                    let _e1479 = phi_3141_;
+                                    let _e1481 = phi_2493_;
+                                    let _e1483 = phi_2494_;
+                                    phi_3135_ = _e1479;
+                                    phi_2495_ = _e1481;
+                                    phi_2496_ = _e1483;
                                 }
-                                let _e1552 = phi_3286_;
-                                let _e1554 = phi_2630_;
-                                let _e1556 = phi_2631_;
-                                phi_3285_ = _e1552;
-                                phi_996_ = (_e604 + 1u);
-                                phi_999_ = _e1554;
-                                phi_1001_ = _e1556;
+                                let _e1544 = phi_3135_;
+                                let _e1546 = phi_2495_;
+                                let _e1548 = phi_2496_;
+                                phi_3134_ = _e1544;
+                                phi_996_ = (_e608 + 1u);
+                                phi_999_ = _e1546;
+                                phi_1001_ = _e1548;
                             } else {
-                                phi_3285_ = _e602;
+                                phi_3134_ = _e606;
                                 phi_996_ = u32();
                                 phi_999_ = f32();
                                 phi_1001_ = f32();
                             }
-                            let _e1559 = phi_3285_;
-                            let _e1561 = phi_996_;
-                            let _e1563 = phi_999_;
-                            let _e1565 = phi_1001_;
+                            let _e1551 = phi_3134_;
+                            let _e1553 = phi_996_;
+                            let _e1555 = phi_999_;
+                            let _e1557 = phi_1001_;
                             continue;
                             continuing {
-                                phi_3199_ = _e1559;
-                                phi_995_ = _e1561;
-                                phi_998_ = _e1563;
-                                phi_1000_ = _e1565;
-                                phi_3284_ = _e1559;
-                                break if !(_e609);
+                                phi_3048_ = _e1551;
+                                phi_995_ = _e1553;
+                                phi_998_ = _e1555;
+                                phi_1000_ = _e1557;
+                                phi_3133_ = _e1551;
+                                break if !(_e613);
                             }
                         }
-                        let _e1568 = phi_3284_;
-                        if _e1568 {
+                        let _e1560 = phi_3133_;
+                        if _e1560 {
                             break;
                         }
-                        let _e1570 = local_6;
-                        let _e1573 = local_7;
-                        let _e1575 = local_8;
-                        phi_2639_ = select(1f, (_e1573 / _e1575), (_e1570 > 0f));
+                        let _e1562 = local_6;
+                        let _e1565 = local_7;
+                        let _e1567 = local_8;
+                        phi_2504_ = select(1f, (_e1565 / _e1567), (_e1562 > 0f));
                     } else {
-                        phi_2639_ = 1f;
+                        phi_2504_ = 1f;
                     }
-                    let _e1579 = phi_2639_;
-                    if _e597 {
-                        let _e1585 = pow(_e1579, _e147.member_6);
-                        if (_e1585 != _e1585) {
-                            phi_3060_ = true;
+                    let _e1571 = phi_2504_;
+                    if _e601 {
+                        let _e1577 = pow(_e1571, _e147.member_6);
+                        if (_e1577 != _e1577) {
+                            phi_2925_ = true;
                         } else {
-                            phi_3060_ = (0.03f >= _e1585);
+                            phi_2925_ = (0.03f >= _e1577);
                         }
-                        let _e1589 = phi_3060_;
-                        let _e1591 = (select(_e1585, 0.03f, _e1589) * 0.6666667f);
-                        let _e1593 = select(0f, _e1591, (_e1591 > 0f));
-                        phi_2680_ = (bitcast<u32>((floor(((select(1f, _e1593, (_e1593 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
+                        let _e1581 = phi_2925_;
+                        let _e1583 = (select(_e1577, 0.03f, _e1581) * 0.6666667f);
+                        let _e1585 = select(0f, _e1583, (_e1583 > 0f));
+                        phi_2545_ = (bitcast<u32>((floor(((select(1f, _e1585, (_e1585 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
                     } else {
-                        phi_2680_ = (bitcast<u32>((floor(170.5f) + 8388608f)) - 1258291200u);
+                        phi_2545_ = (bitcast<u32>((floor(170.5f) + 8388608f)) - 1258291200u);
                     }
-                    let _e1603 = phi_2680_;
-                    terms.member[_e185] = _e1603;
+                    let _e1595 = phi_2545_;
+                    terms.member[_e185] = _e1595;
                     edges.member[_e185] = ((((64u * (bitcast<u32>((floor(select(3f, _e316, (_e316 < 3f))) + 8388608f)) - 1258291200u)) + (16u * (bitcast<u32>((floor(select(3f, _e331, (_e331 < 3f))) + 8388608f)) - 1258291200u))) + (4u * (bitcast<u32>((floor(select(3f, _e347, (_e347 < 3f))) + 8388608f)) - 1258291200u))) + (bitcast<u32>((floor(select(3f, _e363, (_e363 < 3f))) + 8388608f)) - 1258291200u));
                 }
             }

@@ -5,12 +5,12 @@
 use spirv_std::num_traits::Float;
 
 use crate::common::lanes::Lanes;
-use crate::common::math::{f32_to_u32, floor, sat, u32_to_f32};
+use crate::common::math::{f32_to_u32, sat, u32_to_f32};
 use crate::glam::{Vec3, Vec4, vec4};
 
-/// Round half to even (HLSL `round`, spec gtao-raymarch-hybrid §1.5). On SPIR-V one
-/// `RoundEven` instruction; natively both tests are evaluated (`&`, not `&&`), a select rather
-/// than a branch per call (and no libm call on x86-64 without SSE4.1).
+/// Round half to even (HLSL `round`, spec gtao-raymarch-hybrid §1.5): `RoundEven` on SPIR-V,
+/// `f32::round_ties_even` natively (one `roundss` on x86-64-v3), the same value for every float
+/// (−0 for x in [−0.5, −0], every |x| ≥ 2²³ unchanged).
 #[inline]
 pub fn round_even(x: f32) -> f32 {
     #[cfg(target_arch = "spirv")]
@@ -18,11 +18,7 @@ pub fn round_even(x: f32) -> f32 {
     // SAFETY: a pure float operation (GLSL.std.450 RoundEven).
     let r = unsafe { core::intrinsics::round_ties_even_f32(x) };
     #[cfg(not(target_arch = "spirv"))]
-    let r = {
-        let r = floor(x + 0.5);
-        let odd_tie = (r - x == 0.5) & (floor(r * 0.5) * 2.0 != r);
-        if odd_tie { r - 1.0 } else { r }
-    };
+    let r = x.round_ties_even();
     r
 }
 

@@ -29,8 +29,8 @@ fn row_major_lanes<L: Lanes>(depth: &[f32], width: u32, p: L::U2) -> L {
     L::gather_index(depth, row_major_index::<L>(p, width))
 }
 
-/// The decoded G-buffer normals (row-major octahedral codes, [`decode_normal`]) at each lane's
-/// pixel.
+/// The decoded G-buffer normals (row-major octahedral codes, [`decode_normal_lanes`]) at each
+/// lane's pixel.
 #[inline]
 pub fn decoded_normals<L: Lanes>(normals: &[u32], width: u32, p: L::U2) -> L::V3 {
     decode_normal_lanes::<L>(L::gather_word(normals, row_major_index::<L>(p, width)))

@@ -93,8 +93,6 @@ pub trait Lanes:
     fn texel_lane(t: Self::U2, i: usize) -> UVec2;
     /// Is the condition true in any lane?
     fn any(m: Self::Mask) -> bool;
-    /// `map(data[index(i)])` in lane `i`, for words that hold a vector (an encoded normal).
-    fn gather_v3(data: &[u32], index: impl Fn(usize) -> usize, map: impl Fn(u32) -> Vec3) -> Self::V3;
     /// The texel `(x, y)` per lane.
     fn texel(x: Self::Index, y: Self::Index) -> Self::U2;
     fn texel_x(t: Self::U2) -> Self::Index;
@@ -310,10 +308,6 @@ impl Lanes for f32 {
         m
     }
     #[inline]
-    fn gather_v3(data: &[u32], index: impl Fn(usize) -> usize, map: impl Fn(u32) -> Vec3) -> Vec3 {
-        map(unsafe { crate::common::read::read(data, index(0)) })
-    }
-    #[inline]
     fn texel(x: u32, y: u32) -> UVec2 {
         UVec2::new(x, y)
     }
@@ -447,7 +441,7 @@ pub use x8::{F32x8, U2x8, V2x8, V3x8};
 #[cfg(not(target_arch = "spirv"))]
 mod x8 {
     use super::{LaneVec2, LaneVec3, Lanes};
-    use crate::glam::{UVec2, Vec2, Vec3};
+    use crate::glam::{UVec2, Vec2};
     use core::ops::{Add, Div, Mul, Neg, Sub};
     use wide::{f32x8, i32x8};
 
@@ -590,13 +584,18 @@ mod x8 {
             // picks as `bitselect`'s and/andnot/or would.
             F32x8(wide::Select::select(m, a.0, b.0))
         }
-        /// `minps(maxps(x, lo), hi)`: `maxps` returns its second operand for a NaN or equal
-        /// pair, so NaN → lo and x = lo → lo (±0 included), then `minps` keeps x below hi and
-        /// returns hi for x = hi: the compares-and-selects' value, bit for bit, in two
-        /// instructions.
+        /// On x86-64 `minps(maxps(x, lo), hi)`: `maxps` returns its second operand for a NaN
+        /// or equal pair, so NaN → lo and x = lo → lo (±0 included), then `minps` keeps x below
+        /// hi and returns hi for x = hi: the compares-and-selects' value, bit for bit, in two
+        /// instructions. Elsewhere (`wide`'s `fast_max` propagates NaN on aarch64) the compares
+        /// and selects.
         #[inline(always)]
         fn clamp_between(self, lo: Self, hi: Self) -> Self {
-            F32x8(self.0.fast_max(lo.0).fast_min(hi.0))
+            #[cfg(target_arch = "x86_64")]
+            let c = F32x8(self.0.fast_max(lo.0).fast_min(hi.0));
+            #[cfg(not(target_arch = "x86_64"))]
+            let c = Self::select(self.gt(lo), Self::select(self.lt(hi), self, hi), lo);
+            c
         }
         #[inline(always)]
         fn and(a: f32x8, b: f32x8) -> f32x8 {
@@ -625,15 +624,6 @@ mod x8 {
         #[inline(always)]
         fn any(m: f32x8) -> bool {
             m.any()
-        }
-        #[inline(always)]
-        fn gather_v3(data: &[u32], index: impl Fn(usize) -> usize, map: impl Fn(u32) -> Vec3) -> V3x8 {
-            let v: [Vec3; 8] = core::array::from_fn(|i| map(data[index(i)]));
-            V3x8 {
-                x: F32x8::from_lanes(|i| v[i].x),
-                y: F32x8::from_lanes(|i| v[i].y),
-                z: F32x8::from_lanes(|i| v[i].z),
-            }
         }
         #[inline(always)]
         fn texel(x: i32x8, y: i32x8) -> U2x8 {

@@ -17,17 +17,28 @@ pub fn u32_to_f32(x: u32) -> f32 {
 }
 
 /// `x as u32` (truncation) for a finite `x` in [0, 2²³) (a clamped coordinate, a rounded
-/// byte). On SPIR-V without any conversion instruction: `⌊x⌋ + 2²³` is exact and its bits are
-/// `0x4B00_0000 + ⌊x⌋`. lavapipe compiles every float-to-integer conversion, signed or not, to
-/// eight scalar saturating conversions per vector (about six instructions each); this is three
-/// vector instructions. Natively Rust's `as i32`, the same integer.
+/// byte). On SPIR-V without any conversion instruction ([`f32_to_u32_bits`]): lavapipe compiles
+/// every float-to-integer conversion, signed or not, to eight scalar saturating conversions per
+/// vector (about six instructions each); this is three vector instructions. Natively Rust's
+/// `as i32`, the same integer on that range (checked in debug builds).
 #[inline]
 pub fn f32_to_u32(x: f32) -> u32 {
     #[cfg(target_arch = "spirv")]
-    let i = (Float::floor(x) + 8_388_608.0).to_bits() - 0x4B00_0000;
+    let i = f32_to_u32_bits(x);
     #[cfg(not(target_arch = "spirv"))]
-    let i = x as i32 as u32;
+    let i = {
+        debug_assert!((0.0..8_388_608.0).contains(&x), "f32_to_u32({x}): outside [0, 2²³)");
+        x as i32 as u32
+    };
     i
+}
+
+/// `⌊x⌋` for a finite `x` in [0, 2²³) from bits alone: `⌊x⌋ + 2²³` is exact, and its bits are
+/// `0x4B00_0000 + ⌊x⌋` ([`f32_to_u32`]'s SPIR-V form; `tests/exhaustive.rs` checks it against
+/// `as u32` on every float of the range).
+#[inline]
+pub fn f32_to_u32_bits(x: f32) -> u32 {
+    (floor(x) + 8_388_608.0).to_bits() - 0x4B00_0000
 }
 
 /// `saturate(x)`: clamp to [0, 1]. NaN maps to 0.
@@ -36,8 +47,10 @@ pub fn sat<L: Lanes>(x: L) -> L {
     clamp(x, 0.0, 1.0)
 }
 
-/// Clamp without `f32::clamp`'s panic path (rust-gpu friendly). NaN maps to `lo`. For
-/// `lo < hi` (or both +0): the CPU's lanes clamp in two instructions ([`Lanes::clamp_between`]).
+/// Clamp without `f32::clamp`'s panic path (rust-gpu friendly). NaN maps to `lo`.
+/// Requires `lo < hi`, or both +0 (every caller's bounds are constants that are): with those
+/// the CPU's lanes clamp in two instructions ([`Lanes::clamp_between`]); for other bounds use
+/// [`clamp_lanes`].
 #[inline]
 pub fn clamp<L: Lanes>(x: L, lo: f32, hi: f32) -> L {
     x.clamp_between(L::splat(lo), L::splat(hi))

@@ -11,9 +11,7 @@ use crate::common::ViewParams;
 use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, store_term};
 use crate::common::gbuffer_read::decoded_normals;
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, select_v3};
-use crate::common::math::{
-    ceil, clamp, depth_or_far, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat, u32_to_f32,
-};
+use crate::common::math::{depth_or_far, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat, u32_to_f32};
 use crate::common::noise::spatio_temporal_noise;
 use crate::common::normal_codec::encode_normal;
 use crate::common::screen_space::{neighbour, neighbour_lanes, view_pos};
@@ -47,6 +45,16 @@ pub struct PixelSetup<L: Lanes = f32> {
     pub min_s: L,
     /// Spatio-temporal noise (slice, step).
     pub xi: L::V2,
+    /// `|off|²` beyond which a sample reads MIP 1 or coarser ([`mip_threshold`]).
+    pub mip_threshold: f32,
+}
+
+/// The first of the MIP thresholds on a sample offset's squared length,
+/// `2^(1 + 2·DepthMIPSamplingOffset)`: MIP k ≥ 1 is read beyond `4^(k−1)` times it (spec
+/// gtao-raymarch-hybrid §1.5 and §2.6.3 step 7 without a logarithm per sample; `MipLevel::of`).
+#[inline]
+pub fn mip_threshold(params: &GtaoParams) -> f32 {
+    Float::exp2(2.0 * params.depth_mip_sampling_offset + 1.0)
 }
 
 /// Working-depth MIP 0 at texels `q` (row-major over the full target).
@@ -94,7 +102,8 @@ pub fn pixel_setup<L: Lanes>(
     let min_s = L::splat(1.3) / r_px;
     let frame = params.noise_frame;
     let xi = L::v2_from_lanes(move |i| spatio_temporal_noise(L::texel_lane(p, i), frame));
-    (packed, is_valid_depth(zc, view.far), PixelSetup { uv, pos, v, n, r, r_px, min_s, xi })
+    let mip_threshold = mip_threshold(params);
+    (packed, is_valid_depth(zc, view.far), PixelSetup { uv, pos, v, n, r, r_px, min_s, xi, mip_threshold })
 }
 
 /// MainPass for pixel `p` of the full target (spec gtao-raymarch-hybrid §2.6.2–§2.6.4). `normals`: encoded
@@ -269,44 +278,65 @@ pub fn sample_pair<L: Lanes>(
     let t = crate::common::math::frac(px.xi.y() + u32_to_f32(s + k * steps) * 0.618_034);
     let u = pow((t + u32_to_f32(k)) * (1.0 / u32_to_f32(steps)), params.sample_distribution_power) + px.min_s;
     let off = slice.omega * u;
-    let lambda = clamp(off.length().log2() - params.depth_mip_sampling_offset, 0.0, 5.0);
-    let level = ceil(lambda + 0.5) - 1.0;
+    let level = MipLevel::<L>::of(full, off.x() * off.x() + off.y() * off.y(), px.mip_threshold);
     // Whole pixels times the pixel size: the sample lands on a texel centre either way.
     let off_uv = L::V2::new(off.x().round_even() * (1.0 / view.res.x), off.y().round_even() * (1.0 / view.res.y));
     let uv0 = px.uv + off_uv;
     let uv1 = px.uv - off_uv;
-    let q0 = view_pos(view, uv0, mip_sample(mips, full, level, uv0));
-    let q1 = view_pos(view, uv1, mip_sample(mips, full, level, uv1));
+    let q0 = view_pos(view, uv0, level.sample(mips, uv0));
+    let q1 = view_pos(view, uv1, level.sample(mips, uv1));
     (q0, q1)
 }
 
-/// Point sample of the MIP chain per lane at level `level` (an integral float; clamped to the
-/// chain, NaN reads level 0) and `uv`: the texel `clamp(⌊uv·size⌋, 0, size − 1)` of that level
-/// (spec gtao-raymarch-hybrid §1.5). Branch-free, the same for one lane as for several: the
-/// level's extent is `max(full ≫ k, 1)` ([`mip_size`]) and its offset one of four chosen by
-/// compares and selects (the offsets are the same for every pixel).
-#[inline]
-fn mip_sample<L: Lanes>(mips: &[f32], full: UVec2, level: L, uv: L::V2) -> L {
-    let k = level.floor_index(L::index_splat(MIP_LEVELS as u32));
-    let (w, h) = (L::index_mip_extent(full.x, k), L::index_mip_extent(full.y, k));
-    let mut at = L::index_splat(0);
-    let mut offset = 0u32;
-    // Levels 1–4 written out: straight-line code on the GPU (rust-gpu emits loops as written).
-    const _: () = assert!(MIP_LEVELS == 5, "mip_sample selects among exactly five levels");
-    macro_rules! level {
-        ($k:expr) => {
-            let below = mip_size(full, $k - 1);
-            offset += below.x * below.y;
-            at = L::index_select(level.ge(L::splat($k as f32)), L::index_splat(offset), at);
-        };
+/// The MIP level a sample offset reads, per lane: its extent and where it starts in the packed
+/// chain.
+struct MipLevel<L: Lanes> {
+    /// Width and height in texels.
+    w: L::Index,
+    h: L::Index,
+    /// Offset of the level's first texel in the chain.
+    at: L::Index,
+}
+
+impl<L: Lanes> MipLevel<L> {
+    /// The nearest level `ceil(λ + 0.5) − 1` of `λ = clamp(log2|off| − offset, 0, 5)`, clamped to
+    /// MIP 4 (spec gtao-raymarch-hybrid §1.5, §2.6.3 step 7), from `len_sq = |off|²` without a
+    /// logarithm: for k ≥ 1 the level is at least k exactly when λ > k − 1/2, that is when
+    /// `|off|² > 2^(2k − 1 + 2·offset)`: `first` ([`mip_threshold`]) times 1, 4, 16, 64. A NaN
+    /// offset reads MIP 0, as the clamp makes it. Branch-free, the same for one lane as for
+    /// several: each level reached takes that level's offset (the same for every pixel) and
+    /// index by a select, its extent is `max(full ≫ k, 1)` ([`mip_size`]).
+    #[inline]
+    fn of(full: UVec2, len_sq: L, first: f32) -> Self {
+        let mut k = L::index_splat(0);
+        let mut at = L::index_splat(0);
+        let mut start = 0u32;
+        // Levels 1–4 written out: straight-line code on the GPU (rust-gpu emits loops as written).
+        const _: () = assert!(MIP_LEVELS == 5, "MipLevel chooses among exactly five levels");
+        macro_rules! level {
+            ($k:expr) => {
+                let above = mip_size(full, $k - 1);
+                start += above.x * above.y;
+                let reached = len_sq.gt(L::splat(first * (1u32 << (2 * ($k - 1))) as f32));
+                k = L::index_select(reached, L::index_splat($k), k);
+                at = L::index_select(reached, L::index_splat(start), at);
+            };
+        }
+        level!(1);
+        level!(2);
+        level!(3);
+        level!(4);
+        MipLevel { w: L::index_mip_extent(full.x, k), h: L::index_mip_extent(full.y, k), at }
     }
-    level!(1);
-    level!(2);
-    level!(3);
-    level!(4);
-    let x = (uv.x() * L::index_to_float(w)).floor_index(w);
-    let y = (uv.y() * L::index_to_float(h)).floor_index(h);
-    L::gather_index(mips, at + y * w + x)
+
+    /// Point sample at `uv`: the texel `clamp(⌊uv·size⌋, 0, size − 1)` of the level (spec
+    /// gtao-raymarch-hybrid §1.5).
+    #[inline]
+    fn sample(&self, mips: &[f32], uv: L::V2) -> L {
+        let x = (uv.x() * L::index_to_float(self.w)).floor_index(self.w);
+        let y = (uv.y() * L::index_to_float(self.h)).floor_index(self.h);
+        L::gather_index(mips, self.at + y * self.w + x)
+    }
 }
 
 /// One slice's horizon angles `(h0, h1)` (spec gtao-raymarch-hybrid §2.6.3 steps 6–9): the largest horizon cosine
