@@ -61,8 +61,7 @@ fn function_() {
                     break;
                 }
                 let _e67 = ao.member[_e63];
-                let _e69 = select(0f, _e67, (_e67 > 0f));
-                textureStore(out, vec2<u32>(_e13.x, _e13.y), vec4(select(1f, _e69, (_e69 < 1f))));
+                textureStore(out, vec2<u32>(_e13.x, _e13.y), vec4(select(0f, select(1f, _e67, (_e67 < 1f)), (_e67 > 0f))));
             }
             break;
         }

@@ -146,20 +146,15 @@ fn function_() {
                 let _e1231 = (_e1224 * (f32(bitcast<i32>((_e1135 & 3u))) * 0.33333334f));
                 let _e1232 = (_e1228 * (f32(bitcast<i32>(((_e1140 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f));
                 let _e1236 = (1.5f - (((_e1229 + _e1230) + _e1231) + _e1232));
-                let _e1238 = select(0f, _e1236, (_e1236 > 0f));
-                let _e1241 = (select(1f, _e1238, (_e1238 < 1f)) * 0.33333334f);
+                let _e1241 = (select(0f, select(1f, _e1236, (_e1236 < 1f)), (_e1236 > 0f)) * 0.33333334f);
                 let _e1242 = (_e1229 + _e1241);
-                let _e1244 = select(0f, _e1242, (_e1242 > 0f));
-                let _e1246 = select(1f, _e1244, (_e1244 < 1f));
+                let _e1246 = select(0f, select(1f, _e1242, (_e1242 < 1f)), (_e1242 > 0f));
                 let _e1247 = (_e1230 + _e1241);
-                let _e1249 = select(0f, _e1247, (_e1247 > 0f));
-                let _e1251 = select(1f, _e1249, (_e1249 < 1f));
+                let _e1251 = select(0f, select(1f, _e1247, (_e1247 < 1f)), (_e1247 > 0f));
                 let _e1252 = (_e1231 + _e1241);
-                let _e1254 = select(0f, _e1252, (_e1252 > 0f));
-                let _e1256 = select(1f, _e1254, (_e1254 < 1f));
+                let _e1256 = select(0f, select(1f, _e1252, (_e1252 < 1f)), (_e1252 > 0f));
                 let _e1257 = (_e1232 + _e1241);
-                let _e1259 = select(0f, _e1257, (_e1257 > 0f));
-                let _e1261 = select(1f, _e1259, (_e1259 < 1f));
+                let _e1261 = select(0f, select(1f, _e1257, (_e1257 < 1f)), (_e1257 > 0f));
                 let _e1265 = (((_e1246 * (f32(bitcast<i32>(((_e1115 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f)) + (_e1256 * (f32(bitcast<i32>(((_e1135 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f))) * 0.425f);
                 let _e1269 = (((_e1256 * (f32(bitcast<i32>(((_e1135 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f)) + (_e1251 * _e1168)) * 0.425f);
                 let _e1273 = (((_e1261 * (f32(bitcast<i32>(((_e1140 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f)) + (_e1246 * (f32(bitcast<i32>((_e1115 & 3u))) * 0.33333334f))) * 0.425f);
@@ -173,20 +168,15 @@ fn function_() {
                 let _e1352 = (_e1168 * (f32(bitcast<i32>((_e1289 & 3u))) * 0.33333334f));
                 let _e1353 = (_e1172 * (f32(bitcast<i32>(((_e1293 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f));
                 let _e1357 = (1.5f - (((_e1350 + _e1351) + _e1352) + _e1353));
-                let _e1359 = select(0f, _e1357, (_e1357 > 0f));
-                let _e1362 = (select(1f, _e1359, (_e1359 < 1f)) * 0.33333334f);
+                let _e1362 = (select(0f, select(1f, _e1357, (_e1357 < 1f)), (_e1357 > 0f)) * 0.33333334f);
                 let _e1363 = (_e1350 + _e1362);
-                let _e1365 = select(0f, _e1363, (_e1363 > 0f));
-                let _e1367 = select(1f, _e1365, (_e1365 < 1f));
+                let _e1367 = select(0f, select(1f, _e1363, (_e1363 < 1f)), (_e1363 > 0f));
                 let _e1368 = (_e1351 + _e1362);
-                let _e1370 = select(0f, _e1368, (_e1368 > 0f));
-                let _e1372 = select(1f, _e1370, (_e1370 < 1f));
+                let _e1372 = select(0f, select(1f, _e1368, (_e1368 < 1f)), (_e1368 > 0f));
                 let _e1373 = (_e1352 + _e1362);
-                let _e1375 = select(0f, _e1373, (_e1373 > 0f));
-                let _e1377 = select(1f, _e1375, (_e1375 < 1f));
+                let _e1377 = select(0f, select(1f, _e1373, (_e1373 < 1f)), (_e1373 > 0f));
                 let _e1378 = (_e1353 + _e1362);
-                let _e1380 = select(0f, _e1378, (_e1378 > 0f));
-                let _e1382 = select(1f, _e1380, (_e1380 < 1f));
+                let _e1382 = select(0f, select(1f, _e1378, (_e1378 < 1f)), (_e1378 > 0f));
                 let _e1386 = (((_e1367 * _e1224) + (_e1377 * (f32(bitcast<i32>(((_e1289 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f))) * 0.425f);
                 let _e1390 = (((_e1377 * (f32(bitcast<i32>(((_e1289 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f)) + (_e1372 * (f32(bitcast<i32>(((_e1126 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f))) * 0.425f);
                 let _e1394 = (((_e1382 * (f32(bitcast<i32>(((_e1293 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f)) + (_e1367 * _e1228)) * 0.425f);
@@ -217,16 +207,14 @@ fn function_() {
                     phi_812_ = ((_e1500 * 255f) + 0.5f);
                 }
                 let _e1524 = phi_812_;
-                let _e1526 = select(0f, _e1524, (_e1524 > 0f));
-                let _e1532 = (bitcast<u32>((floor(select(255f, _e1526, (_e1526 < 255f))) + 8388608f)) - 1258291200u);
+                let _e1532 = (bitcast<u32>((floor(select(0f, select(255f, _e1524, (_e1524 < 255f)), (_e1524 > 0f))) + 8388608f)) - 1258291200u);
                 if _e87 {
                     phi_852_ = ((_e1518 * 382.5f) + 0.5f);
                 } else {
                     phi_852_ = ((_e1518 * 255f) + 0.5f);
                 }
                 let _e1541 = phi_852_;
-                let _e1543 = select(0f, _e1541, (_e1541 > 0f));
-                let _e1549 = (bitcast<u32>((floor(select(255f, _e1543, (_e1543 < 255f))) + 8388608f)) - 1258291200u);
+                let _e1549 = (bitcast<u32>((floor(select(0f, select(255f, _e1541, (_e1541 < 255f)), (_e1541 > 0f))) + 8388608f)) - 1258291200u);
                 terms_out.member[_e92] = _e1532;
                 if _e87 {
                     ao.member[_e92] = (f32(bitcast<i32>(_e1532)) * 0.003921569f);
@@ -287,20 +275,15 @@ fn function_() {
                             let _e908 = ((f32(bitcast<i32>(((_e798 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f) * (f32(bitcast<i32>((_e812 & 3u))) * 0.33333334f));
                             let _e909 = ((f32(bitcast<i32>((_e798 & 3u))) * 0.33333334f) * (f32(bitcast<i32>(((_e817 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f));
                             let _e913 = (1.5f - (((_e906 + _e907) + _e908) + _e909));
-                            let _e915 = select(0f, _e913, (_e913 > 0f));
-                            let _e918 = (select(1f, _e915, (_e915 < 1f)) * 0.33333334f);
+                            let _e918 = (select(0f, select(1f, _e913, (_e913 < 1f)), (_e913 > 0f)) * 0.33333334f);
                             let _e919 = (_e906 + _e918);
-                            let _e921 = select(0f, _e919, (_e919 > 0f));
-                            let _e923 = select(1f, _e921, (_e921 < 1f));
+                            let _e923 = select(0f, select(1f, _e919, (_e919 < 1f)), (_e919 > 0f));
                             let _e924 = (_e907 + _e918);
-                            let _e926 = select(0f, _e924, (_e924 > 0f));
-                            let _e928 = select(1f, _e926, (_e926 < 1f));
+                            let _e928 = select(0f, select(1f, _e924, (_e924 < 1f)), (_e924 > 0f));
                             let _e929 = (_e908 + _e918);
-                            let _e931 = select(0f, _e929, (_e929 > 0f));
-                            let _e933 = select(1f, _e931, (_e931 < 1f));
+                            let _e933 = select(0f, select(1f, _e929, (_e929 < 1f)), (_e929 > 0f));
                             let _e934 = (_e909 + _e918);
-                            let _e936 = select(0f, _e934, (_e934 > 0f));
-                            let _e938 = select(1f, _e936, (_e936 < 1f));
+                            let _e938 = select(0f, select(1f, _e934, (_e934 < 1f)), (_e934 > 0f));
                             let _e942 = (((_e923 * (f32(bitcast<i32>(((_e803 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f)) + (_e933 * (f32(bitcast<i32>(((_e812 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f))) * 0.425f);
                             let _e946 = (((_e933 * (f32(bitcast<i32>(((_e812 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f)) + (_e928 * (f32(bitcast<i32>(((_e807 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f))) * 0.425f);
                             let _e950 = (((_e938 * (f32(bitcast<i32>(((_e817 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f)) + (_e923 * (f32(bitcast<i32>((_e803 & 3u))) * 0.33333334f))) * 0.425f);
@@ -321,8 +304,7 @@ fn function_() {
                                 phi_1579_ = ((_e1038 * 255f) + 0.5f);
                             }
                             let _e1044 = phi_1579_;
-                            let _e1046 = select(0f, _e1044, (_e1044 > 0f));
-                            let _e1052 = (bitcast<u32>((floor(select(255f, _e1046, (_e1046 < 255f))) + 8388608f)) - 1258291200u);
+                            let _e1052 = (bitcast<u32>((floor(select(0f, select(255f, _e1044, (_e1044 < 255f)), (_e1044 > 0f))) + 8388608f)) - 1258291200u);
                             phi_2500_ = type_22(_e1052, (f32(bitcast<i32>(_e1052)) * 0.003921569f), _e87);
                             phi_2501_ = type_22();
                             phi_2502_ = true;
@@ -368,20 +350,15 @@ fn function_() {
                             let _e260 = ((f32(bitcast<i32>(((_e150 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f) * (f32(bitcast<i32>((_e164 & 3u))) * 0.33333334f));
                             let _e261 = ((f32(bitcast<i32>((_e150 & 3u))) * 0.33333334f) * (f32(bitcast<i32>(((_e169 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f));
                             let _e265 = (1.5f - (((_e258 + _e259) + _e260) + _e261));
-                            let _e267 = select(0f, _e265, (_e265 > 0f));
-                            let _e270 = (select(1f, _e267, (_e267 < 1f)) * 0.33333334f);
+                            let _e270 = (select(0f, select(1f, _e265, (_e265 < 1f)), (_e265 > 0f)) * 0.33333334f);
                             let _e271 = (_e258 + _e270);
-                            let _e273 = select(0f, _e271, (_e271 > 0f));
-                            let _e275 = select(1f, _e273, (_e273 < 1f));
+                            let _e275 = select(0f, select(1f, _e271, (_e271 < 1f)), (_e271 > 0f));
                             let _e276 = (_e259 + _e270);
-                            let _e278 = select(0f, _e276, (_e276 > 0f));
-                            let _e280 = select(1f, _e278, (_e278 < 1f));
+                            let _e280 = select(0f, select(1f, _e276, (_e276 < 1f)), (_e276 > 0f));
                             let _e281 = (_e260 + _e270);
-                            let _e283 = select(0f, _e281, (_e281 > 0f));
-                            let _e285 = select(1f, _e283, (_e283 < 1f));
+                            let _e285 = select(0f, select(1f, _e281, (_e281 < 1f)), (_e281 > 0f));
                             let _e286 = (_e261 + _e270);
-                            let _e288 = select(0f, _e286, (_e286 > 0f));
-                            let _e290 = select(1f, _e288, (_e288 < 1f));
+                            let _e290 = select(0f, select(1f, _e286, (_e286 < 1f)), (_e286 > 0f));
                             let _e294 = (((_e275 * (f32(bitcast<i32>(((_e155 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f)) + (_e285 * (f32(bitcast<i32>(((_e164 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f))) * 0.425f);
                             let _e298 = (((_e285 * (f32(bitcast<i32>(((_e164 >> bitcast<u32>(4u)) & 3u))) * 0.33333334f)) + (_e280 * (f32(bitcast<i32>(((_e159 >> bitcast<u32>(2u)) & 3u))) * 0.33333334f))) * 0.425f);
                             let _e302 = (((_e290 * (f32(bitcast<i32>(((_e169 >> bitcast<u32>(6u)) & 3u))) * 0.33333334f)) + (_e275 * (f32(bitcast<i32>((_e155 & 3u))) * 0.33333334f))) * 0.425f);
@@ -416,19 +393,11 @@ fn function_() {
                                 let _e693 = ((_e675.x * 0.5f) + 0.5f);
                                 let _e694 = ((_e675.y * 0.5f) + 0.5f);
                                 let _e695 = ((_e675.z * -0.5f) + 0.5f);
-                                let _e697 = select(0f, _e693, (_e693 > 0f));
-                                let _e707 = select(0f, _e694, (_e694 > 0f));
-                                let _e720 = select(0f, _e695, (_e695 > 0f));
-                                let _e733 = select(0f, _e686, (_e686 > 0f));
-                                phi_2497_ = type_22(((((bitcast<u32>((floor(((select(1f, _e697, (_e697 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) | ((bitcast<u32>((floor(((select(1f, _e707, (_e707 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(8i))) | ((bitcast<u32>((floor(((select(1f, _e720, (_e720 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(16i))) | ((bitcast<u32>((floor(((select(1f, _e733, (_e733 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(24i))), _e686, _e87);
+                                phi_2497_ = type_22(((((bitcast<u32>((floor(((select(0f, select(1f, _e693, (_e693 < 1f)), (_e693 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) | ((bitcast<u32>((floor(((select(0f, select(1f, _e694, (_e694 < 1f)), (_e694 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(8i))) | ((bitcast<u32>((floor(((select(0f, select(1f, _e695, (_e695 < 1f)), (_e695 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(16i))) | ((bitcast<u32>((floor(((select(0f, select(1f, _e686, (_e686 < 1f)), (_e686 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(24i))), _e686, _e87);
                                 phi_2498_ = type_22();
                             } else {
-                                let _e608 = select(0f, _e603, (_e603 > 0f));
-                                let _e618 = select(0f, _e604, (_e604 > 0f));
-                                let _e631 = select(0f, _e605, (_e605 > 0f));
-                                let _e644 = select(0f, _e606, (_e606 > 0f));
                                 phi_2497_ = type_22();
-                                phi_2498_ = type_22(((((bitcast<u32>((floor(((select(1f, _e608, (_e608 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) | ((bitcast<u32>((floor(((select(1f, _e618, (_e618 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(8i))) | ((bitcast<u32>((floor(((select(1f, _e631, (_e631 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(16i))) | ((bitcast<u32>((floor(((select(1f, _e644, (_e644 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(24i))), 0f, _e87);
+                                phi_2498_ = type_22(((((bitcast<u32>((floor(((select(0f, select(1f, _e603, (_e603 < 1f)), (_e603 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) | ((bitcast<u32>((floor(((select(0f, select(1f, _e604, (_e604 < 1f)), (_e604 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(8i))) | ((bitcast<u32>((floor(((select(0f, select(1f, _e605, (_e605 < 1f)), (_e605 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(16i))) | ((bitcast<u32>((floor(((select(0f, select(1f, _e606, (_e606 < 1f)), (_e606 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(24i))), 0f, _e87);
                             }
                             let _e747 = phi_2497_;
                             let _e749 = phi_2498_;

@@ -151,35 +151,23 @@ fn function_() {
             let _e221 = abs(_e211);
             let _e222 = abs((_e211 + _e216));
             let _e228 = (1.25f - (select(_e222, _e221, ((_e221 < _e222) || (_e222 != _e222))) / _e219));
-            let _e230 = select(0f, _e228, (_e228 > 0f));
-            let _e232 = select(1f, _e230, (_e230 < 1f));
+            let _e232 = select(0f, select(1f, _e228, (_e228 < 1f)), (_e228 > 0f));
             let _e234 = abs(_e212);
             let _e235 = abs((_e212 - _e216));
             let _e241 = (1.25f - (select(_e235, _e234, ((_e234 < _e235) || (_e235 != _e235))) / _e219));
-            let _e243 = select(0f, _e241, (_e241 > 0f));
-            let _e245 = select(1f, _e243, (_e243 < 1f));
+            let _e245 = select(0f, select(1f, _e241, (_e241 < 1f)), (_e241 > 0f));
             let _e247 = abs(_e213);
             let _e248 = abs((_e213 + _e218));
             let _e254 = (1.25f - (select(_e248, _e247, ((_e247 < _e248) || (_e248 != _e248))) / _e219));
-            let _e256 = select(0f, _e254, (_e254 > 0f));
-            let _e258 = select(1f, _e256, (_e256 < 1f));
+            let _e258 = select(0f, select(1f, _e254, (_e254 < 1f)), (_e254 > 0f));
             let _e260 = abs(_e214);
             let _e261 = abs((_e214 - _e218));
             let _e267 = (1.25f - (select(_e261, _e260, ((_e260 < _e261) || (_e261 != _e261))) / _e219));
-            let _e269 = select(0f, _e267, (_e267 > 0f));
-            let _e271 = select(1f, _e269, (_e269 < 1f));
-            let _e273 = select(0f, _e232, (_e232 > 0f));
-            let _e277 = round((select(1f, _e273, (_e273 < 1f)) * 2.9f));
-            let _e279 = select(0f, _e277, (_e277 > 0f));
-            let _e288 = select(0f, _e245, (_e245 > 0f));
-            let _e292 = round((select(1f, _e288, (_e288 < 1f)) * 2.9f));
-            let _e294 = select(0f, _e292, (_e292 > 0f));
-            let _e304 = select(0f, _e258, (_e258 > 0f));
-            let _e308 = round((select(1f, _e304, (_e304 < 1f)) * 2.9f));
-            let _e310 = select(0f, _e308, (_e308 > 0f));
-            let _e320 = select(0f, _e271, (_e271 > 0f));
-            let _e324 = round((select(1f, _e320, (_e320 < 1f)) * 2.9f));
-            let _e326 = select(0f, _e324, (_e324 > 0f));
+            let _e271 = select(0f, select(1f, _e267, (_e267 < 1f)), (_e267 > 0f));
+            let _e277 = round((select(0f, select(1f, _e232, (_e232 < 1f)), (_e232 > 0f)) * 2.9f));
+            let _e292 = round((select(0f, select(1f, _e245, (_e245 < 1f)), (_e245 > 0f)) * 2.9f));
+            let _e308 = round((select(0f, select(1f, _e258, (_e258 < 1f)), (_e258 > 0f)) * 2.9f));
+            let _e324 = round((select(0f, select(1f, _e271, (_e271 < 1f)), (_e271 > 0f)) * 2.9f));
             let _e336 = ((f32(_e152) + 0.5f) / _e126.member.member.x);
             let _e339 = ((f32(_e161) + 0.5f) / _e126.member.member.y);
             let _e340 = (_e151 * 0.99999f);
@@ -273,11 +261,10 @@ fn function_() {
                 let _e572 = -(_e571);
                 let _e573 = (_e432 * _e571);
                 let _e575 = ((10f - _e436) * 0.01f);
-                let _e577 = select(0f, _e575, (_e575 > 0f));
                 let _e583 = select(1u, _e126.member_8, (1u < _e126.member_8));
                 phi_748_ = 0u;
                 phi_751_ = vec3<f32>(0f, 0f, 0f);
-                phi_753_ = (select(1f, _e577, (_e577 < 1f)) * 0.5f);
+                phi_753_ = (select(0f, select(1f, _e575, (_e575 < 1f)), (_e575 > 0f)) * 0.5f);
                 loop {
                     let _e585 = phi_748_;
                     let _e587 = phi_751_;
@@ -307,8 +294,7 @@ fn function_() {
                         let _e647 = sqrt((((_e639 * _e639) + (_e640 * _e640)) + (_e641 * _e641)));
                         let _e652 = (((_e609 * _e639) + (_e610 * _e640)) + (_e611 * _e641));
                         let _e662 = ((((_e639 * _e365) + (_e640 * _e366)) + (_e641 * _e367)) / _e647);
-                        let _e664 = select(0f, _e662, (_e662 > 0f));
-                        let _e666 = select(1f, _e664, (_e664 < 1f));
+                        let _e666 = select(0f, select(1f, _e662, (_e662 < 1f)), (_e662 > 0f));
                         let _e667 = abs(_e666);
                         let _e678 = (((_e667 * -0.156583f) + 1.570796f) * bitcast<f32>((532487669u + bitcast<u32>((bitcast<i32>(bitcast<u32>((1f - _e667))) >> bitcast<u32>(1i))))));
                         let _e682 = (select(select(0f, -1f, (_e652 < 0f)), 1f, (_e652 > 0f)) * select((3.141593f - _e678), _e678, (_e666 >= 0f)));
@@ -368,17 +354,13 @@ fn function_() {
                                 let _e795 = f32(bitcast<i32>(_e779));
                                 let _e796 = (_e790 * _e795);
                                 let _e799 = f32(bitcast<i32>((_e779 - 1u)));
-                                let _e801 = select(0f, _e796, (_e796 > 0f));
                                 let _e809 = f32(bitcast<i32>(_e783));
                                 let _e810 = (_e791 * _e809);
                                 let _e813 = f32(bitcast<i32>((_e783 - 1u)));
-                                let _e815 = select(0f, _e810, (_e810 > 0f));
-                                let _e827 = mips.member[((_e774 + ((bitcast<u32>((floor(select(_e813, _e815, (_e815 < _e813))) + 8388608f)) - 1258291200u) * _e779)) + (bitcast<u32>((floor(select(_e799, _e801, (_e801 < _e799))) + 8388608f)) - 1258291200u))];
+                                let _e827 = mips.member[((_e774 + ((bitcast<u32>((floor(select(0f, select(_e813, _e810, (_e810 < _e813)), (_e810 > 0f))) + 8388608f)) - 1258291200u) * _e779)) + (bitcast<u32>((floor(select(0f, select(_e799, _e796, (_e796 < _e799)), (_e796 > 0f))) + 8388608f)) - 1258291200u))];
                                 let _e836 = (_e792 * _e795);
-                                let _e838 = select(0f, _e836, (_e836 > 0f));
                                 let _e845 = (_e793 * _e809);
-                                let _e847 = select(0f, _e845, (_e845 > 0f));
-                                let _e859 = mips.member[((_e774 + ((bitcast<u32>((floor(select(_e813, _e847, (_e847 < _e813))) + 8388608f)) - 1258291200u) * _e779)) + (bitcast<u32>((floor(select(_e799, _e838, (_e838 < _e799))) + 8388608f)) - 1258291200u))];
+                                let _e859 = mips.member[((_e774 + ((bitcast<u32>((floor(select(0f, select(_e813, _e845, (_e845 < _e813)), (_e845 > 0f))) + 8388608f)) - 1258291200u) * _e779)) + (bitcast<u32>((floor(select(0f, select(_e799, _e836, (_e836 < _e799)), (_e836 > 0f))) + 8388608f)) - 1258291200u))];
                                 let _e868 = (((((_e790 * 2f) - 1f) * _e126.member.member_1.x) * _e827) - _e347);
                                 let _e869 = (((((_e791 * -2f) + 1f) * _e126.member.member_1.y) * _e827) - _e354);
                                 let _e870 = (_e827 - _e340);
@@ -396,8 +378,7 @@ fn function_() {
                                     phi_1297_ = select(0f, 1f, (_e890 <= _e432));
                                 } else {
                                     let _e894 = ((_e890 * _e572) + _e573);
-                                    let _e896 = select(0f, _e894, (_e894 > 0f));
-                                    phi_1297_ = select(1f, _e896, (_e896 < 1f));
+                                    phi_1297_ = select(0f, select(1f, _e894, (_e894 < 1f)), (_e894 > 0f));
                                 }
                                 let _e900 = phi_1297_;
                                 let _e903 = (_e687 + ((((((_e868 * _e365) + (_e869 * _e366)) + (_e870 * _e367)) / _e876) - _e687) * _e900));
@@ -417,8 +398,7 @@ fn function_() {
                                     phi_1357_ = select(0f, 1f, (_e925 <= _e432));
                                 } else {
                                     let _e929 = ((_e925 * _e572) + _e573);
-                                    let _e931 = select(0f, _e929, (_e929 > 0f));
-                                    phi_1357_ = select(1f, _e931, (_e931 < 1f));
+                                    phi_1357_ = select(0f, select(1f, _e929, (_e929 < 1f)), (_e929 > 0f));
                                 }
                                 let _e935 = phi_1357_;
                                 let _e938 = (_e689 + ((((((_e904 * _e365) + (_e905 * _e366)) + (_e906 * _e367)) / _e912) - _e689) * _e935));
@@ -515,8 +495,7 @@ fn function_() {
                 let _e1126 = select(_e1121, 0.03f, _e1125);
                 if (_e126.member_13 == 0u) {
                     let _e1129 = (_e1126 * 0.6666667f);
-                    let _e1131 = select(0f, _e1129, (_e1129 > 0f));
-                    phi_1665_ = (bitcast<u32>((floor(((select(1f, _e1131, (_e1131 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
+                    phi_1665_ = (bitcast<u32>((floor(((select(0f, select(1f, _e1129, (_e1129 < 1f)), (_e1129 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
                 } else {
                     let _e1148 = sqrt((((_e1117.member_1.x * _e1117.member_1.x) + (_e1117.member_1.y * _e1117.member_1.y)) + (_e1117.member_1.z * _e1117.member_1.z)));
                     if (_e1148 > 0f) {
@@ -529,11 +508,7 @@ fn function_() {
                     let _e1161 = ((_e1153.x * 0.5f) + 0.5f);
                     let _e1162 = ((_e1153.y * 0.5f) + 0.5f);
                     let _e1163 = ((_e1153.z * 0.5f) + 0.5f);
-                    let _e1165 = select(0f, _e1161, (_e1161 > 0f));
-                    let _e1175 = select(0f, _e1162, (_e1162 > 0f));
-                    let _e1188 = select(0f, _e1163, (_e1163 > 0f));
-                    let _e1201 = select(0f, _e1154, (_e1154 > 0f));
-                    phi_1665_ = ((((bitcast<u32>((floor(((select(1f, _e1165, (_e1165 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) | ((bitcast<u32>((floor(((select(1f, _e1175, (_e1175 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(8i))) | ((bitcast<u32>((floor(((select(1f, _e1188, (_e1188 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(16i))) | ((bitcast<u32>((floor(((select(1f, _e1201, (_e1201 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(24i)));
+                    phi_1665_ = ((((bitcast<u32>((floor(((select(0f, select(1f, _e1161, (_e1161 < 1f)), (_e1161 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) | ((bitcast<u32>((floor(((select(0f, select(1f, _e1162, (_e1162 < 1f)), (_e1162 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(8i))) | ((bitcast<u32>((floor(((select(0f, select(1f, _e1163, (_e1163 < 1f)), (_e1163 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(16i))) | ((bitcast<u32>((floor(((select(0f, select(1f, _e1154, (_e1154 < 1f)), (_e1154 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u) << bitcast<u32>(24i)));
                 }
                 let _e1214 = phi_1665_;
                 phi_1706_ = _e1214;
@@ -549,7 +524,7 @@ fn function_() {
             }
             let _e1245 = phi_1706_;
             terms.member[_e148] = _e1245;
-            edges.member[_e148] = ((((64u * (bitcast<u32>((floor(select(3f, _e279, (_e279 < 3f))) + 8388608f)) - 1258291200u)) + (16u * (bitcast<u32>((floor(select(3f, _e294, (_e294 < 3f))) + 8388608f)) - 1258291200u))) + (4u * (bitcast<u32>((floor(select(3f, _e310, (_e310 < 3f))) + 8388608f)) - 1258291200u))) + (bitcast<u32>((floor(select(3f, _e326, (_e326 < 3f))) + 8388608f)) - 1258291200u));
+            edges.member[_e148] = ((((64u * (bitcast<u32>((floor(select(0f, select(3f, _e277, (_e277 < 3f)), (_e277 > 0f))) + 8388608f)) - 1258291200u)) + (16u * (bitcast<u32>((floor(select(0f, select(3f, _e292, (_e292 < 3f)), (_e292 > 0f))) + 8388608f)) - 1258291200u))) + (4u * (bitcast<u32>((floor(select(0f, select(3f, _e308, (_e308 < 3f)), (_e308 > 0f))) + 8388608f)) - 1258291200u))) + (bitcast<u32>((floor(select(0f, select(3f, _e324, (_e324 < 3f)), (_e324 > 0f))) + 8388608f)) - 1258291200u));
         }
     }
     return;

@@ -51,9 +51,9 @@ fn function_() {
     var phi_704_: vec3<f32>;
     var phi_722_: vec3<f32>;
     var phi_890_: vec3<f32>;
-    var phi_924_: vec2<f32>;
-    var phi_940_: f32;
-    var phi_975_: f32;
+    var phi_926_: vec2<f32>;
+    var phi_942_: f32;
+    var phi_977_: f32;
 
     let _e30 = id_1;
     let _e35 = params.member.member.member[0u];
@@ -112,23 +112,19 @@ fn function_() {
             let _e216 = abs(_e206);
             let _e217 = abs((_e206 + _e211));
             let _e223 = (1.25f - (select(_e217, _e216, ((_e216 < _e217) || (_e217 != _e217))) / _e214));
-            let _e225 = select(0f, _e223, (_e223 > 0f));
-            let _e227 = select(1f, _e225, (_e225 < 1f));
+            let _e227 = select(0f, select(1f, _e223, (_e223 < 1f)), (_e223 > 0f));
             let _e229 = abs(_e207);
             let _e230 = abs((_e207 - _e211));
             let _e236 = (1.25f - (select(_e230, _e229, ((_e229 < _e230) || (_e230 != _e230))) / _e214));
-            let _e238 = select(0f, _e236, (_e236 > 0f));
-            let _e240 = select(1f, _e238, (_e238 < 1f));
+            let _e240 = select(0f, select(1f, _e236, (_e236 < 1f)), (_e236 > 0f));
             let _e242 = abs(_e208);
             let _e243 = abs((_e208 + _e213));
             let _e249 = (1.25f - (select(_e243, _e242, ((_e242 < _e243) || (_e243 != _e243))) / _e214));
-            let _e251 = select(0f, _e249, (_e249 > 0f));
-            let _e253 = select(1f, _e251, (_e251 < 1f));
+            let _e253 = select(0f, select(1f, _e249, (_e249 < 1f)), (_e249 > 0f));
             let _e255 = abs(_e209);
             let _e256 = abs((_e209 - _e213));
             let _e262 = (1.25f - (select(_e256, _e255, ((_e255 < _e256) || (_e256 != _e256))) / _e214));
-            let _e264 = select(0f, _e262, (_e262 > 0f));
-            let _e266 = select(1f, _e264, (_e264 < 1f));
+            let _e266 = select(0f, select(1f, _e262, (_e262 < 1f)), (_e262 > 0f));
             let _e267 = (((((((f32(bitcast<i32>(_e117)) + 0.5f) / _e35) * 2f) - 1f) * _e100) * _e125) - _e102);
             let _e268 = ((_e110 * _e125) - _e111);
             let _e274 = sqrt((((_e267 * _e267) + (_e268 * _e268)) + (_e206 * _e206)));
@@ -166,17 +162,13 @@ fn function_() {
             }
             let _e326 = phi_722_;
             let _e343 = ((_e227 * _e253) + 0.01f);
-            let _e345 = select(0f, _e343, (_e343 > 0f));
-            let _e347 = select(1f, _e345, (_e345 < 1f));
+            let _e347 = select(0f, select(1f, _e343, (_e343 < 1f)), (_e343 > 0f));
             let _e364 = ((_e253 * _e240) + 0.01f);
-            let _e366 = select(0f, _e364, (_e364 > 0f));
-            let _e368 = select(1f, _e366, (_e366 < 1f));
+            let _e368 = select(0f, select(1f, _e364, (_e364 < 1f)), (_e364 > 0f));
             let _e388 = ((_e240 * _e266) + 0.01f);
-            let _e390 = select(0f, _e388, (_e388 > 0f));
-            let _e392 = select(1f, _e390, (_e390 < 1f));
+            let _e392 = select(0f, select(1f, _e388, (_e388 < 1f)), (_e388 > 0f));
             let _e409 = ((_e266 * _e227) + 0.01f);
-            let _e411 = select(0f, _e409, (_e409 > 0f));
-            let _e413 = select(1f, _e411, (_e411 < 1f));
+            let _e413 = select(0f, select(1f, _e409, (_e409 < 1f)), (_e409 > 0f));
             let _e417 = ((((((_e281.y * _e311.z) - (_e311.y * _e281.z)) * _e347) + (((_e311.y * _e296.z) - (_e296.y * _e311.z)) * _e368)) + (((_e296.y * _e326.z) - (_e326.y * _e296.z)) * _e392)) + (((_e326.y * _e281.z) - (_e281.y * _e326.z)) * _e413));
             let _e418 = ((((((_e281.z * _e311.x) - (_e311.z * _e281.x)) * _e347) + (((_e311.z * _e296.x) - (_e296.z * _e311.x)) * _e368)) + (((_e296.z * _e326.x) - (_e326.z * _e296.x)) * _e392)) + (((_e326.z * _e281.x) - (_e281.z * _e326.x)) * _e413));
             let _e419 = ((((((_e281.x * _e311.y) - (_e311.x * _e281.y)) * _e347) + (((_e311.x * _e296.y) - (_e296.x * _e311.y)) * _e368)) + (((_e296.x * _e326.y) - (_e326.x * _e296.y)) * _e392)) + (((_e326.x * _e281.y) - (_e281.x * _e326.y)) * _e413));
@@ -192,26 +184,24 @@ fn function_() {
             let _e442 = (_e432.x / _e441);
             let _e443 = (_e432.y / _e441);
             if (_e436 < 0f) {
-                phi_924_ = vec2<f32>(((1f - abs(_e443)) * select(1f, -1f, (_e442 < 0f))), ((1f - abs(_e442)) * select(1f, -1f, (_e443 < 0f))));
+                phi_926_ = vec2<f32>(((1f - abs(_e443)) * select(1f, -1f, (_e442 < 0f))), ((1f - abs(_e442)) * select(1f, -1f, (_e443 < 0f))));
             } else {
-                phi_924_ = vec2<f32>(_e442, _e443);
+                phi_926_ = vec2<f32>(_e442, _e443);
             }
-            let _e458 = phi_924_;
+            let _e458 = phi_926_;
             if (_e458.x != _e458.x) {
-                phi_940_ = 0f;
+                phi_942_ = 0f;
             } else {
-                let _e462 = select(-1f, _e458.x, (_e458.x > -1f));
-                phi_940_ = select(1f, _e462, (_e462 < 1f));
+                phi_942_ = select(-1f, select(1f, _e458.x, (_e458.x < 1f)), (_e458.x > -1f));
             }
-            let _e466 = phi_940_;
+            let _e466 = phi_942_;
             let _e471 = ((_e466 * 127f) + (0.5f * select(1f, -1f, (_e466 < 0f))));
             if (_e458.y != _e458.y) {
-                phi_975_ = 0f;
+                phi_977_ = 0f;
             } else {
-                let _e484 = select(-1f, _e458.y, (_e458.y > -1f));
-                phi_975_ = select(1f, _e484, (_e484 < 1f));
+                phi_977_ = select(-1f, select(1f, _e458.y, (_e458.y < 1f)), (_e458.y > -1f));
             }
-            let _e488 = phi_975_;
+            let _e488 = phi_977_;
             let _e493 = ((_e488 * 127f) + (0.5f * select(1f, -1f, (_e488 < 0f))));
             normals.member[((_e30.y * _e40) + _e30.x)] = ((bitcast<u32>(select(0i, select(select(i32(_e471), i32(-2147483648), (_e471 < -2147483600f)), 2147483647i, (_e471 > 2147483500f)), (_e471 == _e471))) & 255u) | ((bitcast<u32>(select(0i, select(select(i32(_e493), i32(-2147483648), (_e493 < -2147483600f)), 2147483647i, (_e493 > 2147483500f)), (_e493 == _e493))) & 255u) << bitcast<u32>(8i)));
         }

@@ -331,26 +331,22 @@ fn function_() {
                         let _e1352 = depth.member[((select(_e1341, _e1345, (_e1345 < _e1341)) * _e56) + select(_e1340, _e1342, (_e1342 < _e1340)))];
                         let _e1356 = params.member.member.member_3;
                         let _e1360 = select(_e1356, _e1352, select(false, (_e1352 < _e1356), (_e1352 > 0f)));
-                        let _e1362 = select(0f, _e1360, (_e1360 > 0f));
                         let _e1365 = local_18[1u][0u];
                         let _e1366 = local_18[1u][1u];
                         let _e1375 = depth.member[((select(_e1366, _e1345, (_e1345 < _e1366)) * _e56) + select(_e1365, _e1342, (_e1342 < _e1365)))];
                         let _e1379 = select(_e1356, _e1375, select(false, (_e1375 < _e1356), (_e1375 > 0f)));
-                        let _e1381 = select(0f, _e1379, (_e1379 > 0f));
                         let _e1384 = local_18[2u][0u];
                         let _e1385 = local_18[2u][1u];
                         let _e1394 = depth.member[((select(_e1385, _e1345, (_e1345 < _e1385)) * _e56) + select(_e1384, _e1342, (_e1342 < _e1384)))];
                         let _e1398 = select(_e1356, _e1394, select(false, (_e1394 < _e1356), (_e1394 > 0f)));
-                        let _e1400 = select(0f, _e1398, (_e1398 > 0f));
                         let _e1403 = local_18[3u][0u];
                         let _e1404 = local_18[3u][1u];
                         let _e1413 = depth.member[((select(_e1404, _e1345, (_e1345 < _e1404)) * _e56) + select(_e1403, _e1342, (_e1342 < _e1403)))];
                         let _e1417 = select(_e1356, _e1413, select(false, (_e1413 < _e1356), (_e1413 > 0f)));
-                        let _e1419 = select(0f, _e1417, (_e1417 > 0f));
-                        local_19[0u] = select(65504f, _e1362, (_e1362 < 65504f));
-                        local_19[1u] = select(65504f, _e1381, (_e1381 < 65504f));
-                        local_19[2u] = select(65504f, _e1400, (_e1400 < 65504f));
-                        local_19[3u] = select(65504f, _e1419, (_e1419 < 65504f));
+                        local_19[0u] = select(0f, select(65504f, _e1360, (_e1360 < 65504f)), (_e1360 > 0f));
+                        local_19[1u] = select(0f, select(65504f, _e1379, (_e1379 < 65504f)), (_e1379 > 0f));
+                        local_19[2u] = select(0f, select(65504f, _e1398, (_e1398 < 65504f)), (_e1398 > 0f));
+                        local_19[3u] = select(0f, select(65504f, _e1417, (_e1417 < 65504f)), (_e1417 > 0f));
                         phi_457_ = 0u;
                         loop {
                             let _e1427 = phi_457_;
@@ -432,8 +428,7 @@ fn function_() {
                                     phi_598_ = select(0f, 1f, (_e1497 <= _e1456));
                                 } else {
                                     let _e1499 = ((_e1497 * -(_e1464)) + (_e1456 * _e1464));
-                                    let _e1501 = select(0f, _e1499, (_e1499 > 0f));
-                                    phi_598_ = select(1f, _e1501, (_e1501 < 1f));
+                                    phi_598_ = select(0f, select(1f, _e1499, (_e1499 < 1f)), (_e1499 > 0f));
                                 }
                                 let _e1507 = phi_598_;
                                 if _e1494 {
@@ -699,8 +694,7 @@ fn function_() {
                                             phi_1051_ = select(0f, 1f, (_e300 <= _e182));
                                         } else {
                                             let _e302 = ((_e300 * _e191) + _e192);
-                                            let _e304 = select(0f, _e302, (_e302 > 0f));
-                                            phi_1051_ = select(1f, _e304, (_e304 < 1f));
+                                            phi_1051_ = select(0f, select(1f, _e302, (_e302 < 1f)), (_e302 > 0f));
                                         }
                                         let _e310 = phi_1051_;
                                         if _e297 {
@@ -834,8 +828,7 @@ fn function_() {
                                     phi_1229_ = select(0f, 1f, (_e401 <= _e182));
                                 } else {
                                     let _e403 = ((_e401 * _e191) + _e192);
-                                    let _e405 = select(0f, _e403, (_e403 > 0f));
-                                    phi_1229_ = select(1f, _e405, (_e405 < 1f));
+                                    phi_1229_ = select(0f, select(1f, _e403, (_e403 < 1f)), (_e403 > 0f));
                                 }
                                 let _e411 = phi_1229_;
                                 if _e398 {
@@ -956,8 +949,7 @@ fn function_() {
                                             phi_1464_ = select(0f, 1f, (_e544 <= _e182));
                                         } else {
                                             let _e546 = ((_e544 * _e191) + _e192);
-                                            let _e548 = select(0f, _e546, (_e546 > 0f));
-                                            phi_1464_ = select(1f, _e548, (_e548 < 1f));
+                                            phi_1464_ = select(0f, select(1f, _e546, (_e546 < 1f)), (_e546 > 0f));
                                         }
                                         let _e554 = phi_1464_;
                                         if _e541 {
@@ -1089,8 +1081,7 @@ fn function_() {
                                     phi_1642_ = select(0f, 1f, (_e643 <= _e182));
                                 } else {
                                     let _e645 = ((_e643 * _e191) + _e192);
-                                    let _e647 = select(0f, _e645, (_e645 > 0f));
-                                    phi_1642_ = select(1f, _e647, (_e647 < 1f));
+                                    phi_1642_ = select(0f, select(1f, _e645, (_e645 < 1f)), (_e645 > 0f));
                                 }
                                 let _e653 = phi_1642_;
                                 if _e640 {
@@ -1211,8 +1202,7 @@ fn function_() {
                                             phi_1877_ = select(0f, 1f, (_e786 <= _e182));
                                         } else {
                                             let _e788 = ((_e786 * _e191) + _e192);
-                                            let _e790 = select(0f, _e788, (_e788 > 0f));
-                                            phi_1877_ = select(1f, _e790, (_e790 < 1f));
+                                            phi_1877_ = select(0f, select(1f, _e788, (_e788 < 1f)), (_e788 > 0f));
                                         }
                                         let _e796 = phi_1877_;
                                         if _e783 {
@@ -1344,8 +1334,7 @@ fn function_() {
                                     phi_2055_ = select(0f, 1f, (_e885 <= _e182));
                                 } else {
                                     let _e887 = ((_e885 * _e191) + _e192);
-                                    let _e889 = select(0f, _e887, (_e887 > 0f));
-                                    phi_2055_ = select(1f, _e889, (_e889 < 1f));
+                                    phi_2055_ = select(0f, select(1f, _e887, (_e887 < 1f)), (_e887 > 0f));
                                 }
                                 let _e895 = phi_2055_;
                                 if _e882 {
@@ -1462,8 +1451,7 @@ fn function_() {
                                             phi_2291_ = select(0f, 1f, (_e1024 <= _e182));
                                         } else {
                                             let _e1026 = ((_e1024 * _e191) + _e192);
-                                            let _e1028 = select(0f, _e1026, (_e1026 > 0f));
-                                            phi_2291_ = select(1f, _e1028, (_e1028 < 1f));
+                                            phi_2291_ = select(0f, select(1f, _e1026, (_e1026 < 1f)), (_e1026 > 0f));
                                         }
                                         let _e1034 = phi_2291_;
                                         if _e1021 {
@@ -1595,8 +1583,7 @@ fn function_() {
                                     phi_2469_ = select(0f, 1f, (_e1123 <= _e182));
                                 } else {
                                     let _e1125 = ((_e1123 * _e191) + _e192);
-                                    let _e1127 = select(0f, _e1125, (_e1125 > 0f));
-                                    phi_2469_ = select(1f, _e1127, (_e1127 < 1f));
+                                    phi_2469_ = select(0f, select(1f, _e1125, (_e1125 < 1f)), (_e1125 > 0f));
                                 }
                                 let _e1133 = phi_2469_;
                                 if _e1120 {
@@ -1716,8 +1703,7 @@ fn function_() {
                                     phi_2652_ = select(0f, 1f, (_e1233 <= _e182));
                                 } else {
                                     let _e1235 = ((_e1233 * _e191) + _e192);
-                                    let _e1237 = select(0f, _e1235, (_e1235 > 0f));
-                                    phi_2652_ = select(1f, _e1237, (_e1237 < 1f));
+                                    phi_2652_ = select(0f, select(1f, _e1235, (_e1235 < 1f)), (_e1235 > 0f));
                                 }
                                 let _e1243 = phi_2652_;
                                 if _e1230 {

@@ -34,9 +34,9 @@ var engine_normals: texture_2d<f32>;
 
 fn function_() {
     var phi_91_: bool;
-    var phi_173_: vec2<f32>;
-    var phi_189_: f32;
-    var phi_224_: f32;
+    var phi_175_: vec2<f32>;
+    var phi_191_: f32;
+    var phi_226_: f32;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -66,26 +66,24 @@ fn function_() {
                 let _e95 = (_e87 / _e94);
                 let _e96 = (_e88 / _e94);
                 if (_e89 < 0f) {
-                    phi_173_ = vec2<f32>(((1f - abs(_e96)) * select(1f, -1f, (_e95 < 0f))), ((1f - abs(_e95)) * select(1f, -1f, (_e96 < 0f))));
+                    phi_175_ = vec2<f32>(((1f - abs(_e96)) * select(1f, -1f, (_e95 < 0f))), ((1f - abs(_e95)) * select(1f, -1f, (_e96 < 0f))));
                 } else {
-                    phi_173_ = vec2<f32>(_e95, _e96);
+                    phi_175_ = vec2<f32>(_e95, _e96);
                 }
-                let _e111 = phi_173_;
+                let _e111 = phi_175_;
                 if (_e111.x != _e111.x) {
-                    phi_189_ = 0f;
+                    phi_191_ = 0f;
                 } else {
-                    let _e115 = select(-1f, _e111.x, (_e111.x > -1f));
-                    phi_189_ = select(1f, _e115, (_e115 < 1f));
+                    phi_191_ = select(-1f, select(1f, _e111.x, (_e111.x < 1f)), (_e111.x > -1f));
                 }
-                let _e119 = phi_189_;
+                let _e119 = phi_191_;
                 let _e124 = ((_e119 * 127f) + (0.5f * select(1f, -1f, (_e119 < 0f))));
                 if (_e111.y != _e111.y) {
-                    phi_224_ = 0f;
+                    phi_226_ = 0f;
                 } else {
-                    let _e137 = select(-1f, _e111.y, (_e111.y > -1f));
-                    phi_224_ = select(1f, _e137, (_e137 < 1f));
+                    phi_226_ = select(-1f, select(1f, _e111.y, (_e111.y < 1f)), (_e111.y > -1f));
                 }
-                let _e141 = phi_224_;
+                let _e141 = phi_226_;
                 let _e146 = ((_e141 * 127f) + (0.5f * select(1f, -1f, (_e141 < 0f))));
                 let _e160 = ((_e24.y * _e38) + _e24.x);
                 if (_e160 < arrayLength((&normals.member))) {

@@ -168,36 +168,24 @@ fn function_() {
                     let _e193 = abs(_e183);
                     let _e194 = abs((_e183 + _e188));
                     let _e200 = (1.25f - (select(_e194, _e193, ((_e193 < _e194) || (_e194 != _e194))) / _e191));
-                    let _e202 = select(0f, _e200, (_e200 > 0f));
-                    let _e204 = select(1f, _e202, (_e202 < 1f));
+                    let _e204 = select(0f, select(1f, _e200, (_e200 < 1f)), (_e200 > 0f));
                     let _e206 = abs(_e184);
                     let _e207 = abs((_e184 - _e188));
                     let _e213 = (1.25f - (select(_e207, _e206, ((_e206 < _e207) || (_e207 != _e207))) / _e191));
-                    let _e215 = select(0f, _e213, (_e213 > 0f));
-                    let _e217 = select(1f, _e215, (_e215 < 1f));
+                    let _e217 = select(0f, select(1f, _e213, (_e213 < 1f)), (_e213 > 0f));
                     let _e219 = abs(_e185);
                     let _e220 = abs((_e185 + _e190));
                     let _e226 = (1.25f - (select(_e220, _e219, ((_e219 < _e220) || (_e220 != _e220))) / _e191));
-                    let _e228 = select(0f, _e226, (_e226 > 0f));
-                    let _e230 = select(1f, _e228, (_e228 < 1f));
+                    let _e230 = select(0f, select(1f, _e226, (_e226 < 1f)), (_e226 > 0f));
                     let _e232 = abs(_e186);
                     let _e233 = abs((_e186 - _e190));
                     let _e239 = (1.25f - (select(_e233, _e232, ((_e232 < _e233) || (_e233 != _e233))) / _e191));
-                    let _e241 = select(0f, _e239, (_e239 > 0f));
-                    let _e243 = select(1f, _e241, (_e241 < 1f));
-                    let _e245 = select(0f, _e204, (_e204 > 0f));
-                    let _e249 = round((select(1f, _e245, (_e245 < 1f)) * 2.9f));
-                    let _e251 = select(0f, _e249, (_e249 > 0f));
-                    let _e260 = select(0f, _e217, (_e217 > 0f));
-                    let _e264 = round((select(1f, _e260, (_e260 < 1f)) * 2.9f));
-                    let _e266 = select(0f, _e264, (_e264 > 0f));
-                    let _e276 = select(0f, _e230, (_e230 > 0f));
-                    let _e280 = round((select(1f, _e276, (_e276 < 1f)) * 2.9f));
-                    let _e282 = select(0f, _e280, (_e280 > 0f));
-                    let _e292 = select(0f, _e243, (_e243 > 0f));
-                    let _e296 = round((select(1f, _e292, (_e292 < 1f)) * 2.9f));
-                    let _e298 = select(0f, _e296, (_e296 > 0f));
-                    let _e305 = ((((64u * (bitcast<u32>((floor(select(3f, _e251, (_e251 < 3f))) + 8388608f)) - 1258291200u)) + (16u * (bitcast<u32>((floor(select(3f, _e266, (_e266 < 3f))) + 8388608f)) - 1258291200u))) + (4u * (bitcast<u32>((floor(select(3f, _e282, (_e282 < 3f))) + 8388608f)) - 1258291200u))) + (bitcast<u32>((floor(select(3f, _e298, (_e298 < 3f))) + 8388608f)) - 1258291200u));
+                    let _e243 = select(0f, select(1f, _e239, (_e239 < 1f)), (_e239 > 0f));
+                    let _e249 = round((select(0f, select(1f, _e204, (_e204 < 1f)), (_e204 > 0f)) * 2.9f));
+                    let _e264 = round((select(0f, select(1f, _e217, (_e217 < 1f)), (_e217 > 0f)) * 2.9f));
+                    let _e280 = round((select(0f, select(1f, _e230, (_e230 < 1f)), (_e230 > 0f)) * 2.9f));
+                    let _e296 = round((select(0f, select(1f, _e243, (_e243 < 1f)), (_e243 > 0f)) * 2.9f));
+                    let _e305 = ((((64u * (bitcast<u32>((floor(select(0f, select(3f, _e249, (_e249 < 3f)), (_e249 > 0f))) + 8388608f)) - 1258291200u)) + (16u * (bitcast<u32>((floor(select(0f, select(3f, _e264, (_e264 < 3f)), (_e264 > 0f))) + 8388608f)) - 1258291200u))) + (4u * (bitcast<u32>((floor(select(0f, select(3f, _e280, (_e280 < 3f)), (_e280 > 0f))) + 8388608f)) - 1258291200u))) + (bitcast<u32>((floor(select(0f, select(3f, _e296, (_e296 < 3f)), (_e296 > 0f))) + 8388608f)) - 1258291200u));
                     if _e106 {
                         let _e318 = params.member.member.member_1[0u];
                         let _e320 = ((((((f32(_e108) + 0.5f) / _e75) * 2f) - 1f) * _e318) * _e99);
@@ -345,11 +333,9 @@ fn function_() {
                                         if _e691 {
                                             let _e692 = (_e672 * _e75);
                                             let _e695 = f32(bitcast<i32>((_e80 - 1u)));
-                                            let _e697 = select(0f, _e692, (_e692 > 0f));
                                             let _e704 = (_e681 * _e85);
                                             let _e707 = f32(bitcast<i32>((_e90 - 1u)));
-                                            let _e709 = select(0f, _e704, (_e704 > 0f));
-                                            let _e720 = depth.member[(((bitcast<u32>((floor(select(_e707, _e709, (_e709 < _e707))) + 8388608f)) - 1258291200u) * _e80) + (bitcast<u32>((floor(select(_e695, _e697, (_e697 < _e695))) + 8388608f)) - 1258291200u))];
+                                            let _e720 = depth.member[(((bitcast<u32>((floor(select(0f, select(_e707, _e704, (_e704 < _e707)), (_e704 > 0f))) + 8388608f)) - 1258291200u) * _e80) + (bitcast<u32>((floor(select(0f, select(_e695, _e692, (_e692 < _e695)), (_e692 > 0f))) + 8388608f)) - 1258291200u))];
                                             let _e724 = select(_e103, _e720, select(false, (_e720 < _e103), (_e720 > 0f)));
                                             let _e727 = (((_e672 * 2f) - 1f) * _e669);
                                             let _e731 = (((_e681 * -2f) + 1f) * _e678);
@@ -357,14 +343,10 @@ fn function_() {
                                             let _e734 = (_e661 - (_e731 * _e724));
                                             let _e735 = (_e663 - _e724);
                                             let _e741 = sqrt((((_e733 * _e733) + (_e734 * _e734)) + (_e735 * _e735)));
-                                            let _e743 = select(0f, _e672, (_e672 > 0f));
-                                            let _e746 = (select(1f, _e743, (_e743 < 1f)) * _e75);
-                                            let _e748 = select(0f, _e746, (_e746 > 0f));
-                                            let _e754 = (bitcast<u32>((floor(select(_e695, _e748, (_e748 < _e695))) + 8388608f)) - 1258291200u);
-                                            let _e756 = select(0f, _e681, (_e681 > 0f));
-                                            let _e759 = (select(1f, _e756, (_e756 < 1f)) * _e85);
-                                            let _e761 = select(0f, _e759, (_e759 > 0f));
-                                            let _e767 = (bitcast<u32>((floor(select(_e707, _e761, (_e761 < _e707))) + 8388608f)) - 1258291200u);
+                                            let _e746 = (select(0f, select(1f, _e672, (_e672 < 1f)), (_e672 > 0f)) * _e75);
+                                            let _e754 = (bitcast<u32>((floor(select(0f, select(_e695, _e746, (_e746 < _e695)), (_e746 > 0f))) + 8388608f)) - 1258291200u);
+                                            let _e759 = (select(0f, select(1f, _e681, (_e681 < 1f)), (_e681 > 0f)) * _e85);
+                                            let _e767 = (bitcast<u32>((floor(select(0f, select(_e707, _e759, (_e759 < _e707)), (_e759 > 0f))) + 8388608f)) - 1258291200u);
                                             let _e790 = normals.member[((_e767 * _e80) + _e754)];
                                             let _e793 = f32(bitcast<i32>((_e790 & 255u)));
                                             let _e797 = (select(_e793, (_e793 - 256f), (_e793 >= 128f)) * 0.007874016f);
@@ -482,8 +464,7 @@ fn function_() {
                                     phi_1647_ = 0f;
                                 } else {
                                     let _e944 = (select(_e935, select(_e926, _e924, _e922), _e933) / _e624);
-                                    let _e946 = select(0f, _e944, (_e944 > 0f));
-                                    phi_1647_ = select(1f, _e946, (_e946 < 1f));
+                                    phi_1647_ = select(0f, select(1f, _e944, (_e944 < 1f)), (_e944 > 0f));
                                 }
                                 let _e950 = phi_1647_;
                                 phi_976_ = (_e551 + 1u);
@@ -510,8 +491,7 @@ fn function_() {
                         let _e967 = params.member.member_2;
                         let _e968 = pow((_e963 / f32(_e544)), _e967);
                         let _e969 = (_e968 * 0.6666667f);
-                        let _e971 = select(0f, _e969, (_e969 > 0f));
-                        phi_1712_ = type_29(_e968, (bitcast<u32>((floor(((select(1f, _e971, (_e971 < 1f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u), _e529.member);
+                        phi_1712_ = type_29(_e968, (bitcast<u32>((floor(((select(0f, select(1f, _e969, (_e969 < 1f)), (_e969 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u), _e529.member);
                     } else {
                         phi_1712_ = type_29(1f, (bitcast<u32>((floor(170.5f) + 8388608f)) - 1258291200u), _e529.member);
                     }

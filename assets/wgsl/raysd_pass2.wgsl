@@ -384,16 +384,12 @@ fn function_() {
                                     let _e948 = (-0.5f / ((_e846.member_1.member_4.z + (_e846.member_1.member_7.z * _e896)) + (_e846.member_1.member_8.z * _e897)));
                                     let _e951 = (((((_e846.member_1.member_4.x + (_e846.member_1.member_7.x * _e896)) + (_e846.member_1.member_8.x * _e897)) * _e948) / _e658) + 0.5f);
                                     let _e954 = (0.5f - ((((_e846.member_1.member_4.y + (_e846.member_1.member_7.y * _e896)) + (_e846.member_1.member_8.y * _e897)) * _e948) / _e666));
-                                    let _e963 = select(0f, _e951, (_e951 > 0f));
-                                    let _e966 = (select(1f, _e963, (_e963 < 1f)) * _e580);
+                                    let _e966 = (select(0f, select(1f, _e951, (_e951 < 1f)), (_e951 > 0f)) * _e580);
                                     let _e969 = f32(bitcast<i32>((_e585 - 1u)));
-                                    let _e971 = select(0f, _e966, (_e966 > 0f));
-                                    let _e977 = (bitcast<u32>((floor(select(_e969, _e971, (_e971 < _e969))) + 8388608f)) - 1258291200u);
-                                    let _e979 = select(0f, _e954, (_e954 > 0f));
-                                    let _e982 = (select(1f, _e979, (_e979 < 1f)) * _e593);
+                                    let _e977 = (bitcast<u32>((floor(select(0f, select(_e969, _e966, (_e966 < _e969)), (_e966 > 0f))) + 8388608f)) - 1258291200u);
+                                    let _e982 = (select(0f, select(1f, _e954, (_e954 < 1f)), (_e954 > 0f)) * _e593);
                                     let _e985 = f32(bitcast<i32>((_e598 - 1u)));
-                                    let _e987 = select(0f, _e982, (_e982 > 0f));
-                                    let _e993 = (bitcast<u32>((floor(select(_e985, _e987, (_e987 < _e985))) + 8388608f)) - 1258291200u);
+                                    let _e993 = (bitcast<u32>((floor(select(0f, select(_e985, _e982, (_e982 < _e985)), (_e982 > 0f))) + 8388608f)) - 1258291200u);
                                     let _e1000 = ((_e846.member_1.member_1.x - _e951) * _e580);
                                     let _e1001 = ((_e846.member_1.member_1.y - _e954) * _e593);
                                     let _e1007 = ((_e993 * _e585) + _e977);
@@ -408,18 +404,14 @@ fn function_() {
                                     if _e887 {
                                         let _e1049 = (((_e1033 * _e1033) + (_e1034 * _e1034)) + (_e1035 * _e1035));
                                         let _e1061 = (((((_e846.member_1.member_5.x * _e1033) + (_e846.member_1.member_5.y * _e1034)) + (_e846.member_1.member_5.z * _e1035)) / sqrt(_e1049)) - 0.1f);
-                                        let _e1063 = select(0f, _e1061, (_e1061 > 0f));
                                         let _e1068 = (1f - (_e1049 / (_e634 * _e634)));
-                                        let _e1070 = select(0f, _e1068, (_e1068 > 0f));
-                                        let _e1075 = ((select(1f, _e1063, (_e1063 < 1f)) * select(1f, _e1070, (_e1070 < 1f))) / _e909);
-                                        let _e1077 = select(0f, _e1075, (_e1075 > 0f));
-                                        phi_1533_ = select(0f, select(1f, _e1077, (_e1077 < 1f)), (_e1049 > 0f));
+                                        let _e1075 = ((select(0f, select(1f, _e1061, (_e1061 < 1f)), (_e1061 > 0f)) * select(0f, select(1f, _e1068, (_e1068 < 1f)), (_e1068 > 0f))) / _e909);
+                                        phi_1533_ = select(0f, select(0f, select(1f, _e1075, (_e1075 < 1f)), (_e1075 > 0f)), (_e1049 > 0f));
                                     } else {
                                         let _e1086 = frame.member[0u].member_1.member.member_3;
                                         let _e1092 = (_e904 - select(_e1044, _e923, ((_e923 > _e1044) || (_e1044 != _e1044))));
                                         let _e1099 = ((_e1044 - (_e846.member_1.member_2 * (1f + _e1086))) * (1f / _e904));
-                                        let _e1101 = select(0f, _e1099, (_e1099 > 0f));
-                                        phi_1533_ = ((select(0f, _e1092, ((_e1092 > 0f) || false)) + (select(1f, _e1101, (_e1101 < 1f)) * (_e904 - _e923))) * (0.5f / _e904));
+                                        phi_1533_ = ((select(0f, _e1092, ((_e1092 > 0f) || false)) + (select(0f, select(1f, _e1099, (_e1099 < 1f)), (_e1099 > 0f)) * (_e904 - _e923))) * (0.5f / _e904));
                                     }
                                     let _e1110 = phi_1533_;
                                     let _e1115 = frame.member[0u].member_1.member_9;
@@ -445,18 +437,14 @@ fn function_() {
                                         if _e887 {
                                             let _e1165 = (((_e1153 * _e1153) + (_e1154 * _e1154)) + (_e1155 * _e1155));
                                             let _e1177 = (((((_e846.member_1.member_5.x * _e1153) + (_e846.member_1.member_5.y * _e1154)) + (_e846.member_1.member_5.z * _e1155)) / sqrt(_e1165)) - 0.1f);
-                                            let _e1179 = select(0f, _e1177, (_e1177 > 0f));
                                             let _e1184 = (1f - (_e1165 / (_e634 * _e634)));
-                                            let _e1186 = select(0f, _e1184, (_e1184 > 0f));
-                                            let _e1191 = ((select(1f, _e1179, (_e1179 < 1f)) * select(1f, _e1186, (_e1186 < 1f))) / _e909);
-                                            let _e1193 = select(0f, _e1191, (_e1191 > 0f));
-                                            phi_1765_ = select(0f, select(1f, _e1193, (_e1193 < 1f)), (_e1165 > 0f));
+                                            let _e1191 = ((select(0f, select(1f, _e1177, (_e1177 < 1f)), (_e1177 > 0f)) * select(0f, select(1f, _e1184, (_e1184 < 1f)), (_e1184 > 0f))) / _e909);
+                                            phi_1765_ = select(0f, select(0f, select(1f, _e1191, (_e1191 < 1f)), (_e1191 > 0f)), (_e1165 > 0f));
                                         } else {
                                             let _e1202 = frame.member[0u].member_1.member.member_3;
                                             let _e1208 = (_e904 - select(_e1160, _e923, ((_e923 > _e1160) || (_e1160 != _e1160))));
                                             let _e1215 = ((_e1160 - (_e846.member_1.member_2 * (1f + _e1202))) * (1f / _e904));
-                                            let _e1217 = select(0f, _e1215, (_e1215 > 0f));
-                                            phi_1765_ = ((select(0f, _e1208, ((_e1208 > 0f) || false)) + (select(1f, _e1217, (_e1217 < 1f)) * (_e904 - _e923))) * (0.5f / _e904));
+                                            phi_1765_ = ((select(0f, _e1208, ((_e1208 > 0f) || false)) + (select(0f, select(1f, _e1215, (_e1215 < 1f)), (_e1215 > 0f)) * (_e904 - _e923))) * (0.5f / _e904));
                                         }
                                         let _e1226 = phi_1765_;
                                         if _e887 {
@@ -484,12 +472,10 @@ fn function_() {
                                     let _e1272 = (_e1256 + _e1271);
                                     let _e1278 = (floor((_e951 * _e1263)) + _e1270);
                                     let _e1279 = f32((_e1272 - 1u));
-                                    let _e1281 = select(0f, _e1278, (_e1278 > 0f));
-                                    let _e1283 = select(_e1279, _e1281, (_e1281 < _e1279));
+                                    let _e1283 = select(0f, select(_e1279, _e1278, (_e1278 < _e1279)), (_e1278 > 0f));
                                     let _e1286 = (floor((_e954 * _e1264)) + _e1270);
                                     let _e1287 = f32(((_e1262 + _e1271) - 1u));
-                                    let _e1289 = select(0f, _e1286, (_e1286 > 0f));
-                                    let _e1291 = select(_e1287, _e1289, (_e1289 < _e1287));
+                                    let _e1291 = select(0f, select(_e1287, _e1286, (_e1286 < _e1287)), (_e1286 > 0f));
                                     let _e1296 = select(select(u32(_e1283), 0u, (_e1283 < 0f)), 4294967295u, (_e1283 > 4294967000f));
                                     let _e1301 = select(select(u32(_e1291), 0u, (_e1291 < 0f)), 4294967295u, (_e1291 > 4294967000f));
                                     let _e1304 = bitcast<i32>(_e1269);
@@ -563,18 +549,14 @@ fn function_() {
                                             if _e887 {
                                                 let _e1402 = (((_e1390 * _e1390) + (_e1391 * _e1391)) + (_e1392 * _e1392));
                                                 let _e1414 = (((((_e846.member_1.member_5.x * _e1390) + (_e846.member_1.member_5.y * _e1391)) + (_e846.member_1.member_5.z * _e1392)) / sqrt(_e1402)) - 0.1f);
-                                                let _e1416 = select(0f, _e1414, (_e1414 > 0f));
                                                 let _e1421 = (1f - (_e1402 / (_e634 * _e634)));
-                                                let _e1423 = select(0f, _e1421, (_e1421 > 0f));
-                                                let _e1428 = ((select(1f, _e1416, (_e1416 < 1f)) * select(1f, _e1423, (_e1423 < 1f))) / _e909);
-                                                let _e1430 = select(0f, _e1428, (_e1428 > 0f));
-                                                phi_2161_ = select(0f, select(1f, _e1430, (_e1430 < 1f)), (_e1402 > 0f));
+                                                let _e1428 = ((select(0f, select(1f, _e1414, (_e1414 < 1f)), (_e1414 > 0f)) * select(0f, select(1f, _e1421, (_e1421 < 1f)), (_e1421 > 0f))) / _e909);
+                                                phi_2161_ = select(0f, select(0f, select(1f, _e1428, (_e1428 < 1f)), (_e1428 > 0f)), (_e1402 > 0f));
                                             } else {
                                                 let _e1439 = frame.member[0u].member_1.member.member_3;
                                                 let _e1445 = (_e904 - select(_e1397, _e923, ((_e923 > _e1397) || (_e1397 != _e1397))));
                                                 let _e1452 = ((_e1397 - (_e846.member_1.member_2 * (1f + _e1439))) * (1f / _e904));
-                                                let _e1454 = select(0f, _e1452, (_e1452 > 0f));
-                                                phi_2161_ = ((select(0f, _e1445, ((_e1445 > 0f) || false)) + (select(1f, _e1454, (_e1454 < 1f)) * (_e904 - _e923))) * (0.5f / _e904));
+                                                phi_2161_ = ((select(0f, _e1445, ((_e1445 > 0f) || false)) + (select(0f, select(1f, _e1452, (_e1452 < 1f)), (_e1452 > 0f)) * (_e904 - _e923))) * (0.5f / _e904));
                                             }
                                             let _e1463 = phi_2161_;
                                             if _e887 {
@@ -645,10 +627,9 @@ fn function_() {
                             phi_2217_ = _e1512;
                         }
                         let _e1516 = phi_2217_;
-                        let _e1518 = select(0f, _e1516, (_e1516 > 0f));
                         let _e1526 = frame.member[0u].member_1.member.member_2;
                         let _e1529 = local_13;
-                        phi_2232_ = type_42(pow(select(1f, _e1518, (_e1518 < 1f)), _e1526), _e1529);
+                        phi_2232_ = type_42(pow(select(0f, select(1f, _e1516, (_e1516 < 1f)), (_e1516 > 0f)), _e1526), _e1529);
                     } else {
                         phi_2232_ = type_42();
                     }

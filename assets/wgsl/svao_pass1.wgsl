@@ -371,16 +371,12 @@ fn function_() {
                             let _e885 = (-0.5f / ((_e774.member_1.member_4.z + (_e774.member_1.member_7.z * _e834)) + (_e774.member_1.member_8.z * _e835)));
                             let _e888 = (((((_e774.member_1.member_4.x + (_e774.member_1.member_7.x * _e834)) + (_e774.member_1.member_8.x * _e835)) * _e885) / _e586) + 0.5f);
                             let _e891 = (0.5f - ((((_e774.member_1.member_4.y + (_e774.member_1.member_7.y * _e834)) + (_e774.member_1.member_8.y * _e835)) * _e885) / _e594));
-                            let _e900 = select(0f, _e888, (_e888 > 0f));
-                            let _e903 = (select(1f, _e900, (_e900 < 1f)) * _e518);
+                            let _e903 = (select(0f, select(1f, _e888, (_e888 < 1f)), (_e888 > 0f)) * _e518);
                             let _e906 = f32(bitcast<i32>((_e523 - 1u)));
-                            let _e908 = select(0f, _e903, (_e903 > 0f));
-                            let _e914 = (bitcast<u32>((floor(select(_e906, _e908, (_e908 < _e906))) + 8388608f)) - 1258291200u);
-                            let _e916 = select(0f, _e891, (_e891 > 0f));
-                            let _e919 = (select(1f, _e916, (_e916 < 1f)) * _e531);
+                            let _e914 = (bitcast<u32>((floor(select(0f, select(_e906, _e903, (_e903 < _e906)), (_e903 > 0f))) + 8388608f)) - 1258291200u);
+                            let _e919 = (select(0f, select(1f, _e891, (_e891 < 1f)), (_e891 > 0f)) * _e531);
                             let _e922 = f32(bitcast<i32>((_e536 - 1u)));
-                            let _e924 = select(0f, _e919, (_e919 > 0f));
-                            let _e930 = (bitcast<u32>((floor(select(_e922, _e924, (_e924 < _e922))) + 8388608f)) - 1258291200u);
+                            let _e930 = (bitcast<u32>((floor(select(0f, select(_e922, _e919, (_e919 < _e922)), (_e919 > 0f))) + 8388608f)) - 1258291200u);
                             let _e937 = ((_e774.member_1.member_1.x - _e888) * _e518);
                             let _e938 = ((_e774.member_1.member_1.y - _e891) * _e531);
                             let _e942 = sqrt(((_e937 * _e937) + (_e938 * _e938)));
@@ -397,18 +393,14 @@ fn function_() {
                             if _e825 {
                                 let _e993 = (((_e977 * _e977) + (_e978 * _e978)) + (_e979 * _e979));
                                 let _e1005 = (((((_e774.member_1.member_5.x * _e977) + (_e774.member_1.member_5.y * _e978)) + (_e774.member_1.member_5.z * _e979)) / sqrt(_e993)) - 0.1f);
-                                let _e1007 = select(0f, _e1005, (_e1005 > 0f));
                                 let _e1012 = (1f - (_e993 / (_e560 * _e560)));
-                                let _e1014 = select(0f, _e1012, (_e1012 > 0f));
-                                let _e1019 = ((select(1f, _e1007, (_e1007 < 1f)) * select(1f, _e1014, (_e1014 < 1f))) / _e847);
-                                let _e1021 = select(0f, _e1019, (_e1019 > 0f));
-                                phi_1455_ = select(0f, select(1f, _e1021, (_e1021 < 1f)), (_e993 > 0f));
+                                let _e1019 = ((select(0f, select(1f, _e1005, (_e1005 < 1f)), (_e1005 > 0f)) * select(0f, select(1f, _e1012, (_e1012 < 1f)), (_e1012 > 0f))) / _e847);
+                                phi_1455_ = select(0f, select(0f, select(1f, _e1019, (_e1019 < 1f)), (_e1019 > 0f)), (_e993 > 0f));
                             } else {
                                 let _e1030 = frame.member[0u].member_1.member.member_3;
                                 let _e1036 = (_e842 - select(_e988, _e861, ((_e861 > _e988) || (_e988 != _e988))));
                                 let _e1043 = ((_e988 - (_e774.member_1.member_2 * (1f + _e1030))) * (1f / _e842));
-                                let _e1045 = select(0f, _e1043, (_e1043 > 0f));
-                                phi_1455_ = ((select(0f, _e1036, ((_e1036 > 0f) || false)) + (select(1f, _e1045, (_e1045 < 1f)) * _e862)) * (0.5f / _e842));
+                                phi_1455_ = ((select(0f, _e1036, ((_e1036 > 0f) || false)) + (select(0f, select(1f, _e1043, (_e1043 < 1f)), (_e1043 > 0f)) * _e862)) * (0.5f / _e842));
                             }
                             let _e1053 = phi_1455_;
                             let _e1058 = frame.member[0u].member_1.member_9;
@@ -434,18 +426,14 @@ fn function_() {
                                 if _e825 {
                                     let _e1108 = (((_e1096 * _e1096) + (_e1097 * _e1097)) + (_e1098 * _e1098));
                                     let _e1120 = (((((_e774.member_1.member_5.x * _e1096) + (_e774.member_1.member_5.y * _e1097)) + (_e774.member_1.member_5.z * _e1098)) / sqrt(_e1108)) - 0.1f);
-                                    let _e1122 = select(0f, _e1120, (_e1120 > 0f));
                                     let _e1127 = (1f - (_e1108 / (_e560 * _e560)));
-                                    let _e1129 = select(0f, _e1127, (_e1127 > 0f));
-                                    let _e1134 = ((select(1f, _e1122, (_e1122 < 1f)) * select(1f, _e1129, (_e1129 < 1f))) / _e847);
-                                    let _e1136 = select(0f, _e1134, (_e1134 > 0f));
-                                    phi_1687_ = select(0f, select(1f, _e1136, (_e1136 < 1f)), (_e1108 > 0f));
+                                    let _e1134 = ((select(0f, select(1f, _e1120, (_e1120 < 1f)), (_e1120 > 0f)) * select(0f, select(1f, _e1127, (_e1127 < 1f)), (_e1127 > 0f))) / _e847);
+                                    phi_1687_ = select(0f, select(0f, select(1f, _e1134, (_e1134 < 1f)), (_e1134 > 0f)), (_e1108 > 0f));
                                 } else {
                                     let _e1145 = frame.member[0u].member_1.member.member_3;
                                     let _e1151 = (_e842 - select(_e1103, _e861, ((_e861 > _e1103) || (_e1103 != _e1103))));
                                     let _e1158 = ((_e1103 - (_e774.member_1.member_2 * (1f + _e1145))) * (1f / _e842));
-                                    let _e1160 = select(0f, _e1158, (_e1158 > 0f));
-                                    phi_1687_ = ((select(0f, _e1151, ((_e1151 > 0f) || false)) + (select(1f, _e1160, (_e1160 < 1f)) * _e862)) * (0.5f / _e842));
+                                    phi_1687_ = ((select(0f, _e1151, ((_e1151 > 0f) || false)) + (select(0f, select(1f, _e1158, (_e1158 < 1f)), (_e1158 > 0f)) * _e862)) * (0.5f / _e842));
                                 }
                                 let _e1168 = phi_1687_;
                                 if _e825 {
@@ -503,12 +491,10 @@ fn function_() {
                                     let _e1267 = (_e1251 + _e1266);
                                     let _e1273 = (floor((_e888 * f32(_e1251))) + _e1265);
                                     let _e1274 = f32((_e1267 - 1u));
-                                    let _e1276 = select(0f, _e1273, (_e1273 > 0f));
-                                    let _e1278 = select(_e1274, _e1276, (_e1276 < _e1274));
+                                    let _e1278 = select(0f, select(_e1274, _e1273, (_e1273 < _e1274)), (_e1273 > 0f));
                                     let _e1281 = (floor((_e891 * f32(_e1257))) + _e1265);
                                     let _e1282 = f32(((_e1257 + _e1266) - 1u));
-                                    let _e1284 = select(0f, _e1281, (_e1281 > 0f));
-                                    let _e1286 = select(_e1282, _e1284, (_e1284 < _e1282));
+                                    let _e1286 = select(0f, select(_e1282, _e1281, (_e1281 < _e1282)), (_e1281 > 0f));
                                     let _e1298 = ((select(select(u32(_e1286), 0u, (_e1286 < 0f)), 4294967295u, (_e1286 > 4294967000f)) * _e1267) + select(select(u32(_e1278), 0u, (_e1278 < 0f)), 4294967295u, (_e1278 > 4294967000f)));
                                     let _e1303 = frame.member[0u].member_1.member_2;
                                     if (_e1303 == 0u) {
@@ -609,14 +595,12 @@ fn function_() {
                             phi_2012_ = _e1373;
                         }
                         let _e1380 = phi_2012_;
-                        let _e1382 = select(0f, _e1380, (_e1380 > 0f));
                         let _e1390 = frame.member[0u].member_1.member.member_2;
                         let _e1393 = local_10;
-                        phi_2041_ = type_42(pow(select(1f, _e1382, (_e1382 < 1f)), _e1390), _e1393);
+                        phi_2041_ = type_42(pow(select(0f, select(1f, _e1380, (_e1380 < 1f)), (_e1380 > 0f)), _e1390), _e1393);
                     } else {
-                        let _e1396 = select(0f, _e1373, (_e1373 > 0f));
                         let _e1403 = local_11;
-                        phi_2041_ = type_42((round((select(1f, _e1396, (_e1396 < 1f)) * 255f)) * 0.003921569f), _e1403);
+                        phi_2041_ = type_42((round((select(0f, select(1f, _e1373, (_e1373 < 1f)), (_e1373 > 0f)) * 255f)) * 0.003921569f), _e1403);
                     }
                     let _e1406 = phi_2041_;
                     phi_2046_ = _e1406;

@@ -223,25 +223,20 @@ fn function_() {
                             let _e619 = (-0.5f / ((_e554.member_1.member_4.z + (_e554.member_1.member_7.z * _e573)) + (_e554.member_1.member_8.z * _e574)));
                             let _e622 = (((((_e554.member_1.member_4.x + (_e554.member_1.member_7.x * _e573)) + (_e554.member_1.member_8.x * _e574)) * _e619) / _e372) + 0.5f);
                             let _e625 = (0.5f - ((((_e554.member_1.member_4.y + (_e554.member_1.member_7.y * _e573)) + (_e554.member_1.member_8.y * _e574)) * _e619) / _e377));
-                            let _e627 = select(0f, _e622, (_e622 > 0f));
-                            let _e630 = (select(1f, _e627, (_e627 < 1f)) * _e316);
+                            let _e630 = (select(0f, select(1f, _e622, (_e622 < 1f)), (_e622 > 0f)) * _e316);
                             let _e633 = f32(bitcast<i32>((_e321 - 1u)));
-                            let _e635 = select(0f, _e630, (_e630 > 0f));
-                            let _e641 = (bitcast<u32>((floor(select(_e633, _e635, (_e635 < _e633))) + 8388608f)) - 1258291200u);
-                            let _e643 = select(0f, _e625, (_e625 > 0f));
-                            let _e646 = (select(1f, _e643, (_e643 < 1f)) * _e326);
+                            let _e641 = (bitcast<u32>((floor(select(0f, select(_e633, _e630, (_e630 < _e633)), (_e630 > 0f))) + 8388608f)) - 1258291200u);
+                            let _e646 = (select(0f, select(1f, _e625, (_e625 < 1f)), (_e625 > 0f)) * _e326);
                             let _e649 = f32(bitcast<i32>((_e331 - 1u)));
-                            let _e651 = select(0f, _e646, (_e646 > 0f));
-                            let _e657 = (bitcast<u32>((floor(select(_e649, _e651, (_e651 < _e649))) + 8388608f)) - 1258291200u);
+                            let _e657 = (bitcast<u32>((floor(select(0f, select(_e649, _e646, (_e646 < _e649)), (_e646 > 0f))) + 8388608f)) - 1258291200u);
                             let _e668 = depth.member[((_e657 * _e321) + _e641)];
                             let _e682 = select(_e396, _e668, select(false, (_e668 < _e396), (_e668 > 0f)));
                             let _e703 = ((((((((((f32(bitcast<i32>(_e641)) + 0.5f) * (1f / _e316)) * 2f) - 1f) * _e682) * _e372) - _e554.member_1.member_4.x) * _e554.member_1.member_6.x) + ((((((((f32(bitcast<i32>(_e657)) + 0.5f) * (1f / _e326)) * -2f) + 1f) * _e682) * _e377) - _e554.member_1.member_4.y) * _e554.member_1.member_6.y)) + ((-(_e682) - _e554.member_1.member_4.z) * _e554.member_1.member_6.z));
                             let _e708 = params.member.member_3;
                             let _e714 = (_e577 - select(_e703, _e591, ((_e591 > _e703) || (_e703 != _e703))));
                             let _e721 = ((_e703 - (_e554.member_1.member_2 * (1f + _e708))) * (1f / _e577));
-                            let _e723 = select(0f, _e721, (_e721 > 0f));
                             phi_939_ = (_e560 + 1u);
-                            phi_942_ = (_e562 + select(0f, select(((select(0f, _e714, ((_e714 > 0f) || false)) + (select(1f, _e723, (_e723 < 1f)) * _e592)) * (0.5f / _e577)), (_e592 / (_e577 * 2f)), select(false, (_e657 == _e554.member_1.member.y), (_e641 == _e554.member_1.member.x))), (_e592 > (_e577 * 0.2f))));
+                            phi_942_ = (_e562 + select(0f, select(((select(0f, _e714, ((_e714 > 0f) || false)) + (select(0f, select(1f, _e721, (_e721 < 1f)), (_e721 > 0f)) * _e592)) * (0.5f / _e577)), (_e592 / (_e577 * 2f)), select(false, (_e657 == _e554.member_1.member.y), (_e641 == _e554.member_1.member.x))), (_e592 > (_e577 * 0.2f))));
                         } else {
                             phi_939_ = u32();
                             phi_942_ = f32();
@@ -262,9 +257,8 @@ fn function_() {
                     }
                     let _e742 = local_4;
                     let _e743 = (0.25f * _e742);
-                    let _e745 = select(0f, _e743, (_e743 > 0f));
                     let _e750 = params.member.member_2;
-                    phi_1352_ = pow(select(1f, _e745, (_e745 < 1f)), _e750);
+                    phi_1352_ = pow(select(0f, select(1f, _e743, (_e743 < 1f)), (_e743 > 0f)), _e750);
                 } else {
                     phi_1352_ = 1f;
                 }

@@ -273,11 +273,10 @@ impl Lanes for f32 {
     fn select(m: bool, a: Self, b: Self) -> Self {
         if m { a } else { b }
     }
-    /// Compares and selects (branch-free on the GPU).
+    /// [`crate::common::math::clamp_lanes`]'s compares and selects (branch-free on the GPU).
     #[inline]
     fn clamp_between(self, lo: f32, hi: f32) -> f32 {
-        let c = if self > lo { self } else { lo };
-        if c < hi { c } else { hi }
+        crate::common::math::clamp_lanes(self, lo, hi)
     }
     #[inline]
     fn and(a: bool, b: bool) -> bool {
@@ -594,7 +593,7 @@ mod x8 {
             #[cfg(target_arch = "x86_64")]
             let c = F32x8(self.0.fast_max(lo.0).fast_min(hi.0));
             #[cfg(not(target_arch = "x86_64"))]
-            let c = Self::select(self.gt(lo), Self::select(self.lt(hi), self, hi), lo);
+            let c = crate::common::math::clamp_lanes(self, lo, hi);
             c
         }
         #[inline(always)]

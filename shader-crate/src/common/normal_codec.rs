@@ -6,12 +6,13 @@ use spirv_std::num_traits::Float;
 
 use crate::common::lanes::{LaneVec3, Lanes};
 use crate::common::math::{clamp, sign_nonzero};
-use crate::glam::{Vec2, Vec3, vec2};
+use crate::glam::{Vec3, vec2};
 
 /// Wrap of the lower hemisphere: `(1 − |p.yx|)·sign(p)`, sign of 0 = +1 (spec svao-raysd §1).
+/// One point or `L::LANES`.
 #[inline]
-fn oct_wrap(p: Vec2) -> Vec2 {
-    vec2((1.0 - p.y.abs()) * sign_nonzero(p.x), (1.0 - p.x.abs()) * sign_nonzero(p.y))
+fn oct_wrap<L: Lanes>(x: L, y: L) -> (L, L) {
+    ((-y.abs() + 1.0) * sign_nonzero(x), (-x.abs() + 1.0) * sign_nonzero(y))
 }
 
 /// snorm8 quantization `trunc(c·127 ± 0.5)` after clamping to [−1, 1], NaN → 0 (spec svao-raysd §1).
@@ -29,7 +30,8 @@ pub fn encode_normal(n: Vec3) -> u32 {
     let l1 = n.x.abs() + n.y.abs() + n.z.abs();
     let mut p = vec2(n.x / l1, n.y / l1);
     if n.z < 0.0 {
-        p = oct_wrap(p);
+        let (x, y) = oct_wrap(p.x, p.y);
+        p = vec2(x, y);
     }
     snorm8(p.x) | (snorm8(p.y) << 8)
 }
@@ -54,7 +56,6 @@ pub fn decode_normal_lanes<L: Lanes>(code: L::Index) -> L::V3 {
     let (x, y) = (byte(0), byte(8));
     let z = -x.abs() + 1.0 - y.abs();
     let below = z.lt(L::splat(0.0));
-    let wx = (-y.abs() + 1.0) * sign_nonzero(x);
-    let wy = (-x.abs() + 1.0) * sign_nonzero(y);
+    let (wx, wy) = oct_wrap(x, y);
     L::V3::new(L::select(below, wx, x), L::select(below, wy, y), z).normalize()
 }

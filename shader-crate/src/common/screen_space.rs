@@ -13,10 +13,7 @@ use crate::glam::UVec2;
 /// saturating cast with its compares and selects). `n` ≤ 2²³.
 #[inline]
 pub fn clamp_index(v: f32, n: u32) -> u32 {
-    let last = u32_to_f32(n - 1);
-    let c = if v > 0.0 { v } else { 0.0 };
-    let c = if c < last { c } else { last };
-    f32_to_u32(c)
+    f32_to_u32(v.clamp_between(0.0, u32_to_f32(n - 1)))
 }
 
 /// `viewPos(uv, z) = ((2u−1)·tanX·z, (1−2v)·tanY·z, z)` in XeGTAO's +z-forward view space

@@ -112,7 +112,8 @@ impl GtaoParams {
 /// Size of MIP `k` of the full target: `max(1, ⌊W/2^k⌋) × max(1, ⌊H/2^k⌋)` (spec gtao-raymarch-hybrid §1.5).
 #[inline]
 pub fn mip_size(full: UVec2, k: u32) -> UVec2 {
-    uvec2((full.x >> k).max(1), (full.y >> k).max(1))
+    use crate::common::lanes::Lanes;
+    uvec2(f32::index_mip_extent(full.x, k), f32::index_mip_extent(full.y, k))
 }
 
 /// Offset of MIP `k` in the packed chain (levels one after another, row-major).
