@@ -77,65 +77,66 @@ var<uniform> params: type_24;
 
 fn function_() {
     var local: array<type_26, 4>;
-    var phi_446_: type_21;
-    var phi_453_: u32;
-    var phi_460_: u32;
-    var phi_3048_: bool;
-    var phi_995_: u32;
-    var phi_998_: f32;
-    var phi_1000_: f32;
-    var phi_1193_: u32;
-    var phi_1196_: u32;
-    var phi_1249_: f32;
-    var phi_1527_: bool;
-    var phi_1859_: f32;
-    var phi_1909_: u32;
-    var phi_1912_: u32;
-    var phi_1913_: u32;
-    var phi_1914_: bool;
-    var phi_1933_: u32;
-    var phi_1953_: bool;
-    var phi_2285_: f32;
-    var phi_2335_: u32;
-    var phi_2338_: u32;
-    var phi_2339_: u32;
-    var phi_2340_: bool;
-    var phi_2359_: u32;
-    var phi_1194_: u32;
-    var phi_1197_: u32;
+    var phi_226_: type_21;
+    var phi_233_: u32;
+    var phi_240_: u32;
+    var phi_2674_: bool;
+    var phi_888_: u32;
+    var phi_891_: f32;
+    var phi_893_: f32;
+    var phi_1079_: u32;
+    var phi_1082_: u32;
+    var phi_1139_: f32;
+    var phi_1140_: f32;
+    var phi_1418_: bool;
+    var phi_1728_: f32;
+    var phi_1778_: u32;
+    var phi_1781_: u32;
+    var phi_1782_: u32;
+    var phi_1783_: bool;
+    var phi_1802_: u32;
+    var phi_1822_: bool;
+    var phi_2132_: f32;
+    var phi_2182_: u32;
+    var phi_2185_: u32;
+    var phi_2186_: u32;
+    var phi_2187_: bool;
+    var phi_2206_: u32;
+    var phi_1080_: u32;
+    var phi_1083_: u32;
     var local_1: u32;
-    var phi_2440_: u32;
-    var phi_2443_: f32;
+    var phi_2287_: u32;
+    var phi_2290_: f32;
     var local_2: u32;
-    var phi_2441_: u32;
-    var phi_2444_: f32;
-    var phi_2943_: bool;
+    var phi_2288_: u32;
+    var phi_2291_: f32;
+    var phi_2569_: bool;
     var local_3: f32;
-    var phi_3141_: bool;
-    var phi_2493_: f32;
-    var phi_2494_: f32;
-    var phi_2388_: u32;
-    var phi_2391_: f32;
-    var phi_2393_: f32;
+    var phi_2748_: bool;
+    var phi_2340_: f32;
+    var phi_2341_: f32;
+    var phi_2235_: u32;
+    var phi_2238_: f32;
+    var phi_2240_: f32;
     var local_4: u32;
-    var phi_2389_: u32;
-    var phi_2392_: f32;
-    var phi_2394_: f32;
+    var phi_2236_: u32;
+    var phi_2239_: f32;
+    var phi_2241_: f32;
     var local_5: f32;
-    var phi_3135_: bool;
-    var phi_2495_: f32;
-    var phi_2496_: f32;
-    var phi_3134_: bool;
-    var phi_996_: u32;
-    var phi_999_: f32;
-    var phi_1001_: f32;
-    var phi_3133_: bool;
+    var phi_2742_: bool;
+    var phi_2342_: f32;
+    var phi_2343_: f32;
+    var phi_2741_: bool;
+    var phi_889_: u32;
+    var phi_892_: f32;
+    var phi_894_: f32;
+    var phi_2740_: bool;
     var local_6: f32;
     var local_7: f32;
     var local_8: f32;
-    var phi_2504_: f32;
-    var phi_2925_: bool;
-    var phi_2545_: u32;
+    var phi_2351_: f32;
+    var phi_2363_: f32;
+    var phi_2364_: f32;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -143,7 +144,7 @@ fn function_() {
             let _e113 = (override_type == 0u);
             if _e113 {
                 let _e145 = params.member.member_4;
-                phi_446_ = _e145;
+                phi_226_ = _e145;
             } else {
                 let _e123 = params.member.member_4.member;
                 let _e127 = params.member.member_4.member_1;
@@ -151,23 +152,23 @@ fn function_() {
                 let _e135 = params.member.member_4.member_11;
                 let _e139 = params.member.member_4.member_12;
                 let _e143 = params.member.member_4.member_14;
-                phi_446_ = type_21(_e123, _e127, bitcast<f32>(override_type_5), bitcast<f32>(override_type_4), bitcast<f32>(override_type_2), bitcast<f32>(override_type_1), bitcast<f32>(override_type_3), bitcast<f32>(override_type_6), override_type_7, override_type_8, _e131, _e135, _e139, override_type_9, _e143);
+                phi_226_ = type_21(_e123, _e127, bitcast<f32>(override_type_5), bitcast<f32>(override_type_4), bitcast<f32>(override_type_2), bitcast<f32>(override_type_1), bitcast<f32>(override_type_3), bitcast<f32>(override_type_6), override_type_7, override_type_8, _e131, _e135, _e139, override_type_9, _e143);
             }
-            let _e147 = phi_446_;
+            let _e147 = phi_226_;
             if _e113 {
                 let _e150 = params.member.member_2;
-                phi_453_ = _e150;
+                phi_233_ = _e150;
             } else {
-                phi_453_ = override_type_10;
+                phi_233_ = override_type_10;
             }
-            let _e152 = phi_453_;
+            let _e152 = phi_233_;
             if _e113 {
                 let _e155 = params.member.member_3;
-                phi_460_ = _e155;
+                phi_240_ = _e155;
             } else {
-                phi_460_ = override_type_11;
+                phi_240_ = override_type_11;
             }
-            let _e157 = phi_460_;
+            let _e157 = phi_240_;
             let _e160 = params.member.member;
             let _e163 = params.member.member_1;
             let _e171 = select(select(u32(_e147.member.member.x), 0u, (_e147.member.member.x < 0f)), 4294967295u, (_e147.member.member.x > 4294967000f));
@@ -262,492 +263,502 @@ fn function_() {
                     let _e472 = ((_e147.member_1 * _e147.member_2) / (((_e188 * 1.99998f) * _e147.member.member_1.x) / _e147.member.member.x));
                     let _e475 = (_e110.x & 63u);
                     let _e476 = (_e110.y & 63u);
-                    let _e479 = select(0u, 1u, ((_e475 & 32u) != 0u));
-                    let _e482 = select(0u, 1u, ((_e476 & 32u) != 0u));
-                    let _e486 = (_e482 == 0u);
-                    let _e488 = (_e486 && (_e479 == 1u));
-                    let _e491 = select(_e475, (63u - _e475), _e488);
-                    let _e492 = select(_e476, (63u - _e476), _e488);
-                    let _e493 = select(_e491, _e492, _e486);
-                    let _e494 = select(_e492, _e491, _e486);
-                    let _e497 = select(0u, 1u, ((_e493 & 16u) != 0u));
-                    let _e500 = select(0u, 1u, ((_e494 & 16u) != 0u));
-                    let _e505 = (_e500 == 0u);
-                    let _e507 = (_e505 && (_e497 == 1u));
-                    let _e510 = select(_e493, (63u - _e493), _e507);
-                    let _e511 = select(_e494, (63u - _e494), _e507);
-                    let _e512 = select(_e510, _e511, _e505);
-                    let _e513 = select(_e511, _e510, _e505);
-                    let _e516 = select(0u, 1u, ((_e512 & 8u) != 0u));
-                    let _e519 = select(0u, 1u, ((_e513 & 8u) != 0u));
-                    let _e524 = (_e519 == 0u);
-                    let _e526 = (_e524 && (_e516 == 1u));
-                    let _e529 = select(_e512, (63u - _e512), _e526);
-                    let _e530 = select(_e513, (63u - _e513), _e526);
-                    let _e531 = select(_e529, _e530, _e524);
-                    let _e532 = select(_e530, _e529, _e524);
-                    let _e535 = select(0u, 1u, ((_e531 & 4u) != 0u));
-                    let _e538 = select(0u, 1u, ((_e532 & 4u) != 0u));
-                    let _e543 = (_e538 == 0u);
-                    let _e545 = (_e543 && (_e535 == 1u));
-                    let _e548 = select(_e531, (63u - _e531), _e545);
-                    let _e549 = select(_e532, (63u - _e532), _e545);
-                    let _e550 = select(_e548, _e549, _e543);
-                    let _e551 = select(_e549, _e548, _e543);
-                    let _e554 = select(0u, 1u, ((_e550 & 2u) != 0u));
-                    let _e557 = select(0u, 1u, ((_e551 & 2u) != 0u));
-                    let _e562 = (_e557 == 0u);
-                    let _e564 = (_e562 && (_e554 == 1u));
-                    let _e567 = select(_e550, (63u - _e550), _e564);
-                    let _e568 = select(_e551, (63u - _e551), _e564);
-                    let _e584 = f32(bitcast<i32>((((((((1024u * ((3u * _e479) ^ _e482)) + (256u * ((3u * _e497) ^ _e500))) + (64u * ((3u * _e516) ^ _e519))) + (16u * ((3u * _e535) ^ _e538))) + (4u * ((3u * _e554) ^ _e557))) + ((3u * select(0u, 1u, ((select(_e567, _e568, _e562) & 1u) != 0u))) ^ select(0u, 1u, ((select(_e568, _e567, _e562) & 1u) != 0u)))) + (288u * (_e147.member_11 % 64u)))));
-                    let _e586 = (0.5f + (_e584 * 0.7548777f));
-                    let _e590 = (0.5f + (_e584 * 0.5698403f));
-                    let _e596 = exp2(((2f * _e147.member_7) + 1f));
-                    let _e601 = select(false, (_e188 < _e147.member.member_3), (_e188 > 0f));
-                    if _e601 {
-                        let _e604 = select(1u, _e147.member_8, (1u < _e147.member_8));
-                        phi_3048_ = false;
-                        phi_995_ = 0u;
-                        phi_998_ = 0f;
-                        phi_1000_ = 0f;
+                    let _e479 = ((_e475 >> bitcast<u32>(5u)) & 1u);
+                    let _e482 = ((_e476 >> bitcast<u32>(5u)) & 1u);
+                    let _e486 = (_e482 ^ 1u);
+                    let _e488 = ((_e479 & _e486) * 63u);
+                    let _e489 = (_e475 ^ _e488);
+                    let _e490 = (_e476 ^ _e488);
+                    let _e492 = ((_e489 ^ _e490) * _e486);
+                    let _e493 = (_e489 ^ _e492);
+                    let _e494 = (_e490 ^ _e492);
+                    let _e497 = ((_e493 >> bitcast<u32>(4u)) & 1u);
+                    let _e500 = ((_e494 >> bitcast<u32>(4u)) & 1u);
+                    let _e505 = (_e500 ^ 1u);
+                    let _e507 = ((_e497 & _e505) * 63u);
+                    let _e508 = (_e493 ^ _e507);
+                    let _e509 = (_e494 ^ _e507);
+                    let _e511 = ((_e508 ^ _e509) * _e505);
+                    let _e512 = (_e508 ^ _e511);
+                    let _e513 = (_e509 ^ _e511);
+                    let _e516 = ((_e512 >> bitcast<u32>(3u)) & 1u);
+                    let _e519 = ((_e513 >> bitcast<u32>(3u)) & 1u);
+                    let _e524 = (_e519 ^ 1u);
+                    let _e526 = ((_e516 & _e524) * 63u);
+                    let _e527 = (_e512 ^ _e526);
+                    let _e528 = (_e513 ^ _e526);
+                    let _e530 = ((_e527 ^ _e528) * _e524);
+                    let _e531 = (_e527 ^ _e530);
+                    let _e532 = (_e528 ^ _e530);
+                    let _e535 = ((_e531 >> bitcast<u32>(2u)) & 1u);
+                    let _e538 = ((_e532 >> bitcast<u32>(2u)) & 1u);
+                    let _e543 = (_e538 ^ 1u);
+                    let _e545 = ((_e535 & _e543) * 63u);
+                    let _e546 = (_e531 ^ _e545);
+                    let _e547 = (_e532 ^ _e545);
+                    let _e549 = ((_e546 ^ _e547) * _e543);
+                    let _e550 = (_e546 ^ _e549);
+                    let _e551 = (_e547 ^ _e549);
+                    let _e554 = ((_e550 >> bitcast<u32>(1u)) & 1u);
+                    let _e557 = ((_e551 >> bitcast<u32>(1u)) & 1u);
+                    let _e562 = (_e557 ^ 1u);
+                    let _e564 = ((_e554 & _e562) * 63u);
+                    let _e565 = (_e550 ^ _e564);
+                    let _e566 = (_e551 ^ _e564);
+                    let _e568 = ((_e565 ^ _e566) * _e562);
+                    let _e580 = f32(bitcast<i32>((((((((((_e479 * 3u) ^ _e482) * 1024u) + (((_e497 * 3u) ^ _e500) * 256u)) + (((_e516 * 3u) ^ _e519) * 64u)) + (((_e535 * 3u) ^ _e538) * 16u)) + (((_e554 * 3u) ^ _e557) * 4u)) + ((((_e565 ^ _e568) & 1u) * 3u) ^ ((_e566 ^ _e568) & 1u))) + (288u * (_e147.member_11 % 64u)))));
+                    let _e582 = ((_e580 * 0.7548777f) + 0.5f);
+                    let _e586 = ((_e580 * 0.5698403f) + 0.5f);
+                    let _e592 = exp2(((2f * _e147.member_7) + 1f));
+                    let _e597 = select(false, (_e188 < _e147.member.member_3), (_e188 > 0f));
+                    if _e597 {
+                        let _e600 = select(1u, _e147.member_8, (1u < _e147.member_8));
+                        phi_2674_ = false;
+                        phi_888_ = 0u;
+                        phi_891_ = 0f;
+                        phi_893_ = 0f;
                         loop {
-                            let _e606 = phi_3048_;
-                            let _e608 = phi_995_;
-                            let _e610 = phi_998_;
-                            let _e612 = phi_1000_;
-                            local_6 = _e610;
-                            local_7 = _e612;
-                            local_8 = _e610;
-                            let _e613 = (_e608 < _e604);
-                            if _e613 {
-                                let _e620 = ((((_e586 - floor(_e586)) + f32(bitcast<i32>(_e608))) * 3.1415927f) / f32(bitcast<i32>(_e604)));
-                                let _e621 = sin(_e620);
-                                let _e622 = cos(_e620);
-                                let _e628 = ((_e622 * _e402) + (_e621 * _e403));
-                                let _e632 = (_e622 - (_e402 * _e628));
-                                let _e633 = (_e621 - (_e403 * _e628));
-                                let _e634 = -((_e404 * _e628));
-                                let _e637 = ((_e633 * _e404) - (_e403 * _e634));
-                                let _e640 = ((_e634 * _e402) - (_e404 * _e632));
-                                let _e643 = ((_e632 * _e403) - (_e402 * _e633));
-                                let _e650 = (1f / sqrt((((_e637 * _e637) + (_e640 * _e640)) + (_e643 * _e643))));
-                                let _e651 = (_e637 * _e650);
-                                let _e652 = (_e640 * _e650);
-                                let _e653 = (_e643 * _e650);
-                                let _e658 = (((_e463 * _e651) + (_e464 * _e652)) + (_e465 * _e653));
-                                let _e662 = (_e463 - (_e651 * _e658));
-                                let _e663 = (_e464 - (_e652 * _e658));
-                                let _e664 = (_e465 - (_e653 * _e658));
-                                let _e670 = sqrt((((_e662 * _e662) + (_e663 * _e663)) + (_e664 * _e664)));
-                                let _e675 = (((_e632 * _e662) + (_e633 * _e663)) + (_e634 * _e664));
-                                let _e685 = ((((_e662 * _e402) + (_e663 * _e403)) + (_e664 * _e404)) / _e670);
-                                let _e689 = select(0f, select(1f, _e685, (_e685 < 1f)), (_e685 > 0f));
-                                let _e690 = abs(_e689);
-                                let _e708 = (((((((((((((((_e690 * -0.0012624911f) + 0.00667009f) * _e690) - 0.017088126f) * _e690) + 0.03089188f) * _e690) - 0.050174303f) * _e690) + 0.08897899f) * _e690) - 0.2145988f) * _e690) + 1.5707963f) * sqrt((1f - _e690)));
-                                let _e711 = (select(select(0f, -1f, (_e675 < 0f)), 1f, (_e675 > 0f)) * select((3.1415927f - _e708), _e708, (_e689 >= 0f)));
-                                let _e714 = select(1u, _e147.member_9, (1u < _e147.member_9));
-                                phi_1193_ = 0u;
-                                phi_1196_ = 0u;
+                            let _e602 = phi_2674_;
+                            let _e604 = phi_888_;
+                            let _e606 = phi_891_;
+                            let _e608 = phi_893_;
+                            local_6 = _e606;
+                            local_7 = _e608;
+                            local_8 = _e606;
+                            let _e609 = (_e604 < _e600);
+                            if _e609 {
+                                let _e616 = ((((_e582 - floor(_e582)) + f32(bitcast<i32>(_e604))) * 3.1415927f) / f32(bitcast<i32>(_e600)));
+                                let _e617 = sin(_e616);
+                                let _e618 = cos(_e616);
+                                let _e624 = ((_e618 * _e402) + (_e617 * _e403));
+                                let _e628 = (_e618 - (_e402 * _e624));
+                                let _e629 = (_e617 - (_e403 * _e624));
+                                let _e630 = -((_e404 * _e624));
+                                let _e633 = ((_e629 * _e404) - (_e403 * _e630));
+                                let _e636 = ((_e630 * _e402) - (_e404 * _e628));
+                                let _e639 = ((_e628 * _e403) - (_e402 * _e629));
+                                let _e646 = (1f / sqrt((((_e633 * _e633) + (_e636 * _e636)) + (_e639 * _e639))));
+                                let _e647 = (_e633 * _e646);
+                                let _e648 = (_e636 * _e646);
+                                let _e649 = (_e639 * _e646);
+                                let _e654 = (((_e463 * _e647) + (_e464 * _e648)) + (_e465 * _e649));
+                                let _e658 = (_e463 - (_e647 * _e654));
+                                let _e659 = (_e464 - (_e648 * _e654));
+                                let _e660 = (_e465 - (_e649 * _e654));
+                                let _e666 = sqrt((((_e658 * _e658) + (_e659 * _e659)) + (_e660 * _e660)));
+                                let _e671 = (((_e628 * _e658) + (_e629 * _e659)) + (_e630 * _e660));
+                                let _e681 = ((((_e658 * _e402) + (_e659 * _e403)) + (_e660 * _e404)) / _e666);
+                                let _e685 = select(0f, select(1f, _e681, (_e681 < 1f)), (_e681 > 0f));
+                                let _e686 = abs(_e685);
+                                let _e697 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e686, 0.00667009f), _e686, -0.017088126f), _e686, 0.03089188f), _e686, -0.050174303f), _e686, 0.08897899f), _e686, -0.2145988f), _e686, 1.5707963f) * sqrt((1f - _e686)));
+                                let _e700 = (select(select(0f, -1f, (_e671 < 0f)), 1f, (_e671 > 0f)) * select((3.1415927f - _e697), _e697, (_e685 >= 0f)));
+                                let _e703 = select(1u, _e147.member_9, (1u < _e147.member_9));
+                                phi_1079_ = 0u;
+                                phi_1082_ = 0u;
                                 loop {
-                                    let _e716 = phi_1193_;
-                                    let _e718 = phi_1196_;
-                                    local_1 = _e718;
-                                    local_2 = _e718;
-                                    local_4 = _e718;
-                                    let _e719 = (_e716 < _e714);
-                                    if _e719 {
-                                        let _e725 = ((_e590 - floor(_e590)) + (f32(bitcast<i32>((_e608 + (_e716 * _e714)))) * 0.618034f));
-                                        let _e734 = (((_e725 - floor(_e725)) + f32(bitcast<i32>(_e716))) * (1f / f32(bitcast<i32>(_e714))));
+                                    let _e705 = phi_1079_;
+                                    let _e707 = phi_1082_;
+                                    local_1 = _e707;
+                                    local_2 = _e707;
+                                    local_4 = _e707;
+                                    let _e708 = (_e705 < _e703);
+                                    if _e708 {
+                                        let _e714 = ((_e586 - floor(_e586)) + (f32(bitcast<i32>((_e604 + (_e705 * _e703)))) * 0.618034f));
+                                        let _e723 = (((_e714 - floor(_e714)) + f32(bitcast<i32>(_e705))) * (1f / f32(bitcast<i32>(_e703))));
                                         if (_e147.member_4 == 2f) {
-                                            phi_1249_ = (_e734 * _e734);
+                                            phi_1140_ = (_e723 * _e723);
                                         } else {
-                                            phi_1249_ = pow(_e734, _e147.member_4);
+                                            if (_e147.member_4 == 1f) {
+                                                phi_1139_ = _e723;
+                                            } else {
+                                                phi_1139_ = pow(_e723, _e147.member_4);
+                                            }
+                                            let _e729 = phi_1139_;
+                                            phi_1140_ = _e729;
                                         }
-                                        let _e740 = phi_1249_;
-                                        let _e741 = (_e740 + (1.3f / _e472));
-                                        let _e742 = ((_e622 * _e472) * _e741);
-                                        let _e743 = ((-(_e621) * _e472) * _e741);
-                                        let _e746 = ((_e742 * _e742) + (_e743 * _e743));
-                                        let _e751 = (select(1u, _e171, (1u < _e171)) * select(1u, _e179, (1u < _e179)));
-                                        let _e752 = (_e746 > _e596);
-                                        let _e756 = (_e171 >> bitcast<u32>(1u));
-                                        let _e760 = (_e179 >> bitcast<u32>(1u));
-                                        let _e764 = (_e751 + (select(1u, _e756, (1u < _e756)) * select(1u, _e760, (1u < _e760))));
-                                        let _e766 = (_e746 > (_e596 * 4f));
-                                        let _e770 = (_e171 >> bitcast<u32>(2u));
-                                        let _e774 = (_e179 >> bitcast<u32>(2u));
-                                        let _e778 = (_e764 + (select(1u, _e770, (1u < _e770)) * select(1u, _e774, (1u < _e774))));
-                                        let _e780 = (_e746 > (_e596 * 16f));
-                                        let _e784 = (_e171 >> bitcast<u32>(3u));
-                                        let _e788 = (_e179 >> bitcast<u32>(3u));
-                                        let _e794 = (_e746 > (_e596 * 64f));
-                                        let _e796 = select(select(select(select(0u, _e751, _e752), _e764, _e766), _e778, _e780), (_e778 + (select(1u, _e784, (1u < _e784)) * select(1u, _e788, (1u < _e788)))), _e794);
-                                        let _e797 = (select(select(select(select(0u, 1u, _e752), 2u, _e766), 3u, _e780), 4u, _e794) & 31u);
-                                        let _e799 = (_e171 >> bitcast<u32>(_e797));
-                                        let _e801 = select(1u, _e799, (1u < _e799));
-                                        let _e803 = (_e179 >> bitcast<u32>(_e797));
-                                        let _e805 = select(1u, _e803, (1u < _e803));
-                                        let _e808 = (round(_e742) * (1f / _e147.member.member.x));
-                                        let _e811 = (round(_e743) * (1f / _e147.member.member.y));
-                                        let _e812 = (_e373 + _e808);
-                                        let _e813 = (_e376 + _e811);
-                                        let _e814 = (_e373 - _e808);
-                                        let _e815 = (_e376 - _e811);
-                                        let _e817 = f32(bitcast<i32>(_e801));
-                                        let _e818 = (_e812 * _e817);
-                                        let _e821 = f32(bitcast<i32>((_e801 - 1u)));
-                                        let _e831 = f32(bitcast<i32>(_e805));
-                                        let _e832 = (_e813 * _e831);
-                                        let _e835 = f32(bitcast<i32>((_e805 - 1u)));
-                                        let _e849 = mips.member[((_e796 + ((bitcast<u32>((floor(select(0f, select(_e835, _e832, (_e832 < _e835)), (_e832 > 0f))) + 8388608f)) - 1258291200u) * _e801)) + (bitcast<u32>((floor(select(0f, select(_e821, _e818, (_e818 < _e821)), (_e818 > 0f))) + 8388608f)) - 1258291200u))];
-                                        let _e858 = (_e814 * _e817);
-                                        let _e867 = (_e815 * _e831);
-                                        let _e881 = mips.member[((_e796 + ((bitcast<u32>((floor(select(0f, select(_e835, _e867, (_e867 < _e835)), (_e867 > 0f))) + 8388608f)) - 1258291200u) * _e801)) + (bitcast<u32>((floor(select(0f, select(_e821, _e858, (_e858 < _e821)), (_e858 > 0f))) + 8388608f)) - 1258291200u))];
-                                        let _e890 = (((((_e812 * 2f) - 1f) * _e147.member.member_1.x) * _e849) - _e384);
-                                        let _e891 = (((((_e813 * -2f) + 1f) * _e147.member.member_1.y) * _e849) - _e391);
-                                        let _e892 = (_e849 - _e377);
-                                        let _e893 = (_e163 > 0f);
-                                        if _e893 {
-                                            phi_1527_ = (sqrt((((_e890 * _e890) + (_e891 * _e891)) + (_e892 * _e892))) > _e163);
+                                        let _e732 = phi_1140_;
+                                        let _e733 = (_e732 + (1.3f / _e472));
+                                        let _e734 = ((_e618 * _e472) * _e733);
+                                        let _e735 = ((-(_e617) * _e472) * _e733);
+                                        let _e738 = ((_e734 * _e734) + (_e735 * _e735));
+                                        let _e743 = (select(1u, _e171, (1u < _e171)) * select(1u, _e179, (1u < _e179)));
+                                        let _e744 = (_e738 > _e592);
+                                        let _e748 = (_e171 >> bitcast<u32>(1u));
+                                        let _e752 = (_e179 >> bitcast<u32>(1u));
+                                        let _e756 = (_e743 + (select(1u, _e748, (1u < _e748)) * select(1u, _e752, (1u < _e752))));
+                                        let _e758 = (_e738 > (_e592 * 4f));
+                                        let _e762 = (_e171 >> bitcast<u32>(2u));
+                                        let _e766 = (_e179 >> bitcast<u32>(2u));
+                                        let _e770 = (_e756 + (select(1u, _e762, (1u < _e762)) * select(1u, _e766, (1u < _e766))));
+                                        let _e772 = (_e738 > (_e592 * 16f));
+                                        let _e776 = (_e171 >> bitcast<u32>(3u));
+                                        let _e780 = (_e179 >> bitcast<u32>(3u));
+                                        let _e786 = (_e738 > (_e592 * 64f));
+                                        let _e788 = select(select(select(select(0u, _e743, _e744), _e756, _e758), _e770, _e772), (_e770 + (select(1u, _e776, (1u < _e776)) * select(1u, _e780, (1u < _e780)))), _e786);
+                                        let _e789 = (select(select(select(select(0u, 1u, _e744), 2u, _e758), 3u, _e772), 4u, _e786) & 31u);
+                                        let _e791 = (_e171 >> bitcast<u32>(_e789));
+                                        let _e793 = select(1u, _e791, (1u < _e791));
+                                        let _e795 = (_e179 >> bitcast<u32>(_e789));
+                                        let _e797 = select(1u, _e795, (1u < _e795));
+                                        let _e800 = (round(_e734) * (1f / _e147.member.member.x));
+                                        let _e803 = (round(_e735) * (1f / _e147.member.member.y));
+                                        let _e804 = (_e373 + _e800);
+                                        let _e805 = (_e376 + _e803);
+                                        let _e806 = (_e373 - _e800);
+                                        let _e807 = (_e376 - _e803);
+                                        let _e809 = f32(bitcast<i32>(_e793));
+                                        let _e810 = (_e804 * _e809);
+                                        let _e813 = f32(bitcast<i32>((_e793 - 1u)));
+                                        let _e823 = f32(bitcast<i32>(_e797));
+                                        let _e824 = (_e805 * _e823);
+                                        let _e827 = f32(bitcast<i32>((_e797 - 1u)));
+                                        let _e841 = mips.member[((_e788 + ((bitcast<u32>((floor(select(0f, select(_e827, _e824, (_e824 < _e827)), (_e824 > 0f))) + 8388608f)) - 1258291200u) * _e793)) + (bitcast<u32>((floor(select(0f, select(_e813, _e810, (_e810 < _e813)), (_e810 > 0f))) + 8388608f)) - 1258291200u))];
+                                        let _e850 = (_e806 * _e809);
+                                        let _e859 = (_e807 * _e823);
+                                        let _e873 = mips.member[((_e788 + ((bitcast<u32>((floor(select(0f, select(_e827, _e859, (_e859 < _e827)), (_e859 > 0f))) + 8388608f)) - 1258291200u) * _e793)) + (bitcast<u32>((floor(select(0f, select(_e813, _e850, (_e850 < _e813)), (_e850 > 0f))) + 8388608f)) - 1258291200u))];
+                                        let _e882 = (((((_e804 * 2f) - 1f) * _e147.member.member_1.x) * _e841) - _e384);
+                                        let _e883 = (((((_e805 * -2f) + 1f) * _e147.member.member_1.y) * _e841) - _e391);
+                                        let _e884 = (_e841 - _e377);
+                                        let _e885 = (_e163 > 0f);
+                                        if _e885 {
+                                            phi_1418_ = ((((_e882 * _e882) + (_e883 * _e883)) + (_e884 * _e884)) > (_e163 * _e163));
                                         } else {
-                                            phi_1527_ = false;
+                                            phi_1418_ = false;
                                         }
-                                        let _e902 = phi_1527_;
-                                        if !(_e902) {
-                                            let _e908 = (((_e890 * _e402) + (_e891 * _e403)) + (_e892 * _e404));
-                                            let _e912 = (_e890 - (_e402 * _e908));
-                                            let _e913 = (_e891 - (_e403 * _e908));
-                                            let _e914 = (_e892 - (_e404 * _e908));
-                                            let _e917 = ((_e913 * _e404) - (_e403 * _e914));
-                                            let _e920 = ((_e914 * _e402) - (_e404 * _e912));
-                                            let _e923 = ((_e912 * _e403) - (_e402 * _e913));
-                                            let _e934 = ((((_e463 * _e917) + (_e464 * _e920)) + (_e465 * _e923)) / (((_e917 * _e917) + (_e920 * _e920)) + (_e923 * _e923)));
-                                            let _e938 = (_e463 - (_e917 * _e934));
-                                            let _e939 = (_e464 - (_e920 * _e934));
-                                            let _e940 = (_e465 - (_e923 * _e934));
-                                            let _e946 = sqrt((((_e938 * _e938) + (_e939 * _e939)) + (_e940 * _e940)));
-                                            let _e953 = ((((_e938 * _e402) + (_e939 * _e403)) + (_e940 * _e404)) * (1f / _e946));
-                                            let _e957 = select(0f, select(1f, _e953, (_e953 < 1f)), (_e953 > 0f));
-                                            let _e958 = abs(_e957);
-                                            let _e975 = (((((((((((((((_e958 * -0.0012624911f) + 0.00667009f) * _e958) - 0.017088126f) * _e958) + 0.03089188f) * _e958) - 0.050174303f) * _e958) + 0.08897899f) * _e958) - 0.2145988f) * _e958) + 1.5707963f) * sqrt((1f - _e958)));
-                                            let _e978 = select((3.1415927f - _e975), _e975, (_e957 >= 0f));
-                                            let _e986 = select(_e978, -(_e978), ((((_e912 * _e938) + (_e913 * _e939)) + (_e914 * _e940)) < 0f));
-                                            let _e987 = (0.02f / _e946);
-                                            let _e990 = select(0.19634955f, _e987, ((_e987 < 0.19634955f) || false));
-                                            let _e994 = (_e890 - (_e402 * _e160));
-                                            let _e995 = (_e891 - (_e403 * _e160));
-                                            let _e996 = (_e892 - (_e404 * _e160));
-                                            let _e1003 = (_e908 / sqrt((((_e890 * _e890) + (_e891 * _e891)) + (_e892 * _e892))));
-                                            let _e1007 = select(-1f, select(1f, _e1003, (_e1003 < 1f)), (_e1003 > -1f));
-                                            let _e1008 = abs(_e1007);
-                                            let _e1025 = (((((((((((((((_e1008 * -0.0012624911f) + 0.00667009f) * _e1008) - 0.017088126f) * _e1008) + 0.03089188f) * _e1008) - 0.050174303f) * _e1008) + 0.08897899f) * _e1008) - 0.2145988f) * _e1008) + 1.5707963f) * sqrt((1f - _e1008)));
-                                            let _e1032 = ((((select((3.1415927f - _e1025), _e1025, (_e1007 >= 0f)) + _e990) - _e986) + 1.5707964f) * 0.31830987f);
-                                            let _e1036 = select(0f, select(1f, _e1032, (_e1032 < 1f)), (_e1032 > 0f));
-                                            let _e1048 = ((((_e994 * _e402) + (_e995 * _e403)) + (_e996 * _e404)) / sqrt((((_e994 * _e994) + (_e995 * _e995)) + (_e996 * _e996))));
-                                            let _e1052 = select(-1f, select(1f, _e1048, (_e1048 < 1f)), (_e1048 > -1f));
-                                            let _e1053 = abs(_e1052);
-                                            let _e1070 = (((((((((((((((_e1053 * -0.0012624911f) + 0.00667009f) * _e1053) - 0.017088126f) * _e1053) + 0.03089188f) * _e1053) - 0.050174303f) * _e1053) + 0.08897899f) * _e1053) - 0.2145988f) * _e1053) + 1.5707963f) * sqrt((1f - _e1053)));
-                                            let _e1077 = ((((select((3.1415927f - _e1070), _e1070, (_e1052 >= 0f)) + _e990) - _e986) + 1.5707964f) * 0.31830987f);
-                                            let _e1081 = select(0f, select(1f, _e1077, (_e1077 < 1f)), (_e1077 > 0f));
-                                            let _e1083 = (_e1081 != _e1081);
-                                            let _e1085 = select(_e1081, _e1036, ((_e1036 < _e1081) || _e1083));
-                                            let _e1088 = select(_e1081, _e1036, ((_e1036 > _e1081) || _e1083));
-                                            let _e1090 = floor((_e1085 * 32f));
+                                        let _e894 = phi_1418_;
+                                        if !(_e894) {
+                                            let _e900 = (((_e882 * _e402) + (_e883 * _e403)) + (_e884 * _e404));
+                                            let _e904 = (_e882 - (_e402 * _e900));
+                                            let _e905 = (_e883 - (_e403 * _e900));
+                                            let _e906 = (_e884 - (_e404 * _e900));
+                                            let _e909 = ((_e905 * _e404) - (_e403 * _e906));
+                                            let _e912 = ((_e906 * _e402) - (_e404 * _e904));
+                                            let _e915 = ((_e904 * _e403) - (_e402 * _e905));
+                                            let _e926 = ((((_e463 * _e909) + (_e464 * _e912)) + (_e465 * _e915)) / (((_e909 * _e909) + (_e912 * _e912)) + (_e915 * _e915)));
+                                            let _e930 = (_e463 - (_e909 * _e926));
+                                            let _e931 = (_e464 - (_e912 * _e926));
+                                            let _e932 = (_e465 - (_e915 * _e926));
+                                            let _e938 = inverseSqrt((((_e930 * _e930) + (_e931 * _e931)) + (_e932 * _e932)));
+                                            let _e944 = ((((_e930 * _e402) + (_e931 * _e403)) + (_e932 * _e404)) * _e938);
+                                            let _e948 = select(0f, select(1f, _e944, (_e944 < 1f)), (_e944 > 0f));
+                                            let _e949 = abs(_e948);
+                                            let _e959 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e949, 0.00667009f), _e949, -0.017088126f), _e949, 0.03089188f), _e949, -0.050174303f), _e949, 0.08897899f), _e949, -0.2145988f), _e949, 1.5707963f) * sqrt((1f - _e949)));
+                                            let _e962 = select((3.1415927f - _e959), _e959, (_e948 >= 0f));
+                                            let _e970 = select(_e962, -(_e962), ((((_e904 * _e930) + (_e905 * _e931)) + (_e906 * _e932)) < 0f));
+                                            let _e971 = (_e938 * 0.02f);
+                                            let _e974 = select(0.19634955f, _e971, ((_e971 < 0.19634955f) || false));
+                                            let _e978 = (_e882 - (_e402 * _e160));
+                                            let _e979 = (_e883 - (_e403 * _e160));
+                                            let _e980 = (_e884 - (_e404 * _e160));
+                                            let _e987 = (_e900 * inverseSqrt((((_e882 * _e882) + (_e883 * _e883)) + (_e884 * _e884))));
+                                            let _e991 = select(-1f, select(1f, _e987, (_e987 < 1f)), (_e987 > -1f));
+                                            let _e992 = abs(_e991);
+                                            let _e1002 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e992, 0.00667009f), _e992, -0.017088126f), _e992, 0.03089188f), _e992, -0.050174303f), _e992, 0.08897899f), _e992, -0.2145988f), _e992, 1.5707963f) * sqrt((1f - _e992)));
+                                            let _e1009 = ((((select((3.1415927f - _e1002), _e1002, (_e991 >= 0f)) + _e974) - _e970) + 1.5707964f) * 0.31830987f);
+                                            let _e1013 = select(0f, select(1f, _e1009, (_e1009 < 1f)), (_e1009 > 0f));
+                                            let _e1025 = ((((_e978 * _e402) + (_e979 * _e403)) + (_e980 * _e404)) * inverseSqrt((((_e978 * _e978) + (_e979 * _e979)) + (_e980 * _e980))));
+                                            let _e1029 = select(-1f, select(1f, _e1025, (_e1025 < 1f)), (_e1025 > -1f));
+                                            let _e1030 = abs(_e1029);
+                                            let _e1040 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1030, 0.00667009f), _e1030, -0.017088126f), _e1030, 0.03089188f), _e1030, -0.050174303f), _e1030, 0.08897899f), _e1030, -0.2145988f), _e1030, 1.5707963f) * sqrt((1f - _e1030)));
+                                            let _e1047 = ((((select((3.1415927f - _e1040), _e1040, (_e1029 >= 0f)) + _e974) - _e970) + 1.5707964f) * 0.31830987f);
+                                            let _e1051 = select(0f, select(1f, _e1047, (_e1047 < 1f)), (_e1047 > 0f));
+                                            let _e1053 = (_e1051 != _e1051);
+                                            let _e1055 = select(_e1051, _e1013, ((_e1013 < _e1051) || _e1053));
+                                            let _e1058 = select(_e1051, _e1013, ((_e1013 > _e1051) || _e1053));
+                                            let _e1060 = floor((_e1055 * 32f));
                                             if (_e157 == 1u) {
-                                                let _e1098 = -(floor((_e1088 * -32f)));
-                                                let _e1103 = (select(32f, _e1098, ((_e1098 < 32f) || false)) - _e1090);
-                                                phi_1859_ = select(select(0f, _e1103, ((_e1103 > 0f) || false)), 0f, (_e1088 <= _e1085));
+                                                let _e1068 = -(floor((_e1058 * -32f)));
+                                                let _e1073 = (select(32f, _e1068, ((_e1068 < 32f) || false)) - _e1060);
+                                                phi_1728_ = select(select(0f, _e1073, ((_e1073 > 0f) || false)), 0f, (_e1058 <= _e1055));
                                             } else {
-                                                phi_1859_ = -(floor(((_e1088 - _e1085) * -32f)));
+                                                phi_1728_ = -(floor(((_e1058 - _e1055) * -32f)));
                                             }
-                                            let _e1109 = phi_1859_;
-                                            let _e1117 = (bitcast<u32>((floor(select(0f, select(32f, _e1090, (_e1090 < 32f)), (_e1090 > 0f))) + 8388608f)) - 1258291200u);
-                                            let _e1125 = (bitcast<u32>((floor(select(0f, select(32f, _e1109, (_e1109 < 32f)), (_e1109 > 0f))) + 8388608f)) - 1258291200u);
-                                            if (_e1117 >= 32u) {
-                                                phi_1913_ = u32();
-                                                phi_1914_ = true;
+                                            let _e1079 = phi_1728_;
+                                            let _e1087 = (bitcast<u32>((floor(select(0f, select(32f, _e1060, (_e1060 < 32f)), (_e1060 > 0f))) + 8388608f)) - 1258291200u);
+                                            let _e1095 = (bitcast<u32>((floor(select(0f, select(32f, _e1079, (_e1079 < 32f)), (_e1079 > 0f))) + 8388608f)) - 1258291200u);
+                                            if (_e1087 >= 32u) {
+                                                phi_1782_ = u32();
+                                                phi_1783_ = true;
                                             } else {
-                                                let _e1127 = (_e1125 == 0u);
-                                                if _e1127 {
-                                                    phi_1912_ = u32();
+                                                let _e1097 = (_e1095 == 0u);
+                                                if _e1097 {
+                                                    phi_1781_ = u32();
                                                 } else {
-                                                    if (_e1125 >= 32u) {
-                                                        phi_1909_ = 4294967295u;
+                                                    if (_e1095 >= 32u) {
+                                                        phi_1778_ = 4294967295u;
                                                     } else {
-                                                        phi_1909_ = ((1u << bitcast<u32>((_e1125 & 31u))) - 1u);
+                                                        phi_1778_ = ((1u << bitcast<u32>((_e1095 & 31u))) - 1u);
                                                     }
-                                                    let _e1134 = phi_1909_;
-                                                    phi_1912_ = (_e1134 << bitcast<u32>((_e1117 & 31u)));
+                                                    let _e1104 = phi_1778_;
+                                                    phi_1781_ = (_e1104 << bitcast<u32>((_e1087 & 31u)));
                                                 }
-                                                let _e1139 = phi_1912_;
-                                                phi_1913_ = _e1139;
-                                                phi_1914_ = _e1127;
+                                                let _e1109 = phi_1781_;
+                                                phi_1782_ = _e1109;
+                                                phi_1783_ = _e1097;
                                             }
-                                            let _e1141 = phi_1913_;
-                                            let _e1143 = phi_1914_;
-                                            phi_1933_ = select(select(select(_e1141, 0u, _e1143), 0u, ((((_e912 * _e912) + (_e913 * _e913)) + (_e914 * _e914)) <= 0f)), 0u, _e902);
+                                            let _e1111 = phi_1782_;
+                                            let _e1113 = phi_1783_;
+                                            phi_1802_ = select(select(select(_e1111, 0u, _e1113), 0u, ((((_e904 * _e904) + (_e905 * _e905)) + (_e906 * _e906)) <= 0f)), 0u, _e894);
                                         } else {
-                                            phi_1933_ = 0u;
+                                            phi_1802_ = 0u;
                                         }
-                                        let _e1154 = phi_1933_;
-                                        let _e1156 = (((((_e814 * 2f) - 1f) * _e147.member.member_1.x) * _e881) - _e384);
-                                        let _e1157 = (((((_e815 * -2f) + 1f) * _e147.member.member_1.y) * _e881) - _e391);
-                                        let _e1158 = (_e881 - _e377);
-                                        if _e893 {
-                                            phi_1953_ = (sqrt((((_e1156 * _e1156) + (_e1157 * _e1157)) + (_e1158 * _e1158))) > _e163);
+                                        let _e1124 = phi_1802_;
+                                        let _e1126 = (((((_e806 * 2f) - 1f) * _e147.member.member_1.x) * _e873) - _e384);
+                                        let _e1127 = (((((_e807 * -2f) + 1f) * _e147.member.member_1.y) * _e873) - _e391);
+                                        let _e1128 = (_e873 - _e377);
+                                        if _e885 {
+                                            phi_1822_ = ((((_e1126 * _e1126) + (_e1127 * _e1127)) + (_e1128 * _e1128)) > (_e163 * _e163));
                                         } else {
-                                            phi_1953_ = false;
+                                            phi_1822_ = false;
                                         }
-                                        let _e1167 = phi_1953_;
-                                        if !(_e1167) {
-                                            let _e1173 = (((_e1156 * _e402) + (_e1157 * _e403)) + (_e1158 * _e404));
-                                            let _e1177 = (_e1156 - (_e402 * _e1173));
-                                            let _e1178 = (_e1157 - (_e403 * _e1173));
-                                            let _e1179 = (_e1158 - (_e404 * _e1173));
-                                            let _e1182 = ((_e1178 * _e404) - (_e403 * _e1179));
-                                            let _e1185 = ((_e1179 * _e402) - (_e404 * _e1177));
-                                            let _e1188 = ((_e1177 * _e403) - (_e402 * _e1178));
-                                            let _e1199 = ((((_e463 * _e1182) + (_e464 * _e1185)) + (_e465 * _e1188)) / (((_e1182 * _e1182) + (_e1185 * _e1185)) + (_e1188 * _e1188)));
-                                            let _e1203 = (_e463 - (_e1182 * _e1199));
-                                            let _e1204 = (_e464 - (_e1185 * _e1199));
-                                            let _e1205 = (_e465 - (_e1188 * _e1199));
-                                            let _e1211 = sqrt((((_e1203 * _e1203) + (_e1204 * _e1204)) + (_e1205 * _e1205)));
-                                            let _e1218 = ((((_e1203 * _e402) + (_e1204 * _e403)) + (_e1205 * _e404)) * (1f / _e1211));
-                                            let _e1222 = select(0f, select(1f, _e1218, (_e1218 < 1f)), (_e1218 > 0f));
-                                            let _e1223 = abs(_e1222);
-                                            let _e1240 = (((((((((((((((_e1223 * -0.0012624911f) + 0.00667009f) * _e1223) - 0.017088126f) * _e1223) + 0.03089188f) * _e1223) - 0.050174303f) * _e1223) + 0.08897899f) * _e1223) - 0.2145988f) * _e1223) + 1.5707963f) * sqrt((1f - _e1223)));
-                                            let _e1243 = select((3.1415927f - _e1240), _e1240, (_e1222 >= 0f));
-                                            let _e1251 = select(_e1243, -(_e1243), ((((_e1177 * _e1203) + (_e1178 * _e1204)) + (_e1179 * _e1205)) < 0f));
-                                            let _e1252 = (0.02f / _e1211);
-                                            let _e1255 = select(0.19634955f, _e1252, ((_e1252 < 0.19634955f) || false));
-                                            let _e1259 = (_e1156 - (_e402 * _e160));
-                                            let _e1260 = (_e1157 - (_e403 * _e160));
-                                            let _e1261 = (_e1158 - (_e404 * _e160));
-                                            let _e1268 = (_e1173 / sqrt((((_e1156 * _e1156) + (_e1157 * _e1157)) + (_e1158 * _e1158))));
+                                        let _e1137 = phi_1822_;
+                                        if !(_e1137) {
+                                            let _e1143 = (((_e1126 * _e402) + (_e1127 * _e403)) + (_e1128 * _e404));
+                                            let _e1147 = (_e1126 - (_e402 * _e1143));
+                                            let _e1148 = (_e1127 - (_e403 * _e1143));
+                                            let _e1149 = (_e1128 - (_e404 * _e1143));
+                                            let _e1152 = ((_e1148 * _e404) - (_e403 * _e1149));
+                                            let _e1155 = ((_e1149 * _e402) - (_e404 * _e1147));
+                                            let _e1158 = ((_e1147 * _e403) - (_e402 * _e1148));
+                                            let _e1169 = ((((_e463 * _e1152) + (_e464 * _e1155)) + (_e465 * _e1158)) / (((_e1152 * _e1152) + (_e1155 * _e1155)) + (_e1158 * _e1158)));
+                                            let _e1173 = (_e463 - (_e1152 * _e1169));
+                                            let _e1174 = (_e464 - (_e1155 * _e1169));
+                                            let _e1175 = (_e465 - (_e1158 * _e1169));
+                                            let _e1181 = inverseSqrt((((_e1173 * _e1173) + (_e1174 * _e1174)) + (_e1175 * _e1175)));
+                                            let _e1187 = ((((_e1173 * _e402) + (_e1174 * _e403)) + (_e1175 * _e404)) * _e1181);
+                                            let _e1191 = select(0f, select(1f, _e1187, (_e1187 < 1f)), (_e1187 > 0f));
+                                            let _e1192 = abs(_e1191);
+                                            let _e1202 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1192, 0.00667009f), _e1192, -0.017088126f), _e1192, 0.03089188f), _e1192, -0.050174303f), _e1192, 0.08897899f), _e1192, -0.2145988f), _e1192, 1.5707963f) * sqrt((1f - _e1192)));
+                                            let _e1205 = select((3.1415927f - _e1202), _e1202, (_e1191 >= 0f));
+                                            let _e1213 = select(_e1205, -(_e1205), ((((_e1147 * _e1173) + (_e1148 * _e1174)) + (_e1149 * _e1175)) < 0f));
+                                            let _e1214 = (_e1181 * 0.02f);
+                                            let _e1217 = select(0.19634955f, _e1214, ((_e1214 < 0.19634955f) || false));
+                                            let _e1221 = (_e1126 - (_e402 * _e160));
+                                            let _e1222 = (_e1127 - (_e403 * _e160));
+                                            let _e1223 = (_e1128 - (_e404 * _e160));
+                                            let _e1230 = (_e1143 * inverseSqrt((((_e1126 * _e1126) + (_e1127 * _e1127)) + (_e1128 * _e1128))));
+                                            let _e1234 = select(-1f, select(1f, _e1230, (_e1230 < 1f)), (_e1230 > -1f));
+                                            let _e1235 = abs(_e1234);
+                                            let _e1245 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1235, 0.00667009f), _e1235, -0.017088126f), _e1235, 0.03089188f), _e1235, -0.050174303f), _e1235, 0.08897899f), _e1235, -0.2145988f), _e1235, 1.5707963f) * sqrt((1f - _e1235)));
+                                            let _e1252 = ((((select((3.1415927f - _e1245), _e1245, (_e1234 >= 0f)) + _e1217) - _e1213) + 1.5707964f) * 0.31830987f);
+                                            let _e1268 = ((((_e1221 * _e402) + (_e1222 * _e403)) + (_e1223 * _e404)) * inverseSqrt((((_e1221 * _e1221) + (_e1222 * _e1222)) + (_e1223 * _e1223))));
                                             let _e1272 = select(-1f, select(1f, _e1268, (_e1268 < 1f)), (_e1268 > -1f));
                                             let _e1273 = abs(_e1272);
-                                            let _e1290 = (((((((((((((((_e1273 * -0.0012624911f) + 0.00667009f) * _e1273) - 0.017088126f) * _e1273) + 0.03089188f) * _e1273) - 0.050174303f) * _e1273) + 0.08897899f) * _e1273) - 0.2145988f) * _e1273) + 1.5707963f) * sqrt((1f - _e1273)));
-                                            let _e1297 = ((((select((3.1415927f - _e1290), _e1290, (_e1272 >= 0f)) + _e1255) - _e1251) + 1.5707964f) * 0.31830987f);
-                                            let _e1313 = ((((_e1259 * _e402) + (_e1260 * _e403)) + (_e1261 * _e404)) / sqrt((((_e1259 * _e1259) + (_e1260 * _e1260)) + (_e1261 * _e1261))));
-                                            let _e1317 = select(-1f, select(1f, _e1313, (_e1313 < 1f)), (_e1313 > -1f));
-                                            let _e1318 = abs(_e1317);
-                                            let _e1335 = (((((((((((((((_e1318 * -0.0012624911f) + 0.00667009f) * _e1318) - 0.017088126f) * _e1318) + 0.03089188f) * _e1318) - 0.050174303f) * _e1318) + 0.08897899f) * _e1318) - 0.2145988f) * _e1318) + 1.5707963f) * sqrt((1f - _e1318)));
-                                            let _e1342 = ((((select((3.1415927f - _e1335), _e1335, (_e1317 >= 0f)) + _e1255) - _e1251) + 1.5707964f) * 0.31830987f);
-                                            let _e1347 = (1f - select(0f, select(1f, _e1297, (_e1297 < 1f)), (_e1297 > 0f)));
-                                            let _e1348 = (1f - select(0f, select(1f, _e1342, (_e1342 < 1f)), (_e1342 > 0f)));
-                                            let _e1350 = (_e1348 != _e1348);
-                                            let _e1352 = select(_e1348, _e1347, ((_e1347 < _e1348) || _e1350));
-                                            let _e1355 = select(_e1348, _e1347, ((_e1347 > _e1348) || _e1350));
-                                            let _e1357 = floor((_e1352 * 32f));
+                                            let _e1283 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1273, 0.00667009f), _e1273, -0.017088126f), _e1273, 0.03089188f), _e1273, -0.050174303f), _e1273, 0.08897899f), _e1273, -0.2145988f), _e1273, 1.5707963f) * sqrt((1f - _e1273)));
+                                            let _e1290 = ((((select((3.1415927f - _e1283), _e1283, (_e1272 >= 0f)) + _e1217) - _e1213) + 1.5707964f) * 0.31830987f);
+                                            let _e1295 = (1f - select(0f, select(1f, _e1252, (_e1252 < 1f)), (_e1252 > 0f)));
+                                            let _e1296 = (1f - select(0f, select(1f, _e1290, (_e1290 < 1f)), (_e1290 > 0f)));
+                                            let _e1298 = (_e1296 != _e1296);
+                                            let _e1300 = select(_e1296, _e1295, ((_e1295 < _e1296) || _e1298));
+                                            let _e1303 = select(_e1296, _e1295, ((_e1295 > _e1296) || _e1298));
+                                            let _e1305 = floor((_e1300 * 32f));
                                             if (_e157 == 1u) {
-                                                let _e1365 = -(floor((_e1355 * -32f)));
-                                                let _e1370 = (select(32f, _e1365, ((_e1365 < 32f) || false)) - _e1357);
-                                                phi_2285_ = select(select(0f, _e1370, ((_e1370 > 0f) || false)), 0f, (_e1355 <= _e1352));
+                                                let _e1313 = -(floor((_e1303 * -32f)));
+                                                let _e1318 = (select(32f, _e1313, ((_e1313 < 32f) || false)) - _e1305);
+                                                phi_2132_ = select(select(0f, _e1318, ((_e1318 > 0f) || false)), 0f, (_e1303 <= _e1300));
                                             } else {
-                                                phi_2285_ = -(floor(((_e1355 - _e1352) * -32f)));
+                                                phi_2132_ = -(floor(((_e1303 - _e1300) * -32f)));
                                             }
-                                            let _e1376 = phi_2285_;
-                                            let _e1384 = (bitcast<u32>((floor(select(0f, select(32f, _e1357, (_e1357 < 32f)), (_e1357 > 0f))) + 8388608f)) - 1258291200u);
-                                            let _e1392 = (bitcast<u32>((floor(select(0f, select(32f, _e1376, (_e1376 < 32f)), (_e1376 > 0f))) + 8388608f)) - 1258291200u);
-                                            if (_e1384 >= 32u) {
-                                                phi_2339_ = u32();
-                                                phi_2340_ = true;
+                                            let _e1324 = phi_2132_;
+                                            let _e1332 = (bitcast<u32>((floor(select(0f, select(32f, _e1305, (_e1305 < 32f)), (_e1305 > 0f))) + 8388608f)) - 1258291200u);
+                                            let _e1340 = (bitcast<u32>((floor(select(0f, select(32f, _e1324, (_e1324 < 32f)), (_e1324 > 0f))) + 8388608f)) - 1258291200u);
+                                            if (_e1332 >= 32u) {
+                                                phi_2186_ = u32();
+                                                phi_2187_ = true;
                                             } else {
-                                                let _e1394 = (_e1392 == 0u);
-                                                if _e1394 {
-                                                    phi_2338_ = u32();
+                                                let _e1342 = (_e1340 == 0u);
+                                                if _e1342 {
+                                                    phi_2185_ = u32();
                                                 } else {
-                                                    if (_e1392 >= 32u) {
-                                                        phi_2335_ = 4294967295u;
+                                                    if (_e1340 >= 32u) {
+                                                        phi_2182_ = 4294967295u;
                                                     } else {
-                                                        phi_2335_ = ((1u << bitcast<u32>((_e1392 & 31u))) - 1u);
+                                                        phi_2182_ = ((1u << bitcast<u32>((_e1340 & 31u))) - 1u);
                                                     }
-                                                    let _e1401 = phi_2335_;
-                                                    phi_2338_ = (_e1401 << bitcast<u32>((_e1384 & 31u)));
+                                                    let _e1349 = phi_2182_;
+                                                    phi_2185_ = (_e1349 << bitcast<u32>((_e1332 & 31u)));
                                                 }
-                                                let _e1406 = phi_2338_;
-                                                phi_2339_ = _e1406;
-                                                phi_2340_ = _e1394;
+                                                let _e1354 = phi_2185_;
+                                                phi_2186_ = _e1354;
+                                                phi_2187_ = _e1342;
                                             }
-                                            let _e1408 = phi_2339_;
-                                            let _e1410 = phi_2340_;
-                                            phi_2359_ = select(select(select(_e1408, 0u, _e1410), 0u, ((((_e1177 * _e1177) + (_e1178 * _e1178)) + (_e1179 * _e1179)) <= 0f)), 0u, _e1167);
+                                            let _e1356 = phi_2186_;
+                                            let _e1358 = phi_2187_;
+                                            phi_2206_ = select(select(select(_e1356, 0u, _e1358), 0u, ((((_e1147 * _e1147) + (_e1148 * _e1148)) + (_e1149 * _e1149)) <= 0f)), 0u, _e1137);
                                         } else {
-                                            phi_2359_ = 0u;
+                                            phi_2206_ = 0u;
                                         }
-                                        let _e1421 = phi_2359_;
-                                        phi_1194_ = (_e716 + 1u);
-                                        phi_1197_ = ((_e718 | _e1154) | _e1421);
+                                        let _e1369 = phi_2206_;
+                                        phi_1080_ = (_e705 + 1u);
+                                        phi_1083_ = ((_e707 | _e1124) | _e1369);
                                     } else {
-                                        phi_1194_ = u32();
-                                        phi_1197_ = u32();
+                                        phi_1080_ = u32();
+                                        phi_1083_ = u32();
                                     }
-                                    let _e1425 = phi_1194_;
-                                    let _e1427 = phi_1197_;
+                                    let _e1373 = phi_1080_;
+                                    let _e1375 = phi_1083_;
                                     continue;
                                     continuing {
-                                        phi_1193_ = _e1425;
-                                        phi_1196_ = _e1427;
-                                        break if !(_e719);
+                                        phi_1079_ = _e1373;
+                                        phi_1082_ = _e1375;
+                                        break if !(_e708);
                                     }
                                 }
                                 if (_e152 == 2u) {
-                                    let _e1487 = (_e711 - 1.5707964f);
-                                    let _e1488 = (_e1487 * 2f);
-                                    let _e1489 = sin(_e711);
-                                    let _e1494 = ((_e689 + (_e1488 * _e1489)) - cos((_e1488 - _e711)));
-                                    phi_2388_ = 0u;
-                                    phi_2391_ = select((_e1494 * 0.25f), (_e1494 * -0.25f), (_e1487 < 0f));
-                                    phi_2393_ = 0f;
+                                    let _e1435 = (_e700 - 1.5707964f);
+                                    let _e1436 = (_e1435 * 2f);
+                                    let _e1437 = sin(_e700);
+                                    let _e1442 = ((_e685 + (_e1436 * _e1437)) - cos((_e1436 - _e700)));
+                                    phi_2235_ = 0u;
+                                    phi_2238_ = select((_e1442 * 0.25f), (_e1442 * -0.25f), (_e1435 < 0f));
+                                    phi_2240_ = 0f;
                                     loop {
-                                        let _e1500 = phi_2388_;
-                                        let _e1502 = phi_2391_;
-                                        let _e1504 = phi_2393_;
-                                        local_5 = _e1504;
-                                        let _e1505 = (_e1500 < 32u);
-                                        if _e1505 {
-                                            let _e1506 = (_e1500 + 1u);
-                                            let _e1510 = (_e1487 + (f32(bitcast<i32>(_e1506)) * 0.09817477f));
-                                            let _e1511 = (_e1510 * 2f);
-                                            let _e1516 = ((_e689 + (_e1511 * _e1489)) - cos((_e1511 - _e711)));
-                                            let _e1520 = select((_e1516 * 0.25f), (_e1516 * -0.25f), (_e1510 < 0f));
-                                            let _e1523 = local_4;
-                                            phi_2389_ = _e1506;
-                                            phi_2392_ = _e1520;
-                                            phi_2394_ = select(_e1504, (_e1504 + (_e1520 - _e1502)), (((_e1523 >> bitcast<u32>((_e1500 & 31u))) & 1u) == 0u));
+                                        let _e1448 = phi_2235_;
+                                        let _e1450 = phi_2238_;
+                                        let _e1452 = phi_2240_;
+                                        local_5 = _e1452;
+                                        let _e1453 = (_e1448 < 32u);
+                                        if _e1453 {
+                                            let _e1454 = (_e1448 + 1u);
+                                            let _e1458 = (_e1435 + (f32(bitcast<i32>(_e1454)) * 0.09817477f));
+                                            let _e1459 = (_e1458 * 2f);
+                                            let _e1464 = ((_e685 + (_e1459 * _e1437)) - cos((_e1459 - _e700)));
+                                            let _e1468 = select((_e1464 * 0.25f), (_e1464 * -0.25f), (_e1458 < 0f));
+                                            let _e1471 = local_4;
+                                            phi_2236_ = _e1454;
+                                            phi_2239_ = _e1468;
+                                            phi_2241_ = select(_e1452, (_e1452 + (_e1468 - _e1450)), (((_e1471 >> bitcast<u32>((_e1448 & 31u))) & 1u) == 0u));
                                         } else {
-                                            phi_2389_ = u32();
-                                            phi_2392_ = f32();
-                                            phi_2394_ = f32();
+                                            phi_2236_ = u32();
+                                            phi_2239_ = f32();
+                                            phi_2241_ = f32();
                                         }
-                                        let _e1532 = phi_2389_;
-                                        let _e1534 = phi_2392_;
-                                        let _e1536 = phi_2394_;
+                                        let _e1480 = phi_2236_;
+                                        let _e1482 = phi_2239_;
+                                        let _e1484 = phi_2241_;
                                         continue;
                                         continuing {
-                                            phi_2388_ = _e1532;
-                                            phi_2391_ = _e1534;
-                                            phi_2393_ = _e1536;
-                                            break if !(_e1505);
+                                            phi_2235_ = _e1480;
+                                            phi_2238_ = _e1482;
+                                            phi_2240_ = _e1484;
+                                            break if !(_e1453);
                                         }
                                     }
-                                    let _e1539 = local_5;
-                                    phi_3135_ = _e606;
-                                    phi_2495_ = (_e610 + 1f);
-                                    phi_2496_ = (_e612 + ((_e670 + ((1f - _e670) * 0.05f)) * _e1539));
+                                    let _e1487 = local_5;
+                                    phi_2742_ = _e602;
+                                    phi_2342_ = (_e606 + 1f);
+                                    phi_2343_ = (_e608 + ((_e666 + ((1f - _e666) * 0.05f)) * _e1487));
                                 } else {
                                     if (_e152 == 1u) {
-                                        phi_2440_ = 0u;
-                                        phi_2443_ = 0f;
+                                        phi_2287_ = 0u;
+                                        phi_2290_ = 0f;
                                         loop {
-                                            let _e1442 = phi_2440_;
-                                            let _e1444 = phi_2443_;
-                                            local_3 = _e1444;
-                                            let _e1445 = (_e1442 < 4u);
-                                            if _e1445 {
+                                            let _e1390 = phi_2287_;
+                                            let _e1392 = phi_2290_;
+                                            local_3 = _e1392;
+                                            let _e1393 = (_e1390 < 4u);
+                                            if _e1393 {
                                                 local = array<type_26, 4>(type_26(4026531855u, 0.0095061f), type_26(251658480u, 0.0270951f), type_26(15732480u, 0.0405571f), type_26(1044480u, 0.0478421f));
-                                                if _e1445 {
+                                                if _e1393 {
                                                 } else {
-                                                    phi_2943_ = true;
+                                                    phi_2569_ = true;
                                                     break;
                                                 }
-                                                let _e1448 = local[_e1442].member;
-                                                let _e1451 = local[_e1442].member_1;
-                                                let _e1453 = local_2;
-                                                phi_2441_ = (_e1442 + 1u);
-                                                phi_2444_ = (_e1444 + (f32(bitcast<i32>(countOneBits((_e1453 & _e1448)))) * _e1451));
+                                                let _e1396 = local[_e1390].member;
+                                                let _e1399 = local[_e1390].member_1;
+                                                let _e1401 = local_2;
+                                                phi_2288_ = (_e1390 + 1u);
+                                                phi_2291_ = (_e1392 + (f32(bitcast<i32>(countOneBits((_e1401 & _e1396)))) * _e1399));
                                             } else {
-                                                phi_2441_ = u32();
-                                                phi_2444_ = f32();
+                                                phi_2288_ = u32();
+                                                phi_2291_ = f32();
                                             }
-                                            let _e1462 = phi_2441_;
-                                            let _e1464 = phi_2444_;
+                                            let _e1410 = phi_2288_;
+                                            let _e1412 = phi_2291_;
                                             continue;
                                             continuing {
-                                                phi_2440_ = _e1462;
-                                                phi_2443_ = _e1464;
-                                                phi_2943_ = _e606;
-                                                break if !(_e1445);
+                                                phi_2287_ = _e1410;
+                                                phi_2290_ = _e1412;
+                                                phi_2569_ = _e602;
+                                                break if !(_e1393);
                                             }
                                         }
-                                        let _e1467 = phi_2943_;
-                                        phi_3133_ = _e1467;
-                                        if _e1467 {
+                                        let _e1415 = phi_2569_;
+                                        phi_2740_ = _e1415;
+                                        if _e1415 {
                                             break;
                                         }
-                                        let _e1469 = local_3;
-                                        let _e1470 = (1f - _e1469);
-                                        phi_3141_ = _e1467;
-                                        phi_2493_ = (_e610 + _e670);
-                                        phi_2494_ = (_e612 + (_e670 * select(0f, select(1f, _e1470, (_e1470 < 1f)), (_e1470 > 0f))));
+                                        let _e1417 = local_3;
+                                        let _e1418 = (1f - _e1417);
+                                        phi_2748_ = _e1415;
+                                        phi_2340_ = (_e606 + _e666);
+                                        phi_2341_ = (_e608 + (_e666 * select(0f, select(1f, _e1418, (_e1418 < 1f)), (_e1418 > 0f))));
                                     } else {
-                                        let _e1432 = local_1;
-                                        phi_3141_ = _e606;
-                                        phi_2493_ = (_e610 + 1f);
-                                        phi_2494_ = (_e612 + ((f32(bitcast<i32>(countOneBits((_e1432 & 4294967295u)))) * -0.03125f) + 1f));
+                                        let _e1380 = local_1;
+                                        phi_2748_ = _e602;
+                                        phi_2340_ = (_e606 + 1f);
+                                        phi_2341_ = (_e608 + ((f32(bitcast<i32>(countOneBits((_e1380 & 4294967295u)))) * -0.03125f) + 1f));
                                     }
-                                    let _e1479 = phi_3141_;
-                                    let _e1481 = phi_2493_;
-                                    let _e1483 = phi_2494_;
-                                    phi_3135_ = _e1479;
-                                    phi_2495_ = _e1481;
-                                    phi_2496_ = _e1483;
+                                    let _e1427 = phi_2748_;
+                                    let _e1429 = phi_2340_;
+                                    let _e1431 = phi_2341_;
+                                    phi_2742_ = _e1427;
+                                    phi_2342_ = _e1429;
+                                    phi_2343_ = _e1431;
                                 }
-                                let _e1544 = phi_3135_;
-                                let _e1546 = phi_2495_;
-                                let _e1548 = phi_2496_;
-                                phi_3134_ = _e1544;
-                                phi_996_ = (_e608 + 1u);
-                                phi_999_ = _e1546;
-                                phi_1001_ = _e1548;
+                                let _e1492 = phi_2742_;
+                                let _e1494 = phi_2342_;
+                                let _e1496 = phi_2343_;
+                                phi_2741_ = _e1492;
+                                phi_889_ = (_e604 + 1u);
+                                phi_892_ = _e1494;
+                                phi_894_ = _e1496;
                             } else {
-                                phi_3134_ = _e606;
-                                phi_996_ = u32();
-                                phi_999_ = f32();
-                                phi_1001_ = f32();
+                                phi_2741_ = _e602;
+                                phi_889_ = u32();
+                                phi_892_ = f32();
+                                phi_894_ = f32();
                             }
-                            let _e1551 = phi_3134_;
-                            let _e1553 = phi_996_;
-                            let _e1555 = phi_999_;
-                            let _e1557 = phi_1001_;
+                            let _e1499 = phi_2741_;
+                            let _e1501 = phi_889_;
+                            let _e1503 = phi_892_;
+                            let _e1505 = phi_894_;
                             continue;
                             continuing {
-                                phi_3048_ = _e1551;
-                                phi_995_ = _e1553;
-                                phi_998_ = _e1555;
-                                phi_1000_ = _e1557;
-                                phi_3133_ = _e1551;
-                                break if !(_e613);
+                                phi_2674_ = _e1499;
+                                phi_888_ = _e1501;
+                                phi_891_ = _e1503;
+                                phi_893_ = _e1505;
+                                phi_2740_ = _e1499;
+                                break if !(_e609);
                             }
                         }
-                        let _e1560 = phi_3133_;
-                        if _e1560 {
+                        let _e1508 = phi_2740_;
+                        if _e1508 {
                             break;
                         }
-                        let _e1562 = local_6;
-                        let _e1565 = local_7;
-                        let _e1567 = local_8;
-                        phi_2504_ = select(1f, (_e1565 / _e1567), (_e1562 > 0f));
+                        let _e1510 = local_6;
+                        let _e1513 = local_7;
+                        let _e1515 = local_8;
+                        phi_2351_ = select(1f, (_e1513 / _e1515), (_e1510 > 0f));
                     } else {
-                        phi_2504_ = 1f;
+                        phi_2351_ = 1f;
                     }
-                    let _e1571 = phi_2504_;
-                    if _e601 {
-                        let _e1577 = pow(_e1571, _e147.member_6);
-                        if (_e1577 != _e1577) {
-                            phi_2925_ = true;
+                    let _e1519 = phi_2351_;
+                    if (_e147.member_6 == 2f) {
+                        phi_2364_ = (_e1519 * _e1519);
+                    } else {
+                        if (_e147.member_6 == 1f) {
+                            phi_2363_ = _e1519;
                         } else {
-                            phi_2925_ = (0.03f >= _e1577);
+                            phi_2363_ = pow(_e1519, _e147.member_6);
                         }
-                        let _e1581 = phi_2925_;
-                        let _e1583 = (select(_e1577, 0.03f, _e1581) * 0.6666667f);
-                        phi_2545_ = (bitcast<u32>((floor(((select(0f, select(1f, _e1583, (_e1583 < 1f)), (_e1583 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
-                    } else {
-                        phi_2545_ = (bitcast<u32>((floor(170.5f) + 8388608f)) - 1258291200u);
+                        let _e1525 = phi_2363_;
+                        phi_2364_ = _e1525;
                     }
-                    let _e1595 = phi_2545_;
-                    terms.member[_e185] = _e1595;
+                    let _e1528 = phi_2364_;
+                    let _e1533 = (select(1f, select(0.03f, _e1528, ((_e1528 > 0.03f) || false)), _e597) * 0.6666667f);
+                    terms.member[_e185] = (bitcast<u32>((floor(((select(0f, select(1f, _e1533, (_e1533 < 1f)), (_e1533 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
                     edges.member[_e185] = ((((64u * (bitcast<u32>((floor(select(0f, select(3f, _e314, (_e314 < 3f)), (_e314 > 0f))) + 8388608f)) - 1258291200u)) + (16u * (bitcast<u32>((floor(select(0f, select(3f, _e329, (_e329 < 3f)), (_e329 > 0f))) + 8388608f)) - 1258291200u))) + (4u * (bitcast<u32>((floor(select(0f, select(3f, _e345, (_e345 < 3f)), (_e345 > 0f))) + 8388608f)) - 1258291200u))) + (bitcast<u32>((floor(select(0f, select(3f, _e361, (_e361 < 3f)), (_e361 > 0f))) + 8388608f)) - 1258291200u));
                 }
             }

@@ -6,7 +6,7 @@ use aokit_shaders::common::lanes::{F32x8, Lanes};
 use aokit_shaders::common::read::TexelBuffer;
 use aokit_shaders::glam::{UVec2, vec3};
 use aokit_shaders::gtao::denoise::{denoise_lanes, is_last_pass};
-use aokit_shaders::gtao::main_pass::{finish_pixel, pixel_setup, slices_visibility};
+use aokit_shaders::gtao::main_pass::{final_visibility, finish_pixel, pixel_setup, slices_visibility};
 use aokit_shaders::gtao::prefilter::{mip_falloff, mip_filter, prefilter_far, working_value};
 use aokit_shaders::gtao::{
     GtaoParams, MIP_LEVELS, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
@@ -134,6 +134,7 @@ pub fn main_pass_x8(
 ) {
     let (packed, valid, px) = pixel_setup::<F32x8>(params, mips, normals, lanes_of_run(first, terms.len()));
     let (vis, bent) = slices_visibility(params, mips, &px);
+    let vis = final_visibility(vis, params.final_value_power);
     for (i, (t, e)) in terms.iter_mut().zip(edges.iter_mut()).enumerate() {
         let b = vec3(bent.x.lane(i), bent.y.lane(i), bent.z.lane(i));
         let n = vec3(px.n.x.lane(i), px.n.y.lane(i), px.n.z.lane(i));
@@ -148,9 +149,9 @@ pub fn run_vbao_into(params: &VbaoParams, mips: &[f32], normals: &[u32], terms: 
     let size = params.gtao.view.size();
     crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |first, t, e| {
         let (packed, valid, px) = pixel_setup::<F32x8>(&params.gtao, mips, normals, lanes_of_run(first, t.len()));
-        let vis = vbao_visibility(params, mips, &px);
+        let vis = final_visibility(vbao_visibility(params, mips, &px), params.gtao.final_value_power);
         for (i, (t, e)) in t.iter_mut().zip(e.iter_mut()).enumerate() {
-            *t = vbao_term(params, F32x8::mask_lane(valid, i), vis.lane(i));
+            *t = vbao_term(F32x8::mask_lane(valid, i), vis.lane(i));
             *e = F32x8::index_lane(packed, i);
         }
     });

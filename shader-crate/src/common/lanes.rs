@@ -14,7 +14,7 @@ use spirv_std::num_traits::Float;
 
 use crate::common::screen_space::clamp_index;
 use crate::glam::{UVec2, Vec2, Vec3, vec2, vec3};
-use core::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Shr, Sub};
+use core::ops::{Add, BitAnd, BitOr, BitXor, Div, Mul, Neg, Shr, Sub};
 
 /// A number per lane: `f32` (one pixel) or a vector of pixels' values.
 pub trait Lanes:
@@ -45,7 +45,8 @@ pub trait Lanes:
         + Mul<Output = Self::Index>
         + Shr<u32, Output = Self::Index>
         + BitAnd<Output = Self::Index>
-        + BitOr<Output = Self::Index>;
+        + BitOr<Output = Self::Index>
+        + BitXor<Output = Self::Index>;
 
     fn splat(v: f32) -> Self;
     /// The value whose lane `i` is `f(i)`.
@@ -56,6 +57,14 @@ pub trait Lanes:
     /// SPIR-V has no pointers to pointers).
     fn gather(data: &[f32], index: impl Fn(usize) -> usize) -> Self;
     fn sqrt(self) -> Self;
+    /// `1/√x` for `x > 0` (within 4 ulp on the CPU's lanes; GLSL.std.450 InverseSqrt on SPIR-V,
+    /// one instruction on a GPU, where a square root and a division are two and more); `±∞`
+    /// for ±0 and +0 for +∞ natively, undefined on the GPU for x ≤ 0 (GLSL). The kernels take it
+    /// of squared lengths, for a length and a direction at once: `|d| = |d|²·(1/|d|)`.
+    fn inverse_sqrt(self) -> Self;
+    /// `self·a + b` with one rounding (a fused multiply-add: GLSL.std.450 Fma on SPIR-V,
+    /// `vfmadd` natively), so the scalar and lane versions of a polynomial agree bit for bit.
+    fn mul_add(self, a: Self, b: Self) -> Self;
     fn abs(self) -> Self;
     /// `max` and `min` return `other` where `self` is NaN (as `f32::max`/`min` do for one NaN).
     fn max(self, other: Self) -> Self;
@@ -193,6 +202,52 @@ impl Lanes for f32 {
     #[inline]
     fn sqrt(self) -> Self {
         Float::sqrt(self)
+    }
+    #[inline]
+    fn inverse_sqrt(self) -> Self {
+        #[cfg(target_arch = "spirv")]
+        let r = {
+            let mut r = 0.0f32;
+            // SAFETY: a pure float operation (GLSL.std.450 InverseSqrt, instruction 32) that
+            // stores its result in `r`.
+            unsafe {
+                core::arch::asm!(
+                    "%glsl = OpExtInstImport \"GLSL.std.450\"",
+                    "%r = OpExtInst typeof*{r} %glsl 32 {x}",
+                    "OpStore {r} %r",
+                    x = in(reg) self,
+                    r = in(reg) &mut r,
+                );
+            }
+            r
+        };
+        #[cfg(not(target_arch = "spirv"))]
+        let r = 1.0 / self.sqrt();
+        r
+    }
+    #[inline]
+    fn mul_add(self, a: f32, b: f32) -> f32 {
+        #[cfg(target_arch = "spirv")]
+        let r = {
+            let mut r = 0.0f32;
+            // SAFETY: a pure float operation (GLSL.std.450 Fma, instruction 50) that stores its
+            // result in `r`.
+            unsafe {
+                core::arch::asm!(
+                    "%glsl = OpExtInstImport \"GLSL.std.450\"",
+                    "%r = OpExtInst typeof*{r} %glsl 50 {x} {a} {b}",
+                    "OpStore {r} %r",
+                    x = in(reg) self,
+                    a = in(reg) a,
+                    b = in(reg) b,
+                    r = in(reg) &mut r,
+                );
+            }
+            r
+        };
+        #[cfg(not(target_arch = "spirv"))]
+        let r = f32::mul_add(self, a, b);
+        r
     }
     #[inline]
     fn abs(self) -> Self {
@@ -506,6 +561,23 @@ mod x8 {
         #[inline(always)]
         fn sqrt(self) -> Self {
             F32x8(self.0.sqrt())
+        }
+        /// `vfmadd` (the build targets FMA: x86-64-v3); one rounding, as the scalar version.
+        #[inline(always)]
+        fn mul_add(self, a: Self, b: Self) -> Self {
+            F32x8(self.0.mul_add(a.0, b.0))
+        }
+        /// `vrsqrtps` (relative error ≤ 1.5·2⁻¹²) and one Newton–Raphson step
+        /// `y·(1.5 − 0.5·x·y²)`: a few ulp, without the square root's and the division's
+        /// latency. Where the step has no meaning (x = ±0 or +∞, and subnormal x, which
+        /// `vrsqrtps` takes as 0) the estimate ±∞ or +0 stands, as `1/√x` gives it (but ∞ for a
+        /// subnormal x).
+        #[inline(always)]
+        fn inverse_sqrt(self) -> Self {
+            let y = self.0.recip_sqrt();
+            let refined = y * (f32x8::splat(1.5) - f32x8::splat(0.5) * self.0 * y * y);
+            let exact_estimate = y.simd_eq(f32x8::ZERO) | y.abs().simd_eq(f32x8::splat(f32::INFINITY));
+            F32x8(wide::Select::select(exact_estimate, y, refined))
         }
         #[inline(always)]
         fn abs(self) -> Self {

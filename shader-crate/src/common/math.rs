@@ -92,10 +92,16 @@ pub fn floor(x: f32) -> f32 {
 /// `x^p`, with the default `p = 2` (XeGTAO's SampleDistributionPower, spec
 /// gtao-raymarch-hybrid §2.6.3 step 7) as the correctly rounded product `x·x` rather than a
 /// `powf` call per sample (`exp2(p·log2 x)` on the GPU; glibc's `powf` is within 0.82 ulp, so
-/// it may differ from `x·x` in the last bit).
+/// it may differ from `x·x` in the last bit), and `p = 1` (VBAO's FinalValuePower) as `x`.
 #[inline]
 pub fn pow<L: Lanes>(x: L, p: f32) -> L {
-    if p == 2.0 { x * x } else { x.powf(p) }
+    if p == 2.0 {
+        x * x
+    } else if p == 1.0 {
+        x
+    } else {
+        x.powf(p)
+    }
 }
 
 /// `ceil(x) = −floor(−x)`, bit for bit (see [`floor`]).
@@ -144,20 +150,22 @@ pub fn fast_acos<L: Lanes>(x: L) -> L {
 /// computes the same value (the platforms' own `acos` differ by several ulp: libm, `wide`'s
 /// lanes, a GPU driver's lowering): Abramowitz & Stegun 4.4.46,
 /// `acos(a) = sqrt(1 − a)·(c0 + c1·a + … + c7·a⁷)` for `a = |x|` (|error| ≤ 2·10⁻⁸ rad in exact
-/// arithmetic; ≤ 5·10⁻⁷ rad in binary32, `tests/kernel_math.rs`), Horner order, and
+/// arithmetic; ≤ 5·10⁻⁷ rad in binary32, `tests/kernel_math.rs`), Horner order with fused
+/// multiply-adds ([`Lanes::mul_add`]: seven instructions, each rounded once), and
 /// `π − acos(|x|)` for negative x.
 #[inline]
 #[allow(clippy::approx_constant)] // c0 is A&S's 1.5707963050, not π/2 rounded
 pub fn precise_acos<L: Lanes>(x: L) -> L {
     let a = x.abs();
-    // Horner, written out (rust-gpu compiles no slice iterators).
-    let p = ((((((a * -0.001_262_491_1 + 0.006_670_09) * a - 0.017_088_126) * a + 0.030_891_88) * a - 0.050_174_303)
-        * a
-        + 0.088_978_99)
-        * a
-        - 0.214_598_8)
-        * a
-        + 1.570_796_3;
+    // Horner, written out (rust-gpu compiles no slice iterators): p ← p·a + c_k.
+    let c = L::splat;
+    let p = c(-0.001_262_491_1).mul_add(a, c(0.006_670_09));
+    let p = p.mul_add(a, c(-0.017_088_126));
+    let p = p.mul_add(a, c(0.030_891_88));
+    let p = p.mul_add(a, c(-0.050_174_303));
+    let p = p.mul_add(a, c(0.088_978_99));
+    let p = p.mul_add(a, c(-0.214_598_8));
+    let p = p.mul_add(a, c(1.570_796_3));
     let r = p * (-a + 1.0).sqrt();
     L::select(x.ge(L::splat(0.0)), r, -r + core::f32::consts::PI)
 }

@@ -12,7 +12,7 @@ use crate::common::denoise_terms::{edges, pack_bent_normal, pack_edges, store_te
 use crate::common::gbuffer_read::decoded_normals;
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, select_v3};
 use crate::common::math::{depth_or_far, fast_acos, is_valid_depth, lerp, pow, rotate_minimal, sat, u32_to_f32};
-use crate::common::noise::spatio_temporal_noise;
+use crate::common::noise::spatio_temporal_noise_lanes;
 use crate::common::normal_codec::encode_normal;
 use crate::common::screen_space::{neighbour, neighbour_lanes, view_pos};
 use crate::glam::{UVec2, Vec3, vec3};
@@ -101,7 +101,7 @@ pub fn pixel_setup<L: Lanes>(
     let r_px = L::splat(r) / (z * 2.0 * view.tan_half_fov.x / view.res.x);
     let min_s = L::splat(1.3) / r_px;
     let frame = params.noise_frame;
-    let xi = L::v2_from_lanes(move |i| spatio_temporal_noise(L::texel_lane(p, i), frame));
+    let xi = spatio_temporal_noise_lanes::<L>(p, frame);
     let mip_threshold = mip_threshold(params);
     (packed, is_valid_depth(zc, view.far), PixelSetup { uv, pos, v, n, r, r_px, min_s, xi, mip_threshold })
 }
@@ -113,12 +113,14 @@ pub fn pixel_setup<L: Lanes>(
 pub fn gtao_pixel(params: &GtaoParams, mips: &[f32], normals: &[u32], p: UVec2) -> GtaoPixel {
     let (packed, valid, px) = pixel_setup::<f32>(params, mips, normals, p);
     let (vis, bent) = if valid { slices_visibility(params, mips, &px) } else { (1.0, Vec3::ZERO) };
+    let vis = final_visibility(vis, params.final_value_power);
     GtaoPixel { term: finish_pixel(params, valid, vis, bent, px.n), edges: packed }
 }
 
-/// The stored term of a pixel from the slices' average visibility `vis` and bent-normal sum
-/// (spec gtao-raymarch-hybrid §2.6.4–§2.6.5): the final power, and with bent normals the normalised direction.
-/// Background (`valid` false): visible, its bent normal toward the camera.
+/// The stored term of a pixel from its visibility after the final power ([`final_visibility`]
+/// of the slices' average) and the slices' bent-normal sum (spec gtao-raymarch-hybrid
+/// §2.6.4–§2.6.5): with bent normals also the normalised direction. Background (`valid`
+/// false): visible, its bent normal toward the camera.
 #[inline]
 pub fn finish_pixel(params: &GtaoParams, valid: bool, vis: f32, bent: Vec3, n: Vec3) -> u32 {
     if !valid {
@@ -128,7 +130,6 @@ pub fn finish_pixel(params: &GtaoParams, valid: bool, vis: f32, bent: Vec3, n: V
             store_term(1.0)
         };
     }
-    let vis = final_visibility(vis, params.final_value_power);
     if params.bent_normals != 0 {
         let l = bent.length();
         let b = if l > 0.0 { bent / l } else { n };
@@ -179,10 +180,11 @@ fn slice_bent_normal<L: Lanes>(sl: &SliceFrame<L>, h0: L, h1: L, v: L::V3, len: 
     rotate_minimal::<L>(L::V3::new(zero, zero, L::splat(-1.0)), v, local) * len
 }
 
-/// `max(V^p, 0.03)` (spec gtao-raymarch-hybrid §2.6.4; VBAO finalises the same way, spec vbao §4).
+/// `max(V^p, 0.03)` (spec gtao-raymarch-hybrid §2.6.4; VBAO finalises the same way, spec vbao
+/// §4), of one pixel or of `L::LANES` pixels.
 #[inline]
-pub fn final_visibility(vis: f32, power: f32) -> f32 {
-    Float::max(Float::powf(vis, power), 0.03)
+pub fn final_visibility<L: Lanes>(vis: L, power: f32) -> L {
+    pow(vis, power).max(L::splat(0.03))
 }
 
 /// Falloff weight `W(D) = sat((R − D)/falloffRange)` (spec gtao-raymarch-hybrid §2.6.2) as XeGTAO
@@ -351,9 +353,9 @@ fn slice_horizons<L: Lanes>(
     falloff: &Falloff,
 ) -> (L, L) {
     let steps = params.steps.max(1);
-    let half_pi = core::f32::consts::FRAC_PI_2;
-    let low0 = (sl.gamma + half_pi).cos();
-    let low1 = (sl.gamma - half_pi).cos();
+    // cos(γ ± π/2) = ∓sin γ (spec gtao-raymarch-hybrid §2.6.3 step 6).
+    let low1 = sl.gamma.sin();
+    let low0 = -low1;
     let (mut c0, mut c1) = (low0, low1);
     let thin = params.thin_occluder_compensation;
     let mut k = 0;
@@ -376,12 +378,15 @@ pub fn projected_length_fudge<L: Lanes>(len: L) -> L {
 
 /// Horizon cosine of one sample, faded toward the hemisphere fallback `low` with distance
 /// (spec gtao-raymarch-hybrid §2.6.3 step 7; thin-occluder compensation stretches z of the falloff distance).
-/// `dot(Δ/|Δ|, v)` is evaluated as `dot(Δ, v)/|Δ|` (one division, not three), and the stretched
-/// length only when the compensation is on.
+/// `dot(Δ/|Δ|, v)` is evaluated as `dot(Δ, v)·(1/|Δ|)` and `|Δ|` as `|Δ|²·(1/|Δ|)`, one inverse
+/// square root for both ([`Lanes::inverse_sqrt`]), and the stretched length only when the
+/// compensation is on.
 #[inline]
 fn horizon_cosine<L: Lanes>(delta: L::V3, v: L::V3, thin: f32, falloff: &Falloff, low: L) -> L {
-    let d = delta.length();
-    let shc = delta.dot(v) / d;
+    let len_sq = delta.dot(delta);
+    let inv_len = len_sq.inverse_sqrt();
+    let d = len_sq * inv_len;
+    let shc = delta.dot(v) * inv_len;
     let stretched = if thin == 0.0 { d } else { L::V3::new(delta.x(), delta.y(), delta.z() * (1.0 + thin)).length() };
     lerp(low, shc, falloff.weight(stretched))
 }

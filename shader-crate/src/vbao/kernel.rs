@@ -60,10 +60,10 @@ pub const MAX_EDGE_TOLERANCE: f32 = 2.0 * core::f32::consts::PI / SECTORS as f32
 
 /// Position of a slice angle θ on the half-circle around the projected normal at γ,
 /// `x = clamp((θ − γ + π/2)/π, 0, 1)`: 0 is the edge on side 1, 1 the edge on side 0 (spec
-/// vbao §2.4).
+/// vbao §2.4). Evaluated with the product by 1/π, not a division.
 #[inline]
 pub fn sector_coordinate<L: Lanes>(theta: L, gamma: L) -> L {
-    sat((theta - gamma + core::f32::consts::FRAC_PI_2) / core::f32::consts::PI)
+    sat((theta - gamma + core::f32::consts::FRAC_PI_2) * core::f32::consts::FRAC_1_PI)
 }
 
 /// The mask bits of one depth sample `delta_f = Q − P` on the slice side with sign `side` (+1
@@ -88,7 +88,7 @@ pub fn sample_bits<L: Lanes>(delta_f: L::V3, v: L::V3, n: L::V3, side: f32, thic
     // n − c·(n·c)/(c·c) (one division, no square root).
     let axis = toward.cross(v);
     let projected = n - axis * (n.dot(axis) / axis.dot(axis));
-    let inv_len = L::splat(1.0) / projected.length();
+    let inv_len = projected.dot(projected).inverse_sqrt();
     let cos_n = sat(projected.dot(v) * inv_len);
     let angle = precise_acos(cos_n);
     let gamma = L::select(toward.dot(projected).lt(zero), -angle, angle);
@@ -107,7 +107,7 @@ pub fn sample_bits<L: Lanes>(delta_f: L::V3, v: L::V3, n: L::V3, side: f32, thic
 /// The angle between `delta` and the unit vector `v` ([`precise_acos`]).
 #[inline]
 fn angle_to<L: Lanes>(delta: L::V3, v: L::V3) -> L {
-    precise_acos(clamp(delta.dot(v) / delta.length(), -1.0, 1.0))
+    precise_acos(clamp(delta.dot(v) * delta.dot(delta).inverse_sqrt(), -1.0, 1.0))
 }
 
 /// The signed cosine-weighted arc from 0 to θ, `A(θ) = sgn(θ)·a(θ)` with XeGTAO's `a`: an
@@ -181,8 +181,9 @@ fn slice_mask<L: Lanes>(params: &VbaoParams, mips: &[f32], px: &PixelSetup<L>, s
 /// falloff).
 #[inline]
 fn gated_bits<L: Lanes>(params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>, side: f32) -> L::Index {
-    let beyond =
-        if params.gate_radius > 0.0 { delta.length().gt(L::splat(params.gate_radius)) } else { L::mask_splat(false) };
+    // |Δ| > R_g as |Δ|² > R_g²: no square root.
+    let gate = params.gate_radius;
+    let beyond = if gate > 0.0 { delta.dot(delta).gt(L::splat(gate * gate)) } else { L::mask_splat(false) };
     // Skip the sample's arithmetic when no lane needs it (always, for one pixel beyond R_g).
     if !L::any(L::not(beyond)) {
         return L::index_splat(0);
@@ -198,17 +199,14 @@ fn gated_bits<L: Lanes>(params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>, s
 pub fn vbao_pixel(params: &VbaoParams, mips: &[f32], normals: &[u32], p: UVec2) -> GtaoPixel {
     let (packed, valid, px) = pixel_setup::<f32>(&params.gtao, mips, normals, p);
     let vis = if valid { vbao_visibility(params, mips, &px) } else { 1.0 };
-    GtaoPixel { term: vbao_term(params, valid, vis), edges: packed }
+    GtaoPixel { term: vbao_term(valid, final_visibility(vis, params.gtao.final_value_power)), edges: packed }
 }
 
-/// The stored term of a pixel from its averaged visibility (spec vbao §4): the final power and
-/// the 0.03 clamp; background (`valid` false) is visible.
+/// The stored term of a pixel from its visibility after the final power and the 0.03 clamp
+/// ([`final_visibility`], spec vbao §4); background (`valid` false) is visible.
 #[inline]
-pub fn vbao_term(params: &VbaoParams, valid: bool, vis: f32) -> u32 {
-    if !valid {
-        return store_term(1.0);
-    }
-    store_term(final_visibility(vis, params.gtao.final_value_power))
+pub fn vbao_term(valid: bool, final_vis: f32) -> u32 {
+    store_term(if valid { final_vis } else { 1.0 })
 }
 
 /// The average over the slices of their masks' visibility under the chosen weighting (spec
