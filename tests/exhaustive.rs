@@ -972,10 +972,11 @@ fn sector_bits_over_every_f32_of_0_to_1() {
 /// `sector_coordinate(θ, γ) = sat((θ − γ + π/2)/π)` (spec vbao §2.4) at every f32 θ within
 /// 4 096 ulps of each of the 33 sector edges θ_k = γ − π/2 + kπ/32 (k = 0 … 32; k = 0 and 32
 /// are the clamps), for 9 slice normals γ: within 2⁻²² of the real-number value
-/// (binary32: θ ⊖ γ and ⊕ π/2 err ≤ 2⁻²⁴·2 each for magnitudes < 4, ⊗ 1/π and the constants'
-/// roundings add < 2⁻²⁴, so < 2⁻²³ in all), exactly 0 and 1 beyond the clamps, monotone in θ,
-/// and the 8-lane version equals the scalar one. 5 008 θ fall in a sector other than the
-/// real-number one (all within the 2⁻²² band of an edge).
+/// (binary32: θ ⊖ γ and ⊕ π/2 err ≤ 2⁻²³ each for magnitudes < 4, 0.64·2⁻²³ after the product
+/// by 1/π; 1/π's rounding times a numerator up to π, π/2's rounding and the product's add
+/// < 1.5·2⁻²⁴, so < 1.4·2⁻²³ in all), exactly 0 and 1 beyond the clamps, monotone in θ,
+/// and the 8-lane version equals the scalar one. It prints how many θ fall in a sector other
+/// than the real-number one (5 008, all within the 2⁻²² band of an edge).
 ///
 /// Domain 9 γ × 33 edges × 8 193 θ = 2.4 M; measured 0.1 s.
 #[test]

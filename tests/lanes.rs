@@ -2,9 +2,9 @@
 //! against the same kernels run one pixel at a time, as the GPU runs them. Where the lanes use
 //! only IEEE-exact operations (add, mul, div, sqrt, compares) the two must agree bit for bit:
 //! VAO, SVAO pass 1, the ray march and XeGTAO's denoiser. The blur's weights, XeGTAO's slices
-//! and VBAO's sectors use `wide`'s exp2/sin/cos/acos/ln polynomials, a few ulp from libm's: the
-//! blur agrees within 1e-6, XeGTAO's and VBAO's 8-bit terms may differ by one step in a few
-//! pixels.
+//! and VBAO's sectors use `wide`'s exp2/sin/cos/acos/ln/pow polynomials, a few ulp from libm's,
+//! and the lanes' inverse square root (`vrsqrtps` and a Newton step, within 4 ulp): the blur
+//! agrees within 1e-6, XeGTAO's and VBAO's 8-bit terms may differ by one step in a few pixels.
 
 mod common;
 
@@ -141,8 +141,9 @@ fn vbao_lanes_match_one_pixel_at_a_time_within_one_step() {
     let size = frame.camera.view.size();
     let base = VbaoSettings::default().params(&frame.desc());
     let mips = aokit_cpu::gtao::run_prefilter(&base.gtao, &g.depth);
-    // Every weighting, and both sector rules: wide's acos/sin/cos/ln are a few ulp from libm's,
-    // so a sector boundary or an 8-bit rounding may flip in a few pixels, never more than a step.
+    // Every weighting, and both sector rules: wide's acos/sin/cos/ln/pow and the lanes' inverse
+    // square root are a few ulp from libm's and from 1/√x, so a sector boundary or an 8-bit
+    // rounding may flip in a few pixels, never more than a step.
     for (weighting, rule) in
         [(WEIGHT_UNIFORM, RULE_PAPER), (WEIGHT_COSINE_BLENDER, RULE_TOUCH), (WEIGHT_COSINE_EXACT, RULE_PAPER)]
     {
@@ -203,9 +204,10 @@ fn lane_clamp_equals_the_scalar_clamp_bit_for_bit() {
 
 /// The lanes' inverse square root (`vrsqrtps` and one Newton–Raphson step) is within 4 ulp of
 /// the correctly rounded 1/√x (computed in f64) at every 251st float from the smallest normal
-/// to the largest (about 8.4 M values, every binade and mantissa pattern), and gives the limits
+/// to the largest (about 8.4 M values, every binade; `vrsqrtps`' table differs between CPU
+/// makers, the bound is Zen 3's worst, 3 ulp, plus one), and gives the limits
 /// at the ends as 1/√x does: ±∞ for ±0, +0 for +∞, NaN for NaN. The kernels take it of squared lengths; 4 ulp
-/// is 2.4·10⁻⁷ relative, far below the 1/255 step of a stored term.
+/// is at most 4.8·10⁻⁷ relative, far below the 1/255 step of a stored term.
 #[test]
 fn lane_inverse_sqrt_is_within_4_ulp_of_the_correctly_rounded_value() {
     use aokit_shaders::common::lanes::{F32x8, Lanes};
@@ -228,6 +230,5 @@ fn lane_inverse_sqrt_is_within_4_ulp_of_the_correctly_rounded_value() {
     assert_eq!(ends.lane(1), f32::NEG_INFINITY, "1/√−0 = 1/−0");
     assert_eq!(ends.lane(2).to_bits(), 0.0f32.to_bits());
     assert!(ends.lane(3).is_nan());
-    assert_eq!([ends.lane(4), ends.lane(5), ends.lane(6)], [1.0, 0.5, 2.0], "exact powers of four");
     eprintln!("  worst {} ulp at x = {:e}", worst.0, worst.1);
 }

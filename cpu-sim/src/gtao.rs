@@ -121,8 +121,8 @@ pub fn run_main_into(params: &GtaoParams, mips: &[f32], normals: &[u32], terms: 
 }
 
 /// XeGTAO's MainPass for `terms.len()` ≤ 8 consecutive pixels of a row from `first`: the
-/// per-pixel setup and finish of [`aokit_shaders::gtao::gtao_pixel`] per lane, the slices (all
-/// the arithmetic) on eight lanes at once. Missing lanes repeat the last pixel; lanes without a
+/// setup, the slices and the final power of [`aokit_shaders::gtao::gtao_pixel`] on eight lanes
+/// at once, the stored term per lane. Missing lanes repeat the last pixel; lanes without a
 /// usable depth are computed and discarded, as on a GPU.
 pub fn main_pass_x8(
     params: &GtaoParams,
@@ -144,7 +144,8 @@ pub fn main_pass_x8(
 }
 
 /// VBAO's main pass into the caller's term and edge buffers, eight pixels of a row per call of
-/// the shader crate's lane-generic [`vbao_visibility`] (the setups and the final term per lane).
+/// the shader crate's lane-generic [`pixel_setup`], [`vbao_visibility`] and [`final_visibility`]
+/// (the stored term per lane).
 pub fn run_vbao_into(params: &VbaoParams, mips: &[f32], normals: &[u32], terms: &mut [u32], edges: &mut [u32]) {
     let size = params.gtao.view.size();
     crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |first, t, e| {

@@ -13,8 +13,8 @@
 // `core::intrinsics::round_ties_even_f32`: GLSL.std.450 RoundEven (no stable `core` path).
 #![cfg_attr(target_arch = "spirv", feature(core_intrinsics))]
 #![cfg_attr(target_arch = "spirv", allow(internal_features))]
-// `asm!`: GLSL.std.450 InverseSqrt (`Lanes::inverse_sqrt`), and `spirv_std::ray_query!` expands
-// one in the ray-query variants.
+// `asm!`: GLSL.std.450 InverseSqrt and Fma (`Lanes::inverse_sqrt`, `Lanes::mul_add`), and
+// `spirv_std::ray_query!` expands one in the ray-query variants.
 #![cfg_attr(target_arch = "spirv", feature(asm_experimental_arch))]
 #![allow(clippy::too_many_arguments)]
 

@@ -57,13 +57,16 @@ pub trait Lanes:
     /// SPIR-V has no pointers to pointers).
     fn gather(data: &[f32], index: impl Fn(usize) -> usize) -> Self;
     fn sqrt(self) -> Self;
-    /// `1/√x` for `x > 0` (within 4 ulp on the CPU's lanes; GLSL.std.450 InverseSqrt on SPIR-V,
-    /// one instruction on a GPU, where a square root and a division are two and more); `±∞`
-    /// for ±0 and +0 for +∞ natively, undefined on the GPU for x ≤ 0 (GLSL). The kernels take it
-    /// of squared lengths, for a length and a direction at once: `|d| = |d|²·(1/|d|)`.
+    /// `1/√x` for normal `x > 0`: GLSL.std.450 InverseSqrt on SPIR-V (one instruction on a GPU,
+    /// where a square root and a division are two and more), `1/√x` natively, on the CPU's lanes
+    /// within 4 ulp (3 measured on Zen 3) and ∞ for a subnormal x. `±∞` for ±0 and +0 for +∞
+    /// natively, undefined on the GPU for x ≤ 0 (GLSL). The kernels take it of squared lengths,
+    /// for a length and a direction at once: `|d| = |d|²·(1/|d|)`.
     fn inverse_sqrt(self) -> Self;
-    /// `self·a + b` with one rounding (a fused multiply-add: GLSL.std.450 Fma on SPIR-V,
-    /// `vfmadd` natively), so the scalar and lane versions of a polynomial agree bit for bit.
+    /// `self·a + b`, natively with one rounding (`vfmadd`; a software `fmaf` on a CPU without
+    /// FMA), so the CPU's scalar and lane versions of a polynomial agree bit for bit. On SPIR-V
+    /// GLSL.std.450 Fma, fused on GPUs with an FMA unit (Vulkan also allows a multiply and an
+    /// add).
     fn mul_add(self, a: Self, b: Self) -> Self;
     fn abs(self) -> Self;
     /// `max` and `min` return `other` where `self` is NaN (as `f32::max`/`min` do for one NaN).
@@ -562,10 +565,19 @@ mod x8 {
         fn sqrt(self) -> Self {
             F32x8(self.0.sqrt())
         }
-        /// `vfmadd` (the build targets FMA: x86-64-v3); one rounding, as the scalar version.
+        /// `vfmadd` where the build targets FMA (x86-64-v3, the default); elsewhere the
+        /// scalar fused multiply-add per lane (`wide` would round twice), so one rounding
+        /// either way, as the scalar version.
         #[inline(always)]
         fn mul_add(self, a: Self, b: Self) -> Self {
-            F32x8(self.0.mul_add(a.0, b.0))
+            #[cfg(target_feature = "fma")]
+            let r = F32x8(self.0.mul_add(a.0, b.0));
+            #[cfg(not(target_feature = "fma"))]
+            let r = {
+                let (x, a, b) = (self.0.to_array(), a.0.to_array(), b.0.to_array());
+                F32x8(f32x8::new(core::array::from_fn(|i| x[i].mul_add(a[i], b[i]))))
+            };
+            r
         }
         /// `vrsqrtps` (relative error ≤ 1.5·2⁻¹²) and one Newton–Raphson step
         /// `y·(1.5 − 0.5·x·y²)`: a few ulp, without the square root's and the division's
@@ -755,16 +767,35 @@ mod x8 {
         fn index_lane(i: i32x8, k: usize) -> u32 {
             i.as_array()[k] as u32
         }
+        /// Eight consecutive indices (a row of pixels) are one load, others eight
+        /// ([`run_start`]).
         #[inline(always)]
         fn gather_word(data: &[u32], i: i32x8) -> i32x8 {
+            if let Some(run) = run_start(i).and_then(|k| data.get(k..k + 8)) {
+                return bytemuck::cast::<[u32; 8], i32x8>(run.try_into().expect("eight words"));
+            }
             let i = i.to_array();
             i32x8::new(core::array::from_fn(|k| data[i[k] as usize] as i32))
         }
+        /// Eight consecutive indices (a row of pixels) are one load, others eight
+        /// ([`run_start`]).
         #[inline(always)]
         fn gather_index(data: &[f32], i: i32x8) -> Self {
+            if let Some(run) = run_start(i).and_then(|k| data.get(k..k + 8)) {
+                return F32x8(f32x8::new(run.try_into().expect("eight floats")));
+            }
             let i = i.to_array();
             F32x8(f32x8::new(core::array::from_fn(|k| data[i[k] as usize])))
         }
+    }
+
+    /// The first index when the eight are `k, k + 1, …, k + 7` with k ≥ 0 (one compare of the
+    /// vector): a row of consecutive pixels, which the gathers then read with one load.
+    #[inline(always)]
+    fn run_start(i: i32x8) -> Option<usize> {
+        let first = i.as_array()[0];
+        let run = i32x8::splat(first) + i32x8::new([0, 1, 2, 3, 4, 5, 6, 7]);
+        (first >= 0 && bytemuck::cast::<i32x8, f32x8>(run.simd_eq(i)).all()).then_some(first as usize)
     }
 
     /// Eight texels (or pixels).

@@ -147,11 +147,11 @@ pub fn fast_acos<L: Lanes>(x: L) -> L {
 }
 
 /// `acos(x)` for `x ∈ [−1, 1]` as one fixed sequence of binary32 operations, so every back-end
-/// computes the same value (the platforms' own `acos` differ by several ulp: libm, `wide`'s
-/// lanes, a GPU driver's lowering): Abramowitz & Stegun 4.4.46,
+/// computes the same value up to the GPU's choice to fuse or not (the platforms' own `acos`
+/// differ by several ulp: libm, `wide`'s lanes, a GPU driver's lowering): Abramowitz & Stegun 4.4.46,
 /// `acos(a) = sqrt(1 − a)·(c0 + c1·a + … + c7·a⁷)` for `a = |x|` (|error| ≤ 2·10⁻⁸ rad in exact
 /// arithmetic; ≤ 5·10⁻⁷ rad in binary32, `tests/kernel_math.rs`), Horner order with fused
-/// multiply-adds ([`Lanes::mul_add`]: seven instructions, each rounded once), and
+/// multiply-adds ([`Lanes::mul_add`]: seven instructions, each rounded once on the CPU), and
 /// `π − acos(|x|)` for negative x.
 #[inline]
 #[allow(clippy::approx_constant)] // c0 is A&S's 1.5707963050, not π/2 rounded
