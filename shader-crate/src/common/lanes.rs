@@ -767,8 +767,8 @@ mod x8 {
         fn index_lane(i: i32x8, k: usize) -> u32 {
             i.as_array()[k] as u32
         }
-        /// Eight consecutive indices (a row of pixels) are one load, others eight
-        /// ([`run_start`]).
+        /// Eight consecutive indices (a row of pixels) are one load, after one vector compare;
+        /// others are eight.
         #[inline(always)]
         fn gather_word(data: &[u32], i: i32x8) -> i32x8 {
             if let Some(run) = run_start(i).and_then(|k| data.get(k..k + 8)) {
@@ -777,8 +777,8 @@ mod x8 {
             let i = i.to_array();
             i32x8::new(core::array::from_fn(|k| data[i[k] as usize] as i32))
         }
-        /// Eight consecutive indices (a row of pixels) are one load, others eight
-        /// ([`run_start`]).
+        /// Eight consecutive indices (a row of pixels) are one load, after one vector compare;
+        /// others are eight.
         #[inline(always)]
         fn gather_index(data: &[f32], i: i32x8) -> Self {
             if let Some(run) = run_start(i).and_then(|k| data.get(k..k + 8)) {
