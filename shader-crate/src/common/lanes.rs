@@ -178,6 +178,26 @@ pub trait LaneVec3<L>:
     fn normalize(self) -> Self;
 }
 
+/// The f32 result of GLSL.std.450 extended instruction `$op` (a number of the GLSL.std.450
+/// specification) applied to the f32 operands.
+#[cfg(target_arch = "spirv")]
+macro_rules! glsl_std_450 {
+    ($op:literal, $($x:ident),+) => {{
+        let mut r = 0.0f32;
+        // SAFETY: a pure float operation that stores its result in `r`.
+        unsafe {
+            core::arch::asm!(
+                "%glsl = OpExtInstImport \"GLSL.std.450\"",
+                concat!("%r = OpExtInst typeof*{r} %glsl ", $op $(, " {", stringify!($x), "}")+),
+                "OpStore {r} %r",
+                $($x = in(reg) $x,)+
+                r = in(reg) &mut r,
+            );
+        }
+        r
+    }};
+}
+
 impl Lanes for f32 {
     const LANES: usize = 1;
     type Mask = bool;
@@ -209,21 +229,7 @@ impl Lanes for f32 {
     #[inline]
     fn inverse_sqrt(self) -> Self {
         #[cfg(target_arch = "spirv")]
-        let r = {
-            let mut r = 0.0f32;
-            // SAFETY: a pure float operation (GLSL.std.450 InverseSqrt, instruction 32) that
-            // stores its result in `r`.
-            unsafe {
-                core::arch::asm!(
-                    "%glsl = OpExtInstImport \"GLSL.std.450\"",
-                    "%r = OpExtInst typeof*{r} %glsl 32 {x}",
-                    "OpStore {r} %r",
-                    x = in(reg) self,
-                    r = in(reg) &mut r,
-                );
-            }
-            r
-        };
+        let r = glsl_std_450!(32, self); // InverseSqrt
         #[cfg(not(target_arch = "spirv"))]
         let r = 1.0 / self.sqrt();
         r
@@ -231,23 +237,7 @@ impl Lanes for f32 {
     #[inline]
     fn mul_add(self, a: f32, b: f32) -> f32 {
         #[cfg(target_arch = "spirv")]
-        let r = {
-            let mut r = 0.0f32;
-            // SAFETY: a pure float operation (GLSL.std.450 Fma, instruction 50) that stores its
-            // result in `r`.
-            unsafe {
-                core::arch::asm!(
-                    "%glsl = OpExtInstImport \"GLSL.std.450\"",
-                    "%r = OpExtInst typeof*{r} %glsl 50 {x} {a} {b}",
-                    "OpStore {r} %r",
-                    x = in(reg) self,
-                    a = in(reg) a,
-                    b = in(reg) b,
-                    r = in(reg) &mut r,
-                );
-            }
-            r
-        };
+        let r = glsl_std_450!(50, self, a, b); // Fma
         #[cfg(not(target_arch = "spirv"))]
         let r = f32::mul_add(self, a, b);
         r
