@@ -50,7 +50,10 @@ const RUNS: [&str; 21] = [
 /// wgpu's device on the Vulkan back-end; `None` when there is none and the run allows the skip.
 fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
     let instance =
-        wgpu::Instance::new(&wgpu::InstanceDescriptor { backends: wgpu::Backends::VULKAN, ..Default::default() });
+        wgpu::Instance::new(wgpu::InstanceDescriptor {
+            backends: wgpu::Backends::VULKAN,
+            ..wgpu::InstanceDescriptor::new_without_display_handle()
+        });
     let adapter = match pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default())) {
         Ok(adapter) => adapter,
         Err(e) => {
@@ -173,7 +176,7 @@ fn run_on_wgpu(
     queue.submit([encoder.finish()]);
     readback.slice(..).map_async(wgpu::MapMode::Read, |r| r.expect("mapped"));
     device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
-    bytemuck::cast_slice(&readback.slice(..).get_mapped_range()).to_vec()
+    bytemuck::cast_slice(&readback.slice(..).get_mapped_range().expect("mapped range")).to_vec()
 }
 
 /// The variant of `t` whose `when` holds `values`.

@@ -246,7 +246,7 @@ pub fn run(args: BevyArgs) -> Result<(), String> {
                  gate, its weighted MIP chain and 3×3 bilateral filter), so the images do not agree pixel for \
                  pixel. `final` compares aokit's denoised output with Bevy's spatially denoised one, `main` \
                  aokit's main-pass terms (×1.5/255) with Bevy's noisy AO, over the pixels with geometry. Bevy's \
-                 shaders run through wgpu 27 here (Bevy 0.20 itself uses wgpu 30).",
+                 shaders run through wgpu 30 here, as in Bevy 0.20.",
     });
     common::finish(report, args.frame.json.as_ref())
 }
@@ -1169,7 +1169,10 @@ impl Gpu {
     /// use here (adapter-specific format features, filterable 32-bit floats) where it has them.
     fn new() -> Result<Gpu, String> {
         let instance =
-            wgpu::Instance::new(&wgpu::InstanceDescriptor { backends: wgpu::Backends::VULKAN, ..Default::default() });
+            wgpu::Instance::new(wgpu::InstanceDescriptor {
+            backends: wgpu::Backends::VULKAN,
+            ..wgpu::InstanceDescriptor::new_without_display_handle()
+        });
         let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
             .map_err(|e| format!("no Vulkan adapter for wgpu ({e})"))?;
         let name = adapter.get_info().name;
@@ -1191,9 +1194,9 @@ impl Gpu {
 
     /// Run `f` and turn a validation error it causes into `Err` naming `what`.
     fn checked<T>(&self, what: &str, f: impl FnOnce() -> T) -> Result<T, String> {
-        self.device.push_error_scope(wgpu::ErrorFilter::Validation);
+        let scope = self.device.push_error_scope(wgpu::ErrorFilter::Validation);
         let value = f();
-        match pollster::block_on(self.device.pop_error_scope()) {
+        match pollster::block_on(scope.pop()) {
             None => Ok(value),
             Some(e) => Err(format!("{what}: {e}")),
         }
@@ -1209,7 +1212,7 @@ impl Gpu {
     fn map_read(&self, buffer: &wgpu::Buffer) -> Result<Vec<u8>, String> {
         buffer.slice(..).map_async(wgpu::MapMode::Read, |r| r.expect("buffer mapped for reading"));
         self.device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| format!("device poll: {e}"))?;
-        let bytes = buffer.slice(..).get_mapped_range().to_vec();
+        let bytes = buffer.slice(..).get_mapped_range().map_err(|e| format!("mapped range: {e}"))?.to_vec();
         buffer.unmap();
         Ok(bytes)
     }
@@ -1756,8 +1759,8 @@ impl BevySide {
                 primitive: Default::default(),
                 depth_stencil: Some(wgpu::DepthStencilState {
                     format: wgpu::TextureFormat::Depth32Float,
-                    depth_write_enabled: true,
-                    depth_compare: wgpu::CompareFunction::Always,
+                    depth_write_enabled: Some(true),
+                    depth_compare: Some(wgpu::CompareFunction::Always),
                     stencil: Default::default(),
                     bias: Default::default(),
                 }),
@@ -1768,7 +1771,7 @@ impl BevySide {
                     compilation_options: Default::default(),
                     targets: &[],
                 }),
-                multiview: None,
+                multiview_mask: None,
                 cache: None,
             });
             let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
@@ -1795,6 +1798,7 @@ impl BevySide {
                     }),
                     timestamp_writes: None,
                     occlusion_query_set: None,
+                    multiview_mask: None,
                 });
                 pass.set_pipeline(&pipeline);
                 pass.set_bind_group(0, &group, &[]);
@@ -1840,7 +1844,7 @@ impl BevySide {
         let clamp = |filter| wgpu::SamplerDescriptor {
             min_filter: filter,
             mag_filter: filter,
-            mipmap_filter: wgpu::FilterMode::Nearest,
+            mipmap_filter: wgpu::MipmapFilterMode::Nearest,
             address_mode_u: wgpu::AddressMode::ClampToEdge,
             address_mode_v: wgpu::AddressMode::ClampToEdge,
             ..Default::default()
@@ -1920,8 +1924,8 @@ impl BevySide {
                 });
                 let layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
                     label: Some(label),
-                    bind_group_layouts: &[group0, &common_layout],
-                    push_constant_ranges: &[],
+                    bind_group_layouts: &[Some(group0), Some(&common_layout)],
+                    immediate_size: 0,
                 });
                 device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
                     label: Some(label),
