@@ -49,11 +49,10 @@ const RUNS: [&str; 21] = [
 
 /// wgpu's device on the Vulkan back-end; `None` when there is none and the run allows the skip.
 fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
-    let instance =
-        wgpu::Instance::new(wgpu::InstanceDescriptor {
-            backends: wgpu::Backends::VULKAN,
-            ..wgpu::InstanceDescriptor::new_without_display_handle()
-        });
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+        backends: wgpu::Backends::VULKAN,
+        ..wgpu::InstanceDescriptor::new_without_display_handle()
+    });
     let adapter = match pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default())) {
         Ok(adapter) => adapter,
         Err(e) => {

@@ -1168,8 +1168,7 @@ impl Gpu {
     /// The first Vulkan adapter with `TIMESTAMP_QUERY`, its limits, and the features Bevy would
     /// use here (adapter-specific format features, filterable 32-bit floats) where it has them.
     fn new() -> Result<Gpu, String> {
-        let instance =
-            wgpu::Instance::new(wgpu::InstanceDescriptor {
+        let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
             backends: wgpu::Backends::VULKAN,
             ..wgpu::InstanceDescriptor::new_without_display_handle()
         });
