@@ -757,35 +757,29 @@ mod x8 {
         fn index_lane(i: i32x8, k: usize) -> u32 {
             i.as_array()[k] as u32
         }
-        /// Eight consecutive indices (a row of pixels) are one load, after one vector compare;
-        /// others are eight.
         #[inline(always)]
         fn gather_word(data: &[u32], i: i32x8) -> i32x8 {
-            if let Some(run) = run_start(i).and_then(|k| data.get(k..k + 8)) {
-                return bytemuck::cast::<[u32; 8], i32x8>(run.try_into().expect("eight words"));
-            }
-            let i = i.to_array();
-            i32x8::new(core::array::from_fn(|k| data[i[k] as usize] as i32))
+            bytemuck::cast(gather8(data, i))
         }
-        /// Eight consecutive indices (a row of pixels) are one load, after one vector compare;
-        /// others are eight.
         #[inline(always)]
         fn gather_index(data: &[f32], i: i32x8) -> Self {
-            if let Some(run) = run_start(i).and_then(|k| data.get(k..k + 8)) {
-                return F32x8(f32x8::new(run.try_into().expect("eight floats")));
-            }
-            let i = i.to_array();
-            F32x8(f32x8::new(core::array::from_fn(|k| data[i[k] as usize])))
+            F32x8(f32x8::new(gather8(data, i)))
         }
     }
 
-    /// The first index when the eight are `k, k + 1, …, k + 7` with k ≥ 0 (one compare of the
-    /// vector): a row of consecutive pixels, which the gathers then read with one load.
+    /// `data[i]` for each of the eight indices (a panic where one is outside `data`, as
+    /// indexing). Eight consecutive indices `k, k + 1, …, k + 7` — a row of pixels — are one
+    /// load after one compare of the vector; others are eight loads.
     #[inline(always)]
-    fn run_start(i: i32x8) -> Option<usize> {
+    fn gather8<T: Copy>(data: &[T], i: i32x8) -> [T; 8] {
         let first = i.as_array()[0];
         let run = i32x8::splat(first) + i32x8::new([0, 1, 2, 3, 4, 5, 6, 7]);
-        (first >= 0 && bytemuck::cast::<i32x8, f32x8>(run.simd_eq(i)).all()).then_some(first as usize)
+        let consecutive = first >= 0 && bytemuck::cast::<i32x8, f32x8>(run.simd_eq(i)).all();
+        if let Some(row) = consecutive.then(|| data.get(first as usize..first as usize + 8)).flatten() {
+            return row.try_into().expect("eight elements");
+        }
+        let i = i.to_array();
+        core::array::from_fn(|k| data[i[k] as usize])
     }
 
     /// Eight texels (or pixels).
