@@ -25,8 +25,13 @@
 //!    (one opaque, one alpha-tested and placed by its instance transform) and TLAS; ground truth
 //!    and raysd on it through `AoEffect::scene_from_tlas` agree with cpu-sim, and breaking the
 //!    custom-index convention breaks the ground truth's agreement.
+//! 4. `wgpu_effect_frames_agree_with_cpu_sim` (`engine_context/wgpu_effect.rs`): the same
+//!    engine arrays through the wgpu effect (`aokit_wgpu`), every screen-space technique, a
+//!    resize and two frames in flight.
 
 mod common;
+#[path = "engine_context/wgpu_effect.rs"]
+mod wgpu_effect;
 
 use aokit::frame::Frame;
 use aokit::output::crop_inner;

@@ -28,6 +28,8 @@ pub mod blur;
 pub mod common;
 #[cfg(not(target_arch = "spirv"))]
 pub mod contract;
+#[cfg(not(target_arch = "spirv"))]
+pub mod engine;
 pub mod gbuffer;
 #[cfg(not(target_arch = "spirv"))]
 pub mod graph;

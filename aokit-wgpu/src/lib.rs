@@ -1,0 +1,725 @@
+//! aokit on a wgpu device: ambient occlusion as one effect on the application's own
+//! `wgpu::Device` and `Queue`, in the four verbs of the Vulkan effect (`aokit_vulkan::AoEffect`)
+//! — [`AoEffect::new`], [`AoEffect::resize`], [`AoEffect::set_settings`] and
+//! [`AoEffect::record`] — with the same [`AoSettings`] (a [`Technique`] at one of its presets
+//! first).
+//!
+//! The application hands its depth texture with its convention, optionally its view-space
+//! normals, the AO output texture, and its projection and view matrices ([`AoFrame`]); the
+//! effect derives aokit's camera from the matrices exactly as the Vulkan effect does
+//! (`aokit_shaders::engine`), walks the technique's pass graph — the same declarations the CPU
+//! simulator and the Vulkan executor walk; this crate knows no technique — and records every
+//! pass into the application's `CommandEncoder`: no submit, no wait, no read-back. Pipelines,
+//! buffers and bind groups are made once and reused; a buffer is re-made only when its size
+//! changes.
+//!
+//! ```no_run
+//! use aokit_wgpu::glam::Mat4;
+//! use aokit_wgpu::{AoEffect, AoFrame, AoSettings, DepthConvention, Technique};
+//!
+//! // Once: a technique at one of its presets, on the application's device and queue.
+//! fn setup(device: &wgpu::Device, queue: &wgpu::Queue) -> Result<AoEffect, Box<dyn std::error::Error>> {
+//!     let settings = AoSettings::new(Technique::preset("gtao", "high")?).radius(0.5);
+//!     let mut ao = AoEffect::new(device, queue, settings)?;
+//!     ao.resize(1920, 1080)?;
+//!     Ok(ao)
+//! }
+//!
+//! // Every frame, after the depth pass, into the application's encoder (which it then
+//! // submits). `depth`: a Depth32Float view; `ao`: an R32Float view with STORAGE_BINDING.
+//! fn frame(
+//!     ao: &mut AoEffect,
+//!     encoder: &mut wgpu::CommandEncoder,
+//!     (depth, output): (&wgpu::TextureView, &wgpu::TextureView),
+//!     (projection, view): (Mat4, Mat4),
+//! ) -> Result<(), aokit_wgpu::AoError> {
+//!     ao.record(encoder, &AoFrame::new(depth, DepthConvention::ReversedInfinite, output, projection, view))
+//! }
+//! ```
+//!
+//! # What a technique needs from the adapter
+//!
+//! The screen-space techniques (`vao`, `hbao`, `gtao`, `vbao`, `raymarch`, with their
+//! denoisers and temporal accumulation) run from the committed WGSL (`assets/wgsl/`, embedded
+//! here) within WebGPU's default limits, so they run on any wgpu back-end, the browser's
+//! WebGPU included. The ray-traced techniques (`raysd`, `hbao-sd`, `hybrid`, `raysvao`,
+//! `groundtruth`), the ones that rasterize the scene themselves and the dual-depth ones are
+//! refused by [`AoEffect::new`] with one line saying so: this crate does not trace rays yet
+//! (use `aokit-vulkan`).
+//!
+//! # Textures
+//!
+//! * **Depth** ([`AoFrame::depth`]): a 2D view of the application's size (one mip level, one
+//!   layer; the depth aspect of a depth-stencil format) from a texture with
+//!   `TEXTURE_BINDING` usage: `Depth32Float` (or `Depth16Unorm`, `Depth24Plus`…) in
+//!   [`AoFrame::depth_convention`], or `R32Float` holding linear view depth
+//!   ([`DepthConvention::Linear`]). It is bound as an unfilterable float texture.
+//! * **Normals** ([`AoFrame::normals`], optional): any float-readable format holding the
+//!   view-space normal `n·0.5 + 0.5` in RGB; without them the technique derives normals from
+//!   depth (XeGTAO's normals pass).
+//! * **Output** ([`AoFrame::output`]): an `R32Float` 2D view of the application's size from a
+//!   texture with `STORAGE_BINDING` usage; 1 = unoccluded.
+//!
+//! wgpu orders the passes after the application's earlier use of these textures and before
+//! its later use by itself: no barrier to write.
+#![warn(missing_docs)]
+
+pub use aokit_shaders::engine::{AoSettings, DepthConvention};
+pub use aokit_shaders::glam;
+pub use aokit_shaders::technique::Technique;
+pub use aokit_shaders::temporal::settings::TemporalSettings;
+
+use aokit_shaders::adapters::ImportParams;
+use aokit_shaders::engine::{engine_frame, probe_frame};
+use aokit_shaders::glam::{Mat4, UVec2};
+use aokit_shaders::graph::{FrameDesc, Graph, Init, Lifetime, PassKind, inputs};
+use aokit_shaders::kernel::Kernel;
+use std::collections::HashMap;
+
+/// The committed WGSL, embedded by the build script.
+mod wgsl {
+    include!(concat!(env!("OUT_DIR"), "/wgsl_modules.rs"));
+
+    /// The WGSL module of entry point `entry`.
+    pub fn of(entry: &str) -> Option<&'static str> {
+        ALL.iter().find(|(name, _)| *name == entry).map(|m| m.1)
+    }
+}
+
+/// Frames that may be recorded before the first of them is submitted, or in flight on the
+/// device: each uses its own set of constant buffers, so a frame recorded after it cannot
+/// overwrite what it reads.
+pub const FRAMES_IN_FLIGHT: usize = 3;
+
+/// The adapters' workgroup: `threads(8, 8)` in `aokit_shaders::adapters`.
+const ADAPTER_GROUP: u32 = 8;
+
+/// Why the effect could not be made or a frame could not be recorded. When `record` returns an
+/// error nothing was recorded into the encoder.
+#[derive(Debug, thiserror::Error)]
+pub enum AoError {
+    /// The settings are out of range, or name a technique or setting that does not exist.
+    #[error("settings: {0}")]
+    Settings(String),
+    /// The projection or view matrix cannot be the camera of a depth image aokit reads.
+    #[error("projection: {0}")]
+    Projection(String),
+    /// `record` before the first `resize`.
+    #[error("the effect has no size yet: call AoEffect::resize(width, height) before the first record")]
+    NotResized,
+    /// The technique needs something this crate cannot run (ray tracing, raster passes), or the
+    /// frame's textures are not what the effect reads and writes.
+    #[error("frame: {0}")]
+    Frame(String),
+}
+
+/// One frame of the application: its textures, its camera and its place in a sequence. Made
+/// with [`AoFrame::new`] and the builder methods.
+#[derive(Copy, Clone, Debug)]
+pub struct AoFrame<'a> {
+    /// The depth view (hardware depth in `depth_convention`, or linear depth); see the crate
+    /// documentation for formats and usages.
+    pub depth: &'a wgpu::TextureView,
+    /// What `depth` stores.
+    pub depth_convention: DepthConvention,
+    /// View-space normals `n·0.5 + 0.5` in RGB; `None`: derived from depth.
+    pub normals: Option<&'a wgpu::TextureView>,
+    /// Where the AO goes: an `R32Float` view with storage usage (1 = unoccluded).
+    pub output: &'a wgpu::TextureView,
+    /// The projection the depth was rendered with: right-handed view space looking down −Z,
+    /// clip depth `[0, 1]`, symmetric frustum (pass the unjittered matrix), row 0 of the
+    /// textures at the top of the view.
+    pub projection: Mat4,
+    /// World → view.
+    pub view: Mat4,
+    /// The frame's index in a sequence: every stochastic technique's noise takes it \[0\].
+    pub frame_index: u32,
+    /// The previous frame's world → view, for the temporal accumulation's reprojection; `None`
+    /// on a first frame or after a cut.
+    pub previous_view: Option<Mat4>,
+}
+
+impl<'a> AoFrame<'a> {
+    /// A frame of `depth` (in `depth_convention`) into `output`, seen through `projection` and
+    /// `view`; normals derived from depth, frame index 0, no previous view.
+    pub fn new(
+        depth: &'a wgpu::TextureView,
+        depth_convention: DepthConvention,
+        output: &'a wgpu::TextureView,
+        projection: Mat4,
+        view: Mat4,
+    ) -> AoFrame<'a> {
+        AoFrame {
+            depth,
+            depth_convention,
+            normals: None,
+            output,
+            projection,
+            view,
+            frame_index: 0,
+            previous_view: None,
+        }
+    }
+
+    /// With the application's view-space normals.
+    pub fn normals(self, normals: &'a wgpu::TextureView) -> AoFrame<'a> {
+        AoFrame { normals: Some(normals), ..self }
+    }
+
+    /// As frame `index` of a sequence whose previous frame was seen through `previous_view`.
+    pub fn temporal(self, index: u32, previous_view: Option<Mat4>) -> AoFrame<'a> {
+        AoFrame { frame_index: index, previous_view, ..self }
+    }
+}
+
+/// A storage buffer of the graph (or an imported input) on the device.
+struct DeviceBuffer {
+    buffer: wgpu::Buffer,
+    /// Its length in 32-bit elements.
+    len: usize,
+}
+
+/// A compute pipeline, its bind-group layout (set 0) and the bindings its WGSL declares.
+struct Pipeline {
+    pipeline: wgpu::ComputePipeline,
+    layout: wgpu::BindGroupLayout,
+    bindings: WgslBindings,
+}
+
+/// The bindings of group 0 a WGSL module declares.
+#[derive(Clone, Debug, Default, PartialEq)]
+struct WgslBindings {
+    /// Storage buffers and textures.
+    resources: Vec<u32>,
+    /// The uniform buffer the push constants moved to (`None`: the kernel has none).
+    constants: Option<u32>,
+}
+
+/// A pipeline: the entry point and its specialization (`(SpecId, value)`, the WGSL overrides).
+type PipelineKey = (&'static str, Vec<(u32, u32)>);
+
+/// The export adapter of the one output format WGSL offers (`R32Float`).
+const EXPORT: &str = "export_ao_r32f";
+
+/// Where a pass's constants and a resource's initial words lie in a frame's constant buffer.
+#[derive(Clone, Debug, PartialEq)]
+struct ConstantsLayout {
+    /// Per graph pass: `(offset, size)` of its push constants, `None` without any.
+    passes: Vec<Option<(u64, u64)>>,
+    /// Per graph resource with [`Init::Data`]: `(offset, size)` of its words.
+    data: Vec<Option<(u64, u64)>>,
+    /// The bytes in all (the adapters' parameters first, at offset 0).
+    bytes: Vec<u8>,
+}
+
+/// One of the [`FRAMES_IN_FLIGHT`] constant buffers and the bind groups that bind it.
+#[derive(Default)]
+struct FrameSlot {
+    constants: Option<wgpu::Buffer>,
+    /// The graph passes' bind groups and what they were made for.
+    bound: Option<(BindKey, Vec<wgpu::BindGroup>)>,
+}
+
+/// What a slot's bind groups depend on: the buffers' generation and, per pass, its pipeline
+/// (a layout wgpu derives belongs to its pipeline alone), bindings and constants' place.
+#[derive(Clone, PartialEq)]
+struct BindKey {
+    generation: u64,
+    passes: Vec<PassBinding>,
+}
+
+/// A pass's pipeline, `(slot, resource)` bindings and constants' `(offset, size)`.
+type PassBinding = (PipelineKey, Vec<(u32, &'static str)>, Option<(u64, u64)>);
+
+/// The graph built for the last frame and what it was built from.
+struct BuiltGraph {
+    desc: FrameDesc,
+    /// Whether the frame gave normals (without them the graph derives them from depth first).
+    normals: bool,
+    graph: Graph,
+}
+
+/// Ambient occlusion on the application's wgpu device (see the crate documentation).
+pub struct AoEffect {
+    device: wgpu::Device,
+    queue: wgpu::Queue,
+    settings: AoSettings,
+    size: Option<UVec2>,
+    built: Option<BuiltGraph>,
+    modules: HashMap<&'static str, wgpu::ShaderModule>,
+    pipelines: HashMap<PipelineKey, Pipeline>,
+    buffers: HashMap<&'static str, DeviceBuffer>,
+    /// Per `Init::Fill` resource with non-zero bits: a buffer holding its initial contents.
+    fills: HashMap<&'static str, wgpu::Buffer>,
+    /// Bumped whenever a buffer is re-made: the bind groups made before bind stale buffers.
+    generation: u64,
+    slots: Vec<FrameSlot>,
+    frame: u64,
+}
+
+impl std::fmt::Debug for AoEffect {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("AoEffect").field("settings", &self.settings).field("size", &self.size).finish_non_exhaustive()
+    }
+}
+
+impl AoEffect {
+    /// The effect on the application's `device` and `queue` running `settings`. A technique
+    /// this crate cannot run (ray tracing, raster passes) is refused here, not at the first
+    /// `record`. The queue is where [`AoEffect::record`] writes each frame's constants
+    /// (`Queue::write_buffer`): submit the encoder to it.
+    pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: AoSettings) -> Result<AoEffect, AoError> {
+        settings.check().map_err(AoError::Settings)?;
+        let effect = AoEffect {
+            device: device.clone(),
+            queue: queue.clone(),
+            settings,
+            size: None,
+            built: None,
+            modules: HashMap::new(),
+            pipelines: HashMap::new(),
+            buffers: HashMap::new(),
+            fills: HashMap::new(),
+            generation: 0,
+            slots: (0..FRAMES_IN_FLIGHT).map(|_| FrameSlot::default()).collect(),
+            frame: 0,
+        };
+        check_graph(&effect.settings, &probe_frame(&effect.settings, None))?;
+        Ok(effect)
+    }
+
+    /// Set the size of the application's textures (depth, normals, output) in texels. Call it
+    /// before the first frame and whenever the textures change.
+    pub fn resize(&mut self, width: u32, height: u32) -> Result<(), AoError> {
+        if width == 0 || height == 0 || width > 16384 || height > 16384 {
+            return Err(AoError::Settings(format!("image size {width}×{height}: expected 1…16384 per side")));
+        }
+        self.size = Some(UVec2::new(width, height));
+        self.built = None;
+        Ok(())
+    }
+
+    /// Replace the settings; the next frame runs them. Settings this crate cannot run are
+    /// refused (and the old ones kept).
+    pub fn set_settings(&mut self, settings: AoSettings) -> Result<(), AoError> {
+        settings.check().map_err(AoError::Settings)?;
+        check_graph(&settings, &probe_frame(&settings, self.size))?;
+        self.settings = settings;
+        self.built = None;
+        Ok(())
+    }
+
+    /// The settings in use.
+    pub fn settings(&self) -> &AoSettings {
+        &self.settings
+    }
+
+    /// Record one frame into `encoder`: import the depth (and normals), run the technique's
+    /// passes, export the AO into `frame.output`. The frame's constants are written with
+    /// `Queue::write_buffer` on the effect's queue, so submit `encoder` to that queue; at most
+    /// [`FRAMES_IN_FLIGHT`] frames may be recorded ahead of their submission or be in flight.
+    pub fn record(&mut self, encoder: &mut wgpu::CommandEncoder, frame: &AoFrame) -> Result<(), AoError> {
+        let size = self.size.ok_or(AoError::NotResized)?;
+        let (desc, import) = engine_frame(
+            &self.settings,
+            size,
+            frame.projection,
+            frame.view,
+            frame.depth_convention,
+            frame.frame_index,
+            frame.previous_view,
+        )
+        .map_err(AoError::Projection)?;
+        check_textures(frame, size)?;
+        let normals = frame.normals.is_some();
+        let built = match self.built.take() {
+            Some(b) if b.desc == desc && b.normals == normals => b,
+            _ => {
+                let graph = check_graph(&self.settings, &desc)?;
+                // Without the application's normals, the graph derives them from depth first.
+                let mut graph = if normals { graph } else { graph.with_normals_from_depth() };
+                // Diagnostic copies are for reports, not application frames.
+                graph.snapshots.clear();
+                BuiltGraph { desc, normals, graph }
+            }
+        };
+        let recorded = self.record_graph(encoder, frame, &built.graph, &import);
+        self.built = Some(built);
+        recorded
+    }
+
+    /// [`AoEffect::record`] of `graph` with the adapters' parameters `import`.
+    fn record_graph(
+        &mut self,
+        encoder: &mut wgpu::CommandEncoder,
+        frame: &AoFrame,
+        graph: &Graph,
+        import: &ImportParams,
+    ) -> Result<(), AoError> {
+        // What can fail does so before anything is recorded.
+        let keys = self.prepare_pipelines(graph)?;
+        let made = self.ensure_buffers(graph);
+        let alignment = u64::from(self.device.limits().min_uniform_buffer_offset_alignment);
+        let layout = constants_layout(graph, import, alignment);
+        let slot = (self.frame % FRAMES_IN_FLIGHT as u64) as usize;
+        self.frame += 1;
+        self.ensure_constants(slot, &layout);
+        let constants = self.slots[slot].constants.clone().expect("made above");
+        self.queue.write_buffer(&constants, 0, &layout.bytes);
+        // Each resource's initial contents, in the encoder: ordered after the previous frame.
+        for (r, data) in graph.resources.iter().zip(&layout.data) {
+            if r.lifetime == Lifetime::Persistent && !made.contains(&r.name) {
+                continue;
+            }
+            let buffer = &self.buffers[r.name].buffer;
+            match (&r.init, data) {
+                (Init::Fill(0), _) => encoder.clear_buffer(buffer, 0, None),
+                (Init::Fill(_), _) => encoder.copy_buffer_to_buffer(&self.fills[r.name], 0, buffer, 0, buffer.size()),
+                (Init::Data(_), Some((offset, bytes))) => {
+                    encoder.copy_buffer_to_buffer(&constants, *offset, buffer, 0, *bytes)
+                }
+                _ => {}
+            }
+        }
+        self.ensure_bind_groups(slot, graph, &keys, &layout);
+        let adapters = self.adapter_bind_groups(&constants, frame, graph.output);
+        let mut pass =
+            encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("aokit"), timestamp_writes: None });
+        let full = import.view.size();
+        for (entry, group) in [("import_depth", Some(&adapters[0])), ("import_normals", adapters.get(2))] {
+            if let Some(group) = group {
+                pass.set_pipeline(&self.pipelines[&(entry, Vec::new())].pipeline);
+                pass.set_bind_group(0, group, &[]);
+                pass.dispatch_workgroups(full.x.div_ceil(ADAPTER_GROUP), full.y.div_ceil(ADAPTER_GROUP), 1);
+            }
+        }
+        let groups = &self.slots[slot].bound.as_ref().expect("made above").1;
+        for ((p, key), group) in graph.passes.iter().zip(&keys).zip(groups) {
+            let invocations = p.invocations(&graph.view);
+            let threads = p.kernel.threads;
+            pass.set_pipeline(&self.pipelines[key].pipeline);
+            pass.set_bind_group(0, group, &[]);
+            pass.dispatch_workgroups(invocations.x.div_ceil(threads[0]), invocations.y.div_ceil(threads[1]), 1);
+        }
+        let engine = import.engine_size;
+        pass.set_pipeline(&self.pipelines[&(EXPORT, Vec::new())].pipeline);
+        pass.set_bind_group(0, &adapters[1], &[]);
+        pass.dispatch_workgroups(engine.x.div_ceil(ADAPTER_GROUP), engine.y.div_ceil(ADAPTER_GROUP), 1);
+        Ok(())
+    }
+
+    /// Every pipeline `graph` and the adapters need, made where missing; returns each pass's
+    /// pipeline key.
+    fn prepare_pipelines(&mut self, graph: &Graph) -> Result<Vec<PipelineKey>, AoError> {
+        let adapters = ["import_depth", "import_normals", EXPORT].map(|entry| {
+            let kernel = Kernel::find(entry).expect("the adapters are kernels");
+            (kernel, Vec::new())
+        });
+        let passes = graph.passes.iter().map(|p| (p.kernel, p.push_constants.clone()));
+        let mut keys = Vec::new();
+        for (i, (kernel, push)) in adapters.into_iter().chain(passes).enumerate() {
+            let key = pipeline_key(kernel, &push)?;
+            if !self.pipelines.contains_key(&key) {
+                let pipeline = self.make_pipeline(kernel, &key.1)?;
+                self.pipelines.insert(key.clone(), pipeline);
+            }
+            if i >= 3 {
+                keys.push(key);
+            }
+        }
+        Ok(keys)
+    }
+
+    /// The compute pipeline of `kernel` with the WGSL overrides `specialization`, with the
+    /// layout wgpu derives from the WGSL.
+    fn make_pipeline(&mut self, kernel: &'static Kernel, specialization: &[(u32, u32)]) -> Result<Pipeline, AoError> {
+        let source = wgsl::of(kernel.entry).ok_or_else(|| {
+            AoError::Frame(format!("pass {} has no WGSL module: aokit-wgpu cannot run it", kernel.entry))
+        })?;
+        let device = &self.device;
+        let module = self.modules.entry(kernel.entry).or_insert_with(|| {
+            device.create_shader_module(wgpu::ShaderModuleDescriptor {
+                label: Some(kernel.entry),
+                source: wgpu::ShaderSource::Wgsl(source.into()),
+            })
+        });
+        let ids: Vec<(String, f64)> = specialization.iter().map(|(id, v)| (id.to_string(), f64::from(*v))).collect();
+        let constants: Vec<(&str, f64)> = ids.iter().map(|(id, v)| (id.as_str(), *v)).collect();
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(kernel.entry),
+            layout: None,
+            module,
+            entry_point: None,
+            compilation_options: wgpu::PipelineCompilationOptions { constants: &constants, ..Default::default() },
+            cache: None,
+        });
+        let layout = pipeline.get_bind_group_layout(0);
+        Ok(Pipeline { pipeline, layout, bindings: wgsl_bindings(source) })
+    }
+
+    /// The graph's buffers (and the imported depth and normals) at their sizes for its view,
+    /// made or re-made where missing or resized; returns the names of those made.
+    fn ensure_buffers(&mut self, graph: &Graph) -> Vec<&'static str> {
+        let pixels = graph.view.size().x as usize * graph.view.size().y as usize;
+        let wanted = graph
+            .resources
+            .iter()
+            .map(|r| (r.name, r.len(&graph.view), &r.init))
+            .chain([inputs::LINEAR_DEPTH, inputs::VIEW_NORMALS].map(|name| (name, pixels, &Init::Undefined)));
+        let mut made = Vec::new();
+        for (name, len, init) in wanted {
+            if self.buffers.get(name).is_some_and(|b| b.len == len) {
+                continue;
+            }
+            let buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some(name),
+                size: 4 * len.max(1) as u64,
+                usage: wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::COPY_SRC,
+                mapped_at_creation: false,
+            });
+            if let Init::Fill(bits) = *init
+                && bits != 0
+            {
+                let words = vec![bits; len.max(1)];
+                let fill = wgpu::util::DeviceExt::create_buffer_init(
+                    &self.device,
+                    &wgpu::util::BufferInitDescriptor {
+                        label: Some(name),
+                        contents: bytemuck::cast_slice(&words),
+                        usage: wgpu::BufferUsages::COPY_SRC,
+                    },
+                );
+                self.fills.insert(name, fill);
+            }
+            self.buffers.insert(name, DeviceBuffer { buffer, len });
+            made.push(name);
+        }
+        if !made.is_empty() {
+            self.generation += 1;
+        }
+        made
+    }
+
+    /// Slot `slot`'s constant buffer, re-made when `layout` outgrows it.
+    fn ensure_constants(&mut self, slot: usize, layout: &ConstantsLayout) {
+        let size = layout.bytes.len() as u64;
+        let s = &mut self.slots[slot];
+        if s.constants.as_ref().is_none_or(|b| b.size() < size) {
+            s.constants = Some(self.device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("aokit constants"),
+                size: size.next_power_of_two().max(256),
+                usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST,
+                mapped_at_creation: false,
+            }));
+            s.bound = None;
+        }
+    }
+
+    /// Slot `slot`'s bind groups for the graph's passes, re-made when the buffers, the passes
+    /// or the constants' places changed.
+    fn ensure_bind_groups(&mut self, slot: usize, graph: &Graph, keys: &[PipelineKey], layout: &ConstantsLayout) {
+        let key = BindKey {
+            generation: self.generation,
+            passes: graph
+                .passes
+                .iter()
+                .zip(keys)
+                .zip(&layout.passes)
+                .map(|((p, k), c)| (k.clone(), p.bindings.iter().map(|b| (b.slot, b.resource)).collect(), *c))
+                .collect(),
+        };
+        if self.slots[slot].bound.as_ref().is_some_and(|(k, _)| *k == key) {
+            return;
+        }
+        let constants = self.slots[slot].constants.as_ref().expect("made before");
+        let groups = graph
+            .passes
+            .iter()
+            .zip(keys)
+            .zip(&layout.passes)
+            .map(|((p, k), c)| {
+                let pipeline = &self.pipelines[k];
+                let mut entries: Vec<wgpu::BindGroupEntry> = p
+                    .bindings
+                    .iter()
+                    .filter(|b| pipeline.bindings.resources.contains(&b.slot))
+                    .map(|b| wgpu::BindGroupEntry {
+                        binding: b.slot,
+                        resource: self.buffers[b.resource].buffer.as_entire_binding(),
+                    })
+                    .collect();
+                if let (Some(binding), Some((offset, size))) = (pipeline.bindings.constants, c) {
+                    entries.push(uniform_entry(binding, constants, *offset, *size));
+                }
+                self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                    label: Some(p.entry()),
+                    layout: &pipeline.layout,
+                    entries: &entries,
+                })
+            })
+            .collect();
+        self.slots[slot].bound = Some((key, groups));
+    }
+
+    /// The adapters' bind groups for this frame's textures: import depth, export, and import
+    /// normals where the frame gives them (made every frame: they bind the application's
+    /// views, which it may replace at any time).
+    fn adapter_bind_groups(
+        &self,
+        constants: &wgpu::Buffer,
+        frame: &AoFrame,
+        output: &'static str,
+    ) -> Vec<wgpu::BindGroup> {
+        let params = std::mem::size_of::<ImportParams>() as u64;
+        let group = |entry: &'static str, texture: &wgpu::TextureView, buffer: &'static str| {
+            let pipeline = &self.pipelines[&(entry, Vec::new())];
+            // import_*: texture 0, buffer 1; export: buffer 0, texture 1; constants at 2.
+            let (texture_slot, buffer_slot) = if entry == EXPORT { (1, 0) } else { (0, 1) };
+            let constants_slot = pipeline.bindings.constants.expect("the adapters take constants");
+            self.device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some(entry),
+                layout: &pipeline.layout,
+                entries: &[
+                    wgpu::BindGroupEntry {
+                        binding: texture_slot,
+                        resource: wgpu::BindingResource::TextureView(texture),
+                    },
+                    wgpu::BindGroupEntry {
+                        binding: buffer_slot,
+                        resource: self.buffers[buffer].buffer.as_entire_binding(),
+                    },
+                    uniform_entry(constants_slot, constants, 0, params),
+                ],
+            })
+        };
+        let mut groups = vec![group("import_depth", frame.depth, inputs::LINEAR_DEPTH)];
+        groups.push(group(EXPORT, frame.output, output));
+        if let Some(normals) = frame.normals {
+            groups.push(group("import_normals", normals, inputs::VIEW_NORMALS));
+        }
+        groups
+    }
+}
+
+/// `pass`'s pipeline key: its entry point and specialization for its push constants.
+fn pipeline_key(kernel: &'static Kernel, push: &[u8]) -> Result<PipelineKey, AoError> {
+    Ok((kernel.entry, kernel.specialization_for(push).map_err(AoError::Settings)?))
+}
+
+/// The graph of `settings` for `desc`, refused where this crate cannot run it.
+fn check_graph(settings: &AoSettings, desc: &FrameDesc) -> Result<Graph, AoError> {
+    let technique = &settings.technique;
+    let name = technique.name();
+    let graph = technique.graph(desc).map_err(AoError::Settings)?;
+    graph.validate().map_err(AoError::Settings)?;
+    let refuse = |why: &str| {
+        Err(AoError::Frame(format!(
+            "{name} {why}: aokit-wgpu runs the screen-space techniques only (use aokit-vulkan)"
+        )))
+    };
+    if graph.traces_rays() {
+        return refuse("traces rays");
+    }
+    if graph.passes.iter().any(|p| p.kind != PassKind::Compute) {
+        return refuse("rasterizes the scene itself");
+    }
+    if graph.inputs().iter().any(|i| ![inputs::LINEAR_DEPTH, inputs::VIEW_NORMALS].contains(i)) {
+        return refuse("reads more than depth and normals (a second depth layer or the scene)");
+    }
+    if let Some(p) = graph.passes.iter().find(|p| wgsl::of(p.entry()).is_none()) {
+        return refuse(&format!("has a pass without WGSL ({})", p.entry()));
+    }
+    if let Some(r) = graph.resources.iter().find(|r| inputs::ALL.contains(&r.name)) {
+        return Err(AoError::Settings(format!("{name} declares a resource named like an input: {}", r.name)));
+    }
+    Ok(graph)
+}
+
+/// Refuse textures the adapters cannot read or write, with the reason (wgpu would otherwise
+/// report a validation error at the submission).
+fn check_textures(frame: &AoFrame, size: UVec2) -> Result<(), AoError> {
+    let extent = |t: &wgpu::Texture| UVec2::new(t.width(), t.height());
+    let output = frame.output.texture();
+    if output.format() != wgpu::TextureFormat::R32Float
+        || !output.usage().contains(wgpu::TextureUsages::STORAGE_BINDING)
+    {
+        return Err(AoError::Frame(format!(
+            "the output is {:?} with {:?}: expected R32Float with STORAGE_BINDING",
+            output.format(),
+            output.usage()
+        )));
+    }
+    let inputs = std::iter::once(("depth", frame.depth)).chain(frame.normals.map(|n| ("normals", n)));
+    for (what, view) in std::iter::once(("output", frame.output)).chain(inputs) {
+        let texture = view.texture();
+        if extent(texture) != size {
+            return Err(AoError::Frame(format!(
+                "the {what} texture is {}×{}, the effect {}×{}: call AoEffect::resize",
+                texture.width(),
+                texture.height(),
+                size.x,
+                size.y
+            )));
+        }
+        if what != "output" && !texture.usage().contains(wgpu::TextureUsages::TEXTURE_BINDING) {
+            return Err(AoError::Frame(format!("the {what} texture lacks TEXTURE_BINDING usage")));
+        }
+    }
+    Ok(())
+}
+
+/// Where each pass's push constants and each resource's initial words go in a frame's constant
+/// buffer: the adapters' parameters at 0, then each at the next multiple of `alignment` (the
+/// device's uniform offset alignment), each padded to 16 bytes (a uniform struct's size).
+fn constants_layout(graph: &Graph, import: &ImportParams, alignment: u64) -> ConstantsLayout {
+    let mut bytes = bytemuck::bytes_of(import).to_vec();
+    let mut place = |data: &[u8]| {
+        bytes.resize((bytes.len() as u64).next_multiple_of(alignment) as usize, 0);
+        let offset = bytes.len() as u64;
+        bytes.extend_from_slice(data);
+        bytes.resize(bytes.len().next_multiple_of(16), 0);
+        (offset, (data.len() as u64).next_multiple_of(4))
+    };
+    let passes =
+        graph.passes.iter().map(|p| (!p.push_constants.is_empty()).then(|| place(&p.push_constants))).collect();
+    let data = graph
+        .resources
+        .iter()
+        .map(|r| match &r.init {
+            Init::Data(words) => Some(place(bytemuck::cast_slice(words))),
+            _ => None,
+        })
+        .collect();
+    bytes.resize(bytes.len().next_multiple_of(16), 0);
+    ConstantsLayout { passes, data, bytes }
+}
+
+/// A uniform binding of `size` bytes (rounded up to a uniform struct's 16) at `offset`.
+fn uniform_entry(binding: u32, buffer: &wgpu::Buffer, offset: u64, size: u64) -> wgpu::BindGroupEntry<'_> {
+    wgpu::BindGroupEntry {
+        binding,
+        resource: wgpu::BindingResource::Buffer(wgpu::BufferBinding {
+            buffer,
+            offset,
+            size: std::num::NonZeroU64::new(size.next_multiple_of(16)),
+        }),
+    }
+}
+
+/// The group-0 bindings of a generated WGSL module: `@group(0) @binding(N)` before each
+/// resource's `var`, the uniform one being the push constants' (`aokit_contract::wgsl`).
+fn wgsl_bindings(source: &str) -> WgslBindings {
+    let mut found = WgslBindings::default();
+    let mut lines = source.lines();
+    while let Some(line) = lines.next() {
+        let Some(rest) = line.trim().strip_prefix("@group(0) @binding(") else { continue };
+        let Some(binding) = rest.split(')').next().and_then(|n| n.parse().ok()) else { continue };
+        let declaration = lines.next().unwrap_or_default();
+        if declaration.trim_start().starts_with("var<uniform>") {
+            found.constants = Some(binding);
+        } else {
+            found.resources.push(binding);
+        }
+    }
+    found
+}

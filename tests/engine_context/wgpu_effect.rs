@@ -1,0 +1,274 @@
+//! The wgpu effect (`aokit_wgpu::AoEffect`) driven as a wgpu application would drive it, on the
+//! same engine arrays and matrices as the Vulkan effect's tests above: the application renders
+//! its Depth32Float depth in a render pass (a full-screen triangle writing `frag_depth`), uploads
+//! RGBA8 normals, owns an R32Float AO texture, and records the effect into its own encoder.
+//! Every screen-space technique through it agrees with cpu-sim on the same arrays (import →
+//! `CpuExecutor` → export, `cpu_reference`) within the WGSL conformance bar of
+//! `common::agreement` (≥ 99.9 % of the pixels within 1/255, MSE ≤ 1e-6, both asserted), at
+//! two sizes (a resize between them) and with two frames recorded before either is submitted
+//! (frame indices 0 and 1: their noise differs, so a frame reading the other's constants fails).
+
+use super::*;
+use aokit_wgpu::AoEffect as WgpuEffect;
+use aokit_wgpu::AoFrame as WgpuFrame;
+
+/// wgpu's device on the Vulkan back-end (lavapipe here); `None` when there is none and the run
+/// allows the skip.
+fn wgpu_device() -> Option<(wgpu::Device, wgpu::Queue)> {
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+        backends: wgpu::Backends::VULKAN,
+        ..wgpu::InstanceDescriptor::new_without_display_handle()
+    });
+    let adapter = match pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default())) {
+        Ok(adapter) => adapter,
+        Err(e) => {
+            common::skip::cannot_run(common::skip::VULKAN, &format!("no Vulkan adapter for wgpu ({e})"));
+            return None;
+        }
+    };
+    // WebGPU's default limits: what a browser gives.
+    Some(pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default())).unwrap())
+}
+
+/// The application's textures: depth rendered from `g.depth`, RGBA8 normals, the AO output.
+struct AppTextures {
+    depth: wgpu::TextureView,
+    normals: wgpu::TextureView,
+    output: wgpu::Texture,
+    output_view: wgpu::TextureView,
+    size: UVec2,
+}
+
+/// Render `g`'s hardware depth into a Depth32Float texture the way an application's depth pass
+/// does, and upload its normals.
+fn app_textures(device: &wgpu::Device, queue: &wgpu::Queue, g: &EngineGBuffer) -> AppTextures {
+    use wgpu::util::DeviceExt;
+    let size = g.size;
+    let extent = wgpu::Extent3d { width: size.x, height: size.y, depth_or_array_layers: 1 };
+    let texture = |format, usage| {
+        device.create_texture(&wgpu::TextureDescriptor {
+            label: None,
+            size: extent,
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format,
+            usage,
+            view_formats: &[],
+        })
+    };
+    let depth = texture(
+        wgpu::TextureFormat::Depth32Float,
+        wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
+    );
+    let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some("depth pass"),
+        source: wgpu::ShaderSource::Wgsl(
+            "@group(0) @binding(0) var<storage, read> depth: array<f32>;
+             @group(0) @binding(1) var<uniform> width: vec4<u32>;
+             @vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
+                 let p = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
+                 return vec4<f32>(p * 2.0 - 1.0, 0.0, 1.0);
+             }
+             @fragment fn fs(@builtin(position) p: vec4<f32>) -> @builtin(frag_depth) f32 {
+                 return depth[u32(p.y) * width.x + u32(p.x)];
+             }"
+            .into(),
+        ),
+    });
+    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some("depth pass"),
+        layout: None,
+        vertex: wgpu::VertexState {
+            module: &shader,
+            entry_point: Some("vs"),
+            compilation_options: Default::default(),
+            buffers: &[],
+        },
+        primitive: Default::default(),
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: wgpu::TextureFormat::Depth32Float,
+            depth_write_enabled: Some(true),
+            depth_compare: Some(wgpu::CompareFunction::Always),
+            stencil: Default::default(),
+            bias: Default::default(),
+        }),
+        multisample: Default::default(),
+        fragment: Some(wgpu::FragmentState {
+            module: &shader,
+            entry_point: Some("fs"),
+            compilation_options: Default::default(),
+            targets: &[],
+        }),
+        multiview_mask: None,
+        cache: None,
+    });
+    let storage = wgpu::BufferUsages::STORAGE;
+    let values = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("depth values"),
+        contents: bytemuck::cast_slice(&g.depth),
+        usage: storage,
+    });
+    let width = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
+        label: Some("width"),
+        contents: bytemuck::cast_slice(&[size.x, 0, 0, 0]),
+        usage: wgpu::BufferUsages::UNIFORM,
+    });
+    let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
+        label: None,
+        layout: &pipeline.get_bind_group_layout(0),
+        entries: &[
+            wgpu::BindGroupEntry { binding: 0, resource: values.as_entire_binding() },
+            wgpu::BindGroupEntry { binding: 1, resource: width.as_entire_binding() },
+        ],
+    });
+    let depth_view = depth.create_view(&Default::default());
+    let mut encoder = device.create_command_encoder(&Default::default());
+    {
+        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+            label: Some("depth pass"),
+            color_attachments: &[],
+            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+                view: &depth_view,
+                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(0.0), store: wgpu::StoreOp::Store }),
+                stencil_ops: None,
+            }),
+            timestamp_writes: None,
+            occlusion_query_set: None,
+            multiview_mask: None,
+        });
+        pass.set_pipeline(&pipeline);
+        pass.set_bind_group(0, &group, &[]);
+        pass.draw(0..3, 0..1);
+    }
+    queue.submit([encoder.finish()]);
+    let normals =
+        texture(wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);
+    queue.write_texture(
+        normals.as_image_copy(),
+        &g.normal_bytes,
+        wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(4 * size.x), rows_per_image: None },
+        extent,
+    );
+    let output =
+        texture(wgpu::TextureFormat::R32Float, wgpu::TextureUsages::STORAGE_BINDING | wgpu::TextureUsages::COPY_SRC);
+    AppTextures {
+        depth: depth_view,
+        normals: normals.create_view(&Default::default()),
+        output_view: output.create_view(&Default::default()),
+        output,
+        size,
+    }
+}
+
+/// Copy the AO texture into a new read-back buffer (rows padded to 256 bytes).
+fn copy_output(device: &wgpu::Device, encoder: &mut wgpu::CommandEncoder, t: &AppTextures) -> wgpu::Buffer {
+    let row = (4 * t.size.x).next_multiple_of(256);
+    let buffer = device.create_buffer(&wgpu::BufferDescriptor {
+        label: Some("AO read-back"),
+        size: u64::from(row * t.size.y),
+        usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
+        mapped_at_creation: false,
+    });
+    encoder.copy_texture_to_buffer(
+        t.output.as_image_copy(),
+        wgpu::TexelCopyBufferInfo {
+            buffer: &buffer,
+            layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: None },
+        },
+        wgpu::Extent3d { width: t.size.x, height: t.size.y, depth_or_array_layers: 1 },
+    );
+    buffer
+}
+
+/// The read-back buffer's AO, rows unpadded.
+fn read_output(device: &wgpu::Device, buffer: &wgpu::Buffer, size: UVec2) -> Vec<f32> {
+    buffer.slice(..).map_async(wgpu::MapMode::Read, |r| r.expect("mapped"));
+    device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
+    let bytes = buffer.slice(..).get_mapped_range().expect("mapped range").to_vec();
+    let row = (4 * size.x).next_multiple_of(256) as usize;
+    bytes.chunks(row).flat_map(|r| bytemuck::cast_slice::<u8, f32>(&r[..4 * size.x as usize]).to_vec()).collect()
+}
+
+#[test]
+fn wgpu_effect_frames_agree_with_cpu_sim() {
+    let Some((device, queue)) = wgpu_device() else { return };
+    let start = Instant::now();
+    let convention = DepthConvention::ReversedInfinite;
+    let specs = ["vao", "hbao", "gtao:preset=high", "gtao:preset=ultra:denoise=0", "vbao", "raymarch"];
+    let first = Technique::parse(specs[0]).unwrap();
+    let (_, frame) = common::builtin_frame("sponza", 160, 96, 16);
+    let mut effect = WgpuEffect::new(&device, &queue, effect_settings(&first, &frame)).unwrap();
+    let mut report = Vec::new();
+    // Two sizes: the second frame set runs after a resize (every buffer re-made).
+    for (width, height, with_normals) in [(160, 96, true), (120, 72, false)] {
+        let (scene, frame) = common::builtin_frame("sponza", width, height, 16);
+        let view = frame.camera.view;
+        let renderer = CpuRenderer::new(&scene);
+        let (gbuffer, _) = renderer.gbuffer(&frame, &no_progress);
+        let v = engine_view(&frame, convention);
+        let g = EngineGBuffer { params: v.params, ..engine_gbuffer(&view, &gbuffer, EngineFormats::d32(convention)) };
+        let textures = app_textures(&device, &queue, &g);
+        effect.resize(g.size.x, g.size.y).unwrap();
+        for spec in specs {
+            let technique = Technique::parse(spec).unwrap();
+            effect.set_settings(effect_settings(&technique, &frame)).unwrap();
+            // Two frames recorded (frame indices 0 and 1) before either is submitted.
+            let mut encoders = Vec::new();
+            for index in 0..2 {
+                let mut ao_frame =
+                    WgpuFrame::new(&textures.depth, convention, &textures.output_view, v.projection, v.world_to_view)
+                        .temporal(index, None);
+                if with_normals {
+                    ao_frame = ao_frame.normals(&textures.normals);
+                }
+                let mut encoder = device.create_command_encoder(&Default::default());
+                effect.record(&mut encoder, &ao_frame).unwrap();
+                let readback = copy_output(&device, &mut encoder, &textures);
+                encoders.push((index, encoder, readback));
+            }
+            let readbacks: Vec<_> = encoders
+                .into_iter()
+                .map(|(index, encoder, readback)| {
+                    queue.submit([encoder.finish()]);
+                    (index, readback)
+                })
+                .collect();
+            for (index, readback) in readbacks {
+                let on_wgpu = read_output(&device, &readback, g.size);
+                let desc = FrameDesc {
+                    frame_index: index,
+                    ..FrameDesc::new(v.camera, frame.radius, frame.exponent, frame.thickness)
+                };
+                let graph = technique.graph(&desc).unwrap();
+                let on_cpu = cpu_reference(&renderer, &graph, &g, with_normals);
+                assert_eq!(
+                    (on_cpu.ao.len(), on_wgpu.len()),
+                    ((width * height) as usize, (width * height) as usize),
+                    "{spec}: lengths"
+                );
+                let a = common::agreement::of(&on_cpu.ao, &on_wgpu);
+                let normals = if with_normals { "RGBA8 normals" } else { "normals from depth" };
+                let line = format!(
+                    "{spec} {width}×{height} frame {index} ({normals}): {:.3} % within 1/255, max |Δ| {:.2}/255, MSE {:.2e}, occluded {:.1} %",
+                    100.0 * a.within,
+                    255.0 * a.max,
+                    a.mse,
+                    100.0 * a.occluded
+                );
+                eprintln!("wgpu effect vs cpu-sim: {line}");
+                assert!(a.occluded >= 0.02, "{line}: too little occlusion to compare");
+                assert!(a.within >= common::agreement::MIN_WITHIN && a.mse <= common::agreement::MAX_MSE, "{line}");
+                report.push(line);
+            }
+        }
+    }
+    // What it cannot run is refused on one line naming the technique, before any frame.
+    for name in ["raysd", "groundtruth", "sdsvao"] {
+        let settings = effect_settings(&Technique::named(name).unwrap(), &frame);
+        let e = WgpuEffect::new(&device, &queue, settings).expect_err(name).to_string();
+        assert!(e.contains(name) && e.contains("aokit-vulkan") && !e.contains('\n'), "{e}");
+    }
+    eprintln!("wgpu_effect_frames_agree_with_cpu_sim: {:.1} s", start.elapsed().as_secs_f64());
+    assert_eq!(report.len(), 2 * 2 * specs.len());
+}
