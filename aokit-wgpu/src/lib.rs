@@ -231,6 +231,49 @@ struct BindKey {
 /// A pass's pipeline, `(slot, resource)` bindings and constants' `(offset, size)`.
 type PassBinding = (PipelineKey, Vec<(u32, &'static str)>, Option<(u64, u64)>);
 
+/// GPU timestamps at the beginning and end of each label's compute pass ([`AoEffect::set_timing`]).
+struct Timing {
+    queries: wgpu::QuerySet,
+    /// Labels the query set has room for.
+    capacity: usize,
+    resolve: wgpu::Buffer,
+    readback: wgpu::Buffer,
+    /// The labels of the last recorded frame, in order.
+    labels: Vec<&'static str>,
+}
+
+impl Timing {
+    /// Room for `labels` labels' timestamps.
+    fn ensure(&mut self, device: &wgpu::Device, labels: usize) {
+        if labels > self.capacity {
+            *self = Timing::new(device, labels.next_power_of_two());
+        }
+    }
+
+    fn new(device: &wgpu::Device, capacity: usize) -> Timing {
+        let stamps = 2 * capacity.max(1) as u32;
+        let buffer = |usage| {
+            device.create_buffer(&wgpu::BufferDescriptor {
+                label: Some("aokit timestamps"),
+                size: 8 * u64::from(stamps),
+                usage,
+                mapped_at_creation: false,
+            })
+        };
+        Timing {
+            queries: device.create_query_set(&wgpu::QuerySetDescriptor {
+                label: Some("aokit timestamps"),
+                ty: wgpu::QueryType::Timestamp,
+                count: stamps,
+            }),
+            capacity: capacity.max(1),
+            resolve: buffer(wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC),
+            readback: buffer(wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST),
+            labels: Vec::new(),
+        }
+    }
+}
+
 /// The graph built for the last frame and what it was built from.
 struct BuiltGraph {
     desc: FrameDesc,
@@ -255,6 +298,7 @@ pub struct AoEffect {
     generation: u64,
     slots: Vec<FrameSlot>,
     frame: u64,
+    timing: Option<Timing>,
 }
 
 impl std::fmt::Debug for AoEffect {
@@ -283,6 +327,7 @@ impl AoEffect {
             generation: 0,
             slots: (0..FRAMES_IN_FLIGHT).map(|_| FrameSlot::default()).collect(),
             frame: 0,
+            timing: None,
         };
         check_graph(&effect.settings, &probe_frame(&effect.settings, None))?;
         Ok(effect)
@@ -312,6 +357,49 @@ impl AoEffect {
     /// The settings in use.
     pub fn settings(&self) -> &AoSettings {
         &self.settings
+    }
+
+    /// Time each pass label of the frames recorded from now on with GPU timestamps (`on`), or
+    /// stop. Needs a device made with `Features::TIMESTAMP_QUERY`. Timed frames record one
+    /// compute pass per label instead of one in all.
+    pub fn set_timing(&mut self, on: bool) -> Result<(), AoError> {
+        if !on {
+            self.timing = None;
+        } else if !self.device.features().contains(wgpu::Features::TIMESTAMP_QUERY) {
+            return Err(AoError::Frame("timing needs a device with Features::TIMESTAMP_QUERY".into()));
+        } else if self.timing.is_none() {
+            self.timing = Some(Timing::new(&self.device, 8));
+        }
+        Ok(())
+    }
+
+    /// `(pass label, ms)` of the last recorded frame (with [`AoEffect::set_timing`] on): call it
+    /// once that frame's submission has been made and before the next `record`; it waits for the
+    /// device to finish it.
+    pub fn pass_times(&self) -> Result<Vec<(&'static str, f64)>, AoError> {
+        let timing =
+            self.timing.as_ref().ok_or_else(|| AoError::Frame("timing is off: AoEffect::set_timing(true)".into()))?;
+        let bytes = 16 * timing.labels.len() as u64;
+        if bytes == 0 {
+            return Ok(Vec::new());
+        }
+        let slice = timing.readback.slice(..bytes);
+        slice.map_async(wgpu::MapMode::Read, |_| {});
+        self.device
+            .poll(wgpu::PollType::wait_indefinitely())
+            .map_err(|e| AoError::Frame(format!("waiting for the timed frame: {e}")))?;
+        let ticks: Vec<u64> = {
+            let mapped = slice.get_mapped_range().map_err(|e| AoError::Frame(format!("timestamps: {e}")))?;
+            bytemuck::cast_slice(&mapped).to_vec()
+        };
+        timing.readback.unmap();
+        let period = f64::from(self.queue.get_timestamp_period());
+        Ok(timing
+            .labels
+            .iter()
+            .zip(ticks.chunks(2))
+            .map(|(&label, t)| (label, t[1].wrapping_sub(t[0]) as f64 * period * 1e-6))
+            .collect())
     }
 
     /// Record one frame into `encoder`: import the depth (and normals), run the technique's
@@ -383,28 +471,65 @@ impl AoEffect {
         }
         self.ensure_bind_groups(slot, graph, &keys, &layout);
         let adapters = self.adapter_bind_groups(&constants, frame, graph.output);
-        let mut pass =
-            encoder.begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("aokit"), timestamp_writes: None });
-        let full = import.view.size();
-        for (entry, group) in [("import_depth", Some(&adapters[0])), ("import_normals", adapters.get(2))] {
-            if let Some(group) = group {
-                pass.set_pipeline(&self.pipelines[&(entry, Vec::new())].pipeline);
-                pass.set_bind_group(0, group, &[]);
-                pass.dispatch_workgroups(full.x.div_ceil(ADAPTER_GROUP), full.y.div_ceil(ADAPTER_GROUP), 1);
+        // Consecutive passes with one label are timed as one (as the Vulkan executor does).
+        let mut spans: Vec<(&'static str, std::ops::Range<usize>)> = Vec::new();
+        for (i, p) in graph.passes.iter().enumerate() {
+            match spans.last_mut() {
+                Some((label, range)) if *label == p.label => range.end = i + 1,
+                _ => spans.push((p.label, i..i + 1)),
             }
         }
+        if let Some(timing) = &mut self.timing {
+            timing.ensure(&self.device, spans.len());
+            timing.labels = spans.iter().map(|s| s.0).collect();
+        }
         let groups = &self.slots[slot].bound.as_ref().expect("made above").1;
-        for ((p, key), group) in graph.passes.iter().zip(&keys).zip(groups) {
+        let dispatch = |pass: &mut wgpu::ComputePass, i: usize| {
+            let p = &graph.passes[i];
             let invocations = p.invocations(&graph.view);
             let threads = p.kernel.threads;
-            pass.set_pipeline(&self.pipelines[key].pipeline);
-            pass.set_bind_group(0, group, &[]);
+            pass.set_pipeline(&self.pipelines[&keys[i]].pipeline);
+            pass.set_bind_group(0, &groups[i], &[]);
             pass.dispatch_workgroups(invocations.x.div_ceil(threads[0]), invocations.y.div_ceil(threads[1]), 1);
+        };
+        let adapter = |pass: &mut wgpu::ComputePass, entry: &'static str, group: &wgpu::BindGroup, size: UVec2| {
+            pass.set_pipeline(&self.pipelines[&(entry, Vec::new())].pipeline);
+            pass.set_bind_group(0, group, &[]);
+            pass.dispatch_workgroups(size.x.div_ceil(ADAPTER_GROUP), size.y.div_ceil(ADAPTER_GROUP), 1);
+        };
+        let begin = |encoder: &mut wgpu::CommandEncoder, stamps: Option<u32>| {
+            let timestamp_writes = stamps.zip(self.timing.as_ref()).map(|(k, t)| wgpu::ComputePassTimestampWrites {
+                query_set: &t.queries,
+                beginning_of_pass_write_index: Some(2 * k),
+                end_of_pass_write_index: Some(2 * k + 1),
+            });
+            encoder
+                .begin_compute_pass(&wgpu::ComputePassDescriptor { label: Some("aokit"), timestamp_writes })
+                .forget_lifetime()
+        };
+        let (full, engine) = (import.view.size(), import.engine_size);
+        let mut pass = begin(encoder, None);
+        adapter(&mut pass, "import_depth", &adapters[0], full);
+        if let Some(group) = adapters.get(2) {
+            adapter(&mut pass, "import_normals", group, full);
         }
-        let engine = import.engine_size;
-        pass.set_pipeline(&self.pipelines[&(EXPORT, Vec::new())].pipeline);
-        pass.set_bind_group(0, &adapters[1], &[]);
-        pass.dispatch_workgroups(engine.x.div_ceil(ADAPTER_GROUP), engine.y.div_ceil(ADAPTER_GROUP), 1);
+        if let Some(timing) = &self.timing {
+            // One compute pass per label, its timestamps at its beginning and end.
+            drop(pass);
+            for (k, (_, range)) in spans.iter().enumerate() {
+                let mut pass = begin(encoder, Some(k as u32));
+                range.clone().for_each(|i| dispatch(&mut pass, i));
+            }
+            pass = begin(encoder, None);
+            adapter(&mut pass, EXPORT, &adapters[1], engine);
+            drop(pass);
+            let stamps = 2 * spans.len() as u32;
+            encoder.resolve_query_set(&timing.queries, 0..stamps, &timing.resolve, 0);
+            encoder.copy_buffer_to_buffer(&timing.resolve, 0, &timing.readback, 0, 8 * u64::from(stamps));
+        } else {
+            (0..graph.passes.len()).for_each(|i| dispatch(&mut pass, i));
+            adapter(&mut pass, EXPORT, &adapters[1], engine);
+        }
         Ok(())
     }
 
@@ -437,6 +562,9 @@ impl AoEffect {
             AoError::Frame(format!("pass {} has no WGSL module: aokit-wgpu cannot run it", kernel.entry))
         })?;
         let device = &self.device;
+        // wgpu's own runtime checks stay on: trusting the modules (`create_shader_module_trusted`)
+        // measured no faster on lavapipe (gtao 1.14–1.21 vs 1.21 of the ash time, vao 1.14–1.15
+        // vs 1.14–1.18, 1920×1080, two runs each).
         let module = self.modules.entry(kernel.entry).or_insert_with(|| {
             device.create_shader_module(wgpu::ShaderModuleDescriptor {
                 label: Some(kernel.entry),

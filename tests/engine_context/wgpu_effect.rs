@@ -26,8 +26,10 @@ fn wgpu_device() -> Option<(wgpu::Device, wgpu::Queue)> {
             return None;
         }
     };
-    // WebGPU's default limits: what a browser gives.
-    Some(pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default())).unwrap())
+    // WebGPU's default limits (what a browser gives), with timestamps where the adapter has them.
+    let required_features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
+    let descriptor = wgpu::DeviceDescriptor { required_features, ..Default::default() };
+    Some(pollster::block_on(adapter.request_device(&descriptor)).unwrap())
 }
 
 /// The application's textures: depth rendered from `g.depth`, RGBA8 normals, the AO output.
@@ -262,6 +264,42 @@ fn wgpu_effect_frames_agree_with_cpu_sim() {
                 report.push(line);
             }
         }
+    }
+    // A timed frame (one compute pass per label) gives the same AO, and a time per label (the
+    // frame gives no normals: the graph derives them first).
+    let (scene, frame) = common::builtin_frame("sponza", 120, 72, 16);
+    let (gbuffer, _) = CpuRenderer::new(&scene).gbuffer(&frame, &no_progress);
+    let v = engine_view(&frame, convention);
+    let g = EngineGBuffer {
+        params: v.params,
+        ..engine_gbuffer(&frame.camera.view, &gbuffer, EngineFormats::d32(convention))
+    };
+    let textures = app_textures(&device, &queue, &g);
+    let technique = Technique::parse("gtao").unwrap();
+    effect.set_settings(effect_settings(&technique, &frame)).unwrap();
+    let ao_frame = WgpuFrame::new(&textures.depth, convention, &textures.output_view, v.projection, v.world_to_view);
+    let run = |effect: &mut WgpuEffect| {
+        let mut encoder = device.create_command_encoder(&Default::default());
+        effect.record(&mut encoder, &ao_frame).unwrap();
+        let readback = copy_output(&device, &mut encoder, &textures);
+        queue.submit([encoder.finish()]);
+        read_output(&device, &readback, g.size)
+    };
+    let untimed = run(&mut effect);
+    if device.features().contains(wgpu::Features::TIMESTAMP_QUERY) {
+        effect.set_timing(true).unwrap();
+        let timed = run(&mut effect);
+        assert!(timed == untimed, "a timed frame differs from the untimed one");
+        let times = effect.pass_times().unwrap();
+        let mut labels: Vec<&str> =
+            technique.graph(&frame.desc()).unwrap().with_normals_from_depth().passes.iter().map(|p| p.label).collect();
+        labels.dedup();
+        assert_eq!(times.iter().map(|t| t.0).collect::<Vec<_>>(), labels);
+        assert!(times.iter().all(|t| t.1 > 0.0 && t.1 < 1e4), "{times:?}");
+        eprintln!("timed gtao frame: {times:?}");
+    } else {
+        let e = effect.set_timing(true).expect_err("timing without TIMESTAMP_QUERY").to_string();
+        assert!(e.contains("TIMESTAMP_QUERY"), "{e}");
     }
     // What it cannot run is refused on one line naming the technique, before any frame.
     for name in ["raysd", "groundtruth", "sdsvao"] {

@@ -6,12 +6,15 @@
 //!   one Vulkan device.
 //! * `aokit-peers bevy`: aokit's vbao against Bevy's visibility-bitmask SSAO WGSL, both through
 //!   wgpu on one adapter.
+//! * `aokit-peers executors`: aokit's two executors, `aokit-wgpu` and `aokit-vulkan` (ash), on
+//!   the same techniques and frame.
 //!
 //! Each iteration runs both sides, alternating which goes first; every pass is timed with GPU
 //! timestamps, and the table gives the median of the per-iteration ratios aokit / peer.
 
 mod bevy;
 mod common;
+mod executors;
 mod xegtao;
 
 use clap::{Parser, Subcommand};
@@ -29,6 +32,8 @@ enum Command {
     Xegtao(xegtao::XegtaoArgs),
     /// aokit's vbao against Bevy's visibility-bitmask SSAO WGSL through wgpu.
     Bevy(bevy::BevyArgs),
+    /// The same techniques through aokit-wgpu and aokit-vulkan (ash) on one device.
+    Executors(executors::ExecutorsArgs),
 }
 
 fn main() {
@@ -36,6 +41,7 @@ fn main() {
     let result = match cli.command {
         Command::Xegtao(args) => xegtao::run(args),
         Command::Bevy(args) => bevy::run(args),
+        Command::Executors(args) => executors::run(args),
     };
     if let Err(e) = result {
         eprintln!("aokit-peers: {e}");
