@@ -42,7 +42,9 @@
 //! The screen-space techniques (`vao`, `hbao`, `gtao`, `vbao`, `raymarch`, with their
 //! denoisers and temporal accumulation) run from the committed WGSL (`assets/wgsl/`, embedded
 //! here) within WebGPU's default limits, so they run on any wgpu back-end, the browser's
-//! WebGPU included. The ray-traced techniques (`raysd`, `hbao-sd`, `hybrid`, `raysvao`,
+//! WebGPU included. On wgpu's Vulkan back-end with [`SPIRV_FEATURES`] (and the adapter's
+//! `max_immediate_size`) they run the committed SPIR-V itself, as `aokit-vulkan` does
+//! ([`AoEffect::runs_spirv`]). The ray-traced techniques (`raysd`, `hbao-sd`, `hybrid`, `raysvao`,
 //! `groundtruth`), the ones that rasterize the scene themselves and the dual-depth ones are
 //! refused by [`AoEffect::new`] with one line saying so: this crate does not trace rays yet
 //! (use `aokit-vulkan`).
@@ -73,16 +75,61 @@ use aokit_shaders::adapters::ImportParams;
 use aokit_shaders::engine::{engine_frame, probe_frame};
 use aokit_shaders::glam::{Mat4, UVec2};
 use aokit_shaders::graph::{FrameDesc, Graph, Init, Lifetime, PassKind, inputs};
-use aokit_shaders::kernel::Kernel;
+use aokit_shaders::kernel::{BindingKind, Kernel};
 use std::collections::HashMap;
 
-/// The committed WGSL, embedded by the build script.
-mod wgsl {
-    include!(concat!(env!("OUT_DIR"), "/wgsl_modules.rs"));
+/// The committed WGSL and SPIR-V, embedded by the build script.
+mod modules {
+    include!(concat!(env!("OUT_DIR"), "/modules.rs"));
 
     /// The WGSL module of entry point `entry`.
-    pub fn of(entry: &str) -> Option<&'static str> {
-        ALL.iter().find(|(name, _)| *name == entry).map(|m| m.1)
+    pub fn wgsl(entry: &str) -> Option<&'static str> {
+        WGSL.iter().find(|(name, _)| *name == entry).map(|m| m.1)
+    }
+
+    /// The SPIR-V module of entry point `entry`, as words, with each specialization constant's
+    /// default set to its value in `specialization` (`(SpecId, value)`): what a Vulkan driver
+    /// does with `VkSpecializationInfo`, done here because wgpu passes a module through as is.
+    pub fn spirv(entry: &str, specialization: &[(u32, u32)]) -> Option<Vec<u32>> {
+        let bytes = SPIRV.iter().find(|(name, _)| *name == entry)?.1;
+        let mut words: Vec<u32> = bytes.chunks_exact(4).map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]])).collect();
+        specialize(&mut words, specialization);
+        Some(words)
+    }
+
+    /// Set the defaults of the 32-bit `OpSpecConstant`s whose `SpecId` decoration `values`
+    /// lists (SPIR-V 1.6 §3.3.12 / §3.32.4: `OpDecorate %x SpecId n` is opcode 71 with decoration
+    /// 1; `OpSpecConstant %type %x value` is opcode 50). Other instructions are left alone.
+    fn specialize(words: &mut [u32], values: &[(u32, u32)]) {
+        const OP_DECORATE: u32 = 71;
+        const SPEC_ID: u32 = 1;
+        const OP_SPEC_CONSTANT: u32 = 50;
+        let instructions = |words: &[u32]| {
+            let mut at = 5; // after the header
+            let mut all = Vec::new();
+            while at < words.len() {
+                let count = (words[at] >> 16) as usize;
+                all.push((at, words[at] & 0xffff, count));
+                at += count.max(1);
+            }
+            all
+        };
+        let ids: Vec<(u32, u32)> = instructions(words)
+            .into_iter()
+            .filter(|&(at, op, count)| op == OP_DECORATE && count >= 4 && words[at + 2] == SPEC_ID)
+            .filter_map(|(at, _, _)| {
+                let value = values.iter().find(|(id, _)| *id == words[at + 3])?.1;
+                Some((words[at + 1], value))
+            })
+            .collect();
+        for (at, op, count) in instructions(words) {
+            if op == OP_SPEC_CONSTANT
+                && count == 4
+                && let Some((_, value)) = ids.iter().find(|(result, _)| *result == words[at + 2])
+            {
+                words[at + 3] = *value;
+            }
+        }
     }
 }
 
@@ -90,6 +137,11 @@ mod wgsl {
 /// device: each uses its own set of constant buffers, so a frame recorded after it cannot
 /// overwrite what it reads.
 pub const FRAMES_IN_FLIGHT: usize = 3;
+
+/// The device features with which the effect runs the committed SPIR-V itself on wgpu's Vulkan
+/// back-end ([`AoEffect::runs_spirv`]): passed through as is, its push constants as immediates.
+/// Request them where the adapter has them (`adapter.features() & SPIRV_FEATURES`).
+pub const SPIRV_FEATURES: wgpu::Features = wgpu::Features::PASSTHROUGH_SHADERS.union(wgpu::Features::IMMEDIATES);
 
 /// The adapters' workgroup: `threads(8, 8)` in `aokit_shaders::adapters`.
 const ADAPTER_GROUP: u32 = 8;
@@ -184,6 +236,8 @@ struct Pipeline {
     pipeline: wgpu::ComputePipeline,
     layout: wgpu::BindGroupLayout,
     bindings: WgslBindings,
+    /// The committed SPIR-V passed through: push constants as wgpu immediates.
+    immediates: bool,
 }
 
 /// The bindings of group 0 a WGSL module declares.
@@ -354,6 +408,18 @@ impl AoEffect {
         Ok(())
     }
 
+    /// Does the effect run the committed SPIR-V itself (the same modules as `aokit-vulkan`)
+    /// rather than the WGSL? It does on wgpu's Vulkan back-end when the device was made with
+    /// [`SPIRV_FEATURES`] and a `max_immediate_size` that holds every kernel's push constants
+    /// (request the adapter's: `Limits { max_immediate_size: adapter.limits().max_immediate_size,
+    /// .. }`); the adapters run from WGSL either way.
+    pub fn runs_spirv(&self) -> bool {
+        let largest = Kernel::all().iter().map(|k| k.push_constant_bytes().next_multiple_of(4)).max().unwrap_or(0);
+        self.device.features().contains(SPIRV_FEATURES)
+            && self.device.adapter_info().backend == wgpu::Backend::Vulkan
+            && self.device.limits().max_immediate_size >= largest
+    }
+
     /// The settings in use.
     pub fn settings(&self) -> &AoSettings {
         &self.settings
@@ -488,8 +554,14 @@ impl AoEffect {
             let p = &graph.passes[i];
             let invocations = p.invocations(&graph.view);
             let threads = p.kernel.threads;
-            pass.set_pipeline(&self.pipelines[&keys[i]].pipeline);
+            let pipeline = &self.pipelines[&keys[i]];
+            pass.set_pipeline(&pipeline.pipeline);
             pass.set_bind_group(0, &groups[i], &[]);
+            if pipeline.immediates && !p.push_constants.is_empty() {
+                let mut bytes = p.push_constants.clone();
+                bytes.resize(bytes.len().next_multiple_of(4), 0);
+                pass.set_immediates(0, &bytes);
+            }
             pass.dispatch_workgroups(invocations.x.div_ceil(threads[0]), invocations.y.div_ceil(threads[1]), 1);
         };
         let adapter = |pass: &mut wgpu::ComputePass, entry: &'static str, group: &wgpu::BindGroup, size: UVec2| {
@@ -558,7 +630,10 @@ impl AoEffect {
     /// The compute pipeline of `kernel` with the WGSL overrides `specialization`, with the
     /// layout wgpu derives from the WGSL.
     fn make_pipeline(&mut self, kernel: &'static Kernel, specialization: &[(u32, u32)]) -> Result<Pipeline, AoError> {
-        let source = wgsl::of(kernel.entry).ok_or_else(|| {
+        if let Some(pipeline) = self.spirv_pipeline(kernel, specialization) {
+            return Ok(pipeline);
+        }
+        let source = modules::wgsl(kernel.entry).ok_or_else(|| {
             AoError::Frame(format!("pass {} has no WGSL module: aokit-wgpu cannot run it", kernel.entry))
         })?;
         let device = &self.device;
@@ -582,7 +657,71 @@ impl AoEffect {
             cache: None,
         });
         let layout = pipeline.get_bind_group_layout(0);
-        Ok(Pipeline { pipeline, layout, bindings: wgsl_bindings(source) })
+        Ok(Pipeline { pipeline, layout, bindings: wgsl_bindings(source), immediates: false })
+    }
+
+    /// The pipeline of `kernel` from the committed SPIR-V itself (specialized, its push
+    /// constants as immediates, the layout its declaration gives), where the effect runs SPIR-V
+    /// ([`AoEffect::runs_spirv`]) and the kernel binds only storage buffers (the adapters bind
+    /// the application's textures); else `None` (the WGSL path).
+    fn spirv_pipeline(&self, kernel: &'static Kernel, specialization: &[(u32, u32)]) -> Option<Pipeline> {
+        let device = &self.device;
+        let push = kernel.push_constant_bytes().next_multiple_of(4);
+        let usable = self.runs_spirv() && kernel.bindings.iter().all(|b| b.kind == BindingKind::StorageBuffer);
+        if !usable {
+            return None;
+        }
+        let words = modules::spirv(kernel.entry, specialization)?;
+        let [x, y, z] = kernel.threads;
+        let descriptor = wgpu::ShaderModuleDescriptorPassthrough {
+            label: Some(kernel.entry),
+            entry_points: vec![wgpu::PassthroughShaderEntryPoint {
+                name: kernel.entry.into(),
+                workgroup_size: (x, y, z),
+            }]
+            .into(),
+            spirv: Some(words.into()),
+            ..Default::default()
+        };
+        // SAFETY: the module is one of the committed SPIR-V modules that aokit-vulkan runs on
+        // Vulkan (validated by spirv-val in tests/spirv_assets.rs), with only its specialization
+        // constants' defaults changed to the values aokit-vulkan specializes it with; the layout
+        // below is its kernel's declaration, which tests/pass_graph.rs checks against the
+        // module's reflection.
+        let module = unsafe { device.create_shader_module_passthrough(descriptor) };
+        let entries: Vec<wgpu::BindGroupLayoutEntry> = kernel
+            .bindings
+            .iter()
+            .map(|b| wgpu::BindGroupLayoutEntry {
+                binding: b.slot,
+                visibility: wgpu::ShaderStages::COMPUTE,
+                ty: wgpu::BindingType::Buffer {
+                    ty: wgpu::BufferBindingType::Storage { read_only: !b.access.writes() },
+                    has_dynamic_offset: false,
+                    min_binding_size: None,
+                },
+                count: None,
+            })
+            .collect();
+        let layout = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some(kernel.entry),
+            entries: &entries,
+        });
+        let pipeline_layout = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some(kernel.entry),
+            bind_group_layouts: &[Some(&layout)],
+            immediate_size: push,
+        });
+        let pipeline = device.create_compute_pipeline(&wgpu::ComputePipelineDescriptor {
+            label: Some(kernel.entry),
+            layout: Some(&pipeline_layout),
+            module: &module,
+            entry_point: Some(kernel.entry),
+            compilation_options: Default::default(),
+            cache: None,
+        });
+        let bindings = WgslBindings { resources: kernel.bindings.iter().map(|b| b.slot).collect(), constants: None };
+        Some(Pipeline { pipeline, layout, bindings, immediates: true })
     }
 
     /// The graph's buffers (and the imported depth and normals) at their sizes for its view,
@@ -754,7 +893,7 @@ fn check_graph(settings: &AoSettings, desc: &FrameDesc) -> Result<Graph, AoError
     if graph.inputs().iter().any(|i| ![inputs::LINEAR_DEPTH, inputs::VIEW_NORMALS].contains(i)) {
         return refuse("reads more than depth and normals (a second depth layer or the scene)");
     }
-    if let Some(p) = graph.passes.iter().find(|p| wgsl::of(p.entry()).is_none()) {
+    if let Some(p) = graph.passes.iter().find(|p| modules::wgsl(p.entry()).is_none()) {
         return refuse(&format!("has a pass without WGSL ({})", p.entry()));
     }
     if let Some(r) = graph.resources.iter().find(|r| inputs::ALL.contains(&r.name)) {
@@ -850,4 +989,49 @@ fn wgsl_bindings(source: &str) -> WgslBindings {
         }
     }
     found
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `(SpecId, default)` of every 32-bit `OpSpecConstant` of `words`.
+    fn spec_defaults(words: &[u32]) -> Vec<(u32, u32)> {
+        let mut at = 5;
+        let (mut ids, mut constants) = (Vec::new(), Vec::new());
+        while at < words.len() {
+            let (op, count) = (words[at] & 0xffff, (words[at] >> 16) as usize);
+            if op == 71 && count >= 4 && words[at + 2] == 1 {
+                ids.push((words[at + 1], words[at + 3]));
+            } else if op == 50 && count == 4 {
+                constants.push((words[at + 2], words[at + 3]));
+            }
+            at += count.max(1);
+        }
+        let mut out: Vec<(u32, u32)> = ids
+            .iter()
+            .filter_map(|(target, id)| constants.iter().find(|c| c.0 == *target).map(|c| (*id, c.1)))
+            .collect();
+        out.sort();
+        out
+    }
+
+    #[test]
+    fn specialization_sets_exactly_the_listed_spec_constants() {
+        let kernel = Kernel::find("gtao_main").unwrap();
+        let original = modules::spirv("gtao_main", &[]).unwrap();
+        let before = spec_defaults(&original);
+        assert_eq!(before.len(), kernel.specialization.len(), "{before:?}");
+        assert!(before.iter().all(|c| c.1 == 0), "{before:?}");
+        let values = [(0, 1), (4, 7)];
+        let patched = modules::spirv("gtao_main", &values).unwrap();
+        let after = spec_defaults(&patched);
+        for (id, value) in after {
+            let want = values.iter().find(|v| v.0 == id).map_or(0, |v| v.1);
+            assert_eq!(value, want, "SpecId {id}");
+        }
+        // Nothing else changed.
+        let changed = original.iter().zip(&patched).filter(|(a, b)| a != b).count();
+        assert_eq!((changed, original.len()), (2, patched.len()));
+    }
 }

@@ -6,15 +6,17 @@
 //! `CpuExecutor` → export, `cpu_reference`) within the WGSL conformance bar of
 //! `common::agreement` (≥ 99.9 % of the pixels within 1/255, MSE ≤ 1e-6, both asserted), at
 //! two sizes (a resize between them) and with two frames recorded before either is submitted
-//! (frame indices 0 and 1: their noise differs, so a frame reading the other's constants fails).
+//! (frame indices 0 and 1: their noise differs, so a frame reading the other's constants fails),
+//! once from the WGSL and once with the committed SPIR-V passed through (`SPIRV_FEATURES`).
 
 use super::*;
 use aokit_wgpu::AoEffect as WgpuEffect;
 use aokit_wgpu::AoFrame as WgpuFrame;
 
-/// wgpu's device on the Vulkan back-end (lavapipe here); `None` when there is none and the run
-/// allows the skip.
-fn wgpu_device() -> Option<(wgpu::Device, wgpu::Queue)> {
+/// wgpu's device on the Vulkan back-end (lavapipe here), with the features that let the effect
+/// pass the committed SPIR-V through (`spirv`) or without (the WGSL path); `None` when there is
+/// none and the run allows the skip.
+fn wgpu_device(spirv: bool) -> Option<(wgpu::Device, wgpu::Queue)> {
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
         backends: wgpu::Backends::VULKAN,
         ..wgpu::InstanceDescriptor::new_without_display_handle()
@@ -27,8 +29,20 @@ fn wgpu_device() -> Option<(wgpu::Device, wgpu::Queue)> {
         }
     };
     // WebGPU's default limits (what a browser gives), with timestamps where the adapter has them.
-    let required_features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
-    let descriptor = wgpu::DeviceDescriptor { required_features, ..Default::default() };
+    let mut required_features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
+    if spirv {
+        if !adapter.features().contains(aokit_wgpu::SPIRV_FEATURES) {
+            common::skip::cannot_run(common::skip::VULKAN, "the Vulkan adapter lacks PASSTHROUGH_SHADERS | IMMEDIATES");
+            return None;
+        }
+        required_features |= aokit_wgpu::SPIRV_FEATURES;
+    }
+    // WebGPU's default limits, but room for the largest push constants as immediates.
+    let required_limits = wgpu::Limits {
+        max_immediate_size: if spirv { adapter.limits().max_immediate_size } else { 0 },
+        ..Default::default()
+    };
+    let descriptor = wgpu::DeviceDescriptor { required_features, required_limits, ..Default::default() };
     Some(pollster::block_on(adapter.request_device(&descriptor)).unwrap())
 }
 
@@ -194,13 +208,25 @@ fn read_output(device: &wgpu::Device, buffer: &wgpu::Buffer, size: UVec2) -> Vec
 
 #[test]
 fn wgpu_effect_frames_agree_with_cpu_sim() {
-    let Some((device, queue)) = wgpu_device() else { return };
+    // From the WGSL (any wgpu back-end), then from the committed SPIR-V passed through.
+    for spirv in [false, true] {
+        let Some((device, queue)) = wgpu_device(spirv) else { return };
+        effect_frames(&device, &queue, spirv);
+    }
+}
+
+/// The frames of `wgpu_effect_frames_agree_with_cpu_sim` on `device`, whose effect must run the
+/// SPIR-V itself exactly when `spirv`.
+fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
+    let (device, queue) = (device.clone(), queue.clone());
     let start = Instant::now();
+    let path = if spirv { "SPIR-V" } else { "WGSL" };
     let convention = DepthConvention::ReversedInfinite;
     let specs = ["vao", "hbao", "gtao:preset=high", "gtao:preset=ultra:denoise=0", "vbao", "raymarch"];
     let first = Technique::parse(specs[0]).unwrap();
     let (_, frame) = common::builtin_frame("sponza", 160, 96, 16);
     let mut effect = WgpuEffect::new(&device, &queue, effect_settings(&first, &frame)).unwrap();
+    assert_eq!(effect.runs_spirv(), spirv);
     let mut report = Vec::new();
     // Two sizes: the second frame set runs after a resize (every buffer re-made).
     for (width, height, with_normals) in [(160, 96, true), (120, 72, false)] {
@@ -252,7 +278,7 @@ fn wgpu_effect_frames_agree_with_cpu_sim() {
                 let a = common::agreement::of(&on_cpu.ao, &on_wgpu);
                 let normals = if with_normals { "RGBA8 normals" } else { "normals from depth" };
                 let line = format!(
-                    "{spec} {width}×{height} frame {index} ({normals}): {:.3} % within 1/255, max |Δ| {:.2}/255, MSE {:.2e}, occluded {:.1} %",
+                    "{path}: {spec} {width}×{height} frame {index} ({normals}): {:.3} % within 1/255, max |Δ| {:.2}/255, MSE {:.2e}, occluded {:.1} %",
                     100.0 * a.within,
                     255.0 * a.max,
                     a.mse,
@@ -296,7 +322,7 @@ fn wgpu_effect_frames_agree_with_cpu_sim() {
         labels.dedup();
         assert_eq!(times.iter().map(|t| t.0).collect::<Vec<_>>(), labels);
         assert!(times.iter().all(|t| t.1 > 0.0 && t.1 < 1e4), "{times:?}");
-        eprintln!("timed gtao frame: {times:?}");
+        eprintln!("{path}: timed gtao frame: {times:?}");
     } else {
         let e = effect.set_timing(true).expect_err("timing without TIMESTAMP_QUERY").to_string();
         assert!(e.contains("TIMESTAMP_QUERY"), "{e}");
@@ -307,6 +333,6 @@ fn wgpu_effect_frames_agree_with_cpu_sim() {
         let e = WgpuEffect::new(&device, &queue, settings).expect_err(name).to_string();
         assert!(e.contains(name) && e.contains("aokit-vulkan") && !e.contains('\n'), "{e}");
     }
-    eprintln!("wgpu_effect_frames_agree_with_cpu_sim: {:.1} s", start.elapsed().as_secs_f64());
+    eprintln!("wgpu_effect_frames_agree_with_cpu_sim ({path}): {:.1} s", start.elapsed().as_secs_f64());
     assert_eq!(report.len(), 2 * 2 * specs.len());
 }

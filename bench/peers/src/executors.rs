@@ -28,13 +28,16 @@ pub struct ExecutorsArgs {
     /// Techniques (with settings, `name[:key=value…]`), comma-separated.
     #[arg(long, default_value = "vao,gtao,vbao,raysd")]
     pub techniques: String,
+    /// Run the wgpu side from the WGSL even where the adapter can pass the SPIR-V through.
+    #[arg(long)]
+    pub wgsl: bool,
     /// Write the table as Markdown here.
     #[arg(long)]
     pub markdown: Option<PathBuf>,
 }
 
 /// wgpu's device on the Vulkan back-end with timestamp queries.
-fn wgpu_device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
+fn wgpu_device(wgsl: bool) -> Result<(wgpu::Device, wgpu::Queue, String), String> {
     let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
         backends: wgpu::Backends::VULKAN,
         ..wgpu::InstanceDescriptor::new_without_display_handle()
@@ -42,8 +45,10 @@ fn wgpu_device() -> Result<(wgpu::Device, wgpu::Queue, String), String> {
     let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
         .map_err(|e| format!("no Vulkan adapter for wgpu: {e}"))?;
     let name = adapter.get_info().name;
+    // With the committed SPIR-V passed through where the adapter can (`--wgsl`: never).
+    let spirv = if wgsl { wgpu::Features::empty() } else { adapter.features() & aokit_wgpu::SPIRV_FEATURES };
     let descriptor = wgpu::DeviceDescriptor {
-        required_features: wgpu::Features::TIMESTAMP_QUERY,
+        required_features: wgpu::Features::TIMESTAMP_QUERY | spirv,
         required_limits: adapter.limits(),
         ..Default::default()
     };
@@ -87,7 +92,7 @@ pub fn run(args: ExecutorsArgs) -> Result<(), String> {
     let normals = gpu.upload(&gbuffer.normals, vk::BufferUsageFlags::STORAGE_BUFFER).map_err(|e| e.to_string())?;
     let inputs = GpuInputs { depth: &depth, normals: &normals, second_depth: None, scene: None, raster: None };
     // The wgpu side: the application's textures and matrices.
-    let (device, queue, adapter) = wgpu_device()?;
+    let (device, queue, adapter) = wgpu_device(args.wgsl)?;
     let dq = (&device, &queue);
     let sampled = wgpu::TextureUsages::TEXTURE_BINDING;
     let linear =
@@ -189,6 +194,7 @@ pub fn run(args: ExecutorsArgs) -> Result<(), String> {
         let wall_ratios: Vec<f64> = wall_wgpu.iter().zip(&wall_ash).map(|(a, b)| a / b).collect();
         results.push(serde_json::json!({
             "technique": spec,
+            "wgpu_shaders": if effect.runs_spirv() { "SPIR-V" } else { "WGSL" },
             "wgpu_ms": median(&row.aokit_ms),
             "ash_ms": median(&row.peer_ms),
             "ratio": row.ratio(),
@@ -216,7 +222,7 @@ pub fn run(args: ExecutorsArgs) -> Result<(), String> {
 /// The report as the Markdown table of `bench/EXECUTORS.md`.
 fn markdown(report: &serde_json::Value) -> String {
     let mut out = format!(
-        "# aokit-wgpu vs aokit-vulkan (ash), same run\n\n`cargo run --release -p aokit-peers -- executors --markdown bench/EXECUTORS.md` — {} at {}×{}, {} alternating iterations, adapter `{}`.\nGPU: the sum of the technique's pass labels (GPU timestamps on both sides; the wgpu side's import/export adapters not counted). Wall: submission to completion of the whole frame. Ratios: medians of the per-iteration ratios wgpu / ash.\n\n| technique | wgpu ms (GPU) | ash ms (GPU) | wgpu / ash | wgpu wall ms | ash wall ms | wall wgpu / ash |\n|---|---:|---:|---:|---:|---:|---:|\n",
+        "# aokit-wgpu vs aokit-vulkan (ash), same run\n\n`cargo run --release -p aokit-peers -- executors --markdown bench/EXECUTORS.md` (`--wgsl`: the WGSL path) — {} at {}×{}, {} alternating iterations, adapter `{}`.\nGPU: the sum of the technique's pass labels (GPU timestamps on both sides; the wgpu side's import/export adapters not counted). Wall: submission to completion of the whole frame. Ratios: medians of the per-iteration ratios wgpu / ash.\n\n| technique | wgpu runs | wgpu ms (GPU) | ash ms (GPU) | wgpu / ash | wgpu wall ms | ash wall ms | wall wgpu / ash |\n|---|---|---:|---:|---:|---:|---:|---:|\n",
         report["scene"].as_str().unwrap_or(""),
         report["width"],
         report["height"],
@@ -226,11 +232,12 @@ fn markdown(report: &serde_json::Value) -> String {
     for t in report["techniques"].as_array().into_iter().flatten() {
         let name = t["technique"].as_str().unwrap_or("");
         if let Some(why) = t["refused"].as_str() {
-            out += &format!("| {name} | refused: {why} | | | | | |\n");
+            out += &format!("| {name} | refused: {why} | | | | | | |\n");
         } else {
             let v = |k: &str| t[k].as_f64().unwrap_or(f64::NAN);
             out += &format!(
-                "| {name} | {:.2} | {:.2} | **{:.3}** | {:.2} | {:.2} | {:.3} |\n",
+                "| {name} | {} | {:.2} | {:.2} | **{:.3}** | {:.2} | {:.2} | {:.3} |\n",
+                t["wgpu_shaders"].as_str().unwrap_or(""),
                 v("wgpu_ms"),
                 v("ash_ms"),
                 v("ratio"),
