@@ -44,10 +44,12 @@
 //! here) within WebGPU's default limits, so they run on any wgpu back-end, the browser's
 //! WebGPU included. On wgpu's Vulkan back-end with [`SPIRV_FEATURES`] (and the adapter's
 //! `max_immediate_size`) they run the committed SPIR-V itself, as `aokit-vulkan` does
-//! ([`AoEffect::runs_spirv`]). The ray-traced techniques (`raysd`, `hbao-sd`, `hybrid`, `raysvao`,
-//! `groundtruth`), the ones that rasterize the scene themselves and the dual-depth ones are
-//! refused by [`AoEffect::new`] with one line saying so: this crate does not trace rays yet
-//! (use `aokit-vulkan`).
+//! ([`AoEffect::runs_spirv`]). The ray-traced techniques (`raysd`, `hbao-sd`, `hybrid`,
+//! `raysvao`, `groundtruth`) run there too with [`RAY_QUERY_FEATURES`] and the adapter's limits,
+//! as compute passes with ray queries over the acceleration structure of
+//! [`AoEffect::build_scene`] ([`AoEffect::runs_ray_queries`]); elsewhere `AoEffect::new`
+//! refuses them on one line, as it refuses the techniques that rasterize the scene themselves
+//! and the dual-depth ones on every device (use `aokit-vulkan`).
 //!
 //! # Textures
 //!
@@ -74,7 +76,7 @@ pub use aokit_shaders::temporal::settings::TemporalSettings;
 use aokit_shaders::adapters::ImportParams;
 use aokit_shaders::engine::{engine_frame, probe_frame};
 use aokit_shaders::glam::{Mat4, UVec2};
-use aokit_shaders::graph::{FrameDesc, Graph, Init, Lifetime, PassKind, inputs};
+use aokit_shaders::graph::{FrameDesc, Graph, Init, Lifetime, PassKind, RtMode, inputs};
 use aokit_shaders::kernel::{BindingKind, Kernel};
 use std::collections::HashMap;
 
@@ -143,6 +145,20 @@ pub const FRAMES_IN_FLIGHT: usize = 3;
 /// Request them where the adapter has them (`adapter.features() & SPIRV_FEATURES`).
 pub const SPIRV_FEATURES: wgpu::Features = wgpu::Features::PASSTHROUGH_SHADERS.union(wgpu::Features::IMMEDIATES);
 
+/// The device features with which the effect also runs the ray-traced techniques, through the
+/// committed ray-query SPIR-V (`*_rq`) and an acceleration structure built with wgpu's BLAS/TLAS
+/// API ([`AoEffect::runs_ray_queries`], [`AoEffect::build_scene`]).
+pub const RAY_QUERY_FEATURES: wgpu::Features = SPIRV_FEATURES.union(wgpu::Features::EXPERIMENTAL_RAY_QUERY);
+
+/// The scene's inputs a ray-traced pass binds, all provided by an [`AoScene`].
+const SCENE_INPUTS: [&str; 5] = [
+    inputs::SCENE_TLAS,
+    inputs::SCENE_UVS,
+    inputs::SCENE_MATERIALS,
+    inputs::SCENE_MASK_HEADERS,
+    inputs::SCENE_MASK_TEXELS,
+];
+
 /// The adapters' workgroup: `threads(8, 8)` in `aokit_shaders::adapters`.
 const ADAPTER_GROUP: u32 = 8;
 
@@ -189,11 +205,13 @@ pub struct AoFrame<'a> {
     /// The previous frame's world → view, for the temporal accumulation's reprojection; `None`
     /// on a first frame or after a cut.
     pub previous_view: Option<Mat4>,
+    /// The scene, for techniques that trace rays ([`AoEffect::build_scene`]).
+    pub scene: Option<&'a AoScene>,
 }
 
 impl<'a> AoFrame<'a> {
     /// A frame of `depth` (in `depth_convention`) into `output`, seen through `projection` and
-    /// `view`; normals derived from depth, frame index 0, no previous view.
+    /// `view`; normals derived from depth, frame index 0, no previous view, no scene.
     pub fn new(
         depth: &'a wgpu::TextureView,
         depth_convention: DepthConvention,
@@ -210,7 +228,13 @@ impl<'a> AoFrame<'a> {
             view,
             frame_index: 0,
             previous_view: None,
+            scene: None,
         }
+    }
+
+    /// With the scene for ray-traced techniques.
+    pub fn scene(self, scene: &'a AoScene) -> AoFrame<'a> {
+        AoFrame { scene: Some(scene), ..self }
     }
 
     /// With the application's view-space normals.
@@ -221,6 +245,37 @@ impl<'a> AoFrame<'a> {
     /// As frame `index` of a sequence whose previous frame was seen through `previous_view`.
     pub fn temporal(self, index: u32, previous_view: Option<Mat4>) -> AoFrame<'a> {
         AoFrame { frame_index: index, previous_view, ..self }
+    }
+}
+
+pub use aokit_shaders::engine::SceneGeometry;
+
+/// The scene on the device for ray queries: a BLAS of its triangles, a TLAS of one instance of
+/// it, and the tables the any-hit alpha test reads (`aokit_shaders::common::alpha`). Made by
+/// [`AoEffect::build_scene`]; wgpu keeps it alive while frames that use it run.
+pub struct AoScene {
+    tlas: wgpu::Tlas,
+    /// `uvs`, `materials`, `mask_headers`, `mask_texels`, in the order of [`SCENE_INPUTS`]' last four.
+    tables: [wgpu::Buffer; 4],
+    /// Distinguishes scenes in the kept bind groups.
+    id: u64,
+    _blas: wgpu::Blas,
+}
+
+impl std::fmt::Debug for AoScene {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("AoScene").field("id", &self.id).finish_non_exhaustive()
+    }
+}
+
+impl AoScene {
+    /// The resource bound for scene input `name`.
+    fn resource(&self, name: &str) -> wgpu::BindingResource<'_> {
+        match SCENE_INPUTS.iter().position(|&n| n == name) {
+            Some(0) => wgpu::BindingResource::AccelerationStructure(&self.tlas),
+            Some(i) => self.tables[i - 1].as_entire_binding(),
+            None => unreachable!("{name} is no scene input"),
+        }
     }
 }
 
@@ -279,6 +334,8 @@ struct FrameSlot {
 #[derive(Clone, PartialEq)]
 struct BindKey {
     generation: u64,
+    /// The scene bound ([`AoScene::id`]), if any pass binds one.
+    scene: Option<u64>,
     passes: Vec<PassBinding>,
 }
 
@@ -353,6 +410,8 @@ pub struct AoEffect {
     slots: Vec<FrameSlot>,
     frame: u64,
     timing: Option<Timing>,
+    /// Scenes built so far (each one's [`AoScene::id`]).
+    scenes: u64,
 }
 
 impl std::fmt::Debug for AoEffect {
@@ -382,8 +441,9 @@ impl AoEffect {
             slots: (0..FRAMES_IN_FLIGHT).map(|_| FrameSlot::default()).collect(),
             frame: 0,
             timing: None,
+            scenes: 0,
         };
-        check_graph(&effect.settings, &probe_frame(&effect.settings, None))?;
+        effect.check_graph(&effect.settings, &probe_frame(&effect.settings, None))?;
         Ok(effect)
     }
 
@@ -402,10 +462,156 @@ impl AoEffect {
     /// refused (and the old ones kept).
     pub fn set_settings(&mut self, settings: AoSettings) -> Result<(), AoError> {
         settings.check().map_err(AoError::Settings)?;
-        check_graph(&settings, &probe_frame(&settings, self.size))?;
+        self.check_graph(&settings, &probe_frame(&settings, self.size))?;
         self.settings = settings;
         self.built = None;
         Ok(())
+    }
+
+    /// The graph of `settings` for `desc` (ray-traced passes as ray queries), refused where this
+    /// effect cannot run it on its device.
+    fn check_graph(&self, settings: &AoSettings, desc: &FrameDesc) -> Result<Graph, AoError> {
+        let technique = &settings.technique;
+        let name = technique.name();
+        let graph = technique.graph(desc).map_err(AoError::Settings)?.with_rt_mode(RtMode::Query);
+        graph.validate().map_err(AoError::Settings)?;
+        let refuse = |why: &str| Err(AoError::Frame(format!("{name} {why} (use aokit-vulkan)")));
+        if graph.traces_rays() && !self.runs_ray_queries() {
+            return refuse(
+                "traces rays: aokit-wgpu traces them with ray queries on wgpu's Vulkan back-end, on a device made with RAY_QUERY_FEATURES and the adapter's limits",
+            );
+        }
+        if graph.passes.iter().any(|p| p.kind != PassKind::Compute) {
+            return refuse("rasterizes the scene itself: aokit-wgpu runs no raster pass");
+        }
+        let readable = |i: &&str| [inputs::LINEAR_DEPTH, inputs::VIEW_NORMALS].contains(i) || SCENE_INPUTS.contains(i);
+        if let Some(input) = graph.inputs().iter().find(|i| !readable(i)) {
+            return refuse(&format!("reads {input}, which aokit-wgpu does not take"));
+        }
+        let runs =
+            |entry: &str| modules::wgsl(entry).is_some() || self.runs_spirv() && modules::spirv(entry, &[]).is_some();
+        if let Some(p) = graph.passes.iter().find(|p| !runs(p.entry())) {
+            return refuse(&format!("has a pass this device cannot run ({}: no WGSL)", p.entry()));
+        }
+        if let Some(r) = graph.resources.iter().find(|r| inputs::ALL.contains(&r.name)) {
+            return Err(AoError::Settings(format!("{name} declares a resource named like an input: {}", r.name)));
+        }
+        Ok(graph)
+    }
+
+    /// Does the effect run the ray-traced techniques (ray queries in the committed SPIR-V)? It
+    /// does where it runs the SPIR-V ([`AoEffect::runs_spirv`]) on a device made with
+    /// [`RAY_QUERY_FEATURES`] and limits that hold every ray-query kernel's buffers and one
+    /// BLAS, TLAS instance and acceleration structure binding (request the adapter's limits).
+    pub fn runs_ray_queries(&self) -> bool {
+        let tracing = |k: &&&Kernel| k.bindings.iter().any(|b| b.kind == BindingKind::AccelerationStructure);
+        let buffers = |k: &&Kernel| k.bindings.iter().filter(|b| b.kind == BindingKind::StorageBuffer).count() as u32;
+        let needed = Kernel::all().iter().filter(tracing).map(buffers).max().unwrap_or(0);
+        let limits = self.device.limits();
+        self.runs_spirv()
+            && self.device.features().contains(RAY_QUERY_FEATURES)
+            && limits.max_storage_buffers_per_shader_stage >= needed
+            && limits.max_acceleration_structures_per_shader_stage >= 1
+            && limits.max_blas_geometry_count >= 1
+            && limits.max_tlas_instance_count >= 1
+    }
+
+    /// Build the acceleration structure of `geometry` for the ray-traced techniques (a BLAS of
+    /// its triangles, a TLAS of one instance) and upload the alpha-test tables; submitted to the
+    /// effect's queue at once (frames submitted after it see it built). Needs
+    /// [`AoEffect::runs_ray_queries`].
+    pub fn build_scene(&mut self, geometry: &SceneGeometry) -> Result<AoScene, AoError> {
+        if !self.runs_ray_queries() {
+            return Err(AoError::Frame(
+                "build_scene needs ray queries: a Vulkan device made with RAY_QUERY_FEATURES and the adapter's limits"
+                    .into(),
+            ));
+        }
+        let g = geometry;
+        let triangles = g.positions.len() / 3;
+        if triangles == 0
+            || !g.positions.len().is_multiple_of(3)
+            || g.uvs.len() != g.positions.len()
+            || g.materials.len() != triangles
+        {
+            return Err(AoError::Frame(format!(
+                "ray-tracing scene: {} corners, {} uvs, {} materials (expected 3 corners and 3 uvs per triangle, one material)",
+                g.positions.len(),
+                g.uvs.len(),
+                g.materials.len()
+            )));
+        }
+        let most = self.device.limits().max_blas_primitive_count as usize;
+        if triangles > most {
+            return Err(AoError::Frame(format!(
+                "ray-tracing scene: {triangles} triangles, the device's BLAS holds {most}"
+            )));
+        }
+        use wgpu::util::DeviceExt;
+        let device = &self.device;
+        let buffer = |label: &str, bytes: &[u8], usage: wgpu::BufferUsages| {
+            // A binding is never empty: a table without entries is one zero word.
+            let contents = if bytes.is_empty() { &[0u8; 4][..] } else { bytes };
+            device.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: Some(label), contents, usage })
+        };
+        let vertices =
+            buffer("aokit scene vertices", bytemuck::cast_slice(g.positions), wgpu::BufferUsages::BLAS_INPUT);
+        let masked = g.mask_headers.iter().any(|h| h.width > 0);
+        // The any-hit alpha test runs only on triangles not flagged opaque.
+        let flags = if masked {
+            wgpu::AccelerationStructureGeometryFlags::empty()
+        } else {
+            wgpu::AccelerationStructureGeometryFlags::OPAQUE
+        };
+        let size = wgpu::BlasTriangleGeometrySizeDescriptor {
+            vertex_format: wgpu::VertexFormat::Float32x3,
+            vertex_count: g.positions.len() as u32,
+            index_format: None,
+            index_count: None,
+            flags,
+        };
+        let blas = device.create_blas(
+            &wgpu::CreateBlasDescriptor {
+                label: Some("aokit scene"),
+                flags: wgpu::AccelerationStructureFlags::PREFER_FAST_TRACE,
+                update_mode: wgpu::AccelerationStructureUpdateMode::Build,
+            },
+            wgpu::BlasGeometrySizeDescriptors::Triangles { descriptors: vec![size.clone()] },
+        );
+        let mut tlas = device.create_tlas(&wgpu::CreateTlasDescriptor {
+            label: Some("aokit scene"),
+            max_instances: 1,
+            flags: wgpu::AccelerationStructureFlags::PREFER_FAST_TRACE,
+            update_mode: wgpu::AccelerationStructureUpdateMode::Build,
+        });
+        // One instance, identity transform, custom index 0: the any-hit reads triangle
+        // `InstanceCustomIndex + PrimitiveId` of the tables (as aokit-vulkan's TLAS).
+        let identity = [1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0];
+        tlas[0] = Some(wgpu::TlasInstance::new(&blas, identity, 0, 0xff));
+        let mut encoder = device.create_command_encoder(&wgpu::CommandEncoderDescriptor { label: Some("aokit scene") });
+        let geometry = wgpu::BlasTriangleGeometry {
+            size: &size,
+            vertex_buffer: &vertices,
+            first_vertex: 0,
+            vertex_stride: 12,
+            index_buffer: None,
+            first_index: None,
+            transform_buffer: None,
+            transform_buffer_offset: None,
+        };
+        let entry =
+            wgpu::BlasBuildEntry { blas: &blas, geometry: wgpu::BlasGeometries::TriangleGeometries(vec![geometry]) };
+        encoder.build_acceleration_structures(std::iter::once(&entry), std::iter::once(&tlas));
+        self.queue.submit([encoder.finish()]);
+        let storage = wgpu::BufferUsages::STORAGE;
+        let tables = [
+            buffer("aokit scene uvs", bytemuck::cast_slice(g.uvs), storage),
+            buffer("aokit scene materials", bytemuck::cast_slice(g.materials), storage),
+            buffer("aokit scene mask headers", bytemuck::cast_slice(g.mask_headers), storage),
+            buffer("aokit scene mask texels", bytemuck::cast_slice(g.mask_texels), storage),
+        ];
+        self.scenes += 1;
+        Ok(AoScene { tlas, tables, id: self.scenes, _blas: blas })
     }
 
     /// Does the effect run the committed SPIR-V itself (the same modules as `aokit-vulkan`)
@@ -489,7 +695,7 @@ impl AoEffect {
         let built = match self.built.take() {
             Some(b) if b.desc == desc && b.normals == normals => b,
             _ => {
-                let graph = check_graph(&self.settings, &desc)?;
+                let graph = self.check_graph(&self.settings, &desc)?;
                 // Without the application's normals, the graph derives them from depth first.
                 let mut graph = if normals { graph } else { graph.with_normals_from_depth() };
                 // Diagnostic copies are for reports, not application frames.
@@ -511,6 +717,12 @@ impl AoEffect {
         import: &ImportParams,
     ) -> Result<(), AoError> {
         // What can fail does so before anything is recorded.
+        if graph.traces_rays() && frame.scene.is_none() {
+            let name = self.settings.technique.name();
+            return Err(AoError::Frame(format!(
+                "{name} traces rays: give the scene (AoEffect::build_scene, AoFrame::scene)"
+            )));
+        }
         let keys = self.prepare_pipelines(graph)?;
         let made = self.ensure_buffers(graph);
         let alignment = u64::from(self.device.limits().min_uniform_buffer_offset_alignment);
@@ -535,7 +747,7 @@ impl AoEffect {
                 _ => {}
             }
         }
-        self.ensure_bind_groups(slot, graph, &keys, &layout);
+        self.ensure_bind_groups(slot, (graph, frame.scene.filter(|_| graph.traces_rays())), &keys, &layout);
         let adapters = self.adapter_bind_groups(&constants, frame, graph.output);
         // Consecutive passes with one label are timed as one (as the Vulkan executor does).
         let mut spans: Vec<(&'static str, std::ops::Range<usize>)> = Vec::new();
@@ -662,12 +874,12 @@ impl AoEffect {
 
     /// The pipeline of `kernel` from the committed SPIR-V itself (specialized, its push
     /// constants as immediates, the layout its declaration gives), where the effect runs SPIR-V
-    /// ([`AoEffect::runs_spirv`]) and the kernel binds only storage buffers (the adapters bind
-    /// the application's textures); else `None` (the WGSL path).
+    /// ([`AoEffect::runs_spirv`]) and the kernel binds no image (the adapters bind the
+    /// application's textures); else `None` (the WGSL path).
     fn spirv_pipeline(&self, kernel: &'static Kernel, specialization: &[(u32, u32)]) -> Option<Pipeline> {
         let device = &self.device;
         let push = kernel.push_constant_bytes().next_multiple_of(4);
-        let usable = self.runs_spirv() && kernel.bindings.iter().all(|b| b.kind == BindingKind::StorageBuffer);
+        let usable = self.runs_spirv() && kernel.bindings.iter().all(|b| b.kind != BindingKind::Image);
         if !usable {
             return None;
         }
@@ -695,10 +907,15 @@ impl AoEffect {
             .map(|b| wgpu::BindGroupLayoutEntry {
                 binding: b.slot,
                 visibility: wgpu::ShaderStages::COMPUTE,
-                ty: wgpu::BindingType::Buffer {
-                    ty: wgpu::BufferBindingType::Storage { read_only: !b.access.writes() },
-                    has_dynamic_offset: false,
-                    min_binding_size: None,
+                ty: match b.kind {
+                    BindingKind::AccelerationStructure => {
+                        wgpu::BindingType::AccelerationStructure { vertex_return: false }
+                    }
+                    _ => wgpu::BindingType::Buffer {
+                        ty: wgpu::BufferBindingType::Storage { read_only: !b.access.writes() },
+                        has_dynamic_offset: false,
+                        min_binding_size: None,
+                    },
                 },
                 count: None,
             })
@@ -784,9 +1001,16 @@ impl AoEffect {
 
     /// Slot `slot`'s bind groups for the graph's passes, re-made when the buffers, the passes
     /// or the constants' places changed.
-    fn ensure_bind_groups(&mut self, slot: usize, graph: &Graph, keys: &[PipelineKey], layout: &ConstantsLayout) {
+    fn ensure_bind_groups(
+        &mut self,
+        slot: usize,
+        (graph, scene): (&Graph, Option<&AoScene>),
+        keys: &[PipelineKey],
+        layout: &ConstantsLayout,
+    ) {
         let key = BindKey {
             generation: self.generation,
+            scene: scene.map(|s| s.id),
             passes: graph
                 .passes
                 .iter()
@@ -812,7 +1036,10 @@ impl AoEffect {
                     .filter(|b| pipeline.bindings.resources.contains(&b.slot))
                     .map(|b| wgpu::BindGroupEntry {
                         binding: b.slot,
-                        resource: self.buffers[b.resource].buffer.as_entire_binding(),
+                        resource: match scene {
+                            Some(scene) if SCENE_INPUTS.contains(&b.resource) => scene.resource(b.resource),
+                            _ => self.buffers[b.resource].buffer.as_entire_binding(),
+                        },
                     })
                     .collect();
                 if let (Some(binding), Some((offset, size))) = (pipeline.bindings.constants, c) {
@@ -871,35 +1098,6 @@ impl AoEffect {
 /// `pass`'s pipeline key: its entry point and specialization for its push constants.
 fn pipeline_key(kernel: &'static Kernel, push: &[u8]) -> Result<PipelineKey, AoError> {
     Ok((kernel.entry, kernel.specialization_for(push).map_err(AoError::Settings)?))
-}
-
-/// The graph of `settings` for `desc`, refused where this crate cannot run it.
-fn check_graph(settings: &AoSettings, desc: &FrameDesc) -> Result<Graph, AoError> {
-    let technique = &settings.technique;
-    let name = technique.name();
-    let graph = technique.graph(desc).map_err(AoError::Settings)?;
-    graph.validate().map_err(AoError::Settings)?;
-    let refuse = |why: &str| {
-        Err(AoError::Frame(format!(
-            "{name} {why}: aokit-wgpu runs the screen-space techniques only (use aokit-vulkan)"
-        )))
-    };
-    if graph.traces_rays() {
-        return refuse("traces rays");
-    }
-    if graph.passes.iter().any(|p| p.kind != PassKind::Compute) {
-        return refuse("rasterizes the scene itself");
-    }
-    if graph.inputs().iter().any(|i| ![inputs::LINEAR_DEPTH, inputs::VIEW_NORMALS].contains(i)) {
-        return refuse("reads more than depth and normals (a second depth layer or the scene)");
-    }
-    if let Some(p) = graph.passes.iter().find(|p| modules::wgsl(p.entry()).is_none()) {
-        return refuse(&format!("has a pass without WGSL ({})", p.entry()));
-    }
-    if let Some(r) = graph.resources.iter().find(|r| inputs::ALL.contains(&r.name)) {
-        return Err(AoError::Settings(format!("{name} declares a resource named like an input: {}", r.name)));
-    }
-    Ok(graph)
 }
 
 /// Refuse textures the adapters cannot read or write, with the reason (wgpu would otherwise

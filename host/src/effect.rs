@@ -2,10 +2,9 @@
 
 use crate::graph::{AoContext, EngineFrame, check_device};
 use crate::{AoImage, EngineImage, ExternalDevice, Gpu, GpuError, SceneAccel};
-use aokit_shaders::common::alpha::AlphaMaskHeader;
-pub use aokit_shaders::engine::{AoSettings, DepthConvention, EngineCamera, engine_camera};
+pub use aokit_shaders::engine::{AoSettings, DepthConvention, EngineCamera, SceneGeometry, engine_camera};
 use aokit_shaders::engine::{engine_frame, probe_frame};
-use aokit_shaders::glam::{Mat4, UVec2, Vec2};
+use aokit_shaders::glam::{Mat4, UVec2};
 use aokit_shaders::graph::{FrameDesc, Graph, PassKind, RtMode};
 use ash::vk;
 use std::sync::Arc;
@@ -109,21 +108,6 @@ impl<'a> AoFrame<'a> {
     pub fn scene(self, scene: &'a AoScene) -> AoFrame<'a> {
         AoFrame { scene: Some(scene), ..self }
     }
-}
-
-/// The scene's triangles, for the ray-traced techniques ([`AoEffect::build_scene`]).
-#[derive(Copy, Clone, Debug)]
-pub struct SceneGeometry<'a> {
-    /// World-space positions, three corners per triangle.
-    pub positions: &'a [[f32; 3]],
-    /// Texture coordinates, three per triangle (what the alpha masks are sampled at).
-    pub uvs: &'a [Vec2],
-    /// Material index per triangle (into `mask_headers`).
-    pub materials: &'a [u32],
-    /// Alpha mask per material (`width == 0`: opaque); empty: every material opaque.
-    pub mask_headers: &'a [AlphaMaskHeader],
-    /// The masks' alpha texels.
-    pub mask_texels: &'a [f32],
 }
 
 /// The scene on the device for ray tracing: aokit's acceleration structure (or the engine's

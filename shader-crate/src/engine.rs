@@ -8,8 +8,9 @@
 use crate::adapters::ImportParams;
 use crate::adapters::settings::AdapterSettings;
 use crate::adapters::{DEPTH_LINEAR, DEPTH_REVERSED, DEPTH_REVERSED_INFINITE, DEPTH_STANDARD};
+use crate::common::alpha::AlphaMaskHeader;
 use crate::common::camera::{Camera, ViewParams};
-use crate::glam::{Mat4, UVec2, vec2};
+use crate::glam::{Mat4, UVec2, Vec2, vec2};
 use crate::graph::{FrameDesc, RtMode};
 use crate::technique::Technique;
 use crate::temporal::settings::TemporalSettings;
@@ -146,6 +147,22 @@ impl AoSettings {
         }
         Ok(())
     }
+}
+
+/// The scene's triangles, for the ray-traced techniques (`AoEffect::build_scene` of
+/// `aokit-vulkan` and of `aokit-wgpu`).
+#[derive(Copy, Clone, Debug)]
+pub struct SceneGeometry<'a> {
+    /// World-space positions, three corners per triangle.
+    pub positions: &'a [[f32; 3]],
+    /// Texture coordinates, three per triangle (what the alpha masks are sampled at).
+    pub uvs: &'a [Vec2],
+    /// Material index per triangle (into `mask_headers`).
+    pub materials: &'a [u32],
+    /// Alpha mask per material (`width == 0`: opaque); empty: every material opaque.
+    pub mask_headers: &'a [AlphaMaskHeader],
+    /// The masks' alpha texels.
+    pub mask_texels: &'a [f32],
 }
 
 /// aokit's camera of an engine frame and the engine projection's planes.

@@ -336,3 +336,87 @@ fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
     eprintln!("wgpu_effect_frames_agree_with_cpu_sim ({path}): {:.1} s", start.elapsed().as_secs_f64());
     assert_eq!(report.len(), 2 * 2 * specs.len());
 }
+
+/// The ray-traced techniques through the wgpu effect (ray queries in the committed SPIR-V, the
+/// acceleration structure built with wgpu's BLAS/TLAS API) on the frame of
+/// `ray_queries_on_an_engine_device_agree_with_the_pipelines_and_cpu_sim`: they must agree with
+/// the Vulkan effect's ray queries on that frame like two runs of one kernel (≥ 99.9 % within
+/// 1/255, MSE ≤ 1e-6: the same SPIR-V on the same driver, over a TLAS of the same triangles),
+/// and the ground truth with cpu-sim (`check_agreement`). Every ray-traced technique runs: raysd,
+/// the ground truth, hbao-sd, hybrid and raysvao. A device without ray queries refuses them on
+/// one line.
+#[test]
+fn wgpu_ray_queries_agree_with_the_vulkan_effect_and_cpu_sim() {
+    // The first two also against cpu-sim (on the Vulkan side, `check_frame`; the ground truth
+    // here too); the others against the Vulkan effect only.
+    let specs = ["raysd", "groundtruth:spp=16", "hbao-sd", "hybrid", "raysvao"];
+    let Some(mut on_vulkan) = ray_traced_frames(RayTracing::QueriesOnly, &specs[..2], true) else { return };
+    let Some(others) = ray_traced_frames(RayTracing::QueriesOnly, &specs[2..], false) else { return };
+    on_vulkan.extend(others);
+    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
+        backends: wgpu::Backends::VULKAN,
+        ..wgpu::InstanceDescriptor::new_without_display_handle()
+    });
+    let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default())).unwrap();
+    if !adapter.features().contains(aokit_wgpu::RAY_QUERY_FEATURES) {
+        common::skip::cannot_run(common::skip::VULKAN, "the Vulkan adapter lacks wgpu's ray queries or passthrough");
+        return;
+    }
+    let descriptor = wgpu::DeviceDescriptor {
+        required_features: aokit_wgpu::RAY_QUERY_FEATURES,
+        required_limits: adapter.limits(),
+        // SAFETY (of the token): ray queries are experimental in wgpu 30.
+        experimental_features: unsafe { wgpu::ExperimentalFeatures::enabled() },
+        ..Default::default()
+    };
+    let (device, queue) = pollster::block_on(adapter.request_device(&descriptor)).unwrap();
+    let (scene, frame) = common::builtin_frame("sponza", 96, 64, 12);
+    let view = frame.camera.view;
+    let renderer = CpuRenderer::new(&scene);
+    let (gbuffer, _) = renderer.gbuffer(&frame, &no_progress);
+    let v = engine_view(&frame, DepthConvention::Reversed);
+    let g = EngineGBuffer { params: v.params, ..engine_gbuffer(&view, &gbuffer, EngineFormats::d32(v.convention)) };
+    let textures = app_textures(&device, &queue, &g);
+    let first = Technique::parse(specs[0]).unwrap();
+    let mut effect = WgpuEffect::new(&device, &queue, effect_settings(&first, &frame)).unwrap();
+    assert!(effect.runs_ray_queries());
+    effect.resize(g.size.x, g.size.y).unwrap();
+    let rays = effect.build_scene(&scene.corner_tables().geometry(&scene.triangle_materials)).unwrap();
+    for (spec, vulkan) in specs.iter().zip(&on_vulkan) {
+        let technique = Technique::parse(spec).unwrap();
+        effect.set_settings(effect_settings(&technique, &frame)).unwrap();
+        let ao_frame =
+            WgpuFrame::new(&textures.depth, v.convention, &textures.output_view, v.projection, v.world_to_view)
+                .normals(&textures.normals);
+        // Without the scene: refused before anything is recorded.
+        let mut encoder = device.create_command_encoder(&Default::default());
+        let e = effect.record(&mut encoder, &ao_frame).expect_err("a ray-traced frame without the scene").to_string();
+        assert!(e.contains("build_scene") && !e.contains('\n'), "{e}");
+        effect.record(&mut encoder, &ao_frame.scene(&rays)).unwrap();
+        let readback = copy_output(&device, &mut encoder, &textures);
+        queue.submit([encoder.finish()]);
+        let on_wgpu = read_output(&device, &readback, g.size);
+        let a = common::agreement::of(vulkan, &on_wgpu);
+        let line = format!(
+            "{spec}: wgpu ray queries vs the Vulkan effect's: {:.3} % within 1/255, max |Δ| {:.2}/255, MSE {:.2e}, occluded {:.1} %",
+            100.0 * a.within,
+            255.0 * a.max,
+            a.mse,
+            100.0 * a.occluded
+        );
+        eprintln!("{line}");
+        assert!(a.occluded >= 0.02, "{line}: too little occlusion to compare");
+        assert!(a.within >= common::agreement::MIN_WITHIN && a.mse <= common::agreement::MAX_MSE, "{line}");
+        if spec.starts_with("groundtruth") {
+            let desc = FrameDesc::new(v.camera, frame.radius, frame.exponent, frame.thickness);
+            let graph = technique.graph(&desc).unwrap();
+            let on_cpu = cpu_reference(&renderer, &graph, &g, true);
+            check_agreement(&format!("{spec} through aokit-wgpu"), &on_cpu.ao, &on_wgpu);
+        }
+    }
+    // A device without ray queries refuses them on one line, naming what it needs.
+    let (plain, plain_queue) = wgpu_device(false).expect("the adapter above");
+    let e =
+        WgpuEffect::new(&plain, &plain_queue, effect_settings(&first, &frame)).expect_err("no ray queries").to_string();
+    assert!(e.contains("raysd") && e.contains("RAY_QUERY_FEATURES") && !e.contains('\n'), "{e}");
+}

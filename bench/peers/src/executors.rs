@@ -7,14 +7,16 @@
 //! Both sides time the technique's pass labels with GPU timestamps (`pass_times` on both); the
 //! table's time is their sum, so the wgpu side's import and export adapters are not counted
 //! (the ash path has none). Beside it, the wall time from submission to completion of the whole
-//! frame (adapters included on the wgpu side). A technique `aokit-wgpu` refuses (ray tracing)
-//! is listed with the refusal.
+//! frame (adapters included on the wgpu side). Ray-traced techniques run as ray queries on both
+//! sides (the TLAS built by each executor from the same triangles); a technique `aokit-wgpu`
+//! refuses is listed with the refusal.
 
 use crate::common::{self, FrameArgs, Row, median};
 use aokit::technique::Technique;
 use aokit_shaders::common::normal_codec::decode_normal;
 use aokit_shaders::glam::{Mat4, Vec4};
-use aokit_vulkan::{AoContext, Gpu, GpuInputs, GpuOptions};
+use aokit_shaders::graph::RtMode;
+use aokit_vulkan::{AoContext, Gpu, GpuInputs, GpuOptions, SceneAccel};
 use ash::vk;
 use std::path::PathBuf;
 use std::rc::Rc;
@@ -45,11 +47,14 @@ fn wgpu_device(wgsl: bool) -> Result<(wgpu::Device, wgpu::Queue, String), String
     let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default()))
         .map_err(|e| format!("no Vulkan adapter for wgpu: {e}"))?;
     let name = adapter.get_info().name;
-    // With the committed SPIR-V passed through where the adapter can (`--wgsl`: never).
-    let spirv = if wgsl { wgpu::Features::empty() } else { adapter.features() & aokit_wgpu::SPIRV_FEATURES };
+    // With the committed SPIR-V passed through, and ray queries, where the adapter can
+    // (`--wgsl`: never).
+    let spirv = if wgsl { wgpu::Features::empty() } else { adapter.features() & aokit_wgpu::RAY_QUERY_FEATURES };
     let descriptor = wgpu::DeviceDescriptor {
         required_features: wgpu::Features::TIMESTAMP_QUERY | spirv,
         required_limits: adapter.limits(),
+        // SAFETY (of the token): ray queries are experimental in wgpu 30.
+        experimental_features: unsafe { wgpu::ExperimentalFeatures::enabled() },
         ..Default::default()
     };
     let (device, queue) = pollster::block_on(adapter.request_device(&descriptor)).map_err(|e| e.to_string())?;
@@ -83,14 +88,19 @@ fn texture(
 }
 
 pub fn run(args: ExecutorsArgs) -> Result<(), String> {
-    let (_scene, frame, gbuffer) = common::frame_and_gbuffer(&args.frame)?;
+    let (scene, frame, gbuffer) = common::frame_and_gbuffer(&args.frame)?;
+    let tables = scene.corner_tables();
+    let geometry = tables.geometry(&scene.triangle_materials);
     let view = frame.camera.view;
     let (w, h) = (view.size().x, view.size().y);
     // The ash side: aokit's internal path on the G-buffer buffers.
     let gpu = Rc::new(Gpu::new(&GpuOptions::default()).map_err(|e| e.to_string())?);
     let depth = gpu.upload(&gbuffer.depth, vk::BufferUsageFlags::STORAGE_BUFFER).map_err(|e| e.to_string())?;
     let normals = gpu.upload(&gbuffer.normals, vk::BufferUsageFlags::STORAGE_BUFFER).map_err(|e| e.to_string())?;
-    let inputs = GpuInputs { depth: &depth, normals: &normals, second_depth: None, scene: None, raster: None };
+    let masks = (geometry.mask_headers.to_vec(), geometry.mask_texels.to_vec());
+    let accel = SceneAccel::build(&gpu, geometry.positions, geometry.uvs, geometry.materials, &masks)
+        .map_err(|e| e.to_string())?;
+    let inputs = GpuInputs { depth: &depth, normals: &normals, second_depth: None, scene: Some(&accel), raster: None };
     // The wgpu side: the application's textures and matrices.
     let (device, queue, adapter) = wgpu_device(args.wgsl)?;
     let dq = (&device, &queue);
@@ -130,7 +140,8 @@ pub fn run(args: ExecutorsArgs) -> Result<(), String> {
     let mut results = Vec::new();
     for spec in args.techniques.split(',').map(str::trim).filter(|s| !s.is_empty()) {
         let technique = Technique::parse(spec)?;
-        let graph = technique.graph(&frame.desc())?;
+        // Ray-traced passes as ray queries on both sides (what aokit-wgpu runs).
+        let graph = technique.graph(&frame.desc())?.with_rt_mode(RtMode::Query);
         let settings = aokit_wgpu::AoSettings::new(technique.clone())
             .radius(frame.radius)
             .exponent(frame.exponent)
@@ -144,6 +155,12 @@ pub fn run(args: ExecutorsArgs) -> Result<(), String> {
             }
         };
         effect.resize(w, h).map_err(|e| e.to_string())?;
+        let rays =
+            if graph.traces_rays() { Some(effect.build_scene(&geometry).map_err(|e| e.to_string())?) } else { None };
+        let wgpu_frame = match &rays {
+            Some(rays) => wgpu_frame.scene(rays),
+            None => wgpu_frame,
+        };
         effect.set_timing(true).map_err(|e| e.to_string())?;
         let mut ctx = AoContext::new(gpu.clone());
         let mut row = Row { name: spec.to_string(), aokit_ms: Vec::new(), peer_ms: Vec::new() };
