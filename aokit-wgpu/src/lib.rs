@@ -43,8 +43,8 @@
 //! denoisers and temporal accumulation) run from the committed WGSL (`assets/wgsl/`, embedded
 //! here) within WebGPU's default limits, so they run on any wgpu back-end, the browser's
 //! WebGPU included. On wgpu's Vulkan back-end with [`SPIRV_FEATURES`] (and the adapter's
-//! `max_immediate_size`) they run the committed SPIR-V itself, as `aokit-vulkan` does
-//! ([`AoEffect::runs_spirv`]). The ray-traced techniques (`raysd`, `hbao-sd`, `hybrid`,
+//! `max_immediate_size`) they run the committed SPIR-V itself, as `aokit-vulkan` does, the
+//! texture import and export included ([`AoEffect::runs_spirv`]). The ray-traced techniques (`raysd`, `hbao-sd`, `hybrid`,
 //! `raysvao`, `groundtruth`) run there too with [`RAY_QUERY_FEATURES`] and the adapter's limits,
 //! as compute passes with ray queries over the acceleration structure of
 //! [`AoEffect::build_scene`] ([`AoEffect::runs_ray_queries`]); elsewhere `AoEffect::new`
@@ -61,8 +61,9 @@
 //! * **Normals** ([`AoFrame::normals`], optional): any float-readable format holding the
 //!   view-space normal `n·0.5 + 0.5` in RGB; without them the technique derives normals from
 //!   depth (XeGTAO's normals pass).
-//! * **Output** ([`AoFrame::output`]): an `R32Float` 2D view of the application's size from a
-//!   texture with `STORAGE_BINDING` usage; 1 = unoccluded.
+//! * **Output** ([`AoFrame::output`]): a 2D view of the application's size from a texture with
+//!   `STORAGE_BINDING` usage, `R32Float` (and, where the effect runs SPIR-V, `R16Float` or
+//!   `R8Unorm`, whose storage needs the adapter's format features); 1 = unoccluded.
 //!
 //! wgpu orders the passes after the application's earlier use of these textures and before
 //! its later use by itself: no barrier to write.
@@ -192,7 +193,8 @@ pub struct AoFrame<'a> {
     pub depth_convention: DepthConvention,
     /// View-space normals `n·0.5 + 0.5` in RGB; `None`: derived from depth.
     pub normals: Option<&'a wgpu::TextureView>,
-    /// Where the AO goes: an `R32Float` view with storage usage (1 = unoccluded).
+    /// Where the AO goes: an `R32Float` view with storage usage (`R16Float`, `R8Unorm` too where
+    /// the effect runs SPIR-V); 1 = unoccluded.
     pub output: &'a wgpu::TextureView,
     /// The projection the depth was rendered with: right-handed view space looking down −Z,
     /// clip depth `[0, 1]`, symmetric frustum (pass the unjittered matrix), row 0 of the
@@ -307,8 +309,13 @@ struct WgslBindings {
 /// A pipeline: the entry point and its specialization (`(SpecId, value)`, the WGSL overrides).
 type PipelineKey = (&'static str, Vec<(u32, u32)>);
 
-/// The export adapter of the one output format WGSL offers (`R32Float`).
-const EXPORT: &str = "export_ao_r32f";
+/// The export adapter of each output format: its entry point and whether it has WGSL (the
+/// others run only from SPIR-V, [`AoEffect::runs_spirv`]).
+const EXPORTS: [(wgpu::TextureFormat, &str, bool); 3] = [
+    (wgpu::TextureFormat::R32Float, "export_ao_r32f", true),
+    (wgpu::TextureFormat::R16Float, "export_ao_r16f", false),
+    (wgpu::TextureFormat::R8Unorm, "export_ao_r8", false),
+];
 
 /// Where a pass's constants and a resource's initial words lie in a frame's constant buffer.
 #[derive(Clone, Debug, PartialEq)]
@@ -499,6 +506,47 @@ impl AoEffect {
         Ok(graph)
     }
 
+    /// Refuse textures the adapters cannot read or write, with the reason (wgpu would otherwise
+    /// report a validation error at the submission).
+    fn check_textures(&self, frame: &AoFrame, size: UVec2) -> Result<(), AoError> {
+        let extent = |t: &wgpu::Texture| UVec2::new(t.width(), t.height());
+        let output = frame.output.texture();
+        if self.export_entry(output.format()).is_none()
+            || !output.usage().contains(wgpu::TextureUsages::STORAGE_BINDING)
+        {
+            let formats: Vec<_> = EXPORTS.iter().filter(|e| self.export_entry(e.0).is_some()).map(|e| e.0).collect();
+            return Err(AoError::Frame(format!(
+                "the output is {:?} with {:?}: expected one of {formats:?} with STORAGE_BINDING",
+                output.format(),
+                output.usage()
+            )));
+        }
+        let inputs = std::iter::once(("depth", frame.depth)).chain(frame.normals.map(|n| ("normals", n)));
+        for (what, view) in std::iter::once(("output", frame.output)).chain(inputs) {
+            let texture = view.texture();
+            if extent(texture) != size {
+                return Err(AoError::Frame(format!(
+                    "the {what} texture is {}×{}, the effect {}×{}: call AoEffect::resize",
+                    texture.width(),
+                    texture.height(),
+                    size.x,
+                    size.y
+                )));
+            }
+            if what != "output" && !texture.usage().contains(wgpu::TextureUsages::TEXTURE_BINDING) {
+                return Err(AoError::Frame(format!("the {what} texture lacks TEXTURE_BINDING usage")));
+            }
+        }
+        Ok(())
+    }
+
+    /// The export adapter that writes `format`: `R32Float` on every path, `R16Float` and
+    /// `R8Unorm` where the effect runs SPIR-V.
+    fn export_entry(&self, format: wgpu::TextureFormat) -> Option<&'static str> {
+        let (_, entry, wgsl) = EXPORTS.iter().find(|e| e.0 == format)?;
+        (*wgsl || self.runs_spirv()).then_some(*entry)
+    }
+
     /// Does the effect run the ray-traced techniques (ray queries in the committed SPIR-V)? It
     /// does where it runs the SPIR-V ([`AoEffect::runs_spirv`]) on a device made with
     /// [`RAY_QUERY_FEATURES`] and limits that hold every ray-query kernel's buffers and one
@@ -618,7 +666,7 @@ impl AoEffect {
     /// rather than the WGSL? It does on wgpu's Vulkan back-end when the device was made with
     /// [`SPIRV_FEATURES`] and a `max_immediate_size` that holds every kernel's push constants
     /// (request the adapter's: `Limits { max_immediate_size: adapter.limits().max_immediate_size,
-    /// .. }`); the adapters run from WGSL either way.
+    /// .. }`). The texture import and export run from it too.
     pub fn runs_spirv(&self) -> bool {
         let largest = Kernel::all().iter().map(|k| k.push_constant_bytes().next_multiple_of(4)).max().unwrap_or(0);
         self.device.features().contains(SPIRV_FEATURES)
@@ -690,7 +738,7 @@ impl AoEffect {
             frame.previous_view,
         )
         .map_err(AoError::Projection)?;
-        check_textures(frame, size)?;
+        self.check_textures(frame, size)?;
         let normals = frame.normals.is_some();
         let built = match self.built.take() {
             Some(b) if b.desc == desc && b.normals == normals => b,
@@ -723,7 +771,8 @@ impl AoEffect {
                 "{name} traces rays: give the scene (AoEffect::build_scene, AoFrame::scene)"
             )));
         }
-        let keys = self.prepare_pipelines(graph)?;
+        let export = self.export_entry(frame.output.texture().format()).expect("checked by check_textures");
+        let keys = self.prepare_pipelines(graph, export)?;
         let made = self.ensure_buffers(graph);
         let alignment = u64::from(self.device.limits().min_uniform_buffer_offset_alignment);
         let layout = constants_layout(graph, import, alignment);
@@ -748,7 +797,7 @@ impl AoEffect {
             }
         }
         self.ensure_bind_groups(slot, (graph, frame.scene.filter(|_| graph.traces_rays())), &keys, &layout);
-        let adapters = self.adapter_bind_groups(&constants, frame, graph.output);
+        let adapters = self.adapter_bind_groups(&constants, frame, (graph.output, export));
         // Consecutive passes with one label are timed as one (as the Vulkan executor does).
         let mut spans: Vec<(&'static str, std::ops::Range<usize>)> = Vec::new();
         for (i, p) in graph.passes.iter().enumerate() {
@@ -777,8 +826,12 @@ impl AoEffect {
             pass.dispatch_workgroups(invocations.x.div_ceil(threads[0]), invocations.y.div_ceil(threads[1]), 1);
         };
         let adapter = |pass: &mut wgpu::ComputePass, entry: &'static str, group: &wgpu::BindGroup, size: UVec2| {
-            pass.set_pipeline(&self.pipelines[&(entry, Vec::new())].pipeline);
+            let pipeline = &self.pipelines[&(entry, Vec::new())];
+            pass.set_pipeline(&pipeline.pipeline);
             pass.set_bind_group(0, group, &[]);
+            if pipeline.immediates {
+                pass.set_immediates(0, bytemuck::bytes_of(import));
+            }
             pass.dispatch_workgroups(size.x.div_ceil(ADAPTER_GROUP), size.y.div_ceil(ADAPTER_GROUP), 1);
         };
         let begin = |encoder: &mut wgpu::CommandEncoder, stamps: Option<u32>| {
@@ -805,22 +858,22 @@ impl AoEffect {
                 range.clone().for_each(|i| dispatch(&mut pass, i));
             }
             pass = begin(encoder, None);
-            adapter(&mut pass, EXPORT, &adapters[1], engine);
+            adapter(&mut pass, export, &adapters[1], engine);
             drop(pass);
             let stamps = 2 * spans.len() as u32;
             encoder.resolve_query_set(&timing.queries, 0..stamps, &timing.resolve, 0);
             encoder.copy_buffer_to_buffer(&timing.resolve, 0, &timing.readback, 0, 8 * u64::from(stamps));
         } else {
             (0..graph.passes.len()).for_each(|i| dispatch(&mut pass, i));
-            adapter(&mut pass, EXPORT, &adapters[1], engine);
+            adapter(&mut pass, export, &adapters[1], engine);
         }
         Ok(())
     }
 
     /// Every pipeline `graph` and the adapters need, made where missing; returns each pass's
     /// pipeline key.
-    fn prepare_pipelines(&mut self, graph: &Graph) -> Result<Vec<PipelineKey>, AoError> {
-        let adapters = ["import_depth", "import_normals", EXPORT].map(|entry| {
+    fn prepare_pipelines(&mut self, graph: &Graph, export: &'static str) -> Result<Vec<PipelineKey>, AoError> {
+        let adapters = ["import_depth", "import_normals", export].map(|entry| {
             let kernel = Kernel::find(entry).expect("the adapters are kernels");
             (kernel, Vec::new())
         });
@@ -874,12 +927,11 @@ impl AoEffect {
 
     /// The pipeline of `kernel` from the committed SPIR-V itself (specialized, its push
     /// constants as immediates, the layout its declaration gives), where the effect runs SPIR-V
-    /// ([`AoEffect::runs_spirv`]) and the kernel binds no image (the adapters bind the
-    /// application's textures); else `None` (the WGSL path).
+    /// ([`AoEffect::runs_spirv`]); else `None` (the WGSL path).
     fn spirv_pipeline(&self, kernel: &'static Kernel, specialization: &[(u32, u32)]) -> Option<Pipeline> {
         let device = &self.device;
         let push = kernel.push_constant_bytes().next_multiple_of(4);
-        let usable = self.runs_spirv() && kernel.bindings.iter().all(|b| b.kind != BindingKind::Image);
+        let usable = self.runs_spirv();
         if !usable {
             return None;
         }
@@ -911,6 +963,21 @@ impl AoEffect {
                     BindingKind::AccelerationStructure => {
                         wgpu::BindingType::AccelerationStructure { vertex_return: false }
                     }
+                    // The adapters: the application's texture read (`sampled`) or the AO written
+                    // in the format the declaration names.
+                    BindingKind::Image if b.rust_type.contains("sampled=false") => wgpu::BindingType::StorageTexture {
+                        access: wgpu::StorageTextureAccess::WriteOnly,
+                        format: EXPORTS
+                            .iter()
+                            .find(|e| b.rust_type.contains(&format!("format={}", &e.1["export_ao_".len()..])))
+                            .map_or(wgpu::TextureFormat::R32Float, |e| e.0),
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                    },
+                    BindingKind::Image => wgpu::BindingType::Texture {
+                        sample_type: wgpu::TextureSampleType::Float { filterable: false },
+                        view_dimension: wgpu::TextureViewDimension::D2,
+                        multisampled: false,
+                    },
                     _ => wgpu::BindingType::Buffer {
                         ty: wgpu::BufferBindingType::Storage { read_only: !b.access.writes() },
                         has_dynamic_offset: false,
@@ -1062,32 +1129,32 @@ impl AoEffect {
         &self,
         constants: &wgpu::Buffer,
         frame: &AoFrame,
-        output: &'static str,
+        (output, export): (&'static str, &'static str),
     ) -> Vec<wgpu::BindGroup> {
         let params = std::mem::size_of::<ImportParams>() as u64;
         let group = |entry: &'static str, texture: &wgpu::TextureView, buffer: &'static str| {
             let pipeline = &self.pipelines[&(entry, Vec::new())];
             // import_*: texture 0, buffer 1; export: buffer 0, texture 1; constants at 2.
-            let (texture_slot, buffer_slot) = if entry == EXPORT { (1, 0) } else { (0, 1) };
-            let constants_slot = pipeline.bindings.constants.expect("the adapters take constants");
+            let (texture_slot, buffer_slot) = if entry == export { (1, 0) } else { (0, 1) };
+            let mut entries = vec![
+                wgpu::BindGroupEntry { binding: texture_slot, resource: wgpu::BindingResource::TextureView(texture) },
+                wgpu::BindGroupEntry {
+                    binding: buffer_slot,
+                    resource: self.buffers[buffer].buffer.as_entire_binding(),
+                },
+            ];
+            // From WGSL the parameters are a uniform buffer; from SPIR-V, immediates.
+            if let Some(slot) = pipeline.bindings.constants {
+                entries.push(uniform_entry(slot, constants, 0, params));
+            }
             self.device.create_bind_group(&wgpu::BindGroupDescriptor {
                 label: Some(entry),
                 layout: &pipeline.layout,
-                entries: &[
-                    wgpu::BindGroupEntry {
-                        binding: texture_slot,
-                        resource: wgpu::BindingResource::TextureView(texture),
-                    },
-                    wgpu::BindGroupEntry {
-                        binding: buffer_slot,
-                        resource: self.buffers[buffer].buffer.as_entire_binding(),
-                    },
-                    uniform_entry(constants_slot, constants, 0, params),
-                ],
+                entries: &entries,
             })
         };
         let mut groups = vec![group("import_depth", frame.depth, inputs::LINEAR_DEPTH)];
-        groups.push(group(EXPORT, frame.output, output));
+        groups.push(group(export, frame.output, output));
         if let Some(normals) = frame.normals {
             groups.push(group("import_normals", normals, inputs::VIEW_NORMALS));
         }
@@ -1098,39 +1165,6 @@ impl AoEffect {
 /// `pass`'s pipeline key: its entry point and specialization for its push constants.
 fn pipeline_key(kernel: &'static Kernel, push: &[u8]) -> Result<PipelineKey, AoError> {
     Ok((kernel.entry, kernel.specialization_for(push).map_err(AoError::Settings)?))
-}
-
-/// Refuse textures the adapters cannot read or write, with the reason (wgpu would otherwise
-/// report a validation error at the submission).
-fn check_textures(frame: &AoFrame, size: UVec2) -> Result<(), AoError> {
-    let extent = |t: &wgpu::Texture| UVec2::new(t.width(), t.height());
-    let output = frame.output.texture();
-    if output.format() != wgpu::TextureFormat::R32Float
-        || !output.usage().contains(wgpu::TextureUsages::STORAGE_BINDING)
-    {
-        return Err(AoError::Frame(format!(
-            "the output is {:?} with {:?}: expected R32Float with STORAGE_BINDING",
-            output.format(),
-            output.usage()
-        )));
-    }
-    let inputs = std::iter::once(("depth", frame.depth)).chain(frame.normals.map(|n| ("normals", n)));
-    for (what, view) in std::iter::once(("output", frame.output)).chain(inputs) {
-        let texture = view.texture();
-        if extent(texture) != size {
-            return Err(AoError::Frame(format!(
-                "the {what} texture is {}×{}, the effect {}×{}: call AoEffect::resize",
-                texture.width(),
-                texture.height(),
-                size.x,
-                size.y
-            )));
-        }
-        if what != "output" && !texture.usage().contains(wgpu::TextureUsages::TEXTURE_BINDING) {
-            return Err(AoError::Frame(format!("the {what} texture lacks TEXTURE_BINDING usage")));
-        }
-    }
-    Ok(())
 }
 
 /// Where each pass's push constants and each resource's initial words go in a frame's constant

@@ -31,11 +31,13 @@ fn wgpu_device(spirv: bool) -> Option<(wgpu::Device, wgpu::Queue)> {
     // WebGPU's default limits (what a browser gives), with timestamps where the adapter has them.
     let mut required_features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
     if spirv {
-        if !adapter.features().contains(aokit_wgpu::SPIRV_FEATURES) {
-            common::skip::cannot_run(common::skip::VULKAN, "the Vulkan adapter lacks PASSTHROUGH_SHADERS | IMMEDIATES");
+        // With storage R16Float and R8Unorm outputs (adapter-specific format features).
+        let needed = aokit_wgpu::SPIRV_FEATURES | wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES;
+        if !adapter.features().contains(needed) {
+            common::skip::cannot_run(common::skip::VULKAN, &format!("the Vulkan adapter lacks {needed:?}"));
             return None;
         }
-        required_features |= aokit_wgpu::SPIRV_FEATURES;
+        required_features |= needed;
     }
     // WebGPU's default limits, but room for the largest push constants as immediates.
     let required_limits = wgpu::Limits {
@@ -52,7 +54,6 @@ struct AppTextures {
     normals: wgpu::TextureView,
     output: wgpu::Texture,
     output_view: wgpu::TextureView,
-    size: UVec2,
 }
 
 /// Render `g`'s hardware depth into a Depth32Float texture the way an application's depth pass
@@ -173,37 +174,57 @@ fn app_textures(device: &wgpu::Device, queue: &wgpu::Queue, g: &EngineGBuffer) -
         normals: normals.create_view(&Default::default()),
         output_view: output.create_view(&Default::default()),
         output,
-        size,
     }
 }
 
-/// Copy the AO texture into a new read-back buffer (rows padded to 256 bytes).
-fn copy_output(device: &wgpu::Device, encoder: &mut wgpu::CommandEncoder, t: &AppTextures) -> wgpu::Buffer {
-    let row = (4 * t.size.x).next_multiple_of(256);
+/// Bytes per texel of the AO formats the tests write.
+fn texel_bytes(format: wgpu::TextureFormat) -> u32 {
+    match format {
+        wgpu::TextureFormat::R32Float => 4,
+        wgpu::TextureFormat::R16Float => 2,
+        wgpu::TextureFormat::R8Unorm => 1,
+        other => unreachable!("AO format {other:?}"),
+    }
+}
+
+/// Copy the AO texture `output` into a new read-back buffer (rows padded to 256 bytes).
+fn copy_output(device: &wgpu::Device, encoder: &mut wgpu::CommandEncoder, output: &wgpu::Texture) -> wgpu::Buffer {
+    let row = (texel_bytes(output.format()) * output.width()).next_multiple_of(256);
     let buffer = device.create_buffer(&wgpu::BufferDescriptor {
         label: Some("AO read-back"),
-        size: u64::from(row * t.size.y),
+        size: u64::from(row * output.height()),
         usage: wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST,
         mapped_at_creation: false,
     });
     encoder.copy_texture_to_buffer(
-        t.output.as_image_copy(),
+        output.as_image_copy(),
         wgpu::TexelCopyBufferInfo {
             buffer: &buffer,
             layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: None },
         },
-        wgpu::Extent3d { width: t.size.x, height: t.size.y, depth_or_array_layers: 1 },
+        output.size(),
     );
     buffer
 }
 
-/// The read-back buffer's AO, rows unpadded.
-fn read_output(device: &wgpu::Device, buffer: &wgpu::Buffer, size: UVec2) -> Vec<f32> {
+/// The read-back buffer's AO (of texture `output`), rows unpadded, as `f32`.
+fn read_output(device: &wgpu::Device, buffer: &wgpu::Buffer, output: &wgpu::Texture) -> Vec<f32> {
     buffer.slice(..).map_async(wgpu::MapMode::Read, |r| r.expect("mapped"));
     device.poll(wgpu::PollType::wait_indefinitely()).unwrap();
     let bytes = buffer.slice(..).get_mapped_range().expect("mapped range").to_vec();
-    let row = (4 * size.x).next_multiple_of(256) as usize;
-    bytes.chunks(row).flat_map(|r| bytemuck::cast_slice::<u8, f32>(&r[..4 * size.x as usize]).to_vec()).collect()
+    let texel = texel_bytes(output.format()) as usize;
+    let row = (texel as u32 * output.width()).next_multiple_of(256) as usize;
+    let width = output.width() as usize;
+    bytes
+        .chunks(row)
+        .flat_map(|r| {
+            r[..texel * width].chunks(texel).map(|t| match t.len() {
+                4 => f32::from_le_bytes([t[0], t[1], t[2], t[3]]),
+                2 => common::f16_to_f32(u16::from_le_bytes([t[0], t[1]])),
+                _ => f32::from(t[0]) / 255.0,
+            })
+        })
+        .collect()
 }
 
 #[test]
@@ -252,7 +273,7 @@ fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
                 }
                 let mut encoder = device.create_command_encoder(&Default::default());
                 effect.record(&mut encoder, &ao_frame).unwrap();
-                let readback = copy_output(&device, &mut encoder, &textures);
+                let readback = copy_output(&device, &mut encoder, &textures.output);
                 encoders.push((index, encoder, readback));
             }
             let readbacks: Vec<_> = encoders
@@ -263,7 +284,7 @@ fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
                 })
                 .collect();
             for (index, readback) in readbacks {
-                let on_wgpu = read_output(&device, &readback, g.size);
+                let on_wgpu = read_output(&device, &readback, &textures.output);
                 let desc = FrameDesc {
                     frame_index: index,
                     ..FrameDesc::new(v.camera, frame.radius, frame.exponent, frame.thickness)
@@ -294,7 +315,8 @@ fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
     // A timed frame (one compute pass per label) gives the same AO, and a time per label (the
     // frame gives no normals: the graph derives them first).
     let (scene, frame) = common::builtin_frame("sponza", 120, 72, 16);
-    let (gbuffer, _) = CpuRenderer::new(&scene).gbuffer(&frame, &no_progress);
+    let renderer = CpuRenderer::new(&scene);
+    let (gbuffer, _) = renderer.gbuffer(&frame, &no_progress);
     let v = engine_view(&frame, convention);
     let g = EngineGBuffer {
         params: v.params,
@@ -307,9 +329,9 @@ fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
     let run = |effect: &mut WgpuEffect| {
         let mut encoder = device.create_command_encoder(&Default::default());
         effect.record(&mut encoder, &ao_frame).unwrap();
-        let readback = copy_output(&device, &mut encoder, &textures);
+        let readback = copy_output(&device, &mut encoder, &textures.output);
         queue.submit([encoder.finish()]);
-        read_output(&device, &readback, g.size)
+        read_output(&device, &readback, &textures.output)
     };
     let untimed = run(&mut effect);
     if device.features().contains(wgpu::Features::TIMESTAMP_QUERY) {
@@ -326,6 +348,47 @@ fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
     } else {
         let e = effect.set_timing(true).expect_err("timing without TIMESTAMP_QUERY").to_string();
         assert!(e.contains("TIMESTAMP_QUERY"), "{e}");
+    }
+    // The other AO formats: R16Float and R8Unorm from SPIR-V (their export kernels have no
+    // WGSL), against cpu-sim's export stored in the same format; refused on the WGSL path.
+    effect.set_timing(false).unwrap();
+    let desc = FrameDesc::new(v.camera, frame.radius, frame.exponent, frame.thickness);
+    let on_cpu = cpu_reference(&renderer, &technique.graph(&desc).unwrap(), &g, false).ao;
+    for format in [wgpu::TextureFormat::R16Float, wgpu::TextureFormat::R8Unorm] {
+        let storage = if spirv { wgpu::TextureUsages::STORAGE_BINDING } else { wgpu::TextureUsages::TEXTURE_BINDING };
+        let output = device.create_texture(&wgpu::TextureDescriptor {
+            label: Some("AO"),
+            size: textures.output.size(),
+            mip_level_count: 1,
+            sample_count: 1,
+            dimension: wgpu::TextureDimension::D2,
+            format,
+            usage: storage | wgpu::TextureUsages::COPY_SRC,
+            view_formats: &[],
+        });
+        let view = output.create_view(&Default::default());
+        let ao_frame = WgpuFrame::new(&textures.depth, convention, &view, v.projection, v.world_to_view);
+        let mut encoder = device.create_command_encoder(&Default::default());
+        if !spirv {
+            let e = effect.record(&mut encoder, &ao_frame).expect_err("an R16F/R8 output from WGSL").to_string();
+            assert!(e.contains(&format!("{format:?}")) && e.contains("R32Float") && !e.contains('\n'), "{e}");
+            continue;
+        }
+        effect.record(&mut encoder, &ao_frame).unwrap();
+        let readback = copy_output(&device, &mut encoder, &output);
+        queue.submit([encoder.finish()]);
+        let on_wgpu = read_output(&device, &readback, &output);
+        let stored: Vec<f32> = on_cpu
+            .iter()
+            .map(|&a| match format {
+                wgpu::TextureFormat::R16Float => common::f16_to_f32(common::f32_to_f16(a)),
+                _ => (a * 255.0).round() / 255.0,
+            })
+            .collect();
+        let a = common::agreement::of(&stored, &on_wgpu);
+        let line = format!("{path}: gtao into {format:?}: {:.3} % within 1/255, MSE {:.2e}", 100.0 * a.within, a.mse);
+        eprintln!("{line}");
+        assert!(a.within >= common::agreement::MIN_WITHIN && a.mse <= common::agreement::MAX_MSE, "{line}");
     }
     // What it cannot run is refused on one line naming the technique, before any frame.
     for name in ["raysd", "groundtruth", "sdsvao"] {
@@ -393,9 +456,9 @@ fn wgpu_ray_queries_agree_with_the_vulkan_effect_and_cpu_sim() {
         let e = effect.record(&mut encoder, &ao_frame).expect_err("a ray-traced frame without the scene").to_string();
         assert!(e.contains("build_scene") && !e.contains('\n'), "{e}");
         effect.record(&mut encoder, &ao_frame.scene(&rays)).unwrap();
-        let readback = copy_output(&device, &mut encoder, &textures);
+        let readback = copy_output(&device, &mut encoder, &textures.output);
         queue.submit([encoder.finish()]);
-        let on_wgpu = read_output(&device, &readback, g.size);
+        let on_wgpu = read_output(&device, &readback, &textures.output);
         let a = common::agreement::of(vulkan, &on_wgpu);
         let line = format!(
             "{spec}: wgpu ray queries vs the Vulkan effect's: {:.3} % within 1/255, max |Δ| {:.2}/255, MSE {:.2e}, occluded {:.1} %",
