@@ -49,20 +49,7 @@ const RUNS: [&str; 21] = [
 
 /// wgpu's device on the Vulkan back-end; `None` when there is none and the run allows the skip.
 fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
-        backends: wgpu::Backends::VULKAN,
-        ..wgpu::InstanceDescriptor::new_without_display_handle()
-    });
-    let adapter = match pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default())) {
-        Ok(adapter) => adapter,
-        Err(e) => {
-            common::skip::cannot_run(
-                common::skip::VULKAN,
-                &format!("no Vulkan adapter for wgpu ({e}; apt-get install mesa-vulkan-drivers)"),
-            );
-            return None;
-        }
-    };
+    let adapter = common::wgpu_adapter::vulkan()?;
     let name = adapter.get_info().name;
     // WebGPU's default limits: what a browser gives.
     let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor::default())).unwrap();

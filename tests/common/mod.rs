@@ -5,6 +5,7 @@ pub mod agreement;
 pub mod engine_device;
 pub mod rng;
 pub mod skip;
+pub mod wgpu_adapter;
 
 use aokit::frame::{CameraChoice, Frame, FrameRequest};
 use aokit::render::VulkanRenderer;

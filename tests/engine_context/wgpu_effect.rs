@@ -17,17 +17,7 @@ use aokit_wgpu::AoFrame as WgpuFrame;
 /// pass the committed SPIR-V through (`spirv`) or without (the WGSL path); `None` when there is
 /// none and the run allows the skip.
 fn wgpu_device(spirv: bool) -> Option<(wgpu::Device, wgpu::Queue)> {
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
-        backends: wgpu::Backends::VULKAN,
-        ..wgpu::InstanceDescriptor::new_without_display_handle()
-    });
-    let adapter = match pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default())) {
-        Ok(adapter) => adapter,
-        Err(e) => {
-            common::skip::cannot_run(common::skip::VULKAN, &format!("no Vulkan adapter for wgpu ({e})"));
-            return None;
-        }
-    };
+    let adapter = common::wgpu_adapter::vulkan()?;
     // WebGPU's default limits (what a browser gives), with timestamps where the adapter has them.
     let mut required_features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
     if spirv {
@@ -416,11 +406,7 @@ fn wgpu_ray_queries_agree_with_the_vulkan_effect_and_cpu_sim() {
     let Some(mut on_vulkan) = ray_traced_frames(RayTracing::QueriesOnly, &specs[..2], true) else { return };
     let Some(others) = ray_traced_frames(RayTracing::QueriesOnly, &specs[2..], false) else { return };
     on_vulkan.extend(others);
-    let instance = wgpu::Instance::new(wgpu::InstanceDescriptor {
-        backends: wgpu::Backends::VULKAN,
-        ..wgpu::InstanceDescriptor::new_without_display_handle()
-    });
-    let adapter = pollster::block_on(instance.request_adapter(&wgpu::RequestAdapterOptions::default())).unwrap();
+    let Some(adapter) = common::wgpu_adapter::vulkan() else { return };
     if !adapter.features().contains(aokit_wgpu::RAY_QUERY_FEATURES) {
         common::skip::cannot_run(common::skip::VULKAN, "the Vulkan adapter lacks wgpu's ray queries or passthrough");
         return;
