@@ -67,6 +67,16 @@
 //!
 //! wgpu orders the passes after the application's earlier use of these textures and before
 //! its later use by itself: no barrier to write.
+//!
+//! # Views, frames, history
+//!
+//! Use one `AoEffect` per camera view: an effect keeps one view's buffers (the temporal
+//! accumulation's history among them) and re-makes them when the size changes. Temporal
+//! accumulation runs when the settings ask for it (`AoSettings::temporal`) and each frame gives
+//! its index and the previous view ([`AoFrame::temporal`]). Frames may be recorded ahead of
+//! their submission in any number; submit them in the order they were recorded. The graph is
+//! rebuilt (a few small vectors) when the camera or the frame index changes; pipelines, buffers
+//! and bind groups are kept.
 #![warn(missing_docs)]
 
 pub use aokit_shaders::engine::{AoSettings, DepthConvention};
@@ -135,11 +145,6 @@ mod modules {
         }
     }
 }
-
-/// Frames that may be recorded before the first of them is submitted, or in flight on the
-/// device: each uses its own set of constant buffers, so a frame recorded after it cannot
-/// overwrite what it reads.
-pub const FRAMES_IN_FLIGHT: usize = 3;
 
 /// The device features with which the effect runs the committed SPIR-V itself on wgpu's Vulkan
 /// back-end ([`AoEffect::runs_spirv`]): passed through as is, its push constants as immediates.
@@ -286,6 +291,8 @@ struct DeviceBuffer {
     buffer: wgpu::Buffer,
     /// Its length in 32-bit elements.
     len: usize,
+    /// What it was made for: its `Init::Fill` bits (`None`: no fill), kept in `AoEffect::fills`.
+    fill: Option<u32>,
 }
 
 /// A compute pipeline, its bind-group layout (set 0) and the bindings its WGSL declares.
@@ -328,15 +335,16 @@ struct ConstantsLayout {
     bytes: Vec<u8>,
 }
 
-/// One of the [`FRAMES_IN_FLIGHT`] constant buffers and the bind groups that bind it.
+/// The constant buffer (the passes' push constants and the resources' initial words, copied in
+/// by each frame's own commands) and the bind groups that bind it.
 #[derive(Default)]
-struct FrameSlot {
-    constants: Option<wgpu::Buffer>,
+struct ConstantsBinding {
+    buffer: Option<wgpu::Buffer>,
     /// The graph passes' bind groups and what they were made for.
     bound: Option<(BindKey, Vec<wgpu::BindGroup>)>,
 }
 
-/// What a slot's bind groups depend on: the buffers' generation and, per pass, its pipeline
+/// What the bind groups depend on: the buffers' generation and, per pass, its pipeline
 /// (a layout wgpu derives belongs to its pipeline alone), bindings and constants' place.
 #[derive(Clone, PartialEq)]
 struct BindKey {
@@ -358,6 +366,8 @@ struct Timing {
     readback: wgpu::Buffer,
     /// The labels of the last recorded frame, in order.
     labels: Vec<&'static str>,
+    /// A recorded frame's timestamps wait to be read ([`AoEffect::pass_times`]).
+    pending: bool,
 }
 
 impl Timing {
@@ -388,6 +398,7 @@ impl Timing {
             resolve: buffer(wgpu::BufferUsages::QUERY_RESOLVE | wgpu::BufferUsages::COPY_SRC),
             readback: buffer(wgpu::BufferUsages::MAP_READ | wgpu::BufferUsages::COPY_DST),
             labels: Vec::new(),
+            pending: false,
         }
     }
 }
@@ -414,11 +425,8 @@ pub struct AoEffect {
     fills: HashMap<&'static str, wgpu::Buffer>,
     /// Bumped whenever a buffer is re-made: the bind groups made before bind stale buffers.
     generation: u64,
-    slots: Vec<FrameSlot>,
-    frame: u64,
+    constants: ConstantsBinding,
     timing: Option<Timing>,
-    /// Scenes built so far (each one's [`AoScene::id`]).
-    scenes: u64,
 }
 
 impl std::fmt::Debug for AoEffect {
@@ -445,17 +453,16 @@ impl AoEffect {
             buffers: HashMap::new(),
             fills: HashMap::new(),
             generation: 0,
-            slots: (0..FRAMES_IN_FLIGHT).map(|_| FrameSlot::default()).collect(),
-            frame: 0,
+            constants: ConstantsBinding::default(),
             timing: None,
-            scenes: 0,
         };
         effect.check_graph(&effect.settings, &probe_frame(&effect.settings, None))?;
         Ok(effect)
     }
 
     /// Set the size of the application's textures (depth, normals, output) in texels. Call it
-    /// before the first frame and whenever the textures change.
+    /// before the first frame and whenever their size changes (new views of the same size need
+    /// nothing: each frame binds the views it is given).
     pub fn resize(&mut self, width: u32, height: u32) -> Result<(), AoError> {
         if width == 0 || height == 0 || width > 16384 || height > 16384 {
             return Err(AoError::Settings(format!("image size {width}×{height}: expected 1…16384 per side")));
@@ -483,6 +490,9 @@ impl AoEffect {
         let graph = technique.graph(desc).map_err(AoError::Settings)?.with_rt_mode(RtMode::Query);
         graph.validate().map_err(AoError::Settings)?;
         let refuse = |why: &str| Err(AoError::Frame(format!("{name} {why} (use aokit-vulkan)")));
+        if settings.rt_mode == Some(RtMode::Pipeline) && graph.traces_rays() {
+            return refuse("with ray-tracing pipelines: aokit-wgpu traces with ray queries only");
+        }
         if graph.traces_rays() && !self.runs_ray_queries() {
             return refuse(
                 "traces rays: aokit-wgpu traces them with ray queries on wgpu's Vulkan back-end, on a device made with RAY_QUERY_FEATURES and the adapter's limits",
@@ -521,6 +531,23 @@ impl AoEffect {
                 output.usage()
             )));
         }
+        let depth = frame.depth.texture().format();
+        let linear = frame.depth_convention == DepthConvention::Linear;
+        if linear != (depth == wgpu::TextureFormat::R32Float) || !linear && !depth.is_depth_stencil_format() {
+            return Err(AoError::Frame(format!(
+                "the depth texture is {depth:?} with {:?}: expected a depth format, or R32Float with DepthConvention::Linear",
+                frame.depth_convention
+            )));
+        }
+        if let Some(normals) = frame.normals {
+            let format = normals.texture().format();
+            let float = matches!(format.sample_type(None, None), Some(wgpu::TextureSampleType::Float { .. }));
+            if !float {
+                return Err(AoError::Frame(format!(
+                    "the normal texture is {format:?}: expected a float-readable format"
+                )));
+            }
+        }
         let inputs = std::iter::once(("depth", frame.depth)).chain(frame.normals.map(|n| ("normals", n)));
         for (what, view) in std::iter::once(("output", frame.output)).chain(inputs) {
             let texture = view.texture();
@@ -531,6 +558,12 @@ impl AoEffect {
                     texture.height(),
                     size.x,
                     size.y
+                )));
+            }
+            if texture.sample_count() != 1 {
+                return Err(AoError::Frame(format!(
+                    "the {what} texture is multisampled ({}×): resolve it first",
+                    texture.sample_count()
                 )));
             }
             if what != "output" && !texture.usage().contains(wgpu::TextureUsages::TEXTURE_BINDING) {
@@ -658,8 +691,10 @@ impl AoEffect {
             buffer("aokit scene mask headers", bytemuck::cast_slice(g.mask_headers), storage),
             buffer("aokit scene mask texels", bytemuck::cast_slice(g.mask_texels), storage),
         ];
-        self.scenes += 1;
-        Ok(AoScene { tlas, tables, id: self.scenes, _blas: blas })
+        // Unique across effects: a scene built by another effect never matches kept bind groups.
+        static SCENES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+        let id = SCENES.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+        Ok(AoScene { tlas, tables, id, _blas: blas })
     }
 
     /// Does the effect run the committed SPIR-V itself (the same modules as `aokit-vulkan`)
@@ -693,26 +728,30 @@ impl AoEffect {
         Ok(())
     }
 
-    /// `(pass label, ms)` of the last recorded frame (with [`AoEffect::set_timing`] on): call it
-    /// once that frame's submission has been made and before the next `record`; it waits for the
-    /// device to finish it.
-    pub fn pass_times(&self) -> Result<Vec<(&'static str, f64)>, AoError> {
+    /// `(pass label, ms)` of the last recorded frame (with [`AoEffect::set_timing`] on), once:
+    /// call it after that frame's submission and before the next `record`. It waits for the
+    /// device to finish everything submitted (`Device::poll`), so it is for profiling, not for
+    /// every frame of a shipped application; on the web, where polling does not wait, it fails.
+    pub fn pass_times(&mut self) -> Result<Vec<(&'static str, f64)>, AoError> {
         let timing =
-            self.timing.as_ref().ok_or_else(|| AoError::Frame("timing is off: AoEffect::set_timing(true)".into()))?;
+            self.timing.as_mut().ok_or_else(|| AoError::Frame("timing is off: AoEffect::set_timing(true)".into()))?;
+        if !std::mem::take(&mut timing.pending) {
+            return Err(AoError::Frame("no timed frame to read: record (and submit) one first".into()));
+        }
         let bytes = 16 * timing.labels.len() as u64;
         if bytes == 0 {
             return Ok(Vec::new());
         }
         let slice = timing.readback.slice(..bytes);
         slice.map_async(wgpu::MapMode::Read, |_| {});
-        self.device
-            .poll(wgpu::PollType::wait_indefinitely())
-            .map_err(|e| AoError::Frame(format!("waiting for the timed frame: {e}")))?;
-        let ticks: Vec<u64> = {
-            let mapped = slice.get_mapped_range().map_err(|e| AoError::Frame(format!("timestamps: {e}")))?;
-            bytemuck::cast_slice(&mapped).to_vec()
+        let waited = self.device.poll(wgpu::PollType::wait_indefinitely());
+        let ticks: Result<Vec<u64>, String> = match waited {
+            Ok(_) => slice.get_mapped_range().map(|m| bytemuck::cast_slice(&m).to_vec()).map_err(|e| e.to_string()),
+            Err(e) => Err(e.to_string()),
         };
+        // Unmapped whatever happened: the next timed frame copies into it.
         timing.readback.unmap();
+        let ticks = ticks.map_err(|e| AoError::Frame(format!("reading the timestamps: {e}")))?;
         let period = f64::from(self.queue.get_timestamp_period());
         Ok(timing
             .labels
@@ -723,9 +762,10 @@ impl AoEffect {
     }
 
     /// Record one frame into `encoder`: import the depth (and normals), run the technique's
-    /// passes, export the AO into `frame.output`. The frame's constants are written with
-    /// `Queue::write_buffer` on the effect's queue, so submit `encoder` to that queue; at most
-    /// [`FRAMES_IN_FLIGHT`] frames may be recorded ahead of their submission or be in flight.
+    /// passes, export the AO into `frame.output`. Everything the frame needs is written by its
+    /// own commands (its constants are copied in from a small buffer made for it), so any number
+    /// of frames may be recorded before they are submitted, as long as they are submitted in the
+    /// order they were recorded.
     pub fn record(&mut self, encoder: &mut wgpu::CommandEncoder, frame: &AoFrame) -> Result<(), AoError> {
         let size = self.size.ok_or(AoError::NotResized)?;
         let (desc, import) = engine_frame(
@@ -771,16 +811,39 @@ impl AoEffect {
                 "{name} traces rays: give the scene (AoEffect::build_scene, AoFrame::scene)"
             )));
         }
+        // Every buffer within the device's limits (wgpu would panic on a larger one).
+        let limits = self.device.limits();
+        let most = limits.max_storage_buffer_binding_size.min(limits.max_buffer_size);
+        let pixels = u64::from(graph.view.size().x) * u64::from(graph.view.size().y);
+        let largest = graph.resources.iter().map(|r| r.len(&graph.view) as u64).max().unwrap_or(0).max(pixels);
+        if 4 * largest > most {
+            let full = graph.view.size();
+            return Err(AoError::Frame(format!(
+                "a {}×{} target needs storage buffers of {} bytes; the device allows {most} (request larger limits or a smaller size)",
+                full.x,
+                full.y,
+                4 * largest
+            )));
+        }
         let export = self.export_entry(frame.output.texture().format()).expect("checked by check_textures");
         let keys = self.prepare_pipelines(graph, export)?;
         let made = self.ensure_buffers(graph);
         let alignment = u64::from(self.device.limits().min_uniform_buffer_offset_alignment);
         let layout = constants_layout(graph, import, alignment);
-        let slot = (self.frame % FRAMES_IN_FLIGHT as u64) as usize;
-        self.frame += 1;
-        self.ensure_constants(slot, &layout);
-        let constants = self.slots[slot].constants.clone().expect("made above");
-        self.queue.write_buffer(&constants, 0, &layout.bytes);
+        self.ensure_constants(&layout);
+        let constants = self.constants.buffer.clone().expect("made above");
+        // This frame's constants, copied in by its own commands: a frame recorded later cannot
+        // overwrite them before this one ran (`Queue::write_buffer` would land before every
+        // command of the next submission).
+        let staging = wgpu::util::DeviceExt::create_buffer_init(
+            &self.device,
+            &wgpu::util::BufferInitDescriptor {
+                label: Some("aokit frame constants"),
+                contents: &layout.bytes,
+                usage: wgpu::BufferUsages::COPY_SRC,
+            },
+        );
+        encoder.copy_buffer_to_buffer(&staging, 0, &constants, 0, layout.bytes.len() as u64);
         // Each resource's initial contents, in the encoder: ordered after the previous frame.
         for (r, data) in graph.resources.iter().zip(&layout.data) {
             if r.lifetime == Lifetime::Persistent && !made.contains(&r.name) {
@@ -796,7 +859,7 @@ impl AoEffect {
                 _ => {}
             }
         }
-        self.ensure_bind_groups(slot, (graph, frame.scene.filter(|_| graph.traces_rays())), &keys, &layout);
+        self.ensure_bind_groups((graph, frame.scene.filter(|_| graph.traces_rays())), &keys, &layout);
         let adapters = self.adapter_bind_groups(&constants, frame, (graph.output, export));
         // Consecutive passes with one label are timed as one (as the Vulkan executor does).
         let mut spans: Vec<(&'static str, std::ops::Range<usize>)> = Vec::new();
@@ -809,8 +872,9 @@ impl AoEffect {
         if let Some(timing) = &mut self.timing {
             timing.ensure(&self.device, spans.len());
             timing.labels = spans.iter().map(|s| s.0).collect();
+            timing.pending = true;
         }
-        let groups = &self.slots[slot].bound.as_ref().expect("made above").1;
+        let groups = &self.constants.bound.as_ref().expect("made above").1;
         let dispatch = |pass: &mut wgpu::ComputePass, i: usize| {
             let p = &graph.passes[i];
             let invocations = p.invocations(&graph.view);
@@ -1019,7 +1083,8 @@ impl AoEffect {
             .chain([inputs::LINEAR_DEPTH, inputs::VIEW_NORMALS].map(|name| (name, pixels, &Init::Undefined)));
         let mut made = Vec::new();
         for (name, len, init) in wanted {
-            if self.buffers.get(name).is_some_and(|b| b.len == len) {
+            let fill = if let Init::Fill(bits) = *init { Some(bits) } else { None };
+            if self.buffers.get(name).is_some_and(|b| b.len == len && b.fill == fill) {
                 continue;
             }
             let buffer = self.device.create_buffer(&wgpu::BufferDescriptor {
@@ -1042,7 +1107,7 @@ impl AoEffect {
                 );
                 self.fills.insert(name, fill);
             }
-            self.buffers.insert(name, DeviceBuffer { buffer, len });
+            self.buffers.insert(name, DeviceBuffer { buffer, len, fill });
             made.push(name);
         }
         if !made.is_empty() {
@@ -1051,12 +1116,12 @@ impl AoEffect {
         made
     }
 
-    /// Slot `slot`'s constant buffer, re-made when `layout` outgrows it.
-    fn ensure_constants(&mut self, slot: usize, layout: &ConstantsLayout) {
+    /// The constant buffer, re-made when `layout` outgrows it.
+    fn ensure_constants(&mut self, layout: &ConstantsLayout) {
         let size = layout.bytes.len() as u64;
-        let s = &mut self.slots[slot];
-        if s.constants.as_ref().is_none_or(|b| b.size() < size) {
-            s.constants = Some(self.device.create_buffer(&wgpu::BufferDescriptor {
+        let s = &mut self.constants;
+        if s.buffer.as_ref().is_none_or(|b| b.size() < size) {
+            s.buffer = Some(self.device.create_buffer(&wgpu::BufferDescriptor {
                 label: Some("aokit constants"),
                 size: size.next_power_of_two().max(256),
                 usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST,
@@ -1066,11 +1131,10 @@ impl AoEffect {
         }
     }
 
-    /// Slot `slot`'s bind groups for the graph's passes, re-made when the buffers, the passes
+    /// The bind groups of the graph's passes, re-made when the buffers, the passes, the scene
     /// or the constants' places changed.
     fn ensure_bind_groups(
         &mut self,
-        slot: usize,
         (graph, scene): (&Graph, Option<&AoScene>),
         keys: &[PipelineKey],
         layout: &ConstantsLayout,
@@ -1086,10 +1150,10 @@ impl AoEffect {
                 .map(|((p, k), c)| (k.clone(), p.bindings.iter().map(|b| (b.slot, b.resource)).collect(), *c))
                 .collect(),
         };
-        if self.slots[slot].bound.as_ref().is_some_and(|(k, _)| *k == key) {
+        if self.constants.bound.as_ref().is_some_and(|(k, _)| *k == key) {
             return;
         }
-        let constants = self.slots[slot].constants.as_ref().expect("made before");
+        let constants = self.constants.buffer.as_ref().expect("made before");
         let groups = graph
             .passes
             .iter()
@@ -1119,7 +1183,7 @@ impl AoEffect {
                 })
             })
             .collect();
-        self.slots[slot].bound = Some((key, groups));
+        self.constants.bound = Some((key, groups));
     }
 
     /// The adapters' bind groups for this frame's textures: import depth, export, and import

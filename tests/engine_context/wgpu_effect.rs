@@ -5,11 +5,15 @@
 //! Every screen-space technique through it agrees with cpu-sim on the same arrays (import →
 //! `CpuExecutor` → export, `cpu_reference`) within the WGSL conformance bar of
 //! `common::agreement` (≥ 99.9 % of the pixels within 1/255, MSE ≤ 1e-6, both asserted), at
-//! two sizes (a resize between them) and with two frames recorded before either is submitted
-//! (frame indices 0 and 1: their noise differs, so a frame reading the other's constants fails),
-//! once from the WGSL and once with the committed SPIR-V passed through (`SPIRV_FEATURES`).
+//! two sizes (a resize between them) and with four frames recorded before any is submitted
+//! (frame indices 0 to 3: gtao's, vbao's and raymarch's noise differs between them, so a frame
+//! reading another's constants fails), once from the WGSL and once with the committed SPIR-V
+//! passed through (`SPIRV_FEATURES`).
 
 use super::*;
+
+/// Frames recorded before the first is submitted.
+const FRAMES_AHEAD: u32 = 4;
 use aokit_wgpu::AoEffect as WgpuEffect;
 use aokit_wgpu::AoFrame as WgpuFrame;
 
@@ -19,10 +23,16 @@ use aokit_wgpu::AoFrame as WgpuFrame;
 fn wgpu_device(spirv: bool) -> Option<(wgpu::Device, wgpu::Queue)> {
     let adapter = common::wgpu_adapter::vulkan()?;
     // WebGPU's default limits (what a browser gives), with timestamps where the adapter has them.
-    let mut required_features = adapter.features() & wgpu::Features::TIMESTAMP_QUERY;
+    // Storage R16Float and R8Unorm textures (adapter-specific format features) on both: the
+    // SPIR-V path writes them, the WGSL path must refuse them for their format.
+    let formats = wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES;
+    if !adapter.features().contains(formats) {
+        common::skip::cannot_run(common::skip::VULKAN, "the Vulkan adapter lacks storage R16Float/R8Unorm");
+        return None;
+    }
+    let mut required_features = formats | (adapter.features() & wgpu::Features::TIMESTAMP_QUERY);
     if spirv {
-        // With storage R16Float and R8Unorm outputs (adapter-specific format features).
-        let needed = aokit_wgpu::SPIRV_FEATURES | wgpu::Features::TEXTURE_ADAPTER_SPECIFIC_FORMAT_FEATURES;
+        let needed = aokit_wgpu::SPIRV_FEATURES;
         if !adapter.features().contains(needed) {
             common::skip::cannot_run(common::skip::VULKAN, &format!("the Vulkan adapter lacks {needed:?}"));
             return None;
@@ -252,9 +262,9 @@ fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
         for spec in specs {
             let technique = Technique::parse(spec).unwrap();
             effect.set_settings(effect_settings(&technique, &frame)).unwrap();
-            // Two frames recorded (frame indices 0 and 1) before either is submitted.
+            // Four frames recorded (frame indices 0 to 3) before any is submitted.
             let mut encoders = Vec::new();
-            for index in 0..2 {
+            for index in 0..FRAMES_AHEAD {
                 let mut ao_frame =
                     WgpuFrame::new(&textures.depth, convention, &textures.output_view, v.projection, v.world_to_view)
                         .temporal(index, None);
@@ -345,7 +355,7 @@ fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
     let desc = FrameDesc::new(v.camera, frame.radius, frame.exponent, frame.thickness);
     let on_cpu = cpu_reference(&renderer, &technique.graph(&desc).unwrap(), &g, false).ao;
     for format in [wgpu::TextureFormat::R16Float, wgpu::TextureFormat::R8Unorm] {
-        let storage = if spirv { wgpu::TextureUsages::STORAGE_BINDING } else { wgpu::TextureUsages::TEXTURE_BINDING };
+        let storage = wgpu::TextureUsages::STORAGE_BINDING;
         let output = device.create_texture(&wgpu::TextureDescriptor {
             label: Some("AO"),
             size: textures.output.size(),
@@ -387,7 +397,7 @@ fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
         assert!(e.contains(name) && e.contains("aokit-vulkan") && !e.contains('\n'), "{e}");
     }
     eprintln!("wgpu_effect_frames_agree_with_cpu_sim ({path}): {:.1} s", start.elapsed().as_secs_f64());
-    assert_eq!(report.len(), 2 * 2 * specs.len());
+    assert_eq!(report.len(), 2 * FRAMES_AHEAD as usize * specs.len());
 }
 
 /// The ray-traced techniques through the wgpu effect (ray queries in the committed SPIR-V, the
