@@ -165,6 +165,11 @@ const SCENE_INPUTS: [&str; 5] = [
     inputs::SCENE_MASK_TEXELS,
 ];
 
+/// The [`AoEffect::pass_times`] label of the texture import (depth, and normals where given).
+pub const IMPORT_LABEL: &str = "import";
+/// The [`AoEffect::pass_times`] label of the AO export into the output texture.
+pub const EXPORT_LABEL: &str = "export";
+
 /// The adapters' workgroup: `threads(8, 8)` in `aokit_shaders::adapters`.
 const ADAPTER_GROUP: u32 = 8;
 
@@ -728,7 +733,8 @@ impl AoEffect {
         Ok(())
     }
 
-    /// `(pass label, ms)` of the last recorded frame (with [`AoEffect::set_timing`] on), once:
+    /// `(pass label, ms)` of the last recorded frame (with [`AoEffect::set_timing`] on): the
+    /// texture import ([`IMPORT_LABEL`]), the graph's labels, the export ([`EXPORT_LABEL`]); once:
     /// call it after that frame's submission and before the next `record`. It waits for the
     /// device to finish everything submitted (`Device::poll`), so it is for profiling, not for
     /// every frame of a shipped application; on the web, where polling does not wait, it fails.
@@ -870,8 +876,9 @@ impl AoEffect {
             }
         }
         if let Some(timing) = &mut self.timing {
-            timing.ensure(&self.device, spans.len());
-            timing.labels = spans.iter().map(|s| s.0).collect();
+            timing.ensure(&self.device, spans.len() + 2);
+            let labels = spans.iter().map(|s| s.0);
+            timing.labels = std::iter::once(IMPORT_LABEL).chain(labels).chain([EXPORT_LABEL]).collect();
             timing.pending = true;
         }
         let groups = &self.constants.bound.as_ref().expect("made above").1;
@@ -909,22 +916,23 @@ impl AoEffect {
                 .forget_lifetime()
         };
         let (full, engine) = (import.view.size(), import.engine_size);
-        let mut pass = begin(encoder, None);
+        let mut pass = begin(encoder, self.timing.as_ref().map(|_| 0));
         adapter(&mut pass, "import_depth", &adapters[0], full);
         if let Some(group) = adapters.get(2) {
             adapter(&mut pass, "import_normals", group, full);
         }
         if let Some(timing) = &self.timing {
-            // One compute pass per label, its timestamps at its beginning and end.
+            // One compute pass per label, its timestamps at its beginning and end: the import,
+            // each of the graph's labels, the export.
             drop(pass);
             for (k, (_, range)) in spans.iter().enumerate() {
-                let mut pass = begin(encoder, Some(k as u32));
+                let mut pass = begin(encoder, Some(k as u32 + 1));
                 range.clone().for_each(|i| dispatch(&mut pass, i));
             }
-            pass = begin(encoder, None);
+            pass = begin(encoder, Some(spans.len() as u32 + 1));
             adapter(&mut pass, export, &adapters[1], engine);
             drop(pass);
-            let stamps = 2 * spans.len() as u32;
+            let stamps = 2 * timing.labels.len() as u32;
             encoder.resolve_query_set(&timing.queries, 0..stamps, &timing.resolve, 0);
             encoder.copy_buffer_to_buffer(&timing.resolve, 0, &timing.readback, 0, 8 * u64::from(stamps));
         } else {

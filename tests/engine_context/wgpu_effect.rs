@@ -342,6 +342,8 @@ fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
         let mut labels: Vec<&str> =
             technique.graph(&frame.desc()).unwrap().with_normals_from_depth().passes.iter().map(|p| p.label).collect();
         labels.dedup();
+        labels.insert(0, aokit_wgpu::IMPORT_LABEL);
+        labels.push(aokit_wgpu::EXPORT_LABEL);
         assert_eq!(times.iter().map(|t| t.0).collect::<Vec<_>>(), labels);
         assert!(times.iter().all(|t| t.1 > 0.0 && t.1 < 1e4), "{times:?}");
         eprintln!("{path}: timed gtao frame: {times:?}");

@@ -164,12 +164,13 @@ pub fn run(args: ExecutorsArgs) -> Result<(), String> {
         effect.set_timing(true).map_err(|e| e.to_string())?;
         let mut ctx = AoContext::new(gpu.clone());
         let mut row = Row { name: spec.to_string(), aokit_ms: Vec::new(), peer_ms: Vec::new() };
-        let (mut wall_wgpu, mut wall_ash) = (Vec::new(), Vec::new());
+        let (mut wall_wgpu, mut wall_ash, mut wgpu_adapters) = (Vec::new(), Vec::new(), Vec::new());
         let total = args.frame.warmup + args.frame.iterations;
         for k in 0..total {
             let mut times = [0.0; 2];
             let mut walls = [0.0; 2];
             let mut labels = [Vec::new(), Vec::new()];
+            let mut adapters_ms = 0.0;
             for side in 0..2 {
                 // `aokit_ms`: the wgpu side; `peer_ms`: the ash side.
                 if (side == 0) == (k % 2 == 0) {
@@ -179,8 +180,13 @@ pub fn run(args: ExecutorsArgs) -> Result<(), String> {
                     queue.submit([encoder.finish()]);
                     device.poll(wgpu::PollType::wait_indefinitely()).map_err(|e| e.to_string())?;
                     walls[0] = start.elapsed().as_secs_f64() * 1e3;
-                    let passes = effect.pass_times().map_err(|e| e.to_string())?;
+                    let mut passes = effect.pass_times().map_err(|e| e.to_string())?;
+                    // The graph's labels only (the ash side runs no import or export).
+                    let adapters = [aokit_wgpu::IMPORT_LABEL, aokit_wgpu::EXPORT_LABEL];
+                    let adapter_ms: f64 = passes.iter().filter(|p| adapters.contains(&p.0)).map(|p| p.1).sum();
+                    passes.retain(|p| !adapters.contains(&p.0));
                     times[0] = passes.iter().map(|p| p.1).sum();
+                    adapters_ms = adapter_ms;
                     labels[0] = passes;
                 } else {
                     let cmd = gpu.begin_one_shot().map_err(|e| e.to_string())?;
@@ -197,6 +203,7 @@ pub fn run(args: ExecutorsArgs) -> Result<(), String> {
                 row.peer_ms.push(times[1]);
                 wall_wgpu.push(walls[0]);
                 wall_ash.push(walls[1]);
+                wgpu_adapters.push(adapters_ms);
             }
             let by_label: Vec<String> =
                 labels[0].iter().zip(&labels[1]).map(|(a, b)| format!("{} {:.1}/{:.1}", a.0, a.1, b.1)).collect();
@@ -218,6 +225,7 @@ pub fn run(args: ExecutorsArgs) -> Result<(), String> {
             "wgpu_wall_ms": median(&wall_wgpu),
             "ash_wall_ms": median(&wall_ash),
             "wall_ratio": median(&wall_ratios),
+            "wgpu_import_export_ms": median(&wgpu_adapters),
             "wgpu_ms_all": row.aokit_ms,
             "ash_ms_all": row.peer_ms,
         }));
@@ -239,7 +247,7 @@ pub fn run(args: ExecutorsArgs) -> Result<(), String> {
 /// The report as the Markdown table of `bench/EXECUTORS.md`.
 fn markdown(report: &serde_json::Value) -> String {
     let mut out = format!(
-        "# aokit-wgpu vs aokit-vulkan (ash), same run\n\n`cargo run --release -p aokit-peers -- executors --markdown bench/EXECUTORS.md` (`--wgsl`: the WGSL path) — {} at {}×{}, {} alternating iterations, adapter `{}`.\nGPU: the sum of the technique's pass labels (GPU timestamps on both sides; the wgpu side's import/export adapters not counted). Wall: submission to completion of the whole frame. Ratios: medians of the per-iteration ratios wgpu / ash.\n\n| technique | wgpu runs | wgpu ms (GPU) | ash ms (GPU) | wgpu / ash | wgpu wall ms | ash wall ms | wall wgpu / ash |\n|---|---|---:|---:|---:|---:|---:|---:|\n",
+        "# aokit-wgpu vs aokit-vulkan (ash), same run\n\n`cargo run --release -p aokit-peers -- executors --markdown bench/EXECUTORS.md` (`--wgsl`: the WGSL path) — {} at {}×{}, {} alternating iterations, adapter `{}`.\nGPU: the sum of the technique's pass labels (GPU timestamps on both sides); the wgpu side's texture import and export are timed apart (the ash side, aokit's internal path on buffers, runs none). Wall: submission to completion of the whole frame. Ratios: medians of the per-iteration ratios wgpu / ash.\n\n| technique | wgpu runs | wgpu ms (GPU) | ash ms (GPU) | wgpu / ash | wgpu import + export ms (GPU) | wgpu wall ms | ash wall ms | wall wgpu / ash |\n|---|---|---:|---:|---:|---:|---:|---:|---:|\n",
         report["scene"].as_str().unwrap_or(""),
         report["width"],
         report["height"],
@@ -249,15 +257,16 @@ fn markdown(report: &serde_json::Value) -> String {
     for t in report["techniques"].as_array().into_iter().flatten() {
         let name = t["technique"].as_str().unwrap_or("");
         if let Some(why) = t["refused"].as_str() {
-            out += &format!("| {name} | refused: {why} | | | | | | |\n");
+            out += &format!("| {name} | refused: {why} | | | | | | | |\n");
         } else {
             let v = |k: &str| t[k].as_f64().unwrap_or(f64::NAN);
             out += &format!(
-                "| {name} | {} | {:.2} | {:.2} | **{:.3}** | {:.2} | {:.2} | {:.3} |\n",
+                "| {name} | {} | {:.2} | {:.2} | **{:.3}** | {:.2} | {:.2} | {:.2} | {:.3} |\n",
                 t["wgpu_shaders"].as_str().unwrap_or(""),
                 v("wgpu_ms"),
                 v("ash_ms"),
                 v("ratio"),
+                v("wgpu_import_export_ms"),
                 v("wgpu_wall_ms"),
                 v("ash_wall_ms"),
                 v("wall_ratio")
