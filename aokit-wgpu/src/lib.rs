@@ -442,9 +442,9 @@ impl std::fmt::Debug for AoEffect {
 
 impl AoEffect {
     /// The effect on the application's `device` and `queue` running `settings`. A technique
-    /// this crate cannot run (ray tracing, raster passes) is refused here, not at the first
-    /// `record`. The queue is where [`AoEffect::record`] writes each frame's constants
-    /// (`Queue::write_buffer`): submit the encoder to it.
+    /// the effect cannot run on `device` (ray tracing without ray queries, raster passes) is
+    /// refused here, not at the first `record`. The queue is where [`AoEffect::build_scene`]
+    /// submits the acceleration-structure build; frames go into the application's encoders.
     pub fn new(device: &wgpu::Device, queue: &wgpu::Queue, settings: AoSettings) -> Result<AoEffect, AoError> {
         settings.check().map_err(AoError::Settings)?;
         let effect = AoEffect {
