@@ -714,6 +714,14 @@ impl AoEffect {
             && self.device.limits().max_immediate_size >= largest
     }
 
+    /// Does the technique trace rays at the current size and settings (then every frame needs
+    /// [`AoFrame::scene`], from [`AoEffect::build_scene`])?
+    pub fn traces_rays(&self) -> Result<bool, AoError> {
+        let size = self.size.ok_or(AoError::NotResized)?;
+        let s = &self.settings;
+        Ok(s.technique.graph(&probe_frame(s, Some(size))).map_err(AoError::Settings)?.traces_rays())
+    }
+
     /// The settings in use.
     pub fn settings(&self) -> &AoSettings {
         &self.settings
