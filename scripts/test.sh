@@ -90,4 +90,11 @@ mapfile -t slow_args < <(lane_args "${slow[@]}")
 cargo test -p aokit --doc
 cargo test -p aokit --examples "${slow_args[@]}"
 cargo test --workspace --exclude aokit
+echo "test.sh: main workspace passed after $(( $(date +%s) - start )) s"
+# The Bevy plugin: its own workspace, so Bevy stays out of the main one (docs/bevy.md). Bevy 0.20
+# declares rust-version 1.97.1 and builds with older toolchains too, hence the flag.
+cargo test --manifest-path aokit-bevy/Cargo.toml --ignore-rust-version
+# Its example end to end, headless (it fails when no screenshot was written).
+cargo run --manifest-path aokit-bevy/Cargo.toml --ignore-rust-version --example bevy_sponza -- \
+  --scene cornell --size 160x96 --screenshot target/bevy_example_smoke.png
 echo "test.sh: finished in $(( $(date +%s) - start )) s"
