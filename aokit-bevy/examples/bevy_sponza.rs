@@ -1,18 +1,18 @@
 //! Sponza in Bevy, lit by aokit's ambient occlusion (or Bevy's own SSAO, or none).
 //!
 //! ```sh
-//! cd aokit-bevy
-//! cargo run --release --example bevy_sponza -- --screenshot ../docs/images/bevy_sponza.png
-//! cargo run --release --example bevy_sponza --features window   # a window: T cycles, S saves
+//! cd aokit-bevy   # its own workspace; --ignore-rust-version: Bevy 0.20 declares rustc 1.97.1
+//! cargo run --ignore-rust-version --example bevy_sponza -- --screenshot ../assets/readme/bevy_sponza.png
+//! cargo run --ignore-rust-version --example bevy_sponza --features window   # a window: T cycles, S saves
 //! ```
 //!
 //! Without the `window` feature it renders headlessly (any Vulkan device, lavapipe included)
 //! into an image and saves the screenshot. Options: `--technique SPEC` (`gtao`, `vbao:high`,
-//! `raysd`, …, `bevy` for Bevy's SSAO, `none`), `--size WxH`, `--frames N` (frames rendered
+//! `groundtruth:spp=16`, `raysd`, …, `bevy` for Bevy's SSAO, `none`), `--size WxH`, `--frames N` (frames rendered
 //! before the screenshot: the first ones compile pipelines). Sponza comes through aokit's scene
 //! loader (fetched once by cargo, cached); `--scene NAME` picks another built-in scene.
 
-use aokit_bevy::{AoSettings, AokitAmbientOcclusion, AokitPlugin, Technique};
+use aokit_bevy::{AoSettings, AokitAmbientOcclusion, AokitPlugin, AokitViews, Technique};
 use bevy::asset::RenderAssetUsages;
 use bevy::camera::RenderTarget;
 use bevy::core_pipeline::prepass::{DepthPrepass, NormalPrepass};
@@ -21,10 +21,10 @@ use bevy::image::Image;
 use bevy::light::GlobalAmbientLight;
 use bevy::mesh::PrimitiveTopology;
 use bevy::prelude::*;
-use bevy::render::RenderPlugin;
 use bevy::render::render_resource::TextureFormat;
 use bevy::render::settings::{InstanceFlags, WgpuSettings};
 use bevy::render::view::screenshot::{Screenshot, ScreenshotCaptured};
+use bevy::render::{RenderApp, RenderPlugin};
 use std::path::PathBuf;
 
 /// The techniques the example cycles through (`T` in a window), in order.
@@ -88,9 +88,10 @@ fn ambient_occlusion(spec: &str, radius: f32) -> Result<Option<AokitAmbientOcclu
         "none" => None,
         "bevy" => Some(AokitAmbientOcclusion::bevy()),
         _ => {
+            // `name:preset`, or a technique spec with settings (`name:key=value,…`).
             let technique = match spec.split_once(':') {
-                Some((name, preset)) => Technique::preset(name, preset)?,
-                None => Technique::parse(spec)?,
+                Some((name, preset)) if !preset.contains('=') => Technique::preset(name, preset)?,
+                _ => Technique::parse(spec)?,
             };
             Some(AokitAmbientOcclusion::new(AoSettings::new(technique).radius(radius)))
         }
@@ -109,7 +110,10 @@ struct SceneSetup {
 }
 
 fn load_scene(name: &str) -> Result<SceneSetup, String> {
-    let builtin = aokit::scene::builtin::find(name).ok_or(format!("no built-in scene {name}"))?;
+    let builtin = aokit::scene::builtin::find(name).ok_or_else(|| {
+        let names: Vec<_> = aokit::scene::builtin::builtin_scenes().iter().map(|s| s.name).collect();
+        format!("no built-in scene {name} (there are: {})", names.join(", "))
+    })?;
     let scene = builtin.load().map_err(|e| e.to_string())?;
     let mut positions = Vec::with_capacity(scene.triangles.len() * 3);
     let mut normals = Vec::with_capacity(scene.triangles.len() * 3);
@@ -213,11 +217,24 @@ fn main() {
         for _ in 0..8 {
             app.update();
             if path.exists() {
-                return;
+                break;
             }
         }
-        eprintln!("bevy_sponza: no screenshot written to {} after 8 frames", path.display());
-        std::process::exit(1);
+        if !path.exists() {
+            eprintln!("bevy_sponza: no screenshot written to {} after 8 frames", path.display());
+            std::process::exit(1);
+        }
+        // The screenshot must show aokit's AO where an aokit technique was asked for (a refused
+        // one leaves Bevy's SSAO, with the reason logged above).
+        let aokit_asked = !matches!(options.technique.as_str(), "bevy" | "none");
+        let ran = app.sub_app(RenderApp).world().resource::<AokitViews>().recorded_frames().count() > 0;
+        if aokit_asked && !ran {
+            eprintln!(
+                "bevy_sponza: aokit did not run for the camera ({}); the screenshot shows Bevy's SSAO",
+                options.technique
+            );
+            std::process::exit(1);
+        }
     }
 }
 

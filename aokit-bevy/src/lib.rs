@@ -36,18 +36,19 @@ use aokit_shaders::engine::{SceneGeometry, probe_frame};
 use aokit_wgpu::{AoEffect, AoFrame, AoScene, DepthConvention, glam};
 pub use aokit_wgpu::{AoError, AoSettings, Technique};
 use bevy::app::{App, Plugin, PostUpdate};
-use bevy::asset::Assets;
+use bevy::asset::{AssetEvent, AssetId, Assets};
 use bevy::camera::visibility::{InheritedVisibility, VisibilitySystems};
 use bevy::camera::{Camera, Camera3d};
 use bevy::core_pipeline::prepass::ViewPrepassTextures;
 use bevy::core_pipeline::{Core3d, Core3dSystems};
 use bevy::ecs::prelude::*;
 use bevy::log::{error, warn};
-use bevy::mesh::{Indices, Mesh, Mesh3d, VertexAttributeValues};
+use bevy::mesh::{Indices, Mesh, Mesh3d, PrimitiveTopology, VertexAttributeValues};
 use bevy::pbr::{ScreenSpaceAmbientOcclusion, ScreenSpaceAmbientOcclusionResources, SsaoPipelineId};
 use bevy::platform::collections::HashMap;
-use bevy::render::camera::ExtractedCamera;
-use bevy::render::renderer::{RenderContext, RenderDevice, RenderQueue, ViewQuery};
+use bevy::render::camera::{ExtractedCamera, TemporalJitter};
+use bevy::render::render_resource::{TextureFormat, TextureUsages};
+use bevy::render::renderer::{RenderAdapter, RenderContext, RenderDevice, RenderQueue, ViewQuery, render_system};
 use bevy::render::sync_world::RenderEntity;
 use bevy::render::view::{ExtractedView, Msaa};
 use bevy::render::{Extract, ExtractSchedule, Render, RenderApp, RenderSystems};
@@ -82,7 +83,9 @@ impl Plugin for AokitPlugin {
                 Render,
                 (
                     prepare_effects.in_set(RenderSystems::PrepareResources),
-                    skip_bevy_ssao.in_set(RenderSystems::PrepareBindGroups),
+                    // Bevy inserts each view's SSAO pipeline id in `Prepare` (with commands,
+                    // ordered before `Render`); this removes it before the views render.
+                    skip_bevy_ssao.in_set(RenderSystems::Render).before(render_system),
                 ),
             )
             .add_systems(
@@ -157,7 +160,7 @@ pub struct SceneTriangles {
     /// Changes whenever the positions do.
     generation: u64,
     /// What the positions were gathered from (entity, transform, mesh asset) — a change rebuilds.
-    key: Vec<(Entity, [f32; 16], bevy::asset::AssetId<Mesh>)>,
+    key: Vec<(Entity, [f32; 16], AssetId<Mesh>, bool)>,
 }
 
 impl SceneTriangles {
@@ -172,8 +175,19 @@ fn gather_scene_triangles(
     cameras: Query<&AokitAmbientOcclusion>,
     meshes: Query<(Entity, &Mesh3d, &GlobalTransform, &InheritedVisibility)>,
     assets: Res<Assets<Mesh>>,
+    mut edits: MessageReader<AssetEvent<Mesh>>,
     mut scene: ResMut<SceneTriangles>,
 ) {
+    // A mesh asset loaded or edited since the last frame rebuilds the scene if it is in it.
+    let edited: Vec<_> = edits
+        .read()
+        .filter_map(|e| match e {
+            AssetEvent::Added { id } | AssetEvent::Modified { id } | AssetEvent::LoadedWithDependencies { id } => {
+                Some(*id)
+            }
+            _ => None,
+        })
+        .collect();
     let traced = cameras.iter().any(|c| match &c.source {
         AoSource::Aokit(s) => traces_rays(s),
         AoSource::Bevy => false,
@@ -182,16 +196,25 @@ fn gather_scene_triangles(
         return;
     }
     let visible: Vec<_> = meshes.iter().filter(|m| m.3.get()).collect();
-    let key: Vec<_> = visible.iter().map(|(e, m, t, _)| (*e, t.to_matrix().to_cols_array(), m.0.id())).collect();
-    if key == scene.key {
+    let key: Vec<_> = visible
+        .iter()
+        .map(|(e, m, t, _)| (*e, t.to_matrix().to_cols_array(), m.0.id(), assets.contains(m.0.id())))
+        .collect();
+    if key == scene.key && !visible.iter().any(|m| edited.contains(&m.1.0.id())) {
         return;
     }
     let mut positions = Vec::new();
     for (_, mesh, transform, _) in &visible {
-        let Some(mesh) = assets.get(&mesh.0) else { continue };
+        // Triangle lists only (strips, lines and points are not surfaces to trace here), in
+        // their bind pose (skinning and morph targets are not applied).
+        let Some(mesh) = assets.get(&mesh.0).filter(|m| m.primitive_topology() == PrimitiveTopology::TriangleList)
+        else {
+            continue;
+        };
         let Some(VertexAttributeValues::Float32x3(vertices)) = mesh.attribute(Mesh::ATTRIBUTE_POSITION) else {
             continue;
         };
+        let start = positions.len();
         let matrix = transform.to_matrix();
         let corner = |i: usize| matrix.transform_point3(vertices[i].into()).to_array();
         match mesh.indices() {
@@ -199,8 +222,9 @@ fn gather_scene_triangles(
             Some(Indices::U32(ix)) => positions.extend(ix.iter().map(|&i| corner(i as usize))),
             None => positions.extend((0..vertices.len()).map(corner)),
         }
+        // A mesh whose corner count is not a multiple of three drops its last partial triangle.
+        positions.truncate(start + (positions.len() - start) / 3 * 3);
     }
-    positions.truncate(positions.len() / 3 * 3);
     scene.positions = Arc::new(positions);
     scene.generation += 1;
     scene.key = key;
@@ -228,13 +252,22 @@ struct ExtractedScene {
 type AokitCameras<'w, 's> =
     Query<'w, 's, (RenderEntity, &'static Camera, &'static AokitAmbientOcclusion, &'static Msaa), With<Camera3d>>;
 
+/// The main world's 3D cameras without aokit's AO.
+type OtherCameras<'w, 's> = Query<'w, 's, RenderEntity, (With<Camera3d>, Without<AokitAmbientOcclusion>)>;
+
 /// Copy each camera's settings into the render world (removed where the camera is inactive or
 /// uses Bevy's SSAO), and the scene's triangles.
 fn extract_ambient_occlusion(
     mut commands: Commands,
     cameras: Extract<AokitCameras>,
+    others: Extract<OtherCameras>,
     scene: Extract<Res<SceneTriangles>>,
 ) {
+    // Render entities persist: a camera whose component was removed drops aokit (its required
+    // `ScreenSpaceAmbientOcclusion`, if still there, gives it Bevy's SSAO again).
+    for entity in &others {
+        commands.entity(entity).remove::<ExtractedAokit>();
+    }
     for (entity, camera, ao, msaa) in &cameras {
         let mut view = commands.entity(entity);
         match &ao.source {
@@ -289,14 +322,19 @@ struct ViewEffect {
 #[derive(Resource, Default)]
 pub struct AokitViews {
     views: HashMap<Entity, ViewEffect>,
-    /// Views whose settings were refused, with the refusal (logged once).
-    refused: HashMap<Entity, (AoSettings, String)>,
+    /// Views whose settings were refused at a size, with the refusal (logged once per change).
+    refused: HashMap<Entity, (AoSettings, bevy::math::UVec2, String)>,
 }
 
 impl AokitViews {
     /// The last frame recorded for the view `entity` (a render-world entity).
     pub fn recorded(&self, entity: Entity) -> Option<&RecordedFrame> {
         self.views.get(&entity)?.last.as_ref()
+    }
+
+    /// Every view's last recorded frame, by the view's render-world entity.
+    pub fn recorded_frames(&self) -> impl Iterator<Item = (Entity, &RecordedFrame)> {
+        self.views.iter().filter_map(|(e, v)| Some((*e, v.last.as_ref()?)))
     }
 
     /// Does aokit run for this view (its settings accepted by the device, and a ray-traced
@@ -308,8 +346,9 @@ impl AokitViews {
 
 /// Create, resize and reconfigure each view's effect; drop those of views gone.
 fn prepare_effects(
-    views: Query<(Entity, &ExtractedAokit, &ExtractedCamera)>,
+    views: Query<(Entity, &ExtractedAokit, &ExtractedCamera, &ExtractedView, Has<TemporalJitter>)>,
     device: Res<RenderDevice>,
+    adapter: Res<RenderAdapter>,
     queue: Res<RenderQueue>,
     scene: Res<ExtractedScene>,
     mut state: ResMut<AokitViews>,
@@ -317,12 +356,22 @@ fn prepare_effects(
     let state = &mut *state;
     state.views.retain(|e, _| views.contains(*e));
     state.refused.retain(|e, _| views.contains(*e));
-    for (entity, ExtractedAokit(settings), camera) in &views {
+    // The format of Bevy's SSAO texture, chosen as Bevy's SSAO plugin chooses it.
+    let r16 = adapter
+        .get_texture_format_features(TextureFormat::R16Float)
+        .allowed_usages
+        .contains(TextureUsages::STORAGE_BINDING);
+    for (entity, ExtractedAokit(settings), camera, view, jitter) in &views {
         let Some(size) = camera.physical_viewport_size else { continue };
-        if state.refused.get(&entity).is_some_and(|(s, _)| same(s, settings)) {
+        if state.refused.get(&entity).is_some_and(|(s, at, _)| same(s, settings) && *at == size) {
             continue;
         }
-        let result = configure(state.views.remove(&entity), settings, size, &device, &queue, &scene);
+        let result = check_view(camera, view, jitter)
+            .and_then(|()| configure(state.views.remove(&entity), settings, size, &device, &queue, &scene))
+            .and_then(|v| match r16 && !v.effect.runs_spirv() {
+                true => Err("Bevy's SSAO texture is R16Float here, which aokit writes only from its SPIR-V (wgpu's Vulkan back-end with aokit_wgpu::SPIRV_FEATURES)".into()),
+                false => Ok(v),
+            });
         match result {
             Ok(view) => {
                 state.refused.remove(&entity);
@@ -330,10 +379,25 @@ fn prepare_effects(
             }
             Err(why) => {
                 error!("aokit: {} refused for this view, Bevy's SSAO stays: {why}", settings.technique.label());
-                state.refused.insert(entity, (settings.clone(), why));
+                state.views.remove(&entity);
+                state.refused.insert(entity, (settings.clone(), size, why));
             }
         }
     }
+}
+
+/// What aokit cannot take from a view, refused before Bevy's SSAO is skipped for it.
+fn check_view(camera: &ExtractedCamera, view: &ExtractedView, jitter: bool) -> Result<(), String> {
+    if jitter {
+        return Err("the view has TemporalJitter (TAA): aokit needs the unjittered projection of the depth".into());
+    }
+    if view.clip_from_view.w_axis.w == 1.0 {
+        return Err("an orthographic projection: aokit's techniques need a perspective one".into());
+    }
+    if camera.physical_viewport_size != camera.physical_target_size {
+        return Err("a camera viewport smaller than its target: Bevy's depth prepass is target-sized and its SSAO texture viewport-sized".into());
+    }
+    Ok(())
 }
 
 /// The view's effect, made (or kept) for `settings` at `size`, its scene built when it traces rays.
@@ -422,7 +486,7 @@ fn same(a: &AoSettings, b: &AoSettings) -> bool {
 
 /// Where aokit runs for a view, Bevy's own SSAO passes are skipped (its system finds no pipeline
 /// for the view); the texture it would have written is aokit's output.
-fn skip_bevy_ssao(mut commands: Commands, views: Query<Entity, With<SsaoPipelineId>>, state: Res<AokitViews>) {
+fn skip_bevy_ssao(mut commands: Commands, views: Query<Entity, With<ExtractedAokit>>, state: Res<AokitViews>) {
     for entity in &views {
         if state.runs(entity) {
             commands.entity(entity).remove::<SsaoPipelineId>();
@@ -461,8 +525,9 @@ pub fn record_ambient_occlusion(
             effect.effect.settings().technique.label()
         );
         let settings = effect.effect.settings().clone();
+        let size = effect.size.map_or(bevy::math::UVec2::ZERO, |s| bevy::math::uvec2(s.x, s.y));
         state.views.remove(&entity);
-        state.refused.insert(entity, (settings, e.to_string()));
+        state.refused.insert(entity, (settings, size, e.to_string()));
         return;
     }
     let size = ssao.screen_space_ambient_occlusion_texture.texture.size();
