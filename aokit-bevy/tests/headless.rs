@@ -36,17 +36,6 @@ mod agreement;
 #[path = "../../tests/common/skip.rs"]
 mod skip;
 
-/// `agreement.rs`'s helper (the main workspace's `tests/common/mod.rs` has the same).
-fn assert_same_len<T, U>(a: &[T], b: &[U], what: &str) {
-    assert!(!a.is_empty(), "{what}: first buffer is empty");
-    assert_eq!(a.len(), b.len(), "{what}: buffer lengths differ");
-}
-/// `agreement::inner`'s crop; unused here (the plugin runs without a guard band).
-#[allow(dead_code)]
-fn inner_pair<T: Copy>(_: &aokit_shaders::common::ViewParams, a: &[T], b: &[T]) -> (Vec<T>, Vec<T>) {
-    (a.to_vec(), b.to_vec())
-}
-
 /// The bar for raysd and hbao-sd against cpu-sim (see the test): between their measured ulp
 /// flips (≥ 98.8 %, MSE ≤ 2.7e-6) and a frame with the wrong noise (≤ 96.1 %, raysd MSE ≥ 1e-5),
 /// both measured on lavapipe for this scene: the margin is 1.9 points, so another driver or

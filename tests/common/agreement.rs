@@ -1,5 +1,6 @@
 //! The agreement statistics and tolerances every back-end comparison uses (CPU ≡ Vulkan, the
-//! engine path, wgpu, the WebGPU page, the C sample), written once.
+//! engine path, wgpu, the WebGPU page, the C sample, the Bevy plugin), written once. Self-contained
+//! (it needs only `aokit-shaders`), so another workspace's tests can include it by path.
 #![allow(dead_code)]
 
 /// One step of an 8-bit AO output: the quantum an engine's R8 target can show.
@@ -28,7 +29,7 @@ pub struct Agreement {
 
 /// The statistics of `a` against `b`; lengths must match and be non-zero.
 pub fn of(a: &[f32], b: &[f32]) -> Agreement {
-    super::assert_same_len(a, b, "agreement");
+    assert_same_len(a, b, "agreement");
     let n = a.len();
     let (mut within, mut sum, mut max, mut occluded) = (0usize, 0.0f64, 0.0f32, 0usize);
     for (x, y) in a.iter().zip(b) {
@@ -43,7 +44,7 @@ pub fn of(a: &[f32], b: &[f32]) -> Agreement {
 
 /// The statistics over the inner image of two full-target buffers.
 pub fn inner(view: &aokit_shaders::common::ViewParams, a: &[f32], b: &[f32]) -> Agreement {
-    let (a, b) = super::inner_pair(view, a, b);
+    let (a, b) = inner_pair(view, a, b);
     of(&a, &b)
 }
 
@@ -72,4 +73,34 @@ impl Agreement {
         assert!(self.within >= min_within, "{line}: fewer than {:.3} % within 1/255", 100.0 * min_within);
         assert!(self.mse <= max_mse, "{line}: MSE above {max_mse:.1e}");
     }
+}
+
+/// The inner image `[g, W−g) × [g, H−g)` of two full-target buffers, for agreement statistics.
+/// Both must hold exactly one value per pixel of the full target, so a short or empty read-back
+/// fails here instead of zipping to nothing, and the guard band (1 on both sides for AO) is cut
+/// away so it cannot dilute an MSE or a fraction of agreeing pixels.
+pub fn inner_pair<T: Copy>(view: &aokit_shaders::common::ViewParams, a: &[T], b: &[T]) -> (Vec<T>, Vec<T>) {
+    let size = view.size();
+    let full = (size.x * size.y) as usize;
+    assert!(full > 0, "empty target");
+    assert_eq!(a.len(), full, "first buffer holds {} values for a {}×{} target", a.len(), size.x, size.y);
+    assert_eq!(b.len(), full, "second buffer holds {} values for a {}×{} target", b.len(), size.x, size.y);
+    let g = view.guard;
+    assert!(2 * g < size.x && 2 * g < size.y, "guard band {g} leaves no inner image");
+    let crop = |v: &[T]| -> Vec<T> {
+        let mut out = Vec::with_capacity(((size.x - 2 * g) * (size.y - 2 * g)) as usize);
+        for y in g..size.y - g {
+            let row = (y * size.x) as usize;
+            out.extend_from_slice(&v[row + g as usize..row + (size.x - g) as usize]);
+        }
+        out
+    };
+    (crop(a), crop(b))
+}
+
+/// Two buffers that are compared element by element without an image layout (MIP chains, SD
+/// texels, interval buffers): equal, non-zero lengths.
+pub fn assert_same_len<T, U>(a: &[T], b: &[U], what: &str) {
+    assert!(!a.is_empty(), "{what}: first buffer is empty");
+    assert_eq!(a.len(), b.len(), "{what}: buffer lengths differ");
 }

@@ -2,6 +2,9 @@
 #![allow(dead_code)]
 
 pub mod agreement;
+pub mod depth_pass;
+// Written in `agreement` (which other workspaces' tests include on its own, e.g. aokit-bevy's).
+pub use agreement::{assert_same_len, inner_pair};
 pub mod engine_device;
 pub mod rng;
 pub mod skip;
@@ -140,36 +143,6 @@ pub fn builtin_frame(name: &str, width: u32, height: u32, guard: u32) -> (Scene,
     };
     let frame = Frame::resolve(&scene, Some(b), &req).unwrap();
     (scene, frame)
-}
-
-/// The inner image `[g, W−g) × [g, H−g)` of two full-target buffers, for agreement statistics.
-/// Both must hold exactly one value per pixel of the full target, so a short or empty read-back
-/// fails here instead of zipping to nothing, and the guard band (1 on both sides for AO) is cut
-/// away so it cannot dilute an MSE or a fraction of agreeing pixels.
-pub fn inner_pair<T: Copy>(view: &aokit_shaders::common::ViewParams, a: &[T], b: &[T]) -> (Vec<T>, Vec<T>) {
-    let size = view.size();
-    let full = (size.x * size.y) as usize;
-    assert!(full > 0, "empty target");
-    assert_eq!(a.len(), full, "first buffer holds {} values for a {}×{} target", a.len(), size.x, size.y);
-    assert_eq!(b.len(), full, "second buffer holds {} values for a {}×{} target", b.len(), size.x, size.y);
-    let g = view.guard;
-    assert!(2 * g < size.x && 2 * g < size.y, "guard band {g} leaves no inner image");
-    let crop = |v: &[T]| -> Vec<T> {
-        let mut out = Vec::with_capacity(((size.x - 2 * g) * (size.y - 2 * g)) as usize);
-        for y in g..size.y - g {
-            let row = (y * size.x) as usize;
-            out.extend_from_slice(&v[row + g as usize..row + (size.x - g) as usize]);
-        }
-        out
-    };
-    (crop(a), crop(b))
-}
-
-/// Two buffers that are compared element by element without an image layout (MIP chains, SD
-/// texels, interval buffers): equal, non-zero lengths.
-pub fn assert_same_len<T, U>(a: &[T], b: &[U], what: &str) {
-    assert!(!a.is_empty(), "{what}: first buffer is empty");
-    assert_eq!(a.len(), b.len(), "{what}: buffer lengths differ");
 }
 
 /// MSE over equal-length, non-empty slices (f64).
