@@ -59,7 +59,6 @@ struct AppTextures {
 /// Render `g`'s hardware depth into a Depth32Float texture the way an application's depth pass
 /// does, and upload its normals.
 fn app_textures(device: &wgpu::Device, queue: &wgpu::Queue, g: &EngineGBuffer) -> AppTextures {
-    use wgpu::util::DeviceExt;
     let size = g.size;
     let extent = wgpu::Extent3d { width: size.x, height: size.y, depth_or_array_layers: 1 };
     let texture = |format, usage| {
@@ -78,86 +77,9 @@ fn app_textures(device: &wgpu::Device, queue: &wgpu::Queue, g: &EngineGBuffer) -
         wgpu::TextureFormat::Depth32Float,
         wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::TEXTURE_BINDING,
     );
-    let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-        label: Some("depth pass"),
-        source: wgpu::ShaderSource::Wgsl(
-            "@group(0) @binding(0) var<storage, read> depth: array<f32>;
-             @group(0) @binding(1) var<uniform> width: vec4<u32>;
-             @vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
-                 let p = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
-                 return vec4<f32>(p * 2.0 - 1.0, 0.0, 1.0);
-             }
-             @fragment fn fs(@builtin(position) p: vec4<f32>) -> @builtin(frag_depth) f32 {
-                 return depth[u32(p.y) * width.x + u32(p.x)];
-             }"
-            .into(),
-        ),
-    });
-    let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("depth pass"),
-        layout: None,
-        vertex: wgpu::VertexState {
-            module: &shader,
-            entry_point: Some("vs"),
-            compilation_options: Default::default(),
-            buffers: &[],
-        },
-        primitive: Default::default(),
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: wgpu::TextureFormat::Depth32Float,
-            depth_write_enabled: Some(true),
-            depth_compare: Some(wgpu::CompareFunction::Always),
-            stencil: Default::default(),
-            bias: Default::default(),
-        }),
-        multisample: Default::default(),
-        fragment: Some(wgpu::FragmentState {
-            module: &shader,
-            entry_point: Some("fs"),
-            compilation_options: Default::default(),
-            targets: &[],
-        }),
-        multiview_mask: None,
-        cache: None,
-    });
-    let storage = wgpu::BufferUsages::STORAGE;
-    let values = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-        label: Some("depth values"),
-        contents: bytemuck::cast_slice(&g.depth),
-        usage: storage,
-    });
-    let width = device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-        label: Some("width"),
-        contents: bytemuck::cast_slice(&[size.x, 0, 0, 0]),
-        usage: wgpu::BufferUsages::UNIFORM,
-    });
-    let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-        label: None,
-        layout: &pipeline.get_bind_group_layout(0),
-        entries: &[
-            wgpu::BindGroupEntry { binding: 0, resource: values.as_entire_binding() },
-            wgpu::BindGroupEntry { binding: 1, resource: width.as_entire_binding() },
-        ],
-    });
     let depth_view = depth.create_view(&Default::default());
     let mut encoder = device.create_command_encoder(&Default::default());
-    {
-        let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("depth pass"),
-            color_attachments: &[],
-            depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                view: &depth_view,
-                depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(0.0), store: wgpu::StoreOp::Store }),
-                stencil_ops: None,
-            }),
-            timestamp_writes: None,
-            occlusion_query_set: None,
-            multiview_mask: None,
-        });
-        pass.set_pipeline(&pipeline);
-        pass.set_bind_group(0, &group, &[]);
-        pass.draw(0..3, 0..1);
-    }
+    common::depth_pass::record(device, &mut encoder, &depth_view, &g.depth, size.x);
     queue.submit([encoder.finish()]);
     let normals =
         texture(wgpu::TextureFormat::Rgba8Unorm, wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST);

@@ -1577,16 +1577,9 @@ fn hilbert_index(mut x: u16, mut y: u16) -> u16 {
 
 /// Fills Bevy's `Depth32Float` prepass depth from an `R32Float` texture (depth textures take no
 /// copies): a full-screen triangle writing `frag_depth`.
-const DEPTH_FILL_WGSL: &str = r#"
-@group(0) @binding(0) var src: texture_2d<f32>;
-@vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
-    let p = vec2<f32>(f32((i << 1u) & 2u), f32(i & 2u));
-    return vec4<f32>(p * 2.0 - 1.0, 0.0, 1.0);
-}
-@fragment fn fs(@builtin(position) p: vec4<f32>) -> @builtin(frag_depth) f32 {
-    return textureLoad(src, vec2<i32>(p.xy), 0).r;
-}
-"#;
+/// The prepass depth's stand-in (shared with the tests): a depth pass writing given values.
+#[path = "../../../tests/common/depth_pass.rs"]
+mod depth_pass;
 
 impl BevySide {
     /// Link Bevy's shaders, build its inputs from the frame and `g`, its textures, pipelines
@@ -1727,8 +1720,6 @@ impl BevySide {
         use wgpu::TextureUsages as U;
         let depth =
             texture("prepass depth", wgpu::TextureFormat::Depth32Float, U::TEXTURE_BINDING | U::RENDER_ATTACHMENT, 1);
-        let ndc_texture =
-            with_data("prepass depth (R32Float)", wgpu::TextureFormat::R32Float, size, bytemuck::cast_slice(&ndc));
         let normal_texture =
             with_data("prepass normals", wgpu::TextureFormat::Rgb10a2Unorm, size, bytemuck::cast_slice(&normals));
         let lut_size = wgpu::Extent3d { width: 64, height: 64, depth_or_array_layers: 1 };
@@ -1742,67 +1733,8 @@ impl BevySide {
 
         // The prepass depth, once.
         gpu.checked("filling Bevy's prepass depth", || -> Result<(), String> {
-            let shader = device.create_shader_module(wgpu::ShaderModuleDescriptor {
-                label: Some("depth fill"),
-                source: wgpu::ShaderSource::Wgsl(DEPTH_FILL_WGSL.into()),
-            });
-            let pipeline = device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-                label: Some("depth fill"),
-                layout: None,
-                vertex: wgpu::VertexState {
-                    module: &shader,
-                    entry_point: Some("vs"),
-                    compilation_options: Default::default(),
-                    buffers: &[],
-                },
-                primitive: Default::default(),
-                depth_stencil: Some(wgpu::DepthStencilState {
-                    format: wgpu::TextureFormat::Depth32Float,
-                    depth_write_enabled: Some(true),
-                    depth_compare: Some(wgpu::CompareFunction::Always),
-                    stencil: Default::default(),
-                    bias: Default::default(),
-                }),
-                multisample: Default::default(),
-                fragment: Some(wgpu::FragmentState {
-                    module: &shader,
-                    entry_point: Some("fs"),
-                    compilation_options: Default::default(),
-                    targets: &[],
-                }),
-                multiview_mask: None,
-                cache: None,
-            });
-            let group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-                label: Some("depth fill"),
-                layout: &pipeline.get_bind_group_layout(0),
-                entries: &[wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: wgpu::BindingResource::TextureView(&ndc_texture.create_view(&Default::default())),
-                }],
-            });
             let mut encoder = device.create_command_encoder(&Default::default());
-            {
-                let depth_view = depth.create_view(&Default::default());
-                let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                    label: Some("depth fill"),
-                    color_attachments: &[],
-                    depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                        view: &depth_view,
-                        depth_ops: Some(wgpu::Operations {
-                            load: wgpu::LoadOp::Clear(0.0),
-                            store: wgpu::StoreOp::Store,
-                        }),
-                        stencil_ops: None,
-                    }),
-                    timestamp_writes: None,
-                    occlusion_query_set: None,
-                    multiview_mask: None,
-                });
-                pass.set_pipeline(&pipeline);
-                pass.set_bind_group(0, &group, &[]);
-                pass.draw(0..3, 0..1);
-            }
+            depth_pass::record(device, &mut encoder, &depth.create_view(&Default::default()), &ndc, w);
             gpu.submit_and_wait(encoder)
         })??;
 
