@@ -2,7 +2,7 @@
 //! `aokit bench` (per-pass statistics over frames).
 
 use crate::frame::Frame;
-use crate::metrics::{ImageRef, mse, psnr, ssim};
+use crate::metrics::{ImageRef, flip_map, masked_mean, mse, psnr, ssim};
 use crate::output::crop_inner;
 use crate::technique::{Describe, Technique, TechniqueRun};
 use aokit_cpu::GBufferImage;
@@ -19,6 +19,10 @@ pub struct CompareRow {
     pub mse: f64,
     pub psnr: f64,
     pub ssim: Option<f64>,
+    /// Mean LDR-FLIP against the reference ([`crate::metrics::flip`]).
+    pub flip: f64,
+    /// FLIP's per-pixel error map (inner image).
+    pub flip_map: Vec<f32>,
     pub rays: u64,
     pub refined_samples: u64,
     pub passes: Vec<(&'static str, f64)>,
@@ -29,15 +33,16 @@ pub struct CompareRow {
 }
 
 impl CompareRow {
-    /// The table cells shared by the text and HTML tables: label, MSE, PSNR, SSIM, rays,
+    /// The table cells shared by the text and HTML tables: label, MSE, PSNR, SSIM, FLIP, rays,
     /// refined samples, summed SD-ray interval, total ms, passes.
-    pub fn cells(&self) -> [String; 9] {
+    pub fn cells(&self) -> [String; 10] {
         let passes: Vec<_> = self.passes.iter().map(|(n, ms)| format!("{n} {ms:.1}")).collect();
         [
             self.label.clone(),
             format!("{:.3e}", self.mse),
             format!("{:.2}", self.psnr),
             self.ssim.map_or("-".into(), |v| format!("{v:.4}")),
+            format!("{:.4}", self.flip),
             self.rays.to_string(),
             self.refined_samples.to_string(),
             self.run.interval_sum.map_or("-".into(), |v| format!("{v:.4e}")),
@@ -89,6 +94,8 @@ impl CompareReport {
             let ao = crop_inner(&view, &run.ao_final);
             let img = ImageRef { width: w, height: h, pixels: &ao };
             let m = mse(img, reference_img, None).unwrap_or(f64::NAN);
+            let flip_map = flip_map(reference_img, img);
+            let flip = masked_mean(&flip_map, None).unwrap_or(f64::NAN);
             let base = technique.label();
             let taken = rows
                 .iter()
@@ -101,6 +108,8 @@ impl CompareReport {
                 mse: m,
                 psnr: psnr(m),
                 ssim: ssim(img, reference_img, None),
+                flip,
+                flip_map,
                 rays: run.rays,
                 refined_samples: run.refined_samples,
                 passes: run.passes.clone(),
@@ -125,7 +134,8 @@ impl CompareReport {
 
     /// The machine-readable contract:
     /// `{"scene", "backend", "width", "height", "reference", "results": [{"technique", "options",
-    /// "mse", "psnr", "ssim", "rays", "refined_samples", "passes": [{"name", "ms"}], "total_ms"}]}`.
+    /// "mse", "psnr", "ssim", "flip", "rays", "refined_samples", "passes": [{"name", "ms"}],
+    /// "total_ms"}]}`.
     pub fn json(&self) -> serde_json::Value {
         let results: Vec<_> = self
             .rows
@@ -135,7 +145,7 @@ impl CompareReport {
                     "technique": r.technique.name(),
                     "label": r.label,
                     "options": r.technique.describe(),
-                    "mse": r.mse, "psnr": finite_or_null(r.psnr), "ssim": r.ssim,
+                    "mse": r.mse, "psnr": finite_or_null(r.psnr), "ssim": r.ssim, "flip": r.flip,
                     "rays": r.rays, "refined_samples": r.refined_samples,
                     "ray_interval_sum": r.run.interval_sum,
                     "passes": r.passes.iter().map(|(n, ms)| serde_json::json!({"name": n, "ms": ms})).collect::<Vec<_>>(),
@@ -159,7 +169,7 @@ impl CompareReport {
     /// A plain-text table, one row per technique.
     pub fn table(&self) -> String {
         let mut s = format!(
-            "{} on {} ({}), {}×{}, reference {}\n{:<24} {:>11} {:>7} {:>7} {:>11} {:>10} {:>11} {:>10}  passes (ms)\n",
+            "{} on {} ({}), {}×{}, reference {}\n{:<24} {:>11} {:>7} {:>7} {:>7} {:>11} {:>10} {:>11} {:>10}  passes (ms)\n",
             self.scene,
             self.backend,
             self.device,
@@ -170,6 +180,7 @@ impl CompareReport {
             "MSE",
             "PSNR",
             "SSIM",
+            "FLIP",
             "rays",
             "refined",
             "Σ interval",
@@ -177,9 +188,10 @@ impl CompareReport {
         );
         let reference: Vec<_> = self.reference_run.passes.iter().map(|(n, ms)| format!("{n} {ms:.1}")).collect();
         s += &format!(
-            "{:<24} {:>11} {:>7} {:>7} {:>11} {:>10} {:>11} {:>10.1}  {}\n",
+            "{:<24} {:>11} {:>7} {:>7} {:>7} {:>11} {:>10} {:>11} {:>10.1}  {}\n",
             format!("({})", self.reference.name()),
             "reference",
+            "",
             "",
             "",
             self.reference_run.rays,
@@ -189,15 +201,16 @@ impl CompareReport {
             reference.join(", ")
         );
         for r in &self.rows {
-            let [label, mse, psnr, ssim, rays, refined, interval, total, passes] = r.cells();
+            let [label, mse, psnr, ssim, flip, rays, refined, interval, total, passes] = r.cells();
             s += &format!(
-                "{label:<24} {mse:>11} {psnr:>7} {ssim:>7} {rays:>11} {refined:>10} {interval:>11} {total:>10}  {passes}\n"
+                "{label:<24} {mse:>11} {psnr:>7} {ssim:>7} {flip:>7} {rays:>11} {refined:>10} {interval:>11} {total:>10}  {passes}\n"
             );
         }
         s
     }
 
-    /// PNGs into `dir`: per technique the AO, the signed difference to the reference, and for
+    /// PNGs into `dir`: per technique the AO, the signed difference to the reference, FLIP's
+    /// error map (magma: black = no visible difference, yellow-white = 1), and for
     /// the stenciled techniques the refined-samples heatmap, the ray-interval lengths and the
     /// SD-map layers; the reference AO too.
     pub fn write_images(&self, dir: &Path, frame: &Frame, gbuffer: &GBufferImage) -> io::Result<()> {
@@ -207,6 +220,7 @@ impl CompareReport {
         for r in &self.rows {
             save(grey(w, h, &r.ao), &dir.join(format!("{}.png", r.label)))?;
             save(signed_difference(w, h, &r.ao, &self.reference_ao), &dir.join(format!("{}_diff.png", r.label)))?;
+            save(flip_heatmap(w, h, &r.flip_map), &dir.join(format!("{}_flip.png", r.label)))?;
             if let Some(debug) = &r.run.debug {
                 let view = frame.camera.view;
                 let counts: Vec<f32> =
@@ -248,6 +262,7 @@ impl CompareReport {
             self.reference.name()
         );
         let mut diffs = String::new();
+        let mut flips = String::new();
         let mut extras = String::new();
         for r in &self.rows {
             figures += &format!(
@@ -259,6 +274,12 @@ impl CompareReport {
                 "<figure><img src=\"{}\" alt=\"{l} − reference\"><figcaption>{l} − reference</figcaption></figure>\n",
                 rel(&format!("{}_diff.png", r.label)),
                 l = r.label
+            );
+            flips += &format!(
+                "<figure><img src=\"{}\" alt=\"{l} FLIP\"><figcaption>{l}: FLIP {f:.4}</figcaption></figure>\n",
+                rel(&format!("{}_flip.png", r.label)),
+                l = r.label,
+                f = r.flip
             );
             for (suffix, what) in [
                 ("refined", "refined samples per pixel (0–8)"),
@@ -290,11 +311,12 @@ figcaption {{ font-size: 0.9em; text-align: center; }}
 </style></head><body>
 <h1>aokit compare: {scene}</h1>
 <p id="setup">Back-end <b>{backend}</b> ({device}), {w}×{h}, reference <b>{reference}</b>. Metrics on the final AO over the inner image. Difference images: red = brighter than the reference, blue = darker, full colour at |Δ| ≥ 0.25.</p>
-<table id="metrics"><tr><th>technique</th><th>MSE</th><th>PSNR (dB)</th><th>SSIM</th><th>rays</th><th>refined samples</th><th>Σ SD-ray interval</th><th>total ms</th><th>passes (ms)</th></tr>
+<table id="metrics"><tr><th>technique</th><th>MSE</th><th>PSNR (dB)</th><th>SSIM</th><th>FLIP</th><th>rays</th><th>refined samples</th><th>Σ SD-ray interval</th><th>total ms</th><th>passes (ms)</th></tr>
 {rows}</table>
 <h2>Quality vs cost</h2>{plot}
 <h2>AO</h2><div class="row">{figures}</div>
 <h2>Signed difference to the reference</h2><div class="row">{diffs}</div>
+<h2>FLIP error maps</h2><p>NVIDIA's FLIP (LDR, 67 pixels per degree) of each AO image against the reference, both as displayed grey levels: black = no visible difference, bright = clearly visible.</p><div class="row">{flips}</div>
 <h2>Refinement, intervals, SD map</h2><div class="row">{extras}</div>
 </body></html>
 "#,
@@ -424,9 +446,15 @@ fn save(img: RgbImage, path: &Path) -> io::Result<()> {
 
 fn grey(w: u32, h: u32, v: &[f32]) -> RgbImage {
     RgbImage::from_fn(w, h, |x, y| {
-        let g = (v[(y * w + x) as usize].clamp(0.0, 1.0) * 255.0).round() as u8;
+        let g = crate::metrics::display_grey(v[(y * w + x) as usize]);
         Rgb([g, g, g])
     })
+}
+
+/// FLIP's error map in NVIDIA's magma colour map (black at 0, light yellow at 1).
+pub fn flip_heatmap(w: u32, h: u32, map: &[f32]) -> RgbImage {
+    let coloured = nv_flip::FlipImageFloat::with_data(w, h, map).apply_color_lut(&nv_flip::magma_lut());
+    RgbImage::from_raw(w, h, coloured.to_vec()).expect("w·h RGB texels")
 }
 
 /// Signed difference `a − b`: red where `a` is brighter, blue where darker, white at 0, full

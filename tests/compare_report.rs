@@ -4,7 +4,7 @@
 
 mod common;
 
-use aokit::metrics::{ImageRef, ssim};
+use aokit::metrics::{ImageRef, flip, ssim};
 use aokit::render::CpuRenderer;
 use aokit::report::{CompareReport, CompareSetup};
 use aokit::technique::{SdOptions, Technique};
@@ -68,7 +68,9 @@ fn compare_json_follows_the_contract_and_matches_the_metrics() {
     let view = frame.camera.view;
     let (w, h) = (240usize, 136usize);
     for (full, result) in finals.iter().zip(results) {
-        for key in ["technique", "options", "mse", "psnr", "ssim", "rays", "refined_samples", "passes", "total_ms"] {
+        for key in
+            ["technique", "options", "mse", "psnr", "ssim", "flip", "rays", "refined_samples", "passes", "total_ms"]
+        {
             assert!(result.get(key).is_some(), "missing {key}");
         }
         let (a, reference) = common::inner_pair(&view, full, &reference_full);
@@ -88,6 +90,11 @@ fn compare_json_follows_the_contract_and_matches_the_metrics() {
         }
         let expected_ssim = ssim(img(w, h, &a), img(w, h, &reference), None).unwrap();
         assert!((result["ssim"].as_f64().unwrap() - expected_ssim).abs() <= 1e-12, "SSIM");
+        // FLIP of the same crops, reference first (pinned against NVIDIA's flip-evaluator in
+        // tests/metrics.rs); a visibly different technique is well above 0.
+        let expected_flip = flip(img(w, h, &reference), img(w, h, &a), None).unwrap();
+        assert!((result["flip"].as_f64().unwrap() - expected_flip).abs() <= 1e-12, "FLIP");
+        assert!(expected_flip > 0.01, "FLIP {expected_flip}");
         let passes = result["passes"].as_array().unwrap();
         let total: f64 = passes.iter().map(|p| p["ms"].as_f64().unwrap()).sum();
         assert!((total - result["total_ms"].as_f64().unwrap()).abs() < 1e-9);
@@ -97,9 +104,18 @@ fn compare_json_follows_the_contract_and_matches_the_metrics() {
     assert!(results[1]["rays"].as_u64().unwrap() > 0);
     assert!(results[1]["refined_samples"].as_u64().unwrap() > 0);
     assert!(results[1]["mse"].as_f64().unwrap() < results[0]["mse"].as_f64().unwrap());
-    for name in
-        ["reference", "vao", "vao_diff", "raysd", "raysd_diff", "raysd_refined", "raysd_intervals", "raysd_sd_layers"]
-    {
+    for name in [
+        "reference",
+        "vao",
+        "vao_diff",
+        "vao_flip",
+        "raysd",
+        "raysd_diff",
+        "raysd_flip",
+        "raysd_refined",
+        "raysd_intervals",
+        "raysd_sd_layers",
+    ] {
         assert!(dir.join(format!("{name}.png")).is_file(), "{name}.png missing");
     }
 }
@@ -209,6 +225,8 @@ fn html_report_renders_in_headless_chromium() {
     for row in &r.rows {
         assert!(dom.contains(&format!("<td>{}</td>", row.label)), "row {} missing", row.label);
         assert!(dom.contains(&format!("{:.3e}", row.mse)), "MSE of {} missing", row.label);
+        assert!(dom.contains(&format!("<td>{:.4}</td>", row.flip)), "FLIP of {} missing", row.label);
+        assert!(dom.contains(&format!("{}_flip.png", row.label)), "FLIP map of {} missing", row.label);
     }
     let shot = dir.join("screenshot.png");
     let status = Command::new(browser)
