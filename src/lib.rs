@@ -5,6 +5,7 @@
 pub mod cli;
 pub mod export;
 pub mod frame;
+pub mod frontier;
 pub mod metrics;
 pub mod output;
 pub mod path;

@@ -3,7 +3,7 @@
 mod commands;
 
 use clap::{Parser, Subcommand};
-use commands::{bench, compare, export, info, path, render, scaling, web};
+use commands::{bench, compare, export, frontier, info, path, render, scaling, web};
 use std::process::ExitCode;
 
 #[derive(Parser)]
@@ -52,6 +52,10 @@ enum Command {
     /// Search a technique's number settings against the 512-spp ground truth (Nelder–Mead),
     /// cross-validated over scenes: prints the tuned settings and the gain on held-back scenes.
     Tune(aokit::tune::TuneArgs),
+    /// The quality–cost frontier: every technique at every preset against the 512-spp ground
+    /// truth on several scenes (MSE, SSIM, FLIP, time), Pareto-optimal points marked; a table,
+    /// JSON and a log–log plot per scene.
+    Frontier(frontier::FrontierArgs),
 }
 
 fn main() -> ExitCode {
@@ -65,6 +69,7 @@ fn main() -> ExitCode {
         Command::Web(args) => web::run(args),
         Command::Path(args) => path::run(args),
         Command::Tune(args) => aokit::tune::tune_command(args),
+        Command::Frontier(args) => frontier::run(args),
         Command::Rays(args) => aokit::rays::rays_command(args),
         Command::Info { validation } => info::info(validation),
         Command::Techniques => info::techniques(),

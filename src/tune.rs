@@ -318,6 +318,13 @@ pub struct View {
     pub reference_ms: Option<f64>,
 }
 
+impl View {
+    /// The reference's final AO over the inner image.
+    pub fn reference(&self) -> &[f32] {
+        &self.reference
+    }
+}
+
 /// A scene with every camera the tuner scores.
 pub struct TuneScene {
     pub name: String,
@@ -369,6 +376,9 @@ pub struct TuneSet {
     pub scenes: Vec<TuneScene>,
     pub reference: Technique,
     pub metric: Metric,
+    /// The G-buffers and references come from cpu-sim whatever the device (see
+    /// [`TuneSet::with_cpu_inputs`]).
+    cpu_inputs: bool,
 }
 
 /// SHA-256 of bytes, hex.
@@ -398,7 +408,7 @@ fn scene_hash(scene: &Scene) -> String {
 
 impl TuneSet {
     /// Load the scenes' G-buffers and render (or read from `cache`) the reference for every
-    /// camera; `log` hears one line per reference image.
+    /// camera, both on `device`; `log` hears one line per reference image.
     pub fn new(
         device: Device,
         scenes: Vec<(Scene, Vec<(String, Frame)>)>,
@@ -407,9 +417,40 @@ impl TuneSet {
         cache: Option<PathBuf>,
         log: &mut dyn FnMut(&str),
     ) -> Result<TuneSet, String> {
-        let mut set = TuneSet { device, scenes: Vec::new(), reference, metric };
+        TuneSet { device, scenes: Vec::new(), reference, metric, cpu_inputs: false }.load(scenes, cache, log)
+    }
+
+    /// [`TuneSet::new`] with the G-buffers (ray-cast) and the references rendered by cpu-sim
+    /// whatever `device` is; the techniques still run on `device`, on those same G-buffers
+    /// (uploaded on Vulkan). Every back-end is then scored on identical inputs against one
+    /// reference, and an expensive reference (the 512-spp ground truth) is rendered and cached
+    /// once for all back-ends.
+    pub fn with_cpu_inputs(
+        device: Device,
+        scenes: Vec<(Scene, Vec<(String, Frame)>)>,
+        reference: Technique,
+        metric: Metric,
+        cache: Option<PathBuf>,
+        log: &mut dyn FnMut(&str),
+    ) -> Result<TuneSet, String> {
+        TuneSet { device, scenes: Vec::new(), reference, metric, cpu_inputs: true }.load(scenes, cache, log)
+    }
+
+    /// Whether the G-buffers and references are cpu-sim's.
+    fn inputs_on_cpu(&self) -> bool {
+        self.cpu_inputs || matches!(self.device, Device::Cpu)
+    }
+
+    fn load(
+        mut self,
+        scenes: Vec<(Scene, Vec<(String, Frame)>)>,
+        cache: Option<PathBuf>,
+        log: &mut dyn FnMut(&str),
+    ) -> Result<TuneSet, String> {
+        let set = &mut self;
+        let metric = set.metric;
         for (scene, frames) in scenes {
-            let cpu = matches!(set.device, Device::Cpu).then(|| CpuRenderer::new(&scene));
+            let cpu = set.inputs_on_cpu().then(|| CpuRenderer::new(&scene));
             let hash = cache.as_ref().map(|_| scene_hash(&scene));
             let mut ts = TuneScene { name: scene.name.clone(), scene, cpu, views: Vec::new() };
             for (camera, frame) in frames {
@@ -419,9 +460,12 @@ impl TuneSet {
                         frame.inner.x, frame.inner.y
                     ));
                 }
-                let gbuffer = match &set.device {
-                    Device::Cpu => ts.cpu.as_ref().expect("made above").gbuffer(&frame, &aokit_cpu::no_progress).0,
-                    Device::Vulkan(v) => v.gbuffer(&ts.scene, &frame).map_err(|e| e.to_string())?.0,
+                let gbuffer = match (&set.device, &ts.cpu) {
+                    (Device::Vulkan(v), _) if !set.inputs_on_cpu() => {
+                        v.gbuffer(&ts.scene, &frame).map_err(|e| e.to_string())?.0
+                    }
+                    (_, Some(cpu)) => cpu.gbuffer(&frame, &aokit_cpu::no_progress).0,
+                    (_, None) => unreachable!("CPU scenes and cpu-sim inputs have a renderer"),
                 };
                 let key = hash.as_ref().map(|h| set.cache_key(h, &ts.name, &frame));
                 let file =
@@ -437,7 +481,7 @@ impl TuneSet {
                     Some(ao) => (ao, None),
                     None => {
                         let t = Instant::now();
-                        let (ao, _) = set.render(&ts, &frame, &gbuffer, &set.reference)?;
+                        let (ao, _) = set.render_on(set.inputs_on_cpu(), &ts, &frame, &gbuffer, &set.reference)?;
                         let ms = t.elapsed().as_secs_f64() * 1e3;
                         if let (Some(file), Some(key)) = (&file, &key) {
                             let bytes: Vec<u8> = ao.iter().flat_map(|v| v.to_le_bytes()).collect();
@@ -461,15 +505,15 @@ impl TuneSet {
             }
             set.scenes.push(ts);
         }
-        Ok(set)
+        Ok(self)
     }
 
     /// Everything the reference image depends on, as text.
     fn cache_key(&self, scene_hash: &str, scene: &str, frame: &Frame) -> String {
         serde_json::json!({
             "format": "aokit-reference/1",
-            "backend": self.device.name(),
-            "device": self.device.device_name().split(',').next().unwrap_or_default(),
+            "backend": if self.inputs_on_cpu() { "cpu" } else { self.device.name() },
+            "device": if self.inputs_on_cpu() { "CPU".to_string() } else { self.device.device_name().split(',').next().unwrap_or_default().to_string() },
             "scene": scene,
             "scene_sha256": scene_hash,
             "frame": frame.describe(),
@@ -489,14 +533,34 @@ impl TuneSet {
         gbuffer: &GBufferImage,
         t: &Technique,
     ) -> Result<(Vec<f32>, f64), String> {
-        let run = match &self.device {
-            Device::Cpu => {
-                scene.cpu.as_ref().expect("CPU scenes have a renderer").run(frame, gbuffer, t, &aokit_cpu::no_progress)
-            }
-            Device::Vulkan(v) => v.run(&scene.scene, frame, gbuffer, t).map_err(|e| e.to_string())?,
+        self.render_on(false, scene, frame, gbuffer, t)
+    }
+
+    /// [`TuneSet::render`] on cpu-sim when `on_cpu`, else on the set's device.
+    fn render_on(
+        &self,
+        on_cpu: bool,
+        scene: &TuneScene,
+        frame: &Frame,
+        gbuffer: &GBufferImage,
+        t: &Technique,
+    ) -> Result<(Vec<f32>, f64), String> {
+        let run = match (&self.device, &scene.cpu) {
+            (Device::Vulkan(v), _) if !on_cpu => v.run(&scene.scene, frame, gbuffer, t).map_err(|e| e.to_string())?,
+            (_, Some(cpu)) => cpu.run(frame, gbuffer, t, &aokit_cpu::no_progress),
+            (_, None) => unreachable!("CPU scenes and cpu-sim inputs have a renderer"),
         };
         let ms = run.passes.iter().filter(|p| p.0 != "accel_build").map(|p| p.1).sum();
         Ok((crop_inner(&frame.camera.view, &run.ao_final), ms))
+    }
+
+    /// A technique's final AO over the inner image of camera `view` of scene `scene`, and its
+    /// time in ms (the sum of its passes, acceleration-structure builds excluded), on the set's
+    /// device.
+    pub fn evaluate(&self, scene: usize, view: usize, t: &Technique) -> Result<(Vec<f32>, f64), String> {
+        let s = &self.scenes[scene];
+        let v = &s.views[view];
+        self.render(s, &v.frame, &v.gbuffer, t)
     }
 
     /// The technique's metrics on scene `scene`, averaged over its cameras (SSIM too when the

@@ -4,6 +4,7 @@
 pub mod bench;
 pub mod compare;
 pub mod export;
+pub mod frontier;
 pub mod info;
 pub mod path;
 pub mod render;

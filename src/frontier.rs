@@ -1,0 +1,314 @@
+//! `aokit frontier`: the quality–cost frontier. Every technique at every quality preset (and the
+//! settings `aokit tune` found, `docs/tuning.md`) is rendered on every camera of each scene and
+//! scored against the 512-spp ground truth (spec gtao-raymarch-hybrid §5) with MSE, SSIM and
+//! FLIP (§6.1, §6.2, §6.4), beside its time per frame. A point is **Pareto-optimal** when no
+//! other point has both a lower MSE and a lower time; the plot marks those points and joins them
+//! into the frontier.
+//!
+//! The G-buffers (ray-cast) and the references come from cpu-sim for every back-end
+//! ([`TuneSet::with_cpu_inputs`]): the techniques run on identical inputs, so the back-ends
+//! differ only in time, and the references are rendered and cached once.
+
+use crate::metrics::{ImageRef, flip, mse, ssim};
+use crate::technique::{Describe, Technique};
+use crate::tune::TuneSet;
+use std::fmt::Write as _;
+
+/// The settings `aokit tune` recommended at exponent 1 over sponza and the kitchen (all-scenes
+/// rows of `docs/tuning.md`'s main table), drawn as `<technique>-tuned` points.
+pub const TUNED: [&str; 3] = [
+    "gtao:radius-multiplier=2.466:falloff-range=0.5266:sample-power=2.105:final-power=1.42:mip-offset=1.41",
+    "vbao:radius-multiplier=1.744:sample-power=2.067:final-power=1.057:mip-offset=2.804:thickness=1.493",
+    "raysd:cutoff=0",
+];
+
+/// One technique at one setting, as the frontier names it.
+#[derive(Clone, Debug)]
+pub struct Candidate {
+    /// `name` for the defaults, `name-preset` for a preset, `name-tuned` for [`TUNED`].
+    pub label: String,
+    pub technique: Technique,
+}
+
+/// Every registered technique but the reference: each at every quality preset (its `preset`
+/// setting's choices but `custom`), or at its defaults where it has none; then the [`TUNED`]
+/// settings (when `tuned`).
+pub fn candidates(reference: &str, tuned: bool) -> Result<Vec<Candidate>, String> {
+    use aokit_shaders::technique::Kind;
+    let mut out = Vec::new();
+    for registered in aokit_shaders::techniques::TECHNIQUES {
+        let name = registered.name();
+        if name == reference {
+            continue;
+        }
+        let t = Technique::named(name)?;
+        let presets = t.rows().iter().find(|r| r.key == "preset").map(|r| r.kind);
+        match presets {
+            Some(Kind::Choice(choices)) => {
+                for &preset in choices.iter().filter(|&&c| c != "custom") {
+                    out.push(Candidate {
+                        label: format!("{name}-{preset}"),
+                        technique: Technique::preset(name, preset)?,
+                    });
+                }
+            }
+            _ => out.push(Candidate { label: name.to_string(), technique: t }),
+        }
+    }
+    if tuned {
+        for spec in TUNED {
+            let technique = Technique::parse(spec)?;
+            out.push(Candidate { label: format!("{}-tuned", technique.name()), technique });
+        }
+    }
+    Ok(out)
+}
+
+/// A candidate's scores on one scene: means over the scene's cameras.
+#[derive(Clone, Debug)]
+pub struct Point {
+    pub label: String,
+    /// `name:key=value…` of the settings that differ from the defaults.
+    pub spec: String,
+    pub technique: Technique,
+    pub mse: f64,
+    pub ssim: f64,
+    pub flip: f64,
+    /// Time per frame in ms: per camera the median over the timed frames of the sum of the
+    /// technique's passes (acceleration-structure builds excluded), then the mean over cameras.
+    pub ms: f64,
+    /// No other point of the scene has both a lower MSE and a lower time.
+    pub pareto: bool,
+}
+
+/// One scene's frontier.
+#[derive(Clone, Debug)]
+pub struct SceneFrontier {
+    pub scene: String,
+    pub cameras: Vec<String>,
+    pub radius: f32,
+    pub points: Vec<Point>,
+}
+
+/// For each `(mse, ms)` point: whether no other point has both a lower MSE and a lower time.
+pub fn pareto_optimal(points: &[(f64, f64)]) -> Vec<bool> {
+    points.iter().map(|&(m, t)| !points.iter().any(|&(m2, t2)| m2 < m && t2 < t)).collect()
+}
+
+/// The median of `v` (the mean of the middle two for an even count).
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n % 2 == 1 { v[n / 2] } else { 0.5 * (v[n / 2 - 1] + v[n / 2]) }
+}
+
+/// Score every candidate on every scene of `set` (the techniques run on its device, `frames`
+/// timed runs per camera after one untimed); `on_point` hears each finished candidate.
+pub fn measure(
+    set: &TuneSet,
+    candidates: &[Candidate],
+    frames: usize,
+    on_point: &mut dyn FnMut(&str, &Point),
+) -> Result<Vec<SceneFrontier>, String> {
+    let mut out = Vec::new();
+    for (s, scene) in set.scenes.iter().enumerate() {
+        let mut points = Vec::new();
+        for c in candidates {
+            let (mut m, mut q, mut f, mut ms) = (0.0, 0.0, 0.0, 0.0);
+            for (v, view) in scene.views.iter().enumerate() {
+                let (ao, _) = set.evaluate(s, v, &c.technique)?;
+                let mut times = Vec::new();
+                for _ in 0..frames {
+                    times.push(set.evaluate(s, v, &c.technique)?.1);
+                }
+                let (w, h) = (view.frame.inner.x as usize, view.frame.inner.y as usize);
+                let a = ImageRef { width: w, height: h, pixels: &ao };
+                let r = ImageRef { width: w, height: h, pixels: view.reference() };
+                m += mse(a, r, None).unwrap_or(f64::NAN);
+                q += ssim(a, r, None).unwrap_or(f64::NAN);
+                f += flip(r, a, None).unwrap_or(f64::NAN);
+                ms += if times.is_empty() { f64::NAN } else { median(times) };
+            }
+            let n = scene.views.len() as f64;
+            let point = Point {
+                label: c.label.clone(),
+                spec: crate::tune::spec(&c.technique),
+                technique: c.technique.clone(),
+                mse: m / n,
+                ssim: q / n,
+                flip: f / n,
+                ms: ms / n,
+                pareto: false,
+            };
+            on_point(&scene.name, &point);
+            points.push(point);
+        }
+        let optimal = pareto_optimal(&points.iter().map(|p| (p.mse, p.ms)).collect::<Vec<_>>());
+        for (p, o) in points.iter_mut().zip(optimal) {
+            p.pareto = o;
+        }
+        out.push(SceneFrontier {
+            scene: scene.name.clone(),
+            cameras: scene.views.iter().map(|v| v.camera.clone()).collect(),
+            radius: scene.views[0].frame.radius,
+            points,
+        });
+    }
+    Ok(out)
+}
+
+/// Where and how a frontier was measured (for the table's header and the JSON).
+#[derive(Clone, Debug)]
+pub struct Setup {
+    pub backend: String,
+    pub device: String,
+    pub width: u32,
+    pub height: u32,
+    pub guard: u32,
+    pub exponent: f32,
+    pub reference: String,
+    pub frames: usize,
+    /// e.g. the commit and the machine's load, as the caller knows them.
+    pub note: String,
+}
+
+/// The frontier as Markdown: a header, then per scene a table sorted by time with the Pareto
+/// points marked, and the plot (`<scene>_<backend>.svg` beside the file).
+pub fn markdown(setup: &Setup, scenes: &[SceneFrontier]) -> String {
+    let mut s = format!(
+        "# Quality–cost frontier ({backend})\n\nGenerated by `aokit frontier --backend {backend}`: every technique at every \
+         quality preset, and the settings `aokit tune` recommended (`-tuned`, docs/tuning.md), against the \
+         {reference} on every camera of each scene. MSE, SSIM and FLIP (NVIDIA's perceptual difference, LDR, 67 \
+         pixels per degree) over the inner image, means over the cameras; time = the sum of the technique's passes \
+         per frame (median of {frames} timed frames after one untimed, acceleration-structure builds excluded; \
+         wall clock on the CPU, timestamp queries on Vulkan), mean over the cameras. **Pareto** (✓): no other row \
+         has both a lower MSE and a lower time. G-buffers (ray-cast) and references are cpu-sim's on every \
+         back-end, so the back-ends differ only in time.\n\n\
+         - back-end `{backend}`: {device}\n- {w}×{h} + {guard} px guard band, exponent {exponent} (gtao and vbao \
+         apply their own final power; docs/tuning.md, \"Which exponent\")\n- {note}\n",
+        backend = setup.backend,
+        reference = setup.reference,
+        frames = setup.frames,
+        device = setup.device,
+        w = setup.width,
+        h = setup.height,
+        guard = setup.guard,
+        exponent = setup.exponent,
+        note = setup.note,
+    );
+    for scene in scenes {
+        let _ = write!(
+            s,
+            "\n## {} (camera{} {}; radius {})\n\n![{} frontier]({}_{}.svg)\n\n| technique | settings | MSE | SSIM | FLIP | ms | Pareto |\n|---|---|---|---|---|---|---|\n",
+            scene.scene,
+            if scene.cameras.len() > 1 { "s" } else { "" },
+            scene.cameras.join(", "),
+            scene.radius,
+            scene.scene,
+            scene.scene,
+            setup.backend
+        );
+        let mut rows: Vec<&Point> = scene.points.iter().collect();
+        rows.sort_by(|a, b| a.ms.total_cmp(&b.ms));
+        for p in rows {
+            let _ = writeln!(
+                s,
+                "| {} | `{}` | {:.3e} | {:.4} | {:.4} | {:.1} | {} |",
+                p.label,
+                p.spec,
+                p.mse,
+                p.ssim,
+                p.flip,
+                p.ms,
+                if p.pareto { "✓" } else { "" }
+            );
+        }
+    }
+    s
+}
+
+/// The frontier as JSON: `{"backend", "device", "width", "height", "guard_band", "exponent",
+/// "reference", "frames", "scenes": [{"scene", "cameras", "radius", "points": [{"label",
+/// "technique", "spec", "options", "mse", "ssim", "flip", "ms", "pareto"}]}]}`.
+pub fn json(setup: &Setup, scenes: &[SceneFrontier]) -> serde_json::Value {
+    let num = |x: f64| if x.is_finite() { serde_json::json!(x) } else { serde_json::Value::Null };
+    serde_json::json!({
+        "backend": setup.backend, "device": setup.device, "width": setup.width, "height": setup.height,
+        "guard_band": setup.guard, "exponent": setup.exponent, "reference": setup.reference, "frames": setup.frames,
+        "note": setup.note,
+        "scenes": scenes.iter().map(|s| serde_json::json!({
+            "scene": s.scene, "cameras": s.cameras, "radius": s.radius,
+            "points": s.points.iter().map(|p| serde_json::json!({
+                "label": p.label, "technique": p.technique.name(), "spec": p.spec, "options": p.technique.describe(),
+                "mse": num(p.mse), "ssim": num(p.ssim), "flip": num(p.flip), "ms": num(p.ms), "pareto": p.pareto,
+            })).collect::<Vec<_>>(),
+        })).collect::<Vec<_>>(),
+    })
+}
+
+/// The plot's size in pixels.
+pub const PLOT_SIZE: (u32, u32) = (900, 600);
+
+/// One scene's frontier as an SVG (plotters): MSE vs time, both logarithmic; Pareto-optimal
+/// points filled and joined by the frontier's staircase, the others hollow and grey; every point
+/// labelled. Lower left is better. `None` when no point has a positive MSE and time.
+pub fn svg(scene: &SceneFrontier, backend: &str) -> Option<String> {
+    use plotters::prelude::*;
+    let points: Vec<&Point> =
+        scene.points.iter().filter(|p| p.mse.is_finite() && p.mse > 0.0 && p.ms.is_finite() && p.ms > 0.0).collect();
+    if points.is_empty() {
+        return None;
+    }
+    let range = |v: &mut dyn Iterator<Item = f64>| {
+        let (lo, hi) = v.fold((f64::INFINITY, 0.0f64), |(lo, hi), x| (lo.min(x), hi.max(x)));
+        let pad = if hi / lo < 1.5 { 2.0 } else { 10f64.powf(0.2) };
+        (lo / pad, hi * pad)
+    };
+    let (x0, x1) = range(&mut points.iter().map(|p| p.ms));
+    let (y0, y1) = range(&mut points.iter().map(|p| p.mse));
+    let mut frontier: Vec<(f64, f64)> = points.iter().filter(|p| p.pareto).map(|p| (p.ms, p.mse)).collect();
+    frontier.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut steps = Vec::new();
+    for (i, &(x, y)) in frontier.iter().enumerate() {
+        if i > 0 {
+            steps.push((x, frontier[i - 1].1));
+        }
+        steps.push((x, y));
+    }
+    let mut out = String::new();
+    let drawn = (|| -> Result<(), Box<dyn std::error::Error + '_>> {
+        let root = SVGBackend::with_string(&mut out, PLOT_SIZE).into_drawing_area();
+        root.fill(&WHITE)?;
+        let caption = format!("{}: MSE vs the ground truth against time per frame ({backend})", scene.scene);
+        let mut chart = ChartBuilder::on(&root)
+            .caption(caption, ("sans-serif", 18))
+            .margin(16)
+            .x_label_area_size(44)
+            .y_label_area_size(76)
+            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())?;
+        chart
+            .configure_mesh()
+            .x_desc("time per frame, ms (log)")
+            .y_desc("MSE (log)")
+            .axis_desc_style(("sans-serif", 15))
+            .x_labels(8)
+            .y_labels(8)
+            .light_line_style(RGBColor(236, 236, 236))
+            .x_label_formatter(&|v| if *v >= 10.0 { format!("{v:.0}") } else { format!("{v:.2}") })
+            .y_label_formatter(&|v| format!("{v:.0e}"))
+            .draw()?;
+        let blue = RGBColor(31, 97, 170);
+        chart.draw_series(std::iter::once(PathElement::new(steps, blue.stroke_width(2))))?;
+        let grey = RGBColor(150, 150, 150);
+        chart.draw_series(points.iter().map(|p| {
+            let (style, text) =
+                if p.pareto { (blue.filled(), blue.to_rgba()) } else { (grey.stroke_width(1), grey.to_rgba()) };
+            EmptyElement::at((p.ms, p.mse))
+                + Circle::new((0, 0), 5, style)
+                + Text::new(p.label.clone(), (8, -14), ("sans-serif", 13).into_font().color(&text))
+        }))?;
+        root.present()?;
+        Ok(())
+    })();
+    drawn.ok().map(|()| out)
+}
