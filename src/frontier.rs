@@ -6,8 +6,10 @@
 //! into the frontier.
 //!
 //! The G-buffers (ray-cast) and the references come from cpu-sim for every back-end
-//! ([`TuneSet::with_cpu_inputs`]): the techniques run on identical inputs, so the back-ends
-//! differ only in time, and the references are rendered and cached once.
+//! ([`crate::tune::Inputs::Cpu`]): the techniques read identical G-buffers, and the references
+//! are rendered and cached once. The screen-space techniques then score the same on both
+//! back-ends to within their CPU ≡ Vulkan agreement; the ray-traced ones trace (or rasterize)
+//! the scene on each back-end themselves and may differ a little more.
 
 use crate::metrics::{ImageRef, flip, mse, ssim};
 use crate::technique::{Describe, Technique};
@@ -27,7 +29,23 @@ pub const TUNED: [&str; 3] = [
 pub struct Candidate {
     /// `name` for the defaults, `name-preset` for a preset, `name-tuned` for [`TUNED`].
     pub label: String,
+    /// The technique with its settings.
     pub technique: Technique,
+}
+
+impl Candidate {
+    /// Candidates for techniques given by the user, labelled [`Technique::label`] and numbered
+    /// from the second of a repeated label on (`gtao`, `gtao-2`), as `aokit compare` does.
+    pub fn labelled(techniques: Vec<Technique>) -> Vec<Candidate> {
+        let mut out: Vec<Candidate> = Vec::new();
+        for technique in techniques {
+            let base = technique.label();
+            let taken = out.iter().filter(|c| c.label == base || c.label.starts_with(&format!("{base}-"))).count();
+            let label = if taken == 0 { base } else { format!("{base}-{}", taken + 1) };
+            out.push(Candidate { label, technique });
+        }
+        out
+    }
 }
 
 /// Every registered technique but the reference: each at every quality preset (its `preset`
@@ -67,32 +85,45 @@ pub fn candidates(reference: &str, tuned: bool) -> Result<Vec<Candidate>, String
 /// A candidate's scores on one scene: means over the scene's cameras.
 #[derive(Clone, Debug)]
 pub struct Point {
+    /// The candidate's label.
     pub label: String,
     /// `name:key=value…` of the settings that differ from the defaults.
     pub spec: String,
+    /// The technique with its settings.
     pub technique: Technique,
+    /// MSE against the reference (spec gtao-raymarch-hybrid §6.1).
     pub mse: f64,
+    /// SSIM against the reference (§6.2).
     pub ssim: f64,
+    /// Mean LDR-FLIP against the reference (§6.4).
     pub flip: f64,
     /// Time per frame in ms: per camera the median over the timed frames of the sum of the
     /// technique's passes (acceleration-structure builds excluded), then the mean over cameras.
     pub ms: f64,
-    /// No other point of the scene has both a lower MSE and a lower time.
+    /// No other point of the scene has both a lower MSE and a lower time ([`pareto_optimal`]).
     pub pareto: bool,
 }
 
 /// One scene's frontier.
 #[derive(Clone, Debug)]
 pub struct SceneFrontier {
+    /// The scene's name.
     pub scene: String,
+    /// The cameras the scores are averaged over.
     pub cameras: Vec<String>,
+    /// The world-space AO radius (the scene's, the same for every camera).
     pub radius: f32,
+    /// One point per candidate, in the candidates' order.
     pub points: Vec<Point>,
 }
 
-/// For each `(mse, ms)` point: whether no other point has both a lower MSE and a lower time.
+/// For each `(mse, ms)` point: whether it is Pareto-optimal, i.e. finite and no other point has
+/// both a lower MSE and a lower time (ties dominate nothing, so equal points are all optimal).
 pub fn pareto_optimal(points: &[(f64, f64)]) -> Vec<bool> {
-    points.iter().map(|&(m, t)| !points.iter().any(|&(m2, t2)| m2 < m && t2 < t)).collect()
+    points
+        .iter()
+        .map(|&(m, t)| m.is_finite() && t.is_finite() && !points.iter().any(|&(m2, t2)| m2 < m && t2 < t))
+        .collect()
 }
 
 /// The median of `v` (the mean of the middle two for an even count).
@@ -102,14 +133,18 @@ fn median(mut v: Vec<f64>) -> f64 {
     if n % 2 == 1 { v[n / 2] } else { 0.5 * (v[n / 2 - 1] + v[n / 2]) }
 }
 
-/// Score every candidate on every scene of `set` (the techniques run on its device, `frames`
-/// timed runs per camera after one untimed); `on_point` hears each finished candidate.
+/// Score every candidate on every scene of `set` (the techniques run on its device, `frames` ≥ 1
+/// timed runs per camera after one untimed, whose image is scored); `on_point` hears each
+/// finished candidate.
 pub fn measure(
     set: &TuneSet,
     candidates: &[Candidate],
     frames: usize,
     on_point: &mut dyn FnMut(&str, &Point),
 ) -> Result<Vec<SceneFrontier>, String> {
+    if frames == 0 {
+        return Err("--frames must be at least 1".into());
+    }
     let mut out = Vec::new();
     for (s, scene) in set.scenes.iter().enumerate() {
         let mut points = Vec::new();
@@ -127,7 +162,7 @@ pub fn measure(
                 m += mse(a, r, None).unwrap_or(f64::NAN);
                 q += ssim(a, r, None).unwrap_or(f64::NAN);
                 f += flip(r, a, None).unwrap_or(f64::NAN);
-                ms += if times.is_empty() { f64::NAN } else { median(times) };
+                ms += median(times);
             }
             let n = scene.views.len() as f64;
             let point = Point {
@@ -160,14 +195,23 @@ pub fn measure(
 /// Where and how a frontier was measured (for the table's header and the JSON).
 #[derive(Clone, Debug)]
 pub struct Setup {
+    /// `cpu` or `vulkan`.
     pub backend: String,
+    /// The device's name (the CPU's thread count on the CPU).
     pub device: String,
+    /// Output size (inner image).
     pub width: u32,
     pub height: u32,
+    /// Guard band in pixels on every side.
     pub guard: u32,
+    /// AO exponent.
     pub exponent: f32,
+    /// The reference's spec (`name:key=value…`).
     pub reference: String,
+    /// Timed frames per technique and camera.
     pub frames: usize,
+    /// Which points were measured, in words (for the header).
+    pub candidates: String,
     /// e.g. the commit and the machine's load, as the caller knows them.
     pub note: String,
 }
@@ -176,17 +220,18 @@ pub struct Setup {
 /// points marked, and the plot (`<scene>_<backend>.svg` beside the file).
 pub fn markdown(setup: &Setup, scenes: &[SceneFrontier]) -> String {
     let mut s = format!(
-        "# Quality–cost frontier ({backend})\n\nGenerated by `aokit frontier --backend {backend}`: every technique at every \
-         quality preset, and the settings `aokit tune` recommended (`-tuned`, docs/tuning.md), against the \
-         {reference} on every camera of each scene. MSE, SSIM and FLIP (NVIDIA's perceptual difference, LDR, 67 \
+        "# Quality–cost frontier ({backend})\n\nGenerated by `aokit frontier --backend {backend}`: {candidates}, against \
+         `{reference}` on every camera of each scene. MSE, SSIM and FLIP (NVIDIA's perceptual difference, LDR, 67 \
          pixels per degree) over the inner image, means over the cameras; time = the sum of the technique's passes \
          per frame (median of {frames} timed frames after one untimed, acceleration-structure builds excluded; \
          wall clock on the CPU, timestamp queries on Vulkan), mean over the cameras. **Pareto** (✓): no other row \
          has both a lower MSE and a lower time. G-buffers (ray-cast) and references are cpu-sim's on every \
-         back-end, so the back-ends differ only in time.\n\n\
+         back-end: the screen-space techniques score the same on both to within their CPU ≡ Vulkan agreement, \
+         the ray-traced ones trace or rasterize the scene on each back-end and may differ a little more.\n\n\
          - back-end `{backend}`: {device}\n- {w}×{h} + {guard} px guard band, exponent {exponent} (gtao and vbao \
          apply their own final power; docs/tuning.md, \"Which exponent\")\n- {note}\n",
         backend = setup.backend,
+        candidates = setup.candidates,
         reference = setup.reference,
         frames = setup.frames,
         device = setup.device,
@@ -228,13 +273,14 @@ pub fn markdown(setup: &Setup, scenes: &[SceneFrontier]) -> String {
 }
 
 /// The frontier as JSON: `{"backend", "device", "width", "height", "guard_band", "exponent",
-/// "reference", "frames", "scenes": [{"scene", "cameras", "radius", "points": [{"label",
+/// "reference", "frames", "inputs", "note", "scenes": [{"scene", "cameras", "radius", "points": [{"label",
 /// "technique", "spec", "options", "mse", "ssim", "flip", "ms", "pareto"}]}]}`.
 pub fn json(setup: &Setup, scenes: &[SceneFrontier]) -> serde_json::Value {
     let num = |x: f64| if x.is_finite() { serde_json::json!(x) } else { serde_json::Value::Null };
     serde_json::json!({
         "backend": setup.backend, "device": setup.device, "width": setup.width, "height": setup.height,
         "guard_band": setup.guard, "exponent": setup.exponent, "reference": setup.reference, "frames": setup.frames,
+        "inputs": "cpu-sim's ray-cast G-buffers and references on every back-end",
         "note": setup.note,
         "scenes": scenes.iter().map(|s| serde_json::json!({
             "scene": s.scene, "cameras": s.cameras, "radius": s.radius,
@@ -252,20 +298,15 @@ pub const PLOT_SIZE: (u32, u32) = (900, 600);
 /// One scene's frontier as an SVG (plotters): MSE vs time, both logarithmic; Pareto-optimal
 /// points filled and joined by the frontier's staircase, the others hollow and grey; every point
 /// labelled. Lower left is better. `None` when no point has a positive MSE and time.
-pub fn svg(scene: &SceneFrontier, backend: &str) -> Option<String> {
+pub fn svg(scene: &SceneFrontier, backend: &str, reference: &str) -> Option<String> {
     use plotters::prelude::*;
     let points: Vec<&Point> =
         scene.points.iter().filter(|p| p.mse.is_finite() && p.mse > 0.0 && p.ms.is_finite() && p.ms > 0.0).collect();
     if points.is_empty() {
         return None;
     }
-    let range = |v: &mut dyn Iterator<Item = f64>| {
-        let (lo, hi) = v.fold((f64::INFINITY, 0.0f64), |(lo, hi), x| (lo.min(x), hi.max(x)));
-        let pad = if hi / lo < 1.5 { 2.0 } else { 10f64.powf(0.2) };
-        (lo / pad, hi * pad)
-    };
-    let (x0, x1) = range(&mut points.iter().map(|p| p.ms));
-    let (y0, y1) = range(&mut points.iter().map(|p| p.mse));
+    let x = crate::report::log_range(points.iter().map(|p| p.ms));
+    let y = crate::report::log_range(points.iter().map(|p| p.mse));
     let mut frontier: Vec<(f64, f64)> = points.iter().filter(|p| p.pareto).map(|p| (p.ms, p.mse)).collect();
     frontier.sort_by(|a, b| a.0.total_cmp(&b.0));
     let mut steps = Vec::new();
@@ -279,24 +320,8 @@ pub fn svg(scene: &SceneFrontier, backend: &str) -> Option<String> {
     let drawn = (|| -> Result<(), Box<dyn std::error::Error + '_>> {
         let root = SVGBackend::with_string(&mut out, PLOT_SIZE).into_drawing_area();
         root.fill(&WHITE)?;
-        let caption = format!("{}: MSE vs the ground truth against time per frame ({backend})", scene.scene);
-        let mut chart = ChartBuilder::on(&root)
-            .caption(caption, ("sans-serif", 18))
-            .margin(16)
-            .x_label_area_size(44)
-            .y_label_area_size(76)
-            .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())?;
-        chart
-            .configure_mesh()
-            .x_desc("time per frame, ms (log)")
-            .y_desc("MSE (log)")
-            .axis_desc_style(("sans-serif", 15))
-            .x_labels(8)
-            .y_labels(8)
-            .light_line_style(RGBColor(236, 236, 236))
-            .x_label_formatter(&|v| if *v >= 10.0 { format!("{v:.0}") } else { format!("{v:.2}") })
-            .y_label_formatter(&|v| format!("{v:.0e}"))
-            .draw()?;
+        let caption = format!("{}: MSE vs {reference} against time per frame ({backend})", scene.scene);
+        let mut chart = crate::report::log_log_chart(&root, caption, x, y, "time per frame, ms (log)")?;
         let blue = RGBColor(31, 97, 170);
         chart.draw_series(std::iter::once(PathElement::new(steps, blue.stroke_width(2))))?;
         let grey = RGBColor(150, 150, 150);

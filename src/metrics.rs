@@ -136,9 +136,12 @@ pub fn flip(reference: ImageRef, test: ImageRef, mask: Option<&[bool]>) -> Optio
     masked_mean(&flip_map(reference, test), mask)
 }
 
-/// The mean of a per-pixel map over the pixels where `mask` (if any) is true; `None` if none
-/// counts.
+/// The mean of a per-pixel map over the pixels where `mask` (if any, as long as the map) is
+/// true; `None` if none counts.
 pub fn masked_mean(map: &[f32], mask: Option<&[bool]>) -> Option<f64> {
+    if let Some(m) = mask {
+        assert_eq!(m.len(), map.len(), "mask and map differ in length");
+    }
     let (mut sum, mut n) = (0.0f64, 0usize);
     for (i, &e) in map.iter().enumerate() {
         if mask.is_none_or(|m| m[i]) {

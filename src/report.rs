@@ -371,36 +371,14 @@ impl CompareReport {
         if points.is_empty() {
             return None;
         }
-        // Log ranges padded by a quarter decade (×/÷ 2 around a single value).
-        let range = |v: &mut dyn Iterator<Item = f64>| {
-            let (lo, hi) = v.fold((f64::INFINITY, 0.0f64), |(lo, hi), x| (lo.min(x), hi.max(x)));
-            let pad = if hi / lo < 1.5 { 2.0 } else { 10f64.powf(0.25) };
-            (lo / pad, hi * pad)
-        };
-        let (x0, x1) = range(&mut points.iter().map(|p| p.total_ms));
-        let (y0, y1) = range(&mut points.iter().map(|p| p.mse));
+        let x = log_range(points.iter().map(|p| p.total_ms));
+        let y = log_range(points.iter().map(|p| p.mse));
         let mut svg = String::new();
         let drawn = (|| -> Result<(), Box<dyn std::error::Error + '_>> {
             let root = SVGBackend::with_string(&mut svg, PLOT_SIZE).into_drawing_area();
             root.fill(&WHITE)?;
             let caption = format!("{}: MSE vs {} vs total time ({})", self.scene, self.reference.name(), self.backend);
-            let mut chart = ChartBuilder::on(&root)
-                .caption(caption, ("sans-serif", 18))
-                .margin(16)
-                .x_label_area_size(44)
-                .y_label_area_size(76)
-                .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())?;
-            chart
-                .configure_mesh()
-                .x_desc("total ms (log)")
-                .y_desc("MSE (log)")
-                .axis_desc_style(("sans-serif", 15))
-                .x_labels(6)
-                .y_labels(6)
-                .light_line_style(RGBColor(236, 236, 236))
-                .x_label_formatter(&|v| if *v >= 10.0 { format!("{v:.0}") } else { format!("{v:.2}") })
-                .y_label_formatter(&|v| format!("{v:.0e}"))
-                .draw()?;
+            let mut chart = log_log_chart(&root, caption, x, y, "total ms (log)")?;
             chart.draw_series(points.iter().enumerate().map(|(i, p)| {
                 let colour = Palette99::pick(i).to_rgba();
                 EmptyElement::at((p.total_ms, p.mse))
@@ -430,6 +408,53 @@ impl CompareReport {
             None => format!("<p id=\"quality-cost\">No technique to plot.{note}</p>"),
         }
     }
+}
+
+/// A logarithmic axis range around positive `values`: padded by a quarter decade each side
+/// (×/÷ 2 around values within a factor 1.5).
+pub(crate) fn log_range(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = values.fold((f64::INFINITY, 0.0f64), |(lo, hi), x| (lo.min(x), hi.max(x)));
+    let pad = if hi / lo < 1.5 { 2.0 } else { 10f64.powf(0.25) };
+    (lo / pad, hi * pad)
+}
+
+/// A chart with logarithmic x and y axes.
+pub(crate) type LogLogChart<'a, DB> = plotters::prelude::ChartContext<
+    'a,
+    DB,
+    plotters::prelude::Cartesian2d<plotters::prelude::LogCoord<f64>, plotters::prelude::LogCoord<f64>>,
+>;
+
+/// The log–log chart of the reports' plots (MSE on y against a time on x): caption, axes,
+/// light grid, labels.
+pub(crate) fn log_log_chart<'a, DB: plotters::prelude::DrawingBackend>(
+    root: &'a plotters::prelude::DrawingArea<DB, plotters::coord::Shift>,
+    caption: String,
+    (x0, x1): (f64, f64),
+    (y0, y1): (f64, f64),
+    x_desc: &str,
+) -> Result<LogLogChart<'a, DB>, String> {
+    use plotters::prelude::*;
+    let mut chart = ChartBuilder::on(root)
+        .caption(caption, ("sans-serif", 18))
+        .margin(16)
+        .x_label_area_size(44)
+        .y_label_area_size(76)
+        .build_cartesian_2d((x0..x1).log_scale(), (y0..y1).log_scale())
+        .map_err(|e| e.to_string())?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc("MSE (log)")
+        .axis_desc_style(("sans-serif", 15))
+        .x_labels(8)
+        .y_labels(8)
+        .light_line_style(RGBColor(236, 236, 236))
+        .x_label_formatter(&|v| if *v >= 10.0 { format!("{v:.0}") } else { format!("{v:.2}") })
+        .y_label_formatter(&|v| format!("{v:.0e}"))
+        .draw()
+        .map_err(|e| e.to_string())?;
+    Ok(chart)
 }
 
 fn finite_or_null(x: f64) -> serde_json::Value {

@@ -369,6 +369,87 @@ pub fn scene_views(spec: &str, request: &FrameRequest) -> Result<(Scene, Vec<(St
     Ok((scene, frames))
 }
 
+/// A scene with its cameras' names and frames ([`scene_views`]).
+pub type SceneViews = (Scene, Vec<(String, Frame)>);
+
+/// The comma-separated scene list of a `--scenes` flag: none empty, none twice.
+pub fn scene_names(spec: &str) -> Result<Vec<&str>, String> {
+    let names: Vec<&str> = spec.split(',').map(str::trim).filter(|s| !s.is_empty()).collect();
+    if names.is_empty() {
+        return Err("--scenes is empty".into());
+    }
+    if let Some(dup) = names.iter().enumerate().find(|(i, n)| names[..*i].contains(n)).map(|(_, n)| n) {
+        return Err(format!("--scenes names {dup} twice"));
+    }
+    Ok(names)
+}
+
+/// Every camera of each named scene ([`scene_views`]) at `width`×`height` + `guard`, AO
+/// exponent `exponent`; refused where two names load the same scene (their outputs would
+/// collide).
+pub fn load_scenes(
+    names: &[&str],
+    width: u32,
+    height: u32,
+    guard: u32,
+    exponent: f32,
+) -> Result<Vec<SceneViews>, String> {
+    let request = FrameRequest {
+        width,
+        height,
+        guard,
+        camera: CameraChoice::Auto { fov_deg: 60.0 },
+        radius: None,
+        exponent,
+        thickness: 0.0,
+    };
+    let mut scenes: Vec<SceneViews> = Vec::new();
+    for name in names {
+        let loaded = scene_views(name, &request)?;
+        if let Some((other, _)) = scenes.iter().find(|(s, _)| s.name == loaded.0.name) {
+            return Err(format!("--scenes: {name} is scene '{}' again", other.name));
+        }
+        scenes.push(loaded);
+    }
+    Ok(scenes)
+}
+
+/// The device of `--backend cpu|vulkan`, `--rt-mode` and `--validation`; the last two are
+/// refused on the CPU, which has neither.
+pub fn device_of(backend: &str, rt_mode: Option<&str>, validation: bool) -> Result<Device, String> {
+    use aokit_shaders::graph::RtMode;
+    match (backend, rt_mode) {
+        ("cpu", Some(mode)) => Err(format!(
+            "--rt-mode {mode} selects how the Vulkan back-end traces (--backend vulkan); cpu-sim traces through its BVH"
+        )),
+        ("cpu", None) if validation => {
+            Err("--validation enables the Vulkan validation layer (--backend vulkan); cpu-sim has none".into())
+        }
+        ("cpu", None) => Ok(Device::Cpu),
+        ("vulkan", _) => {
+            let mode = rt_mode.map(RtMode::parse).transpose()?.unwrap_or(RtMode::Pipeline);
+            let v = VulkanRenderer::new(&aokit_vulkan::GpuOptions { validation, ..Default::default() })
+                .map_err(|e| e.to_string())?;
+            v.set_rt_mode(mode);
+            Ok(Device::Vulkan(v))
+        }
+        (other, _) => Err(format!("--backend {other}: expected cpu or vulkan")),
+    }
+}
+
+/// Where a [`TuneSet`]'s G-buffers and references come from.
+#[derive(Copy, Clone, Debug, PartialEq, Eq)]
+pub enum Inputs {
+    /// The set's device: the rasterized G-buffer and the reference rendered on Vulkan, or
+    /// cpu-sim's on the CPU.
+    Device,
+    /// cpu-sim's ray-cast G-buffers and references whatever the device; the techniques still
+    /// run on the device, on those same G-buffers (uploaded on Vulkan). Every back-end is
+    /// then scored against one reference from the same inputs, and an expensive reference (the
+    /// 512-spp ground truth) is rendered and cached once for all back-ends.
+    Cpu,
+}
+
 /// Scenes, their cameras, G-buffers and reference images, on one device: what every objective
 /// evaluation renders against.
 pub struct TuneSet {
@@ -376,8 +457,7 @@ pub struct TuneSet {
     pub scenes: Vec<TuneScene>,
     pub reference: Technique,
     pub metric: Metric,
-    /// The G-buffers and references come from cpu-sim whatever the device (see
-    /// [`TuneSet::with_cpu_inputs`]).
+    /// The G-buffers and references come from cpu-sim whatever the device ([`Inputs::Cpu`]).
     cpu_inputs: bool,
 }
 
@@ -408,32 +488,19 @@ fn scene_hash(scene: &Scene) -> String {
 
 impl TuneSet {
     /// Load the scenes' G-buffers and render (or read from `cache`) the reference for every
-    /// camera, both on `device`; `log` hears one line per reference image.
+    /// camera, both on `device` or both on cpu-sim ([`Inputs`]); `log` hears one line per
+    /// reference image.
     pub fn new(
         device: Device,
+        inputs: Inputs,
         scenes: Vec<(Scene, Vec<(String, Frame)>)>,
         reference: Technique,
         metric: Metric,
         cache: Option<PathBuf>,
         log: &mut dyn FnMut(&str),
     ) -> Result<TuneSet, String> {
-        TuneSet { device, scenes: Vec::new(), reference, metric, cpu_inputs: false }.load(scenes, cache, log)
-    }
-
-    /// [`TuneSet::new`] with the G-buffers (ray-cast) and the references rendered by cpu-sim
-    /// whatever `device` is; the techniques still run on `device`, on those same G-buffers
-    /// (uploaded on Vulkan). Every back-end is then scored on identical inputs against one
-    /// reference, and an expensive reference (the 512-spp ground truth) is rendered and cached
-    /// once for all back-ends.
-    pub fn with_cpu_inputs(
-        device: Device,
-        scenes: Vec<(Scene, Vec<(String, Frame)>)>,
-        reference: Technique,
-        metric: Metric,
-        cache: Option<PathBuf>,
-        log: &mut dyn FnMut(&str),
-    ) -> Result<TuneSet, String> {
-        TuneSet { device, scenes: Vec::new(), reference, metric, cpu_inputs: true }.load(scenes, cache, log)
+        let cpu_inputs = inputs == Inputs::Cpu;
+        TuneSet { device, scenes: Vec::new(), reference, metric, cpu_inputs }.load(scenes, cache, log)
     }
 
     /// Whether the G-buffers and references are cpu-sim's.
@@ -556,7 +623,7 @@ impl TuneSet {
 
     /// A technique's final AO over the inner image of camera `view` of scene `scene`, and its
     /// time in ms (the sum of its passes, acceleration-structure builds excluded), on the set's
-    /// device.
+    /// device. Panics where `scene` or `view` is out of range.
     pub fn evaluate(&self, scene: usize, view: usize, t: &Technique) -> Result<(Vec<f32>, f64), String> {
         let s = &self.scenes[scene];
         let v = &s.views[view];
@@ -876,14 +943,44 @@ impl TuneSet {
 }
 
 #[cfg(feature = "cli")]
-pub use command::{TuneArgs, tune_command};
+pub use command::{DeviceArgs, TuneArgs, tune_command};
 
 #[cfg(feature = "cli")]
 mod command {
     use super::*;
     use crate::cli::TechniqueArgs;
     use aokit_shaders::graph::RtMode;
-    use aokit_vulkan::GpuOptions;
+
+    /// Where `tune` and `frontier` run and whether they cache their references.
+    #[derive(clap::Args)]
+    pub struct DeviceArgs {
+        /// Where the techniques run (`tune`: the reference too; `frontier`: the G-buffers and
+        /// references are cpu-sim's either way).
+        #[arg(long, value_parser = ["cpu", "vulkan"], default_value = "cpu")]
+        pub backend: String,
+        /// Neither read nor write the reference cache (`<aokit cache>/reference/`).
+        #[arg(long)]
+        pub no_cache: bool,
+        /// Enable the Khronos validation layer (--backend vulkan); validation messages fail the
+        /// run.
+        #[arg(long)]
+        pub validation: bool,
+        /// How the Vulkan back-end runs ray-traced passes (pipeline or query).
+        #[arg(long, value_parser = RtMode::NAMES)]
+        pub rt_mode: Option<String>,
+    }
+
+    impl DeviceArgs {
+        /// The device ([`device_of`]).
+        pub fn device(&self) -> Result<Device, String> {
+            device_of(&self.backend, self.rt_mode.as_deref(), self.validation)
+        }
+
+        /// The reference cache's folder, unless `--no-cache`.
+        pub fn cache(&self) -> Option<PathBuf> {
+            (!self.no_cache).then(|| builtin::cache_dir().join("reference"))
+        }
+    }
 
     /// `aokit tune`'s flags.
     #[derive(clap::Args)]
@@ -912,9 +1009,6 @@ mod command {
         /// The reference image's technique, optionally with `:key=value` settings.
         #[arg(long, default_value = "groundtruth")]
         reference: String,
-        /// Where the techniques and the reference run.
-        #[arg(long, value_parser = ["cpu", "vulkan"], default_value = "cpu")]
-        backend: String,
         /// Output width (the tuner's default is small: the 512-spp ground truth is the cost).
         #[arg(long, default_value_t = 480)]
         width: u32,
@@ -926,15 +1020,8 @@ mod command {
         /// AO exponent (as `render`/`compare`; the ground truth is V^exponent).
         #[arg(long, default_value_t = 2.0)]
         exponent: f32,
-        /// Neither read nor write the reference cache (`<aokit cache>/reference/`).
-        #[arg(long)]
-        no_cache: bool,
-        /// Enable the Khronos validation layer (Vulkan); validation messages fail the run.
-        #[arg(long)]
-        validation: bool,
-        /// How the Vulkan back-end runs ray-traced passes (pipeline or query).
-        #[arg(long, value_parser = RtMode::NAMES)]
-        rt_mode: Option<String>,
+        #[command(flatten)]
+        device: DeviceArgs,
         /// Write the results as JSON here.
         #[arg(long)]
         json: Option<PathBuf>,
@@ -1013,46 +1100,15 @@ mod command {
         if technique.name() == reference.name() && technique.describe() == reference.describe() {
             return Err(format!("{} is also the reference: nothing to tune against", spec(&technique)));
         }
-        let names: Vec<&str> = args.scenes.split(',').map(str::trim).filter(|s| !s.is_empty()).collect();
-        if names.is_empty() {
-            return Err("--scenes is empty".into());
-        }
-        if let Some(dup) = names.iter().enumerate().find(|(i, n)| names[..*i].contains(n)).map(|(_, n)| n) {
-            return Err(format!("--scenes names {dup} twice"));
-        }
-        let device = match (args.backend.as_str(), &args.rt_mode) {
-            ("cpu", Some(mode)) => {
-                return Err(format!(
-                    "--rt-mode {mode} selects how the Vulkan back-end traces (--backend vulkan); cpu-sim traces through its BVH"
-                ));
-            }
-            ("cpu", None) => Device::Cpu,
-            _ => {
-                let mode = args.rt_mode.as_deref().map(RtMode::parse).transpose()?.unwrap_or(RtMode::Pipeline);
-                let v = VulkanRenderer::new(&GpuOptions { validation: args.validation, ..Default::default() })
-                    .map_err(|e| e.to_string())?;
-                v.set_rt_mode(mode);
-                Device::Vulkan(v)
-            }
-        };
-        let request = FrameRequest {
-            width: args.width,
-            height: args.height,
-            guard: args.guard,
-            camera: CameraChoice::Auto { fov_deg: 60.0 },
-            radius: None,
-            exponent: args.exponent,
-            thickness: 0.0,
-        };
-        let mut scenes = Vec::new();
-        for name in &names {
-            scenes.push(scene_views(name, &request)?);
-        }
+        let names = scene_names(&args.scenes)?;
+        let device = args.device.device()?;
+        let scenes = load_scenes(&names, args.width, args.height, args.guard, args.exponent)?;
         let params = parameters(&technique, args.keys.as_deref(), &scenes[0].1[0].1.desc())?;
         let clock = Instant::now();
-        let cache = (!args.no_cache).then(|| builtin::cache_dir().join("reference"));
+        let cache = args.device.cache();
         eprintln!("preparing {} scene(s): G-buffers and {} reference images", names.len(), reference.name());
-        let set = TuneSet::new(device, scenes, reference, metric, cache, &mut |line| eprintln!("  {line}"))?;
+        let set =
+            TuneSet::new(device, Inputs::Device, scenes, reference, metric, cache, &mut |line| eprintln!("  {line}"))?;
         let reference_s = clock.elapsed().as_secs_f64();
         let mut header = format!(
             "aokit tune: {} against {} ({}) on {} ({}), {}×{} + {} px guard band, metric {} (loss {}; mean over \

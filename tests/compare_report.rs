@@ -90,8 +90,9 @@ fn compare_json_follows_the_contract_and_matches_the_metrics() {
         }
         let expected_ssim = ssim(img(w, h, &a), img(w, h, &reference), None).unwrap();
         assert!((result["ssim"].as_f64().unwrap() - expected_ssim).abs() <= 1e-12, "SSIM");
-        // FLIP of the same crops, reference first (pinned against NVIDIA's flip-evaluator in
-        // tests/metrics.rs); a visibly different technique is well above 0.
+        // FLIP of the same crops (pinned against NVIDIA's flip-evaluator in tests/metrics.rs; LDR-FLIP
+        // is symmetric, so the order is not what this checks); a visibly different technique is
+        // well above 0.
         let expected_flip = flip(img(w, h, &reference), img(w, h, &a), None).unwrap();
         assert!((result["flip"].as_f64().unwrap() - expected_flip).abs() <= 1e-12, "FLIP");
         assert!(expected_flip > 0.01, "FLIP {expected_flip}");

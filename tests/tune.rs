@@ -8,7 +8,7 @@ mod common;
 use aokit::frame::{CameraChoice, FrameRequest};
 use aokit::render::CpuRenderer;
 use aokit::technique::{Describe, Technique};
-use aokit::tune::{Device, Metric, TuneSet, parameters, scene_views, spec};
+use aokit::tune::{Device, Inputs, Metric, TuneSet, parameters, scene_views, spec};
 use aokit_shaders::technique::Kind;
 use std::path::PathBuf;
 use std::process::Command;
@@ -32,7 +32,7 @@ fn technique(spec: &str) -> Technique {
 /// A tune set on the CPU without the disk cache.
 fn set(scenes: &[&str], reference: &str, req: &FrameRequest, metric: Metric) -> TuneSet {
     let scenes = scenes.iter().map(|s| scene_views(s, req).unwrap()).collect();
-    TuneSet::new(Device::Cpu, scenes, technique(reference), metric, None, &mut |_| {}).unwrap()
+    TuneSet::new(Device::Cpu, Inputs::Device, scenes, technique(reference), metric, None, &mut |_| {}).unwrap()
 }
 
 /// MSE over the inner image of `t` against `reference` on `scene`'s cameras (mean), rendered
@@ -161,7 +161,9 @@ fn nelder_mead_finds_a_known_optimum_on_vulkan() {
     let req = request(96, 64, 16);
     let target = "gtao:radius-multiplier=2.2:falloff-range=0.3";
     let scenes = vec![scene_views("cornell", &req).unwrap()];
-    let set = TuneSet::new(Device::Vulkan(vulkan), scenes, technique(target), Metric::Mse, None, &mut |_| {}).unwrap();
+    let set =
+        TuneSet::new(Device::Vulkan(vulkan), Inputs::Device, scenes, technique(target), Metric::Mse, None, &mut |_| {})
+            .unwrap();
     let start = technique("gtao");
     let params =
         parameters(&start, Some("radius-multiplier,falloff-range"), &set.scenes[0].views[0].frame.desc()).unwrap();
@@ -256,8 +258,16 @@ fn reference_cache_is_keyed_by_the_frame() {
     let _ = std::fs::remove_dir_all(&dir);
     let make = |req: &FrameRequest| {
         let scenes = vec![scene_views("cornell", req).unwrap()];
-        TuneSet::new(Device::Cpu, scenes, technique("groundtruth:spp=8"), Metric::Mse, Some(dir.clone()), &mut |_| {})
-            .unwrap()
+        TuneSet::new(
+            Device::Cpu,
+            Inputs::Device,
+            scenes,
+            technique("groundtruth:spp=8"),
+            Metric::Mse,
+            Some(dir.clone()),
+            &mut |_| {},
+        )
+        .unwrap()
     };
     let req = request(48, 32, 8);
     let first = make(&req);

@@ -4,13 +4,8 @@
 
 use super::progress_bar;
 use aokit::cli::TechniqueArgs;
-use aokit::frame::{CameraChoice, FrameRequest};
 use aokit::frontier::{self, Candidate, Setup};
-use aokit::render::VulkanRenderer;
-use aokit::scene::builtin;
-use aokit::tune::{Device, Metric, TuneSet, scene_views};
-use aokit_shaders::graph::RtMode;
-use aokit_vulkan::GpuOptions;
+use aokit::tune::{DeviceArgs, Inputs, Metric, TuneSet, load_scenes, scene_names};
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -23,14 +18,14 @@ pub struct FrontierArgs {
     /// presets.
     #[arg(long, default_value = "sponza,kitchen,oak")]
     scenes: String,
-    /// Where the techniques run (the G-buffers and the references are cpu-sim's either way).
-    #[arg(long, value_parser = ["cpu", "vulkan"], default_value = "cpu")]
-    backend: String,
+    #[command(flatten)]
+    device: DeviceArgs,
     /// Comma-separated techniques with optional `:key=value` settings, instead of every
     /// technique at every preset and the tuned settings.
     #[arg(long)]
     techniques: Option<String>,
-    /// Leave out the settings `aokit tune` recommended (`aokit::frontier::TUNED`).
+    /// Leave out the settings `aokit tune` recommended (`aokit::frontier::TUNED`) from the
+    /// default list.
     #[arg(long)]
     no_tuned: bool,
     /// The reference technique, optionally with `:key=value` settings.
@@ -57,15 +52,6 @@ pub struct FrontierArgs {
     /// A line for the table's header (e.g. the commit and the machine).
     #[arg(long, default_value = "")]
     note: String,
-    /// Neither read nor write the reference cache (`<aokit cache>/reference/`).
-    #[arg(long)]
-    no_cache: bool,
-    /// Enable the Khronos validation layer (Vulkan); validation messages fail the run.
-    #[arg(long)]
-    validation: bool,
-    /// How the Vulkan back-end runs ray-traced passes (pipeline or query).
-    #[arg(long, value_parser = RtMode::NAMES)]
-    rt_mode: Option<String>,
 }
 
 /// Run the command.
@@ -73,16 +59,11 @@ pub fn run(args: FrontierArgs) -> Result<(), String> {
     if args.frames == 0 {
         return Err("--frames must be at least 1".into());
     }
-    let names: Vec<&str> = args.scenes.split(',').map(str::trim).filter(|s| !s.is_empty()).collect();
-    if names.is_empty() {
-        return Err("--scenes is empty".into());
-    }
-    if let Some(dup) = names.iter().enumerate().find(|(i, n)| names[..*i].contains(n)).map(|(_, n)| n) {
-        return Err(format!("--scenes names {dup} twice"));
-    }
+    let names = scene_names(&args.scenes)?;
     // Settings flags apply to the listed techniques and the reference together (as in `compare`);
     // the default list sets every preset itself, so it takes none.
-    let (reference, candidates): (_, Vec<Candidate>) = match &args.techniques {
+    let (reference, candidates, described) = match &args.techniques {
+        Some(_) if args.no_tuned => return Err("--no-tuned applies to the default list, not to --techniques".into()),
         Some(list) => {
             let specs: Vec<&str> = list.split(',').map(str::trim).filter(|s| !s.is_empty()).collect();
             if specs.is_empty() {
@@ -90,10 +71,7 @@ pub fn run(args: FrontierArgs) -> Result<(), String> {
             }
             let mut techniques = args.options.techniques(&[&specs[..], &[args.reference.as_str()]].concat())?;
             let reference = techniques.pop().expect("the reference is the last");
-            (
-                reference,
-                techniques.into_iter().map(|technique| Candidate { label: technique.label(), technique }).collect(),
-            )
+            (reference, Candidate::labelled(techniques), format!("the techniques `{}`", specs.join(",")))
         }
         None => {
             if !args.options.given.0.is_empty() {
@@ -103,47 +81,27 @@ pub fn run(args: FrontierArgs) -> Result<(), String> {
             }
             let reference = args.options.technique(&args.reference)?;
             let candidates = frontier::candidates(reference.name(), !args.no_tuned)?;
-            (reference, candidates)
+            let described = if args.no_tuned {
+                "every technique at every quality preset"
+            } else {
+                "every technique at every quality preset, and the settings `aokit tune` recommended (`-tuned`, \
+                 docs/tuning.md)"
+            };
+            (reference, candidates, described.to_string())
         }
     };
-    let device = match (args.backend.as_str(), &args.rt_mode) {
-        ("cpu", Some(mode)) => {
-            return Err(format!(
-                "--rt-mode {mode} selects how the Vulkan back-end traces (--backend vulkan); cpu-sim traces through its BVH"
-            ));
-        }
-        ("cpu", None) => Device::Cpu,
-        _ => {
-            let mode = args.rt_mode.as_deref().map(RtMode::parse).transpose()?.unwrap_or(RtMode::Pipeline);
-            let v = VulkanRenderer::new(&GpuOptions { validation: args.validation, ..Default::default() })
-                .map_err(|e| e.to_string())?;
-            v.set_rt_mode(mode);
-            Device::Vulkan(v)
-        }
-    };
-    let request = FrameRequest {
-        width: args.width,
-        height: args.height,
-        guard: args.guard,
-        camera: CameraChoice::Auto { fov_deg: 60.0 },
-        radius: None,
-        exponent: args.exponent,
-        thickness: 0.0,
-    };
-    let mut scenes = Vec::new();
-    for name in &names {
-        scenes.push(scene_views(name, &request)?);
-    }
+    let device = args.device.device()?;
+    let scenes = load_scenes(&names, args.width, args.height, args.guard, args.exponent)?;
     let clock = Instant::now();
-    let cache = (!args.no_cache).then(|| builtin::cache_dir().join("reference"));
+    let cache = args.device.cache();
     eprintln!(
-        "preparing {} scene(s): cpu-sim G-buffers and {} references (a 512-spp reference takes about a minute per \
+        "preparing {} scene(s): cpu-sim G-buffers and {} references (a 512-spp reference takes about 10 s per \
          camera at 960×540 on 2 cores; cached afterwards)",
         names.len(),
         reference.name()
     );
     let set =
-        TuneSet::with_cpu_inputs(device, scenes, reference, Metric::Mse, cache, &mut |line| eprintln!("  {line}"))?;
+        TuneSet::new(device, Inputs::Cpu, scenes, reference, Metric::Mse, cache, &mut |line| eprintln!("  {line}"))?;
     let bar = progress_bar(format!("{}: frontier", set.device.name()), (set.scenes.len() * candidates.len()) as u64);
     let result = frontier::measure(&set, &candidates, args.frames, &mut |scene, p| {
         bar.println(format!(
@@ -158,6 +116,7 @@ pub fn run(args: FrontierArgs) -> Result<(), String> {
     if !messages.is_empty() {
         return Err(format!("validation layer reported {} message(s):\n{}", messages.len(), messages.join("\n")));
     }
+    let wall = format!("wall {:.0} s", clock.elapsed().as_secs_f64());
     let setup = Setup {
         backend: set.device.name().to_string(),
         device: set.device.device_name(),
@@ -167,11 +126,8 @@ pub fn run(args: FrontierArgs) -> Result<(), String> {
         exponent: args.exponent,
         reference: aokit::tune::spec(&set.reference),
         frames: args.frames,
-        note: if args.note.is_empty() {
-            format!("wall {:.0} s", clock.elapsed().as_secs_f64())
-        } else {
-            format!("{}; wall {:.0} s", args.note, clock.elapsed().as_secs_f64())
-        },
+        candidates: described,
+        note: if args.note.is_empty() { wall } else { format!("{}; {wall}", args.note) },
     };
     std::fs::create_dir_all(&args.out).map_err(|e| format!("{}: {e}", args.out.display()))?;
     let write = |name: String, bytes: &[u8]| {
@@ -179,7 +135,7 @@ pub fn run(args: FrontierArgs) -> Result<(), String> {
         aokit::output::write_atomic_bytes(&path, bytes).map_err(|e| format!("{}: {e}", path.display()))
     };
     for scene in &scenes {
-        if let Some(svg) = frontier::svg(scene, &setup.backend) {
+        if let Some(svg) = frontier::svg(scene, &setup.backend, &setup.reference) {
             write(format!("{}_{}.svg", scene.scene, setup.backend), svg.as_bytes())?;
         }
     }
