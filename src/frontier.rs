@@ -1,7 +1,7 @@
 //! `aokit frontier`: the quality–cost frontier. Every technique at every quality preset (and the
 //! settings `aokit tune` found, `docs/tuning.md`) is rendered on every camera of each scene and
 //! scored against the 512-spp ground truth (spec gtao-raymarch-hybrid §5) with MSE, SSIM and
-//! FLIP (§6.1, §6.2, §6.4), beside its time per frame. A point is **Pareto-optimal** when no
+//! FLIP (spec gtao-raymarch-hybrid §6.1, §6.2, §6.4), beside its time per frame. A point is **Pareto-optimal** when no
 //! other point has both a lower MSE and a lower time; the plot marks those points and joins them
 //! into the frontier.
 //!
@@ -93,9 +93,9 @@ pub struct Point {
     pub technique: Technique,
     /// MSE against the reference (spec gtao-raymarch-hybrid §6.1).
     pub mse: f64,
-    /// SSIM against the reference (§6.2).
+    /// SSIM against the reference (spec gtao-raymarch-hybrid §6.2).
     pub ssim: f64,
-    /// Mean LDR-FLIP against the reference (§6.4).
+    /// Mean LDR-FLIP against the reference (spec gtao-raymarch-hybrid §6.4).
     pub flip: f64,
     /// Time per frame in ms: per camera the median over the timed frames of the sum of the
     /// technique's passes (acceleration-structure builds excluded), then the mean over cameras.

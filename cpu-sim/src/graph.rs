@@ -9,7 +9,7 @@
 //! ([`Kernel::cpu`]). A new screen-space kernel so runs here with no code in this crate.
 
 use crate::gbuffer::Surfaces;
-use crate::svao::{HitOrder, Pass1, SdMap};
+use crate::svao::{HitOrder, Pass1};
 use crate::{Progress, SceneBvh};
 use aokit_shaders::graph::{Access, Graph, Init, Lifetime, Pass, RAY_COUNT, inputs, ray_count_of};
 use aokit_shaders::kernel::{Kernel, KernelIo, Slot};
@@ -394,20 +394,12 @@ mod runners {
         io.rays += map.rays;
     }
 
-    /// Pass 1's AO and mask as the CPU runners take them.
-    fn pass1(ao: &[f32], mask: &[u32]) -> Pass1 {
-        Pass1 { ao: ao.to_vec(), mask: mask.to_vec(), ray_min: Vec::new(), ray_max: Vec::new() }
-    }
-
     pub fn raysd_pass2(io: &mut PassIo) {
         use raysd::raysd_pass2::*;
         let frame = io.record(FRAME);
         let ao = io.write(AO);
-        let map = SdMap { layers: io.read(SD_MAP).to_vec(), rays: 0 };
-        let p1 = pass1(ao, io.read(MASK));
-        let out =
-            crate::svao::run_pass2_sd(&frame.params, io.read(DEPTH), io.read(NORMALS), io.read(DEPTH2), &p1, &map);
-        ao.copy_from_slice(&out);
+        let gbuffer = (io.read(DEPTH), io.read(NORMALS), io.read(DEPTH2));
+        crate::svao::run_pass2_sd_into(&frame.params, gbuffer, ao, io.read(MASK), io.read(SD_MAP));
     }
 
     pub fn raysvao(io: &mut PassIo) {
@@ -415,17 +407,8 @@ mod runners {
         let frame = io.record(FRAME);
         let scene = io.scene();
         let ao = io.write(AO);
-        let p1 = pass1(ao, io.read(MASK));
-        let (out, rays) = crate::svao::run_raysvao_pass2(
-            scene.bvh,
-            scene.surfaces,
-            &frame,
-            io.read(DEPTH),
-            io.read(NORMALS),
-            io.read(DEPTH2),
-            &p1,
-        );
-        ao.copy_from_slice(&out);
+        let gbuffer = (io.read(DEPTH), io.read(NORMALS), io.read(DEPTH2));
+        let rays = crate::svao::run_raysvao_pass2_into(scene.bvh, scene.surfaces, &frame, gbuffer, ao, io.read(MASK));
         io.rays += rays;
     }
 

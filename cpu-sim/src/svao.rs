@@ -236,12 +236,27 @@ fn run_pass2<R: Refine>(
     progress: Progress,
     source: impl Fn() -> R + Sync,
 ) -> Vec<f32> {
+    let mut out = pass1.ao.clone();
+    run_pass2_into(params, (depth, normals, depth2), &mut out, &pass1.mask, progress, source);
+    out
+}
+
+/// [`run_pass2`] in place: `ao` holds pass 1's AO and receives pass 2's (each pixel reads only
+/// its own stored value, as on the GPU), `mask` pass 1's refinement bits; the G-buffer is
+/// `(depth, normals, depth2)`.
+fn run_pass2_into<R: Refine>(
+    params: &SvaoParams,
+    (depth, normals, depth2): (&[f32], &[u32], &[f32]),
+    ao: &mut [f32],
+    mask: &[u32],
+    progress: Progress,
+    source: impl Fn() -> R + Sync,
+) {
     let view = &params.vao.view;
     let size = view.size();
     let gbuffer = GBufferSlices { depth, normals, width: size.x };
-    let mut out = pass1.ao.clone();
     let g = view.guard;
-    out.par_chunks_mut(size.x as usize).enumerate().for_each(|(y, row)| {
+    ao.par_chunks_mut(size.x as usize).enumerate().for_each(|(y, row)| {
         let y = y as u32;
         if y < g || y + g >= size.y {
             return;
@@ -250,11 +265,10 @@ fn run_pass2<R: Refine>(
         for x in g..size.x - g {
             let p = uvec2(x, y);
             let i = view.index(p);
-            row[x as usize] = pass2_pixel(&gbuffer, depth2, params, p, pass1.ao[i], pass1.mask[i], &mut refine).ao;
+            row[x as usize] = pass2_pixel(&gbuffer, depth2, params, p, row[x as usize], mask[i], &mut refine).ao;
         }
         progress(1);
     });
-    out
 }
 
 /// AO pass 2 from the SD map (spec svao-raysd §9).
@@ -267,6 +281,18 @@ pub fn run_pass2_sd(
     map: &SdMap,
 ) -> Vec<f32> {
     run_pass2(params, depth, normals, depth2, pass1, &crate::no_progress, || SdMapRefine { map: &map.layers, params })
+}
+
+/// [`run_pass2_sd`] in place on pass 1's AO `ao` and bits `mask`, from the map's layers `map`
+/// (what the graph's pass binds: no copies).
+pub fn run_pass2_sd_into(
+    params: &SvaoParams,
+    gbuffer: (&[f32], &[u32], &[f32]),
+    ao: &mut [f32],
+    mask: &[u32],
+    map: &[f32],
+) {
+    run_pass2_into(params, gbuffer, ao, mask, &crate::no_progress, || SdMapRefine { map, params })
 }
 
 /// BVH tracing for Ray-SVAO samples: every hit goes through the alpha test, then the shared
@@ -322,15 +348,29 @@ pub fn run_raysvao_pass2(
     depth2: &[f32],
     pass1: &Pass1,
 ) -> (Vec<f32>, u64) {
+    let mut ao = pass1.ao.clone();
+    let rays = run_raysvao_pass2_into(bvh, surfaces, frame, (depth, normals, depth2), &mut ao, &pass1.mask);
+    (ao, rays)
+}
+
+/// [`run_raysvao_pass2`] in place on pass 1's AO `ao` and bits `mask`; returns the rays traced.
+pub fn run_raysvao_pass2_into(
+    bvh: &SceneBvh,
+    surfaces: &Surfaces,
+    frame: &SvaoFrame,
+    gbuffer: (&[f32], &[u32], &[f32]),
+    ao: &mut [f32],
+    mask: &[u32],
+) -> u64 {
     let rays = AtomicU64::new(0);
-    let ao = run_pass2(&frame.params, depth, normals, depth2, pass1, &crate::no_progress, || BvhRefine {
+    run_pass2_into(&frame.params, gbuffer, ao, mask, &crate::no_progress, || BvhRefine {
         bvh,
         alpha: surfaces.alpha(),
         frame,
         traced: 0,
         rays: &rays,
     });
-    (ao, rays.into_inner())
+    rays.into_inner()
 }
 
 /// The raster SD map on the CPU (spec svao-raysd §8): for every requested SD texel, every surface along the
