@@ -35,13 +35,12 @@ pub struct Candidate {
 
 impl Candidate {
     /// Candidates for techniques given by the user, labelled [`Technique::label`] and numbered
-    /// from the second of a repeated label on (`gtao`, `gtao-2`), as `aokit compare` does.
+    /// from the second of a repeated label on ([`crate::report::numbered_label`], as `aokit
+    /// compare` does).
     pub fn labelled(techniques: Vec<Technique>) -> Vec<Candidate> {
         let mut out: Vec<Candidate> = Vec::new();
         for technique in techniques {
-            let base = technique.label();
-            let taken = out.iter().filter(|c| c.label == base || c.label.starts_with(&format!("{base}-"))).count();
-            let label = if taken == 0 { base } else { format!("{base}-{}", taken + 1) };
+            let label = crate::report::numbered_label(technique.label(), out.iter().map(|c| c.label.as_str()));
             out.push(Candidate { label, technique });
         }
         out
@@ -126,13 +125,6 @@ pub fn pareto_optimal(points: &[(f64, f64)]) -> Vec<bool> {
         .collect()
 }
 
-/// The median of `v` (the mean of the middle two for an even count).
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    let n = v.len();
-    if n % 2 == 1 { v[n / 2] } else { 0.5 * (v[n / 2 - 1] + v[n / 2]) }
-}
-
 /// Score every candidate on every scene of `set` (the techniques run on its device, `frames` ≥ 1
 /// timed runs per camera after one untimed, whose image is scored); `on_point` hears each
 /// finished candidate.
@@ -162,7 +154,7 @@ pub fn measure(
                 m += mse(a, r, None).unwrap_or(f64::NAN);
                 q += ssim(a, r, None).unwrap_or(f64::NAN);
                 f += flip(r, a, None).unwrap_or(f64::NAN);
-                ms += median(times);
+                ms += crate::report::median(&mut times);
             }
             let n = scene.views.len() as f64;
             let point = Point {
@@ -199,8 +191,9 @@ pub struct Setup {
     pub backend: String,
     /// The device's name (the CPU's thread count on the CPU).
     pub device: String,
-    /// Output size (inner image).
+    /// Output width (inner image).
     pub width: u32,
+    /// Output height (inner image).
     pub height: u32,
     /// Guard band in pixels on every side.
     pub guard: u32,

@@ -96,12 +96,7 @@ impl CompareReport {
             let m = mse(img, reference_img, None).unwrap_or(f64::NAN);
             let flip_map = flip_map(reference_img, img);
             let flip = masked_mean(&flip_map, None).unwrap_or(f64::NAN);
-            let base = technique.label();
-            let taken = rows
-                .iter()
-                .filter(|r: &&CompareRow| r.label == base || r.label.starts_with(&format!("{base}-")))
-                .count();
-            let label = if taken == 0 { base } else { format!("{base}-{}", taken + 1) };
+            let label = numbered_label(technique.label(), rows.iter().map(|r: &CompareRow| r.label.as_str()));
             rows.push(CompareRow {
                 label,
                 technique: technique.clone(),
@@ -408,6 +403,14 @@ impl CompareReport {
             None => format!("<p id=\"quality-cost\">No technique to plot.{note}</p>"),
         }
     }
+}
+
+/// `base`, or `base-N` when `taken` (the labels given so far) already holds `base` or `base-…`:
+/// N counts them, from 2 on (`gtao`, `gtao-2`), so repeated techniques keep distinct labels and
+/// file names.
+pub fn numbered_label<'a>(base: String, taken: impl Iterator<Item = &'a str>) -> String {
+    let n = taken.filter(|l| *l == base || l.starts_with(&format!("{base}-"))).count();
+    if n == 0 { base } else { format!("{base}-{}", n + 1) }
 }
 
 /// A logarithmic axis range around positive `values`: padded by a quarter decade each side

@@ -457,8 +457,8 @@ pub struct TuneSet {
     pub scenes: Vec<TuneScene>,
     pub reference: Technique,
     pub metric: Metric,
-    /// The G-buffers and references come from cpu-sim whatever the device ([`Inputs::Cpu`]).
-    cpu_inputs: bool,
+    /// Where the G-buffers and references come from.
+    inputs: Inputs,
 }
 
 /// SHA-256 of bytes, hex.
@@ -499,13 +499,12 @@ impl TuneSet {
         cache: Option<PathBuf>,
         log: &mut dyn FnMut(&str),
     ) -> Result<TuneSet, String> {
-        let cpu_inputs = inputs == Inputs::Cpu;
-        TuneSet { device, scenes: Vec::new(), reference, metric, cpu_inputs }.load(scenes, cache, log)
+        TuneSet { device, scenes: Vec::new(), reference, metric, inputs }.load(scenes, cache, log)
     }
 
     /// Whether the G-buffers and references are cpu-sim's.
     fn inputs_on_cpu(&self) -> bool {
-        self.cpu_inputs || matches!(self.device, Device::Cpu)
+        self.inputs == Inputs::Cpu || matches!(self.device, Device::Cpu)
     }
 
     fn load(
