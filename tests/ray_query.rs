@@ -32,7 +32,7 @@ fn check_scene(vk: &aokit::render::VulkanRenderer, name: &str, min_occluded: f64
     let (gbuffer, _) = cpu.gbuffer(&frame, &no_progress);
     let view = frame.camera.view;
     let inner = |ao: &[f32]| aokit::output::crop_inner(&view, ao);
-    for spec in ["raysd", "raysvao", "groundtruth:spp=32", "hybrid"] {
+    for spec in ["raysd", "raysvao", "groundtruth:spp=32", "hybrid", "vbao-sd"] {
         let technique = Technique::parse(spec).unwrap();
         vk.set_rt_mode(RtMode::Pipeline);
         let pipeline = vk.run(&scene, &frame, &gbuffer, &technique).unwrap();
@@ -61,6 +61,9 @@ fn check_scene(vk: &aokit::render::VulkanRenderer, name: &str, min_occluded: f64
             time(&pipeline),
             time(&query),
         );
+        // XeGTAO's chain (vbao-sd's) keeps less of the view below 0.9 than the VAO/HBAO+ and
+        // ray-traced ones (sponza: 15 % against 30 % and more).
+        let min_occluded = if spec == "vbao-sd" { min_occluded / 3.0 } else { min_occluded };
         assert!(occluded > min_occluded, "{name} {spec}: the view must be occluded ({occluded})");
         // The rays each kernel counted as it traced them (`ray_count`): the same on every path.
         eprintln!(

@@ -47,8 +47,20 @@ fn effect(t: &Technique, frame: &FrameDesc) -> String {
 fn every_declared_key_has_a_row_and_names_are_unique() {
     let mut names: Vec<_> = TECHNIQUES.iter().map(|t| t.name()).collect();
     // The techniques aokit ships are all registered (a new one needs no edit here).
-    let shipped =
-        ["vao", "hbao", "raysd", "hbao-sd", "sdsvao", "raysvao", "gtao", "vbao", "raymarch", "hybrid", "groundtruth"];
+    let shipped = [
+        "vao",
+        "hbao",
+        "raysd",
+        "hbao-sd",
+        "sdsvao",
+        "raysvao",
+        "gtao",
+        "vbao",
+        "vbao-sd",
+        "raymarch",
+        "hybrid",
+        "groundtruth",
+    ];
     for name in shipped {
         assert!(names.contains(&name), "{name} is not registered: {names:?}");
     }

@@ -1,5 +1,7 @@
 //! Visibility-bitmask AO (spec vbao): the sector bits, the closed forms of vbao §6 (plane, corner),
-//! the thin occluder VBAO exists for, the T → ∞ equivalence with XeGTAO, and CPU ≡ Vulkan.
+//! the thin occluder VBAO exists for, the T → ∞ equivalence with XeGTAO, and CPU ≡ Vulkan; and
+//! `vbao-sd` (spec vbao §8): `vbao` without layers, the closed forms with and without them, the
+//! thin pole.
 
 mod common;
 
@@ -11,9 +13,12 @@ use aokit::technique::{GroundTruthSettings, GtaoOptions, Technique};
 use aokit_shaders::glam::{UVec2, Vec3, vec3};
 use aokit_shaders::groundtruth::settings::GROUNDTRUTH;
 use aokit_shaders::gtao::settings::GTAO;
+use aokit_shaders::svao::SvaoFrame;
 use aokit_shaders::vbao::settings::{Gate, VBAO, VbaoSettings};
 use aokit_shaders::vbao::{RULE_PAPER, RULE_TOUCH, WEIGHT_COSINE_BLENDER, WEIGHT_COSINE_EXACT, WEIGHT_UNIFORM};
 use aokit_shaders::vbao::{sector_bits, vbao_pixel};
+use aokit_shaders::vbaosd::settings::VBAO_SD;
+use aokit_shaders::vbaosd::{request_pixel, vbao_sd_pixel};
 use std::f32::consts::PI;
 
 /// The vbao §3 unit tests (Blender's), (lo, hi) → mask, hold under both rules; the rules differ
@@ -274,4 +279,139 @@ fn vbao_vulkan_agrees_with_cpu() {
         );
     }
     common::assert_validation_clean(&vk);
+}
+
+// ---- vbao-sd (spec vbao §8): the samples' occupancy from a ray-traced stochastic depth map.
+
+/// `vbao-sd`'s settings at `vbao`'s values except the weighting (its default is cosine-exact).
+fn vbao_sd_like(settings: &VbaoSettings) -> Technique {
+    Technique::new(&VBAO_SD, *settings)
+}
+
+/// The SD map `vbao-sd` traces for the requests of pixel `p` alone (every pixel when `None`):
+/// phase 1 (spec vbao §8.1) on the CPU, then Ray-SD's trace over the requested intervals.
+fn sd_map_for(cpu: &CpuRenderer, frame: &Frame, settings: &VbaoSettings, only: Option<UVec2>) -> (Vec<f32>, SvaoFrame) {
+    use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
+    use aokit_shaders::svao::Secondary;
+    let (g, _) = cpu.gbuffer(frame, &aokit_cpu::no_progress);
+    let params = settings.params(&frame.desc());
+    let sd_frame = settings.sd.frame(&frame.desc(), Secondary::StochasticDepth);
+    let mips = aokit_cpu::gtao::run_prefilter(&params.gtao, &g.depth);
+    let texels = sd_frame.params.sd_size();
+    let n = (texels.x * texels.y) as usize;
+    let (mut ray_min, mut ray_max) = (vec![RAY_MIN_CLEAR; n], vec![RAY_MAX_CLEAR; n]);
+    let size = frame.camera.view.size();
+    let pixels: Vec<UVec2> = match only {
+        Some(p) => vec![p],
+        None => (0..size.y).flat_map(|y| (0..size.x).map(move |x| UVec2::new(x, y))).collect(),
+    };
+    for p in pixels {
+        request_pixel(&params, &sd_frame.params, &mips, &g.normals, p, &mut &mut ray_min[..], &mut &mut ray_max[..]);
+    }
+    let pass1 = aokit_cpu::svao::Pass1 { ao: Vec::new(), mask: Vec::new(), ray_min, ray_max };
+    let map = aokit_cpu::svao::run_sd_map(
+        cpu.bvh(),
+        &cpu.surfaces(),
+        &sd_frame,
+        &g.depth,
+        &g.normals,
+        &pass1,
+        aokit_cpu::svao::HitOrder::Traversal,
+    );
+    (map.layers, sd_frame)
+}
+
+/// Spec vbao §8.3: where the SD map holds no layer every flagged sample falls back to the
+/// constant thickness, so `vbao-sd`'s pixel is `vbao`'s bit for bit (terms and edges) on Sponza,
+/// under each weighting. On an infinite plane no sample is flagged: the whole technique
+/// requests no SD texel, traces no ray and gives `vbao`'s image.
+#[test]
+fn without_layers_vbao_sd_is_vbao() {
+    let (scene, frame) = common::builtin_frame("sponza", 160, 90, 16);
+    let cpu = CpuRenderer::new(&scene);
+    let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
+    let size = frame.camera.view.size();
+    for weighting in [WEIGHT_UNIFORM, WEIGHT_COSINE_BLENDER, WEIGHT_COSINE_EXACT] {
+        let settings = VbaoSettings { weighting, ..Default::default() };
+        let params = settings.params(&frame.desc());
+        let sd = settings.sd.frame(&frame.desc(), aokit_shaders::svao::Secondary::StochasticDepth).params;
+        let empty = vec![1.0f32; (sd.sd_size().x * sd.sd_size().y * sd.sd_layers) as usize];
+        let mips = aokit_cpu::gtao::run_prefilter(&params.gtao, &g.depth);
+        let mut checked = 0;
+        for y in 0..size.y {
+            for x in 0..size.x {
+                let p = UVec2::new(x, y);
+                let want = vbao_pixel(&params, &mips, &g.normals, p);
+                let got = vbao_sd_pixel(&params, &sd, &empty, &mips, &g.normals, p);
+                assert_eq!((got.term, got.edges), (want.term, want.edges), "weighting {weighting} at {p}");
+                checked += 1;
+            }
+        }
+        assert_eq!(checked, size.x * size.y);
+    }
+
+    let mut s = Scene::default();
+    let big = 1000.0;
+    push_quad(&mut s, vec3(-big, 0.0, -big), vec3(-big, 0.0, big), vec3(big, 0.0, big), vec3(big, 0.0, -big));
+    let scene = validated(s, "plane");
+    let cpu = CpuRenderer::new(&scene);
+    let frame = frame_for(&scene, vec3(0.0, 5.0, 0.001), Vec3::ZERO, 0.5, (96, 64), 50.0);
+    let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
+    let settings = VbaoSettings { weighting: WEIGHT_COSINE_EXACT, ..Default::default() };
+    let sd = cpu.run(&frame, &g, &vbao_sd_like(&settings), &aokit_cpu::no_progress);
+    let plain = cpu.run(&frame, &g, &Technique::new(&VBAO, settings), &aokit_cpu::no_progress);
+    assert_eq!(sd.rays, 0, "a plane flags no sample");
+    // vbao runs through its eight-lane runner, vbao-sd through the entry points: within one
+    // 8-bit step of each other (the runners' own agreement bar).
+    let view = frame.camera.view;
+    let within = common::inner_within(&view, &sd.ao_final, &plain.ao_final, common::agreement::STEP + 1e-6);
+    assert!(within >= common::agreement::MIN_WITHIN, "plane: vbao-sd vs vbao within one step on {within}");
+}
+
+/// Spec vbao §8.3 on the corner of spec vbao §6.3 (k = 0.25, 0.5, 0.75; dense sampling, R_g = R): with a
+/// one-sided wall (the floor ending at it) the map has no layer behind the wall (the fallback
+/// T = 2R), with a wall 0.5·R thick its back face is the exit of every wall sample. Both must give the closed forms
+/// within spec vbao §6.3's 0.02; the thick wall must have layers behind its samples (its back face).
+#[test]
+fn vbao_sd_corner_matches_the_closed_forms_with_and_without_layers() {
+    let radius = 1.0;
+    let mut worst = 0.0f32;
+    for (k, uniform_32) in [(0.25f32, 0.6772f32), (0.5, 0.8049), (0.75, 0.9069)] {
+        for thick in [false, true] {
+            let mut s = Scene::default();
+            let big = 200.0;
+            // The floor ends at the wall: nothing lies behind a one-sided wall.
+            let x = k * radius;
+            push_quad(&mut s, vec3(-big, 0.0, -big), vec3(-big, 0.0, big), vec3(x, 0.0, big), vec3(x, 0.0, -big));
+            if thick {
+                push_box(&mut s, vec3(x, 0.0, -big), vec3(x + 0.5 * radius, big, big));
+            } else {
+                push_quad(&mut s, vec3(x, 0.0, big), vec3(x, big, big), vec3(x, big, -big), vec3(x, 0.0, -big));
+            }
+            let scene = validated(s, "corner");
+            let cpu = CpuRenderer::new(&scene);
+            let frame = frame_for(&scene, vec3(0.0, 2.0 * radius, 0.001), Vec3::ZERO, radius, (128, 128), 40.0);
+            let view = frame.camera.view;
+            let p = view.texel_of_uv(view.view_to_uv(frame.camera.world_to_view.transform_point3(Vec3::ZERO)));
+            let truth = 1.0 - (k.acos() - k * (1.0 - k * k).sqrt()) / PI;
+            let (g, _) = cpu.gbuffer(&frame, &aokit_cpu::no_progress);
+            for (weighting, want) in [(WEIGHT_COSINE_EXACT, truth), (WEIGHT_UNIFORM, uniform_32)] {
+                let mut settings = dense(weighting);
+                settings.gate = Gate::Radius;
+                settings.thickness = 2.0;
+                let (map, sd) = sd_map_for(&cpu, &frame, &settings, Some(p));
+                let layers = map.iter().filter(|&&z| z < 1.0).count();
+                assert!(layers > 0 || !thick, "k = {k}: no layer behind the thick wall");
+                let params = settings.params(&frame.desc());
+                let mips = aokit_cpu::gtao::run_prefilter(&params.gtao, &g.depth);
+                let got = vbao_sd_pixel(&params, &sd.params, &map, &mips, &g.normals, p).term as f32 * 1.5 / 255.0;
+                eprintln!(
+                    "vbao-sd corner k = {k}, thick {thick}, weighting {weighting}: {got:.4}, closed form {want:.4} \
+                     ({layers} layers)"
+                );
+                worst = worst.max((got - want).abs());
+            }
+        }
+    }
+    assert!(worst <= 0.02, "vbao-sd corner: worst |Δ| = {worst}");
 }

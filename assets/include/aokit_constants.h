@@ -702,6 +702,128 @@ static inline void aokit_vbao_VbaoParams(const aokit_vbao_settings *s, const aok
     aokit_vbao_GtaoParams(s, f, pass, &out->gtao);
 }
 
+/* vbao-sd: Visibility-bitmask AO whose samples' thickness comes from a ray-traced stochastic depth map (spec vbao §8) */
+#define AOKIT_VBAO_SD_PRESET_LOW 0u
+#define AOKIT_VBAO_SD_PRESET_MEDIUM 1u
+#define AOKIT_VBAO_SD_PRESET_HIGH 2u
+#define AOKIT_VBAO_SD_PRESET_ULTRA 3u
+#define AOKIT_VBAO_SD_PRESET_CUSTOM 4u
+#define AOKIT_VBAO_SD_NORMALS_GBUFFER 0u
+#define AOKIT_VBAO_SD_NORMALS_DEPTH 1u
+#define AOKIT_VBAO_SD_GATE_OFF 0u
+#define AOKIT_VBAO_SD_GATE_EFFECTIVE 1u
+#define AOKIT_VBAO_SD_GATE_RADIUS 2u
+#define AOKIT_VBAO_SD_SECTORS_PAPER 0u
+#define AOKIT_VBAO_SD_SECTORS_TOUCH 1u
+#define AOKIT_VBAO_SD_WEIGHTING_UNIFORM 0u
+#define AOKIT_VBAO_SD_WEIGHTING_COSINE_BLENDER 1u
+#define AOKIT_VBAO_SD_WEIGHTING_COSINE_EXACT 2u
+#define AOKIT_VBAO_SD_SD_RES_FULL 0u
+#define AOKIT_VBAO_SD_SD_RES_HALF 1u
+#define AOKIT_VBAO_SD_SD_RES_QUARTER 2u
+#define AOKIT_VBAO_SD_SD_RES_EIGHTH 3u
+#define AOKIT_VBAO_SD_SD_RES_SIXTEENTH 4u
+typedef struct aokit_vbao_sd_settings {
+    uint32_t preset; /* XeGTAO quality preset: slices × steps per side 1×2, 2×2, 3×3, 9×3 or custom (gtao-raymarch-hybrid §2.2) (index: low, medium, high, ultra, custom) */
+    uint32_t slices; /* XeGTAO slices per pixel (set after the preset: a pair no preset has is custom) */
+    uint32_t steps; /* XeGTAO steps per slice side (set after the preset) */
+    uint32_t denoise; /* XeGTAO denoise passes (0 off, 1 sharp, 2 medium, 3 soft; spec gtao-raymarch-hybrid §2.7) */
+    float radius_multiplier; /* XeGTAO RadiusMultiplier (effective radius = --radius × this) */
+    float sample_power; /* XeGTAO SampleDistributionPower */
+    float final_power; /* XeGTAO FinalValuePower */
+    float mip_offset; /* XeGTAO DepthMIPSamplingOffset */
+    uint32_t normals; /* XeGTAO normals: the G-buffer's, or derived from depth (pass 0, spec gtao-raymarch-hybrid §2.4) (index: gbuffer, depth) */
+    float thickness; /* VBAO sample thickness T as a multiple of the AO radius (spec vbao §2.2) */
+    uint32_t gate; /* VBAO: skip samples beyond the effective radius, beyond --radius, or none (spec vbao §2.1) (index: off, effective, radius) */
+    uint32_t sectors; /* VBAO sector rule: the paper's ⌈N·(hi−lo)⌉ from ⌊N·lo⌋, or every touched sector (spec vbao §3) (index: paper, touch) */
+    uint32_t weighting; /* VBAO visibility of a mask: uniform in slice angle, Blender's cosine groups, or exact cosine (spec vbao §4) (index: uniform, cosine-blender, cosine-exact) */
+    uint32_t sd_res; /* SD map resolution (divisor 1, 2, 4, 8, 16; spec svao-raysd §2, §3) (index: full, half, quarter, eighth, sixteenth) */
+    uint32_t sd_layers; /* SD layers N: 1, 2, 4 or 8 (spec svao-raysd §7) */
+    uint32_t max_count; /* Reservoir MAX_COUNT of the SD any-hit (raised to N when smaller; spec svao-raysd §7) */
+    uint32_t sd_guard; /* SD guard band in full-resolution pixels */
+} aokit_vbao_sd_settings;
+static inline aokit_vbao_sd_settings aokit_vbao_sd_defaults(void) { aokit_vbao_sd_settings s = {2u, 3u, 3u, 1u, 1.457f, 2.0f, 1.0f, 3.3f, 0u, 0.5f, 1u, 0u, 2u, 2u, 4u, 8u, 512u}; return s; }
+/* ViewParams of vbao-sd: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_vbao_sd_ViewParams(const aokit_vbao_sd_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_ViewParams *out) {
+    (void)s; (void)f; (void)pass;
+    out->res = aokit__vec2f((float)((int64_t)(f->w + 2u * f->g)), (float)((int64_t)(f->h + 2u * f->g))); /* vec2(W, H) */
+    out->tan_half_fov = aokit__vec2f((((((float)tan((double)(0.5f * f->fov_y)) * (float)((int64_t)(f->h + 2u * f->g))) / (float)((int64_t)f->h)) * (float)((int64_t)(f->w + 2u * f->g))) / (float)((int64_t)(f->h + 2u * f->g))), (((float)tan((double)(0.5f * f->fov_y)) * (float)((int64_t)(f->h + 2u * f->g))) / (float)((int64_t)f->h))); /* vec2(tan(0.5 * fov_y) * H / h * W / H, tan(0.5 * fov_y) * H / h) */
+    out->near = f->near_plane; /* near */
+    out->far = f->far_plane; /* far */
+    out->guard = (uint32_t)((int64_t)f->g); /* g */
+    out->_pad = (uint32_t)(INT64_C(0)); /* 0 */
+}
+/* Camera of vbao-sd: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_vbao_sd_Camera(const aokit_vbao_sd_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_Camera *out) {
+    (void)s; (void)f; (void)pass;
+    out->world_to_view = aokit__inverse_rigid(aokit__look_at(aokit__vec3(f->eye), aokit__vec3(f->target), aokit__vec3(f->up))); /* inverse_rigid(look_at(eye, target, up)) */
+    out->view_to_world = aokit__look_at(aokit__vec3(f->eye), aokit__vec3(f->target), aokit__vec3(f->up)); /* look_at(eye, target, up) */
+    aokit_vbao_sd_ViewParams(s, f, pass, &out->view);
+}
+/* GtaoParams of vbao-sd: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_vbao_sd_GtaoParams(const aokit_vbao_sd_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_GtaoParams *out) {
+    (void)s; (void)f; (void)pass;
+    aokit_vbao_sd_ViewParams(s, f, pass, &out->view);
+    out->radius = f->radius; /* radius */
+    out->radius_multiplier = s->radius_multiplier; /* `radius-multiplier` */
+    out->falloff_range = 0.615f; /* 0.615 */
+    out->sample_distribution_power = s->sample_power; /* `sample-power` */
+    out->thin_occluder_compensation = 0.0f; /* 0.0 */
+    out->final_value_power = s->final_power; /* `final-power` */
+    out->depth_mip_sampling_offset = s->mip_offset; /* `mip-offset` */
+    out->slices = (uint32_t)((int64_t)s->slices); /* `slices` */
+    out->steps = (uint32_t)((int64_t)s->steps); /* `steps` */
+    out->denoise_passes = (uint32_t)((int64_t)s->denoise); /* `denoise` */
+    out->noise_frame = (uint32_t)((int64_t)f->frame); /* frame */
+    out->pass = (uint32_t)((int64_t)pass); /* pass */
+    out->bent_normals = (uint32_t)(INT64_C(0)); /* 0 */
+    out->_pad = (uint32_t)(INT64_C(0)); /* 0 */
+}
+/* VaoParams of vbao-sd: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_vbao_sd_VaoParams(const aokit_vbao_sd_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_VaoParams *out) {
+    (void)s; (void)f; (void)pass;
+    aokit_vbao_sd_ViewParams(s, f, pass, &out->view);
+    out->radius = f->radius; /* radius */
+    out->exponent = f->exponent; /* exponent */
+    out->thickness = f->thickness; /* thickness */
+    out->max_screen_radius = (float)(INT64_C(512)); /* 512 */
+}
+/* SvaoParams of vbao-sd: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_vbao_sd_SvaoParams(const aokit_vbao_sd_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_SvaoParams *out) {
+    (void)s; (void)f; (void)pass;
+    aokit_vbao_sd_VaoParams(s, f, pass, &out->vao);
+    out->secondary = (uint32_t)(INT64_C(1)); /* 1 */
+    out->interval = (uint32_t)(INT64_C(1)); /* 1 */
+    out->cutoff = 6.0f; /* 6.0 */
+    out->sd_guard = (uint32_t)(aokit__div_floor((int64_t)s->sd_guard, ((int64_t)s->sd_res == 0 ? INT64_C(1) : ((int64_t)s->sd_res == 1 ? INT64_C(2) : ((int64_t)s->sd_res == 2 ? INT64_C(4) : ((int64_t)s->sd_res == 3 ? INT64_C(8) : INT64_C(16))))))); /* div_floor(`sd-guard`, pick(index(`sd-res`), 1, 2, 4, 8, 16)) */
+    out->sd_low_res = aokit__uvec2(aokit__div_ceil((int64_t)(f->w + 2u * f->g), ((int64_t)s->sd_res == 0 ? INT64_C(1) : ((int64_t)s->sd_res == 1 ? INT64_C(2) : ((int64_t)s->sd_res == 2 ? INT64_C(4) : ((int64_t)s->sd_res == 3 ? INT64_C(8) : INT64_C(16)))))), aokit__div_ceil((int64_t)(f->h + 2u * f->g), ((int64_t)s->sd_res == 0 ? INT64_C(1) : ((int64_t)s->sd_res == 1 ? INT64_C(2) : ((int64_t)s->sd_res == 2 ? INT64_C(4) : ((int64_t)s->sd_res == 3 ? INT64_C(8) : INT64_C(16))))))); /* uvec2(div_ceil(W, pick(index(`sd-res`), 1, 2, 4, 8, 16)), div_ceil(H, pick(index(`sd-res`), 1, 2, 4, 8, 16))) */
+    out->sd_layers = (uint32_t)((int64_t)s->sd_layers); /* `sd-layers` */
+    out->max_count = (uint32_t)(aokit__imax((int64_t)s->max_count, (int64_t)s->sd_layers)); /* max(`max-count`, `sd-layers`) */
+    out->jitter = (uint32_t)(INT64_C(1)); /* 1 */
+    out->dual = (uint32_t)(INT64_C(0)); /* 0 */
+    out->kernel = (uint32_t)(INT64_C(0)); /* 0 */
+    out->sample_set = (uint32_t)(INT64_C(0)); /* 0 */
+    out->noise_frame = (uint32_t)((int64_t)f->frame); /* frame */
+    out->_pad0 = (uint32_t)(INT64_C(0)); /* 0 */
+    out->_pad1 = (uint32_t)(INT64_C(0)); /* 0 */
+    out->_pad2 = (uint32_t)(INT64_C(0)); /* 0 */
+}
+/* SvaoFrame of vbao-sd: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_vbao_sd_SvaoFrame(const aokit_vbao_sd_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_SvaoFrame *out) {
+    (void)s; (void)f; (void)pass;
+    aokit_vbao_sd_Camera(s, f, pass, &out->camera);
+    aokit_vbao_sd_SvaoParams(s, f, pass, &out->params);
+}
+/* VbaoParams of vbao-sd: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_vbao_sd_VbaoParams(const aokit_vbao_sd_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_VbaoParams *out) {
+    (void)s; (void)f; (void)pass;
+    out->thickness = (s->thickness * f->radius); /* `thickness` * radius */
+    out->gate_radius = ((int64_t)s->gate == 0 ? 0.0f : ((int64_t)s->gate == 1 ? (f->radius * s->radius_multiplier) : f->radius)); /* pick(index(`gate`), 0.0, radius * `radius-multiplier`, radius) */
+    out->weighting = (uint32_t)((int64_t)s->weighting); /* index(`weighting`) */
+    out->sector_rule = (uint32_t)((int64_t)s->sectors); /* index(`sectors`) */
+    aokit_vbao_sd_GtaoParams(s, f, pass, &out->gtao);
+}
+
 /* raymarch: Poisson-disk ray-marched SSAO, optionally denoised (spec gtao-raymarch-hybrid §3) */
 #define AOKIT_RAYMARCH_CONTRIBUTION_LINEAR 0u
 #define AOKIT_RAYMARCH_CONTRIBUTION_BINARY 1u

@@ -67,14 +67,14 @@ var<storage> depth: type_7;
 var<storage> normals: type_10;
 @group(0) @binding(3) 
 var<storage, read_write> ao: type_7;
-@group(0) @binding(6) 
-var<uniform> params: type_21;
-@group(0) @binding(2) 
-var<storage> kernel: type_24;
 @group(0) @binding(4) 
 var<storage, read_write> terms: type_10;
 @group(0) @binding(5) 
 var<storage, read_write> edges: type_10;
+@group(0) @binding(6) 
+var<uniform> params: type_21;
+@group(0) @binding(2) 
+var<storage> kernel: type_24;
 
 fn function_() {
     var phi_734_: vec3<f32>;

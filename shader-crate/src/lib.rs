@@ -50,3 +50,4 @@ pub mod techniques;
 pub mod temporal;
 pub mod vao;
 pub mod vbao;
+pub mod vbaosd;

@@ -14,6 +14,7 @@ pub static TECHNIQUES: &[&dyn Registered] = &[
     &crate::svao::settings::RAYSVAO,
     &crate::gtao::settings::GTAO,
     &crate::vbao::settings::VBAO,
+    &crate::vbaosd::settings::VBAO_SD,
     &crate::raymarch::settings::RAYMARCH,
     &crate::hybrid::settings::HYBRID,
     &crate::groundtruth::settings::GROUNDTRUTH,

@@ -10,6 +10,9 @@ pub trait AtomicU32Buffer {
     fn atomic_max(&mut self, i: usize, v: u32) -> u32;
     /// `slot[i] = slot[i] + v` (wrapping); returns the previous value.
     fn atomic_add(&mut self, i: usize, v: u32) -> u32;
+    /// A plain (possibly stale) read of `slot[i]`: lets a caller skip an atomic min/max the
+    /// value already satisfies (values only move one way, so a stale read only costs an atomic).
+    fn peek(&self, i: usize) -> u32;
 }
 
 /// Add `n` rays to a 64-bit ray counter held as two `u32` words (low, high): the invocation
@@ -29,6 +32,9 @@ pub fn count_rays<B: AtomicU32Buffer>(counter: &mut B, n: u32) {
 /// Device-scope atomics on a storage buffer. Natively (where the entry points also compile) the
 /// exclusive borrow makes plain min/max equivalent.
 impl AtomicU32Buffer for &mut [u32] {
+    fn peek(&self, i: usize) -> u32 {
+        self[i]
+    }
     #[cfg(not(target_arch = "spirv"))]
     fn atomic_min(&mut self, i: usize, v: u32) -> u32 {
         let old = self[i];
@@ -72,6 +78,9 @@ impl AtomicU32Buffer for &mut [u32] {
 
 #[cfg(not(target_arch = "spirv"))]
 impl AtomicU32Buffer for &[core::sync::atomic::AtomicU32] {
+    fn peek(&self, i: usize) -> u32 {
+        self[i].load(core::sync::atomic::Ordering::Relaxed)
+    }
     fn atomic_min(&mut self, i: usize, v: u32) -> u32 {
         self[i].fetch_min(v, core::sync::atomic::Ordering::Relaxed)
     }

@@ -354,7 +354,7 @@ impl GtaoSettings {
         let main = |r: MainPassResources| {
             let bindings =
                 super::gtao_main::Bindings { mips: r.mips, normals: r.normals, terms: r.terms, edges: r.edges };
-            Pass::compute("gtao_main", bindings, Extent::Full, bytemuck::bytes_of(&params))
+            (Vec::new(), vec![Pass::compute("gtao_main", bindings, Extent::Full, bytemuck::bytes_of(&params))])
         };
         xegtao_graph(frame, &params, self.normals_from_depth, main)
     }
@@ -377,12 +377,13 @@ const EDGES: &str = "gtao_edges";
 /// XeGTAO's passes around a main pass (spec gtao-raymarch-hybrid §2.3–§2.7): PrefilterDepths
 /// in two passes (MIPs 0–1, MIPs 2–4) → [normals from depth] → `main` (the main pass over [`MainPassResources`]) →
 /// the denoiser. XeGTAO's own main pass and VBAO's bitmask main pass (spec vbao §1) plug in
-/// here.
+/// here; `main` gives the passes that fill the terms and edges and any resources of their own
+/// (vbao-sd's request pass, SD map and main pass, spec vbao §8).
 pub fn xegtao_graph(
     frame: &FrameDesc,
     params: &GtaoParams,
     normals_from_depth: bool,
-    main: impl FnOnce(MainPassResources) -> Pass,
+    main: impl FnOnce(MainPassResources) -> (Vec<Resource>, Vec<Pass>),
 ) -> Graph {
     let params = *params;
     let mips = Resource {
@@ -414,7 +415,9 @@ pub fn xegtao_graph(
     } else {
         inputs::VIEW_NORMALS
     };
-    passes.push(main(MainPassResources { mips: MIPS, normals, terms: TERMS, edges: EDGES }));
+    let (r, p) = main(MainPassResources { mips: MIPS, normals, terms: TERMS, edges: EDGES });
+    resources.extend(r);
+    passes.extend(p);
     let (r, p) = denoise_passes(&params, TERMS, EDGES, "ao_final", "gtao_denoise");
     resources.extend(r);
     passes.extend(p);

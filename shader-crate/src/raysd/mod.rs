@@ -184,6 +184,13 @@ fn low_res_texel(q: UVec2, params: &SvaoParams) -> IVec2 {
     q.as_ivec2() - IVec2::splat(params.sd_guard as i32)
 }
 
+/// The jittered low-res position `(q' + J(q))/L` SD texel `q`'s ray passes through, as a uv of
+/// the full target (spec svao-raysd §7.1, §7.2); where pass 2 reconstructs the texel's layers.
+#[inline]
+pub fn texel_ray_uv(q: UVec2, params: &SvaoParams) -> Vec2 {
+    (low_res_texel(q, params).as_vec2() + sd_jitter(q, params.jitter, params.noise_frame)) / params.sd_low_res.as_vec2()
+}
+
 /// The ray of SD texel `q` (spec svao-raysd §7.1): from the camera through the jittered low-res position
 /// `(q' + J(q))/L`; `tMin = d_p/cos θ + 0.1·near` behind the (bilinear, un-jittered) primary
 /// depth, `tMax = far/cos θ_centre`; with the interval optimisation both are clamped to the
@@ -195,7 +202,7 @@ pub fn sd_ray<G: GBuffer>(gbuffer: &G, frame: &SvaoFrame, q: UVec2, ray_min: u32
     let view = &params.vao.view;
     let low = params.sd_low_res.as_vec2();
     let qp = low_res_texel(q, params);
-    let p = (qp.as_vec2() + sd_jitter(q, params.jitter, params.noise_frame)) / low;
+    let p = texel_ray_uv(q, params);
     let direction = camera.primary_ray_direction(p);
     let cos_theta = -camera.world_to_view.transform_vector3(direction).z;
     let centre = (qp.as_vec2() + 0.5) / low;
@@ -229,8 +236,7 @@ impl Refine for SdMapRefine<'_> {
         let params = self.params;
         let view = &params.vao.view;
         let q = sd_pixel(s.uv, params);
-        let uv = (low_res_texel(q, params).as_vec2() + sd_jitter(q, params.jitter, params.noise_frame))
-            / params.sd_low_res.as_vec2();
+        let uv = texel_ray_uv(q, params);
         let base = params.sd_index(q) * params.sd_layers as usize;
         let mut v = v;
         let mut k = 0;

@@ -77,13 +77,74 @@ pub fn sd_low_res(full: UVec2, divisor: u32) -> UVec2 {
     uvec2(full.x.div_ceil(divisor), full.y.div_ceil(divisor))
 }
 
+/// A settings struct holding an SD map's settings (the stenciled family's own, and `vbao-sd`'s):
+/// the SD map's rows are written once, in [`sd_rows`], generic over it.
+pub trait SdMapBased: Sized + 'static {
+    fn sd(&mut self) -> &mut SvaoSettings;
+    fn sd_ref(&self) -> &SvaoSettings;
+}
+
+impl SdMapBased for SvaoSettings {
+    fn sd(&mut self) -> &mut SvaoSettings {
+        self
+    }
+    fn sd_ref(&self) -> &SvaoSettings {
+        self
+    }
+}
+
+/// The SD map's settings rows (spec svao-raysd §2, §3, §7), generic over where the settings live;
+/// the flag is the caller's (flags are shared only within one settings type).
+pub mod sd_rows {
+    use super::{SD_RES_NAMES, SdMapBased, sd_res_index};
+    use crate::technique::Setting;
+
+    fn get_res<S: SdMapBased>(s: &S) -> usize {
+        sd_res_index(s.sd_ref().divisor)
+    }
+    fn set_res<S: SdMapBased>(s: &mut S, i: usize) {
+        s.sd().divisor = 1 << i;
+    }
+    fn layers_of<S: SdMapBased>(s: &mut S) -> &mut u32 {
+        &mut s.sd().layers
+    }
+    fn max_count_of<S: SdMapBased>(s: &mut S) -> &mut u32 {
+        &mut s.sd().max_count
+    }
+    fn guard_of<S: SdMapBased>(s: &mut S) -> &mut u32 {
+        &mut s.sd().guard
+    }
+
+    pub const fn sd_res<S: SdMapBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::choice("sd-res", &SD_RES_NAMES, get_res::<S>, set_res::<S>)
+            .flag(flag)
+            .help("SD map resolution (divisor 1, 2, 4, 8, 16; spec svao-raysd §2, §3)")
+    }
+
+    pub const fn sd_layers<S: SdMapBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::count("sd-layers", 1, 8, layers_of::<S>)
+            .flag(flag)
+            .help("SD layers N: 1, 2, 4 or 8 (spec svao-raysd §7)")
+    }
+
+    pub const fn max_count<S: SdMapBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::count("max-count", 1, 1024, max_count_of::<S>)
+            .flag(flag)
+            .help("Reservoir MAX_COUNT of the SD any-hit (raised to N when smaller; spec svao-raysd §7)")
+    }
+
+    pub const fn sd_guard<S: SdMapBased>(flag: &'static str) -> Setting<S> {
+        Setting::<S>::count("sd-guard", 0, 4096, guard_of::<S>)
+            .flag(flag)
+            .help("SD guard band in full-resolution pixels")
+    }
+}
+
 impl Settings for SvaoSettings {
     const ROWS: &'static [Setting<Self>] = &[
-        Setting::<Self>::choice("sd-res", &SD_RES_NAMES, |s| sd_res_index(s.divisor), |s, i| s.divisor = 1 << i)
-            .help("SD map resolution (divisor 1, 2, 4, 8, 16; spec svao-raysd §2, §3)"),
-        Setting::<Self>::count("sd-layers", 1, 8, |s| &mut s.layers).help("SD layers N: 1, 2, 4 or 8 (spec svao-raysd §7)"),
-        Setting::<Self>::count("max-count", 1, 1024, |s| &mut s.max_count)
-            .help("Reservoir MAX_COUNT of the SD any-hit (raised to N when smaller; spec svao-raysd §7)"),
+        sd_rows::sd_res::<Self>("sd-res"),
+        sd_rows::sd_layers::<Self>("sd-layers"),
+        sd_rows::max_count::<Self>("max-count"),
         Setting::<Self>::number("cutoff", 0.0, f32::MAX, |s| &mut s.cutoff)
             .help("Radius cutoff in pixels: closer samples are never refined (spec svao-raysd §4.4)"),
         Setting::<Self>::switch("interval", &["off", "on"], |s| &mut s.interval)
@@ -94,7 +155,7 @@ impl Settings for SvaoSettings {
         })
         .and_switch("no-jitter", "none")
         .help("SD jitter table (spec svao-raysd §7.2); --no-jitter traces through texel centres"),
-        Setting::<Self>::count("sd-guard", 0, 4096, |s| &mut s.guard).help("SD guard band in full-resolution pixels"),
+        sd_rows::sd_guard::<Self>("sd-guard"),
         Setting::<Self>::switch("primary", &["single", "dual"], |s| &mut s.dual)
             .help("Primary depth: the depth buffer, or dual depth with a depth-peeled second layer (spec svao-raysd §11)"),
         Setting::<Self>::number("peel-separation", 0.0, f32::MAX, |s| &mut s.peel_separation)

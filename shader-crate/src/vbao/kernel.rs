@@ -81,6 +81,23 @@ pub fn sector_coordinate<L: Lanes>(theta: L, gamma: L) -> L {
 /// For a sample on the nominal slice both are the same.
 #[inline]
 pub fn sample_bits<L: Lanes>(delta_f: L::V3, v: L::V3, n: L::V3, side: f32, thickness: f32, rule: u32) -> L::Index {
+    let own = own_slice::<L>(delta_f, v, n);
+    interval_bits(&own, delta_f, delta_f - v * L::splat(thickness), v, side, rule)
+}
+
+/// A depth sample's own slice (see [`sample_bits`]): the plane through v and the sample, its
+/// projected normal's signed angle γ' and the edge tolerance for that slice.
+#[derive(Copy, Clone)]
+pub struct OwnSlice<L: Lanes> {
+    gamma: L,
+    tolerance: L,
+    /// The sample lies on the view ray: it has no own slice and sets no sector.
+    degenerate: L::Mask,
+}
+
+/// The own slice of the sample `delta_f = Q − P` (spec vbao §2.3, see [`sample_bits`]).
+#[inline]
+pub fn own_slice<L: Lanes>(delta_f: L::V3, v: L::V3, n: L::V3) -> OwnSlice<L> {
     let zero = L::splat(0.0);
     // The sample's own slice: toward the sample across v, and that slice's projected normal.
     let toward = delta_f - v * delta_f.dot(v);
@@ -94,14 +111,28 @@ pub fn sample_bits<L: Lanes>(delta_f: L::V3, v: L::V3, n: L::V3, side: f32, thic
     let gamma = L::select(toward.dot(projected).lt(zero), -angle, angle);
     // A normal off by ε turns the slice's projected normal by up to ε/L.
     let tolerance = (inv_len * EDGE_TOLERANCE).min(L::splat(MAX_EDGE_TOLERANCE));
-    let delta_b = delta_f - v * L::splat(thickness);
-    let x_f = sector_coordinate(angle_to::<L>(delta_f, v) + tolerance, gamma);
-    let x_b = sector_coordinate(angle_to::<L>(delta_b, v) + tolerance, gamma);
+    // No own slice for a sample on the view ray (|toward|² = 0).
+    OwnSlice { gamma, tolerance, degenerate: toward.dot(toward).le(zero) }
+}
+
+/// The mask bits of the occupied segment from `delta_a` to `delta_b` (both relative to P, both
+/// in the sample's own slice `own`) on the slice side with sign `side` (spec vbao §2.2–§3): the
+/// two angles mapped to the half-circle and ordered into `[lo, hi]`.
+#[inline]
+pub fn interval_bits<L: Lanes>(
+    own: &OwnSlice<L>,
+    delta_a: L::V3,
+    delta_b: L::V3,
+    v: L::V3,
+    side: f32,
+    rule: u32,
+) -> L::Index {
+    let x_f = sector_coordinate(angle_to::<L>(delta_a, v) + own.tolerance, own.gamma);
+    let x_b = sector_coordinate(angle_to::<L>(delta_b, v) + own.tolerance, own.gamma);
     // In the own slice the sample's side is side 0; on the nominal side 1 that is mirrored.
     let (x_f, x_b) = if side > 0.0 { (x_f, x_b) } else { (-x_f + 1.0, -x_b + 1.0) };
     let bits = sector_bits_lanes(x_f.min(x_b), x_f.max(x_b), rule);
-    // No own slice for a sample on the view ray (|toward|² = 0).
-    L::index_select(toward.dot(toward).le(zero), L::index_splat(0), bits)
+    L::index_select(own.degenerate, L::index_splat(0), bits)
 }
 
 /// The angle between `delta` and the unit vector `v` ([`precise_acos`]).
@@ -161,17 +192,41 @@ fn set_sectors<L: Lanes>(mask: L::Index, group: u32) -> L {
     L::from_lanes(move |k| u32_to_f32((L::index_lane(mask, k) & group).count_ones()))
 }
 
+/// Where the occupied segments behind a depth sample come from: `vbao`'s constant thickness
+/// ([`ConstantThickness`]) or `vbao-sd`'s stochastic-depth layers (`crate::vbaosd`).
+pub trait Occupancy<L: Lanes> {
+    /// The mask bits of sample `delta = Q − P` on the slice side with sign `side`.
+    fn bits(&mut self, params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>, side: f32) -> L::Index;
+}
+
+/// Every sample is a slab of the constant thickness T behind it (spec vbao §2.2), gated by R_g.
+pub struct ConstantThickness;
+
+impl<L: Lanes> Occupancy<L> for ConstantThickness {
+    #[inline]
+    fn bits(&mut self, params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>, side: f32) -> L::Index {
+        gated_bits(params, delta, px, side)
+    }
+}
+
 /// One slice's mask: both sides' samples OR-ed into it (spec vbao §2–§3).
 #[inline]
-fn slice_mask<L: Lanes>(params: &VbaoParams, mips: &[f32], px: &PixelSetup<L>, sl: &SliceFrame<L>, s: u32) -> L::Index {
+fn slice_mask<L: Lanes, O: Occupancy<L>>(
+    params: &VbaoParams,
+    mips: &[f32],
+    px: &PixelSetup<L>,
+    sl: &SliceFrame<L>,
+    s: u32,
+    occupancy: &mut O,
+) -> L::Index {
     let g = &params.gtao;
     let steps = g.steps.max(1);
     let mut mask = L::index_splat(0);
     let mut k = 0;
     while k < steps {
         let (q0, q1) = sample_pair(g, mips, px, sl, s, k);
-        mask = mask | gated_bits(params, q0 - px.pos, px, 1.0);
-        mask = mask | gated_bits(params, q1 - px.pos, px, -1.0);
+        mask = mask | occupancy.bits(params, q0 - px.pos, px, 1.0);
+        mask = mask | occupancy.bits(params, q1 - px.pos, px, -1.0);
         k += 1;
     }
     mask
@@ -180,7 +235,7 @@ fn slice_mask<L: Lanes>(params: &VbaoParams, mips: &[f32], px: &PixelSetup<L>, s
 /// [`sample_bits`] unless the sample lies beyond the gate radius R_g (spec vbao §2.1; no
 /// falloff).
 #[inline]
-fn gated_bits<L: Lanes>(params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>, side: f32) -> L::Index {
+pub fn gated_bits<L: Lanes>(params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>, side: f32) -> L::Index {
     // |Δ| > R_g as |Δ|² > R_g²: no square root.
     let gate = params.gate_radius;
     let beyond = if gate > 0.0 { delta.dot(delta).gt(L::splat(gate * gate)) } else { L::mask_splat(false) };
@@ -213,6 +268,17 @@ pub fn vbao_term(valid: bool, final_vis: f32) -> u32 {
 /// vbao §2–§4), of one pixel or of `L::LANES` pixels.
 #[inline]
 pub fn vbao_visibility<L: Lanes>(params: &VbaoParams, mips: &[f32], px: &PixelSetup<L>) -> L {
+    visibility_with(params, mips, px, &mut ConstantThickness)
+}
+
+/// [`vbao_visibility`] with the samples' occupied segments from `occupancy`.
+#[inline]
+pub fn visibility_with<L: Lanes, O: Occupancy<L>>(
+    params: &VbaoParams,
+    mips: &[f32],
+    px: &PixelSetup<L>,
+    occupancy: &mut O,
+) -> L {
     let g = &params.gtao;
     let zero = L::splat(0.0);
     let slices = g.slices.max(1);
@@ -223,7 +289,7 @@ pub fn vbao_visibility<L: Lanes>(params: &VbaoParams, mips: &[f32], px: &PixelSe
         // γ with the precise acos: the fast one errs up to 0.055 rad (0.56 sector), which sets
         // sectors on a plane (spec vbao §2.3, artefact 1 of vbao §5).
         sl.gamma = sl.sign * precise_acos(sl.cos_n);
-        let mask = slice_mask(params, mips, px, &sl, s);
+        let mask = slice_mask(params, mips, px, &sl, s, occupancy);
         if params.weighting == WEIGHT_COSINE_EXACT {
             sum = sum + projected_length_fudge(sl.len) * free_cosine_weight(mask, sl.gamma, sl.cos_n);
             weights = weights + 1.0;

@@ -49,6 +49,20 @@ pub struct VbaoParams {
     pub gtao: GtaoParams,
 }
 
+impl VbaoParams {
+    /// These constants with the specialization constants in place of the push constants when
+    /// `specialized` is 1 (XeGTAO's fixed part, the weighting and the sector rule).
+    #[inline]
+    pub fn with_fixed(&self, specialized: u32, fixed: GtaoFixed, weighting: u32, sector_rule: u32) -> VbaoParams {
+        VbaoParams {
+            gtao: self.gtao.with_fixed(specialized, fixed),
+            weighting: if specialized == 0 { self.weighting } else { weighting },
+            sector_rule: if specialized == 0 { self.sector_rule } else { sector_rule },
+            ..*self
+        }
+    }
+}
+
 /// VBAO's main pass, one invocation per pixel of the full target; the bindings are XeGTAO's
 /// main pass's (spec vbao §1).
 #[crate::kernel]
@@ -85,12 +99,7 @@ pub fn vbao_main(
         radius_multiplier,
         depth_mip_sampling_offset,
     };
-    let params = &VbaoParams {
-        gtao: params.gtao.with_fixed(specialized, fixed),
-        weighting: if specialized == 0 { params.weighting } else { weighting },
-        sector_rule: if specialized == 0 { params.sector_rule } else { sector_rule },
-        ..*params
-    };
+    let params = &params.with_fixed(specialized, fixed, weighting, sector_rule);
     let size = params.gtao.view.size();
     let p = id.truncate();
     if p.x >= size.x || p.y >= size.y {

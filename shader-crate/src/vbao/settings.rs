@@ -4,6 +4,8 @@
 use super::{RULE_PAPER, RULE_TOUCH, VbaoParams, WEIGHT_COSINE_BLENDER, WEIGHT_COSINE_EXACT, WEIGHT_UNIFORM};
 use crate::graph::{Extent, FrameDesc, Graph, Pass};
 use crate::gtao::settings::{GtaoSettings, MainPassResources, XeGtaoBased, rows, xegtao_graph};
+use crate::svao::Secondary;
+use crate::svao::settings::{SdMapBased, SvaoSettings, sd_rows};
 use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
 /// Where samples stop counting (spec vbao §2.1).
@@ -32,6 +34,9 @@ pub struct VbaoSettings {
     pub touch: bool,
     /// `WEIGHT_UNIFORM`, `WEIGHT_COSINE_BLENDER` or `WEIGHT_COSINE_EXACT` (spec vbao §4).
     pub weighting: u32,
+    /// The SD map `vbao-sd` traces (spec vbao §8; its `sd-res`, `sd-layers`, `max-count` and
+    /// `sd-guard` rows, the rest at Ray-SD's defaults); unread by `vbao`.
+    pub sd: SvaoSettings,
 }
 
 impl Default for VbaoSettings {
@@ -42,7 +47,17 @@ impl Default for VbaoSettings {
             gate: Gate::Effective,
             touch: false,
             weighting: WEIGHT_UNIFORM,
+            sd: SvaoSettings { refinement: Secondary::StochasticDepth, ..SvaoSettings::default() },
         }
+    }
+}
+
+impl SdMapBased for VbaoSettings {
+    fn sd(&mut self) -> &mut SvaoSettings {
+        &mut self.sd
+    }
+    fn sd_ref(&self) -> &SvaoSettings {
+        &self.sd
     }
 }
 
@@ -83,7 +98,15 @@ impl Settings for VbaoSettings {
         Setting::<Self>::choice("weighting", &WEIGHTINGS, |s| s.weighting as usize, |s, i| s.weighting = i as u32)
             .flag("vbao-weighting")
             .help("VBAO visibility of a mask: uniform in slice angle, Blender's cosine groups, or exact cosine (spec vbao §4)"),
+        sd_rows::sd_res::<Self>("vbao-sd-res"),
+        sd_rows::sd_layers::<Self>("vbao-sd-layers"),
+        sd_rows::max_count::<Self>("vbao-max-count"),
+        sd_rows::sd_guard::<Self>("vbao-sd-guard"),
     ];
+
+    fn check(&self) -> Result<(), String> {
+        self.sd.check()
+    }
 }
 
 /// VBAO (spec vbao).
@@ -169,7 +192,7 @@ impl VbaoSettings {
         let main = |r: MainPassResources| {
             let bindings =
                 super::vbao_main::Bindings { mips: r.mips, normals: r.normals, terms: r.terms, edges: r.edges };
-            Pass::compute("vbao_main", bindings, Extent::Full, bytemuck::bytes_of(&params))
+            (Vec::new(), vec![Pass::compute("vbao_main", bindings, Extent::Full, bytemuck::bytes_of(&params))])
         };
         xegtao_graph(frame, &params.gtao, self.xegtao.normals_from_depth, main)
     }
