@@ -135,7 +135,7 @@ pub enum CpuDriver {
 /// candidate to the same any-hit decision.
 static RUNNERS: &[(&Kernel, Runner)] = {
     use aokit_shaders::{
-        blur, groundtruth, gtao, hybrid, rastersd, raymarch, raysd, raysvao, svao, temporal, vao, vbao,
+        blur, groundtruth, gtao, hybrid, rastersd, raymarch, raysd, raysvao, svao, temporal, vao, vbao, vbaosd,
     };
     &[
         (&vao::vao_main::ENTRY, runners::vao),
@@ -152,6 +152,8 @@ static RUNNERS: &[(&Kernel, Runner)] = {
         (&gtao::gtao_main::ENTRY, runners::gtao_main),
         (&gtao::gtao_denoise::ENTRY, runners::gtao_denoise),
         (&vbao::vbao_main::ENTRY, runners::vbao_main),
+        (&vbaosd::vbao_sd_request::ENTRY, runners::vbao_sd_request),
+        (&vbaosd::vbao_sd_main::ENTRY, runners::vbao_sd_main),
         (&raymarch::raymarch_main::ENTRY, runners::raymarch),
         (&groundtruth::rt::groundtruth_rgen::ENTRY, runners::ground_truth),
         (&groundtruth::rq::groundtruth_rq::ENTRY, runners::ground_truth),
@@ -322,7 +324,7 @@ mod runners {
     use super::*;
     use aokit_shaders::gtao::normal_from_depth;
     use aokit_shaders::{
-        blur, groundtruth, gtao, hybrid, rastersd, raymarch, raysd, raysvao, svao, temporal, vao, vbao,
+        blur, groundtruth, gtao, hybrid, rastersd, raymarch, raysd, raysvao, svao, temporal, vao, vbao, vbaosd,
     };
 
     pub fn vao(io: &mut PassIo) {
@@ -438,6 +440,30 @@ mod runners {
         let params: vbao::VbaoParams = io.push();
         let (terms, edges) = (io.write(TERMS), io.write(EDGES));
         crate::gtao::run_vbao_into(&params, io.read(MIPS), io.read(NORMALS), terms, edges);
+    }
+
+    pub fn vbao_sd_request(io: &mut PassIo) {
+        use vbaosd::vbao_sd_request::*;
+        let params: vbao::VbaoParams = io.push();
+        let frame = io.record(FRAME);
+        let (ray_min, ray_max) = (io.write(RAY_MIN), io.write(RAY_MAX));
+        crate::gtao::run_vbao_sd_request_into(
+            &params,
+            &frame.params,
+            io.read(MIPS),
+            io.read(NORMALS),
+            ray_min,
+            ray_max,
+        );
+    }
+
+    pub fn vbao_sd_main(io: &mut PassIo) {
+        use vbaosd::vbao_sd_main::*;
+        let params: vbao::VbaoParams = io.push();
+        let frame = io.record(FRAME);
+        let (terms, edges) = (io.write(TERMS), io.write(EDGES));
+        let (map, mips, normals) = (io.read(SD_MAP), io.read(MIPS), io.read(NORMALS));
+        crate::gtao::run_vbao_sd_into(&params, &frame.params, map, mips, normals, terms, edges);
     }
 
     pub fn gtao_denoise(io: &mut PassIo) {

@@ -11,8 +11,10 @@ use aokit_shaders::gtao::prefilter::{mip_falloff, mip_filter, prefilter_far, wor
 use aokit_shaders::gtao::{
     GtaoParams, MIP_LEVELS, denoise_pixel, mip_offset, mip_size, normal_from_depth, prefilter_texel,
 };
+use aokit_shaders::svao::SvaoParams;
 use aokit_shaders::vbao::VbaoParams;
 use aokit_shaders::vbao::kernel::{vbao_term, vbao_visibility};
+use aokit_shaders::vbaosd::{request_pixel, vbao_sd_pixel};
 use core::sync::atomic::AtomicU32;
 use rayon::prelude::*;
 
@@ -155,6 +157,53 @@ pub fn run_vbao_into(params: &VbaoParams, mips: &[f32], normals: &[u32], terms: 
             *t = vbao_term(F32x8::mask_lane(valid, i), vis.lane(i));
             *e = F32x8::index_lane(packed, i);
         }
+    });
+}
+
+/// vbao-sd's phase 1 (spec vbao §8.1) over the full target, rows in parallel: every flagged
+/// sample widens its SD texel's ray interval in `ray_min` / `ray_max` (cleared by the caller) by
+/// atomic min / max, as the GPU's invocations do.
+pub fn run_vbao_sd_request_into(
+    params: &VbaoParams,
+    sd: &SvaoParams,
+    mips: &[f32],
+    normals: &[u32],
+    ray_min: &mut [u32],
+    ray_max: &mut [u32],
+) {
+    let size = params.gtao.view.size();
+    let (ray_min, ray_max) = (as_atomics(ray_min), as_atomics(ray_max));
+    (0..size.y).into_par_iter().for_each(|y| {
+        let (mut lo, mut hi) = (ray_min, ray_max);
+        for x in 0..size.x {
+            request_pixel(params, sd, mips, normals, UVec2::new(x, y), &mut lo, &mut hi);
+        }
+    });
+}
+
+/// The words of an exclusively borrowed buffer as atomics (the same size and alignment).
+fn as_atomics(words: &mut [u32]) -> &[AtomicU32] {
+    // SAFETY: `AtomicU32` has the in-memory representation of `u32`, and the exclusive borrow
+    // keeps every other access out for the returned borrow's lifetime.
+    unsafe { core::slice::from_raw_parts(words.as_mut_ptr() as *const AtomicU32, words.len()) }
+}
+
+/// vbao-sd's main pass (spec vbao §8.2) into the caller's terms and edges, one pixel per call
+/// in parallel bands (the SD layers are read per sample, per pixel).
+pub fn run_vbao_sd_into(
+    params: &VbaoParams,
+    sd: &SvaoParams,
+    map: &[f32],
+    mips: &[f32],
+    normals: &[u32],
+    terms: &mut [u32],
+    edges: &mut [u32],
+) {
+    let size = params.gtao.view.size();
+    crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 1, &crate::no_progress, |first, t, e| {
+        let out = vbao_sd_pixel(params, sd, map, mips, normals, first);
+        t[0] = out.term;
+        e[0] = out.edges;
     });
 }
 

@@ -330,13 +330,13 @@ fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
 /// the Vulkan effect's ray queries on that frame like two runs of one kernel (≥ 99.9 % within
 /// 1/255, MSE ≤ 1e-6: the same SPIR-V on the same driver, over a TLAS of the same triangles),
 /// and the ground truth with cpu-sim (`check_agreement`). Every ray-traced technique runs: raysd,
-/// the ground truth, hbao-sd, hybrid and raysvao. A device without ray queries refuses them on
+/// the ground truth, hbao-sd, hybrid, raysvao and vbao-sd. A device without ray queries refuses them on
 /// one line.
 #[test]
 fn wgpu_ray_queries_agree_with_the_vulkan_effect_and_cpu_sim() {
     // The first two also against cpu-sim (on the Vulkan side, `check_frame`; the ground truth
     // here too); the others against the Vulkan effect only.
-    let specs = ["raysd", "groundtruth:spp=16", "hbao-sd", "hybrid", "raysvao"];
+    let specs = ["raysd", "groundtruth:spp=16", "hbao-sd", "hybrid", "raysvao", "vbao-sd"];
     let Some(mut on_vulkan) = ray_traced_frames(RayTracing::QueriesOnly, &specs[..2], true) else { return };
     let Some(others) = ray_traced_frames(RayTracing::QueriesOnly, &specs[2..], false) else { return };
     on_vulkan.extend(others);

@@ -127,8 +127,20 @@ pub fn interval_bits<L: Lanes>(
     side: f32,
     rule: u32,
 ) -> L::Index {
-    let x_f = sector_coordinate(angle_to::<L>(delta_a, v) + own.tolerance, own.gamma);
-    let x_b = sector_coordinate(angle_to::<L>(delta_b, v) + own.tolerance, own.gamma);
+    coordinate_bits(own, own_coordinate(own, delta_a, v), own_coordinate(own, delta_b, v), side, rule)
+}
+
+/// The half-circle coordinate of the point `delta` (relative to P) in the own slice `own`
+/// (spec vbao §2.3–§2.4, with the edge tolerance): one precise acos.
+#[inline]
+pub fn own_coordinate<L: Lanes>(own: &OwnSlice<L>, delta: L::V3, v: L::V3) -> L {
+    sector_coordinate(angle_to::<L>(delta, v) + own.tolerance, own.gamma)
+}
+
+/// The mask bits between two own-slice coordinates ([`own_coordinate`]) on the slice side with
+/// sign `side` (spec vbao §2.5, §3).
+#[inline]
+pub fn coordinate_bits<L: Lanes>(own: &OwnSlice<L>, x_f: L, x_b: L, side: f32, rule: u32) -> L::Index {
     // In the own slice the sample's side is side 0; on the nominal side 1 that is mirrored.
     let (x_f, x_b) = if side > 0.0 { (x_f, x_b) } else { (-x_f + 1.0, -x_b + 1.0) };
     let bits = sector_bits_lanes(x_f.min(x_b), x_f.max(x_b), rule);

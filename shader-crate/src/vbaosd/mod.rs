@@ -3,9 +3,9 @@
 //! read from the surface layers the SD map (`crate::raysd`) holds behind it instead of one
 //! constant thickness.
 //!
-//! Two phases, as Ray-SD (spec svao-raysd §3): [`vbao_sd_request`] flags the samples whose
+//! Two phases, as Ray-SD (spec svao-raysd §3): [`vbao_sd_request()`] flags the samples whose
 //! sectors depend on what lies behind them and records, per SD texel, the ray interval they
-//! need (spec svao-raysd §6); the SD map is traced only there; [`vbao_sd_main`] builds the
+//! need (spec svao-raysd §6); the SD map is traced only there; [`vbao_sd_main()`] builds the
 //! masks, reading the map for the flagged samples (spec vbao §8.2).
 
 #[allow(unused_imports)]
@@ -21,7 +21,7 @@ use crate::common::screen_space::view_pos;
 use crate::glam::{UVec2, UVec3, Vec3, vec3};
 use crate::gtao::main_pass::{PixelSetup, final_visibility, pixel_setup, sample_pair, slice_frame};
 use crate::gtao::{GtaoFixed, GtaoPixel};
-use crate::raysd::{MAX_LAYERS, texel_ray_uv};
+use crate::raysd::texel_ray_uv;
 use crate::svao::{SvaoFrame, SvaoParams, sd_pixel};
 use crate::vbao::VbaoParams;
 use crate::vbao::kernel::{
@@ -117,15 +117,36 @@ pub fn request_pixel<A: AtomicU32Buffer, B: AtomicU32Buffer>(
 
 /// The occupied segments behind a sample from the SD map (spec vbao §8.2): the layers of the
 /// sample's SD texel behind it, sorted by depth, read as exits and entries of closed surfaces —
-/// the sample's own surface ends at the first, the next two bound a hidden surface, and so on;
-/// an entry without an exit, and a sample without any layer behind it, get `vbao`'s constant
-/// thickness. Samples that are not [`flagged`] are `vbao`'s.
+/// the sample's own solid reaches the first (at least T deep), the next two bound a hidden
+/// solid, and so on; an entry without an exit, and a sample without any layer behind it, get
+/// `vbao`'s constant thickness. Samples that are not [`flagged`] are `vbao`'s.
 pub struct SdLayers<'a> {
     /// `N` normalized depths per SD texel (1 = empty), row-major over the SD size.
     pub map: &'a [f32],
     pub sd: &'a SvaoParams,
     /// The working-depth MIP chain; its MIP 0 gives the surface the texel's ray enters.
     pub mips: &'a [f32],
+}
+
+impl SdLayers<'_> {
+    /// The nearest layer of SD texel `texel` deeper than `after` (view depth), or the far plane.
+    #[inline]
+    fn next_layer(&self, texel: UVec2, after: f32) -> f32 {
+        let sd = self.sd;
+        let view = &sd.vao.view;
+        let base = sd.sd_index(texel) * sd.sd_layers as usize;
+        let mut nearest = view.far;
+        let mut k = 0;
+        while k < sd.sd_layers as usize {
+            let z = self.map[base + k];
+            let d = z * (view.far - view.near) + view.near;
+            if z < 1.0 && d > after && d < nearest {
+                nearest = d;
+            }
+            k += 1;
+        }
+        nearest
+    }
 }
 
 impl Occupancy<f32> for SdLayers<'_> {
@@ -145,42 +166,39 @@ impl Occupancy<f32> for SdLayers<'_> {
         if (entered - q.z).abs() > params.thickness {
             return gated_bits(params, delta, px, side);
         }
-        // The layers behind the sample, sorted (insertion sort of at most MAX_LAYERS depths).
-        let mut depth = [0.0f32; MAX_LAYERS];
-        let mut count = 0usize;
-        let base = sd.sd_index(texel) * sd.sd_layers as usize;
-        let mut k = 0;
-        while k < sd.sd_layers as usize {
-            let z = self.map[base + k];
-            let d = z * (view.far - view.near) + view.near;
-            if z < 1.0 && d > q.z * (1.0 + SAME_SURFACE) {
-                let mut j = count;
-                while j > 0 && depth[j - 1] > d {
-                    depth[j] = depth[j - 1];
-                    j -= 1;
-                }
-                depth[j] = d;
-                count += 1;
-            }
-            k += 1;
-        }
-        if count == 0 {
+        // The layers behind the sample in depth order, each found as the nearest layer behind
+        // the one before (N ≤ 8 reads per layer; no per-invocation array to index).
+        let behind = q.z * (1.0 + SAME_SURFACE);
+        let first = self.next_layer(texel, behind);
+        if first >= view.far {
             return gated_bits(params, delta, px, side);
         }
         let own = own_slice::<f32>(delta, px.v, px.n);
         let rule = params.sector_rule;
         let layer = |d: f32| view_pos(view, uv, d) - px.pos;
-        // The sample's own surface, from its front to its first exit.
-        let mut bits = interval_bits(&own, delta, layer(depth[0]), px.v, side, rule);
-        // Hidden surfaces: (entry, exit) pairs, an unpaired entry as thick as T.
+        // Q's own solid reaches its first exit, but never less far than T: T also stands for
+        // the occluders the sparse samples miss (thinner measured backs raised the error on
+        // Sponza and the kitchen, spec vbao §8.3).
+        let slab = delta - px.v * params.thickness;
+        let exit = if first > q.z + params.thickness { layer(first) } else { slab };
+        let mut bits = interval_bits(&own, delta, exit, px.v, side, rule);
+        // Hidden solids: (entry, exit) pairs of the following layers, an entry without its exit
+        // as thick as T.
         let gate = params.gate_radius;
+        let mut after = first;
         let mut k = 1;
-        while k < count {
-            let entry = layer(depth[k]);
-            let exit = if k + 1 < count { layer(depth[k + 1]) } else { entry - px.v * params.thickness };
+        while k < sd.sd_layers {
+            let entry_depth = self.next_layer(texel, after);
+            if entry_depth >= view.far {
+                break;
+            }
+            let exit_depth = self.next_layer(texel, entry_depth);
+            let entry = layer(entry_depth);
+            let exit = if exit_depth < view.far { layer(exit_depth) } else { entry - px.v * params.thickness };
             if gate <= 0.0 || entry.dot(entry) <= gate * gate {
                 bits |= interval_bits(&own, entry, exit, px.v, side, rule);
             }
+            after = exit_depth;
             k += 2;
         }
         bits

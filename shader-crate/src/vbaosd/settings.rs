@@ -48,7 +48,7 @@ fn defaults() -> VbaoSettings {
     VbaoSettings { weighting: crate::vbao::WEIGHT_COSINE_EXACT, ..VbaoSettings::default() }
 }
 
-/// XeGTAO's prefilter → [normals] → `vbao_sd_request` → `sd_map` (Ray-SD's trace over the
+/// XeGTAO's prefilter → (normals) → `vbao_sd_request` → `sd_map` (Ray-SD's trace over the
 /// requested intervals) → `vbao_sd_main` → XeGTAO's denoiser (spec vbao §8).
 pub fn graph(s: &VbaoSettings, frame: &FrameDesc) -> Graph {
     let params = s.params(frame);
