@@ -138,2279 +138,2741 @@ fn function_() {
     var local_6: array<array<f32, 2>, 16>;
     var local_7: array<array<f32, 2>, 16>;
     var local_8: array<array<f32, 2>, 16>;
-    var phi_334_: type_26;
-    var phi_341_: u32;
-    var phi_348_: u32;
-    var phi_6952_: bool;
-    var phi_1006_: u32;
-    var phi_1009_: f32;
-    var phi_1011_: f32;
-    var phi_6943_: bool;
-    var phi_1197_: u32;
-    var phi_1200_: u32;
-    var phi_1257_: f32;
-    var phi_1258_: f32;
-    var phi_1539_: bool;
-    var phi_1555_: bool;
-    var phi_3633_: bool;
-    var phi_3949_: f32;
-    var phi_3999_: u32;
-    var phi_4002_: u32;
-    var phi_4003_: u32;
-    var phi_4004_: bool;
-    var phi_4017_: u32;
-    var phi_1714_: vec2<f32>;
-    var phi_1715_: vec2<f32>;
-    var phi_2255_: u32;
-    var phi_2258_: f32;
-    var phi_2300_: f32;
-    var phi_2301_: f32;
-    var phi_2256_: u32;
-    var phi_2259_: f32;
-    var phi_6894_: bool;
-    var local_9: f32;
-    var local_10: f32;
-    var local_11: f32;
-    var local_12: f32;
-    var local_13: f32;
-    var phi_2866_: vec3<f32>;
-    var phi_3053_: f32;
-    var phi_3103_: u32;
-    var phi_3106_: u32;
-    var phi_3107_: u32;
-    var phi_3108_: bool;
-    var phi_7021_: bool;
-    var phi_3118_: f32;
-    var phi_3121_: u32;
-    var phi_3123_: u32;
-    var phi_3153_: u32;
-    var phi_3156_: f32;
-    var phi_3198_: f32;
-    var phi_3199_: f32;
-    var phi_3154_: u32;
-    var phi_3157_: f32;
-    var phi_7015_: bool;
-    var local_14: f32;
-    var phi_3227_: u32;
-    var phi_3230_: f32;
-    var local_15: f32;
-    var phi_3272_: f32;
-    var phi_3273_: f32;
-    var phi_3228_: u32;
-    var phi_3231_: f32;
-    var phi_7054_: bool;
-    var local_16: f32;
-    var local_17: f32;
-    var local_18: f32;
-    var local_19: f32;
-    var local_20: f32;
-    var local_21: f32;
-    var local_22: f32;
-    var phi_3332_: vec3<f32>;
-    var phi_3347_: bool;
-    var phi_3537_: f32;
-    var phi_3587_: u32;
-    var phi_3590_: u32;
-    var phi_3591_: u32;
-    var phi_3592_: bool;
-    var phi_3602_: u32;
-    var phi_7062_: bool;
-    var phi_3604_: f32;
-    var phi_3605_: u32;
-    var phi_3606_: u32;
-    var phi_7061_: bool;
-    var phi_3119_: f32;
-    var phi_3122_: u32;
-    var phi_3124_: u32;
-    var phi_3608_: bool;
-    var phi_7060_: bool;
-    var phi_2320_: bool;
-    var phi_2636_: f32;
-    var phi_2686_: u32;
-    var phi_2689_: u32;
-    var phi_2690_: u32;
-    var phi_2691_: bool;
-    var phi_2704_: u32;
-    var phi_7150_: bool;
-    var phi_3613_: u32;
-    var phi_3614_: u32;
-    var phi_1848_: bool;
-    var phi_2164_: f32;
-    var phi_2214_: u32;
-    var phi_2217_: u32;
-    var phi_2218_: u32;
-    var phi_2219_: bool;
-    var phi_2232_: u32;
-    var phi_7115_: bool;
-    var phi_3615_: u32;
-    var phi_3616_: u32;
-    var phi_3617_: bool;
-    var phi_7113_: bool;
-    var phi_4018_: u32;
-    var phi_4041_: bool;
-    var phi_4057_: bool;
-    var phi_6135_: bool;
-    var phi_6451_: f32;
-    var phi_6501_: u32;
-    var phi_6504_: u32;
-    var phi_6505_: u32;
-    var phi_6506_: bool;
-    var phi_6519_: u32;
-    var phi_4216_: vec2<f32>;
-    var phi_4217_: vec2<f32>;
-    var phi_4757_: u32;
-    var phi_4760_: f32;
-    var phi_4802_: f32;
-    var phi_4803_: f32;
-    var phi_4758_: u32;
-    var phi_4761_: f32;
-    var phi_7092_: bool;
-    var local_23: f32;
-    var local_24: f32;
-    var local_25: f32;
-    var local_26: f32;
-    var local_27: f32;
-    var phi_5368_: vec3<f32>;
-    var phi_5555_: f32;
-    var phi_5605_: u32;
-    var phi_5608_: u32;
-    var phi_5609_: u32;
-    var phi_5610_: bool;
-    var phi_7226_: bool;
-    var phi_5620_: f32;
-    var phi_5623_: u32;
-    var phi_5625_: u32;
-    var phi_5655_: u32;
-    var phi_5658_: f32;
-    var phi_5700_: f32;
-    var phi_5701_: f32;
-    var phi_5656_: u32;
-    var phi_5659_: f32;
-    var phi_7220_: bool;
-    var local_28: f32;
-    var phi_5729_: u32;
-    var phi_5732_: f32;
-    var local_29: f32;
-    var phi_5774_: f32;
-    var phi_5775_: f32;
-    var phi_5730_: u32;
-    var phi_5733_: f32;
+    var phi_355_: type_26;
+    var phi_362_: u32;
+    var phi_369_: u32;
+    var phi_8399_: bool;
+    var phi_1027_: u32;
+    var phi_1030_: f32;
+    var phi_1032_: f32;
+    var phi_1218_: u32;
+    var phi_1221_: u32;
+    var phi_1278_: f32;
+    var phi_1279_: f32;
+    var phi_1561_: bool;
+    var phi_1716_: bool;
+    var phi_1732_: bool;
+    var phi_1891_: vec2<f32>;
+    var phi_1892_: vec2<f32>;
+    var phi_2010_: f32;
+    var phi_2061_: bool;
+    var phi_2062_: bool;
+    var phi_2068_: f32;
+    var phi_2101_: bool;
+    var phi_2102_: bool;
+    var phi_2108_: f32;
+    var phi_2141_: bool;
+    var phi_2142_: bool;
+    var phi_2148_: f32;
+    var phi_2181_: bool;
+    var phi_2182_: bool;
+    var phi_2188_: f32;
+    var phi_2225_: bool;
+    var phi_2226_: bool;
+    var phi_2232_: f32;
+    var phi_2265_: bool;
+    var phi_2266_: bool;
+    var phi_2272_: f32;
+    var phi_2305_: bool;
+    var phi_2306_: bool;
+    var phi_2312_: f32;
+    var phi_2345_: bool;
+    var phi_2346_: bool;
+    var phi_2352_: f32;
+    var phi_2361_: f32;
+    var phi_2362_: f32;
+    var phi_2363_: f32;
+    var phi_2364_: f32;
+    var phi_6854_: bool;
+    var phi_6869_: bool;
+    var phi_6884_: bool;
+    var phi_6899_: bool;
+    var phi_6914_: bool;
+    var phi_6929_: bool;
+    var phi_6944_: bool;
+    var phi_6959_: bool;
+    var phi_6974_: bool;
+    var phi_6989_: bool;
+    var phi_7004_: bool;
+    var phi_7019_: bool;
+    var phi_7034_: bool;
+    var phi_7049_: bool;
+    var phi_7064_: bool;
+    var phi_7079_: bool;
+    var phi_7094_: bool;
+    var phi_7109_: bool;
+    var phi_7124_: bool;
+    var phi_7139_: bool;
+    var phi_7154_: bool;
+    var phi_7169_: bool;
+    var phi_7184_: bool;
+    var phi_7199_: bool;
+    var phi_7214_: bool;
+    var phi_7229_: bool;
+    var phi_7244_: bool;
     var phi_7259_: bool;
-    var local_30: f32;
-    var local_31: f32;
-    var local_32: f32;
-    var local_33: f32;
-    var local_34: f32;
-    var local_35: f32;
-    var local_36: f32;
-    var phi_5834_: vec3<f32>;
-    var phi_5849_: bool;
-    var phi_6039_: f32;
-    var phi_6089_: u32;
-    var phi_6092_: u32;
-    var phi_6093_: u32;
-    var phi_6094_: bool;
-    var phi_6104_: u32;
-    var phi_7267_: bool;
-    var phi_6106_: f32;
-    var phi_6107_: u32;
-    var phi_6108_: u32;
-    var phi_7266_: bool;
-    var phi_5621_: f32;
-    var phi_5624_: u32;
-    var phi_5626_: u32;
-    var phi_6110_: bool;
-    var phi_7265_: bool;
-    var phi_4822_: bool;
-    var phi_5138_: f32;
-    var phi_5188_: u32;
-    var phi_5191_: u32;
-    var phi_5192_: u32;
-    var phi_5193_: bool;
-    var phi_5206_: u32;
-    var phi_7336_: bool;
-    var phi_6115_: u32;
-    var phi_6116_: u32;
-    var phi_4350_: bool;
-    var phi_4666_: f32;
-    var phi_4716_: u32;
-    var phi_4719_: u32;
-    var phi_4720_: u32;
-    var phi_4721_: bool;
-    var phi_4734_: u32;
-    var phi_7301_: bool;
-    var phi_6117_: u32;
-    var phi_6118_: u32;
-    var phi_6119_: bool;
-    var phi_7299_: bool;
-    var phi_6520_: u32;
-    var phi_7298_: bool;
-    var phi_1198_: u32;
-    var phi_1201_: u32;
-    var phi_7297_: bool;
-    var local_37: u32;
-    var phi_6601_: u32;
-    var phi_6604_: f32;
-    var local_38: u32;
-    var phi_6602_: u32;
-    var phi_6605_: f32;
-    var phi_7405_: bool;
-    var local_39: f32;
-    var phi_7416_: bool;
+    var phi_7274_: bool;
+    var phi_7289_: bool;
+    var phi_7304_: bool;
+    var phi_7319_: bool;
+    var phi_7334_: bool;
+    var phi_7349_: bool;
+    var phi_7364_: bool;
+    var phi_7379_: bool;
+    var phi_7394_: bool;
+    var phi_7409_: bool;
+    var phi_2433_: vec3<f32>;
+    var phi_2434_: vec3<f32>;
+    var phi_2488_: vec3<f32>;
+    var phi_2504_: bool;
+    var phi_2694_: f32;
+    var phi_2744_: u32;
+    var phi_2747_: u32;
+    var phi_2748_: u32;
+    var phi_2749_: bool;
+    var phi_2758_: u32;
+    var phi_2760_: u32;
+    var phi_2761_: bool;
+    var phi_2819_: vec3<f32>;
+    var phi_2835_: bool;
+    var phi_3025_: f32;
+    var phi_3075_: u32;
+    var phi_3078_: u32;
+    var phi_3079_: u32;
+    var phi_3080_: bool;
+    var phi_3089_: u32;
+    var phi_3091_: u32;
+    var phi_3092_: bool;
+    var phi_3151_: vec3<f32>;
+    var phi_3167_: bool;
+    var phi_3357_: f32;
+    var phi_3407_: u32;
+    var phi_3410_: u32;
+    var phi_3411_: u32;
+    var phi_3412_: bool;
+    var phi_3421_: u32;
+    var phi_3423_: u32;
+    var phi_3424_: bool;
+    var phi_3485_: vec3<f32>;
+    var phi_3501_: bool;
+    var phi_3691_: f32;
+    var phi_3741_: u32;
+    var phi_3744_: u32;
+    var phi_3745_: u32;
+    var phi_3746_: bool;
+    var phi_3755_: u32;
+    var phi_3757_: u32;
+    var phi_3758_: bool;
+    var phi_3764_: vec3<f32>;
+    var phi_3765_: u32;
+    var phi_3952_: f32;
+    var phi_4002_: u32;
+    var phi_4005_: u32;
+    var phi_4006_: u32;
+    var phi_4007_: bool;
+    var phi_4017_: u32;
+    var phi_4041_: bool;
+    var phi_4196_: bool;
+    var phi_4212_: bool;
+    var phi_4371_: vec2<f32>;
+    var phi_4372_: vec2<f32>;
+    var phi_4490_: f32;
+    var phi_4541_: bool;
+    var phi_4542_: bool;
+    var phi_4548_: f32;
+    var phi_4581_: bool;
+    var phi_4582_: bool;
+    var phi_4588_: f32;
+    var phi_4621_: bool;
+    var phi_4622_: bool;
+    var phi_4628_: f32;
+    var phi_4661_: bool;
+    var phi_4662_: bool;
+    var phi_4668_: f32;
+    var phi_4705_: bool;
+    var phi_4706_: bool;
+    var phi_4712_: f32;
+    var phi_4745_: bool;
+    var phi_4746_: bool;
+    var phi_4752_: f32;
+    var phi_4785_: bool;
+    var phi_4786_: bool;
+    var phi_4792_: f32;
+    var phi_4825_: bool;
+    var phi_4826_: bool;
+    var phi_4832_: f32;
+    var phi_4841_: f32;
+    var phi_4842_: f32;
+    var phi_4843_: f32;
+    var phi_4844_: f32;
+    var phi_7424_: bool;
+    var phi_7439_: bool;
+    var phi_7454_: bool;
+    var phi_7469_: bool;
+    var phi_7484_: bool;
+    var phi_7499_: bool;
+    var phi_7514_: bool;
+    var phi_7529_: bool;
+    var phi_7544_: bool;
+    var phi_7559_: bool;
+    var phi_7574_: bool;
+    var phi_7589_: bool;
+    var phi_7604_: bool;
+    var phi_7619_: bool;
+    var phi_7634_: bool;
+    var phi_7649_: bool;
+    var phi_7664_: bool;
+    var phi_7679_: bool;
+    var phi_7694_: bool;
+    var phi_7709_: bool;
+    var phi_7724_: bool;
+    var phi_7739_: bool;
+    var phi_7754_: bool;
+    var phi_7769_: bool;
+    var phi_7784_: bool;
+    var phi_7799_: bool;
+    var phi_7814_: bool;
+    var phi_7829_: bool;
+    var phi_7844_: bool;
+    var phi_7859_: bool;
+    var phi_7874_: bool;
+    var phi_7889_: bool;
+    var phi_7904_: bool;
+    var phi_7919_: bool;
+    var phi_7934_: bool;
+    var phi_7949_: bool;
+    var phi_7964_: bool;
+    var phi_7979_: bool;
+    var phi_4913_: vec3<f32>;
+    var phi_4914_: vec3<f32>;
+    var phi_4968_: vec3<f32>;
+    var phi_4984_: bool;
+    var phi_5174_: f32;
+    var phi_5224_: u32;
+    var phi_5227_: u32;
+    var phi_5228_: u32;
+    var phi_5229_: bool;
+    var phi_5238_: u32;
+    var phi_5240_: u32;
+    var phi_5241_: bool;
+    var phi_5299_: vec3<f32>;
+    var phi_5315_: bool;
+    var phi_5505_: f32;
+    var phi_5555_: u32;
+    var phi_5558_: u32;
+    var phi_5559_: u32;
+    var phi_5560_: bool;
+    var phi_5569_: u32;
+    var phi_5571_: u32;
+    var phi_5572_: bool;
+    var phi_5631_: vec3<f32>;
+    var phi_5647_: bool;
+    var phi_5837_: f32;
+    var phi_5887_: u32;
+    var phi_5890_: u32;
+    var phi_5891_: u32;
+    var phi_5892_: bool;
+    var phi_5901_: u32;
+    var phi_5903_: u32;
+    var phi_5904_: bool;
+    var phi_5965_: vec3<f32>;
+    var phi_5981_: bool;
+    var phi_6171_: f32;
+    var phi_6221_: u32;
+    var phi_6224_: u32;
+    var phi_6225_: u32;
+    var phi_6226_: bool;
+    var phi_6235_: u32;
+    var phi_6237_: u32;
+    var phi_6238_: bool;
+    var phi_6244_: vec3<f32>;
+    var phi_6245_: u32;
+    var phi_6432_: f32;
+    var phi_6482_: u32;
+    var phi_6485_: u32;
+    var phi_6486_: u32;
+    var phi_6487_: bool;
+    var phi_6497_: u32;
+    var phi_1219_: u32;
+    var phi_1222_: u32;
+    var phi_8008_: bool;
+    var local_9: u32;
+    var phi_6578_: u32;
+    var phi_6581_: f32;
+    var local_10: u32;
+    var phi_6579_: u32;
+    var phi_6582_: f32;
+    var phi_8707_: bool;
+    var local_11: f32;
+    var phi_8718_: bool;
+    var phi_6631_: f32;
+    var phi_6632_: f32;
+    var phi_6526_: u32;
+    var phi_6529_: f32;
+    var phi_6531_: f32;
+    var local_12: u32;
+    var phi_6527_: u32;
+    var phi_6530_: f32;
+    var phi_6532_: f32;
+    var local_13: f32;
+    var phi_8712_: bool;
+    var phi_6633_: f32;
+    var phi_6634_: f32;
+    var phi_8711_: bool;
+    var phi_1028_: u32;
+    var phi_1031_: f32;
+    var phi_1033_: f32;
+    var phi_8710_: bool;
+    var local_14: f32;
+    var local_15: f32;
+    var local_16: f32;
+    var phi_6642_: f32;
     var phi_6654_: f32;
     var phi_6655_: f32;
-    var phi_6549_: u32;
-    var phi_6552_: f32;
-    var phi_6554_: f32;
-    var local_40: u32;
-    var phi_6550_: u32;
-    var phi_6553_: f32;
-    var phi_6555_: f32;
-    var local_41: f32;
-    var phi_7410_: bool;
-    var phi_6656_: f32;
-    var phi_6657_: f32;
-    var phi_7409_: bool;
-    var phi_1007_: u32;
-    var phi_1010_: f32;
-    var phi_1012_: f32;
-    var phi_7408_: bool;
-    var local_42: f32;
-    var local_43: f32;
-    var local_44: f32;
-    var phi_6665_: f32;
-    var phi_6677_: f32;
-    var phi_6678_: f32;
-    var local_45: f32;
-    var local_46: f32;
-    var local_47: u32;
-    var local_48: f32;
-    var local_49: f32;
-    var local_50: u32;
 
     switch bitcast<i32>(0u) {
         default: {
-            let _e182 = id_1;
-            let _e187 = arrayLength((&mips.member));
-            let _e190 = arrayLength((&sd_map.member));
-            let _e193 = (override_type == 0u);
-            if _e193 {
-                let _e225 = params.member.member_4;
-                phi_334_ = _e225;
+            let _e184 = id_1;
+            let _e191 = (override_type == 0u);
+            if _e191 {
+                let _e223 = params.member.member_4;
+                phi_355_ = _e223;
             } else {
-                let _e203 = params.member.member_4.member;
-                let _e207 = params.member.member_4.member_1;
-                let _e211 = params.member.member_4.member_10;
-                let _e215 = params.member.member_4.member_11;
-                let _e219 = params.member.member_4.member_12;
-                let _e223 = params.member.member_4.member_14;
-                phi_334_ = type_26(_e203, _e207, bitcast<f32>(override_type_5), bitcast<f32>(override_type_4), bitcast<f32>(override_type_2), bitcast<f32>(override_type_1), bitcast<f32>(override_type_3), bitcast<f32>(override_type_6), override_type_7, override_type_8, _e211, _e215, _e219, override_type_9, _e223);
+                let _e201 = params.member.member_4.member;
+                let _e205 = params.member.member_4.member_1;
+                let _e209 = params.member.member_4.member_10;
+                let _e213 = params.member.member_4.member_11;
+                let _e217 = params.member.member_4.member_12;
+                let _e221 = params.member.member_4.member_14;
+                phi_355_ = type_26(_e201, _e205, bitcast<f32>(override_type_5), bitcast<f32>(override_type_4), bitcast<f32>(override_type_2), bitcast<f32>(override_type_1), bitcast<f32>(override_type_3), bitcast<f32>(override_type_6), override_type_7, override_type_8, _e209, _e213, _e217, override_type_9, _e221);
             }
-            let _e227 = phi_334_;
-            if _e193 {
-                let _e230 = params.member.member_2;
-                phi_341_ = _e230;
+            let _e225 = phi_355_;
+            if _e191 {
+                let _e228 = params.member.member_2;
+                phi_362_ = _e228;
             } else {
-                phi_341_ = override_type_10;
+                phi_362_ = override_type_10;
             }
-            let _e232 = phi_341_;
-            if _e193 {
-                let _e235 = params.member.member_3;
-                phi_348_ = _e235;
+            let _e230 = phi_362_;
+            if _e191 {
+                let _e233 = params.member.member_3;
+                phi_369_ = _e233;
             } else {
-                phi_348_ = override_type_11;
+                phi_369_ = override_type_11;
             }
-            let _e237 = phi_348_;
-            let _e240 = params.member.member;
-            let _e243 = params.member.member_1;
-            let _e251 = select(select(u32(_e227.member.member.x), 0u, (_e227.member.member.x < 0f)), 4294967295u, (_e227.member.member.x > 4294967000f));
-            let _e259 = select(select(u32(_e227.member.member.y), 0u, (_e227.member.member.y < 0f)), 4294967295u, (_e227.member.member.y > 4294967000f));
-            if (_e182.x >= _e251) {
+            let _e235 = phi_369_;
+            let _e238 = params.member.member;
+            let _e241 = params.member.member_1;
+            let _e249 = select(select(u32(_e225.member.member.x), 0u, (_e225.member.member.x < 0f)), 4294967295u, (_e225.member.member.x > 4294967000f));
+            let _e257 = select(select(u32(_e225.member.member.y), 0u, (_e225.member.member.y < 0f)), 4294967295u, (_e225.member.member.y > 4294967000f));
+            if (_e184.x >= _e249) {
             } else {
-                if (_e182.y >= _e259) {
+                if (_e184.y >= _e257) {
                 } else {
                     if (0u < arrayLength((&frame.member))) {
                     } else {
                         break;
                     }
-                    let _e269 = ((_e182.y * _e251) + _e182.x);
-                    let _e272 = mips.member[_e269];
-                    let _e273 = bitcast<i32>(_e182.x);
-                    let _e274 = (_e273 + -1i);
-                    let _e276 = select(0i, _e274, (0i < _e274));
-                    let _e278 = (bitcast<i32>(_e251) - 1i);
-                    let _e282 = bitcast<i32>(_e182.y);
-                    let _e284 = select(0i, _e282, (0i < _e282));
-                    let _e286 = (bitcast<i32>(_e259) - 1i);
-                    let _e290 = (bitcast<u32>(select(_e284, _e286, (_e286 < _e284))) * _e251);
-                    let _e294 = mips.member[(_e290 + bitcast<u32>(select(_e276, _e278, (_e278 < _e276))))];
-                    let _e295 = (_e273 + 1i);
-                    let _e297 = select(0i, _e295, (0i < _e295));
-                    let _e304 = mips.member[(_e290 + bitcast<u32>(select(_e297, _e278, (_e278 < _e297))))];
-                    let _e306 = select(0i, _e273, (0i < _e273));
-                    let _e309 = bitcast<u32>(select(_e306, _e278, (_e278 < _e306)));
-                    let _e310 = (_e282 + -1i);
-                    let _e312 = select(0i, _e310, (0i < _e310));
-                    let _e320 = mips.member[((bitcast<u32>(select(_e312, _e286, (_e286 < _e312))) * _e251) + _e309)];
-                    let _e321 = (_e282 + 1i);
-                    let _e323 = select(0i, _e321, (0i < _e321));
-                    let _e331 = mips.member[((bitcast<u32>(select(_e323, _e286, (_e286 < _e323))) * _e251) + _e309)];
-                    let _e332 = (_e294 - _e272);
-                    let _e333 = (_e304 - _e272);
-                    let _e334 = (_e320 - _e272);
-                    let _e335 = (_e331 - _e272);
+                    let _e267 = ((_e184.y * _e249) + _e184.x);
+                    let _e270 = mips.member[_e267];
+                    let _e271 = bitcast<i32>(_e184.x);
+                    let _e272 = (_e271 + -1i);
+                    let _e274 = select(0i, _e272, (0i < _e272));
+                    let _e276 = (bitcast<i32>(_e249) - 1i);
+                    let _e280 = bitcast<i32>(_e184.y);
+                    let _e282 = select(0i, _e280, (0i < _e280));
+                    let _e284 = (bitcast<i32>(_e257) - 1i);
+                    let _e288 = (bitcast<u32>(select(_e282, _e284, (_e284 < _e282))) * _e249);
+                    let _e292 = mips.member[(_e288 + bitcast<u32>(select(_e274, _e276, (_e276 < _e274))))];
+                    let _e293 = (_e271 + 1i);
+                    let _e295 = select(0i, _e293, (0i < _e293));
+                    let _e302 = mips.member[(_e288 + bitcast<u32>(select(_e295, _e276, (_e276 < _e295))))];
+                    let _e304 = select(0i, _e271, (0i < _e271));
+                    let _e307 = bitcast<u32>(select(_e304, _e276, (_e276 < _e304)));
+                    let _e308 = (_e280 + -1i);
+                    let _e310 = select(0i, _e308, (0i < _e308));
+                    let _e318 = mips.member[((bitcast<u32>(select(_e310, _e284, (_e284 < _e310))) * _e249) + _e307)];
+                    let _e319 = (_e280 + 1i);
+                    let _e321 = select(0i, _e319, (0i < _e319));
+                    let _e329 = mips.member[((bitcast<u32>(select(_e321, _e284, (_e284 < _e321))) * _e249) + _e307)];
+                    let _e330 = (_e292 - _e270);
+                    let _e331 = (_e302 - _e270);
+                    let _e332 = (_e318 - _e270);
+                    let _e333 = (_e329 - _e270);
+                    let _e335 = ((_e331 - _e330) * 0.5f);
                     let _e337 = ((_e333 - _e332) * 0.5f);
-                    let _e339 = ((_e335 - _e334) * 0.5f);
-                    let _e340 = (_e272 * 0.011f);
-                    let _e342 = abs(_e332);
-                    let _e343 = abs((_e332 + _e337));
-                    let _e349 = (1.25f - (select(_e343, _e342, ((_e342 < _e343) || (_e343 != _e343))) / _e340));
-                    let _e353 = select(0f, select(1f, _e349, (_e349 < 1f)), (_e349 > 0f));
-                    let _e355 = abs(_e333);
-                    let _e356 = abs((_e333 - _e337));
-                    let _e362 = (1.25f - (select(_e356, _e355, ((_e355 < _e356) || (_e356 != _e356))) / _e340));
-                    let _e366 = select(0f, select(1f, _e362, (_e362 < 1f)), (_e362 > 0f));
-                    let _e368 = abs(_e334);
-                    let _e369 = abs((_e334 + _e339));
-                    let _e375 = (1.25f - (select(_e369, _e368, ((_e368 < _e369) || (_e369 != _e369))) / _e340));
-                    let _e379 = select(0f, select(1f, _e375, (_e375 < 1f)), (_e375 > 0f));
-                    let _e381 = abs(_e335);
-                    let _e382 = abs((_e335 - _e339));
-                    let _e388 = (1.25f - (select(_e382, _e381, ((_e381 < _e382) || (_e382 != _e382))) / _e340));
-                    let _e392 = select(0f, select(1f, _e388, (_e388 < 1f)), (_e388 > 0f));
-                    let _e398 = round((select(0f, select(1f, _e353, (_e353 < 1f)), (_e353 > 0f)) * 2.9f));
-                    let _e413 = round((select(0f, select(1f, _e366, (_e366 < 1f)), (_e366 > 0f)) * 2.9f));
-                    let _e429 = round((select(0f, select(1f, _e379, (_e379 < 1f)), (_e379 > 0f)) * 2.9f));
-                    let _e445 = round((select(0f, select(1f, _e392, (_e392 < 1f)), (_e392 > 0f)) * 2.9f));
-                    let _e457 = ((f32(_e273) + 0.5f) / _e227.member.member.x);
-                    let _e460 = ((f32(_e282) + 0.5f) / _e227.member.member.y);
-                    let _e461 = (_e272 * 0.99999f);
-                    let _e468 = ((((_e457 * 2f) - 1f) * _e227.member.member_1.x) * _e461);
-                    let _e475 = ((((_e460 * -2f) + 1f) * _e227.member.member_1.y) * _e461);
-                    let _e476 = vec3<f32>(_e468, _e475, _e461);
-                    let _e477 = -(_e468);
-                    let _e478 = -(_e475);
-                    let _e479 = (_e272 * -0.99999f);
-                    let _e486 = (1f / sqrt((((_e477 * _e477) + (_e478 * _e478)) + (_e479 * _e479))));
-                    let _e487 = (_e477 * _e486);
-                    let _e488 = (_e478 * _e486);
-                    let _e489 = (_e479 * _e486);
-                    let _e492 = normals.member[_e269];
-                    let _e495 = f32(bitcast<i32>((_e492 & 255u)));
-                    let _e499 = (select(_e495, (_e495 - 256f), (_e495 >= 128f)) * 0.007874016f);
-                    let _e502 = select(-1f, _e499, ((_e499 > -1f) || false));
-                    let _e507 = f32(bitcast<i32>(((_e492 >> bitcast<u32>(8u)) & 255u)));
-                    let _e511 = (select(_e507, (_e507 - 256f), (_e507 >= 128f)) * 0.007874016f);
-                    let _e514 = select(-1f, _e511, ((_e511 > -1f) || false));
-                    let _e516 = (1f - abs(_e502));
-                    let _e517 = abs(_e514);
-                    let _e518 = (_e516 - _e517);
-                    let _e519 = (_e518 < 0f);
-                    let _e527 = select(_e502, ((1f - _e517) * select(1f, -1f, (_e502 < 0f))), _e519);
-                    let _e528 = select(_e514, (_e516 * select(1f, -1f, (_e514 < 0f))), _e519);
-                    let _e535 = (1f / sqrt((((_e527 * _e527) + (_e528 * _e528)) + (_e518 * _e518))));
-                    let _e536 = (_e527 * _e535);
-                    let _e537 = (_e528 * _e535);
-                    let _e538 = (_e518 * _e535);
-                    let _e539 = -(_e538);
-                    let _e545 = ((((_e536 * _e487) + (_e537 * _e488)) + (_e539 * _e489)) < 0f);
-                    let _e548 = select(_e536, -(_e536), _e545);
-                    let _e549 = select(_e537, -(_e537), _e545);
-                    let _e550 = select(_e539, _e538, _e545);
-                    let _e557 = ((_e227.member_1 * _e227.member_2) / (((_e272 * 1.99998f) * _e227.member.member_1.x) / _e227.member.member.x));
-                    let _e560 = (_e182.x & 63u);
-                    let _e561 = (_e182.y & 63u);
-                    let _e564 = ((_e560 >> bitcast<u32>(5u)) & 1u);
-                    let _e567 = ((_e561 >> bitcast<u32>(5u)) & 1u);
-                    let _e571 = (_e567 ^ 1u);
-                    let _e573 = ((_e564 & _e571) * 63u);
-                    let _e574 = (_e560 ^ _e573);
-                    let _e575 = (_e561 ^ _e573);
-                    let _e577 = ((_e574 ^ _e575) * _e571);
-                    let _e578 = (_e574 ^ _e577);
-                    let _e579 = (_e575 ^ _e577);
-                    let _e582 = ((_e578 >> bitcast<u32>(4u)) & 1u);
-                    let _e585 = ((_e579 >> bitcast<u32>(4u)) & 1u);
-                    let _e590 = (_e585 ^ 1u);
-                    let _e592 = ((_e582 & _e590) * 63u);
-                    let _e593 = (_e578 ^ _e592);
-                    let _e594 = (_e579 ^ _e592);
-                    let _e596 = ((_e593 ^ _e594) * _e590);
-                    let _e597 = (_e593 ^ _e596);
-                    let _e598 = (_e594 ^ _e596);
-                    let _e601 = ((_e597 >> bitcast<u32>(3u)) & 1u);
-                    let _e604 = ((_e598 >> bitcast<u32>(3u)) & 1u);
-                    let _e609 = (_e604 ^ 1u);
-                    let _e611 = ((_e601 & _e609) * 63u);
-                    let _e612 = (_e597 ^ _e611);
-                    let _e613 = (_e598 ^ _e611);
-                    let _e615 = ((_e612 ^ _e613) * _e609);
-                    let _e616 = (_e612 ^ _e615);
-                    let _e617 = (_e613 ^ _e615);
-                    let _e620 = ((_e616 >> bitcast<u32>(2u)) & 1u);
-                    let _e623 = ((_e617 >> bitcast<u32>(2u)) & 1u);
-                    let _e628 = (_e623 ^ 1u);
-                    let _e630 = ((_e620 & _e628) * 63u);
-                    let _e631 = (_e616 ^ _e630);
-                    let _e632 = (_e617 ^ _e630);
-                    let _e634 = ((_e631 ^ _e632) * _e628);
-                    let _e635 = (_e631 ^ _e634);
-                    let _e636 = (_e632 ^ _e634);
-                    let _e639 = ((_e635 >> bitcast<u32>(1u)) & 1u);
-                    let _e642 = ((_e636 >> bitcast<u32>(1u)) & 1u);
-                    let _e647 = (_e642 ^ 1u);
-                    let _e649 = ((_e639 & _e647) * 63u);
-                    let _e650 = (_e635 ^ _e649);
-                    let _e651 = (_e636 ^ _e649);
-                    let _e653 = ((_e650 ^ _e651) * _e647);
-                    let _e665 = f32(bitcast<i32>((((((((((_e564 * 3u) ^ _e567) * 1024u) + (((_e582 * 3u) ^ _e585) * 256u)) + (((_e601 * 3u) ^ _e604) * 64u)) + (((_e620 * 3u) ^ _e623) * 16u)) + (((_e639 * 3u) ^ _e642) * 4u)) + ((((_e650 ^ _e653) & 1u) * 3u) ^ ((_e651 ^ _e653) & 1u))) + (288u * (_e227.member_11 % 64u)))));
-                    let _e667 = ((_e665 * 0.7548777f) + 0.5f);
-                    let _e671 = ((_e665 * 0.5698403f) + 0.5f);
-                    let _e677 = exp2(((2f * _e227.member_7) + 1f));
-                    let _e682 = select(false, (_e272 < _e227.member.member_3), (_e272 > 0f));
-                    if _e682 {
-                        let _e685 = select(1u, _e227.member_8, (1u < _e227.member_8));
-                        phi_6952_ = false;
-                        phi_1006_ = 0u;
-                        phi_1009_ = 0f;
-                        phi_1011_ = 0f;
+                    let _e338 = (_e270 * 0.011f);
+                    let _e340 = abs(_e330);
+                    let _e341 = abs((_e330 + _e335));
+                    let _e347 = (1.25f - (select(_e341, _e340, ((_e340 < _e341) || (_e341 != _e341))) / _e338));
+                    let _e351 = select(0f, select(1f, _e347, (_e347 < 1f)), (_e347 > 0f));
+                    let _e353 = abs(_e331);
+                    let _e354 = abs((_e331 - _e335));
+                    let _e360 = (1.25f - (select(_e354, _e353, ((_e353 < _e354) || (_e354 != _e354))) / _e338));
+                    let _e364 = select(0f, select(1f, _e360, (_e360 < 1f)), (_e360 > 0f));
+                    let _e366 = abs(_e332);
+                    let _e367 = abs((_e332 + _e337));
+                    let _e373 = (1.25f - (select(_e367, _e366, ((_e366 < _e367) || (_e367 != _e367))) / _e338));
+                    let _e377 = select(0f, select(1f, _e373, (_e373 < 1f)), (_e373 > 0f));
+                    let _e379 = abs(_e333);
+                    let _e380 = abs((_e333 - _e337));
+                    let _e386 = (1.25f - (select(_e380, _e379, ((_e379 < _e380) || (_e380 != _e380))) / _e338));
+                    let _e390 = select(0f, select(1f, _e386, (_e386 < 1f)), (_e386 > 0f));
+                    let _e396 = round((select(0f, select(1f, _e351, (_e351 < 1f)), (_e351 > 0f)) * 2.9f));
+                    let _e411 = round((select(0f, select(1f, _e364, (_e364 < 1f)), (_e364 > 0f)) * 2.9f));
+                    let _e427 = round((select(0f, select(1f, _e377, (_e377 < 1f)), (_e377 > 0f)) * 2.9f));
+                    let _e443 = round((select(0f, select(1f, _e390, (_e390 < 1f)), (_e390 > 0f)) * 2.9f));
+                    let _e455 = ((f32(_e271) + 0.5f) / _e225.member.member.x);
+                    let _e458 = ((f32(_e280) + 0.5f) / _e225.member.member.y);
+                    let _e459 = (_e270 * 0.99999f);
+                    let _e466 = ((((_e455 * 2f) - 1f) * _e225.member.member_1.x) * _e459);
+                    let _e473 = ((((_e458 * -2f) + 1f) * _e225.member.member_1.y) * _e459);
+                    let _e474 = vec3<f32>(_e466, _e473, _e459);
+                    let _e475 = -(_e466);
+                    let _e476 = -(_e473);
+                    let _e477 = (_e270 * -0.99999f);
+                    let _e484 = (1f / sqrt((((_e475 * _e475) + (_e476 * _e476)) + (_e477 * _e477))));
+                    let _e485 = (_e475 * _e484);
+                    let _e486 = (_e476 * _e484);
+                    let _e487 = (_e477 * _e484);
+                    let _e490 = normals.member[_e267];
+                    let _e493 = f32(bitcast<i32>((_e490 & 255u)));
+                    let _e497 = (select(_e493, (_e493 - 256f), (_e493 >= 128f)) * 0.007874016f);
+                    let _e500 = select(-1f, _e497, ((_e497 > -1f) || false));
+                    let _e505 = f32(bitcast<i32>(((_e490 >> bitcast<u32>(8u)) & 255u)));
+                    let _e509 = (select(_e505, (_e505 - 256f), (_e505 >= 128f)) * 0.007874016f);
+                    let _e512 = select(-1f, _e509, ((_e509 > -1f) || false));
+                    let _e514 = (1f - abs(_e500));
+                    let _e515 = abs(_e512);
+                    let _e516 = (_e514 - _e515);
+                    let _e517 = (_e516 < 0f);
+                    let _e525 = select(_e500, ((1f - _e515) * select(1f, -1f, (_e500 < 0f))), _e517);
+                    let _e526 = select(_e512, (_e514 * select(1f, -1f, (_e512 < 0f))), _e517);
+                    let _e533 = (1f / sqrt((((_e525 * _e525) + (_e526 * _e526)) + (_e516 * _e516))));
+                    let _e534 = (_e525 * _e533);
+                    let _e535 = (_e526 * _e533);
+                    let _e536 = (_e516 * _e533);
+                    let _e537 = -(_e536);
+                    let _e543 = ((((_e534 * _e485) + (_e535 * _e486)) + (_e537 * _e487)) < 0f);
+                    let _e546 = select(_e534, -(_e534), _e543);
+                    let _e547 = select(_e535, -(_e535), _e543);
+                    let _e548 = select(_e537, _e536, _e543);
+                    let _e555 = ((_e225.member_1 * _e225.member_2) / (((_e270 * 1.99998f) * _e225.member.member_1.x) / _e225.member.member.x));
+                    let _e558 = (_e184.x & 63u);
+                    let _e559 = (_e184.y & 63u);
+                    let _e562 = ((_e558 >> bitcast<u32>(5u)) & 1u);
+                    let _e565 = ((_e559 >> bitcast<u32>(5u)) & 1u);
+                    let _e569 = (_e565 ^ 1u);
+                    let _e571 = ((_e562 & _e569) * 63u);
+                    let _e572 = (_e558 ^ _e571);
+                    let _e573 = (_e559 ^ _e571);
+                    let _e575 = ((_e572 ^ _e573) * _e569);
+                    let _e576 = (_e572 ^ _e575);
+                    let _e577 = (_e573 ^ _e575);
+                    let _e580 = ((_e576 >> bitcast<u32>(4u)) & 1u);
+                    let _e583 = ((_e577 >> bitcast<u32>(4u)) & 1u);
+                    let _e588 = (_e583 ^ 1u);
+                    let _e590 = ((_e580 & _e588) * 63u);
+                    let _e591 = (_e576 ^ _e590);
+                    let _e592 = (_e577 ^ _e590);
+                    let _e594 = ((_e591 ^ _e592) * _e588);
+                    let _e595 = (_e591 ^ _e594);
+                    let _e596 = (_e592 ^ _e594);
+                    let _e599 = ((_e595 >> bitcast<u32>(3u)) & 1u);
+                    let _e602 = ((_e596 >> bitcast<u32>(3u)) & 1u);
+                    let _e607 = (_e602 ^ 1u);
+                    let _e609 = ((_e599 & _e607) * 63u);
+                    let _e610 = (_e595 ^ _e609);
+                    let _e611 = (_e596 ^ _e609);
+                    let _e613 = ((_e610 ^ _e611) * _e607);
+                    let _e614 = (_e610 ^ _e613);
+                    let _e615 = (_e611 ^ _e613);
+                    let _e618 = ((_e614 >> bitcast<u32>(2u)) & 1u);
+                    let _e621 = ((_e615 >> bitcast<u32>(2u)) & 1u);
+                    let _e626 = (_e621 ^ 1u);
+                    let _e628 = ((_e618 & _e626) * 63u);
+                    let _e629 = (_e614 ^ _e628);
+                    let _e630 = (_e615 ^ _e628);
+                    let _e632 = ((_e629 ^ _e630) * _e626);
+                    let _e633 = (_e629 ^ _e632);
+                    let _e634 = (_e630 ^ _e632);
+                    let _e637 = ((_e633 >> bitcast<u32>(1u)) & 1u);
+                    let _e640 = ((_e634 >> bitcast<u32>(1u)) & 1u);
+                    let _e645 = (_e640 ^ 1u);
+                    let _e647 = ((_e637 & _e645) * 63u);
+                    let _e648 = (_e633 ^ _e647);
+                    let _e649 = (_e634 ^ _e647);
+                    let _e651 = ((_e648 ^ _e649) * _e645);
+                    let _e663 = f32(bitcast<i32>((((((((((_e562 * 3u) ^ _e565) * 1024u) + (((_e580 * 3u) ^ _e583) * 256u)) + (((_e599 * 3u) ^ _e602) * 64u)) + (((_e618 * 3u) ^ _e621) * 16u)) + (((_e637 * 3u) ^ _e640) * 4u)) + ((((_e648 ^ _e651) & 1u) * 3u) ^ ((_e649 ^ _e651) & 1u))) + (288u * (_e225.member_11 % 64u)))));
+                    let _e665 = ((_e663 * 0.7548777f) + 0.5f);
+                    let _e669 = ((_e663 * 0.5698403f) + 0.5f);
+                    let _e675 = exp2(((2f * _e225.member_7) + 1f));
+                    let _e680 = select(false, (_e270 < _e225.member.member_3), (_e270 > 0f));
+                    if _e680 {
+                        let _e683 = select(1u, _e225.member_8, (1u < _e225.member_8));
+                        phi_8399_ = false;
+                        phi_1027_ = 0u;
+                        phi_1030_ = 0f;
+                        phi_1032_ = 0f;
                         loop {
-                            let _e687 = phi_6952_;
-                            let _e689 = phi_1006_;
-                            let _e691 = phi_1009_;
-                            let _e693 = phi_1011_;
-                            local_42 = _e691;
-                            local_43 = _e693;
-                            local_44 = _e691;
-                            let _e694 = (_e689 < _e685);
-                            if _e694 {
-                                let _e701 = ((((_e667 - floor(_e667)) + f32(bitcast<i32>(_e689))) * 3.1415927f) / f32(bitcast<i32>(_e685)));
-                                let _e702 = sin(_e701);
-                                let _e703 = cos(_e701);
-                                let _e709 = ((_e703 * _e487) + (_e702 * _e488));
-                                let _e713 = (_e703 - (_e487 * _e709));
-                                let _e714 = (_e702 - (_e488 * _e709));
-                                let _e715 = -((_e489 * _e709));
-                                let _e718 = ((_e714 * _e489) - (_e488 * _e715));
-                                let _e721 = ((_e715 * _e487) - (_e489 * _e713));
-                                let _e724 = ((_e713 * _e488) - (_e487 * _e714));
-                                let _e731 = (1f / sqrt((((_e718 * _e718) + (_e721 * _e721)) + (_e724 * _e724))));
-                                let _e732 = (_e718 * _e731);
-                                let _e733 = (_e721 * _e731);
-                                let _e734 = (_e724 * _e731);
-                                let _e739 = (((_e548 * _e732) + (_e549 * _e733)) + (_e550 * _e734));
-                                let _e743 = (_e548 - (_e732 * _e739));
-                                let _e744 = (_e549 - (_e733 * _e739));
-                                let _e745 = (_e550 - (_e734 * _e739));
-                                let _e751 = sqrt((((_e743 * _e743) + (_e744 * _e744)) + (_e745 * _e745)));
-                                let _e756 = (((_e713 * _e743) + (_e714 * _e744)) + (_e715 * _e745));
-                                let _e766 = ((((_e743 * _e487) + (_e744 * _e488)) + (_e745 * _e489)) / _e751);
-                                let _e770 = select(0f, select(1f, _e766, (_e766 < 1f)), (_e766 > 0f));
-                                let _e771 = abs(_e770);
-                                let _e782 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e771, 0.00667009f), _e771, -0.017088126f), _e771, 0.03089188f), _e771, -0.050174303f), _e771, 0.08897899f), _e771, -0.2145988f), _e771, 1.5707963f) * sqrt((1f - _e771)));
-                                let _e785 = (select(select(0f, -1f, (_e756 < 0f)), 1f, (_e756 > 0f)) * select((3.1415927f - _e782), _e782, (_e770 >= 0f)));
-                                let _e788 = select(1u, _e227.member_9, (1u < _e227.member_9));
-                                phi_6943_ = _e687;
-                                phi_1197_ = 0u;
-                                phi_1200_ = 0u;
+                            let _e685 = phi_8399_;
+                            let _e687 = phi_1027_;
+                            let _e689 = phi_1030_;
+                            let _e691 = phi_1032_;
+                            local_14 = _e689;
+                            local_15 = _e691;
+                            local_16 = _e689;
+                            let _e692 = (_e687 < _e683);
+                            if _e692 {
+                                let _e699 = ((((_e665 - floor(_e665)) + f32(bitcast<i32>(_e687))) * 3.1415927f) / f32(bitcast<i32>(_e683)));
+                                let _e700 = sin(_e699);
+                                let _e701 = cos(_e699);
+                                let _e707 = ((_e701 * _e485) + (_e700 * _e486));
+                                let _e711 = (_e701 - (_e485 * _e707));
+                                let _e712 = (_e700 - (_e486 * _e707));
+                                let _e713 = -((_e487 * _e707));
+                                let _e716 = ((_e712 * _e487) - (_e486 * _e713));
+                                let _e719 = ((_e713 * _e485) - (_e487 * _e711));
+                                let _e722 = ((_e711 * _e486) - (_e485 * _e712));
+                                let _e729 = (1f / sqrt((((_e716 * _e716) + (_e719 * _e719)) + (_e722 * _e722))));
+                                let _e730 = (_e716 * _e729);
+                                let _e731 = (_e719 * _e729);
+                                let _e732 = (_e722 * _e729);
+                                let _e737 = (((_e546 * _e730) + (_e547 * _e731)) + (_e548 * _e732));
+                                let _e741 = (_e546 - (_e730 * _e737));
+                                let _e742 = (_e547 - (_e731 * _e737));
+                                let _e743 = (_e548 - (_e732 * _e737));
+                                let _e749 = sqrt((((_e741 * _e741) + (_e742 * _e742)) + (_e743 * _e743)));
+                                let _e754 = (((_e711 * _e741) + (_e712 * _e742)) + (_e713 * _e743));
+                                let _e764 = ((((_e741 * _e485) + (_e742 * _e486)) + (_e743 * _e487)) / _e749);
+                                let _e768 = select(0f, select(1f, _e764, (_e764 < 1f)), (_e764 > 0f));
+                                let _e769 = abs(_e768);
+                                let _e780 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e769, 0.00667009f), _e769, -0.017088126f), _e769, 0.03089188f), _e769, -0.050174303f), _e769, 0.08897899f), _e769, -0.2145988f), _e769, 1.5707963f) * sqrt((1f - _e769)));
+                                let _e783 = (select(select(0f, -1f, (_e754 < 0f)), 1f, (_e754 > 0f)) * select((3.1415927f - _e780), _e780, (_e768 >= 0f)));
+                                let _e786 = select(1u, _e225.member_9, (1u < _e225.member_9));
+                                phi_1218_ = 0u;
+                                phi_1221_ = 0u;
                                 loop {
-                                    let _e790 = phi_6943_;
-                                    let _e792 = phi_1197_;
-                                    let _e794 = phi_1200_;
-                                    local_37 = _e794;
-                                    local_38 = _e794;
-                                    local_40 = _e794;
-                                    let _e795 = (_e792 < _e788);
-                                    if _e795 {
-                                        let _e801 = ((_e671 - floor(_e671)) + (f32(bitcast<i32>((_e689 + (_e792 * _e788)))) * 0.618034f));
-                                        let _e810 = (((_e801 - floor(_e801)) + f32(bitcast<i32>(_e792))) * (1f / f32(bitcast<i32>(_e788))));
-                                        if (_e227.member_4 == 2f) {
-                                            phi_1258_ = (_e810 * _e810);
+                                    let _e788 = phi_1218_;
+                                    let _e790 = phi_1221_;
+                                    local_9 = _e790;
+                                    local_10 = _e790;
+                                    local_12 = _e790;
+                                    let _e791 = (_e788 < _e786);
+                                    if _e791 {
+                                        let _e797 = ((_e669 - floor(_e669)) + (f32(bitcast<i32>((_e687 + (_e788 * _e786)))) * 0.618034f));
+                                        let _e806 = (((_e797 - floor(_e797)) + f32(bitcast<i32>(_e788))) * (1f / f32(bitcast<i32>(_e786))));
+                                        if (_e225.member_4 == 2f) {
+                                            phi_1279_ = (_e806 * _e806);
                                         } else {
-                                            if (_e227.member_4 == 1f) {
-                                                phi_1257_ = _e810;
+                                            if (_e225.member_4 == 1f) {
+                                                phi_1278_ = _e806;
                                             } else {
-                                                phi_1257_ = pow(_e810, _e227.member_4);
+                                                phi_1278_ = pow(_e806, _e225.member_4);
                                             }
-                                            let _e816 = phi_1257_;
-                                            phi_1258_ = _e816;
+                                            let _e812 = phi_1278_;
+                                            phi_1279_ = _e812;
                                         }
-                                        let _e819 = phi_1258_;
-                                        let _e820 = (_e819 + (1.3f / _e557));
-                                        let _e821 = ((_e703 * _e557) * _e820);
-                                        let _e822 = ((-(_e702) * _e557) * _e820);
-                                        let _e825 = ((_e821 * _e821) + (_e822 * _e822));
-                                        let _e830 = (select(1u, _e251, (1u < _e251)) * select(1u, _e259, (1u < _e259)));
-                                        let _e831 = (_e825 > _e677);
-                                        let _e835 = (_e251 >> bitcast<u32>(1u));
-                                        let _e839 = (_e259 >> bitcast<u32>(1u));
-                                        let _e843 = (_e830 + (select(1u, _e835, (1u < _e835)) * select(1u, _e839, (1u < _e839))));
-                                        let _e845 = (_e825 > (_e677 * 4f));
-                                        let _e849 = (_e251 >> bitcast<u32>(2u));
-                                        let _e853 = (_e259 >> bitcast<u32>(2u));
-                                        let _e857 = (_e843 + (select(1u, _e849, (1u < _e849)) * select(1u, _e853, (1u < _e853))));
-                                        let _e859 = (_e825 > (_e677 * 16f));
-                                        let _e863 = (_e251 >> bitcast<u32>(3u));
-                                        let _e867 = (_e259 >> bitcast<u32>(3u));
-                                        let _e873 = (_e825 > (_e677 * 64f));
-                                        let _e875 = select(select(select(select(0u, _e830, _e831), _e843, _e845), _e857, _e859), (_e857 + (select(1u, _e863, (1u < _e863)) * select(1u, _e867, (1u < _e867)))), _e873);
-                                        let _e876 = (select(select(select(select(0u, 1u, _e831), 2u, _e845), 3u, _e859), 4u, _e873) & 31u);
-                                        let _e878 = (_e251 >> bitcast<u32>(_e876));
+                                        let _e815 = phi_1279_;
+                                        let _e816 = (_e815 + (1.3f / _e555));
+                                        let _e817 = ((_e701 * _e555) * _e816);
+                                        let _e818 = ((-(_e700) * _e555) * _e816);
+                                        let _e821 = ((_e817 * _e817) + (_e818 * _e818));
+                                        let _e826 = (select(1u, _e249, (1u < _e249)) * select(1u, _e257, (1u < _e257)));
+                                        let _e827 = (_e821 > _e675);
+                                        let _e831 = (_e249 >> bitcast<u32>(1u));
+                                        let _e835 = (_e257 >> bitcast<u32>(1u));
+                                        let _e839 = (_e826 + (select(1u, _e831, (1u < _e831)) * select(1u, _e835, (1u < _e835))));
+                                        let _e841 = (_e821 > (_e675 * 4f));
+                                        let _e845 = (_e249 >> bitcast<u32>(2u));
+                                        let _e849 = (_e257 >> bitcast<u32>(2u));
+                                        let _e853 = (_e839 + (select(1u, _e845, (1u < _e845)) * select(1u, _e849, (1u < _e849))));
+                                        let _e855 = (_e821 > (_e675 * 16f));
+                                        let _e859 = (_e249 >> bitcast<u32>(3u));
+                                        let _e863 = (_e257 >> bitcast<u32>(3u));
+                                        let _e869 = (_e821 > (_e675 * 64f));
+                                        let _e871 = select(select(select(select(0u, _e826, _e827), _e839, _e841), _e853, _e855), (_e853 + (select(1u, _e859, (1u < _e859)) * select(1u, _e863, (1u < _e863)))), _e869);
+                                        let _e872 = (select(select(select(select(0u, 1u, _e827), 2u, _e841), 3u, _e855), 4u, _e869) & 31u);
+                                        let _e874 = (_e249 >> bitcast<u32>(_e872));
+                                        let _e876 = select(1u, _e874, (1u < _e874));
+                                        let _e878 = (_e257 >> bitcast<u32>(_e872));
                                         let _e880 = select(1u, _e878, (1u < _e878));
-                                        let _e882 = (_e259 >> bitcast<u32>(_e876));
-                                        let _e884 = select(1u, _e882, (1u < _e882));
-                                        let _e887 = (round(_e821) * (1f / _e227.member.member.x));
-                                        let _e890 = (round(_e822) * (1f / _e227.member.member.y));
-                                        let _e891 = (_e457 + _e887);
-                                        let _e892 = (_e460 + _e890);
-                                        let _e893 = (_e457 - _e887);
-                                        let _e894 = (_e460 - _e890);
-                                        let _e896 = f32(bitcast<i32>(_e880));
-                                        let _e897 = (_e891 * _e896);
-                                        let _e900 = f32(bitcast<i32>((_e880 - 1u)));
-                                        let _e910 = f32(bitcast<i32>(_e884));
-                                        let _e911 = (_e892 * _e910);
-                                        let _e914 = f32(bitcast<i32>((_e884 - 1u)));
-                                        let _e928 = mips.member[((_e875 + ((bitcast<u32>((floor(select(0f, select(_e914, _e911, (_e911 < _e914)), (_e911 > 0f))) + 8388608f)) - 1258291200u) * _e880)) + (bitcast<u32>((floor(select(0f, select(_e900, _e897, (_e897 < _e900)), (_e897 > 0f))) + 8388608f)) - 1258291200u))];
-                                        let _e932 = ((((_e891 * 2f) - 1f) * _e227.member.member_1.x) * _e928);
-                                        let _e936 = ((((_e892 * -2f) + 1f) * _e227.member.member_1.y) * _e928);
-                                        let _e937 = (_e893 * _e896);
-                                        let _e946 = (_e894 * _e910);
-                                        let _e960 = mips.member[((_e875 + ((bitcast<u32>((floor(select(0f, select(_e914, _e946, (_e946 < _e914)), (_e946 > 0f))) + 8388608f)) - 1258291200u) * _e880)) + (bitcast<u32>((floor(select(0f, select(_e900, _e937, (_e937 < _e900)), (_e937 > 0f))) + 8388608f)) - 1258291200u))];
-                                        let _e964 = ((((_e893 * 2f) - 1f) * _e227.member.member_1.x) * _e960);
-                                        let _e968 = ((((_e894 * -2f) + 1f) * _e227.member.member_1.y) * _e960);
-                                        let _e969 = (_e932 - _e468);
-                                        let _e970 = (_e936 - _e475);
-                                        let _e971 = (_e928 - _e461);
-                                        let _e976 = (((_e969 * _e969) + (_e970 * _e970)) + (_e971 * _e971));
-                                        let _e977 = (_e243 <= 0f);
-                                        if _e977 {
-                                            phi_1539_ = true;
+                                        let _e883 = (round(_e817) * (1f / _e225.member.member.x));
+                                        let _e886 = (round(_e818) * (1f / _e225.member.member.y));
+                                        let _e887 = (_e455 + _e883);
+                                        let _e888 = (_e458 + _e886);
+                                        let _e889 = (_e455 - _e883);
+                                        let _e890 = (_e458 - _e886);
+                                        let _e892 = f32(bitcast<i32>(_e876));
+                                        let _e893 = (_e887 * _e892);
+                                        let _e896 = f32(bitcast<i32>((_e876 - 1u)));
+                                        let _e906 = f32(bitcast<i32>(_e880));
+                                        let _e907 = (_e888 * _e906);
+                                        let _e910 = f32(bitcast<i32>((_e880 - 1u)));
+                                        let _e924 = mips.member[((_e871 + ((bitcast<u32>((floor(select(0f, select(_e910, _e907, (_e907 < _e910)), (_e907 > 0f))) + 8388608f)) - 1258291200u) * _e876)) + (bitcast<u32>((floor(select(0f, select(_e896, _e893, (_e893 < _e896)), (_e893 > 0f))) + 8388608f)) - 1258291200u))];
+                                        let _e928 = ((((_e887 * 2f) - 1f) * _e225.member.member_1.x) * _e924);
+                                        let _e932 = ((((_e888 * -2f) + 1f) * _e225.member.member_1.y) * _e924);
+                                        let _e933 = (_e889 * _e892);
+                                        let _e942 = (_e890 * _e906);
+                                        let _e956 = mips.member[((_e871 + ((bitcast<u32>((floor(select(0f, select(_e910, _e942, (_e942 < _e910)), (_e942 > 0f))) + 8388608f)) - 1258291200u) * _e876)) + (bitcast<u32>((floor(select(0f, select(_e896, _e933, (_e933 < _e896)), (_e933 > 0f))) + 8388608f)) - 1258291200u))];
+                                        let _e960 = ((((_e889 * 2f) - 1f) * _e225.member.member_1.x) * _e956);
+                                        let _e964 = ((((_e890 * -2f) + 1f) * _e225.member.member_1.y) * _e956);
+                                        let _e965 = (_e928 - _e466);
+                                        let _e966 = (_e932 - _e473);
+                                        let _e967 = (_e924 - _e459);
+                                        let _e968 = (_e241 > 0f);
+                                        if _e968 {
+                                            phi_1561_ = select(true, false, ((((_e965 * _e965) + (_e966 * _e966)) + (_e967 * _e967)) > (_e241 * _e241)));
                                         } else {
-                                            phi_1539_ = (_e976 <= (_e243 * _e243));
+                                            phi_1561_ = true;
                                         }
-                                        let _e981 = phi_1539_;
-                                        if _e981 {
-                                            phi_1555_ = ((((_e969 * _e548) + (_e970 * _e549)) + (_e971 * _e550)) > (0.018f * sqrt(_e976)));
-                                        } else {
-                                            phi_1555_ = false;
-                                        }
-                                        let _e991 = phi_1555_;
-                                        if _e991 {
-                                            let _e1222 = (0.5f / _e928);
-                                            let _e1228 = frame.member[0u].member_1.member.member.member_1[0u];
-                                            let _e1236 = frame.member[0u].member_1.member.member.member_1[1u];
-                                            let _e1241 = frame.member[0u].member_1.member_5[0u];
-                                            let _e1244 = frame.member[0u].member_1.member_5[1u];
-                                            let _e1245 = f32(_e1241);
-                                            let _e1246 = f32(_e1244);
-                                            let _e1248 = frame.member[0u].member_1.member_4;
-                                            let _e1249 = f32(_e1248);
-                                            let _e1250 = (2u * _e1248);
-                                            let _e1251 = (_e1241 + _e1250);
-                                            let _e1257 = (floor(((((_e932 * _e1222) / _e1228) + 0.5f) * _e1245)) + _e1249);
-                                            let _e1258 = f32((_e1251 - 1u));
-                                            let _e1262 = select(0f, select(_e1258, _e1257, (_e1257 < _e1258)), (_e1257 > 0f));
-                                            let _e1265 = (floor(((0.5f - ((_e936 * _e1222) / _e1236)) * _e1246)) + _e1249);
-                                            let _e1266 = f32(((_e1244 + _e1250) - 1u));
-                                            let _e1270 = select(0f, select(_e1266, _e1265, (_e1265 < _e1266)), (_e1265 > 0f));
-                                            let _e1275 = select(select(u32(_e1262), 0u, (_e1262 < 0f)), 4294967295u, (_e1262 > 4294967000f));
-                                            let _e1280 = select(select(u32(_e1270), 0u, (_e1270 < 0f)), 4294967295u, (_e1270 > 4294967000f));
-                                            let _e1283 = bitcast<i32>(_e1248);
-                                            let _e1289 = frame.member[0u].member_1.member_8;
-                                            let _e1291 = frame.member[0u].member_1.member_12;
-                                            let _e1298 = (((((_e1280 % 4u) * 4u) + (_e1275 % 4u)) + (_e1291 % 16u)) % 16u);
-                                            if (_e1289 == 1u) {
-                                                local_5 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
-                                                let _e1311 = (_e1298 < 16u);
-                                                if _e1311 {
-                                                } else {
-                                                    phi_7297_ = true;
-                                                    break;
-                                                }
-                                                let _e1314 = local_5[_e1298][0u];
-                                                local_6 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
-                                                if _e1311 {
-                                                } else {
-                                                    phi_7297_ = true;
-                                                    break;
-                                                }
-                                                let _e1317 = local_6[_e1298][1u];
-                                                phi_1715_ = vec2<f32>(_e1314, _e1317);
+                                        let _e978 = phi_1561_;
+                                        if _e978 {
+                                            let _e979 = (_e485 * _e238);
+                                            let _e980 = (_e486 * _e238);
+                                            let _e981 = (_e487 * _e238);
+                                            let _e985 = vec3<f32>((_e965 - _e979), (_e966 - _e980), (_e967 - _e981));
+                                            let _e990 = (((_e965 * _e485) + (_e966 * _e486)) + (_e967 * _e487));
+                                            let _e994 = (_e965 - (_e485 * _e990));
+                                            let _e995 = (_e966 - (_e486 * _e990));
+                                            let _e996 = (_e967 - (_e487 * _e990));
+                                            let _e999 = ((_e995 * _e487) - (_e486 * _e996));
+                                            let _e1002 = ((_e996 * _e485) - (_e487 * _e994));
+                                            let _e1005 = ((_e994 * _e486) - (_e485 * _e995));
+                                            let _e1016 = ((((_e546 * _e999) + (_e547 * _e1002)) + (_e548 * _e1005)) / (((_e999 * _e999) + (_e1002 * _e1002)) + (_e1005 * _e1005)));
+                                            let _e1020 = (_e546 - (_e999 * _e1016));
+                                            let _e1021 = (_e547 - (_e1002 * _e1016));
+                                            let _e1022 = (_e548 - (_e1005 * _e1016));
+                                            let _e1028 = inverseSqrt((((_e1020 * _e1020) + (_e1021 * _e1021)) + (_e1022 * _e1022)));
+                                            let _e1034 = ((((_e1020 * _e485) + (_e1021 * _e486)) + (_e1022 * _e487)) * _e1028);
+                                            let _e1038 = select(0f, select(1f, _e1034, (_e1034 < 1f)), (_e1034 > 0f));
+                                            let _e1039 = abs(_e1038);
+                                            let _e1049 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1039, 0.00667009f), _e1039, -0.017088126f), _e1039, 0.03089188f), _e1039, -0.050174303f), _e1039, 0.08897899f), _e1039, -0.2145988f), _e1039, 1.5707963f) * sqrt((1f - _e1039)));
+                                            let _e1052 = select((3.1415927f - _e1049), _e1049, (_e1038 >= 0f));
+                                            let _e1060 = select(_e1052, -(_e1052), ((((_e994 * _e1020) + (_e995 * _e1021)) + (_e996 * _e1022)) < 0f));
+                                            let _e1061 = (_e1028 * 0.02f);
+                                            let _e1064 = select(0.19634955f, _e1061, ((_e1061 < 0.19634955f) || false));
+                                            let _e1070 = ((((_e994 * _e994) + (_e995 * _e995)) + (_e996 * _e996)) <= 0f);
+                                            let _e1075 = (((_e965 * _e965) + (_e966 * _e966)) + (_e967 * _e967));
+                                            if (_e241 <= 0f) {
+                                                phi_1716_ = true;
                                             } else {
-                                                if (_e1289 == 2u) {
-                                                    local_7 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
-                                                    let _e1301 = (_e1298 < 16u);
-                                                    if _e1301 {
+                                                phi_1716_ = (_e1075 <= (_e241 * _e241));
+                                            }
+                                            let _e1080 = phi_1716_;
+                                            if _e1080 {
+                                                phi_1732_ = ((((_e965 * _e546) + (_e966 * _e547)) + (_e967 * _e548)) > (0.018f * sqrt(_e1075)));
+                                            } else {
+                                                phi_1732_ = false;
+                                            }
+                                            let _e1090 = phi_1732_;
+                                            if _e1090 {
+                                                let _e1091 = (0.5f / _e924);
+                                                let _e1097 = frame.member[0u].member_1.member.member.member_1[0u];
+                                                let _e1105 = frame.member[0u].member_1.member.member.member_1[1u];
+                                                let _e1110 = frame.member[0u].member_1.member_5[0u];
+                                                let _e1113 = frame.member[0u].member_1.member_5[1u];
+                                                let _e1114 = f32(_e1110);
+                                                let _e1115 = f32(_e1113);
+                                                let _e1117 = frame.member[0u].member_1.member_4;
+                                                let _e1118 = f32(_e1117);
+                                                let _e1119 = (2u * _e1117);
+                                                let _e1120 = (_e1110 + _e1119);
+                                                let _e1126 = (floor(((((_e928 * _e1091) / _e1097) + 0.5f) * _e1114)) + _e1118);
+                                                let _e1127 = f32((_e1120 - 1u));
+                                                let _e1131 = select(0f, select(_e1127, _e1126, (_e1126 < _e1127)), (_e1126 > 0f));
+                                                let _e1134 = (floor(((0.5f - ((_e932 * _e1091) / _e1105)) * _e1115)) + _e1118);
+                                                let _e1135 = f32(((_e1113 + _e1119) - 1u));
+                                                let _e1139 = select(0f, select(_e1135, _e1134, (_e1134 < _e1135)), (_e1134 > 0f));
+                                                let _e1144 = select(select(u32(_e1131), 0u, (_e1131 < 0f)), 4294967295u, (_e1131 > 4294967000f));
+                                                let _e1149 = select(select(u32(_e1139), 0u, (_e1139 < 0f)), 4294967295u, (_e1139 > 4294967000f));
+                                                let _e1152 = bitcast<i32>(_e1117);
+                                                let _e1158 = frame.member[0u].member_1.member_8;
+                                                let _e1160 = frame.member[0u].member_1.member_12;
+                                                let _e1167 = (((((_e1149 % 4u) * 4u) + (_e1144 % 4u)) + (_e1160 % 16u)) % 16u);
+                                                if (_e1158 == 1u) {
+                                                    local_5 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
+                                                    let _e1180 = (_e1167 < 16u);
+                                                    if _e1180 {
                                                     } else {
-                                                        phi_7297_ = true;
+                                                        phi_8008_ = true;
                                                         break;
                                                     }
-                                                    let _e1304 = local_7[_e1298][0u];
-                                                    local_8 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
-                                                    if _e1301 {
+                                                    let _e1183 = local_5[_e1167][0u];
+                                                    local_6 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
+                                                    if _e1180 {
                                                     } else {
-                                                        phi_7297_ = true;
+                                                        phi_8008_ = true;
                                                         break;
                                                     }
-                                                    let _e1307 = local_8[_e1298][1u];
-                                                    phi_1714_ = vec2<f32>(_e1304, _e1307);
+                                                    let _e1186 = local_6[_e1167][1u];
+                                                    phi_1892_ = vec2<f32>(_e1183, _e1186);
                                                 } else {
-                                                    phi_1714_ = vec2<f32>(0.5f, 0.5f);
-                                                }
-                                                let _e1310 = phi_1714_;
-                                                phi_1715_ = _e1310;
-                                            }
-                                            let _e1320 = phi_1715_;
-                                            let _e1325 = ((f32((bitcast<i32>(_e1275) - _e1283)) + _e1320.x) / _e1245);
-                                            let _e1326 = ((f32((bitcast<i32>(_e1280) - _e1283)) + _e1320.y) / _e1246);
-                                            let _e1331 = frame.member[0u].member_1.member.member.member[0u];
-                                            let _e1336 = select(select(u32(_e1331), 0u, (_e1331 < 0f)), 4294967295u, (_e1331 > 4294967000f));
-                                            let _e1341 = frame.member[0u].member_1.member.member.member[1u];
-                                            let _e1351 = (select(0f, select(1f, _e1325, (_e1325 < 1f)), (_e1325 > 0f)) * _e1331);
-                                            let _e1354 = f32(bitcast<i32>((_e1336 - 1u)));
-                                            let _e1367 = (select(0f, select(1f, _e1326, (_e1326 < 1f)), (_e1326 > 0f)) * _e1341);
-                                            let _e1370 = f32(bitcast<i32>((select(select(u32(_e1341), 0u, (_e1341 < 0f)), 4294967295u, (_e1341 > 4294967000f)) - 1u)));
-                                            let _e1380 = (((bitcast<u32>((floor(select(0f, select(_e1370, _e1367, (_e1367 < _e1370)), (_e1367 > 0f))) + 8388608f)) - 1258291200u) * _e1336) + (bitcast<u32>((floor(select(0f, select(_e1354, _e1351, (_e1351 < _e1354)), (_e1351 > 0f))) + 8388608f)) - 1258291200u));
-                                            if (_e1380 < _e187) {
-                                            } else {
-                                                phi_7297_ = true;
-                                                break;
-                                            }
-                                            let _e1383 = mips.member[_e1380];
-                                            if (abs((_e1383 - _e928)) > _e240) {
-                                                if (_e243 > 0f) {
-                                                    phi_1848_ = (_e976 > (_e243 * _e243));
-                                                } else {
-                                                    phi_1848_ = false;
-                                                }
-                                                let _e2210 = phi_1848_;
-                                                if !(_e2210) {
-                                                    let _e2216 = (((_e969 * _e487) + (_e970 * _e488)) + (_e971 * _e489));
-                                                    let _e2220 = (_e969 - (_e487 * _e2216));
-                                                    let _e2221 = (_e970 - (_e488 * _e2216));
-                                                    let _e2222 = (_e971 - (_e489 * _e2216));
-                                                    let _e2225 = ((_e2221 * _e489) - (_e488 * _e2222));
-                                                    let _e2228 = ((_e2222 * _e487) - (_e489 * _e2220));
-                                                    let _e2231 = ((_e2220 * _e488) - (_e487 * _e2221));
-                                                    let _e2242 = ((((_e548 * _e2225) + (_e549 * _e2228)) + (_e550 * _e2231)) / (((_e2225 * _e2225) + (_e2228 * _e2228)) + (_e2231 * _e2231)));
-                                                    let _e2246 = (_e548 - (_e2225 * _e2242));
-                                                    let _e2247 = (_e549 - (_e2228 * _e2242));
-                                                    let _e2248 = (_e550 - (_e2231 * _e2242));
-                                                    let _e2254 = inverseSqrt((((_e2246 * _e2246) + (_e2247 * _e2247)) + (_e2248 * _e2248)));
-                                                    let _e2260 = ((((_e2246 * _e487) + (_e2247 * _e488)) + (_e2248 * _e489)) * _e2254);
-                                                    let _e2264 = select(0f, select(1f, _e2260, (_e2260 < 1f)), (_e2260 > 0f));
-                                                    let _e2265 = abs(_e2264);
-                                                    let _e2275 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2265, 0.00667009f), _e2265, -0.017088126f), _e2265, 0.03089188f), _e2265, -0.050174303f), _e2265, 0.08897899f), _e2265, -0.2145988f), _e2265, 1.5707963f) * sqrt((1f - _e2265)));
-                                                    let _e2278 = select((3.1415927f - _e2275), _e2275, (_e2264 >= 0f));
-                                                    let _e2286 = select(_e2278, -(_e2278), ((((_e2220 * _e2246) + (_e2221 * _e2247)) + (_e2222 * _e2248)) < 0f));
-                                                    let _e2287 = (_e2254 * 0.02f);
-                                                    let _e2290 = select(0.19634955f, _e2287, ((_e2287 < 0.19634955f) || false));
-                                                    let _e2300 = (_e969 - (_e487 * _e240));
-                                                    let _e2301 = (_e970 - (_e488 * _e240));
-                                                    let _e2302 = (_e971 - (_e489 * _e240));
-                                                    let _e2304 = (_e2216 * inverseSqrt(_e976));
-                                                    let _e2308 = select(-1f, select(1f, _e2304, (_e2304 < 1f)), (_e2304 > -1f));
-                                                    let _e2309 = abs(_e2308);
-                                                    let _e2319 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2309, 0.00667009f), _e2309, -0.017088126f), _e2309, 0.03089188f), _e2309, -0.050174303f), _e2309, 0.08897899f), _e2309, -0.2145988f), _e2309, 1.5707963f) * sqrt((1f - _e2309)));
-                                                    let _e2326 = ((((select((3.1415927f - _e2319), _e2319, (_e2308 >= 0f)) + _e2290) - _e2286) + 1.5707964f) * 0.31830987f);
-                                                    let _e2330 = select(0f, select(1f, _e2326, (_e2326 < 1f)), (_e2326 > 0f));
-                                                    let _e2342 = ((((_e2300 * _e487) + (_e2301 * _e488)) + (_e2302 * _e489)) * inverseSqrt((((_e2300 * _e2300) + (_e2301 * _e2301)) + (_e2302 * _e2302))));
-                                                    let _e2346 = select(-1f, select(1f, _e2342, (_e2342 < 1f)), (_e2342 > -1f));
-                                                    let _e2347 = abs(_e2346);
-                                                    let _e2357 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2347, 0.00667009f), _e2347, -0.017088126f), _e2347, 0.03089188f), _e2347, -0.050174303f), _e2347, 0.08897899f), _e2347, -0.2145988f), _e2347, 1.5707963f) * sqrt((1f - _e2347)));
-                                                    let _e2364 = ((((select((3.1415927f - _e2357), _e2357, (_e2346 >= 0f)) + _e2290) - _e2286) + 1.5707964f) * 0.31830987f);
-                                                    let _e2368 = select(0f, select(1f, _e2364, (_e2364 < 1f)), (_e2364 > 0f));
-                                                    let _e2370 = (_e2368 != _e2368);
-                                                    let _e2372 = select(_e2368, _e2330, ((_e2330 < _e2368) || _e2370));
-                                                    let _e2375 = select(_e2368, _e2330, ((_e2330 > _e2368) || _e2370));
-                                                    let _e2377 = floor((_e2372 * 32f));
-                                                    if (_e237 == 1u) {
-                                                        let _e2385 = -(floor((_e2375 * -32f)));
-                                                        let _e2390 = (select(32f, _e2385, ((_e2385 < 32f) || false)) - _e2377);
-                                                        phi_2164_ = select(select(0f, _e2390, ((_e2390 > 0f) || false)), 0f, (_e2375 <= _e2372));
-                                                    } else {
-                                                        phi_2164_ = -(floor(((_e2375 - _e2372) * -32f)));
-                                                    }
-                                                    let _e2396 = phi_2164_;
-                                                    let _e2404 = (bitcast<u32>((floor(select(0f, select(32f, _e2377, (_e2377 < 32f)), (_e2377 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e2412 = (bitcast<u32>((floor(select(0f, select(32f, _e2396, (_e2396 < 32f)), (_e2396 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e2404 >= 32u) {
-                                                        phi_2218_ = u32();
-                                                        phi_2219_ = true;
-                                                    } else {
-                                                        let _e2414 = (_e2412 == 0u);
-                                                        if _e2414 {
-                                                            phi_2217_ = u32();
+                                                    if (_e1158 == 2u) {
+                                                        local_7 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
+                                                        let _e1170 = (_e1167 < 16u);
+                                                        if _e1170 {
                                                         } else {
-                                                            if (_e2412 >= 32u) {
-                                                                phi_2214_ = 4294967295u;
-                                                            } else {
-                                                                phi_2214_ = ((1u << bitcast<u32>((_e2412 & 31u))) - 1u);
-                                                            }
-                                                            let _e2421 = phi_2214_;
-                                                            phi_2217_ = (_e2421 << bitcast<u32>((_e2404 & 31u)));
-                                                        }
-                                                        let _e2426 = phi_2217_;
-                                                        phi_2218_ = _e2426;
-                                                        phi_2219_ = _e2414;
-                                                    }
-                                                    let _e2428 = phi_2218_;
-                                                    let _e2430 = phi_2219_;
-                                                    phi_2232_ = select(select(select(_e2428, 0u, _e2430), 0u, ((((_e2220 * _e2220) + (_e2221 * _e2221)) + (_e2222 * _e2222)) <= 0f)), 0u, _e2210);
-                                                } else {
-                                                    phi_2232_ = 0u;
-                                                }
-                                                let _e2435 = phi_2232_;
-                                                phi_7115_ = _e790;
-                                                phi_3615_ = _e2435;
-                                                phi_3616_ = u32();
-                                                phi_3617_ = true;
-                                            } else {
-                                                let _e1391 = frame.member[0u].member_1.member_6;
-                                                let _e1392 = (((_e1280 * _e1251) + _e1275) * _e1391);
-                                                let _e1396 = frame.member[0u].member_1.member.member.member_3;
-                                                phi_2255_ = 0u;
-                                                phi_2258_ = _e1396;
-                                                loop {
-                                                    let _e1398 = phi_2255_;
-                                                    let _e1400 = phi_2258_;
-                                                    local_9 = _e1400;
-                                                    local_10 = _e1400;
-                                                    local_11 = _e1400;
-                                                    local_12 = _e1400;
-                                                    local_13 = _e1400;
-                                                    local_45 = _e1400;
-                                                    let _e1401 = (_e1398 < _e1391);
-                                                    if _e1401 {
-                                                        let _e1402 = (_e1392 + _e1398);
-                                                        if (_e1402 < _e190) {
-                                                        } else {
-                                                            phi_6894_ = true;
+                                                            phi_8008_ = true;
                                                             break;
                                                         }
-                                                        let _e1405 = sd_map.member[_e1402];
-                                                        let _e1409 = frame.member[0u].member_1.member.member.member_2;
-                                                        let _e1412 = ((_e1405 * (_e1396 - _e1409)) + _e1409);
-                                                        if (_e1405 < 1f) {
-                                                            if (_e1412 > (_e928 * 1.001f)) {
-                                                                phi_2300_ = select(_e1400, _e1412, (_e1412 < _e1400));
-                                                            } else {
-                                                                phi_2300_ = _e1400;
-                                                            }
-                                                            let _e1418 = phi_2300_;
-                                                            phi_2301_ = _e1418;
+                                                        let _e1173 = local_7[_e1167][0u];
+                                                        local_8 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
+                                                        if _e1170 {
                                                         } else {
-                                                            phi_2301_ = _e1400;
+                                                            phi_8008_ = true;
+                                                            break;
                                                         }
-                                                        let _e1420 = phi_2301_;
-                                                        phi_2256_ = (_e1398 + 1u);
-                                                        phi_2259_ = _e1420;
+                                                        let _e1176 = local_8[_e1167][1u];
+                                                        phi_1891_ = vec2<f32>(_e1173, _e1176);
                                                     } else {
-                                                        phi_2256_ = u32();
-                                                        phi_2259_ = f32();
+                                                        phi_1891_ = vec2<f32>(0.5f, 0.5f);
                                                     }
-                                                    let _e1423 = phi_2256_;
-                                                    let _e1425 = phi_2259_;
-                                                    continue;
-                                                    continuing {
-                                                        phi_2255_ = _e1423;
-                                                        phi_2258_ = _e1425;
-                                                        phi_6894_ = _e790;
-                                                        break if !(_e1401);
-                                                    }
+                                                    let _e1179 = phi_1891_;
+                                                    phi_1892_ = _e1179;
                                                 }
-                                                let _e1428 = phi_6894_;
-                                                phi_7297_ = _e1428;
-                                                if _e1428 {
-                                                    break;
-                                                }
-                                                let _e1430 = local_9;
-                                                let _e1431 = (_e1430 >= _e1396);
-                                                if _e1431 {
-                                                    if (_e243 > 0f) {
-                                                        phi_2320_ = (_e976 > (_e243 * _e243));
-                                                    } else {
-                                                        phi_2320_ = false;
-                                                    }
-                                                    let _e1974 = phi_2320_;
-                                                    if !(_e1974) {
-                                                        let _e1980 = (((_e969 * _e487) + (_e970 * _e488)) + (_e971 * _e489));
-                                                        let _e1984 = (_e969 - (_e487 * _e1980));
-                                                        let _e1985 = (_e970 - (_e488 * _e1980));
-                                                        let _e1986 = (_e971 - (_e489 * _e1980));
-                                                        let _e1989 = ((_e1985 * _e489) - (_e488 * _e1986));
-                                                        let _e1992 = ((_e1986 * _e487) - (_e489 * _e1984));
-                                                        let _e1995 = ((_e1984 * _e488) - (_e487 * _e1985));
-                                                        let _e2006 = ((((_e548 * _e1989) + (_e549 * _e1992)) + (_e550 * _e1995)) / (((_e1989 * _e1989) + (_e1992 * _e1992)) + (_e1995 * _e1995)));
-                                                        let _e2010 = (_e548 - (_e1989 * _e2006));
-                                                        let _e2011 = (_e549 - (_e1992 * _e2006));
-                                                        let _e2012 = (_e550 - (_e1995 * _e2006));
-                                                        let _e2018 = inverseSqrt((((_e2010 * _e2010) + (_e2011 * _e2011)) + (_e2012 * _e2012)));
-                                                        let _e2024 = ((((_e2010 * _e487) + (_e2011 * _e488)) + (_e2012 * _e489)) * _e2018);
-                                                        let _e2028 = select(0f, select(1f, _e2024, (_e2024 < 1f)), (_e2024 > 0f));
-                                                        let _e2029 = abs(_e2028);
-                                                        let _e2039 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2029, 0.00667009f), _e2029, -0.017088126f), _e2029, 0.03089188f), _e2029, -0.050174303f), _e2029, 0.08897899f), _e2029, -0.2145988f), _e2029, 1.5707963f) * sqrt((1f - _e2029)));
-                                                        let _e2042 = select((3.1415927f - _e2039), _e2039, (_e2028 >= 0f));
-                                                        let _e2050 = select(_e2042, -(_e2042), ((((_e1984 * _e2010) + (_e1985 * _e2011)) + (_e1986 * _e2012)) < 0f));
-                                                        let _e2051 = (_e2018 * 0.02f);
-                                                        let _e2054 = select(0.19634955f, _e2051, ((_e2051 < 0.19634955f) || false));
-                                                        let _e2064 = (_e969 - (_e487 * _e240));
-                                                        let _e2065 = (_e970 - (_e488 * _e240));
-                                                        let _e2066 = (_e971 - (_e489 * _e240));
-                                                        let _e2068 = (_e1980 * inverseSqrt(_e976));
-                                                        let _e2072 = select(-1f, select(1f, _e2068, (_e2068 < 1f)), (_e2068 > -1f));
-                                                        let _e2073 = abs(_e2072);
-                                                        let _e2083 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2073, 0.00667009f), _e2073, -0.017088126f), _e2073, 0.03089188f), _e2073, -0.050174303f), _e2073, 0.08897899f), _e2073, -0.2145988f), _e2073, 1.5707963f) * sqrt((1f - _e2073)));
-                                                        let _e2090 = ((((select((3.1415927f - _e2083), _e2083, (_e2072 >= 0f)) + _e2054) - _e2050) + 1.5707964f) * 0.31830987f);
-                                                        let _e2094 = select(0f, select(1f, _e2090, (_e2090 < 1f)), (_e2090 > 0f));
-                                                        let _e2106 = ((((_e2064 * _e487) + (_e2065 * _e488)) + (_e2066 * _e489)) * inverseSqrt((((_e2064 * _e2064) + (_e2065 * _e2065)) + (_e2066 * _e2066))));
-                                                        let _e2110 = select(-1f, select(1f, _e2106, (_e2106 < 1f)), (_e2106 > -1f));
-                                                        let _e2111 = abs(_e2110);
-                                                        let _e2121 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2111, 0.00667009f), _e2111, -0.017088126f), _e2111, 0.03089188f), _e2111, -0.050174303f), _e2111, 0.08897899f), _e2111, -0.2145988f), _e2111, 1.5707963f) * sqrt((1f - _e2111)));
-                                                        let _e2128 = ((((select((3.1415927f - _e2121), _e2121, (_e2110 >= 0f)) + _e2054) - _e2050) + 1.5707964f) * 0.31830987f);
-                                                        let _e2132 = select(0f, select(1f, _e2128, (_e2128 < 1f)), (_e2128 > 0f));
-                                                        let _e2134 = (_e2132 != _e2132);
-                                                        let _e2136 = select(_e2132, _e2094, ((_e2094 < _e2132) || _e2134));
-                                                        let _e2139 = select(_e2132, _e2094, ((_e2094 > _e2132) || _e2134));
-                                                        let _e2141 = floor((_e2136 * 32f));
-                                                        if (_e237 == 1u) {
-                                                            let _e2149 = -(floor((_e2139 * -32f)));
-                                                            let _e2154 = (select(32f, _e2149, ((_e2149 < 32f) || false)) - _e2141);
-                                                            phi_2636_ = select(select(0f, _e2154, ((_e2154 > 0f) || false)), 0f, (_e2139 <= _e2136));
-                                                        } else {
-                                                            phi_2636_ = -(floor(((_e2139 - _e2136) * -32f)));
-                                                        }
-                                                        let _e2160 = phi_2636_;
-                                                        let _e2168 = (bitcast<u32>((floor(select(0f, select(32f, _e2141, (_e2141 < 32f)), (_e2141 > 0f))) + 8388608f)) - 1258291200u);
-                                                        let _e2176 = (bitcast<u32>((floor(select(0f, select(32f, _e2160, (_e2160 < 32f)), (_e2160 > 0f))) + 8388608f)) - 1258291200u);
-                                                        if (_e2168 >= 32u) {
-                                                            phi_2690_ = u32();
-                                                            phi_2691_ = true;
-                                                        } else {
-                                                            let _e2178 = (_e2176 == 0u);
-                                                            if _e2178 {
-                                                                phi_2689_ = u32();
-                                                            } else {
-                                                                if (_e2176 >= 32u) {
-                                                                    phi_2686_ = 4294967295u;
-                                                                } else {
-                                                                    phi_2686_ = ((1u << bitcast<u32>((_e2176 & 31u))) - 1u);
-                                                                }
-                                                                let _e2185 = phi_2686_;
-                                                                phi_2689_ = (_e2185 << bitcast<u32>((_e2168 & 31u)));
-                                                            }
-                                                            let _e2190 = phi_2689_;
-                                                            phi_2690_ = _e2190;
-                                                            phi_2691_ = _e2178;
-                                                        }
-                                                        let _e2192 = phi_2690_;
-                                                        let _e2194 = phi_2691_;
-                                                        phi_2704_ = select(select(select(_e2192, 0u, _e2194), 0u, ((((_e1984 * _e1984) + (_e1985 * _e1985)) + (_e1986 * _e1986)) <= 0f)), 0u, _e1974);
-                                                    } else {
-                                                        phi_2704_ = 0u;
-                                                    }
-                                                    let _e2199 = phi_2704_;
-                                                    phi_7150_ = _e1428;
-                                                    phi_3613_ = _e2199;
-                                                    phi_3614_ = u32();
+                                                let _e1189 = phi_1892_;
+                                                let _e1194 = ((f32((bitcast<i32>(_e1144) - _e1152)) + _e1189.x) / _e1114);
+                                                let _e1195 = ((f32((bitcast<i32>(_e1149) - _e1152)) + _e1189.y) / _e1115);
+                                                let _e1200 = frame.member[0u].member_1.member.member.member[0u];
+                                                let _e1205 = select(select(u32(_e1200), 0u, (_e1200 < 0f)), 4294967295u, (_e1200 > 4294967000f));
+                                                let _e1210 = frame.member[0u].member_1.member.member.member[1u];
+                                                let _e1220 = (select(0f, select(1f, _e1194, (_e1194 < 1f)), (_e1194 > 0f)) * _e1200);
+                                                let _e1223 = f32(bitcast<i32>((_e1205 - 1u)));
+                                                let _e1236 = (select(0f, select(1f, _e1195, (_e1195 < 1f)), (_e1195 > 0f)) * _e1210);
+                                                let _e1239 = f32(bitcast<i32>((select(select(u32(_e1210), 0u, (_e1210 < 0f)), 4294967295u, (_e1210 > 4294967000f)) - 1u)));
+                                                let _e1251 = mips.member[(((bitcast<u32>((floor(select(0f, select(_e1239, _e1236, (_e1236 < _e1239)), (_e1236 > 0f))) + 8388608f)) - 1258291200u) * _e1205) + (bitcast<u32>((floor(select(0f, select(_e1223, _e1220, (_e1220 < _e1223)), (_e1220 > 0f))) + 8388608f)) - 1258291200u))];
+                                                if (abs((_e1251 - _e924)) <= _e238) {
+                                                    phi_2010_ = (_e924 * 1.001f);
                                                 } else {
-                                                    let _e1436 = (((_e969 * _e487) + (_e970 * _e488)) + (_e971 * _e489));
-                                                    let _e1440 = (_e969 - (_e487 * _e1436));
-                                                    let _e1441 = (_e970 - (_e488 * _e1436));
-                                                    let _e1442 = (_e971 - (_e489 * _e1436));
-                                                    let _e1445 = ((_e1441 * _e489) - (_e488 * _e1442));
-                                                    let _e1448 = ((_e1442 * _e487) - (_e489 * _e1440));
-                                                    let _e1451 = ((_e1440 * _e488) - (_e487 * _e1441));
-                                                    let _e1462 = ((((_e548 * _e1445) + (_e549 * _e1448)) + (_e550 * _e1451)) / (((_e1445 * _e1445) + (_e1448 * _e1448)) + (_e1451 * _e1451)));
-                                                    let _e1466 = (_e548 - (_e1445 * _e1462));
-                                                    let _e1467 = (_e549 - (_e1448 * _e1462));
-                                                    let _e1468 = (_e550 - (_e1451 * _e1462));
-                                                    let _e1474 = inverseSqrt((((_e1466 * _e1466) + (_e1467 * _e1467)) + (_e1468 * _e1468)));
-                                                    let _e1480 = ((((_e1466 * _e487) + (_e1467 * _e488)) + (_e1468 * _e489)) * _e1474);
-                                                    let _e1484 = select(0f, select(1f, _e1480, (_e1480 < 1f)), (_e1480 > 0f));
-                                                    let _e1485 = abs(_e1484);
-                                                    let _e1495 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1485, 0.00667009f), _e1485, -0.017088126f), _e1485, 0.03089188f), _e1485, -0.050174303f), _e1485, 0.08897899f), _e1485, -0.2145988f), _e1485, 1.5707963f) * sqrt((1f - _e1485)));
-                                                    let _e1498 = select((3.1415927f - _e1495), _e1495, (_e1484 >= 0f));
-                                                    let _e1506 = select(_e1498, -(_e1498), ((((_e1440 * _e1466) + (_e1441 * _e1467)) + (_e1442 * _e1468)) < 0f));
-                                                    let _e1507 = (_e1474 * 0.02f);
-                                                    let _e1510 = select(0.19634955f, _e1507, ((_e1507 < 0.19634955f) || false));
-                                                    let _e1516 = ((((_e1440 * _e1440) + (_e1441 * _e1441)) + (_e1442 * _e1442)) <= 0f);
-                                                    let _e1517 = (_e487 * _e240);
-                                                    let _e1518 = (_e488 * _e240);
-                                                    let _e1519 = (_e489 * _e240);
-                                                    let _e1526 = local_10;
-                                                    if (_e1526 > (_e928 + _e240)) {
-                                                        let _e1532 = local_11;
-                                                        let _e1538 = local_12;
-                                                        let _e1541 = local_13;
-                                                        phi_2866_ = (vec3<f32>(((((_e1325 * 2f) - 1f) * _e1228) * _e1532), ((((_e1326 * -2f) + 1f) * _e1236) * _e1538), _e1541) - _e476);
-                                                    } else {
-                                                        phi_2866_ = vec3<f32>((_e969 - _e1517), (_e970 - _e1518), (_e971 - _e1519));
-                                                    }
-                                                    let _e1545 = phi_2866_;
-                                                    let _e1547 = (_e1436 * inverseSqrt(_e976));
-                                                    let _e1551 = select(-1f, select(1f, _e1547, (_e1547 < 1f)), (_e1547 > -1f));
-                                                    let _e1552 = abs(_e1551);
-                                                    let _e1562 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1552, 0.00667009f), _e1552, -0.017088126f), _e1552, 0.03089188f), _e1552, -0.050174303f), _e1552, 0.08897899f), _e1552, -0.2145988f), _e1552, 1.5707963f) * sqrt((1f - _e1552)));
-                                                    let _e1569 = ((((select((3.1415927f - _e1562), _e1562, (_e1551 >= 0f)) + _e1510) - _e1506) + 1.5707964f) * 0.31830987f);
-                                                    let _e1573 = select(0f, select(1f, _e1569, (_e1569 < 1f)), (_e1569 > 0f));
-                                                    let _e1588 = ((((_e1545.x * _e487) + (_e1545.y * _e488)) + (_e1545.z * _e489)) * inverseSqrt((((_e1545.x * _e1545.x) + (_e1545.y * _e1545.y)) + (_e1545.z * _e1545.z))));
-                                                    let _e1592 = select(-1f, select(1f, _e1588, (_e1588 < 1f)), (_e1588 > -1f));
-                                                    let _e1593 = abs(_e1592);
-                                                    let _e1603 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1593, 0.00667009f), _e1593, -0.017088126f), _e1593, 0.03089188f), _e1593, -0.050174303f), _e1593, 0.08897899f), _e1593, -0.2145988f), _e1593, 1.5707963f) * sqrt((1f - _e1593)));
-                                                    let _e1610 = ((((select((3.1415927f - _e1603), _e1603, (_e1592 >= 0f)) + _e1510) - _e1506) + 1.5707964f) * 0.31830987f);
-                                                    let _e1614 = select(0f, select(1f, _e1610, (_e1610 < 1f)), (_e1610 > 0f));
-                                                    let _e1616 = (_e1614 != _e1614);
-                                                    let _e1618 = select(_e1614, _e1573, ((_e1573 < _e1614) || _e1616));
-                                                    let _e1621 = select(_e1614, _e1573, ((_e1573 > _e1614) || _e1616));
-                                                    let _e1623 = floor((_e1618 * 32f));
-                                                    let _e1624 = (_e237 == 1u);
-                                                    if _e1624 {
-                                                        let _e1631 = -(floor((_e1621 * -32f)));
-                                                        let _e1636 = (select(32f, _e1631, ((_e1631 < 32f) || false)) - _e1623);
-                                                        phi_3053_ = select(select(0f, _e1636, ((_e1636 > 0f) || false)), 0f, (_e1621 <= _e1618));
-                                                    } else {
-                                                        phi_3053_ = -(floor(((_e1621 - _e1618) * -32f)));
-                                                    }
-                                                    let _e1642 = phi_3053_;
-                                                    let _e1650 = (bitcast<u32>((floor(select(0f, select(32f, _e1623, (_e1623 < 32f)), (_e1623 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e1658 = (bitcast<u32>((floor(select(0f, select(32f, _e1642, (_e1642 < 32f)), (_e1642 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e1650 >= 32u) {
-                                                        phi_3107_ = u32();
-                                                        phi_3108_ = true;
-                                                    } else {
-                                                        let _e1660 = (_e1658 == 0u);
-                                                        if _e1660 {
-                                                            phi_3106_ = u32();
-                                                        } else {
-                                                            if (_e1658 >= 32u) {
-                                                                phi_3103_ = 4294967295u;
-                                                            } else {
-                                                                phi_3103_ = ((1u << bitcast<u32>((_e1658 & 31u))) - 1u);
-                                                            }
-                                                            let _e1667 = phi_3103_;
-                                                            phi_3106_ = (_e1667 << bitcast<u32>((_e1650 & 31u)));
-                                                        }
-                                                        let _e1672 = phi_3106_;
-                                                        phi_3107_ = _e1672;
-                                                        phi_3108_ = _e1660;
-                                                    }
-                                                    let _e1674 = phi_3107_;
-                                                    let _e1676 = phi_3108_;
-                                                    phi_7021_ = _e1428;
-                                                    let _e4165 = local_45;
-                                                    phi_3118_ = _e4165;
-                                                    phi_3121_ = 1u;
-                                                    phi_3123_ = select(select(_e1674, 0u, _e1676), 0u, _e1516);
-                                                    loop {
-                                                        let _e1680 = phi_7021_;
-                                                        let _e1682 = phi_3118_;
-                                                        let _e1684 = phi_3121_;
-                                                        let _e1686 = phi_3123_;
-                                                        local_47 = _e1686;
-                                                        if (_e1684 < _e1391) {
-                                                            phi_3153_ = 0u;
-                                                            phi_3156_ = _e1396;
-                                                            loop {
-                                                                let _e1689 = phi_3153_;
-                                                                let _e1691 = phi_3156_;
-                                                                local_14 = _e1691;
-                                                                local_15 = _e1691;
-                                                                local_16 = _e1691;
-                                                                local_17 = _e1691;
-                                                                local_18 = _e1691;
-                                                                let _e1692 = (_e1689 < _e1391);
-                                                                if _e1692 {
-                                                                    let _e1693 = (_e1392 + _e1689);
-                                                                    if (_e1693 < _e190) {
-                                                                    } else {
-                                                                        phi_7015_ = true;
-                                                                        break;
-                                                                    }
-                                                                    let _e1696 = sd_map.member[_e1693];
-                                                                    let _e1700 = frame.member[0u].member_1.member.member.member_2;
-                                                                    let _e1703 = ((_e1696 * (_e1396 - _e1700)) + _e1700);
-                                                                    if (_e1696 < 1f) {
-                                                                        if (_e1703 > _e1682) {
-                                                                            phi_3198_ = select(_e1691, _e1703, (_e1703 < _e1691));
-                                                                        } else {
-                                                                            phi_3198_ = _e1691;
-                                                                        }
-                                                                        let _e1709 = phi_3198_;
-                                                                        phi_3199_ = _e1709;
-                                                                    } else {
-                                                                        phi_3199_ = _e1691;
-                                                                    }
-                                                                    let _e1711 = phi_3199_;
-                                                                    phi_3154_ = (_e1689 + 1u);
-                                                                    phi_3157_ = _e1711;
-                                                                } else {
-                                                                    phi_3154_ = u32();
-                                                                    phi_3157_ = f32();
-                                                                }
-                                                                let _e1714 = phi_3154_;
-                                                                let _e1716 = phi_3157_;
-                                                                continue;
-                                                                continuing {
-                                                                    phi_3153_ = _e1714;
-                                                                    phi_3156_ = _e1716;
-                                                                    phi_7015_ = _e1680;
-                                                                    break if !(_e1692);
-                                                                }
-                                                            }
-                                                            let _e1719 = phi_7015_;
-                                                            phi_7060_ = _e1719;
-                                                            if _e1719 {
-                                                                break;
-                                                            }
-                                                            let _e1721 = local_14;
-                                                            let _e1722 = (_e1721 >= _e1396);
-                                                            if _e1722 {
-                                                                phi_7062_ = _e1719;
-                                                                phi_3604_ = f32();
-                                                                phi_3605_ = u32();
-                                                                phi_3606_ = u32();
-                                                            } else {
-                                                                phi_3227_ = 0u;
-                                                                phi_3230_ = _e1396;
-                                                                loop {
-                                                                    let _e1724 = phi_3227_;
-                                                                    let _e1726 = phi_3230_;
-                                                                    local_19 = _e1726;
-                                                                    local_20 = _e1726;
-                                                                    local_21 = _e1726;
-                                                                    local_22 = _e1726;
-                                                                    local_46 = _e1726;
-                                                                    let _e1727 = (_e1724 < _e1391);
-                                                                    if _e1727 {
-                                                                        let _e1728 = (_e1392 + _e1724);
-                                                                        if (_e1728 < _e190) {
-                                                                        } else {
-                                                                            phi_7054_ = true;
-                                                                            break;
-                                                                        }
-                                                                        let _e1731 = sd_map.member[_e1728];
-                                                                        let _e1735 = frame.member[0u].member_1.member.member.member_2;
-                                                                        let _e1738 = ((_e1731 * (_e1396 - _e1735)) + _e1735);
-                                                                        if (_e1731 < 1f) {
-                                                                            let _e1741 = local_15;
-                                                                            if (_e1738 > _e1741) {
-                                                                                phi_3272_ = select(_e1726, _e1738, (_e1738 < _e1726));
-                                                                            } else {
-                                                                                phi_3272_ = _e1726;
-                                                                            }
-                                                                            let _e1746 = phi_3272_;
-                                                                            phi_3273_ = _e1746;
-                                                                        } else {
-                                                                            phi_3273_ = _e1726;
-                                                                        }
-                                                                        let _e1748 = phi_3273_;
-                                                                        phi_3228_ = (_e1724 + 1u);
-                                                                        phi_3231_ = _e1748;
-                                                                    } else {
-                                                                        phi_3228_ = u32();
-                                                                        phi_3231_ = f32();
-                                                                    }
-                                                                    let _e1751 = phi_3228_;
-                                                                    let _e1753 = phi_3231_;
-                                                                    continue;
-                                                                    continuing {
-                                                                        phi_3227_ = _e1751;
-                                                                        phi_3230_ = _e1753;
-                                                                        phi_7054_ = _e1719;
-                                                                        break if !(_e1727);
-                                                                    }
-                                                                }
-                                                                let _e1756 = phi_7054_;
-                                                                phi_7060_ = _e1756;
-                                                                if _e1756 {
-                                                                    break;
-                                                                }
-                                                                let _e1759 = (((_e1325 * 2f) - 1f) * _e1228);
-                                                                let _e1761 = local_16;
-                                                                let _e1765 = (((_e1326 * -2f) + 1f) * _e1236);
-                                                                let _e1767 = local_17;
-                                                                let _e1769 = ((_e1759 * _e1761) - _e468);
-                                                                let _e1770 = ((_e1765 * _e1767) - _e475);
-                                                                let _e1772 = local_18;
-                                                                let _e1773 = (_e1772 - _e461);
-                                                                let _e1775 = local_19;
-                                                                if (_e1775 < _e1396) {
-                                                                    let _e1782 = local_20;
-                                                                    let _e1785 = local_21;
-                                                                    let _e1788 = local_22;
-                                                                    phi_3332_ = (vec3<f32>((_e1759 * _e1782), (_e1765 * _e1785), _e1788) - _e476);
-                                                                } else {
-                                                                    phi_3332_ = vec3<f32>((_e1769 - _e1517), (_e1770 - _e1518), (_e1773 - _e1519));
-                                                                }
-                                                                let _e1792 = phi_3332_;
-                                                                if _e977 {
-                                                                    phi_3347_ = true;
-                                                                } else {
-                                                                    phi_3347_ = ((((_e1769 * _e1769) + (_e1770 * _e1770)) + (_e1773 * _e1773)) <= (_e243 * _e243));
-                                                                }
-                                                                let _e1801 = phi_3347_;
-                                                                if _e1801 {
-                                                                    let _e1813 = ((((_e1769 * _e487) + (_e1770 * _e488)) + (_e1773 * _e489)) * inverseSqrt((((_e1769 * _e1769) + (_e1770 * _e1770)) + (_e1773 * _e1773))));
-                                                                    let _e1817 = select(-1f, select(1f, _e1813, (_e1813 < 1f)), (_e1813 > -1f));
-                                                                    let _e1818 = abs(_e1817);
-                                                                    let _e1828 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1818, 0.00667009f), _e1818, -0.017088126f), _e1818, 0.03089188f), _e1818, -0.050174303f), _e1818, 0.08897899f), _e1818, -0.2145988f), _e1818, 1.5707963f) * sqrt((1f - _e1818)));
-                                                                    let _e1835 = ((((select((3.1415927f - _e1828), _e1828, (_e1817 >= 0f)) + _e1510) - _e1506) + 1.5707964f) * 0.31830987f);
-                                                                    let _e1839 = select(0f, select(1f, _e1835, (_e1835 < 1f)), (_e1835 > 0f));
-                                                                    let _e1854 = ((((_e1792.x * _e487) + (_e1792.y * _e488)) + (_e1792.z * _e489)) * inverseSqrt((((_e1792.x * _e1792.x) + (_e1792.y * _e1792.y)) + (_e1792.z * _e1792.z))));
-                                                                    let _e1858 = select(-1f, select(1f, _e1854, (_e1854 < 1f)), (_e1854 > -1f));
-                                                                    let _e1859 = abs(_e1858);
-                                                                    let _e1869 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1859, 0.00667009f), _e1859, -0.017088126f), _e1859, 0.03089188f), _e1859, -0.050174303f), _e1859, 0.08897899f), _e1859, -0.2145988f), _e1859, 1.5707963f) * sqrt((1f - _e1859)));
-                                                                    let _e1876 = ((((select((3.1415927f - _e1869), _e1869, (_e1858 >= 0f)) + _e1510) - _e1506) + 1.5707964f) * 0.31830987f);
-                                                                    let _e1880 = select(0f, select(1f, _e1876, (_e1876 < 1f)), (_e1876 > 0f));
-                                                                    let _e1882 = (_e1880 != _e1880);
-                                                                    let _e1884 = select(_e1880, _e1839, ((_e1839 < _e1880) || _e1882));
-                                                                    let _e1887 = select(_e1880, _e1839, ((_e1839 > _e1880) || _e1882));
-                                                                    let _e1889 = floor((_e1884 * 32f));
-                                                                    if _e1624 {
-                                                                        let _e1896 = -(floor((_e1887 * -32f)));
-                                                                        let _e1901 = (select(32f, _e1896, ((_e1896 < 32f) || false)) - _e1889);
-                                                                        phi_3537_ = select(select(0f, _e1901, ((_e1901 > 0f) || false)), 0f, (_e1887 <= _e1884));
-                                                                    } else {
-                                                                        phi_3537_ = -(floor(((_e1887 - _e1884) * -32f)));
-                                                                    }
-                                                                    let _e1907 = phi_3537_;
-                                                                    let _e1915 = (bitcast<u32>((floor(select(0f, select(32f, _e1889, (_e1889 < 32f)), (_e1889 > 0f))) + 8388608f)) - 1258291200u);
-                                                                    let _e1923 = (bitcast<u32>((floor(select(0f, select(32f, _e1907, (_e1907 < 32f)), (_e1907 > 0f))) + 8388608f)) - 1258291200u);
-                                                                    if (_e1915 >= 32u) {
-                                                                        phi_3591_ = u32();
-                                                                        phi_3592_ = true;
-                                                                    } else {
-                                                                        let _e1925 = (_e1923 == 0u);
-                                                                        if _e1925 {
-                                                                            phi_3590_ = u32();
-                                                                        } else {
-                                                                            if (_e1923 >= 32u) {
-                                                                                phi_3587_ = 4294967295u;
-                                                                            } else {
-                                                                                phi_3587_ = ((1u << bitcast<u32>((_e1923 & 31u))) - 1u);
-                                                                            }
-                                                                            let _e1932 = phi_3587_;
-                                                                            phi_3590_ = (_e1932 << bitcast<u32>((_e1915 & 31u)));
-                                                                        }
-                                                                        let _e1937 = phi_3590_;
-                                                                        phi_3591_ = _e1937;
-                                                                        phi_3592_ = _e1925;
-                                                                    }
-                                                                    let _e1939 = phi_3591_;
-                                                                    let _e1941 = phi_3592_;
-                                                                    phi_3602_ = (_e1686 | select(select(_e1939, 0u, _e1941), 0u, _e1516));
-                                                                } else {
-                                                                    phi_3602_ = _e1686;
-                                                                }
-                                                                let _e1946 = phi_3602_;
-                                                                phi_7062_ = _e1756;
-                                                                let _e4202 = local_46;
-                                                                phi_3604_ = _e4202;
-                                                                phi_3605_ = (_e1684 + 2u);
-                                                                phi_3606_ = _e1946;
-                                                            }
-                                                            let _e1949 = phi_7062_;
-                                                            let _e1951 = phi_3604_;
-                                                            let _e1953 = phi_3605_;
-                                                            let _e1955 = phi_3606_;
-                                                            phi_7061_ = _e1949;
-                                                            phi_3119_ = _e1951;
-                                                            phi_3122_ = _e1953;
-                                                            phi_3124_ = _e1955;
-                                                            phi_3608_ = select(true, false, _e1722);
-                                                        } else {
-                                                            phi_7061_ = _e1680;
-                                                            phi_3119_ = f32();
-                                                            phi_3122_ = u32();
-                                                            phi_3124_ = u32();
-                                                            phi_3608_ = false;
-                                                        }
-                                                        let _e1958 = phi_7061_;
-                                                        let _e1960 = phi_3119_;
-                                                        let _e1962 = phi_3122_;
-                                                        let _e1964 = phi_3124_;
-                                                        let _e1966 = phi_3608_;
-                                                        continue;
-                                                        continuing {
-                                                            phi_7021_ = _e1958;
-                                                            phi_3118_ = _e1960;
-                                                            phi_3121_ = _e1962;
-                                                            phi_3123_ = _e1964;
-                                                            phi_7060_ = _e1958;
-                                                            break if !(_e1966);
-                                                        }
-                                                    }
-                                                    let _e1969 = phi_7060_;
-                                                    phi_7297_ = _e1969;
-                                                    if _e1969 {
-                                                        break;
-                                                    }
-                                                    phi_7150_ = _e1969;
-                                                    phi_3613_ = u32();
-                                                    let _e4222 = local_47;
-                                                    phi_3614_ = _e4222;
+                                                    phi_2010_ = 0x1.fffffep+127f;
                                                 }
-                                                let _e2201 = phi_7150_;
-                                                let _e2203 = phi_3613_;
-                                                let _e2205 = phi_3614_;
-                                                phi_7115_ = _e2201;
-                                                phi_3615_ = _e2203;
-                                                phi_3616_ = _e2205;
-                                                phi_3617_ = _e1431;
+                                                let _e1257 = phi_2010_;
+                                                let _e1259 = frame.member[0u].member_1.member_6;
+                                                let _e1262 = (((_e1149 * _e1120) + _e1144) * _e1259);
+                                                let _e1264 = sd_map.member[_e1262];
+                                                let _e1268 = frame.member[0u].member_1.member.member.member_3;
+                                                let _e1272 = frame.member[0u].member_1.member.member.member_2;
+                                                let _e1273 = (_e1268 - _e1272);
+                                                let _e1275 = ((_e1264 * _e1273) + _e1272);
+                                                if (0u < _e1259) {
+                                                    if (_e1264 < 1f) {
+                                                        phi_2061_ = select(true, false, (_e1275 > _e1257));
+                                                    } else {
+                                                        phi_2061_ = true;
+                                                    }
+                                                    let _e1281 = phi_2061_;
+                                                    phi_2062_ = _e1281;
+                                                } else {
+                                                    phi_2062_ = true;
+                                                }
+                                                let _e1283 = phi_2062_;
+                                                if _e1283 {
+                                                    phi_2068_ = _e1268;
+                                                } else {
+                                                    phi_2068_ = _e1275;
+                                                }
+                                                let _e1285 = phi_2068_;
+                                                let _e1286 = (_e1259 - 1u);
+                                                let _e1291 = sd_map.member[(_e1262 + select(1u, _e1286, (_e1286 < 1u)))];
+                                                let _e1293 = ((_e1291 * _e1273) + _e1272);
+                                                if (1u < _e1259) {
+                                                    if (_e1291 < 1f) {
+                                                        phi_2101_ = select(true, false, (_e1293 > _e1257));
+                                                    } else {
+                                                        phi_2101_ = true;
+                                                    }
+                                                    let _e1299 = phi_2101_;
+                                                    phi_2102_ = _e1299;
+                                                } else {
+                                                    phi_2102_ = true;
+                                                }
+                                                let _e1301 = phi_2102_;
+                                                if _e1301 {
+                                                    phi_2108_ = _e1268;
+                                                } else {
+                                                    phi_2108_ = _e1293;
+                                                }
+                                                let _e1303 = phi_2108_;
+                                                let _e1308 = sd_map.member[(_e1262 + select(2u, _e1286, (_e1286 < 2u)))];
+                                                let _e1310 = ((_e1308 * _e1273) + _e1272);
+                                                if (2u < _e1259) {
+                                                    if (_e1308 < 1f) {
+                                                        phi_2141_ = select(true, false, (_e1310 > _e1257));
+                                                    } else {
+                                                        phi_2141_ = true;
+                                                    }
+                                                    let _e1316 = phi_2141_;
+                                                    phi_2142_ = _e1316;
+                                                } else {
+                                                    phi_2142_ = true;
+                                                }
+                                                let _e1318 = phi_2142_;
+                                                if _e1318 {
+                                                    phi_2148_ = _e1268;
+                                                } else {
+                                                    phi_2148_ = _e1310;
+                                                }
+                                                let _e1320 = phi_2148_;
+                                                let _e1325 = sd_map.member[(_e1262 + select(3u, _e1286, (_e1286 < 3u)))];
+                                                let _e1327 = ((_e1325 * _e1273) + _e1272);
+                                                if (3u < _e1259) {
+                                                    if (_e1325 < 1f) {
+                                                        phi_2181_ = select(true, false, (_e1327 > _e1257));
+                                                    } else {
+                                                        phi_2181_ = true;
+                                                    }
+                                                    let _e1333 = phi_2181_;
+                                                    phi_2182_ = _e1333;
+                                                } else {
+                                                    phi_2182_ = true;
+                                                }
+                                                let _e1335 = phi_2182_;
+                                                if _e1335 {
+                                                    phi_2188_ = _e1268;
+                                                } else {
+                                                    phi_2188_ = _e1327;
+                                                }
+                                                let _e1337 = phi_2188_;
+                                                if (_e1259 > 4u) {
+                                                    let _e1343 = sd_map.member[(_e1262 + select(4u, _e1286, (_e1286 < 4u)))];
+                                                    let _e1345 = ((_e1343 * _e1273) + _e1272);
+                                                    if (4u < _e1259) {
+                                                        if (_e1343 < 1f) {
+                                                            phi_2225_ = select(true, false, (_e1345 > _e1257));
+                                                        } else {
+                                                            phi_2225_ = true;
+                                                        }
+                                                        let _e1351 = phi_2225_;
+                                                        phi_2226_ = _e1351;
+                                                    } else {
+                                                        phi_2226_ = true;
+                                                    }
+                                                    let _e1353 = phi_2226_;
+                                                    if _e1353 {
+                                                        phi_2232_ = _e1268;
+                                                    } else {
+                                                        phi_2232_ = _e1345;
+                                                    }
+                                                    let _e1355 = phi_2232_;
+                                                    let _e1360 = sd_map.member[(_e1262 + select(5u, _e1286, (_e1286 < 5u)))];
+                                                    let _e1362 = ((_e1360 * _e1273) + _e1272);
+                                                    if (5u < _e1259) {
+                                                        if (_e1360 < 1f) {
+                                                            phi_2265_ = select(true, false, (_e1362 > _e1257));
+                                                        } else {
+                                                            phi_2265_ = true;
+                                                        }
+                                                        let _e1368 = phi_2265_;
+                                                        phi_2266_ = _e1368;
+                                                    } else {
+                                                        phi_2266_ = true;
+                                                    }
+                                                    let _e1370 = phi_2266_;
+                                                    if _e1370 {
+                                                        phi_2272_ = _e1268;
+                                                    } else {
+                                                        phi_2272_ = _e1362;
+                                                    }
+                                                    let _e1372 = phi_2272_;
+                                                    let _e1377 = sd_map.member[(_e1262 + select(6u, _e1286, (_e1286 < 6u)))];
+                                                    let _e1379 = ((_e1377 * _e1273) + _e1272);
+                                                    if (6u < _e1259) {
+                                                        if (_e1377 < 1f) {
+                                                            phi_2305_ = select(true, false, (_e1379 > _e1257));
+                                                        } else {
+                                                            phi_2305_ = true;
+                                                        }
+                                                        let _e1385 = phi_2305_;
+                                                        phi_2306_ = _e1385;
+                                                    } else {
+                                                        phi_2306_ = true;
+                                                    }
+                                                    let _e1387 = phi_2306_;
+                                                    if _e1387 {
+                                                        phi_2312_ = _e1268;
+                                                    } else {
+                                                        phi_2312_ = _e1379;
+                                                    }
+                                                    let _e1389 = phi_2312_;
+                                                    let _e1394 = sd_map.member[(_e1262 + select(7u, _e1286, (_e1286 < 7u)))];
+                                                    let _e1396 = ((_e1394 * _e1273) + _e1272);
+                                                    if (7u < _e1259) {
+                                                        if (_e1394 < 1f) {
+                                                            phi_2345_ = select(true, false, (_e1396 > _e1257));
+                                                        } else {
+                                                            phi_2345_ = true;
+                                                        }
+                                                        let _e1402 = phi_2345_;
+                                                        phi_2346_ = _e1402;
+                                                    } else {
+                                                        phi_2346_ = true;
+                                                    }
+                                                    let _e1404 = phi_2346_;
+                                                    if _e1404 {
+                                                        phi_2352_ = _e1268;
+                                                    } else {
+                                                        phi_2352_ = _e1396;
+                                                    }
+                                                    let _e1406 = phi_2352_;
+                                                    phi_2361_ = _e1406;
+                                                    phi_2362_ = _e1389;
+                                                    phi_2363_ = _e1372;
+                                                    phi_2364_ = _e1355;
+                                                } else {
+                                                    phi_2361_ = _e1268;
+                                                    phi_2362_ = _e1268;
+                                                    phi_2363_ = _e1268;
+                                                    phi_2364_ = _e1268;
+                                                }
+                                                let _e1408 = phi_2361_;
+                                                let _e1410 = phi_2362_;
+                                                let _e1412 = phi_2363_;
+                                                let _e1414 = phi_2364_;
+                                                let _e1415 = (_e1285 != _e1285);
+                                                if _e1415 {
+                                                    phi_6854_ = true;
+                                                } else {
+                                                    phi_6854_ = (_e1303 <= _e1285);
+                                                }
+                                                let _e1418 = phi_6854_;
+                                                let _e1419 = select(_e1285, _e1303, _e1418);
+                                                if _e1415 {
+                                                    phi_6869_ = true;
+                                                } else {
+                                                    phi_6869_ = (_e1303 >= _e1285);
+                                                }
+                                                let _e1422 = phi_6869_;
+                                                let _e1423 = select(_e1285, _e1303, _e1422);
+                                                let _e1424 = (_e1320 != _e1320);
+                                                if _e1424 {
+                                                    phi_6884_ = true;
+                                                } else {
+                                                    phi_6884_ = (_e1337 <= _e1320);
+                                                }
+                                                let _e1427 = phi_6884_;
+                                                let _e1428 = select(_e1320, _e1337, _e1427);
+                                                if _e1424 {
+                                                    phi_6899_ = true;
+                                                } else {
+                                                    phi_6899_ = (_e1337 >= _e1320);
+                                                }
+                                                let _e1431 = phi_6899_;
+                                                let _e1432 = select(_e1320, _e1337, _e1431);
+                                                let _e1433 = (_e1414 != _e1414);
+                                                if _e1433 {
+                                                    phi_6914_ = true;
+                                                } else {
+                                                    phi_6914_ = (_e1412 <= _e1414);
+                                                }
+                                                let _e1436 = phi_6914_;
+                                                let _e1437 = select(_e1414, _e1412, _e1436);
+                                                if _e1433 {
+                                                    phi_6929_ = true;
+                                                } else {
+                                                    phi_6929_ = (_e1412 >= _e1414);
+                                                }
+                                                let _e1440 = phi_6929_;
+                                                let _e1441 = select(_e1414, _e1412, _e1440);
+                                                let _e1442 = (_e1410 != _e1410);
+                                                if _e1442 {
+                                                    phi_6944_ = true;
+                                                } else {
+                                                    phi_6944_ = (_e1408 <= _e1410);
+                                                }
+                                                let _e1445 = phi_6944_;
+                                                let _e1446 = select(_e1410, _e1408, _e1445);
+                                                if _e1442 {
+                                                    phi_6959_ = true;
+                                                } else {
+                                                    phi_6959_ = (_e1408 >= _e1410);
+                                                }
+                                                let _e1449 = phi_6959_;
+                                                let _e1450 = select(_e1410, _e1408, _e1449);
+                                                let _e1451 = (_e1419 != _e1419);
+                                                if _e1451 {
+                                                    phi_6974_ = true;
+                                                } else {
+                                                    phi_6974_ = (_e1428 <= _e1419);
+                                                }
+                                                let _e1454 = phi_6974_;
+                                                let _e1455 = select(_e1419, _e1428, _e1454);
+                                                if _e1451 {
+                                                    phi_6989_ = true;
+                                                } else {
+                                                    phi_6989_ = (_e1428 >= _e1419);
+                                                }
+                                                let _e1458 = phi_6989_;
+                                                let _e1459 = select(_e1419, _e1428, _e1458);
+                                                let _e1460 = (_e1423 != _e1423);
+                                                if _e1460 {
+                                                    phi_7004_ = true;
+                                                } else {
+                                                    phi_7004_ = (_e1432 <= _e1423);
+                                                }
+                                                let _e1463 = phi_7004_;
+                                                let _e1464 = select(_e1423, _e1432, _e1463);
+                                                if _e1460 {
+                                                    phi_7019_ = true;
+                                                } else {
+                                                    phi_7019_ = (_e1432 >= _e1423);
+                                                }
+                                                let _e1467 = phi_7019_;
+                                                let _e1468 = select(_e1423, _e1432, _e1467);
+                                                let _e1469 = (_e1437 != _e1437);
+                                                if _e1469 {
+                                                    phi_7034_ = true;
+                                                } else {
+                                                    phi_7034_ = (_e1446 <= _e1437);
+                                                }
+                                                let _e1472 = phi_7034_;
+                                                let _e1473 = select(_e1437, _e1446, _e1472);
+                                                if _e1469 {
+                                                    phi_7049_ = true;
+                                                } else {
+                                                    phi_7049_ = (_e1446 >= _e1437);
+                                                }
+                                                let _e1476 = phi_7049_;
+                                                let _e1477 = select(_e1437, _e1446, _e1476);
+                                                let _e1478 = (_e1441 != _e1441);
+                                                if _e1478 {
+                                                    phi_7064_ = true;
+                                                } else {
+                                                    phi_7064_ = (_e1450 <= _e1441);
+                                                }
+                                                let _e1481 = phi_7064_;
+                                                let _e1482 = select(_e1441, _e1450, _e1481);
+                                                if _e1478 {
+                                                    phi_7079_ = true;
+                                                } else {
+                                                    phi_7079_ = (_e1450 >= _e1441);
+                                                }
+                                                let _e1485 = phi_7079_;
+                                                let _e1486 = select(_e1441, _e1450, _e1485);
+                                                let _e1487 = (_e1464 != _e1464);
+                                                if _e1487 {
+                                                    phi_7094_ = true;
+                                                } else {
+                                                    phi_7094_ = (_e1459 <= _e1464);
+                                                }
+                                                let _e1490 = phi_7094_;
+                                                let _e1491 = select(_e1464, _e1459, _e1490);
+                                                if _e1487 {
+                                                    phi_7109_ = true;
+                                                } else {
+                                                    phi_7109_ = (_e1459 >= _e1464);
+                                                }
+                                                let _e1494 = phi_7109_;
+                                                let _e1495 = select(_e1464, _e1459, _e1494);
+                                                let _e1496 = (_e1482 != _e1482);
+                                                if _e1496 {
+                                                    phi_7124_ = true;
+                                                } else {
+                                                    phi_7124_ = (_e1477 <= _e1482);
+                                                }
+                                                let _e1499 = phi_7124_;
+                                                let _e1500 = select(_e1482, _e1477, _e1499);
+                                                if _e1496 {
+                                                    phi_7139_ = true;
+                                                } else {
+                                                    phi_7139_ = (_e1477 >= _e1482);
+                                                }
+                                                let _e1503 = phi_7139_;
+                                                let _e1504 = select(_e1482, _e1477, _e1503);
+                                                let _e1505 = (_e1455 != _e1455);
+                                                if _e1505 {
+                                                    phi_7154_ = true;
+                                                } else {
+                                                    phi_7154_ = (_e1473 <= _e1455);
+                                                }
+                                                let _e1508 = phi_7154_;
+                                                let _e1509 = select(_e1455, _e1473, _e1508);
+                                                if _e1505 {
+                                                    phi_7169_ = true;
+                                                } else {
+                                                    phi_7169_ = (_e1473 >= _e1455);
+                                                }
+                                                let _e1512 = phi_7169_;
+                                                let _e1513 = select(_e1455, _e1473, _e1512);
+                                                let _e1514 = (_e1491 != _e1491);
+                                                if _e1514 {
+                                                    phi_7184_ = true;
+                                                } else {
+                                                    phi_7184_ = (_e1500 <= _e1491);
+                                                }
+                                                let _e1517 = phi_7184_;
+                                                let _e1518 = select(_e1491, _e1500, _e1517);
+                                                if _e1514 {
+                                                    phi_7199_ = true;
+                                                } else {
+                                                    phi_7199_ = (_e1500 >= _e1491);
+                                                }
+                                                let _e1521 = phi_7199_;
+                                                let _e1522 = select(_e1491, _e1500, _e1521);
+                                                let _e1523 = (_e1495 != _e1495);
+                                                if _e1523 {
+                                                    phi_7214_ = true;
+                                                } else {
+                                                    phi_7214_ = (_e1504 <= _e1495);
+                                                }
+                                                let _e1526 = phi_7214_;
+                                                let _e1527 = select(_e1495, _e1504, _e1526);
+                                                if _e1523 {
+                                                    phi_7229_ = true;
+                                                } else {
+                                                    phi_7229_ = (_e1504 >= _e1495);
+                                                }
+                                                let _e1530 = phi_7229_;
+                                                let _e1531 = select(_e1495, _e1504, _e1530);
+                                                let _e1532 = (_e1468 != _e1468);
+                                                if _e1532 {
+                                                    phi_7244_ = true;
+                                                } else {
+                                                    phi_7244_ = (_e1486 <= _e1468);
+                                                }
+                                                let _e1535 = phi_7244_;
+                                                let _e1536 = select(_e1468, _e1486, _e1535);
+                                                if _e1532 {
+                                                    phi_7259_ = true;
+                                                } else {
+                                                    phi_7259_ = (_e1486 >= _e1468);
+                                                }
+                                                let _e1539 = phi_7259_;
+                                                let _e1540 = select(_e1468, _e1486, _e1539);
+                                                let _e1541 = (_e1527 != _e1527);
+                                                if _e1541 {
+                                                    phi_7274_ = true;
+                                                } else {
+                                                    phi_7274_ = (_e1513 <= _e1527);
+                                                }
+                                                let _e1544 = phi_7274_;
+                                                let _e1545 = select(_e1527, _e1513, _e1544);
+                                                if _e1541 {
+                                                    phi_7289_ = true;
+                                                } else {
+                                                    phi_7289_ = (_e1513 >= _e1527);
+                                                }
+                                                let _e1548 = phi_7289_;
+                                                let _e1549 = select(_e1527, _e1513, _e1548);
+                                                let _e1550 = (_e1536 != _e1536);
+                                                if _e1550 {
+                                                    phi_7304_ = true;
+                                                } else {
+                                                    phi_7304_ = (_e1522 <= _e1536);
+                                                }
+                                                let _e1553 = phi_7304_;
+                                                let _e1554 = select(_e1536, _e1522, _e1553);
+                                                if _e1550 {
+                                                    phi_7319_ = true;
+                                                } else {
+                                                    phi_7319_ = (_e1522 >= _e1536);
+                                                }
+                                                let _e1557 = phi_7319_;
+                                                let _e1558 = select(_e1536, _e1522, _e1557);
+                                                let _e1559 = (_e1518 != _e1518);
+                                                if _e1559 {
+                                                    phi_7334_ = true;
+                                                } else {
+                                                    phi_7334_ = (_e1545 <= _e1518);
+                                                }
+                                                let _e1562 = phi_7334_;
+                                                let _e1563 = select(_e1518, _e1545, _e1562);
+                                                if _e1559 {
+                                                    phi_7349_ = true;
+                                                } else {
+                                                    phi_7349_ = (_e1545 >= _e1518);
+                                                }
+                                                let _e1566 = phi_7349_;
+                                                let _e1567 = select(_e1518, _e1545, _e1566);
+                                                let _e1568 = (_e1554 != _e1554);
+                                                if _e1568 {
+                                                    phi_7364_ = true;
+                                                } else {
+                                                    phi_7364_ = (_e1549 <= _e1554);
+                                                }
+                                                let _e1571 = phi_7364_;
+                                                let _e1572 = select(_e1554, _e1549, _e1571);
+                                                if _e1568 {
+                                                    phi_7379_ = true;
+                                                } else {
+                                                    phi_7379_ = (_e1549 >= _e1554);
+                                                }
+                                                let _e1575 = phi_7379_;
+                                                let _e1576 = select(_e1554, _e1549, _e1575);
+                                                let _e1577 = (_e1558 != _e1558);
+                                                if _e1577 {
+                                                    phi_7394_ = true;
+                                                } else {
+                                                    phi_7394_ = (_e1531 <= _e1558);
+                                                }
+                                                let _e1580 = phi_7394_;
+                                                let _e1581 = select(_e1558, _e1531, _e1580);
+                                                if _e1577 {
+                                                    phi_7409_ = true;
+                                                } else {
+                                                    phi_7409_ = (_e1531 >= _e1558);
+                                                }
+                                                let _e1584 = phi_7409_;
+                                                let _e1585 = select(_e1558, _e1531, _e1584);
+                                                if (_e1509 < _e1268) {
+                                                    if (_e1509 > (_e924 + _e238)) {
+                                                        phi_2433_ = (vec3<f32>(((((_e1194 * 2f) - 1f) * _e1097) * _e1509), ((((_e1195 * -2f) + 1f) * _e1105) * _e1509), _e1509) - _e474);
+                                                    } else {
+                                                        phi_2433_ = _e985;
+                                                    }
+                                                    let _e1600 = phi_2433_;
+                                                    phi_2434_ = _e1600;
+                                                } else {
+                                                    phi_2434_ = _e985;
+                                                }
+                                                let _e1602 = phi_2434_;
+                                                if (_e1563 >= _e225.member.member_3) {
+                                                    phi_2760_ = u32();
+                                                    phi_2761_ = true;
+                                                } else {
+                                                    let _e1606 = (((_e1194 * 2f) - 1f) * _e225.member.member_1.x);
+                                                    let _e1610 = (((_e1195 * -2f) + 1f) * _e225.member.member_1.y);
+                                                    let _e1612 = ((_e1606 * _e1563) - _e466);
+                                                    let _e1613 = ((_e1610 * _e1563) - _e473);
+                                                    let _e1614 = (_e1563 - _e459);
+                                                    if (_e1567 < _e225.member.member_3) {
+                                                        phi_2488_ = (vec3<f32>((_e1606 * _e1567), (_e1610 * _e1567), _e1567) - _e474);
+                                                    } else {
+                                                        phi_2488_ = vec3<f32>((_e1612 - _e979), (_e1613 - _e980), (_e1614 - _e981));
+                                                    }
+                                                    let _e1625 = phi_2488_;
+                                                    if _e968 {
+                                                        phi_2504_ = select(true, false, ((((_e1612 * _e1612) + (_e1613 * _e1613)) + (_e1614 * _e1614)) > (_e241 * _e241)));
+                                                    } else {
+                                                        phi_2504_ = true;
+                                                    }
+                                                    let _e1635 = phi_2504_;
+                                                    if _e1635 {
+                                                        let _e1647 = ((((_e1612 * _e485) + (_e1613 * _e486)) + (_e1614 * _e487)) * inverseSqrt((((_e1612 * _e1612) + (_e1613 * _e1613)) + (_e1614 * _e1614))));
+                                                        let _e1651 = select(-1f, select(1f, _e1647, (_e1647 < 1f)), (_e1647 > -1f));
+                                                        let _e1652 = abs(_e1651);
+                                                        let _e1662 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1652, 0.00667009f), _e1652, -0.017088126f), _e1652, 0.03089188f), _e1652, -0.050174303f), _e1652, 0.08897899f), _e1652, -0.2145988f), _e1652, 1.5707963f) * sqrt((1f - _e1652)));
+                                                        let _e1669 = ((((select((3.1415927f - _e1662), _e1662, (_e1651 >= 0f)) + _e1064) - _e1060) + 1.5707964f) * 0.31830987f);
+                                                        let _e1673 = select(0f, select(1f, _e1669, (_e1669 < 1f)), (_e1669 > 0f));
+                                                        let _e1688 = ((((_e1625.x * _e485) + (_e1625.y * _e486)) + (_e1625.z * _e487)) * inverseSqrt((((_e1625.x * _e1625.x) + (_e1625.y * _e1625.y)) + (_e1625.z * _e1625.z))));
+                                                        let _e1692 = select(-1f, select(1f, _e1688, (_e1688 < 1f)), (_e1688 > -1f));
+                                                        let _e1693 = abs(_e1692);
+                                                        let _e1703 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1693, 0.00667009f), _e1693, -0.017088126f), _e1693, 0.03089188f), _e1693, -0.050174303f), _e1693, 0.08897899f), _e1693, -0.2145988f), _e1693, 1.5707963f) * sqrt((1f - _e1693)));
+                                                        let _e1710 = ((((select((3.1415927f - _e1703), _e1703, (_e1692 >= 0f)) + _e1064) - _e1060) + 1.5707964f) * 0.31830987f);
+                                                        let _e1714 = select(0f, select(1f, _e1710, (_e1710 < 1f)), (_e1710 > 0f));
+                                                        let _e1716 = (_e1714 != _e1714);
+                                                        let _e1718 = select(_e1714, _e1673, ((_e1673 < _e1714) || _e1716));
+                                                        let _e1721 = select(_e1714, _e1673, ((_e1673 > _e1714) || _e1716));
+                                                        let _e1723 = floor((_e1718 * 32f));
+                                                        if (_e235 == 1u) {
+                                                            let _e1731 = -(floor((_e1721 * -32f)));
+                                                            let _e1736 = (select(32f, _e1731, ((_e1731 < 32f) || false)) - _e1723);
+                                                            phi_2694_ = select(select(0f, _e1736, ((_e1736 > 0f) || false)), 0f, (_e1721 <= _e1718));
+                                                        } else {
+                                                            phi_2694_ = -(floor(((_e1721 - _e1718) * -32f)));
+                                                        }
+                                                        let _e1742 = phi_2694_;
+                                                        let _e1750 = (bitcast<u32>((floor(select(0f, select(32f, _e1723, (_e1723 < 32f)), (_e1723 > 0f))) + 8388608f)) - 1258291200u);
+                                                        let _e1758 = (bitcast<u32>((floor(select(0f, select(32f, _e1742, (_e1742 < 32f)), (_e1742 > 0f))) + 8388608f)) - 1258291200u);
+                                                        if (_e1750 >= 32u) {
+                                                            phi_2748_ = u32();
+                                                            phi_2749_ = true;
+                                                        } else {
+                                                            let _e1760 = (_e1758 == 0u);
+                                                            if _e1760 {
+                                                                phi_2747_ = u32();
+                                                            } else {
+                                                                if (_e1758 >= 32u) {
+                                                                    phi_2744_ = 4294967295u;
+                                                                } else {
+                                                                    phi_2744_ = ((1u << bitcast<u32>((_e1758 & 31u))) - 1u);
+                                                                }
+                                                                let _e1767 = phi_2744_;
+                                                                phi_2747_ = (_e1767 << bitcast<u32>((_e1750 & 31u)));
+                                                            }
+                                                            let _e1772 = phi_2747_;
+                                                            phi_2748_ = _e1772;
+                                                            phi_2749_ = _e1760;
+                                                        }
+                                                        let _e1774 = phi_2748_;
+                                                        let _e1776 = phi_2749_;
+                                                        phi_2758_ = select(select(_e1774, 0u, _e1776), 0u, _e1070);
+                                                    } else {
+                                                        phi_2758_ = u32();
+                                                    }
+                                                    let _e1780 = phi_2758_;
+                                                    phi_2760_ = _e1780;
+                                                    phi_2761_ = select(true, false, _e1635);
+                                                }
+                                                let _e1783 = phi_2760_;
+                                                let _e1785 = phi_2761_;
+                                                if (_e1572 >= _e225.member.member_3) {
+                                                    phi_3091_ = u32();
+                                                    phi_3092_ = true;
+                                                } else {
+                                                    let _e1790 = (((_e1194 * 2f) - 1f) * _e225.member.member_1.x);
+                                                    let _e1794 = (((_e1195 * -2f) + 1f) * _e225.member.member_1.y);
+                                                    let _e1796 = ((_e1790 * _e1572) - _e466);
+                                                    let _e1797 = ((_e1794 * _e1572) - _e473);
+                                                    let _e1798 = (_e1572 - _e459);
+                                                    if (_e1576 < _e225.member.member_3) {
+                                                        phi_2819_ = (vec3<f32>((_e1790 * _e1576), (_e1794 * _e1576), _e1576) - _e474);
+                                                    } else {
+                                                        phi_2819_ = vec3<f32>((_e1796 - _e979), (_e1797 - _e980), (_e1798 - _e981));
+                                                    }
+                                                    let _e1809 = phi_2819_;
+                                                    if _e968 {
+                                                        phi_2835_ = select(true, false, ((((_e1796 * _e1796) + (_e1797 * _e1797)) + (_e1798 * _e1798)) > (_e241 * _e241)));
+                                                    } else {
+                                                        phi_2835_ = true;
+                                                    }
+                                                    let _e1819 = phi_2835_;
+                                                    if _e1819 {
+                                                        let _e1831 = ((((_e1796 * _e485) + (_e1797 * _e486)) + (_e1798 * _e487)) * inverseSqrt((((_e1796 * _e1796) + (_e1797 * _e1797)) + (_e1798 * _e1798))));
+                                                        let _e1835 = select(-1f, select(1f, _e1831, (_e1831 < 1f)), (_e1831 > -1f));
+                                                        let _e1836 = abs(_e1835);
+                                                        let _e1846 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1836, 0.00667009f), _e1836, -0.017088126f), _e1836, 0.03089188f), _e1836, -0.050174303f), _e1836, 0.08897899f), _e1836, -0.2145988f), _e1836, 1.5707963f) * sqrt((1f - _e1836)));
+                                                        let _e1853 = ((((select((3.1415927f - _e1846), _e1846, (_e1835 >= 0f)) + _e1064) - _e1060) + 1.5707964f) * 0.31830987f);
+                                                        let _e1857 = select(0f, select(1f, _e1853, (_e1853 < 1f)), (_e1853 > 0f));
+                                                        let _e1872 = ((((_e1809.x * _e485) + (_e1809.y * _e486)) + (_e1809.z * _e487)) * inverseSqrt((((_e1809.x * _e1809.x) + (_e1809.y * _e1809.y)) + (_e1809.z * _e1809.z))));
+                                                        let _e1876 = select(-1f, select(1f, _e1872, (_e1872 < 1f)), (_e1872 > -1f));
+                                                        let _e1877 = abs(_e1876);
+                                                        let _e1887 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1877, 0.00667009f), _e1877, -0.017088126f), _e1877, 0.03089188f), _e1877, -0.050174303f), _e1877, 0.08897899f), _e1877, -0.2145988f), _e1877, 1.5707963f) * sqrt((1f - _e1877)));
+                                                        let _e1894 = ((((select((3.1415927f - _e1887), _e1887, (_e1876 >= 0f)) + _e1064) - _e1060) + 1.5707964f) * 0.31830987f);
+                                                        let _e1898 = select(0f, select(1f, _e1894, (_e1894 < 1f)), (_e1894 > 0f));
+                                                        let _e1900 = (_e1898 != _e1898);
+                                                        let _e1902 = select(_e1898, _e1857, ((_e1857 < _e1898) || _e1900));
+                                                        let _e1905 = select(_e1898, _e1857, ((_e1857 > _e1898) || _e1900));
+                                                        let _e1907 = floor((_e1902 * 32f));
+                                                        if (_e235 == 1u) {
+                                                            let _e1915 = -(floor((_e1905 * -32f)));
+                                                            let _e1920 = (select(32f, _e1915, ((_e1915 < 32f) || false)) - _e1907);
+                                                            phi_3025_ = select(select(0f, _e1920, ((_e1920 > 0f) || false)), 0f, (_e1905 <= _e1902));
+                                                        } else {
+                                                            phi_3025_ = -(floor(((_e1905 - _e1902) * -32f)));
+                                                        }
+                                                        let _e1926 = phi_3025_;
+                                                        let _e1934 = (bitcast<u32>((floor(select(0f, select(32f, _e1907, (_e1907 < 32f)), (_e1907 > 0f))) + 8388608f)) - 1258291200u);
+                                                        let _e1942 = (bitcast<u32>((floor(select(0f, select(32f, _e1926, (_e1926 < 32f)), (_e1926 > 0f))) + 8388608f)) - 1258291200u);
+                                                        if (_e1934 >= 32u) {
+                                                            phi_3079_ = u32();
+                                                            phi_3080_ = true;
+                                                        } else {
+                                                            let _e1944 = (_e1942 == 0u);
+                                                            if _e1944 {
+                                                                phi_3078_ = u32();
+                                                            } else {
+                                                                if (_e1942 >= 32u) {
+                                                                    phi_3075_ = 4294967295u;
+                                                                } else {
+                                                                    phi_3075_ = ((1u << bitcast<u32>((_e1942 & 31u))) - 1u);
+                                                                }
+                                                                let _e1951 = phi_3075_;
+                                                                phi_3078_ = (_e1951 << bitcast<u32>((_e1934 & 31u)));
+                                                            }
+                                                            let _e1956 = phi_3078_;
+                                                            phi_3079_ = _e1956;
+                                                            phi_3080_ = _e1944;
+                                                        }
+                                                        let _e1958 = phi_3079_;
+                                                        let _e1960 = phi_3080_;
+                                                        phi_3089_ = select(select(_e1958, 0u, _e1960), 0u, _e1070);
+                                                    } else {
+                                                        phi_3089_ = u32();
+                                                    }
+                                                    let _e1964 = phi_3089_;
+                                                    phi_3091_ = _e1964;
+                                                    phi_3092_ = select(true, false, _e1819);
+                                                }
+                                                let _e1967 = phi_3091_;
+                                                let _e1969 = phi_3092_;
+                                                if (_e1581 >= _e225.member.member_3) {
+                                                    phi_3423_ = u32();
+                                                    phi_3424_ = true;
+                                                } else {
+                                                    let _e1975 = (((_e1194 * 2f) - 1f) * _e225.member.member_1.x);
+                                                    let _e1979 = (((_e1195 * -2f) + 1f) * _e225.member.member_1.y);
+                                                    let _e1981 = ((_e1975 * _e1581) - _e466);
+                                                    let _e1982 = ((_e1979 * _e1581) - _e473);
+                                                    let _e1983 = (_e1581 - _e459);
+                                                    if (_e1585 < _e225.member.member_3) {
+                                                        phi_3151_ = (vec3<f32>((_e1975 * _e1585), (_e1979 * _e1585), _e1585) - _e474);
+                                                    } else {
+                                                        phi_3151_ = vec3<f32>((_e1981 - _e979), (_e1982 - _e980), (_e1983 - _e981));
+                                                    }
+                                                    let _e1994 = phi_3151_;
+                                                    if _e968 {
+                                                        phi_3167_ = select(true, false, ((((_e1981 * _e1981) + (_e1982 * _e1982)) + (_e1983 * _e1983)) > (_e241 * _e241)));
+                                                    } else {
+                                                        phi_3167_ = true;
+                                                    }
+                                                    let _e2004 = phi_3167_;
+                                                    if _e2004 {
+                                                        let _e2016 = ((((_e1981 * _e485) + (_e1982 * _e486)) + (_e1983 * _e487)) * inverseSqrt((((_e1981 * _e1981) + (_e1982 * _e1982)) + (_e1983 * _e1983))));
+                                                        let _e2020 = select(-1f, select(1f, _e2016, (_e2016 < 1f)), (_e2016 > -1f));
+                                                        let _e2021 = abs(_e2020);
+                                                        let _e2031 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2021, 0.00667009f), _e2021, -0.017088126f), _e2021, 0.03089188f), _e2021, -0.050174303f), _e2021, 0.08897899f), _e2021, -0.2145988f), _e2021, 1.5707963f) * sqrt((1f - _e2021)));
+                                                        let _e2038 = ((((select((3.1415927f - _e2031), _e2031, (_e2020 >= 0f)) + _e1064) - _e1060) + 1.5707964f) * 0.31830987f);
+                                                        let _e2042 = select(0f, select(1f, _e2038, (_e2038 < 1f)), (_e2038 > 0f));
+                                                        let _e2057 = ((((_e1994.x * _e485) + (_e1994.y * _e486)) + (_e1994.z * _e487)) * inverseSqrt((((_e1994.x * _e1994.x) + (_e1994.y * _e1994.y)) + (_e1994.z * _e1994.z))));
+                                                        let _e2061 = select(-1f, select(1f, _e2057, (_e2057 < 1f)), (_e2057 > -1f));
+                                                        let _e2062 = abs(_e2061);
+                                                        let _e2072 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2062, 0.00667009f), _e2062, -0.017088126f), _e2062, 0.03089188f), _e2062, -0.050174303f), _e2062, 0.08897899f), _e2062, -0.2145988f), _e2062, 1.5707963f) * sqrt((1f - _e2062)));
+                                                        let _e2079 = ((((select((3.1415927f - _e2072), _e2072, (_e2061 >= 0f)) + _e1064) - _e1060) + 1.5707964f) * 0.31830987f);
+                                                        let _e2083 = select(0f, select(1f, _e2079, (_e2079 < 1f)), (_e2079 > 0f));
+                                                        let _e2085 = (_e2083 != _e2083);
+                                                        let _e2087 = select(_e2083, _e2042, ((_e2042 < _e2083) || _e2085));
+                                                        let _e2090 = select(_e2083, _e2042, ((_e2042 > _e2083) || _e2085));
+                                                        let _e2092 = floor((_e2087 * 32f));
+                                                        if (_e235 == 1u) {
+                                                            let _e2100 = -(floor((_e2090 * -32f)));
+                                                            let _e2105 = (select(32f, _e2100, ((_e2100 < 32f) || false)) - _e2092);
+                                                            phi_3357_ = select(select(0f, _e2105, ((_e2105 > 0f) || false)), 0f, (_e2090 <= _e2087));
+                                                        } else {
+                                                            phi_3357_ = -(floor(((_e2090 - _e2087) * -32f)));
+                                                        }
+                                                        let _e2111 = phi_3357_;
+                                                        let _e2119 = (bitcast<u32>((floor(select(0f, select(32f, _e2092, (_e2092 < 32f)), (_e2092 > 0f))) + 8388608f)) - 1258291200u);
+                                                        let _e2127 = (bitcast<u32>((floor(select(0f, select(32f, _e2111, (_e2111 < 32f)), (_e2111 > 0f))) + 8388608f)) - 1258291200u);
+                                                        if (_e2119 >= 32u) {
+                                                            phi_3411_ = u32();
+                                                            phi_3412_ = true;
+                                                        } else {
+                                                            let _e2129 = (_e2127 == 0u);
+                                                            if _e2129 {
+                                                                phi_3410_ = u32();
+                                                            } else {
+                                                                if (_e2127 >= 32u) {
+                                                                    phi_3407_ = 4294967295u;
+                                                                } else {
+                                                                    phi_3407_ = ((1u << bitcast<u32>((_e2127 & 31u))) - 1u);
+                                                                }
+                                                                let _e2136 = phi_3407_;
+                                                                phi_3410_ = (_e2136 << bitcast<u32>((_e2119 & 31u)));
+                                                            }
+                                                            let _e2141 = phi_3410_;
+                                                            phi_3411_ = _e2141;
+                                                            phi_3412_ = _e2129;
+                                                        }
+                                                        let _e2143 = phi_3411_;
+                                                        let _e2145 = phi_3412_;
+                                                        phi_3421_ = select(select(_e2143, 0u, _e2145), 0u, _e1070);
+                                                    } else {
+                                                        phi_3421_ = u32();
+                                                    }
+                                                    let _e2149 = phi_3421_;
+                                                    phi_3423_ = _e2149;
+                                                    phi_3424_ = select(true, false, _e2004);
+                                                }
+                                                let _e2152 = phi_3423_;
+                                                let _e2154 = phi_3424_;
+                                                if (_e1540 >= _e225.member.member_3) {
+                                                    phi_3757_ = u32();
+                                                    phi_3758_ = true;
+                                                } else {
+                                                    let _e2160 = (((_e1194 * 2f) - 1f) * _e225.member.member_1.x);
+                                                    let _e2164 = (((_e1195 * -2f) + 1f) * _e225.member.member_1.y);
+                                                    let _e2166 = ((_e2160 * _e1540) - _e466);
+                                                    let _e2167 = ((_e2164 * _e1540) - _e473);
+                                                    let _e2168 = (_e1540 - _e459);
+                                                    if (_e1268 < _e225.member.member_3) {
+                                                        phi_3485_ = (vec3<f32>((_e2160 * _e1268), (_e2164 * _e1268), _e1268) - _e474);
+                                                    } else {
+                                                        phi_3485_ = vec3<f32>((_e2166 - _e979), (_e2167 - _e980), (_e2168 - _e981));
+                                                    }
+                                                    let _e2179 = phi_3485_;
+                                                    if _e968 {
+                                                        phi_3501_ = select(true, false, ((((_e2166 * _e2166) + (_e2167 * _e2167)) + (_e2168 * _e2168)) > (_e241 * _e241)));
+                                                    } else {
+                                                        phi_3501_ = true;
+                                                    }
+                                                    let _e2189 = phi_3501_;
+                                                    if _e2189 {
+                                                        let _e2201 = ((((_e2166 * _e485) + (_e2167 * _e486)) + (_e2168 * _e487)) * inverseSqrt((((_e2166 * _e2166) + (_e2167 * _e2167)) + (_e2168 * _e2168))));
+                                                        let _e2205 = select(-1f, select(1f, _e2201, (_e2201 < 1f)), (_e2201 > -1f));
+                                                        let _e2206 = abs(_e2205);
+                                                        let _e2216 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2206, 0.00667009f), _e2206, -0.017088126f), _e2206, 0.03089188f), _e2206, -0.050174303f), _e2206, 0.08897899f), _e2206, -0.2145988f), _e2206, 1.5707963f) * sqrt((1f - _e2206)));
+                                                        let _e2223 = ((((select((3.1415927f - _e2216), _e2216, (_e2205 >= 0f)) + _e1064) - _e1060) + 1.5707964f) * 0.31830987f);
+                                                        let _e2227 = select(0f, select(1f, _e2223, (_e2223 < 1f)), (_e2223 > 0f));
+                                                        let _e2242 = ((((_e2179.x * _e485) + (_e2179.y * _e486)) + (_e2179.z * _e487)) * inverseSqrt((((_e2179.x * _e2179.x) + (_e2179.y * _e2179.y)) + (_e2179.z * _e2179.z))));
+                                                        let _e2246 = select(-1f, select(1f, _e2242, (_e2242 < 1f)), (_e2242 > -1f));
+                                                        let _e2247 = abs(_e2246);
+                                                        let _e2257 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2247, 0.00667009f), _e2247, -0.017088126f), _e2247, 0.03089188f), _e2247, -0.050174303f), _e2247, 0.08897899f), _e2247, -0.2145988f), _e2247, 1.5707963f) * sqrt((1f - _e2247)));
+                                                        let _e2264 = ((((select((3.1415927f - _e2257), _e2257, (_e2246 >= 0f)) + _e1064) - _e1060) + 1.5707964f) * 0.31830987f);
+                                                        let _e2268 = select(0f, select(1f, _e2264, (_e2264 < 1f)), (_e2264 > 0f));
+                                                        let _e2270 = (_e2268 != _e2268);
+                                                        let _e2272 = select(_e2268, _e2227, ((_e2227 < _e2268) || _e2270));
+                                                        let _e2275 = select(_e2268, _e2227, ((_e2227 > _e2268) || _e2270));
+                                                        let _e2277 = floor((_e2272 * 32f));
+                                                        if (_e235 == 1u) {
+                                                            let _e2285 = -(floor((_e2275 * -32f)));
+                                                            let _e2290 = (select(32f, _e2285, ((_e2285 < 32f) || false)) - _e2277);
+                                                            phi_3691_ = select(select(0f, _e2290, ((_e2290 > 0f) || false)), 0f, (_e2275 <= _e2272));
+                                                        } else {
+                                                            phi_3691_ = -(floor(((_e2275 - _e2272) * -32f)));
+                                                        }
+                                                        let _e2296 = phi_3691_;
+                                                        let _e2304 = (bitcast<u32>((floor(select(0f, select(32f, _e2277, (_e2277 < 32f)), (_e2277 > 0f))) + 8388608f)) - 1258291200u);
+                                                        let _e2312 = (bitcast<u32>((floor(select(0f, select(32f, _e2296, (_e2296 < 32f)), (_e2296 > 0f))) + 8388608f)) - 1258291200u);
+                                                        if (_e2304 >= 32u) {
+                                                            phi_3745_ = u32();
+                                                            phi_3746_ = true;
+                                                        } else {
+                                                            let _e2314 = (_e2312 == 0u);
+                                                            if _e2314 {
+                                                                phi_3744_ = u32();
+                                                            } else {
+                                                                if (_e2312 >= 32u) {
+                                                                    phi_3741_ = 4294967295u;
+                                                                } else {
+                                                                    phi_3741_ = ((1u << bitcast<u32>((_e2312 & 31u))) - 1u);
+                                                                }
+                                                                let _e2321 = phi_3741_;
+                                                                phi_3744_ = (_e2321 << bitcast<u32>((_e2304 & 31u)));
+                                                            }
+                                                            let _e2326 = phi_3744_;
+                                                            phi_3745_ = _e2326;
+                                                            phi_3746_ = _e2314;
+                                                        }
+                                                        let _e2328 = phi_3745_;
+                                                        let _e2330 = phi_3746_;
+                                                        phi_3755_ = select(select(_e2328, 0u, _e2330), 0u, _e1070);
+                                                    } else {
+                                                        phi_3755_ = u32();
+                                                    }
+                                                    let _e2334 = phi_3755_;
+                                                    phi_3757_ = _e2334;
+                                                    phi_3758_ = select(true, false, _e2189);
+                                                }
+                                                let _e2337 = phi_3757_;
+                                                let _e2339 = phi_3758_;
+                                                phi_3764_ = _e1602;
+                                                phi_3765_ = (((select(_e1783, 0u, _e1785) | select(_e1967, 0u, _e1969)) | select(_e2152, 0u, _e2154)) | select(_e2337, 0u, _e2339));
+                                            } else {
+                                                phi_3764_ = _e985;
+                                                phi_3765_ = 0u;
                                             }
-                                            let _e2437 = phi_7115_;
-                                            let _e2439 = phi_3615_;
-                                            let _e2441 = phi_3616_;
-                                            let _e2443 = phi_3617_;
-                                            phi_7113_ = _e2437;
-                                            phi_4018_ = select(_e2441, _e2439, _e2443);
+                                            let _e2343 = phi_3764_;
+                                            let _e2345 = phi_3765_;
+                                            let _e2347 = (_e990 * inverseSqrt(_e1075));
+                                            let _e2351 = select(-1f, select(1f, _e2347, (_e2347 < 1f)), (_e2347 > -1f));
+                                            let _e2352 = abs(_e2351);
+                                            let _e2362 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2352, 0.00667009f), _e2352, -0.017088126f), _e2352, 0.03089188f), _e2352, -0.050174303f), _e2352, 0.08897899f), _e2352, -0.2145988f), _e2352, 1.5707963f) * sqrt((1f - _e2352)));
+                                            let _e2369 = ((((select((3.1415927f - _e2362), _e2362, (_e2351 >= 0f)) + _e1064) - _e1060) + 1.5707964f) * 0.31830987f);
+                                            let _e2373 = select(0f, select(1f, _e2369, (_e2369 < 1f)), (_e2369 > 0f));
+                                            let _e2388 = ((((_e2343.x * _e485) + (_e2343.y * _e486)) + (_e2343.z * _e487)) * inverseSqrt((((_e2343.x * _e2343.x) + (_e2343.y * _e2343.y)) + (_e2343.z * _e2343.z))));
+                                            let _e2392 = select(-1f, select(1f, _e2388, (_e2388 < 1f)), (_e2388 > -1f));
+                                            let _e2393 = abs(_e2392);
+                                            let _e2403 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2393, 0.00667009f), _e2393, -0.017088126f), _e2393, 0.03089188f), _e2393, -0.050174303f), _e2393, 0.08897899f), _e2393, -0.2145988f), _e2393, 1.5707963f) * sqrt((1f - _e2393)));
+                                            let _e2410 = ((((select((3.1415927f - _e2403), _e2403, (_e2392 >= 0f)) + _e1064) - _e1060) + 1.5707964f) * 0.31830987f);
+                                            let _e2414 = select(0f, select(1f, _e2410, (_e2410 < 1f)), (_e2410 > 0f));
+                                            let _e2416 = (_e2414 != _e2414);
+                                            let _e2418 = select(_e2414, _e2373, ((_e2373 < _e2414) || _e2416));
+                                            let _e2421 = select(_e2414, _e2373, ((_e2373 > _e2414) || _e2416));
+                                            let _e2423 = floor((_e2418 * 32f));
+                                            if (_e235 == 1u) {
+                                                let _e2431 = -(floor((_e2421 * -32f)));
+                                                let _e2436 = (select(32f, _e2431, ((_e2431 < 32f) || false)) - _e2423);
+                                                phi_3952_ = select(select(0f, _e2436, ((_e2436 > 0f) || false)), 0f, (_e2421 <= _e2418));
+                                            } else {
+                                                phi_3952_ = -(floor(((_e2421 - _e2418) * -32f)));
+                                            }
+                                            let _e2442 = phi_3952_;
+                                            let _e2450 = (bitcast<u32>((floor(select(0f, select(32f, _e2423, (_e2423 < 32f)), (_e2423 > 0f))) + 8388608f)) - 1258291200u);
+                                            let _e2458 = (bitcast<u32>((floor(select(0f, select(32f, _e2442, (_e2442 < 32f)), (_e2442 > 0f))) + 8388608f)) - 1258291200u);
+                                            if (_e2450 >= 32u) {
+                                                phi_4006_ = u32();
+                                                phi_4007_ = true;
+                                            } else {
+                                                let _e2460 = (_e2458 == 0u);
+                                                if _e2460 {
+                                                    phi_4005_ = u32();
+                                                } else {
+                                                    if (_e2458 >= 32u) {
+                                                        phi_4002_ = 4294967295u;
+                                                    } else {
+                                                        phi_4002_ = ((1u << bitcast<u32>((_e2458 & 31u))) - 1u);
+                                                    }
+                                                    let _e2467 = phi_4002_;
+                                                    phi_4005_ = (_e2467 << bitcast<u32>((_e2450 & 31u)));
+                                                }
+                                                let _e2472 = phi_4005_;
+                                                phi_4006_ = _e2472;
+                                                phi_4007_ = _e2460;
+                                            }
+                                            let _e2474 = phi_4006_;
+                                            let _e2476 = phi_4007_;
+                                            phi_4017_ = (select(select(_e2474, 0u, _e2476), 0u, _e1070) | _e2345);
                                         } else {
-                                            if (_e243 > 0f) {
-                                                phi_3633_ = (_e976 > (_e243 * _e243));
-                                            } else {
-                                                phi_3633_ = false;
-                                            }
-                                            let _e996 = phi_3633_;
-                                            if !(_e996) {
-                                                let _e1002 = (((_e969 * _e487) + (_e970 * _e488)) + (_e971 * _e489));
-                                                let _e1006 = (_e969 - (_e487 * _e1002));
-                                                let _e1007 = (_e970 - (_e488 * _e1002));
-                                                let _e1008 = (_e971 - (_e489 * _e1002));
-                                                let _e1011 = ((_e1007 * _e489) - (_e488 * _e1008));
-                                                let _e1014 = ((_e1008 * _e487) - (_e489 * _e1006));
-                                                let _e1017 = ((_e1006 * _e488) - (_e487 * _e1007));
-                                                let _e1028 = ((((_e548 * _e1011) + (_e549 * _e1014)) + (_e550 * _e1017)) / (((_e1011 * _e1011) + (_e1014 * _e1014)) + (_e1017 * _e1017)));
-                                                let _e1032 = (_e548 - (_e1011 * _e1028));
-                                                let _e1033 = (_e549 - (_e1014 * _e1028));
-                                                let _e1034 = (_e550 - (_e1017 * _e1028));
-                                                let _e1040 = inverseSqrt((((_e1032 * _e1032) + (_e1033 * _e1033)) + (_e1034 * _e1034)));
-                                                let _e1046 = ((((_e1032 * _e487) + (_e1033 * _e488)) + (_e1034 * _e489)) * _e1040);
-                                                let _e1050 = select(0f, select(1f, _e1046, (_e1046 < 1f)), (_e1046 > 0f));
-                                                let _e1051 = abs(_e1050);
-                                                let _e1061 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1051, 0.00667009f), _e1051, -0.017088126f), _e1051, 0.03089188f), _e1051, -0.050174303f), _e1051, 0.08897899f), _e1051, -0.2145988f), _e1051, 1.5707963f) * sqrt((1f - _e1051)));
-                                                let _e1064 = select((3.1415927f - _e1061), _e1061, (_e1050 >= 0f));
-                                                let _e1072 = select(_e1064, -(_e1064), ((((_e1006 * _e1032) + (_e1007 * _e1033)) + (_e1008 * _e1034)) < 0f));
-                                                let _e1073 = (_e1040 * 0.02f);
-                                                let _e1076 = select(0.19634955f, _e1073, ((_e1073 < 0.19634955f) || false));
-                                                let _e1086 = (_e969 - (_e487 * _e240));
-                                                let _e1087 = (_e970 - (_e488 * _e240));
-                                                let _e1088 = (_e971 - (_e489 * _e240));
-                                                let _e1090 = (_e1002 * inverseSqrt(_e976));
-                                                let _e1094 = select(-1f, select(1f, _e1090, (_e1090 < 1f)), (_e1090 > -1f));
-                                                let _e1095 = abs(_e1094);
-                                                let _e1105 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1095, 0.00667009f), _e1095, -0.017088126f), _e1095, 0.03089188f), _e1095, -0.050174303f), _e1095, 0.08897899f), _e1095, -0.2145988f), _e1095, 1.5707963f) * sqrt((1f - _e1095)));
-                                                let _e1112 = ((((select((3.1415927f - _e1105), _e1105, (_e1094 >= 0f)) + _e1076) - _e1072) + 1.5707964f) * 0.31830987f);
-                                                let _e1116 = select(0f, select(1f, _e1112, (_e1112 < 1f)), (_e1112 > 0f));
-                                                let _e1128 = ((((_e1086 * _e487) + (_e1087 * _e488)) + (_e1088 * _e489)) * inverseSqrt((((_e1086 * _e1086) + (_e1087 * _e1087)) + (_e1088 * _e1088))));
-                                                let _e1132 = select(-1f, select(1f, _e1128, (_e1128 < 1f)), (_e1128 > -1f));
-                                                let _e1133 = abs(_e1132);
-                                                let _e1143 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1133, 0.00667009f), _e1133, -0.017088126f), _e1133, 0.03089188f), _e1133, -0.050174303f), _e1133, 0.08897899f), _e1133, -0.2145988f), _e1133, 1.5707963f) * sqrt((1f - _e1133)));
-                                                let _e1150 = ((((select((3.1415927f - _e1143), _e1143, (_e1132 >= 0f)) + _e1076) - _e1072) + 1.5707964f) * 0.31830987f);
-                                                let _e1154 = select(0f, select(1f, _e1150, (_e1150 < 1f)), (_e1150 > 0f));
-                                                let _e1156 = (_e1154 != _e1154);
-                                                let _e1158 = select(_e1154, _e1116, ((_e1116 < _e1154) || _e1156));
-                                                let _e1161 = select(_e1154, _e1116, ((_e1116 > _e1154) || _e1156));
-                                                let _e1163 = floor((_e1158 * 32f));
-                                                if (_e237 == 1u) {
-                                                    let _e1171 = -(floor((_e1161 * -32f)));
-                                                    let _e1176 = (select(32f, _e1171, ((_e1171 < 32f) || false)) - _e1163);
-                                                    phi_3949_ = select(select(0f, _e1176, ((_e1176 > 0f) || false)), 0f, (_e1161 <= _e1158));
-                                                } else {
-                                                    phi_3949_ = -(floor(((_e1161 - _e1158) * -32f)));
-                                                }
-                                                let _e1182 = phi_3949_;
-                                                let _e1190 = (bitcast<u32>((floor(select(0f, select(32f, _e1163, (_e1163 < 32f)), (_e1163 > 0f))) + 8388608f)) - 1258291200u);
-                                                let _e1198 = (bitcast<u32>((floor(select(0f, select(32f, _e1182, (_e1182 < 32f)), (_e1182 > 0f))) + 8388608f)) - 1258291200u);
-                                                if (_e1190 >= 32u) {
-                                                    phi_4003_ = u32();
-                                                    phi_4004_ = true;
-                                                } else {
-                                                    let _e1200 = (_e1198 == 0u);
-                                                    if _e1200 {
-                                                        phi_4002_ = u32();
-                                                    } else {
-                                                        if (_e1198 >= 32u) {
-                                                            phi_3999_ = 4294967295u;
-                                                        } else {
-                                                            phi_3999_ = ((1u << bitcast<u32>((_e1198 & 31u))) - 1u);
-                                                        }
-                                                        let _e1207 = phi_3999_;
-                                                        phi_4002_ = (_e1207 << bitcast<u32>((_e1190 & 31u)));
-                                                    }
-                                                    let _e1212 = phi_4002_;
-                                                    phi_4003_ = _e1212;
-                                                    phi_4004_ = _e1200;
-                                                }
-                                                let _e1214 = phi_4003_;
-                                                let _e1216 = phi_4004_;
-                                                phi_4017_ = select(select(select(_e1214, 0u, _e1216), 0u, ((((_e1006 * _e1006) + (_e1007 * _e1007)) + (_e1008 * _e1008)) <= 0f)), 0u, _e996);
-                                            } else {
-                                                phi_4017_ = 0u;
-                                            }
-                                            let _e1221 = phi_4017_;
-                                            phi_7113_ = _e790;
-                                            phi_4018_ = _e1221;
+                                            phi_4017_ = 0u;
                                         }
-                                        let _e2446 = phi_7113_;
-                                        let _e2448 = phi_4018_;
-                                        let _e2450 = (_e964 - _e468);
-                                        let _e2451 = (_e968 - _e475);
-                                        let _e2452 = (_e960 - _e461);
-                                        let _e2457 = (((_e2450 * _e2450) + (_e2451 * _e2451)) + (_e2452 * _e2452));
-                                        if _e977 {
+                                        let _e2481 = phi_4017_;
+                                        let _e2483 = (_e960 - _e466);
+                                        let _e2484 = (_e964 - _e473);
+                                        let _e2485 = (_e956 - _e459);
+                                        if _e968 {
+                                            phi_4041_ = select(true, false, ((((_e2483 * _e2483) + (_e2484 * _e2484)) + (_e2485 * _e2485)) > (_e241 * _e241)));
+                                        } else {
                                             phi_4041_ = true;
-                                        } else {
-                                            phi_4041_ = (_e2457 <= (_e243 * _e243));
                                         }
-                                        let _e2461 = phi_4041_;
-                                        if _e2461 {
-                                            phi_4057_ = ((((_e2450 * _e548) + (_e2451 * _e549)) + (_e2452 * _e550)) > (0.018f * sqrt(_e2457)));
-                                        } else {
-                                            phi_4057_ = false;
-                                        }
-                                        let _e2471 = phi_4057_;
-                                        if _e2471 {
-                                            let _e2704 = (0.5f / _e960);
-                                            let _e2710 = frame.member[0u].member_1.member.member.member_1[0u];
-                                            let _e2718 = frame.member[0u].member_1.member.member.member_1[1u];
-                                            let _e2723 = frame.member[0u].member_1.member_5[0u];
-                                            let _e2726 = frame.member[0u].member_1.member_5[1u];
-                                            let _e2727 = f32(_e2723);
-                                            let _e2728 = f32(_e2726);
-                                            let _e2730 = frame.member[0u].member_1.member_4;
-                                            let _e2731 = f32(_e2730);
-                                            let _e2732 = (2u * _e2730);
-                                            let _e2733 = (_e2723 + _e2732);
-                                            let _e2739 = (floor(((((_e964 * _e2704) / _e2710) + 0.5f) * _e2727)) + _e2731);
-                                            let _e2740 = f32((_e2733 - 1u));
-                                            let _e2744 = select(0f, select(_e2740, _e2739, (_e2739 < _e2740)), (_e2739 > 0f));
-                                            let _e2747 = (floor(((0.5f - ((_e968 * _e2704) / _e2718)) * _e2728)) + _e2731);
-                                            let _e2748 = f32(((_e2726 + _e2732) - 1u));
-                                            let _e2752 = select(0f, select(_e2748, _e2747, (_e2747 < _e2748)), (_e2747 > 0f));
-                                            let _e2757 = select(select(u32(_e2744), 0u, (_e2744 < 0f)), 4294967295u, (_e2744 > 4294967000f));
-                                            let _e2762 = select(select(u32(_e2752), 0u, (_e2752 < 0f)), 4294967295u, (_e2752 > 4294967000f));
-                                            let _e2765 = bitcast<i32>(_e2730);
-                                            let _e2771 = frame.member[0u].member_1.member_8;
-                                            let _e2773 = frame.member[0u].member_1.member_12;
-                                            let _e2780 = (((((_e2762 % 4u) * 4u) + (_e2757 % 4u)) + (_e2773 % 16u)) % 16u);
-                                            if (_e2771 == 1u) {
-                                                local_1 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
-                                                let _e2793 = (_e2780 < 16u);
-                                                if _e2793 {
-                                                } else {
-                                                    phi_7297_ = true;
-                                                    break;
-                                                }
-                                                let _e2796 = local_1[_e2780][0u];
-                                                local_2 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
-                                                if _e2793 {
-                                                } else {
-                                                    phi_7297_ = true;
-                                                    break;
-                                                }
-                                                let _e2799 = local_2[_e2780][1u];
-                                                phi_4217_ = vec2<f32>(_e2796, _e2799);
+                                        let _e2495 = phi_4041_;
+                                        if _e2495 {
+                                            let _e2496 = (_e485 * _e238);
+                                            let _e2497 = (_e486 * _e238);
+                                            let _e2498 = (_e487 * _e238);
+                                            let _e2502 = vec3<f32>((_e2483 - _e2496), (_e2484 - _e2497), (_e2485 - _e2498));
+                                            let _e2507 = (((_e2483 * _e485) + (_e2484 * _e486)) + (_e2485 * _e487));
+                                            let _e2511 = (_e2483 - (_e485 * _e2507));
+                                            let _e2512 = (_e2484 - (_e486 * _e2507));
+                                            let _e2513 = (_e2485 - (_e487 * _e2507));
+                                            let _e2516 = ((_e2512 * _e487) - (_e486 * _e2513));
+                                            let _e2519 = ((_e2513 * _e485) - (_e487 * _e2511));
+                                            let _e2522 = ((_e2511 * _e486) - (_e485 * _e2512));
+                                            let _e2533 = ((((_e546 * _e2516) + (_e547 * _e2519)) + (_e548 * _e2522)) / (((_e2516 * _e2516) + (_e2519 * _e2519)) + (_e2522 * _e2522)));
+                                            let _e2537 = (_e546 - (_e2516 * _e2533));
+                                            let _e2538 = (_e547 - (_e2519 * _e2533));
+                                            let _e2539 = (_e548 - (_e2522 * _e2533));
+                                            let _e2545 = inverseSqrt((((_e2537 * _e2537) + (_e2538 * _e2538)) + (_e2539 * _e2539)));
+                                            let _e2551 = ((((_e2537 * _e485) + (_e2538 * _e486)) + (_e2539 * _e487)) * _e2545);
+                                            let _e2555 = select(0f, select(1f, _e2551, (_e2551 < 1f)), (_e2551 > 0f));
+                                            let _e2556 = abs(_e2555);
+                                            let _e2566 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2556, 0.00667009f), _e2556, -0.017088126f), _e2556, 0.03089188f), _e2556, -0.050174303f), _e2556, 0.08897899f), _e2556, -0.2145988f), _e2556, 1.5707963f) * sqrt((1f - _e2556)));
+                                            let _e2569 = select((3.1415927f - _e2566), _e2566, (_e2555 >= 0f));
+                                            let _e2577 = select(_e2569, -(_e2569), ((((_e2511 * _e2537) + (_e2512 * _e2538)) + (_e2513 * _e2539)) < 0f));
+                                            let _e2578 = (_e2545 * 0.02f);
+                                            let _e2581 = select(0.19634955f, _e2578, ((_e2578 < 0.19634955f) || false));
+                                            let _e2587 = ((((_e2511 * _e2511) + (_e2512 * _e2512)) + (_e2513 * _e2513)) <= 0f);
+                                            let _e2592 = (((_e2483 * _e2483) + (_e2484 * _e2484)) + (_e2485 * _e2485));
+                                            if (_e241 <= 0f) {
+                                                phi_4196_ = true;
                                             } else {
-                                                if (_e2771 == 2u) {
-                                                    local_3 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
-                                                    let _e2783 = (_e2780 < 16u);
-                                                    if _e2783 {
+                                                phi_4196_ = (_e2592 <= (_e241 * _e241));
+                                            }
+                                            let _e2597 = phi_4196_;
+                                            if _e2597 {
+                                                phi_4212_ = ((((_e2483 * _e546) + (_e2484 * _e547)) + (_e2485 * _e548)) > (0.018f * sqrt(_e2592)));
+                                            } else {
+                                                phi_4212_ = false;
+                                            }
+                                            let _e2607 = phi_4212_;
+                                            if _e2607 {
+                                                let _e2608 = (0.5f / _e956);
+                                                let _e2614 = frame.member[0u].member_1.member.member.member_1[0u];
+                                                let _e2622 = frame.member[0u].member_1.member.member.member_1[1u];
+                                                let _e2627 = frame.member[0u].member_1.member_5[0u];
+                                                let _e2630 = frame.member[0u].member_1.member_5[1u];
+                                                let _e2631 = f32(_e2627);
+                                                let _e2632 = f32(_e2630);
+                                                let _e2634 = frame.member[0u].member_1.member_4;
+                                                let _e2635 = f32(_e2634);
+                                                let _e2636 = (2u * _e2634);
+                                                let _e2637 = (_e2627 + _e2636);
+                                                let _e2643 = (floor(((((_e960 * _e2608) / _e2614) + 0.5f) * _e2631)) + _e2635);
+                                                let _e2644 = f32((_e2637 - 1u));
+                                                let _e2648 = select(0f, select(_e2644, _e2643, (_e2643 < _e2644)), (_e2643 > 0f));
+                                                let _e2651 = (floor(((0.5f - ((_e964 * _e2608) / _e2622)) * _e2632)) + _e2635);
+                                                let _e2652 = f32(((_e2630 + _e2636) - 1u));
+                                                let _e2656 = select(0f, select(_e2652, _e2651, (_e2651 < _e2652)), (_e2651 > 0f));
+                                                let _e2661 = select(select(u32(_e2648), 0u, (_e2648 < 0f)), 4294967295u, (_e2648 > 4294967000f));
+                                                let _e2666 = select(select(u32(_e2656), 0u, (_e2656 < 0f)), 4294967295u, (_e2656 > 4294967000f));
+                                                let _e2669 = bitcast<i32>(_e2634);
+                                                let _e2675 = frame.member[0u].member_1.member_8;
+                                                let _e2677 = frame.member[0u].member_1.member_12;
+                                                let _e2684 = (((((_e2666 % 4u) * 4u) + (_e2661 % 4u)) + (_e2677 % 16u)) % 16u);
+                                                if (_e2675 == 1u) {
+                                                    local_1 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
+                                                    let _e2697 = (_e2684 < 16u);
+                                                    if _e2697 {
                                                     } else {
-                                                        phi_7297_ = true;
+                                                        phi_8008_ = true;
                                                         break;
                                                     }
-                                                    let _e2786 = local_3[_e2780][0u];
-                                                    local_4 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
-                                                    if _e2783 {
+                                                    let _e2700 = local_1[_e2684][0u];
+                                                    local_2 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
+                                                    if _e2697 {
                                                     } else {
-                                                        phi_7297_ = true;
+                                                        phi_8008_ = true;
                                                         break;
                                                     }
-                                                    let _e2789 = local_4[_e2780][1u];
-                                                    phi_4216_ = vec2<f32>(_e2786, _e2789);
+                                                    let _e2703 = local_2[_e2684][1u];
+                                                    phi_4372_ = vec2<f32>(_e2700, _e2703);
                                                 } else {
-                                                    phi_4216_ = vec2<f32>(0.5f, 0.5f);
-                                                }
-                                                let _e2792 = phi_4216_;
-                                                phi_4217_ = _e2792;
-                                            }
-                                            let _e2802 = phi_4217_;
-                                            let _e2807 = ((f32((bitcast<i32>(_e2757) - _e2765)) + _e2802.x) / _e2727);
-                                            let _e2808 = ((f32((bitcast<i32>(_e2762) - _e2765)) + _e2802.y) / _e2728);
-                                            let _e2813 = frame.member[0u].member_1.member.member.member[0u];
-                                            let _e2818 = select(select(u32(_e2813), 0u, (_e2813 < 0f)), 4294967295u, (_e2813 > 4294967000f));
-                                            let _e2823 = frame.member[0u].member_1.member.member.member[1u];
-                                            let _e2833 = (select(0f, select(1f, _e2807, (_e2807 < 1f)), (_e2807 > 0f)) * _e2813);
-                                            let _e2836 = f32(bitcast<i32>((_e2818 - 1u)));
-                                            let _e2849 = (select(0f, select(1f, _e2808, (_e2808 < 1f)), (_e2808 > 0f)) * _e2823);
-                                            let _e2852 = f32(bitcast<i32>((select(select(u32(_e2823), 0u, (_e2823 < 0f)), 4294967295u, (_e2823 > 4294967000f)) - 1u)));
-                                            let _e2862 = (((bitcast<u32>((floor(select(0f, select(_e2852, _e2849, (_e2849 < _e2852)), (_e2849 > 0f))) + 8388608f)) - 1258291200u) * _e2818) + (bitcast<u32>((floor(select(0f, select(_e2836, _e2833, (_e2833 < _e2836)), (_e2833 > 0f))) + 8388608f)) - 1258291200u));
-                                            if (_e2862 < _e187) {
-                                            } else {
-                                                phi_7297_ = true;
-                                                break;
-                                            }
-                                            let _e2865 = mips.member[_e2862];
-                                            if (abs((_e2865 - _e960)) > _e240) {
-                                                if (_e243 > 0f) {
-                                                    phi_4350_ = (_e2457 > (_e243 * _e243));
-                                                } else {
-                                                    phi_4350_ = false;
-                                                }
-                                                let _e3698 = phi_4350_;
-                                                if !(_e3698) {
-                                                    let _e3704 = (((_e2450 * _e487) + (_e2451 * _e488)) + (_e2452 * _e489));
-                                                    let _e3708 = (_e2450 - (_e487 * _e3704));
-                                                    let _e3709 = (_e2451 - (_e488 * _e3704));
-                                                    let _e3710 = (_e2452 - (_e489 * _e3704));
-                                                    let _e3713 = ((_e3709 * _e489) - (_e488 * _e3710));
-                                                    let _e3716 = ((_e3710 * _e487) - (_e489 * _e3708));
-                                                    let _e3719 = ((_e3708 * _e488) - (_e487 * _e3709));
-                                                    let _e3730 = ((((_e548 * _e3713) + (_e549 * _e3716)) + (_e550 * _e3719)) / (((_e3713 * _e3713) + (_e3716 * _e3716)) + (_e3719 * _e3719)));
-                                                    let _e3734 = (_e548 - (_e3713 * _e3730));
-                                                    let _e3735 = (_e549 - (_e3716 * _e3730));
-                                                    let _e3736 = (_e550 - (_e3719 * _e3730));
-                                                    let _e3742 = inverseSqrt((((_e3734 * _e3734) + (_e3735 * _e3735)) + (_e3736 * _e3736)));
-                                                    let _e3748 = ((((_e3734 * _e487) + (_e3735 * _e488)) + (_e3736 * _e489)) * _e3742);
-                                                    let _e3752 = select(0f, select(1f, _e3748, (_e3748 < 1f)), (_e3748 > 0f));
-                                                    let _e3753 = abs(_e3752);
-                                                    let _e3763 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3753, 0.00667009f), _e3753, -0.017088126f), _e3753, 0.03089188f), _e3753, -0.050174303f), _e3753, 0.08897899f), _e3753, -0.2145988f), _e3753, 1.5707963f) * sqrt((1f - _e3753)));
-                                                    let _e3766 = select((3.1415927f - _e3763), _e3763, (_e3752 >= 0f));
-                                                    let _e3774 = select(_e3766, -(_e3766), ((((_e3708 * _e3734) + (_e3709 * _e3735)) + (_e3710 * _e3736)) < 0f));
-                                                    let _e3775 = (_e3742 * 0.02f);
-                                                    let _e3778 = select(0.19634955f, _e3775, ((_e3775 < 0.19634955f) || false));
-                                                    let _e3788 = (_e2450 - (_e487 * _e240));
-                                                    let _e3789 = (_e2451 - (_e488 * _e240));
-                                                    let _e3790 = (_e2452 - (_e489 * _e240));
-                                                    let _e3792 = (_e3704 * inverseSqrt(_e2457));
-                                                    let _e3796 = select(-1f, select(1f, _e3792, (_e3792 < 1f)), (_e3792 > -1f));
-                                                    let _e3797 = abs(_e3796);
-                                                    let _e3807 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3797, 0.00667009f), _e3797, -0.017088126f), _e3797, 0.03089188f), _e3797, -0.050174303f), _e3797, 0.08897899f), _e3797, -0.2145988f), _e3797, 1.5707963f) * sqrt((1f - _e3797)));
-                                                    let _e3814 = ((((select((3.1415927f - _e3807), _e3807, (_e3796 >= 0f)) + _e3778) - _e3774) + 1.5707964f) * 0.31830987f);
-                                                    let _e3830 = ((((_e3788 * _e487) + (_e3789 * _e488)) + (_e3790 * _e489)) * inverseSqrt((((_e3788 * _e3788) + (_e3789 * _e3789)) + (_e3790 * _e3790))));
-                                                    let _e3834 = select(-1f, select(1f, _e3830, (_e3830 < 1f)), (_e3830 > -1f));
-                                                    let _e3835 = abs(_e3834);
-                                                    let _e3845 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3835, 0.00667009f), _e3835, -0.017088126f), _e3835, 0.03089188f), _e3835, -0.050174303f), _e3835, 0.08897899f), _e3835, -0.2145988f), _e3835, 1.5707963f) * sqrt((1f - _e3835)));
-                                                    let _e3852 = ((((select((3.1415927f - _e3845), _e3845, (_e3834 >= 0f)) + _e3778) - _e3774) + 1.5707964f) * 0.31830987f);
-                                                    let _e3857 = (1f - select(0f, select(1f, _e3814, (_e3814 < 1f)), (_e3814 > 0f)));
-                                                    let _e3858 = (1f - select(0f, select(1f, _e3852, (_e3852 < 1f)), (_e3852 > 0f)));
-                                                    let _e3860 = (_e3858 != _e3858);
-                                                    let _e3862 = select(_e3858, _e3857, ((_e3857 < _e3858) || _e3860));
-                                                    let _e3865 = select(_e3858, _e3857, ((_e3857 > _e3858) || _e3860));
-                                                    let _e3867 = floor((_e3862 * 32f));
-                                                    if (_e237 == 1u) {
-                                                        let _e3875 = -(floor((_e3865 * -32f)));
-                                                        let _e3880 = (select(32f, _e3875, ((_e3875 < 32f) || false)) - _e3867);
-                                                        phi_4666_ = select(select(0f, _e3880, ((_e3880 > 0f) || false)), 0f, (_e3865 <= _e3862));
-                                                    } else {
-                                                        phi_4666_ = -(floor(((_e3865 - _e3862) * -32f)));
-                                                    }
-                                                    let _e3886 = phi_4666_;
-                                                    let _e3894 = (bitcast<u32>((floor(select(0f, select(32f, _e3867, (_e3867 < 32f)), (_e3867 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e3902 = (bitcast<u32>((floor(select(0f, select(32f, _e3886, (_e3886 < 32f)), (_e3886 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e3894 >= 32u) {
-                                                        phi_4720_ = u32();
-                                                        phi_4721_ = true;
-                                                    } else {
-                                                        let _e3904 = (_e3902 == 0u);
-                                                        if _e3904 {
-                                                            phi_4719_ = u32();
+                                                    if (_e2675 == 2u) {
+                                                        local_3 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
+                                                        let _e2687 = (_e2684 < 16u);
+                                                        if _e2687 {
                                                         } else {
-                                                            if (_e3902 >= 32u) {
-                                                                phi_4716_ = 4294967295u;
-                                                            } else {
-                                                                phi_4716_ = ((1u << bitcast<u32>((_e3902 & 31u))) - 1u);
-                                                            }
-                                                            let _e3911 = phi_4716_;
-                                                            phi_4719_ = (_e3911 << bitcast<u32>((_e3894 & 31u)));
-                                                        }
-                                                        let _e3916 = phi_4719_;
-                                                        phi_4720_ = _e3916;
-                                                        phi_4721_ = _e3904;
-                                                    }
-                                                    let _e3918 = phi_4720_;
-                                                    let _e3920 = phi_4721_;
-                                                    phi_4734_ = select(select(select(_e3918, 0u, _e3920), 0u, ((((_e3708 * _e3708) + (_e3709 * _e3709)) + (_e3710 * _e3710)) <= 0f)), 0u, _e3698);
-                                                } else {
-                                                    phi_4734_ = 0u;
-                                                }
-                                                let _e3925 = phi_4734_;
-                                                phi_7301_ = _e2446;
-                                                phi_6117_ = _e3925;
-                                                phi_6118_ = u32();
-                                                phi_6119_ = true;
-                                            } else {
-                                                let _e2873 = frame.member[0u].member_1.member_6;
-                                                let _e2874 = (((_e2762 * _e2733) + _e2757) * _e2873);
-                                                let _e2878 = frame.member[0u].member_1.member.member.member_3;
-                                                phi_4757_ = 0u;
-                                                phi_4760_ = _e2878;
-                                                loop {
-                                                    let _e2880 = phi_4757_;
-                                                    let _e2882 = phi_4760_;
-                                                    local_23 = _e2882;
-                                                    local_24 = _e2882;
-                                                    local_25 = _e2882;
-                                                    local_26 = _e2882;
-                                                    local_27 = _e2882;
-                                                    local_48 = _e2882;
-                                                    let _e2883 = (_e2880 < _e2873);
-                                                    if _e2883 {
-                                                        let _e2884 = (_e2874 + _e2880);
-                                                        if (_e2884 < _e190) {
-                                                        } else {
-                                                            phi_7092_ = true;
+                                                            phi_8008_ = true;
                                                             break;
                                                         }
-                                                        let _e2887 = sd_map.member[_e2884];
-                                                        let _e2891 = frame.member[0u].member_1.member.member.member_2;
-                                                        let _e2894 = ((_e2887 * (_e2878 - _e2891)) + _e2891);
-                                                        if (_e2887 < 1f) {
-                                                            if (_e2894 > (_e960 * 1.001f)) {
-                                                                phi_4802_ = select(_e2882, _e2894, (_e2894 < _e2882));
-                                                            } else {
-                                                                phi_4802_ = _e2882;
-                                                            }
-                                                            let _e2900 = phi_4802_;
-                                                            phi_4803_ = _e2900;
+                                                        let _e2690 = local_3[_e2684][0u];
+                                                        local_4 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
+                                                        if _e2687 {
                                                         } else {
-                                                            phi_4803_ = _e2882;
+                                                            phi_8008_ = true;
+                                                            break;
                                                         }
-                                                        let _e2902 = phi_4803_;
-                                                        phi_4758_ = (_e2880 + 1u);
-                                                        phi_4761_ = _e2902;
+                                                        let _e2693 = local_4[_e2684][1u];
+                                                        phi_4371_ = vec2<f32>(_e2690, _e2693);
                                                     } else {
-                                                        phi_4758_ = u32();
-                                                        phi_4761_ = f32();
+                                                        phi_4371_ = vec2<f32>(0.5f, 0.5f);
                                                     }
-                                                    let _e2905 = phi_4758_;
-                                                    let _e2907 = phi_4761_;
-                                                    continue;
-                                                    continuing {
-                                                        phi_4757_ = _e2905;
-                                                        phi_4760_ = _e2907;
-                                                        phi_7092_ = _e2446;
-                                                        break if !(_e2883);
-                                                    }
+                                                    let _e2696 = phi_4371_;
+                                                    phi_4372_ = _e2696;
                                                 }
-                                                let _e2910 = phi_7092_;
-                                                phi_7297_ = _e2910;
-                                                if _e2910 {
-                                                    break;
-                                                }
-                                                let _e2912 = local_23;
-                                                let _e2913 = (_e2912 >= _e2878);
-                                                if _e2913 {
-                                                    if (_e243 > 0f) {
-                                                        phi_4822_ = (_e2457 > (_e243 * _e243));
-                                                    } else {
-                                                        phi_4822_ = false;
-                                                    }
-                                                    let _e3460 = phi_4822_;
-                                                    if !(_e3460) {
-                                                        let _e3466 = (((_e2450 * _e487) + (_e2451 * _e488)) + (_e2452 * _e489));
-                                                        let _e3470 = (_e2450 - (_e487 * _e3466));
-                                                        let _e3471 = (_e2451 - (_e488 * _e3466));
-                                                        let _e3472 = (_e2452 - (_e489 * _e3466));
-                                                        let _e3475 = ((_e3471 * _e489) - (_e488 * _e3472));
-                                                        let _e3478 = ((_e3472 * _e487) - (_e489 * _e3470));
-                                                        let _e3481 = ((_e3470 * _e488) - (_e487 * _e3471));
-                                                        let _e3492 = ((((_e548 * _e3475) + (_e549 * _e3478)) + (_e550 * _e3481)) / (((_e3475 * _e3475) + (_e3478 * _e3478)) + (_e3481 * _e3481)));
-                                                        let _e3496 = (_e548 - (_e3475 * _e3492));
-                                                        let _e3497 = (_e549 - (_e3478 * _e3492));
-                                                        let _e3498 = (_e550 - (_e3481 * _e3492));
-                                                        let _e3504 = inverseSqrt((((_e3496 * _e3496) + (_e3497 * _e3497)) + (_e3498 * _e3498)));
-                                                        let _e3510 = ((((_e3496 * _e487) + (_e3497 * _e488)) + (_e3498 * _e489)) * _e3504);
-                                                        let _e3514 = select(0f, select(1f, _e3510, (_e3510 < 1f)), (_e3510 > 0f));
-                                                        let _e3515 = abs(_e3514);
-                                                        let _e3525 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3515, 0.00667009f), _e3515, -0.017088126f), _e3515, 0.03089188f), _e3515, -0.050174303f), _e3515, 0.08897899f), _e3515, -0.2145988f), _e3515, 1.5707963f) * sqrt((1f - _e3515)));
-                                                        let _e3528 = select((3.1415927f - _e3525), _e3525, (_e3514 >= 0f));
-                                                        let _e3536 = select(_e3528, -(_e3528), ((((_e3470 * _e3496) + (_e3471 * _e3497)) + (_e3472 * _e3498)) < 0f));
-                                                        let _e3537 = (_e3504 * 0.02f);
-                                                        let _e3540 = select(0.19634955f, _e3537, ((_e3537 < 0.19634955f) || false));
-                                                        let _e3550 = (_e2450 - (_e487 * _e240));
-                                                        let _e3551 = (_e2451 - (_e488 * _e240));
-                                                        let _e3552 = (_e2452 - (_e489 * _e240));
-                                                        let _e3554 = (_e3466 * inverseSqrt(_e2457));
-                                                        let _e3558 = select(-1f, select(1f, _e3554, (_e3554 < 1f)), (_e3554 > -1f));
-                                                        let _e3559 = abs(_e3558);
-                                                        let _e3569 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3559, 0.00667009f), _e3559, -0.017088126f), _e3559, 0.03089188f), _e3559, -0.050174303f), _e3559, 0.08897899f), _e3559, -0.2145988f), _e3559, 1.5707963f) * sqrt((1f - _e3559)));
-                                                        let _e3576 = ((((select((3.1415927f - _e3569), _e3569, (_e3558 >= 0f)) + _e3540) - _e3536) + 1.5707964f) * 0.31830987f);
-                                                        let _e3592 = ((((_e3550 * _e487) + (_e3551 * _e488)) + (_e3552 * _e489)) * inverseSqrt((((_e3550 * _e3550) + (_e3551 * _e3551)) + (_e3552 * _e3552))));
-                                                        let _e3596 = select(-1f, select(1f, _e3592, (_e3592 < 1f)), (_e3592 > -1f));
-                                                        let _e3597 = abs(_e3596);
-                                                        let _e3607 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3597, 0.00667009f), _e3597, -0.017088126f), _e3597, 0.03089188f), _e3597, -0.050174303f), _e3597, 0.08897899f), _e3597, -0.2145988f), _e3597, 1.5707963f) * sqrt((1f - _e3597)));
-                                                        let _e3614 = ((((select((3.1415927f - _e3607), _e3607, (_e3596 >= 0f)) + _e3540) - _e3536) + 1.5707964f) * 0.31830987f);
-                                                        let _e3619 = (1f - select(0f, select(1f, _e3576, (_e3576 < 1f)), (_e3576 > 0f)));
-                                                        let _e3620 = (1f - select(0f, select(1f, _e3614, (_e3614 < 1f)), (_e3614 > 0f)));
-                                                        let _e3622 = (_e3620 != _e3620);
-                                                        let _e3624 = select(_e3620, _e3619, ((_e3619 < _e3620) || _e3622));
-                                                        let _e3627 = select(_e3620, _e3619, ((_e3619 > _e3620) || _e3622));
-                                                        let _e3629 = floor((_e3624 * 32f));
-                                                        if (_e237 == 1u) {
-                                                            let _e3637 = -(floor((_e3627 * -32f)));
-                                                            let _e3642 = (select(32f, _e3637, ((_e3637 < 32f) || false)) - _e3629);
-                                                            phi_5138_ = select(select(0f, _e3642, ((_e3642 > 0f) || false)), 0f, (_e3627 <= _e3624));
-                                                        } else {
-                                                            phi_5138_ = -(floor(((_e3627 - _e3624) * -32f)));
-                                                        }
-                                                        let _e3648 = phi_5138_;
-                                                        let _e3656 = (bitcast<u32>((floor(select(0f, select(32f, _e3629, (_e3629 < 32f)), (_e3629 > 0f))) + 8388608f)) - 1258291200u);
-                                                        let _e3664 = (bitcast<u32>((floor(select(0f, select(32f, _e3648, (_e3648 < 32f)), (_e3648 > 0f))) + 8388608f)) - 1258291200u);
-                                                        if (_e3656 >= 32u) {
-                                                            phi_5192_ = u32();
-                                                            phi_5193_ = true;
-                                                        } else {
-                                                            let _e3666 = (_e3664 == 0u);
-                                                            if _e3666 {
-                                                                phi_5191_ = u32();
-                                                            } else {
-                                                                if (_e3664 >= 32u) {
-                                                                    phi_5188_ = 4294967295u;
-                                                                } else {
-                                                                    phi_5188_ = ((1u << bitcast<u32>((_e3664 & 31u))) - 1u);
-                                                                }
-                                                                let _e3673 = phi_5188_;
-                                                                phi_5191_ = (_e3673 << bitcast<u32>((_e3656 & 31u)));
-                                                            }
-                                                            let _e3678 = phi_5191_;
-                                                            phi_5192_ = _e3678;
-                                                            phi_5193_ = _e3666;
-                                                        }
-                                                        let _e3680 = phi_5192_;
-                                                        let _e3682 = phi_5193_;
-                                                        phi_5206_ = select(select(select(_e3680, 0u, _e3682), 0u, ((((_e3470 * _e3470) + (_e3471 * _e3471)) + (_e3472 * _e3472)) <= 0f)), 0u, _e3460);
-                                                    } else {
-                                                        phi_5206_ = 0u;
-                                                    }
-                                                    let _e3687 = phi_5206_;
-                                                    phi_7336_ = _e2910;
-                                                    phi_6115_ = _e3687;
-                                                    phi_6116_ = u32();
+                                                let _e2706 = phi_4372_;
+                                                let _e2711 = ((f32((bitcast<i32>(_e2661) - _e2669)) + _e2706.x) / _e2631);
+                                                let _e2712 = ((f32((bitcast<i32>(_e2666) - _e2669)) + _e2706.y) / _e2632);
+                                                let _e2717 = frame.member[0u].member_1.member.member.member[0u];
+                                                let _e2722 = select(select(u32(_e2717), 0u, (_e2717 < 0f)), 4294967295u, (_e2717 > 4294967000f));
+                                                let _e2727 = frame.member[0u].member_1.member.member.member[1u];
+                                                let _e2737 = (select(0f, select(1f, _e2711, (_e2711 < 1f)), (_e2711 > 0f)) * _e2717);
+                                                let _e2740 = f32(bitcast<i32>((_e2722 - 1u)));
+                                                let _e2753 = (select(0f, select(1f, _e2712, (_e2712 < 1f)), (_e2712 > 0f)) * _e2727);
+                                                let _e2756 = f32(bitcast<i32>((select(select(u32(_e2727), 0u, (_e2727 < 0f)), 4294967295u, (_e2727 > 4294967000f)) - 1u)));
+                                                let _e2768 = mips.member[(((bitcast<u32>((floor(select(0f, select(_e2756, _e2753, (_e2753 < _e2756)), (_e2753 > 0f))) + 8388608f)) - 1258291200u) * _e2722) + (bitcast<u32>((floor(select(0f, select(_e2740, _e2737, (_e2737 < _e2740)), (_e2737 > 0f))) + 8388608f)) - 1258291200u))];
+                                                if (abs((_e2768 - _e956)) <= _e238) {
+                                                    phi_4490_ = (_e956 * 1.001f);
                                                 } else {
-                                                    let _e2918 = (((_e2450 * _e487) + (_e2451 * _e488)) + (_e2452 * _e489));
-                                                    let _e2922 = (_e2450 - (_e487 * _e2918));
-                                                    let _e2923 = (_e2451 - (_e488 * _e2918));
-                                                    let _e2924 = (_e2452 - (_e489 * _e2918));
-                                                    let _e2927 = ((_e2923 * _e489) - (_e488 * _e2924));
-                                                    let _e2930 = ((_e2924 * _e487) - (_e489 * _e2922));
-                                                    let _e2933 = ((_e2922 * _e488) - (_e487 * _e2923));
-                                                    let _e2944 = ((((_e548 * _e2927) + (_e549 * _e2930)) + (_e550 * _e2933)) / (((_e2927 * _e2927) + (_e2930 * _e2930)) + (_e2933 * _e2933)));
-                                                    let _e2948 = (_e548 - (_e2927 * _e2944));
-                                                    let _e2949 = (_e549 - (_e2930 * _e2944));
-                                                    let _e2950 = (_e550 - (_e2933 * _e2944));
-                                                    let _e2956 = inverseSqrt((((_e2948 * _e2948) + (_e2949 * _e2949)) + (_e2950 * _e2950)));
-                                                    let _e2962 = ((((_e2948 * _e487) + (_e2949 * _e488)) + (_e2950 * _e489)) * _e2956);
-                                                    let _e2966 = select(0f, select(1f, _e2962, (_e2962 < 1f)), (_e2962 > 0f));
-                                                    let _e2967 = abs(_e2966);
-                                                    let _e2977 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2967, 0.00667009f), _e2967, -0.017088126f), _e2967, 0.03089188f), _e2967, -0.050174303f), _e2967, 0.08897899f), _e2967, -0.2145988f), _e2967, 1.5707963f) * sqrt((1f - _e2967)));
-                                                    let _e2980 = select((3.1415927f - _e2977), _e2977, (_e2966 >= 0f));
-                                                    let _e2988 = select(_e2980, -(_e2980), ((((_e2922 * _e2948) + (_e2923 * _e2949)) + (_e2924 * _e2950)) < 0f));
-                                                    let _e2989 = (_e2956 * 0.02f);
-                                                    let _e2992 = select(0.19634955f, _e2989, ((_e2989 < 0.19634955f) || false));
-                                                    let _e2998 = ((((_e2922 * _e2922) + (_e2923 * _e2923)) + (_e2924 * _e2924)) <= 0f);
-                                                    let _e2999 = (_e487 * _e240);
-                                                    let _e3000 = (_e488 * _e240);
-                                                    let _e3001 = (_e489 * _e240);
-                                                    let _e3008 = local_24;
-                                                    if (_e3008 > (_e960 + _e240)) {
-                                                        let _e3014 = local_25;
-                                                        let _e3020 = local_26;
-                                                        let _e3023 = local_27;
-                                                        phi_5368_ = (vec3<f32>(((((_e2807 * 2f) - 1f) * _e2710) * _e3014), ((((_e2808 * -2f) + 1f) * _e2718) * _e3020), _e3023) - _e476);
-                                                    } else {
-                                                        phi_5368_ = vec3<f32>((_e2450 - _e2999), (_e2451 - _e3000), (_e2452 - _e3001));
-                                                    }
-                                                    let _e3027 = phi_5368_;
-                                                    let _e3029 = (_e2918 * inverseSqrt(_e2457));
-                                                    let _e3033 = select(-1f, select(1f, _e3029, (_e3029 < 1f)), (_e3029 > -1f));
-                                                    let _e3034 = abs(_e3033);
-                                                    let _e3044 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3034, 0.00667009f), _e3034, -0.017088126f), _e3034, 0.03089188f), _e3034, -0.050174303f), _e3034, 0.08897899f), _e3034, -0.2145988f), _e3034, 1.5707963f) * sqrt((1f - _e3034)));
-                                                    let _e3051 = ((((select((3.1415927f - _e3044), _e3044, (_e3033 >= 0f)) + _e2992) - _e2988) + 1.5707964f) * 0.31830987f);
-                                                    let _e3070 = ((((_e3027.x * _e487) + (_e3027.y * _e488)) + (_e3027.z * _e489)) * inverseSqrt((((_e3027.x * _e3027.x) + (_e3027.y * _e3027.y)) + (_e3027.z * _e3027.z))));
-                                                    let _e3074 = select(-1f, select(1f, _e3070, (_e3070 < 1f)), (_e3070 > -1f));
-                                                    let _e3075 = abs(_e3074);
-                                                    let _e3085 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3075, 0.00667009f), _e3075, -0.017088126f), _e3075, 0.03089188f), _e3075, -0.050174303f), _e3075, 0.08897899f), _e3075, -0.2145988f), _e3075, 1.5707963f) * sqrt((1f - _e3075)));
-                                                    let _e3092 = ((((select((3.1415927f - _e3085), _e3085, (_e3074 >= 0f)) + _e2992) - _e2988) + 1.5707964f) * 0.31830987f);
-                                                    let _e3097 = (1f - select(0f, select(1f, _e3051, (_e3051 < 1f)), (_e3051 > 0f)));
-                                                    let _e3098 = (1f - select(0f, select(1f, _e3092, (_e3092 < 1f)), (_e3092 > 0f)));
-                                                    let _e3100 = (_e3098 != _e3098);
-                                                    let _e3102 = select(_e3098, _e3097, ((_e3097 < _e3098) || _e3100));
-                                                    let _e3105 = select(_e3098, _e3097, ((_e3097 > _e3098) || _e3100));
-                                                    let _e3107 = floor((_e3102 * 32f));
-                                                    let _e3108 = (_e237 == 1u);
-                                                    if _e3108 {
-                                                        let _e3115 = -(floor((_e3105 * -32f)));
-                                                        let _e3120 = (select(32f, _e3115, ((_e3115 < 32f) || false)) - _e3107);
-                                                        phi_5555_ = select(select(0f, _e3120, ((_e3120 > 0f) || false)), 0f, (_e3105 <= _e3102));
-                                                    } else {
-                                                        phi_5555_ = -(floor(((_e3105 - _e3102) * -32f)));
-                                                    }
-                                                    let _e3126 = phi_5555_;
-                                                    let _e3134 = (bitcast<u32>((floor(select(0f, select(32f, _e3107, (_e3107 < 32f)), (_e3107 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e3142 = (bitcast<u32>((floor(select(0f, select(32f, _e3126, (_e3126 < 32f)), (_e3126 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e3134 >= 32u) {
-                                                        phi_5609_ = u32();
-                                                        phi_5610_ = true;
-                                                    } else {
-                                                        let _e3144 = (_e3142 == 0u);
-                                                        if _e3144 {
-                                                            phi_5608_ = u32();
-                                                        } else {
-                                                            if (_e3142 >= 32u) {
-                                                                phi_5605_ = 4294967295u;
-                                                            } else {
-                                                                phi_5605_ = ((1u << bitcast<u32>((_e3142 & 31u))) - 1u);
-                                                            }
-                                                            let _e3151 = phi_5605_;
-                                                            phi_5608_ = (_e3151 << bitcast<u32>((_e3134 & 31u)));
-                                                        }
-                                                        let _e3156 = phi_5608_;
-                                                        phi_5609_ = _e3156;
-                                                        phi_5610_ = _e3144;
-                                                    }
-                                                    let _e3158 = phi_5609_;
-                                                    let _e3160 = phi_5610_;
-                                                    phi_7226_ = _e2910;
-                                                    let _e4268 = local_48;
-                                                    phi_5620_ = _e4268;
-                                                    phi_5623_ = 1u;
-                                                    phi_5625_ = select(select(_e3158, 0u, _e3160), 0u, _e2998);
-                                                    loop {
-                                                        let _e3164 = phi_7226_;
-                                                        let _e3166 = phi_5620_;
-                                                        let _e3168 = phi_5623_;
-                                                        let _e3170 = phi_5625_;
-                                                        local_50 = _e3170;
-                                                        if (_e3168 < _e2873) {
-                                                            phi_5655_ = 0u;
-                                                            phi_5658_ = _e2878;
-                                                            loop {
-                                                                let _e3173 = phi_5655_;
-                                                                let _e3175 = phi_5658_;
-                                                                local_28 = _e3175;
-                                                                local_29 = _e3175;
-                                                                local_30 = _e3175;
-                                                                local_31 = _e3175;
-                                                                local_32 = _e3175;
-                                                                let _e3176 = (_e3173 < _e2873);
-                                                                if _e3176 {
-                                                                    let _e3177 = (_e2874 + _e3173);
-                                                                    if (_e3177 < _e190) {
-                                                                    } else {
-                                                                        phi_7220_ = true;
-                                                                        break;
-                                                                    }
-                                                                    let _e3180 = sd_map.member[_e3177];
-                                                                    let _e3184 = frame.member[0u].member_1.member.member.member_2;
-                                                                    let _e3187 = ((_e3180 * (_e2878 - _e3184)) + _e3184);
-                                                                    if (_e3180 < 1f) {
-                                                                        if (_e3187 > _e3166) {
-                                                                            phi_5700_ = select(_e3175, _e3187, (_e3187 < _e3175));
-                                                                        } else {
-                                                                            phi_5700_ = _e3175;
-                                                                        }
-                                                                        let _e3193 = phi_5700_;
-                                                                        phi_5701_ = _e3193;
-                                                                    } else {
-                                                                        phi_5701_ = _e3175;
-                                                                    }
-                                                                    let _e3195 = phi_5701_;
-                                                                    phi_5656_ = (_e3173 + 1u);
-                                                                    phi_5659_ = _e3195;
-                                                                } else {
-                                                                    phi_5656_ = u32();
-                                                                    phi_5659_ = f32();
-                                                                }
-                                                                let _e3198 = phi_5656_;
-                                                                let _e3200 = phi_5659_;
-                                                                continue;
-                                                                continuing {
-                                                                    phi_5655_ = _e3198;
-                                                                    phi_5658_ = _e3200;
-                                                                    phi_7220_ = _e3164;
-                                                                    break if !(_e3176);
-                                                                }
-                                                            }
-                                                            let _e3203 = phi_7220_;
-                                                            phi_7265_ = _e3203;
-                                                            if _e3203 {
-                                                                break;
-                                                            }
-                                                            let _e3205 = local_28;
-                                                            let _e3206 = (_e3205 >= _e2878);
-                                                            if _e3206 {
-                                                                phi_7267_ = _e3203;
-                                                                phi_6106_ = f32();
-                                                                phi_6107_ = u32();
-                                                                phi_6108_ = u32();
-                                                            } else {
-                                                                phi_5729_ = 0u;
-                                                                phi_5732_ = _e2878;
-                                                                loop {
-                                                                    let _e3208 = phi_5729_;
-                                                                    let _e3210 = phi_5732_;
-                                                                    local_33 = _e3210;
-                                                                    local_34 = _e3210;
-                                                                    local_35 = _e3210;
-                                                                    local_36 = _e3210;
-                                                                    local_49 = _e3210;
-                                                                    let _e3211 = (_e3208 < _e2873);
-                                                                    if _e3211 {
-                                                                        let _e3212 = (_e2874 + _e3208);
-                                                                        if (_e3212 < _e190) {
-                                                                        } else {
-                                                                            phi_7259_ = true;
-                                                                            break;
-                                                                        }
-                                                                        let _e3215 = sd_map.member[_e3212];
-                                                                        let _e3219 = frame.member[0u].member_1.member.member.member_2;
-                                                                        let _e3222 = ((_e3215 * (_e2878 - _e3219)) + _e3219);
-                                                                        if (_e3215 < 1f) {
-                                                                            let _e3225 = local_29;
-                                                                            if (_e3222 > _e3225) {
-                                                                                phi_5774_ = select(_e3210, _e3222, (_e3222 < _e3210));
-                                                                            } else {
-                                                                                phi_5774_ = _e3210;
-                                                                            }
-                                                                            let _e3230 = phi_5774_;
-                                                                            phi_5775_ = _e3230;
-                                                                        } else {
-                                                                            phi_5775_ = _e3210;
-                                                                        }
-                                                                        let _e3232 = phi_5775_;
-                                                                        phi_5730_ = (_e3208 + 1u);
-                                                                        phi_5733_ = _e3232;
-                                                                    } else {
-                                                                        phi_5730_ = u32();
-                                                                        phi_5733_ = f32();
-                                                                    }
-                                                                    let _e3235 = phi_5730_;
-                                                                    let _e3237 = phi_5733_;
-                                                                    continue;
-                                                                    continuing {
-                                                                        phi_5729_ = _e3235;
-                                                                        phi_5732_ = _e3237;
-                                                                        phi_7259_ = _e3203;
-                                                                        break if !(_e3211);
-                                                                    }
-                                                                }
-                                                                let _e3240 = phi_7259_;
-                                                                phi_7265_ = _e3240;
-                                                                if _e3240 {
-                                                                    break;
-                                                                }
-                                                                let _e3243 = (((_e2807 * 2f) - 1f) * _e2710);
-                                                                let _e3245 = local_30;
-                                                                let _e3249 = (((_e2808 * -2f) + 1f) * _e2718);
-                                                                let _e3251 = local_31;
-                                                                let _e3253 = ((_e3243 * _e3245) - _e468);
-                                                                let _e3254 = ((_e3249 * _e3251) - _e475);
-                                                                let _e3256 = local_32;
-                                                                let _e3257 = (_e3256 - _e461);
-                                                                let _e3259 = local_33;
-                                                                if (_e3259 < _e2878) {
-                                                                    let _e3266 = local_34;
-                                                                    let _e3269 = local_35;
-                                                                    let _e3272 = local_36;
-                                                                    phi_5834_ = (vec3<f32>((_e3243 * _e3266), (_e3249 * _e3269), _e3272) - _e476);
-                                                                } else {
-                                                                    phi_5834_ = vec3<f32>((_e3253 - _e2999), (_e3254 - _e3000), (_e3257 - _e3001));
-                                                                }
-                                                                let _e3276 = phi_5834_;
-                                                                if _e977 {
-                                                                    phi_5849_ = true;
-                                                                } else {
-                                                                    phi_5849_ = ((((_e3253 * _e3253) + (_e3254 * _e3254)) + (_e3257 * _e3257)) <= (_e243 * _e243));
-                                                                }
-                                                                let _e3285 = phi_5849_;
-                                                                if _e3285 {
-                                                                    let _e3297 = ((((_e3253 * _e487) + (_e3254 * _e488)) + (_e3257 * _e489)) * inverseSqrt((((_e3253 * _e3253) + (_e3254 * _e3254)) + (_e3257 * _e3257))));
-                                                                    let _e3301 = select(-1f, select(1f, _e3297, (_e3297 < 1f)), (_e3297 > -1f));
-                                                                    let _e3302 = abs(_e3301);
-                                                                    let _e3312 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3302, 0.00667009f), _e3302, -0.017088126f), _e3302, 0.03089188f), _e3302, -0.050174303f), _e3302, 0.08897899f), _e3302, -0.2145988f), _e3302, 1.5707963f) * sqrt((1f - _e3302)));
-                                                                    let _e3319 = ((((select((3.1415927f - _e3312), _e3312, (_e3301 >= 0f)) + _e2992) - _e2988) + 1.5707964f) * 0.31830987f);
-                                                                    let _e3338 = ((((_e3276.x * _e487) + (_e3276.y * _e488)) + (_e3276.z * _e489)) * inverseSqrt((((_e3276.x * _e3276.x) + (_e3276.y * _e3276.y)) + (_e3276.z * _e3276.z))));
-                                                                    let _e3342 = select(-1f, select(1f, _e3338, (_e3338 < 1f)), (_e3338 > -1f));
-                                                                    let _e3343 = abs(_e3342);
-                                                                    let _e3353 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3343, 0.00667009f), _e3343, -0.017088126f), _e3343, 0.03089188f), _e3343, -0.050174303f), _e3343, 0.08897899f), _e3343, -0.2145988f), _e3343, 1.5707963f) * sqrt((1f - _e3343)));
-                                                                    let _e3360 = ((((select((3.1415927f - _e3353), _e3353, (_e3342 >= 0f)) + _e2992) - _e2988) + 1.5707964f) * 0.31830987f);
-                                                                    let _e3365 = (1f - select(0f, select(1f, _e3319, (_e3319 < 1f)), (_e3319 > 0f)));
-                                                                    let _e3366 = (1f - select(0f, select(1f, _e3360, (_e3360 < 1f)), (_e3360 > 0f)));
-                                                                    let _e3368 = (_e3366 != _e3366);
-                                                                    let _e3370 = select(_e3366, _e3365, ((_e3365 < _e3366) || _e3368));
-                                                                    let _e3373 = select(_e3366, _e3365, ((_e3365 > _e3366) || _e3368));
-                                                                    let _e3375 = floor((_e3370 * 32f));
-                                                                    if _e3108 {
-                                                                        let _e3382 = -(floor((_e3373 * -32f)));
-                                                                        let _e3387 = (select(32f, _e3382, ((_e3382 < 32f) || false)) - _e3375);
-                                                                        phi_6039_ = select(select(0f, _e3387, ((_e3387 > 0f) || false)), 0f, (_e3373 <= _e3370));
-                                                                    } else {
-                                                                        phi_6039_ = -(floor(((_e3373 - _e3370) * -32f)));
-                                                                    }
-                                                                    let _e3393 = phi_6039_;
-                                                                    let _e3401 = (bitcast<u32>((floor(select(0f, select(32f, _e3375, (_e3375 < 32f)), (_e3375 > 0f))) + 8388608f)) - 1258291200u);
-                                                                    let _e3409 = (bitcast<u32>((floor(select(0f, select(32f, _e3393, (_e3393 < 32f)), (_e3393 > 0f))) + 8388608f)) - 1258291200u);
-                                                                    if (_e3401 >= 32u) {
-                                                                        phi_6093_ = u32();
-                                                                        phi_6094_ = true;
-                                                                    } else {
-                                                                        let _e3411 = (_e3409 == 0u);
-                                                                        if _e3411 {
-                                                                            phi_6092_ = u32();
-                                                                        } else {
-                                                                            if (_e3409 >= 32u) {
-                                                                                phi_6089_ = 4294967295u;
-                                                                            } else {
-                                                                                phi_6089_ = ((1u << bitcast<u32>((_e3409 & 31u))) - 1u);
-                                                                            }
-                                                                            let _e3418 = phi_6089_;
-                                                                            phi_6092_ = (_e3418 << bitcast<u32>((_e3401 & 31u)));
-                                                                        }
-                                                                        let _e3423 = phi_6092_;
-                                                                        phi_6093_ = _e3423;
-                                                                        phi_6094_ = _e3411;
-                                                                    }
-                                                                    let _e3425 = phi_6093_;
-                                                                    let _e3427 = phi_6094_;
-                                                                    phi_6104_ = (_e3170 | select(select(_e3425, 0u, _e3427), 0u, _e2998));
-                                                                } else {
-                                                                    phi_6104_ = _e3170;
-                                                                }
-                                                                let _e3432 = phi_6104_;
-                                                                phi_7267_ = _e3240;
-                                                                let _e4305 = local_49;
-                                                                phi_6106_ = _e4305;
-                                                                phi_6107_ = (_e3168 + 2u);
-                                                                phi_6108_ = _e3432;
-                                                            }
-                                                            let _e3435 = phi_7267_;
-                                                            let _e3437 = phi_6106_;
-                                                            let _e3439 = phi_6107_;
-                                                            let _e3441 = phi_6108_;
-                                                            phi_7266_ = _e3435;
-                                                            phi_5621_ = _e3437;
-                                                            phi_5624_ = _e3439;
-                                                            phi_5626_ = _e3441;
-                                                            phi_6110_ = select(true, false, _e3206);
-                                                        } else {
-                                                            phi_7266_ = _e3164;
-                                                            phi_5621_ = f32();
-                                                            phi_5624_ = u32();
-                                                            phi_5626_ = u32();
-                                                            phi_6110_ = false;
-                                                        }
-                                                        let _e3444 = phi_7266_;
-                                                        let _e3446 = phi_5621_;
-                                                        let _e3448 = phi_5624_;
-                                                        let _e3450 = phi_5626_;
-                                                        let _e3452 = phi_6110_;
-                                                        continue;
-                                                        continuing {
-                                                            phi_7226_ = _e3444;
-                                                            phi_5620_ = _e3446;
-                                                            phi_5623_ = _e3448;
-                                                            phi_5625_ = _e3450;
-                                                            phi_7265_ = _e3444;
-                                                            break if !(_e3452);
-                                                        }
-                                                    }
-                                                    let _e3455 = phi_7265_;
-                                                    phi_7297_ = _e3455;
-                                                    if _e3455 {
-                                                        break;
-                                                    }
-                                                    phi_7336_ = _e3455;
-                                                    phi_6115_ = u32();
-                                                    let _e4325 = local_50;
-                                                    phi_6116_ = _e4325;
+                                                    phi_4490_ = 0x1.fffffep+127f;
                                                 }
-                                                let _e3689 = phi_7336_;
-                                                let _e3691 = phi_6115_;
-                                                let _e3693 = phi_6116_;
-                                                phi_7301_ = _e3689;
-                                                phi_6117_ = _e3691;
-                                                phi_6118_ = _e3693;
-                                                phi_6119_ = _e2913;
+                                                let _e2774 = phi_4490_;
+                                                let _e2776 = frame.member[0u].member_1.member_6;
+                                                let _e2779 = (((_e2666 * _e2637) + _e2661) * _e2776);
+                                                let _e2781 = sd_map.member[_e2779];
+                                                let _e2785 = frame.member[0u].member_1.member.member.member_3;
+                                                let _e2789 = frame.member[0u].member_1.member.member.member_2;
+                                                let _e2790 = (_e2785 - _e2789);
+                                                let _e2792 = ((_e2781 * _e2790) + _e2789);
+                                                if (0u < _e2776) {
+                                                    if (_e2781 < 1f) {
+                                                        phi_4541_ = select(true, false, (_e2792 > _e2774));
+                                                    } else {
+                                                        phi_4541_ = true;
+                                                    }
+                                                    let _e2798 = phi_4541_;
+                                                    phi_4542_ = _e2798;
+                                                } else {
+                                                    phi_4542_ = true;
+                                                }
+                                                let _e2800 = phi_4542_;
+                                                if _e2800 {
+                                                    phi_4548_ = _e2785;
+                                                } else {
+                                                    phi_4548_ = _e2792;
+                                                }
+                                                let _e2802 = phi_4548_;
+                                                let _e2803 = (_e2776 - 1u);
+                                                let _e2808 = sd_map.member[(_e2779 + select(1u, _e2803, (_e2803 < 1u)))];
+                                                let _e2810 = ((_e2808 * _e2790) + _e2789);
+                                                if (1u < _e2776) {
+                                                    if (_e2808 < 1f) {
+                                                        phi_4581_ = select(true, false, (_e2810 > _e2774));
+                                                    } else {
+                                                        phi_4581_ = true;
+                                                    }
+                                                    let _e2816 = phi_4581_;
+                                                    phi_4582_ = _e2816;
+                                                } else {
+                                                    phi_4582_ = true;
+                                                }
+                                                let _e2818 = phi_4582_;
+                                                if _e2818 {
+                                                    phi_4588_ = _e2785;
+                                                } else {
+                                                    phi_4588_ = _e2810;
+                                                }
+                                                let _e2820 = phi_4588_;
+                                                let _e2825 = sd_map.member[(_e2779 + select(2u, _e2803, (_e2803 < 2u)))];
+                                                let _e2827 = ((_e2825 * _e2790) + _e2789);
+                                                if (2u < _e2776) {
+                                                    if (_e2825 < 1f) {
+                                                        phi_4621_ = select(true, false, (_e2827 > _e2774));
+                                                    } else {
+                                                        phi_4621_ = true;
+                                                    }
+                                                    let _e2833 = phi_4621_;
+                                                    phi_4622_ = _e2833;
+                                                } else {
+                                                    phi_4622_ = true;
+                                                }
+                                                let _e2835 = phi_4622_;
+                                                if _e2835 {
+                                                    phi_4628_ = _e2785;
+                                                } else {
+                                                    phi_4628_ = _e2827;
+                                                }
+                                                let _e2837 = phi_4628_;
+                                                let _e2842 = sd_map.member[(_e2779 + select(3u, _e2803, (_e2803 < 3u)))];
+                                                let _e2844 = ((_e2842 * _e2790) + _e2789);
+                                                if (3u < _e2776) {
+                                                    if (_e2842 < 1f) {
+                                                        phi_4661_ = select(true, false, (_e2844 > _e2774));
+                                                    } else {
+                                                        phi_4661_ = true;
+                                                    }
+                                                    let _e2850 = phi_4661_;
+                                                    phi_4662_ = _e2850;
+                                                } else {
+                                                    phi_4662_ = true;
+                                                }
+                                                let _e2852 = phi_4662_;
+                                                if _e2852 {
+                                                    phi_4668_ = _e2785;
+                                                } else {
+                                                    phi_4668_ = _e2844;
+                                                }
+                                                let _e2854 = phi_4668_;
+                                                if (_e2776 > 4u) {
+                                                    let _e2860 = sd_map.member[(_e2779 + select(4u, _e2803, (_e2803 < 4u)))];
+                                                    let _e2862 = ((_e2860 * _e2790) + _e2789);
+                                                    if (4u < _e2776) {
+                                                        if (_e2860 < 1f) {
+                                                            phi_4705_ = select(true, false, (_e2862 > _e2774));
+                                                        } else {
+                                                            phi_4705_ = true;
+                                                        }
+                                                        let _e2868 = phi_4705_;
+                                                        phi_4706_ = _e2868;
+                                                    } else {
+                                                        phi_4706_ = true;
+                                                    }
+                                                    let _e2870 = phi_4706_;
+                                                    if _e2870 {
+                                                        phi_4712_ = _e2785;
+                                                    } else {
+                                                        phi_4712_ = _e2862;
+                                                    }
+                                                    let _e2872 = phi_4712_;
+                                                    let _e2877 = sd_map.member[(_e2779 + select(5u, _e2803, (_e2803 < 5u)))];
+                                                    let _e2879 = ((_e2877 * _e2790) + _e2789);
+                                                    if (5u < _e2776) {
+                                                        if (_e2877 < 1f) {
+                                                            phi_4745_ = select(true, false, (_e2879 > _e2774));
+                                                        } else {
+                                                            phi_4745_ = true;
+                                                        }
+                                                        let _e2885 = phi_4745_;
+                                                        phi_4746_ = _e2885;
+                                                    } else {
+                                                        phi_4746_ = true;
+                                                    }
+                                                    let _e2887 = phi_4746_;
+                                                    if _e2887 {
+                                                        phi_4752_ = _e2785;
+                                                    } else {
+                                                        phi_4752_ = _e2879;
+                                                    }
+                                                    let _e2889 = phi_4752_;
+                                                    let _e2894 = sd_map.member[(_e2779 + select(6u, _e2803, (_e2803 < 6u)))];
+                                                    let _e2896 = ((_e2894 * _e2790) + _e2789);
+                                                    if (6u < _e2776) {
+                                                        if (_e2894 < 1f) {
+                                                            phi_4785_ = select(true, false, (_e2896 > _e2774));
+                                                        } else {
+                                                            phi_4785_ = true;
+                                                        }
+                                                        let _e2902 = phi_4785_;
+                                                        phi_4786_ = _e2902;
+                                                    } else {
+                                                        phi_4786_ = true;
+                                                    }
+                                                    let _e2904 = phi_4786_;
+                                                    if _e2904 {
+                                                        phi_4792_ = _e2785;
+                                                    } else {
+                                                        phi_4792_ = _e2896;
+                                                    }
+                                                    let _e2906 = phi_4792_;
+                                                    let _e2911 = sd_map.member[(_e2779 + select(7u, _e2803, (_e2803 < 7u)))];
+                                                    let _e2913 = ((_e2911 * _e2790) + _e2789);
+                                                    if (7u < _e2776) {
+                                                        if (_e2911 < 1f) {
+                                                            phi_4825_ = select(true, false, (_e2913 > _e2774));
+                                                        } else {
+                                                            phi_4825_ = true;
+                                                        }
+                                                        let _e2919 = phi_4825_;
+                                                        phi_4826_ = _e2919;
+                                                    } else {
+                                                        phi_4826_ = true;
+                                                    }
+                                                    let _e2921 = phi_4826_;
+                                                    if _e2921 {
+                                                        phi_4832_ = _e2785;
+                                                    } else {
+                                                        phi_4832_ = _e2913;
+                                                    }
+                                                    let _e2923 = phi_4832_;
+                                                    phi_4841_ = _e2923;
+                                                    phi_4842_ = _e2906;
+                                                    phi_4843_ = _e2889;
+                                                    phi_4844_ = _e2872;
+                                                } else {
+                                                    phi_4841_ = _e2785;
+                                                    phi_4842_ = _e2785;
+                                                    phi_4843_ = _e2785;
+                                                    phi_4844_ = _e2785;
+                                                }
+                                                let _e2925 = phi_4841_;
+                                                let _e2927 = phi_4842_;
+                                                let _e2929 = phi_4843_;
+                                                let _e2931 = phi_4844_;
+                                                let _e2932 = (_e2802 != _e2802);
+                                                if _e2932 {
+                                                    phi_7424_ = true;
+                                                } else {
+                                                    phi_7424_ = (_e2820 <= _e2802);
+                                                }
+                                                let _e2935 = phi_7424_;
+                                                let _e2936 = select(_e2802, _e2820, _e2935);
+                                                if _e2932 {
+                                                    phi_7439_ = true;
+                                                } else {
+                                                    phi_7439_ = (_e2820 >= _e2802);
+                                                }
+                                                let _e2939 = phi_7439_;
+                                                let _e2940 = select(_e2802, _e2820, _e2939);
+                                                let _e2941 = (_e2837 != _e2837);
+                                                if _e2941 {
+                                                    phi_7454_ = true;
+                                                } else {
+                                                    phi_7454_ = (_e2854 <= _e2837);
+                                                }
+                                                let _e2944 = phi_7454_;
+                                                let _e2945 = select(_e2837, _e2854, _e2944);
+                                                if _e2941 {
+                                                    phi_7469_ = true;
+                                                } else {
+                                                    phi_7469_ = (_e2854 >= _e2837);
+                                                }
+                                                let _e2948 = phi_7469_;
+                                                let _e2949 = select(_e2837, _e2854, _e2948);
+                                                let _e2950 = (_e2931 != _e2931);
+                                                if _e2950 {
+                                                    phi_7484_ = true;
+                                                } else {
+                                                    phi_7484_ = (_e2929 <= _e2931);
+                                                }
+                                                let _e2953 = phi_7484_;
+                                                let _e2954 = select(_e2931, _e2929, _e2953);
+                                                if _e2950 {
+                                                    phi_7499_ = true;
+                                                } else {
+                                                    phi_7499_ = (_e2929 >= _e2931);
+                                                }
+                                                let _e2957 = phi_7499_;
+                                                let _e2958 = select(_e2931, _e2929, _e2957);
+                                                let _e2959 = (_e2927 != _e2927);
+                                                if _e2959 {
+                                                    phi_7514_ = true;
+                                                } else {
+                                                    phi_7514_ = (_e2925 <= _e2927);
+                                                }
+                                                let _e2962 = phi_7514_;
+                                                let _e2963 = select(_e2927, _e2925, _e2962);
+                                                if _e2959 {
+                                                    phi_7529_ = true;
+                                                } else {
+                                                    phi_7529_ = (_e2925 >= _e2927);
+                                                }
+                                                let _e2966 = phi_7529_;
+                                                let _e2967 = select(_e2927, _e2925, _e2966);
+                                                let _e2968 = (_e2936 != _e2936);
+                                                if _e2968 {
+                                                    phi_7544_ = true;
+                                                } else {
+                                                    phi_7544_ = (_e2945 <= _e2936);
+                                                }
+                                                let _e2971 = phi_7544_;
+                                                let _e2972 = select(_e2936, _e2945, _e2971);
+                                                if _e2968 {
+                                                    phi_7559_ = true;
+                                                } else {
+                                                    phi_7559_ = (_e2945 >= _e2936);
+                                                }
+                                                let _e2975 = phi_7559_;
+                                                let _e2976 = select(_e2936, _e2945, _e2975);
+                                                let _e2977 = (_e2940 != _e2940);
+                                                if _e2977 {
+                                                    phi_7574_ = true;
+                                                } else {
+                                                    phi_7574_ = (_e2949 <= _e2940);
+                                                }
+                                                let _e2980 = phi_7574_;
+                                                let _e2981 = select(_e2940, _e2949, _e2980);
+                                                if _e2977 {
+                                                    phi_7589_ = true;
+                                                } else {
+                                                    phi_7589_ = (_e2949 >= _e2940);
+                                                }
+                                                let _e2984 = phi_7589_;
+                                                let _e2985 = select(_e2940, _e2949, _e2984);
+                                                let _e2986 = (_e2954 != _e2954);
+                                                if _e2986 {
+                                                    phi_7604_ = true;
+                                                } else {
+                                                    phi_7604_ = (_e2963 <= _e2954);
+                                                }
+                                                let _e2989 = phi_7604_;
+                                                let _e2990 = select(_e2954, _e2963, _e2989);
+                                                if _e2986 {
+                                                    phi_7619_ = true;
+                                                } else {
+                                                    phi_7619_ = (_e2963 >= _e2954);
+                                                }
+                                                let _e2993 = phi_7619_;
+                                                let _e2994 = select(_e2954, _e2963, _e2993);
+                                                let _e2995 = (_e2958 != _e2958);
+                                                if _e2995 {
+                                                    phi_7634_ = true;
+                                                } else {
+                                                    phi_7634_ = (_e2967 <= _e2958);
+                                                }
+                                                let _e2998 = phi_7634_;
+                                                let _e2999 = select(_e2958, _e2967, _e2998);
+                                                if _e2995 {
+                                                    phi_7649_ = true;
+                                                } else {
+                                                    phi_7649_ = (_e2967 >= _e2958);
+                                                }
+                                                let _e3002 = phi_7649_;
+                                                let _e3003 = select(_e2958, _e2967, _e3002);
+                                                let _e3004 = (_e2981 != _e2981);
+                                                if _e3004 {
+                                                    phi_7664_ = true;
+                                                } else {
+                                                    phi_7664_ = (_e2976 <= _e2981);
+                                                }
+                                                let _e3007 = phi_7664_;
+                                                let _e3008 = select(_e2981, _e2976, _e3007);
+                                                if _e3004 {
+                                                    phi_7679_ = true;
+                                                } else {
+                                                    phi_7679_ = (_e2976 >= _e2981);
+                                                }
+                                                let _e3011 = phi_7679_;
+                                                let _e3012 = select(_e2981, _e2976, _e3011);
+                                                let _e3013 = (_e2999 != _e2999);
+                                                if _e3013 {
+                                                    phi_7694_ = true;
+                                                } else {
+                                                    phi_7694_ = (_e2994 <= _e2999);
+                                                }
+                                                let _e3016 = phi_7694_;
+                                                let _e3017 = select(_e2999, _e2994, _e3016);
+                                                if _e3013 {
+                                                    phi_7709_ = true;
+                                                } else {
+                                                    phi_7709_ = (_e2994 >= _e2999);
+                                                }
+                                                let _e3020 = phi_7709_;
+                                                let _e3021 = select(_e2999, _e2994, _e3020);
+                                                let _e3022 = (_e2972 != _e2972);
+                                                if _e3022 {
+                                                    phi_7724_ = true;
+                                                } else {
+                                                    phi_7724_ = (_e2990 <= _e2972);
+                                                }
+                                                let _e3025 = phi_7724_;
+                                                let _e3026 = select(_e2972, _e2990, _e3025);
+                                                if _e3022 {
+                                                    phi_7739_ = true;
+                                                } else {
+                                                    phi_7739_ = (_e2990 >= _e2972);
+                                                }
+                                                let _e3029 = phi_7739_;
+                                                let _e3030 = select(_e2972, _e2990, _e3029);
+                                                let _e3031 = (_e3008 != _e3008);
+                                                if _e3031 {
+                                                    phi_7754_ = true;
+                                                } else {
+                                                    phi_7754_ = (_e3017 <= _e3008);
+                                                }
+                                                let _e3034 = phi_7754_;
+                                                let _e3035 = select(_e3008, _e3017, _e3034);
+                                                if _e3031 {
+                                                    phi_7769_ = true;
+                                                } else {
+                                                    phi_7769_ = (_e3017 >= _e3008);
+                                                }
+                                                let _e3038 = phi_7769_;
+                                                let _e3039 = select(_e3008, _e3017, _e3038);
+                                                let _e3040 = (_e3012 != _e3012);
+                                                if _e3040 {
+                                                    phi_7784_ = true;
+                                                } else {
+                                                    phi_7784_ = (_e3021 <= _e3012);
+                                                }
+                                                let _e3043 = phi_7784_;
+                                                let _e3044 = select(_e3012, _e3021, _e3043);
+                                                if _e3040 {
+                                                    phi_7799_ = true;
+                                                } else {
+                                                    phi_7799_ = (_e3021 >= _e3012);
+                                                }
+                                                let _e3047 = phi_7799_;
+                                                let _e3048 = select(_e3012, _e3021, _e3047);
+                                                let _e3049 = (_e2985 != _e2985);
+                                                if _e3049 {
+                                                    phi_7814_ = true;
+                                                } else {
+                                                    phi_7814_ = (_e3003 <= _e2985);
+                                                }
+                                                let _e3052 = phi_7814_;
+                                                let _e3053 = select(_e2985, _e3003, _e3052);
+                                                if _e3049 {
+                                                    phi_7829_ = true;
+                                                } else {
+                                                    phi_7829_ = (_e3003 >= _e2985);
+                                                }
+                                                let _e3056 = phi_7829_;
+                                                let _e3057 = select(_e2985, _e3003, _e3056);
+                                                let _e3058 = (_e3044 != _e3044);
+                                                if _e3058 {
+                                                    phi_7844_ = true;
+                                                } else {
+                                                    phi_7844_ = (_e3030 <= _e3044);
+                                                }
+                                                let _e3061 = phi_7844_;
+                                                let _e3062 = select(_e3044, _e3030, _e3061);
+                                                if _e3058 {
+                                                    phi_7859_ = true;
+                                                } else {
+                                                    phi_7859_ = (_e3030 >= _e3044);
+                                                }
+                                                let _e3065 = phi_7859_;
+                                                let _e3066 = select(_e3044, _e3030, _e3065);
+                                                let _e3067 = (_e3053 != _e3053);
+                                                if _e3067 {
+                                                    phi_7874_ = true;
+                                                } else {
+                                                    phi_7874_ = (_e3039 <= _e3053);
+                                                }
+                                                let _e3070 = phi_7874_;
+                                                let _e3071 = select(_e3053, _e3039, _e3070);
+                                                if _e3067 {
+                                                    phi_7889_ = true;
+                                                } else {
+                                                    phi_7889_ = (_e3039 >= _e3053);
+                                                }
+                                                let _e3074 = phi_7889_;
+                                                let _e3075 = select(_e3053, _e3039, _e3074);
+                                                let _e3076 = (_e3035 != _e3035);
+                                                if _e3076 {
+                                                    phi_7904_ = true;
+                                                } else {
+                                                    phi_7904_ = (_e3062 <= _e3035);
+                                                }
+                                                let _e3079 = phi_7904_;
+                                                let _e3080 = select(_e3035, _e3062, _e3079);
+                                                if _e3076 {
+                                                    phi_7919_ = true;
+                                                } else {
+                                                    phi_7919_ = (_e3062 >= _e3035);
+                                                }
+                                                let _e3083 = phi_7919_;
+                                                let _e3084 = select(_e3035, _e3062, _e3083);
+                                                let _e3085 = (_e3071 != _e3071);
+                                                if _e3085 {
+                                                    phi_7934_ = true;
+                                                } else {
+                                                    phi_7934_ = (_e3066 <= _e3071);
+                                                }
+                                                let _e3088 = phi_7934_;
+                                                let _e3089 = select(_e3071, _e3066, _e3088);
+                                                if _e3085 {
+                                                    phi_7949_ = true;
+                                                } else {
+                                                    phi_7949_ = (_e3066 >= _e3071);
+                                                }
+                                                let _e3092 = phi_7949_;
+                                                let _e3093 = select(_e3071, _e3066, _e3092);
+                                                let _e3094 = (_e3075 != _e3075);
+                                                if _e3094 {
+                                                    phi_7964_ = true;
+                                                } else {
+                                                    phi_7964_ = (_e3048 <= _e3075);
+                                                }
+                                                let _e3097 = phi_7964_;
+                                                let _e3098 = select(_e3075, _e3048, _e3097);
+                                                if _e3094 {
+                                                    phi_7979_ = true;
+                                                } else {
+                                                    phi_7979_ = (_e3048 >= _e3075);
+                                                }
+                                                let _e3101 = phi_7979_;
+                                                let _e3102 = select(_e3075, _e3048, _e3101);
+                                                if (_e3026 < _e2785) {
+                                                    if (_e3026 > (_e956 + _e238)) {
+                                                        phi_4913_ = (vec3<f32>(((((_e2711 * 2f) - 1f) * _e2614) * _e3026), ((((_e2712 * -2f) + 1f) * _e2622) * _e3026), _e3026) - _e474);
+                                                    } else {
+                                                        phi_4913_ = _e2502;
+                                                    }
+                                                    let _e3117 = phi_4913_;
+                                                    phi_4914_ = _e3117;
+                                                } else {
+                                                    phi_4914_ = _e2502;
+                                                }
+                                                let _e3119 = phi_4914_;
+                                                if (_e3080 >= _e225.member.member_3) {
+                                                    phi_5240_ = u32();
+                                                    phi_5241_ = true;
+                                                } else {
+                                                    let _e3123 = (((_e2711 * 2f) - 1f) * _e225.member.member_1.x);
+                                                    let _e3127 = (((_e2712 * -2f) + 1f) * _e225.member.member_1.y);
+                                                    let _e3129 = ((_e3123 * _e3080) - _e466);
+                                                    let _e3130 = ((_e3127 * _e3080) - _e473);
+                                                    let _e3131 = (_e3080 - _e459);
+                                                    if (_e3084 < _e225.member.member_3) {
+                                                        phi_4968_ = (vec3<f32>((_e3123 * _e3084), (_e3127 * _e3084), _e3084) - _e474);
+                                                    } else {
+                                                        phi_4968_ = vec3<f32>((_e3129 - _e2496), (_e3130 - _e2497), (_e3131 - _e2498));
+                                                    }
+                                                    let _e3142 = phi_4968_;
+                                                    if _e968 {
+                                                        phi_4984_ = select(true, false, ((((_e3129 * _e3129) + (_e3130 * _e3130)) + (_e3131 * _e3131)) > (_e241 * _e241)));
+                                                    } else {
+                                                        phi_4984_ = true;
+                                                    }
+                                                    let _e3152 = phi_4984_;
+                                                    if _e3152 {
+                                                        let _e3164 = ((((_e3129 * _e485) + (_e3130 * _e486)) + (_e3131 * _e487)) * inverseSqrt((((_e3129 * _e3129) + (_e3130 * _e3130)) + (_e3131 * _e3131))));
+                                                        let _e3168 = select(-1f, select(1f, _e3164, (_e3164 < 1f)), (_e3164 > -1f));
+                                                        let _e3169 = abs(_e3168);
+                                                        let _e3179 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3169, 0.00667009f), _e3169, -0.017088126f), _e3169, 0.03089188f), _e3169, -0.050174303f), _e3169, 0.08897899f), _e3169, -0.2145988f), _e3169, 1.5707963f) * sqrt((1f - _e3169)));
+                                                        let _e3186 = ((((select((3.1415927f - _e3179), _e3179, (_e3168 >= 0f)) + _e2581) - _e2577) + 1.5707964f) * 0.31830987f);
+                                                        let _e3205 = ((((_e3142.x * _e485) + (_e3142.y * _e486)) + (_e3142.z * _e487)) * inverseSqrt((((_e3142.x * _e3142.x) + (_e3142.y * _e3142.y)) + (_e3142.z * _e3142.z))));
+                                                        let _e3209 = select(-1f, select(1f, _e3205, (_e3205 < 1f)), (_e3205 > -1f));
+                                                        let _e3210 = abs(_e3209);
+                                                        let _e3220 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3210, 0.00667009f), _e3210, -0.017088126f), _e3210, 0.03089188f), _e3210, -0.050174303f), _e3210, 0.08897899f), _e3210, -0.2145988f), _e3210, 1.5707963f) * sqrt((1f - _e3210)));
+                                                        let _e3227 = ((((select((3.1415927f - _e3220), _e3220, (_e3209 >= 0f)) + _e2581) - _e2577) + 1.5707964f) * 0.31830987f);
+                                                        let _e3232 = (1f - select(0f, select(1f, _e3186, (_e3186 < 1f)), (_e3186 > 0f)));
+                                                        let _e3233 = (1f - select(0f, select(1f, _e3227, (_e3227 < 1f)), (_e3227 > 0f)));
+                                                        let _e3235 = (_e3233 != _e3233);
+                                                        let _e3237 = select(_e3233, _e3232, ((_e3232 < _e3233) || _e3235));
+                                                        let _e3240 = select(_e3233, _e3232, ((_e3232 > _e3233) || _e3235));
+                                                        let _e3242 = floor((_e3237 * 32f));
+                                                        if (_e235 == 1u) {
+                                                            let _e3250 = -(floor((_e3240 * -32f)));
+                                                            let _e3255 = (select(32f, _e3250, ((_e3250 < 32f) || false)) - _e3242);
+                                                            phi_5174_ = select(select(0f, _e3255, ((_e3255 > 0f) || false)), 0f, (_e3240 <= _e3237));
+                                                        } else {
+                                                            phi_5174_ = -(floor(((_e3240 - _e3237) * -32f)));
+                                                        }
+                                                        let _e3261 = phi_5174_;
+                                                        let _e3269 = (bitcast<u32>((floor(select(0f, select(32f, _e3242, (_e3242 < 32f)), (_e3242 > 0f))) + 8388608f)) - 1258291200u);
+                                                        let _e3277 = (bitcast<u32>((floor(select(0f, select(32f, _e3261, (_e3261 < 32f)), (_e3261 > 0f))) + 8388608f)) - 1258291200u);
+                                                        if (_e3269 >= 32u) {
+                                                            phi_5228_ = u32();
+                                                            phi_5229_ = true;
+                                                        } else {
+                                                            let _e3279 = (_e3277 == 0u);
+                                                            if _e3279 {
+                                                                phi_5227_ = u32();
+                                                            } else {
+                                                                if (_e3277 >= 32u) {
+                                                                    phi_5224_ = 4294967295u;
+                                                                } else {
+                                                                    phi_5224_ = ((1u << bitcast<u32>((_e3277 & 31u))) - 1u);
+                                                                }
+                                                                let _e3286 = phi_5224_;
+                                                                phi_5227_ = (_e3286 << bitcast<u32>((_e3269 & 31u)));
+                                                            }
+                                                            let _e3291 = phi_5227_;
+                                                            phi_5228_ = _e3291;
+                                                            phi_5229_ = _e3279;
+                                                        }
+                                                        let _e3293 = phi_5228_;
+                                                        let _e3295 = phi_5229_;
+                                                        phi_5238_ = select(select(_e3293, 0u, _e3295), 0u, _e2587);
+                                                    } else {
+                                                        phi_5238_ = u32();
+                                                    }
+                                                    let _e3299 = phi_5238_;
+                                                    phi_5240_ = _e3299;
+                                                    phi_5241_ = select(true, false, _e3152);
+                                                }
+                                                let _e3302 = phi_5240_;
+                                                let _e3304 = phi_5241_;
+                                                if (_e3089 >= _e225.member.member_3) {
+                                                    phi_5571_ = u32();
+                                                    phi_5572_ = true;
+                                                } else {
+                                                    let _e3309 = (((_e2711 * 2f) - 1f) * _e225.member.member_1.x);
+                                                    let _e3313 = (((_e2712 * -2f) + 1f) * _e225.member.member_1.y);
+                                                    let _e3315 = ((_e3309 * _e3089) - _e466);
+                                                    let _e3316 = ((_e3313 * _e3089) - _e473);
+                                                    let _e3317 = (_e3089 - _e459);
+                                                    if (_e3093 < _e225.member.member_3) {
+                                                        phi_5299_ = (vec3<f32>((_e3309 * _e3093), (_e3313 * _e3093), _e3093) - _e474);
+                                                    } else {
+                                                        phi_5299_ = vec3<f32>((_e3315 - _e2496), (_e3316 - _e2497), (_e3317 - _e2498));
+                                                    }
+                                                    let _e3328 = phi_5299_;
+                                                    if _e968 {
+                                                        phi_5315_ = select(true, false, ((((_e3315 * _e3315) + (_e3316 * _e3316)) + (_e3317 * _e3317)) > (_e241 * _e241)));
+                                                    } else {
+                                                        phi_5315_ = true;
+                                                    }
+                                                    let _e3338 = phi_5315_;
+                                                    if _e3338 {
+                                                        let _e3350 = ((((_e3315 * _e485) + (_e3316 * _e486)) + (_e3317 * _e487)) * inverseSqrt((((_e3315 * _e3315) + (_e3316 * _e3316)) + (_e3317 * _e3317))));
+                                                        let _e3354 = select(-1f, select(1f, _e3350, (_e3350 < 1f)), (_e3350 > -1f));
+                                                        let _e3355 = abs(_e3354);
+                                                        let _e3365 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3355, 0.00667009f), _e3355, -0.017088126f), _e3355, 0.03089188f), _e3355, -0.050174303f), _e3355, 0.08897899f), _e3355, -0.2145988f), _e3355, 1.5707963f) * sqrt((1f - _e3355)));
+                                                        let _e3372 = ((((select((3.1415927f - _e3365), _e3365, (_e3354 >= 0f)) + _e2581) - _e2577) + 1.5707964f) * 0.31830987f);
+                                                        let _e3391 = ((((_e3328.x * _e485) + (_e3328.y * _e486)) + (_e3328.z * _e487)) * inverseSqrt((((_e3328.x * _e3328.x) + (_e3328.y * _e3328.y)) + (_e3328.z * _e3328.z))));
+                                                        let _e3395 = select(-1f, select(1f, _e3391, (_e3391 < 1f)), (_e3391 > -1f));
+                                                        let _e3396 = abs(_e3395);
+                                                        let _e3406 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3396, 0.00667009f), _e3396, -0.017088126f), _e3396, 0.03089188f), _e3396, -0.050174303f), _e3396, 0.08897899f), _e3396, -0.2145988f), _e3396, 1.5707963f) * sqrt((1f - _e3396)));
+                                                        let _e3413 = ((((select((3.1415927f - _e3406), _e3406, (_e3395 >= 0f)) + _e2581) - _e2577) + 1.5707964f) * 0.31830987f);
+                                                        let _e3418 = (1f - select(0f, select(1f, _e3372, (_e3372 < 1f)), (_e3372 > 0f)));
+                                                        let _e3419 = (1f - select(0f, select(1f, _e3413, (_e3413 < 1f)), (_e3413 > 0f)));
+                                                        let _e3421 = (_e3419 != _e3419);
+                                                        let _e3423 = select(_e3419, _e3418, ((_e3418 < _e3419) || _e3421));
+                                                        let _e3426 = select(_e3419, _e3418, ((_e3418 > _e3419) || _e3421));
+                                                        let _e3428 = floor((_e3423 * 32f));
+                                                        if (_e235 == 1u) {
+                                                            let _e3436 = -(floor((_e3426 * -32f)));
+                                                            let _e3441 = (select(32f, _e3436, ((_e3436 < 32f) || false)) - _e3428);
+                                                            phi_5505_ = select(select(0f, _e3441, ((_e3441 > 0f) || false)), 0f, (_e3426 <= _e3423));
+                                                        } else {
+                                                            phi_5505_ = -(floor(((_e3426 - _e3423) * -32f)));
+                                                        }
+                                                        let _e3447 = phi_5505_;
+                                                        let _e3455 = (bitcast<u32>((floor(select(0f, select(32f, _e3428, (_e3428 < 32f)), (_e3428 > 0f))) + 8388608f)) - 1258291200u);
+                                                        let _e3463 = (bitcast<u32>((floor(select(0f, select(32f, _e3447, (_e3447 < 32f)), (_e3447 > 0f))) + 8388608f)) - 1258291200u);
+                                                        if (_e3455 >= 32u) {
+                                                            phi_5559_ = u32();
+                                                            phi_5560_ = true;
+                                                        } else {
+                                                            let _e3465 = (_e3463 == 0u);
+                                                            if _e3465 {
+                                                                phi_5558_ = u32();
+                                                            } else {
+                                                                if (_e3463 >= 32u) {
+                                                                    phi_5555_ = 4294967295u;
+                                                                } else {
+                                                                    phi_5555_ = ((1u << bitcast<u32>((_e3463 & 31u))) - 1u);
+                                                                }
+                                                                let _e3472 = phi_5555_;
+                                                                phi_5558_ = (_e3472 << bitcast<u32>((_e3455 & 31u)));
+                                                            }
+                                                            let _e3477 = phi_5558_;
+                                                            phi_5559_ = _e3477;
+                                                            phi_5560_ = _e3465;
+                                                        }
+                                                        let _e3479 = phi_5559_;
+                                                        let _e3481 = phi_5560_;
+                                                        phi_5569_ = select(select(_e3479, 0u, _e3481), 0u, _e2587);
+                                                    } else {
+                                                        phi_5569_ = u32();
+                                                    }
+                                                    let _e3485 = phi_5569_;
+                                                    phi_5571_ = _e3485;
+                                                    phi_5572_ = select(true, false, _e3338);
+                                                }
+                                                let _e3488 = phi_5571_;
+                                                let _e3490 = phi_5572_;
+                                                if (_e3098 >= _e225.member.member_3) {
+                                                    phi_5903_ = u32();
+                                                    phi_5904_ = true;
+                                                } else {
+                                                    let _e3496 = (((_e2711 * 2f) - 1f) * _e225.member.member_1.x);
+                                                    let _e3500 = (((_e2712 * -2f) + 1f) * _e225.member.member_1.y);
+                                                    let _e3502 = ((_e3496 * _e3098) - _e466);
+                                                    let _e3503 = ((_e3500 * _e3098) - _e473);
+                                                    let _e3504 = (_e3098 - _e459);
+                                                    if (_e3102 < _e225.member.member_3) {
+                                                        phi_5631_ = (vec3<f32>((_e3496 * _e3102), (_e3500 * _e3102), _e3102) - _e474);
+                                                    } else {
+                                                        phi_5631_ = vec3<f32>((_e3502 - _e2496), (_e3503 - _e2497), (_e3504 - _e2498));
+                                                    }
+                                                    let _e3515 = phi_5631_;
+                                                    if _e968 {
+                                                        phi_5647_ = select(true, false, ((((_e3502 * _e3502) + (_e3503 * _e3503)) + (_e3504 * _e3504)) > (_e241 * _e241)));
+                                                    } else {
+                                                        phi_5647_ = true;
+                                                    }
+                                                    let _e3525 = phi_5647_;
+                                                    if _e3525 {
+                                                        let _e3537 = ((((_e3502 * _e485) + (_e3503 * _e486)) + (_e3504 * _e487)) * inverseSqrt((((_e3502 * _e3502) + (_e3503 * _e3503)) + (_e3504 * _e3504))));
+                                                        let _e3541 = select(-1f, select(1f, _e3537, (_e3537 < 1f)), (_e3537 > -1f));
+                                                        let _e3542 = abs(_e3541);
+                                                        let _e3552 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3542, 0.00667009f), _e3542, -0.017088126f), _e3542, 0.03089188f), _e3542, -0.050174303f), _e3542, 0.08897899f), _e3542, -0.2145988f), _e3542, 1.5707963f) * sqrt((1f - _e3542)));
+                                                        let _e3559 = ((((select((3.1415927f - _e3552), _e3552, (_e3541 >= 0f)) + _e2581) - _e2577) + 1.5707964f) * 0.31830987f);
+                                                        let _e3578 = ((((_e3515.x * _e485) + (_e3515.y * _e486)) + (_e3515.z * _e487)) * inverseSqrt((((_e3515.x * _e3515.x) + (_e3515.y * _e3515.y)) + (_e3515.z * _e3515.z))));
+                                                        let _e3582 = select(-1f, select(1f, _e3578, (_e3578 < 1f)), (_e3578 > -1f));
+                                                        let _e3583 = abs(_e3582);
+                                                        let _e3593 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3583, 0.00667009f), _e3583, -0.017088126f), _e3583, 0.03089188f), _e3583, -0.050174303f), _e3583, 0.08897899f), _e3583, -0.2145988f), _e3583, 1.5707963f) * sqrt((1f - _e3583)));
+                                                        let _e3600 = ((((select((3.1415927f - _e3593), _e3593, (_e3582 >= 0f)) + _e2581) - _e2577) + 1.5707964f) * 0.31830987f);
+                                                        let _e3605 = (1f - select(0f, select(1f, _e3559, (_e3559 < 1f)), (_e3559 > 0f)));
+                                                        let _e3606 = (1f - select(0f, select(1f, _e3600, (_e3600 < 1f)), (_e3600 > 0f)));
+                                                        let _e3608 = (_e3606 != _e3606);
+                                                        let _e3610 = select(_e3606, _e3605, ((_e3605 < _e3606) || _e3608));
+                                                        let _e3613 = select(_e3606, _e3605, ((_e3605 > _e3606) || _e3608));
+                                                        let _e3615 = floor((_e3610 * 32f));
+                                                        if (_e235 == 1u) {
+                                                            let _e3623 = -(floor((_e3613 * -32f)));
+                                                            let _e3628 = (select(32f, _e3623, ((_e3623 < 32f) || false)) - _e3615);
+                                                            phi_5837_ = select(select(0f, _e3628, ((_e3628 > 0f) || false)), 0f, (_e3613 <= _e3610));
+                                                        } else {
+                                                            phi_5837_ = -(floor(((_e3613 - _e3610) * -32f)));
+                                                        }
+                                                        let _e3634 = phi_5837_;
+                                                        let _e3642 = (bitcast<u32>((floor(select(0f, select(32f, _e3615, (_e3615 < 32f)), (_e3615 > 0f))) + 8388608f)) - 1258291200u);
+                                                        let _e3650 = (bitcast<u32>((floor(select(0f, select(32f, _e3634, (_e3634 < 32f)), (_e3634 > 0f))) + 8388608f)) - 1258291200u);
+                                                        if (_e3642 >= 32u) {
+                                                            phi_5891_ = u32();
+                                                            phi_5892_ = true;
+                                                        } else {
+                                                            let _e3652 = (_e3650 == 0u);
+                                                            if _e3652 {
+                                                                phi_5890_ = u32();
+                                                            } else {
+                                                                if (_e3650 >= 32u) {
+                                                                    phi_5887_ = 4294967295u;
+                                                                } else {
+                                                                    phi_5887_ = ((1u << bitcast<u32>((_e3650 & 31u))) - 1u);
+                                                                }
+                                                                let _e3659 = phi_5887_;
+                                                                phi_5890_ = (_e3659 << bitcast<u32>((_e3642 & 31u)));
+                                                            }
+                                                            let _e3664 = phi_5890_;
+                                                            phi_5891_ = _e3664;
+                                                            phi_5892_ = _e3652;
+                                                        }
+                                                        let _e3666 = phi_5891_;
+                                                        let _e3668 = phi_5892_;
+                                                        phi_5901_ = select(select(_e3666, 0u, _e3668), 0u, _e2587);
+                                                    } else {
+                                                        phi_5901_ = u32();
+                                                    }
+                                                    let _e3672 = phi_5901_;
+                                                    phi_5903_ = _e3672;
+                                                    phi_5904_ = select(true, false, _e3525);
+                                                }
+                                                let _e3675 = phi_5903_;
+                                                let _e3677 = phi_5904_;
+                                                if (_e3057 >= _e225.member.member_3) {
+                                                    phi_6237_ = u32();
+                                                    phi_6238_ = true;
+                                                } else {
+                                                    let _e3683 = (((_e2711 * 2f) - 1f) * _e225.member.member_1.x);
+                                                    let _e3687 = (((_e2712 * -2f) + 1f) * _e225.member.member_1.y);
+                                                    let _e3689 = ((_e3683 * _e3057) - _e466);
+                                                    let _e3690 = ((_e3687 * _e3057) - _e473);
+                                                    let _e3691 = (_e3057 - _e459);
+                                                    if (_e2785 < _e225.member.member_3) {
+                                                        phi_5965_ = (vec3<f32>((_e3683 * _e2785), (_e3687 * _e2785), _e2785) - _e474);
+                                                    } else {
+                                                        phi_5965_ = vec3<f32>((_e3689 - _e2496), (_e3690 - _e2497), (_e3691 - _e2498));
+                                                    }
+                                                    let _e3702 = phi_5965_;
+                                                    if _e968 {
+                                                        phi_5981_ = select(true, false, ((((_e3689 * _e3689) + (_e3690 * _e3690)) + (_e3691 * _e3691)) > (_e241 * _e241)));
+                                                    } else {
+                                                        phi_5981_ = true;
+                                                    }
+                                                    let _e3712 = phi_5981_;
+                                                    if _e3712 {
+                                                        let _e3724 = ((((_e3689 * _e485) + (_e3690 * _e486)) + (_e3691 * _e487)) * inverseSqrt((((_e3689 * _e3689) + (_e3690 * _e3690)) + (_e3691 * _e3691))));
+                                                        let _e3728 = select(-1f, select(1f, _e3724, (_e3724 < 1f)), (_e3724 > -1f));
+                                                        let _e3729 = abs(_e3728);
+                                                        let _e3739 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3729, 0.00667009f), _e3729, -0.017088126f), _e3729, 0.03089188f), _e3729, -0.050174303f), _e3729, 0.08897899f), _e3729, -0.2145988f), _e3729, 1.5707963f) * sqrt((1f - _e3729)));
+                                                        let _e3746 = ((((select((3.1415927f - _e3739), _e3739, (_e3728 >= 0f)) + _e2581) - _e2577) + 1.5707964f) * 0.31830987f);
+                                                        let _e3765 = ((((_e3702.x * _e485) + (_e3702.y * _e486)) + (_e3702.z * _e487)) * inverseSqrt((((_e3702.x * _e3702.x) + (_e3702.y * _e3702.y)) + (_e3702.z * _e3702.z))));
+                                                        let _e3769 = select(-1f, select(1f, _e3765, (_e3765 < 1f)), (_e3765 > -1f));
+                                                        let _e3770 = abs(_e3769);
+                                                        let _e3780 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3770, 0.00667009f), _e3770, -0.017088126f), _e3770, 0.03089188f), _e3770, -0.050174303f), _e3770, 0.08897899f), _e3770, -0.2145988f), _e3770, 1.5707963f) * sqrt((1f - _e3770)));
+                                                        let _e3787 = ((((select((3.1415927f - _e3780), _e3780, (_e3769 >= 0f)) + _e2581) - _e2577) + 1.5707964f) * 0.31830987f);
+                                                        let _e3792 = (1f - select(0f, select(1f, _e3746, (_e3746 < 1f)), (_e3746 > 0f)));
+                                                        let _e3793 = (1f - select(0f, select(1f, _e3787, (_e3787 < 1f)), (_e3787 > 0f)));
+                                                        let _e3795 = (_e3793 != _e3793);
+                                                        let _e3797 = select(_e3793, _e3792, ((_e3792 < _e3793) || _e3795));
+                                                        let _e3800 = select(_e3793, _e3792, ((_e3792 > _e3793) || _e3795));
+                                                        let _e3802 = floor((_e3797 * 32f));
+                                                        if (_e235 == 1u) {
+                                                            let _e3810 = -(floor((_e3800 * -32f)));
+                                                            let _e3815 = (select(32f, _e3810, ((_e3810 < 32f) || false)) - _e3802);
+                                                            phi_6171_ = select(select(0f, _e3815, ((_e3815 > 0f) || false)), 0f, (_e3800 <= _e3797));
+                                                        } else {
+                                                            phi_6171_ = -(floor(((_e3800 - _e3797) * -32f)));
+                                                        }
+                                                        let _e3821 = phi_6171_;
+                                                        let _e3829 = (bitcast<u32>((floor(select(0f, select(32f, _e3802, (_e3802 < 32f)), (_e3802 > 0f))) + 8388608f)) - 1258291200u);
+                                                        let _e3837 = (bitcast<u32>((floor(select(0f, select(32f, _e3821, (_e3821 < 32f)), (_e3821 > 0f))) + 8388608f)) - 1258291200u);
+                                                        if (_e3829 >= 32u) {
+                                                            phi_6225_ = u32();
+                                                            phi_6226_ = true;
+                                                        } else {
+                                                            let _e3839 = (_e3837 == 0u);
+                                                            if _e3839 {
+                                                                phi_6224_ = u32();
+                                                            } else {
+                                                                if (_e3837 >= 32u) {
+                                                                    phi_6221_ = 4294967295u;
+                                                                } else {
+                                                                    phi_6221_ = ((1u << bitcast<u32>((_e3837 & 31u))) - 1u);
+                                                                }
+                                                                let _e3846 = phi_6221_;
+                                                                phi_6224_ = (_e3846 << bitcast<u32>((_e3829 & 31u)));
+                                                            }
+                                                            let _e3851 = phi_6224_;
+                                                            phi_6225_ = _e3851;
+                                                            phi_6226_ = _e3839;
+                                                        }
+                                                        let _e3853 = phi_6225_;
+                                                        let _e3855 = phi_6226_;
+                                                        phi_6235_ = select(select(_e3853, 0u, _e3855), 0u, _e2587);
+                                                    } else {
+                                                        phi_6235_ = u32();
+                                                    }
+                                                    let _e3859 = phi_6235_;
+                                                    phi_6237_ = _e3859;
+                                                    phi_6238_ = select(true, false, _e3712);
+                                                }
+                                                let _e3862 = phi_6237_;
+                                                let _e3864 = phi_6238_;
+                                                phi_6244_ = _e3119;
+                                                phi_6245_ = (((select(_e3302, 0u, _e3304) | select(_e3488, 0u, _e3490)) | select(_e3675, 0u, _e3677)) | select(_e3862, 0u, _e3864));
+                                            } else {
+                                                phi_6244_ = _e2502;
+                                                phi_6245_ = 0u;
                                             }
-                                            let _e3927 = phi_7301_;
-                                            let _e3929 = phi_6117_;
-                                            let _e3931 = phi_6118_;
-                                            let _e3933 = phi_6119_;
-                                            phi_7299_ = _e3927;
-                                            phi_6520_ = select(_e3931, _e3929, _e3933);
+                                            let _e3868 = phi_6244_;
+                                            let _e3870 = phi_6245_;
+                                            let _e3872 = (_e2507 * inverseSqrt(_e2592));
+                                            let _e3876 = select(-1f, select(1f, _e3872, (_e3872 < 1f)), (_e3872 > -1f));
+                                            let _e3877 = abs(_e3876);
+                                            let _e3887 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3877, 0.00667009f), _e3877, -0.017088126f), _e3877, 0.03089188f), _e3877, -0.050174303f), _e3877, 0.08897899f), _e3877, -0.2145988f), _e3877, 1.5707963f) * sqrt((1f - _e3877)));
+                                            let _e3894 = ((((select((3.1415927f - _e3887), _e3887, (_e3876 >= 0f)) + _e2581) - _e2577) + 1.5707964f) * 0.31830987f);
+                                            let _e3913 = ((((_e3868.x * _e485) + (_e3868.y * _e486)) + (_e3868.z * _e487)) * inverseSqrt((((_e3868.x * _e3868.x) + (_e3868.y * _e3868.y)) + (_e3868.z * _e3868.z))));
+                                            let _e3917 = select(-1f, select(1f, _e3913, (_e3913 < 1f)), (_e3913 > -1f));
+                                            let _e3918 = abs(_e3917);
+                                            let _e3928 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3918, 0.00667009f), _e3918, -0.017088126f), _e3918, 0.03089188f), _e3918, -0.050174303f), _e3918, 0.08897899f), _e3918, -0.2145988f), _e3918, 1.5707963f) * sqrt((1f - _e3918)));
+                                            let _e3935 = ((((select((3.1415927f - _e3928), _e3928, (_e3917 >= 0f)) + _e2581) - _e2577) + 1.5707964f) * 0.31830987f);
+                                            let _e3940 = (1f - select(0f, select(1f, _e3894, (_e3894 < 1f)), (_e3894 > 0f)));
+                                            let _e3941 = (1f - select(0f, select(1f, _e3935, (_e3935 < 1f)), (_e3935 > 0f)));
+                                            let _e3943 = (_e3941 != _e3941);
+                                            let _e3945 = select(_e3941, _e3940, ((_e3940 < _e3941) || _e3943));
+                                            let _e3948 = select(_e3941, _e3940, ((_e3940 > _e3941) || _e3943));
+                                            let _e3950 = floor((_e3945 * 32f));
+                                            if (_e235 == 1u) {
+                                                let _e3958 = -(floor((_e3948 * -32f)));
+                                                let _e3963 = (select(32f, _e3958, ((_e3958 < 32f) || false)) - _e3950);
+                                                phi_6432_ = select(select(0f, _e3963, ((_e3963 > 0f) || false)), 0f, (_e3948 <= _e3945));
+                                            } else {
+                                                phi_6432_ = -(floor(((_e3948 - _e3945) * -32f)));
+                                            }
+                                            let _e3969 = phi_6432_;
+                                            let _e3977 = (bitcast<u32>((floor(select(0f, select(32f, _e3950, (_e3950 < 32f)), (_e3950 > 0f))) + 8388608f)) - 1258291200u);
+                                            let _e3985 = (bitcast<u32>((floor(select(0f, select(32f, _e3969, (_e3969 < 32f)), (_e3969 > 0f))) + 8388608f)) - 1258291200u);
+                                            if (_e3977 >= 32u) {
+                                                phi_6486_ = u32();
+                                                phi_6487_ = true;
+                                            } else {
+                                                let _e3987 = (_e3985 == 0u);
+                                                if _e3987 {
+                                                    phi_6485_ = u32();
+                                                } else {
+                                                    if (_e3985 >= 32u) {
+                                                        phi_6482_ = 4294967295u;
+                                                    } else {
+                                                        phi_6482_ = ((1u << bitcast<u32>((_e3985 & 31u))) - 1u);
+                                                    }
+                                                    let _e3994 = phi_6482_;
+                                                    phi_6485_ = (_e3994 << bitcast<u32>((_e3977 & 31u)));
+                                                }
+                                                let _e3999 = phi_6485_;
+                                                phi_6486_ = _e3999;
+                                                phi_6487_ = _e3987;
+                                            }
+                                            let _e4001 = phi_6486_;
+                                            let _e4003 = phi_6487_;
+                                            phi_6497_ = (select(select(_e4001, 0u, _e4003), 0u, _e2587) | _e3870);
                                         } else {
-                                            if (_e243 > 0f) {
-                                                phi_6135_ = (_e2457 > (_e243 * _e243));
-                                            } else {
-                                                phi_6135_ = false;
-                                            }
-                                            let _e2476 = phi_6135_;
-                                            if !(_e2476) {
-                                                let _e2482 = (((_e2450 * _e487) + (_e2451 * _e488)) + (_e2452 * _e489));
-                                                let _e2486 = (_e2450 - (_e487 * _e2482));
-                                                let _e2487 = (_e2451 - (_e488 * _e2482));
-                                                let _e2488 = (_e2452 - (_e489 * _e2482));
-                                                let _e2491 = ((_e2487 * _e489) - (_e488 * _e2488));
-                                                let _e2494 = ((_e2488 * _e487) - (_e489 * _e2486));
-                                                let _e2497 = ((_e2486 * _e488) - (_e487 * _e2487));
-                                                let _e2508 = ((((_e548 * _e2491) + (_e549 * _e2494)) + (_e550 * _e2497)) / (((_e2491 * _e2491) + (_e2494 * _e2494)) + (_e2497 * _e2497)));
-                                                let _e2512 = (_e548 - (_e2491 * _e2508));
-                                                let _e2513 = (_e549 - (_e2494 * _e2508));
-                                                let _e2514 = (_e550 - (_e2497 * _e2508));
-                                                let _e2520 = inverseSqrt((((_e2512 * _e2512) + (_e2513 * _e2513)) + (_e2514 * _e2514)));
-                                                let _e2526 = ((((_e2512 * _e487) + (_e2513 * _e488)) + (_e2514 * _e489)) * _e2520);
-                                                let _e2530 = select(0f, select(1f, _e2526, (_e2526 < 1f)), (_e2526 > 0f));
-                                                let _e2531 = abs(_e2530);
-                                                let _e2541 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2531, 0.00667009f), _e2531, -0.017088126f), _e2531, 0.03089188f), _e2531, -0.050174303f), _e2531, 0.08897899f), _e2531, -0.2145988f), _e2531, 1.5707963f) * sqrt((1f - _e2531)));
-                                                let _e2544 = select((3.1415927f - _e2541), _e2541, (_e2530 >= 0f));
-                                                let _e2552 = select(_e2544, -(_e2544), ((((_e2486 * _e2512) + (_e2487 * _e2513)) + (_e2488 * _e2514)) < 0f));
-                                                let _e2553 = (_e2520 * 0.02f);
-                                                let _e2556 = select(0.19634955f, _e2553, ((_e2553 < 0.19634955f) || false));
-                                                let _e2566 = (_e2450 - (_e487 * _e240));
-                                                let _e2567 = (_e2451 - (_e488 * _e240));
-                                                let _e2568 = (_e2452 - (_e489 * _e240));
-                                                let _e2570 = (_e2482 * inverseSqrt(_e2457));
-                                                let _e2574 = select(-1f, select(1f, _e2570, (_e2570 < 1f)), (_e2570 > -1f));
-                                                let _e2575 = abs(_e2574);
-                                                let _e2585 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2575, 0.00667009f), _e2575, -0.017088126f), _e2575, 0.03089188f), _e2575, -0.050174303f), _e2575, 0.08897899f), _e2575, -0.2145988f), _e2575, 1.5707963f) * sqrt((1f - _e2575)));
-                                                let _e2592 = ((((select((3.1415927f - _e2585), _e2585, (_e2574 >= 0f)) + _e2556) - _e2552) + 1.5707964f) * 0.31830987f);
-                                                let _e2608 = ((((_e2566 * _e487) + (_e2567 * _e488)) + (_e2568 * _e489)) * inverseSqrt((((_e2566 * _e2566) + (_e2567 * _e2567)) + (_e2568 * _e2568))));
-                                                let _e2612 = select(-1f, select(1f, _e2608, (_e2608 < 1f)), (_e2608 > -1f));
-                                                let _e2613 = abs(_e2612);
-                                                let _e2623 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2613, 0.00667009f), _e2613, -0.017088126f), _e2613, 0.03089188f), _e2613, -0.050174303f), _e2613, 0.08897899f), _e2613, -0.2145988f), _e2613, 1.5707963f) * sqrt((1f - _e2613)));
-                                                let _e2630 = ((((select((3.1415927f - _e2623), _e2623, (_e2612 >= 0f)) + _e2556) - _e2552) + 1.5707964f) * 0.31830987f);
-                                                let _e2635 = (1f - select(0f, select(1f, _e2592, (_e2592 < 1f)), (_e2592 > 0f)));
-                                                let _e2636 = (1f - select(0f, select(1f, _e2630, (_e2630 < 1f)), (_e2630 > 0f)));
-                                                let _e2638 = (_e2636 != _e2636);
-                                                let _e2640 = select(_e2636, _e2635, ((_e2635 < _e2636) || _e2638));
-                                                let _e2643 = select(_e2636, _e2635, ((_e2635 > _e2636) || _e2638));
-                                                let _e2645 = floor((_e2640 * 32f));
-                                                if (_e237 == 1u) {
-                                                    let _e2653 = -(floor((_e2643 * -32f)));
-                                                    let _e2658 = (select(32f, _e2653, ((_e2653 < 32f) || false)) - _e2645);
-                                                    phi_6451_ = select(select(0f, _e2658, ((_e2658 > 0f) || false)), 0f, (_e2643 <= _e2640));
-                                                } else {
-                                                    phi_6451_ = -(floor(((_e2643 - _e2640) * -32f)));
-                                                }
-                                                let _e2664 = phi_6451_;
-                                                let _e2672 = (bitcast<u32>((floor(select(0f, select(32f, _e2645, (_e2645 < 32f)), (_e2645 > 0f))) + 8388608f)) - 1258291200u);
-                                                let _e2680 = (bitcast<u32>((floor(select(0f, select(32f, _e2664, (_e2664 < 32f)), (_e2664 > 0f))) + 8388608f)) - 1258291200u);
-                                                if (_e2672 >= 32u) {
-                                                    phi_6505_ = u32();
-                                                    phi_6506_ = true;
-                                                } else {
-                                                    let _e2682 = (_e2680 == 0u);
-                                                    if _e2682 {
-                                                        phi_6504_ = u32();
-                                                    } else {
-                                                        if (_e2680 >= 32u) {
-                                                            phi_6501_ = 4294967295u;
-                                                        } else {
-                                                            phi_6501_ = ((1u << bitcast<u32>((_e2680 & 31u))) - 1u);
-                                                        }
-                                                        let _e2689 = phi_6501_;
-                                                        phi_6504_ = (_e2689 << bitcast<u32>((_e2672 & 31u)));
-                                                    }
-                                                    let _e2694 = phi_6504_;
-                                                    phi_6505_ = _e2694;
-                                                    phi_6506_ = _e2682;
-                                                }
-                                                let _e2696 = phi_6505_;
-                                                let _e2698 = phi_6506_;
-                                                phi_6519_ = select(select(select(_e2696, 0u, _e2698), 0u, ((((_e2486 * _e2486) + (_e2487 * _e2487)) + (_e2488 * _e2488)) <= 0f)), 0u, _e2476);
-                                            } else {
-                                                phi_6519_ = 0u;
-                                            }
-                                            let _e2703 = phi_6519_;
-                                            phi_7299_ = _e2446;
-                                            phi_6520_ = _e2703;
+                                            phi_6497_ = 0u;
                                         }
-                                        let _e3936 = phi_7299_;
-                                        let _e3938 = phi_6520_;
-                                        phi_7298_ = _e3936;
-                                        phi_1198_ = (_e792 + 1u);
-                                        phi_1201_ = ((_e794 | _e2448) | _e3938);
+                                        let _e4008 = phi_6497_;
+                                        phi_1219_ = (_e788 + 1u);
+                                        phi_1222_ = ((_e790 | _e2481) | _e4008);
                                     } else {
-                                        phi_7298_ = _e790;
-                                        phi_1198_ = u32();
-                                        phi_1201_ = u32();
+                                        phi_1219_ = u32();
+                                        phi_1222_ = u32();
                                     }
-                                    let _e3942 = phi_7298_;
-                                    let _e3944 = phi_1198_;
-                                    let _e3946 = phi_1201_;
+                                    let _e4012 = phi_1219_;
+                                    let _e4014 = phi_1222_;
                                     continue;
                                     continuing {
-                                        phi_6943_ = _e3942;
-                                        phi_1197_ = _e3944;
-                                        phi_1200_ = _e3946;
-                                        phi_7297_ = _e3942;
-                                        break if !(_e795);
+                                        phi_1218_ = _e4012;
+                                        phi_1221_ = _e4014;
+                                        phi_8008_ = _e685;
+                                        break if !(_e791);
                                     }
                                 }
-                                let _e3949 = phi_7297_;
-                                phi_7408_ = _e3949;
-                                if _e3949 {
+                                let _e4017 = phi_8008_;
+                                phi_8710_ = _e4017;
+                                if _e4017 {
                                     break;
                                 }
-                                if (_e232 == 2u) {
-                                    let _e4008 = (_e785 - 1.5707964f);
-                                    let _e4009 = (_e4008 * 2f);
-                                    let _e4010 = sin(_e785);
-                                    let _e4015 = ((_e770 + (_e4009 * _e4010)) - cos((_e4009 - _e785)));
-                                    phi_6549_ = 0u;
-                                    phi_6552_ = select((_e4015 * 0.25f), (_e4015 * -0.25f), (_e4008 < 0f));
-                                    phi_6554_ = 0f;
+                                if (_e230 == 2u) {
+                                    let _e4076 = (_e783 - 1.5707964f);
+                                    let _e4077 = (_e4076 * 2f);
+                                    let _e4078 = sin(_e783);
+                                    let _e4083 = ((_e768 + (_e4077 * _e4078)) - cos((_e4077 - _e783)));
+                                    phi_6526_ = 0u;
+                                    phi_6529_ = select((_e4083 * 0.25f), (_e4083 * -0.25f), (_e4076 < 0f));
+                                    phi_6531_ = 0f;
                                     loop {
-                                        let _e4021 = phi_6549_;
-                                        let _e4023 = phi_6552_;
-                                        let _e4025 = phi_6554_;
-                                        local_41 = _e4025;
-                                        let _e4026 = (_e4021 < 32u);
-                                        if _e4026 {
-                                            let _e4027 = (_e4021 + 1u);
-                                            let _e4031 = (_e4008 + (f32(bitcast<i32>(_e4027)) * 0.09817477f));
-                                            let _e4032 = (_e4031 * 2f);
-                                            let _e4037 = ((_e770 + (_e4032 * _e4010)) - cos((_e4032 - _e785)));
-                                            let _e4041 = select((_e4037 * 0.25f), (_e4037 * -0.25f), (_e4031 < 0f));
-                                            let _e4044 = local_40;
-                                            phi_6550_ = _e4027;
-                                            phi_6553_ = _e4041;
-                                            phi_6555_ = select(_e4025, (_e4025 + (_e4041 - _e4023)), (((_e4044 >> bitcast<u32>((_e4021 & 31u))) & 1u) == 0u));
+                                        let _e4089 = phi_6526_;
+                                        let _e4091 = phi_6529_;
+                                        let _e4093 = phi_6531_;
+                                        local_13 = _e4093;
+                                        let _e4094 = (_e4089 < 32u);
+                                        if _e4094 {
+                                            let _e4095 = (_e4089 + 1u);
+                                            let _e4099 = (_e4076 + (f32(bitcast<i32>(_e4095)) * 0.09817477f));
+                                            let _e4100 = (_e4099 * 2f);
+                                            let _e4105 = ((_e768 + (_e4100 * _e4078)) - cos((_e4100 - _e783)));
+                                            let _e4109 = select((_e4105 * 0.25f), (_e4105 * -0.25f), (_e4099 < 0f));
+                                            let _e4112 = local_12;
+                                            phi_6527_ = _e4095;
+                                            phi_6530_ = _e4109;
+                                            phi_6532_ = select(_e4093, (_e4093 + (_e4109 - _e4091)), (((_e4112 >> bitcast<u32>((_e4089 & 31u))) & 1u) == 0u));
                                         } else {
-                                            phi_6550_ = u32();
-                                            phi_6553_ = f32();
-                                            phi_6555_ = f32();
+                                            phi_6527_ = u32();
+                                            phi_6530_ = f32();
+                                            phi_6532_ = f32();
                                         }
-                                        let _e4053 = phi_6550_;
-                                        let _e4055 = phi_6553_;
-                                        let _e4057 = phi_6555_;
+                                        let _e4121 = phi_6527_;
+                                        let _e4123 = phi_6530_;
+                                        let _e4125 = phi_6532_;
                                         continue;
                                         continuing {
-                                            phi_6549_ = _e4053;
-                                            phi_6552_ = _e4055;
-                                            phi_6554_ = _e4057;
-                                            break if !(_e4026);
+                                            phi_6526_ = _e4121;
+                                            phi_6529_ = _e4123;
+                                            phi_6531_ = _e4125;
+                                            break if !(_e4094);
                                         }
                                     }
-                                    let _e4060 = local_41;
-                                    phi_7410_ = _e3949;
-                                    phi_6656_ = (_e691 + 1f);
-                                    phi_6657_ = (_e693 + ((_e751 + ((1f - _e751) * 0.05f)) * _e4060));
+                                    let _e4128 = local_13;
+                                    phi_8712_ = _e4017;
+                                    phi_6633_ = (_e689 + 1f);
+                                    phi_6634_ = (_e691 + ((_e749 + ((1f - _e749) * 0.05f)) * _e4128));
                                 } else {
-                                    if (_e232 == 1u) {
-                                        phi_6601_ = 0u;
-                                        phi_6604_ = 0f;
+                                    if (_e230 == 1u) {
+                                        phi_6578_ = 0u;
+                                        phi_6581_ = 0f;
                                         loop {
-                                            let _e3963 = phi_6601_;
-                                            let _e3965 = phi_6604_;
-                                            local_39 = _e3965;
-                                            let _e3966 = (_e3963 < 4u);
-                                            if _e3966 {
+                                            let _e4031 = phi_6578_;
+                                            let _e4033 = phi_6581_;
+                                            local_11 = _e4033;
+                                            let _e4034 = (_e4031 < 4u);
+                                            if _e4034 {
                                                 local = array<type_40, 4>(type_40(4026531855u, 0.0095061f), type_40(251658480u, 0.0270951f), type_40(15732480u, 0.0405571f), type_40(1044480u, 0.0478421f));
-                                                if _e3966 {
+                                                if _e4034 {
                                                 } else {
-                                                    phi_7405_ = true;
+                                                    phi_8707_ = true;
                                                     break;
                                                 }
-                                                let _e3969 = local[_e3963].member;
-                                                let _e3972 = local[_e3963].member_1;
-                                                let _e3974 = local_38;
-                                                phi_6602_ = (_e3963 + 1u);
-                                                phi_6605_ = (_e3965 + (f32(bitcast<i32>(countOneBits((_e3974 & _e3969)))) * _e3972));
+                                                let _e4037 = local[_e4031].member;
+                                                let _e4040 = local[_e4031].member_1;
+                                                let _e4042 = local_10;
+                                                phi_6579_ = (_e4031 + 1u);
+                                                phi_6582_ = (_e4033 + (f32(bitcast<i32>(countOneBits((_e4042 & _e4037)))) * _e4040));
                                             } else {
-                                                phi_6602_ = u32();
-                                                phi_6605_ = f32();
+                                                phi_6579_ = u32();
+                                                phi_6582_ = f32();
                                             }
-                                            let _e3983 = phi_6602_;
-                                            let _e3985 = phi_6605_;
+                                            let _e4051 = phi_6579_;
+                                            let _e4053 = phi_6582_;
                                             continue;
                                             continuing {
-                                                phi_6601_ = _e3983;
-                                                phi_6604_ = _e3985;
-                                                phi_7405_ = _e3949;
-                                                break if !(_e3966);
+                                                phi_6578_ = _e4051;
+                                                phi_6581_ = _e4053;
+                                                phi_8707_ = _e4017;
+                                                break if !(_e4034);
                                             }
                                         }
-                                        let _e3988 = phi_7405_;
-                                        phi_7408_ = _e3988;
-                                        if _e3988 {
+                                        let _e4056 = phi_8707_;
+                                        phi_8710_ = _e4056;
+                                        if _e4056 {
                                             break;
                                         }
-                                        let _e3990 = local_39;
-                                        let _e3991 = (1f - _e3990);
-                                        phi_7416_ = _e3988;
-                                        phi_6654_ = (_e691 + _e751);
-                                        phi_6655_ = (_e693 + (_e751 * select(0f, select(1f, _e3991, (_e3991 < 1f)), (_e3991 > 0f))));
+                                        let _e4058 = local_11;
+                                        let _e4059 = (1f - _e4058);
+                                        phi_8718_ = _e4056;
+                                        phi_6631_ = (_e689 + _e749);
+                                        phi_6632_ = (_e691 + (_e749 * select(0f, select(1f, _e4059, (_e4059 < 1f)), (_e4059 > 0f))));
                                     } else {
-                                        let _e3953 = local_37;
-                                        phi_7416_ = _e3949;
-                                        phi_6654_ = (_e691 + 1f);
-                                        phi_6655_ = (_e693 + ((f32(bitcast<i32>(countOneBits((_e3953 & 4294967295u)))) * -0.03125f) + 1f));
+                                        let _e4021 = local_9;
+                                        phi_8718_ = _e4017;
+                                        phi_6631_ = (_e689 + 1f);
+                                        phi_6632_ = (_e691 + ((f32(bitcast<i32>(countOneBits((_e4021 & 4294967295u)))) * -0.03125f) + 1f));
                                     }
-                                    let _e4000 = phi_7416_;
-                                    let _e4002 = phi_6654_;
-                                    let _e4004 = phi_6655_;
-                                    phi_7410_ = _e4000;
-                                    phi_6656_ = _e4002;
-                                    phi_6657_ = _e4004;
+                                    let _e4068 = phi_8718_;
+                                    let _e4070 = phi_6631_;
+                                    let _e4072 = phi_6632_;
+                                    phi_8712_ = _e4068;
+                                    phi_6633_ = _e4070;
+                                    phi_6634_ = _e4072;
                                 }
-                                let _e4065 = phi_7410_;
-                                let _e4067 = phi_6656_;
-                                let _e4069 = phi_6657_;
-                                phi_7409_ = _e4065;
-                                phi_1007_ = (_e689 + 1u);
-                                phi_1010_ = _e4067;
-                                phi_1012_ = _e4069;
+                                let _e4133 = phi_8712_;
+                                let _e4135 = phi_6633_;
+                                let _e4137 = phi_6634_;
+                                phi_8711_ = _e4133;
+                                phi_1028_ = (_e687 + 1u);
+                                phi_1031_ = _e4135;
+                                phi_1033_ = _e4137;
                             } else {
-                                phi_7409_ = _e687;
-                                phi_1007_ = u32();
-                                phi_1010_ = f32();
-                                phi_1012_ = f32();
+                                phi_8711_ = _e685;
+                                phi_1028_ = u32();
+                                phi_1031_ = f32();
+                                phi_1033_ = f32();
                             }
-                            let _e4072 = phi_7409_;
-                            let _e4074 = phi_1007_;
-                            let _e4076 = phi_1010_;
-                            let _e4078 = phi_1012_;
+                            let _e4140 = phi_8711_;
+                            let _e4142 = phi_1028_;
+                            let _e4144 = phi_1031_;
+                            let _e4146 = phi_1033_;
                             continue;
                             continuing {
-                                phi_6952_ = _e4072;
-                                phi_1006_ = _e4074;
-                                phi_1009_ = _e4076;
-                                phi_1011_ = _e4078;
-                                phi_7408_ = _e4072;
-                                break if !(_e694);
+                                phi_8399_ = _e4140;
+                                phi_1027_ = _e4142;
+                                phi_1030_ = _e4144;
+                                phi_1032_ = _e4146;
+                                phi_8710_ = _e4140;
+                                break if !(_e692);
                             }
                         }
-                        let _e4081 = phi_7408_;
-                        if _e4081 {
+                        let _e4149 = phi_8710_;
+                        if _e4149 {
                             break;
                         }
-                        let _e4083 = local_42;
-                        let _e4086 = local_43;
-                        let _e4088 = local_44;
-                        phi_6665_ = select(1f, (_e4086 / _e4088), (_e4083 > 0f));
+                        let _e4151 = local_14;
+                        let _e4154 = local_15;
+                        let _e4156 = local_16;
+                        phi_6642_ = select(1f, (_e4154 / _e4156), (_e4151 > 0f));
                     } else {
-                        phi_6665_ = 1f;
+                        phi_6642_ = 1f;
                     }
-                    let _e4092 = phi_6665_;
-                    if (_e227.member_6 == 2f) {
-                        phi_6678_ = (_e4092 * _e4092);
+                    let _e4160 = phi_6642_;
+                    if (_e225.member_6 == 2f) {
+                        phi_6655_ = (_e4160 * _e4160);
                     } else {
-                        if (_e227.member_6 == 1f) {
-                            phi_6677_ = _e4092;
+                        if (_e225.member_6 == 1f) {
+                            phi_6654_ = _e4160;
                         } else {
-                            phi_6677_ = pow(_e4092, _e227.member_6);
+                            phi_6654_ = pow(_e4160, _e225.member_6);
                         }
-                        let _e4098 = phi_6677_;
-                        phi_6678_ = _e4098;
+                        let _e4166 = phi_6654_;
+                        phi_6655_ = _e4166;
                     }
-                    let _e4101 = phi_6678_;
-                    let _e4106 = (select(1f, select(0.03f, _e4101, ((_e4101 > 0.03f) || false)), _e682) * 0.6666667f);
-                    terms.member[_e269] = (bitcast<u32>((floor(((select(0f, select(1f, _e4106, (_e4106 < 1f)), (_e4106 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
-                    edges.member[_e269] = ((((64u * (bitcast<u32>((floor(select(0f, select(3f, _e398, (_e398 < 3f)), (_e398 > 0f))) + 8388608f)) - 1258291200u)) + (16u * (bitcast<u32>((floor(select(0f, select(3f, _e413, (_e413 < 3f)), (_e413 > 0f))) + 8388608f)) - 1258291200u))) + (4u * (bitcast<u32>((floor(select(0f, select(3f, _e429, (_e429 < 3f)), (_e429 > 0f))) + 8388608f)) - 1258291200u))) + (bitcast<u32>((floor(select(0f, select(3f, _e445, (_e445 < 3f)), (_e445 > 0f))) + 8388608f)) - 1258291200u));
+                    let _e4169 = phi_6655_;
+                    let _e4174 = (select(1f, select(0.03f, _e4169, ((_e4169 > 0.03f) || false)), _e680) * 0.6666667f);
+                    terms.member[_e267] = (bitcast<u32>((floor(((select(0f, select(1f, _e4174, (_e4174 < 1f)), (_e4174 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
+                    edges.member[_e267] = ((((64u * (bitcast<u32>((floor(select(0f, select(3f, _e396, (_e396 < 3f)), (_e396 > 0f))) + 8388608f)) - 1258291200u)) + (16u * (bitcast<u32>((floor(select(0f, select(3f, _e411, (_e411 < 3f)), (_e411 > 0f))) + 8388608f)) - 1258291200u))) + (4u * (bitcast<u32>((floor(select(0f, select(3f, _e427, (_e427 < 3f)), (_e427 > 0f))) + 8388608f)) - 1258291200u))) + (bitcast<u32>((floor(select(0f, select(3f, _e443, (_e443 < 3f)), (_e443 > 0f))) + 8388608f)) - 1258291200u));
                 }
             }
             break;

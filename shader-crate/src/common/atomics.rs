@@ -33,7 +33,9 @@ pub fn count_rays<B: AtomicU32Buffer>(counter: &mut B, n: u32) {
 /// exclusive borrow makes plain min/max equivalent.
 impl AtomicU32Buffer for &mut [u32] {
     fn peek(&self, i: usize) -> u32 {
-        self[i]
+        // Unchecked on SPIR-V (`crate::common::read`): the callers index texels clamped into
+        // the buffer, as for the atomics below.
+        unsafe { crate::common::read::read(self, i) }
     }
     #[cfg(not(target_arch = "spirv"))]
     fn atomic_min(&mut self, i: usize, v: u32) -> u32 {

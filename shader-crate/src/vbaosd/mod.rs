@@ -14,19 +14,18 @@ use spirv_std::num_traits::Float;
 #[cfg(not(target_arch = "spirv"))]
 pub mod settings;
 
+use crate::common::ViewParams;
 use crate::common::atomics::AtomicU32Buffer;
 use crate::common::float_order::ordered_bits;
-use crate::common::read::write;
+use crate::common::read::{read, write};
 use crate::common::screen_space::view_pos;
-use crate::glam::{UVec2, UVec3, Vec3, vec3};
+use crate::glam::{UVec2, UVec3, Vec2, Vec3, vec3};
 use crate::gtao::main_pass::{PixelSetup, final_visibility, pixel_setup, sample_pair, slice_frame};
 use crate::gtao::{GtaoFixed, GtaoPixel};
-use crate::raysd::texel_ray_uv;
+use crate::raysd::{MAX_LAYERS, texel_ray_uv};
 use crate::svao::{SvaoFrame, SvaoParams, sd_pixel};
 use crate::vbao::VbaoParams;
-use crate::vbao::kernel::{
-    EDGE_TOLERANCE, Occupancy, gated_bits, interval_bits, own_slice, vbao_term, visibility_with,
-};
+use crate::vbao::kernel::{EDGE_TOLERANCE, Occupancy, OwnSlice, interval_bits, own_slice, vbao_term, visibility_with};
 use spirv_std::spirv;
 
 /// A sample counts as flagged when it lies above P's tangent plane by more than this fraction
@@ -128,81 +127,129 @@ pub struct SdLayers<'a> {
     pub mips: &'a [f32],
 }
 
+/// Layer `k` of the `n` at `map[base..]` as a view depth if it lies deeper than `after`, else
+/// (and for k ≥ n, reading the last) the far plane.
+#[inline]
+fn layer_at(map: &[f32], view: &ViewParams, base: usize, n: usize, k: usize, after: f32) -> f32 {
+    // SAFETY: `base` is the first layer of a texel inside the map (`sd_pixel` clamps it) and
+    // the index stays below its `n`.
+    let z = unsafe { read(map, base + k.min(n - 1)) };
+    let d = z * (view.far - view.near) + view.near;
+    if k < n && z < 1.0 && d > after { d } else { view.far }
+}
+
 impl SdLayers<'_> {
-    /// The nearest layer of SD texel `texel` deeper than `after` (view depth), or the far plane.
+    /// The view depths of SD texel `texel`'s layers deeper than `after`, ascending, the far
+    /// plane for the missing ones: [`MAX_LAYERS`] reads clamped to the texel's `N`, sorted by a
+    /// network of min/max pairs on eight scalars (no array indexed per invocation, no branch).
     #[inline]
-    fn next_layer(&self, texel: UVec2, after: f32) -> f32 {
+    fn layers_behind(&self, texel: UVec2, after: f32) -> [f32; MAX_LAYERS] {
         let sd = self.sd;
         let view = &sd.vao.view;
-        let base = sd.sd_index(texel) * sd.sd_layers as usize;
-        let mut nearest = view.far;
-        let mut k = 0;
-        while k < sd.sd_layers as usize {
-            let z = self.map[base + k];
-            let d = z * (view.far - view.near) + view.near;
-            if z < 1.0 && d > after && d < nearest {
-                nearest = d;
-            }
-            k += 1;
+        let n = sd.sd_layers as usize;
+        let base = sd.sd_index(texel) * n;
+        // A function, not a closure: a closure over `self` leaves a struct of pointers in the
+        // SPIR-V that naga rejects.
+        let map = self.map;
+        let (mut l0, mut l1, mut l2, mut l3) = (
+            layer_at(map, view, base, n, 0, after),
+            layer_at(map, view, base, n, 1, after),
+            layer_at(map, view, base, n, 2, after),
+            layer_at(map, view, base, n, 3, after),
+        );
+        // Four more only for N = 8 (the same branch in every invocation).
+        let (mut l4, mut l5, mut l6, mut l7) = if n > 4 {
+            (
+                layer_at(map, view, base, n, 4, after),
+                layer_at(map, view, base, n, 5, after),
+                layer_at(map, view, base, n, 6, after),
+                layer_at(map, view, base, n, 7, after),
+            )
+        } else {
+            (view.far, view.far, view.far, view.far)
+        };
+        // Batcher's odd–even merge sort of 8, written out: rust-gpu emits loops as written, and
+        // a loop over an array indexes it per invocation.
+        macro_rules! exchange {
+            ($($a:ident $b:ident),*) => {
+                $( let (lo, hi) = ($a.min($b), $a.max($b)); $a = lo; $b = hi; )*
+            };
         }
-        nearest
+        exchange!(l0 l1, l2 l3, l4 l5, l6 l7, l0 l2, l1 l3, l4 l6, l5 l7, l1 l2, l5 l6);
+        exchange!(l0 l4, l1 l5, l2 l6, l3 l7, l2 l4, l3 l5, l1 l2, l3 l4, l5 l6);
+        [l0, l1, l2, l3, l4, l5, l6, l7]
     }
 }
 
 impl Occupancy<f32> for SdLayers<'_> {
     #[inline]
     fn bits(&mut self, params: &VbaoParams, delta: Vec3, px: &PixelSetup, side: f32) -> u32 {
-        if !flagged(params, delta, px) {
-            return gated_bits(params, delta, px, side);
+        let gate = params.gate_radius;
+        if gate > 0.0 && delta.dot(delta) > gate * gate {
+            return 0;
         }
-        let sd = self.sd;
-        let view = &sd.vao.view;
-        let q = px.pos + delta;
-        let texel = sd_pixel(uv_of(sd, q), sd);
-        let uv = texel_ray_uv(texel, sd);
-        // The texel's ray must enter Q's own surface (within T of Q's depth): at ¼ resolution
-        // and jittered it may pass beside a thin object and describe what lies behind another.
-        let entered = self.mips[view.index(view.texel_of_uv(uv))];
-        if (entered - q.z).abs() > params.thickness {
-            return gated_bits(params, delta, px, side);
-        }
-        // The layers behind the sample in depth order, each found as the nearest layer behind
-        // the one before (N ≤ 8 reads per layer; no per-invocation array to index).
-        let behind = q.z * (1.0 + SAME_SURFACE);
-        let first = self.next_layer(texel, behind);
-        if first >= view.far {
-            return gated_bits(params, delta, px, side);
-        }
+        // `vbao`'s slab behind Q unless the map says Q's solid reaches farther; one own slice
+        // and one code path for every sample (no second copy of `vbao`'s bits to branch to).
+        let mut back = delta - px.v * params.thickness;
+        let mut hidden = 0;
         let own = own_slice::<f32>(delta, px.v, px.n);
         let rule = params.sector_rule;
-        let layer = |d: f32| view_pos(view, uv, d) - px.pos;
-        // Q's own solid reaches its first exit, but never less far than T: T also stands for
-        // the occluders the sparse samples miss (thinner measured backs raised the error on
-        // Sponza and the kitchen, spec vbao §8.3).
-        let slab = delta - px.v * params.thickness;
-        let exit = if first > q.z + params.thickness { layer(first) } else { slab };
-        let mut bits = interval_bits(&own, delta, exit, px.v, side, rule);
-        // Hidden solids: (entry, exit) pairs of the following layers, an entry without its exit
-        // as thick as T.
-        let gate = params.gate_radius;
-        let mut after = first;
-        let mut k = 1;
-        while k < sd.sd_layers {
-            let entry_depth = self.next_layer(texel, after);
-            if entry_depth >= view.far {
-                break;
+        if flagged(params, delta, px) {
+            let sd = self.sd;
+            let view = &sd.vao.view;
+            let q = px.pos + delta;
+            let texel = sd_pixel(uv_of(sd, q), sd);
+            let uv = texel_ray_uv(texel, sd);
+            // The texel's ray must enter Q's own surface (within T of Q's depth): at ¼
+            // resolution and jittered it may pass beside a thin object and describe what lies
+            // behind another. Then the layers behind Q, in depth order.
+            // SAFETY: `texel_of_uv` clamps into the target, whose MIP 0 leads the chain.
+            let entered = unsafe { read(self.mips, view.index(view.texel_of_uv(uv))) };
+            let same_surface = (entered - q.z).abs() <= params.thickness;
+            let after = if same_surface { q.z * (1.0 + SAME_SURFACE) } else { f32::MAX };
+            let layers = self.layers_behind(texel, after);
+            let first = layers[0];
+            // Q's own solid reaches its first exit, but never less far than T: T also stands
+            // for the occluders the sparse samples miss (thinner measured backs raised the
+            // error on Sponza and the kitchen, spec vbao §8.3).
+            if first < view.far && first > q.z + params.thickness {
+                back = view_pos(view, uv, first) - px.pos;
             }
-            let exit_depth = self.next_layer(texel, entry_depth);
-            let entry = layer(entry_depth);
-            let exit = if exit_depth < view.far { layer(exit_depth) } else { entry - px.v * params.thickness };
-            if gate <= 0.0 || entry.dot(entry) <= gate * gate {
-                bits |= interval_bits(&own, entry, exit, px.v, side, rule);
-            }
-            after = exit_depth;
-            k += 2;
+            // Hidden solids: (entry, exit) pairs of the following layers, an entry without
+            // its exit as thick as T (written out, as the sort).
+            hidden = hidden_bits(params, px, &own, uv, side, layers[1], layers[2])
+                | hidden_bits(params, px, &own, uv, side, layers[3], layers[4])
+                | hidden_bits(params, px, &own, uv, side, layers[5], layers[6])
+                | hidden_bits(params, px, &own, uv, side, layers[7], view.far);
         }
-        bits
+        interval_bits(&own, delta, back, px.v, side, rule) | hidden
     }
+}
+
+/// The bits of a hidden solid (spec vbao §8.2) entered at view depth `entry` and left at `exit`
+/// along the SD texel's ray through `uv` (no entry: the far plane; no exit: T deep), measured in
+/// the flagged sample's own slice `own`, if its entry is inside the gate.
+#[inline]
+fn hidden_bits(
+    params: &VbaoParams,
+    px: &PixelSetup,
+    own: &OwnSlice<f32>,
+    uv: Vec2,
+    side: f32,
+    entry: f32,
+    exit: f32,
+) -> u32 {
+    let view = &params.gtao.view;
+    if entry >= view.far {
+        return 0;
+    }
+    let front = view_pos(view, uv, entry) - px.pos;
+    let back = if exit < view.far { view_pos(view, uv, exit) - px.pos } else { front - px.v * params.thickness };
+    let gate = params.gate_radius;
+    if gate > 0.0 && front.dot(front) > gate * gate {
+        return 0;
+    }
+    interval_bits(own, front, back, px.v, side, params.sector_rule)
 }
 
 /// Phase 2 for one pixel (spec vbao §8.2): `vbao`'s pixel with [`SdLayers`] as the samples'
@@ -225,6 +272,7 @@ pub fn vbao_sd_pixel(
 /// ray intervals for the flagged samples.
 #[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "vbao_sd_request"))]
+#[allow(clippy::too_many_arguments)]
 pub fn vbao_sd_request(
     #[spirv(global_invocation_id)] id: UVec3,
     #[spirv(push_constant)] params: &VbaoParams,
@@ -237,7 +285,31 @@ pub fn vbao_sd_request(
     #[read_write]
     #[spirv(storage_buffer, descriptor_set = 0, binding = 4)]
     mut ray_max: &mut [u32],
+    #[spirv(spec_constant(id = 0))] specialized: u32,
+    #[spirv(spec_constant(id = 1))] slices: u32,
+    #[spirv(spec_constant(id = 2))] steps: u32,
+    #[spirv(spec_constant(id = 3))] bent_normals: u32,
+    #[spirv(spec_constant(id = 4))] thin_occluder_compensation: u32,
+    #[spirv(spec_constant(id = 5))] sample_distribution_power: u32,
+    #[spirv(spec_constant(id = 6))] final_value_power: u32,
+    #[spirv(spec_constant(id = 7))] falloff_range: u32,
+    #[spirv(spec_constant(id = 8))] radius_multiplier: u32,
+    #[spirv(spec_constant(id = 9))] depth_mip_sampling_offset: u32,
 ) {
+    let fixed = GtaoFixed {
+        slices,
+        steps,
+        bent_normals,
+        thin_occluder_compensation,
+        sample_distribution_power,
+        final_value_power,
+        falloff_range,
+        radius_multiplier,
+        depth_mip_sampling_offset,
+    };
+    // Specialized like the main pass (the slice and step loops get constant bounds); the
+    // request reads no weighting or sector rule.
+    let params = &params.with_fixed(specialized, fixed, params.weighting, params.sector_rule);
     let size = params.gtao.view.size();
     let p = id.truncate();
     if p.x >= size.x || p.y >= size.y {
