@@ -415,3 +415,82 @@ fn vbao_sd_corner_matches_the_closed_forms_with_and_without_layers() {
     }
     assert!(worst <= 0.02, "vbao-sd corner: worst |Δ| = {worst}");
 }
+
+/// Spec vbao §8.2, one flagged sample against hand-placed layers: P on a surface facing the
+/// camera, Q 2.4·T (1.2·R) in front of it and to the side, the MIP-0 depth at Q's SD ray equal to
+/// Q's (the ray enters Q's surface). With Q's first exit 1.6·T behind it the own segment reaches
+/// that exit, and a hidden solid (entry 1.8·T, exit 2·T, still in front of P's plane) adds its
+/// own segment; an exit only T/2 behind keeps `vbao`'s slab of T; no layer at all is `vbao`'s
+/// sample bit for bit. Each case is
+/// the sector bits of those segments ([`interval_bits`] in Q's own slice), and the deep exit sets
+/// more sectors than the slab.
+#[test]
+fn a_flagged_sample_takes_its_segments_from_the_layers() {
+    use aokit_shaders::common::screen_space::view_pos;
+    use aokit_shaders::gtao::main_pass::PixelSetup;
+    use aokit_shaders::raysd::texel_ray_uv;
+    use aokit_shaders::svao::sd_pixel;
+    use aokit_shaders::vbao::kernel::{Occupancy, interval_bits, own_slice, sample_bits};
+    use aokit_shaders::vbaosd::SdLayers;
+    let (_, frame) = common::builtin_frame("sponza", 160, 90, 16);
+    let settings = VbaoSettings { weighting: WEIGHT_COSINE_EXACT, ..Default::default() };
+    let params = settings.params(&frame.desc());
+    let sd = settings.sd.frame(&frame.desc(), aokit_shaders::svao::Secondary::StochasticDepth).params;
+    let view = frame.camera.view;
+    let (r, t) = (params.gate_radius, params.thickness);
+    // P at the image centre, 5R deep, its normal toward the camera; Q to the right, 2.4·T nearer.
+    let depth = 5.0 * r;
+    let pos = view_pos(&view, aokit_shaders::glam::vec2(0.5, 0.5), depth);
+    let v = (-pos).normalize();
+    let px = PixelSetup {
+        uv: aokit_shaders::glam::vec2(0.5, 0.5),
+        pos,
+        v,
+        n: v,
+        r,
+        r_px: 10.0,
+        min_s: 0.1,
+        xi: aokit_shaders::glam::Vec2::ZERO,
+        mip_threshold: 1.0,
+    };
+    let q = view_pos(&view, aokit_shaders::glam::vec2(0.53, 0.5), depth - 2.4 * t);
+    let delta = q - pos;
+    assert!(delta.length() < r && delta.dot(v) > 0.1 * delta.length(), "Q is a flagged sample: {delta}");
+    let texel = sd_pixel(view.view_to_uv(vec3(q.x, q.y, -q.z)), &sd);
+    let uv = texel_ray_uv(texel, &sd);
+    let mips = vec![q.z; (view.size().x * view.size().y) as usize * 2];
+    let n = sd.sd_layers as usize;
+    let normalized = |d: f32| (d - view.near) / (view.far - view.near);
+    let map_with = |layers: &[f32]| {
+        let mut map = vec![1.0f32; (sd.sd_size().x * sd.sd_size().y) as usize * n];
+        let base = sd.sd_index(texel) * n;
+        for (k, &d) in layers.iter().enumerate() {
+            map[base + k] = normalized(d);
+        }
+        map
+    };
+    let own = own_slice::<f32>(delta, v, v);
+    let rule = params.sector_rule;
+    let at = |d: f32| view_pos(&view, uv, d) - pos;
+    for side in [1.0f32, -1.0] {
+        let bits = |map: &[f32]| SdLayers { map, sd: &sd, mips: &mips }.bits(&params, delta, &px, side);
+        // Deep exit and a hidden solid (stored out of order: the kernel sorts them).
+        let deep = bits(&map_with(&[q.z + 2.0 * t, q.z + 1.6 * t, q.z + 1.8 * t]));
+        let want = interval_bits(&own, delta, at(q.z + 1.6 * t), v, side, rule)
+            | interval_bits(&own, at(q.z + 1.8 * t), at(q.z + 2.0 * t), v, side, rule);
+        assert_eq!(deep, want, "side {side}: deep exit and hidden solid");
+        // A shallow exit: the slab of T.
+        let shallow = bits(&map_with(&[q.z + 0.5 * t]));
+        let slab = interval_bits(&own, delta, delta - v * t, v, side, rule);
+        assert_eq!(shallow, slab, "side {side}: shallow exit");
+        // No layer: vbao's sample.
+        let none = bits(&map_with(&[]));
+        assert_eq!(none, sample_bits::<f32>(delta, v, v, side, t, rule), "side {side}: no layer");
+        eprintln!(
+            "side {side}: deep {deep:032b}, slab {slab:032b} ({} vs {} sectors)",
+            deep.count_ones(),
+            slab.count_ones()
+        );
+        assert!(deep.count_ones() > slab.count_ones() && deep & slab == slab, "side {side}: the exit widens the slab");
+    }
+}

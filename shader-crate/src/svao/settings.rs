@@ -353,6 +353,30 @@ pub const SD_MAP_FORMULAS: &[Formula] = {
 pub const CONSTANTS: &[Constant] =
     crate::join_constants![SVAO, crate::vao::settings::CONSTANTS, crate::common::camera::CONSTANTS];
 
+/// Ray-SD's SD-map trace (spec svao-raysd §7) over `extent` (the SD texels): the pipeline's
+/// raygen, miss and any-hit, or its ray-query variant, reading the record `svao_frame`, the
+/// G-buffer, the intervals `ray_min` / `ray_max`, writing `sd_map` and counting its rays; what
+/// the stenciled family and `vbao-sd` trace.
+pub fn sd_map_pass(extent: Extent) -> Pass {
+    let bindings = crate::raysd::rq::raysd_rq::Bindings {
+        frame: "svao_frame",
+        tlas: inputs::SCENE_TLAS,
+        depth: inputs::LINEAR_DEPTH,
+        normals: inputs::VIEW_NORMALS,
+        ray_min: "ray_min",
+        ray_max: "ray_max",
+        sd_map: "sd_map",
+        uvs: inputs::SCENE_UVS,
+        materials: inputs::SCENE_MATERIALS,
+        mask_headers: inputs::SCENE_MASK_HEADERS,
+        mask_texels: inputs::SCENE_MASK_TEXELS,
+        ray_count: RAY_COUNT,
+    };
+    use crate::raysd::rt::{raysd_ahit, raysd_miss, raysd_rgen};
+    let shaders = [&raysd_rgen::ENTRY, &raysd_miss::ENTRY, &raysd_ahit::ENTRY];
+    Pass::ray_traced("sd_map", shaders, bindings, extent)
+}
+
 /// Pass 1, refined as [`SvaoSettings::refinement`] says: not at all (every pixel final, spec
 /// svao-raysd §5), from a stochastic depth map, ray-traced or raster (spec svao-raysd §7–§9), or
 /// by one ray per flagged sample (spec svao-raysd §10).
@@ -553,23 +577,7 @@ impl SvaoSettings {
                         bytemuck::bytes_of(&raster),
                     ));
                 }
-                let bindings = crate::raysd::rq::raysd_rq::Bindings {
-                    frame: "svao_frame",
-                    tlas: inputs::SCENE_TLAS,
-                    depth: g,
-                    normals: n,
-                    ray_min: "ray_min",
-                    ray_max: "ray_max",
-                    sd_map: "sd_map",
-                    uvs: inputs::SCENE_UVS,
-                    materials: inputs::SCENE_MATERIALS,
-                    mask_headers: inputs::SCENE_MASK_HEADERS,
-                    mask_texels: inputs::SCENE_MASK_TEXELS,
-                    ray_count: RAY_COUNT,
-                };
-                use crate::raysd::rt::{raysd_ahit, raysd_miss, raysd_rgen};
-                let shaders = [&raysd_rgen::ENTRY, &raysd_miss::ENTRY, &raysd_ahit::ENTRY];
-                let traced = Pass::ray_traced("sd_map", shaders, bindings, sd_extent);
+                let traced = sd_map_pass(sd_extent);
                 if !self.raster {
                     passes.push(traced);
                     resources.push(ray_counter());

@@ -4,11 +4,10 @@
 //! query) → main (the masks from the map's layers).
 
 use crate::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
-use crate::graph::{
-    Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, RAY_COUNT, Resource, Size, inputs, ray_counter, record,
-};
+use crate::graph::{Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, ray_counter, record};
 use crate::gtao::settings::{MainPassResources, xegtao_graph};
 use crate::svao::Secondary;
+use crate::svao::settings::sd_map_pass;
 use crate::technique::{Constant, Declaration, Formula, single_layer};
 use crate::vbao::settings::VbaoSettings;
 
@@ -79,22 +78,6 @@ pub fn graph(s: &VbaoSettings, frame: &FrameDesc) -> Graph {
             ray_min: "ray_min",
             ray_max: "ray_max",
         };
-        let trace = crate::raysd::rq::raysd_rq::Bindings {
-            frame: "svao_frame",
-            tlas: inputs::SCENE_TLAS,
-            depth: inputs::LINEAR_DEPTH,
-            normals: inputs::VIEW_NORMALS,
-            ray_min: "ray_min",
-            ray_max: "ray_max",
-            sd_map: "sd_map",
-            uvs: inputs::SCENE_UVS,
-            materials: inputs::SCENE_MATERIALS,
-            mask_headers: inputs::SCENE_MASK_HEADERS,
-            mask_texels: inputs::SCENE_MASK_TEXELS,
-            ray_count: RAY_COUNT,
-        };
-        use crate::raysd::rt::{raysd_ahit, raysd_miss, raysd_rgen};
-        let shaders = [&raysd_rgen::ENTRY, &raysd_miss::ENTRY, &raysd_ahit::ENTRY];
         let main = super::vbao_sd_main::Bindings {
             frame: "svao_frame",
             mips: r.mips,
@@ -105,7 +88,7 @@ pub fn graph(s: &VbaoSettings, frame: &FrameDesc) -> Graph {
         };
         let passes = vec![
             Pass::compute("vbao_sd_request", request, Extent::Full, bytes),
-            Pass::ray_traced("sd_map", shaders, trace, sd_extent),
+            sd_map_pass(sd_extent),
             Pass::compute("vbao_sd_main", main, Extent::Full, bytes),
         ];
         (resources, passes)
