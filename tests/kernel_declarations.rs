@@ -117,7 +117,7 @@ fn runners_vs_generated(technique: &str) -> (f32, usize) {
 /// float rounding; a binding read from the wrong slot changes the AO by far more than 1/255.
 #[test]
 fn generated_cpu_drivers_reproduce_the_runners() {
-    for technique in ["vao", "hbao", "gtao", "vbao", "raymarch"] {
+    for technique in ["vao", "hbao", "gtao", "vbao", "vbao-sd", "raymarch"] {
         let (max, driven) = runners_vs_generated(technique);
         eprintln!("{technique}: {driven} passes through generated drivers, max |Δ| {max:.2e}");
         assert!(driven >= 1, "{technique}: {driven} generated passes");

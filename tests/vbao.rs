@@ -306,7 +306,15 @@ fn sd_map_for(cpu: &CpuRenderer, frame: &Frame, settings: &VbaoSettings, only: O
         None => (0..size.y).flat_map(|y| (0..size.x).map(move |x| UVec2::new(x, y))).collect(),
     };
     for p in pixels {
-        request_pixel(&params, &sd_frame.params, &mips, &g.normals, p, &mut &mut ray_min[..], &mut &mut ray_max[..]);
+        request_pixel::<f32, _, _>(
+            &params,
+            &sd_frame.params,
+            &mips,
+            &g.normals,
+            p,
+            &mut &mut ray_min[..],
+            &mut &mut ray_max[..],
+        );
     }
     let pass1 = aokit_cpu::svao::Pass1 { ao: Vec::new(), mask: Vec::new(), ray_min, ray_max };
     let map = aokit_cpu::svao::run_sd_map(

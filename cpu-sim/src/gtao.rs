@@ -13,8 +13,8 @@ use aokit_shaders::gtao::{
 };
 use aokit_shaders::svao::SvaoParams;
 use aokit_shaders::vbao::VbaoParams;
-use aokit_shaders::vbao::kernel::{vbao_term, vbao_visibility};
-use aokit_shaders::vbaosd::{request_pixel, vbao_sd_pixel};
+use aokit_shaders::vbao::kernel::{vbao_term, vbao_visibility, visibility_with};
+use aokit_shaders::vbaosd::{SdLayers, request_pixel};
 use core::sync::atomic::AtomicU32;
 use rayon::prelude::*;
 
@@ -160,9 +160,9 @@ pub fn run_vbao_into(params: &VbaoParams, mips: &[f32], normals: &[u32], terms: 
     });
 }
 
-/// vbao-sd's phase 1 (spec vbao §8.1) over the full target, rows in parallel: every flagged
-/// sample widens its SD texel's ray interval in `ray_min` / `ray_max` (cleared by the caller) by
-/// atomic min / max, as the GPU's invocations do.
+/// vbao-sd's phase 1 (spec vbao §8.1) over the full target, rows in parallel, eight pixels per
+/// call: every flagged sample widens its SD texel's ray interval in `ray_min` / `ray_max`
+/// (cleared by the caller) by atomic min / max, as the GPU's invocations do.
 pub fn run_vbao_sd_request_into(
     params: &VbaoParams,
     sd: &SvaoParams,
@@ -175,8 +175,10 @@ pub fn run_vbao_sd_request_into(
     let (ray_min, ray_max) = (as_atomics(ray_min), as_atomics(ray_max));
     (0..size.y).into_par_iter().for_each(|y| {
         let (mut lo, mut hi) = (ray_min, ray_max);
-        for x in 0..size.x {
-            request_pixel(params, sd, mips, normals, UVec2::new(x, y), &mut lo, &mut hi);
+        for x in (0..size.x).step_by(8) {
+            // A short last run repeats its last pixel: its requests again, which change nothing.
+            let p = lanes_of_run(UVec2::new(x, y), (size.x - x).min(8) as usize);
+            request_pixel::<F32x8, _, _>(params, sd, mips, normals, p, &mut lo, &mut hi);
         }
     });
 }
@@ -188,8 +190,9 @@ fn as_atomics(words: &mut [u32]) -> &[AtomicU32] {
     unsafe { core::slice::from_raw_parts(words.as_mut_ptr() as *const AtomicU32, words.len()) }
 }
 
-/// vbao-sd's main pass (spec vbao §8.2) into the caller's terms and edges, one pixel per call
-/// in parallel bands (the SD layers are read per sample, per pixel).
+/// vbao-sd's main pass (spec vbao §8.2) into the caller's terms and edges: eight pixels of a
+/// row per call of the shader crate's lane-generic occupancy ([`SdLayers`]), as
+/// [`run_vbao_into`].
 pub fn run_vbao_sd_into(
     params: &VbaoParams,
     sd: &SvaoParams,
@@ -200,10 +203,14 @@ pub fn run_vbao_sd_into(
     edges: &mut [u32],
 ) {
     let size = params.gtao.view.size();
-    crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 1, &crate::no_progress, |first, t, e| {
-        let out = vbao_sd_pixel(params, sd, map, mips, normals, first);
-        t[0] = out.term;
-        e[0] = out.edges;
+    crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |first, t, e| {
+        let (packed, valid, px) = pixel_setup::<F32x8>(&params.gtao, mips, normals, lanes_of_run(first, t.len()));
+        let mut layers = SdLayers { map, sd, mips };
+        let vis = final_visibility(visibility_with(params, mips, &px, &mut layers), params.gtao.final_value_power);
+        for (i, (t, e)) in t.iter_mut().zip(e.iter_mut()).enumerate() {
+            *t = vbao_term(F32x8::mask_lane(valid, i), vis.lane(i));
+            *e = F32x8::index_lane(packed, i);
+        }
     });
 }
 

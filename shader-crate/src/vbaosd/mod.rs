@@ -17,13 +17,14 @@ pub mod settings;
 use crate::common::ViewParams;
 use crate::common::atomics::AtomicU32Buffer;
 use crate::common::float_order::ordered_bits;
-use crate::common::read::{read, write};
+use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, select_v3};
+use crate::common::read::write;
 use crate::common::screen_space::view_pos;
-use crate::glam::{UVec2, UVec3, Vec2, Vec3, vec3};
+use crate::glam::{UVec2, UVec3};
 use crate::gtao::main_pass::{PixelSetup, final_visibility, pixel_setup, sample_pair, slice_frame};
 use crate::gtao::{GtaoFixed, GtaoPixel};
-use crate::raysd::{MAX_LAYERS, texel_ray_uv};
-use crate::svao::{SvaoFrame, SvaoParams, sd_pixel};
+use crate::raysd::MAX_LAYERS;
+use crate::svao::{SvaoFrame, SvaoParams};
 use crate::vbao::VbaoParams;
 use crate::vbao::kernel::{EDGE_TOLERANCE, Occupancy, OwnSlice, interval_bits, own_slice, vbao_term, visibility_with};
 use spirv_std::spirv;
@@ -42,83 +43,171 @@ pub const SAME_SURFACE: f32 = 1e-3;
 
 /// Is sample `delta = Q − P` flagged (spec vbao §8.1): within the gate and above the tangent
 /// plane by [`FLAG_SLOPE`]? Only such samples can set sectors (in slices with L ≥ 0.1),
-/// whatever lies behind them; the others keep `vbao`'s bits.
+/// whatever lies behind them; the others keep `vbao`'s bits. Per lane.
 #[inline]
-pub fn flagged(params: &VbaoParams, delta: Vec3, px: &PixelSetup) -> bool {
+pub fn flagged<L: Lanes>(params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>) -> L::Mask {
     let len_sq = delta.dot(delta);
     let gate = params.gate_radius;
-    let inside = gate <= 0.0 || len_sq <= gate * gate;
-    inside && delta.dot(px.n) > FLAG_SLOPE * len_sq.sqrt()
+    let inside = if gate > 0.0 { len_sq.le(L::splat(gate * gate)) } else { L::mask_splat(true) };
+    L::and(inside, delta.dot(px.n).gt(len_sq.sqrt() * FLAG_SLOPE))
 }
 
 /// How far behind a flagged sample its SD texel's ray must reach, world units (spec vbao
 /// §8.1): `2·R_g` (R_g = the effective radius without a gate), the longest chord behind a
 /// sample inside the gate sphere.
 #[inline]
-pub fn reach(params: &VbaoParams, px: &PixelSetup) -> f32 {
-    2.0 * if params.gate_radius > 0.0 { params.gate_radius } else { px.r }
+pub fn reach(params: &VbaoParams, effective_radius: f32) -> f32 {
+    2.0 * if params.gate_radius > 0.0 { params.gate_radius } else { effective_radius }
 }
 
-/// The uv of a point in XeGTAO's view space (+z forward): the camera's `view_to_uv` of the same
-/// point in the right-handed view space.
+/// Phase 1 for one pixel, or `L::LANES` pixels (spec vbao §8.1): every flagged sample widens
+/// its SD texel's ray interval to `[|Q|, |Q| + reach]` (Euclidean camera distances, by atomic
+/// min / max of their ordered bits); the texels no sample asks for are not traced.
 #[inline]
-fn uv_of(sd: &SvaoParams, q: Vec3) -> crate::glam::Vec2 {
-    sd.vao.view.view_to_uv(vec3(q.x, q.y, -q.z))
-}
-
-/// Phase 1 for one pixel (spec vbao §8.1): every flagged sample widens its SD texel's ray
-/// interval to `[|Q|, |Q| + reach]` (Euclidean camera distances, by atomic min / max of their
-/// ordered bits); the texels no sample asks for are not traced.
-#[inline]
-pub fn request_pixel<A: AtomicU32Buffer, B: AtomicU32Buffer>(
+pub fn request_pixel<L: Lanes, A: AtomicU32Buffer, B: AtomicU32Buffer>(
     params: &VbaoParams,
     sd: &SvaoParams,
     mips: &[f32],
     normals: &[u32],
-    p: UVec2,
+    p: L::U2,
     ray_min: &mut A,
     ray_max: &mut B,
 ) {
     let g = &params.gtao;
-    let (_, valid, px) = pixel_setup::<f32>(g, mips, normals, p);
-    if !valid {
+    let (_, valid, px) = pixel_setup::<L>(g, mips, normals, p);
+    if !L::any(valid) {
         return;
     }
-    let reach = reach(params, &px);
+    let reach = reach(params, px.r);
     let mut s = 0;
     while s < g.slices.max(1) {
         let sl = slice_frame(g, &px, s);
         let mut k = 0;
         while k < g.steps.max(1) {
             let (q0, q1) = sample_pair(g, mips, &px, &sl, s, k);
-            let mut side = 0;
-            while side < 2 {
-                let q = if side == 0 { q0 } else { q1 };
-                if flagged(params, q - px.pos, &px) {
-                    let i = sd.sd_index(sd_pixel(uv_of(sd, q), sd));
-                    let t = q.length();
-                    // Neighbouring pixels ask the same texels: an atomic only where it widens.
-                    let (lo, hi) = (ordered_bits(t), ordered_bits(t + reach));
-                    if ray_min.peek(i) > lo {
-                        ray_min.atomic_min(i, lo);
-                    }
-                    if ray_max.peek(i) < hi {
-                        ray_max.atomic_max(i, hi);
-                    }
-                }
-                side += 1;
-            }
+            request_sample::<L, A, B>(params, sd, &px, valid, q0, reach, ray_min, ray_max);
+            request_sample::<L, A, B>(params, sd, &px, valid, q1, reach, ray_min, ray_max);
             k += 1;
         }
         s += 1;
     }
 }
 
+/// One sample's request (spec vbao §8.1), per lane where `valid` and [`flagged`].
+#[inline]
+fn request_sample<L: Lanes, A: AtomicU32Buffer, B: AtomicU32Buffer>(
+    params: &VbaoParams,
+    sd: &SvaoParams,
+    px: &PixelSetup<L>,
+    valid: L::Mask,
+    q: L::V3,
+    reach: f32,
+    ray_min: &mut A,
+    ray_max: &mut B,
+) {
+    let flag = L::and(valid, flagged::<L>(params, q - px.pos, px));
+    if !L::any(flag) {
+        return;
+    }
+    // The sample's point in the right-handed view space (−z forward) gives its uv.
+    let (x, y) = sd_texel::<L>(sd.vao.view.view_to_uv_lanes::<L>(L::V3::new(q.x(), q.y(), -q.z())), sd);
+    let texel = y * L::index_splat(sd.sd_size().x) + x;
+    let t = q.length();
+    let mut i = 0;
+    while i < L::LANES {
+        if L::mask_lane(flag, i) {
+            let at = L::index_lane(texel, i) as usize;
+            // Neighbouring pixels ask the same texels: an atomic only where it widens.
+            let (lo, hi) = (ordered_bits(t.lane(i)), ordered_bits(t.lane(i) + reach));
+            if ray_min.peek(at) > lo {
+                ray_min.atomic_min(at, lo);
+            }
+            if ray_max.peek(at) < hi {
+                ray_max.atomic_max(at, hi);
+            }
+        }
+        i += 1;
+    }
+}
+
+/// Layer `k` of the `n` at `map[base..]` as a view depth if it lies deeper than `after`, else
+/// (and for k ≥ n, reading the last) the far plane; per lane.
+#[inline]
+fn layer_at<L: Lanes>(map: &[f32], view: &ViewParams, base: L::Index, n: u32, k: u32, after: L) -> L {
+    let z = L::gather_index(map, base + L::index_splat(k.min(n - 1)));
+    let d = z * (view.far - view.near) + view.near;
+    let kept = L::and(L::mask_splat(k < n), L::and(z.lt(L::splat(1.0)), d.gt(after)));
+    L::select(kept, d, L::splat(view.far))
+}
+
+/// The view depths of the layers at `map[base..]` (N = `n`) deeper than `after`, ascending, the
+/// far plane for the missing ones: [`MAX_LAYERS`] reads clamped to N, sorted by a network of
+/// min/max pairs on eight values (no array indexed per invocation, no branch).
+#[inline]
+fn layers_behind<L: Lanes>(map: &[f32], view: &ViewParams, base: L::Index, n: u32, after: L) -> [L; MAX_LAYERS] {
+    let (mut l0, mut l1, mut l2, mut l3) = (
+        layer_at(map, view, base, n, 0, after),
+        layer_at(map, view, base, n, 1, after),
+        layer_at(map, view, base, n, 2, after),
+        layer_at(map, view, base, n, 3, after),
+    );
+    // Four more only for N = 8 (the same branch in every invocation).
+    let far = L::splat(view.far);
+    let (mut l4, mut l5, mut l6, mut l7) = if n > 4 {
+        (
+            layer_at(map, view, base, n, 4, after),
+            layer_at(map, view, base, n, 5, after),
+            layer_at(map, view, base, n, 6, after),
+            layer_at(map, view, base, n, 7, after),
+        )
+    } else {
+        (far, far, far, far)
+    };
+    // Batcher's odd–even merge sort of 8, written out: rust-gpu emits loops as written, and a
+    // loop over an array indexes it per invocation.
+    macro_rules! exchange {
+        ($($a:ident $b:ident),*) => {
+            $( let (lo, hi) = ($a.min($b), $a.max($b)); $a = lo; $b = hi; )*
+        };
+    }
+    exchange!(l0 l1, l2 l3, l4 l5, l6 l7, l0 l2, l1 l3, l4 l6, l5 l7, l1 l2, l5 l6);
+    exchange!(l0 l4, l1 l5, l2 l6, l3 l7, l2 l4, l3 l5, l1 l2, l3 l4, l5 l6);
+    [l0, l1, l2, l3, l4, l5, l6, l7]
+}
+
+/// SD texel `SDpixel(uv)` per lane (spec svao-raysd §5, [`crate::svao::sd_pixel`]): `(x, y)`.
+#[inline]
+fn sd_texel<L: Lanes>(uv: L::V2, sd: &SvaoParams) -> (L::Index, L::Index) {
+    let low = sd.sd_low_res.as_vec2();
+    let sg = sd.sd_guard as f32;
+    let size = sd.sd_size();
+    // floor(uv·L) + sg, clamped into the map (floor_index clamps to [0, n − 1]).
+    let x = ((uv.x() * low.x).floor() + sg).floor_index(L::index_splat(size.x));
+    let y = ((uv.y() * low.y).floor() + sg).floor_index(L::index_splat(size.y));
+    (x, y)
+}
+
+/// `crate::raysd::texel_ray_uv` per lane: the jittered low-res position `(q − sg + J(q))/L` of texel `q`.
+#[inline]
+fn texel_ray_uv_lanes<L: Lanes>(x: L::Index, y: L::Index, sd: &SvaoParams) -> L::V2 {
+    let (table, frame) = (sd.jitter, sd.noise_frame);
+    let jitter = L::v2_from_lanes(move |i| {
+        crate::common::tables::sd_jitter(UVec2::new(L::index_lane(x, i), L::index_lane(y, i)), table, frame)
+    });
+    let low = sd.sd_low_res.as_vec2();
+    let sg = sd.sd_guard as f32;
+    L::V2::new(
+        (L::index_to_float(x) - sg + jitter.x()) * (1.0 / low.x),
+        (L::index_to_float(y) - sg + jitter.y()) * (1.0 / low.y),
+    )
+}
+
 /// The occupied segments behind a sample from the SD map (spec vbao §8.2): the layers of the
 /// sample's SD texel behind it, sorted by depth, read as exits and entries of closed surfaces —
 /// the sample's own solid reaches the first (at least T deep), the next two bound a hidden
 /// solid, and so on; an entry without an exit, and a sample without any layer behind it, get
-/// `vbao`'s constant thickness. Samples that are not [`flagged`] are `vbao`'s.
+/// `vbao`'s constant thickness. Samples that are not [`flagged`] are `vbao`'s. One pixel, or
+/// `L::LANES` pixels (cpu-sim).
 pub struct SdLayers<'a> {
     /// `N` normalized depths per SD texel (1 = empty), row-major over the SD size.
     pub map: &'a [f32],
@@ -127,129 +216,83 @@ pub struct SdLayers<'a> {
     pub mips: &'a [f32],
 }
 
-/// Layer `k` of the `n` at `map[base..]` as a view depth if it lies deeper than `after`, else
-/// (and for k ≥ n, reading the last) the far plane.
-#[inline]
-fn layer_at(map: &[f32], view: &ViewParams, base: usize, n: usize, k: usize, after: f32) -> f32 {
-    // SAFETY: `base` is the first layer of a texel inside the map (`sd_pixel` clamps it) and
-    // the index stays below its `n`.
-    let z = unsafe { read(map, base + k.min(n - 1)) };
-    let d = z * (view.far - view.near) + view.near;
-    if k < n && z < 1.0 && d > after { d } else { view.far }
-}
-
-impl SdLayers<'_> {
-    /// The view depths of SD texel `texel`'s layers deeper than `after`, ascending, the far
-    /// plane for the missing ones: [`MAX_LAYERS`] reads clamped to the texel's `N`, sorted by a
-    /// network of min/max pairs on eight scalars (no array indexed per invocation, no branch).
+impl<L: Lanes> Occupancy<L> for SdLayers<'_> {
     #[inline]
-    fn layers_behind(&self, texel: UVec2, after: f32) -> [f32; MAX_LAYERS] {
-        let sd = self.sd;
-        let view = &sd.vao.view;
-        let n = sd.sd_layers as usize;
-        let base = sd.sd_index(texel) * n;
-        // A function, not a closure: a closure over `self` leaves a struct of pointers in the
-        // SPIR-V that naga rejects.
-        let map = self.map;
-        let (mut l0, mut l1, mut l2, mut l3) = (
-            layer_at(map, view, base, n, 0, after),
-            layer_at(map, view, base, n, 1, after),
-            layer_at(map, view, base, n, 2, after),
-            layer_at(map, view, base, n, 3, after),
-        );
-        // Four more only for N = 8 (the same branch in every invocation).
-        let (mut l4, mut l5, mut l6, mut l7) = if n > 4 {
-            (
-                layer_at(map, view, base, n, 4, after),
-                layer_at(map, view, base, n, 5, after),
-                layer_at(map, view, base, n, 6, after),
-                layer_at(map, view, base, n, 7, after),
-            )
-        } else {
-            (view.far, view.far, view.far, view.far)
-        };
-        // Batcher's odd–even merge sort of 8, written out: rust-gpu emits loops as written, and
-        // a loop over an array indexes it per invocation.
-        macro_rules! exchange {
-            ($($a:ident $b:ident),*) => {
-                $( let (lo, hi) = ($a.min($b), $a.max($b)); $a = lo; $b = hi; )*
-            };
-        }
-        exchange!(l0 l1, l2 l3, l4 l5, l6 l7, l0 l2, l1 l3, l4 l6, l5 l7, l1 l2, l5 l6);
-        exchange!(l0 l4, l1 l5, l2 l6, l3 l7, l2 l4, l3 l5, l1 l2, l3 l4, l5 l6);
-        [l0, l1, l2, l3, l4, l5, l6, l7]
-    }
-}
-
-impl Occupancy<f32> for SdLayers<'_> {
-    #[inline]
-    fn bits(&mut self, params: &VbaoParams, delta: Vec3, px: &PixelSetup, side: f32) -> u32 {
+    fn bits(&mut self, params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>, side: f32) -> L::Index {
+        let none = L::index_splat(0);
         let gate = params.gate_radius;
-        if gate > 0.0 && delta.dot(delta) > gate * gate {
-            return 0;
+        let len_sq = delta.dot(delta);
+        let beyond = if gate > 0.0 { len_sq.gt(L::splat(gate * gate)) } else { L::mask_splat(false) };
+        if !L::any(L::not(beyond)) {
+            return none;
         }
+        let t = params.thickness;
         // `vbao`'s slab behind Q unless the map says Q's solid reaches farther; one own slice
-        // and one code path for every sample (no second copy of `vbao`'s bits to branch to).
-        let mut back = delta - px.v * params.thickness;
-        let mut hidden = 0;
-        let own = own_slice::<f32>(delta, px.v, px.n);
+        // and one code path for every sample.
+        let mut back = delta - px.v * L::splat(t);
+        let mut hidden = none;
+        let own = own_slice::<L>(delta, px.v, px.n);
         let rule = params.sector_rule;
-        if flagged(params, delta, px) {
+        let flag = flagged::<L>(params, delta, px);
+        if L::any(flag) {
             let sd = self.sd;
             let view = &sd.vao.view;
             let q = px.pos + delta;
-            let texel = sd_pixel(uv_of(sd, q), sd);
-            let uv = texel_ray_uv(texel, sd);
+            let (x, y) = sd_texel::<L>(view.view_to_uv_lanes::<L>(L::V3::new(q.x(), q.y(), -q.z())), sd);
+            let uv = texel_ray_uv_lanes::<L>(x, y, sd);
             // The texel's ray must enter Q's own surface (within T of Q's depth): at ¼
             // resolution and jittered it may pass beside a thin object and describe what lies
             // behind another. Then the layers behind Q, in depth order.
-            // SAFETY: `texel_of_uv` clamps into the target, whose MIP 0 leads the chain.
-            let entered = unsafe { read(self.mips, view.index(view.texel_of_uv(uv))) };
-            let same_surface = (entered - q.z).abs() <= params.thickness;
-            let after = if same_surface { q.z * (1.0 + SAME_SURFACE) } else { f32::MAX };
-            let layers = self.layers_behind(texel, after);
-            let first = layers[0];
+            let entered = L::gather_index(self.mips, view.index_lanes::<L>(view.texel_of_uv_lanes::<L>(uv)));
+            let same_surface = L::and(flag, (entered - q.z()).abs().le(L::splat(t)));
+            let after = L::select(same_surface, q.z() * (1.0 + SAME_SURFACE), L::splat(f32::MAX));
+            let n = sd.sd_layers;
+            let base = (y * L::index_splat(sd.sd_size().x) + x) * L::index_splat(n);
+            let layers = layers_behind::<L>(self.map, view, base, n, after);
             // Q's own solid reaches its first exit, but never less far than T: T also stands
             // for the occluders the sparse samples miss (thinner measured backs raised the
             // error on Sponza and the kitchen, spec vbao §8.3).
-            if first < view.far && first > q.z + params.thickness {
-                back = view_pos(view, uv, first) - px.pos;
-            }
-            // Hidden solids: (entry, exit) pairs of the following layers, an entry without
-            // its exit as thick as T (written out, as the sort).
-            hidden = hidden_bits(params, px, &own, uv, side, layers[1], layers[2])
-                | hidden_bits(params, px, &own, uv, side, layers[3], layers[4])
-                | hidden_bits(params, px, &own, uv, side, layers[5], layers[6])
-                | hidden_bits(params, px, &own, uv, side, layers[7], view.far);
+            let far = L::splat(view.far);
+            let deeper = L::and(layers[0].lt(far), layers[0].gt(q.z() + t));
+            back = select_v3::<L>(deeper, view_pos::<L>(view, uv, layers[0]) - px.pos, back);
+            // Hidden solids: (entry, exit) pairs of the following layers, an entry without its
+            // exit as thick as T (written out, as the sort).
+            hidden = hidden_bits::<L>(params, px, &own, uv, side, layers[1], layers[2])
+                | hidden_bits::<L>(params, px, &own, uv, side, layers[3], layers[4])
+                | hidden_bits::<L>(params, px, &own, uv, side, layers[5], layers[6])
+                | hidden_bits::<L>(params, px, &own, uv, side, layers[7], far);
         }
-        interval_bits(&own, delta, back, px.v, side, rule) | hidden
+        let bits = interval_bits(&own, delta, back, px.v, side, rule) | hidden;
+        L::index_select(beyond, none, bits)
     }
 }
 
 /// The bits of a hidden solid (spec vbao §8.2) entered at view depth `entry` and left at `exit`
 /// along the SD texel's ray through `uv` (no entry: the far plane; no exit: T deep), measured in
-/// the flagged sample's own slice `own`, if its entry is inside the gate.
+/// the flagged sample's own slice `own`, where its entry is inside the gate; per lane.
 #[inline]
-fn hidden_bits(
+fn hidden_bits<L: Lanes>(
     params: &VbaoParams,
-    px: &PixelSetup,
-    own: &OwnSlice<f32>,
-    uv: Vec2,
+    px: &PixelSetup<L>,
+    own: &OwnSlice<L>,
+    uv: L::V2,
     side: f32,
-    entry: f32,
-    exit: f32,
-) -> u32 {
+    entry: L,
+    exit: L,
+) -> L::Index {
     let view = &params.gtao.view;
-    if entry >= view.far {
-        return 0;
-    }
-    let front = view_pos(view, uv, entry) - px.pos;
-    let back = if exit < view.far { view_pos(view, uv, exit) - px.pos } else { front - px.v * params.thickness };
+    let far = L::splat(view.far);
+    let front = view_pos::<L>(view, uv, entry) - px.pos;
     let gate = params.gate_radius;
-    if gate > 0.0 && front.dot(front) > gate * gate {
-        return 0;
+    let inside = if gate > 0.0 { front.dot(front).le(L::splat(gate * gate)) } else { L::mask_splat(true) };
+    let counted = L::and(entry.lt(far), inside);
+    if !L::any(counted) {
+        return L::index_splat(0);
     }
-    interval_bits(own, front, back, px.v, side, params.sector_rule)
+    let back =
+        select_v3::<L>(exit.lt(far), view_pos::<L>(view, uv, exit) - px.pos, front - px.v * L::splat(params.thickness));
+    let bits = interval_bits(own, front, back, px.v, side, params.sector_rule);
+    L::index_select(counted, bits, L::index_splat(0))
 }
 
 /// Phase 2 for one pixel (spec vbao §8.2): `vbao`'s pixel with [`SdLayers`] as the samples'
@@ -315,7 +358,7 @@ pub fn vbao_sd_request(
     if p.x >= size.x || p.y >= size.y {
         return;
     }
-    request_pixel(params, &frame[0].params, mips, normals, p, &mut ray_min, &mut ray_max);
+    request_pixel::<f32, _, _>(params, &frame[0].params, mips, normals, p, &mut ray_min, &mut ray_max);
 }
 
 /// Phase 2 (spec vbao §8.2), one invocation per pixel of the full target: `vbao_main` with the
