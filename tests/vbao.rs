@@ -1,7 +1,7 @@
 //! Visibility-bitmask AO (spec vbao): the sector bits, the closed forms of vbao §6 (plane, corner),
 //! the thin occluder VBAO exists for, the T → ∞ equivalence with XeGTAO, and CPU ≡ Vulkan; and
-//! `vbao-sd` (spec vbao §8): `vbao` without layers, the closed forms with and without them, the
-//! thin pole.
+//! `vbao-sd` (spec vbao §8): `vbao` without layers, the closed forms with and without them, one
+//! flagged sample against hand-placed layers.
 
 mod common;
 

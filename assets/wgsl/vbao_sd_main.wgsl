@@ -141,7 +141,7 @@ fn function_() {
     var phi_336_: type_26;
     var phi_343_: u32;
     var phi_350_: u32;
-    var phi_7716_: bool;
+    var phi_7728_: bool;
     var phi_1008_: u32;
     var phi_1011_: f32;
     var phi_1013_: f32;
@@ -153,126 +153,126 @@ fn function_() {
     var phi_1691_: bool;
     var phi_1853_: vec2<f32>;
     var phi_1854_: vec2<f32>;
-    var phi_2292_: f32;
-    var phi_2293_: f32;
-    var phi_2294_: f32;
-    var phi_2295_: f32;
-    var phi_2637_: bool;
-    var phi_2864_: f32;
-    var phi_2914_: u32;
-    var phi_2917_: u32;
-    var phi_2918_: u32;
-    var phi_2919_: bool;
-    var phi_2932_: u32;
-    var phi_2963_: bool;
-    var phi_3190_: f32;
-    var phi_3240_: u32;
-    var phi_3243_: u32;
-    var phi_3244_: u32;
-    var phi_3245_: bool;
-    var phi_3258_: u32;
-    var phi_3290_: bool;
-    var phi_3517_: f32;
-    var phi_3567_: u32;
-    var phi_3570_: u32;
-    var phi_3571_: u32;
-    var phi_3572_: bool;
-    var phi_3585_: u32;
-    var phi_3617_: bool;
-    var phi_3844_: f32;
-    var phi_3894_: u32;
-    var phi_3897_: u32;
-    var phi_3898_: u32;
-    var phi_3899_: bool;
-    var phi_3912_: u32;
-    var phi_3914_: u32;
-    var phi_3915_: vec3<f32>;
-    var phi_4102_: f32;
-    var phi_4152_: u32;
-    var phi_4155_: u32;
-    var phi_4156_: u32;
-    var phi_4157_: bool;
-    var phi_4171_: u32;
-    var phi_4191_: bool;
-    var phi_4344_: bool;
-    var phi_4506_: vec2<f32>;
-    var phi_4507_: vec2<f32>;
-    var phi_4945_: f32;
-    var phi_4946_: f32;
-    var phi_4947_: f32;
-    var phi_4948_: f32;
-    var phi_5290_: bool;
-    var phi_5517_: f32;
-    var phi_5567_: u32;
-    var phi_5570_: u32;
-    var phi_5571_: u32;
-    var phi_5572_: bool;
-    var phi_5585_: u32;
-    var phi_5616_: bool;
-    var phi_5843_: f32;
-    var phi_5893_: u32;
-    var phi_5896_: u32;
-    var phi_5897_: u32;
-    var phi_5898_: bool;
-    var phi_5911_: u32;
-    var phi_5943_: bool;
-    var phi_6170_: f32;
-    var phi_6220_: u32;
-    var phi_6223_: u32;
-    var phi_6224_: u32;
-    var phi_6225_: bool;
-    var phi_6238_: u32;
-    var phi_6270_: bool;
-    var phi_6497_: f32;
-    var phi_6547_: u32;
-    var phi_6550_: u32;
-    var phi_6551_: u32;
-    var phi_6552_: bool;
-    var phi_6565_: u32;
-    var phi_6567_: u32;
-    var phi_6568_: vec3<f32>;
-    var phi_6755_: f32;
-    var phi_6805_: u32;
-    var phi_6808_: u32;
-    var phi_6809_: u32;
-    var phi_6810_: bool;
-    var phi_6824_: u32;
+    var phi_2297_: f32;
+    var phi_2298_: f32;
+    var phi_2299_: f32;
+    var phi_2300_: f32;
+    var phi_2642_: bool;
+    var phi_2869_: f32;
+    var phi_2919_: u32;
+    var phi_2922_: u32;
+    var phi_2923_: u32;
+    var phi_2924_: bool;
+    var phi_2937_: u32;
+    var phi_2968_: bool;
+    var phi_3195_: f32;
+    var phi_3245_: u32;
+    var phi_3248_: u32;
+    var phi_3249_: u32;
+    var phi_3250_: bool;
+    var phi_3263_: u32;
+    var phi_3295_: bool;
+    var phi_3522_: f32;
+    var phi_3572_: u32;
+    var phi_3575_: u32;
+    var phi_3576_: u32;
+    var phi_3577_: bool;
+    var phi_3590_: u32;
+    var phi_3622_: bool;
+    var phi_3849_: f32;
+    var phi_3899_: u32;
+    var phi_3902_: u32;
+    var phi_3903_: u32;
+    var phi_3904_: bool;
+    var phi_3917_: u32;
+    var phi_3919_: u32;
+    var phi_3920_: vec3<f32>;
+    var phi_4107_: f32;
+    var phi_4157_: u32;
+    var phi_4160_: u32;
+    var phi_4161_: u32;
+    var phi_4162_: bool;
+    var phi_4176_: u32;
+    var phi_4196_: bool;
+    var phi_4349_: bool;
+    var phi_4511_: vec2<f32>;
+    var phi_4512_: vec2<f32>;
+    var phi_4955_: f32;
+    var phi_4956_: f32;
+    var phi_4957_: f32;
+    var phi_4958_: f32;
+    var phi_5300_: bool;
+    var phi_5527_: f32;
+    var phi_5577_: u32;
+    var phi_5580_: u32;
+    var phi_5581_: u32;
+    var phi_5582_: bool;
+    var phi_5595_: u32;
+    var phi_5626_: bool;
+    var phi_5853_: f32;
+    var phi_5903_: u32;
+    var phi_5906_: u32;
+    var phi_5907_: u32;
+    var phi_5908_: bool;
+    var phi_5921_: u32;
+    var phi_5953_: bool;
+    var phi_6180_: f32;
+    var phi_6230_: u32;
+    var phi_6233_: u32;
+    var phi_6234_: u32;
+    var phi_6235_: bool;
+    var phi_6248_: u32;
+    var phi_6280_: bool;
+    var phi_6507_: f32;
+    var phi_6557_: u32;
+    var phi_6560_: u32;
+    var phi_6561_: u32;
+    var phi_6562_: bool;
+    var phi_6575_: u32;
+    var phi_6577_: u32;
+    var phi_6578_: vec3<f32>;
+    var phi_6765_: f32;
+    var phi_6815_: u32;
+    var phi_6818_: u32;
+    var phi_6819_: u32;
+    var phi_6820_: bool;
+    var phi_6834_: u32;
     var phi_1200_: u32;
     var phi_1203_: u32;
-    var phi_7179_: bool;
+    var phi_7189_: bool;
     var local_9: u32;
-    var phi_6905_: u32;
-    var phi_6908_: f32;
+    var phi_6915_: u32;
+    var phi_6918_: f32;
     var local_10: u32;
-    var phi_6906_: u32;
-    var phi_6909_: f32;
-    var phi_7800_: bool;
+    var phi_6916_: u32;
+    var phi_6919_: f32;
+    var phi_7812_: bool;
     var local_11: f32;
-    var phi_7811_: bool;
-    var phi_6958_: f32;
-    var phi_6959_: f32;
-    var phi_6853_: u32;
-    var phi_6856_: f32;
-    var phi_6858_: f32;
+    var phi_7823_: bool;
+    var phi_6968_: f32;
+    var phi_6969_: f32;
+    var phi_6863_: u32;
+    var phi_6866_: f32;
+    var phi_6868_: f32;
     var local_12: u32;
-    var phi_6854_: u32;
-    var phi_6857_: f32;
-    var phi_6859_: f32;
+    var phi_6864_: u32;
+    var phi_6867_: f32;
+    var phi_6869_: f32;
     var local_13: f32;
-    var phi_7805_: bool;
-    var phi_6960_: f32;
-    var phi_6961_: f32;
-    var phi_7804_: bool;
+    var phi_7817_: bool;
+    var phi_6970_: f32;
+    var phi_6971_: f32;
+    var phi_7816_: bool;
     var phi_1009_: u32;
     var phi_1012_: f32;
     var phi_1014_: f32;
-    var phi_7803_: bool;
+    var phi_7815_: bool;
     var local_14: f32;
     var local_15: f32;
     var local_16: f32;
-    var phi_6969_: f32;
-    var phi_6981_: f32;
-    var phi_6982_: f32;
+    var phi_6979_: f32;
+    var phi_6991_: f32;
+    var phi_6992_: f32;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -453,12 +453,12 @@ fn function_() {
                     let _e679 = select(false, (_e270 < _e225.member.member_3), (_e270 > 0f));
                     if _e679 {
                         let _e682 = select(1u, _e225.member_8, (1u < _e225.member_8));
-                        phi_7716_ = false;
+                        phi_7728_ = false;
                         phi_1008_ = 0u;
                         phi_1011_ = 0f;
                         phi_1013_ = 0f;
                         loop {
-                            let _e684 = phi_7716_;
+                            let _e684 = phi_7728_;
                             let _e686 = phi_1008_;
                             let _e688 = phi_1011_;
                             let _e690 = phi_1013_;
@@ -632,14 +632,14 @@ fn function_() {
                                                     let _e1165 = (_e1152 < 16u);
                                                     if _e1165 {
                                                     } else {
-                                                        phi_7179_ = true;
+                                                        phi_7189_ = true;
                                                         break;
                                                     }
                                                     let _e1168 = local_5[_e1152][0u];
                                                     local_6 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
                                                     if _e1165 {
                                                     } else {
-                                                        phi_7179_ = true;
+                                                        phi_7189_ = true;
                                                         break;
                                                     }
                                                     let _e1171 = local_6[_e1152][1u];
@@ -650,14 +650,14 @@ fn function_() {
                                                         let _e1155 = (_e1152 < 16u);
                                                         if _e1155 {
                                                         } else {
-                                                            phi_7179_ = true;
+                                                            phi_7189_ = true;
                                                             break;
                                                         }
                                                         let _e1158 = local_7[_e1152][0u];
                                                         local_8 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
                                                         if _e1155 {
                                                         } else {
-                                                            phi_7179_ = true;
+                                                            phi_7189_ = true;
                                                             break;
                                                         }
                                                         let _e1161 = local_8[_e1152][1u];
@@ -669,1184 +669,1184 @@ fn function_() {
                                                     phi_1854_ = _e1164;
                                                 }
                                                 let _e1174 = phi_1854_;
-                                                let _e1182 = (((f32(bitcast<i32>(_e1127)) - _e1110) + _e1174.x) * (1f / _e1106));
-                                                let _e1188 = (((f32(bitcast<i32>(_e1141)) - _e1110) + _e1174.y) * (1f / _e1107));
-                                                let _e1193 = frame.member[0u].member_1.member.member.member[0u];
-                                                let _e1198 = select(select(u32(_e1193), 0u, (_e1193 < 0f)), 4294967295u, (_e1193 > 4294967000f));
-                                                let _e1203 = frame.member[0u].member_1.member.member.member[1u];
-                                                let _e1213 = (select(0f, select(1f, _e1182, (_e1182 < 1f)), (_e1182 > 0f)) * _e1193);
-                                                let _e1216 = f32(bitcast<i32>((_e1198 - 1u)));
-                                                let _e1229 = (select(0f, select(1f, _e1188, (_e1188 < 1f)), (_e1188 > 0f)) * _e1203);
-                                                let _e1232 = f32(bitcast<i32>((select(select(u32(_e1203), 0u, (_e1203 < 0f)), 4294967295u, (_e1203 > 4294967000f)) - 1u)));
-                                                let _e1244 = mips.member[(((bitcast<u32>((floor(select(0f, select(_e1232, _e1229, (_e1229 < _e1232)), (_e1229 > 0f))) + 8388608f)) - 1258291200u) * _e1198) + (bitcast<u32>((floor(select(0f, select(_e1216, _e1213, (_e1213 < _e1216)), (_e1213 > 0f))) + 8388608f)) - 1258291200u))];
-                                                let _e1250 = select(0x1.fffffep+127f, (_e923 * 1.001f), select(false, (abs((_e1244 - _e923)) <= _e238), _e1082));
-                                                let _e1252 = frame.member[0u].member_1.member_6;
-                                                let _e1255 = (((_e1141 * _e1112) + _e1127) * _e1252);
-                                                let _e1257 = sd_map.member[_e1255];
-                                                let _e1261 = frame.member[0u].member_1.member.member.member_3;
-                                                let _e1265 = frame.member[0u].member_1.member.member.member_2;
-                                                let _e1266 = (_e1261 - _e1265);
-                                                let _e1268 = ((_e1257 * _e1266) + _e1265);
-                                                let _e1274 = select(_e1261, _e1268, select(false, select(false, (_e1268 > _e1250), (_e1257 < 1f)), (0u < _e1252)));
-                                                let _e1275 = (_e1252 - 1u);
-                                                let _e1280 = sd_map.member[(_e1255 + select(1u, _e1275, (_e1275 < 1u)))];
-                                                let _e1282 = ((_e1280 * _e1266) + _e1265);
-                                                let _e1288 = select(_e1261, _e1282, select(false, select(false, (_e1282 > _e1250), (_e1280 < 1f)), (1u < _e1252)));
-                                                let _e1293 = sd_map.member[(_e1255 + select(2u, _e1275, (_e1275 < 2u)))];
-                                                let _e1295 = ((_e1293 * _e1266) + _e1265);
-                                                let _e1301 = select(_e1261, _e1295, select(false, select(false, (_e1295 > _e1250), (_e1293 < 1f)), (2u < _e1252)));
-                                                let _e1306 = sd_map.member[(_e1255 + select(3u, _e1275, (_e1275 < 3u)))];
-                                                let _e1308 = ((_e1306 * _e1266) + _e1265);
-                                                let _e1314 = select(_e1261, _e1308, select(false, select(false, (_e1308 > _e1250), (_e1306 < 1f)), (3u < _e1252)));
-                                                if (_e1252 > 4u) {
-                                                    let _e1320 = sd_map.member[(_e1255 + select(4u, _e1275, (_e1275 < 4u)))];
-                                                    let _e1322 = ((_e1320 * _e1266) + _e1265);
-                                                    let _e1333 = sd_map.member[(_e1255 + select(5u, _e1275, (_e1275 < 5u)))];
-                                                    let _e1335 = ((_e1333 * _e1266) + _e1265);
-                                                    let _e1346 = sd_map.member[(_e1255 + select(6u, _e1275, (_e1275 < 6u)))];
-                                                    let _e1348 = ((_e1346 * _e1266) + _e1265);
-                                                    let _e1359 = sd_map.member[(_e1255 + select(7u, _e1275, (_e1275 < 7u)))];
-                                                    let _e1361 = ((_e1359 * _e1266) + _e1265);
-                                                    phi_2292_ = select(_e1261, _e1348, select(false, select(false, (_e1348 > _e1250), (_e1346 < 1f)), (6u < _e1252)));
-                                                    phi_2293_ = select(_e1261, _e1335, select(false, select(false, (_e1335 > _e1250), (_e1333 < 1f)), (5u < _e1252)));
-                                                    phi_2294_ = select(_e1261, _e1322, select(false, select(false, (_e1322 > _e1250), (_e1320 < 1f)), (4u < _e1252)));
-                                                    phi_2295_ = select(_e1261, _e1361, select(false, select(false, (_e1361 > _e1250), (_e1359 < 1f)), (7u < _e1252)));
+                                                let _e1181 = (((f32(bitcast<i32>(_e1127)) - _e1110) + _e1174.x) / _e1106);
+                                                let _e1186 = (((f32(bitcast<i32>(_e1141)) - _e1110) + _e1174.y) / _e1107);
+                                                let _e1191 = frame.member[0u].member_1.member.member.member[0u];
+                                                let _e1196 = select(select(u32(_e1191), 0u, (_e1191 < 0f)), 4294967295u, (_e1191 > 4294967000f));
+                                                let _e1201 = frame.member[0u].member_1.member.member.member[1u];
+                                                let _e1211 = (select(0f, select(1f, _e1181, (_e1181 < 1f)), (_e1181 > 0f)) * _e1191);
+                                                let _e1214 = f32(bitcast<i32>((_e1196 - 1u)));
+                                                let _e1227 = (select(0f, select(1f, _e1186, (_e1186 < 1f)), (_e1186 > 0f)) * _e1201);
+                                                let _e1230 = f32(bitcast<i32>((select(select(u32(_e1201), 0u, (_e1201 < 0f)), 4294967295u, (_e1201 > 4294967000f)) - 1u)));
+                                                let _e1242 = mips.member[(((bitcast<u32>((floor(select(0f, select(_e1230, _e1227, (_e1227 < _e1230)), (_e1227 > 0f))) + 8388608f)) - 1258291200u) * _e1196) + (bitcast<u32>((floor(select(0f, select(_e1214, _e1211, (_e1211 < _e1214)), (_e1211 > 0f))) + 8388608f)) - 1258291200u))];
+                                                let _e1252 = select(0x1.fffffep+127f, (select(_e1242, _e923, ((_e923 > _e1242) || (_e1242 != _e1242))) * 1.001f), select(false, (abs((_e1242 - _e923)) <= _e238), _e1082));
+                                                let _e1254 = frame.member[0u].member_1.member_6;
+                                                let _e1257 = (((_e1141 * _e1112) + _e1127) * _e1254);
+                                                let _e1259 = sd_map.member[_e1257];
+                                                let _e1263 = frame.member[0u].member_1.member.member.member_3;
+                                                let _e1267 = frame.member[0u].member_1.member.member.member_2;
+                                                let _e1268 = (_e1263 - _e1267);
+                                                let _e1270 = ((_e1259 * _e1268) + _e1267);
+                                                let _e1276 = select(_e1263, _e1270, select(false, select(false, (_e1270 > _e1252), (_e1259 < 1f)), (0u < _e1254)));
+                                                let _e1277 = (_e1254 - 1u);
+                                                let _e1282 = sd_map.member[(_e1257 + select(1u, _e1277, (_e1277 < 1u)))];
+                                                let _e1284 = ((_e1282 * _e1268) + _e1267);
+                                                let _e1290 = select(_e1263, _e1284, select(false, select(false, (_e1284 > _e1252), (_e1282 < 1f)), (1u < _e1254)));
+                                                let _e1295 = sd_map.member[(_e1257 + select(2u, _e1277, (_e1277 < 2u)))];
+                                                let _e1297 = ((_e1295 * _e1268) + _e1267);
+                                                let _e1303 = select(_e1263, _e1297, select(false, select(false, (_e1297 > _e1252), (_e1295 < 1f)), (2u < _e1254)));
+                                                let _e1308 = sd_map.member[(_e1257 + select(3u, _e1277, (_e1277 < 3u)))];
+                                                let _e1310 = ((_e1308 * _e1268) + _e1267);
+                                                let _e1316 = select(_e1263, _e1310, select(false, select(false, (_e1310 > _e1252), (_e1308 < 1f)), (3u < _e1254)));
+                                                if (_e1254 > 4u) {
+                                                    let _e1322 = sd_map.member[(_e1257 + select(4u, _e1277, (_e1277 < 4u)))];
+                                                    let _e1324 = ((_e1322 * _e1268) + _e1267);
+                                                    let _e1335 = sd_map.member[(_e1257 + select(5u, _e1277, (_e1277 < 5u)))];
+                                                    let _e1337 = ((_e1335 * _e1268) + _e1267);
+                                                    let _e1348 = sd_map.member[(_e1257 + select(6u, _e1277, (_e1277 < 6u)))];
+                                                    let _e1350 = ((_e1348 * _e1268) + _e1267);
+                                                    let _e1361 = sd_map.member[(_e1257 + select(7u, _e1277, (_e1277 < 7u)))];
+                                                    let _e1363 = ((_e1361 * _e1268) + _e1267);
+                                                    phi_2297_ = select(_e1263, _e1350, select(false, select(false, (_e1350 > _e1252), (_e1348 < 1f)), (6u < _e1254)));
+                                                    phi_2298_ = select(_e1263, _e1337, select(false, select(false, (_e1337 > _e1252), (_e1335 < 1f)), (5u < _e1254)));
+                                                    phi_2299_ = select(_e1263, _e1324, select(false, select(false, (_e1324 > _e1252), (_e1322 < 1f)), (4u < _e1254)));
+                                                    phi_2300_ = select(_e1263, _e1363, select(false, select(false, (_e1363 > _e1252), (_e1361 < 1f)), (7u < _e1254)));
                                                 } else {
-                                                    phi_2292_ = _e1261;
-                                                    phi_2293_ = _e1261;
-                                                    phi_2294_ = _e1261;
-                                                    phi_2295_ = _e1261;
+                                                    phi_2297_ = _e1263;
+                                                    phi_2298_ = _e1263;
+                                                    phi_2299_ = _e1263;
+                                                    phi_2300_ = _e1263;
                                                 }
-                                                let _e1369 = phi_2292_;
-                                                let _e1371 = phi_2293_;
-                                                let _e1373 = phi_2294_;
-                                                let _e1375 = phi_2295_;
-                                                let _e1377 = (_e1288 != _e1288);
-                                                let _e1379 = select(_e1288, _e1274, ((_e1274 < _e1288) || _e1377));
-                                                let _e1382 = select(_e1288, _e1274, ((_e1274 > _e1288) || _e1377));
-                                                let _e1384 = (_e1314 != _e1314);
-                                                let _e1386 = select(_e1314, _e1301, ((_e1301 < _e1314) || _e1384));
-                                                let _e1389 = select(_e1314, _e1301, ((_e1301 > _e1314) || _e1384));
-                                                let _e1391 = (_e1371 != _e1371);
-                                                let _e1393 = select(_e1371, _e1373, ((_e1373 < _e1371) || _e1391));
-                                                let _e1396 = select(_e1371, _e1373, ((_e1373 > _e1371) || _e1391));
-                                                let _e1398 = (_e1375 != _e1375);
-                                                let _e1400 = select(_e1375, _e1369, ((_e1369 < _e1375) || _e1398));
-                                                let _e1403 = select(_e1375, _e1369, ((_e1369 > _e1375) || _e1398));
-                                                let _e1405 = (_e1386 != _e1386);
-                                                let _e1407 = select(_e1386, _e1379, ((_e1379 < _e1386) || _e1405));
-                                                let _e1410 = select(_e1386, _e1379, ((_e1379 > _e1386) || _e1405));
-                                                let _e1412 = (_e1389 != _e1389);
-                                                let _e1414 = select(_e1389, _e1382, ((_e1382 < _e1389) || _e1412));
-                                                let _e1417 = select(_e1389, _e1382, ((_e1382 > _e1389) || _e1412));
-                                                let _e1419 = (_e1400 != _e1400);
-                                                let _e1421 = select(_e1400, _e1393, ((_e1393 < _e1400) || _e1419));
-                                                let _e1424 = select(_e1400, _e1393, ((_e1393 > _e1400) || _e1419));
-                                                let _e1426 = (_e1403 != _e1403);
-                                                let _e1428 = select(_e1403, _e1396, ((_e1396 < _e1403) || _e1426));
-                                                let _e1431 = select(_e1403, _e1396, ((_e1396 > _e1403) || _e1426));
-                                                let _e1433 = (_e1410 != _e1410);
-                                                let _e1435 = select(_e1410, _e1414, ((_e1414 < _e1410) || _e1433));
-                                                let _e1438 = select(_e1410, _e1414, ((_e1414 > _e1410) || _e1433));
-                                                let _e1440 = (_e1424 != _e1424);
-                                                let _e1442 = select(_e1424, _e1428, ((_e1428 < _e1424) || _e1440));
-                                                let _e1445 = select(_e1424, _e1428, ((_e1428 > _e1424) || _e1440));
-                                                let _e1447 = (_e1421 != _e1421);
-                                                let _e1449 = select(_e1421, _e1407, ((_e1407 < _e1421) || _e1447));
-                                                let _e1452 = select(_e1421, _e1407, ((_e1407 > _e1421) || _e1447));
-                                                let _e1454 = (_e1442 != _e1442);
-                                                let _e1456 = select(_e1442, _e1435, ((_e1435 < _e1442) || _e1454));
-                                                let _e1459 = select(_e1442, _e1435, ((_e1435 > _e1442) || _e1454));
-                                                let _e1461 = (_e1445 != _e1445);
-                                                let _e1463 = select(_e1445, _e1438, ((_e1438 < _e1445) || _e1461));
-                                                let _e1466 = select(_e1445, _e1438, ((_e1438 > _e1445) || _e1461));
-                                                let _e1468 = (_e1431 != _e1431);
-                                                let _e1470 = select(_e1431, _e1417, ((_e1417 < _e1431) || _e1468));
-                                                let _e1473 = select(_e1431, _e1417, ((_e1417 > _e1431) || _e1468));
-                                                let _e1475 = (_e1452 != _e1452);
-                                                let _e1477 = select(_e1452, _e1463, ((_e1463 < _e1452) || _e1475));
-                                                let _e1480 = select(_e1452, _e1463, ((_e1463 > _e1452) || _e1475));
-                                                let _e1482 = (_e1459 != _e1459);
-                                                let _e1484 = select(_e1459, _e1470, ((_e1470 < _e1459) || _e1482));
-                                                let _e1487 = select(_e1459, _e1470, ((_e1470 > _e1459) || _e1482));
-                                                let _e1489 = (_e1477 != _e1477);
-                                                let _e1491 = select(_e1477, _e1456, ((_e1456 < _e1477) || _e1489));
-                                                let _e1494 = select(_e1477, _e1456, ((_e1456 > _e1477) || _e1489));
-                                                let _e1496 = (_e1480 != _e1480);
-                                                let _e1498 = select(_e1480, _e1484, ((_e1484 < _e1480) || _e1496));
-                                                let _e1501 = select(_e1480, _e1484, ((_e1484 > _e1480) || _e1496));
-                                                let _e1503 = (_e1466 != _e1466);
-                                                let _e1505 = select(_e1466, _e1487, ((_e1487 < _e1466) || _e1503));
-                                                let _e1508 = select(_e1466, _e1487, ((_e1487 > _e1466) || _e1503));
-                                                let _e1512 = select(false, (_e1449 > (_e923 + _e238)), (_e1449 < _e1261));
-                                                let _e1514 = ((_e1182 * 2f) - 1f);
-                                                let _e1518 = ((_e1188 * -2f) + 1f);
-                                                let _e1528 = (_e1514 * _e225.member.member_1.x);
-                                                let _e1530 = (_e1518 * _e225.member.member_1.y);
-                                                let _e1532 = ((_e1528 * _e1491) - _e466);
-                                                let _e1533 = ((_e1530 * _e1491) - _e473);
-                                                let _e1534 = (_e1491 - _e459);
+                                                let _e1371 = phi_2297_;
+                                                let _e1373 = phi_2298_;
+                                                let _e1375 = phi_2299_;
+                                                let _e1377 = phi_2300_;
+                                                let _e1379 = (_e1290 != _e1290);
+                                                let _e1381 = select(_e1290, _e1276, ((_e1276 < _e1290) || _e1379));
+                                                let _e1384 = select(_e1290, _e1276, ((_e1276 > _e1290) || _e1379));
+                                                let _e1386 = (_e1316 != _e1316);
+                                                let _e1388 = select(_e1316, _e1303, ((_e1303 < _e1316) || _e1386));
+                                                let _e1391 = select(_e1316, _e1303, ((_e1303 > _e1316) || _e1386));
+                                                let _e1393 = (_e1373 != _e1373);
+                                                let _e1395 = select(_e1373, _e1375, ((_e1375 < _e1373) || _e1393));
+                                                let _e1398 = select(_e1373, _e1375, ((_e1375 > _e1373) || _e1393));
+                                                let _e1400 = (_e1377 != _e1377);
+                                                let _e1402 = select(_e1377, _e1371, ((_e1371 < _e1377) || _e1400));
+                                                let _e1405 = select(_e1377, _e1371, ((_e1371 > _e1377) || _e1400));
+                                                let _e1407 = (_e1388 != _e1388);
+                                                let _e1409 = select(_e1388, _e1381, ((_e1381 < _e1388) || _e1407));
+                                                let _e1412 = select(_e1388, _e1381, ((_e1381 > _e1388) || _e1407));
+                                                let _e1414 = (_e1391 != _e1391);
+                                                let _e1416 = select(_e1391, _e1384, ((_e1384 < _e1391) || _e1414));
+                                                let _e1419 = select(_e1391, _e1384, ((_e1384 > _e1391) || _e1414));
+                                                let _e1421 = (_e1402 != _e1402);
+                                                let _e1423 = select(_e1402, _e1395, ((_e1395 < _e1402) || _e1421));
+                                                let _e1426 = select(_e1402, _e1395, ((_e1395 > _e1402) || _e1421));
+                                                let _e1428 = (_e1405 != _e1405);
+                                                let _e1430 = select(_e1405, _e1398, ((_e1398 < _e1405) || _e1428));
+                                                let _e1433 = select(_e1405, _e1398, ((_e1398 > _e1405) || _e1428));
+                                                let _e1435 = (_e1412 != _e1412);
+                                                let _e1437 = select(_e1412, _e1416, ((_e1416 < _e1412) || _e1435));
+                                                let _e1440 = select(_e1412, _e1416, ((_e1416 > _e1412) || _e1435));
+                                                let _e1442 = (_e1426 != _e1426);
+                                                let _e1444 = select(_e1426, _e1430, ((_e1430 < _e1426) || _e1442));
+                                                let _e1447 = select(_e1426, _e1430, ((_e1430 > _e1426) || _e1442));
+                                                let _e1449 = (_e1423 != _e1423);
+                                                let _e1451 = select(_e1423, _e1409, ((_e1409 < _e1423) || _e1449));
+                                                let _e1454 = select(_e1423, _e1409, ((_e1409 > _e1423) || _e1449));
+                                                let _e1456 = (_e1444 != _e1444);
+                                                let _e1458 = select(_e1444, _e1437, ((_e1437 < _e1444) || _e1456));
+                                                let _e1461 = select(_e1444, _e1437, ((_e1437 > _e1444) || _e1456));
+                                                let _e1463 = (_e1447 != _e1447);
+                                                let _e1465 = select(_e1447, _e1440, ((_e1440 < _e1447) || _e1463));
+                                                let _e1468 = select(_e1447, _e1440, ((_e1440 > _e1447) || _e1463));
+                                                let _e1470 = (_e1433 != _e1433);
+                                                let _e1472 = select(_e1433, _e1419, ((_e1419 < _e1433) || _e1470));
+                                                let _e1475 = select(_e1433, _e1419, ((_e1419 > _e1433) || _e1470));
+                                                let _e1477 = (_e1454 != _e1454);
+                                                let _e1479 = select(_e1454, _e1465, ((_e1465 < _e1454) || _e1477));
+                                                let _e1482 = select(_e1454, _e1465, ((_e1465 > _e1454) || _e1477));
+                                                let _e1484 = (_e1461 != _e1461);
+                                                let _e1486 = select(_e1461, _e1472, ((_e1472 < _e1461) || _e1484));
+                                                let _e1489 = select(_e1461, _e1472, ((_e1472 > _e1461) || _e1484));
+                                                let _e1491 = (_e1479 != _e1479);
+                                                let _e1493 = select(_e1479, _e1458, ((_e1458 < _e1479) || _e1491));
+                                                let _e1496 = select(_e1479, _e1458, ((_e1458 > _e1479) || _e1491));
+                                                let _e1498 = (_e1482 != _e1482);
+                                                let _e1500 = select(_e1482, _e1486, ((_e1486 < _e1482) || _e1498));
+                                                let _e1503 = select(_e1482, _e1486, ((_e1486 > _e1482) || _e1498));
+                                                let _e1505 = (_e1468 != _e1468);
+                                                let _e1507 = select(_e1468, _e1489, ((_e1489 < _e1468) || _e1505));
+                                                let _e1510 = select(_e1468, _e1489, ((_e1489 > _e1468) || _e1505));
+                                                let _e1514 = select(false, (_e1451 > (_e923 + _e238)), (_e1451 < _e1263));
+                                                let _e1516 = ((_e1181 * 2f) - 1f);
+                                                let _e1520 = ((_e1186 * -2f) + 1f);
+                                                let _e1530 = (_e1516 * _e225.member.member_1.x);
+                                                let _e1532 = (_e1520 * _e225.member.member_1.y);
+                                                let _e1534 = ((_e1530 * _e1493) - _e466);
+                                                let _e1535 = ((_e1532 * _e1493) - _e473);
+                                                let _e1536 = (_e1493 - _e459);
                                                 if _e972 {
-                                                    phi_2637_ = ((((_e1532 * _e1532) + (_e1533 * _e1533)) + (_e1534 * _e1534)) <= (_e241 * _e241));
+                                                    phi_2642_ = ((((_e1534 * _e1534) + (_e1535 * _e1535)) + (_e1536 * _e1536)) <= (_e241 * _e241));
                                                 } else {
-                                                    phi_2637_ = true;
+                                                    phi_2642_ = true;
                                                 }
-                                                let _e1543 = phi_2637_;
-                                                let _e1545 = select(false, _e1543, (_e1491 < _e225.member.member_3));
-                                                if _e1545 {
-                                                    let _e1546 = (_e1494 < _e225.member.member_3);
-                                                    let _e1555 = select((_e1532 - _e978), ((_e1528 * _e1494) - _e466), _e1546);
-                                                    let _e1556 = select((_e1533 - _e979), ((_e1530 * _e1494) - _e473), _e1546);
-                                                    let _e1557 = select((_e1534 - _e980), (_e1494 - _e459), _e1546);
-                                                    let _e1569 = ((((_e1532 * _e484) + (_e1533 * _e485)) + (_e1534 * _e486)) * inverseSqrt((((_e1532 * _e1532) + (_e1533 * _e1533)) + (_e1534 * _e1534))));
-                                                    let _e1573 = select(-1f, select(1f, _e1569, (_e1569 < 1f)), (_e1569 > -1f));
-                                                    let _e1574 = abs(_e1573);
-                                                    let _e1584 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1574, 0.00667009f), _e1574, -0.017088126f), _e1574, 0.03089188f), _e1574, -0.050174303f), _e1574, 0.08897899f), _e1574, -0.2145988f), _e1574, 1.5707963f) * sqrt((1f - _e1574)));
-                                                    let _e1591 = ((((select((3.1415927f - _e1584), _e1584, (_e1573 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e1595 = select(0f, select(1f, _e1591, (_e1591 < 1f)), (_e1591 > 0f));
-                                                    let _e1607 = ((((_e1555 * _e484) + (_e1556 * _e485)) + (_e1557 * _e486)) * inverseSqrt((((_e1555 * _e1555) + (_e1556 * _e1556)) + (_e1557 * _e1557))));
-                                                    let _e1611 = select(-1f, select(1f, _e1607, (_e1607 < 1f)), (_e1607 > -1f));
-                                                    let _e1612 = abs(_e1611);
-                                                    let _e1622 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1612, 0.00667009f), _e1612, -0.017088126f), _e1612, 0.03089188f), _e1612, -0.050174303f), _e1612, 0.08897899f), _e1612, -0.2145988f), _e1612, 1.5707963f) * sqrt((1f - _e1612)));
-                                                    let _e1629 = ((((select((3.1415927f - _e1622), _e1622, (_e1611 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e1633 = select(0f, select(1f, _e1629, (_e1629 < 1f)), (_e1629 > 0f));
-                                                    let _e1635 = (_e1633 != _e1633);
-                                                    let _e1637 = select(_e1633, _e1595, ((_e1595 < _e1633) || _e1635));
-                                                    let _e1640 = select(_e1633, _e1595, ((_e1595 > _e1633) || _e1635));
-                                                    let _e1642 = floor((_e1637 * 32f));
+                                                let _e1545 = phi_2642_;
+                                                let _e1547 = select(false, _e1545, (_e1493 < _e225.member.member_3));
+                                                if _e1547 {
+                                                    let _e1548 = (_e1496 < _e225.member.member_3);
+                                                    let _e1557 = select((_e1534 - _e978), ((_e1530 * _e1496) - _e466), _e1548);
+                                                    let _e1558 = select((_e1535 - _e979), ((_e1532 * _e1496) - _e473), _e1548);
+                                                    let _e1559 = select((_e1536 - _e980), (_e1496 - _e459), _e1548);
+                                                    let _e1571 = ((((_e1534 * _e484) + (_e1535 * _e485)) + (_e1536 * _e486)) * inverseSqrt((((_e1534 * _e1534) + (_e1535 * _e1535)) + (_e1536 * _e1536))));
+                                                    let _e1575 = select(-1f, select(1f, _e1571, (_e1571 < 1f)), (_e1571 > -1f));
+                                                    let _e1576 = abs(_e1575);
+                                                    let _e1586 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1576, 0.00667009f), _e1576, -0.017088126f), _e1576, 0.03089188f), _e1576, -0.050174303f), _e1576, 0.08897899f), _e1576, -0.2145988f), _e1576, 1.5707963f) * sqrt((1f - _e1576)));
+                                                    let _e1593 = ((((select((3.1415927f - _e1586), _e1586, (_e1575 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e1597 = select(0f, select(1f, _e1593, (_e1593 < 1f)), (_e1593 > 0f));
+                                                    let _e1609 = ((((_e1557 * _e484) + (_e1558 * _e485)) + (_e1559 * _e486)) * inverseSqrt((((_e1557 * _e1557) + (_e1558 * _e1558)) + (_e1559 * _e1559))));
+                                                    let _e1613 = select(-1f, select(1f, _e1609, (_e1609 < 1f)), (_e1609 > -1f));
+                                                    let _e1614 = abs(_e1613);
+                                                    let _e1624 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1614, 0.00667009f), _e1614, -0.017088126f), _e1614, 0.03089188f), _e1614, -0.050174303f), _e1614, 0.08897899f), _e1614, -0.2145988f), _e1614, 1.5707963f) * sqrt((1f - _e1614)));
+                                                    let _e1631 = ((((select((3.1415927f - _e1624), _e1624, (_e1613 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e1635 = select(0f, select(1f, _e1631, (_e1631 < 1f)), (_e1631 > 0f));
+                                                    let _e1637 = (_e1635 != _e1635);
+                                                    let _e1639 = select(_e1635, _e1597, ((_e1597 < _e1635) || _e1637));
+                                                    let _e1642 = select(_e1635, _e1597, ((_e1597 > _e1635) || _e1637));
+                                                    let _e1644 = floor((_e1639 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e1650 = -(floor((_e1640 * -32f)));
-                                                        let _e1655 = (select(32f, _e1650, ((_e1650 < 32f) || false)) - _e1642);
-                                                        phi_2864_ = select(select(0f, _e1655, ((_e1655 > 0f) || false)), 0f, (_e1640 <= _e1637));
+                                                        let _e1652 = -(floor((_e1642 * -32f)));
+                                                        let _e1657 = (select(32f, _e1652, ((_e1652 < 32f) || false)) - _e1644);
+                                                        phi_2869_ = select(select(0f, _e1657, ((_e1657 > 0f) || false)), 0f, (_e1642 <= _e1639));
                                                     } else {
-                                                        phi_2864_ = -(floor(((_e1640 - _e1637) * -32f)));
+                                                        phi_2869_ = -(floor(((_e1642 - _e1639) * -32f)));
                                                     }
-                                                    let _e1661 = phi_2864_;
-                                                    let _e1669 = (bitcast<u32>((floor(select(0f, select(32f, _e1642, (_e1642 < 32f)), (_e1642 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e1677 = (bitcast<u32>((floor(select(0f, select(32f, _e1661, (_e1661 < 32f)), (_e1661 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e1669 >= 32u) {
-                                                        phi_2918_ = u32();
-                                                        phi_2919_ = true;
+                                                    let _e1663 = phi_2869_;
+                                                    let _e1671 = (bitcast<u32>((floor(select(0f, select(32f, _e1644, (_e1644 < 32f)), (_e1644 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e1679 = (bitcast<u32>((floor(select(0f, select(32f, _e1663, (_e1663 < 32f)), (_e1663 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e1671 >= 32u) {
+                                                        phi_2923_ = u32();
+                                                        phi_2924_ = true;
                                                     } else {
-                                                        let _e1679 = (_e1677 == 0u);
-                                                        if _e1679 {
-                                                            phi_2917_ = u32();
+                                                        let _e1681 = (_e1679 == 0u);
+                                                        if _e1681 {
+                                                            phi_2922_ = u32();
                                                         } else {
-                                                            if (_e1677 >= 32u) {
-                                                                phi_2914_ = 4294967295u;
+                                                            if (_e1679 >= 32u) {
+                                                                phi_2919_ = 4294967295u;
                                                             } else {
-                                                                phi_2914_ = ((1u << bitcast<u32>((_e1677 & 31u))) - 1u);
+                                                                phi_2919_ = ((1u << bitcast<u32>((_e1679 & 31u))) - 1u);
                                                             }
-                                                            let _e1686 = phi_2914_;
-                                                            phi_2917_ = (_e1686 << bitcast<u32>((_e1669 & 31u)));
+                                                            let _e1688 = phi_2919_;
+                                                            phi_2922_ = (_e1688 << bitcast<u32>((_e1671 & 31u)));
                                                         }
-                                                        let _e1691 = phi_2917_;
-                                                        phi_2918_ = _e1691;
-                                                        phi_2919_ = _e1679;
+                                                        let _e1693 = phi_2922_;
+                                                        phi_2923_ = _e1693;
+                                                        phi_2924_ = _e1681;
                                                     }
-                                                    let _e1693 = phi_2918_;
-                                                    let _e1695 = phi_2919_;
-                                                    phi_2932_ = select(0u, select(select(_e1693, 0u, _e1695), 0u, _e1069), _e1545);
+                                                    let _e1695 = phi_2923_;
+                                                    let _e1697 = phi_2924_;
+                                                    phi_2937_ = select(0u, select(select(_e1695, 0u, _e1697), 0u, _e1069), _e1547);
                                                 } else {
-                                                    phi_2932_ = 0u;
+                                                    phi_2937_ = 0u;
                                                 }
-                                                let _e1700 = phi_2932_;
-                                                let _e1703 = ((_e1528 * _e1498) - _e466);
-                                                let _e1704 = ((_e1530 * _e1498) - _e473);
-                                                let _e1705 = (_e1498 - _e459);
+                                                let _e1702 = phi_2937_;
+                                                let _e1705 = ((_e1530 * _e1500) - _e466);
+                                                let _e1706 = ((_e1532 * _e1500) - _e473);
+                                                let _e1707 = (_e1500 - _e459);
                                                 if _e972 {
-                                                    phi_2963_ = ((((_e1703 * _e1703) + (_e1704 * _e1704)) + (_e1705 * _e1705)) <= (_e241 * _e241));
+                                                    phi_2968_ = ((((_e1705 * _e1705) + (_e1706 * _e1706)) + (_e1707 * _e1707)) <= (_e241 * _e241));
                                                 } else {
-                                                    phi_2963_ = true;
+                                                    phi_2968_ = true;
                                                 }
-                                                let _e1714 = phi_2963_;
-                                                let _e1716 = select(false, _e1714, (_e1498 < _e225.member.member_3));
-                                                if _e1716 {
-                                                    let _e1717 = (_e1501 < _e225.member.member_3);
-                                                    let _e1726 = select((_e1703 - _e978), ((_e1528 * _e1501) - _e466), _e1717);
-                                                    let _e1727 = select((_e1704 - _e979), ((_e1530 * _e1501) - _e473), _e1717);
-                                                    let _e1728 = select((_e1705 - _e980), (_e1501 - _e459), _e1717);
-                                                    let _e1740 = ((((_e1703 * _e484) + (_e1704 * _e485)) + (_e1705 * _e486)) * inverseSqrt((((_e1703 * _e1703) + (_e1704 * _e1704)) + (_e1705 * _e1705))));
-                                                    let _e1744 = select(-1f, select(1f, _e1740, (_e1740 < 1f)), (_e1740 > -1f));
-                                                    let _e1745 = abs(_e1744);
-                                                    let _e1755 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1745, 0.00667009f), _e1745, -0.017088126f), _e1745, 0.03089188f), _e1745, -0.050174303f), _e1745, 0.08897899f), _e1745, -0.2145988f), _e1745, 1.5707963f) * sqrt((1f - _e1745)));
-                                                    let _e1762 = ((((select((3.1415927f - _e1755), _e1755, (_e1744 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e1766 = select(0f, select(1f, _e1762, (_e1762 < 1f)), (_e1762 > 0f));
-                                                    let _e1778 = ((((_e1726 * _e484) + (_e1727 * _e485)) + (_e1728 * _e486)) * inverseSqrt((((_e1726 * _e1726) + (_e1727 * _e1727)) + (_e1728 * _e1728))));
-                                                    let _e1782 = select(-1f, select(1f, _e1778, (_e1778 < 1f)), (_e1778 > -1f));
-                                                    let _e1783 = abs(_e1782);
-                                                    let _e1793 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1783, 0.00667009f), _e1783, -0.017088126f), _e1783, 0.03089188f), _e1783, -0.050174303f), _e1783, 0.08897899f), _e1783, -0.2145988f), _e1783, 1.5707963f) * sqrt((1f - _e1783)));
-                                                    let _e1800 = ((((select((3.1415927f - _e1793), _e1793, (_e1782 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e1804 = select(0f, select(1f, _e1800, (_e1800 < 1f)), (_e1800 > 0f));
-                                                    let _e1806 = (_e1804 != _e1804);
-                                                    let _e1808 = select(_e1804, _e1766, ((_e1766 < _e1804) || _e1806));
-                                                    let _e1811 = select(_e1804, _e1766, ((_e1766 > _e1804) || _e1806));
-                                                    let _e1813 = floor((_e1808 * 32f));
+                                                let _e1716 = phi_2968_;
+                                                let _e1718 = select(false, _e1716, (_e1500 < _e225.member.member_3));
+                                                if _e1718 {
+                                                    let _e1719 = (_e1503 < _e225.member.member_3);
+                                                    let _e1728 = select((_e1705 - _e978), ((_e1530 * _e1503) - _e466), _e1719);
+                                                    let _e1729 = select((_e1706 - _e979), ((_e1532 * _e1503) - _e473), _e1719);
+                                                    let _e1730 = select((_e1707 - _e980), (_e1503 - _e459), _e1719);
+                                                    let _e1742 = ((((_e1705 * _e484) + (_e1706 * _e485)) + (_e1707 * _e486)) * inverseSqrt((((_e1705 * _e1705) + (_e1706 * _e1706)) + (_e1707 * _e1707))));
+                                                    let _e1746 = select(-1f, select(1f, _e1742, (_e1742 < 1f)), (_e1742 > -1f));
+                                                    let _e1747 = abs(_e1746);
+                                                    let _e1757 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1747, 0.00667009f), _e1747, -0.017088126f), _e1747, 0.03089188f), _e1747, -0.050174303f), _e1747, 0.08897899f), _e1747, -0.2145988f), _e1747, 1.5707963f) * sqrt((1f - _e1747)));
+                                                    let _e1764 = ((((select((3.1415927f - _e1757), _e1757, (_e1746 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e1768 = select(0f, select(1f, _e1764, (_e1764 < 1f)), (_e1764 > 0f));
+                                                    let _e1780 = ((((_e1728 * _e484) + (_e1729 * _e485)) + (_e1730 * _e486)) * inverseSqrt((((_e1728 * _e1728) + (_e1729 * _e1729)) + (_e1730 * _e1730))));
+                                                    let _e1784 = select(-1f, select(1f, _e1780, (_e1780 < 1f)), (_e1780 > -1f));
+                                                    let _e1785 = abs(_e1784);
+                                                    let _e1795 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1785, 0.00667009f), _e1785, -0.017088126f), _e1785, 0.03089188f), _e1785, -0.050174303f), _e1785, 0.08897899f), _e1785, -0.2145988f), _e1785, 1.5707963f) * sqrt((1f - _e1785)));
+                                                    let _e1802 = ((((select((3.1415927f - _e1795), _e1795, (_e1784 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e1806 = select(0f, select(1f, _e1802, (_e1802 < 1f)), (_e1802 > 0f));
+                                                    let _e1808 = (_e1806 != _e1806);
+                                                    let _e1810 = select(_e1806, _e1768, ((_e1768 < _e1806) || _e1808));
+                                                    let _e1813 = select(_e1806, _e1768, ((_e1768 > _e1806) || _e1808));
+                                                    let _e1815 = floor((_e1810 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e1821 = -(floor((_e1811 * -32f)));
-                                                        let _e1826 = (select(32f, _e1821, ((_e1821 < 32f) || false)) - _e1813);
-                                                        phi_3190_ = select(select(0f, _e1826, ((_e1826 > 0f) || false)), 0f, (_e1811 <= _e1808));
+                                                        let _e1823 = -(floor((_e1813 * -32f)));
+                                                        let _e1828 = (select(32f, _e1823, ((_e1823 < 32f) || false)) - _e1815);
+                                                        phi_3195_ = select(select(0f, _e1828, ((_e1828 > 0f) || false)), 0f, (_e1813 <= _e1810));
                                                     } else {
-                                                        phi_3190_ = -(floor(((_e1811 - _e1808) * -32f)));
+                                                        phi_3195_ = -(floor(((_e1813 - _e1810) * -32f)));
                                                     }
-                                                    let _e1832 = phi_3190_;
-                                                    let _e1840 = (bitcast<u32>((floor(select(0f, select(32f, _e1813, (_e1813 < 32f)), (_e1813 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e1848 = (bitcast<u32>((floor(select(0f, select(32f, _e1832, (_e1832 < 32f)), (_e1832 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e1840 >= 32u) {
-                                                        phi_3244_ = u32();
-                                                        phi_3245_ = true;
+                                                    let _e1834 = phi_3195_;
+                                                    let _e1842 = (bitcast<u32>((floor(select(0f, select(32f, _e1815, (_e1815 < 32f)), (_e1815 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e1850 = (bitcast<u32>((floor(select(0f, select(32f, _e1834, (_e1834 < 32f)), (_e1834 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e1842 >= 32u) {
+                                                        phi_3249_ = u32();
+                                                        phi_3250_ = true;
                                                     } else {
-                                                        let _e1850 = (_e1848 == 0u);
-                                                        if _e1850 {
-                                                            phi_3243_ = u32();
+                                                        let _e1852 = (_e1850 == 0u);
+                                                        if _e1852 {
+                                                            phi_3248_ = u32();
                                                         } else {
-                                                            if (_e1848 >= 32u) {
-                                                                phi_3240_ = 4294967295u;
+                                                            if (_e1850 >= 32u) {
+                                                                phi_3245_ = 4294967295u;
                                                             } else {
-                                                                phi_3240_ = ((1u << bitcast<u32>((_e1848 & 31u))) - 1u);
+                                                                phi_3245_ = ((1u << bitcast<u32>((_e1850 & 31u))) - 1u);
                                                             }
-                                                            let _e1857 = phi_3240_;
-                                                            phi_3243_ = (_e1857 << bitcast<u32>((_e1840 & 31u)));
+                                                            let _e1859 = phi_3245_;
+                                                            phi_3248_ = (_e1859 << bitcast<u32>((_e1842 & 31u)));
                                                         }
-                                                        let _e1862 = phi_3243_;
-                                                        phi_3244_ = _e1862;
-                                                        phi_3245_ = _e1850;
+                                                        let _e1864 = phi_3248_;
+                                                        phi_3249_ = _e1864;
+                                                        phi_3250_ = _e1852;
                                                     }
-                                                    let _e1864 = phi_3244_;
-                                                    let _e1866 = phi_3245_;
-                                                    phi_3258_ = select(0u, select(select(_e1864, 0u, _e1866), 0u, _e1069), _e1716);
+                                                    let _e1866 = phi_3249_;
+                                                    let _e1868 = phi_3250_;
+                                                    phi_3263_ = select(0u, select(select(_e1866, 0u, _e1868), 0u, _e1069), _e1718);
                                                 } else {
-                                                    phi_3258_ = 0u;
+                                                    phi_3263_ = 0u;
                                                 }
-                                                let _e1871 = phi_3258_;
-                                                let _e1875 = ((_e1528 * _e1505) - _e466);
-                                                let _e1876 = ((_e1530 * _e1505) - _e473);
-                                                let _e1877 = (_e1505 - _e459);
+                                                let _e1873 = phi_3263_;
+                                                let _e1877 = ((_e1530 * _e1507) - _e466);
+                                                let _e1878 = ((_e1532 * _e1507) - _e473);
+                                                let _e1879 = (_e1507 - _e459);
                                                 if _e972 {
-                                                    phi_3290_ = ((((_e1875 * _e1875) + (_e1876 * _e1876)) + (_e1877 * _e1877)) <= (_e241 * _e241));
+                                                    phi_3295_ = ((((_e1877 * _e1877) + (_e1878 * _e1878)) + (_e1879 * _e1879)) <= (_e241 * _e241));
                                                 } else {
-                                                    phi_3290_ = true;
+                                                    phi_3295_ = true;
                                                 }
-                                                let _e1886 = phi_3290_;
-                                                let _e1888 = select(false, _e1886, (_e1505 < _e225.member.member_3));
-                                                if _e1888 {
-                                                    let _e1889 = (_e1508 < _e225.member.member_3);
-                                                    let _e1898 = select((_e1875 - _e978), ((_e1528 * _e1508) - _e466), _e1889);
-                                                    let _e1899 = select((_e1876 - _e979), ((_e1530 * _e1508) - _e473), _e1889);
-                                                    let _e1900 = select((_e1877 - _e980), (_e1508 - _e459), _e1889);
-                                                    let _e1912 = ((((_e1875 * _e484) + (_e1876 * _e485)) + (_e1877 * _e486)) * inverseSqrt((((_e1875 * _e1875) + (_e1876 * _e1876)) + (_e1877 * _e1877))));
-                                                    let _e1916 = select(-1f, select(1f, _e1912, (_e1912 < 1f)), (_e1912 > -1f));
-                                                    let _e1917 = abs(_e1916);
-                                                    let _e1927 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1917, 0.00667009f), _e1917, -0.017088126f), _e1917, 0.03089188f), _e1917, -0.050174303f), _e1917, 0.08897899f), _e1917, -0.2145988f), _e1917, 1.5707963f) * sqrt((1f - _e1917)));
-                                                    let _e1934 = ((((select((3.1415927f - _e1927), _e1927, (_e1916 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e1938 = select(0f, select(1f, _e1934, (_e1934 < 1f)), (_e1934 > 0f));
-                                                    let _e1950 = ((((_e1898 * _e484) + (_e1899 * _e485)) + (_e1900 * _e486)) * inverseSqrt((((_e1898 * _e1898) + (_e1899 * _e1899)) + (_e1900 * _e1900))));
-                                                    let _e1954 = select(-1f, select(1f, _e1950, (_e1950 < 1f)), (_e1950 > -1f));
-                                                    let _e1955 = abs(_e1954);
-                                                    let _e1965 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1955, 0.00667009f), _e1955, -0.017088126f), _e1955, 0.03089188f), _e1955, -0.050174303f), _e1955, 0.08897899f), _e1955, -0.2145988f), _e1955, 1.5707963f) * sqrt((1f - _e1955)));
-                                                    let _e1972 = ((((select((3.1415927f - _e1965), _e1965, (_e1954 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e1976 = select(0f, select(1f, _e1972, (_e1972 < 1f)), (_e1972 > 0f));
-                                                    let _e1978 = (_e1976 != _e1976);
-                                                    let _e1980 = select(_e1976, _e1938, ((_e1938 < _e1976) || _e1978));
-                                                    let _e1983 = select(_e1976, _e1938, ((_e1938 > _e1976) || _e1978));
-                                                    let _e1985 = floor((_e1980 * 32f));
+                                                let _e1888 = phi_3295_;
+                                                let _e1890 = select(false, _e1888, (_e1507 < _e225.member.member_3));
+                                                if _e1890 {
+                                                    let _e1891 = (_e1510 < _e225.member.member_3);
+                                                    let _e1900 = select((_e1877 - _e978), ((_e1530 * _e1510) - _e466), _e1891);
+                                                    let _e1901 = select((_e1878 - _e979), ((_e1532 * _e1510) - _e473), _e1891);
+                                                    let _e1902 = select((_e1879 - _e980), (_e1510 - _e459), _e1891);
+                                                    let _e1914 = ((((_e1877 * _e484) + (_e1878 * _e485)) + (_e1879 * _e486)) * inverseSqrt((((_e1877 * _e1877) + (_e1878 * _e1878)) + (_e1879 * _e1879))));
+                                                    let _e1918 = select(-1f, select(1f, _e1914, (_e1914 < 1f)), (_e1914 > -1f));
+                                                    let _e1919 = abs(_e1918);
+                                                    let _e1929 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1919, 0.00667009f), _e1919, -0.017088126f), _e1919, 0.03089188f), _e1919, -0.050174303f), _e1919, 0.08897899f), _e1919, -0.2145988f), _e1919, 1.5707963f) * sqrt((1f - _e1919)));
+                                                    let _e1936 = ((((select((3.1415927f - _e1929), _e1929, (_e1918 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e1940 = select(0f, select(1f, _e1936, (_e1936 < 1f)), (_e1936 > 0f));
+                                                    let _e1952 = ((((_e1900 * _e484) + (_e1901 * _e485)) + (_e1902 * _e486)) * inverseSqrt((((_e1900 * _e1900) + (_e1901 * _e1901)) + (_e1902 * _e1902))));
+                                                    let _e1956 = select(-1f, select(1f, _e1952, (_e1952 < 1f)), (_e1952 > -1f));
+                                                    let _e1957 = abs(_e1956);
+                                                    let _e1967 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1957, 0.00667009f), _e1957, -0.017088126f), _e1957, 0.03089188f), _e1957, -0.050174303f), _e1957, 0.08897899f), _e1957, -0.2145988f), _e1957, 1.5707963f) * sqrt((1f - _e1957)));
+                                                    let _e1974 = ((((select((3.1415927f - _e1967), _e1967, (_e1956 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e1978 = select(0f, select(1f, _e1974, (_e1974 < 1f)), (_e1974 > 0f));
+                                                    let _e1980 = (_e1978 != _e1978);
+                                                    let _e1982 = select(_e1978, _e1940, ((_e1940 < _e1978) || _e1980));
+                                                    let _e1985 = select(_e1978, _e1940, ((_e1940 > _e1978) || _e1980));
+                                                    let _e1987 = floor((_e1982 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e1993 = -(floor((_e1983 * -32f)));
-                                                        let _e1998 = (select(32f, _e1993, ((_e1993 < 32f) || false)) - _e1985);
-                                                        phi_3517_ = select(select(0f, _e1998, ((_e1998 > 0f) || false)), 0f, (_e1983 <= _e1980));
+                                                        let _e1995 = -(floor((_e1985 * -32f)));
+                                                        let _e2000 = (select(32f, _e1995, ((_e1995 < 32f) || false)) - _e1987);
+                                                        phi_3522_ = select(select(0f, _e2000, ((_e2000 > 0f) || false)), 0f, (_e1985 <= _e1982));
                                                     } else {
-                                                        phi_3517_ = -(floor(((_e1983 - _e1980) * -32f)));
+                                                        phi_3522_ = -(floor(((_e1985 - _e1982) * -32f)));
                                                     }
-                                                    let _e2004 = phi_3517_;
-                                                    let _e2012 = (bitcast<u32>((floor(select(0f, select(32f, _e1985, (_e1985 < 32f)), (_e1985 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e2020 = (bitcast<u32>((floor(select(0f, select(32f, _e2004, (_e2004 < 32f)), (_e2004 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e2012 >= 32u) {
-                                                        phi_3571_ = u32();
-                                                        phi_3572_ = true;
+                                                    let _e2006 = phi_3522_;
+                                                    let _e2014 = (bitcast<u32>((floor(select(0f, select(32f, _e1987, (_e1987 < 32f)), (_e1987 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e2022 = (bitcast<u32>((floor(select(0f, select(32f, _e2006, (_e2006 < 32f)), (_e2006 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e2014 >= 32u) {
+                                                        phi_3576_ = u32();
+                                                        phi_3577_ = true;
                                                     } else {
-                                                        let _e2022 = (_e2020 == 0u);
-                                                        if _e2022 {
-                                                            phi_3570_ = u32();
+                                                        let _e2024 = (_e2022 == 0u);
+                                                        if _e2024 {
+                                                            phi_3575_ = u32();
                                                         } else {
-                                                            if (_e2020 >= 32u) {
-                                                                phi_3567_ = 4294967295u;
+                                                            if (_e2022 >= 32u) {
+                                                                phi_3572_ = 4294967295u;
                                                             } else {
-                                                                phi_3567_ = ((1u << bitcast<u32>((_e2020 & 31u))) - 1u);
+                                                                phi_3572_ = ((1u << bitcast<u32>((_e2022 & 31u))) - 1u);
                                                             }
-                                                            let _e2029 = phi_3567_;
-                                                            phi_3570_ = (_e2029 << bitcast<u32>((_e2012 & 31u)));
+                                                            let _e2031 = phi_3572_;
+                                                            phi_3575_ = (_e2031 << bitcast<u32>((_e2014 & 31u)));
                                                         }
-                                                        let _e2034 = phi_3570_;
-                                                        phi_3571_ = _e2034;
-                                                        phi_3572_ = _e2022;
+                                                        let _e2036 = phi_3575_;
+                                                        phi_3576_ = _e2036;
+                                                        phi_3577_ = _e2024;
                                                     }
-                                                    let _e2036 = phi_3571_;
-                                                    let _e2038 = phi_3572_;
-                                                    phi_3585_ = select(0u, select(select(_e2036, 0u, _e2038), 0u, _e1069), _e1888);
+                                                    let _e2038 = phi_3576_;
+                                                    let _e2040 = phi_3577_;
+                                                    phi_3590_ = select(0u, select(select(_e2038, 0u, _e2040), 0u, _e1069), _e1890);
                                                 } else {
-                                                    phi_3585_ = 0u;
+                                                    phi_3590_ = 0u;
                                                 }
-                                                let _e2043 = phi_3585_;
-                                                let _e2047 = ((_e1528 * _e1473) - _e466);
-                                                let _e2048 = ((_e1530 * _e1473) - _e473);
-                                                let _e2049 = (_e1473 - _e459);
+                                                let _e2045 = phi_3590_;
+                                                let _e2049 = ((_e1530 * _e1475) - _e466);
+                                                let _e2050 = ((_e1532 * _e1475) - _e473);
+                                                let _e2051 = (_e1475 - _e459);
                                                 if _e972 {
-                                                    phi_3617_ = ((((_e2047 * _e2047) + (_e2048 * _e2048)) + (_e2049 * _e2049)) <= (_e241 * _e241));
+                                                    phi_3622_ = ((((_e2049 * _e2049) + (_e2050 * _e2050)) + (_e2051 * _e2051)) <= (_e241 * _e241));
                                                 } else {
-                                                    phi_3617_ = true;
+                                                    phi_3622_ = true;
                                                 }
-                                                let _e2058 = phi_3617_;
-                                                let _e2060 = select(false, _e2058, (_e1473 < _e225.member.member_3));
-                                                if _e2060 {
-                                                    let _e2061 = (_e1261 < _e225.member.member_3);
-                                                    let _e2070 = select((_e2047 - _e978), ((_e1528 * _e1261) - _e466), _e2061);
-                                                    let _e2071 = select((_e2048 - _e979), ((_e1530 * _e1261) - _e473), _e2061);
-                                                    let _e2072 = select((_e2049 - _e980), (_e1261 - _e459), _e2061);
-                                                    let _e2084 = ((((_e2047 * _e484) + (_e2048 * _e485)) + (_e2049 * _e486)) * inverseSqrt((((_e2047 * _e2047) + (_e2048 * _e2048)) + (_e2049 * _e2049))));
-                                                    let _e2088 = select(-1f, select(1f, _e2084, (_e2084 < 1f)), (_e2084 > -1f));
-                                                    let _e2089 = abs(_e2088);
-                                                    let _e2099 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2089, 0.00667009f), _e2089, -0.017088126f), _e2089, 0.03089188f), _e2089, -0.050174303f), _e2089, 0.08897899f), _e2089, -0.2145988f), _e2089, 1.5707963f) * sqrt((1f - _e2089)));
-                                                    let _e2106 = ((((select((3.1415927f - _e2099), _e2099, (_e2088 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e2110 = select(0f, select(1f, _e2106, (_e2106 < 1f)), (_e2106 > 0f));
-                                                    let _e2122 = ((((_e2070 * _e484) + (_e2071 * _e485)) + (_e2072 * _e486)) * inverseSqrt((((_e2070 * _e2070) + (_e2071 * _e2071)) + (_e2072 * _e2072))));
-                                                    let _e2126 = select(-1f, select(1f, _e2122, (_e2122 < 1f)), (_e2122 > -1f));
-                                                    let _e2127 = abs(_e2126);
-                                                    let _e2137 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2127, 0.00667009f), _e2127, -0.017088126f), _e2127, 0.03089188f), _e2127, -0.050174303f), _e2127, 0.08897899f), _e2127, -0.2145988f), _e2127, 1.5707963f) * sqrt((1f - _e2127)));
-                                                    let _e2144 = ((((select((3.1415927f - _e2137), _e2137, (_e2126 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e2148 = select(0f, select(1f, _e2144, (_e2144 < 1f)), (_e2144 > 0f));
-                                                    let _e2150 = (_e2148 != _e2148);
-                                                    let _e2152 = select(_e2148, _e2110, ((_e2110 < _e2148) || _e2150));
-                                                    let _e2155 = select(_e2148, _e2110, ((_e2110 > _e2148) || _e2150));
-                                                    let _e2157 = floor((_e2152 * 32f));
+                                                let _e2060 = phi_3622_;
+                                                let _e2062 = select(false, _e2060, (_e1475 < _e225.member.member_3));
+                                                if _e2062 {
+                                                    let _e2063 = (_e1263 < _e225.member.member_3);
+                                                    let _e2072 = select((_e2049 - _e978), ((_e1530 * _e1263) - _e466), _e2063);
+                                                    let _e2073 = select((_e2050 - _e979), ((_e1532 * _e1263) - _e473), _e2063);
+                                                    let _e2074 = select((_e2051 - _e980), (_e1263 - _e459), _e2063);
+                                                    let _e2086 = ((((_e2049 * _e484) + (_e2050 * _e485)) + (_e2051 * _e486)) * inverseSqrt((((_e2049 * _e2049) + (_e2050 * _e2050)) + (_e2051 * _e2051))));
+                                                    let _e2090 = select(-1f, select(1f, _e2086, (_e2086 < 1f)), (_e2086 > -1f));
+                                                    let _e2091 = abs(_e2090);
+                                                    let _e2101 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2091, 0.00667009f), _e2091, -0.017088126f), _e2091, 0.03089188f), _e2091, -0.050174303f), _e2091, 0.08897899f), _e2091, -0.2145988f), _e2091, 1.5707963f) * sqrt((1f - _e2091)));
+                                                    let _e2108 = ((((select((3.1415927f - _e2101), _e2101, (_e2090 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e2112 = select(0f, select(1f, _e2108, (_e2108 < 1f)), (_e2108 > 0f));
+                                                    let _e2124 = ((((_e2072 * _e484) + (_e2073 * _e485)) + (_e2074 * _e486)) * inverseSqrt((((_e2072 * _e2072) + (_e2073 * _e2073)) + (_e2074 * _e2074))));
+                                                    let _e2128 = select(-1f, select(1f, _e2124, (_e2124 < 1f)), (_e2124 > -1f));
+                                                    let _e2129 = abs(_e2128);
+                                                    let _e2139 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2129, 0.00667009f), _e2129, -0.017088126f), _e2129, 0.03089188f), _e2129, -0.050174303f), _e2129, 0.08897899f), _e2129, -0.2145988f), _e2129, 1.5707963f) * sqrt((1f - _e2129)));
+                                                    let _e2146 = ((((select((3.1415927f - _e2139), _e2139, (_e2128 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e2150 = select(0f, select(1f, _e2146, (_e2146 < 1f)), (_e2146 > 0f));
+                                                    let _e2152 = (_e2150 != _e2150);
+                                                    let _e2154 = select(_e2150, _e2112, ((_e2112 < _e2150) || _e2152));
+                                                    let _e2157 = select(_e2150, _e2112, ((_e2112 > _e2150) || _e2152));
+                                                    let _e2159 = floor((_e2154 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e2165 = -(floor((_e2155 * -32f)));
-                                                        let _e2170 = (select(32f, _e2165, ((_e2165 < 32f) || false)) - _e2157);
-                                                        phi_3844_ = select(select(0f, _e2170, ((_e2170 > 0f) || false)), 0f, (_e2155 <= _e2152));
+                                                        let _e2167 = -(floor((_e2157 * -32f)));
+                                                        let _e2172 = (select(32f, _e2167, ((_e2167 < 32f) || false)) - _e2159);
+                                                        phi_3849_ = select(select(0f, _e2172, ((_e2172 > 0f) || false)), 0f, (_e2157 <= _e2154));
                                                     } else {
-                                                        phi_3844_ = -(floor(((_e2155 - _e2152) * -32f)));
+                                                        phi_3849_ = -(floor(((_e2157 - _e2154) * -32f)));
                                                     }
-                                                    let _e2176 = phi_3844_;
-                                                    let _e2184 = (bitcast<u32>((floor(select(0f, select(32f, _e2157, (_e2157 < 32f)), (_e2157 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e2192 = (bitcast<u32>((floor(select(0f, select(32f, _e2176, (_e2176 < 32f)), (_e2176 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e2184 >= 32u) {
-                                                        phi_3898_ = u32();
-                                                        phi_3899_ = true;
+                                                    let _e2178 = phi_3849_;
+                                                    let _e2186 = (bitcast<u32>((floor(select(0f, select(32f, _e2159, (_e2159 < 32f)), (_e2159 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e2194 = (bitcast<u32>((floor(select(0f, select(32f, _e2178, (_e2178 < 32f)), (_e2178 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e2186 >= 32u) {
+                                                        phi_3903_ = u32();
+                                                        phi_3904_ = true;
                                                     } else {
-                                                        let _e2194 = (_e2192 == 0u);
-                                                        if _e2194 {
-                                                            phi_3897_ = u32();
+                                                        let _e2196 = (_e2194 == 0u);
+                                                        if _e2196 {
+                                                            phi_3902_ = u32();
                                                         } else {
-                                                            if (_e2192 >= 32u) {
-                                                                phi_3894_ = 4294967295u;
+                                                            if (_e2194 >= 32u) {
+                                                                phi_3899_ = 4294967295u;
                                                             } else {
-                                                                phi_3894_ = ((1u << bitcast<u32>((_e2192 & 31u))) - 1u);
+                                                                phi_3899_ = ((1u << bitcast<u32>((_e2194 & 31u))) - 1u);
                                                             }
-                                                            let _e2201 = phi_3894_;
-                                                            phi_3897_ = (_e2201 << bitcast<u32>((_e2184 & 31u)));
+                                                            let _e2203 = phi_3899_;
+                                                            phi_3902_ = (_e2203 << bitcast<u32>((_e2186 & 31u)));
                                                         }
-                                                        let _e2206 = phi_3897_;
-                                                        phi_3898_ = _e2206;
-                                                        phi_3899_ = _e2194;
+                                                        let _e2208 = phi_3902_;
+                                                        phi_3903_ = _e2208;
+                                                        phi_3904_ = _e2196;
                                                     }
-                                                    let _e2208 = phi_3898_;
-                                                    let _e2210 = phi_3899_;
-                                                    phi_3912_ = select(0u, select(select(_e2208, 0u, _e2210), 0u, _e1069), _e2060);
+                                                    let _e2210 = phi_3903_;
+                                                    let _e2212 = phi_3904_;
+                                                    phi_3917_ = select(0u, select(select(_e2210, 0u, _e2212), 0u, _e1069), _e2062);
                                                 } else {
-                                                    phi_3912_ = 0u;
+                                                    phi_3917_ = 0u;
                                                 }
-                                                let _e2215 = phi_3912_;
-                                                phi_3914_ = (((_e1700 | _e1871) | _e2043) | _e2215);
-                                                phi_3915_ = vec3<f32>(select(_e981, (((_e1514 * _e1089) * _e1449) - _e466), _e1512), select(_e982, (((_e1518 * _e1097) * _e1449) - _e473), _e1512), select(_e983, (_e1449 - _e459), _e1512));
+                                                let _e2217 = phi_3917_;
+                                                phi_3919_ = (((_e1702 | _e1873) | _e2045) | _e2217);
+                                                phi_3920_ = vec3<f32>(select(_e981, (((_e1516 * _e1089) * _e1451) - _e466), _e1514), select(_e982, (((_e1520 * _e1097) * _e1451) - _e473), _e1514), select(_e983, (_e1451 - _e459), _e1514));
                                             } else {
-                                                phi_3914_ = 0u;
-                                                phi_3915_ = vec3<f32>(_e981, _e982, _e983);
+                                                phi_3919_ = 0u;
+                                                phi_3920_ = vec3<f32>(_e981, _e982, _e983);
                                             }
-                                            let _e2218 = phi_3914_;
-                                            let _e2220 = phi_3915_;
-                                            let _e2222 = (_e989 * inverseSqrt(_e971));
-                                            let _e2226 = select(-1f, select(1f, _e2222, (_e2222 < 1f)), (_e2222 > -1f));
-                                            let _e2227 = abs(_e2226);
-                                            let _e2237 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2227, 0.00667009f), _e2227, -0.017088126f), _e2227, 0.03089188f), _e2227, -0.050174303f), _e2227, 0.08897899f), _e2227, -0.2145988f), _e2227, 1.5707963f) * sqrt((1f - _e2227)));
-                                            let _e2244 = ((((select((3.1415927f - _e2237), _e2237, (_e2226 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                            let _e2248 = select(0f, select(1f, _e2244, (_e2244 < 1f)), (_e2244 > 0f));
-                                            let _e2263 = ((((_e2220.x * _e484) + (_e2220.y * _e485)) + (_e2220.z * _e486)) * inverseSqrt((((_e2220.x * _e2220.x) + (_e2220.y * _e2220.y)) + (_e2220.z * _e2220.z))));
-                                            let _e2267 = select(-1f, select(1f, _e2263, (_e2263 < 1f)), (_e2263 > -1f));
-                                            let _e2268 = abs(_e2267);
-                                            let _e2278 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2268, 0.00667009f), _e2268, -0.017088126f), _e2268, 0.03089188f), _e2268, -0.050174303f), _e2268, 0.08897899f), _e2268, -0.2145988f), _e2268, 1.5707963f) * sqrt((1f - _e2268)));
-                                            let _e2285 = ((((select((3.1415927f - _e2278), _e2278, (_e2267 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                            let _e2289 = select(0f, select(1f, _e2285, (_e2285 < 1f)), (_e2285 > 0f));
-                                            let _e2291 = (_e2289 != _e2289);
-                                            let _e2293 = select(_e2289, _e2248, ((_e2248 < _e2289) || _e2291));
-                                            let _e2296 = select(_e2289, _e2248, ((_e2248 > _e2289) || _e2291));
-                                            let _e2298 = floor((_e2293 * 32f));
+                                            let _e2220 = phi_3919_;
+                                            let _e2222 = phi_3920_;
+                                            let _e2224 = (_e989 * inverseSqrt(_e971));
+                                            let _e2228 = select(-1f, select(1f, _e2224, (_e2224 < 1f)), (_e2224 > -1f));
+                                            let _e2229 = abs(_e2228);
+                                            let _e2239 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2229, 0.00667009f), _e2229, -0.017088126f), _e2229, 0.03089188f), _e2229, -0.050174303f), _e2229, 0.08897899f), _e2229, -0.2145988f), _e2229, 1.5707963f) * sqrt((1f - _e2229)));
+                                            let _e2246 = ((((select((3.1415927f - _e2239), _e2239, (_e2228 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                            let _e2250 = select(0f, select(1f, _e2246, (_e2246 < 1f)), (_e2246 > 0f));
+                                            let _e2265 = ((((_e2222.x * _e484) + (_e2222.y * _e485)) + (_e2222.z * _e486)) * inverseSqrt((((_e2222.x * _e2222.x) + (_e2222.y * _e2222.y)) + (_e2222.z * _e2222.z))));
+                                            let _e2269 = select(-1f, select(1f, _e2265, (_e2265 < 1f)), (_e2265 > -1f));
+                                            let _e2270 = abs(_e2269);
+                                            let _e2280 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2270, 0.00667009f), _e2270, -0.017088126f), _e2270, 0.03089188f), _e2270, -0.050174303f), _e2270, 0.08897899f), _e2270, -0.2145988f), _e2270, 1.5707963f) * sqrt((1f - _e2270)));
+                                            let _e2287 = ((((select((3.1415927f - _e2280), _e2280, (_e2269 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                            let _e2291 = select(0f, select(1f, _e2287, (_e2287 < 1f)), (_e2287 > 0f));
+                                            let _e2293 = (_e2291 != _e2291);
+                                            let _e2295 = select(_e2291, _e2250, ((_e2250 < _e2291) || _e2293));
+                                            let _e2298 = select(_e2291, _e2250, ((_e2250 > _e2291) || _e2293));
+                                            let _e2300 = floor((_e2295 * 32f));
                                             if (_e235 == 1u) {
-                                                let _e2306 = -(floor((_e2296 * -32f)));
-                                                let _e2311 = (select(32f, _e2306, ((_e2306 < 32f) || false)) - _e2298);
-                                                phi_4102_ = select(select(0f, _e2311, ((_e2311 > 0f) || false)), 0f, (_e2296 <= _e2293));
+                                                let _e2308 = -(floor((_e2298 * -32f)));
+                                                let _e2313 = (select(32f, _e2308, ((_e2308 < 32f) || false)) - _e2300);
+                                                phi_4107_ = select(select(0f, _e2313, ((_e2313 > 0f) || false)), 0f, (_e2298 <= _e2295));
                                             } else {
-                                                phi_4102_ = -(floor(((_e2296 - _e2293) * -32f)));
+                                                phi_4107_ = -(floor(((_e2298 - _e2295) * -32f)));
                                             }
-                                            let _e2317 = phi_4102_;
-                                            let _e2325 = (bitcast<u32>((floor(select(0f, select(32f, _e2298, (_e2298 < 32f)), (_e2298 > 0f))) + 8388608f)) - 1258291200u);
-                                            let _e2333 = (bitcast<u32>((floor(select(0f, select(32f, _e2317, (_e2317 < 32f)), (_e2317 > 0f))) + 8388608f)) - 1258291200u);
-                                            if (_e2325 >= 32u) {
-                                                phi_4156_ = u32();
-                                                phi_4157_ = true;
+                                            let _e2319 = phi_4107_;
+                                            let _e2327 = (bitcast<u32>((floor(select(0f, select(32f, _e2300, (_e2300 < 32f)), (_e2300 > 0f))) + 8388608f)) - 1258291200u);
+                                            let _e2335 = (bitcast<u32>((floor(select(0f, select(32f, _e2319, (_e2319 < 32f)), (_e2319 > 0f))) + 8388608f)) - 1258291200u);
+                                            if (_e2327 >= 32u) {
+                                                phi_4161_ = u32();
+                                                phi_4162_ = true;
                                             } else {
-                                                let _e2335 = (_e2333 == 0u);
-                                                if _e2335 {
-                                                    phi_4155_ = u32();
+                                                let _e2337 = (_e2335 == 0u);
+                                                if _e2337 {
+                                                    phi_4160_ = u32();
                                                 } else {
-                                                    if (_e2333 >= 32u) {
-                                                        phi_4152_ = 4294967295u;
+                                                    if (_e2335 >= 32u) {
+                                                        phi_4157_ = 4294967295u;
                                                     } else {
-                                                        phi_4152_ = ((1u << bitcast<u32>((_e2333 & 31u))) - 1u);
+                                                        phi_4157_ = ((1u << bitcast<u32>((_e2335 & 31u))) - 1u);
                                                     }
-                                                    let _e2342 = phi_4152_;
-                                                    phi_4155_ = (_e2342 << bitcast<u32>((_e2325 & 31u)));
+                                                    let _e2344 = phi_4157_;
+                                                    phi_4160_ = (_e2344 << bitcast<u32>((_e2327 & 31u)));
                                                 }
-                                                let _e2347 = phi_4155_;
-                                                phi_4156_ = _e2347;
-                                                phi_4157_ = _e2335;
+                                                let _e2349 = phi_4160_;
+                                                phi_4161_ = _e2349;
+                                                phi_4162_ = _e2337;
                                             }
-                                            let _e2349 = phi_4156_;
-                                            let _e2351 = phi_4157_;
-                                            phi_4171_ = select((select(select(_e2349, 0u, _e2351), 0u, _e1069) | _e2218), 0u, _e976);
+                                            let _e2351 = phi_4161_;
+                                            let _e2353 = phi_4162_;
+                                            phi_4176_ = select((select(select(_e2351, 0u, _e2353), 0u, _e1069) | _e2220), 0u, _e976);
                                         } else {
-                                            phi_4171_ = 0u;
+                                            phi_4176_ = 0u;
                                         }
-                                        let _e2357 = phi_4171_;
-                                        let _e2359 = (_e959 - _e466);
-                                        let _e2360 = (_e963 - _e473);
-                                        let _e2361 = (_e955 - _e459);
-                                        let _e2366 = (((_e2359 * _e2359) + (_e2360 * _e2360)) + (_e2361 * _e2361));
+                                        let _e2359 = phi_4176_;
+                                        let _e2361 = (_e959 - _e466);
+                                        let _e2362 = (_e963 - _e473);
+                                        let _e2363 = (_e955 - _e459);
+                                        let _e2368 = (((_e2361 * _e2361) + (_e2362 * _e2362)) + (_e2363 * _e2363));
                                         if _e972 {
-                                            phi_4191_ = (_e2366 > (_e241 * _e241));
+                                            phi_4196_ = (_e2368 > (_e241 * _e241));
                                         } else {
-                                            phi_4191_ = false;
+                                            phi_4196_ = false;
                                         }
-                                        let _e2370 = phi_4191_;
-                                        if !(_e2370) {
-                                            let _e2372 = (_e484 * _e238);
-                                            let _e2373 = (_e485 * _e238);
-                                            let _e2374 = (_e486 * _e238);
-                                            let _e2375 = (_e2359 - _e2372);
-                                            let _e2376 = (_e2360 - _e2373);
+                                        let _e2372 = phi_4196_;
+                                        if !(_e2372) {
+                                            let _e2374 = (_e484 * _e238);
+                                            let _e2375 = (_e485 * _e238);
+                                            let _e2376 = (_e486 * _e238);
                                             let _e2377 = (_e2361 - _e2374);
-                                            let _e2383 = (((_e2359 * _e484) + (_e2360 * _e485)) + (_e2361 * _e486));
-                                            let _e2387 = (_e2359 - (_e484 * _e2383));
-                                            let _e2388 = (_e2360 - (_e485 * _e2383));
-                                            let _e2389 = (_e2361 - (_e486 * _e2383));
-                                            let _e2392 = ((_e2388 * _e486) - (_e485 * _e2389));
-                                            let _e2395 = ((_e2389 * _e484) - (_e486 * _e2387));
-                                            let _e2398 = ((_e2387 * _e485) - (_e484 * _e2388));
-                                            let _e2409 = ((((_e545 * _e2392) + (_e546 * _e2395)) + (_e547 * _e2398)) / (((_e2392 * _e2392) + (_e2395 * _e2395)) + (_e2398 * _e2398)));
-                                            let _e2413 = (_e545 - (_e2392 * _e2409));
-                                            let _e2414 = (_e546 - (_e2395 * _e2409));
-                                            let _e2415 = (_e547 - (_e2398 * _e2409));
-                                            let _e2421 = inverseSqrt((((_e2413 * _e2413) + (_e2414 * _e2414)) + (_e2415 * _e2415)));
-                                            let _e2427 = ((((_e2413 * _e484) + (_e2414 * _e485)) + (_e2415 * _e486)) * _e2421);
-                                            let _e2431 = select(0f, select(1f, _e2427, (_e2427 < 1f)), (_e2427 > 0f));
-                                            let _e2432 = abs(_e2431);
-                                            let _e2442 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2432, 0.00667009f), _e2432, -0.017088126f), _e2432, 0.03089188f), _e2432, -0.050174303f), _e2432, 0.08897899f), _e2432, -0.2145988f), _e2432, 1.5707963f) * sqrt((1f - _e2432)));
-                                            let _e2445 = select((3.1415927f - _e2442), _e2442, (_e2431 >= 0f));
-                                            let _e2453 = select(_e2445, -(_e2445), ((((_e2387 * _e2413) + (_e2388 * _e2414)) + (_e2389 * _e2415)) < 0f));
-                                            let _e2454 = (_e2421 * 0.02f);
-                                            let _e2457 = select(0.19634955f, _e2454, ((_e2454 < 0.19634955f) || false));
-                                            let _e2463 = ((((_e2387 * _e2387) + (_e2388 * _e2388)) + (_e2389 * _e2389)) <= 0f);
+                                            let _e2378 = (_e2362 - _e2375);
+                                            let _e2379 = (_e2363 - _e2376);
+                                            let _e2385 = (((_e2361 * _e484) + (_e2362 * _e485)) + (_e2363 * _e486));
+                                            let _e2389 = (_e2361 - (_e484 * _e2385));
+                                            let _e2390 = (_e2362 - (_e485 * _e2385));
+                                            let _e2391 = (_e2363 - (_e486 * _e2385));
+                                            let _e2394 = ((_e2390 * _e486) - (_e485 * _e2391));
+                                            let _e2397 = ((_e2391 * _e484) - (_e486 * _e2389));
+                                            let _e2400 = ((_e2389 * _e485) - (_e484 * _e2390));
+                                            let _e2411 = ((((_e545 * _e2394) + (_e546 * _e2397)) + (_e547 * _e2400)) / (((_e2394 * _e2394) + (_e2397 * _e2397)) + (_e2400 * _e2400)));
+                                            let _e2415 = (_e545 - (_e2394 * _e2411));
+                                            let _e2416 = (_e546 - (_e2397 * _e2411));
+                                            let _e2417 = (_e547 - (_e2400 * _e2411));
+                                            let _e2423 = inverseSqrt((((_e2415 * _e2415) + (_e2416 * _e2416)) + (_e2417 * _e2417)));
+                                            let _e2429 = ((((_e2415 * _e484) + (_e2416 * _e485)) + (_e2417 * _e486)) * _e2423);
+                                            let _e2433 = select(0f, select(1f, _e2429, (_e2429 < 1f)), (_e2429 > 0f));
+                                            let _e2434 = abs(_e2433);
+                                            let _e2444 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2434, 0.00667009f), _e2434, -0.017088126f), _e2434, 0.03089188f), _e2434, -0.050174303f), _e2434, 0.08897899f), _e2434, -0.2145988f), _e2434, 1.5707963f) * sqrt((1f - _e2434)));
+                                            let _e2447 = select((3.1415927f - _e2444), _e2444, (_e2433 >= 0f));
+                                            let _e2455 = select(_e2447, -(_e2447), ((((_e2389 * _e2415) + (_e2390 * _e2416)) + (_e2391 * _e2417)) < 0f));
+                                            let _e2456 = (_e2423 * 0.02f);
+                                            let _e2459 = select(0.19634955f, _e2456, ((_e2456 < 0.19634955f) || false));
+                                            let _e2465 = ((((_e2389 * _e2389) + (_e2390 * _e2390)) + (_e2391 * _e2391)) <= 0f);
                                             if _e972 {
-                                                phi_4344_ = (_e2366 <= (_e241 * _e241));
+                                                phi_4349_ = (_e2368 <= (_e241 * _e241));
                                             } else {
-                                                phi_4344_ = true;
+                                                phi_4349_ = true;
                                             }
-                                            let _e2467 = phi_4344_;
-                                            let _e2476 = select(false, ((((_e2359 * _e545) + (_e2360 * _e546)) + (_e2361 * _e547)) > (sqrt(_e2366) * 0.018f)), _e2467);
-                                            if _e2476 {
-                                                let _e2477 = (0.5f / _e955);
-                                                let _e2483 = frame.member[0u].member_1.member.member.member_1[0u];
-                                                let _e2491 = frame.member[0u].member_1.member.member.member_1[1u];
-                                                let _e2496 = frame.member[0u].member_1.member_5[0u];
-                                                let _e2499 = frame.member[0u].member_1.member_5[1u];
-                                                let _e2500 = f32(_e2496);
-                                                let _e2501 = f32(_e2499);
-                                                let _e2503 = frame.member[0u].member_1.member_4;
-                                                let _e2504 = f32(_e2503);
-                                                let _e2505 = (2u * _e2503);
-                                                let _e2506 = (_e2496 + _e2505);
-                                                let _e2510 = (floor(((((_e959 * _e2477) / _e2483) + 0.5f) * _e2500)) + _e2504);
-                                                let _e2513 = f32(bitcast<i32>((_e2506 - 1u)));
-                                                let _e2521 = (bitcast<u32>((floor(select(0f, select(_e2513, _e2510, (_e2510 < _e2513)), (_e2510 > 0f))) + 8388608f)) - 1258291200u);
-                                                let _e2524 = (floor(((0.5f - ((_e963 * _e2477) / _e2491)) * _e2501)) + _e2504);
-                                                let _e2527 = f32(bitcast<i32>(((_e2499 + _e2505) - 1u)));
-                                                let _e2535 = (bitcast<u32>((floor(select(0f, select(_e2527, _e2524, (_e2524 < _e2527)), (_e2524 > 0f))) + 8388608f)) - 1258291200u);
-                                                let _e2537 = frame.member[0u].member_1.member_8;
-                                                let _e2539 = frame.member[0u].member_1.member_12;
-                                                let _e2546 = (((((_e2535 % 4u) * 4u) + (_e2521 % 4u)) + (_e2539 % 16u)) % 16u);
-                                                if (_e2537 == 1u) {
+                                            let _e2469 = phi_4349_;
+                                            let _e2478 = select(false, ((((_e2361 * _e545) + (_e2362 * _e546)) + (_e2363 * _e547)) > (sqrt(_e2368) * 0.018f)), _e2469);
+                                            if _e2478 {
+                                                let _e2479 = (0.5f / _e955);
+                                                let _e2485 = frame.member[0u].member_1.member.member.member_1[0u];
+                                                let _e2493 = frame.member[0u].member_1.member.member.member_1[1u];
+                                                let _e2498 = frame.member[0u].member_1.member_5[0u];
+                                                let _e2501 = frame.member[0u].member_1.member_5[1u];
+                                                let _e2502 = f32(_e2498);
+                                                let _e2503 = f32(_e2501);
+                                                let _e2505 = frame.member[0u].member_1.member_4;
+                                                let _e2506 = f32(_e2505);
+                                                let _e2507 = (2u * _e2505);
+                                                let _e2508 = (_e2498 + _e2507);
+                                                let _e2512 = (floor(((((_e959 * _e2479) / _e2485) + 0.5f) * _e2502)) + _e2506);
+                                                let _e2515 = f32(bitcast<i32>((_e2508 - 1u)));
+                                                let _e2523 = (bitcast<u32>((floor(select(0f, select(_e2515, _e2512, (_e2512 < _e2515)), (_e2512 > 0f))) + 8388608f)) - 1258291200u);
+                                                let _e2526 = (floor(((0.5f - ((_e963 * _e2479) / _e2493)) * _e2503)) + _e2506);
+                                                let _e2529 = f32(bitcast<i32>(((_e2501 + _e2507) - 1u)));
+                                                let _e2537 = (bitcast<u32>((floor(select(0f, select(_e2529, _e2526, (_e2526 < _e2529)), (_e2526 > 0f))) + 8388608f)) - 1258291200u);
+                                                let _e2539 = frame.member[0u].member_1.member_8;
+                                                let _e2541 = frame.member[0u].member_1.member_12;
+                                                let _e2548 = (((((_e2537 % 4u) * 4u) + (_e2523 % 4u)) + (_e2541 % 16u)) % 16u);
+                                                if (_e2539 == 1u) {
                                                     local_1 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
-                                                    let _e2559 = (_e2546 < 16u);
-                                                    if _e2559 {
+                                                    let _e2561 = (_e2548 < 16u);
+                                                    if _e2561 {
                                                     } else {
-                                                        phi_7179_ = true;
+                                                        phi_7189_ = true;
                                                         break;
                                                     }
-                                                    let _e2562 = local_1[_e2546][0u];
+                                                    let _e2564 = local_1[_e2548][0u];
                                                     local_2 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
-                                                    if _e2559 {
+                                                    if _e2561 {
                                                     } else {
-                                                        phi_7179_ = true;
+                                                        phi_7189_ = true;
                                                         break;
                                                     }
-                                                    let _e2565 = local_2[_e2546][1u];
-                                                    phi_4507_ = vec2<f32>(_e2562, _e2565);
+                                                    let _e2567 = local_2[_e2548][1u];
+                                                    phi_4512_ = vec2<f32>(_e2564, _e2567);
                                                 } else {
-                                                    if (_e2537 == 2u) {
+                                                    if (_e2539 == 2u) {
                                                         local_3 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
-                                                        let _e2549 = (_e2546 < 16u);
-                                                        if _e2549 {
+                                                        let _e2551 = (_e2548 < 16u);
+                                                        if _e2551 {
                                                         } else {
-                                                            phi_7179_ = true;
+                                                            phi_7189_ = true;
                                                             break;
                                                         }
-                                                        let _e2552 = local_3[_e2546][0u];
+                                                        let _e2554 = local_3[_e2548][0u];
                                                         local_4 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
-                                                        if _e2549 {
+                                                        if _e2551 {
                                                         } else {
-                                                            phi_7179_ = true;
+                                                            phi_7189_ = true;
                                                             break;
                                                         }
-                                                        let _e2555 = local_4[_e2546][1u];
-                                                        phi_4506_ = vec2<f32>(_e2552, _e2555);
+                                                        let _e2557 = local_4[_e2548][1u];
+                                                        phi_4511_ = vec2<f32>(_e2554, _e2557);
                                                     } else {
-                                                        phi_4506_ = vec2<f32>(0.5f, 0.5f);
+                                                        phi_4511_ = vec2<f32>(0.5f, 0.5f);
                                                     }
-                                                    let _e2558 = phi_4506_;
-                                                    phi_4507_ = _e2558;
+                                                    let _e2560 = phi_4511_;
+                                                    phi_4512_ = _e2560;
                                                 }
-                                                let _e2568 = phi_4507_;
-                                                let _e2576 = (((f32(bitcast<i32>(_e2521)) - _e2504) + _e2568.x) * (1f / _e2500));
-                                                let _e2582 = (((f32(bitcast<i32>(_e2535)) - _e2504) + _e2568.y) * (1f / _e2501));
+                                                let _e2570 = phi_4512_;
+                                                let _e2577 = (((f32(bitcast<i32>(_e2523)) - _e2506) + _e2570.x) / _e2502);
+                                                let _e2582 = (((f32(bitcast<i32>(_e2537)) - _e2506) + _e2570.y) / _e2503);
                                                 let _e2587 = frame.member[0u].member_1.member.member.member[0u];
                                                 let _e2592 = select(select(u32(_e2587), 0u, (_e2587 < 0f)), 4294967295u, (_e2587 > 4294967000f));
                                                 let _e2597 = frame.member[0u].member_1.member.member.member[1u];
-                                                let _e2607 = (select(0f, select(1f, _e2576, (_e2576 < 1f)), (_e2576 > 0f)) * _e2587);
+                                                let _e2607 = (select(0f, select(1f, _e2577, (_e2577 < 1f)), (_e2577 > 0f)) * _e2587);
                                                 let _e2610 = f32(bitcast<i32>((_e2592 - 1u)));
                                                 let _e2623 = (select(0f, select(1f, _e2582, (_e2582 < 1f)), (_e2582 > 0f)) * _e2597);
                                                 let _e2626 = f32(bitcast<i32>((select(select(u32(_e2597), 0u, (_e2597 < 0f)), 4294967295u, (_e2597 > 4294967000f)) - 1u)));
                                                 let _e2638 = mips.member[(((bitcast<u32>((floor(select(0f, select(_e2626, _e2623, (_e2623 < _e2626)), (_e2623 > 0f))) + 8388608f)) - 1258291200u) * _e2592) + (bitcast<u32>((floor(select(0f, select(_e2610, _e2607, (_e2607 < _e2610)), (_e2607 > 0f))) + 8388608f)) - 1258291200u))];
-                                                let _e2644 = select(0x1.fffffep+127f, (_e955 * 1.001f), select(false, (abs((_e2638 - _e955)) <= _e238), _e2476));
-                                                let _e2646 = frame.member[0u].member_1.member_6;
-                                                let _e2649 = (((_e2535 * _e2506) + _e2521) * _e2646);
-                                                let _e2651 = sd_map.member[_e2649];
-                                                let _e2655 = frame.member[0u].member_1.member.member.member_3;
-                                                let _e2659 = frame.member[0u].member_1.member.member.member_2;
-                                                let _e2660 = (_e2655 - _e2659);
-                                                let _e2662 = ((_e2651 * _e2660) + _e2659);
-                                                let _e2668 = select(_e2655, _e2662, select(false, select(false, (_e2662 > _e2644), (_e2651 < 1f)), (0u < _e2646)));
-                                                let _e2669 = (_e2646 - 1u);
-                                                let _e2674 = sd_map.member[(_e2649 + select(1u, _e2669, (_e2669 < 1u)))];
-                                                let _e2676 = ((_e2674 * _e2660) + _e2659);
-                                                let _e2682 = select(_e2655, _e2676, select(false, select(false, (_e2676 > _e2644), (_e2674 < 1f)), (1u < _e2646)));
-                                                let _e2687 = sd_map.member[(_e2649 + select(2u, _e2669, (_e2669 < 2u)))];
-                                                let _e2689 = ((_e2687 * _e2660) + _e2659);
-                                                let _e2695 = select(_e2655, _e2689, select(false, select(false, (_e2689 > _e2644), (_e2687 < 1f)), (2u < _e2646)));
-                                                let _e2700 = sd_map.member[(_e2649 + select(3u, _e2669, (_e2669 < 3u)))];
-                                                let _e2702 = ((_e2700 * _e2660) + _e2659);
-                                                let _e2708 = select(_e2655, _e2702, select(false, select(false, (_e2702 > _e2644), (_e2700 < 1f)), (3u < _e2646)));
-                                                if (_e2646 > 4u) {
-                                                    let _e2714 = sd_map.member[(_e2649 + select(4u, _e2669, (_e2669 < 4u)))];
-                                                    let _e2716 = ((_e2714 * _e2660) + _e2659);
-                                                    let _e2727 = sd_map.member[(_e2649 + select(5u, _e2669, (_e2669 < 5u)))];
-                                                    let _e2729 = ((_e2727 * _e2660) + _e2659);
-                                                    let _e2740 = sd_map.member[(_e2649 + select(6u, _e2669, (_e2669 < 6u)))];
-                                                    let _e2742 = ((_e2740 * _e2660) + _e2659);
-                                                    let _e2753 = sd_map.member[(_e2649 + select(7u, _e2669, (_e2669 < 7u)))];
-                                                    let _e2755 = ((_e2753 * _e2660) + _e2659);
-                                                    phi_4945_ = select(_e2655, _e2742, select(false, select(false, (_e2742 > _e2644), (_e2740 < 1f)), (6u < _e2646)));
-                                                    phi_4946_ = select(_e2655, _e2729, select(false, select(false, (_e2729 > _e2644), (_e2727 < 1f)), (5u < _e2646)));
-                                                    phi_4947_ = select(_e2655, _e2716, select(false, select(false, (_e2716 > _e2644), (_e2714 < 1f)), (4u < _e2646)));
-                                                    phi_4948_ = select(_e2655, _e2755, select(false, select(false, (_e2755 > _e2644), (_e2753 < 1f)), (7u < _e2646)));
+                                                let _e2648 = select(0x1.fffffep+127f, (select(_e2638, _e955, ((_e955 > _e2638) || (_e2638 != _e2638))) * 1.001f), select(false, (abs((_e2638 - _e955)) <= _e238), _e2478));
+                                                let _e2650 = frame.member[0u].member_1.member_6;
+                                                let _e2653 = (((_e2537 * _e2508) + _e2523) * _e2650);
+                                                let _e2655 = sd_map.member[_e2653];
+                                                let _e2659 = frame.member[0u].member_1.member.member.member_3;
+                                                let _e2663 = frame.member[0u].member_1.member.member.member_2;
+                                                let _e2664 = (_e2659 - _e2663);
+                                                let _e2666 = ((_e2655 * _e2664) + _e2663);
+                                                let _e2672 = select(_e2659, _e2666, select(false, select(false, (_e2666 > _e2648), (_e2655 < 1f)), (0u < _e2650)));
+                                                let _e2673 = (_e2650 - 1u);
+                                                let _e2678 = sd_map.member[(_e2653 + select(1u, _e2673, (_e2673 < 1u)))];
+                                                let _e2680 = ((_e2678 * _e2664) + _e2663);
+                                                let _e2686 = select(_e2659, _e2680, select(false, select(false, (_e2680 > _e2648), (_e2678 < 1f)), (1u < _e2650)));
+                                                let _e2691 = sd_map.member[(_e2653 + select(2u, _e2673, (_e2673 < 2u)))];
+                                                let _e2693 = ((_e2691 * _e2664) + _e2663);
+                                                let _e2699 = select(_e2659, _e2693, select(false, select(false, (_e2693 > _e2648), (_e2691 < 1f)), (2u < _e2650)));
+                                                let _e2704 = sd_map.member[(_e2653 + select(3u, _e2673, (_e2673 < 3u)))];
+                                                let _e2706 = ((_e2704 * _e2664) + _e2663);
+                                                let _e2712 = select(_e2659, _e2706, select(false, select(false, (_e2706 > _e2648), (_e2704 < 1f)), (3u < _e2650)));
+                                                if (_e2650 > 4u) {
+                                                    let _e2718 = sd_map.member[(_e2653 + select(4u, _e2673, (_e2673 < 4u)))];
+                                                    let _e2720 = ((_e2718 * _e2664) + _e2663);
+                                                    let _e2731 = sd_map.member[(_e2653 + select(5u, _e2673, (_e2673 < 5u)))];
+                                                    let _e2733 = ((_e2731 * _e2664) + _e2663);
+                                                    let _e2744 = sd_map.member[(_e2653 + select(6u, _e2673, (_e2673 < 6u)))];
+                                                    let _e2746 = ((_e2744 * _e2664) + _e2663);
+                                                    let _e2757 = sd_map.member[(_e2653 + select(7u, _e2673, (_e2673 < 7u)))];
+                                                    let _e2759 = ((_e2757 * _e2664) + _e2663);
+                                                    phi_4955_ = select(_e2659, _e2746, select(false, select(false, (_e2746 > _e2648), (_e2744 < 1f)), (6u < _e2650)));
+                                                    phi_4956_ = select(_e2659, _e2733, select(false, select(false, (_e2733 > _e2648), (_e2731 < 1f)), (5u < _e2650)));
+                                                    phi_4957_ = select(_e2659, _e2720, select(false, select(false, (_e2720 > _e2648), (_e2718 < 1f)), (4u < _e2650)));
+                                                    phi_4958_ = select(_e2659, _e2759, select(false, select(false, (_e2759 > _e2648), (_e2757 < 1f)), (7u < _e2650)));
                                                 } else {
-                                                    phi_4945_ = _e2655;
-                                                    phi_4946_ = _e2655;
-                                                    phi_4947_ = _e2655;
-                                                    phi_4948_ = _e2655;
+                                                    phi_4955_ = _e2659;
+                                                    phi_4956_ = _e2659;
+                                                    phi_4957_ = _e2659;
+                                                    phi_4958_ = _e2659;
                                                 }
-                                                let _e2763 = phi_4945_;
-                                                let _e2765 = phi_4946_;
-                                                let _e2767 = phi_4947_;
-                                                let _e2769 = phi_4948_;
-                                                let _e2771 = (_e2682 != _e2682);
-                                                let _e2773 = select(_e2682, _e2668, ((_e2668 < _e2682) || _e2771));
-                                                let _e2776 = select(_e2682, _e2668, ((_e2668 > _e2682) || _e2771));
-                                                let _e2778 = (_e2708 != _e2708);
-                                                let _e2780 = select(_e2708, _e2695, ((_e2695 < _e2708) || _e2778));
-                                                let _e2783 = select(_e2708, _e2695, ((_e2695 > _e2708) || _e2778));
-                                                let _e2785 = (_e2765 != _e2765);
-                                                let _e2787 = select(_e2765, _e2767, ((_e2767 < _e2765) || _e2785));
-                                                let _e2790 = select(_e2765, _e2767, ((_e2767 > _e2765) || _e2785));
-                                                let _e2792 = (_e2769 != _e2769);
-                                                let _e2794 = select(_e2769, _e2763, ((_e2763 < _e2769) || _e2792));
-                                                let _e2797 = select(_e2769, _e2763, ((_e2763 > _e2769) || _e2792));
-                                                let _e2799 = (_e2780 != _e2780);
-                                                let _e2801 = select(_e2780, _e2773, ((_e2773 < _e2780) || _e2799));
-                                                let _e2804 = select(_e2780, _e2773, ((_e2773 > _e2780) || _e2799));
-                                                let _e2806 = (_e2783 != _e2783);
-                                                let _e2808 = select(_e2783, _e2776, ((_e2776 < _e2783) || _e2806));
-                                                let _e2811 = select(_e2783, _e2776, ((_e2776 > _e2783) || _e2806));
-                                                let _e2813 = (_e2794 != _e2794);
-                                                let _e2815 = select(_e2794, _e2787, ((_e2787 < _e2794) || _e2813));
-                                                let _e2818 = select(_e2794, _e2787, ((_e2787 > _e2794) || _e2813));
-                                                let _e2820 = (_e2797 != _e2797);
-                                                let _e2822 = select(_e2797, _e2790, ((_e2790 < _e2797) || _e2820));
-                                                let _e2825 = select(_e2797, _e2790, ((_e2790 > _e2797) || _e2820));
-                                                let _e2827 = (_e2804 != _e2804);
-                                                let _e2829 = select(_e2804, _e2808, ((_e2808 < _e2804) || _e2827));
-                                                let _e2832 = select(_e2804, _e2808, ((_e2808 > _e2804) || _e2827));
-                                                let _e2834 = (_e2818 != _e2818);
-                                                let _e2836 = select(_e2818, _e2822, ((_e2822 < _e2818) || _e2834));
-                                                let _e2839 = select(_e2818, _e2822, ((_e2822 > _e2818) || _e2834));
-                                                let _e2841 = (_e2815 != _e2815);
-                                                let _e2843 = select(_e2815, _e2801, ((_e2801 < _e2815) || _e2841));
-                                                let _e2846 = select(_e2815, _e2801, ((_e2801 > _e2815) || _e2841));
-                                                let _e2848 = (_e2836 != _e2836);
-                                                let _e2850 = select(_e2836, _e2829, ((_e2829 < _e2836) || _e2848));
-                                                let _e2853 = select(_e2836, _e2829, ((_e2829 > _e2836) || _e2848));
-                                                let _e2855 = (_e2839 != _e2839);
-                                                let _e2857 = select(_e2839, _e2832, ((_e2832 < _e2839) || _e2855));
-                                                let _e2860 = select(_e2839, _e2832, ((_e2832 > _e2839) || _e2855));
-                                                let _e2862 = (_e2825 != _e2825);
-                                                let _e2864 = select(_e2825, _e2811, ((_e2811 < _e2825) || _e2862));
-                                                let _e2867 = select(_e2825, _e2811, ((_e2811 > _e2825) || _e2862));
-                                                let _e2869 = (_e2846 != _e2846);
-                                                let _e2871 = select(_e2846, _e2857, ((_e2857 < _e2846) || _e2869));
-                                                let _e2874 = select(_e2846, _e2857, ((_e2857 > _e2846) || _e2869));
-                                                let _e2876 = (_e2853 != _e2853);
-                                                let _e2878 = select(_e2853, _e2864, ((_e2864 < _e2853) || _e2876));
-                                                let _e2881 = select(_e2853, _e2864, ((_e2864 > _e2853) || _e2876));
-                                                let _e2883 = (_e2871 != _e2871);
-                                                let _e2885 = select(_e2871, _e2850, ((_e2850 < _e2871) || _e2883));
-                                                let _e2888 = select(_e2871, _e2850, ((_e2850 > _e2871) || _e2883));
-                                                let _e2890 = (_e2874 != _e2874);
-                                                let _e2892 = select(_e2874, _e2878, ((_e2878 < _e2874) || _e2890));
-                                                let _e2895 = select(_e2874, _e2878, ((_e2878 > _e2874) || _e2890));
-                                                let _e2897 = (_e2860 != _e2860);
-                                                let _e2899 = select(_e2860, _e2881, ((_e2881 < _e2860) || _e2897));
-                                                let _e2902 = select(_e2860, _e2881, ((_e2881 > _e2860) || _e2897));
-                                                let _e2906 = select(false, (_e2843 > (_e955 + _e238)), (_e2843 < _e2655));
-                                                let _e2908 = ((_e2576 * 2f) - 1f);
-                                                let _e2912 = ((_e2582 * -2f) + 1f);
-                                                let _e2922 = (_e2908 * _e225.member.member_1.x);
-                                                let _e2924 = (_e2912 * _e225.member.member_1.y);
-                                                let _e2926 = ((_e2922 * _e2885) - _e466);
-                                                let _e2927 = ((_e2924 * _e2885) - _e473);
-                                                let _e2928 = (_e2885 - _e459);
+                                                let _e2767 = phi_4955_;
+                                                let _e2769 = phi_4956_;
+                                                let _e2771 = phi_4957_;
+                                                let _e2773 = phi_4958_;
+                                                let _e2775 = (_e2686 != _e2686);
+                                                let _e2777 = select(_e2686, _e2672, ((_e2672 < _e2686) || _e2775));
+                                                let _e2780 = select(_e2686, _e2672, ((_e2672 > _e2686) || _e2775));
+                                                let _e2782 = (_e2712 != _e2712);
+                                                let _e2784 = select(_e2712, _e2699, ((_e2699 < _e2712) || _e2782));
+                                                let _e2787 = select(_e2712, _e2699, ((_e2699 > _e2712) || _e2782));
+                                                let _e2789 = (_e2769 != _e2769);
+                                                let _e2791 = select(_e2769, _e2771, ((_e2771 < _e2769) || _e2789));
+                                                let _e2794 = select(_e2769, _e2771, ((_e2771 > _e2769) || _e2789));
+                                                let _e2796 = (_e2773 != _e2773);
+                                                let _e2798 = select(_e2773, _e2767, ((_e2767 < _e2773) || _e2796));
+                                                let _e2801 = select(_e2773, _e2767, ((_e2767 > _e2773) || _e2796));
+                                                let _e2803 = (_e2784 != _e2784);
+                                                let _e2805 = select(_e2784, _e2777, ((_e2777 < _e2784) || _e2803));
+                                                let _e2808 = select(_e2784, _e2777, ((_e2777 > _e2784) || _e2803));
+                                                let _e2810 = (_e2787 != _e2787);
+                                                let _e2812 = select(_e2787, _e2780, ((_e2780 < _e2787) || _e2810));
+                                                let _e2815 = select(_e2787, _e2780, ((_e2780 > _e2787) || _e2810));
+                                                let _e2817 = (_e2798 != _e2798);
+                                                let _e2819 = select(_e2798, _e2791, ((_e2791 < _e2798) || _e2817));
+                                                let _e2822 = select(_e2798, _e2791, ((_e2791 > _e2798) || _e2817));
+                                                let _e2824 = (_e2801 != _e2801);
+                                                let _e2826 = select(_e2801, _e2794, ((_e2794 < _e2801) || _e2824));
+                                                let _e2829 = select(_e2801, _e2794, ((_e2794 > _e2801) || _e2824));
+                                                let _e2831 = (_e2808 != _e2808);
+                                                let _e2833 = select(_e2808, _e2812, ((_e2812 < _e2808) || _e2831));
+                                                let _e2836 = select(_e2808, _e2812, ((_e2812 > _e2808) || _e2831));
+                                                let _e2838 = (_e2822 != _e2822);
+                                                let _e2840 = select(_e2822, _e2826, ((_e2826 < _e2822) || _e2838));
+                                                let _e2843 = select(_e2822, _e2826, ((_e2826 > _e2822) || _e2838));
+                                                let _e2845 = (_e2819 != _e2819);
+                                                let _e2847 = select(_e2819, _e2805, ((_e2805 < _e2819) || _e2845));
+                                                let _e2850 = select(_e2819, _e2805, ((_e2805 > _e2819) || _e2845));
+                                                let _e2852 = (_e2840 != _e2840);
+                                                let _e2854 = select(_e2840, _e2833, ((_e2833 < _e2840) || _e2852));
+                                                let _e2857 = select(_e2840, _e2833, ((_e2833 > _e2840) || _e2852));
+                                                let _e2859 = (_e2843 != _e2843);
+                                                let _e2861 = select(_e2843, _e2836, ((_e2836 < _e2843) || _e2859));
+                                                let _e2864 = select(_e2843, _e2836, ((_e2836 > _e2843) || _e2859));
+                                                let _e2866 = (_e2829 != _e2829);
+                                                let _e2868 = select(_e2829, _e2815, ((_e2815 < _e2829) || _e2866));
+                                                let _e2871 = select(_e2829, _e2815, ((_e2815 > _e2829) || _e2866));
+                                                let _e2873 = (_e2850 != _e2850);
+                                                let _e2875 = select(_e2850, _e2861, ((_e2861 < _e2850) || _e2873));
+                                                let _e2878 = select(_e2850, _e2861, ((_e2861 > _e2850) || _e2873));
+                                                let _e2880 = (_e2857 != _e2857);
+                                                let _e2882 = select(_e2857, _e2868, ((_e2868 < _e2857) || _e2880));
+                                                let _e2885 = select(_e2857, _e2868, ((_e2868 > _e2857) || _e2880));
+                                                let _e2887 = (_e2875 != _e2875);
+                                                let _e2889 = select(_e2875, _e2854, ((_e2854 < _e2875) || _e2887));
+                                                let _e2892 = select(_e2875, _e2854, ((_e2854 > _e2875) || _e2887));
+                                                let _e2894 = (_e2878 != _e2878);
+                                                let _e2896 = select(_e2878, _e2882, ((_e2882 < _e2878) || _e2894));
+                                                let _e2899 = select(_e2878, _e2882, ((_e2882 > _e2878) || _e2894));
+                                                let _e2901 = (_e2864 != _e2864);
+                                                let _e2903 = select(_e2864, _e2885, ((_e2885 < _e2864) || _e2901));
+                                                let _e2906 = select(_e2864, _e2885, ((_e2885 > _e2864) || _e2901));
+                                                let _e2910 = select(false, (_e2847 > (_e955 + _e238)), (_e2847 < _e2659));
+                                                let _e2912 = ((_e2577 * 2f) - 1f);
+                                                let _e2916 = ((_e2582 * -2f) + 1f);
+                                                let _e2926 = (_e2912 * _e225.member.member_1.x);
+                                                let _e2928 = (_e2916 * _e225.member.member_1.y);
+                                                let _e2930 = ((_e2926 * _e2889) - _e466);
+                                                let _e2931 = ((_e2928 * _e2889) - _e473);
+                                                let _e2932 = (_e2889 - _e459);
                                                 if _e972 {
-                                                    phi_5290_ = ((((_e2926 * _e2926) + (_e2927 * _e2927)) + (_e2928 * _e2928)) <= (_e241 * _e241));
+                                                    phi_5300_ = ((((_e2930 * _e2930) + (_e2931 * _e2931)) + (_e2932 * _e2932)) <= (_e241 * _e241));
                                                 } else {
-                                                    phi_5290_ = true;
+                                                    phi_5300_ = true;
                                                 }
-                                                let _e2937 = phi_5290_;
-                                                let _e2939 = select(false, _e2937, (_e2885 < _e225.member.member_3));
-                                                if _e2939 {
-                                                    let _e2940 = (_e2888 < _e225.member.member_3);
-                                                    let _e2949 = select((_e2926 - _e2372), ((_e2922 * _e2888) - _e466), _e2940);
-                                                    let _e2950 = select((_e2927 - _e2373), ((_e2924 * _e2888) - _e473), _e2940);
-                                                    let _e2951 = select((_e2928 - _e2374), (_e2888 - _e459), _e2940);
-                                                    let _e2963 = ((((_e2926 * _e484) + (_e2927 * _e485)) + (_e2928 * _e486)) * inverseSqrt((((_e2926 * _e2926) + (_e2927 * _e2927)) + (_e2928 * _e2928))));
-                                                    let _e2967 = select(-1f, select(1f, _e2963, (_e2963 < 1f)), (_e2963 > -1f));
-                                                    let _e2968 = abs(_e2967);
-                                                    let _e2978 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2968, 0.00667009f), _e2968, -0.017088126f), _e2968, 0.03089188f), _e2968, -0.050174303f), _e2968, 0.08897899f), _e2968, -0.2145988f), _e2968, 1.5707963f) * sqrt((1f - _e2968)));
-                                                    let _e2985 = ((((select((3.1415927f - _e2978), _e2978, (_e2967 >= 0f)) + _e2457) - _e2453) + 1.5707964f) * 0.31830987f);
-                                                    let _e3001 = ((((_e2949 * _e484) + (_e2950 * _e485)) + (_e2951 * _e486)) * inverseSqrt((((_e2949 * _e2949) + (_e2950 * _e2950)) + (_e2951 * _e2951))));
-                                                    let _e3005 = select(-1f, select(1f, _e3001, (_e3001 < 1f)), (_e3001 > -1f));
-                                                    let _e3006 = abs(_e3005);
-                                                    let _e3016 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3006, 0.00667009f), _e3006, -0.017088126f), _e3006, 0.03089188f), _e3006, -0.050174303f), _e3006, 0.08897899f), _e3006, -0.2145988f), _e3006, 1.5707963f) * sqrt((1f - _e3006)));
-                                                    let _e3023 = ((((select((3.1415927f - _e3016), _e3016, (_e3005 >= 0f)) + _e2457) - _e2453) + 1.5707964f) * 0.31830987f);
-                                                    let _e3028 = (1f - select(0f, select(1f, _e2985, (_e2985 < 1f)), (_e2985 > 0f)));
-                                                    let _e3029 = (1f - select(0f, select(1f, _e3023, (_e3023 < 1f)), (_e3023 > 0f)));
-                                                    let _e3031 = (_e3029 != _e3029);
-                                                    let _e3033 = select(_e3029, _e3028, ((_e3028 < _e3029) || _e3031));
-                                                    let _e3036 = select(_e3029, _e3028, ((_e3028 > _e3029) || _e3031));
-                                                    let _e3038 = floor((_e3033 * 32f));
+                                                let _e2941 = phi_5300_;
+                                                let _e2943 = select(false, _e2941, (_e2889 < _e225.member.member_3));
+                                                if _e2943 {
+                                                    let _e2944 = (_e2892 < _e225.member.member_3);
+                                                    let _e2953 = select((_e2930 - _e2374), ((_e2926 * _e2892) - _e466), _e2944);
+                                                    let _e2954 = select((_e2931 - _e2375), ((_e2928 * _e2892) - _e473), _e2944);
+                                                    let _e2955 = select((_e2932 - _e2376), (_e2892 - _e459), _e2944);
+                                                    let _e2967 = ((((_e2930 * _e484) + (_e2931 * _e485)) + (_e2932 * _e486)) * inverseSqrt((((_e2930 * _e2930) + (_e2931 * _e2931)) + (_e2932 * _e2932))));
+                                                    let _e2971 = select(-1f, select(1f, _e2967, (_e2967 < 1f)), (_e2967 > -1f));
+                                                    let _e2972 = abs(_e2971);
+                                                    let _e2982 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2972, 0.00667009f), _e2972, -0.017088126f), _e2972, 0.03089188f), _e2972, -0.050174303f), _e2972, 0.08897899f), _e2972, -0.2145988f), _e2972, 1.5707963f) * sqrt((1f - _e2972)));
+                                                    let _e2989 = ((((select((3.1415927f - _e2982), _e2982, (_e2971 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
+                                                    let _e3005 = ((((_e2953 * _e484) + (_e2954 * _e485)) + (_e2955 * _e486)) * inverseSqrt((((_e2953 * _e2953) + (_e2954 * _e2954)) + (_e2955 * _e2955))));
+                                                    let _e3009 = select(-1f, select(1f, _e3005, (_e3005 < 1f)), (_e3005 > -1f));
+                                                    let _e3010 = abs(_e3009);
+                                                    let _e3020 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3010, 0.00667009f), _e3010, -0.017088126f), _e3010, 0.03089188f), _e3010, -0.050174303f), _e3010, 0.08897899f), _e3010, -0.2145988f), _e3010, 1.5707963f) * sqrt((1f - _e3010)));
+                                                    let _e3027 = ((((select((3.1415927f - _e3020), _e3020, (_e3009 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
+                                                    let _e3032 = (1f - select(0f, select(1f, _e2989, (_e2989 < 1f)), (_e2989 > 0f)));
+                                                    let _e3033 = (1f - select(0f, select(1f, _e3027, (_e3027 < 1f)), (_e3027 > 0f)));
+                                                    let _e3035 = (_e3033 != _e3033);
+                                                    let _e3037 = select(_e3033, _e3032, ((_e3032 < _e3033) || _e3035));
+                                                    let _e3040 = select(_e3033, _e3032, ((_e3032 > _e3033) || _e3035));
+                                                    let _e3042 = floor((_e3037 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e3046 = -(floor((_e3036 * -32f)));
-                                                        let _e3051 = (select(32f, _e3046, ((_e3046 < 32f) || false)) - _e3038);
-                                                        phi_5517_ = select(select(0f, _e3051, ((_e3051 > 0f) || false)), 0f, (_e3036 <= _e3033));
+                                                        let _e3050 = -(floor((_e3040 * -32f)));
+                                                        let _e3055 = (select(32f, _e3050, ((_e3050 < 32f) || false)) - _e3042);
+                                                        phi_5527_ = select(select(0f, _e3055, ((_e3055 > 0f) || false)), 0f, (_e3040 <= _e3037));
                                                     } else {
-                                                        phi_5517_ = -(floor(((_e3036 - _e3033) * -32f)));
+                                                        phi_5527_ = -(floor(((_e3040 - _e3037) * -32f)));
                                                     }
-                                                    let _e3057 = phi_5517_;
-                                                    let _e3065 = (bitcast<u32>((floor(select(0f, select(32f, _e3038, (_e3038 < 32f)), (_e3038 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e3073 = (bitcast<u32>((floor(select(0f, select(32f, _e3057, (_e3057 < 32f)), (_e3057 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e3065 >= 32u) {
-                                                        phi_5571_ = u32();
-                                                        phi_5572_ = true;
+                                                    let _e3061 = phi_5527_;
+                                                    let _e3069 = (bitcast<u32>((floor(select(0f, select(32f, _e3042, (_e3042 < 32f)), (_e3042 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e3077 = (bitcast<u32>((floor(select(0f, select(32f, _e3061, (_e3061 < 32f)), (_e3061 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e3069 >= 32u) {
+                                                        phi_5581_ = u32();
+                                                        phi_5582_ = true;
                                                     } else {
-                                                        let _e3075 = (_e3073 == 0u);
-                                                        if _e3075 {
-                                                            phi_5570_ = u32();
+                                                        let _e3079 = (_e3077 == 0u);
+                                                        if _e3079 {
+                                                            phi_5580_ = u32();
                                                         } else {
-                                                            if (_e3073 >= 32u) {
-                                                                phi_5567_ = 4294967295u;
+                                                            if (_e3077 >= 32u) {
+                                                                phi_5577_ = 4294967295u;
                                                             } else {
-                                                                phi_5567_ = ((1u << bitcast<u32>((_e3073 & 31u))) - 1u);
+                                                                phi_5577_ = ((1u << bitcast<u32>((_e3077 & 31u))) - 1u);
                                                             }
-                                                            let _e3082 = phi_5567_;
-                                                            phi_5570_ = (_e3082 << bitcast<u32>((_e3065 & 31u)));
+                                                            let _e3086 = phi_5577_;
+                                                            phi_5580_ = (_e3086 << bitcast<u32>((_e3069 & 31u)));
                                                         }
-                                                        let _e3087 = phi_5570_;
-                                                        phi_5571_ = _e3087;
-                                                        phi_5572_ = _e3075;
+                                                        let _e3091 = phi_5580_;
+                                                        phi_5581_ = _e3091;
+                                                        phi_5582_ = _e3079;
                                                     }
-                                                    let _e3089 = phi_5571_;
-                                                    let _e3091 = phi_5572_;
-                                                    phi_5585_ = select(0u, select(select(_e3089, 0u, _e3091), 0u, _e2463), _e2939);
+                                                    let _e3093 = phi_5581_;
+                                                    let _e3095 = phi_5582_;
+                                                    phi_5595_ = select(0u, select(select(_e3093, 0u, _e3095), 0u, _e2465), _e2943);
                                                 } else {
-                                                    phi_5585_ = 0u;
+                                                    phi_5595_ = 0u;
                                                 }
-                                                let _e3096 = phi_5585_;
-                                                let _e3099 = ((_e2922 * _e2892) - _e466);
-                                                let _e3100 = ((_e2924 * _e2892) - _e473);
-                                                let _e3101 = (_e2892 - _e459);
+                                                let _e3100 = phi_5595_;
+                                                let _e3103 = ((_e2926 * _e2896) - _e466);
+                                                let _e3104 = ((_e2928 * _e2896) - _e473);
+                                                let _e3105 = (_e2896 - _e459);
                                                 if _e972 {
-                                                    phi_5616_ = ((((_e3099 * _e3099) + (_e3100 * _e3100)) + (_e3101 * _e3101)) <= (_e241 * _e241));
+                                                    phi_5626_ = ((((_e3103 * _e3103) + (_e3104 * _e3104)) + (_e3105 * _e3105)) <= (_e241 * _e241));
                                                 } else {
-                                                    phi_5616_ = true;
+                                                    phi_5626_ = true;
                                                 }
-                                                let _e3110 = phi_5616_;
-                                                let _e3112 = select(false, _e3110, (_e2892 < _e225.member.member_3));
-                                                if _e3112 {
-                                                    let _e3113 = (_e2895 < _e225.member.member_3);
-                                                    let _e3122 = select((_e3099 - _e2372), ((_e2922 * _e2895) - _e466), _e3113);
-                                                    let _e3123 = select((_e3100 - _e2373), ((_e2924 * _e2895) - _e473), _e3113);
-                                                    let _e3124 = select((_e3101 - _e2374), (_e2895 - _e459), _e3113);
-                                                    let _e3136 = ((((_e3099 * _e484) + (_e3100 * _e485)) + (_e3101 * _e486)) * inverseSqrt((((_e3099 * _e3099) + (_e3100 * _e3100)) + (_e3101 * _e3101))));
-                                                    let _e3140 = select(-1f, select(1f, _e3136, (_e3136 < 1f)), (_e3136 > -1f));
-                                                    let _e3141 = abs(_e3140);
-                                                    let _e3151 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3141, 0.00667009f), _e3141, -0.017088126f), _e3141, 0.03089188f), _e3141, -0.050174303f), _e3141, 0.08897899f), _e3141, -0.2145988f), _e3141, 1.5707963f) * sqrt((1f - _e3141)));
-                                                    let _e3158 = ((((select((3.1415927f - _e3151), _e3151, (_e3140 >= 0f)) + _e2457) - _e2453) + 1.5707964f) * 0.31830987f);
-                                                    let _e3174 = ((((_e3122 * _e484) + (_e3123 * _e485)) + (_e3124 * _e486)) * inverseSqrt((((_e3122 * _e3122) + (_e3123 * _e3123)) + (_e3124 * _e3124))));
-                                                    let _e3178 = select(-1f, select(1f, _e3174, (_e3174 < 1f)), (_e3174 > -1f));
-                                                    let _e3179 = abs(_e3178);
-                                                    let _e3189 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3179, 0.00667009f), _e3179, -0.017088126f), _e3179, 0.03089188f), _e3179, -0.050174303f), _e3179, 0.08897899f), _e3179, -0.2145988f), _e3179, 1.5707963f) * sqrt((1f - _e3179)));
-                                                    let _e3196 = ((((select((3.1415927f - _e3189), _e3189, (_e3178 >= 0f)) + _e2457) - _e2453) + 1.5707964f) * 0.31830987f);
-                                                    let _e3201 = (1f - select(0f, select(1f, _e3158, (_e3158 < 1f)), (_e3158 > 0f)));
-                                                    let _e3202 = (1f - select(0f, select(1f, _e3196, (_e3196 < 1f)), (_e3196 > 0f)));
-                                                    let _e3204 = (_e3202 != _e3202);
-                                                    let _e3206 = select(_e3202, _e3201, ((_e3201 < _e3202) || _e3204));
-                                                    let _e3209 = select(_e3202, _e3201, ((_e3201 > _e3202) || _e3204));
-                                                    let _e3211 = floor((_e3206 * 32f));
+                                                let _e3114 = phi_5626_;
+                                                let _e3116 = select(false, _e3114, (_e2896 < _e225.member.member_3));
+                                                if _e3116 {
+                                                    let _e3117 = (_e2899 < _e225.member.member_3);
+                                                    let _e3126 = select((_e3103 - _e2374), ((_e2926 * _e2899) - _e466), _e3117);
+                                                    let _e3127 = select((_e3104 - _e2375), ((_e2928 * _e2899) - _e473), _e3117);
+                                                    let _e3128 = select((_e3105 - _e2376), (_e2899 - _e459), _e3117);
+                                                    let _e3140 = ((((_e3103 * _e484) + (_e3104 * _e485)) + (_e3105 * _e486)) * inverseSqrt((((_e3103 * _e3103) + (_e3104 * _e3104)) + (_e3105 * _e3105))));
+                                                    let _e3144 = select(-1f, select(1f, _e3140, (_e3140 < 1f)), (_e3140 > -1f));
+                                                    let _e3145 = abs(_e3144);
+                                                    let _e3155 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3145, 0.00667009f), _e3145, -0.017088126f), _e3145, 0.03089188f), _e3145, -0.050174303f), _e3145, 0.08897899f), _e3145, -0.2145988f), _e3145, 1.5707963f) * sqrt((1f - _e3145)));
+                                                    let _e3162 = ((((select((3.1415927f - _e3155), _e3155, (_e3144 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
+                                                    let _e3178 = ((((_e3126 * _e484) + (_e3127 * _e485)) + (_e3128 * _e486)) * inverseSqrt((((_e3126 * _e3126) + (_e3127 * _e3127)) + (_e3128 * _e3128))));
+                                                    let _e3182 = select(-1f, select(1f, _e3178, (_e3178 < 1f)), (_e3178 > -1f));
+                                                    let _e3183 = abs(_e3182);
+                                                    let _e3193 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3183, 0.00667009f), _e3183, -0.017088126f), _e3183, 0.03089188f), _e3183, -0.050174303f), _e3183, 0.08897899f), _e3183, -0.2145988f), _e3183, 1.5707963f) * sqrt((1f - _e3183)));
+                                                    let _e3200 = ((((select((3.1415927f - _e3193), _e3193, (_e3182 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
+                                                    let _e3205 = (1f - select(0f, select(1f, _e3162, (_e3162 < 1f)), (_e3162 > 0f)));
+                                                    let _e3206 = (1f - select(0f, select(1f, _e3200, (_e3200 < 1f)), (_e3200 > 0f)));
+                                                    let _e3208 = (_e3206 != _e3206);
+                                                    let _e3210 = select(_e3206, _e3205, ((_e3205 < _e3206) || _e3208));
+                                                    let _e3213 = select(_e3206, _e3205, ((_e3205 > _e3206) || _e3208));
+                                                    let _e3215 = floor((_e3210 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e3219 = -(floor((_e3209 * -32f)));
-                                                        let _e3224 = (select(32f, _e3219, ((_e3219 < 32f) || false)) - _e3211);
-                                                        phi_5843_ = select(select(0f, _e3224, ((_e3224 > 0f) || false)), 0f, (_e3209 <= _e3206));
+                                                        let _e3223 = -(floor((_e3213 * -32f)));
+                                                        let _e3228 = (select(32f, _e3223, ((_e3223 < 32f) || false)) - _e3215);
+                                                        phi_5853_ = select(select(0f, _e3228, ((_e3228 > 0f) || false)), 0f, (_e3213 <= _e3210));
                                                     } else {
-                                                        phi_5843_ = -(floor(((_e3209 - _e3206) * -32f)));
+                                                        phi_5853_ = -(floor(((_e3213 - _e3210) * -32f)));
                                                     }
-                                                    let _e3230 = phi_5843_;
-                                                    let _e3238 = (bitcast<u32>((floor(select(0f, select(32f, _e3211, (_e3211 < 32f)), (_e3211 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e3246 = (bitcast<u32>((floor(select(0f, select(32f, _e3230, (_e3230 < 32f)), (_e3230 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e3238 >= 32u) {
-                                                        phi_5897_ = u32();
-                                                        phi_5898_ = true;
+                                                    let _e3234 = phi_5853_;
+                                                    let _e3242 = (bitcast<u32>((floor(select(0f, select(32f, _e3215, (_e3215 < 32f)), (_e3215 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e3250 = (bitcast<u32>((floor(select(0f, select(32f, _e3234, (_e3234 < 32f)), (_e3234 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e3242 >= 32u) {
+                                                        phi_5907_ = u32();
+                                                        phi_5908_ = true;
                                                     } else {
-                                                        let _e3248 = (_e3246 == 0u);
-                                                        if _e3248 {
-                                                            phi_5896_ = u32();
+                                                        let _e3252 = (_e3250 == 0u);
+                                                        if _e3252 {
+                                                            phi_5906_ = u32();
                                                         } else {
-                                                            if (_e3246 >= 32u) {
-                                                                phi_5893_ = 4294967295u;
+                                                            if (_e3250 >= 32u) {
+                                                                phi_5903_ = 4294967295u;
                                                             } else {
-                                                                phi_5893_ = ((1u << bitcast<u32>((_e3246 & 31u))) - 1u);
+                                                                phi_5903_ = ((1u << bitcast<u32>((_e3250 & 31u))) - 1u);
                                                             }
-                                                            let _e3255 = phi_5893_;
-                                                            phi_5896_ = (_e3255 << bitcast<u32>((_e3238 & 31u)));
+                                                            let _e3259 = phi_5903_;
+                                                            phi_5906_ = (_e3259 << bitcast<u32>((_e3242 & 31u)));
                                                         }
-                                                        let _e3260 = phi_5896_;
-                                                        phi_5897_ = _e3260;
-                                                        phi_5898_ = _e3248;
+                                                        let _e3264 = phi_5906_;
+                                                        phi_5907_ = _e3264;
+                                                        phi_5908_ = _e3252;
                                                     }
-                                                    let _e3262 = phi_5897_;
-                                                    let _e3264 = phi_5898_;
-                                                    phi_5911_ = select(0u, select(select(_e3262, 0u, _e3264), 0u, _e2463), _e3112);
+                                                    let _e3266 = phi_5907_;
+                                                    let _e3268 = phi_5908_;
+                                                    phi_5921_ = select(0u, select(select(_e3266, 0u, _e3268), 0u, _e2465), _e3116);
                                                 } else {
-                                                    phi_5911_ = 0u;
+                                                    phi_5921_ = 0u;
                                                 }
-                                                let _e3269 = phi_5911_;
-                                                let _e3273 = ((_e2922 * _e2899) - _e466);
-                                                let _e3274 = ((_e2924 * _e2899) - _e473);
-                                                let _e3275 = (_e2899 - _e459);
+                                                let _e3273 = phi_5921_;
+                                                let _e3277 = ((_e2926 * _e2903) - _e466);
+                                                let _e3278 = ((_e2928 * _e2903) - _e473);
+                                                let _e3279 = (_e2903 - _e459);
                                                 if _e972 {
-                                                    phi_5943_ = ((((_e3273 * _e3273) + (_e3274 * _e3274)) + (_e3275 * _e3275)) <= (_e241 * _e241));
+                                                    phi_5953_ = ((((_e3277 * _e3277) + (_e3278 * _e3278)) + (_e3279 * _e3279)) <= (_e241 * _e241));
                                                 } else {
-                                                    phi_5943_ = true;
+                                                    phi_5953_ = true;
                                                 }
-                                                let _e3284 = phi_5943_;
-                                                let _e3286 = select(false, _e3284, (_e2899 < _e225.member.member_3));
-                                                if _e3286 {
-                                                    let _e3287 = (_e2902 < _e225.member.member_3);
-                                                    let _e3296 = select((_e3273 - _e2372), ((_e2922 * _e2902) - _e466), _e3287);
-                                                    let _e3297 = select((_e3274 - _e2373), ((_e2924 * _e2902) - _e473), _e3287);
-                                                    let _e3298 = select((_e3275 - _e2374), (_e2902 - _e459), _e3287);
-                                                    let _e3310 = ((((_e3273 * _e484) + (_e3274 * _e485)) + (_e3275 * _e486)) * inverseSqrt((((_e3273 * _e3273) + (_e3274 * _e3274)) + (_e3275 * _e3275))));
-                                                    let _e3314 = select(-1f, select(1f, _e3310, (_e3310 < 1f)), (_e3310 > -1f));
-                                                    let _e3315 = abs(_e3314);
-                                                    let _e3325 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3315, 0.00667009f), _e3315, -0.017088126f), _e3315, 0.03089188f), _e3315, -0.050174303f), _e3315, 0.08897899f), _e3315, -0.2145988f), _e3315, 1.5707963f) * sqrt((1f - _e3315)));
-                                                    let _e3332 = ((((select((3.1415927f - _e3325), _e3325, (_e3314 >= 0f)) + _e2457) - _e2453) + 1.5707964f) * 0.31830987f);
-                                                    let _e3348 = ((((_e3296 * _e484) + (_e3297 * _e485)) + (_e3298 * _e486)) * inverseSqrt((((_e3296 * _e3296) + (_e3297 * _e3297)) + (_e3298 * _e3298))));
-                                                    let _e3352 = select(-1f, select(1f, _e3348, (_e3348 < 1f)), (_e3348 > -1f));
-                                                    let _e3353 = abs(_e3352);
-                                                    let _e3363 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3353, 0.00667009f), _e3353, -0.017088126f), _e3353, 0.03089188f), _e3353, -0.050174303f), _e3353, 0.08897899f), _e3353, -0.2145988f), _e3353, 1.5707963f) * sqrt((1f - _e3353)));
-                                                    let _e3370 = ((((select((3.1415927f - _e3363), _e3363, (_e3352 >= 0f)) + _e2457) - _e2453) + 1.5707964f) * 0.31830987f);
-                                                    let _e3375 = (1f - select(0f, select(1f, _e3332, (_e3332 < 1f)), (_e3332 > 0f)));
-                                                    let _e3376 = (1f - select(0f, select(1f, _e3370, (_e3370 < 1f)), (_e3370 > 0f)));
-                                                    let _e3378 = (_e3376 != _e3376);
-                                                    let _e3380 = select(_e3376, _e3375, ((_e3375 < _e3376) || _e3378));
-                                                    let _e3383 = select(_e3376, _e3375, ((_e3375 > _e3376) || _e3378));
-                                                    let _e3385 = floor((_e3380 * 32f));
+                                                let _e3288 = phi_5953_;
+                                                let _e3290 = select(false, _e3288, (_e2903 < _e225.member.member_3));
+                                                if _e3290 {
+                                                    let _e3291 = (_e2906 < _e225.member.member_3);
+                                                    let _e3300 = select((_e3277 - _e2374), ((_e2926 * _e2906) - _e466), _e3291);
+                                                    let _e3301 = select((_e3278 - _e2375), ((_e2928 * _e2906) - _e473), _e3291);
+                                                    let _e3302 = select((_e3279 - _e2376), (_e2906 - _e459), _e3291);
+                                                    let _e3314 = ((((_e3277 * _e484) + (_e3278 * _e485)) + (_e3279 * _e486)) * inverseSqrt((((_e3277 * _e3277) + (_e3278 * _e3278)) + (_e3279 * _e3279))));
+                                                    let _e3318 = select(-1f, select(1f, _e3314, (_e3314 < 1f)), (_e3314 > -1f));
+                                                    let _e3319 = abs(_e3318);
+                                                    let _e3329 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3319, 0.00667009f), _e3319, -0.017088126f), _e3319, 0.03089188f), _e3319, -0.050174303f), _e3319, 0.08897899f), _e3319, -0.2145988f), _e3319, 1.5707963f) * sqrt((1f - _e3319)));
+                                                    let _e3336 = ((((select((3.1415927f - _e3329), _e3329, (_e3318 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
+                                                    let _e3352 = ((((_e3300 * _e484) + (_e3301 * _e485)) + (_e3302 * _e486)) * inverseSqrt((((_e3300 * _e3300) + (_e3301 * _e3301)) + (_e3302 * _e3302))));
+                                                    let _e3356 = select(-1f, select(1f, _e3352, (_e3352 < 1f)), (_e3352 > -1f));
+                                                    let _e3357 = abs(_e3356);
+                                                    let _e3367 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3357, 0.00667009f), _e3357, -0.017088126f), _e3357, 0.03089188f), _e3357, -0.050174303f), _e3357, 0.08897899f), _e3357, -0.2145988f), _e3357, 1.5707963f) * sqrt((1f - _e3357)));
+                                                    let _e3374 = ((((select((3.1415927f - _e3367), _e3367, (_e3356 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
+                                                    let _e3379 = (1f - select(0f, select(1f, _e3336, (_e3336 < 1f)), (_e3336 > 0f)));
+                                                    let _e3380 = (1f - select(0f, select(1f, _e3374, (_e3374 < 1f)), (_e3374 > 0f)));
+                                                    let _e3382 = (_e3380 != _e3380);
+                                                    let _e3384 = select(_e3380, _e3379, ((_e3379 < _e3380) || _e3382));
+                                                    let _e3387 = select(_e3380, _e3379, ((_e3379 > _e3380) || _e3382));
+                                                    let _e3389 = floor((_e3384 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e3393 = -(floor((_e3383 * -32f)));
-                                                        let _e3398 = (select(32f, _e3393, ((_e3393 < 32f) || false)) - _e3385);
-                                                        phi_6170_ = select(select(0f, _e3398, ((_e3398 > 0f) || false)), 0f, (_e3383 <= _e3380));
+                                                        let _e3397 = -(floor((_e3387 * -32f)));
+                                                        let _e3402 = (select(32f, _e3397, ((_e3397 < 32f) || false)) - _e3389);
+                                                        phi_6180_ = select(select(0f, _e3402, ((_e3402 > 0f) || false)), 0f, (_e3387 <= _e3384));
                                                     } else {
-                                                        phi_6170_ = -(floor(((_e3383 - _e3380) * -32f)));
+                                                        phi_6180_ = -(floor(((_e3387 - _e3384) * -32f)));
                                                     }
-                                                    let _e3404 = phi_6170_;
-                                                    let _e3412 = (bitcast<u32>((floor(select(0f, select(32f, _e3385, (_e3385 < 32f)), (_e3385 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e3420 = (bitcast<u32>((floor(select(0f, select(32f, _e3404, (_e3404 < 32f)), (_e3404 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e3412 >= 32u) {
-                                                        phi_6224_ = u32();
-                                                        phi_6225_ = true;
+                                                    let _e3408 = phi_6180_;
+                                                    let _e3416 = (bitcast<u32>((floor(select(0f, select(32f, _e3389, (_e3389 < 32f)), (_e3389 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e3424 = (bitcast<u32>((floor(select(0f, select(32f, _e3408, (_e3408 < 32f)), (_e3408 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e3416 >= 32u) {
+                                                        phi_6234_ = u32();
+                                                        phi_6235_ = true;
                                                     } else {
-                                                        let _e3422 = (_e3420 == 0u);
-                                                        if _e3422 {
-                                                            phi_6223_ = u32();
+                                                        let _e3426 = (_e3424 == 0u);
+                                                        if _e3426 {
+                                                            phi_6233_ = u32();
                                                         } else {
-                                                            if (_e3420 >= 32u) {
-                                                                phi_6220_ = 4294967295u;
+                                                            if (_e3424 >= 32u) {
+                                                                phi_6230_ = 4294967295u;
                                                             } else {
-                                                                phi_6220_ = ((1u << bitcast<u32>((_e3420 & 31u))) - 1u);
+                                                                phi_6230_ = ((1u << bitcast<u32>((_e3424 & 31u))) - 1u);
                                                             }
-                                                            let _e3429 = phi_6220_;
-                                                            phi_6223_ = (_e3429 << bitcast<u32>((_e3412 & 31u)));
+                                                            let _e3433 = phi_6230_;
+                                                            phi_6233_ = (_e3433 << bitcast<u32>((_e3416 & 31u)));
                                                         }
-                                                        let _e3434 = phi_6223_;
-                                                        phi_6224_ = _e3434;
-                                                        phi_6225_ = _e3422;
+                                                        let _e3438 = phi_6233_;
+                                                        phi_6234_ = _e3438;
+                                                        phi_6235_ = _e3426;
                                                     }
-                                                    let _e3436 = phi_6224_;
-                                                    let _e3438 = phi_6225_;
-                                                    phi_6238_ = select(0u, select(select(_e3436, 0u, _e3438), 0u, _e2463), _e3286);
+                                                    let _e3440 = phi_6234_;
+                                                    let _e3442 = phi_6235_;
+                                                    phi_6248_ = select(0u, select(select(_e3440, 0u, _e3442), 0u, _e2465), _e3290);
                                                 } else {
-                                                    phi_6238_ = 0u;
+                                                    phi_6248_ = 0u;
                                                 }
-                                                let _e3443 = phi_6238_;
-                                                let _e3447 = ((_e2922 * _e2867) - _e466);
-                                                let _e3448 = ((_e2924 * _e2867) - _e473);
-                                                let _e3449 = (_e2867 - _e459);
+                                                let _e3447 = phi_6248_;
+                                                let _e3451 = ((_e2926 * _e2871) - _e466);
+                                                let _e3452 = ((_e2928 * _e2871) - _e473);
+                                                let _e3453 = (_e2871 - _e459);
                                                 if _e972 {
-                                                    phi_6270_ = ((((_e3447 * _e3447) + (_e3448 * _e3448)) + (_e3449 * _e3449)) <= (_e241 * _e241));
+                                                    phi_6280_ = ((((_e3451 * _e3451) + (_e3452 * _e3452)) + (_e3453 * _e3453)) <= (_e241 * _e241));
                                                 } else {
-                                                    phi_6270_ = true;
+                                                    phi_6280_ = true;
                                                 }
-                                                let _e3458 = phi_6270_;
-                                                let _e3460 = select(false, _e3458, (_e2867 < _e225.member.member_3));
-                                                if _e3460 {
-                                                    let _e3461 = (_e2655 < _e225.member.member_3);
-                                                    let _e3470 = select((_e3447 - _e2372), ((_e2922 * _e2655) - _e466), _e3461);
-                                                    let _e3471 = select((_e3448 - _e2373), ((_e2924 * _e2655) - _e473), _e3461);
-                                                    let _e3472 = select((_e3449 - _e2374), (_e2655 - _e459), _e3461);
-                                                    let _e3484 = ((((_e3447 * _e484) + (_e3448 * _e485)) + (_e3449 * _e486)) * inverseSqrt((((_e3447 * _e3447) + (_e3448 * _e3448)) + (_e3449 * _e3449))));
-                                                    let _e3488 = select(-1f, select(1f, _e3484, (_e3484 < 1f)), (_e3484 > -1f));
-                                                    let _e3489 = abs(_e3488);
-                                                    let _e3499 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3489, 0.00667009f), _e3489, -0.017088126f), _e3489, 0.03089188f), _e3489, -0.050174303f), _e3489, 0.08897899f), _e3489, -0.2145988f), _e3489, 1.5707963f) * sqrt((1f - _e3489)));
-                                                    let _e3506 = ((((select((3.1415927f - _e3499), _e3499, (_e3488 >= 0f)) + _e2457) - _e2453) + 1.5707964f) * 0.31830987f);
-                                                    let _e3522 = ((((_e3470 * _e484) + (_e3471 * _e485)) + (_e3472 * _e486)) * inverseSqrt((((_e3470 * _e3470) + (_e3471 * _e3471)) + (_e3472 * _e3472))));
-                                                    let _e3526 = select(-1f, select(1f, _e3522, (_e3522 < 1f)), (_e3522 > -1f));
-                                                    let _e3527 = abs(_e3526);
-                                                    let _e3537 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3527, 0.00667009f), _e3527, -0.017088126f), _e3527, 0.03089188f), _e3527, -0.050174303f), _e3527, 0.08897899f), _e3527, -0.2145988f), _e3527, 1.5707963f) * sqrt((1f - _e3527)));
-                                                    let _e3544 = ((((select((3.1415927f - _e3537), _e3537, (_e3526 >= 0f)) + _e2457) - _e2453) + 1.5707964f) * 0.31830987f);
-                                                    let _e3549 = (1f - select(0f, select(1f, _e3506, (_e3506 < 1f)), (_e3506 > 0f)));
-                                                    let _e3550 = (1f - select(0f, select(1f, _e3544, (_e3544 < 1f)), (_e3544 > 0f)));
-                                                    let _e3552 = (_e3550 != _e3550);
-                                                    let _e3554 = select(_e3550, _e3549, ((_e3549 < _e3550) || _e3552));
-                                                    let _e3557 = select(_e3550, _e3549, ((_e3549 > _e3550) || _e3552));
-                                                    let _e3559 = floor((_e3554 * 32f));
+                                                let _e3462 = phi_6280_;
+                                                let _e3464 = select(false, _e3462, (_e2871 < _e225.member.member_3));
+                                                if _e3464 {
+                                                    let _e3465 = (_e2659 < _e225.member.member_3);
+                                                    let _e3474 = select((_e3451 - _e2374), ((_e2926 * _e2659) - _e466), _e3465);
+                                                    let _e3475 = select((_e3452 - _e2375), ((_e2928 * _e2659) - _e473), _e3465);
+                                                    let _e3476 = select((_e3453 - _e2376), (_e2659 - _e459), _e3465);
+                                                    let _e3488 = ((((_e3451 * _e484) + (_e3452 * _e485)) + (_e3453 * _e486)) * inverseSqrt((((_e3451 * _e3451) + (_e3452 * _e3452)) + (_e3453 * _e3453))));
+                                                    let _e3492 = select(-1f, select(1f, _e3488, (_e3488 < 1f)), (_e3488 > -1f));
+                                                    let _e3493 = abs(_e3492);
+                                                    let _e3503 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3493, 0.00667009f), _e3493, -0.017088126f), _e3493, 0.03089188f), _e3493, -0.050174303f), _e3493, 0.08897899f), _e3493, -0.2145988f), _e3493, 1.5707963f) * sqrt((1f - _e3493)));
+                                                    let _e3510 = ((((select((3.1415927f - _e3503), _e3503, (_e3492 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
+                                                    let _e3526 = ((((_e3474 * _e484) + (_e3475 * _e485)) + (_e3476 * _e486)) * inverseSqrt((((_e3474 * _e3474) + (_e3475 * _e3475)) + (_e3476 * _e3476))));
+                                                    let _e3530 = select(-1f, select(1f, _e3526, (_e3526 < 1f)), (_e3526 > -1f));
+                                                    let _e3531 = abs(_e3530);
+                                                    let _e3541 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3531, 0.00667009f), _e3531, -0.017088126f), _e3531, 0.03089188f), _e3531, -0.050174303f), _e3531, 0.08897899f), _e3531, -0.2145988f), _e3531, 1.5707963f) * sqrt((1f - _e3531)));
+                                                    let _e3548 = ((((select((3.1415927f - _e3541), _e3541, (_e3530 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
+                                                    let _e3553 = (1f - select(0f, select(1f, _e3510, (_e3510 < 1f)), (_e3510 > 0f)));
+                                                    let _e3554 = (1f - select(0f, select(1f, _e3548, (_e3548 < 1f)), (_e3548 > 0f)));
+                                                    let _e3556 = (_e3554 != _e3554);
+                                                    let _e3558 = select(_e3554, _e3553, ((_e3553 < _e3554) || _e3556));
+                                                    let _e3561 = select(_e3554, _e3553, ((_e3553 > _e3554) || _e3556));
+                                                    let _e3563 = floor((_e3558 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e3567 = -(floor((_e3557 * -32f)));
-                                                        let _e3572 = (select(32f, _e3567, ((_e3567 < 32f) || false)) - _e3559);
-                                                        phi_6497_ = select(select(0f, _e3572, ((_e3572 > 0f) || false)), 0f, (_e3557 <= _e3554));
+                                                        let _e3571 = -(floor((_e3561 * -32f)));
+                                                        let _e3576 = (select(32f, _e3571, ((_e3571 < 32f) || false)) - _e3563);
+                                                        phi_6507_ = select(select(0f, _e3576, ((_e3576 > 0f) || false)), 0f, (_e3561 <= _e3558));
                                                     } else {
-                                                        phi_6497_ = -(floor(((_e3557 - _e3554) * -32f)));
+                                                        phi_6507_ = -(floor(((_e3561 - _e3558) * -32f)));
                                                     }
-                                                    let _e3578 = phi_6497_;
-                                                    let _e3586 = (bitcast<u32>((floor(select(0f, select(32f, _e3559, (_e3559 < 32f)), (_e3559 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e3594 = (bitcast<u32>((floor(select(0f, select(32f, _e3578, (_e3578 < 32f)), (_e3578 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e3586 >= 32u) {
-                                                        phi_6551_ = u32();
-                                                        phi_6552_ = true;
+                                                    let _e3582 = phi_6507_;
+                                                    let _e3590 = (bitcast<u32>((floor(select(0f, select(32f, _e3563, (_e3563 < 32f)), (_e3563 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e3598 = (bitcast<u32>((floor(select(0f, select(32f, _e3582, (_e3582 < 32f)), (_e3582 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e3590 >= 32u) {
+                                                        phi_6561_ = u32();
+                                                        phi_6562_ = true;
                                                     } else {
-                                                        let _e3596 = (_e3594 == 0u);
-                                                        if _e3596 {
-                                                            phi_6550_ = u32();
+                                                        let _e3600 = (_e3598 == 0u);
+                                                        if _e3600 {
+                                                            phi_6560_ = u32();
                                                         } else {
-                                                            if (_e3594 >= 32u) {
-                                                                phi_6547_ = 4294967295u;
+                                                            if (_e3598 >= 32u) {
+                                                                phi_6557_ = 4294967295u;
                                                             } else {
-                                                                phi_6547_ = ((1u << bitcast<u32>((_e3594 & 31u))) - 1u);
+                                                                phi_6557_ = ((1u << bitcast<u32>((_e3598 & 31u))) - 1u);
                                                             }
-                                                            let _e3603 = phi_6547_;
-                                                            phi_6550_ = (_e3603 << bitcast<u32>((_e3586 & 31u)));
+                                                            let _e3607 = phi_6557_;
+                                                            phi_6560_ = (_e3607 << bitcast<u32>((_e3590 & 31u)));
                                                         }
-                                                        let _e3608 = phi_6550_;
-                                                        phi_6551_ = _e3608;
-                                                        phi_6552_ = _e3596;
+                                                        let _e3612 = phi_6560_;
+                                                        phi_6561_ = _e3612;
+                                                        phi_6562_ = _e3600;
                                                     }
-                                                    let _e3610 = phi_6551_;
-                                                    let _e3612 = phi_6552_;
-                                                    phi_6565_ = select(0u, select(select(_e3610, 0u, _e3612), 0u, _e2463), _e3460);
+                                                    let _e3614 = phi_6561_;
+                                                    let _e3616 = phi_6562_;
+                                                    phi_6575_ = select(0u, select(select(_e3614, 0u, _e3616), 0u, _e2465), _e3464);
                                                 } else {
-                                                    phi_6565_ = 0u;
+                                                    phi_6575_ = 0u;
                                                 }
-                                                let _e3617 = phi_6565_;
-                                                phi_6567_ = (((_e3096 | _e3269) | _e3443) | _e3617);
-                                                phi_6568_ = vec3<f32>(select(_e2375, (((_e2908 * _e2483) * _e2843) - _e466), _e2906), select(_e2376, (((_e2912 * _e2491) * _e2843) - _e473), _e2906), select(_e2377, (_e2843 - _e459), _e2906));
+                                                let _e3621 = phi_6575_;
+                                                phi_6577_ = (((_e3100 | _e3273) | _e3447) | _e3621);
+                                                phi_6578_ = vec3<f32>(select(_e2377, (((_e2912 * _e2485) * _e2847) - _e466), _e2910), select(_e2378, (((_e2916 * _e2493) * _e2847) - _e473), _e2910), select(_e2379, (_e2847 - _e459), _e2910));
                                             } else {
-                                                phi_6567_ = 0u;
-                                                phi_6568_ = vec3<f32>(_e2375, _e2376, _e2377);
+                                                phi_6577_ = 0u;
+                                                phi_6578_ = vec3<f32>(_e2377, _e2378, _e2379);
                                             }
-                                            let _e3620 = phi_6567_;
-                                            let _e3622 = phi_6568_;
-                                            let _e3624 = (_e2383 * inverseSqrt(_e2366));
-                                            let _e3628 = select(-1f, select(1f, _e3624, (_e3624 < 1f)), (_e3624 > -1f));
-                                            let _e3629 = abs(_e3628);
-                                            let _e3639 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3629, 0.00667009f), _e3629, -0.017088126f), _e3629, 0.03089188f), _e3629, -0.050174303f), _e3629, 0.08897899f), _e3629, -0.2145988f), _e3629, 1.5707963f) * sqrt((1f - _e3629)));
-                                            let _e3646 = ((((select((3.1415927f - _e3639), _e3639, (_e3628 >= 0f)) + _e2457) - _e2453) + 1.5707964f) * 0.31830987f);
-                                            let _e3665 = ((((_e3622.x * _e484) + (_e3622.y * _e485)) + (_e3622.z * _e486)) * inverseSqrt((((_e3622.x * _e3622.x) + (_e3622.y * _e3622.y)) + (_e3622.z * _e3622.z))));
-                                            let _e3669 = select(-1f, select(1f, _e3665, (_e3665 < 1f)), (_e3665 > -1f));
-                                            let _e3670 = abs(_e3669);
-                                            let _e3680 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3670, 0.00667009f), _e3670, -0.017088126f), _e3670, 0.03089188f), _e3670, -0.050174303f), _e3670, 0.08897899f), _e3670, -0.2145988f), _e3670, 1.5707963f) * sqrt((1f - _e3670)));
-                                            let _e3687 = ((((select((3.1415927f - _e3680), _e3680, (_e3669 >= 0f)) + _e2457) - _e2453) + 1.5707964f) * 0.31830987f);
-                                            let _e3692 = (1f - select(0f, select(1f, _e3646, (_e3646 < 1f)), (_e3646 > 0f)));
-                                            let _e3693 = (1f - select(0f, select(1f, _e3687, (_e3687 < 1f)), (_e3687 > 0f)));
-                                            let _e3695 = (_e3693 != _e3693);
-                                            let _e3697 = select(_e3693, _e3692, ((_e3692 < _e3693) || _e3695));
-                                            let _e3700 = select(_e3693, _e3692, ((_e3692 > _e3693) || _e3695));
-                                            let _e3702 = floor((_e3697 * 32f));
+                                            let _e3624 = phi_6577_;
+                                            let _e3626 = phi_6578_;
+                                            let _e3628 = (_e2385 * inverseSqrt(_e2368));
+                                            let _e3632 = select(-1f, select(1f, _e3628, (_e3628 < 1f)), (_e3628 > -1f));
+                                            let _e3633 = abs(_e3632);
+                                            let _e3643 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3633, 0.00667009f), _e3633, -0.017088126f), _e3633, 0.03089188f), _e3633, -0.050174303f), _e3633, 0.08897899f), _e3633, -0.2145988f), _e3633, 1.5707963f) * sqrt((1f - _e3633)));
+                                            let _e3650 = ((((select((3.1415927f - _e3643), _e3643, (_e3632 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
+                                            let _e3669 = ((((_e3626.x * _e484) + (_e3626.y * _e485)) + (_e3626.z * _e486)) * inverseSqrt((((_e3626.x * _e3626.x) + (_e3626.y * _e3626.y)) + (_e3626.z * _e3626.z))));
+                                            let _e3673 = select(-1f, select(1f, _e3669, (_e3669 < 1f)), (_e3669 > -1f));
+                                            let _e3674 = abs(_e3673);
+                                            let _e3684 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3674, 0.00667009f), _e3674, -0.017088126f), _e3674, 0.03089188f), _e3674, -0.050174303f), _e3674, 0.08897899f), _e3674, -0.2145988f), _e3674, 1.5707963f) * sqrt((1f - _e3674)));
+                                            let _e3691 = ((((select((3.1415927f - _e3684), _e3684, (_e3673 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
+                                            let _e3696 = (1f - select(0f, select(1f, _e3650, (_e3650 < 1f)), (_e3650 > 0f)));
+                                            let _e3697 = (1f - select(0f, select(1f, _e3691, (_e3691 < 1f)), (_e3691 > 0f)));
+                                            let _e3699 = (_e3697 != _e3697);
+                                            let _e3701 = select(_e3697, _e3696, ((_e3696 < _e3697) || _e3699));
+                                            let _e3704 = select(_e3697, _e3696, ((_e3696 > _e3697) || _e3699));
+                                            let _e3706 = floor((_e3701 * 32f));
                                             if (_e235 == 1u) {
-                                                let _e3710 = -(floor((_e3700 * -32f)));
-                                                let _e3715 = (select(32f, _e3710, ((_e3710 < 32f) || false)) - _e3702);
-                                                phi_6755_ = select(select(0f, _e3715, ((_e3715 > 0f) || false)), 0f, (_e3700 <= _e3697));
+                                                let _e3714 = -(floor((_e3704 * -32f)));
+                                                let _e3719 = (select(32f, _e3714, ((_e3714 < 32f) || false)) - _e3706);
+                                                phi_6765_ = select(select(0f, _e3719, ((_e3719 > 0f) || false)), 0f, (_e3704 <= _e3701));
                                             } else {
-                                                phi_6755_ = -(floor(((_e3700 - _e3697) * -32f)));
+                                                phi_6765_ = -(floor(((_e3704 - _e3701) * -32f)));
                                             }
-                                            let _e3721 = phi_6755_;
-                                            let _e3729 = (bitcast<u32>((floor(select(0f, select(32f, _e3702, (_e3702 < 32f)), (_e3702 > 0f))) + 8388608f)) - 1258291200u);
-                                            let _e3737 = (bitcast<u32>((floor(select(0f, select(32f, _e3721, (_e3721 < 32f)), (_e3721 > 0f))) + 8388608f)) - 1258291200u);
-                                            if (_e3729 >= 32u) {
-                                                phi_6809_ = u32();
-                                                phi_6810_ = true;
+                                            let _e3725 = phi_6765_;
+                                            let _e3733 = (bitcast<u32>((floor(select(0f, select(32f, _e3706, (_e3706 < 32f)), (_e3706 > 0f))) + 8388608f)) - 1258291200u);
+                                            let _e3741 = (bitcast<u32>((floor(select(0f, select(32f, _e3725, (_e3725 < 32f)), (_e3725 > 0f))) + 8388608f)) - 1258291200u);
+                                            if (_e3733 >= 32u) {
+                                                phi_6819_ = u32();
+                                                phi_6820_ = true;
                                             } else {
-                                                let _e3739 = (_e3737 == 0u);
-                                                if _e3739 {
-                                                    phi_6808_ = u32();
+                                                let _e3743 = (_e3741 == 0u);
+                                                if _e3743 {
+                                                    phi_6818_ = u32();
                                                 } else {
-                                                    if (_e3737 >= 32u) {
-                                                        phi_6805_ = 4294967295u;
+                                                    if (_e3741 >= 32u) {
+                                                        phi_6815_ = 4294967295u;
                                                     } else {
-                                                        phi_6805_ = ((1u << bitcast<u32>((_e3737 & 31u))) - 1u);
+                                                        phi_6815_ = ((1u << bitcast<u32>((_e3741 & 31u))) - 1u);
                                                     }
-                                                    let _e3746 = phi_6805_;
-                                                    phi_6808_ = (_e3746 << bitcast<u32>((_e3729 & 31u)));
+                                                    let _e3750 = phi_6815_;
+                                                    phi_6818_ = (_e3750 << bitcast<u32>((_e3733 & 31u)));
                                                 }
-                                                let _e3751 = phi_6808_;
-                                                phi_6809_ = _e3751;
-                                                phi_6810_ = _e3739;
+                                                let _e3755 = phi_6818_;
+                                                phi_6819_ = _e3755;
+                                                phi_6820_ = _e3743;
                                             }
-                                            let _e3753 = phi_6809_;
-                                            let _e3755 = phi_6810_;
-                                            phi_6824_ = select((select(select(_e3753, 0u, _e3755), 0u, _e2463) | _e3620), 0u, _e2370);
+                                            let _e3757 = phi_6819_;
+                                            let _e3759 = phi_6820_;
+                                            phi_6834_ = select((select(select(_e3757, 0u, _e3759), 0u, _e2465) | _e3624), 0u, _e2372);
                                         } else {
-                                            phi_6824_ = 0u;
+                                            phi_6834_ = 0u;
                                         }
-                                        let _e3761 = phi_6824_;
+                                        let _e3765 = phi_6834_;
                                         phi_1200_ = (_e787 + 1u);
-                                        phi_1203_ = ((_e789 | _e2357) | _e3761);
+                                        phi_1203_ = ((_e789 | _e2359) | _e3765);
                                     } else {
                                         phi_1200_ = u32();
                                         phi_1203_ = u32();
                                     }
-                                    let _e3765 = phi_1200_;
-                                    let _e3767 = phi_1203_;
+                                    let _e3769 = phi_1200_;
+                                    let _e3771 = phi_1203_;
                                     continue;
                                     continuing {
-                                        phi_1199_ = _e3765;
-                                        phi_1202_ = _e3767;
-                                        phi_7179_ = _e684;
+                                        phi_1199_ = _e3769;
+                                        phi_1202_ = _e3771;
+                                        phi_7189_ = _e684;
                                         break if !(_e790);
                                     }
                                 }
-                                let _e3770 = phi_7179_;
-                                phi_7803_ = _e3770;
-                                if _e3770 {
+                                let _e3774 = phi_7189_;
+                                phi_7815_ = _e3774;
+                                if _e3774 {
                                     break;
                                 }
                                 if (_e230 == 2u) {
-                                    let _e3829 = (_e782 - 1.5707964f);
-                                    let _e3830 = (_e3829 * 2f);
-                                    let _e3831 = sin(_e782);
-                                    let _e3836 = ((_e767 + (_e3830 * _e3831)) - cos((_e3830 - _e782)));
-                                    phi_6853_ = 0u;
-                                    phi_6856_ = select((_e3836 * 0.25f), (_e3836 * -0.25f), (_e3829 < 0f));
-                                    phi_6858_ = 0f;
+                                    let _e3833 = (_e782 - 1.5707964f);
+                                    let _e3834 = (_e3833 * 2f);
+                                    let _e3835 = sin(_e782);
+                                    let _e3840 = ((_e767 + (_e3834 * _e3835)) - cos((_e3834 - _e782)));
+                                    phi_6863_ = 0u;
+                                    phi_6866_ = select((_e3840 * 0.25f), (_e3840 * -0.25f), (_e3833 < 0f));
+                                    phi_6868_ = 0f;
                                     loop {
-                                        let _e3842 = phi_6853_;
-                                        let _e3844 = phi_6856_;
-                                        let _e3846 = phi_6858_;
-                                        local_13 = _e3846;
-                                        let _e3847 = (_e3842 < 32u);
-                                        if _e3847 {
-                                            let _e3848 = (_e3842 + 1u);
-                                            let _e3852 = (_e3829 + (f32(bitcast<i32>(_e3848)) * 0.09817477f));
-                                            let _e3853 = (_e3852 * 2f);
-                                            let _e3858 = ((_e767 + (_e3853 * _e3831)) - cos((_e3853 - _e782)));
-                                            let _e3862 = select((_e3858 * 0.25f), (_e3858 * -0.25f), (_e3852 < 0f));
-                                            let _e3865 = local_12;
-                                            phi_6854_ = _e3848;
-                                            phi_6857_ = _e3862;
-                                            phi_6859_ = select(_e3846, (_e3846 + (_e3862 - _e3844)), (((_e3865 >> bitcast<u32>((_e3842 & 31u))) & 1u) == 0u));
+                                        let _e3846 = phi_6863_;
+                                        let _e3848 = phi_6866_;
+                                        let _e3850 = phi_6868_;
+                                        local_13 = _e3850;
+                                        let _e3851 = (_e3846 < 32u);
+                                        if _e3851 {
+                                            let _e3852 = (_e3846 + 1u);
+                                            let _e3856 = (_e3833 + (f32(bitcast<i32>(_e3852)) * 0.09817477f));
+                                            let _e3857 = (_e3856 * 2f);
+                                            let _e3862 = ((_e767 + (_e3857 * _e3835)) - cos((_e3857 - _e782)));
+                                            let _e3866 = select((_e3862 * 0.25f), (_e3862 * -0.25f), (_e3856 < 0f));
+                                            let _e3869 = local_12;
+                                            phi_6864_ = _e3852;
+                                            phi_6867_ = _e3866;
+                                            phi_6869_ = select(_e3850, (_e3850 + (_e3866 - _e3848)), (((_e3869 >> bitcast<u32>((_e3846 & 31u))) & 1u) == 0u));
                                         } else {
-                                            phi_6854_ = u32();
-                                            phi_6857_ = f32();
-                                            phi_6859_ = f32();
+                                            phi_6864_ = u32();
+                                            phi_6867_ = f32();
+                                            phi_6869_ = f32();
                                         }
-                                        let _e3874 = phi_6854_;
-                                        let _e3876 = phi_6857_;
-                                        let _e3878 = phi_6859_;
+                                        let _e3878 = phi_6864_;
+                                        let _e3880 = phi_6867_;
+                                        let _e3882 = phi_6869_;
                                         continue;
                                         continuing {
-                                            phi_6853_ = _e3874;
-                                            phi_6856_ = _e3876;
-                                            phi_6858_ = _e3878;
-                                            break if !(_e3847);
+                                            phi_6863_ = _e3878;
+                                            phi_6866_ = _e3880;
+                                            phi_6868_ = _e3882;
+                                            break if !(_e3851);
                                         }
                                     }
-                                    let _e3881 = local_13;
-                                    phi_7805_ = _e3770;
-                                    phi_6960_ = (_e688 + 1f);
-                                    phi_6961_ = (_e690 + ((_e748 + ((1f - _e748) * 0.05f)) * _e3881));
+                                    let _e3885 = local_13;
+                                    phi_7817_ = _e3774;
+                                    phi_6970_ = (_e688 + 1f);
+                                    phi_6971_ = (_e690 + ((_e748 + ((1f - _e748) * 0.05f)) * _e3885));
                                 } else {
                                     if (_e230 == 1u) {
-                                        phi_6905_ = 0u;
-                                        phi_6908_ = 0f;
+                                        phi_6915_ = 0u;
+                                        phi_6918_ = 0f;
                                         loop {
-                                            let _e3784 = phi_6905_;
-                                            let _e3786 = phi_6908_;
-                                            local_11 = _e3786;
-                                            let _e3787 = (_e3784 < 4u);
-                                            if _e3787 {
+                                            let _e3788 = phi_6915_;
+                                            let _e3790 = phi_6918_;
+                                            local_11 = _e3790;
+                                            let _e3791 = (_e3788 < 4u);
+                                            if _e3791 {
                                                 local = array<type_40, 4>(type_40(4026531855u, 0.0095061f), type_40(251658480u, 0.0270951f), type_40(15732480u, 0.0405571f), type_40(1044480u, 0.0478421f));
-                                                if _e3787 {
+                                                if _e3791 {
                                                 } else {
-                                                    phi_7800_ = true;
+                                                    phi_7812_ = true;
                                                     break;
                                                 }
-                                                let _e3790 = local[_e3784].member;
-                                                let _e3793 = local[_e3784].member_1;
-                                                let _e3795 = local_10;
-                                                phi_6906_ = (_e3784 + 1u);
-                                                phi_6909_ = (_e3786 + (f32(bitcast<i32>(countOneBits((_e3795 & _e3790)))) * _e3793));
+                                                let _e3794 = local[_e3788].member;
+                                                let _e3797 = local[_e3788].member_1;
+                                                let _e3799 = local_10;
+                                                phi_6916_ = (_e3788 + 1u);
+                                                phi_6919_ = (_e3790 + (f32(bitcast<i32>(countOneBits((_e3799 & _e3794)))) * _e3797));
                                             } else {
-                                                phi_6906_ = u32();
-                                                phi_6909_ = f32();
+                                                phi_6916_ = u32();
+                                                phi_6919_ = f32();
                                             }
-                                            let _e3804 = phi_6906_;
-                                            let _e3806 = phi_6909_;
+                                            let _e3808 = phi_6916_;
+                                            let _e3810 = phi_6919_;
                                             continue;
                                             continuing {
-                                                phi_6905_ = _e3804;
-                                                phi_6908_ = _e3806;
-                                                phi_7800_ = _e3770;
-                                                break if !(_e3787);
+                                                phi_6915_ = _e3808;
+                                                phi_6918_ = _e3810;
+                                                phi_7812_ = _e3774;
+                                                break if !(_e3791);
                                             }
                                         }
-                                        let _e3809 = phi_7800_;
-                                        phi_7803_ = _e3809;
-                                        if _e3809 {
+                                        let _e3813 = phi_7812_;
+                                        phi_7815_ = _e3813;
+                                        if _e3813 {
                                             break;
                                         }
-                                        let _e3811 = local_11;
-                                        let _e3812 = (1f - _e3811);
-                                        phi_7811_ = _e3809;
-                                        phi_6958_ = (_e688 + _e748);
-                                        phi_6959_ = (_e690 + (_e748 * select(0f, select(1f, _e3812, (_e3812 < 1f)), (_e3812 > 0f))));
+                                        let _e3815 = local_11;
+                                        let _e3816 = (1f - _e3815);
+                                        phi_7823_ = _e3813;
+                                        phi_6968_ = (_e688 + _e748);
+                                        phi_6969_ = (_e690 + (_e748 * select(0f, select(1f, _e3816, (_e3816 < 1f)), (_e3816 > 0f))));
                                     } else {
-                                        let _e3774 = local_9;
-                                        phi_7811_ = _e3770;
-                                        phi_6958_ = (_e688 + 1f);
-                                        phi_6959_ = (_e690 + ((f32(bitcast<i32>(countOneBits((_e3774 & 4294967295u)))) * -0.03125f) + 1f));
+                                        let _e3778 = local_9;
+                                        phi_7823_ = _e3774;
+                                        phi_6968_ = (_e688 + 1f);
+                                        phi_6969_ = (_e690 + ((f32(bitcast<i32>(countOneBits((_e3778 & 4294967295u)))) * -0.03125f) + 1f));
                                     }
-                                    let _e3821 = phi_7811_;
-                                    let _e3823 = phi_6958_;
-                                    let _e3825 = phi_6959_;
-                                    phi_7805_ = _e3821;
-                                    phi_6960_ = _e3823;
-                                    phi_6961_ = _e3825;
+                                    let _e3825 = phi_7823_;
+                                    let _e3827 = phi_6968_;
+                                    let _e3829 = phi_6969_;
+                                    phi_7817_ = _e3825;
+                                    phi_6970_ = _e3827;
+                                    phi_6971_ = _e3829;
                                 }
-                                let _e3886 = phi_7805_;
-                                let _e3888 = phi_6960_;
-                                let _e3890 = phi_6961_;
-                                phi_7804_ = _e3886;
+                                let _e3890 = phi_7817_;
+                                let _e3892 = phi_6970_;
+                                let _e3894 = phi_6971_;
+                                phi_7816_ = _e3890;
                                 phi_1009_ = (_e686 + 1u);
-                                phi_1012_ = _e3888;
-                                phi_1014_ = _e3890;
+                                phi_1012_ = _e3892;
+                                phi_1014_ = _e3894;
                             } else {
-                                phi_7804_ = _e684;
+                                phi_7816_ = _e684;
                                 phi_1009_ = u32();
                                 phi_1012_ = f32();
                                 phi_1014_ = f32();
                             }
-                            let _e3893 = phi_7804_;
-                            let _e3895 = phi_1009_;
-                            let _e3897 = phi_1012_;
-                            let _e3899 = phi_1014_;
+                            let _e3897 = phi_7816_;
+                            let _e3899 = phi_1009_;
+                            let _e3901 = phi_1012_;
+                            let _e3903 = phi_1014_;
                             continue;
                             continuing {
-                                phi_7716_ = _e3893;
-                                phi_1008_ = _e3895;
-                                phi_1011_ = _e3897;
-                                phi_1013_ = _e3899;
-                                phi_7803_ = _e3893;
+                                phi_7728_ = _e3897;
+                                phi_1008_ = _e3899;
+                                phi_1011_ = _e3901;
+                                phi_1013_ = _e3903;
+                                phi_7815_ = _e3897;
                                 break if !(_e691);
                             }
                         }
-                        let _e3902 = phi_7803_;
-                        if _e3902 {
+                        let _e3906 = phi_7815_;
+                        if _e3906 {
                             break;
                         }
-                        let _e3904 = local_14;
-                        let _e3907 = local_15;
-                        let _e3909 = local_16;
-                        phi_6969_ = select(1f, (_e3907 / _e3909), (_e3904 > 0f));
+                        let _e3908 = local_14;
+                        let _e3911 = local_15;
+                        let _e3913 = local_16;
+                        phi_6979_ = select(1f, (_e3911 / _e3913), (_e3908 > 0f));
                     } else {
-                        phi_6969_ = 1f;
+                        phi_6979_ = 1f;
                     }
-                    let _e3913 = phi_6969_;
+                    let _e3917 = phi_6979_;
                     if (_e225.member_6 == 2f) {
-                        phi_6982_ = (_e3913 * _e3913);
+                        phi_6992_ = (_e3917 * _e3917);
                     } else {
                         if (_e225.member_6 == 1f) {
-                            phi_6981_ = _e3913;
+                            phi_6991_ = _e3917;
                         } else {
-                            phi_6981_ = pow(_e3913, _e225.member_6);
+                            phi_6991_ = pow(_e3917, _e225.member_6);
                         }
-                        let _e3919 = phi_6981_;
-                        phi_6982_ = _e3919;
+                        let _e3923 = phi_6991_;
+                        phi_6992_ = _e3923;
                     }
-                    let _e3922 = phi_6982_;
-                    let _e3927 = (select(1f, select(0.03f, _e3922, ((_e3922 > 0.03f) || false)), _e679) * 0.6666667f);
-                    terms.member[_e267] = (bitcast<u32>((floor(((select(0f, select(1f, _e3927, (_e3927 < 1f)), (_e3927 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
+                    let _e3926 = phi_6992_;
+                    let _e3931 = (select(1f, select(0.03f, _e3926, ((_e3926 > 0.03f) || false)), _e679) * 0.6666667f);
+                    terms.member[_e267] = (bitcast<u32>((floor(((select(0f, select(1f, _e3931, (_e3931 < 1f)), (_e3931 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
                     edges.member[_e267] = ((((64u * (bitcast<u32>((floor(select(0f, select(3f, _e396, (_e396 < 3f)), (_e396 > 0f))) + 8388608f)) - 1258291200u)) + (16u * (bitcast<u32>((floor(select(0f, select(3f, _e411, (_e411 < 3f)), (_e411 > 0f))) + 8388608f)) - 1258291200u))) + (4u * (bitcast<u32>((floor(select(0f, select(3f, _e427, (_e427 < 3f)), (_e427 > 0f))) + 8388608f)) - 1258291200u))) + (bitcast<u32>((floor(select(0f, select(3f, _e443, (_e443 < 3f)), (_e443 > 0f))) + 8388608f)) - 1258291200u));
                 }
             }

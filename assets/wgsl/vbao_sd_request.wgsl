@@ -125,9 +125,9 @@ var<storage, read_write> ray_max: type_36;
 
 fn function_() {
     var phi_203_: type_21;
-    var phi_1941_: bool;
+    var phi_1961_: bool;
     var phi_865_: u32;
-    var phi_1933_: bool;
+    var phi_1953_: bool;
     var phi_1031_: u32;
     var phi_1095_: f32;
     var phi_1096_: f32;
@@ -136,21 +136,21 @@ fn function_() {
     var phi_1515_: u32;
     var phi_1522_: u32;
     var phi_1499_: u32;
-    var phi_1889_: bool;
-    var phi_1974_: bool;
-    var phi_1568_: bool;
-    var phi_1692_: u32;
-    var phi_1709_: u32;
-    var phi_1716_: u32;
-    var phi_1693_: u32;
-    var phi_1959_: bool;
-    var phi_1977_: bool;
-    var phi_1976_: bool;
-    var phi_1032_: u32;
-    var phi_1975_: bool;
+    var phi_1909_: bool;
+    var phi_1994_: bool;
+    var phi_1578_: bool;
+    var phi_1702_: u32;
+    var phi_1719_: u32;
+    var phi_1726_: u32;
+    var phi_1703_: u32;
     var phi_1979_: bool;
+    var phi_1997_: bool;
+    var phi_1996_: bool;
+    var phi_1032_: u32;
+    var phi_1995_: bool;
+    var phi_1999_: bool;
     var phi_866_: u32;
-    var phi_1978_: bool;
+    var phi_1998_: bool;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -269,19 +269,19 @@ fn function_() {
                     if _e366 {
                         let _e367 = (_e111 > 0f);
                         let _e369 = (2f * select(_e237, _e111, _e367));
-                        phi_1941_ = false;
+                        phi_1961_ = false;
                         phi_865_ = 0u;
                         loop {
-                            let _e371 = phi_1941_;
+                            let _e371 = phi_1961_;
                             let _e373 = phi_865_;
                             let _e376 = select(1u, _e108.member_8, (1u < _e108.member_8));
                             let _e377 = (_e373 < _e376);
                             if _e377 {
                                 let _e384 = ((((_e351 - floor(_e351)) + f32(bitcast<i32>(_e373))) * 3.1415927f) / f32(bitcast<i32>(_e376)));
-                                phi_1933_ = _e371;
+                                phi_1953_ = _e371;
                                 phi_1031_ = 0u;
                                 loop {
-                                    let _e391 = phi_1933_;
+                                    let _e391 = phi_1953_;
                                     let _e393 = phi_1031_;
                                     let _e396 = select(1u, _e108.member_9, (1u < _e108.member_9));
                                     let _e397 = (_e393 < _e396);
@@ -389,173 +389,197 @@ fn function_() {
                                                             phi_1522_ = 0u;
                                                         }
                                                         let _e686 = phi_1522_;
-                                                        let _e689 = atomicLoad((&ray_min.member[_e668]));
-                                                        if (_e689 > _e681) {
-                                                            if (_e668 < _e69) {
-                                                            } else {
-                                                                phi_1889_ = true;
-                                                                break;
-                                                            }
-                                                            let _e694 = atomicMin((&ray_min.member[_e668]), _e681);
+                                                        let _e687 = (_e668 < _e69);
+                                                        if _e687 {
+                                                        } else {
+                                                            phi_1909_ = true;
+                                                            break;
                                                         }
-                                                        let _e697 = atomicLoad((&ray_max.member[_e668]));
-                                                        if (_e697 < _e686) {
-                                                            if (_e668 < _e71) {
+                                                        let _e690 = atomicLoad((&ray_min.member[_e668]));
+                                                        if (_e690 > _e681) {
+                                                            if _e687 {
                                                             } else {
-                                                                phi_1889_ = true;
+                                                                phi_1909_ = true;
                                                                 break;
                                                             }
-                                                            let _e702 = atomicMax((&ray_max.member[_e668]), _e686);
+                                                            let _e692 = atomicMin((&ray_min.member[_e668]), _e681);
+                                                        }
+                                                        let _e693 = (_e668 < _e71);
+                                                        if _e693 {
+                                                        } else {
+                                                            phi_1909_ = true;
+                                                            break;
+                                                        }
+                                                        let _e696 = atomicLoad((&ray_max.member[_e668]));
+                                                        if (_e696 < _e686) {
+                                                            if _e693 {
+                                                            } else {
+                                                                phi_1909_ = true;
+                                                                break;
+                                                            }
+                                                            let _e698 = atomicMax((&ray_max.member[_e668]), _e686);
                                                         }
                                                     }
                                                     phi_1499_ = (_e676 + 1u);
                                                 } else {
                                                     phi_1499_ = u32();
                                                 }
-                                                let _e705 = phi_1499_;
+                                                let _e701 = phi_1499_;
                                                 continue;
                                                 continuing {
-                                                    phi_1498_ = _e705;
-                                                    phi_1889_ = _e391;
+                                                    phi_1498_ = _e701;
+                                                    phi_1909_ = _e391;
                                                     break if !(_e677);
                                                 }
                                             }
-                                            let _e708 = phi_1889_;
-                                            phi_1975_ = _e708;
-                                            if _e708 {
+                                            let _e704 = phi_1909_;
+                                            phi_1995_ = _e704;
+                                            if _e704 {
                                                 break;
                                             }
-                                            phi_1974_ = _e708;
+                                            phi_1994_ = _e704;
                                         } else {
-                                            phi_1974_ = _e391;
+                                            phi_1994_ = _e391;
                                         }
-                                        let _e710 = phi_1974_;
-                                        let _e711 = (_e566 - _e153);
-                                        let _e712 = (_e570 - _e160);
-                                        let _e713 = (_e562 - _e146);
-                                        let _e718 = (((_e711 * _e711) + (_e712 * _e712)) + (_e713 * _e713));
+                                        let _e706 = phi_1994_;
+                                        let _e707 = (_e566 - _e153);
+                                        let _e708 = (_e570 - _e160);
+                                        let _e709 = (_e562 - _e146);
+                                        let _e714 = (((_e707 * _e707) + (_e708 * _e708)) + (_e709 * _e709));
                                         if _e367 {
-                                            phi_1568_ = (_e718 <= (_e111 * _e111));
+                                            phi_1578_ = (_e714 <= (_e111 * _e111));
                                         } else {
-                                            phi_1568_ = true;
+                                            phi_1578_ = true;
                                         }
-                                        let _e722 = phi_1568_;
-                                        let _e732 = select(false, select(false, ((((_e711 * _e232) + (_e712 * _e233)) + (_e713 * _e234)) > (sqrt(_e718) * 0.018f)), _e722), _e366);
-                                        if _e732 {
-                                            let _e733 = (0.5f / _e562);
-                                            let _e742 = frame.member[0u].member_1.member.member.member_1[0u];
-                                            let _e753 = frame.member[0u].member_1.member.member.member_1[1u];
-                                            let _e761 = frame.member[0u].member_1.member_5[0u];
-                                            let _e767 = frame.member[0u].member_1.member_5[1u];
-                                            let _e774 = frame.member[0u].member_1.member_4;
-                                            let _e775 = f32(_e774);
-                                            let _e776 = (2u * _e774);
-                                            let _e777 = (_e761 + _e776);
-                                            let _e781 = (floor(((((_e566 * _e733) / _e742) + 0.5f) * f32(_e761))) + _e775);
-                                            let _e784 = f32(bitcast<i32>((_e777 - 1u)));
-                                            let _e795 = (floor(((0.5f - ((_e570 * _e733) / _e753)) * f32(_e767))) + _e775);
-                                            let _e798 = f32(bitcast<i32>(((_e767 + _e776) - 1u)));
-                                            let _e808 = (((bitcast<u32>((floor(select(0f, select(_e798, _e795, (_e795 < _e798)), (_e795 > 0f))) + 8388608f)) - 1258291200u) * _e777) + (bitcast<u32>((floor(select(0f, select(_e784, _e781, (_e781 < _e784)), (_e781 > 0f))) + 8388608f)) - 1258291200u));
-                                            let _e814 = sqrt((((_e566 * _e566) + (_e570 * _e570)) + (_e562 * _e562)));
-                                            phi_1692_ = 0u;
+                                        let _e718 = phi_1578_;
+                                        let _e728 = select(false, select(false, ((((_e707 * _e232) + (_e708 * _e233)) + (_e709 * _e234)) > (sqrt(_e714) * 0.018f)), _e718), _e366);
+                                        if _e728 {
+                                            let _e729 = (0.5f / _e562);
+                                            let _e738 = frame.member[0u].member_1.member.member.member_1[0u];
+                                            let _e749 = frame.member[0u].member_1.member.member.member_1[1u];
+                                            let _e757 = frame.member[0u].member_1.member_5[0u];
+                                            let _e763 = frame.member[0u].member_1.member_5[1u];
+                                            let _e770 = frame.member[0u].member_1.member_4;
+                                            let _e771 = f32(_e770);
+                                            let _e772 = (2u * _e770);
+                                            let _e773 = (_e757 + _e772);
+                                            let _e777 = (floor(((((_e566 * _e729) / _e738) + 0.5f) * f32(_e757))) + _e771);
+                                            let _e780 = f32(bitcast<i32>((_e773 - 1u)));
+                                            let _e791 = (floor(((0.5f - ((_e570 * _e729) / _e749)) * f32(_e763))) + _e771);
+                                            let _e794 = f32(bitcast<i32>(((_e763 + _e772) - 1u)));
+                                            let _e804 = (((bitcast<u32>((floor(select(0f, select(_e794, _e791, (_e791 < _e794)), (_e791 > 0f))) + 8388608f)) - 1258291200u) * _e773) + (bitcast<u32>((floor(select(0f, select(_e780, _e777, (_e777 < _e780)), (_e777 > 0f))) + 8388608f)) - 1258291200u));
+                                            let _e810 = sqrt((((_e566 * _e566) + (_e570 * _e570)) + (_e562 * _e562)));
+                                            phi_1702_ = 0u;
                                             loop {
-                                                let _e816 = phi_1692_;
-                                                let _e817 = (_e816 < 1u);
-                                                if _e817 {
-                                                    if _e732 {
-                                                        if (_e814 > 0f) {
-                                                            phi_1709_ = bitcast<u32>(_e814);
+                                                let _e812 = phi_1702_;
+                                                let _e813 = (_e812 < 1u);
+                                                if _e813 {
+                                                    if _e728 {
+                                                        if (_e810 > 0f) {
+                                                            phi_1719_ = bitcast<u32>(_e810);
                                                         } else {
-                                                            phi_1709_ = 0u;
+                                                            phi_1719_ = 0u;
                                                         }
-                                                        let _e821 = phi_1709_;
-                                                        let _e822 = (_e814 + _e369);
-                                                        if (_e822 > 0f) {
-                                                            phi_1716_ = bitcast<u32>(_e822);
+                                                        let _e817 = phi_1719_;
+                                                        let _e818 = (_e810 + _e369);
+                                                        if (_e818 > 0f) {
+                                                            phi_1726_ = bitcast<u32>(_e818);
                                                         } else {
-                                                            phi_1716_ = 0u;
+                                                            phi_1726_ = 0u;
                                                         }
-                                                        let _e826 = phi_1716_;
-                                                        let _e829 = atomicLoad((&ray_min.member[_e808]));
-                                                        if (_e829 > _e821) {
-                                                            if (_e808 < _e69) {
+                                                        let _e822 = phi_1726_;
+                                                        let _e823 = (_e804 < _e69);
+                                                        if _e823 {
+                                                        } else {
+                                                            phi_1979_ = true;
+                                                            break;
+                                                        }
+                                                        let _e826 = atomicLoad((&ray_min.member[_e804]));
+                                                        if (_e826 > _e817) {
+                                                            if _e823 {
                                                             } else {
-                                                                phi_1959_ = true;
+                                                                phi_1979_ = true;
                                                                 break;
                                                             }
-                                                            let _e834 = atomicMin((&ray_min.member[_e808]), _e821);
+                                                            let _e828 = atomicMin((&ray_min.member[_e804]), _e817);
                                                         }
-                                                        let _e837 = atomicLoad((&ray_max.member[_e808]));
-                                                        if (_e837 < _e826) {
-                                                            if (_e808 < _e71) {
+                                                        let _e829 = (_e804 < _e71);
+                                                        if _e829 {
+                                                        } else {
+                                                            phi_1979_ = true;
+                                                            break;
+                                                        }
+                                                        let _e832 = atomicLoad((&ray_max.member[_e804]));
+                                                        if (_e832 < _e822) {
+                                                            if _e829 {
                                                             } else {
-                                                                phi_1959_ = true;
+                                                                phi_1979_ = true;
                                                                 break;
                                                             }
-                                                            let _e842 = atomicMax((&ray_max.member[_e808]), _e826);
+                                                            let _e834 = atomicMax((&ray_max.member[_e804]), _e822);
                                                         }
                                                     }
-                                                    phi_1693_ = (_e816 + 1u);
+                                                    phi_1703_ = (_e812 + 1u);
                                                 } else {
-                                                    phi_1693_ = u32();
+                                                    phi_1703_ = u32();
                                                 }
-                                                let _e845 = phi_1693_;
+                                                let _e837 = phi_1703_;
                                                 continue;
                                                 continuing {
-                                                    phi_1692_ = _e845;
-                                                    phi_1959_ = _e710;
-                                                    break if !(_e817);
+                                                    phi_1702_ = _e837;
+                                                    phi_1979_ = _e706;
+                                                    break if !(_e813);
                                                 }
                                             }
-                                            let _e848 = phi_1959_;
-                                            phi_1975_ = _e848;
-                                            if _e848 {
+                                            let _e840 = phi_1979_;
+                                            phi_1995_ = _e840;
+                                            if _e840 {
                                                 break;
                                             }
-                                            phi_1977_ = _e848;
+                                            phi_1997_ = _e840;
                                         } else {
-                                            phi_1977_ = _e710;
+                                            phi_1997_ = _e706;
                                         }
-                                        let _e850 = phi_1977_;
-                                        phi_1976_ = _e850;
+                                        let _e842 = phi_1997_;
+                                        phi_1996_ = _e842;
                                         phi_1032_ = (_e393 + 1u);
                                     } else {
-                                        phi_1976_ = _e391;
+                                        phi_1996_ = _e391;
                                         phi_1032_ = u32();
                                     }
-                                    let _e853 = phi_1976_;
-                                    let _e855 = phi_1032_;
+                                    let _e845 = phi_1996_;
+                                    let _e847 = phi_1032_;
                                     continue;
                                     continuing {
-                                        phi_1933_ = _e853;
-                                        phi_1031_ = _e855;
-                                        phi_1975_ = _e853;
+                                        phi_1953_ = _e845;
+                                        phi_1031_ = _e847;
+                                        phi_1995_ = _e845;
                                         break if !(_e397);
                                     }
                                 }
-                                let _e858 = phi_1975_;
-                                phi_1978_ = _e858;
-                                if _e858 {
+                                let _e850 = phi_1995_;
+                                phi_1998_ = _e850;
+                                if _e850 {
                                     break;
                                 }
-                                phi_1979_ = _e858;
+                                phi_1999_ = _e850;
                                 phi_866_ = (_e373 + 1u);
                             } else {
-                                phi_1979_ = _e371;
+                                phi_1999_ = _e371;
                                 phi_866_ = u32();
                             }
-                            let _e861 = phi_1979_;
-                            let _e863 = phi_866_;
+                            let _e853 = phi_1999_;
+                            let _e855 = phi_866_;
                             continue;
                             continuing {
-                                phi_1941_ = _e861;
-                                phi_865_ = _e863;
-                                phi_1978_ = _e861;
+                                phi_1961_ = _e853;
+                                phi_865_ = _e855;
+                                phi_1998_ = _e853;
                                 break if !(_e377);
                             }
                         }
-                        let _e866 = phi_1978_;
-                        if _e866 {
+                        let _e858 = phi_1998_;
+                        if _e858 {
                             break;
                         }
                     }

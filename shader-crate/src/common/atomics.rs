@@ -10,7 +10,7 @@ pub trait AtomicU32Buffer {
     fn atomic_max(&mut self, i: usize, v: u32) -> u32;
     /// `slot[i] = slot[i] + v` (wrapping); returns the previous value.
     fn atomic_add(&mut self, i: usize, v: u32) -> u32;
-    /// A plain (possibly stale) read of `slot[i]`: lets a caller skip an atomic min/max the
+    /// A relaxed read of `slot[i]` (possibly stale): lets a caller skip an atomic min/max the
     /// value already satisfies (values only move one way, so a stale read only costs an atomic).
     fn peek(&self, i: usize) -> u32;
 }
@@ -32,10 +32,16 @@ pub fn count_rays<B: AtomicU32Buffer>(counter: &mut B, n: u32) {
 /// Device-scope atomics on a storage buffer. Natively (where the entry points also compile) the
 /// exclusive borrow makes plain min/max equivalent.
 impl AtomicU32Buffer for &mut [u32] {
+    #[cfg(not(target_arch = "spirv"))]
     fn peek(&self, i: usize) -> u32 {
-        // Unchecked on SPIR-V (`crate::common::read`): the callers index texels clamped into
-        // the buffer, as for the atomics below.
-        unsafe { crate::common::read::read(self, i) }
+        self[i]
+    }
+    /// An atomic load (relaxed, device scope): other invocations write the slot concurrently,
+    /// and a plain load racing with their atomics has no defined value in Vulkan's memory model.
+    #[cfg(target_arch = "spirv")]
+    fn peek(&self, i: usize) -> u32 {
+        use spirv_std::memory::{Scope, Semantics};
+        unsafe { spirv_std::arch::atomic_load::<u32, { Scope::Device as u32 }, { Semantics::NONE.bits() }>(&self[i]) }
     }
     #[cfg(not(target_arch = "spirv"))]
     fn atomic_min(&mut self, i: usize, v: u32) -> u32 {

@@ -33,8 +33,9 @@ use spirv_std::spirv;
 /// of its distance, `(Q − P)·n > FLAG_SLOPE·|Q − P|` (spec vbao §8.1). In the sample's own slice
 /// `(Q − P)·n = |Q − P|·L·sin β`, β its angle above the half-circle's edge, and a sector is set
 /// only for β above the edge tolerance min(0.02/L, 2π/32) ([`EDGE_TOLERANCE`]): in every slice
-/// with L ≥ 0.1 that needs `(Q − P)·n ≥ 0.0199·|Q − P|`. 0.9 of it leaves margin for rounding
-/// and stays above the G-buffer normal's error (0.0166), so a plane flags nothing.
+/// with L ≥ 0.1 that needs `(Q − P)·n ≥ 0.0195·|Q − P|` (0.0199 for L ≥ 0.102, 0.0195 at the
+/// cap, L = 0.1). 0.018 leaves margin for rounding and stays above the G-buffer normal's error
+/// (0.0166), so a plane flags nothing.
 pub const FLAG_SLOPE: f32 = 0.9 * EDGE_TOLERANCE;
 
 /// Layers closer than this fraction of the sample's depth behind it are the sample's own
@@ -196,10 +197,8 @@ fn texel_ray_uv_lanes<L: Lanes>(x: L::Index, y: L::Index, sd: &SvaoParams) -> L:
     });
     let low = sd.sd_low_res.as_vec2();
     let sg = sd.sd_guard as f32;
-    L::V2::new(
-        (L::index_to_float(x) - sg + jitter.x()) * (1.0 / low.x),
-        (L::index_to_float(y) - sg + jitter.y()) * (1.0 / low.y),
-    )
+    // Divided, as the scalar `texel_ray_uv` does, so both give the same bits.
+    L::V2::new((L::index_to_float(x) - sg + jitter.x()) / low.x, (L::index_to_float(y) - sg + jitter.y()) / low.y)
 }
 
 /// The occupied segments behind a sample from the SD map (spec vbao §8.2): the layers of the
@@ -245,7 +244,9 @@ impl<L: Lanes> Occupancy<L> for SdLayers<'_> {
             // behind another. Then the layers behind Q, in depth order.
             let entered = L::gather_index(self.mips, view.index_lanes::<L>(view.texel_of_uv_lanes::<L>(uv)));
             let same_surface = L::and(flag, (entered - q.z()).abs().le(L::splat(t)));
-            let after = L::select(same_surface, q.z() * (1.0 + SAME_SURFACE), L::splat(f32::MAX));
+            // Behind both Q and the surface the ray enters: the trace starts behind the
+            // texel centre's depth, so on a slope the entered surface itself can be a layer.
+            let after = L::select(same_surface, q.z().max(entered) * (1.0 + SAME_SURFACE), L::splat(f32::MAX));
             let n = sd.sd_layers;
             let base = (y * L::index_splat(sd.sd_size().x) + x) * L::index_splat(n);
             let layers = layers_behind::<L>(self.map, view, base, n, after);
