@@ -141,7 +141,7 @@ fn function_() {
     var phi_336_: type_26;
     var phi_343_: u32;
     var phi_350_: u32;
-    var phi_7728_: bool;
+    var phi_7748_: bool;
     var phi_1008_: u32;
     var phi_1011_: f32;
     var phi_1013_: f32;
@@ -150,129 +150,129 @@ fn function_() {
     var phi_1259_: f32;
     var phi_1260_: f32;
     var phi_1538_: bool;
-    var phi_1691_: bool;
-    var phi_1853_: vec2<f32>;
-    var phi_1854_: vec2<f32>;
-    var phi_2297_: f32;
-    var phi_2298_: f32;
-    var phi_2299_: f32;
-    var phi_2300_: f32;
-    var phi_2642_: bool;
-    var phi_2869_: f32;
-    var phi_2919_: u32;
-    var phi_2922_: u32;
-    var phi_2923_: u32;
-    var phi_2924_: bool;
-    var phi_2937_: u32;
-    var phi_2968_: bool;
-    var phi_3195_: f32;
-    var phi_3245_: u32;
-    var phi_3248_: u32;
-    var phi_3249_: u32;
-    var phi_3250_: bool;
-    var phi_3263_: u32;
-    var phi_3295_: bool;
-    var phi_3522_: f32;
-    var phi_3572_: u32;
-    var phi_3575_: u32;
-    var phi_3576_: u32;
-    var phi_3577_: bool;
-    var phi_3590_: u32;
-    var phi_3622_: bool;
-    var phi_3849_: f32;
-    var phi_3899_: u32;
-    var phi_3902_: u32;
-    var phi_3903_: u32;
-    var phi_3904_: bool;
-    var phi_3917_: u32;
-    var phi_3919_: u32;
-    var phi_3920_: vec3<f32>;
-    var phi_4107_: f32;
-    var phi_4157_: u32;
-    var phi_4160_: u32;
-    var phi_4161_: u32;
-    var phi_4162_: bool;
-    var phi_4176_: u32;
-    var phi_4196_: bool;
-    var phi_4349_: bool;
-    var phi_4511_: vec2<f32>;
-    var phi_4512_: vec2<f32>;
-    var phi_4955_: f32;
-    var phi_4956_: f32;
-    var phi_4957_: f32;
-    var phi_4958_: f32;
-    var phi_5300_: bool;
-    var phi_5527_: f32;
-    var phi_5577_: u32;
-    var phi_5580_: u32;
-    var phi_5581_: u32;
-    var phi_5582_: bool;
-    var phi_5595_: u32;
-    var phi_5626_: bool;
-    var phi_5853_: f32;
-    var phi_5903_: u32;
-    var phi_5906_: u32;
-    var phi_5907_: u32;
-    var phi_5908_: bool;
+    var phi_1708_: bool;
+    var phi_1859_: vec2<f32>;
+    var phi_1860_: vec2<f32>;
+    var phi_2303_: f32;
+    var phi_2304_: f32;
+    var phi_2305_: f32;
+    var phi_2306_: f32;
+    var phi_2649_: bool;
+    var phi_2876_: f32;
+    var phi_2926_: u32;
+    var phi_2929_: u32;
+    var phi_2930_: u32;
+    var phi_2931_: bool;
+    var phi_2944_: u32;
+    var phi_2976_: bool;
+    var phi_3203_: f32;
+    var phi_3253_: u32;
+    var phi_3256_: u32;
+    var phi_3257_: u32;
+    var phi_3258_: bool;
+    var phi_3271_: u32;
+    var phi_3304_: bool;
+    var phi_3531_: f32;
+    var phi_3581_: u32;
+    var phi_3584_: u32;
+    var phi_3585_: u32;
+    var phi_3586_: bool;
+    var phi_3599_: u32;
+    var phi_3632_: bool;
+    var phi_3859_: f32;
+    var phi_3909_: u32;
+    var phi_3912_: u32;
+    var phi_3913_: u32;
+    var phi_3914_: bool;
+    var phi_3927_: u32;
+    var phi_3929_: u32;
+    var phi_3930_: vec3<f32>;
+    var phi_4117_: f32;
+    var phi_4167_: u32;
+    var phi_4170_: u32;
+    var phi_4171_: u32;
+    var phi_4172_: bool;
+    var phi_4186_: u32;
+    var phi_4206_: bool;
+    var phi_4376_: bool;
+    var phi_4527_: vec2<f32>;
+    var phi_4528_: vec2<f32>;
+    var phi_4971_: f32;
+    var phi_4972_: f32;
+    var phi_4973_: f32;
+    var phi_4974_: f32;
+    var phi_5317_: bool;
+    var phi_5544_: f32;
+    var phi_5594_: u32;
+    var phi_5597_: u32;
+    var phi_5598_: u32;
+    var phi_5599_: bool;
+    var phi_5612_: u32;
+    var phi_5644_: bool;
+    var phi_5871_: f32;
     var phi_5921_: u32;
-    var phi_5953_: bool;
-    var phi_6180_: f32;
-    var phi_6230_: u32;
-    var phi_6233_: u32;
-    var phi_6234_: u32;
-    var phi_6235_: bool;
-    var phi_6248_: u32;
-    var phi_6280_: bool;
-    var phi_6507_: f32;
-    var phi_6557_: u32;
-    var phi_6560_: u32;
-    var phi_6561_: u32;
-    var phi_6562_: bool;
-    var phi_6575_: u32;
+    var phi_5924_: u32;
+    var phi_5925_: u32;
+    var phi_5926_: bool;
+    var phi_5939_: u32;
+    var phi_5972_: bool;
+    var phi_6199_: f32;
+    var phi_6249_: u32;
+    var phi_6252_: u32;
+    var phi_6253_: u32;
+    var phi_6254_: bool;
+    var phi_6267_: u32;
+    var phi_6300_: bool;
+    var phi_6527_: f32;
     var phi_6577_: u32;
-    var phi_6578_: vec3<f32>;
-    var phi_6765_: f32;
-    var phi_6815_: u32;
-    var phi_6818_: u32;
-    var phi_6819_: u32;
-    var phi_6820_: bool;
-    var phi_6834_: u32;
+    var phi_6580_: u32;
+    var phi_6581_: u32;
+    var phi_6582_: bool;
+    var phi_6595_: u32;
+    var phi_6597_: u32;
+    var phi_6598_: vec3<f32>;
+    var phi_6785_: f32;
+    var phi_6835_: u32;
+    var phi_6838_: u32;
+    var phi_6839_: u32;
+    var phi_6840_: bool;
+    var phi_6854_: u32;
     var phi_1200_: u32;
     var phi_1203_: u32;
-    var phi_7189_: bool;
+    var phi_7209_: bool;
     var local_9: u32;
-    var phi_6915_: u32;
-    var phi_6918_: f32;
+    var phi_6935_: u32;
+    var phi_6938_: f32;
     var local_10: u32;
-    var phi_6916_: u32;
-    var phi_6919_: f32;
-    var phi_7812_: bool;
+    var phi_6936_: u32;
+    var phi_6939_: f32;
+    var phi_7832_: bool;
     var local_11: f32;
-    var phi_7823_: bool;
-    var phi_6968_: f32;
-    var phi_6969_: f32;
-    var phi_6863_: u32;
-    var phi_6866_: f32;
-    var phi_6868_: f32;
+    var phi_7843_: bool;
+    var phi_6988_: f32;
+    var phi_6989_: f32;
+    var phi_6883_: u32;
+    var phi_6886_: f32;
+    var phi_6888_: f32;
     var local_12: u32;
-    var phi_6864_: u32;
-    var phi_6867_: f32;
-    var phi_6869_: f32;
+    var phi_6884_: u32;
+    var phi_6887_: f32;
+    var phi_6889_: f32;
     var local_13: f32;
-    var phi_7817_: bool;
-    var phi_6970_: f32;
-    var phi_6971_: f32;
-    var phi_7816_: bool;
+    var phi_7837_: bool;
+    var phi_6990_: f32;
+    var phi_6991_: f32;
+    var phi_7836_: bool;
     var phi_1009_: u32;
     var phi_1012_: f32;
     var phi_1014_: f32;
-    var phi_7815_: bool;
+    var phi_7835_: bool;
     var local_14: f32;
     var local_15: f32;
     var local_16: f32;
-    var phi_6979_: f32;
-    var phi_6991_: f32;
-    var phi_6992_: f32;
+    var phi_6999_: f32;
+    var phi_7011_: f32;
+    var phi_7012_: f32;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -453,12 +453,12 @@ fn function_() {
                     let _e679 = select(false, (_e270 < _e225.member.member_3), (_e270 > 0f));
                     if _e679 {
                         let _e682 = select(1u, _e225.member_8, (1u < _e225.member_8));
-                        phi_7728_ = false;
+                        phi_7748_ = false;
                         phi_1008_ = 0u;
                         phi_1011_ = 0f;
                         phi_1013_ = 0f;
                         loop {
-                            let _e684 = phi_7728_;
+                            let _e684 = phi_7748_;
                             let _e686 = phi_1008_;
                             let _e688 = phi_1011_;
                             let _e690 = phi_1013_;
@@ -563,10 +563,9 @@ fn function_() {
                                         let _e964 = (_e927 - _e466);
                                         let _e965 = (_e931 - _e473);
                                         let _e966 = (_e923 - _e459);
-                                        let _e971 = (((_e964 * _e964) + (_e965 * _e965)) + (_e966 * _e966));
-                                        let _e972 = (_e241 > 0f);
-                                        if _e972 {
-                                            phi_1538_ = (_e971 > (_e241 * _e241));
+                                        let _e967 = (_e241 > 0f);
+                                        if _e967 {
+                                            phi_1538_ = ((((_e964 * _e964) + (_e965 * _e965)) + (_e966 * _e966)) > (_e241 * _e241));
                                         } else {
                                             phi_1538_ = false;
                                         }
@@ -599,1254 +598,1255 @@ fn function_() {
                                             let _e1060 = (_e1027 * 0.02f);
                                             let _e1063 = select(0.19634955f, _e1060, ((_e1060 < 0.19634955f) || false));
                                             let _e1069 = ((((_e993 * _e993) + (_e994 * _e994)) + (_e995 * _e995)) <= 0f);
-                                            if _e972 {
-                                                phi_1691_ = (_e971 <= (_e241 * _e241));
+                                            let _e1079 = (((_e964 * _e964) + (_e965 * _e965)) + (_e966 * _e966));
+                                            if _e967 {
+                                                phi_1708_ = (_e1079 > (_e241 * _e241));
                                             } else {
-                                                phi_1691_ = true;
+                                                phi_1708_ = false;
                                             }
-                                            let _e1073 = phi_1691_;
-                                            let _e1082 = select(false, ((((_e964 * _e545) + (_e965 * _e546)) + (_e966 * _e547)) > (sqrt(_e971) * 0.018f)), _e1073);
-                                            if _e1082 {
-                                                let _e1083 = (0.5f / _e923);
-                                                let _e1089 = frame.member[0u].member_1.member.member.member_1[0u];
-                                                let _e1097 = frame.member[0u].member_1.member.member.member_1[1u];
-                                                let _e1102 = frame.member[0u].member_1.member_5[0u];
-                                                let _e1105 = frame.member[0u].member_1.member_5[1u];
-                                                let _e1106 = f32(_e1102);
-                                                let _e1107 = f32(_e1105);
-                                                let _e1109 = frame.member[0u].member_1.member_4;
-                                                let _e1110 = f32(_e1109);
-                                                let _e1111 = (2u * _e1109);
-                                                let _e1112 = (_e1102 + _e1111);
-                                                let _e1116 = (floor(((((_e927 * _e1083) / _e1089) + 0.5f) * _e1106)) + _e1110);
-                                                let _e1119 = f32(bitcast<i32>((_e1112 - 1u)));
-                                                let _e1127 = (bitcast<u32>((floor(select(0f, select(_e1119, _e1116, (_e1116 < _e1119)), (_e1116 > 0f))) + 8388608f)) - 1258291200u);
-                                                let _e1130 = (floor(((0.5f - ((_e931 * _e1083) / _e1097)) * _e1107)) + _e1110);
-                                                let _e1133 = f32(bitcast<i32>(((_e1105 + _e1111) - 1u)));
-                                                let _e1141 = (bitcast<u32>((floor(select(0f, select(_e1133, _e1130, (_e1130 < _e1133)), (_e1130 > 0f))) + 8388608f)) - 1258291200u);
-                                                let _e1143 = frame.member[0u].member_1.member_8;
-                                                let _e1145 = frame.member[0u].member_1.member_12;
-                                                let _e1152 = (((((_e1141 % 4u) * 4u) + (_e1127 % 4u)) + (_e1145 % 16u)) % 16u);
-                                                if (_e1143 == 1u) {
+                                            let _e1086 = phi_1708_;
+                                            let _e1088 = select(false, ((((_e964 * _e545) + (_e965 * _e546)) + (_e966 * _e547)) > (sqrt(_e1079) * 0.018f)), !(_e1086));
+                                            if _e1088 {
+                                                let _e1089 = (0.5f / _e923);
+                                                let _e1095 = frame.member[0u].member_1.member.member.member_1[0u];
+                                                let _e1103 = frame.member[0u].member_1.member.member.member_1[1u];
+                                                let _e1108 = frame.member[0u].member_1.member_5[0u];
+                                                let _e1111 = frame.member[0u].member_1.member_5[1u];
+                                                let _e1112 = f32(_e1108);
+                                                let _e1113 = f32(_e1111);
+                                                let _e1115 = frame.member[0u].member_1.member_4;
+                                                let _e1116 = f32(_e1115);
+                                                let _e1117 = (2u * _e1115);
+                                                let _e1118 = (_e1108 + _e1117);
+                                                let _e1122 = (floor(((((_e927 * _e1089) / _e1095) + 0.5f) * _e1112)) + _e1116);
+                                                let _e1125 = f32(bitcast<i32>((_e1118 - 1u)));
+                                                let _e1133 = (bitcast<u32>((floor(select(0f, select(_e1125, _e1122, (_e1122 < _e1125)), (_e1122 > 0f))) + 8388608f)) - 1258291200u);
+                                                let _e1136 = (floor(((0.5f - ((_e931 * _e1089) / _e1103)) * _e1113)) + _e1116);
+                                                let _e1139 = f32(bitcast<i32>(((_e1111 + _e1117) - 1u)));
+                                                let _e1147 = (bitcast<u32>((floor(select(0f, select(_e1139, _e1136, (_e1136 < _e1139)), (_e1136 > 0f))) + 8388608f)) - 1258291200u);
+                                                let _e1149 = frame.member[0u].member_1.member_8;
+                                                let _e1151 = frame.member[0u].member_1.member_12;
+                                                let _e1158 = (((((_e1147 % 4u) * 4u) + (_e1133 % 4u)) + (_e1151 % 16u)) % 16u);
+                                                if (_e1149 == 1u) {
                                                     local_5 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
-                                                    let _e1165 = (_e1152 < 16u);
-                                                    if _e1165 {
+                                                    let _e1171 = (_e1158 < 16u);
+                                                    if _e1171 {
                                                     } else {
-                                                        phi_7189_ = true;
+                                                        phi_7209_ = true;
                                                         break;
                                                     }
-                                                    let _e1168 = local_5[_e1152][0u];
+                                                    let _e1174 = local_5[_e1158][0u];
                                                     local_6 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
-                                                    if _e1165 {
+                                                    if _e1171 {
                                                     } else {
-                                                        phi_7189_ = true;
+                                                        phi_7209_ = true;
                                                         break;
                                                     }
-                                                    let _e1171 = local_6[_e1152][1u];
-                                                    phi_1854_ = vec2<f32>(_e1168, _e1171);
+                                                    let _e1177 = local_6[_e1158][1u];
+                                                    phi_1860_ = vec2<f32>(_e1174, _e1177);
                                                 } else {
-                                                    if (_e1143 == 2u) {
+                                                    if (_e1149 == 2u) {
                                                         local_7 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
-                                                        let _e1155 = (_e1152 < 16u);
-                                                        if _e1155 {
+                                                        let _e1161 = (_e1158 < 16u);
+                                                        if _e1161 {
                                                         } else {
-                                                            phi_7189_ = true;
+                                                            phi_7209_ = true;
                                                             break;
                                                         }
-                                                        let _e1158 = local_7[_e1152][0u];
+                                                        let _e1164 = local_7[_e1158][0u];
                                                         local_8 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
-                                                        if _e1155 {
+                                                        if _e1161 {
                                                         } else {
-                                                            phi_7189_ = true;
+                                                            phi_7209_ = true;
                                                             break;
                                                         }
-                                                        let _e1161 = local_8[_e1152][1u];
-                                                        phi_1853_ = vec2<f32>(_e1158, _e1161);
+                                                        let _e1167 = local_8[_e1158][1u];
+                                                        phi_1859_ = vec2<f32>(_e1164, _e1167);
                                                     } else {
-                                                        phi_1853_ = vec2<f32>(0.5f, 0.5f);
+                                                        phi_1859_ = vec2<f32>(0.5f, 0.5f);
                                                     }
-                                                    let _e1164 = phi_1853_;
-                                                    phi_1854_ = _e1164;
+                                                    let _e1170 = phi_1859_;
+                                                    phi_1860_ = _e1170;
                                                 }
-                                                let _e1174 = phi_1854_;
-                                                let _e1181 = (((f32(bitcast<i32>(_e1127)) - _e1110) + _e1174.x) / _e1106);
-                                                let _e1186 = (((f32(bitcast<i32>(_e1141)) - _e1110) + _e1174.y) / _e1107);
-                                                let _e1191 = frame.member[0u].member_1.member.member.member[0u];
-                                                let _e1196 = select(select(u32(_e1191), 0u, (_e1191 < 0f)), 4294967295u, (_e1191 > 4294967000f));
-                                                let _e1201 = frame.member[0u].member_1.member.member.member[1u];
-                                                let _e1211 = (select(0f, select(1f, _e1181, (_e1181 < 1f)), (_e1181 > 0f)) * _e1191);
-                                                let _e1214 = f32(bitcast<i32>((_e1196 - 1u)));
-                                                let _e1227 = (select(0f, select(1f, _e1186, (_e1186 < 1f)), (_e1186 > 0f)) * _e1201);
-                                                let _e1230 = f32(bitcast<i32>((select(select(u32(_e1201), 0u, (_e1201 < 0f)), 4294967295u, (_e1201 > 4294967000f)) - 1u)));
-                                                let _e1242 = mips.member[(((bitcast<u32>((floor(select(0f, select(_e1230, _e1227, (_e1227 < _e1230)), (_e1227 > 0f))) + 8388608f)) - 1258291200u) * _e1196) + (bitcast<u32>((floor(select(0f, select(_e1214, _e1211, (_e1211 < _e1214)), (_e1211 > 0f))) + 8388608f)) - 1258291200u))];
-                                                let _e1252 = select(0x1.fffffep+127f, (select(_e1242, _e923, ((_e923 > _e1242) || (_e1242 != _e1242))) * 1.001f), select(false, (abs((_e1242 - _e923)) <= _e238), _e1082));
-                                                let _e1254 = frame.member[0u].member_1.member_6;
-                                                let _e1257 = (((_e1141 * _e1112) + _e1127) * _e1254);
-                                                let _e1259 = sd_map.member[_e1257];
-                                                let _e1263 = frame.member[0u].member_1.member.member.member_3;
-                                                let _e1267 = frame.member[0u].member_1.member.member.member_2;
-                                                let _e1268 = (_e1263 - _e1267);
-                                                let _e1270 = ((_e1259 * _e1268) + _e1267);
-                                                let _e1276 = select(_e1263, _e1270, select(false, select(false, (_e1270 > _e1252), (_e1259 < 1f)), (0u < _e1254)));
-                                                let _e1277 = (_e1254 - 1u);
-                                                let _e1282 = sd_map.member[(_e1257 + select(1u, _e1277, (_e1277 < 1u)))];
-                                                let _e1284 = ((_e1282 * _e1268) + _e1267);
-                                                let _e1290 = select(_e1263, _e1284, select(false, select(false, (_e1284 > _e1252), (_e1282 < 1f)), (1u < _e1254)));
-                                                let _e1295 = sd_map.member[(_e1257 + select(2u, _e1277, (_e1277 < 2u)))];
-                                                let _e1297 = ((_e1295 * _e1268) + _e1267);
-                                                let _e1303 = select(_e1263, _e1297, select(false, select(false, (_e1297 > _e1252), (_e1295 < 1f)), (2u < _e1254)));
-                                                let _e1308 = sd_map.member[(_e1257 + select(3u, _e1277, (_e1277 < 3u)))];
-                                                let _e1310 = ((_e1308 * _e1268) + _e1267);
-                                                let _e1316 = select(_e1263, _e1310, select(false, select(false, (_e1310 > _e1252), (_e1308 < 1f)), (3u < _e1254)));
-                                                if (_e1254 > 4u) {
-                                                    let _e1322 = sd_map.member[(_e1257 + select(4u, _e1277, (_e1277 < 4u)))];
-                                                    let _e1324 = ((_e1322 * _e1268) + _e1267);
-                                                    let _e1335 = sd_map.member[(_e1257 + select(5u, _e1277, (_e1277 < 5u)))];
-                                                    let _e1337 = ((_e1335 * _e1268) + _e1267);
-                                                    let _e1348 = sd_map.member[(_e1257 + select(6u, _e1277, (_e1277 < 6u)))];
-                                                    let _e1350 = ((_e1348 * _e1268) + _e1267);
-                                                    let _e1361 = sd_map.member[(_e1257 + select(7u, _e1277, (_e1277 < 7u)))];
-                                                    let _e1363 = ((_e1361 * _e1268) + _e1267);
-                                                    phi_2297_ = select(_e1263, _e1350, select(false, select(false, (_e1350 > _e1252), (_e1348 < 1f)), (6u < _e1254)));
-                                                    phi_2298_ = select(_e1263, _e1337, select(false, select(false, (_e1337 > _e1252), (_e1335 < 1f)), (5u < _e1254)));
-                                                    phi_2299_ = select(_e1263, _e1324, select(false, select(false, (_e1324 > _e1252), (_e1322 < 1f)), (4u < _e1254)));
-                                                    phi_2300_ = select(_e1263, _e1363, select(false, select(false, (_e1363 > _e1252), (_e1361 < 1f)), (7u < _e1254)));
+                                                let _e1180 = phi_1860_;
+                                                let _e1187 = (((f32(bitcast<i32>(_e1133)) - _e1116) + _e1180.x) / _e1112);
+                                                let _e1192 = (((f32(bitcast<i32>(_e1147)) - _e1116) + _e1180.y) / _e1113);
+                                                let _e1197 = frame.member[0u].member_1.member.member.member[0u];
+                                                let _e1202 = select(select(u32(_e1197), 0u, (_e1197 < 0f)), 4294967295u, (_e1197 > 4294967000f));
+                                                let _e1207 = frame.member[0u].member_1.member.member.member[1u];
+                                                let _e1217 = (select(0f, select(1f, _e1187, (_e1187 < 1f)), (_e1187 > 0f)) * _e1197);
+                                                let _e1220 = f32(bitcast<i32>((_e1202 - 1u)));
+                                                let _e1233 = (select(0f, select(1f, _e1192, (_e1192 < 1f)), (_e1192 > 0f)) * _e1207);
+                                                let _e1236 = f32(bitcast<i32>((select(select(u32(_e1207), 0u, (_e1207 < 0f)), 4294967295u, (_e1207 > 4294967000f)) - 1u)));
+                                                let _e1248 = mips.member[(((bitcast<u32>((floor(select(0f, select(_e1236, _e1233, (_e1233 < _e1236)), (_e1233 > 0f))) + 8388608f)) - 1258291200u) * _e1202) + (bitcast<u32>((floor(select(0f, select(_e1220, _e1217, (_e1217 < _e1220)), (_e1217 > 0f))) + 8388608f)) - 1258291200u))];
+                                                let _e1258 = select(0x1.fffffep+127f, (select(_e1248, _e923, ((_e923 > _e1248) || (_e1248 != _e1248))) * 1.001f), select(false, (abs((_e1248 - _e923)) <= _e238), _e1088));
+                                                let _e1260 = frame.member[0u].member_1.member_6;
+                                                let _e1263 = (((_e1147 * _e1118) + _e1133) * _e1260);
+                                                let _e1265 = sd_map.member[_e1263];
+                                                let _e1269 = frame.member[0u].member_1.member.member.member_3;
+                                                let _e1273 = frame.member[0u].member_1.member.member.member_2;
+                                                let _e1274 = (_e1269 - _e1273);
+                                                let _e1276 = ((_e1265 * _e1274) + _e1273);
+                                                let _e1282 = select(_e1269, _e1276, select(false, select(false, (_e1276 > _e1258), (_e1265 < 1f)), (0u < _e1260)));
+                                                let _e1283 = (_e1260 - 1u);
+                                                let _e1288 = sd_map.member[(_e1263 + select(1u, _e1283, (_e1283 < 1u)))];
+                                                let _e1290 = ((_e1288 * _e1274) + _e1273);
+                                                let _e1296 = select(_e1269, _e1290, select(false, select(false, (_e1290 > _e1258), (_e1288 < 1f)), (1u < _e1260)));
+                                                let _e1301 = sd_map.member[(_e1263 + select(2u, _e1283, (_e1283 < 2u)))];
+                                                let _e1303 = ((_e1301 * _e1274) + _e1273);
+                                                let _e1309 = select(_e1269, _e1303, select(false, select(false, (_e1303 > _e1258), (_e1301 < 1f)), (2u < _e1260)));
+                                                let _e1314 = sd_map.member[(_e1263 + select(3u, _e1283, (_e1283 < 3u)))];
+                                                let _e1316 = ((_e1314 * _e1274) + _e1273);
+                                                let _e1322 = select(_e1269, _e1316, select(false, select(false, (_e1316 > _e1258), (_e1314 < 1f)), (3u < _e1260)));
+                                                if (_e1260 > 4u) {
+                                                    let _e1328 = sd_map.member[(_e1263 + select(4u, _e1283, (_e1283 < 4u)))];
+                                                    let _e1330 = ((_e1328 * _e1274) + _e1273);
+                                                    let _e1341 = sd_map.member[(_e1263 + select(5u, _e1283, (_e1283 < 5u)))];
+                                                    let _e1343 = ((_e1341 * _e1274) + _e1273);
+                                                    let _e1354 = sd_map.member[(_e1263 + select(6u, _e1283, (_e1283 < 6u)))];
+                                                    let _e1356 = ((_e1354 * _e1274) + _e1273);
+                                                    let _e1367 = sd_map.member[(_e1263 + select(7u, _e1283, (_e1283 < 7u)))];
+                                                    let _e1369 = ((_e1367 * _e1274) + _e1273);
+                                                    phi_2303_ = select(_e1269, _e1356, select(false, select(false, (_e1356 > _e1258), (_e1354 < 1f)), (6u < _e1260)));
+                                                    phi_2304_ = select(_e1269, _e1343, select(false, select(false, (_e1343 > _e1258), (_e1341 < 1f)), (5u < _e1260)));
+                                                    phi_2305_ = select(_e1269, _e1330, select(false, select(false, (_e1330 > _e1258), (_e1328 < 1f)), (4u < _e1260)));
+                                                    phi_2306_ = select(_e1269, _e1369, select(false, select(false, (_e1369 > _e1258), (_e1367 < 1f)), (7u < _e1260)));
                                                 } else {
-                                                    phi_2297_ = _e1263;
-                                                    phi_2298_ = _e1263;
-                                                    phi_2299_ = _e1263;
-                                                    phi_2300_ = _e1263;
+                                                    phi_2303_ = _e1269;
+                                                    phi_2304_ = _e1269;
+                                                    phi_2305_ = _e1269;
+                                                    phi_2306_ = _e1269;
                                                 }
-                                                let _e1371 = phi_2297_;
-                                                let _e1373 = phi_2298_;
-                                                let _e1375 = phi_2299_;
-                                                let _e1377 = phi_2300_;
-                                                let _e1379 = (_e1290 != _e1290);
-                                                let _e1381 = select(_e1290, _e1276, ((_e1276 < _e1290) || _e1379));
-                                                let _e1384 = select(_e1290, _e1276, ((_e1276 > _e1290) || _e1379));
-                                                let _e1386 = (_e1316 != _e1316);
-                                                let _e1388 = select(_e1316, _e1303, ((_e1303 < _e1316) || _e1386));
-                                                let _e1391 = select(_e1316, _e1303, ((_e1303 > _e1316) || _e1386));
-                                                let _e1393 = (_e1373 != _e1373);
-                                                let _e1395 = select(_e1373, _e1375, ((_e1375 < _e1373) || _e1393));
-                                                let _e1398 = select(_e1373, _e1375, ((_e1375 > _e1373) || _e1393));
-                                                let _e1400 = (_e1377 != _e1377);
-                                                let _e1402 = select(_e1377, _e1371, ((_e1371 < _e1377) || _e1400));
-                                                let _e1405 = select(_e1377, _e1371, ((_e1371 > _e1377) || _e1400));
-                                                let _e1407 = (_e1388 != _e1388);
-                                                let _e1409 = select(_e1388, _e1381, ((_e1381 < _e1388) || _e1407));
-                                                let _e1412 = select(_e1388, _e1381, ((_e1381 > _e1388) || _e1407));
-                                                let _e1414 = (_e1391 != _e1391);
-                                                let _e1416 = select(_e1391, _e1384, ((_e1384 < _e1391) || _e1414));
-                                                let _e1419 = select(_e1391, _e1384, ((_e1384 > _e1391) || _e1414));
-                                                let _e1421 = (_e1402 != _e1402);
-                                                let _e1423 = select(_e1402, _e1395, ((_e1395 < _e1402) || _e1421));
-                                                let _e1426 = select(_e1402, _e1395, ((_e1395 > _e1402) || _e1421));
-                                                let _e1428 = (_e1405 != _e1405);
-                                                let _e1430 = select(_e1405, _e1398, ((_e1398 < _e1405) || _e1428));
-                                                let _e1433 = select(_e1405, _e1398, ((_e1398 > _e1405) || _e1428));
-                                                let _e1435 = (_e1412 != _e1412);
-                                                let _e1437 = select(_e1412, _e1416, ((_e1416 < _e1412) || _e1435));
-                                                let _e1440 = select(_e1412, _e1416, ((_e1416 > _e1412) || _e1435));
-                                                let _e1442 = (_e1426 != _e1426);
-                                                let _e1444 = select(_e1426, _e1430, ((_e1430 < _e1426) || _e1442));
-                                                let _e1447 = select(_e1426, _e1430, ((_e1430 > _e1426) || _e1442));
-                                                let _e1449 = (_e1423 != _e1423);
-                                                let _e1451 = select(_e1423, _e1409, ((_e1409 < _e1423) || _e1449));
-                                                let _e1454 = select(_e1423, _e1409, ((_e1409 > _e1423) || _e1449));
-                                                let _e1456 = (_e1444 != _e1444);
-                                                let _e1458 = select(_e1444, _e1437, ((_e1437 < _e1444) || _e1456));
-                                                let _e1461 = select(_e1444, _e1437, ((_e1437 > _e1444) || _e1456));
-                                                let _e1463 = (_e1447 != _e1447);
-                                                let _e1465 = select(_e1447, _e1440, ((_e1440 < _e1447) || _e1463));
-                                                let _e1468 = select(_e1447, _e1440, ((_e1440 > _e1447) || _e1463));
-                                                let _e1470 = (_e1433 != _e1433);
-                                                let _e1472 = select(_e1433, _e1419, ((_e1419 < _e1433) || _e1470));
-                                                let _e1475 = select(_e1433, _e1419, ((_e1419 > _e1433) || _e1470));
-                                                let _e1477 = (_e1454 != _e1454);
-                                                let _e1479 = select(_e1454, _e1465, ((_e1465 < _e1454) || _e1477));
-                                                let _e1482 = select(_e1454, _e1465, ((_e1465 > _e1454) || _e1477));
-                                                let _e1484 = (_e1461 != _e1461);
-                                                let _e1486 = select(_e1461, _e1472, ((_e1472 < _e1461) || _e1484));
-                                                let _e1489 = select(_e1461, _e1472, ((_e1472 > _e1461) || _e1484));
-                                                let _e1491 = (_e1479 != _e1479);
-                                                let _e1493 = select(_e1479, _e1458, ((_e1458 < _e1479) || _e1491));
-                                                let _e1496 = select(_e1479, _e1458, ((_e1458 > _e1479) || _e1491));
-                                                let _e1498 = (_e1482 != _e1482);
-                                                let _e1500 = select(_e1482, _e1486, ((_e1486 < _e1482) || _e1498));
-                                                let _e1503 = select(_e1482, _e1486, ((_e1486 > _e1482) || _e1498));
-                                                let _e1505 = (_e1468 != _e1468);
-                                                let _e1507 = select(_e1468, _e1489, ((_e1489 < _e1468) || _e1505));
-                                                let _e1510 = select(_e1468, _e1489, ((_e1489 > _e1468) || _e1505));
-                                                let _e1514 = select(false, (_e1451 > (_e923 + _e238)), (_e1451 < _e1263));
-                                                let _e1516 = ((_e1181 * 2f) - 1f);
-                                                let _e1520 = ((_e1186 * -2f) + 1f);
-                                                let _e1530 = (_e1516 * _e225.member.member_1.x);
-                                                let _e1532 = (_e1520 * _e225.member.member_1.y);
-                                                let _e1534 = ((_e1530 * _e1493) - _e466);
-                                                let _e1535 = ((_e1532 * _e1493) - _e473);
-                                                let _e1536 = (_e1493 - _e459);
-                                                if _e972 {
-                                                    phi_2642_ = ((((_e1534 * _e1534) + (_e1535 * _e1535)) + (_e1536 * _e1536)) <= (_e241 * _e241));
+                                                let _e1377 = phi_2303_;
+                                                let _e1379 = phi_2304_;
+                                                let _e1381 = phi_2305_;
+                                                let _e1383 = phi_2306_;
+                                                let _e1385 = (_e1296 != _e1296);
+                                                let _e1387 = select(_e1296, _e1282, ((_e1282 < _e1296) || _e1385));
+                                                let _e1390 = select(_e1296, _e1282, ((_e1282 > _e1296) || _e1385));
+                                                let _e1392 = (_e1322 != _e1322);
+                                                let _e1394 = select(_e1322, _e1309, ((_e1309 < _e1322) || _e1392));
+                                                let _e1397 = select(_e1322, _e1309, ((_e1309 > _e1322) || _e1392));
+                                                let _e1399 = (_e1379 != _e1379);
+                                                let _e1401 = select(_e1379, _e1381, ((_e1381 < _e1379) || _e1399));
+                                                let _e1404 = select(_e1379, _e1381, ((_e1381 > _e1379) || _e1399));
+                                                let _e1406 = (_e1383 != _e1383);
+                                                let _e1408 = select(_e1383, _e1377, ((_e1377 < _e1383) || _e1406));
+                                                let _e1411 = select(_e1383, _e1377, ((_e1377 > _e1383) || _e1406));
+                                                let _e1413 = (_e1394 != _e1394);
+                                                let _e1415 = select(_e1394, _e1387, ((_e1387 < _e1394) || _e1413));
+                                                let _e1418 = select(_e1394, _e1387, ((_e1387 > _e1394) || _e1413));
+                                                let _e1420 = (_e1397 != _e1397);
+                                                let _e1422 = select(_e1397, _e1390, ((_e1390 < _e1397) || _e1420));
+                                                let _e1425 = select(_e1397, _e1390, ((_e1390 > _e1397) || _e1420));
+                                                let _e1427 = (_e1408 != _e1408);
+                                                let _e1429 = select(_e1408, _e1401, ((_e1401 < _e1408) || _e1427));
+                                                let _e1432 = select(_e1408, _e1401, ((_e1401 > _e1408) || _e1427));
+                                                let _e1434 = (_e1411 != _e1411);
+                                                let _e1436 = select(_e1411, _e1404, ((_e1404 < _e1411) || _e1434));
+                                                let _e1439 = select(_e1411, _e1404, ((_e1404 > _e1411) || _e1434));
+                                                let _e1441 = (_e1418 != _e1418);
+                                                let _e1443 = select(_e1418, _e1422, ((_e1422 < _e1418) || _e1441));
+                                                let _e1446 = select(_e1418, _e1422, ((_e1422 > _e1418) || _e1441));
+                                                let _e1448 = (_e1432 != _e1432);
+                                                let _e1450 = select(_e1432, _e1436, ((_e1436 < _e1432) || _e1448));
+                                                let _e1453 = select(_e1432, _e1436, ((_e1436 > _e1432) || _e1448));
+                                                let _e1455 = (_e1429 != _e1429);
+                                                let _e1457 = select(_e1429, _e1415, ((_e1415 < _e1429) || _e1455));
+                                                let _e1460 = select(_e1429, _e1415, ((_e1415 > _e1429) || _e1455));
+                                                let _e1462 = (_e1450 != _e1450);
+                                                let _e1464 = select(_e1450, _e1443, ((_e1443 < _e1450) || _e1462));
+                                                let _e1467 = select(_e1450, _e1443, ((_e1443 > _e1450) || _e1462));
+                                                let _e1469 = (_e1453 != _e1453);
+                                                let _e1471 = select(_e1453, _e1446, ((_e1446 < _e1453) || _e1469));
+                                                let _e1474 = select(_e1453, _e1446, ((_e1446 > _e1453) || _e1469));
+                                                let _e1476 = (_e1439 != _e1439);
+                                                let _e1478 = select(_e1439, _e1425, ((_e1425 < _e1439) || _e1476));
+                                                let _e1481 = select(_e1439, _e1425, ((_e1425 > _e1439) || _e1476));
+                                                let _e1483 = (_e1460 != _e1460);
+                                                let _e1485 = select(_e1460, _e1471, ((_e1471 < _e1460) || _e1483));
+                                                let _e1488 = select(_e1460, _e1471, ((_e1471 > _e1460) || _e1483));
+                                                let _e1490 = (_e1467 != _e1467);
+                                                let _e1492 = select(_e1467, _e1478, ((_e1478 < _e1467) || _e1490));
+                                                let _e1495 = select(_e1467, _e1478, ((_e1478 > _e1467) || _e1490));
+                                                let _e1497 = (_e1485 != _e1485);
+                                                let _e1499 = select(_e1485, _e1464, ((_e1464 < _e1485) || _e1497));
+                                                let _e1502 = select(_e1485, _e1464, ((_e1464 > _e1485) || _e1497));
+                                                let _e1504 = (_e1488 != _e1488);
+                                                let _e1506 = select(_e1488, _e1492, ((_e1492 < _e1488) || _e1504));
+                                                let _e1509 = select(_e1488, _e1492, ((_e1492 > _e1488) || _e1504));
+                                                let _e1511 = (_e1474 != _e1474);
+                                                let _e1513 = select(_e1474, _e1495, ((_e1495 < _e1474) || _e1511));
+                                                let _e1516 = select(_e1474, _e1495, ((_e1495 > _e1474) || _e1511));
+                                                let _e1520 = select(false, (_e1457 > (_e923 + _e238)), (_e1457 < _e1269));
+                                                let _e1522 = ((_e1187 * 2f) - 1f);
+                                                let _e1526 = ((_e1192 * -2f) + 1f);
+                                                let _e1536 = (_e1522 * _e225.member.member_1.x);
+                                                let _e1538 = (_e1526 * _e225.member.member_1.y);
+                                                let _e1540 = ((_e1536 * _e1499) - _e466);
+                                                let _e1541 = ((_e1538 * _e1499) - _e473);
+                                                let _e1542 = (_e1499 - _e459);
+                                                if _e967 {
+                                                    phi_2649_ = ((((_e1540 * _e1540) + (_e1541 * _e1541)) + (_e1542 * _e1542)) > (_e241 * _e241));
                                                 } else {
-                                                    phi_2642_ = true;
+                                                    phi_2649_ = false;
                                                 }
-                                                let _e1545 = phi_2642_;
-                                                let _e1547 = select(false, _e1545, (_e1493 < _e225.member.member_3));
-                                                if _e1547 {
-                                                    let _e1548 = (_e1496 < _e225.member.member_3);
-                                                    let _e1557 = select((_e1534 - _e978), ((_e1530 * _e1496) - _e466), _e1548);
-                                                    let _e1558 = select((_e1535 - _e979), ((_e1532 * _e1496) - _e473), _e1548);
-                                                    let _e1559 = select((_e1536 - _e980), (_e1496 - _e459), _e1548);
-                                                    let _e1571 = ((((_e1534 * _e484) + (_e1535 * _e485)) + (_e1536 * _e486)) * inverseSqrt((((_e1534 * _e1534) + (_e1535 * _e1535)) + (_e1536 * _e1536))));
-                                                    let _e1575 = select(-1f, select(1f, _e1571, (_e1571 < 1f)), (_e1571 > -1f));
-                                                    let _e1576 = abs(_e1575);
-                                                    let _e1586 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1576, 0.00667009f), _e1576, -0.017088126f), _e1576, 0.03089188f), _e1576, -0.050174303f), _e1576, 0.08897899f), _e1576, -0.2145988f), _e1576, 1.5707963f) * sqrt((1f - _e1576)));
-                                                    let _e1593 = ((((select((3.1415927f - _e1586), _e1586, (_e1575 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e1597 = select(0f, select(1f, _e1593, (_e1593 < 1f)), (_e1593 > 0f));
-                                                    let _e1609 = ((((_e1557 * _e484) + (_e1558 * _e485)) + (_e1559 * _e486)) * inverseSqrt((((_e1557 * _e1557) + (_e1558 * _e1558)) + (_e1559 * _e1559))));
-                                                    let _e1613 = select(-1f, select(1f, _e1609, (_e1609 < 1f)), (_e1609 > -1f));
-                                                    let _e1614 = abs(_e1613);
-                                                    let _e1624 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1614, 0.00667009f), _e1614, -0.017088126f), _e1614, 0.03089188f), _e1614, -0.050174303f), _e1614, 0.08897899f), _e1614, -0.2145988f), _e1614, 1.5707963f) * sqrt((1f - _e1614)));
-                                                    let _e1631 = ((((select((3.1415927f - _e1624), _e1624, (_e1613 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e1635 = select(0f, select(1f, _e1631, (_e1631 < 1f)), (_e1631 > 0f));
-                                                    let _e1637 = (_e1635 != _e1635);
-                                                    let _e1639 = select(_e1635, _e1597, ((_e1597 < _e1635) || _e1637));
-                                                    let _e1642 = select(_e1635, _e1597, ((_e1597 > _e1635) || _e1637));
-                                                    let _e1644 = floor((_e1639 * 32f));
+                                                let _e1552 = phi_2649_;
+                                                let _e1554 = select(false, !(_e1552), (_e1499 < _e225.member.member_3));
+                                                if _e1554 {
+                                                    let _e1555 = (_e1502 < _e225.member.member_3);
+                                                    let _e1564 = select((_e1540 - _e978), ((_e1536 * _e1502) - _e466), _e1555);
+                                                    let _e1565 = select((_e1541 - _e979), ((_e1538 * _e1502) - _e473), _e1555);
+                                                    let _e1566 = select((_e1542 - _e980), (_e1502 - _e459), _e1555);
+                                                    let _e1578 = ((((_e1540 * _e484) + (_e1541 * _e485)) + (_e1542 * _e486)) * inverseSqrt((((_e1540 * _e1540) + (_e1541 * _e1541)) + (_e1542 * _e1542))));
+                                                    let _e1582 = select(-1f, select(1f, _e1578, (_e1578 < 1f)), (_e1578 > -1f));
+                                                    let _e1583 = abs(_e1582);
+                                                    let _e1593 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1583, 0.00667009f), _e1583, -0.017088126f), _e1583, 0.03089188f), _e1583, -0.050174303f), _e1583, 0.08897899f), _e1583, -0.2145988f), _e1583, 1.5707963f) * sqrt((1f - _e1583)));
+                                                    let _e1600 = ((((select((3.1415927f - _e1593), _e1593, (_e1582 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e1604 = select(0f, select(1f, _e1600, (_e1600 < 1f)), (_e1600 > 0f));
+                                                    let _e1616 = ((((_e1564 * _e484) + (_e1565 * _e485)) + (_e1566 * _e486)) * inverseSqrt((((_e1564 * _e1564) + (_e1565 * _e1565)) + (_e1566 * _e1566))));
+                                                    let _e1620 = select(-1f, select(1f, _e1616, (_e1616 < 1f)), (_e1616 > -1f));
+                                                    let _e1621 = abs(_e1620);
+                                                    let _e1631 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1621, 0.00667009f), _e1621, -0.017088126f), _e1621, 0.03089188f), _e1621, -0.050174303f), _e1621, 0.08897899f), _e1621, -0.2145988f), _e1621, 1.5707963f) * sqrt((1f - _e1621)));
+                                                    let _e1638 = ((((select((3.1415927f - _e1631), _e1631, (_e1620 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e1642 = select(0f, select(1f, _e1638, (_e1638 < 1f)), (_e1638 > 0f));
+                                                    let _e1644 = (_e1642 != _e1642);
+                                                    let _e1646 = select(_e1642, _e1604, ((_e1604 < _e1642) || _e1644));
+                                                    let _e1649 = select(_e1642, _e1604, ((_e1604 > _e1642) || _e1644));
+                                                    let _e1651 = floor((_e1646 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e1652 = -(floor((_e1642 * -32f)));
-                                                        let _e1657 = (select(32f, _e1652, ((_e1652 < 32f) || false)) - _e1644);
-                                                        phi_2869_ = select(select(0f, _e1657, ((_e1657 > 0f) || false)), 0f, (_e1642 <= _e1639));
+                                                        let _e1659 = -(floor((_e1649 * -32f)));
+                                                        let _e1664 = (select(32f, _e1659, ((_e1659 < 32f) || false)) - _e1651);
+                                                        phi_2876_ = select(select(0f, _e1664, ((_e1664 > 0f) || false)), 0f, (_e1649 <= _e1646));
                                                     } else {
-                                                        phi_2869_ = -(floor(((_e1642 - _e1639) * -32f)));
+                                                        phi_2876_ = -(floor(((_e1649 - _e1646) * -32f)));
                                                     }
-                                                    let _e1663 = phi_2869_;
-                                                    let _e1671 = (bitcast<u32>((floor(select(0f, select(32f, _e1644, (_e1644 < 32f)), (_e1644 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e1679 = (bitcast<u32>((floor(select(0f, select(32f, _e1663, (_e1663 < 32f)), (_e1663 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e1671 >= 32u) {
-                                                        phi_2923_ = u32();
-                                                        phi_2924_ = true;
+                                                    let _e1670 = phi_2876_;
+                                                    let _e1678 = (bitcast<u32>((floor(select(0f, select(32f, _e1651, (_e1651 < 32f)), (_e1651 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e1686 = (bitcast<u32>((floor(select(0f, select(32f, _e1670, (_e1670 < 32f)), (_e1670 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e1678 >= 32u) {
+                                                        phi_2930_ = u32();
+                                                        phi_2931_ = true;
                                                     } else {
-                                                        let _e1681 = (_e1679 == 0u);
-                                                        if _e1681 {
-                                                            phi_2922_ = u32();
+                                                        let _e1688 = (_e1686 == 0u);
+                                                        if _e1688 {
+                                                            phi_2929_ = u32();
                                                         } else {
-                                                            if (_e1679 >= 32u) {
-                                                                phi_2919_ = 4294967295u;
+                                                            if (_e1686 >= 32u) {
+                                                                phi_2926_ = 4294967295u;
                                                             } else {
-                                                                phi_2919_ = ((1u << bitcast<u32>((_e1679 & 31u))) - 1u);
+                                                                phi_2926_ = ((1u << bitcast<u32>((_e1686 & 31u))) - 1u);
                                                             }
-                                                            let _e1688 = phi_2919_;
-                                                            phi_2922_ = (_e1688 << bitcast<u32>((_e1671 & 31u)));
+                                                            let _e1695 = phi_2926_;
+                                                            phi_2929_ = (_e1695 << bitcast<u32>((_e1678 & 31u)));
                                                         }
-                                                        let _e1693 = phi_2922_;
-                                                        phi_2923_ = _e1693;
-                                                        phi_2924_ = _e1681;
+                                                        let _e1700 = phi_2929_;
+                                                        phi_2930_ = _e1700;
+                                                        phi_2931_ = _e1688;
                                                     }
-                                                    let _e1695 = phi_2923_;
-                                                    let _e1697 = phi_2924_;
-                                                    phi_2937_ = select(0u, select(select(_e1695, 0u, _e1697), 0u, _e1069), _e1547);
+                                                    let _e1702 = phi_2930_;
+                                                    let _e1704 = phi_2931_;
+                                                    phi_2944_ = select(0u, select(select(_e1702, 0u, _e1704), 0u, _e1069), _e1554);
                                                 } else {
-                                                    phi_2937_ = 0u;
+                                                    phi_2944_ = 0u;
                                                 }
-                                                let _e1702 = phi_2937_;
-                                                let _e1705 = ((_e1530 * _e1500) - _e466);
-                                                let _e1706 = ((_e1532 * _e1500) - _e473);
-                                                let _e1707 = (_e1500 - _e459);
-                                                if _e972 {
-                                                    phi_2968_ = ((((_e1705 * _e1705) + (_e1706 * _e1706)) + (_e1707 * _e1707)) <= (_e241 * _e241));
+                                                let _e1709 = phi_2944_;
+                                                let _e1712 = ((_e1536 * _e1506) - _e466);
+                                                let _e1713 = ((_e1538 * _e1506) - _e473);
+                                                let _e1714 = (_e1506 - _e459);
+                                                if _e967 {
+                                                    phi_2976_ = ((((_e1712 * _e1712) + (_e1713 * _e1713)) + (_e1714 * _e1714)) > (_e241 * _e241));
                                                 } else {
-                                                    phi_2968_ = true;
+                                                    phi_2976_ = false;
                                                 }
-                                                let _e1716 = phi_2968_;
-                                                let _e1718 = select(false, _e1716, (_e1500 < _e225.member.member_3));
-                                                if _e1718 {
-                                                    let _e1719 = (_e1503 < _e225.member.member_3);
-                                                    let _e1728 = select((_e1705 - _e978), ((_e1530 * _e1503) - _e466), _e1719);
-                                                    let _e1729 = select((_e1706 - _e979), ((_e1532 * _e1503) - _e473), _e1719);
-                                                    let _e1730 = select((_e1707 - _e980), (_e1503 - _e459), _e1719);
-                                                    let _e1742 = ((((_e1705 * _e484) + (_e1706 * _e485)) + (_e1707 * _e486)) * inverseSqrt((((_e1705 * _e1705) + (_e1706 * _e1706)) + (_e1707 * _e1707))));
-                                                    let _e1746 = select(-1f, select(1f, _e1742, (_e1742 < 1f)), (_e1742 > -1f));
-                                                    let _e1747 = abs(_e1746);
-                                                    let _e1757 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1747, 0.00667009f), _e1747, -0.017088126f), _e1747, 0.03089188f), _e1747, -0.050174303f), _e1747, 0.08897899f), _e1747, -0.2145988f), _e1747, 1.5707963f) * sqrt((1f - _e1747)));
-                                                    let _e1764 = ((((select((3.1415927f - _e1757), _e1757, (_e1746 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e1768 = select(0f, select(1f, _e1764, (_e1764 < 1f)), (_e1764 > 0f));
-                                                    let _e1780 = ((((_e1728 * _e484) + (_e1729 * _e485)) + (_e1730 * _e486)) * inverseSqrt((((_e1728 * _e1728) + (_e1729 * _e1729)) + (_e1730 * _e1730))));
-                                                    let _e1784 = select(-1f, select(1f, _e1780, (_e1780 < 1f)), (_e1780 > -1f));
-                                                    let _e1785 = abs(_e1784);
-                                                    let _e1795 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1785, 0.00667009f), _e1785, -0.017088126f), _e1785, 0.03089188f), _e1785, -0.050174303f), _e1785, 0.08897899f), _e1785, -0.2145988f), _e1785, 1.5707963f) * sqrt((1f - _e1785)));
-                                                    let _e1802 = ((((select((3.1415927f - _e1795), _e1795, (_e1784 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e1806 = select(0f, select(1f, _e1802, (_e1802 < 1f)), (_e1802 > 0f));
-                                                    let _e1808 = (_e1806 != _e1806);
-                                                    let _e1810 = select(_e1806, _e1768, ((_e1768 < _e1806) || _e1808));
-                                                    let _e1813 = select(_e1806, _e1768, ((_e1768 > _e1806) || _e1808));
-                                                    let _e1815 = floor((_e1810 * 32f));
+                                                let _e1724 = phi_2976_;
+                                                let _e1726 = select(false, !(_e1724), (_e1506 < _e225.member.member_3));
+                                                if _e1726 {
+                                                    let _e1727 = (_e1509 < _e225.member.member_3);
+                                                    let _e1736 = select((_e1712 - _e978), ((_e1536 * _e1509) - _e466), _e1727);
+                                                    let _e1737 = select((_e1713 - _e979), ((_e1538 * _e1509) - _e473), _e1727);
+                                                    let _e1738 = select((_e1714 - _e980), (_e1509 - _e459), _e1727);
+                                                    let _e1750 = ((((_e1712 * _e484) + (_e1713 * _e485)) + (_e1714 * _e486)) * inverseSqrt((((_e1712 * _e1712) + (_e1713 * _e1713)) + (_e1714 * _e1714))));
+                                                    let _e1754 = select(-1f, select(1f, _e1750, (_e1750 < 1f)), (_e1750 > -1f));
+                                                    let _e1755 = abs(_e1754);
+                                                    let _e1765 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1755, 0.00667009f), _e1755, -0.017088126f), _e1755, 0.03089188f), _e1755, -0.050174303f), _e1755, 0.08897899f), _e1755, -0.2145988f), _e1755, 1.5707963f) * sqrt((1f - _e1755)));
+                                                    let _e1772 = ((((select((3.1415927f - _e1765), _e1765, (_e1754 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e1776 = select(0f, select(1f, _e1772, (_e1772 < 1f)), (_e1772 > 0f));
+                                                    let _e1788 = ((((_e1736 * _e484) + (_e1737 * _e485)) + (_e1738 * _e486)) * inverseSqrt((((_e1736 * _e1736) + (_e1737 * _e1737)) + (_e1738 * _e1738))));
+                                                    let _e1792 = select(-1f, select(1f, _e1788, (_e1788 < 1f)), (_e1788 > -1f));
+                                                    let _e1793 = abs(_e1792);
+                                                    let _e1803 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1793, 0.00667009f), _e1793, -0.017088126f), _e1793, 0.03089188f), _e1793, -0.050174303f), _e1793, 0.08897899f), _e1793, -0.2145988f), _e1793, 1.5707963f) * sqrt((1f - _e1793)));
+                                                    let _e1810 = ((((select((3.1415927f - _e1803), _e1803, (_e1792 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e1814 = select(0f, select(1f, _e1810, (_e1810 < 1f)), (_e1810 > 0f));
+                                                    let _e1816 = (_e1814 != _e1814);
+                                                    let _e1818 = select(_e1814, _e1776, ((_e1776 < _e1814) || _e1816));
+                                                    let _e1821 = select(_e1814, _e1776, ((_e1776 > _e1814) || _e1816));
+                                                    let _e1823 = floor((_e1818 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e1823 = -(floor((_e1813 * -32f)));
-                                                        let _e1828 = (select(32f, _e1823, ((_e1823 < 32f) || false)) - _e1815);
-                                                        phi_3195_ = select(select(0f, _e1828, ((_e1828 > 0f) || false)), 0f, (_e1813 <= _e1810));
+                                                        let _e1831 = -(floor((_e1821 * -32f)));
+                                                        let _e1836 = (select(32f, _e1831, ((_e1831 < 32f) || false)) - _e1823);
+                                                        phi_3203_ = select(select(0f, _e1836, ((_e1836 > 0f) || false)), 0f, (_e1821 <= _e1818));
                                                     } else {
-                                                        phi_3195_ = -(floor(((_e1813 - _e1810) * -32f)));
+                                                        phi_3203_ = -(floor(((_e1821 - _e1818) * -32f)));
                                                     }
-                                                    let _e1834 = phi_3195_;
-                                                    let _e1842 = (bitcast<u32>((floor(select(0f, select(32f, _e1815, (_e1815 < 32f)), (_e1815 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e1850 = (bitcast<u32>((floor(select(0f, select(32f, _e1834, (_e1834 < 32f)), (_e1834 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e1842 >= 32u) {
-                                                        phi_3249_ = u32();
-                                                        phi_3250_ = true;
+                                                    let _e1842 = phi_3203_;
+                                                    let _e1850 = (bitcast<u32>((floor(select(0f, select(32f, _e1823, (_e1823 < 32f)), (_e1823 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e1858 = (bitcast<u32>((floor(select(0f, select(32f, _e1842, (_e1842 < 32f)), (_e1842 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e1850 >= 32u) {
+                                                        phi_3257_ = u32();
+                                                        phi_3258_ = true;
                                                     } else {
-                                                        let _e1852 = (_e1850 == 0u);
-                                                        if _e1852 {
-                                                            phi_3248_ = u32();
+                                                        let _e1860 = (_e1858 == 0u);
+                                                        if _e1860 {
+                                                            phi_3256_ = u32();
                                                         } else {
-                                                            if (_e1850 >= 32u) {
-                                                                phi_3245_ = 4294967295u;
+                                                            if (_e1858 >= 32u) {
+                                                                phi_3253_ = 4294967295u;
                                                             } else {
-                                                                phi_3245_ = ((1u << bitcast<u32>((_e1850 & 31u))) - 1u);
+                                                                phi_3253_ = ((1u << bitcast<u32>((_e1858 & 31u))) - 1u);
                                                             }
-                                                            let _e1859 = phi_3245_;
-                                                            phi_3248_ = (_e1859 << bitcast<u32>((_e1842 & 31u)));
+                                                            let _e1867 = phi_3253_;
+                                                            phi_3256_ = (_e1867 << bitcast<u32>((_e1850 & 31u)));
                                                         }
-                                                        let _e1864 = phi_3248_;
-                                                        phi_3249_ = _e1864;
-                                                        phi_3250_ = _e1852;
+                                                        let _e1872 = phi_3256_;
+                                                        phi_3257_ = _e1872;
+                                                        phi_3258_ = _e1860;
                                                     }
-                                                    let _e1866 = phi_3249_;
-                                                    let _e1868 = phi_3250_;
-                                                    phi_3263_ = select(0u, select(select(_e1866, 0u, _e1868), 0u, _e1069), _e1718);
+                                                    let _e1874 = phi_3257_;
+                                                    let _e1876 = phi_3258_;
+                                                    phi_3271_ = select(0u, select(select(_e1874, 0u, _e1876), 0u, _e1069), _e1726);
                                                 } else {
-                                                    phi_3263_ = 0u;
+                                                    phi_3271_ = 0u;
                                                 }
-                                                let _e1873 = phi_3263_;
-                                                let _e1877 = ((_e1530 * _e1507) - _e466);
-                                                let _e1878 = ((_e1532 * _e1507) - _e473);
-                                                let _e1879 = (_e1507 - _e459);
-                                                if _e972 {
-                                                    phi_3295_ = ((((_e1877 * _e1877) + (_e1878 * _e1878)) + (_e1879 * _e1879)) <= (_e241 * _e241));
+                                                let _e1881 = phi_3271_;
+                                                let _e1885 = ((_e1536 * _e1513) - _e466);
+                                                let _e1886 = ((_e1538 * _e1513) - _e473);
+                                                let _e1887 = (_e1513 - _e459);
+                                                if _e967 {
+                                                    phi_3304_ = ((((_e1885 * _e1885) + (_e1886 * _e1886)) + (_e1887 * _e1887)) > (_e241 * _e241));
                                                 } else {
-                                                    phi_3295_ = true;
+                                                    phi_3304_ = false;
                                                 }
-                                                let _e1888 = phi_3295_;
-                                                let _e1890 = select(false, _e1888, (_e1507 < _e225.member.member_3));
-                                                if _e1890 {
-                                                    let _e1891 = (_e1510 < _e225.member.member_3);
-                                                    let _e1900 = select((_e1877 - _e978), ((_e1530 * _e1510) - _e466), _e1891);
-                                                    let _e1901 = select((_e1878 - _e979), ((_e1532 * _e1510) - _e473), _e1891);
-                                                    let _e1902 = select((_e1879 - _e980), (_e1510 - _e459), _e1891);
-                                                    let _e1914 = ((((_e1877 * _e484) + (_e1878 * _e485)) + (_e1879 * _e486)) * inverseSqrt((((_e1877 * _e1877) + (_e1878 * _e1878)) + (_e1879 * _e1879))));
-                                                    let _e1918 = select(-1f, select(1f, _e1914, (_e1914 < 1f)), (_e1914 > -1f));
-                                                    let _e1919 = abs(_e1918);
-                                                    let _e1929 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1919, 0.00667009f), _e1919, -0.017088126f), _e1919, 0.03089188f), _e1919, -0.050174303f), _e1919, 0.08897899f), _e1919, -0.2145988f), _e1919, 1.5707963f) * sqrt((1f - _e1919)));
-                                                    let _e1936 = ((((select((3.1415927f - _e1929), _e1929, (_e1918 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e1940 = select(0f, select(1f, _e1936, (_e1936 < 1f)), (_e1936 > 0f));
-                                                    let _e1952 = ((((_e1900 * _e484) + (_e1901 * _e485)) + (_e1902 * _e486)) * inverseSqrt((((_e1900 * _e1900) + (_e1901 * _e1901)) + (_e1902 * _e1902))));
-                                                    let _e1956 = select(-1f, select(1f, _e1952, (_e1952 < 1f)), (_e1952 > -1f));
-                                                    let _e1957 = abs(_e1956);
-                                                    let _e1967 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1957, 0.00667009f), _e1957, -0.017088126f), _e1957, 0.03089188f), _e1957, -0.050174303f), _e1957, 0.08897899f), _e1957, -0.2145988f), _e1957, 1.5707963f) * sqrt((1f - _e1957)));
-                                                    let _e1974 = ((((select((3.1415927f - _e1967), _e1967, (_e1956 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e1978 = select(0f, select(1f, _e1974, (_e1974 < 1f)), (_e1974 > 0f));
-                                                    let _e1980 = (_e1978 != _e1978);
-                                                    let _e1982 = select(_e1978, _e1940, ((_e1940 < _e1978) || _e1980));
-                                                    let _e1985 = select(_e1978, _e1940, ((_e1940 > _e1978) || _e1980));
-                                                    let _e1987 = floor((_e1982 * 32f));
+                                                let _e1897 = phi_3304_;
+                                                let _e1899 = select(false, !(_e1897), (_e1513 < _e225.member.member_3));
+                                                if _e1899 {
+                                                    let _e1900 = (_e1516 < _e225.member.member_3);
+                                                    let _e1909 = select((_e1885 - _e978), ((_e1536 * _e1516) - _e466), _e1900);
+                                                    let _e1910 = select((_e1886 - _e979), ((_e1538 * _e1516) - _e473), _e1900);
+                                                    let _e1911 = select((_e1887 - _e980), (_e1516 - _e459), _e1900);
+                                                    let _e1923 = ((((_e1885 * _e484) + (_e1886 * _e485)) + (_e1887 * _e486)) * inverseSqrt((((_e1885 * _e1885) + (_e1886 * _e1886)) + (_e1887 * _e1887))));
+                                                    let _e1927 = select(-1f, select(1f, _e1923, (_e1923 < 1f)), (_e1923 > -1f));
+                                                    let _e1928 = abs(_e1927);
+                                                    let _e1938 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1928, 0.00667009f), _e1928, -0.017088126f), _e1928, 0.03089188f), _e1928, -0.050174303f), _e1928, 0.08897899f), _e1928, -0.2145988f), _e1928, 1.5707963f) * sqrt((1f - _e1928)));
+                                                    let _e1945 = ((((select((3.1415927f - _e1938), _e1938, (_e1927 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e1949 = select(0f, select(1f, _e1945, (_e1945 < 1f)), (_e1945 > 0f));
+                                                    let _e1961 = ((((_e1909 * _e484) + (_e1910 * _e485)) + (_e1911 * _e486)) * inverseSqrt((((_e1909 * _e1909) + (_e1910 * _e1910)) + (_e1911 * _e1911))));
+                                                    let _e1965 = select(-1f, select(1f, _e1961, (_e1961 < 1f)), (_e1961 > -1f));
+                                                    let _e1966 = abs(_e1965);
+                                                    let _e1976 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e1966, 0.00667009f), _e1966, -0.017088126f), _e1966, 0.03089188f), _e1966, -0.050174303f), _e1966, 0.08897899f), _e1966, -0.2145988f), _e1966, 1.5707963f) * sqrt((1f - _e1966)));
+                                                    let _e1983 = ((((select((3.1415927f - _e1976), _e1976, (_e1965 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e1987 = select(0f, select(1f, _e1983, (_e1983 < 1f)), (_e1983 > 0f));
+                                                    let _e1989 = (_e1987 != _e1987);
+                                                    let _e1991 = select(_e1987, _e1949, ((_e1949 < _e1987) || _e1989));
+                                                    let _e1994 = select(_e1987, _e1949, ((_e1949 > _e1987) || _e1989));
+                                                    let _e1996 = floor((_e1991 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e1995 = -(floor((_e1985 * -32f)));
-                                                        let _e2000 = (select(32f, _e1995, ((_e1995 < 32f) || false)) - _e1987);
-                                                        phi_3522_ = select(select(0f, _e2000, ((_e2000 > 0f) || false)), 0f, (_e1985 <= _e1982));
+                                                        let _e2004 = -(floor((_e1994 * -32f)));
+                                                        let _e2009 = (select(32f, _e2004, ((_e2004 < 32f) || false)) - _e1996);
+                                                        phi_3531_ = select(select(0f, _e2009, ((_e2009 > 0f) || false)), 0f, (_e1994 <= _e1991));
                                                     } else {
-                                                        phi_3522_ = -(floor(((_e1985 - _e1982) * -32f)));
+                                                        phi_3531_ = -(floor(((_e1994 - _e1991) * -32f)));
                                                     }
-                                                    let _e2006 = phi_3522_;
-                                                    let _e2014 = (bitcast<u32>((floor(select(0f, select(32f, _e1987, (_e1987 < 32f)), (_e1987 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e2022 = (bitcast<u32>((floor(select(0f, select(32f, _e2006, (_e2006 < 32f)), (_e2006 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e2014 >= 32u) {
-                                                        phi_3576_ = u32();
-                                                        phi_3577_ = true;
+                                                    let _e2015 = phi_3531_;
+                                                    let _e2023 = (bitcast<u32>((floor(select(0f, select(32f, _e1996, (_e1996 < 32f)), (_e1996 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e2031 = (bitcast<u32>((floor(select(0f, select(32f, _e2015, (_e2015 < 32f)), (_e2015 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e2023 >= 32u) {
+                                                        phi_3585_ = u32();
+                                                        phi_3586_ = true;
                                                     } else {
-                                                        let _e2024 = (_e2022 == 0u);
-                                                        if _e2024 {
-                                                            phi_3575_ = u32();
+                                                        let _e2033 = (_e2031 == 0u);
+                                                        if _e2033 {
+                                                            phi_3584_ = u32();
                                                         } else {
-                                                            if (_e2022 >= 32u) {
-                                                                phi_3572_ = 4294967295u;
+                                                            if (_e2031 >= 32u) {
+                                                                phi_3581_ = 4294967295u;
                                                             } else {
-                                                                phi_3572_ = ((1u << bitcast<u32>((_e2022 & 31u))) - 1u);
+                                                                phi_3581_ = ((1u << bitcast<u32>((_e2031 & 31u))) - 1u);
                                                             }
-                                                            let _e2031 = phi_3572_;
-                                                            phi_3575_ = (_e2031 << bitcast<u32>((_e2014 & 31u)));
+                                                            let _e2040 = phi_3581_;
+                                                            phi_3584_ = (_e2040 << bitcast<u32>((_e2023 & 31u)));
                                                         }
-                                                        let _e2036 = phi_3575_;
-                                                        phi_3576_ = _e2036;
-                                                        phi_3577_ = _e2024;
+                                                        let _e2045 = phi_3584_;
+                                                        phi_3585_ = _e2045;
+                                                        phi_3586_ = _e2033;
                                                     }
-                                                    let _e2038 = phi_3576_;
-                                                    let _e2040 = phi_3577_;
-                                                    phi_3590_ = select(0u, select(select(_e2038, 0u, _e2040), 0u, _e1069), _e1890);
+                                                    let _e2047 = phi_3585_;
+                                                    let _e2049 = phi_3586_;
+                                                    phi_3599_ = select(0u, select(select(_e2047, 0u, _e2049), 0u, _e1069), _e1899);
                                                 } else {
-                                                    phi_3590_ = 0u;
+                                                    phi_3599_ = 0u;
                                                 }
-                                                let _e2045 = phi_3590_;
-                                                let _e2049 = ((_e1530 * _e1475) - _e466);
-                                                let _e2050 = ((_e1532 * _e1475) - _e473);
-                                                let _e2051 = (_e1475 - _e459);
-                                                if _e972 {
-                                                    phi_3622_ = ((((_e2049 * _e2049) + (_e2050 * _e2050)) + (_e2051 * _e2051)) <= (_e241 * _e241));
+                                                let _e2054 = phi_3599_;
+                                                let _e2058 = ((_e1536 * _e1481) - _e466);
+                                                let _e2059 = ((_e1538 * _e1481) - _e473);
+                                                let _e2060 = (_e1481 - _e459);
+                                                if _e967 {
+                                                    phi_3632_ = ((((_e2058 * _e2058) + (_e2059 * _e2059)) + (_e2060 * _e2060)) > (_e241 * _e241));
                                                 } else {
-                                                    phi_3622_ = true;
+                                                    phi_3632_ = false;
                                                 }
-                                                let _e2060 = phi_3622_;
-                                                let _e2062 = select(false, _e2060, (_e1475 < _e225.member.member_3));
-                                                if _e2062 {
-                                                    let _e2063 = (_e1263 < _e225.member.member_3);
-                                                    let _e2072 = select((_e2049 - _e978), ((_e1530 * _e1263) - _e466), _e2063);
-                                                    let _e2073 = select((_e2050 - _e979), ((_e1532 * _e1263) - _e473), _e2063);
-                                                    let _e2074 = select((_e2051 - _e980), (_e1263 - _e459), _e2063);
-                                                    let _e2086 = ((((_e2049 * _e484) + (_e2050 * _e485)) + (_e2051 * _e486)) * inverseSqrt((((_e2049 * _e2049) + (_e2050 * _e2050)) + (_e2051 * _e2051))));
-                                                    let _e2090 = select(-1f, select(1f, _e2086, (_e2086 < 1f)), (_e2086 > -1f));
-                                                    let _e2091 = abs(_e2090);
-                                                    let _e2101 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2091, 0.00667009f), _e2091, -0.017088126f), _e2091, 0.03089188f), _e2091, -0.050174303f), _e2091, 0.08897899f), _e2091, -0.2145988f), _e2091, 1.5707963f) * sqrt((1f - _e2091)));
-                                                    let _e2108 = ((((select((3.1415927f - _e2101), _e2101, (_e2090 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e2112 = select(0f, select(1f, _e2108, (_e2108 < 1f)), (_e2108 > 0f));
-                                                    let _e2124 = ((((_e2072 * _e484) + (_e2073 * _e485)) + (_e2074 * _e486)) * inverseSqrt((((_e2072 * _e2072) + (_e2073 * _e2073)) + (_e2074 * _e2074))));
-                                                    let _e2128 = select(-1f, select(1f, _e2124, (_e2124 < 1f)), (_e2124 > -1f));
-                                                    let _e2129 = abs(_e2128);
-                                                    let _e2139 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2129, 0.00667009f), _e2129, -0.017088126f), _e2129, 0.03089188f), _e2129, -0.050174303f), _e2129, 0.08897899f), _e2129, -0.2145988f), _e2129, 1.5707963f) * sqrt((1f - _e2129)));
-                                                    let _e2146 = ((((select((3.1415927f - _e2139), _e2139, (_e2128 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                                    let _e2150 = select(0f, select(1f, _e2146, (_e2146 < 1f)), (_e2146 > 0f));
-                                                    let _e2152 = (_e2150 != _e2150);
-                                                    let _e2154 = select(_e2150, _e2112, ((_e2112 < _e2150) || _e2152));
-                                                    let _e2157 = select(_e2150, _e2112, ((_e2112 > _e2150) || _e2152));
-                                                    let _e2159 = floor((_e2154 * 32f));
+                                                let _e2070 = phi_3632_;
+                                                let _e2072 = select(false, !(_e2070), (_e1481 < _e225.member.member_3));
+                                                if _e2072 {
+                                                    let _e2073 = (_e1269 < _e225.member.member_3);
+                                                    let _e2082 = select((_e2058 - _e978), ((_e1536 * _e1269) - _e466), _e2073);
+                                                    let _e2083 = select((_e2059 - _e979), ((_e1538 * _e1269) - _e473), _e2073);
+                                                    let _e2084 = select((_e2060 - _e980), (_e1269 - _e459), _e2073);
+                                                    let _e2096 = ((((_e2058 * _e484) + (_e2059 * _e485)) + (_e2060 * _e486)) * inverseSqrt((((_e2058 * _e2058) + (_e2059 * _e2059)) + (_e2060 * _e2060))));
+                                                    let _e2100 = select(-1f, select(1f, _e2096, (_e2096 < 1f)), (_e2096 > -1f));
+                                                    let _e2101 = abs(_e2100);
+                                                    let _e2111 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2101, 0.00667009f), _e2101, -0.017088126f), _e2101, 0.03089188f), _e2101, -0.050174303f), _e2101, 0.08897899f), _e2101, -0.2145988f), _e2101, 1.5707963f) * sqrt((1f - _e2101)));
+                                                    let _e2118 = ((((select((3.1415927f - _e2111), _e2111, (_e2100 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e2122 = select(0f, select(1f, _e2118, (_e2118 < 1f)), (_e2118 > 0f));
+                                                    let _e2134 = ((((_e2082 * _e484) + (_e2083 * _e485)) + (_e2084 * _e486)) * inverseSqrt((((_e2082 * _e2082) + (_e2083 * _e2083)) + (_e2084 * _e2084))));
+                                                    let _e2138 = select(-1f, select(1f, _e2134, (_e2134 < 1f)), (_e2134 > -1f));
+                                                    let _e2139 = abs(_e2138);
+                                                    let _e2149 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2139, 0.00667009f), _e2139, -0.017088126f), _e2139, 0.03089188f), _e2139, -0.050174303f), _e2139, 0.08897899f), _e2139, -0.2145988f), _e2139, 1.5707963f) * sqrt((1f - _e2139)));
+                                                    let _e2156 = ((((select((3.1415927f - _e2149), _e2149, (_e2138 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                                    let _e2160 = select(0f, select(1f, _e2156, (_e2156 < 1f)), (_e2156 > 0f));
+                                                    let _e2162 = (_e2160 != _e2160);
+                                                    let _e2164 = select(_e2160, _e2122, ((_e2122 < _e2160) || _e2162));
+                                                    let _e2167 = select(_e2160, _e2122, ((_e2122 > _e2160) || _e2162));
+                                                    let _e2169 = floor((_e2164 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e2167 = -(floor((_e2157 * -32f)));
-                                                        let _e2172 = (select(32f, _e2167, ((_e2167 < 32f) || false)) - _e2159);
-                                                        phi_3849_ = select(select(0f, _e2172, ((_e2172 > 0f) || false)), 0f, (_e2157 <= _e2154));
+                                                        let _e2177 = -(floor((_e2167 * -32f)));
+                                                        let _e2182 = (select(32f, _e2177, ((_e2177 < 32f) || false)) - _e2169);
+                                                        phi_3859_ = select(select(0f, _e2182, ((_e2182 > 0f) || false)), 0f, (_e2167 <= _e2164));
                                                     } else {
-                                                        phi_3849_ = -(floor(((_e2157 - _e2154) * -32f)));
+                                                        phi_3859_ = -(floor(((_e2167 - _e2164) * -32f)));
                                                     }
-                                                    let _e2178 = phi_3849_;
-                                                    let _e2186 = (bitcast<u32>((floor(select(0f, select(32f, _e2159, (_e2159 < 32f)), (_e2159 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e2194 = (bitcast<u32>((floor(select(0f, select(32f, _e2178, (_e2178 < 32f)), (_e2178 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e2186 >= 32u) {
-                                                        phi_3903_ = u32();
-                                                        phi_3904_ = true;
+                                                    let _e2188 = phi_3859_;
+                                                    let _e2196 = (bitcast<u32>((floor(select(0f, select(32f, _e2169, (_e2169 < 32f)), (_e2169 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e2204 = (bitcast<u32>((floor(select(0f, select(32f, _e2188, (_e2188 < 32f)), (_e2188 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e2196 >= 32u) {
+                                                        phi_3913_ = u32();
+                                                        phi_3914_ = true;
                                                     } else {
-                                                        let _e2196 = (_e2194 == 0u);
-                                                        if _e2196 {
-                                                            phi_3902_ = u32();
+                                                        let _e2206 = (_e2204 == 0u);
+                                                        if _e2206 {
+                                                            phi_3912_ = u32();
                                                         } else {
-                                                            if (_e2194 >= 32u) {
-                                                                phi_3899_ = 4294967295u;
+                                                            if (_e2204 >= 32u) {
+                                                                phi_3909_ = 4294967295u;
                                                             } else {
-                                                                phi_3899_ = ((1u << bitcast<u32>((_e2194 & 31u))) - 1u);
+                                                                phi_3909_ = ((1u << bitcast<u32>((_e2204 & 31u))) - 1u);
                                                             }
-                                                            let _e2203 = phi_3899_;
-                                                            phi_3902_ = (_e2203 << bitcast<u32>((_e2186 & 31u)));
+                                                            let _e2213 = phi_3909_;
+                                                            phi_3912_ = (_e2213 << bitcast<u32>((_e2196 & 31u)));
                                                         }
-                                                        let _e2208 = phi_3902_;
-                                                        phi_3903_ = _e2208;
-                                                        phi_3904_ = _e2196;
+                                                        let _e2218 = phi_3912_;
+                                                        phi_3913_ = _e2218;
+                                                        phi_3914_ = _e2206;
                                                     }
-                                                    let _e2210 = phi_3903_;
-                                                    let _e2212 = phi_3904_;
-                                                    phi_3917_ = select(0u, select(select(_e2210, 0u, _e2212), 0u, _e1069), _e2062);
+                                                    let _e2220 = phi_3913_;
+                                                    let _e2222 = phi_3914_;
+                                                    phi_3927_ = select(0u, select(select(_e2220, 0u, _e2222), 0u, _e1069), _e2072);
                                                 } else {
-                                                    phi_3917_ = 0u;
+                                                    phi_3927_ = 0u;
                                                 }
-                                                let _e2217 = phi_3917_;
-                                                phi_3919_ = (((_e1702 | _e1873) | _e2045) | _e2217);
-                                                phi_3920_ = vec3<f32>(select(_e981, (((_e1516 * _e1089) * _e1451) - _e466), _e1514), select(_e982, (((_e1520 * _e1097) * _e1451) - _e473), _e1514), select(_e983, (_e1451 - _e459), _e1514));
+                                                let _e2227 = phi_3927_;
+                                                phi_3929_ = (((_e1709 | _e1881) | _e2054) | _e2227);
+                                                phi_3930_ = vec3<f32>(select(_e981, (((_e1522 * _e1095) * _e1457) - _e466), _e1520), select(_e982, (((_e1526 * _e1103) * _e1457) - _e473), _e1520), select(_e983, (_e1457 - _e459), _e1520));
                                             } else {
-                                                phi_3919_ = 0u;
-                                                phi_3920_ = vec3<f32>(_e981, _e982, _e983);
+                                                phi_3929_ = 0u;
+                                                phi_3930_ = vec3<f32>(_e981, _e982, _e983);
                                             }
-                                            let _e2220 = phi_3919_;
-                                            let _e2222 = phi_3920_;
-                                            let _e2224 = (_e989 * inverseSqrt(_e971));
-                                            let _e2228 = select(-1f, select(1f, _e2224, (_e2224 < 1f)), (_e2224 > -1f));
-                                            let _e2229 = abs(_e2228);
-                                            let _e2239 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2229, 0.00667009f), _e2229, -0.017088126f), _e2229, 0.03089188f), _e2229, -0.050174303f), _e2229, 0.08897899f), _e2229, -0.2145988f), _e2229, 1.5707963f) * sqrt((1f - _e2229)));
-                                            let _e2246 = ((((select((3.1415927f - _e2239), _e2239, (_e2228 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                            let _e2250 = select(0f, select(1f, _e2246, (_e2246 < 1f)), (_e2246 > 0f));
-                                            let _e2265 = ((((_e2222.x * _e484) + (_e2222.y * _e485)) + (_e2222.z * _e486)) * inverseSqrt((((_e2222.x * _e2222.x) + (_e2222.y * _e2222.y)) + (_e2222.z * _e2222.z))));
-                                            let _e2269 = select(-1f, select(1f, _e2265, (_e2265 < 1f)), (_e2265 > -1f));
-                                            let _e2270 = abs(_e2269);
-                                            let _e2280 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2270, 0.00667009f), _e2270, -0.017088126f), _e2270, 0.03089188f), _e2270, -0.050174303f), _e2270, 0.08897899f), _e2270, -0.2145988f), _e2270, 1.5707963f) * sqrt((1f - _e2270)));
-                                            let _e2287 = ((((select((3.1415927f - _e2280), _e2280, (_e2269 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
-                                            let _e2291 = select(0f, select(1f, _e2287, (_e2287 < 1f)), (_e2287 > 0f));
-                                            let _e2293 = (_e2291 != _e2291);
-                                            let _e2295 = select(_e2291, _e2250, ((_e2250 < _e2291) || _e2293));
-                                            let _e2298 = select(_e2291, _e2250, ((_e2250 > _e2291) || _e2293));
-                                            let _e2300 = floor((_e2295 * 32f));
+                                            let _e2230 = phi_3929_;
+                                            let _e2232 = phi_3930_;
+                                            let _e2234 = (_e989 * inverseSqrt(_e1079));
+                                            let _e2238 = select(-1f, select(1f, _e2234, (_e2234 < 1f)), (_e2234 > -1f));
+                                            let _e2239 = abs(_e2238);
+                                            let _e2249 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2239, 0.00667009f), _e2239, -0.017088126f), _e2239, 0.03089188f), _e2239, -0.050174303f), _e2239, 0.08897899f), _e2239, -0.2145988f), _e2239, 1.5707963f) * sqrt((1f - _e2239)));
+                                            let _e2256 = ((((select((3.1415927f - _e2249), _e2249, (_e2238 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                            let _e2260 = select(0f, select(1f, _e2256, (_e2256 < 1f)), (_e2256 > 0f));
+                                            let _e2275 = ((((_e2232.x * _e484) + (_e2232.y * _e485)) + (_e2232.z * _e486)) * inverseSqrt((((_e2232.x * _e2232.x) + (_e2232.y * _e2232.y)) + (_e2232.z * _e2232.z))));
+                                            let _e2279 = select(-1f, select(1f, _e2275, (_e2275 < 1f)), (_e2275 > -1f));
+                                            let _e2280 = abs(_e2279);
+                                            let _e2290 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2280, 0.00667009f), _e2280, -0.017088126f), _e2280, 0.03089188f), _e2280, -0.050174303f), _e2280, 0.08897899f), _e2280, -0.2145988f), _e2280, 1.5707963f) * sqrt((1f - _e2280)));
+                                            let _e2297 = ((((select((3.1415927f - _e2290), _e2290, (_e2279 >= 0f)) + _e1063) - _e1059) + 1.5707964f) * 0.31830987f);
+                                            let _e2301 = select(0f, select(1f, _e2297, (_e2297 < 1f)), (_e2297 > 0f));
+                                            let _e2303 = (_e2301 != _e2301);
+                                            let _e2305 = select(_e2301, _e2260, ((_e2260 < _e2301) || _e2303));
+                                            let _e2308 = select(_e2301, _e2260, ((_e2260 > _e2301) || _e2303));
+                                            let _e2310 = floor((_e2305 * 32f));
                                             if (_e235 == 1u) {
-                                                let _e2308 = -(floor((_e2298 * -32f)));
-                                                let _e2313 = (select(32f, _e2308, ((_e2308 < 32f) || false)) - _e2300);
-                                                phi_4107_ = select(select(0f, _e2313, ((_e2313 > 0f) || false)), 0f, (_e2298 <= _e2295));
+                                                let _e2318 = -(floor((_e2308 * -32f)));
+                                                let _e2323 = (select(32f, _e2318, ((_e2318 < 32f) || false)) - _e2310);
+                                                phi_4117_ = select(select(0f, _e2323, ((_e2323 > 0f) || false)), 0f, (_e2308 <= _e2305));
                                             } else {
-                                                phi_4107_ = -(floor(((_e2298 - _e2295) * -32f)));
+                                                phi_4117_ = -(floor(((_e2308 - _e2305) * -32f)));
                                             }
-                                            let _e2319 = phi_4107_;
-                                            let _e2327 = (bitcast<u32>((floor(select(0f, select(32f, _e2300, (_e2300 < 32f)), (_e2300 > 0f))) + 8388608f)) - 1258291200u);
-                                            let _e2335 = (bitcast<u32>((floor(select(0f, select(32f, _e2319, (_e2319 < 32f)), (_e2319 > 0f))) + 8388608f)) - 1258291200u);
-                                            if (_e2327 >= 32u) {
-                                                phi_4161_ = u32();
-                                                phi_4162_ = true;
+                                            let _e2329 = phi_4117_;
+                                            let _e2337 = (bitcast<u32>((floor(select(0f, select(32f, _e2310, (_e2310 < 32f)), (_e2310 > 0f))) + 8388608f)) - 1258291200u);
+                                            let _e2345 = (bitcast<u32>((floor(select(0f, select(32f, _e2329, (_e2329 < 32f)), (_e2329 > 0f))) + 8388608f)) - 1258291200u);
+                                            if (_e2337 >= 32u) {
+                                                phi_4171_ = u32();
+                                                phi_4172_ = true;
                                             } else {
-                                                let _e2337 = (_e2335 == 0u);
-                                                if _e2337 {
-                                                    phi_4160_ = u32();
+                                                let _e2347 = (_e2345 == 0u);
+                                                if _e2347 {
+                                                    phi_4170_ = u32();
                                                 } else {
-                                                    if (_e2335 >= 32u) {
-                                                        phi_4157_ = 4294967295u;
+                                                    if (_e2345 >= 32u) {
+                                                        phi_4167_ = 4294967295u;
                                                     } else {
-                                                        phi_4157_ = ((1u << bitcast<u32>((_e2335 & 31u))) - 1u);
+                                                        phi_4167_ = ((1u << bitcast<u32>((_e2345 & 31u))) - 1u);
                                                     }
-                                                    let _e2344 = phi_4157_;
-                                                    phi_4160_ = (_e2344 << bitcast<u32>((_e2327 & 31u)));
+                                                    let _e2354 = phi_4167_;
+                                                    phi_4170_ = (_e2354 << bitcast<u32>((_e2337 & 31u)));
                                                 }
-                                                let _e2349 = phi_4160_;
-                                                phi_4161_ = _e2349;
-                                                phi_4162_ = _e2337;
+                                                let _e2359 = phi_4170_;
+                                                phi_4171_ = _e2359;
+                                                phi_4172_ = _e2347;
                                             }
-                                            let _e2351 = phi_4161_;
-                                            let _e2353 = phi_4162_;
-                                            phi_4176_ = select((select(select(_e2351, 0u, _e2353), 0u, _e1069) | _e2220), 0u, _e976);
+                                            let _e2361 = phi_4171_;
+                                            let _e2363 = phi_4172_;
+                                            phi_4186_ = select((select(select(_e2361, 0u, _e2363), 0u, _e1069) | _e2230), 0u, _e976);
                                         } else {
-                                            phi_4176_ = 0u;
+                                            phi_4186_ = 0u;
                                         }
-                                        let _e2359 = phi_4176_;
-                                        let _e2361 = (_e959 - _e466);
-                                        let _e2362 = (_e963 - _e473);
-                                        let _e2363 = (_e955 - _e459);
-                                        let _e2368 = (((_e2361 * _e2361) + (_e2362 * _e2362)) + (_e2363 * _e2363));
-                                        if _e972 {
-                                            phi_4196_ = (_e2368 > (_e241 * _e241));
+                                        let _e2369 = phi_4186_;
+                                        let _e2371 = (_e959 - _e466);
+                                        let _e2372 = (_e963 - _e473);
+                                        let _e2373 = (_e955 - _e459);
+                                        if _e967 {
+                                            phi_4206_ = ((((_e2371 * _e2371) + (_e2372 * _e2372)) + (_e2373 * _e2373)) > (_e241 * _e241));
                                         } else {
-                                            phi_4196_ = false;
+                                            phi_4206_ = false;
                                         }
-                                        let _e2372 = phi_4196_;
-                                        if !(_e2372) {
-                                            let _e2374 = (_e484 * _e238);
-                                            let _e2375 = (_e485 * _e238);
-                                            let _e2376 = (_e486 * _e238);
-                                            let _e2377 = (_e2361 - _e2374);
-                                            let _e2378 = (_e2362 - _e2375);
-                                            let _e2379 = (_e2363 - _e2376);
-                                            let _e2385 = (((_e2361 * _e484) + (_e2362 * _e485)) + (_e2363 * _e486));
-                                            let _e2389 = (_e2361 - (_e484 * _e2385));
-                                            let _e2390 = (_e2362 - (_e485 * _e2385));
-                                            let _e2391 = (_e2363 - (_e486 * _e2385));
-                                            let _e2394 = ((_e2390 * _e486) - (_e485 * _e2391));
-                                            let _e2397 = ((_e2391 * _e484) - (_e486 * _e2389));
-                                            let _e2400 = ((_e2389 * _e485) - (_e484 * _e2390));
-                                            let _e2411 = ((((_e545 * _e2394) + (_e546 * _e2397)) + (_e547 * _e2400)) / (((_e2394 * _e2394) + (_e2397 * _e2397)) + (_e2400 * _e2400)));
-                                            let _e2415 = (_e545 - (_e2394 * _e2411));
-                                            let _e2416 = (_e546 - (_e2397 * _e2411));
-                                            let _e2417 = (_e547 - (_e2400 * _e2411));
-                                            let _e2423 = inverseSqrt((((_e2415 * _e2415) + (_e2416 * _e2416)) + (_e2417 * _e2417)));
-                                            let _e2429 = ((((_e2415 * _e484) + (_e2416 * _e485)) + (_e2417 * _e486)) * _e2423);
-                                            let _e2433 = select(0f, select(1f, _e2429, (_e2429 < 1f)), (_e2429 > 0f));
-                                            let _e2434 = abs(_e2433);
-                                            let _e2444 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2434, 0.00667009f), _e2434, -0.017088126f), _e2434, 0.03089188f), _e2434, -0.050174303f), _e2434, 0.08897899f), _e2434, -0.2145988f), _e2434, 1.5707963f) * sqrt((1f - _e2434)));
-                                            let _e2447 = select((3.1415927f - _e2444), _e2444, (_e2433 >= 0f));
-                                            let _e2455 = select(_e2447, -(_e2447), ((((_e2389 * _e2415) + (_e2390 * _e2416)) + (_e2391 * _e2417)) < 0f));
-                                            let _e2456 = (_e2423 * 0.02f);
-                                            let _e2459 = select(0.19634955f, _e2456, ((_e2456 < 0.19634955f) || false));
-                                            let _e2465 = ((((_e2389 * _e2389) + (_e2390 * _e2390)) + (_e2391 * _e2391)) <= 0f);
-                                            if _e972 {
-                                                phi_4349_ = (_e2368 <= (_e241 * _e241));
+                                        let _e2382 = phi_4206_;
+                                        if !(_e2382) {
+                                            let _e2384 = (_e484 * _e238);
+                                            let _e2385 = (_e485 * _e238);
+                                            let _e2386 = (_e486 * _e238);
+                                            let _e2387 = (_e2371 - _e2384);
+                                            let _e2388 = (_e2372 - _e2385);
+                                            let _e2389 = (_e2373 - _e2386);
+                                            let _e2395 = (((_e2371 * _e484) + (_e2372 * _e485)) + (_e2373 * _e486));
+                                            let _e2399 = (_e2371 - (_e484 * _e2395));
+                                            let _e2400 = (_e2372 - (_e485 * _e2395));
+                                            let _e2401 = (_e2373 - (_e486 * _e2395));
+                                            let _e2404 = ((_e2400 * _e486) - (_e485 * _e2401));
+                                            let _e2407 = ((_e2401 * _e484) - (_e486 * _e2399));
+                                            let _e2410 = ((_e2399 * _e485) - (_e484 * _e2400));
+                                            let _e2421 = ((((_e545 * _e2404) + (_e546 * _e2407)) + (_e547 * _e2410)) / (((_e2404 * _e2404) + (_e2407 * _e2407)) + (_e2410 * _e2410)));
+                                            let _e2425 = (_e545 - (_e2404 * _e2421));
+                                            let _e2426 = (_e546 - (_e2407 * _e2421));
+                                            let _e2427 = (_e547 - (_e2410 * _e2421));
+                                            let _e2433 = inverseSqrt((((_e2425 * _e2425) + (_e2426 * _e2426)) + (_e2427 * _e2427)));
+                                            let _e2439 = ((((_e2425 * _e484) + (_e2426 * _e485)) + (_e2427 * _e486)) * _e2433);
+                                            let _e2443 = select(0f, select(1f, _e2439, (_e2439 < 1f)), (_e2439 > 0f));
+                                            let _e2444 = abs(_e2443);
+                                            let _e2454 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2444, 0.00667009f), _e2444, -0.017088126f), _e2444, 0.03089188f), _e2444, -0.050174303f), _e2444, 0.08897899f), _e2444, -0.2145988f), _e2444, 1.5707963f) * sqrt((1f - _e2444)));
+                                            let _e2457 = select((3.1415927f - _e2454), _e2454, (_e2443 >= 0f));
+                                            let _e2465 = select(_e2457, -(_e2457), ((((_e2399 * _e2425) + (_e2400 * _e2426)) + (_e2401 * _e2427)) < 0f));
+                                            let _e2466 = (_e2433 * 0.02f);
+                                            let _e2469 = select(0.19634955f, _e2466, ((_e2466 < 0.19634955f) || false));
+                                            let _e2475 = ((((_e2399 * _e2399) + (_e2400 * _e2400)) + (_e2401 * _e2401)) <= 0f);
+                                            let _e2485 = (((_e2371 * _e2371) + (_e2372 * _e2372)) + (_e2373 * _e2373));
+                                            if _e967 {
+                                                phi_4376_ = (_e2485 > (_e241 * _e241));
                                             } else {
-                                                phi_4349_ = true;
+                                                phi_4376_ = false;
                                             }
-                                            let _e2469 = phi_4349_;
-                                            let _e2478 = select(false, ((((_e2361 * _e545) + (_e2362 * _e546)) + (_e2363 * _e547)) > (sqrt(_e2368) * 0.018f)), _e2469);
-                                            if _e2478 {
-                                                let _e2479 = (0.5f / _e955);
-                                                let _e2485 = frame.member[0u].member_1.member.member.member_1[0u];
-                                                let _e2493 = frame.member[0u].member_1.member.member.member_1[1u];
-                                                let _e2498 = frame.member[0u].member_1.member_5[0u];
-                                                let _e2501 = frame.member[0u].member_1.member_5[1u];
-                                                let _e2502 = f32(_e2498);
-                                                let _e2503 = f32(_e2501);
-                                                let _e2505 = frame.member[0u].member_1.member_4;
-                                                let _e2506 = f32(_e2505);
-                                                let _e2507 = (2u * _e2505);
-                                                let _e2508 = (_e2498 + _e2507);
-                                                let _e2512 = (floor(((((_e959 * _e2479) / _e2485) + 0.5f) * _e2502)) + _e2506);
-                                                let _e2515 = f32(bitcast<i32>((_e2508 - 1u)));
-                                                let _e2523 = (bitcast<u32>((floor(select(0f, select(_e2515, _e2512, (_e2512 < _e2515)), (_e2512 > 0f))) + 8388608f)) - 1258291200u);
-                                                let _e2526 = (floor(((0.5f - ((_e963 * _e2479) / _e2493)) * _e2503)) + _e2506);
-                                                let _e2529 = f32(bitcast<i32>(((_e2501 + _e2507) - 1u)));
-                                                let _e2537 = (bitcast<u32>((floor(select(0f, select(_e2529, _e2526, (_e2526 < _e2529)), (_e2526 > 0f))) + 8388608f)) - 1258291200u);
-                                                let _e2539 = frame.member[0u].member_1.member_8;
-                                                let _e2541 = frame.member[0u].member_1.member_12;
-                                                let _e2548 = (((((_e2537 % 4u) * 4u) + (_e2523 % 4u)) + (_e2541 % 16u)) % 16u);
-                                                if (_e2539 == 1u) {
+                                            let _e2492 = phi_4376_;
+                                            let _e2494 = select(false, ((((_e2371 * _e545) + (_e2372 * _e546)) + (_e2373 * _e547)) > (sqrt(_e2485) * 0.018f)), !(_e2492));
+                                            if _e2494 {
+                                                let _e2495 = (0.5f / _e955);
+                                                let _e2501 = frame.member[0u].member_1.member.member.member_1[0u];
+                                                let _e2509 = frame.member[0u].member_1.member.member.member_1[1u];
+                                                let _e2514 = frame.member[0u].member_1.member_5[0u];
+                                                let _e2517 = frame.member[0u].member_1.member_5[1u];
+                                                let _e2518 = f32(_e2514);
+                                                let _e2519 = f32(_e2517);
+                                                let _e2521 = frame.member[0u].member_1.member_4;
+                                                let _e2522 = f32(_e2521);
+                                                let _e2523 = (2u * _e2521);
+                                                let _e2524 = (_e2514 + _e2523);
+                                                let _e2528 = (floor(((((_e959 * _e2495) / _e2501) + 0.5f) * _e2518)) + _e2522);
+                                                let _e2531 = f32(bitcast<i32>((_e2524 - 1u)));
+                                                let _e2539 = (bitcast<u32>((floor(select(0f, select(_e2531, _e2528, (_e2528 < _e2531)), (_e2528 > 0f))) + 8388608f)) - 1258291200u);
+                                                let _e2542 = (floor(((0.5f - ((_e963 * _e2495) / _e2509)) * _e2519)) + _e2522);
+                                                let _e2545 = f32(bitcast<i32>(((_e2517 + _e2523) - 1u)));
+                                                let _e2553 = (bitcast<u32>((floor(select(0f, select(_e2545, _e2542, (_e2542 < _e2545)), (_e2542 > 0f))) + 8388608f)) - 1258291200u);
+                                                let _e2555 = frame.member[0u].member_1.member_8;
+                                                let _e2557 = frame.member[0u].member_1.member_12;
+                                                let _e2564 = (((((_e2553 % 4u) * 4u) + (_e2539 % 4u)) + (_e2557 % 16u)) % 16u);
+                                                if (_e2555 == 1u) {
                                                     local_1 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
-                                                    let _e2561 = (_e2548 < 16u);
-                                                    if _e2561 {
+                                                    let _e2577 = (_e2564 < 16u);
+                                                    if _e2577 {
                                                     } else {
-                                                        phi_7189_ = true;
+                                                        phi_7209_ = true;
                                                         break;
                                                     }
-                                                    let _e2564 = local_1[_e2548][0u];
+                                                    let _e2580 = local_1[_e2564][0u];
                                                     local_2 = array<array<f32, 2>, 16>(array<f32, 2>(0.6483605f, 0.9140704f), array<f32, 2>(0.72791195f, 0.10379416f), array<f32, 2>(0.4888699f, 0.6991781f), array<f32, 2>(0.38482714f, 0.25951505f), array<f32, 2>(0.15558368f, 0.80202746f), array<f32, 2>(0.22056288f, 0.241263f), array<f32, 2>(0.99621886f, 0.58466333f), array<f32, 2>(0.87760407f, 0.39548847f), array<f32, 2>(0.9271227f, 0.831196f), array<f32, 2>(0.9490577f, 0.14202158f), array<f32, 2>(0.20916066f, 0.54767716f), array<f32, 2>(0.16468945f, 0.48691297f), array<f32, 2>(0.43544456f, 0.9515445f), array<f32, 2>(0.4408541f, 0.011881717f), array<f32, 2>(0.71736413f, 0.6695209f), array<f32, 2>(0.6563677f, 0.35924512f));
-                                                    if _e2561 {
+                                                    if _e2577 {
                                                     } else {
-                                                        phi_7189_ = true;
+                                                        phi_7209_ = true;
                                                         break;
                                                     }
-                                                    let _e2567 = local_2[_e2548][1u];
-                                                    phi_4512_ = vec2<f32>(_e2564, _e2567);
+                                                    let _e2583 = local_2[_e2564][1u];
+                                                    phi_4528_ = vec2<f32>(_e2580, _e2583);
                                                 } else {
-                                                    if (_e2539 == 2u) {
+                                                    if (_e2555 == 2u) {
                                                         local_3 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
-                                                        let _e2551 = (_e2548 < 16u);
-                                                        if _e2551 {
+                                                        let _e2567 = (_e2564 < 16u);
+                                                        if _e2567 {
                                                         } else {
-                                                            phi_7189_ = true;
+                                                            phi_7209_ = true;
                                                             break;
                                                         }
-                                                        let _e2554 = local_3[_e2548][0u];
+                                                        let _e2570 = local_3[_e2564][0u];
                                                         local_4 = array<array<f32, 2>, 16>(array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.625f, 0.625f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.375f, 0.875f), array<f32, 2>(0.125f, 0.125f), array<f32, 2>(0.875f, 0.375f), array<f32, 2>(0.625f, 0.625f));
-                                                        if _e2551 {
+                                                        if _e2567 {
                                                         } else {
-                                                            phi_7189_ = true;
+                                                            phi_7209_ = true;
                                                             break;
                                                         }
-                                                        let _e2557 = local_4[_e2548][1u];
-                                                        phi_4511_ = vec2<f32>(_e2554, _e2557);
+                                                        let _e2573 = local_4[_e2564][1u];
+                                                        phi_4527_ = vec2<f32>(_e2570, _e2573);
                                                     } else {
-                                                        phi_4511_ = vec2<f32>(0.5f, 0.5f);
+                                                        phi_4527_ = vec2<f32>(0.5f, 0.5f);
                                                     }
-                                                    let _e2560 = phi_4511_;
-                                                    phi_4512_ = _e2560;
+                                                    let _e2576 = phi_4527_;
+                                                    phi_4528_ = _e2576;
                                                 }
-                                                let _e2570 = phi_4512_;
-                                                let _e2577 = (((f32(bitcast<i32>(_e2523)) - _e2506) + _e2570.x) / _e2502);
-                                                let _e2582 = (((f32(bitcast<i32>(_e2537)) - _e2506) + _e2570.y) / _e2503);
-                                                let _e2587 = frame.member[0u].member_1.member.member.member[0u];
-                                                let _e2592 = select(select(u32(_e2587), 0u, (_e2587 < 0f)), 4294967295u, (_e2587 > 4294967000f));
-                                                let _e2597 = frame.member[0u].member_1.member.member.member[1u];
-                                                let _e2607 = (select(0f, select(1f, _e2577, (_e2577 < 1f)), (_e2577 > 0f)) * _e2587);
-                                                let _e2610 = f32(bitcast<i32>((_e2592 - 1u)));
-                                                let _e2623 = (select(0f, select(1f, _e2582, (_e2582 < 1f)), (_e2582 > 0f)) * _e2597);
-                                                let _e2626 = f32(bitcast<i32>((select(select(u32(_e2597), 0u, (_e2597 < 0f)), 4294967295u, (_e2597 > 4294967000f)) - 1u)));
-                                                let _e2638 = mips.member[(((bitcast<u32>((floor(select(0f, select(_e2626, _e2623, (_e2623 < _e2626)), (_e2623 > 0f))) + 8388608f)) - 1258291200u) * _e2592) + (bitcast<u32>((floor(select(0f, select(_e2610, _e2607, (_e2607 < _e2610)), (_e2607 > 0f))) + 8388608f)) - 1258291200u))];
-                                                let _e2648 = select(0x1.fffffep+127f, (select(_e2638, _e955, ((_e955 > _e2638) || (_e2638 != _e2638))) * 1.001f), select(false, (abs((_e2638 - _e955)) <= _e238), _e2478));
-                                                let _e2650 = frame.member[0u].member_1.member_6;
-                                                let _e2653 = (((_e2537 * _e2508) + _e2523) * _e2650);
-                                                let _e2655 = sd_map.member[_e2653];
-                                                let _e2659 = frame.member[0u].member_1.member.member.member_3;
-                                                let _e2663 = frame.member[0u].member_1.member.member.member_2;
-                                                let _e2664 = (_e2659 - _e2663);
-                                                let _e2666 = ((_e2655 * _e2664) + _e2663);
-                                                let _e2672 = select(_e2659, _e2666, select(false, select(false, (_e2666 > _e2648), (_e2655 < 1f)), (0u < _e2650)));
-                                                let _e2673 = (_e2650 - 1u);
-                                                let _e2678 = sd_map.member[(_e2653 + select(1u, _e2673, (_e2673 < 1u)))];
-                                                let _e2680 = ((_e2678 * _e2664) + _e2663);
-                                                let _e2686 = select(_e2659, _e2680, select(false, select(false, (_e2680 > _e2648), (_e2678 < 1f)), (1u < _e2650)));
-                                                let _e2691 = sd_map.member[(_e2653 + select(2u, _e2673, (_e2673 < 2u)))];
-                                                let _e2693 = ((_e2691 * _e2664) + _e2663);
-                                                let _e2699 = select(_e2659, _e2693, select(false, select(false, (_e2693 > _e2648), (_e2691 < 1f)), (2u < _e2650)));
-                                                let _e2704 = sd_map.member[(_e2653 + select(3u, _e2673, (_e2673 < 3u)))];
-                                                let _e2706 = ((_e2704 * _e2664) + _e2663);
-                                                let _e2712 = select(_e2659, _e2706, select(false, select(false, (_e2706 > _e2648), (_e2704 < 1f)), (3u < _e2650)));
-                                                if (_e2650 > 4u) {
-                                                    let _e2718 = sd_map.member[(_e2653 + select(4u, _e2673, (_e2673 < 4u)))];
-                                                    let _e2720 = ((_e2718 * _e2664) + _e2663);
-                                                    let _e2731 = sd_map.member[(_e2653 + select(5u, _e2673, (_e2673 < 5u)))];
-                                                    let _e2733 = ((_e2731 * _e2664) + _e2663);
-                                                    let _e2744 = sd_map.member[(_e2653 + select(6u, _e2673, (_e2673 < 6u)))];
-                                                    let _e2746 = ((_e2744 * _e2664) + _e2663);
-                                                    let _e2757 = sd_map.member[(_e2653 + select(7u, _e2673, (_e2673 < 7u)))];
-                                                    let _e2759 = ((_e2757 * _e2664) + _e2663);
-                                                    phi_4955_ = select(_e2659, _e2746, select(false, select(false, (_e2746 > _e2648), (_e2744 < 1f)), (6u < _e2650)));
-                                                    phi_4956_ = select(_e2659, _e2733, select(false, select(false, (_e2733 > _e2648), (_e2731 < 1f)), (5u < _e2650)));
-                                                    phi_4957_ = select(_e2659, _e2720, select(false, select(false, (_e2720 > _e2648), (_e2718 < 1f)), (4u < _e2650)));
-                                                    phi_4958_ = select(_e2659, _e2759, select(false, select(false, (_e2759 > _e2648), (_e2757 < 1f)), (7u < _e2650)));
+                                                let _e2586 = phi_4528_;
+                                                let _e2593 = (((f32(bitcast<i32>(_e2539)) - _e2522) + _e2586.x) / _e2518);
+                                                let _e2598 = (((f32(bitcast<i32>(_e2553)) - _e2522) + _e2586.y) / _e2519);
+                                                let _e2603 = frame.member[0u].member_1.member.member.member[0u];
+                                                let _e2608 = select(select(u32(_e2603), 0u, (_e2603 < 0f)), 4294967295u, (_e2603 > 4294967000f));
+                                                let _e2613 = frame.member[0u].member_1.member.member.member[1u];
+                                                let _e2623 = (select(0f, select(1f, _e2593, (_e2593 < 1f)), (_e2593 > 0f)) * _e2603);
+                                                let _e2626 = f32(bitcast<i32>((_e2608 - 1u)));
+                                                let _e2639 = (select(0f, select(1f, _e2598, (_e2598 < 1f)), (_e2598 > 0f)) * _e2613);
+                                                let _e2642 = f32(bitcast<i32>((select(select(u32(_e2613), 0u, (_e2613 < 0f)), 4294967295u, (_e2613 > 4294967000f)) - 1u)));
+                                                let _e2654 = mips.member[(((bitcast<u32>((floor(select(0f, select(_e2642, _e2639, (_e2639 < _e2642)), (_e2639 > 0f))) + 8388608f)) - 1258291200u) * _e2608) + (bitcast<u32>((floor(select(0f, select(_e2626, _e2623, (_e2623 < _e2626)), (_e2623 > 0f))) + 8388608f)) - 1258291200u))];
+                                                let _e2664 = select(0x1.fffffep+127f, (select(_e2654, _e955, ((_e955 > _e2654) || (_e2654 != _e2654))) * 1.001f), select(false, (abs((_e2654 - _e955)) <= _e238), _e2494));
+                                                let _e2666 = frame.member[0u].member_1.member_6;
+                                                let _e2669 = (((_e2553 * _e2524) + _e2539) * _e2666);
+                                                let _e2671 = sd_map.member[_e2669];
+                                                let _e2675 = frame.member[0u].member_1.member.member.member_3;
+                                                let _e2679 = frame.member[0u].member_1.member.member.member_2;
+                                                let _e2680 = (_e2675 - _e2679);
+                                                let _e2682 = ((_e2671 * _e2680) + _e2679);
+                                                let _e2688 = select(_e2675, _e2682, select(false, select(false, (_e2682 > _e2664), (_e2671 < 1f)), (0u < _e2666)));
+                                                let _e2689 = (_e2666 - 1u);
+                                                let _e2694 = sd_map.member[(_e2669 + select(1u, _e2689, (_e2689 < 1u)))];
+                                                let _e2696 = ((_e2694 * _e2680) + _e2679);
+                                                let _e2702 = select(_e2675, _e2696, select(false, select(false, (_e2696 > _e2664), (_e2694 < 1f)), (1u < _e2666)));
+                                                let _e2707 = sd_map.member[(_e2669 + select(2u, _e2689, (_e2689 < 2u)))];
+                                                let _e2709 = ((_e2707 * _e2680) + _e2679);
+                                                let _e2715 = select(_e2675, _e2709, select(false, select(false, (_e2709 > _e2664), (_e2707 < 1f)), (2u < _e2666)));
+                                                let _e2720 = sd_map.member[(_e2669 + select(3u, _e2689, (_e2689 < 3u)))];
+                                                let _e2722 = ((_e2720 * _e2680) + _e2679);
+                                                let _e2728 = select(_e2675, _e2722, select(false, select(false, (_e2722 > _e2664), (_e2720 < 1f)), (3u < _e2666)));
+                                                if (_e2666 > 4u) {
+                                                    let _e2734 = sd_map.member[(_e2669 + select(4u, _e2689, (_e2689 < 4u)))];
+                                                    let _e2736 = ((_e2734 * _e2680) + _e2679);
+                                                    let _e2747 = sd_map.member[(_e2669 + select(5u, _e2689, (_e2689 < 5u)))];
+                                                    let _e2749 = ((_e2747 * _e2680) + _e2679);
+                                                    let _e2760 = sd_map.member[(_e2669 + select(6u, _e2689, (_e2689 < 6u)))];
+                                                    let _e2762 = ((_e2760 * _e2680) + _e2679);
+                                                    let _e2773 = sd_map.member[(_e2669 + select(7u, _e2689, (_e2689 < 7u)))];
+                                                    let _e2775 = ((_e2773 * _e2680) + _e2679);
+                                                    phi_4971_ = select(_e2675, _e2762, select(false, select(false, (_e2762 > _e2664), (_e2760 < 1f)), (6u < _e2666)));
+                                                    phi_4972_ = select(_e2675, _e2749, select(false, select(false, (_e2749 > _e2664), (_e2747 < 1f)), (5u < _e2666)));
+                                                    phi_4973_ = select(_e2675, _e2736, select(false, select(false, (_e2736 > _e2664), (_e2734 < 1f)), (4u < _e2666)));
+                                                    phi_4974_ = select(_e2675, _e2775, select(false, select(false, (_e2775 > _e2664), (_e2773 < 1f)), (7u < _e2666)));
                                                 } else {
-                                                    phi_4955_ = _e2659;
-                                                    phi_4956_ = _e2659;
-                                                    phi_4957_ = _e2659;
-                                                    phi_4958_ = _e2659;
+                                                    phi_4971_ = _e2675;
+                                                    phi_4972_ = _e2675;
+                                                    phi_4973_ = _e2675;
+                                                    phi_4974_ = _e2675;
                                                 }
-                                                let _e2767 = phi_4955_;
-                                                let _e2769 = phi_4956_;
-                                                let _e2771 = phi_4957_;
-                                                let _e2773 = phi_4958_;
-                                                let _e2775 = (_e2686 != _e2686);
-                                                let _e2777 = select(_e2686, _e2672, ((_e2672 < _e2686) || _e2775));
-                                                let _e2780 = select(_e2686, _e2672, ((_e2672 > _e2686) || _e2775));
-                                                let _e2782 = (_e2712 != _e2712);
-                                                let _e2784 = select(_e2712, _e2699, ((_e2699 < _e2712) || _e2782));
-                                                let _e2787 = select(_e2712, _e2699, ((_e2699 > _e2712) || _e2782));
-                                                let _e2789 = (_e2769 != _e2769);
-                                                let _e2791 = select(_e2769, _e2771, ((_e2771 < _e2769) || _e2789));
-                                                let _e2794 = select(_e2769, _e2771, ((_e2771 > _e2769) || _e2789));
-                                                let _e2796 = (_e2773 != _e2773);
-                                                let _e2798 = select(_e2773, _e2767, ((_e2767 < _e2773) || _e2796));
-                                                let _e2801 = select(_e2773, _e2767, ((_e2767 > _e2773) || _e2796));
-                                                let _e2803 = (_e2784 != _e2784);
-                                                let _e2805 = select(_e2784, _e2777, ((_e2777 < _e2784) || _e2803));
-                                                let _e2808 = select(_e2784, _e2777, ((_e2777 > _e2784) || _e2803));
-                                                let _e2810 = (_e2787 != _e2787);
-                                                let _e2812 = select(_e2787, _e2780, ((_e2780 < _e2787) || _e2810));
-                                                let _e2815 = select(_e2787, _e2780, ((_e2780 > _e2787) || _e2810));
-                                                let _e2817 = (_e2798 != _e2798);
-                                                let _e2819 = select(_e2798, _e2791, ((_e2791 < _e2798) || _e2817));
-                                                let _e2822 = select(_e2798, _e2791, ((_e2791 > _e2798) || _e2817));
-                                                let _e2824 = (_e2801 != _e2801);
-                                                let _e2826 = select(_e2801, _e2794, ((_e2794 < _e2801) || _e2824));
-                                                let _e2829 = select(_e2801, _e2794, ((_e2794 > _e2801) || _e2824));
-                                                let _e2831 = (_e2808 != _e2808);
-                                                let _e2833 = select(_e2808, _e2812, ((_e2812 < _e2808) || _e2831));
-                                                let _e2836 = select(_e2808, _e2812, ((_e2812 > _e2808) || _e2831));
-                                                let _e2838 = (_e2822 != _e2822);
-                                                let _e2840 = select(_e2822, _e2826, ((_e2826 < _e2822) || _e2838));
-                                                let _e2843 = select(_e2822, _e2826, ((_e2826 > _e2822) || _e2838));
-                                                let _e2845 = (_e2819 != _e2819);
-                                                let _e2847 = select(_e2819, _e2805, ((_e2805 < _e2819) || _e2845));
-                                                let _e2850 = select(_e2819, _e2805, ((_e2805 > _e2819) || _e2845));
-                                                let _e2852 = (_e2840 != _e2840);
-                                                let _e2854 = select(_e2840, _e2833, ((_e2833 < _e2840) || _e2852));
-                                                let _e2857 = select(_e2840, _e2833, ((_e2833 > _e2840) || _e2852));
-                                                let _e2859 = (_e2843 != _e2843);
-                                                let _e2861 = select(_e2843, _e2836, ((_e2836 < _e2843) || _e2859));
-                                                let _e2864 = select(_e2843, _e2836, ((_e2836 > _e2843) || _e2859));
-                                                let _e2866 = (_e2829 != _e2829);
-                                                let _e2868 = select(_e2829, _e2815, ((_e2815 < _e2829) || _e2866));
-                                                let _e2871 = select(_e2829, _e2815, ((_e2815 > _e2829) || _e2866));
-                                                let _e2873 = (_e2850 != _e2850);
-                                                let _e2875 = select(_e2850, _e2861, ((_e2861 < _e2850) || _e2873));
-                                                let _e2878 = select(_e2850, _e2861, ((_e2861 > _e2850) || _e2873));
-                                                let _e2880 = (_e2857 != _e2857);
-                                                let _e2882 = select(_e2857, _e2868, ((_e2868 < _e2857) || _e2880));
-                                                let _e2885 = select(_e2857, _e2868, ((_e2868 > _e2857) || _e2880));
-                                                let _e2887 = (_e2875 != _e2875);
-                                                let _e2889 = select(_e2875, _e2854, ((_e2854 < _e2875) || _e2887));
-                                                let _e2892 = select(_e2875, _e2854, ((_e2854 > _e2875) || _e2887));
-                                                let _e2894 = (_e2878 != _e2878);
-                                                let _e2896 = select(_e2878, _e2882, ((_e2882 < _e2878) || _e2894));
-                                                let _e2899 = select(_e2878, _e2882, ((_e2882 > _e2878) || _e2894));
-                                                let _e2901 = (_e2864 != _e2864);
-                                                let _e2903 = select(_e2864, _e2885, ((_e2885 < _e2864) || _e2901));
-                                                let _e2906 = select(_e2864, _e2885, ((_e2885 > _e2864) || _e2901));
-                                                let _e2910 = select(false, (_e2847 > (_e955 + _e238)), (_e2847 < _e2659));
-                                                let _e2912 = ((_e2577 * 2f) - 1f);
-                                                let _e2916 = ((_e2582 * -2f) + 1f);
-                                                let _e2926 = (_e2912 * _e225.member.member_1.x);
-                                                let _e2928 = (_e2916 * _e225.member.member_1.y);
-                                                let _e2930 = ((_e2926 * _e2889) - _e466);
-                                                let _e2931 = ((_e2928 * _e2889) - _e473);
-                                                let _e2932 = (_e2889 - _e459);
-                                                if _e972 {
-                                                    phi_5300_ = ((((_e2930 * _e2930) + (_e2931 * _e2931)) + (_e2932 * _e2932)) <= (_e241 * _e241));
+                                                let _e2783 = phi_4971_;
+                                                let _e2785 = phi_4972_;
+                                                let _e2787 = phi_4973_;
+                                                let _e2789 = phi_4974_;
+                                                let _e2791 = (_e2702 != _e2702);
+                                                let _e2793 = select(_e2702, _e2688, ((_e2688 < _e2702) || _e2791));
+                                                let _e2796 = select(_e2702, _e2688, ((_e2688 > _e2702) || _e2791));
+                                                let _e2798 = (_e2728 != _e2728);
+                                                let _e2800 = select(_e2728, _e2715, ((_e2715 < _e2728) || _e2798));
+                                                let _e2803 = select(_e2728, _e2715, ((_e2715 > _e2728) || _e2798));
+                                                let _e2805 = (_e2785 != _e2785);
+                                                let _e2807 = select(_e2785, _e2787, ((_e2787 < _e2785) || _e2805));
+                                                let _e2810 = select(_e2785, _e2787, ((_e2787 > _e2785) || _e2805));
+                                                let _e2812 = (_e2789 != _e2789);
+                                                let _e2814 = select(_e2789, _e2783, ((_e2783 < _e2789) || _e2812));
+                                                let _e2817 = select(_e2789, _e2783, ((_e2783 > _e2789) || _e2812));
+                                                let _e2819 = (_e2800 != _e2800);
+                                                let _e2821 = select(_e2800, _e2793, ((_e2793 < _e2800) || _e2819));
+                                                let _e2824 = select(_e2800, _e2793, ((_e2793 > _e2800) || _e2819));
+                                                let _e2826 = (_e2803 != _e2803);
+                                                let _e2828 = select(_e2803, _e2796, ((_e2796 < _e2803) || _e2826));
+                                                let _e2831 = select(_e2803, _e2796, ((_e2796 > _e2803) || _e2826));
+                                                let _e2833 = (_e2814 != _e2814);
+                                                let _e2835 = select(_e2814, _e2807, ((_e2807 < _e2814) || _e2833));
+                                                let _e2838 = select(_e2814, _e2807, ((_e2807 > _e2814) || _e2833));
+                                                let _e2840 = (_e2817 != _e2817);
+                                                let _e2842 = select(_e2817, _e2810, ((_e2810 < _e2817) || _e2840));
+                                                let _e2845 = select(_e2817, _e2810, ((_e2810 > _e2817) || _e2840));
+                                                let _e2847 = (_e2824 != _e2824);
+                                                let _e2849 = select(_e2824, _e2828, ((_e2828 < _e2824) || _e2847));
+                                                let _e2852 = select(_e2824, _e2828, ((_e2828 > _e2824) || _e2847));
+                                                let _e2854 = (_e2838 != _e2838);
+                                                let _e2856 = select(_e2838, _e2842, ((_e2842 < _e2838) || _e2854));
+                                                let _e2859 = select(_e2838, _e2842, ((_e2842 > _e2838) || _e2854));
+                                                let _e2861 = (_e2835 != _e2835);
+                                                let _e2863 = select(_e2835, _e2821, ((_e2821 < _e2835) || _e2861));
+                                                let _e2866 = select(_e2835, _e2821, ((_e2821 > _e2835) || _e2861));
+                                                let _e2868 = (_e2856 != _e2856);
+                                                let _e2870 = select(_e2856, _e2849, ((_e2849 < _e2856) || _e2868));
+                                                let _e2873 = select(_e2856, _e2849, ((_e2849 > _e2856) || _e2868));
+                                                let _e2875 = (_e2859 != _e2859);
+                                                let _e2877 = select(_e2859, _e2852, ((_e2852 < _e2859) || _e2875));
+                                                let _e2880 = select(_e2859, _e2852, ((_e2852 > _e2859) || _e2875));
+                                                let _e2882 = (_e2845 != _e2845);
+                                                let _e2884 = select(_e2845, _e2831, ((_e2831 < _e2845) || _e2882));
+                                                let _e2887 = select(_e2845, _e2831, ((_e2831 > _e2845) || _e2882));
+                                                let _e2889 = (_e2866 != _e2866);
+                                                let _e2891 = select(_e2866, _e2877, ((_e2877 < _e2866) || _e2889));
+                                                let _e2894 = select(_e2866, _e2877, ((_e2877 > _e2866) || _e2889));
+                                                let _e2896 = (_e2873 != _e2873);
+                                                let _e2898 = select(_e2873, _e2884, ((_e2884 < _e2873) || _e2896));
+                                                let _e2901 = select(_e2873, _e2884, ((_e2884 > _e2873) || _e2896));
+                                                let _e2903 = (_e2891 != _e2891);
+                                                let _e2905 = select(_e2891, _e2870, ((_e2870 < _e2891) || _e2903));
+                                                let _e2908 = select(_e2891, _e2870, ((_e2870 > _e2891) || _e2903));
+                                                let _e2910 = (_e2894 != _e2894);
+                                                let _e2912 = select(_e2894, _e2898, ((_e2898 < _e2894) || _e2910));
+                                                let _e2915 = select(_e2894, _e2898, ((_e2898 > _e2894) || _e2910));
+                                                let _e2917 = (_e2880 != _e2880);
+                                                let _e2919 = select(_e2880, _e2901, ((_e2901 < _e2880) || _e2917));
+                                                let _e2922 = select(_e2880, _e2901, ((_e2901 > _e2880) || _e2917));
+                                                let _e2926 = select(false, (_e2863 > (_e955 + _e238)), (_e2863 < _e2675));
+                                                let _e2928 = ((_e2593 * 2f) - 1f);
+                                                let _e2932 = ((_e2598 * -2f) + 1f);
+                                                let _e2942 = (_e2928 * _e225.member.member_1.x);
+                                                let _e2944 = (_e2932 * _e225.member.member_1.y);
+                                                let _e2946 = ((_e2942 * _e2905) - _e466);
+                                                let _e2947 = ((_e2944 * _e2905) - _e473);
+                                                let _e2948 = (_e2905 - _e459);
+                                                if _e967 {
+                                                    phi_5317_ = ((((_e2946 * _e2946) + (_e2947 * _e2947)) + (_e2948 * _e2948)) > (_e241 * _e241));
                                                 } else {
-                                                    phi_5300_ = true;
+                                                    phi_5317_ = false;
                                                 }
-                                                let _e2941 = phi_5300_;
-                                                let _e2943 = select(false, _e2941, (_e2889 < _e225.member.member_3));
-                                                if _e2943 {
-                                                    let _e2944 = (_e2892 < _e225.member.member_3);
-                                                    let _e2953 = select((_e2930 - _e2374), ((_e2926 * _e2892) - _e466), _e2944);
-                                                    let _e2954 = select((_e2931 - _e2375), ((_e2928 * _e2892) - _e473), _e2944);
-                                                    let _e2955 = select((_e2932 - _e2376), (_e2892 - _e459), _e2944);
-                                                    let _e2967 = ((((_e2930 * _e484) + (_e2931 * _e485)) + (_e2932 * _e486)) * inverseSqrt((((_e2930 * _e2930) + (_e2931 * _e2931)) + (_e2932 * _e2932))));
-                                                    let _e2971 = select(-1f, select(1f, _e2967, (_e2967 < 1f)), (_e2967 > -1f));
-                                                    let _e2972 = abs(_e2971);
-                                                    let _e2982 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2972, 0.00667009f), _e2972, -0.017088126f), _e2972, 0.03089188f), _e2972, -0.050174303f), _e2972, 0.08897899f), _e2972, -0.2145988f), _e2972, 1.5707963f) * sqrt((1f - _e2972)));
-                                                    let _e2989 = ((((select((3.1415927f - _e2982), _e2982, (_e2971 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
-                                                    let _e3005 = ((((_e2953 * _e484) + (_e2954 * _e485)) + (_e2955 * _e486)) * inverseSqrt((((_e2953 * _e2953) + (_e2954 * _e2954)) + (_e2955 * _e2955))));
-                                                    let _e3009 = select(-1f, select(1f, _e3005, (_e3005 < 1f)), (_e3005 > -1f));
-                                                    let _e3010 = abs(_e3009);
-                                                    let _e3020 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3010, 0.00667009f), _e3010, -0.017088126f), _e3010, 0.03089188f), _e3010, -0.050174303f), _e3010, 0.08897899f), _e3010, -0.2145988f), _e3010, 1.5707963f) * sqrt((1f - _e3010)));
-                                                    let _e3027 = ((((select((3.1415927f - _e3020), _e3020, (_e3009 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
-                                                    let _e3032 = (1f - select(0f, select(1f, _e2989, (_e2989 < 1f)), (_e2989 > 0f)));
-                                                    let _e3033 = (1f - select(0f, select(1f, _e3027, (_e3027 < 1f)), (_e3027 > 0f)));
-                                                    let _e3035 = (_e3033 != _e3033);
-                                                    let _e3037 = select(_e3033, _e3032, ((_e3032 < _e3033) || _e3035));
-                                                    let _e3040 = select(_e3033, _e3032, ((_e3032 > _e3033) || _e3035));
-                                                    let _e3042 = floor((_e3037 * 32f));
+                                                let _e2958 = phi_5317_;
+                                                let _e2960 = select(false, !(_e2958), (_e2905 < _e225.member.member_3));
+                                                if _e2960 {
+                                                    let _e2961 = (_e2908 < _e225.member.member_3);
+                                                    let _e2970 = select((_e2946 - _e2384), ((_e2942 * _e2908) - _e466), _e2961);
+                                                    let _e2971 = select((_e2947 - _e2385), ((_e2944 * _e2908) - _e473), _e2961);
+                                                    let _e2972 = select((_e2948 - _e2386), (_e2908 - _e459), _e2961);
+                                                    let _e2984 = ((((_e2946 * _e484) + (_e2947 * _e485)) + (_e2948 * _e486)) * inverseSqrt((((_e2946 * _e2946) + (_e2947 * _e2947)) + (_e2948 * _e2948))));
+                                                    let _e2988 = select(-1f, select(1f, _e2984, (_e2984 < 1f)), (_e2984 > -1f));
+                                                    let _e2989 = abs(_e2988);
+                                                    let _e2999 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e2989, 0.00667009f), _e2989, -0.017088126f), _e2989, 0.03089188f), _e2989, -0.050174303f), _e2989, 0.08897899f), _e2989, -0.2145988f), _e2989, 1.5707963f) * sqrt((1f - _e2989)));
+                                                    let _e3006 = ((((select((3.1415927f - _e2999), _e2999, (_e2988 >= 0f)) + _e2469) - _e2465) + 1.5707964f) * 0.31830987f);
+                                                    let _e3022 = ((((_e2970 * _e484) + (_e2971 * _e485)) + (_e2972 * _e486)) * inverseSqrt((((_e2970 * _e2970) + (_e2971 * _e2971)) + (_e2972 * _e2972))));
+                                                    let _e3026 = select(-1f, select(1f, _e3022, (_e3022 < 1f)), (_e3022 > -1f));
+                                                    let _e3027 = abs(_e3026);
+                                                    let _e3037 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3027, 0.00667009f), _e3027, -0.017088126f), _e3027, 0.03089188f), _e3027, -0.050174303f), _e3027, 0.08897899f), _e3027, -0.2145988f), _e3027, 1.5707963f) * sqrt((1f - _e3027)));
+                                                    let _e3044 = ((((select((3.1415927f - _e3037), _e3037, (_e3026 >= 0f)) + _e2469) - _e2465) + 1.5707964f) * 0.31830987f);
+                                                    let _e3049 = (1f - select(0f, select(1f, _e3006, (_e3006 < 1f)), (_e3006 > 0f)));
+                                                    let _e3050 = (1f - select(0f, select(1f, _e3044, (_e3044 < 1f)), (_e3044 > 0f)));
+                                                    let _e3052 = (_e3050 != _e3050);
+                                                    let _e3054 = select(_e3050, _e3049, ((_e3049 < _e3050) || _e3052));
+                                                    let _e3057 = select(_e3050, _e3049, ((_e3049 > _e3050) || _e3052));
+                                                    let _e3059 = floor((_e3054 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e3050 = -(floor((_e3040 * -32f)));
-                                                        let _e3055 = (select(32f, _e3050, ((_e3050 < 32f) || false)) - _e3042);
-                                                        phi_5527_ = select(select(0f, _e3055, ((_e3055 > 0f) || false)), 0f, (_e3040 <= _e3037));
+                                                        let _e3067 = -(floor((_e3057 * -32f)));
+                                                        let _e3072 = (select(32f, _e3067, ((_e3067 < 32f) || false)) - _e3059);
+                                                        phi_5544_ = select(select(0f, _e3072, ((_e3072 > 0f) || false)), 0f, (_e3057 <= _e3054));
                                                     } else {
-                                                        phi_5527_ = -(floor(((_e3040 - _e3037) * -32f)));
+                                                        phi_5544_ = -(floor(((_e3057 - _e3054) * -32f)));
                                                     }
-                                                    let _e3061 = phi_5527_;
-                                                    let _e3069 = (bitcast<u32>((floor(select(0f, select(32f, _e3042, (_e3042 < 32f)), (_e3042 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e3077 = (bitcast<u32>((floor(select(0f, select(32f, _e3061, (_e3061 < 32f)), (_e3061 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e3069 >= 32u) {
-                                                        phi_5581_ = u32();
-                                                        phi_5582_ = true;
+                                                    let _e3078 = phi_5544_;
+                                                    let _e3086 = (bitcast<u32>((floor(select(0f, select(32f, _e3059, (_e3059 < 32f)), (_e3059 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e3094 = (bitcast<u32>((floor(select(0f, select(32f, _e3078, (_e3078 < 32f)), (_e3078 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e3086 >= 32u) {
+                                                        phi_5598_ = u32();
+                                                        phi_5599_ = true;
                                                     } else {
-                                                        let _e3079 = (_e3077 == 0u);
-                                                        if _e3079 {
-                                                            phi_5580_ = u32();
+                                                        let _e3096 = (_e3094 == 0u);
+                                                        if _e3096 {
+                                                            phi_5597_ = u32();
                                                         } else {
-                                                            if (_e3077 >= 32u) {
-                                                                phi_5577_ = 4294967295u;
+                                                            if (_e3094 >= 32u) {
+                                                                phi_5594_ = 4294967295u;
                                                             } else {
-                                                                phi_5577_ = ((1u << bitcast<u32>((_e3077 & 31u))) - 1u);
+                                                                phi_5594_ = ((1u << bitcast<u32>((_e3094 & 31u))) - 1u);
                                                             }
-                                                            let _e3086 = phi_5577_;
-                                                            phi_5580_ = (_e3086 << bitcast<u32>((_e3069 & 31u)));
+                                                            let _e3103 = phi_5594_;
+                                                            phi_5597_ = (_e3103 << bitcast<u32>((_e3086 & 31u)));
                                                         }
-                                                        let _e3091 = phi_5580_;
-                                                        phi_5581_ = _e3091;
-                                                        phi_5582_ = _e3079;
+                                                        let _e3108 = phi_5597_;
+                                                        phi_5598_ = _e3108;
+                                                        phi_5599_ = _e3096;
                                                     }
-                                                    let _e3093 = phi_5581_;
-                                                    let _e3095 = phi_5582_;
-                                                    phi_5595_ = select(0u, select(select(_e3093, 0u, _e3095), 0u, _e2465), _e2943);
+                                                    let _e3110 = phi_5598_;
+                                                    let _e3112 = phi_5599_;
+                                                    phi_5612_ = select(0u, select(select(_e3110, 0u, _e3112), 0u, _e2475), _e2960);
                                                 } else {
-                                                    phi_5595_ = 0u;
+                                                    phi_5612_ = 0u;
                                                 }
-                                                let _e3100 = phi_5595_;
-                                                let _e3103 = ((_e2926 * _e2896) - _e466);
-                                                let _e3104 = ((_e2928 * _e2896) - _e473);
-                                                let _e3105 = (_e2896 - _e459);
-                                                if _e972 {
-                                                    phi_5626_ = ((((_e3103 * _e3103) + (_e3104 * _e3104)) + (_e3105 * _e3105)) <= (_e241 * _e241));
+                                                let _e3117 = phi_5612_;
+                                                let _e3120 = ((_e2942 * _e2912) - _e466);
+                                                let _e3121 = ((_e2944 * _e2912) - _e473);
+                                                let _e3122 = (_e2912 - _e459);
+                                                if _e967 {
+                                                    phi_5644_ = ((((_e3120 * _e3120) + (_e3121 * _e3121)) + (_e3122 * _e3122)) > (_e241 * _e241));
                                                 } else {
-                                                    phi_5626_ = true;
+                                                    phi_5644_ = false;
                                                 }
-                                                let _e3114 = phi_5626_;
-                                                let _e3116 = select(false, _e3114, (_e2896 < _e225.member.member_3));
-                                                if _e3116 {
-                                                    let _e3117 = (_e2899 < _e225.member.member_3);
-                                                    let _e3126 = select((_e3103 - _e2374), ((_e2926 * _e2899) - _e466), _e3117);
-                                                    let _e3127 = select((_e3104 - _e2375), ((_e2928 * _e2899) - _e473), _e3117);
-                                                    let _e3128 = select((_e3105 - _e2376), (_e2899 - _e459), _e3117);
-                                                    let _e3140 = ((((_e3103 * _e484) + (_e3104 * _e485)) + (_e3105 * _e486)) * inverseSqrt((((_e3103 * _e3103) + (_e3104 * _e3104)) + (_e3105 * _e3105))));
-                                                    let _e3144 = select(-1f, select(1f, _e3140, (_e3140 < 1f)), (_e3140 > -1f));
-                                                    let _e3145 = abs(_e3144);
-                                                    let _e3155 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3145, 0.00667009f), _e3145, -0.017088126f), _e3145, 0.03089188f), _e3145, -0.050174303f), _e3145, 0.08897899f), _e3145, -0.2145988f), _e3145, 1.5707963f) * sqrt((1f - _e3145)));
-                                                    let _e3162 = ((((select((3.1415927f - _e3155), _e3155, (_e3144 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
-                                                    let _e3178 = ((((_e3126 * _e484) + (_e3127 * _e485)) + (_e3128 * _e486)) * inverseSqrt((((_e3126 * _e3126) + (_e3127 * _e3127)) + (_e3128 * _e3128))));
-                                                    let _e3182 = select(-1f, select(1f, _e3178, (_e3178 < 1f)), (_e3178 > -1f));
-                                                    let _e3183 = abs(_e3182);
-                                                    let _e3193 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3183, 0.00667009f), _e3183, -0.017088126f), _e3183, 0.03089188f), _e3183, -0.050174303f), _e3183, 0.08897899f), _e3183, -0.2145988f), _e3183, 1.5707963f) * sqrt((1f - _e3183)));
-                                                    let _e3200 = ((((select((3.1415927f - _e3193), _e3193, (_e3182 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
-                                                    let _e3205 = (1f - select(0f, select(1f, _e3162, (_e3162 < 1f)), (_e3162 > 0f)));
-                                                    let _e3206 = (1f - select(0f, select(1f, _e3200, (_e3200 < 1f)), (_e3200 > 0f)));
-                                                    let _e3208 = (_e3206 != _e3206);
-                                                    let _e3210 = select(_e3206, _e3205, ((_e3205 < _e3206) || _e3208));
-                                                    let _e3213 = select(_e3206, _e3205, ((_e3205 > _e3206) || _e3208));
-                                                    let _e3215 = floor((_e3210 * 32f));
+                                                let _e3132 = phi_5644_;
+                                                let _e3134 = select(false, !(_e3132), (_e2912 < _e225.member.member_3));
+                                                if _e3134 {
+                                                    let _e3135 = (_e2915 < _e225.member.member_3);
+                                                    let _e3144 = select((_e3120 - _e2384), ((_e2942 * _e2915) - _e466), _e3135);
+                                                    let _e3145 = select((_e3121 - _e2385), ((_e2944 * _e2915) - _e473), _e3135);
+                                                    let _e3146 = select((_e3122 - _e2386), (_e2915 - _e459), _e3135);
+                                                    let _e3158 = ((((_e3120 * _e484) + (_e3121 * _e485)) + (_e3122 * _e486)) * inverseSqrt((((_e3120 * _e3120) + (_e3121 * _e3121)) + (_e3122 * _e3122))));
+                                                    let _e3162 = select(-1f, select(1f, _e3158, (_e3158 < 1f)), (_e3158 > -1f));
+                                                    let _e3163 = abs(_e3162);
+                                                    let _e3173 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3163, 0.00667009f), _e3163, -0.017088126f), _e3163, 0.03089188f), _e3163, -0.050174303f), _e3163, 0.08897899f), _e3163, -0.2145988f), _e3163, 1.5707963f) * sqrt((1f - _e3163)));
+                                                    let _e3180 = ((((select((3.1415927f - _e3173), _e3173, (_e3162 >= 0f)) + _e2469) - _e2465) + 1.5707964f) * 0.31830987f);
+                                                    let _e3196 = ((((_e3144 * _e484) + (_e3145 * _e485)) + (_e3146 * _e486)) * inverseSqrt((((_e3144 * _e3144) + (_e3145 * _e3145)) + (_e3146 * _e3146))));
+                                                    let _e3200 = select(-1f, select(1f, _e3196, (_e3196 < 1f)), (_e3196 > -1f));
+                                                    let _e3201 = abs(_e3200);
+                                                    let _e3211 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3201, 0.00667009f), _e3201, -0.017088126f), _e3201, 0.03089188f), _e3201, -0.050174303f), _e3201, 0.08897899f), _e3201, -0.2145988f), _e3201, 1.5707963f) * sqrt((1f - _e3201)));
+                                                    let _e3218 = ((((select((3.1415927f - _e3211), _e3211, (_e3200 >= 0f)) + _e2469) - _e2465) + 1.5707964f) * 0.31830987f);
+                                                    let _e3223 = (1f - select(0f, select(1f, _e3180, (_e3180 < 1f)), (_e3180 > 0f)));
+                                                    let _e3224 = (1f - select(0f, select(1f, _e3218, (_e3218 < 1f)), (_e3218 > 0f)));
+                                                    let _e3226 = (_e3224 != _e3224);
+                                                    let _e3228 = select(_e3224, _e3223, ((_e3223 < _e3224) || _e3226));
+                                                    let _e3231 = select(_e3224, _e3223, ((_e3223 > _e3224) || _e3226));
+                                                    let _e3233 = floor((_e3228 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e3223 = -(floor((_e3213 * -32f)));
-                                                        let _e3228 = (select(32f, _e3223, ((_e3223 < 32f) || false)) - _e3215);
-                                                        phi_5853_ = select(select(0f, _e3228, ((_e3228 > 0f) || false)), 0f, (_e3213 <= _e3210));
+                                                        let _e3241 = -(floor((_e3231 * -32f)));
+                                                        let _e3246 = (select(32f, _e3241, ((_e3241 < 32f) || false)) - _e3233);
+                                                        phi_5871_ = select(select(0f, _e3246, ((_e3246 > 0f) || false)), 0f, (_e3231 <= _e3228));
                                                     } else {
-                                                        phi_5853_ = -(floor(((_e3213 - _e3210) * -32f)));
+                                                        phi_5871_ = -(floor(((_e3231 - _e3228) * -32f)));
                                                     }
-                                                    let _e3234 = phi_5853_;
-                                                    let _e3242 = (bitcast<u32>((floor(select(0f, select(32f, _e3215, (_e3215 < 32f)), (_e3215 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e3250 = (bitcast<u32>((floor(select(0f, select(32f, _e3234, (_e3234 < 32f)), (_e3234 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e3242 >= 32u) {
-                                                        phi_5907_ = u32();
-                                                        phi_5908_ = true;
+                                                    let _e3252 = phi_5871_;
+                                                    let _e3260 = (bitcast<u32>((floor(select(0f, select(32f, _e3233, (_e3233 < 32f)), (_e3233 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e3268 = (bitcast<u32>((floor(select(0f, select(32f, _e3252, (_e3252 < 32f)), (_e3252 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e3260 >= 32u) {
+                                                        phi_5925_ = u32();
+                                                        phi_5926_ = true;
                                                     } else {
-                                                        let _e3252 = (_e3250 == 0u);
-                                                        if _e3252 {
-                                                            phi_5906_ = u32();
+                                                        let _e3270 = (_e3268 == 0u);
+                                                        if _e3270 {
+                                                            phi_5924_ = u32();
                                                         } else {
-                                                            if (_e3250 >= 32u) {
-                                                                phi_5903_ = 4294967295u;
+                                                            if (_e3268 >= 32u) {
+                                                                phi_5921_ = 4294967295u;
                                                             } else {
-                                                                phi_5903_ = ((1u << bitcast<u32>((_e3250 & 31u))) - 1u);
+                                                                phi_5921_ = ((1u << bitcast<u32>((_e3268 & 31u))) - 1u);
                                                             }
-                                                            let _e3259 = phi_5903_;
-                                                            phi_5906_ = (_e3259 << bitcast<u32>((_e3242 & 31u)));
+                                                            let _e3277 = phi_5921_;
+                                                            phi_5924_ = (_e3277 << bitcast<u32>((_e3260 & 31u)));
                                                         }
-                                                        let _e3264 = phi_5906_;
-                                                        phi_5907_ = _e3264;
-                                                        phi_5908_ = _e3252;
+                                                        let _e3282 = phi_5924_;
+                                                        phi_5925_ = _e3282;
+                                                        phi_5926_ = _e3270;
                                                     }
-                                                    let _e3266 = phi_5907_;
-                                                    let _e3268 = phi_5908_;
-                                                    phi_5921_ = select(0u, select(select(_e3266, 0u, _e3268), 0u, _e2465), _e3116);
+                                                    let _e3284 = phi_5925_;
+                                                    let _e3286 = phi_5926_;
+                                                    phi_5939_ = select(0u, select(select(_e3284, 0u, _e3286), 0u, _e2475), _e3134);
                                                 } else {
-                                                    phi_5921_ = 0u;
+                                                    phi_5939_ = 0u;
                                                 }
-                                                let _e3273 = phi_5921_;
-                                                let _e3277 = ((_e2926 * _e2903) - _e466);
-                                                let _e3278 = ((_e2928 * _e2903) - _e473);
-                                                let _e3279 = (_e2903 - _e459);
-                                                if _e972 {
-                                                    phi_5953_ = ((((_e3277 * _e3277) + (_e3278 * _e3278)) + (_e3279 * _e3279)) <= (_e241 * _e241));
+                                                let _e3291 = phi_5939_;
+                                                let _e3295 = ((_e2942 * _e2919) - _e466);
+                                                let _e3296 = ((_e2944 * _e2919) - _e473);
+                                                let _e3297 = (_e2919 - _e459);
+                                                if _e967 {
+                                                    phi_5972_ = ((((_e3295 * _e3295) + (_e3296 * _e3296)) + (_e3297 * _e3297)) > (_e241 * _e241));
                                                 } else {
-                                                    phi_5953_ = true;
+                                                    phi_5972_ = false;
                                                 }
-                                                let _e3288 = phi_5953_;
-                                                let _e3290 = select(false, _e3288, (_e2903 < _e225.member.member_3));
-                                                if _e3290 {
-                                                    let _e3291 = (_e2906 < _e225.member.member_3);
-                                                    let _e3300 = select((_e3277 - _e2374), ((_e2926 * _e2906) - _e466), _e3291);
-                                                    let _e3301 = select((_e3278 - _e2375), ((_e2928 * _e2906) - _e473), _e3291);
-                                                    let _e3302 = select((_e3279 - _e2376), (_e2906 - _e459), _e3291);
-                                                    let _e3314 = ((((_e3277 * _e484) + (_e3278 * _e485)) + (_e3279 * _e486)) * inverseSqrt((((_e3277 * _e3277) + (_e3278 * _e3278)) + (_e3279 * _e3279))));
-                                                    let _e3318 = select(-1f, select(1f, _e3314, (_e3314 < 1f)), (_e3314 > -1f));
-                                                    let _e3319 = abs(_e3318);
-                                                    let _e3329 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3319, 0.00667009f), _e3319, -0.017088126f), _e3319, 0.03089188f), _e3319, -0.050174303f), _e3319, 0.08897899f), _e3319, -0.2145988f), _e3319, 1.5707963f) * sqrt((1f - _e3319)));
-                                                    let _e3336 = ((((select((3.1415927f - _e3329), _e3329, (_e3318 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
-                                                    let _e3352 = ((((_e3300 * _e484) + (_e3301 * _e485)) + (_e3302 * _e486)) * inverseSqrt((((_e3300 * _e3300) + (_e3301 * _e3301)) + (_e3302 * _e3302))));
-                                                    let _e3356 = select(-1f, select(1f, _e3352, (_e3352 < 1f)), (_e3352 > -1f));
-                                                    let _e3357 = abs(_e3356);
-                                                    let _e3367 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3357, 0.00667009f), _e3357, -0.017088126f), _e3357, 0.03089188f), _e3357, -0.050174303f), _e3357, 0.08897899f), _e3357, -0.2145988f), _e3357, 1.5707963f) * sqrt((1f - _e3357)));
-                                                    let _e3374 = ((((select((3.1415927f - _e3367), _e3367, (_e3356 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
-                                                    let _e3379 = (1f - select(0f, select(1f, _e3336, (_e3336 < 1f)), (_e3336 > 0f)));
-                                                    let _e3380 = (1f - select(0f, select(1f, _e3374, (_e3374 < 1f)), (_e3374 > 0f)));
-                                                    let _e3382 = (_e3380 != _e3380);
-                                                    let _e3384 = select(_e3380, _e3379, ((_e3379 < _e3380) || _e3382));
-                                                    let _e3387 = select(_e3380, _e3379, ((_e3379 > _e3380) || _e3382));
-                                                    let _e3389 = floor((_e3384 * 32f));
+                                                let _e3307 = phi_5972_;
+                                                let _e3309 = select(false, !(_e3307), (_e2919 < _e225.member.member_3));
+                                                if _e3309 {
+                                                    let _e3310 = (_e2922 < _e225.member.member_3);
+                                                    let _e3319 = select((_e3295 - _e2384), ((_e2942 * _e2922) - _e466), _e3310);
+                                                    let _e3320 = select((_e3296 - _e2385), ((_e2944 * _e2922) - _e473), _e3310);
+                                                    let _e3321 = select((_e3297 - _e2386), (_e2922 - _e459), _e3310);
+                                                    let _e3333 = ((((_e3295 * _e484) + (_e3296 * _e485)) + (_e3297 * _e486)) * inverseSqrt((((_e3295 * _e3295) + (_e3296 * _e3296)) + (_e3297 * _e3297))));
+                                                    let _e3337 = select(-1f, select(1f, _e3333, (_e3333 < 1f)), (_e3333 > -1f));
+                                                    let _e3338 = abs(_e3337);
+                                                    let _e3348 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3338, 0.00667009f), _e3338, -0.017088126f), _e3338, 0.03089188f), _e3338, -0.050174303f), _e3338, 0.08897899f), _e3338, -0.2145988f), _e3338, 1.5707963f) * sqrt((1f - _e3338)));
+                                                    let _e3355 = ((((select((3.1415927f - _e3348), _e3348, (_e3337 >= 0f)) + _e2469) - _e2465) + 1.5707964f) * 0.31830987f);
+                                                    let _e3371 = ((((_e3319 * _e484) + (_e3320 * _e485)) + (_e3321 * _e486)) * inverseSqrt((((_e3319 * _e3319) + (_e3320 * _e3320)) + (_e3321 * _e3321))));
+                                                    let _e3375 = select(-1f, select(1f, _e3371, (_e3371 < 1f)), (_e3371 > -1f));
+                                                    let _e3376 = abs(_e3375);
+                                                    let _e3386 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3376, 0.00667009f), _e3376, -0.017088126f), _e3376, 0.03089188f), _e3376, -0.050174303f), _e3376, 0.08897899f), _e3376, -0.2145988f), _e3376, 1.5707963f) * sqrt((1f - _e3376)));
+                                                    let _e3393 = ((((select((3.1415927f - _e3386), _e3386, (_e3375 >= 0f)) + _e2469) - _e2465) + 1.5707964f) * 0.31830987f);
+                                                    let _e3398 = (1f - select(0f, select(1f, _e3355, (_e3355 < 1f)), (_e3355 > 0f)));
+                                                    let _e3399 = (1f - select(0f, select(1f, _e3393, (_e3393 < 1f)), (_e3393 > 0f)));
+                                                    let _e3401 = (_e3399 != _e3399);
+                                                    let _e3403 = select(_e3399, _e3398, ((_e3398 < _e3399) || _e3401));
+                                                    let _e3406 = select(_e3399, _e3398, ((_e3398 > _e3399) || _e3401));
+                                                    let _e3408 = floor((_e3403 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e3397 = -(floor((_e3387 * -32f)));
-                                                        let _e3402 = (select(32f, _e3397, ((_e3397 < 32f) || false)) - _e3389);
-                                                        phi_6180_ = select(select(0f, _e3402, ((_e3402 > 0f) || false)), 0f, (_e3387 <= _e3384));
+                                                        let _e3416 = -(floor((_e3406 * -32f)));
+                                                        let _e3421 = (select(32f, _e3416, ((_e3416 < 32f) || false)) - _e3408);
+                                                        phi_6199_ = select(select(0f, _e3421, ((_e3421 > 0f) || false)), 0f, (_e3406 <= _e3403));
                                                     } else {
-                                                        phi_6180_ = -(floor(((_e3387 - _e3384) * -32f)));
+                                                        phi_6199_ = -(floor(((_e3406 - _e3403) * -32f)));
                                                     }
-                                                    let _e3408 = phi_6180_;
-                                                    let _e3416 = (bitcast<u32>((floor(select(0f, select(32f, _e3389, (_e3389 < 32f)), (_e3389 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e3424 = (bitcast<u32>((floor(select(0f, select(32f, _e3408, (_e3408 < 32f)), (_e3408 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e3416 >= 32u) {
-                                                        phi_6234_ = u32();
-                                                        phi_6235_ = true;
+                                                    let _e3427 = phi_6199_;
+                                                    let _e3435 = (bitcast<u32>((floor(select(0f, select(32f, _e3408, (_e3408 < 32f)), (_e3408 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e3443 = (bitcast<u32>((floor(select(0f, select(32f, _e3427, (_e3427 < 32f)), (_e3427 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e3435 >= 32u) {
+                                                        phi_6253_ = u32();
+                                                        phi_6254_ = true;
                                                     } else {
-                                                        let _e3426 = (_e3424 == 0u);
-                                                        if _e3426 {
-                                                            phi_6233_ = u32();
+                                                        let _e3445 = (_e3443 == 0u);
+                                                        if _e3445 {
+                                                            phi_6252_ = u32();
                                                         } else {
-                                                            if (_e3424 >= 32u) {
-                                                                phi_6230_ = 4294967295u;
+                                                            if (_e3443 >= 32u) {
+                                                                phi_6249_ = 4294967295u;
                                                             } else {
-                                                                phi_6230_ = ((1u << bitcast<u32>((_e3424 & 31u))) - 1u);
+                                                                phi_6249_ = ((1u << bitcast<u32>((_e3443 & 31u))) - 1u);
                                                             }
-                                                            let _e3433 = phi_6230_;
-                                                            phi_6233_ = (_e3433 << bitcast<u32>((_e3416 & 31u)));
+                                                            let _e3452 = phi_6249_;
+                                                            phi_6252_ = (_e3452 << bitcast<u32>((_e3435 & 31u)));
                                                         }
-                                                        let _e3438 = phi_6233_;
-                                                        phi_6234_ = _e3438;
-                                                        phi_6235_ = _e3426;
+                                                        let _e3457 = phi_6252_;
+                                                        phi_6253_ = _e3457;
+                                                        phi_6254_ = _e3445;
                                                     }
-                                                    let _e3440 = phi_6234_;
-                                                    let _e3442 = phi_6235_;
-                                                    phi_6248_ = select(0u, select(select(_e3440, 0u, _e3442), 0u, _e2465), _e3290);
+                                                    let _e3459 = phi_6253_;
+                                                    let _e3461 = phi_6254_;
+                                                    phi_6267_ = select(0u, select(select(_e3459, 0u, _e3461), 0u, _e2475), _e3309);
                                                 } else {
-                                                    phi_6248_ = 0u;
+                                                    phi_6267_ = 0u;
                                                 }
-                                                let _e3447 = phi_6248_;
-                                                let _e3451 = ((_e2926 * _e2871) - _e466);
-                                                let _e3452 = ((_e2928 * _e2871) - _e473);
-                                                let _e3453 = (_e2871 - _e459);
-                                                if _e972 {
-                                                    phi_6280_ = ((((_e3451 * _e3451) + (_e3452 * _e3452)) + (_e3453 * _e3453)) <= (_e241 * _e241));
+                                                let _e3466 = phi_6267_;
+                                                let _e3470 = ((_e2942 * _e2887) - _e466);
+                                                let _e3471 = ((_e2944 * _e2887) - _e473);
+                                                let _e3472 = (_e2887 - _e459);
+                                                if _e967 {
+                                                    phi_6300_ = ((((_e3470 * _e3470) + (_e3471 * _e3471)) + (_e3472 * _e3472)) > (_e241 * _e241));
                                                 } else {
-                                                    phi_6280_ = true;
+                                                    phi_6300_ = false;
                                                 }
-                                                let _e3462 = phi_6280_;
-                                                let _e3464 = select(false, _e3462, (_e2871 < _e225.member.member_3));
-                                                if _e3464 {
-                                                    let _e3465 = (_e2659 < _e225.member.member_3);
-                                                    let _e3474 = select((_e3451 - _e2374), ((_e2926 * _e2659) - _e466), _e3465);
-                                                    let _e3475 = select((_e3452 - _e2375), ((_e2928 * _e2659) - _e473), _e3465);
-                                                    let _e3476 = select((_e3453 - _e2376), (_e2659 - _e459), _e3465);
-                                                    let _e3488 = ((((_e3451 * _e484) + (_e3452 * _e485)) + (_e3453 * _e486)) * inverseSqrt((((_e3451 * _e3451) + (_e3452 * _e3452)) + (_e3453 * _e3453))));
-                                                    let _e3492 = select(-1f, select(1f, _e3488, (_e3488 < 1f)), (_e3488 > -1f));
-                                                    let _e3493 = abs(_e3492);
-                                                    let _e3503 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3493, 0.00667009f), _e3493, -0.017088126f), _e3493, 0.03089188f), _e3493, -0.050174303f), _e3493, 0.08897899f), _e3493, -0.2145988f), _e3493, 1.5707963f) * sqrt((1f - _e3493)));
-                                                    let _e3510 = ((((select((3.1415927f - _e3503), _e3503, (_e3492 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
-                                                    let _e3526 = ((((_e3474 * _e484) + (_e3475 * _e485)) + (_e3476 * _e486)) * inverseSqrt((((_e3474 * _e3474) + (_e3475 * _e3475)) + (_e3476 * _e3476))));
-                                                    let _e3530 = select(-1f, select(1f, _e3526, (_e3526 < 1f)), (_e3526 > -1f));
-                                                    let _e3531 = abs(_e3530);
-                                                    let _e3541 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3531, 0.00667009f), _e3531, -0.017088126f), _e3531, 0.03089188f), _e3531, -0.050174303f), _e3531, 0.08897899f), _e3531, -0.2145988f), _e3531, 1.5707963f) * sqrt((1f - _e3531)));
-                                                    let _e3548 = ((((select((3.1415927f - _e3541), _e3541, (_e3530 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
-                                                    let _e3553 = (1f - select(0f, select(1f, _e3510, (_e3510 < 1f)), (_e3510 > 0f)));
-                                                    let _e3554 = (1f - select(0f, select(1f, _e3548, (_e3548 < 1f)), (_e3548 > 0f)));
-                                                    let _e3556 = (_e3554 != _e3554);
-                                                    let _e3558 = select(_e3554, _e3553, ((_e3553 < _e3554) || _e3556));
-                                                    let _e3561 = select(_e3554, _e3553, ((_e3553 > _e3554) || _e3556));
-                                                    let _e3563 = floor((_e3558 * 32f));
+                                                let _e3482 = phi_6300_;
+                                                let _e3484 = select(false, !(_e3482), (_e2887 < _e225.member.member_3));
+                                                if _e3484 {
+                                                    let _e3485 = (_e2675 < _e225.member.member_3);
+                                                    let _e3494 = select((_e3470 - _e2384), ((_e2942 * _e2675) - _e466), _e3485);
+                                                    let _e3495 = select((_e3471 - _e2385), ((_e2944 * _e2675) - _e473), _e3485);
+                                                    let _e3496 = select((_e3472 - _e2386), (_e2675 - _e459), _e3485);
+                                                    let _e3508 = ((((_e3470 * _e484) + (_e3471 * _e485)) + (_e3472 * _e486)) * inverseSqrt((((_e3470 * _e3470) + (_e3471 * _e3471)) + (_e3472 * _e3472))));
+                                                    let _e3512 = select(-1f, select(1f, _e3508, (_e3508 < 1f)), (_e3508 > -1f));
+                                                    let _e3513 = abs(_e3512);
+                                                    let _e3523 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3513, 0.00667009f), _e3513, -0.017088126f), _e3513, 0.03089188f), _e3513, -0.050174303f), _e3513, 0.08897899f), _e3513, -0.2145988f), _e3513, 1.5707963f) * sqrt((1f - _e3513)));
+                                                    let _e3530 = ((((select((3.1415927f - _e3523), _e3523, (_e3512 >= 0f)) + _e2469) - _e2465) + 1.5707964f) * 0.31830987f);
+                                                    let _e3546 = ((((_e3494 * _e484) + (_e3495 * _e485)) + (_e3496 * _e486)) * inverseSqrt((((_e3494 * _e3494) + (_e3495 * _e3495)) + (_e3496 * _e3496))));
+                                                    let _e3550 = select(-1f, select(1f, _e3546, (_e3546 < 1f)), (_e3546 > -1f));
+                                                    let _e3551 = abs(_e3550);
+                                                    let _e3561 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3551, 0.00667009f), _e3551, -0.017088126f), _e3551, 0.03089188f), _e3551, -0.050174303f), _e3551, 0.08897899f), _e3551, -0.2145988f), _e3551, 1.5707963f) * sqrt((1f - _e3551)));
+                                                    let _e3568 = ((((select((3.1415927f - _e3561), _e3561, (_e3550 >= 0f)) + _e2469) - _e2465) + 1.5707964f) * 0.31830987f);
+                                                    let _e3573 = (1f - select(0f, select(1f, _e3530, (_e3530 < 1f)), (_e3530 > 0f)));
+                                                    let _e3574 = (1f - select(0f, select(1f, _e3568, (_e3568 < 1f)), (_e3568 > 0f)));
+                                                    let _e3576 = (_e3574 != _e3574);
+                                                    let _e3578 = select(_e3574, _e3573, ((_e3573 < _e3574) || _e3576));
+                                                    let _e3581 = select(_e3574, _e3573, ((_e3573 > _e3574) || _e3576));
+                                                    let _e3583 = floor((_e3578 * 32f));
                                                     if (_e235 == 1u) {
-                                                        let _e3571 = -(floor((_e3561 * -32f)));
-                                                        let _e3576 = (select(32f, _e3571, ((_e3571 < 32f) || false)) - _e3563);
-                                                        phi_6507_ = select(select(0f, _e3576, ((_e3576 > 0f) || false)), 0f, (_e3561 <= _e3558));
+                                                        let _e3591 = -(floor((_e3581 * -32f)));
+                                                        let _e3596 = (select(32f, _e3591, ((_e3591 < 32f) || false)) - _e3583);
+                                                        phi_6527_ = select(select(0f, _e3596, ((_e3596 > 0f) || false)), 0f, (_e3581 <= _e3578));
                                                     } else {
-                                                        phi_6507_ = -(floor(((_e3561 - _e3558) * -32f)));
+                                                        phi_6527_ = -(floor(((_e3581 - _e3578) * -32f)));
                                                     }
-                                                    let _e3582 = phi_6507_;
-                                                    let _e3590 = (bitcast<u32>((floor(select(0f, select(32f, _e3563, (_e3563 < 32f)), (_e3563 > 0f))) + 8388608f)) - 1258291200u);
-                                                    let _e3598 = (bitcast<u32>((floor(select(0f, select(32f, _e3582, (_e3582 < 32f)), (_e3582 > 0f))) + 8388608f)) - 1258291200u);
-                                                    if (_e3590 >= 32u) {
-                                                        phi_6561_ = u32();
-                                                        phi_6562_ = true;
+                                                    let _e3602 = phi_6527_;
+                                                    let _e3610 = (bitcast<u32>((floor(select(0f, select(32f, _e3583, (_e3583 < 32f)), (_e3583 > 0f))) + 8388608f)) - 1258291200u);
+                                                    let _e3618 = (bitcast<u32>((floor(select(0f, select(32f, _e3602, (_e3602 < 32f)), (_e3602 > 0f))) + 8388608f)) - 1258291200u);
+                                                    if (_e3610 >= 32u) {
+                                                        phi_6581_ = u32();
+                                                        phi_6582_ = true;
                                                     } else {
-                                                        let _e3600 = (_e3598 == 0u);
-                                                        if _e3600 {
-                                                            phi_6560_ = u32();
+                                                        let _e3620 = (_e3618 == 0u);
+                                                        if _e3620 {
+                                                            phi_6580_ = u32();
                                                         } else {
-                                                            if (_e3598 >= 32u) {
-                                                                phi_6557_ = 4294967295u;
+                                                            if (_e3618 >= 32u) {
+                                                                phi_6577_ = 4294967295u;
                                                             } else {
-                                                                phi_6557_ = ((1u << bitcast<u32>((_e3598 & 31u))) - 1u);
+                                                                phi_6577_ = ((1u << bitcast<u32>((_e3618 & 31u))) - 1u);
                                                             }
-                                                            let _e3607 = phi_6557_;
-                                                            phi_6560_ = (_e3607 << bitcast<u32>((_e3590 & 31u)));
+                                                            let _e3627 = phi_6577_;
+                                                            phi_6580_ = (_e3627 << bitcast<u32>((_e3610 & 31u)));
                                                         }
-                                                        let _e3612 = phi_6560_;
-                                                        phi_6561_ = _e3612;
-                                                        phi_6562_ = _e3600;
+                                                        let _e3632 = phi_6580_;
+                                                        phi_6581_ = _e3632;
+                                                        phi_6582_ = _e3620;
                                                     }
-                                                    let _e3614 = phi_6561_;
-                                                    let _e3616 = phi_6562_;
-                                                    phi_6575_ = select(0u, select(select(_e3614, 0u, _e3616), 0u, _e2465), _e3464);
+                                                    let _e3634 = phi_6581_;
+                                                    let _e3636 = phi_6582_;
+                                                    phi_6595_ = select(0u, select(select(_e3634, 0u, _e3636), 0u, _e2475), _e3484);
                                                 } else {
-                                                    phi_6575_ = 0u;
+                                                    phi_6595_ = 0u;
                                                 }
-                                                let _e3621 = phi_6575_;
-                                                phi_6577_ = (((_e3100 | _e3273) | _e3447) | _e3621);
-                                                phi_6578_ = vec3<f32>(select(_e2377, (((_e2912 * _e2485) * _e2847) - _e466), _e2910), select(_e2378, (((_e2916 * _e2493) * _e2847) - _e473), _e2910), select(_e2379, (_e2847 - _e459), _e2910));
+                                                let _e3641 = phi_6595_;
+                                                phi_6597_ = (((_e3117 | _e3291) | _e3466) | _e3641);
+                                                phi_6598_ = vec3<f32>(select(_e2387, (((_e2928 * _e2501) * _e2863) - _e466), _e2926), select(_e2388, (((_e2932 * _e2509) * _e2863) - _e473), _e2926), select(_e2389, (_e2863 - _e459), _e2926));
                                             } else {
-                                                phi_6577_ = 0u;
-                                                phi_6578_ = vec3<f32>(_e2377, _e2378, _e2379);
+                                                phi_6597_ = 0u;
+                                                phi_6598_ = vec3<f32>(_e2387, _e2388, _e2389);
                                             }
-                                            let _e3624 = phi_6577_;
-                                            let _e3626 = phi_6578_;
-                                            let _e3628 = (_e2385 * inverseSqrt(_e2368));
-                                            let _e3632 = select(-1f, select(1f, _e3628, (_e3628 < 1f)), (_e3628 > -1f));
-                                            let _e3633 = abs(_e3632);
-                                            let _e3643 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3633, 0.00667009f), _e3633, -0.017088126f), _e3633, 0.03089188f), _e3633, -0.050174303f), _e3633, 0.08897899f), _e3633, -0.2145988f), _e3633, 1.5707963f) * sqrt((1f - _e3633)));
-                                            let _e3650 = ((((select((3.1415927f - _e3643), _e3643, (_e3632 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
-                                            let _e3669 = ((((_e3626.x * _e484) + (_e3626.y * _e485)) + (_e3626.z * _e486)) * inverseSqrt((((_e3626.x * _e3626.x) + (_e3626.y * _e3626.y)) + (_e3626.z * _e3626.z))));
-                                            let _e3673 = select(-1f, select(1f, _e3669, (_e3669 < 1f)), (_e3669 > -1f));
-                                            let _e3674 = abs(_e3673);
-                                            let _e3684 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3674, 0.00667009f), _e3674, -0.017088126f), _e3674, 0.03089188f), _e3674, -0.050174303f), _e3674, 0.08897899f), _e3674, -0.2145988f), _e3674, 1.5707963f) * sqrt((1f - _e3674)));
-                                            let _e3691 = ((((select((3.1415927f - _e3684), _e3684, (_e3673 >= 0f)) + _e2459) - _e2455) + 1.5707964f) * 0.31830987f);
-                                            let _e3696 = (1f - select(0f, select(1f, _e3650, (_e3650 < 1f)), (_e3650 > 0f)));
-                                            let _e3697 = (1f - select(0f, select(1f, _e3691, (_e3691 < 1f)), (_e3691 > 0f)));
-                                            let _e3699 = (_e3697 != _e3697);
-                                            let _e3701 = select(_e3697, _e3696, ((_e3696 < _e3697) || _e3699));
-                                            let _e3704 = select(_e3697, _e3696, ((_e3696 > _e3697) || _e3699));
-                                            let _e3706 = floor((_e3701 * 32f));
+                                            let _e3644 = phi_6597_;
+                                            let _e3646 = phi_6598_;
+                                            let _e3648 = (_e2395 * inverseSqrt(_e2485));
+                                            let _e3652 = select(-1f, select(1f, _e3648, (_e3648 < 1f)), (_e3648 > -1f));
+                                            let _e3653 = abs(_e3652);
+                                            let _e3663 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3653, 0.00667009f), _e3653, -0.017088126f), _e3653, 0.03089188f), _e3653, -0.050174303f), _e3653, 0.08897899f), _e3653, -0.2145988f), _e3653, 1.5707963f) * sqrt((1f - _e3653)));
+                                            let _e3670 = ((((select((3.1415927f - _e3663), _e3663, (_e3652 >= 0f)) + _e2469) - _e2465) + 1.5707964f) * 0.31830987f);
+                                            let _e3689 = ((((_e3646.x * _e484) + (_e3646.y * _e485)) + (_e3646.z * _e486)) * inverseSqrt((((_e3646.x * _e3646.x) + (_e3646.y * _e3646.y)) + (_e3646.z * _e3646.z))));
+                                            let _e3693 = select(-1f, select(1f, _e3689, (_e3689 < 1f)), (_e3689 > -1f));
+                                            let _e3694 = abs(_e3693);
+                                            let _e3704 = (fma(fma(fma(fma(fma(fma(fma(-0.0012624911f, _e3694, 0.00667009f), _e3694, -0.017088126f), _e3694, 0.03089188f), _e3694, -0.050174303f), _e3694, 0.08897899f), _e3694, -0.2145988f), _e3694, 1.5707963f) * sqrt((1f - _e3694)));
+                                            let _e3711 = ((((select((3.1415927f - _e3704), _e3704, (_e3693 >= 0f)) + _e2469) - _e2465) + 1.5707964f) * 0.31830987f);
+                                            let _e3716 = (1f - select(0f, select(1f, _e3670, (_e3670 < 1f)), (_e3670 > 0f)));
+                                            let _e3717 = (1f - select(0f, select(1f, _e3711, (_e3711 < 1f)), (_e3711 > 0f)));
+                                            let _e3719 = (_e3717 != _e3717);
+                                            let _e3721 = select(_e3717, _e3716, ((_e3716 < _e3717) || _e3719));
+                                            let _e3724 = select(_e3717, _e3716, ((_e3716 > _e3717) || _e3719));
+                                            let _e3726 = floor((_e3721 * 32f));
                                             if (_e235 == 1u) {
-                                                let _e3714 = -(floor((_e3704 * -32f)));
-                                                let _e3719 = (select(32f, _e3714, ((_e3714 < 32f) || false)) - _e3706);
-                                                phi_6765_ = select(select(0f, _e3719, ((_e3719 > 0f) || false)), 0f, (_e3704 <= _e3701));
+                                                let _e3734 = -(floor((_e3724 * -32f)));
+                                                let _e3739 = (select(32f, _e3734, ((_e3734 < 32f) || false)) - _e3726);
+                                                phi_6785_ = select(select(0f, _e3739, ((_e3739 > 0f) || false)), 0f, (_e3724 <= _e3721));
                                             } else {
-                                                phi_6765_ = -(floor(((_e3704 - _e3701) * -32f)));
+                                                phi_6785_ = -(floor(((_e3724 - _e3721) * -32f)));
                                             }
-                                            let _e3725 = phi_6765_;
-                                            let _e3733 = (bitcast<u32>((floor(select(0f, select(32f, _e3706, (_e3706 < 32f)), (_e3706 > 0f))) + 8388608f)) - 1258291200u);
-                                            let _e3741 = (bitcast<u32>((floor(select(0f, select(32f, _e3725, (_e3725 < 32f)), (_e3725 > 0f))) + 8388608f)) - 1258291200u);
-                                            if (_e3733 >= 32u) {
-                                                phi_6819_ = u32();
-                                                phi_6820_ = true;
+                                            let _e3745 = phi_6785_;
+                                            let _e3753 = (bitcast<u32>((floor(select(0f, select(32f, _e3726, (_e3726 < 32f)), (_e3726 > 0f))) + 8388608f)) - 1258291200u);
+                                            let _e3761 = (bitcast<u32>((floor(select(0f, select(32f, _e3745, (_e3745 < 32f)), (_e3745 > 0f))) + 8388608f)) - 1258291200u);
+                                            if (_e3753 >= 32u) {
+                                                phi_6839_ = u32();
+                                                phi_6840_ = true;
                                             } else {
-                                                let _e3743 = (_e3741 == 0u);
-                                                if _e3743 {
-                                                    phi_6818_ = u32();
+                                                let _e3763 = (_e3761 == 0u);
+                                                if _e3763 {
+                                                    phi_6838_ = u32();
                                                 } else {
-                                                    if (_e3741 >= 32u) {
-                                                        phi_6815_ = 4294967295u;
+                                                    if (_e3761 >= 32u) {
+                                                        phi_6835_ = 4294967295u;
                                                     } else {
-                                                        phi_6815_ = ((1u << bitcast<u32>((_e3741 & 31u))) - 1u);
+                                                        phi_6835_ = ((1u << bitcast<u32>((_e3761 & 31u))) - 1u);
                                                     }
-                                                    let _e3750 = phi_6815_;
-                                                    phi_6818_ = (_e3750 << bitcast<u32>((_e3733 & 31u)));
+                                                    let _e3770 = phi_6835_;
+                                                    phi_6838_ = (_e3770 << bitcast<u32>((_e3753 & 31u)));
                                                 }
-                                                let _e3755 = phi_6818_;
-                                                phi_6819_ = _e3755;
-                                                phi_6820_ = _e3743;
+                                                let _e3775 = phi_6838_;
+                                                phi_6839_ = _e3775;
+                                                phi_6840_ = _e3763;
                                             }
-                                            let _e3757 = phi_6819_;
-                                            let _e3759 = phi_6820_;
-                                            phi_6834_ = select((select(select(_e3757, 0u, _e3759), 0u, _e2465) | _e3624), 0u, _e2372);
+                                            let _e3777 = phi_6839_;
+                                            let _e3779 = phi_6840_;
+                                            phi_6854_ = select((select(select(_e3777, 0u, _e3779), 0u, _e2475) | _e3644), 0u, _e2382);
                                         } else {
-                                            phi_6834_ = 0u;
+                                            phi_6854_ = 0u;
                                         }
-                                        let _e3765 = phi_6834_;
+                                        let _e3785 = phi_6854_;
                                         phi_1200_ = (_e787 + 1u);
-                                        phi_1203_ = ((_e789 | _e2359) | _e3765);
+                                        phi_1203_ = ((_e789 | _e2369) | _e3785);
                                     } else {
                                         phi_1200_ = u32();
                                         phi_1203_ = u32();
                                     }
-                                    let _e3769 = phi_1200_;
-                                    let _e3771 = phi_1203_;
+                                    let _e3789 = phi_1200_;
+                                    let _e3791 = phi_1203_;
                                     continue;
                                     continuing {
-                                        phi_1199_ = _e3769;
-                                        phi_1202_ = _e3771;
-                                        phi_7189_ = _e684;
+                                        phi_1199_ = _e3789;
+                                        phi_1202_ = _e3791;
+                                        phi_7209_ = _e684;
                                         break if !(_e790);
                                     }
                                 }
-                                let _e3774 = phi_7189_;
-                                phi_7815_ = _e3774;
-                                if _e3774 {
+                                let _e3794 = phi_7209_;
+                                phi_7835_ = _e3794;
+                                if _e3794 {
                                     break;
                                 }
                                 if (_e230 == 2u) {
-                                    let _e3833 = (_e782 - 1.5707964f);
-                                    let _e3834 = (_e3833 * 2f);
-                                    let _e3835 = sin(_e782);
-                                    let _e3840 = ((_e767 + (_e3834 * _e3835)) - cos((_e3834 - _e782)));
-                                    phi_6863_ = 0u;
-                                    phi_6866_ = select((_e3840 * 0.25f), (_e3840 * -0.25f), (_e3833 < 0f));
-                                    phi_6868_ = 0f;
+                                    let _e3853 = (_e782 - 1.5707964f);
+                                    let _e3854 = (_e3853 * 2f);
+                                    let _e3855 = sin(_e782);
+                                    let _e3860 = ((_e767 + (_e3854 * _e3855)) - cos((_e3854 - _e782)));
+                                    phi_6883_ = 0u;
+                                    phi_6886_ = select((_e3860 * 0.25f), (_e3860 * -0.25f), (_e3853 < 0f));
+                                    phi_6888_ = 0f;
                                     loop {
-                                        let _e3846 = phi_6863_;
-                                        let _e3848 = phi_6866_;
-                                        let _e3850 = phi_6868_;
-                                        local_13 = _e3850;
-                                        let _e3851 = (_e3846 < 32u);
-                                        if _e3851 {
-                                            let _e3852 = (_e3846 + 1u);
-                                            let _e3856 = (_e3833 + (f32(bitcast<i32>(_e3852)) * 0.09817477f));
-                                            let _e3857 = (_e3856 * 2f);
-                                            let _e3862 = ((_e767 + (_e3857 * _e3835)) - cos((_e3857 - _e782)));
-                                            let _e3866 = select((_e3862 * 0.25f), (_e3862 * -0.25f), (_e3856 < 0f));
-                                            let _e3869 = local_12;
-                                            phi_6864_ = _e3852;
-                                            phi_6867_ = _e3866;
-                                            phi_6869_ = select(_e3850, (_e3850 + (_e3866 - _e3848)), (((_e3869 >> bitcast<u32>((_e3846 & 31u))) & 1u) == 0u));
+                                        let _e3866 = phi_6883_;
+                                        let _e3868 = phi_6886_;
+                                        let _e3870 = phi_6888_;
+                                        local_13 = _e3870;
+                                        let _e3871 = (_e3866 < 32u);
+                                        if _e3871 {
+                                            let _e3872 = (_e3866 + 1u);
+                                            let _e3876 = (_e3853 + (f32(bitcast<i32>(_e3872)) * 0.09817477f));
+                                            let _e3877 = (_e3876 * 2f);
+                                            let _e3882 = ((_e767 + (_e3877 * _e3855)) - cos((_e3877 - _e782)));
+                                            let _e3886 = select((_e3882 * 0.25f), (_e3882 * -0.25f), (_e3876 < 0f));
+                                            let _e3889 = local_12;
+                                            phi_6884_ = _e3872;
+                                            phi_6887_ = _e3886;
+                                            phi_6889_ = select(_e3870, (_e3870 + (_e3886 - _e3868)), (((_e3889 >> bitcast<u32>((_e3866 & 31u))) & 1u) == 0u));
                                         } else {
-                                            phi_6864_ = u32();
-                                            phi_6867_ = f32();
-                                            phi_6869_ = f32();
+                                            phi_6884_ = u32();
+                                            phi_6887_ = f32();
+                                            phi_6889_ = f32();
                                         }
-                                        let _e3878 = phi_6864_;
-                                        let _e3880 = phi_6867_;
-                                        let _e3882 = phi_6869_;
+                                        let _e3898 = phi_6884_;
+                                        let _e3900 = phi_6887_;
+                                        let _e3902 = phi_6889_;
                                         continue;
                                         continuing {
-                                            phi_6863_ = _e3878;
-                                            phi_6866_ = _e3880;
-                                            phi_6868_ = _e3882;
-                                            break if !(_e3851);
+                                            phi_6883_ = _e3898;
+                                            phi_6886_ = _e3900;
+                                            phi_6888_ = _e3902;
+                                            break if !(_e3871);
                                         }
                                     }
-                                    let _e3885 = local_13;
-                                    phi_7817_ = _e3774;
-                                    phi_6970_ = (_e688 + 1f);
-                                    phi_6971_ = (_e690 + ((_e748 + ((1f - _e748) * 0.05f)) * _e3885));
+                                    let _e3905 = local_13;
+                                    phi_7837_ = _e3794;
+                                    phi_6990_ = (_e688 + 1f);
+                                    phi_6991_ = (_e690 + ((_e748 + ((1f - _e748) * 0.05f)) * _e3905));
                                 } else {
                                     if (_e230 == 1u) {
-                                        phi_6915_ = 0u;
-                                        phi_6918_ = 0f;
+                                        phi_6935_ = 0u;
+                                        phi_6938_ = 0f;
                                         loop {
-                                            let _e3788 = phi_6915_;
-                                            let _e3790 = phi_6918_;
-                                            local_11 = _e3790;
-                                            let _e3791 = (_e3788 < 4u);
-                                            if _e3791 {
+                                            let _e3808 = phi_6935_;
+                                            let _e3810 = phi_6938_;
+                                            local_11 = _e3810;
+                                            let _e3811 = (_e3808 < 4u);
+                                            if _e3811 {
                                                 local = array<type_40, 4>(type_40(4026531855u, 0.0095061f), type_40(251658480u, 0.0270951f), type_40(15732480u, 0.0405571f), type_40(1044480u, 0.0478421f));
-                                                if _e3791 {
+                                                if _e3811 {
                                                 } else {
-                                                    phi_7812_ = true;
+                                                    phi_7832_ = true;
                                                     break;
                                                 }
-                                                let _e3794 = local[_e3788].member;
-                                                let _e3797 = local[_e3788].member_1;
-                                                let _e3799 = local_10;
-                                                phi_6916_ = (_e3788 + 1u);
-                                                phi_6919_ = (_e3790 + (f32(bitcast<i32>(countOneBits((_e3799 & _e3794)))) * _e3797));
+                                                let _e3814 = local[_e3808].member;
+                                                let _e3817 = local[_e3808].member_1;
+                                                let _e3819 = local_10;
+                                                phi_6936_ = (_e3808 + 1u);
+                                                phi_6939_ = (_e3810 + (f32(bitcast<i32>(countOneBits((_e3819 & _e3814)))) * _e3817));
                                             } else {
-                                                phi_6916_ = u32();
-                                                phi_6919_ = f32();
+                                                phi_6936_ = u32();
+                                                phi_6939_ = f32();
                                             }
-                                            let _e3808 = phi_6916_;
-                                            let _e3810 = phi_6919_;
+                                            let _e3828 = phi_6936_;
+                                            let _e3830 = phi_6939_;
                                             continue;
                                             continuing {
-                                                phi_6915_ = _e3808;
-                                                phi_6918_ = _e3810;
-                                                phi_7812_ = _e3774;
-                                                break if !(_e3791);
+                                                phi_6935_ = _e3828;
+                                                phi_6938_ = _e3830;
+                                                phi_7832_ = _e3794;
+                                                break if !(_e3811);
                                             }
                                         }
-                                        let _e3813 = phi_7812_;
-                                        phi_7815_ = _e3813;
-                                        if _e3813 {
+                                        let _e3833 = phi_7832_;
+                                        phi_7835_ = _e3833;
+                                        if _e3833 {
                                             break;
                                         }
-                                        let _e3815 = local_11;
-                                        let _e3816 = (1f - _e3815);
-                                        phi_7823_ = _e3813;
-                                        phi_6968_ = (_e688 + _e748);
-                                        phi_6969_ = (_e690 + (_e748 * select(0f, select(1f, _e3816, (_e3816 < 1f)), (_e3816 > 0f))));
+                                        let _e3835 = local_11;
+                                        let _e3836 = (1f - _e3835);
+                                        phi_7843_ = _e3833;
+                                        phi_6988_ = (_e688 + _e748);
+                                        phi_6989_ = (_e690 + (_e748 * select(0f, select(1f, _e3836, (_e3836 < 1f)), (_e3836 > 0f))));
                                     } else {
-                                        let _e3778 = local_9;
-                                        phi_7823_ = _e3774;
-                                        phi_6968_ = (_e688 + 1f);
-                                        phi_6969_ = (_e690 + ((f32(bitcast<i32>(countOneBits((_e3778 & 4294967295u)))) * -0.03125f) + 1f));
+                                        let _e3798 = local_9;
+                                        phi_7843_ = _e3794;
+                                        phi_6988_ = (_e688 + 1f);
+                                        phi_6989_ = (_e690 + ((f32(bitcast<i32>(countOneBits((_e3798 & 4294967295u)))) * -0.03125f) + 1f));
                                     }
-                                    let _e3825 = phi_7823_;
-                                    let _e3827 = phi_6968_;
-                                    let _e3829 = phi_6969_;
-                                    phi_7817_ = _e3825;
-                                    phi_6970_ = _e3827;
-                                    phi_6971_ = _e3829;
+                                    let _e3845 = phi_7843_;
+                                    let _e3847 = phi_6988_;
+                                    let _e3849 = phi_6989_;
+                                    phi_7837_ = _e3845;
+                                    phi_6990_ = _e3847;
+                                    phi_6991_ = _e3849;
                                 }
-                                let _e3890 = phi_7817_;
-                                let _e3892 = phi_6970_;
-                                let _e3894 = phi_6971_;
-                                phi_7816_ = _e3890;
+                                let _e3910 = phi_7837_;
+                                let _e3912 = phi_6990_;
+                                let _e3914 = phi_6991_;
+                                phi_7836_ = _e3910;
                                 phi_1009_ = (_e686 + 1u);
-                                phi_1012_ = _e3892;
-                                phi_1014_ = _e3894;
+                                phi_1012_ = _e3912;
+                                phi_1014_ = _e3914;
                             } else {
-                                phi_7816_ = _e684;
+                                phi_7836_ = _e684;
                                 phi_1009_ = u32();
                                 phi_1012_ = f32();
                                 phi_1014_ = f32();
                             }
-                            let _e3897 = phi_7816_;
-                            let _e3899 = phi_1009_;
-                            let _e3901 = phi_1012_;
-                            let _e3903 = phi_1014_;
+                            let _e3917 = phi_7836_;
+                            let _e3919 = phi_1009_;
+                            let _e3921 = phi_1012_;
+                            let _e3923 = phi_1014_;
                             continue;
                             continuing {
-                                phi_7728_ = _e3897;
-                                phi_1008_ = _e3899;
-                                phi_1011_ = _e3901;
-                                phi_1013_ = _e3903;
-                                phi_7815_ = _e3897;
+                                phi_7748_ = _e3917;
+                                phi_1008_ = _e3919;
+                                phi_1011_ = _e3921;
+                                phi_1013_ = _e3923;
+                                phi_7835_ = _e3917;
                                 break if !(_e691);
                             }
                         }
-                        let _e3906 = phi_7815_;
-                        if _e3906 {
+                        let _e3926 = phi_7835_;
+                        if _e3926 {
                             break;
                         }
-                        let _e3908 = local_14;
-                        let _e3911 = local_15;
-                        let _e3913 = local_16;
-                        phi_6979_ = select(1f, (_e3911 / _e3913), (_e3908 > 0f));
+                        let _e3928 = local_14;
+                        let _e3931 = local_15;
+                        let _e3933 = local_16;
+                        phi_6999_ = select(1f, (_e3931 / _e3933), (_e3928 > 0f));
                     } else {
-                        phi_6979_ = 1f;
+                        phi_6999_ = 1f;
                     }
-                    let _e3917 = phi_6979_;
+                    let _e3937 = phi_6999_;
                     if (_e225.member_6 == 2f) {
-                        phi_6992_ = (_e3917 * _e3917);
+                        phi_7012_ = (_e3937 * _e3937);
                     } else {
                         if (_e225.member_6 == 1f) {
-                            phi_6991_ = _e3917;
+                            phi_7011_ = _e3937;
                         } else {
-                            phi_6991_ = pow(_e3917, _e225.member_6);
+                            phi_7011_ = pow(_e3937, _e225.member_6);
                         }
-                        let _e3923 = phi_6991_;
-                        phi_6992_ = _e3923;
+                        let _e3943 = phi_7011_;
+                        phi_7012_ = _e3943;
                     }
-                    let _e3926 = phi_6992_;
-                    let _e3931 = (select(1f, select(0.03f, _e3926, ((_e3926 > 0.03f) || false)), _e679) * 0.6666667f);
-                    terms.member[_e267] = (bitcast<u32>((floor(((select(0f, select(1f, _e3931, (_e3931 < 1f)), (_e3931 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
+                    let _e3946 = phi_7012_;
+                    let _e3951 = (select(1f, select(0.03f, _e3946, ((_e3946 > 0.03f) || false)), _e679) * 0.6666667f);
+                    terms.member[_e267] = (bitcast<u32>((floor(((select(0f, select(1f, _e3951, (_e3951 < 1f)), (_e3951 > 0f)) * 255f) + 0.5f)) + 8388608f)) - 1258291200u);
                     edges.member[_e267] = ((((64u * (bitcast<u32>((floor(select(0f, select(3f, _e396, (_e396 < 3f)), (_e396 > 0f))) + 8388608f)) - 1258291200u)) + (16u * (bitcast<u32>((floor(select(0f, select(3f, _e411, (_e411 < 3f)), (_e411 > 0f))) + 8388608f)) - 1258291200u))) + (4u * (bitcast<u32>((floor(select(0f, select(3f, _e427, (_e427 < 3f)), (_e427 > 0f))) + 8388608f)) - 1258291200u))) + (bitcast<u32>((floor(select(0f, select(3f, _e443, (_e443 < 3f)), (_e443 > 0f))) + 8388608f)) - 1258291200u));
                 }
             }

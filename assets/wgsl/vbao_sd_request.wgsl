@@ -124,33 +124,33 @@ var<storage, read_write> ray_min: type_36;
 var<storage, read_write> ray_max: type_36;
 
 fn function_() {
-    var phi_203_: type_21;
-    var phi_1961_: bool;
-    var phi_865_: u32;
-    var phi_1953_: bool;
-    var phi_1031_: u32;
+    var phi_202_: type_21;
+    var phi_1973_: bool;
+    var phi_864_: u32;
+    var phi_1965_: bool;
+    var phi_1030_: u32;
+    var phi_1094_: f32;
     var phi_1095_: f32;
-    var phi_1096_: f32;
-    var phi_1374_: bool;
-    var phi_1498_: u32;
-    var phi_1515_: u32;
-    var phi_1522_: u32;
-    var phi_1499_: u32;
-    var phi_1909_: bool;
-    var phi_1994_: bool;
-    var phi_1578_: bool;
-    var phi_1702_: u32;
-    var phi_1719_: u32;
-    var phi_1726_: u32;
-    var phi_1703_: u32;
-    var phi_1979_: bool;
-    var phi_1997_: bool;
-    var phi_1996_: bool;
-    var phi_1032_: u32;
-    var phi_1995_: bool;
-    var phi_1999_: bool;
-    var phi_866_: u32;
-    var phi_1998_: bool;
+    var phi_1390_: bool;
+    var phi_1503_: u32;
+    var phi_1520_: u32;
+    var phi_1527_: u32;
+    var phi_1504_: u32;
+    var phi_1921_: bool;
+    var phi_2006_: bool;
+    var phi_1600_: bool;
+    var phi_1713_: u32;
+    var phi_1730_: u32;
+    var phi_1737_: u32;
+    var phi_1714_: u32;
+    var phi_1991_: bool;
+    var phi_2009_: bool;
+    var phi_2008_: bool;
+    var phi_1031_: u32;
+    var phi_2007_: bool;
+    var phi_2011_: bool;
+    var phi_865_: u32;
+    var phi_2010_: bool;
 
     switch bitcast<i32>(0u) {
         default: {
@@ -159,7 +159,7 @@ fn function_() {
             let _e71 = arrayLength((&ray_max.member));
             if (override_type == 0u) {
                 let _e75 = params.member.member_4;
-                phi_203_ = _e75;
+                phi_202_ = _e75;
             } else {
                 let _e85 = params.member.member_4.member;
                 let _e89 = params.member.member_4.member_1;
@@ -167,9 +167,9 @@ fn function_() {
                 let _e97 = params.member.member_4.member_11;
                 let _e101 = params.member.member_4.member_12;
                 let _e105 = params.member.member_4.member_14;
-                phi_203_ = type_21(_e85, _e89, bitcast<f32>(override_type_5), bitcast<f32>(override_type_4), bitcast<f32>(override_type_2), bitcast<f32>(override_type_1), bitcast<f32>(override_type_3), bitcast<f32>(override_type_6), override_type_7, override_type_8, _e93, _e97, _e101, override_type_9, _e105);
+                phi_202_ = type_21(_e85, _e89, bitcast<f32>(override_type_5), bitcast<f32>(override_type_4), bitcast<f32>(override_type_2), bitcast<f32>(override_type_1), bitcast<f32>(override_type_3), bitcast<f32>(override_type_6), override_type_7, override_type_8, _e93, _e97, _e101, override_type_9, _e105);
             }
-            let _e108 = phi_203_;
+            let _e108 = phi_202_;
             let _e111 = params.member.member_1;
             let _e119 = select(select(u32(_e108.member.member.x), 0u, (_e108.member.member.x < 0f)), 4294967295u, (_e108.member.member.x > 4294967000f));
             let _e127 = select(select(u32(_e108.member.member.y), 0u, (_e108.member.member.y < 0f)), 4294967295u, (_e108.member.member.y > 4294967000f));
@@ -269,37 +269,37 @@ fn function_() {
                     if _e366 {
                         let _e367 = (_e111 > 0f);
                         let _e369 = (2f * select(_e237, _e111, _e367));
-                        phi_1961_ = false;
-                        phi_865_ = 0u;
+                        phi_1973_ = false;
+                        phi_864_ = 0u;
                         loop {
-                            let _e371 = phi_1961_;
-                            let _e373 = phi_865_;
+                            let _e371 = phi_1973_;
+                            let _e373 = phi_864_;
                             let _e376 = select(1u, _e108.member_8, (1u < _e108.member_8));
                             let _e377 = (_e373 < _e376);
                             if _e377 {
                                 let _e384 = ((((_e351 - floor(_e351)) + f32(bitcast<i32>(_e373))) * 3.1415927f) / f32(bitcast<i32>(_e376)));
-                                phi_1953_ = _e371;
-                                phi_1031_ = 0u;
+                                phi_1965_ = _e371;
+                                phi_1030_ = 0u;
                                 loop {
-                                    let _e391 = phi_1953_;
-                                    let _e393 = phi_1031_;
+                                    let _e391 = phi_1965_;
+                                    let _e393 = phi_1030_;
                                     let _e396 = select(1u, _e108.member_9, (1u < _e108.member_9));
                                     let _e397 = (_e393 < _e396);
                                     if _e397 {
                                         let _e403 = ((_e355 - floor(_e355)) + (f32(bitcast<i32>((_e373 + (_e393 * _e396)))) * 0.618034f));
                                         let _e412 = (((_e403 - floor(_e403)) + f32(bitcast<i32>(_e393))) * (1f / f32(bitcast<i32>(_e396))));
                                         if (_e108.member_4 == 2f) {
-                                            phi_1096_ = (_e412 * _e412);
+                                            phi_1095_ = (_e412 * _e412);
                                         } else {
                                             if (_e108.member_4 == 1f) {
-                                                phi_1095_ = _e412;
+                                                phi_1094_ = _e412;
                                             } else {
-                                                phi_1095_ = pow(_e412, _e108.member_4);
+                                                phi_1094_ = pow(_e412, _e108.member_4);
                                             }
-                                            let _e419 = phi_1095_;
-                                            phi_1096_ = _e419;
+                                            let _e419 = phi_1094_;
+                                            phi_1095_ = _e419;
                                         }
-                                        let _e421 = phi_1096_;
+                                        let _e421 = phi_1095_;
                                         let _e422 = (_e421 + (1.3f / _e241));
                                         let _e423 = ((cos(_e384) * _e241) * _e422);
                                         let _e424 = ((-(sin(_e384)) * _e241) * _e422);
@@ -346,240 +346,240 @@ fn function_() {
                                         let _e571 = (_e534 - _e153);
                                         let _e572 = (_e538 - _e160);
                                         let _e573 = (_e530 - _e146);
-                                        let _e578 = (((_e571 * _e571) + (_e572 * _e572)) + (_e573 * _e573));
+                                        let _e583 = (((_e571 * _e571) + (_e572 * _e572)) + (_e573 * _e573));
                                         if _e367 {
-                                            phi_1374_ = (_e578 <= (_e111 * _e111));
+                                            phi_1390_ = (_e583 > (_e111 * _e111));
                                         } else {
-                                            phi_1374_ = true;
+                                            phi_1390_ = false;
                                         }
-                                        let _e582 = phi_1374_;
-                                        let _e592 = select(false, select(false, ((((_e571 * _e232) + (_e572 * _e233)) + (_e573 * _e234)) > (sqrt(_e578) * 0.018f)), _e582), _e366);
-                                        if _e592 {
-                                            let _e593 = (0.5f / _e530);
-                                            let _e602 = frame.member[0u].member_1.member.member.member_1[0u];
-                                            let _e613 = frame.member[0u].member_1.member.member.member_1[1u];
-                                            let _e621 = frame.member[0u].member_1.member_5[0u];
-                                            let _e627 = frame.member[0u].member_1.member_5[1u];
-                                            let _e634 = frame.member[0u].member_1.member_4;
-                                            let _e635 = f32(_e634);
-                                            let _e636 = (2u * _e634);
-                                            let _e637 = (_e621 + _e636);
-                                            let _e641 = (floor(((((_e534 * _e593) / _e602) + 0.5f) * f32(_e621))) + _e635);
-                                            let _e644 = f32(bitcast<i32>((_e637 - 1u)));
-                                            let _e655 = (floor(((0.5f - ((_e538 * _e593) / _e613)) * f32(_e627))) + _e635);
-                                            let _e658 = f32(bitcast<i32>(((_e627 + _e636) - 1u)));
-                                            let _e668 = (((bitcast<u32>((floor(select(0f, select(_e658, _e655, (_e655 < _e658)), (_e655 > 0f))) + 8388608f)) - 1258291200u) * _e637) + (bitcast<u32>((floor(select(0f, select(_e644, _e641, (_e641 < _e644)), (_e641 > 0f))) + 8388608f)) - 1258291200u));
-                                            let _e674 = sqrt((((_e534 * _e534) + (_e538 * _e538)) + (_e530 * _e530)));
-                                            phi_1498_ = 0u;
+                                        let _e590 = phi_1390_;
+                                        let _e593 = select(false, select(false, ((((_e571 * _e232) + (_e572 * _e233)) + (_e573 * _e234)) > (sqrt(_e583) * 0.018f)), !(_e590)), _e366);
+                                        if _e593 {
+                                            let _e594 = (0.5f / _e530);
+                                            let _e603 = frame.member[0u].member_1.member.member.member_1[0u];
+                                            let _e614 = frame.member[0u].member_1.member.member.member_1[1u];
+                                            let _e622 = frame.member[0u].member_1.member_5[0u];
+                                            let _e628 = frame.member[0u].member_1.member_5[1u];
+                                            let _e635 = frame.member[0u].member_1.member_4;
+                                            let _e636 = f32(_e635);
+                                            let _e637 = (2u * _e635);
+                                            let _e638 = (_e622 + _e637);
+                                            let _e642 = (floor(((((_e534 * _e594) / _e603) + 0.5f) * f32(_e622))) + _e636);
+                                            let _e645 = f32(bitcast<i32>((_e638 - 1u)));
+                                            let _e656 = (floor(((0.5f - ((_e538 * _e594) / _e614)) * f32(_e628))) + _e636);
+                                            let _e659 = f32(bitcast<i32>(((_e628 + _e637) - 1u)));
+                                            let _e669 = (((bitcast<u32>((floor(select(0f, select(_e659, _e656, (_e656 < _e659)), (_e656 > 0f))) + 8388608f)) - 1258291200u) * _e638) + (bitcast<u32>((floor(select(0f, select(_e645, _e642, (_e642 < _e645)), (_e642 > 0f))) + 8388608f)) - 1258291200u));
+                                            let _e675 = sqrt((((_e534 * _e534) + (_e538 * _e538)) + (_e530 * _e530)));
+                                            phi_1503_ = 0u;
                                             loop {
-                                                let _e676 = phi_1498_;
-                                                let _e677 = (_e676 < 1u);
-                                                if _e677 {
-                                                    if _e592 {
-                                                        if (_e674 > 0f) {
-                                                            phi_1515_ = bitcast<u32>(_e674);
+                                                let _e677 = phi_1503_;
+                                                let _e678 = (_e677 < 1u);
+                                                if _e678 {
+                                                    if _e593 {
+                                                        if (_e675 > 0f) {
+                                                            phi_1520_ = bitcast<u32>(_e675);
                                                         } else {
-                                                            phi_1515_ = 0u;
+                                                            phi_1520_ = 0u;
                                                         }
-                                                        let _e681 = phi_1515_;
-                                                        let _e682 = (_e674 + _e369);
-                                                        if (_e682 > 0f) {
-                                                            phi_1522_ = bitcast<u32>(_e682);
+                                                        let _e682 = phi_1520_;
+                                                        let _e683 = (_e675 + _e369);
+                                                        if (_e683 > 0f) {
+                                                            phi_1527_ = bitcast<u32>(_e683);
                                                         } else {
-                                                            phi_1522_ = 0u;
+                                                            phi_1527_ = 0u;
                                                         }
-                                                        let _e686 = phi_1522_;
-                                                        let _e687 = (_e668 < _e69);
-                                                        if _e687 {
+                                                        let _e687 = phi_1527_;
+                                                        let _e688 = (_e669 < _e69);
+                                                        if _e688 {
                                                         } else {
-                                                            phi_1909_ = true;
+                                                            phi_1921_ = true;
                                                             break;
                                                         }
-                                                        let _e690 = atomicLoad((&ray_min.member[_e668]));
-                                                        if (_e690 > _e681) {
-                                                            if _e687 {
+                                                        let _e691 = atomicLoad((&ray_min.member[_e669]));
+                                                        if (_e691 > _e682) {
+                                                            if _e688 {
                                                             } else {
-                                                                phi_1909_ = true;
+                                                                phi_1921_ = true;
                                                                 break;
                                                             }
-                                                            let _e692 = atomicMin((&ray_min.member[_e668]), _e681);
+                                                            let _e693 = atomicMin((&ray_min.member[_e669]), _e682);
                                                         }
-                                                        let _e693 = (_e668 < _e71);
-                                                        if _e693 {
+                                                        let _e694 = (_e669 < _e71);
+                                                        if _e694 {
                                                         } else {
-                                                            phi_1909_ = true;
+                                                            phi_1921_ = true;
                                                             break;
                                                         }
-                                                        let _e696 = atomicLoad((&ray_max.member[_e668]));
-                                                        if (_e696 < _e686) {
-                                                            if _e693 {
+                                                        let _e697 = atomicLoad((&ray_max.member[_e669]));
+                                                        if (_e697 < _e687) {
+                                                            if _e694 {
                                                             } else {
-                                                                phi_1909_ = true;
+                                                                phi_1921_ = true;
                                                                 break;
                                                             }
-                                                            let _e698 = atomicMax((&ray_max.member[_e668]), _e686);
+                                                            let _e699 = atomicMax((&ray_max.member[_e669]), _e687);
                                                         }
                                                     }
-                                                    phi_1499_ = (_e676 + 1u);
+                                                    phi_1504_ = (_e677 + 1u);
                                                 } else {
-                                                    phi_1499_ = u32();
+                                                    phi_1504_ = u32();
                                                 }
-                                                let _e701 = phi_1499_;
+                                                let _e702 = phi_1504_;
                                                 continue;
                                                 continuing {
-                                                    phi_1498_ = _e701;
-                                                    phi_1909_ = _e391;
-                                                    break if !(_e677);
+                                                    phi_1503_ = _e702;
+                                                    phi_1921_ = _e391;
+                                                    break if !(_e678);
                                                 }
                                             }
-                                            let _e704 = phi_1909_;
-                                            phi_1995_ = _e704;
-                                            if _e704 {
+                                            let _e705 = phi_1921_;
+                                            phi_2007_ = _e705;
+                                            if _e705 {
                                                 break;
                                             }
-                                            phi_1994_ = _e704;
+                                            phi_2006_ = _e705;
                                         } else {
-                                            phi_1994_ = _e391;
+                                            phi_2006_ = _e391;
                                         }
-                                        let _e706 = phi_1994_;
-                                        let _e707 = (_e566 - _e153);
-                                        let _e708 = (_e570 - _e160);
-                                        let _e709 = (_e562 - _e146);
-                                        let _e714 = (((_e707 * _e707) + (_e708 * _e708)) + (_e709 * _e709));
+                                        let _e707 = phi_2006_;
+                                        let _e708 = (_e566 - _e153);
+                                        let _e709 = (_e570 - _e160);
+                                        let _e710 = (_e562 - _e146);
+                                        let _e720 = (((_e708 * _e708) + (_e709 * _e709)) + (_e710 * _e710));
                                         if _e367 {
-                                            phi_1578_ = (_e714 <= (_e111 * _e111));
+                                            phi_1600_ = (_e720 > (_e111 * _e111));
                                         } else {
-                                            phi_1578_ = true;
+                                            phi_1600_ = false;
                                         }
-                                        let _e718 = phi_1578_;
-                                        let _e728 = select(false, select(false, ((((_e707 * _e232) + (_e708 * _e233)) + (_e709 * _e234)) > (sqrt(_e714) * 0.018f)), _e718), _e366);
-                                        if _e728 {
-                                            let _e729 = (0.5f / _e562);
-                                            let _e738 = frame.member[0u].member_1.member.member.member_1[0u];
-                                            let _e749 = frame.member[0u].member_1.member.member.member_1[1u];
-                                            let _e757 = frame.member[0u].member_1.member_5[0u];
-                                            let _e763 = frame.member[0u].member_1.member_5[1u];
-                                            let _e770 = frame.member[0u].member_1.member_4;
-                                            let _e771 = f32(_e770);
-                                            let _e772 = (2u * _e770);
-                                            let _e773 = (_e757 + _e772);
-                                            let _e777 = (floor(((((_e566 * _e729) / _e738) + 0.5f) * f32(_e757))) + _e771);
-                                            let _e780 = f32(bitcast<i32>((_e773 - 1u)));
-                                            let _e791 = (floor(((0.5f - ((_e570 * _e729) / _e749)) * f32(_e763))) + _e771);
-                                            let _e794 = f32(bitcast<i32>(((_e763 + _e772) - 1u)));
-                                            let _e804 = (((bitcast<u32>((floor(select(0f, select(_e794, _e791, (_e791 < _e794)), (_e791 > 0f))) + 8388608f)) - 1258291200u) * _e773) + (bitcast<u32>((floor(select(0f, select(_e780, _e777, (_e777 < _e780)), (_e777 > 0f))) + 8388608f)) - 1258291200u));
-                                            let _e810 = sqrt((((_e566 * _e566) + (_e570 * _e570)) + (_e562 * _e562)));
-                                            phi_1702_ = 0u;
+                                        let _e727 = phi_1600_;
+                                        let _e730 = select(false, select(false, ((((_e708 * _e232) + (_e709 * _e233)) + (_e710 * _e234)) > (sqrt(_e720) * 0.018f)), !(_e727)), _e366);
+                                        if _e730 {
+                                            let _e731 = (0.5f / _e562);
+                                            let _e740 = frame.member[0u].member_1.member.member.member_1[0u];
+                                            let _e751 = frame.member[0u].member_1.member.member.member_1[1u];
+                                            let _e759 = frame.member[0u].member_1.member_5[0u];
+                                            let _e765 = frame.member[0u].member_1.member_5[1u];
+                                            let _e772 = frame.member[0u].member_1.member_4;
+                                            let _e773 = f32(_e772);
+                                            let _e774 = (2u * _e772);
+                                            let _e775 = (_e759 + _e774);
+                                            let _e779 = (floor(((((_e566 * _e731) / _e740) + 0.5f) * f32(_e759))) + _e773);
+                                            let _e782 = f32(bitcast<i32>((_e775 - 1u)));
+                                            let _e793 = (floor(((0.5f - ((_e570 * _e731) / _e751)) * f32(_e765))) + _e773);
+                                            let _e796 = f32(bitcast<i32>(((_e765 + _e774) - 1u)));
+                                            let _e806 = (((bitcast<u32>((floor(select(0f, select(_e796, _e793, (_e793 < _e796)), (_e793 > 0f))) + 8388608f)) - 1258291200u) * _e775) + (bitcast<u32>((floor(select(0f, select(_e782, _e779, (_e779 < _e782)), (_e779 > 0f))) + 8388608f)) - 1258291200u));
+                                            let _e812 = sqrt((((_e566 * _e566) + (_e570 * _e570)) + (_e562 * _e562)));
+                                            phi_1713_ = 0u;
                                             loop {
-                                                let _e812 = phi_1702_;
-                                                let _e813 = (_e812 < 1u);
-                                                if _e813 {
-                                                    if _e728 {
-                                                        if (_e810 > 0f) {
-                                                            phi_1719_ = bitcast<u32>(_e810);
+                                                let _e814 = phi_1713_;
+                                                let _e815 = (_e814 < 1u);
+                                                if _e815 {
+                                                    if _e730 {
+                                                        if (_e812 > 0f) {
+                                                            phi_1730_ = bitcast<u32>(_e812);
                                                         } else {
-                                                            phi_1719_ = 0u;
+                                                            phi_1730_ = 0u;
                                                         }
-                                                        let _e817 = phi_1719_;
-                                                        let _e818 = (_e810 + _e369);
-                                                        if (_e818 > 0f) {
-                                                            phi_1726_ = bitcast<u32>(_e818);
+                                                        let _e819 = phi_1730_;
+                                                        let _e820 = (_e812 + _e369);
+                                                        if (_e820 > 0f) {
+                                                            phi_1737_ = bitcast<u32>(_e820);
                                                         } else {
-                                                            phi_1726_ = 0u;
+                                                            phi_1737_ = 0u;
                                                         }
-                                                        let _e822 = phi_1726_;
-                                                        let _e823 = (_e804 < _e69);
-                                                        if _e823 {
+                                                        let _e824 = phi_1737_;
+                                                        let _e825 = (_e806 < _e69);
+                                                        if _e825 {
                                                         } else {
-                                                            phi_1979_ = true;
+                                                            phi_1991_ = true;
                                                             break;
                                                         }
-                                                        let _e826 = atomicLoad((&ray_min.member[_e804]));
-                                                        if (_e826 > _e817) {
-                                                            if _e823 {
+                                                        let _e828 = atomicLoad((&ray_min.member[_e806]));
+                                                        if (_e828 > _e819) {
+                                                            if _e825 {
                                                             } else {
-                                                                phi_1979_ = true;
+                                                                phi_1991_ = true;
                                                                 break;
                                                             }
-                                                            let _e828 = atomicMin((&ray_min.member[_e804]), _e817);
+                                                            let _e830 = atomicMin((&ray_min.member[_e806]), _e819);
                                                         }
-                                                        let _e829 = (_e804 < _e71);
-                                                        if _e829 {
+                                                        let _e831 = (_e806 < _e71);
+                                                        if _e831 {
                                                         } else {
-                                                            phi_1979_ = true;
+                                                            phi_1991_ = true;
                                                             break;
                                                         }
-                                                        let _e832 = atomicLoad((&ray_max.member[_e804]));
-                                                        if (_e832 < _e822) {
-                                                            if _e829 {
+                                                        let _e834 = atomicLoad((&ray_max.member[_e806]));
+                                                        if (_e834 < _e824) {
+                                                            if _e831 {
                                                             } else {
-                                                                phi_1979_ = true;
+                                                                phi_1991_ = true;
                                                                 break;
                                                             }
-                                                            let _e834 = atomicMax((&ray_max.member[_e804]), _e822);
+                                                            let _e836 = atomicMax((&ray_max.member[_e806]), _e824);
                                                         }
                                                     }
-                                                    phi_1703_ = (_e812 + 1u);
+                                                    phi_1714_ = (_e814 + 1u);
                                                 } else {
-                                                    phi_1703_ = u32();
+                                                    phi_1714_ = u32();
                                                 }
-                                                let _e837 = phi_1703_;
+                                                let _e839 = phi_1714_;
                                                 continue;
                                                 continuing {
-                                                    phi_1702_ = _e837;
-                                                    phi_1979_ = _e706;
-                                                    break if !(_e813);
+                                                    phi_1713_ = _e839;
+                                                    phi_1991_ = _e707;
+                                                    break if !(_e815);
                                                 }
                                             }
-                                            let _e840 = phi_1979_;
-                                            phi_1995_ = _e840;
-                                            if _e840 {
+                                            let _e842 = phi_1991_;
+                                            phi_2007_ = _e842;
+                                            if _e842 {
                                                 break;
                                             }
-                                            phi_1997_ = _e840;
+                                            phi_2009_ = _e842;
                                         } else {
-                                            phi_1997_ = _e706;
+                                            phi_2009_ = _e707;
                                         }
-                                        let _e842 = phi_1997_;
-                                        phi_1996_ = _e842;
-                                        phi_1032_ = (_e393 + 1u);
+                                        let _e844 = phi_2009_;
+                                        phi_2008_ = _e844;
+                                        phi_1031_ = (_e393 + 1u);
                                     } else {
-                                        phi_1996_ = _e391;
-                                        phi_1032_ = u32();
+                                        phi_2008_ = _e391;
+                                        phi_1031_ = u32();
                                     }
-                                    let _e845 = phi_1996_;
-                                    let _e847 = phi_1032_;
+                                    let _e847 = phi_2008_;
+                                    let _e849 = phi_1031_;
                                     continue;
                                     continuing {
-                                        phi_1953_ = _e845;
-                                        phi_1031_ = _e847;
-                                        phi_1995_ = _e845;
+                                        phi_1965_ = _e847;
+                                        phi_1030_ = _e849;
+                                        phi_2007_ = _e847;
                                         break if !(_e397);
                                     }
                                 }
-                                let _e850 = phi_1995_;
-                                phi_1998_ = _e850;
-                                if _e850 {
+                                let _e852 = phi_2007_;
+                                phi_2010_ = _e852;
+                                if _e852 {
                                     break;
                                 }
-                                phi_1999_ = _e850;
-                                phi_866_ = (_e373 + 1u);
+                                phi_2011_ = _e852;
+                                phi_865_ = (_e373 + 1u);
                             } else {
-                                phi_1999_ = _e371;
-                                phi_866_ = u32();
+                                phi_2011_ = _e371;
+                                phi_865_ = u32();
                             }
-                            let _e853 = phi_1999_;
-                            let _e855 = phi_866_;
+                            let _e855 = phi_2011_;
+                            let _e857 = phi_865_;
                             continue;
                             continuing {
-                                phi_1961_ = _e853;
-                                phi_865_ = _e855;
-                                phi_1998_ = _e853;
+                                phi_1973_ = _e855;
+                                phi_864_ = _e857;
+                                phi_2010_ = _e855;
                                 break if !(_e377);
                             }
                         }
-                        let _e858 = phi_1998_;
-                        if _e858 {
+                        let _e860 = phi_2010_;
+                        if _e860 {
                             break;
                         }
                     }

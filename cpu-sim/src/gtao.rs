@@ -52,10 +52,8 @@ pub fn prefilter_pass(params: &GtaoParams, depth: &[f32], mips: &mut [f32]) {
     let divisor = aokit_shaders::gtao::PREFILTER_BLOCK[params.pass.min(1) as usize];
     let full = params.view.size();
     let blocks = UVec2::new(full.x.div_ceil(divisor), full.y.div_ceil(divisor));
-    const _: () = assert!(align_of::<AtomicU32>() == align_of::<f32>() && size_of::<AtomicU32>() == size_of::<f32>());
-    // SAFETY: AtomicU32 has the size and alignment of f32 (asserted) and every bit pattern is
-    // valid for both; the exclusive borrow of `mips` outlives `shared`.
-    let shared: &[AtomicU32] = unsafe { &*(mips as *mut [f32] as *const [AtomicU32]) };
+    // The f32 texels as the u32 words of their bits (every bit pattern is valid for both).
+    let shared = as_atomics(bytemuck::cast_slice_mut(mips));
     (0..blocks.y).into_par_iter().for_each(|y| {
         let mut out = shared;
         if params.pass == 0 {
@@ -183,10 +181,12 @@ pub fn run_vbao_sd_request_into(
     });
 }
 
-/// The words of an exclusively borrowed buffer as atomics (the same size and alignment).
+/// The words of an exclusively borrowed buffer as atomics, for passes whose invocations write it
+/// concurrently (the prefilter's texels, vbao-sd's ray intervals).
 fn as_atomics(words: &mut [u32]) -> &[AtomicU32] {
-    // SAFETY: `AtomicU32` has the in-memory representation of `u32`, and the exclusive borrow
-    // keeps every other access out for the returned borrow's lifetime.
+    const _: () = assert!(align_of::<AtomicU32>() == align_of::<u32>() && size_of::<AtomicU32>() == size_of::<u32>());
+    // SAFETY: `AtomicU32` has the size and alignment of `u32` (asserted), and the exclusive
+    // borrow keeps every other access out for the returned borrow's lifetime.
     unsafe { core::slice::from_raw_parts(words.as_mut_ptr() as *const AtomicU32, words.len()) }
 }
 

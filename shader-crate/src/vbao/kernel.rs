@@ -127,20 +127,8 @@ pub fn interval_bits<L: Lanes>(
     side: f32,
     rule: u32,
 ) -> L::Index {
-    coordinate_bits(own, own_coordinate(own, delta_a, v), own_coordinate(own, delta_b, v), side, rule)
-}
-
-/// The half-circle coordinate of the point `delta` (relative to P) in the own slice `own`
-/// (spec vbao §2.3–§2.4, with the edge tolerance): one precise acos.
-#[inline]
-pub fn own_coordinate<L: Lanes>(own: &OwnSlice<L>, delta: L::V3, v: L::V3) -> L {
-    sector_coordinate(angle_to::<L>(delta, v) + own.tolerance, own.gamma)
-}
-
-/// The mask bits between two own-slice coordinates ([`own_coordinate`]) on the slice side with
-/// sign `side` (spec vbao §2.5, §3).
-#[inline]
-pub fn coordinate_bits<L: Lanes>(own: &OwnSlice<L>, x_f: L, x_b: L, side: f32, rule: u32) -> L::Index {
+    let x_f = sector_coordinate(angle_to::<L>(delta_a, v) + own.tolerance, own.gamma);
+    let x_b = sector_coordinate(angle_to::<L>(delta_b, v) + own.tolerance, own.gamma);
     // In the own slice the sample's side is side 0; on the nominal side 1 that is mirrored.
     let (x_f, x_b) = if side > 0.0 { (x_f, x_b) } else { (-x_f + 1.0, -x_b + 1.0) };
     let bits = sector_bits_lanes(x_f.min(x_b), x_f.max(x_b), rule);
@@ -244,13 +232,19 @@ fn slice_mask<L: Lanes, O: Occupancy<L>>(
     mask
 }
 
+/// Does the point `delta` (relative to P) lie beyond the gate radius R_g (spec vbao §2.1)?
+/// |Δ| > R_g as |Δ|² > R_g², no square root; never without a gate (R_g = 0).
+#[inline]
+pub fn beyond_gate<L: Lanes>(params: &VbaoParams, delta: L::V3) -> L::Mask {
+    let gate = params.gate_radius;
+    if gate > 0.0 { delta.dot(delta).gt(L::splat(gate * gate)) } else { L::mask_splat(false) }
+}
+
 /// [`sample_bits`] unless the sample lies beyond the gate radius R_g (spec vbao §2.1; no
 /// falloff).
 #[inline]
 pub fn gated_bits<L: Lanes>(params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>, side: f32) -> L::Index {
-    // |Δ| > R_g as |Δ|² > R_g²: no square root.
-    let gate = params.gate_radius;
-    let beyond = if gate > 0.0 { delta.dot(delta).gt(L::splat(gate * gate)) } else { L::mask_splat(false) };
+    let beyond = beyond_gate::<L>(params, delta);
     // Skip the sample's arithmetic when no lane needs it (always, for one pixel beyond R_g).
     if !L::any(L::not(beyond)) {
         return L::index_splat(0);

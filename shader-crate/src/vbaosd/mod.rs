@@ -26,7 +26,9 @@ use crate::gtao::{GtaoFixed, GtaoPixel};
 use crate::raysd::MAX_LAYERS;
 use crate::svao::{SvaoFrame, SvaoParams};
 use crate::vbao::VbaoParams;
-use crate::vbao::kernel::{EDGE_TOLERANCE, Occupancy, OwnSlice, interval_bits, own_slice, vbao_term, visibility_with};
+use crate::vbao::kernel::{
+    EDGE_TOLERANCE, Occupancy, OwnSlice, beyond_gate, interval_bits, own_slice, vbao_term, visibility_with,
+};
 use spirv_std::spirv;
 
 /// A sample counts as flagged when it lies above P's tangent plane by more than this fraction
@@ -47,10 +49,8 @@ pub const SAME_SURFACE: f32 = 1e-3;
 /// whatever lies behind them; the others keep `vbao`'s bits. Per lane.
 #[inline]
 pub fn flagged<L: Lanes>(params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>) -> L::Mask {
-    let len_sq = delta.dot(delta);
-    let gate = params.gate_radius;
-    let inside = if gate > 0.0 { len_sq.le(L::splat(gate * gate)) } else { L::mask_splat(true) };
-    L::and(inside, delta.dot(px.n).gt(len_sq.sqrt() * FLAG_SLOPE))
+    let above = delta.dot(px.n).gt(delta.dot(delta).sqrt() * FLAG_SLOPE);
+    L::and(L::not(beyond_gate::<L>(params, delta)), above)
 }
 
 /// How far behind a flagged sample its SD texel's ray must reach, world units (spec vbao
@@ -219,9 +219,7 @@ impl<L: Lanes> Occupancy<L> for SdLayers<'_> {
     #[inline]
     fn bits(&mut self, params: &VbaoParams, delta: L::V3, px: &PixelSetup<L>, side: f32) -> L::Index {
         let none = L::index_splat(0);
-        let gate = params.gate_radius;
-        let len_sq = delta.dot(delta);
-        let beyond = if gate > 0.0 { len_sq.gt(L::splat(gate * gate)) } else { L::mask_splat(false) };
+        let beyond = beyond_gate::<L>(params, delta);
         if !L::any(L::not(beyond)) {
             return none;
         }
@@ -284,9 +282,7 @@ fn hidden_bits<L: Lanes>(
     let view = &params.gtao.view;
     let far = L::splat(view.far);
     let front = view_pos::<L>(view, uv, entry) - px.pos;
-    let gate = params.gate_radius;
-    let inside = if gate > 0.0 { front.dot(front).le(L::splat(gate * gate)) } else { L::mask_splat(true) };
-    let counted = L::and(entry.lt(far), inside);
+    let counted = L::and(entry.lt(far), L::not(beyond_gate::<L>(params, front)));
     if !L::any(counted) {
         return L::index_splat(0);
     }
