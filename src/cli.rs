@@ -7,7 +7,7 @@ use crate::scene::Scene;
 use crate::scene::builtin::{self, BuiltinScene};
 use crate::technique::{CliSettings, Row, TECHNIQUES, Technique};
 use aokit_shaders::glam::Vec3;
-use aokit_shaders::technique::Kind;
+use aokit_shaders::technique::{Kind, RESOLUTION_KEY};
 use std::path::Path;
 
 /// The scene, the output size, the camera and the AO parameters (`aokit render`'s flags).
@@ -171,7 +171,20 @@ impl clap::Args for TechniqueArgs {
             };
             cmd = cmd.arg(arg);
         }
-        cmd
+        // The resolution every technique takes (not a settings row: it transforms the graph).
+        let names = aokit_shaders::technique::Resolution::NAMES;
+        cmd.arg(
+            clap::Arg::new(RESOLUTION_KEY)
+                .long(RESOLUTION_KEY)
+                .help_heading("Technique settings")
+                .value_parser(clap::builder::PossibleValuesParser::new(names))
+                .default_value(names[0])
+                .help(
+                    "Run at the full target, or at half resolution with an edge-aware upsample \
+                     (docs/algorithms/half-resolution.md; half-nearest keeps the nearest pixel of each 2×2 block) \
+                     [every technique]",
+                ),
+        )
     }
 
     fn augment_args_for_update(cmd: clap::Command) -> clap::Command {
@@ -188,6 +201,9 @@ impl clap::FromArgMatches for TechniqueArgs {
 
     /// Only flags the user typed: the defaults are the techniques' own.
     fn update_from_arg_matches(&mut self, matches: &clap::ArgMatches) -> Result<(), clap::Error> {
+        if matches.value_source(RESOLUTION_KEY) == Some(clap::parser::ValueSource::CommandLine) {
+            self.given.0.push((RESOLUTION_KEY.to_string(), matches.get_one::<String>(RESOLUTION_KEY).cloned()));
+        }
         for f in flags() {
             if matches.value_source(f.name) != Some(clap::parser::ValueSource::CommandLine) {
                 continue;

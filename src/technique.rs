@@ -32,9 +32,10 @@ impl CliSettings {
     /// The flags that none of `techniques` reads (a flag that would silently do nothing).
     pub fn unused(&self, techniques: &[&Technique]) -> Vec<String> {
         let reads = |flag: &str| {
-            techniques
-                .iter()
-                .any(|t| t.rows().iter().any(|r| r.flag == Some(flag) || r.switch.is_some_and(|s| s.0 == flag)))
+            flag == aokit_shaders::technique::RESOLUTION_KEY
+                || techniques
+                    .iter()
+                    .any(|t| t.rows().iter().any(|r| r.flag == Some(flag) || r.switch.is_some_and(|s| s.0 == flag)))
         };
         self.0.iter().filter(|(f, _)| !reads(f)).map(|(f, _)| format!("--{f}")).collect()
     }

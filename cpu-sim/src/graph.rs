@@ -135,7 +135,7 @@ pub enum CpuDriver {
 /// candidate to the same any-hit decision.
 static RUNNERS: &[(&Kernel, Runner)] = {
     use aokit_shaders::{
-        blur, groundtruth, gtao, hybrid, rastersd, raymarch, raysd, raysvao, svao, temporal, vao, vbao, vbaosd,
+        blur, groundtruth, gtao, halfres, hybrid, rastersd, raymarch, raysd, raysvao, svao, temporal, vao, vbao, vbaosd,
     };
     &[
         (&vao::vao_main::ENTRY, runners::vao),
@@ -160,6 +160,8 @@ static RUNNERS: &[(&Kernel, Runner)] = {
         (&hybrid::rt::hybrid_rgen::ENTRY, runners::hybrid),
         (&hybrid::rq::hybrid_rq::ENTRY, runners::hybrid),
         (&temporal::temporal_blend::ENTRY, runners::temporal_blend),
+        (&halfres::half_downsample::ENTRY, runners::half_downsample),
+        (&halfres::half_upsample::ENTRY, runners::half_upsample),
     ]
 };
 
@@ -324,7 +326,7 @@ mod runners {
     use super::*;
     use aokit_shaders::gtao::normal_from_depth;
     use aokit_shaders::{
-        blur, groundtruth, gtao, hybrid, rastersd, raymarch, raysd, raysvao, svao, temporal, vao, vbao, vbaosd,
+        blur, groundtruth, gtao, halfres, hybrid, rastersd, raymarch, raysd, raysvao, svao, temporal, vao, vbao, vbaosd,
     };
 
     pub fn vao(io: &mut PassIo) {
@@ -509,6 +511,46 @@ mod runners {
         io.write(AO).copy_from_slice(&ao);
         io.write(TERMS).copy_from_slice(&terms);
         io.write(EDGES).copy_from_slice(&edges);
+    }
+
+    /// The half-resolution downsample (`aokit_shaders::halfres`) over the half target, a row of
+    /// texels per task.
+    pub fn half_downsample(io: &mut PassIo) {
+        use halfres::half_downsample::*;
+        use rayon::prelude::*;
+        let params: halfres::HalfParams = io.push();
+        let width = params.half.size().x as usize;
+        let (half_depth, half_normals) = (io.write(HALF_DEPTH), io.write(HALF_NORMALS));
+        let (depth, normals) = (io.read(DEPTH), io.read(NORMALS));
+        half_depth.par_chunks_mut(width).zip(half_normals.par_chunks_mut(width)).enumerate().for_each(|(y, (d, n))| {
+            for (x, (d, n)) in d.iter_mut().zip(n).enumerate() {
+                let i = params.view.index(halfres::kept_pixel(
+                    &params,
+                    depth,
+                    aokit_shaders::glam::uvec2(x as u32, y as u32),
+                ));
+                (*d, *n) = (depth[i], normals[i]);
+            }
+        });
+    }
+
+    /// The half-resolution upsample (`aokit_shaders::halfres`) over the inner image, eight
+    /// pixels a call.
+    pub fn half_upsample(io: &mut PassIo) {
+        use aokit_shaders::common::lanes::{F32x8, Lanes};
+        use halfres::half_upsample::*;
+        let params: halfres::HalfParams = io.push();
+        let (size, g) = (params.view.size(), params.view.guard);
+        let out = io.write(AO);
+        let (depth, normals, half_depth, half_ao) =
+            (io.read(DEPTH), io.read(NORMALS), io.read(HALF_DEPTH), io.read(HALF_AO));
+        crate::screen::tiled_lanes(out, size.x, g..size.x - g, g..size.y - g, 8, &crate::no_progress, |first, out| {
+            let p = crate::screen::lanes_of_run(first, out.len());
+            let ao = halfres::upsample_lanes::<F32x8>(&params, depth, normals, half_depth, half_ao, p);
+            for (i, v) in out.iter_mut().enumerate() {
+                *v = F32x8::lane(ao, i);
+            }
+        });
     }
 
     /// The temporal accumulation (`aokit_shaders::temporal`) over the full target.

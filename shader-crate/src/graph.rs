@@ -97,6 +97,10 @@ pub enum Extent {
     /// `ceil(W/2)×H`: pairs of horizontally adjacent pixels of the full target (a kernel that
     /// shades two pixels an invocation, as XeGTAO's denoiser).
     Pairs,
+    /// `(w/2)×(h/2)`: [`Extent::Inner`] of the half-resolution target (`crate::halfres`).
+    HalfInner,
+    /// `ceil(W/4)×(H/2)`: [`Extent::Pairs`] of the half-resolution target (`crate::halfres`).
+    HalfPairs,
 }
 
 impl Extent {
@@ -110,7 +114,24 @@ impl Extent {
             }
             Extent::Mip(k) => UVec2::new((full.x >> k).max(1), (full.y >> k).max(1)),
             Extent::Pairs => UVec2::new(full.x.div_ceil(2), full.y),
+            Extent::HalfInner => (full - 2 * view.guard) / 2,
+            Extent::HalfPairs => UVec2::new(full.x.div_ceil(4), full.y / 2),
         }
+    }
+
+    /// The same extent of the half-resolution target `(W/2)×(H/2)` with guard band `g/2` (`W`,
+    /// `H`, `g` even; spec half-resolution §1), as an extent of the full target: the full target
+    /// is [`Extent::Reduced`] by 2, a reduced map by twice its divisor (`ceil(ceil(W/2)/d) =
+    /// ceil(W/2d)`), MIP `k` is MIP `k + 1`. Refused for an extent already halved.
+    pub fn halved(self) -> Result<Extent, String> {
+        Ok(match self {
+            Extent::Full => Extent::Reduced { divisor: 2, border: 0 },
+            Extent::Inner => Extent::HalfInner,
+            Extent::Reduced { divisor, border } => Extent::Reduced { divisor: 2 * divisor, border },
+            Extent::Mip(k) => Extent::Mip(k + 1),
+            Extent::Pairs => Extent::HalfPairs,
+            Extent::HalfInner | Extent::HalfPairs => return Err("half resolution applied twice".into()),
+        })
     }
 
     /// `[x, y]` as integer expressions of `W`, `H`, `w`, `h` (the grammar of the manifest's
@@ -127,6 +148,9 @@ impl Extent {
             Extent::Mip(k) => format!("max(1, div_floor({v}, {}))", 1u32 << k),
             Extent::Pairs if v == "W" => "div_ceil(W, 2)".to_string(),
             Extent::Pairs => v.to_string(),
+            Extent::HalfInner => format!("div_floor({}, 2)", v.to_lowercase()),
+            Extent::HalfPairs if v == "W" => "div_ceil(W, 4)".to_string(),
+            Extent::HalfPairs => format!("div_floor({v}, 2)"),
         };
         [of("W"), of("H")]
     }
@@ -137,8 +161,9 @@ impl Extent {
 pub enum Size {
     /// `per_texel` elements for every texel of `extent`.
     Texels { extent: Extent, per_texel: u32 },
-    /// MIP levels `0..levels` of the full target packed one after another.
-    MipChain { levels: u32 },
+    /// MIP levels `first..first + levels` of the full target packed one after another (`first`
+    /// is 1 for a half-resolution graph's chain, whose level 0 is the full target's level 1).
+    MipChain { first: u32, levels: u32 },
     /// A fixed number (records, tables).
     Words(usize),
 }
@@ -154,9 +179,18 @@ impl Size {
         };
         match *self {
             Size::Texels { extent, per_texel } => area(extent) * per_texel as usize,
-            Size::MipChain { levels } => (0..levels).map(|k| area(Extent::Mip(k))).sum(),
+            Size::MipChain { first, levels } => (first..first + levels).map(|k| area(Extent::Mip(k))).sum(),
             Size::Words(n) => n,
         }
+    }
+
+    /// The same size for the half-resolution target (see [`Extent::halved`]).
+    pub fn halved(&self) -> Result<Size, String> {
+        Ok(match *self {
+            Size::Texels { extent, per_texel } => Size::Texels { extent: extent.halved()?, per_texel },
+            Size::MipChain { first, levels } => Size::MipChain { first: first + 1, levels },
+            Size::Words(n) => Size::Words(n),
+        })
     }
 
     /// The element count as an integer expression of `W`, `H`, `w`, `h` (the grammar of
@@ -170,7 +204,9 @@ impl Size {
         match *self {
             Size::Texels { extent, per_texel: 1 } => area(extent),
             Size::Texels { extent, per_texel } => format!("{} * {per_texel}", area(extent)),
-            Size::MipChain { levels } => (0..levels).map(|k| area(Extent::Mip(k))).collect::<Vec<_>>().join(" + "),
+            Size::MipChain { first, levels } => {
+                (first..first + levels).map(|k| area(Extent::Mip(k))).collect::<Vec<_>>().join(" + ")
+            }
             Size::Words(n) => n.to_string(),
         }
     }

@@ -35,6 +35,7 @@ pub mod gbuffer;
 pub mod graph;
 pub mod groundtruth;
 pub mod gtao;
+pub mod halfres;
 pub mod hybrid;
 #[cfg(not(target_arch = "spirv"))]
 pub mod kernel;

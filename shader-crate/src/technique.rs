@@ -6,6 +6,11 @@
 //! about a setting is written twice.
 
 use crate::graph::{FrameDesc, Graph};
+pub use crate::halfres::settings::Resolution;
+
+/// The key (`technique:resolution=half`) and command-line flag (`--resolution half`) of the
+/// resolution every technique takes ([`Technique::with_resolution`]).
+pub const RESOLUTION_KEY: &str = "resolution";
 use core::any::Any;
 use core::fmt::Debug;
 
@@ -328,8 +333,8 @@ pub trait Configured: Send + Sync + Debug {
     /// Set a setting by key; a key the technique does not read is refused.
     fn set(&mut self, key: &str, value: &str) -> Result<(), String>;
     fn validate(&self) -> Result<(), String>;
-    /// The declaration's graph for `frame`, with the temporal accumulation appended when
-    /// `frame.temporal` asks for it (`crate::temporal::settings::accumulate`).
+    /// The declaration's graph for `frame` (the resolution and the temporal accumulation are
+    /// [`Technique::graph`]'s).
     fn graph(&self, frame: &FrameDesc) -> Result<Graph, String>;
     fn second_layer(&self) -> Option<f32>;
     /// The settings struct, for callers that know its type.
@@ -501,8 +506,7 @@ impl<S: Settings> Configured for Instance<S> {
 
     fn graph(&self, frame: &FrameDesc) -> Result<Graph, String> {
         self.settings.validate()?;
-        // The temporal accumulation, when the frame asks for it, follows every technique.
-        crate::temporal::settings::accumulate((self.declaration.graph)(&self.settings, frame)?, frame)
+        (self.declaration.graph)(&self.settings, frame)
     }
 
     fn second_layer(&self) -> Option<f32> {
@@ -535,11 +539,11 @@ pub fn single_layer<S>(_: &S) -> Option<f32> {
 /// # Ok::<(), String>(())
 /// ```
 #[derive(Debug)]
-pub struct Technique(Box<dyn Configured>);
+pub struct Technique(Box<dyn Configured>, Resolution);
 
 impl Clone for Technique {
     fn clone(&self) -> Self {
-        Technique(self.0.clone_box())
+        Technique(self.0.clone_box(), self.1)
     }
 }
 
@@ -547,14 +551,14 @@ impl Technique {
     /// `technique` with `settings` (its fixed settings, those it does not read, are the
     /// declaration's).
     pub fn new<S: Settings>(technique: &'static Declaration<S>, settings: S) -> Technique {
-        Technique(configure(technique, settings))
+        Technique(configure(technique, settings), Resolution::Full)
     }
 
     /// The registered technique `name` at its defaults.
     pub fn named(name: &str) -> Result<Technique, String> {
         let technique = crate::techniques::find(name)
             .ok_or_else(|| format!("unknown technique '{name}' (known: {})", crate::techniques::names()))?;
-        Ok(Technique(technique.configure()))
+        Ok(Technique(technique.configure(), Resolution::Full))
     }
 
     /// The registered technique `name` at quality preset `preset` (its `preset` setting, e.g.
@@ -569,7 +573,8 @@ impl Technique {
     }
 
     /// A technique from its name followed by settings as `:key=value` with the keys of its
-    /// settings rows, e.g. `raysd:sd-layers=8:interval=off`.
+    /// settings rows, e.g. `raysd:sd-layers=8:interval=off`; every technique also takes
+    /// `resolution=full|half|half-nearest` ([`Resolution`], spec half-resolution §1).
     pub fn parse(spec: &str) -> Result<Technique, String> {
         Technique::parse_with_flags(spec, &[])
     }
@@ -583,8 +588,17 @@ impl Technique {
         let mut t = Technique::named(parts.next().unwrap_or_default())?;
         let rows = t.rows();
         let mut overrides = Vec::new();
+        for (flag, value) in flags {
+            if flag == RESOLUTION_KEY {
+                t.1 = Resolution::parse(value.as_deref().unwrap_or_default()).map_err(|e| format!("--{e}"))?;
+            }
+        }
         for part in parts {
             let (key, value) = part.split_once('=').ok_or_else(|| format!("'{part}' in '{spec}' is not key=value"))?;
+            if key == RESOLUTION_KEY {
+                t.1 = Resolution::parse(value).map_err(|e| format!("'{spec}': {e}"))?;
+                continue;
+            }
             if !rows.iter().any(|r| r.key == key) {
                 // The technique's own message, naming the keys it has.
                 t.0.set(key, value).map_err(|e| format!("'{spec}': {e}"))?;
@@ -650,17 +664,42 @@ impl Technique {
         for (key, value) in self.0.changed() {
             label += &format!("_{key}-{value}");
         }
+        if self.1 != Resolution::Full {
+            label += &format!("_{RESOLUTION_KEY}-{}", self.1.name());
+        }
         label
     }
 
-    /// Every setting the technique reads as a JSON object text (`snake_case` keys).
+    /// Every setting the technique reads as a JSON object text (`snake_case` keys), with
+    /// `"resolution"` when it is not the full target.
     pub fn json(&self) -> String {
-        self.0.json()
+        let json = self.0.json();
+        match self.1 {
+            Resolution::Full => json,
+            r => {
+                let separator = if json == "{}" { "" } else { "," };
+                format!("{}{separator}\"{RESOLUTION_KEY}\":\"{}\"}}", &json[..json.len() - 1], r.name())
+            }
+        }
     }
 
-    /// The technique's pass graph for a frame.
+    /// The resolution it runs at ([`Resolution::Full`] unless set).
+    pub fn resolution(&self) -> Resolution {
+        self.1
+    }
+
+    /// The technique at `resolution` (spec half-resolution §1).
+    pub fn with_resolution(mut self, resolution: Resolution) -> Technique {
+        self.1 = resolution;
+        self
+    }
+
+    /// The technique's pass graph for a frame: its own graph, at its resolution
+    /// ([`crate::halfres::settings::at_resolution`]), followed by the temporal accumulation when
+    /// the frame asks for it.
     pub fn graph(&self, frame: &FrameDesc) -> Result<Graph, String> {
-        self.0.graph(frame)
+        let graph = crate::halfres::settings::at_resolution(self.1, frame, |f| self.0.graph(f))?;
+        crate::temporal::settings::accumulate(graph, frame)
     }
 
     /// The separation of the depth-peeled second layer, for techniques that read one (spec

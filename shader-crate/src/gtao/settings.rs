@@ -389,7 +389,7 @@ pub fn xegtao_graph(
     let mips = Resource {
         name: MIPS,
         elem: Elem::F32,
-        size: Size::MipChain { levels: MIP_LEVELS },
+        size: Size::MipChain { first: 0, levels: MIP_LEVELS },
         init: Init::Undefined,
         lifetime: Lifetime::PerFrame,
         doc: "packed 5-level working-depth MIP chain (spec gtao-raymarch-hybrid §2.3)",

@@ -1,0 +1,198 @@
+//! Half resolution as a graph transform any technique can take (spec half-resolution): the
+//! G-buffer's depth and normals reduced to half resolution by keeping one pixel of each 2×2
+//! block ([`half_downsample`], spec half-resolution §2), the technique run on that half-size
+//! G-buffer, and its AO brought back to the full target by an upsample guided by the
+//! full-resolution depth and normals ([`half_upsample`], spec half-resolution §3).
+
+#[cfg(not(target_arch = "spirv"))]
+pub mod settings;
+
+// f32 methods on SPIR-V (`abs`, `max`) come from `Lanes`.
+
+use crate::common::ViewParams;
+use crate::common::lanes::{LaneVec3, Lanes};
+use crate::common::math::is_valid_depth;
+use crate::common::normal_codec::decode_normal_lanes;
+use crate::common::read::{read, write};
+use crate::glam::{UVec2, UVec3};
+use spirv_std::spirv;
+
+/// [`HalfParams::pick`]: the nearest pixel of the block on even texels (`(x + y)` even), the
+/// farthest on odd ones (spec half-resolution §2).
+pub const PICK_CHECKERBOARD: u32 = 0;
+/// [`HalfParams::pick`]: always the nearest pixel of the block (spec half-resolution §2).
+pub const PICK_NEAREST: u32 = 1;
+
+/// Push constants of the downsample and the upsample.
+#[repr(C)]
+#[derive(Copy, Clone, Debug, PartialEq)]
+#[cfg_attr(not(target_arch = "spirv"), derive(bytemuck::Pod, bytemuck::Zeroable))]
+#[cfg_attr(not(target_arch = "spirv"), derive(aokit_contract_derive::Layout))]
+pub struct HalfParams {
+    /// Projection of the full target `W×H` (both even; guard band `g` even).
+    pub view: ViewParams,
+    /// The same projection at half resolution: `res = (W/2, H/2)`, guard `g/2` (spec
+    /// half-resolution §1).
+    pub half: ViewParams,
+    /// Which pixel of each 2×2 block the downsample keeps: [`PICK_CHECKERBOARD`] or
+    /// [`PICK_NEAREST`].
+    pub pick: u32,
+    /// Plane tolerance `τ` of the upsample's depth weight, in pixel footprints `z·f` (`f = 2·ty/H`,
+    /// the full target's pixel size at unit depth; spec half-resolution §3): a tap farther than
+    /// `τ·z·f` from the pixel's tangent plane gets no weight.
+    pub plane_tolerance: f32,
+    pub _pad0: u32,
+    pub _pad1: u32,
+}
+
+/// The full-target pixel that half-resolution texel `q` keeps (spec half-resolution §2): of the
+/// 2×2 block `2q + {0, 1}²`, the one of least depth, or on the odd squares of a checkerboard
+/// (`(q.x + q.y)` odd, with [`PICK_CHECKERBOARD`]) the one of greatest depth; ties go to the
+/// first in row order.
+#[inline]
+pub fn kept_pixel(params: &HalfParams, depth: &[f32], q: UVec2) -> UVec2 {
+    let farthest = params.pick == PICK_CHECKERBOARD && (q.x + q.y) & 1 == 1;
+    let mut best = 2 * q;
+    let mut best_depth = unsafe { read(depth, params.view.index(best)) };
+    let mut k = 1;
+    while k < 4 {
+        let p = 2 * q + UVec2::new(k & 1, k >> 1);
+        let d = unsafe { read(depth, params.view.index(p)) };
+        if (farthest && d > best_depth) || (!farthest && d < best_depth) {
+            best = p;
+            best_depth = d;
+        }
+        k += 1;
+    }
+    best
+}
+
+/// The downsample, one invocation per texel of the half target: its depth and normal are those
+/// of [`kept_pixel`] (one pixel's pair, never a mix).
+#[crate::kernel]
+#[spirv(compute(threads(8, 8), entry_point_name = "half_downsample"))]
+pub fn half_downsample(
+    #[spirv(global_invocation_id)] id: UVec3,
+    #[spirv(push_constant)] params: &HalfParams,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] depth: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] normals: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] half_depth: &mut [f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] half_normals: &mut [u32],
+) {
+    let q = id.truncate();
+    let size = params.half.size();
+    if q.x >= size.x || q.y >= size.y {
+        return;
+    }
+    let i = params.view.index(kept_pixel(params, depth, q));
+    let j = params.half.index(q);
+    unsafe {
+        write(half_depth, j, read(depth, i));
+        write(half_normals, j, read(normals, i));
+    }
+}
+
+/// The upsampled AO of full-target pixel `p` (spec half-resolution §3): over the 2×2 half texels
+/// of `p`'s bilinear footprint, weights `bᵢ · max(0, 1 − dᵢ/(τ·z·f))` — `bᵢ` the bilinear weight,
+/// `dᵢ = |n·(Xᵢ − X)|` the distance of tap `i`'s view position from `p`'s tangent plane (position
+/// `X`, normal `n` from the full-resolution depth and normals), `z·f` the pixel's footprint —
+/// normalized; where every weight is 0 (no tap on `p`'s surface), the AO of the tap nearest the
+/// plane. A background pixel takes its bilinear footprint.
+#[inline]
+pub fn upsample_pixel(
+    params: &HalfParams,
+    depth: &[f32],
+    normals: &[u32],
+    half_depth: &[f32],
+    half_ao: &[f32],
+    p: UVec2,
+) -> f32 {
+    upsample_lanes::<f32>(params, depth, normals, half_depth, half_ao, p)
+}
+
+/// [`upsample_pixel`] for one pixel (`L = f32`) or `L::LANES` pixels `p` (cpu-sim's eight
+/// lanes), branch-free: every tap's weight and the nearest tap are chosen by selects.
+#[inline]
+pub fn upsample_lanes<L: Lanes>(
+    params: &HalfParams,
+    depth: &[f32],
+    normals: &[u32],
+    half_depth: &[f32],
+    half_ao: &[f32],
+    p: L::U2,
+) -> L {
+    let (view, half) = (&params.view, &params.half);
+    let i = view.index_lanes::<L>(p);
+    let z = L::gather_index(depth, i);
+    let surface = is_valid_depth(z, view.far);
+    let n = decode_normal_lanes::<L>(L::gather_word(normals, i));
+    let (px, py) = (L::index_to_float(L::texel_x(p)), L::index_to_float(L::texel_y(p)));
+    // The view position of a texel centre `c` at depth `d` is `d·r` with the ray
+    // `r = (ndc.x·tx, ndc.y·ty, −1)` (svao-raysd §1), so the distance of a tap from p's plane,
+    // `|n·(d·r − X)|`, is `|d·(n·r) − n·X|`; `n·r` splits into a column term, a row term and
+    // `−n.z`, each computed once for the two tap columns and the two tap rows.
+    let t = view.tan_half_fov;
+    let column = |c: L, width: f32| n.x() * ((c + 0.5) * (2.0 * t.x / width) - t.x);
+    let row = |c: L, height: f32| n.y() * (-((c + 0.5) * (2.0 * t.y / height)) + t.y);
+    let plane_offset = z * (column(px, view.res.x) + row(py, view.res.y) - n.z());
+    let footprint = 2.0 * t.y / view.res.y;
+    let inverse_tolerance = L::splat(1.0) / (z * (params.plane_tolerance * footprint));
+    // p's centre in half-texel units, texel centres at integers: (p + ½)/2 − ½.
+    let (sx, sy) = (px * 0.5 - 0.25, py * 0.5 - 0.25);
+    let (bx, by) = (sx.floor(), sy.floor());
+    let (fx, fy) = (sx - bx, sy - by);
+    // Taps clamped to the half inner image [g/2, W/2 − g/2 − 1]: its guard band holds no AO.
+    let size = half.size();
+    let g = half.guard as f32;
+    let clamp = |b: L, d: f32, n: u32| (b + d).clamp_between(L::splat(g), L::splat((n - half.guard - 1) as f32));
+    let columns = [clamp(bx, 0.0, size.x), clamp(bx, 1.0, size.x)];
+    let rows = [clamp(by, 0.0, size.y), clamp(by, 1.0, size.y)];
+    let column_terms = [column(columns[0], half.res.x), column(columns[1], half.res.x)];
+    let row_terms = [row(rows[0], half.res.y), row(rows[1], half.res.y)];
+    let (mut sum, mut weights) = (L::splat(0.0), L::splat(0.0));
+    let (mut nearest, mut nearest_distance) = (L::splat(1.0), L::splat(f32::MAX));
+    let mut k: usize = 0;
+    while k < 4 {
+        let (dx, dy) = (k & 1, k >> 1);
+        let texel =
+            L::texel(columns[dx].floor_index(L::index_splat(size.x)), rows[dy].floor_index(L::index_splat(size.y)));
+        let j = half.index_lanes::<L>(texel);
+        let a = L::gather_index(half_ao, j);
+        let zt = L::gather_index(half_depth, j);
+        let wx = if dx == 0 { -fx + 1.0 } else { fx };
+        let wy = if dy == 0 { -fy + 1.0 } else { fy };
+        let bilinear = wx * wy;
+        let distance = (zt * (column_terms[dx] + row_terms[dy] - n.z()) - plane_offset).abs();
+        let valid = is_valid_depth(zt, half.far);
+        let plane = (-(distance * inverse_tolerance) + 1.0).max(L::splat(0.0));
+        let w = L::select(surface, L::select(valid, bilinear * plane, L::splat(0.0)), bilinear);
+        let closer = L::and(valid, distance.lt(nearest_distance));
+        nearest = L::select(closer, a, nearest);
+        nearest_distance = L::select(closer, distance, nearest_distance);
+        sum = sum + w * a;
+        weights = weights + w;
+        k += 1;
+    }
+    L::select(weights.gt(L::splat(0.0)), sum / weights, nearest)
+}
+
+/// The upsample, one invocation per pixel of the full target's inner image:
+/// `ao = upsample_pixel(…)`.
+#[crate::kernel]
+#[spirv(compute(threads(8, 8), entry_point_name = "half_upsample"))]
+pub fn half_upsample(
+    #[spirv(global_invocation_id)] id: UVec3,
+    #[spirv(push_constant)] params: &HalfParams,
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 0)] depth: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 1)] normals: &[u32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 2)] half_depth: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 3)] half_ao: &[f32],
+    #[spirv(storage_buffer, descriptor_set = 0, binding = 4)] ao: &mut [f32],
+) {
+    let p = id.truncate() + params.view.guard;
+    if !params.view.is_inner(p) {
+        return;
+    }
+    let value = upsample_pixel(params, depth, normals, half_depth, half_ao, p);
+    unsafe { write(ao, params.view.index(p), value) };
+}
