@@ -48,10 +48,11 @@ impl Candidate {
 }
 
 /// Every registered technique but the reference: each at every quality preset (its `preset`
-/// setting's choices but `custom`), or at its defaults where it has none; then the [`TUNED`]
-/// settings (when `tuned`).
+/// setting's choices but `custom`), or at its defaults where it has none, at full resolution and
+/// at half resolution (`-half`, docs/algorithms/half-resolution.md); then the [`TUNED`] settings
+/// (when `tuned`).
 pub fn candidates(reference: &str, tuned: bool) -> Result<Vec<Candidate>, String> {
-    use aokit_shaders::technique::Kind;
+    use aokit_shaders::technique::{Kind, Resolution};
     let mut out = Vec::new();
     for registered in aokit_shaders::techniques::TECHNIQUES {
         let name = registered.name();
@@ -72,6 +73,14 @@ pub fn candidates(reference: &str, tuned: bool) -> Result<Vec<Candidate>, String
             _ => out.push(Candidate { label: name.to_string(), technique: t }),
         }
     }
+    let halves: Vec<Candidate> = out
+        .iter()
+        .map(|c| Candidate {
+            label: format!("{}-half", c.label),
+            technique: c.technique.clone().with_resolution(Resolution::half()),
+        })
+        .collect();
+    out.extend(halves);
     if tuned {
         for spec in TUNED {
             let technique = Technique::parse(spec)?;

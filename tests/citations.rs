@@ -1,14 +1,14 @@
 //! Every `§` citation resolves inside the repository.
 //!
 //! The code cites the algorithm documents of `docs/algorithms/` as `spec NAME §N.M`, `NAME §N.M` or
-//! `NAME spec §N.M` (NAME = `svao-raysd`, `gtao-raymarch-hybrid`, `vbao`), also with ranges
+//! `NAME spec §N.M` (NAME = `svao-raysd`, `gtao-raymarch-hybrid`, `vbao`, `half-resolution`), also with ranges
 //! (`§4–§5`, `§4.1–4.3`) and lists (`§2, §5`, `§2.5 step 1, §7.6`); see `docs/algorithms/README.md`.
 //! This test walks the repository's text files and checks that
 //! * every cited section has a heading `§N.M …` in `docs/algorithms/NAME.md` (inside those documents
 //!   a bare `§N.M` means a section of the same document);
 //! * no file points outside the repository (to the team's folder beside it: `OUTSIDE` below);
 //! * every `§` in the sources (see [`STRICT_DIRS`]) belongs to a citation that names its document:
-//!   one of the three specs or an external document of [`EXTERNAL`].
+//!   one of the specs or an external document of [`EXTERNAL`].
 //!
 //! Only std: the files come from `git ls-files` (tracked plus untracked, not ignored), or from a
 //! directory walk where git is unavailable.
@@ -20,7 +20,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 /// The algorithm documents, `docs/algorithms/<name>.md`.
-const SPECS: [&str; 3] = ["svao-raysd", "gtao-raymarch-hybrid", "vbao"];
+const SPECS: [&str; 4] = ["svao-raysd", "gtao-raymarch-hybrid", "vbao", "half-resolution"];
 
 /// External documents whose sections the code cites with `§`, as the citation names them: the Khronos
 /// specifications (Vulkan, OpenGL, SPIR-V), the W3C WGSL and Khronos glTF 2.0 specifications, the two
@@ -129,7 +129,7 @@ struct Cite {
 /// The result of scanning one file.
 #[derive(Default)]
 struct Scan {
-    /// Sections of the three specs cited (range ends included).
+    /// Sections of the specs cited (range ends included).
     cites: Vec<Cite>,
     /// Char positions of every `§` that belongs to a citation naming its document.
     named: BTreeSet<usize>,

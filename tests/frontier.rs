@@ -64,6 +64,14 @@ fn candidates_cover_every_technique_and_preset() {
         assert!(labels.contains(&format!("{t}-tuned").as_str()));
     }
     assert!(!labels.iter().any(|l| l.contains("custom")));
+    // Every preset (or default) also at half resolution; the tuned settings at full only.
+    let full: Vec<_> = list.iter().filter(|c| !c.label.ends_with("-half") && !c.label.ends_with("-tuned")).collect();
+    for c in &full {
+        let half = list.iter().find(|h| h.label == format!("{}-half", c.label)).expect("a half-resolution twin");
+        assert_eq!(half.technique.resolution(), aokit_shaders::technique::Resolution::half());
+        assert_eq!(half.technique.values(), c.technique.values(), "{}: the same settings", c.label);
+    }
+    assert_eq!(list.iter().filter(|c| c.label.ends_with("-half")).count(), full.len());
     let mut sorted = labels.clone();
     sorted.sort();
     sorted.dedup();
