@@ -255,5 +255,12 @@ pub fn list_techniques() -> String {
             out += &format!("    {:18} {:28} [{default}]  {flag}\n", row.key, row.kind.accepted());
         }
     }
+    let names = aokit_shaders::technique::Resolution::NAMES;
+    out += &format!(
+        "every technique also takes\n    {RESOLUTION_KEY:18} {:28} [{}]  --{RESOLUTION_KEY}  \
+         (docs/algorithms/half-resolution.md)\n",
+        names.join("|"),
+        names[0]
+    );
     out
 }

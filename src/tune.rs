@@ -834,7 +834,7 @@ impl CostFunction for Objective<'_, '_> {
 }
 
 /// A technique as `name:key=value…` with every setting that differs from the registry's
-/// defaults, to paste into `--technique`/`--techniques`.
+/// defaults (and its resolution when not full), to paste into `--technique`/`--techniques`.
 pub fn spec(t: &Technique) -> String {
     let defaults = Technique::named(t.name()).expect("a registered technique");
     let mut s = t.name().to_string();
@@ -843,6 +843,9 @@ pub fn spec(t: &Technique) -> String {
         if v != current(&defaults, row.key) {
             s += &format!(":{}={v}", row.key);
         }
+    }
+    if t.resolution() != aokit_shaders::technique::Resolution::Full {
+        s += &format!(":{}={}", aokit_shaders::technique::RESOLUTION_KEY, t.resolution().name());
     }
     s
 }

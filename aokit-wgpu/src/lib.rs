@@ -81,7 +81,7 @@
 
 pub use aokit_shaders::engine::{AoSettings, DepthConvention};
 pub use aokit_shaders::glam;
-pub use aokit_shaders::technique::Technique;
+pub use aokit_shaders::technique::{Resolution, Technique};
 pub use aokit_shaders::temporal::settings::TemporalSettings;
 
 use aokit_shaders::adapters::ImportParams;

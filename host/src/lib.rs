@@ -77,7 +77,7 @@ pub use adapters::{AoImage, EngineImage};
 pub use aokit_shaders::common::alpha::AlphaMaskHeader;
 pub use aokit_shaders::glam;
 pub use aokit_shaders::graph::RtMode;
-pub use aokit_shaders::technique::Technique;
+pub use aokit_shaders::technique::{Resolution, Technique};
 pub use aokit_shaders::temporal::settings::TemporalSettings;
 /// The ash (Vulkan bindings) this crate's signatures use: 0.38.
 pub use ash;

@@ -165,7 +165,16 @@ fn effect_frames(device: &wgpu::Device, queue: &wgpu::Queue, spirv: bool) {
     let start = Instant::now();
     let path = if spirv { "SPIR-V" } else { "WGSL" };
     let convention = DepthConvention::ReversedInfinite;
-    let specs = ["vao", "hbao", "gtao:preset=high", "gtao:preset=ultra:denoise=0", "vbao", "raymarch"];
+    let specs = [
+        "vao",
+        "hbao",
+        "gtao:preset=high",
+        "gtao:preset=ultra:denoise=0",
+        "vbao",
+        "raymarch",
+        "gtao:resolution=half",
+        "vao:resolution=half-nearest",
+    ];
     let first = Technique::parse(specs[0]).unwrap();
     let (_, frame) = common::builtin_frame("sponza", 160, 96, 16);
     let mut effect = WgpuEffect::new(&device, &queue, effect_settings(&first, &frame)).unwrap();
