@@ -46,6 +46,24 @@ impl CliSettings {
     }
 }
 
+/// The reference of a comparison: `--resolution` applies to the techniques compared, not to what
+/// they are scored against, so the reference runs at full resolution unless its own spec says
+/// `resolution=…`.
+pub fn reference_at_full_resolution(reference: Technique, spec: &str) -> Technique {
+    let key = format!("{}=", aokit_shaders::technique::RESOLUTION_KEY);
+    if spec.contains(&key) { reference } else { reference.with_resolution(aokit_shaders::technique::Resolution::Full) }
+}
+
+/// Build each technique's graph for `frame` once, before any work: a refusal (half resolution of
+/// an odd target, of a technique reading the peeled second layer, …) is one line naming the
+/// technique, where the renderers would otherwise stop at it mid-run.
+pub fn check_graphs<'a>(techniques: impl IntoIterator<Item = &'a Technique>, frame: &Frame) -> Result<(), String> {
+    for t in techniques {
+        t.graph(&frame.desc()).map_err(|e| format!("{}: {e}", t.label()))?;
+    }
+    Ok(())
+}
+
 /// A technique's settings as JSON for reports.
 pub trait Describe {
     /// Every setting the technique reads, as JSON (`snake_case` keys).

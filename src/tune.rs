@@ -1098,6 +1098,7 @@ mod command {
         }
         let mut techniques = args.options.techniques(&[args.technique.as_str(), args.reference.as_str()])?;
         let reference = techniques.pop().expect("two techniques");
+        let reference = crate::technique::reference_at_full_resolution(reference, &args.reference);
         let technique = techniques.pop().expect("two techniques");
         if technique.name() == reference.name() && technique.describe() == reference.describe() {
             return Err(format!("{} is also the reference: nothing to tune against", spec(&technique)));

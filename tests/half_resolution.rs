@@ -7,17 +7,21 @@ use aokit::render::CpuRenderer;
 use aokit::technique::Technique;
 use aokit_cpu::no_progress;
 use aokit_shaders::common::ViewParams;
-use aokit_shaders::halfres::settings::{HalfSettings, Resolution};
+use aokit_shaders::halfres::settings::{HalfSettings, Pick, Resolution};
 
 /// The screen-space techniques (every registered technique that traces no ray and reads no
 /// second depth layer).
 const SCREEN_SPACE: [&str; 5] = ["vao", "hbao", "gtao", "vbao", "raymarch"];
 
+/// Techniques that trace the scene (or rasterize it: sdsvao's SD map, a raster pass whose
+/// viewport the transform halves), checked at half resolution on both back-ends too.
+const RAY_TRACED: [&str; 5] = ["raysd", "sdsvao", "raysvao", "hybrid", "vbao-sd"];
+
 /// Inner pixels on a depth edge: some 4-neighbour's depth differs by more than `EDGE_JUMP` of
-/// the pixel's own (a jump the upsample's plane test, τ = 2 %, must refuse to blend across; a
-/// surface seen at 80° from its normal changes by ~2 % a pixel at 360 rows, so 10 % is an edge
-/// on any surface), and pixels at least `FLAT_MARGIN` pixels from every edge pixel (whose
-/// 2×2 half-resolution footprint lies on one surface).
+/// the pixel's own (a surface seen at 80° from its normal changes by ~2 % a pixel at 360 rows, so
+/// 10 % is an edge on any surface: a jump of many pixel footprints, which the upsample's plane
+/// test, τ = 1.5 footprints, must refuse to blend across), and pixels at least `FLAT_MARGIN`
+/// pixels from every edge pixel (whose 2×2 half-resolution footprint lies on one surface).
 const EDGE_JUMP: f32 = 0.10;
 const FLAT_MARGIN: i32 = 3;
 
@@ -91,7 +95,7 @@ fn edge_error(view: &ViewParams, depth: &[f32], full: &[f32], half: &[f32]) -> E
 /// at its samples), then upsampled — through the kernels' own functions.
 fn reconstruct(view: &ViewParams, settings: &HalfSettings, depth: &[f32], normals: &[u32], ao: &[f32]) -> Vec<f32> {
     use aokit_shaders::glam::uvec2;
-    use aokit_shaders::halfres::{kept_pixel, settings::half_params, upsample_pixel};
+    use aokit_shaders::halfres::{half_texel, kept_pixel, settings::half_params, upsample_pixel};
     let params = half_params(settings, view).unwrap();
     let hs = params.half.size();
     let n = (hs.x * hs.y) as usize;
@@ -100,7 +104,7 @@ fn reconstruct(view: &ViewParams, settings: &HalfSettings, depth: &[f32], normal
         for x in 0..hs.x {
             let i = view.index(kept_pixel(&params, depth, uvec2(x, y)));
             let j = params.half.index(uvec2(x, y));
-            (hd[j], ha[j]) = (depth[i], ao[i]);
+            (hd[j], ha[j]) = (half_texel(&params, depth, normals, uvec2(x, y)).0, ao[i]);
         }
     }
     let size = view.size();
@@ -114,9 +118,10 @@ fn reconstruct(view: &ViewParams, settings: &HalfSettings, depth: &[f32], normal
 }
 
 /// The largest leak `(edge − flat)/contrast` the upsample may show (spec half-resolution §3.3):
-/// a bilinear footprint gives an edge pixel's taps across the edge ¼ of the weight on average
-/// (9/16, 3/16, 3/16, 1/16 over a straight edge), so a blend across edges shows a leak near ¼
-/// of the contrast; an upsample that keeps to the pixel's surface must show at most half of that.
+/// a bilinear footprint gives an edge pixel's taps across a straight edge 5/16 of the weight on
+/// average (¼ where the edge runs between 2×2 blocks, ⅜ where it crosses one), so a blend across
+/// edges leaks about 5/16 of the contrast (measured: 0.24–0.28); an upsample that keeps to the
+/// pixel's surface must leak at most 40 % of that.
 const MAX_LEAK: f64 = 0.125;
 
 #[test]
@@ -128,7 +133,10 @@ fn edge_aware_upsample_keeps_depth_edges() {
     for name in SCREEN_SPACE {
         let t = Technique::named(name).unwrap();
         let full = cpu.run(&frame, &gbuffer, &t, &no_progress).ao_final;
-        for (label, s) in [("edge-aware", HalfSettings::default()), ("bilinear", HalfSettings::bilinear())] {
+        let nearest = HalfSettings { pick: Pick::Nearest, ..HalfSettings::default() };
+        let cases =
+            [("edge-aware", HalfSettings::default()), ("bilinear", HalfSettings::bilinear()), ("nearest", nearest)];
+        for (label, s) in cases {
             let half = reconstruct(&view, &s, &gbuffer.depth, &gbuffer.normals, &full);
             let e = edge_error(&view, &gbuffer.depth, &full, &half);
             let leak = (e.edge - e.flat) / e.contrast;
@@ -140,6 +148,9 @@ fn edge_aware_upsample_keeps_depth_edges() {
             assert!(e.contrast > 0.05, "{name}: AO contrast {} at edges is too low to measure a leak", e.contrast);
             match label {
                 "edge-aware" => assert!(leak <= MAX_LEAK, "{name}: the upsample leaks {leak:.3} of the contrast"),
+                // The nearest pick loses the background behind thin foreground: measured, and
+                // reported in spec half-resolution §3.3, not bounded.
+                "nearest" => {}
                 // The test must see the defect it guards against.
                 _ => assert!(leak > MAX_LEAK, "{name}: a bilinear upsample leaks only {leak:.3}: the test is blind"),
             }
@@ -147,9 +158,9 @@ fn edge_aware_upsample_keeps_depth_edges() {
     }
 }
 
-/// The half-resolution graph of every screen-space technique, and of one ray-traced technique,
-/// on Vulkan against cpu-sim, on one G-buffer, under the validation layer (the same agreement as
-/// at full resolution).
+/// The half-resolution graph of every screen-space technique and of the ray-traced ones on
+/// Vulkan against cpu-sim, on one G-buffer, under the validation layer (the same agreement as at
+/// full resolution).
 #[test]
 fn half_resolution_spirv_agrees_with_cpu_sim() {
     let Some(vk) = common::vulkan() else { return };
@@ -157,7 +168,7 @@ fn half_resolution_spirv_agrees_with_cpu_sim() {
     let cpu = CpuRenderer::new(&scene);
     let (gbuffer, _) = cpu.gbuffer(&frame, &no_progress);
     let view = frame.camera.view;
-    for name in SCREEN_SPACE.iter().chain(&["raysd"]) {
+    for name in SCREEN_SPACE.iter().chain(&RAY_TRACED) {
         let t = Technique::named(name).unwrap().with_resolution(Resolution::half());
         let on_cpu = cpu.run(&frame, &gbuffer, &t, &no_progress).ao_final;
         let on_gpu = vk.run(&scene, &frame, &gbuffer, &t).unwrap().ao_final;
@@ -166,9 +177,14 @@ fn half_resolution_spirv_agrees_with_cpu_sim() {
         let a = common::agreement::inner(&view, &on_cpu, &on_gpu);
         eprintln!("{}", a.line(name));
         match *name {
-            // Its SD map keeps whichever hits the any-hit order offers (tests/vulkan_svao.rs
-            // derives its full-resolution bounds); here the bound of tests/ray_query.rs.
-            "raysd" => a.assert_bounds(name, 0.99, 1e-4),
+            // Its raster SD map and the CPU's are independent samples (the coverage hashes see
+            // fragment positions that differ in the last bits): tests/raster_sd.rs derives the
+            // bound, MSE ≤ 1/5 of a pass 2 refining only half its samples (2.1e-4); the blur
+            // spreads the differences over more pixels, so within 1/255 is only held to 90 %.
+            "sdsvao" => a.assert_bounds(name, 0.90, 2.1e-4),
+            // Their maps keep whichever hits the any-hit order offers (tests/vulkan_svao.rs
+            // derives the full-resolution bounds); here the bound of tests/ray_query.rs.
+            _ if RAY_TRACED.contains(name) => a.assert_bounds(name, 0.99, 1e-4),
             _ => a.assert_bounds(name, common::agreement::MIN_WITHIN, common::agreement::MAX_MSE),
         }
     }
@@ -185,4 +201,27 @@ fn an_odd_target_is_refused() {
     let (_, frame) = common::builtin_frame("sponza", 64, 64, 7);
     assert!(t.graph(&frame.desc()).is_err());
     assert!(Technique::parse("gtao:resolution=quarter").unwrap_err().contains("full|half|half-nearest"));
+}
+
+/// A ray-traced technique at half resolution starts its rays on the surface: the half G-buffer's
+/// depth is the kept pixel's tangent plane seen through the half texel's centre (spec
+/// half-resolution §2), not the kept depth half a pixel off, which on a slope puts the point
+/// inside the geometry and darkens the world rays. The hybrid's mean AO at half resolution stays
+/// within `MAX_DARKENING` of its full-resolution mean: a fifth of the darkening measured with the
+/// kept depth as it is (0.315, sponza at 320×180; with the plane's depth: 0.022).
+#[test]
+fn ray_traced_half_resolution_starts_on_the_surface() {
+    const MAX_DARKENING: f64 = 0.06;
+    let (scene, frame) = common::builtin_frame("sponza", 320, 180, 16);
+    let cpu = CpuRenderer::new(&scene);
+    let (gbuffer, _) = cpu.gbuffer(&frame, &no_progress);
+    let view = frame.camera.view;
+    let t = Technique::named("hybrid").unwrap();
+    let full = cpu.run(&frame, &gbuffer, &t, &no_progress).ao_final;
+    let half = cpu.run(&frame, &gbuffer, &t.with_resolution(Resolution::half()), &no_progress).ao_final;
+    let (a, b) = common::inner_pair(&view, &full, &half);
+    assert_eq!(a.len(), 320 * 180);
+    let darkening = a.iter().zip(&b).map(|(f, h)| (*f - *h) as f64).sum::<f64>() / a.len() as f64;
+    eprintln!("hybrid: mean AO full − half = {darkening:.4}");
+    assert!(darkening.abs() <= MAX_DARKENING, "hybrid at half resolution is darker by {darkening:.4}");
 }

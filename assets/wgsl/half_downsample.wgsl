@@ -41,105 +41,135 @@ var<storage, read_write> half_depth: type_7;
 var<storage, read_write> half_normals: type_10;
 
 fn function_() {
-    var phi_93_: bool;
-    var phi_114_: u32;
-    var phi_117_: f32;
-    var phi_119_: vec2<u32>;
-    var phi_157_: bool;
-    var phi_168_: bool;
-    var phi_169_: bool;
-    var phi_175_: vec2<u32>;
-    var phi_115_: u32;
-    var phi_118_: f32;
-    var phi_120_: vec2<u32>;
+    var phi_109_: bool;
+    var phi_130_: u32;
+    var phi_133_: f32;
+    var phi_135_: vec2<u32>;
+    var phi_173_: bool;
+    var phi_184_: bool;
+    var phi_185_: bool;
+    var phi_191_: vec2<u32>;
+    var phi_131_: u32;
+    var phi_134_: f32;
+    var phi_136_: vec2<u32>;
     var local: vec2<u32>;
     var local_1: vec2<u32>;
+    var phi_381_: bool;
 
-    let _e19 = id_1;
-    let _e26 = params.member.member_1.member[0u];
-    let _e31 = select(select(u32(_e26), 0u, (_e26 < 0f)), 4294967295u, (_e26 > 4294967000f));
-    let _e36 = params.member.member_1.member[1u];
-    if (_e19.x >= _e31) {
+    let _e31 = id_1;
+    let _e38 = params.member.member_1.member[0u];
+    let _e43 = select(select(u32(_e38), 0u, (_e38 < 0f)), 4294967295u, (_e38 > 4294967000f));
+    let _e48 = params.member.member_1.member[1u];
+    if (_e31.x >= _e43) {
     } else {
-        if (_e19.y >= select(select(u32(_e36), 0u, (_e36 < 0f)), 4294967295u, (_e36 > 4294967000f))) {
+        if (_e31.y >= select(select(u32(_e48), 0u, (_e48 < 0f)), 4294967295u, (_e48 > 4294967000f))) {
         } else {
-            let _e46 = params.member.member_2;
-            if (_e46 == 0u) {
-                phi_93_ = (((_e19.x + _e19.y) & 1u) == 1u);
+            let _e58 = params.member.member_2;
+            if (_e58 == 0u) {
+                phi_109_ = (((_e31.x + _e31.y) & 1u) == 1u);
             } else {
-                phi_93_ = false;
+                phi_109_ = false;
             }
-            let _e52 = phi_93_;
-            let _e53 = (2u * _e19.x);
-            let _e54 = (2u * _e19.y);
-            let _e60 = params.member.member.member[0u];
-            let _e65 = select(select(u32(_e60), 0u, (_e60 < 0f)), 4294967295u, (_e60 > 4294967000f));
-            let _e70 = depth.member[((_e54 * _e65) + _e53)];
-            phi_114_ = 1u;
-            phi_117_ = _e70;
-            phi_119_ = vec2<u32>(_e53, _e54);
+            let _e64 = phi_109_;
+            let _e65 = (2u * _e31.x);
+            let _e66 = (2u * _e31.y);
+            let _e72 = params.member.member.member[0u];
+            let _e77 = select(select(u32(_e72), 0u, (_e72 < 0f)), 4294967295u, (_e72 > 4294967000f));
+            let _e82 = depth.member[((_e66 * _e77) + _e65)];
+            phi_130_ = 1u;
+            phi_133_ = _e82;
+            phi_135_ = vec2<u32>(_e65, _e66);
             loop {
-                let _e72 = phi_114_;
-                let _e74 = phi_117_;
-                let _e76 = phi_119_;
-                local = _e76;
-                local_1 = _e76;
-                let _e77 = (_e72 < 4u);
-                if _e77 {
-                    let _e81 = (_e53 + (_e72 & 1u));
-                    let _e82 = (_e54 + (_e72 >> bitcast<u32>(1i)));
-                    let _e87 = depth.member[((_e82 * _e65) + _e81)];
-                    if _e52 {
-                        phi_157_ = select(true, false, (_e87 > _e74));
+                let _e84 = phi_130_;
+                let _e86 = phi_133_;
+                let _e88 = phi_135_;
+                local = _e88;
+                local_1 = _e88;
+                let _e89 = (_e84 < 4u);
+                if _e89 {
+                    let _e93 = (_e65 + (_e84 & 1u));
+                    let _e94 = (_e66 + (_e84 >> bitcast<u32>(1i)));
+                    let _e99 = depth.member[((_e94 * _e77) + _e93)];
+                    if _e64 {
+                        phi_173_ = select(true, false, (_e99 > _e86));
                     } else {
-                        phi_157_ = true;
+                        phi_173_ = true;
                     }
-                    let _e91 = phi_157_;
-                    if _e91 {
-                        if _e52 {
-                            phi_168_ = false;
+                    let _e103 = phi_173_;
+                    if _e103 {
+                        if _e64 {
+                            phi_184_ = false;
                         } else {
-                            phi_168_ = (_e87 < _e74);
+                            phi_184_ = (_e99 < _e86);
                         }
-                        let _e94 = phi_168_;
-                        phi_169_ = _e94;
+                        let _e106 = phi_184_;
+                        phi_185_ = _e106;
                     } else {
-                        phi_169_ = true;
+                        phi_185_ = true;
                     }
-                    let _e96 = phi_169_;
-                    if _e96 {
-                        phi_175_ = vec2<u32>(_e81, _e82);
+                    let _e108 = phi_185_;
+                    if _e108 {
+                        phi_191_ = vec2<u32>(_e93, _e94);
                     } else {
-                        phi_175_ = _e76;
+                        phi_191_ = _e88;
                     }
-                    let _e99 = phi_175_;
-                    phi_115_ = (_e72 + 1u);
-                    phi_118_ = select(_e74, _e87, _e96);
-                    phi_120_ = _e99;
+                    let _e111 = phi_191_;
+                    phi_131_ = (_e84 + 1u);
+                    phi_134_ = select(_e86, _e99, _e108);
+                    phi_136_ = _e111;
                 } else {
-                    phi_115_ = u32();
-                    phi_118_ = f32();
-                    phi_120_ = vec2<u32>();
+                    phi_131_ = u32();
+                    phi_134_ = f32();
+                    phi_136_ = vec2<u32>();
                 }
-                let _e103 = phi_115_;
-                let _e105 = phi_118_;
-                let _e107 = phi_120_;
+                let _e115 = phi_131_;
+                let _e117 = phi_134_;
+                let _e119 = phi_136_;
                 continue;
                 continuing {
-                    phi_114_ = _e103;
-                    phi_117_ = _e105;
-                    phi_119_ = _e107;
-                    break if !(_e77);
+                    phi_130_ = _e115;
+                    phi_133_ = _e117;
+                    phi_135_ = _e119;
+                    break if !(_e89);
                 }
             }
-            let _e110 = local;
-            let _e113 = local_1;
-            let _e116 = ((_e113.y * _e65) + _e110.x);
-            let _e118 = ((_e19.y * _e31) + _e19.x);
-            let _e121 = depth.member[_e116];
-            half_depth.member[_e118] = _e121;
-            let _e126 = normals.member[_e116];
-            half_normals.member[_e118] = _e126;
+            let _e122 = local;
+            let _e125 = local_1;
+            let _e128 = ((_e125.y * _e77) + _e122.x);
+            let _e131 = depth.member[_e128];
+            let _e134 = normals.member[_e128];
+            let _e137 = f32(bitcast<i32>((_e134 & 255u)));
+            let _e141 = (select(_e137, (_e137 - 256f), (_e137 >= 128f)) * 0.007874016f);
+            let _e144 = select(-1f, _e141, ((_e141 > -1f) || false));
+            let _e149 = f32(bitcast<i32>(((_e134 >> bitcast<u32>(8u)) & 255u)));
+            let _e153 = (select(_e149, (_e149 - 256f), (_e149 >= 128f)) * 0.007874016f);
+            let _e156 = select(-1f, _e153, ((_e153 > -1f) || false));
+            let _e158 = (1f - abs(_e144));
+            let _e159 = abs(_e156);
+            let _e160 = (_e158 - _e159);
+            let _e161 = (_e160 < 0f);
+            let _e169 = select(_e144, ((1f - _e159) * select(1f, -1f, (_e144 < 0f))), _e161);
+            let _e170 = select(_e156, (_e158 * select(1f, -1f, (_e156 < 0f))), _e161);
+            let _e177 = (1f / sqrt((((_e169 * _e169) + (_e170 * _e170)) + (_e160 * _e160))));
+            let _e178 = (_e169 * _e177);
+            let _e179 = (_e170 * _e177);
+            let _e180 = (_e160 * _e177);
+            let _e197 = params.member.member_1.member_1[0u];
+            let _e203 = params.member.member_1.member_1[1u];
+            let _e221 = params.member.member.member[1u];
+            let _e232 = params.member.member.member_1[0u];
+            let _e239 = params.member.member.member_1[1u];
+            let _e247 = ((((_e178 * ((((((f32(bitcast<i32>(_e122.x)) + 0.5f) / _e72) * 2f) - 1f) * _e131) * _e232)) + (_e179 * ((((((f32(bitcast<i32>(_e125.y)) + 0.5f) / _e221) * -2f) + 1f) * _e131) * _e239))) + (_e180 * -(_e131))) / (((_e178 * (((((f32(bitcast<i32>(_e31.x)) + 0.5f) / _e38) * 2f) - 1f) * _e197)) + (_e179 * (((((f32(bitcast<i32>(_e31.y)) + 0.5f) / _e48) * -2f) + 1f) * _e203))) + (_e180 * -1f)));
+            let _e251 = params.member.member.member_3;
+            if select(false, (_e131 < _e251), (_e131 > 0f)) {
+                phi_381_ = select(true, false, (abs((_e247 - _e131)) <= (0.1f * _e131)));
+            } else {
+                phi_381_ = true;
+            }
+            let _e261 = phi_381_;
+            let _e264 = ((_e31.y * _e43) + _e31.x);
+            half_depth.member[_e264] = select(_e247, _e131, _e261);
+            half_normals.member[_e264] = _e134;
         }
     }
     return;

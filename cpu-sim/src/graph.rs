@@ -524,12 +524,7 @@ mod runners {
         let (depth, normals) = (io.read(DEPTH), io.read(NORMALS));
         half_depth.par_chunks_mut(width).zip(half_normals.par_chunks_mut(width)).enumerate().for_each(|(y, (d, n))| {
             for (x, (d, n)) in d.iter_mut().zip(n).enumerate() {
-                let i = params.view.index(halfres::kept_pixel(
-                    &params,
-                    depth,
-                    aokit_shaders::glam::uvec2(x as u32, y as u32),
-                ));
-                (*d, *n) = (depth[i], normals[i]);
+                (*d, *n) = halfres::half_texel(&params, depth, normals, aokit_shaders::glam::uvec2(x as u32, y as u32));
             }
         });
     }

@@ -122,7 +122,8 @@ impl Extent {
     /// The same extent of the half-resolution target `(W/2)×(H/2)` with guard band `g/2` (`W`,
     /// `H`, `g` even; spec half-resolution §1), as an extent of the full target: the full target
     /// is [`Extent::Reduced`] by 2, a reduced map by twice its divisor (`ceil(ceil(W/2)/d) =
-    /// ceil(W/2d)`), MIP `k` is MIP `k + 1`. Refused for an extent already halved.
+    /// ceil(W/2d)`), MIP `k` is MIP `k + 1`. Refused for the half-target forms of the inner
+    /// image and of pairs ([`Extent::HalfInner`], [`Extent::HalfPairs`]), which have none.
     pub fn halved(self) -> Result<Extent, String> {
         Ok(match self {
             Extent::Full => Extent::Reduced { divisor: 2, border: 0 },

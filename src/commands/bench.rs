@@ -35,6 +35,7 @@ pub fn run(args: BenchArgs) -> Result<(), String> {
     }
     let technique = args.options.technique(&args.technique)?;
     let (scene, frame) = resolve(&args.frame)?;
+    aokit::technique::check_graphs([&technique], &frame)?;
     let renderer = renderer(&args.frame, &scene)?;
     let total = args.warmup + args.frames;
     let bar = ProgressBar::new(total as u64)

@@ -39,7 +39,9 @@ pub fn run(args: CompareArgs) -> Result<(), String> {
     }
     let mut techniques = args.options.techniques(&[&names[..], &[args.reference.as_str()]].concat())?;
     let reference = techniques.pop().expect("the reference is the last");
+    let reference = aokit::technique::reference_at_full_resolution(reference, &args.reference);
     let (scene, frame) = resolve(&args.frame)?;
+    aokit::technique::check_graphs(techniques.iter().chain([&reference]), &frame)?;
     let renderer = renderer(&args.frame, &scene)?;
     let rows = frame.camera.view.size().y as u64 * (2 + techniques.len() as u64);
     let bar = progress_bar(format!("{}: compare on {}", renderer.backend_name(), scene.name), rows);

@@ -71,6 +71,7 @@ pub fn run(args: FrontierArgs) -> Result<(), String> {
             }
             let mut techniques = args.options.techniques(&[&specs[..], &[args.reference.as_str()]].concat())?;
             let reference = techniques.pop().expect("the reference is the last");
+            let reference = aokit::technique::reference_at_full_resolution(reference, &args.reference);
             (reference, Candidate::labelled(techniques), format!("the techniques `{}`", specs.join(",")))
         }
         None => {

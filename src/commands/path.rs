@@ -93,7 +93,9 @@ pub fn run(args: PathArgs) -> Result<(), String> {
     }
     let mut techniques = args.options.techniques(&[&names[..], &[args.reference.as_str()]].concat())?;
     let reference = techniques.pop().expect("the reference is the last");
+    let reference = aokit::technique::reference_at_full_resolution(reference, &args.reference);
     let (scene, base) = resolve(&args.frame)?;
+    aokit::technique::check_graphs(techniques.iter().chain([&reference]), &base)?;
     let renderer = renderer(&args.frame, &scene)?;
     let frames_off = path_frames(&base, &spec, noise, None);
     let frames_on = path_frames(&base, &spec, noise, Some(temporal));

@@ -35,6 +35,16 @@ pub struct RenderArgs {
 pub fn run(args: RenderArgs) -> Result<(), String> {
     let technique = args.options.technique(&args.technique)?;
     let (scene, frame) = resolve(&args.frame)?;
+    aokit::technique::check_graphs([&technique], &frame)?;
+    if technique.resolution() != aokit_shaders::technique::Resolution::Full {
+        // Half resolution keeps only the upsampled final AO (docs/algorithms/half-resolution.md §1).
+        if args.no_blur {
+            return Err("--no-blur: at half resolution only the upsampled final AO exists".into());
+        }
+        if args.bent_out.is_some() {
+            return Err("--bent-out: at half resolution the technique's bent normals are not upsampled".into());
+        }
+    }
     let renderer = renderer(&args.frame, &scene)?;
     let rows = 2 * frame.camera.view.size().y as u64;
     let bar = progress_bar(format!("{} G-buffer + {}", renderer.backend_name(), technique.name()), rows);

@@ -39,6 +39,7 @@ pub fn run(args: ScalingArgs) -> Result<(), String> {
         return Err("--frames must be at least 1".into());
     }
     let (scene, frame) = resolve(&args.frame)?;
+    aokit::technique::check_graphs(&techniques, &frame)?;
     let mut rows = Vec::new();
     println!("{:>6} {:>10} {:<10} {:>10}  passes (median ms)", "copies", "triangles", "technique", "total ms");
     for &k in &copies {

@@ -12,7 +12,7 @@ pub mod settings;
 use crate::common::ViewParams;
 use crate::common::lanes::{LaneVec3, Lanes};
 use crate::common::math::is_valid_depth;
-use crate::common::normal_codec::decode_normal_lanes;
+use crate::common::normal_codec::{decode_normal, decode_normal_lanes};
 use crate::common::read::{read, write};
 use crate::glam::{UVec2, UVec3};
 use spirv_std::spirv;
@@ -67,8 +67,33 @@ pub fn kept_pixel(params: &HalfParams, depth: &[f32], q: UVec2) -> UVec2 {
     best
 }
 
-/// The downsample, one invocation per texel of the half target: its depth and normal are those
-/// of [`kept_pixel`] (one pixel's pair, never a mix).
+/// Largest relative change [`half_texel`] makes to the kept pixel's depth when it moves the point
+/// along the kept pixel's tangent plane to the half texel's ray (spec half-resolution §2): beyond
+/// it the plane runs almost along the ray, and the kept depth is used as it is.
+pub const MAX_PLANE_SHIFT: f32 = 0.1;
+
+/// Half texel `q`'s depth and encoded normal (spec half-resolution §2): [`kept_pixel`]'s normal,
+/// and the depth at which the ray through `q`'s centre meets the kept pixel's tangent plane,
+/// `d = (n·Xₖ)/(n·r)` with `Xₖ` the kept pixel's view position and `r` the ray at unit depth, so
+/// that the technique's reconstruction of `q`'s position lies on the kept surface rather than up
+/// to ½ pixel off it (below it, on a slope: a ray-traced technique would start inside the
+/// geometry). The kept depth as it is where that moves it by more than [`MAX_PLANE_SHIFT`] or
+/// the pixel is background.
+#[inline]
+pub fn half_texel(params: &HalfParams, depth: &[f32], normals: &[u32], q: UVec2) -> (f32, u32) {
+    let (view, half) = (&params.view, &params.half);
+    let kept = kept_pixel(params, depth, q);
+    let i = view.index(kept);
+    let (d, code) = unsafe { (read(depth, i), read(normals, i)) };
+    let n = decode_normal(code);
+    let along = n.dot(half.uv_to_view(half.pixel_uv(q), 1.0));
+    let on_plane = n.dot(view.uv_to_view(view.pixel_uv(kept), d)) / along;
+    let keep_plane = is_valid_depth(d, view.far) && Lanes::abs(on_plane - d) <= MAX_PLANE_SHIFT * d;
+    (if keep_plane { on_plane } else { d }, code)
+}
+
+/// The downsample, one invocation per texel of the half target: [`half_texel`]'s depth and
+/// normal (one pixel's surface, never a mix).
 #[crate::kernel]
 #[spirv(compute(threads(8, 8), entry_point_name = "half_downsample"))]
 pub fn half_downsample(
@@ -84,11 +109,11 @@ pub fn half_downsample(
     if q.x >= size.x || q.y >= size.y {
         return;
     }
-    let i = params.view.index(kept_pixel(params, depth, q));
+    let (d, n) = half_texel(params, depth, normals, q);
     let j = params.half.index(q);
     unsafe {
-        write(half_depth, j, read(depth, i));
-        write(half_normals, j, read(normals, i));
+        write(half_depth, j, d);
+        write(half_normals, j, n);
     }
 }
 
@@ -96,8 +121,9 @@ pub fn half_downsample(
 /// of `p`'s bilinear footprint, weights `bᵢ · max(0, 1 − dᵢ/(τ·z·f))` — `bᵢ` the bilinear weight,
 /// `dᵢ = |n·(Xᵢ − X)|` the distance of tap `i`'s view position from `p`'s tangent plane (position
 /// `X`, normal `n` from the full-resolution depth and normals), `z·f` the pixel's footprint —
-/// normalized; where every weight is 0 (no tap on `p`'s surface), the AO of the tap nearest the
-/// plane. A background pixel takes its bilinear footprint.
+/// normalized; a tap whose half texel is background gets weight 0. Where every weight is 0 (no
+/// tap on `p`'s surface), the AO of the valid tap nearest the plane, or 1 (unoccluded) where
+/// every tap is background. A background pixel takes its plain bilinear footprint.
 #[inline]
 pub fn upsample_pixel(
     params: &HalfParams,
@@ -144,7 +170,8 @@ pub fn upsample_lanes<L: Lanes>(
     // Taps clamped to the half inner image [g/2, W/2 − g/2 − 1]: its guard band holds no AO.
     let size = half.size();
     let g = half.guard as f32;
-    let clamp = |b: L, d: f32, n: u32| (b + d).clamp_between(L::splat(g), L::splat((n - half.guard - 1) as f32));
+    let clamp =
+        |b: L, d: f32, extent: u32| (b + d).clamp_between(L::splat(g), L::splat((extent - half.guard - 1) as f32));
     let columns = [clamp(bx, 0.0, size.x), clamp(bx, 1.0, size.x)];
     let rows = [clamp(by, 0.0, size.y), clamp(by, 1.0, size.y)];
     let column_terms = [column(columns[0], half.res.x), column(columns[1], half.res.x)];

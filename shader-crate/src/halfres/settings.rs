@@ -10,13 +10,14 @@ use crate::graph::{
 };
 
 /// Default plane tolerance `τ` of the upsample, in pixel footprints (spec half-resolution §3.2):
-/// twice the largest distance, 0.71 footprints, of a tap on the pixel's own plane.
+/// about twice the largest distance, 0.71 footprints, of a tap on the pixel's own plane.
 pub const PLANE_TOLERANCE: f32 = 1.5;
 
 /// The half-resolution depth and normals the downsample writes.
 pub const HALF_DEPTH: &str = "half_linear_depth";
 pub const HALF_NORMALS: &str = "half_view_normals";
-/// The upsampled AO: the graph's output at half resolution.
+/// The upsampled AO, on the full target: the graph's output when the technique runs at half
+/// resolution.
 pub const OUTPUT: &str = "half_upsampled_ao";
 
 /// Which pixel of each 2×2 block the downsample keeps (spec half-resolution §2).
@@ -33,8 +34,8 @@ pub enum Pick {
 pub struct HalfSettings {
     /// \[`Pick::Checkerboard`\]
     pub pick: Pick,
-    /// Plane tolerance `τ` in pixel footprints, in (0, ∞]; ∞ turns the plane weight off
-    /// \[[`PLANE_TOLERANCE`]\].
+    /// Plane tolerance `τ` in pixel footprints, in (0, ∞]; ∞ turns the plane weight off (the
+    /// taps on background still get none) \[[`PLANE_TOLERANCE`]\].
     pub plane_tolerance: f32,
 }
 
@@ -45,8 +46,8 @@ impl Default for HalfSettings {
 }
 
 impl HalfSettings {
-    /// The upsample with its plane weight off: plain bilinear (what the edge test must tell
-    /// apart).
+    /// The upsample with its plane weight off: bilinear over the taps that are not background
+    /// (what the edge test must tell apart).
     pub fn bilinear() -> HalfSettings {
         HalfSettings { plane_tolerance: f32::INFINITY, ..HalfSettings::default() }
     }
@@ -105,9 +106,15 @@ impl Resolution {
 pub fn half_view(view: &ViewParams) -> Result<ViewParams, String> {
     let size = view.size();
     let even = size.x.is_multiple_of(2) && size.y.is_multiple_of(2) && view.guard.is_multiple_of(2);
-    if !even || size.x < 2 * view.guard + 2 || size.y < 2 * view.guard + 2 {
+    if !even {
         return Err(format!(
             "half resolution needs an even target and guard band: this one is {}×{} with a {}-pixel guard band",
+            size.x, size.y, view.guard
+        ));
+    }
+    if size.x < 2 * view.guard + 2 || size.y < 2 * view.guard + 2 {
+        return Err(format!(
+            "half resolution needs at least 2×2 pixels inside the guard band: this target is {}×{} with a {}-pixel guard band",
             size.x, size.y, view.guard
         ));
     }
