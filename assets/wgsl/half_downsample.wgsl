@@ -41,135 +41,95 @@ var<storage, read_write> half_depth: type_7;
 var<storage, read_write> half_normals: type_10;
 
 fn function_() {
-    var phi_109_: bool;
-    var phi_130_: u32;
-    var phi_133_: f32;
-    var phi_135_: vec2<u32>;
-    var phi_173_: bool;
-    var phi_184_: bool;
-    var phi_185_: bool;
-    var phi_191_: vec2<u32>;
-    var phi_131_: u32;
-    var phi_134_: f32;
-    var phi_136_: vec2<u32>;
+    var phi_132_: u32;
+    var phi_135_: f32;
+    var phi_137_: vec2<u32>;
+    var phi_133_: u32;
+    var phi_136_: f32;
+    var phi_138_: vec2<u32>;
     var local: vec2<u32>;
     var local_1: vec2<u32>;
-    var phi_381_: bool;
 
-    let _e31 = id_1;
-    let _e38 = params.member.member_1.member[0u];
-    let _e43 = select(select(u32(_e38), 0u, (_e38 < 0f)), 4294967295u, (_e38 > 4294967000f));
-    let _e48 = params.member.member_1.member[1u];
-    if (_e31.x >= _e43) {
+    let _e30 = id_1;
+    let _e37 = params.member.member_1.member[0u];
+    let _e42 = select(select(u32(_e37), 0u, (_e37 < 0f)), 4294967295u, (_e37 > 4294967000f));
+    let _e47 = params.member.member_1.member[1u];
+    if (_e30.x >= _e42) {
     } else {
-        if (_e31.y >= select(select(u32(_e48), 0u, (_e48 < 0f)), 4294967295u, (_e48 > 4294967000f))) {
+        if (_e30.y >= select(select(u32(_e47), 0u, (_e47 < 0f)), 4294967295u, (_e47 > 4294967000f))) {
         } else {
-            let _e58 = params.member.member_2;
-            if (_e58 == 0u) {
-                phi_109_ = (((_e31.x + _e31.y) & 1u) == 1u);
-            } else {
-                phi_109_ = false;
-            }
-            let _e64 = phi_109_;
-            let _e65 = (2u * _e31.x);
-            let _e66 = (2u * _e31.y);
-            let _e72 = params.member.member.member[0u];
-            let _e77 = select(select(u32(_e72), 0u, (_e72 < 0f)), 4294967295u, (_e72 > 4294967000f));
-            let _e82 = depth.member[((_e66 * _e77) + _e65)];
-            phi_130_ = 1u;
-            phi_133_ = _e82;
-            phi_135_ = vec2<u32>(_e65, _e66);
+            let _e60 = params.member.member_2;
+            let _e62 = select(false, (_e60 == 0u), (((_e30.x + _e30.y) & 1u) == 1u));
+            let _e63 = (_e30.x + _e30.x);
+            let _e64 = (_e30.y + _e30.y);
+            let _e70 = params.member.member.member[0u];
+            let _e75 = select(select(u32(_e70), 0u, (_e70 < 0f)), 4294967295u, (_e70 > 4294967000f));
+            let _e80 = depth.member[((_e64 * _e75) + _e63)];
+            phi_132_ = 1u;
+            phi_135_ = _e80;
+            phi_137_ = vec2<u32>(_e63, _e64);
             loop {
-                let _e84 = phi_130_;
-                let _e86 = phi_133_;
-                let _e88 = phi_135_;
-                local = _e88;
-                local_1 = _e88;
-                let _e89 = (_e84 < 4u);
-                if _e89 {
-                    let _e93 = (_e65 + (_e84 & 1u));
-                    let _e94 = (_e66 + (_e84 >> bitcast<u32>(1i)));
-                    let _e99 = depth.member[((_e94 * _e77) + _e93)];
-                    if _e64 {
-                        phi_173_ = select(true, false, (_e99 > _e86));
-                    } else {
-                        phi_173_ = true;
-                    }
-                    let _e103 = phi_173_;
-                    if _e103 {
-                        if _e64 {
-                            phi_184_ = false;
-                        } else {
-                            phi_184_ = (_e99 < _e86);
-                        }
-                        let _e106 = phi_184_;
-                        phi_185_ = _e106;
-                    } else {
-                        phi_185_ = true;
-                    }
-                    let _e108 = phi_185_;
-                    if _e108 {
-                        phi_191_ = vec2<u32>(_e93, _e94);
-                    } else {
-                        phi_191_ = _e88;
-                    }
-                    let _e111 = phi_191_;
-                    phi_131_ = (_e84 + 1u);
-                    phi_134_ = select(_e86, _e99, _e108);
-                    phi_136_ = _e111;
+                let _e82 = phi_132_;
+                let _e84 = phi_135_;
+                let _e86 = phi_137_;
+                local = _e86;
+                local_1 = _e86;
+                let _e87 = (_e82 < 4u);
+                if _e87 {
+                    let _e89 = (_e63 + (_e82 & 1u));
+                    let _e92 = (_e64 + (_e82 >> bitcast<u32>(1i)));
+                    let _e97 = depth.member[((_e92 * _e75) + _e89)];
+                    let _e103 = select(select(false, (_e97 < _e84), !(_e62)), true, select(false, (_e97 > _e84), _e62));
+                    phi_133_ = (_e82 + 1u);
+                    phi_136_ = select(_e84, _e97, _e103);
+                    phi_138_ = vec2<u32>(select(_e86.x, _e89, _e103), select(_e86.y, _e92, _e103));
                 } else {
-                    phi_131_ = u32();
-                    phi_134_ = f32();
-                    phi_136_ = vec2<u32>();
+                    phi_133_ = u32();
+                    phi_136_ = f32();
+                    phi_138_ = vec2<u32>();
                 }
-                let _e115 = phi_131_;
-                let _e117 = phi_134_;
-                let _e119 = phi_136_;
+                let _e112 = phi_133_;
+                let _e114 = phi_136_;
+                let _e116 = phi_138_;
                 continue;
                 continuing {
-                    phi_130_ = _e115;
-                    phi_133_ = _e117;
-                    phi_135_ = _e119;
-                    break if !(_e89);
+                    phi_132_ = _e112;
+                    phi_135_ = _e114;
+                    phi_137_ = _e116;
+                    break if !(_e87);
                 }
             }
-            let _e122 = local;
-            let _e125 = local_1;
-            let _e128 = ((_e125.y * _e77) + _e122.x);
-            let _e131 = depth.member[_e128];
-            let _e134 = normals.member[_e128];
-            let _e137 = f32(bitcast<i32>((_e134 & 255u)));
-            let _e141 = (select(_e137, (_e137 - 256f), (_e137 >= 128f)) * 0.007874016f);
-            let _e144 = select(-1f, _e141, ((_e141 > -1f) || false));
-            let _e149 = f32(bitcast<i32>(((_e134 >> bitcast<u32>(8u)) & 255u)));
-            let _e153 = (select(_e149, (_e149 - 256f), (_e149 >= 128f)) * 0.007874016f);
-            let _e156 = select(-1f, _e153, ((_e153 > -1f) || false));
-            let _e158 = (1f - abs(_e144));
-            let _e159 = abs(_e156);
-            let _e160 = (_e158 - _e159);
-            let _e161 = (_e160 < 0f);
-            let _e169 = select(_e144, ((1f - _e159) * select(1f, -1f, (_e144 < 0f))), _e161);
-            let _e170 = select(_e156, (_e158 * select(1f, -1f, (_e156 < 0f))), _e161);
-            let _e177 = (1f / sqrt((((_e169 * _e169) + (_e170 * _e170)) + (_e160 * _e160))));
-            let _e178 = (_e169 * _e177);
-            let _e179 = (_e170 * _e177);
-            let _e180 = (_e160 * _e177);
-            let _e197 = params.member.member_1.member_1[0u];
-            let _e203 = params.member.member_1.member_1[1u];
-            let _e221 = params.member.member.member[1u];
-            let _e232 = params.member.member.member_1[0u];
-            let _e239 = params.member.member.member_1[1u];
-            let _e247 = ((((_e178 * ((((((f32(bitcast<i32>(_e122.x)) + 0.5f) / _e72) * 2f) - 1f) * _e131) * _e232)) + (_e179 * ((((((f32(bitcast<i32>(_e125.y)) + 0.5f) / _e221) * -2f) + 1f) * _e131) * _e239))) + (_e180 * -(_e131))) / (((_e178 * (((((f32(bitcast<i32>(_e31.x)) + 0.5f) / _e38) * 2f) - 1f) * _e197)) + (_e179 * (((((f32(bitcast<i32>(_e31.y)) + 0.5f) / _e48) * -2f) + 1f) * _e203))) + (_e180 * -1f)));
-            let _e251 = params.member.member.member_3;
-            if select(false, (_e131 < _e251), (_e131 > 0f)) {
-                phi_381_ = select(true, false, (abs((_e247 - _e131)) <= (0.1f * _e131)));
-            } else {
-                phi_381_ = true;
-            }
-            let _e261 = phi_381_;
-            let _e264 = ((_e31.y * _e43) + _e31.x);
-            half_depth.member[_e264] = select(_e247, _e131, _e261);
-            half_normals.member[_e264] = _e134;
+            let _e119 = local;
+            let _e122 = local_1;
+            let _e125 = ((_e122.y * _e75) + _e119.x);
+            let _e128 = depth.member[_e125];
+            let _e131 = normals.member[_e125];
+            let _e134 = f32(bitcast<i32>((_e131 & 255u)));
+            let _e138 = (select(_e134, (_e134 - 256f), (_e134 >= 128f)) * 0.007874016f);
+            let _e141 = select(-1f, _e138, ((_e138 > -1f) || false));
+            let _e146 = f32(bitcast<i32>(((_e131 >> bitcast<u32>(8u)) & 255u)));
+            let _e150 = (select(_e146, (_e146 - 256f), (_e146 >= 128f)) * 0.007874016f);
+            let _e153 = select(-1f, _e150, ((_e150 > -1f) || false));
+            let _e155 = (1f - abs(_e141));
+            let _e156 = abs(_e153);
+            let _e157 = (_e155 - _e156);
+            let _e158 = (_e157 < 0f);
+            let _e166 = select(_e141, ((1f - _e156) * select(1f, -1f, (_e141 < 0f))), _e158);
+            let _e167 = select(_e153, (_e155 * select(1f, -1f, (_e153 < 0f))), _e158);
+            let _e174 = (1f / sqrt((((_e166 * _e166) + (_e167 * _e167)) + (_e157 * _e157))));
+            let _e175 = (_e166 * _e174);
+            let _e176 = (_e167 * _e174);
+            let _e177 = (_e157 * _e174);
+            let _e182 = params.member.member.member_1[0u];
+            let _e187 = params.member.member.member_1[1u];
+            let _e192 = params.member.member.member[1u];
+            let _e198 = (2f * _e182);
+            let _e204 = (2f * _e187);
+            let _e229 = ((((_e175 * (((f32(bitcast<i32>(_e119.x)) + 0.5f) * (_e198 / _e70)) - _e182)) + (_e176 * (-(((f32(bitcast<i32>(_e122.y)) + 0.5f) * (_e204 / _e192))) + _e187))) - _e177) / (((_e175 * (((f32(bitcast<i32>(_e30.x)) + 0.5f) * (_e198 / _e37)) - _e182)) + (_e176 * (-(((f32(bitcast<i32>(_e30.y)) + 0.5f) * (_e204 / _e47))) + _e187))) - _e177));
+            let _e233 = params.member.member.member_3;
+            let _e244 = ((_e30.y * _e42) + _e30.x);
+            half_depth.member[_e244] = select(_e128, (_e128 * _e229), select(false, (abs((_e229 - 1f)) <= 0.1f), select(false, (_e128 < _e233), (_e128 > 0f))));
+            half_normals.member[_e244] = _e131;
         }
     }
     return;

@@ -513,18 +513,21 @@ mod runners {
         io.write(EDGES).copy_from_slice(&edges);
     }
 
-    /// The half-resolution downsample (`aokit_shaders::halfres`) over the half target, a row of
-    /// texels per task.
+    /// The half-resolution downsample (`aokit_shaders::halfres`) over the half target, eight
+    /// texels a call.
     pub fn half_downsample(io: &mut PassIo) {
+        use aokit_shaders::common::lanes::{F32x8, Lanes};
         use halfres::half_downsample::*;
-        use rayon::prelude::*;
         let params: halfres::HalfParams = io.push();
-        let width = params.half.size().x as usize;
+        let size = params.half.size();
         let (half_depth, half_normals) = (io.write(HALF_DEPTH), io.write(HALF_NORMALS));
         let (depth, normals) = (io.read(DEPTH), io.read(NORMALS));
-        half_depth.par_chunks_mut(width).zip(half_normals.par_chunks_mut(width)).enumerate().for_each(|(y, (d, n))| {
-            for (x, (d, n)) in d.iter_mut().zip(n).enumerate() {
-                (*d, *n) = halfres::half_texel(&params, depth, normals, aokit_shaders::glam::uvec2(x as u32, y as u32));
+        let (xs, ys) = (0..size.x, 0..size.y);
+        crate::screen::tiled_lanes2(half_depth, half_normals, size.x, xs, ys, 8, &crate::no_progress, |first, d, n| {
+            let q = crate::screen::lanes_of_run(first, d.len());
+            let (depths, codes) = halfres::half_texel_lanes::<F32x8>(&params, depth, normals, q);
+            for (i, (d, n)) in d.iter_mut().zip(n).enumerate() {
+                (*d, *n) = (F32x8::lane(depths, i), F32x8::index_lane(codes, i));
             }
         });
     }

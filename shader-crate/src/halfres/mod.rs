@@ -12,8 +12,8 @@ pub mod settings;
 use crate::common::ViewParams;
 use crate::common::lanes::{LaneVec3, Lanes};
 use crate::common::math::is_valid_depth;
-use crate::common::normal_codec::{decode_normal, decode_normal_lanes};
-use crate::common::read::{read, write};
+use crate::common::normal_codec::decode_normal_lanes;
+use crate::common::read::write;
 use crate::glam::{UVec2, UVec3};
 use spirv_std::spirv;
 
@@ -51,17 +51,29 @@ pub struct HalfParams {
 /// first in row order.
 #[inline]
 pub fn kept_pixel(params: &HalfParams, depth: &[f32], q: UVec2) -> UVec2 {
-    let farthest = params.pick == PICK_CHECKERBOARD && (q.x + q.y) & 1 == 1;
-    let mut best = 2 * q;
-    let mut best_depth = unsafe { read(depth, params.view.index(best)) };
+    kept_pixel_lanes::<f32>(params, depth, q)
+}
+
+/// [`kept_pixel`] for one texel (`L = f32`) or `L::LANES` texels (cpu-sim's eight lanes),
+/// branch-free.
+#[inline]
+pub fn kept_pixel_lanes<L: Lanes>(params: &HalfParams, depth: &[f32], q: L::U2) -> L::U2 {
+    let (qx, qy) = (L::texel_x(q), L::texel_y(q));
+    let one = L::index_splat(1);
+    let odd = L::index_eq((qx + qy) & one, one);
+    let farthest = L::and(odd, L::mask_splat(params.pick == PICK_CHECKERBOARD));
+    let (x0, y0) = (qx + qx, qy + qy);
+    let mut best = L::texel(x0, y0);
+    let mut best_depth = L::gather_index(depth, params.view.index_lanes::<L>(best));
     let mut k = 1;
     while k < 4 {
-        let p = 2 * q + UVec2::new(k & 1, k >> 1);
-        let d = unsafe { read(depth, params.view.index(p)) };
-        if (farthest && d > best_depth) || (!farthest && d < best_depth) {
-            best = p;
-            best_depth = d;
-        }
+        let p = L::texel(x0 + L::index_splat(k & 1), y0 + L::index_splat(k >> 1));
+        let d = L::gather_index(depth, params.view.index_lanes::<L>(p));
+        let better = L::or(L::and(farthest, d.gt(best_depth)), L::and(L::not(farthest), d.lt(best_depth)));
+        let x = L::index_select(better, L::texel_x(p), L::texel_x(best));
+        let y = L::index_select(better, L::texel_y(p), L::texel_y(best));
+        best = L::texel(x, y);
+        best_depth = L::select(better, d, best_depth);
         k += 1;
     }
     best
@@ -81,15 +93,28 @@ pub const MAX_PLANE_SHIFT: f32 = 0.1;
 /// the pixel is background.
 #[inline]
 pub fn half_texel(params: &HalfParams, depth: &[f32], normals: &[u32], q: UVec2) -> (f32, u32) {
+    half_texel_lanes::<f32>(params, depth, normals, q)
+}
+
+/// [`half_texel`] for one texel (`L = f32`) or `L::LANES` texels, branch-free.
+#[inline]
+pub fn half_texel_lanes<L: Lanes>(params: &HalfParams, depth: &[f32], normals: &[u32], q: L::U2) -> (L, L::Index) {
     let (view, half) = (&params.view, &params.half);
-    let kept = kept_pixel(params, depth, q);
-    let i = view.index(kept);
-    let (d, code) = unsafe { (read(depth, i), read(normals, i)) };
-    let n = decode_normal(code);
-    let along = n.dot(half.uv_to_view(half.pixel_uv(q), 1.0));
-    let on_plane = n.dot(view.uv_to_view(view.pixel_uv(kept), d)) / along;
-    let keep_plane = is_valid_depth(d, view.far) && Lanes::abs(on_plane - d) <= MAX_PLANE_SHIFT * d;
-    (if keep_plane { on_plane } else { d }, code)
+    let kept = kept_pixel_lanes::<L>(params, depth, q);
+    let i = view.index_lanes::<L>(kept);
+    let (d, code) = (L::gather_index(depth, i), L::gather_word(normals, i));
+    let n = decode_normal_lanes::<L>(code);
+    // `n·r` for the ray `r = (ndc.x·tx, ndc.y·ty, −1)` through texel `t` of a target `res`
+    // (svao-raysd §1's uv→view at unit depth): `Xₖ = d·rₖ`, so the plane's depth is
+    // `d·(n·rₖ)/(n·r_q)`.
+    let t = view.tan_half_fov;
+    let ray_dot = |texel: L::U2, res: crate::glam::Vec2| {
+        let (x, y) = (L::index_to_float(L::texel_x(texel)), L::index_to_float(L::texel_y(texel)));
+        n.x() * ((x + 0.5) * (2.0 * t.x / res.x) - t.x) + n.y() * (-((y + 0.5) * (2.0 * t.y / res.y)) + t.y) - n.z()
+    };
+    let ratio = ray_dot(kept, view.res) / ray_dot(q, half.res);
+    let keep_plane = L::and(is_valid_depth(d, view.far), (ratio - 1.0).abs().le(L::splat(MAX_PLANE_SHIFT)));
+    (L::select(keep_plane, d * ratio, d), code)
 }
 
 /// The downsample, one invocation per texel of the half target: [`half_texel`]'s depth and
