@@ -1,8 +1,8 @@
 //! Half resolution as a graph transform any technique can take (spec half-resolution): the
 //! G-buffer's depth and normals reduced to half resolution by keeping one pixel of each 2×2
-//! block ([`half_downsample`], spec half-resolution §2), the technique run on that half-size
+//! block ([`half_downsample()`], spec half-resolution §2), the technique run on that half-size
 //! G-buffer, and its AO brought back to the full target by an upsample guided by the
-//! full-resolution depth and normals ([`half_upsample`], spec half-resolution §3).
+//! full-resolution depth and normals ([`half_upsample()`], spec half-resolution §3).
 
 #[cfg(not(target_arch = "spirv"))]
 pub mod settings;

@@ -137,8 +137,8 @@ pub fn half_params(settings: &HalfSettings, view: &ViewParams) -> Result<HalfPar
 }
 
 /// The graph `build` makes for `frame`, at `resolution`: unchanged at full resolution; at half,
-/// `build`'s graph for the half-resolution frame between [`super::half_downsample`] and
-/// [`super::half_upsample`] (spec half-resolution §1). The technique's passes read the
+/// `build`'s graph for the half-resolution frame between [`super::half_downsample()`] and
+/// [`super::half_upsample()`] (spec half-resolution §1). The technique's passes read the
 /// downsampled depth and normals instead of the G-buffer's; its resources and dispatches keep
 /// their half-target sizes as extents of the full target. Its output becomes [`OUTPUT`], which
 /// is also the raw output; the diagnostics (bent normals, refinement buffers) and snapshots,
