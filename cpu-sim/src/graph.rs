@@ -523,9 +523,16 @@ mod runners {
         let (half_depth, half_normals) = (io.write(HALF_DEPTH), io.write(HALF_NORMALS));
         let (depth, normals) = (io.read(DEPTH), io.read(NORMALS));
         let (xs, ys) = (0..size.x, 0..size.y);
+        let width = params.view.size().x as usize;
         crate::screen::tiled_lanes2(half_depth, half_normals, size.x, xs, ys, 8, &crate::no_progress, |first, d, n| {
             let q = crate::screen::lanes_of_run(first, d.len());
-            let (depths, codes) = halfres::half_texel_lanes::<F32x8>(&params, depth, normals, q);
+            // The blocks' depths straight from their two rows (`block_depths`' order), lanes past
+            // the run repeating its last texel as `lanes_of_run` does.
+            let row = |dy: usize| &depth[(2 * first.y as usize + dy) * width..][..width];
+            let last = d.len() - 1;
+            let at = |dx: usize, dy: usize| F32x8::from_lanes(|i| row(dy)[2 * (first.x as usize + i.min(last)) + dx]);
+            let block = [at(0, 0), at(1, 0), at(0, 1), at(1, 1)];
+            let (depths, codes) = halfres::half_texel_of_block::<F32x8>(&params, normals, q, block);
             for (i, (d, n)) in d.iter_mut().zip(n).enumerate() {
                 (*d, *n) = (F32x8::lane(depths, i), F32x8::index_lane(codes, i));
             }

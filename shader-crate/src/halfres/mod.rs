@@ -58,25 +58,59 @@ pub fn kept_pixel(params: &HalfParams, depth: &[f32], q: UVec2) -> UVec2 {
 /// branch-free.
 #[inline]
 pub fn kept_pixel_lanes<L: Lanes>(params: &HalfParams, depth: &[f32], q: L::U2) -> L::U2 {
+    pick_in_block::<L>(params, q, block_depths::<L>(params, depth, q)).0
+}
+
+/// The depths of texel `q`'s block `2q + {0, 1}²`, in row order, read from the full target.
+#[inline]
+pub fn block_depths<L: Lanes>(params: &HalfParams, depth: &[f32], q: L::U2) -> [L; 4] {
+    [
+        block_depth::<L>(params, depth, q, 0, 0),
+        block_depth::<L>(params, depth, q, 1, 0),
+        block_depth::<L>(params, depth, q, 0, 1),
+        block_depth::<L>(params, depth, q, 1, 1),
+    ]
+}
+
+/// The depth of pixel `2q + (dx, dy)` (a function, not a closure: a closure capturing references
+/// is a struct of references, which the SPIR-V back-end's validation refuses).
+#[inline]
+fn block_depth<L: Lanes>(params: &HalfParams, depth: &[f32], q: L::U2, dx: u32, dy: u32) -> L {
+    let (x, y) = (L::texel_x(q), L::texel_y(q));
+    let p = L::texel(x + x + L::index_splat(dx), y + y + L::index_splat(dy));
+    L::gather_index(depth, params.view.index_lanes::<L>(p))
+}
+
+/// One step of [`pick_in_block`]: candidate `(x, y, d)` replaces `best` where it is better.
+#[inline]
+fn better_of<L: Lanes>(
+    farthest: L::Mask,
+    best: (L::Index, L::Index, L),
+    x: L::Index,
+    y: L::Index,
+    d: L,
+) -> (L::Index, L::Index, L) {
+    let better = L::or(L::and(farthest, d.gt(best.2)), L::and(L::not(farthest), d.lt(best.2)));
+    (L::index_select(better, x, best.0), L::index_select(better, y, best.1), L::select(better, d, best.2))
+}
+
+/// The pick rule of [`kept_pixel`] on the block's `depths` (row order, as [`block_depths`]
+/// reads them): the kept pixel and its depth. Unrolled: an array indexed per step would be
+/// indexed per invocation on the GPU.
+#[inline]
+pub fn pick_in_block<L: Lanes>(params: &HalfParams, q: L::U2, depths: [L; 4]) -> (L::U2, L) {
     let (qx, qy) = (L::texel_x(q), L::texel_y(q));
     let one = L::index_splat(1);
     let odd = L::index_eq((qx + qy) & one, one);
     let farthest = L::and(odd, L::mask_splat(params.pick == PICK_CHECKERBOARD));
+    let [d0, d1, d2, d3] = depths;
     let (x0, y0) = (qx + qx, qy + qy);
-    let mut best = L::texel(x0, y0);
-    let mut best_depth = L::gather_index(depth, params.view.index_lanes::<L>(best));
-    let mut k = 1;
-    while k < 4 {
-        let p = L::texel(x0 + L::index_splat(k & 1), y0 + L::index_splat(k >> 1));
-        let d = L::gather_index(depth, params.view.index_lanes::<L>(p));
-        let better = L::or(L::and(farthest, d.gt(best_depth)), L::and(L::not(farthest), d.lt(best_depth)));
-        let x = L::index_select(better, L::texel_x(p), L::texel_x(best));
-        let y = L::index_select(better, L::texel_y(p), L::texel_y(best));
-        best = L::texel(x, y);
-        best_depth = L::select(better, d, best_depth);
-        k += 1;
-    }
-    best
+    let (x1, y1) = (x0 + one, y0 + one);
+    let best = (x0, y0, d0);
+    let best = better_of::<L>(farthest, best, x1, y0, d1);
+    let best = better_of::<L>(farthest, best, x0, y1, d2);
+    let best = better_of::<L>(farthest, best, x1, y1, d3);
+    (L::texel(best.0, best.1), best.2)
 }
 
 /// Largest relative change [`half_texel`] makes to the kept pixel's depth when it moves the point
@@ -99,10 +133,16 @@ pub fn half_texel(params: &HalfParams, depth: &[f32], normals: &[u32], q: UVec2)
 /// [`half_texel`] for one texel (`L = f32`) or `L::LANES` texels, branch-free.
 #[inline]
 pub fn half_texel_lanes<L: Lanes>(params: &HalfParams, depth: &[f32], normals: &[u32], q: L::U2) -> (L, L::Index) {
+    half_texel_of_block::<L>(params, normals, q, block_depths::<L>(params, depth, q))
+}
+
+/// [`half_texel`] from the block's depths (as [`block_depths`] reads them): what cpu-sim calls
+/// with the depths read straight from the block's two rows.
+#[inline]
+pub fn half_texel_of_block<L: Lanes>(params: &HalfParams, normals: &[u32], q: L::U2, depths: [L; 4]) -> (L, L::Index) {
     let (view, half) = (&params.view, &params.half);
-    let kept = kept_pixel_lanes::<L>(params, depth, q);
-    let i = view.index_lanes::<L>(kept);
-    let (d, code) = (L::gather_index(depth, i), L::gather_word(normals, i));
+    let (kept, d) = pick_in_block::<L>(params, q, depths);
+    let code = L::gather_word(normals, view.index_lanes::<L>(kept));
     let n = decode_normal_lanes::<L>(code);
     // `n·r` for the ray `r = (ndc.x·tx, ndc.y·ty, −1)` through texel `t` of a target `res`
     // (svao-raysd §1's uv→view at unit depth): `Xₖ = d·rₖ`, so the plane's depth is
