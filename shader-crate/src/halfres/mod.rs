@@ -130,6 +130,21 @@ pub fn half_texel(params: &HalfParams, depth: &[f32], normals: &[u32], q: UVec2)
     half_texel_lanes::<f32>(params, depth, normals, q)
 }
 
+/// `n.x·(ndc.x·tx)`: the column part of `n·r` for the ray `r = (ndc.x·tx, ndc.y·ty, −1)` through
+/// column `c` of a target `width` wide (svao-raysd §1's uv→view at unit depth), shared by the
+/// downsample's plane depth and the upsample's plane distance.
+#[inline]
+fn column_term<L: Lanes>(n: L::V3, tx: f32, c: L, width: f32) -> L {
+    n.x() * ((c + 0.5) * (2.0 * tx / width) - tx)
+}
+
+/// `n.y·(ndc.y·ty)`: the row part of [`column_term`]'s `n·r`, for row `c` of a target `height`
+/// high.
+#[inline]
+fn row_term<L: Lanes>(n: L::V3, ty: f32, c: L, height: f32) -> L {
+    n.y() * (-((c + 0.5) * (2.0 * ty / height)) + ty)
+}
+
 /// [`half_texel`] for one texel (`L = f32`) or `L::LANES` texels, branch-free.
 #[inline]
 pub fn half_texel_lanes<L: Lanes>(params: &HalfParams, depth: &[f32], normals: &[u32], q: L::U2) -> (L, L::Index) {
@@ -150,7 +165,7 @@ pub fn half_texel_of_block<L: Lanes>(params: &HalfParams, normals: &[u32], q: L:
     let t = view.tan_half_fov;
     let ray_dot = |texel: L::U2, res: crate::glam::Vec2| {
         let (x, y) = (L::index_to_float(L::texel_x(texel)), L::index_to_float(L::texel_y(texel)));
-        n.x() * ((x + 0.5) * (2.0 * t.x / res.x) - t.x) + n.y() * (-((y + 0.5) * (2.0 * t.y / res.y)) + t.y) - n.z()
+        column_term::<L>(n, t.x, x, res.x) + row_term::<L>(n, t.y, y, res.y) - n.z()
     };
     let ratio = ray_dot(kept, view.res) / ray_dot(q, half.res);
     let keep_plane = L::and(is_valid_depth(d, view.far), (ratio - 1.0).abs().le(L::splat(MAX_PLANE_SHIFT)));
@@ -223,8 +238,8 @@ pub fn upsample_lanes<L: Lanes>(
     // `|n·(d·r − X)|`, is `|d·(n·r) − n·X|`; `n·r` splits into a column term, a row term and
     // `−n.z`, each computed once for the two tap columns and the two tap rows.
     let t = view.tan_half_fov;
-    let column = |c: L, width: f32| n.x() * ((c + 0.5) * (2.0 * t.x / width) - t.x);
-    let row = |c: L, height: f32| n.y() * (-((c + 0.5) * (2.0 * t.y / height)) + t.y);
+    let column = |c: L, width: f32| column_term::<L>(n, t.x, c, width);
+    let row = |c: L, height: f32| row_term::<L>(n, t.y, c, height);
     let plane_offset = z * (column(px, view.res.x) + row(py, view.res.y) - n.z());
     let footprint = 2.0 * t.y / view.res.y;
     let inverse_tolerance = L::splat(1.0) / (z * (params.plane_tolerance * footprint));
