@@ -2,7 +2,7 @@
 //! right-handed view space looking down −Z, linear depth `d > 0` along −Z.
 
 use crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
-use crate::glam::{UVec2, Vec2, Vec3, vec2};
+use crate::glam::{UVec2, Vec2, Vec3};
 
 /// Projection of the full render target (inner image plus guard band), as push-constant data.
 #[repr(C)]
@@ -180,7 +180,7 @@ impl Camera {
         Camera {
             world_to_view,
             view_to_world,
-            view: ViewParams { res: full.as_vec2(), tan_half_fov: vec2(tx, ty), near, far, guard, _pad: 0 },
+            view: ViewParams { res: full.as_vec2(), tan_half_fov: Vec2::new(tx, ty), near, far, guard, _pad: 0 },
         }
     }
 

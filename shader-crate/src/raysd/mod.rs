@@ -17,6 +17,7 @@ use crate::common::any_hit::{ACCEPT, CandidateHit, IGNORE};
 use crate::common::float_order::from_ordered_bits;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::hash::wyman_hash;
+use crate::common::lanes::LaneVec2;
 use crate::common::math::{depth_or_far, sat};
 use crate::common::noise::{frame_rotation, rotate};
 use crate::common::tables::sd_jitter;
@@ -188,7 +189,19 @@ fn low_res_texel(q: UVec2, params: &SvaoParams) -> IVec2 {
 /// the full target (spec svao-raysd §7.1, §7.2); where pass 2 reconstructs the texel's layers.
 #[inline]
 pub fn texel_ray_uv(q: UVec2, params: &SvaoParams) -> Vec2 {
-    (low_res_texel(q, params).as_vec2() + sd_jitter(q, params.jitter, params.noise_frame)) / params.sd_low_res.as_vec2()
+    texel_ray_uv_lanes::<f32>(q.x, q.y, params)
+}
+
+/// [`texel_ray_uv`] of SD texels `(x, y)` per lane.
+#[inline]
+pub fn texel_ray_uv_lanes<L: crate::common::lanes::Lanes>(x: L::Index, y: L::Index, params: &SvaoParams) -> L::V2 {
+    let (table, frame) = (params.jitter, params.noise_frame);
+    let jitter =
+        L::v2_from_lanes(move |i| sd_jitter(UVec2::new(L::index_lane(x, i), L::index_lane(y, i)), table, frame));
+    let low = params.sd_low_res.as_vec2();
+    let sg = params.sd_guard as f32;
+    // q − sg is exact in binary32 for any texel, as the integer difference it stands for.
+    L::V2::new((L::index_to_float(x) - sg + jitter.x()) / low.x, (L::index_to_float(y) - sg + jitter.y()) / low.y)
 }
 
 /// The ray of SD texel `q` (spec svao-raysd §7.1): from the camera through the jittered low-res position

@@ -13,6 +13,7 @@ pub use pass1::{Pass1Pixel, pass1_pixel, primary_sample, sd_pixel};
 pub use pass2::{Pass2Pixel, Refine, Refined, pass2_pixel};
 
 use crate::common::camera::Camera;
+use crate::common::lanes::Lanes;
 use crate::common::read::write;
 use crate::glam::{UVec2, uvec2};
 use crate::vao::VaoParams;
@@ -86,7 +87,13 @@ impl SvaoParams {
     /// Row-major index of SD texel `q`.
     #[inline]
     pub fn sd_index(&self, q: UVec2) -> usize {
-        (q.y * self.sd_size().x + q.x) as usize
+        self.sd_index_lanes::<f32>(q.x, q.y) as usize
+    }
+
+    /// [`SvaoParams::sd_index`] of SD texels `(x, y)` per lane.
+    #[inline]
+    pub fn sd_index_lanes<L: Lanes>(&self, x: L::Index, y: L::Index) -> L::Index {
+        y * L::index_splat(self.sd_size().x) + x
     }
 }
 

@@ -6,8 +6,8 @@ use super::{Secondary, SvaoParams, unorm8};
 use crate::common::atomics::AtomicU32Buffer;
 use crate::common::float_order::ordered_bits;
 use crate::common::gbuffer_read::GBuffer;
-use crate::common::lanes::Lanes;
-use crate::common::math::{clamp, sat};
+use crate::common::lanes::{LaneVec2, Lanes};
+use crate::common::math::sat;
 use crate::glam::{UVec2, Vec2};
 use crate::vao::kernel::{
     KERNEL_HBAO, LineSample, PixelFrame, halo_visibility, hbao_occlusion, line_sample_of, object_z, setup_pixel,
@@ -116,12 +116,20 @@ pub fn finish(params: &SvaoParams, a: f32) -> f32 {
 /// (spec svao-raysd §5 `SDpixel`).
 #[inline]
 pub fn sd_pixel(uv: Vec2, params: &SvaoParams) -> UVec2 {
+    let (x, y) = sd_pixel_lanes::<f32>(uv, params);
+    UVec2::new(x, y)
+}
+
+/// [`sd_pixel`] per lane: `(x, y)`.
+#[inline]
+pub fn sd_pixel_lanes<L: Lanes>(uv: L::V2, params: &SvaoParams) -> (L::Index, L::Index) {
     let low = params.sd_low_res.as_vec2();
     let sg = params.sd_guard as f32;
-    let hi = params.sd_size() - 1;
-    let x = clamp((uv.x * low.x).floor() + sg, 0.0, hi.x as f32);
-    let y = clamp((uv.y * low.y).floor() + sg, 0.0, hi.y as f32);
-    UVec2::new(x as u32, y as u32)
+    let size = params.sd_size();
+    // floor_index clamps to [0, n − 1] and truncates: the clamp and the conversion above.
+    let x = ((uv.x() * low.x).floor() + sg).floor_index(L::index_splat(size.x));
+    let y = ((uv.y() * low.y).floor() + sg).floor_index(L::index_splat(size.y));
+    (x, y)
 }
 
 /// AO pass 1 of pixel `p` (spec svao-raysd §5; `depth2`: the second layer, read only with dual depth).

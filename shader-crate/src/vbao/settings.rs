@@ -109,25 +109,35 @@ impl Settings for VbaoSettings {
     }
 }
 
+/// The setting keys `vbao` reads, followed by `$extra` (`vbao-sd` adds its SD map's): one list
+/// for both declarations.
+macro_rules! vbao_keys {
+    ($($extra:literal),* $(,)?) => {
+        &[
+            "preset",
+            "slices",
+            "steps",
+            "denoise",
+            "radius-multiplier",
+            "sample-power",
+            "final-power",
+            "mip-offset",
+            "normals",
+            "thickness",
+            "gate",
+            "sectors",
+            "weighting",
+            $($extra),*
+        ]
+    };
+}
+pub(crate) use vbao_keys;
+
 /// VBAO (spec vbao).
 pub static VBAO: Declaration<VbaoSettings> = Declaration {
     name: "vbao",
     summary: "Visibility-bitmask AO: XeGTAO's slices with a 32-sector mask and sample thickness (spec vbao)",
-    keys: &[
-        "preset",
-        "slices",
-        "steps",
-        "denoise",
-        "radius-multiplier",
-        "sample-power",
-        "final-power",
-        "mip-offset",
-        "normals",
-        "thickness",
-        "gate",
-        "sectors",
-        "weighting",
-    ],
+    keys: vbao_keys!(),
     defaults: VbaoSettings::default,
     graph: |s, frame| Ok(s.graph(frame)),
     second_layer: single_layer,

@@ -17,13 +17,14 @@ pub mod settings;
 use crate::common::ViewParams;
 use crate::common::atomics::AtomicU32Buffer;
 use crate::common::float_order::ordered_bits;
-use crate::common::lanes::{LaneVec2, LaneVec3, Lanes, select_v3};
+use crate::common::lanes::{LaneVec3, Lanes, select_v3};
 use crate::common::read::write;
 use crate::common::screen_space::view_pos;
 use crate::glam::{UVec2, UVec3};
 use crate::gtao::main_pass::{PixelSetup, final_visibility, pixel_setup, sample_pair, slice_frame};
 use crate::gtao::{GtaoFixed, GtaoPixel};
-use crate::raysd::MAX_LAYERS;
+use crate::raysd::{MAX_LAYERS, texel_ray_uv_lanes};
+use crate::svao::pass1::sd_pixel_lanes;
 use crate::svao::{SvaoFrame, SvaoParams};
 use crate::vbao::VbaoParams;
 use crate::vbao::kernel::{
@@ -110,9 +111,8 @@ fn request_sample<L: Lanes, A: AtomicU32Buffer, B: AtomicU32Buffer>(
     if !L::any(flag) {
         return;
     }
-    // The sample's point in the right-handed view space (−z forward) gives its uv.
-    let (x, y) = sd_texel::<L>(sd.vao.view.view_to_uv_lanes::<L>(L::V3::new(q.x(), q.y(), -q.z())), sd);
-    let texel = y * L::index_splat(sd.sd_size().x) + x;
+    let (x, y) = sample_sd_texel::<L>(q, sd);
+    let texel = sd.sd_index_lanes::<L>(x, y);
     let t = q.length();
     let mut i = 0;
     while i < L::LANES {
@@ -176,29 +176,12 @@ fn layers_behind<L: Lanes>(map: &[f32], view: &ViewParams, base: L::Index, n: u3
     [l0, l1, l2, l3, l4, l5, l6, l7]
 }
 
-/// SD texel `SDpixel(uv)` per lane (spec svao-raysd §5, [`crate::svao::sd_pixel`]): `(x, y)`.
+/// The SD texel `(x, y)` under a sample at view point `q` (XeGTAO's +z-forward space) per lane:
+/// `SDpixel` of its uv (spec svao-raysd §5, [`sd_pixel_lanes`]).
 #[inline]
-fn sd_texel<L: Lanes>(uv: L::V2, sd: &SvaoParams) -> (L::Index, L::Index) {
-    let low = sd.sd_low_res.as_vec2();
-    let sg = sd.sd_guard as f32;
-    let size = sd.sd_size();
-    // floor(uv·L) + sg, clamped into the map (floor_index clamps to [0, n − 1]).
-    let x = ((uv.x() * low.x).floor() + sg).floor_index(L::index_splat(size.x));
-    let y = ((uv.y() * low.y).floor() + sg).floor_index(L::index_splat(size.y));
-    (x, y)
-}
-
-/// `crate::raysd::texel_ray_uv` per lane: the jittered low-res position `(q − sg + J(q))/L` of texel `q`.
-#[inline]
-fn texel_ray_uv_lanes<L: Lanes>(x: L::Index, y: L::Index, sd: &SvaoParams) -> L::V2 {
-    let (table, frame) = (sd.jitter, sd.noise_frame);
-    let jitter = L::v2_from_lanes(move |i| {
-        crate::common::tables::sd_jitter(UVec2::new(L::index_lane(x, i), L::index_lane(y, i)), table, frame)
-    });
-    let low = sd.sd_low_res.as_vec2();
-    let sg = sd.sd_guard as f32;
-    // Divided, as the scalar `texel_ray_uv` does, so both give the same bits.
-    L::V2::new((L::index_to_float(x) - sg + jitter.x()) / low.x, (L::index_to_float(y) - sg + jitter.y()) / low.y)
+fn sample_sd_texel<L: Lanes>(q: L::V3, sd: &SvaoParams) -> (L::Index, L::Index) {
+    // The right-handed view space (−z forward) gives the uv.
+    sd_pixel_lanes::<L>(sd.vao.view.view_to_uv_lanes::<L>(L::V3::new(q.x(), q.y(), -q.z())), sd)
 }
 
 /// The occupied segments behind a sample from the SD map (spec vbao §8.2): the layers of the
@@ -235,7 +218,7 @@ impl<L: Lanes> Occupancy<L> for SdLayers<'_> {
             let sd = self.sd;
             let view = &sd.vao.view;
             let q = px.pos + delta;
-            let (x, y) = sd_texel::<L>(view.view_to_uv_lanes::<L>(L::V3::new(q.x(), q.y(), -q.z())), sd);
+            let (x, y) = sample_sd_texel::<L>(q, sd);
             let uv = texel_ray_uv_lanes::<L>(x, y, sd);
             // The texel's ray must enter Q's own surface (within T of Q's depth): at ¼
             // resolution and jittered it may pass beside a thin object and describe what lies
@@ -246,7 +229,7 @@ impl<L: Lanes> Occupancy<L> for SdLayers<'_> {
             // texel centre's depth, so on a slope the entered surface itself can be a layer.
             let after = L::select(same_surface, q.z().max(entered) * (1.0 + SAME_SURFACE), L::splat(f32::MAX));
             let n = sd.sd_layers;
-            let base = (y * L::index_splat(sd.sd_size().x) + x) * L::index_splat(n);
+            let base = sd.sd_index_lanes::<L>(x, y) * L::index_splat(n);
             let layers = layers_behind::<L>(self.map, view, base, n, after);
             // Q's own solid reaches its first exit, but never less far than T: T also stands
             // for the occluders the sparse samples miss (thinner measured backs raised the

@@ -9,32 +9,14 @@ use crate::gtao::settings::{MainPassResources, xegtao_graph};
 use crate::svao::Secondary;
 use crate::svao::settings::sd_map_pass;
 use crate::technique::{Constant, Declaration, Formula, single_layer};
-use crate::vbao::settings::VbaoSettings;
+use crate::vbao::settings::{VbaoSettings, vbao_keys};
 
 /// `vbao-sd` (spec vbao §8): `vbao` at its defaults with the cosine-exact weighting, over a
 /// ray-traced SD map at Ray-SD's defaults (¼ resolution, 4 layers).
 pub static VBAO_SD: Declaration<VbaoSettings> = Declaration {
     name: "vbao-sd",
     summary: "Visibility-bitmask AO whose samples' thickness comes from a ray-traced stochastic depth map (spec vbao §8)",
-    keys: &[
-        "preset",
-        "slices",
-        "steps",
-        "denoise",
-        "radius-multiplier",
-        "sample-power",
-        "final-power",
-        "mip-offset",
-        "normals",
-        "thickness",
-        "gate",
-        "sectors",
-        "weighting",
-        "sd-res",
-        "sd-layers",
-        "max-count",
-        "sd-guard",
-    ],
+    keys: vbao_keys!("sd-res", "sd-layers", "max-count", "sd-guard"),
     defaults,
     graph: |s, frame| Ok(graph(s, frame)),
     second_layer: single_layer,
