@@ -9,6 +9,7 @@ use aokit_cpu::graph::{CpuExecutor, CpuInputs, CpuScene};
 use aokit_cpu::{GBufferImage, Progress, SceneBvh, Surfaces};
 use aokit_shaders::common::alpha::AlphaMaskHeader;
 use aokit_shaders::graph::{Executed, Graph, RAY_COUNT, RtMode, ray_count_of};
+use aokit_shaders::technique::Resolution;
 use aokit_vulkan::{AoContext, GpuInputs};
 use aokit_vulkan::{
     Buffer, GBufferVertex, Gpu, GpuError, GpuOptions, RasterFrame, RasterGBuffer, RasterScene, SceneAccel,
@@ -237,12 +238,19 @@ impl CpuRenderer {
             passes.push(("depth_peel", ms_since(t)));
         }
         let surfaces = self.surfaces();
+        // The passes report the rows of their own target; a half-resolution row stands for two
+        // of the frame's, so the caller's bar, sized in full rows, still reaches its end.
+        let rows_per_row = match technique.resolution() {
+            Resolution::Full => 1,
+            Resolution::Half(_) => 2,
+        };
+        let full_rows = |rows| progress(rows * rows_per_row);
         let inputs = CpuInputs {
             depth: &gbuffer.depth,
             normals: &gbuffer.normals,
             second_depth: technique.second_layer().map(|_| &depth2[..]),
             scene: Some(CpuScene { bvh: &self.bvh, surfaces: &surfaces }),
-            progress,
+            progress: &full_rows,
         };
         let stats = executor.run(&graph, &inputs).expect("the CPU executor runs every graph kernel");
         passes.extend(stats.pass_ms);

@@ -203,6 +203,50 @@ fn an_odd_target_is_refused() {
     assert!(Technique::parse("gtao:resolution=quarter").unwrap_err().contains("full|half|half-nearest"));
 }
 
+/// A plane tolerance other than the default is named in labels and reports, and the name reads
+/// back as the same resolution (a run with another τ must not pass for the default one).
+#[test]
+fn a_non_default_plane_tolerance_is_named() {
+    let tau = |t: f32| Resolution::Half(HalfSettings { plane_tolerance: t, ..HalfSettings::default() });
+    let nearest = Resolution::Half(HalfSettings { pick: Pick::Nearest, plane_tolerance: 3.0 });
+    for r in [Resolution::Full, Resolution::half(), tau(0.75), tau(f32::INFINITY), nearest] {
+        assert_eq!(Resolution::parse(&r.name()), Ok(r), "{}", r.name());
+    }
+    assert_eq!(Resolution::half().name(), "half");
+    assert_eq!(tau(0.75).name(), "half-tau0.75");
+    assert_eq!(nearest.name(), "half-nearest-tau3");
+    let t = Technique::parse("gtao").unwrap().with_resolution(tau(0.75));
+    assert!(t.label().ends_with("_resolution-half-tau0.75"), "{}", t.label());
+    assert!(t.json().contains("\"resolution\":\"half-tau0.75\""), "{}", t.json());
+    assert_eq!(Technique::parse("gtao:resolution=half-tau0.75").unwrap().resolution(), tau(0.75));
+    for bad in ["half-tau0", "half-tau-1", "half-taux", "full-tau2"] {
+        let err = Resolution::parse(bad).unwrap_err();
+        assert!(err.starts_with(&format!("resolution {bad}:")) && !err.contains('\n'), "{err}");
+    }
+}
+
+/// The CPU renderer's progress counts full-target rows at either resolution, so a bar sized for
+/// the frame reaches its end: vao's pass reports each row it finishes, and at half resolution
+/// a row stands for two.
+#[test]
+fn progress_counts_the_frames_rows_at_half_resolution() {
+    use std::sync::atomic::{AtomicU64, Ordering};
+    let (scene, frame) = common::builtin_frame("sponza", 128, 72, 8);
+    let cpu = CpuRenderer::new(&scene);
+    let (gbuffer, _) = cpu.gbuffer(&frame, &no_progress);
+    let rows = |spec: &str| {
+        let count = AtomicU64::new(0);
+        let progress = |n| {
+            count.fetch_add(n, Ordering::Relaxed);
+        };
+        cpu.run(&frame, &gbuffer, &Technique::parse(spec).unwrap(), &progress);
+        count.into_inner()
+    };
+    let full = rows("vao");
+    assert!(full > 0, "vao reports no progress: the comparison below would be empty");
+    assert_eq!(rows("vao:resolution=half"), full);
+}
+
 /// A ray-traced technique at half resolution starts its rays on the surface: the half G-buffer's
 /// depth is the kept pixel's tangent plane seen through the half texel's centre (spec
 /// half-resolution §2), not the kept depth half a pixel off, which on a slope puts the point

@@ -61,6 +61,10 @@ impl HalfSettings {
     }
 }
 
+/// What [`Resolution::name`] puts between a half resolution's pick and a non-default plane
+/// tolerance.
+const TAU_SUFFIX: &str = "-tau";
+
 /// The resolution a technique runs at.
 #[derive(Copy, Clone, Debug, Default, PartialEq)]
 pub enum Resolution {
@@ -81,22 +85,46 @@ impl Resolution {
         Resolution::Half(HalfSettings::default())
     }
 
-    /// One of [`Resolution::NAMES`].
+    /// One of [`Resolution::NAMES`], a half one optionally followed by `-tau<τ>` (a plane
+    /// tolerance other than [`PLANE_TOLERANCE`], `inf` for none: [`Resolution::name`]'s form).
     pub fn parse(name: &str) -> Result<Resolution, String> {
-        match name.trim() {
-            "full" => Ok(Resolution::Full),
-            "half" => Ok(Resolution::half()),
-            "half-nearest" => Ok(Resolution::Half(HalfSettings { pick: Pick::Nearest, ..HalfSettings::default() })),
-            other => Err(format!("resolution {other}: expected {}", Resolution::NAMES.join("|"))),
+        let name = name.trim();
+        let (base, tau) = match name.rsplit_once(TAU_SUFFIX) {
+            Some((base, tau)) if base.starts_with("half") => (base, Some(tau)),
+            _ => (name, None),
+        };
+        let mut half = match base {
+            "full" if tau.is_none() => return Ok(Resolution::Full),
+            "half" => HalfSettings::default(),
+            "half-nearest" => HalfSettings { pick: Pick::Nearest, ..HalfSettings::default() },
+            _ => {
+                return Err(format!(
+                    "resolution {name}: expected {} (a half one may end in {TAU_SUFFIX}<plane tolerance>)",
+                    Resolution::NAMES.join("|")
+                ));
+            }
+        };
+        if let Some(tau) = tau {
+            half.plane_tolerance =
+                tau.parse().map_err(|_| format!("resolution {name}: plane tolerance '{tau}' is not a number"))?;
+            half.validate().map_err(|e| format!("resolution {name}: {e}"))?;
         }
+        Ok(Resolution::Half(half))
     }
 
-    /// The name (a half resolution with a non-default upsample is named by its pick).
-    pub fn name(&self) -> &'static str {
-        match self {
-            Resolution::Full => "full",
-            Resolution::Half(HalfSettings { pick: Pick::Checkerboard, .. }) => "half",
-            Resolution::Half(HalfSettings { pick: Pick::Nearest, .. }) => "half-nearest",
+    /// The name [`Resolution::parse`] reads back: one of [`Resolution::NAMES`], a half one
+    /// followed by `-tau<τ>` when its plane tolerance is not [`PLANE_TOLERANCE`], so that labels
+    /// and reports tell such a run apart.
+    pub fn name(&self) -> String {
+        let (base, half) = match self {
+            Resolution::Full => return "full".to_string(),
+            Resolution::Half(h @ HalfSettings { pick: Pick::Checkerboard, .. }) => ("half", h),
+            Resolution::Half(h @ HalfSettings { pick: Pick::Nearest, .. }) => ("half-nearest", h),
+        };
+        if half.plane_tolerance == PLANE_TOLERANCE {
+            base.to_string()
+        } else {
+            format!("{base}{TAU_SUFFIX}{}", half.plane_tolerance)
         }
     }
 }
