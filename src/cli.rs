@@ -177,13 +177,16 @@ impl clap::Args for TechniqueArgs {
             clap::Arg::new(RESOLUTION_KEY)
                 .long(RESOLUTION_KEY)
                 .help_heading("Technique settings")
-                .value_parser(clap::builder::PossibleValuesParser::new(names))
+                // The names, and a half one with its plane tolerance (`half-tau3`): what the
+                // `resolution=` key takes.
+                .value_parser(|s: &str| aokit_shaders::technique::Resolution::parse(s).map(|_| s.to_string()))
                 .default_value(names[0])
-                .help(
+                .help(format!(
                     "Run at the full target, or at half resolution with an edge-aware upsample \
-                     (docs/algorithms/half-resolution.md; half-nearest keeps the nearest pixel of each 2×2 block) \
-                     [every technique]",
-                ),
+                     (docs/algorithms/half-resolution.md; half-nearest keeps the nearest pixel of each 2×2 block; \
+                     -tau<τ> after a half one sets the upsample's plane tolerance) ({}) [every technique]",
+                    names.join("|")
+                )),
         )
     }
 
@@ -258,7 +261,7 @@ pub fn list_techniques() -> String {
     let names = aokit_shaders::technique::Resolution::NAMES;
     out += &format!(
         "every technique also takes\n    {RESOLUTION_KEY:18} {:28} [{}]  --{RESOLUTION_KEY}  \
-         (docs/algorithms/half-resolution.md)\n",
+         (docs/algorithms/half-resolution.md; a half one may end in -tau<τ>)\n",
         names.join("|"),
         names[0]
     );

@@ -16,6 +16,7 @@ use aokit_vulkan::{
 };
 use std::cell::RefCell;
 use std::rc::Rc;
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
 
 /// `(pass, milliseconds)` per pass.
@@ -238,13 +239,20 @@ impl CpuRenderer {
             passes.push(("depth_peel", ms_since(t)));
         }
         let surfaces = self.surfaces();
-        // The passes report the rows of their own target; a half-resolution row stands for two
-        // of the frame's, so the caller's bar, sized in full rows, still reaches its end.
+        // A run advances the caller's bar by the target's rows, whatever its passes report: the
+        // passes that report count the rows of their own target (a half-resolution row stands
+        // for two of the frame's, and the guard band's rows are not reported), the rest report
+        // none; what is missing is reported when the graph is done.
+        let target_rows = frame.camera.view.size().y as u64;
         let rows_per_row = match technique.resolution() {
             Resolution::Full => 1,
             Resolution::Half(_) => 2,
         };
-        let full_rows = |rows| progress(rows * rows_per_row);
+        let reported = AtomicU64::new(0);
+        let full_rows = |rows: u64| {
+            let before = reported.fetch_add(rows * rows_per_row, Ordering::Relaxed);
+            progress((rows * rows_per_row).min(target_rows.saturating_sub(before)));
+        };
         let inputs = CpuInputs {
             depth: &gbuffer.depth,
             normals: &gbuffer.normals,
@@ -253,6 +261,7 @@ impl CpuRenderer {
             progress: &full_rows,
         };
         let stats = executor.run(&graph, &inputs).expect("the CPU executor runs every graph kernel");
+        progress(target_rows.saturating_sub(reported.into_inner()));
         passes.extend(stats.pass_ms);
         let read = |name: &str| executor.words(name).map(|w| w.to_vec());
         let run = graph_run(&graph, passes, &read, gbuffer);

@@ -219,32 +219,51 @@ fn a_non_default_plane_tolerance_is_named() {
     assert!(t.label().ends_with("_resolution-half-tau0.75"), "{}", t.label());
     assert!(t.json().contains("\"resolution\":\"half-tau0.75\""), "{}", t.json());
     assert_eq!(Technique::parse("gtao:resolution=half-tau0.75").unwrap().resolution(), tau(0.75));
-    for bad in ["half-tau0", "half-tau-1", "half-taux", "full-tau2"] {
+    assert_eq!(Resolution::parse("half-tau1.5").unwrap().name(), "half", "the default τ written out");
+    for bad in ["half-tau0", "half-tau-1", "half-taux", "half-tau", "half-tauNaN", "full-tau2"] {
         let err = Resolution::parse(bad).unwrap_err();
         assert!(err.starts_with(&format!("resolution {bad}:")) && !err.contains('\n'), "{err}");
     }
+    // The `--resolution` flag takes what the key takes, and the report names it.
+    let render = |resolution: &str| {
+        let out = std::env::temp_dir().join(format!("aokit-tau-{}.png", std::process::id()));
+        let args = ["render", "--backend", "cpu", "--scene", "sponza", "--width", "64", "--height", "36"];
+        let result = std::process::Command::new(env!("CARGO_BIN_EXE_aokit"))
+            .args(args)
+            .args(["--guard", "8", "--technique", "vao", "--resolution", resolution, "--out"])
+            .arg(&out)
+            .output()
+            .expect("aokit runs");
+        let _ = std::fs::remove_file(&out);
+        result
+    };
+    let ok = render("half-tau3");
+    assert!(ok.status.success(), "{}", String::from_utf8_lossy(&ok.stderr));
+    assert!(String::from_utf8_lossy(&ok.stdout).contains("\"resolution\":\"half-tau3\""));
+    let refused = render("half-tau0");
+    assert!(!refused.status.success());
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("plane tolerance 0: expected a number > 0"));
 }
 
-/// The CPU renderer's progress counts full-target rows at either resolution, so a bar sized for
-/// the frame reaches its end: vao's pass reports each row it finishes, and at half resolution
-/// a row stands for two.
+/// The CPU renderer's progress advances by the target's rows for every run, so a bar sized for
+/// the frame reaches its end: vao's pass reports each inner row as it finishes it (at half
+/// resolution a row stands for two), the guard band's rows come at the end; gtao's passes
+/// report nothing, so all its rows come at the end.
 #[test]
 fn progress_counts_the_frames_rows_at_half_resolution() {
-    use std::sync::atomic::{AtomicU64, Ordering};
     let (scene, frame) = common::builtin_frame("sponza", 128, 72, 8);
     let cpu = CpuRenderer::new(&scene);
     let (gbuffer, _) = cpu.gbuffer(&frame, &no_progress);
-    let rows = |spec: &str| {
-        let count = AtomicU64::new(0);
-        let progress = |n| {
-            count.fetch_add(n, Ordering::Relaxed);
-        };
+    let target_rows = frame.camera.view.size().y as u64;
+    for (spec, while_running) in [("vao", 72), ("vao:resolution=half", 72), ("gtao", 0), ("gtao:resolution=half", 0)] {
+        let calls = std::sync::Mutex::new(Vec::new());
+        let progress = |n| calls.lock().unwrap().push(n);
         cpu.run(&frame, &gbuffer, &Technique::parse(spec).unwrap(), &progress);
-        count.into_inner()
-    };
-    let full = rows("vao");
-    assert!(full > 0, "vao reports no progress: the comparison below would be empty");
-    assert_eq!(rows("vao:resolution=half"), full);
+        let calls = calls.into_inner().unwrap();
+        let (last, before) = calls.split_last().expect("a run reports its rows");
+        assert_eq!(before.iter().sum::<u64>() + last, target_rows, "{spec}: {calls:?}");
+        assert_eq!(before.iter().sum::<u64>(), while_running, "{spec}: {calls:?}");
+    }
 }
 
 /// A ray-traced technique at half resolution starts its rays on the surface: the half G-buffer's

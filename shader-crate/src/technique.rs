@@ -574,7 +574,8 @@ impl Technique {
 
     /// A technique from its name followed by settings as `:key=value` with the keys of its
     /// settings rows, e.g. `raysd:sd-layers=8:interval=off`; every technique also takes
-    /// `resolution=full|half|half-nearest` ([`Resolution`], spec half-resolution §1).
+    /// `resolution=full|half|half-nearest`, a half one optionally ending in `-tau<τ>`
+    /// ([`Resolution::parse`], spec half-resolution §1).
     pub fn parse(spec: &str) -> Result<Technique, String> {
         Technique::parse_with_flags(spec, &[])
     }

@@ -77,7 +77,7 @@ pub enum Resolution {
 
 impl Resolution {
     /// The names the `resolution` key and the `--resolution` flag take: `full`, `half`
-    /// (checkerboard pick), `half-nearest`.
+    /// (checkerboard pick), `half-nearest`; a half one may end in `-tau<τ>` ([`Resolution::parse`]).
     pub const NAMES: [&'static str; 3] = ["full", "half", "half-nearest"];
 
     /// Half resolution with the default upsample.
@@ -94,7 +94,8 @@ impl Resolution {
             _ => (name, None),
         };
         let mut half = match base {
-            "full" if tau.is_none() => return Ok(Resolution::Full),
+            // (`full` never carries a τ: only a name starting with `half` is split above.)
+            "full" => return Ok(Resolution::Full),
             "half" => HalfSettings::default(),
             "half-nearest" => HalfSettings { pick: Pick::Nearest, ..HalfSettings::default() },
             _ => {

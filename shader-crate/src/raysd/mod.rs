@@ -17,6 +17,7 @@ use crate::common::any_hit::{ACCEPT, CandidateHit, IGNORE};
 use crate::common::float_order::from_ordered_bits;
 use crate::common::gbuffer_read::GBuffer;
 use crate::common::hash::wyman_hash;
+// `Lanes` is named by path: imported, its `floor` would clash with `Float::floor` on SPIR-V.
 use crate::common::lanes::LaneVec2;
 use crate::common::math::{depth_or_far, sat};
 use crate::common::noise::{frame_rotation, rotate};

@@ -9,7 +9,7 @@ pub mod pass2;
 #[cfg(not(target_arch = "spirv"))]
 pub mod settings;
 
-pub use pass1::{Pass1Pixel, pass1_pixel, primary_sample, sd_pixel};
+pub use pass1::{Pass1Pixel, pass1_pixel, primary_sample, sd_pixel, sd_pixel_lanes};
 pub use pass2::{Pass2Pixel, Refine, Refined, pass2_pixel};
 
 use crate::common::camera::Camera;

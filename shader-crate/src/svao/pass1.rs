@@ -126,7 +126,7 @@ pub fn sd_pixel_lanes<L: Lanes>(uv: L::V2, params: &SvaoParams) -> (L::Index, L:
     let low = params.sd_low_res.as_vec2();
     let sg = params.sd_guard as f32;
     let size = params.sd_size();
-    // floor_index clamps to [0, n − 1] and truncates: the clamp and the conversion above.
+    // floor_index clamps to [0, n − 1] and converts: SDpixel's clamp, bit for bit.
     let x = ((uv.x() * low.x).floor() + sg).floor_index(L::index_splat(size.x));
     let y = ((uv.y() * low.y).floor() + sg).floor_index(L::index_splat(size.y));
     (x, y)

@@ -24,8 +24,7 @@ use crate::glam::{UVec2, UVec3};
 use crate::gtao::main_pass::{PixelSetup, final_visibility, pixel_setup, sample_pair, slice_frame};
 use crate::gtao::{GtaoFixed, GtaoPixel};
 use crate::raysd::{MAX_LAYERS, texel_ray_uv_lanes};
-use crate::svao::pass1::sd_pixel_lanes;
-use crate::svao::{SvaoFrame, SvaoParams};
+use crate::svao::{SvaoFrame, SvaoParams, sd_pixel_lanes};
 use crate::vbao::VbaoParams;
 use crate::vbao::kernel::{
     EDGE_TOLERANCE, Occupancy, OwnSlice, beyond_gate, interval_bits, own_slice, vbao_term, visibility_with,
