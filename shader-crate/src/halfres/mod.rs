@@ -51,14 +51,7 @@ pub struct HalfParams {
 /// first in row order.
 #[inline]
 pub fn kept_pixel(params: &HalfParams, depth: &[f32], q: UVec2) -> UVec2 {
-    kept_pixel_lanes::<f32>(params, depth, q)
-}
-
-/// [`kept_pixel`] for one texel (`L = f32`) or `L::LANES` texels (cpu-sim's eight lanes),
-/// branch-free.
-#[inline]
-pub fn kept_pixel_lanes<L: Lanes>(params: &HalfParams, depth: &[f32], q: L::U2) -> L::U2 {
-    pick_in_block::<L>(params, q, block_depths::<L>(params, depth, q)).0
+    pick_in_block::<f32>(params, q, block_depths::<f32>(params, depth, q)).0
 }
 
 /// The depths of texel `q`'s block `2q + {0, 1}²`, in row order, read from the full target.
@@ -127,7 +120,7 @@ pub const MAX_PLANE_SHIFT: f32 = 0.1;
 /// the pixel is background.
 #[inline]
 pub fn half_texel(params: &HalfParams, depth: &[f32], normals: &[u32], q: UVec2) -> (f32, u32) {
-    half_texel_lanes::<f32>(params, depth, normals, q)
+    half_texel_of_block::<f32>(params, normals, q, block_depths::<f32>(params, depth, q))
 }
 
 /// `n.x·(ndc.x·tx)`: the column part of `n·r` for the ray `r = (ndc.x·tx, ndc.y·ty, −1)` through
@@ -145,14 +138,9 @@ fn row_term<L: Lanes>(n: L::V3, ty: f32, c: L, height: f32) -> L {
     n.y() * (-((c + 0.5) * (2.0 * ty / height)) + ty)
 }
 
-/// [`half_texel`] for one texel (`L = f32`) or `L::LANES` texels, branch-free.
-#[inline]
-pub fn half_texel_lanes<L: Lanes>(params: &HalfParams, depth: &[f32], normals: &[u32], q: L::U2) -> (L, L::Index) {
-    half_texel_of_block::<L>(params, normals, q, block_depths::<L>(params, depth, q))
-}
-
-/// [`half_texel`] from the block's depths (as [`block_depths`] reads them): what cpu-sim calls
-/// with the depths read straight from the block's two rows.
+/// [`half_texel`] from the block's depths (as [`block_depths`] reads them), for one texel
+/// (`L = f32`, what the SPIR-V runs) or `L::LANES` texels, branch-free: cpu-sim calls it on eight
+/// lanes with the depths read straight from the block's two rows.
 #[inline]
 pub fn half_texel_of_block<L: Lanes>(params: &HalfParams, normals: &[u32], q: L::U2, depths: [L; 4]) -> (L, L::Index) {
     let (view, half) = (&params.view, &params.half);
