@@ -47,11 +47,12 @@ impl CliSettings {
 }
 
 /// The reference of a comparison: `--resolution` applies to the techniques compared, not to what
-/// they are scored against, so the reference runs at full resolution unless its own spec says
-/// `resolution=…`.
+/// they are scored against, so the reference runs at full resolution unless its own spec sets
+/// the key (`name:…:resolution=…`).
 pub fn reference_at_full_resolution(reference: Technique, spec: &str) -> Technique {
     let key = format!("{}=", aokit_shaders::technique::RESOLUTION_KEY);
-    if spec.contains(&key) { reference } else { reference.with_resolution(aokit_shaders::technique::Resolution::Full) }
+    let explicit = spec.split(':').skip(1).any(|setting| setting.trim_start().starts_with(&key));
+    if explicit { reference } else { reference.with_resolution(aokit_shaders::technique::Resolution::Full) }
 }
 
 /// Build each technique's graph for `frame` once, before any work: a refusal (half resolution of

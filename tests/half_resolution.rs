@@ -245,6 +245,18 @@ fn a_non_default_plane_tolerance_is_named() {
     assert!(String::from_utf8_lossy(&refused.stderr).contains("plane tolerance 0: expected a number > 0"));
 }
 
+/// `--resolution` applies to the techniques compared, not to the reference they are scored
+/// against, unless the reference's own spec sets the key (a key merely ending in `resolution`
+/// does not).
+#[test]
+fn the_reference_stays_at_full_resolution() {
+    use aokit::technique::reference_at_full_resolution;
+    let halved = || Technique::parse("gtao").unwrap().with_resolution(Resolution::half());
+    assert_eq!(reference_at_full_resolution(halved(), "gtao").resolution(), Resolution::Full);
+    assert_eq!(reference_at_full_resolution(halved(), "gtao:resolution=half").resolution(), Resolution::half());
+    assert_eq!(reference_at_full_resolution(halved(), "gtao:sd-resolution=half").resolution(), Resolution::Full);
+}
+
 /// The CPU renderer's progress advances by the target's rows for every run, so a bar sized for
 /// the frame reaches its end: vao's pass reports each inner row as it finishes it (at half
 /// resolution a row stands for two), the guard band's rows come at the end; gtao's passes
