@@ -16,7 +16,7 @@ use aokit_shaders::common::denoise_terms::{
 };
 use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR, from_ordered_bits, ordered_bits};
 use aokit_shaders::common::hash::wyman_hash;
-use aokit_shaders::common::lanes::{F32x8, Lanes};
+use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, Lanes};
 use aokit_shaders::common::math::f32_to_u32_bits;
 use aokit_shaders::common::noise::rotate;
 use aokit_shaders::common::normal_codec::{decode_normal, decode_normal_lanes, encode_normal};
@@ -30,7 +30,6 @@ use std::cmp::Ordering;
 use std::collections::HashMap;
 use std::sync::atomic::AtomicU32;
 use std::time::Instant;
-use wide::i32x8;
 
 // ---------------------------------------------------------------------------------------------
 // Sweeps: a range of u64 keys cut into chunks of 2^20, each folded into a `Tally` on rayon's
@@ -483,23 +482,23 @@ fn decode_normal_scalar_reference(code: u32) -> Vec3 {
     vec3(x, y, z).normalize()
 }
 
-/// The decoder the kernels read the G-buffer with, one code (`decode_normal`) and eight
-/// (`decode_normal_lanes::<F32x8>`, cpu-sim's lanes), against the scalar reference above, bit
+/// The decoder the kernels read the G-buffer with, one code (`decode_normal`) and
+/// [`CPU_LANES`] (`decode_normal_lanes::<CpuLanes>`, cpu-sim's lanes), against the scalar reference above, bit
 /// for bit: every 16-bit code in every lane position, with high bits set in half of the lanes
 /// (ignored).
 ///
-/// Domain 2¹⁶ codes × 8 lane positions; measured 0.1 s.
+/// Domain 2¹⁶ codes × 16 lane positions; measured 0.1 s.
 #[test]
 fn normal_decoder_scalar_and_lanes_equal_the_reference_for_every_code() {
     let start = Instant::now();
     let mut checked = 0u32;
-    for c in (0..1u32 << 16).step_by(8) {
-        for rot in 0..8 {
-            let codes: [u32; 8] = core::array::from_fn(|i| {
-                let code = c + ((i + rot) % 8) as u32;
+    for c in (0..1u32 << 16).step_by(CPU_LANES) {
+        for rot in 0..CPU_LANES {
+            let codes: [u32; CPU_LANES] = core::array::from_fn(|i| {
+                let code = c + ((i + rot) % CPU_LANES) as u32;
                 if i % 2 == 1 { code | 0xABCD_0000 } else { code }
             });
-            let lanes = decode_normal_lanes::<F32x8>(i32x8::new(codes.map(|k| k as i32)));
+            let lanes = decode_normal_lanes::<CpuLanes>(<CpuLanes as Lanes>::Index::new(codes.map(|k| k as i32)));
             for (i, &code) in codes.iter().enumerate() {
                 let want = decode_normal_scalar_reference(code & 0xFFFF).to_array().map(f32::to_bits);
                 let one = decode_normal(code).to_array().map(f32::to_bits);
@@ -510,8 +509,8 @@ fn normal_decoder_scalar_and_lanes_equal_the_reference_for_every_code() {
             }
         }
     }
-    assert_eq!(checked, 8 << 16, "codes × lane positions checked");
-    report("normal_decoder_scalar_and_lanes_equal_the_reference_for_every_code", start, "2^16 codes × 8 lanes");
+    assert_eq!(checked, (CPU_LANES as u32) << 16, "codes × lane positions checked");
+    report("normal_decoder_scalar_and_lanes_equal_the_reference_for_every_code", start, "2^16 codes × 16 lanes");
 }
 
 /// `f32_to_u32_bits` (the SPIR-V form of `f32_to_u32`: ⌊x⌋ + 2²³ read as bits) against Rust's
@@ -604,7 +603,7 @@ fn check_code(t: &mut Tally, key: u64, got: u32, want32: u32, want_real: u32, t_
 
 /// XeGTAO's packed edges (spec gtao-raymarch-hybrid §2.6.1): `q = round(sat(e)·2.9)` per
 /// 2-bit field, `64·qL + 16·qR + 4·qT + qB`. Every f32 e ∈ [+0, 1] in all four fields at
-/// once (code 85·q) through the scalar and the 8-lane version (`F32x8`: `round_ties_even`,
+/// once (code 85·q) through the scalar and cpu-sim's lanes (`CpuLanes`: `round_ties_even`,
 /// the scalar a floor-based round half to even), against q = round_half_even(e ⊗ 2.9f32);
 /// −0, negatives, >1, ±∞ and NaN saturate. Every one of the 256 codes: `unpack_edges` gives
 /// each field k as the correctly rounded k/3 (scalar and lanes), and packing it back gives the
@@ -619,10 +618,10 @@ fn pack_edges_over_every_weight_and_code() {
     let t = sweep(0, 0x3F80_0000, |a, b, t| {
         let mut k = a;
         while k < b {
-            let n = (b - k).min(8);
-            let xs: [f32; 8] = std::array::from_fn(|i| f32::from_bits((k + (i as u64).min(n - 1)) as u32));
-            let lanes = F32x8::from_lanes(|i| xs[i]);
-            let packed = pack_edges::<F32x8>(EdgeWeights { l: lanes, r: lanes, t: lanes, b: lanes });
+            let n = (b - k).min(CPU_LANES as u64);
+            let xs: [f32; CPU_LANES] = std::array::from_fn(|i| f32::from_bits((k + (i as u64).min(n - 1)) as u32));
+            let lanes = CpuLanes::from_lanes(|i| xs[i]);
+            let packed = pack_edges::<CpuLanes>(EdgeWeights { l: lanes, r: lanes, t: lanes, b: lanes });
             for (i, &e) in xs.iter().enumerate().take(n as usize) {
                 let key = k + i as u64;
                 let want = round_q(q32(e));
@@ -634,8 +633,8 @@ fn pack_edges_over_every_weight_and_code() {
                 };
                 let got = pack_edges::<f32>(EdgeWeights { l: e, r: e, t: e, b: e });
                 t.check(key, got == 85 * want, || format!("pack_edges(all {e:e}) = {got:#x}, expected 85·{want}"));
-                let got_lane = F32x8::index_lane(packed, i);
-                t.check(key, got_lane == 85 * want, || format!("pack_edges::<F32x8>(all {e:e}) = {got_lane:#x}"));
+                let got_lane = CpuLanes::index_lane(packed, i);
+                t.check(key, got_lane == 85 * want, || format!("pack_edges::<CpuLanes>(all {e:e}) = {got_lane:#x}"));
                 check_code(t, key, got & 3, want, real, e as f64 * 2.9, || format!("q({e:e})"));
             }
             k += n;
@@ -652,10 +651,10 @@ fn pack_edges_over_every_weight_and_code() {
         let e = unpack_edges::<f32>(code);
         assert_eq!([e.l, e.r, e.t, e.b], want, "unpack_edges({code:#04x})");
         assert_eq!(pack_edges::<f32>(e), code, "pack_edges(unpack_edges({code:#04x}))");
-        let lanes = unpack_edges::<F32x8>(aokit_shaders::common::lanes::F32x8::index_splat(code));
+        let lanes = unpack_edges::<CpuLanes>(aokit_shaders::common::lanes::CpuLanes::index_splat(code));
         let got = [lanes.l, lanes.r, lanes.t, lanes.b].map(|v| v.lane(3));
-        assert_eq!(got, want, "unpack_edges::<F32x8>({code:#04x})");
-        assert_eq!(F32x8::index_lane(pack_edges::<F32x8>(lanes), 5), code, "lanes: pack(unpack({code:#04x}))");
+        assert_eq!(got, want, "unpack_edges::<CpuLanes>({code:#04x})");
+        assert_eq!(CpuLanes::index_lane(pack_edges::<CpuLanes>(lanes), 5), code, "lanes: pack(unpack({code:#04x}))");
     }
     eprintln!("  {} weights round differently in real numbers (exact 2.9)", t.counts[7]);
     report("pack_edges_over_every_weight_and_code", start, "1 065 353 217 f32 + 256 codes");
@@ -899,7 +898,7 @@ fn sector_grid() -> Vec<f32> {
     g
 }
 
-/// `sector_bits` (scalar) and `sector_bits_lanes::<F32x8>` for both rules over every ordered
+/// `sector_bits` (scalar) and `sector_bits_lanes::<CpuLanes>` for both rules over every ordered
 /// and unordered pair (lo, hi) of [`sector_grid`] (16 450 values, 270.6 M pairs), against
 /// [`sector_ref`]; the spec's table (vbao §3) is among them. N = 32 sectors (`SECTORS`).
 ///
@@ -918,9 +917,10 @@ fn sector_bits_over_every_pair_of_the_sector_grid() {
             let mut t = Tally::default();
             let lo = g[i];
             for rule in [RULE_PAPER, RULE_TOUCH] {
-                for j0 in (0..g.len()).step_by(8) {
-                    let his: [f32; 8] = std::array::from_fn(|k| g[(j0 + k).min(g.len() - 1)]);
-                    let lanes = sector_bits_lanes::<F32x8>(F32x8::splat(lo), F32x8::from_lanes(|k| his[k]), rule);
+                for j0 in (0..g.len()).step_by(CPU_LANES) {
+                    let his: [f32; CPU_LANES] = std::array::from_fn(|k| g[(j0 + k).min(g.len() - 1)]);
+                    let lanes =
+                        sector_bits_lanes::<CpuLanes>(CpuLanes::splat(lo), CpuLanes::from_lanes(|k| his[k]), rule);
                     for (k, &hi) in his.iter().enumerate().take(g.len() - j0) {
                         let key = ((i * g.len() + j0 + k) * 2) as u64 + rule as u64;
                         let want = sector_ref(lo, hi, rule);
@@ -928,7 +928,7 @@ fn sector_bits_over_every_pair_of_the_sector_grid() {
                         t.check(key, got == want, || {
                             format!("rule {rule}: sector_bits({lo:e}, {hi:e}) = {got:#010x}, spec {want:#010x}")
                         });
-                        let lane = F32x8::index_lane(lanes, k);
+                        let lane = CpuLanes::index_lane(lanes, k);
                         t.check(key, lane == got, || {
                             format!("rule {rule}: lanes ({lo:e}, {hi:e}) = {lane:#010x}, scalar {got:#010x}")
                         });
@@ -1003,9 +1003,11 @@ fn sector_coordinate_at_every_f32_near_the_sector_edges() {
                     Some(v)
                 })
                 .collect();
-            for c in thetas.chunks(8) {
-                let lanes =
-                    sector_coordinate::<F32x8>(F32x8::from_lanes(|i| c[i.min(c.len() - 1)]), F32x8::splat(gamma));
+            for c in thetas.chunks(CPU_LANES) {
+                let lanes = sector_coordinate::<CpuLanes>(
+                    CpuLanes::from_lanes(|i| c[i.min(c.len() - 1)]),
+                    CpuLanes::splat(gamma),
+                );
                 for (i, &th) in c.iter().enumerate() {
                     let key = (k as u64) << 32 | th.to_bits() as u64;
                     let x = sector_coordinate::<f32>(th, gamma);

@@ -64,24 +64,22 @@ fn hilbert_index_is_the_spec_loop() {
     }
 }
 
-/// The CPU's eight-lane noise (integer lanes, no branch) equals the one-pixel noise bit for bit
-/// on every cell of the tile, beyond it (only the low six bits count) and in several frames:
-/// the i32x8 lanes' shifts, masks and XORs against u32's (the formula itself is the spec test's
+/// cpu-sim's lane noise (integer lanes, no branch) equals the one-pixel noise bit for bit on
+/// every cell of the tile, beyond it (only the low six bits count) and in several frames: the
+/// integer lanes' shifts, masks and XORs against u32's (the formula itself is the spec test's
 /// above).
 #[test]
 fn noise_lanes_equal_the_one_pixel_noise_on_every_cell() {
-    use aokit_shaders::common::lanes::{F32x8, Lanes, U2x8};
+    use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, Lanes};
     use aokit_shaders::common::noise::spatio_temporal_noise_lanes;
     let mut checked = 0;
     for frame in [0u32, 1, 63, 64, 1000] {
         for y in (0..64u32).chain([64, 130]) {
-            for x0 in (0..128u32).step_by(8) {
-                let p = U2x8 {
-                    x: F32x8::index_splat(x0) + wide::i32x8::new([0, 1, 2, 3, 4, 5, 6, 7]),
-                    y: F32x8::index_splat(y),
-                };
-                let lanes = spatio_temporal_noise_lanes::<F32x8>(p, frame);
-                for i in 0..8 {
+            for x0 in (0..128u32).step_by(CPU_LANES) {
+                let run = <CpuLanes as Lanes>::Index::new(core::array::from_fn(|k| k as i32));
+                let p = CpuLanes::texel(CpuLanes::index_splat(x0) + run, CpuLanes::index_splat(y));
+                let lanes = spatio_temporal_noise_lanes::<CpuLanes>(p, frame);
+                for i in 0..CPU_LANES {
                     let one = spatio_temporal_noise(uvec2(x0 + i as u32, y), frame);
                     let got = (lanes.x.lane(i).to_bits(), lanes.y.lane(i).to_bits());
                     assert_eq!(got, (one.x.to_bits(), one.y.to_bits()), "pixel ({}, {y}) frame {frame}", x0 + i as u32);

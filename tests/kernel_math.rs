@@ -310,10 +310,10 @@ fn atomic_min_max_on_ordered_bits_reproduce_f32_min_max_under_contention() {
 /// and at ±1, ±0 and the smallest normals: 2·10⁻⁸ rad of method error plus binary32 rounding
 /// (about two ulp of a result up to π; a sector of VBAO's 32 is 0.098 rad, so this moves a
 /// sector edge by 5·10⁻⁶ of a sector);
-/// the scalar and 8-lane versions agree bit for bit.
+/// the scalar version and cpu-sim's lanes agree bit for bit.
 #[test]
 fn precise_acos_is_within_5e7_rad_everywhere_and_lanes_agree() {
-    use aokit_shaders::common::lanes::{F32x8, Lanes};
+    use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, Lanes};
     use aokit_shaders::common::math::precise_acos;
     let n = 1u32 << 21;
     let mut worst = (0.0f64, 0.0f32);
@@ -326,8 +326,8 @@ fn precise_acos_is_within_5e7_rad_everywhere_and_lanes_agree() {
         }
     }
     assert!(worst.0 <= 5e-7, "max error {:.2e} rad at x = {}", worst.0, worst.1);
-    for chunk in points.chunks_exact(8).step_by(97) {
-        let lanes = precise_acos(F32x8::from_lanes(|i| chunk[i]));
+    for chunk in points.chunks_exact(CPU_LANES).step_by(97) {
+        let lanes = precise_acos(CpuLanes::from_lanes(|i| chunk[i]));
         for (i, &x) in chunk.iter().enumerate() {
             assert_eq!(lanes.lane(i).to_bits(), precise_acos(x).to_bits(), "x = {x}");
         }

@@ -1,4 +1,4 @@
-//! The CPU's eight-lane drivers (SIMD across pixels, `aokit_shaders::common::lanes`)
+//! The CPU's lane drivers (SIMD across pixels, `CPU_LANES` per call, `aokit_shaders::common::lanes`)
 //! against the same kernels run one pixel at a time, as the GPU runs them. Where the lanes use
 //! only IEEE-exact operations (add, mul, div, sqrt, compares) the two must agree bit for bit:
 //! VAO, SVAO pass 1, the ray march and XeGTAO's denoiser. The blur's weights, XeGTAO's slices
@@ -181,7 +181,7 @@ fn vbao_lanes_match_one_pixel_at_a_time_within_one_step() {
 /// unit interval, MIP levels, +0 to +0).
 #[test]
 fn lane_clamp_equals_the_scalar_clamp_bit_for_bit() {
-    use aokit_shaders::common::lanes::{F32x8, Lanes};
+    use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, Lanes};
     use aokit_shaders::common::math::{clamp, clamp_lanes};
     let special = [f32::NAN, -f32::NAN, 0.0, -0.0, f32::INFINITY, f32::NEG_INFINITY, f32::MIN_POSITIVE, -1e-30];
     let mut checked = 0;
@@ -189,8 +189,8 @@ fn lane_clamp_equals_the_scalar_clamp_bit_for_bit() {
         let near = |b: f32| [b, f32::from_bits(b.to_bits() + 1), f32::from_bits(b.to_bits().wrapping_sub(1)), -b];
         let xs: Vec<f32> =
             special.iter().copied().chain(near(lo)).chain(near(hi)).chain([0.5, -0.5, 2.0, 7.25]).collect();
-        for chunk in xs.chunks(8) {
-            let lanes = clamp(F32x8::from_lanes(|i| chunk[i % chunk.len()]), lo, hi);
+        for chunk in xs.chunks(CPU_LANES) {
+            let lanes = clamp(CpuLanes::from_lanes(|i| chunk[i % chunk.len()]), lo, hi);
             for (i, &x) in chunk.iter().enumerate() {
                 let want = clamp_lanes::<f32>(x, lo, hi);
                 assert_eq!(
@@ -214,12 +214,12 @@ fn lane_clamp_equals_the_scalar_clamp_bit_for_bit() {
 /// is at most 4.8·10⁻⁷ relative, far below the 1/255 step of a stored term.
 #[test]
 fn lane_inverse_sqrt_is_within_4_ulp_of_the_correctly_rounded_value() {
-    use aokit_shaders::common::lanes::{F32x8, Lanes};
+    use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, Lanes};
     let xs: Vec<f32> = (f32::MIN_POSITIVE.to_bits()..f32::MAX.to_bits()).step_by(251).map(f32::from_bits).collect();
     assert!(xs.len() > 8_000_000, "{} values", xs.len());
     let mut worst = (0u32, 0.0f32);
-    for chunk in xs.chunks(8) {
-        let lanes = F32x8::from_lanes(|i| chunk[i % chunk.len()]).inverse_sqrt();
+    for chunk in xs.chunks(CPU_LANES) {
+        let lanes = CpuLanes::from_lanes(|i| chunk[i % chunk.len()]).inverse_sqrt();
         for (i, &x) in chunk.iter().enumerate() {
             let want = (1.0 / (x as f64).sqrt()) as f32;
             let ulps = lanes.lane(i).to_bits().abs_diff(want.to_bits());
@@ -229,7 +229,8 @@ fn lane_inverse_sqrt_is_within_4_ulp_of_the_correctly_rounded_value() {
         }
     }
     assert!(worst.0 <= 4, "{} ulp at x = {:e}", worst.0, worst.1);
-    let ends = F32x8::from_lanes(|i| [0.0, -0.0, f32::INFINITY, f32::NAN, 1.0, 4.0, 0.25, 2.0][i]).inverse_sqrt();
+    let ends =
+        CpuLanes::from_lanes(|i| [0.0, -0.0, f32::INFINITY, f32::NAN, 1.0, 4.0, 0.25, 2.0][i % 8]).inverse_sqrt();
     assert_eq!(ends.lane(0), f32::INFINITY);
     assert_eq!(ends.lane(1), f32::NEG_INFINITY, "1/√−0 = 1/−0");
     assert_eq!(ends.lane(2).to_bits(), 0.0f32.to_bits());

@@ -513,10 +513,10 @@ mod runners {
         io.write(EDGES).copy_from_slice(&edges);
     }
 
-    /// The half-resolution downsample (`aokit_shaders::halfres`) over the half target, eight
-    /// texels a call.
+    /// The half-resolution downsample (`aokit_shaders::halfres`) over the half target,
+    /// [`CPU_LANES`] texels a call.
     pub fn half_downsample(io: &mut PassIo) {
-        use aokit_shaders::common::lanes::{F32x8, Lanes};
+        use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, Lanes};
         use halfres::half_downsample::*;
         let params: halfres::HalfParams = io.push();
         let size = params.half.size();
@@ -524,38 +524,56 @@ mod runners {
         let (depth, normals) = (io.read(DEPTH), io.read(NORMALS));
         let (xs, ys) = (0..size.x, 0..size.y);
         let width = params.view.size().x as usize;
-        crate::screen::tiled_lanes2(half_depth, half_normals, size.x, xs, ys, 8, &crate::no_progress, |first, d, n| {
-            let q = crate::screen::lanes_of_run(first, d.len());
-            // The blocks' depths straight from their two rows (`block_depths`' order), lanes past
-            // the run repeating its last texel as `lanes_of_run` does.
-            let row = |dy: usize| &depth[(2 * first.y as usize + dy) * width..][..width];
-            let last = d.len() - 1;
-            let at = |dx: usize, dy: usize| F32x8::from_lanes(|i| row(dy)[2 * (first.x as usize + i.min(last)) + dx]);
-            let block = [at(0, 0), at(1, 0), at(0, 1), at(1, 1)];
-            let (depths, codes) = halfres::half_texel_of_block::<F32x8>(&params, normals, q, block);
-            for (i, (d, n)) in d.iter_mut().zip(n).enumerate() {
-                (*d, *n) = (F32x8::lane(depths, i), F32x8::index_lane(codes, i));
-            }
-        });
+        crate::screen::tiled_lanes2(
+            half_depth,
+            half_normals,
+            size.x,
+            xs,
+            ys,
+            CPU_LANES as u32,
+            &crate::no_progress,
+            |first, d, n| {
+                let q = crate::screen::lanes_of_run(first, d.len());
+                // The blocks' depths straight from their two rows (`block_depths`' order), lanes past
+                // the run repeating its last texel as `lanes_of_run` does.
+                let row = |dy: usize| &depth[(2 * first.y as usize + dy) * width..][..width];
+                let last = d.len() - 1;
+                let at =
+                    |dx: usize, dy: usize| CpuLanes::from_lanes(|i| row(dy)[2 * (first.x as usize + i.min(last)) + dx]);
+                let block = [at(0, 0), at(1, 0), at(0, 1), at(1, 1)];
+                let (depths, codes) = halfres::half_texel_of_block::<CpuLanes>(&params, normals, q, block);
+                for (i, (d, n)) in d.iter_mut().zip(n).enumerate() {
+                    (*d, *n) = (CpuLanes::lane(depths, i), CpuLanes::index_lane(codes, i));
+                }
+            },
+        );
     }
 
-    /// The half-resolution upsample (`aokit_shaders::halfres`) over the inner image, eight
-    /// pixels a call.
+    /// The half-resolution upsample (`aokit_shaders::halfres`) over the inner image,
+    /// [`CPU_LANES`] pixels a call.
     pub fn half_upsample(io: &mut PassIo) {
-        use aokit_shaders::common::lanes::{F32x8, Lanes};
+        use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, Lanes};
         use halfres::half_upsample::*;
         let params: halfres::HalfParams = io.push();
         let (size, g) = (params.view.size(), params.view.guard);
         let out = io.write(AO);
         let (depth, normals, half_depth, half_ao) =
             (io.read(DEPTH), io.read(NORMALS), io.read(HALF_DEPTH), io.read(HALF_AO));
-        crate::screen::tiled_lanes(out, size.x, g..size.x - g, g..size.y - g, 8, &crate::no_progress, |first, out| {
-            let p = crate::screen::lanes_of_run(first, out.len());
-            let ao = halfres::upsample_lanes::<F32x8>(&params, depth, normals, half_depth, half_ao, p);
-            for (i, v) in out.iter_mut().enumerate() {
-                *v = F32x8::lane(ao, i);
-            }
-        });
+        crate::screen::tiled_lanes(
+            out,
+            size.x,
+            g..size.x - g,
+            g..size.y - g,
+            CPU_LANES as u32,
+            &crate::no_progress,
+            |first, out| {
+                let p = crate::screen::lanes_of_run(first, out.len());
+                let ao = halfres::upsample_lanes::<CpuLanes>(&params, depth, normals, half_depth, half_ao, p);
+                for (i, v) in out.iter_mut().enumerate() {
+                    *v = CpuLanes::lane(ao, i);
+                }
+            },
+        );
     }
 
     /// The temporal accumulation (`aokit_shaders::temporal`) over the full target.

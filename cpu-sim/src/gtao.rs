@@ -2,7 +2,7 @@
 //! per-texel and per-pixel functions over whole buffers, in the GPU's dispatch order.
 
 use crate::screen::lanes_of_run;
-use aokit_shaders::common::lanes::{F32x8, Lanes};
+use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, Lanes};
 use aokit_shaders::common::read::TexelBuffer;
 use aokit_shaders::glam::{UVec2, vec3};
 use aokit_shaders::gtao::denoise::{denoise_lanes, is_last_pass};
@@ -44,7 +44,7 @@ pub fn run_prefilter(params: &GtaoParams, depth: &[f32]) -> Vec<f32> {
 }
 
 /// Prefilter pass `params.pass` over the packed chain `mips` as the GPU dispatches it, block by
-/// block: pass 0 eight 2×2 blocks at a time ([`prefilter_near_x8`], the lanes of the shader
+/// block: pass 0 [`CPU_LANES`] 2×2 blocks at a time ([`prefilter_near_run`], the lanes of the shader
 /// crate's `prefilter_near`), pass 1 the shader crate's [`prefilter_far`]; each row of blocks on
 /// a thread of its own, writing through relaxed atomics (the blocks write disjoint texels, as
 /// the GPU's invocations do).
@@ -57,7 +57,7 @@ pub fn prefilter_pass(params: &GtaoParams, depth: &[f32], mips: &mut [f32]) {
     (0..blocks.y).into_par_iter().for_each(|y| {
         let mut out = shared;
         if params.pass == 0 {
-            prefilter_near_x8(params, depth, &mut out, y);
+            prefilter_near_run(params, depth, &mut out, y);
             return;
         }
         for x in 0..blocks.x {
@@ -66,24 +66,24 @@ pub fn prefilter_pass(params: &GtaoParams, depth: &[f32], mips: &mut [f32]) {
     });
 }
 
-/// Pass 0 over a row `y` of 2×2 blocks, eight blocks per call of the shader crate's
+/// Pass 0 over a row `y` of 2×2 blocks, [`CPU_LANES`] blocks per call of the shader crate's
 /// lane-generic [`working_value`] and [`mip_filter`]: what
 /// [`aokit_shaders::gtao::prefilter::prefilter_near`] computes per block (whose MIP 0 reads clamp
 /// to the target the same way).
-pub fn prefilter_near_x8(params: &GtaoParams, depth: &[f32], out: &mut &[AtomicU32], y: u32) {
+pub fn prefilter_near_run(params: &GtaoParams, depth: &[f32], out: &mut &[AtomicU32], y: u32) {
     let full = params.view.size();
     let (size1, offset1) = (mip_size(full, 1), mip_offset(full, 1));
     let falloff = mip_falloff(params);
     let blocks = full.x.div_ceil(2);
     let rows = [(2 * y).min(full.y - 1), (2 * y + 1).min(full.y - 1)];
-    for x0 in (0..blocks).step_by(8) {
+    for x0 in (0..blocks).step_by(CPU_LANES) {
         let at = |dx: u32, dy: usize| {
             let row = (rows[dy] * full.x) as usize;
-            F32x8::from_lanes(|i| depth[row + (2 * (x0 + i as u32) + dx).min(full.x - 1) as usize])
+            CpuLanes::from_lanes(|i| depth[row + (2 * (x0 + i as u32) + dx).min(full.x - 1) as usize])
         };
         let d = [at(0, 0), at(1, 0), at(0, 1), at(1, 1)].map(|v| working_value(v, params.view.far));
         let m1 = mip_filter(d, &falloff);
-        for i in 0..8.min(blocks - x0) {
+        for i in 0..(CPU_LANES as u32).min(blocks - x0) {
             let b = x0 + i;
             for (k, (dx, dy)) in [(0, 0), (1, 0), (0, 1), (1, 1)].into_iter().enumerate() {
                 let (px, py) = (2 * b + dx, 2 * y + dy);
@@ -103,8 +103,8 @@ pub fn run_normals(params: &GtaoParams, depth: &[f32]) -> Vec<u32> {
     per_pixel(params.view.size(), |p| normal_from_depth(params, depth, p))
 }
 
-/// MainPass: AO terms (0–255) and packed edges per pixel of the full target, eight pixels of a
-/// row per call of the shader crate's lane-generic slices ([`main_pass_x8`]).
+/// MainPass: AO terms (0–255) and packed edges per pixel of the full target, [`CPU_LANES`] pixels of a
+/// row per call of the shader crate's lane-generic slices ([`main_pass_run`]).
 pub fn run_main(params: &GtaoParams, mips: &[f32], normals: &[u32]) -> (Vec<u32>, Vec<u32>) {
     let size = params.view.size();
     let (mut terms, mut edges) = (vec![0; (size.x * size.y) as usize], vec![0; (size.x * size.y) as usize]);
@@ -115,16 +115,23 @@ pub fn run_main(params: &GtaoParams, mips: &[f32], normals: &[u32]) -> (Vec<u32>
 /// [`run_main`] into the caller's term and edge buffers.
 pub fn run_main_into(params: &GtaoParams, mips: &[f32], normals: &[u32], terms: &mut [u32], edges: &mut [u32]) {
     let size = params.view.size();
-    crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |p, t, e| {
-        main_pass_x8(params, mips, normals, p, t, e)
-    });
+    crate::screen::tiled_lanes2(
+        terms,
+        edges,
+        size.x,
+        0..size.x,
+        0..size.y,
+        CPU_LANES as u32,
+        &crate::no_progress,
+        |p, t, e| main_pass_run(params, mips, normals, p, t, e),
+    );
 }
 
-/// XeGTAO's MainPass for `terms.len()` ≤ 8 consecutive pixels of a row from `first`: the
-/// setup, the slices and the final power of [`aokit_shaders::gtao::gtao_pixel`] on eight lanes
+/// XeGTAO's MainPass for `terms.len()` ≤ [`CPU_LANES`] consecutive pixels of a row from `first`: the
+/// setup, the slices and the final power of [`aokit_shaders::gtao::gtao_pixel`] on [`CPU_LANES`] lanes
 /// at once, the stored term per lane. Missing lanes repeat the last pixel; lanes without a
 /// usable depth are computed and discarded, as on a GPU.
-pub fn main_pass_x8(
+pub fn main_pass_run(
     params: &GtaoParams,
     mips: &[f32],
     normals: &[u32],
@@ -132,33 +139,43 @@ pub fn main_pass_x8(
     terms: &mut [u32],
     edges: &mut [u32],
 ) {
-    let (packed, valid, px) = pixel_setup::<F32x8>(params, mips, normals, lanes_of_run(first, terms.len()));
+    let (packed, valid, px) = pixel_setup::<CpuLanes>(params, mips, normals, lanes_of_run(first, terms.len()));
     let (vis, bent) = slices_visibility(params, mips, &px);
     let vis = final_visibility(vis, params.final_value_power);
     for (i, (t, e)) in terms.iter_mut().zip(edges.iter_mut()).enumerate() {
         let b = vec3(bent.x.lane(i), bent.y.lane(i), bent.z.lane(i));
         let n = vec3(px.n.x.lane(i), px.n.y.lane(i), px.n.z.lane(i));
-        *t = finish_pixel(params, F32x8::mask_lane(valid, i), vis.lane(i), b, n);
-        *e = F32x8::index_lane(packed, i);
+        *t = finish_pixel(params, CpuLanes::mask_lane(valid, i), vis.lane(i), b, n);
+        *e = CpuLanes::index_lane(packed, i);
     }
 }
 
-/// VBAO's main pass into the caller's term and edge buffers, eight pixels of a row per call of
+/// VBAO's main pass into the caller's term and edge buffers, [`CPU_LANES`] pixels of a row per call of
 /// the shader crate's lane-generic [`pixel_setup`], [`vbao_visibility`] and [`final_visibility`]
 /// (the stored term per lane).
 pub fn run_vbao_into(params: &VbaoParams, mips: &[f32], normals: &[u32], terms: &mut [u32], edges: &mut [u32]) {
     let size = params.gtao.view.size();
-    crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |first, t, e| {
-        let (packed, valid, px) = pixel_setup::<F32x8>(&params.gtao, mips, normals, lanes_of_run(first, t.len()));
-        let vis = final_visibility(vbao_visibility(params, mips, &px), params.gtao.final_value_power);
-        for (i, (t, e)) in t.iter_mut().zip(e.iter_mut()).enumerate() {
-            *t = vbao_term(F32x8::mask_lane(valid, i), vis.lane(i));
-            *e = F32x8::index_lane(packed, i);
-        }
-    });
+    crate::screen::tiled_lanes2(
+        terms,
+        edges,
+        size.x,
+        0..size.x,
+        0..size.y,
+        CPU_LANES as u32,
+        &crate::no_progress,
+        |first, t, e| {
+            let (packed, valid, px) =
+                pixel_setup::<CpuLanes>(&params.gtao, mips, normals, lanes_of_run(first, t.len()));
+            let vis = final_visibility(vbao_visibility(params, mips, &px), params.gtao.final_value_power);
+            for (i, (t, e)) in t.iter_mut().zip(e.iter_mut()).enumerate() {
+                *t = vbao_term(CpuLanes::mask_lane(valid, i), vis.lane(i));
+                *e = CpuLanes::index_lane(packed, i);
+            }
+        },
+    );
 }
 
-/// vbao-sd's phase 1 (spec vbao §8.1) over the full target, rows in parallel, eight pixels per
+/// vbao-sd's phase 1 (spec vbao §8.1) over the full target, rows in parallel, [`CPU_LANES`] pixels per
 /// call: every flagged sample widens its SD texel's ray interval in `ray_min` / `ray_max`
 /// (cleared by the caller) by atomic min / max, as the GPU's invocations do.
 pub fn run_vbao_sd_request_into(
@@ -173,10 +190,10 @@ pub fn run_vbao_sd_request_into(
     let (ray_min, ray_max) = (as_atomics(ray_min), as_atomics(ray_max));
     (0..size.y).into_par_iter().for_each(|y| {
         let (mut lo, mut hi) = (ray_min, ray_max);
-        for x in (0..size.x).step_by(8) {
+        for x in (0..size.x).step_by(CPU_LANES) {
             // A short last run repeats its last pixel: its requests again, which change nothing.
-            let p = lanes_of_run(UVec2::new(x, y), (size.x - x).min(8) as usize);
-            request_pixel::<F32x8, _, _>(params, sd, mips, normals, p, &mut lo, &mut hi);
+            let p = lanes_of_run(UVec2::new(x, y), (size.x - x).min(CPU_LANES as u32) as usize);
+            request_pixel::<CpuLanes, _, _>(params, sd, mips, normals, p, &mut lo, &mut hi);
         }
     });
 }
@@ -190,7 +207,7 @@ fn as_atomics(words: &mut [u32]) -> &[AtomicU32] {
     unsafe { core::slice::from_raw_parts(words.as_mut_ptr() as *const AtomicU32, words.len()) }
 }
 
-/// vbao-sd's main pass (spec vbao §8.2) into the caller's terms and edges: eight pixels of a
+/// vbao-sd's main pass (spec vbao §8.2) into the caller's terms and edges: [`CPU_LANES`] pixels of a
 /// row per call of the shader crate's lane-generic occupancy ([`SdLayers`]), as
 /// [`run_vbao_into`].
 pub fn run_vbao_sd_into(
@@ -203,15 +220,25 @@ pub fn run_vbao_sd_into(
     edges: &mut [u32],
 ) {
     let size = params.gtao.view.size();
-    crate::screen::tiled_lanes2(terms, edges, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |first, t, e| {
-        let (packed, valid, px) = pixel_setup::<F32x8>(&params.gtao, mips, normals, lanes_of_run(first, t.len()));
-        let mut layers = SdLayers { map, sd, mips };
-        let vis = final_visibility(visibility_with(params, mips, &px, &mut layers), params.gtao.final_value_power);
-        for (i, (t, e)) in t.iter_mut().zip(e.iter_mut()).enumerate() {
-            *t = vbao_term(F32x8::mask_lane(valid, i), vis.lane(i));
-            *e = F32x8::index_lane(packed, i);
-        }
-    });
+    crate::screen::tiled_lanes2(
+        terms,
+        edges,
+        size.x,
+        0..size.x,
+        0..size.y,
+        CPU_LANES as u32,
+        &crate::no_progress,
+        |first, t, e| {
+            let (packed, valid, px) =
+                pixel_setup::<CpuLanes>(&params.gtao, mips, normals, lanes_of_run(first, t.len()));
+            let mut layers = SdLayers { map, sd, mips };
+            let vis = final_visibility(visibility_with(params, mips, &px, &mut layers), params.gtao.final_value_power);
+            for (i, (t, e)) in t.iter_mut().zip(e.iter_mut()).enumerate() {
+                *t = vbao_term(CpuLanes::mask_lane(valid, i), vis.lane(i));
+                *e = CpuLanes::index_lane(packed, i);
+            }
+        },
+    );
 }
 
 /// The denoise passes; returns the visibility per pixel (full target).
@@ -228,7 +255,7 @@ pub fn run_denoise(params: &GtaoParams, terms: &[u32], edges: &[u32]) -> Vec<f32
 }
 
 /// Denoise pass `params.pass` into the caller's buffers: the terms for the next pass and, in
-/// the last pass, the visibility. Without bent normals eight pixels of a row per call of the
+/// the last pass, the visibility. Without bent normals [`CPU_LANES`] pixels of a row per call of the
 /// shader crate's lane-generic [`denoise_lanes`]; with them one pixel at a time.
 pub fn denoise_into(params: &GtaoParams, terms_in: &[u32], edges: &[u32], terms_out: &mut [u32], ao: &mut [f32]) {
     let size = params.view.size();
@@ -243,16 +270,25 @@ pub fn denoise_into(params: &GtaoParams, terms_in: &[u32], edges: &[u32], terms_
         return;
     }
     let last = is_last_pass(params);
-    crate::screen::tiled_lanes2(terms_out, ao, size.x, 0..size.x, 0..size.y, 8, &crate::no_progress, |first, t, a| {
-        let (term, visibility) = denoise_lanes::<F32x8>(params, terms_in, edges, lanes_of_run(first, t.len()));
-        let term = term.to_array();
-        for (i, out) in t.iter_mut().enumerate() {
-            *out = term[i] as u32;
-        }
-        if last {
-            for (i, out) in a.iter_mut().enumerate() {
-                *out = visibility.lane(i);
+    crate::screen::tiled_lanes2(
+        terms_out,
+        ao,
+        size.x,
+        0..size.x,
+        0..size.y,
+        CPU_LANES as u32,
+        &crate::no_progress,
+        |first, t, a| {
+            let (term, visibility) = denoise_lanes::<CpuLanes>(params, terms_in, edges, lanes_of_run(first, t.len()));
+            let term = term.to_array();
+            for (i, out) in t.iter_mut().enumerate() {
+                *out = term[i] as u32;
             }
-        }
-    });
+            if last {
+                for (i, out) in a.iter_mut().enumerate() {
+                    *out = visibility.lane(i);
+                }
+            }
+        },
+    );
 }

@@ -4,7 +4,7 @@
 use crate::Progress;
 use aokit_shaders::blur::{BlurParams, blur_lanes};
 use aokit_shaders::common::gbuffer_read::GBufferSlices;
-use aokit_shaders::common::lanes::{F32x8, Lanes, U2x8};
+use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, Lanes};
 use aokit_shaders::glam::{UVec2, uvec2};
 use aokit_shaders::vao::VaoParams;
 use aokit_shaders::vao::kernel::{setup_lanes, vao_finish, vao_visibility_sum};
@@ -97,17 +97,17 @@ pub fn lane_pixel(first: UVec2, i: usize, n: usize) -> UVec2 {
     uvec2(first.x + i.min(n - 1) as u32, first.y)
 }
 
-/// The `n` ≥ 1 consecutive pixels of a row from `first` as eight lanes ([`lane_pixel`]).
-pub fn lanes_of_run(first: UVec2, n: usize) -> U2x8 {
-    U2x8::from_texels(&core::array::from_fn(|i| lane_pixel(first, i, n)))
+/// The `n` ≥ 1 consecutive pixels of a row from `first` as cpu-sim's lanes ([`CpuLanes`], [`lane_pixel`]).
+pub fn lanes_of_run(first: UVec2, n: usize) -> <CpuLanes as Lanes>::U2 {
+    <CpuLanes as Lanes>::U2::from_texels(&core::array::from_fn(|i| lane_pixel(first, i, n)))
 }
 
-/// Call `kernel(first, out)` for runs of up to 8 consecutive inner pixels of a full-target
+/// Call `kernel(first, out)` for runs of up to [`CPU_LANES`] consecutive inner pixels of a full-target
 /// image, in parallel [`tiled_lanes`] bands. Guard-band pixels keep 1.
 fn for_inner_lanes(size: UVec2, guard: u32, progress: Progress, kernel: impl Fn(UVec2, &mut [f32]) + Sync) -> Vec<f32> {
     let mut out = vec![1.0; (size.x * size.y) as usize];
     let (xs, ys) = (guard..size.x.saturating_sub(guard), guard..size.y.saturating_sub(guard));
-    tiled_lanes(&mut out, size.x, xs, ys, 8, progress, kernel);
+    tiled_lanes(&mut out, size.x, xs, ys, CPU_LANES as u32, progress, kernel);
     out
 }
 
@@ -116,23 +116,23 @@ fn for_inner_lanes(size: UVec2, guard: u32, progress: Progress, kernel: impl Fn(
 pub fn run_vao(params: &VaoParams, depth: &[f32], normals: &[u32], progress: Progress) -> Vec<f32> {
     let size = params.view.size();
     let gbuffer = GBufferSlices { depth, normals, width: size.x };
-    for_inner_lanes(size, params.view.guard, progress, |p, ao| vao_x8(&gbuffer, params, p, ao))
+    for_inner_lanes(size, params.view.guard, progress, |p, ao| vao_run(&gbuffer, params, p, ao))
 }
 
-/// [`aokit_shaders::vao::vao_pixel`] for `ao.len()` ≤ 8 consecutive pixels of a row from `first`: the per-pixel
-/// setup and final power per lane, the samples on eight lanes at once. Missing lanes repeat the
+/// [`aokit_shaders::vao::vao_pixel`] for `ao.len()` ≤ [`CPU_LANES`] consecutive pixels of a row from `first`: the per-pixel
+/// setup and final power per lane, the samples on all lanes at once. Missing lanes repeat the
 /// last pixel; unshaded pixels (no usable depth) borrow a shaded lane's frame and are
 /// discarded.
-pub fn vao_x8(gbuffer: &GBufferSlices, params: &VaoParams, first: UVec2, ao: &mut [f32]) {
+pub fn vao_run(gbuffer: &GBufferSlices, params: &VaoParams, first: UVec2, ao: &mut [f32]) {
     let p = lanes_of_run(first, ao.len());
-    let (shaded, frame) = setup_lanes::<_, F32x8>(gbuffer, &params.view, params.radius, params.max_screen_radius, p);
-    if !F32x8::any(shaded) {
+    let (shaded, frame) = setup_lanes::<_, CpuLanes>(gbuffer, &params.view, params.radius, params.max_screen_radius, p);
+    if !CpuLanes::any(shaded) {
         ao.fill(1.0);
         return;
     }
     let sum = vao_visibility_sum(gbuffer, params, &frame);
     for (i, v) in ao.iter_mut().enumerate() {
-        *v = if F32x8::mask_lane(shaded, i) { vao_finish(params, sum.lane(i)) } else { 1.0 };
+        *v = if CpuLanes::mask_lane(shaded, i) { vao_finish(params, sum.lane(i)) } else { 1.0 };
     }
 }
 
@@ -140,7 +140,7 @@ pub fn vao_x8(gbuffer: &GBufferSlices, params: &VaoParams, first: UVec2, ao: &mu
 /// Eight pixels of a row per call of the shader crate's lane-generic blur.
 pub fn run_blur_direction(params: &BlurParams, ao: &[f32], depth: &[f32]) -> Vec<f32> {
     for_inner_lanes(params.view.size(), params.view.guard, &crate::no_progress, |p, out| {
-        let v: F32x8 = blur_lanes(params, ao, depth, p);
+        let v: CpuLanes = blur_lanes(params, ao, depth, p);
         for (i, x) in out.iter_mut().enumerate() {
             *x = v.lane(i);
         }

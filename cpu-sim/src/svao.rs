@@ -10,7 +10,7 @@ use crate::{Progress, SceneBvh};
 use aokit_shaders::common::alpha::AlphaTables;
 use aokit_shaders::common::float_order::{RAY_MAX_CLEAR, RAY_MIN_CLEAR};
 use aokit_shaders::common::gbuffer_read::{DepthSlice, GBufferSlices};
-use aokit_shaders::common::lanes::{F32x8, LaneVec3, Lanes};
+use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, LaneVec3, Lanes};
 use aokit_shaders::glam::{UVec2, uvec2, vec2};
 use aokit_shaders::rastersd::raster_fragment;
 use aokit_shaders::raysd::{SdMapRefine, SdPayload, SdRay, reservoir_any_hit, sd_ray, store_layers};
@@ -52,18 +52,18 @@ pub fn run_pass1(params: &SvaoParams, depth: &[f32], normals: &[u32], depth2: &[
     let gbuffer = GBufferSlices { depth, normals, width: size.x };
     let g = view.guard;
     let (xs, ys) = (g..size.x - g, g..size.y - g);
-    crate::screen::tiled_lanes2(&mut ao, &mut mask, size.x, xs, ys, 8, progress, |p, ao, mask| {
-        pass1_x8(&gbuffer, depth2, params, p, ao, mask, (&ray_min, &ray_max))
+    crate::screen::tiled_lanes2(&mut ao, &mut mask, size.x, xs, ys, CPU_LANES as u32, progress, |p, ao, mask| {
+        pass1_run(&gbuffer, depth2, params, p, ao, mask, (&ray_min, &ray_max))
     });
     let unwrap = |v: Vec<AtomicU32>| v.into_iter().map(AtomicU32::into_inner).collect::<Vec<u32>>();
     Pass1 { ao, mask, ray_min: unwrap(ray_min), ray_max: unwrap(ray_max) }
 }
 
-/// [`aokit_shaders::svao::pass1_pixel`] for `ao.len()` ≤ 8 consecutive pixels of a row from `first`: the per-pixel setup,
+/// [`aokit_shaders::svao::pass1_pixel`] for `ao.len()` ≤ [`CPU_LANES`] consecutive pixels of a row from `first`: the per-pixel setup,
 /// the mask bits, the interval atomics and the final store per lane, the samples' arithmetic on
-/// eight lanes at once. Missing lanes repeat the last pixel; unshaded pixels borrow a shaded
+/// all lanes at once. Missing lanes repeat the last pixel; unshaded pixels borrow a shaded
 /// lane's frame and are discarded.
-fn pass1_x8(
+fn pass1_run(
     gbuffer: &GBufferSlices,
     depth2: &[f32],
     params: &SvaoParams,
@@ -75,18 +75,18 @@ fn pass1_x8(
     let vao = &params.vao;
     let n = ao.len();
     let p = lanes_of_run(first, n);
-    let (shaded, lanes) = setup_lanes::<_, F32x8>(gbuffer, &vao.view, vao.radius, vao.max_screen_radius, p);
-    if !F32x8::any(shaded) {
+    let (shaded, lanes) = setup_lanes::<_, CpuLanes>(gbuffer, &vao.view, vao.radius, vao.max_screen_radius, p);
+    if !CpuLanes::any(shaded) {
         return;
     }
-    let shaded: [bool; 8] = core::array::from_fn(|k| F32x8::mask_lane(shaded, k));
+    let shaded: [bool; CPU_LANES] = core::array::from_fn(|k| CpuLanes::mask_lane(shaded, k));
     let distance = lanes.position.length();
-    let (mut sum, mut mask) = (F32x8::splat(0.0), [0u32; 8]);
+    let (mut sum, mut mask) = (CpuLanes::splat(0.0), [0u32; CPU_LANES]);
     for i in 0..params.samples() {
         let r = pass1_sample(gbuffer, depth2, params, &lanes, i);
         sum = sum + r.value;
         for (k, m) in mask.iter_mut().enumerate().take(n) {
-            if shaded[k] && F32x8::mask_lane(r.flagged, k) {
+            if shaded[k] && CpuLanes::mask_lane(r.flagged, k) {
                 *m |= 1 << i;
                 let s = &r.sample;
                 let uv = vec2(s.uv.x.lane(k), s.uv.y.lane(k));

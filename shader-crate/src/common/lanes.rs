@@ -483,33 +483,66 @@ pub fn v3_from_lanes<L: Lanes>(f: impl Fn(usize) -> Vec3) -> L::V3 {
 
 #[cfg(not(target_arch = "spirv"))]
 pub use x8::{F32x8, U2x8, V2x8, V3x8};
-
-/// Eight lanes on the CPU.
 #[cfg(not(target_arch = "spirv"))]
-mod x8 {
-    use super::{LaneVec2, LaneVec3, Lanes};
-    use crate::glam::{UVec2, Vec2};
+pub use x16::{F32x16, U2x16, V2x16, V3x16};
+
+/// The lanes cpu-sim runs every lane-generic kernel on: sixteen consecutive pixels of a row per
+/// call. On x86-64-v3 (AVX2, the default build) an [`F32x16`] is two 256-bit vectors whose
+/// operations are independent, so each half's long dependency chains (the polynomials of
+/// `sin`/`acos`, the gathers, the divisions) overlap the other's: XeGTAO's main pass ran 31 %
+/// faster than on [`F32x8`] (one vector) on the benchmark host, single-threaded
+/// (`docs/benchmarks.md`).
+#[cfg(not(target_arch = "spirv"))]
+pub type CpuLanes = F32x16;
+
+/// The number of pixels cpu-sim shades per call of a lane-generic kernel ([`CpuLanes`]).
+#[cfg(not(target_arch = "spirv"))]
+pub const CPU_LANES: usize = 16;
+
+#[cfg(not(target_arch = "spirv"))]
+const _: () = assert!(<CpuLanes as Lanes>::LANES == CPU_LANES);
+
+/// `[f(0), f(1), …]`, always inlined and written as a loop the optimiser unrolls:
+/// `core::array::from_fn` is not inlined at sixteen lanes, which left a call (and the vector
+/// assembled through memory) in every gather of cpu-sim's kernels.
+#[cfg(not(target_arch = "spirv"))]
+#[inline(always)]
+pub fn lane_array<T: Copy + Default, const N: usize>(f: impl Fn(usize) -> T) -> [T; N] {
+    let mut out = [T::default(); N];
+    for (i, o) in out.iter_mut().enumerate() {
+        *o = f(i);
+    }
+    out
+}
+
+/// The CPU's lane types over `wide`'s vectors of `$n` lanes: `$F` (one `f32` variable of `$n`
+/// pixels), `$U2` (texels), `$V2`, `$V3`.
+#[cfg(not(target_arch = "spirv"))]
+macro_rules! cpu_lanes {
+    ($F:ident, $U2:ident, $V2:ident, $V3:ident, $f:ident, $i:ident, $n:literal) => {
+    use $crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
+    use $crate::glam::{UVec2, Vec2};
     use core::ops::{Add, Div, Mul, Neg, Sub};
-    use wide::{f32x8, i32x8};
+    use wide::{$f, $i};
 
     /// Eight pixels' values of one `f32` variable.
     #[derive(Copy, Clone, Debug, PartialEq)]
-    pub struct F32x8(pub f32x8);
+    pub struct $F(pub $f);
 
     macro_rules! binary {
-        ($tr:ident, $f:ident, $op:tt) => {
-            impl $tr for F32x8 {
-                type Output = F32x8;
+        ($tr:ident, $method:ident, $op:tt) => {
+            impl $tr for $F {
+                type Output = $F;
                 #[inline(always)]
-                fn $f(self, o: F32x8) -> F32x8 {
-                    F32x8(self.0 $op o.0)
+                fn $method(self, o: $F) -> $F {
+                    $F(self.0 $op o.0)
                 }
             }
-            impl $tr<f32> for F32x8 {
-                type Output = F32x8;
+            impl $tr<f32> for $F {
+                type Output = $F;
                 #[inline(always)]
-                fn $f(self, o: f32) -> F32x8 {
-                    F32x8(self.0 $op f32x8::splat(o))
+                fn $method(self, o: f32) -> $F {
+                    $F(self.0 $op $f::splat(o))
                 }
             }
         };
@@ -519,29 +552,29 @@ mod x8 {
     binary!(Mul, mul, *);
     binary!(Div, div, /);
 
-    impl Neg for F32x8 {
-        type Output = F32x8;
+    impl Neg for $F {
+        type Output = $F;
         #[inline(always)]
-        fn neg(self) -> F32x8 {
-            F32x8(-self.0)
+        fn neg(self) -> $F {
+            $F(-self.0)
         }
     }
 
-    impl Lanes for F32x8 {
-        const LANES: usize = 8;
-        type Mask = f32x8;
-        type U2 = U2x8;
-        type V2 = V2x8;
-        type V3 = V3x8;
-        type Index = i32x8;
+    impl Lanes for $F {
+        const LANES: usize = $n;
+        type Mask = $f;
+        type U2 = $U2;
+        type V2 = $V2;
+        type V3 = $V3;
+        type Index = $i;
 
         #[inline(always)]
         fn splat(v: f32) -> Self {
-            F32x8(f32x8::splat(v))
+            $F($f::splat(v))
         }
         #[inline(always)]
         fn from_lanes(f: impl Fn(usize) -> f32) -> Self {
-            F32x8(f32x8::new(core::array::from_fn(f)))
+            $F($f::new($crate::common::lanes::lane_array(f)))
         }
         #[inline(always)]
         fn lane(self, i: usize) -> f32 {
@@ -549,11 +582,11 @@ mod x8 {
         }
         #[inline(always)]
         fn gather(data: &[f32], index: impl Fn(usize) -> usize) -> Self {
-            F32x8(f32x8::new(core::array::from_fn(|i| data[index(i)])))
+            $F($f::new($crate::common::lanes::lane_array(|i| data[index(i)])))
         }
         #[inline(always)]
         fn sqrt(self) -> Self {
-            F32x8(self.0.sqrt())
+            $F(self.0.sqrt())
         }
         /// `vfmadd` where the build targets FMA (x86-64-v3, the default); elsewhere the
         /// scalar fused multiply-add per lane (`wide` would round twice), so one rounding
@@ -561,11 +594,11 @@ mod x8 {
         #[inline(always)]
         fn mul_add(self, a: Self, b: Self) -> Self {
             #[cfg(target_feature = "fma")]
-            let r = F32x8(self.0.mul_add(a.0, b.0));
+            let r = $F(self.0.mul_add(a.0, b.0));
             #[cfg(not(target_feature = "fma"))]
             let r = {
                 let (x, a, b) = (self.0.to_array(), a.0.to_array(), b.0.to_array());
-                F32x8(f32x8::new(core::array::from_fn(|i| x[i].mul_add(a[i], b[i]))))
+                $F($f::new($crate::common::lanes::lane_array(|i| x[i].mul_add(a[i], b[i]))))
             };
             r
         }
@@ -577,85 +610,85 @@ mod x8 {
         #[inline(always)]
         fn inverse_sqrt(self) -> Self {
             let y = self.0.recip_sqrt();
-            let refined = y * (f32x8::splat(1.5) - f32x8::splat(0.5) * self.0 * y * y);
-            let exact_estimate = y.simd_eq(f32x8::ZERO) | y.abs().simd_eq(f32x8::splat(f32::INFINITY));
-            F32x8(wide::Select::select(exact_estimate, y, refined))
+            let refined = y * ($f::splat(1.5) - $f::splat(0.5) * self.0 * y * y);
+            let exact_estimate = y.simd_eq($f::ZERO) | y.abs().simd_eq($f::splat(f32::INFINITY));
+            $F(wide::Select::select(exact_estimate, y, refined))
         }
         #[inline(always)]
         fn abs(self) -> Self {
-            F32x8(self.0.abs())
+            $F(self.0.abs())
         }
         #[inline(always)]
         fn max(self, o: Self) -> Self {
-            F32x8(self.0.max(o.0))
+            $F(self.0.max(o.0))
         }
         #[inline(always)]
         fn min(self, o: Self) -> Self {
-            F32x8(self.0.min(o.0))
+            $F(self.0.min(o.0))
         }
         #[inline(always)]
         fn acos(self) -> Self {
-            F32x8(self.0.acos())
+            $F(self.0.acos())
         }
         #[inline(always)]
         fn sin(self) -> Self {
-            F32x8(self.0.sin_cos().0)
+            $F(self.0.sin_cos().0)
         }
         #[inline(always)]
         fn cos(self) -> Self {
-            F32x8(self.0.sin_cos().1)
+            $F(self.0.sin_cos().1)
         }
         #[inline(always)]
         fn sin_cos(self) -> (Self, Self) {
             let (s, c) = self.0.sin_cos();
-            (F32x8(s), F32x8(c))
+            ($F(s), $F(c))
         }
         #[inline(always)]
         fn exp2(self) -> Self {
-            F32x8(self.0.exp2())
+            $F(self.0.exp2())
         }
         #[inline(always)]
         fn log2(self) -> Self {
-            F32x8(self.0.ln() * f32x8::splat(core::f32::consts::LOG2_E))
+            $F(self.0.ln() * $f::splat(core::f32::consts::LOG2_E))
         }
         #[inline(always)]
         fn powf(self, p: f32) -> Self {
-            F32x8(self.0.powf_simd(f32x8::splat(p)))
+            $F(self.0.powf_simd($f::splat(p)))
         }
         #[inline(always)]
         fn floor(self) -> Self {
-            F32x8(self.0.floor())
+            $F(self.0.floor())
         }
         #[inline(always)]
         fn round_even(self) -> Self {
-            F32x8(self.0.round_ties_even())
+            $F(self.0.round_ties_even())
         }
         #[inline(always)]
         fn map_bits(self, f: impl Fn(u32) -> u32) -> Self {
             let a = self.0.to_array();
-            F32x8(f32x8::new(core::array::from_fn(|i| f32::from_bits(f(a[i].to_bits())))))
+            $F($f::new($crate::common::lanes::lane_array(|i| f32::from_bits(f(a[i].to_bits())))))
         }
         #[inline(always)]
-        fn gt(self, o: Self) -> f32x8 {
+        fn gt(self, o: Self) -> $f {
             self.0.simd_gt(o.0)
         }
         #[inline(always)]
-        fn lt(self, o: Self) -> f32x8 {
+        fn lt(self, o: Self) -> $f {
             self.0.simd_lt(o.0)
         }
         #[inline(always)]
-        fn ge(self, o: Self) -> f32x8 {
+        fn ge(self, o: Self) -> $f {
             self.0.simd_ge(o.0)
         }
         #[inline(always)]
-        fn le(self, o: Self) -> f32x8 {
+        fn le(self, o: Self) -> $f {
             self.0.simd_le(o.0)
         }
         #[inline(always)]
-        fn select(m: f32x8, a: Self, b: Self) -> Self {
+        fn select(m: $f, a: Self, b: Self) -> Self {
             // `vblendvps` (one instruction); the masks are whole lanes of ones or zeros, so it
             // picks as `bitselect`'s and/andnot/or would.
-            F32x8(wide::Select::select(m, a.0, b.0))
+            $F(wide::Select::select(m, a.0, b.0))
         }
         /// On x86-64 `minps(maxps(x, lo), hi)`: `maxps` returns its second operand for a NaN
         /// or equal pair, so NaN → lo and x = lo → lo (±0 included), then `minps` keeps x below
@@ -665,105 +698,105 @@ mod x8 {
         #[inline(always)]
         fn clamp_between(self, lo: Self, hi: Self) -> Self {
             #[cfg(target_arch = "x86_64")]
-            let c = F32x8(self.0.fast_max(lo.0).fast_min(hi.0));
+            let c = $F(self.0.fast_max(lo.0).fast_min(hi.0));
             #[cfg(not(target_arch = "x86_64"))]
-            let c = crate::common::math::clamp_lanes(self, lo, hi);
+            let c = $crate::common::math::clamp_lanes(self, lo, hi);
             c
         }
         #[inline(always)]
-        fn and(a: f32x8, b: f32x8) -> f32x8 {
+        fn and(a: $f, b: $f) -> $f {
             a & b
         }
         #[inline(always)]
-        fn or(a: f32x8, b: f32x8) -> f32x8 {
+        fn or(a: $f, b: $f) -> $f {
             a | b
         }
         #[inline(always)]
-        fn not(a: f32x8) -> f32x8 {
+        fn not(a: $f) -> $f {
             !a
         }
         #[inline(always)]
-        fn mask_splat(b: bool) -> f32x8 {
-            f32x8::splat(if b { f32::from_bits(u32::MAX) } else { 0.0 })
+        fn mask_splat(b: bool) -> $f {
+            $f::splat(if b { f32::from_bits(u32::MAX) } else { 0.0 })
         }
         #[inline(always)]
-        fn mask_lane(m: f32x8, i: usize) -> bool {
+        fn mask_lane(m: $f, i: usize) -> bool {
             m.as_array()[i].to_bits() != 0
         }
         #[inline(always)]
-        fn texel_lane(t: U2x8, i: usize) -> UVec2 {
+        fn texel_lane(t: $U2, i: usize) -> UVec2 {
             UVec2::new(t.x.as_array()[i] as u32, t.y.as_array()[i] as u32)
         }
         #[inline(always)]
-        fn any(m: f32x8) -> bool {
+        fn any(m: $f) -> bool {
             m.any()
         }
         #[inline(always)]
-        fn texel(x: i32x8, y: i32x8) -> U2x8 {
-            U2x8 { x, y }
+        fn texel(x: $i, y: $i) -> $U2 {
+            $U2 { x, y }
         }
         #[inline(always)]
-        fn texel_x(t: U2x8) -> i32x8 {
+        fn texel_x(t: $U2) -> $i {
             t.x
         }
         #[inline(always)]
-        fn texel_y(t: U2x8) -> i32x8 {
+        fn texel_y(t: $U2) -> $i {
             t.y
         }
         #[inline(always)]
-        fn index_to_float(i: i32x8) -> Self {
-            F32x8(i.round_float())
+        fn index_to_float(i: $i) -> Self {
+            $F(i.round_float())
         }
         #[inline(always)]
-        fn index_eq(a: i32x8, b: i32x8) -> f32x8 {
-            bytemuck::cast::<i32x8, f32x8>(a.simd_eq(b))
+        fn index_eq(a: $i, b: $i) -> $f {
+            bytemuck::cast::<$i, $f>(a.simd_eq(b))
         }
         #[inline(always)]
-        fn index_splat(n: u32) -> i32x8 {
-            i32x8::splat(n as i32)
+        fn index_splat(n: u32) -> $i {
+            $i::splat(n as i32)
         }
         #[inline(always)]
-        fn index_mip_extent(n: u32, k: i32x8) -> i32x8 {
-            i32x8::splat(n as i32).unbounded_shr(bytemuck::cast(k)).max(i32x8::splat(1))
+        fn index_mip_extent(n: u32, k: $i) -> $i {
+            $i::splat(n as i32).unbounded_shr(bytemuck::cast(k)).max($i::splat(1))
         }
         #[inline(always)]
-        fn index_select(m: f32x8, a: i32x8, b: i32x8) -> i32x8 {
-            wide::Select::<i32x8>::select(m, a, b)
+        fn index_select(m: $f, a: $i, b: $i) -> $i {
+            wide::Select::<$i>::select(m, a, b)
         }
         /// `maxps(x, 0)` takes 0 for a NaN `x`; clamped below `n`, the truncation is exact.
         #[inline(always)]
-        fn floor_index(self, n: i32x8) -> i32x8 {
-            let last = (n - i32x8::splat(1)).round_float();
-            self.0.fast_max(f32x8::ZERO).fast_min(last).fast_trunc_int()
+        fn floor_index(self, n: $i) -> $i {
+            let last = (n - $i::splat(1)).round_float();
+            self.0.fast_max($f::ZERO).fast_min(last).fast_trunc_int()
         }
         #[inline(always)]
-        fn index_offset_clamped(i: i32x8, d: i32, n: u32) -> i32x8 {
-            (i + i32x8::splat(d)).max(i32x8::ZERO).min(i32x8::splat(n as i32 - 1))
+        fn index_offset_clamped(i: $i, d: i32, n: u32) -> $i {
+            (i + $i::splat(d)).max($i::ZERO).min($i::splat(n as i32 - 1))
         }
         /// AVX2's variable shifts give 0 for shifts of 32 or more, so `(1 ≪ count) − 1` is all
         /// ones for count = 32.
         #[inline(always)]
-        fn index_bit_run(start: i32x8, count: i32x8) -> i32x8 {
-            let one = i32x8::splat(1);
+        fn index_bit_run(start: $i, count: $i) -> $i {
+            let one = $i::splat(1);
             let ones = one.unbounded_shl(bytemuck::cast(count)) - one;
             ones.unbounded_shl(bytemuck::cast(start))
         }
         #[inline(always)]
-        fn v2_from_lanes(f: impl Fn(usize) -> Vec2) -> V2x8 {
-            let v: [Vec2; 8] = core::array::from_fn(f);
-            V2x8 { x: F32x8::from_lanes(|i| v[i].x), y: F32x8::from_lanes(|i| v[i].y) }
+        fn v2_from_lanes(f: impl Fn(usize) -> Vec2) -> $V2 {
+            let v: [Vec2; $n] = $crate::common::lanes::lane_array(f);
+            $V2 { x: $F::from_lanes(|i| v[i].x), y: $F::from_lanes(|i| v[i].y) }
         }
         #[inline(always)]
-        fn index_lane(i: i32x8, k: usize) -> u32 {
+        fn index_lane(i: $i, k: usize) -> u32 {
             i.as_array()[k] as u32
         }
         #[inline(always)]
-        fn gather_word(data: &[u32], i: i32x8) -> i32x8 {
-            bytemuck::cast(gather8(data, i))
+        fn gather_word(data: &[u32], i: $i) -> $i {
+            bytemuck::cast(gather_lanes(data, i))
         }
         #[inline(always)]
-        fn gather_index(data: &[f32], i: i32x8) -> Self {
-            F32x8(f32x8::new(gather8(data, i)))
+        fn gather_index(data: &[f32], i: $i) -> Self {
+            $F($f::new(gather_lanes(data, i)))
         }
     }
 
@@ -771,154 +804,170 @@ mod x8 {
     /// indexing). Eight consecutive indices `k, k + 1, …, k + 7` — a row of pixels — are one
     /// load after one compare of the vector; others are eight loads.
     #[inline(always)]
-    fn gather8<T: Copy>(data: &[T], i: i32x8) -> [T; 8] {
+    fn gather_lanes<T: Copy + Default>(data: &[T], i: $i) -> [T; $n] {
         let first = i.as_array()[0];
-        let run = i32x8::splat(first) + i32x8::new([0, 1, 2, 3, 4, 5, 6, 7]);
-        let consecutive = first >= 0 && bytemuck::cast::<i32x8, f32x8>(run.simd_eq(i)).all();
-        if let Some(row) = consecutive.then(|| data.get(first as usize..first as usize + 8)).flatten() {
-            return row.try_into().expect("eight elements");
+        let run = $i::splat(first) + $i::new($crate::common::lanes::lane_array(|k| k as i32));
+        let consecutive = first >= 0 && bytemuck::cast::<$i, $f>(run.simd_eq(i)).all();
+        if let Some(row) = consecutive.then(|| data.get(first as usize..first as usize + $n)).flatten() {
+            return row.try_into().expect("a full row of lanes");
         }
         let i = i.to_array();
-        core::array::from_fn(|k| data[i[k] as usize])
+        $crate::common::lanes::lane_array(|k| data[i[k] as usize])
     }
 
     /// Eight texels (or pixels).
     #[derive(Copy, Clone, Debug, PartialEq)]
-    pub struct U2x8 {
-        pub x: i32x8,
-        pub y: i32x8,
+    pub struct $U2 {
+        pub x: $i,
+        pub y: $i,
     }
 
-    impl U2x8 {
+    impl $U2 {
         /// Lane `i` from `each[i]`.
         #[inline(always)]
-        pub fn from_texels(each: &[UVec2; 8]) -> Self {
-            U2x8 { x: i32x8::new(each.map(|t| t.x as i32)), y: i32x8::new(each.map(|t| t.y as i32)) }
+        pub fn from_texels(each: &[UVec2; $n]) -> Self {
+            $U2 {
+                x: $i::new($crate::common::lanes::lane_array(|k| each[k].x as i32)),
+                y: $i::new($crate::common::lanes::lane_array(|k| each[k].y as i32)),
+            }
         }
     }
 
     /// Eight `Vec2`s.
     #[derive(Copy, Clone, Debug)]
-    pub struct V2x8 {
-        pub x: F32x8,
-        pub y: F32x8,
+    pub struct $V2 {
+        pub x: $F,
+        pub y: $F,
     }
 
-    impl Add for V2x8 {
+    impl Add for $V2 {
         type Output = Self;
         #[inline(always)]
         fn add(self, o: Self) -> Self {
-            V2x8 { x: self.x + o.x, y: self.y + o.y }
+            $V2 { x: self.x + o.x, y: self.y + o.y }
         }
     }
-    impl Sub for V2x8 {
+    impl Sub for $V2 {
         type Output = Self;
         #[inline(always)]
         fn sub(self, o: Self) -> Self {
-            V2x8 { x: self.x - o.x, y: self.y - o.y }
+            $V2 { x: self.x - o.x, y: self.y - o.y }
         }
     }
-    impl Mul<F32x8> for V2x8 {
+    impl Mul<$F> for $V2 {
         type Output = Self;
         #[inline(always)]
-        fn mul(self, s: F32x8) -> Self {
-            V2x8 { x: self.x * s, y: self.y * s }
+        fn mul(self, s: $F) -> Self {
+            $V2 { x: self.x * s, y: self.y * s }
         }
     }
-    impl LaneVec2<F32x8> for V2x8 {
+    impl LaneVec2<$F> for $V2 {
         #[inline(always)]
-        fn new(x: F32x8, y: F32x8) -> Self {
-            V2x8 { x, y }
+        fn new(x: $F, y: $F) -> Self {
+            $V2 { x, y }
         }
         #[inline(always)]
-        fn x(self) -> F32x8 {
+        fn x(self) -> $F {
             self.x
         }
         #[inline(always)]
-        fn y(self) -> F32x8 {
+        fn y(self) -> $F {
             self.y
         }
         #[inline(always)]
-        fn length(self) -> F32x8 {
+        fn length(self) -> $F {
             (self.x * self.x + self.y * self.y).sqrt()
         }
     }
 
     /// Eight `Vec3`s.
     #[derive(Copy, Clone, Debug)]
-    pub struct V3x8 {
-        pub x: F32x8,
-        pub y: F32x8,
-        pub z: F32x8,
+    pub struct $V3 {
+        pub x: $F,
+        pub y: $F,
+        pub z: $F,
     }
 
-    impl Add for V3x8 {
+    impl Add for $V3 {
         type Output = Self;
         #[inline(always)]
         fn add(self, o: Self) -> Self {
-            V3x8 { x: self.x + o.x, y: self.y + o.y, z: self.z + o.z }
+            $V3 { x: self.x + o.x, y: self.y + o.y, z: self.z + o.z }
         }
     }
-    impl Sub for V3x8 {
+    impl Sub for $V3 {
         type Output = Self;
         #[inline(always)]
         fn sub(self, o: Self) -> Self {
-            V3x8 { x: self.x - o.x, y: self.y - o.y, z: self.z - o.z }
+            $V3 { x: self.x - o.x, y: self.y - o.y, z: self.z - o.z }
         }
     }
-    impl Neg for V3x8 {
+    impl Neg for $V3 {
         type Output = Self;
         #[inline(always)]
         fn neg(self) -> Self {
-            V3x8 { x: -self.x, y: -self.y, z: -self.z }
+            $V3 { x: -self.x, y: -self.y, z: -self.z }
         }
     }
-    impl Mul<F32x8> for V3x8 {
+    impl Mul<$F> for $V3 {
         type Output = Self;
         #[inline(always)]
-        fn mul(self, s: F32x8) -> Self {
-            V3x8 { x: self.x * s, y: self.y * s, z: self.z * s }
+        fn mul(self, s: $F) -> Self {
+            $V3 { x: self.x * s, y: self.y * s, z: self.z * s }
         }
     }
-    impl Div<F32x8> for V3x8 {
+    impl Div<$F> for $V3 {
         type Output = Self;
         #[inline(always)]
-        fn div(self, s: F32x8) -> Self {
-            V3x8 { x: self.x / s, y: self.y / s, z: self.z / s }
+        fn div(self, s: $F) -> Self {
+            $V3 { x: self.x / s, y: self.y / s, z: self.z / s }
         }
     }
-    impl LaneVec3<F32x8> for V3x8 {
+    impl LaneVec3<$F> for $V3 {
         #[inline(always)]
-        fn new(x: F32x8, y: F32x8, z: F32x8) -> Self {
-            V3x8 { x, y, z }
+        fn new(x: $F, y: $F, z: $F) -> Self {
+            $V3 { x, y, z }
         }
         #[inline(always)]
-        fn x(self) -> F32x8 {
+        fn x(self) -> $F {
             self.x
         }
         #[inline(always)]
-        fn y(self) -> F32x8 {
+        fn y(self) -> $F {
             self.y
         }
         #[inline(always)]
-        fn z(self) -> F32x8 {
+        fn z(self) -> $F {
             self.z
         }
         #[inline(always)]
-        fn dot(self, o: Self) -> F32x8 {
+        fn dot(self, o: Self) -> $F {
             self.x * o.x + self.y * o.y + self.z * o.z
         }
         #[inline(always)]
         fn cross(self, o: Self) -> Self {
-            V3x8 { x: self.y * o.z - o.y * self.z, y: self.z * o.x - o.z * self.x, z: self.x * o.y - o.x * self.y }
+            $V3 { x: self.y * o.z - o.y * self.z, y: self.z * o.x - o.z * self.x, z: self.x * o.y - o.x * self.y }
         }
         #[inline(always)]
-        fn length(self) -> F32x8 {
+        fn length(self) -> $F {
             self.dot(self).sqrt()
         }
         #[inline(always)]
         fn normalize(self) -> Self {
-            self * (F32x8::splat(1.0) / self.length())
+            self * ($F::splat(1.0) / self.length())
         }
     }
+    };
+}
+
+/// Eight lanes on the CPU: one 256-bit vector with AVX2.
+#[cfg(not(target_arch = "spirv"))]
+mod x8 {
+    cpu_lanes!(F32x8, U2x8, V2x8, V3x8, f32x8, i32x8, 8);
+}
+
+/// Sixteen lanes on the CPU: one 512-bit vector with AVX-512, two 256-bit halves without.
+#[cfg(not(target_arch = "spirv"))]
+mod x16 {
+    cpu_lanes!(F32x16, U2x16, V2x16, V3x16, f32x16, i32x16, 16);
 }

@@ -65,7 +65,8 @@ fn depth0<L: Lanes>(mips: &[f32], view: &ViewParams, q: L::U2) -> L {
 
 /// The packed denoiser edges of pixel `p` (one or `L::LANES`), whether it has a usable depth
 /// (background has none), and its [`PixelSetup`] (spec gtao-raymarch-hybrid §2.6.1–§2.6.2).
-#[inline]
+#[cfg_attr(target_arch = "spirv", inline)]
+#[cfg_attr(not(target_arch = "spirv"), inline(always))]
 pub fn pixel_setup<L: Lanes>(
     params: &GtaoParams,
     mips: &[f32],
@@ -265,7 +266,8 @@ pub fn slice_frame<L: Lanes>(params: &GtaoParams, px: &PixelSetup<L>, s: u32) ->
 /// Step `k` of slice `s`: the view positions of the two samples, `Q0` at uv + offset (side 0)
 /// and `Q1` at uv − offset (side 1), with the MIP level chosen from the offset length and the
 /// offset rounded to whole pixels (spec gtao-raymarch-hybrid §2.6.3 step 7).
-#[inline]
+#[cfg_attr(target_arch = "spirv", inline)]
+#[cfg_attr(not(target_arch = "spirv"), inline(always))]
 pub fn sample_pair<L: Lanes>(
     params: &GtaoParams,
     mips: &[f32],

@@ -244,17 +244,18 @@ pub struct MarchOrigin<L: Lanes = f32> {
 }
 
 #[cfg(not(target_arch = "spirv"))]
-impl MarchOrigin<crate::common::lanes::F32x8> {
-    /// The origins of eight pixels side by side (lane `i` from `each[i]`).
-    pub fn from_lanes(each: &[MarchOrigin; 8]) -> Self {
-        use crate::common::lanes::{F32x8, v3_from_lanes};
+impl MarchOrigin<crate::common::lanes::CpuLanes> {
+    /// The origins of cpu-sim's [`CPU_LANES`](crate::common::lanes::CPU_LANES) pixels side by
+    /// side (lane `i` from `each[i]`).
+    pub fn from_lanes(each: &[MarchOrigin; crate::common::lanes::CPU_LANES]) -> Self {
+        use crate::common::lanes::{CpuLanes, v3_from_lanes};
         MarchOrigin {
-            pixel: crate::common::lanes::U2x8::from_texels(&each.map(|o| o.pixel)),
-            pos: v3_from_lanes::<F32x8>(|i| each[i].pos),
-            n: v3_from_lanes::<F32x8>(|i| each[i].n),
-            sin_t: F32x8::from_lanes(|i| each[i].sin_t),
-            cos_t: F32x8::from_lanes(|i| each[i].cos_t),
-            jitter: F32x8::from_lanes(|i| each[i].jitter),
+            pixel: <CpuLanes as Lanes>::U2::from_texels(&each.map(|o| o.pixel)),
+            pos: v3_from_lanes::<CpuLanes>(|i| each[i].pos),
+            n: v3_from_lanes::<CpuLanes>(|i| each[i].n),
+            sin_t: CpuLanes::from_lanes(|i| each[i].sin_t),
+            cos_t: CpuLanes::from_lanes(|i| each[i].cos_t),
+            jitter: CpuLanes::from_lanes(|i| each[i].jitter),
         }
     }
 }
