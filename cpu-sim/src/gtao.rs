@@ -81,7 +81,9 @@ pub fn prefilter_near_run(params: &GtaoParams, depth: &[f32], out: &mut &[Atomic
             let row = (rows[dy] * full.x) as usize;
             CpuLanes::from_lanes(|i| depth[row + (2 * (x0 + i as u32) + dx).min(full.x - 1) as usize])
         };
-        let d = [at(0, 0), at(1, 0), at(0, 1), at(1, 1)].map(|v| working_value(v, params.view.far));
+        // Written out, not `[…].map(…)`: at sixteen lanes the array map is not inlined.
+        let working = |v| working_value(v, params.view.far);
+        let d = [working(at(0, 0)), working(at(1, 0)), working(at(0, 1)), working(at(1, 1))];
         let m1 = mip_filter(d, &falloff);
         for i in 0..(CPU_LANES as u32).min(blocks - x0) {
             let b = x0 + i;

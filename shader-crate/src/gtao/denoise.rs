@@ -165,7 +165,8 @@ impl<L: Lanes> Neighbourhood<L> {
 
     /// The stencil's weights of pass `params.pass` from the packed edges of the centre and its
     /// four neighbours.
-    #[inline]
+    #[cfg_attr(target_arch = "spirv", inline)]
+    #[cfg_attr(not(target_arch = "spirv"), inline(always))]
     fn weights(&self, params: &GtaoParams, edges: &[u32]) -> Weights<L> {
         let width = params.view.size().x;
         weights::<L>(
@@ -179,7 +180,8 @@ impl<L: Lanes> Neighbourhood<L> {
     }
 
     /// The nine terms, in [`combine`]'s order.
-    #[inline]
+    #[cfg_attr(target_arch = "spirv", inline)]
+    #[cfg_attr(not(target_arch = "spirv"), inline(always))]
     fn values<T: Term<L>>(&self, terms: &[u32], width: u32) -> [T; 9] {
         [
             T::load(terms, width, self.p),
@@ -209,7 +211,8 @@ struct Weights<L: Lanes> {
 
 /// The stencil's weights from the packed edges of the centre and of its left, right, top and
 /// bottom neighbours (spec gtao-raymarch-hybrid §2.7 steps 1–3).
-#[inline]
+#[cfg_attr(target_arch = "spirv", inline)]
+#[cfg_attr(not(target_arch = "spirv"), inline(always))]
 fn weights<L: Lanes>(beta: f32, centre: L::Index, l: L::Index, r: L::Index, t: L::Index, b: L::Index) -> Weights<L> {
     let (edges_l, edges_r, edges_t, edges_b) =
         (unpack_edges::<L>(l), unpack_edges::<L>(r), unpack_edges::<L>(t), unpack_edges::<L>(b));
@@ -257,7 +260,8 @@ impl Term<f32> for Vec4 {
 /// `β·a_c + CL·a_L + CR·a_R + CT·a_T + CB·a_B + wTL·a_TL + wTR·a_TR + wBL·a_BL + wBR·a_BR`
 /// (spec gtao-raymarch-hybrid §2.7 step 4's numerator) of the terms `v` (centre, L, R, T, B,
 /// TL, TR, BL, BR), in the order the reference sums it.
-#[inline]
+#[cfg_attr(target_arch = "spirv", inline)]
+#[cfg_attr(not(target_arch = "spirv"), inline(always))]
 fn combine<L: Lanes, T: Term<L>>(v: [T; 9], w: &Weights<L>) -> T {
     v[0] * L::splat(w.beta)
         + v[1] * w.c.l
