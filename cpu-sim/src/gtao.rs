@@ -243,6 +243,16 @@ pub fn run_vbao_sd_into(
     );
 }
 
+/// The first `out.len()` ≤ [`CPU_LANES`] of `lanes` into `out`: one store of the whole vector
+/// for a full run instead of an extract and a store per lane.
+#[inline(always)]
+fn store_run<T: Copy>(out: &mut [T], lanes: [T; CPU_LANES]) {
+    match <&mut [T; CPU_LANES]>::try_from(&mut *out) {
+        Ok(full) => *full = lanes,
+        Err(_) => out.copy_from_slice(&lanes[..out.len()]),
+    }
+}
+
 /// The denoise passes; returns the visibility per pixel (full target).
 pub fn run_denoise(params: &GtaoParams, terms: &[u32], edges: &[u32]) -> Vec<f32> {
     let mut current = terms.to_vec();
@@ -282,14 +292,10 @@ pub fn denoise_into(params: &GtaoParams, terms_in: &[u32], edges: &[u32], terms_
         &crate::no_progress,
         |first, t, a| {
             let (term, visibility) = denoise_lanes::<CpuLanes>(params, terms_in, edges, lanes_of_run(first, t.len()));
-            let term = term.to_array();
-            for (i, out) in t.iter_mut().enumerate() {
-                *out = term[i] as u32;
-            }
+            // Whole vectors stored at once (the terms are 0–255, so their i32 bits are the u32s).
+            store_run(t, bytemuck::cast(term.to_array()));
             if last {
-                for (i, out) in a.iter_mut().enumerate() {
-                    *out = visibility.lane(i);
-                }
+                store_run(a, visibility.0.to_array());
             }
         },
     );
