@@ -21,6 +21,23 @@ ROWS = [
 ]
 
 
+
+def cpu_model():
+    """The CPU's model name from /proc/cpuinfo (Linux; "with AVX-512" where it has it), else the
+    platform's processor string."""
+    model, flags = platform.processor() or "unknown CPU", []
+    try:
+        with open("/proc/cpuinfo") as f:
+            for line in f:
+                if line.startswith("model name"):
+                    model = line.split(":", 1)[1].strip()
+                elif line.startswith("flags"):
+                    flags = line.split(":", 1)[1].split()
+                    break
+    except OSError:
+        pass
+    return model + (" with AVX-512" if "avx512f" in flags else "")
+
 def passes(path):
     with open(path) as f:
         j = json.load(f)
@@ -61,7 +78,7 @@ def main():
     print("on Vulkan. Ratio = cpu-sim / lavapipe (≤ 1 means the native build is at least as fast).\n")
     print(f"- scene `{cj['scene']}`, inner {cj['width']}×{cj['height']}, target {int(cj['target'][0])}×{int(cj['target'][1])} (with guard band)")
     print(f"- {cj['frames']} timed frames after {cj['warmup']} warm-up; cpu-sim: {cj['device']}; Vulkan: {vj['device']}")
-    print(f"- host {platform.node()}, {os.cpu_count()} CPUs, load average {load:.1f} at the end; commit {rev} (plus the working tree)\n")
+    print(f"- host {platform.node()} ({cpu_model()}), {os.cpu_count()} CPUs, load average {load:.1f} at the end; commit {rev} (plus the working tree)\n")
     print("| pass | technique | cpu-sim ms | lavapipe ms | ratio | |")
     print("|---|---|---|---|---|---|")
     for line in lines:

@@ -510,7 +510,11 @@ fn normal_decoder_scalar_and_lanes_equal_the_reference_for_every_code() {
         }
     }
     assert_eq!(checked, (CPU_LANES as u32) << 16, "codes × lane positions checked");
-    report("normal_decoder_scalar_and_lanes_equal_the_reference_for_every_code", start, "2^16 codes × 16 lanes");
+    report(
+        "normal_decoder_scalar_and_lanes_equal_the_reference_for_every_code",
+        start,
+        &format!("2^16 codes × {CPU_LANES} lanes"),
+    );
 }
 
 /// `f32_to_u32_bits` (the SPIR-V form of `f32_to_u32`: ⌊x⌋ + 2²³ read as bits) against Rust's
@@ -944,7 +948,7 @@ fn sector_bits_over_every_pair_of_the_sector_grid() {
 
 /// `sector_bits` (scalar) for every f32 x ∈ [+0, 1] in the pairs (x, 1) — every start
 /// ⌊32x⌋, every Paper count ⌈32·(1 ⊖ x)⌉ —, (0, x) — every Touch end ⌈32x⌉, every Paper count
-/// ⌈32x⌉ — and (x, x) — the empty interval —, both rules, against [`sector_ref`]. (The 8-lane
+/// ⌈32x⌉ — and (x, x) — the empty interval —, both rules, against [`sector_ref`]. (cpu-sim's lane
 /// version is compared on the grid, [`sector_bits_over_every_pair_of_the_sector_grid`].)
 ///
 /// Domain 1 065 353 217 f32 × 3 pairs × 2 rules; measured 16 s.
@@ -975,7 +979,7 @@ fn sector_bits_over_every_f32_of_0_to_1() {
 /// (binary32: θ ⊖ γ and ⊕ π/2 err ≤ 2⁻²³ each for magnitudes < 4, 0.64·2⁻²³ after the product
 /// by 1/π; 1/π's rounding times a numerator up to π, π/2's rounding and the product's add
 /// < 1.5·2⁻²⁴, so < 1.4·2⁻²³ in all), exactly 0 and 1 beyond the clamps, monotone in θ,
-/// and the 8-lane version equals the scalar one. It prints how many θ fall in a sector other
+/// and cpu-sim's lane version equals the scalar one. It prints how many θ fall in a sector other
 /// than the real-number one (5 008, all within the 2⁻²² band of an edge).
 ///
 /// Domain 9 γ × 33 edges × 8 193 θ = 2.4 M; measured 0.1 s.

@@ -291,7 +291,7 @@ fn differing_texels(mips: &[f32], blocks: &[f32]) -> Vec<usize> {
     (0..mips.len()).filter(|&i| !close(mips[i], blocks[i])).collect()
 }
 
-/// cpu-sim's two prefilter passes (2×2 blocks eight at a time on lanes, then 16×16 blocks, the
+/// cpu-sim's two prefilter passes (2×2 blocks sixteen at a time on lanes, then 16×16 blocks, the
 /// shader crate's block functions, on several threads through relaxed atomics) against the
 /// level-by-level definition, every texel of the five levels, at [`ODD_SIZES`]. Needs no GPU.
 #[test]

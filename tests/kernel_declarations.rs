@@ -113,7 +113,7 @@ fn runners_vs_generated(technique: &str) -> (f32, usize) {
     (max, driven)
 }
 
-/// The runners evaluate the same per-pixel functions over 8-pixel lanes, so the two agree to
+/// The runners evaluate the same per-pixel functions over 16-pixel lanes, so the two agree to
 /// float rounding; a binding read from the wrong slot changes the AO by far more than 1/255.
 #[test]
 fn generated_cpu_drivers_reproduce_the_runners() {

@@ -369,7 +369,7 @@ fn without_layers_vbao_sd_is_vbao() {
     let sd = cpu.run(&frame, &g, &vbao_sd_like(&settings), &aokit_cpu::no_progress);
     let plain = cpu.run(&frame, &g, &Technique::new(&VBAO, settings), &aokit_cpu::no_progress);
     assert_eq!(sd.rays, 0, "a plane flags no sample");
-    // vbao runs through its eight-lane runner, vbao-sd through the entry points: within one
+    // vbao runs through its lane runner, vbao-sd through the entry points: within one
     // 8-bit step of each other (the runners' own agreement bar).
     let view = frame.camera.view;
     let within = common::inner_within(&view, &sd.ao_final, &plain.ao_final, common::agreement::STEP + 1e-6);

@@ -4,7 +4,7 @@
 //!
 //! The executor knows no technique: the order of passes comes from the graph alone, and each
 //! pass runs its kernel's CPU driver — the whole-image runner of this crate where one exists
-//! ([`cpu_driver`]: fast paths over 8-pixel lanes and the BVH), else the driver `#[kernel]` generated
+//! ([`cpu_driver`]: fast paths over [`CPU_LANES`](aokit_shaders::common::lanes::CPU_LANES)-pixel lanes and the BVH), else the driver `#[kernel]` generated
 //! beside the entry point, which calls the entry point itself once per invocation
 //! ([`Kernel::cpu`]). A new screen-space kernel so runs here with no code in this crate.
 
@@ -320,7 +320,7 @@ impl CpuExecutor {
 }
 
 /// The whole-image runners (see [`RUNNERS`]): each calls the shader crate's per-pixel functions
-/// over whole images (8-pixel lanes, tiles, the BVH) and writes its outputs into the bound
+/// over whole images (16-pixel lanes, tiles, the BVH) and writes its outputs into the bound
 /// resources.
 mod runners {
     use super::*;

@@ -13,7 +13,7 @@ use aokit_shaders::gtao::{
 };
 use aokit_shaders::svao::SvaoParams;
 use aokit_shaders::vbao::VbaoParams;
-use aokit_shaders::vbao::kernel::{vbao_term, vbao_visibility, visibility_with};
+use aokit_shaders::vbao::kernel::{ConstantThickness, Occupancy, vbao_term, visibility_with};
 use aokit_shaders::vbaosd::{SdLayers, request_pixel};
 use core::sync::atomic::AtomicU32;
 use rayon::prelude::*;
@@ -44,7 +44,7 @@ pub fn run_prefilter(params: &GtaoParams, depth: &[f32]) -> Vec<f32> {
 }
 
 /// Prefilter pass `params.pass` over the packed chain `mips` as the GPU dispatches it, block by
-/// block: pass 0 [`CPU_LANES`] 2×2 blocks at a time ([`prefilter_near_run`], the lanes of the shader
+/// block: pass 0 [`CPU_LANES`] 2×2 blocks at a time ([`prefilter_near_row`], the lanes of the shader
 /// crate's `prefilter_near`), pass 1 the shader crate's [`prefilter_far`]; each row of blocks on
 /// a thread of its own, writing through relaxed atomics (the blocks write disjoint texels, as
 /// the GPU's invocations do).
@@ -57,7 +57,7 @@ pub fn prefilter_pass(params: &GtaoParams, depth: &[f32], mips: &mut [f32]) {
     (0..blocks.y).into_par_iter().for_each(|y| {
         let mut out = shared;
         if params.pass == 0 {
-            prefilter_near_run(params, depth, &mut out, y);
+            prefilter_near_row(params, depth, &mut out, y);
             return;
         }
         for x in 0..blocks.x {
@@ -70,7 +70,7 @@ pub fn prefilter_pass(params: &GtaoParams, depth: &[f32], mips: &mut [f32]) {
 /// lane-generic [`working_value`] and [`mip_filter`]: what
 /// [`aokit_shaders::gtao::prefilter::prefilter_near`] computes per block (whose MIP 0 reads clamp
 /// to the target the same way).
-pub fn prefilter_near_run(params: &GtaoParams, depth: &[f32], out: &mut &[AtomicU32], y: u32) {
+pub fn prefilter_near_row(params: &GtaoParams, depth: &[f32], out: &mut &[AtomicU32], y: u32) {
     let full = params.view.size();
     let (size1, offset1) = (mip_size(full, 1), mip_offset(full, 1));
     let falloff = mip_falloff(params);
@@ -106,7 +106,7 @@ pub fn run_normals(params: &GtaoParams, depth: &[f32]) -> Vec<u32> {
 }
 
 /// MainPass: AO terms (0–255) and packed edges per pixel of the full target, [`CPU_LANES`] pixels of a
-/// row per call of the shader crate's lane-generic slices ([`main_pass_run`]).
+/// row per call of the shader crate's lane-generic slices ([`main_pass_lanes`]).
 pub fn run_main(params: &GtaoParams, mips: &[f32], normals: &[u32]) -> (Vec<u32>, Vec<u32>) {
     let size = params.view.size();
     let (mut terms, mut edges) = (vec![0; (size.x * size.y) as usize], vec![0; (size.x * size.y) as usize]);
@@ -125,7 +125,7 @@ pub fn run_main_into(params: &GtaoParams, mips: &[f32], normals: &[u32], terms: 
         0..size.y,
         CPU_LANES as u32,
         &crate::no_progress,
-        |p, t, e| main_pass_run(params, mips, normals, p, t, e),
+        |p, t, e| main_pass_lanes(params, mips, normals, p, t, e),
     );
 }
 
@@ -133,7 +133,7 @@ pub fn run_main_into(params: &GtaoParams, mips: &[f32], normals: &[u32], terms: 
 /// setup, the slices and the final power of [`aokit_shaders::gtao::gtao_pixel`] on [`CPU_LANES`] lanes
 /// at once, the stored term per lane. Missing lanes repeat the last pixel; lanes without a
 /// usable depth are computed and discarded, as on a GPU.
-pub fn main_pass_run(
+pub fn main_pass_lanes(
     params: &GtaoParams,
     mips: &[f32],
     normals: &[u32],
@@ -152,23 +152,38 @@ pub fn main_pass_run(
     }
 }
 
-/// VBAO's main pass into the caller's term and edge buffers, [`CPU_LANES`] pixels of a row per call of
-/// the shader crate's lane-generic [`pixel_setup`], [`vbao_visibility`] and [`final_visibility`]
-/// (the stored term per lane).
+/// VBAO's main pass into the caller's term and edge buffers, [`CPU_LANES`] pixels of a row per
+/// call of the shader crate's lane-generic [`pixel_setup`], [`aokit_shaders::vbao::kernel::vbao_visibility`] and
+/// [`final_visibility`] (the stored term per lane).
 pub fn run_vbao_into(params: &VbaoParams, mips: &[f32], normals: &[u32], terms: &mut [u32], edges: &mut [u32]) {
+    vbao_main_into(params, mips, normals, terms, edges, || ConstantThickness);
+}
+
+/// VBAO's main pass with each run's samples occupied as `occupancy()` says ([`visibility_with`]):
+/// `vbao`'s constant thickness, or vbao-sd's layers.
+fn vbao_main_into<O: Occupancy<CpuLanes>>(
+    params: &VbaoParams,
+    mips: &[f32],
+    normals: &[u32],
+    terms: &mut [u32],
+    edges: &mut [u32],
+    occupancy: impl Fn() -> O + Sync,
+) {
     let size = params.gtao.view.size();
+    let lanes = CPU_LANES as u32;
     crate::screen::tiled_lanes2(
         terms,
         edges,
         size.x,
         0..size.x,
         0..size.y,
-        CPU_LANES as u32,
+        lanes,
         &crate::no_progress,
         |first, t, e| {
             let (packed, valid, px) =
                 pixel_setup::<CpuLanes>(&params.gtao, mips, normals, lanes_of_run(first, t.len()));
-            let vis = final_visibility(vbao_visibility(params, mips, &px), params.gtao.final_value_power);
+            let vis = visibility_with(params, mips, &px, &mut occupancy());
+            let vis = final_visibility(vis, params.gtao.final_value_power);
             for (i, (t, e)) in t.iter_mut().zip(e.iter_mut()).enumerate() {
                 *t = vbao_term(CpuLanes::mask_lane(valid, i), vis.lane(i));
                 *e = CpuLanes::index_lane(packed, i);
@@ -209,8 +224,8 @@ fn as_atomics(words: &mut [u32]) -> &[AtomicU32] {
     unsafe { core::slice::from_raw_parts(words.as_mut_ptr() as *const AtomicU32, words.len()) }
 }
 
-/// vbao-sd's main pass (spec vbao §8.2) into the caller's terms and edges: [`CPU_LANES`] pixels of a
-/// row per call of the shader crate's lane-generic occupancy ([`SdLayers`]), as
+/// vbao-sd's main pass (spec vbao §8.2) into the caller's terms and edges: [`CPU_LANES`] pixels
+/// of a row per call of the shader crate's lane-generic occupancy ([`SdLayers`]), as
 /// [`run_vbao_into`].
 pub fn run_vbao_sd_into(
     params: &VbaoParams,
@@ -221,32 +236,13 @@ pub fn run_vbao_sd_into(
     terms: &mut [u32],
     edges: &mut [u32],
 ) {
-    let size = params.gtao.view.size();
-    crate::screen::tiled_lanes2(
-        terms,
-        edges,
-        size.x,
-        0..size.x,
-        0..size.y,
-        CPU_LANES as u32,
-        &crate::no_progress,
-        |first, t, e| {
-            let (packed, valid, px) =
-                pixel_setup::<CpuLanes>(&params.gtao, mips, normals, lanes_of_run(first, t.len()));
-            let mut layers = SdLayers { map, sd, mips };
-            let vis = final_visibility(visibility_with(params, mips, &px, &mut layers), params.gtao.final_value_power);
-            for (i, (t, e)) in t.iter_mut().zip(e.iter_mut()).enumerate() {
-                *t = vbao_term(CpuLanes::mask_lane(valid, i), vis.lane(i));
-                *e = CpuLanes::index_lane(packed, i);
-            }
-        },
-    );
+    vbao_main_into(params, mips, normals, terms, edges, || SdLayers { map, sd, mips });
 }
 
 /// The first `out.len()` ≤ [`CPU_LANES`] of `lanes` into `out`: one store of the whole vector
 /// for a full run instead of an extract and a store per lane.
 #[inline(always)]
-fn store_run<T: Copy>(out: &mut [T], lanes: [T; CPU_LANES]) {
+fn store_lanes<T: Copy>(out: &mut [T], lanes: [T; CPU_LANES]) {
     match <&mut [T; CPU_LANES]>::try_from(&mut *out) {
         Ok(full) => *full = lanes,
         Err(_) => out.copy_from_slice(&lanes[..out.len()]),
@@ -293,9 +289,9 @@ pub fn denoise_into(params: &GtaoParams, terms_in: &[u32], edges: &[u32], terms_
         |first, t, a| {
             let (term, visibility) = denoise_lanes::<CpuLanes>(params, terms_in, edges, lanes_of_run(first, t.len()));
             // Whole vectors stored at once (the terms are 0–255, so their i32 bits are the u32s).
-            store_run(t, bytemuck::cast(term.to_array()));
+            store_lanes(t, bytemuck::cast(term.to_array()));
             if last {
-                store_run(a, visibility.0.to_array());
+                store_lanes(a, visibility.0.to_array());
             }
         },
     );

@@ -25,7 +25,7 @@ pub fn run_raymarch(
         0..size.y,
         CPU_LANES as u32,
         &crate::no_progress,
-        |p, out| raymarch_run(params, depth, normals, kernel, p, out),
+        |p, out| raymarch_lanes(params, depth, normals, kernel, p, out),
     );
     let ao = pixels.iter().map(|o| o.ao).collect();
     let terms = pixels.iter().map(|o| o.term).collect();
@@ -36,7 +36,7 @@ pub fn run_raymarch(
 /// [`aokit_shaders::raymarch::raymarch_pixel`] for `out.len()` ≤ [`CPU_LANES`] consecutive pixels of a row
 /// from `first`. Missing lanes repeat the last pixel; pixels without a usable depth borrow a
 /// marching lane's origin and are discarded.
-pub fn raymarch_run(
+pub fn raymarch_lanes(
     params: &RaymarchParams,
     depth: &[f32],
     normals: &[u32],

@@ -116,14 +116,14 @@ fn for_inner_lanes(size: UVec2, guard: u32, progress: Progress, kernel: impl Fn(
 pub fn run_vao(params: &VaoParams, depth: &[f32], normals: &[u32], progress: Progress) -> Vec<f32> {
     let size = params.view.size();
     let gbuffer = GBufferSlices { depth, normals, width: size.x };
-    for_inner_lanes(size, params.view.guard, progress, |p, ao| vao_run(&gbuffer, params, p, ao))
+    for_inner_lanes(size, params.view.guard, progress, |p, ao| vao_lanes(&gbuffer, params, p, ao))
 }
 
 /// [`aokit_shaders::vao::vao_pixel`] for `ao.len()` ≤ [`CPU_LANES`] consecutive pixels of a row from `first`: the per-pixel
 /// setup and final power per lane, the samples on all lanes at once. Missing lanes repeat the
 /// last pixel; unshaded pixels (no usable depth) borrow a shaded lane's frame and are
 /// discarded.
-pub fn vao_run(gbuffer: &GBufferSlices, params: &VaoParams, first: UVec2, ao: &mut [f32]) {
+pub fn vao_lanes(gbuffer: &GBufferSlices, params: &VaoParams, first: UVec2, ao: &mut [f32]) {
     let p = lanes_of_run(first, ao.len());
     let (shaded, frame) = setup_lanes::<_, CpuLanes>(gbuffer, &params.view, params.radius, params.max_screen_radius, p);
     if !CpuLanes::any(shaded) {
@@ -137,7 +137,7 @@ pub fn vao_run(gbuffer: &GBufferSlices, params: &VaoParams, first: UVec2, ao: &m
 }
 
 /// One direction (`params.direction`) of the cross-bilateral blur (spec svao-raysd §12).
-/// Eight pixels of a row per call of the shader crate's lane-generic blur.
+/// [`CPU_LANES`] pixels of a row per call of the shader crate's lane-generic blur.
 pub fn run_blur_direction(params: &BlurParams, ao: &[f32], depth: &[f32]) -> Vec<f32> {
     for_inner_lanes(params.view.size(), params.view.guard, &crate::no_progress, |p, out| {
         let v: CpuLanes = blur_lanes(params, ao, depth, p);

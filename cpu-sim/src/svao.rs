@@ -53,7 +53,7 @@ pub fn run_pass1(params: &SvaoParams, depth: &[f32], normals: &[u32], depth2: &[
     let g = view.guard;
     let (xs, ys) = (g..size.x - g, g..size.y - g);
     crate::screen::tiled_lanes2(&mut ao, &mut mask, size.x, xs, ys, CPU_LANES as u32, progress, |p, ao, mask| {
-        pass1_run(&gbuffer, depth2, params, p, ao, mask, (&ray_min, &ray_max))
+        pass1_lanes(&gbuffer, depth2, params, p, ao, mask, (&ray_min, &ray_max))
     });
     let unwrap = |v: Vec<AtomicU32>| v.into_iter().map(AtomicU32::into_inner).collect::<Vec<u32>>();
     Pass1 { ao, mask, ray_min: unwrap(ray_min), ray_max: unwrap(ray_max) }
@@ -63,7 +63,7 @@ pub fn run_pass1(params: &SvaoParams, depth: &[f32], normals: &[u32], depth2: &[
 /// the mask bits, the interval atomics and the final store per lane, the samples' arithmetic on
 /// all lanes at once. Missing lanes repeat the last pixel; unshaded pixels borrow a shaded
 /// lane's frame and are discarded.
-fn pass1_run(
+fn pass1_lanes(
     gbuffer: &GBufferSlices,
     depth2: &[f32],
     params: &SvaoParams,

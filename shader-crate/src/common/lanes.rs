@@ -6,8 +6,9 @@
 //! where it used `Vec2`/`Vec3`, and [`Lanes::select`] where it branched on a per-pixel value.
 //! With `L = f32` (SPIR-V and scalar CPU code) the types are `f32`, glam's `Vec2` and `Vec3`,
 //! and every operation is the one the scalar code used, so nothing changes bit for bit. On the
-//! CPU, [`F32x8`] holds eight pixels' values in one 256-bit vector (`wide::f32x8`); its
-//! transcendentals are `wide`'s polynomials, within a few ulp of libm's.
+//! CPU, [`CpuLanes`] ([`F32x16`]) holds sixteen pixels' values (`wide::f32x16`: two 256-bit
+//! vectors on the default x86-64-v3 build); its transcendentals are `wide`'s polynomials, within
+//! a few ulp of libm's.
 
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;
@@ -482,32 +483,31 @@ pub fn v3_from_lanes<L: Lanes>(f: impl Fn(usize) -> Vec3) -> L::V3 {
 }
 
 #[cfg(not(target_arch = "spirv"))]
-pub use x8::{F32x8, U2x8, V2x8, V3x8};
-#[cfg(not(target_arch = "spirv"))]
 pub use x16::{F32x16, U2x16, V2x16, V3x16};
 
 /// The lanes cpu-sim runs every lane-generic kernel on: sixteen consecutive pixels of a row per
 /// call. On x86-64-v3 (AVX2, the default build) an [`F32x16`] is two 256-bit vectors whose
 /// operations are independent, so each half's long dependency chains (the polynomials of
-/// `sin`/`acos`, the gathers, the divisions) overlap the other's: XeGTAO's main pass ran 31 %
-/// faster than on [`F32x8`] (one vector) on the benchmark host, single-threaded
-/// (`docs/benchmarks.md`).
+/// `sin`/`acos`, the gathers, the divisions) overlap the other's: XeGTAO's main pass took about
+/// 40 % less time than on eight lanes (one vector) on the benchmark host, single-threaded
+/// (`docs/benchmarks.md`, "cpu-sim vs lavapipe").
 #[cfg(not(target_arch = "spirv"))]
 pub type CpuLanes = F32x16;
 
-/// The number of pixels cpu-sim shades per call of a lane-generic kernel ([`CpuLanes`]).
+/// The number of pixels cpu-sim shades per call of a lane-generic kernel: `CpuLanes::LANES`
+/// as a plain constant, for array lengths (`[bool; CPU_LANES]`) and loop steps.
 #[cfg(not(target_arch = "spirv"))]
 pub const CPU_LANES: usize = 16;
 
 #[cfg(not(target_arch = "spirv"))]
 const _: () = assert!(<CpuLanes as Lanes>::LANES == CPU_LANES);
 
-/// `[f(0), f(1), …]`, always inlined and written as a loop the optimiser unrolls:
-/// `core::array::from_fn` is not inlined at sixteen lanes, which left a call (and the vector
+/// `core::array::from_fn`, always inlined: `[f(0), f(1), …]` written as a loop the optimiser
+/// unrolls. `from_fn` itself is not inlined at sixteen lanes, which left a call (and the vector
 /// assembled through memory) in every gather of cpu-sim's kernels.
 #[cfg(not(target_arch = "spirv"))]
 #[inline(always)]
-pub fn lane_array<T: Copy + Default, const N: usize>(f: impl Fn(usize) -> T) -> [T; N] {
+pub fn array_from_fn_inlined<T: Copy + Default, const N: usize>(f: impl Fn(usize) -> T) -> [T; N] {
     let mut out = [T::default(); N];
     for (i, o) in out.iter_mut().enumerate() {
         *o = f(i);
@@ -516,7 +516,9 @@ pub fn lane_array<T: Copy + Default, const N: usize>(f: impl Fn(usize) -> T) -> 
 }
 
 /// The CPU's lane types over `wide`'s vectors of `$n` lanes: `$F` (one `f32` variable of `$n`
-/// pixels), `$U2` (texels), `$V2`, `$V3`.
+/// pixels), `$U2` (texels), `$V2`, `$V3`. Instantiated once, at sixteen lanes ([`CpuLanes`]);
+/// `cpu_lanes!(F32x8, U2x8, V2x8, V3x8, f32x8, i32x8, 8)` gives the eight-lane types that
+/// `docs/benchmarks.md` compares against.
 #[cfg(not(target_arch = "spirv"))]
 macro_rules! cpu_lanes {
     ($F:ident, $U2:ident, $V2:ident, $V3:ident, $f:ident, $i:ident, $n:literal) => {
@@ -525,7 +527,7 @@ macro_rules! cpu_lanes {
     use core::ops::{Add, Div, Mul, Neg, Sub};
     use wide::{$f, $i};
 
-    /// Eight pixels' values of one `f32` variable.
+    #[doc = concat!("The values of one `f32` variable at ", stringify!($n), " pixels.")]
     #[derive(Copy, Clone, Debug, PartialEq)]
     pub struct $F(pub $f);
 
@@ -574,7 +576,7 @@ macro_rules! cpu_lanes {
         }
         #[inline(always)]
         fn from_lanes(f: impl Fn(usize) -> f32) -> Self {
-            $F($f::new($crate::common::lanes::lane_array(f)))
+            $F($f::new($crate::common::lanes::array_from_fn_inlined(f)))
         }
         #[inline(always)]
         fn lane(self, i: usize) -> f32 {
@@ -582,7 +584,7 @@ macro_rules! cpu_lanes {
         }
         #[inline(always)]
         fn gather(data: &[f32], index: impl Fn(usize) -> usize) -> Self {
-            $F($f::new($crate::common::lanes::lane_array(|i| data[index(i)])))
+            $F($f::new($crate::common::lanes::array_from_fn_inlined(|i| data[index(i)])))
         }
         #[inline(always)]
         fn sqrt(self) -> Self {
@@ -598,7 +600,7 @@ macro_rules! cpu_lanes {
             #[cfg(not(target_feature = "fma"))]
             let r = {
                 let (x, a, b) = (self.0.to_array(), a.0.to_array(), b.0.to_array());
-                $F($f::new($crate::common::lanes::lane_array(|i| x[i].mul_add(a[i], b[i]))))
+                $F($f::new($crate::common::lanes::array_from_fn_inlined(|i| x[i].mul_add(a[i], b[i]))))
             };
             r
         }
@@ -666,7 +668,7 @@ macro_rules! cpu_lanes {
         #[inline(always)]
         fn map_bits(self, f: impl Fn(u32) -> u32) -> Self {
             let a = self.0.to_array();
-            $F($f::new($crate::common::lanes::lane_array(|i| f32::from_bits(f(a[i].to_bits())))))
+            $F($f::new($crate::common::lanes::array_from_fn_inlined(|i| f32::from_bits(f(a[i].to_bits())))))
         }
         #[inline(always)]
         fn gt(self, o: Self) -> $f {
@@ -783,7 +785,7 @@ macro_rules! cpu_lanes {
         }
         #[inline(always)]
         fn v2_from_lanes(f: impl Fn(usize) -> Vec2) -> $V2 {
-            let v: [Vec2; $n] = $crate::common::lanes::lane_array(f);
+            let v: [Vec2; $n] = $crate::common::lanes::array_from_fn_inlined(f);
             $V2 { x: $F::from_lanes(|i| v[i].x), y: $F::from_lanes(|i| v[i].y) }
         }
         #[inline(always)]
@@ -800,22 +802,22 @@ macro_rules! cpu_lanes {
         }
     }
 
-    /// `data[i]` for each of the eight indices (a panic where one is outside `data`, as
-    /// indexing). Eight consecutive indices `k, k + 1, …, k + 7` — a row of pixels — are one
-    /// load after one compare of the vector; others are eight loads.
+    /// `data[i]` for each lane's index (a panic where one is outside `data`, as indexing).
+    /// Consecutive indices `k, k + 1, …` in every lane — a row of pixels — are one load after
+    /// one compare of the vector; others are one load per lane.
     #[inline(always)]
     fn gather_lanes<T: Copy + Default>(data: &[T], i: $i) -> [T; $n] {
         let first = i.as_array()[0];
-        let run = $i::splat(first) + $i::new($crate::common::lanes::lane_array(|k| k as i32));
+        let run = $i::splat(first) + $i::new($crate::common::lanes::array_from_fn_inlined(|k| k as i32));
         let consecutive = first >= 0 && bytemuck::cast::<$i, $f>(run.simd_eq(i)).all();
         if let Some(row) = consecutive.then(|| data.get(first as usize..first as usize + $n)).flatten() {
             return row.try_into().expect("a full row of lanes");
         }
         let i = i.to_array();
-        $crate::common::lanes::lane_array(|k| data[i[k] as usize])
+        $crate::common::lanes::array_from_fn_inlined(|k| data[i[k] as usize])
     }
 
-    /// Eight texels (or pixels).
+    #[doc = concat!(stringify!($n), " texels (or pixels).")]
     #[derive(Copy, Clone, Debug, PartialEq)]
     pub struct $U2 {
         pub x: $i,
@@ -827,13 +829,13 @@ macro_rules! cpu_lanes {
         #[inline(always)]
         pub fn from_texels(each: &[UVec2; $n]) -> Self {
             $U2 {
-                x: $i::new($crate::common::lanes::lane_array(|k| each[k].x as i32)),
-                y: $i::new($crate::common::lanes::lane_array(|k| each[k].y as i32)),
+                x: $i::new($crate::common::lanes::array_from_fn_inlined(|k| each[k].x as i32)),
+                y: $i::new($crate::common::lanes::array_from_fn_inlined(|k| each[k].y as i32)),
             }
         }
     }
 
-    /// Eight `Vec2`s.
+    #[doc = concat!(stringify!($n), " `Vec2`s.")]
     #[derive(Copy, Clone, Debug)]
     pub struct $V2 {
         pub x: $F,
@@ -880,7 +882,7 @@ macro_rules! cpu_lanes {
         }
     }
 
-    /// Eight `Vec3`s.
+    #[doc = concat!(stringify!($n), " `Vec3`s.")]
     #[derive(Copy, Clone, Debug)]
     pub struct $V3 {
         pub x: $F,
@@ -960,13 +962,8 @@ macro_rules! cpu_lanes {
     };
 }
 
-/// Eight lanes on the CPU: one 256-bit vector with AVX2.
-#[cfg(not(target_arch = "spirv"))]
-mod x8 {
-    cpu_lanes!(F32x8, U2x8, V2x8, V3x8, f32x8, i32x8, 8);
-}
-
-/// Sixteen lanes on the CPU: one 512-bit vector with AVX-512, two 256-bit halves without.
+/// Sixteen lanes on the CPU: two 256-bit vectors with AVX2 (the default build), four 128-bit
+/// ones on the x86-64 baseline, one 512-bit vector with AVX-512.
 #[cfg(not(target_arch = "spirv"))]
 mod x16 {
     cpu_lanes!(F32x16, U2x16, V2x16, V3x16, f32x16, i32x16, 16);

@@ -1,5 +1,5 @@
 //! Small helpers that compile identically for SPIR-V and the CPU. Those generic over
-//! [`Lanes`] take `f32` (one pixel) or the CPU's 8-lane vectors alike.
+//! [`Lanes`] take `f32` (one pixel) or the CPU's lane vectors alike.
 
 #[allow(unused_imports)]
 use spirv_std::num_traits::Float;

@@ -42,7 +42,7 @@ pub fn decode_normal(code: u32) -> Vec3 {
     decode_normal_lanes::<f32>(code)
 }
 
-/// [`decode_normal`] per lane, branch-free (the CPU decodes eight codes in vector registers):
+/// [`decode_normal`] per lane, branch-free (the CPU decodes a code per lane in vector registers):
 /// the bytes sign-extended as floats (`b − 256` for b ≥ 128, exact), the lower hemisphere's
 /// wrap chosen by a select.
 #[inline]

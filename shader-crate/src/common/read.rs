@@ -5,7 +5,7 @@
 //! pass four times the basic blocks of Intel's own shader (issue 26). The kernels' indexes are in
 //! range by construction (pixel and texel coordinates clamped to the image, row-major with the
 //! image's width, buffers of the full target's size), so on SPIR-V `read` and `write` index
-//! unchecked. On the CPU they stay checked, and cpu-sim's eight-lane kernels index with the same
+//! unchecked. On the CPU they stay checked, and cpu-sim's lane kernels index with the same
 //! formulas through checked slice indexing: the CPU tests (exhaustive, agreement, fuzz) panic on
 //! an index out of range. What the GPU no longer does is exit silently when an engine binds a
 //! buffer smaller than the target (`assets/README.md` states the sizes).

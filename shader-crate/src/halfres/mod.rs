@@ -139,7 +139,7 @@ fn row_term<L: Lanes>(n: L::V3, ty: f32, c: L, height: f32) -> L {
 }
 
 /// [`half_texel`] from the block's depths (as [`block_depths`] reads them), for one texel
-/// (`L = f32`, what the SPIR-V runs) or `L::LANES` texels, branch-free: cpu-sim calls it on eight
+/// (`L = f32`, what the SPIR-V runs) or `L::LANES` texels, branch-free: cpu-sim calls it on its
 /// lanes with the depths read straight from the block's two rows.
 #[inline]
 pub fn half_texel_of_block<L: Lanes>(params: &HalfParams, normals: &[u32], q: L::U2, depths: [L; 4]) -> (L, L::Index) {
@@ -204,7 +204,7 @@ pub fn upsample_pixel(
     upsample_lanes::<f32>(params, depth, normals, half_depth, half_ao, p)
 }
 
-/// [`upsample_pixel`] for one pixel (`L = f32`) or `L::LANES` pixels `p` (cpu-sim's eight
+/// [`upsample_pixel`] for one pixel (`L = f32`) or `L::LANES` pixels `p` (cpu-sim's
 /// lanes), branch-free: every tap's weight and the nearest tap are chosen by selects.
 #[inline]
 pub fn upsample_lanes<L: Lanes>(
