@@ -514,43 +514,33 @@ mod runners {
     }
 
     /// The half-resolution downsample (`aokit_shaders::halfres`) over the half target,
-    /// [`CPU_LANES`] texels a call.
+    /// [`CPU_LANES`](aokit_shaders::common::lanes::CPU_LANES) texels a call.
     pub fn half_downsample(io: &mut PassIo) {
-        use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, Lanes};
+        use aokit_shaders::common::lanes::{CpuLanes, Lanes};
         use halfres::half_downsample::*;
         let params: halfres::HalfParams = io.push();
         let size = params.half.size();
         let (half_depth, half_normals) = (io.write(HALF_DEPTH), io.write(HALF_NORMALS));
         let (depth, normals) = (io.read(DEPTH), io.read(NORMALS));
-        let (xs, ys) = (0..size.x, 0..size.y);
         let width = params.view.size().x as usize;
-        crate::screen::tiled_lanes2(
-            half_depth,
-            half_normals,
-            size.x,
-            xs,
-            ys,
-            CPU_LANES as u32,
-            &crate::no_progress,
-            |first, d, n| {
-                let q = crate::screen::lanes_of_run(first, d.len());
-                // The blocks' depths straight from their two rows (`block_depths`' order), lanes past
-                // the run repeating its last texel as `lanes_of_run` does.
-                let row = |dy: usize| &depth[(2 * first.y as usize + dy) * width..][..width];
-                let last = d.len() - 1;
-                let at =
-                    |dx: usize, dy: usize| CpuLanes::from_lanes(|i| row(dy)[2 * (first.x as usize + i.min(last)) + dx]);
-                let block = [at(0, 0), at(1, 0), at(0, 1), at(1, 1)];
-                let (depths, codes) = halfres::half_texel_of_block::<CpuLanes>(&params, normals, q, block);
-                for (i, (d, n)) in d.iter_mut().zip(n).enumerate() {
-                    (*d, *n) = (CpuLanes::lane(depths, i), CpuLanes::index_lane(codes, i));
-                }
-            },
-        );
+        crate::screen::whole_image_lanes2(half_depth, half_normals, size, |first, d, n| {
+            let q = crate::screen::lanes_of_run(first, d.len());
+            // The blocks' depths straight from their two rows (`block_depths`' order), lanes past
+            // the run repeating its last texel as `lanes_of_run` does.
+            let row = |dy: usize| &depth[(2 * first.y as usize + dy) * width..][..width];
+            let last = d.len() - 1;
+            let at =
+                |dx: usize, dy: usize| CpuLanes::from_lanes(|i| row(dy)[2 * (first.x as usize + i.min(last)) + dx]);
+            let block = [at(0, 0), at(1, 0), at(0, 1), at(1, 1)];
+            let (depths, codes) = halfres::half_texel_of_block::<CpuLanes>(&params, normals, q, block);
+            for (i, (d, n)) in d.iter_mut().zip(n).enumerate() {
+                (*d, *n) = (CpuLanes::lane(depths, i), CpuLanes::index_lane(codes, i));
+            }
+        });
     }
 
     /// The half-resolution upsample (`aokit_shaders::halfres`) over the inner image,
-    /// [`CPU_LANES`] pixels a call.
+    /// [`CPU_LANES`](aokit_shaders::common::lanes::CPU_LANES) pixels a call.
     pub fn half_upsample(io: &mut PassIo) {
         use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, Lanes};
         use halfres::half_upsample::*;

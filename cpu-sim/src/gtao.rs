@@ -117,16 +117,7 @@ pub fn run_main(params: &GtaoParams, mips: &[f32], normals: &[u32]) -> (Vec<u32>
 /// [`run_main`] into the caller's term and edge buffers.
 pub fn run_main_into(params: &GtaoParams, mips: &[f32], normals: &[u32], terms: &mut [u32], edges: &mut [u32]) {
     let size = params.view.size();
-    crate::screen::tiled_lanes2(
-        terms,
-        edges,
-        size.x,
-        0..size.x,
-        0..size.y,
-        CPU_LANES as u32,
-        &crate::no_progress,
-        |p, t, e| main_pass_lanes(params, mips, normals, p, t, e),
-    );
+    crate::screen::whole_image_lanes2(terms, edges, size, |p, t, e| main_pass_lanes(params, mips, normals, p, t, e));
 }
 
 /// XeGTAO's MainPass for `terms.len()` ≤ [`CPU_LANES`] consecutive pixels of a row from `first`: the
@@ -170,26 +161,15 @@ fn vbao_main_into<O: Occupancy<CpuLanes>>(
     occupancy: impl Fn() -> O + Sync,
 ) {
     let size = params.gtao.view.size();
-    let lanes = CPU_LANES as u32;
-    crate::screen::tiled_lanes2(
-        terms,
-        edges,
-        size.x,
-        0..size.x,
-        0..size.y,
-        lanes,
-        &crate::no_progress,
-        |first, t, e| {
-            let (packed, valid, px) =
-                pixel_setup::<CpuLanes>(&params.gtao, mips, normals, lanes_of_run(first, t.len()));
-            let vis = visibility_with(params, mips, &px, &mut occupancy());
-            let vis = final_visibility(vis, params.gtao.final_value_power);
-            for (i, (t, e)) in t.iter_mut().zip(e.iter_mut()).enumerate() {
-                *t = vbao_term(CpuLanes::mask_lane(valid, i), vis.lane(i));
-                *e = CpuLanes::index_lane(packed, i);
-            }
-        },
-    );
+    crate::screen::whole_image_lanes2(terms, edges, size, |first, t, e| {
+        let (packed, valid, px) = pixel_setup::<CpuLanes>(&params.gtao, mips, normals, lanes_of_run(first, t.len()));
+        let vis = visibility_with(params, mips, &px, &mut occupancy());
+        let vis = final_visibility(vis, params.gtao.final_value_power);
+        for (i, (t, e)) in t.iter_mut().zip(e.iter_mut()).enumerate() {
+            *t = vbao_term(CpuLanes::mask_lane(valid, i), vis.lane(i));
+            *e = CpuLanes::index_lane(packed, i);
+        }
+    });
 }
 
 /// vbao-sd's phase 1 (spec vbao §8.1) over the full target, rows in parallel, [`CPU_LANES`] pixels per
@@ -278,21 +258,12 @@ pub fn denoise_into(params: &GtaoParams, terms_in: &[u32], edges: &[u32], terms_
         return;
     }
     let last = is_last_pass(params);
-    crate::screen::tiled_lanes2(
-        terms_out,
-        ao,
-        size.x,
-        0..size.x,
-        0..size.y,
-        CPU_LANES as u32,
-        &crate::no_progress,
-        |first, t, a| {
-            let (term, visibility) = denoise_lanes::<CpuLanes>(params, terms_in, edges, lanes_of_run(first, t.len()));
-            // Whole vectors stored at once (the terms are 0–255, so their i32 bits are the u32s).
-            store_lanes(t, bytemuck::cast(term.to_array()));
-            if last {
-                store_lanes(a, visibility.0.to_array());
-            }
-        },
-    );
+    crate::screen::whole_image_lanes2(terms_out, ao, size, |first, t, a| {
+        let (term, visibility) = denoise_lanes::<CpuLanes>(params, terms_in, edges, lanes_of_run(first, t.len()));
+        // Whole vectors stored at once (the terms are 0–255, so their i32 bits are the u32s).
+        store_lanes(t, bytemuck::cast(term.to_array()));
+        if last {
+            store_lanes(a, visibility.0.to_array());
+        }
+    });
 }

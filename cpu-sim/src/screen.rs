@@ -90,6 +90,17 @@ pub fn tiled_lanes2<A: Send, B: Send>(
     });
 }
 
+/// [`tiled_lanes2`] over every pixel of a `size` image, [`CPU_LANES`] pixels per call, without
+/// progress: the whole-target passes with two outputs.
+pub fn whole_image_lanes2<A: Send, B: Send>(
+    a: &mut [A],
+    b: &mut [B],
+    size: UVec2,
+    f: impl Fn(UVec2, &mut [A], &mut [B]) + Sync,
+) {
+    tiled_lanes2(a, b, size.x, 0..size.x, 0..size.y, CPU_LANES as u32, &crate::no_progress, f);
+}
+
 /// Pixel of lane `i` in a run of `n` ≥ 1 consecutive pixels of a row from `first`: lanes past
 /// the run repeat its last pixel (they are computed and discarded, as on a GPU).
 #[inline]
