@@ -515,36 +515,36 @@ pub fn array_from_fn_inlined<T: Copy + Default, const N: usize>(f: impl Fn(usize
     out
 }
 
-/// The CPU's lane types over `wide`'s vectors of `$n` lanes: `$F` (one `f32` variable of `$n`
-/// pixels), `$U2` (texels), `$V2`, `$V3`. Instantiated once, at sixteen lanes ([`CpuLanes`]);
-/// `cpu_lanes!(F32x8, U2x8, V2x8, V3x8, f32x8, i32x8, 8)` gives the eight-lane types that
-/// `docs/benchmarks.md` compares against.
+/// Sixteen lanes on the CPU over `wide`'s vectors: [`F32x16`] (one `f32` variable of sixteen
+/// pixels), [`U2x16`] (texels), [`V2x16`], [`V3x16`]. Two 256-bit vectors with AVX2 (the default
+/// build), four 128-bit ones on the x86-64 baseline, one 512-bit vector with AVX-512. The same
+/// code over `f32x8`/`i32x8` with 8 lanes gives the eight-lane types that `docs/benchmarks.md`
+/// compares against.
 #[cfg(not(target_arch = "spirv"))]
-macro_rules! cpu_lanes {
-    ($F:ident, $U2:ident, $V2:ident, $V3:ident, $f:ident, $i:ident, $n:literal) => {
-    use $crate::common::lanes::{LaneVec2, LaneVec3, Lanes};
-    use $crate::glam::{UVec2, Vec2};
+mod x16 {
+    use super::{LaneVec2, LaneVec3, Lanes};
+    use crate::glam::{UVec2, Vec2};
     use core::ops::{Add, Div, Mul, Neg, Sub};
-    use wide::{$f, $i};
+    use wide::{f32x16, i32x16};
 
-    #[doc = concat!("The values of one `f32` variable at ", stringify!($n), " pixels.")]
+    /// The values of one `f32` variable at sixteen pixels.
     #[derive(Copy, Clone, Debug, PartialEq)]
-    pub struct $F(pub $f);
+    pub struct F32x16(pub f32x16);
 
     macro_rules! binary {
         ($tr:ident, $method:ident, $op:tt) => {
-            impl $tr for $F {
-                type Output = $F;
+            impl $tr for F32x16 {
+                type Output = F32x16;
                 #[inline(always)]
-                fn $method(self, o: $F) -> $F {
-                    $F(self.0 $op o.0)
+                fn $method(self, o: F32x16) -> F32x16 {
+                    F32x16(self.0 $op o.0)
                 }
             }
-            impl $tr<f32> for $F {
-                type Output = $F;
+            impl $tr<f32> for F32x16 {
+                type Output = F32x16;
                 #[inline(always)]
-                fn $method(self, o: f32) -> $F {
-                    $F(self.0 $op $f::splat(o))
+                fn $method(self, o: f32) -> F32x16 {
+                    F32x16(self.0 $op f32x16::splat(o))
                 }
             }
         };
@@ -554,29 +554,29 @@ macro_rules! cpu_lanes {
     binary!(Mul, mul, *);
     binary!(Div, div, /);
 
-    impl Neg for $F {
-        type Output = $F;
+    impl Neg for F32x16 {
+        type Output = F32x16;
         #[inline(always)]
-        fn neg(self) -> $F {
-            $F(-self.0)
+        fn neg(self) -> F32x16 {
+            F32x16(-self.0)
         }
     }
 
-    impl Lanes for $F {
-        const LANES: usize = $n;
-        type Mask = $f;
-        type U2 = $U2;
-        type V2 = $V2;
-        type V3 = $V3;
-        type Index = $i;
+    impl Lanes for F32x16 {
+        const LANES: usize = 16;
+        type Mask = f32x16;
+        type U2 = U2x16;
+        type V2 = V2x16;
+        type V3 = V3x16;
+        type Index = i32x16;
 
         #[inline(always)]
         fn splat(v: f32) -> Self {
-            $F($f::splat(v))
+            F32x16(f32x16::splat(v))
         }
         #[inline(always)]
         fn from_lanes(f: impl Fn(usize) -> f32) -> Self {
-            $F($f::new($crate::common::lanes::array_from_fn_inlined(f)))
+            F32x16(f32x16::new(crate::common::lanes::array_from_fn_inlined(f)))
         }
         #[inline(always)]
         fn lane(self, i: usize) -> f32 {
@@ -584,11 +584,11 @@ macro_rules! cpu_lanes {
         }
         #[inline(always)]
         fn gather(data: &[f32], index: impl Fn(usize) -> usize) -> Self {
-            $F($f::new($crate::common::lanes::array_from_fn_inlined(|i| data[index(i)])))
+            F32x16(f32x16::new(crate::common::lanes::array_from_fn_inlined(|i| data[index(i)])))
         }
         #[inline(always)]
         fn sqrt(self) -> Self {
-            $F(self.0.sqrt())
+            F32x16(self.0.sqrt())
         }
         /// `vfmadd` where the build targets FMA (x86-64-v3, the default); elsewhere the
         /// scalar fused multiply-add per lane (`wide` would round twice), so one rounding
@@ -596,11 +596,11 @@ macro_rules! cpu_lanes {
         #[inline(always)]
         fn mul_add(self, a: Self, b: Self) -> Self {
             #[cfg(target_feature = "fma")]
-            let r = $F(self.0.mul_add(a.0, b.0));
+            let r = F32x16(self.0.mul_add(a.0, b.0));
             #[cfg(not(target_feature = "fma"))]
             let r = {
                 let (x, a, b) = (self.0.to_array(), a.0.to_array(), b.0.to_array());
-                $F($f::new($crate::common::lanes::array_from_fn_inlined(|i| x[i].mul_add(a[i], b[i]))))
+                F32x16(f32x16::new(crate::common::lanes::array_from_fn_inlined(|i| x[i].mul_add(a[i], b[i]))))
             };
             r
         }
@@ -612,85 +612,85 @@ macro_rules! cpu_lanes {
         #[inline(always)]
         fn inverse_sqrt(self) -> Self {
             let y = self.0.recip_sqrt();
-            let refined = y * ($f::splat(1.5) - $f::splat(0.5) * self.0 * y * y);
-            let exact_estimate = y.simd_eq($f::ZERO) | y.abs().simd_eq($f::splat(f32::INFINITY));
-            $F(wide::Select::select(exact_estimate, y, refined))
+            let refined = y * (f32x16::splat(1.5) - f32x16::splat(0.5) * self.0 * y * y);
+            let exact_estimate = y.simd_eq(f32x16::ZERO) | y.abs().simd_eq(f32x16::splat(f32::INFINITY));
+            F32x16(wide::Select::select(exact_estimate, y, refined))
         }
         #[inline(always)]
         fn abs(self) -> Self {
-            $F(self.0.abs())
+            F32x16(self.0.abs())
         }
         #[inline(always)]
         fn max(self, o: Self) -> Self {
-            $F(self.0.max(o.0))
+            F32x16(self.0.max(o.0))
         }
         #[inline(always)]
         fn min(self, o: Self) -> Self {
-            $F(self.0.min(o.0))
+            F32x16(self.0.min(o.0))
         }
         #[inline(always)]
         fn acos(self) -> Self {
-            $F(self.0.acos())
+            F32x16(self.0.acos())
         }
         #[inline(always)]
         fn sin(self) -> Self {
-            $F(self.0.sin_cos().0)
+            F32x16(self.0.sin_cos().0)
         }
         #[inline(always)]
         fn cos(self) -> Self {
-            $F(self.0.sin_cos().1)
+            F32x16(self.0.sin_cos().1)
         }
         #[inline(always)]
         fn sin_cos(self) -> (Self, Self) {
             let (s, c) = self.0.sin_cos();
-            ($F(s), $F(c))
+            (F32x16(s), F32x16(c))
         }
         #[inline(always)]
         fn exp2(self) -> Self {
-            $F(self.0.exp2())
+            F32x16(self.0.exp2())
         }
         #[inline(always)]
         fn log2(self) -> Self {
-            $F(self.0.ln() * $f::splat(core::f32::consts::LOG2_E))
+            F32x16(self.0.ln() * f32x16::splat(core::f32::consts::LOG2_E))
         }
         #[inline(always)]
         fn powf(self, p: f32) -> Self {
-            $F(self.0.powf_simd($f::splat(p)))
+            F32x16(self.0.powf_simd(f32x16::splat(p)))
         }
         #[inline(always)]
         fn floor(self) -> Self {
-            $F(self.0.floor())
+            F32x16(self.0.floor())
         }
         #[inline(always)]
         fn round_even(self) -> Self {
-            $F(self.0.round_ties_even())
+            F32x16(self.0.round_ties_even())
         }
         #[inline(always)]
         fn map_bits(self, f: impl Fn(u32) -> u32) -> Self {
             let a = self.0.to_array();
-            $F($f::new($crate::common::lanes::array_from_fn_inlined(|i| f32::from_bits(f(a[i].to_bits())))))
+            F32x16(f32x16::new(crate::common::lanes::array_from_fn_inlined(|i| f32::from_bits(f(a[i].to_bits())))))
         }
         #[inline(always)]
-        fn gt(self, o: Self) -> $f {
+        fn gt(self, o: Self) -> f32x16 {
             self.0.simd_gt(o.0)
         }
         #[inline(always)]
-        fn lt(self, o: Self) -> $f {
+        fn lt(self, o: Self) -> f32x16 {
             self.0.simd_lt(o.0)
         }
         #[inline(always)]
-        fn ge(self, o: Self) -> $f {
+        fn ge(self, o: Self) -> f32x16 {
             self.0.simd_ge(o.0)
         }
         #[inline(always)]
-        fn le(self, o: Self) -> $f {
+        fn le(self, o: Self) -> f32x16 {
             self.0.simd_le(o.0)
         }
         #[inline(always)]
-        fn select(m: $f, a: Self, b: Self) -> Self {
+        fn select(m: f32x16, a: Self, b: Self) -> Self {
             // `vblendvps` (one instruction); the masks are whole lanes of ones or zeros, so it
             // picks as `bitselect`'s and/andnot/or would.
-            $F(wide::Select::select(m, a.0, b.0))
+            F32x16(wide::Select::select(m, a.0, b.0))
         }
         /// On x86-64 `minps(maxps(x, lo), hi)`: `maxps` returns its second operand for a NaN
         /// or equal pair, so NaN → lo and x = lo → lo (±0 included), then `minps` keeps x below
@@ -700,105 +700,105 @@ macro_rules! cpu_lanes {
         #[inline(always)]
         fn clamp_between(self, lo: Self, hi: Self) -> Self {
             #[cfg(target_arch = "x86_64")]
-            let c = $F(self.0.fast_max(lo.0).fast_min(hi.0));
+            let c = F32x16(self.0.fast_max(lo.0).fast_min(hi.0));
             #[cfg(not(target_arch = "x86_64"))]
-            let c = $crate::common::math::clamp_lanes(self, lo, hi);
+            let c = crate::common::math::clamp_lanes(self, lo, hi);
             c
         }
         #[inline(always)]
-        fn and(a: $f, b: $f) -> $f {
+        fn and(a: f32x16, b: f32x16) -> f32x16 {
             a & b
         }
         #[inline(always)]
-        fn or(a: $f, b: $f) -> $f {
+        fn or(a: f32x16, b: f32x16) -> f32x16 {
             a | b
         }
         #[inline(always)]
-        fn not(a: $f) -> $f {
+        fn not(a: f32x16) -> f32x16 {
             !a
         }
         #[inline(always)]
-        fn mask_splat(b: bool) -> $f {
-            $f::splat(if b { f32::from_bits(u32::MAX) } else { 0.0 })
+        fn mask_splat(b: bool) -> f32x16 {
+            f32x16::splat(if b { f32::from_bits(u32::MAX) } else { 0.0 })
         }
         #[inline(always)]
-        fn mask_lane(m: $f, i: usize) -> bool {
+        fn mask_lane(m: f32x16, i: usize) -> bool {
             m.as_array()[i].to_bits() != 0
         }
         #[inline(always)]
-        fn texel_lane(t: $U2, i: usize) -> UVec2 {
+        fn texel_lane(t: U2x16, i: usize) -> UVec2 {
             UVec2::new(t.x.as_array()[i] as u32, t.y.as_array()[i] as u32)
         }
         #[inline(always)]
-        fn any(m: $f) -> bool {
+        fn any(m: f32x16) -> bool {
             m.any()
         }
         #[inline(always)]
-        fn texel(x: $i, y: $i) -> $U2 {
-            $U2 { x, y }
+        fn texel(x: i32x16, y: i32x16) -> U2x16 {
+            U2x16 { x, y }
         }
         #[inline(always)]
-        fn texel_x(t: $U2) -> $i {
+        fn texel_x(t: U2x16) -> i32x16 {
             t.x
         }
         #[inline(always)]
-        fn texel_y(t: $U2) -> $i {
+        fn texel_y(t: U2x16) -> i32x16 {
             t.y
         }
         #[inline(always)]
-        fn index_to_float(i: $i) -> Self {
-            $F(i.round_float())
+        fn index_to_float(i: i32x16) -> Self {
+            F32x16(i.round_float())
         }
         #[inline(always)]
-        fn index_eq(a: $i, b: $i) -> $f {
-            bytemuck::cast::<$i, $f>(a.simd_eq(b))
+        fn index_eq(a: i32x16, b: i32x16) -> f32x16 {
+            bytemuck::cast::<i32x16, f32x16>(a.simd_eq(b))
         }
         #[inline(always)]
-        fn index_splat(n: u32) -> $i {
-            $i::splat(n as i32)
+        fn index_splat(n: u32) -> i32x16 {
+            i32x16::splat(n as i32)
         }
         #[inline(always)]
-        fn index_mip_extent(n: u32, k: $i) -> $i {
-            $i::splat(n as i32).unbounded_shr(bytemuck::cast(k)).max($i::splat(1))
+        fn index_mip_extent(n: u32, k: i32x16) -> i32x16 {
+            i32x16::splat(n as i32).unbounded_shr(bytemuck::cast(k)).max(i32x16::splat(1))
         }
         #[inline(always)]
-        fn index_select(m: $f, a: $i, b: $i) -> $i {
-            wide::Select::<$i>::select(m, a, b)
+        fn index_select(m: f32x16, a: i32x16, b: i32x16) -> i32x16 {
+            wide::Select::<i32x16>::select(m, a, b)
         }
         /// `maxps(x, 0)` takes 0 for a NaN `x`; clamped below `n`, the truncation is exact.
         #[inline(always)]
-        fn floor_index(self, n: $i) -> $i {
-            let last = (n - $i::splat(1)).round_float();
-            self.0.fast_max($f::ZERO).fast_min(last).fast_trunc_int()
+        fn floor_index(self, n: i32x16) -> i32x16 {
+            let last = (n - i32x16::splat(1)).round_float();
+            self.0.fast_max(f32x16::ZERO).fast_min(last).fast_trunc_int()
         }
         #[inline(always)]
-        fn index_offset_clamped(i: $i, d: i32, n: u32) -> $i {
-            (i + $i::splat(d)).max($i::ZERO).min($i::splat(n as i32 - 1))
+        fn index_offset_clamped(i: i32x16, d: i32, n: u32) -> i32x16 {
+            (i + i32x16::splat(d)).max(i32x16::ZERO).min(i32x16::splat(n as i32 - 1))
         }
         /// AVX2's variable shifts give 0 for shifts of 32 or more, so `(1 ≪ count) − 1` is all
         /// ones for count = 32.
         #[inline(always)]
-        fn index_bit_run(start: $i, count: $i) -> $i {
-            let one = $i::splat(1);
+        fn index_bit_run(start: i32x16, count: i32x16) -> i32x16 {
+            let one = i32x16::splat(1);
             let ones = one.unbounded_shl(bytemuck::cast(count)) - one;
             ones.unbounded_shl(bytemuck::cast(start))
         }
         #[inline(always)]
-        fn v2_from_lanes(f: impl Fn(usize) -> Vec2) -> $V2 {
-            let v: [Vec2; $n] = $crate::common::lanes::array_from_fn_inlined(f);
-            $V2 { x: $F::from_lanes(|i| v[i].x), y: $F::from_lanes(|i| v[i].y) }
+        fn v2_from_lanes(f: impl Fn(usize) -> Vec2) -> V2x16 {
+            let v: [Vec2; 16] = crate::common::lanes::array_from_fn_inlined(f);
+            V2x16 { x: F32x16::from_lanes(|i| v[i].x), y: F32x16::from_lanes(|i| v[i].y) }
         }
         #[inline(always)]
-        fn index_lane(i: $i, k: usize) -> u32 {
+        fn index_lane(i: i32x16, k: usize) -> u32 {
             i.as_array()[k] as u32
         }
         #[inline(always)]
-        fn gather_word(data: &[u32], i: $i) -> $i {
+        fn gather_word(data: &[u32], i: i32x16) -> i32x16 {
             bytemuck::cast(gather_lanes(data, i))
         }
         #[inline(always)]
-        fn gather_index(data: &[f32], i: $i) -> Self {
-            $F($f::new(gather_lanes(data, i)))
+        fn gather_index(data: &[f32], i: i32x16) -> Self {
+            F32x16(f32x16::new(gather_lanes(data, i)))
         }
     }
 
@@ -806,165 +806,157 @@ macro_rules! cpu_lanes {
     /// Consecutive indices `k, k + 1, …` in every lane — a row of pixels — are one load after
     /// one compare of the vector; others are one load per lane.
     #[inline(always)]
-    fn gather_lanes<T: Copy + Default>(data: &[T], i: $i) -> [T; $n] {
+    fn gather_lanes<T: Copy + Default>(data: &[T], i: i32x16) -> [T; 16] {
         let first = i.as_array()[0];
-        let run = $i::splat(first) + $i::new($crate::common::lanes::array_from_fn_inlined(|k| k as i32));
-        let consecutive = first >= 0 && bytemuck::cast::<$i, $f>(run.simd_eq(i)).all();
-        if let Some(row) = consecutive.then(|| data.get(first as usize..first as usize + $n)).flatten() {
+        let run = i32x16::splat(first) + i32x16::new(crate::common::lanes::array_from_fn_inlined(|k| k as i32));
+        let consecutive = first >= 0 && bytemuck::cast::<i32x16, f32x16>(run.simd_eq(i)).all();
+        if let Some(row) = consecutive.then(|| data.get(first as usize..first as usize + 16)).flatten() {
             return row.try_into().expect("a full row of lanes");
         }
         let i = i.to_array();
-        $crate::common::lanes::array_from_fn_inlined(|k| data[i[k] as usize])
+        crate::common::lanes::array_from_fn_inlined(|k| data[i[k] as usize])
     }
 
-    #[doc = concat!(stringify!($n), " texels (or pixels).")]
+    /// Sixteen texels (or pixels).
     #[derive(Copy, Clone, Debug, PartialEq)]
-    pub struct $U2 {
-        pub x: $i,
-        pub y: $i,
+    pub struct U2x16 {
+        pub x: i32x16,
+        pub y: i32x16,
     }
 
-    impl $U2 {
+    impl U2x16 {
         /// Lane `i` from `each[i]`.
         #[inline(always)]
-        pub fn from_texels(each: &[UVec2; $n]) -> Self {
-            $U2 {
-                x: $i::new($crate::common::lanes::array_from_fn_inlined(|k| each[k].x as i32)),
-                y: $i::new($crate::common::lanes::array_from_fn_inlined(|k| each[k].y as i32)),
+        pub fn from_texels(each: &[UVec2; 16]) -> Self {
+            U2x16 {
+                x: i32x16::new(crate::common::lanes::array_from_fn_inlined(|k| each[k].x as i32)),
+                y: i32x16::new(crate::common::lanes::array_from_fn_inlined(|k| each[k].y as i32)),
             }
         }
     }
 
-    #[doc = concat!(stringify!($n), " `Vec2`s.")]
+    /// Sixteen `Vec2`s.
     #[derive(Copy, Clone, Debug)]
-    pub struct $V2 {
-        pub x: $F,
-        pub y: $F,
+    pub struct V2x16 {
+        pub x: F32x16,
+        pub y: F32x16,
     }
 
-    impl Add for $V2 {
+    impl Add for V2x16 {
         type Output = Self;
         #[inline(always)]
         fn add(self, o: Self) -> Self {
-            $V2 { x: self.x + o.x, y: self.y + o.y }
+            V2x16 { x: self.x + o.x, y: self.y + o.y }
         }
     }
-    impl Sub for $V2 {
+    impl Sub for V2x16 {
         type Output = Self;
         #[inline(always)]
         fn sub(self, o: Self) -> Self {
-            $V2 { x: self.x - o.x, y: self.y - o.y }
+            V2x16 { x: self.x - o.x, y: self.y - o.y }
         }
     }
-    impl Mul<$F> for $V2 {
+    impl Mul<F32x16> for V2x16 {
         type Output = Self;
         #[inline(always)]
-        fn mul(self, s: $F) -> Self {
-            $V2 { x: self.x * s, y: self.y * s }
+        fn mul(self, s: F32x16) -> Self {
+            V2x16 { x: self.x * s, y: self.y * s }
         }
     }
-    impl LaneVec2<$F> for $V2 {
+    impl LaneVec2<F32x16> for V2x16 {
         #[inline(always)]
-        fn new(x: $F, y: $F) -> Self {
-            $V2 { x, y }
+        fn new(x: F32x16, y: F32x16) -> Self {
+            V2x16 { x, y }
         }
         #[inline(always)]
-        fn x(self) -> $F {
+        fn x(self) -> F32x16 {
             self.x
         }
         #[inline(always)]
-        fn y(self) -> $F {
+        fn y(self) -> F32x16 {
             self.y
         }
         #[inline(always)]
-        fn length(self) -> $F {
+        fn length(self) -> F32x16 {
             (self.x * self.x + self.y * self.y).sqrt()
         }
     }
 
-    #[doc = concat!(stringify!($n), " `Vec3`s.")]
+    /// Sixteen `Vec3`s.
     #[derive(Copy, Clone, Debug)]
-    pub struct $V3 {
-        pub x: $F,
-        pub y: $F,
-        pub z: $F,
+    pub struct V3x16 {
+        pub x: F32x16,
+        pub y: F32x16,
+        pub z: F32x16,
     }
 
-    impl Add for $V3 {
+    impl Add for V3x16 {
         type Output = Self;
         #[inline(always)]
         fn add(self, o: Self) -> Self {
-            $V3 { x: self.x + o.x, y: self.y + o.y, z: self.z + o.z }
+            V3x16 { x: self.x + o.x, y: self.y + o.y, z: self.z + o.z }
         }
     }
-    impl Sub for $V3 {
+    impl Sub for V3x16 {
         type Output = Self;
         #[inline(always)]
         fn sub(self, o: Self) -> Self {
-            $V3 { x: self.x - o.x, y: self.y - o.y, z: self.z - o.z }
+            V3x16 { x: self.x - o.x, y: self.y - o.y, z: self.z - o.z }
         }
     }
-    impl Neg for $V3 {
+    impl Neg for V3x16 {
         type Output = Self;
         #[inline(always)]
         fn neg(self) -> Self {
-            $V3 { x: -self.x, y: -self.y, z: -self.z }
+            V3x16 { x: -self.x, y: -self.y, z: -self.z }
         }
     }
-    impl Mul<$F> for $V3 {
+    impl Mul<F32x16> for V3x16 {
         type Output = Self;
         #[inline(always)]
-        fn mul(self, s: $F) -> Self {
-            $V3 { x: self.x * s, y: self.y * s, z: self.z * s }
+        fn mul(self, s: F32x16) -> Self {
+            V3x16 { x: self.x * s, y: self.y * s, z: self.z * s }
         }
     }
-    impl Div<$F> for $V3 {
+    impl Div<F32x16> for V3x16 {
         type Output = Self;
         #[inline(always)]
-        fn div(self, s: $F) -> Self {
-            $V3 { x: self.x / s, y: self.y / s, z: self.z / s }
+        fn div(self, s: F32x16) -> Self {
+            V3x16 { x: self.x / s, y: self.y / s, z: self.z / s }
         }
     }
-    impl LaneVec3<$F> for $V3 {
+    impl LaneVec3<F32x16> for V3x16 {
         #[inline(always)]
-        fn new(x: $F, y: $F, z: $F) -> Self {
-            $V3 { x, y, z }
+        fn new(x: F32x16, y: F32x16, z: F32x16) -> Self {
+            V3x16 { x, y, z }
         }
         #[inline(always)]
-        fn x(self) -> $F {
+        fn x(self) -> F32x16 {
             self.x
         }
         #[inline(always)]
-        fn y(self) -> $F {
+        fn y(self) -> F32x16 {
             self.y
         }
         #[inline(always)]
-        fn z(self) -> $F {
+        fn z(self) -> F32x16 {
             self.z
         }
         #[inline(always)]
-        fn dot(self, o: Self) -> $F {
+        fn dot(self, o: Self) -> F32x16 {
             self.x * o.x + self.y * o.y + self.z * o.z
         }
         #[inline(always)]
         fn cross(self, o: Self) -> Self {
-            $V3 { x: self.y * o.z - o.y * self.z, y: self.z * o.x - o.z * self.x, z: self.x * o.y - o.x * self.y }
+            V3x16 { x: self.y * o.z - o.y * self.z, y: self.z * o.x - o.z * self.x, z: self.x * o.y - o.x * self.y }
         }
         #[inline(always)]
-        fn length(self) -> $F {
+        fn length(self) -> F32x16 {
             self.dot(self).sqrt()
         }
         #[inline(always)]
         fn normalize(self) -> Self {
-            self * ($F::splat(1.0) / self.length())
+            self * (F32x16::splat(1.0) / self.length())
         }
     }
-    };
-}
-
-/// Sixteen lanes on the CPU: two 256-bit vectors with AVX2 (the default build), four 128-bit
-/// ones on the x86-64 baseline, one 512-bit vector with AVX-512.
-#[cfg(not(target_arch = "spirv"))]
-mod x16 {
-    cpu_lanes!(F32x16, U2x16, V2x16, V3x16, f32x16, i32x16, 16);
 }
