@@ -21,7 +21,6 @@ ROWS = [
 ]
 
 
-
 def cpu_model():
     """The CPU's model name from /proc/cpuinfo (Linux; "with AVX-512" where it has it), else the
     platform's processor string."""
@@ -37,6 +36,7 @@ def cpu_model():
     except OSError:
         pass
     return model + (" with AVX-512" if "avx512f" in flags else "")
+
 
 def passes(path):
     with open(path) as f:

@@ -655,7 +655,7 @@ fn pack_edges_over_every_weight_and_code() {
         let e = unpack_edges::<f32>(code);
         assert_eq!([e.l, e.r, e.t, e.b], want, "unpack_edges({code:#04x})");
         assert_eq!(pack_edges::<f32>(e), code, "pack_edges(unpack_edges({code:#04x}))");
-        let lanes = unpack_edges::<CpuLanes>(aokit_shaders::common::lanes::CpuLanes::index_splat(code));
+        let lanes = unpack_edges::<CpuLanes>(CpuLanes::index_splat(code));
         let got = [lanes.l, lanes.r, lanes.t, lanes.b].map(|v| v.lane(3));
         assert_eq!(got, want, "unpack_edges::<CpuLanes>({code:#04x})");
         assert_eq!(CpuLanes::index_lane(pack_edges::<CpuLanes>(lanes), 5), code, "lanes: pack(unpack({code:#04x}))");

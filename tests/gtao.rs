@@ -76,8 +76,7 @@ fn noise_lanes_equal_the_one_pixel_noise_on_every_cell() {
     for frame in [0u32, 1, 63, 64, 1000] {
         for y in (0..64u32).chain([64, 130]) {
             for x0 in (0..128u32).step_by(CPU_LANES) {
-                let run = <CpuLanes as Lanes>::Index::new(core::array::from_fn(|k| k as i32));
-                let p = CpuLanes::texel(CpuLanes::index_splat(x0) + run, CpuLanes::index_splat(y));
+                let p = aokit_cpu::screen::lanes_of_run(uvec2(x0, y), CPU_LANES);
                 let lanes = spatio_temporal_noise_lanes::<CpuLanes>(p, frame);
                 for i in 0..CPU_LANES {
                     let one = spatio_temporal_noise(uvec2(x0 + i as u32, y), frame);

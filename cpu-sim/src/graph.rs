@@ -542,28 +542,20 @@ mod runners {
     /// The half-resolution upsample (`aokit_shaders::halfres`) over the inner image,
     /// [`CPU_LANES`](aokit_shaders::common::lanes::CPU_LANES) pixels a call.
     pub fn half_upsample(io: &mut PassIo) {
-        use aokit_shaders::common::lanes::{CPU_LANES, CpuLanes, Lanes};
+        use aokit_shaders::common::lanes::{CpuLanes, Lanes};
         use halfres::half_upsample::*;
         let params: halfres::HalfParams = io.push();
         let (size, g) = (params.view.size(), params.view.guard);
         let out = io.write(AO);
         let (depth, normals, half_depth, half_ao) =
             (io.read(DEPTH), io.read(NORMALS), io.read(HALF_DEPTH), io.read(HALF_AO));
-        crate::screen::tiled_lanes(
-            out,
-            size.x,
-            g..size.x - g,
-            g..size.y - g,
-            CPU_LANES as u32,
-            &crate::no_progress,
-            |first, out| {
-                let p = crate::screen::lanes_of_run(first, out.len());
-                let ao = halfres::upsample_lanes::<CpuLanes>(&params, depth, normals, half_depth, half_ao, p);
-                for (i, v) in out.iter_mut().enumerate() {
-                    *v = CpuLanes::lane(ao, i);
-                }
-            },
-        );
+        crate::screen::inner_lanes_into(out, size, g, &crate::no_progress, |first, out| {
+            let p = crate::screen::lanes_of_run(first, out.len());
+            let ao = halfres::upsample_lanes::<CpuLanes>(&params, depth, normals, half_depth, half_ao, p);
+            for (i, v) in out.iter_mut().enumerate() {
+                *v = CpuLanes::lane(ao, i);
+            }
+        });
     }
 
     /// The temporal accumulation (`aokit_shaders::temporal`) over the full target.

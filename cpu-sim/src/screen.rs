@@ -117,9 +117,22 @@ pub fn lanes_of_run(first: UVec2, n: usize) -> <CpuLanes as Lanes>::U2 {
 /// image, in parallel [`tiled_lanes`] bands. Guard-band pixels keep 1.
 fn for_inner_lanes(size: UVec2, guard: u32, progress: Progress, kernel: impl Fn(UVec2, &mut [f32]) + Sync) -> Vec<f32> {
     let mut out = vec![1.0; (size.x * size.y) as usize];
-    let (xs, ys) = (guard..size.x.saturating_sub(guard), guard..size.y.saturating_sub(guard));
-    tiled_lanes(&mut out, size.x, xs, ys, CPU_LANES as u32, progress, kernel);
+    inner_lanes_into(&mut out, size, guard, progress, kernel);
     out
+}
+
+/// Call `kernel(first, out)` for runs of up to [`CPU_LANES`] consecutive inner pixels of the
+/// caller's full-target image `out`, in parallel [`tiled_lanes`] bands; its guard band is left
+/// as it is.
+pub fn inner_lanes_into<T: Send>(
+    out: &mut [T],
+    size: UVec2,
+    guard: u32,
+    progress: Progress,
+    kernel: impl Fn(UVec2, &mut [T]) + Sync,
+) {
+    let (xs, ys) = (guard..size.x.saturating_sub(guard), guard..size.y.saturating_sub(guard));
+    tiled_lanes(out, size.x, xs, ys, CPU_LANES as u32, progress, kernel);
 }
 
 /// Plain VAO (spec svao-raysd §4–§5) over the inner image. Returns the full-target AO buffer
