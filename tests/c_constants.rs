@@ -133,6 +133,46 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
             expected.push(format!("{what} {}", bytes.iter().map(|b| format!("{b:02x}")).collect::<String>()));
         }
     }
+    // Half resolution's HalfParams (its `half` from the halved frame), against `half_params`, on
+    // the frame made even (half resolution refuses odd sizes).
+    {
+        use aokit_shaders::halfres::settings::{HALF_RESOLUTION, HalfSettings, half_params};
+        use aokit_shaders::technique::Registered;
+        let t: &'static dyn Registered = &HALF_RESOLUTION;
+        let listed = manifest.half_resolution.as_ref().expect("the manifest's half_resolution");
+        let even =
+            FrameInputs { inner: frame.inner + (frame.inner & 1), guard: frame.guard + (frame.guard & 1), ..frame };
+        writeln!(
+            c,
+            "    aokit_frame_inputs fe = f; fe.w = {}u; fe.h = {}u; fe.g = {}u;",
+            even.inner.x, even.inner.y, even.guard
+        )
+        .unwrap();
+        for values in settings_tried(t) {
+            let mut configured = t.configure();
+            values.iter().for_each(|(k, val)| configured.set(k, val).unwrap());
+            let settings = configured.settings().downcast_ref::<HalfSettings>().unwrap();
+            let params = half_params(settings, &even.frame_desc().camera.view).unwrap();
+            writeln!(c, "    {{\n        aokit_half_resolution_settings s = aokit_half_resolution_defaults();")
+                .unwrap();
+            for (key, value) in &values {
+                let row = listed.settings.iter().find(|s| s.key == *key).unwrap();
+                let literal = match row.kind.as_str() {
+                    "number" => c_float(value.parse().unwrap()),
+                    _ => format!("{}u", row.choices.iter().position(|c| c == value).unwrap()),
+                };
+                writeln!(c, "        s.{} = {literal};", key.replace('-', "_")).unwrap();
+            }
+            let what = format!("half_resolution:{values:?}:HalfParams").replace(['"', ' '], "");
+            writeln!(
+                c,
+                "        {{ aokit_HalfParams out; memset(&out, 0, sizeof out); aokit_half_resolution_HalfParams(&s, &fe, 0u, &out); dump(\"{what}\", &out, sizeof out); }}\n    }}"
+            )
+            .unwrap();
+            let bytes = bytemuck::bytes_of(&params);
+            expected.push(format!("{what} {}", bytes.iter().map(|b| format!("{b:02x}")).collect::<String>()));
+        }
+    }
     c += "    return 0;\n}\n";
     let dir = std::env::temp_dir().join(format!("aokit-c-constants-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();

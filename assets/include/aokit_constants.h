@@ -1023,4 +1023,33 @@ static inline void aokit_adapters_ImportParams(const aokit_adapters_settings *s,
     out->_pad = (uint32_t)(INT64_C(0)); /* 0 */
 }
 
+/* half_resolution: HalfParams, the push constants of the half_downsample and half_upsample modules */
+#define AOKIT_HALF_RESOLUTION_PICK_CHECKERBOARD 0u
+#define AOKIT_HALF_RESOLUTION_PICK_NEAREST 1u
+typedef struct aokit_half_resolution_settings {
+    uint32_t pick; /* Which pixel of each 2×2 block the downsample keeps (HalfParams.pick: checkerboard 0, nearest 1; spec half-resolution §2) (index: checkerboard, nearest) */
+    float plane_tolerance; /* The upsample's plane tolerance τ in pixel footprints, > 0; the largest (3.4e38) turns the plane weight off (spec half-resolution §3) */
+} aokit_half_resolution_settings;
+static inline aokit_half_resolution_settings aokit_half_resolution_defaults(void) { aokit_half_resolution_settings s = {0u, 1.5f}; return s; }
+/* ViewParams of half_resolution: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_half_resolution_ViewParams(const aokit_half_resolution_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_ViewParams *out) {
+    (void)s; (void)f; (void)pass;
+    out->res = aokit__vec2f((float)((int64_t)(f->w + 2u * f->g)), (float)((int64_t)(f->h + 2u * f->g))); /* vec2(W, H) */
+    out->tan_half_fov = aokit__vec2f((((((float)tan((double)(0.5f * f->fov_y)) * (float)((int64_t)(f->h + 2u * f->g))) / (float)((int64_t)f->h)) * (float)((int64_t)(f->w + 2u * f->g))) / (float)((int64_t)(f->h + 2u * f->g))), (((float)tan((double)(0.5f * f->fov_y)) * (float)((int64_t)(f->h + 2u * f->g))) / (float)((int64_t)f->h))); /* vec2(tan(0.5 * fov_y) * H / h * W / H, tan(0.5 * fov_y) * H / h) */
+    out->near = f->near_plane; /* near */
+    out->far = f->far_plane; /* far */
+    out->guard = (uint32_t)((int64_t)f->g); /* g */
+    out->_pad = (uint32_t)(INT64_C(0)); /* 0 */
+}
+/* HalfParams of half_resolution: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_half_resolution_HalfParams(const aokit_half_resolution_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_HalfParams *out) {
+    (void)s; (void)f; (void)pass;
+    aokit_half_resolution_ViewParams(s, f, pass, &out->view);
+    { aokit_frame_inputs half = *f; half.w /= 2u; half.h /= 2u; half.g /= 2u; aokit_half_resolution_ViewParams(s, &half, pass, &out->half); }
+    out->pick = (uint32_t)((int64_t)s->pick); /* index(`pick`) */
+    out->plane_tolerance = s->plane_tolerance; /* `plane-tolerance` */
+    out->_pad0 = (uint32_t)(INT64_C(0)); /* 0 */
+    out->_pad1 = (uint32_t)(INT64_C(0)); /* 0 */
+}
+
 #endif /* AOKIT_CONSTANTS_H */

@@ -102,6 +102,7 @@ fn build_spirv() -> Result<(), String> {
         techniques: Vec::new(),
         tables: Vec::new(),
         adapters: None,
+        half_resolution: None,
     };
     for (entry, path) in &modules {
         let file = format!("{entry}.spv");

@@ -8,6 +8,7 @@ use crate::common::ViewParams;
 use crate::graph::{
     Diagnostics, Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, inputs, target_f32,
 };
+use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
 /// Default plane tolerance `τ` of the upsample, in pixel footprints (spec half-resolution §3.2):
 /// about twice the largest distance, 0.71 footprints, of a tap on the pixel's own plane.
@@ -60,6 +61,68 @@ impl HalfSettings {
         Ok(())
     }
 }
+
+/// The picks by name, in the order of [`Pick`]'s variants (the `pick` setting).
+const PICKS: [&str; 2] = ["checkerboard", "nearest"];
+
+impl Settings for HalfSettings {
+    const ROWS: &'static [Setting<Self>] = &[
+        Setting::<Self>::choice("pick", &PICKS, |s| s.pick as usize, |s, i| {
+            s.pick = [Pick::Checkerboard, Pick::Nearest][i]
+        })
+        .help("Which pixel of each 2×2 block the downsample keeps (HalfParams.pick: checkerboard 0, nearest 1; spec half-resolution §2)"),
+        Setting::<Self>::number("plane-tolerance", 0.0, f32::MAX, |s| &mut s.plane_tolerance)
+            .help("The upsample's plane tolerance τ in pixel footprints, > 0; the largest (3.4e38) turns the plane weight off (spec half-resolution §3)"),
+    ];
+
+    fn check(&self) -> Result<(), String> {
+        HalfSettings::validate(self)
+    }
+}
+
+/// How the half-resolution frame's names follow from the full target's (spec half-resolution
+/// §1): `(name, expression of the full frame's names)`. A technique's graph and constants at half
+/// resolution are its published ones evaluated with these names; the rest of the frame (camera,
+/// planes, field of view) is the same.
+pub const HALF_FRAME: [(&str, &str); 5] = [
+    ("W", "div_floor(W, 2)"),
+    ("H", "div_floor(H, 2)"),
+    ("w", "div_floor(w, 2)"),
+    ("h", "div_floor(h, 2)"),
+    ("g", "div_floor(g, 2)"),
+];
+
+/// How [`half_params`] fills `HalfParams`, then the camera's rows. `half(ViewParams)` is the
+/// `ViewParams` rows evaluated with the names of [`HALF_FRAME`].
+pub const CONSTANTS: &[Constant] = crate::join_constants![
+    &[
+        Constant::new("HalfParams.view", "the frame's ViewParams (ViewParams rows): the full target").expr("ViewParams"),
+        Constant::new(
+            "HalfParams.half",
+            "the ViewParams rows with W, H, w, h, g halved (half_resolution.frame): res (W/2, H/2), guard g/2, the same frustum"
+        )
+        .expr("half(ViewParams)"),
+        Constant::new("HalfParams.pick", "`pick`: checkerboard 0, nearest 1").expr("index(`pick`)"),
+        Constant::new("HalfParams.plane_tolerance", "`plane-tolerance` τ [1.5]").expr("`plane-tolerance`"),
+        Constant::new("HalfParams._pad0", "0").expr("0"),
+        Constant::new("HalfParams._pad1", "0").expr("0"),
+    ],
+    crate::common::camera::CONSTANTS,
+];
+
+/// Half resolution as a declaration, for the manifest's settings and constants (never in the
+/// registry: it wraps a technique's graph, [`at_resolution`]; its own graph function refuses).
+pub static HALF_RESOLUTION: Declaration<HalfSettings> = Declaration {
+    name: "half-resolution",
+    summary: "any screen-space technique at half resolution between a depth/normal downsample and an edge-aware upsample",
+    keys: &["pick", "plane-tolerance"],
+    defaults: HalfSettings::default,
+    graph: |_, _| Err("half resolution wraps a technique's graph (at_resolution); it has none of its own".into()),
+    second_layer: single_layer,
+    constants: CONSTANTS,
+    formulas: &[],
+    tables: &[],
+};
 
 /// What [`Resolution::name`] puts between a half resolution's pick and a non-default plane
 /// tolerance.

@@ -464,7 +464,15 @@ fn technique(t: &Source, manifest: &Manifest) -> Result<String, String> {
                 .find(|c| c.struct_name == name && c.field == field.name)
                 .ok_or_else(|| format!("{} {name}.{}: no constant", t.name, field.name))?;
             if manifest.structs.iter().any(|x| x.name == field.ty) {
-                h += &format!("    {p}_{}(s, f, pass, &out->{});\n", field.ty, field.name);
+                if c.expr == format!("half({})", field.ty) {
+                    // The half-resolution frame (`half_resolution.frame`): w, h, g halved.
+                    h += &format!(
+                        "    {{ aokit_frame_inputs half = *f; half.w /= 2u; half.h /= 2u; half.g /= 2u; {p}_{}(s, &half, pass, &out->{}); }}\n",
+                        field.ty, field.name
+                    );
+                } else {
+                    h += &format!("    {p}_{}(s, f, pass, &out->{});\n", field.ty, field.name);
+                }
                 continue;
             }
             let value = translate(&c.expr, t.settings).map_err(|e| format!("{} {name}.{}: {e}", t.name, field.name))?;
@@ -507,6 +515,12 @@ impl Manifest {
             let summary =
                 "ImportParams, the push constants of the import_depth, import_normals and export_ao_* modules";
             let source = Source { name: "adapters", summary, settings: &a.settings, constants: &a.constants };
+            h += &technique(&source, self)?;
+        }
+        if let Some(half) = &self.half_resolution {
+            let summary = "HalfParams, the push constants of the half_downsample and half_upsample modules";
+            let source =
+                Source { name: "half_resolution", summary, settings: &half.settings, constants: &half.constants };
             h += &technique(&source, self)?;
         }
         h += "#endif /* AOKIT_CONSTANTS_H */\n";

@@ -159,6 +159,16 @@ pub fn evaluate_struct(t: &dyn Registered, name: &str, inputs: &Inputs) -> Resul
     Ok(out)
 }
 
+/// `inputs` with the half-resolution frame's names (`half_resolution.frame`,
+/// [`aokit_shaders::halfres::settings::HALF_FRAME`]): `W H w h g` halved, everything else as is.
+pub fn half_inputs(inputs: &Inputs) -> Result<Inputs, String> {
+    let mut half = inputs.clone();
+    for (name, text) in aokit_shaders::halfres::settings::HALF_FRAME {
+        half.names.insert(name.into(), expr::eval(text, inputs)?);
+    }
+    Ok(half)
+}
+
 fn write_struct(
     t: &dyn Registered,
     layout: &StructLayout,
@@ -175,10 +185,13 @@ fn write_struct(
         let text = expression(t, row.expr);
         let bytes = &mut out[f.offset..f.offset + f.size];
         if let Some(nested) = layouts.iter().find(|s| s.name == f.ty) {
-            if text != f.ty {
-                return Err(format!("{path}: a {} field's expression is its struct's name", f.ty));
+            if text == f.ty {
+                write_struct(t, nested, layouts, inputs, bytes)?;
+            } else if text == format!("half({})", f.ty) {
+                write_struct(t, nested, layouts, &half_inputs(inputs).map_err(|e| format!("{path}: {e}"))?, bytes)?;
+            } else {
+                return Err(format!("{path}: a {0} field's expression is `{0}` or `half({0})`", f.ty));
             }
-            write_struct(t, nested, layouts, inputs, bytes)?;
             continue;
         }
         let value = expr::eval(&text, inputs).map_err(|e| format!("{path}: {e}"))?;

@@ -32,6 +32,45 @@ pub struct Manifest {
     /// The modules between an engine's images and aokit's buffers.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub adapters: Option<AdaptersManifest>,
+    /// How any technique's published graph runs at half resolution.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub half_resolution: Option<HalfResolutionManifest>,
+}
+
+/// Half resolution as a transform of any published variant (`aokit_shaders::halfres`, spec
+/// half-resolution §1): the variant evaluated with the half frame's names, its G-buffer inputs
+/// renamed to the downsample's outputs, between the downsample and the upsample.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct HalfResolutionManifest {
+    pub doc: String,
+    /// The transform's own settings (`HalfParams.pick`, `HalfParams.plane_tolerance`).
+    pub settings: Vec<SettingManifest>,
+    /// `(name, expression of the full frame's names)`: evaluate the variant's sizes, dispatches,
+    /// contents and constants with these names instead of the full target's.
+    pub frame: Vec<(String, String)>,
+    /// What the frame must satisfy (refused otherwise).
+    pub requires: String,
+    /// Inputs a variant must not read (the downsample does not reduce them).
+    pub refused_inputs: Vec<String>,
+    /// `(input, resource)`: the variant's bindings of these inputs bind the downsample's outputs.
+    pub renamed_inputs: Vec<(String, String)>,
+    /// Added to the variant's resources (sizes in the full frame's names).
+    pub resources: Vec<ResourceManifest>,
+    /// Before the variant's passes.
+    pub before: Vec<PassManifest>,
+    /// After them; [`HalfResolutionManifest::OUTPUT_SLOT`] stands for the variant's `output`.
+    pub after: Vec<PassManifest>,
+    /// The wrapped graph's output (f32 per full-target texel).
+    pub output: String,
+    /// `HalfParams` (the push constants of `before` and `after`) and the `ViewParams` inside it,
+    /// as expressions of `settings` and the full frame; `half(ViewParams)` is the `ViewParams`
+    /// rows evaluated with `frame`'s names.
+    pub constants: Vec<ConstantManifest>,
+}
+
+impl HalfResolutionManifest {
+    /// The name that `after`'s bindings give the wrapped variant's `output`.
+    pub const OUTPUT_SLOT: &'static str = "<output>";
 }
 
 /// The adapter modules (`aokit_shaders::adapters`): their settings, modules and constants.
@@ -608,6 +647,7 @@ impl Manifest {
         self.techniques = techniques()?;
         self.tables = tables()?;
         self.adapters = Some(adapters(&self.structs)?);
+        self.half_resolution = Some(half_resolution(&self.structs)?);
         for m in &mut self.modules {
             let kernel = aokit_shaders::kernel::Kernel::find(&m.entry_point)
                 .ok_or_else(|| format!("{}: no #[kernel] entry point of that name", m.entry_point))?;
@@ -932,6 +972,76 @@ fn adapters(structs: &[StructManifest]) -> Result<AdaptersManifest, String> {
         })
         .collect();
     Ok(AdaptersManifest { settings: settings_of(t), modules, constants })
+}
+
+/// The half-resolution transform: its settings and constants from
+/// `aokit_shaders::halfres::settings::HALF_RESOLUTION`, its resources and passes from
+/// `at_resolution` around `gtao`'s graph at the defaults (the passes it adds, whatever it wraps).
+#[cfg(feature = "reflect")]
+pub fn half_resolution(structs: &[StructManifest]) -> Result<HalfResolutionManifest, String> {
+    use aokit_shaders::graph::inputs;
+    use aokit_shaders::halfres::settings::{
+        HALF_DEPTH, HALF_FRAME, HALF_NORMALS, HALF_RESOLUTION, OUTPUT, Resolution, at_resolution,
+    };
+    let t: &'static dyn aokit_shaders::technique::Registered = &HALF_RESOLUTION;
+    let mut constants = Vec::new();
+    for name in ["ViewParams", "HalfParams"] {
+        let s = structs.iter().find(|s| s.name == name).ok_or_else(|| format!("no struct {name}"))?;
+        for f in &s.fields {
+            let path = format!("{name}.{}", f.name);
+            let row = t
+                .constants()
+                .iter()
+                .find(|c| c.field == path)
+                .ok_or_else(|| format!("half resolution: no row {path}"))?;
+            constants.push(ConstantManifest {
+                struct_name: name.into(),
+                field: f.name.clone(),
+                offset: f.offset,
+                ty: f.ty.clone(),
+                expr: crate::constants::expression(t, row.expr),
+                doc: row.formula.into(),
+            });
+        }
+    }
+    let wrapped: &'static dyn aokit_shaders::technique::Registered = &aokit_shaders::gtao::settings::GTAO;
+    let frame = reference_frame(aokit_shaders::glam::UVec2::new(1920, 1080), 64);
+    let c = wrapped.configure();
+    let graph = at_resolution(Resolution::half(), &frame, |f| c.graph(f))?;
+    let inner_output = c.graph(&frame)?.output;
+    let published = crate::graphs::publish(wrapped, &graph)?;
+    let ours = [HALF_DEPTH, HALF_NORMALS, OUTPUT];
+    let resources = published.resources.iter().filter(|r| ours.contains(&r.name.as_str())).cloned().collect();
+    let (first, last) = match &published.passes[..] {
+        [first, .., last] => (first.clone(), last.clone()),
+        _ => return Err("half resolution: the wrapped graph has fewer than two passes".into()),
+    };
+    let mut last = last;
+    for b in &mut last.bindings {
+        if b.1 == inner_output {
+            b.1 = HalfResolutionManifest::OUTPUT_SLOT.into();
+        }
+    }
+    Ok(HalfResolutionManifest {
+        doc: "any technique's variant at half resolution (spec half-resolution, docs/algorithms/half-resolution.md): \
+              `before`, the variant evaluated with `frame`'s names and its inputs renamed, `after`; the variant's \
+              first pass and `after` have a barrier before them, the variant's other passes keep theirs"
+            .into(),
+        // No flag of its own: `aokit` takes both as `--resolution half|half-nearest[-tau<τ>]`.
+        settings: settings_of(t).into_iter().map(|s| SettingManifest { flag: None, ..s }).collect(),
+        frame: HALF_FRAME.iter().map(|(n, e)| (n.to_string(), e.to_string())).collect(),
+        requires: "W, H and g even; at least 2×2 pixels inside the guard band (W ≥ 2g + 2, H ≥ 2g + 2)".into(),
+        refused_inputs: vec![inputs::SECOND_DEPTH.into()],
+        renamed_inputs: vec![
+            (inputs::LINEAR_DEPTH.into(), HALF_DEPTH.into()),
+            (inputs::VIEW_NORMALS.into(), HALF_NORMALS.into()),
+        ],
+        resources,
+        before: vec![first],
+        after: vec![last],
+        output: OUTPUT.into(),
+        constants,
+    })
 }
 
 /// The registry's techniques: settings, the graph at the defaults and every variant.

@@ -128,3 +128,169 @@ fn published_graphs_are_the_declarations_at_every_tried_setting() {
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
     assert!(checked > 1000 && words > 0, "{checked} checked, {words} words");
 }
+
+/// The manifest's half-resolution transform (`half_resolution`) applied to every technique's
+/// published variant is the graph `at_resolution` builds, at the technique's tried settings and
+/// the transform's, on two even frames: resources and their sizes, passes, bindings, dispatches
+/// and barriers, and every push-constant block and record bit for bit — the variant's evaluated
+/// with the transform's `frame` names, `HalfParams` from its own rows. A variant reading an input
+/// the transform refuses must be refused by `at_resolution` too.
+#[test]
+fn half_resolution_transform_is_at_resolution_for_every_variant() {
+    use aokit_contract::constants::{FrameInputs, evaluate_struct, half_inputs, push_struct, record_struct};
+    use aokit_contract::manifest::{HalfResolutionManifest, Manifest, half_resolution};
+    use aokit_shaders::halfres::settings::{HALF_RESOLUTION, HalfSettings, Resolution, at_resolution};
+    use aokit_shaders::technique::Registered;
+    let committed = Manifest::committed();
+    let half = half_resolution(&committed.structs).unwrap();
+    assert_eq!(Some(&half), committed.half_resolution.as_ref(), "the committed half_resolution section is stale");
+    let ht: &'static dyn Registered = &HALF_RESOLUTION;
+    // Both example frames with an even target and guard band (the second one's are odd).
+    let frames = FrameInputs::examples().map(|f| FrameInputs {
+        inner: aokit_shaders::glam::UVec2::new(f.inner.x & !1, f.inner.y & !1) + (f.inner & 1) * 2,
+        guard: f.guard + (f.guard & 1),
+        ..f
+    });
+    let (mut graphs, mut structs, mut refused) = (0, 0, 0);
+    let mut failures = Vec::new();
+    for &t in TECHNIQUES {
+        let (_, published) =
+            variants(t, &aokit_contract::manifest::reference_frame(frames[0].inner, frames[0].guard)).unwrap();
+        // The technique's tried settings with the default transform, then its defaults with each
+        // of the transform's tried settings.
+        let own = settings_tried(t);
+        let transform = settings_tried(ht);
+        let cases = own
+            .iter()
+            .map(|v| (v.clone(), transform[0].clone()))
+            .chain(transform.iter().skip(1).map(|h| (own[0].clone(), h.clone())));
+        for (values, half_values) in cases {
+            let mut c = t.configure();
+            values.iter().for_each(|(k, v)| c.set(k, v).unwrap());
+            let mut hc = ht.configure();
+            half_values.iter().for_each(|(k, v)| hc.set(k, v).unwrap());
+            let settings = *hc.settings().downcast_ref::<HalfSettings>().unwrap();
+            let [variant] = matching(&published, &values)[..] else {
+                failures.push(format!("{} {values:?}: not one variant", t.name()));
+                continue;
+            };
+            for frame in &frames {
+                let fail = |what: String| {
+                    format!("{} {values:?} {half_values:?} {}x{}: {what}", t.name(), frame.inner.x, frame.inner.y)
+                };
+                let built = at_resolution(Resolution::Half(settings), &frame.frame_desc(), |f| c.graph(f));
+                if variant.inputs.iter().any(|i| half.refused_inputs.contains(i)) {
+                    match built {
+                        Err(_) => refused += 1,
+                        Ok(_) => failures.push(fail("reads a refused input, yet at_resolution built it".into())),
+                    }
+                    continue;
+                }
+                let graph = match built {
+                    Ok(g) => g,
+                    Err(e) => {
+                        failures.push(fail(format!("at_resolution refused: {e}")));
+                        continue;
+                    }
+                };
+                let full = aokit_contract::constants::inputs(&t.rows(), &values, frame).unwrap();
+                let halved = half_inputs(&full).unwrap();
+                let transform_inputs = aokit_contract::constants::inputs(&ht.rows(), &half_values, frame).unwrap();
+                let view = graph.view;
+                // Resources: the variant's (half frame), then the transform's (full frame).
+                let expected: Vec<_> = variant
+                    .resources
+                    .iter()
+                    .map(|r| (r, &halved))
+                    .chain(half.resources.iter().map(|r| (r, &full)))
+                    .collect();
+                let names: Vec<_> = graph.resources.iter().map(|r| r.name).collect();
+                let listed: Vec<_> = expected.iter().map(|(r, _)| r.name.as_str()).collect();
+                if names != listed {
+                    failures.push(fail(format!("resources {listed:?}, at_resolution's {names:?}")));
+                    continue;
+                }
+                for ((m, ins), r) in expected.iter().zip(&graph.resources) {
+                    if int(&m.size, ins) != Ok(r.len(&view) as i64) {
+                        failures.push(fail(format!("{} size '{}', allocated {}", r.name, m.size, r.len(&view))));
+                    }
+                }
+                // Passes: before, the variant's with its inputs renamed, after.
+                let rename = |name: &str, wrapped: bool| {
+                    if name == HalfResolutionManifest::OUTPUT_SLOT {
+                        return variant.output.clone();
+                    }
+                    let renamed = half.renamed_inputs.iter().find(|(from, _)| wrapped && from == name);
+                    renamed.map_or(name.to_string(), |(_, to)| to.clone())
+                };
+                let n = variant.passes.len();
+                let expected: Vec<_> = half
+                    .before
+                    .iter()
+                    .map(|p| (p, &full, p.barrier_before))
+                    .chain(variant.passes.iter().enumerate().map(|(i, p)| (p, &halved, i == 0 || p.barrier_before)))
+                    .chain(half.after.iter().map(|p| (p, &full, p.barrier_before)))
+                    .collect();
+                let entries: Vec<_> = graph.passes.iter().map(|p| (p.label, p.entry())).collect();
+                let listed: Vec<_> = expected.iter().map(|(p, _, _)| (p.label.as_str(), p.entry.as_str())).collect();
+                if entries != listed || n + 2 != graph.passes.len() {
+                    failures.push(fail(format!("passes {listed:?}, at_resolution's {entries:?}")));
+                    continue;
+                }
+                let barriers = graph.barriers();
+                for (i, ((m, ins, barrier), p)) in expected.iter().zip(&graph.passes).enumerate() {
+                    let wrapped = i > 0 && i <= n;
+                    let bindings: Vec<_> = p.bindings.iter().map(|b| (b.slot, b.resource.to_string())).collect();
+                    let listed: Vec<_> = m.bindings.iter().map(|b| (b.0, rename(&b.1, wrapped))).collect();
+                    if bindings != listed {
+                        failures.push(fail(format!("{} bindings {listed:?}, at_resolution's {bindings:?}", p.label)));
+                    }
+                    let inv = p.invocations(&view);
+                    if (int(&m.dispatch[0], ins), int(&m.dispatch[1], ins)) != (Ok(inv.x as i64), Ok(inv.y as i64)) {
+                        failures.push(fail(format!("{} dispatch {:?}, at_resolution's {inv}", p.label, m.dispatch)));
+                    }
+                    if barriers[i] != *barrier {
+                        failures.push(fail(format!("{} barrier {barrier}, at_resolution's {}", p.label, barriers[i])));
+                    }
+                    // Constants: HalfParams from the transform's rows, the variant's from its own
+                    // with the half frame's names.
+                    let index = graph.passes[..i].iter().filter(|q| q.entry() == p.entry()).count();
+                    let mut ins = if wrapped { halved.clone() } else { transform_inputs.clone() };
+                    ins.names.insert("pass".into(), aokit_contract::expr::Value::Int(index as i64));
+                    let owner: &dyn Registered = if wrapped { t } else { ht };
+                    let mut blocks: Vec<(&str, &[u8])> = Vec::new();
+                    if let Some(name) = push_struct(p) {
+                        blocks.push((name, &p.push_constants));
+                    }
+                    for b in &p.bindings {
+                        let Some(Init::Data(words)) = graph.resource(b.resource).map(|r| &r.init) else { continue };
+                        if let Some(name) = record_struct(p, b.slot) {
+                            blocks.push((name, bytemuck::cast_slice(words)));
+                        }
+                    }
+                    for (name, built) in blocks {
+                        match evaluate_struct(owner, name, &ins) {
+                            Ok(ours) if built.get(..ours.len()) == Some(&ours[..]) => structs += 1,
+                            Ok(ours) => {
+                                let word = |b: &[u8], at: usize| b.get(at..at + 4).map(|w| w.to_vec());
+                                let at = (0..ours.len()).step_by(4).find(|&at| word(&ours, at) != word(built, at));
+                                let at = at.unwrap_or(ours.len());
+                                failures.push(fail(format!(
+                                    "{} {name}: byte {at}: expressions {:?}, built {:?}",
+                                    p.label,
+                                    word(&ours, at),
+                                    word(built, at)
+                                )));
+                            }
+                            Err(e) => failures.push(fail(format!("{} {name}: {e}", p.label))),
+                        }
+                    }
+                }
+                graphs += 1;
+            }
+        }
+    }
+    eprintln!("{graphs} half-resolution graphs, {structs} structs, {refused} refused");
+    assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures[..failures.len().min(20)].join("\n"));
+    assert!(graphs > 100 && structs > graphs && refused > 0, "{graphs} graphs, {structs} structs, {refused} refused");
+}
