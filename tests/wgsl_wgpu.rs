@@ -6,18 +6,25 @@
 //! the Rust `Graph`. Every WebGPU-capable technique at its defaults and at non-default settings
 //! runs on wgpu's Vulkan back-end with WebGPU's default limits, and its AO is compared with
 //! cpu-sim (which runs the Rust graph) on the same G-buffer: ≥ 99.9 % of the inner pixels within
-//! 1/255 and MSE ≤ 1e-6, the conformance bar of `assets/README.md`.
+//! 1/255 and MSE ≤ 1e-6, the conformance bar of `assets/README.md`. Four of them also run at half
+//! resolution, built as `assets/README.md` ("Half resolution") tells from `half_resolution` around
+//! the published variant, against cpu-sim's half-resolution graph.
 
 mod common;
 
 use aokit::render::CpuRenderer;
 use aokit::technique::Technique;
-use aokit_contract::constants::{FrameInputs, evaluate_struct, inputs};
+use aokit_contract::constants::{FrameInputs, evaluate_struct, half_inputs, inputs};
 use aokit_contract::expr::{Inputs, Value, eval};
 use aokit_contract::graphs::data_words;
-use aokit_contract::manifest::{Manifest, ModuleManifest, TechniqueManifest, VariantManifest};
+use aokit_contract::manifest::{
+    HalfResolutionManifest, Manifest, ModuleManifest, PassManifest, ResourceManifest, TechniqueManifest,
+    VariantManifest,
+};
 use aokit_cpu::graph::{CpuExecutor, CpuInputs};
 use aokit_cpu::no_progress;
+use aokit_shaders::halfres::settings::Resolution;
+use aokit_shaders::technique::Registered;
 use std::collections::HashMap;
 use wgpu::util::DeviceExt;
 
@@ -47,6 +54,10 @@ const RUNS: [&str; 21] = [
     "raymarch:directions=61:kernel=vogel",
 ];
 
+/// Techniques that also run at half resolution, built from the manifest's `half_resolution`
+/// around their published variant.
+const HALF_RUNS: [&str; 4] = ["vao", "gtao", "vbao:weighting=cosine-exact", "raymarch"];
+
 /// wgpu's device on the Vulkan back-end; `None` when there is none and the run allows the skip.
 fn device() -> Option<(wgpu::Device, wgpu::Queue, String)> {
     let adapter = common::wgpu_adapter::vulkan()?;
@@ -63,13 +74,77 @@ fn count(text: &str, inputs: &Inputs) -> u32 {
     }
 }
 
-/// Run `variant` of `t` through wgpu from the WGSL files, everything from the manifest; returns
-/// the output resource as `f32`.
+/// What a consumer runs, built from the manifest alone: resources and passes, each with the
+/// inputs its expressions are evaluated with and the declaration whose constants it pushes.
+struct Plan<'a> {
+    resources: Vec<(ResourceManifest, &'a Inputs, &'static dyn Registered)>,
+    passes: Vec<(PassManifest, &'a Inputs, &'static dyn Registered)>,
+    output: String,
+}
+
+/// `variant` of `t` as it is published, every expression with `inputs`.
+fn full_plan<'a>(t: &'static dyn Registered, variant: &VariantManifest, inputs: &'a Inputs) -> Plan<'a> {
+    Plan {
+        resources: variant.resources.iter().map(|r| (r.clone(), inputs, t)).collect(),
+        passes: variant.passes.iter().map(|p| (p.clone(), inputs, t)).collect(),
+        output: variant.output.clone(),
+    }
+}
+
+/// `variant` of `t` at half resolution, as `assets/README.md` ("Half resolution") tells a
+/// consumer to build it from `half_resolution`: the variant with the half frame's names
+/// (`halved`) and its inputs renamed, between `before` and `after` (with the full frame's names
+/// and the transform's settings, `transform`).
+fn half_plan<'a>(
+    half: &HalfResolutionManifest,
+    (t, variant): (&'static dyn Registered, &VariantManifest),
+    halved: &'a Inputs,
+    full: &'a Inputs,
+    transform: &'a Inputs,
+) -> Plan<'a> {
+    let ht: &'static dyn Registered = &aokit_shaders::halfres::settings::HALF_RESOLUTION;
+    let renamed = |p: &PassManifest| {
+        let mut p = p.clone();
+        for b in &mut p.bindings {
+            if let Some((_, to)) = half.renamed_inputs.iter().find(|(from, _)| *from == b.1) {
+                b.1 = to.clone();
+            }
+        }
+        p
+    };
+    let after = |p: &PassManifest| {
+        let mut p = p.clone();
+        for b in &mut p.bindings {
+            if b.1 == HalfResolutionManifest::OUTPUT_SLOT {
+                b.1 = variant.output.clone();
+            }
+        }
+        p
+    };
+    Plan {
+        resources: variant
+            .resources
+            .iter()
+            .map(|r| (r.clone(), halved, t))
+            .chain(half.resources.iter().map(|r| (r.clone(), full, ht)))
+            .collect(),
+        passes: half
+            .before
+            .iter()
+            .map(|p| (p.clone(), transform, ht))
+            .chain(variant.passes.iter().map(|p| (renamed(p), halved, t)))
+            .chain(half.after.iter().map(|p| (after(p), transform, ht)))
+            .collect(),
+        output: half.output.clone(),
+    }
+}
+
+/// Run `plan` through wgpu from the WGSL files, everything from the manifest; returns the
+/// output resource as `f32`.
 fn run_on_wgpu(
     (device, queue): (&wgpu::Device, &wgpu::Queue),
     manifest: &Manifest,
-    (t, variant): (&'static dyn aokit_shaders::technique::Registered, &VariantManifest),
-    mut inputs: Inputs,
+    plan: &Plan,
     depth: &[f32],
     normals: &[u32],
 ) -> Vec<f32> {
@@ -84,12 +159,12 @@ fn run_on_wgpu(
     };
     buffers.insert("linear_depth", init("depth", bytemuck::cast_slice(depth)));
     buffers.insert("view_normals", init("normals", normals));
-    for r in &variant.resources {
-        let mut words = vec![0u32; count(&r.size, &inputs) as usize];
+    for (r, inputs, t) in &plan.resources {
+        let mut words = vec![0u32; count(&r.size, inputs) as usize];
         if let Some(bits) = r.init.strip_prefix("fill 0x") {
             words.fill(u32::from_str_radix(bits, 16).unwrap());
         } else if r.init == "data" {
-            let data = data_words(t, r.contents.as_ref().expect("contents"), &inputs, &manifest.tables).unwrap();
+            let data = data_words(*t, r.contents.as_ref().expect("contents"), inputs, &manifest.tables).unwrap();
             assert_eq!(data.len(), words.len(), "{}: contents and size", r.name);
             words = data;
         }
@@ -97,7 +172,8 @@ fn run_on_wgpu(
     }
     let mut encoder = device.create_command_encoder(&Default::default());
     let mut seen: HashMap<&str, i64> = HashMap::new();
-    for pass in &variant.passes {
+    for (pass, inputs, t) in &plan.passes {
+        let mut inputs = (*inputs).clone();
         let module = manifest.modules.iter().find(|m| m.entry_point == pass.entry).expect("a module");
         let wgsl = module.wgsl.as_ref().unwrap_or_else(|| panic!("{} has no WGSL", pass.entry));
         let source =
@@ -111,7 +187,7 @@ fn run_on_wgpu(
         let index = seen.entry(&pass.entry).or_insert(0);
         inputs.names.insert("pass".into(), Value::Int(*index));
         *index += 1;
-        let push = module.push_constants.as_ref().map(|name| evaluate_struct(t, name, &inputs).unwrap());
+        let push = module.push_constants.as_ref().map(|name| evaluate_struct(*t, name, &inputs).unwrap());
         // Specialized as the manifest says (the Vulkan executor does the same).
         let specialization = specialization(manifest, module, push.as_deref().unwrap_or(&[]));
         let overrides: Vec<(&str, f64)> = specialization.iter().map(|(id, v)| (id.as_str(), *v)).collect();
@@ -151,7 +227,7 @@ fn run_on_wgpu(
         cpass.set_bind_group(0, &group, &[]);
         cpass.dispatch_workgroups(x.div_ceil(workgroup[0]), y.div_ceil(workgroup[1]), 1);
     }
-    let output = &buffers[variant.output.as_str()];
+    let output = &buffers[plan.output.as_str()];
     let readback = device.create_buffer(&wgpu::BufferDescriptor {
         label: Some("readback"),
         size: output.size(),
@@ -195,14 +271,26 @@ fn every_webgpu_technique_from_the_manifest_alone_on_wgpu_agrees_with_cpu_sim() 
             thickness: frame.thickness,
             frame_index: 0,
         };
-        for spec in RUNS {
-            let technique = Technique::parse(spec).unwrap();
+        let half = manifest.half_resolution.as_ref().expect("the manifest's half_resolution");
+        let ht: &'static dyn Registered = &aokit_shaders::halfres::settings::HALF_RESOLUTION;
+        let runs = RUNS.iter().map(|s| (*s, false)).chain(HALF_RUNS.iter().map(|s| (*s, true)));
+        for (spec, at_half) in runs {
+            let mut technique = Technique::parse(spec).unwrap();
             let registered = aokit_shaders::techniques::find(technique.name()).unwrap();
             let listed = manifest.techniques.iter().find(|t| t.name == technique.name()).unwrap();
             let values = technique.values();
             let variant = variant_of(listed, &values);
             let ins = inputs(&registered.rows(), &values, &camera).unwrap();
-            let on_wgpu = run_on_wgpu((&device, &queue), &manifest, (registered, variant), ins, &g.depth, &g.normals);
+            let on_wgpu = if at_half {
+                technique = technique.with_resolution(Resolution::half());
+                let halved = half_inputs(&ins).unwrap();
+                let transform = inputs(&ht.rows(), &ht.configure().values(), &camera).unwrap();
+                let plan = half_plan(half, (registered, variant), &halved, &ins, &transform);
+                run_on_wgpu((&device, &queue), &manifest, &plan, &g.depth, &g.normals)
+            } else {
+                run_on_wgpu((&device, &queue), &manifest, &full_plan(registered, variant, &ins), &g.depth, &g.normals)
+            };
+            let spec = if at_half { format!("{spec} (half resolution)") } else { spec.to_string() };
             // cpu-sim runs the Rust graph.
             let graph = technique.graph(&frame.desc()).unwrap();
             let cpu_inputs = CpuInputs {
