@@ -434,6 +434,13 @@ fn vbao_sd_corner_matches_the_closed_forms_with_and_without_layers() {
 /// more sectors than the slab.
 #[test]
 fn a_flagged_sample_takes_its_segments_from_the_layers() {
+    // N = 4 (the default) and N = 8 take different reads and sorts (spec vbao §8.2).
+    for layers in [4, 8] {
+        flagged_sample_with_layers(layers);
+    }
+}
+
+fn flagged_sample_with_layers(layers: u32) {
     use aokit_shaders::common::screen_space::view_pos;
     use aokit_shaders::gtao::main_pass::PixelSetup;
     use aokit_shaders::raysd::texel_ray_uv;
@@ -441,7 +448,8 @@ fn a_flagged_sample_takes_its_segments_from_the_layers() {
     use aokit_shaders::vbao::kernel::{Occupancy, interval_bits, own_slice, sample_bits};
     use aokit_shaders::vbaosd::SdLayers;
     let (_, frame) = common::builtin_frame("sponza", 160, 90, 16);
-    let settings = VbaoSettings { weighting: WEIGHT_COSINE_EXACT, ..Default::default() };
+    let mut settings = VbaoSettings { weighting: WEIGHT_COSINE_EXACT, ..Default::default() };
+    settings.sd.layers = layers;
     let params = settings.params(&frame.desc());
     let sd = settings.sd.frame(&frame.desc(), aokit_shaders::svao::Secondary::StochasticDepth).params;
     let view = frame.camera.view;
@@ -468,6 +476,7 @@ fn a_flagged_sample_takes_its_segments_from_the_layers() {
     let uv = texel_ray_uv(texel, &sd);
     let mips = vec![q.z; (view.size().x * view.size().y) as usize * 2];
     let n = sd.sd_layers as usize;
+    assert_eq!(n, layers as usize, "the SD map holds N layers");
     let normalized = |d: f32| (d - view.near) / (view.far - view.near);
     let map_with = |layers: &[f32]| {
         let mut map = vec![1.0f32; (sd.sd_size().x * sd.sd_size().y) as usize * n];
@@ -486,7 +495,7 @@ fn a_flagged_sample_takes_its_segments_from_the_layers() {
         let deep = bits(&map_with(&[q.z + 2.0 * t, q.z + 1.6 * t, q.z + 1.8 * t]));
         let want = interval_bits(&own, delta, at(q.z + 1.6 * t), v, side, rule)
             | interval_bits(&own, at(q.z + 1.8 * t), at(q.z + 2.0 * t), v, side, rule);
-        assert_eq!(deep, want, "side {side}: deep exit and hidden solid");
+        assert_eq!(deep, want, "N = {layers}, side {side}: deep exit and hidden solid");
         // A shallow exit: the slab of T.
         let shallow = bits(&map_with(&[q.z + 0.5 * t]));
         let slab = interval_bits(&own, delta, delta - v * t, v, side, rule);
@@ -495,7 +504,7 @@ fn a_flagged_sample_takes_its_segments_from_the_layers() {
         let none = bits(&map_with(&[]));
         assert_eq!(none, sample_bits::<f32>(delta, v, v, side, t, rule), "side {side}: no layer");
         eprintln!(
-            "side {side}: deep {deep:032b}, slab {slab:032b} ({} vs {} sectors)",
+            "N = {layers}, side {side}: deep {deep:032b}, slab {slab:032b} ({} vs {} sectors)",
             deep.count_ones(),
             slab.count_ones()
         );
