@@ -42,7 +42,7 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
     c += "int main(void) {\n";
     writeln!(
         c,
-        "    aokit_frame_inputs f = {{{}, {}, {}, {}, {}, {}, {}u, {}u, {}u, {}, {}, {}, {}u}};",
+        "    aokit_frame_inputs f = {{{}, {}, {}, {}, {}, {}, {}u, {}u, {}u, {}, {}, {}, {}u, 0u, {{0.0f, 0.0f, 0.0f}}, {{0.0f, 0.0f, 0.0f}}, {{0.0f, 0.0f, 0.0f}}, 0.0f, 0.0f, 0.0f}};",
         v(frame.eye),
         v(frame.target),
         v(frame.up),
@@ -131,6 +131,50 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
             )
             .unwrap();
             expected.push(format!("{what} {}", bytes.iter().map(|b| format!("{b:02x}")).collect::<String>()));
+        }
+    }
+    // The temporal accumulation's TemporalFrame, against `TemporalSettings::frame`, on the
+    // frame with a previous camera (has_previous 1) and without (0).
+    {
+        use aokit_shaders::technique::Registered;
+        use aokit_shaders::temporal::settings::{TEMPORAL, TemporalSettings};
+        let t: &'static dyn Registered = &TEMPORAL;
+        let listed = manifest.temporal.as_ref().expect("the manifest's temporal");
+        let previous = frame.previous.expect("the example frame has a previous camera");
+        writeln!(
+            c,
+            "    aokit_frame_inputs fp = f; fp.has_previous = 1u; fp.previous_fov_y = {}; fp.previous_near = {}; fp.previous_far = {};",
+            c_float(previous.fov_y),
+            c_float(previous.near),
+            c_float(previous.far)
+        )
+        .unwrap();
+        for (name, value) in [("eye", previous.eye), ("target", previous.target), ("up", previous.up)] {
+            for (i, x) in value.to_array().iter().enumerate() {
+                writeln!(c, "    fp.previous_{name}[{i}] = {};", c_float(*x)).unwrap();
+            }
+        }
+        for values in settings_tried(t) {
+            let mut configured = t.configure();
+            values.iter().for_each(|(k, val)| configured.set(k, val).unwrap());
+            let settings = configured.settings().downcast_ref::<TemporalSettings>().unwrap();
+            writeln!(c, "    {{\n        aokit_temporal_settings s = aokit_temporal_defaults();").unwrap();
+            for (key, value) in &values {
+                assert_eq!(listed.settings.iter().find(|s| s.key == *key).unwrap().kind, "number");
+                writeln!(c, "        s.{} = {};", key.replace('-', "_"), c_float(value.parse().unwrap())).unwrap();
+            }
+            let without = aokit_shaders::graph::FrameDesc { previous_camera: None, ..frame.frame_desc() };
+            for (inputs, desc) in [("fp", frame.frame_desc()), ("f", without)] {
+                let what = format!("temporal:{values:?}:{inputs}:TemporalFrame").replace(['"', ' '], "");
+                writeln!(
+                    c,
+                    "        {{ aokit_TemporalFrame out; memset(&out, 0, sizeof out); aokit_temporal_TemporalFrame(&s, &{inputs}, 0u, &out); dump(\"{what}\", &out, sizeof out); }}"
+                )
+                .unwrap();
+                let bytes = bytemuck::bytes_of(&settings.frame(&desc)).to_vec();
+                expected.push(format!("{what} {}", bytes.iter().map(|b| format!("{b:02x}")).collect::<String>()));
+            }
+            c += "    }\n";
         }
     }
     // Half resolution's HalfParams (its `half` from the halved frame), against `half_params`, on

@@ -270,6 +270,7 @@ fn every_webgpu_technique_from_the_manifest_alone_on_wgpu_agrees_with_cpu_sim() 
             exponent: frame.exponent,
             thickness: frame.thickness,
             frame_index: 0,
+            previous: None,
         };
         let half = manifest.half_resolution.as_ref().expect("the manifest's half_resolution");
         let ht: &'static dyn Registered = &aokit_shaders::halfres::settings::HALF_RESOLUTION;

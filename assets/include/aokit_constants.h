@@ -19,6 +19,11 @@ typedef struct aokit_frame_inputs {
     uint32_t g; /* guard band, pixels per side */
     float radius, exponent, thickness; /* AO radius and VAO thickness (world units), AO exponent */
     uint32_t frame; /* the frame's index in a sequence (0: a single frame) */
+    /* The previous frame's camera, for the temporal accumulation (same w, h, g): has_previous 0 on a first
+     * frame, after a cut or a resize (then the previous_* fields are unread). */
+    uint32_t has_previous;
+    float previous_eye[3], previous_target[3], previous_up[3];
+    float previous_fov_y, previous_near, previous_far;
 } aokit_frame_inputs;
 
 static inline int64_t aokit__div_ceil(int64_t a, int64_t b) { return a / b + (a % b != 0 && (a < 0) == (b < 0)); }
@@ -1020,6 +1025,53 @@ static inline void aokit_adapters_ImportParams(const aokit_adapters_settings *s,
     out->depth_convention = (uint32_t)((int64_t)s->depth_convention); /* index(`depth-convention`) */
     out->near = s->engine_near; /* `engine-near` */
     out->far = s->engine_far; /* `engine-far` */
+    out->_pad = (uint32_t)(INT64_C(0)); /* 0 */
+}
+
+/* temporal: TemporalFrame, the record of the temporal_blend and temporal_store modules */
+typedef struct aokit_temporal_settings {
+    float alpha; /* Weight α of the current frame in the exponential blend, (0, 1]: ≈ 1/α frames of memory (TemporalFrame.alpha) */
+    float depth_tolerance; /* Relative depth tolerance ε of the history test, (0, 1] (TemporalFrame.depth_tolerance; docs/temporal.md) */
+} aokit_temporal_settings;
+static inline aokit_temporal_settings aokit_temporal_defaults(void) { aokit_temporal_settings s = {0.1f, 0.05f}; return s; }
+/* ViewParams of temporal: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_temporal_ViewParams(const aokit_temporal_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_ViewParams *out) {
+    (void)s; (void)f; (void)pass;
+    out->res = aokit__vec2f((float)((int64_t)(f->w + 2u * f->g)), (float)((int64_t)(f->h + 2u * f->g))); /* vec2(W, H) */
+    out->tan_half_fov = aokit__vec2f((((((float)tan((double)(0.5f * f->fov_y)) * (float)((int64_t)(f->h + 2u * f->g))) / (float)((int64_t)f->h)) * (float)((int64_t)(f->w + 2u * f->g))) / (float)((int64_t)(f->h + 2u * f->g))), (((float)tan((double)(0.5f * f->fov_y)) * (float)((int64_t)(f->h + 2u * f->g))) / (float)((int64_t)f->h))); /* vec2(tan(0.5 * fov_y) * H / h * W / H, tan(0.5 * fov_y) * H / h) */
+    out->near = f->near_plane; /* near */
+    out->far = f->far_plane; /* far */
+    out->guard = (uint32_t)((int64_t)f->g); /* g */
+    out->_pad = (uint32_t)(INT64_C(0)); /* 0 */
+}
+/* Camera of temporal: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_temporal_Camera(const aokit_temporal_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_Camera *out) {
+    (void)s; (void)f; (void)pass;
+    out->world_to_view = aokit__inverse_rigid(aokit__look_at(aokit__vec3(f->eye), aokit__vec3(f->target), aokit__vec3(f->up))); /* inverse_rigid(look_at(eye, target, up)) */
+    out->view_to_world = aokit__look_at(aokit__vec3(f->eye), aokit__vec3(f->target), aokit__vec3(f->up)); /* look_at(eye, target, up) */
+    aokit_temporal_ViewParams(s, f, pass, &out->view);
+}
+/* TemporalFrame of temporal: `pass` is the pass's index among the graph's passes of its module (0 for records). */
+static inline void aokit_temporal_TemporalFrame(const aokit_temporal_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_TemporalFrame *out) {
+    (void)s; (void)f; (void)pass;
+    aokit_temporal_Camera(s, f, pass, &out->camera);
+    {
+        aokit_frame_inputs previous = *f;
+        if (f->has_previous) {
+            for (int i = 0; i < 3; i++) {
+                previous.eye[i] = f->previous_eye[i];
+                previous.target[i] = f->previous_target[i];
+                previous.up[i] = f->previous_up[i];
+            }
+            previous.fov_y = f->previous_fov_y;
+            previous.near_plane = f->previous_near;
+            previous.far_plane = f->previous_far;
+        }
+        aokit_temporal_Camera(s, &previous, pass, &out->previous);
+    }
+    out->alpha = s->alpha; /* `alpha` */
+    out->depth_tolerance = s->depth_tolerance; /* `depth-tolerance` */
+    out->history = (uint32_t)((int64_t)((f->has_previous != 0u))); /* u32(has_previous) */
     out->_pad = (uint32_t)(INT64_C(0)); /* 0 */
 }
 

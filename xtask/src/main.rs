@@ -103,6 +103,7 @@ fn build_spirv() -> Result<(), String> {
         tables: Vec::new(),
         adapters: None,
         half_resolution: None,
+        temporal: None,
     };
     for (entry, path) in &modules {
         let file = format!("{entry}.spv");

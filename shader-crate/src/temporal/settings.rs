@@ -4,6 +4,7 @@
 
 use super::TemporalFrame;
 use crate::graph::{Elem, Extent, FrameDesc, Graph, Init, Lifetime, Pass, Resource, Size, inputs, record};
+use crate::technique::{Constant, Declaration, Setting, Settings, single_layer};
 
 /// The accumulation's settings \[defaults\].
 #[derive(Copy, Clone, Debug, PartialEq)]
@@ -55,6 +56,70 @@ impl TemporalSettings {
         }
     }
 }
+
+impl Settings for TemporalSettings {
+    const ROWS: &'static [Setting<Self>] = &[
+        Setting::<Self>::number("alpha", 0.0, 1.0, |s| &mut s.alpha)
+            .help("Weight α of the current frame in the exponential blend, (0, 1]: ≈ 1/α frames of memory (TemporalFrame.alpha)"),
+        Setting::<Self>::number("depth-tolerance", 0.0, 1.0, |s| &mut s.depth_tolerance)
+            .help("Relative depth tolerance ε of the history test, (0, 1] (TemporalFrame.depth_tolerance; docs/temporal.md)"),
+    ];
+
+    fn check(&self) -> Result<(), String> {
+        TemporalSettings::validate(self)
+    }
+}
+
+/// The previous frame's camera names the expressions read (`assets/README.md`, "Temporal
+/// accumulation"): `(this frame's name, the previous frame's)`. `previous(Camera)` is the
+/// `Camera` rows evaluated with the second names in place of the first.
+pub const PREVIOUS_FRAME: [(&str, &str); 6] = [
+    ("eye", "previous_eye"),
+    ("target", "previous_target"),
+    ("up", "previous_up"),
+    ("fov_y", "previous_fov_y"),
+    ("near", "previous_near"),
+    ("far", "previous_far"),
+];
+
+/// How [`TemporalSettings::frame`] fills `TemporalFrame`, then the camera's rows.
+pub const CONSTANTS: &[Constant] = crate::join_constants![
+    &[
+        Constant::new("TemporalFrame.camera", "this frame's Camera (Camera and ViewParams rows)").expr("Camera"),
+        Constant::new(
+            "TemporalFrame.previous",
+            "the previous frame's Camera: the Camera rows with the previous frame's eye, target, up, fov_y, near, far \
+             (temporal.previous_frame); this frame's on a first frame, after a cut or a resize"
+        )
+        .expr("previous(Camera)"),
+        Constant::new("TemporalFrame.alpha", "`alpha` α [0.1]").expr("`alpha`"),
+        Constant::new("TemporalFrame.depth_tolerance", "`depth-tolerance` ε [0.05]").expr("`depth-tolerance`"),
+        Constant::new(
+            "TemporalFrame.history",
+            "1 when the history holds the previous frame (has_previous: a previous frame of the same target size), else 0"
+        )
+        .expr("u32(has_previous)"),
+        Constant::new("TemporalFrame._pad", "0").expr("0"),
+    ],
+    crate::common::camera::CONSTANTS,
+];
+
+/// The temporal accumulation as a declaration, for the manifest's settings and constants (never
+/// in the registry: it follows a technique's graph, [`accumulate`]; its own graph function
+/// refuses).
+pub static TEMPORAL: Declaration<TemporalSettings> = Declaration {
+    name: "temporal",
+    summary: "any technique's AO accumulated over frames: reprojected through depth, blended with the history",
+    keys: &["alpha", "depth-tolerance"],
+    defaults: TemporalSettings::default,
+    graph: |_, _| {
+        Err("the temporal accumulation follows a technique's graph (accumulate); it has none of its own".into())
+    },
+    second_layer: single_layer,
+    constants: CONSTANTS,
+    formulas: &[],
+    tables: &[],
+};
 
 /// The accumulated AO, the graph's output when the accumulation is on.
 pub const OUTPUT: &str = "temporal_ao";

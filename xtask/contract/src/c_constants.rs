@@ -224,6 +224,7 @@ impl Translator<'_> {
             "far" => ("f->far_plane", Ty::Real),
             "radius" | "exponent" | "thickness" => return Ok(C { code: format!("f->{token}"), ty: Ty::Real }),
             "frame" => ("(int64_t)f->frame", Ty::Int),
+            "has_previous" => ("(f->has_previous != 0u)", Ty::Bool),
             "pass" => ("(int64_t)pass", Ty::Int),
             _ => return Err(self.error(&format!("unknown name {token}"))),
         };
@@ -464,7 +465,18 @@ fn technique(t: &Source, manifest: &Manifest) -> Result<String, String> {
                 .find(|c| c.struct_name == name && c.field == field.name)
                 .ok_or_else(|| format!("{} {name}.{}: no constant", t.name, field.name))?;
             if manifest.structs.iter().any(|x| x.name == field.ty) {
-                if c.expr == format!("half({})", field.ty) {
+                if c.expr == format!("previous({})", field.ty) {
+                    // The previous frame's camera (`temporal.previous_frame`) when there is one.
+                    h += "    {\n        aokit_frame_inputs previous = *f;\n        if (f->has_previous) {\n";
+                    h += "            for (int i = 0; i < 3; i++) {\n";
+                    h += "                previous.eye[i] = f->previous_eye[i];\n";
+                    h += "                previous.target[i] = f->previous_target[i];\n";
+                    h += "                previous.up[i] = f->previous_up[i];\n            }\n";
+                    h += "            previous.fov_y = f->previous_fov_y;\n";
+                    h += "            previous.near_plane = f->previous_near;\n";
+                    h += "            previous.far_plane = f->previous_far;\n        }\n";
+                    h += &format!("        {p}_{}(s, &previous, pass, &out->{});\n    }}\n", field.ty, field.name);
+                } else if c.expr == format!("half({})", field.ty) {
                     // The half-resolution frame (`half_resolution.frame`): w, h, g halved.
                     h += &format!(
                         "    {{ aokit_frame_inputs half = *f; half.w /= 2u; half.h /= 2u; half.g /= 2u; {p}_{}(s, &half, pass, &out->{}); }}\n",
@@ -504,7 +516,11 @@ impl Manifest {
         h += "    float near_plane, far_plane; /* view depths, world units */\n";
         h += "    uint32_t w, h; /* inner image, pixels */\n    uint32_t g; /* guard band, pixels per side */\n";
         h += "    float radius, exponent, thickness; /* AO radius and VAO thickness (world units), AO exponent */\n";
-        h += "    uint32_t frame; /* the frame's index in a sequence (0: a single frame) */\n} aokit_frame_inputs;\n\n";
+        h += "    uint32_t frame; /* the frame's index in a sequence (0: a single frame) */\n";
+        h += "    /* The previous frame's camera, for the temporal accumulation (same w, h, g): has_previous 0 on a first\n";
+        h += "     * frame, after a cut or a resize (then the previous_* fields are unread). */\n";
+        h += "    uint32_t has_previous;\n    float previous_eye[3], previous_target[3], previous_up[3];\n";
+        h += "    float previous_fov_y, previous_near, previous_far;\n} aokit_frame_inputs;\n\n";
         h += HELPERS;
         h += "\n";
         for t in &self.techniques {
@@ -515,6 +531,12 @@ impl Manifest {
             let summary =
                 "ImportParams, the push constants of the import_depth, import_normals and export_ao_* modules";
             let source = Source { name: "adapters", summary, settings: &a.settings, constants: &a.constants };
+            h += &technique(&source, self)?;
+        }
+        if let Some(temporal) = &self.temporal {
+            let summary = "TemporalFrame, the record of the temporal_blend and temporal_store modules";
+            let source =
+                Source { name: "temporal", summary, settings: &temporal.settings, constants: &temporal.constants };
             h += &technique(&source, self)?;
         }
         if let Some(half) = &self.half_resolution {

@@ -27,6 +27,22 @@ pub struct FrameInputs {
     pub exponent: f32,
     pub thickness: f32,
     pub frame_index: u32,
+    /// The previous frame's camera (same image sizes), for the temporal accumulation; `None` on
+    /// a first frame.
+    pub previous: Option<PreviousView>,
+}
+
+/// The previous frame's camera as an engine knows it (the names `previous_eye`, … of
+/// `assets/README.md`, "Temporal accumulation").
+#[derive(Copy, Clone, Debug)]
+pub struct PreviousView {
+    pub eye: Vec3,
+    pub target: Vec3,
+    pub up: Vec3,
+    /// Radians.
+    pub fov_y: f32,
+    pub near: f32,
+    pub far: f32,
 }
 
 impl FrameInputs {
@@ -47,6 +63,7 @@ impl FrameInputs {
                 exponent: 2.0,
                 thickness: 0.0,
                 frame_index: 0,
+                previous: None,
             },
             FrameInputs {
                 eye: Vec3::new(3.7, -2.1, 0.4),
@@ -61,6 +78,14 @@ impl FrameInputs {
                 exponent: 1.7,
                 thickness: 0.02,
                 frame_index: 5,
+                previous: Some(PreviousView {
+                    eye: Vec3::new(3.9, -2.0, 0.6),
+                    target: Vec3::new(-0.8, 0.4, -7.0),
+                    up: Vec3::new(0.12, 1.0, 0.04),
+                    fov_y: 0.85,
+                    near: 0.06,
+                    far: 41.0,
+                }),
             },
         ]
     }
@@ -69,8 +94,12 @@ impl FrameInputs {
     pub fn frame_desc(&self) -> FrameDesc {
         let camera =
             Camera::look_at(self.eye, self.target, self.up, self.fov_y, self.inner, self.guard, self.near, self.far);
+        let previous = self
+            .previous
+            .map(|p| Camera::look_at(p.eye, p.target, p.up, p.fov_y, self.inner, self.guard, p.near, p.far));
         FrameDesc {
             frame_index: self.frame_index,
+            previous_camera: previous,
             ..FrameDesc::new(camera, self.radius, self.exponent, self.thickness)
         }
     }
@@ -79,6 +108,14 @@ impl FrameInputs {
     fn names(&self) -> Vec<(&'static str, Value)> {
         let v = |v: Vec3| Value::Vector(v.to_array().to_vec());
         let (w, h, g) = (self.inner.x as i64, self.inner.y as i64, self.guard as i64);
+        let previous = self.previous.unwrap_or(PreviousView {
+            eye: self.eye,
+            target: self.target,
+            up: self.up,
+            fov_y: self.fov_y,
+            near: self.near,
+            far: self.far,
+        });
         vec![
             ("W", Value::Int(w + 2 * g)),
             ("H", Value::Int(h + 2 * g)),
@@ -95,6 +132,14 @@ impl FrameInputs {
             ("exponent", Value::Real(self.exponent)),
             ("thickness", Value::Real(self.thickness)),
             ("frame", Value::Int(self.frame_index as i64)),
+            // The previous frame's camera; this frame's on a first frame (`has_previous` false).
+            ("previous_eye", v(previous.eye)),
+            ("previous_target", v(previous.target)),
+            ("previous_up", v(previous.up)),
+            ("previous_fov_y", Value::Real(previous.fov_y)),
+            ("previous_near", Value::Real(previous.near)),
+            ("previous_far", Value::Real(previous.far)),
+            ("has_previous", Value::Bool(self.previous.is_some())),
         ]
     }
 }
@@ -169,6 +214,17 @@ pub fn half_inputs(inputs: &Inputs) -> Result<Inputs, String> {
     Ok(half)
 }
 
+/// `inputs` with the previous frame's camera in place of this frame's (`temporal.previous_frame`,
+/// [`aokit_shaders::temporal::settings::PREVIOUS_FRAME`]): `eye` takes `previous_eye`'s value, ….
+pub fn previous_inputs(inputs: &Inputs) -> Result<Inputs, String> {
+    let mut previous = inputs.clone();
+    for (name, from) in aokit_shaders::temporal::settings::PREVIOUS_FRAME {
+        let value = inputs.names.get(from).ok_or_else(|| format!("no input {from}"))?.clone();
+        previous.names.insert(name.into(), value);
+    }
+    Ok(previous)
+}
+
 fn write_struct(
     t: &dyn Registered,
     layout: &StructLayout,
@@ -189,8 +245,10 @@ fn write_struct(
                 write_struct(t, nested, layouts, inputs, bytes)?;
             } else if text == format!("half({})", f.ty) {
                 write_struct(t, nested, layouts, &half_inputs(inputs).map_err(|e| format!("{path}: {e}"))?, bytes)?;
+            } else if text == format!("previous({})", f.ty) {
+                write_struct(t, nested, layouts, &previous_inputs(inputs).map_err(|e| format!("{path}: {e}"))?, bytes)?;
             } else {
-                return Err(format!("{path}: a {0} field's expression is `{0}` or `half({0})`", f.ty));
+                return Err(format!("{path}: a {0} field's expression is `{0}`, `half({0})` or `previous({0})`", f.ty));
             }
             continue;
         }

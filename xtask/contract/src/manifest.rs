@@ -35,6 +35,30 @@ pub struct Manifest {
     /// How any technique's published graph runs at half resolution.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub half_resolution: Option<HalfResolutionManifest>,
+    /// How any technique's published graph accumulates its AO over frames.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub temporal: Option<TemporalManifest>,
+}
+
+/// The temporal accumulation appended to any published graph (`aokit_shaders::temporal`,
+/// `docs/temporal.md`): two passes after the variant's, a record and the history.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct TemporalManifest {
+    pub doc: String,
+    /// Its own settings (`TemporalFrame.alpha`, `TemporalFrame.depth_tolerance`).
+    pub settings: Vec<SettingManifest>,
+    /// `(name, previous frame's name)`: `previous(Camera)` evaluates the `Camera` rows with the
+    /// second names' values in place of the first.
+    pub previous_frame: Vec<(String, String)>,
+    /// Added to the variant's resources (the record, the output and the persistent history).
+    pub resources: Vec<ResourceManifest>,
+    /// After the variant's passes; [`HalfResolutionManifest::OUTPUT_SLOT`] stands for the
+    /// variant's `output`.
+    pub after: Vec<PassManifest>,
+    /// The accumulated AO (f32 per full-target texel).
+    pub output: String,
+    /// `TemporalFrame` (the record of `after`'s passes) and the structs inside it.
+    pub constants: Vec<ConstantManifest>,
 }
 
 /// Half resolution as a transform of any published variant (`aokit_shaders::halfres`, spec
@@ -648,6 +672,7 @@ impl Manifest {
         self.tables = tables()?;
         self.adapters = Some(adapters(&self.structs)?);
         self.half_resolution = Some(half_resolution(&self.structs)?);
+        self.temporal = Some(temporal(&self.structs)?);
         for m in &mut self.modules {
             let kernel = aokit_shaders::kernel::Kernel::find(&m.entry_point)
                 .ok_or_else(|| format!("{}: no #[kernel] entry point of that name", m.entry_point))?;
@@ -945,23 +970,7 @@ fn settings_of(t: &'static dyn aokit_shaders::technique::Registered) -> Vec<Sett
 fn adapters(structs: &[StructManifest]) -> Result<AdaptersManifest, String> {
     use aokit_shaders::adapters::settings::{ADAPTERS, MODULES};
     let t: &'static dyn aokit_shaders::technique::Registered = &ADAPTERS;
-    let mut constants = Vec::new();
-    for name in ["ViewParams", "ImportParams"] {
-        let s = structs.iter().find(|s| s.name == name).ok_or_else(|| format!("no struct {name}"))?;
-        for f in &s.fields {
-            let path = format!("{name}.{}", f.name);
-            let row =
-                t.constants().iter().find(|c| c.field == path).ok_or_else(|| format!("adapters: no row {path}"))?;
-            constants.push(ConstantManifest {
-                struct_name: name.into(),
-                field: f.name.clone(),
-                offset: f.offset,
-                ty: f.ty.clone(),
-                expr: crate::constants::expression(t, row.expr),
-                doc: row.formula.into(),
-            });
-        }
-    }
+    let constants = constants_of(t, structs, &["ViewParams", "ImportParams"])?;
     let modules = MODULES
         .iter()
         .map(|m| AdapterModuleManifest {
@@ -977,25 +986,22 @@ fn adapters(structs: &[StructManifest]) -> Result<AdaptersManifest, String> {
 /// The half-resolution transform: its settings and constants from
 /// `aokit_shaders::halfres::settings::HALF_RESOLUTION`, its resources and passes from
 /// `at_resolution` around `gtao`'s graph at the defaults (the passes it adds, whatever it wraps).
+/// The rows of `t` for every field of `names` (in order), as published.
 #[cfg(feature = "reflect")]
-pub fn half_resolution(structs: &[StructManifest]) -> Result<HalfResolutionManifest, String> {
-    use aokit_shaders::graph::inputs;
-    use aokit_shaders::halfres::settings::{
-        HALF_DEPTH, HALF_FRAME, HALF_NORMALS, HALF_RESOLUTION, OUTPUT, Resolution, at_resolution,
-    };
-    let t: &'static dyn aokit_shaders::technique::Registered = &HALF_RESOLUTION;
+fn constants_of(
+    t: &'static dyn aokit_shaders::technique::Registered,
+    structs: &[StructManifest],
+    names: &[&str],
+) -> Result<Vec<ConstantManifest>, String> {
     let mut constants = Vec::new();
-    for name in ["ViewParams", "HalfParams"] {
-        let s = structs.iter().find(|s| s.name == name).ok_or_else(|| format!("no struct {name}"))?;
+    for name in names {
+        let s = structs.iter().find(|s| s.name == *name).ok_or_else(|| format!("no struct {name}"))?;
         for f in &s.fields {
             let path = format!("{name}.{}", f.name);
-            let row = t
-                .constants()
-                .iter()
-                .find(|c| c.field == path)
-                .ok_or_else(|| format!("half resolution: no row {path}"))?;
+            let row =
+                t.constants().iter().find(|c| c.field == path).ok_or_else(|| format!("{}: no row {path}", t.name()))?;
             constants.push(ConstantManifest {
-                struct_name: name.into(),
+                struct_name: s.name.clone(),
                 field: f.name.clone(),
                 offset: f.offset,
                 ty: f.ty.clone(),
@@ -1004,6 +1010,56 @@ pub fn half_resolution(structs: &[StructManifest]) -> Result<HalfResolutionManif
             });
         }
     }
+    Ok(constants)
+}
+
+/// The temporal accumulation: its settings and constants from
+/// `aokit_shaders::temporal::settings::TEMPORAL`, its resources and passes from `accumulate`
+/// after `gtao`'s graph at the defaults (the ones it adds, whatever it follows).
+#[cfg(feature = "reflect")]
+pub fn temporal(structs: &[StructManifest]) -> Result<TemporalManifest, String> {
+    use aokit_shaders::temporal::settings::{
+        HISTORY_AO, HISTORY_DEPTH, OUTPUT, PREVIOUS_FRAME, RECORD, TEMPORAL, TemporalSettings, accumulate,
+    };
+    let t: &'static dyn aokit_shaders::technique::Registered = &TEMPORAL;
+    let constants = constants_of(t, structs, &["ViewParams", "Camera", "TemporalFrame"])?;
+    let wrapped: &'static dyn aokit_shaders::technique::Registered = &aokit_shaders::gtao::settings::GTAO;
+    let mut frame = reference_frame(aokit_shaders::glam::UVec2::new(1920, 1080), 64);
+    frame.temporal = Some(TemporalSettings::default());
+    let c = wrapped.configure();
+    let inner = c.graph(&frame)?;
+    let (inner_output, inner_passes) = (inner.output, inner.passes.len());
+    let published = crate::graphs::publish(wrapped, &accumulate(inner, &frame)?)?;
+    let ours = [RECORD, OUTPUT, HISTORY_AO, HISTORY_DEPTH];
+    let resources = published.resources.iter().filter(|r| ours.contains(&r.name.as_str())).cloned().collect();
+    let mut after: Vec<PassManifest> = published.passes[inner_passes..].to_vec();
+    for b in after.iter_mut().flat_map(|p| &mut p.bindings) {
+        if b.1 == inner_output {
+            b.1 = HalfResolutionManifest::OUTPUT_SLOT.into();
+        }
+    }
+    Ok(TemporalManifest {
+        doc: "any technique's variant followed by the temporal accumulation (docs/temporal.md): `after` appended \
+              (its first pass with a barrier before it), `resources` added (`persistent` ones kept across frames, \
+              filled once), the AO read from `output`"
+            .into(),
+        settings: settings_of(t).into_iter().map(|s| SettingManifest { flag: None, ..s }).collect(),
+        previous_frame: PREVIOUS_FRAME.iter().map(|(n, p)| (n.to_string(), p.to_string())).collect(),
+        resources,
+        after,
+        output: OUTPUT.into(),
+        constants,
+    })
+}
+
+#[cfg(feature = "reflect")]
+pub fn half_resolution(structs: &[StructManifest]) -> Result<HalfResolutionManifest, String> {
+    use aokit_shaders::graph::inputs;
+    use aokit_shaders::halfres::settings::{
+        HALF_DEPTH, HALF_FRAME, HALF_NORMALS, HALF_RESOLUTION, OUTPUT, Resolution, at_resolution,
+    };
+    let t: &'static dyn aokit_shaders::technique::Registered = &HALF_RESOLUTION;
+    let constants = constants_of(t, structs, &["ViewParams", "HalfParams"])?;
     let wrapped: &'static dyn aokit_shaders::technique::Registered = &aokit_shaders::gtao::settings::GTAO;
     let frame = reference_frame(aokit_shaders::glam::UVec2::new(1920, 1080), 64);
     let c = wrapped.configure();

@@ -6,12 +6,15 @@
 //! dispatch, and its table contents give the data words bit for bit. Derived independently:
 //! expressions through `aokit_contract::expr`, tables from their declarations.
 
-use aokit_contract::constants::{FrameInputs, inputs};
-use aokit_contract::expr::{Value, eval};
+use aokit_contract::constants::{FrameInputs, evaluate_struct, half_inputs, inputs, push_struct, record_struct};
+use aokit_contract::expr::{Inputs, Value, eval};
 use aokit_contract::graphs::{matching, variants};
 use aokit_contract::manifest::constants::settings_tried;
-use aokit_contract::manifest::tables;
-use aokit_shaders::graph::Init;
+use aokit_contract::manifest::{
+    HalfResolutionManifest, Manifest, PassManifest, ResourceManifest, half_resolution, reference_frame, tables,
+};
+use aokit_shaders::graph::{Graph, Init};
+use aokit_shaders::technique::Registered;
 use aokit_shaders::techniques::TECHNIQUES;
 
 fn int(text: &str, inputs: &aokit_contract::expr::Inputs) -> Result<i64, String> {
@@ -129,42 +132,148 @@ fn published_graphs_are_the_declarations_at_every_tried_setting() {
     assert!(checked > 1000 && words > 0, "{checked} checked, {words} words");
 }
 
+/// What a published transform says a graph is: its resources (with the inputs their sizes are
+/// evaluated with) and passes (bindings already renamed, the inputs of their dispatches, whether
+/// a barrier comes first, the declaration and inputs of their constants).
+struct Expected<'a> {
+    resources: Vec<(&'a ResourceManifest, &'a Inputs)>,
+    passes: Vec<ExpectedPass<'a>>,
+    output: String,
+}
+
+struct ExpectedPass<'a> {
+    pass: PassManifest,
+    sizes: &'a Inputs,
+    barrier: bool,
+    owner: &'static dyn Registered,
+    constants: &'a Inputs,
+}
+
+/// The differences between `graph` (built by the Rust transform) and `expected`: resource names
+/// and sizes, passes, bindings, dispatches, barriers, the output, and every push-constant block
+/// and record bit for bit. Returns how many structs matched.
+fn compare(graph: &Graph, expected: &Expected, failures: &mut Vec<String>, fail: &dyn Fn(String) -> String) -> usize {
+    let view = graph.view;
+    let names: Vec<_> = graph.resources.iter().map(|r| r.name).collect();
+    let listed: Vec<_> = expected.resources.iter().map(|(r, _)| r.name.as_str()).collect();
+    if names != listed {
+        failures.push(fail(format!("resources {listed:?}, the transform's {names:?}")));
+        return 0;
+    }
+    for ((m, ins), r) in expected.resources.iter().zip(&graph.resources) {
+        if int(&m.size, ins) != Ok(r.len(&view) as i64) {
+            failures.push(fail(format!("{} size '{}', allocated {}", r.name, m.size, r.len(&view))));
+        }
+    }
+    if graph.output != expected.output {
+        failures.push(fail(format!("output {}, the transform's {}", expected.output, graph.output)));
+    }
+    let entries: Vec<_> = graph.passes.iter().map(|p| (p.label, p.entry())).collect();
+    let listed: Vec<_> = expected.passes.iter().map(|e| (e.pass.label.as_str(), e.pass.entry.as_str())).collect();
+    if entries != listed {
+        failures.push(fail(format!("passes {listed:?}, the transform's {entries:?}")));
+        return 0;
+    }
+    let barriers = graph.barriers();
+    let mut structs = 0;
+    for (i, (e, p)) in expected.passes.iter().zip(&graph.passes).enumerate() {
+        let bindings: Vec<_> = p.bindings.iter().map(|b| (b.slot, b.resource.to_string())).collect();
+        let listed: Vec<_> = e.pass.bindings.iter().map(|b| (b.0, b.1.clone())).collect();
+        if bindings != listed {
+            failures.push(fail(format!("{} bindings {listed:?}, the transform's {bindings:?}", p.label)));
+        }
+        let inv = p.invocations(&view);
+        let got = (int(&e.pass.dispatch[0], e.sizes), int(&e.pass.dispatch[1], e.sizes));
+        if got != (Ok(inv.x as i64), Ok(inv.y as i64)) {
+            failures.push(fail(format!("{} dispatch {:?}, the transform's {inv}", p.label, e.pass.dispatch)));
+        }
+        if barriers[i] != e.barrier {
+            failures.push(fail(format!("{} barrier {}, the transform's {}", p.label, e.barrier, barriers[i])));
+        }
+        let index = graph.passes[..i].iter().filter(|q| q.entry() == p.entry()).count();
+        let mut ins = e.constants.clone();
+        ins.names.insert("pass".into(), Value::Int(index as i64));
+        let mut blocks: Vec<(&str, &[u8])> = Vec::new();
+        if let Some(name) = push_struct(p) {
+            blocks.push((name, &p.push_constants));
+        }
+        for b in &p.bindings {
+            let Some(Init::Data(words)) = graph.resource(b.resource).map(|r| &r.init) else { continue };
+            if let Some(name) = record_struct(p, b.slot) {
+                blocks.push((name, bytemuck::cast_slice(words)));
+            }
+        }
+        for (name, built) in blocks {
+            match evaluate_struct(e.owner, name, &ins) {
+                Ok(ours) if built.get(..ours.len()) == Some(&ours[..]) => structs += 1,
+                Ok(ours) => {
+                    let word = |b: &[u8], at: usize| b.get(at..at + 4).map(|w| w.to_vec());
+                    let at = (0..ours.len()).step_by(4).find(|&at| word(&ours, at) != word(built, at));
+                    let at = at.unwrap_or(ours.len());
+                    failures.push(fail(format!(
+                        "{} {name}: byte {at}: expressions {:?}, built {:?}",
+                        p.label,
+                        word(&ours, at),
+                        word(built, at)
+                    )));
+                }
+                Err(err) => failures.push(fail(format!("{} {name}: {err}", p.label))),
+            }
+        }
+    }
+    structs
+}
+
+/// `pass` with its bindings of the variant's output (`<output>`) and of `renamed`'s inputs
+/// bound to what they stand for.
+fn bound(pass: &PassManifest, output: &str, renamed: &[(String, String)]) -> PassManifest {
+    let mut pass = pass.clone();
+    for b in &mut pass.bindings {
+        if b.1 == HalfResolutionManifest::OUTPUT_SLOT {
+            b.1 = output.into();
+        } else if let Some((_, to)) = renamed.iter().find(|(from, _)| *from == b.1) {
+            b.1 = to.clone();
+        }
+    }
+    pass
+}
+
+/// The technique's tried settings with the transform's defaults, then its defaults with each of
+/// the transform's tried settings.
+fn cases(t: &'static dyn Registered, transform: &'static dyn Registered) -> Vec<(Settings, Settings)> {
+    let own = settings_tried(t);
+    let theirs = settings_tried(transform);
+    own.iter()
+        .map(|v| (v.clone(), theirs[0].clone()))
+        .chain(theirs.iter().skip(1).map(|h| (own[0].clone(), h.clone())))
+        .collect()
+}
+
+type Settings = Vec<(&'static str, String)>;
+
 /// The manifest's half-resolution transform (`half_resolution`) applied to every technique's
 /// published variant is the graph `at_resolution` builds, at the technique's tried settings and
-/// the transform's, on two even frames: resources and their sizes, passes, bindings, dispatches
-/// and barriers, and every push-constant block and record bit for bit — the variant's evaluated
-/// with the transform's `frame` names, `HalfParams` from its own rows. A variant reading an input
-/// the transform refuses must be refused by `at_resolution` too.
+/// the transform's, on two even frames ([`compare`]) — the variant's expressions evaluated with
+/// the transform's `frame` names, `HalfParams` from its own rows. A variant reading an input the
+/// transform refuses must be refused by `at_resolution` too.
 #[test]
 fn half_resolution_transform_is_at_resolution_for_every_variant() {
-    use aokit_contract::constants::{FrameInputs, evaluate_struct, half_inputs, push_struct, record_struct};
-    use aokit_contract::manifest::{HalfResolutionManifest, Manifest, half_resolution};
     use aokit_shaders::halfres::settings::{HALF_RESOLUTION, HalfSettings, Resolution, at_resolution};
-    use aokit_shaders::technique::Registered;
     let committed = Manifest::committed();
     let half = half_resolution(&committed.structs).unwrap();
     assert_eq!(Some(&half), committed.half_resolution.as_ref(), "the committed half_resolution section is stale");
     let ht: &'static dyn Registered = &HALF_RESOLUTION;
     // Both example frames with an even target and guard band (the second one's are odd).
     let frames = FrameInputs::examples().map(|f| FrameInputs {
-        inner: aokit_shaders::glam::UVec2::new(f.inner.x & !1, f.inner.y & !1) + (f.inner & 1) * 2,
+        inner: f.inner + (f.inner & 1),
         guard: f.guard + (f.guard & 1),
         ..f
     });
     let (mut graphs, mut structs, mut refused) = (0, 0, 0);
     let mut failures = Vec::new();
     for &t in TECHNIQUES {
-        let (_, published) =
-            variants(t, &aokit_contract::manifest::reference_frame(frames[0].inner, frames[0].guard)).unwrap();
-        // The technique's tried settings with the default transform, then its defaults with each
-        // of the transform's tried settings.
-        let own = settings_tried(t);
-        let transform = settings_tried(ht);
-        let cases = own
-            .iter()
-            .map(|v| (v.clone(), transform[0].clone()))
-            .chain(transform.iter().skip(1).map(|h| (own[0].clone(), h.clone())));
-        for (values, half_values) in cases {
+        let (_, published) = variants(t, &reference_frame(frames[0].inner, frames[0].guard)).unwrap();
+        for (values, half_values) in cases(t, ht) {
             let mut c = t.configure();
             values.iter().for_each(|(k, v)| c.set(k, v).unwrap());
             let mut hc = ht.configure();
@@ -193,99 +302,36 @@ fn half_resolution_transform_is_at_resolution_for_every_variant() {
                         continue;
                     }
                 };
-                let full = aokit_contract::constants::inputs(&t.rows(), &values, frame).unwrap();
+                let full = inputs(&t.rows(), &values, frame).unwrap();
                 let halved = half_inputs(&full).unwrap();
-                let transform_inputs = aokit_contract::constants::inputs(&ht.rows(), &half_values, frame).unwrap();
-                let view = graph.view;
-                // Resources: the variant's (half frame), then the transform's (full frame).
-                let expected: Vec<_> = variant
-                    .resources
-                    .iter()
-                    .map(|r| (r, &halved))
-                    .chain(half.resources.iter().map(|r| (r, &full)))
-                    .collect();
-                let names: Vec<_> = graph.resources.iter().map(|r| r.name).collect();
-                let listed: Vec<_> = expected.iter().map(|(r, _)| r.name.as_str()).collect();
-                if names != listed {
-                    failures.push(fail(format!("resources {listed:?}, at_resolution's {names:?}")));
-                    continue;
-                }
-                for ((m, ins), r) in expected.iter().zip(&graph.resources) {
-                    if int(&m.size, ins) != Ok(r.len(&view) as i64) {
-                        failures.push(fail(format!("{} size '{}', allocated {}", r.name, m.size, r.len(&view))));
-                    }
-                }
-                // Passes: before, the variant's with its inputs renamed, after.
-                let rename = |name: &str, wrapped: bool| {
-                    if name == HalfResolutionManifest::OUTPUT_SLOT {
-                        return variant.output.clone();
-                    }
-                    let renamed = half.renamed_inputs.iter().find(|(from, _)| wrapped && from == name);
-                    renamed.map_or(name.to_string(), |(_, to)| to.clone())
+                let transform = inputs(&ht.rows(), &half_values, frame).unwrap();
+                // Before, the variant's passes with its inputs renamed (the first with a
+                // barrier), after.
+                let ours = |p: &PassManifest| ExpectedPass {
+                    pass: bound(p, &variant.output, &[]),
+                    sizes: &full,
+                    barrier: p.barrier_before,
+                    owner: ht,
+                    constants: &transform,
                 };
-                let n = variant.passes.len();
-                let expected: Vec<_> = half
-                    .before
-                    .iter()
-                    .map(|p| (p, &full, p.barrier_before))
-                    .chain(variant.passes.iter().enumerate().map(|(i, p)| (p, &halved, i == 0 || p.barrier_before)))
-                    .chain(half.after.iter().map(|p| (p, &full, p.barrier_before)))
-                    .collect();
-                let entries: Vec<_> = graph.passes.iter().map(|p| (p.label, p.entry())).collect();
-                let listed: Vec<_> = expected.iter().map(|(p, _, _)| (p.label.as_str(), p.entry.as_str())).collect();
-                if entries != listed || n + 2 != graph.passes.len() {
-                    failures.push(fail(format!("passes {listed:?}, at_resolution's {entries:?}")));
-                    continue;
-                }
-                let barriers = graph.barriers();
-                for (i, ((m, ins, barrier), p)) in expected.iter().zip(&graph.passes).enumerate() {
-                    let wrapped = i > 0 && i <= n;
-                    let bindings: Vec<_> = p.bindings.iter().map(|b| (b.slot, b.resource.to_string())).collect();
-                    let listed: Vec<_> = m.bindings.iter().map(|b| (b.0, rename(&b.1, wrapped))).collect();
-                    if bindings != listed {
-                        failures.push(fail(format!("{} bindings {listed:?}, at_resolution's {bindings:?}", p.label)));
-                    }
-                    let inv = p.invocations(&view);
-                    if (int(&m.dispatch[0], ins), int(&m.dispatch[1], ins)) != (Ok(inv.x as i64), Ok(inv.y as i64)) {
-                        failures.push(fail(format!("{} dispatch {:?}, at_resolution's {inv}", p.label, m.dispatch)));
-                    }
-                    if barriers[i] != *barrier {
-                        failures.push(fail(format!("{} barrier {barrier}, at_resolution's {}", p.label, barriers[i])));
-                    }
-                    // Constants: HalfParams from the transform's rows, the variant's from its own
-                    // with the half frame's names.
-                    let index = graph.passes[..i].iter().filter(|q| q.entry() == p.entry()).count();
-                    let mut ins = if wrapped { halved.clone() } else { transform_inputs.clone() };
-                    ins.names.insert("pass".into(), aokit_contract::expr::Value::Int(index as i64));
-                    let owner: &dyn Registered = if wrapped { t } else { ht };
-                    let mut blocks: Vec<(&str, &[u8])> = Vec::new();
-                    if let Some(name) = push_struct(p) {
-                        blocks.push((name, &p.push_constants));
-                    }
-                    for b in &p.bindings {
-                        let Some(Init::Data(words)) = graph.resource(b.resource).map(|r| &r.init) else { continue };
-                        if let Some(name) = record_struct(p, b.slot) {
-                            blocks.push((name, bytemuck::cast_slice(words)));
-                        }
-                    }
-                    for (name, built) in blocks {
-                        match evaluate_struct(owner, name, &ins) {
-                            Ok(ours) if built.get(..ours.len()) == Some(&ours[..]) => structs += 1,
-                            Ok(ours) => {
-                                let word = |b: &[u8], at: usize| b.get(at..at + 4).map(|w| w.to_vec());
-                                let at = (0..ours.len()).step_by(4).find(|&at| word(&ours, at) != word(built, at));
-                                let at = at.unwrap_or(ours.len());
-                                failures.push(fail(format!(
-                                    "{} {name}: byte {at}: expressions {:?}, built {:?}",
-                                    p.label,
-                                    word(&ours, at),
-                                    word(built, at)
-                                )));
-                            }
-                            Err(e) => failures.push(fail(format!("{} {name}: {e}", p.label))),
-                        }
-                    }
-                }
+                let wrapped = variant.passes.iter().enumerate().map(|(i, p)| ExpectedPass {
+                    pass: bound(p, &variant.output, &half.renamed_inputs),
+                    sizes: &halved,
+                    barrier: i == 0 || p.barrier_before,
+                    owner: t,
+                    constants: &halved,
+                });
+                let expected = Expected {
+                    resources: variant
+                        .resources
+                        .iter()
+                        .map(|r| (r, &halved))
+                        .chain(half.resources.iter().map(|r| (r, &full)))
+                        .collect(),
+                    passes: half.before.iter().map(ours).chain(wrapped).chain(half.after.iter().map(ours)).collect(),
+                    output: half.output.clone(),
+                };
+                structs += compare(&graph, &expected, &mut failures, &fail);
                 graphs += 1;
             }
         }
@@ -293,4 +339,69 @@ fn half_resolution_transform_is_at_resolution_for_every_variant() {
     eprintln!("{graphs} half-resolution graphs, {structs} structs, {refused} refused");
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures[..failures.len().min(20)].join("\n"));
     assert!(graphs > 100 && structs > graphs && refused > 0, "{graphs} graphs, {structs} structs, {refused} refused");
+}
+
+/// The manifest's temporal accumulation (`temporal`) appended to every technique's published
+/// variant is the graph `accumulate` builds, at the technique's tried settings and the
+/// accumulation's, on two frames — one with a previous camera, one without ([`compare`]):
+/// `TemporalFrame` from the accumulation's rows, `previous(Camera)` with the previous frame's
+/// names.
+#[test]
+fn temporal_accumulation_is_accumulate_for_every_variant() {
+    use aokit_shaders::temporal::settings::{TEMPORAL, TemporalSettings, accumulate};
+    let committed = Manifest::committed();
+    let temporal = aokit_contract::manifest::temporal(&committed.structs).unwrap();
+    assert_eq!(Some(&temporal), committed.temporal.as_ref(), "the committed temporal section is stale");
+    let tt: &'static dyn Registered = &TEMPORAL;
+    let frames = FrameInputs::examples();
+    assert!(frames[0].previous.is_none() && frames[1].previous.is_some(), "a first frame and a later one");
+    let (mut graphs, mut structs) = (0, 0);
+    let mut failures = Vec::new();
+    for &t in TECHNIQUES {
+        let (_, published) = variants(t, &reference_frame(frames[0].inner, frames[0].guard)).unwrap();
+        for (values, temporal_values) in cases(t, tt) {
+            let mut c = t.configure();
+            values.iter().for_each(|(k, v)| c.set(k, v).unwrap());
+            let mut tc = tt.configure();
+            temporal_values.iter().for_each(|(k, v)| tc.set(k, v).unwrap());
+            let settings = *tc.settings().downcast_ref::<TemporalSettings>().unwrap();
+            let [variant] = matching(&published, &values)[..] else {
+                failures.push(format!("{} {values:?}: not one variant", t.name()));
+                continue;
+            };
+            for frame in &frames {
+                let fail = |what: String| {
+                    format!("{} {values:?} {temporal_values:?} {}x{}: {what}", t.name(), frame.inner.x, frame.inner.y)
+                };
+                let desc = aokit_shaders::graph::FrameDesc { temporal: Some(settings), ..frame.frame_desc() };
+                let Ok(graph) = c.graph(&desc).and_then(|g| accumulate(g, &desc)) else { continue };
+                let full = inputs(&t.rows(), &values, frame).unwrap();
+                let transform = inputs(&tt.rows(), &temporal_values, frame).unwrap();
+                let own = variant.passes.iter().map(|p| ExpectedPass {
+                    pass: p.clone(),
+                    sizes: &full,
+                    barrier: p.barrier_before,
+                    owner: t,
+                    constants: &full,
+                });
+                let after = temporal.after.iter().map(|p| ExpectedPass {
+                    pass: bound(p, &variant.output, &[]),
+                    sizes: &full,
+                    barrier: p.barrier_before,
+                    owner: tt,
+                    constants: &transform,
+                });
+                let expected = Expected {
+                    resources: variant.resources.iter().chain(&temporal.resources).map(|r| (r, &full)).collect(),
+                    passes: own.chain(after).collect(),
+                    output: temporal.output.clone(),
+                };
+                structs += compare(&graph, &expected, &mut failures, &fail);
+                graphs += 1;
+            }
+        }
+    }
+    eprintln!("{graphs} temporal graphs, {structs} structs");
+    assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures[..failures.len().min(20)].join("\n"));
+    assert!(graphs > 100 && structs > graphs, "{graphs} graphs, {structs} structs");
 }
