@@ -8,7 +8,9 @@
 //! cpu-sim (which runs the Rust graph) on the same G-buffer: ≥ 99.9 % of the inner pixels within
 //! 1/255 and MSE ≤ 1e-6, the conformance bar of `assets/README.md`. Four of them also run at half
 //! resolution, built as `assets/README.md` ("Half resolution") tells from `half_resolution` around
-//! the published variant, against cpu-sim's half-resolution graph.
+//! the published variant, against cpu-sim's half-resolution graph; and gtao with the temporal
+//! accumulation built from `temporal` runs a three-frame orbit, its history kept in persistent
+//! buffers.
 
 mod common;
 
@@ -19,7 +21,7 @@ use aokit_contract::expr::{Inputs, Value, eval};
 use aokit_contract::graphs::data_words;
 use aokit_contract::manifest::{
     HalfResolutionManifest, Manifest, ModuleManifest, PassManifest, ResourceManifest, TechniqueManifest,
-    VariantManifest,
+    TemporalManifest, VariantManifest,
 };
 use aokit_cpu::graph::{CpuExecutor, CpuInputs};
 use aokit_cpu::no_progress;
@@ -139,6 +141,32 @@ fn half_plan<'a>(
     }
 }
 
+/// `variant` of `t` followed by the temporal accumulation, as `assets/README.md` ("Temporal
+/// accumulation") tells a consumer to build it from `temporal`: the variant with `inputs`, then
+/// `after`, its record and constants from `transform` (the accumulation's settings, the frame
+/// and the previous frame's camera).
+fn temporal_plan<'a>(
+    temporal: &TemporalManifest,
+    (t, variant): (&'static dyn Registered, &VariantManifest),
+    inputs: &'a Inputs,
+    transform: &'a Inputs,
+) -> Plan<'a> {
+    let tt: &'static dyn Registered = &aokit_shaders::temporal::settings::TEMPORAL;
+    let mut plan = full_plan(t, variant, inputs);
+    plan.resources.extend(temporal.resources.iter().map(|r| (r.clone(), transform, tt)));
+    plan.passes.extend(temporal.after.iter().map(|p| {
+        let mut p = p.clone();
+        for b in &mut p.bindings {
+            if b.1 == HalfResolutionManifest::OUTPUT_SLOT {
+                b.1 = variant.output.clone();
+            }
+        }
+        (p, transform, tt)
+    }));
+    plan.output = temporal.output.clone();
+    plan
+}
+
 /// Run `plan` through wgpu from the WGSL files, everything from the manifest; returns the
 /// output resource as `f32`.
 fn run_on_wgpu(
@@ -147,6 +175,7 @@ fn run_on_wgpu(
     plan: &Plan,
     depth: &[f32],
     normals: &[u32],
+    persistent: &mut HashMap<String, wgpu::Buffer>,
 ) -> Vec<f32> {
     let usage = wgpu::BufferUsages::STORAGE | wgpu::BufferUsages::COPY_SRC | wgpu::BufferUsages::COPY_DST;
     let mut buffers: HashMap<&str, wgpu::Buffer> = HashMap::new();
@@ -160,6 +189,11 @@ fn run_on_wgpu(
     buffers.insert("linear_depth", init("depth", bytemuck::cast_slice(depth)));
     buffers.insert("view_normals", init("normals", normals));
     for (r, inputs, t) in &plan.resources {
+        // A persistent resource keeps its buffer (and contents) from the last run.
+        if let Some(kept) = persistent.get(&r.name).filter(|_| r.lifetime == "persistent") {
+            buffers.insert(&r.name, kept.clone());
+            continue;
+        }
         let mut words = vec![0u32; count(&r.size, inputs) as usize];
         if let Some(bits) = r.init.strip_prefix("fill 0x") {
             words.fill(u32::from_str_radix(bits, 16).unwrap());
@@ -169,6 +203,9 @@ fn run_on_wgpu(
             words = data;
         }
         buffers.insert(&r.name, init(&r.name, &words));
+        if r.lifetime == "persistent" {
+            persistent.insert(r.name.clone(), buffers[r.name.as_str()].clone());
+        }
     }
     let mut encoder = device.create_command_encoder(&Default::default());
     let mut seen: HashMap<&str, i64> = HashMap::new();
@@ -287,9 +324,10 @@ fn every_webgpu_technique_from_the_manifest_alone_on_wgpu_agrees_with_cpu_sim() 
                 let halved = half_inputs(&ins).unwrap();
                 let transform = inputs(&ht.rows(), &ht.configure().values(), &camera).unwrap();
                 let plan = half_plan(half, (registered, variant), &halved, &ins, &transform);
-                run_on_wgpu((&device, &queue), &manifest, &plan, &g.depth, &g.normals)
+                run_on_wgpu((&device, &queue), &manifest, &plan, &g.depth, &g.normals, &mut HashMap::new())
             } else {
-                run_on_wgpu((&device, &queue), &manifest, &full_plan(registered, variant, &ins), &g.depth, &g.normals)
+                let plan = full_plan(registered, variant, &ins);
+                run_on_wgpu((&device, &queue), &manifest, &plan, &g.depth, &g.normals, &mut HashMap::new())
             };
             let spec = if at_half { format!("{spec} (half resolution)") } else { spec.to_string() };
             // cpu-sim runs the Rust graph.
@@ -329,6 +367,81 @@ fn every_webgpu_technique_from_the_manifest_alone_on_wgpu_agrees_with_cpu_sim() 
         }
     }
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures.join("\n"));
+}
+
+/// The temporal accumulation from the manifest alone (`temporal`) over a three-frame orbit with
+/// animated noise, the history in persistent buffers from run to run: gtao's accumulated last
+/// frame on wgpu agrees with cpu-sim's (the Rust graph, one executor) within the conformance bar,
+/// and on both it differs from the frame without accumulation on ≥ 20 % of the inner pixels (the
+/// history was read).
+#[test]
+fn the_temporal_accumulation_from_the_manifest_alone_agrees_with_cpu_sim() {
+    use aokit::path::{Noise, PathKind, PathSpec, path_frames};
+    use aokit_contract::constants::PreviousView;
+    use aokit_shaders::temporal::settings::TemporalSettings;
+    let Some((device, queue, name)) = device() else { return };
+    let manifest = Manifest::committed();
+    let temporal = manifest.temporal.as_ref().expect("the manifest's temporal");
+    let tt: &'static dyn Registered = &aokit_shaders::temporal::settings::TEMPORAL;
+    let (scene, base) = common::builtin_frame("sponza", 160, 96, 16);
+    let renderer = CpuRenderer::new(&scene);
+    let spec = PathSpec { kind: PathKind::Orbit, frames: 3, step: 0.5 };
+    let frames = path_frames(&base, &spec, Noise::Animated, Some(TemporalSettings::default()));
+    let technique = Technique::named("gtao").unwrap();
+    let registered = aokit_shaders::techniques::find("gtao").unwrap();
+    let listed = manifest.techniques.iter().find(|t| t.name == "gtao").unwrap();
+    let values = technique.values();
+    let variant = variant_of(listed, &values);
+    let mut executor = CpuExecutor::new();
+    let mut history = HashMap::new();
+    let (mut on_cpu, mut on_wgpu, mut gbuffer) = (Vec::new(), Vec::new(), None);
+    let inputs_of = |f: &aokit::frame::Frame, previous: Option<&aokit::frame::Frame>| FrameInputs {
+        eye: f.eye,
+        target: f.target,
+        up: f.up,
+        fov_y: f.fov_deg.to_radians(),
+        inner: f.inner,
+        guard: f.camera.view.guard,
+        near: f.camera.view.near,
+        far: f.camera.view.far,
+        radius: f.radius,
+        exponent: f.exponent,
+        thickness: f.thickness,
+        frame_index: f.frame_index,
+        previous: previous.map(|p| PreviousView {
+            eye: p.eye,
+            target: p.target,
+            up: p.up,
+            fov_y: p.fov_deg.to_radians(),
+            near: p.camera.view.near,
+            far: p.camera.view.far,
+        }),
+    };
+    for (i, frame) in frames.iter().enumerate() {
+        let (g, _) = renderer.gbuffer(frame, &no_progress);
+        let camera = inputs_of(frame, i.checked_sub(1).map(|p| &frames[p]));
+        let ins = inputs(&registered.rows(), &values, &camera).unwrap();
+        let transform = inputs(&tt.rows(), &tt.configure().values(), &camera).unwrap();
+        let plan = temporal_plan(temporal, (registered, variant), &ins, &transform);
+        on_wgpu = run_on_wgpu((&device, &queue), &manifest, &plan, &g.depth, &g.normals, &mut history);
+        on_cpu = renderer.run_with(&mut executor, frame, &g, &technique, &no_progress).ao_final;
+        gbuffer = Some(g);
+    }
+    let last = aokit::frame::Frame { temporal: None, ..frames[2].clone() };
+    let plain = renderer.run(&last, gbuffer.as_ref().unwrap(), &technique, &no_progress).ao_final;
+    let view = base.camera.view;
+    let within = common::inner_within(&view, &on_cpu, &on_wgpu, common::agreement::STEP);
+    let used_cpu = 1.0 - common::inner_within(&view, &on_cpu, &plain, common::agreement::STEP);
+    let used_wgpu = 1.0 - common::inner_within(&view, &on_wgpu, &plain, common::agreement::STEP);
+    eprintln!(
+        "temporal gtao from the manifest, wgpu ({name}) vs cpu-sim: {:.3} % within 1/255; history changed {:.1} % \
+         (cpu-sim), {:.1} % (wgpu)",
+        100.0 * within,
+        100.0 * used_cpu,
+        100.0 * used_wgpu
+    );
+    assert!(within >= common::agreement::MIN_WITHIN, "{within}");
+    assert!(used_cpu > 0.2 && used_wgpu > 0.2, "{used_cpu} {used_wgpu}");
 }
 
 /// A module's WGSL overrides for push-constant bytes `push`, as `assets/README.md` tells a consumer
