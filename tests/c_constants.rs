@@ -2,15 +2,17 @@
 //! bytes the Rust builders put into the graphs: a C program generated here fills, for every
 //! technique at its defaults and with each setting at each tried value, every push-constant
 //! block and record the technique's graph carries (each pass with its index among its module's
-//! passes), on a frame with odd sizes, and prints them; they must equal the graph's bytes.
+//! passes), on a frame with odd sizes, and prints them; they must equal the graph's bytes. So must
+//! the adapters' `ImportParams`, the temporal accumulation's `TemporalFrame` (with a previous
+//! camera and without) and half resolution's `HalfParams` (on the frame made even).
 //! Needs a C and a C++ compiler (gcc, g++; a missing one fails unless the run allows its skip:
 //! tests/common/skip.rs).
 
 mod common;
 
 use aokit_contract::constants::{FrameInputs, push_struct, record_struct};
-use aokit_contract::manifest::Manifest;
 use aokit_contract::manifest::constants::settings_tried;
+use aokit_contract::manifest::{Manifest, SettingManifest};
 use aokit_shaders::graph::Init;
 use aokit_shaders::techniques::TECHNIQUES;
 use std::fmt::Write;
@@ -24,6 +26,38 @@ fn root() -> PathBuf {
 /// A binary32 as an exact C literal.
 fn c_float(v: f32) -> String {
     format!("{:?}f", v as f64).replace("inf", "INFINITY")
+}
+
+/// Opens a block declaring `{prefix}_settings s` at its defaults with `values` set, as C literals
+/// of `listed`'s kinds (counts `8u`, numbers exact floats, choices their index).
+fn open_settings(c: &mut String, prefix: &str, listed: &[SettingManifest], values: &[(&str, String)]) {
+    writeln!(c, "    {{\n        {prefix}_settings s = {prefix}_defaults();").unwrap();
+    for (key, value) in values {
+        let row = listed.iter().find(|s| s.key == *key).unwrap();
+        let literal = match row.kind.as_str() {
+            "count" => format!("{value}u"),
+            "number" => c_float(value.parse().unwrap()),
+            _ => format!("{}u", row.choices.iter().position(|c| c == value).unwrap()),
+        };
+        writeln!(c, "        s.{} = {literal};", key.replace('-', "_")).unwrap();
+    }
+}
+
+/// A call of `{prefix}_{name}` with `s`, the frame inputs `frame` and `pass`, whose result is
+/// printed as `what` and hex; `bytes` (the Rust builder's) is the line expected.
+fn dump_call(
+    c: &mut String,
+    expected: &mut Vec<String>,
+    (prefix, name, frame, pass): (&str, &str, &str, usize),
+    what: &str,
+    bytes: &[u8],
+) {
+    writeln!(
+        c,
+        "        {{ aokit_{name} out; memset(&out, 0, sizeof out); {prefix}_{name}(&s, &{frame}, {pass}u, &out); dump(\"{what}\", &out, sizeof out); }}"
+    )
+    .unwrap();
+    expected.push(format!("{what} {}", bytes.iter().map(|b| format!("{b:02x}")).collect::<String>()));
 }
 
 #[test]
@@ -67,16 +101,7 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
             let mut configured = t.configure();
             values.iter().for_each(|(k, val)| configured.set(k, val).unwrap());
             let Ok(graph) = configured.graph(&frame.frame_desc()) else { continue };
-            writeln!(c, "    {{\n        {p}_settings s = {p}_defaults();").unwrap();
-            for (key, value) in &values {
-                let row = listed.settings.iter().find(|s| s.key == *key).unwrap();
-                let literal = match row.kind.as_str() {
-                    "count" => format!("{value}u"),
-                    "number" => c_float(value.parse().unwrap()),
-                    _ => format!("{}u", row.choices.iter().position(|c| c == value).unwrap()),
-                };
-                writeln!(c, "        s.{} = {literal};", key.replace('-', "_")).unwrap();
-            }
+            open_settings(&mut c, &p, &listed.settings, &values);
             for (i, pass) in graph.passes.iter().enumerate() {
                 let index = graph.passes[..i].iter().filter(|q| q.entry() == pass.entry()).count();
                 let mut blocks = Vec::new();
@@ -91,13 +116,7 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
                 }
                 for (name, index, bytes) in blocks {
                     let what = format!("{}:{values:?}:{i}:{name}", t.name()).replace(['"', ' '], "");
-                    writeln!(
-                        c,
-                        "        {{ aokit_{name} out; memset(&out, 0, sizeof out); {p}_{name}(&s, &f, {index}u, &out); dump(\"{what}\", &out, sizeof out); }}"
-                    )
-                    .unwrap();
-                    let hex: String = bytes.iter().map(|b| format!("{b:02x}")).collect();
-                    expected.push(format!("{what} {hex}"));
+                    dump_call(&mut c, &mut expected, (&p, name, "f", index), &what, &bytes);
                 }
             }
             c += "    }\n";
@@ -115,22 +134,10 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
             values.iter().for_each(|(k, val)| configured.set(k, val).unwrap());
             let settings = configured.settings().downcast_ref::<AdapterSettings>().unwrap();
             let bytes = bytemuck::bytes_of(&settings.params(&frame.frame_desc())).to_vec();
-            writeln!(c, "    {{\n        aokit_adapters_settings s = aokit_adapters_defaults();").unwrap();
-            for (key, value) in &values {
-                let row = listed.settings.iter().find(|s| s.key == *key).unwrap();
-                let literal = match row.kind.as_str() {
-                    "number" => c_float(value.parse().unwrap()),
-                    _ => format!("{}u", row.choices.iter().position(|c| c == value).unwrap()),
-                };
-                writeln!(c, "        s.{} = {literal};", key.replace('-', "_")).unwrap();
-            }
+            open_settings(&mut c, "aokit_adapters", &listed.settings, &values);
             let what = format!("adapters:{values:?}:ImportParams").replace(['"', ' '], "");
-            writeln!(
-                c,
-                "        {{ aokit_ImportParams out; memset(&out, 0, sizeof out); aokit_adapters_ImportParams(&s, &f, 0u, &out); dump(\"{what}\", &out, sizeof out); }}\n    }}"
-            )
-            .unwrap();
-            expected.push(format!("{what} {}", bytes.iter().map(|b| format!("{b:02x}")).collect::<String>()));
+            dump_call(&mut c, &mut expected, ("aokit_adapters", "ImportParams", "f", 0), &what, &bytes);
+            c += "    }\n";
         }
     }
     // The temporal accumulation's TemporalFrame, against `TemporalSettings::frame`, on the
@@ -158,21 +165,12 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
             let mut configured = t.configure();
             values.iter().for_each(|(k, val)| configured.set(k, val).unwrap());
             let settings = configured.settings().downcast_ref::<TemporalSettings>().unwrap();
-            writeln!(c, "    {{\n        aokit_temporal_settings s = aokit_temporal_defaults();").unwrap();
-            for (key, value) in &values {
-                assert_eq!(listed.settings.iter().find(|s| s.key == *key).unwrap().kind, "number");
-                writeln!(c, "        s.{} = {};", key.replace('-', "_"), c_float(value.parse().unwrap())).unwrap();
-            }
+            open_settings(&mut c, "aokit_temporal", &listed.settings, &values);
             let without = aokit_shaders::graph::FrameDesc { previous_camera: None, ..frame.frame_desc() };
             for (inputs, desc) in [("fp", frame.frame_desc()), ("f", without)] {
                 let what = format!("temporal:{values:?}:{inputs}:TemporalFrame").replace(['"', ' '], "");
-                writeln!(
-                    c,
-                    "        {{ aokit_TemporalFrame out; memset(&out, 0, sizeof out); aokit_temporal_TemporalFrame(&s, &{inputs}, 0u, &out); dump(\"{what}\", &out, sizeof out); }}"
-                )
-                .unwrap();
                 let bytes = bytemuck::bytes_of(&settings.frame(&desc)).to_vec();
-                expected.push(format!("{what} {}", bytes.iter().map(|b| format!("{b:02x}")).collect::<String>()));
+                dump_call(&mut c, &mut expected, ("aokit_temporal", "TemporalFrame", inputs, 0), &what, &bytes);
             }
             c += "    }\n";
         }
@@ -197,24 +195,11 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
             values.iter().for_each(|(k, val)| configured.set(k, val).unwrap());
             let settings = configured.settings().downcast_ref::<HalfSettings>().unwrap();
             let params = half_params(settings, &even.frame_desc().camera.view).unwrap();
-            writeln!(c, "    {{\n        aokit_half_resolution_settings s = aokit_half_resolution_defaults();")
-                .unwrap();
-            for (key, value) in &values {
-                let row = listed.settings.iter().find(|s| s.key == *key).unwrap();
-                let literal = match row.kind.as_str() {
-                    "number" => c_float(value.parse().unwrap()),
-                    _ => format!("{}u", row.choices.iter().position(|c| c == value).unwrap()),
-                };
-                writeln!(c, "        s.{} = {literal};", key.replace('-', "_")).unwrap();
-            }
+            open_settings(&mut c, "aokit_half_resolution", &listed.settings, &values);
             let what = format!("half_resolution:{values:?}:HalfParams").replace(['"', ' '], "");
-            writeln!(
-                c,
-                "        {{ aokit_HalfParams out; memset(&out, 0, sizeof out); aokit_half_resolution_HalfParams(&s, &fe, 0u, &out); dump(\"{what}\", &out, sizeof out); }}\n    }}"
-            )
-            .unwrap();
             let bytes = bytemuck::bytes_of(&params);
-            expected.push(format!("{what} {}", bytes.iter().map(|b| format!("{b:02x}")).collect::<String>()));
+            dump_call(&mut c, &mut expected, ("aokit_half_resolution", "HalfParams", "fe", 0), &what, bytes);
+            c += "    }\n";
         }
     }
     c += "    return 0;\n}\n";
