@@ -201,6 +201,25 @@ fn generated_c_constants_equal_the_rust_builders_bytes() {
             dump_call(&mut c, &mut expected, ("aokit_half_resolution", "HalfParams", "fe", 0), &what, bytes);
             c += "    }\n";
         }
+        // A technique's own constants at half resolution: its functions with the half frame's
+        // inputs (aokit_half_frame_inputs) give the push constants of its passes in the graph
+        // at_resolution builds; the odd frame is refused.
+        use aokit_shaders::halfres::settings::{Resolution, at_resolution};
+        let gtao = aokit_shaders::techniques::find("gtao").unwrap();
+        let graph = at_resolution(Resolution::half(), &even.frame_desc(), |d| gtao.configure().graph(d)).unwrap();
+        let main = graph.passes.iter().find(|p| p.entry() == "gtao_main").unwrap();
+        c += "    {\n        aokit_frame_inputs fh, unchanged;\n";
+        c += "        printf(\"half_frame_inputs %d %d\\n\", aokit_half_frame_inputs(&f, &unchanged), aokit_half_frame_inputs(&fe, &fh));\n";
+        expected.push("half_frame_inputs 0 1".into());
+        c += "        aokit_gtao_settings s = aokit_gtao_defaults();\n";
+        dump_call(
+            &mut c,
+            &mut expected,
+            ("aokit_gtao", "GtaoParams", "fh", 0),
+            "gtao:half:GtaoParams",
+            &main.push_constants,
+        );
+        c += "    }\n";
     }
     c += "    return 0;\n}\n";
     let dir = std::env::temp_dir().join(format!("aokit-c-constants-{}", std::process::id()));

@@ -16,7 +16,7 @@ mod common;
 
 use aokit::render::CpuRenderer;
 use aokit::technique::Technique;
-use aokit_contract::constants::{FrameInputs, evaluate_struct, half_inputs, inputs};
+use aokit_contract::constants::{FrameInputs, evaluate_struct, inputs};
 use aokit_contract::expr::{Inputs, Value, eval};
 use aokit_contract::graphs::data_words;
 use aokit_contract::manifest::{
@@ -117,7 +117,7 @@ fn half_plan<'a>(
     let after = |p: &PassManifest| {
         let mut p = p.clone();
         for b in &mut p.bindings {
-            if b.1 == HalfResolutionManifest::OUTPUT_SLOT {
+            if b.1 == HalfResolutionManifest::OUTPUT_PLACEHOLDER {
                 b.1 = variant.output.clone();
             }
         }
@@ -157,7 +157,7 @@ fn temporal_plan<'a>(
     plan.passes.extend(temporal.after.iter().map(|p| {
         let mut p = p.clone();
         for b in &mut p.bindings {
-            if b.1 == HalfResolutionManifest::OUTPUT_SLOT {
+            if b.1 == HalfResolutionManifest::OUTPUT_PLACEHOLDER {
                 b.1 = variant.output.clone();
             }
         }
@@ -321,7 +321,11 @@ fn every_webgpu_technique_from_the_manifest_alone_on_wgpu_agrees_with_cpu_sim() 
             let ins = inputs(&registered.rows(), &values, &camera).unwrap();
             let on_wgpu = if at_half {
                 technique = technique.with_resolution(Resolution::half());
-                let halved = half_inputs(&ins).unwrap();
+                // The half frame's names from `half_names`, each from the full frame's values.
+                let mut halved = ins.clone();
+                for (name, text) in &half.half_names {
+                    halved.names.insert(name.clone(), eval(text, &ins).unwrap());
+                }
                 let transform = inputs(&ht.rows(), &ht.configure().values(), &camera).unwrap();
                 let plan = half_plan(half, (registered, variant), &halved, &ins, &transform);
                 run_on_wgpu((&device, &queue), &manifest, &plan, &g.depth, &g.normals, &mut HashMap::new())

@@ -26,6 +26,20 @@ typedef struct aokit_frame_inputs {
     float previous_fov_y, previous_near, previous_far;
 } aokit_frame_inputs;
 
+/* The half-resolution frame (the manifest's half_resolution.half_names: w, h, g halved), whose inputs a
+ * technique's constants functions take when it runs at half resolution. Returns 0, leaving *out as it
+ * was, where half resolution refuses the frame (W, H or g odd, or fewer than 2x2 pixels inside the
+ * guard band). */
+static inline int aokit_half_frame_inputs(const aokit_frame_inputs *f, aokit_frame_inputs *out) {
+    uint32_t W = f->w + 2u * f->g, H = f->h + 2u * f->g;
+    if (W % 2u || H % 2u || f->g % 2u || f->w < 2u || f->h < 2u) return 0;
+    *out = *f;
+    out->w /= 2u;
+    out->h /= 2u;
+    out->g /= 2u;
+    return 1;
+}
+
 static inline int64_t aokit__div_ceil(int64_t a, int64_t b) { return a / b + (a % b != 0 && (a < 0) == (b < 0)); }
 static inline int64_t aokit__div_floor(int64_t a, int64_t b) { return a / b - (a % b != 0 && (a < 0) != (b < 0)); }
 static inline int64_t aokit__imin(int64_t a, int64_t b) { return a < b ? a : b; }
@@ -1097,7 +1111,7 @@ static inline void aokit_half_resolution_ViewParams(const aokit_half_resolution_
 static inline void aokit_half_resolution_HalfParams(const aokit_half_resolution_settings *s, const aokit_frame_inputs *f, uint32_t pass, aokit_HalfParams *out) {
     (void)s; (void)f; (void)pass;
     aokit_half_resolution_ViewParams(s, f, pass, &out->view);
-    { aokit_frame_inputs half = *f; half.w /= 2u; half.h /= 2u; half.g /= 2u; aokit_half_resolution_ViewParams(s, &half, pass, &out->half); }
+    { aokit_frame_inputs half = *f; (void)aokit_half_frame_inputs(f, &half); aokit_half_resolution_ViewParams(s, &half, pass, &out->half); }
     out->pick = (uint32_t)((int64_t)s->pick); /* index(`pick`) */
     out->plane_tolerance = s->plane_tolerance; /* `plane-tolerance` */
     out->_pad0 = (uint32_t)(INT64_C(0)); /* 0 */

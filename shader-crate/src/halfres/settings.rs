@@ -99,7 +99,7 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
         Constant::new("HalfParams.view", "the frame's ViewParams (ViewParams rows): the full target").expr("ViewParams"),
         Constant::new(
             "HalfParams.half",
-            "the ViewParams rows with W, H, w, h, g halved (half_resolution.frame): res (W/2, H/2), guard g/2, the same frustum"
+            "the ViewParams rows with W, H, w, h, g halved (half_resolution.half_names): res (W/2, H/2), guard g/2, the same frustum"
         )
         .expr("half(ViewParams)"),
         Constant::new("HalfParams.pick", "`pick`: checkerboard 0, nearest 1").expr("index(`pick`)"),
@@ -114,7 +114,7 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
 /// registry: it wraps a technique's graph, [`at_resolution`]; its own graph function refuses).
 pub static HALF_RESOLUTION: Declaration<HalfSettings> = Declaration {
     name: "half-resolution",
-    summary: "any screen-space technique at half resolution between a depth/normal downsample and an edge-aware upsample",
+    summary: "any technique that reads no depth-peeled second layer, at half resolution between a depth/normal downsample and an edge-aware upsample",
     keys: &["pick", "plane-tolerance"],
     defaults: HalfSettings::default,
     graph: |_, _| Err("half resolution wraps a technique's graph (at_resolution); it has none of its own".into()),

@@ -89,7 +89,7 @@ pub const CONSTANTS: &[Constant] = crate::join_constants![
         Constant::new(
             "TemporalFrame.previous",
             "the previous frame's Camera: the Camera rows with the previous frame's eye, target, up, fov_y, near, far \
-             (temporal.previous_frame); this frame's on a first frame, after a cut or a resize"
+             (temporal.previous_names); this frame's on a first frame, after a cut or a resize"
         )
         .expr("previous(Camera)"),
         Constant::new("TemporalFrame.alpha", "`alpha` α [0.1]").expr("`alpha`"),

@@ -466,7 +466,7 @@ fn technique(t: &Source, manifest: &Manifest) -> Result<String, String> {
                 .ok_or_else(|| format!("{} {name}.{}: no constant", t.name, field.name))?;
             if manifest.structs.iter().any(|x| x.name == field.ty) {
                 if c.expr == format!("previous({})", field.ty) {
-                    // The previous frame's camera (`temporal.previous_frame`) when there is one.
+                    // The previous frame's camera (`temporal.previous_names`) when there is one.
                     h += "    {\n        aokit_frame_inputs previous = *f;\n        if (f->has_previous) {\n";
                     h += "            for (int i = 0; i < 3; i++) {\n";
                     h += "                previous.eye[i] = f->previous_eye[i];\n";
@@ -477,13 +477,18 @@ fn technique(t: &Source, manifest: &Manifest) -> Result<String, String> {
                     h += "            previous.far_plane = f->previous_far;\n        }\n";
                     h += &format!("        {p}_{}(s, &previous, pass, &out->{});\n    }}\n", field.ty, field.name);
                 } else if c.expr == format!("half({})", field.ty) {
-                    // The half-resolution frame (`half_resolution.frame`): w, h, g halved.
+                    // The half-resolution frame (`half_resolution.half_names`): w, h, g halved.
                     h += &format!(
-                        "    {{ aokit_frame_inputs half = *f; half.w /= 2u; half.h /= 2u; half.g /= 2u; {p}_{}(s, &half, pass, &out->{}); }}\n",
+                        "    {{ aokit_frame_inputs half = *f; (void)aokit_half_frame_inputs(f, &half); {p}_{}(s, &half, pass, &out->{}); }}\n",
                         field.ty, field.name
                     );
-                } else {
+                } else if c.expr == field.ty {
                     h += &format!("    {p}_{}(s, f, pass, &out->{});\n", field.ty, field.name);
+                } else {
+                    return Err(format!(
+                        "{} {name}.{}: a {1} field's expression is `{1}`, `half({1})` or `previous({1})`, not `{2}`",
+                        t.name, field.ty, c.expr
+                    ));
                 }
                 continue;
             }
@@ -521,6 +526,14 @@ impl Manifest {
         h += "     * frame, after a cut or a resize (then the previous_* fields are unread). */\n";
         h += "    uint32_t has_previous;\n    float previous_eye[3], previous_target[3], previous_up[3];\n";
         h += "    float previous_fov_y, previous_near, previous_far;\n} aokit_frame_inputs;\n\n";
+        h += "/* The half-resolution frame (the manifest's half_resolution.half_names: w, h, g halved), whose inputs a\n";
+        h += " * technique's constants functions take when it runs at half resolution. Returns 0, leaving *out as it\n";
+        h += " * was, where half resolution refuses the frame (W, H or g odd, or fewer than 2x2 pixels inside the\n";
+        h += " * guard band). */\n";
+        h += "static inline int aokit_half_frame_inputs(const aokit_frame_inputs *f, aokit_frame_inputs *out) {\n";
+        h += "    uint32_t W = f->w + 2u * f->g, H = f->h + 2u * f->g;\n";
+        h += "    if (W % 2u || H % 2u || f->g % 2u || f->w < 2u || f->h < 2u) return 0;\n";
+        h += "    *out = *f;\n    out->w /= 2u;\n    out->h /= 2u;\n    out->g /= 2u;\n    return 1;\n}\n\n";
         h += HELPERS;
         h += "\n";
         for t in &self.techniques {

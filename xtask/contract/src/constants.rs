@@ -204,7 +204,7 @@ pub fn evaluate_struct(t: &dyn Registered, name: &str, inputs: &Inputs) -> Resul
     Ok(out)
 }
 
-/// `inputs` with the half-resolution frame's names (`half_resolution.frame`,
+/// `inputs` with the half-resolution frame's names (`half_resolution.half_names`,
 /// [`aokit_shaders::halfres::settings::HALF_FRAME`]): `W H w h g` halved, everything else as is.
 pub fn half_inputs(inputs: &Inputs) -> Result<Inputs, String> {
     let mut half = inputs.clone();
@@ -214,7 +214,7 @@ pub fn half_inputs(inputs: &Inputs) -> Result<Inputs, String> {
     Ok(half)
 }
 
-/// `inputs` with the previous frame's camera in place of this frame's (`temporal.previous_frame`,
+/// `inputs` with the previous frame's camera in place of this frame's (`temporal.previous_names`,
 /// [`aokit_shaders::temporal::settings::PREVIOUS_FRAME`]): `eye` takes `previous_eye`'s value, ….
 pub fn previous_inputs(inputs: &Inputs) -> Result<Inputs, String> {
     let mut previous = inputs.clone();

@@ -44,15 +44,16 @@ pub struct Manifest {
 /// `docs/temporal.md`): two passes after the variant's, a record and the history.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct TemporalManifest {
+    /// The recipe in one paragraph (`assets/README.md`, "Temporal accumulation").
     pub doc: String,
     /// Its own settings (`TemporalFrame.alpha`, `TemporalFrame.depth_tolerance`).
     pub settings: Vec<SettingManifest>,
     /// `(name, previous frame's name)`: `previous(Camera)` evaluates the `Camera` rows with the
     /// second names' values in place of the first.
-    pub previous_frame: Vec<(String, String)>,
+    pub previous_names: Vec<(String, String)>,
     /// Added to the variant's resources (the record, the output and the persistent history).
     pub resources: Vec<ResourceManifest>,
-    /// After the variant's passes; [`HalfResolutionManifest::OUTPUT_SLOT`] stands for the
+    /// After the variant's passes; [`HalfResolutionManifest::OUTPUT_PLACEHOLDER`] stands for the
     /// variant's `output`.
     pub after: Vec<PassManifest>,
     /// The accumulated AO (f32 per full-target texel).
@@ -66,12 +67,14 @@ pub struct TemporalManifest {
 /// renamed to the downsample's outputs, between the downsample and the upsample.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct HalfResolutionManifest {
+    /// The recipe in one paragraph (`assets/README.md`, "Half resolution", states it in full).
     pub doc: String,
     /// The transform's own settings (`HalfParams.pick`, `HalfParams.plane_tolerance`).
     pub settings: Vec<SettingManifest>,
     /// `(name, expression of the full frame's names)`: evaluate the variant's sizes, dispatches,
-    /// contents and constants with these names instead of the full target's.
-    pub frame: Vec<(String, String)>,
+    /// contents and constants with these names instead of the full target's (each expression
+    /// evaluated with the full frame's values).
+    pub half_names: Vec<(String, String)>,
     /// What the frame must satisfy (refused otherwise).
     pub requires: String,
     /// Inputs a variant must not read (the downsample does not reduce them).
@@ -82,7 +85,7 @@ pub struct HalfResolutionManifest {
     pub resources: Vec<ResourceManifest>,
     /// Before the variant's passes.
     pub before: Vec<PassManifest>,
-    /// After them; [`HalfResolutionManifest::OUTPUT_SLOT`] stands for the variant's `output`.
+    /// After them; [`HalfResolutionManifest::OUTPUT_PLACEHOLDER`] stands for the variant's `output`.
     pub after: Vec<PassManifest>,
     /// The wrapped graph's output (f32 per full-target texel).
     pub output: String,
@@ -94,7 +97,7 @@ pub struct HalfResolutionManifest {
 
 impl HalfResolutionManifest {
     /// The name that `after`'s bindings give the wrapped variant's `output`.
-    pub const OUTPUT_SLOT: &'static str = "<output>";
+    pub const OUTPUT_PLACEHOLDER: &'static str = "<output>";
 }
 
 /// The adapter modules (`aokit_shaders::adapters`): their settings, modules and constants.
@@ -1035,7 +1038,7 @@ pub fn temporal(structs: &[StructManifest]) -> Result<TemporalManifest, String> 
     let mut after: Vec<PassManifest> = published.passes[inner_passes..].to_vec();
     for b in after.iter_mut().flat_map(|p| &mut p.bindings) {
         if b.1 == inner_output {
-            b.1 = HalfResolutionManifest::OUTPUT_SLOT.into();
+            b.1 = HalfResolutionManifest::OUTPUT_PLACEHOLDER.into();
         }
     }
     Ok(TemporalManifest {
@@ -1044,7 +1047,7 @@ pub fn temporal(structs: &[StructManifest]) -> Result<TemporalManifest, String> 
               filled once), the AO read from `output`"
             .into(),
         settings: settings_of(t).into_iter().map(|s| SettingManifest { flag: None, ..s }).collect(),
-        previous_frame: PREVIOUS_FRAME.iter().map(|(n, p)| (n.to_string(), p.to_string())).collect(),
+        previous_names: PREVIOUS_FRAME.iter().map(|(n, p)| (n.to_string(), p.to_string())).collect(),
         resources,
         after,
         output: OUTPUT.into(),
@@ -1068,15 +1071,26 @@ pub fn half_resolution(structs: &[StructManifest]) -> Result<HalfResolutionManif
     let published = crate::graphs::publish(wrapped, &graph)?;
     let ours = [HALF_DEPTH, HALF_NORMALS, OUTPUT];
     let resources = published.resources.iter().filter(|r| ours.contains(&r.name.as_str())).cloned().collect();
-    let (first, last) = match &published.passes[..] {
-        [first, .., last] => (first.clone(), last.clone()),
-        _ => return Err("half resolution: the wrapped graph has fewer than two passes".into()),
-    };
-    let mut last = last;
-    for b in &mut last.bindings {
-        if b.1 == inner_output {
-            b.1 = HalfResolutionManifest::OUTPUT_SLOT.into();
+    let (first, mut last) = match &published.passes[..] {
+        [first, .., last] if first.entry == "half_downsample" && last.entry == "half_upsample" => {
+            (first.clone(), last.clone())
         }
+        _ => {
+            return Err(
+                "half resolution: the wrapped graph does not start with half_downsample and end with half_upsample"
+                    .into(),
+            );
+        }
+    };
+    // The upsample's `half_ao` (its slot in the kernel's declaration) reads the variant's output.
+    let slot = aokit_shaders::kernel::Kernel::find("half_upsample")
+        .and_then(|k| k.bindings.iter().find(|b| b.name == "half_ao").map(|b| b.slot))
+        .ok_or("half_upsample declares no half_ao binding")?;
+    for b in last.bindings.iter_mut().filter(|b| b.0 == slot) {
+        if b.1 != inner_output {
+            return Err(format!("half_upsample's half_ao binds {}, not the wrapped output {inner_output}", b.1));
+        }
+        b.1 = HalfResolutionManifest::OUTPUT_PLACEHOLDER.into();
     }
     Ok(HalfResolutionManifest {
         doc: "any technique's variant at half resolution (spec half-resolution, docs/algorithms/half-resolution.md): \
@@ -1085,7 +1099,7 @@ pub fn half_resolution(structs: &[StructManifest]) -> Result<HalfResolutionManif
             .into(),
         // No flag of its own: `aokit` takes both as `--resolution half|half-nearest[-tau<τ>]`.
         settings: settings_of(t).into_iter().map(|s| SettingManifest { flag: None, ..s }).collect(),
-        frame: HALF_FRAME.iter().map(|(n, e)| (n.to_string(), e.to_string())).collect(),
+        half_names: HALF_FRAME.iter().map(|(n, e)| (n.to_string(), e.to_string())).collect(),
         requires: "W, H and g even; at least 2×2 pixels inside the guard band (W ≥ 2g + 2, H ≥ 2g + 2)".into(),
         refused_inputs: vec![inputs::SECOND_DEPTH.into()],
         renamed_inputs: vec![

@@ -13,7 +13,7 @@ use aokit_contract::manifest::constants::settings_tried;
 use aokit_contract::manifest::{
     HalfResolutionManifest, Manifest, PassManifest, ResourceManifest, half_resolution, reference_frame, tables,
 };
-use aokit_shaders::graph::{Graph, Init};
+use aokit_shaders::graph::{Elem, Graph, Init, Lifetime};
 use aokit_shaders::technique::Registered;
 use aokit_shaders::techniques::TECHNIQUES;
 
@@ -164,6 +164,25 @@ fn compare(graph: &Graph, expected: &Expected, failures: &mut Vec<String>, fail:
         if int(&m.size, ins) != Ok(r.len(&view) as i64) {
             failures.push(fail(format!("{} size '{}', allocated {}", r.name, m.size, r.len(&view))));
         }
+        let elem = match r.elem {
+            Elem::F32 => "f32",
+            Elem::U32 => "u32",
+        };
+        let lifetime = match r.lifetime {
+            Lifetime::PerFrame => "per_frame",
+            Lifetime::Persistent => "persistent",
+        };
+        let init = match &r.init {
+            Init::Fill(bits) => format!("fill {bits:#010x}"),
+            Init::Data(_) => "data".into(),
+            Init::Undefined => "undefined".into(),
+        };
+        if (m.elem.as_str(), m.lifetime.as_str(), &m.init) != (elem, lifetime, &init) {
+            failures.push(fail(format!(
+                "{}: {} {} {}, the transform's {elem} {lifetime} {init}",
+                r.name, m.elem, m.lifetime, m.init
+            )));
+        }
     }
     if graph.output != expected.output {
         failures.push(fail(format!("output {}, the transform's {}", expected.output, graph.output)));
@@ -229,7 +248,7 @@ fn compare(graph: &Graph, expected: &Expected, failures: &mut Vec<String>, fail:
 fn bound(pass: &PassManifest, output: &str, renamed: &[(String, String)]) -> PassManifest {
     let mut pass = pass.clone();
     for b in &mut pass.bindings {
-        if b.1 == HalfResolutionManifest::OUTPUT_SLOT {
+        if b.1 == HalfResolutionManifest::OUTPUT_PLACEHOLDER {
             b.1 = output.into();
         } else if let Some((_, to)) = renamed.iter().find(|(from, _)| *from == b.1) {
             b.1 = to.clone();
@@ -269,6 +288,13 @@ fn half_resolution_transform_is_at_resolution_for_every_variant() {
         guard: f.guard + (f.guard & 1),
         ..f
     });
+    // What `requires` states: an odd W or H and an odd guard band are refused.
+    let gtao = || aokit_shaders::techniques::find("gtao").unwrap().configure();
+    for (inner, guard) in [((97, 64), 16), ((96, 63), 16), ((96, 64), 13)] {
+        let frame = FrameInputs { inner: inner.into(), guard, ..frames[0] };
+        let built = at_resolution(Resolution::half(), &frame.frame_desc(), |f| gtao().graph(f));
+        assert!(built.is_err(), "{inner:?} with a guard band of {guard}: {}", half.requires);
+    }
     let (mut graphs, mut structs, mut refused) = (0, 0, 0);
     let mut failures = Vec::new();
     for &t in TECHNIQUES {
