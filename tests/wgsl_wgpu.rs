@@ -105,24 +105,6 @@ fn half_plan<'a>(
     transform: &'a Inputs,
 ) -> Plan<'a> {
     let ht: &'static dyn Registered = &aokit_shaders::halfres::settings::HALF_RESOLUTION;
-    let renamed = |p: &PassManifest| {
-        let mut p = p.clone();
-        for b in &mut p.bindings {
-            if let Some((_, to)) = half.renamed_inputs.iter().find(|(from, _)| *from == b.1) {
-                b.1 = to.clone();
-            }
-        }
-        p
-    };
-    let after = |p: &PassManifest| {
-        let mut p = p.clone();
-        for b in &mut p.bindings {
-            if b.1 == HalfResolutionManifest::OUTPUT_PLACEHOLDER {
-                b.1 = variant.output.clone();
-            }
-        }
-        p
-    };
     Plan {
         resources: variant
             .resources
@@ -134,8 +116,8 @@ fn half_plan<'a>(
             .before
             .iter()
             .map(|p| (p.clone(), transform, ht))
-            .chain(variant.passes.iter().map(|p| (renamed(p), halved, t)))
-            .chain(half.after.iter().map(|p| (after(p), transform, ht)))
+            .chain(variant.passes.iter().map(|p| (p.bound(&variant.output, &half.renamed_inputs), halved, t)))
+            .chain(half.after.iter().map(|p| (p.bound(&variant.output, &[]), transform, ht)))
             .collect(),
         output: half.output.clone(),
     }
@@ -154,15 +136,7 @@ fn temporal_plan<'a>(
     let tt: &'static dyn Registered = &aokit_shaders::temporal::settings::TEMPORAL;
     let mut plan = full_plan(t, variant, inputs);
     plan.resources.extend(temporal.resources.iter().map(|r| (r.clone(), transform, tt)));
-    plan.passes.extend(temporal.after.iter().map(|p| {
-        let mut p = p.clone();
-        for b in &mut p.bindings {
-            if b.1 == HalfResolutionManifest::OUTPUT_PLACEHOLDER {
-                b.1 = variant.output.clone();
-            }
-        }
-        (p, transform, tt)
-    }));
+    plan.passes.extend(temporal.after.iter().map(|p| (p.bound(&variant.output, &[]), transform, tt)));
     plan.output = temporal.output.clone();
     plan
 }

@@ -84,7 +84,7 @@ impl Settings for HalfSettings {
 /// §1): `(name, expression of the full frame's names)`. A technique's graph and constants at half
 /// resolution are its published ones evaluated with these names; the rest of the frame (camera,
 /// planes, field of view) is the same.
-pub const HALF_FRAME: [(&str, &str); 5] = [
+pub const HALF_NAMES: [(&str, &str); 5] = [
     ("W", "div_floor(W, 2)"),
     ("H", "div_floor(H, 2)"),
     ("w", "div_floor(w, 2)"),
@@ -93,7 +93,7 @@ pub const HALF_FRAME: [(&str, &str); 5] = [
 ];
 
 /// How [`half_params`] fills `HalfParams`, then the camera's rows. `half(ViewParams)` is the
-/// `ViewParams` rows evaluated with the names of [`HALF_FRAME`].
+/// `ViewParams` rows evaluated with the names of [`HALF_NAMES`].
 pub const CONSTANTS: &[Constant] = crate::join_constants![
     &[
         Constant::new("HalfParams.view", "the frame's ViewParams (ViewParams rows): the full target").expr("ViewParams"),

@@ -73,7 +73,7 @@ impl Settings for TemporalSettings {
 /// The previous frame's camera names the expressions read (`assets/README.md`, "Temporal
 /// accumulation"): `(this frame's name, the previous frame's)`. `previous(Camera)` is the
 /// `Camera` rows evaluated with the second names in place of the first.
-pub const PREVIOUS_FRAME: [(&str, &str); 6] = [
+pub const PREVIOUS_NAMES: [(&str, &str); 6] = [
     ("eye", "previous_eye"),
     ("target", "previous_target"),
     ("up", "previous_up"),

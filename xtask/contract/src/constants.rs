@@ -205,20 +205,20 @@ pub fn evaluate_struct(t: &dyn Registered, name: &str, inputs: &Inputs) -> Resul
 }
 
 /// `inputs` with the half-resolution frame's names (`half_resolution.half_names`,
-/// [`aokit_shaders::halfres::settings::HALF_FRAME`]): `W H w h g` halved, everything else as is.
+/// [`aokit_shaders::halfres::settings::HALF_NAMES`]): `W H w h g` halved, everything else as is.
 pub fn half_inputs(inputs: &Inputs) -> Result<Inputs, String> {
     let mut half = inputs.clone();
-    for (name, text) in aokit_shaders::halfres::settings::HALF_FRAME {
+    for (name, text) in aokit_shaders::halfres::settings::HALF_NAMES {
         half.names.insert(name.into(), expr::eval(text, inputs)?);
     }
     Ok(half)
 }
 
 /// `inputs` with the previous frame's camera in place of this frame's (`temporal.previous_names`,
-/// [`aokit_shaders::temporal::settings::PREVIOUS_FRAME`]): `eye` takes `previous_eye`'s value, ….
+/// [`aokit_shaders::temporal::settings::PREVIOUS_NAMES`]): `eye` takes `previous_eye`'s value, ….
 pub fn previous_inputs(inputs: &Inputs) -> Result<Inputs, String> {
     let mut previous = inputs.clone();
-    for (name, from) in aokit_shaders::temporal::settings::PREVIOUS_FRAME {
+    for (name, from) in aokit_shaders::temporal::settings::PREVIOUS_NAMES {
         let value = inputs.names.get(from).ok_or_else(|| format!("no input {from}"))?.clone();
         previous.names.insert(name.into(), value);
     }

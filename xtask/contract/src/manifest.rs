@@ -53,7 +53,7 @@ pub struct TemporalManifest {
     pub previous_names: Vec<(String, String)>,
     /// Added to the variant's resources (the record, the output and the persistent history).
     pub resources: Vec<ResourceManifest>,
-    /// After the variant's passes; [`HalfResolutionManifest::OUTPUT_PLACEHOLDER`] stands for the
+    /// After the variant's passes; [`OUTPUT_PLACEHOLDER`] stands for the
     /// variant's `output`.
     pub after: Vec<PassManifest>,
     /// The accumulated AO (f32 per full-target texel).
@@ -85,20 +85,19 @@ pub struct HalfResolutionManifest {
     pub resources: Vec<ResourceManifest>,
     /// Before the variant's passes.
     pub before: Vec<PassManifest>,
-    /// After them; [`HalfResolutionManifest::OUTPUT_PLACEHOLDER`] stands for the variant's `output`.
+    /// After them; [`OUTPUT_PLACEHOLDER`] stands for the variant's `output`.
     pub after: Vec<PassManifest>,
     /// The wrapped graph's output (f32 per full-target texel).
     pub output: String,
     /// `HalfParams` (the push constants of `before` and `after`) and the `ViewParams` inside it,
     /// as expressions of `settings` and the full frame; `half(ViewParams)` is the `ViewParams`
-    /// rows evaluated with `frame`'s names.
+    /// rows evaluated with `half_names`.
     pub constants: Vec<ConstantManifest>,
 }
 
-impl HalfResolutionManifest {
-    /// The name that `after`'s bindings give the wrapped variant's `output`.
-    pub const OUTPUT_PLACEHOLDER: &'static str = "<output>";
-}
+/// The name that the `after` passes of `half_resolution` and `temporal` give the wrapped
+/// variant's `output`.
+pub const OUTPUT_PLACEHOLDER: &str = "<output>";
 
 /// The adapter modules (`aokit_shaders::adapters`): their settings, modules and constants.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -270,6 +269,23 @@ pub struct PassManifest {
     pub dispatch: [String; 2],
     /// A memory barrier (shader writes → shader reads and writes) comes before this pass.
     pub barrier_before: bool,
+}
+
+impl PassManifest {
+    /// This pass as a wrapped graph runs it: its bindings of [`OUTPUT_PLACEHOLDER`] bound to the
+    /// wrapped variant's `output`, those of `renamed`'s inputs (`(input, resource)`, as
+    /// `half_resolution.renamed_inputs`) to their resources.
+    pub fn bound(&self, output: &str, renamed: &[(String, String)]) -> PassManifest {
+        let mut pass = self.clone();
+        for b in &mut pass.bindings {
+            if b.1 == OUTPUT_PLACEHOLDER {
+                b.1 = output.into();
+            } else if let Some((_, to)) = renamed.iter().find(|(from, _)| *from == b.1) {
+                b.1 = to.clone();
+            }
+        }
+        pass
+    }
 }
 
 /// A `#[repr(C)]` struct: size, alignment, fields with byte offsets.
@@ -986,9 +1002,6 @@ fn adapters(structs: &[StructManifest]) -> Result<AdaptersManifest, String> {
     Ok(AdaptersManifest { settings: settings_of(t), modules, constants })
 }
 
-/// The half-resolution transform: its settings and constants from
-/// `aokit_shaders::halfres::settings::HALF_RESOLUTION`, its resources and passes from
-/// `at_resolution` around `gtao`'s graph at the defaults (the passes it adds, whatever it wraps).
 /// The rows of `t` for every field of `names` (in order), as published.
 #[cfg(feature = "reflect")]
 fn constants_of(
@@ -1022,7 +1035,7 @@ fn constants_of(
 #[cfg(feature = "reflect")]
 pub fn temporal(structs: &[StructManifest]) -> Result<TemporalManifest, String> {
     use aokit_shaders::temporal::settings::{
-        HISTORY_AO, HISTORY_DEPTH, OUTPUT, PREVIOUS_FRAME, RECORD, TEMPORAL, TemporalSettings, accumulate,
+        HISTORY_AO, HISTORY_DEPTH, OUTPUT, PREVIOUS_NAMES, RECORD, TEMPORAL, TemporalSettings, accumulate,
     };
     let t: &'static dyn aokit_shaders::technique::Registered = &TEMPORAL;
     let constants = constants_of(t, structs, &["ViewParams", "Camera", "TemporalFrame"])?;
@@ -1038,7 +1051,7 @@ pub fn temporal(structs: &[StructManifest]) -> Result<TemporalManifest, String> 
     let mut after: Vec<PassManifest> = published.passes[inner_passes..].to_vec();
     for b in after.iter_mut().flat_map(|p| &mut p.bindings) {
         if b.1 == inner_output {
-            b.1 = HalfResolutionManifest::OUTPUT_PLACEHOLDER.into();
+            b.1 = OUTPUT_PLACEHOLDER.into();
         }
     }
     Ok(TemporalManifest {
@@ -1047,7 +1060,7 @@ pub fn temporal(structs: &[StructManifest]) -> Result<TemporalManifest, String> 
               filled once), the AO read from `output`"
             .into(),
         settings: settings_of(t).into_iter().map(|s| SettingManifest { flag: None, ..s }).collect(),
-        previous_names: PREVIOUS_FRAME.iter().map(|(n, p)| (n.to_string(), p.to_string())).collect(),
+        previous_names: PREVIOUS_NAMES.iter().map(|(n, p)| (n.to_string(), p.to_string())).collect(),
         resources,
         after,
         output: OUTPUT.into(),
@@ -1055,11 +1068,14 @@ pub fn temporal(structs: &[StructManifest]) -> Result<TemporalManifest, String> 
     })
 }
 
+/// The half-resolution transform: its settings and constants from
+/// `aokit_shaders::halfres::settings::HALF_RESOLUTION`, its resources and passes from
+/// `at_resolution` around `gtao`'s graph at the defaults (the passes it adds, whatever it wraps).
 #[cfg(feature = "reflect")]
 pub fn half_resolution(structs: &[StructManifest]) -> Result<HalfResolutionManifest, String> {
     use aokit_shaders::graph::inputs;
     use aokit_shaders::halfres::settings::{
-        HALF_DEPTH, HALF_FRAME, HALF_NORMALS, HALF_RESOLUTION, OUTPUT, Resolution, at_resolution,
+        HALF_DEPTH, HALF_NAMES, HALF_NORMALS, HALF_RESOLUTION, OUTPUT, Resolution, at_resolution,
     };
     let t: &'static dyn aokit_shaders::technique::Registered = &HALF_RESOLUTION;
     let constants = constants_of(t, structs, &["ViewParams", "HalfParams"])?;
@@ -1090,16 +1106,16 @@ pub fn half_resolution(structs: &[StructManifest]) -> Result<HalfResolutionManif
         if b.1 != inner_output {
             return Err(format!("half_upsample's half_ao binds {}, not the wrapped output {inner_output}", b.1));
         }
-        b.1 = HalfResolutionManifest::OUTPUT_PLACEHOLDER.into();
+        b.1 = OUTPUT_PLACEHOLDER.into();
     }
     Ok(HalfResolutionManifest {
         doc: "any technique's variant at half resolution (spec half-resolution, docs/algorithms/half-resolution.md): \
-              `before`, the variant evaluated with `frame`'s names and its inputs renamed, `after`; the variant's \
+              `before`, the variant evaluated with `half_names` and its inputs renamed, `after`; the variant's \
               first pass and `after` have a barrier before them, the variant's other passes keep theirs"
             .into(),
         // No flag of its own: `aokit` takes both as `--resolution half|half-nearest[-tau<τ>]`.
         settings: settings_of(t).into_iter().map(|s| SettingManifest { flag: None, ..s }).collect(),
-        half_names: HALF_FRAME.iter().map(|(n, e)| (n.to_string(), e.to_string())).collect(),
+        half_names: HALF_NAMES.iter().map(|(n, e)| (n.to_string(), e.to_string())).collect(),
         requires: "W, H and g even; at least 2×2 pixels inside the guard band (W ≥ 2g + 2, H ≥ 2g + 2)".into(),
         refused_inputs: vec![inputs::SECOND_DEPTH.into()],
         renamed_inputs: vec![

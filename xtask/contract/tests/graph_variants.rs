@@ -10,9 +10,7 @@ use aokit_contract::constants::{FrameInputs, evaluate_struct, half_inputs, input
 use aokit_contract::expr::{Inputs, Value, eval};
 use aokit_contract::graphs::{matching, variants};
 use aokit_contract::manifest::constants::settings_tried;
-use aokit_contract::manifest::{
-    HalfResolutionManifest, Manifest, PassManifest, ResourceManifest, half_resolution, reference_frame, tables,
-};
+use aokit_contract::manifest::{Manifest, PassManifest, ResourceManifest, half_resolution, reference_frame, tables};
 use aokit_shaders::graph::{Elem, Graph, Init, Lifetime};
 use aokit_shaders::technique::Registered;
 use aokit_shaders::techniques::TECHNIQUES;
@@ -243,20 +241,6 @@ fn compare(graph: &Graph, expected: &Expected, failures: &mut Vec<String>, fail:
     structs
 }
 
-/// `pass` with its bindings of the variant's output (`<output>`) and of `renamed`'s inputs
-/// bound to what they stand for.
-fn bound(pass: &PassManifest, output: &str, renamed: &[(String, String)]) -> PassManifest {
-    let mut pass = pass.clone();
-    for b in &mut pass.bindings {
-        if b.1 == HalfResolutionManifest::OUTPUT_PLACEHOLDER {
-            b.1 = output.into();
-        } else if let Some((_, to)) = renamed.iter().find(|(from, _)| *from == b.1) {
-            b.1 = to.clone();
-        }
-    }
-    pass
-}
-
 /// The technique's tried settings with the transform's defaults, then its defaults with each of
 /// the transform's tried settings.
 fn cases(t: &'static dyn Registered, transform: &'static dyn Registered) -> Vec<(Settings, Settings)> {
@@ -334,14 +318,14 @@ fn half_resolution_transform_is_at_resolution_for_every_variant() {
                 // Before, the variant's passes with its inputs renamed (the first with a
                 // barrier), after.
                 let ours = |p: &PassManifest| ExpectedPass {
-                    pass: bound(p, &variant.output, &[]),
+                    pass: p.bound(&variant.output, &[]),
                     sizes: &full,
                     barrier: p.barrier_before,
                     owner: ht,
                     constants: &transform,
                 };
                 let wrapped = variant.passes.iter().enumerate().map(|(i, p)| ExpectedPass {
-                    pass: bound(p, &variant.output, &half.renamed_inputs),
+                    pass: p.bound(&variant.output, &half.renamed_inputs),
                     sizes: &halved,
                     barrier: i == 0 || p.barrier_before,
                     owner: t,
@@ -411,7 +395,7 @@ fn temporal_accumulation_is_accumulate_for_every_variant() {
                     constants: &full,
                 });
                 let after = temporal.after.iter().map(|p| ExpectedPass {
-                    pass: bound(p, &variant.output, &[]),
+                    pass: p.bound(&variant.output, &[]),
                     sizes: &full,
                     barrier: p.barrier_before,
                     owner: tt,
