@@ -26,20 +26,6 @@ typedef struct aokit_frame_inputs {
     float previous_fov_y, previous_near, previous_far;
 } aokit_frame_inputs;
 
-/* The half-resolution frame (the manifest's half_resolution.half_names: w, h, g halved), whose inputs a
- * technique's constants functions take when it runs at half resolution. Returns 0, leaving *out as it
- * was, where half resolution refuses the frame (W, H or g odd, or fewer than 2x2 pixels inside the
- * guard band). */
-static inline int aokit_half_frame_inputs(const aokit_frame_inputs *f, aokit_frame_inputs *out) {
-    uint32_t W = f->w + 2u * f->g, H = f->h + 2u * f->g;
-    if (W % 2u || H % 2u || f->g % 2u || f->w < 2u || f->h < 2u) return 0;
-    *out = *f;
-    out->w /= 2u;
-    out->h /= 2u;
-    out->g /= 2u;
-    return 1;
-}
-
 static inline int64_t aokit__div_ceil(int64_t a, int64_t b) { return a / b + (a % b != 0 && (a < 0) == (b < 0)); }
 static inline int64_t aokit__div_floor(int64_t a, int64_t b) { return a / b - (a % b != 0 && (a < 0) != (b < 0)); }
 static inline int64_t aokit__imin(int64_t a, int64_t b) { return a < b ? a : b; }
@@ -73,6 +59,20 @@ static inline aokit_mat4 aokit__inverse_rigid(aokit_mat4 m) {
     aokit_mat4 r = {{c0.v[0], c1.v[0], c2.v[0], 0.0f, c0.v[1], c1.v[1], c2.v[1], 0.0f,
                      c0.v[2], c1.v[2], c2.v[2], 0.0f, -aokit__dot(c0, t), -aokit__dot(c1, t), -aokit__dot(c2, t), 1.0f}};
     return r;
+}
+
+/* The half-resolution frame (the manifest's half_resolution.half_names: w, h, g halved), whose inputs a
+ * technique's constants functions take when it runs at half resolution. Returns 0, leaving *out as it
+ * was, where half resolution refuses the frame (W, H or g odd, or fewer than 2x2 pixels inside the
+ * guard band). */
+static inline int aokit_half_frame_inputs(const aokit_frame_inputs *f, aokit_frame_inputs *out) {
+    uint32_t W = f->w + 2u * f->g, H = f->h + 2u * f->g;
+    if (W % 2u || H % 2u || f->g % 2u || f->w < 2u || f->h < 2u) return 0;
+    *out = *f;
+    out->w = (uint32_t)aokit__div_floor((int64_t)f->w, INT64_C(2));
+    out->h = (uint32_t)aokit__div_floor((int64_t)f->h, INT64_C(2));
+    out->g = (uint32_t)aokit__div_floor((int64_t)f->g, INT64_C(2));
+    return 1;
 }
 
 /* vao: Volumetric AO on the depth buffer, or on dual depth (spec svao-raysd §4–§5, §11) */

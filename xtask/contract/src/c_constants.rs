@@ -213,22 +213,18 @@ impl Translator<'_> {
             return self.call(&token);
         }
         let (code, ty) = match token.as_str() {
-            "W" => ("(int64_t)(f->w + 2u * f->g)", Ty::Int),
-            "H" => ("(int64_t)(f->h + 2u * f->g)", Ty::Int),
-            "w" => ("(int64_t)f->w", Ty::Int),
-            "h" => ("(int64_t)f->h", Ty::Int),
-            "g" => ("(int64_t)f->g", Ty::Int),
-            "eye" | "target" | "up" => return Ok(C { code: format!("aokit__vec3(f->{token})"), ty: Ty::Vec(3) }),
-            "fov_y" => ("f->fov_y", Ty::Real),
-            "near" => ("f->near_plane", Ty::Real),
-            "far" => ("f->far_plane", Ty::Real),
-            "radius" | "exponent" | "thickness" => return Ok(C { code: format!("f->{token}"), ty: Ty::Real }),
-            "frame" => ("(int64_t)f->frame", Ty::Int),
-            "has_previous" => ("(f->has_previous != 0u)", Ty::Bool),
-            "pass" => ("(int64_t)pass", Ty::Int),
-            _ => return Err(self.error(&format!("unknown name {token}"))),
+            "W" => ("(int64_t)(f->w + 2u * f->g)".into(), Ty::Int),
+            "H" => ("(int64_t)(f->h + 2u * f->g)".into(), Ty::Int),
+            "pass" => ("(int64_t)pass".into(), Ty::Int),
+            name => match frame_field(name) {
+                Some((field, FieldTy::Vec3)) => (format!("aokit__vec3(f->{field})"), Ty::Vec(3)),
+                Some((field, FieldTy::Real)) => (format!("f->{field}"), Ty::Real),
+                Some((field, FieldTy::Count)) => (format!("(int64_t)f->{field}"), Ty::Int),
+                Some((field, FieldTy::Flag)) => (format!("(f->{field} != 0u)"), Ty::Bool),
+                None => return Err(self.error(&format!("unknown name {token}"))),
+            },
         };
-        Ok(C { code: code.into(), ty })
+        Ok(C { code, ty })
     }
 
     fn call(&mut self, name: &str) -> Result<C, String> {
@@ -332,6 +328,97 @@ fn float_literal(v: f32) -> String {
 }
 
 /// Translate `expr` (of a technique with `settings`) to C.
+/// How an `aokit_frame_inputs` field is declared.
+#[derive(Clone, Copy, PartialEq)]
+enum FieldTy {
+    /// `float name[3]`.
+    Vec3,
+    /// `float`.
+    Real,
+    /// `uint32_t`, read as a whole number.
+    Count,
+    /// `uint32_t`, read as a boolean.
+    Flag,
+}
+
+/// The `aokit_frame_inputs` field that an expression name reads (assets/README.md,
+/// "Expressions"), and its type: the one table the expressions' names, the previous frame's copy
+/// (`temporal.previous_names`) and the half frame (`half_resolution.half_names`) go through.
+/// `W`, `H` and `pass` are not fields.
+fn frame_field(name: &str) -> Option<(&'static str, FieldTy)> {
+    Some(match name {
+        "eye" => ("eye", FieldTy::Vec3),
+        "target" => ("target", FieldTy::Vec3),
+        "up" => ("up", FieldTy::Vec3),
+        "fov_y" => ("fov_y", FieldTy::Real),
+        // `near` and `far` are macros on some C platforms.
+        "near" => ("near_plane", FieldTy::Real),
+        "far" => ("far_plane", FieldTy::Real),
+        "radius" => ("radius", FieldTy::Real),
+        "exponent" => ("exponent", FieldTy::Real),
+        "thickness" => ("thickness", FieldTy::Real),
+        "w" => ("w", FieldTy::Count),
+        "h" => ("h", FieldTy::Count),
+        "g" => ("g", FieldTy::Count),
+        "frame" => ("frame", FieldTy::Count),
+        "has_previous" => ("has_previous", FieldTy::Flag),
+        "previous_eye" => ("previous_eye", FieldTy::Vec3),
+        "previous_target" => ("previous_target", FieldTy::Vec3),
+        "previous_up" => ("previous_up", FieldTy::Vec3),
+        "previous_fov_y" => ("previous_fov_y", FieldTy::Real),
+        "previous_near" => ("previous_near", FieldTy::Real),
+        "previous_far" => ("previous_far", FieldTy::Real),
+        _ => return None,
+    })
+}
+
+/// The statements that copy the previous frame's camera into `previous` (an
+/// `aokit_frame_inputs` copied from `f`): `previous.<name> = f-><previous name>` for each pair of
+/// the manifest's `temporal.previous_names`, the same type on both sides.
+fn previous_copy(names: &[(String, String)], indent: &str) -> Result<String, String> {
+    let mut vectors = String::new();
+    let mut scalars = String::new();
+    for (name, previous) in names {
+        let field = |n: &str| frame_field(n).ok_or_else(|| format!("temporal.previous_names: no frame field `{n}`"));
+        let ((to, ty), (from, from_ty)) = (field(name)?, field(previous)?);
+        if ty != from_ty {
+            return Err(format!("temporal.previous_names: `{name}` and `{previous}` differ in type"));
+        }
+        match ty {
+            FieldTy::Vec3 => vectors += &format!("{indent}    previous.{to}[i] = f->{from}[i];\n"),
+            _ => scalars += &format!("{indent}previous.{to} = f->{from};\n"),
+        }
+    }
+    let vectors = if vectors.is_empty() {
+        vectors
+    } else {
+        format!("{indent}for (int i = 0; i < 3; i++) {{\n{vectors}{indent}}}\n")
+    };
+    Ok(vectors + &scalars)
+}
+
+/// The statements that set `out` (a copy of `f`) to the half frame: `out-><name> = <expression>`
+/// for each name of the manifest's `half_resolution.half_names` that is a field (`W` and `H`
+/// are not: they follow from w, h and g).
+fn half_assignments(names: &[(String, String)]) -> Result<String, String> {
+    let mut h = String::new();
+    for (name, expr) in names {
+        match frame_field(name) {
+            Some((field, FieldTy::Count)) => {
+                let value = translate(expr, &[]).map_err(|e| format!("half_resolution.half_names {name}: {e}"))?;
+                if value.ty != Ty::Int {
+                    return Err(format!("half_resolution.half_names {name}: `{expr}` is not a whole number"));
+                }
+                h += &format!("    out->{field} = (uint32_t){};\n", value.code);
+            }
+            Some(_) => return Err(format!("half_resolution.half_names: `{name}` is not a pixel count")),
+            None if name == "W" || name == "H" => {}
+            None => return Err(format!("half_resolution.half_names: no frame field `{name}`")),
+        }
+    }
+    Ok(h)
+}
+
 fn translate(expr: &str, settings: &[SettingManifest]) -> Result<C, String> {
     let tokens = crate::expr::tokens(expr)?;
     let mut t = Translator { tokens, at: 0, settings, text: expr };
@@ -467,16 +554,17 @@ fn technique(t: &Source, manifest: &Manifest) -> Result<String, String> {
             if manifest.structs.iter().any(|x| x.name == field.ty) {
                 if c.expr == format!("previous({})", field.ty) {
                     // The previous frame's camera (`temporal.previous_names`) when there is one.
+                    let temporal =
+                        manifest.temporal.as_ref().ok_or("previous(T) without the manifest's temporal section")?;
                     h += "    {\n        aokit_frame_inputs previous = *f;\n        if (f->has_previous) {\n";
-                    h += "            for (int i = 0; i < 3; i++) {\n";
-                    h += "                previous.eye[i] = f->previous_eye[i];\n";
-                    h += "                previous.target[i] = f->previous_target[i];\n";
-                    h += "                previous.up[i] = f->previous_up[i];\n            }\n";
-                    h += "            previous.fov_y = f->previous_fov_y;\n";
-                    h += "            previous.near_plane = f->previous_near;\n";
-                    h += "            previous.far_plane = f->previous_far;\n        }\n";
+                    h += &previous_copy(&temporal.previous_names, "            ")?;
+                    h += "        }\n";
                     h += &format!("        {p}_{}(s, &previous, pass, &out->{});\n    }}\n", field.ty, field.name);
                 } else if c.expr == format!("half({})", field.ty) {
+                    manifest
+                        .half_resolution
+                        .as_ref()
+                        .ok_or("half(T) without the manifest's half_resolution section")?;
                     // The half-resolution frame (`half_resolution.half_names`): w, h, g halved.
                     h += &format!(
                         "    {{ aokit_frame_inputs half = *f; (void)aokit_half_frame_inputs(f, &half); {p}_{}(s, &half, pass, &out->{}); }}\n",
@@ -526,16 +614,21 @@ impl Manifest {
         h += "     * frame, after a cut or a resize (then the previous_* fields are unread). */\n";
         h += "    uint32_t has_previous;\n    float previous_eye[3], previous_target[3], previous_up[3];\n";
         h += "    float previous_fov_y, previous_near, previous_far;\n} aokit_frame_inputs;\n\n";
-        h += "/* The half-resolution frame (the manifest's half_resolution.half_names: w, h, g halved), whose inputs a\n";
-        h += " * technique's constants functions take when it runs at half resolution. Returns 0, leaving *out as it\n";
-        h += " * was, where half resolution refuses the frame (W, H or g odd, or fewer than 2x2 pixels inside the\n";
-        h += " * guard band). */\n";
-        h += "static inline int aokit_half_frame_inputs(const aokit_frame_inputs *f, aokit_frame_inputs *out) {\n";
-        h += "    uint32_t W = f->w + 2u * f->g, H = f->h + 2u * f->g;\n";
-        h += "    if (W % 2u || H % 2u || f->g % 2u || f->w < 2u || f->h < 2u) return 0;\n";
-        h += "    *out = *f;\n    out->w /= 2u;\n    out->h /= 2u;\n    out->g /= 2u;\n    return 1;\n}\n\n";
         h += HELPERS;
         h += "\n";
+        if let Some(half) = &self.half_resolution {
+            h += "/* The half-resolution frame (the manifest's half_resolution.half_names: w, h, g halved), whose inputs a\n";
+            h += " * technique's constants functions take when it runs at half resolution. Returns 0, leaving *out as it\n";
+            h +=
+                " * was, where half resolution refuses the frame (W, H or g odd, or fewer than 2x2 pixels inside the\n";
+            h += " * guard band). */\n";
+            h += "static inline int aokit_half_frame_inputs(const aokit_frame_inputs *f, aokit_frame_inputs *out) {\n";
+            h += "    uint32_t W = f->w + 2u * f->g, H = f->h + 2u * f->g;\n";
+            h += "    if (W % 2u || H % 2u || f->g % 2u || f->w < 2u || f->h < 2u) return 0;\n";
+            h += "    *out = *f;\n";
+            h += &half_assignments(&half.half_names)?;
+            h += "    return 1;\n}\n\n";
+        }
         for t in &self.techniques {
             let source = Source { name: &t.name, summary: &t.summary, settings: &t.settings, constants: &t.constants };
             h += &technique(&source, self)?;
