@@ -254,6 +254,43 @@ fn cases(t: &'static dyn Registered, transform: &'static dyn Registered) -> Vec<
 
 type Settings = Vec<(&'static str, String)>;
 
+/// One case of a transform's test: a technique configured at `values`, the transform's settings
+/// at `transform_values`, and the technique's published variant they select.
+struct Case<'a, S> {
+    t: &'static dyn Registered,
+    values: &'a Settings,
+    transform_values: &'a Settings,
+    configured: Box<dyn aokit_shaders::technique::Configured>,
+    settings: S,
+    variant: &'a aokit_contract::manifest::VariantManifest,
+}
+
+/// Every technique's published variant at each of [`cases`] with `transform`, configured
+/// ([`Case`]); a technique whose settings select not exactly one variant is a failure.
+fn each_case<S: Copy + 'static>(
+    transform: &'static dyn Registered,
+    frame: &FrameInputs,
+    failures: &mut Vec<String>,
+    mut check: impl FnMut(Case<S>, &mut Vec<String>),
+) {
+    for &t in TECHNIQUES {
+        let (_, published) = variants(t, &reference_frame(frame.inner, frame.guard)).unwrap();
+        for (values, transform_values) in cases(t, transform) {
+            let mut configured = t.configure();
+            values.iter().for_each(|(k, v)| configured.set(k, v).unwrap());
+            let mut tc = transform.configure();
+            transform_values.iter().for_each(|(k, v)| tc.set(k, v).unwrap());
+            let settings = *tc.settings().downcast_ref::<S>().unwrap();
+            let [variant] = matching(&published, &values)[..] else {
+                failures.push(format!("{} {values:?}: not one variant", t.name()));
+                continue;
+            };
+            let case = Case { t, values: &values, transform_values: &transform_values, configured, settings, variant };
+            check(case, failures);
+        }
+    }
+}
+
 /// The manifest's half-resolution transform (`half_resolution`) applied to every technique's
 /// published variant is the graph `at_resolution` builds, at the technique's tried settings and
 /// the transform's, on two even frames ([`compare`]) — the variant's expressions evaluated with
@@ -281,71 +318,60 @@ fn half_resolution_transform_is_at_resolution_for_every_variant() {
     }
     let (mut graphs, mut structs, mut refused) = (0, 0, 0);
     let mut failures = Vec::new();
-    for &t in TECHNIQUES {
-        let (_, published) = variants(t, &reference_frame(frames[0].inner, frames[0].guard)).unwrap();
-        for (values, half_values) in cases(t, ht) {
-            let mut c = t.configure();
-            values.iter().for_each(|(k, v)| c.set(k, v).unwrap());
-            let mut hc = ht.configure();
-            half_values.iter().for_each(|(k, v)| hc.set(k, v).unwrap());
-            let settings = *hc.settings().downcast_ref::<HalfSettings>().unwrap();
-            let [variant] = matching(&published, &values)[..] else {
-                failures.push(format!("{} {values:?}: not one variant", t.name()));
-                continue;
+    each_case::<HalfSettings>(ht, &frames[0], &mut failures, |case, failures| {
+        let Case { t, values, transform_values: half_values, configured: c, settings, variant } = case;
+        for frame in &frames {
+            let fail = |what: String| {
+                format!("{} {values:?} {half_values:?} {}x{}: {what}", t.name(), frame.inner.x, frame.inner.y)
             };
-            for frame in &frames {
-                let fail = |what: String| {
-                    format!("{} {values:?} {half_values:?} {}x{}: {what}", t.name(), frame.inner.x, frame.inner.y)
-                };
-                let built = at_resolution(Resolution::Half(settings), &frame.frame_desc(), |f| c.graph(f));
-                if variant.inputs.iter().any(|i| half.refused_inputs.contains(i)) {
-                    match built {
-                        Err(_) => refused += 1,
-                        Ok(_) => failures.push(fail("reads a refused input, yet at_resolution built it".into())),
-                    }
+            let built = at_resolution(Resolution::Half(settings), &frame.frame_desc(), |f| c.graph(f));
+            if variant.inputs.iter().any(|i| half.refused_inputs.contains(i)) {
+                match built {
+                    Err(_) => refused += 1,
+                    Ok(_) => failures.push(fail("reads a refused input, yet at_resolution built it".into())),
+                }
+                continue;
+            }
+            let graph = match built {
+                Ok(g) => g,
+                Err(e) => {
+                    failures.push(fail(format!("at_resolution refused: {e}")));
                     continue;
                 }
-                let graph = match built {
-                    Ok(g) => g,
-                    Err(e) => {
-                        failures.push(fail(format!("at_resolution refused: {e}")));
-                        continue;
-                    }
-                };
-                let full = inputs(&t.rows(), &values, frame).unwrap();
-                let halved = half_inputs(&full).unwrap();
-                let transform = inputs(&ht.rows(), &half_values, frame).unwrap();
-                // Before, the variant's passes with its inputs renamed (the first with a
-                // barrier), after.
-                let ours = |p: &PassManifest| ExpectedPass {
-                    pass: p.bound(&variant.output, &[]),
-                    sizes: &full,
-                    barrier: p.barrier_before,
-                    owner: ht,
-                    constants: &transform,
-                };
-                let wrapped = variant.passes.iter().enumerate().map(|(i, p)| ExpectedPass {
-                    pass: p.bound(&variant.output, &half.renamed_inputs),
-                    sizes: &halved,
-                    barrier: i == 0 || p.barrier_before,
-                    owner: t,
-                    constants: &halved,
-                });
-                let expected = Expected {
-                    resources: variant
-                        .resources
-                        .iter()
-                        .map(|r| (r, &halved))
-                        .chain(half.resources.iter().map(|r| (r, &full)))
-                        .collect(),
-                    passes: half.before.iter().map(ours).chain(wrapped).chain(half.after.iter().map(ours)).collect(),
-                    output: half.output.clone(),
-                };
-                structs += compare(&graph, &expected, &mut failures, &fail);
-                graphs += 1;
-            }
+            };
+            let full = inputs(&t.rows(), values, frame).unwrap();
+            let halved = half_inputs(&full).unwrap();
+            let transform = inputs(&ht.rows(), half_values, frame).unwrap();
+            // Before, the variant's passes with its inputs renamed (the first with a barrier),
+            // after.
+            let ours = |p: &PassManifest| ExpectedPass {
+                pass: p.bound(&variant.output, &[]),
+                sizes: &full,
+                barrier: p.barrier_before,
+                owner: ht,
+                constants: &transform,
+            };
+            let wrapped = variant.passes.iter().enumerate().map(|(i, p)| ExpectedPass {
+                pass: p.bound(&variant.output, &half.renamed_inputs),
+                sizes: &halved,
+                barrier: i == 0 || p.barrier_before,
+                owner: t,
+                constants: &halved,
+            });
+            let expected = Expected {
+                resources: variant
+                    .resources
+                    .iter()
+                    .map(|r| (r, &halved))
+                    .chain(half.resources.iter().map(|r| (r, &full)))
+                    .collect(),
+                passes: half.before.iter().map(ours).chain(wrapped).chain(half.after.iter().map(ours)).collect(),
+                output: half.output.clone(),
+            };
+            structs += compare(&graph, &expected, failures, &fail);
+            graphs += 1;
         }
-    }
+    });
     eprintln!("{graphs} half-resolution graphs, {structs} structs, {refused} refused");
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures[..failures.len().min(20)].join("\n"));
     assert!(graphs > 100 && structs > graphs && refused > 0, "{graphs} graphs, {structs} structs, {refused} refused");
@@ -367,50 +393,46 @@ fn temporal_accumulation_is_accumulate_for_every_variant() {
     assert!(frames[0].previous.is_none() && frames[1].previous.is_some(), "a first frame and a later one");
     let (mut graphs, mut structs) = (0, 0);
     let mut failures = Vec::new();
-    for &t in TECHNIQUES {
-        let (_, published) = variants(t, &reference_frame(frames[0].inner, frames[0].guard)).unwrap();
-        for (values, temporal_values) in cases(t, tt) {
-            let mut c = t.configure();
-            values.iter().for_each(|(k, v)| c.set(k, v).unwrap());
-            let mut tc = tt.configure();
-            temporal_values.iter().for_each(|(k, v)| tc.set(k, v).unwrap());
-            let settings = *tc.settings().downcast_ref::<TemporalSettings>().unwrap();
-            let [variant] = matching(&published, &values)[..] else {
-                failures.push(format!("{} {values:?}: not one variant", t.name()));
-                continue;
+    each_case::<TemporalSettings>(tt, &frames[0], &mut failures, |case, failures| {
+        let Case { t, values, transform_values: temporal_values, configured: c, settings, variant } = case;
+        for frame in &frames {
+            let fail = |what: String| {
+                format!("{} {values:?} {temporal_values:?} {}x{}: {what}", t.name(), frame.inner.x, frame.inner.y)
             };
-            for frame in &frames {
-                let fail = |what: String| {
-                    format!("{} {values:?} {temporal_values:?} {}x{}: {what}", t.name(), frame.inner.x, frame.inner.y)
-                };
-                let desc = aokit_shaders::graph::FrameDesc { temporal: Some(settings), ..frame.frame_desc() };
-                let Ok(graph) = c.graph(&desc).and_then(|g| accumulate(g, &desc)) else { continue };
-                let full = inputs(&t.rows(), &values, frame).unwrap();
-                let transform = inputs(&tt.rows(), &temporal_values, frame).unwrap();
-                let own = variant.passes.iter().map(|p| ExpectedPass {
-                    pass: p.clone(),
-                    sizes: &full,
-                    barrier: p.barrier_before,
-                    owner: t,
-                    constants: &full,
-                });
-                let after = temporal.after.iter().map(|p| ExpectedPass {
-                    pass: p.bound(&variant.output, &[]),
-                    sizes: &full,
-                    barrier: p.barrier_before,
-                    owner: tt,
-                    constants: &transform,
-                });
-                let expected = Expected {
-                    resources: variant.resources.iter().chain(&temporal.resources).map(|r| (r, &full)).collect(),
-                    passes: own.chain(after).collect(),
-                    output: temporal.output.clone(),
-                };
-                structs += compare(&graph, &expected, &mut failures, &fail);
-                graphs += 1;
-            }
+            let desc = aokit_shaders::graph::FrameDesc { temporal: Some(settings), ..frame.frame_desc() };
+            // Every technique takes the accumulation: a refusal is a failure.
+            let graph = match c.graph(&desc).and_then(|g| accumulate(g, &desc)) {
+                Ok(g) => g,
+                Err(e) => {
+                    failures.push(fail(format!("accumulate refused: {e}")));
+                    continue;
+                }
+            };
+            let full = inputs(&t.rows(), values, frame).unwrap();
+            let transform = inputs(&tt.rows(), temporal_values, frame).unwrap();
+            let own = variant.passes.iter().map(|p| ExpectedPass {
+                pass: p.clone(),
+                sizes: &full,
+                barrier: p.barrier_before,
+                owner: t,
+                constants: &full,
+            });
+            let after = temporal.after.iter().map(|p| ExpectedPass {
+                pass: p.bound(&variant.output, &[]),
+                sizes: &full,
+                barrier: p.barrier_before,
+                owner: tt,
+                constants: &transform,
+            });
+            let expected = Expected {
+                resources: variant.resources.iter().chain(&temporal.resources).map(|r| (r, &full)).collect(),
+                passes: own.chain(after).collect(),
+                output: temporal.output.clone(),
+            };
+            structs += compare(&graph, &expected, failures, &fail);
+            graphs += 1;
         }
-    }
+    });
     eprintln!("{graphs} temporal graphs, {structs} structs");
     assert!(failures.is_empty(), "{} failures:\n{}", failures.len(), failures[..failures.len().min(20)].join("\n"));
     assert!(graphs > 100 && structs > graphs, "{graphs} graphs, {structs} structs");
