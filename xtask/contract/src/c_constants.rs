@@ -327,7 +327,6 @@ fn float_literal(v: f32) -> String {
     format!("{v:?}f")
 }
 
-/// Translate `expr` (of a technique with `settings`) to C.
 /// How an `aokit_frame_inputs` field is declared.
 #[derive(Clone, Copy, PartialEq)]
 enum FieldTy {
@@ -419,6 +418,7 @@ fn half_assignments(names: &[(String, String)]) -> Result<String, String> {
     Ok(h)
 }
 
+/// Translate `expr` (of a technique with `settings`) to C.
 fn translate(expr: &str, settings: &[SettingManifest]) -> Result<C, String> {
     let tokens = crate::expr::tokens(expr)?;
     let mut t = Translator { tokens, at: 0, settings, text: expr };
